@@ -1,0 +1,338 @@
+/*
+ * array.c - vertex arrays: rt*Pointer, rtEnable/DisableClientState,
+ * rtDrawArrays and rtDrawElements.
+ *
+ * A draw call is exactly the rtBegin/rtVertex/rtEnd sequence it stands
+ * for (GL's definition of glDrawArrays), with the data read at the call.
+ * The whole batch is validated before the first vertex is stored, so a
+ * rejected call records nothing.
+ */
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "api/context.h"
+#include "scene/assembly.h"
+
+static struct client_array *client_array_of(struct rt_context *ctx, RTenum array)
+{
+    switch (array) {
+    case RT_VERTEX_ARRAY:
+        return &ctx->vertex_array;
+    case RT_NORMAL_ARRAY:
+        return &ctx->normal_array;
+    case RT_COLOR_ARRAY:
+        return &ctx->color_array;
+    case RT_TEXTURE_COORD_ARRAY:
+        return &ctx->texcoord_array;
+    default:
+        return NULL;
+    }
+}
+
+static void client_state(const char *caller, RTenum array, int enabled)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_begin(ctx, caller))
+        return;
+    struct client_array *a = client_array_of(ctx, array);
+    if (!a) {
+        rt_error(ctx, RT_INVALID_ENUM, "%s(array=0x%x)", caller, array);
+        return;
+    }
+    a->enabled = enabled;
+}
+
+void rtEnableClientState(RTenum array)
+{
+    client_state("rtEnableClientState", array, 1);
+}
+
+void rtDisableClientState(RTenum array)
+{
+    client_state("rtDisableClientState", array, 0);
+}
+
+static size_t type_size(RTenum type)
+{
+    switch (type) {
+    case RT_BYTE:
+    case RT_UNSIGNED_BYTE:
+        return 1;
+    case RT_SHORT:
+    case RT_UNSIGNED_SHORT:
+        return 2;
+    case RT_INT:
+    case RT_UNSIGNED_INT:
+    case RT_FLOAT:
+        return 4;
+    case RT_DOUBLE:
+        return 8;
+    default:
+        return 0;
+    }
+}
+
+/* Sets an array pointer after checking type (against the allowed list),
+ * size range and stride. */
+static void set_pointer(const char *caller, struct client_array *(*which)(struct rt_context *),
+                        RTint size, int size_lo, int size_hi, RTenum type, const RTenum *types,
+                        int type_count, RTsizei stride, const void *pointer)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_begin(ctx, caller))
+        return;
+    int type_ok = 0;
+    for (int i = 0; i < type_count; i++)
+        type_ok |= types[i] == type;
+    if (!type_ok) {
+        rt_error(ctx, RT_INVALID_ENUM, "%s(type=0x%x)", caller, type);
+        return;
+    }
+    if (size < size_lo || size > size_hi || stride < 0) {
+        rt_error(ctx, RT_INVALID_VALUE, "%s(size=%d, stride=%d)", caller, size, stride);
+        return;
+    }
+    struct client_array *a = which(ctx);
+    a->size = size;
+    a->type = type;
+    a->stride = stride;
+    a->pointer = pointer;
+}
+
+static struct client_array *vertex_array(struct rt_context *ctx)
+{
+    return &ctx->vertex_array;
+}
+
+static struct client_array *normal_array(struct rt_context *ctx)
+{
+    return &ctx->normal_array;
+}
+
+static struct client_array *color_array(struct rt_context *ctx)
+{
+    return &ctx->color_array;
+}
+
+static struct client_array *texcoord_array(struct rt_context *ctx)
+{
+    return &ctx->texcoord_array;
+}
+
+void rtVertexPointer(RTint size, RTenum type, RTsizei stride, const void *pointer)
+{
+    static const RTenum types[] = {RT_SHORT, RT_INT, RT_FLOAT, RT_DOUBLE};
+    set_pointer("rtVertexPointer", vertex_array, size, 2, 4, type, types, 4, stride, pointer);
+}
+
+void rtNormalPointer(RTenum type, RTsizei stride, const void *pointer)
+{
+    static const RTenum types[] = {RT_BYTE, RT_SHORT, RT_INT, RT_FLOAT, RT_DOUBLE};
+    set_pointer("rtNormalPointer", normal_array, 3, 3, 3, type, types, 5, stride, pointer);
+}
+
+void rtColorPointer(RTint size, RTenum type, RTsizei stride, const void *pointer)
+{
+    static const RTenum types[] = {RT_UNSIGNED_BYTE, RT_FLOAT, RT_DOUBLE};
+    set_pointer("rtColorPointer", color_array, size, 3, 4, type, types, 3, stride, pointer);
+}
+
+void rtTexCoordPointer(RTint size, RTenum type, RTsizei stride, const void *pointer)
+{
+    static const RTenum types[] = {RT_SHORT, RT_INT, RT_FLOAT, RT_DOUBLE};
+    set_pointer("rtTexCoordPointer", texcoord_array, size, 1, 4, type, types, 4, stride,
+                pointer);
+}
+
+/* Reads component c of element i of an array as a double.  Normalised
+ * types follow GL's conversions for colours (ubyte / 255) and normals
+ * (signed: c / (2^(b-1) - 1)). */
+static double fetch(const struct client_array *a, size_t i, int c, int normalized)
+{
+    size_t stride = a->stride ? (size_t)a->stride : (size_t)a->size * type_size(a->type);
+    const unsigned char *p = (const unsigned char *)a->pointer + i * stride;
+    size_t off = (size_t)c * type_size(a->type);
+    switch (a->type) {
+    case RT_BYTE: {
+        int8_t v;
+        memcpy(&v, p + off, sizeof(v));
+        return normalized ? v / 127.0 : v;
+    }
+    case RT_UNSIGNED_BYTE: {
+        uint8_t v;
+        memcpy(&v, p + off, sizeof(v));
+        return normalized ? v / 255.0 : v;
+    }
+    case RT_SHORT: {
+        int16_t v;
+        memcpy(&v, p + off, sizeof(v));
+        return normalized ? v / 32767.0 : v;
+    }
+    case RT_INT: {
+        int32_t v;
+        memcpy(&v, p + off, sizeof(v));
+        return normalized ? v / 2147483647.0 : v;
+    }
+    case RT_FLOAT: {
+        float v;
+        memcpy(&v, p + off, sizeof(v));
+        return v;
+    }
+    default: {
+        double v;
+        memcpy(&v, p + off, sizeof(v));
+        return v;
+    }
+    }
+}
+
+/* Object-space position of element i; 0 when not finite (or w == 0). */
+static int fetch_position(const struct client_array *a, size_t i, double p[3])
+{
+    for (int c = 0; c < 3; c++)
+        p[c] = c < a->size ? fetch(a, i, c, 0) : 0.0;
+    if (a->size == 4) {
+        double w = fetch(a, i, 3, 0);
+        if (w == 0.0 || !isfinite(w))
+            return 0;
+        for (int c = 0; c < 3; c++)
+            p[c] /= w;
+    }
+    return isfinite(p[0]) && isfinite(p[1]) && isfinite(p[2]);
+}
+
+/* Stores element i as a vertex with the enabled attributes, falling back
+ * to the current attribute for disabled arrays (GL). */
+static int emit_element(struct rt_context *ctx, const char *caller, size_t i)
+{
+    double p[3];
+    fetch_position(&ctx->vertex_array, i, p);
+    float normal[3], color[4], texcoord[2];
+    memcpy(normal, ctx->current_normal, sizeof(normal));
+    memcpy(color, ctx->current_color, sizeof(color));
+    memcpy(texcoord, ctx->current_texcoord, sizeof(texcoord));
+    if (ctx->normal_array.enabled)
+        for (int c = 0; c < 3; c++)
+            normal[c] = (float)fetch(&ctx->normal_array, i, c, 1);
+    if (ctx->color_array.enabled) {
+        color[3] = 1.0f;
+        for (int c = 0; c < ctx->color_array.size; c++)
+            color[c] = fminf(fmaxf((float)fetch(&ctx->color_array, i, c, 1), 0.0f), 1.0f);
+    }
+    if (ctx->texcoord_array.enabled) {
+        texcoord[1] = 0.0f;
+        for (int c = 0; c < 2 && c < ctx->texcoord_array.size; c++)
+            texcoord[c] = (float)fetch(&ctx->texcoord_array, i, c, 0);
+    }
+    return rt_record_vertex(ctx, caller, p, normal, color, texcoord);
+}
+
+/* Checks common to both draw calls; returns 1 when the call may proceed. */
+static int draw_allowed(struct rt_context *ctx, const char *caller, RTenum mode)
+{
+    if (ctx->block.active) {
+        rt_error(ctx, RT_INVALID_OPERATION, "%s: not allowed between rtBegin and rtEnd", caller);
+        return 0;
+    }
+    if (!ctx->recording.active) {
+        rt_error(ctx, RT_INVALID_OPERATION, "%s: draw calls are only recorded inside rtNewObject",
+                 caller);
+        return 0;
+    }
+    if (!scene_mode_is_valid(mode)) {
+        rt_error(ctx, RT_INVALID_ENUM, "%s(mode=0x%x)", caller, mode);
+        return 0;
+    }
+    return 1;
+}
+
+static int arrays_ready(struct rt_context *ctx, const char *caller)
+{
+    const struct client_array *arrays[4] = {&ctx->vertex_array, &ctx->normal_array,
+                                            &ctx->color_array, &ctx->texcoord_array};
+    if (!ctx->vertex_array.enabled) {
+        rt_error(ctx, RT_INVALID_OPERATION, "%s: RT_VERTEX_ARRAY is not enabled", caller);
+        return 0;
+    }
+    for (int i = 0; i < 4; i++)
+        if (arrays[i]->enabled && !arrays[i]->pointer) {
+            rt_error(ctx, RT_INVALID_OPERATION, "%s: an enabled array has a NULL pointer",
+                     caller);
+            return 0;
+        }
+    return 1;
+}
+
+/* Index k of the batch: first + k for rtDrawArrays, indices[k] otherwise. */
+static size_t element_index(RTenum index_type, const void *indices, size_t first, size_t k)
+{
+    if (!indices)
+        return first + k;
+    switch (index_type) {
+    case RT_UNSIGNED_BYTE:
+        return ((const uint8_t *)indices)[k];
+    case RT_UNSIGNED_SHORT:
+        return ((const uint16_t *)indices)[k];
+    default:
+        return ((const uint32_t *)indices)[k];
+    }
+}
+
+static void draw(struct rt_context *ctx, const char *caller, RTenum mode, size_t first,
+                 size_t count, RTenum index_type, const void *indices)
+{
+    /* Validate every vertex first: a rejected batch stores nothing. */
+    rt_block_start(ctx, mode);
+    for (size_t k = 0; k < count; k++) {
+        double p[3];
+        size_t i = element_index(index_type, indices, first, k);
+        if (!fetch_position(&ctx->vertex_array, i, p) || !rt_vertex_is_finite(ctx, p)) {
+            rt_error(ctx, RT_INVALID_VALUE, "%s: vertex %zu is not finite", caller, i);
+            return;
+        }
+    }
+    /* Reserve up front so the batch cannot fail half-way. */
+    struct scene_mesh *mesh = &ctx->recording.mesh;
+    if (count > UINT32_MAX / 2 || scene_mesh_reserve_vertices(mesh, (uint32_t)count) ||
+        scene_mesh_reserve_triangles(mesh, (uint32_t)(2 * count))) {
+        ctx->recording.out_of_memory = 1;
+        rt_error(ctx, RT_OUT_OF_MEMORY, "%s: out of memory", caller);
+        return;
+    }
+    for (size_t k = 0; k < count; k++)
+        if (emit_element(ctx, caller, element_index(index_type, indices, first, k)))
+            return; /* only a material allocation can fail here; recorded */
+}
+
+void rtDrawArrays(RTenum mode, RTint first, RTsizei count)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || !draw_allowed(ctx, "rtDrawArrays", mode))
+        return;
+    if (first < 0 || count < 0) {
+        rt_error(ctx, RT_INVALID_VALUE, "rtDrawArrays(first=%d, count=%d)", first, count);
+        return;
+    }
+    if (!arrays_ready(ctx, "rtDrawArrays"))
+        return;
+    draw(ctx, "rtDrawArrays", mode, (size_t)first, (size_t)count, 0, NULL);
+}
+
+void rtDrawElements(RTenum mode, RTsizei count, RTenum type, const void *indices)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || !draw_allowed(ctx, "rtDrawElements", mode))
+        return;
+    if (type != RT_UNSIGNED_BYTE && type != RT_UNSIGNED_SHORT && type != RT_UNSIGNED_INT) {
+        rt_error(ctx, RT_INVALID_ENUM, "rtDrawElements(type=0x%x)", type);
+        return;
+    }
+    if (count < 0 || (count > 0 && !indices)) {
+        rt_error(ctx, RT_INVALID_VALUE, "rtDrawElements(count=%d, indices=%p)", count, indices);
+        return;
+    }
+    if (!arrays_ready(ctx, "rtDrawElements"))
+        return;
+    draw(ctx, "rtDrawElements", mode, 0, (size_t)count, type, indices);
+}

@@ -1,0 +1,160 @@
+/*
+ * context.h - the rendering context: all mutable state of the library.
+ *
+ * Every entry point starts with GET_CURRENT_CONTEXT and validates in the
+ * order STYLE.md sec. 3 fixes: mode, enums, values, limits, then acquires
+ * memory, then changes state.  rt_error() is the one place errors are
+ * recorded.  Nothing here is touched by worker threads except through the
+ * read-only views the renderer is handed for the duration of a frame.
+ */
+#ifndef RT_API_CONTEXT_H
+#define RT_API_CONTEXT_H
+
+#include <rt/rt.h>
+#include <stdint.h>
+
+#include "accel/bvh.h"
+#include "render/render.h"
+#include "scene/frame.h"
+#include "scene/mesh.h"
+#include "scene/object.h"
+
+#define RT_MAX_MODELVIEW_DEPTH 32 /* OpenGL's minimum, DESIGN.md */
+#define RT_MAX_PROJECTION_DEPTH 4 /* >= 2 required */
+#define RT_MAX_THREADS 256
+#define RT_MAX_VIEWPORT 16384
+#define RT_MAX_RAY_DEPTH_LIMIT 16
+
+struct matrix_stack {
+    double m[RT_MAX_MODELVIEW_DEPTH][16]; /* m[depth-1] is the top */
+    int depth;                            /* 1..max_depth */
+    int max_depth;
+};
+
+struct client_array {
+    int enabled;
+    int size;
+    RTenum type;
+    RTsizei stride;
+    const void *pointer;
+};
+
+/* Recording state between rtNewObject and rtEndObject. */
+struct object_recording {
+    int active;
+    uint32_t name;
+    struct scene_mesh mesh;
+    int out_of_memory; /* an allocation failed: rtEndObject keeps the old definition */
+    int material_index; /* interned index of ctx->material, -1 when stale */
+};
+
+/* rtBegin/rtEnd state. */
+struct primitive_block {
+    int active;
+    RTenum mode;
+    uint32_t base;  /* mesh index of the block's first vertex */
+    uint32_t count; /* vertices recorded in this block */
+    double position_matrix[16]; /* the modelview, fixed inside the block */
+    double normal_matrix[9];    /* its cofactor matrix, for normals */
+};
+
+struct rt_context {
+    int bound; /* current in some thread */
+
+    /* Configuration (rtCreateContext). */
+    int threads;
+    struct bvh_build_params build_params;
+    char configuration[128];
+
+    /* Errors (error.c). */
+    RTenum error;
+    RTerrorcallback error_callback;
+    void *error_user;
+    int debug_print; /* TRACELIST_DEBUG set */
+    char last_message[320]; /* "CODE: message", for collapsing repeats */
+    unsigned repeat_count;
+
+    /* Matrices (matrix.c). */
+    RTenum matrix_mode;
+    struct matrix_stack modelview;
+    struct matrix_stack projection;
+
+    /* Current vertex attributes and primitive state (begin_end.c). */
+    float current_normal[3];
+    float current_color[4];
+    float current_texcoord[2];
+    RTenum shade_model;
+    int color_material;
+    struct scene_material material;
+    struct object_recording recording;
+    struct primitive_block block;
+
+    /* Vertex arrays (array.c). */
+    struct client_array vertex_array, normal_array, color_array, texcoord_array;
+
+    /* Objects and the frame (object.c, instance.c). */
+    struct scene_objects objects;
+    struct scene_frame frame;
+
+    /* Rendering (appearance.c, frame.c). */
+    struct render_state render;
+    struct render_pool *pool; /* NULL until a frame needs threads */
+
+    /* Statistics of the last frame or query. */
+    struct render_stats stats;
+};
+
+/* The calling thread's current context, or NULL. */
+struct rt_context *rt_current_context(void);
+
+#define GET_CURRENT_CONTEXT(ctx) struct rt_context *ctx = rt_current_context()
+
+/*
+ * Records an error: stores code when no error is pending, calls the
+ * callback for every error, and prints when TRACELIST_DEBUG is set
+ * (collapsing identical repeats).  fmt starts with the entry point name.
+ */
+void rt_error(struct rt_context *ctx, RTenum code, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+
+/* Records RT_INVALID_OPERATION and returns 1 when inside rtBegin/rtEnd. */
+int rt_check_outside_begin(struct rt_context *ctx, const char *caller);
+/* Records RT_INVALID_OPERATION and returns 1 inside an object definition
+ * or inside rtBegin/rtEnd. */
+int rt_check_outside_object(struct rt_context *ctx, const char *caller);
+/* Returns 1 when every value is finite, else records RT_INVALID_VALUE. */
+int rt_check_finite(struct rt_context *ctx, const char *caller, const float *v, int n);
+int rt_check_finite_d(struct rt_context *ctx, const char *caller, const double *v, int n);
+
+/*
+ * Primitive recording shared by rtBegin/rtVertex and the vertex arrays
+ * (begin_end.c).  rt_block_start fixes the matrices for a block of
+ * vertices; rt_record_vertex transforms one vertex and its normal, stores
+ * it and assembles the triangles it completes.  Returns 0, or -1 after
+ * recording RT_INVALID_VALUE (non-finite result) or RT_OUT_OF_MEMORY, in
+ * which case nothing was stored.
+ */
+void rt_block_start(struct rt_context *ctx, RTenum mode);
+int rt_record_vertex(struct rt_context *ctx, const char *caller, const double position[3],
+                     const float normal[3], const float color[4], const float texcoord[2]);
+/* Checks that a vertex would transform to finite values without storing. */
+int rt_vertex_is_finite(const struct rt_context *ctx, const double position[3]);
+
+/* The top of the current matrix stack. */
+double *rt_current_matrix(struct rt_context *ctx);
+
+/* Commits the frame's instances and builds the top level (frame.c).
+ * Returns 0, or -1 after recording RT_OUT_OF_MEMORY. */
+int rt_prepare_scene(struct rt_context *ctx, const char *caller);
+
+/* Describes the committed scene and the render state for the renderer,
+ * starting the worker pool if needed (frame.c). */
+void rt_render_job(struct rt_context *ctx, struct render_job *job);
+
+/* Starts the worker pool if needed; NULL if threads == 1 or on failure. */
+struct render_pool *rt_pool(struct rt_context *ctx);
+
+#endif

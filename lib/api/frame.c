@@ -1,0 +1,139 @@
+/*
+ * frame.c - rtViewport, rtClearColor, rtRenderFrame, rtFinish,
+ * rtReadPixels, and the scene preparation shared with the ray queries.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "api/context.h"
+#include "base/alloc.h"
+#include "base/timer.h"
+
+void rtViewport(RTint x, RTint y, RTsizei width, RTsizei height)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_begin(ctx, "rtViewport"))
+        return;
+    if (x < 0 || y < 0 || width < 0 || height < 0 || width > RT_MAX_VIEWPORT ||
+        height > RT_MAX_VIEWPORT || x > RT_MAX_VIEWPORT - width ||
+        y > RT_MAX_VIEWPORT - height) {
+        rt_error(ctx, RT_INVALID_VALUE, "rtViewport(x=%d, y=%d, width=%d, height=%d)", x, y,
+                 width, height);
+        return;
+    }
+    int *vp = ctx->render.viewport;
+    vp[0] = x;
+    vp[1] = y;
+    vp[2] = width;
+    vp[3] = height;
+}
+
+void rtClearColor(RTfloat r, RTfloat g, RTfloat b, RTfloat a)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_begin(ctx, "rtClearColor"))
+        return;
+    const float c[4] = {r, g, b, a};
+    if (!rt_check_finite(ctx, "rtClearColor", c, 4))
+        return;
+    for (int i = 0; i < 4; i++)
+        ctx->render.clear_color[i] = fminf(fmaxf(c[i], 0.0f), 1.0f);
+}
+
+int rt_prepare_scene(struct rt_context *ctx, const char *caller)
+{
+    double start = rt_now_ms();
+    int built = 0;
+    if (scene_frame_prepare(&ctx->frame, &ctx->build_params, &built)) {
+        rt_error(ctx, RT_OUT_OF_MEMORY, "%s: out of memory building the top level", caller);
+        return -1;
+    }
+    ctx->stats.toplevel_builds += (uint64_t)built;
+    ctx->stats.toplevel_ms += rt_now_ms() - start;
+    return 0;
+}
+
+void rt_render_job(struct rt_context *ctx, struct render_job *job)
+{
+    job->state = &ctx->render;
+    job->frame = &ctx->frame;
+    job->build_params = &ctx->build_params;
+    job->pool = rt_pool(ctx);
+    job->threads = render_pool_threads(job->pool);
+}
+
+void rtRenderFrame(void)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_object(ctx, "rtRenderFrame"))
+        return;
+    double start = rt_now_ms();
+    memset(&ctx->stats, 0, sizeof(ctx->stats));
+    if (rt_prepare_scene(ctx, "rtRenderFrame"))
+        return;
+    const int *vp = ctx->render.viewport;
+    int fb_width = vp[0] + vp[2], fb_height = vp[1] + vp[3];
+    memcpy(ctx->render.projection, ctx->projection.m[ctx->projection.depth - 1],
+           sizeof(ctx->render.projection));
+    struct render_job job;
+    rt_render_job(ctx, &job);
+    float *fb = NULL;
+    if (render_frame(&job, fb_width, fb_height, &fb, &ctx->stats)) {
+        rt_error(ctx, RT_OUT_OF_MEMORY, "rtRenderFrame: out of memory");
+        return;
+    }
+    rt_free(ctx->render.framebuffer);
+    ctx->render.framebuffer = fb;
+    ctx->render.fb_width = fb_width;
+    ctx->render.fb_height = fb_height;
+    scene_frame_end(&ctx->frame);
+    ctx->stats.render_ms = rt_now_ms() - start;
+}
+
+void rtFinish(void)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_object(ctx, "rtFinish"))
+        return;
+    memset(&ctx->stats, 0, sizeof(ctx->stats));
+    rt_prepare_scene(ctx, "rtFinish");
+}
+
+void rtReadPixels(RTint x, RTint y, RTsizei width, RTsizei height, RTenum format, RTenum type,
+                  void *pixels)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_begin(ctx, "rtReadPixels"))
+        return;
+    if (format != RT_RGBA) {
+        rt_error(ctx, RT_INVALID_ENUM, "rtReadPixels(format=0x%x)", format);
+        return;
+    }
+    if (type != RT_UNSIGNED_BYTE && type != RT_FLOAT) {
+        rt_error(ctx, RT_INVALID_ENUM, "rtReadPixels(type=0x%x)", type);
+        return;
+    }
+    const struct render_state *r = &ctx->render;
+    if (!pixels || x < 0 || y < 0 || width < 0 || height < 0 || x > r->fb_width - width ||
+        y > r->fb_height - height) {
+        rt_error(ctx, RT_INVALID_VALUE,
+                 "rtReadPixels(x=%d, y=%d, width=%d, height=%d, pixels=%p): framebuffer is "
+                 "%dx%d",
+                 x, y, width, height, pixels, r->fb_width, r->fb_height);
+        return;
+    }
+    for (int row = 0; row < height; row++) {
+        const float *src = &r->framebuffer[4 * ((size_t)(y + row) * r->fb_width + x)];
+        size_t n = 4 * (size_t)width;
+        size_t offset = (size_t)row * n;
+        if (type == RT_FLOAT) {
+            memcpy((float *)pixels + offset, src, n * sizeof(float));
+            continue;
+        }
+        unsigned char *dst = (unsigned char *)pixels + offset;
+        for (size_t i = 0; i < n; i++) {
+            float c = fminf(fmaxf(src[i], 0.0f), 1.0f);
+            dst[i] = (unsigned char)lrintf(c * 255.0f);
+        }
+    }
+}

@@ -1,0 +1,229 @@
+/*
+ * get.c - state queries (rtGetString, rtGetIntegerv, rtGetFloatv) and
+ * capabilities (rtEnable, rtDisable, rtIsEnabled).
+ *
+ * One table-like function, state_values, produces every queryable value
+ * as doubles; the typed entry points convert, so the integer and float
+ * queries can never disagree.
+ */
+#include <limits.h>
+#include <string.h>
+
+#include "api/context.h"
+
+#define RT_VERSION_STRING "0.1.0 Tracelist"
+
+const char *rtGetString(RTenum name)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_begin(ctx, "rtGetString"))
+        return NULL;
+    switch (name) {
+    case RT_VENDOR:
+        return "Tracelist";
+    case RT_RENDERER:
+        return "Tracelist CPU ray tracer (binned SAH BVH, two-level, pthreads)";
+    case RT_VERSION:
+        return RT_VERSION_STRING;
+    case RT_EXTENSIONS:
+        return "";
+    case RT_CONFIGURATION:
+        return ctx->configuration;
+    default:
+        rt_error(ctx, RT_INVALID_ENUM, "rtGetString(name=0x%x)", name);
+        return NULL;
+    }
+}
+
+enum value_kind { VALUE_NONE, VALUE_INT, VALUE_FLOAT, VALUE_MATRIX };
+
+/* Writes the values of pname into v (at most 16) and returns their count
+ * and kind; VALUE_NONE for an unknown pname. */
+static enum value_kind state_values(const struct rt_context *ctx, RTenum pname, double v[16],
+                                    int *count)
+{
+    const struct render_stats *st = &ctx->stats;
+    *count = 1;
+    switch (pname) {
+    case RT_MATRIX_MODE:
+        v[0] = ctx->matrix_mode;
+        return VALUE_INT;
+    case RT_MODELVIEW_STACK_DEPTH:
+        v[0] = ctx->modelview.depth;
+        return VALUE_INT;
+    case RT_PROJECTION_STACK_DEPTH:
+        v[0] = ctx->projection.depth;
+        return VALUE_INT;
+    case RT_MAX_MODELVIEW_STACK_DEPTH:
+        v[0] = ctx->modelview.max_depth;
+        return VALUE_INT;
+    case RT_MAX_PROJECTION_STACK_DEPTH:
+        v[0] = ctx->projection.max_depth;
+        return VALUE_INT;
+    case RT_VIEWPORT:
+        for (int i = 0; i < 4; i++)
+            v[i] = ctx->render.viewport[i];
+        *count = 4;
+        return VALUE_INT;
+    case RT_MAX_LIGHTS:
+        v[0] = RENDER_MAX_LIGHTS;
+        return VALUE_INT;
+    case RT_THREADS:
+        v[0] = ctx->threads;
+        return VALUE_INT;
+    case RT_BVH_BINS:
+        v[0] = ctx->build_params.bins;
+        return VALUE_INT;
+    case RT_OBJECT_COUNT:
+        v[0] = ctx->objects.defined;
+        return VALUE_INT;
+    case RT_INSTANCE_COUNT:
+        v[0] = ctx->frame.open ? ctx->frame.pending.count : ctx->frame.committed.count;
+        return VALUE_INT;
+    case RT_WORKER_THREADS_RUNNING:
+        v[0] = ctx->pool ? render_pool_threads(ctx->pool) - 1 : 0;
+        return VALUE_INT;
+    case RT_SHADING_MODE:
+        v[0] = ctx->render.shading == RENDER_WHITTED ? RT_WHITTED : RT_EYE_LIGHT;
+        return VALUE_INT;
+    case RT_MAX_RAY_DEPTH:
+        v[0] = ctx->render.max_depth;
+        return VALUE_INT;
+    case RT_SHADE_MODEL:
+        v[0] = ctx->shade_model;
+        return VALUE_INT;
+    case RT_STAT_RAYS:
+        v[0] = (double)st->rays;
+        return VALUE_INT;
+    case RT_STAT_NODE_TESTS:
+        v[0] = (double)st->node_tests;
+        return VALUE_INT;
+    case RT_STAT_TRIANGLE_TESTS:
+        v[0] = (double)st->triangle_tests;
+        return VALUE_INT;
+    case RT_STAT_INSTANCE_TESTS:
+        v[0] = (double)st->instance_tests;
+        return VALUE_INT;
+    case RT_STAT_OBJECT_BUILDS:
+        v[0] = (double)st->object_builds;
+        return VALUE_INT;
+    case RT_STAT_TOPLEVEL_BUILDS:
+        v[0] = (double)st->toplevel_builds;
+        return VALUE_INT;
+    case RT_STAT_BUILD_TIME:
+        v[0] = st->build_ms;
+        return VALUE_FLOAT;
+    case RT_STAT_TOPLEVEL_TIME:
+        v[0] = st->toplevel_ms;
+        return VALUE_FLOAT;
+    case RT_STAT_RENDER_TIME:
+        v[0] = st->render_ms;
+        return VALUE_FLOAT;
+    case RT_COLOR_CLEAR_VALUE:
+        for (int i = 0; i < 4; i++)
+            v[i] = ctx->render.clear_color[i];
+        *count = 4;
+        return VALUE_FLOAT;
+    case RT_LIGHT_MODEL_AMBIENT:
+        for (int i = 0; i < 4; i++)
+            v[i] = ctx->render.global_ambient[i];
+        *count = 4;
+        return VALUE_FLOAT;
+    case RT_MODELVIEW_MATRIX:
+        memcpy(v, ctx->modelview.m[ctx->modelview.depth - 1], 16 * sizeof(double));
+        *count = 16;
+        return VALUE_MATRIX;
+    case RT_PROJECTION_MATRIX:
+        memcpy(v, ctx->projection.m[ctx->projection.depth - 1], 16 * sizeof(double));
+        *count = 16;
+        return VALUE_MATRIX;
+    default:
+        *count = 0;
+        return VALUE_NONE;
+    }
+}
+
+void rtGetIntegerv(RTenum pname, RTint *params)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx)
+        return;
+    double v[16];
+    int n;
+    enum value_kind kind = state_values(ctx, pname, v, &n);
+    if (kind != VALUE_INT) {
+        rt_error(ctx, RT_INVALID_ENUM, "rtGetIntegerv(pname=0x%x)", pname);
+        return;
+    }
+    if (!params) {
+        rt_error(ctx, RT_INVALID_VALUE, "rtGetIntegerv(params=NULL)");
+        return;
+    }
+    for (int i = 0; i < n; i++)
+        params[i] = v[i] >= (double)INT_MAX ? INT_MAX : (RTint)v[i];
+}
+
+void rtGetFloatv(RTenum pname, RTfloat *params)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx)
+        return;
+    double v[16];
+    int n;
+    if (state_values(ctx, pname, v, &n) == VALUE_NONE) {
+        rt_error(ctx, RT_INVALID_ENUM, "rtGetFloatv(pname=0x%x)", pname);
+        return;
+    }
+    if (!params) {
+        rt_error(ctx, RT_INVALID_VALUE, "rtGetFloatv(params=NULL)");
+        return;
+    }
+    for (int i = 0; i < n; i++)
+        params[i] = (RTfloat)v[i];
+}
+
+/* The flag behind a capability, or NULL when cap is not one. */
+static int *capability(struct rt_context *ctx, RTenum cap)
+{
+    if (cap >= RT_LIGHT0 && cap < RT_LIGHT0 + RENDER_MAX_LIGHTS)
+        return &ctx->render.lights[cap - RT_LIGHT0].enabled;
+    if (cap == RT_COLOR_MATERIAL)
+        return &ctx->color_material;
+    return NULL;
+}
+
+static void set_capability(const char *caller, RTenum cap, int value)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_begin(ctx, caller))
+        return;
+    int *flag = capability(ctx, cap);
+    if (!flag) {
+        rt_error(ctx, RT_INVALID_ENUM, "%s(cap=0x%x)", caller, cap);
+        return;
+    }
+    *flag = value;
+}
+
+void rtEnable(RTenum cap)
+{
+    set_capability("rtEnable", cap, 1);
+}
+
+void rtDisable(RTenum cap)
+{
+    set_capability("rtDisable", cap, 0);
+}
+
+RTboolean rtIsEnabled(RTenum cap)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_begin(ctx, "rtIsEnabled"))
+        return RT_FALSE;
+    int *flag = capability(ctx, cap);
+    if (!flag) {
+        rt_error(ctx, RT_INVALID_ENUM, "rtIsEnabled(cap=0x%x)", cap);
+        return RT_FALSE;
+    }
+    return *flag ? RT_TRUE : RT_FALSE;
+}

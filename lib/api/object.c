@@ -1,0 +1,216 @@
+/*
+ * object.c - objects, the display lists of Tracelist: rtGenObjects,
+ * rtNewObject, rtEndObject, rtDeleteObjects, rtIsObject, rtGetObject*.
+ *
+ * A definition is recorded into a private mesh and swapped in whole at
+ * rtEndObject, so instances keep showing the previous definition until
+ * the new one is complete (and keep it if recording ran out of memory).
+ */
+#include <limits.h>
+#include <string.h>
+
+#include "api/context.h"
+
+void rtGenObjects(RTsizei n, RTuint *names)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_begin(ctx, "rtGenObjects"))
+        return;
+    if (n < 0 || (n > 0 && !names)) {
+        rt_error(ctx, RT_INVALID_VALUE, "rtGenObjects(n=%d, objects=%p)", n, (void *)names);
+        return;
+    }
+    if (scene_objects_generate(&ctx->objects, (uint32_t)n, names))
+        rt_error(ctx, RT_OUT_OF_MEMORY, "rtGenObjects(n=%d): out of memory", n);
+}
+
+void rtNewObject(RTuint name)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_begin(ctx, "rtNewObject"))
+        return;
+    if (ctx->recording.active) {
+        rt_error(ctx, RT_INVALID_OPERATION,
+                 "rtNewObject(%u): objects cannot nest (object %u is being defined)", name,
+                 ctx->recording.name);
+        return;
+    }
+    if (name == 0) {
+        rt_error(ctx, RT_INVALID_VALUE, "rtNewObject(0): 0 is not an object name");
+        return;
+    }
+    struct object_recording *rec = &ctx->recording;
+    scene_mesh_release(&rec->mesh);
+    rec->active = 1;
+    rec->name = name;
+    rec->out_of_memory = 0;
+    rec->material_index = -1;
+}
+
+/* Bounds of the vertices that triangles use (leftover vertices of
+ * incomplete primitives do not count). */
+static void compute_bounds(struct scene_mesh *mesh)
+{
+    mesh->bounds = aabb_empty();
+    for (uint32_t i = 0; i < 3 * mesh->tri_count; i++)
+        aabb_grow_point(&mesh->bounds, &mesh->positions[3 * mesh->indices[i]]);
+}
+
+void rtEndObject(void)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_begin(ctx, "rtEndObject"))
+        return;
+    struct object_recording *rec = &ctx->recording;
+    if (!rec->active) {
+        rt_error(ctx, RT_INVALID_OPERATION, "rtEndObject: no matching rtNewObject");
+        return;
+    }
+    if (rec->out_of_memory) {
+        /* The error was recorded where memory ran out; the incomplete
+         * definition is dropped and the old one stays. */
+        scene_mesh_release(&rec->mesh);
+        rec->active = 0;
+        return;
+    }
+    struct scene_object *object = scene_objects_get_or_create(&ctx->objects, rec->name);
+    if (!object) {
+        rt_error(ctx, RT_OUT_OF_MEMORY, "rtEndObject: out of memory creating object %u",
+                 rec->name);
+        scene_mesh_release(&rec->mesh);
+        rec->active = 0;
+        return;
+    }
+    compute_bounds(&rec->mesh);
+    scene_object_define(&ctx->objects, object, &rec->mesh);
+    rec->active = 0;
+}
+
+void rtDeleteObjects(RTsizei n, const RTuint *names)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_object(ctx, "rtDeleteObjects"))
+        return;
+    if (n < 0 || (n > 0 && !names)) {
+        rt_error(ctx, RT_INVALID_VALUE, "rtDeleteObjects(n=%d, objects=%p)", n,
+                 (const void *)names);
+        return;
+    }
+    for (RTsizei i = 0; i < n; i++) {
+        struct scene_object *object = scene_objects_lookup(&ctx->objects, names[i]);
+        if (!object)
+            continue; /* 0 and unknown names are ignored, as glDeleteLists */
+        scene_frame_forget_object(&ctx->frame, object);
+        scene_objects_remove(&ctx->objects, names[i]);
+    }
+}
+
+RTboolean rtIsObject(RTuint name)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_begin(ctx, "rtIsObject"))
+        return RT_FALSE;
+    const struct scene_object *object = scene_objects_lookup(&ctx->objects, name);
+    return object && object->defined ? RT_TRUE : RT_FALSE;
+}
+
+/* Looks up a defined object for a query; records RT_INVALID_VALUE if none. */
+static const struct scene_object *query_object(struct rt_context *ctx, const char *caller,
+                                               RTuint name, const void *params)
+{
+    const struct scene_object *object = scene_objects_lookup(&ctx->objects, name);
+    if (!object || !object->defined) {
+        rt_error(ctx, RT_INVALID_VALUE, "%s(object=%u): not an object", caller, name);
+        return NULL;
+    }
+    if (!params) {
+        rt_error(ctx, RT_INVALID_VALUE, "%s(params=NULL)", caller);
+        return NULL;
+    }
+    return object;
+}
+
+/* Values of a per-object query (pname already validated) as doubles;
+ * returns the count. */
+static int object_values(const struct scene_object *object, RTenum pname, double v[6])
+{
+    const struct scene_accel *accel = scene_object_peek(object);
+    switch (pname) {
+    case RT_OBJECT_TRIANGLES:
+        v[0] = object->mesh.tri_count;
+        return 1;
+    case RT_OBJECT_BUILT:
+        v[0] = accel ? 1.0 : 0.0;
+        return 1;
+    case RT_OBJECT_BVH_NODES:
+        v[0] = accel ? accel->bvh.node_count : 0;
+        return 1;
+    case RT_OBJECT_SAH_COST:
+        v[0] = accel ? accel->sah_cost : 0.0;
+        return 1;
+    case RT_OBJECT_BUILD_TIME:
+        v[0] = accel ? accel->build_ms : 0.0;
+        return 1;
+    case RT_OBJECT_BOUNDS:
+        for (int k = 0; k < 3; k++) {
+            int empty = aabb_is_empty(&object->mesh.bounds);
+            v[k] = empty ? 0.0 : object->mesh.bounds.min[k];
+            v[3 + k] = empty ? 0.0 : object->mesh.bounds.max[k];
+        }
+        return 6;
+    default:
+        return 0;
+    }
+}
+
+static int pname_is_valid(RTenum pname, int as_float)
+{
+    switch (pname) {
+    case RT_OBJECT_TRIANGLES:
+    case RT_OBJECT_BUILT:
+    case RT_OBJECT_BVH_NODES:
+    case RT_OBJECT_BOUNDS:
+        return 1;
+    case RT_OBJECT_SAH_COST:
+    case RT_OBJECT_BUILD_TIME:
+        return as_float;
+    default:
+        return 0;
+    }
+}
+
+void rtGetObjectiv(RTuint name, RTenum pname, RTint *params)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_begin(ctx, "rtGetObjectiv"))
+        return;
+    if (!pname_is_valid(pname, 0)) {
+        rt_error(ctx, RT_INVALID_ENUM, "rtGetObjectiv(pname=0x%x)", pname);
+        return;
+    }
+    const struct scene_object *object = query_object(ctx, "rtGetObjectiv", name, params);
+    if (!object)
+        return;
+    double v[6];
+    int n = object_values(object, pname, v);
+    for (int i = 0; i < n; i++)
+        params[i] = v[i] >= INT_MAX ? INT_MAX : v[i] <= INT_MIN ? INT_MIN : (RTint)v[i];
+}
+
+void rtGetObjectfv(RTuint name, RTenum pname, RTfloat *params)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_begin(ctx, "rtGetObjectfv"))
+        return;
+    if (!pname_is_valid(pname, 1)) {
+        rt_error(ctx, RT_INVALID_ENUM, "rtGetObjectfv(pname=0x%x)", pname);
+        return;
+    }
+    const struct scene_object *object = query_object(ctx, "rtGetObjectfv", name, params);
+    if (!object)
+        return;
+    double v[6];
+    int n = object_values(object, pname, v);
+    for (int i = 0; i < n; i++)
+        params[i] = (RTfloat)v[i];
+}

@@ -1,0 +1,135 @@
+/*
+ * pool.c - a minimal pthread worker pool for frames and ray batches.
+ *
+ * threads - 1 workers wait on a condition variable; render_pool_run wakes
+ * them for one task, runs worker 0 on the calling thread, and waits until
+ * every worker has finished.  Work inside a task is shared dynamically
+ * (the task hands out tiles or ray chunks through an atomic counter), so
+ * the pool itself does no scheduling.  Created on the first frame that
+ * needs it: a context that never renders never starts a thread.
+ */
+#include "render/render.h"
+
+#include <pthread.h>
+
+#include "base/alloc.h"
+
+struct render_pool {
+    int threads;
+    pthread_t *workers;
+    pthread_mutex_t lock;
+    pthread_cond_t wake;
+    pthread_cond_t done;
+    uint64_t generation; /* bumped per task */
+    int pending;         /* workers still running the current task */
+    int quit;
+    render_task_fn fn;
+    void *arg;
+};
+
+struct worker_start {
+    struct render_pool *pool;
+    int index;
+};
+
+static void *worker_main(void *p)
+{
+    struct worker_start *start = p;
+    struct render_pool *pool = start->pool;
+    int index = start->index;
+    rt_free(start);
+    uint64_t seen = 0;
+    pthread_mutex_lock(&pool->lock);
+    for (;;) {
+        while (!pool->quit && pool->generation == seen)
+            pthread_cond_wait(&pool->wake, &pool->lock);
+        if (pool->quit)
+            break;
+        seen = pool->generation;
+        render_task_fn fn = pool->fn;
+        void *arg = pool->arg;
+        pthread_mutex_unlock(&pool->lock);
+        fn(arg, index);
+        pthread_mutex_lock(&pool->lock);
+        if (--pool->pending == 0)
+            pthread_cond_signal(&pool->done);
+    }
+    pthread_mutex_unlock(&pool->lock);
+    return NULL;
+}
+
+struct render_pool *render_pool_create(int threads)
+{
+    if (threads < 2)
+        return NULL;
+    struct render_pool *pool = rt_calloc(1, sizeof(*pool));
+    if (!pool)
+        return NULL;
+    pool->workers = rt_calloc((size_t)threads - 1, sizeof(pthread_t));
+    if (!pool->workers) {
+        rt_free(pool);
+        return NULL;
+    }
+    pthread_mutex_init(&pool->lock, NULL);
+    pthread_cond_init(&pool->wake, NULL);
+    pthread_cond_init(&pool->done, NULL);
+    pool->threads = 1;
+    for (int i = 1; i < threads; i++) {
+        struct worker_start *start = rt_malloc(sizeof(*start));
+        if (!start)
+            break;
+        start->pool = pool;
+        start->index = i;
+        if (pthread_create(&pool->workers[i - 1], NULL, worker_main, start) != 0) {
+            rt_free(start);
+            break;
+        }
+        pool->threads++;
+    }
+    /* Fewer threads than asked (resource limits) still render correctly. */
+    return pool;
+}
+
+void render_pool_run(struct render_pool *pool, render_task_fn fn, void *arg)
+{
+    if (!pool || pool->threads < 2) {
+        fn(arg, 0);
+        return;
+    }
+    pthread_mutex_lock(&pool->lock);
+    pool->fn = fn;
+    pool->arg = arg;
+    pool->pending = pool->threads - 1;
+    pool->generation++;
+    pthread_cond_broadcast(&pool->wake);
+    pthread_mutex_unlock(&pool->lock);
+
+    fn(arg, 0);
+
+    pthread_mutex_lock(&pool->lock);
+    while (pool->pending > 0)
+        pthread_cond_wait(&pool->done, &pool->lock);
+    pthread_mutex_unlock(&pool->lock);
+}
+
+int render_pool_threads(const struct render_pool *pool)
+{
+    return pool ? pool->threads : 1;
+}
+
+void render_pool_destroy(struct render_pool *pool)
+{
+    if (!pool)
+        return;
+    pthread_mutex_lock(&pool->lock);
+    pool->quit = 1;
+    pthread_cond_broadcast(&pool->wake);
+    pthread_mutex_unlock(&pool->lock);
+    for (int i = 0; i < pool->threads - 1; i++)
+        pthread_join(pool->workers[i], NULL);
+    pthread_mutex_destroy(&pool->lock);
+    pthread_cond_destroy(&pool->wake);
+    pthread_cond_destroy(&pool->done);
+    rt_free(pool->workers);
+    rt_free(pool);
+}

@@ -1,0 +1,251 @@
+/*
+ * render.c - frames (tiles over the worker pool) and ray-query batches.
+ */
+#include "render/render.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "base/alloc.h"
+#include "base/mat4.h"
+#include "base/timer.h"
+#include "render/shade.h"
+
+/* 16x16 pixel tiles: small enough to balance two to eight threads on
+ * 640x480 (1200 tiles), large enough that the atomic counter is noise. */
+#define RENDER_TILE_SIZE 16
+/* Rays per work item of a query batch. */
+#define RENDER_QUERY_CHUNK 1024
+
+/* Per-worker counters on their own cache lines. */
+struct worker_counters {
+    struct trace_scene_counters c;
+    char pad[64];
+};
+
+struct render_shared {
+    const struct render_job *job;
+    struct trace_scene scene;
+    struct worker_counters *counters;
+    uint64_t builds;     /* atomic */
+    uint64_t build_us;   /* atomic */
+    int failed;          /* atomic: an object could not be built */
+    uint32_t next_item;  /* atomic work counter */
+    /* Frames. */
+    double inv_projection[16];
+    float *fb;
+    int fb_width;
+    int tiles_x, tiles_y;
+    /* Queries. */
+    int count;
+    const RTray *rays;
+    RThit *hits;
+    RTboolean *occluded;
+};
+
+static int acquire_object(void *user, void *object, struct trace_object_view *view)
+{
+    struct render_shared *sh = user;
+    int built_now;
+    double start = rt_now_ms();
+    const struct scene_accel *accel =
+        scene_object_acquire(object, sh->job->build_params, &built_now);
+    if (!accel) {
+        __atomic_store_n(&sh->failed, 1, __ATOMIC_RELAXED);
+        return 0;
+    }
+    if (built_now) {
+        __atomic_add_fetch(&sh->builds, 1, __ATOMIC_RELAXED);
+        __atomic_add_fetch(&sh->build_us, (uint64_t)((rt_now_ms() - start) * 1000.0),
+                           __ATOMIC_RELAXED);
+    }
+    view->bvh = &accel->bvh;
+    view->tri = accel->tri;
+    return 1;
+}
+
+static int shared_init(struct render_shared *sh, const struct render_job *job)
+{
+    memset(sh, 0, sizeof(*sh));
+    sh->job = job;
+    sh->scene.top = &job->frame->top;
+    sh->scene.instances = job->frame->trace_instances;
+    sh->scene.acquire = acquire_object;
+    sh->scene.user = sh;
+    sh->counters = rt_calloc((size_t)render_pool_threads(job->pool), sizeof(*sh->counters));
+    return sh->counters ? 0 : -1;
+}
+
+static void shared_finish(struct render_shared *sh, struct render_stats *stats)
+{
+    int n = render_pool_threads(sh->job->pool);
+    for (int i = 0; i < n; i++) {
+        const struct trace_scene_counters *c = &sh->counters[i].c;
+        stats->rays += c->rays;
+        stats->node_tests += c->top_node_tests + c->object.node_tests;
+        stats->triangle_tests += c->object.triangle_tests;
+        stats->instance_tests += c->instance_tests;
+    }
+    stats->object_builds += sh->builds;
+    stats->build_ms += (double)sh->build_us / 1000.0;
+    rt_free(sh->counters);
+}
+
+/* Primary ray through the centre of viewport pixel (px, py): from the near
+ * to the far plane through the inverse projection, as OpenGL clips. */
+static int primary_ray(const struct render_shared *sh, int px, int py, float org[3],
+                       float dir[3], float *tmax)
+{
+    const int *vp = sh->job->state->viewport;
+    double ndc_near[3] = {2.0 * (px + 0.5) / vp[2] - 1.0, 2.0 * (py + 0.5) / vp[3] - 1.0, -1.0};
+    double ndc_far[3] = {ndc_near[0], ndc_near[1], 1.0};
+    double near_pt[3], far_pt[3];
+    if (!mat4_project(sh->inv_projection, ndc_near, near_pt) ||
+        !mat4_project(sh->inv_projection, ndc_far, far_pt))
+        return 0;
+    double d[3] = {far_pt[0] - near_pt[0], far_pt[1] - near_pt[1], far_pt[2] - near_pt[2]};
+    double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    if (!(len > 0.0) || !isfinite(len))
+        return 0;
+    for (int k = 0; k < 3; k++) {
+        org[k] = (float)near_pt[k];
+        dir[k] = (float)(d[k] / len);
+    }
+    *tmax = (float)len;
+    return 1;
+}
+
+static void frame_task(void *arg, int worker)
+{
+    struct render_shared *sh = arg;
+    const struct render_state *st = sh->job->state;
+    struct shade_context sc = {st, sh->job->frame, &sh->scene, &sh->counters[worker].c};
+    const int *vp = st->viewport;
+    uint32_t tiles = (uint32_t)(sh->tiles_x * sh->tiles_y);
+    for (;;) {
+        uint32_t tile = __atomic_fetch_add(&sh->next_item, 1, __ATOMIC_RELAXED);
+        if (tile >= tiles)
+            break;
+        int x0 = (int)(tile % (uint32_t)sh->tiles_x) * RENDER_TILE_SIZE;
+        int y0 = (int)(tile / (uint32_t)sh->tiles_x) * RENDER_TILE_SIZE;
+        for (int y = y0; y < y0 + RENDER_TILE_SIZE && y < vp[3]; y++)
+            for (int x = x0; x < x0 + RENDER_TILE_SIZE && x < vp[2]; x++) {
+                float *px = &sh->fb[4 * ((size_t)(vp[1] + y) * sh->fb_width + vp[0] + x)];
+                float org[3], dir[3], tmax;
+                if (!primary_ray(sh, x, y, org, dir, &tmax)) {
+                    memcpy(px, st->clear_color, 4 * sizeof(float));
+                    continue;
+                }
+                shade_ray(&sc, org, dir, tmax, 0, px);
+            }
+    }
+}
+
+int render_frame(const struct render_job *job, int fb_width, int fb_height, float **out,
+                 struct render_stats *stats)
+{
+    const struct render_state *st = job->state;
+    size_t pixels = (size_t)fb_width * (size_t)fb_height;
+    float *fb = rt_calloc(pixels ? pixels : 1, 4 * sizeof(float));
+    if (!fb)
+        return -1;
+    for (size_t i = 0; i < pixels; i++)
+        memcpy(&fb[4 * i], st->clear_color, 4 * sizeof(float));
+    struct render_shared sh;
+    if (shared_init(&sh, job)) {
+        rt_free(fb);
+        return -1;
+    }
+    sh.fb = fb;
+    sh.fb_width = fb_width;
+    sh.tiles_x = (st->viewport[2] + RENDER_TILE_SIZE - 1) / RENDER_TILE_SIZE;
+    sh.tiles_y = (st->viewport[3] + RENDER_TILE_SIZE - 1) / RENDER_TILE_SIZE;
+    /* A singular projection leaves every pixel at the clear colour. */
+    if (mat4_invert(sh.inv_projection, st->projection) && sh.tiles_x > 0 && sh.tiles_y > 0)
+        render_pool_run(job->pool, frame_task, &sh);
+    int failed = sh.failed;
+    shared_finish(&sh, stats);
+    if (failed) {
+        rt_free(fb);
+        return -1;
+    }
+    *out = fb;
+    return 0;
+}
+
+static void miss(RThit *h)
+{
+    h->t = INFINITY;
+    h->u = 0.0f;
+    h->v = 0.0f;
+    h->instance = RT_INVALID_ID;
+    h->object = RT_INVALID_ID;
+    h->primitive = RT_INVALID_ID;
+}
+
+static void query_task(void *arg, int worker)
+{
+    struct render_shared *sh = arg;
+    struct trace_scene_counters *counters = &sh->counters[worker].c;
+    for (;;) {
+        uint32_t item = __atomic_fetch_add(&sh->next_item, 1, __ATOMIC_RELAXED);
+        size_t first = (size_t)item * RENDER_QUERY_CHUNK;
+        if (first >= (size_t)sh->count)
+            break;
+        size_t last = first + RENDER_QUERY_CHUNK;
+        if (last > (size_t)sh->count)
+            last = (size_t)sh->count;
+        for (size_t i = first; i < last; i++) {
+            const RTray *r = &sh->rays[i];
+            if (sh->occluded) {
+                sh->occluded[i] = (RTboolean)trace_scene_any(&sh->scene, r->org, r->dir, r->tmin,
+                                                             r->tmax, counters);
+                continue;
+            }
+            struct trace_scene_hit h;
+            RThit *out = &sh->hits[i];
+            if (!trace_scene_closest(&sh->scene, r->org, r->dir, r->tmin, r->tmax, &h,
+                                     counters)) {
+                miss(out);
+                continue;
+            }
+            const struct trace_instance *ti = &sh->scene.instances[h.instance];
+            const struct scene_object *object = ti->object;
+            out->t = h.t;
+            out->u = h.u;
+            out->v = h.v;
+            out->instance = ti->instance_id;
+            out->object = object->name;
+            out->primitive = h.prim;
+        }
+    }
+}
+
+static int run_queries(const struct render_job *job, int count, const RTray *rays, RThit *hits,
+                       RTboolean *occluded, struct render_stats *stats)
+{
+    struct render_shared sh;
+    if (shared_init(&sh, job))
+        return -1;
+    sh.count = count;
+    sh.rays = rays;
+    sh.hits = hits;
+    sh.occluded = occluded;
+    /* One chunk needs no helpers: avoid waking the pool for tiny batches. */
+    render_pool_run(count > RENDER_QUERY_CHUNK ? job->pool : NULL, query_task, &sh);
+    int failed = sh.failed;
+    shared_finish(&sh, stats);
+    return failed ? -1 : 0;
+}
+
+int render_trace_rays(const struct render_job *job, int count, const RTray *rays, RThit *hits,
+                      struct render_stats *stats)
+{
+    return run_queries(job, count, rays, hits, NULL, stats);
+}
+
+int render_occluded_rays(const struct render_job *job, int count, const RTray *rays,
+                         RTboolean *occluded, struct render_stats *stats)
+{
+    return run_queries(job, count, rays, NULL, occluded, stats);
+}

@@ -1,0 +1,264 @@
+/*
+ * shade.c - eye-light and Whitted shading (see shade.h).
+ *
+ * Lighting follows OpenGL's fixed-function model (OpenGL 2.1 spec sec.
+ * 2.14.1: emission + global ambient + per light attenuated ambient,
+ * diffuse and Blinn-Phong specular) so a ported GL program looks as it
+ * did, with hard shadows, mirror reflection and refraction added in the
+ * manner of Whitted (1980).  Surfaces are two-sided: normals are turned
+ * towards the incoming ray.
+ */
+#include "render/shade.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "base/mat4.h"
+
+/* Surface data at a hit, in world space. */
+struct surface {
+    float p[3];  /* hit point */
+    float ng[3]; /* geometric normal, unit, facing the incoming ray */
+    float n[3];  /* shading normal, unit, same side as ng */
+    int front;   /* the ray hit the front face (counter-clockwise side) */
+    struct scene_material mat;
+};
+
+void shade_offset_point(const float p[3], const float n[3], float out[3])
+{
+    const float origin = 1.0f / 32.0f;
+    const float float_scale = 1.0f / 65536.0f;
+    const float int_scale = 256.0f;
+    for (int k = 0; k < 3; k++) {
+        int32_t of_i = (int32_t)(int_scale * n[k]);
+        int32_t bits;
+        memcpy(&bits, &p[k], sizeof(bits));
+        bits += (p[k] < 0.0f) ? -of_i : of_i;
+        float p_i;
+        memcpy(&p_i, &bits, sizeof(p_i));
+        out[k] = fabsf(p[k]) < origin ? p[k] + float_scale * n[k] : p_i;
+    }
+}
+
+static void transform_normal(const double m[16], const float in[3], float out[3])
+{
+    for (int r = 0; r < 3; r++)
+        out[r] = (float)(m[r] * in[0] + m[4 + r] * in[1] + m[8 + r] * in[2]);
+}
+
+static void interpolate(const float *attr, int stride, const uint32_t v[3], float b0, float b1,
+                        float b2, int n, float *out)
+{
+    for (int k = 0; k < n; k++)
+        out[k] = b0 * attr[stride * v[0] + k] + b1 * attr[stride * v[1] + k] +
+                 b2 * attr[stride * v[2] + k];
+}
+
+static void fetch_surface(const struct shade_context *sc, const struct trace_scene_hit *hit,
+                          const float dir[3], struct surface *s)
+{
+    const struct trace_instance *ti = &sc->scene->instances[hit->instance];
+    const struct scene_instance *inst = &sc->frame->committed.items[ti->instance_id];
+    const struct scene_mesh *mesh = &inst->object->mesh;
+    const uint32_t *v = &mesh->indices[3 * hit->prim];
+    const float b1 = hit->u, b2 = hit->v, b0 = 1.0f - hit->u - hit->v;
+
+    /* Position from barycentrics in object space, then to world in double:
+     * more accurate than org + t dir far from the origin. */
+    float po[3];
+    interpolate(mesh->positions, 3, v, b0, b1, b2, 3, po);
+    double pd[3] = {po[0], po[1], po[2]}, pw[3];
+    mat4_transform_point(inst->object_to_world, pd, pw);
+    for (int k = 0; k < 3; k++)
+        s->p[k] = (float)pw[k];
+
+    const float *p0 = &mesh->positions[3 * v[0]];
+    const float *p1 = &mesh->positions[3 * v[1]];
+    const float *p2 = &mesh->positions[3 * v[2]];
+    float e1[3], e2[3], ngo[3];
+    vec3_sub(e1, p1, p0);
+    vec3_sub(e2, p2, p0);
+    vec3_cross(ngo, e1, e2);
+    transform_normal(inst->normal_to_world, ngo, s->ng);
+    if (!vec3_normalize(s->ng)) {
+        /* Sliver too thin for float: any unit vector facing the ray. */
+        s->ng[0] = -dir[0];
+        s->ng[1] = -dir[1];
+        s->ng[2] = -dir[2];
+        vec3_normalize(s->ng);
+    }
+    s->front = vec3_dot(s->ng, dir) < 0.0f;
+    if (!s->front)
+        for (int k = 0; k < 3; k++)
+            s->ng[k] = -s->ng[k];
+
+    uint8_t flags = mesh->tri_flags[hit->prim];
+    uint32_t provoking = mesh->tri_provoking[hit->prim];
+    memcpy(s->n, s->ng, sizeof(s->n));
+    if (mesh->has_normals) {
+        float no[3];
+        if (flags & TRI_FLAT)
+            memcpy(no, &mesh->normals[3 * provoking], sizeof(no));
+        else
+            interpolate(mesh->normals, 3, v, b0, b1, b2, 3, no);
+        float nw[3];
+        transform_normal(inst->normal_to_world, no, nw);
+        if (vec3_normalize(nw)) {
+            if (vec3_dot(nw, s->ng) < 0.0f)
+                for (int k = 0; k < 3; k++)
+                    nw[k] = -nw[k];
+            memcpy(s->n, nw, sizeof(s->n));
+        }
+    }
+
+    s->mat = mesh->materials[mesh->tri_material[hit->prim]];
+    if (flags & TRI_COLOR_MATERIAL) {
+        float c[4];
+        if (flags & TRI_FLAT)
+            memcpy(c, &mesh->colors[4 * provoking], sizeof(c));
+        else
+            interpolate(mesh->colors, 4, v, b0, b1, b2, 4, c);
+        memcpy(s->mat.ambient, c, sizeof(c));
+        memcpy(s->mat.diffuse, c, sizeof(c));
+    }
+}
+
+static void add_scaled(float acc[3], const float a[4], const float b[4], float scale)
+{
+    for (int k = 0; k < 3; k++)
+        acc[k] += a[k] * b[k] * scale;
+}
+
+static void local_whitted(const struct shade_context *sc, const struct surface *s,
+                          const float dir[3], float c[3])
+{
+    const struct render_state *st = sc->state;
+    for (int k = 0; k < 3; k++)
+        c[k] = s->mat.emission[k] + st->global_ambient[k] * s->mat.ambient[k];
+    float view[3] = {-dir[0], -dir[1], -dir[2]};
+    vec3_normalize(view);
+    float origin[3];
+    shade_offset_point(s->p, s->ng, origin);
+    for (int i = 0; i < RENDER_MAX_LIGHTS; i++) {
+        const struct render_light *light = &st->lights[i];
+        if (!light->enabled)
+            continue;
+        float to_light[3], shadow_dir[3], shadow_tmax, attenuation = 1.0f;
+        if (light->position[3] != 0.0f) {
+            float lp[3];
+            for (int k = 0; k < 3; k++)
+                lp[k] = light->position[k] / light->position[3];
+            vec3_sub(shadow_dir, lp, origin);
+            shadow_tmax = 1.0f;
+            memcpy(to_light, shadow_dir, sizeof(to_light));
+            float d = sqrtf(vec3_dot(to_light, to_light));
+            float att = light->attenuation[0] + light->attenuation[1] * d +
+                        light->attenuation[2] * d * d;
+            attenuation = att > 0.0f ? 1.0f / att : 1.0f;
+        } else {
+            memcpy(to_light, light->position, sizeof(to_light));
+            memcpy(shadow_dir, to_light, sizeof(shadow_dir));
+            shadow_tmax = INFINITY;
+        }
+        add_scaled(c, light->ambient, s->mat.ambient, attenuation);
+        if (!vec3_normalize(to_light))
+            continue;
+        float n_dot_l = vec3_dot(s->n, to_light);
+        if (n_dot_l <= 0.0f || vec3_dot(s->ng, to_light) <= 0.0f)
+            continue;
+        if (trace_scene_any(sc->scene, origin, shadow_dir, 0.0f, shadow_tmax, sc->counters))
+            continue;
+        add_scaled(c, light->diffuse, s->mat.diffuse, attenuation * n_dot_l);
+        float h[3] = {to_light[0] + view[0], to_light[1] + view[1], to_light[2] + view[2]};
+        if (vec3_normalize(h)) {
+            float n_dot_h = vec3_dot(s->n, h);
+            if (n_dot_h > 0.0f) {
+                float spec = s->mat.shininess > 0.0f ? powf(n_dot_h, s->mat.shininess) : 1.0f;
+                add_scaled(c, light->specular, s->mat.specular, attenuation * spec);
+            }
+        }
+    }
+}
+
+static void reflect_dir(const float d[3], const float n[3], float r[3])
+{
+    float k = 2.0f * vec3_dot(d, n);
+    for (int i = 0; i < 3; i++)
+        r[i] = d[i] - k * n[i];
+}
+
+/* Refraction by Snell's law; returns 0 on total internal reflection.
+ * d is unit, n unit facing against d, eta = n_incident / n_transmitted. */
+static int refract_dir(const float d[3], const float n[3], float eta, float t[3])
+{
+    float cos_i = -vec3_dot(d, n);
+    float k = 1.0f - eta * eta * (1.0f - cos_i * cos_i);
+    if (k < 0.0f)
+        return 0;
+    float a = eta * cos_i - sqrtf(k);
+    for (int i = 0; i < 3; i++)
+        t[i] = eta * d[i] + a * n[i];
+    return 1;
+}
+
+void shade_ray(const struct shade_context *sc, const float org[3], const float dir[3],
+               float tmax, int depth, float rgba[4])
+{
+    const struct render_state *st = sc->state;
+    struct trace_scene_hit hit;
+    if (!trace_scene_closest(sc->scene, org, dir, 0.0f, tmax, &hit, sc->counters)) {
+        memcpy(rgba, st->clear_color, 4 * sizeof(float));
+        return;
+    }
+    struct surface s;
+    fetch_surface(sc, &hit, dir, &s);
+    float c[3];
+    float unit_dir[3] = {dir[0], dir[1], dir[2]};
+    vec3_normalize(unit_dir);
+
+    if (st->shading == RENDER_EYE_LIGHT) {
+        /* A headlight at the eye, no shadows: paper 004's "OpenGL-like
+         * ray casting". */
+        float cosine = fabsf(vec3_dot(s.n, unit_dir));
+        for (int k = 0; k < 3; k++)
+            c[k] = s.mat.emission[k] + st->global_ambient[k] * s.mat.ambient[k] +
+                   s.mat.diffuse[k] * cosine;
+        memcpy(rgba, c, sizeof(c));
+        rgba[3] = 1.0f;
+        return;
+    }
+
+    local_whitted(sc, &s, unit_dir, c);
+    float kr = s.mat.reflectivity, kt = s.mat.transparency;
+    if (depth < st->max_depth && (kr > 0.0f || kt > 0.0f)) {
+        float out[4], next_org[3], next_dir[3];
+        float local_weight = 1.0f - kt;
+        for (int k = 0; k < 3; k++)
+            c[k] *= local_weight;
+        if (kr > 0.0f) {
+            reflect_dir(unit_dir, s.n, next_dir);
+            if (vec3_dot(next_dir, s.ng) <= 0.0f)
+                reflect_dir(unit_dir, s.ng, next_dir);
+            shade_offset_point(s.p, s.ng, next_org);
+            shade_ray(sc, next_org, next_dir, INFINITY, depth + 1, out);
+            for (int k = 0; k < 3; k++)
+                c[k] += kr * out[k];
+        }
+        if (kt > 0.0f) {
+            float eta = s.front ? 1.0f / s.mat.ior : s.mat.ior;
+            float below[3] = {-s.ng[0], -s.ng[1], -s.ng[2]};
+            if (refract_dir(unit_dir, s.n, eta, next_dir) && vec3_dot(next_dir, s.ng) < 0.0f) {
+                shade_offset_point(s.p, below, next_org);
+            } else {
+                /* Total internal reflection. */
+                reflect_dir(unit_dir, s.ng, next_dir);
+                shade_offset_point(s.p, s.ng, next_org);
+            }
+            shade_ray(sc, next_org, next_dir, INFINITY, depth + 1, out);
+            for (int k = 0; k < 3; k++)
+                c[k] += kt * out[k];
+        }
+    }
+    memcpy(rgba, c, sizeof(c));
+    rgba[3] = 1.0f;
+}

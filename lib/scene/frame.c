@@ -1,0 +1,210 @@
+/*
+ * frame.c - instance lists, change detection and the top-level build
+ * (see frame.h).
+ */
+#include "scene/frame.h"
+
+#include <string.h>
+
+#include "base/alloc.h"
+#include "base/mat4.h"
+
+void scene_frame_init(struct scene_frame *frame)
+{
+    memset(frame, 0, sizeof(*frame));
+}
+
+void scene_frame_release(struct scene_frame *frame)
+{
+    rt_free(frame->pending.items);
+    rt_free(frame->committed.items);
+    bvh_release(&frame->top);
+    rt_free(frame->trace_instances);
+    scene_frame_init(frame);
+}
+
+static int list_reserve(struct scene_instance_list *list, uint32_t count)
+{
+    if (count <= list->capacity)
+        return 0;
+    uint32_t cap = list->capacity ? list->capacity : 16;
+    while (cap < count) {
+        if (cap > UINT32_MAX / 2)
+            return -1;
+        cap *= 2;
+    }
+    void *p = rt_realloc_array(list->items, cap, sizeof(*list->items));
+    if (!p)
+        return -1;
+    list->items = p;
+    list->capacity = cap;
+    return 0;
+}
+
+int scene_frame_add_instance(struct scene_frame *frame, struct scene_object *object,
+                             const double object_to_world[16], const double world_to_object[16],
+                             const double normal_to_world[16])
+{
+    uint32_t count = frame->open ? frame->pending.count : 0;
+    if (count == UINT32_MAX || list_reserve(&frame->pending, count + 1))
+        return -1;
+    if (!frame->open) {
+        frame->pending.count = 0;
+        frame->open = 1;
+    }
+    struct scene_instance *inst = &frame->pending.items[frame->pending.count++];
+    memset(inst, 0, sizeof(*inst));
+    inst->object = object;
+    inst->object_serial = object->serial;
+    memcpy(inst->object_to_world, object_to_world, sizeof(inst->object_to_world));
+    memcpy(inst->world_to_object, world_to_object, sizeof(inst->world_to_object));
+    memcpy(inst->normal_to_world, normal_to_world, sizeof(inst->normal_to_world));
+    return 0;
+}
+
+void scene_frame_begin(struct scene_frame *frame)
+{
+    frame->pending.count = 0;
+    frame->open = 1;
+}
+
+void scene_frame_end(struct scene_frame *frame)
+{
+    frame->open = 0;
+}
+
+static void list_forget(struct scene_instance_list *list, const struct scene_object *object)
+{
+    uint32_t kept = 0;
+    for (uint32_t i = 0; i < list->count; i++)
+        if (list->items[i].object != object)
+            list->items[kept++] = list->items[i];
+    list->count = kept;
+}
+
+void scene_frame_forget_object(struct scene_frame *frame, const struct scene_object *object)
+{
+    uint32_t before = frame->committed.count;
+    list_forget(&frame->pending, object);
+    list_forget(&frame->committed, object);
+    if (frame->committed.count != before)
+        frame->top_valid = 0;
+}
+
+/* The world box of an object box under an affine map: transform the eight
+ * corners, in double, and round outwards so the float box contains the
+ * exact image. */
+static struct aabb transformed_box(const struct aabb *box, const double m[16])
+{
+    struct aabb out = aabb_empty();
+    for (int c = 0; c < 8; c++) {
+        double p[3] = {(c & 1) ? box->max[0] : box->min[0], (c & 2) ? box->max[1] : box->min[1],
+                       (c & 4) ? box->max[2] : box->min[2]};
+        double w[3];
+        mat4_transform_point(m, p, w);
+        for (int k = 0; k < 3; k++) {
+            float lo = (float)w[k], hi = (float)w[k];
+            if ((double)lo > w[k])
+                lo = nextafterf(lo, -INFINITY);
+            if ((double)hi < w[k])
+                hi = nextafterf(hi, INFINITY);
+            out.min[k] = fminf(out.min[k], lo);
+            out.max[k] = fmaxf(out.max[k], hi);
+        }
+    }
+    return out;
+}
+
+static int box_is_finite(const struct aabb *b)
+{
+    for (int k = 0; k < 3; k++)
+        if (!isfinite(b->min[k]) || !isfinite(b->max[k]))
+            return 0;
+    return 1;
+}
+
+/* Lists are equal when they name the same object definitions under
+ * bit-identical matrices in the same order. */
+static int lists_equal(const struct scene_instance_list *a, const struct scene_instance_list *b)
+{
+    if (a->count != b->count)
+        return 0;
+    for (uint32_t i = 0; i < a->count; i++) {
+        const struct scene_instance *x = &a->items[i], *y = &b->items[i];
+        if (x->object != y->object || x->object_serial != y->object_serial ||
+            memcmp(x->object_to_world, y->object_to_world, sizeof(x->object_to_world)) != 0)
+            return 0;
+    }
+    return 1;
+}
+
+static int build_top(struct scene_frame *frame, const struct bvh_build_params *params)
+{
+    const struct scene_instance_list *list = &frame->committed;
+    struct aabb *boxes = rt_calloc(list->count, sizeof(*boxes));
+    struct trace_instance *tis = rt_calloc(list->count, sizeof(*tis));
+    struct bvh top;
+    memset(&top, 0, sizeof(top));
+    if (!boxes || !tis)
+        goto fail;
+    uint32_t n = 0;
+    for (uint32_t i = 0; i < list->count; i++) {
+        const struct scene_instance *inst = &list->items[i];
+        const struct scene_mesh *mesh = &inst->object->mesh;
+        if (mesh->tri_count == 0 || aabb_is_empty(&mesh->bounds))
+            continue; /* empty objects are never hit: keep them out */
+        struct aabb box = transformed_box(&mesh->bounds, inst->object_to_world);
+        if (!box_is_finite(&box))
+            continue; /* cannot be bounded in float: unreachable by rays */
+        boxes[n] = box;
+        struct trace_instance *ti = &tis[n];
+        for (int r = 0; r < 3; r++)
+            for (int c = 0; c < 4; c++)
+                ti->world_to_object[4 * r + c] = (float)inst->world_to_object[4 * c + r];
+        ti->instance_id = i;
+        ti->object = inst->object;
+        n++;
+    }
+    if (accel_build(&top, boxes, n, params))
+        goto fail;
+    rt_free(boxes);
+    bvh_release(&frame->top);
+    rt_free(frame->trace_instances);
+    frame->top = top;
+    frame->trace_instances = tis;
+    frame->trace_instance_count = n;
+    frame->top_valid = 1;
+    return 0;
+fail:
+    rt_free(boxes);
+    rt_free(tis);
+    return -1;
+}
+
+int scene_frame_prepare(struct scene_frame *frame, const struct bvh_build_params *params,
+                        int *toplevel_built)
+{
+    *toplevel_built = 0;
+    if (frame->open && !lists_equal(&frame->pending, &frame->committed)) {
+        if (list_reserve(&frame->committed, frame->pending.count))
+            return -1;
+        memcpy(frame->committed.items, frame->pending.items,
+               frame->pending.count * sizeof(*frame->pending.items));
+        frame->committed.count = frame->pending.count;
+        frame->top_valid = 0;
+    }
+    /* A redefined object changes its box even when the list is the same. */
+    for (uint32_t i = 0; i < frame->committed.count; i++) {
+        struct scene_instance *inst = &frame->committed.items[i];
+        if (inst->object_serial != inst->object->serial) {
+            inst->object_serial = inst->object->serial;
+            frame->top_valid = 0;
+        }
+    }
+    if (frame->top_valid)
+        return 0;
+    if (build_top(frame, params))
+        return -1;
+    *toplevel_built = 1;
+    return 0;
+}

@@ -1,0 +1,77 @@
+/*
+ * frame.h - instances and the immediate-mode frame (paper 004 sec. 4.1).
+ *
+ * The application re-issues its instances every frame, as it would call
+ * glCallList.  Instances go to the `pending` list; before rays are traced
+ * the pending list is compared with the committed one (same objects, same
+ * definitions, same matrices, same order).  Only when they differ is the
+ * committed list replaced and the top-level BVH rebuilt, so re-issuing an
+ * unchanged frame costs a comparison and no build.
+ *
+ * The top level is a BVH over the world-space boxes of the instances'
+ * object boxes (paper 004 sec. 4.5 builds a BSP over the same boxes; we
+ * use the binned SAH builder over boxes, and rays are clipped exactly by
+ * the object box in object space by the object BVH's root).
+ */
+#ifndef RT_SCENE_FRAME_H
+#define RT_SCENE_FRAME_H
+
+#include <stdint.h>
+
+#include "accel/bvh.h"
+#include "scene/object.h"
+#include "trace/scene_traverse.h"
+
+struct scene_instance {
+    struct scene_object *object;
+    uint32_t object_serial;     /* object->serial when issued */
+    double object_to_world[16]; /* the modelview at rtInstantiateObject */
+    double world_to_object[16];
+    double normal_to_world[16]; /* inverse transpose of object_to_world */
+};
+
+struct scene_instance_list {
+    struct scene_instance *items;
+    uint32_t count;
+    uint32_t capacity;
+};
+
+struct scene_frame {
+    struct scene_instance_list pending;
+    int open; /* pending is the list being described */
+    struct scene_instance_list committed;
+
+    /* The top level over `committed`; valid when top_valid. */
+    int top_valid;
+    struct bvh top;
+    struct trace_instance *trace_instances; /* one per non-empty instance */
+    uint32_t trace_instance_count;
+};
+
+void scene_frame_init(struct scene_frame *frame);
+void scene_frame_release(struct scene_frame *frame);
+
+/* Appends an instance to the frame being described (starting a new list
+ * if the last frame ended).  Returns 0, -1 on allocation failure. */
+int scene_frame_add_instance(struct scene_frame *frame, struct scene_object *object,
+                             const double object_to_world[16], const double world_to_object[16],
+                             const double normal_to_world[16]);
+
+/* Starts a new, empty list (rtBeginFrame). */
+void scene_frame_begin(struct scene_frame *frame);
+
+/* Ends the frame: the next instance starts a new list (rtRenderFrame). */
+void scene_frame_end(struct scene_frame *frame);
+
+/* Drops every instance of the object from both lists (rtDeleteObjects). */
+void scene_frame_forget_object(struct scene_frame *frame, const struct scene_object *object);
+
+/*
+ * Makes the committed list current and the top level valid.  Returns 0
+ * with *toplevel_built = 1 if a top-level build happened, 0 if nothing
+ * changed; -1 on allocation failure (the previous committed scene stays).
+ */
+int scene_frame_prepare(struct scene_frame *frame, const struct bvh_build_params *params,
+                        int *toplevel_built);
+
+#endif

@@ -1,0 +1,73 @@
+/*
+ * mesh.h - one object definition: assembled triangles and their attributes.
+ *
+ * A mesh is written only while its object is being recorded (between
+ * rtNewObject and rtEndObject) and is immutable once committed, so any
+ * number of render threads may read it.  Vertices are in object space
+ * (already transformed by the modelview current at rtVertex time).
+ *
+ * Triangle j uses vertices indices[3j..3j+2]; its material is
+ * materials[tri_material[j]]; with TRI_FLAT set it is shaded with the
+ * normal and colour of vertex tri_provoking[j] (GL's provoking vertex).
+ */
+#ifndef RT_SCENE_MESH_H
+#define RT_SCENE_MESH_H
+
+#include <stdint.h>
+
+#include "base/aabb.h"
+
+/* Material as set by rtMaterialfv; colours RGBA. */
+struct scene_material {
+    float ambient[4];
+    float diffuse[4];
+    float specular[4];
+    float emission[4];
+    float shininess;
+    float reflectivity;
+    float transparency;
+    float ior;
+};
+
+#define TRI_FLAT 1u           /* rtShadeModel(RT_FLAT) was current */
+#define TRI_COLOR_MATERIAL 2u /* RT_COLOR_MATERIAL was enabled */
+
+struct scene_mesh {
+    uint32_t vertex_count;
+    uint32_t vertex_capacity;
+    float *positions; /* 3 per vertex */
+    float *normals;   /* 3 per vertex, not normalised */
+    float *colors;    /* 4 per vertex */
+    float *texcoords; /* 2 per vertex */
+
+    uint32_t tri_count;
+    uint32_t tri_capacity;
+    uint32_t *indices;       /* 3 per triangle */
+    uint32_t *tri_provoking; /* provoking vertex per triangle */
+    uint16_t *tri_material;  /* index into materials */
+    uint8_t *tri_flags;      /* TRI_* */
+
+    uint32_t material_count;
+    uint32_t material_capacity;
+    struct scene_material *materials;
+
+    int has_normals; /* some vertex was given an explicit normal */
+    struct aabb bounds;
+};
+
+/* Defaults of OpenGL's material state. */
+void scene_material_default(struct scene_material *m);
+
+/* Frees all arrays and zeroes *mesh; safe on a zeroed mesh. */
+void scene_mesh_release(struct scene_mesh *mesh);
+
+/* Ensures room for `extra` more vertices / triangles.  Returns 0, or -1
+ * on allocation failure leaving the mesh unchanged. */
+int scene_mesh_reserve_vertices(struct scene_mesh *mesh, uint32_t extra);
+int scene_mesh_reserve_triangles(struct scene_mesh *mesh, uint32_t extra);
+
+/* Returns the index of a material equal to *m, appending it if needed; -1
+ * on allocation failure or when 65535 distinct materials exist. */
+int scene_mesh_intern_material(struct scene_mesh *mesh, const struct scene_material *m);
+
+#endif

@@ -1,0 +1,129 @@
+/*
+ * scene_traverse.c - two-level traversal (see scene_traverse.h).
+ */
+#include "trace/scene_traverse.h"
+
+#include <math.h>
+#include <stddef.h>
+
+static void to_object_space(const float m[12], const float org[3], const float dir[3],
+                            float o_org[3], float o_dir[3])
+{
+    for (int r = 0; r < 3; r++) {
+        const float *row = &m[4 * r];
+        o_org[r] = row[0] * org[0] + row[1] * org[1] + row[2] * org[2] + row[3];
+        o_dir[r] = row[0] * dir[0] + row[1] * dir[1] + row[2] * dir[2];
+    }
+}
+
+/* A transformed direction can underflow to zero or overflow for extreme
+ * (but accepted) matrices; such a ray cannot be traced in object space. */
+static int usable_direction(const float d[3])
+{
+    return isfinite(d[0]) && isfinite(d[1]) && isfinite(d[2]) &&
+           (d[0] != 0.0f || d[1] != 0.0f || d[2] != 0.0f);
+}
+
+/* Shared top-level walk.  With any_hit the first hit ends the walk. */
+static int walk(const struct trace_scene *scene, const float org[3], const float dir[3],
+                float tmin, float tmax, int any_hit, struct trace_scene_hit *hit,
+                struct trace_scene_counters *counters)
+{
+    const struct bvh *top = scene->top;
+    if (!top || top->node_count == 0 || !(tmin < tmax))
+        return 0;
+    struct trace_ray ray;
+    trace_ray_init(&ray, org, dir, tmin);
+
+    float best = tmax;
+    int found = 0;
+    uint32_t stack[BVH_MAX_DEPTH + 1];
+    int sp = 0;
+    uint32_t node_index = 0;
+    float t_entry;
+    counters->top_node_tests++;
+    if (!trace_box(&ray, top->nodes[0].aabb_min, top->nodes[0].aabb_max, best, &t_entry))
+        return 0;
+    for (;;) {
+        const struct bvh_node *node = &top->nodes[node_index];
+        if (node->count) {
+            for (uint32_t i = 0; i < node->count; i++) {
+                const struct trace_instance *inst =
+                    &scene->instances[top->prim_index[node->first + i]];
+                struct trace_object_view view;
+                counters->instance_tests++;
+                if (!scene->acquire(scene->user, inst->object, &view))
+                    continue;
+                float o_org[3], o_dir[3];
+                to_object_space(inst->world_to_object, org, dir, o_org, o_dir);
+                if (!usable_direction(o_dir))
+                    continue;
+                struct trace_ray o_ray;
+                trace_ray_init(&o_ray, o_org, o_dir, tmin);
+                if (any_hit) {
+                    if (trace_any(view.bvh, view.tri, &o_ray, best, &counters->object))
+                        return 1;
+                    continue;
+                }
+                struct trace_hit h;
+                if (trace_closest(view.bvh, view.tri, &o_ray, best, &h, &counters->object)) {
+                    best = h.t;
+                    found = 1;
+                    hit->t = h.t;
+                    hit->u = h.u;
+                    hit->v = h.v;
+                    hit->prim = h.prim;
+                    hit->instance = top->prim_index[node->first + i];
+                }
+            }
+        } else {
+            /* Visit the nearer child first; push the farther one. */
+            uint32_t left = node->first, right = node->first + 1;
+            float t_left, t_right;
+            counters->top_node_tests += 2;
+            int hit_left = trace_box(&ray, top->nodes[left].aabb_min, top->nodes[left].aabb_max,
+                                     best, &t_left);
+            int hit_right = trace_box(&ray, top->nodes[right].aabb_min,
+                                      top->nodes[right].aabb_max, best, &t_right);
+            if (hit_left && hit_right) {
+                if (t_right < t_left) {
+                    uint32_t tmp = left;
+                    left = right;
+                    right = tmp;
+                }
+                stack[sp++] = right;
+                node_index = left;
+                continue;
+            }
+            if (hit_left) {
+                node_index = left;
+                continue;
+            }
+            if (hit_right) {
+                node_index = right;
+                continue;
+            }
+        }
+        /* Pop, skipping subtrees that a closer hit has since excluded is
+         * left to the box test of the popped node's children. */
+        if (sp == 0)
+            break;
+        node_index = stack[--sp];
+    }
+    return found;
+}
+
+int trace_scene_closest(const struct trace_scene *scene, const float org[3], const float dir[3],
+                        float tmin, float tmax, struct trace_scene_hit *hit,
+                        struct trace_scene_counters *counters)
+{
+    counters->rays++;
+    return walk(scene, org, dir, tmin, tmax, 0, hit, counters);
+}
+
+int trace_scene_any(const struct trace_scene *scene, const float org[3], const float dir[3],
+                    float tmin, float tmax, struct trace_scene_counters *counters)
+{
+    counters->rays++;
+    return walk(scene, org, dir, tmin, tmax, 1, NULL, counters);
+}

@@ -1,0 +1,69 @@
+/*
+ * scene_traverse.h - two-level traversal: a top-level BVH over instances,
+ * object BVHs below (paper 004 sec. 4.4).
+ *
+ * A ray reaching an instance leaf is transformed into the object's space
+ * by the instance's world-to-object matrix, without renormalising the
+ * direction, so hit distances compare directly across instances.  The
+ * object's own root box then clips it exactly in object space.  Each
+ * instance sits in exactly one top-level leaf (the BVH partitions
+ * instances, not space), so no ray visits an instance twice: that is the
+ * equivalent of the mailboxing paper 004 needs for its top-level BSP.
+ *
+ * Object structures are obtained through a callback the first time a ray
+ * reaches the instance, which lets the scene build them on demand.
+ */
+#ifndef RT_TRACE_SCENE_TRAVERSE_H
+#define RT_TRACE_SCENE_TRAVERSE_H
+
+#include <stdint.h>
+
+#include "trace/trace.h"
+
+struct trace_instance {
+    float world_to_object[12]; /* row-major 3x4: rows 0..2 of the inverse */
+    uint32_t instance_id;      /* reported in hits */
+    void *object;              /* opaque, handed to the acquire callback */
+};
+
+struct trace_object_view {
+    const struct bvh *bvh;
+    const float *tri;
+};
+
+/* Fills *view for the object; returns 0 when it cannot be had (allocation
+ * failure), in which case the instance is skipped. */
+typedef int (*trace_acquire_fn)(void *user, void *object, struct trace_object_view *view);
+
+struct trace_scene {
+    const struct bvh *top;                 /* over instances[] */
+    const struct trace_instance *instances; /* indexed by top->prim_index */
+    trace_acquire_fn acquire;
+    void *user;
+};
+
+struct trace_scene_hit {
+    float t;
+    float u;
+    float v;
+    uint32_t prim;     /* primitive index inside the object */
+    uint32_t instance; /* index into trace_scene.instances */
+};
+
+struct trace_scene_counters {
+    struct trace_counters object; /* node and triangle tests below instances */
+    uint64_t top_node_tests;
+    uint64_t instance_tests;
+    uint64_t rays;
+};
+
+/* Closest hit with tmin <= t < tmax in world space.  Returns 1 on a hit. */
+int trace_scene_closest(const struct trace_scene *scene, const float org[3], const float dir[3],
+                        float tmin, float tmax, struct trace_scene_hit *hit,
+                        struct trace_scene_counters *counters);
+
+/* Any hit with tmin <= t < tmax; returns 1 on the first found. */
+int trace_scene_any(const struct trace_scene *scene, const float org[3], const float dir[3],
+                    float tmin, float tmax, struct trace_scene_counters *counters);
+
+#endif
