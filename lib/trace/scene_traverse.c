@@ -37,7 +37,10 @@ static int walk(const struct trace_scene *scene, const float org[3], const float
 
     float best = tmax;
     int found = 0;
+    /* Deferred far children with their entry distances: a popped subtree
+     * that starts beyond the closest hit so far is skipped. */
     uint32_t stack[BVH_MAX_DEPTH + 1];
+    float stack_t[BVH_MAX_DEPTH + 1];
     int sp = 0;
     uint32_t node_index = 0;
     float t_entry;
@@ -90,7 +93,11 @@ static int walk(const struct trace_scene *scene, const float org[3], const float
                     uint32_t tmp = left;
                     left = right;
                     right = tmp;
+                    float tmp_t = t_left;
+                    t_left = t_right;
+                    t_right = tmp_t;
                 }
+                stack_t[sp] = t_right;
                 stack[sp++] = right;
                 node_index = left;
                 continue;
@@ -104,13 +111,13 @@ static int walk(const struct trace_scene *scene, const float org[3], const float
                 continue;
             }
         }
-        /* Pop, skipping subtrees that a closer hit has since excluded is
-         * left to the box test of the popped node's children. */
-        if (sp == 0)
-            break;
-        node_index = stack[--sp];
+        do {
+            if (sp == 0)
+                return found;
+            --sp;
+        } while (stack_t[sp] >= best);
+        node_index = stack[sp];
     }
-    return found;
 }
 
 int trace_scene_closest(const struct trace_scene *scene, const float org[3], const float dir[3],

@@ -1,0 +1,672 @@
+/*
+ * gears.c - the classic OpenGL "gears" demo, ray traced with Tracelist.
+ *
+ * A port of Brian Paul's gears.c (the GLUT demo, public domain; glxgears is
+ * its X11 twin), kept as close to the original as the API allows so that
+ * it reads as a worked example of porting a display-list program (see
+ * docs/porting.md).  gear(), init(), draw() and reshape() have the
+ * original's structure line for line; the GL calls map as follows:
+ *
+ *   glGenLists / glNewList / glEndList   rtGenObjects / rtNewObject / rtEndObject
+ *   glCallList                           rtInstantiateObject
+ *   glBegin / glEnd / glVertex3f         rtBegin / rtEnd / rtVertex3f
+ *   glNormal3f / glShadeModel            rtNormal3f / rtShadeModel
+ *   glMaterialfv / glLightfv             rtMaterialfv / rtLightfv
+ *   glPushMatrix / glRotatef / ...       rtPushMatrix / rtRotatef / ...
+ *   glFrustum / glViewport               rtFrustum / rtViewport
+ *   glClear + glutSwapBuffers            rtRenderFrame (+ rtReadPixels to get the image)
+ *   glEnable(GL_LIGHTING, GL_DEPTH_TEST, GL_CULL_FACE, GL_NORMALIZE)
+ *                                        nothing: a ray tracer always lights,
+ *                                        resolves visibility and normalises
+ *
+ * What the ray tracer adds: with the default Whitted shading the light at
+ * (5, 5, 10, 0) casts shadows (the gears shadow each other and their own
+ * teeth); --eye-light switches to the headlight shading that looks like
+ * OpenGL without shadows.
+ *
+ * Usage: gears [--headless] [--frames N] [--size WxH] [--threads N]
+ *              [--out FILE] [--eye-light]
+ *
+ * Headless (with --headless, without a display, or when built without
+ * GLFW) it renders N frames (default 1), advancing the gear angle by 2
+ * degrees a frame as the original's idle() does, and writes them to
+ * gears.png (gears_0001.png, ... when N > 1), or to --out FILE (numbered
+ * the same way); a build that cannot write the extension (PNG without
+ * OpenImageIO) writes the same name with .ppm instead.  With a display it
+ * opens a window and animates at 70 degrees a second as glxgears does:
+ * arrow keys rotate the view, z/Z rotate about the view axis, Esc quits;
+ * --frames N quits after N frames and --out FILE saves the last one.
+ */
+#include <rt/rt.h>
+#include <rt/rtu.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#ifdef RT_HAVE_GLFW
+#include <GLFW/glfw3.h>
+#endif
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
+/* ------------------------------------------------------------------------ */
+/* The original program                                                      */
+/* ------------------------------------------------------------------------ */
+
+/*
+ * Draw a gear wheel.  You'll probably want to call this function when
+ * building a display list since we do a lot of trig here.
+ *
+ * Input:  inner_radius - radius of hole at center
+ *         outer_radius - radius at center of teeth
+ *         width - width of gear
+ *         teeth - number of teeth
+ *         tooth_depth - depth of tooth
+ *
+ * Tracelist: called between rtNewObject and rtEndObject, exactly as the
+ * original calls it between glNewList and glEndList.  Flat shading uses
+ * GL's provoking vertex (the last of each quad), which is what makes the
+ * normals set in the middle of the outward-face strip land on the right
+ * faces.
+ */
+static void gear(RTfloat inner_radius, RTfloat outer_radius, RTfloat width, RTint teeth,
+                 RTfloat tooth_depth)
+{
+    RTint i;
+    RTfloat r0, r1, r2;
+    RTfloat angle, da;
+    RTfloat u, v, len;
+
+    r0 = inner_radius;
+    r1 = outer_radius - tooth_depth / 2.0;
+    r2 = outer_radius + tooth_depth / 2.0;
+
+    da = 2.0 * M_PI / teeth / 4.0;
+
+    rtShadeModel(RT_FLAT);
+
+    rtNormal3f(0.0, 0.0, 1.0);
+
+    /* draw front face */
+    rtBegin(RT_QUAD_STRIP);
+    for (i = 0; i <= teeth; i++) {
+        angle = i * 2.0 * M_PI / teeth;
+        rtVertex3f(r0 * cos(angle), r0 * sin(angle), width * 0.5);
+        rtVertex3f(r1 * cos(angle), r1 * sin(angle), width * 0.5);
+        if (i < teeth) {
+            rtVertex3f(r0 * cos(angle), r0 * sin(angle), width * 0.5);
+            rtVertex3f(r1 * cos(angle + 3 * da), r1 * sin(angle + 3 * da), width * 0.5);
+        }
+    }
+    rtEnd();
+
+    /* draw front sides of teeth */
+    rtBegin(RT_QUADS);
+    da = 2.0 * M_PI / teeth / 4.0;
+    for (i = 0; i < teeth; i++) {
+        angle = i * 2.0 * M_PI / teeth;
+
+        rtVertex3f(r1 * cos(angle), r1 * sin(angle), width * 0.5);
+        rtVertex3f(r2 * cos(angle + da), r2 * sin(angle + da), width * 0.5);
+        rtVertex3f(r2 * cos(angle + 2 * da), r2 * sin(angle + 2 * da), width * 0.5);
+        rtVertex3f(r1 * cos(angle + 3 * da), r1 * sin(angle + 3 * da), width * 0.5);
+    }
+    rtEnd();
+
+    rtNormal3f(0.0, 0.0, -1.0);
+
+    /* draw back face */
+    rtBegin(RT_QUAD_STRIP);
+    for (i = 0; i <= teeth; i++) {
+        angle = i * 2.0 * M_PI / teeth;
+        rtVertex3f(r1 * cos(angle), r1 * sin(angle), -width * 0.5);
+        rtVertex3f(r0 * cos(angle), r0 * sin(angle), -width * 0.5);
+        if (i < teeth) {
+            rtVertex3f(r1 * cos(angle + 3 * da), r1 * sin(angle + 3 * da), -width * 0.5);
+            rtVertex3f(r0 * cos(angle), r0 * sin(angle), -width * 0.5);
+        }
+    }
+    rtEnd();
+
+    /* draw back sides of teeth */
+    rtBegin(RT_QUADS);
+    da = 2.0 * M_PI / teeth / 4.0;
+    for (i = 0; i < teeth; i++) {
+        angle = i * 2.0 * M_PI / teeth;
+
+        rtVertex3f(r1 * cos(angle + 3 * da), r1 * sin(angle + 3 * da), -width * 0.5);
+        rtVertex3f(r2 * cos(angle + 2 * da), r2 * sin(angle + 2 * da), -width * 0.5);
+        rtVertex3f(r2 * cos(angle + da), r2 * sin(angle + da), -width * 0.5);
+        rtVertex3f(r1 * cos(angle), r1 * sin(angle), -width * 0.5);
+    }
+    rtEnd();
+
+    /* draw outward faces of teeth */
+    rtBegin(RT_QUAD_STRIP);
+    for (i = 0; i < teeth; i++) {
+        angle = i * 2.0 * M_PI / teeth;
+
+        rtVertex3f(r1 * cos(angle), r1 * sin(angle), width * 0.5);
+        rtVertex3f(r1 * cos(angle), r1 * sin(angle), -width * 0.5);
+        u = r2 * cos(angle + da) - r1 * cos(angle);
+        v = r2 * sin(angle + da) - r1 * sin(angle);
+        len = sqrt(u * u + v * v);
+        u /= len;
+        v /= len;
+        rtNormal3f(v, -u, 0.0);
+        rtVertex3f(r2 * cos(angle + da), r2 * sin(angle + da), width * 0.5);
+        rtVertex3f(r2 * cos(angle + da), r2 * sin(angle + da), -width * 0.5);
+        rtNormal3f(cos(angle), sin(angle), 0.0);
+        rtVertex3f(r2 * cos(angle + 2 * da), r2 * sin(angle + 2 * da), width * 0.5);
+        rtVertex3f(r2 * cos(angle + 2 * da), r2 * sin(angle + 2 * da), -width * 0.5);
+        u = r1 * cos(angle + 3 * da) - r2 * cos(angle + 2 * da);
+        v = r1 * sin(angle + 3 * da) - r2 * sin(angle + 2 * da);
+        rtNormal3f(v, -u, 0.0);
+        rtVertex3f(r1 * cos(angle + 3 * da), r1 * sin(angle + 3 * da), width * 0.5);
+        rtVertex3f(r1 * cos(angle + 3 * da), r1 * sin(angle + 3 * da), -width * 0.5);
+        rtNormal3f(cos(angle), sin(angle), 0.0);
+    }
+
+    rtVertex3f(r1 * cos(0), r1 * sin(0), width * 0.5);
+    rtVertex3f(r1 * cos(0), r1 * sin(0), -width * 0.5);
+
+    rtEnd();
+
+    rtShadeModel(RT_SMOOTH);
+
+    /* draw inside radius cylinder */
+    rtBegin(RT_QUAD_STRIP);
+    for (i = 0; i <= teeth; i++) {
+        angle = i * 2.0 * M_PI / teeth;
+        rtNormal3f(-cos(angle), -sin(angle), 0.0);
+        rtVertex3f(r0 * cos(angle), r0 * sin(angle), -width * 0.5);
+        rtVertex3f(r0 * cos(angle), r0 * sin(angle), width * 0.5);
+    }
+    rtEnd();
+}
+
+static RTfloat view_rotx = 20.0, view_roty = 30.0, view_rotz = 0.0;
+static RTuint gear1, gear2, gear3;
+static RTfloat angle = 0.0;
+
+/*
+ * Describes one frame and renders it.  As in OpenGL the application issues
+ * its scene every frame (immediate mode): the three rtInstantiateObject
+ * calls replace the previous frame's instances.  Only the instance matrices
+ * change from frame to frame, so the gears' BVHs are built once and each
+ * frame costs a top-level update plus the rendering.
+ */
+static void draw(void)
+{
+    /* glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT): rtRenderFrame
+     * fills the background with the clear colour itself. */
+
+    rtPushMatrix();
+    rtRotatef(view_rotx, 1.0, 0.0, 0.0);
+    rtRotatef(view_roty, 0.0, 1.0, 0.0);
+    rtRotatef(view_rotz, 0.0, 0.0, 1.0);
+
+    rtPushMatrix();
+    rtTranslatef(-3.0, -2.0, 0.0);
+    rtRotatef(angle, 0.0, 0.0, 1.0);
+    rtInstantiateObject(gear1); /* glCallList(gear1) */
+    rtPopMatrix();
+
+    rtPushMatrix();
+    rtTranslatef(3.1, -2.0, 0.0);
+    rtRotatef(-2.0 * angle - 9.0, 0.0, 0.0, 1.0);
+    rtInstantiateObject(gear2);
+    rtPopMatrix();
+
+    rtPushMatrix();
+    rtTranslatef(-3.1, 4.2, 0.0);
+    rtRotatef(-2.0 * angle - 25.0, 0.0, 0.0, 1.0);
+    rtInstantiateObject(gear3);
+    rtPopMatrix();
+
+    rtPopMatrix();
+
+    rtRenderFrame(); /* glutSwapBuffers(): the frame is done */
+}
+
+/* new window size or exposure */
+static void reshape(int width, int height)
+{
+    RTfloat h = (RTfloat)height / (RTfloat)width;
+
+    rtViewport(0, 0, (RTint)width, (RTint)height);
+    rtMatrixMode(RT_PROJECTION);
+    rtLoadIdentity();
+    rtFrustum(-1.0, 1.0, -h, h, 5.0, 60.0);
+    rtMatrixMode(RT_MODELVIEW);
+    rtLoadIdentity();
+    rtTranslatef(0.0, 0.0, -40.0);
+}
+
+static void init(int eye_light)
+{
+    static RTfloat pos[4] = {5.0, 5.0, 10.0, 0.0};
+    static RTfloat red[4] = {0.8, 0.1, 0.0, 1.0};
+    static RTfloat green[4] = {0.0, 0.8, 0.2, 1.0};
+    static RTfloat blue[4] = {0.2, 0.2, 1.0, 1.0};
+
+    /* Set while the modelview is the identity, so the light is fixed in eye
+     * space (world space is eye space, as in OpenGL). */
+    rtLightfv(RT_LIGHT0, RT_POSITION, pos);
+    /* glEnable(GL_CULL_FACE), glEnable(GL_LIGHTING), glEnable(GL_DEPTH_TEST):
+     * not needed; rays find the nearest surface and are always lit. */
+    rtEnable(RT_LIGHT0);
+
+    /* Tracelist only: how to light.  Whitted shading traces a shadow ray to
+     * the light; the eye light is a headlight without shadows.  Opaque black
+     * background so that saved images are not transparent. */
+    rtShadingMode(eye_light ? RT_EYE_LIGHT : RT_WHITTED);
+    rtClearColor(0.0, 0.0, 0.0, 1.0);
+
+    /* make the gears */
+    rtGenObjects(1, &gear1);        /* gear1 = glGenLists(1) */
+    rtNewObject(gear1);             /* glNewList(gear1, GL_COMPILE) */
+    rtMaterialfv(RT_FRONT, RT_AMBIENT_AND_DIFFUSE, red); /* two-sided in Tracelist */
+    gear(1.0, 4.0, 1.0, 20, 0.7);
+    rtEndObject();                  /* glEndList() */
+
+    rtGenObjects(1, &gear2);
+    rtNewObject(gear2);
+    rtMaterialfv(RT_FRONT, RT_AMBIENT_AND_DIFFUSE, green);
+    gear(0.5, 2.0, 2.0, 10, 0.7);
+    rtEndObject();
+
+    rtGenObjects(1, &gear3);
+    rtNewObject(gear3);
+    rtMaterialfv(RT_FRONT, RT_AMBIENT_AND_DIFFUSE, blue);
+    gear(1.3, 2.0, 0.5, 10, 0.7);
+    rtEndObject();
+
+    /* glEnable(GL_NORMALIZE): Tracelist always normalises normals. */
+}
+
+/* ------------------------------------------------------------------------ */
+/* The program around it: options, headless frames, a GLFW window            */
+/* ------------------------------------------------------------------------ */
+
+struct options {
+    int headless;      /* --headless */
+    int frames;        /* --frames N; 0 = not given */
+    int width, height; /* --size WxH */
+    int threads;       /* --threads N; 0 = the library's default */
+    const char *out;   /* --out FILE; NULL = default name */
+    int eye_light;     /* --eye-light */
+};
+
+static void usage(FILE *f)
+{
+    fprintf(f, "usage: gears [--headless] [--frames N] [--size WxH] [--threads N]\n"
+               "             [--out FILE] [--eye-light]\n"
+               "  --headless   render without a window and write image files\n"
+               "  --frames N   frames to render (headless default 1; window: run until Esc)\n"
+               "  --size WxH   image or window size (default 640x480)\n"
+               "  --threads N  render threads (default: all processors)\n"
+               "  --out FILE   output image; numbered FILE_0001.ext ... when N > 1\n"
+               "               (default gears.png; .ppm when the build cannot write it)\n"
+               "  --eye-light  OpenGL-like headlight shading instead of Whitted with shadows\n");
+}
+
+/* A whole decimal number in [min, max]; 0 on anything else. */
+static int parse_int(const char *text, int min, int max, int *value)
+{
+    char *end;
+    long v;
+    if (text == NULL || text[0] == '\0')
+        return 0;
+    v = strtol(text, &end, 10);
+    if (*end != '\0' || v < min || v > max)
+        return 0;
+    *value = (int)v;
+    return 1;
+}
+
+static int parse_size(const char *text, int *width, int *height)
+{
+    char buf[32];
+    char *x;
+    if (text == NULL || strlen(text) >= sizeof buf)
+        return 0;
+    strcpy(buf, text);
+    x = strchr(buf, 'x');
+    if (x == NULL)
+        return 0;
+    *x = '\0';
+    /* 16384 is rtViewport's limit. */
+    return parse_int(buf, 1, 16384, width) && parse_int(x + 1, 1, 16384, height);
+}
+
+static int parse_options(int argc, char **argv, struct options *o)
+{
+    int i;
+    memset(o, 0, sizeof *o);
+    o->width = 640;
+    o->height = 480;
+    for (i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        const char *next = i + 1 < argc ? argv[i + 1] : NULL;
+        if (strcmp(a, "--headless") == 0) {
+            o->headless = 1;
+        } else if (strcmp(a, "--eye-light") == 0) {
+            o->eye_light = 1;
+        } else if (strcmp(a, "--frames") == 0 && parse_int(next, 1, 1000000, &o->frames)) {
+            i++;
+        } else if (strcmp(a, "--size") == 0 && parse_size(next, &o->width, &o->height)) {
+            i++;
+        } else if (strcmp(a, "--threads") == 0 && parse_int(next, 1, 256, &o->threads)) {
+            i++;
+        } else if (strcmp(a, "--out") == 0 && next != NULL && next[0] != '\0') {
+            o->out = next;
+            i++;
+        } else if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+            usage(stdout);
+            exit(0);
+        } else {
+            fprintf(stderr, "gears: bad or incomplete option '%s'\n", a);
+            usage(stderr);
+            return 0;
+        }
+    }
+    return 1;
+}
+
+static double now_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
+}
+
+/* Reports a pending Tracelist error; returns 1 when there was one. */
+static int report_error(const char *when)
+{
+    RTenum error = rtGetError();
+    if (error == RT_NO_ERROR)
+        return 0;
+    fprintf(stderr, "gears: Tracelist error 0x%04X %s\n", (unsigned)error, when);
+    return 1;
+}
+
+/* The name of frame `index` (1-based) of `count`: base itself for one frame,
+ * else base with "_%04d" before its extension. */
+static void frame_name(char *out, size_t size, const char *base, int index, int count)
+{
+    const char *slash = strrchr(base, '/');
+    const char *dot = strrchr(slash != NULL ? slash : base, '.');
+    if (count == 1) {
+        snprintf(out, size, "%s", base);
+        return;
+    }
+    if (dot == NULL)
+        dot = base + strlen(base);
+    snprintf(out, size, "%.*s_%04d%s", (int)(dot - base), base, index, dot);
+}
+
+/*
+ * The file name to write: `requested`, or gears.png by default; when this
+ * build cannot write the extension (PNG without OpenImageIO), the same name
+ * with .ppm, which rtu always writes, and a note on stderr.
+ */
+static const char *output_name(const char *requested)
+{
+    static char name[4096];
+    const char *base = requested != NULL ? requested : "gears.png";
+    const char *slash = strrchr(base, '/');
+    const char *dot = strrchr(slash != NULL ? slash : base, '.');
+    const char *extension = dot != NULL ? dot + 1 : "";
+    if (rtuImageFormatSupported(extension) || strlen(base) + 5 > sizeof name)
+        return base;
+    snprintf(name, sizeof name, "%.*s.ppm", (int)(dot != NULL ? dot - base : (long)strlen(base)),
+             base);
+    if (requested != NULL && extension[0] == '\0')
+        fprintf(stderr, "gears: '%s' has no extension; writing %s\n", base, name);
+    else if (requested != NULL)
+        fprintf(stderr, "gears: this build cannot write '%s' files; writing %s instead\n",
+                extension, name);
+    return name;
+}
+
+/* Reads the framebuffer and writes it; returns 0 (with a message) on failure. */
+static int save_frame(const char *path, int width, int height, unsigned char *pixels)
+{
+    rtReadPixels(0, 0, width, height, RT_RGBA, RT_UNSIGNED_BYTE, pixels);
+    if (report_error("reading the frame"))
+        return 0;
+    if (!rtuSaveImage(path, width, height, RT_UNSIGNED_BYTE, pixels)) {
+        fprintf(stderr, "gears: %s\n", rtuImageError());
+        return 0;
+    }
+    return 1;
+}
+
+static int run_headless(const struct options *o)
+{
+    const int frames = o->frames > 0 ? o->frames : 1;
+    const char *base = output_name(o->out);
+    const int tty = isatty(fileno(stderr));
+    unsigned char *pixels = malloc((size_t)o->width * (size_t)o->height * 4);
+    double render_seconds = 0.0;
+    double start = now_seconds();
+    int k;
+    if (pixels == NULL) {
+        fprintf(stderr, "gears: out of memory\n");
+        return 1;
+    }
+    for (k = 1; k <= frames; k++) {
+        char path[4096];
+        double t0 = now_seconds();
+        double elapsed;
+        draw();
+        render_seconds += now_seconds() - t0;
+        if (report_error("rendering"))
+            break;
+        frame_name(path, sizeof path, base, k, frames);
+        if (!save_frame(path, o->width, o->height, pixels))
+            break;
+        angle += 2.0; /* idle() of the original: one step per frame */
+
+        elapsed = now_seconds() - start;
+        if (tty || k == frames || k % (frames / 10 > 0 ? frames / 10 : 1) == 0) {
+            fprintf(stderr, "%sgears: frame %d/%d  %.1f ms/frame  ETA %.1f s%s",
+                    tty ? "\r" : "", k, frames, 1e3 * render_seconds / k,
+                    elapsed / k * (frames - k), tty ? "   " : "\n");
+        }
+    }
+    if (tty)
+        fputc('\n', stderr);
+    free(pixels);
+    if (k <= frames)
+        return 1;
+    printf("gears: %d frame%s of %dx%d in %.3f s = %.2f fps (rendering only)\n", frames,
+           frames == 1 ? "" : "s", o->width, o->height, render_seconds,
+           frames / render_seconds);
+    return 0;
+}
+
+#ifdef RT_HAVE_GLFW
+
+/* special() and key() of the original, on GLFW's callbacks. */
+static void key(GLFWwindow *window, int k, int scancode, int action, int mods)
+{
+    (void)scancode;
+    (void)mods;
+    if (action != GLFW_PRESS && action != GLFW_REPEAT)
+        return;
+    switch (k) {
+    case GLFW_KEY_ESCAPE:
+        glfwSetWindowShouldClose(window, GLFW_TRUE);
+        break;
+    case GLFW_KEY_UP:
+        view_rotx += 5.0;
+        break;
+    case GLFW_KEY_DOWN:
+        view_rotx -= 5.0;
+        break;
+    case GLFW_KEY_LEFT:
+        view_roty += 5.0;
+        break;
+    case GLFW_KEY_RIGHT:
+        view_roty -= 5.0;
+        break;
+    default:
+        break;
+    }
+}
+
+static void character(GLFWwindow *window, unsigned int codepoint)
+{
+    (void)window;
+    if (codepoint == 'z')
+        view_rotz += 5.0;
+    else if (codepoint == 'Z')
+        view_rotz -= 5.0;
+}
+
+/*
+ * Opens a window and animates until Esc (or o->frames frames).  Each frame
+ * is ray traced by Tracelist and shown with glDrawPixels: rtReadPixels
+ * returns rows bottom to top, which is the order glDrawPixels wants.
+ * Returns -1 when no window could be opened (the caller goes headless),
+ * else the exit status.
+ */
+static int run_window(const struct options *o)
+{
+    GLFWwindow *window;
+    unsigned char *pixels = NULL;
+    int width = 0, height = 0;
+    int frames = 0, title_frames = 0;
+    int status = 0;
+    double last = now_seconds();
+    double title_time = last;
+    if (!glfwInit())
+        return -1;
+    window = glfwCreateWindow(o->width, o->height, "Tracelist gears", NULL, NULL);
+    if (window == NULL) {
+        glfwTerminate();
+        return -1;
+    }
+    glfwMakeContextCurrent(window);
+    glfwSwapInterval(0);
+    glfwSetKeyCallback(window, key);
+    glfwSetCharCallback(window, character);
+
+    while (!glfwWindowShouldClose(window) && (o->frames == 0 || frames < o->frames)) {
+        int fb_width, fb_height;
+        double t;
+        glfwGetFramebufferSize(window, &fb_width, &fb_height);
+        if (fb_width <= 0 || fb_height <= 0) { /* minimised */
+            glfwWaitEvents();
+            continue;
+        }
+        if (fb_width != width || fb_height != height) {
+            unsigned char *grown = realloc(pixels, (size_t)fb_width * (size_t)fb_height * 4);
+            if (grown == NULL) {
+                fprintf(stderr, "gears: out of memory\n");
+                status = 1;
+                break;
+            }
+            pixels = grown;
+            width = fb_width;
+            height = fb_height;
+            reshape(width, height);
+        }
+
+        draw();
+        rtReadPixels(0, 0, width, height, RT_RGBA, RT_UNSIGNED_BYTE, pixels);
+        if (report_error("rendering")) {
+            status = 1;
+            break;
+        }
+        glViewport(0, 0, width, height);
+        glMatrixMode(GL_PROJECTION);
+        glLoadIdentity();
+        glMatrixMode(GL_MODELVIEW);
+        glLoadIdentity();
+        glRasterPos2f(-1.0f, -1.0f);
+        glDrawPixels(width, height, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
+        glfwSwapBuffers(window);
+        glfwPollEvents();
+        frames++;
+        title_frames++;
+
+        /* glxgears: advance rotation for next frame, 70 degrees per second */
+        t = now_seconds();
+        angle += 70.0 * (t - last);
+        if (angle > 3600.0)
+            angle -= 3600.0;
+        last = t;
+        if (t - title_time >= 1.0) {
+            char title[96];
+            snprintf(title, sizeof title, "Tracelist gears - %.1f fps (%dx%d)",
+                     title_frames / (t - title_time), width, height);
+            glfwSetWindowTitle(window, title);
+            printf("gears: %d frames in %.1f seconds = %.3f FPS\n", title_frames,
+                   t - title_time, title_frames / (t - title_time));
+            fflush(stdout);
+            title_frames = 0;
+            title_time = t;
+        }
+    }
+    /* --out in a window: keep the last frame shown. */
+    if (status == 0 && o->out != NULL && pixels != NULL &&
+        !rtuSaveImage(output_name(o->out), width, height, RT_UNSIGNED_BYTE, pixels)) {
+        fprintf(stderr, "gears: %s\n", rtuImageError());
+        status = 1;
+    }
+    free(pixels);
+    glfwDestroyWindow(window);
+    glfwTerminate();
+    return status;
+}
+
+#endif /* RT_HAVE_GLFW */
+
+int main(int argc, char **argv)
+{
+    struct options o;
+    char config[32];
+    RTcontext context;
+    int status = -1;
+
+    if (!parse_options(argc, argv, &o))
+        return 2;
+    if (o.threads > 0)
+        snprintf(config, sizeof config, "threads=%d", o.threads);
+    else
+        config[0] = '\0';
+    context = rtCreateContext(config);
+    if (context == NULL || !rtMakeCurrent(context)) {
+        fprintf(stderr, "gears: cannot create a Tracelist context (\"%s\")\n", config);
+        return 1;
+    }
+
+    init(o.eye_light);
+    reshape(o.width, o.height);
+    if (report_error("setting up the scene")) {
+        rtDestroyContext(context);
+        return 1;
+    }
+
+#ifdef RT_HAVE_GLFW
+    if (!o.headless && (getenv("DISPLAY") != NULL || getenv("WAYLAND_DISPLAY") != NULL)) {
+        status = run_window(&o);
+        if (status < 0)
+            fprintf(stderr, "gears: cannot open a window; rendering headless\n");
+    }
+#endif
+    if (status < 0)
+        status = run_headless(&o);
+
+    rtDestroyContext(context);
+    return status;
+}
