@@ -300,6 +300,9 @@ static void draw(struct rt_context *ctx, const char *caller, RTenum mode, size_t
         rt_error(ctx, RT_OUT_OF_MEMORY, "%s: out of memory", caller);
         return;
     }
+    /* Normals from an array count as set normals (see rtNormal3f). */
+    if (ctx->normal_array.enabled && count > 0)
+        mesh->has_normals = 1;
     for (size_t k = 0; k < count; k++)
         if (emit_element(ctx, caller, element_index(index_type, indices, first, k)))
             return; /* only a material allocation can fail here; recorded */
