@@ -202,6 +202,18 @@ static int fetch_position(const struct client_array *a, size_t i, double p[3])
     return isfinite(p[0]) && isfinite(p[1]) && isfinite(p[2]);
 }
 
+/* 1 when the first `components` values of element i of an enabled
+ * attribute array are finite (integer types always are). */
+static int attribute_is_finite(const struct client_array *a, size_t i, int components)
+{
+    if (!a->enabled || (a->type != RT_FLOAT && a->type != RT_DOUBLE))
+        return 1;
+    for (int c = 0; c < components; c++)
+        if (!isfinite(fetch(a, i, c, 0)))
+            return 0;
+    return 1;
+}
+
 /* Stores element i as a vertex with the enabled attributes, falling back
  * to the current attribute for disabled arrays (GL). */
 static int emit_element(struct rt_context *ctx, const char *caller, size_t i)
@@ -282,13 +294,24 @@ static size_t element_index(RTenum index_type, const void *indices, size_t first
 static void draw(struct rt_context *ctx, const char *caller, RTenum mode, size_t first,
                  size_t count, RTenum index_type, const void *indices)
 {
-    /* Validate every vertex first: a rejected batch stores nothing. */
+    /* Validate every vertex first: a rejected batch stores nothing.  A
+     * non-finite normal, colour or texture coordinate is rejected as
+     * rtNormal, rtColor and rtTexCoord reject it (only the components
+     * emit_element reads are checked). */
     rt_block_start(ctx, mode);
+    int texcoord_components = ctx->texcoord_array.size < 2 ? ctx->texcoord_array.size : 2;
     for (size_t k = 0; k < count; k++) {
         double p[3];
         size_t i = element_index(index_type, indices, first, k);
         if (!fetch_position(&ctx->vertex_array, i, p) || !rt_vertex_is_finite(ctx, p)) {
             rt_error(ctx, RT_INVALID_VALUE, "%s: vertex %zu is not finite", caller, i);
+            return;
+        }
+        if (!attribute_is_finite(&ctx->normal_array, i, 3) ||
+            !attribute_is_finite(&ctx->color_array, i, ctx->color_array.size) ||
+            !attribute_is_finite(&ctx->texcoord_array, i, texcoord_components)) {
+            rt_error(ctx, RT_INVALID_VALUE, "%s: an attribute of vertex %zu is not finite",
+                     caller, i);
             return;
         }
     }

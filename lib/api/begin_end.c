@@ -45,9 +45,11 @@ void rt_block_start(struct rt_context *ctx, RTenum mode)
 
 int rt_vertex_is_finite(const struct rt_context *ctx, const double position[3])
 {
+    /* The same test rt_record_vertex makes: the vertex is stored as float,
+     * so a finite double beyond the float range does not fit either. */
     double p[3];
     mat4_transform_point(ctx->block.position_matrix, position, p);
-    return isfinite(p[0]) && isfinite(p[1]) && isfinite(p[2]);
+    return isfinite((float)p[0]) && isfinite((float)p[1]) && isfinite((float)p[2]);
 }
 
 static int current_material(struct rt_context *ctx)

@@ -10,6 +10,7 @@
  */
 #include "render/shade.h"
 
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -20,23 +21,27 @@ struct surface {
     float p[3];  /* hit point */
     float ng[3]; /* geometric normal, unit, facing the incoming ray */
     float n[3];  /* shading normal, unit, same side as ng */
+    float p_error; /* bound on |p - exact point on the surface| */
     int front;   /* the ray hit the front face (counter-clockwise side) */
     struct scene_material mat;
 };
 
-void shade_offset_point(const float p[3], const float n[3], float out[3])
+/* Safety factor on the error bound of the hit point (see fetch_surface). */
+#define OFFSET_ERROR_SCALE 2.0
+
+void shade_offset_point(const float p[3], const float n[3], float error, float out[3])
 {
-    const float origin = 1.0f / 32.0f;
-    const float float_scale = 1.0f / 65536.0f;
-    const float int_scale = 256.0f;
+    double d = OFFSET_ERROR_SCALE * (double)error;
     for (int k = 0; k < 3; k++) {
-        int32_t of_i = (int32_t)(int_scale * n[k]);
-        int32_t bits;
-        memcpy(&bits, &p[k], sizeof(bits));
-        bits += (p[k] < 0.0f) ? -of_i : of_i;
-        float p_i;
-        memcpy(&p_i, &bits, sizeof(p_i));
-        out[k] = fabsf(p[k]) < origin ? p[k] + float_scale * n[k] : p_i;
+        double target = (double)p[k] + d * (double)n[k];
+        float f = (float)target;
+        /* Round away from the surface, never back towards it, so the
+         * point moves at least d along n whatever the rounding. */
+        if (n[k] > 0.0f && (double)f < target)
+            f = nextafterf(f, INFINITY);
+        else if (n[k] < 0.0f && (double)f > target)
+            f = nextafterf(f, -INFINITY);
+        out[k] = f;
     }
 }
 
@@ -63,18 +68,33 @@ static void fetch_surface(const struct shade_context *sc, const struct trace_sce
     const uint32_t *v = &mesh->indices[3 * hit->prim];
     const float b1 = hit->u, b2 = hit->v, b0 = 1.0f - hit->u - hit->v;
 
-    /* Position from barycentrics in object space, then to world in double:
-     * more accurate than org + t dir far from the origin. */
-    float po[3];
-    interpolate(mesh->positions, 3, v, b0, b1, b2, 3, po);
-    double pd[3] = {po[0], po[1], po[2]}, pw[3];
-    mat4_transform_point(inst->object_to_world, pd, pw);
-    for (int k = 0; k < 3; k++)
-        s->p[k] = (float)pw[k];
-
     const float *p0 = &mesh->positions[3 * v[0]];
     const float *p1 = &mesh->positions[3 * v[1]];
     const float *p2 = &mesh->positions[3 * v[2]];
+
+    /* The hit point is p0 + u (p1 - p0) + v (p2 - p0) evaluated in double
+     * (the float differences are exact there), so it lies on the plane of
+     * the float triangle to double precision wherever the barycentrics
+     * land, and is then mapped to world space in double.  Its only
+     * significant error is the final rounding to float, plus the rounding
+     * of the next ray's origin into object space: together at most half an
+     * ulp of each (PBRT 3rd ed. sec. 3.9 bounds the hit point the same way
+     * and offsets secondary rays by that bound along the normal). */
+    double po[3], pw[3];
+    double max_object = 0.0, max_world = 0.0, norm = 0.0;
+    for (int k = 0; k < 3; k++) {
+        po[k] = (double)p0[k] + (double)hit->u * ((double)p1[k] - (double)p0[k]) +
+                (double)hit->v * ((double)p2[k] - (double)p0[k]);
+        max_object = fmax(max_object, fabs(po[k]));
+    }
+    mat4_transform_point(inst->object_to_world, po, pw);
+    for (int k = 0; k < 3; k++) {
+        s->p[k] = (float)pw[k];
+        max_world = fmax(max_world, fabs(pw[k]));
+        const double *m = inst->object_to_world;
+        norm = fmax(norm, fabs(m[k]) + fabs(m[4 + k]) + fabs(m[8 + k]));
+    }
+    s->p_error = (float)(0.5 * FLT_EPSILON * (max_world + norm * max_object) + FLT_MIN);
     float e1[3], e2[3], ngo[3];
     vec3_sub(e1, p1, p0);
     vec3_sub(e2, p2, p0);
@@ -138,7 +158,7 @@ static void local_whitted(const struct shade_context *sc, const struct surface *
     float view[3] = {-dir[0], -dir[1], -dir[2]};
     vec3_normalize(view);
     float origin[3];
-    shade_offset_point(s->p, s->ng, origin);
+    shade_offset_point(s->p, s->ng, s->p_error, origin);
     for (int i = 0; i < RENDER_MAX_LIGHTS; i++) {
         const struct render_light *light = &st->lights[i];
         if (!light->enabled)
@@ -239,7 +259,7 @@ void shade_ray(const struct shade_context *sc, const float org[3], const float d
             reflect_dir(unit_dir, s.n, next_dir);
             if (vec3_dot(next_dir, s.ng) <= 0.0f)
                 reflect_dir(unit_dir, s.ng, next_dir);
-            shade_offset_point(s.p, s.ng, next_org);
+            shade_offset_point(s.p, s.ng, s.p_error, next_org);
             shade_ray(sc, next_org, next_dir, INFINITY, depth + 1, out);
             for (int k = 0; k < 3; k++)
                 c[k] += kr * out[k];
@@ -248,11 +268,11 @@ void shade_ray(const struct shade_context *sc, const float org[3], const float d
             float eta = s.front ? 1.0f / s.mat.ior : s.mat.ior;
             float below[3] = {-s.ng[0], -s.ng[1], -s.ng[2]};
             if (refract_dir(unit_dir, s.n, eta, next_dir) && vec3_dot(next_dir, s.ng) < 0.0f) {
-                shade_offset_point(s.p, below, next_org);
+                shade_offset_point(s.p, below, s.p_error, next_org);
             } else {
                 /* Total internal reflection. */
                 reflect_dir(unit_dir, s.ng, next_dir);
-                shade_offset_point(s.p, s.ng, next_org);
+                shade_offset_point(s.p, s.ng, s.p_error, next_org);
             }
             shade_ray(sc, next_org, next_dir, INFINITY, depth + 1, out);
             for (int k = 0; k < 3; k++)

@@ -23,12 +23,14 @@ void shade_ray(const struct shade_context *sc, const float org[3], const float d
                float tmax, int depth, float rgba[4]);
 
 /*
- * Moves a point off a surface along n so that a ray leaving it does not hit
- * the surface it started on, at any distance from the origin: offsets are
- * integer ULPs away from the origin and absolute close to it (Wächter and
- * Binder, "A Fast and Robust Method for Avoiding Self-Intersection", Ray
- * Tracing Gems ch. 6).
+ * Moves a point off a surface along the unit normal n by
+ * OFFSET_ERROR_SCALE times `error`, the bound on the point's distance from
+ * the exact surface, rounding each coordinate away from the surface so a
+ * ray leaving it cannot hit the surface it starts on (the bound-based
+ * offset of PBRT 3rd ed. sec. 3.9.5).  Scale-invariant: the bound is
+ * relative to the coordinates' magnitude, so it works 1e5 from the origin
+ * and for scenes 1e-4 across alike.
  */
-void shade_offset_point(const float p[3], const float n[3], float out[3]);
+void shade_offset_point(const float p[3], const float n[3], float error, float out[3]);
 
 #endif

@@ -160,7 +160,7 @@ static int build_top(struct scene_frame *frame, const struct bvh_build_params *p
         struct trace_instance *ti = &tis[n];
         for (int r = 0; r < 3; r++)
             for (int c = 0; c < 4; c++)
-                ti->world_to_object[4 * r + c] = (float)inst->world_to_object[4 * c + r];
+                ti->world_to_object[4 * r + c] = inst->world_to_object[4 * c + r];
         ti->instance_id = i;
         ti->object = inst->object;
         n++;

@@ -6,13 +6,14 @@
 #include <math.h>
 #include <stddef.h>
 
-static void to_object_space(const float m[12], const float org[3], const float dir[3],
+/* The ray in object space, computed in double and rounded once. */
+static void to_object_space(const double m[12], const float org[3], const float dir[3],
                             float o_org[3], float o_dir[3])
 {
     for (int r = 0; r < 3; r++) {
-        const float *row = &m[4 * r];
-        o_org[r] = row[0] * org[0] + row[1] * org[1] + row[2] * org[2] + row[3];
-        o_dir[r] = row[0] * dir[0] + row[1] * dir[1] + row[2] * dir[2];
+        const double *row = &m[4 * r];
+        o_org[r] = (float)(row[0] * org[0] + row[1] * org[1] + row[2] * org[2] + row[3]);
+        o_dir[r] = (float)(row[0] * dir[0] + row[1] * dir[1] + row[2] * dir[2]);
     }
 }
 

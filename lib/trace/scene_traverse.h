@@ -21,7 +21,11 @@
 #include "trace/trace.h"
 
 struct trace_instance {
-    float world_to_object[12]; /* row-major 3x4: rows 0..2 of the inverse */
+    /* Row-major 3x4: rows 0..2 of the inverse instance matrix.  Double,
+     * because a float translation of 1e5 alone would move the object by
+     * up to 4e-3 and the ray origin rounding would put secondary rays'
+     * origins on the wrong side of their surface. */
+    double world_to_object[12];
     uint32_t instance_id;      /* reported in hits */
     void *object;              /* opaque, handed to the acquire callback */
 };

@@ -1,0 +1,116 @@
+/*
+ * build.c - builder dispatch, parameters, BVH lifetime and the gather of
+ * triangles into leaf order (see bvh.h), plus the allocation helpers the
+ * builders share (build_internal.h).
+ *
+ * Ownership: a struct bvh owns its nodes and prim_index arrays, both from
+ * rt_malloc/rt_realloc_array; bvh_release returns them.
+ */
+#include "accel/bvh.h"
+
+#include <math.h>
+#include <stddef.h>
+#include <string.h>
+
+#include "accel/build_internal.h"
+#include "base/alloc.h"
+
+void bvh_build_params_default(struct bvh_build_params *params)
+{
+    params->builder = BVH_BUILDER_BINNED_SAH;
+    params->bins = BVH_DEFAULT_BINS;
+    params->max_leaf_size = BVH_MAX_LEAF_SIZE;
+    params->c_trav = BVH_C_TRAV;
+    params->c_isect = BVH_C_ISECT;
+}
+
+void accel_build_params_normalize(struct bvh_build_params *out,
+                                  const struct bvh_build_params *params)
+{
+    struct bvh_build_params d;
+    bvh_build_params_default(&d);
+    if (!params) {
+        *out = d;
+        return;
+    }
+    *out = *params;
+    if (out->builder != BVH_BUILDER_BINNED_SAH && out->builder != BVH_BUILDER_SWEEP_SAH)
+        out->builder = d.builder;
+    if (out->bins < 2)
+        out->bins = 2;
+    if (out->bins > BVH_MAX_BINS)
+        out->bins = BVH_MAX_BINS;
+    if (out->max_leaf_size < 1)
+        out->max_leaf_size = 1;
+    if (out->max_leaf_size > BVH_MAX_LEAF_SIZE)
+        out->max_leaf_size = BVH_MAX_LEAF_SIZE;
+    if (!isfinite(out->c_trav) || !(out->c_trav >= 0.0f))
+        out->c_trav = d.c_trav;
+    if (!isfinite(out->c_isect) || !(out->c_isect > 0.0f))
+        out->c_isect = d.c_isect;
+}
+
+int accel_build_alloc(struct bvh *out, uint32_t prim_count)
+{
+    memset(out, 0, sizeof(*out));
+    /* A binary tree with n leaves' worth of primitives has at most 2n - 1
+     * nodes; node indices are 32-bit. */
+    if (prim_count == 0 || prim_count > (UINT32_MAX - 1) / 2 + 1)
+        return -1;
+    size_t max_nodes = 2 * (size_t)prim_count - 1;
+    out->nodes = rt_realloc_array(NULL, max_nodes, sizeof(*out->nodes));
+    out->prim_index = rt_realloc_array(NULL, prim_count, sizeof(*out->prim_index));
+    if (!out->nodes || !out->prim_index) {
+        bvh_release(out);
+        return -1;
+    }
+    out->prim_count = prim_count;
+    return 0;
+}
+
+void accel_build_finish(struct bvh *out, uint32_t node_count, uint32_t depth)
+{
+    out->node_count = node_count;
+    out->depth = depth;
+    struct bvh_node *shrunk = rt_realloc_array(out->nodes, node_count, sizeof(*out->nodes));
+    if (shrunk)
+        out->nodes = shrunk;
+}
+
+int accel_build(struct bvh *out, const struct aabb *prim_boxes, uint32_t prim_count,
+                const struct bvh_build_params *params)
+{
+    struct bvh_build_params p;
+    accel_build_params_normalize(&p, params);
+    if (p.builder == BVH_BUILDER_SWEEP_SAH)
+        return accel_build_sweep_sah(out, prim_boxes, prim_count, &p);
+    return accel_build_binned_sah(out, prim_boxes, prim_count, &p);
+}
+
+void bvh_release(struct bvh *bvh)
+{
+    rt_free(bvh->nodes);
+    rt_free(bvh->prim_index);
+    memset(bvh, 0, sizeof(*bvh));
+}
+
+float *accel_gather_triangles(const struct bvh *bvh, const float *positions,
+                              const uint32_t *indices)
+{
+    /* One byte even for an empty BVH, so that NULL always means failure. */
+    float *tri = rt_realloc_array(NULL, bvh->prim_count ? 9 * (size_t)bvh->prim_count : 1,
+                                  sizeof(*tri));
+    if (!tri)
+        return NULL;
+    for (uint32_t slot = 0; slot < bvh->prim_count; slot++) {
+        const uint32_t *vi = &indices[3 * (size_t)bvh->prim_index[slot]];
+        float *dst = &tri[9 * (size_t)slot];
+        for (int corner = 0; corner < 3; corner++) {
+            const float *src = &positions[3 * (size_t)vi[corner]];
+            dst[3 * corner + 0] = src[0];
+            dst[3 * corner + 1] = src[1];
+            dst[3 * corner + 2] = src[2];
+        }
+    }
+    return tri;
+}

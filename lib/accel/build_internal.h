@@ -1,0 +1,123 @@
+/*
+ * build_internal.h - pieces shared by the top-down BVH builders
+ * (build_binned_sah.c, build_sweep_sah.c); not part of the accel interface.
+ *
+ * Both builders work the same way: a node owns a contiguous range
+ * [begin, end) of a primitive array that is partitioned in place; a split
+ * allocates the two children as an adjacent pair (left = first, right =
+ * first + 1, bvh.h's layout); a leaf records its range.  Nodes are numbered
+ * in depth-first order, left subtree first.
+ *
+ * SAH comparisons are made on "costs times the node's area": with A the
+ * node's half area and S = sum over children of A(child) * N(child),
+ *     leaf  cost * A = c_isect * N * A
+ *     split cost * A = c_trav * A + c_isect * S
+ * (MacDonald and Booth 1990), so a node of zero area (all primitives on a
+ * line or at a point) needs no division and simply prefers a leaf.
+ */
+#ifndef RT_ACCEL_BUILD_INTERNAL_H
+#define RT_ACCEL_BUILD_INTERNAL_H
+
+#include <stdint.h>
+#include <string.h>
+
+#include "accel/bvh.h"
+
+/* Smallest k with 2^k >= n: the depth an object-median subtree over n
+ * primitives needs to reach single-primitive leaves.  0 for n <= 1. */
+static inline uint32_t build_ceil_log2(uint32_t n)
+{
+    uint32_t k = 0;
+    while (k < 32 && ((uint64_t)1 << k) < n)
+        k++;
+    return k;
+}
+
+/*
+ * Depth guard, the same in every builder.  Invariant: a node at depth d
+ * with n primitives has d + ceil_log2(n) <= BVH_MAX_DEPTH (true at the
+ * root, since n < 2^32 and BVH_MAX_DEPTH >= 32).  An object-median split
+ * keeps it (each half has at most ceil(n/2) primitives, one level deeper).
+ * An arbitrary split leaves a child with up to n - 1 primitives, so it is
+ * allowed only when d + 1 + ceil_log2(n - 1) <= BVH_MAX_DEPTH; otherwise
+ * the builder must split at the object median.  Returns 1 in that case.
+ */
+static inline int build_must_split_median(uint32_t depth, uint32_t n)
+{
+    return depth + 1 + build_ceil_log2(n - 1) > BVH_MAX_DEPTH;
+}
+
+/* A task on a builder's explicit stack: one node still to be processed.
+ * Depth-first processing with both children pushed keeps at most
+ * depth + 1 tasks, so BVH_MAX_DEPTH + 2 entries always suffice. */
+#define BUILD_STACK_SIZE (BVH_MAX_DEPTH + 2)
+
+/*
+ * Copies *params (NULL: the defaults) into *out with every field brought
+ * into range: an unknown builder becomes the binned SAH, bins is clamped
+ * to [2, BVH_MAX_BINS], max_leaf_size to [1, BVH_MAX_LEAF_SIZE], a
+ * non-finite or negative c_trav and a non-finite or non-positive c_isect
+ * take their defaults.  Never fails.
+ */
+void accel_build_params_normalize(struct bvh_build_params *out,
+                                  const struct bvh_build_params *params);
+
+/*
+ * Allocates out->nodes for the worst case of 2n - 1 nodes and
+ * out->prim_index for n slots, n = prim_count >= 1, and zeroes the other
+ * fields.  Returns 0, or -1 with *out zeroed when an allocation fails or
+ * 2n - 1 does not fit in 32 bits.
+ */
+int accel_build_alloc(struct bvh *out, uint32_t prim_count);
+
+/* Records node_count and depth and returns the unused tail of the node
+ * array to the allocator (keeping the larger block if shrinking fails). */
+void accel_build_finish(struct bvh *out, uint32_t node_count, uint32_t depth);
+
+/* Node writers, so that both builders fill the layout the same way. */
+static inline void build_set_box(struct bvh_node *node, const struct aabb *box)
+{
+    for (int k = 0; k < 3; k++) {
+        node->aabb_min[k] = box->min[k];
+        node->aabb_max[k] = box->max[k];
+    }
+}
+
+static inline void build_set_leaf(struct bvh_node *node, uint32_t first_slot, uint32_t count)
+{
+    node->first = first_slot;
+    node->count = count;
+}
+
+static inline void build_set_inner(struct bvh_node *node, uint32_t left_child)
+{
+    node->first = left_child;
+    node->count = 0;
+}
+
+/* Maps a float to an unsigned integer with the same order (negatives
+ * reversed), and every NaN to a fixed place: a total order even for input
+ * that breaks the contract, so sorts and selections built on it cannot
+ * run out of their range.  -0 sorts just below +0. */
+static inline uint32_t build_float_order(float f)
+{
+    uint32_t u;
+    memcpy(&u, &f, sizeof(u));
+    return u ^ ((u >> 31) ? 0xffffffffu : 0x80000000u);
+}
+
+/* min/max written as the comparison the x86 minps/maxps instructions
+ * perform (second operand returned when unordered), so that a compiler
+ * emits one instruction for each instead of a libm call: fminf's NaN and
+ * signed-zero rules are not needed for finite boxes. */
+static inline float build_min(float a, float b)
+{
+    return a < b ? a : b;
+}
+
+static inline float build_max(float a, float b)
+{
+    return a > b ? a : b;
+}
+
+#endif

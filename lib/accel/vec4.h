@@ -1,0 +1,193 @@
+/*
+ * vec4.h - four-float vectors for the builders' inner loops.
+ *
+ * SSE when the compiler targets it (every x86-64 compiler does), else
+ * plain C.  The two give bit-identical results: each operation is the same
+ * IEEE single-precision operation lane by lane, and min/max follow the
+ * minps/maxps rule (a < b ? a : b, a > b ? a : b: the second operand when
+ * the comparison is unordered), so a tree built on any machine is the same
+ * tree.  Define RT_NO_SIMD to force the C path (that is how the C path is
+ * tested on x86).
+ *
+ * Boxes are kept as two vec4 (min, max) whose fourth lane is ignored.
+ */
+#ifndef RT_ACCEL_VEC4_H
+#define RT_ACCEL_VEC4_H
+
+#include <stdint.h>
+
+#if defined(__SSE2__) && !defined(RT_NO_SIMD)
+
+#include <emmintrin.h>
+
+typedef __m128 vec4;
+
+static inline vec4 vec4_load(const float p[4])
+{
+    return _mm_loadu_ps(p);
+}
+
+static inline void vec4_store(float p[4], vec4 a)
+{
+    _mm_storeu_ps(p, a);
+}
+
+static inline vec4 vec4_set(float x, float y, float z, float w)
+{
+    return _mm_setr_ps(x, y, z, w);
+}
+
+static inline vec4 vec4_splat(float x)
+{
+    return _mm_set1_ps(x);
+}
+
+static inline vec4 vec4_add(vec4 a, vec4 b)
+{
+    return _mm_add_ps(a, b);
+}
+
+static inline vec4 vec4_sub(vec4 a, vec4 b)
+{
+    return _mm_sub_ps(a, b);
+}
+
+static inline vec4 vec4_mul(vec4 a, vec4 b)
+{
+    return _mm_mul_ps(a, b);
+}
+
+static inline vec4 vec4_min(vec4 a, vec4 b)
+{
+    return _mm_min_ps(a, b);
+}
+
+static inline vec4 vec4_max(vec4 a, vec4 b)
+{
+    return _mm_max_ps(a, b);
+}
+
+/* a with lane 3 replaced by +0. */
+static inline vec4 vec4_xyz0(vec4 a)
+{
+    return _mm_and_ps(a, _mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0)));
+}
+
+/* cond ? a : b, without a branch. */
+static inline vec4 vec4_select(int cond, vec4 a, vec4 b)
+{
+    vec4 mask = _mm_castsi128_ps(_mm_set1_epi32(-(int32_t)(cond != 0)));
+    return _mm_or_ps(_mm_and_ps(mask, a), _mm_andnot_ps(mask, b));
+}
+
+/* Truncation toward zero of each lane; lanes must be in int range. */
+static inline void vec4_trunc(int32_t out[4], vec4 a)
+{
+    _mm_storeu_si128((__m128i *)(void *)out, _mm_cvttps_epi32(a));
+}
+
+/* Half the surface area of the box [lo, hi] (lanes 0..2), summed in the
+ * order of aabb_half_area: (dx dy + dy dz) + dz dx. */
+static inline float vec4_half_area(vec4 lo, vec4 hi)
+{
+    vec4 d = _mm_sub_ps(hi, lo);
+    vec4 d_yzx = _mm_shuffle_ps(d, d, _MM_SHUFFLE(3, 0, 2, 1));
+    vec4 p = _mm_mul_ps(d, d_yzx); /* dx dy, dy dz, dz dx, - */
+    vec4 s = _mm_add_ss(p, _mm_shuffle_ps(p, p, _MM_SHUFFLE(1, 1, 1, 1)));
+    s = _mm_add_ss(s, _mm_movehl_ps(p, p));
+    return _mm_cvtss_f32(s);
+}
+
+#else
+
+typedef struct {
+    float v[4];
+} vec4;
+
+static inline vec4 vec4_load(const float p[4])
+{
+    vec4 r = {{p[0], p[1], p[2], p[3]}};
+    return r;
+}
+
+static inline void vec4_store(float p[4], vec4 a)
+{
+    for (int i = 0; i < 4; i++)
+        p[i] = a.v[i];
+}
+
+static inline vec4 vec4_set(float x, float y, float z, float w)
+{
+    vec4 r = {{x, y, z, w}};
+    return r;
+}
+
+static inline vec4 vec4_splat(float x)
+{
+    vec4 r = {{x, x, x, x}};
+    return r;
+}
+
+static inline vec4 vec4_add(vec4 a, vec4 b)
+{
+    for (int i = 0; i < 4; i++)
+        a.v[i] = a.v[i] + b.v[i];
+    return a;
+}
+
+static inline vec4 vec4_sub(vec4 a, vec4 b)
+{
+    for (int i = 0; i < 4; i++)
+        a.v[i] = a.v[i] - b.v[i];
+    return a;
+}
+
+static inline vec4 vec4_mul(vec4 a, vec4 b)
+{
+    for (int i = 0; i < 4; i++)
+        a.v[i] = a.v[i] * b.v[i];
+    return a;
+}
+
+static inline vec4 vec4_min(vec4 a, vec4 b)
+{
+    for (int i = 0; i < 4; i++)
+        a.v[i] = a.v[i] < b.v[i] ? a.v[i] : b.v[i];
+    return a;
+}
+
+static inline vec4 vec4_max(vec4 a, vec4 b)
+{
+    for (int i = 0; i < 4; i++)
+        a.v[i] = a.v[i] > b.v[i] ? a.v[i] : b.v[i];
+    return a;
+}
+
+static inline vec4 vec4_xyz0(vec4 a)
+{
+    a.v[3] = 0.0f;
+    return a;
+}
+
+static inline vec4 vec4_select(int cond, vec4 a, vec4 b)
+{
+    return cond ? a : b;
+}
+
+static inline void vec4_trunc(int32_t out[4], vec4 a)
+{
+    for (int i = 0; i < 4; i++)
+        out[i] = (int32_t)a.v[i];
+}
+
+static inline float vec4_half_area(vec4 lo, vec4 hi)
+{
+    float dx = hi.v[0] - lo.v[0];
+    float dy = hi.v[1] - lo.v[1];
+    float dz = hi.v[2] - lo.v[2];
+    return dx * dy + dy * dz + dz * dx;
+}
+
+#endif
+
+#endif

@@ -1,0 +1,42 @@
+/*
+ * ray.c - ray preparation (trace.h): the reciprocal direction for the slab
+ * test and the shear constants of the watertight triangle test.
+ */
+#include "trace/trace.h"
+
+#include <math.h>
+
+void trace_ray_init(struct trace_ray *ray, const float org[3], const float dir[3], float tmin)
+{
+    for (int k = 0; k < 3; k++) {
+        ray->org[k] = org[k];
+        ray->dir[k] = dir[k];
+        /* IEEE division: a zero component gives an infinity of the zero's
+         * sign, which the slab test handles (intersect.h). */
+        ray->inv_dir[k] = 1.0f / dir[k];
+    }
+    ray->tmin = tmin;
+
+    /* Woop, Benthin and Wald 2013: z is the dimension where the direction
+     * is largest in magnitude (first one on ties), x and y follow
+     * cyclically and are swapped for a negative z to keep the winding. */
+    int kz = 0;
+    for (int k = 1; k < 3; k++) {
+        if (fabsf(dir[k]) > fabsf(dir[kz]))
+            kz = k;
+    }
+    int kx = kz == 2 ? 0 : kz + 1;
+    int ky = kx == 2 ? 0 : kx + 1;
+    if (dir[kz] < 0.0f) {
+        int tmp = kx;
+        kx = ky;
+        ky = tmp;
+    }
+    ray->kx = kx;
+    ray->ky = ky;
+    ray->kz = kz;
+    /* Stored negated, see trace.h. */
+    ray->sx = -dir[kx] / dir[kz];
+    ray->sy = -dir[ky] / dir[kz];
+    ray->sz = 1.0f / dir[kz];
+}

@@ -1,0 +1,120 @@
+/*
+ * traverse.c - closest-hit and any-hit traversal of one BVH (trace.h).
+ *
+ * Iterative, depth first, with a fixed stack: the builders guarantee
+ * depth <= BVH_MAX_DEPTH and at most one entry per level is pushed (the
+ * farther child of each inner node on the current path), so BVH_MAX_DEPTH
+ * + 1 entries always suffice.  At an inner node both children are tested
+ * and the nearer one (smaller entry distance) is visited first.  A pushed
+ * child carries its entry distance; when it is popped after the closest
+ * hit has moved in front of it, it is skipped without another box test.
+ *
+ * Hits are accepted with ray->tmin <= t < best, best starting at t_max, so
+ * of two triangles at exactly the same distance the first one found wins.
+ * Leaf slot i's triangle is tri[9i .. 9i+8] (accel_gather_triangles).
+ */
+#include "trace/trace.h"
+
+#include <stddef.h>
+
+#include "trace/intersect.h"
+
+struct stack_entry {
+    uint32_t node;
+    float t_entry;
+};
+
+/* Shared walk; any_hit ends it at the first hit. */
+static inline int walk(const struct bvh *bvh, const float *tri, const struct trace_ray *ray,
+                       float t_max, int any_hit, struct trace_hit *hit,
+                       struct trace_counters *counters)
+{
+    if (bvh->node_count == 0)
+        return 0;
+    const struct bvh_node *nodes = bvh->nodes;
+    struct isect_box_ray br;
+    isect_box_ray_init(&br, ray);
+    uint64_t node_tests = 1;
+    uint64_t triangle_tests = 0;
+    float best = t_max;
+    int found = 0;
+    struct stack_entry stack[BVH_MAX_DEPTH + 1];
+    uint32_t sp = 0;
+    uint32_t current = 0;
+    float t_entry;
+    if (!isect_box(&br, &nodes[0], best, &t_entry))
+        goto done;
+    for (;;) {
+        const struct bvh_node *node = &nodes[current];
+        if (node->count) {
+            for (uint32_t slot = node->first; slot < node->first + node->count; slot++) {
+                const float *v = &tri[9 * (size_t)slot];
+                float t, u, w;
+                triangle_tests++;
+                if (!isect_triangle(ray, v, v + 3, v + 6, best, &t, &u, &w))
+                    continue;
+                found = 1;
+                if (any_hit)
+                    goto done;
+                best = t;
+                hit->t = t;
+                hit->u = u;
+                hit->v = w;
+                hit->prim = bvh->prim_index[slot];
+            }
+        } else {
+            uint32_t left = node->first;
+            uint32_t right = left + 1;
+            float t_left;
+            float t_right;
+            node_tests += 2;
+            int hit_left = isect_box(&br, &nodes[left], best, &t_left);
+            int hit_right = isect_box(&br, &nodes[right], best, &t_right);
+            if (hit_left && hit_right) {
+                if (t_right < t_left) {
+                    stack[sp].node = left;
+                    stack[sp].t_entry = t_left;
+                    current = right;
+                } else {
+                    stack[sp].node = right;
+                    stack[sp].t_entry = t_right;
+                    current = left;
+                }
+                sp++;
+                continue;
+            }
+            if (hit_left || hit_right) {
+                current = hit_left ? left : right;
+                continue;
+            }
+        }
+        /* Pop the next subtree that can still hold a closer hit; the
+         * comparison matches isect_box's closed interval. */
+        for (;;) {
+            if (sp == 0)
+                goto done;
+            sp--;
+            if (stack[sp].t_entry <= best)
+                break;
+        }
+        current = stack[sp].node;
+    }
+done:
+    if (counters) {
+        counters->node_tests += node_tests;
+        counters->triangle_tests += triangle_tests;
+    }
+    return found;
+}
+
+int trace_closest(const struct bvh *bvh, const float *tri, const struct trace_ray *ray,
+                  float t_max, struct trace_hit *hit, struct trace_counters *counters)
+{
+    return walk(bvh, tri, ray, t_max, 0, hit, counters);
+}
+
+int trace_any(const struct bvh *bvh, const float *tri, const struct trace_ray *ray, float t_max,
+              struct trace_counters *counters)
+{
+    return walk(bvh, tri, ray, t_max, 1, NULL, counters);
+}
