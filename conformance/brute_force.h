@@ -14,10 +14,10 @@
  *   - a ray/triangle test in double and bf_check_hit, which judges one
  *     RThit of rtTraceRays against every triangle of that scene.
  *
- * Tolerances (bf_check_hit).  The library works in float: it transforms
- * rays into object space with a float copy of the inverse instance matrix
- * and intersects there, so its ray is off the exact one by a few float
- * ulps of the coordinates involved.  A test states that error as pos_eps,
+ * Tolerances (bf_check_hit).  The library works in float: it moves each
+ * ray into object space (rounding the result to float) and intersects
+ * there, so its ray is off the exact one by a few float ulps of the
+ * coordinates involved.  A test states that error as pos_eps,
  * a length in world units.  From it:
  *   - a ray moved by pos_eps meets a plane up to pos_eps / cosine away
  *     (cosine between ray and normal), so a triangle is "solidly hit" when

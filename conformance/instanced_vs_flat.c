@@ -26,9 +26,10 @@
  *     channel within 1e-4 of the other image.
  *
  * Why the results are not bit-identical: instanced triangles keep their
- * object-space float vertices and the ray is moved into object space with
- * a float copy of the inverse matrix; flattened triangles are the matrix
- * applied in double to the same vertices, rounded once to float.  The two
+ * object-space float vertices and the ray is moved into object space by
+ * the inverse matrix and rounded to float there; flattened triangles are
+ * the matrix applied in double to the same vertices, rounded once to float
+ * in world space.  The two
  * computations round differently, by a few float ulps of the coordinates
  * (~1e-6 relative here), so hit distances, normals and shading differ in
  * the last bits (the largest difference is printed; it was 1.1e-5 when

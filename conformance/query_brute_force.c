@@ -25,14 +25,14 @@
  * Tolerances (see brute_force.h): rel_t = 1e-4 and pos_eps = 1e-5 times
  * the largest coordinate magnitude of the scene and the rays (about 30
  * here, so pos_eps ~ 3e-4).  The library moves each ray into object space
- * with a float copy of the inverse matrix: the origin, ~30 units out, maps
- * to object coordinates up to ~100 (inverse factors up to 2), where a float
- * ulp is 7.6e-6; a few roundings there, times 2 back in world units, give
- * ~5e-5.  The largest error seen along the normal is printed at the end
- * ("largest position error"): 8e-5 with t computed as the watertight
- * test's T / det, 7e-6 with t from the triangle's plane in double, so
- * pos_eps has a margin of at least 3 over it.  Grazing hits get pos_eps / cosine, and
- * barycentrics of thin or grazed triangles a conditioning term
+ * and rounds it to float there: the origin, ~30 units out, maps to object
+ * coordinates up to ~100 (inverse factors up to 2), where a float ulp is
+ * 7.6e-6, times 2 back in world units.  The largest error seen along the
+ * normal is printed at the end ("largest position error"): 8e-5 with the
+ * ray transformed by a float matrix and t computed as the watertight
+ * test's T / det, 4e-6 with both done in double, so pos_eps keeps a
+ * margin of at least 3 either way.  Grazing hits get pos_eps / cosine,
+ * and barycentrics of thin or grazed triangles a conditioning term
  * (brute_force.h).
  */
 #include <math.h>

@@ -120,9 +120,13 @@ struct ray_case {
 
 static long run_cases(const struct ray_case *cases, int count, RTuint object, const char *what)
 {
-    RTray *rays = malloc((size_t)count * sizeof(*rays));
-    RThit *hits = malloc((size_t)count * sizeof(*hits));
-    RTboolean *occ = malloc((size_t)count);
+    RTray *rays = calloc((size_t)count, sizeof(*rays));
+    RThit *hits = calloc((size_t)count, sizeof(*hits));
+    RTboolean *occ = calloc((size_t)count, 1);
+    if (!rays || !hits || !occ) {
+        fprintf(stderr, "%s: out of memory\n", what);
+        exit(1);
+    }
     for (int i = 0; i < count; i++)
         rays[i] = cases[i].ray;
     rtTraceRays(count, rays, hits);

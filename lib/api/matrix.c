@@ -103,7 +103,11 @@ void rtMultMatrixd(const RTdouble *m)
     load_or_mult("rtMultMatrixd", NULL, m, 1);
 }
 
-static void translate(const char *caller, double x, double y, double z)
+enum simple_transform { TRANSLATE, SCALE };
+
+/* Multiplies the current matrix by a translation or a scale. */
+static void simple_transform(const char *caller, enum simple_transform kind, double x, double y,
+                             double z)
 {
     GET_CURRENT_CONTEXT(ctx);
     if (!ctx || rt_check_outside_begin(ctx, caller))
@@ -113,46 +117,33 @@ static void translate(const char *caller, double x, double y, double z)
         return;
     double m[16];
     mat4_identity(m);
-    m[12] = x;
-    m[13] = y;
-    m[14] = z;
+    for (int k = 0; k < 3; k++) {
+        if (kind == TRANSLATE)
+            m[12 + k] = v[k];
+        else
+            m[5 * k] = v[k];
+    }
     multiply(ctx, caller, m);
 }
 
 void rtTranslatef(RTfloat x, RTfloat y, RTfloat z)
 {
-    translate("rtTranslatef", x, y, z);
+    simple_transform("rtTranslatef", TRANSLATE, x, y, z);
 }
 
 void rtTranslated(RTdouble x, RTdouble y, RTdouble z)
 {
-    translate("rtTranslated", x, y, z);
-}
-
-static void scale(const char *caller, double x, double y, double z)
-{
-    GET_CURRENT_CONTEXT(ctx);
-    if (!ctx || rt_check_outside_begin(ctx, caller))
-        return;
-    double v[3] = {x, y, z};
-    if (!rt_check_finite_d(ctx, caller, v, 3))
-        return;
-    double m[16];
-    mat4_identity(m);
-    m[0] = x;
-    m[5] = y;
-    m[10] = z;
-    multiply(ctx, caller, m);
+    simple_transform("rtTranslated", TRANSLATE, x, y, z);
 }
 
 void rtScalef(RTfloat x, RTfloat y, RTfloat z)
 {
-    scale("rtScalef", x, y, z);
+    simple_transform("rtScalef", SCALE, x, y, z);
 }
 
 void rtScaled(RTdouble x, RTdouble y, RTdouble z)
 {
-    scale("rtScaled", x, y, z);
+    simple_transform("rtScaled", SCALE, x, y, z);
 }
 
 /* The rotation matrix of the glRotate man page, angle in degrees. */
