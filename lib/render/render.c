@@ -46,10 +46,17 @@ struct render_shared {
 static int acquire_object(void *user, void *object, struct trace_object_view *view)
 {
     struct render_shared *sh = user;
+    /* The common case, an object already built, takes no lock and no
+     * clock reading. */
+    const struct scene_accel *accel = scene_object_peek(object);
+    if (accel) {
+        view->bvh = &accel->bvh;
+        view->tri = accel->tri;
+        return 1;
+    }
     int built_now;
     double start = rt_now_ms();
-    const struct scene_accel *accel =
-        scene_object_acquire(object, sh->job->build_params, &built_now);
+    accel = scene_object_acquire(object, sh->job->build_params, &built_now);
     if (!accel) {
         __atomic_store_n(&sh->failed, 1, __ATOMIC_RELAXED);
         return 0;
