@@ -164,7 +164,7 @@ void rtDestroyContext(RTcontext ctx)
         return;
     if (current_context == ctx)
         current_context = NULL;
-    render_pool_destroy(ctx->pool);
+    rt_pool_destroy(ctx->pool);
     scene_mesh_release(&ctx->recording.mesh);
     scene_frame_release(&ctx->frame);
     scene_objects_release(&ctx->objects);
@@ -190,9 +190,9 @@ RTcontext rtGetCurrentContext(void)
     return current_context;
 }
 
-struct render_pool *rt_pool(struct rt_context *ctx)
+struct rt_pool *rt_context_pool(struct rt_context *ctx)
 {
     if (!ctx->pool && ctx->threads > 1)
-        ctx->pool = render_pool_create(ctx->threads);
+        ctx->pool = rt_pool_create(ctx->threads);
     return ctx->pool;
 }

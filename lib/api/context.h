@@ -98,7 +98,7 @@ struct rt_context {
 
     /* Rendering (appearance.c, frame.c). */
     struct render_state render;
-    struct render_pool *pool; /* NULL until a frame needs threads */
+    struct rt_pool *pool; /* NULL until a frame needs threads */
 
     /* Statistics of the last frame or query. */
     struct render_stats stats;
@@ -155,6 +155,6 @@ int rt_prepare_scene(struct rt_context *ctx, const char *caller);
 void rt_render_job(struct rt_context *ctx, struct render_job *job);
 
 /* Starts the worker pool if needed; NULL if threads == 1 or on failure. */
-struct render_pool *rt_pool(struct rt_context *ctx);
+struct rt_pool *rt_context_pool(struct rt_context *ctx);
 
 #endif

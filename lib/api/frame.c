@@ -58,8 +58,8 @@ void rt_render_job(struct rt_context *ctx, struct render_job *job)
     job->state = &ctx->render;
     job->frame = &ctx->frame;
     job->build_params = &ctx->build_params;
-    job->pool = rt_pool(ctx);
-    job->threads = render_pool_threads(job->pool);
+    job->pool = rt_context_pool(ctx);
+    job->threads = rt_pool_threads(job->pool);
 }
 
 void rtRenderFrame(void)

@@ -81,7 +81,7 @@ static enum value_kind state_values(const struct rt_context *ctx, RTenum pname, 
         v[0] = ctx->frame.open ? ctx->frame.pending.count : ctx->frame.committed.count;
         return VALUE_INT;
     case RT_WORKER_THREADS_RUNNING:
-        v[0] = ctx->pool ? render_pool_threads(ctx->pool) - 1 : 0;
+        v[0] = ctx->pool ? rt_pool_threads(ctx->pool) - 1 : 0;
         return VALUE_INT;
     case RT_SHADING_MODE:
         v[0] = ctx->render.shading == RENDER_WHITTED ? RT_WHITTED : RT_EYE_LIGHT;

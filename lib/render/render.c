@@ -79,13 +79,13 @@ static int shared_init(struct render_shared *sh, const struct render_job *job)
     sh->scene.instances = job->frame->trace_instances;
     sh->scene.acquire = acquire_object;
     sh->scene.user = sh;
-    sh->counters = rt_calloc((size_t)render_pool_threads(job->pool), sizeof(*sh->counters));
+    sh->counters = rt_calloc((size_t)rt_pool_threads(job->pool), sizeof(*sh->counters));
     return sh->counters ? 0 : -1;
 }
 
 static void shared_finish(struct render_shared *sh, struct render_stats *stats)
 {
-    int n = render_pool_threads(sh->job->pool);
+    int n = rt_pool_threads(sh->job->pool);
     for (int i = 0; i < n; i++) {
         const struct trace_scene_counters *c = &sh->counters[i].c;
         stats->rays += c->rays;
@@ -169,7 +169,7 @@ int render_frame(const struct render_job *job, int fb_width, int fb_height, floa
     sh.tiles_y = (st->viewport[3] + RENDER_TILE_SIZE - 1) / RENDER_TILE_SIZE;
     /* A singular projection leaves every pixel at the clear colour. */
     if (mat4_invert(sh.inv_projection, st->projection) && sh.tiles_x > 0 && sh.tiles_y > 0)
-        render_pool_run(job->pool, frame_task, &sh);
+        rt_pool_run(job->pool, frame_task, &sh);
     int failed = sh.failed;
     shared_finish(&sh, stats);
     if (failed) {
@@ -239,7 +239,7 @@ static int run_queries(const struct render_job *job, int count, const RTray *ray
     sh.hits = hits;
     sh.occluded = occluded;
     /* One chunk needs no helpers: avoid waking the pool for tiny batches. */
-    render_pool_run(count > RENDER_QUERY_CHUNK ? job->pool : NULL, query_task, &sh);
+    rt_pool_run(count > RENDER_QUERY_CHUNK ? job->pool : NULL, query_task, &sh);
     int failed = sh.failed;
     shared_finish(&sh, stats);
     return failed ? -1 : 0;

@@ -17,6 +17,7 @@
 #include <stdint.h>
 
 #include "accel/bvh.h"
+#include "base/pool.h"
 #include "scene/frame.h"
 #include "trace/scene_traverse.h"
 
@@ -58,22 +59,12 @@ struct render_stats {
     double render_ms;
 };
 
-/* Worker pool (pool.c): threads - 1 workers plus the calling thread. */
-struct render_pool;
-typedef void (*render_task_fn)(void *arg, int worker);
-struct render_pool *render_pool_create(int threads);
-/* Runs fn(arg, w) for w = 0..threads-1, w = 0 on the caller; returns when
- * all have finished.  pool may be NULL: then fn(arg, 0) runs alone. */
-void render_pool_run(struct render_pool *pool, render_task_fn fn, void *arg);
-int render_pool_threads(const struct render_pool *pool);
-void render_pool_destroy(struct render_pool *pool);
-
 /* What a frame or query needs; built by the API layer. */
 struct render_job {
     const struct render_state *state;
     const struct scene_frame *frame; /* prepared: top level valid */
     const struct bvh_build_params *build_params;
-    struct render_pool *pool;
+    struct rt_pool *pool;
     int threads;
 };
 

@@ -1,20 +1,21 @@
 /*
- * pool.c - a minimal pthread worker pool for frames and ray batches.
+ * pool.c - the worker pool (see pool.h).
  *
- * threads - 1 workers wait on a condition variable; render_pool_run wakes
+ * threads - 1 workers wait on a condition variable; rt_pool_run wakes
  * them for one task, runs worker 0 on the calling thread, and waits until
  * every worker has finished.  Work inside a task is shared dynamically
  * (the task hands out tiles or ray chunks through an atomic counter), so
  * the pool itself does no scheduling.  Created on the first frame that
  * needs it: a context that never renders never starts a thread.
  */
-#include "render/render.h"
+#include "base/pool.h"
 
 #include <pthread.h>
+#include <stdint.h>
 
 #include "base/alloc.h"
 
-struct render_pool {
+struct rt_pool {
     int threads;
     pthread_t *workers;
     pthread_mutex_t lock;
@@ -23,19 +24,19 @@ struct render_pool {
     uint64_t generation; /* bumped per task */
     int pending;         /* workers still running the current task */
     int quit;
-    render_task_fn fn;
+    rt_task_fn fn;
     void *arg;
 };
 
 struct worker_start {
-    struct render_pool *pool;
+    struct rt_pool *pool;
     int index;
 };
 
 static void *worker_main(void *p)
 {
     struct worker_start *start = p;
-    struct render_pool *pool = start->pool;
+    struct rt_pool *pool = start->pool;
     int index = start->index;
     rt_free(start);
     uint64_t seen = 0;
@@ -46,7 +47,7 @@ static void *worker_main(void *p)
         if (pool->quit)
             break;
         seen = pool->generation;
-        render_task_fn fn = pool->fn;
+        rt_task_fn fn = pool->fn;
         void *arg = pool->arg;
         pthread_mutex_unlock(&pool->lock);
         fn(arg, index);
@@ -58,11 +59,11 @@ static void *worker_main(void *p)
     return NULL;
 }
 
-struct render_pool *render_pool_create(int threads)
+struct rt_pool *rt_pool_create(int threads)
 {
     if (threads < 2)
         return NULL;
-    struct render_pool *pool = rt_calloc(1, sizeof(*pool));
+    struct rt_pool *pool = rt_calloc(1, sizeof(*pool));
     if (!pool)
         return NULL;
     pool->workers = rt_calloc((size_t)threads - 1, sizeof(pthread_t));
@@ -90,7 +91,7 @@ struct render_pool *render_pool_create(int threads)
     return pool;
 }
 
-void render_pool_run(struct render_pool *pool, render_task_fn fn, void *arg)
+void rt_pool_run(struct rt_pool *pool, rt_task_fn fn, void *arg)
 {
     if (!pool || pool->threads < 2) {
         fn(arg, 0);
@@ -112,12 +113,12 @@ void render_pool_run(struct render_pool *pool, render_task_fn fn, void *arg)
     pthread_mutex_unlock(&pool->lock);
 }
 
-int render_pool_threads(const struct render_pool *pool)
+int rt_pool_threads(const struct rt_pool *pool)
 {
     return pool ? pool->threads : 1;
 }
 
-void render_pool_destroy(struct render_pool *pool)
+void rt_pool_destroy(struct rt_pool *pool)
 {
     if (!pool)
         return;

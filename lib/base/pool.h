@@ -1,0 +1,32 @@
+/*
+ * pool.h - a minimal pthread worker pool shared by rendering and parallel
+ * builds.
+ *
+ * A pool of `threads` runs a task as threads - 1 workers plus the calling
+ * thread; the task shares its work out itself (atomic counters), so the
+ * pool does no scheduling.  Pools are created when first needed: a
+ * context that never renders or builds in parallel starts no thread.
+ */
+#ifndef RT_BASE_POOL_H
+#define RT_BASE_POOL_H
+
+struct rt_pool;
+typedef void (*rt_task_fn)(void *arg, int worker);
+
+/* NULL when threads < 2 (or on allocation failure): callers treat a NULL
+ * pool as "run on the calling thread only".  May start fewer threads than
+ * asked when the system refuses more; rt_pool_threads tells. */
+struct rt_pool *rt_pool_create(int threads);
+
+/* Runs fn(arg, w) for w = 0..threads-1, w = 0 on the caller, and returns
+ * when all have finished.  pool may be NULL: then fn(arg, 0) runs alone.
+ * Not reentrant: one task at a time per pool. */
+void rt_pool_run(struct rt_pool *pool, rt_task_fn fn, void *arg);
+
+/* Threads a task runs on, the caller included; 1 for NULL. */
+int rt_pool_threads(const struct rt_pool *pool);
+
+/* Joins the workers and frees the pool; NULL is ignored. */
+void rt_pool_destroy(struct rt_pool *pool);
+
+#endif
