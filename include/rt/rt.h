@@ -166,6 +166,25 @@ typedef struct rt_context *RTcontext;
 #define RT_OBJECT_SAH_COST 0x8F53    /* float; 0 before the build */
 #define RT_OBJECT_BUILD_TIME 0x8F54  /* float, ms of the last build */
 #define RT_OBJECT_BOUNDS 0x8F55      /* float[6]: min xyz, max xyz */
+#define RT_OBJECT_CLASS 0x8F56       /* the class this frame (and a hint) */
+#define RT_UPDATE_STRATEGY 0x8F57    /* the update strategy (and a hint) */
+#define RT_OBJECT_UPDATE_TIME 0x8F58 /* float, ms of the last update */
+#define RT_OBJECT_REBUILDS 0x8F59    /* full builds so far */
+#define RT_OBJECT_REFITS 0x8F5A      /* refits so far */
+#define RT_OBJECT_VERTICES 0x8F5B    /* vertices, in recording order */
+
+/* Object classes (paper 004 sec. 3).  As hints, RT_AUTOMATIC lets the
+ * runtime classify from what changed each frame. */
+#define RT_AUTOMATIC 0x8F60
+#define RT_STATIC 0x8F61
+#define RT_AFFINE 0x8F62
+#define RT_UNSTRUCTURED 0x8F63
+/* Update strategies for unstructured objects (papers 000 and 001). */
+#define RT_REFIT 0x8F64               /* refit the bounds only */
+#define RT_REBUILD 0x8F65             /* binned SAH rebuild every frame */
+#define RT_REBUILD_MEDIAN 0x8F66      /* spatial-median (BIH-like) rebuild every frame */
+#define RT_REBUILD_HEURISTIC 0x8F67   /* refit; rebuild when SAH cost degraded */
+#define RT_RESTRUCTURE 0x8F68         /* selective restructuring (paper 001) */
 
 /* ---- Ray queries ----------------------------------------------------- */
 /* A ray: points org + t*dir for t in [tmin, tmax].  dir need not be
@@ -216,6 +235,9 @@ RTAPI void rtDeleteObjects(RTsizei n, const RTuint *objects);
 RTAPI RTboolean rtIsObject(RTuint object);
 RTAPI void rtGetObjectiv(RTuint object, RTenum pname, RTint *params);
 RTAPI void rtGetObjectfv(RTuint object, RTenum pname, RTfloat *params);
+RTAPI void rtObjectParameteri(RTuint object, RTenum pname, RTint param);
+RTAPI void rtUpdateVertices(RTuint object, RTint first, RTsizei count, RTint size, RTenum type,
+                            RTsizei stride, const void *positions);
 
 /* ---- Primitives (docs/primitives.md) ---------------------------------- */
 RTAPI void rtBegin(RTenum mode);

@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "api/context.h"
+#include "base/alloc.h"
 #include "scene/assembly.h"
 
 static struct client_array *client_array_of(struct rt_context *ctx, RTenum array)
@@ -214,16 +215,15 @@ static int attribute_is_finite(const struct client_array *a, size_t i, int compo
     return 1;
 }
 
-/* Stores element i as a vertex with the enabled attributes, falling back
- * to the current attribute for disabled arrays (GL). */
-static int emit_element(struct rt_context *ctx, const char *caller, size_t i)
+/* Reads element i's attributes, falling back to the current attribute for
+ * disabled arrays (GL). */
+static void fetch_element(struct rt_context *ctx, size_t i, double p[3], float normal[3],
+                          float color[4], float texcoord[2])
 {
-    double p[3];
     fetch_position(&ctx->vertex_array, i, p);
-    float normal[3], color[4], texcoord[2];
-    memcpy(normal, ctx->current_normal, sizeof(normal));
-    memcpy(color, ctx->current_color, sizeof(color));
-    memcpy(texcoord, ctx->current_texcoord, sizeof(texcoord));
+    memcpy(normal, ctx->current_normal, 3 * sizeof(float));
+    memcpy(color, ctx->current_color, 4 * sizeof(float));
+    memcpy(texcoord, ctx->current_texcoord, 2 * sizeof(float));
     if (ctx->normal_array.enabled)
         for (int c = 0; c < 3; c++)
             normal[c] = (float)fetch(&ctx->normal_array, i, c, 1);
@@ -237,6 +237,14 @@ static int emit_element(struct rt_context *ctx, const char *caller, size_t i)
         for (int c = 0; c < 2 && c < ctx->texcoord_array.size; c++)
             texcoord[c] = (float)fetch(&ctx->texcoord_array, i, c, 0);
     }
+}
+
+/* Stores element i as the next vertex of the stream and assembles. */
+static int emit_element(struct rt_context *ctx, const char *caller, size_t i)
+{
+    double p[3];
+    float normal[3], color[4], texcoord[2];
+    fetch_element(ctx, i, p, normal, color, texcoord);
     return rt_record_vertex(ctx, caller, p, normal, color, texcoord);
 }
 
@@ -291,6 +299,85 @@ static size_t element_index(RTenum index_type, const void *indices, size_t first
     }
 }
 
+/* rtDrawArrays: the elements in order, exactly as rtBegin/rtVertex/rtEnd. */
+static void draw_sequential(struct rt_context *ctx, const char *caller, size_t first,
+                            size_t count)
+{
+    /* Reserve up front so the batch cannot fail half-way. */
+    struct scene_mesh *mesh = &ctx->recording.mesh;
+    if (count > UINT32_MAX / 2 || scene_mesh_reserve_vertices(mesh, (uint32_t)count) ||
+        scene_mesh_reserve_triangles(mesh, (uint32_t)(2 * count))) {
+        ctx->recording.out_of_memory = 1;
+        rt_error(ctx, RT_OUT_OF_MEMORY, "%s: out of memory", caller);
+        return;
+    }
+    for (size_t k = 0; k < count; k++)
+        if (emit_element(ctx, caller, first + k))
+            return; /* only a material allocation can fail here; recorded */
+}
+
+/*
+ * rtDrawElements: the array elements from the smallest to the largest
+ * index used are stored once each, in array order (so an object's vertex
+ * k is array element min + k, which rtUpdateVertices relies on), and the
+ * triangles index them.  Elements in that range that no index uses are
+ * stored as the origin with the current attributes and are referenced by
+ * no triangle.  As glDrawRangeElements, a sparse index range costs memory
+ * for the whole range.
+ */
+static void draw_indexed(struct rt_context *ctx, const char *caller, size_t count,
+                         RTenum index_type, const void *indices)
+{
+    if (count == 0)
+        return;
+    size_t lo = SIZE_MAX, hi = 0;
+    for (size_t k = 0; k < count; k++) {
+        size_t i = element_index(index_type, indices, 0, k);
+        lo = i < lo ? i : lo;
+        hi = i > hi ? i : hi;
+    }
+    size_t range = hi - lo + 1;
+    struct scene_mesh *mesh = &ctx->recording.mesh;
+    uint32_t *map = NULL;
+    unsigned char *used = NULL;
+    if (range > UINT32_MAX / 2 || count > UINT32_MAX / 2 ||
+        !(map = rt_malloc(count * sizeof(*map))) || !(used = rt_calloc(range, 1)) ||
+        scene_mesh_reserve_vertices(mesh, (uint32_t)range) ||
+        scene_mesh_reserve_triangles(mesh, (uint32_t)(2 * count))) {
+        rt_free(map);
+        rt_free(used);
+        ctx->recording.out_of_memory = 1;
+        rt_error(ctx, RT_OUT_OF_MEMORY, "%s: out of memory", caller);
+        return;
+    }
+    uint32_t base = mesh->vertex_count;
+    for (size_t k = 0; k < count; k++) {
+        size_t i = element_index(index_type, indices, 0, k);
+        used[i - lo] = 1;
+        map[k] = base + (uint32_t)(i - lo);
+    }
+    for (size_t e = 0; e < range; e++) {
+        double p[3] = {0.0, 0.0, 0.0};
+        float normal[3], color[4], texcoord[2];
+        if (used[e]) {
+            fetch_element(ctx, lo + e, p, normal, color, texcoord);
+        } else {
+            /* Not validated, so not read: the application may keep
+             * anything in elements no index uses. */
+            memcpy(normal, ctx->current_normal, sizeof(normal));
+            memcpy(color, ctx->current_color, sizeof(color));
+            memcpy(texcoord, ctx->current_texcoord, sizeof(texcoord));
+        }
+        /* Cannot fail: room reserved and every used element validated. */
+        rt_store_vertex(ctx, caller, p, normal, color, texcoord);
+    }
+    for (size_t k = 0; k < count; k++)
+        if (rt_assemble_indexed(ctx, caller, (uint32_t)k, map))
+            break; /* only a material allocation can fail here; recorded */
+    rt_free(map);
+    rt_free(used);
+}
+
 static void draw(struct rt_context *ctx, const char *caller, RTenum mode, size_t first,
                  size_t count, RTenum index_type, const void *indices)
 {
@@ -315,20 +402,13 @@ static void draw(struct rt_context *ctx, const char *caller, RTenum mode, size_t
             return;
         }
     }
-    /* Reserve up front so the batch cannot fail half-way. */
-    struct scene_mesh *mesh = &ctx->recording.mesh;
-    if (count > UINT32_MAX / 2 || scene_mesh_reserve_vertices(mesh, (uint32_t)count) ||
-        scene_mesh_reserve_triangles(mesh, (uint32_t)(2 * count))) {
-        ctx->recording.out_of_memory = 1;
-        rt_error(ctx, RT_OUT_OF_MEMORY, "%s: out of memory", caller);
-        return;
-    }
     /* Normals from an array count as set normals (see rtNormal3f). */
     if (ctx->normal_array.enabled && count > 0)
-        mesh->has_normals = 1;
-    for (size_t k = 0; k < count; k++)
-        if (emit_element(ctx, caller, element_index(index_type, indices, first, k)))
-            return; /* only a material allocation can fail here; recorded */
+        ctx->recording.mesh.has_normals = 1;
+    if (indices)
+        draw_indexed(ctx, caller, count, index_type, indices);
+    else
+        draw_sequential(ctx, caller, first, count);
 }
 
 void rtDrawArrays(RTenum mode, RTint first, RTsizei count)

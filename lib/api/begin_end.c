@@ -60,8 +60,10 @@ static int current_material(struct rt_context *ctx)
     return rec->material_index;
 }
 
-int rt_record_vertex(struct rt_context *ctx, const char *caller, const double position[3],
-                     const float normal[3], const float color[4], const float texcoord[2])
+/* Stores one vertex (transformed) without assembling; the caller has
+ * reserved room.  Returns 0, or -1 after recording RT_INVALID_VALUE. */
+static int store_vertex(struct rt_context *ctx, const char *caller, const double position[3],
+                        const float normal[3], const float color[4], const float texcoord[2])
 {
     struct primitive_block *b = &ctx->block;
     struct scene_mesh *mesh = &ctx->recording.mesh;
@@ -74,17 +76,6 @@ int rt_record_vertex(struct rt_context *ctx, const char *caller, const double po
                  position[0], position[1], position[2]);
         return -1;
     }
-    /* Acquire everything this vertex can need before storing anything. */
-    struct scene_tri tris[2];
-    int n = scene_assemble(b->mode, b->base, b->count, tris);
-    int material = n ? current_material(ctx) : 0;
-    if (scene_mesh_reserve_vertices(mesh, 1) || scene_mesh_reserve_triangles(mesh, (uint32_t)n) ||
-        material < 0) {
-        ctx->recording.out_of_memory = 1;
-        rt_error(ctx, RT_OUT_OF_MEMORY, "%s: out of memory recording object %u", caller,
-                 ctx->recording.name);
-        return -1;
-    }
     uint32_t v = mesh->vertex_count++;
     memcpy(&mesh->positions[3 * v], pf, sizeof(pf));
     const double *nm = b->normal_matrix;
@@ -93,18 +84,76 @@ int rt_record_vertex(struct rt_context *ctx, const char *caller, const double po
             (float)(nm[r] * normal[0] + nm[3 + r] * normal[1] + nm[6 + r] * normal[2]);
     memcpy(&mesh->colors[4 * v], color, 4 * sizeof(float));
     memcpy(&mesh->texcoords[2 * v], texcoord, 2 * sizeof(float));
-    b->count++;
+    return 0;
+}
 
+static int out_of_memory(struct rt_context *ctx, const char *caller)
+{
+    ctx->recording.out_of_memory = 1;
+    rt_error(ctx, RT_OUT_OF_MEMORY, "%s: out of memory recording object %u", caller,
+             ctx->recording.name);
+    return -1;
+}
+
+/* Stores the triangles completed by stream position k of the block; with
+ * map, stream position j is mesh vertex map[j] (indexed drawing), else
+ * block base + j.  Acquires its memory first: -1 (recorded) changes
+ * nothing. */
+static int assemble(struct rt_context *ctx, const char *caller, uint32_t k, const uint32_t *map)
+{
+    struct primitive_block *b = &ctx->block;
+    struct scene_mesh *mesh = &ctx->recording.mesh;
+    struct scene_tri tris[2];
+    int n = scene_assemble(b->mode, map ? 0 : b->base, k, tris);
+    if (n == 0)
+        return 0;
+    int material = current_material(ctx);
+    if (material < 0 || scene_mesh_reserve_triangles(mesh, (uint32_t)n))
+        return out_of_memory(ctx, caller);
     uint8_t flags = (uint8_t)((ctx->shade_model == RT_FLAT ? TRI_FLAT : 0u) |
                               (ctx->color_material ? TRI_COLOR_MATERIAL : 0u));
     for (int i = 0; i < n; i++) {
         uint32_t t = mesh->tri_count++;
-        memcpy(&mesh->indices[3 * t], tris[i].v, sizeof(tris[i].v));
-        mesh->tri_provoking[t] = tris[i].provoking;
+        for (int c = 0; c < 3; c++)
+            mesh->indices[3 * t + c] = map ? map[tris[i].v[c]] : tris[i].v[c];
+        mesh->tri_provoking[t] = map ? map[tris[i].provoking] : tris[i].provoking;
         mesh->tri_material[t] = (uint16_t)material;
         mesh->tri_flags[t] = flags;
     }
     return 0;
+}
+
+int rt_record_vertex(struct rt_context *ctx, const char *caller, const double position[3],
+                     const float normal[3], const float color[4], const float texcoord[2])
+{
+    struct primitive_block *b = &ctx->block;
+    struct scene_mesh *mesh = &ctx->recording.mesh;
+    /* Acquire everything this vertex can need before storing anything. */
+    struct scene_tri tris[2];
+    int n = scene_assemble(b->mode, b->base, b->count, tris);
+    if (scene_mesh_reserve_vertices(mesh, 1) || scene_mesh_reserve_triangles(mesh, (uint32_t)n) ||
+        (n && current_material(ctx) < 0))
+        return out_of_memory(ctx, caller);
+    if (store_vertex(ctx, caller, position, normal, color, texcoord))
+        return -1;
+    /* Cannot fail now: room and material were acquired above. */
+    assemble(ctx, caller, b->count, NULL);
+    b->count++;
+    return 0;
+}
+
+int rt_store_vertex(struct rt_context *ctx, const char *caller, const double position[3],
+                    const float normal[3], const float color[4], const float texcoord[2])
+{
+    if (scene_mesh_reserve_vertices(&ctx->recording.mesh, 1))
+        return out_of_memory(ctx, caller);
+    return store_vertex(ctx, caller, position, normal, color, texcoord);
+}
+
+int rt_assemble_indexed(struct rt_context *ctx, const char *caller, uint32_t k,
+                        const uint32_t *map)
+{
+    return assemble(ctx, caller, k, map);
 }
 
 void rtBegin(RTenum mode)

@@ -140,6 +140,14 @@ int rt_check_finite_d(struct rt_context *ctx, const char *caller, const double *
 void rt_block_start(struct rt_context *ctx, RTenum mode);
 int rt_record_vertex(struct rt_context *ctx, const char *caller, const double position[3],
                      const float normal[3], const float color[4], const float texcoord[2]);
+/* Indexed drawing: rt_store_vertex stores a vertex without assembling;
+ * rt_assemble_indexed stores the triangles completed by stream position k
+ * of the block, stream position j being mesh vertex map[j].  Same return
+ * convention as rt_record_vertex. */
+int rt_store_vertex(struct rt_context *ctx, const char *caller, const double position[3],
+                    const float normal[3], const float color[4], const float texcoord[2]);
+int rt_assemble_indexed(struct rt_context *ctx, const char *caller, uint32_t k,
+                        const uint32_t *map);
 /* Checks that a vertex would transform to finite values without storing. */
 int rt_vertex_is_finite(const struct rt_context *ctx, const double position[3]);
 
