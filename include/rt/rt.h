@@ -135,6 +135,8 @@ typedef struct rt_context *RTcontext;
 #define RT_EYE_LIGHT 0x8F21 /* headlight, no shadows: "OpenGL-like ray casting" */
 #define RT_WHITTED 0x8F22   /* Phong + hard shadows + reflection/refraction */
 #define RT_MAX_RAY_DEPTH 0x8F23 /* rtRenderParameteri: Whitted recursion depth */
+/* rtRenderParameteri(RT_UPDATE_STRATEGY, s): the strategy of objects
+ * without their own hint (RT_UPDATE_STRATEGY is defined below). */
 
 /* ---- Frame ----------------------------------------------------------- */
 #define RT_VIEWPORT 0x0BA2
@@ -155,9 +157,11 @@ typedef struct rt_context *RTcontext;
 #define RT_STAT_INSTANCE_TESTS 0x8F43
 #define RT_STAT_OBJECT_BUILDS 0x8F44    /* object BVHs built during the call */
 #define RT_STAT_TOPLEVEL_BUILDS 0x8F45  /* 0 when the instance list was unchanged */
+#define RT_STAT_OBJECT_UPDATES 0x8F46   /* stale object structures updated */
 #define RT_STAT_BUILD_TIME 0x8F48       /* float, ms spent in object builds */
 #define RT_STAT_TOPLEVEL_TIME 0x8F49    /* float, ms spent on the top level */
 #define RT_STAT_RENDER_TIME 0x8F4A      /* float, ms for the whole call */
+#define RT_STAT_UPDATE_TIME 0x8F4B      /* float, ms updating changed objects */
 
 /* Per-object queries (rtGetObjectiv / rtGetObjectfv). */
 #define RT_OBJECT_TRIANGLES 0x8F50
@@ -236,8 +240,8 @@ RTAPI RTboolean rtIsObject(RTuint object);
 RTAPI void rtGetObjectiv(RTuint object, RTenum pname, RTint *params);
 RTAPI void rtGetObjectfv(RTuint object, RTenum pname, RTfloat *params);
 RTAPI void rtObjectParameteri(RTuint object, RTenum pname, RTint param);
-RTAPI void rtUpdateVertices(RTuint object, RTint first, RTsizei count, RTint size, RTenum type,
-                            RTsizei stride, const void *positions);
+RTAPI void rtUpdateVertices(RTuint object, RTenum array, RTint first, RTsizei count, RTenum type,
+                            RTsizei stride, const void *data);
 
 /* ---- Primitives (docs/primitives.md) ---------------------------------- */
 RTAPI void rtBegin(RTenum mode);

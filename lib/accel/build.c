@@ -22,6 +22,7 @@ void bvh_build_params_default(struct bvh_build_params *params)
     params->max_leaf_size = BVH_MAX_LEAF_SIZE;
     params->c_trav = BVH_C_TRAV;
     params->c_isect = BVH_C_ISECT;
+    params->leaf_growth = 1.0f;
 }
 
 void accel_build_params_normalize(struct bvh_build_params *out,
@@ -48,6 +49,8 @@ void accel_build_params_normalize(struct bvh_build_params *out,
         out->c_trav = d.c_trav;
     if (!isfinite(out->c_isect) || !(out->c_isect > 0.0f))
         out->c_isect = d.c_isect;
+    if (!isfinite(out->leaf_growth) || !(out->leaf_growth >= 1.0f))
+        out->leaf_growth = d.leaf_growth;
 }
 
 int accel_build_alloc(struct bvh *out, uint32_t prim_count)

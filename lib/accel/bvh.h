@@ -67,6 +67,15 @@ struct bvh_build_params {
     int max_leaf_size; /* 1..BVH_MAX_LEAF_SIZE */
     float c_trav;
     float c_isect;
+    /* Looser leaf criterion for per-frame rebuilds (paper 004 sec. 4.3):
+     * a node at depth d with at most min(max_leaf_size, floor(g^d))
+     * primitives becomes a leaf without any split being evaluated, g =
+     * leaf_growth.  1 (the default) switches it off; values below 1 or
+     * not finite are treated as 1.  Read by the median builder and the
+     * parallel build's median subtrees (build_more.h, which names the
+     * recommended value, BVH_LEAF_GROWTH_REBUILD).  TODO(issue "dynamic
+     * scenes"): the binned and sweep builders do not read it yet. */
+    float leaf_growth;
 };
 
 /* Fills *params with the defaults above (binned SAH, 16 bins). */

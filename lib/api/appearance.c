@@ -238,6 +238,15 @@ void rtRenderParameteri(RTenum pname, RTint param)
     GET_CURRENT_CONTEXT(ctx);
     if (!ctx || rt_check_outside_begin(ctx, "rtRenderParameteri"))
         return;
+    if (pname == RT_UPDATE_STRATEGY) {
+        if (!rt_strategy_is_valid((RTenum)param)) {
+            rt_error(ctx, RT_INVALID_ENUM, "rtRenderParameteri(RT_UPDATE_STRATEGY, 0x%x)",
+                     (RTenum)param);
+            return;
+        }
+        ctx->default_strategy = (RTenum)param;
+        return;
+    }
     if (pname != RT_MAX_RAY_DEPTH) {
         rt_error(ctx, RT_INVALID_ENUM, "rtRenderParameteri(pname=0x%x)", pname);
         return;

@@ -139,6 +139,8 @@ RTcontext rtCreateContext(const char *configuration)
     const char *debug = getenv("TRACELIST_DEBUG");
     ctx->debug_print = debug && *debug && strcmp(debug, "0") != 0;
 
+    ctx->default_strategy = RT_AUTOMATIC;
+    accel_restructure_params_default(&ctx->restructure_params);
     ctx->matrix_mode = RT_MODELVIEW;
     matrix_stack_init(&ctx->modelview, RT_MAX_MODELVIEW_DEPTH);
     matrix_stack_init(&ctx->projection, RT_MAX_PROJECTION_DEPTH);

@@ -92,7 +92,15 @@ struct rt_context {
     /* Vertex arrays (array.c). */
     struct client_array vertex_array, normal_array, color_array, texcoord_array;
 
-    /* Objects and the frame (object.c, instance.c). */
+    /* Objects and the frame (object.c, instance.c).  frame_number counts
+     * rtRenderFrame calls; classification compares change stamps to it. */
+    uint64_t frame_number;
+    unsigned default_strategy; /* rtRenderParameteri(RT_UPDATE_STRATEGY) */
+    uint64_t prepare_count;    /* scene preparations so far (visit stamps) */
+    struct scene_update_config update_config; /* valid during a frame or query */
+    struct accel_restructure_params restructure_params; /* measured on first use */
+    int restructure_measured;
+    uint64_t last_frame_rays; /* rays of the last rtRenderFrame */
     struct scene_objects objects;
     struct scene_frame frame;
 
@@ -150,6 +158,9 @@ int rt_assemble_indexed(struct rt_context *ctx, const char *caller, uint32_t k,
                         const uint32_t *map);
 /* Checks that a vertex would transform to finite values without storing. */
 int rt_vertex_is_finite(const struct rt_context *ctx, const double position[3]);
+
+/* 1 when s is RT_AUTOMATIC or an update strategy (object.c). */
+int rt_strategy_is_valid(RTenum s);
 
 /* The top of the current matrix stack. */
 double *rt_current_matrix(struct rt_context *ctx);

@@ -110,6 +110,12 @@ static enum value_kind state_values(const struct rt_context *ctx, RTenum pname, 
     case RT_STAT_TOPLEVEL_BUILDS:
         v[0] = (double)st->toplevel_builds;
         return VALUE_INT;
+    case RT_STAT_OBJECT_UPDATES:
+        v[0] = (double)st->object_updates;
+        return VALUE_INT;
+    case RT_STAT_UPDATE_TIME:
+        v[0] = st->update_ms;
+        return VALUE_FLOAT;
     case RT_STAT_BUILD_TIME:
         v[0] = st->build_ms;
         return VALUE_FLOAT;

@@ -7,6 +7,7 @@
  * the new one is complete (and keep it if recording ran out of memory).
  */
 #include <limits.h>
+#include <math.h>
 #include <string.h>
 
 #include "api/context.h"
@@ -47,15 +48,6 @@ void rtNewObject(RTuint name)
     rec->material_index = -1;
 }
 
-/* Bounds of the vertices that triangles use (leftover vertices of
- * incomplete primitives do not count). */
-static void compute_bounds(struct scene_mesh *mesh)
-{
-    mesh->bounds = aabb_empty();
-    for (uint32_t i = 0; i < 3 * mesh->tri_count; i++)
-        aabb_grow_point(&mesh->bounds, &mesh->positions[3 * mesh->indices[i]]);
-}
-
 void rtEndObject(void)
 {
     GET_CURRENT_CONTEXT(ctx);
@@ -81,8 +73,8 @@ void rtEndObject(void)
         rec->active = 0;
         return;
     }
-    compute_bounds(&rec->mesh);
-    scene_object_define(&ctx->objects, object, &rec->mesh);
+    scene_mesh_compute_bounds(&rec->mesh);
+    scene_object_define(&ctx->objects, object, &rec->mesh, ctx->frame_number);
     rec->active = 0;
 }
 
@@ -140,7 +132,9 @@ static int object_values(const struct scene_object *object, RTenum pname, double
         v[0] = object->mesh.tri_count;
         return 1;
     case RT_OBJECT_BUILT:
-        v[0] = accel ? 1.0 : 0.0;
+        /* A structure kept stale for a refit does not count until the
+         * update that brings it up to date. */
+        v[0] = accel && accel->serial == object->serial ? 1.0 : 0.0;
         return 1;
     case RT_OBJECT_BVH_NODES:
         v[0] = accel ? accel->bvh.node_count : 0;
@@ -150,6 +144,24 @@ static int object_values(const struct scene_object *object, RTenum pname, double
         return 1;
     case RT_OBJECT_BUILD_TIME:
         v[0] = accel ? accel->build_ms : 0.0;
+        return 1;
+    case RT_OBJECT_CLASS:
+        v[0] = object->current_class;
+        return 1;
+    case RT_UPDATE_STRATEGY:
+        v[0] = object->last_strategy ? object->last_strategy : object->strategy_hint;
+        return 1;
+    case RT_OBJECT_REBUILDS:
+        v[0] = (double)object->rebuilds;
+        return 1;
+    case RT_OBJECT_REFITS:
+        v[0] = (double)object->refits;
+        return 1;
+    case RT_OBJECT_VERTICES:
+        v[0] = object->mesh.vertex_count;
+        return 1;
+    case RT_OBJECT_UPDATE_TIME:
+        v[0] = object->update_ms;
         return 1;
     case RT_OBJECT_BOUNDS:
         for (int k = 0; k < 3; k++) {
@@ -170,9 +182,15 @@ static int pname_is_valid(RTenum pname, int as_float)
     case RT_OBJECT_BUILT:
     case RT_OBJECT_BVH_NODES:
     case RT_OBJECT_BOUNDS:
+    case RT_OBJECT_CLASS:
+    case RT_UPDATE_STRATEGY:
+    case RT_OBJECT_REBUILDS:
+    case RT_OBJECT_REFITS:
+    case RT_OBJECT_VERTICES:
         return 1;
     case RT_OBJECT_SAH_COST:
     case RT_OBJECT_BUILD_TIME:
+    case RT_OBJECT_UPDATE_TIME:
         return as_float;
     default:
         return 0;
@@ -213,4 +231,121 @@ void rtGetObjectfv(RTuint name, RTenum pname, RTfloat *params)
     int n = object_values(object, pname, v);
     for (int i = 0; i < n; i++)
         params[i] = (RTfloat)v[i];
+}
+
+/* 1 when s names an update strategy usable as a hint (RT_AUTOMATIC
+ * included). */
+int rt_strategy_is_valid(RTenum s)
+{
+    switch (s) {
+    case RT_AUTOMATIC:
+    case RT_REFIT:
+    case RT_REBUILD:
+    case RT_REBUILD_MEDIAN:
+    case RT_REBUILD_HEURISTIC:
+    case RT_RESTRUCTURE:
+        return 1;
+    default:
+        return 0;
+    }
+}
+
+void rtObjectParameteri(RTuint name, RTenum pname, RTint param)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_begin(ctx, "rtObjectParameteri"))
+        return;
+    RTenum value = (RTenum)param;
+    int valid_value;
+    if (pname == RT_OBJECT_CLASS)
+        valid_value = value == RT_AUTOMATIC || value == RT_STATIC || value == RT_AFFINE ||
+                      value == RT_UNSTRUCTURED;
+    else if (pname == RT_UPDATE_STRATEGY)
+        valid_value = rt_strategy_is_valid(value);
+    else {
+        rt_error(ctx, RT_INVALID_ENUM, "rtObjectParameteri(pname=0x%x)", pname);
+        return;
+    }
+    if (!valid_value) {
+        rt_error(ctx, RT_INVALID_ENUM, "rtObjectParameteri(pname=0x%x, param=0x%x)", pname,
+                 value);
+        return;
+    }
+    struct scene_object *object = scene_objects_lookup(&ctx->objects, name);
+    if (!object || !object->defined) {
+        rt_error(ctx, RT_INVALID_VALUE, "rtObjectParameteri(object=%u): not an object", name);
+        return;
+    }
+    if (pname == RT_OBJECT_CLASS)
+        object->class_hint = value;
+    else
+        object->strategy_hint = value;
+}
+
+/* Reads component c of element i of a float or double array. */
+static double read_component(const void *data, RTenum type, size_t stride, size_t i, int c)
+{
+    const unsigned char *p = (const unsigned char *)data + i * stride;
+    if (type == RT_FLOAT) {
+        float f;
+        memcpy(&f, p + c * sizeof(float), sizeof(f));
+        return f;
+    }
+    double d;
+    memcpy(&d, p + c * sizeof(double), sizeof(d));
+    return d;
+}
+
+void rtUpdateVertices(RTuint name, RTenum array, RTint first, RTsizei count, RTenum type,
+                      RTsizei stride, const void *data)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_object(ctx, "rtUpdateVertices"))
+        return;
+    if (array != RT_VERTEX_ARRAY && array != RT_NORMAL_ARRAY) {
+        rt_error(ctx, RT_INVALID_ENUM, "rtUpdateVertices(array=0x%x)", array);
+        return;
+    }
+    if (type != RT_FLOAT && type != RT_DOUBLE) {
+        rt_error(ctx, RT_INVALID_ENUM, "rtUpdateVertices(type=0x%x)", type);
+        return;
+    }
+    struct scene_object *object = scene_objects_lookup(&ctx->objects, name);
+    if (!object || !object->defined) {
+        rt_error(ctx, RT_INVALID_VALUE, "rtUpdateVertices(object=%u): not an object", name);
+        return;
+    }
+    struct scene_mesh *mesh = &object->mesh;
+    if (first < 0 || count < 0 || stride < 0 || (count > 0 && !data) ||
+        (uint64_t)first + (uint64_t)count > mesh->vertex_count) {
+        rt_error(ctx, RT_INVALID_VALUE,
+                 "rtUpdateVertices(first=%d, count=%d, stride=%d, data=%p): object %u has %u "
+                 "vertices",
+                 first, count, stride, data, name, mesh->vertex_count);
+        return;
+    }
+    size_t element = 3 * (type == RT_FLOAT ? sizeof(float) : sizeof(double));
+    size_t step = stride ? (size_t)stride : element;
+    /* Validate the whole batch first: a rejected call changes nothing. */
+    for (RTsizei i = 0; i < count; i++)
+        for (int c = 0; c < 3; c++) {
+            double v = read_component(data, type, step, (size_t)i, c);
+            if (!isfinite((float)v)) {
+                rt_error(ctx, RT_INVALID_VALUE,
+                         "rtUpdateVertices: element %d is not finite as a float", i);
+                return;
+            }
+        }
+    if (count == 0)
+        return; /* nothing changes, so nothing is stale (Mesa compares first) */
+    float *dst = array == RT_VERTEX_ARRAY ? mesh->positions : mesh->normals;
+    for (RTsizei i = 0; i < count; i++)
+        for (int c = 0; c < 3; c++)
+            dst[3 * ((size_t)first + (size_t)i) + c] =
+                (float)read_component(data, type, step, (size_t)i, c);
+    if (array == RT_NORMAL_ARRAY) {
+        mesh->has_normals = 1;
+        return; /* shading data only: nothing to update for traversal */
+    }
+    scene_object_touch(object, ctx->frame_number);
 }

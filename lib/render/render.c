@@ -49,14 +49,14 @@ static int acquire_object(void *user, void *object, struct trace_object_view *vi
     /* The common case, an object already built, takes no lock and no
      * clock reading. */
     const struct scene_accel *accel = scene_object_peek(object);
-    if (accel) {
+    if (accel && accel->serial == ((const struct scene_object *)object)->serial) {
         view->bvh = &accel->bvh;
         view->tri = accel->tri;
         return 1;
     }
     int built_now;
     double start = rt_now_ms();
-    accel = scene_object_acquire(object, sh->job->build_params, &built_now);
+    accel = scene_object_acquire(object, sh->job->update, &built_now);
     if (!accel) {
         __atomic_store_n(&sh->failed, 1, __ATOMIC_RELAXED);
         return 0;

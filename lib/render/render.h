@@ -19,6 +19,7 @@
 #include "accel/bvh.h"
 #include "base/pool.h"
 #include "scene/frame.h"
+#include "scene/update.h"
 #include "trace/scene_traverse.h"
 
 #define RENDER_MAX_LIGHTS 8
@@ -54,6 +55,8 @@ struct render_stats {
     uint64_t instance_tests;
     uint64_t object_builds;
     uint64_t toplevel_builds;
+    uint64_t object_updates;
+    double update_ms;
     double build_ms;
     double toplevel_ms;
     double render_ms;
@@ -63,7 +66,7 @@ struct render_stats {
 struct render_job {
     const struct render_state *state;
     const struct scene_frame *frame; /* prepared: top level valid */
-    const struct bvh_build_params *build_params;
+    const struct scene_update_config *update; /* builds and updates on demand */
     struct rt_pool *pool;
     int threads;
 };

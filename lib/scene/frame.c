@@ -115,6 +115,11 @@ static struct aabb transformed_box(const struct aabb *box, const double m[16])
     return out;
 }
 
+struct aabb scene_instance_box(const struct scene_instance *instance)
+{
+    return transformed_box(&instance->object->mesh.bounds, instance->object_to_world);
+}
+
 static int box_is_finite(const struct aabb *b)
 {
     for (int k = 0; k < 3; k++)
@@ -123,15 +128,17 @@ static int box_is_finite(const struct aabb *b)
     return 1;
 }
 
-/* Lists are equal when they name the same object definitions under
- * bit-identical matrices in the same order. */
+/* Lists are equal when they name the same objects under bit-identical
+ * matrices in the same order.  Changed geometry is caught separately by
+ * the serial check in scene_frame_prepare, so that a list issued before an
+ * object changed does not look new at every later preparation. */
 static int lists_equal(const struct scene_instance_list *a, const struct scene_instance_list *b)
 {
     if (a->count != b->count)
         return 0;
     for (uint32_t i = 0; i < a->count; i++) {
         const struct scene_instance *x = &a->items[i], *y = &b->items[i];
-        if (x->object != y->object || x->object_serial != y->object_serial ||
+        if (x->object != y->object ||
             memcmp(x->object_to_world, y->object_to_world, sizeof(x->object_to_world)) != 0)
             return 0;
     }
@@ -181,11 +188,26 @@ fail:
     return -1;
 }
 
+/* Stamps the objects of instances that differ from the instance at the
+ * same position of the old list. */
+static void mark_moved(const struct scene_instance_list *old, const struct scene_instance_list *now,
+                       uint64_t frame_number)
+{
+    for (uint32_t i = 0; i < now->count; i++) {
+        const struct scene_instance *x = &now->items[i];
+        if (i >= old->count || old->items[i].object != x->object ||
+            memcmp(old->items[i].object_to_world, x->object_to_world,
+                   sizeof(x->object_to_world)) != 0)
+            x->object->moved_frame = frame_number;
+    }
+}
+
 int scene_frame_prepare(struct scene_frame *frame, const struct bvh_build_params *params,
-                        int *toplevel_built)
+                        uint64_t frame_number, int *toplevel_built)
 {
     *toplevel_built = 0;
     if (frame->open && !lists_equal(&frame->pending, &frame->committed)) {
+        mark_moved(&frame->committed, &frame->pending, frame_number);
         if (list_reserve(&frame->committed, frame->pending.count))
             return -1;
         memcpy(frame->committed.items, frame->pending.items,

@@ -63,15 +63,22 @@ void scene_frame_begin(struct scene_frame *frame);
 /* Ends the frame: the next instance starts a new list (rtRenderFrame). */
 void scene_frame_end(struct scene_frame *frame);
 
+/* The world-space box of an instance (its object's box under its
+ * matrix, rounded outwards). */
+struct aabb scene_instance_box(const struct scene_instance *instance);
+
 /* Drops every instance of the object from both lists (rtDeleteObjects). */
 void scene_frame_forget_object(struct scene_frame *frame, const struct scene_object *object);
 
 /*
- * Makes the committed list current and the top level valid.  Returns 0
+ * Makes the committed list current and the top level valid.  When the
+ * list changes, the objects of instances whose matrix differs from the
+ * instance at the same position before get moved_frame = frame_number
+ * (the affine class of paper 004 sec. 3).  Returns 0
  * with *toplevel_built = 1 if a top-level build happened, 0 if nothing
  * changed; -1 on allocation failure (the previous committed scene stays).
  */
 int scene_frame_prepare(struct scene_frame *frame, const struct bvh_build_params *params,
-                        int *toplevel_built);
+                        uint64_t frame_number, int *toplevel_built);
 
 #endif

@@ -109,3 +109,10 @@ int scene_mesh_intern_material(struct scene_mesh *mesh, const struct scene_mater
     mesh->materials[mesh->material_count] = *m;
     return (int)mesh->material_count++;
 }
+
+void scene_mesh_compute_bounds(struct scene_mesh *mesh)
+{
+    mesh->bounds = aabb_empty();
+    for (uint32_t i = 0; i < 3 * mesh->tri_count; i++)
+        aabb_grow_point(&mesh->bounds, &mesh->positions[3 * mesh->indices[i]]);
+}

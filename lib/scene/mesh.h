@@ -66,6 +66,10 @@ void scene_mesh_release(struct scene_mesh *mesh);
 int scene_mesh_reserve_vertices(struct scene_mesh *mesh, uint32_t extra);
 int scene_mesh_reserve_triangles(struct scene_mesh *mesh, uint32_t extra);
 
+/* Sets bounds to the box of the vertices that triangles use (leftover
+ * vertices of incomplete primitives do not count). */
+void scene_mesh_compute_bounds(struct scene_mesh *mesh);
+
 /* Returns the index of a material equal to *m, appending it if needed; -1
  * on allocation failure or when 65535 distinct materials exist. */
 int scene_mesh_intern_material(struct scene_mesh *mesh, const struct scene_material *m);

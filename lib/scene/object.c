@@ -3,10 +3,13 @@
  */
 #include "scene/object.h"
 
+#include <rt/rt.h>
+
 #include <string.h>
 
 #include "base/alloc.h"
 #include "base/timer.h"
+#include "scene/update.h"
 
 #define OBJECT_TABLE_MIN_CAPACITY 64u
 
@@ -16,19 +19,21 @@ void scene_objects_init(struct scene_objects *table)
     table->next_name = 1;
 }
 
-static void accel_free(struct scene_accel *accel)
+void scene_accel_release(struct scene_accel *accel)
 {
     if (!accel)
         return;
     bvh_release(&accel->bvh);
     rt_free(accel->tri);
+    if (accel->restructure_state_ready)
+        accel_restructure_state_release(&accel->restructure_state);
     rt_free(accel);
 }
 
 static void object_free(struct scene_object *object)
 {
     scene_mesh_release(&object->mesh);
-    accel_free(object->accel);
+    scene_accel_release(object->accel);
     pthread_mutex_destroy(&object->build_lock);
     rt_free(object);
 }
@@ -99,6 +104,9 @@ static struct scene_object *object_new(uint32_t name)
         return NULL;
     o->name = name;
     o->mesh.bounds = aabb_empty();
+    o->class_hint = RT_AUTOMATIC;
+    o->strategy_hint = RT_AUTOMATIC;
+    o->current_class = RT_STATIC;
     if (pthread_mutex_init(&o->build_lock, NULL) != 0) {
         rt_free(o);
         return NULL;
@@ -180,19 +188,37 @@ void scene_objects_remove(struct scene_objects *table, uint32_t name)
     }
 }
 
-void scene_object_define(struct scene_objects *table, struct scene_object *object,
-                         struct scene_mesh *mesh)
+static int same_topology(const struct scene_mesh *a, const struct scene_mesh *b)
 {
+    return a->vertex_count == b->vertex_count && a->tri_count == b->tri_count &&
+           memcmp(a->indices, b->indices, 3 * sizeof(uint32_t) * a->tri_count) == 0;
+}
+
+void scene_object_define(struct scene_objects *table, struct scene_object *object,
+                         struct scene_mesh *mesh, uint64_t frame)
+{
+    int keep = object->defined && object->accel && same_topology(&object->mesh, mesh);
     scene_mesh_release(&object->mesh);
     object->mesh = *mesh;
     memset(mesh, 0, sizeof(*mesh));
     mesh->bounds = aabb_empty();
-    accel_free(object->accel);
-    object->accel = NULL;
+    if (!keep) {
+        scene_accel_release(object->accel);
+        object->accel = NULL;
+        object->topology_serial++;
+    }
     if (!object->defined)
         table->defined++;
     object->defined = 1;
     object->serial++;
+    object->changed_frame = frame;
+}
+
+void scene_object_touch(struct scene_object *object, uint64_t frame)
+{
+    scene_mesh_compute_bounds(&object->mesh);
+    object->serial++;
+    object->changed_frame = frame;
 }
 
 const struct scene_accel *scene_object_peek(const struct scene_object *object)
@@ -200,51 +226,24 @@ const struct scene_accel *scene_object_peek(const struct scene_object *object)
     return __atomic_load_n(&object->accel, __ATOMIC_ACQUIRE);
 }
 
-static struct scene_accel *build_accel(const struct scene_mesh *mesh,
-                                       const struct bvh_build_params *params)
-{
-    double start = rt_now_ms();
-    struct scene_accel *accel = rt_calloc(1, sizeof(*accel));
-    struct aabb *boxes = rt_calloc(mesh->tri_count, sizeof(*boxes));
-    if (!accel || !boxes)
-        goto fail;
-    for (uint32_t j = 0; j < mesh->tri_count; j++) {
-        boxes[j] = aabb_empty();
-        for (int k = 0; k < 3; k++)
-            aabb_grow_point(&boxes[j], &mesh->positions[3 * mesh->indices[3 * j + k]]);
-    }
-    if (accel_build(&accel->bvh, boxes, mesh->tri_count, params))
-        goto fail;
-    accel->tri = accel_gather_triangles(&accel->bvh, mesh->positions, mesh->indices);
-    if (!accel->tri && mesh->tri_count)
-        goto fail;
-    rt_free(boxes);
-    accel->sah_cost = accel_sah_cost(&accel->bvh, params->c_trav, params->c_isect);
-    accel->build_ms = rt_now_ms() - start;
-    return accel;
-fail:
-    rt_free(boxes);
-    accel_free(accel);
-    return NULL;
-}
-
 const struct scene_accel *scene_object_acquire(struct scene_object *object,
-                                               const struct bvh_build_params *params,
+                                               const struct scene_update_config *config,
                                                int *built_now)
 {
     *built_now = 0;
     struct scene_accel *accel = __atomic_load_n(&object->accel, __ATOMIC_ACQUIRE);
-    if (accel)
+    /* object->serial changes only on the API thread between frames. */
+    if (accel && accel->serial == object->serial)
         return accel;
     pthread_mutex_lock(&object->build_lock);
-    accel = object->accel;
-    if (!accel) {
-        accel = build_accel(&object->mesh, params);
-        if (accel) {
-            __atomic_store_n(&object->accel, accel, __ATOMIC_RELEASE);
-            *built_now = 1;
-        }
+    const struct scene_accel *current = object->accel;
+    if (!current || current->serial != object->serial) {
+        /* Inside a frame: no pool (it is running this very task). */
+        struct scene_update_config serial_config = *config;
+        serial_config.pool = NULL;
+        current = scene_object_update(object, &serial_config);
+        *built_now = current != NULL;
     }
     pthread_mutex_unlock(&object->build_lock);
-    return accel;
+    return current;
 }

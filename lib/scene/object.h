@@ -18,20 +18,47 @@
 #include <stdint.h>
 
 #include "accel/bvh.h"
+#include "accel/restructure.h"
 #include "scene/mesh.h"
 
 struct scene_accel {
     struct bvh bvh;
     float *tri; /* leaf-ordered vertices, accel_gather_triangles */
-    double sah_cost;
-    double build_ms;
+    uint32_t serial;   /* the object's serial this structure reflects */
+    uint32_t topology; /* the object's topology serial it was built for */
+    double sah_cost;       /* of the tree as it is now */
+    double built_sah_cost; /* right after the last full build (rebuild heuristic) */
+    double build_ms;       /* the last full build */
+    /* Per-node life times and scratch of selective restructuring (paper
+     * 001), initialised by its first use. */
+    struct accel_restructure_state restructure_state;
+    int restructure_state_ready;
 };
 
 struct scene_object {
     uint32_t name;
     int defined;            /* has a committed definition (rtIsObject) */
     struct scene_mesh mesh; /* the committed definition */
-    uint32_t serial;        /* bumped by every rtEndObject of this name */
+    uint32_t serial;          /* bumped by every change of the geometry */
+    uint32_t topology_serial; /* bumped when the triangles' connectivity changes */
+    uint64_t changed_frame;   /* frame of the last geometry change */
+    uint64_t moved_frame;     /* frame in which an instance of it last moved */
+    uint64_t visit_stamp;     /* scene preparation that last classified it */
+    /* Rays expected to reach it per frame: the last frame's rays times the
+     * SAH probability of hitting its largest instance box (MacDonald and
+     * Booth 1990); paper 001 sec. 4.1.1 scales its benefits by this. */
+    double expected_rays;
+
+    /* Hints (rtObjectParameteri); RT_AUTOMATIC when none was given. */
+    unsigned class_hint;
+    unsigned strategy_hint;
+    /* What the runtime did, for rtGetObject* (paper 004 sec. 3 classes,
+     * papers 000/001 strategies). */
+    unsigned current_class;
+    unsigned last_strategy;
+    double update_ms;
+    uint64_t rebuilds;
+    uint64_t refits;
     pthread_mutex_t build_lock;
     struct scene_accel *accel; /* NULL until built; read with acquire loads */
 };
@@ -64,19 +91,33 @@ int scene_objects_generate(struct scene_objects *table, uint32_t n, uint32_t *na
 void scene_objects_remove(struct scene_objects *table, uint32_t name);
 
 /* Replaces the object's definition by *mesh (ownership moves; *mesh is
- * zeroed) and drops the old acceleration structure. */
+ * zeroed) in frame `frame`.  When the new definition has the same
+ * connectivity (same vertex count and triangle indices) the acceleration
+ * structure is kept, stale, so an update strategy can refit it; otherwise
+ * it is dropped. */
 void scene_object_define(struct scene_objects *table, struct scene_object *object,
-                         struct scene_mesh *mesh);
+                         struct scene_mesh *mesh, uint64_t frame);
+
+/* Marks the geometry changed in place (rtUpdateVertices) in `frame`:
+ * recomputes the bounds, keeps the topology. */
+void scene_object_touch(struct scene_object *object, uint64_t frame);
+
+struct scene_update_config;
 
 /*
  * The object's acceleration structure, built now if this is the first
- * request (params select the builder).  Thread-safe.  Returns NULL on
- * allocation failure (the next request tries again).  *built_now is set
- * to 1 when this call performed the build.
+ * request or brought up to date if the geometry changed since (config
+ * selects builder and strategy; see update.h).  Thread-safe: the work is
+ * done under the object's lock, by the first thread that needs it.
+ * Returns NULL on allocation failure (the next request tries again).
+ * *built_now is set to 1 when this call built or updated.
  */
 const struct scene_accel *scene_object_acquire(struct scene_object *object,
-                                               const struct bvh_build_params *params,
+                                               const struct scene_update_config *config,
                                                int *built_now);
+
+/* Frees a structure and everything it owns; NULL is ignored. */
+void scene_accel_release(struct scene_accel *accel);
 
 /* The acceleration structure if already built, else NULL (no build). */
 const struct scene_accel *scene_object_peek(const struct scene_object *object);

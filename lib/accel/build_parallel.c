@@ -1,0 +1,1231 @@
+/*
+ * build_parallel.c - the two-stage parallel build (build_parallel.h;
+ * paper 000 sec. 5).
+ *
+ * Setup: all threads convert the input boxes into refs (struct build_ref,
+ * build_more.h) and reduce the root's box and centroid bounds.
+ *
+ * Stage 1 makes the top of the tree and a list of subtrees, each a
+ * contiguous range of refs, until every subtree has at most subtree_max
+ * primitives (PARALLEL_SUBTREES below):
+ *   binning: level by level, all threads fill binned-SAH histograms for
+ *     chunks of every open node, one thread merges them and picks each
+ *     node's split, then all threads partition their chunks into the two
+ *     children's ranges, at offsets known from the chunks' own bin counts
+ *     ("PARALLEL BINNING");
+ *   grid: every thread bins its 1/T of the centroids into its own grid,
+ *     one thread merges the counts, builds BIH-like nodes over the grid
+ *     (spatial median in cell units) down to blocks of cells that become
+ *     subtrees, and all threads scatter their refs into the blocks'
+ *     ranges ("GRID-BASED SPLITTING").
+ * Both partitions are stable (each side keeps the input order), and
+ * bounds are merged with min/max, which are exact, so the result does not
+ * depend on how the work was shared out: the tree is the same for every
+ * thread count (for finite input; with NaN a min/max depends on the order
+ * of its operands, and with it on the chunking).
+ *
+ * Stage 2: subtrees sorted by descending size are handed out by an atomic
+ * counter; each is built by a serial builder, median subtrees directly
+ * into a preassigned range of 2m - 1 nodes of a scratch array (a subtree
+ * of m primitives needs at most that many), SAH subtrees by accel_build
+ * on a copy of their boxes (the SAH builders of bvh.h allocate their own
+ * arrays; see the note at build_sah_subtree).
+ *
+ * Stage 3: the subtrees used fewer nodes than reserved, so they are
+ * compacted, in parallel, into the final array: the top nodes first
+ * (indices 0 .. top_count - 1, each subtree's root in the slot its parent
+ * reserved for it), then each subtree's other nodes, in primitive order.
+ * Finally the top nodes' boxes are computed bottom-up from their children
+ * (stage 1 of the grid variant never computes boxes).
+ */
+#include "accel/build_parallel.h"
+
+#include <math.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "accel/build_internal.h"
+#include "accel/vec4.h"
+#include "base/alloc.h"
+
+/*
+ * Subtree size target of stage 1: max(PARALLEL_MIN_SUBTREE, n /
+ * PARALLEL_SUBTREES).  Paper 000 sec. 5 does not give its numbers.  64
+ * subtrees keep 8 threads busy with the largest-first hand-out even when
+ * the SAH splits unevenly, and stay a fixed number, so the tree does not
+ * depend on the thread count.  Below PARALLEL_MIN_SUBTREE primitives a
+ * subtree builds in well under a millisecond, less than waking the pool
+ * for another level costs.
+ */
+#define PARALLEL_SUBTREES 64u
+#define PARALLEL_MIN_SUBTREE 2048u
+
+/* Work items per thread and level of stage 1, and their least size:
+ * several per thread even out uneven nodes; below the minimum the atomic
+ * counter and the per-chunk histograms cost more than they balance. */
+#define PARALLEL_CHUNKS_PER_THREAD 4u
+#define PARALLEL_MIN_CHUNK 8192u
+
+/*
+ * Grid of the grid partition: about n / GRID_PRIMS_PER_CELL cells, at most
+ * GRID_MAX_CELLS (32^3) and GRID_MAX_RES per axis, each axis a power of
+ * two so that the BIH-like nodes split blocks exactly in half.  The paper
+ * gives no resolution; 16 primitives per cell puts a few hundred cells in
+ * each subtree, enough to balance the nodes over the grid, while the T
+ * per-thread grids stay small (T * 128 KB at most).
+ */
+#define GRID_PRIMS_PER_CELL 16u
+#define GRID_MAX_LEVELS 15 /* log2(GRID_MAX_CELLS) */
+#define GRID_MAX_CELLS (1u << GRID_MAX_LEVELS)
+#define GRID_MAX_RES 1024u
+
+/* ------------------------------------------------------------ state */
+
+/* One subtree of stage 2. */
+struct subtree {
+    uint32_t begin; /* its refs and leaf slots: [begin, end) */
+    uint32_t end;
+    uint32_t slot;  /* its root's index among the top nodes */
+    uint32_t depth; /* depth of its root */
+    struct build_ref *refs; /* the buffer holding refs[begin, end) */
+    /* Set by stage 2: */
+    const struct bvh_node *nodes; /* its nodes, root at [0], indices relative */
+    struct bvh sah;               /* SAH subtree's own arrays, to free */
+    struct bvh_node *owned;       /* median fallback's own array, to free */
+    uint32_t node_count;
+    uint32_t max_depth; /* absolute */
+    /* Set by stage 3: */
+    uint32_t final_base; /* index of nodes[1] in the final array */
+};
+
+/* A node of stage 1's binning that is still to be split. */
+struct open_node {
+    uint32_t begin;
+    uint32_t end;
+    uint32_t slot;
+    uint32_t depth;
+    float clo[4]; /* centroid bounds, lane 3 unused */
+    float chi[4];
+    struct aabb box;
+    /* The binning of this level (Wald 2007's k1 mapping, as in
+     * build_binned_sah.c): bin = (c - origin) * scale clamped to
+     * [0, bins - 1]; scale 0 on an axis whose centroids do not spread. */
+    float origin[3];
+    float scale[3];
+    int binnable[3];
+    /* The split picked (axis < 0: none). */
+    int axis;
+    int plane;
+    uint32_t left_count;
+    struct aabb left_box;
+    struct aabb right_box;
+    uint32_t first_chunk;
+    uint32_t chunk_count;
+};
+
+/* A piece of an open node's range handled by one thread at a time. */
+struct chunk {
+    uint32_t node; /* index into the level's open nodes */
+    uint32_t begin;
+    uint32_t end;
+    uint32_t left_dst; /* partition: where its left and right refs go */
+    uint32_t right_dst;
+    float lclo[4]; /* partition: its children's centroid bounds */
+    float lchi[4];
+    float rclo[4];
+    float rchi[4];
+};
+
+struct pbuild {
+    const struct aabb *boxes;
+    uint32_t n;
+    struct bvh_build_params p;
+    struct bvh_parallel_params pp;
+    struct rt_pool *pool;
+    uint32_t threads;
+    uint32_t subtree_max;
+
+    struct build_ref *refs[2];
+
+    /* Top nodes of stage 1: count 0 = inner (first = child pair), count
+     * 1 = the root slot of a subtree. */
+    struct bvh_node *top;
+    uint32_t top_count;
+    uint32_t top_cap;
+
+    struct subtree *subtrees;
+    uint32_t subtree_count;
+    uint32_t subtree_cap;
+
+    /* Work shared by the current phase. */
+    uint32_t next;   /* atomic work counter */
+    int failed;      /* atomic: an allocation failed in stage 2 */
+    uint32_t chunk_size;
+    uint32_t chunk_count;
+
+    /* setup */
+    struct chunk *chunks;
+    struct aabb *chunk_box;
+
+    /* binning */
+    int bins;
+    struct open_node *open;
+    uint32_t open_count;
+    int src; /* buffer the open nodes' refs are in */
+    float (*hist_box)[8];  /* per chunk: 3 * bins boxes (min xyz -, max xyz -) */
+    uint32_t *hist_count;  /* per chunk: 3 * bins counts */
+
+    /* grid */
+    uint32_t res[3];
+    float grid_origin[3];
+    float grid_scale[3];
+    uint32_t *cell_of;  /* per ref */
+    uint32_t *counts;   /* threads x cells: counts, then scatter offsets */
+
+    /* stage 2 and 3 */
+    uint32_t *prim_index; /* the output's */
+    uint32_t *order;      /* subtrees by descending size */
+    struct aabb *sah_boxes;
+    struct bvh_node *scratch;
+    struct bvh_node *final_nodes;
+};
+
+static uint32_t chunk_of(struct pbuild *b)
+{
+    return __atomic_fetch_add(&b->next, 1, __ATOMIC_RELAXED);
+}
+
+/* Room for `need` (>= 1) elements of `size` bytes in array, whose
+ * capacity is *cap: returns the array, moved if it had to grow (by
+ * doubling), or NULL on allocation failure with the old array intact. */
+static void *reserve(void *array, uint32_t *cap, uint32_t need, size_t size)
+{
+    if (need <= *cap)
+        return array;
+    uint32_t c = *cap ? *cap : 16;
+    while (c < need)
+        c = c > UINT32_MAX / 2 ? UINT32_MAX : 2 * c;
+    void *p = rt_realloc_array(array, c, size);
+    if (p)
+        *cap = c;
+    return p;
+}
+
+/* Appends a top node pair, returns the index of its first node or
+ * UINT32_MAX on allocation failure. */
+static uint32_t top_pair(struct pbuild *b)
+{
+    struct bvh_node *top = reserve(b->top, &b->top_cap, b->top_count + 2, sizeof(*top));
+    if (!top)
+        return UINT32_MAX;
+    b->top = top;
+    uint32_t first = b->top_count;
+    memset(&b->top[first], 0, 2 * sizeof(*b->top));
+    b->top[first].count = 1;
+    b->top[first + 1].count = 1;
+    b->top_count += 2;
+    return first;
+}
+
+static int add_subtree(struct pbuild *b, uint32_t begin, uint32_t end, uint32_t slot,
+                       uint32_t depth, int buffer)
+{
+    struct subtree *all =
+        reserve(b->subtrees, &b->subtree_cap, b->subtree_count + 1, sizeof(*all));
+    if (!all)
+        return -1;
+    b->subtrees = all;
+    struct subtree *s = &b->subtrees[b->subtree_count++];
+    memset(s, 0, sizeof(*s));
+    s->begin = begin;
+    s->end = end;
+    s->slot = slot;
+    s->depth = depth;
+    s->refs = b->refs[buffer];
+    return 0;
+}
+
+/* Splits [0, total) into chunks of b->chunk_size for the setup phase. */
+static void plan_flat_chunks(struct pbuild *b, uint32_t total)
+{
+    uint32_t size = (total + b->threads * PARALLEL_CHUNKS_PER_THREAD - 1) /
+                    (b->threads * PARALLEL_CHUNKS_PER_THREAD);
+    b->chunk_size = size > PARALLEL_MIN_CHUNK ? size : PARALLEL_MIN_CHUNK;
+    b->chunk_count = (uint32_t)(((uint64_t)total + b->chunk_size - 1) / b->chunk_size);
+}
+
+static void run(struct pbuild *b, rt_task_fn fn)
+{
+    b->next = 0;
+    rt_pool_run(b->pool, fn, b);
+}
+
+static void box_grow_ref(vec4 *lo, vec4 *hi, vec4 *clo, vec4 *chi, const struct build_ref *r)
+{
+    vec4 l = vec4_xyz0(vec4_load(r->lo));
+    vec4 h = vec4_load(r->hi);
+    vec4 c = vec4_add(l, h);
+    *lo = vec4_min(*lo, l);
+    *hi = vec4_max(*hi, h);
+    *clo = vec4_min(*clo, c);
+    *chi = vec4_max(*chi, c);
+}
+
+/* ------------------------------------------------------------ setup */
+
+/* Paper 000 sec. 5, "Setup": each thread prepares a share of the refs
+ * and reduces their bounds; chunk_box[2c] = box, [2c + 1] = centroid
+ * bounds of chunk c. */
+static void setup_task(void *arg, int worker)
+{
+    (void)worker;
+    struct pbuild *b = arg;
+    uint32_t c;
+    while ((c = chunk_of(b)) < b->chunk_count) {
+        uint32_t begin = c * b->chunk_size;
+        uint32_t end = b->n - begin < b->chunk_size ? b->n : begin + b->chunk_size;
+        vec4 lo = vec4_splat(INFINITY);
+        vec4 hi = vec4_splat(-INFINITY);
+        vec4 clo = lo;
+        vec4 chi = hi;
+        for (uint32_t i = begin; i < end; i++) {
+            struct build_ref *r = &b->refs[0][i];
+            build_ref_set(r, &b->boxes[i], i);
+            box_grow_ref(&lo, &hi, &clo, &chi, r);
+        }
+        float l[4], h[4], cl[4], ch[4];
+        vec4_store(l, lo);
+        vec4_store(h, hi);
+        vec4_store(cl, clo);
+        vec4_store(ch, chi);
+        for (int k = 0; k < 3; k++) {
+            b->chunk_box[2 * c].min[k] = l[k];
+            b->chunk_box[2 * c].max[k] = h[k];
+            b->chunk_box[2 * c + 1].min[k] = cl[k];
+            b->chunk_box[2 * c + 1].max[k] = ch[k];
+        }
+    }
+}
+
+/* ------------------------------------------------------------ binning */
+
+static inline int bin_of(const struct open_node *o, float c, int k, int last)
+{
+    /* One rounding per operation, the same in the histogram and the
+     * partition, so both classify every ref alike (C99 5.1.2.3: every
+     * assignment to a float rounds). */
+    float d = c - o->origin[k];
+    float f = d * o->scale[k];
+    f = f > 0.0f ? f : 0.0f;
+    f = f < (float)last ? f : (float)last;
+    return (int)f;
+}
+
+static void init_binning(struct open_node *o, int bins)
+{
+    for (int k = 0; k < 3; k++) {
+        float extent = o->chi[k] - o->clo[k];
+        float s = (float)bins / extent;
+        o->binnable[k] = extent > 0.0f && s > 0.0f && isfinite(s);
+        o->origin[k] = o->clo[k];
+        o->scale[k] = o->binnable[k] ? s : 0.0f;
+    }
+}
+
+/* Phase A: each chunk's histogram, for the three axes (Wald 2007; paper
+ * 000 sec. 5: "each of the T threads computes a bin histogram ... for
+ * one T-th of the triangles"). */
+static void bin_task(void *arg, int worker)
+{
+    (void)worker;
+    struct pbuild *b = arg;
+    const int bins = b->bins;
+    const struct build_ref *refs = b->refs[b->src];
+    uint32_t c;
+    while ((c = chunk_of(b)) < b->chunk_count) {
+        const struct chunk *ch = &b->chunks[c];
+        const struct open_node *o = &b->open[ch->node];
+        float(*box)[8] = &b->hist_box[(size_t)c * 3 * bins];
+        uint32_t *count = &b->hist_count[(size_t)c * 3 * bins];
+        for (int i = 0; i < 3 * bins; i++) {
+            vec4_store(&box[i][0], vec4_splat(INFINITY));
+            vec4_store(&box[i][4], vec4_splat(-INFINITY));
+            count[i] = 0;
+        }
+        for (uint32_t i = ch->begin; i < ch->end; i++) {
+            const struct build_ref *r = &refs[i];
+            vec4 lo = vec4_xyz0(vec4_load(r->lo));
+            vec4 hi = vec4_load(r->hi);
+            for (int k = 0; k < 3; k++) {
+                int bin = k * bins + bin_of(o, r->lo[k] + r->hi[k], k, bins - 1);
+                vec4_store(&box[bin][0], vec4_min(vec4_load(&box[bin][0]), lo));
+                vec4_store(&box[bin][4], vec4_max(vec4_load(&box[bin][4]), hi));
+                count[bin]++;
+            }
+        }
+    }
+}
+
+static void store_box(struct aabb *box, vec4 lo, vec4 hi)
+{
+    float l[4];
+    float h[4];
+    vec4_store(l, lo);
+    vec4_store(h, hi);
+    for (int k = 0; k < 3; k++) {
+        box->min[k] = l[k];
+        box->max[k] = h[k];
+    }
+}
+
+/*
+ * Merges the node's chunk histograms and picks the best binned SAH plane
+ * (Wald 2007; the sweeps of build_binned_sah.c's find_best_split: ties to
+ * the lower axis and plane).  Sets o->axis (-1: no plane splits the node
+ * or the SAH prefers a leaf), plane, left_count and the children's boxes.
+ */
+static void pick_split(struct pbuild *b, struct open_node *o)
+{
+    const int bins = b->bins;
+    float box[3 * BVH_MAX_BINS][8];
+    uint32_t count[3 * BVH_MAX_BINS];
+    for (int i = 0; i < 3 * bins; i++) {
+        vec4 lo = vec4_splat(INFINITY);
+        vec4 hi = vec4_splat(-INFINITY);
+        uint32_t cnt = 0;
+        for (uint32_t c = o->first_chunk; c < o->first_chunk + o->chunk_count; c++) {
+            const float *cb = b->hist_box[(size_t)c * 3 * bins + i];
+            lo = vec4_min(lo, vec4_load(&cb[0]));
+            hi = vec4_max(hi, vec4_load(&cb[4]));
+            cnt += b->hist_count[(size_t)c * 3 * bins + i];
+        }
+        vec4_store(&box[i][0], lo);
+        vec4_store(&box[i][4], hi);
+        count[i] = cnt;
+    }
+    float right_sah[BVH_MAX_BINS];
+    uint32_t right_count[BVH_MAX_BINS];
+    float best_sah = INFINITY;
+    o->axis = -1;
+    for (int k = 0; k < 3; k++) {
+        if (!o->binnable[k])
+            continue;
+        const float(*kb)[8] = &box[k * bins];
+        const uint32_t *kc = &count[k * bins];
+        vec4 lo = vec4_splat(INFINITY);
+        vec4 hi = vec4_splat(-INFINITY);
+        uint32_t cnt = 0;
+        for (int i = bins - 1; i > 0; i--) {
+            lo = vec4_min(lo, vec4_load(&kb[i][0]));
+            hi = vec4_max(hi, vec4_load(&kb[i][4]));
+            cnt += kc[i];
+            right_count[i] = cnt;
+            right_sah[i] = vec4_half_area(lo, hi) * (float)cnt;
+        }
+        lo = vec4_splat(INFINITY);
+        hi = vec4_splat(-INFINITY);
+        cnt = 0;
+        for (int i = 0; i < bins - 1; i++) {
+            lo = vec4_min(lo, vec4_load(&kb[i][0]));
+            hi = vec4_max(hi, vec4_load(&kb[i][4]));
+            cnt += kc[i];
+            float sah = vec4_half_area(lo, hi) * (float)cnt + right_sah[i + 1];
+            sah = cnt != 0 && right_count[i + 1] != 0 ? sah : INFINITY;
+            if (sah < best_sah) {
+                best_sah = sah;
+                o->axis = k;
+                o->plane = i + 1;
+                o->left_count = cnt;
+            }
+        }
+    }
+    if (o->axis < 0)
+        return;
+    /* build_internal.h: costs compared multiplied by the node's area. */
+    float area = aabb_half_area(&o->box);
+    float leaf_cost = b->p.c_isect * (float)(o->end - o->begin) * area;
+    float split_cost = b->p.c_trav * area + b->p.c_isect * best_sah;
+    if (!(split_cost < leaf_cost)) {
+        /* Overlapping primitives: the serial builder would split at the
+         * object median; its subtree build will. */
+        o->axis = -1;
+        return;
+    }
+    const float(*kb)[8] = &box[o->axis * bins];
+    vec4 lo = vec4_splat(INFINITY);
+    vec4 hi = vec4_splat(-INFINITY);
+    for (int i = 0; i < o->plane; i++) {
+        lo = vec4_min(lo, vec4_load(&kb[i][0]));
+        hi = vec4_max(hi, vec4_load(&kb[i][4]));
+    }
+    store_box(&o->left_box, lo, hi);
+    lo = vec4_splat(INFINITY);
+    hi = vec4_splat(-INFINITY);
+    for (int i = o->plane; i < bins; i++) {
+        lo = vec4_min(lo, vec4_load(&kb[i][0]));
+        hi = vec4_max(hi, vec4_load(&kb[i][4]));
+    }
+    store_box(&o->right_box, lo, hi);
+}
+
+/* Phase C: every chunk of a splitting node copies its left refs to its
+ * part of the left child's range and its right refs to the right's, in
+ * order (paper 000 sec. 5: "copies the two halves into the respective
+ * regions ... predetermined by the known sizes of all threads' bins"). */
+static void partition_task(void *arg, int worker)
+{
+    (void)worker;
+    struct pbuild *b = arg;
+    const int last = b->bins - 1;
+    const struct build_ref *src = b->refs[b->src];
+    struct build_ref *dst = b->refs[!b->src];
+    const vec4 inf = vec4_splat(INFINITY);
+    const vec4 neg_inf = vec4_splat(-INFINITY);
+    uint32_t c;
+    while ((c = chunk_of(b)) < b->chunk_count) {
+        struct chunk *ch = &b->chunks[c];
+        const struct open_node *o = &b->open[ch->node];
+        if (o->axis < 0)
+            continue;
+        const int axis = o->axis;
+        const int plane = o->plane;
+        uint32_t li = ch->left_dst;
+        uint32_t ri = ch->right_dst;
+        vec4 llo = inf, lhi = neg_inf, rlo = inf, rhi = neg_inf;
+        for (uint32_t i = ch->begin; i < ch->end; i++) {
+            const struct build_ref *r = &src[i];
+            int left = bin_of(o, r->lo[axis] + r->hi[axis], axis, last) < plane;
+            vec4 cen = vec4_add(vec4_xyz0(vec4_load(r->lo)), vec4_load(r->hi));
+            llo = vec4_min(llo, vec4_select(left, cen, inf));
+            lhi = vec4_max(lhi, vec4_select(left, cen, neg_inf));
+            rlo = vec4_min(rlo, vec4_select(left, inf, cen));
+            rhi = vec4_max(rhi, vec4_select(left, neg_inf, cen));
+            dst[left ? li : ri] = *r;
+            li += (uint32_t)left;
+            ri += (uint32_t)!left;
+        }
+        vec4_store(ch->lclo, llo);
+        vec4_store(ch->lchi, lhi);
+        vec4_store(ch->rclo, rlo);
+        vec4_store(ch->rchi, rhi);
+    }
+}
+
+/* Queues a child of stage 1: another open node if it is still large
+ * (and the depth guard of build_internal.h allows an SAH split below it),
+ * else a subtree in buffer `buffer`. */
+static int queue_child(struct pbuild *b, struct open_node *next, uint32_t *next_count,
+                       const struct open_node *child, int buffer)
+{
+    uint32_t m = child->end - child->begin;
+    if (m > b->subtree_max && !build_must_split_median(child->depth, m)) {
+        next[(*next_count)++] = *child;
+        return 0;
+    }
+    return add_subtree(b, child->begin, child->end, child->slot, child->depth, buffer);
+}
+
+static int stage1_binning(struct pbuild *b, const struct open_node *root)
+{
+    b->bins = b->p.bins;
+    b->src = 0;
+    struct open_node *next = NULL;
+    uint32_t open_cap = 0;
+    uint32_t next_cap = 0;
+    int status = -1;
+    b->open = reserve(b->open, &open_cap, 1, sizeof(*b->open));
+    if (!b->open)
+        return -1;
+    b->open[0] = *root;
+    b->open_count = 1;
+    uint32_t chunk_cap = 0;
+    uint32_t hist_cap = 0;
+    while (b->open_count > 0) {
+        /* Plan this level's chunks. */
+        uint64_t total = 0;
+        for (uint32_t i = 0; i < b->open_count; i++)
+            total += b->open[i].end - b->open[i].begin;
+        uint64_t size = (total + b->threads * PARALLEL_CHUNKS_PER_THREAD - 1) /
+                        (b->threads * PARALLEL_CHUNKS_PER_THREAD);
+        if (size < PARALLEL_MIN_CHUNK)
+            size = PARALLEL_MIN_CHUNK;
+        uint32_t chunks = 0;
+        for (uint32_t i = 0; i < b->open_count; i++) {
+            uint32_t m = b->open[i].end - b->open[i].begin;
+            chunks += (uint32_t)((m + size - 1) / size);
+        }
+        struct chunk *chunk_array = reserve(b->chunks, &chunk_cap, chunks, sizeof(*chunk_array));
+        if (!chunk_array)
+            goto out;
+        b->chunks = chunk_array;
+        uint32_t hist_need = chunks * 3 * (uint32_t)b->bins;
+        if (hist_need > hist_cap) {
+            float(*hb)[8] = rt_realloc_array(b->hist_box, hist_need, sizeof(*hb));
+            if (hb)
+                b->hist_box = hb;
+            uint32_t *hc = rt_realloc_array(b->hist_count, hist_need, sizeof(*hc));
+            if (hc)
+                b->hist_count = hc;
+            if (!hb || !hc)
+                goto out;
+            hist_cap = hist_need;
+        }
+        uint32_t c = 0;
+        for (uint32_t i = 0; i < b->open_count; i++) {
+            struct open_node *o = &b->open[i];
+            init_binning(o, b->bins);
+            o->first_chunk = c;
+            for (uint32_t begin = o->begin; begin < o->end; begin += (uint32_t)size) {
+                struct chunk *ch = &b->chunks[c++];
+                ch->node = i;
+                ch->begin = begin;
+                ch->end = o->end - begin < size ? o->end : begin + (uint32_t)size;
+            }
+            o->chunk_count = c - o->first_chunk;
+        }
+        b->chunk_count = c;
+        run(b, bin_task);
+
+        /* One thread merges and picks every node's split. */
+        for (uint32_t i = 0; i < b->open_count; i++) {
+            struct open_node *o = &b->open[i];
+            pick_split(b, o);
+            if (o->axis < 0)
+                continue;
+            uint32_t left_dst = o->begin;
+            uint32_t right_dst = o->begin + o->left_count;
+            for (uint32_t k = o->first_chunk; k < o->first_chunk + o->chunk_count; k++) {
+                const uint32_t *cnt = &b->hist_count[(size_t)k * 3 * b->bins + o->axis * b->bins];
+                uint32_t left = 0;
+                for (int bin = 0; bin < o->plane; bin++)
+                    left += cnt[bin];
+                b->chunks[k].left_dst = left_dst;
+                b->chunks[k].right_dst = right_dst;
+                left_dst += left;
+                right_dst += (b->chunks[k].end - b->chunks[k].begin) - left;
+            }
+        }
+        run(b, partition_task);
+
+        /* Children: the next level's open nodes, or subtrees. */
+        struct open_node *next_array = reserve(next, &next_cap, 2 * b->open_count, sizeof(*next));
+        if (!next_array)
+            goto out;
+        next = next_array;
+        uint32_t next_count = 0;
+        for (uint32_t i = 0; i < b->open_count; i++) {
+            struct open_node *o = &b->open[i];
+            if (o->axis < 0) {
+                if (add_subtree(b, o->begin, o->end, o->slot, o->depth, b->src))
+                    goto out;
+                continue;
+            }
+            uint32_t pair = top_pair(b);
+            if (pair == UINT32_MAX)
+                goto out;
+            build_set_inner(&b->top[o->slot], pair);
+            struct open_node kid[2];
+            memset(kid, 0, sizeof(kid));
+            for (int s = 0; s < 2; s++) {
+                kid[s].depth = o->depth + 1;
+                kid[s].slot = pair + (uint32_t)s;
+                for (int k = 0; k < 4; k++) {
+                    kid[s].clo[k] = INFINITY;
+                    kid[s].chi[k] = -INFINITY;
+                }
+            }
+            kid[0].begin = o->begin;
+            kid[0].end = o->begin + o->left_count;
+            kid[1].begin = kid[0].end;
+            kid[1].end = o->end;
+            kid[0].box = o->left_box;
+            kid[1].box = o->right_box;
+            for (uint32_t k = o->first_chunk; k < o->first_chunk + o->chunk_count; k++) {
+                const struct chunk *ch = &b->chunks[k];
+                for (int a = 0; a < 3; a++) {
+                    kid[0].clo[a] = build_min(kid[0].clo[a], ch->lclo[a]);
+                    kid[0].chi[a] = build_max(kid[0].chi[a], ch->lchi[a]);
+                    kid[1].clo[a] = build_min(kid[1].clo[a], ch->rclo[a]);
+                    kid[1].chi[a] = build_max(kid[1].chi[a], ch->rchi[a]);
+                }
+            }
+            for (int s = 0; s < 2; s++) {
+                if (queue_child(b, next, &next_count, &kid[s], !b->src))
+                    goto out;
+            }
+        }
+        struct open_node *t = b->open;
+        b->open = next;
+        next = t;
+        uint32_t tc = open_cap;
+        open_cap = next_cap;
+        next_cap = tc;
+        b->open_count = next_count;
+        b->src = !b->src;
+    }
+    status = 0;
+out:
+    rt_free(next);
+    return status;
+}
+
+/* ------------------------------------------------------------ grid */
+
+static inline uint32_t grid_coord(const struct pbuild *b, float c, int k)
+{
+    float f = (c - b->grid_origin[k]) * b->grid_scale[k];
+    float last = (float)(b->res[k] - 1);
+    f = f > 0.0f ? f : 0.0f;
+    f = f < last ? f : last;
+    return (uint32_t)f;
+}
+
+static inline uint32_t cell_index(const struct pbuild *b, uint32_t x, uint32_t y, uint32_t z)
+{
+    return (z * b->res[1] + y) * b->res[0] + x;
+}
+
+/* Worker w's static share of the refs: per-thread grids need the same
+ * share in the count and the scatter pass. */
+static void worker_range(const struct pbuild *b, int worker, uint32_t *begin, uint32_t *end)
+{
+    *begin = (uint32_t)((uint64_t)b->n * (uint32_t)worker / b->threads);
+    *end = (uint32_t)((uint64_t)b->n * ((uint32_t)worker + 1) / b->threads);
+}
+
+/* Paper 000 sec. 5: "Each of the T threads create their own copy of that
+ * grid, then takes one T-th of the triangles, and ... bins each triangle
+ * into the cell that its centroid projects to." */
+static void grid_count_task(void *arg, int worker)
+{
+    struct pbuild *b = arg;
+    uint32_t begin, end;
+    worker_range(b, worker, &begin, &end);
+    uint32_t cells = b->res[0] * b->res[1] * b->res[2];
+    uint32_t *count = &b->counts[(size_t)worker * cells];
+    memset(count, 0, cells * sizeof(*count));
+    const struct build_ref *refs = b->refs[0];
+    for (uint32_t i = begin; i < end; i++) {
+        const struct build_ref *r = &refs[i];
+        uint32_t x = grid_coord(b, r->lo[0] + r->hi[0], 0);
+        uint32_t y = grid_coord(b, r->lo[1] + r->hi[1], 1);
+        uint32_t z = grid_coord(b, r->lo[2] + r->hi[2], 2);
+        uint32_t cell = cell_index(b, x, y, z);
+        b->cell_of[i] = cell;
+        count[cell]++;
+    }
+}
+
+static void grid_scatter_task(void *arg, int worker)
+{
+    struct pbuild *b = arg;
+    uint32_t begin, end;
+    worker_range(b, worker, &begin, &end);
+    uint32_t cells = b->res[0] * b->res[1] * b->res[2];
+    uint32_t *offset = &b->counts[(size_t)worker * cells];
+    const struct build_ref *src = b->refs[0];
+    struct build_ref *dst = b->refs[1];
+    for (uint32_t i = begin; i < end; i++)
+        dst[offset[b->cell_of[i]]++] = src[i];
+}
+
+/* A block of cells [lo, hi) per axis. */
+struct block {
+    uint32_t lo[3];
+    uint32_t hi[3];
+    uint32_t slot;
+    uint32_t depth;
+};
+
+/* Primitives in a block, from the summed-volume table sv of size
+ * (res + 1)^3 (unsigned wrap-around cancels in the sum). */
+static uint32_t block_count(const struct pbuild *b, const uint32_t *sv, const uint32_t lo[3],
+                            const uint32_t hi[3])
+{
+    uint32_t sx = b->res[0] + 1;
+    uint32_t sy = b->res[1] + 1;
+#define SV(x, y, z) sv[((size_t)(z) * sy + (y)) * sx + (x)]
+    return SV(hi[0], hi[1], hi[2]) - SV(lo[0], hi[1], hi[2]) - SV(hi[0], lo[1], hi[2]) -
+           SV(hi[0], hi[1], lo[2]) + SV(lo[0], lo[1], hi[2]) + SV(lo[0], hi[1], lo[2]) +
+           SV(hi[0], lo[1], lo[2]) - SV(lo[0], lo[1], lo[2]);
+#undef SV
+}
+
+/* Grid resolution: powers of two, doubling the axis with the longest
+ * cells until about n / GRID_PRIMS_PER_CELL cells.  Integer doubling and
+ * float division only, so every machine picks the same grid. */
+static void plan_grid(struct pbuild *b, const float clo[4], const float chi[4])
+{
+    uint32_t target = b->n / GRID_PRIMS_PER_CELL;
+    if (target > GRID_MAX_CELLS)
+        target = GRID_MAX_CELLS;
+    float extent[3];
+    for (int k = 0; k < 3; k++) {
+        extent[k] = chi[k] - clo[k];
+        b->res[k] = 1;
+    }
+    uint32_t cells = 1;
+    while (cells * 2 <= target) {
+        int axis = -1;
+        float longest = 0.0f;
+        for (int k = 0; k < 3; k++) {
+            float cell = extent[k] / (float)b->res[k];
+            if (isfinite(cell) && cell > longest && b->res[k] < GRID_MAX_RES) {
+                longest = cell;
+                axis = k;
+            }
+        }
+        if (axis < 0)
+            break;
+        b->res[axis] *= 2;
+        cells *= 2;
+    }
+    for (int k = 0; k < 3; k++) {
+        float s = (float)b->res[k] / extent[k];
+        b->grid_origin[k] = clo[k];
+        b->grid_scale[k] = extent[k] > 0.0f && isfinite(s) ? s : 0.0f;
+    }
+}
+
+/*
+ * BIH-like nodes over the grid (paper 000 sec. 5: "one of the threads
+ * builds the BVH nodes that represent that grid, which is very similar to
+ * Wachter's BIH technique"): a block is halved in cell units across its
+ * longest side in space; an empty half is dropped without a node; a block
+ * of at most subtree_max primitives, or of one cell, becomes a subtree.
+ * Assigns each cell its range start in stage 2's ref order (blocks in
+ * depth-first order, cells in z, y, x order within a block) in *start.
+ */
+static int grid_nodes(struct pbuild *b, const uint32_t *sv, uint32_t *start)
+{
+    /* Depth first, right pushed before left: at most one entry per
+     * level plus one, and every level halves the cells. */
+    struct block stack[GRID_MAX_LEVELS + 2];
+    uint32_t sp = 0;
+    struct block root = {{0, 0, 0}, {b->res[0], b->res[1], b->res[2]}, 0, 0};
+    stack[sp++] = root;
+    uint32_t offset = 0;
+    while (sp > 0) {
+        struct block blk = stack[--sp];
+        uint32_t count = block_count(b, sv, blk.lo, blk.hi);
+        for (;;) {
+            int axis = -1;
+            float longest = 0.0f;
+            for (int k = 0; k < 3; k++) {
+                if (blk.hi[k] - blk.lo[k] < 2)
+                    continue;
+                float side = (float)(blk.hi[k] - blk.lo[k]) / b->grid_scale[k];
+                if (axis < 0 || side > longest) {
+                    axis = k;
+                    longest = side;
+                }
+            }
+            if (axis < 0 || count <= b->subtree_max ||
+                build_must_split_median(blk.depth, count)) {
+                if (add_subtree(b, offset, offset + count, blk.slot, blk.depth, 1))
+                    return -1;
+                for (uint32_t z = blk.lo[2]; z < blk.hi[2]; z++)
+                    for (uint32_t y = blk.lo[1]; y < blk.hi[1]; y++)
+                        for (uint32_t x = blk.lo[0]; x < blk.hi[0]; x++) {
+                            uint32_t cell = cell_index(b, x, y, z);
+                            uint32_t in_cell = start[cell];
+                            start[cell] = offset;
+                            offset += in_cell;
+                        }
+                break;
+            }
+            struct block half[2] = {blk, blk};
+            uint32_t mid = blk.lo[axis] + (blk.hi[axis] - blk.lo[axis]) / 2;
+            half[0].hi[axis] = mid;
+            half[1].lo[axis] = mid;
+            uint32_t left = block_count(b, sv, half[0].lo, half[0].hi);
+            if (left == 0 || left == count) {
+                /* One half empty: no node, keep halving the other. */
+                blk = left == 0 ? half[1] : half[0];
+                continue;
+            }
+            uint32_t pair = top_pair(b);
+            if (pair == UINT32_MAX)
+                return -1;
+            build_set_inner(&b->top[blk.slot], pair);
+            for (int s = 0; s < 2; s++) {
+                half[s].slot = pair + (uint32_t)s;
+                half[s].depth = blk.depth + 1;
+            }
+            /* Right first: the left block is laid out first. */
+            stack[sp++] = half[1];
+            stack[sp++] = half[0];
+            break;
+        }
+    }
+    return 0;
+}
+
+static int stage1_grid(struct pbuild *b, const float clo[4], const float chi[4])
+{
+    plan_grid(b, clo, chi);
+    uint32_t cells = b->res[0] * b->res[1] * b->res[2];
+    size_t sv_size = (size_t)(b->res[0] + 1) * (b->res[1] + 1) * (b->res[2] + 1);
+    b->cell_of = rt_realloc_array(NULL, b->n, sizeof(*b->cell_of));
+    b->counts = rt_realloc_array(NULL, (size_t)b->threads * cells, sizeof(*b->counts));
+    uint32_t *sv = rt_calloc(sv_size, sizeof(*sv));
+    uint32_t *start = rt_realloc_array(NULL, cells, sizeof(*start));
+    int status = -1;
+    if (!b->cell_of || !b->counts || !sv || !start)
+        goto out;
+    rt_pool_run(b->pool, grid_count_task, b);
+
+    /* One thread merges the grids ("the T grids are merged") into
+     * per-cell totals and the summed-volume table. */
+    uint32_t sx = b->res[0] + 1;
+    uint32_t sy = b->res[1] + 1;
+    for (uint32_t z = 0; z < b->res[2]; z++)
+        for (uint32_t y = 0; y < b->res[1]; y++)
+            for (uint32_t x = 0; x < b->res[0]; x++) {
+                uint32_t cell = cell_index(b, x, y, z);
+                uint32_t total = 0;
+                for (uint32_t w = 0; w < b->threads; w++)
+                    total += b->counts[(size_t)w * cells + cell];
+                start[cell] = total;
+                size_t i = ((size_t)(z + 1) * sy + (y + 1)) * sx + (x + 1);
+                sv[i] = total + sv[i - 1] + sv[i - sx] + sv[i - sx * sy] - sv[i - sx - 1] -
+                        sv[i - sx * sy - 1] - sv[i - sx * sy - sx] + sv[i - sx * sy - sx - 1];
+            }
+    if (grid_nodes(b, sv, start))
+        goto out;
+    /* Each thread's scatter offsets: the cell's start plus what the
+     * threads before it put there, so the scatter is a stable partition. */
+    for (uint32_t cell = 0; cell < cells; cell++) {
+        uint32_t offset = start[cell];
+        for (uint32_t w = 0; w < b->threads; w++) {
+            uint32_t *c = &b->counts[(size_t)w * cells + cell];
+            uint32_t here = *c;
+            *c = offset;
+            offset += here;
+        }
+    }
+    rt_pool_run(b->pool, grid_scatter_task, b);
+    status = 0;
+out:
+    rt_free(sv);
+    rt_free(start);
+    return status;
+}
+
+/* ------------------------------------------------------------ stage 2 */
+
+/*
+ * An SAH subtree: accel_build over a copy of the subtree's boxes.  The
+ * SAH builders of bvh.h take a box array and allocate their own nodes
+ * (their internals are file-static), so this subtree is not built into
+ * a preassigned range but into its own arrays; the box copy and stage
+ * 3's node copy cost a few percent of the build.  Two things that
+ * builder cannot be told are handled here: it counts depth from the
+ * subtree's root, so a subtree that would end deeper than BVH_MAX_DEPTH
+ * in the whole tree is rebuilt by the median builder, which applies the
+ * depth guard from depth0; and it does not read leaf_growth.
+ */
+static int build_sah_subtree(struct pbuild *b, struct subtree *s)
+{
+    uint32_t m = s->end - s->begin;
+    struct aabb *boxes = &b->sah_boxes[s->begin];
+    struct build_ref *refs = &s->refs[s->begin];
+    for (uint32_t i = 0; i < m; i++) {
+        for (int k = 0; k < 3; k++) {
+            boxes[i].min[k] = refs[i].lo[k];
+            boxes[i].max[k] = refs[i].hi[k];
+        }
+    }
+    if (accel_build(&s->sah, boxes, m, &b->p))
+        return -1;
+    if (s->depth + s->sah.depth <= BVH_MAX_DEPTH) {
+        s->nodes = s->sah.nodes;
+        s->node_count = s->sah.node_count;
+        s->max_depth = s->depth + s->sah.depth;
+        for (uint32_t i = 0; i < m; i++)
+            b->prim_index[s->begin + i] = build_ref_id(&refs[s->sah.prim_index[i]]);
+        return 0;
+    }
+    bvh_release(&s->sah);
+    s->owned = rt_realloc_array(NULL, 2 * (size_t)m - 1, sizeof(*s->owned));
+    if (!s->owned)
+        return -1;
+    build_median_refs(s->owned, refs, m, s->depth, &b->p, &s->node_count, &s->max_depth);
+    s->nodes = s->owned;
+    for (uint32_t i = 0; i < m; i++)
+        b->prim_index[s->begin + i] = build_ref_id(&refs[i]);
+    return 0;
+}
+
+/* A median subtree, in place, into its preassigned range of 2m - 1 nodes
+ * of the scratch array (paper 000 sec. 5: "a subtree of N triangles can
+ * use at most 2N - 1 nodes ... so we can simply assign each subtree to
+ * one contiguous region of the node array"): no allocation at all. */
+static void build_median_subtree(struct pbuild *b, struct subtree *s, struct bvh_node *range)
+{
+    uint32_t m = s->end - s->begin;
+    struct build_ref *refs = &s->refs[s->begin];
+    build_median_refs(range, refs, m, s->depth, &b->p, &s->node_count, &s->max_depth);
+    s->nodes = range;
+    for (uint32_t i = 0; i < m; i++)
+        b->prim_index[s->begin + i] = build_ref_id(&refs[i]);
+}
+
+/* Paper 000 sec. 5, stage 2: "the render threads dynamically request
+ * subtrees to work on using an atomic read-and-increment on a shared
+ * counter, until all subtrees are finished". */
+static void subtree_task(void *arg, int worker)
+{
+    (void)worker;
+    struct pbuild *b = arg;
+    uint32_t i;
+    while ((i = chunk_of(b)) < b->subtree_count) {
+        struct subtree *s = &b->subtrees[b->order[i]];
+        if (__atomic_load_n(&b->failed, __ATOMIC_RELAXED))
+            continue;
+        if (b->pp.subtree == BVH_SUBTREE_MEDIAN) {
+            /* Subtree j's range starts at 2 begin_j - j: the ranges of
+             * the subtrees before it, 2 m - 1 nodes each, in primitive
+             * order (the subtree array is sorted by begin). */
+            uint32_t j = b->order[i];
+            build_median_subtree(b, s, &b->scratch[2 * (size_t)s->begin - j]);
+        } else if (build_sah_subtree(b, s)) {
+            __atomic_store_n(&b->failed, 1, __ATOMIC_RELAXED);
+        }
+    }
+}
+
+static int by_begin(const void *pa, const void *pb)
+{
+    const struct subtree *a = pa;
+    const struct subtree *b = pb;
+    return a->begin < b->begin ? -1 : a->begin > b->begin;
+}
+
+/* Hand-out order: descending size, then ascending begin; the pair is
+ * unique, so qsort's order is deterministic. */
+struct size_key {
+    uint64_t key; /* (~size << 32) | begin: ascending = the order above */
+    uint32_t index;
+};
+
+static int by_key(const void *pa, const void *pb)
+{
+    const struct size_key *a = pa;
+    const struct size_key *b = pb;
+    return a->key < b->key ? -1 : a->key > b->key;
+}
+
+/* ------------------------------------------------------------ stage 3 */
+
+/* Copies subtree nodes into the final array: the root into the slot its
+ * parent reserved, the rest after the top nodes, indices rebased. */
+static void compact_task(void *arg, int worker)
+{
+    (void)worker;
+    struct pbuild *b = arg;
+    uint32_t i;
+    while ((i = chunk_of(b)) < b->subtree_count) {
+        const struct subtree *s = &b->subtrees[i];
+        for (uint32_t j = 0; j < s->node_count; j++) {
+            struct bvh_node node = s->nodes[j];
+            if (node.count)
+                node.first += s->begin;
+            else
+                node.first += s->final_base - 1;
+            b->final_nodes[j == 0 ? s->slot : s->final_base + j - 1] = node;
+        }
+    }
+}
+
+/* ------------------------------------------------------------ driver */
+
+void bvh_parallel_params_default(struct bvh_parallel_params *params)
+{
+    params->partition = BVH_PARTITION_BINNING;
+    params->subtree = BVH_SUBTREE_SAH;
+}
+
+static void release_build(struct pbuild *b)
+{
+    for (uint32_t i = 0; i < b->subtree_count; i++) {
+        bvh_release(&b->subtrees[i].sah);
+        rt_free(b->subtrees[i].owned);
+    }
+    rt_free(b->refs[0]);
+    rt_free(b->refs[1]);
+    rt_free(b->top);
+    rt_free(b->subtrees);
+    rt_free(b->chunks);
+    rt_free(b->chunk_box);
+    rt_free(b->open);
+    rt_free(b->hist_box);
+    rt_free(b->hist_count);
+    rt_free(b->cell_of);
+    rt_free(b->counts);
+    rt_free(b->order);
+    rt_free(b->sah_boxes);
+    rt_free(b->scratch);
+}
+
+/* Stages 2 and 3 once stage 1 has left its subtrees; fills *out. */
+static int build_subtrees(struct pbuild *b, struct bvh *out)
+{
+    uint32_t k = b->subtree_count;
+    qsort(b->subtrees, k, sizeof(*b->subtrees), by_begin);
+    struct size_key *keys = rt_realloc_array(NULL, k, sizeof(*keys));
+    b->order = rt_realloc_array(NULL, k, sizeof(*b->order));
+    if (!keys || !b->order) {
+        rt_free(keys);
+        return -1;
+    }
+    for (uint32_t i = 0; i < k; i++) {
+        const struct subtree *s = &b->subtrees[i];
+        keys[i].key = ((uint64_t)~(s->end - s->begin) << 32) | s->begin;
+        keys[i].index = i;
+    }
+    /* Paper 000 sec. 5: "to obtain good load balancing we first sort the
+     * subtrees by descending size". */
+    qsort(keys, k, sizeof(*keys), by_key);
+    for (uint32_t i = 0; i < k; i++)
+        b->order[i] = keys[i].index;
+    rt_free(keys);
+
+    if (b->pp.subtree == BVH_SUBTREE_MEDIAN)
+        b->scratch = rt_realloc_array(NULL, 2 * (size_t)b->n - k, sizeof(*b->scratch));
+    else
+        b->sah_boxes = rt_realloc_array(NULL, b->n, sizeof(*b->sah_boxes));
+    if (!b->scratch && !b->sah_boxes)
+        return -1;
+    b->failed = 0;
+    run(b, subtree_task);
+    if (b->failed)
+        return -1;
+
+    /* Stage 3: the final layout (file comment). */
+    uint64_t total = b->top_count;
+    uint32_t depth = 0;
+    for (uint32_t i = 0; i < k; i++) {
+        struct subtree *s = &b->subtrees[i];
+        s->final_base = (uint32_t)total;
+        total += s->node_count - 1;
+        if (s->max_depth > depth)
+            depth = s->max_depth;
+    }
+    b->final_nodes = rt_realloc_array(NULL, total, sizeof(*b->final_nodes));
+    if (!b->final_nodes)
+        return -1;
+    for (uint32_t i = 0; i < b->top_count; i++)
+        b->final_nodes[i] = b->top[i];
+    run(b, compact_task);
+    /* The top nodes' boxes, children before parents (children pairs are
+     * appended after their parent). */
+    for (uint32_t i = b->top_count; i-- > 0;) {
+        if (b->top[i].count)
+            continue;
+        struct bvh_node *node = &b->final_nodes[i];
+        const struct bvh_node *l = &b->final_nodes[node->first];
+        const struct bvh_node *r = &b->final_nodes[node->first + 1];
+        for (int a = 0; a < 3; a++) {
+            node->aabb_min[a] = build_min(l->aabb_min[a], r->aabb_min[a]);
+            node->aabb_max[a] = build_max(l->aabb_max[a], r->aabb_max[a]);
+        }
+    }
+    out->nodes = b->final_nodes;
+    b->final_nodes = NULL;
+    out->node_count = (uint32_t)total;
+    out->depth = depth;
+    return 0;
+}
+
+int accel_build_parallel_ex(struct bvh *out, const struct aabb *prim_boxes, uint32_t prim_count,
+                            const struct bvh_build_params *params,
+                            const struct bvh_parallel_params *parallel, struct rt_pool *pool)
+{
+    struct pbuild b;
+    memset(&b, 0, sizeof(b));
+    accel_build_params_normalize(&b.p, params);
+    bvh_parallel_params_default(&b.pp);
+    if (parallel) {
+        if (parallel->partition == BVH_PARTITION_GRID)
+            b.pp.partition = BVH_PARTITION_GRID;
+        if (parallel->subtree == BVH_SUBTREE_MEDIAN)
+            b.pp.subtree = BVH_SUBTREE_MEDIAN;
+    }
+    b.subtree_max = prim_count / PARALLEL_SUBTREES + (prim_count % PARALLEL_SUBTREES != 0);
+    if (b.subtree_max < PARALLEL_MIN_SUBTREE)
+        b.subtree_max = PARALLEL_MIN_SUBTREE;
+    /* One subtree: stage 2 alone, which is exactly the serial builder. */
+    if (prim_count <= b.subtree_max) {
+        if (b.pp.subtree == BVH_SUBTREE_MEDIAN)
+            return accel_build_median(out, prim_boxes, prim_count, &b.p);
+        return accel_build(out, prim_boxes, prim_count, &b.p);
+    }
+    memset(out, 0, sizeof(*out));
+    /* 2n - 1 nodes must fit the 32-bit indices (as accel_build_alloc). */
+    if (prim_count > (UINT32_MAX - 1) / 2 + 1)
+        return -1;
+    b.boxes = prim_boxes;
+    b.n = prim_count;
+    b.pool = pool;
+    b.threads = (uint32_t)rt_pool_threads(pool);
+
+    int status = -1;
+    out->prim_index = rt_realloc_array(NULL, prim_count, sizeof(*out->prim_index));
+    b.prim_index = out->prim_index;
+    b.refs[0] = rt_realloc_array(NULL, prim_count, sizeof(*b.refs[0]));
+    b.refs[1] = rt_realloc_array(NULL, prim_count, sizeof(*b.refs[1]));
+    plan_flat_chunks(&b, prim_count);
+    b.chunk_box = rt_realloc_array(NULL, 2 * (size_t)b.chunk_count, sizeof(*b.chunk_box));
+    b.top = reserve(NULL, &b.top_cap, 1, sizeof(*b.top));
+    if (!out->prim_index || !b.refs[0] || !b.refs[1] || !b.chunk_box || !b.top)
+        goto out;
+    memset(&b.top[0], 0, sizeof(b.top[0]));
+    b.top[0].count = 1;
+    b.top_count = 1;
+
+    run(&b, setup_task);
+    struct open_node root;
+    memset(&root, 0, sizeof(root));
+    root.end = prim_count;
+    struct aabb cb = aabb_empty();
+    root.box = aabb_empty();
+    for (uint32_t c = 0; c < b.chunk_count; c++) {
+        for (int k = 0; k < 3; k++) {
+            root.box.min[k] = build_min(root.box.min[k], b.chunk_box[2 * c].min[k]);
+            root.box.max[k] = build_max(root.box.max[k], b.chunk_box[2 * c].max[k]);
+            cb.min[k] = build_min(cb.min[k], b.chunk_box[2 * c + 1].min[k]);
+            cb.max[k] = build_max(cb.max[k], b.chunk_box[2 * c + 1].max[k]);
+        }
+    }
+    for (int k = 0; k < 3; k++) {
+        root.clo[k] = cb.min[k];
+        root.chi[k] = cb.max[k];
+    }
+
+    if (b.pp.partition == BVH_PARTITION_GRID) {
+        if (stage1_grid(&b, root.clo, root.chi))
+            goto out;
+    } else if (stage1_binning(&b, &root)) {
+        goto out;
+    }
+    if (build_subtrees(&b, out))
+        goto out;
+    out->prim_count = prim_count;
+    status = 0;
+out:
+    release_build(&b);
+    if (status) {
+        bvh_release(out);
+        rt_free(b.final_nodes);
+    }
+    return status;
+}
+
+int accel_build_parallel(struct bvh *out, const struct aabb *prim_boxes, uint32_t prim_count,
+                         const struct bvh_build_params *params, struct rt_pool *pool)
+{
+    return accel_build_parallel_ex(out, prim_boxes, prim_count, params, NULL, pool);
+}

@@ -1,0 +1,53 @@
+/*
+ * update.h - keeping an object's acceleration structure in step with its
+ * geometry: the per-object update strategies of papers 000 and 001.
+ *
+ * An object whose geometry changed (redefined with the same connectivity,
+ * or rtUpdateVertices) has a stale structure.  scene_object_update brings
+ * it up to date with the strategy the object's class and hints select:
+ *
+ *   RT_REFIT               refit the boxes bottom-up (paper 000 sec. 6)
+ *   RT_REBUILD             binned SAH rebuild, two-stage parallel with a
+ *                          pool (paper 000 secs. 4, 5)
+ *   RT_REBUILD_MEDIAN      spatial-median (BIH-like) rebuild (paper 000
+ *                          table 1)
+ *   RT_REBUILD_HEURISTIC   refit, rebuild once the SAH cost has grown past
+ *                          REBUILD_HEURISTIC_THRESHOLD times the cost
+ *                          after the last build (the RT-DEFORM rebuild
+ *                          heuristic, paper 000 sec. 2)
+ *   RT_RESTRUCTURE         selective restructuring (paper 001)
+ *
+ * A changed connectivity always means a full rebuild.  Objects hinted
+ * RT_STATIC or RT_AFFINE are rebuilt with the high-quality static builder.
+ * Every strategy gives the same hits; only time and tree quality differ.
+ */
+#ifndef RT_SCENE_UPDATE_H
+#define RT_SCENE_UPDATE_H
+
+#include "base/pool.h"
+#include "scene/object.h"
+
+struct scene_update_config {
+    const struct bvh_build_params *static_params; /* first builds, static objects */
+    unsigned default_strategy; /* for objects without a hint; RT_AUTOMATIC allowed */
+    struct rt_pool *pool;      /* parallel builds and refits; NULL = caller only */
+    /* Selective restructuring's machine constants (paper 001 sec. 6.1),
+     * measured by the context the first time an object restructures. */
+    const struct accel_restructure_params *restructure;
+};
+
+/*
+ * Builds the object's structure if it has none, or updates it if stale.
+ * Returns the structure, or NULL on allocation failure (the object keeps
+ * a valid but stale structure, or none; the next call tries again).
+ * Not thread-safe for one object: call with its build_lock held, or from
+ * the API thread between frames.
+ */
+const struct scene_accel *scene_object_update(struct scene_object *object,
+                                              const struct scene_update_config *config);
+
+/* The strategy an update of this object would use now (resolving
+ * RT_AUTOMATIC), for statistics. */
+unsigned scene_object_strategy(const struct scene_object *object, unsigned default_strategy);
+
+#endif
