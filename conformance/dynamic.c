@@ -123,7 +123,7 @@ static void object_parameter_errors(RTcontext ctx)
     CHECK_ERR(RT_INVALID_ENUM);
     rtObjectParameteri(O, RT_UPDATE_STRATEGY, RT_UNSTRUCTURED);
     CHECK_ERR(RT_INVALID_ENUM);
-    rtObjectParameteri(O, RT_UPDATE_STRATEGY, RT_RESTRUCTURE + 1);
+    rtObjectParameteri(O, RT_UPDATE_STRATEGY, RT_MAX_RAY_DEPTH);
     CHECK_ERR(RT_INVALID_ENUM);
     rtObjectParameteri(O, RT_UPDATE_STRATEGY, INT_MIN);
     CHECK_ERR(RT_INVALID_ENUM);
@@ -170,13 +170,17 @@ static void object_parameter_errors(RTcontext ctx)
     /* Every valid value is accepted. */
     {
         static const RTenum classes[] = {RT_STATIC, RT_AFFINE, RT_UNSTRUCTURED, RT_AUTOMATIC};
-        static const RTenum strategies[] = {RT_REFIT, RT_REBUILD, RT_REBUILD_MEDIAN,
-                                            RT_REBUILD_HEURISTIC, RT_RESTRUCTURE, RT_AUTOMATIC};
+        static const RTenum strategies[] = {RT_REFIT,       RT_REBUILD,     RT_REBUILD_MEDIAN,
+                                            RT_REBUILD_HEURISTIC, RT_RESTRUCTURE,
+#ifdef RT_ASYNC_REBUILD
+                                            RT_ASYNC_REBUILD,
+#endif
+                                            RT_AUTOMATIC};
         for (int i = 0; i < 4; i++) {
             rtObjectParameteri(O, RT_OBJECT_CLASS, (RTint)classes[i]);
             CHECK_NO_ERR();
         }
-        for (int i = 0; i < 6; i++) {
+        for (int i = 0; i < (int)(sizeof strategies / sizeof strategies[0]); i++) {
             rtObjectParameteri(O, RT_UPDATE_STRATEGY, (RTint)strategies[i]);
             CHECK_NO_ERR();
             CHECK_INT(obji(O, RT_UPDATE_STRATEGY), strategies[i]);
@@ -423,8 +427,11 @@ static void render_parameter_errors(void)
     {
         static const RTenum strategies[] = {RT_AUTOMATIC, RT_REFIT, RT_REBUILD,
                                             RT_REBUILD_HEURISTIC, RT_RESTRUCTURE,
+#ifdef RT_ASYNC_REBUILD
+                                            RT_ASYNC_REBUILD,
+#endif
                                             RT_REBUILD_MEDIAN};
-        for (int i = 0; i < 6; i++) {
+        for (int i = 0; i < (int)(sizeof strategies / sizeof strategies[0]); i++) {
             rtRenderParameteri(RT_UPDATE_STRATEGY, (RTint)strategies[i]);
             CHECK_NO_ERR();
         }
@@ -476,8 +483,12 @@ static void render_parameter_errors(void)
     rtFinish();
     {
         RTint s = obji(P, RT_UPDATE_STRATEGY);
-        CHECK(s == RT_REFIT || s == RT_REBUILD || s == RT_REBUILD_MEDIAN ||
-              s == RT_REBUILD_HEURISTIC || s == RT_RESTRUCTURE);
+        int concrete = s == RT_REFIT || s == RT_REBUILD || s == RT_REBUILD_MEDIAN ||
+                       s == RT_REBUILD_HEURISTIC || s == RT_RESTRUCTURE;
+#ifdef RT_ASYNC_REBUILD
+        concrete = concrete || s == RT_ASYNC_REBUILD;
+#endif
+        CHECK(concrete);
     }
     CHECK_NEAR(tu_trace_down(0.5f, 0.5f).t, 8.0f, 0.0);
     CHECK_NO_ERR();
@@ -621,6 +632,24 @@ static void classification(void)
     rtViewport(0, 0, 0, 0);
 }
 
+/* The vertices of tu_define_grid(name, n, n, x_lo, y_lo, x_lo + size,
+ * y_lo + size, z): 4 per cell, cells row by row, corners in RT_QUADS order
+ * (0,0) (1,0) (1,1) (0,1); with `strips`, in the order of a 4-vertex
+ * RT_TRIANGLE_STRIP per cell, (0,0) (0,1) (1,0) (1,1). */
+static void grid_vertices(float *v, int n, float x_lo, float y_lo, float size, int strips,
+                          float z)
+{
+    static const int quad_corner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    static const int strip_corner[4][2] = {{0, 0}, {0, 1}, {1, 0}, {1, 1}};
+    for (int k = 0; k < 4 * n * n; k++) {
+        int cell = k / 4;
+        const int *c = strips ? strip_corner[k % 4] : quad_corner[k % 4];
+        v[3 * k] = x_lo + size * (float)(cell % n + c[0]) / (float)n;
+        v[3 * k + 1] = y_lo + size * (float)(cell / n + c[1]) / (float)n;
+        v[3 * k + 2] = z;
+    }
+}
+
 /* ---- a static scene costs nothing ---------------------------------------------- */
 
 static void check_nothing_done(const char *file, int line)
@@ -693,11 +722,7 @@ static void static_scene(void)
     /* An update is counted, and its time, once per object. */
     {
         float g[3 * 4 * 16 * 16];
-        for (int k = 0; k < 4 * 16 * 16; k++) {
-            g[3 * k] = -1.0f + (float)((k / 4) % 16) / 16.0f + ((k % 4 == 1 || k % 4 == 2) ? 1.0f / 16 : 0);
-            g[3 * k + 1] = -1.0f + (float)((k / 4) / 16) / 16.0f + ((k % 4 >= 2) ? 1.0f / 16 : 0);
-            g[3 * k + 2] = -2.5f;
-        }
+        grid_vertices(g, 16, -1, -1, 1, 0, -2.5f);
         CHECK_INT(obji(A, RT_OBJECT_VERTICES), 4 * 16 * 16);
         rtUpdateVertices(A, RT_VERTEX_ARRAY, 0, 4 * 16 * 16, RT_FLOAT, 0, g);
         rtRenderFrame();
@@ -710,7 +735,7 @@ static void static_scene(void)
             rtGetObjectfv(A, RT_OBJECT_UPDATE_TIME, &ms);
             CHECK(ms >= 0.0f);
         }
-        /* (-0.5, -0.5) is in A's first cell row... at z = -2.5 now. */
+        /* Both instances of A are at z = -2.5 now. */
         RThit h = tu_trace(-0.53f, -0.97f, 0, 0, 0, -1);
         CHECK_INT(h.object, A);
         CHECK_NEAR(h.t, 2.5f, 1e-6);
@@ -1065,22 +1090,6 @@ static void normal_updates(void)
 
 /* ---- when updates happen; the per-object counters --------------------------------- */
 
-/* Vertices of an 8 x 8 grid over [0, 1]^2 at height z, 4 per cell, corners
- * in RT_QUADS order (0,0) (1,0) (1,1) (0,1) or, for strips, (0,0) (0,1)
- * (1,0) (1,1). */
-static void grid_vertices(float *v, int strips, float z)
-{
-    static const int quad_corner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-    static const int strip_corner[4][2] = {{0, 0}, {0, 1}, {1, 0}, {1, 1}};
-    for (int k = 0; k < 4 * 64; k++) {
-        int cell = k / 4;
-        const int *c = strips ? strip_corner[k % 4] : quad_corner[k % 4];
-        v[3 * k] = (float)(cell % 8 + c[0]) / 8.0f;
-        v[3 * k + 1] = (float)(cell / 8 + c[1]) / 8.0f;
-        v[3 * k + 2] = z;
-    }
-}
-
 static RTint refits(RTuint o)
 {
     return obji(o, RT_OBJECT_REFITS);
@@ -1156,7 +1165,7 @@ static void lazy_and_counters(void)
     CHECK_NEAR(tu_trace_down(2.5f, 0.5f).t, 9.5f, 0.0);
 
     /* rtUpdateVertices under RT_REFIT: a refit too. */
-    grid_vertices(z, 0, 1.0f);
+    grid_vertices(z, 8, 0, 0, 1, 0, 1.0f);
     rtUpdateVertices(G, RT_VERTEX_ARRAY, 0, 4 * 8 * 8, RT_FLOAT, 0, z);
     rtRenderFrame();
     CHECK_INT(geti(RT_STAT_OBJECT_UPDATES), 1);
@@ -1166,7 +1175,7 @@ static void lazy_and_counters(void)
 
     /* Same vertex count, other triangles (a strip instead of quads): a
      * topology change, so a rebuild, lazily. */
-    grid_vertices(z, 1, 0.25f);
+    grid_vertices(z, 8, 0, 0, 1, 1, 0.25f);
     rtNewObject(G);
     for (int c = 0; c < 64; c++) {
         rtBegin(RT_TRIANGLE_STRIP);
@@ -1190,7 +1199,7 @@ static void lazy_and_counters(void)
         for (int i = 0; i < 2; i++) {
             RTint r0 = rebuilds(G), f0 = refits(G);
             rtObjectParameteri(G, RT_UPDATE_STRATEGY, (RTint)rebuild_strategies[i]);
-            grid_vertices(z, 1, (float)i);
+            grid_vertices(z, 8, 0, 0, 1, 1, (float)i);
             rtUpdateVertices(G, RT_VERTEX_ARRAY, 0, 4 * 8 * 8, RT_FLOAT, 0, z);
             rtFinish();
             CHECK_INT(obji(G, RT_UPDATE_STRATEGY), rebuild_strategies[i]);
@@ -1202,7 +1211,7 @@ static void lazy_and_counters(void)
     {
         RTint r0 = rebuilds(G), f0 = refits(G);
         rtObjectParameteri(G, RT_UPDATE_STRATEGY, RT_RESTRUCTURE);
-        grid_vertices(z, 1, 2.0f);
+        grid_vertices(z, 8, 0, 0, 1, 1, 2.0f);
         rtUpdateVertices(G, RT_VERTEX_ARRAY, 0, 4 * 8 * 8, RT_FLOAT, 0, z);
         rtFinish();
         CHECK_INT(obji(G, RT_UPDATE_STRATEGY), RT_RESTRUCTURE);
@@ -1213,7 +1222,7 @@ static void lazy_and_counters(void)
     {
         RTint r0 = rebuilds(G), f0 = refits(G);
         rtObjectParameteri(G, RT_UPDATE_STRATEGY, RT_REBUILD_HEURISTIC);
-        grid_vertices(z, 1, 3.0f);
+        grid_vertices(z, 8, 0, 0, 1, 1, 3.0f);
         rtUpdateVertices(G, RT_VERTEX_ARRAY, 0, 4 * 8 * 8, RT_FLOAT, 0, z);
         rtFinish();
         CHECK_INT(obji(G, RT_UPDATE_STRATEGY), RT_REBUILD_HEURISTIC);

@@ -580,6 +580,10 @@ static inline const char *da_strategy_name(RTenum s)
         return "RT_REBUILD_HEURISTIC";
     case RT_RESTRUCTURE:
         return "RT_RESTRUCTURE";
+#ifdef RT_ASYNC_REBUILD
+    case RT_ASYNC_REBUILD:
+        return "RT_ASYNC_REBUILD";
+#endif
     default:
         return "?";
     }

@@ -36,8 +36,16 @@
 #define RAY_COUNT 2000
 #define BIG_TRIS 200000
 
-static const RTenum strategies[] = {RT_REFIT,             RT_REBUILD,     RT_REBUILD_MEDIAN,
-                                    RT_REBUILD_HEURISTIC, RT_RESTRUCTURE, RT_AUTOMATIC};
+/* Every strategy (RT_ASYNC_REBUILD where the header has it). */
+static const RTenum strategies[] = {RT_REFIT,
+                                    RT_REBUILD,
+                                    RT_REBUILD_MEDIAN,
+                                    RT_REBUILD_HEURISTIC,
+                                    RT_RESTRUCTURE,
+#ifdef RT_ASYNC_REBUILD
+                                    RT_ASYNC_REBUILD,
+#endif
+                                    RT_AUTOMATIC};
 #define STRATEGY_COUNT ((int)(sizeof(strategies) / sizeof(strategies[0])))
 
 /* How a step changes the object. */

@@ -5,8 +5,9 @@
  * Three short procedural animations (dynamic_anim.h: an exploding sphere,
  * a waving cloth drawn with rtDrawElements, a morphing random soup) are
  * played for FRAMES frames under each strategy - RT_REFIT, RT_REBUILD,
- * RT_REBUILD_MEDIAN, RT_REBUILD_HEURISTIC, RT_RESTRUCTURE, RT_AUTOMATIC -
- * and each strategy twice: animated by rtUpdateVertices with the strategy
+ * RT_REBUILD_MEDIAN, RT_REBUILD_HEURISTIC, RT_RESTRUCTURE, RT_ASYNC_REBUILD
+ * (whose background builds land whenever they finish, so its tree shapes
+ * vary from run to run), RT_AUTOMATIC - and each strategy twice: animated by rtUpdateVertices with the strategy
  * given as a per-object hint (rtObjectParameteri), and animated by
  * redefinition with the same topology with the strategy given as the
  * context default (rtRenderParameteri).  Each run has its own context
@@ -26,7 +27,9 @@
  *     prepares the frame and 0 for the next call, RT_OBJECT_BUILT is
  *     RT_TRUE, RT_UPDATE_STRATEGY names the strategy used (a concrete one
  *     for RT_AUTOMATIC), and each update counts once in RT_OBJECT_REFITS or
- *     RT_OBJECT_REBUILDS (a rebuild strategy only in RT_OBJECT_REBUILDS).
+ *     RT_OBJECT_REBUILDS (a rebuild strategy only in RT_OBJECT_REBUILDS;
+ *     the rebuild heuristic and the asynchronous rebuild may count a refit
+ *     and a rebuild).
  *
  * Reference: docs/dynamic.md.
  */
@@ -42,8 +45,16 @@
 
 enum method { BY_UPDATE, BY_REDEFINITION };
 
-static const RTenum strategies[] = {RT_REFIT,             RT_REBUILD,     RT_REBUILD_MEDIAN,
-                                    RT_REBUILD_HEURISTIC, RT_RESTRUCTURE, RT_AUTOMATIC};
+/* Every strategy (RT_ASYNC_REBUILD where the header has it). */
+static const RTenum strategies[] = {RT_REFIT,
+                                    RT_REBUILD,
+                                    RT_REBUILD_MEDIAN,
+                                    RT_REBUILD_HEURISTIC,
+                                    RT_RESTRUCTURE,
+#ifdef RT_ASYNC_REBUILD
+                                    RT_ASYNC_REBUILD,
+#endif
+                                    RT_AUTOMATIC};
 #define STRATEGY_COUNT ((int)(sizeof(strategies) / sizeof(strategies[0])))
 
 static const int kinds[] = {DA_SPHERE, DA_CLOTH, DA_SOUP};
@@ -65,6 +76,10 @@ static RTint object_int(RTuint name, RTenum pname)
 
 static int is_concrete_strategy(RTint s)
 {
+#ifdef RT_ASYNC_REBUILD
+    if (s == RT_ASYNC_REBUILD)
+        return 1;
+#endif
     return s == RT_REFIT || s == RT_REBUILD || s == RT_REBUILD_MEDIAN ||
            s == RT_REBUILD_HEURISTIC || s == RT_RESTRUCTURE;
 }
@@ -87,8 +102,10 @@ static void check_bookkeeping(RTenum strategy, const RTint before[][2])
         if (used == RT_REBUILD || used == RT_REBUILD_MEDIAN) {
             CHECK_INT(rebuilds, 1);
             CHECK_INT(refits, 0);
-        } else if (used == RT_REBUILD_HEURISTIC) {
-            /* A refit, and a rebuild when the SAH cost degraded. */
+        } else if (used != RT_REFIT && used != RT_RESTRUCTURE) {
+            /* The rebuild heuristic: a refit, and a rebuild when the SAH
+             * cost degraded; the asynchronous rebuild: a refit, and the
+             * swap of a tree built in the background when one landed. */
             CHECK(refits + rebuilds >= 1 && refits <= 1 && rebuilds <= 1);
         } else {
             CHECK_INT(refits + rebuilds, 1);

@@ -34,8 +34,16 @@
 
 enum method { BY_UPDATE, BY_REDEFINITION };
 
-static const RTenum strategies[] = {RT_REFIT,             RT_REBUILD,     RT_REBUILD_MEDIAN,
-                                    RT_REBUILD_HEURISTIC, RT_RESTRUCTURE, RT_AUTOMATIC};
+/* Every strategy (RT_ASYNC_REBUILD where the header has it). */
+static const RTenum strategies[] = {RT_REFIT,
+                                    RT_REBUILD,
+                                    RT_REBUILD_MEDIAN,
+                                    RT_REBUILD_HEURISTIC,
+                                    RT_RESTRUCTURE,
+#ifdef RT_ASYNC_REBUILD
+                                    RT_ASYNC_REBUILD,
+#endif
+                                    RT_AUTOMATIC};
 #define STRATEGY_COUNT ((int)(sizeof(strategies) / sizeof(strategies[0])))
 
 static const int kinds[] = {DA_BIG, DA_SPHERE, DA_CLOTH, DA_SOUP, DA_POPPER};

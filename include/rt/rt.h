@@ -149,6 +149,8 @@ typedef struct rt_context *RTcontext;
 #define RT_OBJECT_COUNT 0x8F32       /* live objects */
 #define RT_INSTANCE_COUNT 0x8F33     /* instances in the current scene */
 #define RT_WORKER_THREADS_RUNNING 0x8F34 /* threads the context has started */
+#define RT_BUILD_THREADS 0x8F35      /* K of "build_threads=K" */
+#define RT_BUILD_THREADS_RUNNING 0x8F36 /* asynchronous build threads started */
 /* Per-frame statistics: counters are for the last rtRenderFrame /
  * rtTraceRays / rtOccludedRays call, times in milliseconds. */
 #define RT_STAT_RAYS 0x8F40
@@ -189,6 +191,7 @@ typedef struct rt_context *RTcontext;
 #define RT_REBUILD_MEDIAN 0x8F66      /* spatial-median (BIH-like) rebuild every frame */
 #define RT_REBUILD_HEURISTIC 0x8F67   /* refit; rebuild when SAH cost degraded */
 #define RT_RESTRUCTURE 0x8F68         /* selective restructuring (paper 001) */
+#define RT_ASYNC_REBUILD 0x8F69       /* refit while K threads rebuild (paper 000 sec. 6) */
 
 /* ---- Ray queries ----------------------------------------------------- */
 /* A ray: points org + t*dir for t in [tmin, tmax].  dir need not be

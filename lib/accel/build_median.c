@@ -4,10 +4,16 @@
  *
  * Paper 000 table 1 compares the sweep SAH, the binned SAH and a
  * "median-split BIH-style build" (Wachter and Keller 2006): the median
- * build is about 2x faster than 16-bin binning and gives 72-87% of the
- * render speed.  It is the cheapest rebuild the runtime has, and what the
- * grid-based parallel build uses below its grid (paper 000 sec. 5,
- * "grid+BIH").
+ * build is 1.7-3.3x faster than 16-bin binning and gives 72-87% of the
+ * sweep build's render speed.  It is the cheapest rebuild the runtime
+ * has, and what the grid-based parallel build uses below its grid (paper
+ * 000 sec. 5, "grid+BIH").
+ *
+ * Unlike a BIH, a small node (at most max_leaf_size primitives) keeps its
+ * split only when the SAH favours it, which costs nothing but the node's
+ * own partition and buys most of the gap to the SAH builders (measured
+ * on 1M triangles: cost 1.10x the sweep build's with it, ~1.3x with
+ * leaves cut at max_leaf_size as a BIH would).
  *
  * Each node makes one pass over its primitives: the partition at the
  * middle of the centroid bounds' longest axis computes both children's
@@ -47,9 +53,10 @@ void build_leaf_tolerance(const struct bvh_build_params *params,
 {
     /* Paper 004 sec. 4.3: "the deeper the subdivision, the more triangles
      * will be tolerated per cell ... increase the tolerance threshold by
-     * a constant factor for each level".  Starting at 1 (not at the
-     * paper's "2 or 3 triangles per cell"): below the tolerance our
-     * builders still let the SAH decide, which is the static criterion. */
+     * a constant factor for each level".  Starting at 1, not at the
+     * paper's "2 or 3 triangles per cell": where the tolerance makes no
+     * leaf our builders still let the SAH decide (the static criterion),
+     * so that a factor of 1 is exactly the static build. */
     const uint32_t cap = (uint32_t)params->max_leaf_size;
     float g = params->leaf_growth;
     float t = 1.0f;

@@ -75,6 +75,9 @@ static int parse_configuration(struct rt_context *ctx, const char *config)
         if (key_is(key, key_len, "threads")) {
             if (parse_int(value, value_len, 1, RT_MAX_THREADS, &ctx->threads))
                 return -1;
+        } else if (key_is(key, key_len, "build_threads")) {
+            if (parse_int(value, value_len, 0, RT_MAX_THREADS, &ctx->build_threads))
+                return -1;
         } else if (key_is(key, key_len, "bins")) {
             if (parse_int(value, value_len, 2, BVH_MAX_BINS, &ctx->build_params.bins))
                 return -1;
@@ -128,13 +131,15 @@ RTcontext rtCreateContext(const char *configuration)
     if (!ctx)
         return NULL;
     ctx->threads = online_cpus();
+    ctx->build_threads = 1; /* paper 000 sec. 6: K set by the application */
     bvh_build_params_default(&ctx->build_params);
     if (parse_configuration(ctx, configuration)) {
         rt_free(ctx);
         return NULL;
     }
-    snprintf(ctx->configuration, sizeof(ctx->configuration), "threads=%d bins=%d builder=%s",
-             ctx->threads, ctx->build_params.bins,
+    snprintf(ctx->configuration, sizeof(ctx->configuration),
+             "threads=%d build_threads=%d bins=%d builder=%s", ctx->threads, ctx->build_threads,
+             ctx->build_params.bins,
              ctx->build_params.builder == BVH_BUILDER_SWEEP_SAH ? "sweep" : "binned");
     const char *debug = getenv("TRACELIST_DEBUG");
     ctx->debug_print = debug && *debug && strcmp(debug, "0") != 0;
@@ -151,6 +156,7 @@ RTcontext rtCreateContext(const char *configuration)
     scene_material_default(&ctx->material);
     ctx->recording.mesh.bounds = aabb_empty();
     scene_objects_init(&ctx->objects);
+    scene_async_init(&ctx->async, ctx->build_threads, &ctx->build_params);
     scene_frame_init(&ctx->frame);
     render_state_init(&ctx->render);
     return ctx;
@@ -167,6 +173,11 @@ void rtDestroyContext(RTcontext ctx)
     if (current_context == ctx)
         current_context = NULL;
     rt_pool_destroy(ctx->pool);
+    /* Jobs first (their objects go next), then the build thread. */
+    for (uint32_t i = 0; i < ctx->objects.capacity; i++)
+        if (ctx->objects.slots[i])
+            scene_async_cancel(&ctx->async, ctx->objects.slots[i]);
+    scene_async_release(&ctx->async);
     scene_mesh_release(&ctx->recording.mesh);
     scene_frame_release(&ctx->frame);
     scene_objects_release(&ctx->objects);

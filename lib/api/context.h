@@ -15,6 +15,7 @@
 
 #include "accel/bvh.h"
 #include "render/render.h"
+#include "scene/async_build.h"
 #include "scene/frame.h"
 #include "scene/mesh.h"
 #include "scene/object.h"
@@ -101,6 +102,8 @@ struct rt_context {
     struct accel_restructure_params restructure_params; /* measured on first use */
     int restructure_measured;
     uint64_t last_frame_rays; /* rays of the last rtRenderFrame */
+    struct scene_async_builder async; /* thread started by the first async object */
+    int build_threads;                /* K of build_threads=K */
     struct scene_objects objects;
     struct scene_frame frame;
 

@@ -136,6 +136,7 @@ int rt_prepare_scene(struct rt_context *ctx, const char *caller)
     ctx->update_config.default_strategy = ctx->default_strategy;
     ctx->update_config.pool = rt_context_pool(ctx);
     ctx->update_config.restructure = &ctx->restructure_params;
+    ctx->update_config.async = &ctx->async;
     return update_objects(ctx, caller);
 }
 

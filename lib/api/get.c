@@ -83,6 +83,12 @@ static enum value_kind state_values(const struct rt_context *ctx, RTenum pname, 
     case RT_WORKER_THREADS_RUNNING:
         v[0] = ctx->pool ? rt_pool_threads(ctx->pool) - 1 : 0;
         return VALUE_INT;
+    case RT_BUILD_THREADS:
+        v[0] = ctx->build_threads;
+        return VALUE_INT;
+    case RT_BUILD_THREADS_RUNNING:
+        v[0] = scene_async_threads_running(&ctx->async);
+        return VALUE_INT;
     case RT_SHADING_MODE:
         v[0] = ctx->render.shading == RENDER_WHITTED ? RT_WHITTED : RT_EYE_LIGHT;
         return VALUE_INT;

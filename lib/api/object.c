@@ -93,6 +93,7 @@ void rtDeleteObjects(RTsizei n, const RTuint *names)
         if (!object)
             continue; /* 0 and unknown names are ignored, as glDeleteLists */
         scene_frame_forget_object(&ctx->frame, object);
+        scene_async_cancel(&ctx->async, object);
         scene_objects_remove(&ctx->objects, names[i]);
     }
 }
@@ -244,6 +245,7 @@ int rt_strategy_is_valid(RTenum s)
     case RT_REBUILD_MEDIAN:
     case RT_REBUILD_HEURISTIC:
     case RT_RESTRUCTURE:
+    case RT_ASYNC_REBUILD:
         return 1;
     default:
         return 0;

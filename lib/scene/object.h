@@ -44,6 +44,7 @@ struct scene_object {
     uint64_t changed_frame;   /* frame of the last geometry change */
     uint64_t moved_frame;     /* frame in which an instance of it last moved */
     uint64_t visit_stamp;     /* scene preparation that last classified it */
+    struct scene_async_job *async_job; /* asynchronous rebuild in flight (async_build.h) */
     /* Rays expected to reach it per frame: the last frame's rays times the
      * SAH probability of hitting its largest instance box (MacDonald and
      * Booth 1990); paper 001 sec. 4.1.1 scales its benefits by this. */
@@ -62,6 +63,8 @@ struct scene_object {
     pthread_mutex_t build_lock;
     struct scene_accel *accel; /* NULL until built; read with acquire loads */
 };
+
+struct scene_async_job;
 
 struct scene_objects {
     struct scene_object **slots; /* open addressing on name, NULL = free */

@@ -150,6 +150,40 @@ static int restructure(struct scene_object *object, const struct bvh_build_param
 }
 
 
+/*
+ * Paper 000 sec. 6: swap in a build that has landed, refit whatever
+ * structure is current to the current vertices, and keep the build
+ * threads busy with the newest snapshot.  Without build threads this is
+ * the rebuild heuristic.
+ */
+static int async_rebuild(struct scene_object *object, const struct bvh_build_params *params,
+                         const struct scene_update_config *config)
+{
+    struct scene_async_builder *async = config->async;
+    if (!async || async->threads == 0) {
+        object->last_strategy = RT_REBUILD_HEURISTIC;
+        refit(object, params, config->pool);
+        if (object->accel->sah_cost > REBUILD_HEURISTIC_THRESHOLD * object->accel->built_sah_cost)
+            return rebuild(object, params, 0, config->pool);
+        return 0;
+    }
+    struct scene_accel *landed = scene_async_collect(async, object);
+    if (landed && landed->topology == object->topology_serial) {
+        struct scene_accel *old = object->accel;
+        __atomic_store_n(&object->accel, landed, __ATOMIC_RELEASE);
+        scene_accel_release(old);
+        object->rebuilds++;
+    } else {
+        scene_accel_release(landed); /* built for an old connectivity */
+    }
+    /* A landed tree was built from vertices one or more frames old. */
+    if (object->accel->serial != object->serial)
+        refit(object, params, config->pool);
+    /* Failing to queue only delays the next rebuild. */
+    scene_async_request(async, object);
+    return 0;
+}
+
 const struct scene_accel *scene_object_update(struct scene_object *object,
                                               const struct scene_update_config *config)
 {
@@ -191,6 +225,9 @@ const struct scene_accel *scene_object_update(struct scene_object *object,
             break;
         case RT_RESTRUCTURE:
             status = restructure(object, &dynamic, config->restructure);
+            break;
+        case RT_ASYNC_REBUILD:
+            status = async_rebuild(object, &dynamic, config);
             break;
         default: /* RT_REBUILD */
             status = rebuild(object, &dynamic, 0, config->pool);

@@ -25,6 +25,7 @@
 #define RT_SCENE_UPDATE_H
 
 #include "base/pool.h"
+#include "scene/async_build.h"
 #include "scene/object.h"
 
 struct scene_update_config {
@@ -34,6 +35,9 @@ struct scene_update_config {
     /* Selective restructuring's machine constants (paper 001 sec. 6.1),
      * measured by the context the first time an object restructures. */
     const struct accel_restructure_params *restructure;
+    /* Asynchronous rebuilds (paper 000 sec. 6); threads == 0 disables
+     * them and RT_ASYNC_REBUILD then behaves as RT_REBUILD_HEURISTIC. */
+    struct scene_async_builder *async;
 };
 
 /*
