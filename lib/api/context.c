@@ -145,6 +145,9 @@ RTcontext rtCreateContext(const char *configuration)
     ctx->debug_print = debug && *debug && strcmp(debug, "0") != 0;
 
     ctx->default_strategy = RT_AUTOMATIC;
+    /* Until a frame has been measured: 5 ns a step, this machine's order
+     * of magnitude (bench/rtbench trace). */
+    ctx->ms_per_test = 5e-6;
     accel_restructure_params_default(&ctx->restructure_params);
     ctx->matrix_mode = RT_MODELVIEW;
     matrix_stack_init(&ctx->modelview, RT_MAX_MODELVIEW_DEPTH);

@@ -102,6 +102,7 @@ struct rt_context {
     struct accel_restructure_params restructure_params; /* measured on first use */
     int restructure_measured;
     uint64_t last_frame_rays; /* rays of the last rtRenderFrame */
+    double ms_per_test;       /* traversal step time, measured per frame */
     struct scene_async_builder async; /* thread started by the first async object */
     int build_threads;                /* K of build_threads=K */
     struct scene_objects objects;

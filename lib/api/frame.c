@@ -137,6 +137,7 @@ int rt_prepare_scene(struct rt_context *ctx, const char *caller)
     ctx->update_config.pool = rt_context_pool(ctx);
     ctx->update_config.restructure = &ctx->restructure_params;
     ctx->update_config.async = &ctx->async;
+    ctx->update_config.ms_per_test = ctx->ms_per_test;
     return update_objects(ctx, caller);
 }
 
@@ -176,6 +177,12 @@ void rtRenderFrame(void)
     scene_frame_end(&ctx->frame);
     ctx->frame_number++;
     ctx->last_frame_rays = ctx->stats.rays;
+    /* The exchange rate of the automatic strategy: time per traversal
+     * step, measured over the frame's tracing (updates excluded). */
+    uint64_t tests = ctx->stats.node_tests + ctx->stats.triangle_tests;
+    double trace_ms = ctx->stats.render_ms - ctx->stats.update_ms - ctx->stats.toplevel_ms;
+    if (tests > 10000 && trace_ms > 0.0)
+        ctx->ms_per_test = trace_ms / (double)tests;
     ctx->stats.render_ms = rt_now_ms() - start;
 }
 

@@ -83,6 +83,9 @@ static enum value_kind state_values(const struct rt_context *ctx, RTenum pname, 
     case RT_WORKER_THREADS_RUNNING:
         v[0] = ctx->pool ? rt_pool_threads(ctx->pool) - 1 : 0;
         return VALUE_INT;
+    case RT_UPDATE_STRATEGY:
+        v[0] = ctx->default_strategy;
+        return VALUE_INT;
     case RT_BUILD_THREADS:
         v[0] = ctx->build_threads;
         return VALUE_INT;

@@ -23,16 +23,9 @@
  * thread: waking the pool costs more than the work. */
 #define PARALLEL_UPDATE_MIN_TRIANGLES 20000u
 
-/* The strategy the automatic choice makes until a measured cost model
- * picks per object (issue: dynamic scenes, strategy 6): the rebuild
- * heuristic, which is never far from the better of refit-only and
- * rebuild-every-frame on paper 000's fig. 3 animations. */
-#define AUTOMATIC_FALLBACK_STRATEGY RT_REBUILD_HEURISTIC
-
 unsigned scene_object_strategy(const struct scene_object *object, unsigned default_strategy)
 {
-    unsigned s = object->strategy_hint != RT_AUTOMATIC ? object->strategy_hint : default_strategy;
-    return s == RT_AUTOMATIC ? AUTOMATIC_FALLBACK_STRATEGY : s;
+    return object->strategy_hint != RT_AUTOMATIC ? object->strategy_hint : default_strategy;
 }
 
 static struct aabb *triangle_boxes(const struct scene_mesh *mesh)
@@ -184,6 +177,39 @@ static int async_rebuild(struct scene_object *object, const struct bvh_build_par
     return 0;
 }
 
+/*
+ * RT_AUTOMATIC: the choice paper 000 (sec. 7.5) leaves open, made from
+ * measured costs.  Refit first (it is needed to know how far the tree has
+ * degraded and costs O(n)); then rebuild when the traversal time the
+ * rebuild would save this frame exceeds what the rebuild costs:
+ *
+ *   expected_rays * time_per_test * (SAH_refit - SAH_fresh) > build_ms
+ *
+ * SAH costs are in traversal steps per ray reaching the object (our SAH
+ * is normalised by the root area, so a fresh build's cost after the last
+ * rebuild estimates the next one's); time_per_test is measured from the
+ * last frame (render time over node and triangle tests); build_ms is the
+ * object's last build.  A mildly deforming object (cloth) never pays for
+ * a rebuild and stays refit-only; an exploding one rebuilds as soon as
+ * its rays make the rebuild worth it.  Restructuring and asynchronous
+ * rebuilds stay explicit choices: their cost depends on the K threads the
+ * application sets aside, which the model cannot see.
+ */
+static int automatic(struct scene_object *object, const struct bvh_build_params *params,
+                     const struct scene_update_config *config)
+{
+    refit(object, params, config->pool);
+    const struct scene_accel *accel = object->accel;
+    double saved_ms = object->expected_rays * config->ms_per_test *
+                      (accel->sah_cost - accel->built_sah_cost);
+    if (saved_ms > accel->build_ms) {
+        object->last_strategy = RT_REBUILD;
+        return rebuild(object, params, 0, config->pool);
+    }
+    object->last_strategy = RT_REFIT;
+    return 0;
+}
+
 const struct scene_accel *scene_object_update(struct scene_object *object,
                                               const struct scene_update_config *config)
 {
@@ -204,7 +230,10 @@ const struct scene_accel *scene_object_update(struct scene_object *object,
         object->last_strategy = 0;
     } else if (accel->topology != object->topology_serial || object->class_hint == RT_STATIC ||
                object->class_hint == RT_AFFINE) {
-        status = rebuild(object, quality, 0, config->pool);
+        /* New connectivity, or hinted rigid: a full build, with the fast
+         * builder for what changes every frame. */
+        int unstructured = object->current_class == RT_UNSTRUCTURED;
+        status = rebuild(object, unstructured ? &dynamic : quality, 0, config->pool);
         object->last_strategy = RT_REBUILD;
     } else {
         unsigned strategy = scene_object_strategy(object, config->default_strategy);
@@ -228,6 +257,9 @@ const struct scene_accel *scene_object_update(struct scene_object *object,
             break;
         case RT_ASYNC_REBUILD:
             status = async_rebuild(object, &dynamic, config);
+            break;
+        case RT_AUTOMATIC:
+            status = automatic(object, &dynamic, config);
             break;
         default: /* RT_REBUILD */
             status = rebuild(object, &dynamic, 0, config->pool);

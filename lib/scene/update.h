@@ -16,6 +16,10 @@
  *                          after the last build (the RT-DEFORM rebuild
  *                          heuristic, paper 000 sec. 2)
  *   RT_RESTRUCTURE         selective restructuring (paper 001)
+ *   RT_ASYNC_REBUILD       refit while build threads rebuild (paper 000
+ *                          sec. 6; async_build.h)
+ *   RT_AUTOMATIC           refit, or rebuild when the measured traversal
+ *                          time it saves exceeds its measured cost
  *
  * A changed connectivity always means a full rebuild.  Objects hinted
  * RT_STATIC or RT_AFFINE are rebuilt with the high-quality static builder.
@@ -38,6 +42,10 @@ struct scene_update_config {
     /* Asynchronous rebuilds (paper 000 sec. 6); threads == 0 disables
      * them and RT_ASYNC_REBUILD then behaves as RT_REBUILD_HEURISTIC. */
     struct scene_async_builder *async;
+    /* Measured time of one traversal step (node or triangle test), ms:
+     * the automatic strategy's exchange rate between tree quality and
+     * time. */
+    double ms_per_test;
 };
 
 /*
