@@ -1,0 +1,297 @@
+/*
+ * bench.h - what the pieces of rtbench share: meshes, ray sets, our
+ * acceleration structure, the parallel ray loop, statistics and the
+ * report.
+ *
+ * Conventions:
+ *   - A mesh is indexed: triangle j has vertex indices indices[3j..3j+2]
+ *     into positions (xyz per vertex), exactly what accel_gather_triangles
+ *     and Embree's UINT3 index buffer take.
+ *   - Rays are RTray (rt.h) in every path, ours and Embree's: org, tmin,
+ *     dir, tmax, dir not normalised, hits accepted for tmin <= t < tmax.
+ *   - A hit record is struct bench_hit: t = +inf and prim = BENCH_MISS on a
+ *     miss, so two paths are compared record by record (bench_compare_hits).
+ *   - Times are milliseconds (rt_now_ms), reported as the median of runs.
+ *
+ * Nothing here is part of the library; rtbench may use its internals
+ * (lib/accel, lib/trace) because it links the static core.
+ */
+#ifndef RT_BENCH_BENCH_H
+#define RT_BENCH_BENCH_H
+
+#include <rt/rt.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#include "accel/bvh.h"
+#include "base/aabb.h"
+#include "trace/trace.h"
+
+/* ------------------------------------------------------------ options */
+
+struct bench_options {
+    int quick;            /* --quick: toy sizes, a smoke test, numbers mean nothing */
+    int runs;             /* --runs N: timings are the median of N runs */
+    const char *out_dir;  /* --out DIR: results.md, results.csv, plots; NULL = stdout only */
+    const char *mesh;     /* --mesh NAME: only this workload; NULL = all */
+    const char *baseline; /* --baseline FILE: an earlier results.csv to compare with */
+    double tolerance;     /* --tolerance PCT: a drop beyond it is flagged */
+    int argc;
+    char **argv;
+};
+
+/* ------------------------------------------------------------ meshes */
+
+/* A pinhole camera: primary ray (x, y) of a w x h image goes from eye
+ * through eye + forward + (2(x+.5)/w - 1) tan_x right + (1 - 2(y+.5)/h)
+ * tan_y up; forward, right, up orthonormal. */
+struct bench_camera {
+    float eye[3];
+    float forward[3];
+    float right[3];
+    float up[3];
+    float tan_x; /* tan of half the horizontal field of view */
+};
+
+struct bench_mesh {
+    const char *name;        /* "bumpy", "gears", "soup": table and csv key */
+    const char *description; /* one line for the report */
+    float *positions;        /* 3 floats per vertex */
+    uint32_t *indices;       /* 3 per triangle */
+    uint32_t vertex_count;
+    uint32_t tri_count;
+    struct aabb bounds;
+    struct bench_camera camera;
+    float light[3]; /* point light for shadow rays, outside the bounds */
+};
+
+enum bench_mesh_kind { BENCH_MESH_BUMPY, BENCH_MESH_GEARS, BENCH_MESH_SOUP, BENCH_MESH_COUNT };
+
+/* Generates a workload (mesh_gen.c); quick selects the smoke-test size.
+ * Deterministic: the same kind and size give the same floats every run;
+ * across machines only libm's sin/cos rounding (bumpy, gears) can differ
+ * in the last bit.  Returns 0, or -1 on allocation failure with *mesh
+ * zeroed. */
+int bench_mesh_generate(struct bench_mesh *mesh, enum bench_mesh_kind kind, int quick);
+void bench_mesh_release(struct bench_mesh *mesh);
+
+/* The triangles' boxes, as a builder takes them; NULL on failure
+ * (free()). */
+struct aabb *bench_mesh_boxes(const struct bench_mesh *mesh);
+
+/* ------------------------------------------------------------ rays */
+
+struct bench_rays {
+    const char *name; /* "primary", "random", "shadow" */
+    RTray *rays;
+    uint32_t count;
+    uint32_t width, height; /* primary: image size; else 0 */
+};
+
+/* The trace ray sets (bench_trace.c and bench_embree.c use the same):
+ * full run and --quick. */
+#define BENCH_PRIMARY_WIDTH 1024
+#define BENCH_PRIMARY_HEIGHT 768
+#define BENCH_PRIMARY_WIDTH_QUICK 160
+#define BENCH_PRIMARY_HEIGHT_QUICK 120
+#define BENCH_RANDOM_RAYS 500000
+#define BENCH_RANDOM_RAYS_QUICK 20000
+#define BENCH_RANDOM_SEED 0x7261793Bu
+
+/* Generates the three trace sets of a mesh: primary, random, and shadow
+ * rays from the primary hits of `acc` (closest hits, one thread).
+ * Returns 0, or -1 on allocation failure with all three released. */
+struct bench_accel;
+int bench_rays_trace_sets(struct bench_rays sets[3], const struct bench_mesh *mesh,
+                          const struct bench_accel *acc, int quick);
+
+/* Splitmix64 (Steele, Lea and Flood 2014): a small, seedable generator,
+ * identical everywhere, so ray sets and meshes are reproducible. */
+struct bench_rng {
+    uint64_t state;
+};
+void bench_rng_seed(struct bench_rng *rng, uint64_t seed);
+uint64_t bench_rng_next(struct bench_rng *rng);
+float bench_rng_float(struct bench_rng *rng); /* uniform in [0, 1) */
+
+/* The generators return 0, or -1 on allocation failure (set zeroed).
+ * Primary rays: one per pixel, row by row, tmin 0, tmax +inf. */
+int bench_rays_primary(struct bench_rays *set, const struct bench_mesh *mesh, uint32_t width,
+                       uint32_t height);
+/* Incoherent rays: origins uniform in the mesh bounds, directions uniform
+ * on the sphere, tmin 0, tmax +inf. */
+int bench_rays_random(struct bench_rays *set, const struct bench_mesh *mesh, uint32_t count,
+                      uint64_t seed);
+/* Shadow rays from the hit points of `primary` (hits from any correct
+ * closest-hit path) to mesh->light: dir = light - p, tmin a small epsilon
+ * against self-hits, tmax 1 (the light itself is never hit).  Rays that
+ * missed produce no shadow ray. */
+struct bench_hit;
+int bench_rays_shadow(struct bench_rays *set, const struct bench_mesh *mesh,
+                      const struct bench_rays *primary, const struct bench_hit *hits);
+void bench_rays_release(struct bench_rays *set);
+
+/* ------------------------------------------------------------ hits */
+
+#define BENCH_MISS 0xFFFFFFFFu
+
+struct bench_hit {
+    float t;       /* +inf on a miss */
+    uint32_t prim; /* BENCH_MISS on a miss; any-hit paths store 0 for "occluded" */
+};
+
+/* Agreement of two hit arrays (bench_compare_hits): a pair agrees when
+ * both miss, or both hit with |t_a - t_b| <= BENCH_T_TOLERANCE * max(1, |t_a|).
+ * Tolerance: Embree's Moeller-Trumbore-style test and our watertight
+ * test round differently, a few ulp of t; 1e-4 relative is far above
+ * that and far below any real disagreement (a different surface). */
+#define BENCH_T_TOLERANCE 1e-4f
+
+struct bench_agreement {
+    uint64_t compared;
+    uint64_t agree;         /* hit/miss and t agree */
+    uint64_t same_prim;     /* agree and the same primitive */
+    uint64_t hit_miss_diff; /* one hits, the other misses */
+};
+void bench_compare_hits(struct bench_agreement *a, const struct bench_hit *x,
+                        const struct bench_hit *y, uint32_t count, uint32_t stride);
+double bench_agreement_percent(const struct bench_agreement *a);
+
+/* ------------------------------------------------------------ our BVH */
+
+struct bench_accel {
+    struct bvh bvh;
+    float *tri; /* accel_gather_triangles */
+};
+
+/* Builds with the given parameters (boxes + build + gather).  Returns 0
+ * or -1 on allocation failure. */
+int bench_accel_build(struct bench_accel *acc, const struct bench_mesh *mesh,
+                      const struct bvh_build_params *params);
+void bench_accel_release(struct bench_accel *acc);
+
+/* ------------------------------------------------------------ ray loops */
+
+/*
+ * A kernel traces rays [begin, end) of a set and writes their hits.  It
+ * runs on `threads` threads (the caller plus threads - 1 pthreads) that
+ * take chunks of BENCH_CHUNK rays from a shared counter, so the split
+ * adapts to rays of uneven cost.  Returns the wall time in ms, or a
+ * negative value when a thread could not be started.
+ */
+#define BENCH_CHUNK 1024
+typedef void (*bench_kernel_fn)(void *ctx, const RTray *rays, uint32_t begin, uint32_t end,
+                                struct bench_hit *hits);
+double bench_run_parallel(bench_kernel_fn kernel, void *ctx, const struct bench_rays *set,
+                          struct bench_hit *hits, int threads);
+
+/* Kernels over our BVH (bench_trace.c).  ctx: const struct bench_accel *. */
+void bench_kernel_closest(void *ctx, const RTray *rays, uint32_t begin, uint32_t end,
+                          struct bench_hit *hits);
+void bench_kernel_any(void *ctx, const RTray *rays, uint32_t begin, uint32_t end,
+                      struct bench_hit *hits);
+
+/* Average node and triangle tests per ray of trace_closest over a set,
+ * single-threaded. */
+void bench_count_tests(const struct bench_accel *acc, const struct bench_rays *set,
+                       double *nodes_per_ray, double *tris_per_ray);
+
+/* ------------------------------------------------------------ statistics */
+
+/* CPU time of the whole process (all threads), ms. */
+double bench_cpu_ms(void);
+/* How much of the machine the timed runs got: each timed run adds its
+ * wall time, thread count and process CPU time; the share is CPU time /
+ * (wall time x threads), 100% when no other process took our cores (a
+ * 2-thread figure on a 2-core machine shared with a compiler is worth
+ * little, and this says so).  bench_run_parallel records its runs itself.
+ * bench_share_percent returns -1 when no run of that thread count was
+ * recorded since bench_share_reset; bench_share_report prints one line. */
+void bench_share_reset(void);
+void bench_share_add(int threads, double wall_ms, double cpu_ms);
+double bench_share_percent(int threads);
+void bench_share_report(void);
+
+/* Median of n values (n >= 1); reorders values. */
+double bench_median(double *values, int n);
+
+/* ------------------------------------------------------------ report */
+
+/* Opens the report: prints the header (machine, date, compiler, build
+ * type, commit, command line) to stdout and, with --out, to
+ * DIR/results.md.  Returns 0, or -1 when the output directory or file
+ * cannot be created (with a message on stderr). */
+int report_open(const struct bench_options *opts);
+/* Text for both stdout and results.md. */
+void report_printf(const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 1, 2)))
+#endif
+    ;
+/* A markdown table row from cells separated by '|' in fmt's output:
+ * report_row("%s|%.1f", a, b) prints "| a | 1.0 |". */
+void report_row(const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 1, 2)))
+#endif
+    ;
+/* A header row plus the separator line; cells as for report_row. */
+void report_table_header(const char *cells);
+/* Progress and notes for the person watching: stderr only. */
+void report_progress(const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 1, 2)))
+#endif
+    ;
+
+/* Records a named metric for results.csv and the --baseline comparison.
+ * higher_is_better: 1 for throughput, 0 for times and costs; -1 for
+ * values that are reported but never flagged. */
+void report_metric(const char *key, double value, int higher_is_better);
+
+/* Opens DIR/name for writing (a data file for a plot); NULL without --out
+ * or on error.  Close with fclose. */
+FILE *report_data_file(const char *name);
+/* Registers a gnuplot script (written to DIR/name.gp, run at the end to
+ * make DIR/name.png). */
+void report_plot(const char *name, const char *script);
+
+/* Counts a failed correctness check (answers that should agree do not);
+ * rtbench then exits with status 3, which fails the smoke test. */
+void report_check_failed(void);
+int report_check_failures(void);
+
+/* Finishes: compares with the baseline if any, writes results.csv, runs
+ * gnuplot (or says why plots were skipped), closes results.md.  Returns
+ * the number of metrics flagged against the baseline. */
+int report_close(void);
+
+/* sysinfo.c: one-line descriptions for the header. */
+void sysinfo_cpu(char *buf, size_t size);
+int sysinfo_cores(void);
+void sysinfo_date(char *buf, size_t size);
+void sysinfo_compiler(char *buf, size_t size);
+void sysinfo_commit(char *buf, size_t size);
+/* The command line without any directory part of argv[0], and with
+ * absolute paths shortened to ".../last-component", so a report never
+ * carries a path of the machine it ran on. */
+void sysinfo_command(char *buf, size_t size, int argc, char **argv);
+int sysinfo_have_program(const char *name);
+/* The three load averages of /proc/loadavg, or "unknown". */
+const char *sysinfo_loadavg(void);
+
+/* ------------------------------------------------------------ sections */
+
+int bench_build_section(const struct bench_options *opts, struct bench_mesh *meshes,
+                        int mesh_count);
+int bench_trace_section(const struct bench_options *opts, struct bench_mesh *meshes,
+                        int mesh_count);
+#ifdef RT_HAVE_EMBREE
+int bench_embree_section(const struct bench_options *opts, struct bench_mesh *meshes,
+                         int mesh_count);
+/* "3.13.5" etc., from the headers rtbench was compiled with. */
+const char *bench_embree_version(void);
+#endif
+
+#endif

@@ -1,0 +1,393 @@
+/*
+ * bench_embree.c - `rtbench embree`: the same meshes and the same rays
+ * through Embree 3 in the same process, side by side with ours (compiled
+ * only when CMake found Embree; RT_HAVE_EMBREE).
+ *
+ * Build: ours is the library default (binned SAH, BVH_DEFAULT_BINS bins),
+ * timed from triangles to a traceable structure (boxes + accel_build +
+ * accel_gather_triangles), one thread.  Embree: one triangle geometry in
+ * one scene, rtcCommitScene timed alone (the buffers are filled before
+ * the clock starts), at RTC_BUILD_QUALITY_MEDIUM (Embree's default) and
+ * RTC_BUILD_QUALITY_HIGH (spatial splits), on a device created with
+ * "threads=1" so that both builders use one thread.  A fresh scene per
+ * run: committing an unchanged scene does no work.
+ *
+ * Trace: rtcIntersect1 / rtcOccluded1 in a scalar loop, driven by the same
+ * bench_run_parallel as our kernels on 1 and 2 threads, over the same ray
+ * sets (RTray with tnear = tmin, tfar = tmax).  Runs are interleaved
+ * (ours, Embree MEDIUM, Embree HIGH, for each thread count) and each
+ * figure is a median.  Every answer is compared with ours ray by ray
+ * (hit/miss and t within BENCH_T_TOLERANCE): a comparison of speeds is
+ * only meaningful when the answers agree.
+ */
+#include <embree3/rtcore.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/timer.h"
+#include "bench.h"
+
+/* Embree's default (non-robust) triangle test may legitimately miss or
+ * hit a ray that grazes a shared edge where our watertight test does the
+ * opposite; anything beyond one ray in a thousand is a real difference. */
+#define EMBREE_MIN_AGREEMENT 99.9
+
+#define QUALITIES 2
+static const enum RTCBuildQuality qualities[QUALITIES] = {RTC_BUILD_QUALITY_MEDIUM,
+                                                          RTC_BUILD_QUALITY_HIGH};
+static const char *const quality_names[QUALITIES] = {"MEDIUM", "HIGH"};
+
+const char *bench_embree_version(void)
+{
+    return RTC_VERSION_STRING;
+}
+
+static void embree_error(void *user, enum RTCError code, const char *message)
+{
+    (void)user;
+    report_progress("rtbench: Embree error %d: %s\n", (int)code, message ? message : "");
+}
+
+/* A committed scene over the mesh; *commit_ms gets rtcCommitScene's time.
+ * NULL on failure. */
+static RTCScene embree_scene(RTCDevice device, const struct bench_mesh *mesh,
+                             enum RTCBuildQuality quality, double *commit_ms)
+{
+    RTCScene scene = rtcNewScene(device);
+    RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    if (!scene || !geom)
+        goto fail;
+    rtcSetSceneBuildQuality(scene, quality);
+    rtcSetGeometryBuildQuality(geom, quality);
+    /* New (Embree-owned) buffers rather than shared ones: Embree reads
+     * vertices with 16-byte loads and needs padding after the last one,
+     * which our arrays do not have. */
+    float *v = rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                       3 * sizeof(float), mesh->vertex_count);
+    unsigned *idx = rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                            3 * sizeof(unsigned), mesh->tri_count);
+    if (!v || !idx)
+        goto fail;
+    memcpy(v, mesh->positions, (size_t)mesh->vertex_count * 3 * sizeof(float));
+    memcpy(idx, mesh->indices, (size_t)mesh->tri_count * 3 * sizeof(unsigned));
+    rtcCommitGeometry(geom);
+    rtcAttachGeometry(scene, geom);
+    rtcReleaseGeometry(geom);
+    geom = NULL;
+    double cpu_start = bench_cpu_ms();
+    double start = rt_now_ms();
+    rtcCommitScene(scene);
+    *commit_ms = rt_now_ms() - start;
+    bench_share_add(1, *commit_ms, bench_cpu_ms() - cpu_start);
+    if (rtcGetDeviceError(device) != RTC_ERROR_NONE)
+        goto fail;
+    return scene;
+fail:
+    if (geom)
+        rtcReleaseGeometry(geom);
+    if (scene)
+        rtcReleaseScene(scene);
+    return NULL;
+}
+
+static void embree_kernel_closest(void *ctx, const RTray *rays, uint32_t begin, uint32_t end,
+                                  struct bench_hit *hits)
+{
+    RTCScene scene = ctx;
+    struct RTCIntersectContext ic;
+    rtcInitIntersectContext(&ic);
+    for (uint32_t i = begin; i < end; i++) {
+        const RTray *r = &rays[i];
+        struct RTCRayHit rh;
+        rh.ray.org_x = r->org[0];
+        rh.ray.org_y = r->org[1];
+        rh.ray.org_z = r->org[2];
+        rh.ray.tnear = r->tmin;
+        rh.ray.dir_x = r->dir[0];
+        rh.ray.dir_y = r->dir[1];
+        rh.ray.dir_z = r->dir[2];
+        rh.ray.time = 0.0f;
+        rh.ray.tfar = r->tmax;
+        rh.ray.mask = 0xFFFFFFFFu;
+        rh.ray.id = 0;
+        rh.ray.flags = 0;
+        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
+        rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+        rtcIntersect1(scene, &ic, &rh);
+        if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
+            hits[i].t = rh.ray.tfar;
+            hits[i].prim = rh.hit.primID;
+        } else {
+            hits[i].t = INFINITY;
+            hits[i].prim = BENCH_MISS;
+        }
+    }
+}
+
+static void embree_kernel_any(void *ctx, const RTray *rays, uint32_t begin, uint32_t end,
+                              struct bench_hit *hits)
+{
+    RTCScene scene = ctx;
+    struct RTCIntersectContext ic;
+    rtcInitIntersectContext(&ic);
+    for (uint32_t i = begin; i < end; i++) {
+        const RTray *r = &rays[i];
+        struct RTCRay ray;
+        ray.org_x = r->org[0];
+        ray.org_y = r->org[1];
+        ray.org_z = r->org[2];
+        ray.tnear = r->tmin;
+        ray.dir_x = r->dir[0];
+        ray.dir_y = r->dir[1];
+        ray.dir_z = r->dir[2];
+        ray.time = 0.0f;
+        ray.tfar = r->tmax;
+        ray.mask = 0xFFFFFFFFu;
+        ray.id = 0;
+        ray.flags = 0;
+        rtcOccluded1(scene, &ic, &ray);
+        /* Embree marks an occluded ray by setting tfar to -inf. */
+        int occluded = ray.tfar == -INFINITY;
+        hits[i].t = occluded ? 0.0f : INFINITY;
+        hits[i].prim = occluded ? 0 : BENCH_MISS;
+    }
+}
+
+/* Build times: ours and Embree's two qualities, interleaved runs. */
+static int embree_build_row(const struct bench_options *opts, RTCDevice device,
+                            const struct bench_mesh *mesh)
+{
+    double *times = malloc((size_t)(1 + QUALITIES) * opts->runs * sizeof(*times));
+    if (!times)
+        return -1;
+    for (int run = 0; run < opts->runs; run++) {
+        struct bench_accel acc;
+        double cpu_start = bench_cpu_ms();
+        double start = rt_now_ms();
+        int rc = bench_accel_build(&acc, mesh, NULL);
+        times[run] = rt_now_ms() - start;
+        bench_share_add(1, times[run], bench_cpu_ms() - cpu_start);
+        if (rc) {
+            free(times);
+            return -1;
+        }
+        bench_accel_release(&acc);
+        for (int q = 0; q < QUALITIES; q++) {
+            double ms;
+            RTCScene scene = embree_scene(device, mesh, qualities[q], &ms);
+            if (!scene) {
+                free(times);
+                return -1;
+            }
+            rtcReleaseScene(scene);
+            times[(1 + q) * opts->runs + run] = ms;
+        }
+    }
+    double med[1 + QUALITIES];
+    for (int i = 0; i < 1 + QUALITIES; i++)
+        med[i] = bench_median(&times[i * opts->runs], opts->runs);
+    report_row("%s|%u|%.2f|%.2f|%.2f|%.2f|%.2f", mesh->name, mesh->tri_count, med[0], med[1],
+               med[2], med[1] > 0 ? med[0] / med[1] : 0.0, med[2] > 0 ? med[0] / med[2] : 0.0);
+    char key[96];
+    snprintf(key, sizeof(key), "embree.%s.build.ours_ms", mesh->name);
+    report_metric(key, med[0], 0);
+    for (int q = 0; q < QUALITIES; q++) {
+        snprintf(key, sizeof(key), "embree.%s.build.embree_%s_ms", mesh->name, quality_names[q]);
+        report_metric(key, med[1 + q], -1);
+    }
+    free(times);
+    return 0;
+}
+
+struct trace_row {
+    double mrays[2][1 + QUALITIES]; /* [threads - 1][ours, MEDIUM, HIGH] */
+    struct bench_agreement agree[QUALITIES];
+};
+
+static int embree_trace_set(const struct bench_options *opts, struct bench_accel *acc,
+                            RTCScene scenes[QUALITIES], const struct bench_rays *set, int any_hit,
+                            struct bench_hit *ours, struct bench_hit *theirs, struct trace_row *row)
+{
+    const int paths = 2 * (1 + QUALITIES);
+    double *times = malloc((size_t)paths * opts->runs * sizeof(*times));
+    if (!times)
+        return -1;
+    memset(row, 0, sizeof(*row));
+    for (int run = 0; run < opts->runs; run++) {
+        for (int t = 0; t < 2; t++) {
+            for (int p = 0; p < 1 + QUALITIES; p++) {
+                double ms;
+                if (p == 0)
+                    ms = bench_run_parallel(any_hit ? bench_kernel_any : bench_kernel_closest, acc,
+                                            set, ours, t + 1);
+                else
+                    ms = bench_run_parallel(any_hit ? embree_kernel_any : embree_kernel_closest,
+                                            scenes[p - 1], set, theirs, t + 1);
+                if (ms < 0.0) {
+                    free(times);
+                    return -1;
+                }
+                times[(t * (1 + QUALITIES) + p) * opts->runs + run] = ms;
+                /* Compare once per quality: the answers do not change
+                 * from run to run. */
+                if (p > 0 && run == 0 && t == 0)
+                    bench_compare_hits(&row->agree[p - 1], ours, theirs, set->count, 1);
+            }
+        }
+    }
+    for (int t = 0; t < 2; t++) {
+        for (int p = 0; p < 1 + QUALITIES; p++) {
+            double ms = bench_median(&times[(t * (1 + QUALITIES) + p) * opts->runs], opts->runs);
+            row->mrays[t][p] = ms > 0.0 ? set->count / (ms * 1e3) : 0.0;
+        }
+    }
+    free(times);
+    return 0;
+}
+
+static int embree_trace_mesh(const struct bench_options *opts, RTCDevice device,
+                             const struct bench_mesh *mesh, FILE *plot_data)
+{
+    struct bench_accel acc;
+    struct bench_rays sets[3];
+    RTCScene scenes[QUALITIES] = {NULL, NULL};
+    struct bench_hit *ours = NULL, *theirs = NULL;
+    int rc = -1;
+    memset(sets, 0, sizeof(sets));
+    memset(&acc, 0, sizeof(acc));
+    if (bench_accel_build(&acc, mesh, NULL) || bench_rays_trace_sets(sets, mesh, &acc, opts->quick))
+        goto out;
+    for (int q = 0; q < QUALITIES; q++) {
+        double ms;
+        if (!(scenes[q] = embree_scene(device, mesh, qualities[q], &ms)))
+            goto out;
+    }
+    uint32_t max_rays = sets[0].count > sets[1].count ? sets[0].count : sets[1].count;
+    ours = malloc((size_t)max_rays * sizeof(*ours));
+    theirs = malloc((size_t)max_rays * sizeof(*theirs));
+    if (!ours || !theirs)
+        goto out;
+    for (int s = 0; s < 3; s++) {
+        struct trace_row row;
+        int any_hit = s == 2;
+        if (sets[s].count == 0)
+            continue;
+        report_progress("embree: %s: %s rays (%u)\n", mesh->name, sets[s].name, sets[s].count);
+        if (embree_trace_set(opts, &acc, scenes, &sets[s], any_hit, ours, theirs, &row))
+            goto out;
+        for (int t = 0; t < 2; t++) {
+            const double *m = row.mrays[t];
+            report_row("%s|%s%s|%d|%.3f|%.3f|%.3f|%.2f|%.2f|%.2f%%|%.2f%%|%.2f%%", mesh->name,
+                       sets[s].name, any_hit ? " (any hit)" : "", t + 1, m[0], m[1], m[2],
+                       m[1] > 0 ? m[0] / m[1] : 0.0, m[2] > 0 ? m[0] / m[2] : 0.0,
+                       bench_agreement_percent(&row.agree[0]),
+                       bench_agreement_percent(&row.agree[1]),
+                       row.agree[0].compared
+                           ? 100.0 * (double)row.agree[0].same_prim / row.agree[0].compared
+                           : 100.0);
+            char key[96];
+            snprintf(key, sizeof(key), "embree.%s.%s.%dt.ours_over_medium", mesh->name,
+                     sets[s].name, t + 1);
+            report_metric(key, m[1] > 0 ? m[0] / m[1] : 0.0, 1);
+            for (int q = 0; q < QUALITIES; q++) {
+                snprintf(key, sizeof(key), "embree.%s.%s.%dt.embree_%s", mesh->name, sets[s].name,
+                         t + 1, quality_names[q]);
+                report_metric(key, m[1 + q], -1);
+            }
+            if (plot_data)
+                fprintf(plot_data, "\"%s/%s %dT\" %.4f %.4f %.4f\n", mesh->name, sets[s].name,
+                        t + 1, m[0], m[1], m[2]);
+        }
+        for (int q = 0; q < QUALITIES; q++) {
+            char key[96];
+            snprintf(key, sizeof(key), "check.%s.%s.embree_%s_agree_pct", mesh->name, sets[s].name,
+                     quality_names[q]);
+            report_metric(key, bench_agreement_percent(&row.agree[q]), -1);
+            if (bench_agreement_percent(&row.agree[q]) < EMBREE_MIN_AGREEMENT) {
+                report_check_failed();
+                report_progress("embree: WARNING: %s/%s: Embree %s agrees with ours on only "
+                                "%.3f%% of rays (%llu hit/miss differences)\n",
+                                mesh->name, sets[s].name, quality_names[q],
+                                bench_agreement_percent(&row.agree[q]),
+                                (unsigned long long)row.agree[q].hit_miss_diff);
+            }
+        }
+    }
+    rc = 0;
+out:
+    if (rc)
+        report_progress("rtbench: embree: %s failed\n", mesh->name);
+    for (int q = 0; q < QUALITIES; q++) {
+        if (scenes[q])
+            rtcReleaseScene(scenes[q]);
+    }
+    for (int s = 0; s < 3; s++)
+        bench_rays_release(&sets[s]);
+    free(ours);
+    free(theirs);
+    bench_accel_release(&acc);
+    return rc;
+}
+
+int bench_embree_section(const struct bench_options *opts, struct bench_mesh *meshes,
+                         int mesh_count)
+{
+    RTCDevice device = rtcNewDevice("threads=1");
+    if (!device) {
+        report_printf("\n## Embree\n\nrtcNewDevice failed (error %d); section skipped.\n",
+                      (int)rtcGetDeviceError(NULL));
+        return -1;
+    }
+    rtcSetDeviceErrorFunction(device, embree_error, NULL);
+    int failed = 0;
+
+    report_printf("\n## Against Embree %s\n\n", RTC_VERSION_STRING);
+    report_printf("Build, one thread (Embree device \"threads=1\"), median of %d runs, ms. "
+                  "Ours: binned SAH %d bins, boxes + build + gather into leaf order (everything "
+                  "before the first ray). Embree: rtcCommitScene alone. \"ours/Embree\" is a "
+                  "time ratio: above 1 means we build slower.\n\n",
+                  opts->runs, BVH_DEFAULT_BINS);
+    report_table_header("mesh|triangles|ours ms|Embree MEDIUM ms|Embree HIGH ms|"
+                        "ours/MEDIUM|ours/HIGH");
+    bench_share_reset();
+    for (int m = 0; m < mesh_count; m++) {
+        report_progress("embree: %s: builds\n", meshes[m].name);
+        failed |= embree_build_row(opts, device, &meshes[m]) != 0;
+    }
+
+    report_printf("\nTrace, Mrays/s (median of %d runs), the trace section's ray sets; Embree "
+                  "through rtcIntersect1 / rtcOccluded1 in a scalar loop, both driven by the "
+                  "same thread split. \"ours/Embree\" is a throughput ratio: below 1 means we "
+                  "are slower. \"agree\": rays where Embree's answer equals ours (hit/miss and "
+                  "t within %g relative) over all rays of the set; \"same prim\": of those, "
+                  "the same triangle (MEDIUM).\n\n",
+                  opts->runs, (double)BENCH_T_TOLERANCE);
+    report_table_header("mesh|rays|threads|ours|Embree MEDIUM|Embree HIGH|ours/MEDIUM|"
+                        "ours/HIGH|agree MEDIUM|agree HIGH|same prim");
+    FILE *plot_data = report_data_file("embree.dat");
+    for (int m = 0; m < mesh_count; m++)
+        failed |= embree_trace_mesh(opts, device, &meshes[m], plot_data) != 0;
+    bench_share_report();
+    if (plot_data) {
+        fclose(plot_data);
+        report_plot("embree", "set terminal pngcairo size 1100,520 font ',10'\n"
+                              "set output 'embree.png'\n"
+                              "set title 'Ours against Embree (median), Mrays/s'\n"
+                              "set style data histograms\n"
+                              "set style histogram clustered gap 1\n"
+                              "set style fill solid 0.85 border -1\n"
+                              "set ylabel 'Mrays/s'\n"
+                              "set yrange [0:*]\n"
+                              "set xtics rotate by -35\n"
+                              "set bmargin 7\n"
+                              "set rmargin 8\n"
+                              "set key top right\n"
+                              "set grid ytics\n"
+                              "plot 'embree.dat' using 2:xtic(1) title 'ours', '' using 3 title "
+                              "'Embree MEDIUM', '' using 4 title 'Embree HIGH'\n");
+    }
+    rtcReleaseDevice(device);
+    return failed ? -1 : 0;
+}

@@ -1,0 +1,448 @@
+/*
+ * bench_trace.c - `rtbench trace`: rays per second, ours directly and
+ * through the public API.
+ *
+ * Per mesh, over one object BVH built with the library's defaults (binned
+ * SAH, BVH_DEFAULT_BINS bins), for primary rays (a pinhole camera), random
+ * incoherent rays (origins in the bounds, directions on the sphere) and
+ * shadow rays (primary hit points to a point light, any hit):
+ *
+ *   ours   trace_closest / trace_any called directly in bench_run_parallel
+ *          on 1 and 2 threads: the kernel's speed, no API in the way;
+ *   API    rtTraceRays / rtOccludedRays on a context created with
+ *          threads=1 / threads=2, the mesh defined with rtVertexPointer +
+ *          rtDrawArrays in one object instantiated once under the identity.
+ *          What an application gets: ray validation, the scene check, the
+ *          top level, the instance transform and the library's own thread
+ *          pool are all inside the time.
+ *
+ * The runs of the four paths are interleaved (run 1 of each, then run 2,
+ * ...) so a slow phase of a shared machine hits them alike; each figure is
+ * the median.  The API's answers are compared with ours ray by ray, and a
+ * sample of ours with the brute-force reference intersector
+ * (trace_closest_brute_force), so a fast wrong answer cannot pass as a
+ * result.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/timer.h"
+#include "bench.h"
+
+/* Brute-force check: at most this many triangle tests per ray set (about
+ * a second), at most BRUTE_MAX_RAYS rays. */
+#define BRUTE_MAX_TESTS 64000000.0
+#define BRUTE_MAX_RAYS 4096
+
+#define PATHS 4
+
+/* What a mesh's run leaves for the notes under the table. */
+struct mesh_notes {
+    float api_build_ms;    /* the API's on-demand object build */
+    double brute_agree[2]; /* primary, random: ours = brute force, percent */
+    uint32_t brute_sampled[2];
+};
+
+/* One context with the mesh defined as one object and instantiated once. */
+struct api_scene {
+    RTcontext ctx;
+    RTuint object;
+    int threads;
+    float build_ms;
+};
+
+/* Expands the indexed mesh into 9 floats per triangle for rtDrawArrays. */
+static float *flatten(const struct bench_mesh *mesh)
+{
+    float *flat = malloc((size_t)mesh->tri_count * 9 * sizeof(*flat));
+    if (!flat)
+        return NULL;
+    for (size_t j = 0; j < 3 * (size_t)mesh->tri_count; j++)
+        memcpy(&flat[3 * j], &mesh->positions[3 * (size_t)mesh->indices[j]], 3 * sizeof(float));
+    return flat;
+}
+
+static int api_scene_create(struct api_scene *s, const struct bench_mesh *mesh, const float *flat,
+                            int threads)
+{
+    char config[32];
+    memset(s, 0, sizeof(*s));
+    snprintf(config, sizeof(config), "threads=%d", threads);
+    s->threads = threads;
+    s->ctx = rtCreateContext(config);
+    if (!s->ctx || !rtMakeCurrent(s->ctx))
+        return -1;
+    rtGenObjects(1, &s->object);
+    rtNewObject(s->object);
+    rtEnableClientState(RT_VERTEX_ARRAY);
+    rtVertexPointer(3, RT_FLOAT, 0, flat);
+    rtDrawArrays(RT_TRIANGLES, 0, (RTsizei)(3 * mesh->tri_count));
+    rtDisableClientState(RT_VERTEX_ARRAY);
+    rtEndObject();
+    rtMatrixMode(RT_MODELVIEW);
+    rtLoadIdentity();
+    rtInstantiateObject(s->object);
+    /* The object BVH is built on demand when a ray first reaches the
+     * instance; shoot one from the camera at the centre of the bounds so
+     * that no timed call includes the build. */
+    RTray warm_up;
+    RThit hit;
+    RTint built = RT_FALSE;
+    for (int k = 0; k < 3; k++) {
+        warm_up.org[k] = mesh->camera.eye[k];
+        warm_up.dir[k] = 0.5f * (mesh->bounds.min[k] + mesh->bounds.max[k]) - warm_up.org[k];
+    }
+    warm_up.tmin = 0.0f;
+    warm_up.tmax = INFINITY;
+    rtTraceRays(1, &warm_up, &hit);
+    rtGetObjectiv(s->object, RT_OBJECT_BUILT, &built);
+    rtGetObjectfv(s->object, RT_OBJECT_BUILD_TIME, &s->build_ms);
+    RTenum err = rtGetError();
+    if (err != RT_NO_ERROR || built != RT_TRUE) {
+        report_progress("rtbench: API setup failed (error 0x%x, object built: %d)\n", err,
+                        (int)built);
+        return -1;
+    }
+    return 0;
+}
+
+static void api_scene_destroy(struct api_scene *s)
+{
+    if (s->ctx) {
+        rtMakeCurrent(NULL);
+        rtDestroyContext(s->ctx);
+    }
+    memset(s, 0, sizeof(*s));
+}
+
+/* Times one API call over the whole set and converts its answers. */
+static double api_run(struct api_scene *s, const struct bench_rays *set, int any_hit, void *scratch,
+                      struct bench_hit *hits)
+{
+    rtMakeCurrent(s->ctx);
+    double cpu_start = bench_cpu_ms();
+    double start = rt_now_ms();
+    if (any_hit)
+        rtOccludedRays((RTsizei)set->count, set->rays, scratch);
+    else
+        rtTraceRays((RTsizei)set->count, set->rays, scratch);
+    double ms = rt_now_ms() - start;
+    bench_share_add(s->threads, ms, bench_cpu_ms() - cpu_start);
+    /* The timed call must be pure tracing: an object or top-level build
+     * inside it would be measured as API overhead. */
+    RTint object_builds = -1, toplevel_builds = -1;
+    rtGetIntegerv(RT_STAT_OBJECT_BUILDS, &object_builds);
+    rtGetIntegerv(RT_STAT_TOPLEVEL_BUILDS, &toplevel_builds);
+    if (rtGetError() != RT_NO_ERROR)
+        return -1.0;
+    if (object_builds != 0 || toplevel_builds != 0) {
+        report_check_failed();
+        report_progress("trace: WARNING: a timed API call built %d object(s) and %d top "
+                        "level(s)\n",
+                        (int)object_builds, (int)toplevel_builds);
+    }
+    for (uint32_t i = 0; i < set->count; i++) {
+        if (any_hit) {
+            int occluded = ((const RTboolean *)scratch)[i] != RT_FALSE;
+            hits[i].t = occluded ? 0.0f : INFINITY;
+            hits[i].prim = occluded ? 0 : BENCH_MISS;
+        } else {
+            const RThit *h = &((const RThit *)scratch)[i];
+            hits[i].t = h->t;
+            hits[i].prim = h->primitive == RT_INVALID_ID ? BENCH_MISS : h->primitive;
+        }
+    }
+    return ms;
+}
+
+/* Our closest hits on a sample of the set against the brute-force
+ * reference; returns the agreement in percent and the sample size. */
+static double brute_force_check(const struct bench_mesh *mesh, const struct bench_rays *set,
+                                const struct bench_hit *hits, uint32_t *sampled)
+{
+    double budget = BRUTE_MAX_TESTS / (mesh->tri_count ? mesh->tri_count : 1);
+    uint32_t n = budget < BRUTE_MAX_RAYS ? (uint32_t)budget : BRUTE_MAX_RAYS;
+    if (n < 16)
+        n = 16;
+    if (n > set->count)
+        n = set->count;
+    uint32_t stride = n ? set->count / n : 1;
+    struct bench_agreement a;
+    memset(&a, 0, sizeof(a));
+    for (uint32_t k = 0; k < n; k++) {
+        uint32_t i = k * stride;
+        const RTray *r = &set->rays[i];
+        struct trace_ray ray;
+        struct trace_hit h;
+        struct bench_hit ref = {INFINITY, BENCH_MISS};
+        trace_ray_init(&ray, r->org, r->dir, r->tmin);
+        if (trace_closest_brute_force(mesh->positions, mesh->indices, mesh->tri_count, &ray,
+                                      r->tmax, &h)) {
+            ref.t = h.t;
+            ref.prim = h.prim;
+        }
+        bench_compare_hits(&a, &hits[i], &ref, 1, 1);
+    }
+    *sampled = n;
+    return bench_agreement_percent(&a);
+}
+
+struct set_result {
+    double mrays[PATHS];
+    double hit_percent;
+    struct bench_agreement api_vs_ours;
+};
+
+/* Measures the four paths on one set.  hits[0] ends up holding ours (1
+ * thread).  Returns 0, -1 on failure. */
+static int measure_set(const struct bench_options *opts, struct bench_accel *acc,
+                       struct api_scene api[2], const struct bench_rays *set, int any_hit,
+                       struct bench_hit *hits[2], void *scratch, struct set_result *res)
+{
+    double *times = malloc((size_t)PATHS * opts->runs * sizeof(*times));
+    if (!times)
+        return -1;
+    bench_kernel_fn kernel = any_hit ? bench_kernel_any : bench_kernel_closest;
+    memset(res, 0, sizeof(*res));
+    for (int run = 0; run < opts->runs; run++) {
+        for (int p = 0; p < PATHS; p++) {
+            double ms;
+            if (p < 2)
+                ms = bench_run_parallel(kernel, acc, set, hits[0], p + 1);
+            else
+                ms = api_run(&api[p - 2], set, any_hit, scratch, hits[1]);
+            if (ms < 0.0) {
+                free(times);
+                return -1;
+            }
+            times[p * opts->runs + run] = ms;
+            if (p >= 2)
+                bench_compare_hits(&res->api_vs_ours, hits[0], hits[1], set->count, 1);
+        }
+    }
+    for (int p = 0; p < PATHS; p++) {
+        double ms = bench_median(&times[p * opts->runs], opts->runs);
+        res->mrays[p] = ms > 0.0 ? set->count / (ms * 1e3) : 0.0;
+    }
+    uint64_t hit_count = 0;
+    for (uint32_t i = 0; i < set->count; i++)
+        hit_count += hits[0][i].prim != BENCH_MISS;
+    res->hit_percent = set->count ? 100.0 * (double)hit_count / set->count : 0.0;
+    free(times);
+    return 0;
+}
+
+/* What the primary rays see, as a depth image (near is bright, misses
+ * black) subsampled to at most VIEW_MAX_WIDTH columns: a check that each
+ * camera frames its mesh, and a picture of the workload for the docs. */
+#define VIEW_MAX_WIDTH 256
+
+static void write_view(const struct bench_mesh *mesh, const struct bench_rays *set,
+                       const struct bench_hit *hits)
+{
+    char name[64], script[1024];
+    uint32_t step = (set->width + VIEW_MAX_WIDTH - 1) / VIEW_MAX_WIDTH;
+    float t_lo = INFINITY, t_hi = 0.0f;
+    snprintf(name, sizeof(name), "view_%s.dat", mesh->name);
+    FILE *f = report_data_file(name);
+    if (!f || step == 0) {
+        if (f)
+            fclose(f);
+        return;
+    }
+    for (uint32_t i = 0; i < set->count; i++) {
+        if (hits[i].prim != BENCH_MISS) {
+            t_lo = fminf(t_lo, hits[i].t);
+            t_hi = fmaxf(t_hi, hits[i].t);
+        }
+    }
+    float range = t_hi > t_lo ? t_hi - t_lo : 1.0f;
+    for (uint32_t y = 0; y < set->height; y += step) {
+        for (uint32_t x = 0; x < set->width; x += step) {
+            const struct bench_hit *h = &hits[(size_t)y * set->width + x];
+            double v = h->prim == BENCH_MISS ? 0.0 : 1.0 - 0.75 * (h->t - t_lo) / range;
+            fprintf(f, "%s%.3f", x ? " " : "", v);
+        }
+        fputc('\n', f);
+    }
+    fclose(f);
+    snprintf(script, sizeof(script),
+             "set terminal pngcairo size %u,%u\n"
+             "set output 'view_%s.png'\n"
+             "unset key\nunset colorbox\nunset border\nunset tics\n"
+             "set margins 0,0,0,0\n"
+             "set palette gray\n"
+             "set cbrange [0:1]\n"
+             "set yrange [*:*] reverse\n"
+             "set autoscale fix\n"
+             "plot 'view_%s.dat' matrix with image\n",
+             (set->width + step - 1) / step * 2, (set->height + step - 1) / step * 2, mesh->name,
+             mesh->name);
+    snprintf(name, sizeof(name), "view_%s", mesh->name);
+    report_plot(name, script);
+}
+
+static int trace_mesh(const struct bench_options *opts, struct bench_mesh *mesh, FILE *plot_data,
+                      struct mesh_notes *notes)
+{
+    struct bench_accel acc;
+    struct bench_rays sets[3];
+    struct api_scene api[2];
+    struct bench_hit *hits[2] = {NULL, NULL};
+    void *scratch = NULL;
+    float *flat = NULL;
+    int rc = -1;
+    memset(sets, 0, sizeof(sets));
+    memset(api, 0, sizeof(api));
+    memset(&acc, 0, sizeof(acc));
+
+    report_progress("trace: %s: building and generating rays\n", mesh->name);
+    if (bench_accel_build(&acc, mesh, NULL) || bench_rays_trace_sets(sets, mesh, &acc, opts->quick))
+        goto out;
+    uint32_t max_rays = sets[0].count > sets[1].count ? sets[0].count : sets[1].count;
+    hits[0] = malloc((size_t)max_rays * sizeof(struct bench_hit));
+    hits[1] = malloc((size_t)max_rays * sizeof(struct bench_hit));
+    scratch = malloc((size_t)max_rays * sizeof(RThit));
+    flat = flatten(mesh);
+    if (!hits[0] || !hits[1] || !scratch || !flat)
+        goto out;
+    for (int t = 0; t < 2; t++) {
+        if (api_scene_create(&api[t], mesh, flat, t + 1))
+            goto out;
+    }
+    free(flat);
+    flat = NULL;
+    notes->api_build_ms = api[0].build_ms;
+
+    for (int s = 0; s < 3; s++) {
+        struct set_result res;
+        int any_hit = s == 2;
+        report_progress("trace: %s: %s rays (%u)\n", mesh->name, sets[s].name, sets[s].count);
+        if (sets[s].count == 0) {
+            report_row("%s|%s|0|-|-|-|-|-|-|-|-|-", mesh->name, sets[s].name);
+            continue;
+        }
+        if (measure_set(opts, &acc, api, &sets[s], any_hit, hits, scratch, &res))
+            goto out;
+        if (s == 0)
+            write_view(mesh, &sets[s], hits[0]);
+        double api_agree = bench_agreement_percent(&res.api_vs_ours);
+        report_row("%s|%s%s|%u|%.1f|%.3f|%.3f|%.2f|%.3f|%.3f|%.2f|%.2f|%.2f%%", mesh->name,
+                   sets[s].name, any_hit ? " (any hit)" : "", sets[s].count, res.hit_percent,
+                   res.mrays[0], res.mrays[1], res.mrays[0] > 0 ? res.mrays[1] / res.mrays[0] : 0.0,
+                   res.mrays[2], res.mrays[3], res.mrays[0] > 0 ? res.mrays[2] / res.mrays[0] : 0.0,
+                   res.mrays[1] > 0 ? res.mrays[3] / res.mrays[1] : 0.0, api_agree);
+        for (int p = 0; p < PATHS; p++) {
+            char key[96];
+            snprintf(key, sizeof(key), "trace.%s.%s.%s", mesh->name, sets[s].name,
+                     p == 0   ? "ours_1t"
+                     : p == 1 ? "ours_2t"
+                     : p == 2 ? "api_1t"
+                              : "api_2t");
+            report_metric(key, res.mrays[p], 1);
+        }
+        if (plot_data)
+            fprintf(plot_data, "\"%s/%s\" %.4f %.4f %.4f %.4f\n", mesh->name, sets[s].name,
+                    res.mrays[0], res.mrays[1], res.mrays[2], res.mrays[3]);
+        if (api_agree < 100.0) {
+            report_check_failed();
+            report_progress("trace: WARNING: %s/%s: the API disagrees with the direct path on "
+                            "%.4f%% of rays\n",
+                            mesh->name, sets[s].name, 100.0 - api_agree);
+        }
+        if (!any_hit) {
+            uint32_t sampled;
+            /* hits[0] holds ours from the last run. */
+            double agree = brute_force_check(mesh, &sets[s], hits[0], &sampled);
+            notes->brute_agree[s] = agree;
+            notes->brute_sampled[s] = sampled;
+            char key[96];
+            snprintf(key, sizeof(key), "check.%s.%s.brute_force_agree_pct", mesh->name,
+                     sets[s].name);
+            report_metric(key, agree, -1);
+            report_progress("trace: %s/%s: ours = brute force on %.2f%% of %u sampled rays\n",
+                            mesh->name, sets[s].name, agree, sampled);
+            if (agree < 100.0) {
+                report_check_failed();
+                report_progress("trace: WARNING: %s/%s: BVH traversal differs from the "
+                                "brute-force reference\n",
+                                mesh->name, sets[s].name);
+            }
+        }
+    }
+    rc = 0;
+out:
+    if (rc)
+        report_progress("rtbench: trace: %s failed (out of memory or API error)\n", mesh->name);
+    for (int t = 0; t < 2; t++)
+        api_scene_destroy(&api[t]);
+    for (int s = 0; s < 3; s++)
+        bench_rays_release(&sets[s]);
+    free(hits[0]);
+    free(hits[1]);
+    free(scratch);
+    free(flat);
+    bench_accel_release(&acc);
+    return rc;
+}
+
+int bench_trace_section(const struct bench_options *opts, struct bench_mesh *meshes, int mesh_count)
+{
+    report_printf("\n## Trace: rays per second\n\n");
+    report_printf("Object BVH: binned SAH, %d bins (the library default). Primary rays: "
+                  "%ux%u pinhole camera; random: %u rays, origins uniform in the bounds, "
+                  "directions uniform on the sphere; shadow: from each primary hit to a point "
+                  "light, any hit. Median of %d runs. \"ours\": trace_closest/trace_any called "
+                  "directly (own pthread split, chunks of %d rays); \"API\": "
+                  "rtTraceRays/rtOccludedRays on a context with threads=1/2. Mrays/s. "
+                  "\"API = ours\": rays where the API's answer equals ours.\n\n",
+                  BVH_DEFAULT_BINS, opts->quick ? BENCH_PRIMARY_WIDTH_QUICK : BENCH_PRIMARY_WIDTH,
+                  opts->quick ? BENCH_PRIMARY_HEIGHT_QUICK : BENCH_PRIMARY_HEIGHT,
+                  opts->quick ? BENCH_RANDOM_RAYS_QUICK : BENCH_RANDOM_RAYS, opts->runs,
+                  BENCH_CHUNK);
+    report_table_header("mesh|rays|count|hit %|ours 1T|ours 2T|2T/1T|API 1T|API 2T|API/ours 1T|"
+                        "API/ours 2T|API = ours");
+    FILE *plot_data = report_data_file("trace.dat");
+    bench_share_reset();
+    struct mesh_notes *notes = calloc((size_t)mesh_count + 1, sizeof(*notes));
+    if (!notes) {
+        if (plot_data)
+            fclose(plot_data);
+        return -1;
+    }
+    int failed = 0;
+    for (int m = 0; m < mesh_count; m++)
+        failed |= trace_mesh(opts, &meshes[m], plot_data, &notes[m]) != 0;
+    bench_share_report();
+    report_printf("\nCorrectness: ours (binned SAH BVH) against the brute-force reference "
+                  "intersector on a sample of rays (hit/miss and t within %g relative):\n\n",
+                  (double)BENCH_T_TOLERANCE);
+    report_table_header("mesh|rays|sampled|ours = brute force|API object build ms (on demand)");
+    for (int m = 0; m < mesh_count; m++) {
+        for (int s = 0; s < 2; s++)
+            report_row("%s|%s|%u|%.2f%%|%.1f", meshes[m].name, s ? "random" : "primary",
+                       notes[m].brute_sampled[s], notes[m].brute_agree[s],
+                       (double)notes[m].api_build_ms);
+    }
+    free(notes);
+    if (plot_data) {
+        fclose(plot_data);
+        report_plot("trace", "set terminal pngcairo size 1000,520 font ',10'\n"
+                             "set output 'trace.png'\n"
+                             "set title 'Trace throughput (median), Mrays/s'\n"
+                             "set style data histograms\n"
+                             "set style histogram clustered gap 1\n"
+                             "set style fill solid 0.85 border -1\n"
+                             "set ylabel 'Mrays/s'\n"
+                             "set yrange [0:*]\n"
+                             "set xtics rotate by -35\n"
+                             "set bmargin 7\n"
+                             "set rmargin 8\n"
+                             "set key top right\n"
+                             "set grid ytics\n"
+                             "plot 'trace.dat' using 2:xtic(1) title 'ours 1T', '' using 3 title "
+                             "'ours 2T', '' using 4 title 'API 1T', '' using 5 title 'API 2T'\n");
+    }
+    return failed ? -1 : 0;
+}

@@ -1,0 +1,209 @@
+/*
+ * harness.c - the measuring machinery every section shares (bench.h): our
+ * BVH over a mesh, the closest-hit and any-hit kernels over it, the
+ * parallel ray loop, work counters and the median.
+ *
+ * The parallel loop is deliberately plain: the calling thread plus
+ * threads - 1 pthreads created per run (about 50 us, well under 1% of the
+ * shortest timed run of a full benchmark) pull chunks of BENCH_CHUNK rays
+ * from one atomic counter.  The same loop drives our kernels and Embree's,
+ * so neither path gets a better scheduler than the other.
+ */
+#include <math.h>
+#include <pthread.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "base/alloc.h"
+#include "base/timer.h"
+#include "bench.h"
+
+int bench_accel_build(struct bench_accel *acc, const struct bench_mesh *mesh,
+                      const struct bvh_build_params *params)
+{
+    memset(acc, 0, sizeof(*acc));
+    struct aabb *boxes = bench_mesh_boxes(mesh);
+    if (!boxes)
+        return -1;
+    int rc = accel_build(&acc->bvh, boxes, mesh->tri_count, params);
+    free(boxes);
+    if (rc)
+        return -1;
+    acc->tri = accel_gather_triangles(&acc->bvh, mesh->positions, mesh->indices);
+    if (!acc->tri) {
+        bvh_release(&acc->bvh);
+        return -1;
+    }
+    return 0;
+}
+
+void bench_accel_release(struct bench_accel *acc)
+{
+    bvh_release(&acc->bvh);
+    rt_free(acc->tri);
+    memset(acc, 0, sizeof(*acc));
+}
+
+void bench_kernel_closest(void *ctx, const RTray *rays, uint32_t begin, uint32_t end,
+                          struct bench_hit *hits)
+{
+    const struct bench_accel *acc = ctx;
+    for (uint32_t i = begin; i < end; i++) {
+        const RTray *r = &rays[i];
+        struct trace_ray ray;
+        struct trace_hit h;
+        trace_ray_init(&ray, r->org, r->dir, r->tmin);
+        if (trace_closest(&acc->bvh, acc->tri, &ray, r->tmax, &h, NULL)) {
+            hits[i].t = h.t;
+            hits[i].prim = h.prim;
+        } else {
+            hits[i].t = INFINITY;
+            hits[i].prim = BENCH_MISS;
+        }
+    }
+}
+
+void bench_kernel_any(void *ctx, const RTray *rays, uint32_t begin, uint32_t end,
+                      struct bench_hit *hits)
+{
+    const struct bench_accel *acc = ctx;
+    for (uint32_t i = begin; i < end; i++) {
+        const RTray *r = &rays[i];
+        struct trace_ray ray;
+        trace_ray_init(&ray, r->org, r->dir, r->tmin);
+        int occluded = trace_any(&acc->bvh, acc->tri, &ray, r->tmax, NULL);
+        hits[i].t = occluded ? 0.0f : INFINITY;
+        hits[i].prim = occluded ? 0 : BENCH_MISS;
+    }
+}
+
+struct parallel_job {
+    bench_kernel_fn kernel;
+    void *ctx;
+    const RTray *rays;
+    uint32_t count;
+    struct bench_hit *hits;
+    uint64_t next; /* next unclaimed ray; atomic */
+};
+
+static void *parallel_worker(void *arg)
+{
+    struct parallel_job *job = arg;
+    for (;;) {
+        uint64_t begin = __atomic_fetch_add(&job->next, BENCH_CHUNK, __ATOMIC_RELAXED);
+        if (begin >= job->count)
+            break;
+        uint64_t end = begin + BENCH_CHUNK < job->count ? begin + BENCH_CHUNK : job->count;
+        job->kernel(job->ctx, job->rays, (uint32_t)begin, (uint32_t)end, job->hits);
+    }
+    return NULL;
+}
+
+#define BENCH_MAX_THREADS 64
+#define SHARE_SLOTS 3 /* 1 thread, 2 threads, more */
+
+/* CPU share bookkeeping (bench_share_*): main thread only. */
+static struct {
+    double cpu_ms[SHARE_SLOTS];
+    double core_ms[SHARE_SLOTS]; /* wall time x threads */
+} share;
+
+static int share_slot(int threads)
+{
+    return threads <= 1 ? 0 : threads == 2 ? 1 : 2;
+}
+
+double bench_cpu_ms(void)
+{
+    struct timespec ts;
+    if (clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts) != 0)
+        return 0.0;
+    return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
+}
+
+void bench_share_reset(void)
+{
+    memset(&share, 0, sizeof(share));
+}
+
+void bench_share_add(int threads, double wall_ms, double cpu_ms)
+{
+    int s = share_slot(threads);
+    share.cpu_ms[s] += cpu_ms;
+    share.core_ms[s] += wall_ms * (threads < 1 ? 1 : threads);
+}
+
+double bench_share_percent(int threads)
+{
+    int s = share_slot(threads);
+    return share.core_ms[s] > 0.0 ? 100.0 * share.cpu_ms[s] / share.core_ms[s] : -1.0;
+}
+
+void bench_share_report(void)
+{
+    double one = bench_share_percent(1), two = bench_share_percent(2);
+    report_printf("\nCPU share of the timed runs (process CPU time / (wall time x threads); "
+                  "below 100%% when other processes took our cores or a thread idled waiting "
+                  "for the last chunk):");
+    if (one >= 0.0)
+        report_printf(" 1 thread %.0f%%", one);
+    if (two >= 0.0)
+        report_printf("%s 2 threads %.0f%%", one >= 0.0 ? "," : "", two);
+    report_printf(".\n");
+}
+
+double bench_run_parallel(bench_kernel_fn kernel, void *ctx, const struct bench_rays *set,
+                          struct bench_hit *hits, int threads)
+{
+    struct parallel_job job = {kernel, ctx, set->rays, set->count, hits, 0};
+    pthread_t tid[BENCH_MAX_THREADS];
+    int started = 0;
+    if (threads > BENCH_MAX_THREADS)
+        threads = BENCH_MAX_THREADS;
+    double cpu_start = bench_cpu_ms();
+    double start = rt_now_ms();
+    for (int i = 1; i < threads; i++) {
+        if (pthread_create(&tid[started], NULL, parallel_worker, &job) != 0)
+            break;
+        started++;
+    }
+    parallel_worker(&job);
+    for (int i = 0; i < started; i++)
+        pthread_join(tid[i], NULL);
+    double ms = rt_now_ms() - start;
+    bench_share_add(threads, ms, bench_cpu_ms() - cpu_start);
+    /* A thread that could not start would make the figure a lie about the
+     * thread count, though every ray was traced. */
+    return started == threads - 1 ? ms : -1.0;
+}
+
+void bench_count_tests(const struct bench_accel *acc, const struct bench_rays *set,
+                       double *nodes_per_ray, double *tris_per_ray)
+{
+    struct trace_counters c = {0, 0};
+    for (uint32_t i = 0; i < set->count; i++) {
+        const RTray *r = &set->rays[i];
+        struct trace_ray ray;
+        struct trace_hit h;
+        trace_ray_init(&ray, r->org, r->dir, r->tmin);
+        trace_closest(&acc->bvh, acc->tri, &ray, r->tmax, &h, &c);
+    }
+    double n = set->count ? (double)set->count : 1.0;
+    *nodes_per_ray = (double)c.node_tests / n;
+    *tris_per_ray = (double)c.triangle_tests / n;
+}
+
+static int compare_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+double bench_median(double *values, int n)
+{
+    qsort(values, (size_t)n, sizeof(*values), compare_double);
+    if (n % 2)
+        return values[n / 2];
+    return 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}

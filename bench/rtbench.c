@@ -1,0 +1,183 @@
+/*
+ * rtbench.c - the benchmark driver: options, workloads, sections.
+ *
+ *   rtbench build   BVH quality against build time (bench_build.c)
+ *   rtbench trace   rays per second, direct and through the API (bench_trace.c)
+ *   rtbench embree  the same work through Embree 3 (bench_embree.c; needs Embree)
+ *   rtbench all     all of the above (default)
+ *
+ * Options: --quick (toy sizes, for the smoke test), --runs N (median of N,
+ * default 5), --out DIR (results.md, results.csv, PNG plots), --mesh NAME
+ * (bumpy, gears or soup only), --baseline FILE (an earlier results.csv;
+ * metrics that got worse by more than --tolerance PCT, default 10, are
+ * flagged and the exit status is 2).
+ *
+ * Exit status: 0 done, 1 usage error or a section failed, 2 regressions
+ * flagged against the baseline, 3 a correctness check failed (two paths
+ * that must give the same answers did not: the API against the direct
+ * kernel, the BVH against brute force, Embree against ours).
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bench.h"
+
+#define DEFAULT_RUNS 5
+#define DEFAULT_TOLERANCE 10.0
+#define MAX_RUNS 101
+
+enum section { SECTION_BUILD = 1, SECTION_TRACE = 2, SECTION_EMBREE = 4 };
+
+static void usage(FILE *f)
+{
+    fprintf(f,
+            "usage: rtbench [build|trace|embree|all] [--quick] [--runs N] [--out DIR]\n"
+            "               [--mesh bumpy|gears|soup] [--baseline FILE] [--tolerance PCT]\n"
+            "\n"
+            "  build      BVH quality against build time per builder and bin count\n"
+            "  trace      Mrays/s, trace_closest/trace_any directly and through rtTraceRays\n"
+            "  embree     the same meshes and rays through Embree 3%s\n"
+            "  all        everything (default)\n"
+            "  --quick    toy sizes and 1 run unless --runs is given: a smoke test\n"
+            "  --runs N   timings are the median of N runs (default %d)\n"
+            "  --out DIR  write results.md, results.csv and PNG plots (gnuplot) to DIR\n"
+            "  --baseline FILE  compare with an earlier results.csv; flag drops beyond\n"
+            "             --tolerance PCT (default %.0f) and exit with status 2\n",
+#ifdef RT_HAVE_EMBREE
+            "",
+#else
+            " (not available: built without Embree)",
+#endif
+            DEFAULT_RUNS, DEFAULT_TOLERANCE);
+}
+
+static int parse_int(const char *s, int lo, int hi, int *out)
+{
+    char *end;
+    long v = strtol(s, &end, 10);
+    if (!*s || *end || v < lo || v > hi)
+        return -1;
+    *out = (int)v;
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    struct bench_options opts;
+    int sections = 0;
+    int runs_given = 0;
+    memset(&opts, 0, sizeof(opts));
+    opts.runs = DEFAULT_RUNS;
+    opts.tolerance = DEFAULT_TOLERANCE;
+    opts.argc = argc;
+    opts.argv = argv;
+
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        const char *value = i + 1 < argc ? argv[i + 1] : NULL;
+        if (!strcmp(a, "build")) {
+            sections |= SECTION_BUILD;
+        } else if (!strcmp(a, "trace")) {
+            sections |= SECTION_TRACE;
+        } else if (!strcmp(a, "embree")) {
+            sections |= SECTION_EMBREE;
+        } else if (!strcmp(a, "all")) {
+            sections |= SECTION_BUILD | SECTION_TRACE | SECTION_EMBREE;
+        } else if (!strcmp(a, "--quick")) {
+            opts.quick = 1;
+        } else if (!strcmp(a, "--runs") && value) {
+            if (parse_int(value, 1, MAX_RUNS, &opts.runs)) {
+                fprintf(stderr, "rtbench: --runs takes 1..%d\n", MAX_RUNS);
+                return 1;
+            }
+            runs_given = 1;
+            i++;
+        } else if (!strcmp(a, "--out") && value) {
+            opts.out_dir = value;
+            i++;
+        } else if (!strcmp(a, "--mesh") && value) {
+            opts.mesh = value;
+            i++;
+        } else if (!strcmp(a, "--baseline") && value) {
+            opts.baseline = value;
+            i++;
+        } else if (!strcmp(a, "--tolerance") && value) {
+            char *end;
+            opts.tolerance = strtod(value, &end);
+            if (!*value || *end || !(opts.tolerance >= 0.0)) {
+                fprintf(stderr, "rtbench: --tolerance takes a percentage >= 0\n");
+                return 1;
+            }
+            i++;
+        } else if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            usage(stdout);
+            return 0;
+        } else {
+            fprintf(stderr, "rtbench: unknown or incomplete argument '%s'\n", a);
+            usage(stderr);
+            return 1;
+        }
+    }
+    if (!sections)
+        sections = SECTION_BUILD | SECTION_TRACE | SECTION_EMBREE;
+    if (opts.quick && !runs_given)
+        opts.runs = 1;
+
+    struct bench_mesh meshes[BENCH_MESH_COUNT];
+    int mesh_count = 0;
+    for (int k = 0; k < BENCH_MESH_COUNT; k++) {
+        struct bench_mesh *m = &meshes[mesh_count];
+        if (bench_mesh_generate(m, (enum bench_mesh_kind)k, opts.quick)) {
+            fprintf(stderr, "rtbench: out of memory generating the workloads\n");
+            return 1;
+        }
+        if (opts.mesh && strcmp(opts.mesh, m->name) != 0) {
+            bench_mesh_release(m);
+            continue;
+        }
+        mesh_count++;
+    }
+    if (mesh_count == 0) {
+        fprintf(stderr, "rtbench: no workload named '%s' (bumpy, gears, soup)\n", opts.mesh);
+        return 1;
+    }
+
+    if (report_open(&opts))
+        return 1;
+    report_printf("\n## Workloads\n\n");
+    report_table_header("mesh|triangles|vertices|bounds (min .. max)|what");
+    for (int m = 0; m < mesh_count; m++) {
+        const struct bench_mesh *b = &meshes[m];
+        report_row("%s|%u|%u|(%.2f, %.2f, %.2f) .. (%.2f, %.2f, %.2f)|%s", b->name, b->tri_count,
+                   b->vertex_count, (double)b->bounds.min[0], (double)b->bounds.min[1],
+                   (double)b->bounds.min[2], (double)b->bounds.max[0], (double)b->bounds.max[1],
+                   (double)b->bounds.max[2], b->description);
+    }
+
+    int failed = 0;
+    if (sections & SECTION_BUILD)
+        failed |= bench_build_section(&opts, meshes, mesh_count) != 0;
+    if (sections & SECTION_TRACE)
+        failed |= bench_trace_section(&opts, meshes, mesh_count) != 0;
+    if (sections & SECTION_EMBREE) {
+#ifdef RT_HAVE_EMBREE
+        failed |= bench_embree_section(&opts, meshes, mesh_count) != 0;
+#else
+        report_printf("\n## Against Embree\n\nSkipped: rtbench was built without Embree "
+                      "(CMake did not find embree 3, or RT_WITH_EMBREE=OFF).\n");
+#endif
+    }
+    int flagged = report_close();
+    for (int m = 0; m < mesh_count; m++)
+        bench_mesh_release(&meshes[m]);
+    if (failed) {
+        fprintf(stderr, "rtbench: a section failed; see the messages above\n");
+        return 1;
+    }
+    if (report_check_failures()) {
+        fprintf(stderr, "rtbench: %d correctness check(s) failed\n", report_check_failures());
+        return 3;
+    }
+    return flagged ? 2 : 0;
+}
