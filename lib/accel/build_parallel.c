@@ -187,7 +187,6 @@ struct pbuild {
     /* stage 2 and 3 */
     uint32_t *prim_index; /* the output's */
     uint32_t *order;      /* subtrees by descending size */
-    struct aabb *sah_boxes;
     struct bvh_node *scratch;
     struct bvh_node *final_nodes;
 };
@@ -925,13 +924,20 @@ out:
  * builder cannot be told are handled here: it counts depth from the
  * subtree's root, so a subtree that would end deeper than BVH_MAX_DEPTH
  * in the whole tree is rebuilt by the median builder, which applies the
- * depth guard from depth0; and it does not read leaf_growth.
+ * depth guard from depth0 (a safety net: no input we know of drives an
+ * SAH build below depth ~40, builders.c, and stage 1 rarely goes 10
+ * deep); and it does not read leaf_growth.
  */
 static int build_sah_subtree(struct pbuild *b, struct subtree *s)
 {
     uint32_t m = s->end - s->begin;
-    struct aabb *boxes = &b->sah_boxes[s->begin];
     struct build_ref *refs = &s->refs[s->begin];
+    /* The box copy goes to the same range of the other ref buffer, which
+     * no subtree uses (each range is live in one buffer), and fits: 24
+     * bytes per box, 32 per ref.  Allocated storage, so it may change
+     * type (C99 6.5p6). */
+    struct build_ref *other = s->refs == b->refs[0] ? b->refs[1] : b->refs[0];
+    struct aabb *boxes = (struct aabb *)(void *)&other[s->begin];
     for (uint32_t i = 0; i < m; i++) {
         for (int k = 0; k < 3; k++) {
             boxes[i].min[k] = refs[i].lo[k];
@@ -1066,7 +1072,6 @@ static void release_build(struct pbuild *b)
     rt_free(b->cell_of);
     rt_free(b->counts);
     rt_free(b->order);
-    rt_free(b->sah_boxes);
     rt_free(b->scratch);
 }
 
@@ -1093,12 +1098,11 @@ static int build_subtrees(struct pbuild *b, struct bvh *out)
         b->order[i] = keys[i].index;
     rt_free(keys);
 
-    if (b->pp.subtree == BVH_SUBTREE_MEDIAN)
+    if (b->pp.subtree == BVH_SUBTREE_MEDIAN) {
         b->scratch = rt_realloc_array(NULL, 2 * (size_t)b->n - k, sizeof(*b->scratch));
-    else
-        b->sah_boxes = rt_realloc_array(NULL, b->n, sizeof(*b->sah_boxes));
-    if (!b->scratch && !b->sah_boxes)
-        return -1;
+        if (!b->scratch)
+            return -1;
+    }
     b->failed = 0;
     run(b, subtree_task);
     if (b->failed)

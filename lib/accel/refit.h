@@ -66,12 +66,13 @@ void accel_refit_triangles_parallel(const struct bvh *bvh, float *tri, const flo
                                     const uint32_t *indices, struct rt_pool *pool);
 
 /*
- * Both at once, as paper 000 sec. 6 interleaves the refit with the
- * triangle update: each leaf rewrites its triangles in tri and takes its
- * box from their vertices, so no per-triangle box array is needed and
- * every vertex is read once.  The boxes equal accel_refit's with
- * per-triangle boxes over the three vertices (for finite positions); tri
- * equals accel_refit_triangles'.  pool may be NULL.
+ * Both, without a per-triangle box array: rewrites tri from the mesh
+ * (as accel_refit_triangles_parallel), then refits the boxes from tri,
+ * each leaf's box over its triangles' vertices.  The boxes equal
+ * accel_refit's with per-triangle boxes over the three vertices (for
+ * finite positions); tri equals accel_refit_triangles'.  The cheapest
+ * refit when the caller has no triangle boxes at hand: one random pass
+ * over the vertices, one sequential pass over tri.  pool may be NULL.
  */
 void accel_refit_mesh(struct bvh *bvh, float *tri, const float *positions,
                       const uint32_t *indices, struct rt_pool *pool);

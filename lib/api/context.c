@@ -75,6 +75,13 @@ static int parse_configuration(struct rt_context *ctx, const char *config)
         if (key_is(key, key_len, "threads")) {
             if (parse_int(value, value_len, 1, RT_MAX_THREADS, &ctx->threads))
                 return -1;
+        } else if (key_is(key, key_len, "toplevel")) {
+            if (key_is(value, value_len, "binned"))
+                ctx->toplevel_paper004 = 0;
+            else if (key_is(value, value_len, "paper004"))
+                ctx->toplevel_paper004 = 1;
+            else
+                return -1;
         } else if (key_is(key, key_len, "build_threads")) {
             if (parse_int(value, value_len, 0, RT_MAX_THREADS, &ctx->build_threads))
                 return -1;
@@ -138,9 +145,10 @@ RTcontext rtCreateContext(const char *configuration)
         return NULL;
     }
     snprintf(ctx->configuration, sizeof(ctx->configuration),
-             "threads=%d build_threads=%d bins=%d builder=%s", ctx->threads, ctx->build_threads,
-             ctx->build_params.bins,
-             ctx->build_params.builder == BVH_BUILDER_SWEEP_SAH ? "sweep" : "binned");
+             "threads=%d build_threads=%d bins=%d builder=%s toplevel=%s", ctx->threads,
+             ctx->build_threads, ctx->build_params.bins,
+             ctx->build_params.builder == BVH_BUILDER_SWEEP_SAH ? "sweep" : "binned",
+             ctx->toplevel_paper004 ? "paper004" : "binned");
     const char *debug = getenv("TRACELIST_DEBUG");
     ctx->debug_print = debug && *debug && strcmp(debug, "0") != 0;
 
@@ -161,6 +169,7 @@ RTcontext rtCreateContext(const char *configuration)
     scene_objects_init(&ctx->objects);
     scene_async_init(&ctx->async, ctx->build_threads, &ctx->build_params);
     scene_frame_init(&ctx->frame);
+    ctx->frame.toplevel_paper004 = ctx->toplevel_paper004;
     render_state_init(&ctx->render);
     return ctx;
 }

@@ -105,6 +105,7 @@ struct rt_context {
     double ms_per_test;       /* traversal step time, measured per frame */
     struct scene_async_builder async; /* thread started by the first async object */
     int build_threads;                /* K of build_threads=K */
+    int toplevel_paper004;            /* toplevel=paper004 */
     struct scene_objects objects;
     struct scene_frame frame;
 

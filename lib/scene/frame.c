@@ -6,6 +6,7 @@
 
 #include <string.h>
 
+#include "accel/build_toplevel.h"
 #include "base/alloc.h"
 #include "base/mat4.h"
 
@@ -172,7 +173,9 @@ static int build_top(struct scene_frame *frame, const struct bvh_build_params *p
         ti->object = inst->object;
         n++;
     }
-    if (accel_build(&top, boxes, n, params))
+    int status = frame->toplevel_paper004 ? accel_build_toplevel_paper004(&top, boxes, n)
+                                          : accel_build(&top, boxes, n, params);
+    if (status)
         goto fail;
     rt_free(boxes);
     bvh_release(&frame->top);

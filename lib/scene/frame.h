@@ -41,8 +41,11 @@ struct scene_frame {
     int open; /* pending is the list being described */
     struct scene_instance_list committed;
 
-    /* The top level over `committed`; valid when top_valid. */
+    /* The top level over `committed`; valid when top_valid.  Built with
+     * the binned SAH over instance boxes, or with paper 004 sec. 4.5's
+     * rule when toplevel_paper004 is set ("toplevel=paper004"). */
     int top_valid;
+    int toplevel_paper004;
     struct bvh top;
     struct trace_instance *trace_instances; /* one per non-empty instance */
     uint32_t trace_instance_count;

@@ -27,6 +27,7 @@
 #include <math.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <string.h>
 
 #include "trace/trace.h"
 
@@ -44,6 +45,17 @@
  * is a sliver for isect_triangle's t (see there).  Chosen with margin:
  * the edge test's own error is a few roundings. */
 #define ISECT_SLIVER_ROUNDINGS 64.0
+
+/* The next float above a finite f >= 0 (nextafterf without the libm call,
+ * which would sit in the triangle loop). */
+static inline float isect_next_up(float f)
+{
+    uint32_t bits;
+    memcpy(&bits, &f, sizeof(bits));
+    bits++;
+    memcpy(&f, &bits, sizeof(f));
+    return f;
+}
 
 /* The slab test's per-ray constants, hoisted out of traversal loops.  For
  * each axis, the byte offsets in a box of the bound the ray enters

@@ -3,6 +3,8 @@
  */
 #include "trace/scene_traverse.h"
 
+#include "trace/intersect.h"
+
 #include <math.h>
 #include <stddef.h>
 
@@ -37,6 +39,7 @@ static int walk(const struct trace_scene *scene, const float org[3], const float
     trace_ray_init(&ray, org, dir, tmin);
 
     float best = tmax;
+    float box_limit = tmax; /* as in traverse.c: widened once a hit is found */
     int found = 0;
     /* Deferred far children with their entry distances: a popped subtree
      * that starts beyond the closest hit so far is skipped. */
@@ -69,15 +72,22 @@ static int walk(const struct trace_scene *scene, const float org[3], const float
                         return 1;
                     continue;
                 }
+                /* Ties between instances go to the lower instance, as ties
+                 * inside an object go to the lower primitive: hits do not
+                 * depend on the top-level tree. */
+                uint32_t index = top->prim_index[node->first + i];
+                float limit = found ? isect_next_up(best) : best;
                 struct trace_hit h;
-                if (trace_closest(view.bvh, view.tri, &o_ray, best, &h, &counters->object)) {
+                if (trace_closest(view.bvh, view.tri, &o_ray, limit, &h, &counters->object) &&
+                    (!found || h.t < best || index < hit->instance)) {
                     best = h.t;
+                    box_limit = best * ISECT_BOX_FAR_SCALE;
                     found = 1;
                     hit->t = h.t;
                     hit->u = h.u;
                     hit->v = h.v;
                     hit->prim = h.prim;
-                    hit->instance = top->prim_index[node->first + i];
+                    hit->instance = index;
                 }
             }
         } else {
@@ -86,9 +96,9 @@ static int walk(const struct trace_scene *scene, const float org[3], const float
             float t_left, t_right;
             counters->top_node_tests += 2;
             int hit_left = trace_box(&ray, top->nodes[left].aabb_min, top->nodes[left].aabb_max,
-                                     best, &t_left);
+                                     box_limit, &t_left);
             int hit_right = trace_box(&ray, top->nodes[right].aabb_min,
-                                      top->nodes[right].aabb_max, best, &t_right);
+                                      top->nodes[right].aabb_max, box_limit, &t_right);
             if (hit_left && hit_right) {
                 if (t_right < t_left) {
                     uint32_t tmp = left;
@@ -116,7 +126,7 @@ static int walk(const struct trace_scene *scene, const float org[3], const float
             if (sp == 0)
                 return found;
             --sp;
-        } while (stack_t[sp] >= best);
+        } while (stack_t[sp] > box_limit);
         node_index = stack[sp];
     }
 }

@@ -9,12 +9,15 @@
  * child carries its entry distance; when it is popped after the closest
  * hit has moved in front of it, it is skipped without another box test.
  *
- * Hits are accepted with ray->tmin <= t < best, best starting at t_max, so
- * of two triangles at exactly the same distance the first one found wins.
+ * Hits are accepted with ray->tmin <= t < t_max; of two triangles at
+ * exactly the same distance the one with the lower primitive index wins,
+ * whatever the tree (popped subtrees whose entry equals the best distance
+ * are still visited for that reason).
  * Leaf slot i's triangle is tri[9i .. 9i+8] (accel_gather_triangles).
  */
 #include "trace/trace.h"
 
+#include <math.h>
 #include <stddef.h>
 
 #include "trace/intersect.h"
@@ -37,12 +40,17 @@ static inline int walk(const struct bvh *bvh, const float *tri, const struct tra
     uint64_t node_tests = 1;
     uint64_t triangle_tests = 0;
     float best = t_max;
+    /* Boxes are tested against box_limit: best itself until a hit is
+     * found, then best widened by the slab test's rounding bound, because
+     * a box touching a hit at exactly best may compute its entry an ulp
+     * beyond it and must still be visited for the tie rule below. */
+    float box_limit = t_max * ISECT_BOX_FAR_SCALE; /* t_max may itself be a tie bound */
     int found = 0;
     struct stack_entry stack[BVH_MAX_DEPTH + 1];
     uint32_t sp = 0;
     uint32_t current = 0;
     float t_entry;
-    if (!isect_box(&br, &nodes[0], best, &t_entry))
+    if (!isect_box(&br, &nodes[0], box_limit, &t_entry))
         goto done;
     for (;;) {
         const struct bvh_node *node = &nodes[current];
@@ -51,16 +59,27 @@ static inline int walk(const struct bvh *bvh, const float *tri, const struct tra
                 const float *v = &tri[9 * (size_t)slot];
                 float t, u, w;
                 triangle_tests++;
-                if (!isect_triangle(ray, v, v + 3, v + 6, best, &t, &u, &w))
+                /* Once a hit is known, hits at the same distance are
+                 * tested too, and the lower primitive index wins: the
+                 * answer is then the same for every tree over the same
+                 * triangles (builder, strategy, thread count). */
+                float limit = found ? isect_next_up(best) : best;
+                if (!isect_triangle(ray, v, v + 3, v + 6, limit, &t, &u, &w))
+                    continue;
+                if (any_hit) {
+                    found = 1;
+                    goto done;
+                }
+                uint32_t prim = bvh->prim_index[slot];
+                if (found && !(t < best || prim < hit->prim))
                     continue;
                 found = 1;
-                if (any_hit)
-                    goto done;
                 best = t;
+                box_limit = best * ISECT_BOX_FAR_SCALE;
                 hit->t = t;
                 hit->u = u;
                 hit->v = w;
-                hit->prim = bvh->prim_index[slot];
+                hit->prim = prim;
             }
         } else {
             uint32_t left = node->first;
@@ -68,8 +87,8 @@ static inline int walk(const struct bvh *bvh, const float *tri, const struct tra
             float t_left;
             float t_right;
             node_tests += 2;
-            int hit_left = isect_box(&br, &nodes[left], best, &t_left);
-            int hit_right = isect_box(&br, &nodes[right], best, &t_right);
+            int hit_left = isect_box(&br, &nodes[left], box_limit, &t_left);
+            int hit_right = isect_box(&br, &nodes[right], box_limit, &t_right);
             if (hit_left && hit_right) {
                 if (t_right < t_left) {
                     stack[sp].node = left;
@@ -94,7 +113,7 @@ static inline int walk(const struct bvh *bvh, const float *tri, const struct tra
             if (sp == 0)
                 goto done;
             sp--;
-            if (stack[sp].t_entry <= best)
+            if (stack[sp].t_entry <= box_limit)
                 break;
         }
         current = stack[sp].node;
