@@ -80,6 +80,37 @@ void bench_mesh_release(struct bench_mesh *mesh);
  * (free()). */
 struct aabb *bench_mesh_boxes(const struct bench_mesh *mesh);
 
+/* ------------------------------------------------------------ animations */
+
+/* Procedural animations for `rtbench dynamic` (anim_gen.c): frame f is a
+ * pure function of (kind, size, f), placed in front of a camera at the
+ * origin looking down -z, so the API needs no matrix. */
+enum bench_anim_kind { BENCH_ANIM_EXPLODE, BENCH_ANIM_CLOTH, BENCH_ANIM_SOUP };
+
+/* The soup reaches its next random configuration every this many frames. */
+#define BENCH_SOUP_KEY_FRAMES 10
+
+struct bench_anim {
+    enum bench_anim_kind kind;
+    const char *name;  /* "explode", "cloth", "soup" */
+    uint32_t size;     /* explode: quads around the torus (size x size/2); cloth:
+                        * grid size x size; soup: triangles */
+    int frames;
+    float *positions;  /* the current frame, 3 floats per vertex */
+    uint32_t *indices; /* 3 per triangle, fixed over the animation */
+    uint32_t vertex_count;
+    uint32_t tri_count;
+};
+
+/* Allocates and fills frame 0.  Returns 0, or -1 on allocation failure. */
+int bench_anim_create(struct bench_anim *a, enum bench_anim_kind kind, uint32_t size, int frames);
+/* Overwrites a->positions with frame `frame`. */
+void bench_anim_frame(struct bench_anim *a, int frame);
+void bench_anim_release(struct bench_anim *a);
+/* A bench_mesh view of the current frame (no camera, no bounds; shares
+ * the arrays). */
+struct bench_mesh bench_anim_mesh(const struct bench_anim *a);
+
 /* ------------------------------------------------------------ rays */
 
 struct bench_rays {
@@ -287,6 +318,8 @@ int bench_build_section(const struct bench_options *opts, struct bench_mesh *mes
                         int mesh_count);
 int bench_trace_section(const struct bench_options *opts, struct bench_mesh *meshes,
                         int mesh_count);
+int bench_dynamic_section(const struct bench_options *opts, struct bench_mesh *meshes,
+                          int mesh_count);
 #ifdef RT_HAVE_EMBREE
 int bench_embree_section(const struct bench_options *opts, struct bench_mesh *meshes,
                          int mesh_count);

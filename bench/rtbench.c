@@ -4,6 +4,8 @@
  *   rtbench build   BVH quality against build time (bench_build.c)
  *   rtbench trace   rays per second, direct and through the API (bench_trace.c)
  *   rtbench embree  the same work through Embree 3 (bench_embree.c; needs Embree)
+ *   rtbench dynamic dynamic scenes: update strategies over animations, soup
+ *                   rebuild, top level, parallel build (bench_dynamic.c)
  *   rtbench all     all of the above (default)
  *
  * Options: --quick (toy sizes, for the smoke test), --runs N (median of N,
@@ -27,17 +29,20 @@
 #define DEFAULT_TOLERANCE 10.0
 #define MAX_RUNS 101
 
-enum section { SECTION_BUILD = 1, SECTION_TRACE = 2, SECTION_EMBREE = 4 };
+enum section { SECTION_BUILD = 1, SECTION_TRACE = 2, SECTION_EMBREE = 4, SECTION_DYNAMIC = 8 };
+#define SECTION_ALL (SECTION_BUILD | SECTION_TRACE | SECTION_EMBREE | SECTION_DYNAMIC)
 
 static void usage(FILE *f)
 {
     fprintf(f,
-            "usage: rtbench [build|trace|embree|all] [--quick] [--runs N] [--out DIR]\n"
+            "usage: rtbench [build|trace|embree|dynamic|all] [--quick] [--runs N] [--out DIR]\n"
             "               [--mesh bumpy|gears|soup] [--baseline FILE] [--tolerance PCT]\n"
             "\n"
             "  build      BVH quality against build time per builder and bin count\n"
             "  trace      Mrays/s, trace_closest/trace_any directly and through rtTraceRays\n"
             "  embree     the same meshes and rays through Embree 3%s\n"
+            "  dynamic    dynamic scenes: update strategies over animations (error\n"
+            "             against time), soup rebuild, top level, parallel build\n"
             "  all        everything (default)\n"
             "  --quick    toy sizes and 1 run unless --runs is given: a smoke test\n"
             "  --runs N   timings are the median of N runs (default %d)\n"
@@ -82,8 +87,10 @@ int main(int argc, char **argv)
             sections |= SECTION_TRACE;
         } else if (!strcmp(a, "embree")) {
             sections |= SECTION_EMBREE;
+        } else if (!strcmp(a, "dynamic")) {
+            sections |= SECTION_DYNAMIC;
         } else if (!strcmp(a, "all")) {
-            sections |= SECTION_BUILD | SECTION_TRACE | SECTION_EMBREE;
+            sections |= SECTION_ALL;
         } else if (!strcmp(a, "--quick")) {
             opts.quick = 1;
         } else if (!strcmp(a, "--runs") && value) {
@@ -120,7 +127,7 @@ int main(int argc, char **argv)
         }
     }
     if (!sections)
-        sections = SECTION_BUILD | SECTION_TRACE | SECTION_EMBREE;
+        sections = SECTION_ALL;
     if (opts.quick && !runs_given)
         opts.runs = 1;
 
@@ -168,6 +175,8 @@ int main(int argc, char **argv)
                       "(CMake did not find embree 3, or RT_WITH_EMBREE=OFF).\n");
 #endif
     }
+    if (sections & SECTION_DYNAMIC)
+        failed |= bench_dynamic_section(&opts, meshes, mesh_count) != 0;
     int flagged = report_close();
     for (int m = 0; m < mesh_count; m++)
         bench_mesh_release(&meshes[m]);
