@@ -49,6 +49,9 @@ struct scene_object {
      * SAH probability of hitting its largest instance box (MacDonald and
      * Booth 1990); paper 001 sec. 4.1.1 scales its benefits by this. */
     double expected_rays;
+    /* RT_AUTOMATIC: traversal time lost to refitting since the last build
+     * (update.c). */
+    double automatic_lost_ms;
 
     /* Hints (rtObjectParameteri); RT_AUTOMATIC when none was given. */
     unsigned class_hint;

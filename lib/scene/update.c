@@ -180,10 +180,18 @@ static int async_rebuild(struct scene_object *object, const struct bvh_build_par
 /*
  * RT_AUTOMATIC: the choice paper 000 (sec. 7.5) leaves open, made from
  * measured costs.  Refit first (it is needed to know how far the tree has
- * degraded and costs O(n)); then rebuild when the traversal time the
- * rebuild would save this frame exceeds what the rebuild costs:
+ * degraded and costs O(n)); then rebuild once the traversal time lost to
+ * the degraded tree since the last build has added up to what a rebuild
+ * costs:
  *
- *   expected_rays * time_per_test * (SAH_refit - SAH_fresh) > build_ms
+ *   sum over frames since the last build of
+ *       expected_rays * time_per_test * (SAH_refit - SAH_fresh)  >  build_ms
+ *
+ * This is the rent-or-buy rule: it never spends more than twice what the
+ * best offline schedule of rebuilds would, whatever the animation, where a
+ * rule comparing one frame's loss with the build cost rebuilds too late
+ * (a new tree pays off over every later frame; measured by rtbench's
+ * exploding mesh, docs/performance.md).
  *
  * SAH costs are in traversal steps per ray reaching the object (our SAH
  * is normalised by the root area, so a fresh build's cost after the last
@@ -200,10 +208,12 @@ static int automatic(struct scene_object *object, const struct bvh_build_params 
 {
     refit(object, params, config->pool);
     const struct scene_accel *accel = object->accel;
-    double saved_ms = object->expected_rays * config->ms_per_test *
-                      (accel->sah_cost - accel->built_sah_cost);
-    if (saved_ms > accel->build_ms) {
+    double lost_ms = object->expected_rays * config->ms_per_test *
+                     (accel->sah_cost - accel->built_sah_cost);
+    object->automatic_lost_ms += lost_ms > 0.0 ? lost_ms : 0.0;
+    if (object->automatic_lost_ms > accel->build_ms) {
         object->last_strategy = RT_REBUILD;
+        object->automatic_lost_ms = 0.0;
         return rebuild(object, params, 0, config->pool);
     }
     object->last_strategy = RT_REFIT;
