@@ -10,7 +10,7 @@
  * as in madmann91/bvh's binned_sah_builder.h: fill_bins, find_best_split,
  * partition_refs, and the object-median fallback_split.
  *
- * Conventions: primitives travel as `struct ref` (box + caller index, 32
+ * Conventions: primitives travel as `struct build_ref` (box + caller index, 32
  * bytes) in one array partitioned in place, so every pass over a node is a
  * linear scan.  A "centroid" here is box.min + box.max, twice the true
  * centroid: the factor cancels in every ratio and saves a multiply.
@@ -23,18 +23,12 @@
 #include <string.h>
 
 #include "accel/build_internal.h"
+#include "accel/build_more.h"
 #include "accel/vec4.h"
 #include "base/alloc.h"
 
-/* A primitive's box plus the caller's index, 32 bytes so that a partition
- * swaps two aligned halves of a cache line.  Loaded as two vec4: lo with
- * the index's bits in lane 3 (ref_id; masked off before any arithmetic),
- * and hi with lane 3 zero. */
-struct ref {
-    float lo[4];
-    float hi[4];
-};
-typedef char ref_is_32_bytes[sizeof(struct ref) == 32 ? 1 : -1];
+/* Primitives travel as struct build_ref (build_more.h): the box plus the
+ * caller's index in lane 3 of lo, 32 bytes, loaded as two vec4. */
 
 /* The bins of all three axes (paper 000 sec. 4: "we track not only the
  * number of triangles in each bin, but also the bounds of all triangles
@@ -126,7 +120,7 @@ static void init_binning(struct binning *bn, const struct cbounds *cb, int bin_c
 }
 
 /* The doubled centroid of a ref, lane 3 zero. */
-static inline vec4 ref_centroid(const struct ref *r)
+static inline vec4 ref_centroid(const struct build_ref *r)
 {
     return vec4_add(vec4_xyz0(vec4_load(r->lo)), vec4_load(r->hi));
 }
@@ -141,12 +135,6 @@ static inline void bins_of(const struct binning *bn, vec4 centroid, int32_t bin[
     vec4_trunc(bin, f);
 }
 
-static inline uint32_t ref_id(const struct ref *r)
-{
-    uint32_t id;
-    memcpy(&id, &r->lo[3], sizeof(id));
-    return id;
-}
 
 static void store_box(struct aabb *box, vec4 lo, vec4 hi)
 {
@@ -161,7 +149,7 @@ static void store_box(struct aabb *box, vec4 lo, vec4 hi)
 }
 
 /* Box and centroid bounds of refs[begin, end). */
-static void range_bounds(const struct ref *refs, uint32_t begin, uint32_t end,
+static void range_bounds(const struct build_ref *refs, uint32_t begin, uint32_t end,
                          struct aabb *box, struct cbounds *cb)
 {
     vec4 lo = vec4_splat(INFINITY);
@@ -183,7 +171,7 @@ static void range_bounds(const struct ref *refs, uint32_t begin, uint32_t end,
 /* Step 1: project every primitive of the node into the bins of each axis
  * (paper 000 sec. 4; Wald 2007). */
 static void fill_bins(struct bins *bins, int bin_count, const struct binning *bn,
-                      const struct ref *refs, uint32_t begin, uint32_t end)
+                      const struct build_ref *refs, uint32_t begin, uint32_t end)
 {
     vec4 empty_lo = vec4_splat(INFINITY);
     vec4 empty_hi = vec4_splat(-INFINITY);
@@ -195,7 +183,7 @@ static void fill_bins(struct bins *bins, int bin_count, const struct binning *bn
         }
     }
     for (uint32_t i = begin; i < end; i++) {
-        const struct ref *r = &refs[i];
+        const struct build_ref *r = &refs[i];
         /* Lane 3 masked: the index's bits would be denormal floats, and
          * arithmetic on denormals can cost a microcode assist each. */
         vec4 lo = vec4_xyz0(vec4_load(r->lo));
@@ -291,7 +279,7 @@ static int find_best_split(const struct bins *bins, int bin_count, const struct 
  * box taken from the bins could miss a primitive: one rounding per
  * operation, as in vec4 (each assignment to a float rounds, C99 5.1.2.3,
  * even where FLT_EVAL_METHOD != 0). */
-static inline int goes_left(const struct binning *bn, const struct ref *r, int axis, int plane)
+static inline int goes_left(const struct binning *bn, const struct build_ref *r, int axis, int plane)
 {
     float c = r->lo[axis] + r->hi[axis];
     float d = c - bn->origin_s[axis];
@@ -313,7 +301,7 @@ static inline int goes_left(const struct binning *bn, const struct ref *r, int a
  * the time (the observation behind Edelkamp and Weiss 2016,
  * "BlockQuicksort"); measured 4x faster than Hoare's scheme on 1M refs.
  */
-static uint32_t partition_refs(struct ref *refs, uint32_t begin, uint32_t end,
+static uint32_t partition_refs(struct build_ref *refs, uint32_t begin, uint32_t end,
                                const struct binning *bn, const struct split *s,
                                struct cbounds *left_cb, struct cbounds *right_cb)
 {
@@ -327,7 +315,7 @@ static uint32_t partition_refs(struct ref *refs, uint32_t begin, uint32_t end,
     vec4 rhi = neg_inf;
     uint32_t first_right = begin;
     for (uint32_t i = begin; i < end; i++) {
-        struct ref x = refs[i];
+        struct build_ref x = refs[i];
         int left = goes_left(bn, &x, axis, plane);
         vec4 c = ref_centroid(&x);
         llo = vec4_min(llo, vec4_select(left, c, inf));
@@ -379,7 +367,7 @@ static void sort_small(const uint32_t *key, uint32_t n, uint8_t *order)
     }
 }
 
-static int find_small_split(const struct ref *refs, uint32_t n, struct small_split *best)
+static int find_small_split(const struct build_ref *refs, uint32_t n, struct small_split *best)
 {
     if (n == 2) {
         /* One possible split, whatever the axis: the commonest node of
@@ -433,128 +421,16 @@ static int find_small_split(const struct ref *refs, uint32_t n, struct small_spl
 }
 
 /* Puts the node's refs in the chosen order; returns the first right slot. */
-static uint32_t apply_small_split(struct ref *refs, uint32_t begin, uint32_t n,
+static uint32_t apply_small_split(struct build_ref *refs, uint32_t begin, uint32_t n,
                                   const struct small_split *s)
 {
-    struct ref tmp[BINNED_EXACT_MAX];
+    struct build_ref tmp[BINNED_EXACT_MAX];
     for (uint32_t i = 0; i < n; i++)
         tmp[i] = refs[begin + s->order[i]];
     memcpy(&refs[begin], tmp, n * sizeof(*tmp));
     return begin + s->pos;
 }
 
-/* Total order for the median split: centroid on `axis`, then the caller's
- * index, so that equal centroids still give one deterministic order
- * (build_float_order: total even for NaN, so select_nth's scans stay in
- * their range whatever the input). */
-static inline int ref_less(const struct ref *a, const struct ref *b, int axis)
-{
-    uint32_t ka = build_float_order(a->lo[axis] + a->hi[axis]);
-    uint32_t kb = build_float_order(b->lo[axis] + b->hi[axis]);
-    if (ka != kb)
-        return ka < kb;
-    return ref_id(a) < ref_id(b);
-}
-
-static inline void swap_refs(struct ref *refs, size_t i, size_t j)
-{
-    struct ref tmp = refs[i];
-    refs[i] = refs[j];
-    refs[j] = tmp;
-}
-
-static void sift_down(struct ref *refs, size_t root, size_t n, int axis)
-{
-    for (;;) {
-        size_t child = 2 * root + 1;
-        if (child >= n)
-            return;
-        if (child + 1 < n && ref_less(&refs[child], &refs[child + 1], axis))
-            child++;
-        if (!ref_less(&refs[root], &refs[child], axis))
-            return;
-        swap_refs(refs, root, child);
-        root = child;
-    }
-}
-
-/* Heapsort: the worst-case guarantee behind select_nth. */
-static void heap_sort(struct ref *refs, size_t n, int axis)
-{
-    for (size_t i = n / 2; i-- > 0;)
-        sift_down(refs, i, n, axis);
-    for (size_t end = n; end-- > 1;) {
-        swap_refs(refs, 0, end);
-        sift_down(refs, 0, end, axis);
-    }
-}
-
-/* Median-of-three pivot over a, b, c (by value). */
-static struct ref median3(const struct ref *a, const struct ref *b, const struct ref *c, int axis)
-{
-    if (ref_less(a, b, axis)) {
-        if (ref_less(b, c, axis))
-            return *b;
-        return ref_less(a, c, axis) ? *c : *a;
-    }
-    if (ref_less(a, c, axis))
-        return *a;
-    return ref_less(b, c, axis) ? *c : *b;
-}
-
-/* select_nth finishes ranges this short with an insertion sort, the usual
- * cut-off of introsort-style selections. */
-#define SELECT_INSERTION_MAX 16
-
-/*
- * Reorders refs[0, n) so that refs[nth] is the element a full sort would
- * put there, with no greater element before it and no smaller after it
- * (introselect: Hoare partitions around a median-of-three, falling back to
- * heapsort when the partitions stop shrinking fast enough, so the worst
- * case stays O(n log n)).
- */
-static void select_nth(struct ref *refs, size_t n, size_t nth, int axis)
-{
-    size_t lo = 0;
-    size_t hi = n; /* exclusive */
-    int budget = 2 * (int)build_ceil_log2((uint32_t)n) + 2;
-    while (hi - lo > SELECT_INSERTION_MAX) {
-        if (budget-- == 0) {
-            heap_sort(refs + lo, hi - lo, axis);
-            return;
-        }
-        size_t mid = lo + (hi - lo) / 2;
-        struct ref pivot = median3(&refs[lo], &refs[mid], &refs[hi - 1], axis);
-        /* Hoare's scheme: the pivot value is in the range, so both scans
-         * stop inside it; afterwards [lo, j] <= pivot <= [j + 1, hi). */
-        size_t i = lo;
-        size_t j = hi - 1;
-        for (;;) {
-            while (ref_less(&refs[i], &pivot, axis))
-                i++;
-            while (ref_less(&pivot, &refs[j], axis))
-                j--;
-            if (i >= j)
-                break;
-            swap_refs(refs, i, j);
-            i++;
-            j--;
-        }
-        if (nth <= j)
-            hi = j + 1;
-        else
-            lo = j + 1;
-    }
-    for (size_t a = lo + 1; a < hi; a++) {
-        struct ref x = refs[a];
-        size_t b = a;
-        while (b > lo && ref_less(&x, &refs[b - 1], axis)) {
-            refs[b] = refs[b - 1];
-            b--;
-        }
-        refs[b] = x;
-    }
-}
 
 /*
  * Step 4, the fallback: split [begin, end) at the object median, i.e. into
@@ -564,7 +440,7 @@ static void select_nth(struct ref *refs, size_t n, size_t nth, int axis)
  * axis (thousands of identical triangles, say) the order is irrelevant and
  * the range is simply cut in two.  Returns the first right slot.
  */
-static uint32_t fallback_split(struct ref *refs, uint32_t begin, uint32_t end,
+static uint32_t fallback_split(struct build_ref *refs, uint32_t begin, uint32_t end,
                                const struct cbounds *cb)
 {
     uint32_t n = end - begin;
@@ -579,7 +455,7 @@ static uint32_t fallback_split(struct ref *refs, uint32_t begin, uint32_t end,
         }
     }
     if (extent > 0.0f)
-        select_nth(refs + begin, n, n / 2, axis);
+        build_select_nth(refs + begin, n, n / 2, axis);
     return mid;
 }
 
@@ -610,7 +486,7 @@ int accel_build_binned_sah(struct bvh *out, const struct aabb *prim_boxes, uint3
     }
     if (accel_build_alloc(out, prim_count))
         return -1;
-    struct ref *refs = rt_realloc_array(NULL, prim_count, sizeof(*refs));
+    struct build_ref *refs = rt_realloc_array(NULL, prim_count, sizeof(*refs));
     struct bins *bins = rt_malloc(sizeof(*bins));
     if (!refs || !bins) {
         rt_free(refs);
@@ -622,7 +498,7 @@ int accel_build_binned_sah(struct bvh *out, const struct aabb *prim_boxes, uint3
     struct task stack[BUILD_STACK_SIZE];
     struct task *t = &stack[0];
     for (uint32_t i = 0; i < prim_count; i++) {
-        struct ref *r = &refs[i];
+        struct build_ref *r = &refs[i];
         for (int k = 0; k < 3; k++) {
             r->lo[k] = prim_boxes[i].min[k];
             r->hi[k] = prim_boxes[i].max[k];
@@ -733,7 +609,7 @@ int accel_build_binned_sah(struct bvh *out, const struct aabb *prim_boxes, uint3
     }
 
     for (uint32_t i = 0; i < prim_count; i++)
-        out->prim_index[i] = ref_id(&refs[i]);
+        out->prim_index[i] = build_ref_id(&refs[i]);
     rt_free(refs);
     rt_free(bins);
     accel_build_finish(out, node_count, max_depth);

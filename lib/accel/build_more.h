@@ -13,6 +13,7 @@
 #ifndef RT_ACCEL_BUILD_MORE_H
 #define RT_ACCEL_BUILD_MORE_H
 
+#include <stddef.h>
 #include <stdint.h>
 #include <string.h>
 
@@ -109,5 +110,14 @@ static inline uint32_t build_ref_id(const struct build_ref *ref)
 void build_median_refs(struct bvh_node *nodes, struct build_ref *refs, uint32_t n,
                        uint32_t depth0, const struct bvh_build_params *params,
                        uint32_t *node_count, uint32_t *max_depth);
+
+/*
+ * Reorders refs[0, n) so that refs[nth] is the element a full sort by
+ * centroid on `axis` (ties by index) would put there, with none greater
+ * before it and none smaller after it: the object median when nth = n/2.
+ * Introselect, O(n) expected and O(n log n) worst case; total and
+ * deterministic for any input, NaN included.
+ */
+void build_select_nth(struct build_ref *refs, size_t n, size_t nth, int axis);
 
 #endif
