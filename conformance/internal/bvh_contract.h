@@ -8,9 +8,9 @@
  * #include.
  *
  * bvh_check_tree is the same list of invariants as builders.c's
- * check_tree (which is file-static there), plus the refit order property
- * the reverse-sweep refit relies on: every inner node's children have
- * larger indices than the node.
+ * check_tree (which is file-static there), including the one the
+ * reverse-sweep refit (refit.h) relies on: every inner node's children
+ * have larger indices than the node.
  */
 #ifndef RT_CONFORMANCE_BVH_CONTRACT_H
 #define RT_CONFORMANCE_BVH_CONTRACT_H
