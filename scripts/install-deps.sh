@@ -11,7 +11,6 @@ packages=(
   libembree-dev                               # rtbench: comparison only
   xvfb xauth                                  # window tests without a display
   gnuplot-nox                                 # rtbench: PNG plots
-  clang                                       # second compiler in CI
 )
 
 missing=()
