@@ -30,112 +30,14 @@
 
 static int failures;
 
-static int box_inside(const float in_min[3], const float in_max[3], const float out_min[3],
-                      const float out_max[3])
-{
-    for (int k = 0; k < 3; k++) {
-        if (!(in_min[k] >= out_min[k]) || !(in_max[k] <= out_max[k]))
-            return 0;
-    }
-    return 1;
-}
+#include "bvh_contract.h"
 
-/* Every structural invariant of bvh.h.  With finite == 0 (boxes with
- * NaN), box containment is not checked. */
+/* Every structural invariant of bvh.h (bvh_contract.h).  With finite
+ * == 0 (boxes with NaN), box containment is not checked. */
 static void check_tree(const char *what, const struct bvh *b, const struct aabb *boxes,
                        uint32_t n, int max_leaf, int finite)
 {
-    int before = failures;
-    if (n == 0) {
-        TG_CHECK(failures, b->node_count == 0 && !b->nodes && b->prim_count == 0 && b->depth == 0,
-                 "%s: empty tree", what);
-        return;
-    }
-    TG_CHECK(failures, b->prim_count == n, "%s: prim_count %u != %u", what, b->prim_count, n);
-    TG_CHECK(failures, b->node_count >= 1 && b->node_count <= 2 * n - 1,
-             "%s: node_count %u for %u prims", what, b->node_count, n);
-    if (failures != before)
-        return;
-    uint8_t *seen = calloc(n, 1);
-    uint8_t *covered = calloc(n, 1);
-    uint8_t *visited = calloc(b->node_count, 1);
-    uint32_t *stack_node = malloc(sizeof(uint32_t) * (b->node_count + 1));
-    uint32_t *stack_depth = malloc(sizeof(uint32_t) * (b->node_count + 1));
-    if (!seen || !covered || !visited || !stack_node || !stack_depth) {
-        fprintf(stderr, "out of memory\n");
-        exit(2);
-    }
-    for (uint32_t i = 0; i < n && failures == before; i++) {
-        uint32_t p = b->prim_index[i];
-        TG_CHECK(failures, p < n && !seen[p], "%s: prim_index[%u] = %u repeated or out of range",
-                 what, i, p);
-        if (p < n)
-            seen[p] = 1;
-    }
-    uint32_t sp = 0;
-    uint32_t visited_count = 0;
-    uint32_t max_depth = 0;
-    stack_node[sp] = 0;
-    stack_depth[sp++] = 0;
-    while (sp > 0 && failures == before) {
-        sp--;
-        uint32_t ni = stack_node[sp];
-        uint32_t d = stack_depth[sp];
-        TG_CHECK(failures, ni < b->node_count && !visited[ni], "%s: node %u reached twice", what,
-                 ni);
-        if (failures != before)
-            break;
-        visited[ni] = 1;
-        visited_count++;
-        if (d > max_depth)
-            max_depth = d;
-        const struct bvh_node *node = &b->nodes[ni];
-        if (node->count) {
-            TG_CHECK(failures,
-                     node->count <= (uint32_t)max_leaf && node->first < n &&
-                         node->count <= n - node->first,
-                     "%s: leaf %u holds [%u, +%u)", what, ni, node->first, node->count);
-            if (failures != before)
-                break;
-            for (uint32_t s = node->first; s < node->first + node->count; s++) {
-                TG_CHECK(failures, !covered[s], "%s: slot %u in two leaves", what, s);
-                covered[s] = 1;
-                const struct aabb *pb = &boxes[b->prim_index[s]];
-                if (finite)
-                    TG_CHECK(failures, box_inside(pb->min, pb->max, node->aabb_min, node->aabb_max),
-                             "%s: leaf %u does not contain prim %u", what, ni, b->prim_index[s]);
-            }
-        } else {
-            /* Depth-first numbering puts children after their parent,
-             * which also rules out cycles. */
-            TG_CHECK(failures, node->first > ni && node->first + 1 < b->node_count,
-                     "%s: inner %u has children %u, %u", what, ni, node->first, node->first + 1);
-            if (failures != before)
-                break;
-            for (uint32_t c = node->first; c <= node->first + 1; c++) {
-                if (finite)
-                    TG_CHECK(failures,
-                             box_inside(b->nodes[c].aabb_min, b->nodes[c].aabb_max,
-                                        node->aabb_min, node->aabb_max),
-                             "%s: node %u outside its parent %u", what, c, ni);
-                stack_node[sp] = c;
-                stack_depth[sp++] = d + 1;
-            }
-        }
-    }
-    if (failures == before) {
-        TG_CHECK(failures, visited_count == b->node_count, "%s: %u of %u nodes reachable", what,
-                 visited_count, b->node_count);
-        for (uint32_t s = 0; s < n && failures == before; s++)
-            TG_CHECK(failures, covered[s], "%s: slot %u in no leaf", what, s);
-        TG_CHECK(failures, max_depth == b->depth && b->depth <= BVH_MAX_DEPTH,
-                 "%s: depth %u recorded %u (max %d)", what, max_depth, b->depth, BVH_MAX_DEPTH);
-    }
-    free(seen);
-    free(covered);
-    free(visited);
-    free(stack_node);
-    free(stack_depth);
+    bvh_check_tree(what, b, boxes, n, (uint32_t)max_leaf, finite);
 }
 
 static int build(struct bvh *b, const struct aabb *boxes, uint32_t n, enum bvh_builder builder,
@@ -300,9 +202,9 @@ static void check_tiny(void)
             check_tree("1 prim", &b, &one, 1, 8, 1);
             TG_CHECK(failures, b.node_count == 1 && b.nodes[0].count == 1 && b.depth == 0,
                      "1 prim: single leaf root");
-            TG_CHECK(failures, box_inside(one.min, one.max, b.nodes[0].aabb_min,
+            TG_CHECK(failures, bc_box_inside(one.min, one.max, b.nodes[0].aabb_min,
                                           b.nodes[0].aabb_max) &&
-                                   box_inside(b.nodes[0].aabb_min, b.nodes[0].aabb_max, one.min,
+                                   bc_box_inside(b.nodes[0].aabb_min, b.nodes[0].aabb_max, one.min,
                                               one.max),
                      "1 prim: root box is the prim box");
         }
