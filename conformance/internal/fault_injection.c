@@ -8,8 +8,9 @@
  * the start of a fixed sequence fails, and every allocation after it fails
  * too, until rt_alloc_fail_reset():
  *   rtCreateContext (may return NULL: then there is nothing more to do),
- *   rtGenObjects, three object definitions (rtBegin/rtVertex with normals
- *   and several materials, rtDrawElements from vertex arrays, quads),
+ *   rtGenObjects, rtGenTextures, a texture (rtBindTexture, rtTexImage2D),
+ *   three object definitions (rtBegin/rtVertex with normals and several
+ *   materials, rtDrawElements from vertex arrays, textured quads),
  *   rtEndObject, instances (rtInstantiateObject), rtRenderFrame in eye-light
  *   and then Whitted mode, rtReadPixels, rtTraceRays and rtOccludedRays.
  * After every call rtGetError must be RT_NO_ERROR or RT_OUT_OF_MEMORY
@@ -23,6 +24,10 @@
  * trace the scene again with results identical bit for bit to those of a
  * context that never saw a failure.  The loop ends at the first N for which
  * the sequence completes without an injected failure.
+ *
+ * A texture whose rtBindTexture reported RT_OUT_OF_MEMORY does not exist
+ * (rtIsTexture); one whose rtTexImage2D did has no image, and object C is
+ * drawn untextured (a reported failure: the image may differ).
  *
  * A definition that reported RT_OUT_OF_MEMORY leaves its object undefined;
  * one that did not is complete (its triangle count); an instance that
@@ -116,6 +121,7 @@ static void check_definition(RTuint name, int reported_before, RTint triangles)
 /* ---- the scene --------------------------------------------------------------- */
 
 enum { OBJ_A = 10, OBJ_B = 20, OBJ_C = 30 };
+enum { TEXTURE = 40 };
 
 static float array_positions[3 * 400];
 static float array_normals[3 * 400];
@@ -135,6 +141,40 @@ static void make_arrays(void)
     }
 }
 
+/* The texture object C uses: 8x8 texels, two tones in a checkerboard. */
+static void define_texture(int check)
+{
+    static unsigned char image[8 * 8 * 3];
+    for (int i = 0; i < 8 * 8; i++) {
+        int odd = (i % 8 + i / 8) % 2;
+        image[3 * i] = (unsigned char)(odd ? 230 : 40);
+        image[3 * i + 1] = (unsigned char)(odd ? 200 : 90);
+        image[3 * i + 2] = 120;
+    }
+    RTuint generated[3];
+    rtGenTextures(3, generated);
+    if (check)
+        after("rtGenTextures");
+    int before = failures_seen;
+    rtBindTexture(RT_TEXTURE_2D, TEXTURE);
+    if (check) {
+        after("rtBindTexture");
+        if (failures_seen != before) {
+            EXPECT(!rtIsTexture(TEXTURE), "N=%ld: a failed rtBindTexture created the texture",
+                   current_n);
+            return; /* with 0 bound, rtTexImage2D would be RT_INVALID_OPERATION */
+        }
+        EXPECT(rtIsTexture(TEXTURE), "N=%ld: rtBindTexture did not create the texture",
+               current_n);
+    }
+    rtTexImage2D(RT_TEXTURE_2D, 0, RT_RGB, 8, 8, 0, RT_RGB, RT_UNSIGNED_BYTE, image);
+    if (check)
+        after("rtTexImage2D");
+    rtTexParameteri(RT_TEXTURE_2D, RT_TEXTURE_MAG_FILTER, RT_NEAREST);
+    if (check)
+        after("rtTexParameteri");
+}
+
 /* Defines the three objects; `check` runs after() after each call. */
 static void define_objects(int check)
 {
@@ -142,6 +182,7 @@ static void define_objects(int check)
     rtGenObjects(4, generated);
     if (check)
         after("rtGenObjects");
+    define_texture(check);
 
     int before = failures_seen;
     rtNewObject(OBJ_A);
@@ -189,18 +230,24 @@ static void define_objects(int check)
     rtNewObject(OBJ_C);
     const float grey[4] = {0.6f, 0.6f, 0.6f, 1.0f};
     rtMaterialfv(RT_FRONT_AND_BACK, RT_DIFFUSE, grey);
+    rtEnable(RT_TEXTURE_2D);
     rtBegin(RT_QUADS);
     for (int j = 0; j < 10; j++)
         for (int i = 0; i < 10; i++) {
             float x = -5.0f + (float)i, y = -5.0f + (float)j;
+            rtTexCoord2f(0.3f * x, 0.3f * y);
             rtVertex3f(x, y, 0.0f);
+            rtTexCoord2f(0.3f * (x + 1.0f), 0.3f * y);
             rtVertex3f(x + 1.0f, y, 0.0f);
+            rtTexCoord2f(0.3f * (x + 1.0f), 0.3f * (y + 1.0f));
             rtVertex3f(x + 1.0f, y + 1.0f, 0.0f);
+            rtTexCoord2f(0.3f * x, 0.3f * (y + 1.0f));
             rtVertex3f(x, y + 1.0f, 0.0f);
             if (check)
                 after("rtVertex3f (quads)");
         }
     rtEnd();
+    rtDisable(RT_TEXTURE_2D);
     rtEndObject();
     if (check) {
         after("rtEndObject (C)");

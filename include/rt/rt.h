@@ -143,6 +143,21 @@ typedef struct rt_context *RTcontext;
 #define RT_COLOR_CLEAR_VALUE 0x0C22
 #define RT_RGBA 0x1908
 
+/* ---- Textures -------------------------------------------------------- */
+#define RT_TEXTURE_2D 0x0DE1         /* target, and rtEnable capability */
+#define RT_TEXTURE_BINDING_2D 0x8069 /* rtGetIntegerv */
+#define RT_MAX_TEXTURE_SIZE 0x0D33   /* rtGetIntegerv, 16384 */
+#define RT_TEXTURE_MAG_FILTER 0x2800
+#define RT_TEXTURE_MIN_FILTER 0x2801
+#define RT_TEXTURE_WRAP_S 0x2802
+#define RT_TEXTURE_WRAP_T 0x2803
+#define RT_NEAREST 0x2600
+#define RT_LINEAR 0x2601
+#define RT_REPEAT 0x2901
+#define RT_CLAMP_TO_EDGE 0x812F
+#define RT_RGB 0x1907
+/* RT_RGBA (0x1908) is defined with the frame constants above. */
+
 /* ---- Context state and statistics (rtGetIntegerv / rtGetFloatv) ------ */
 #define RT_THREADS 0x8F30            /* render threads (caller included) */
 #define RT_BVH_BINS 0x8F31           /* bins of the binned SAH builder */
@@ -309,6 +324,16 @@ RTAPI void rtLightfv(RTenum light, RTenum pname, const RTfloat *params);
 RTAPI void rtLightModelfv(RTenum pname, const RTfloat *params);
 RTAPI void rtShadingMode(RTenum mode);
 RTAPI void rtRenderParameteri(RTenum pname, RTint param);
+
+/* ---- Textures (docs/textures.md) -------------------------------------- */
+RTAPI void rtGenTextures(RTsizei n, RTuint *textures);
+RTAPI void rtDeleteTextures(RTsizei n, const RTuint *textures);
+RTAPI RTboolean rtIsTexture(RTuint texture);
+RTAPI void rtBindTexture(RTenum target, RTuint texture);
+RTAPI void rtTexImage2D(RTenum target, RTint level, RTint internalformat, RTsizei width,
+                        RTsizei height, RTint border, RTenum format, RTenum type,
+                        const void *pixels);
+RTAPI void rtTexParameteri(RTenum target, RTenum pname, RTint param);
 
 /* ---- Frames (docs/frames.md) ------------------------------------------ */
 RTAPI void rtViewport(RTint x, RTint y, RTsizei width, RTsizei height);

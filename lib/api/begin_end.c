@@ -52,11 +52,21 @@ int rt_vertex_is_finite(const struct rt_context *ctx, const double position[3])
     return isfinite((float)p[0]) && isfinite((float)p[1]) && isfinite((float)p[2]);
 }
 
+/* The interned index of the current material together with the texture
+ * triangles take now: the bound texture while RT_TEXTURE_2D is enabled,
+ * else 0.  The texture is compared here rather than marked stale by
+ * rtBindTexture, rtEnable and rtDeleteTextures, so no path can forget it.
+ * -1 on allocation failure (the next call tries again). */
 static int current_material(struct rt_context *ctx)
 {
     struct object_recording *rec = &ctx->recording;
-    if (rec->material_index < 0)
-        rec->material_index = scene_mesh_intern_material(&rec->mesh, &ctx->material);
+    uint32_t texture = ctx->texture_2d ? ctx->texture_binding : 0;
+    if (rec->material_index < 0 || rec->material_texture != texture) {
+        struct scene_material m = ctx->material;
+        m.texture = texture;
+        rec->material_index = scene_mesh_intern_material(&rec->mesh, &m);
+        rec->material_texture = texture;
+    }
     return rec->material_index;
 }
 

@@ -167,6 +167,7 @@ RTcontext rtCreateContext(const char *configuration)
     scene_material_default(&ctx->material);
     ctx->recording.mesh.bounds = aabb_empty();
     scene_objects_init(&ctx->objects);
+    scene_textures_init(&ctx->textures);
     scene_async_init(&ctx->async, ctx->build_threads, &ctx->build_params);
     scene_frame_init(&ctx->frame);
     ctx->frame.toplevel_paper004 = ctx->toplevel_paper004;
@@ -193,6 +194,7 @@ void rtDestroyContext(RTcontext ctx)
     scene_mesh_release(&ctx->recording.mesh);
     scene_frame_release(&ctx->frame);
     scene_objects_release(&ctx->objects);
+    scene_textures_release(&ctx->textures);
     rt_free(ctx->render.framebuffer);
     rt_free(ctx);
 }

@@ -19,6 +19,7 @@
 #include "scene/frame.h"
 #include "scene/mesh.h"
 #include "scene/object.h"
+#include "scene/texture.h"
 
 #define RT_MAX_MODELVIEW_DEPTH 32 /* OpenGL's minimum, DESIGN.md */
 #define RT_MAX_PROJECTION_DEPTH 4 /* >= 2 required */
@@ -47,6 +48,7 @@ struct object_recording {
     struct scene_mesh mesh;
     int out_of_memory; /* an allocation failed: rtEndObject keeps the old definition */
     int material_index; /* interned index of ctx->material, -1 when stale */
+    uint32_t material_texture; /* the texture material_index was interned with */
 };
 
 /* rtBegin/rtEnd state. */
@@ -89,6 +91,12 @@ struct rt_context {
     struct scene_material material;
     struct object_recording recording;
     struct primitive_block block;
+
+    /* Textures (texture.c).  A triangle records texture_binding when
+     * texture_2d is enabled (begin_end.c, current_material). */
+    struct scene_textures textures;
+    uint32_t texture_binding; /* RT_TEXTURE_BINDING_2D; 0: none */
+    int texture_2d;           /* rtEnable(RT_TEXTURE_2D) */
 
     /* Vertex arrays (array.c). */
     struct client_array vertex_array, normal_array, color_array, texcoord_array;

@@ -146,6 +146,7 @@ void rt_render_job(struct rt_context *ctx, struct render_job *job)
     job->state = &ctx->render;
     job->frame = &ctx->frame;
     job->update = &ctx->update_config;
+    job->textures = &ctx->textures;
     job->pool = rt_context_pool(ctx);
     job->threads = rt_pool_threads(job->pool);
 }

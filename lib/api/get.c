@@ -101,6 +101,12 @@ static enum value_kind state_values(const struct rt_context *ctx, RTenum pname, 
     case RT_SHADE_MODEL:
         v[0] = ctx->shade_model;
         return VALUE_INT;
+    case RT_TEXTURE_BINDING_2D:
+        v[0] = ctx->texture_binding;
+        return VALUE_INT;
+    case RT_MAX_TEXTURE_SIZE:
+        v[0] = SCENE_TEXTURE_MAX_SIZE;
+        return VALUE_INT;
     case RT_STAT_RAYS:
         v[0] = (double)st->rays;
         return VALUE_INT;
@@ -204,6 +210,8 @@ static int *capability(struct rt_context *ctx, RTenum cap)
         return &ctx->render.lights[cap - RT_LIGHT0].enabled;
     if (cap == RT_COLOR_MATERIAL)
         return &ctx->color_material;
+    if (cap == RT_TEXTURE_2D)
+        return &ctx->texture_2d;
     return NULL;
 }
 

@@ -126,7 +126,8 @@ static void frame_task(void *arg, int worker)
 {
     struct render_shared *sh = arg;
     const struct render_state *st = sh->job->state;
-    struct shade_context sc = {st, sh->job->frame, &sh->scene, &sh->counters[worker].c};
+    struct shade_context sc = {st, sh->job->frame, &sh->scene, &sh->counters[worker].c,
+                               sh->job->textures};
     const int *vp = st->viewport;
     uint32_t tiles = (uint32_t)(sh->tiles_x * sh->tiles_y);
     for (;;) {

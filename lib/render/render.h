@@ -19,6 +19,7 @@
 #include "accel/bvh.h"
 #include "base/pool.h"
 #include "scene/frame.h"
+#include "scene/texture.h"
 #include "scene/update.h"
 #include "trace/scene_traverse.h"
 
@@ -67,6 +68,9 @@ struct render_job {
     const struct render_state *state;
     const struct scene_frame *frame; /* prepared: top level valid */
     const struct scene_update_config *update; /* builds and updates on demand */
+    /* Textures, looked up by the name a triangle's material keeps.  Read
+     * only: textures change on the API thread, never during a job. */
+    const struct scene_textures *textures;
     struct rt_pool *pool;
     int threads;
 };

@@ -6,7 +6,9 @@
  * diffuse and Blinn-Phong specular) so a ported GL program looks as it
  * did, with hard shadows, mirror reflection and refraction added in the
  * manner of Whitted (1980).  Surfaces are two-sided: normals are turned
- * towards the incoming ray.
+ * towards the incoming ray.  Textures modulate the ambient and diffuse
+ * material (GL's MODULATE texture environment, applied to the material
+ * rather than to the lit colour; see apply_texture).
  */
 #include "render/shade.h"
 
@@ -57,6 +59,34 @@ static void interpolate(const float *attr, int stride, const uint32_t v[3], floa
     for (int k = 0; k < n; k++)
         out[k] = b0 * attr[stride * v[0] + k] + b1 * attr[stride * v[1] + k] +
                  b2 * attr[stride * v[2] + k];
+}
+
+/*
+ * GL's MODULATE environment (OpenGL 1.1 sec. 3.8.6, table 3.19: C = Cf Ct)
+ * applied before lighting to the colours that carry the surface's own
+ * colour: ambient and diffuse (which RT_COLOR_MATERIAL may have replaced).
+ * Emission and specular are left alone, as with GL 1.2's separate
+ * specular colour.  Lighting is linear in both, so for them this equals
+ * modulating the lit colour.  The triangle keeps the texture's name; a
+ * name without an image (deleted, or never given one) leaves the surface
+ * untextured.  Texture coordinates are interpolated, never flat.
+ */
+static void apply_texture(const struct shade_context *sc, const struct scene_mesh *mesh,
+                          const uint32_t v[3], float b0, float b1, float b2,
+                          struct scene_material *mat)
+{
+    const struct scene_texture *tex = scene_textures_lookup(sc->textures, mat->texture);
+    if (!tex || !tex->texels)
+        return;
+    float st[2], texel[4];
+    interpolate(mesh->texcoords, 2, v, b0, b1, b2, 2, st);
+    /* Without ray footprints every lookup is a magnification (GL's
+     * lambda <= 0), hence the magnification filter (docs/textures.md). */
+    scene_texture_sample(tex, tex->mag_filter, st[0], st[1], texel);
+    for (int k = 0; k < 3; k++) {
+        mat->ambient[k] *= texel[k];
+        mat->diffuse[k] *= texel[k];
+    }
 }
 
 static void fetch_surface(const struct shade_context *sc, const struct trace_scene_hit *hit,
@@ -141,6 +171,8 @@ static void fetch_surface(const struct shade_context *sc, const struct trace_sce
         memcpy(s->mat.ambient, c, sizeof(c));
         memcpy(s->mat.diffuse, c, sizeof(c));
     }
+    if (s->mat.texture)
+        apply_texture(sc, mesh, v, b0, b1, b2, &s->mat);
 }
 
 static void add_scaled(float acc[3], const float a[4], const float b[4], float scale)

@@ -12,6 +12,7 @@ struct shade_context {
     const struct scene_frame *frame;
     const struct trace_scene *scene;
     struct trace_scene_counters *counters;
+    const struct scene_textures *textures; /* read only */
 };
 
 /*

@@ -20,6 +20,7 @@ void scene_material_default(struct scene_material *m)
     m->reflectivity = 0.0f;
     m->transparency = 0.0f;
     m->ior = 1.0f;
+    m->texture = 0;
 }
 
 void scene_mesh_release(struct scene_mesh *mesh)

@@ -9,6 +9,7 @@
  * Triangle j uses vertices indices[3j..3j+2]; its material is
  * materials[tri_material[j]]; with TRI_FLAT set it is shaded with the
  * normal and colour of vertex tri_provoking[j] (GL's provoking vertex).
+ * Texture coordinates are always interpolated, flat shading or not (GL).
  */
 #ifndef RT_SCENE_MESH_H
 #define RT_SCENE_MESH_H
@@ -27,6 +28,10 @@ struct scene_material {
     float reflectivity;
     float transparency;
     float ior;
+    /* Name of the 2D texture bound when RT_TEXTURE_2D was enabled, 0 for
+     * none.  Kept by name, as a GL display list keeps it: the image is
+     * looked up when a frame is rendered (scene/texture.h). */
+    uint32_t texture;
 };
 
 #define TRI_FLAT 1u           /* rtShadeModel(RT_FLAT) was current */

@@ -1,0 +1,229 @@
+/*
+ * texture.c - 2D texture objects as in OpenGL 1.1: rtGenTextures,
+ * rtDeleteTextures, rtIsTexture, rtBindTexture, rtTexImage2D and
+ * rtTexParameteri.  The table and the sampler are scene/texture.c; the
+ * RT_TEXTURE_2D capability and the binding and size queries are get.c.
+ *
+ * Deviations from GL 1.1 (docs/textures.md): there is no default texture
+ * object, so with 0 bound rtTexImage2D and rtTexParameteri record
+ * RT_INVALID_OPERATION; level 0 only (no mipmaps); pixel rows are tightly
+ * packed (GL's UNPACK_ALIGNMENT 1, there is no rtPixelStorei); images are
+ * stored as 8-bit RGBA whatever the upload type.
+ *
+ * Triangles keep the texture's name, not its image (begin_end.c,
+ * current_material), so every change made here shows in the next frame of
+ * every object textured with that name.  Nothing here runs during a frame:
+ * the calls are synchronous and the renderer only reads the table.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "api/context.h"
+#include "base/alloc.h"
+
+void rtGenTextures(RTsizei n, RTuint *textures)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_begin(ctx, "rtGenTextures"))
+        return;
+    if (n < 0 || (n > 0 && !textures)) {
+        rt_error(ctx, RT_INVALID_VALUE, "rtGenTextures(n=%d, textures=%p)", n,
+                 (void *)textures);
+        return;
+    }
+    if (scene_textures_generate(&ctx->textures, (uint32_t)n, textures))
+        rt_error(ctx, RT_OUT_OF_MEMORY, "rtGenTextures(n=%d): out of memory", n);
+}
+
+void rtDeleteTextures(RTsizei n, const RTuint *textures)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_begin(ctx, "rtDeleteTextures"))
+        return;
+    if (n < 0 || (n > 0 && !textures)) {
+        rt_error(ctx, RT_INVALID_VALUE, "rtDeleteTextures(n=%d, textures=%p)", n,
+                 (const void *)textures);
+        return;
+    }
+    for (RTsizei i = 0; i < n; i++) {
+        /* 0 and unknown names are ignored, as glDeleteTextures does. */
+        if (textures[i] != 0 && textures[i] == ctx->texture_binding)
+            ctx->texture_binding = 0;
+        scene_textures_remove(&ctx->textures, textures[i]);
+    }
+}
+
+RTboolean rtIsTexture(RTuint texture)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_begin(ctx, "rtIsTexture"))
+        return RT_FALSE;
+    /* A name from rtGenTextures is a texture only once bound (GL 1.1). */
+    const struct scene_texture *tex = scene_textures_lookup(&ctx->textures, texture);
+    return tex && tex->created ? RT_TRUE : RT_FALSE;
+}
+
+void rtBindTexture(RTenum target, RTuint texture)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_begin(ctx, "rtBindTexture"))
+        return;
+    if (target != RT_TEXTURE_2D) {
+        rt_error(ctx, RT_INVALID_ENUM, "rtBindTexture(target=0x%x)", target);
+        return;
+    }
+    if (texture != 0) {
+        struct scene_texture *tex = scene_textures_get_or_create(&ctx->textures, texture);
+        if (!tex) {
+            rt_error(ctx, RT_OUT_OF_MEMORY, "rtBindTexture(texture=%u): out of memory",
+                     texture);
+            return;
+        }
+        tex->created = 1;
+    }
+    ctx->texture_binding = texture;
+}
+
+/* The texture that rtTexImage2D and rtTexParameteri change, or NULL after
+ * recording RT_INVALID_OPERATION (none bound, or inside rtBegin/rtEnd). */
+static struct scene_texture *bound_texture(struct rt_context *ctx, const char *caller)
+{
+    if (rt_check_outside_begin(ctx, caller))
+        return NULL;
+    struct scene_texture *tex = scene_textures_lookup(&ctx->textures, ctx->texture_binding);
+    if (!tex)
+        rt_error(ctx, RT_INVALID_OPERATION, "%s: no texture is bound (bind a non-zero name)",
+                 caller);
+    return tex;
+}
+
+/* Component c of pixel i of an upload, as an 8-bit value: RT_FLOAT is
+ * clamped to [0, 1] (NaN to 0) and rounded, as rtReadPixels converts. */
+static uint8_t upload_component(const void *pixels, RTenum type, size_t index)
+{
+    if (type == RT_UNSIGNED_BYTE)
+        return ((const uint8_t *)pixels)[index];
+    float f;
+    memcpy(&f, (const unsigned char *)pixels + index * sizeof(float), sizeof(f));
+    f = fminf(fmaxf(f, 0.0f), 1.0f); /* fmaxf(NaN, 0) is 0 */
+    return (uint8_t)lrintf(f * 255.0f);
+}
+
+void rtTexImage2D(RTenum target, RTint level, RTint internalformat, RTsizei width,
+                  RTsizei height, RTint border, RTenum format, RTenum type, const void *pixels)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx)
+        return;
+    struct scene_texture *tex = bound_texture(ctx, "rtTexImage2D");
+    if (!tex)
+        return;
+    if (target != RT_TEXTURE_2D) {
+        rt_error(ctx, RT_INVALID_ENUM, "rtTexImage2D(target=0x%x)", target);
+        return;
+    }
+    if (format != RT_RGB && format != RT_RGBA) {
+        rt_error(ctx, RT_INVALID_ENUM, "rtTexImage2D(format=0x%x)", format);
+        return;
+    }
+    if (type != RT_UNSIGNED_BYTE && type != RT_FLOAT) {
+        rt_error(ctx, RT_INVALID_ENUM, "rtTexImage2D(type=0x%x)", type);
+        return;
+    }
+    if (level != 0) {
+        rt_error(ctx, RT_INVALID_VALUE, "rtTexImage2D(level=%d): only level 0 (no mipmaps)",
+                 level);
+        return;
+    }
+    /* GL 1.1 takes the component count (3, 4) or a format name. */
+    int opaque = internalformat == 3 || internalformat == (RTint)RT_RGB;
+    if (!opaque && internalformat != 4 && internalformat != (RTint)RT_RGBA) {
+        rt_error(ctx, RT_INVALID_VALUE, "rtTexImage2D(internalformat=0x%x)",
+                 (unsigned)internalformat);
+        return;
+    }
+    if (width < 1 || height < 1 || width > SCENE_TEXTURE_MAX_SIZE ||
+        height > SCENE_TEXTURE_MAX_SIZE || border != 0) {
+        rt_error(ctx, RT_INVALID_VALUE,
+                 "rtTexImage2D(width=%d, height=%d, border=%d): sizes 1..%d, border 0", width,
+                 height, border, SCENE_TEXTURE_MAX_SIZE);
+        return;
+    }
+    size_t count = (size_t)width * (size_t)height;
+    uint8_t *texels = rt_malloc(4 * count);
+    if (!texels) {
+        rt_error(ctx, RT_OUT_OF_MEMORY, "rtTexImage2D(width=%d, height=%d): out of memory",
+                 width, height);
+        return;
+    }
+    const size_t components = format == RT_RGB ? 3 : 4;
+    for (size_t i = 0; i < count; i++) {
+        uint8_t *t = &texels[4 * i];
+        if (!pixels) {
+            t[0] = t[1] = t[2] = 0; /* NULL: a black image */
+            t[3] = 255;
+            continue;
+        }
+        for (size_t c = 0; c < 3; c++)
+            t[c] = upload_component(pixels, type, components * i + c);
+        t[3] = components == 4 && !opaque ? upload_component(pixels, type, components * i + 3)
+                                          : 255;
+    }
+    scene_texture_set_image(tex, width, height, texels);
+}
+
+/* The filter or wrap value for pname, or -1 when param is not one. */
+static int parameter_value(RTenum pname, RTint param)
+{
+    if (pname == RT_TEXTURE_MIN_FILTER || pname == RT_TEXTURE_MAG_FILTER) {
+        if (param == (RTint)RT_NEAREST)
+            return SCENE_FILTER_NEAREST;
+        if (param == (RTint)RT_LINEAR)
+            return SCENE_FILTER_LINEAR;
+        return -1;
+    }
+    if (param == (RTint)RT_REPEAT)
+        return SCENE_WRAP_REPEAT;
+    if (param == (RTint)RT_CLAMP_TO_EDGE)
+        return SCENE_WRAP_CLAMP_TO_EDGE;
+    return -1;
+}
+
+void rtTexParameteri(RTenum target, RTenum pname, RTint param)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx)
+        return;
+    struct scene_texture *tex = bound_texture(ctx, "rtTexParameteri");
+    if (!tex)
+        return;
+    if (target != RT_TEXTURE_2D) {
+        rt_error(ctx, RT_INVALID_ENUM, "rtTexParameteri(target=0x%x)", target);
+        return;
+    }
+    if (pname != RT_TEXTURE_MIN_FILTER && pname != RT_TEXTURE_MAG_FILTER &&
+        pname != RT_TEXTURE_WRAP_S && pname != RT_TEXTURE_WRAP_T) {
+        rt_error(ctx, RT_INVALID_ENUM, "rtTexParameteri(pname=0x%x)", pname);
+        return;
+    }
+    int value = parameter_value(pname, param);
+    if (value < 0) {
+        rt_error(ctx, RT_INVALID_ENUM, "rtTexParameteri(pname=0x%x, param=0x%x)", pname,
+                 (unsigned)param);
+        return;
+    }
+    switch (pname) {
+    case RT_TEXTURE_MIN_FILTER:
+        tex->min_filter = (enum scene_texture_filter)value;
+        break;
+    case RT_TEXTURE_MAG_FILTER:
+        tex->mag_filter = (enum scene_texture_filter)value;
+        break;
+    case RT_TEXTURE_WRAP_S:
+        tex->wrap_s = (enum scene_texture_wrap)value;
+        break;
+    default:
+        tex->wrap_t = (enum scene_texture_wrap)value;
+        break;
+    }
+}
