@@ -407,7 +407,10 @@ static void image_errors(void)
     CHECK_ERR(RT_INVALID_ENUM);
     rtTexParameteri(RT_TEXTURE_2D, RT_TEXTURE_MAG_FILTER, 0x2703 /* LINEAR_MIPMAP_LINEAR */);
     CHECK_ERR(RT_INVALID_ENUM);
-    rtTexParameteri(RT_TEXTURE_2D, RT_TEXTURE_MIN_FILTER, 0x2700 /* NEAREST_MIPMAP_NEAREST */);
+    /* The mipmapped filters are MIN_FILTER values only (texture_mipmap.c). */
+    rtTexParameteri(RT_TEXTURE_2D, RT_TEXTURE_MAG_FILTER, RT_NEAREST_MIPMAP_NEAREST);
+    CHECK_ERR(RT_INVALID_ENUM);
+    rtTexParameteri(RT_TEXTURE_2D, RT_TEXTURE_MIN_FILTER, 0x2704 /* past the mipmap filters */);
     CHECK_ERR(RT_INVALID_ENUM);
     rtTexParameteri(RT_TEXTURE_2D, RT_TEXTURE_MAG_FILTER, RT_REPEAT);
     CHECK_ERR(RT_INVALID_ENUM);

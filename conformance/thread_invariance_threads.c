@@ -1,9 +1,10 @@
 /*
  * thread_invariance_threads.c - results do not depend on the thread count.
  *
- * One scene (a floor, a sphere object placed five times - one instance a
- * mirror, one glass -, boxes, a 4000-triangle random soup; two lights;
- * Whitted shading with shadows, reflection and refraction) is built in
+ * One scene (a floor with a mipmapped checkerboard texture, a sphere
+ * object placed five times - one instance a mirror, one glass -, boxes, a
+ * 4000-triangle random soup; two lights; Whitted shading with shadows,
+ * reflection and refraction, which carry the texture's ray cones) is built in
  * separate contexts created with threads=1, 2 and 8, and rendered at
  * 256x192.  Every pixel and every query ray is computed independently by
  * the same float operations (render.h), so:
@@ -72,18 +73,33 @@ static void define_sphere(RTuint name, const float diffuse[4], float reflectivit
     rtEndObject();
 }
 
+enum { FLOOR_TEXTURE = 1 };
+
 static void define_scene(void)
 {
     const float grey[4] = {0.7f, 0.7f, 0.65f, 1.0f};
+    /* 32x32 checks of one texel, 8 times over the floor in each direction:
+     * minified towards the back, so the level of detail matters. */
+    static unsigned char checks[32 * 32 * 3];
+    for (int i = 0; i < 32 * 32; i++)
+        memset(&checks[3 * i], (i % 32 + i / 32) % 2 ? 60 : 230, 3);
+    rtBindTexture(RT_TEXTURE_2D, FLOOR_TEXTURE);
+    rtTexImage2D(RT_TEXTURE_2D, 0, RT_RGB, 32, 32, 0, RT_RGB, RT_UNSIGNED_BYTE, checks);
+    rtTexParameteri(RT_TEXTURE_2D, RT_TEXTURE_MIN_FILTER, RT_LINEAR_MIPMAP_LINEAR);
     rtNewObject(FLOOR);
     rtMaterialfv(RT_FRONT_AND_BACK, RT_DIFFUSE, grey);
+    rtEnable(RT_TEXTURE_2D);
     rtBegin(RT_QUADS);
-    {
-        const float a[3] = {-20, 0, -40}, b[3] = {-20, 0, 0}, c[3] = {20, 0, 0},
-                    d[3] = {20, 0, -40};
-        quad(a, b, c, d);
-    }
+    rtTexCoord2f(0, 8);
+    rtVertex3f(-20, 0, -40);
+    rtTexCoord2f(0, 0);
+    rtVertex3f(-20, 0, 0);
+    rtTexCoord2f(8, 0);
+    rtVertex3f(20, 0, 0);
+    rtTexCoord2f(8, 8);
+    rtVertex3f(20, 0, -40);
     rtEnd();
+    rtDisable(RT_TEXTURE_2D);
     rtEndObject();
 
     const float red[4] = {0.8f, 0.15f, 0.1f, 1.0f};

@@ -8,7 +8,8 @@
  * the start of a fixed sequence fails, and every allocation after it fails
  * too, until rt_alloc_fail_reset():
  *   rtCreateContext (may return NULL: then there is nothing more to do),
- *   rtGenObjects, rtGenTextures, a texture (rtBindTexture, rtTexImage2D),
+ *   rtGenObjects, rtGenTextures, a mipmapped texture (rtBindTexture,
+ *   rtTexImage2D, which also allocates the mip chain's working rows),
  *   three object definitions (rtBegin/rtVertex with normals and several
  *   materials, rtDrawElements from vertex arrays, textured quads),
  *   rtEndObject, instances (rtInstantiateObject), rtRenderFrame in eye-light
@@ -171,6 +172,10 @@ static void define_texture(int check)
     if (check)
         after("rtTexImage2D");
     rtTexParameteri(RT_TEXTURE_2D, RT_TEXTURE_MAG_FILTER, RT_NEAREST);
+    if (check)
+        after("rtTexParameteri");
+    /* Mipmapped: frames read the chain rtTexImage2D generated. */
+    rtTexParameteri(RT_TEXTURE_2D, RT_TEXTURE_MIN_FILTER, RT_LINEAR_MIPMAP_LINEAR);
     if (check)
         after("rtTexParameteri");
 }

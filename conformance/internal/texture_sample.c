@@ -1,10 +1,13 @@
 /*
- * texture_sample.c - the texture table and sampler of scene/texture.h,
- * directly: the values a sample must give (texel centres, bilinear
- * weights, REPEAT and CLAMP_TO_EDGE at and beyond the edges), that any
- * float coordinate (NaN, infinities, 1e30, tiny negatives) stays inside the
- * image, and that the table finds every name after insertions and
- * backward-shift deletions.
+ * texture_sample.c - the texture table, mip chains and sampler of
+ * scene/texture.h, directly: the values a sample must give (texel centres,
+ * bilinear weights, REPEAT and CLAMP_TO_EDGE at and beyond the edges), that
+ * any float coordinate (NaN, infinities, 1e30, tiny negatives) and any
+ * level of detail stays inside the image, the mip chain's level sizes and
+ * hand-computed texels of its levels (the area-weighted box on odd sizes,
+ * the 1x1 level being the image's mean), which levels and filters each
+ * level of detail selects (GL 1.1 sec. 3.8.1-3.8.2), and that the table
+ * finds every name after insertions and backward-shift deletions.
  *
  * Internal test (links the static library).  Non-zero exit on failure.
  */
@@ -41,9 +44,22 @@ static void texel_value(int i, int j, float out[4])
     out[3] = 1.0f;
 }
 
+/* Gives tex the width x height image level0 (copied) and its mip chain. */
+static void set_image(struct scene_texture *tex, int width, int height, const uint8_t *level0)
+{
+    uint8_t *chain = rt_malloc(4 * scene_texture_chain_texels(width, height));
+    if (!chain) {
+        EXPECT(0, "no memory for a %dx%d chain", width, height);
+        return;
+    }
+    memcpy(chain, level0, 4 * (size_t)width * (size_t)height);
+    EXPECT(scene_texture_build_mipmaps(chain, width, height) == 0, "build %dx%d", width, height);
+    scene_texture_set_image(tex, width, height, chain);
+}
+
 static void make_image(struct scene_texture *tex)
 {
-    uint8_t *texels = rt_malloc(4 * TW * TH);
+    uint8_t texels[4 * TW * TH];
     for (int j = 0; j < TH; j++)
         for (int i = 0; i < TW; i++) {
             uint8_t *p = &texels[4 * (j * TW + i)];
@@ -52,7 +68,7 @@ static void make_image(struct scene_texture *tex)
             p[2] = (uint8_t)(5 * i + 7 * j);
             p[3] = 255;
         }
-    scene_texture_set_image(tex, TW, TH, texels);
+    set_image(tex, TW, TH, texels);
 }
 
 static int same(const float a[4], const float b[4], float tol)
@@ -196,7 +212,245 @@ static void any_float(struct scene_texture *tex)
                 EXPECT(0, "sample at (%g, %g) gave %g", (double)s, (double)t, (double)c[k]);
                 return;
             }
+        /* Any level of detail, with every minification filter: the bits
+         * of s reused as lambda cover NaN, infinities and huge values. */
+        tex->min_filter = (enum scene_texture_filter)(n % 6);
+        tex->mag_filter = (n & 8) ? SCENE_FILTER_LINEAR : SCENE_FILTER_NEAREST;
+        float lambda = (n & 16) ? s : (float)(y % 2000) / 100.0f - 5.0f;
+        scene_texture_sample_lod(tex, lambda, t, s, c);
+        for (int k = 0; k < 4; k++)
+            if (!(c[k] >= 0.0f && c[k] <= 1.0f + 1e-6f)) {
+                EXPECT(0, "sample at lambda %g gave %g", (double)lambda, (double)c[k]);
+                return;
+            }
     }
+}
+
+/* ---- mip chains --------------------------------------------------------------- */
+
+static void chain_sizes(void)
+{
+    /* max(1, floor(n / 2)) per level down to 1x1, as GL 2.0 sizes them. */
+    static const int kitchen[][2] = {{1044, 1044}, {522, 522}, {261, 261}, {130, 130},
+                                     {65, 65},     {32, 32},   {16, 16},   {8, 8},
+                                     {4, 4},       {2, 2},     {1, 1}};
+    static const int wood[][2] = {{128, 256}, {64, 128}, {32, 64}, {16, 32}, {8, 16},
+                                  {4, 8},     {2, 4},    {1, 2},   {1, 1}};
+    static const int odd[][2] = {{5, 3}, {2, 1}, {1, 1}};
+    static const struct {
+        const int (*sizes)[2];
+        int count;
+    } cases[] = {{kitchen, 11}, {wood, 9}, {odd, 3}};
+    EXPECT(scene_texture_level_count(1, 1) == 1, "1x1 has one level");
+    EXPECT(scene_texture_chain_texels(1, 1) == 1, "1x1 chain");
+    EXPECT(scene_texture_level_count(16384, 16384) == SCENE_TEXTURE_MAX_LEVELS, "16384 levels");
+    EXPECT(scene_texture_level_count(16384, 1) == SCENE_TEXTURE_MAX_LEVELS, "16384x1 levels");
+    EXPECT(scene_texture_level_count(1, 3) == 2, "1x3 levels");
+    /* 4/3 of level 0 at most: 64x64 adds 32^2 + ... + 1 = 1365. */
+    EXPECT(scene_texture_chain_texels(64, 64) == 4096 + 1365, "64x64 chain");
+    EXPECT(scene_texture_chain_texels(1044, 1044) <= 1044u * 1044u * 4 / 3, "1044 chain");
+    for (int c = 0; c < 3; c++) {
+        const int w = cases[c].sizes[0][0], h = cases[c].sizes[0][1];
+        EXPECT(scene_texture_level_count(w, h) == cases[c].count, "%dx%d: %d levels", w, h,
+               scene_texture_level_count(w, h));
+        size_t total = 0;
+        for (int k = 0; k < cases[c].count; k++)
+            total += (size_t)cases[c].sizes[k][0] * (size_t)cases[c].sizes[k][1];
+        EXPECT(scene_texture_chain_texels(w, h) == total, "%dx%d: chain of %zu texels", w, h,
+               scene_texture_chain_texels(w, h));
+        /* The level table of a texture with that image. */
+        struct scene_texture tex;
+        memset(&tex, 0, sizeof(tex));
+        uint8_t *chain = rt_calloc(scene_texture_chain_texels(w, h), 4);
+        if (!chain) {
+            EXPECT(0, "no memory");
+            return;
+        }
+        EXPECT(scene_texture_build_mipmaps(chain, w, h) == 0, "build %dx%d", w, h);
+        scene_texture_set_image(&tex, w, h, chain);
+        EXPECT(tex.level_count == cases[c].count, "%dx%d: level_count %d", w, h,
+               tex.level_count);
+        size_t offset = 0;
+        for (int k = 0; k < cases[c].count && k < tex.level_count; k++) {
+            EXPECT(tex.levels[k].width == cases[c].sizes[k][0] &&
+                       tex.levels[k].height == cases[c].sizes[k][1] &&
+                       tex.levels[k].texels == chain + 4 * offset,
+                   "%dx%d: level %d is %dx%d", w, h, k, tex.levels[k].width,
+                   tex.levels[k].height);
+            offset += (size_t)cases[c].sizes[k][0] * (size_t)cases[c].sizes[k][1];
+        }
+        rt_free(tex.texels);
+    }
+    /* A failed build allocates nothing and leaves level 0 alone; a 1x1
+     * image needs no working memory at all. */
+    uint8_t chain[4 * (64 + 16 + 4 + 1)];
+    memset(chain, 7, sizeof(chain));
+    rt_alloc_fail_after(0);
+    int r8 = scene_texture_build_mipmaps(chain, 8, 8);
+    int r1 = scene_texture_build_mipmaps(chain, 1, 1);
+    rt_alloc_fail_reset();
+    EXPECT(r8 == -1, "a build without memory succeeded");
+    EXPECT(r1 == 0, "a 1x1 build needed memory");
+    for (int i = 0; i < 4 * 64; i++)
+        if (chain[i] != 7) {
+            EXPECT(0, "a failed build wrote level 0");
+            break;
+        }
+}
+
+/* The 5x3 image of chain_texels: red values below, green 255 - red, blue
+ * 77, alpha 255.  Rows from t = 0. */
+static const uint8_t odd_red[3][5] = {
+    {10, 200, 30, 90, 255}, {0, 100, 50, 250, 20}, {60, 70, 80, 5, 140}};
+
+static void chain_texels(void)
+{
+    uint8_t chain[4 * (15 + 2 + 1)];
+    for (int j = 0; j < 3; j++)
+        for (int i = 0; i < 5; i++) {
+            uint8_t *p = &chain[4 * (j * 5 + i)];
+            p[0] = odd_red[j][i];
+            p[1] = (uint8_t)(255 - odd_red[j][i]);
+            p[2] = 77;
+            p[3] = 255;
+        }
+    EXPECT(scene_texture_build_mipmaps(chain, 5, 3) == 0, "build 5x3");
+    const uint8_t *l1 = &chain[4 * 15], *l2 = &chain[4 * 17];
+    /* Level 1 is 2x1.  Its texel 0 covers columns [0, 2.5) of level 0:
+     * weights 2/5, 2/5, 1/5 on columns 0, 1, 2, and 1/3 on each row:
+     *   red = (2*10 + 2*200 + 30  +  2*0 + 2*100 + 50  +  2*60 + 2*70 + 80) / 15
+     *       = (450 + 250 + 340) / 15 = 1040 / 15 = 69.33 -> 69,
+     * green = 255 - 69.33 = 185.67 -> 186.  Texel 1 covers [2.5, 5):
+     * weights 1/5, 2/5, 2/5 on columns 2, 3, 4:
+     *   red = (720 + 590 + 370) / 15 = 112, green 143. */
+    EXPECT(l1[0] == 69 && l1[1] == 186 && l1[2] == 77 && l1[3] == 255,
+           "level 1 texel 0 is (%d, %d, %d, %d)", l1[0], l1[1], l1[2], l1[3]);
+    EXPECT(l1[4] == 112 && l1[5] == 143 && l1[6] == 77 && l1[7] == 255,
+           "level 1 texel 1 is (%d, %d, %d, %d)", l1[4], l1[5], l1[6], l1[7]);
+    /* Level 2, 1x1: the mean of the 15 texels, red 1360 / 15 = 90.67 ->
+     * 91, green 164.33 -> 164.  (From the rounded level 1, (69 + 112) / 2
+     * = 90.5 would not be the mean: levels are made from unrounded ones.) */
+    EXPECT(l2[0] == 91 && l2[1] == 164 && l2[2] == 77 && l2[3] == 255,
+           "level 2 is (%d, %d, %d, %d)", l2[0], l2[1], l2[2], l2[3]);
+    /* Level 0 is untouched. */
+    EXPECT(chain[0] == 10 && chain[4 * 14] == 140, "level 0 changed");
+}
+
+/* A large odd-sized image of noise: its 1x1 level is its mean. */
+static void chain_mean_large(void)
+{
+    const int w = 1043, h = 517;
+    uint8_t *chain = rt_malloc(4 * scene_texture_chain_texels(w, h));
+    if (!chain) {
+        EXPECT(0, "no memory");
+        return;
+    }
+    uint32_t x = 88172645u;
+    double sum[4] = {0, 0, 0, 0};
+    for (size_t i = 0; i < 4 * (size_t)w * (size_t)h; i++) {
+        x ^= x << 13;
+        x ^= x >> 17;
+        x ^= x << 5;
+        chain[i] = (uint8_t)((i % 4 == 3) ? 255 : (x >> 24) / (1 + i % 4));
+        sum[i % 4] += chain[i];
+    }
+    EXPECT(scene_texture_build_mipmaps(chain, w, h) == 0, "build %dx%d", w, h);
+    const uint8_t *last = &chain[4 * (scene_texture_chain_texels(w, h) - 1)];
+    for (int c = 0; c < 4; c++) {
+        double mean = sum[c] / ((double)w * h);
+        EXPECT(fabs(last[c] - mean) <= 0.5 + 1e-3, "1x1 channel %d is %d, mean %.4f", c, last[c],
+               mean);
+    }
+    rt_free(chain);
+}
+
+static void level_selection(void)
+{
+    struct scene_texture tex;
+    memset(&tex, 0, sizeof(tex));
+    uint8_t level0[4 * 15];
+    for (int j = 0; j < 3; j++)
+        for (int i = 0; i < 5; i++) {
+            uint8_t *p = &level0[4 * (j * 5 + i)];
+            p[0] = odd_red[j][i];
+            p[1] = (uint8_t)(255 - odd_red[j][i]);
+            p[2] = 77;
+            p[3] = 255;
+        }
+    set_image(&tex, 5, 3, level0);
+    tex.wrap_s = tex.wrap_t = SCENE_WRAP_REPEAT;
+    /* (0.3, 0.4): between texel centres at every level, so NEAREST and
+     * LINEAR differ on levels 0 and 1. */
+    const float s = 0.3f, t = 0.4f;
+    float lv[3][2][4], c[4];
+    for (int k = 0; k < 3; k++)
+        for (int f = 0; f < 2; f++)
+            scene_texture_sample_level(&tex, k, f ? SCENE_FILTER_LINEAR : SCENE_FILTER_NEAREST,
+                                       s, t, lv[k][f]);
+    EXPECT(!same(lv[0][0], lv[0][1], 1e-3f) && !same(lv[1][0], lv[1][1], 1e-3f) &&
+               !same(lv[0][1], lv[1][1], 1e-3f) && !same(lv[1][1], lv[2][1], 1e-3f),
+           "the test point does not tell levels and filters apart");
+    static const struct {
+        enum scene_texture_filter min, mag;
+        float lambda;
+        int level, linear; /* the expected single lookup */
+    } single[] = {
+        /* Magnification: lambda <= c, level 0 with the MAG filter. */
+        {SCENE_FILTER_LINEAR_MIPMAP_LINEAR, SCENE_FILTER_NEAREST, 0.0f, 0, 0},
+        {SCENE_FILTER_LINEAR_MIPMAP_LINEAR, SCENE_FILTER_NEAREST, -INFINITY, 0, 0},
+        {SCENE_FILTER_NEAREST_MIPMAP_NEAREST, SCENE_FILTER_LINEAR, -3.0f, 0, 1},
+        /* c = 0.5 for LINEAR magnification with NEAREST_MIPMAP_*: still a
+         * magnification at 0.4; with NEAREST magnification c = 0 and the
+         * minification filter takes level 0 (lambda <= 1/2) with NEAREST. */
+        {SCENE_FILTER_NEAREST_MIPMAP_NEAREST, SCENE_FILTER_LINEAR, 0.4f, 0, 1},
+        {SCENE_FILTER_NEAREST_MIPMAP_LINEAR, SCENE_FILTER_LINEAR, 0.5f, 0, 1},
+        {SCENE_FILTER_NEAREST_MIPMAP_NEAREST, SCENE_FILTER_NEAREST, 0.4f, 0, 0},
+        /* LINEAR_MIPMAP_NEAREST keeps c = 0: minification at 0.4. */
+        {SCENE_FILTER_LINEAR_MIPMAP_NEAREST, SCENE_FILTER_NEAREST, 0.4f, 0, 1},
+        /* The nearest level: d = ceil(lambda + 1/2) - 1, q = 2 beyond. */
+        {SCENE_FILTER_LINEAR_MIPMAP_NEAREST, SCENE_FILTER_NEAREST, 0.5f, 0, 1},
+        {SCENE_FILTER_LINEAR_MIPMAP_NEAREST, SCENE_FILTER_NEAREST, 0.51f, 1, 1},
+        {SCENE_FILTER_LINEAR_MIPMAP_NEAREST, SCENE_FILTER_NEAREST, 1.5f, 1, 1},
+        {SCENE_FILTER_NEAREST_MIPMAP_NEAREST, SCENE_FILTER_NEAREST, 1.51f, 2, 0},
+        {SCENE_FILTER_NEAREST_MIPMAP_NEAREST, SCENE_FILTER_NEAREST, 1e30f, 2, 0},
+        {SCENE_FILTER_LINEAR_MIPMAP_NEAREST, SCENE_FILTER_NEAREST, INFINITY, 2, 1},
+        /* *_MIPMAP_LINEAR at whole lambdas and from q on: one level. */
+        {SCENE_FILTER_LINEAR_MIPMAP_LINEAR, SCENE_FILTER_LINEAR, 1.0f, 1, 1},
+        {SCENE_FILTER_NEAREST_MIPMAP_LINEAR, SCENE_FILTER_NEAREST, 2.0f, 2, 0},
+        {SCENE_FILTER_LINEAR_MIPMAP_LINEAR, SCENE_FILTER_NEAREST, 40.0f, 2, 1},
+        /* Non-mipmapped minification: level 0 whatever lambda. */
+        {SCENE_FILTER_NEAREST, SCENE_FILTER_LINEAR, 3.0f, 0, 0},
+        {SCENE_FILTER_LINEAR, SCENE_FILTER_NEAREST, 3.0f, 0, 1},
+        {SCENE_FILTER_LINEAR, SCENE_FILTER_NEAREST, -3.0f, 0, 0},
+    };
+    for (size_t n = 0; n < sizeof(single) / sizeof(single[0]); n++) {
+        tex.min_filter = single[n].min;
+        tex.mag_filter = single[n].mag;
+        scene_texture_sample_lod(&tex, single[n].lambda, s, t, c);
+        EXPECT(same(c, lv[single[n].level][single[n].linear], 0.0f),
+               "case %zu (lambda %g): not level %d %s", n, (double)single[n].lambda,
+               single[n].level, single[n].linear ? "LINEAR" : "NEAREST");
+    }
+    /* A NaN lambda is a magnification. */
+    tex.min_filter = SCENE_FILTER_LINEAR_MIPMAP_LINEAR;
+    tex.mag_filter = SCENE_FILTER_NEAREST;
+    scene_texture_sample_lod(&tex, nanf(""), s, t, c);
+    EXPECT(same(c, lv[0][0], 0.0f), "NaN lambda is not a magnification");
+    /* Between levels: (1 - frac) of d1 plus frac of d1 + 1. */
+    static const float lambdas[] = {0.25f, 1.25f, 1.875f};
+    for (int f = 0; f < 2; f++) {
+        tex.min_filter = f ? SCENE_FILTER_LINEAR_MIPMAP_LINEAR : SCENE_FILTER_NEAREST_MIPMAP_LINEAR;
+        for (int n = 0; n < 3; n++) {
+            const float lambda = lambdas[n], fr = lambda - floorf(lambda);
+            const int d1 = (int)lambda;
+            float e[4];
+            for (int k = 0; k < 4; k++)
+                e[k] = (1.0f - fr) * lv[d1][f][k] + fr * lv[d1 + 1][f][k];
+            scene_texture_sample_lod(&tex, lambda, s, t, c);
+            EXPECT(same(c, e, 1e-6f), "MIPMAP_LINEAR (%d) at lambda %g", f, (double)lambda);
+        }
+    }
+    rt_free(tex.texels);
 }
 
 static void table(void)
@@ -261,6 +515,10 @@ int main(void)
     repeat_and_non_finite(tex);
     any_float(tex);
     scene_textures_release(&tab);
+    chain_sizes();
+    chain_texels();
+    chain_mean_large();
+    level_selection();
     table();
     printf("texture_sample: %s (%d failed checks)\n", failures ? "FAILED" : "passed", failures);
     return failures != 0;

@@ -153,6 +153,11 @@ typedef struct rt_context *RTcontext;
 #define RT_TEXTURE_WRAP_T 0x2803
 #define RT_NEAREST 0x2600
 #define RT_LINEAR 0x2601
+/* RT_TEXTURE_MIN_FILTER only: mipmapped filters (docs/textures.md). */
+#define RT_NEAREST_MIPMAP_NEAREST 0x2700
+#define RT_LINEAR_MIPMAP_NEAREST 0x2701
+#define RT_NEAREST_MIPMAP_LINEAR 0x2702
+#define RT_LINEAR_MIPMAP_LINEAR 0x2703
 #define RT_REPEAT 0x2901
 #define RT_CLAMP_TO_EDGE 0x812F
 #define RT_RGB 0x1907

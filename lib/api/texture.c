@@ -6,9 +6,11 @@
  *
  * Deviations from GL 1.1 (docs/textures.md): there is no default texture
  * object, so with 0 bound rtTexImage2D and rtTexParameteri record
- * RT_INVALID_OPERATION; level 0 only (no mipmaps); pixel rows are tightly
- * packed (GL's UNPACK_ALIGNMENT 1, there is no rtPixelStorei); images are
- * stored as 8-bit RGBA whatever the upload type.
+ * RT_INVALID_OPERATION; only level 0 is uploaded, and rtTexImage2D
+ * generates the other mipmap levels from it (GL_GENERATE_MIPMAP); pixel
+ * rows are tightly packed (GL's UNPACK_ALIGNMENT 1, there is no
+ * rtPixelStorei); images are stored as 8-bit RGBA whatever the upload
+ * type.
  *
  * Triangles keep the texture's name, not its image (begin_end.c,
  * current_material), so every change made here shows in the next frame of
@@ -131,7 +133,8 @@ void rtTexImage2D(RTenum target, RTint level, RTint internalformat, RTsizei widt
         return;
     }
     if (level != 0) {
-        rt_error(ctx, RT_INVALID_VALUE, "rtTexImage2D(level=%d): only level 0 (no mipmaps)",
+        rt_error(ctx, RT_INVALID_VALUE,
+                 "rtTexImage2D(level=%d): only level 0 (levels > 0 are generated from it)",
                  level);
         return;
     }
@@ -149,8 +152,9 @@ void rtTexImage2D(RTenum target, RTint level, RTint internalformat, RTsizei widt
                  height, border, SCENE_TEXTURE_MAX_SIZE);
         return;
     }
+    /* The whole mip chain in one block, level 0 first. */
     size_t count = (size_t)width * (size_t)height;
-    uint8_t *texels = rt_malloc(4 * count);
+    uint8_t *texels = rt_malloc(4 * scene_texture_chain_texels(width, height));
     if (!texels) {
         rt_error(ctx, RT_OUT_OF_MEMORY, "rtTexImage2D(width=%d, height=%d): out of memory",
                  width, height);
@@ -169,10 +173,20 @@ void rtTexImage2D(RTenum target, RTint level, RTint internalformat, RTsizei widt
         t[3] = components == 4 && !opaque ? upload_component(pixels, type, components * i + 3)
                                           : 255;
     }
+    /* Built here, on the API thread, whatever the filters: a later
+     * rtTexParameteri can choose a mipmapped filter without any work. */
+    if (scene_texture_build_mipmaps(texels, width, height)) {
+        rt_free(texels);
+        rt_error(ctx, RT_OUT_OF_MEMORY,
+                 "rtTexImage2D(width=%d, height=%d): out of memory for the mipmaps", width,
+                 height);
+        return;
+    }
     scene_texture_set_image(tex, width, height, texels);
 }
 
-/* The filter or wrap value for pname, or -1 when param is not one. */
+/* The filter or wrap value for pname, or -1 when param is not one.  The
+ * mipmapped filters are minification filters only (GL 1.1 sec. 3.8.2). */
 static int parameter_value(RTenum pname, RTint param)
 {
     if (pname == RT_TEXTURE_MIN_FILTER || pname == RT_TEXTURE_MAG_FILTER) {
@@ -180,7 +194,20 @@ static int parameter_value(RTenum pname, RTint param)
             return SCENE_FILTER_NEAREST;
         if (param == (RTint)RT_LINEAR)
             return SCENE_FILTER_LINEAR;
-        return -1;
+        if (pname == RT_TEXTURE_MAG_FILTER)
+            return -1;
+        switch (param) {
+        case (RTint)RT_NEAREST_MIPMAP_NEAREST:
+            return SCENE_FILTER_NEAREST_MIPMAP_NEAREST;
+        case (RTint)RT_LINEAR_MIPMAP_NEAREST:
+            return SCENE_FILTER_LINEAR_MIPMAP_NEAREST;
+        case (RTint)RT_NEAREST_MIPMAP_LINEAR:
+            return SCENE_FILTER_NEAREST_MIPMAP_LINEAR;
+        case (RTint)RT_LINEAR_MIPMAP_LINEAR:
+            return SCENE_FILTER_LINEAR_MIPMAP_LINEAR;
+        default:
+            return -1;
+        }
     }
     if (param == (RTint)RT_REPEAT)
         return SCENE_WRAP_REPEAT;

@@ -98,27 +98,77 @@ static void shared_finish(struct render_shared *sh, struct render_stats *stats)
     rt_free(sh->counters);
 }
 
-/* Primary ray through the centre of viewport pixel (px, py): from the near
- * to the far plane through the inverse projection, as OpenGL clips. */
-static int primary_ray(const struct render_shared *sh, int px, int py, float org[3],
-                       float dir[3], float *tmax)
+/* The near- and far-plane points under viewport position (x, y), in
+ * pixels from the viewport's corner, through the inverse projection. */
+static int unproject(const struct render_shared *sh, double x, double y, double near_pt[3],
+                     double far_pt[3])
 {
     const int *vp = sh->job->state->viewport;
-    double ndc_near[3] = {2.0 * (px + 0.5) / vp[2] - 1.0, 2.0 * (py + 0.5) / vp[3] - 1.0, -1.0};
+    double ndc_near[3] = {2.0 * x / vp[2] - 1.0, 2.0 * y / vp[3] - 1.0, -1.0};
     double ndc_far[3] = {ndc_near[0], ndc_near[1], 1.0};
+    return mat4_project(sh->inv_projection, ndc_near, near_pt) &&
+           mat4_project(sh->inv_projection, ndc_far, far_pt);
+}
+
+/* Distance from q to the line through p along the unit vector d. */
+static double distance_to_line(const double q[3], const double p[3], const double d[3])
+{
+    double a[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]};
+    double along = a[0] * d[0] + a[1] * d[1] + a[2] * d[2];
+    double r2 = 0.0;
+    for (int k = 0; k < 3; k++) {
+        double perp = a[k] - along * d[k];
+        r2 += perp * perp;
+    }
+    return sqrt(r2);
+}
+
+/*
+ * Primary ray through the centre of viewport pixel (px, py): from the near
+ * to the far plane through the inverse projection, as OpenGL clips.
+ *
+ * Its cone (shade.h) is the pixel's footprint, measured from the
+ * projection itself so that any rtFrustum, rtOrtho or rtLoadMatrixd works:
+ * the rays through the centres of the next pixel in x and in y pass the
+ * ray's near and far points at some distances; the cone's width at the
+ * near plane is the near distance, its spread the growth from near to far
+ * per unit length (the angle between neighbouring rays, Akenine-Möller et
+ * al. 2019 sec. 20.3.4, without assuming a symmetric perspective), 0 for
+ * an orthographic projection, where the width stays one pixel.  The
+ * larger of the x and y footprints is taken, as GL's rho is the larger of
+ * its x and y scale factors.  When a neighbour cannot be unprojected the
+ * cone is {0, 0}: unfiltered textures, as before there were cones.
+ */
+static int primary_ray(const struct render_shared *sh, int px, int py, float org[3],
+                       float dir[3], float *tmax, struct shade_cone *cone)
+{
     double near_pt[3], far_pt[3];
-    if (!mat4_project(sh->inv_projection, ndc_near, near_pt) ||
-        !mat4_project(sh->inv_projection, ndc_far, far_pt))
+    if (!unproject(sh, px + 0.5, py + 0.5, near_pt, far_pt))
         return 0;
     double d[3] = {far_pt[0] - near_pt[0], far_pt[1] - near_pt[1], far_pt[2] - near_pt[2]};
     double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     if (!(len > 0.0) || !isfinite(len))
         return 0;
     for (int k = 0; k < 3; k++) {
+        d[k] /= len;
         org[k] = (float)near_pt[k];
-        dir[k] = (float)(d[k] / len);
+        dir[k] = (float)d[k];
     }
     *tmax = (float)len;
+    double width = 0.0, spread = 0.0;
+    for (int axis = 0; axis < 2; axis++) {
+        double n_near[3], n_far[3];
+        if (!unproject(sh, px + 0.5 + (axis == 0), py + 0.5 + (axis == 1), n_near, n_far)) {
+            width = spread = 0.0;
+            break;
+        }
+        double w_near = distance_to_line(n_near, near_pt, d);
+        double w_far = distance_to_line(n_far, near_pt, d);
+        width = fmax(width, w_near);
+        spread = fmax(spread, (w_far - w_near) / len);
+    }
+    cone->width = (float)width;
+    cone->spread = (float)spread;
     return 1;
 }
 
@@ -140,11 +190,12 @@ static void frame_task(void *arg, int worker)
             for (int x = x0; x < x0 + RENDER_TILE_SIZE && x < vp[2]; x++) {
                 float *px = &sh->fb[4 * ((size_t)(vp[1] + y) * sh->fb_width + vp[0] + x)];
                 float org[3], dir[3], tmax;
-                if (!primary_ray(sh, x, y, org, dir, &tmax)) {
+                struct shade_cone cone;
+                if (!primary_ray(sh, x, y, org, dir, &tmax, &cone)) {
                     memcpy(px, st->clear_color, 4 * sizeof(float));
                     continue;
                 }
-                shade_ray(&sc, org, dir, tmax, 0, px);
+                shade_ray(&sc, org, dir, tmax, cone, 0, px);
             }
     }
 }

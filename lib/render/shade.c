@@ -8,7 +8,9 @@
  * manner of Whitted (1980).  Surfaces are two-sided: normals are turned
  * towards the incoming ray.  Textures modulate the ambient and diffuse
  * material (GL's MODULATE texture environment, applied to the material
- * rather than to the lit colour; see apply_texture).
+ * rather than to the lit colour; see apply_texture), filtered by a level
+ * of detail from the ray cone each camera, reflected and refracted ray
+ * carries (shade.h, texture_lod).
  */
 #include "render/shade.h"
 
@@ -61,6 +63,67 @@ static void interpolate(const float *attr, int stride, const uint32_t v[3], floa
                  b2 * attr[stride * v[2] + k];
 }
 
+/* Smallest |cos| between ray and surface in the level of detail.  It only
+ * keeps lambda finite for a ray nearly parallel to the surface (which hits
+ * it only by rounding): there the footprint is already 2^16.6 times wider
+ * than head-on, more than the 14 halvings of the largest mip chain. */
+#define LOD_MIN_COSINE 1e-5
+
+/*
+ * The texture level of detail at a hit by ray cones (Akenine-Möller et
+ * al. 2019, "Texture Level of Detail Strategies for Real-Time Ray
+ * Tracing", Ray Tracing Gems ch. 20, sec. 20.3.4):
+ *
+ *     lambda = Delta + log2(width / |n . d|),  Delta = 0.5 log2(t_a / p_a)
+ *
+ * `width` is the cone's width at the hit (world units), n the unit
+ * geometric normal and d the unit ray direction, so width / |n . d| is the
+ * footprint stretched across the triangle's plane; t_a is the triangle's
+ * area in level-0 texels (w h |(st1 - st0) x (st2 - st0)|) and p_a its
+ * area in world space, so sqrt(t_a / p_a) converts world length to texels
+ * and lambda is log2 of the texels a pixel spans, GL's log2(rho).  The
+ * triangle's edges go through the instance matrix before p_a is taken,
+ * so an instance scaled 4x gets the level of detail of the same triangles
+ * recorded 4x larger.  All in double; the same operations for every pixel,
+ * so the result does not depend on threads.  A triangle without texture
+ * area (constant coordinates) gives -inf, a magnification; one without
+ * world area +inf, the last level; 0 / 0 a NaN, which the sampler takes as
+ * a magnification.
+ */
+static float texture_lod(const struct scene_texture *tex, const struct scene_instance *inst,
+                         const struct scene_mesh *mesh, const uint32_t v[3], const float ng[3],
+                         const float dir[3], float width)
+{
+    const float *p0 = &mesh->positions[3 * v[0]];
+    const float *p1 = &mesh->positions[3 * v[1]];
+    const float *p2 = &mesh->positions[3 * v[2]];
+    const float *t0 = &mesh->texcoords[2 * v[0]];
+    const float *t1 = &mesh->texcoords[2 * v[1]];
+    const float *t2 = &mesh->texcoords[2 * v[2]];
+    double e1[3], e2[3], w1[3], w2[3];
+    for (int k = 0; k < 3; k++) {
+        e1[k] = (double)p1[k] - (double)p0[k];
+        e2[k] = (double)p2[k] - (double)p0[k];
+    }
+    mat4_transform_vector(inst->object_to_world, e1, w1);
+    mat4_transform_vector(inst->object_to_world, e2, w2);
+    const double cx = w1[1] * w2[2] - w1[2] * w2[1];
+    const double cy = w1[2] * w2[0] - w1[0] * w2[2];
+    const double cz = w1[0] * w2[1] - w1[1] * w2[0];
+    const double p_a = sqrt(cx * cx + cy * cy + cz * cz);
+    const double uv_cross = ((double)t1[0] - (double)t0[0]) * ((double)t2[1] - (double)t0[1]) -
+                            ((double)t2[0] - (double)t0[0]) * ((double)t1[1] - (double)t0[1]);
+    const double t_a = (double)tex->width * (double)tex->height * fabs(uv_cross);
+    const double dir_len = sqrt((double)dir[0] * dir[0] + (double)dir[1] * dir[1] +
+                                (double)dir[2] * dir[2]);
+    double cosine = fabs((double)ng[0] * dir[0] + (double)ng[1] * dir[1] +
+                         (double)ng[2] * dir[2]) /
+                    dir_len;
+    if (!(cosine >= LOD_MIN_COSINE))
+        cosine = LOD_MIN_COSINE;
+    return (float)(0.5 * log2(t_a / p_a) + log2((double)width / cosine));
+}
+
 /*
  * GL's MODULATE environment (OpenGL 1.1 sec. 3.8.6, table 3.19: C = Cf Ct)
  * applied before lighting to the colours that carry the surface's own
@@ -69,28 +132,35 @@ static void interpolate(const float *attr, int stride, const uint32_t v[3], floa
  * specular colour.  Lighting is linear in both, so for them this equals
  * modulating the lit colour.  The triangle keeps the texture's name; a
  * name without an image (deleted, or never given one) leaves the surface
- * untextured.  Texture coordinates are interpolated, never flat.
+ * untextured.  Texture coordinates are interpolated, never flat.  The
+ * texel is filtered for the ray cone's `width` at the hit (texture_lod);
+ * when both filters are the same non-mipmapped one every level of detail
+ * gives the same lookup, and none is computed.
  */
-static void apply_texture(const struct shade_context *sc, const struct scene_mesh *mesh,
-                          const uint32_t v[3], float b0, float b1, float b2,
-                          struct scene_material *mat)
+static void apply_texture(const struct shade_context *sc, const struct scene_instance *inst,
+                          const struct scene_mesh *mesh, const uint32_t v[3], float b0,
+                          float b1, float b2, const float ng[3], const float dir[3],
+                          float width, struct scene_material *mat)
 {
     const struct scene_texture *tex = scene_textures_lookup(sc->textures, mat->texture);
     if (!tex || !tex->texels)
         return;
     float st[2], texel[4];
     interpolate(mesh->texcoords, 2, v, b0, b1, b2, 2, st);
-    /* Without ray footprints every lookup is a magnification (GL's
-     * lambda <= 0), hence the magnification filter (docs/textures.md). */
-    scene_texture_sample(tex, tex->mag_filter, st[0], st[1], texel);
+    float lambda = -INFINITY; /* a magnification */
+    if (tex->min_filter != tex->mag_filter)
+        lambda = texture_lod(tex, inst, mesh, v, ng, dir, width);
+    scene_texture_sample_lod(tex, lambda, st[0], st[1], texel);
     for (int k = 0; k < 3; k++) {
         mat->ambient[k] *= texel[k];
         mat->diffuse[k] *= texel[k];
     }
 }
 
+/* The surface at a hit of a ray along dir whose cone is `width` wide
+ * there (world units). */
 static void fetch_surface(const struct shade_context *sc, const struct trace_scene_hit *hit,
-                          const float dir[3], struct surface *s)
+                          const float dir[3], float width, struct surface *s)
 {
     const struct trace_instance *ti = &sc->scene->instances[hit->instance];
     const struct scene_instance *inst = &sc->frame->committed.items[ti->instance_id];
@@ -172,7 +242,7 @@ static void fetch_surface(const struct shade_context *sc, const struct trace_sce
         memcpy(s->mat.diffuse, c, sizeof(c));
     }
     if (s->mat.texture)
-        apply_texture(sc, mesh, v, b0, b1, b2, &s->mat);
+        apply_texture(sc, inst, mesh, v, b0, b1, b2, s->ng, dir, width, &s->mat);
 }
 
 static void add_scaled(float acc[3], const float a[4], const float b[4], float scale)
@@ -254,7 +324,7 @@ static int refract_dir(const float d[3], const float n[3], float eta, float t[3]
 }
 
 void shade_ray(const struct shade_context *sc, const float org[3], const float dir[3],
-               float tmax, int depth, float rgba[4])
+               float tmax, struct shade_cone cone, int depth, float rgba[4])
 {
     const struct render_state *st = sc->state;
     struct trace_scene_hit hit;
@@ -262,8 +332,15 @@ void shade_ray(const struct shade_context *sc, const float org[3], const float d
         memcpy(rgba, st->clear_color, 4 * sizeof(float));
         return;
     }
+    /* The cone at the hit: t counts in units of dir, which need not be
+     * unit length.  Reflected and refracted rays start with this width and
+     * the same spread: the paper's curvature term (sec. 20.3.4), which
+     * widens cones off convex surfaces and narrows them off concave ones,
+     * is left out, so secondary rays filter as if every mirror were flat. */
+    const float distance = hit.t * sqrtf(vec3_dot(dir, dir));
+    const struct shade_cone at_hit = {fabsf(cone.width + cone.spread * distance), cone.spread};
     struct surface s;
-    fetch_surface(sc, &hit, dir, &s);
+    fetch_surface(sc, &hit, dir, at_hit.width, &s);
     float c[3];
     float unit_dir[3] = {dir[0], dir[1], dir[2]};
     vec3_normalize(unit_dir);
@@ -292,7 +369,7 @@ void shade_ray(const struct shade_context *sc, const float org[3], const float d
             if (vec3_dot(next_dir, s.ng) <= 0.0f)
                 reflect_dir(unit_dir, s.ng, next_dir);
             shade_offset_point(s.p, s.ng, s.p_error, next_org);
-            shade_ray(sc, next_org, next_dir, INFINITY, depth + 1, out);
+            shade_ray(sc, next_org, next_dir, INFINITY, at_hit, depth + 1, out);
             for (int k = 0; k < 3; k++)
                 c[k] += kr * out[k];
         }
@@ -306,7 +383,7 @@ void shade_ray(const struct shade_context *sc, const float org[3], const float d
                 reflect_dir(unit_dir, s.ng, next_dir);
                 shade_offset_point(s.p, s.ng, s.p_error, next_org);
             }
-            shade_ray(sc, next_org, next_dir, INFINITY, depth + 1, out);
+            shade_ray(sc, next_org, next_dir, INFINITY, at_hit, depth + 1, out);
             for (int k = 0; k < 3; k++)
                 c[k] += kt * out[k];
         }

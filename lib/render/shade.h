@@ -16,12 +16,30 @@ struct shade_context {
 };
 
 /*
+ * A ray cone, the pixel footprint a ray carries for texture level of
+ * detail (Akenine-Möller, Nilsson, Andersson, Barré-Brisebois, Toth and
+ * Karras, "Texture Level of Detail Strategies for Real-Time Ray Tracing",
+ * Ray Tracing Gems, 2019, ch. 20, sec. 20.3.4): the cone's width at the
+ * ray's origin (world units, across the ray) and its spread, the width it
+ * gains per unit of distance along the ray (the cone's full angle, in the
+ * small-angle sense).  A perspective primary ray starts on the near plane
+ * with the width of a pixel there; an orthographic one has spread 0.
+ * {0, 0} asks for no filtering: every texture lookup is a magnification.
+ */
+struct shade_cone {
+    float width;
+    float spread;
+};
+
+/*
  * Colour seen along a world-space ray (dir need not be normalised) with
- * tmin <= t < tmax; depth counts the recursion of Whitted shading.
- * Writes RGBA to rgba; alpha is 1 on a hit and the clear alpha on a miss.
+ * 0 <= t < tmax; depth counts the recursion of Whitted shading.  `cone` is
+ * the ray's footprint for textures; reflected and refracted rays continue
+ * it.  Writes RGBA to rgba; alpha is 1 on a hit and the clear alpha on a
+ * miss.
  */
 void shade_ray(const struct shade_context *sc, const float org[3], const float dir[3],
-               float tmax, int depth, float rgba[4]);
+               float tmax, struct shade_cone cone, int depth, float rgba[4]);
 
 /*
  * Moves a point off a surface along the unit normal n by

@@ -1,5 +1,6 @@
 /*
- * texture.c - the texture table and the texture sampler (see texture.h).
+ * texture.c - the texture table, mip chain generation and the texture
+ * sampler (see texture.h).
  *
  * The table is open addressing with linear probing on the name, the same
  * scheme as the object table (object.c): Fibonacci hashing, load factor
@@ -173,12 +174,195 @@ void scene_textures_remove(struct scene_textures *table, uint32_t name)
     }
 }
 
-void scene_texture_set_image(struct scene_texture *tex, int width, int height, uint8_t *texels)
+/* ---- mip chain ----------------------------------------------------------- */
+
+/* The size of the level after one of n texels: max(1, floor(n / 2)), as
+ * OpenGL 2.0 sec. 3.8.8 ("Mipmapping") sizes non-power-of-two levels. */
+static int half_size(int n)
+{
+    return n > 1 ? n / 2 : 1;
+}
+
+int scene_texture_level_count(int width, int height)
+{
+    int count = 1;
+    while (width > 1 || height > 1) {
+        width = half_size(width);
+        height = half_size(height);
+        count++;
+    }
+    return count;
+}
+
+size_t scene_texture_chain_texels(int width, int height)
+{
+    size_t total = 0;
+    for (;;) {
+        total += (size_t)width * (size_t)height;
+        if (width == 1 && height == 1)
+            return total;
+        width = half_size(width);
+        height = half_size(height);
+    }
+}
+
+/*
+ * The mip chain is built by the area-weighted box filter: texel i of a
+ * level n' = half_size(n) texels wide is the mean of the previous level
+ * over the interval it covers, [i n / n', (i + 1) n / n'), each source
+ * texel weighted by its overlap with it.  For even n that is the usual
+ * 2-texel box; for odd n the box is 2 + 1/n' texels wide and straddles
+ * three texels with weights (n' - i, n', i + 1) / n: the polyphase box of
+ * Guthe and Heckbert, "Non-Power-of-Two Mipmap Creation", NVIDIA technical
+ * report TR-01838-001, 2005, whose weights for odd sizes are these.  The
+ * filter is separable and applied in 2D (up to 3x3 taps).  Each source texel
+ * spreads exactly its own weight, so every level keeps the mean of the one
+ * before it: the 1x1 level is the mean of the image.
+ *
+ * Overlaps are integers when lengths are counted in 1/n' source texel:
+ * destination texel i covers [i n, (i + 1) n) and source texel j covers
+ * [j n', (j + 1) n'), so the weights are exact and sum to n per axis.
+ *
+ * Levels are built from the previous level's unrounded values, not its
+ * 8-bit texels, so rounding does not accumulate down the chain; each
+ * texel is rounded once, to the nearest 8-bit value.  To keep that
+ * working memory small, rows stream down the chain: a level keeps its
+ * last three rows as floats (a destination row needs at most three source
+ * rows, ending with the one just made), and a row of level k+1 is made as
+ * soon as the last row of level k it needs exists.
+ */
+#define MIP_MAX_TAPS 3
+
+struct mip_level {
+    int width, height;
+    uint8_t *texels; /* in the chain */
+    float *rows;     /* MIP_MAX_TAPS rows of 4 * width floats, row j in slot j % 3 */
+    int next_row;    /* the next row of this level to make (levels > 0) */
+};
+
+/* Source texels under destination texel i along an axis of n texels
+ * halved to n2: the first index and up to MIP_MAX_TAPS integer weights,
+ * summing to n.  Returns the tap count. */
+static int box_taps(int n, int n2, int i, int *first, long weight[MIP_MAX_TAPS])
+{
+    const long lo = (long)i * n, hi = lo + n;
+    int count = 0;
+    *first = (int)(lo / n2);
+    for (long j = *first; j * n2 < hi; j++) {
+        long a = j * n2 > lo ? j * n2 : lo;
+        long b = (j + 1) * n2 < hi ? (j + 1) * n2 : hi;
+        weight[count++] = b - a;
+    }
+    return count;
+}
+
+static void make_row(struct mip_level *lv, int k, int levels);
+
+/* Row j of level k exists (in its float slot): makes every row of level
+ * k+1 that waited for it, each of which may in turn complete rows below. */
+static void row_ready(struct mip_level *lv, int k, int j, int levels)
+{
+    if (k + 1 >= levels)
+        return;
+    struct mip_level *dst = &lv[k + 1];
+    const int m = lv[k].height, m2 = dst->height;
+    /* Row r of level k+1 needs source rows up to ceil((r + 1) m / m2) - 1. */
+    while (dst->next_row < m2 &&
+           ((long)(dst->next_row + 1) * m + m2 - 1) / m2 - 1 <= (long)j)
+        make_row(lv, k + 1, levels);
+}
+
+/* Makes row lv[k].next_row of level k (k > 0) from level k - 1. */
+static void make_row(struct mip_level *lv, int k, int levels)
+{
+    const struct mip_level *src = &lv[k - 1];
+    struct mip_level *dst = &lv[k];
+    const int n = src->width, m = src->height, n2 = dst->width, m2 = dst->height;
+    const int r = dst->next_row;
+    int y0, x0;
+    long wy[MIP_MAX_TAPS], wx[MIP_MAX_TAPS];
+    const int ny = box_taps(m, m2, r, &y0, wy);
+    /* The last level keeps no float rows: nothing is made from it. */
+    float *out = dst->rows ? &dst->rows[(size_t)(r % MIP_MAX_TAPS) * 4 * (size_t)n2] : NULL;
+    uint8_t *texels = &dst->texels[(size_t)r * 4 * (size_t)n2];
+    const double total = (double)n * (double)m;
+    for (int i = 0; i < n2; i++) {
+        const int nx = box_taps(n, n2, i, &x0, wx);
+        double sum[4] = {0, 0, 0, 0};
+        for (int b = 0; b < ny; b++) {
+            const float *row = &src->rows[(size_t)((y0 + b) % MIP_MAX_TAPS) * 4 * (size_t)n];
+            for (int a = 0; a < nx; a++) {
+                const double w = (double)(wy[b] * wx[a]);
+                for (int c = 0; c < 4; c++)
+                    sum[c] += w * (double)row[4 * (x0 + a) + c];
+            }
+        }
+        for (int c = 0; c < 4; c++) {
+            const double v = sum[c] / total; /* in [0, 255]: a weighted mean */
+            if (out)
+                out[4 * i + c] = (float)v;
+            texels[4 * i + c] = (uint8_t)lrint(v);
+        }
+    }
+    dst->next_row++;
+    row_ready(lv, k, r, levels);
+}
+
+int scene_texture_build_mipmaps(uint8_t *chain, int width, int height)
+{
+    struct mip_level lv[SCENE_TEXTURE_MAX_LEVELS];
+    const int levels = scene_texture_level_count(width, height);
+    if (levels < 2)
+        return 0;
+    /* Float rows for every level that has a level after it. */
+    size_t row_floats = 0, offset = 0;
+    for (int k = 0, w = width, h = height; k < levels; k++) {
+        lv[k].width = w;
+        lv[k].height = h;
+        lv[k].texels = chain + 4 * offset;
+        lv[k].next_row = 0;
+        offset += (size_t)w * (size_t)h;
+        if (k + 1 < levels)
+            row_floats += MIP_MAX_TAPS * 4 * (size_t)w;
+        w = half_size(w);
+        h = half_size(h);
+    }
+    float *rows = rt_malloc(row_floats * sizeof(float));
+    if (!rows)
+        return -1;
+    for (int k = 0; k + 1 < levels; k++) {
+        lv[k].rows = rows;
+        rows += MIP_MAX_TAPS * 4 * (size_t)lv[k].width;
+    }
+    lv[levels - 1].rows = NULL;
+    /* Level 0 streams in row by row; the rows below follow. */
+    for (int j = 0; j < height; j++) {
+        const uint8_t *in = &chain[(size_t)j * 4 * (size_t)width];
+        float *slot = &lv[0].rows[(size_t)(j % MIP_MAX_TAPS) * 4 * (size_t)width];
+        for (size_t c = 0; c < 4 * (size_t)width; c++)
+            slot[c] = (float)in[c];
+        row_ready(lv, 0, j, levels);
+    }
+    rt_free(lv[0].rows);
+    return 0;
+}
+
+void scene_texture_set_image(struct scene_texture *tex, int width, int height, uint8_t *chain)
 {
     rt_free(tex->texels);
     tex->width = width;
     tex->height = height;
-    tex->texels = texels;
+    tex->texels = chain;
+    tex->level_count = scene_texture_level_count(width, height);
+    const uint8_t *p = chain;
+    for (int k = 0; k < tex->level_count; k++) {
+        tex->levels[k].width = width;
+        tex->levels[k].height = height;
+        tex->levels[k].texels = p;
+        p += 4 * (size_t)width * (size_t)height;
+        width = half_size(width);
+        height = half_size(height);
+    }
 }
 
 /* ---- sampling ------------------------------------------------------------ */
@@ -212,9 +396,9 @@ static int wrap_index(long i, int n, enum scene_texture_wrap wrap)
     return i < 0 ? 0 : i >= n ? n - 1 : (int)i;
 }
 
-static void fetch_texel(const struct scene_texture *tex, int i, int j, float rgba[4])
+static void fetch_texel(const struct scene_texture_level *lv, int i, int j, float rgba[4])
 {
-    const uint8_t *p = &tex->texels[4 * ((size_t)j * (size_t)tex->width + (size_t)i)];
+    const uint8_t *p = &lv->texels[4 * ((size_t)j * (size_t)lv->width + (size_t)i)];
     /* Division, not a multiplication by 1/255: b / 255 is then the
      * correctly rounded value of the 8-bit colour, exactly what an
      * application computes for it. */
@@ -222,17 +406,20 @@ static void fetch_texel(const struct scene_texture *tex, int i, int j, float rgb
         rgba[k] = (float)p[k] / 255.0f;
 }
 
-void scene_texture_sample(const struct scene_texture *tex, enum scene_texture_filter filter,
-                          float s, float t, float rgba[4])
+void scene_texture_sample_level(const struct scene_texture *tex, int level,
+                                enum scene_texture_filter filter, float s, float t,
+                                float rgba[4])
 {
-    const int w = tex->width, h = tex->height;
+    const struct scene_texture_level *lv = &tex->levels[level];
+    const int w = lv->width, h = lv->height;
     const double u = reduce_coord(s, tex->wrap_s) * w;
     const double v = reduce_coord(t, tex->wrap_t) * h;
-    if (filter == SCENE_FILTER_NEAREST) {
+    if (filter == SCENE_FILTER_NEAREST || filter == SCENE_FILTER_NEAREST_MIPMAP_NEAREST ||
+        filter == SCENE_FILTER_NEAREST_MIPMAP_LINEAR) {
         /* GL 1.1 eq. 3.16: the texel whose square contains (u, v). */
         int i = wrap_index((long)floor(u), w, tex->wrap_s);
         int j = wrap_index((long)floor(v), h, tex->wrap_t);
-        fetch_texel(tex, i, j, rgba);
+        fetch_texel(lv, i, j, rgba);
         return;
     }
     /* GL 1.1 eq. 3.17: i0 = floor(u - 1/2), alpha = frac(u - 1/2); the
@@ -245,10 +432,10 @@ void scene_texture_sample(const struct scene_texture *tex, enum scene_texture_fi
     const int j0 = wrap_index((long)fj, h, tex->wrap_t);
     const int j1 = wrap_index((long)fj + 1, h, tex->wrap_t);
     float c00[4], c10[4], c01[4], c11[4];
-    fetch_texel(tex, i0, j0, c00);
-    fetch_texel(tex, i1, j0, c10);
-    fetch_texel(tex, i0, j1, c01);
-    fetch_texel(tex, i1, j1, c11);
+    fetch_texel(lv, i0, j0, c00);
+    fetch_texel(lv, i1, j0, c10);
+    fetch_texel(lv, i0, j1, c01);
+    fetch_texel(lv, i1, j1, c11);
     /* The same weights as nested interpolations: where the four texels
      * agree the result is exactly their value (an opaque alpha stays 1). */
     for (int k = 0; k < 4; k++) {
@@ -256,4 +443,59 @@ void scene_texture_sample(const struct scene_texture *tex, enum scene_texture_fi
         float top = c01[k] + a * (c11[k] - c01[k]);
         rgba[k] = bottom + b * (top - bottom);
     }
+}
+
+void scene_texture_sample(const struct scene_texture *tex, enum scene_texture_filter filter,
+                          float s, float t, float rgba[4])
+{
+    scene_texture_sample_level(tex, 0, filter, s, t, rgba);
+}
+
+void scene_texture_sample_lod(const struct scene_texture *tex, float lambda, float s, float t,
+                              float rgba[4])
+{
+    const enum scene_texture_filter min = tex->min_filter;
+    /* GL 1.1 sec. 3.8.2: the switch-over point c is 0.5 for a LINEAR
+     * magnification with a NEAREST_MIPMAP_* minification, "to ensure that
+     * a minified texture does not appear sharper than a magnified
+     * texture"; otherwise 0. */
+    const float c = tex->mag_filter == SCENE_FILTER_LINEAR &&
+                            (min == SCENE_FILTER_NEAREST_MIPMAP_NEAREST ||
+                             min == SCENE_FILTER_NEAREST_MIPMAP_LINEAR)
+                        ? 0.5f
+                        : 0.0f;
+    if (!(lambda > c)) { /* magnification; also a NaN lambda */
+        scene_texture_sample_level(tex, 0, tex->mag_filter, s, t, rgba);
+        return;
+    }
+    if (min == SCENE_FILTER_NEAREST || min == SCENE_FILTER_LINEAR) {
+        scene_texture_sample_level(tex, 0, min, s, t, rgba);
+        return;
+    }
+    /* GL 1.1 sec. 3.8.1, "Mipmapping"; q is the last level. */
+    const int q = tex->level_count - 1;
+    if (min == SCENE_FILTER_NEAREST_MIPMAP_NEAREST || min == SCENE_FILTER_LINEAR_MIPMAP_NEAREST) {
+        /* d = 0 for lambda <= 1/2, ceil(lambda + 1/2) - 1 up to q + 1/2,
+         * then q: the level nearest to lambda, ties to the finer one. */
+        int d = 0;
+        if (lambda > (float)q + 0.5f)
+            d = q;
+        else if (lambda > 0.5f)
+            d = (int)ceilf(lambda + 0.5f) - 1;
+        scene_texture_sample_level(tex, d, min, s, t, rgba);
+        return;
+    }
+    /* *_MIPMAP_LINEAR: levels d1 = floor(lambda) and d1 + 1 blended by
+     * frac(lambda); from lambda >= q on, level q alone. */
+    if (lambda >= (float)q) {
+        scene_texture_sample_level(tex, q, min, s, t, rgba);
+        return;
+    }
+    const float d1 = floorf(lambda), f = lambda - d1;
+    float fine[4], coarse[4];
+    scene_texture_sample_level(tex, (int)d1, min, s, t, fine);
+    scene_texture_sample_level(tex, (int)d1 + 1, min, s, t, coarse);
+    /* As the bilinear weights: equal levels give exactly their value. */
+    for (int k = 0; k < 4; k++)
+        rgba[k] = fine[k] + f * (coarse[k] - fine[k]);
 }

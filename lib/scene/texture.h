@@ -1,36 +1,66 @@
 /*
- * texture.h - 2D texture objects, their table and sampling.
+ * texture.h - 2D texture objects, their table, their mipmaps and sampling.
  *
  * A texture is named by a non-zero uint32_t, as a GL texture object.  Its
  * image is stored as 8-bit RGBA texels (GL's unsized RGB/RGBA internal
  * formats are 8 bits per component in practice), row 0 first: texel (i, j)
- * is texels[4 * (j * width + i)] and covers s in [i, i+1)/width, t in
- * [j, j+1)/height, so row 0 is t = 0 as in OpenGL (sec. 3.8 of the OpenGL
- * 1.1 specification).  RGB images store alpha 255.  A 1044x1044 image, the
- * largest of the BART kitchen, takes 4.4 MB.
+ * of a level w x h is texels[4 * (j * w + i)] and covers s in
+ * [i, i+1)/w, t in [j, j+1)/h, so row 0 is t = 0 as in OpenGL (sec. 3.8 of
+ * the OpenGL 1.1 specification).  RGB images store alpha 255.
+ *
+ * Every image carries its complete mip chain, generated from level 0 when
+ * the image is set (GL_GENERATE_MIPMAP; levels > 0 cannot be uploaded):
+ * level k+1 is max(1, floor(w_k / 2)) x max(1, floor(h_k / 2)), as in
+ * OpenGL 2.0 for non-power-of-two sizes, down to 1x1.  The levels lie one
+ * after the other in one block, level 0 first; the chain adds at most 1/3
+ * to level 0 (a 1044x1044 image, the largest of the BART kitchen, takes
+ * 4.4 MB, 5.8 MB with its chain).
  *
  * Threading: the table and the textures change only on the API thread,
  * never while a frame or a query runs; render threads only call
- * scene_textures_lookup and scene_texture_sample, which do not write.
+ * scene_textures_lookup and the samplers, which do not write.
  */
 #ifndef RT_SCENE_TEXTURE_H
 #define RT_SCENE_TEXTURE_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 /* Largest width or height, RT_MAX_TEXTURE_SIZE: OpenGL 4.6's minimum for
  * MAX_TEXTURE_SIZE, and the largest viewport (context.h). */
 #define SCENE_TEXTURE_MAX_SIZE 16384
+/* Levels of the largest chain: 16384 = 2^14 halves 14 times to 1. */
+#define SCENE_TEXTURE_MAX_LEVELS 15
 
-enum scene_texture_filter { SCENE_FILTER_NEAREST, SCENE_FILTER_LINEAR };
+/* GL's filters.  The first two filter within one level and are the only
+ * magnification filters; the mipmapped ones (minification only) choose
+ * levels by the level of detail, then filter within a level with NEAREST
+ * (NEAREST_MIPMAP_*) or LINEAR (LINEAR_MIPMAP_*). */
+enum scene_texture_filter {
+    SCENE_FILTER_NEAREST,
+    SCENE_FILTER_LINEAR,
+    SCENE_FILTER_NEAREST_MIPMAP_NEAREST,
+    SCENE_FILTER_LINEAR_MIPMAP_NEAREST,
+    SCENE_FILTER_NEAREST_MIPMAP_LINEAR,
+    SCENE_FILTER_LINEAR_MIPMAP_LINEAR
+};
 enum scene_texture_wrap { SCENE_WRAP_REPEAT, SCENE_WRAP_CLAMP_TO_EDGE };
+
+/* One level of a mip chain: its size and its texels inside the chain. */
+struct scene_texture_level {
+    int width;
+    int height;
+    const uint8_t *texels; /* 4 * width * height bytes, RGBA */
+};
 
 struct scene_texture {
     uint32_t name;
     int created;   /* bound at least once (rtIsTexture); 0: only a reserved name */
-    int width;     /* 0 while there is no image */
+    int width;     /* of level 0; 0 while there is no image */
     int height;
-    uint8_t *texels; /* 4 * width * height bytes, RGBA; NULL while there is no image */
+    uint8_t *texels; /* the chain, level 0 first (4 bytes a texel); NULL while no image */
+    int level_count; /* levels in the chain, down to 1x1; 0 while there is no image */
+    struct scene_texture_level levels[SCENE_TEXTURE_MAX_LEVELS];
     enum scene_texture_filter min_filter;
     enum scene_texture_filter mag_filter;
     enum scene_texture_wrap wrap_s;
@@ -64,22 +94,64 @@ int scene_textures_generate(struct scene_textures *table, uint32_t n, uint32_t *
 /* Removes and frees the entry for name; no-op for 0 or an unknown name. */
 void scene_textures_remove(struct scene_textures *table, uint32_t name);
 
-/* Replaces the image of tex by `texels` (4 * width * height bytes from
- * rt_malloc; ownership moves), freeing the old one. */
-void scene_texture_set_image(struct scene_texture *tex, int width, int height, uint8_t *texels);
+/* Levels of the chain of a width x height image (1 .. SCENE_TEXTURE_MAX_LEVELS
+ * for sizes 1 .. SCENE_TEXTURE_MAX_SIZE): 1 + floor(log2(max(width, height))). */
+int scene_texture_level_count(int width, int height);
+
+/* Texels in a width x height image and all its levels, the size of the
+ * block scene_texture_set_image takes (in units of 4 bytes). */
+size_t scene_texture_chain_texels(int width, int height);
 
 /*
- * The colour of tex at texture coordinates (s, t), RGBA in [0, 1], as an
- * OpenGL 1.1 sampler with no mipmaps (sec. 3.8.5): texel centres at
- * (i + 0.5) / width; RT_NEAREST takes the texel containing the point,
- * RT_LINEAR blends the four nearest texels bilinearly; REPEAT uses the
- * fractional part of the coordinate, CLAMP_TO_EDGE never reaches beyond
- * the edge texels.  `filter` is the filter to use (the caller chooses
- * between tex->min_filter and tex->mag_filter).  Total: any float works,
- * however large (u = 1e30 stays in range); a NaN or infinite coordinate
- * is taken as 0.  tex must have an image.
+ * Fills levels 1 .. of the chain `chain` (scene_texture_chain_texels(width,
+ * height) texels) from its level 0, the first width * height texels.  Each
+ * level is the previous one filtered by the area-weighted box (polyphase
+ * box, see texture.c), so odd sizes are filtered properly and each level's
+ * mean is the mean of level 0 up to the final rounding to 8 bits.  Returns
+ * 0, or -1 when the small working buffer cannot be allocated (levels > 0
+ * are then unspecified; level 0 is never written).  Sizes 1 ..
+ * SCENE_TEXTURE_MAX_SIZE.
  */
+int scene_texture_build_mipmaps(uint8_t *chain, int width, int height);
+
+/* Replaces the image of tex by `chain`, a width x height image followed by
+ * its mip levels as scene_texture_build_mipmaps leaves them (from
+ * rt_malloc; ownership moves), freeing the old one. */
+void scene_texture_set_image(struct scene_texture *tex, int width, int height, uint8_t *chain);
+
+/*
+ * The colour of level `level` (0 .. level_count - 1) of tex at texture
+ * coordinates (s, t), RGBA in [0, 1], filtered within the level as OpenGL
+ * 1.1 does (sec. 3.8.1): texel centres at (i + 0.5) / w for a level w
+ * texels wide; SCENE_FILTER_NEAREST takes the texel containing the point,
+ * SCENE_FILTER_LINEAR blends the four nearest texels bilinearly (a
+ * mipmapped filter is taken as its within-level filter); REPEAT uses the
+ * fractional part of the coordinate, CLAMP_TO_EDGE never reaches beyond
+ * the edge texels.  Total: any float works, however large (u = 1e30 stays
+ * in range); a NaN or infinite coordinate is taken as 0.  tex must have an
+ * image.
+ */
+void scene_texture_sample_level(const struct scene_texture *tex, int level,
+                                enum scene_texture_filter filter, float s, float t,
+                                float rgba[4]);
+
+/* scene_texture_sample_level on level 0. */
 void scene_texture_sample(const struct scene_texture *tex, enum scene_texture_filter filter,
                           float s, float t, float rgba[4]);
+
+/*
+ * The colour of tex at (s, t) for the level of detail `lambda` (log2 of
+ * the level-0 texels a pixel's footprint spans; the caller computes it),
+ * as OpenGL 1.1 sec. 3.8.1-3.8.2 chooses filters and levels: lambda <= c
+ * is a magnification, level 0 with tex->mag_filter, where c is 0.5 when
+ * the magnification filter is LINEAR and the minification filter
+ * NEAREST_MIPMAP_NEAREST or NEAREST_MIPMAP_LINEAR, and 0 otherwise;
+ * lambda > c uses tex->min_filter: NEAREST and LINEAR on level 0,
+ * *_MIPMAP_NEAREST the level nearest to lambda, *_MIPMAP_LINEAR the two
+ * levels around it blended by frac(lambda), clamped to the last level.
+ * A NaN lambda is taken as a magnification.  tex must have an image.
+ */
+void scene_texture_sample_lod(const struct scene_texture *tex, float lambda, float s, float t,
+                              float rgba[4]);
 
 #endif
