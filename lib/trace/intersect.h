@@ -6,9 +6,12 @@
  * Both kernels are robust rather than epsilon-based:
  * - isect_triangle is the watertight test of Woop, Benthin and Wald,
  *   "Watertight ray/triangle intersection", JCGT 2(1), 2013, for the
- *   hit/miss decision; two additions of ours, both computed in double and
- *   only for candidate hits, reject zero-area triangles and compute t from
- *   the triangle's geometry rather than from the rounded barycentrics;
+ *   hit/miss decision; additions of ours, only for candidate hits,
+ *   reject zero-area triangles and compute t from the triangle's geometry
+ *   rather than from the rounded barycentrics (both in double), and clamp
+ *   t into the triangle's box as isect_box computes it, so that
+ *   traversal, which culls boxes by entry distance, agrees with the brute
+ *   force (isect_clamp_to_box);
  * - isect_box is the slab test with the conservative far distance of Ize,
  *   "Robust BVH ray traversal", JCGT 2(2), 2013 (also PBRT 3rd ed.,
  *   sec. 3.9.2, Bounds3::IntersectP).
@@ -50,6 +53,10 @@
  * which would sit in the triangle loop). */
 static inline float isect_next_up(float f)
 {
+    /* -0 too (a hit at t = -0, the origin on the surface): its bits + 1
+     * would be the negative denormal, below it. */
+    if (f == 0.0f)
+        return 0x1p-149f;
     uint32_t bits;
     memcpy(&bits, &f, sizeof(bits));
     bits++;
@@ -121,6 +128,85 @@ static inline int isect_box(const struct isect_box_ray *br, const struct bvh_nod
 }
 
 /*
+ * The ray's parameter interval through one slab of a triangle's box, as
+ * isect_box computes it: d0, d1, d2 are the vertices' coordinates minus
+ * the origin on that axis, rounded (the float differences isect_triangle
+ * has at hand), inv is ray->inv_dir on that axis.  Rounding is monotone,
+ * so min(d) * inv is bit for bit isect_box's (min(v) - org) * inv for the
+ * triangle's own box, and no larger than its value for any box holding
+ * the triangle (whose bound is at most min(v)); likewise for the far end.
+ * A NaN end (0 * inf: the origin on the slab's plane, zero direction)
+ * leaves the interval alone, as isect_box ignores it.
+ */
+static inline void isect_slab(float d0, float d1, float d2, float inv, float *t_lo, float *t_hi)
+{
+    /* Plain comparisons rather than fminf, which is a libm call here. */
+    float lo = d0 < d1 ? d0 : d1;
+    float hi = d0 < d1 ? d1 : d0;
+    lo = lo < d2 ? lo : d2;
+    hi = hi > d2 ? hi : d2;
+    const float t_near = (inv < 0.0f ? hi : lo) * inv;
+    const float t_far = (inv < 0.0f ? lo : hi) * inv;
+    *t_lo = t_near > *t_lo ? t_near : *t_lo;
+    *t_hi = t_far < *t_hi ? t_far : *t_hi;
+}
+
+/*
+ * Clamps a hit distance t into [t_lo, t_hi], the ray's interval through
+ * the triangle's box as isect_box computes it (isect_slab;
+ * tag-graze-t-in-box).  When the interval is empty (the rounded edge
+ * test accepted a ray that passes a rounding error beside the box) the
+ * result is t_lo.  A NaN t gives t_hi or t_lo.
+ *
+ * Why.  Traversal culls a box whose entry distance lies beyond the
+ * closest hit so far; that is only sound if the point org + t dir of
+ * every hit lies in its triangle's box, hence in every ancestor's box.
+ * The hit/miss decision of Woop, Benthin and Wald 2013 is made on
+ * sheared, rounded coordinates, so it accepts rays that pass within a
+ * few ulps of the triangle (as it must, for watertightness), while t is
+ * computed separately: the paper's T / det, or here the plane distance.
+ * For a ray through (or an ulp beside) a vertex or an edge at a grazing
+ * angle theta to the plane, that sideways error of the decision becomes
+ * an error along the ray of about ulps / sin(theta).  Measured on a unit
+ * sphere (conformance/internal/traversal_grazing.c): a ray aimed at a
+ * vertex passes it by ~1e-8 and meets the plane of one of its triangles
+ * at 0.1 degrees, at t = 0.999995 where the vertex is at t = 1; that
+ * point is 2.5e-6 outside the triangle's box, whose entry distance is 1,
+ * 80 ulps beyond t.  PBRT 3rd ed. sec. 3.9.6 bounds the error of T / det
+ * (to reject hits behind the origin): the bound grows as 1 / |det|, i.e.
+ * without limit as the ray turns into the plane, so no constant relative
+ * widening of the box test (ISECT_BOX_FAR_SCALE, Ize 2013) or of the
+ * boxes at build time can cover it.  Clamping makes the reported point
+ * consistent with the box by construction and changes nothing for a ray
+ * that really crosses the triangle away from the box's faces.
+ *
+ * The guarantee is exact, not an error bound, because the clamp uses
+ * the box test's own roundings: for any box holding the triangle and any
+ * t_max >= t, isect_box returns 1 with an entry distance <= t (each
+ * slab's computed near end is <= t_lo <= t and far end >= t_hi >= t, by
+ * monotone rounding; Ize's scaling of the far end only widens), so
+ * traverse.c's culling against best * ISECT_BOX_FAR_SCALE
+ * (tag-graze-box-limit) never skips the box of a hit at or below best.
+ * The kz slab is [z_lo, z_hi] bit for bit (ray->sz is ray->inv_dir[kz]):
+ * the vertices' depth range, to which t was clamped before, so t only
+ * changes where it lay outside the box on the kx or ky axis.  In an
+ * empty interval t_lo keeps the entry <= t; whether the box is accepted
+ * then depends on Ize's far scaling, as for any box the exact ray
+ * misses by a rounding error.
+ */
+static inline float isect_clamp_to_box(const struct trace_ray *ray, float ax, float bx, float cx,
+                                       float ay, float by, float cy, float z_lo, float z_hi,
+                                       float t)
+{
+    float t_lo = z_lo;
+    float t_hi = z_hi;
+    isect_slab(ax, bx, cx, ray->inv_dir[ray->kx], &t_lo, &t_hi);
+    isect_slab(ay, by, cy, ray->inv_dir[ray->ky], &t_lo, &t_hi);
+    t = t < t_hi ? t : t_hi;
+    return t > t_lo ? t : t_lo;
+}
+
+/*
  * The watertight test of Woop, Benthin and Wald 2013, without backface
  * culling: returns 1 with the hit when tmin <= t < t_max.
  * u, v are the weights of v1 and v2 (trace.h).
@@ -164,17 +250,27 @@ static inline int isect_triangle(const struct trace_ray *ray, const float v0[3],
 
     /* Sec. 4: an edge function that rounds to exactly 0 may have the wrong
      * sign; recompute all three in double, where the products of floats
-     * are exact and each difference rounds once. */
+     * are exact and each difference rounds once.  The signs are decided
+     * on the doubles: a tiny non-zero value can underflow to 0 in the
+     * cast to float (sheared coordinates of denormal size, e.g. an origin
+     * 1e-45 beside the plane of a vertex with a zero direction component
+     * along it), which would read as "on the edge" and accept a ray that
+     * misses the triangle and its box. */
     if (U == 0.0f || V == 0.0f || W == 0.0f) {
-        double CxBy = (double)Cx * (double)By;
-        double CyBx = (double)Cy * (double)Bx;
-        double AxCy = (double)Ax * (double)Cy;
-        double AyCx = (double)Ay * (double)Cx;
-        double BxAy = (double)Bx * (double)Ay;
-        double ByAx = (double)By * (double)Ax;
-        U = (float)(CxBy - CyBx);
-        V = (float)(AxCy - AyCx);
-        W = (float)(BxAy - ByAx);
+        const double CxBy = (double)Cx * (double)By;
+        const double CyBx = (double)Cy * (double)Bx;
+        const double AxCy = (double)Ax * (double)Cy;
+        const double AyCx = (double)Ay * (double)Cx;
+        const double BxAy = (double)Bx * (double)Ay;
+        const double ByAx = (double)By * (double)Ax;
+        const double dU = CxBy - CyBx;
+        const double dV = AxCy - AyCx;
+        const double dW = BxAy - ByAx;
+        if ((dU < 0.0 || dV < 0.0 || dW < 0.0) && (dU > 0.0 || dV > 0.0 || dW > 0.0))
+            return 0;
+        U = (float)dU;
+        V = (float)dV;
+        W = (float)dW;
     }
 
     /* Outside when the signs differ; a point on an edge (0) is inside. */
@@ -188,9 +284,16 @@ static inline int isect_triangle(const struct trace_ray *ray, const float v0[3],
     if (det == 0.0f || !isfinite(det))
         return 0;
 
-    /* The sheared depths of the vertices: the hit's t is a convex
-     * combination of them, so a hit outside their range is impossible
-     * (a cheap early rejection; NaN from overflowing input fails too). */
+    /* The sheared depths of the vertices, whose range [z_lo, z_hi] is
+     * the ray's interval through the kz slab of the triangle's box as
+     * isect_box computes it (ray->sz is ray->inv_dir[kz]).  The final t
+     * is clamped into the box's interval (isect_clamp_to_box), so t >=
+     * z_lo always and t <= z_hi when the ray crosses the box: a cheap
+     * early rejection that never refuses a triangle the test on t at the
+     * end would accept below t_max (NaN from overflowing input fails
+     * too).  Whether a triangle is hit below t_max thus depends on its t
+     * alone, so the brute force and traversal, which pass different
+     * t_max, agree about near-ties (tag-graze-t-in-box). */
     const float Az = ray->sz * az;
     const float Bz = ray->sz * bz;
     const float Cz = ray->sz * cz;
@@ -233,9 +336,9 @@ static inline int isect_triangle(const struct trace_ray *ray, const float v0[3],
      *   tell whether the ray passes through the sliver or beside it, and
      *   the plane is no better than that, so t is the ray's closest
      *   approach to the sliver's longest edge.
-     * Either is clamped to the vertices' depth range, and the paper's t
-     * remains when the double computation is degenerate (a ray parallel
-     * to the plane, or to the edge). */
+     * The paper's t remains when the double computation is degenerate (a
+     * ray parallel to the plane, or to the edge).  Whichever it is, t is
+     * then clamped into the triangle's box (isect_clamp_to_box). */
     float t = (U * Az + V * Bz + W * Cz) * rcp_det;
     {
         const double dx = ray->dir[0];
@@ -282,12 +385,10 @@ static inline int isect_triangle(const struct trace_ray *ray, const float v0[3],
             if (den > 0.0)
                 tp = (ee * dw - de * ew) / den;
         }
-        if (!isnan(tp)) {
-            tp = tp > z_lo ? tp : z_lo;
-            tp = tp < z_hi ? tp : z_hi;
+        if (!isnan(tp))
             t = (float)tp;
-        }
     }
+    t = isect_clamp_to_box(ray, ax, bx, cx, ay, by, cy, z_lo, z_hi, t);
     if (!(t >= ray->tmin && t < t_max) || !isfinite(t))
         return 0;
 

@@ -61,8 +61,17 @@ void trace_ray_init(struct trace_ray *ray, const float org[3], const float dir[3
  * triangle's plane computed in double (for a sliver too thin for the
  * float test to resolve, the closest approach to its longest edge), so
  * p = org + t dir lies on the triangle (to rounding) even when u, v are
- * inaccurate.  Double-precision fallback for the edge functions when one
- * is exactly 0, as the paper's sec. 4 describes.  Both faces count (no
+ * inaccurate, clamped into the ray's interval through the triangle's
+ * bounding box as trace_box computes it.  So trace_box gives every box
+ * holding the triangle an entry distance of at most t, and accepts it
+ * (with t_max >= t) whenever the exact ray crosses the triangle's box:
+ * traversal's culling relies on that.  The clamp moves t by more than an
+ * ulp or two only for a ray that the float test accepts although it
+ * passes a rounding error beside the triangle, at a grazing angle, where
+ * the plane point can lie far outside it.  Whether a triangle is hit
+ * below t_max depends on its t alone.  Double-precision fallback for the
+ * edge functions when one is exactly 0, as the paper's sec. 4 describes,
+ * with the signs taken in double (no underflow).  Both faces count (no
  * culling).
  */
 int trace_triangle(const struct trace_ray *ray, const float v0[3], const float v1[3],
@@ -84,10 +93,12 @@ int trace_box(const struct trace_ray *ray, const float aabb_min[3], const float 
  * Closest hit in one BVH.  tri holds 9 floats per leaf slot as produced by
  * accel_gather_triangles.  Only hits with ray->tmin <= t < t_max count.
  * Returns 1 and fills *hit if there is one (else leaves *hit alone); of
- * hits at exactly the same t the first found wins, which need not be the
- * lowest index.  An empty BVH (node_count 0) has no hit.  counters may be
- * NULL; otherwise they are incremented (each node and triangle is tested
- * at most once per call).  Read-only on its inputs: any number of threads
+ * hits at exactly the same t the lowest primitive index wins, so the
+ * answer is trace_closest_brute_force's for every tree over the same
+ * triangles (traverse.c; conformance/internal/traversal_grazing.c checks
+ * it bit for bit).  An empty BVH (node_count 0) has no hit.  counters may
+ * be NULL; otherwise they are incremented (each node and triangle is
+ * tested at most once per call).  Read-only on its inputs: any number of threads
  * may trace the same BVH at once.
  */
 int trace_closest(const struct bvh *bvh, const float *tri, const struct trace_ray *ray,

@@ -40,10 +40,16 @@ static inline int walk(const struct bvh *bvh, const float *tri, const struct tra
     uint64_t node_tests = 1;
     uint64_t triangle_tests = 0;
     float best = t_max;
-    /* Boxes are tested against box_limit: best itself until a hit is
-     * found, then best widened by the slab test's rounding bound, because
-     * a box touching a hit at exactly best may compute its entry an ulp
-     * beyond it and must still be visited for the tie rule below. */
+    /* Boxes are tested against box_limit, best widened by the slab
+     * test's rounding bound, and popped subtrees are compared with it:
+     * every box holding a hit at or below best must be visited, for the
+     * closest hit and for the tie rule below.  What makes that hold is
+     * on the triangle side: isect_triangle clamps every t into its
+     * triangle's box as isect_box computes it, so isect_box's entry for
+     * any box holding a hit at t is at most t (tag-graze-box-limit;
+     * tag-graze-t-in-box in intersect.h).  Without the clamp a grazing
+     * ray's plane distance can lie far before the box, and no constant
+     * widening here would cover it; the widening is kept as a margin. */
     float box_limit = t_max * ISECT_BOX_FAR_SCALE; /* t_max may itself be a tie bound */
     int found = 0;
     struct stack_entry stack[BVH_MAX_DEPTH + 1];
