@@ -11,6 +11,7 @@ packages=(
   libembree-dev                               # rtbench: comparison only
   xvfb xauth                                  # window tests without a display
   gnuplot-nox                                 # rtbench: PNG plots
+  clang libclang-rt-dev                       # test.sh fuzz suite: libFuzzer runtime
 )
 
 missing=()

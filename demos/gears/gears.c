@@ -44,11 +44,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
-#include <unistd.h>
+
+#include "demo_util.h"
 
 #ifdef RT_HAVE_GLFW
-#include <GLFW/glfw3.h>
+#include "demo_window.h"
 #endif
 
 #ifndef M_PI
@@ -317,35 +317,6 @@ static void usage(FILE *f)
                "  --eye-light  OpenGL-like headlight shading instead of Whitted with shadows\n");
 }
 
-/* A whole decimal number in [min, max]; 0 on anything else. */
-static int parse_int(const char *text, int min, int max, int *value)
-{
-    char *end;
-    long v;
-    if (text == NULL || text[0] == '\0')
-        return 0;
-    v = strtol(text, &end, 10);
-    if (*end != '\0' || v < min || v > max)
-        return 0;
-    *value = (int)v;
-    return 1;
-}
-
-static int parse_size(const char *text, int *width, int *height)
-{
-    char buf[32];
-    char *x;
-    if (text == NULL || strlen(text) >= sizeof buf)
-        return 0;
-    strcpy(buf, text);
-    x = strchr(buf, 'x');
-    if (x == NULL)
-        return 0;
-    *x = '\0';
-    /* 16384 is rtViewport's limit. */
-    return parse_int(buf, 1, 16384, width) && parse_int(x + 1, 1, 16384, height);
-}
-
 static int parse_options(int argc, char **argv, struct options *o)
 {
     int i;
@@ -359,11 +330,11 @@ static int parse_options(int argc, char **argv, struct options *o)
             o->headless = 1;
         } else if (strcmp(a, "--eye-light") == 0) {
             o->eye_light = 1;
-        } else if (strcmp(a, "--frames") == 0 && parse_int(next, 1, 1000000, &o->frames)) {
+        } else if (strcmp(a, "--frames") == 0 && demo_parse_int(next, 1, 1000000, &o->frames)) {
             i++;
-        } else if (strcmp(a, "--size") == 0 && parse_size(next, &o->width, &o->height)) {
+        } else if (strcmp(a, "--size") == 0 && demo_parse_size(next, &o->width, &o->height)) {
             i++;
-        } else if (strcmp(a, "--threads") == 0 && parse_int(next, 1, 256, &o->threads)) {
+        } else if (strcmp(a, "--threads") == 0 && demo_parse_int(next, 1, 256, &o->threads)) {
             i++;
         } else if (strcmp(a, "--out") == 0 && next != NULL && next[0] != '\0') {
             o->out = next;
@@ -380,83 +351,15 @@ static int parse_options(int argc, char **argv, struct options *o)
     return 1;
 }
 
-static double now_seconds(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
-}
-
-/* Reports a pending Tracelist error; returns 1 when there was one. */
-static int report_error(const char *when)
-{
-    RTenum error = rtGetError();
-    if (error == RT_NO_ERROR)
-        return 0;
-    fprintf(stderr, "gears: Tracelist error 0x%04X %s\n", (unsigned)error, when);
-    return 1;
-}
-
-/* The name of frame `index` (1-based) of `count`: base itself for one frame,
- * else base with "_%04d" before its extension. */
-static void frame_name(char *out, size_t size, const char *base, int index, int count)
-{
-    const char *slash = strrchr(base, '/');
-    const char *dot = strrchr(slash != NULL ? slash : base, '.');
-    if (count == 1) {
-        snprintf(out, size, "%s", base);
-        return;
-    }
-    if (dot == NULL)
-        dot = base + strlen(base);
-    snprintf(out, size, "%.*s_%04d%s", (int)(dot - base), base, index, dot);
-}
-
-/*
- * The file name to write: `requested`, or gears.png by default; when this
- * build cannot write the extension (PNG without OpenImageIO), the same name
- * with .ppm, which rtu always writes, and a note on stderr.
- */
-static const char *output_name(const char *requested)
-{
-    static char name[4096];
-    const char *base = requested != NULL ? requested : "gears.png";
-    const char *slash = strrchr(base, '/');
-    const char *dot = strrchr(slash != NULL ? slash : base, '.');
-    const char *extension = dot != NULL ? dot + 1 : "";
-    if (rtuImageFormatSupported(extension) || strlen(base) + 5 > sizeof name)
-        return base;
-    snprintf(name, sizeof name, "%.*s.ppm", (int)(dot != NULL ? dot - base : (long)strlen(base)),
-             base);
-    if (requested != NULL && extension[0] == '\0')
-        fprintf(stderr, "gears: '%s' has no extension; writing %s\n", base, name);
-    else if (requested != NULL)
-        fprintf(stderr, "gears: this build cannot write '%s' files; writing %s instead\n",
-                extension, name);
-    return name;
-}
-
-/* Reads the framebuffer and writes it; returns 0 (with a message) on failure. */
-static int save_frame(const char *path, int width, int height, unsigned char *pixels)
-{
-    rtReadPixels(0, 0, width, height, RT_RGBA, RT_UNSIGNED_BYTE, pixels);
-    if (report_error("reading the frame"))
-        return 0;
-    if (!rtuSaveImage(path, width, height, RT_UNSIGNED_BYTE, pixels)) {
-        fprintf(stderr, "gears: %s\n", rtuImageError());
-        return 0;
-    }
-    return 1;
-}
-
 static int run_headless(const struct options *o)
 {
     const int frames = o->frames > 0 ? o->frames : 1;
-    const char *base = output_name(o->out);
-    const int tty = isatty(fileno(stderr));
+    char base_buffer[4096];
+    const char *base =
+        demo_output_name(base_buffer, sizeof base_buffer, o->out, "gears.png", "gears");
     unsigned char *pixels = malloc((size_t)o->width * (size_t)o->height * 4);
     double render_seconds = 0.0;
-    double start = now_seconds();
+    double start = demo_now();
     int k;
     if (pixels == NULL) {
         fprintf(stderr, "gears: out of memory\n");
@@ -464,26 +367,20 @@ static int run_headless(const struct options *o)
     }
     for (k = 1; k <= frames; k++) {
         char path[4096];
-        double t0 = now_seconds();
+        double t0 = demo_now();
         double elapsed;
         draw();
-        render_seconds += now_seconds() - t0;
-        if (report_error("rendering"))
+        render_seconds += demo_now() - t0;
+        if (demo_report_error("gears", "rendering"))
             break;
-        frame_name(path, sizeof path, base, k, frames);
-        if (!save_frame(path, o->width, o->height, pixels))
+        demo_frame_name(path, sizeof path, base, k, frames > 1);
+        if (!demo_save_frame("gears", path, o->width, o->height, pixels))
             break;
         angle += 2.0; /* idle() of the original: one step per frame */
 
-        elapsed = now_seconds() - start;
-        if (tty || k == frames || k % (frames / 10 > 0 ? frames / 10 : 1) == 0) {
-            fprintf(stderr, "%sgears: frame %d/%d  %.1f ms/frame  ETA %.1f s%s",
-                    tty ? "\r" : "", k, frames, 1e3 * render_seconds / k,
-                    elapsed / k * (frames - k), tty ? "   " : "\n");
-        }
+        elapsed = demo_now() - start;
+        demo_progress("gears", k, frames, elapsed, 1e3 * render_seconds / k, NULL);
     }
-    if (tty)
-        fputc('\n', stderr);
     free(pixels);
     if (k <= frames)
         return 1;
@@ -546,7 +443,7 @@ static int run_window(const struct options *o)
     int width = 0, height = 0;
     int frames = 0, title_frames = 0;
     int status = 0;
-    double last = now_seconds();
+    double last = demo_now();
     double title_time = last;
     if (!glfwInit())
         return -1;
@@ -582,25 +479,16 @@ static int run_window(const struct options *o)
         }
 
         draw();
-        rtReadPixels(0, 0, width, height, RT_RGBA, RT_UNSIGNED_BYTE, pixels);
-        if (report_error("rendering")) {
+        if (demo_report_error("gears", "rendering")) {
             status = 1;
             break;
         }
-        glViewport(0, 0, width, height);
-        glMatrixMode(GL_PROJECTION);
-        glLoadIdentity();
-        glMatrixMode(GL_MODELVIEW);
-        glLoadIdentity();
-        glRasterPos2f(-1.0f, -1.0f);
-        glDrawPixels(width, height, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
-        glfwSwapBuffers(window);
-        glfwPollEvents();
+        demo_present(window, width, height, pixels);
         frames++;
         title_frames++;
 
         /* glxgears: advance rotation for next frame, 70 degrees per second */
-        t = now_seconds();
+        t = demo_now();
         angle += 70.0 * (t - last);
         if (angle > 3600.0)
             angle -= 3600.0;
@@ -618,8 +506,10 @@ static int run_window(const struct options *o)
         }
     }
     /* --out in a window: keep the last frame shown. */
+    char name[4096];
     if (status == 0 && o->out != NULL && pixels != NULL &&
-        !rtuSaveImage(output_name(o->out), width, height, RT_UNSIGNED_BYTE, pixels)) {
+        !rtuSaveImage(demo_output_name(name, sizeof name, o->out, "gears.png", "gears"), width,
+                      height, RT_UNSIGNED_BYTE, pixels)) {
         fprintf(stderr, "gears: %s\n", rtuImageError());
         status = 1;
     }
@@ -652,7 +542,7 @@ int main(int argc, char **argv)
 
     init(o.eye_light);
     reshape(o.width, o.height);
-    if (report_error("setting up the scene")) {
+    if (demo_report_error("gears", "setting up the scene")) {
         rtDestroyContext(context);
         return 1;
     }

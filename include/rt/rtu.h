@@ -56,6 +56,89 @@ RTAPI RTboolean rtuImageFormatSupported(const char *extension);
 /* The reason the last rtuSaveImage/rtuLoadImage on this thread failed. */
 RTAPI const char *rtuImageError(void);
 
+
+/* ---- AFF scenes (BART; docs/aff.md) ----------------------------------- */
+
+/* An AFF scene loaded into the current context: its objects, textures and
+ * animation.  Opaque. */
+typedef struct rtu_aff_scene RTUaffscene;
+
+/* rtuGetAFFiv names. */
+#define RTU_AFF_FRAMES 0x9A00            /* frames of the 'a' statement */
+#define RTU_AFF_RESOLUTION 0x9A01        /* 2 ints: the 'v' resolution */
+#define RTU_AFF_OBJECTS 0x9A02           /* objects created by the loader */
+#define RTU_AFF_STATIC_OBJECTS 0x9A03    /* objects under no animated transform */
+#define RTU_AFF_ANIMATED_OBJECTS 0x9A04  /* rigid objects under an 'x' chain */
+#define RTU_AFF_UNSTRUCTURED_OBJECTS 0x9A05 /* objects of animated triangles */
+#define RTU_AFF_INSTANCES 0x9A06         /* instances per frame (all visible) */
+#define RTU_AFF_TRIANGLES 0x9A07         /* triangles as instantiated */
+#define RTU_AFF_ANIMATED_TRIANGLES 0x9A08 /* 'tpa' triangles */
+#define RTU_AFF_LIGHTS 0x9A09
+#define RTU_AFF_TEXTURES 0x9A0A
+#define RTU_AFF_MATERIALS 0x9A0B
+#define RTU_AFF_TRANSFORM_NODES 0x9A0C   /* instantiated 'x' blocks */
+
+/*
+ * Reads an AFF file (and everything it includes, resolved against its
+ * directory) and records it in the current context: one static object for
+ * everything under no animated transform, one object per animated
+ * transform ('x' block) that owns geometry, one object of the animated
+ * triangles ('tpa') of each such frame, and the textures (through
+ * rtuLoadImage).  Leaves the matrix mode, the modelview matrix and the
+ * texture binding and enable as it found them; changes the current
+ * material, normal and texture coordinate (rt.h cannot read them back), and
+ * reads (clears) the error flag first: any API error while recording fails
+ * the load.  Needs one free level on the modelview stack.  Returns NULL on
+ * failure with the
+ * reason ("file:line: reason") in rtuAFFError(); a failed load leaves no
+ * object or texture behind.  Needs a current context.
+ */
+RTAPI RTUaffscene *rtuLoadAFF(const char *path);
+
+/* Deletes the scene's objects and textures (in the current context, which
+ * must be the one it was loaded into) and frees it.  NULL is ignored. */
+RTAPI void rtuDeleteAFF(RTUaffscene *scene);
+
+/* The reason the last rtuLoadAFF on this thread failed ("" after a success). */
+RTAPI const char *rtuAFFError(void);
+
+RTAPI void rtuGetAFFiv(const RTUaffscene *scene, RTenum pname, RTint *params);
+
+/* Time of frame f (0-based) of the 'a' statement: t0 + (t1 - t0) f / (N - 1). */
+RTAPI RTdouble rtuAFFFrameTime(const RTUaffscene *scene, RTint frame);
+
+/* The camera at time t (animated by 'k camera', else the 'v' view): eye,
+ * unit view direction and unit up vector in world space. */
+RTAPI void rtuAFFCamera(const RTUaffscene *scene, RTdouble t, RTdouble eye[3], RTdouble dir[3],
+                        RTdouble up[3]);
+
+/* Multiplies the current matrix by the camera's projection and viewing
+ * transform at time t, like rtuPerspective followed by rtuLookAt (apply to
+ * the projection matrix so that world space is the space lights and
+ * instances are given in).  aspect <= 0 takes the scene's resolution. */
+RTAPI void rtuAFFView(const RTUaffscene *scene, RTdouble t, RTdouble aspect);
+
+/* Sets the clear colour, the global ambient light and lights RT_LIGHT0 ..
+ * RT_LIGHT0 + n - 1 (n <= RT_MAX_LIGHTS) at time t, positions through the
+ * current modelview matrix (identity: world space); disables other lights. */
+RTAPI void rtuAFFLights(const RTUaffscene *scene, RTdouble t);
+
+/* Describes the scene at time t into the frame being built: updates the
+ * animated triangles (rtUpdateVertices, only when t changed) and
+ * instantiates every visible object under the current modelview matrix
+ * times its transform at t. */
+RTAPI void rtuDrawAFF(RTUaffscene *scene, RTdouble t);
+
+/* Records the whole scene at time t as one new static object (instances
+ * and animated triangles baked into world space, same materials and
+ * textures) and returns its name, 0 on failure: the flattened reference
+ * of the two-level configuration. */
+RTAPI RTuint rtuBakeAFF(RTUaffscene *scene, RTdouble t);
+
+/* Names of the loader's objects of one kind (RT_STATIC, RT_AFFINE or
+ * RT_UNSTRUCTURED); writes at most max names, returns how many exist. */
+RTAPI RTsizei rtuAFFObjects(const RTUaffscene *scene, RTenum kind, RTsizei max, RTuint *names);
+
 #ifdef __cplusplus
 }
 #endif
