@@ -163,7 +163,8 @@ int main(int argc, char **argv)
                 return 2;
             }
             const char *env = getenv("TRACELIST_BART_DIR");
-            const char *bart = env && env[0] ? env : argv[++i];
+            const char *given = argv[++i];
+            const char *bart = env && env[0] ? env : given;
             struct stat st;
             if (stat(bart, &st) != 0 || !S_ISDIR(st.st_mode)) {
                 printf("replay: no BART folder at '%s', skipped\n", bart);
