@@ -36,6 +36,7 @@ struct bench_options {
     const char *out_dir;  /* --out DIR: results.md, results.csv, plots; NULL = stdout only */
     const char *mesh;     /* --mesh NAME: only this workload; NULL = all */
     const char *baseline; /* --baseline FILE: an earlier results.csv to compare with */
+    const char *bart_dir; /* --bart-dir DIR: the BART scenes; NULL = environment, build */
     double tolerance;     /* --tolerance PCT: a drop beyond it is flagged */
     int argc;
     char **argv;
@@ -202,6 +203,20 @@ int bench_accel_build(struct bench_accel *acc, const struct bench_mesh *mesh,
                       const struct bvh_build_params *params);
 void bench_accel_release(struct bench_accel *acc);
 
+/*
+ * The reference of the SAH-cost ratio that `rtbench dynamic` and `rtbench
+ * bart` report for an object's tree (paper 000 fig. 3's quality measure):
+ * builds mesh afresh with `builder` (otherwise bvh_build_params_default,
+ * the parameters a context's objects are built with) and returns the
+ * tree's SAH cost as RT_OBJECT_SAH_COST measures an object's tree,
+ * accel_sah_cost with BVH_C_TRAV and BVH_C_ISECT (lib/scene/update.c).
+ * With keep != NULL the build is left in *keep for tracing (release with
+ * bench_accel_release); with NULL it is freed.  Returns a negative value
+ * on allocation failure (*keep zeroed).
+ */
+double bench_fresh_sah(const struct bench_mesh *mesh, enum bvh_builder builder,
+                       struct bench_accel *keep);
+
 /* ------------------------------------------------------------ ray loops */
 
 /*
@@ -287,6 +302,18 @@ FILE *report_data_file(const char *name);
 /* Registers a gnuplot script (written to DIR/name.gp, run at the end to
  * make DIR/name.png). */
 void report_plot(const char *name, const char *script);
+/*
+ * Registers the two plots of an update-strategy comparison over an
+ * animation (`rtbench dynamic`, `rtbench bart`).  data_file holds one line
+ * per frame: the frame number, then for each strategy k its frame time in
+ * ms and its SAH-cost ratio (columns 2 + 2k and 3 + 2k).  Plots
+ * NAME_time.png, the frame times of all `count` strategies on a log scale,
+ * and NAME_sah.png, the SAH ratios of the strategies with has_sah[k] != 0;
+ * labels[k] names strategy k in the key.
+ */
+void report_strategy_plots(const char *name, const char *data_file, const char *time_title,
+                           const char *sah_title, int count, const char *const *labels,
+                           const int *has_sah);
 
 /* Counts a failed correctness check (answers that should agree do not);
  * rtbench then exits with status 3, which fails the smoke test. */
@@ -320,6 +347,12 @@ int bench_trace_section(const struct bench_options *opts, struct bench_mesh *mes
                         int mesh_count);
 int bench_dynamic_section(const struct bench_options *opts, struct bench_mesh *meshes,
                           int mesh_count);
+/* `rtbench bart` (bench_bart.c): the BART scenes, paper 004 sec. 5.
+ * bench_bart_find_data returns 0 when the three scenes are readable under
+ * the data folder opts selects (--bart-dir, $TRACELIST_BART_DIR, the build's
+ * RT_BART_DIR), else -1 with the reason in why (no path in it). */
+int bench_bart_find_data(const struct bench_options *opts, char *why, size_t why_size);
+int bench_bart_section(const struct bench_options *opts);
 #ifdef RT_HAVE_EMBREE
 int bench_embree_section(const struct bench_options *opts, struct bench_mesh *meshes,
                          int mesh_count);

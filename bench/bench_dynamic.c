@@ -508,16 +508,13 @@ static int reference_compute(struct dyn_setup *s, struct dyn_reference *ref)
     ref->hit = malloc((size_t)a->frames * n * sizeof(struct bench_hit));
     if (!ref->sah || !ref->hit)
         return -1;
-    struct bvh_build_params params;
-    bvh_build_params_default(&params);
-    params.builder = BVH_BUILDER_SWEEP_SAH;
     for (int f = 0; f < a->frames; f++) {
         bench_anim_frame(a, f);
         struct bench_mesh m = bench_anim_mesh(a);
         struct bench_accel acc;
-        if (bench_accel_build(&acc, &m, &params))
+        ref->sah[f] = bench_fresh_sah(&m, BVH_BUILDER_SWEEP_SAH, &acc);
+        if (ref->sah[f] < 0.0)
             return -1;
-        ref->sah[f] = accel_sah_cost(&acc.bvh, BVH_C_TRAV, BVH_C_ISECT);
         bench_kernel_closest(&acc, s->sample->rays, 0, n, &ref->hit[(size_t)f * n]);
         bench_accel_release(&acc);
     }
@@ -829,41 +826,19 @@ static int animation_section(const struct bench_options *opts, struct dyn_setup 
              100.0 * (ratio - 1.0), ratio <= 1.10 ? "yes" : "no");
 
     /* Plots: frame time (log) and SAH ratio over frames. */
-    char script[4096];
-    int len = snprintf(script, sizeof(script),
-                       "set terminal pngcairo noenhanced size 800,480 font ',10'\n"
-                       "set output 'dynamic_%s_time.png'\n"
-                       "set title '%s: update + render time per frame (%ux%u, 2 threads)'\n"
-                       "set xlabel 'frame'\nset ylabel 'ms per frame (log)'\n"
-                       "set logscale y\nset grid\nset key outside right\n",
-                       a->name, title, s->width, s->height);
-    for (int si = 0; si < STRATEGIES && len < (int)sizeof(script); si++)
-        len += snprintf(script + len, sizeof(script) - (size_t)len,
-                        "%s'%s' using 1:%d with lines lw 2 title '%s'", si ? ", \\\n     " : "plot ",
-                        file, 2 + 2 * si, strategies[si].label);
-    if (len < (int)sizeof(script))
-        snprintf(script + len, sizeof(script) - (size_t)len, "\n");
-    char name[64];
-    snprintf(name, sizeof(name), "dynamic_%s_time", a->name);
-    report_plot(name, script);
-    len = snprintf(script, sizeof(script),
-                   "set terminal pngcairo noenhanced size 800,480 font ',10'\n"
-                   "set output 'dynamic_%s_sah.png'\n"
-                   "set title '%s: SAH cost of the current tree / fresh sweep SAH build'\n"
-                   "set xlabel 'frame'\nset ylabel 'SAH cost ratio (log)'\n"
-                   "set logscale y\nset grid\nset key outside right\n",
-                   a->name, title);
-    for (int si = 0; si < STRATEGIES && len < (int)sizeof(script); si++) {
-        if (strategies[si].backend != BACKEND_OURS)
-            continue;
-        len += snprintf(script + len, sizeof(script) - (size_t)len,
-                        "%s'%s' using 1:%d with lines lw 2 title '%s'", si ? ", \\\n     " : "plot ",
-                        file, 3 + 2 * si, strategies[si].label);
+    const char *labels[STRATEGIES];
+    int has_sah[STRATEGIES];
+    for (int si = 0; si < STRATEGIES; si++) {
+        labels[si] = strategies[si].label;
+        has_sah[si] = strategies[si].backend == BACKEND_OURS;
     }
-    if (len < (int)sizeof(script))
-        snprintf(script + len, sizeof(script) - (size_t)len, "\n");
-    snprintf(name, sizeof(name), "dynamic_%s_sah", a->name);
-    report_plot(name, script);
+    char name[64], time_title[256], sah_title[256];
+    snprintf(name, sizeof(name), "dynamic_%s", a->name);
+    snprintf(time_title, sizeof(time_title),
+             "%s: update + render time per frame (%ux%u, 2 threads)", title, s->width, s->height);
+    snprintf(sah_title, sizeof(sah_title),
+             "%s: SAH cost of the current tree / fresh sweep SAH build", title);
+    report_strategy_plots(name, file, time_title, sah_title, STRATEGIES, labels, has_sah);
     rc = 0;
 out:
     free(buf);

@@ -45,6 +45,22 @@ void bench_accel_release(struct bench_accel *acc)
     memset(acc, 0, sizeof(*acc));
 }
 
+double bench_fresh_sah(const struct bench_mesh *mesh, enum bvh_builder builder,
+                       struct bench_accel *keep)
+{
+    struct bvh_build_params params;
+    struct bench_accel local;
+    struct bench_accel *acc = keep ? keep : &local;
+    bvh_build_params_default(&params);
+    params.builder = builder;
+    if (bench_accel_build(acc, mesh, &params))
+        return -1.0;
+    double sah = accel_sah_cost(&acc->bvh, BVH_C_TRAV, BVH_C_ISECT);
+    if (!keep)
+        bench_accel_release(acc);
+    return sah;
+}
+
 void bench_kernel_closest(void *ctx, const RTray *rays, uint32_t begin, uint32_t end,
                           struct bench_hit *hits)
 {

@@ -22,7 +22,7 @@
 
 #include "bench.h"
 
-#define MAX_PLOTS 16
+#define MAX_PLOTS 32
 #define PATH_SIZE 4096
 
 struct metric {
@@ -187,6 +187,54 @@ void report_plot(const char *name, const char *script)
     fputs(script, f);
     fclose(f);
     snprintf(rep.plot_names[rep.plot_count++], sizeof(rep.plot_names[0]), "%s", name);
+}
+
+/* Appends with snprintf semantics; *len never passes size - 1. */
+static void append(char *buf, size_t size, int *len, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 4, 5)))
+#endif
+    ;
+
+static void append(char *buf, size_t size, int *len, const char *fmt, ...)
+{
+    if ((size_t)*len + 1 >= size)
+        return;
+    va_list ap;
+    va_start(ap, fmt);
+    int n = vsnprintf(buf + *len, size - (size_t)*len, fmt, ap);
+    va_end(ap);
+    if (n > 0)
+        *len = (size_t)*len + (size_t)n < size ? *len + n : (int)size - 1;
+}
+
+void report_strategy_plots(const char *name, const char *data_file, const char *time_title,
+                           const char *sah_title, int count, const char *const *labels,
+                           const int *has_sah)
+{
+    char script[4096], plot[64];
+    for (int sah = 0; sah < 2; sah++) {
+        const char *kind = sah ? "sah" : "time";
+        int len = 0, first = 1;
+        append(script, sizeof(script), &len,
+               "set terminal pngcairo noenhanced size 800,480 font ',10'\n"
+               "set output '%s_%s.png'\n"
+               "set title '%s'\n"
+               "set xlabel 'frame'\nset ylabel '%s'\n"
+               "set logscale y\nset grid\nset key outside right\n",
+               name, kind, sah ? sah_title : time_title,
+               sah ? "SAH cost ratio (log)" : "ms per frame (log)");
+        for (int k = 0; k < count; k++) {
+            if (sah && !has_sah[k])
+                continue;
+            append(script, sizeof(script), &len, "%s'%s' using 1:%d with lines lw 2 title '%s'",
+                   first ? "plot " : ", \\\n     ", data_file, (sah ? 3 : 2) + 2 * k, labels[k]);
+            first = 0;
+        }
+        append(script, sizeof(script), &len, "\n");
+        snprintf(plot, sizeof(plot), "%s_%s", name, kind);
+        report_plot(plot, script);
+    }
 }
 
 int report_open(const struct bench_options *opts)

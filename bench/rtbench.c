@@ -6,13 +6,17 @@
  *   rtbench embree  the same work through Embree 3 (bench_embree.c; needs Embree)
  *   rtbench dynamic dynamic scenes: update strategies over animations, soup
  *                   rebuild, top level, parallel build (bench_dynamic.c)
- *   rtbench all     all of the above (default)
+ *   rtbench bart    the BART scenes against paper 004 sec. 5 (bench_bart.c;
+ *                   needs the BART data, fails without it)
+ *   rtbench all     all of the above (default); bart only when its data is
+ *                   found, otherwise the report says it was skipped and why
  *
  * Options: --quick (toy sizes, for the smoke test), --runs N (median of N,
  * default 5), --out DIR (results.md, results.csv, PNG plots), --mesh NAME
  * (bumpy, gears or soup only), --baseline FILE (an earlier results.csv;
  * metrics that got worse by more than --tolerance PCT, default 10, are
- * flagged and the exit status is 2).
+ * flagged and the exit status is 2), --bart-dir DIR (the BART scenes;
+ * else $TRACELIST_BART_DIR, else the build's RT_BART_DIR).
  *
  * Exit status: 0 done, 1 usage error or a section failed, 2 regressions
  * flagged against the baseline, 3 a correctness check failed (two paths
@@ -29,26 +33,40 @@
 #define DEFAULT_TOLERANCE 10.0
 #define MAX_RUNS 101
 
-enum section { SECTION_BUILD = 1, SECTION_TRACE = 2, SECTION_EMBREE = 4, SECTION_DYNAMIC = 8 };
-#define SECTION_ALL (SECTION_BUILD | SECTION_TRACE | SECTION_EMBREE | SECTION_DYNAMIC)
+enum section {
+    SECTION_BUILD = 1,
+    SECTION_TRACE = 2,
+    SECTION_EMBREE = 4,
+    SECTION_DYNAMIC = 8,
+    SECTION_BART = 16
+};
+#define SECTION_ALL                                                                                \
+    (SECTION_BUILD | SECTION_TRACE | SECTION_EMBREE | SECTION_DYNAMIC | SECTION_BART)
+/* The sections that run on the generated meshes. */
+#define SECTION_MESHES (SECTION_BUILD | SECTION_TRACE | SECTION_EMBREE | SECTION_DYNAMIC)
 
 static void usage(FILE *f)
 {
     fprintf(f,
-            "usage: rtbench [build|trace|embree|dynamic|all] [--quick] [--runs N] [--out DIR]\n"
-            "               [--mesh bumpy|gears|soup] [--baseline FILE] [--tolerance PCT]\n"
+            "usage: rtbench [build|trace|embree|dynamic|bart|all] [--quick] [--runs N]\n"
+            "               [--out DIR] [--mesh bumpy|gears|soup] [--baseline FILE]\n"
+            "               [--tolerance PCT] [--bart-dir DIR]\n"
             "\n"
             "  build      BVH quality against build time per builder and bin count\n"
             "  trace      Mrays/s, trace_closest/trace_any directly and through rtTraceRays\n"
             "  embree     the same meshes and rays through Embree 3%s\n"
             "  dynamic    dynamic scenes: update strategies over animations (error\n"
             "             against time), soup rebuild, top level, parallel build\n"
-            "  all        everything (default)\n"
+            "  bart       the BART scenes (kitchen, robots, museum) against paper 004\n"
+            "             sec. 5: fps, top level, updates, strategies, two-level overhead\n"
+            "  all        everything (default); bart only when its data is found\n"
             "  --quick    toy sizes and 1 run unless --runs is given: a smoke test\n"
             "  --runs N   timings are the median of N runs (default %d)\n"
             "  --out DIR  write results.md, results.csv and PNG plots (gnuplot) to DIR\n"
             "  --baseline FILE  compare with an earlier results.csv; flag drops beyond\n"
-            "             --tolerance PCT (default %.0f) and exit with status 2\n",
+            "             --tolerance PCT (default %.0f) and exit with status 2\n"
+            "  --bart-dir DIR  the BART folder (kitchen/, robots/, museum/); default\n"
+            "             $TRACELIST_BART_DIR, else the build's RT_BART_DIR\n",
 #ifdef RT_HAVE_EMBREE
             "",
 #else
@@ -72,6 +90,7 @@ int main(int argc, char **argv)
     struct bench_options opts;
     int sections = 0;
     int runs_given = 0;
+    int bart_required = 0; /* `bart` named: no data is an error, not a skip */
     memset(&opts, 0, sizeof(opts));
     opts.runs = DEFAULT_RUNS;
     opts.tolerance = DEFAULT_TOLERANCE;
@@ -89,6 +108,9 @@ int main(int argc, char **argv)
             sections |= SECTION_EMBREE;
         } else if (!strcmp(a, "dynamic")) {
             sections |= SECTION_DYNAMIC;
+        } else if (!strcmp(a, "bart")) {
+            sections |= SECTION_BART;
+            bart_required = 1;
         } else if (!strcmp(a, "all")) {
             sections |= SECTION_ALL;
         } else if (!strcmp(a, "--quick")) {
@@ -105,6 +127,9 @@ int main(int argc, char **argv)
             i++;
         } else if (!strcmp(a, "--mesh") && value) {
             opts.mesh = value;
+            i++;
+        } else if (!strcmp(a, "--bart-dir") && value) {
+            opts.bart_dir = value;
             i++;
         } else if (!strcmp(a, "--baseline") && value) {
             opts.baseline = value;
@@ -131,29 +156,41 @@ int main(int argc, char **argv)
     if (opts.quick && !runs_given)
         opts.runs = 1;
 
-    struct bench_mesh meshes[BENCH_MESH_COUNT];
-    int mesh_count = 0;
-    for (int k = 0; k < BENCH_MESH_COUNT; k++) {
-        struct bench_mesh *m = &meshes[mesh_count];
-        if (bench_mesh_generate(m, (enum bench_mesh_kind)k, opts.quick)) {
-            fprintf(stderr, "rtbench: out of memory generating the workloads\n");
+    if (bart_required) {
+        char why[512];
+        if (bench_bart_find_data(&opts, why, sizeof(why))) {
+            fprintf(stderr, "rtbench: bart: %s\n", why);
             return 1;
         }
-        if (opts.mesh && strcmp(opts.mesh, m->name) != 0) {
-            bench_mesh_release(m);
-            continue;
-        }
-        mesh_count++;
     }
-    if (mesh_count == 0) {
-        fprintf(stderr, "rtbench: no workload named '%s' (bumpy, gears, soup)\n", opts.mesh);
-        return 1;
+
+    struct bench_mesh meshes[BENCH_MESH_COUNT];
+    int mesh_count = 0;
+    if (sections & SECTION_MESHES) {
+        for (int k = 0; k < BENCH_MESH_COUNT; k++) {
+            struct bench_mesh *m = &meshes[mesh_count];
+            if (bench_mesh_generate(m, (enum bench_mesh_kind)k, opts.quick)) {
+                fprintf(stderr, "rtbench: out of memory generating the workloads\n");
+                return 1;
+            }
+            if (opts.mesh && strcmp(opts.mesh, m->name) != 0) {
+                bench_mesh_release(m);
+                continue;
+            }
+            mesh_count++;
+        }
+        if (mesh_count == 0) {
+            fprintf(stderr, "rtbench: no workload named '%s' (bumpy, gears, soup)\n", opts.mesh);
+            return 1;
+        }
     }
 
     if (report_open(&opts))
         return 1;
-    report_printf("\n## Workloads\n\n");
-    report_table_header("mesh|triangles|vertices|bounds (min .. max)|what");
+    if (mesh_count > 0) {
+        report_printf("\n## Workloads\n\n");
+        report_table_header("mesh|triangles|vertices|bounds (min .. max)|what");
+    }
     for (int m = 0; m < mesh_count; m++) {
         const struct bench_mesh *b = &meshes[m];
         report_row("%s|%u|%u|(%.2f, %.2f, %.2f) .. (%.2f, %.2f, %.2f)|%s", b->name, b->tri_count,
@@ -177,6 +214,8 @@ int main(int argc, char **argv)
     }
     if (sections & SECTION_DYNAMIC)
         failed |= bench_dynamic_section(&opts, meshes, mesh_count) != 0;
+    if (sections & SECTION_BART)
+        failed |= bench_bart_section(&opts) != 0;
     int flagged = report_close();
     for (int m = 0; m < mesh_count; m++)
         bench_mesh_release(&meshes[m]);
