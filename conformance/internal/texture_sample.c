@@ -477,7 +477,7 @@ static void table(void)
         struct scene_texture *tex = scene_textures_lookup(&tab, i * 16u);
         EXPECT((tex != NULL) == (i % 2 == 0), "lookup %u after removals", i * 16u);
     }
-    EXPECT(tab.used == 1000, "used %u", tab.used);
+    EXPECT(tab.table.used == 1000, "used %u", tab.table.used);
     /* Generated names avoid those in use and are distinct. */
     uint32_t names[100];
     EXPECT(scene_textures_generate(&tab, 100, names) == 0, "generate");
@@ -490,14 +490,14 @@ static void table(void)
                names[i]);
     }
     /* A failed generation reserves and writes nothing. */
-    uint32_t before = tab.used, out[3] = {7, 7, 7};
+    uint32_t before = tab.table.used, out[3] = {7, 7, 7};
     rt_alloc_fail_after(0);
     int r = scene_textures_generate(&tab, 3, out);
     rt_alloc_fail_reset();
-    EXPECT(r == -1 && tab.used == before && out[0] == 7 && out[1] == 7 && out[2] == 7,
+    EXPECT(r == -1 && tab.table.used == before && out[0] == 7 && out[1] == 7 && out[2] == 7,
            "failed generate changed something");
     scene_textures_release(&tab);
-    EXPECT(tab.capacity == 0 && tab.used == 0, "release");
+    EXPECT(tab.table.capacity == 0 && tab.table.used == 0, "release");
 }
 
 int main(void)

@@ -187,9 +187,9 @@ void rtDestroyContext(RTcontext ctx)
         current_context = NULL;
     rt_pool_destroy(ctx->pool);
     /* Jobs first (their objects go next), then the build thread. */
-    for (uint32_t i = 0; i < ctx->objects.capacity; i++)
-        if (ctx->objects.slots[i])
-            scene_async_cancel(&ctx->async, ctx->objects.slots[i]);
+    for (uint32_t i = 0; i < ctx->objects.table.capacity; i++)
+        if (ctx->objects.table.slots[i].name)
+            scene_async_cancel(&ctx->async, ctx->objects.table.slots[i].item);
     scene_async_release(&ctx->async);
     scene_mesh_release(&ctx->recording.mesh);
     scene_frame_release(&ctx->frame);

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "base/alloc.h"
+#include "base/name_table.h"
 #include "base/timer.h"
 #include "scene/update.h"
 
@@ -15,8 +16,8 @@
 
 void scene_objects_init(struct scene_objects *table)
 {
-    memset(table, 0, sizeof(*table));
-    table->next_name = 1;
+    name_table_init(&table->table, OBJECT_TABLE_MIN_CAPACITY);
+    table->defined = 0;
 }
 
 void scene_accel_release(struct scene_accel *accel)
@@ -30,8 +31,9 @@ void scene_accel_release(struct scene_accel *accel)
     rt_free(accel);
 }
 
-static void object_free(struct scene_object *object)
+static void object_free(void *item)
 {
+    struct scene_object *object = item;
     scene_mesh_release(&object->mesh);
     scene_accel_release(object->accel);
     pthread_mutex_destroy(&object->build_lock);
@@ -40,64 +42,19 @@ static void object_free(struct scene_object *object)
 
 void scene_objects_release(struct scene_objects *table)
 {
-    for (uint32_t i = 0; i < table->capacity; i++)
-        if (table->slots[i])
-            object_free(table->slots[i]);
-    rt_free(table->slots);
+    for (uint32_t i = 0; i < table->table.capacity; i++)
+        if (table->table.slots[i].name)
+            object_free(table->table.slots[i].item);
+    name_table_release(&table->table);
     scene_objects_init(table);
-}
-
-/* Fibonacci hashing of the name into a power-of-two table. */
-static uint32_t slot_of(const struct scene_objects *table, uint32_t name)
-{
-    return (uint32_t)((name * 2654435769u) & (table->capacity - 1));
 }
 
 struct scene_object *scene_objects_lookup(const struct scene_objects *table, uint32_t name)
 {
-    if (!table->capacity || name == 0)
-        return NULL;
-    for (uint32_t i = slot_of(table, name);; i = (i + 1) & (table->capacity - 1)) {
-        struct scene_object *o = table->slots[i];
-        if (!o)
-            return NULL;
-        if (o->name == name)
-            return o;
-    }
+    return name_table_lookup(&table->table, name);
 }
 
-static void insert_slot(struct scene_object **slots, uint32_t capacity, struct scene_object *o)
-{
-    uint32_t i = (uint32_t)((o->name * 2654435769u) & (capacity - 1));
-    while (slots[i])
-        i = (i + 1) & (capacity - 1);
-    slots[i] = o;
-}
-
-/* Keeps the load factor under 1/2; -1 on allocation failure. */
-static int ensure_room(struct scene_objects *table, uint32_t extra)
-{
-    uint64_t needed = ((uint64_t)table->used + extra) * 2;
-    if (needed <= table->capacity)
-        return 0;
-    uint64_t cap = table->capacity ? table->capacity : OBJECT_TABLE_MIN_CAPACITY;
-    while (cap < needed)
-        cap *= 2;
-    if (cap > (1u << 31))
-        return -1;
-    struct scene_object **slots = rt_calloc(cap, sizeof(*slots));
-    if (!slots)
-        return -1;
-    for (uint32_t i = 0; i < table->capacity; i++)
-        if (table->slots[i])
-            insert_slot(slots, (uint32_t)cap, table->slots[i]);
-    rt_free(table->slots);
-    table->slots = slots;
-    table->capacity = (uint32_t)cap;
-    return 0;
-}
-
-static struct scene_object *object_new(uint32_t name)
+static void *object_new(uint32_t name)
 {
     struct scene_object *o = rt_calloc(1, sizeof(*o));
     if (!o)
@@ -116,76 +73,22 @@ static struct scene_object *object_new(uint32_t name)
 
 struct scene_object *scene_objects_get_or_create(struct scene_objects *table, uint32_t name)
 {
-    struct scene_object *o = scene_objects_lookup(table, name);
-    if (o)
-        return o;
-    if (ensure_room(table, 1))
-        return NULL;
-    o = object_new(name);
-    if (!o)
-        return NULL;
-    insert_slot(table->slots, table->capacity, o);
-    table->used++;
-    return o;
+    return name_table_get_or_create(&table->table, name, object_new);
 }
 
 int scene_objects_generate(struct scene_objects *table, uint32_t n, uint32_t *names)
 {
-    if (n == 0)
-        return 0;
-    if (n > (1u << 30) || ensure_room(table, n))
-        return -1;
-    struct scene_object **fresh = rt_calloc(n, sizeof(*fresh));
-    if (!fresh)
-        return -1;
-    uint32_t candidate = table->next_name;
-    for (uint32_t i = 0; i < n; i++) {
-        /* Skip 0 and names already in use; the table is at most half full
-         * of 2^32 - 1 names, so this terminates. */
-        while (candidate == 0 || scene_objects_lookup(table, candidate))
-            candidate++;
-        /* Names within this batch are distinct because candidate only
-         * grows (wrap-around would need 2^32 names). */
-        fresh[i] = object_new(candidate);
-        if (!fresh[i]) {
-            for (uint32_t j = 0; j < i; j++)
-                object_free(fresh[j]);
-            rt_free(fresh);
-            return -1;
-        }
-        names[i] = candidate++;
-    }
-    for (uint32_t i = 0; i < n; i++) {
-        insert_slot(table->slots, table->capacity, fresh[i]);
-        table->used++;
-    }
-    table->next_name = candidate;
-    rt_free(fresh);
-    return 0;
+    return name_table_generate(&table->table, n, names, object_new, object_free);
 }
 
 void scene_objects_remove(struct scene_objects *table, uint32_t name)
 {
-    if (!table->capacity || name == 0)
-        return;
-    uint32_t mask = table->capacity - 1;
-    uint32_t i = slot_of(table, name);
-    while (table->slots[i] && table->slots[i]->name != name)
-        i = (i + 1) & mask;
-    struct scene_object *o = table->slots[i];
+    struct scene_object *o = name_table_remove(&table->table, name);
     if (!o)
         return;
     if (o->defined)
         table->defined--;
-    table->used--;
-    table->slots[i] = NULL;
     object_free(o);
-    /* Backward-shift deletion keeps linear probing chains intact. */
-    for (uint32_t j = (i + 1) & mask; table->slots[j]; j = (j + 1) & mask) {
-        struct scene_object *moved = table->slots[j];
-        table->slots[j] = NULL;
-        insert_slot(table->slots, table->capacity, moved);
-    }
 }
 
 static int same_topology(const struct scene_mesh *a, const struct scene_mesh *b)

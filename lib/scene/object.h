@@ -19,6 +19,7 @@
 
 #include "accel/bvh.h"
 #include "accel/restructure.h"
+#include "base/name_table.h"
 #include "scene/mesh.h"
 
 struct scene_accel {
@@ -70,11 +71,8 @@ struct scene_object {
 struct scene_async_job;
 
 struct scene_objects {
-    struct scene_object **slots; /* open addressing on name, NULL = free */
-    uint32_t capacity;           /* power of two */
-    uint32_t used;               /* occupied slots (defined or reserved) */
-    uint32_t defined;            /* objects with a definition */
-    uint32_t next_name;          /* rtGenObjects search start */
+    struct name_table table; /* name -> struct scene_object (defined or reserved) */
+    uint32_t defined;        /* objects with a definition */
 };
 
 void scene_objects_init(struct scene_objects *table);
@@ -90,7 +88,7 @@ struct scene_object *scene_objects_lookup(const struct scene_objects *table, uin
 struct scene_object *scene_objects_get_or_create(struct scene_objects *table, uint32_t name);
 
 /* Writes n unused names, reserving each.  Returns 0, or -1 on allocation
- * failure having reserved nothing. */
+ * failure having reserved and written nothing. */
 int scene_objects_generate(struct scene_objects *table, uint32_t n, uint32_t *names);
 
 /* Removes and frees the entry for name; no-op if absent. */

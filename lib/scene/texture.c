@@ -2,9 +2,7 @@
  * texture.c - the texture table, mip chain generation and the texture
  * sampler (see texture.h).
  *
- * The table is open addressing with linear probing on the name, the same
- * scheme as the object table (object.c): Fibonacci hashing, load factor
- * under 1/2, backward-shift deletion.
+ * The table is the name table shared with objects (base/name_table.h).
  */
 #include "scene/texture.h"
 
@@ -12,6 +10,7 @@
 #include <string.h>
 
 #include "base/alloc.h"
+#include "base/name_table.h"
 
 /* First table size: a scene has far fewer textures than objects, so
  * smaller than the object table's 64 (object.c). */
@@ -19,78 +18,32 @@
 
 void scene_textures_init(struct scene_textures *table)
 {
-    memset(table, 0, sizeof(*table));
-    table->next_name = 1;
+    name_table_init(&table->table, TEXTURE_TABLE_MIN_CAPACITY);
 }
 
-static void texture_free(struct scene_texture *tex)
+static void texture_free(void *item)
 {
+    struct scene_texture *tex = item;
     rt_free(tex->texels);
     rt_free(tex);
 }
 
 void scene_textures_release(struct scene_textures *table)
 {
-    for (uint32_t i = 0; i < table->capacity; i++)
-        if (table->slots[i])
-            texture_free(table->slots[i]);
-    rt_free(table->slots);
-    scene_textures_init(table);
-}
-
-static uint32_t slot_of(uint32_t capacity, uint32_t name)
-{
-    return (uint32_t)((name * 2654435769u) & (capacity - 1));
+    for (uint32_t i = 0; i < table->table.capacity; i++)
+        if (table->table.slots[i].name)
+            texture_free(table->table.slots[i].item);
+    name_table_release(&table->table);
 }
 
 struct scene_texture *scene_textures_lookup(const struct scene_textures *table, uint32_t name)
 {
-    if (!table->capacity || name == 0)
-        return NULL;
-    for (uint32_t i = slot_of(table->capacity, name);; i = (i + 1) & (table->capacity - 1)) {
-        struct scene_texture *tex = table->slots[i];
-        if (!tex)
-            return NULL;
-        if (tex->name == name)
-            return tex;
-    }
-}
-
-static void insert_slot(struct scene_texture **slots, uint32_t capacity,
-                        struct scene_texture *tex)
-{
-    uint32_t i = slot_of(capacity, tex->name);
-    while (slots[i])
-        i = (i + 1) & (capacity - 1);
-    slots[i] = tex;
-}
-
-/* Keeps the load factor under 1/2; -1 on allocation failure (unchanged). */
-static int ensure_room(struct scene_textures *table, uint32_t extra)
-{
-    uint64_t needed = ((uint64_t)table->used + extra) * 2;
-    if (needed <= table->capacity)
-        return 0;
-    uint64_t cap = table->capacity ? table->capacity : TEXTURE_TABLE_MIN_CAPACITY;
-    while (cap < needed)
-        cap *= 2;
-    if (cap > (1u << 31))
-        return -1;
-    struct scene_texture **slots = rt_calloc(cap, sizeof(*slots));
-    if (!slots)
-        return -1;
-    for (uint32_t i = 0; i < table->capacity; i++)
-        if (table->slots[i])
-            insert_slot(slots, (uint32_t)cap, table->slots[i]);
-    rt_free(table->slots);
-    table->slots = slots;
-    table->capacity = (uint32_t)cap;
-    return 0;
+    return name_table_lookup(&table->table, name);
 }
 
 /* A texture without an image and with the default parameters
  * (docs/textures.md: LINEAR for both filters, REPEAT in s and t). */
-static struct scene_texture *texture_new(uint32_t name)
+static void *texture_new(uint32_t name)
 {
     struct scene_texture *tex = rt_calloc(1, sizeof(*tex));
     if (!tex)
@@ -105,73 +58,19 @@ static struct scene_texture *texture_new(uint32_t name)
 
 struct scene_texture *scene_textures_get_or_create(struct scene_textures *table, uint32_t name)
 {
-    struct scene_texture *tex = scene_textures_lookup(table, name);
-    if (tex || name == 0)
-        return tex;
-    if (ensure_room(table, 1))
-        return NULL;
-    tex = texture_new(name);
-    if (!tex)
-        return NULL;
-    insert_slot(table->slots, table->capacity, tex);
-    table->used++;
-    return tex;
+    return name_table_get_or_create(&table->table, name, texture_new);
 }
 
 int scene_textures_generate(struct scene_textures *table, uint32_t n, uint32_t *names)
 {
-    if (n == 0)
-        return 0;
-    if (n > (1u << 30) || ensure_room(table, n))
-        return -1;
-    struct scene_texture **fresh = rt_calloc(n, sizeof(*fresh));
-    if (!fresh)
-        return -1;
-    uint32_t candidate = table->next_name;
-    for (uint32_t i = 0; i < n; i++) {
-        /* Skip 0 and names in use; the table is at most half full of
-         * 2^32 - 1 names, so this terminates. */
-        while (candidate == 0 || scene_textures_lookup(table, candidate))
-            candidate++;
-        fresh[i] = texture_new(candidate++);
-        if (!fresh[i]) {
-            for (uint32_t j = 0; j < i; j++)
-                texture_free(fresh[j]);
-            rt_free(fresh);
-            return -1;
-        }
-    }
-    /* Names go out only once every entry exists: a failure writes none. */
-    for (uint32_t i = 0; i < n; i++) {
-        insert_slot(table->slots, table->capacity, fresh[i]);
-        table->used++;
-        names[i] = fresh[i]->name;
-    }
-    table->next_name = candidate;
-    rt_free(fresh);
-    return 0;
+    return name_table_generate(&table->table, n, names, texture_new, texture_free);
 }
 
 void scene_textures_remove(struct scene_textures *table, uint32_t name)
 {
-    if (!table->capacity || name == 0)
-        return;
-    uint32_t mask = table->capacity - 1;
-    uint32_t i = slot_of(table->capacity, name);
-    while (table->slots[i] && table->slots[i]->name != name)
-        i = (i + 1) & mask;
-    struct scene_texture *tex = table->slots[i];
-    if (!tex)
-        return;
-    table->used--;
-    table->slots[i] = NULL;
-    texture_free(tex);
-    /* Backward-shift deletion keeps linear probing chains intact. */
-    for (uint32_t j = (i + 1) & mask; table->slots[j]; j = (j + 1) & mask) {
-        struct scene_texture *moved = table->slots[j];
-        table->slots[j] = NULL;
-        insert_slot(table->slots, table->capacity, moved);
-    }
+    struct scene_texture *tex = name_table_remove(&table->table, name);
+    if (tex)
+        texture_free(tex);
 }
 
 /* ---- mip chain ----------------------------------------------------------- */

@@ -26,6 +26,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "base/name_table.h"
+
 /* Largest width or height, RT_MAX_TEXTURE_SIZE: OpenGL 4.6's minimum for
  * MAX_TEXTURE_SIZE, and the largest viewport (context.h). */
 #define SCENE_TEXTURE_MAX_SIZE 16384
@@ -68,10 +70,7 @@ struct scene_texture {
 };
 
 struct scene_textures {
-    struct scene_texture **slots; /* open addressing on name, NULL = free */
-    uint32_t capacity;            /* power of two, or 0 */
-    uint32_t used;                /* occupied slots (created or reserved) */
-    uint32_t next_name;           /* scene_textures_generate search start */
+    struct name_table table; /* name -> struct scene_texture (created or reserved) */
 };
 
 void scene_textures_init(struct scene_textures *table);
