@@ -23,7 +23,7 @@
 #include <string.h>
 
 #include "accel/build_internal.h"
-#include "accel/bvh.h"
+#include "trace/bvh_layout.h"
 #include "accel_testgeo.h"
 #include "base/alloc.h"
 #include "base/timer.h"

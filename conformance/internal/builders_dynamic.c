@@ -26,7 +26,7 @@ static int failures;
 #include "accel/build_internal.h"
 #include "accel/build_more.h"
 #include "accel/build_parallel.h"
-#include "accel/bvh.h"
+#include "trace/bvh_layout.h"
 #include "accel_testgeo.h"
 #include "base/alloc.h"
 #include "base/timer.h"

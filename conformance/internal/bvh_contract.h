@@ -21,7 +21,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "accel/bvh.h"
+#include "trace/bvh_layout.h"
 #include "accel_testgeo.h"
 #include "trace/trace.h"
 

@@ -42,7 +42,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "accel/bvh.h"
+#include "trace/bvh_layout.h"
 #include "accel/restructure.h"
 #include "accel_testgeo.h"
 #include "base/alloc.h"

@@ -21,7 +21,7 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "accel/bvh.h"
+#include "trace/bvh_layout.h"
 
 /* Smallest k with 2^k >= n: the depth an object-median subtree over n
  * primitives needs to reach single-primitive leaves.  0 for n <= 1. */

@@ -17,7 +17,7 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "accel/bvh.h"
+#include "trace/bvh_layout.h"
 
 /*
  * The leaf-growth factor we recommend for rebuild-every-frame objects

@@ -19,7 +19,7 @@
 #include <stdint.h>
 
 #include "accel/build_more.h"
-#include "accel/bvh.h"
+#include "trace/bvh_layout.h"
 #include "base/pool.h"
 
 /* Stage 1 (paper 000 sec. 5, "Coarse Scene Partitioning"). */

@@ -8,7 +8,7 @@
 
 #include <stdint.h>
 
-#include "accel/bvh.h"
+#include "trace/bvh_layout.h"
 
 /*
  * Builds a BVH over instance boxes with the split rule of paper 004 sec.

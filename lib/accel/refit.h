@@ -33,7 +33,7 @@
 
 #include <stdint.h>
 
-#include "accel/bvh.h"
+#include "trace/bvh_layout.h"
 #include "base/pool.h"
 
 /*

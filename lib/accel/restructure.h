@@ -37,7 +37,7 @@
 
 #include <stdint.h>
 
-#include "accel/bvh.h"
+#include "trace/bvh_layout.h"
 #include "base/aabb.h"
 
 /* A node pair of the pair-queue and an entry of the pair-heap; defined

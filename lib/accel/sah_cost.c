@@ -3,7 +3,7 @@
  * the quality measure that paper 000 table 1 and rtbench compare builders
  * by.  See bvh.h for the formula.
  */
-#include "accel/bvh.h"
+#include "trace/bvh_layout.h"
 
 static double node_half_area(const struct bvh_node *n)
 {

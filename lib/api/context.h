@@ -13,7 +13,7 @@
 #include <rt/rt.h>
 #include <stdint.h>
 
-#include "accel/bvh.h"
+#include "trace/bvh_layout.h"
 #include "render/render.h"
 #include "scene/async_build.h"
 #include "scene/frame.h"

@@ -17,7 +17,7 @@
 #include <pthread.h>
 #include <stdint.h>
 
-#include "accel/bvh.h"
+#include "trace/bvh_layout.h"
 #include "accel/restructure.h"
 #include "base/name_table.h"
 #include "scene/mesh.h"

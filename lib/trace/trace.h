@@ -12,7 +12,7 @@
 
 #include <stdint.h>
 
-#include "accel/bvh.h"
+#include "trace/bvh_layout.h"
 
 /* A ray prepared for traversal.  Fill with trace_ray_init. */
 struct trace_ray {
