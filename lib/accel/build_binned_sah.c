@@ -136,18 +136,6 @@ static inline void bins_of(const struct binning *bn, vec4 centroid, int32_t bin[
 }
 
 
-static void store_box(struct aabb *box, vec4 lo, vec4 hi)
-{
-    float l[4];
-    float h[4];
-    vec4_store(l, lo);
-    vec4_store(h, hi);
-    for (int k = 0; k < 3; k++) {
-        box->min[k] = l[k];
-        box->max[k] = h[k];
-    }
-}
-
 /* Box and centroid bounds of refs[begin, end). */
 static void range_bounds(const struct build_ref *refs, uint32_t begin, uint32_t end,
                          struct aabb *box, struct cbounds *cb)
@@ -163,7 +151,7 @@ static void range_bounds(const struct build_ref *refs, uint32_t begin, uint32_t 
         clo = vec4_min(clo, c);
         chi = vec4_max(chi, c);
     }
-    store_box(box, lo, hi);
+    build_store_box(box, lo, hi);
     vec4_store(cb->lo, clo);
     vec4_store(cb->hi, chi);
 }
@@ -262,14 +250,14 @@ static int find_best_split(const struct bins *bins, int bin_count, const struct 
         lo = vec4_min(lo, vec4_load(&bins->box[best_axis][i][0]));
         hi = vec4_max(hi, vec4_load(&bins->box[best_axis][i][4]));
     }
-    store_box(&best->left, lo, hi);
+    build_store_box(&best->left, lo, hi);
     lo = vec4_splat(INFINITY);
     hi = vec4_splat(-INFINITY);
     for (int i = best_plane; i < bin_count; i++) {
         lo = vec4_min(lo, vec4_load(&bins->box[best_axis][i][0]));
         hi = vec4_max(hi, vec4_load(&bins->box[best_axis][i][4]));
     }
-    store_box(&best->right, lo, hi);
+    build_store_box(&best->right, lo, hi);
     return 1;
 }
 

@@ -21,7 +21,22 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "accel/vec4.h"
 #include "trace/bvh_layout.h"
+
+/* Writes the xyz lanes of lo and hi (box bounds kept in SIMD registers
+ * by the binned, median and parallel builders) into *box. */
+static inline void build_store_box(struct aabb *box, vec4 lo, vec4 hi)
+{
+    float l[4];
+    float h[4];
+    vec4_store(l, lo);
+    vec4_store(h, hi);
+    for (int k = 0; k < 3; k++) {
+        box->min[k] = l[k];
+        box->max[k] = h[k];
+    }
+}
 
 /* Smallest k with 2^k >= n: the depth an object-median subtree over n
  * primitives needs to reach single-primitive leaves.  0 for n <= 1. */

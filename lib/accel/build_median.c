@@ -75,18 +75,6 @@ static inline vec4 ref_lo(const struct build_ref *r)
     return vec4_xyz0(vec4_load(r->lo));
 }
 
-static void store_box(struct aabb *box, vec4 lo, vec4 hi)
-{
-    float l[4];
-    float h[4];
-    vec4_store(l, lo);
-    vec4_store(h, hi);
-    for (int k = 0; k < 3; k++) {
-        box->min[k] = l[k];
-        box->max[k] = h[k];
-    }
-}
-
 /* Box and centroid bounds of refs[begin, end). */
 static void range_bounds(const struct build_ref *refs, uint32_t begin, uint32_t end,
                          struct aabb *box, float clo[4], float chi[4])
@@ -104,7 +92,7 @@ static void range_bounds(const struct build_ref *refs, uint32_t begin, uint32_t 
         cl = vec4_min(cl, c);
         ch = vec4_max(ch, c);
     }
-    store_box(box, lo, hi);
+    build_store_box(box, lo, hi);
     vec4_store(clo, cl);
     vec4_store(chi, ch);
 }
@@ -240,8 +228,8 @@ void build_median_refs(struct bvh_node *nodes, struct build_ref *refs, uint32_t 
             mid = partition_spatial(refs, task.begin, task.end, axis, plane, &ls, &rs);
             spatial = mid != task.begin && mid != task.end;
             if (spatial) {
-                store_box(&left_box, ls.lo, ls.hi);
-                store_box(&right_box, rs.lo, rs.hi);
+                build_store_box(&left_box, ls.lo, ls.hi);
+                build_store_box(&right_box, rs.lo, rs.hi);
                 vec4_store(left.clo, ls.clo);
                 vec4_store(left.chi, ls.chi);
                 vec4_store(right.clo, rs.clo);

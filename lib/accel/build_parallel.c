@@ -49,6 +49,7 @@
 #include "accel/build_internal.h"
 #include "accel/vec4.h"
 #include "base/alloc.h"
+#include "base/atomic.h"
 
 /*
  * Subtree size target of stage 1: max(PARALLEL_MIN_SUBTREE, n /
@@ -193,7 +194,7 @@ struct pbuild {
 
 static uint32_t chunk_of(struct pbuild *b)
 {
-    return __atomic_fetch_add(&b->next, 1, __ATOMIC_RELAXED);
+    return rt_atomic_fetch_add_relaxed(&b->next, 1);
 }
 
 /* Room for `need` (>= 1) elements of `size` bytes in array, whose
@@ -367,18 +368,6 @@ static void bin_task(void *arg, int worker)
     }
 }
 
-static void store_box(struct aabb *box, vec4 lo, vec4 hi)
-{
-    float l[4];
-    float h[4];
-    vec4_store(l, lo);
-    vec4_store(h, hi);
-    for (int k = 0; k < 3; k++) {
-        box->min[k] = l[k];
-        box->max[k] = h[k];
-    }
-}
-
 /*
  * Merges the node's chunk histograms and picks the best binned SAH plane
  * (Wald 2007; the sweeps of build_binned_sah.c's find_best_split: ties to
@@ -459,14 +448,14 @@ static void pick_split(struct pbuild *b, struct open_node *o)
         lo = vec4_min(lo, vec4_load(&kb[i][0]));
         hi = vec4_max(hi, vec4_load(&kb[i][4]));
     }
-    store_box(&o->left_box, lo, hi);
+    build_store_box(&o->left_box, lo, hi);
     lo = vec4_splat(INFINITY);
     hi = vec4_splat(-INFINITY);
     for (int i = o->plane; i < bins; i++) {
         lo = vec4_min(lo, vec4_load(&kb[i][0]));
         hi = vec4_max(hi, vec4_load(&kb[i][4]));
     }
-    store_box(&o->right_box, lo, hi);
+    build_store_box(&o->right_box, lo, hi);
 }
 
 /* Phase C: every chunk of a splitting node copies its left refs to its
@@ -991,7 +980,7 @@ static void subtree_task(void *arg, int worker)
     uint32_t i;
     while ((i = chunk_of(b)) < b->subtree_count) {
         struct subtree *s = &b->subtrees[b->order[i]];
-        if (__atomic_load_n(&b->failed, __ATOMIC_RELAXED))
+        if (rt_atomic_load_relaxed(&b->failed))
             continue;
         if (b->pp.subtree == BVH_SUBTREE_MEDIAN) {
             /* Subtree j's range starts at 2 begin_j - j: the ranges of
@@ -1000,7 +989,7 @@ static void subtree_task(void *arg, int worker)
             uint32_t j = b->order[i];
             build_median_subtree(b, s, &b->scratch[2 * (size_t)s->begin - j]);
         } else if (build_sah_subtree(b, s)) {
-            __atomic_store_n(&b->failed, 1, __ATOMIC_RELAXED);
+            rt_atomic_store_relaxed(&b->failed, 1);
         }
     }
 }

@@ -20,6 +20,7 @@
 #include <stddef.h>
 
 #include "accel/build_internal.h"
+#include "base/atomic.h"
 
 /*
  * Seeding depth of the parallel refit: the seeder walks the top k levels,
@@ -167,7 +168,7 @@ static void refit_task(void *arg, int worker)
     (void)worker;
     struct refit_shared *sh = arg;
     for (;;) {
-        uint32_t t = __atomic_fetch_add(&sh->next_task, 1, __ATOMIC_RELAXED);
+        uint32_t t = rt_atomic_fetch_add_relaxed(&sh->next_task, 1);
         if (t >= sh->task_count)
             return;
         refit_subtree(sh->bvh, sh->tasks[t], sh->src);
@@ -175,7 +176,7 @@ static void refit_task(void *arg, int worker)
          * them (the increments form one release sequence) and merges the
          * top: "the last thread to finish a subtree update also performs
          * the final merge" (paper 000 sec. 6). */
-        uint32_t done = __atomic_add_fetch(&sh->finished, 1, __ATOMIC_ACQ_REL);
+        uint32_t done = rt_atomic_add_fetch_acq_rel(&sh->finished, 1);
         if (done == sh->task_count) {
             for (uint32_t i = sh->top_count; i-- > 0;)
                 refit_node(sh->bvh, sh->top[i], sh->src);
@@ -291,7 +292,7 @@ static void triangle_task(void *arg, int worker)
     struct triangle_shared *sh = arg;
     const uint32_t count = sh->bvh->prim_count;
     for (;;) {
-        uint32_t chunk = __atomic_fetch_add(&sh->next_chunk, 1, __ATOMIC_RELAXED);
+        uint32_t chunk = rt_atomic_fetch_add_relaxed(&sh->next_chunk, 1);
         /* In 64 bits: the last chunk's end may pass 2^32. */
         uint64_t begin = (uint64_t)chunk * REFIT_TRIANGLE_CHUNK;
         if (begin >= count)

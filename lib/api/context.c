@@ -13,9 +13,10 @@
 
 #include "api/context.h"
 #include "base/alloc.h"
+#include "base/atomic.h"
 #include "base/mat4.h"
 
-static __thread struct rt_context *current_context;
+static RT_THREAD_LOCAL struct rt_context *current_context;
 
 struct rt_context *rt_current_context(void)
 {
@@ -181,7 +182,7 @@ void rtDestroyContext(RTcontext ctx)
         return;
     /* Destroying a context another thread has current would leave that
      * thread with a dangling pointer: refuse, as documented. */
-    if (current_context != ctx && __atomic_load_n(&ctx->bound, __ATOMIC_ACQUIRE))
+    if (current_context != ctx && rt_atomic_load_acquire(&ctx->bound))
         return;
     if (current_context == ctx)
         current_context = NULL;
@@ -204,10 +205,10 @@ RTboolean rtMakeCurrent(RTcontext ctx)
     if (ctx == current_context)
         return RT_TRUE;
     /* A context is current in at most one thread (as a GL context). */
-    if (ctx && __atomic_exchange_n(&ctx->bound, 1, __ATOMIC_ACQ_REL))
+    if (ctx && rt_atomic_exchange_acq_rel(&ctx->bound, 1))
         return RT_FALSE;
     if (current_context)
-        __atomic_store_n(&current_context->bound, 0, __ATOMIC_RELEASE);
+        rt_atomic_store_release(&current_context->bound, 0);
     current_context = ctx;
     return RT_TRUE;
 }

@@ -2,6 +2,7 @@
  * alloc.c - allocation wrapper with fault injection (see alloc.h).
  */
 #include "base/alloc.h"
+#include "base/atomic.h"
 
 #include <stdint.h>
 #include <stdlib.h>
@@ -14,16 +15,16 @@ static long failures;
 
 static int injected_failure(void)
 {
-    long n = __atomic_load_n(&fail_countdown, __ATOMIC_RELAXED);
+    long n = rt_atomic_load_relaxed(&fail_countdown);
     if (n < 0)
         return 0;
     if (n == 0) {
-        __atomic_add_fetch(&failures, 1, __ATOMIC_RELAXED);
+        rt_atomic_add_fetch_relaxed(&failures, 1);
         return 1;
     }
     /* Several threads may race on the last unit; the count only needs to
      * be approximately N under concurrency and exact single-threaded. */
-    __atomic_sub_fetch(&fail_countdown, 1, __ATOMIC_RELAXED);
+    rt_atomic_sub_fetch_relaxed(&fail_countdown, 1);
     return 0;
 }
 
@@ -60,16 +61,16 @@ void rt_free(void *ptr)
 
 void rt_alloc_fail_after(long n)
 {
-    __atomic_store_n(&fail_countdown, n, __ATOMIC_RELAXED);
+    rt_atomic_store_relaxed(&fail_countdown, n);
 }
 
 void rt_alloc_fail_reset(void)
 {
-    __atomic_store_n(&fail_countdown, -1, __ATOMIC_RELAXED);
-    __atomic_store_n(&failures, 0, __ATOMIC_RELAXED);
+    rt_atomic_store_relaxed(&fail_countdown, -1);
+    rt_atomic_store_relaxed(&failures, 0);
 }
 
 long rt_alloc_failures(void)
 {
-    return __atomic_load_n(&failures, __ATOMIC_RELAXED);
+    return rt_atomic_load_relaxed(&failures);
 }

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "base/alloc.h"
+#include "base/atomic.h"
 #include "base/mat4.h"
 #include "base/timer.h"
 #include "render/shade.h"
@@ -58,13 +59,13 @@ static int acquire_object(void *user, void *object, struct trace_object_view *vi
     double start = rt_now_ms();
     accel = scene_object_acquire(object, sh->job->update, &built_now);
     if (!accel) {
-        __atomic_store_n(&sh->failed, 1, __ATOMIC_RELAXED);
+        rt_atomic_store_relaxed(&sh->failed, 1);
         return 0;
     }
     if (built_now) {
-        __atomic_add_fetch(&sh->builds, 1, __ATOMIC_RELAXED);
-        __atomic_add_fetch(&sh->build_us, (uint64_t)((rt_now_ms() - start) * 1000.0),
-                           __ATOMIC_RELAXED);
+        rt_atomic_add_fetch_relaxed(&sh->builds, 1);
+        rt_atomic_add_fetch_relaxed(&sh->build_us,
+                                    (uint64_t)((rt_now_ms() - start) * 1000.0));
     }
     view->bvh = &accel->bvh;
     view->tri = accel->tri;
@@ -181,7 +182,7 @@ static void frame_task(void *arg, int worker)
     const int *vp = st->viewport;
     uint32_t tiles = (uint32_t)(sh->tiles_x * sh->tiles_y);
     for (;;) {
-        uint32_t tile = __atomic_fetch_add(&sh->next_item, 1, __ATOMIC_RELAXED);
+        uint32_t tile = rt_atomic_fetch_add_relaxed(&sh->next_item, 1);
         if (tile >= tiles)
             break;
         int x0 = (int)(tile % (uint32_t)sh->tiles_x) * RENDER_TILE_SIZE;
@@ -247,7 +248,7 @@ static void query_task(void *arg, int worker)
     struct render_shared *sh = arg;
     struct trace_scene_counters *counters = &sh->counters[worker].c;
     for (;;) {
-        uint32_t item = __atomic_fetch_add(&sh->next_item, 1, __ATOMIC_RELAXED);
+        uint32_t item = rt_atomic_fetch_add_relaxed(&sh->next_item, 1);
         size_t first = (size_t)item * RENDER_QUERY_CHUNK;
         if (first >= (size_t)sh->count)
             break;

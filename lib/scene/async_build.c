@@ -5,9 +5,8 @@
 
 #include <string.h>
 
-#include "accel/build_parallel.h"
 #include "base/alloc.h"
-#include "base/timer.h"
+#include "scene/accel.h"
 
 enum job_state { JOB_QUEUED, JOB_RUNNING, JOB_DONE };
 
@@ -48,32 +47,13 @@ void scene_async_init(struct scene_async_builder *b, int threads,
 static struct scene_accel *build_snapshot(struct scene_async_builder *b,
                                           const struct scene_async_job *job)
 {
-    double start = rt_now_ms();
-    struct scene_accel *accel = rt_calloc(1, sizeof(*accel));
-    struct aabb *boxes = rt_calloc(job->tri_count, sizeof(*boxes));
-    if (!accel || !boxes)
-        goto fail;
-    for (uint32_t j = 0; j < job->tri_count; j++) {
-        boxes[j] = aabb_empty();
-        for (int k = 0; k < 3; k++)
-            aabb_grow_point(&boxes[j], &job->positions[3 * job->indices[3 * j + k]]);
+    struct scene_accel_geometry g = {job->positions, job->indices, job->tri_count};
+    struct scene_accel *accel = scene_accel_build(&g, &b->params, SCENE_ACCEL_PARALLEL, b->pool);
+    if (accel) {
+        accel->serial = job->serial;
+        accel->topology = job->topology;
     }
-    if (accel_build_parallel(&accel->bvh, boxes, job->tri_count, &b->params, b->pool))
-        goto fail;
-    accel->tri = accel_gather_triangles(&accel->bvh, job->positions, job->indices);
-    if (!accel->tri)
-        goto fail;
-    rt_free(boxes);
-    accel->serial = job->serial;
-    accel->topology = job->topology;
-    accel->sah_cost = accel_sah_cost(&accel->bvh, b->params.c_trav, b->params.c_isect);
-    accel->built_sah_cost = accel->sah_cost;
-    accel->build_ms = rt_now_ms() - start;
     return accel;
-fail:
-    rt_free(boxes);
-    scene_accel_release(accel);
-    return NULL;
 }
 
 static void *build_thread(void *arg)

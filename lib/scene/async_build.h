@@ -62,7 +62,7 @@ int scene_async_request(struct scene_async_builder *b, struct scene_object *obje
  * If the object's job has finished, hands over its structure (built for
  * the object's topology at snapshot time, vertices of the snapshot) and
  * frees the job; returns NULL while it is still running or none exists.
- * *snapshot_serial receives the object serial the snapshot was taken at.
+ * The structure's serial is the object serial the snapshot was taken at.
  */
 struct scene_accel *scene_async_collect(struct scene_async_builder *b, struct scene_object *object);
 

@@ -9,8 +9,8 @@
 
 #include "base/alloc.h"
 #include "base/name_table.h"
-#include "base/timer.h"
-#include "scene/update.h"
+#include "base/atomic.h"
+#include "scene/accel.h"
 
 #define OBJECT_TABLE_MIN_CAPACITY 64u
 
@@ -18,17 +18,6 @@ void scene_objects_init(struct scene_objects *table)
 {
     name_table_init(&table->table, OBJECT_TABLE_MIN_CAPACITY);
     table->defined = 0;
-}
-
-void scene_accel_release(struct scene_accel *accel)
-{
-    if (!accel)
-        return;
-    bvh_release(&accel->bvh);
-    rt_free(accel->tri);
-    if (accel->restructure_state_ready)
-        accel_restructure_state_release(&accel->restructure_state);
-    rt_free(accel);
 }
 
 static void object_free(void *item)
@@ -126,27 +115,5 @@ void scene_object_touch(struct scene_object *object, uint64_t frame)
 
 const struct scene_accel *scene_object_peek(const struct scene_object *object)
 {
-    return __atomic_load_n(&object->accel, __ATOMIC_ACQUIRE);
-}
-
-const struct scene_accel *scene_object_acquire(struct scene_object *object,
-                                               const struct scene_update_config *config,
-                                               int *built_now)
-{
-    *built_now = 0;
-    struct scene_accel *accel = __atomic_load_n(&object->accel, __ATOMIC_ACQUIRE);
-    /* object->serial changes only on the API thread between frames. */
-    if (accel && accel->serial == object->serial)
-        return accel;
-    pthread_mutex_lock(&object->build_lock);
-    const struct scene_accel *current = object->accel;
-    if (!current || current->serial != object->serial) {
-        /* Inside a frame: no pool (it is running this very task). */
-        struct scene_update_config serial_config = *config;
-        serial_config.pool = NULL;
-        current = scene_object_update(object, &serial_config);
-        *built_now = current != NULL;
-    }
-    pthread_mutex_unlock(&object->build_lock);
-    return current;
+    return rt_atomic_load_acquire(&object->accel);
 }

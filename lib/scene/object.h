@@ -3,7 +3,7 @@
  *
  * An object owns its committed definition (a scene_mesh) and, once a ray
  * has needed it, the acceleration structure over it.  Construction is
- * lazy (paper 004 sec. 3, "on demand"): scene_object_acquire builds the
+ * lazy (paper 004 sec. 3, "on demand"): scene_object_acquire (update.h) builds the
  * BVH the first time any thread asks, under the object's lock, and
  * publishes it with a release store so later readers take no lock.
  *
@@ -17,24 +17,9 @@
 #include <pthread.h>
 #include <stdint.h>
 
-#include "trace/bvh_layout.h"
-#include "accel/restructure.h"
 #include "base/name_table.h"
+#include "scene/accel.h"
 #include "scene/mesh.h"
-
-struct scene_accel {
-    struct bvh bvh;
-    float *tri; /* leaf-ordered vertices, accel_gather_triangles */
-    uint32_t serial;   /* the object's serial this structure reflects */
-    uint32_t topology; /* the object's topology serial it was built for */
-    double sah_cost;       /* of the tree as it is now */
-    double built_sah_cost; /* right after the last full build (rebuild heuristic) */
-    double build_ms;       /* the last full build */
-    /* Per-node life times and scratch of selective restructuring (paper
-     * 001), initialised by its first use. */
-    struct accel_restructure_state restructure_state;
-    int restructure_state_ready;
-};
 
 struct scene_object {
     uint32_t name;
@@ -105,23 +90,6 @@ void scene_object_define(struct scene_objects *table, struct scene_object *objec
 /* Marks the geometry changed in place (rtUpdateVertices) in `frame`:
  * recomputes the bounds, keeps the topology. */
 void scene_object_touch(struct scene_object *object, uint64_t frame);
-
-struct scene_update_config;
-
-/*
- * The object's acceleration structure, built now if this is the first
- * request or brought up to date if the geometry changed since (config
- * selects builder and strategy; see update.h).  Thread-safe: the work is
- * done under the object's lock, by the first thread that needs it.
- * Returns NULL on allocation failure (the next request tries again).
- * *built_now is set to 1 when this call built or updated.
- */
-const struct scene_accel *scene_object_acquire(struct scene_object *object,
-                                               const struct scene_update_config *config,
-                                               int *built_now);
-
-/* Frees a structure and everything it owns; NULL is ignored. */
-void scene_accel_release(struct scene_accel *accel);
 
 /* The acceleration structure if already built, else NULL (no build). */
 const struct scene_accel *scene_object_peek(const struct scene_object *object);

@@ -6,12 +6,9 @@
 #include <rt/rt.h>
 #include <string.h>
 
-#include "accel/build_more.h"
-#include "accel/build_parallel.h"
-#include "accel/refit.h"
-#include "accel/restructure.h"
-#include "base/alloc.h"
+#include "base/atomic.h"
 #include "base/timer.h"
+#include "scene/accel.h"
 
 /* Rebuild once refitting has made the SAH cost this many times the cost
  * right after the last build.  Lauterbach et al.'s RT-DEFORM rebuild
@@ -28,120 +25,67 @@ unsigned scene_object_strategy(const struct scene_object *object, unsigned defau
     return object->strategy_hint != RT_AUTOMATIC ? object->strategy_hint : default_strategy;
 }
 
-static struct aabb *triangle_boxes(const struct scene_mesh *mesh)
-{
-    struct aabb *boxes = rt_calloc(mesh->tri_count, sizeof(*boxes));
-    if (!boxes)
-        return NULL;
-    for (uint32_t j = 0; j < mesh->tri_count; j++) {
-        boxes[j] = aabb_empty();
-        for (int k = 0; k < 3; k++)
-            aabb_grow_point(&boxes[j], &mesh->positions[3 * mesh->indices[3 * j + k]]);
-    }
-    return boxes;
-}
-
 static struct rt_pool *pool_for(const struct scene_mesh *mesh, struct rt_pool *pool)
 {
     return mesh->tri_count >= PARALLEL_UPDATE_MIN_TRIANGLES ? pool : NULL;
 }
 
-/* A fresh structure with `builder` (BVH_BUILDER_* or median); NULL on
- * allocation failure. */
-static struct scene_accel *build_fresh(const struct scene_object *object,
-                                       const struct bvh_build_params *params, int median,
-                                       struct rt_pool *pool)
+static struct scene_accel_geometry geometry(const struct scene_object *object)
 {
-    const struct scene_mesh *mesh = &object->mesh;
-    double start = rt_now_ms();
-    struct scene_accel *accel = rt_calloc(1, sizeof(*accel));
-    struct aabb *boxes = triangle_boxes(mesh);
-    if (!accel || !boxes)
-        goto fail;
-    int status;
-    if (median)
-        status = accel_build_median(&accel->bvh, boxes, mesh->tri_count, params);
-    else if (pool_for(mesh, pool) && params->builder == BVH_BUILDER_BINNED_SAH)
-        status = accel_build_parallel(&accel->bvh, boxes, mesh->tri_count, params, pool);
-    else
-        status = accel_build(&accel->bvh, boxes, mesh->tri_count, params);
-    if (status)
-        goto fail;
-    accel->tri = accel_gather_triangles(&accel->bvh, mesh->positions, mesh->indices);
-    if (!accel->tri)
-        goto fail;
-    rt_free(boxes);
-    accel->serial = object->serial;
-    accel->topology = object->topology_serial;
-    accel->sah_cost = accel_sah_cost(&accel->bvh, params->c_trav, params->c_isect);
-    accel->built_sah_cost = accel->sah_cost;
-    accel->build_ms = rt_now_ms() - start;
-    return accel;
-fail:
-    rt_free(boxes);
-    scene_accel_release(accel);
-    return NULL;
+    struct scene_accel_geometry g = {object->mesh.positions, object->mesh.indices,
+                                     object->mesh.tri_count};
+    return g;
 }
 
-/* Replaces the object's structure by a fresh build; 0 or -1. */
+/* Replaces the object's structure by a fresh build (median or, with a
+ * pool worth waking, the parallel binned build); 0 or -1. */
 static int rebuild(struct scene_object *object, const struct bvh_build_params *params,
                    int median, struct rt_pool *pool)
 {
-    struct scene_accel *fresh = build_fresh(object, params, median, pool);
+    enum scene_accel_builder builder = SCENE_ACCEL_SERIAL;
+    if (median)
+        builder = SCENE_ACCEL_MEDIAN;
+    else if (pool_for(&object->mesh, pool) && params->builder == BVH_BUILDER_BINNED_SAH)
+        builder = SCENE_ACCEL_PARALLEL;
+    struct scene_accel_geometry g = geometry(object);
+    struct scene_accel *fresh = scene_accel_build(&g, params, builder, pool);
     if (!fresh)
         return -1;
-    struct scene_accel *old = object->accel;
-    __atomic_store_n(&object->accel, fresh, __ATOMIC_RELEASE);
-    scene_accel_release(old);
-    object->rebuilds++;
+    fresh->serial = object->serial;
+    fresh->topology = object->topology_serial;
+    scene_accel_install(object, fresh);
     return 0;
 }
 
-/* Refits the boxes and the leaf-ordered triangles in place, in one pass
- * over the leaves (paper 000 sec. 6 interleaves the two the same way).
- * Allocates nothing, so it cannot fail. */
 static void refit(struct scene_object *object, const struct bvh_build_params *params,
                   struct rt_pool *pool)
 {
-    const struct scene_mesh *mesh = &object->mesh;
-    struct scene_accel *accel = object->accel;
-    accel_refit_mesh(&accel->bvh, accel->tri, mesh->positions, mesh->indices,
-                     pool_for(mesh, pool));
-    accel->sah_cost = accel_sah_cost(&accel->bvh, params->c_trav, params->c_isect);
+    struct scene_accel_geometry g = geometry(object);
+    scene_accel_refit(object->accel, &g, params, pool_for(&object->mesh, pool));
     object->refits++;
 }
 
 static int restructure(struct scene_object *object, const struct bvh_build_params *params,
                        const struct accel_restructure_params *measured)
 {
-    const struct scene_mesh *mesh = &object->mesh;
-    struct scene_accel *accel = object->accel;
-    struct aabb *boxes = triangle_boxes(mesh);
-    if (!boxes)
+    struct scene_accel_geometry g = geometry(object);
+    if (scene_accel_restructure(object->accel, &g, params, measured, object->expected_rays))
         return -1;
-    if (!accel->restructure_state_ready) {
-        accel_restructure_state_init(&accel->restructure_state);
-        accel->restructure_state_ready = 1;
-    }
-    struct accel_restructure_params rp = *measured;
-    rp.rays_per_frame = object->expected_rays;
-    struct accel_restructure_stats stats;
-    int status =
-        accel_restructure(&accel->bvh, boxes, &accel->restructure_state, &rp, &stats);
-    rt_free(boxes);
-    if (status)
-        return -1;
-    /* Restructuring moves primitives between leaves: regather. */
-    float *tri = accel_gather_triangles(&accel->bvh, mesh->positions, mesh->indices);
-    if (!tri)
-        return -1;
-    rt_free(accel->tri);
-    accel->tri = tri;
-    accel->sah_cost = accel_sah_cost(&accel->bvh, params->c_trav, params->c_isect);
     object->refits++;
     return 0;
 }
 
+/* The RT-DEFORM rebuild heuristic (REBUILD_HEURISTIC_THRESHOLD): refit,
+ * and rebuild once the refit tree's SAH cost has grown past the
+ * threshold.  0 or -1. */
+static int refit_or_rebuild(struct scene_object *object, const struct bvh_build_params *params,
+                            struct rt_pool *pool)
+{
+    refit(object, params, pool);
+    if (object->accel->sah_cost > REBUILD_HEURISTIC_THRESHOLD * object->accel->built_sah_cost)
+        return rebuild(object, params, 0, pool);
+    return 0;
+}
 
 /*
  * Paper 000 sec. 6: swap in a build that has landed, refit whatever
@@ -155,17 +99,11 @@ static int async_rebuild(struct scene_object *object, const struct bvh_build_par
     struct scene_async_builder *async = config->async;
     if (!async || async->threads == 0) {
         object->last_strategy = RT_REBUILD_HEURISTIC;
-        refit(object, params, config->pool);
-        if (object->accel->sah_cost > REBUILD_HEURISTIC_THRESHOLD * object->accel->built_sah_cost)
-            return rebuild(object, params, 0, config->pool);
-        return 0;
+        return refit_or_rebuild(object, params, config->pool);
     }
     struct scene_accel *landed = scene_async_collect(async, object);
     if (landed && landed->topology == object->topology_serial) {
-        struct scene_accel *old = object->accel;
-        __atomic_store_n(&object->accel, landed, __ATOMIC_RELEASE);
-        scene_accel_release(old);
-        object->rebuilds++;
+        scene_accel_install(object, landed);
     } else {
         scene_accel_release(landed); /* built for an old connectivity */
     }
@@ -257,10 +195,7 @@ const struct scene_accel *scene_object_update(struct scene_object *object,
             status = rebuild(object, &dynamic, 1, config->pool);
             break;
         case RT_REBUILD_HEURISTIC:
-            refit(object, &dynamic, config->pool);
-            status = 0;
-            if (object->accel->sah_cost > REBUILD_HEURISTIC_THRESHOLD * object->accel->built_sah_cost)
-                status = rebuild(object, &dynamic, 0, config->pool);
+            status = refit_or_rebuild(object, &dynamic, config->pool);
             break;
         case RT_RESTRUCTURE:
             status = restructure(object, &dynamic, config->restructure);
@@ -280,4 +215,26 @@ const struct scene_accel *scene_object_update(struct scene_object *object,
     }
     object->update_ms = rt_now_ms() - start;
     return status == 0 ? object->accel : NULL;
+}
+
+const struct scene_accel *scene_object_acquire(struct scene_object *object,
+                                               const struct scene_update_config *config,
+                                               int *built_now)
+{
+    *built_now = 0;
+    struct scene_accel *accel = rt_atomic_load_acquire(&object->accel);
+    /* object->serial changes only on the API thread between frames. */
+    if (accel && accel->serial == object->serial)
+        return accel;
+    pthread_mutex_lock(&object->build_lock);
+    const struct scene_accel *current = object->accel;
+    if (!current || current->serial != object->serial) {
+        /* Inside a frame: no pool (it is running this very task). */
+        struct scene_update_config serial_config = *config;
+        serial_config.pool = NULL;
+        current = scene_object_update(object, &serial_config);
+        *built_now = current != NULL;
+    }
+    pthread_mutex_unlock(&object->build_lock);
+    return current;
 }

@@ -58,6 +58,18 @@ struct scene_update_config {
 const struct scene_accel *scene_object_update(struct scene_object *object,
                                               const struct scene_update_config *config);
 
+/*
+ * The object's acceleration structure, built now if this is the first
+ * request or brought up to date if the geometry changed since (config
+ * selects builder and strategy; see update.h).  Thread-safe: the work is
+ * done under the object's lock, by the first thread that needs it.
+ * Returns NULL on allocation failure (the next request tries again).
+ * *built_now is set to 1 when this call built or updated.
+ */
+const struct scene_accel *scene_object_acquire(struct scene_object *object,
+                                               const struct scene_update_config *config,
+                                               int *built_now);
+
 /* The strategy an update of this object would use now (resolving
  * RT_AUTOMATIC), for statistics. */
 unsigned scene_object_strategy(const struct scene_object *object, unsigned default_strategy);

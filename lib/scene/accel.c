@@ -1,0 +1,123 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * accel.c - building, refitting, restructuring and swapping an object's
+ * acceleration structure (see accel.h).
+ */
+#include "scene/accel.h"
+
+#include "accel/build_more.h"
+#include "accel/build_parallel.h"
+#include "accel/refit.h"
+#include "base/alloc.h"
+#include "base/atomic.h"
+#include "base/timer.h"
+#include "scene/object.h"
+
+static struct aabb *triangle_boxes(const struct scene_accel_geometry *geom)
+{
+    struct aabb *boxes = rt_calloc(geom->tri_count, sizeof(*boxes));
+    if (!boxes)
+        return NULL;
+    for (uint32_t j = 0; j < geom->tri_count; j++) {
+        boxes[j] = aabb_empty();
+        for (int k = 0; k < 3; k++)
+            aabb_grow_point(&boxes[j], &geom->positions[3 * geom->indices[3 * j + k]]);
+    }
+    return boxes;
+}
+
+/* The step after every change of the tree's topology: the leaf-ordered
+ * triangles traversal reads, and the cost the update strategies compare.
+ * Returns 0, or -1 on allocation failure (accel->tri unchanged). */
+static int finish_layout(struct scene_accel *accel, const struct scene_accel_geometry *geom,
+                         const struct bvh_build_params *params)
+{
+    float *tri = accel_gather_triangles(&accel->bvh, geom->positions, geom->indices);
+    if (!tri)
+        return -1;
+    rt_free(accel->tri);
+    accel->tri = tri;
+    accel->sah_cost = accel_sah_cost(&accel->bvh, params->c_trav, params->c_isect);
+    return 0;
+}
+
+struct scene_accel *scene_accel_build(const struct scene_accel_geometry *geom,
+                                      const struct bvh_build_params *params,
+                                      enum scene_accel_builder builder, struct rt_pool *pool)
+{
+    double start = rt_now_ms();
+    struct scene_accel *accel = rt_calloc(1, sizeof(*accel));
+    struct aabb *boxes = triangle_boxes(geom);
+    if (!accel || !boxes)
+        goto fail;
+    int status;
+    if (builder == SCENE_ACCEL_MEDIAN)
+        status = accel_build_median(&accel->bvh, boxes, geom->tri_count, params);
+    else if (builder == SCENE_ACCEL_PARALLEL)
+        status = accel_build_parallel(&accel->bvh, boxes, geom->tri_count, params, pool);
+    else
+        status = accel_build(&accel->bvh, boxes, geom->tri_count, params);
+    if (status || finish_layout(accel, geom, params))
+        goto fail;
+    rt_free(boxes);
+    accel->built_sah_cost = accel->sah_cost;
+    accel->build_ms = rt_now_ms() - start;
+    return accel;
+fail:
+    rt_free(boxes);
+    scene_accel_release(accel);
+    return NULL;
+}
+
+/* Boxes and leaf-ordered triangles in one pass over the leaves (paper 000
+ * sec. 6 interleaves the two the same way): the refit updates the layout
+ * in place, so finish_layout's gather is not needed, only the cost. */
+void scene_accel_refit(struct scene_accel *accel, const struct scene_accel_geometry *geom,
+                       const struct bvh_build_params *params, struct rt_pool *pool)
+{
+    accel_refit_mesh(&accel->bvh, accel->tri, geom->positions, geom->indices, pool);
+    accel->sah_cost = accel_sah_cost(&accel->bvh, params->c_trav, params->c_isect);
+}
+
+int scene_accel_restructure(struct scene_accel *accel, const struct scene_accel_geometry *geom,
+                            const struct bvh_build_params *params,
+                            const struct accel_restructure_params *measured,
+                            double rays_per_frame)
+{
+    struct aabb *boxes = triangle_boxes(geom);
+    if (!boxes)
+        return -1;
+    if (!accel->restructure_state_ready) {
+        accel_restructure_state_init(&accel->restructure_state);
+        accel->restructure_state_ready = 1;
+    }
+    struct accel_restructure_params rp = *measured;
+    rp.rays_per_frame = rays_per_frame;
+    struct accel_restructure_stats stats;
+    int status =
+        accel_restructure(&accel->bvh, boxes, &accel->restructure_state, &rp, &stats);
+    rt_free(boxes);
+    if (status)
+        return -1;
+    /* Restructuring moves primitives between leaves: regather. */
+    return finish_layout(accel, geom, params);
+}
+
+void scene_accel_install(struct scene_object *object, struct scene_accel *fresh)
+{
+    struct scene_accel *old = object->accel;
+    rt_atomic_store_release(&object->accel, fresh);
+    scene_accel_release(old);
+    object->rebuilds++;
+}
+
+void scene_accel_release(struct scene_accel *accel)
+{
+    if (!accel)
+        return;
+    bvh_release(&accel->bvh);
+    rt_free(accel->tri);
+    if (accel->restructure_state_ready)
+        accel_restructure_state_release(&accel->restructure_state);
+    rt_free(accel);
+}

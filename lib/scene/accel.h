@@ -1,0 +1,85 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * accel.h - an object's acceleration structure: the one owner of building,
+ * refitting, restructuring, swapping in and releasing a struct scene_accel.
+ *
+ * Every path that changes a structure (first build, rebuild, refit,
+ * selective restructuring, an asynchronous build landing) goes through
+ * this file, and each ends in the same step, finish_layout in accel.c,
+ * which produces what traversal reads (the leaf-ordered triangles) and
+ * the tree's SAH cost.  A new traversal layout (wide nodes, say) is made
+ * there and nowhere else.
+ *
+ * The strategy deciding which of these runs lives in update.c; the
+ * background thread that runs asynchronous builds in async_build.c.
+ */
+#ifndef RT_SCENE_ACCEL_H
+#define RT_SCENE_ACCEL_H
+
+#include <stdint.h>
+
+#include "accel/restructure.h"
+#include "base/pool.h"
+#include "trace/bvh_layout.h"
+
+struct scene_object;
+
+struct scene_accel {
+    struct bvh bvh;
+    float *tri; /* leaf-ordered vertices, accel_gather_triangles */
+    uint32_t serial;   /* the object's serial this structure reflects */
+    uint32_t topology; /* the object's topology serial it was built for */
+    double sah_cost;       /* of the tree as it is now */
+    double built_sah_cost; /* right after the last full build (rebuild heuristic) */
+    double build_ms;       /* the last full build */
+    /* Per-node life times and scratch of selective restructuring (paper
+     * 001), initialised by its first use. */
+    struct accel_restructure_state restructure_state;
+    int restructure_state_ready;
+};
+
+/* Which builder a full build uses. */
+enum scene_accel_builder {
+    SCENE_ACCEL_SERIAL,   /* accel_build with params->builder */
+    SCENE_ACCEL_MEDIAN,   /* accel_build_median (build_median.h) */
+    SCENE_ACCEL_PARALLEL  /* accel_build_parallel on pool (pool may be NULL) */
+};
+
+/* The geometry a structure is built over: tri_count triangles indexing
+ * positions (xyz per vertex).  Borrowed, never freed here. */
+struct scene_accel_geometry {
+    const float *positions;
+    const uint32_t *indices;
+    uint32_t tri_count;
+};
+
+/*
+ * A fresh structure over geom (serial and topology left 0 for the caller
+ * to stamp).  Times itself into build_ms.  NULL on allocation failure.
+ */
+struct scene_accel *scene_accel_build(const struct scene_accel_geometry *geom,
+                                      const struct bvh_build_params *params,
+                                      enum scene_accel_builder builder, struct rt_pool *pool);
+
+/* Refits boxes and leaf-ordered triangles in place to geom's current
+ * positions (same connectivity).  Allocates nothing, cannot fail. */
+void scene_accel_refit(struct scene_accel *accel, const struct scene_accel_geometry *geom,
+                       const struct bvh_build_params *params, struct rt_pool *pool);
+
+/* Selective restructuring (paper 001) of accel to geom's positions, with
+ * the measured constants and rays_per_frame.  0, or -1 on allocation
+ * failure (accel stays valid). */
+int scene_accel_restructure(struct scene_accel *accel, const struct scene_accel_geometry *geom,
+                            const struct bvh_build_params *params,
+                            const struct accel_restructure_params *measured,
+                            double rays_per_frame);
+
+/* Publishes fresh as the object's structure (release store, so render
+ * threads that load it with acquire see it whole) and frees the old one.
+ * Counts a rebuild. */
+void scene_accel_install(struct scene_object *object, struct scene_accel *fresh);
+
+/* Frees a structure and everything it owns; NULL is ignored. */
+void scene_accel_release(struct scene_accel *accel);
+
+#endif
