@@ -1,6 +1,6 @@
 /*
  * toplevel_builders.c - the two top-level builders ("toplevel=binned", the
- * default binned SAH over instance boxes, and "toplevel=paper004", paper
+ * default binned SAH over instance boxes, and "toplevel=cellsplit", paper
  * 004 sec. 4.5's split rule) give bit-identical hits, on scattered,
  * overlapping and coincident instances, and both rebuild only when the
  * instance list changes.
@@ -93,14 +93,14 @@ int main(void)
     static RThit binned[RAYS], paper[RAYS];
     make_rays(rays);
     trace_with("threads=2 toplevel=binned", rays, binned);
-    trace_with("threads=2 toplevel=paper004", rays, paper);
+    trace_with("threads=2 toplevel=cellsplit", rays, paper);
     tu_section("identical hits");
     int differ = 0, hits = 0;
     for (int i = 0; i < RAYS; i++) {
         hits += binned[i].t < INFINITY;
         if (memcmp(&binned[i], &paper[i], sizeof(RThit)) != 0) {
             if (differ < 5)
-                printf("   ray %d: binned t=%.9g inst %u prim %u u=%g v=%g; paper004 t=%.9g "
+                printf("   ray %d: binned t=%.9g inst %u prim %u u=%g v=%g; cellsplit t=%.9g "
                        "inst %u prim %u u=%g v=%g\n",
                        i, (double)binned[i].t, binned[i].instance, binned[i].primitive,
                        (double)binned[i].u, (double)binned[i].v, (double)paper[i].t,

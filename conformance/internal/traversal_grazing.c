@@ -120,7 +120,7 @@ static int build(const struct build_case *bc, struct bvh *out, const struct aabb
         pp.subtree = BVH_SUBTREE_MEDIAN;
         return accel_build_parallel_ex(out, boxes, n, &p, &pp, NULL);
     case BUILD_TOPLEVEL:
-        return accel_build_toplevel_paper004(out, boxes, n);
+        return accel_build_toplevel_cellsplit(out, boxes, n);
     }
     return -1;
 }

@@ -96,7 +96,7 @@ static void axes_by_extent(const struct aabb *cell, int axes[3])
             }
 }
 
-int accel_build_toplevel_paper004(struct bvh *out, const struct aabb *boxes, uint32_t count)
+int accel_build_toplevel_cellsplit(struct bvh *out, const struct aabb *boxes, uint32_t count)
 {
     memset(out, 0, sizeof(*out));
     if (count == 0)

@@ -24,6 +24,6 @@
  * Same contract as accel_build (bvh.h), params ignored.  Returns 0, or -1
  * with *out zeroed on allocation failure.
  */
-int accel_build_toplevel_paper004(struct bvh *out, const struct aabb *boxes, uint32_t count);
+int accel_build_toplevel_cellsplit(struct bvh *out, const struct aabb *boxes, uint32_t count);
 
 #endif

@@ -244,16 +244,16 @@ void rtRenderParameteri(RTenum pname, RTint param)
                      (RTenum)param);
             return;
         }
-        ctx->default_strategy = (RTenum)param;
+        ctx->scene.default_strategy = (RTenum)param;
         return;
     }
     if (pname != RT_MAX_RAY_DEPTH) {
         rt_error(ctx, RT_INVALID_ENUM, "rtRenderParameteri(pname=0x%x)", pname);
         return;
     }
-    if (param < 0 || param > RT_MAX_RAY_DEPTH_LIMIT) {
+    if (param < 0 || param > API_MAX_RAY_DEPTH_LIMIT) {
         rt_error(ctx, RT_INVALID_VALUE, "rtRenderParameteri(RT_MAX_RAY_DEPTH, %d): not in 0..%d",
-                 param, RT_MAX_RAY_DEPTH_LIMIT);
+                 param, API_MAX_RAY_DEPTH_LIMIT);
         return;
     }
     ctx->render.max_depth = param;

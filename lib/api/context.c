@@ -28,7 +28,7 @@ static int online_cpus(void)
     long n = sysconf(_SC_NPROCESSORS_ONLN);
     if (n < 1)
         return 1;
-    return n > RT_MAX_THREADS ? RT_MAX_THREADS : (int)n;
+    return n > API_MAX_THREADS ? API_MAX_THREADS : (int)n;
 }
 
 /* Parses a decimal integer in [lo, hi]; returns 0 on success. */
@@ -74,17 +74,17 @@ static int parse_configuration(struct rt_context *ctx, const char *config)
             p++;
         size_t value_len = (size_t)(p - value);
         if (key_is(key, key_len, "threads")) {
-            if (parse_int(value, value_len, 1, RT_MAX_THREADS, &ctx->threads))
+            if (parse_int(value, value_len, 1, API_MAX_THREADS, &ctx->threads))
                 return -1;
         } else if (key_is(key, key_len, "toplevel")) {
             if (key_is(value, value_len, "binned"))
-                ctx->toplevel_paper004 = 0;
-            else if (key_is(value, value_len, "paper004"))
-                ctx->toplevel_paper004 = 1;
+                ctx->toplevel_cellsplit = 0;
+            else if (key_is(value, value_len, "cellsplit"))
+                ctx->toplevel_cellsplit = 1;
             else
                 return -1;
         } else if (key_is(key, key_len, "build_threads")) {
-            if (parse_int(value, value_len, 0, RT_MAX_THREADS, &ctx->build_threads))
+            if (parse_int(value, value_len, 0, API_MAX_THREADS, &ctx->build_threads))
                 return -1;
         } else if (key_is(key, key_len, "bins")) {
             if (parse_int(value, value_len, 2, BVH_MAX_BINS, &ctx->build_params.bins))
@@ -149,29 +149,20 @@ RTcontext rtCreateContext(const char *configuration)
              "threads=%d build_threads=%d bins=%d builder=%s toplevel=%s", ctx->threads,
              ctx->build_threads, ctx->build_params.bins,
              ctx->build_params.builder == BVH_BUILDER_SWEEP_SAH ? "sweep" : "binned",
-             ctx->toplevel_paper004 ? "paper004" : "binned");
+             ctx->toplevel_cellsplit ? "cellsplit" : "binned");
     const char *debug = getenv("TRACELIST_DEBUG");
     ctx->debug_print = debug && *debug && strcmp(debug, "0") != 0;
 
-    ctx->default_strategy = RT_AUTOMATIC;
-    /* Until a frame has been measured: 5 ns a step, this machine's order
-     * of magnitude (bench/rtbench trace). */
-    ctx->ms_per_test = 5e-6;
-    accel_restructure_params_default(&ctx->restructure_params);
     ctx->matrix_mode = RT_MODELVIEW;
-    matrix_stack_init(&ctx->modelview, RT_MAX_MODELVIEW_DEPTH);
-    matrix_stack_init(&ctx->projection, RT_MAX_PROJECTION_DEPTH);
+    matrix_stack_init(&ctx->modelview, API_MAX_MODELVIEW_DEPTH);
+    matrix_stack_init(&ctx->projection, API_MAX_PROJECTION_DEPTH);
     ctx->current_normal[2] = 1.0f;
     for (int k = 0; k < 4; k++)
         ctx->current_color[k] = 1.0f;
     ctx->shade_model = RT_SMOOTH;
     scene_material_default(&ctx->material);
     ctx->recording.mesh.bounds = aabb_empty();
-    scene_objects_init(&ctx->objects);
-    scene_textures_init(&ctx->textures);
-    scene_async_init(&ctx->async, ctx->build_threads, &ctx->build_params);
-    scene_frame_init(&ctx->frame);
-    ctx->frame.toplevel_paper004 = ctx->toplevel_paper004;
+    scene_init(&ctx->scene, &ctx->build_params, ctx->build_threads, ctx->toplevel_cellsplit);
     render_state_init(&ctx->render);
     return ctx;
 }
@@ -187,15 +178,8 @@ void rtDestroyContext(RTcontext ctx)
     if (current_context == ctx)
         current_context = NULL;
     rt_pool_destroy(ctx->pool);
-    /* Jobs first (their objects go next), then the build thread. */
-    for (uint32_t i = 0; i < ctx->objects.table.capacity; i++)
-        if (ctx->objects.table.slots[i].name)
-            scene_async_cancel(&ctx->async, ctx->objects.table.slots[i].item);
-    scene_async_release(&ctx->async);
+    scene_release(&ctx->scene);
     scene_mesh_release(&ctx->recording.mesh);
-    scene_frame_release(&ctx->frame);
-    scene_objects_release(&ctx->objects);
-    scene_textures_release(&ctx->textures);
     rt_free(ctx->render.framebuffer);
     rt_free(ctx);
 }

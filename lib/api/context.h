@@ -13,22 +13,18 @@
 #include <rt/rt.h>
 #include <stdint.h>
 
-#include "trace/bvh_layout.h"
 #include "render/render.h"
-#include "scene/async_build.h"
-#include "scene/frame.h"
-#include "scene/mesh.h"
-#include "scene/object.h"
-#include "scene/texture.h"
+#include "scene/recording.h"
+#include "scene/scene.h"
 
-#define RT_MAX_MODELVIEW_DEPTH 32 /* OpenGL's minimum, DESIGN.md */
-#define RT_MAX_PROJECTION_DEPTH 4 /* >= 2 required */
-#define RT_MAX_THREADS 256
-#define RT_MAX_VIEWPORT 16384
-#define RT_MAX_RAY_DEPTH_LIMIT 16
+#define API_MAX_MODELVIEW_DEPTH 32 /* OpenGL's minimum, DESIGN.md */
+#define API_MAX_PROJECTION_DEPTH 4 /* >= 2 required */
+#define API_MAX_THREADS 256
+#define API_MAX_VIEWPORT 16384
+#define API_MAX_RAY_DEPTH_LIMIT 16
 
 struct matrix_stack {
-    double m[RT_MAX_MODELVIEW_DEPTH][16]; /* m[depth-1] is the top */
+    double m[API_MAX_MODELVIEW_DEPTH][16]; /* m[depth-1] is the top */
     int depth;                            /* 1..max_depth */
     int max_depth;
 };
@@ -39,26 +35,6 @@ struct client_array {
     RTenum type;
     RTsizei stride;
     const void *pointer;
-};
-
-/* Recording state between rtNewObject and rtEndObject. */
-struct object_recording {
-    int active;
-    uint32_t name;
-    struct scene_mesh mesh;
-    int out_of_memory; /* an allocation failed: rtEndObject keeps the old definition */
-    int material_index; /* interned index of ctx->material, -1 when stale */
-    uint32_t material_texture; /* the texture material_index was interned with */
-};
-
-/* rtBegin/rtEnd state. */
-struct primitive_block {
-    int active;
-    RTenum mode;
-    uint32_t base;  /* mesh index of the block's first vertex */
-    uint32_t count; /* vertices recorded in this block */
-    double position_matrix[16]; /* the modelview, fixed inside the block */
-    double normal_matrix[9];    /* its cofactor matrix, for normals */
 };
 
 struct rt_context {
@@ -89,33 +65,25 @@ struct rt_context {
     RTenum shade_model;
     int color_material;
     struct scene_material material;
-    struct object_recording recording;
-    struct primitive_block block;
+    struct scene_recording recording; /* rtNewObject .. rtEndObject */
+    struct scene_block block;         /* rtBegin .. rtEnd */
 
-    /* Textures (texture.c).  A triangle records texture_binding when
-     * texture_2d is enabled (begin_end.c, current_material). */
-    struct scene_textures textures;
+    /* Texture state (texture.c); the textures are the scene's.  A
+     * triangle records texture_binding when texture_2d is enabled
+     * (begin_end.c, triangle_state). */
     uint32_t texture_binding; /* RT_TEXTURE_BINDING_2D; 0: none */
     int texture_2d;           /* rtEnable(RT_TEXTURE_2D) */
 
     /* Vertex arrays (array.c). */
     struct client_array vertex_array, normal_array, color_array, texcoord_array;
 
-    /* Objects and the frame (object.c, instance.c).  frame_number counts
-     * rtRenderFrame calls; classification compares change stamps to it. */
-    uint64_t frame_number;
-    unsigned default_strategy; /* rtRenderParameteri(RT_UPDATE_STRATEGY) */
-    uint64_t prepare_count;    /* scene preparations so far (visit stamps) */
-    struct scene_update_config update_config; /* valid during a frame or query */
-    struct accel_restructure_params restructure_params; /* measured on first use */
-    int restructure_measured;
-    uint64_t last_frame_rays; /* rays of the last rtRenderFrame */
-    double ms_per_test;       /* traversal step time, measured per frame */
-    struct scene_async_builder async; /* thread started by the first async object */
-    int build_threads;                /* K of build_threads=K */
-    int toplevel_paper004;            /* toplevel=paper004 */
-    struct scene_objects objects;
-    struct scene_frame frame;
+    /* Configuration the scene was created with (rtCreateContext). */
+    int build_threads;      /* K of build_threads=K */
+    int toplevel_cellsplit; /* toplevel=cellsplit */
+
+    /* Everything an API-less process could hold: objects, instances,
+     * textures, updates (scene/scene.h). */
+    struct scene scene;
 
     /* Rendering (appearance.c, frame.c). */
     struct render_state render;
@@ -178,8 +146,10 @@ int rt_strategy_is_valid(RTenum s);
 /* The top of the current matrix stack. */
 double *rt_current_matrix(struct rt_context *ctx);
 
-/* Commits the frame's instances and builds the top level (frame.c).
- * Returns 0, or -1 after recording RT_OUT_OF_MEMORY. */
+/* Prepares the scene for a frame or query (scene_prepare_toplevel and
+ * scene_prepare_objects, starting the pool between them) and adds the
+ * scene's statistics to ctx->stats (frame.c).  Returns 0, or -1 after
+ * recording RT_OUT_OF_MEMORY. */
 int rt_prepare_scene(struct rt_context *ctx, const char *caller);
 
 /* Describes the committed scene and the render state for the renderer,

@@ -1,6 +1,7 @@
 /*
  * frame.c - rtViewport, rtClearColor, rtRenderFrame, rtFinish,
- * rtReadPixels, and the scene preparation shared with the ray queries.
+ * rtReadPixels, and the error reporting around the scene preparation
+ * (scene/prepare.c) shared with the ray queries.
  */
 #include <math.h>
 #include <string.h>
@@ -14,9 +15,9 @@ void rtViewport(RTint x, RTint y, RTsizei width, RTsizei height)
     GET_CURRENT_CONTEXT(ctx);
     if (!ctx || rt_check_outside_begin(ctx, "rtViewport"))
         return;
-    if (x < 0 || y < 0 || width < 0 || height < 0 || width > RT_MAX_VIEWPORT ||
-        height > RT_MAX_VIEWPORT || x > RT_MAX_VIEWPORT - width ||
-        y > RT_MAX_VIEWPORT - height) {
+    if (x < 0 || y < 0 || width < 0 || height < 0 || width > API_MAX_VIEWPORT ||
+        height > API_MAX_VIEWPORT || x > API_MAX_VIEWPORT - width ||
+        y > API_MAX_VIEWPORT - height) {
         rt_error(ctx, RT_INVALID_VALUE, "rtViewport(x=%d, y=%d, width=%d, height=%d)", x, y,
                  width, height);
         return;
@@ -40,113 +41,40 @@ void rtClearColor(RTfloat r, RTfloat g, RTfloat b, RTfloat a)
         ctx->render.clear_color[i] = fminf(fmaxf(c[i], 0.0f), 1.0f);
 }
 
-/* The class of an object this frame (paper 004 sec. 3): hints override;
- * otherwise geometry changed since its first definition in this frame
- * means unstructured, an instance moved this frame means affine, and
- * everything else is static. */
-static unsigned classify(const struct scene_object *object, uint64_t frame)
+/* The scene's work of the preparation goes into the frame's statistics. */
+static void add_scene_stats(struct render_stats *stats, const struct scene_stats *s)
 {
-    if (object->class_hint != RT_AUTOMATIC)
-        return object->class_hint;
-    if (object->changed_frame == frame && object->serial > 1)
-        return RT_UNSTRUCTURED;
-    if (object->moved_frame == frame)
-        return RT_AFFINE;
-    return RT_STATIC;
+    stats->toplevel_builds += s->toplevel_builds;
+    stats->toplevel_ms += s->toplevel_ms;
+    stats->object_updates += s->object_updates;
+    stats->update_ms += s->update_ms;
 }
 
-/* Rays expected to reach an object next frame: the last frame's rays (or
- * one per viewport pixel before the first) times the largest ratio of an
- * instance box's area to the scene box's area, the SAH's probability of
- * a ray through the scene hitting it. */
-static double expected_rays(const struct rt_context *ctx, const struct scene_object *object)
+int rt_prepare_scene(struct rt_context *ctx, const char *caller)
 {
-    const struct scene_frame *f = &ctx->frame;
-    double rays = ctx->last_frame_rays
-                      ? (double)ctx->last_frame_rays
-                      : (double)ctx->render.viewport[2] * (double)ctx->render.viewport[3];
-    if (!f->top_valid || f->top.node_count == 0)
-        return rays;
-    struct aabb root;
-    memcpy(root.min, f->top.nodes[0].aabb_min, sizeof(root.min));
-    memcpy(root.max, f->top.nodes[0].aabb_max, sizeof(root.max));
-    double root_area = aabb_half_area(&root), best = 0.0;
-    for (uint32_t i = 0; i < f->committed.count; i++) {
-        if (f->committed.items[i].object != object)
-            continue;
-        struct aabb box = scene_instance_box(&f->committed.items[i]);
-        double a = aabb_half_area(&box);
-        best = a > best ? a : best;
+    struct scene *scene = &ctx->scene;
+    if (scene_prepare_toplevel(scene) != SCENE_OK) {
+        rt_error(ctx, RT_OUT_OF_MEMORY, "%s: out of memory building the top level", caller);
+        return -1;
     }
-    return root_area > 0.0 ? rays * fmin(1.0, best / root_area) : rays;
-}
-
-/* Classifies the scene's objects and brings the structures that exist but
- * are stale up to date, in parallel where that pays (structures never
- * built stay lazy: they are built when a ray first needs them).  Returns
- * 0, or -1 after recording RT_OUT_OF_MEMORY. */
-static int update_objects(struct rt_context *ctx, const char *caller)
-{
-    uint64_t stamp = ++ctx->prepare_count;
-    const struct scene_instance_list *list = &ctx->frame.committed;
-    int failed = 0;
-    for (uint32_t i = 0; i < list->count; i++) {
-        struct scene_object *object = list->items[i].object;
-        if (object->visit_stamp == stamp)
-            continue;
-        object->visit_stamp = stamp;
-        object->current_class = classify(object, ctx->frame_number);
-        if (!object->accel || object->accel->serial == object->serial)
-            continue;
-        object->expected_rays = expected_rays(ctx, object);
-        if (scene_object_strategy(object, ctx->default_strategy) == RT_RESTRUCTURE &&
-            !ctx->restructure_measured) {
-            /* Paper 001 sec. 6.1 measures its constants at start-up; we
-             * do it when the first object needs them. */
-            accel_restructure_measure_constants(&ctx->restructure_params);
-            ctx->restructure_measured = 1;
-        }
-        /* Only real updates are timed: a static scene's frames report
-         * exactly 0 ms of update time. */
-        double start = rt_now_ms();
-        if (scene_object_update(object, &ctx->update_config))
-            ctx->stats.object_updates++;
-        else
-            failed = 1;
-        ctx->stats.update_ms += rt_now_ms() - start;
-    }
-    if (failed) {
+    /* Before the first frame, one ray per viewport pixel. */
+    double pixels = (double)ctx->render.viewport[2] * (double)ctx->render.viewport[3];
+    enum scene_status status =
+        scene_prepare_objects(scene, rt_context_pool(ctx), pixels, NULL);
+    add_scene_stats(&ctx->stats, &scene->stats);
+    if (status != SCENE_OK) {
         rt_error(ctx, RT_OUT_OF_MEMORY, "%s: out of memory updating an object", caller);
         return -1;
     }
     return 0;
 }
 
-int rt_prepare_scene(struct rt_context *ctx, const char *caller)
-{
-    double start = rt_now_ms();
-    int built = 0;
-    if (scene_frame_prepare(&ctx->frame, &ctx->build_params, ctx->frame_number, &built)) {
-        rt_error(ctx, RT_OUT_OF_MEMORY, "%s: out of memory building the top level", caller);
-        return -1;
-    }
-    ctx->stats.toplevel_builds += (uint64_t)built;
-    ctx->stats.toplevel_ms += rt_now_ms() - start;
-    ctx->update_config.static_params = &ctx->build_params;
-    ctx->update_config.default_strategy = ctx->default_strategy;
-    ctx->update_config.pool = rt_context_pool(ctx);
-    ctx->update_config.restructure = &ctx->restructure_params;
-    ctx->update_config.async = &ctx->async;
-    ctx->update_config.ms_per_test = ctx->ms_per_test;
-    return update_objects(ctx, caller);
-}
-
 void rt_render_job(struct rt_context *ctx, struct render_job *job)
 {
     job->state = &ctx->render;
-    job->frame = &ctx->frame;
-    job->update = &ctx->update_config;
-    job->textures = &ctx->textures;
+    job->frame = &ctx->scene.frame;
+    job->update = &ctx->scene.update_config;
+    job->textures = &ctx->scene.textures;
     job->pool = rt_context_pool(ctx);
     job->threads = rt_pool_threads(job->pool);
 }
@@ -175,15 +103,8 @@ void rtRenderFrame(void)
     ctx->render.framebuffer = fb;
     ctx->render.fb_width = fb_width;
     ctx->render.fb_height = fb_height;
-    scene_frame_end(&ctx->frame);
-    ctx->frame_number++;
-    ctx->last_frame_rays = ctx->stats.rays;
-    /* The exchange rate of the automatic strategy: time per traversal
-     * step, measured over the frame's tracing (updates excluded). */
-    uint64_t tests = ctx->stats.node_tests + ctx->stats.triangle_tests;
-    double trace_ms = ctx->stats.render_ms - ctx->stats.update_ms - ctx->stats.toplevel_ms;
-    if (tests > 10000 && trace_ms > 0.0)
-        ctx->ms_per_test = trace_ms / (double)tests;
+    scene_end_frame(&ctx->scene, ctx->stats.rays, ctx->stats.node_tests + ctx->stats.triangle_tests,
+                    ctx->stats.render_ms - ctx->stats.update_ms - ctx->stats.toplevel_ms);
     ctx->stats.render_ms = rt_now_ms() - start;
 }
 

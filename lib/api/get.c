@@ -75,22 +75,22 @@ static enum value_kind state_values(const struct rt_context *ctx, RTenum pname, 
         v[0] = ctx->build_params.bins;
         return VALUE_INT;
     case RT_OBJECT_COUNT:
-        v[0] = ctx->objects.defined;
+        v[0] = ctx->scene.objects.defined;
         return VALUE_INT;
     case RT_INSTANCE_COUNT:
-        v[0] = ctx->frame.open ? ctx->frame.pending.count : ctx->frame.committed.count;
+        v[0] = ctx->scene.frame.open ? ctx->scene.frame.pending.count : ctx->scene.frame.committed.count;
         return VALUE_INT;
     case RT_WORKER_THREADS_RUNNING:
         v[0] = ctx->pool ? rt_pool_threads(ctx->pool) - 1 : 0;
         return VALUE_INT;
     case RT_UPDATE_STRATEGY:
-        v[0] = ctx->default_strategy;
+        v[0] = ctx->scene.default_strategy;
         return VALUE_INT;
     case RT_BUILD_THREADS:
         v[0] = ctx->build_threads;
         return VALUE_INT;
     case RT_BUILD_THREADS_RUNNING:
-        v[0] = scene_async_threads_running(&ctx->async);
+        v[0] = scene_async_threads_running(&ctx->scene.async);
         return VALUE_INT;
     case RT_SHADING_MODE:
         v[0] = ctx->render.shading == RENDER_WHITTED ? RT_WHITTED : RT_EYE_LIGHT;

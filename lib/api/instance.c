@@ -15,7 +15,7 @@ void rtInstantiateObject(RTuint name)
     GET_CURRENT_CONTEXT(ctx);
     if (!ctx || rt_check_outside_object(ctx, "rtInstantiateObject"))
         return;
-    struct scene_object *object = scene_objects_lookup(&ctx->objects, name);
+    struct scene_object *object = scene_objects_lookup(&ctx->scene.objects, name);
     if (!object || !object->defined) {
         rt_error(ctx, RT_INVALID_VALUE, "rtInstantiateObject(object=%u): not an object", name);
         return;
@@ -35,7 +35,7 @@ void rtInstantiateObject(RTuint name)
                  "rtInstantiateObject(object=%u): the modelview matrix is singular", name);
         return;
     }
-    if (scene_frame_add_instance(&ctx->frame, object, m, inverse, normal))
+    if (scene_frame_add_instance(&ctx->scene.frame, object, m, inverse, normal))
         rt_error(ctx, RT_OUT_OF_MEMORY, "rtInstantiateObject(object=%u): out of memory", name);
 }
 
@@ -44,5 +44,5 @@ void rtBeginFrame(void)
     GET_CURRENT_CONTEXT(ctx);
     if (!ctx || rt_check_outside_object(ctx, "rtBeginFrame"))
         return;
-    scene_frame_begin(&ctx->frame);
+    scene_frame_begin(&ctx->scene.frame);
 }

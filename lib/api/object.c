@@ -21,7 +21,7 @@ void rtGenObjects(RTsizei n, RTuint *names)
         rt_error(ctx, RT_INVALID_VALUE, "rtGenObjects(n=%d, objects=%p)", n, (void *)names);
         return;
     }
-    if (scene_objects_generate(&ctx->objects, (uint32_t)n, names))
+    if (scene_objects_generate(&ctx->scene.objects, (uint32_t)n, names))
         rt_error(ctx, RT_OUT_OF_MEMORY, "rtGenObjects(n=%d): out of memory", n);
 }
 
@@ -40,7 +40,7 @@ void rtNewObject(RTuint name)
         rt_error(ctx, RT_INVALID_VALUE, "rtNewObject(0): 0 is not an object name");
         return;
     }
-    struct object_recording *rec = &ctx->recording;
+    struct scene_recording *rec = &ctx->recording;
     scene_mesh_release(&rec->mesh);
     rec->active = 1;
     rec->name = name;
@@ -53,7 +53,7 @@ void rtEndObject(void)
     GET_CURRENT_CONTEXT(ctx);
     if (!ctx || rt_check_outside_begin(ctx, "rtEndObject"))
         return;
-    struct object_recording *rec = &ctx->recording;
+    struct scene_recording *rec = &ctx->recording;
     if (!rec->active) {
         rt_error(ctx, RT_INVALID_OPERATION, "rtEndObject: no matching rtNewObject");
         return;
@@ -65,7 +65,7 @@ void rtEndObject(void)
         rec->active = 0;
         return;
     }
-    struct scene_object *object = scene_objects_get_or_create(&ctx->objects, rec->name);
+    struct scene_object *object = scene_objects_get_or_create(&ctx->scene.objects, rec->name);
     if (!object) {
         rt_error(ctx, RT_OUT_OF_MEMORY, "rtEndObject: out of memory creating object %u",
                  rec->name);
@@ -74,7 +74,7 @@ void rtEndObject(void)
         return;
     }
     scene_mesh_compute_bounds(&rec->mesh);
-    scene_object_define(&ctx->objects, object, &rec->mesh, ctx->frame_number);
+    scene_define_object(&ctx->scene, object, &rec->mesh);
     rec->active = 0;
 }
 
@@ -88,14 +88,9 @@ void rtDeleteObjects(RTsizei n, const RTuint *names)
                  (const void *)names);
         return;
     }
-    for (RTsizei i = 0; i < n; i++) {
-        struct scene_object *object = scene_objects_lookup(&ctx->objects, names[i]);
-        if (!object)
-            continue; /* 0 and unknown names are ignored, as glDeleteLists */
-        scene_frame_forget_object(&ctx->frame, object);
-        scene_async_cancel(&ctx->async, object);
-        scene_objects_remove(&ctx->objects, names[i]);
-    }
+    /* 0 and unknown names are ignored, as glDeleteLists. */
+    for (RTsizei i = 0; i < n; i++)
+        scene_delete_object(&ctx->scene, names[i]);
 }
 
 RTboolean rtIsObject(RTuint name)
@@ -103,7 +98,7 @@ RTboolean rtIsObject(RTuint name)
     GET_CURRENT_CONTEXT(ctx);
     if (!ctx || rt_check_outside_begin(ctx, "rtIsObject"))
         return RT_FALSE;
-    const struct scene_object *object = scene_objects_lookup(&ctx->objects, name);
+    const struct scene_object *object = scene_objects_lookup(&ctx->scene.objects, name);
     return object && object->defined ? RT_TRUE : RT_FALSE;
 }
 
@@ -111,7 +106,7 @@ RTboolean rtIsObject(RTuint name)
 static const struct scene_object *query_object(struct rt_context *ctx, const char *caller,
                                                RTuint name, const void *params)
 {
-    const struct scene_object *object = scene_objects_lookup(&ctx->objects, name);
+    const struct scene_object *object = scene_objects_lookup(&ctx->scene.objects, name);
     if (!object || !object->defined) {
         rt_error(ctx, RT_INVALID_VALUE, "%s(object=%u): not an object", caller, name);
         return NULL;
@@ -121,59 +116,6 @@ static const struct scene_object *query_object(struct rt_context *ctx, const cha
         return NULL;
     }
     return object;
-}
-
-/* Values of a per-object query (pname already validated) as doubles;
- * returns the count. */
-static int object_values(const struct scene_object *object, RTenum pname, double v[6])
-{
-    const struct scene_accel *accel = scene_object_peek(object);
-    switch (pname) {
-    case RT_OBJECT_TRIANGLES:
-        v[0] = object->mesh.tri_count;
-        return 1;
-    case RT_OBJECT_BUILT:
-        /* A structure kept stale for a refit does not count until the
-         * update that brings it up to date. */
-        v[0] = accel && accel->serial == object->serial ? 1.0 : 0.0;
-        return 1;
-    case RT_OBJECT_BVH_NODES:
-        v[0] = accel ? accel->bvh.node_count : 0;
-        return 1;
-    case RT_OBJECT_SAH_COST:
-        v[0] = accel ? accel->sah_cost : 0.0;
-        return 1;
-    case RT_OBJECT_BUILD_TIME:
-        v[0] = accel ? accel->build_ms : 0.0;
-        return 1;
-    case RT_OBJECT_CLASS:
-        v[0] = object->current_class;
-        return 1;
-    case RT_UPDATE_STRATEGY:
-        v[0] = object->last_strategy ? object->last_strategy : object->strategy_hint;
-        return 1;
-    case RT_OBJECT_REBUILDS:
-        v[0] = (double)object->rebuilds;
-        return 1;
-    case RT_OBJECT_REFITS:
-        v[0] = (double)object->refits;
-        return 1;
-    case RT_OBJECT_VERTICES:
-        v[0] = object->mesh.vertex_count;
-        return 1;
-    case RT_OBJECT_UPDATE_TIME:
-        v[0] = object->update_ms;
-        return 1;
-    case RT_OBJECT_BOUNDS:
-        for (int k = 0; k < 3; k++) {
-            int empty = aabb_is_empty(&object->mesh.bounds);
-            v[k] = empty ? 0.0 : object->mesh.bounds.min[k];
-            v[3 + k] = empty ? 0.0 : object->mesh.bounds.max[k];
-        }
-        return 6;
-    default:
-        return 0;
-    }
 }
 
 static int pname_is_valid(RTenum pname, int as_float)
@@ -211,7 +153,7 @@ void rtGetObjectiv(RTuint name, RTenum pname, RTint *params)
     if (!object)
         return;
     double v[6];
-    int n = object_values(object, pname, v);
+    int n = scene_object_values(object, pname, v);
     for (int i = 0; i < n; i++)
         params[i] = v[i] >= INT_MAX ? INT_MAX : v[i] <= INT_MIN ? INT_MIN : (RTint)v[i];
 }
@@ -229,7 +171,7 @@ void rtGetObjectfv(RTuint name, RTenum pname, RTfloat *params)
     if (!object)
         return;
     double v[6];
-    int n = object_values(object, pname, v);
+    int n = scene_object_values(object, pname, v);
     for (int i = 0; i < n; i++)
         params[i] = (RTfloat)v[i];
 }
@@ -273,7 +215,7 @@ void rtObjectParameteri(RTuint name, RTenum pname, RTint param)
                  value);
         return;
     }
-    struct scene_object *object = scene_objects_lookup(&ctx->objects, name);
+    struct scene_object *object = scene_objects_lookup(&ctx->scene.objects, name);
     if (!object || !object->defined) {
         rt_error(ctx, RT_INVALID_VALUE, "rtObjectParameteri(object=%u): not an object", name);
         return;
@@ -282,20 +224,6 @@ void rtObjectParameteri(RTuint name, RTenum pname, RTint param)
         object->class_hint = value;
     else
         object->strategy_hint = value;
-}
-
-/* Reads component c of element i of a float or double array. */
-static double read_component(const void *data, RTenum type, size_t stride, size_t i, int c)
-{
-    const unsigned char *p = (const unsigned char *)data + i * stride;
-    if (type == RT_FLOAT) {
-        float f;
-        memcpy(&f, p + c * sizeof(float), sizeof(f));
-        return f;
-    }
-    double d;
-    memcpy(&d, p + c * sizeof(double), sizeof(d));
-    return d;
 }
 
 void rtUpdateVertices(RTuint name, RTenum array, RTint first, RTsizei count, RTenum type,
@@ -312,7 +240,7 @@ void rtUpdateVertices(RTuint name, RTenum array, RTint first, RTsizei count, RTe
         rt_error(ctx, RT_INVALID_ENUM, "rtUpdateVertices(type=0x%x)", type);
         return;
     }
-    struct scene_object *object = scene_objects_lookup(&ctx->objects, name);
+    struct scene_object *object = scene_objects_lookup(&ctx->scene.objects, name);
     if (!object || !object->defined) {
         rt_error(ctx, RT_INVALID_VALUE, "rtUpdateVertices(object=%u): not an object", name);
         return;
@@ -331,23 +259,13 @@ void rtUpdateVertices(RTuint name, RTenum array, RTint first, RTsizei count, RTe
     /* Validate the whole batch first: a rejected call changes nothing. */
     for (RTsizei i = 0; i < count; i++)
         for (int c = 0; c < 3; c++) {
-            double v = read_component(data, type, step, (size_t)i, c);
+            double v = scene_array_component(data, type == RT_DOUBLE, step, (size_t)i, c);
             if (!isfinite((float)v)) {
                 rt_error(ctx, RT_INVALID_VALUE,
                          "rtUpdateVertices: element %d is not finite as a float", i);
                 return;
             }
         }
-    if (count == 0)
-        return; /* nothing changes, so nothing is stale (Mesa compares first) */
-    float *dst = array == RT_VERTEX_ARRAY ? mesh->positions : mesh->normals;
-    for (RTsizei i = 0; i < count; i++)
-        for (int c = 0; c < 3; c++)
-            dst[3 * ((size_t)first + (size_t)i) + c] =
-                (float)read_component(data, type, step, (size_t)i, c);
-    if (array == RT_NORMAL_ARRAY) {
-        mesh->has_normals = 1;
-        return; /* shading data only: nothing to update for traversal */
-    }
-    scene_object_touch(object, ctx->frame_number);
+    scene_update_vertices(&ctx->scene, object, array == RT_NORMAL_ARRAY, (uint32_t)first,
+                          (uint32_t)count, data, type == RT_DOUBLE, step);
 }

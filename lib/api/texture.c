@@ -33,7 +33,7 @@ void rtGenTextures(RTsizei n, RTuint *textures)
                  (void *)textures);
         return;
     }
-    if (scene_textures_generate(&ctx->textures, (uint32_t)n, textures))
+    if (scene_textures_generate(&ctx->scene.textures, (uint32_t)n, textures))
         rt_error(ctx, RT_OUT_OF_MEMORY, "rtGenTextures(n=%d): out of memory", n);
 }
 
@@ -51,7 +51,7 @@ void rtDeleteTextures(RTsizei n, const RTuint *textures)
         /* 0 and unknown names are ignored, as glDeleteTextures does. */
         if (textures[i] != 0 && textures[i] == ctx->texture_binding)
             ctx->texture_binding = 0;
-        scene_textures_remove(&ctx->textures, textures[i]);
+        scene_textures_remove(&ctx->scene.textures, textures[i]);
     }
 }
 
@@ -61,7 +61,7 @@ RTboolean rtIsTexture(RTuint texture)
     if (!ctx || rt_check_outside_begin(ctx, "rtIsTexture"))
         return RT_FALSE;
     /* A name from rtGenTextures is a texture only once bound (GL 1.1). */
-    const struct scene_texture *tex = scene_textures_lookup(&ctx->textures, texture);
+    const struct scene_texture *tex = scene_textures_lookup(&ctx->scene.textures, texture);
     return tex && tex->created ? RT_TRUE : RT_FALSE;
 }
 
@@ -75,7 +75,7 @@ void rtBindTexture(RTenum target, RTuint texture)
         return;
     }
     if (texture != 0) {
-        struct scene_texture *tex = scene_textures_get_or_create(&ctx->textures, texture);
+        struct scene_texture *tex = scene_textures_get_or_create(&ctx->scene.textures, texture);
         if (!tex) {
             rt_error(ctx, RT_OUT_OF_MEMORY, "rtBindTexture(texture=%u): out of memory",
                      texture);
@@ -92,7 +92,7 @@ static struct scene_texture *bound_texture(struct rt_context *ctx, const char *c
 {
     if (rt_check_outside_begin(ctx, caller))
         return NULL;
-    struct scene_texture *tex = scene_textures_lookup(&ctx->textures, ctx->texture_binding);
+    struct scene_texture *tex = scene_textures_lookup(&ctx->scene.textures, ctx->texture_binding);
     if (!tex)
         rt_error(ctx, RT_INVALID_OPERATION, "%s: no texture is bound (bind a non-zero name)",
                  caller);

@@ -173,7 +173,7 @@ static int build_top(struct scene_frame *frame, const struct bvh_build_params *p
         ti->object = inst->object;
         n++;
     }
-    int status = frame->toplevel_paper004 ? accel_build_toplevel_paper004(&top, boxes, n)
+    int status = frame->toplevel_cellsplit ? accel_build_toplevel_cellsplit(&top, boxes, n)
                                           : accel_build(&top, boxes, n, params);
     if (status)
         goto fail;

@@ -43,9 +43,9 @@ struct scene_frame {
 
     /* The top level over `committed`; valid when top_valid.  Built with
      * the binned SAH over instance boxes, or with paper 004 sec. 4.5's
-     * rule when toplevel_paper004 is set ("toplevel=paper004"). */
+     * rule when toplevel_cellsplit is set ("toplevel=cellsplit"). */
     int top_valid;
-    int toplevel_paper004;
+    int toplevel_cellsplit;
     struct bvh top;
     struct trace_instance *trace_instances; /* one per non-empty instance */
     uint32_t trace_instance_count;

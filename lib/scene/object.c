@@ -117,3 +117,54 @@ const struct scene_accel *scene_object_peek(const struct scene_object *object)
 {
     return rt_atomic_load_acquire(&object->accel);
 }
+
+int scene_object_values(const struct scene_object *object, unsigned pname, double v[6])
+{
+    const struct scene_accel *accel = scene_object_peek(object);
+    switch (pname) {
+    case RT_OBJECT_TRIANGLES:
+        v[0] = object->mesh.tri_count;
+        return 1;
+    case RT_OBJECT_BUILT:
+        /* A structure kept stale for a refit does not count until the
+         * update that brings it up to date. */
+        v[0] = accel && accel->serial == object->serial ? 1.0 : 0.0;
+        return 1;
+    case RT_OBJECT_BVH_NODES:
+        v[0] = accel ? accel->bvh.node_count : 0;
+        return 1;
+    case RT_OBJECT_SAH_COST:
+        v[0] = accel ? accel->sah_cost : 0.0;
+        return 1;
+    case RT_OBJECT_BUILD_TIME:
+        v[0] = accel ? accel->build_ms : 0.0;
+        return 1;
+    case RT_OBJECT_CLASS:
+        v[0] = object->current_class;
+        return 1;
+    case RT_UPDATE_STRATEGY:
+        v[0] = object->last_strategy ? object->last_strategy : object->strategy_hint;
+        return 1;
+    case RT_OBJECT_REBUILDS:
+        v[0] = (double)object->rebuilds;
+        return 1;
+    case RT_OBJECT_REFITS:
+        v[0] = (double)object->refits;
+        return 1;
+    case RT_OBJECT_VERTICES:
+        v[0] = object->mesh.vertex_count;
+        return 1;
+    case RT_OBJECT_UPDATE_TIME:
+        v[0] = object->update_ms;
+        return 1;
+    case RT_OBJECT_BOUNDS:
+        for (int k = 0; k < 3; k++) {
+            int empty = aabb_is_empty(&object->mesh.bounds);
+            v[k] = empty ? 0.0 : object->mesh.bounds.min[k];
+            v[3 + k] = empty ? 0.0 : object->mesh.bounds.max[k];
+        }
+        return 6;
+    default:
+        return 0;
+    }
+}

@@ -94,4 +94,10 @@ void scene_object_touch(struct scene_object *object, uint64_t frame);
 /* The acceleration structure if already built, else NULL (no build). */
 const struct scene_accel *scene_object_peek(const struct scene_object *object);
 
+/* The value of a per-object query (rtGetObject*; pname one of the
+ * RT_OBJECT_* names or RT_UPDATE_STRATEGY, already validated) as
+ * doubles; returns how many were written (1, or 6 for the bounds, 0 for
+ * an unknown pname). */
+int scene_object_values(const struct scene_object *object, unsigned pname, double v[6]);
+
 #endif
