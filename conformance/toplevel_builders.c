@@ -114,5 +114,7 @@ int main(void)
     CHECK_INT(differ, 0);
     tu_section("bad configuration");
     CHECK(rtCreateContext("toplevel=bsp") == NULL);
+    /* The old name of the cell-split rule is gone, not an alias. */
+    CHECK(rtCreateContext("toplevel=paper004") == NULL);
     return test_summary("toplevel_builders");
 }
