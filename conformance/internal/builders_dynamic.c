@@ -1,7 +1,7 @@
 /*
- * builders_dynamic.c - the rebuild-every-frame builders against bvh.h's
+ * builders_dynamic.c - the rebuild-every-frame builders against bvh_build.h's
  * contract: the median builder and the looser leaf criterion
- * (build_more.h) and the two-stage parallel build in its four
+ * (build_median.h) and the two-stage parallel build in its four
  * combinations (build_parallel.h), here on the calling thread only
  * (parallel_build_threads.c runs them on pools).
  *
@@ -24,9 +24,9 @@
 static int failures;
 
 #include "accel/build_internal.h"
-#include "accel/build_more.h"
+#include "accel/build_median.h"
 #include "accel/build_parallel.h"
-#include "trace/bvh_layout.h"
+#include "accel/bvh_build.h"
 #include "accel_testgeo.h"
 #include "base/alloc.h"
 #include "base/timer.h"

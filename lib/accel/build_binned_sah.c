@@ -23,11 +23,11 @@
 #include <string.h>
 
 #include "accel/build_internal.h"
-#include "accel/build_more.h"
+#include "accel/build_median.h"
 #include "accel/vec4.h"
 #include "base/alloc.h"
 
-/* Primitives travel as struct build_ref (build_more.h): the box plus the
+/* Primitives travel as struct build_ref (build_median.h): the box plus the
  * caller's index in lane 3 of lo, 32 bytes, loaded as two vec4. */
 
 /* The bins of all three axes (paper 000 sec. 4: "we track not only the

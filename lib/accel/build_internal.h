@@ -5,7 +5,7 @@
  * Both builders work the same way: a node owns a contiguous range
  * [begin, end) of a primitive array that is partitioned in place; a split
  * allocates the two children as an adjacent pair (left = first, right =
- * first + 1, bvh.h's layout); a leaf records its range.  Nodes are numbered
+ * first + 1, bvh_layout.h's layout); a leaf records its range.  Nodes are numbered
  * in depth-first order, left subtree first.
  *
  * SAH comparisons are made on "costs times the node's area": with A the
@@ -22,7 +22,7 @@
 #include <string.h>
 
 #include "accel/vec4.h"
-#include "trace/bvh_layout.h"
+#include "accel/bvh_build.h"
 
 /* Writes the xyz lanes of lo and hi (box bounds kept in SIMD registers
  * by the binned, median and parallel builders) into *box. */

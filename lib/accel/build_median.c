@@ -1,6 +1,6 @@
 /*
  * build_median.c - the spatial-median ("BIH-style") builder and the looser
- * leaf criterion (build_more.h).
+ * leaf criterion (build_median.h).
  *
  * Paper 000 table 1 compares the sweep SAH, the binned SAH and a
  * "median-split BIH-style build" (Wachter and Keller 2006): the median
@@ -34,7 +34,7 @@
 #include <string.h>
 
 #include "accel/build_internal.h"
-#include "accel/build_more.h"
+#include "accel/build_median.h"
 #include "accel/vec4.h"
 #include "base/alloc.h"
 

@@ -3,7 +3,7 @@
  * paper 000 sec. 5).
  *
  * Setup: all threads convert the input boxes into refs (struct build_ref,
- * build_more.h) and reduce the root's box and centroid bounds.
+ * build_median.h) and reduce the root's box and centroid bounds.
  *
  * Stage 1 makes the top of the tree and a list of subtrees, each a
  * contiguous range of refs, until every subtree has at most subtree_max
@@ -28,7 +28,7 @@
  * counter; each is built by a serial builder, median subtrees directly
  * into a preassigned range of 2m - 1 nodes of a scratch array (a subtree
  * of m primitives needs at most that many), SAH subtrees by accel_build
- * on a copy of their boxes (the SAH builders of bvh.h allocate their own
+ * on a copy of their boxes (the SAH builders of bvh_build.h allocate their own
  * arrays; see the note at build_sah_subtree).
  *
  * Stage 3: the subtrees used fewer nodes than reserved, so they are
@@ -906,7 +906,7 @@ out:
 
 /*
  * An SAH subtree: accel_build over a copy of the subtree's boxes.  The
- * SAH builders of bvh.h take a box array and allocate their own nodes
+ * SAH builders of bvh_build.h take a box array and allocate their own nodes
  * (their internals are file-static), so this subtree is not built into
  * a preassigned range but into its own arrays.  The box copy, those
  * arrays (fresh pages) and stage 3's node copy make SAH+SAH on one

@@ -6,11 +6,11 @@
  * SAH split, its histogram filled by all threads) or by a uniform grid
  * over the centroids with BIH-like nodes over the grid cells.  Stage 2
  * builds the resulting subtrees, largest first, one per thread at a time,
- * with a serial builder: the binned (or sweep) SAH builder of bvh.h or
- * the median builder of build_more.h.  The combinations are the paper's
+ * with a serial builder: the binned (or sweep) SAH builder of bvh_build.h or
+ * the median builder of build_median.h.  The combinations are the paper's
  * "SAH+SAH" (binning, SAH), "grid+SAH" and "grid+BIH" (grid, median).
  *
- * Also declares the median builder (build_more.h), the serial rebuild
+ * Also declares the median builder (build_median.h), the serial rebuild
  * this file's grid+BIH parallelises.
  */
 #ifndef RT_ACCEL_BUILD_PARALLEL_H
@@ -18,8 +18,8 @@
 
 #include <stdint.h>
 
-#include "accel/build_more.h"
-#include "trace/bvh_layout.h"
+#include "accel/build_median.h"
+#include "accel/bvh_build.h"
 #include "base/pool.h"
 
 /* Stage 1 (paper 000 sec. 5, "Coarse Scene Partitioning"). */
@@ -31,7 +31,7 @@ enum bvh_partition {
 /* Stage 2 (paper 000 sec. 5, "Parallel subtree building"). */
 enum bvh_subtree_builder {
     BVH_SUBTREE_SAH,   /* accel_build with the build params (binned or sweep) */
-    BVH_SUBTREE_MEDIAN /* the median builder, build_more.h */
+    BVH_SUBTREE_MEDIAN /* the median builder, build_median.h */
 };
 
 struct bvh_parallel_params {
@@ -48,10 +48,10 @@ void bvh_parallel_params_default(struct bvh_parallel_params *params);
  * for accel_build (NULL: defaults; normalized); with BVH_SUBTREE_SAH,
  * params->builder picks the subtree builder, so the sweep builder can be
  * parallelised too.  params->leaf_growth is honoured by median subtrees
- * only (the SAH builders of bvh.h do not read it).  Unknown enum values
+ * only (the SAH builders of bvh_build.h do not read it).  Unknown enum values
  * in *parallel are taken as the defaults.
  *
- * Output contract as accel_build (bvh.h): every primitive in exactly one
+ * Output contract as accel_build (bvh_build.h): every primitive in exactly one
  * leaf, leaves of 1..max_leaf_size, depth <= BVH_MAX_DEPTH for any input,
  * children after their parent, node_count the number of reachable nodes
  * (the subtrees are built into preassigned ranges and then compacted), 0

@@ -98,7 +98,7 @@ static void refit_node(const struct bvh *bvh, uint32_t index, const struct refit
 /*
  * Post-order walk of the subtree at root with a fixed stack: each entry
  * is a node and how many of its children have been entered.  Depth <=
- * BVH_MAX_DEPTH (bvh.h) bounds the stack; a node whose children are out
+ * BVH_MAX_DEPTH (bvh_layout.h) bounds the stack; a node whose children are out
  * of range, or that would overflow the stack (both impossible for a valid
  * tree), is treated as done rather than followed.
  */

@@ -19,7 +19,7 @@
  *      exceeds its cost C_rebuild * k log2 k (sec. 4.3, 5.3; Alg. 1 lines
  *      12-21): the union of the two sub-BVHs' primitives is split by the
  *      plane of sec. 5.3 and each side gets a fresh SAH sub-BVH (sec. 5.4).
- * The result is an ordinary BVH in bvh.h's layout that satisfies
+ * The result is an ordinary BVH in bvh_layout.h's layout that satisfies
  * accel_build's contract, so the traversal of lib/trace runs on it
  * unchanged.  Where this implementation departs from the paper (no
  * per-node access time-stamps, no lazy construction, a few bounds the
@@ -37,7 +37,7 @@
 
 #include <stdint.h>
 
-#include "trace/bvh_layout.h"
+#include "accel/bvh_build.h"
 #include "base/aabb.h"
 
 /* A node pair of the pair-queue and an entry of the pair-heap; defined
@@ -104,7 +104,7 @@ struct accel_restructure_params {
      * tree's CM-IQ is undone (not in the paper, which trusts the
      * estimate of eq. 7; restructure.c explains).  0: the paper's rule. */
     int verify_cost;
-    /* Builder of the new sub-BVHs: the SAH builders of bvh.h (paper 001
+    /* Builder of the new sub-BVHs: the SAH builders of bvh_build.h (paper 001
      * sec. 5.4 uses an SAH build, [WH06]). */
     struct bvh_build_params build;
 };
@@ -199,7 +199,7 @@ void accel_restructure_measure_constants(struct accel_restructure_params *out);
 
 /*
  * One frame of selective restructuring.  bvh must satisfy accel_build's
- * contract (bvh.h) for bvh->prim_count primitives, which keep their
+ * contract (bvh_build.h) for bvh->prim_count primitives, which keep their
  * indices; prim_boxes[i] is primitive i's new box, finite and non-empty
  * (boxes that break this give a structurally valid tree with meaningless
  * bounds, as for accel_build).  state must have been initialized and be

@@ -6,7 +6,7 @@
 #include <stdint.h>
 
 #include "accel/build_internal.h"
-#include "accel/build_more.h"
+#include "accel/build_median.h"
 
 /* Total order for the object median: centroid on `axis`, then index
  * (build_float_order is total even for NaN, so the selection's scans

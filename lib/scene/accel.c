@@ -5,7 +5,7 @@
  */
 #include "scene/accel.h"
 
-#include "accel/build_more.h"
+#include "accel/build_median.h"
 #include "accel/build_parallel.h"
 #include "accel/refit.h"
 #include "base/alloc.h"
