@@ -691,3 +691,24 @@ void aff_tpa_eval(const struct aff_tpa_key *keys, int key_count, double t, float
     /* One key with t == t_0, a NaN t, or NaN key times: key 0. */
     tpa_copy(&keys[0], p, n);
 }
+
+void aff_matrix_identity(double m[16])
+{
+    for (int i = 0; i < 16; i++)
+        m[i] = i % 5 == 0 ? 1.0 : 0.0;
+}
+
+void aff_matrix_mul(double out[16], const double a[16], const double b[16])
+{
+    double product[16];
+    /* Element i is (row i % 4, column i / 4), a dot product of a row of a
+     * with a column of b, summed from 0.0 in this order as base/mat4.h
+     * sums it, so the loader's matrices are bit-identical to the core's
+     * (signed zeros included). */
+    for (int i = 0; i < 16; i++) {
+        const int row = i % 4, col = i / 4;
+        product[i] = 0.0 + a[row] * b[4 * col] + a[4 + row] * b[4 * col + 1] +
+                     a[8 + row] * b[4 * col + 2] + a[12 + row] * b[4 * col + 3];
+    }
+    memcpy(out, product, sizeof(product));
+}

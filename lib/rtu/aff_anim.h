@@ -112,6 +112,12 @@ int aff_visibility_eval(const struct aff_visibility *vis, double t);
 void aff_node_matrix(const struct aff_track *transl, const struct aff_track *rot,
                      const struct aff_track *scale, double t, double m[16]);
 
+/* The identity, and out = a * b (out may alias a or b), for the same
+ * column-major matrices.  rtu sees include/rt only, so the loader keeps
+ * its own two matrix helpers rather than the core's base/mat4.h. */
+void aff_matrix_identity(double m[16]);
+void aff_matrix_mul(double out[16], const double a[16], const double b[16]);
+
 /*
  * Camera (FORMAT.md sec. 8) at time t: eye = T(t), view direction =
  * R(t) (0,0,-1), up = R(t) (0,1,0).  A NULL transl gives eye (0,0,0) and a

@@ -19,7 +19,6 @@
  */
 #include "rtu/aff_internal.h"
 
-#include "base/mat4.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -289,7 +288,7 @@ static void mat_trs(double m[16], const float s[3], const float axis[3], float d
     r[2][0] = t * n[2] * n[0] - sn * n[1];
     r[2][1] = t * n[2] * n[1] + sn * n[0];
     r[2][2] = c + t * n[2] * n[2];
-    mat4_identity(m);
+    aff_matrix_identity(m);
     for (int row = 0; row < 3; row++) {
         for (int col = 0; col < 3; col++)
             m[col * 4 + row] = r[row][col] * (double)s[col];
@@ -758,7 +757,7 @@ static int parse_static_transform(struct parser *ps, struct reader *r)
         return -1;
     double m[16];
     mat_trs(m, &v[0], &v[3], v[6], &v[7]);
-    mat4_mul(ps->local, ps->local, m);
+    aff_matrix_mul(ps->local, ps->local, m);
     ps->local_index = -1;
     return 0;
 }
@@ -783,7 +782,7 @@ static int parse_animated_transform(struct parser *ps, struct reader *r)
     if (!(f->name = dup_string(name)))
         return out_of_memory(ps, r);
     ps->frame = d->frame_count_nodes++;
-    mat4_identity(ps->local);
+    aff_matrix_identity(ps->local);
     ps->local_index = -1;
     return 0;
 }
@@ -1285,7 +1284,7 @@ int aff_parse_text(const char *name, const char *text, size_t length, const char
     ps.error_size = error_size;
     ps.directory = directory;
     ps.material = -1;
-    mat4_identity(ps.local);
+    aff_matrix_identity(ps.local);
     ps.local_index = -1;
     if (error_size)
         error[0] = '\0';
@@ -1360,7 +1359,7 @@ int aff_frame_matrix(const struct aff_data *d, int f, double t, double (*cache)[
         double parent[16];
         int visible = 1;
         if (fr->parent < 0)
-            mat4_identity(parent);
+            aff_matrix_identity(parent);
         else
             visible = aff_frame_matrix(d, fr->parent, t, cache, state, parent);
         if (visible && fr->parent >= 0) {
@@ -1373,11 +1372,11 @@ int aff_frame_matrix(const struct aff_data *d, int f, double t, double (*cache)[
                 aff_node_matrix(a->has_transl ? &a->transl : NULL, a->has_rot ? &a->rot : NULL,
                                 a->has_scale ? &a->scale : NULL, t, node);
             else
-                mat4_identity(node);
-            mat4_mul(cache[f], parent, d->matrices[fr->matrix]);
-            mat4_mul(cache[f], cache[f], node);
+                aff_matrix_identity(node);
+            aff_matrix_mul(cache[f], parent, d->matrices[fr->matrix]);
+            aff_matrix_mul(cache[f], cache[f], node);
         } else if (visible) {
-            mat4_identity(cache[f]);
+            aff_matrix_identity(cache[f]);
         }
         if (visible)
             for (int k = 0; k < 16; k++)

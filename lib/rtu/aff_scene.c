@@ -25,7 +25,6 @@
 
 #include <rt/rtu.h>
 
-#include "base/mat4.h"
 #include "rtu/aff_internal.h"
 
 struct rtu_aff_scene {
@@ -41,6 +40,8 @@ struct rtu_aff_scene {
     double tpa_time; /* time of the animated vertices stored in the objects */
 };
 
+/* __thread is a GNU extension (gcc and clang have it; C11 spells it
+ * _Thread_local), as lib/base/atomic.h documents for the core library. */
 static __thread char aff_error[AFF_ERROR_SIZE];
 
 static void set_error(const char *fmt, ...)
@@ -130,7 +131,7 @@ static void record_triangles(const RTUaffscene *s, const struct aff_group *g,
     for (uint32_t b = 0; b < g->batch_count; b++) {
         const struct aff_batch *batch = &g->batches[b];
         double m[16];
-        mat4_mul(m, base, s->data.matrices[batch->matrix]);
+        aff_matrix_mul(m, base, s->data.matrices[batch->matrix]);
         rtLoadMatrixd(m);
         apply_state(s, rs, batch->material, batch->texture);
         rtBegin(RT_TRIANGLES);

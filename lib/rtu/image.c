@@ -58,6 +58,8 @@
 #define RTU_IMAGE_MAX_PIXELS (1L << 28)
 
 /* The reason the last rtuSaveImage/rtuLoadImage on this thread failed ("" after a success). */
+/* __thread is a GNU extension (gcc and clang have it; C11 spells it
+ * _Thread_local), as lib/base/atomic.h documents for the core library. */
 static __thread char image_error[RTU_IMAGE_ERROR_SIZE];
 
 static void set_error(const char *fmt, ...)
