@@ -22,7 +22,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "accel/build_more.h"
+#include "accel/build_median.h"
 #include "base/timer.h"
 #include "bench.h"
 
@@ -41,7 +41,7 @@
 struct builder_row {
     const char *label;
     const char *key; /* results.csv */
-    int median;      /* accel_build_median (build_more.h) instead of accel_build */
+    int median;      /* accel_build_median (build_median.h) instead of accel_build */
     enum bvh_builder builder;
     int bins;
 };

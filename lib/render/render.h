@@ -16,7 +16,7 @@
 #include <rt/rt.h>
 #include <stdint.h>
 
-#include "accel/bvh_build.h"
+#include "trace/bvh_layout.h"
 #include "base/pool.h"
 #include "scene/frame.h"
 #include "scene/texture.h"
