@@ -6,8 +6,9 @@
  * IEEE single-precision operation lane by lane, and min/max follow the
  * minps/maxps rule (a < b ? a : b, a > b ? a : b: the second operand when
  * the comparison is unordered), so a tree built on any machine is the same
- * tree.  Define RT_NO_SIMD to force the C path (that is how the C path is
- * tested on x86).
+ * tree.  Define RT_NO_SIMD (CMake option RT_NO_SIMD=ON) to force the C
+ * path; scripts/test.sh's ThreadSanitizer suite builds that way, so the C
+ * path runs the builder tests labelled "threads" on x86.
  *
  * Boxes are kept as two vec4 (min, max) whose fourth lane is ignored.
  */
