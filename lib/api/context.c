@@ -180,7 +180,7 @@ void rtDestroyContext(RTcontext ctx)
     rt_pool_destroy(ctx->pool);
     scene_release(&ctx->scene);
     scene_mesh_release(&ctx->recording.mesh);
-    rt_free(ctx->render.framebuffer);
+    render_framebuffer_release(&ctx->render.fb);
     rt_free(ctx);
 }
 

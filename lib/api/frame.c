@@ -7,7 +7,6 @@
 #include <string.h>
 
 #include "api/context.h"
-#include "base/alloc.h"
 #include "base/timer.h"
 
 void rtViewport(RTint x, RTint y, RTsizei width, RTsizei height)
@@ -94,15 +93,10 @@ void rtRenderFrame(void)
            sizeof(ctx->render.projection));
     struct render_job job;
     rt_render_job(ctx, &job);
-    float *fb = NULL;
-    if (render_frame(&job, fb_width, fb_height, &fb, &ctx->stats)) {
+    if (render_frame(&job, fb_width, fb_height, &ctx->render.fb, &ctx->stats)) {
         rt_error(ctx, RT_OUT_OF_MEMORY, "rtRenderFrame: out of memory");
         return;
     }
-    rt_free(ctx->render.framebuffer);
-    ctx->render.framebuffer = fb;
-    ctx->render.fb_width = fb_width;
-    ctx->render.fb_height = fb_height;
     scene_end_frame(&ctx->scene, ctx->stats.rays, ctx->stats.node_tests + ctx->stats.triangle_tests,
                     ctx->stats.render_ms - ctx->stats.update_ms - ctx->stats.toplevel_ms);
     ctx->stats.render_ms = rt_now_ms() - start;
@@ -131,17 +125,17 @@ void rtReadPixels(RTint x, RTint y, RTsizei width, RTsizei height, RTenum format
         rt_error(ctx, RT_INVALID_ENUM, "rtReadPixels(type=0x%x)", type);
         return;
     }
-    const struct render_state *r = &ctx->render;
-    if (!pixels || x < 0 || y < 0 || width < 0 || height < 0 || x > r->fb_width - width ||
-        y > r->fb_height - height) {
+    const struct render_framebuffer *fb = &ctx->render.fb;
+    if (!pixels || x < 0 || y < 0 || width < 0 || height < 0 || x > fb->width - width ||
+        y > fb->height - height) {
         rt_error(ctx, RT_INVALID_VALUE,
                  "rtReadPixels(x=%d, y=%d, width=%d, height=%d, pixels=%p): framebuffer is "
                  "%dx%d",
-                 x, y, width, height, pixels, r->fb_width, r->fb_height);
+                 x, y, width, height, pixels, fb->width, fb->height);
         return;
     }
     for (int row = 0; row < height; row++) {
-        const float *src = &r->framebuffer[4 * ((size_t)(y + row) * r->fb_width + x)];
+        const float *src = &fb->rgba[4 * ((size_t)(y + row) * fb->width + x)];
         size_t n = 4 * (size_t)width;
         size_t offset = (size_t)row * n;
         if (type == RT_FLOAT) {

@@ -12,41 +12,12 @@
 #include "base/timer.h"
 #include "render/shade.h"
 
-/* 16x16 pixel tiles: small enough to balance two to eight threads on
- * 640x480 (1200 tiles), large enough that the atomic counter is noise. */
-#define RENDER_TILE_SIZE 16
 /* Rays per work item of a query batch. */
 #define RENDER_QUERY_CHUNK 1024
 
-/* Per-worker counters on their own cache lines. */
-struct worker_counters {
-    struct trace_scene_counters c;
-    char pad[64];
-};
-
-struct render_shared {
-    const struct render_job *job;
-    struct trace_scene scene;
-    struct worker_counters *counters;
-    uint64_t builds;     /* atomic */
-    uint64_t build_us;   /* atomic */
-    int failed;          /* atomic: an object could not be built */
-    uint32_t next_item;  /* atomic work counter */
-    /* Frames. */
-    double inv_projection[16];
-    float *fb;
-    int fb_width;
-    int tiles_x, tiles_y;
-    /* Queries. */
-    int count;
-    const RTray *rays;
-    RThit *hits;
-    RTboolean *occluded;
-};
-
 static int acquire_object(void *user, void *object, struct trace_object_view *view)
 {
-    struct render_shared *sh = user;
+    struct render_pass *sh = user;
     /* The common case, an object already built, takes no lock and no
      * clock reading. */
     const struct scene_accel *accel = scene_object_peek(object);
@@ -72,7 +43,7 @@ static int acquire_object(void *user, void *object, struct trace_object_view *vi
     return 1;
 }
 
-static int shared_init(struct render_shared *sh, const struct render_job *job)
+static int shared_init(struct render_pass *sh, const struct render_job *job)
 {
     memset(sh, 0, sizeof(*sh));
     sh->job = job;
@@ -84,7 +55,7 @@ static int shared_init(struct render_shared *sh, const struct render_job *job)
     return sh->counters ? 0 : -1;
 }
 
-static void shared_finish(struct render_shared *sh, struct render_stats *stats)
+static void shared_finish(struct render_pass *sh, struct render_stats *stats)
 {
     int n = rt_pool_threads(sh->job->pool);
     for (int i = 0; i < n; i++) {
@@ -101,7 +72,7 @@ static void shared_finish(struct render_shared *sh, struct render_stats *stats)
 
 /* The near- and far-plane points under viewport position (x, y), in
  * pixels from the viewport's corner, through the inverse projection. */
-static int unproject(const struct render_shared *sh, double x, double y, double near_pt[3],
+static int unproject(const struct render_pass *sh, double x, double y, double near_pt[3],
                      double far_pt[3])
 {
     const int *vp = sh->job->state->viewport;
@@ -140,7 +111,7 @@ static double distance_to_line(const double q[3], const double p[3], const doubl
  * its x and y scale factors.  When a neighbour cannot be unprojected the
  * cone is {0, 0}: unfiltered textures, as before there were cones.
  */
-static int primary_ray(const struct render_shared *sh, int px, int py, float org[3],
+static int primary_ray(const struct render_pass *sh, int px, int py, float org[3],
                        float dir[3], float *tmax, struct shade_cone *cone)
 {
     double near_pt[3], far_pt[3];
@@ -173,36 +144,14 @@ static int primary_ray(const struct render_shared *sh, int px, int py, float org
     return 1;
 }
 
-static void frame_task(void *arg, int worker)
+void render_framebuffer_release(struct render_framebuffer *fb)
 {
-    struct render_shared *sh = arg;
-    const struct render_state *st = sh->job->state;
-    struct shade_context sc = {st, sh->job->frame, &sh->scene, &sh->counters[worker].c,
-                               sh->job->textures};
-    const int *vp = st->viewport;
-    uint32_t tiles = (uint32_t)(sh->tiles_x * sh->tiles_y);
-    for (;;) {
-        uint32_t tile = rt_atomic_fetch_add_relaxed(&sh->next_item, 1);
-        if (tile >= tiles)
-            break;
-        int x0 = (int)(tile % (uint32_t)sh->tiles_x) * RENDER_TILE_SIZE;
-        int y0 = (int)(tile / (uint32_t)sh->tiles_x) * RENDER_TILE_SIZE;
-        for (int y = y0; y < y0 + RENDER_TILE_SIZE && y < vp[3]; y++)
-            for (int x = x0; x < x0 + RENDER_TILE_SIZE && x < vp[2]; x++) {
-                float *px = &sh->fb[4 * ((size_t)(vp[1] + y) * sh->fb_width + vp[0] + x)];
-                float org[3], dir[3], tmax;
-                struct shade_cone cone;
-                if (!primary_ray(sh, x, y, org, dir, &tmax, &cone)) {
-                    memcpy(px, st->clear_color, 4 * sizeof(float));
-                    continue;
-                }
-                shade_ray(&sc, org, dir, tmax, cone, 0, px);
-            }
-    }
+    rt_free(fb->rgba);
+    memset(fb, 0, sizeof(*fb));
 }
 
-int render_frame(const struct render_job *job, int fb_width, int fb_height, float **out,
-                 struct render_stats *stats)
+int render_pass_begin(struct render_pass *pass, const struct render_job *job, int fb_width,
+                      int fb_height)
 {
     const struct render_state *st = job->state;
     size_t pixels = (size_t)fb_width * (size_t)fb_height;
@@ -211,26 +160,89 @@ int render_frame(const struct render_job *job, int fb_width, int fb_height, floa
         return -1;
     for (size_t i = 0; i < pixels; i++)
         memcpy(&fb[4 * i], st->clear_color, 4 * sizeof(float));
-    struct render_shared sh;
-    if (shared_init(&sh, job)) {
+    if (shared_init(pass, job)) {
         rt_free(fb);
         return -1;
     }
-    sh.fb = fb;
-    sh.fb_width = fb_width;
-    sh.tiles_x = (st->viewport[2] + RENDER_TILE_SIZE - 1) / RENDER_TILE_SIZE;
-    sh.tiles_y = (st->viewport[3] + RENDER_TILE_SIZE - 1) / RENDER_TILE_SIZE;
+    pass->fb = fb;
+    pass->fb_width = fb_width;
+    pass->fb_height = fb_height;
+    pass->tiles_x = (st->viewport[2] + RENDER_TILE_SIZE - 1) / RENDER_TILE_SIZE;
+    pass->tiles_y = (st->viewport[3] + RENDER_TILE_SIZE - 1) / RENDER_TILE_SIZE;
     /* A singular projection leaves every pixel at the clear colour. */
-    if (mat4_invert(sh.inv_projection, st->projection) && sh.tiles_x > 0 && sh.tiles_y > 0)
-        rt_pool_run(job->pool, frame_task, &sh);
-    int failed = sh.failed;
-    shared_finish(&sh, stats);
+    pass->projectable = mat4_invert(pass->inv_projection, st->projection);
+    return 0;
+}
+
+uint32_t render_pass_tiles(const struct render_pass *pass)
+{
+    if (!pass->projectable || pass->tiles_x <= 0 || pass->tiles_y <= 0)
+        return 0;
+    return (uint32_t)pass->tiles_x * (uint32_t)pass->tiles_y;
+}
+
+void render_tile(struct render_pass *pass, uint32_t tile, int worker)
+{
+    const struct render_state *st = pass->job->state;
+    struct shade_context sc = {st, pass->job->frame, &pass->scene, &pass->counters[worker].c,
+                               pass->job->textures};
+    const int *vp = st->viewport;
+    int x0 = (int)(tile % (uint32_t)pass->tiles_x) * RENDER_TILE_SIZE;
+    int y0 = (int)(tile / (uint32_t)pass->tiles_x) * RENDER_TILE_SIZE;
+    for (int y = y0; y < y0 + RENDER_TILE_SIZE && y < vp[3]; y++)
+        for (int x = x0; x < x0 + RENDER_TILE_SIZE && x < vp[2]; x++) {
+            float *px = &pass->fb[4 * ((size_t)(vp[1] + y) * pass->fb_width + vp[0] + x)];
+            float org[3], dir[3], tmax;
+            struct shade_cone cone;
+            if (!primary_ray(pass, x, y, org, dir, &tmax, &cone)) {
+                memcpy(px, st->clear_color, 4 * sizeof(float));
+                continue;
+            }
+            shade_ray(&sc, org, dir, tmax, cone, 0, px);
+        }
+}
+
+int render_pass_end(struct render_pass *pass, struct render_framebuffer *fb,
+                    struct render_stats *stats)
+{
+    int failed = pass->failed;
+    shared_finish(pass, stats);
     if (failed) {
-        rt_free(fb);
+        rt_free(pass->fb);
         return -1;
     }
-    *out = fb;
+    if (fb->width != pass->fb_width || fb->height != pass->fb_height)
+        fb->frames = 0;
+    rt_free(fb->rgba);
+    fb->rgba = pass->fb;
+    fb->width = pass->fb_width;
+    fb->height = pass->fb_height;
+    fb->frames++;
     return 0;
+}
+
+/* A worker's share of a frame: tiles from the atomic counter. */
+static void frame_task(void *arg, int worker)
+{
+    struct render_pass *pass = arg;
+    uint32_t tiles = render_pass_tiles(pass);
+    for (;;) {
+        uint32_t tile = rt_atomic_fetch_add_relaxed(&pass->next_item, 1);
+        if (tile >= tiles)
+            break;
+        render_tile(pass, tile, worker);
+    }
+}
+
+int render_frame(const struct render_job *job, int fb_width, int fb_height,
+                 struct render_framebuffer *fb, struct render_stats *stats)
+{
+    struct render_pass pass;
+    if (render_pass_begin(&pass, job, fb_width, fb_height))
+        return -1;
+    if (render_pass_tiles(&pass) > 0)
+        rt_pool_run(job->pool, frame_task, &pass);
+    return render_pass_end(&pass, fb, stats);
 }
 
 static void miss(RThit *h)
@@ -245,7 +257,7 @@ static void miss(RThit *h)
 
 static void query_task(void *arg, int worker)
 {
-    struct render_shared *sh = arg;
+    struct render_pass *sh = arg;
     struct trace_scene_counters *counters = &sh->counters[worker].c;
     for (;;) {
         uint32_t item = rt_atomic_fetch_add_relaxed(&sh->next_item, 1);
@@ -284,7 +296,7 @@ static void query_task(void *arg, int worker)
 static int run_queries(const struct render_job *job, int count, const RTray *rays, RThit *hits,
                        RTboolean *occluded, struct render_stats *stats)
 {
-    struct render_shared sh;
+    struct render_pass sh;
     if (shared_init(&sh, job))
         return -1;
     sh.count = count;

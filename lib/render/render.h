@@ -24,6 +24,9 @@
 #include "trace/scene_traverse.h"
 
 #define RENDER_MAX_LIGHTS 8
+/* 16x16 pixel tiles: small enough to balance two to eight threads on
+ * 640x480 (1200 tiles), large enough that the atomic counter is noise. */
+#define RENDER_TILE_SIZE 16
 
 enum render_shading { RENDER_EYE_LIGHT, RENDER_WHITTED };
 
@@ -36,6 +39,20 @@ struct render_light {
     float attenuation[3]; /* constant, linear, quadratic */
 };
 
+/*
+ * The framebuffer, which outlives frames: the last finished image, which
+ * the next frame can read (accumulation) while it renders a new one; a
+ * frame that fails leaves it as it was.
+ */
+struct render_framebuffer {
+    int width, height;
+    float *rgba;     /* width x height RGBA floats, row 0 at the bottom */
+    uint64_t frames; /* frames finished at this size (accumulation restarts at 1) */
+};
+
+/* Frees the image and zeroes *fb. */
+void render_framebuffer_release(struct render_framebuffer *fb);
+
 struct render_state {
     enum render_shading shading;
     int max_depth;
@@ -44,9 +61,7 @@ struct render_state {
     struct render_light lights[RENDER_MAX_LIGHTS];
     int viewport[4]; /* x, y, width, height */
     double projection[16];
-    /* Framebuffer: width x height RGBA floats, row 0 at the bottom. */
-    int fb_width, fb_height;
-    float *framebuffer;
+    struct render_framebuffer fb;
 };
 
 struct render_stats {
@@ -75,14 +90,63 @@ struct render_job {
     int threads;
 };
 
+/* Per-worker counters on their own cache lines. */
+struct render_worker_counters {
+    struct trace_scene_counters c;
+    char pad[64];
+};
+
 /*
- * Renders state->viewport into a new framebuffer of fb_width x fb_height.
- * On success returns 0 and hands the buffer to *out (caller frees with
- * rt_free); -1 on allocation failure (nothing changed).  stats are
- * accumulated.
+ * One frame (or query batch) in flight: the state its tiles share.  A
+ * frame is render_pass_begin, render_tile for every tile on any threads
+ * (each tile once, any order: pixels do not depend on it), then
+ * render_pass_end.  render_frame does all three on the job's pool; a
+ * distributed renderer runs render_tile for the tiles it is given.
  */
-int render_frame(const struct render_job *job, int fb_width, int fb_height, float **out,
-                 struct render_stats *stats);
+struct render_pass {
+    const struct render_job *job;
+    struct trace_scene scene;
+    struct render_worker_counters *counters; /* one per thread of job->pool */
+    uint64_t builds;     /* atomic */
+    uint64_t build_us;   /* atomic */
+    int failed;          /* atomic: an object could not be built */
+    uint32_t next_item;  /* atomic work counter */
+    /* Frames. */
+    int projectable;     /* the projection could be inverted */
+    double inv_projection[16];
+    float *fb;           /* the image being rendered, fb_width x fb_height */
+    int fb_width, fb_height;
+    int tiles_x, tiles_y;
+    /* Queries. */
+    int count;
+    const RTray *rays;
+    RThit *hits;
+    RTboolean *occluded;
+};
+
+/* Starts a frame of fb_width x fb_height pixels rendering the job's
+ * viewport: allocates the new image (clear colour) and the counters.
+ * Returns 0, or -1 on allocation failure (nothing to end). */
+int render_pass_begin(struct render_pass *pass, const struct render_job *job, int fb_width,
+                      int fb_height);
+/* Tiles of the pass (RENDER_TILE_SIZE square, row-major over the viewport). */
+uint32_t render_pass_tiles(const struct render_pass *pass);
+/* Renders tile `tile` into the pass's image on behalf of worker `worker`
+ * (0 .. threads - 1, the index of its counters). */
+void render_tile(struct render_pass *pass, uint32_t tile, int worker);
+/* Adds the pass's work to stats and, if every object could be built,
+ * hands the new image to fb (freeing the old); returns 0, or -1 (fb
+ * unchanged) when one could not. */
+int render_pass_end(struct render_pass *pass, struct render_framebuffer *fb,
+                    struct render_stats *stats);
+
+/*
+ * Renders state->viewport into fb, resized to fb_width x fb_height, on
+ * the job's pool.  Returns 0, or -1 on allocation failure (fb unchanged).
+ * stats are accumulated.
+ */
+int render_frame(const struct render_job *job, int fb_width, int fb_height,
+                 struct render_framebuffer *fb, struct render_stats *stats);
 
 /* Closest hits for count rays (world space), as rtTraceRays reports them.
  * Returns 0, or -1 when an object could not be built (out of memory). */

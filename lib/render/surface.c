@@ -1,0 +1,207 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * surface.c - the surface at a hit (see surface.h): hit point in double,
+ * normals, vertex colours, and textures filtered by the ray cone's level
+ * of detail (shade.h, texture_lod).
+ */
+#include "render/surface.h"
+
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+#include "base/mat4.h"
+
+static void transform_normal(const double m[16], const float in[3], float out[3])
+{
+    for (int r = 0; r < 3; r++)
+        out[r] = (float)(m[r] * in[0] + m[4 + r] * in[1] + m[8 + r] * in[2]);
+}
+
+static void interpolate(const float *attr, int stride, const uint32_t v[3], float b0, float b1,
+                        float b2, int n, float *out)
+{
+    for (int k = 0; k < n; k++)
+        out[k] = b0 * attr[stride * v[0] + k] + b1 * attr[stride * v[1] + k] +
+                 b2 * attr[stride * v[2] + k];
+}
+
+/* Smallest |cos| between ray and surface in the level of detail.  It only
+ * keeps lambda finite for a ray nearly parallel to the surface (which hits
+ * it only by rounding): there the footprint is already 2^16.6 times wider
+ * than head-on, more than the 14 halvings of the largest mip chain. */
+#define LOD_MIN_COSINE 1e-5
+
+/*
+ * The texture level of detail at a hit by ray cones (Akenine-Möller et
+ * al. 2019, "Texture Level of Detail Strategies for Real-Time Ray
+ * Tracing", Ray Tracing Gems ch. 20, sec. 20.3.4):
+ *
+ *     lambda = Delta + log2(width / |n . d|),  Delta = 0.5 log2(t_a / p_a)
+ *
+ * `width` is the cone's width at the hit (world units), n the unit
+ * geometric normal and d the unit ray direction, so width / |n . d| is the
+ * footprint stretched across the triangle's plane; t_a is the triangle's
+ * area in level-0 texels (w h |(st1 - st0) x (st2 - st0)|) and p_a its
+ * area in world space, so sqrt(t_a / p_a) converts world length to texels
+ * and lambda is log2 of the texels a pixel spans, GL's log2(rho).  The
+ * triangle's edges go through the instance matrix before p_a is taken,
+ * so an instance scaled 4x gets the level of detail of the same triangles
+ * recorded 4x larger.  All in double; the same operations for every pixel,
+ * so the result does not depend on threads.  A triangle without texture
+ * area (constant coordinates) gives -inf, a magnification; one without
+ * world area +inf, the last level; 0 / 0 a NaN, which the sampler takes as
+ * a magnification.
+ */
+static float texture_lod(const struct scene_texture *tex, const struct scene_instance *inst,
+                         const struct scene_mesh *mesh, const uint32_t v[3], const float ng[3],
+                         const float dir[3], float width)
+{
+    const float *p0 = &mesh->positions[3 * v[0]];
+    const float *p1 = &mesh->positions[3 * v[1]];
+    const float *p2 = &mesh->positions[3 * v[2]];
+    const float *t0 = &mesh->texcoords[2 * v[0]];
+    const float *t1 = &mesh->texcoords[2 * v[1]];
+    const float *t2 = &mesh->texcoords[2 * v[2]];
+    double e1[3], e2[3], w1[3], w2[3];
+    for (int k = 0; k < 3; k++) {
+        e1[k] = (double)p1[k] - (double)p0[k];
+        e2[k] = (double)p2[k] - (double)p0[k];
+    }
+    mat4_transform_vector(inst->object_to_world, e1, w1);
+    mat4_transform_vector(inst->object_to_world, e2, w2);
+    const double cx = w1[1] * w2[2] - w1[2] * w2[1];
+    const double cy = w1[2] * w2[0] - w1[0] * w2[2];
+    const double cz = w1[0] * w2[1] - w1[1] * w2[0];
+    const double p_a = sqrt(cx * cx + cy * cy + cz * cz);
+    const double uv_cross = ((double)t1[0] - (double)t0[0]) * ((double)t2[1] - (double)t0[1]) -
+                            ((double)t2[0] - (double)t0[0]) * ((double)t1[1] - (double)t0[1]);
+    const double t_a = (double)tex->width * (double)tex->height * fabs(uv_cross);
+    const double dir_len = sqrt((double)dir[0] * dir[0] + (double)dir[1] * dir[1] +
+                                (double)dir[2] * dir[2]);
+    double cosine = fabs((double)ng[0] * dir[0] + (double)ng[1] * dir[1] +
+                         (double)ng[2] * dir[2]) /
+                    dir_len;
+    if (!(cosine >= LOD_MIN_COSINE))
+        cosine = LOD_MIN_COSINE;
+    return (float)(0.5 * log2(t_a / p_a) + log2((double)width / cosine));
+}
+
+/*
+ * GL's MODULATE environment (OpenGL 1.1 sec. 3.8.6, table 3.19: C = Cf Ct)
+ * applied before lighting to the colours that carry the surface's own
+ * colour: ambient and diffuse (which RT_COLOR_MATERIAL may have replaced).
+ * Emission and specular are left alone, as with GL 1.2's separate
+ * specular colour.  Lighting is linear in both, so for them this equals
+ * modulating the lit colour.  The triangle keeps the texture's name; a
+ * name without an image (deleted, or never given one) leaves the surface
+ * untextured.  Texture coordinates are interpolated, never flat.  The
+ * texel is filtered for the ray cone's `width` at the hit (texture_lod);
+ * when both filters are the same non-mipmapped one every level of detail
+ * gives the same lookup, and none is computed.
+ */
+static void apply_texture(const struct shade_context *sc, const struct scene_instance *inst,
+                          const struct scene_mesh *mesh, const uint32_t v[3], float b0,
+                          float b1, float b2, const float ng[3], const float dir[3],
+                          float width, struct scene_material *mat)
+{
+    const struct scene_texture *tex = scene_textures_lookup(sc->textures, mat->texture);
+    if (!tex || !tex->texels)
+        return;
+    float st[2], texel[4];
+    interpolate(mesh->texcoords, 2, v, b0, b1, b2, 2, st);
+    float lambda = -INFINITY; /* a magnification */
+    if (tex->min_filter != tex->mag_filter)
+        lambda = texture_lod(tex, inst, mesh, v, ng, dir, width);
+    scene_texture_sample_lod(tex, lambda, st[0], st[1], texel);
+    for (int k = 0; k < 3; k++) {
+        mat->ambient[k] *= texel[k];
+        mat->diffuse[k] *= texel[k];
+    }
+}
+
+void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit *hit,
+                   const float dir[3], float width, struct surface *s)
+{
+    const struct trace_instance *ti = &sc->scene->instances[hit->instance];
+    const struct scene_instance *inst = &sc->frame->committed.items[ti->instance_id];
+    const struct scene_mesh *mesh = &inst->object->mesh;
+    const uint32_t *v = &mesh->indices[3 * hit->prim];
+    const float b1 = hit->u, b2 = hit->v, b0 = 1.0f - hit->u - hit->v;
+
+    const float *p0 = &mesh->positions[3 * v[0]];
+    const float *p1 = &mesh->positions[3 * v[1]];
+    const float *p2 = &mesh->positions[3 * v[2]];
+
+    /* The hit point is p0 + u (p1 - p0) + v (p2 - p0) evaluated in double
+     * (the float differences are exact there), so it lies on the plane of
+     * the float triangle to double precision wherever the barycentrics
+     * land, and is then mapped to world space in double.  Its only
+     * significant error is the final rounding to float, plus the rounding
+     * of the next ray's origin into object space: together at most half an
+     * ulp of each (PBRT 3rd ed. sec. 3.9 bounds the hit point the same way
+     * and offsets secondary rays by that bound along the normal). */
+    double po[3], pw[3];
+    double max_object = 0.0, max_world = 0.0, norm = 0.0;
+    for (int k = 0; k < 3; k++) {
+        po[k] = (double)p0[k] + (double)hit->u * ((double)p1[k] - (double)p0[k]) +
+                (double)hit->v * ((double)p2[k] - (double)p0[k]);
+        max_object = fmax(max_object, fabs(po[k]));
+    }
+    mat4_transform_point(inst->object_to_world, po, pw);
+    for (int k = 0; k < 3; k++) {
+        s->p[k] = (float)pw[k];
+        max_world = fmax(max_world, fabs(pw[k]));
+        const double *m = inst->object_to_world;
+        norm = fmax(norm, fabs(m[k]) + fabs(m[4 + k]) + fabs(m[8 + k]));
+    }
+    s->p_error = (float)(0.5 * FLT_EPSILON * (max_world + norm * max_object) + FLT_MIN);
+    float e1[3], e2[3], ngo[3];
+    vec3_sub(e1, p1, p0);
+    vec3_sub(e2, p2, p0);
+    vec3_cross(ngo, e1, e2);
+    transform_normal(inst->normal_to_world, ngo, s->ng);
+    if (!vec3_normalize(s->ng)) {
+        /* Sliver too thin for float: any unit vector facing the ray. */
+        s->ng[0] = -dir[0];
+        s->ng[1] = -dir[1];
+        s->ng[2] = -dir[2];
+        vec3_normalize(s->ng);
+    }
+    s->front = vec3_dot(s->ng, dir) < 0.0f;
+    if (!s->front)
+        for (int k = 0; k < 3; k++)
+            s->ng[k] = -s->ng[k];
+
+    uint8_t flags = mesh->tri_flags[hit->prim];
+    uint32_t provoking = mesh->tri_provoking[hit->prim];
+    memcpy(s->n, s->ng, sizeof(s->n));
+    if (mesh->has_normals) {
+        float no[3];
+        if (flags & TRI_FLAT)
+            memcpy(no, &mesh->normals[3 * provoking], sizeof(no));
+        else
+            interpolate(mesh->normals, 3, v, b0, b1, b2, 3, no);
+        float nw[3];
+        transform_normal(inst->normal_to_world, no, nw);
+        if (vec3_normalize(nw)) {
+            if (vec3_dot(nw, s->ng) < 0.0f)
+                for (int k = 0; k < 3; k++)
+                    nw[k] = -nw[k];
+            memcpy(s->n, nw, sizeof(s->n));
+        }
+    }
+
+    s->mat = mesh->materials[mesh->tri_material[hit->prim]];
+    if (flags & TRI_COLOR_MATERIAL) {
+        float c[4];
+        if (flags & TRI_FLAT)
+            memcpy(c, &mesh->colors[4 * provoking], sizeof(c));
+        else
+            interpolate(mesh->colors, 4, v, b0, b1, b2, 4, c);
+        memcpy(s->mat.ambient, c, sizeof(c));
+        memcpy(s->mat.diffuse, c, sizeof(c));
+    }
+    if (s->mat.texture)
+        apply_texture(sc, inst, mesh, v, b0, b1, b2, s->ng, dir, width, &s->mat);
+}
