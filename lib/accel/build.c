@@ -90,6 +90,17 @@ int accel_build(struct bvh *out, const struct aabb *prim_boxes, uint32_t prim_co
     return accel_build_binned_sah(out, prim_boxes, prim_count, &p);
 }
 
+int accel_build_begin(struct bvh *out, struct bvh_build_params *p,
+                      const struct bvh_build_params *params, uint32_t prim_count)
+{
+    accel_build_params_normalize(p, params);
+    if (prim_count == 0) {
+        memset(out, 0, sizeof(*out));
+        return 0;
+    }
+    return accel_build_alloc(out, prim_count) ? -1 : 1;
+}
+
 void bvh_release(struct bvh *bvh)
 {
     rt_free(bvh->nodes);

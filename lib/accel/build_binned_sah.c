@@ -466,14 +466,9 @@ int accel_build_binned_sah(struct bvh *out, const struct aabb *prim_boxes, uint3
                            const struct bvh_build_params *params)
 {
     struct bvh_build_params p;
-    accel_build_params_normalize(&p, params);
-    if (prim_count == 0) {
-        /* *out is output only: never free what it held. */
-        memset(out, 0, sizeof(*out));
-        return 0;
-    }
-    if (accel_build_alloc(out, prim_count))
-        return -1;
+    int start = accel_build_begin(out, &p, params, prim_count);
+    if (start <= 0)
+        return start;
     struct build_ref *refs = rt_realloc_array(NULL, prim_count, sizeof(*refs));
     struct bins *bins = rt_malloc(sizeof(*bins));
     if (!refs || !bins) {
@@ -485,15 +480,8 @@ int accel_build_binned_sah(struct bvh *out, const struct aabb *prim_boxes, uint3
 
     struct task stack[BUILD_STACK_SIZE];
     struct task *t = &stack[0];
-    for (uint32_t i = 0; i < prim_count; i++) {
-        struct build_ref *r = &refs[i];
-        for (int k = 0; k < 3; k++) {
-            r->lo[k] = prim_boxes[i].min[k];
-            r->hi[k] = prim_boxes[i].max[k];
-        }
-        memcpy(&r->lo[3], &i, sizeof(i));
-        r->hi[3] = 0.0f;
-    }
+    for (uint32_t i = 0; i < prim_count; i++)
+        build_ref_set(&refs[i], &prim_boxes[i], i);
     struct aabb root_box;
     range_bounds(refs, 0, prim_count, &root_box, &t->cb);
     build_set_box(&out->nodes[0], &root_box);

@@ -85,6 +85,17 @@ void accel_build_params_normalize(struct bvh_build_params *out,
  */
 int accel_build_alloc(struct bvh *out, uint32_t prim_count);
 
+/*
+ * The start every top-down builder shares: normalizes params into *p
+ * (accel_build_params_normalize), gives the empty BVH for prim_count == 0
+ * (*out is output only: what it held is never freed), and allocates the
+ * arrays otherwise.  Returns 1 when there is a tree to build, 0 when the
+ * empty BVH is the result, -1 on allocation failure (*out zeroed): the
+ * builder returns the value when it is not 1.
+ */
+int accel_build_begin(struct bvh *out, struct bvh_build_params *p,
+                      const struct bvh_build_params *params, uint32_t prim_count);
+
 /* Records node_count and depth and returns the unused tail of the node
  * array to the allocator (keeping the larger block if shrinking fails). */
 void accel_build_finish(struct bvh *out, uint32_t node_count, uint32_t depth);

@@ -288,14 +288,9 @@ int accel_build_median(struct bvh *out, const struct aabb *prim_boxes, uint32_t 
                        const struct bvh_build_params *params)
 {
     struct bvh_build_params p;
-    accel_build_params_normalize(&p, params);
-    if (prim_count == 0) {
-        /* *out is output only: never free what it held. */
-        memset(out, 0, sizeof(*out));
-        return 0;
-    }
-    if (accel_build_alloc(out, prim_count))
-        return -1;
+    int start = accel_build_begin(out, &p, params, prim_count);
+    if (start <= 0)
+        return start;
     struct build_ref *refs = rt_realloc_array(NULL, prim_count, sizeof(*refs));
     if (!refs) {
         bvh_release(out);

@@ -221,14 +221,9 @@ int accel_build_sweep_sah(struct bvh *out, const struct aabb *prim_boxes, uint32
                           const struct bvh_build_params *params)
 {
     struct bvh_build_params p;
-    accel_build_params_normalize(&p, params);
-    if (prim_count == 0) {
-        /* *out is output only: never free what it held. */
-        memset(out, 0, sizeof(*out));
-        return 0;
-    }
-    if (accel_build_alloc(out, prim_count))
-        return -1;
+    int start = accel_build_begin(out, &p, params, prim_count);
+    if (start <= 0)
+        return start;
     struct sweep_state st;
     if (alloc_state(&st, prim_count)) {
         bvh_release(out);
