@@ -59,10 +59,7 @@ struct split {
 
 /* A node waiting to be processed; its box is already in the node array. */
 struct task {
-    uint32_t begin;
-    uint32_t end;
-    uint32_t node;
-    uint32_t depth;
+    struct build_range r; /* refs, node and depth (build_internal.h) */
     struct cbounds cb;
 };
 
@@ -485,10 +482,10 @@ int accel_build_binned_sah(struct bvh *out, const struct aabb *prim_boxes, uint3
     struct aabb root_box;
     range_bounds(refs, 0, prim_count, &root_box, &t->cb);
     build_set_box(&out->nodes[0], &root_box);
-    t->begin = 0;
-    t->end = prim_count;
-    t->node = 0;
-    t->depth = 0;
+    t->r.begin = 0;
+    t->r.end = prim_count;
+    t->r.node = 0;
+    t->r.depth = 0;
 
     uint32_t sp = 1;
     uint32_t node_count = 1;
@@ -496,15 +493,15 @@ int accel_build_binned_sah(struct bvh *out, const struct aabb *prim_boxes, uint3
     const uint32_t max_leaf = (uint32_t)p.max_leaf_size;
     while (sp > 0) {
         struct task task = stack[--sp];
-        struct bvh_node *node = &out->nodes[task.node];
-        uint32_t n = task.end - task.begin;
-        if (task.depth > max_depth)
-            max_depth = task.depth;
+        struct bvh_node *node = &out->nodes[task.r.node];
+        uint32_t n = task.r.end - task.r.begin;
+        if (task.r.depth > max_depth)
+            max_depth = task.r.depth;
 
         /* Decide between a leaf, an SAH split and the median fallback
          * (the order of madmann91/bvh's top_down_sah_builder.h). */
-        if (n <= 1 || (n <= max_leaf && build_must_split_median(task.depth, n))) {
-            build_set_leaf(node, task.begin, n);
+        if (n <= 1 || (n <= max_leaf && build_must_split_median(task.r.depth, n))) {
+            build_set_leaf(node, task.r.begin, n);
             continue;
         }
         enum { SPLIT_MEDIAN, SPLIT_BINNED, SPLIT_SMALL } kind = SPLIT_MEDIAN;
@@ -514,17 +511,17 @@ int accel_build_binned_sah(struct bvh *out, const struct aabb *prim_boxes, uint3
          * gcc -O2 with TSan cannot see that and warns. */
         struct binning bn;
         memset(&bn, 0, sizeof(bn));
-        if (!centroids_coincide(&task.cb) && !build_must_split_median(task.depth, n)) {
+        if (!centroids_coincide(&task.cb) && !build_must_split_median(task.r.depth, n)) {
             float sah = 0.0f;
             if (n <= BINNED_EXACT_MAX) {
-                if (find_small_split(&refs[task.begin], n, &ss)) {
+                if (find_small_split(&refs[task.r.begin], n, &ss)) {
                     kind = SPLIT_SMALL;
                     sah = ss.sah;
                 }
             } else {
                 int bin_count = bins_for(p.bins, n);
                 init_binning(&bn, &task.cb, bin_count);
-                fill_bins(bins, bin_count, &bn, refs, task.begin, task.end);
+                fill_bins(bins, bin_count, &bn, refs, task.r.begin, task.r.end);
                 if (find_best_split(bins, bin_count, &bn, &s)) {
                     kind = SPLIT_BINNED;
                     sah = s.sah;
@@ -538,47 +535,36 @@ int accel_build_binned_sah(struct bvh *out, const struct aabb *prim_boxes, uint3
                 kind = SPLIT_MEDIAN;
         }
         if (kind == SPLIT_MEDIAN && n <= max_leaf) {
-            build_set_leaf(node, task.begin, n);
+            build_set_leaf(node, task.r.begin, n);
             continue;
         }
 
-        uint32_t mid = task.begin;
+        uint32_t mid = task.r.begin;
         struct task left;
         struct task right;
         struct aabb left_box;
         struct aabb right_box;
         if (kind == SPLIT_BINNED) {
-            mid = partition_refs(refs, task.begin, task.end, &bn, &s, &left.cb, &right.cb);
+            mid = partition_refs(refs, task.r.begin, task.r.end, &bn, &s, &left.cb, &right.cb);
             left_box = s.left;
             right_box = s.right;
             /* partition_refs classifies exactly as fill_bins counted, so
              * this cannot fail; if it ever did, the boxes taken from the
              * bins would be wrong, so split again from scratch. */
-            if (mid - task.begin != s.left_count)
+            if (mid - task.r.begin != s.left_count)
                 kind = SPLIT_MEDIAN;
         }
         if (kind != SPLIT_BINNED) {
             if (kind == SPLIT_SMALL)
-                mid = apply_small_split(refs, task.begin, n, &ss);
+                mid = apply_small_split(refs, task.r.begin, n, &ss);
             else
-                mid = fallback_split(refs, task.begin, task.end, &task.cb);
-            range_bounds(refs, task.begin, mid, &left_box, &left.cb);
-            range_bounds(refs, mid, task.end, &right_box, &right.cb);
+                mid = fallback_split(refs, task.r.begin, task.r.end, &task.cb);
+            range_bounds(refs, task.r.begin, mid, &left_box, &left.cb);
+            range_bounds(refs, mid, task.r.end, &right_box, &right.cb);
         }
 
-        uint32_t child = node_count;
-        node_count += 2;
-        build_set_inner(node, child);
-        build_set_box(&out->nodes[child], &left_box);
-        build_set_box(&out->nodes[child + 1], &right_box);
-        left.begin = task.begin;
-        left.end = mid;
-        left.node = child;
-        left.depth = task.depth + 1;
-        right.begin = mid;
-        right.end = task.end;
-        right.node = child + 1;
-        right.depth = task.depth + 1;
+        build_split(out->nodes, &task.r, mid, &left_box, &right_box, &node_count, &left.r,
+                    &right.r);
         /* Right first, so the left subtree is numbered (and built) first. */
         stack[sp++] = right;
         stack[sp++] = left;

@@ -24,6 +24,16 @@
 #include "accel/vec4.h"
 #include "accel/bvh_build.h"
 
+/* A node's share of a top-down build: the references [begin, end), the
+ * node they become, its depth.  The first member of every builder's
+ * task. */
+struct build_range {
+    uint32_t begin;
+    uint32_t end;
+    uint32_t node;
+    uint32_t depth;
+};
+
 /* Writes the xyz lanes of lo and hi (box bounds kept in SIMD registers
  * by the binned, median and parallel builders) into *box. */
 static inline void build_store_box(struct aabb *box, vec4 lo, vec4 hi)
@@ -144,6 +154,34 @@ static inline float build_min(float a, float b)
 static inline float build_max(float a, float b)
 {
     return a > b ? a : b;
+}
+
+/*
+ * The step of every top-down builder's task loop once it has chosen to
+ * split `range` at mid: the node becomes an inner node over a fresh
+ * adjacent pair of children (left = first, right = first + 1) taken from
+ * *node_count, with the given boxes, and *left, *right receive the
+ * children's ranges.  The caller pushes right before left so the left
+ * subtree is numbered (and built) first.
+ */
+static inline void build_split(struct bvh_node *nodes, const struct build_range *range,
+                               uint32_t mid, const struct aabb *left_box,
+                               const struct aabb *right_box, uint32_t *node_count,
+                               struct build_range *left, struct build_range *right)
+{
+    uint32_t child = *node_count;
+    *node_count += 2;
+    build_set_inner(&nodes[range->node], child);
+    build_set_box(&nodes[child], left_box);
+    build_set_box(&nodes[child + 1], right_box);
+    left->begin = range->begin;
+    left->end = mid;
+    left->node = child;
+    left->depth = range->depth + 1;
+    right->begin = mid;
+    right->end = range->end;
+    right->node = child + 1;
+    right->depth = range->depth + 1;
 }
 
 #endif

@@ -41,10 +41,7 @@
 /* A node waiting to be processed; its box is already in the node array.
  * clo/chi: its centroid bounds (lane 3 unused). */
 struct mtask {
-    uint32_t begin;
-    uint32_t end;
-    uint32_t node;
-    uint32_t depth;
+    struct build_range r; /* refs, node and depth (build_internal.h) */
     float clo[4];
     float chi[4];
 };
@@ -183,29 +180,29 @@ void build_median_refs(struct bvh_node *nodes, struct build_ref *refs, uint32_t 
     struct aabb root_box;
     range_bounds(refs, 0, n, &root_box, stack[0].clo, stack[0].chi);
     build_set_box(&nodes[0], &root_box);
-    stack[0].begin = 0;
-    stack[0].end = n;
-    stack[0].node = 0;
-    stack[0].depth = depth0;
+    stack[0].r.begin = 0;
+    stack[0].r.end = n;
+    stack[0].r.node = 0;
+    stack[0].r.depth = depth0;
 
     uint32_t sp = 1;
     uint32_t node_count = 1;
     uint32_t max_depth = depth0;
     while (sp > 0) {
         struct mtask task = stack[--sp];
-        struct bvh_node *node = &nodes[task.node];
-        uint32_t count = task.end - task.begin;
-        if (task.depth > max_depth)
-            max_depth = task.depth;
+        struct bvh_node *node = &nodes[task.r.node];
+        uint32_t count = task.r.end - task.r.begin;
+        if (task.r.depth > max_depth)
+            max_depth = task.r.depth;
         /* The caller's invariant keeps depth <= BVH_MAX_DEPTH; the clamp
          * only protects the table against a broken caller. */
-        uint32_t tol_here = tol[task.depth <= BVH_MAX_DEPTH ? task.depth : BVH_MAX_DEPTH];
-        int forced_median = build_must_split_median(task.depth, count);
+        uint32_t tol_here = tol[task.r.depth <= BVH_MAX_DEPTH ? task.r.depth : BVH_MAX_DEPTH];
+        int forced_median = build_must_split_median(task.r.depth, count);
         /* Paper 004 sec. 4.3's looser criterion first: it exists to save
          * the split's work.  Then the leaves the depth guard forces (as
          * in build_binned_sah.c). */
         if (count <= tol_here || (count <= max_leaf && forced_median)) {
-            build_set_leaf(node, task.begin, count);
+            build_set_leaf(node, task.r.begin, count);
             continue;
         }
 
@@ -213,7 +210,7 @@ void build_median_refs(struct bvh_node *nodes, struct build_ref *refs, uint32_t 
         struct mtask right;
         struct aabb left_box;
         struct aabb right_box;
-        uint32_t mid = task.begin;
+        uint32_t mid = task.r.begin;
         float extent;
         int axis = longest_axis(task.clo, task.chi, &extent);
         int spatial = 0;
@@ -225,8 +222,8 @@ void build_median_refs(struct bvh_node *nodes, struct build_ref *refs, uint32_t 
             float plane = 0.5f * (task.clo[axis] + task.chi[axis]);
             struct side ls;
             struct side rs;
-            mid = partition_spatial(refs, task.begin, task.end, axis, plane, &ls, &rs);
-            spatial = mid != task.begin && mid != task.end;
+            mid = partition_spatial(refs, task.r.begin, task.r.end, axis, plane, &ls, &rs);
+            spatial = mid != task.r.begin && mid != task.r.end;
             if (spatial) {
                 build_store_box(&left_box, ls.lo, ls.hi);
                 build_store_box(&right_box, rs.lo, rs.hi);
@@ -240,11 +237,11 @@ void build_median_refs(struct bvh_node *nodes, struct build_ref *refs, uint32_t 
             /* Object median: halves of floor(n/2) and ceil(n/2), which
              * is what keeps the depth bounded (build_internal.h).  Equal
              * centroids on every axis need no ordering at all. */
-            mid = task.begin + count / 2;
+            mid = task.r.begin + count / 2;
             if (extent > 0.0f)
-                build_select_nth(refs + task.begin, count, count / 2, axis);
-            range_bounds(refs, task.begin, mid, &left_box, left.clo, left.chi);
-            range_bounds(refs, mid, task.end, &right_box, right.clo, right.chi);
+                build_select_nth(refs + task.r.begin, count, count / 2, axis);
+            range_bounds(refs, task.r.begin, mid, &left_box, left.clo, left.chi);
+            range_bounds(refs, mid, task.r.end, &right_box, right.clo, right.chi);
         }
         if (count <= max_leaf) {
             /* Small node: keep the split only if the SAH favours it
@@ -255,27 +252,16 @@ void build_median_refs(struct bvh_node *nodes, struct build_ref *refs, uint32_t 
             float leaf_cost = params->c_isect * (float)count * area;
             float split_cost =
                 params->c_trav * area +
-                params->c_isect * (aabb_half_area(&left_box) * (float)(mid - task.begin) +
-                                   aabb_half_area(&right_box) * (float)(task.end - mid));
+                params->c_isect * (aabb_half_area(&left_box) * (float)(mid - task.r.begin) +
+                                   aabb_half_area(&right_box) * (float)(task.r.end - mid));
             if (!(split_cost < leaf_cost)) {
-                build_set_leaf(node, task.begin, count);
+                build_set_leaf(node, task.r.begin, count);
                 continue;
             }
         }
 
-        uint32_t child = node_count;
-        node_count += 2;
-        build_set_inner(node, child);
-        build_set_box(&nodes[child], &left_box);
-        build_set_box(&nodes[child + 1], &right_box);
-        left.begin = task.begin;
-        left.end = mid;
-        left.node = child;
-        left.depth = task.depth + 1;
-        right.begin = mid;
-        right.end = task.end;
-        right.node = child + 1;
-        right.depth = task.depth + 1;
+        build_split(nodes, &task.r, mid, &left_box, &right_box, &node_count, &left.r,
+                    &right.r);
         /* Right first, so the left subtree is numbered (and built) first. */
         stack[sp++] = right;
         stack[sp++] = left;

@@ -41,13 +41,6 @@ struct sref {
 };
 typedef char sref_is_32_bytes[sizeof(struct sref) == 32 ? 1 : -1];
 
-struct task {
-    uint32_t begin;
-    uint32_t end;
-    uint32_t node;
-    uint32_t depth;
-};
-
 /* Where to cut: the first `pos` entries of axis `axis`' array go left. */
 struct cut {
     int axis;
@@ -172,7 +165,7 @@ static uint32_t stable_partition(struct sref *a, uint32_t n, const uint8_t *goes
 
 /* Cuts the node's range: the first pos entries of the chosen axis' array
  * go left; the other two arrays follow, stably. */
-static void apply_cut(struct sweep_state *st, const struct task *t, const struct cut *c)
+static void apply_cut(struct sweep_state *st, const struct build_range *t, const struct cut *c)
 {
     uint32_t n = t->end - t->begin;
     const struct sref *a = st->axis_refs[c->axis] + t->begin;
@@ -238,7 +231,7 @@ int accel_build_sweep_sah(struct bvh *out, const struct aabb *prim_boxes, uint32
 
     struct aabb root_box = range_box(st.axis_refs[0], prim_count);
     build_set_box(&out->nodes[0], &root_box);
-    struct task stack[BUILD_STACK_SIZE];
+    struct build_range stack[BUILD_STACK_SIZE];
     stack[0].begin = 0;
     stack[0].end = prim_count;
     stack[0].node = 0;
@@ -248,7 +241,7 @@ int accel_build_sweep_sah(struct bvh *out, const struct aabb *prim_boxes, uint32
     uint32_t max_depth = 0;
     const uint32_t max_leaf = (uint32_t)p.max_leaf_size;
     while (sp > 0) {
-        struct task task = stack[--sp];
+        struct build_range task = stack[--sp];
         struct bvh_node *node = &out->nodes[task.node];
         uint32_t n = task.end - task.begin;
         if (task.depth > max_depth)
@@ -307,13 +300,9 @@ int accel_build_sweep_sah(struct bvh *out, const struct aabb *prim_boxes, uint32
         const struct sref *a = st.axis_refs[c.axis] + task.begin;
         struct aabb left_box = range_box(a, c.pos);
         struct aabb right_box = range_box(a + c.pos, n - c.pos);
-        uint32_t child = node_count;
-        node_count += 2;
-        build_set_inner(node, child);
-        build_set_box(&out->nodes[child], &left_box);
-        build_set_box(&out->nodes[child + 1], &right_box);
-        struct task left = {task.begin, task.begin + c.pos, child, task.depth + 1};
-        struct task right = {task.begin + c.pos, task.end, child + 1, task.depth + 1};
+        struct build_range left, right;
+        build_split(out->nodes, &task, task.begin + c.pos, &left_box, &right_box, &node_count,
+                    &left, &right);
         stack[sp++] = right;
         stack[sp++] = left;
     }
