@@ -449,16 +449,6 @@ static int centroids_coincide(const struct cbounds *cb)
     return !(cb->hi[0] > cb->lo[0]) && !(cb->hi[1] > cb->lo[1]) && !(cb->hi[2] > cb->lo[2]);
 }
 
-static float node_half_area(const struct bvh_node *node)
-{
-    struct aabb box;
-    for (int k = 0; k < 3; k++) {
-        box.min[k] = node->aabb_min[k];
-        box.max[k] = node->aabb_max[k];
-    }
-    return aabb_half_area(&box);
-}
-
 int accel_build_binned_sah(struct bvh *out, const struct aabb *prim_boxes, uint32_t prim_count,
                            const struct bvh_build_params *params)
 {
@@ -528,7 +518,7 @@ int accel_build_binned_sah(struct bvh *out, const struct aabb *prim_boxes, uint3
                 }
             }
             /* build_internal.h: costs compared multiplied by the area. */
-            float area = node_half_area(node);
+            float area = build_node_half_area(node);
             float leaf_cost = p.c_isect * (float)n * area;
             float split_cost = p.c_trav * area + p.c_isect * sah;
             if (!(split_cost < leaf_cost))

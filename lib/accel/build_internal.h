@@ -24,6 +24,17 @@
 #include "accel/vec4.h"
 #include "accel/bvh_build.h"
 
+/* Half the surface area of a node's box (the SAH's A). */
+static inline float build_node_half_area(const struct bvh_node *node)
+{
+    struct aabb box;
+    for (int k = 0; k < 3; k++) {
+        box.min[k] = node->aabb_min[k];
+        box.max[k] = node->aabb_max[k];
+    }
+    return aabb_half_area(&box);
+}
+
 /* A node's share of a top-down build: the references [begin, end), the
  * node they become, its depth.  The first member of every builder's
  * task. */

@@ -158,16 +158,6 @@ static int longest_axis(const float clo[4], const float chi[4], float *extent)
     return axis;
 }
 
-static float node_half_area(const struct bvh_node *node)
-{
-    struct aabb box;
-    for (int k = 0; k < 3; k++) {
-        box.min[k] = node->aabb_min[k];
-        box.max[k] = node->aabb_max[k];
-    }
-    return aabb_half_area(&box);
-}
-
 void build_median_refs(struct bvh_node *nodes, struct build_ref *refs, uint32_t n,
                        uint32_t depth0, const struct bvh_build_params *params,
                        uint32_t *node_count_out, uint32_t *max_depth_out)
@@ -248,7 +238,7 @@ void build_median_refs(struct bvh_node *nodes, struct build_ref *refs, uint32_t 
              * (build_internal.h: costs compared multiplied by the area).
              * The partition has reordered the range, which a leaf does
              * not mind. */
-            float area = node_half_area(node);
+            float area = build_node_half_area(node);
             float leaf_cost = params->c_isect * (float)count * area;
             float split_cost =
                 params->c_trav * area +
