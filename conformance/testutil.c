@@ -1,8 +1,8 @@
 /*
  * testutil.c - helpers shared by the API conformance tests (see testutil.h).
  *
- * Single-threaded by design: the pass/fail counters and the captured error
- * copy are plain globals.  Tests that start threads make their checks on
+ * The checks themselves are check.c's.  Single-threaded by design: the
+ * captured error copy is a plain global.  Tests that start threads make their checks on
  * the main thread.
  */
 #include "testutil.h"
@@ -11,54 +11,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-static int passes;
-static int failures;
-static const char *section = "";
-
-static void report_failure(const char *file, int line)
-{
-    failures++;
-    fprintf(stderr, "%s:%d: [%s] ", file, line, section);
-}
-
-int tu_check(int ok, const char *file, int line, const char *expr)
-{
-    if (ok) {
-        passes++;
-        return 1;
-    }
-    report_failure(file, line);
-    fprintf(stderr, "CHECK(%s) failed\n", expr);
-    return 0;
-}
-
-int tu_check_int(long long actual, long long expected, const char *file, int line,
-                 const char *actual_expr, const char *expected_expr)
-{
-    if (actual == expected) {
-        passes++;
-        return 1;
-    }
-    report_failure(file, line);
-    fprintf(stderr, "%s == %lld (0x%llx), expected %s == %lld (0x%llx)\n", actual_expr, actual,
-            (unsigned long long)actual, expected_expr, expected, (unsigned long long)expected);
-    return 0;
-}
-
-int tu_check_near(double actual, double expected, double tol, const char *file, int line,
-                  const char *actual_expr, const char *expected_expr)
-{
-    /* Written so that NaN fails; exact equality covers matching infinities. */
-    if (actual == expected || fabs(actual - expected) <= tol) {
-        passes++;
-        return 1;
-    }
-    report_failure(file, line);
-    fprintf(stderr, "%s == %.9g, expected %s == %.9g (tolerance %g)\n", actual_expr, actual,
-            expected_expr, expected, tol);
-    return 0;
-}
 
 const char *tu_error_name(RTenum code)
 {
@@ -90,7 +42,7 @@ int tu_expect_error(RTenum code, const char *file, int line, const char *expr)
     RTenum second = rtGetError();
     int ok = 1;
     if (first != code) {
-        report_failure(file, line);
+        tu_report_failure(file, line);
         fprintf(stderr, "rtGetError() == %s, expected %s", tu_error_name(first), expr);
         if (tu_captured_count() > 0)
             fprintf(stderr, " (last callback message: \"%s\")", tu_captured_message());
@@ -98,28 +50,14 @@ int tu_expect_error(RTenum code, const char *file, int line, const char *expr)
         ok = 0;
     }
     if (second != RT_NO_ERROR) {
-        report_failure(file, line);
+        tu_report_failure(file, line);
         fprintf(stderr, "second rtGetError() == %s, expected RT_NO_ERROR (slot not cleared)\n",
                 tu_error_name(second));
         ok = 0;
     }
     if (ok)
-        passes++;
+        tu_report_pass();
     return ok;
-}
-
-void tu_section(const char *name)
-{
-    section = name;
-    printf("-- %s\n", name);
-    fflush(stdout);
-}
-
-int test_summary(const char *name)
-{
-    printf("%s: %d passed, %d failed\n", name, passes, failures);
-    fflush(stdout);
-    return failures != 0;
 }
 
 /* ---- contexts -------------------------------------------------------------- */
@@ -230,7 +168,7 @@ static int no_error(const char *what)
     RTenum e = rtGetError();
     if (e == RT_NO_ERROR)
         return 1;
-    report_failure(__FILE__, __LINE__);
+    tu_report_failure(__FILE__, __LINE__);
     fprintf(stderr, "%s recorded %s\n", what, tu_error_name(e));
     return 0;
 }
@@ -376,7 +314,7 @@ int tu_check_triangle(const char *file, int line, const float a[3], const float 
     n[2] = e1[0] * e2[1] - e1[1] * e2[0];
     len = sqrtf(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
     if (!(len > 0.0f)) {
-        report_failure(file, line);
+        tu_report_failure(file, line);
         fprintf(stderr, "tu_check_triangle: expected triangle is degenerate (test bug)\n");
         return 0;
     }
@@ -386,14 +324,14 @@ int tu_check_triangle(const char *file, int line, const float a[3], const float 
                  -n[2]);
     err = rtGetError();
     if (err != RT_NO_ERROR) {
-        report_failure(file, line);
+        tu_report_failure(file, line);
         fprintf(stderr, "rtTraceRays recorded %s\n", tu_error_name(err));
         return 0;
     }
     if (h.primitive != prim || h.object != object || h.instance != instance ||
         !(fabsf(h.t - 2.0f) <= 1e-4f) || !(fabsf(h.u - u) <= 1e-4f) ||
         !(fabsf(h.v - v) <= 1e-4f)) {
-        report_failure(file, line);
+        tu_report_failure(file, line);
         fprintf(stderr,
                 "triangle (%g,%g,%g)(%g,%g,%g)(%g,%g,%g): hit prim %u object %u instance %u "
                 "t %g u %g v %g; expected prim %u object %u instance %u t 2 u %g v %g\n",
@@ -402,7 +340,7 @@ int tu_check_triangle(const char *file, int line, const float a[3], const float 
         ok = 0;
     }
     if (ok)
-        passes++;
+        tu_report_pass();
     return ok;
 }
 
@@ -423,7 +361,7 @@ int tu_check_matrix(const char *file, int line, const float m[16], const double 
     for (k = 0; k < 16; k++) {
         double d = (double)m[k] - expected[k];
         if (!(fabs(d) <= tol)) {
-            report_failure(file, line);
+            tu_report_failure(file, line);
             fprintf(stderr, "matrix element %d (row %d, column %d) == %.9g, expected %.9g\n", k,
                     k % 4, k / 4, (double)m[k], expected[k]);
             fprintf(stderr, "    got      [");
@@ -436,7 +374,7 @@ int tu_check_matrix(const char *file, int line, const float m[16], const double 
             return 0;
         }
     }
-    passes++;
+    tu_report_pass();
     return 1;
 }
 

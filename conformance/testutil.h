@@ -26,25 +26,12 @@
 
 #include <rt/rt.h>
 
-/* ---- checks ------------------------------------------------------------ */
+#include "check.h"
 
-int tu_check(int ok, const char *file, int line, const char *expr);
-int tu_check_int(long long actual, long long expected, const char *file, int line,
-                 const char *actual_expr, const char *expected_expr);
-int tu_check_near(double actual, double expected, double tol, const char *file, int line,
-                  const char *actual_expr, const char *expected_expr);
+/* ---- checks: check.h (CHECK, CHECK_INT, CHECK_NEAR, CHECK_MSG) ------- */
+
 int tu_expect_error(RTenum code, const char *file, int line, const char *expr);
 
-/* CHECK(expr): expr must be true. */
-#define CHECK(expr) tu_check((expr) != 0, __FILE__, __LINE__, #expr)
-/* CHECK_INT(actual, expected): integer equality, both values printed. */
-#define CHECK_INT(actual, expected)                                                           \
-    tu_check_int((long long)(actual), (long long)(expected), __FILE__, __LINE__, #actual,     \
-                 #expected)
-/* CHECK_NEAR(actual, expected, tol): |actual - expected| <= tol (NaN fails). */
-#define CHECK_NEAR(actual, expected, tol)                                                     \
-    tu_check_near((double)(actual), (double)(expected), (double)(tol), __FILE__, __LINE__,    \
-                  #actual, #expected)
 /*
  * CHECK_ERR(code) / expect_error(code): rtGetError() must return `code`
  * and a second rtGetError() must return RT_NO_ERROR (the slot was cleared).
@@ -53,11 +40,6 @@ int tu_expect_error(RTenum code, const char *file, int line, const char *expr);
 #define expect_error(code) CHECK_ERR(code)
 #define CHECK_NO_ERR() CHECK_ERR(RT_NO_ERROR)
 
-/* Names the group of checks that follows in failure messages and on stdout. */
-void tu_section(const char *name);
-
-/* Prints "name: N passed, M failed" and returns 0 when nothing failed, 1 otherwise. */
-int test_summary(const char *name);
 
 /* "RT_INVALID_VALUE" etc.; "0x...." for anything else (static buffer). */
 const char *tu_error_name(RTenum code);

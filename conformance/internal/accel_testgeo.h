@@ -19,6 +19,7 @@
 #include <string.h>
 
 #include "base/aabb.h"
+#include "check.h"
 
 /* xorshift64* (Vigna 2016): tiny, and the same sequence everywhere. */
 struct tg_rng {
@@ -249,16 +250,5 @@ static inline int tg_zero_area(const float *a, const float *b, const float *c)
     return e1[1] * e2[2] == e1[2] * e2[1] && e1[2] * e2[0] == e1[0] * e2[2] &&
            e1[0] * e2[1] == e1[1] * e2[0];
 }
-
-#define TG_CHECK(failures, cond, ...)                                                      \
-    do {                                                                                   \
-        if (!(cond)) {                                                                     \
-            if ((failures)++ < 20) {                                                       \
-                fprintf(stderr, "%s:%d: check failed: %s: ", __FILE__, __LINE__, #cond);   \
-                fprintf(stderr, __VA_ARGS__);                                              \
-                fputc('\n', stderr);                                                       \
-            }                                                                              \
-        }                                                                                  \
-    } while (0)
 
 #endif

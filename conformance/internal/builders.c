@@ -49,7 +49,7 @@ static int build(struct bvh *b, const struct aabb *boxes, uint32_t n, enum bvh_b
     p.bins = bins;
     p.max_leaf_size = max_leaf;
     int r = accel_build(b, boxes, n, &p);
-    TG_CHECK(failures, r == 0, "accel_build failed (n=%u)", n);
+    failures += !CHECKF(r == 0, "accel_build failed (n=%u)", n);
     return r;
 }
 
@@ -126,7 +126,7 @@ static void check_quality(const char *scene, const struct aabb *boxes, uint32_t 
     check_tree(scene, &sweep, boxes, n, BVH_MAX_LEAF_SIZE, 1);
     double ref = accel_sah_cost(&sweep, 1.0f, 1.0f);
     double indep = sah_ref(&sweep, 0) / area_of(sweep.nodes[0].aabb_min, sweep.nodes[0].aabb_max);
-    TG_CHECK(failures, fabs(ref - indep) <= 1e-9 * indep, "%s: accel_sah_cost %g, recomputed %g",
+    failures += !CHECKF(fabs(ref - indep) <= 1e-9 * indep, "%s: accel_sah_cost %g, recomputed %g",
              scene, ref, indep);
 
     uint32_t *ids = tg_alloc(sizeof(uint32_t) * n);
@@ -136,7 +136,7 @@ static void check_quality(const char *scene, const struct aabb *boxes, uint32_t 
     double median = median_cost(ids, n, BVH_MAX_LEAF_SIZE) /
                     area_of(sweep.nodes[0].aabb_min, sweep.nodes[0].aabb_max);
     free(ids);
-    TG_CHECK(failures, ref < 0.97 * median, "%s: sweep SAH %.3f not below median tree %.3f",
+    failures += !CHECKF(ref < 0.97 * median, "%s: sweep SAH %.3f not below median tree %.3f",
              scene, ref, median);
 
     /* Allowed cost / sweep cost per bin count.  Paper 000 table 1 reports
@@ -154,7 +154,7 @@ static void check_quality(const char *scene, const struct aabb *boxes, uint32_t 
         check_tree(scene, &t, boxes, n, BVH_MAX_LEAF_SIZE, 1);
         double ratio = accel_sah_cost(&t, 1.0f, 1.0f) / ref;
         printf(" %d:%.4f", bins[i], ratio);
-        TG_CHECK(failures, ratio <= bound[i] && ratio >= 0.9, "%s: %d bins cost ratio %.4f",
+        failures += !CHECKF(ratio <= bound[i] && ratio >= 0.9, "%s: %d bins cost ratio %.4f",
                  scene, bins[i], ratio);
         bvh_release(&t);
     }
@@ -180,7 +180,7 @@ static void check_all_params(const char *scene, const struct aabb *boxes, uint32
                 continue;
             check_tree(what, &a, boxes, n, leaf[l], 1);
             if (!build(&b, boxes, n, builder, bin_count, leaf[l])) {
-                TG_CHECK(failures, same_tree(&a, &b), "%s: two builds differ", what);
+                failures += !CHECKF(same_tree(&a, &b), "%s: two builds differ", what);
                 bvh_release(&b);
             }
             bvh_release(&a);
@@ -200,9 +200,9 @@ static void check_tiny(void)
         bvh_release(&b);
         if (!build(&b, &one, 1, builder, 16, 8)) {
             check_tree("1 prim", &b, &one, 1, 8, 1);
-            TG_CHECK(failures, b.node_count == 1 && b.nodes[0].count == 1 && b.depth == 0,
+            failures += !CHECKF(b.node_count == 1 && b.nodes[0].count == 1 && b.depth == 0,
                      "1 prim: single leaf root");
-            TG_CHECK(failures, bc_box_inside(one.min, one.max, b.nodes[0].aabb_min,
+            failures += !CHECKF(bc_box_inside(one.min, one.max, b.nodes[0].aabb_min,
                                           b.nodes[0].aabb_max) &&
                                    bc_box_inside(b.nodes[0].aabb_min, b.nodes[0].aabb_max, one.min,
                                               one.max),
@@ -222,12 +222,12 @@ static void check_tiny(void)
         }
     }
     struct bvh b;
-    TG_CHECK(failures, accel_build(&b, boxes, 40, NULL) == 0, "NULL params");
+    failures += !CHECKF(accel_build(&b, boxes, 40, NULL) == 0, "NULL params");
     check_tree("NULL params", &b, boxes, 40, BVH_MAX_LEAF_SIZE, 1);
     bvh_release(&b);
     struct bvh_build_params p;
     bvh_build_params_default(&p);
-    TG_CHECK(failures, p.builder == BVH_BUILDER_BINNED_SAH && p.bins == BVH_DEFAULT_BINS &&
+    failures += !CHECKF(p.builder == BVH_BUILDER_BINNED_SAH && p.bins == BVH_DEFAULT_BINS &&
                            p.max_leaf_size == BVH_MAX_LEAF_SIZE && p.c_trav == BVH_C_TRAV &&
                            p.c_isect == BVH_C_ISECT,
              "bvh_build_params_default");
@@ -236,12 +236,12 @@ static void check_tiny(void)
     p.c_trav = NAN;
     p.c_isect = -1.0f;
     p.builder = (enum bvh_builder)42;
-    TG_CHECK(failures, accel_build(&b, boxes, 40, &p) == 0, "clamped params");
+    failures += !CHECKF(accel_build(&b, boxes, 40, &p) == 0, "clamped params");
     check_tree("clamped params", &b, boxes, 40, BVH_MAX_LEAF_SIZE, 1);
     bvh_release(&b);
     p.bins = 100000;
     p.max_leaf_size = 0;
-    TG_CHECK(failures, accel_build(&b, boxes, 40, &p) == 0, "clamped params");
+    failures += !CHECKF(accel_build(&b, boxes, 40, &p) == 0, "clamped params");
     check_tree("clamped params 2", &b, boxes, 40, 1, 1);
     bvh_release(&b);
 }
@@ -266,9 +266,9 @@ static void check_coincident(void)
             printf("  coincident 100k %s leaf=%d: %.1f ms, depth %u\n", s ? "sweep " : "binned",
                    leaf, ms, b.depth);
             /* A median build needs ceil(log2(n / leaf)) levels. */
-            TG_CHECK(failures, b.depth <= 17, "coincident: depth %u", b.depth);
+            failures += !CHECKF(b.depth <= 17, "coincident: depth %u", b.depth);
             /* Milliseconds in a release build; generous for sanitizers. */
-            TG_CHECK(failures, ms < 5000.0, "coincident: %.0f ms", ms);
+            failures += !CHECKF(ms < 5000.0, "coincident: %.0f ms", ms);
             bvh_release(&b);
         }
     }
@@ -311,7 +311,7 @@ static void check_degenerate_distributions(void)
             if (build(&b, boxes, n, s ? BVH_BUILDER_SWEEP_SAH : BVH_BUILDER_BINNED_SAH, 32, leaf))
                 continue;
             check_tree("geometric chain", &b, boxes, n, leaf, 1);
-            TG_CHECK(failures, b.depth > 20, "geometric chain: depth %u (the SAH should chain)",
+            failures += !CHECKF(b.depth > 20, "geometric chain: depth %u (the SAH should chain)",
                      b.depth);
             bvh_release(&b);
         }
@@ -340,7 +340,7 @@ static void check_degenerate_distributions(void)
         if (build(&b, boxes, n, s ? BVH_BUILDER_SWEEP_SAH : BVH_BUILDER_BINNED_SAH, 8, 4))
             continue;
         check_tree("segments on a line", &b, boxes, n, 4, 1);
-        TG_CHECK(failures, accel_sah_cost(&b, 1.0f, 1.0f) == 0.0, "zero-area root: cost 0");
+        failures += !CHECKF(accel_sah_cost(&b, 1.0f, 1.0f) == 0.0, "zero-area root: cost 0");
         bvh_release(&b);
     }
     /* Contract violations (non-finite boxes) must not crash or lose a
@@ -380,7 +380,7 @@ static void subtree_slots(const struct bvh *b, uint32_t ni, uint32_t *first, uin
     uint32_t f0, c0, f1, c1;
     subtree_slots(b, n->first, &f0, &c0);
     subtree_slots(b, n->first + 1, &f1, &c1);
-    TG_CHECK(failures, f0 + c0 == f1, "subtrees of node %u not adjacent", ni);
+    failures += !CHECKF(f0 + c0 == f1, "subtrees of node %u not adjacent", ni);
     *first = f0;
     *count = c0 + c1;
 }
@@ -420,7 +420,7 @@ static void check_median_splits(void)
                 uint32_t lf, lc, rf, rc;
                 subtree_slots(&b, node->first, &lf, &lc);
                 subtree_slots(&b, node->first + 1, &rf, &rc);
-                TG_CHECK(failures, rc == lc || rc == lc + 1,
+                failures += !CHECKF(rc == lc || rc == lc + 1,
                          "median split of %u into %u + %u (order %d)", lc + rc, lc, rc, order);
                 float left_max = -INFINITY;
                 float right_min = INFINITY;
@@ -428,7 +428,7 @@ static void check_median_splits(void)
                     left_max = fmaxf(left_max, boxes[b.prim_index[i]].min[0]);
                 for (uint32_t i = rf; i < rf + rc; i++)
                     right_min = fminf(right_min, boxes[b.prim_index[i]].min[0]);
-                TG_CHECK(failures, left_max <= right_min, "median split out of order (order %d)",
+                failures += !CHECKF(left_max <= right_min, "median split out of order (order %d)",
                          order);
             }
             bvh_release(&b);
@@ -454,12 +454,12 @@ static void check_depth_guard(void)
         uint32_t k = 0;
         while (((uint64_t)1 << k) < n)
             k++;
-        TG_CHECK(failures, build_ceil_log2(n) == k, "ceil_log2(%u) = %u", n, build_ceil_log2(n));
+        failures += !CHECKF(build_ceil_log2(n) == k, "ceil_log2(%u) = %u", n, build_ceil_log2(n));
     }
     for (size_t i = 0; i < sizeof(special) / sizeof(special[0]); i++) {
         uint32_t n = special[i];
         uint64_t p = (uint64_t)1 << build_ceil_log2(n);
-        TG_CHECK(failures, p >= n && (n <= 1 || p / 2 < n), "ceil_log2(%u)", n);
+        failures += !CHECKF(p >= n && (n <= 1 || p / 2 < n), "ceil_log2(%u)", n);
     }
     for (uint32_t d = 0; d <= BVH_MAX_DEPTH; d++) {
         for (uint32_t i = 0; i < 5000 + sizeof(special) / sizeof(special[0]); i++) {
@@ -467,13 +467,13 @@ static void check_depth_guard(void)
             if (n < 2 || d + build_ceil_log2(n) > BVH_MAX_DEPTH)
                 continue; /* outside the invariant */
             if (!build_must_split_median(d, n))
-                TG_CHECK(failures, d + 1 + build_ceil_log2(n - 1) <= BVH_MAX_DEPTH,
+                failures += !CHECKF(d + 1 + build_ceil_log2(n - 1) <= BVH_MAX_DEPTH,
                          "guard allows an SAH split at depth %u, n %u", d, n);
-            TG_CHECK(failures, d + 1 + build_ceil_log2(n - n / 2) <= BVH_MAX_DEPTH,
+            failures += !CHECKF(d + 1 + build_ceil_log2(n - n / 2) <= BVH_MAX_DEPTH,
                      "median child breaks the invariant at depth %u, n %u", d, n);
         }
     }
-    TG_CHECK(failures, build_ceil_log2(0xffffffffu) + 1 <= BVH_MAX_DEPTH,
+    failures += !CHECKF(build_ceil_log2(0xffffffffu) + 1 <= BVH_MAX_DEPTH,
              "the root satisfies the invariant");
 }
 
@@ -496,13 +496,13 @@ static void check_alloc_failures(const struct aabb *boxes, uint32_t n)
                 succeeded = 1;
                 check_tree("after injected failures", &b, boxes, n, BVH_MAX_LEAF_SIZE, 1);
             } else {
-                TG_CHECK(failures, r == -1 && injected > 0 && !b.nodes && !b.prim_index &&
+                failures += !CHECKF(r == -1 && injected > 0 && !b.nodes && !b.prim_index &&
                                        b.node_count == 0 && b.prim_count == 0,
                          "allocation failure %ld: r=%d", k, r);
             }
             bvh_release(&b);
         }
-        TG_CHECK(failures, succeeded, "builder %d never succeeded", s);
+        failures += !CHECKF(succeeded, "builder %d never succeeded", s);
     }
     /* accel_gather_triangles: NULL on failure, the right order otherwise. */
     struct tg_mesh m;
@@ -515,12 +515,12 @@ static void check_alloc_failures(const struct aabb *boxes, uint32_t n)
         rt_alloc_fail_after(0);
         float *none = accel_gather_triangles(&b, m.pos, m.idx);
         rt_alloc_fail_reset();
-        TG_CHECK(failures, none == NULL, "gather under allocation failure");
+        failures += !CHECKF(none == NULL, "gather under allocation failure");
         float *tri = accel_gather_triangles(&b, m.pos, m.idx);
-        TG_CHECK(failures, tri != NULL, "gather");
+        failures += !CHECKF(tri != NULL, "gather");
         for (uint32_t s = 0; tri && s < b.prim_count; s++) {
             for (int v = 0; v < 3; v++)
-                TG_CHECK(failures, memcmp(&tri[9 * s + 3 * v], tg_vertex(&m, b.prim_index[s], v),
+                failures += !CHECKF(memcmp(&tri[9 * s + 3 * v], tg_vertex(&m, b.prim_index[s], v),
                                           3 * sizeof(float)) == 0,
                          "gather slot %u", s);
         }

@@ -86,13 +86,13 @@ static int build_checked(enum builder which, const char *scene, struct bvh *out,
     snprintf(what, sizeof(what), "%s/%s leaf=%d growth=%g", scene, builder_name[which],
              p->max_leaf_size, (double)p->leaf_growth);
     if (build_with(which, out, boxes, n, p)) {
-        TG_CHECK(failures, 0, "%s: build failed", what);
+        failures += !CHECKF(0, "%s: build failed", what);
         return -1;
     }
     bvh_check_tree(what, out, boxes, n, (uint32_t)p->max_leaf_size, 1);
     struct bvh again;
     if (build_with(which, &again, boxes, n, p) == 0) {
-        TG_CHECK(failures, bvh_same_tree(out, &again), "%s: two builds differ", what);
+        failures += !CHECKF(bvh_same_tree(out, &again), "%s: two builds differ", what);
         bvh_release(&again);
     }
     return 0;
@@ -114,7 +114,7 @@ static void check_tolerance_table(void)
                     want = caps[c];
                 if (want < 1)
                     want = 1;
-                TG_CHECK(failures, tol[d] == (uint32_t)want, "tolerance g=%g cap=%d d=%d: %u != %g",
+                failures += !CHECKF(tol[d] == (uint32_t)want, "tolerance g=%g cap=%d d=%d: %u != %g",
                          (double)growth[g], caps[c], d, tol[d], want);
             }
         }
@@ -124,20 +124,20 @@ static void check_tolerance_table(void)
     struct bvh_build_params p = params_with(8, BVH_LEAF_GROWTH_REBUILD);
     uint32_t tol[BVH_MAX_DEPTH + 1];
     build_leaf_tolerance(&p, tol);
-    TG_CHECK(failures, tol[7] == 1 && tol[8] == 2 && tol[15] == 4 && tol[21] == 7 && tol[22] == 8,
+    failures += !CHECKF(tol[7] == 1 && tol[8] == 2 && tol[15] == 4 && tol[21] == 7 && tol[22] == 8,
              "BVH_LEAF_GROWTH_REBUILD table: %u %u %u %u %u", tol[7], tol[8], tol[15], tol[21],
              tol[22]);
     /* Normalization: NaN, < 1 and inf mean off; defaults leave it off. */
     struct bvh_build_params d;
     bvh_build_params_default(&d);
-    TG_CHECK(failures, d.leaf_growth == 1.0f, "default leaf_growth %g", (double)d.leaf_growth);
+    failures += !CHECKF(d.leaf_growth == 1.0f, "default leaf_growth %g", (double)d.leaf_growth);
     static const float bad[] = {NAN, 0.5f, -2.0f, INFINITY, 0.0f};
     for (size_t i = 0; i < sizeof(bad) / sizeof(bad[0]); i++) {
         struct bvh_build_params in = d;
         struct bvh_build_params out;
         in.leaf_growth = bad[i];
         accel_build_params_normalize(&out, &in);
-        TG_CHECK(failures, out.leaf_growth == 1.0f, "leaf_growth %g normalized to %g",
+        failures += !CHECKF(out.leaf_growth == 1.0f, "leaf_growth %g normalized to %g",
                  (double)bad[i], (double)out.leaf_growth);
     }
 }
@@ -149,14 +149,14 @@ static void check_tiny(void)
         struct bvh_build_params p = params_with(8, 1.0f);
         struct bvh b;
         memset(&b, 0xab, sizeof(b));
-        TG_CHECK(failures, build_with((enum builder)w, &b, &one, 0, &p) == 0, "%s: 0 prims",
+        failures += !CHECKF(build_with((enum builder)w, &b, &one, 0, &p) == 0, "%s: 0 prims",
                  builder_name[w]);
         bvh_check_tree("0 prims", &b, &one, 0, 8, 1);
         bvh_release(&b);
-        TG_CHECK(failures, build_with((enum builder)w, &b, &one, 1, NULL) == 0, "%s: 1 prim",
+        failures += !CHECKF(build_with((enum builder)w, &b, &one, 1, NULL) == 0, "%s: 1 prim",
                  builder_name[w]);
         bvh_check_tree("1 prim", &b, &one, 1, 8, 1);
-        TG_CHECK(failures,
+        failures += !CHECKF(
                  b.node_count == 1 && b.nodes[0].count == 1 &&
                      memcmp(b.nodes[0].aabb_min, one.min, sizeof(one.min)) == 0 &&
                      memcmp(b.nodes[0].aabb_max, one.max, sizeof(one.max)) == 0,
@@ -174,16 +174,16 @@ static void check_tiny(void)
     p.c_trav = -1.0f;
     struct bvh_parallel_params pp = {(enum bvh_partition)77, (enum bvh_subtree_builder)99};
     struct bvh b;
-    TG_CHECK(failures, accel_build_parallel_ex(&b, boxes, m.tri_count, &p, &pp, NULL) == 0,
+    failures += !CHECKF(accel_build_parallel_ex(&b, boxes, m.tri_count, &p, &pp, NULL) == 0,
              "bad params");
     bvh_check_tree("bad params", &b, boxes, m.tri_count, BVH_MAX_LEAF_SIZE, 1);
     struct bvh ref;
     if (accel_build_parallel(&ref, boxes, m.tri_count, &p, NULL) == 0) {
-        TG_CHECK(failures, bvh_same_tree(&b, &ref), "unknown enums are the defaults");
+        failures += !CHECKF(bvh_same_tree(&b, &ref), "unknown enums are the defaults");
         bvh_release(&ref);
     }
     bvh_release(&b);
-    TG_CHECK(failures, accel_build_median(&b, boxes, m.tri_count, &p) == 0, "median bad params");
+    failures += !CHECKF(accel_build_median(&b, boxes, m.tri_count, &p) == 0, "median bad params");
     bvh_check_tree("median bad params", &b, boxes, m.tri_count, BVH_MAX_LEAF_SIZE, 1);
     bvh_release(&b);
     free(boxes);
@@ -209,13 +209,13 @@ static void check_scene(const char *scene, const struct tg_mesh *m, int check_hi
     struct bvh binned;
     dp.builder = BVH_BUILDER_SWEEP_SAH;
     if (accel_build(&sweep, boxes, n, &dp)) {
-        TG_CHECK(failures, 0, "%s: sweep build", scene);
+        failures += !CHECKF(0, "%s: sweep build", scene);
         free(boxes);
         return;
     }
     dp.builder = BVH_BUILDER_BINNED_SAH;
     if (accel_build(&binned, boxes, n, &dp)) {
-        TG_CHECK(failures, 0, "%s: binned build", scene);
+        failures += !CHECKF(0, "%s: binned build", scene);
         bvh_release(&sweep);
         free(boxes);
         return;
@@ -235,18 +235,18 @@ static void check_scene(const char *scene, const struct tg_mesh *m, int check_hi
         double ratio = accel_sah_cost(&b, 1.0f, 1.0f) / ref;
         printf(" %s %.3f", builder_name[w], ratio);
         if (w == B_SAH_SAH || w == B_GRID_SAH)
-            TG_CHECK(failures, ratio <= binned_ratio * (1.0 + bound[w]) && ratio >= 0.9,
+            failures += !CHECKF(ratio <= binned_ratio * (1.0 + bound[w]) && ratio >= 0.9,
                      "%s: %s cost ratio %.4f (binned %.4f)", scene, builder_name[w], ratio,
                      binned_ratio);
         else
-            TG_CHECK(failures, ratio <= bound[w] && ratio >= 0.95, "%s: %s cost ratio %.4f",
+            failures += !CHECKF(ratio <= bound[w] && ratio >= 0.95, "%s: %s cost ratio %.4f",
                      scene, builder_name[w], ratio);
         if (check_hits) {
             float *tri = accel_gather_triangles(&b, m->pos, m->idx);
             char what[64];
             snprintf(what, sizeof(what), "%s/%s hits", scene, builder_name[w]);
             uint32_t hits = bc_check_hits(what, &b, tri, &rays);
-            TG_CHECK(failures, hits > rays.count / 8, "%s: only %u of %u rays hit", what, hits,
+            failures += !CHECKF(hits > rays.count / 8, "%s: only %u of %u rays hit", what, hits,
                      rays.count);
             rt_free(tri);
         }
@@ -327,7 +327,7 @@ static void check_loose_leaves(const struct tg_mesh *m)
             const struct bvh_node *nd = &loose.nodes[i];
             size[i] = nd->count ? nd->count : size[nd->first] + size[nd->first + 1];
             if (!nd->count)
-                TG_CHECK(failures, size[i] > tol[depth[i]],
+                failures += !CHECKF(size[i] > tol[depth[i]],
                          "%s: inner node %u at depth %u holds %u <= tolerance %u",
                          builder_name[which[w]], i, depth[i], size[i], tol[depth[i]]);
         }
@@ -338,7 +338,7 @@ static void check_loose_leaves(const struct tg_mesh *m)
         printf("  loose leaves %-8s: nodes %u -> %u, depth %u -> %u, cost x%.3f\n",
                builder_name[which[w]], tight.node_count, loose.node_count, tight.depth,
                loose.depth, cl / ct);
-        TG_CHECK(failures, loose.node_count < tight.node_count && cl >= ct * 0.999 &&
+        failures += !CHECKF(loose.node_count < tight.node_count && cl >= ct * 0.999 &&
                                cl <= ct * 1.5,
                  "%s: loose %u nodes cost %g, tight %u nodes cost %g", builder_name[which[w]],
                  loose.node_count, cl, tight.node_count, ct);
@@ -364,7 +364,7 @@ static void check_coincident(void)
                 struct bvh b;
                 double t0 = rt_now_ms();
                 if (build_with((enum builder)w, &b, boxes, n, &p)) {
-                    TG_CHECK(failures, 0, "coincident: %s failed", builder_name[w]);
+                    failures += !CHECKF(0, "coincident: %s failed", builder_name[w]);
                     continue;
                 }
                 double ms = rt_now_ms() - t0;
@@ -374,10 +374,10 @@ static void check_coincident(void)
                     printf("  coincident 100k %-8s leaf=%d: %6.1f ms, depth %u\n",
                            builder_name[w], leaf, ms, b.depth);
                     /* An object-median tree needs ceil(log2(n / leaf)) levels. */
-                    TG_CHECK(failures, b.depth <= 17, "coincident %s: depth %u", builder_name[w],
+                    failures += !CHECKF(b.depth <= 17, "coincident %s: depth %u", builder_name[w],
                              b.depth);
                     /* Milliseconds in a release build; generous for sanitizers. */
-                    TG_CHECK(failures, ms < 5000.0, "coincident %s: %.0f ms", builder_name[w], ms);
+                    failures += !CHECKF(ms < 5000.0, "coincident %s: %.0f ms", builder_name[w], ms);
                 }
                 bvh_release(&b);
             }
@@ -432,14 +432,14 @@ static void check_deep_chains(void)
         struct bvh both;
         if (build_with((enum builder)w, &alone, boxes, chain, &p) ||
             build_with((enum builder)w, &both, boxes, n, &p)) {
-            TG_CHECK(failures, 0, "chain: %s failed", builder_name[w]);
+            failures += !CHECKF(0, "chain: %s failed", builder_name[w]);
             continue;
         }
         bvh_check_tree("chain", &alone, boxes, chain, 1, 1);
         bvh_check_tree("chain + cluster", &both, boxes, n, 1, 1);
         printf(" %s %u %u", builder_name[w], alone.depth, both.depth);
         if (w == B_MEDIAN || w == B_GRID_BIH || w == B_BIN_BIH)
-            TG_CHECK(failures, alone.depth == BVH_MAX_DEPTH && both.depth == BVH_MAX_DEPTH,
+            failures += !CHECKF(alone.depth == BVH_MAX_DEPTH && both.depth == BVH_MAX_DEPTH,
                      "chain: %s depth %u, %u: the guard should be reached", builder_name[w],
                      alone.depth, both.depth);
         bvh_release(&alone);
@@ -474,7 +474,7 @@ static void check_nonfinite(void)
             bvh_check_tree("non-finite", &b, boxes, n, BVH_MAX_LEAF_SIZE, 0);
             bvh_release(&b);
         } else {
-            TG_CHECK(failures, 0, "non-finite: %s failed", builder_name[w]);
+            failures += !CHECKF(0, "non-finite: %s failed", builder_name[w]);
         }
     }
     free(boxes);
@@ -502,14 +502,14 @@ static void check_alloc_failures(void)
                 bvh_check_tree("after injected failures", &b, boxes, m.tri_count,
                                BVH_MAX_LEAF_SIZE, 1);
             } else {
-                TG_CHECK(failures,
+                failures += !CHECKF(
                          status == -1 && injected > 0 && !b.nodes && !b.prim_index &&
                              b.node_count == 0 && b.prim_count == 0,
                          "%s: allocation failure %ld: status %d", builder_name[w], k, status);
             }
             bvh_release(&b);
         }
-        TG_CHECK(failures, succeeded, "%s never succeeded", builder_name[w]);
+        failures += !CHECKF(succeeded, "%s never succeeded", builder_name[w]);
     }
     free(boxes);
     tg_mesh_free(&m);

@@ -3,7 +3,7 @@
  * (builders_dynamic.c, refit.c, parallel_build_threads.c): bvh_build.h's output
  * contract for any builder, hits against the brute-force intersector, and
  * bit-exact tree comparison.  Header-only, like accel_testgeo.h, whose
- * TG_CHECK and geometry it uses.  The checks count into the including
+ * geometry it uses, and check.h's CHECKF.  The checks count into the including
  * test's `static int failures`, which must be declared before the
  * #include.
  *
@@ -44,13 +44,13 @@ static inline int bvh_check_tree(const char *what, const struct bvh *b,
 {
     int before = failures;
     if (n == 0) {
-        TG_CHECK(failures,
+        failures += !CHECKF(
                  b->node_count == 0 && !b->nodes && b->prim_count == 0 && b->depth == 0,
                  "%s: empty tree", what);
         return failures - before;
     }
-    TG_CHECK(failures, b->prim_count == n, "%s: prim_count %u != %u", what, b->prim_count, n);
-    TG_CHECK(failures, b->node_count >= 1 && b->node_count <= 2 * n - 1,
+    failures += !CHECKF(b->prim_count == n, "%s: prim_count %u != %u", what, b->prim_count, n);
+    failures += !CHECKF(b->node_count >= 1 && b->node_count <= 2 * n - 1,
              "%s: node_count %u for %u prims", what, b->node_count, n);
     if (failures != before)
         return failures - before;
@@ -64,7 +64,7 @@ static inline int bvh_check_tree(const char *what, const struct bvh *b,
     memset(visited, 0, b->node_count);
     for (uint32_t i = 0; i < n && failures == before; i++) {
         uint32_t p = b->prim_index[i];
-        TG_CHECK(failures, p < n && !seen[p], "%s: prim_index[%u] = %u repeated or out of range",
+        failures += !CHECKF(p < n && !seen[p], "%s: prim_index[%u] = %u repeated or out of range",
                  what, i, p);
         if (p < n)
             seen[p] = 1;
@@ -78,7 +78,7 @@ static inline int bvh_check_tree(const char *what, const struct bvh *b,
         sp--;
         uint32_t ni = stack_node[sp];
         uint32_t d = stack_depth[sp];
-        TG_CHECK(failures, ni < b->node_count && !visited[ni], "%s: node %u reached twice", what,
+        failures += !CHECKF(ni < b->node_count && !visited[ni], "%s: node %u reached twice", what,
                  ni);
         if (failures != before)
             break;
@@ -88,30 +88,30 @@ static inline int bvh_check_tree(const char *what, const struct bvh *b,
             max_depth = d;
         const struct bvh_node *node = &b->nodes[ni];
         if (node->count) {
-            TG_CHECK(failures,
+            failures += !CHECKF(
                      node->count <= max_leaf && node->first < n && node->count <= n - node->first,
                      "%s: leaf %u holds [%u, +%u)", what, ni, node->first, node->count);
             if (failures != before)
                 break;
             for (uint32_t s = node->first; s < node->first + node->count; s++) {
-                TG_CHECK(failures, !covered[s], "%s: slot %u in two leaves", what, s);
+                failures += !CHECKF(!covered[s], "%s: slot %u in two leaves", what, s);
                 covered[s] = 1;
                 const struct aabb *pb = &boxes[b->prim_index[s]];
                 if (finite)
-                    TG_CHECK(failures,
+                    failures += !CHECKF(
                              bc_box_inside(pb->min, pb->max, node->aabb_min, node->aabb_max),
                              "%s: leaf %u does not contain prim %u", what, ni, b->prim_index[s]);
             }
         } else {
             /* Children after their parent: the refit's reverse sweep
              * (refit.h) and the absence of cycles both rest on it. */
-            TG_CHECK(failures, node->first > ni && node->first + 1 < b->node_count,
+            failures += !CHECKF(node->first > ni && node->first + 1 < b->node_count,
                      "%s: inner %u has children %u, %u", what, ni, node->first, node->first + 1);
             if (failures != before)
                 break;
             for (uint32_t c = node->first; c <= node->first + 1; c++) {
                 if (finite)
-                    TG_CHECK(failures,
+                    failures += !CHECKF(
                              bc_box_inside(b->nodes[c].aabb_min, b->nodes[c].aabb_max,
                                            node->aabb_min, node->aabb_max),
                              "%s: node %u outside its parent %u", what, c, ni);
@@ -121,11 +121,11 @@ static inline int bvh_check_tree(const char *what, const struct bvh *b,
         }
     }
     if (failures == before) {
-        TG_CHECK(failures, visited_count == b->node_count, "%s: %u of %u nodes reachable", what,
+        failures += !CHECKF(visited_count == b->node_count, "%s: %u of %u nodes reachable", what,
                  visited_count, b->node_count);
         for (uint32_t s = 0; s < n && failures == before; s++)
-            TG_CHECK(failures, covered[s], "%s: slot %u in no leaf", what, s);
-        TG_CHECK(failures, max_depth == b->depth && b->depth <= BVH_MAX_DEPTH,
+            failures += !CHECKF(covered[s], "%s: slot %u in no leaf", what, s);
+        failures += !CHECKF(max_depth == b->depth && b->depth <= BVH_MAX_DEPTH,
                  "%s: depth %u recorded %u (max %d)", what, max_depth, b->depth, BVH_MAX_DEPTH);
     }
     free(seen);
@@ -231,16 +231,16 @@ static inline uint32_t bc_check_hits(const char *what, const struct bvh *b, cons
         const struct trace_hit *ref = &s->hits[i];
         struct trace_hit got;
         int found = trace_closest(b, tri, &s->rays[i], INFINITY, &got, NULL);
-        TG_CHECK(failures, found == s->found[i], "%s: ray %u: hit %d, brute force %d", what, i,
+        failures += !CHECKF(found == s->found[i], "%s: ray %u: hit %d, brute force %d", what, i,
                  found, s->found[i]);
         if (!found || !s->found[i])
             continue;
         hits++;
         if (got.prim == ref->prim)
-            TG_CHECK(failures, got.t == ref->t && got.u == ref->u && got.v == ref->v,
+            failures += !CHECKF(got.t == ref->t && got.u == ref->u && got.v == ref->v,
                      "%s: ray %u: prim %u t %.9g vs %.9g", what, i, got.prim, got.t, ref->t);
         else
-            TG_CHECK(failures, fabsf(got.t - ref->t) <= 1e-6f * fabsf(ref->t),
+            failures += !CHECKF(fabsf(got.t - ref->t) <= 1e-6f * fabsf(ref->t),
                      "%s: ray %u: prim %u t %.9g, brute force prim %u t %.9g", what, i, got.prim,
                      got.t, ref->prim, ref->t);
     }

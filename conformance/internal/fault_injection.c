@@ -52,6 +52,7 @@
 #include <string.h>
 
 #include "base/alloc.h"
+#include "check.h"
 
 #define WIDTH 32
 #define HEIGHT 24
@@ -61,16 +62,6 @@
 
 static int checks_failed;
 
-#define EXPECT(cond, ...)                                                                          \
-    do {                                                                                           \
-        if (!(cond)) {                                                                             \
-            if (checks_failed++ < MAX_PRINTED) {                                                   \
-                fprintf(stderr, "%s:%d: ", __FILE__, __LINE__);                                    \
-                fprintf(stderr, __VA_ARGS__);                                                      \
-                fprintf(stderr, "\n");                                                             \
-            }                                                                                      \
-        }                                                                                          \
-    } while (0)
 
 /* The N of the iteration, for messages. */
 static long current_n;
@@ -95,7 +86,7 @@ static void after(const char *call)
     RTenum e = rtGetError();
     if (e == RT_OUT_OF_MEMORY)
         failures_seen++;
-    EXPECT(e == RT_NO_ERROR || e == RT_OUT_OF_MEMORY, "N=%ld: %s recorded 0x%x", current_n, call,
+    checks_failed += !CHECKF(e == RT_NO_ERROR || e == RT_OUT_OF_MEMORY, "N=%ld: %s recorded 0x%x", current_n, call,
            e);
     note_injection();
 }
@@ -107,15 +98,15 @@ static void check_definition(RTuint name, int reported_before, RTint triangles)
 {
     RTboolean defined = rtIsObject(name);
     if (failures_seen != reported_before) {
-        EXPECT(!defined, "N=%ld: object %u is defined although its definition ran out of memory",
+        checks_failed += !CHECKF(!defined, "N=%ld: object %u is defined although its definition ran out of memory",
                current_n, name);
         return;
     }
-    EXPECT(defined, "N=%ld: object %u is not defined, and no call reported an error", current_n,
+    checks_failed += !CHECKF(defined, "N=%ld: object %u is not defined, and no call reported an error", current_n,
            name);
     RTint n = -1;
     rtGetObjectiv(name, RT_OBJECT_TRIANGLES, &n);
-    EXPECT(n == triangles, "N=%ld: object %u has %d triangles, expected %d", current_n, name, n,
+    checks_failed += !CHECKF(n == triangles, "N=%ld: object %u has %d triangles, expected %d", current_n, name, n,
            triangles);
 }
 
@@ -161,11 +152,11 @@ static void define_texture(int check)
     if (check) {
         after("rtBindTexture");
         if (failures_seen != before) {
-            EXPECT(!rtIsTexture(TEXTURE), "N=%ld: a failed rtBindTexture created the texture",
+            checks_failed += !CHECKF(!rtIsTexture(TEXTURE), "N=%ld: a failed rtBindTexture created the texture",
                    current_n);
             return; /* with 0 bound, rtTexImage2D would be RT_INVALID_OPERATION */
         }
-        EXPECT(rtIsTexture(TEXTURE), "N=%ld: rtBindTexture did not create the texture",
+        checks_failed += !CHECKF(rtIsTexture(TEXTURE), "N=%ld: rtBindTexture did not create the texture",
                current_n);
     }
     rtTexImage2D(RT_TEXTURE_2D, 0, RT_RGB, 8, 8, 0, RT_RGB, RT_UNSIGNED_BYTE, image);
@@ -279,13 +270,13 @@ static void instantiate(const char *what, RTuint name, int check)
         int reported_before = failures_seen;
         after(what);
         RTint expected = count + (failures_seen == reported_before);
-        EXPECT(instance_count() == expected, "N=%ld: %s: %d instances, expected %d", current_n,
+        checks_failed += !CHECKF(instance_count() == expected, "N=%ld: %s: %d instances, expected %d", current_n,
                what, instance_count(), expected);
     } else {
         RTenum e = rtGetError();
-        EXPECT(e == RT_INVALID_VALUE, "N=%ld: %s of an undefined object recorded 0x%x", current_n,
+        checks_failed += !CHECKF(e == RT_INVALID_VALUE, "N=%ld: %s of an undefined object recorded 0x%x", current_n,
                what, e);
-        EXPECT(instance_count() == count, "N=%ld: %s of an undefined object added an instance",
+        checks_failed += !CHECKF(instance_count() == count, "N=%ld: %s of an undefined object added an instance",
                current_n, what);
         note_injection();
     }
@@ -379,7 +370,7 @@ static void faulty_pass(struct outcome *out)
     rtShadingMode(RT_EYE_LIGHT);
     rtRenderFrame();
     RTenum e = rtGetError();
-    EXPECT(e == RT_NO_ERROR || e == RT_OUT_OF_MEMORY, "N=%ld: rtRenderFrame recorded 0x%x",
+    checks_failed += !CHECKF(e == RT_NO_ERROR || e == RT_OUT_OF_MEMORY, "N=%ld: rtRenderFrame recorded 0x%x",
            current_n, e);
     int have_frame = e == RT_NO_ERROR;
     failures_seen += e == RT_OUT_OF_MEMORY;
@@ -391,7 +382,7 @@ static void faulty_pass(struct outcome *out)
     rtShadingMode(RT_WHITTED);
     rtRenderFrame();
     e = rtGetError();
-    EXPECT(e == RT_NO_ERROR || e == RT_OUT_OF_MEMORY, "N=%ld: rtRenderFrame recorded 0x%x",
+    checks_failed += !CHECKF(e == RT_NO_ERROR || e == RT_OUT_OF_MEMORY, "N=%ld: rtRenderFrame recorded 0x%x",
            current_n, e);
     failures_seen += e == RT_OUT_OF_MEMORY;
     note_injection();
@@ -399,7 +390,7 @@ static void faulty_pass(struct outcome *out)
         /* The failed frame left the previous one in place. */
         rtReadPixels(0, 0, WIDTH, HEIGHT, RT_RGBA, RT_FLOAT, now);
         after("rtReadPixels");
-        EXPECT(memcmp(first, now, sizeof(now)) == 0,
+        checks_failed += !CHECKF(memcmp(first, now, sizeof(now)) == 0,
                "N=%ld: a failed rtRenderFrame changed the framebuffer", current_n);
     }
     if (e == RT_NO_ERROR) {
@@ -430,7 +421,7 @@ static long sweep(const char *config, const struct outcome baseline[2])
             rt_alloc_fail_reset();
             continue;
         }
-        EXPECT(rtMakeCurrent(ctx) == RT_TRUE, "N=%ld: rtMakeCurrent failed", n);
+        checks_failed += !CHECKF(rtMakeCurrent(ctx) == RT_TRUE, "N=%ld: rtMakeCurrent failed", n);
         int reported_before = failures_seen;
         injected = rt_alloc_failures() > 0; /* rtCreateContext absorbed one */
         note_injection();
@@ -440,23 +431,23 @@ static long sweep(const char *config, const struct outcome baseline[2])
         /* A failure nobody reported (a pool with fewer threads, a shrink
          * that did not happen) must not change any result. */
         if (failures_seen == reported_before)
-            EXPECT(memcmp(&recovered, &baseline[0], sizeof(recovered)) == 0,
+            checks_failed += !CHECKF(memcmp(&recovered, &baseline[0], sizeof(recovered)) == 0,
                    "N=%ld (%s): no call reported RT_OUT_OF_MEMORY, yet the results differ", n,
                    config);
 
         /* The context must still work, and work exactly. */
         clean_pass(&recovered);
         RTenum e = rtGetError();
-        EXPECT(e == RT_NO_ERROR, "N=%ld: after the reset the clean pass recorded 0x%x", n, e);
+        checks_failed += !CHECKF(e == RT_NO_ERROR, "N=%ld: after the reset the clean pass recorded 0x%x", n, e);
         int same = memcmp(&recovered, &baseline[1], sizeof(recovered)) == 0;
-        EXPECT(same, "N=%ld (%s): after the reset the results differ from a fresh context", n,
+        checks_failed += !CHECKF(same, "N=%ld (%s): after the reset the results differ from a fresh context", n,
                config);
         rtMakeCurrent(NULL);
         rtDestroyContext(ctx);
         if (injected == 0)
             break; /* the whole sequence ran without an injected failure */
     }
-    EXPECT(n < MAX_N, "%s: the sequence still failed at N=%ld", config, n);
+    checks_failed += !CHECKF(n < MAX_N, "%s: the sequence still failed at N=%ld", config, n);
     return n;
 }
 
@@ -475,12 +466,12 @@ int main(void)
     current_n = -1;
     faulty_pass(&baseline[0]);
     clean_pass(&baseline[1]);
-    EXPECT(rtGetError() == RT_NO_ERROR, "the baseline recorded an error");
-    EXPECT(failures_seen == 0, "the baseline ran out of memory");
+    checks_failed += !CHECKF(rtGetError() == RT_NO_ERROR, "the baseline recorded an error");
+    checks_failed += !CHECKF(failures_seen == 0, "the baseline ran out of memory");
     int hit_count = 0;
     for (int i = 0; i < RAY_COUNT; i++)
         hit_count += baseline[1].hits[i].t < INFINITY;
-    EXPECT(hit_count > RAY_COUNT / 4, "the scene is nearly empty (%d hits)", hit_count);
+    checks_failed += !CHECKF(hit_count > RAY_COUNT / 4, "the scene is nearly empty (%d hits)", hit_count);
     rtMakeCurrent(NULL);
     rtDestroyContext(ctx);
 
@@ -493,7 +484,7 @@ int main(void)
                    "RT_OUT_OF_MEMORY\n",
                    configs[c], one_shot ? "one failing call" : "every allocation from N on", n,
                    failures_seen);
-            EXPECT(failures_seen > 0, "%s: no call ever reported RT_OUT_OF_MEMORY", configs[c]);
+            checks_failed += !CHECKF(failures_seen > 0, "%s: no call ever reported RT_OUT_OF_MEMORY", configs[c]);
         }
     printf("fault_injection: %s (%d failed checks)\n", checks_failed ? "FAILED" : "passed",
            checks_failed);

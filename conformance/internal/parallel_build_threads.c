@@ -56,7 +56,7 @@ static void check_builds(const char *scene, const struct tg_mesh *m, struct rt_p
             p.leaf_growth = BVH_LEAF_GROWTH_REBUILD;
         struct bvh ref;
         if (accel_build_parallel_ex(&ref, boxes, n, &p, &combos[c], NULL)) {
-            TG_CHECK(failures, 0, "%s/%s: build failed", scene, combo_name[c]);
+            failures += !CHECKF(0, "%s/%s: build failed", scene, combo_name[c]);
             continue;
         }
         snprintf(what, sizeof(what), "%s/%s", scene, combo_name[c]);
@@ -67,11 +67,11 @@ static void check_builds(const char *scene, const struct tg_mesh *m, struct rt_p
                 struct bvh b;
                 double t0 = rt_now_ms();
                 if (accel_build_parallel_ex(&b, boxes, n, &p, &combos[c], pools[t])) {
-                    TG_CHECK(failures, 0, "%s: build on %d threads failed", what, t);
+                    failures += !CHECKF(0, "%s: build on %d threads failed", what, t);
                     continue;
                 }
                 ms[t] += rt_now_ms() - t0;
-                TG_CHECK(failures, bvh_same_tree(&b, &ref),
+                failures += !CHECKF(bvh_same_tree(&b, &ref),
                          "%s: %d threads (repetition %d) built another tree", what, t, rep);
                 bvh_release(&b);
             }
@@ -92,7 +92,7 @@ static void check_refits(const char *scene, struct tg_mesh *m, struct rt_pool **
     uint32_t n = m->tri_count;
     struct bvh b;
     if (accel_build_parallel(&b, boxes, n, NULL, pools[2])) {
-        TG_CHECK(failures, 0, "%s: build failed", scene);
+        failures += !CHECKF(0, "%s: build failed", scene);
         free(boxes);
         return;
     }
@@ -119,14 +119,14 @@ static void check_refits(const char *scene, struct tg_mesh *m, struct rt_pool **
             memset(tri, 0, 9 * sizeof(float) * n);
             accel_refit_parallel(&b, boxes, pools[t]);
             accel_refit_triangles_parallel(&b, tri, m->pos, m->idx, pools[t]);
-            TG_CHECK(failures,
+            failures += !CHECKF(
                      memcmp(b.nodes, serial, node_bytes) == 0 &&
                          memcmp(tri, serial_tri, 9 * sizeof(float) * n) == 0,
                      "%s: parallel refit on %d threads differs", scene, t);
             memcpy(b.nodes, original, node_bytes);
             memset(tri, 0, 9 * sizeof(float) * n);
             accel_refit_mesh(&b, tri, m->pos, m->idx, pools[t]);
-            TG_CHECK(failures,
+            failures += !CHECKF(
                      memcmp(b.nodes, serial, node_bytes) == 0 &&
                          memcmp(tri, serial_tri, 9 * sizeof(float) * n) == 0,
                      "%s: accel_refit_mesh on %d threads differs", scene, t);
@@ -175,12 +175,12 @@ static void check_concurrent(const struct tg_mesh *m)
     }
     for (int i = 0; i < 2; i++) {
         pthread_join(thread[i], NULL);
-        TG_CHECK(failures, job[i].status == 0, "concurrent build %d failed", i);
+        failures += !CHECKF(job[i].status == 0, "concurrent build %d failed", i);
         struct bvh ref;
         if (job[i].status == 0 &&
             accel_build_parallel_ex(&ref, boxes, m->tri_count, NULL, &job[i].parallel, NULL) ==
                 0) {
-            TG_CHECK(failures, bvh_same_tree(&ref, &job[i].result), "concurrent build %d differs",
+            failures += !CHECKF(bvh_same_tree(&ref, &job[i].result), "concurrent build %d differs",
                      i);
             bvh_release(&ref);
         }
@@ -197,7 +197,7 @@ int main(void)
     pools[0] = NULL;
     for (int t = 1; t <= MAX_THREADS; t++) {
         pools[t] = rt_pool_create(t);
-        TG_CHECK(failures, rt_pool_threads(pools[t]) == t, "pool of %d threads has %d", t,
+        failures += !CHECKF(rt_pool_threads(pools[t]) == t, "pool of %d threads has %d", t,
                  rt_pool_threads(pools[t]));
     }
     struct tg_rng r;

@@ -60,7 +60,7 @@ static void check_boxes(const char *what, const struct bvh *b, const struct aabb
     for (uint32_t i = 0; i < b->node_count && failures - before < 3; i++) {
         struct aabb want;
         naive_box(b, i, boxes, &want);
-        TG_CHECK(failures,
+        failures += !CHECKF(
                  memcmp(b->nodes[i].aabb_min, want.min, sizeof(want.min)) == 0 &&
                      memcmp(b->nodes[i].aabb_max, want.max, sizeof(want.max)) == 0,
                  "%s: node %u box (%g %g %g)-(%g %g %g), union of its primitives (%g %g %g)-(%g "
@@ -157,10 +157,10 @@ static void check_mesh(const char *scene, struct tg_mesh *m, struct rt_pool **po
     ok[2] = accel_build_parallel_ex(&trees[2], boxes, n, NULL, &gridbih, NULL) == 0;
     float *tri[3];
     for (int t = 0; t < 3; t++) {
-        TG_CHECK(failures, ok[t], "%s: %s build failed", scene, names[t]);
+        failures += !CHECKF(ok[t], "%s: %s build failed", scene, names[t]);
         tri[t] = ok[t] ? accel_gather_triangles(&trees[t], m->pos, m->idx) : NULL;
         if (ok[t] && !tri[t]) {
-            TG_CHECK(failures, 0, "%s: gather failed", scene);
+            failures += !CHECKF(0, "%s: gather failed", scene);
             bvh_release(&trees[t]);
             ok[t] = 0;
         }
@@ -189,30 +189,30 @@ static void check_mesh(const char *scene, struct tg_mesh *m, struct rt_pool **po
             bvh_check_tree(what, b, boxes, n, BVH_MAX_LEAF_SIZE, 1);
             struct bvh serial = copy_tree(b);
             accel_refit(b, boxes);
-            TG_CHECK(failures, same_nodes(b, &serial), "%s: refit not idempotent", what);
+            failures += !CHECKF(same_nodes(b, &serial), "%s: refit not idempotent", what);
 
             /* Triangle copy: equal to a fresh gather. */
             accel_refit_triangles(b, tri[t], m->pos, m->idx);
             float *fresh = accel_gather_triangles(b, m->pos, m->idx);
-            TG_CHECK(failures, fresh && memcmp(fresh, tri[t], 9 * sizeof(float) * n) == 0,
+            failures += !CHECKF(fresh && memcmp(fresh, tri[t], 9 * sizeof(float) * n) == 0,
                      "%s: refit triangles differ from a fresh gather", what);
 
             /* Parallel versions: the same bits for 1..MAX_THREADS threads. */
             for (int th = 1; th <= MAX_THREADS; th++) {
                 struct bvh par = copy_tree(&before);
                 accel_refit_parallel(&par, boxes, pools[th]);
-                TG_CHECK(failures, same_nodes(&par, &serial),
+                failures += !CHECKF(same_nodes(&par, &serial),
                          "%s: parallel refit on %d threads differs", what, th);
                 float *ptri = tg_alloc(9 * sizeof(float) * n);
                 memset(ptri, 0, 9 * sizeof(float) * n);
                 accel_refit_triangles_parallel(&par, ptri, m->pos, m->idx, pools[th]);
-                TG_CHECK(failures, fresh && memcmp(ptri, fresh, 9 * sizeof(float) * n) == 0,
+                failures += !CHECKF(fresh && memcmp(ptri, fresh, 9 * sizeof(float) * n) == 0,
                          "%s: parallel triangle refit on %d threads differs", what, th);
                 /* Both at once, from the mesh. */
                 memcpy(par.nodes, before.nodes, sizeof(*par.nodes) * par.node_count);
                 memset(ptri, 0, 9 * sizeof(float) * n);
                 accel_refit_mesh(&par, ptri, m->pos, m->idx, th == 1 ? NULL : pools[th]);
-                TG_CHECK(failures,
+                failures += !CHECKF(
                          same_nodes(&par, &serial) && fresh &&
                              memcmp(ptri, fresh, 9 * sizeof(float) * n) == 0,
                          "%s: accel_refit_mesh on %d threads differs", what, th);
@@ -227,14 +227,14 @@ static void check_mesh(const char *scene, struct tg_mesh *m, struct rt_pool **po
             check_boxes("reverse-numbered", &rev, boxes);
             struct bvh rev_par = reverse_numbering(&before);
             accel_refit_parallel(&rev_par, boxes, pools[MAX_THREADS]);
-            TG_CHECK(failures, same_nodes(&rev, &rev_par),
+            failures += !CHECKF(same_nodes(&rev, &rev_par),
                      "%s: reverse-numbered parallel refit differs", what);
             free_copy(&rev);
             free_copy(&rev_par);
 
             /* What a ray hits: the moved mesh's brute-force hits. */
             uint32_t hits = bc_check_hits(what, b, tri[t], &rays);
-            TG_CHECK(failures, hits > rays.count / 8, "%s: only %u of %u rays hit", what, hits,
+            failures += !CHECKF(hits > rays.count / 8, "%s: only %u of %u rays hit", what, hits,
                      rays.count);
             free_copy(&serial);
             free_copy(&before);
@@ -263,17 +263,17 @@ static void check_tiny(struct rt_pool **pools)
     accel_refit_triangles(&empty, none, NULL, NULL);
     accel_refit_triangles_parallel(&empty, none, NULL, NULL, pools[2]);
     accel_refit_mesh(&empty, none, NULL, NULL, pools[2]);
-    TG_CHECK(failures, empty.node_count == 0 && !empty.nodes, "empty tree touched");
+    failures += !CHECKF(empty.node_count == 0 && !empty.nodes, "empty tree touched");
 
     struct bvh one;
     if (accel_build(&one, &box, 1, NULL)) {
-        TG_CHECK(failures, 0, "1-prim build");
+        failures += !CHECKF(0, "1-prim build");
         return;
     }
     struct aabb moved = {{-1.0f, -2.0f, -3.0f}, {0.5f, 0.5f, 0.5f}};
     for (int th = 1; th <= MAX_THREADS; th++) {
         accel_refit_parallel(&one, &moved, pools[th]);
-        TG_CHECK(failures,
+        failures += !CHECKF(
                  memcmp(one.nodes[0].aabb_min, moved.min, sizeof(moved.min)) == 0 &&
                      memcmp(one.nodes[0].aabb_max, moved.max, sizeof(moved.max)) == 0,
                  "1 prim refit on %d threads", th);
@@ -283,7 +283,7 @@ static void check_tiny(struct rt_pool **pools)
     uint32_t idx[3] = {0, 1, 2};
     float tri[9];
     accel_refit_mesh(&one, tri, v, idx, pools[2]);
-    TG_CHECK(failures,
+    failures += !CHECKF(
              memcmp(tri, v, sizeof(v)) == 0 && one.nodes[0].aabb_min[0] == 0.0f &&
                  one.nodes[0].aabb_max[1] == 1.0f && one.nodes[0].aabb_max[2] == 0.0f,
              "1 prim refit_mesh");

@@ -139,7 +139,7 @@ static void check_hits(const char *what, const struct tg_mesh *m, const struct b
                        struct tg_rng *r)
 {
     float *tri = accel_gather_triangles(bvh, m->pos, m->idx);
-    TG_CHECK(failures, tri != NULL, "%s: gather", what);
+    failures += !CHECKF(tri != NULL, "%s: gather", what);
     if (!tri)
         return;
     struct aabb box = aabb_empty();
@@ -167,15 +167,15 @@ static void check_hits(const char *what, const struct tg_mesh *m, const struct b
         struct trace_hit h;
         int found_ref = trace_closest_brute_force(m->pos, m->idx, m->tri_count, &ray, INFINITY, &ref);
         int found = trace_closest(bvh, tri, &ray, INFINITY, &h, NULL);
-        TG_CHECK(failures, found == found_ref, "%s ray %d: found %d, reference %d", what, i, found,
+        failures += !CHECKF(found == found_ref, "%s ray %d: found %d, reference %d", what, i, found,
                  found_ref);
         if (!found || !found_ref)
             continue;
         if (h.prim == ref.prim)
-            TG_CHECK(failures, h.t == ref.t && h.u == ref.u && h.v == ref.v,
+            failures += !CHECKF(h.t == ref.t && h.u == ref.u && h.v == ref.v,
                      "%s ray %d: prim %u t %.9g vs %.9g", what, i, h.prim, h.t, ref.t);
         else
-            TG_CHECK(failures, h.t >= ref.t && h.t - ref.t <= 1e-6f * fabsf(ref.t),
+            failures += !CHECKF(h.t >= ref.t && h.t - ref.t <= 1e-6f * fabsf(ref.t),
                      "%s ray %d: prim %u t=%.9g, reference prim %u t=%.9g", what, i, h.prim, h.t,
                      ref.prim, ref.t);
     }
@@ -336,7 +336,7 @@ static double run_anim(struct anim *a, const struct accel_restructure_params *pa
     struct aabb *boxes = tg_boxes(&a->mesh);
     struct bvh bvh;
     if (accel_build(&bvh, boxes, a->mesh.tri_count, NULL)) {
-        TG_CHECK(failures, 0, "%s: initial build", a->name);
+        failures += !CHECKF(0, "%s: initial build", a->name);
         free(boxes);
         return 1.0;
     }
@@ -365,20 +365,20 @@ static double run_anim(struct anim *a, const struct accel_restructure_params *pa
 
         struct accel_restructure_stats stats;
         int rc = accel_restructure(&bvh, boxes, &state, params, &stats);
-        TG_CHECK(failures, rc == 0, "%s: accel_restructure returned %d", what, rc);
+        failures += !CHECKF(rc == 0, "%s: accel_restructure returned %d", what, rc);
         check_tree(what, &bvh, boxes, a->mesh.tri_count);
         check_hits(what, &a->mesh, &bvh, r);
 
         double cost = tree_cost(&bvh, c_leaf);
-        TG_CHECK(failures, close_to(stats.sah_before, pre_cost), "%s: sah_before %.6f, refit %.6f",
+        failures += !CHECKF(close_to(stats.sah_before, pre_cost), "%s: sah_before %.6f, refit %.6f",
                  what, stats.sah_before, pre_cost);
-        TG_CHECK(failures, close_to(stats.sah_after, cost), "%s: sah_after %.6f, tree %.6f", what,
+        failures += !CHECKF(close_to(stats.sah_after, cost), "%s: sah_after %.6f, tree %.6f", what,
                  stats.sah_after, cost);
         if (params->verify_cost)
-            TG_CHECK(failures, stats.restructures == 0 || cost <= pre_cost * (1.0 + 1e-6),
+            failures += !CHECKF(stats.restructures == 0 || cost <= pre_cost * (1.0 + 1e-6),
                      "%s: restructured cost %.6f above the refit's %.6f", what, cost, pre_cost);
         if (stats.restructures == 0)
-            TG_CHECK(failures, close_to(cost, pre_cost), "%s: nothing restructured but cost moved",
+            failures += !CHECKF(close_to(cost, pre_cost), "%s: nothing restructured but cost moved",
                      what);
 
         refit_box(&refit_only, boxes, 0);
@@ -397,7 +397,7 @@ static double run_anim(struct anim *a, const struct accel_restructure_params *pa
         if (stats.restructures > 0 && stats.prims_restructured < a->mesh.tri_count / 2)
             a->partial_frames++;
         if (fresh_bound > 0.0)
-            TG_CHECK(failures, cost <= fresh_bound * fresh_cost,
+            failures += !CHECKF(cost <= fresh_bound * fresh_cost,
                      "%s: cost %.3f is %.2f x a fresh build's", what, cost, cost / fresh_cost);
         last_ratio = cost / refit_cost;
     }
@@ -430,11 +430,11 @@ static void check_no_rays(struct tg_rng *r)
         copy_bvh(&expect, &bvh);
         refit_box(&expect, boxes, 0);
         struct accel_restructure_stats s;
-        TG_CHECK(failures, accel_restructure(&bvh, boxes, &st, &p, &s) == 0, "no rays");
-        TG_CHECK(failures, s.restructures == 0 && s.pairs_candidates == 0 && same_tree(&bvh, &expect),
+        failures += !CHECKF(accel_restructure(&bvh, boxes, &st, &p, &s) == 0, "no rays");
+        failures += !CHECKF(s.restructures == 0 && s.pairs_candidates == 0 && same_tree(&bvh, &expect),
                  "no rays: %u restructures, tree differs from the refit", s.restructures);
         /* NULL params and NULL stats are accepted. */
-        TG_CHECK(failures, accel_restructure(&bvh, boxes, &st, NULL, NULL) == 0, "NULL params");
+        failures += !CHECKF(accel_restructure(&bvh, boxes, &st, NULL, NULL) == 0, "NULL params");
         check_tree("NULL params", &bvh, boxes, a.mesh.tri_count);
         free_copy(&expect);
         accel_restructure_state_release(&st);
@@ -462,9 +462,9 @@ static void check_deterministic(struct tg_rng *r)
         free(boxes);
         boxes = tg_boxes(&a.mesh);
         for (int i = 0; i < 2; i++)
-            TG_CHECK(failures, accel_restructure(&t[i], boxes, &st[i], NULL, NULL) == 0,
+            failures += !CHECKF(accel_restructure(&t[i], boxes, &st[i], NULL, NULL) == 0,
                      "deterministic run %d", i);
-        TG_CHECK(failures, same_tree(&t[0], &t[1]), "two runs differ at frame %u", f);
+        failures += !CHECKF(same_tree(&t[0], &t[1]), "two runs differ at frame %u", f);
     }
     for (int i = 0; i < 2; i++) {
         accel_restructure_state_release(&st[i]);
@@ -510,8 +510,8 @@ static void check_unordered(struct tg_rng *r)
         struct accel_restructure_state st;
         accel_restructure_state_init(&st);
         struct accel_restructure_stats s;
-        TG_CHECK(failures, accel_restructure(&bvh, boxes, &st, NULL, &s) == 0, "unordered");
-        TG_CHECK(failures, s.restructures > 0, "unordered: nothing restructured");
+        failures += !CHECKF(accel_restructure(&bvh, boxes, &st, NULL, &s) == 0, "unordered");
+        failures += !CHECKF(s.restructures > 0, "unordered: nothing restructured");
         check_tree("unordered", &bvh, boxes, a.mesh.tri_count);
         check_hits("unordered", &a.mesh, &bvh, r);
         accel_restructure_state_release(&st);
@@ -555,7 +555,7 @@ static void check_nonfinite(struct tg_rng *r)
                     moved[i].min[(i + 2) % 3] = -INFINITY;
             }
             int rc = accel_restructure(&b, moved, &st, &p, NULL);
-            TG_CHECK(failures, rc == 0, "non-finite boxes: rc %d", rc);
+            failures += !CHECKF(rc == 0, "non-finite boxes: rc %d", rc);
             check_tree_boxes("non-finite boxes", &b, moved, n, 0);
         }
         free(moved);
@@ -573,7 +573,7 @@ static void check_tiny(void)
     struct bvh empty;
     memset(&empty, 0, sizeof(empty));
     struct aabb one = {{0.0f, 0.0f, 0.0f}, {1.0f, 1.0f, 1.0f}};
-    TG_CHECK(failures, accel_restructure(&empty, &one, &st, NULL, NULL) == 0 &&
+    failures += !CHECKF(accel_restructure(&empty, &one, &st, NULL, NULL) == 0 &&
                            empty.node_count == 0,
              "empty BVH");
     struct aabb boxes[64];
@@ -605,7 +605,7 @@ static void check_tiny(void)
                 }
                 char what[64];
                 snprintf(what, sizeof(what), "tiny n=%u kind=%d frame %u", n, kind, frame);
-                TG_CHECK(failures, accel_restructure(&b, boxes, &st, NULL, NULL) == 0, "%s", what);
+                failures += !CHECKF(accel_restructure(&b, boxes, &st, NULL, NULL) == 0, "%s", what);
                 check_tree(what, &b, boxes, n);
             }
             bvh_release(&b);
@@ -673,13 +673,13 @@ static void check_depth_limit(struct tg_rng *r)
     struct accel_restructure_state st;
     accel_restructure_state_init(&st);
     struct accel_restructure_stats s;
-    TG_CHECK(failures, accel_restructure(&b, boxes, &st, NULL, &s) == 0, "caterpillar");
+    failures += !CHECKF(accel_restructure(&b, boxes, &st, NULL, &s) == 0, "caterpillar");
     check_tree("caterpillar", &b, boxes, n);
     printf("  caterpillar: %u restructures, %u skipped for depth, depth now %u\n",
            s.restructures, s.rejected_depth, b.depth);
-    TG_CHECK(failures, s.rejected_depth > 0, "caterpillar: no restructuring hit the depth limit");
-    TG_CHECK(failures, s.restructures > 0, "caterpillar: nothing restructured");
-    TG_CHECK(failures, s.sah_after < s.sah_before, "caterpillar: cost %.3f -> %.3f", s.sah_before,
+    failures += !CHECKF(s.rejected_depth > 0, "caterpillar: no restructuring hit the depth limit");
+    failures += !CHECKF(s.restructures > 0, "caterpillar: nothing restructured");
+    failures += !CHECKF(s.sah_after < s.sah_before, "caterpillar: cost %.3f -> %.3f", s.sah_before,
              s.sah_after);
     accel_restructure_state_release(&st);
     bvh_release(&b);
@@ -742,18 +742,18 @@ static void check_alloc_failures(struct tg_rng *r, int g, float cap, uint32_t fr
             ops = s.restructures;
             check_tree("after injected failures", &owned, boxes, a.mesh.tri_count);
         } else {
-            TG_CHECK(failures, rc == -1 && injected > 0, "failure %ld: rc %d", k, rc);
-            TG_CHECK(failures, same_tree(&owned, &expect), "failure %ld: not the plain refit", k);
+            failures += !CHECKF(rc == -1 && injected > 0, "failure %ld: rc %d", k, rc);
+            failures += !CHECKF(same_tree(&owned, &expect), "failure %ld: not the plain refit", k);
         }
-        TG_CHECK(failures, accel_restructure(&owned, boxes, &st, &p, NULL) == 0,
+        failures += !CHECKF(accel_restructure(&owned, boxes, &st, &p, NULL) == 0,
                  "failure %ld: the next frame failed", k);
         check_tree("frame after a failure", &owned, boxes, a.mesh.tri_count);
         accel_restructure_state_release(&st);
         bvh_release(&owned);
     }
     printf("  allocation failures: %ld injection points, %u restructurings\n", k - 1, ops);
-    TG_CHECK(failures, succeeded, "never succeeded without an injected failure");
-    TG_CHECK(failures, ops >= min_ops, "%u restructurings, the sweep wants %u", ops, min_ops);
+    failures += !CHECKF(succeeded, "never succeeded without an injected failure");
+    failures += !CHECKF(ops >= min_ops, "%u restructurings, the sweep wants %u", ops, min_ops);
     free_copy(&expect);
     bvh_release(&start);
     free(boxes0);
@@ -772,13 +772,13 @@ static void check_measure(void)
     printf("  measured constants (%.1f ms): C_leaf %.3f  C_rebuild %.3f  C_refine %.3f"
            "  (defaults %.3f %.3f %.3f)\n",
            ms, p.c_leaf, p.c_rebuild, p.c_refine, d.c_leaf, d.c_rebuild, d.c_refine);
-    TG_CHECK(failures, isfinite(p.c_leaf) && p.c_leaf > 0.0f && isfinite(p.c_rebuild) &&
+    failures += !CHECKF(isfinite(p.c_leaf) && p.c_leaf > 0.0f && isfinite(p.c_rebuild) &&
                            p.c_rebuild > 0.0f && isfinite(p.c_refine) && p.c_refine > 0.0f,
              "measured constants");
     /* < 50 ms in a Release build; sanitizer builds run several times
      * slower, hence the margin. */
-    TG_CHECK(failures, ms < 1000.0, "measurement took %.0f ms", ms);
-    TG_CHECK(failures, p.rays_per_frame == d.rays_per_frame && p.verify_cost == d.verify_cost,
+    failures += !CHECKF(ms < 1000.0, "measurement took %.0f ms", ms);
+    failures += !CHECKF(p.rays_per_frame == d.rays_per_frame && p.verify_cost == d.verify_cost,
              "measure_constants fills the other fields with the defaults");
 }
 
@@ -796,13 +796,13 @@ int main(void)
      * must recover most of what the refit loses. */
     make_explode(&a, 28, 8, -2.0f, &r);
     double recovery = run_anim(&a, &p, RESTRUCTURE_EXPLODE_BOUND, &r);
-    TG_CHECK(failures, recovery <= RESTRUCTURE_RECOVERY_BOUND,
+    failures += !CHECKF(recovery <= RESTRUCTURE_RECOVERY_BOUND,
              "%s: final cost %.3f of the refit-only tree's", a.name, recovery);
     free_anim(&a);
 
     make_morph(&a, 8000, 6, &r);
     recovery = run_anim(&a, &p, RESTRUCTURE_EXPLODE_BOUND, &r);
-    TG_CHECK(failures, recovery <= RESTRUCTURE_RECOVERY_BOUND,
+    failures += !CHECKF(recovery <= RESTRUCTURE_RECOVERY_BOUND,
              "%s: final cost %.3f of the refit-only tree's", a.name, recovery);
     free_anim(&a);
 
@@ -817,9 +817,9 @@ int main(void)
     local.rays_per_frame = RESTRUCTURE_LOCAL_RAYS;
     make_explode(&a, 28, 8, 0.8f, &r);
     recovery = run_anim(&a, &local, RESTRUCTURE_EXPLODE_BOUND, &r);
-    TG_CHECK(failures, recovery <= RESTRUCTURE_RECOVERY_BOUND,
+    failures += !CHECKF(recovery <= RESTRUCTURE_RECOVERY_BOUND,
              "%s: final cost %.3f of the refit-only tree's", a.name, recovery);
-    TG_CHECK(failures, 2 * a.partial_frames >= a.frames - 1,
+    failures += !CHECKF(2 * a.partial_frames >= a.frames - 1,
              "%s: only %u of %u frames restructured selectively", a.name, a.partial_frames,
              a.frames - 1);
     free_anim(&a);

@@ -10,18 +10,10 @@
 #include <string.h>
 
 #include "base/mat4.h"
+#include "check.h"
 #include "scene/recording.h"
 #include "scene/scene.h"
 
-static int failures;
-
-#define EXPECT(cond)                                                                          \
-    do {                                                                                      \
-        if (!(cond)) {                                                                        \
-            fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #cond);          \
-            failures++;                                                                       \
-        }                                                                                     \
-    } while (0)
 
 /* Records one triangle strip quad into rec (as rtBegin(RT_TRIANGLE_STRIP)
  * with four rtVertex3f calls would) and returns its status. */
@@ -58,11 +50,11 @@ int main(void)
     struct scene_recording rec;
     memset(&rec, 0, sizeof(rec));
     rec.material_index = -1;
-    EXPECT(record_quad(&rec, 0.0f) == SCENE_RECORD_OK);
-    EXPECT(rec.mesh.vertex_count == 4 && rec.mesh.tri_count == 2);
+    CHECK(record_quad(&rec, 0.0f) == SCENE_RECORD_OK);
+    CHECK(rec.mesh.vertex_count == 4 && rec.mesh.tri_count == 2);
     scene_mesh_compute_bounds(&rec.mesh);
     struct scene_object *object = scene_objects_get_or_create(&scene.objects, 7);
-    EXPECT(object != NULL);
+    CHECK(object != NULL);
     if (!object)
         return 1;
     scene_define_object(&scene, object, &rec.mesh);
@@ -83,68 +75,67 @@ int main(void)
         struct scene_triangle_state ts = {&material, 0, 0};
         const double p[3] = {1, 0, 0};
         const float n[3] = {0, 0, 1}, c[4] = {1, 1, 1, 1}, t[2] = {0, 0};
-        EXPECT(!scene_block_vertex_is_finite(&block, p));
-        EXPECT(scene_record_vertex(&bad, &block, &ts, p, n, c, t) == SCENE_RECORD_NOT_FINITE);
-        EXPECT(bad.mesh.vertex_count == 0);
+        CHECK(!scene_block_vertex_is_finite(&block, p));
+        CHECK(scene_record_vertex(&bad, &block, &ts, p, n, c, t) == SCENE_RECORD_NOT_FINITE);
+        CHECK(bad.mesh.vertex_count == 0);
         scene_mesh_release(&bad.mesh);
     }
 
     /* One instance at the origin. */
     double identity[16];
     mat4_identity(identity);
-    EXPECT(scene_frame_add_instance(&scene.frame, object, identity, identity, identity) == 0);
+    CHECK(scene_frame_add_instance(&scene.frame, object, identity, identity, identity) == 0);
     struct scene_changes changes;
-    EXPECT(scene_prepare_toplevel(&scene) == SCENE_OK);
-    EXPECT(scene_prepare_objects(&scene, NULL, 100.0, &changes) == SCENE_OK);
-    EXPECT(changes.defined == 1 && changes.redefined == 0 && changes.moved == 1);
-    EXPECT(changes.toplevel_rebuilt == 1 && changes.updated == 0);
-    EXPECT(scene.stats.toplevel_builds == 1);
-    EXPECT(scene.frame.top_valid && scene.frame.trace_instance_count == 1);
+    CHECK(scene_prepare_toplevel(&scene) == SCENE_OK);
+    CHECK(scene_prepare_objects(&scene, NULL, 100.0, &changes) == SCENE_OK);
+    CHECK(changes.defined == 1 && changes.redefined == 0 && changes.moved == 1);
+    CHECK(changes.toplevel_rebuilt == 1 && changes.updated == 0);
+    CHECK(scene.stats.toplevel_builds == 1);
+    CHECK(scene.frame.top_valid && scene.frame.trace_instance_count == 1);
 
     /* The structure is built on demand, as a render thread would. */
     int built = 0;
     const struct scene_accel *accel =
         scene_object_acquire(object, &scene.update_config, &built);
-    EXPECT(accel != NULL && built == 1 && accel->bvh.prim_count == 2);
-    EXPECT(scene_object_peek(object) == accel);
+    CHECK(accel != NULL && built == 1 && accel->bvh.prim_count == 2);
+    CHECK(scene_object_peek(object) == accel);
     scene_end_frame(&scene, 1000, 0, 0.0);
 
     /* The same frame again: nothing changed, nothing is rebuilt. */
-    EXPECT(scene_frame_add_instance(&scene.frame, object, identity, identity, identity) == 0);
-    EXPECT(scene_prepare_toplevel(&scene) == SCENE_OK);
-    EXPECT(scene_prepare_objects(&scene, NULL, 100.0, &changes) == SCENE_OK);
-    EXPECT(changes.defined == 0 && changes.moved == 0 && changes.touched == 0);
-    EXPECT(changes.toplevel_rebuilt == 0 && scene.stats.toplevel_builds == 0);
+    CHECK(scene_frame_add_instance(&scene.frame, object, identity, identity, identity) == 0);
+    CHECK(scene_prepare_toplevel(&scene) == SCENE_OK);
+    CHECK(scene_prepare_objects(&scene, NULL, 100.0, &changes) == SCENE_OK);
+    CHECK(changes.defined == 0 && changes.moved == 0 && changes.touched == 0);
+    CHECK(changes.toplevel_rebuilt == 0 && scene.stats.toplevel_builds == 0);
     scene_end_frame(&scene, 1000, 0, 0.0);
 
     /* Moving vertices makes the structure stale; preparation updates it. */
     const float lifted[6] = {0, 0, 2, 1, 0, 2};
     scene_update_vertices(&scene, object, 0, 0, 2, lifted, 0, 3 * sizeof(float));
-    EXPECT(object->mesh.positions[2] == 2.0f && object->mesh.bounds.max[2] == 2.0f);
-    EXPECT(scene_frame_add_instance(&scene.frame, object, identity, identity, identity) == 0);
-    EXPECT(scene_prepare_toplevel(&scene) == SCENE_OK);
-    EXPECT(scene_prepare_objects(&scene, NULL, 100.0, &changes) == SCENE_OK);
-    EXPECT(changes.touched == 1 && changes.updated == 1);
-    EXPECT(scene.stats.object_updates == 1);
+    CHECK(object->mesh.positions[2] == 2.0f && object->mesh.bounds.max[2] == 2.0f);
+    CHECK(scene_frame_add_instance(&scene.frame, object, identity, identity, identity) == 0);
+    CHECK(scene_prepare_toplevel(&scene) == SCENE_OK);
+    CHECK(scene_prepare_objects(&scene, NULL, 100.0, &changes) == SCENE_OK);
+    CHECK(changes.touched == 1 && changes.updated == 1);
+    CHECK(scene.stats.object_updates == 1);
     accel = scene_object_peek(object);
-    EXPECT(accel && accel->serial == object->serial);
+    CHECK(accel && accel->serial == object->serial);
     scene_end_frame(&scene, 1000, 0, 0.0);
 
     /* Redefinition and deletion are part of the change set too. */
     memset(&rec, 0, sizeof(rec));
     rec.material_index = -1;
-    EXPECT(record_quad(&rec, 5.0f) == SCENE_RECORD_OK);
+    CHECK(record_quad(&rec, 5.0f) == SCENE_RECORD_OK);
     scene_mesh_compute_bounds(&rec.mesh);
     scene_define_object(&scene, object, &rec.mesh);
     scene_delete_object(&scene, 7);
     scene_delete_object(&scene, 8); /* unknown: ignored */
-    EXPECT(scene_objects_lookup(&scene.objects, 7) == NULL);
-    EXPECT(scene_prepare_toplevel(&scene) == SCENE_OK);
-    EXPECT(scene_prepare_objects(&scene, NULL, 100.0, &changes) == SCENE_OK);
-    EXPECT(changes.redefined == 1 && changes.deleted == 1);
+    CHECK(scene_objects_lookup(&scene.objects, 7) == NULL);
+    CHECK(scene_prepare_toplevel(&scene) == SCENE_OK);
+    CHECK(scene_prepare_objects(&scene, NULL, 100.0, &changes) == SCENE_OK);
+    CHECK(changes.redefined == 1 && changes.deleted == 1);
 
     scene_mesh_release(&rec.mesh);
     scene_release(&scene);
-    printf("scene_standalone: %s (%d failed)\n", failures ? "FAILED" : "ok", failures);
-    return failures != 0;
+    return test_summary("scene_standalone");
 }

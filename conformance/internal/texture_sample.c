@@ -17,20 +17,11 @@
 #include <string.h>
 
 #include "base/alloc.h"
+#include "check.h"
 #include "scene/texture.h"
 
 static int failures;
 
-#define EXPECT(cond, ...)                                                                          \
-    do {                                                                                           \
-        if (!(cond)) {                                                                             \
-            if (failures++ < 20) {                                                                 \
-                fprintf(stderr, "%s:%d: ", __FILE__, __LINE__);                                    \
-                fprintf(stderr, __VA_ARGS__);                                                      \
-                fprintf(stderr, "\n");                                                             \
-            }                                                                                      \
-        }                                                                                          \
-    } while (0)
 
 #define TW 4
 #define TH 3
@@ -49,11 +40,11 @@ static void set_image(struct scene_texture *tex, int width, int height, const ui
 {
     uint8_t *chain = rt_malloc(4 * scene_texture_chain_texels(width, height));
     if (!chain) {
-        EXPECT(0, "no memory for a %dx%d chain", width, height);
+        failures += !CHECKF(0, "no memory for a %dx%d chain", width, height);
         return;
     }
     memcpy(chain, level0, 4 * (size_t)width * (size_t)height);
-    EXPECT(scene_texture_build_mipmaps(chain, width, height) == 0, "build %dx%d", width, height);
+    failures += !CHECKF(scene_texture_build_mipmaps(chain, width, height) == 0, "build %dx%d", width, height);
     scene_texture_set_image(tex, width, height, chain);
 }
 
@@ -94,13 +85,13 @@ static void centres(struct scene_texture *tex)
                 float s = ((float)i + 0.5f) / TW, t = ((float)j + 0.5f) / TH, e[4], c[4];
                 texel_value(i, j, e);
                 sample(tex, SCENE_FILTER_NEAREST, s, t, c);
-                EXPECT(same(c, e, 0.0f), "NEAREST centre of texel (%d, %d), wrap %d", i, j, wrap);
+                failures += !CHECKF(same(c, e, 0.0f), "NEAREST centre of texel (%d, %d), wrap %d", i, j, wrap);
                 sample(tex, SCENE_FILTER_LINEAR, s, t, c);
-                EXPECT(same(c, e, 1e-6f), "LINEAR centre of texel (%d, %d), wrap %d", i, j, wrap);
+                failures += !CHECKF(same(c, e, 1e-6f), "LINEAR centre of texel (%d, %d), wrap %d", i, j, wrap);
                 /* Anywhere inside the texel's square, NEAREST gives it. */
                 sample(tex, SCENE_FILTER_NEAREST, ((float)i + 0.99f) / TW,
                        ((float)j + 0.01f) / TH, c);
-                EXPECT(same(c, e, 0.0f), "NEAREST inside texel (%d, %d)", i, j);
+                failures += !CHECKF(same(c, e, 0.0f), "NEAREST inside texel (%d, %d)", i, j);
             }
     }
 }
@@ -115,23 +106,23 @@ static void bilinear(struct scene_texture *tex)
     texel_value(2, 1, b);
     for (int k = 0; k < 4; k++)
         e[k] = 0.5f * a[k] + 0.5f * b[k];
-    EXPECT(same(c, e, 1e-6f), "LINEAR halfway in s");
+    failures += !CHECKF(same(c, e, 1e-6f), "LINEAR halfway in s");
     /* At s = 0 with REPEAT: halfway between texel 3 and texel 0. */
     sample(tex, SCENE_FILTER_LINEAR, 0.0f, 0.5f / TH, c);
     texel_value(3, 0, a);
     texel_value(0, 0, b);
     for (int k = 0; k < 4; k++)
         e[k] = 0.5f * a[k] + 0.5f * b[k];
-    EXPECT(same(c, e, 1e-6f), "LINEAR REPEAT across the edge");
+    failures += !CHECKF(same(c, e, 1e-6f), "LINEAR REPEAT across the edge");
     /* With CLAMP_TO_EDGE: texel 0. */
     tex->wrap_s = SCENE_WRAP_CLAMP_TO_EDGE;
     sample(tex, SCENE_FILTER_LINEAR, 0.0f, 0.5f / TH, c);
-    EXPECT(same(c, b, 1e-6f), "LINEAR CLAMP at the edge");
+    failures += !CHECKF(same(c, b, 1e-6f), "LINEAR CLAMP at the edge");
     sample(tex, SCENE_FILTER_LINEAR, -5.0f, 0.5f / TH, c);
-    EXPECT(same(c, b, 1e-6f), "LINEAR CLAMP beyond the edge");
+    failures += !CHECKF(same(c, b, 1e-6f), "LINEAR CLAMP beyond the edge");
     texel_value(3, 0, a);
     sample(tex, SCENE_FILTER_LINEAR, 7.0f, 0.5f / TH, c);
-    EXPECT(same(c, a, 1e-6f), "LINEAR CLAMP beyond the far edge");
+    failures += !CHECKF(same(c, a, 1e-6f), "LINEAR CLAMP beyond the far edge");
     /* A quarter of the way from the centre of (0, 0) to (1, 1) in both:
      * weights 9/16, 3/16, 3/16, 1/16. */
     tex->wrap_s = SCENE_WRAP_REPEAT;
@@ -143,7 +134,7 @@ static void bilinear(struct scene_texture *tex)
     texel_value(1, 1, c11);
     for (int k = 0; k < 4; k++)
         e[k] = (9.0f * c00[k] + 3.0f * c10[k] + 3.0f * c01[k] + c11[k]) / 16.0f;
-    EXPECT(same(c, e, 1e-6f), "LINEAR weights 9/16, 3/16, 3/16, 1/16");
+    failures += !CHECKF(same(c, e, 1e-6f), "LINEAR weights 9/16, 3/16, 3/16, 1/16");
 }
 
 static void repeat_and_non_finite(struct scene_texture *tex)
@@ -156,39 +147,39 @@ static void repeat_and_non_finite(struct scene_texture *tex)
         /* -196.25 repeats to 0.75 exactly, 1e7 and 1e30 to 0. */
         sample(tex, filter, 0.75f, 0.3f, e);
         sample(tex, filter, -196.25f, 0.3f, c);
-        EXPECT(memcmp(c, e, sizeof(c)) == 0, "-196.25 is not 0.75 (filter %d)", f);
+        failures += !CHECKF(memcmp(c, e, sizeof(c)) == 0, "-196.25 is not 0.75 (filter %d)", f);
         sample(tex, filter, 0.0f, 0.3f, e);
         sample(tex, filter, 1e7f, 0.3f, c);
-        EXPECT(memcmp(c, e, sizeof(c)) == 0, "1e7 is not 0 (filter %d)", f);
+        failures += !CHECKF(memcmp(c, e, sizeof(c)) == 0, "1e7 is not 0 (filter %d)", f);
         sample(tex, filter, -1e30f, 0.3f, c);
-        EXPECT(memcmp(c, e, sizeof(c)) == 0, "-1e30 is not 0 (filter %d)", f);
+        failures += !CHECKF(memcmp(c, e, sizeof(c)) == 0, "-1e30 is not 0 (filter %d)", f);
         /* NaN and infinities are taken as 0. */
         sample(tex, filter, nan, 0.3f, c);
-        EXPECT(memcmp(c, e, sizeof(c)) == 0, "NaN is not 0 (filter %d)", f);
+        failures += !CHECKF(memcmp(c, e, sizeof(c)) == 0, "NaN is not 0 (filter %d)", f);
         sample(tex, filter, inf, 0.3f, c);
-        EXPECT(memcmp(c, e, sizeof(c)) == 0, "inf is not 0 (filter %d)", f);
+        failures += !CHECKF(memcmp(c, e, sizeof(c)) == 0, "inf is not 0 (filter %d)", f);
         sample(tex, filter, -inf, 0.3f, c);
-        EXPECT(memcmp(c, e, sizeof(c)) == 0, "-inf is not 0 (filter %d)", f);
+        failures += !CHECKF(memcmp(c, e, sizeof(c)) == 0, "-inf is not 0 (filter %d)", f);
         tex->wrap_s = tex->wrap_t = SCENE_WRAP_CLAMP_TO_EDGE;
         sample(tex, filter, 0.0f, 0.0f, e);
         sample(tex, filter, nan, nan, c);
-        EXPECT(memcmp(c, e, sizeof(c)) == 0, "CLAMP: NaN is not 0 (filter %d)", f);
+        failures += !CHECKF(memcmp(c, e, sizeof(c)) == 0, "CLAMP: NaN is not 0 (filter %d)", f);
     }
     /* A tiny negative s is just below 1: the last texel, not the first. */
     tex->wrap_s = tex->wrap_t = SCENE_WRAP_REPEAT;
     texel_value(TW - 1, 0, e);
     sample(tex, SCENE_FILTER_NEAREST, -1e-30f, 0.1f, c);
-    EXPECT(same(c, e, 0.0f), "s = -1e-30 is not in the last texel");
+    failures += !CHECKF(same(c, e, 0.0f), "s = -1e-30 is not in the last texel");
     sample(tex, SCENE_FILTER_NEAREST, -1e-45f, 0.1f, c);
-    EXPECT(same(c, e, 0.0f), "s = -1e-45 is not in the last texel");
+    failures += !CHECKF(same(c, e, 0.0f), "s = -1e-45 is not in the last texel");
     /* s = 1 is s = 0 under REPEAT and the last texel under CLAMP. */
     texel_value(0, 0, e);
     sample(tex, SCENE_FILTER_NEAREST, 1.0f, 0.1f, c);
-    EXPECT(same(c, e, 0.0f), "REPEAT: s = 1 is not texel 0");
+    failures += !CHECKF(same(c, e, 0.0f), "REPEAT: s = 1 is not texel 0");
     tex->wrap_s = SCENE_WRAP_CLAMP_TO_EDGE;
     texel_value(TW - 1, 0, e);
     sample(tex, SCENE_FILTER_NEAREST, 1.0f, 0.1f, c);
-    EXPECT(same(c, e, 0.0f), "CLAMP: s = 1 is not the last texel");
+    failures += !CHECKF(same(c, e, 0.0f), "CLAMP: s = 1 is not the last texel");
 }
 
 /* Every float bit pattern class, many times: the sample stays in range
@@ -209,7 +200,7 @@ static void any_float(struct scene_texture *tex)
         sample(tex, (n & 4) ? SCENE_FILTER_LINEAR : SCENE_FILTER_NEAREST, s, t, c);
         for (int k = 0; k < 4; k++)
             if (!(c[k] >= 0.0f && c[k] <= 1.0f + 1e-6f)) {
-                EXPECT(0, "sample at (%g, %g) gave %g", (double)s, (double)t, (double)c[k]);
+                failures += !CHECKF(0, "sample at (%g, %g) gave %g", (double)s, (double)t, (double)c[k]);
                 return;
             }
         /* Any level of detail, with every minification filter: the bits
@@ -220,7 +211,7 @@ static void any_float(struct scene_texture *tex)
         scene_texture_sample_lod(tex, lambda, t, s, c);
         for (int k = 0; k < 4; k++)
             if (!(c[k] >= 0.0f && c[k] <= 1.0f + 1e-6f)) {
-                EXPECT(0, "sample at lambda %g gave %g", (double)lambda, (double)c[k]);
+                failures += !CHECKF(0, "sample at lambda %g gave %g", (double)lambda, (double)c[k]);
                 return;
             }
     }
@@ -241,38 +232,38 @@ static void chain_sizes(void)
         const int (*sizes)[2];
         int count;
     } cases[] = {{kitchen, 11}, {wood, 9}, {odd, 3}};
-    EXPECT(scene_texture_level_count(1, 1) == 1, "1x1 has one level");
-    EXPECT(scene_texture_chain_texels(1, 1) == 1, "1x1 chain");
-    EXPECT(scene_texture_level_count(16384, 16384) == SCENE_TEXTURE_MAX_LEVELS, "16384 levels");
-    EXPECT(scene_texture_level_count(16384, 1) == SCENE_TEXTURE_MAX_LEVELS, "16384x1 levels");
-    EXPECT(scene_texture_level_count(1, 3) == 2, "1x3 levels");
+    failures += !CHECKF(scene_texture_level_count(1, 1) == 1, "1x1 has one level");
+    failures += !CHECKF(scene_texture_chain_texels(1, 1) == 1, "1x1 chain");
+    failures += !CHECKF(scene_texture_level_count(16384, 16384) == SCENE_TEXTURE_MAX_LEVELS, "16384 levels");
+    failures += !CHECKF(scene_texture_level_count(16384, 1) == SCENE_TEXTURE_MAX_LEVELS, "16384x1 levels");
+    failures += !CHECKF(scene_texture_level_count(1, 3) == 2, "1x3 levels");
     /* 4/3 of level 0 at most: 64x64 adds 32^2 + ... + 1 = 1365. */
-    EXPECT(scene_texture_chain_texels(64, 64) == 4096 + 1365, "64x64 chain");
-    EXPECT(scene_texture_chain_texels(1044, 1044) <= 1044u * 1044u * 4 / 3, "1044 chain");
+    failures += !CHECKF(scene_texture_chain_texels(64, 64) == 4096 + 1365, "64x64 chain");
+    failures += !CHECKF(scene_texture_chain_texels(1044, 1044) <= 1044u * 1044u * 4 / 3, "1044 chain");
     for (int c = 0; c < 3; c++) {
         const int w = cases[c].sizes[0][0], h = cases[c].sizes[0][1];
-        EXPECT(scene_texture_level_count(w, h) == cases[c].count, "%dx%d: %d levels", w, h,
+        failures += !CHECKF(scene_texture_level_count(w, h) == cases[c].count, "%dx%d: %d levels", w, h,
                scene_texture_level_count(w, h));
         size_t total = 0;
         for (int k = 0; k < cases[c].count; k++)
             total += (size_t)cases[c].sizes[k][0] * (size_t)cases[c].sizes[k][1];
-        EXPECT(scene_texture_chain_texels(w, h) == total, "%dx%d: chain of %zu texels", w, h,
+        failures += !CHECKF(scene_texture_chain_texels(w, h) == total, "%dx%d: chain of %zu texels", w, h,
                scene_texture_chain_texels(w, h));
         /* The level table of a texture with that image. */
         struct scene_texture tex;
         memset(&tex, 0, sizeof(tex));
         uint8_t *chain = rt_calloc(scene_texture_chain_texels(w, h), 4);
         if (!chain) {
-            EXPECT(0, "no memory");
+            failures += !CHECKF(0, "no memory");
             return;
         }
-        EXPECT(scene_texture_build_mipmaps(chain, w, h) == 0, "build %dx%d", w, h);
+        failures += !CHECKF(scene_texture_build_mipmaps(chain, w, h) == 0, "build %dx%d", w, h);
         scene_texture_set_image(&tex, w, h, chain);
-        EXPECT(tex.level_count == cases[c].count, "%dx%d: level_count %d", w, h,
+        failures += !CHECKF(tex.level_count == cases[c].count, "%dx%d: level_count %d", w, h,
                tex.level_count);
         size_t offset = 0;
         for (int k = 0; k < cases[c].count && k < tex.level_count; k++) {
-            EXPECT(tex.levels[k].width == cases[c].sizes[k][0] &&
+            failures += !CHECKF(tex.levels[k].width == cases[c].sizes[k][0] &&
                        tex.levels[k].height == cases[c].sizes[k][1] &&
                        tex.levels[k].texels == chain + 4 * offset,
                    "%dx%d: level %d is %dx%d", w, h, k, tex.levels[k].width,
@@ -289,11 +280,11 @@ static void chain_sizes(void)
     int r8 = scene_texture_build_mipmaps(chain, 8, 8);
     int r1 = scene_texture_build_mipmaps(chain, 1, 1);
     rt_alloc_fail_reset();
-    EXPECT(r8 == -1, "a build without memory succeeded");
-    EXPECT(r1 == 0, "a 1x1 build needed memory");
+    failures += !CHECKF(r8 == -1, "a build without memory succeeded");
+    failures += !CHECKF(r1 == 0, "a 1x1 build needed memory");
     for (int i = 0; i < 4 * 64; i++)
         if (chain[i] != 7) {
-            EXPECT(0, "a failed build wrote level 0");
+            failures += !CHECKF(0, "a failed build wrote level 0");
             break;
         }
 }
@@ -314,7 +305,7 @@ static void chain_texels(void)
             p[2] = 77;
             p[3] = 255;
         }
-    EXPECT(scene_texture_build_mipmaps(chain, 5, 3) == 0, "build 5x3");
+    failures += !CHECKF(scene_texture_build_mipmaps(chain, 5, 3) == 0, "build 5x3");
     const uint8_t *l1 = &chain[4 * 15], *l2 = &chain[4 * 17];
     /* Level 1 is 2x1.  Its texel 0 covers columns [0, 2.5) of level 0:
      * weights 2/5, 2/5, 1/5 on columns 0, 1, 2, and 1/3 on each row:
@@ -323,17 +314,17 @@ static void chain_texels(void)
      * green = 255 - 69.33 = 185.67 -> 186.  Texel 1 covers [2.5, 5):
      * weights 1/5, 2/5, 2/5 on columns 2, 3, 4:
      *   red = (720 + 590 + 370) / 15 = 112, green 143. */
-    EXPECT(l1[0] == 69 && l1[1] == 186 && l1[2] == 77 && l1[3] == 255,
+    failures += !CHECKF(l1[0] == 69 && l1[1] == 186 && l1[2] == 77 && l1[3] == 255,
            "level 1 texel 0 is (%d, %d, %d, %d)", l1[0], l1[1], l1[2], l1[3]);
-    EXPECT(l1[4] == 112 && l1[5] == 143 && l1[6] == 77 && l1[7] == 255,
+    failures += !CHECKF(l1[4] == 112 && l1[5] == 143 && l1[6] == 77 && l1[7] == 255,
            "level 1 texel 1 is (%d, %d, %d, %d)", l1[4], l1[5], l1[6], l1[7]);
     /* Level 2, 1x1: the mean of the 15 texels, red 1360 / 15 = 90.67 ->
      * 91, green 164.33 -> 164.  (From the rounded level 1, (69 + 112) / 2
      * = 90.5 would not be the mean: levels are made from unrounded ones.) */
-    EXPECT(l2[0] == 91 && l2[1] == 164 && l2[2] == 77 && l2[3] == 255,
+    failures += !CHECKF(l2[0] == 91 && l2[1] == 164 && l2[2] == 77 && l2[3] == 255,
            "level 2 is (%d, %d, %d, %d)", l2[0], l2[1], l2[2], l2[3]);
     /* Level 0 is untouched. */
-    EXPECT(chain[0] == 10 && chain[4 * 14] == 140, "level 0 changed");
+    failures += !CHECKF(chain[0] == 10 && chain[4 * 14] == 140, "level 0 changed");
 }
 
 /* A large odd-sized image of noise: its 1x1 level is its mean. */
@@ -342,7 +333,7 @@ static void chain_mean_large(void)
     const int w = 1043, h = 517;
     uint8_t *chain = rt_malloc(4 * scene_texture_chain_texels(w, h));
     if (!chain) {
-        EXPECT(0, "no memory");
+        failures += !CHECKF(0, "no memory");
         return;
     }
     uint32_t x = 88172645u;
@@ -354,11 +345,11 @@ static void chain_mean_large(void)
         chain[i] = (uint8_t)((i % 4 == 3) ? 255 : (x >> 24) / (1 + i % 4));
         sum[i % 4] += chain[i];
     }
-    EXPECT(scene_texture_build_mipmaps(chain, w, h) == 0, "build %dx%d", w, h);
+    failures += !CHECKF(scene_texture_build_mipmaps(chain, w, h) == 0, "build %dx%d", w, h);
     const uint8_t *last = &chain[4 * (scene_texture_chain_texels(w, h) - 1)];
     for (int c = 0; c < 4; c++) {
         double mean = sum[c] / ((double)w * h);
-        EXPECT(fabs(last[c] - mean) <= 0.5 + 1e-3, "1x1 channel %d is %d, mean %.4f", c, last[c],
+        failures += !CHECKF(fabs(last[c] - mean) <= 0.5 + 1e-3, "1x1 channel %d is %d, mean %.4f", c, last[c],
                mean);
     }
     rt_free(chain);
@@ -387,7 +378,7 @@ static void level_selection(void)
         for (int f = 0; f < 2; f++)
             scene_texture_sample_level(&tex, k, f ? SCENE_FILTER_LINEAR : SCENE_FILTER_NEAREST,
                                        s, t, lv[k][f]);
-    EXPECT(!same(lv[0][0], lv[0][1], 1e-3f) && !same(lv[1][0], lv[1][1], 1e-3f) &&
+    failures += !CHECKF(!same(lv[0][0], lv[0][1], 1e-3f) && !same(lv[1][0], lv[1][1], 1e-3f) &&
                !same(lv[0][1], lv[1][1], 1e-3f) && !same(lv[1][1], lv[2][1], 1e-3f),
            "the test point does not tell levels and filters apart");
     static const struct {
@@ -427,7 +418,7 @@ static void level_selection(void)
         tex.min_filter = single[n].min;
         tex.mag_filter = single[n].mag;
         scene_texture_sample_lod(&tex, single[n].lambda, s, t, c);
-        EXPECT(same(c, lv[single[n].level][single[n].linear], 0.0f),
+        failures += !CHECKF(same(c, lv[single[n].level][single[n].linear], 0.0f),
                "case %zu (lambda %g): not level %d %s", n, (double)single[n].lambda,
                single[n].level, single[n].linear ? "LINEAR" : "NEAREST");
     }
@@ -435,7 +426,7 @@ static void level_selection(void)
     tex.min_filter = SCENE_FILTER_LINEAR_MIPMAP_LINEAR;
     tex.mag_filter = SCENE_FILTER_NEAREST;
     scene_texture_sample_lod(&tex, nanf(""), s, t, c);
-    EXPECT(same(c, lv[0][0], 0.0f), "NaN lambda is not a magnification");
+    failures += !CHECKF(same(c, lv[0][0], 0.0f), "NaN lambda is not a magnification");
     /* Between levels: (1 - frac) of d1 plus frac of d1 + 1. */
     static const float lambdas[] = {0.25f, 1.25f, 1.875f};
     for (int f = 0; f < 2; f++) {
@@ -447,7 +438,7 @@ static void level_selection(void)
             for (int k = 0; k < 4; k++)
                 e[k] = (1.0f - fr) * lv[d1][f][k] + fr * lv[d1 + 1][f][k];
             scene_texture_sample_lod(&tex, lambda, s, t, c);
-            EXPECT(same(c, e, 1e-6f), "MIPMAP_LINEAR (%d) at lambda %g", f, (double)lambda);
+            failures += !CHECKF(same(c, e, 1e-6f), "MIPMAP_LINEAR (%d) at lambda %g", f, (double)lambda);
         }
     }
     rt_free(tex.texels);
@@ -457,14 +448,14 @@ static void table(void)
 {
     struct scene_textures tab;
     scene_textures_init(&tab);
-    EXPECT(scene_textures_lookup(&tab, 0) == NULL, "lookup(0) in an empty table");
-    EXPECT(scene_textures_lookup(&tab, 5) == NULL, "lookup(5) in an empty table");
-    EXPECT(scene_textures_get_or_create(&tab, 0) == NULL, "0 is not a texture name");
+    failures += !CHECKF(scene_textures_lookup(&tab, 0) == NULL, "lookup(0) in an empty table");
+    failures += !CHECKF(scene_textures_lookup(&tab, 5) == NULL, "lookup(5) in an empty table");
+    failures += !CHECKF(scene_textures_get_or_create(&tab, 0) == NULL, "0 is not a texture name");
     /* Names that collide in a small table, inserted and removed in turn. */
     for (uint32_t i = 1; i <= 2000; i++) {
         struct scene_texture *tex = scene_textures_get_or_create(&tab, i * 16u);
-        EXPECT(tex && tex->name == i * 16u, "create %u", i * 16u);
-        EXPECT(tex && tex->min_filter == SCENE_FILTER_LINEAR &&
+        failures += !CHECKF(tex && tex->name == i * 16u, "create %u", i * 16u);
+        failures += !CHECKF(tex && tex->min_filter == SCENE_FILTER_LINEAR &&
                    tex->mag_filter == SCENE_FILTER_LINEAR && tex->wrap_s == SCENE_WRAP_REPEAT &&
                    tex->wrap_t == SCENE_WRAP_REPEAT && !tex->texels && !tex->created,
                "defaults of %u", i * 16u);
@@ -475,18 +466,18 @@ static void table(void)
     scene_textures_remove(&tab, 7);
     for (uint32_t i = 1; i <= 2000; i++) {
         struct scene_texture *tex = scene_textures_lookup(&tab, i * 16u);
-        EXPECT((tex != NULL) == (i % 2 == 0), "lookup %u after removals", i * 16u);
+        failures += !CHECKF((tex != NULL) == (i % 2 == 0), "lookup %u after removals", i * 16u);
     }
-    EXPECT(tab.table.used == 1000, "used %u", tab.table.used);
+    failures += !CHECKF(tab.table.used == 1000, "used %u", tab.table.used);
     /* Generated names avoid those in use and are distinct. */
     uint32_t names[100];
-    EXPECT(scene_textures_generate(&tab, 100, names) == 0, "generate");
+    failures += !CHECKF(scene_textures_generate(&tab, 100, names) == 0, "generate");
     for (int i = 0; i < 100; i++) {
-        EXPECT(names[i] != 0 && (names[i] % 32 != 0 || names[i] > 32000), "name %u in use",
+        failures += !CHECKF(names[i] != 0 && (names[i] % 32 != 0 || names[i] > 32000), "name %u in use",
                names[i]);
         for (int j = 0; j < i; j++)
-            EXPECT(names[i] != names[j], "name %u twice", names[i]);
-        EXPECT(scene_textures_lookup(&tab, names[i]) != NULL, "generated %u not reserved",
+            failures += !CHECKF(names[i] != names[j], "name %u twice", names[i]);
+        failures += !CHECKF(scene_textures_lookup(&tab, names[i]) != NULL, "generated %u not reserved",
                names[i]);
     }
     /* A failed generation reserves and writes nothing. */
@@ -494,10 +485,10 @@ static void table(void)
     rt_alloc_fail_after(0);
     int r = scene_textures_generate(&tab, 3, out);
     rt_alloc_fail_reset();
-    EXPECT(r == -1 && tab.table.used == before && out[0] == 7 && out[1] == 7 && out[2] == 7,
+    failures += !CHECKF(r == -1 && tab.table.used == before && out[0] == 7 && out[1] == 7 && out[2] == 7,
            "failed generate changed something");
     scene_textures_release(&tab);
-    EXPECT(tab.table.capacity == 0 && tab.table.used == 0, "release");
+    failures += !CHECKF(tab.table.capacity == 0 && tab.table.used == 0, "release");
 }
 
 int main(void)

@@ -165,33 +165,33 @@ static void compare(const char *what, const struct tg_mesh *m, const struct bvh 
         int found = trace_closest(bvh, tri, &ray, tr->tmax, &h, &c);
         int any = trace_any(bvh, tri, &ray, tr->tmax, NULL);
         comparisons++;
-        TG_CHECK(failures, c.node_tests <= bvh->node_count && c.triangle_tests <= m->tri_count,
+        failures += !CHECKF(c.node_tests <= bvh->node_count && c.triangle_tests <= m->tri_count,
                  "%s ray %u: %llu node, %llu triangle tests", what, i,
                  (unsigned long long)c.node_tests, (unsigned long long)c.triangle_tests);
         if (found != ref[i].found || any != ref[i].found) {
-            TG_CHECK(failures, near_tmax(&ref[i], tr->tmax),
+            failures += !CHECKF(near_tmax(&ref[i], tr->tmax),
                      "%s ray %u: closest %d any %d reference %d (t=%.9g prim %u)", what, i, found,
                      any, ref[i].found, ref[i].hit.t, ref[i].hit.prim);
             continue;
         }
         if (!found)
             continue;
-        TG_CHECK(failures, h.t >= tr->tmin && h.t < tr->tmax, "%s ray %u: t %g outside", what, i,
+        failures += !CHECKF(h.t >= tr->tmin && h.t < tr->tmax, "%s ray %u: t %g outside", what, i,
                  h.t);
         if (h.prim == ref[i].hit.prim) {
-            TG_CHECK(failures,
+            failures += !CHECKF(
                      h.t == ref[i].hit.t && h.u == ref[i].hit.u && h.v == ref[i].hit.v,
                      "%s ray %u: same prim, t %.9g vs %.9g", what, i, h.t, ref[i].hit.t);
         } else {
             float tol = 1e-6f * fabsf(ref[i].hit.t);
-            TG_CHECK(failures, h.t >= ref[i].hit.t && h.t - ref[i].hit.t <= tol,
+            failures += !CHECKF(h.t >= ref[i].hit.t && h.t - ref[i].hit.t <= tol,
                      "%s ray %u: prim %u t=%.9g, reference prim %u t=%.9g", what, i, h.prim, h.t,
                      ref[i].hit.prim, ref[i].hit.t);
             /* The traversal's hit is a real hit of that primitive. */
             float t, u, v;
             int again = trace_triangle(&ray, tg_vertex(m, h.prim, 0), tg_vertex(m, h.prim, 1),
                                        tg_vertex(m, h.prim, 2), tr->tmax, &t, &u, &v);
-            TG_CHECK(failures, again && t == h.t && u == h.u && v == h.v,
+            failures += !CHECKF(again && t == h.t && u == h.u && v == h.v,
                      "%s ray %u: hit not reproducible", what, i);
         }
     }
@@ -232,7 +232,7 @@ static void run_scene(const char *name, const struct tg_mesh *m, uint32_t ray_co
         bp.max_leaf_size = params[p].max_leaf;
         struct bvh bvh;
         if (accel_build(&bvh, boxes, m->tri_count, &bp) != 0) {
-            TG_CHECK(failures, 0, "%s: build failed", name);
+            failures += !CHECKF(0, "%s: build failed", name);
             continue;
         }
         float *tri = accel_gather_triangles(&bvh, m->pos, m->idx);
@@ -267,31 +267,31 @@ static void box_cases(void)
     const float *dirs[2] = {up, up_neg0};
     for (int d = 0; d < 2; d++) {
         trace_ray_init(&ray, on_min, dirs[d], 0.0f);
-        TG_CHECK(failures, trace_box(&ray, lo, hi, INFINITY, &t) && t == 1.0f,
+        failures += !CHECKF(trace_box(&ray, lo, hi, INFINITY, &t) && t == 1.0f,
                  "box: on the min plane, t=%g", t);
         trace_ray_init(&ray, on_max, dirs[d], 0.0f);
-        TG_CHECK(failures, trace_box(&ray, lo, hi, INFINITY, &t) && t == 1.0f,
+        failures += !CHECKF(trace_box(&ray, lo, hi, INFINITY, &t) && t == 1.0f,
                  "box: on the max plane, t=%g", t);
         trace_ray_init(&ray, beside, dirs[d], 0.0f);
-        TG_CHECK(failures, !trace_box(&ray, lo, hi, INFINITY, &t), "box: just beside");
+        failures += !CHECKF(!trace_box(&ray, lo, hi, INFINITY, &t), "box: just beside");
     }
     /* A flat box (zero thickness) hit face-on and edge-on. */
     const float flat_lo[3] = {0.0f, 0.0f, 0.5f};
     const float flat_hi[3] = {1.0f, 1.0f, 0.5f};
     const float below[3] = {0.25f, 0.25f, 0.0f};
     trace_ray_init(&ray, below, up, 0.0f);
-    TG_CHECK(failures, trace_box(&ray, flat_lo, flat_hi, INFINITY, &t) && t == 0.5f,
+    failures += !CHECKF(trace_box(&ray, flat_lo, flat_hi, INFINITY, &t) && t == 0.5f,
              "box: flat box face-on, t=%g", t);
     const float in_plane[3] = {-1.0f, 0.5f, 0.5f};
     const float along_x[3] = {1.0f, 0.0f, 0.0f};
     trace_ray_init(&ray, in_plane, along_x, 0.0f);
-    TG_CHECK(failures, trace_box(&ray, flat_lo, flat_hi, INFINITY, &t) && t == 1.0f,
+    failures += !CHECKF(trace_box(&ray, flat_lo, flat_hi, INFINITY, &t) && t == 1.0f,
              "box: flat box edge-on, t=%g", t);
     /* The interval: t_max before the box, tmin after it. */
     trace_ray_init(&ray, below, up, 0.0f);
-    TG_CHECK(failures, !trace_box(&ray, flat_lo, flat_hi, 0.25f, &t), "box: t_max before");
+    failures += !CHECKF(!trace_box(&ray, flat_lo, flat_hi, 0.25f, &t), "box: t_max before");
     trace_ray_init(&ray, below, up, 0.75f);
-    TG_CHECK(failures, !trace_box(&ray, flat_lo, flat_hi, INFINITY, &t), "box: tmin after");
+    failures += !CHECKF(!trace_box(&ray, flat_lo, flat_hi, INFINITY, &t), "box: tmin after");
     /* Exact corner grazes at 1e5: the ray touches the box [p, p + e] in
      * x, y (z spans the ray) only at t = 1, where it passes exactly
      * through the corner p (integer data, so the ray is exact).  The slab
@@ -313,7 +313,7 @@ static void box_cases(void)
         trace_ray_init(&ray, org, dir, 0.0f);
         lost += !trace_box(&ray, blo, bhi, INFINITY, &t);
     }
-    TG_CHECK(failures, lost == 0, "box: %d of 20000 exact corner grazes lost", lost);
+    failures += !CHECKF(lost == 0, "box: %d of 20000 exact corner grazes lost", lost);
 }
 
 int main(void)
@@ -331,8 +331,8 @@ int main(void)
     trace_ray_init(&ray, o, d, 0.0f);
     struct trace_hit h;
     struct trace_counters c = {0, 0};
-    TG_CHECK(failures, !trace_closest(&empty, NULL, &ray, INFINITY, &h, &c), "empty bvh");
-    TG_CHECK(failures, !trace_any(&empty, NULL, &ray, INFINITY, &c), "empty bvh any");
+    failures += !CHECKF(!trace_closest(&empty, NULL, &ray, INFINITY, &h, &c), "empty bvh");
+    failures += !CHECKF(!trace_any(&empty, NULL, &ray, INFINITY, &c), "empty bvh any");
 
     static const uint32_t sizes[] = {1, 2, 3, 10, 100, 1000, 10000};
     for (size_t i = 0; i < sizeof(sizes) / sizeof(sizes[0]); i++) {

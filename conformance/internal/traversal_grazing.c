@@ -152,7 +152,7 @@ static void scene_init(struct scene *sc, const char *name)
     sc->boxes = tg_boxes(&sc->mesh);
     for (size_t b = 0; b < BUILD_COUNT; b++) {
         sc->built[b] = build(&builds[b], &sc->bvh[b], sc->boxes, sc->mesh.tri_count) == 0;
-        TG_CHECK(failures, sc->built[b], "%s/%s: build failed", name, builds[b].name);
+        failures += !CHECKF(sc->built[b], "%s/%s: build failed", name, builds[b].name);
         sc->tri[b] = sc->built[b] ? accel_gather_triangles(&sc->bvh[b], sc->mesh.pos,
                                                            sc->mesh.idx)
                                   : NULL;
@@ -442,9 +442,9 @@ static void report(const struct scene *sc, const struct tally *ty, double ms)
            sc->name, sc->mesh.tri_count, ty->rays, BUILD_COUNT, ty->kernel_bad_rays,
            ty->kernel_bad_hits, ty->hits_checked, ty->traversal_bad_rays,
            ty->traversal_bad_pairs, ty->loose_bad_pairs, ms);
-    TG_CHECK(failures, ty->kernel_bad_rays == 0, "%s: %u of %u rays hit outside the box",
+    failures += !CHECKF(ty->kernel_bad_rays == 0, "%s: %u of %u rays hit outside the box",
              sc->name, ty->kernel_bad_rays, ty->rays);
-    TG_CHECK(failures, ty->traversal_bad_rays == 0, "%s: traversal differs on %u of %u rays",
+    failures += !CHECKF(ty->traversal_bad_rays == 0, "%s: traversal differs on %u of %u rays",
              sc->name, ty->traversal_bad_rays, ty->rays);
 }
 

@@ -67,7 +67,7 @@ static void build_adjacency(const struct tg_mesh *m, struct adjacency *adj)
     for (uint32_t i = 0; i < 3 * m->tri_count; i++)
         adj->vertex_first[m->idx[i] + 1]++;
     for (uint32_t v = 0; v < m->vertex_count; v++) {
-        TG_CHECK(failures, adj->vertex_first[v + 1] <= 32, "valence %u > 32",
+        failures += !CHECKF(adj->vertex_first[v + 1] <= 32, "valence %u > 32",
                  adj->vertex_first[v + 1]);
         adj->vertex_first[v + 1] += adj->vertex_first[v];
     }
@@ -95,7 +95,7 @@ static void build_adjacency(const struct tg_mesh *m, struct adjacency *adj)
         const struct half_edge *a = &he[2 * e];
         const struct half_edge *b = &he[2 * e + 1];
         /* Closed and manifold: every edge exactly twice. */
-        TG_CHECK(failures, a->lo == b->lo && a->hi == b->hi &&
+        failures += !CHECKF(a->lo == b->lo && a->hi == b->hi &&
                                (2 * e + 2 == 3 * m->tri_count || he[2 * e + 2].lo != a->lo ||
                                 he[2 * e + 2].hi != a->hi),
                  "test mesh not closed at edge %u", e);
@@ -130,7 +130,7 @@ static int hits_any_of(const struct tg_mesh *m, const struct trace_ray *ray, con
         float t, u, v;
         if (trace_triangle(ray, tg_vertex(m, tris[i], 0), tg_vertex(m, tris[i], 1),
                            tg_vertex(m, tris[i], 2), INFINITY, &t, &u, &v)) {
-            TG_CHECK(failures, hit_is_sane(t, u, v), "insane hit t=%g u=%g v=%g", t, u, v);
+            failures += !CHECKF(hit_is_sane(t, u, v), "insane hit t=%g u=%g v=%g", t, u, v);
             hit = 1;
         }
     }
@@ -160,7 +160,7 @@ static void shoot(const struct scene *sc, const char *name, const float org[3], 
     int closest = trace_closest(&sc->bvh, sc->tri, &ray, INFINITY, &h, NULL);
     int any = trace_any(&sc->bvh, sc->tri, &ray, INFINITY, NULL);
     if (closest)
-        TG_CHECK(failures, hit_is_sane(h.t, h.u, h.v), "%s: insane closest hit", name);
+        failures += !CHECKF(hit_is_sane(h.t, h.u, h.v), "%s: insane closest hit", name);
     if (!direct || !closest || !any) {
         if ((*leaks)++ < 5)
             fprintf(stderr,
@@ -294,7 +294,7 @@ static void closed_mesh(const char *name, int sphere, int g, double scale, doubl
     sc.radius = scale;
     build_adjacency(&sc.mesh, &sc.adj);
     for (uint32_t t = 0; t < sc.mesh.tri_count; t++)
-        TG_CHECK(failures,
+        failures += !CHECKF(
                  !tg_zero_area(tg_vertex(&sc.mesh, t, 0), tg_vertex(&sc.mesh, t, 1),
                                tg_vertex(&sc.mesh, t, 2)),
                  "%s: test mesh has a zero-area triangle %u", name, t);
@@ -314,7 +314,7 @@ static void closed_mesh(const char *name, int sphere, int g, double scale, doubl
     uint64_t leaks = 0;
     aimed_rays(&sc, name, rays, &r, &leaks);
     axis_rays(&sc, name, rays / 8, &r, &leaks);
-    TG_CHECK(failures, leaks == 0, "%s: %llu of %u rays leaked", name, (unsigned long long)leaks,
+    failures += !CHECKF(leaks == 0, "%s: %llu of %u rays leaked", name, (unsigned long long)leaks,
              rays + rays / 8);
     printf("  %-14s %5u triangles, %7u rays, %llu leaks\n", name, sc.mesh.tri_count,
            rays + rays / 8, (unsigned long long)leaks);
@@ -350,7 +350,7 @@ static void degenerate_triangles(void)
     uint32_t hits = 0;
     uint32_t tested = 0;
     for (size_t t = 0; t < tri_count; t++) {
-        TG_CHECK(failures, tg_zero_area(tris[t][0], tris[t][1], tris[t][2]), "fixture %zu", t);
+        failures += !CHECKF(tg_zero_area(tris[t][0], tris[t][1], tris[t][2]), "fixture %zu", t);
         for (int i = 0; i < 20000; i++) {
             /* Aim at a vertex, the midpoint of an edge, or a random point
              * of the segment; from a random origin, sometimes along an
@@ -391,7 +391,7 @@ static void degenerate_triangles(void)
             }
         }
     }
-    TG_CHECK(failures, hits == 0, "%u of %u rays hit zero-area triangles", hits, tested);
+    failures += !CHECKF(hits == 0, "%u of %u rays hit zero-area triangles", hits, tested);
     printf("  zero-area triangles: %u rays, %u hits\n", tested, hits);
 
     /* The same through a BVH: a mesh of degenerate triangles only. */
@@ -419,9 +419,9 @@ static void degenerate_triangles(void)
             struct trace_ray ray;
             struct trace_hit h;
             trace_ray_init(&ray, org, dir, 0.0f);
-            TG_CHECK(failures, !trace_closest(&bvh, tri, &ray, INFINITY, &h, NULL),
+            failures += !CHECKF(!trace_closest(&bvh, tri, &ray, INFINITY, &h, NULL),
                      "degenerate mesh hit through the BVH");
-            TG_CHECK(failures, !trace_any(&bvh, tri, &ray, INFINITY, NULL),
+            failures += !CHECKF(!trace_any(&bvh, tri, &ray, INFINITY, NULL),
                      "degenerate mesh any-hit through the BVH");
         }
         rt_free(tri);
@@ -511,10 +511,10 @@ static void exact_edges(void)
                 fprintf(stderr, "exact edges: hit %d, exact inside %d (%.3g %.3g %.3g)\n", hit,
                         inside, e0, e1, e2);
         } else if (hit) {
-            TG_CHECK(failures, fabsf(t - 1.0f) <= 1e-6f && hit_is_sane(t, u, w), "exact edges: t=%.9g u=%.9g v=%.9g", t, u, w);
+            failures += !CHECKF(fabsf(t - 1.0f) <= 1e-6f && hit_is_sane(t, u, w), "exact edges: t=%.9g u=%.9g v=%.9g", t, u, w);
         }
     }
-    TG_CHECK(failures, mismatches == 0, "%u of %u edge decisions differ from exact", mismatches,
+    failures += !CHECKF(mismatches == 0, "%u of %u edge decisions differ from exact", mismatches,
              rays);
     printf("  exact edge decisions: %u rays within 2 ulps of an edge, %u inside, %u wrong\n", rays,
            hits, mismatches);
@@ -620,9 +620,9 @@ static void hit_points(void)
                 fprintf(stderr, "t %.9g, plane says %.9g\n", t, t_ref);
         }
     }
-    TG_CHECK(failures, off_segment == 0, "%u of %u sliver hits off their segment", off_segment,
+    failures += !CHECKF(off_segment == 0, "%u of %u sliver hits off their segment", off_segment,
              sliver_hits);
-    TG_CHECK(failures, bad_t == 0 && proper_hits > rays / 3, "%u of %u proper hits with a bad t",
+    failures += !CHECKF(bad_t == 0 && proper_hits > rays / 3, "%u of %u proper hits with a bad t",
              bad_t, proper_hits);
     printf("  hit points: %u rays, %u proper hits (t within 1e-6), %u sliver hits (on the "
            "segment)\n",
@@ -670,7 +670,7 @@ static void no_nan(void)
         rays++;
         if (trace_triangle(&ray, v0, v1, v2, INFINITY, &t, &u, &v)) {
             sliver_hits += kind <= 1;
-            TG_CHECK(failures, hit_is_sane(t, u, v) && t >= 0.0f,
+            failures += !CHECKF(hit_is_sane(t, u, v) && t >= 0.0f,
                      "kind %d: hit t=%g u=%g v=%g", kind, t, u, v);
         }
         float t_entry = NAN;
@@ -680,7 +680,7 @@ static void no_nan(void)
             hi[k] = fmaxf(v0[k], fmaxf(v1[k], v2[k]));
         }
         if (trace_box(&ray, lo, hi, INFINITY, &t_entry))
-            TG_CHECK(failures, !isnan(t_entry) && t_entry >= 0.0f, "box entry %g", t_entry);
+            failures += !CHECKF(!isnan(t_entry) && t_entry >= 0.0f, "box entry %g", t_entry);
     }
     printf("  slivers, edge-on, 1e18: %u rays, %u sliver hits, all sane\n", rays, sliver_hits);
 }
