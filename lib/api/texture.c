@@ -12,7 +12,7 @@
  * rtPixelStorei); images are stored as 8-bit RGBA whatever the upload
  * type.
  *
- * Triangles keep the texture's name, not its image (begin_end.c,
+ * Triangles keep the texture's name, not its image (scene/recording.c,
  * current_material), so every change made here shows in the next frame of
  * every object textured with that name.  Nothing here runs during a frame:
  * the calls are synchronous and the renderer only reads the table.
