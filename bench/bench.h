@@ -24,7 +24,7 @@
 #include <stdint.h>
 #include <stdio.h>
 
-#include "accel/bvh_build.h"
+#include "trace/bvh_layout.h"
 #include "base/aabb.h"
 #include "trace/trace.h"
 

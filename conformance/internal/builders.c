@@ -1,5 +1,5 @@
 /*
- * builders.c - the BVH builders of lib/accel against bvh_build.h's contract.
+ * builders.c - the BVH builders of lib/accel against bvh_layout.h's contract.
  *
  * For every builder and a range of parameters: each primitive appears
  * exactly once in prim_index, the leaves partition the slots, every node
@@ -23,7 +23,7 @@
 #include <string.h>
 
 #include "accel/build_internal.h"
-#include "accel/bvh_build.h"
+#include "trace/bvh_layout.h"
 #include "accel_testgeo.h"
 #include "base/alloc.h"
 #include "base/timer.h"
@@ -32,7 +32,7 @@ static int failures;
 
 #include "bvh_contract.h"
 
-/* Every structural invariant of bvh_build.h (bvh_contract.h).  With finite
+/* Every structural invariant of bvh_layout.h (bvh_contract.h).  With finite
  * == 0 (boxes with NaN), box containment is not checked. */
 static void check_tree(const char *what, const struct bvh *b, const struct aabb *boxes,
                        uint32_t n, int max_leaf, int finite)

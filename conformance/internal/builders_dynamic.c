@@ -1,5 +1,5 @@
 /*
- * builders_dynamic.c - the rebuild-every-frame builders against bvh_build.h's
+ * builders_dynamic.c - the rebuild-every-frame builders against bvh_layout.h's
  * contract: the median builder and the looser leaf criterion
  * (build_median.h) and the two-stage parallel build in its four
  * combinations (build_parallel.h), here on the calling thread only
@@ -26,7 +26,7 @@ static int failures;
 #include "accel/build_internal.h"
 #include "accel/build_median.h"
 #include "accel/build_parallel.h"
-#include "accel/bvh_build.h"
+#include "trace/bvh_layout.h"
 #include "accel_testgeo.h"
 #include "base/alloc.h"
 #include "base/timer.h"

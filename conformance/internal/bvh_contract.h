@@ -1,6 +1,6 @@
 /*
  * bvh_contract.h - checks shared by the dynamic-scene accel tests
- * (builders_dynamic.c, refit.c, parallel_build_threads.c): bvh_build.h's output
+ * (builders_dynamic.c, refit.c, parallel_build_threads.c): bvh_layout.h's output
  * contract for any builder, hits against the brute-force intersector, and
  * bit-exact tree comparison.  Header-only, like accel_testgeo.h, whose
  * geometry it uses, and check.h's CHECKF.  The checks count into the including
@@ -21,7 +21,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "accel/bvh_build.h"
+#include "trace/bvh_layout.h"
 #include "accel_testgeo.h"
 #include "trace/trace.h"
 
@@ -35,7 +35,7 @@ static inline int bc_box_inside(const float in_min[3], const float in_max[3],
     return 1;
 }
 
-/* Every structural invariant of bvh_build.h for a tree over boxes[0, n), leaves
+/* Every structural invariant of bvh_layout.h for a tree over boxes[0, n), leaves
  * of at most max_leaf.  finite == 0 skips the box containment checks
  * (input with NaN).  Returns the number of failures it added. */
 static inline int bvh_check_tree(const char *what, const struct bvh *b,

@@ -7,7 +7,7 @@
  * in every repetition, the very tree it gives on the calling thread alone
  * (build_parallel.h promises independence of the thread count, which is
  * stronger than determinism per thread count), and that tree must meet
- * bvh_build.h's contract.  The parallel refits must give the serial refit's
+ * bvh_layout.h's contract.  The parallel refits must give the serial refit's
  * bits.  Two builds on two application threads, each with its own pool,
  * must not disturb each other.
  */
@@ -20,7 +20,7 @@
 static int failures;
 
 #include "accel/build_parallel.h"
-#include "accel/bvh_build.h"
+#include "trace/bvh_layout.h"
 #include "accel/refit.h"
 #include "accel_testgeo.h"
 #include "base/alloc.h"

@@ -10,7 +10,7 @@
  * subset of the geometric primitives are moving").  After every frame's
  * accel_restructure (with the fixed default constants, so the decisions
  * do not depend on the clock):
- *   - bvh_build.h's contract, as conformance/internal/builders.c checks it, plus
+ *   - bvh_layout.h's contract, as conformance/internal/builders.c checks it, plus
  *     parent-first numbering (the reverse-sweep refit relies on it);
  *   - closest hits equal to trace_closest_brute_force on random rays and
  *     on rays aimed at vertices (same primitive with bit-identical t, or a
@@ -42,7 +42,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "accel/bvh_build.h"
+#include "trace/bvh_layout.h"
 #include "accel/restructure.h"
 #include "accel_testgeo.h"
 #include "base/alloc.h"
@@ -69,7 +69,7 @@ static int failures;
 
 /* ------------------------------------------------------------ contract */
 
-/* bvh_build.h's contract for n primitives with boxes (bvh_contract.h), leaves
+/* bvh_layout.h's contract for n primitives with boxes (bvh_contract.h), leaves
  * of at most BVH_MAX_LEAF_SIZE; finite == 0 (boxes with NaN) skips box
  * containment. */
 static void check_tree_boxes(const char *what, const struct bvh *b, const struct aabb *boxes,

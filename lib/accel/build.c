@@ -1,12 +1,12 @@
 /*
  * build.c - builder dispatch, parameters, BVH lifetime and the gather of
- * triangles into leaf order (see bvh_build.h), plus the allocation helpers the
+ * triangles into leaf order (see bvh_layout.h), plus the allocation helpers the
  * builders share (build_internal.h).
  *
  * Ownership: a struct bvh owns its nodes and prim_index arrays, both from
  * rt_malloc/rt_realloc_array; bvh_release returns them.
  */
-#include "accel/bvh_build.h"
+#include "trace/bvh_layout.h"
 
 #include <math.h>
 #include <stddef.h>

@@ -4,7 +4,7 @@
  * criterion of paper 004 sec. 4.3, plus the pieces of them that the
  * two-stage parallel builder (build_parallel.c) builds its subtrees with.
  *
- * Same conventions as the other builders (bvh_build.h, build_internal.h): a node
+ * Same conventions as the other builders (bvh_layout.h, build_internal.h): a node
  * owns a contiguous range of a reference array that is partitioned in
  * place, children are allocated as an adjacent pair after their parent
  * (depth-first numbering, left subtree first, so every child index is
@@ -17,7 +17,7 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "accel/bvh_build.h"
+#include "trace/bvh_layout.h"
 
 /*
  * The leaf-growth factor we recommend for rebuild-every-frame objects
@@ -43,9 +43,9 @@
  * guard (build_internal.h) requires it.  A node of at most max_leaf_size
  * primitives becomes a leaf when the SAH (MacDonald and Booth 1990) does
  * not favour the split, or at once when params->leaf_growth allows it
- * (bvh_build.h).  params->bins and params->builder are ignored.
+ * (bvh_layout.h).  params->bins and params->builder are ignored.
  *
- * Same contract as accel_build (bvh_build.h): NULL params means the defaults,
+ * Same contract as accel_build (bvh_layout.h): NULL params means the defaults,
  * out-of-range fields are normalized; 0 primitives give the empty BVH;
  * depth <= BVH_MAX_DEPTH for any input, any number of identical boxes
  * included; every primitive in exactly one leaf; deterministic.  Returns

@@ -28,7 +28,7 @@
  * counter; each is built by a serial builder, median subtrees directly
  * into a preassigned range of 2m - 1 nodes of a scratch array (a subtree
  * of m primitives needs at most that many), SAH subtrees by accel_build
- * on a copy of their boxes (the SAH builders of bvh_build.h allocate their own
+ * on a copy of their boxes (the SAH builders of bvh_layout.h allocate their own
  * arrays; see the note at build_sah_subtree).
  *
  * Stage 3: the subtrees used fewer nodes than reserved, so they are
@@ -906,7 +906,7 @@ out:
 
 /*
  * An SAH subtree: accel_build over a copy of the subtree's boxes.  The
- * SAH builders of bvh_build.h take a box array and allocate their own nodes
+ * SAH builders of bvh_layout.h take a box array and allocate their own nodes
  * (their internals are file-static), so this subtree is not built into
  * a preassigned range but into its own arrays.  The box copy, those
  * arrays (fresh pages) and stage 3's node copy make SAH+SAH on one

@@ -6,7 +6,7 @@
  * SAH split, its histogram filled by all threads) or by a uniform grid
  * over the centroids with BIH-like nodes over the grid cells.  Stage 2
  * builds the resulting subtrees, largest first, one per thread at a time,
- * with a serial builder: the binned (or sweep) SAH builder of bvh_build.h or
+ * with a serial builder: the binned (or sweep) SAH builder of bvh_layout.h or
  * the median builder of build_median.h.  The combinations are the paper's
  * "SAH+SAH" (binning, SAH), "grid+SAH" and "grid+BIH" (grid, median).
  *
@@ -19,7 +19,7 @@
 #include <stdint.h>
 
 #include "accel/build_median.h"
-#include "accel/bvh_build.h"
+#include "trace/bvh_layout.h"
 #include "base/pool.h"
 
 /* Stage 1 (paper 000 sec. 5, "Coarse Scene Partitioning"). */
@@ -48,10 +48,10 @@ void bvh_parallel_params_default(struct bvh_parallel_params *params);
  * for accel_build (NULL: defaults; normalized); with BVH_SUBTREE_SAH,
  * params->builder picks the subtree builder, so the sweep builder can be
  * parallelised too.  params->leaf_growth is honoured by median subtrees
- * only (the SAH builders of bvh_build.h do not read it).  Unknown enum values
+ * only (the SAH builders of bvh_layout.h do not read it).  Unknown enum values
  * in *parallel are taken as the defaults.
  *
- * Output contract as accel_build (bvh_build.h): every primitive in exactly one
+ * Output contract as accel_build (bvh_layout.h): every primitive in exactly one
  * leaf, leaves of 1..max_leaf_size, depth <= BVH_MAX_DEPTH for any input,
  * children after their parent, node_count the number of reachable nodes
  * (the subtrees are built into preassigned ranges and then compacted), 0

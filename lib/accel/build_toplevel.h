@@ -8,7 +8,7 @@
 
 #include <stdint.h>
 
-#include "accel/bvh_build.h"
+#include "trace/bvh_layout.h"
 
 /*
  * Builds a BVH over instance boxes with the split rule of paper 004 sec.
@@ -21,7 +21,7 @@
  * depth guard of the other builders (object-median splits near
  * BVH_MAX_DEPTH) keeps the tree traversable for any input.
  *
- * Same contract as accel_build (bvh_build.h), params ignored.  Returns 0, or -1
+ * Same contract as accel_build (bvh_layout.h), params ignored.  Returns 0, or -1
  * with *out zeroed on allocation failure.
  */
 int accel_build_toplevel_cellsplit(struct bvh *out, const struct aabb *boxes, uint32_t count);

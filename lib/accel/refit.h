@@ -2,7 +2,7 @@
  * refit.h - refitting a BVH to moved primitives without changing its
  * topology (paper 000 sec. 6, "Parallel BVH Refit"), and updating the
  * leaf-ordered triangle copy that traversal reads (accel_gather_triangles
- * in bvh_build.h).
+ * in bvh_layout.h).
  *
  * A refit recomputes every node box bottom-up: a leaf's box is the union
  * of its primitives' boxes, an inner node's the union of its two
@@ -33,7 +33,7 @@
 
 #include <stdint.h>
 
-#include "accel/bvh_build.h"
+#include "trace/bvh_layout.h"
 #include "base/pool.h"
 
 /*

@@ -172,7 +172,7 @@ int rs_reserve_prims(struct accel_restructure_state *st, uint32_t prim_count)
 }
 
 /* 1 when every inner node's children come after it and inside the array,
- * the numbering all of bvh_build.h's builders produce (build_internal.h,
+ * the numbering all of bvh_layout.h's builders produce (build_internal.h,
  * build_median.h: children are allocated after their parent).  Then index
  * order is a pre-order and its reverse is bottom-up. */
 static int parent_first(const struct bvh *bvh)

@@ -37,7 +37,7 @@
 
 #include <stdint.h>
 
-#include "accel/bvh_build.h"
+#include "trace/bvh_layout.h"
 #include "base/aabb.h"
 
 /* A node pair of the pair-queue and an entry of the pair-heap; defined
@@ -104,7 +104,7 @@ struct accel_restructure_params {
      * tree's CM-IQ is undone (not in the paper, which trusts the
      * estimate of eq. 7; restructure.c explains).  0: the paper's rule. */
     int verify_cost;
-    /* Builder of the new sub-BVHs: the SAH builders of bvh_build.h (paper 001
+    /* Builder of the new sub-BVHs: the SAH builders of bvh_layout.h (paper 001
      * sec. 5.4 uses an SAH build, [WH06]). */
     struct bvh_build_params build;
 };
@@ -199,7 +199,7 @@ void accel_restructure_measure_constants(struct accel_restructure_params *out);
 
 /*
  * One frame of selective restructuring.  bvh must satisfy accel_build's
- * contract (bvh_build.h) for bvh->prim_count primitives, which keep their
+ * contract (bvh_layout.h) for bvh->prim_count primitives, which keep their
  * indices; prim_boxes[i] is primitive i's new box, finite and non-empty
  * (boxes that break this give a structurally valid tree with meaningless
  * bounds, as for accel_build).  state must have been initialized and be

@@ -17,7 +17,7 @@
  * Why a re-layout: the new sub-BVHs generally differ in node count and in
  * how many primitives each side holds, so they fit neither the old node
  * slots nor the old leaf slot ranges; and the node numbering must stay
- * parent-first (bvh_build.h's builders guarantee it, refit walks the array
+ * parent-first (bvh_layout.h's builders guarantee it, refit walks the array
  * backwards relying on it).  Writing the tree depth first into a second
  * array costs one linear pass per frame with any restructuring, the
  * order of the refit that precedes it, and gives the same numbering as

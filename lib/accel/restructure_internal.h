@@ -20,7 +20,7 @@
 
 #include <stdint.h>
 
-#include "accel/bvh_build.h"
+#include "trace/bvh_layout.h"
 #include "accel/restructure.h"
 
 #define RS_NONE UINT32_MAX

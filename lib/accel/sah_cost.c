@@ -1,9 +1,9 @@
 /*
  * sah_cost.c - the SAH cost of a finished tree (MacDonald and Booth 1990),
  * the quality measure that paper 000 table 1 and rtbench compare builders
- * by.  See bvh_build.h for the formula.
+ * by.  See bvh_layout.h for the formula.
  */
-#include "accel/bvh_build.h"
+#include "trace/bvh_layout.h"
 
 static double node_half_area(const struct bvh_node *n)
 {

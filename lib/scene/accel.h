@@ -20,7 +20,7 @@
 
 #include "accel/restructure.h"
 #include "base/pool.h"
-#include "accel/bvh_build.h"
+#include "trace/bvh_layout.h"
 
 struct scene_object;
 

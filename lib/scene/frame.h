@@ -18,7 +18,7 @@
 
 #include <stdint.h>
 
-#include "accel/bvh_build.h"
+#include "trace/bvh_layout.h"
 #include "scene/object.h"
 #include "trace/scene_traverse.h"
 
