@@ -1057,7 +1057,7 @@ static void double_arrays_beyond_float(void)
     for (int which = 0; which < 3; which++)
         for (int indexed = 0; indexed < 2; indexed++) {
             double attr[12] = {0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1, 1};
-            attr[which == 1 ? 4 : 3] = 1e300; /* finite as a double */
+            attr[which == 0 ? 3 : 4] = 1e300; /* element 1, component 0 */
             RTenum array = which == 0 ? RT_NORMAL_ARRAY : which == 1 ? RT_COLOR_ARRAY
                                                                       : RT_TEXTURE_COORD_ARRAY;
             rtNewObject(name);
