@@ -26,7 +26,11 @@
  * Work per input is bounded: inputs above AFF_FUZZ_MAX_INPUT bytes are
  * skipped, the parser bounds every count (and the triangles it makes of
  * spheres and cones) by the size of the text, and scenes of more than
- * AFF_FUZZ_MAX_TRIANGLES triangles stop after step 2.
+ * AFF_FUZZ_MAX_TRIANGLES triangles stop after step 2.  That bound is a
+ * property checked here: the triangles and the bytes of a parsed scene
+ * are linear in the input (AFF_FUZZ_BYTES_PER_INPUT), and run_fuzz.sh
+ * runs libFuzzer with -malloc_limit_mb, -rss_limit_mb and -timeout, so an
+ * input that allocates or runs beyond them is a finding too.
  *
  * Built two ways (conformance/fuzz/CMakeLists.txt): aff_fuzz with libFuzzer
  * (clang, RT_FUZZ=ON) and aff_fuzz_replay with replay_main.c, which runs
@@ -54,6 +58,13 @@
  * at a seventh of its speed.  Four spheres' worth covers every loader
  * path. */
 #define AFF_FUZZ_MAX_TRIANGLES 4096
+/* The memory-bound property checked on every input that parses: the
+ * parsed scene holds at most 64 bytes per input byte plus 16 MiB.  The
+ * triangle budget alone allows 24 per byte plus 6 MiB, twice that while an
+ * array doubles; matrices, frames and keys add at most a few bytes per
+ * byte (each takes at least its own text). */
+#define AFF_FUZZ_BYTES_PER_INPUT 64
+#define AFF_FUZZ_BYTES_BASE ((uint64_t)16 << 20)
 /* Rays traced per commit; pixels of the rendered frame. */
 #define AFF_FUZZ_RAYS 16
 #define AFF_FUZZ_WIDTH 4
@@ -256,8 +267,17 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         return 0;
     struct aff_data d;
     char error[AFF_ERROR_SIZE];
-    if (aff_parse_text("fuzz.aff", (const char *)data, size, NULL, &d, error, sizeof error))
+    if (aff_parse_text("fuzz.aff", (const char *)data, size, NULL, NULL, &d, error,
+                       sizeof error))
         return 0;
+    /* The resource bound (docs/aff.md): the parsed scene of n input bytes
+     * holds less than AFF_FUZZ_BYTES_PER_INPUT n + AFF_FUZZ_BYTES_BASE
+     * bytes, the triangle budget of the defaults plus the arrays around
+     * it.  libFuzzer's -malloc_limit_mb and -rss_limit_mb (run_fuzz.sh)
+     * catch what escapes the count, a failed load included. */
+    check(d.static_triangles + d.animated_triangles + d.tpa_triangles <=
+          size / AFF_INPUT_PER_TRIANGLE + AFF_TRIANGLES_BASE);
+    check(aff_data_bytes(&d) <= AFF_FUZZ_BYTES_PER_INPUT * (uint64_t)size + AFF_FUZZ_BYTES_BASE);
 
     double ta = d.t0, tb = d.t1, tm = 0.5 * ((double)d.t0 + (double)d.t1);
     const double times[] = {ta, tb, tm, -1e30, 1e30};

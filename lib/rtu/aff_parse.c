@@ -13,8 +13,11 @@
  *   sec. 3.4 'xs' and 'x' blocks compose as M = X1 X2 ... Xk, X = T R S.
  *
  * Robustness: every count is checked against the bytes left before
- * anything is allocated for it (each operand takes at least two bytes), so
- * a malformed or hostile file fails with "file:line: reason" in bounded
+ * anything is allocated for it (each operand takes at least two bytes),
+ * and the whole load against the budgets of aff_internal.h, the bytes and
+ * triangles of every inclusion counted again, before the memory for them
+ * is allocated; includes are opened under the file policy of aff_file.c.
+ * So a malformed or hostile file fails with "file:line: reason" in bounded
  * memory and time; a fuzz target (conformance/fuzz) runs over this file.
  */
 #include "rtu/aff_internal.h"
@@ -47,14 +50,26 @@ struct block {
     int local_index;
 };
 
+/* A file read, identified by device and inode. */
+struct file_id {
+    uint64_t device, inode;
+};
+
 struct parser {
     struct aff_data *data;
     char *error;
     size_t error_size;
     const char *directory; /* NULL: no includes */
+    const char *root;      /* includes must lie below; NULL: anywhere */
+    const struct aff_limits *limits;
     int include_depth;
-    uint64_t text_bytes;        /* of every file read so far */
-    uint64_t quadric_triangles; /* made by tessellating 's' and 'c' */
+    /* The budgets (aff_internal.h): distinct input, and the work of every
+     * expansion. */
+    uint64_t input_bytes;  /* of the distinct files read */
+    uint64_t read_bytes;   /* of every file read, each inclusion counted */
+    uint64_t triangles;    /* made, each inclusion counted */
+    struct file_id *files; /* distinct files read so far */
+    int file_count, file_capacity;
     int detail;
     /* Current state. */
     int material;
@@ -311,6 +326,38 @@ static int intern_local(struct parser *ps, const struct reader *r)
 
 /* ------------------------------------------------------------ geometry */
 
+static uint64_t read_budget(const struct parser *ps)
+{
+    if (ps->limits->max_read_bytes)
+        return ps->limits->max_read_bytes;
+    uint64_t b = AFF_READ_PER_INPUT * ps->input_bytes + AFF_READ_BASE;
+    return b < AFF_READ_CAP ? b : AFF_READ_CAP;
+}
+
+static uint64_t triangle_budget(const struct parser *ps)
+{
+    if (ps->limits->max_triangles)
+        return ps->limits->max_triangles;
+    uint64_t b = ps->input_bytes / AFF_INPUT_PER_TRIANGLE + AFF_TRIANGLES_BASE;
+    return b < AFF_TRIANGLES_CAP ? b : AFF_TRIANGLES_CAP;
+}
+
+/* Counts `count` more triangles against the budget, before anything is
+ * allocated for them.  Tessellation is where a few bytes become many
+ * triangles (a 9-byte 's' is 1024, 96 KiB): a 1 MB file of spheres once
+ * reached 1.6 GB before it was refused. */
+static int take_triangles(struct parser *ps, const struct reader *r, uint64_t count)
+{
+    uint64_t budget = triangle_budget(ps);
+    if (ps->triangles + count > budget)
+        return fail(ps, r,
+                    "the scene makes more than %llu triangles (every inclusion counted; "
+                    "the budget for %llu bytes of input, RTU_AFF_MAX_TRIANGLES raises it)",
+                    (unsigned long long)budget, (unsigned long long)ps->input_bytes);
+    ps->triangles += count;
+    return 0;
+}
+
 static struct aff_group *current_group(struct parser *ps)
 {
     return &ps->data->frames[ps->frame].group;
@@ -322,6 +369,8 @@ static struct aff_group *current_group(struct parser *ps)
 static struct aff_triangle *begin_batch(struct parser *ps, const struct reader *r, uint32_t count,
                                         int texture, int has_uv)
 {
+    if (take_triangles(ps, r, count))
+        return NULL;
     int matrix = intern_local(ps, r);
     if (matrix < 0)
         return NULL;
@@ -437,26 +486,6 @@ static int parse_textured_triangle(struct parser *ps, struct reader *r, int with
 #define QUADRIC_SEGMENTS 32
 #define SPHERE_RINGS 16
 
-/* Tessellation turns a few bytes into many triangles (a 9-byte 's' into
- * 1024, 96 KiB), which the counts checked against the bytes left do not
- * bound: a 64 KiB file of spheres asked for 700 MB and 20 s (found by
- * conformance/fuzz).  So quadric triangles are bounded by the text too:
- * QUADRIC_BASE_TRIANGLES (64 spheres) plus QUADRIC_TRIANGLES_PER_BYTE per
- * byte of every file read (a sphere per 64 bytes).  BART has 8 cones. */
-#define QUADRIC_BASE_TRIANGLES 65536
-#define QUADRIC_TRIANGLES_PER_BYTE 16
-
-static int quadric_budget(struct parser *ps, const struct reader *r, uint32_t count,
-                          const char *what)
-{
-    uint64_t limit = QUADRIC_BASE_TRIANGLES + QUADRIC_TRIANGLES_PER_BYTE * ps->text_bytes;
-    if (ps->quadric_triangles + count > limit)
-        return fail(ps, r, "%s: more than %llu triangles from spheres and cones in %llu bytes",
-                    what, (unsigned long long)limit, (unsigned long long)ps->text_bytes);
-    ps->quadric_triangles += count;
-    return 0;
-}
-
 /* Writes quad (corners 0-1-2-3 with normals) as two triangles, (0,1,2)
  * and (0,2,3), or with `reversed` winding (0,2,1) and (0,3,2); returns
  * the triangle after them. */
@@ -499,8 +528,6 @@ static int parse_cone(struct parser *ps, struct reader *r)
         u[k] /= ul;
     double w[3] = {axis[1] * u[2] - axis[2] * u[1], axis[2] * u[0] - axis[0] * u[2],
                    axis[0] * u[1] - axis[1] * u[0]};
-    if (quadric_budget(ps, r, 2 * QUADRIC_SEGMENTS, "cone"))
-        return -1;
     struct aff_triangle *t = begin_batch(ps, r, 2 * QUADRIC_SEGMENTS, -1, 0);
     if (!t)
         return -1;
@@ -537,8 +564,6 @@ static int parse_sphere(struct parser *ps, struct reader *r)
     double rad = fabs((double)v[3]);
     if (!(rad > 0.0))
         return fail(ps, r, "sphere: radius is zero");
-    if (quadric_budget(ps, r, 2 * QUADRIC_SEGMENTS * SPHERE_RINGS, "sphere"))
-        return -1;
     struct aff_triangle *t = begin_batch(ps, r, 2 * QUADRIC_SEGMENTS * SPHERE_RINGS, -1, 0);
     if (!t)
         return -1;
@@ -667,7 +692,7 @@ done:
 static int parse_tpa(struct parser *ps, struct reader *r)
 {
     long n;
-    if (read_count(ps, r, 1, 19, &n, "tpa key count"))
+    if (read_count(ps, r, 1, 19, &n, "tpa key count") || take_triangles(ps, r, 1))
         return -1;
     struct aff_tpa_key *keys = malloc((size_t)n * sizeof *keys);
     if (!keys)
@@ -984,40 +1009,33 @@ static int parse_light(struct parser *ps, struct reader *r, int named)
     return 0;
 }
 
-/* Reads all of f.  Returns the text (malloc'd, not terminated) and its
- * length, or NULL with *oom set on allocation failure, clear on a read
- * error.  Does not close f. */
-static char *read_stream(FILE *f, size_t *length, int *oom)
-{
-    char *text = NULL;
-    size_t len = 0, cap = 0;
-    *oom = 0;
-    for (;;) {
-        if (len + 65536 > cap) {
-            size_t ncap = cap ? cap * 2 : 131072;
-            char *nt = realloc(text, ncap);
-            if (!nt) {
-                free(text);
-                *oom = 1;
-                return NULL;
-            }
-            text = nt;
-            cap = ncap;
-        }
-        size_t got = fread(text + len, 1, cap - len, f);
-        len += got;
-        if (got == 0)
-            break;
-    }
-    if (ferror(f)) {
-        free(text);
-        return NULL;
-    }
-    *length = len;
-    return text;
-}
-
 static int parse_reader(struct parser *ps, struct reader *r);
+
+/* Counts a file of `size` bytes about to be read: its identity (new
+ * files add to the input) and the read budget, before it is read. */
+static int take_file(struct parser *ps, const struct reader *r, const struct aff_file *f,
+                     const char *name)
+{
+    int known = 0;
+    for (int i = 0; i < ps->file_count && !known; i++)
+        known = ps->files[i].device == f->device && ps->files[i].inode == f->inode;
+    if (!known) {
+        if (grow((void **)&ps->files, &ps->file_capacity, ps->file_count + 1, sizeof *ps->files))
+            return out_of_memory(ps, r);
+        ps->files[ps->file_count].device = f->device;
+        ps->files[ps->file_count++].inode = f->inode;
+        ps->input_bytes += f->size;
+    }
+    uint64_t budget = read_budget(ps);
+    if (ps->read_bytes + f->size > budget)
+        return fail(ps, r,
+                    "include '%s': the scene reads more than %llu bytes (every inclusion "
+                    "counted; the budget for %llu bytes of input, RTU_AFF_MAX_READ_MIB "
+                    "raises it)",
+                    name, (unsigned long long)budget, (unsigned long long)ps->input_bytes);
+    ps->read_bytes += f->size;
+    return 0;
+}
 
 /* 'i detail file': read the file as if inserted here (sec. 3.1). */
 static int parse_include(struct parser *ps, struct reader *r)
@@ -1039,20 +1057,25 @@ static int parse_include(struct parser *ps, struct reader *r)
     if (!path)
         return out_of_memory(ps, r);
     snprintf(path, n, "%s%s%s", ps->directory, ps->directory[0] ? "/" : "", name);
-    FILE *f = fopen(path, "rb");
+    struct aff_file f;
+    char why[AFF_ERROR_SIZE];
+    int rc = aff_file_open(path, ps->root, ps->limits->max_file_bytes, &f, why, sizeof why);
     free(path);
-    if (!f)
-        return fail(ps, r, "include '%s': %s", name, strerror(errno));
+    if (rc)
+        return fail(ps, r, "include '%s': %s", name, why);
+    if (take_file(ps, r, &f, name)) {
+        aff_file_close(&f);
+        return -1;
+    }
     size_t len = 0;
     int oom;
-    char *text = read_stream(f, &len, &oom);
-    fclose(f);
+    char *text = aff_file_read(&f, &len, &oom);
+    aff_file_close(&f);
     if (!text)
         return oom ? out_of_memory(ps, r) : fail(ps, r, "include '%s': read error", name);
     struct reader sub = {name, text, len, 0, 1};
-    ps->text_bytes += len;
     ps->include_depth++;
-    int rc = parse_reader(ps, &sub);
+    rc = parse_reader(ps, &sub);
     ps->include_depth--;
     free(text);
     if (rc == 0 && ps->block_count < 0)
@@ -1248,6 +1271,7 @@ static void resolve(struct aff_data *d)
 void aff_data_release(struct aff_data *d)
 {
     free(d->directory);
+    free(d->root);
     free(d->materials);
     for (int i = 0; i < d->texture_count; i++) {
         free(d->textures[i].name);
@@ -1274,34 +1298,72 @@ void aff_data_release(struct aff_data *d)
     memset(d, 0, sizeof *d);
 }
 
-int aff_parse_text(const char *name, const char *text, size_t length, const char *directory,
-                   struct aff_data *data, char *error, size_t error_size)
+/* aff_parse_text with the identity of the top file (NULL: a text in
+ * memory), which counts once among the distinct files. */
+static int parse_top(const char *name, const char *text, size_t length, const char *directory,
+                     const struct aff_limits *limits, const struct aff_file *top,
+                     struct aff_data *data, char *error, size_t error_size)
 {
     struct parser ps;
+    struct aff_limits defaults;
+    if (!limits) {
+        aff_limits_default(&defaults);
+        limits = &defaults;
+    }
     memset(&ps, 0, sizeof ps);
     memset(data, 0, sizeof *data);
     ps.data = data;
     ps.error = error;
     ps.error_size = error_size;
     ps.directory = directory;
+    ps.limits = limits;
     ps.material = -1;
     mat4_identity(ps.local);
     ps.local_index = -1;
     if (error_size)
         error[0] = '\0';
+    data->max_file_bytes = limits->max_file_bytes;
     data->directory = dup_string(directory ? directory : "");
     data->frames = calloc(1, sizeof *data->frames);
     if (!data->directory || !data->frames) {
         aff_data_release(data);
-        return fail(&ps, NULL, "%s: out of memory", name);
+        return fail(&ps, NULL, "%s:0: out of memory", name);
+    }
+    /* Includes and textures stay inside the top file's tree (with no
+     * directory: textures inside the current one). */
+    if (!limits->any_directory) {
+        data->root = aff_file_root(data->directory);
+        if (!data->root) {
+            int e = errno;
+            aff_data_release(data);
+            return fail(&ps, NULL, "%s:0: directory '%s': %s", name,
+                        directory && directory[0] ? directory : ".",
+                        e == ENOMEM ? "out of memory" : strerror(e));
+        }
+        ps.root = data->root;
     }
     data->frames[0].parent = -1;
     data->frames[0].animation = -1;
     data->frame_count_nodes = data->frame_capacity = 1;
     struct reader r = {name, text, length, 0, 1};
-    ps.text_bytes = length;
-    int rc = parse_reader(&ps, &r);
+    int rc = 0;
+    ps.input_bytes = ps.read_bytes = length;
+    if (top) {
+        if (grow((void **)&ps.files, &ps.file_capacity, 1, sizeof *ps.files)) {
+            rc = fail(&ps, NULL, "%s:0: out of memory", name);
+        } else {
+            ps.files[0].device = top->device;
+            ps.files[0].inode = top->inode;
+            ps.file_count = 1;
+        }
+    }
+    if (rc == 0 && ps.read_bytes > read_budget(&ps))
+        rc = fail(&ps, NULL, "%s:0: %llu bytes, more than the read budget of %llu", name,
+                  (unsigned long long)length, (unsigned long long)read_budget(&ps));
+    if (rc == 0)
+        rc = parse_reader(&ps, &r);
     free(ps.blocks);
+    free(ps.files);
     if (rc) {
         aff_data_release(data);
         return -1;
@@ -1310,15 +1372,28 @@ int aff_parse_text(const char *name, const char *text, size_t length, const char
     return 0;
 }
 
-int aff_parse_file(const char *path, struct aff_data *data, char *error, size_t error_size)
+int aff_parse_text(const char *name, const char *text, size_t length, const char *directory,
+                   const struct aff_limits *limits, struct aff_data *data, char *error,
+                   size_t error_size)
 {
+    return parse_top(name, text, length, directory, limits, NULL, data, error, error_size);
+}
+
+int aff_parse_file(const char *path, const struct aff_limits *limits, struct aff_data *data,
+                   char *error, size_t error_size)
+{
+    struct aff_limits defaults;
+    if (!limits) {
+        aff_limits_default(&defaults);
+        limits = &defaults;
+    }
     memset(data, 0, sizeof *data);
     const char *slash = strrchr(path, '/');
     const char *base = slash ? slash + 1 : path;
     size_t dir_len = slash ? (size_t)(slash - path) : 0;
     char *dir = malloc(dir_len + 2);
     if (!dir) {
-        snprintf(error, error_size, "%s: out of memory", path);
+        snprintf(error, error_size, "%s:0: out of memory", path);
         return -1;
     }
     if (slash && dir_len == 0) /* "/scene.aff" */
@@ -1327,26 +1402,55 @@ int aff_parse_file(const char *path, struct aff_data *data, char *error, size_t 
         memcpy(dir, path, dir_len);
         dir[dir_len] = '\0';
     }
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        snprintf(error, error_size, "%s: %s", path, strerror(errno));
+    /* The top file is the caller's choice (no directory rule), but it is
+     * opened like an include: a regular file within the size limit. */
+    struct aff_file f;
+    char why[AFF_ERROR_SIZE];
+    if (aff_file_open(path, NULL, limits->max_file_bytes, &f, why, sizeof why)) {
+        snprintf(error, error_size, "%s:0: %s", path, why);
         free(dir);
         return -1;
     }
     size_t len = 0;
     int oom;
-    char *text = read_stream(f, &len, &oom);
-    fclose(f);
+    char *text = aff_file_read(&f, &len, &oom);
+    aff_file_close(&f);
     int rc;
     if (!text) {
-        snprintf(error, error_size, "%s: %s", path, oom ? "out of memory" : "read error");
+        snprintf(error, error_size, "%s:0: %s", path, oom ? "out of memory" : "read error");
         rc = -1;
     } else {
-        rc = aff_parse_text(base, text, len, dir, data, error, error_size);
+        f.size = len;
+        rc = parse_top(base, text, len, dir, limits, &f, data, error, error_size);
     }
     free(text);
     free(dir);
     return rc;
+}
+
+uint64_t aff_data_bytes(const struct aff_data *d)
+{
+    uint64_t n = (uint64_t)d->material_capacity * sizeof *d->materials +
+                 (uint64_t)d->texture_capacity * sizeof *d->textures +
+                 (uint64_t)d->matrix_capacity * sizeof *d->matrices +
+                 (uint64_t)d->frame_capacity * sizeof *d->frames +
+                 (uint64_t)d->animation_capacity * sizeof *d->animations +
+                 (uint64_t)d->light_capacity * sizeof *d->lights;
+    for (int f = 0; f < d->frame_count_nodes; f++) {
+        const struct aff_group *g = &d->frames[f].group;
+        n += (uint64_t)g->tri_capacity * sizeof *g->tris +
+             (uint64_t)g->batch_capacity * sizeof *g->batches +
+             (uint64_t)g->tpa_capacity * sizeof *g->tpas;
+        for (uint32_t k = 0; k < g->tpa_count; k++)
+            n += (uint64_t)g->tpas[k].key_count * sizeof *g->tpas[k].keys;
+    }
+    for (int a = 0; a < d->animation_count; a++) {
+        const struct aff_animation *an = &d->animations[a];
+        n += (uint64_t)(an->transl.key_count + an->rot.key_count + an->scale.key_count) *
+             sizeof(struct aff_key) * 2;
+        n += (uint64_t)an->visibility.key_count * (sizeof(double) + sizeof(int));
+    }
+    return n;
 }
 
 /* ------------------------------------------------------------ evaluation */
