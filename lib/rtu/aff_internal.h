@@ -72,6 +72,13 @@ struct aff_limits {
     uint64_t max_read_bytes; /* bytes read in all; 0: derived (above) */
     uint64_t max_triangles;  /* triangles made in all; 0: derived (above) */
     int any_directory;       /* includes and textures may lie anywhere */
+    /* Includes from memory instead of the filesystem (the fuzz target's
+     * several files in one input): the text of include `name` and an id
+     * that is the same for the same file, or -1 when there is none.  The
+     * text stays the caller's.  NULL: the filesystem. */
+    int (*include_text)(void *user, const char *name, const char **text, size_t *length,
+                        uint64_t *id);
+    void *include_user;
 };
 
 /* The defaults: 256 MiB per file, derived budgets, the top file's tree. */

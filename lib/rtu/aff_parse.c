@@ -1047,11 +1047,26 @@ static int parse_include(struct parser *ps, struct reader *r)
         return -1;
     if (detail > ps->detail)
         return 0;
-    if (!ps->directory)
+    if (!ps->directory && !ps->limits->include_text)
         return fail(ps, r, "include '%s': includes are not available here", name);
     if (ps->include_depth >= AFF_MAX_INCLUDE_DEPTH)
         return fail(ps, r, "include '%s': nested deeper than %d files (a cycle?)", name,
                     AFF_MAX_INCLUDE_DEPTH);
+    if (ps->limits->include_text) {
+        struct aff_file f = {-1, 0, UINT64_MAX, 0};
+        const char *text;
+        size_t len;
+        if (ps->limits->include_text(ps->limits->include_user, name, &text, &len, &f.inode))
+            return fail(ps, r, "include '%s': no such file", name);
+        f.size = len;
+        if (take_file(ps, r, &f, name))
+            return -1;
+        struct reader sub = {name, text, len, 0, 1};
+        ps->include_depth++;
+        int rc = parse_reader(ps, &sub);
+        ps->include_depth--;
+        return rc;
+    }
     size_t n = strlen(ps->directory) + strlen(name) + 2;
     char *path = malloc(n);
     if (!path)
