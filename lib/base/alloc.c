@@ -11,6 +11,8 @@
  * worker threads. */
 static long fail_countdown = -1;
 static long failures;
+/* rt_alloc_fail_once: only the one allocation fails. */
+static int fail_once;
 
 static int injected_failure(void)
 {
@@ -19,6 +21,8 @@ static int injected_failure(void)
         return 0;
     if (n == 0) {
         __atomic_add_fetch(&failures, 1, __ATOMIC_RELAXED);
+        if (__atomic_load_n(&fail_once, __ATOMIC_RELAXED))
+            __atomic_store_n(&fail_countdown, -1, __ATOMIC_RELAXED);
         return 1;
     }
     /* Several threads may race on the last unit; the count only needs to
@@ -60,12 +64,20 @@ void rt_free(void *ptr)
 
 void rt_alloc_fail_after(long n)
 {
+    __atomic_store_n(&fail_once, 0, __ATOMIC_RELAXED);
+    __atomic_store_n(&fail_countdown, n, __ATOMIC_RELAXED);
+}
+
+void rt_alloc_fail_once(long n)
+{
+    __atomic_store_n(&fail_once, 1, __ATOMIC_RELAXED);
     __atomic_store_n(&fail_countdown, n, __ATOMIC_RELAXED);
 }
 
 void rt_alloc_fail_reset(void)
 {
     __atomic_store_n(&fail_countdown, -1, __ATOMIC_RELAXED);
+    __atomic_store_n(&fail_once, 0, __ATOMIC_RELAXED);
     __atomic_store_n(&failures, 0, __ATOMIC_RELAXED);
 }
 
