@@ -19,6 +19,13 @@
  *     modulating both; docs/appearance.md), which is the diffuse colour (or
  *     texel) for a material with ambient 0 seen head-on.
  *
+ * The resource limits and the file policy (docs/aff.md, "Files and
+ * resource limits"): include fan-out and repeated includes against the
+ * per-expansion budgets, spheres refused before they are allocated, files
+ * outside the top file's tree, FIFOs, devices and the size limit, and the
+ * "file:line: " form of out-of-memory failures under an address-space
+ * limit.
+ *
  * Every file is written by the test into a fresh temporary directory
  * (mkdtemp under $TMPDIR or /tmp), removed at the end.
  *

@@ -13,6 +13,11 @@
  *   4. TRACELIST_DEBUG=1 prints errors to stderr with identical repeats
  *      collapsed; without it nothing is printed.  This part re-runs the test
  *      binary as a child ("--debug-child") with a controlled environment.
+ *   5. One rule for doubles beyond the float range: draw calls reading
+ *      normals, colours or texture coordinates from RT_DOUBLE arrays reject
+ *      them as rtUpdateVertices does (docs/arrays.md, docs/dynamic.md).
+ *   6. A singular projection renders the clear colour, traces no ray and
+ *      records no error (docs/frames.md).
  *
  * Reference: docs/context.md (errors), and each family's page.
  */

@@ -88,10 +88,13 @@ typedef struct rtu_aff_scene RTUaffscene;
  * texture binding and enable as it found them; changes the current
  * material, normal and texture coordinate (rt.h cannot read them back), and
  * reads (clears) the error flag first: any API error while recording fails
- * the load.  Needs one free level on the modelview stack.  Returns NULL on
- * failure with the
- * reason ("file:line: reason") in rtuAFFError(); a failed load leaves no
- * object or texture behind.  Needs a current context.
+ * the load.  Needs one free level on the modelview stack.  Includes and
+ * textures must be regular files inside the top file's directory tree, and
+ * the whole load stays within budgets linear in the input (docs/aff.md,
+ * "Files and resource limits"; rtuLoadAFFv changes them).  Returns NULL on
+ * failure with the reason ("file:line: reason", line 0 for the file as a
+ * whole) in rtuAFFError(); a failed load leaves no object or texture
+ * behind.  Needs a current context.
  */
 RTAPI RTUaffscene *rtuLoadAFF(const char *path);
 
