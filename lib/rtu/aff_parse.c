@@ -50,9 +50,19 @@ struct block {
     int local_index;
 };
 
-/* A file read, identified by device and inode. */
-struct file_id {
+/* A distinct file read, identified by device and inode, and its text
+ * (kept for the whole load: an include read again is not opened again). */
+struct file_entry {
     uint64_t device, inode;
+    const char *text;
+    size_t length;
+    char *owned; /* the text when read here (NULL: the caller's) */
+};
+
+/* An include name already resolved: the file it names. */
+struct name_entry {
+    char *name;
+    int file;
 };
 
 struct parser {
@@ -68,8 +78,15 @@ struct parser {
     uint64_t input_bytes;  /* of the distinct files read */
     uint64_t read_bytes;   /* of every file read, each inclusion counted */
     uint64_t triangles;    /* made, each inclusion counted */
-    struct file_id *files; /* distinct files read so far */
+    struct file_entry *files; /* distinct files read so far */
     int file_count, file_capacity;
+    /* Hash tables (open addressing, -1: empty) of files by identity and of
+     * include names, so that a repeated include costs its parse only (the
+     * fan-out of ten thousand inclusions took seconds of system calls). */
+    int *file_slots, *name_slots;
+    int file_slot_count, name_slot_count;
+    struct name_entry *names;
+    int name_count, name_capacity;
     int detail;
     /* Current state. */
     int material;
@@ -1011,30 +1028,179 @@ static int parse_light(struct parser *ps, struct reader *r, int named)
 
 static int parse_reader(struct parser *ps, struct reader *r);
 
-/* Counts a file of `size` bytes about to be read: its identity (new
- * files add to the input) and the read budget, before it is read. */
-static int take_file(struct parser *ps, const struct reader *r, const struct aff_file *f,
-                     const char *name)
+static uint64_t hash_bytes(const void *data, size_t n, uint64_t h)
 {
-    int known = 0;
-    for (int i = 0; i < ps->file_count && !known; i++)
-        known = ps->files[i].device == f->device && ps->files[i].inode == f->inode;
-    if (!known) {
-        if (grow((void **)&ps->files, &ps->file_capacity, ps->file_count + 1, sizeof *ps->files))
-            return out_of_memory(ps, r);
-        ps->files[ps->file_count].device = f->device;
-        ps->files[ps->file_count++].inode = f->inode;
-        ps->input_bytes += f->size;
+    const unsigned char *p = data;
+    for (size_t i = 0; i < n; i++)
+        h = (h ^ p[i]) * 1099511628211u; /* FNV-1a */
+    return h;
+}
+
+static uint64_t file_hash(uint64_t device, uint64_t inode)
+{
+    uint64_t h = hash_bytes(&device, sizeof device, 14695981039346656037u);
+    return hash_bytes(&inode, sizeof inode, h);
+}
+
+static uint64_t name_hash(const char *name)
+{
+    return hash_bytes(name, strlen(name), 14695981039346656037u);
+}
+
+/* Slot of the entry `key` matches in table, or of the empty slot where it
+ * would go. */
+static int find_file_slot(const struct parser *ps, uint64_t device, uint64_t inode)
+{
+    int mask = ps->file_slot_count - 1;
+    for (int k = (int)(file_hash(device, inode) & (uint64_t)mask);; k = (k + 1) & mask) {
+        int e = ps->file_slots[k];
+        if (e < 0 || (ps->files[e].device == device && ps->files[e].inode == inode))
+            return k;
     }
+}
+
+static int find_name_slot(const struct parser *ps, const char *name)
+{
+    int mask = ps->name_slot_count - 1;
+    for (int k = (int)(name_hash(name) & (uint64_t)mask);; k = (k + 1) & mask) {
+        int e = ps->name_slots[k];
+        if (e < 0 || strcmp(ps->names[e].name, name) == 0)
+            return k;
+    }
+}
+
+/* Keeps a table at most half full for `count` entries; rehashes. */
+static int reserve_slots(struct parser *ps, int **slots, int *slot_count, int count, int names)
+{
+    if (2 * count < *slot_count)
+        return 0;
+    if (count > (1 << 26))
+        return -1;
+    int n = *slot_count ? 2 * *slot_count : 64;
+    while (2 * count >= n)
+        n *= 2;
+    int *fresh = malloc((size_t)n * sizeof *fresh);
+    if (!fresh)
+        return -1;
+    for (int k = 0; k < n; k++)
+        fresh[k] = -1;
+    int *old = *slots;
+    int old_count = *slot_count;
+    *slots = fresh;
+    *slot_count = n;
+    for (int k = 0; k < old_count; k++)
+        if (old[k] >= 0) {
+            int e = old[k];
+            int at = names ? find_name_slot(ps, ps->names[e].name)
+                           : find_file_slot(ps, ps->files[e].device, ps->files[e].inode);
+            fresh[at] = e;
+        }
+    free(old);
+    return 0;
+}
+
+/* The distinct file with f's identity, added (its size to the input) when
+ * new; -1 when memory ran out.  *added tells which. */
+static int intern_file(struct parser *ps, const struct aff_file *f, int *added)
+{
+    *added = 0;
+    if (reserve_slots(ps, &ps->file_slots, &ps->file_slot_count, ps->file_count + 1, 0) ||
+        grow((void **)&ps->files, &ps->file_capacity, ps->file_count + 1, sizeof *ps->files))
+        return -1;
+    int slot = find_file_slot(ps, f->device, f->inode);
+    if (ps->file_slots[slot] >= 0)
+        return ps->file_slots[slot];
+    struct file_entry *e = &ps->files[ps->file_count];
+    memset(e, 0, sizeof *e);
+    e->device = f->device;
+    e->inode = f->inode;
+    ps->file_slots[slot] = ps->file_count;
+    ps->input_bytes += f->size;
+    *added = 1;
+    return ps->file_count++;
+}
+
+/* Counts one more reading of `size` bytes against the read budget. */
+static int take_read(struct parser *ps, const struct reader *r, uint64_t size, const char *name)
+{
     uint64_t budget = read_budget(ps);
-    if (ps->read_bytes + f->size > budget)
+    if (ps->read_bytes + size > budget)
         return fail(ps, r,
                     "include '%s': the scene reads more than %llu bytes (every inclusion "
                     "counted; the budget for %llu bytes of input, RTU_AFF_MAX_READ_MIB "
                     "raises it)",
                     name, (unsigned long long)budget, (unsigned long long)ps->input_bytes);
-    ps->read_bytes += f->size;
+    ps->read_bytes += size;
     return 0;
+}
+
+/* The text of include `name`: from the names already resolved, else
+ * opened under the file policy (aff_file.c) and counted as input when it
+ * is a file not read before.  Returns the file's index, or -1 after
+ * recording the failure. */
+static int include_file(struct parser *ps, const struct reader *r, const char *name)
+{
+    if (reserve_slots(ps, &ps->name_slots, &ps->name_slot_count, ps->name_count + 1, 1) ||
+        grow((void **)&ps->names, &ps->name_capacity, ps->name_count + 1, sizeof *ps->names))
+        return out_of_memory(ps, r);
+    int slot = find_name_slot(ps, name);
+    if (ps->name_slots[slot] >= 0)
+        return ps->names[ps->name_slots[slot]].file;
+    struct aff_file f = {-1, 0, UINT64_MAX, 0};
+    const char *text = NULL;
+    char *owned = NULL;
+    size_t len = 0;
+    if (ps->limits->include_text) {
+        if (ps->limits->include_text(ps->limits->include_user, name, &text, &len, &f.inode))
+            return fail(ps, r, "include '%s': no such file", name);
+        f.size = len;
+    } else {
+        size_t n = strlen(ps->directory) + strlen(name) + 2;
+        char *path = malloc(n);
+        if (!path)
+            return out_of_memory(ps, r);
+        snprintf(path, n, "%s%s%s", ps->directory, ps->directory[0] ? "/" : "", name);
+        char why[AFF_ERROR_SIZE];
+        int rc = aff_file_open(path, ps->root, ps->limits->max_file_bytes, &f, why, sizeof why);
+        free(path);
+        if (rc)
+            return fail(ps, r, "include '%s': %s", name, why);
+    }
+    char *name_copy = dup_string(name);
+    int added;
+    int file = name_copy ? intern_file(ps, &f, &added) : -1;
+    if (file < 0) {
+        free(name_copy);
+        aff_file_close(&f);
+        return out_of_memory(ps, r);
+    }
+    if (added && !text) {
+        /* Checked against the budget before it is read. */
+        if (ps->read_bytes + f.size > read_budget(ps)) {
+            free(name_copy);
+            aff_file_close(&f);
+            take_read(ps, r, f.size, name);
+            return -1;
+        }
+        int oom;
+        owned = aff_file_read(&f, &len, &oom);
+        if (!owned) {
+            free(name_copy);
+            aff_file_close(&f);
+            return oom ? out_of_memory(ps, r) : fail(ps, r, "include '%s': read error", name);
+        }
+        text = owned;
+    }
+    aff_file_close(&f);
+    if (added) {
+        ps->files[file].text = text;
+        ps->files[file].length = len;
+        ps->files[file].owned = owned;
+    }
+    ps->names[ps->name_count].name = name_copy;
+    ps->names[ps->name_count].file = file;
+    ps->name_slots[slot] = ps->name_count++;
+    return file;
 }
 
 /* 'i detail file': read the file as if inserted here (sec. 3.1). */
@@ -1052,49 +1218,16 @@ static int parse_include(struct parser *ps, struct reader *r)
     if (ps->include_depth >= AFF_MAX_INCLUDE_DEPTH)
         return fail(ps, r, "include '%s': nested deeper than %d files (a cycle?)", name,
                     AFF_MAX_INCLUDE_DEPTH);
-    if (ps->limits->include_text) {
-        struct aff_file f = {-1, 0, UINT64_MAX, 0};
-        const char *text;
-        size_t len;
-        if (ps->limits->include_text(ps->limits->include_user, name, &text, &len, &f.inode))
-            return fail(ps, r, "include '%s': no such file", name);
-        f.size = len;
-        if (take_file(ps, r, &f, name))
-            return -1;
-        struct reader sub = {name, text, len, 0, 1};
-        ps->include_depth++;
-        int rc = parse_reader(ps, &sub);
-        ps->include_depth--;
-        return rc;
-    }
-    size_t n = strlen(ps->directory) + strlen(name) + 2;
-    char *path = malloc(n);
-    if (!path)
-        return out_of_memory(ps, r);
-    snprintf(path, n, "%s%s%s", ps->directory, ps->directory[0] ? "/" : "", name);
-    struct aff_file f;
-    char why[AFF_ERROR_SIZE];
-    int rc = aff_file_open(path, ps->root, ps->limits->max_file_bytes, &f, why, sizeof why);
-    free(path);
-    if (rc)
-        return fail(ps, r, "include '%s': %s", name, why);
-    if (take_file(ps, r, &f, name)) {
-        aff_file_close(&f);
+    int file = include_file(ps, r, name);
+    if (file < 0)
         return -1;
-    }
-    size_t len = 0;
-    int oom;
-    char *text = aff_file_read(&f, &len, &oom);
-    aff_file_close(&f);
-    if (!text)
-        return oom ? out_of_memory(ps, r) : fail(ps, r, "include '%s': read error", name);
-    struct reader sub = {name, text, len, 0, 1};
+    const struct file_entry *e = &ps->files[file];
+    if (take_read(ps, r, e->length, name))
+        return -1;
+    struct reader sub = {name, e->text, e->length, 0, 1};
     ps->include_depth++;
-    rc = parse_reader(ps, &sub);
+    int rc = parse_reader(ps, &sub);
     ps->include_depth--;
-    free(text);
-    if (rc == 0 && ps->block_count < 0)
-        rc = -1;
     return rc;
 }
 
@@ -1362,15 +1495,22 @@ static int parse_top(const char *name, const char *text, size_t length, const ch
     data->frame_count_nodes = data->frame_capacity = 1;
     struct reader r = {name, text, length, 0, 1};
     int rc = 0;
-    ps.input_bytes = ps.read_bytes = length;
+    ps.read_bytes = length;
     if (top) {
-        if (grow((void **)&ps.files, &ps.file_capacity, 1, sizeof *ps.files)) {
+        /* Identified like an include, so including it again is no new
+         * input; its text is the caller's. */
+        struct aff_file f = *top;
+        int added;
+        f.size = length;
+        int file = intern_file(&ps, &f, &added);
+        if (file < 0) {
             rc = fail(&ps, NULL, "%s:0: out of memory", name);
         } else {
-            ps.files[0].device = top->device;
-            ps.files[0].inode = top->inode;
-            ps.file_count = 1;
+            ps.files[file].text = text;
+            ps.files[file].length = length;
         }
+    } else {
+        ps.input_bytes = length;
     }
     if (rc == 0 && ps.read_bytes > read_budget(&ps))
         rc = fail(&ps, NULL, "%s:0: %llu bytes, more than the read budget of %llu", name,
@@ -1378,7 +1518,14 @@ static int parse_top(const char *name, const char *text, size_t length, const ch
     if (rc == 0)
         rc = parse_reader(&ps, &r);
     free(ps.blocks);
+    for (int i = 0; i < ps.file_count; i++)
+        free(ps.files[i].owned);
     free(ps.files);
+    for (int i = 0; i < ps.name_count; i++)
+        free(ps.names[i].name);
+    free(ps.names);
+    free(ps.file_slots);
+    free(ps.name_slots);
     if (rc) {
         aff_data_release(data);
         return -1;
