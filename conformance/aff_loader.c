@@ -1282,7 +1282,7 @@ static void animated_triangles(void)
                  {0.5, 12, 11.5}, {2.0, 13, 13}, {2.0, 13, 13}};
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
         draw(s, cases[k].t);
-        if (!CHECK_DOWN(0.2f, 0.2f, cases[k].a) | !CHECK_DOWN(10.2f, 0.2f, cases[k].b))
+        if ((int)!CHECK_DOWN(0.2f, 0.2f, cases[k].a) | (int)!CHECK_DOWN(10.2f, 0.2f, cases[k].b))
             fprintf(stderr, "    at t = %g\n", cases[k].t);
         CHECK_DOWN(20.2f, 0.2f, 13.0);
     }
