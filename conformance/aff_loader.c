@@ -19,6 +19,13 @@
  *     modulating both; docs/appearance.md), which is the diffuse colour (or
  *     texel) for a material with ambient 0 seen head-on.
  *
+ * The resource limits and the file policy (docs/aff.md, "Files and
+ * resource limits"): include fan-out and repeated includes against the
+ * per-expansion budgets, spheres refused before they are allocated, files
+ * outside the top file's tree, FIFOs, devices and the size limit, and the
+ * "file:line: " form of out-of-memory failures under an address-space
+ * limit.
+ *
  * Every file is written by the test into a fresh temporary directory
  * (mkdtemp under $TMPDIR or /tmp), removed at the end.
  *
@@ -1275,7 +1282,7 @@ static void animated_triangles(void)
                  {0.5, 12, 11.5}, {2.0, 13, 13}, {2.0, 13, 13}};
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
         draw(s, cases[k].t);
-        if (!CHECK_DOWN(0.2f, 0.2f, cases[k].a) | !CHECK_DOWN(10.2f, 0.2f, cases[k].b))
+        if ((int)!CHECK_DOWN(0.2f, 0.2f, cases[k].a) | (int)!CHECK_DOWN(10.2f, 0.2f, cases[k].b))
             fprintf(stderr, "    at t = %g\n", cases[k].t);
         CHECK_DOWN(20.2f, 0.2f, 13.0);
     }
@@ -1878,11 +1885,293 @@ static void state_preserved(RTcontext ctx)
     CHECK_NO_ERR();
 }
 
+/* ------------------------------------------------------------ budgets */
+
+static double cpu_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* A failed load under an address-space limit (where the build allows
+ * one): NULL, quickly, with "<efile>:<line>: " and `reason` in the error,
+ * not "out of memory", and nothing left behind.  Under the limit the code
+ * before the budgets failed with "out of memory" after growing to it. */
+static void fail_within_budget(int line, const char *top, const RTint *attribs,
+                               const char *efile, const char *reason)
+{
+    struct rlimit saved;
+    RTint before = geti(RT_OBJECT_COUNT);
+    int limited = limit_address_space(&saved, (size_t)256 << 20);
+    /* CPU time, not wall time: the machine may be busy with other work. */
+    double t0 = cpu_seconds();
+    RTUaffscene *s = rtuLoadAFFv(path_of(top), attribs);
+    double elapsed = cpu_seconds() - t0;
+    if (limited)
+        setrlimit(RLIMIT_AS, &saved);
+    const char *e = rtuAFFError();
+    int ok = s == NULL && elapsed < 2.0 && location_line(e, efile) >= 0 &&
+             strstr(e, reason) != NULL && !strstr(e, "out of memory") &&
+             geti(RT_OBJECT_COUNT) == before;
+    if (!tu_check(ok, __FILE__, line, "load fails within its budget"))
+        fprintf(stderr, "    %s: %s, %.3f s of CPU, error \"%s\" (expected %s: ... %s)\n", top,
+                s ? "loaded" : "failed", elapsed, e, efile, reason);
+    rtuDeleteAFF(s);
+    tu_check_int(rtGetError(), RT_NO_ERROR, __FILE__, line, "rtGetError()", "RT_NO_ERROR");
+}
+
+static void include_budgets(void)
+{
+    tu_section("include fan-out and repeated includes are counted per expansion");
+    /* Issue 8, item 1: nine files of ten lines, each including the next
+     * ten times, one triangle at the bottom: 10^8 triangles asked for by
+     * about a kilobyte.  The bytes read (every inclusion counted) exceed
+     * 8 x input + 1 MiB long before. */
+    make_subdir("fan");
+    write_text("fan/f9.aff", "p 3  0 0 -5  1 0 -5  0 1 -5\n");
+    for (int k = 1; k <= 8; k++) {
+        char rel[64], text[512] = "";
+        for (int i = 0; i < 10; i++) {
+            char line[64];
+            snprintf(line, sizeof line, "i 0 f%d.aff\n", k + 1);
+            strcat(text, line);
+        }
+        snprintf(rel, sizeof rel, "fan/f%d.aff", k);
+        write_text(rel, text);
+    }
+    fail_within_budget(__LINE__, "fan/f1.aff", NULL, "f8.aff", "the scene reads more than");
+
+    /* Triangles are counted per inclusion too: a 10-byte sphere (1024
+     * triangles) included 100 times from 1.1 KB is 102,400 triangles, more
+     * than input / 4 + 65,536. */
+    write_text("fan/ball.aff", "s 0 0 -5 1\n");
+    {
+        char text[2048] = "";
+        for (int i = 0; i < 100; i++)
+            strcat(text, "i 0 ball.aff\n");
+        write_text("fan/balls.aff", text);
+    }
+    fail_within_budget(__LINE__, "fan/balls.aff", NULL, "ball.aff", "more than");
+    /* The budget is the caller's to raise. */
+    {
+        const RTint raise[] = {RTU_AFF_MAX_TRIANGLES, 200000, 0};
+        RTUaffscene *s = rtuLoadAFFv(path_of("fan/balls.aff"), raise);
+        if (!CHECK(s != NULL))
+            fprintf(stderr, "    error \"%s\"\n", rtuAFFError());
+        else
+            CHECK_INT(affi(s, RTU_AFF_TRIANGLES), 102400);
+        rtuDeleteAFF(s);
+        /* And to lower: the fan-out file's 10^4 bytes of 'i' lines... */
+        const RTint lower[] = {RTU_AFF_MAX_TRIANGLES, 1000, 0};
+        fail_within_budget(__LINE__, "fan/balls.aff", lower, "ball.aff", "more than 1000");
+        const RTint read_mib[] = {RTU_AFF_MAX_READ_MIB, 1, 0};
+        fail_within_budget(__LINE__, "fan/f1.aff", read_mib, "f8.aff", "more than 1048576");
+        const RTint bad[] = {RTU_AFF_MAX_TRIANGLES, 0, 0};
+        CHECK(rtuLoadAFFv(path_of("fan/balls.aff"), bad) == NULL);
+        CHECK(strstr(rtuAFFError(), "out of range") != NULL);
+        const RTint unknown[] = {0x1234, 1, 0};
+        CHECK(rtuLoadAFFv(path_of("fan/balls.aff"), unknown) == NULL);
+        CHECK(strstr(rtuAFFError(), "unknown attribute") != NULL);
+    }
+
+    tu_section("spheres are refused before they are allocated");
+    /* Issue 8, item 3: a 1 MB file of spheres reached 1.6 GB at 16
+     * triangles per byte.  Now its 1,100,000 bytes allow 275,000 + 65,536
+     * triangles (332 spheres): the 333rd fails at its line, in a few MB. */
+    {
+        size_t n = 100000, len = 0;
+        char *text = malloc(n * 11 + 1);
+        if (!CHECK(text != NULL))
+            return;
+        for (size_t i = 0; i < n; i++)
+            len += (size_t)sprintf(text + len, "s 0 0 -5 1\n");
+        write_bytes("fan/spheres.aff", text, len);
+        free(text);
+        fail_within_budget(__LINE__, "fan/spheres.aff", NULL, "spheres.aff",
+                           "more than 340536 triangles");
+        RTUaffscene *s = NULL;
+        const char *e = rtuAFFError();
+        CHECK(location_line(e, "fan/spheres.aff") == 333);
+        (void)s;
+    }
+}
+
+/* ------------------------------------------------------------ file policy */
+
+/* Fails the process if a load blocks (a FIFO opened for reading blocks
+ * until a writer comes: the test would hang instead of failing). */
+static void watchdog(unsigned seconds)
+{
+    alarm(seconds);
+}
+
+static void file_policy(void)
+{
+    tu_section("includes and textures: regular files inside the top file's tree");
+    make_subdir("jail");
+    make_subdir("jail/sub");
+    write_tex("outside.ppm");
+    write_text("outside.aff", "p 3  0 0 -5  1 0 -5  0 1 -5\n");
+    write_text("jail/sub/inside.aff", "p 3  0 0 -5  1 0 -5  0 1 -5\n");
+    write_text("jail/ok.aff", "i 0 sub/inside.aff\ni 0 sub/../sub/inside.aff\n");
+    RTUaffscene *s = LOAD("jail/ok.aff");
+    if (s)
+        CHECK_INT(affi(s, RTU_AFF_TRIANGLES), 2);
+    rtuDeleteAFF(s);
+
+    /* Issue 8, item 2: '..' out of the tree, a link out of it, an absolute
+     * path, a device, a FIFO (which would block), a texture outside. */
+    FAIL("jail/up.aff", "\ni 0 ../outside.aff\n", 2);
+    CHECK(strstr(rtuAFFError(), "outside the scene's directory tree") != NULL);
+    unlink(path_of("jail/link.aff"));
+    if (symlink(path_of("outside.aff"), path_of("jail/link.aff")) == 0) {
+        remember("jail/link.aff", 0);
+        FAIL("jail/via_link.aff", "i 0 link.aff\n", 1);
+        CHECK(strstr(rtuAFFError(), "outside the scene's directory tree") != NULL);
+    }
+    FAIL("jail/zero.aff", "i 0 ../../../../../../../../../../dev/zero\n", 1);
+    CHECK(strstr(rtuAFFError(), "outside the scene's directory tree") != NULL);
+    FAIL("jail/tex_out.aff", FM_WHITE "tt ../outside.ppm  0 0 0 0 0  1 0 0 1 0  0 1 0 0 1\n",
+         2);
+    CHECK(strstr(rtuAFFError(), "outside the scene's directory tree") != NULL);
+    const RTint anywhere[] = {RTU_AFF_ANY_DIRECTORY, RT_TRUE, 0};
+    s = rtuLoadAFFv(path_of("jail/up.aff"), anywhere);
+    if (!CHECK(s != NULL))
+        fprintf(stderr, "    error \"%s\"\n", rtuAFFError());
+    rtuDeleteAFF(s);
+    s = rtuLoadAFFv(path_of("jail/tex_out.aff"), anywhere);
+    if (!CHECK(s != NULL))
+        fprintf(stderr, "    error \"%s\"\n", rtuAFFError());
+    rtuDeleteAFF(s);
+    /* Allowed anywhere, a device is still not a regular file. */
+    s = rtuLoadAFFv(path_of("jail/zero.aff"), anywhere);
+    CHECK(s == NULL);
+    if (!CHECK(location_is(rtuAFFError(), "jail/zero.aff", 1) &&
+               strstr(rtuAFFError(), "not a regular file") != NULL))
+        fprintf(stderr, "    error \"%s\"\n", rtuAFFError());
+    rtuDeleteAFF(s);
+    /* A FIFO inside the tree, as an include and as a texture: refused
+     * without blocking (the watchdog kills a test that blocks). */
+    unlink(path_of("jail/pipe.aff"));
+    if (mkfifo(path_of("jail/pipe.aff"), 0600) == 0) {
+        remember("jail/pipe.aff", 0);
+        watchdog(20);
+        FAIL("jail/fifo.aff", "\n\ni 0 pipe.aff\n", 3);
+        CHECK(strstr(rtuAFFError(), "not a regular file") != NULL);
+        FAIL("jail/fifo_tex.aff", FM_WHITE "tt pipe.aff  0 0 0 0 0  1 0 0 1 0  0 1 0 0 1\n", 2);
+        CHECK(strstr(rtuAFFError(), "not a regular file") != NULL);
+        /* The top file itself. */
+        CHECK(rtuLoadAFF(path_of("jail/pipe.aff")) == NULL);
+        CHECK(strstr(rtuAFFError(), "not a regular file") != NULL);
+        watchdog(0);
+    }
+    /* A directory is not a file either. */
+    FAIL("jail/dir.aff", "i 0 sub\n", 1);
+    CHECK(strstr(rtuAFFError(), "not a regular file") != NULL);
+
+    /* The size limit of one file (RTU_AFF_MAX_FILE_MIB, default 256). */
+    {
+        size_t n = (size_t)3 << 19; /* 1.5 MiB of comment */
+        char *text = malloc(n);
+        if (CHECK(text != NULL)) {
+            memset(text, ' ', n);
+            text[0] = '#';
+            text[n - 1] = '\n';
+            write_bytes("jail/big.aff", text, n);
+            free(text);
+            write_text("jail/inc_big.aff", "i 0 big.aff\n");
+            const RTint small[] = {RTU_AFF_MAX_FILE_MIB, 1, 0};
+            s = rtuLoadAFFv(path_of("jail/inc_big.aff"), small);
+            CHECK(s == NULL);
+            if (!CHECK(location_is(rtuAFFError(), "jail/inc_big.aff", 1) &&
+                       strstr(rtuAFFError(), "more than the limit") != NULL))
+                fprintf(stderr, "    error \"%s\"\n", rtuAFFError());
+            rtuDeleteAFF(s);
+            s = rtuLoadAFFv(path_of("jail/big.aff"), small);
+            CHECK(s == NULL);
+            if (!CHECK(location_is(rtuAFFError(), "jail/big.aff", 0)))
+                fprintf(stderr, "    error \"%s\"\n", rtuAFFError());
+            s = rtuLoadAFF(path_of("jail/inc_big.aff"));
+            CHECK(s != NULL);
+            rtuDeleteAFF(s);
+        }
+    }
+    CHECK_NO_ERR();
+}
+
+/* ------------------------------------------------------------ out of memory */
+
+/* Issue 8, item 10: every failure of rtuLoadAFF, out of memory included,
+ * reads "<file>:<line>: <reason>" (line 0: the file as a whole).  Memory
+ * is made to run out with an address-space limit at every headroom from
+ * a few KiB up to what the load needs (builds with a sanitizer, which
+ * reserves terabytes, skip this). */
+static void out_of_memory_messages(void)
+{
+    tu_section("out of memory while loading: <file>:<line>: reason");
+    make_subdir("oom");
+    {
+        /* A mesh of 100,000 triangles in an include, a texture. */
+        size_t cap = 8u << 20, len = 0;
+        char *text = malloc(cap);
+        if (!CHECK(text != NULL))
+            return;
+        len += (size_t)sprintf(text + len, "m\nvertices 201\n");
+        for (int i = 0; i <= 200; i++)
+            len += (size_t)sprintf(text + len, "%d 0 -5\n", i);
+        len += (size_t)sprintf(text + len, "triangles 100000\n");
+        for (int i = 0; i < 100000; i++)
+            len += (size_t)sprintf(text + len, "%d %d %d\n", i % 199, i % 199 + 1, i % 199 + 2);
+        write_bytes("oom/mesh.aff", text, len);
+        free(text);
+    }
+    write_tex("oom/tex.ppm");
+    write_text("oom/top.aff", FM_WHITE "i 0 mesh.aff\n"
+                              "tt tex.ppm  0 0 0 0 0  1 0 0 1 0  0 1 0 0 1\n");
+    int tried = 0, out_of_memory = 0, loaded = 0;
+    for (size_t headroom = 16384; headroom < ((size_t)256 << 20); headroom += headroom / 2) {
+        struct rlimit saved;
+        if (!limit_address_space(&saved, headroom))
+            break;
+        RTUaffscene *s = rtuLoadAFF(path_of("oom/top.aff"));
+        setrlimit(RLIMIT_AS, &saved);
+        (void)rtGetError();
+        tried++;
+        if (s) {
+            loaded++;
+            rtuDeleteAFF(s);
+            continue;
+        }
+        const char *e = rtuAFFError();
+        long line = location_line(e, "oom/top.aff");
+        if (line < 0)
+            line = location_line(e, "oom/mesh.aff");
+        if (line < 0)
+            line = location_line(e, "oom/tex.ppm");
+        out_of_memory += strstr(e, "out of memory") != NULL;
+        if (getenv("AFF_OOM_VERBOSE"))
+            fprintf(stderr, "    headroom %zu: \"%s\"\n", headroom, e);
+        if (!CHECK(line >= 0))
+            fprintf(stderr, "    headroom %zu: error \"%s\"\n", headroom, e);
+    }
+    if (tried > 0) {
+        CHECK(out_of_memory > 0);
+        CHECK(loaded > 0);
+    }
+    printf("  out of memory: %d loads, %d out of memory, %d loaded\n", tried, out_of_memory,
+           loaded);
+    CHECK_NO_ERR();
+}
+
 int main(void)
 {
     RTcontext ctx = tu_make_context("threads=2");
     tu_capture_errors();
     make_root();
+    /* First, while the heap holds little freed memory the address-space
+     * limit would not count. */
+    out_of_memory_messages();
     scene_counts();
     view_statement();
     lights();
@@ -1901,6 +2190,8 @@ int main(void)
     errors();
     huge_counts();
     truncation();
+    include_budgets();
+    file_policy();
     state_preserved(ctx);
     CHECK_NO_ERR();
     tu_destroy_context(ctx);

@@ -22,11 +22,27 @@ static void config_strings(void)
                                        "threads=2 bins=8 builder=sweep",
                                        "bins=2",
                                        "bins=256",
-                                       "builder=binned"};
+                                       "builder=binned",
+                                       /* docs/context.md grammar: blanks are
+                                        * space, tab, CR and LF, anywhere
+                                        * between items; one comma. */
+                                       "threads=2\n",
+                                       "threads=2\r\n",
+                                       "\tthreads=2\tbins=8\n",
+                                       " threads=2 , bins=8 ",
+                                       "   ",
+                                       "threads=10",
+                                       "build_threads=0"};
     static const char *const bad[] = {"threads=0",    "threads=257", "threads=-1", "threads=",
                                       "threads=abc",  "threads=2x",  "bins=1",     "bins=257",
                                       "builder=foo",  "foo=1",       "threads",    "=2",
-                                      "threads=2;bins=8"};
+                                      "threads=2;bins=8",
+                                      /* duplicates, empty items, leading
+                                       * zeros, signs, blanks around '=' */
+                                      "threads=2 threads=3", "bins=8,bins=8", "threads=01",
+                                      "bins=08", "threads=+2", " , ", ",", "threads=1,",
+                                      ",threads=1", "threads=1,,bins=4", "threads=1, ,bins=4",
+                                      "threads =1", "threads= 1", "build_threads=00"};
     size_t i;
     tu_section("configuration strings");
     for (i = 0; i < sizeof good / sizeof good[0]; i++) {
@@ -45,6 +61,51 @@ static void config_strings(void)
     }
     /* NULL is ignored. */
     rtDestroyContext(NULL);
+}
+
+/* rtCreateContextWithReason: the reason for a NULL context, in the
+ * caller's buffer (docs/context.md). */
+static int reason_is(const char *config, const char *expected)
+{
+    char reason[RT_REASON_SIZE];
+    memset(reason, 'x', sizeof reason);
+    RTcontext ctx = rtCreateContextWithReason(config, (RTsizei)sizeof reason, reason);
+    int ok = ctx == NULL && strcmp(reason, expected) == 0;
+    if (!ok)
+        fprintf(stderr, "    \"%s\": context %p, reason \"%s\", expected \"%s\"\n", config,
+                (void *)ctx, reason, expected);
+    rtDestroyContext(ctx);
+    return ok;
+}
+
+static void config_reasons(void)
+{
+    char reason[RT_REASON_SIZE];
+    tu_section("rtCreateContextWithReason");
+    CHECK(reason_is("threads=2 threads=3", "key 'threads' is given twice"));
+    CHECK(reason_is("threads=1,,bins=4", "item 2 is empty (a comma with no key=value before it)"));
+    CHECK(reason_is(" , ", "item 1 is empty (a comma with no key=value before it)"));
+    CHECK(reason_is("threads=1,", "item 2 is empty (a comma with no key=value after it)"));
+    CHECK(reason_is("threads=01", "threads='01': the value must be a decimal integer in "
+                                  "[1, 256] without sign or leading zero"));
+    CHECK(reason_is("builder=fast", "builder='fast': the value must be binned or sweep"));
+    CHECK(reason_is("colour=red", "unknown key 'colour'"));
+    CHECK(reason_is("threads", "'threads' is not key=value"));
+    /* Success: a context and an empty reason. */
+    memset(reason, 'x', sizeof reason);
+    RTcontext ctx = rtCreateContextWithReason("threads=2\n", (RTsizei)sizeof reason, reason);
+    CHECK(ctx != NULL);
+    CHECK(reason[0] == '\0');
+    rtDestroyContext(ctx);
+    /* A short buffer gets a terminated prefix; none at all is allowed. */
+    memset(reason, 'x', sizeof reason);
+    CHECK(rtCreateContextWithReason("foo=1", 4, reason) == NULL);
+    CHECK(strcmp(reason, "unk") == 0 && reason[4] == 'x');
+    CHECK(rtCreateContextWithReason("foo=1", 0, reason) == NULL);
+    CHECK(rtCreateContextWithReason("foo=1", 16, NULL) == NULL);
+    ctx = rtCreateContextWithReason(NULL, 0, NULL);
+    CHECK(ctx != NULL);
+    rtDestroyContext(ctx);
 }
 
 static void effective_configuration(void)
@@ -509,6 +570,7 @@ static void get_error_semantics(void)
 int main(void)
 {
     config_strings();
+    config_reasons();
     effective_configuration();
     strings();
     integer_defaults();

@@ -13,6 +13,11 @@
  *   4. TRACELIST_DEBUG=1 prints errors to stderr with identical repeats
  *      collapsed; without it nothing is printed.  This part re-runs the test
  *      binary as a child ("--debug-child") with a controlled environment.
+ *   5. One rule for doubles beyond the float range: draw calls reading
+ *      normals, colours or texture coordinates from RT_DOUBLE arrays reject
+ *      them as rtUpdateVertices does (docs/arrays.md, docs/dynamic.md).
+ *   6. A singular projection renders the clear colour, traces no ray and
+ *      records no error (docs/frames.md).
  *
  * Reference: docs/context.md (errors), and each family's page.
  */
@@ -148,6 +153,9 @@ C(draw_elements_mode, rtDrawElements(0x1234, 3, RT_UNSIGNED_INT, elems))
 C(draw_elements_type, rtDrawElements(RT_TRIANGLES, 3, RT_INT, elems))
 C(draw_elements_count, rtDrawElements(RT_TRIANGLES, -3, RT_UNSIGNED_INT, elems))
 C(draw_elements_null, rtDrawElements(RT_TRIANGLES, 3, RT_UNSIGNED_INT, NULL))
+/* docs/arrays.md: NULL indices are RT_INVALID_VALUE whatever the count,
+ * checked before the arrays (the vertex array is off in these cases). */
+C(draw_elements_null_empty, rtDrawElements(RT_TRIANGLES, 0, RT_UNSIGNED_INT, NULL))
 
 C(matrix_mode_enum, rtMatrixMode(0x1234))
 C(matrix_mode_ok, rtMatrixMode(RT_MODELVIEW))
@@ -233,6 +241,11 @@ C(viewport_ok, rtViewport(0, 0, 4, 4))
 C(clear_color_ok, rtClearColor(0, 0, 0, 1))
 C(viewport_negative, rtViewport(0, -1, 4, 4))
 C(viewport_huge, rtViewport(0, 0, 16385, 4))
+/* docs/frames.md: x + width and y + height are at most 16384 (the
+ * framebuffer is (x + width) x (y + height)). */
+C(viewport_x_plus_width, rtViewport(100, 0, 16384, 1))
+C(viewport_y_plus_height, rtViewport(0, 16384, 1, 1))
+C(viewport_corner, rtViewport(16384, 16384, 1, 1))
 C(clear_color_nan, rtClearColor(0, tu_nan(), 0, 1))
 C(render_frame, rtRenderFrame())
 C(finish, rtFinish())
@@ -358,6 +371,7 @@ static const struct error_case cases[] = {
     {"rtDrawElements", RT_INVALID_ENUM, OBJECT, draw_elements_type, NULL},
     {"rtDrawElements", RT_INVALID_VALUE, OBJECT, draw_elements_count, NULL},
     {"rtDrawElements", RT_INVALID_VALUE, OBJECT, draw_elements_null, NULL},
+    {"rtDrawElements", RT_INVALID_VALUE, OBJECT, draw_elements_null_empty, NULL},
     {"rtDrawElements", RT_INVALID_OPERATION, OBJECT, draw_elements_ok, NULL},
 
     {"rtMatrixMode", RT_INVALID_ENUM, NONE, matrix_mode_enum, NULL},
@@ -418,6 +432,9 @@ static const struct error_case cases[] = {
 
     {"rtViewport", RT_INVALID_VALUE, NONE, viewport_negative, NULL},
     {"rtViewport", RT_INVALID_VALUE, NONE, viewport_huge, NULL},
+    {"rtViewport", RT_INVALID_VALUE, NONE, viewport_x_plus_width, NULL},
+    {"rtViewport", RT_INVALID_VALUE, NONE, viewport_y_plus_height, NULL},
+    {"rtViewport", RT_INVALID_VALUE, NONE, viewport_corner, NULL},
     {"rtViewport", RT_INVALID_OPERATION, BEGIN, viewport_ok, NULL},
     {"rtClearColor", RT_INVALID_VALUE, NONE, clear_color_nan, NULL},
     {"rtClearColor", RT_INVALID_OPERATION, BEGIN, clear_color_ok, NULL},
@@ -1029,6 +1046,107 @@ static void user_callback(RTenum error, const char *message, void *user)
     user_calls++;
     user_seen = user;
 }
+/* ---- 5. one rule for doubles beyond the float range -------------------------- */
+
+/* docs/arrays.md and docs/dynamic.md: values are stored as float, so a
+ * finite RT_DOUBLE beyond the float range counts as infinite.  A draw call
+ * reading such a normal, colour or texture coordinate from an array records
+ * RT_INVALID_VALUE and stores nothing, as rtUpdateVertices does for the
+ * same value. */
+static void double_arrays_beyond_float(void)
+{
+    static const double xyz[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    static const RTuint idx[3] = {0, 1, 2};
+    const RTuint name = 77;
+    tu_section("draw calls and rtUpdateVertices: doubles beyond the float range");
+    for (int which = 0; which < 3; which++)
+        for (int indexed = 0; indexed < 2; indexed++) {
+            double attr[12] = {0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1, 1};
+            attr[which == 0 ? 3 : 4] = 1e300; /* element 1, component 0 */
+            RTenum array = which == 0 ? RT_NORMAL_ARRAY : which == 1 ? RT_COLOR_ARRAY
+                                                                      : RT_TEXTURE_COORD_ARRAY;
+            rtNewObject(name);
+            rtEnableClientState(RT_VERTEX_ARRAY);
+            rtVertexPointer(3, RT_DOUBLE, 0, xyz);
+            rtEnableClientState(array);
+            if (which == 0)
+                rtNormalPointer(RT_DOUBLE, 0, attr);
+            else if (which == 1)
+                rtColorPointer(4, RT_DOUBLE, 0, attr);
+            else
+                rtTexCoordPointer(4, RT_DOUBLE, 0, attr);
+            CHECK_NO_ERR();
+            if (indexed)
+                rtDrawElements(RT_TRIANGLES, 3, RT_UNSIGNED_INT, idx);
+            else
+                rtDrawArrays(RT_TRIANGLES, 0, 3);
+            CHECK_ERR(RT_INVALID_VALUE);
+            rtDisableClientState(array);
+            rtDrawArrays(RT_TRIANGLES, 0, 3); /* the same batch without it */
+            CHECK_NO_ERR();
+            rtDisableClientState(RT_VERTEX_ARRAY);
+            rtEndObject();
+            CHECK_NO_ERR();
+            /* Only the second batch was stored. */
+            CHECK_INT(tu_object_triangles(name), 1);
+            RTint vertices = -1;
+            rtGetObjectiv(name, RT_OBJECT_VERTICES, &vertices);
+            CHECK_INT(vertices, 3);
+            rtDeleteObjects(1, &name);
+        }
+    /* rtUpdateVertices applies the same rule to the same value. */
+    CHECK(tu_define_quad(name, 0, 0, 1, 1, 0));
+    const double big_normal[3] = {0.0, 0.0, 1e300};
+    rtUpdateVertices(name, RT_NORMAL_ARRAY, 0, 1, RT_DOUBLE, 0, big_normal);
+    CHECK_ERR(RT_INVALID_VALUE);
+    rtDeleteObjects(1, &name);
+    CHECK_NO_ERR();
+}
+
+/* ---- 6. a singular projection ---------------------------------------------- */
+
+/* docs/frames.md: a singular projection matrix (no inverse, so no primary
+ * ray) is not an error; the frame is the clear colour and traces no ray. */
+static void singular_projection(void)
+{
+    static const RTfloat zero[16] = {0};
+    const RTuint name = 78;
+    float px[4 * 4 * 4];
+    tu_section("rtRenderFrame with a singular projection");
+    CHECK(tu_define_quad(name, -1, -1, 1, 1, -3));
+    rtBeginFrame();
+    rtInstantiateObject(name);
+    rtViewport(0, 0, 4, 4);
+    rtClearColor(0.25f, 0.5f, 0.75f, 1.0f);
+    rtMatrixMode(RT_PROJECTION);
+    rtPushMatrix();
+    rtLoadMatrixf(zero);
+    rtMatrixMode(RT_MODELVIEW);
+    CHECK_NO_ERR();
+    rtRenderFrame();
+    CHECK_NO_ERR();
+    RTint rays = -1;
+    rtGetIntegerv(RT_STAT_RAYS, &rays);
+    CHECK_INT(rays, 0);
+    rtReadPixels(0, 0, 4, 4, RT_RGBA, RT_FLOAT, px);
+    int clear = 1;
+    for (int i = 0; i < 16; i++)
+        clear &= px[4 * i] == 0.25f && px[4 * i + 1] == 0.5f && px[4 * i + 2] == 0.75f &&
+                 px[4 * i + 3] == 1.0f;
+    CHECK(clear);
+    /* The same frame with the identity projection does trace. */
+    rtMatrixMode(RT_PROJECTION);
+    rtPopMatrix();
+    rtMatrixMode(RT_MODELVIEW);
+    rtRenderFrame();
+    rtGetIntegerv(RT_STAT_RAYS, &rays);
+    CHECK(rays >= 16);
+    rtBeginFrame();
+    rtViewport(0, 0, 0, 0);
+    rtDeleteObjects(1, &name);
+    CHECK_NO_ERR();
+}
+
 
 static void first_error_and_callback(void)
 {
@@ -1176,6 +1294,8 @@ int main(int argc, char **argv)
     CHECK(rtIsObject(OBJ) == RT_TRUE);
     CHECK_INT(tu_object_triangles(OBJ), 2);
     run_sweeps();
+    double_arrays_beyond_float();
+    singular_projection();
     first_error_and_callback();
     CHECK_NO_ERR();
     tu_destroy_context(ctx);

@@ -2,9 +2,14 @@
  * aff_fuzz.c - libFuzzer target over the AFF (BART) loader.
  *
  * One input is the text of one AFF file (FORMAT.md is
- * ../shared/bart/FORMAT.md beside the checkout).  The target
- *   1. parses it with aff_parse_text, with no directory, so an include is
- *      an error (lib/rtu/aff_parse.c);
+ * ../shared/bart/FORMAT.md beside the checkout), optionally followed by
+ * more files: a line "%%file NAME" (a comment to the AFF reader) starts
+ * the file NAME, which 'i 0 NAME' in any of them includes from memory
+ * (struct aff_limits.include_text), so the fuzzer reaches include
+ * fan-out, cycles and the read budget without touching the filesystem.
+ * The target
+ *   1. parses it with aff_parse_text, with no directory: includes name
+ *      only the files of the input (lib/rtu/aff_parse.c);
  *   2. if it parses, evaluates the animation at a few times (t0, t1, their
  *      midpoint, -1e30 and 1e30): every frame's world matrix
  *      (aff_frame_matrix), every animated triangle (aff_tpa_eval), every
@@ -26,7 +31,11 @@
  * Work per input is bounded: inputs above AFF_FUZZ_MAX_INPUT bytes are
  * skipped, the parser bounds every count (and the triangles it makes of
  * spheres and cones) by the size of the text, and scenes of more than
- * AFF_FUZZ_MAX_TRIANGLES triangles stop after step 2.
+ * AFF_FUZZ_MAX_TRIANGLES triangles stop after step 2.  That bound is a
+ * property checked here: the triangles and the bytes of a parsed scene
+ * are linear in the input (AFF_FUZZ_BYTES_PER_INPUT), and run_fuzz.sh
+ * runs libFuzzer with -malloc_limit_mb, -rss_limit_mb and -timeout, so an
+ * input that allocates or runs beyond them is a finding too.
  *
  * Built two ways (conformance/fuzz/CMakeLists.txt): aff_fuzz with libFuzzer
  * (clang, RT_FUZZ=ON) and aff_fuzz_replay with replay_main.c, which runs
@@ -54,6 +63,13 @@
  * at a seventh of its speed.  Four spheres' worth covers every loader
  * path. */
 #define AFF_FUZZ_MAX_TRIANGLES 4096
+/* The memory-bound property checked on every input that parses: the
+ * parsed scene holds at most 64 bytes per input byte plus 16 MiB.  The
+ * triangle budget alone allows 24 per byte plus 6 MiB, twice that while an
+ * array doubles; matrices, frames and keys add at most a few bytes per
+ * byte (each takes at least its own text). */
+#define AFF_FUZZ_BYTES_PER_INPUT 64
+#define AFF_FUZZ_BYTES_BASE ((uint64_t)16 << 20)
 /* Rays traced per commit; pixels of the rendered frame. */
 #define AFF_FUZZ_RAYS 16
 #define AFF_FUZZ_WIDTH 4
@@ -250,14 +266,91 @@ static void run_scene(struct aff_data *d, double ta, double tb, double tm)
     (void)rtGetError();
 }
 
+/* ------------------------------------------------------------ files */
+
+#define AFF_FUZZ_MAX_FILES 16
+#define AFF_FUZZ_MARKER "%%file "
+
+/* The files of one input after the first: name and text. */
+struct fuzz_files {
+    int count;
+    struct {
+        const char *name, *text;
+        size_t name_length, length;
+    } file[AFF_FUZZ_MAX_FILES];
+};
+
+/* Splits the input at lines "%%file NAME"; returns the length of the
+ * first file (the top file). */
+static size_t split_files(const char *text, size_t size, struct fuzz_files *files)
+{
+    const size_t marker = sizeof AFF_FUZZ_MARKER - 1;
+    size_t top = size;
+    files->count = 0;
+    for (size_t pos = 0; pos + marker <= size; pos++) {
+        if ((pos > 0 && text[pos - 1] != '\n') || memcmp(text + pos, AFF_FUZZ_MARKER, marker))
+            continue;
+        if (files->count == 0)
+            top = pos;
+        else
+            files->file[files->count - 1].length =
+                pos - (size_t)(files->file[files->count - 1].text - text);
+        if (files->count == AFF_FUZZ_MAX_FILES)
+            return top;
+        size_t name = pos + marker, end = name;
+        while (end < size && text[end] != '\n')
+            end++;
+        files->file[files->count].name = text + name;
+        files->file[files->count].name_length = end - name;
+        files->file[files->count].text = text + (end < size ? end + 1 : end);
+        files->file[files->count].length = 0;
+        files->count++;
+        pos = end;
+    }
+    if (files->count > 0)
+        files->file[files->count - 1].length =
+            size - (size_t)(files->file[files->count - 1].text - text);
+    return top;
+}
+
+static int include_text(void *user, const char *name, const char **text, size_t *length,
+                        uint64_t *id)
+{
+    const struct fuzz_files *files = user;
+    for (int i = 0; i < files->count; i++)
+        if (files->file[i].name_length == strlen(name) &&
+            memcmp(files->file[i].name, name, strlen(name)) == 0) {
+            *text = files->file[i].text;
+            *length = files->file[i].length;
+            *id = (uint64_t)i;
+            return 0;
+        }
+    return -1;
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     if (size > AFF_FUZZ_MAX_INPUT)
         return 0;
     struct aff_data d;
     char error[AFF_ERROR_SIZE];
-    if (aff_parse_text("fuzz.aff", (const char *)data, size, NULL, &d, error, sizeof error))
+    struct fuzz_files files;
+    struct aff_limits limits;
+    aff_limits_default(&limits);
+    size_t top = split_files((const char *)data, size, &files);
+    limits.include_text = include_text;
+    limits.include_user = &files;
+    if (aff_parse_text("fuzz.aff", (const char *)data, top, NULL, &limits, &d, error,
+                       sizeof error))
         return 0;
+    /* The resource bound (docs/aff.md): the parsed scene of n input bytes
+     * holds less than AFF_FUZZ_BYTES_PER_INPUT n + AFF_FUZZ_BYTES_BASE
+     * bytes, the triangle budget of the defaults plus the arrays around
+     * it.  libFuzzer's -malloc_limit_mb and -rss_limit_mb (run_fuzz.sh)
+     * catch what escapes the count, a failed load included. */
+    check(d.static_triangles + d.animated_triangles + d.tpa_triangles <=
+          size / AFF_INPUT_PER_TRIANGLE + AFF_TRIANGLES_BASE);
+    check(aff_data_bytes(&d) <= AFF_FUZZ_BYTES_PER_INPUT * (uint64_t)size + AFF_FUZZ_BYTES_BASE);
 
     double ta = d.t0, tb = d.t1, tm = 0.5 * ((double)d.t0 + (double)d.t1);
     const double times[] = {ta, tb, tm, -1e30, 1e30};

@@ -14,7 +14,8 @@
  * This is what the fuzz/aff_replay test runs in every build, with any
  * compiler and with or without the sanitizers: the corpus and the saved
  * regressions (conformance/fuzz/corpus, conformance/fuzz/regressions)
- * become ordinary tests.  Exit status 0 when every input ran; an input
+ * become ordinary tests.  Exit status 0 when every input ran, each within
+ * REPLAY_TIMEOUT_SECONDS (libFuzzer's -timeout in run_fuzz.sh); an input
  * that makes the target crash or abort ends the process, and the file name
  * printed before it names the input.
  */
@@ -25,8 +26,12 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <time.h>
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+/* Seconds one input may take: run_fuzz.sh's -timeout. */
+#define REPLAY_TIMEOUT_SECONDS 10
 
 struct replay {
     int aff_only; /* only files named *.aff (the BART folder holds textures) */
@@ -75,9 +80,20 @@ static int run_file(struct replay *rp, const char *path)
     }
     printf("replay: %s (%zu bytes)\n", path, size);
     fflush(stdout);
+    struct timespec t0, t1;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
     LLVMFuzzerTestOneInput(data, size);
+    clock_gettime(CLOCK_MONOTONIC, &t1);
     free(data);
     rp->inputs++;
+    /* The time bound libFuzzer enforces with -timeout (run_fuzz.sh): work
+     * linear in the input, so every input we keep runs well within it. */
+    double seconds = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
+    if (seconds > REPLAY_TIMEOUT_SECONDS) {
+        fprintf(stderr, "%s: %.1f s, more than the %d s an input may take\n", path, seconds,
+                REPLAY_TIMEOUT_SECONDS);
+        return -1;
+    }
     return 0;
 }
 

@@ -27,6 +27,15 @@ cd "$textures"
 # -max_len matches the target's own limit (AFF_FUZZ_MAX_INPUT in aff_fuzz.c);
 # larger seeds are cut to it.  libFuzzer reads the BART folder recursively,
 # textures too: they fail at their first byte, at no cost.
-exec "$fuzzer" -max_total_time="$seconds" -rss_limit_mb=2048 -timeout=10 -max_len=65536 \
+# The resource bound (docs/aff.md, "Files and resource limits"): an input of
+# n <= 64 KiB bytes may make at most n / 4 + 65,536 triangles, 7.5 MiB, in
+# arrays that double (16 MiB), and the target records at most 4096 of them
+# (AFF_FUZZ_MAX_TRIANGLES), so any single allocation above 64 MiB
+# (-malloc_limit_mb), a process above 2 GiB under ASan (-rss_limit_mb) or
+# an input running longer than 10 s (-timeout) is a finding, saved as an
+# artifact like a crash.  The target checks the parsed scene's size against
+# its input itself (aff_fuzz.c, AFF_FUZZ_BYTES_PER_INPUT).
+exec "$fuzzer" -max_total_time="$seconds" -rss_limit_mb=2048 -malloc_limit_mb=64 -timeout=10 \
+  -max_len=65536 \
   -detect_leaks=1 -print_final_stats=1 -dict="$src/aff.dict" \
   -artifact_prefix="$scratch/artifacts/" "${dirs[@]}"

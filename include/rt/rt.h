@@ -242,6 +242,14 @@ typedef void (*RTerrorcallback)(RTenum error, const char *message, void *user);
 
 /* ---- Context and errors (docs/context.md, docs/errors.md) ------------ */
 RTAPI RTcontext rtCreateContext(const char *configuration);
+/* rtCreateContext that says why it returned NULL: a bad configuration
+ * (which item, and why) or "out of memory", written to `reason` (at most
+ * bufSize bytes, always terminated; "" on success).  Nothing is kept for a
+ * later call to read.  RT_REASON_SIZE bytes hold every reason whole but
+ * one quoting a very long key or value (docs/context.md). */
+#define RT_REASON_SIZE 256
+RTAPI RTcontext rtCreateContextWithReason(const char *configuration, RTsizei bufSize,
+                                          char *reason);
 RTAPI void rtDestroyContext(RTcontext context);
 RTAPI RTboolean rtMakeCurrent(RTcontext context);
 RTAPI RTcontext rtGetCurrentContext(void);

@@ -88,12 +88,31 @@ typedef struct rtu_aff_scene RTUaffscene;
  * texture binding and enable as it found them; changes the current
  * material, normal and texture coordinate (rt.h cannot read them back), and
  * reads (clears) the error flag first: any API error while recording fails
- * the load.  Needs one free level on the modelview stack.  Returns NULL on
- * failure with the
- * reason ("file:line: reason") in rtuAFFError(); a failed load leaves no
- * object or texture behind.  Needs a current context.
+ * the load.  Needs one free level on the modelview stack.  Includes and
+ * textures must be regular files inside the top file's directory tree, and
+ * the whole load stays within budgets linear in the input (docs/aff.md,
+ * "Files and resource limits"; rtuLoadAFFv changes them).  Returns NULL on
+ * failure with the reason ("file:line: reason", line 0 for the file as a
+ * whole) in rtuAFFError(); a failed load leaves no object or texture
+ * behind.  Needs a current context.
  */
 RTAPI RTUaffscene *rtuLoadAFF(const char *path);
+
+/* rtuLoadAFFv attributes: a list of (name, value) pairs ended by 0, like
+ * EGL's attribute lists (docs/aff.md, "Files and resource limits"). */
+#define RTU_AFF_MAX_TRIANGLES 0x9A20 /* triangles made in all, every inclusion
+                                        counted; replaces the derived budget */
+#define RTU_AFF_MAX_READ_MIB 0x9A21  /* MiB read in all, every inclusion counted;
+                                        replaces the derived budget */
+#define RTU_AFF_MAX_FILE_MIB 0x9A22  /* MiB of one file (default 256) */
+#define RTU_AFF_ANY_DIRECTORY 0x9A23 /* RT_TRUE: includes and textures may lie
+                                        outside the top file's directory tree */
+
+/* rtuLoadAFF with limits and file policy other than the defaults; attribs
+ * may be NULL (then it is rtuLoadAFF).  An unknown name or a value out of
+ * range (budgets < 1, a flag not RT_TRUE or RT_FALSE) fails the load with
+ * the reason in rtuAFFError(). */
+RTAPI RTUaffscene *rtuLoadAFFv(const char *path, const RTint *attribs);
 
 /* Deletes the scene's objects and textures (in the current context, which
  * must be the one it was loaded into) and frees it.  NULL is ignored. */

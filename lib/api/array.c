@@ -204,13 +204,16 @@ static int fetch_position(const struct client_array *a, size_t i, double p[3])
 }
 
 /* 1 when the first `components` values of element i of an enabled
- * attribute array are finite (integer types always are). */
+ * attribute array are finite (integer types always are).  Attributes are
+ * stored as float, so a finite double beyond the float range counts as
+ * infinite: the rule of vertices (rt_vertex_is_finite) and of
+ * rtUpdateVertices, one rule for every array (docs/arrays.md). */
 static int attribute_is_finite(const struct client_array *a, size_t i, int components)
 {
     if (!a->enabled || (a->type != RT_FLOAT && a->type != RT_DOUBLE))
         return 1;
     for (int c = 0; c < components; c++)
-        if (!isfinite(fetch(a, i, c, 0)))
+        if (!isfinite((float)fetch(a, i, c, 0)))
             return 0;
     return 1;
 }
@@ -434,7 +437,9 @@ void rtDrawElements(RTenum mode, RTsizei count, RTenum type, const void *indices
         rt_error(ctx, RT_INVALID_ENUM, "rtDrawElements(type=0x%x)", type);
         return;
     }
-    if (count < 0 || (count > 0 && !indices)) {
+    /* NULL indices are invalid whatever the count (docs/arrays.md): there
+     * is no element array buffer an offset could refer to. */
+    if (count < 0 || !indices) {
         rt_error(ctx, RT_INVALID_VALUE, "rtDrawElements(count=%d, indices=%p)", count, indices);
         return;
     }

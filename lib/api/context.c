@@ -6,6 +6,7 @@
  * library (as in OpenGL); everything else lives in struct rt_context.
  */
 #include <ctype.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -31,10 +32,42 @@ static int online_cpus(void)
     return n > API_MAX_THREADS ? API_MAX_THREADS : (int)n;
 }
 
+/*
+ * The configuration string (grammar in docs/context.md):
+ *   configuration = [ws] [item {sep item}] [ws]
+ *   sep           = [ws] "," [ws] | ws
+ *   item          = key "=" value         (no blank around "=")
+ *   ws            = one or more of space, tab, CR, LF
+ * A key may appear once; integers are decimal without sign or leading
+ * zero.  Every rejection says why in `reason`, which rtCreateContext
+ * cannot record as an error: there is no context yet.
+ */
+static int config_fail(char *reason, size_t size, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+
+static int config_fail(char *reason, size_t size, const char *fmt, ...)
+{
+    if (reason && size > 0) {
+        va_list args;
+        va_start(args, fmt);
+        vsnprintf(reason, size, fmt, args);
+        va_end(args);
+    }
+    return -1;
+}
+
+static int config_space(char c)
+{
+    return c == ' ' || c == '\t' || c == '\n' || c == '\r';
+}
+
 /* Parses a decimal integer in [lo, hi]; returns 0 on success. */
 static int parse_int(const char *s, size_t len, int lo, int hi, int *out)
 {
-    if (len == 0 || len > 9)
+    if (len == 0 || len > 9 || (len > 1 && s[0] == '0'))
         return -1;
     int v = 0;
     for (size_t i = 0; i < len; i++) {
@@ -53,53 +86,100 @@ static int key_is(const char *key, size_t len, const char *name)
     return strlen(name) == len && memcmp(key, name, len) == 0;
 }
 
-/* Applies "key=value" pairs separated by spaces or commas; returns 0, or
- * -1 on an unknown key or bad value. */
-static int parse_configuration(struct rt_context *ctx, const char *config)
+/* Applies the items of `config`; returns 0, or -1 with the reason. */
+static int parse_configuration(struct rt_context *ctx, const char *config, char *reason,
+                               size_t reason_size)
 {
+    static const char *const keys[] = {"threads", "toplevel", "build_threads", "bins",
+                                       "builder"};
+    int seen[5] = {0, 0, 0, 0, 0};
     const char *p = config;
+    int need_item = 0; /* after a comma: an item must follow */
+    int item_number = 0;
     while (p && *p) {
-        while (*p == ' ' || *p == ',' || *p == '\t')
+        while (config_space(*p))
             p++;
         if (!*p)
             break;
+        if (*p == ',')
+            return config_fail(reason, reason_size,
+                               "item %d is empty (a comma with no key=value before it)",
+                               item_number + 1);
         const char *key = p;
-        while (*p && *p != '=' && *p != ' ' && *p != ',')
+        while (*p && *p != '=' && *p != ',' && !config_space(*p))
             p++;
-        if (*p != '=')
-            return -1;
         size_t key_len = (size_t)(p - key);
+        if (*p != '=')
+            return config_fail(reason, reason_size, "'%.*s' is not key=value", (int)key_len,
+                               key);
         const char *value = ++p;
-        while (*p && *p != ' ' && *p != ',' && *p != '\t')
+        while (*p && *p != ',' && !config_space(*p))
             p++;
         size_t value_len = (size_t)(p - value);
-        if (key_is(key, key_len, "threads")) {
-            if (parse_int(value, value_len, 1, API_MAX_THREADS, &ctx->threads))
-                return -1;
-        } else if (key_is(key, key_len, "toplevel")) {
+        item_number++;
+        need_item = 0;
+        int k;
+        for (k = 0; k < 5; k++)
+            if (key_is(key, key_len, keys[k]))
+                break;
+        if (k == 5)
+            return config_fail(reason, reason_size, "unknown key '%.*s'", (int)key_len, key);
+        if (seen[k]++)
+            return config_fail(reason, reason_size, "key '%s' is given twice", keys[k]);
+        int bad = 0, lo = 0, hi = 0;
+        const char *expect = NULL;
+        switch (k) {
+        case 0:
+            lo = 1, hi = API_MAX_THREADS;
+            bad = parse_int(value, value_len, lo, hi, &ctx->threads);
+            break;
+        case 1:
             if (key_is(value, value_len, "binned"))
                 ctx->toplevel_cellsplit = 0;
             else if (key_is(value, value_len, "cellsplit"))
                 ctx->toplevel_cellsplit = 1;
             else
-                return -1;
-        } else if (key_is(key, key_len, "build_threads")) {
-            if (parse_int(value, value_len, 0, API_MAX_THREADS, &ctx->build_threads))
-                return -1;
-        } else if (key_is(key, key_len, "bins")) {
-            if (parse_int(value, value_len, 2, BVH_MAX_BINS, &ctx->build_params.bins))
-                return -1;
-        } else if (key_is(key, key_len, "builder")) {
+                bad = 1, expect = "binned or cellsplit";
+            break;
+        case 2:
+            lo = 0, hi = API_MAX_THREADS;
+            bad = parse_int(value, value_len, lo, hi, &ctx->build_threads);
+            break;
+        case 3:
+            lo = 2, hi = BVH_MAX_BINS;
+            bad = parse_int(value, value_len, lo, hi, &ctx->build_params.bins);
+            break;
+        default:
             if (key_is(value, value_len, "binned"))
                 ctx->build_params.builder = BVH_BUILDER_BINNED_SAH;
             else if (key_is(value, value_len, "sweep"))
                 ctx->build_params.builder = BVH_BUILDER_SWEEP_SAH;
             else
-                return -1;
-        } else {
-            return -1;
+                bad = 1, expect = "binned or sweep";
+            break;
+        }
+        if (bad && expect)
+            return config_fail(reason, reason_size, "%s='%.*s': the value must be %s", keys[k],
+                               (int)value_len, value, expect);
+        if (bad)
+            return config_fail(reason, reason_size,
+                               "%s='%.*s': the value must be a decimal integer in [%d, %d] "
+                               "without sign or leading zero",
+                               keys[k], (int)value_len, value, lo, hi);
+        /* The separator: blanks, or one comma with blanks around it. */
+        while (config_space(*p))
+            p++;
+        if (*p == ',') {
+            p++;
+            need_item = 1;
+            while (config_space(*p))
+                p++;
         }
     }
+    if (need_item)
+        return config_fail(reason, reason_size,
+                           "item %d is empty (a comma with no key=value after it)",
+                           item_number + 1);
     return 0;
 }
 
@@ -135,13 +215,31 @@ static void render_state_init(struct render_state *r)
 
 RTcontext rtCreateContext(const char *configuration)
 {
+    char reason[RT_REASON_SIZE];
+    RTcontext ctx = rtCreateContextWithReason(configuration, (RTsizei)sizeof reason, reason);
+    /* Nothing is stored to read later (no state outside a context): the
+     * reason goes to stderr under TRACELIST_DEBUG, as errors do, and
+     * rtCreateContextWithReason hands it to the caller. */
+    const char *debug = getenv("TRACELIST_DEBUG");
+    if (!ctx && debug && *debug && strcmp(debug, "0") != 0)
+        fprintf(stderr, "tracelist: rtCreateContext: %s\n", reason);
+    return ctx;
+}
+
+RTcontext rtCreateContextWithReason(const char *configuration, RTsizei bufSize, char *reason)
+{
+    size_t reason_size = bufSize > 0 && reason ? (size_t)bufSize : 0;
+    if (reason_size)
+        reason[0] = '\0';
     struct rt_context *ctx = rt_calloc(1, sizeof(*ctx));
-    if (!ctx)
+    if (!ctx) {
+        config_fail(reason, reason_size, "out of memory");
         return NULL;
+    }
     ctx->threads = online_cpus();
     ctx->build_threads = 1; /* paper 000 sec. 6: K set by the application */
     bvh_build_params_default(&ctx->build_params);
-    if (parse_configuration(ctx, configuration)) {
+    if (parse_configuration(ctx, configuration, reason, reason_size)) {
         rt_free(ctx);
         return NULL;
     }

@@ -12,6 +12,8 @@
  * worker threads. */
 static long fail_countdown = -1;
 static long failures;
+/* rt_alloc_fail_once: only the one allocation fails. */
+static int fail_once;
 
 static int injected_failure(void)
 {
@@ -20,6 +22,8 @@ static int injected_failure(void)
         return 0;
     if (n == 0) {
         rt_atomic_add_fetch_relaxed(&failures, 1);
+        if (rt_atomic_load_relaxed(&fail_once))
+            rt_atomic_store_relaxed(&fail_countdown, -1);
         return 1;
     }
     /* Several threads may race on the last unit; the count only needs to
@@ -61,12 +65,20 @@ void rt_free(void *ptr)
 
 void rt_alloc_fail_after(long n)
 {
+    rt_atomic_store_relaxed(&fail_once, 0);
+    rt_atomic_store_relaxed(&fail_countdown, n);
+}
+
+void rt_alloc_fail_once(long n)
+{
+    rt_atomic_store_relaxed(&fail_once, 1);
     rt_atomic_store_relaxed(&fail_countdown, n);
 }
 
 void rt_alloc_fail_reset(void)
 {
     rt_atomic_store_relaxed(&fail_countdown, -1);
+    rt_atomic_store_relaxed(&fail_once, 0);
     rt_atomic_store_relaxed(&failures, 0);
 }
 

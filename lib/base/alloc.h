@@ -24,6 +24,9 @@ void rt_free(void *ptr);
  * single piece of global mutable state outside a context, and only the
  * fault-injection tests touch it. */
 void rt_alloc_fail_after(long n);
+/* Test hook: only the allocation after `n` more successful ones fails; the
+ * ones after it succeed again (a single allocation failure). */
+void rt_alloc_fail_once(long n);
 void rt_alloc_fail_reset(void);
 /* Allocations that failed on purpose since the last reset. */
 long rt_alloc_failures(void);

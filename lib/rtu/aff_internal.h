@@ -42,6 +42,73 @@
 /* Transform block nesting limit (the data nests 15 deep). */
 #define AFF_MAX_BLOCK_DEPTH 256
 
+/*
+ * Resource limits of one load (docs/aff.md, "Files and resource limits").
+ * The per-file counts (checked against the bytes left) and the nesting
+ * limits do not bound the whole: nine 10-line files that each include the
+ * next ten times ask for 10^8 triangles.  So the work is counted per
+ * expansion -- every inclusion of a file counts its bytes and triangles
+ * again -- against budgets derived from the input, the distinct files
+ * read (each counted once, by device and inode):
+ *   bytes read     <= AFF_READ_PER_INPUT x input + AFF_READ_BASE,
+ *                     at most AFF_READ_CAP;
+ *   triangles made <= input / AFF_INPUT_PER_TRIANGLE + AFF_TRIANGLES_BASE,
+ *                     at most AFF_TRIANGLES_CAP,
+ * unless the caller gives a budget (rtuLoadAFFv), which replaces the
+ * derived one.  A parsed triangle takes 96 bytes (struct aff_triangle), so
+ * the parsed geometry of n input bytes stays below 24 n + 6 MiB (twice
+ * that while an array doubles), the spheres of a file of spheres included.
+ */
+#define AFF_DEFAULT_MAX_FILE_BYTES ((uint64_t)256 << 20)
+#define AFF_READ_PER_INPUT 8
+#define AFF_READ_BASE ((uint64_t)1 << 20)
+#define AFF_READ_CAP ((uint64_t)1 << 30)
+#define AFF_INPUT_PER_TRIANGLE 4
+#define AFF_TRIANGLES_BASE 65536
+#define AFF_TRIANGLES_CAP ((uint64_t)1 << 24)
+
+struct aff_limits {
+    uint64_t max_file_bytes; /* size of one file */
+    uint64_t max_read_bytes; /* bytes read in all; 0: derived (above) */
+    uint64_t max_triangles;  /* triangles made in all; 0: derived (above) */
+    int any_directory;       /* includes and textures may lie anywhere */
+    /* Includes from memory instead of the filesystem (the fuzz target's
+     * several files in one input): the text of include `name` and an id
+     * that is the same for the same file, or -1 when there is none.  The
+     * text stays the caller's.  NULL: the filesystem. */
+    int (*include_text)(void *user, const char *name, const char **text, size_t *length,
+                        uint64_t *id);
+    void *include_user;
+};
+
+/* The defaults: 256 MiB per file, derived budgets, the top file's tree. */
+AFF_HIDDEN void aff_limits_default(struct aff_limits *limits);
+
+/* aff_file.c: a file the scene names, open and checked, not yet read. */
+struct aff_file {
+    int fd;
+    uint64_t size, device, inode;
+};
+
+/* realpath of `directory` ("" or NULL: the current directory), malloc'd;
+ * NULL on failure (errno set). */
+AFF_HIDDEN char *aff_file_root(const char *directory);
+
+/* Opens `path` for reading without blocking.  With `root` (a realpath'd
+ * directory) non-NULL the path, links and ".." resolved, must lie inside
+ * it.  It must be a regular file of at most max_bytes bytes.  Returns 0,
+ * or -1 with the reason in `why` (no "file:line: " prefix). */
+AFF_HIDDEN int aff_file_open(const char *path, const char *root, uint64_t max_bytes,
+                             struct aff_file *file, char *why, size_t why_size);
+/* Reads the open file whole (malloc'd, not terminated); NULL with *oom set
+ * when memory ran out, clear on a read error. */
+AFF_HIDDEN char *aff_file_read(struct aff_file *file, size_t *length, int *oom);
+AFF_HIDDEN void aff_file_close(struct aff_file *file);
+/* aff_file_open and aff_file_close: may this file be read? (textures,
+ * which rtuLoadImage then reads.) */
+AFF_HIDDEN int aff_file_check(const char *path, const char *root, uint64_t max_bytes, char *why,
+                              size_t why_size);
+
 /* 'fm' (FORMAT.md sec. 3.2); 'f' is mapped onto it. */
 struct aff_material {
     float ambient[3], diffuse[3], specular[3];
@@ -117,6 +184,8 @@ struct aff_texture {
 
 struct aff_data {
     char *directory; /* of the top file, "" for the current directory */
+    char *root;      /* its realpath: textures must lie below; NULL: anywhere */
+    uint64_t max_file_bytes; /* of the load's limits, for the textures */
 
     /* 'v' (sec. 3.1) */
     int has_view;
@@ -147,18 +216,24 @@ struct aff_data {
     uint64_t static_triangles, animated_triangles, tpa_triangles;
 };
 
-/* Reads the file at path and everything it includes.  On failure returns
- * -1 with "file:line: reason" in error and *data released; never crashes
- * on malformed input. */
-AFF_HIDDEN int aff_parse_file(const char *path, struct aff_data *data, char *error,
-                              size_t error_size);
+/* Reads the file at path and everything it includes, within `limits`
+ * (NULL: the defaults).  On failure returns -1 with "file:line: reason" in
+ * error (line 0: the file as a whole) and *data released; never crashes on
+ * malformed input. */
+AFF_HIDDEN int aff_parse_file(const char *path, const struct aff_limits *limits,
+                              struct aff_data *data, char *error, size_t error_size);
 
 /* The same on a text in memory named `name`; includes are resolved with
  * the filesystem against `directory` (NULL: includes are an error, which
- * is what the fuzz target uses). */
+ * is what the fuzz target uses; textures then resolve against the current
+ * directory and must lie inside it). */
 AFF_HIDDEN int aff_parse_text(const char *name, const char *text, size_t length,
-                              const char *directory, struct aff_data *data, char *error,
-                              size_t error_size);
+                              const char *directory, const struct aff_limits *limits,
+                              struct aff_data *data, char *error, size_t error_size);
+
+/* Bytes the parsed scene holds (its arrays at their capacity), for the
+ * fuzz target's memory-bound property. */
+AFF_HIDDEN uint64_t aff_data_bytes(const struct aff_data *data);
 
 AFF_HIDDEN void aff_data_release(struct aff_data *data);
 

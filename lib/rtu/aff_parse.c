@@ -13,8 +13,11 @@
  *   sec. 3.4 'xs' and 'x' blocks compose as M = X1 X2 ... Xk, X = T R S.
  *
  * Robustness: every count is checked against the bytes left before
- * anything is allocated for it (each operand takes at least two bytes), so
- * a malformed or hostile file fails with "file:line: reason" in bounded
+ * anything is allocated for it (each operand takes at least two bytes),
+ * and the whole load against the budgets of aff_internal.h, the bytes and
+ * triangles of every inclusion counted again, before the memory for them
+ * is allocated; includes are opened under the file policy of aff_file.c.
+ * So a malformed or hostile file fails with "file:line: reason" in bounded
  * memory and time; a fuzz target (conformance/fuzz) runs over this file.
  */
 #include "rtu/aff_internal.h"
@@ -46,14 +49,43 @@ struct block {
     int local_index;
 };
 
+/* A distinct file read, identified by device and inode, and its text
+ * (kept for the whole load: an include read again is not opened again). */
+struct file_entry {
+    uint64_t device, inode;
+    const char *text;
+    size_t length;
+    char *owned; /* the text when read here (NULL: the caller's) */
+};
+
+/* An include name already resolved: the file it names. */
+struct name_entry {
+    char *name;
+    int file;
+};
+
 struct parser {
     struct aff_data *data;
     char *error;
     size_t error_size;
     const char *directory; /* NULL: no includes */
+    const char *root;      /* includes must lie below; NULL: anywhere */
+    const struct aff_limits *limits;
     int include_depth;
-    uint64_t text_bytes;        /* of every file read so far */
-    uint64_t quadric_triangles; /* made by tessellating 's' and 'c' */
+    /* The budgets (aff_internal.h): distinct input, and the work of every
+     * expansion. */
+    uint64_t input_bytes;  /* of the distinct files read */
+    uint64_t read_bytes;   /* of every file read, each inclusion counted */
+    uint64_t triangles;    /* made, each inclusion counted */
+    struct file_entry *files; /* distinct files read so far */
+    int file_count, file_capacity;
+    /* Hash tables (open addressing, -1: empty) of files by identity and of
+     * include names, so that a repeated include costs its parse only (the
+     * fan-out of ten thousand inclusions took seconds of system calls). */
+    int *file_slots, *name_slots;
+    int file_slot_count, name_slot_count;
+    struct name_entry *names;
+    int name_count, name_capacity;
     int detail;
     /* Current state. */
     int material;
@@ -310,6 +342,38 @@ static int intern_local(struct parser *ps, const struct reader *r)
 
 /* ------------------------------------------------------------ geometry */
 
+static uint64_t read_budget(const struct parser *ps)
+{
+    if (ps->limits->max_read_bytes)
+        return ps->limits->max_read_bytes;
+    uint64_t b = AFF_READ_PER_INPUT * ps->input_bytes + AFF_READ_BASE;
+    return b < AFF_READ_CAP ? b : AFF_READ_CAP;
+}
+
+static uint64_t triangle_budget(const struct parser *ps)
+{
+    if (ps->limits->max_triangles)
+        return ps->limits->max_triangles;
+    uint64_t b = ps->input_bytes / AFF_INPUT_PER_TRIANGLE + AFF_TRIANGLES_BASE;
+    return b < AFF_TRIANGLES_CAP ? b : AFF_TRIANGLES_CAP;
+}
+
+/* Counts `count` more triangles against the budget, before anything is
+ * allocated for them.  Tessellation is where a few bytes become many
+ * triangles (a 9-byte 's' is 1024, 96 KiB): a 1 MB file of spheres once
+ * reached 1.6 GB before it was refused. */
+static int take_triangles(struct parser *ps, const struct reader *r, uint64_t count)
+{
+    uint64_t budget = triangle_budget(ps);
+    if (ps->triangles + count > budget)
+        return fail(ps, r,
+                    "the scene makes more than %llu triangles (every inclusion counted; "
+                    "the budget for %llu bytes of input, RTU_AFF_MAX_TRIANGLES raises it)",
+                    (unsigned long long)budget, (unsigned long long)ps->input_bytes);
+    ps->triangles += count;
+    return 0;
+}
+
 static struct aff_group *current_group(struct parser *ps)
 {
     return &ps->data->frames[ps->frame].group;
@@ -321,6 +385,8 @@ static struct aff_group *current_group(struct parser *ps)
 static struct aff_triangle *begin_batch(struct parser *ps, const struct reader *r, uint32_t count,
                                         int texture, int has_uv)
 {
+    if (take_triangles(ps, r, count))
+        return NULL;
     int matrix = intern_local(ps, r);
     if (matrix < 0)
         return NULL;
@@ -436,26 +502,6 @@ static int parse_textured_triangle(struct parser *ps, struct reader *r, int with
 #define QUADRIC_SEGMENTS 32
 #define SPHERE_RINGS 16
 
-/* Tessellation turns a few bytes into many triangles (a 9-byte 's' into
- * 1024, 96 KiB), which the counts checked against the bytes left do not
- * bound: a 64 KiB file of spheres asked for 700 MB and 20 s (found by
- * conformance/fuzz).  So quadric triangles are bounded by the text too:
- * QUADRIC_BASE_TRIANGLES (64 spheres) plus QUADRIC_TRIANGLES_PER_BYTE per
- * byte of every file read (a sphere per 64 bytes).  BART has 8 cones. */
-#define QUADRIC_BASE_TRIANGLES 65536
-#define QUADRIC_TRIANGLES_PER_BYTE 16
-
-static int quadric_budget(struct parser *ps, const struct reader *r, uint32_t count,
-                          const char *what)
-{
-    uint64_t limit = QUADRIC_BASE_TRIANGLES + QUADRIC_TRIANGLES_PER_BYTE * ps->text_bytes;
-    if (ps->quadric_triangles + count > limit)
-        return fail(ps, r, "%s: more than %llu triangles from spheres and cones in %llu bytes",
-                    what, (unsigned long long)limit, (unsigned long long)ps->text_bytes);
-    ps->quadric_triangles += count;
-    return 0;
-}
-
 /* Writes quad (corners 0-1-2-3 with normals) as two triangles, (0,1,2)
  * and (0,2,3), or with `reversed` winding (0,2,1) and (0,3,2); returns
  * the triangle after them. */
@@ -498,8 +544,6 @@ static int parse_cone(struct parser *ps, struct reader *r)
         u[k] /= ul;
     double w[3] = {axis[1] * u[2] - axis[2] * u[1], axis[2] * u[0] - axis[0] * u[2],
                    axis[0] * u[1] - axis[1] * u[0]};
-    if (quadric_budget(ps, r, 2 * QUADRIC_SEGMENTS, "cone"))
-        return -1;
     struct aff_triangle *t = begin_batch(ps, r, 2 * QUADRIC_SEGMENTS, -1, 0);
     if (!t)
         return -1;
@@ -536,8 +580,6 @@ static int parse_sphere(struct parser *ps, struct reader *r)
     double rad = fabs((double)v[3]);
     if (!(rad > 0.0))
         return fail(ps, r, "sphere: radius is zero");
-    if (quadric_budget(ps, r, 2 * QUADRIC_SEGMENTS * SPHERE_RINGS, "sphere"))
-        return -1;
     struct aff_triangle *t = begin_batch(ps, r, 2 * QUADRIC_SEGMENTS * SPHERE_RINGS, -1, 0);
     if (!t)
         return -1;
@@ -666,7 +708,7 @@ done:
 static int parse_tpa(struct parser *ps, struct reader *r)
 {
     long n;
-    if (read_count(ps, r, 1, 19, &n, "tpa key count"))
+    if (read_count(ps, r, 1, 19, &n, "tpa key count") || take_triangles(ps, r, 1))
         return -1;
     struct aff_tpa_key *keys = malloc((size_t)n * sizeof *keys);
     if (!keys)
@@ -983,40 +1025,182 @@ static int parse_light(struct parser *ps, struct reader *r, int named)
     return 0;
 }
 
-/* Reads all of f.  Returns the text (malloc'd, not terminated) and its
- * length, or NULL with *oom set on allocation failure, clear on a read
- * error.  Does not close f. */
-static char *read_stream(FILE *f, size_t *length, int *oom)
+static int parse_reader(struct parser *ps, struct reader *r);
+
+static uint64_t hash_bytes(const void *data, size_t n, uint64_t h)
 {
-    char *text = NULL;
-    size_t len = 0, cap = 0;
-    *oom = 0;
-    for (;;) {
-        if (len + 65536 > cap) {
-            size_t ncap = cap ? cap * 2 : 131072;
-            char *nt = realloc(text, ncap);
-            if (!nt) {
-                free(text);
-                *oom = 1;
-                return NULL;
-            }
-            text = nt;
-            cap = ncap;
-        }
-        size_t got = fread(text + len, 1, cap - len, f);
-        len += got;
-        if (got == 0)
-            break;
-    }
-    if (ferror(f)) {
-        free(text);
-        return NULL;
-    }
-    *length = len;
-    return text;
+    const unsigned char *p = data;
+    for (size_t i = 0; i < n; i++)
+        h = (h ^ p[i]) * 1099511628211u; /* FNV-1a */
+    return h;
 }
 
-static int parse_reader(struct parser *ps, struct reader *r);
+static uint64_t file_hash(uint64_t device, uint64_t inode)
+{
+    uint64_t h = hash_bytes(&device, sizeof device, 14695981039346656037u);
+    return hash_bytes(&inode, sizeof inode, h);
+}
+
+static uint64_t name_hash(const char *name)
+{
+    return hash_bytes(name, strlen(name), 14695981039346656037u);
+}
+
+/* Slot of the entry `key` matches in table, or of the empty slot where it
+ * would go. */
+static int find_file_slot(const struct parser *ps, uint64_t device, uint64_t inode)
+{
+    int mask = ps->file_slot_count - 1;
+    for (int k = (int)(file_hash(device, inode) & (uint64_t)mask);; k = (k + 1) & mask) {
+        int e = ps->file_slots[k];
+        if (e < 0 || (ps->files[e].device == device && ps->files[e].inode == inode))
+            return k;
+    }
+}
+
+static int find_name_slot(const struct parser *ps, const char *name)
+{
+    int mask = ps->name_slot_count - 1;
+    for (int k = (int)(name_hash(name) & (uint64_t)mask);; k = (k + 1) & mask) {
+        int e = ps->name_slots[k];
+        if (e < 0 || strcmp(ps->names[e].name, name) == 0)
+            return k;
+    }
+}
+
+/* Keeps a table at most half full for `count` entries; rehashes. */
+static int reserve_slots(struct parser *ps, int **slots, int *slot_count, int count, int names)
+{
+    if (2 * count < *slot_count)
+        return 0;
+    if (count > (1 << 26))
+        return -1;
+    int n = *slot_count ? 2 * *slot_count : 64;
+    while (2 * count >= n)
+        n *= 2;
+    int *fresh = malloc((size_t)n * sizeof *fresh);
+    if (!fresh)
+        return -1;
+    for (int k = 0; k < n; k++)
+        fresh[k] = -1;
+    int *old = *slots;
+    int old_count = *slot_count;
+    *slots = fresh;
+    *slot_count = n;
+    for (int k = 0; k < old_count; k++)
+        if (old[k] >= 0) {
+            int e = old[k];
+            int at = names ? find_name_slot(ps, ps->names[e].name)
+                           : find_file_slot(ps, ps->files[e].device, ps->files[e].inode);
+            fresh[at] = e;
+        }
+    free(old);
+    return 0;
+}
+
+/* The distinct file with f's identity, added (its size to the input) when
+ * new; -1 when memory ran out.  *added tells which. */
+static int intern_file(struct parser *ps, const struct aff_file *f, int *added)
+{
+    *added = 0;
+    if (reserve_slots(ps, &ps->file_slots, &ps->file_slot_count, ps->file_count + 1, 0) ||
+        grow((void **)&ps->files, &ps->file_capacity, ps->file_count + 1, sizeof *ps->files))
+        return -1;
+    int slot = find_file_slot(ps, f->device, f->inode);
+    if (ps->file_slots[slot] >= 0)
+        return ps->file_slots[slot];
+    struct file_entry *e = &ps->files[ps->file_count];
+    memset(e, 0, sizeof *e);
+    e->device = f->device;
+    e->inode = f->inode;
+    ps->file_slots[slot] = ps->file_count;
+    ps->input_bytes += f->size;
+    *added = 1;
+    return ps->file_count++;
+}
+
+/* Counts one more reading of `size` bytes against the read budget. */
+static int take_read(struct parser *ps, const struct reader *r, uint64_t size, const char *name)
+{
+    uint64_t budget = read_budget(ps);
+    if (ps->read_bytes + size > budget)
+        return fail(ps, r,
+                    "include '%s': the scene reads more than %llu bytes (every inclusion "
+                    "counted; the budget for %llu bytes of input, RTU_AFF_MAX_READ_MIB "
+                    "raises it)",
+                    name, (unsigned long long)budget, (unsigned long long)ps->input_bytes);
+    ps->read_bytes += size;
+    return 0;
+}
+
+/* The text of include `name`: from the names already resolved, else
+ * opened under the file policy (aff_file.c) and counted as input when it
+ * is a file not read before.  Returns the file's index, or -1 after
+ * recording the failure. */
+static int include_file(struct parser *ps, const struct reader *r, const char *name)
+{
+    if (reserve_slots(ps, &ps->name_slots, &ps->name_slot_count, ps->name_count + 1, 1) ||
+        grow((void **)&ps->names, &ps->name_capacity, ps->name_count + 1, sizeof *ps->names))
+        return out_of_memory(ps, r);
+    int slot = find_name_slot(ps, name);
+    if (ps->name_slots[slot] >= 0)
+        return ps->names[ps->name_slots[slot]].file;
+    struct aff_file f = {-1, 0, UINT64_MAX, 0};
+    const char *text = NULL;
+    char *owned = NULL;
+    size_t len = 0;
+    if (ps->limits->include_text) {
+        if (ps->limits->include_text(ps->limits->include_user, name, &text, &len, &f.inode))
+            return fail(ps, r, "include '%s': no such file", name);
+        f.size = len;
+    } else {
+        size_t n = strlen(ps->directory) + strlen(name) + 2;
+        char *path = malloc(n);
+        if (!path)
+            return out_of_memory(ps, r);
+        snprintf(path, n, "%s%s%s", ps->directory, ps->directory[0] ? "/" : "", name);
+        char why[AFF_ERROR_SIZE];
+        int rc = aff_file_open(path, ps->root, ps->limits->max_file_bytes, &f, why, sizeof why);
+        free(path);
+        if (rc)
+            return fail(ps, r, "include '%s': %s", name, why);
+    }
+    char *name_copy = dup_string(name);
+    int added;
+    int file = name_copy ? intern_file(ps, &f, &added) : -1;
+    if (file < 0) {
+        free(name_copy);
+        aff_file_close(&f);
+        return out_of_memory(ps, r);
+    }
+    if (added && !text) {
+        /* Checked against the budget before it is read. */
+        if (ps->read_bytes + f.size > read_budget(ps)) {
+            free(name_copy);
+            aff_file_close(&f);
+            take_read(ps, r, f.size, name);
+            return -1;
+        }
+        int oom;
+        owned = aff_file_read(&f, &len, &oom);
+        if (!owned) {
+            free(name_copy);
+            aff_file_close(&f);
+            return oom ? out_of_memory(ps, r) : fail(ps, r, "include '%s': read error", name);
+        }
+        text = owned;
+    }
+    aff_file_close(&f);
+    if (added) {
+        ps->files[file].text = text;
+        ps->files[file].length = len;
+        ps->files[file].owned = owned;
+    }
+    ps->names[ps->name_count].name = name_copy;
+    ps->names[ps->name_count].file = file;
+    ps->name_slots[slot] = ps->name_count++;
+    return file;
+}
 
 /* 'i detail file': read the file as if inserted here (sec. 3.1). */
 static int parse_include(struct parser *ps, struct reader *r)
@@ -1028,34 +1212,21 @@ static int parse_include(struct parser *ps, struct reader *r)
         return -1;
     if (detail > ps->detail)
         return 0;
-    if (!ps->directory)
+    if (!ps->directory && !ps->limits->include_text)
         return fail(ps, r, "include '%s': includes are not available here", name);
     if (ps->include_depth >= AFF_MAX_INCLUDE_DEPTH)
         return fail(ps, r, "include '%s': nested deeper than %d files (a cycle?)", name,
                     AFF_MAX_INCLUDE_DEPTH);
-    size_t n = strlen(ps->directory) + strlen(name) + 2;
-    char *path = malloc(n);
-    if (!path)
-        return out_of_memory(ps, r);
-    snprintf(path, n, "%s%s%s", ps->directory, ps->directory[0] ? "/" : "", name);
-    FILE *f = fopen(path, "rb");
-    free(path);
-    if (!f)
-        return fail(ps, r, "include '%s': %s", name, strerror(errno));
-    size_t len = 0;
-    int oom;
-    char *text = read_stream(f, &len, &oom);
-    fclose(f);
-    if (!text)
-        return oom ? out_of_memory(ps, r) : fail(ps, r, "include '%s': read error", name);
-    struct reader sub = {name, text, len, 0, 1};
-    ps->text_bytes += len;
+    int file = include_file(ps, r, name);
+    if (file < 0)
+        return -1;
+    const struct file_entry *e = &ps->files[file];
+    if (take_read(ps, r, e->length, name))
+        return -1;
+    struct reader sub = {name, e->text, e->length, 0, 1};
     ps->include_depth++;
     int rc = parse_reader(ps, &sub);
     ps->include_depth--;
-    free(text);
-    if (rc == 0 && ps->block_count < 0)
-        rc = -1;
     return rc;
 }
 
@@ -1247,6 +1418,7 @@ static void resolve(struct aff_data *d)
 void aff_data_release(struct aff_data *d)
 {
     free(d->directory);
+    free(d->root);
     free(d->materials);
     for (int i = 0; i < d->texture_count; i++) {
         free(d->textures[i].name);
@@ -1273,34 +1445,86 @@ void aff_data_release(struct aff_data *d)
     memset(d, 0, sizeof *d);
 }
 
-int aff_parse_text(const char *name, const char *text, size_t length, const char *directory,
-                   struct aff_data *data, char *error, size_t error_size)
+/* aff_parse_text with the identity of the top file (NULL: a text in
+ * memory), which counts once among the distinct files. */
+static int parse_top(const char *name, const char *text, size_t length, const char *directory,
+                     const struct aff_limits *limits, const struct aff_file *top,
+                     struct aff_data *data, char *error, size_t error_size)
 {
     struct parser ps;
+    struct aff_limits defaults;
+    if (!limits) {
+        aff_limits_default(&defaults);
+        limits = &defaults;
+    }
     memset(&ps, 0, sizeof ps);
     memset(data, 0, sizeof *data);
     ps.data = data;
     ps.error = error;
     ps.error_size = error_size;
     ps.directory = directory;
+    ps.limits = limits;
     ps.material = -1;
     aff_matrix_identity(ps.local);
     ps.local_index = -1;
     if (error_size)
         error[0] = '\0';
+    data->max_file_bytes = limits->max_file_bytes;
     data->directory = dup_string(directory ? directory : "");
     data->frames = calloc(1, sizeof *data->frames);
     if (!data->directory || !data->frames) {
         aff_data_release(data);
-        return fail(&ps, NULL, "%s: out of memory", name);
+        return fail(&ps, NULL, "%s:0: out of memory", name);
+    }
+    /* Includes and textures stay inside the top file's tree (with no
+     * directory: textures inside the current one). */
+    if (!limits->any_directory) {
+        data->root = aff_file_root(data->directory);
+        if (!data->root) {
+            int e = errno;
+            aff_data_release(data);
+            return fail(&ps, NULL, "%s:0: directory '%s': %s", name,
+                        directory && directory[0] ? directory : ".",
+                        e == ENOMEM ? "out of memory" : strerror(e));
+        }
+        ps.root = data->root;
     }
     data->frames[0].parent = -1;
     data->frames[0].animation = -1;
     data->frame_count_nodes = data->frame_capacity = 1;
     struct reader r = {name, text, length, 0, 1};
-    ps.text_bytes = length;
-    int rc = parse_reader(&ps, &r);
+    int rc = 0;
+    ps.read_bytes = length;
+    if (top) {
+        /* Identified like an include, so including it again is no new
+         * input; its text is the caller's. */
+        struct aff_file f = *top;
+        int added;
+        f.size = length;
+        int file = intern_file(&ps, &f, &added);
+        if (file < 0) {
+            rc = fail(&ps, NULL, "%s:0: out of memory", name);
+        } else {
+            ps.files[file].text = text;
+            ps.files[file].length = length;
+        }
+    } else {
+        ps.input_bytes = length;
+    }
+    if (rc == 0 && ps.read_bytes > read_budget(&ps))
+        rc = fail(&ps, NULL, "%s:0: %llu bytes, more than the read budget of %llu", name,
+                  (unsigned long long)length, (unsigned long long)read_budget(&ps));
+    if (rc == 0)
+        rc = parse_reader(&ps, &r);
     free(ps.blocks);
+    for (int i = 0; i < ps.file_count; i++)
+        free(ps.files[i].owned);
+    free(ps.files);
+    for (int i = 0; i < ps.name_count; i++)
+        free(ps.names[i].name);
+    free(ps.names);
+    free(ps.file_slots);
+    free(ps.name_slots);
     if (rc) {
         aff_data_release(data);
         return -1;
@@ -1309,15 +1533,28 @@ int aff_parse_text(const char *name, const char *text, size_t length, const char
     return 0;
 }
 
-int aff_parse_file(const char *path, struct aff_data *data, char *error, size_t error_size)
+int aff_parse_text(const char *name, const char *text, size_t length, const char *directory,
+                   const struct aff_limits *limits, struct aff_data *data, char *error,
+                   size_t error_size)
 {
+    return parse_top(name, text, length, directory, limits, NULL, data, error, error_size);
+}
+
+int aff_parse_file(const char *path, const struct aff_limits *limits, struct aff_data *data,
+                   char *error, size_t error_size)
+{
+    struct aff_limits defaults;
+    if (!limits) {
+        aff_limits_default(&defaults);
+        limits = &defaults;
+    }
     memset(data, 0, sizeof *data);
     const char *slash = strrchr(path, '/');
     const char *base = slash ? slash + 1 : path;
     size_t dir_len = slash ? (size_t)(slash - path) : 0;
     char *dir = malloc(dir_len + 2);
     if (!dir) {
-        snprintf(error, error_size, "%s: out of memory", path);
+        snprintf(error, error_size, "%s:0: out of memory", path);
         return -1;
     }
     if (slash && dir_len == 0) /* "/scene.aff" */
@@ -1326,26 +1563,55 @@ int aff_parse_file(const char *path, struct aff_data *data, char *error, size_t 
         memcpy(dir, path, dir_len);
         dir[dir_len] = '\0';
     }
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        snprintf(error, error_size, "%s: %s", path, strerror(errno));
+    /* The top file is the caller's choice (no directory rule), but it is
+     * opened like an include: a regular file within the size limit. */
+    struct aff_file f;
+    char why[AFF_ERROR_SIZE];
+    if (aff_file_open(path, NULL, limits->max_file_bytes, &f, why, sizeof why)) {
+        snprintf(error, error_size, "%s:0: %s", path, why);
         free(dir);
         return -1;
     }
     size_t len = 0;
     int oom;
-    char *text = read_stream(f, &len, &oom);
-    fclose(f);
+    char *text = aff_file_read(&f, &len, &oom);
+    aff_file_close(&f);
     int rc;
     if (!text) {
-        snprintf(error, error_size, "%s: %s", path, oom ? "out of memory" : "read error");
+        snprintf(error, error_size, "%s:0: %s", path, oom ? "out of memory" : "read error");
         rc = -1;
     } else {
-        rc = aff_parse_text(base, text, len, dir, data, error, error_size);
+        f.size = len;
+        rc = parse_top(base, text, len, dir, limits, &f, data, error, error_size);
     }
     free(text);
     free(dir);
     return rc;
+}
+
+uint64_t aff_data_bytes(const struct aff_data *d)
+{
+    uint64_t n = (uint64_t)d->material_capacity * sizeof *d->materials +
+                 (uint64_t)d->texture_capacity * sizeof *d->textures +
+                 (uint64_t)d->matrix_capacity * sizeof *d->matrices +
+                 (uint64_t)d->frame_capacity * sizeof *d->frames +
+                 (uint64_t)d->animation_capacity * sizeof *d->animations +
+                 (uint64_t)d->light_capacity * sizeof *d->lights;
+    for (int f = 0; f < d->frame_count_nodes; f++) {
+        const struct aff_group *g = &d->frames[f].group;
+        n += (uint64_t)g->tri_capacity * sizeof *g->tris +
+             (uint64_t)g->batch_capacity * sizeof *g->batches +
+             (uint64_t)g->tpa_capacity * sizeof *g->tpas;
+        for (uint32_t k = 0; k < g->tpa_count; k++)
+            n += (uint64_t)g->tpas[k].key_count * sizeof *g->tpas[k].keys;
+    }
+    for (int a = 0; a < d->animation_count; a++) {
+        const struct aff_animation *an = &d->animations[a];
+        n += (uint64_t)(an->transl.key_count + an->rot.key_count + an->scale.key_count) *
+             sizeof(struct aff_key) * 2;
+        n += (uint64_t)an->visibility.key_count * (sizeof(double) + sizeof(int));
+    }
+    return n;
 }
 
 /* ------------------------------------------------------------ evaluation */

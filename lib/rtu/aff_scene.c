@@ -271,6 +271,13 @@ static int load_texture(RTUaffscene *s, int i)
 {
     const struct aff_texture *tex = &s->data.textures[i];
     RTsizei w, h;
+    /* The file policy of includes holds for textures too (aff_file.c):
+     * rtuLoadImage would block on a FIFO and read any file it is given. */
+    char why[AFF_ERROR_SIZE];
+    if (aff_file_check(tex->path, s->data.root, s->data.max_file_bytes, why, sizeof why)) {
+        set_error("%s: texture '%s': %s", tex->where, tex->name, why);
+        return -1;
+    }
     unsigned char *pixels = rtuLoadImage(tex->path, &w, &h, RT_UNSIGNED_BYTE);
     if (!pixels) {
         set_error("%s: texture '%s': %s", tex->where, tex->name, rtuImageError());
@@ -312,6 +319,50 @@ static RTuint new_object(void)
 
 RTUaffscene *rtuLoadAFF(const char *path)
 {
+    return rtuLoadAFFv(path, NULL);
+}
+
+/* The attribute list of rtuLoadAFFv into limits; 0, or -1 with the
+ * reason set. */
+static int read_attributes(const RTint *attribs, struct aff_limits *limits)
+{
+    aff_limits_default(limits);
+    for (int i = 0; attribs && attribs[i] != 0; i += 2) {
+        RTint v = attribs[i + 1];
+        switch (attribs[i]) {
+        case RTU_AFF_MAX_TRIANGLES:
+            if (v < 1)
+                break;
+            limits->max_triangles = (uint64_t)v;
+            continue;
+        case RTU_AFF_MAX_READ_MIB:
+            if (v < 1)
+                break;
+            limits->max_read_bytes = (uint64_t)v << 20;
+            continue;
+        case RTU_AFF_MAX_FILE_MIB:
+            if (v < 1)
+                break;
+            limits->max_file_bytes = (uint64_t)v << 20;
+            continue;
+        case RTU_AFF_ANY_DIRECTORY:
+            if (v != RT_TRUE && v != RT_FALSE)
+                break;
+            limits->any_directory = v == RT_TRUE;
+            continue;
+        default:
+            set_error("rtuLoadAFFv: unknown attribute 0x%x", (unsigned)attribs[i]);
+            return -1;
+        }
+        set_error("rtuLoadAFFv: attribute 0x%x: value %d is out of range", (unsigned)attribs[i],
+                  v);
+        return -1;
+    }
+    return 0;
+}
+
+RTUaffscene *rtuLoadAFFv(const char *path, const RTint *attribs)
+{
     aff_error[0] = '\0';
     if (!path) {
         set_error("rtuLoadAFF: path is NULL");
@@ -321,8 +372,11 @@ RTUaffscene *rtuLoadAFF(const char *path)
         set_error("rtuLoadAFF(%s): no current context", path);
         return NULL;
     }
+    struct aff_limits limits;
+    if (read_attributes(attribs, &limits))
+        return NULL;
     struct aff_data data;
-    if (aff_parse_file(path, &data, aff_error, sizeof aff_error))
+    if (aff_parse_file(path, &limits, &data, aff_error, sizeof aff_error))
         return NULL;
     return aff_scene_create(&data, path);
 }
@@ -337,7 +391,8 @@ RTUaffscene *aff_scene_create(struct aff_data *data, const char *name)
     }
     RTUaffscene *s = calloc(1, sizeof *s);
     if (!s) {
-        set_error("rtuLoadAFF(%s): out of memory", name);
+        /* Line 0: the file as a whole (docs/aff.md). */
+        set_error("%s:0: out of memory while recording the scene", name);
         aff_data_release(data);
         return NULL;
     }
@@ -361,7 +416,7 @@ RTUaffscene *aff_scene_create(struct aff_data *data, const char *name)
     if (!s->objects || !s->tpa_objects || !s->textures || !s->cache || !s->state ||
         !s->tpa_positions || !s->tpa_normals) {
         scene_free(s);
-        set_error("rtuLoadAFF(%s): out of memory", name);
+        set_error("%s:0: out of memory while recording the scene", name);
         return NULL;
     }
 
@@ -371,8 +426,7 @@ RTUaffscene *aff_scene_create(struct aff_data *data, const char *name)
     struct saved_state sv;
     if (!save_state(&sv)) {
         scene_free(s);
-        set_error("rtuLoadAFF(%s): the modelview stack is full; the loader needs one level",
-                  name);
+        set_error("%s:0: the modelview stack is full; the loader needs one level", name);
         return NULL;
     }
     int ok = 1;
@@ -397,9 +451,9 @@ RTUaffscene *aff_scene_create(struct aff_data *data, const char *name)
     if (ok) {
         RTenum e = rtGetError();
         if (e != RT_NO_ERROR) {
-            set_error("%s: the Tracelist API recorded error 0x%04x while the scene was "
+            set_error("%s:0: the Tracelist API recorded error 0x%04x%s while the scene was "
                       "recorded",
-                      name, e);
+                      name, e, e == RT_OUT_OF_MEMORY ? " (out of memory)" : "");
             ok = 0;
         }
     }
