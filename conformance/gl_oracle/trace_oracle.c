@@ -13,6 +13,10 @@
  * the dynamic linker's search) and are recorded instead of drawn.  No GL
  * or Tracelist context is involved.
  *
+ * The GLUT shapes that GLU does not draw (cube, torus, teapot, regular
+ * solids) are checked for their normals instead: unit, outward, and (for
+ * the flat-faced solids) with counter-clockwise faces.
+ *
  * The cases cover every normal mode, both orientations, with and without
  * texture coordinates, the slice clamp (GLU's 240-entry tables), the
  * smallest tessellations and GLU's treatment of sweep angles.  Spheres
@@ -28,6 +32,7 @@
 
 #include "glut_gl.h"
 
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -86,6 +91,8 @@ EXPORT void rtEnd(void) { record(&rt_trace, EV_END, 0, 0, 0); }
 EXPORT void rtNormal3f(RTfloat x, RTfloat y, RTfloat z) { record(&rt_trace, EV_NORMAL, x, y, z); }
 EXPORT void rtTexCoord2f(RTfloat s, RTfloat t) { record(&rt_trace, EV_TEXCOORD, s, t, 0); }
 EXPORT void rtVertex3f(RTfloat x, RTfloat y, RTfloat z) { record(&rt_trace, EV_VERTEX, x, y, z); }
+EXPORT void rtNormal3fv(const RTfloat *v) { record(&rt_trace, EV_NORMAL, v[0], v[1], v[2]); }
+EXPORT void rtVertex3fv(const RTfloat *v) { record(&rt_trace, EV_VERTEX, v[0], v[1], v[2]); }
 
 /* ---- comparison ----------------------------------------------------------- */
 
@@ -127,6 +134,126 @@ static void compare(const char *what)
         print_event("GLU", &gl_trace.events[i]);
     if (i < rt_trace.count)
         print_event("rtu", &rt_trace.events[i]);
+    gl_trace.count = rt_trace.count = 0;
+}
+
+/* ---- GLUT shapes without a GLU counterpart: their normals ---------------- */
+
+static void event_floats(const struct event *e, float v[3])
+{
+    memcpy(v, e->bits, 3 * sizeof(float));
+}
+
+/*
+ * Checks the polyhedra rtu just emitted (rt_trace): every face's normal is
+ * a unit vector pointing away from the origin, and the face's vertices
+ * wind counter-clockwise about it (the first triangle of each primitive).
+ */
+static void check_polyhedron(const char *what)
+{
+    int i, bad = 0, faces = 0;
+    float n[3] = {0, 0, 0};
+    for (i = 0; i < rt_trace.count; i++) {
+        const struct event *e = &rt_trace.events[i];
+        if (e->type == EV_NORMAL)
+            event_floats(e, n);
+        if (e->type == EV_BEGIN && i + 4 < rt_trace.count) {
+            float a[3], b[3], c[3], g[3];
+            double len, out, wind;
+            int k = i + 1;
+            while (k < rt_trace.count && rt_trace.events[k].type == EV_NORMAL)
+                event_floats(&rt_trace.events[k++], n);
+            if (k + 2 >= rt_trace.count)
+                break;
+            event_floats(&rt_trace.events[k], a);
+            event_floats(&rt_trace.events[k + 1], b);
+            event_floats(&rt_trace.events[k + 2], c);
+            g[0] = (b[1] - a[1]) * (c[2] - a[2]) - (b[2] - a[2]) * (c[1] - a[1]);
+            g[1] = (b[2] - a[2]) * (c[0] - a[0]) - (b[0] - a[0]) * (c[2] - a[2]);
+            g[2] = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+            len = sqrt((double)n[0] * n[0] + (double)n[1] * n[1] + (double)n[2] * n[2]);
+            out = n[0] * a[0] + n[1] * a[1] + n[2] * a[2];
+            wind = n[0] * g[0] + n[1] * g[1] + n[2] * g[2];
+            faces++;
+            if (fabs(len - 1.0) > 1e-6 || !(out > 0) || !(wind > 0))
+                bad++;
+        }
+    }
+    cases++;
+    if (bad || faces == 0) {
+        failures++;
+        fprintf(stderr, "%s: %d of %d faces with a bad normal or winding\n", what, bad, faces);
+    }
+    gl_trace.count = rt_trace.count = 0;
+}
+
+/* Smooth shapes: the normal given before each vertex must be a unit vector
+ * and point along `expected(vertex)` (dot product above 0.99 for the torus,
+ * above 0 for the teapot, whose normal is not radial). */
+static void check_torus(const char *what, double tube, double ring)
+{
+    int i, bad = 0, vertices = 0;
+    float n[3] = {0, 0, 0};
+    for (i = 0; i < rt_trace.count; i++) {
+        const struct event *e = &rt_trace.events[i];
+        if (e->type == EV_NORMAL)
+            event_floats(e, n);
+        if (e->type == EV_VERTEX) {
+            float v[3];
+            double r, c[3], d[3], dl, dot;
+            event_floats(e, v);
+            r = sqrt((double)v[0] * v[0] + (double)v[1] * v[1]);
+            /* The tube's centre line is the circle of radius `ring` in z = 0. */
+            c[0] = v[0] * ring / r;
+            c[1] = v[1] * ring / r;
+            c[2] = 0.0;
+            d[0] = v[0] - c[0];
+            d[1] = v[1] - c[1];
+            d[2] = v[2] - c[2];
+            dl = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+            dot = (n[0] * d[0] + n[1] * d[1] + n[2] * d[2]) / dl;
+            vertices++;
+            bad += !(dot > 0.99999) || fabs(dl - tube) > 1e-5;
+        }
+    }
+    cases++;
+    if (bad || vertices == 0) {
+        failures++;
+        fprintf(stderr, "%s: %d of %d vertices off the tube or with a bad normal\n", what, bad,
+                vertices);
+    }
+    gl_trace.count = rt_trace.count = 0;
+}
+
+/* The teapot's body (radius below `size`, away from the handle and spout in
+ * the x-y plane of the data, i.e. |z| large here): normals point outwards. */
+static void check_teapot(const char *what, double size)
+{
+    int i, bad = 0, body = 0, zero = 0;
+    float n[3] = {0, 0, 0};
+    for (i = 0; i < rt_trace.count; i++) {
+        const struct event *e = &rt_trace.events[i];
+        if (e->type == EV_NORMAL)
+            event_floats(e, n);
+        if (e->type == EV_VERTEX) {
+            float v[3];
+            double r;
+            event_floats(e, v);
+            zero += n[0] == 0.0f && n[1] == 0.0f && n[2] == 0.0f;
+            r = sqrt((double)v[0] * v[0] + (double)v[2] * v[2]);
+            if (r > 0.7 * size && r < 1.001 * size && fabs(v[1]) < 0.6 * size &&
+                fabs(v[2]) > 0.7 * size) {
+                body++;
+                bad += !(n[0] * v[0] + n[2] * v[2] > 0);
+            }
+        }
+    }
+    cases++;
+    if (bad || zero || body < 100) {
+        failures++;
+        fprintf(stderr, "%s: %d of %d body normals inward, %d zero normals\n", what, bad, body,
+                zero);
+    }
     gl_trace.count = rt_trace.count = 0;
 }
 
@@ -214,6 +341,22 @@ int main(void)
     oracle_glutSolidCone(1.0, 2.0, 9, 3);
     rtuSolidCone(1.0, 2.0, 9, 3);
     compare("glutSolidCone(1, 2, 9, 3)");
+
+    /* The other GLUT shapes: their normals and winding. */
+    rtuSolidCube(1.5);
+    check_polyhedron("rtuSolidCube");
+    rtuSolidTetrahedron();
+    check_polyhedron("rtuSolidTetrahedron");
+    rtuSolidOctahedron();
+    check_polyhedron("rtuSolidOctahedron");
+    rtuSolidDodecahedron();
+    check_polyhedron("rtuSolidDodecahedron");
+    rtuSolidIcosahedron();
+    check_polyhedron("rtuSolidIcosahedron");
+    rtuSolidTorus(0.3, 1.2, 9, 14);
+    check_torus("rtuSolidTorus", 0.3, 1.2);
+    rtuSolidTeapot(1.5);
+    check_teapot("rtuSolidTeapot", 1.5);
 
     gluDeleteQuadric(gq);
     rtuDeleteQuadric(rq);

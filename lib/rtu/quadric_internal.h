@@ -44,8 +44,7 @@ void rtu_quadric_defaults(struct rtu_quadric *q);
  */
 int rtu_quadric_drawable(const struct rtu_quadric *q, int values_ok);
 
-/* The drawing functions without the public checks (the GLUT shapes call
- * them with their own quadric). */
+/* The drawing functions, after the public entry points' checks. */
 void rtu_sphere_fill(const struct rtu_quadric *q, double radius, int slices, int stacks);
 void rtu_cylinder_fill(const struct rtu_quadric *q, double base_radius, double top_radius,
                        double height, int slices, int stacks);
