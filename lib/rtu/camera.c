@@ -26,8 +26,6 @@
 #include <rt/rt.h>
 #include <rt/rtu.h>
 
-#include "report.h"
-
 #include <math.h>
 
 /*
@@ -38,11 +36,14 @@
  */
 #define RTU_LOOKAT_MIN_SINE 1e-12
 
-/* Makes the core record RT_INVALID_VALUE for an invalid rtu call (through
- * rtMultMatrixd with NaNs, report.c). */
+/* Makes the core record RT_INVALID_VALUE for an invalid rtu call. */
 static void record_invalid_value(void)
 {
-    rtu_record_error(RT_INVALID_VALUE);
+    RTdouble m[16];
+    int i;
+    for (i = 0; i < 16; i++)
+        m[i] = NAN;
+    rtMultMatrixd(m);
 }
 
 /*
