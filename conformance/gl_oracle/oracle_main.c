@@ -93,6 +93,41 @@ static void compare(const struct oracle_scene *scene, const unsigned char *gl,
     c->match_percent = 100.0 * (double)(PIXELS - mismatched) / (double)PIXELS;
 }
 
+/*
+ * The colour comparison is off in every scene today; this checks that it
+ * works for when it is switched on: on one rendered image against itself
+ * (all match) and against a copy with the covered pixels' red channel
+ * moved by tolerance + 1 (every covered pixel a colour mismatch) and by
+ * the tolerance itself (none).  Returns 1 when it behaves.
+ */
+static int colour_comparison_works(const unsigned char *image, unsigned char *copy,
+                                   unsigned char *diff)
+{
+    struct oracle_scene scene = {"self", "colour", NULL, NULL, NULL, 3};
+    struct comparison c;
+    size_t i, covered_pixels = 0;
+    int ok;
+    compare(&scene, image, image, diff, &c);
+    ok = c.match_percent == 100.0 && c.colour_off == 0;
+    for (i = 0; i < PIXELS; i++) {
+        memcpy(copy + 4 * i, image + 4 * i, 4);
+        if (covered(image + 4 * i)) {
+            covered_pixels++;
+            copy[4 * i] = (unsigned char)(image[4 * i] > 128 ? image[4 * i] - 4 : image[4 * i] + 4);
+        }
+    }
+    compare(&scene, image, copy, diff, &c);
+    ok &= c.colour_off == covered_pixels && covered_pixels > 0;
+    for (i = 0; i < PIXELS; i++)
+        if (covered(image + 4 * i))
+            copy[4 * i] = (unsigned char)(image[4 * i] > 128 ? image[4 * i] - 3 : image[4 * i] + 3);
+    compare(&scene, image, copy, diff, &c);
+    ok &= c.colour_off == 0;
+    if (!ok)
+        fprintf(stderr, "gl_oracle: the colour comparison does not work\n");
+    return ok;
+}
+
 /* Copies an RGBA8 image (rows bottom to top) into a larger one at (x, y)
  * from its top-left corner. */
 static void blit(unsigned char *dst, int dst_w, int dst_h, int x, int y,
@@ -184,6 +219,9 @@ int main(int argc, char **argv)
             failures++;
             continue;
         }
+        /* (Before this scene's comparison: it uses diff as scratch.) */
+        if (i == 0 && !colour_comparison_works(rt, triptych, diff))
+            failures++;
         compare(scene, gl, rt, diff, &c);
         printf("%-36s %9.3f %8zu %8zu %7zu %7zu%s\n", label, c.match_percent, c.gl_covered,
                c.rt_covered, c.gl_only, c.rt_only,
