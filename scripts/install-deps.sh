@@ -12,6 +12,7 @@ packages=(
   xvfb xauth                                  # window tests without a display
   gnuplot-nox                                 # rtbench: PNG plots
   clang libclang-rt-dev                       # test.sh fuzz suite: libFuzzer runtime
+  libosmesa6-dev libglu1-mesa-dev             # tests: the OpenGL oracle (Mesa's GL and GLU)
 )
 
 missing=()

@@ -57,6 +57,93 @@ RTAPI RTboolean rtuImageFormatSupported(const char *extension);
 RTAPI const char *rtuImageError(void);
 
 
+/* ---- GLU: projections (docs/quadrics.md) ------------------------------ */
+
+/* Multiplies the current matrix by rtOrtho(left, right, bottom, top, -1, 1)
+ * (gluOrtho2D). */
+RTAPI void rtuOrtho2D(RTdouble left, RTdouble right, RTdouble bottom, RTdouble top);
+
+/* Multiplies the current matrix by the picking region of gluPickMatrix: the
+ * deltaX x deltaY pixel region centred on window position (x, y) fills the
+ * viewport.  deltaX or deltaY <= 0, a NULL viewport or a viewport of zero
+ * size records RT_INVALID_VALUE and changes nothing (GLU: silently nothing). */
+RTAPI void rtuPickMatrix(RTdouble x, RTdouble y, RTdouble deltaX, RTdouble deltaY,
+                         const RTint viewport[4]);
+
+/* Window coordinates of an object-space point under the given column-major
+ * modelview and projection matrices and viewport (gluProject).  Returns
+ * RT_FALSE, leaving the outputs unchanged, when the clip-space w is 0 or an
+ * argument is NULL.  Needs no context. */
+RTAPI RTboolean rtuProject(RTdouble objX, RTdouble objY, RTdouble objZ, const RTdouble model[16],
+                           const RTdouble proj[16], const RTint viewport[4], RTdouble *winX,
+                           RTdouble *winY, RTdouble *winZ);
+
+/* The inverse of rtuProject (gluUnProject).  Returns RT_FALSE, leaving the
+ * outputs unchanged, when proj * model is singular, the result's w is 0 or
+ * an argument is NULL.  Needs no context. */
+RTAPI RTboolean rtuUnProject(RTdouble winX, RTdouble winY, RTdouble winZ, const RTdouble model[16],
+                             const RTdouble proj[16], const RTint viewport[4], RTdouble *objX,
+                             RTdouble *objY, RTdouble *objZ);
+
+/* ---- GLU: quadrics (docs/quadrics.md) --------------------------------- */
+
+/* A quadric's drawing options (GLUquadric).  Opaque; holds no context
+ * state, so one quadric may be used with any context. */
+typedef struct rtu_quadric RTUquadric;
+
+/* rtuQuadricNormals (values follow GLU). */
+#define RTU_SMOOTH 100000
+#define RTU_FLAT 100001
+#define RTU_NONE 100002
+/* rtuQuadricDrawStyle.  Only RTU_FILL draws today: the others need line and
+ * point primitives, and drawing in them records RT_INVALID_OPERATION. */
+#define RTU_POINT 100010
+#define RTU_LINE 100011
+#define RTU_FILL 100012
+#define RTU_SILHOUETTE 100013
+/* rtuQuadricOrientation. */
+#define RTU_OUTSIDE 100020
+#define RTU_INSIDE 100021
+
+/* A new quadric: RTU_SMOOTH normals, RTU_OUTSIDE, no texture coordinates,
+ * RTU_FILL.  NULL when out of memory. */
+RTAPI RTUquadric *rtuNewQuadric(void);
+/* Frees a quadric; NULL is ignored. */
+RTAPI void rtuDeleteQuadric(RTUquadric *quadric);
+RTAPI void rtuQuadricNormals(RTUquadric *quadric, RTenum normals);
+RTAPI void rtuQuadricOrientation(RTUquadric *quadric, RTenum orientation);
+RTAPI void rtuQuadricTexture(RTUquadric *quadric, RTboolean textureCoords);
+RTAPI void rtuQuadricDrawStyle(RTUquadric *quadric, RTenum drawStyle);
+
+/* The quadrics emit rtBegin/rtNormal3f/rtTexCoord2f/rtVertex3f exactly as
+ * GLU emits gl calls, so they are called where rtBegin is allowed (inside
+ * rtNewObject .. rtEndObject), like a GLU call compiled into a display
+ * list.  Tessellation, orientation, normals and texture coordinates are
+ * those of GLU 1.3 as Mesa's libGLU implements it (docs/quadrics.md). */
+RTAPI void rtuSphere(RTUquadric *quadric, RTdouble radius, RTint slices, RTint stacks);
+RTAPI void rtuCylinder(RTUquadric *quadric, RTdouble baseRadius, RTdouble topRadius,
+                       RTdouble height, RTint slices, RTint stacks);
+RTAPI void rtuDisk(RTUquadric *quadric, RTdouble innerRadius, RTdouble outerRadius, RTint slices,
+                   RTint loops);
+RTAPI void rtuPartialDisk(RTUquadric *quadric, RTdouble innerRadius, RTdouble outerRadius,
+                          RTint slices, RTint loops, RTdouble startAngle, RTdouble sweepAngle);
+
+/* ---- GLUT solid shapes (docs/quadrics.md) ----------------------------- */
+
+/* The solid shapes of GLUT 3 with its geometry and normals, emitted like
+ * the quadrics (call them inside rtNewObject).  The wire variants need
+ * line primitives and are deliberately absent until the core has them. */
+RTAPI void rtuSolidSphere(RTdouble radius, RTint slices, RTint stacks);
+RTAPI void rtuSolidCube(RTdouble size);
+RTAPI void rtuSolidCone(RTdouble base, RTdouble height, RTint slices, RTint stacks);
+RTAPI void rtuSolidTorus(RTdouble innerRadius, RTdouble outerRadius, RTint sides, RTint rings);
+RTAPI void rtuSolidTeapot(RTdouble size);
+RTAPI void rtuSolidDodecahedron(void);
+RTAPI void rtuSolidOctahedron(void);
+RTAPI void rtuSolidTetrahedron(void);
+RTAPI void rtuSolidIcosahedron(void);
+
+
 /* ---- AFF scenes (BART; docs/aff.md) ----------------------------------- */
 
 /* An AFF scene loaded into the current context: its objects, textures and

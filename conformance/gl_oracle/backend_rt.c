@@ -1,0 +1,69 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * backend_rt.c - renders an oracle scene with Tracelist and rtu: the side
+ * under test.
+ *
+ * The geometry is recorded into object 1 under the identity modelview and
+ * instantiated under the scene's view, as backend_gl.c compiles and calls
+ * display list 1.  Shading: the default (RT_EYE_LIGHT) on a white
+ * material; coverage is what is compared until Tracelist has a GL shading
+ * mode, so only "not the clear colour" matters.  Any recorded error fails
+ * the scene.
+ */
+#include "oracle.h"
+
+#include <rt/rt.h>
+
+#include <stdio.h>
+
+static RTcontext context;
+
+int oracle_rt_init(void)
+{
+    context = rtCreateContext(NULL);
+    if (!context || !rtMakeCurrent(context)) {
+        fprintf(stderr, "gl_oracle: cannot create a Tracelist context\n");
+        return 0;
+    }
+    return 1;
+}
+
+int oracle_rt_render(const struct oracle_scene *scene, unsigned char *rgba)
+{
+    static const RTfloat white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+    const RTuint object = 1;
+    RTenum error;
+    rtViewport(0, 0, ORACLE_W, ORACLE_H);
+    rtClearColor(ORACLE_BG_R, ORACLE_BG_G, ORACLE_BG_B, 1.0f);
+
+    rtMatrixMode(RT_PROJECTION);
+    rtLoadIdentity();
+    scene->projection();
+    rtMatrixMode(RT_MODELVIEW);
+    rtLoadIdentity();
+    rtNewObject(object);
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_AMBIENT_AND_DIFFUSE, white);
+    scene->shape();
+    rtEndObject();
+    rtLoadIdentity();
+    scene->view();
+    rtBeginFrame();
+    rtInstantiateObject(object);
+    rtRenderFrame();
+    rtReadPixels(0, 0, ORACLE_W, ORACLE_H, RT_RGBA, RT_UNSIGNED_BYTE, rgba);
+    rtDeleteObjects(1, &object);
+    error = rtGetError();
+    if (error != RT_NO_ERROR) {
+        fprintf(stderr, "gl_oracle: %s/%s: Tracelist error 0x%x\n", scene->family, scene->name,
+                error);
+        return 0;
+    }
+    return 1;
+}
+
+void oracle_rt_finish(void)
+{
+    rtMakeCurrent(NULL);
+    rtDestroyContext(context);
+    context = NULL;
+}
