@@ -28,7 +28,7 @@ esac
 sources() {
   find "$root" \
     \( -path "$root/build" -o -path "$root/build-*" -o -name .git -o -name __pycache__ \
-       -o -name '*.egg-info' -o -name .venv -o -path '*/conformance/data' \
+       -o -name '*.egg-info' -o -name .venv -o -path "$root/python/build" -o -path '*/conformance/data' \
        -o -path '*/fuzz/corpus' -o -path '*/fuzz/regressions' \) -prune -o \
     -type f \( -name '*.c' -o -name '*.h' -o -name '*.cpp' -o -name '*.py' -o -name '*.sh' \
        -o -name '*.cmake' -o -name '*.in' -o -name CMakeLists.txt \) -print | LC_ALL=C sort
