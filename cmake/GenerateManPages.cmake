@@ -47,18 +47,29 @@ foreach(header rt.h rtu.h)
       endif()
       file(WRITE ${RT_MAN_DIR}/man3/${fn}.3 ".so man3/tracelist-${page}.3\n")
       list(APPEND pages_used ${page})
+      list(APPEND page_functions_${page} ${fn})
     endif()
   endforeach()
 endforeach()
 
+# Each page gets the NAME section man(1), whatis and apropos expect
+# ("rtGenObjects, rtNewObject, ... - Objects"), then the reference page
+# without its title line.
 list(REMOVE_DUPLICATES pages_used)
+file(MAKE_DIRECTORY ${RT_MAN_DIR}/src)
 foreach(page IN LISTS pages_used)
+  file(READ ${RT_SOURCE_DIR}/docs/${page}.md text)
+  string(REGEX MATCH "^# ([^\n]*)" title_line "${text}")
+  set(description "${CMAKE_MATCH_1}")
+  string(REGEX REPLACE "^# [^\n]*\n" "" text "${text}")
+  string(REPLACE ";" ", " names "${page_functions_${page}}")
+  file(WRITE ${RT_MAN_DIR}/src/${page}.md "# NAME\n\n${names} - ${description}\n\n${text}")
   string(TOUPPER "tracelist-${page}" title)
   execute_process(
     COMMAND ${RT_PANDOC} --standalone --from gfm --to man
             --metadata title=${title} --metadata section=3
             --metadata "header=Tracelist Manual" --metadata "footer=Tracelist ${RT_VERSION}"
-            -o ${RT_MAN_DIR}/man3/tracelist-${page}.3 ${RT_SOURCE_DIR}/docs/${page}.md
+            -o ${RT_MAN_DIR}/man3/tracelist-${page}.3 ${RT_MAN_DIR}/src/${page}.md
     RESULT_VARIABLE rc)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "man pages: pandoc failed on docs/${page}.md")
