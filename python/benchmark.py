@@ -106,6 +106,10 @@ def main():
         c_rate = float(result.stdout.split()[-1])
         c_hits = np.fromfile(out, dtype=tl.HIT_DTYPE)
     same = np.array_equal(c_hits, hits)
+    # What the binding adds per call, without tracing: packing the rays
+    # (only for origins + directions) and allocating the hit array.
+    pack_s, _ = best_of(args.runs, lambda: (tl.pack_rays(origins, directions),
+                                             np.empty(len(rays), dtype=tl.HIT_DTYPE)))
     hit_rate = np.mean(np.isfinite(hits["t"]))
 
     print("hits: %.1f%% of rays; Python and C hits identical: %s" % (100 * hit_rate, same))
@@ -115,6 +119,8 @@ def main():
                            ("Python: trace_rays(origins, directions)", unpacked_s)):
         rate = len(rays) / seconds
         print("%-44s %14.0f %8.2f" % (label, rate, rate / c_rate))
+    print("binding work without tracing (pack_rays + hit array): %.1f ms per %d rays "
+          "= %.0f ns per ray" % (1e3 * pack_s, len(rays), 1e9 * pack_s / len(rays)))
     return 0 if same else 1
 
 
