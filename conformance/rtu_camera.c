@@ -6,7 +6,8 @@
  * to the eye, the centre and the up vector, and for one case element by
  * element); that both multiply the current matrix (of the current mode)
  * rather than load it; the documented failures: invalid arguments record
- * RT_INVALID_VALUE through rtMultMatrixd and change nothing, a call inside
+ * RT_INVALID_VALUE against the rtu function itself (rtRecordError, not the
+ * core call it makes) and change nothing, a call inside
  * rtBegin records RT_INVALID_OPERATION first, no current context is a
  * silent no-op.
  *
@@ -125,8 +126,8 @@ static void perspective_errors(void)
         if (!CHECK_ERR(RT_INVALID_VALUE))
             fprintf(stderr, "    case %d\n", (int)i);
         CHECK_CURRENT_MATRIX(RT_PROJECTION_MATRIX, before, 0.0);
-        /* Documented: the error is recorded by the core entry point rtu calls. */
-        CHECK_MSG("rtMultMatrixd");
+        /* Documented: the error names the rtu function, not rtMultMatrixd. */
+        CHECK_MSG("rtuPerspective");
     }
     /* Non-finite arguments. */
     rtuPerspective(tu_nan_d(), 1.0, 1.0, 10.0);
@@ -139,9 +140,10 @@ static void perspective_errors(void)
     CHECK_ERR(RT_INVALID_VALUE);
     rtuPerspective(60.0, 1.0, 1.0, tu_nan_d());
     CHECK_ERR(RT_INVALID_VALUE);
-    /* A valid call whose matrix overflows is refused by the core. */
+    /* A valid call whose matrix overflows is refused, against rtuPerspective. */
     rtuPerspective(1e-310, 1.0, 1.0, 10.0);
     CHECK_ERR(RT_INVALID_VALUE);
+    CHECK_MSG("rtuPerspective");
     CHECK_CURRENT_MATRIX(RT_PROJECTION_MATRIX, before, 0.0);
 
     /* The first error sticks: a later rtu error does not replace it. */
@@ -280,7 +282,7 @@ static void look_at_errors(void)
         rtuLookAt(a[0], a[1], a[2], a[3], a[4], a[5], a[6], a[7], a[8]);
         if (!CHECK_ERR(RT_INVALID_VALUE))
             fprintf(stderr, "    case %d\n", (int)i);
-        CHECK_MSG("rtMultMatrixd");
+        CHECK_MSG("rtuLookAt");
         CHECK_CURRENT_MATRIX(RT_MODELVIEW_MATRIX, before, 0.0);
     }
     /* A NaN or an infinity in any of the nine arguments. */

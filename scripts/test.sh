@@ -1,19 +1,64 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # One command from a fresh Debian machine to a tested build: installs the
-# packages, then builds and runs four suites under ctest:
-#   1. Release build: every test (conformance, internal, demos, bench smoke);
+# packages it can, then builds and runs five suites:
+#   1. Release build: every test under ctest (conformance, internal, demos,
+#      tutorials, install, bench smoke);
 #   2. AddressSanitizer + UndefinedBehaviorSanitizer build: every test;
 #   3. ThreadSanitizer build: the tests labelled "threads", with
 #      RT_NO_SIMD=ON so the builders' plain C path (lib/accel/vec4.h) is
 #      built and tested too;
 #   4. clang build with libFuzzer + ASan + UBSan: the test labelled "fuzz",
 #      which fuzzes the AFF loader for RT_FUZZ_SECONDS (60 s; builds only
-#      that target).  Suites 1 and 2 replay its corpus (fuzz/aff_replay).
-# Exits non-zero if any build or test fails.
-set -euo pipefail
+#      that target).  Suites 1 and 2 replay its corpus (fuzz/aff_replay);
+#   5. Python: `pip install ./python` into a virtual environment in the
+#      build folder, then pytest over python/tests against the Release build.
+#
+# The BART scenes (third-party data, not in the repository) are looked for
+# in $TRACELIST_BART_DIR, else ../shared/bart beside the checkout.  Without
+# them the tests labelled "bart" are skipped with one line saying so and
+# everything else runs; under CI (CI=true) missing data is a failure.
+#
+# Every suite runs even when an earlier one failed; a summary follows, and
+# the exit status is non-zero when any build or test failed.
+set -uo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 jobs="$(nproc)"
-"$root/scripts/install-deps.sh"
+"$root/scripts/install-deps.sh" || echo "test.sh: install-deps.sh failed; continuing with what is installed"
+
+# ------------------------------------------------------------ BART data
+bart_dir="${TRACELIST_BART_DIR:-$root/../shared/bart}"
+bart_ctest=()
+bart_note=""
+if [ -f "$bart_dir/kitchen/kitchen.aff" ] && [ -f "$bart_dir/robots/Robot.aff" ] &&
+   [ -f "$bart_dir/museum/museum5.aff" ]; then
+  bart_dir="$(cd "$bart_dir" && pwd)"
+  export TRACELIST_BART_DIR="$bart_dir"
+  echo "test.sh: BART scenes found in $bart_dir"
+else
+  bart_note="BART scenes not found in $bart_dir (looked for kitchen/, robots/, museum/): \
+get the public BART scenes (Lext, Assarsson, Möller 2000; see docs/bart.md) and set \
+TRACELIST_BART_DIR to their folder"
+  if [ "${CI:-}" = "true" ]; then
+    echo "test.sh: FAILURE: $bart_note; under CI the BART tests are required"
+  else
+    echo "test.sh: skipping the tests labelled 'bart': $bart_note"
+    bart_ctest=(-LE bart)
+  fi
+fi
+
+# ------------------------------------------------------------ suites
+declare -a summary=()
+failed=0
+
+record() { # record NAME STATUS
+  if [ "$2" -eq 0 ]; then
+    summary+=("passed  $1")
+  else
+    summary+=("FAILED  $1")
+    failed=1
+  fi
+}
 
 run_suite() {
   local name="$1" ; shift
@@ -25,13 +70,16 @@ run_suite() {
   cmake -S "$root" -B "$dir" "$@" >"$dir.configure.log" 2>&1 || { cat "$dir.configure.log"; return 1; }
   grep "Tracelist:" "$dir.configure.log" || true
   # $build_targets (optional): build only these targets.
-  cmake --build "$dir" -j"$jobs" ${build_targets:+--target $build_targets}
+  cmake --build "$dir" -j"$jobs" ${build_targets:+--target $build_targets} || return 1
   echo "=== $name: test"
-  ctest --test-dir "$dir" --output-on-failure -j"$jobs" "${ctest_args[@]}"
+  ctest --test-dir "$dir" --output-on-failure -j"$jobs" ${bart_ctest[@]+"${bart_ctest[@]}"} \
+    "${ctest_args[@]}"
 }
 
 mkdir -p "$root/build"
 run_suite release -- -DCMAKE_BUILD_TYPE=Release
+record "release (all tests)" $?
+
 # Leaks are real failures for our code; OpenImageIO's own one-time
 # allocations are suppressed by name.
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"
@@ -39,11 +87,69 @@ export LSAN_OPTIONS="suppressions=$root/scripts/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 run_suite asan-ubsan -- -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRT_SANITIZE=address,undefined \
   -DRT_BUILD_BENCH=ON
+record "asan-ubsan (all tests)" $?
+
 export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1"
 run_suite tsan -L threads -- -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRT_SANITIZE=thread \
   -DRT_NO_SIMD=ON -DRT_WITH_OIIO=OFF -DRT_WITH_GLFW=OFF -DRT_WITH_EMBREE=OFF
-CC=clang CXX=clang++ build_targets=aff_fuzz run_suite fuzz -L fuzz --no-tests=error -- \
-  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRT_SANITIZE=address,undefined -DRT_FUZZ=ON \
-  -DRT_WITH_OIIO=OFF -DRT_WITH_GLFW=OFF -DRT_WITH_EMBREE=OFF -DRT_BUILD_DEMOS=OFF \
-  -DRT_BUILD_BENCH=OFF
+record "tsan (label threads)" $?
+
+if command -v clang >/dev/null; then
+  CC=clang CXX=clang++ build_targets=aff_fuzz run_suite fuzz -L fuzz --no-tests=error -- \
+    -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRT_SANITIZE=address,undefined -DRT_FUZZ=ON \
+    -DRT_WITH_OIIO=OFF -DRT_WITH_GLFW=OFF -DRT_WITH_EMBREE=OFF -DRT_BUILD_DEMOS=OFF \
+    -DRT_BUILD_TUTORIALS=OFF -DRT_BUILD_BENCH=OFF
+  record "fuzz (label fuzz)" $?
+else
+  echo "=== fuzz: clang is not installed (scripts/install-deps.sh lists it)"
+  record "fuzz (clang missing)" 1
+fi
+
+# The Python package, installed with pip as a user would, into a virtual
+# environment that sees the system's numpy and pytest (Debian 12 refuses
+# system-wide pip installs).  The first Python that has numpy is used.
+run_python() {
+  local venv="$root/build/python-venv" python=""
+  for candidate in "${PYTHON:-}" python3 /usr/bin/python3; do
+    [ -n "$candidate" ] || continue
+    if "$candidate" -c "import numpy, pytest, venv" >/dev/null 2>&1; then
+      python="$candidate"
+      break
+    fi
+  done
+  if [ -z "$python" ]; then
+    echo "=== python: no python3 with numpy, pytest and venv (install-deps.sh lists" \
+         "python3-numpy python3-pytest python3-venv)"
+    return 1
+  fi
+  echo "=== python: $python -m venv --system-site-packages, pip install ./python, pytest"
+  rm -rf "$venv"
+  "$python" -m venv --system-site-packages "$venv" || return 1
+  # TRACELIST_LIBRARY at install time: python/setup.py bundles that library
+  # into the package, so the tests below run on the installed copy alone.
+  TRACELIST_LIBRARY="$root/build/release/libtracelist.so" \
+    "$venv/bin/python" -m pip install --quiet --no-deps --no-build-isolation "$root/python" ||
+    return 1
+  # The installed package, not the checkout: run from outside python/.
+  (cd "$root/build" && unset TRACELIST_LIBRARY &&
+   "$venv/bin/python" -m pytest -q -p no:cacheprovider "$root/python/tests")
+}
+run_python
+record "python (pip install, pytest)" $?
+
+# ------------------------------------------------------------ summary
+if [ -n "$bart_note" ]; then
+  if [ "${CI:-}" = "true" ]; then
+    summary+=("FAILED  BART data missing under CI: $bart_note")
+    failed=1
+  else
+    summary+=("skipped tests labelled 'bart': $bart_note")
+  fi
+fi
+echo "=== summary"
+printf '  %s\n' "${summary[@]}"
+if [ "$failed" -ne 0 ]; then
+  echo "=== some suites FAILED"
+  exit 1
+fi
 echo "=== all suites passed"

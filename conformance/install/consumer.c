@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* Renders one triangle through an installed Tracelist and checks a hit. */
 #include <rt/rt.h>
 #include <rt/rtu.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * bart - plays the BART benchmark scenes (kitchen, robots, museum) through
  * Tracelist, the way paper 004 (Wald, Benthin, Slusallek 2003, sec. 5)
@@ -10,9 +11,12 @@
  * scene's frame rate, skipping frames when rendering falls behind; without
  * one (or with --headless) it renders a frame range to numbered images.
  * Run `bart --help` for the options and keys; docs/bart.md has more.
+ * Frames are numbered by their 0-based index in the scene in every output
+ * (kitchen_0000.png is frame 0), as in gears.
  */
 #include <rt/rt.h>
 #include <rt/rtu.h>
+#include <getopt.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -70,30 +74,41 @@ struct options {
 static void usage(FILE *f)
 {
     fprintf(f,
-            "usage: bart [options] [kitchen|robots|museum|FILE.aff]\n"
-            "  --headless          render frames to images instead of playing in a window\n"
-            "  --frames A-B        frame range, 0-based and inclusive (default: all; A alone\n"
-            "                      is one frame)\n"
-            "  --step K            render every K-th frame of the range (headless)\n"
-            "  --size WxH          image or window size (default 640x480)\n"
-            "  --threads N         render threads (default: all processors)\n"
-            "  --build-threads K   asynchronous rebuild threads (default 1)\n"
-            "  --strategy S        update strategy of moving objects: automatic (default),\n"
-            "                      refit, rebuild, median, heuristic, restructure, async\n"
-            "  --shading M         whitted (default: shadows and reflections) or eye\n"
-            "  --depth N           Whitted reflection depth (default 3, as in paper 004)\n"
-            "  --flat              bake each frame into one static object (the reference\n"
-            "                      of the two-level configuration)\n"
-            "  --stats             print update/render times and ray counts per frame\n"
-            "  --out FILE          output name, numbered FILE_0000.ext by frame index\n"
-            "                      (default <scene>.png)\n"
-            "  --bart-dir DIR      the BART folder (default: $TRACELIST_BART_DIR, else\n"
-            "                      ../shared/bart beside the checkout)\n"
-            "  --window-frames N   close the window after N frames (for tests)\n"
-            "  --contact-sheet CxR one image of C x R frames spread evenly over the range,\n"
-            "                      each --size large, first frame top left (headless)\n"
-            "keys in the window: space pause, right/left step one frame (pauses),\n"
-            "  s eye-light/Whitted, t next strategy, r restart, Esc/q quit\n");
+            "Usage: bart [OPTION]... [kitchen|robots|museum|FILE.aff]\n"
+            "Play a BART benchmark scene (default kitchen) with Tracelist: in a window when\n"
+            "there is a display, else (or with --headless) to numbered image files.\n\n"
+            "  -H, --headless            render frames to images instead of a window\n"
+            "  -n, --frames=A-B          frame range, 0-based and inclusive (default: all;\n"
+            "                            A alone is one frame)\n"
+            "      --step=K              render every K-th frame of the range (headless)\n"
+            "  -s, --size=WxH            image or window size (default 640x480)\n"
+            "  -t, --threads=N           render threads (default: all processors)\n"
+            "      --build-threads=K     asynchronous rebuild threads (default 1)\n"
+            "      --strategy=S          update strategy of moving objects: automatic\n"
+            "                            (default), refit, rebuild, median, heuristic,\n"
+            "                            restructure, async\n"
+            "      --shading=M           whitted (default: shadows and reflections) or eye\n"
+            "      --depth=N             Whitted reflection depth (default 3, as in OpenRT)\n"
+            "      --flat                bake each frame into one static object (the\n"
+            "                            reference of the two-level configuration)\n"
+            "      --stats               print update/render times and ray counts per frame\n"
+            "  -o, --out=FILE            output name, FILE_0000.ext ... by frame index\n"
+            "                            (default <scene>.png); an unknown extension is refused\n"
+            "      --bart-dir=DIR        the BART folder (default: $TRACELIST_BART_DIR, else\n"
+            "                            " RT_BART_DIR ")\n"
+            "      --window-frames=N     close the window after N frames (for tests)\n"
+            "      --contact-sheet=CxR   one image of C x R frames spread evenly over the\n"
+            "                            range, each --size large, first frame top left\n"
+            "      --info                print the library version, renderer and configuration\n"
+            "  -h, --help                display this help and exit\n"
+            "  -V, --version             output version information and exit\n\n"
+            "Keys in the window:\n" DEMO_COMMON_KEYS
+            "  space          pause / resume\n"
+            "  right, left    step one frame forward / back (pauses)\n"
+            "  s              eye-light / Whitted shading\n"
+            "  t              next update strategy\n"
+            "  r              restart from frame 0\n\n"
+            "The BART scenes (Lext, Assarsson, Moller 2000) are public; see docs/bart.md.\n");
 }
 
 static int parse_range(const char *text, int *first, int *last)
@@ -114,8 +129,43 @@ static int parse_range(const char *text, int *first, int *last)
            demo_parse_int(dash + 1, 0, 100000000, last) && *last >= *first;
 }
 
-static int parse_options(int argc, char **argv, struct options *o)
+enum {
+    OPT_STEP = 256,
+    OPT_BUILD_THREADS,
+    OPT_STRATEGY,
+    OPT_SHADING,
+    OPT_DEPTH,
+    OPT_FLAT,
+    OPT_STATS,
+    OPT_BART_DIR,
+    OPT_WINDOW_FRAMES,
+    OPT_CONTACT_SHEET,
+    OPT_INFO
+};
+
+/* Returns 1 to run, 0 to exit with *status (help, version, a bad option). */
+static int parse_options(int argc, char **argv, struct options *o, int *info, int *status)
 {
+    static const struct option long_options[] = {
+        {"headless", no_argument, NULL, 'H'},
+        {"frames", required_argument, NULL, 'n'},
+        {"step", required_argument, NULL, OPT_STEP},
+        {"size", required_argument, NULL, 's'},
+        {"threads", required_argument, NULL, 't'},
+        {"build-threads", required_argument, NULL, OPT_BUILD_THREADS},
+        {"strategy", required_argument, NULL, OPT_STRATEGY},
+        {"shading", required_argument, NULL, OPT_SHADING},
+        {"depth", required_argument, NULL, OPT_DEPTH},
+        {"flat", no_argument, NULL, OPT_FLAT},
+        {"stats", no_argument, NULL, OPT_STATS},
+        {"out", required_argument, NULL, 'o'},
+        {"bart-dir", required_argument, NULL, OPT_BART_DIR},
+        {"window-frames", required_argument, NULL, OPT_WINDOW_FRAMES},
+        {"contact-sheet", required_argument, NULL, OPT_CONTACT_SHEET},
+        {"info", no_argument, NULL, OPT_INFO},
+        {"help", no_argument, NULL, 'h'},
+        {"version", no_argument, NULL, 'V'},
+        {NULL, 0, NULL, 0}};
     memset(o, 0, sizeof *o);
     o->scene = "kitchen";
     o->last = -1;
@@ -124,62 +174,112 @@ static int parse_options(int argc, char **argv, struct options *o)
     o->height = 480;
     o->build_threads = 1;
     o->depth = 3;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        const char *next = i + 1 < argc ? argv[i + 1] : NULL;
-        int ok = 1, takes = 1;
-        if (strcmp(a, "--headless") == 0) {
-            o->headless = 1, takes = 0;
-        } else if (strcmp(a, "--flat") == 0) {
-            o->flat = 1, takes = 0;
-        } else if (strcmp(a, "--stats") == 0) {
-            o->stats = 1, takes = 0;
-        } else if (strcmp(a, "--frames") == 0) {
-            ok = parse_range(next, &o->first, &o->last);
-        } else if (strcmp(a, "--step") == 0) {
-            ok = demo_parse_int(next, 1, 1000000, &o->step);
-        } else if (strcmp(a, "--contact-sheet") == 0) {
-            ok = demo_parse_size(next, &o->sheet_cols, &o->sheet_rows);
+    *info = 0;
+    *status = 2;
+    opterr = 0;
+    int c;
+    while ((c = getopt_long(argc, argv, ":Hn:s:t:o:hV", long_options, NULL)) != -1) {
+        const char *bad = NULL; /* what the argument should have been */
+        switch (c) {
+        case 'H':
             o->headless = 1;
-        } else if (strcmp(a, "--size") == 0) {
-            ok = demo_parse_size(next, &o->width, &o->height);
-        } else if (strcmp(a, "--threads") == 0) {
-            ok = demo_parse_int(next, 1, 256, &o->threads);
-        } else if (strcmp(a, "--build-threads") == 0) {
-            ok = demo_parse_int(next, 1, 64, &o->build_threads);
-        } else if (strcmp(a, "--depth") == 0) {
-            ok = demo_parse_int(next, 0, 16, &o->depth);
-        } else if (strcmp(a, "--window-frames") == 0) {
-            ok = demo_parse_int(next, 1, 100000000, &o->window_frames);
-        } else if (strcmp(a, "--strategy") == 0) {
-            ok = 0;
-            for (int s = 0; next && s < STRATEGY_COUNT; s++)
-                if (strcmp(next, strategies[s].name) == 0)
-                    o->strategy = s, ok = 1;
-        } else if (strcmp(a, "--shading") == 0) {
-            ok = next && (strcmp(next, "eye") == 0 || strcmp(next, "whitted") == 0);
-            if (ok)
-                o->eye_light = strcmp(next, "eye") == 0;
-        } else if (strcmp(a, "--out") == 0) {
-            ok = next && next[0];
-            o->out = next;
-        } else if (strcmp(a, "--bart-dir") == 0) {
-            ok = next && next[0];
-            o->bart_dir = next;
-        } else if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            usage(stdout);
-            exit(0);
-        } else if (a[0] != '-') {
-            o->scene = a, takes = 0;
-        } else {
-            ok = 0;
+            break;
+        case OPT_FLAT:
+            o->flat = 1;
+            break;
+        case OPT_STATS:
+            o->stats = 1;
+            break;
+        case 'n':
+            if (!parse_range(optarg, &o->first, &o->last))
+                bad = "a frame A or a range A-B with A <= B";
+            break;
+        case OPT_STEP:
+            if (!demo_parse_int(optarg, 1, 1000000, &o->step))
+                bad = "a whole number, 1 or more";
+            break;
+        case OPT_CONTACT_SHEET:
+            if (!demo_parse_size(optarg, &o->sheet_cols, &o->sheet_rows))
+                bad = "CxR, e.g. 3x2";
+            o->headless = 1;
+            break;
+        case 's':
+            if (!demo_parse_size(optarg, &o->width, &o->height))
+                bad = "WxH, e.g. 640x480, at most 16384";
+            break;
+        case 't':
+            if (!demo_parse_int(optarg, 1, 256, &o->threads))
+                bad = "1 to 256";
+            break;
+        case OPT_BUILD_THREADS:
+            if (!demo_parse_int(optarg, 1, 64, &o->build_threads))
+                bad = "1 to 64";
+            break;
+        case OPT_DEPTH:
+            if (!demo_parse_int(optarg, 0, 16, &o->depth))
+                bad = "0 to 16";
+            break;
+        case OPT_WINDOW_FRAMES:
+            if (!demo_parse_int(optarg, 1, 100000000, &o->window_frames))
+                bad = "a whole number, 1 or more";
+            break;
+        case OPT_STRATEGY: {
+            int found = 0;
+            for (int k = 0; k < STRATEGY_COUNT; k++)
+                if (strcmp(optarg, strategies[k].name) == 0)
+                    o->strategy = k, found = 1;
+            if (!found)
+                bad = "automatic, refit, rebuild, median, heuristic, restructure or async";
+            break;
         }
-        if (!ok) {
-            fprintf(stderr, PROGRAM ": bad or incomplete option '%s'\n", a);
-            usage(stderr);
+        case OPT_SHADING:
+            if (strcmp(optarg, "eye") == 0 || strcmp(optarg, "whitted") == 0)
+                o->eye_light = strcmp(optarg, "eye") == 0;
+            else
+                bad = "whitted or eye";
+            break;
+        case 'o':
+            if (optarg[0] == '\0')
+                bad = "a file name";
+            o->out = optarg;
+            break;
+        case OPT_BART_DIR:
+            if (optarg[0] == '\0')
+                bad = "a folder";
+            o->bart_dir = optarg;
+            break;
+        case OPT_INFO:
+            *info = 1;
+            break;
+        case 'h':
+            usage(stdout);
+            *status = 0;
+            return 0;
+        case 'V':
+            *status = demo_print_version(PROGRAM);
+            return 0;
+        case ':':
+            demo_usage_error(PROGRAM, "option '%s' requires an argument", argv[optind - 1]);
+            return 0;
+        default:
+            demo_usage_error(PROGRAM, "unrecognized option '%s'", argv[optind - 1]);
             return 0;
         }
-        i += takes;
+        if (bad != NULL) {
+            const char *option = "";
+            for (int k = 0; long_options[k].name != NULL; k++)
+                if (long_options[k].val == c)
+                    option = long_options[k].name;
+            demo_usage_error(PROGRAM, "invalid argument '%s' for '--%s' (%s)", optarg, option,
+                             bad);
+            return 0;
+        }
+    }
+    if (optind < argc)
+        o->scene = argv[optind++];
+    if (optind < argc) {
+        demo_usage_error(PROGRAM, "unexpected argument '%s' (one scene only)", argv[optind]);
+        return 0;
     }
     return 1;
 }
@@ -299,15 +399,17 @@ static int run_contact_sheet(struct player *p, const char *name, int first, int 
                       NULL);
     }
     snprintf(fallback, sizeof fallback, "%s_sheet.png", name);
-    demo_output_name(path, sizeof path, o->out, fallback, PROGRAM);
+    if (demo_output_name(path, sizeof path, o->out, fallback, PROGRAM) == NULL)
+        status = 2;
     if (status == 0 && !rtuSaveImage(path, (RTsizei)sheet_w, (RTsizei)sheet_h, RT_UNSIGNED_BYTE,
                                      sheet)) {
         fprintf(stderr, PROGRAM ": %s\n", rtuImageError());
         status = 1;
     }
-    if (status == 0)
-        printf(PROGRAM ": %s: contact sheet of %d frames (%d..%d) written\n", name, n, first,
-               last);
+    if (status == 0) {
+        printf(PROGRAM ": %s: contact sheet of %d frames (%d..%d)\n", name, n, first, last);
+        demo_report_written(PROGRAM, path, path);
+    }
     free(tile);
     free(sheet);
     return status;
@@ -327,7 +429,8 @@ static int run_headless(struct player *p, const char *name)
     int total = (last - o->first) / o->step + 1;
     char fallback[256], base[4096];
     snprintf(fallback, sizeof fallback, "%s.png", name);
-    demo_output_name(base, sizeof base, o->out, fallback, PROGRAM);
+    if (demo_output_name(base, sizeof base, o->out, fallback, PROGRAM) == NULL)
+        return 2;
     unsigned char *pixels = malloc((size_t)o->width * (size_t)o->height * 4);
     if (!pixels) {
         fprintf(stderr, PROGRAM ": out of memory\n");
@@ -335,8 +438,8 @@ static int run_headless(struct player *p, const char *name)
     }
     double start = demo_now(), frame_seconds = 0.0, update_ms = 0.0;
     int done = 0, status = 0;
+    char path[4200], first_path[4200];
     for (int f = o->first; f <= last; f += o->step) {
-        char path[4200];
         double t0 = demo_now();
         if (!render_frame(p, f, o->width, o->height)) {
             status = 1;
@@ -349,6 +452,8 @@ static int run_headless(struct player *p, const char *name)
             status = 1;
             break;
         }
+        if (done == 0)
+            snprintf(first_path, sizeof first_path, "%s", path);
         done++;
         char detail[64];
         snprintf(detail, sizeof detail, "update %.2f ms", update_ms / done);
@@ -361,6 +466,8 @@ static int run_headless(struct player *p, const char *name)
                "update + render), update %.3f ms/frame\n",
                name, done, done == 1 ? "" : "s", o->width, o->height,
                1e3 * frame_seconds / done, done / frame_seconds, update_ms / done);
+    if (status == 0)
+        demo_report_written(PROGRAM, first_path, path);
     return status;
 }
 
@@ -509,10 +616,13 @@ static int run_window(struct player *p, const char *name)
     }
     if (status == 0 && o->out != NULL && pixels != NULL) {
         char path[4096];
-        if (!rtuSaveImage(demo_output_name(path, sizeof path, o->out, o->out, PROGRAM), width,
-                          height, RT_UNSIGNED_BYTE, pixels)) {
+        if (demo_output_name(path, sizeof path, o->out, o->out, PROGRAM) == NULL) {
+            status = 2;
+        } else if (!rtuSaveImage(path, width, height, RT_UNSIGNED_BYTE, pixels)) {
             fprintf(stderr, PROGRAM ": %s\n", rtuImageError());
             status = 1;
+        } else {
+            demo_report_written(PROGRAM, path, path);
         }
     }
     printf(PROGRAM ": %d frames shown, %d skipped to keep real time\n", shown, skipped);
@@ -527,9 +637,10 @@ static int run_window(struct player *p, const char *name)
 int main(int argc, char **argv)
 {
     struct options o;
-    if (!parse_options(argc, argv, &o))
-        return 2;
-    char path[4096], config[64];
+    int info = 0, status = 2;
+    if (!parse_options(argc, argv, &o, &info, &status))
+        return status;
+    char path[4096], config[64], checked[4096];
     const char *name;
     scene_path(&o, path, sizeof path, &name);
     if (o.threads > 0)
@@ -537,18 +648,22 @@ int main(int argc, char **argv)
                  o.build_threads);
     else
         snprintf(config, sizeof config, "build_threads=%d", o.build_threads);
-    RTcontext context = rtCreateContext(config);
-    if (context == NULL || !rtMakeCurrent(context)) {
-        fprintf(stderr, PROGRAM ": cannot create a Tracelist context (\"%s\")\n", config);
+    if (info)
+        return demo_print_info(PROGRAM, config);
+    /* Refuse an unwritable --out before loading anything. */
+    if (o.out != NULL && demo_output_name(checked, sizeof checked, o.out, NULL, PROGRAM) == NULL)
+        return 2;
+    RTcontext context = demo_create_context(PROGRAM, config);
+    if (context == NULL)
         return 1;
-    }
     double t0 = demo_now();
     RTUaffscene *scene = rtuLoadAFF(path);
     if (scene == NULL) {
         fprintf(stderr, PROGRAM ": %s\n", rtuAFFError());
         if (strcmp(name, o.scene) == 0 || strchr(o.scene, '/') == NULL)
             fprintf(stderr, PROGRAM ": the BART scenes are looked for in --bart-dir, "
-                            "$TRACELIST_BART_DIR or " RT_BART_DIR "\n");
+                            "$TRACELIST_BART_DIR or " RT_BART_DIR "; they are public "
+                            "(Lext, Assarsson, Moller 2000): see docs/bart.md\n");
         rtDestroyContext(context);
         return 1;
     }
@@ -568,7 +683,7 @@ int main(int argc, char **argv)
            name, tris, animated, objects, p.frames, demo_now() - t0);
     apply_settings(&p);
 
-    int status = -1;
+    status = -1;
 #ifdef RT_HAVE_GLFW
     if (!o.headless && (getenv("DISPLAY") != NULL || getenv("WAYLAND_DISPLAY") != NULL)) {
         status = run_window(&p, name);

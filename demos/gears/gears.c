@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * gears.c - the classic OpenGL "gears" demo, ray traced with Tracelist.
  *
@@ -24,22 +25,23 @@
  * teeth); --eye-light switches to the headlight shading that looks like
  * OpenGL without shadows.
  *
- * Usage: gears [--headless] [--frames N] [--size WxH] [--threads N]
- *              [--out FILE] [--eye-light]
+ * Usage: gears [OPTION]...   (gears --help lists the options and keys)
  *
  * Headless (with --headless, without a display, or when built without
  * GLFW) it renders N frames (default 1), advancing the gear angle by 2
  * degrees a frame as the original's idle() does, and writes them to
- * gears.png (gears_0001.png, ... when N > 1), or to --out FILE (numbered
- * the same way); a build that cannot write the extension (PNG without
- * OpenImageIO) writes the same name with .ppm instead.  With a display it
- * opens a window and animates at 70 degrees a second as glxgears does:
- * arrow keys rotate the view, z/Z rotate about the view axis, Esc quits;
- * --frames N quits after N frames and --out FILE saves the last one.
+ * gears.png (gears_0000.png, gears_0001.png, ... by 0-based frame index
+ * when N > 1), or to --out FILE (numbered the same way); an extension the
+ * build cannot write is refused, and the default becomes gears.ppm in a
+ * build without PNG.  With a display it opens a window and animates at 70
+ * degrees a second as glxgears does: arrow keys rotate the view, z/Z
+ * rotate about the view axis, q or Esc quits; --frames N quits after N
+ * frames and --out FILE saves the last one.
  */
 #include <rt/rt.h>
 #include <rt/rtu.h>
 
+#include <getopt.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -306,47 +308,99 @@ struct options {
 
 static void usage(FILE *f)
 {
-    fprintf(f, "usage: gears [--headless] [--frames N] [--size WxH] [--threads N]\n"
-               "             [--out FILE] [--eye-light]\n"
-               "  --headless   render without a window and write image files\n"
-               "  --frames N   frames to render (headless default 1; window: run until Esc)\n"
-               "  --size WxH   image or window size (default 640x480)\n"
-               "  --threads N  render threads (default: all processors)\n"
-               "  --out FILE   output image; numbered FILE_0001.ext ... when N > 1\n"
-               "               (default gears.png; .ppm when the build cannot write it)\n"
-               "  --eye-light  OpenGL-like headlight shading instead of Whitted with shadows\n");
+    fprintf(f, "Usage: gears [OPTION]...\n"
+               "Ray trace the classic OpenGL gears with Tracelist: in a window when there is a\n"
+               "display, else (or with --headless) to image files.\n\n"
+               "  -H, --headless       render without a window and write image files\n"
+               "  -n, --frames=N       frames to render (headless default 1; window: until quit)\n"
+               "  -s, --size=WxH       image or window size (default 640x480)\n"
+               "  -t, --threads=N      render threads (default: all processors)\n"
+               "  -o, --out=FILE       output image; FILE_0000.ext, FILE_0001.ext, ... by\n"
+               "                       frame index when N > 1 (default gears.png, gears.ppm\n"
+               "                       in a build without PNG); an unknown extension is refused\n"
+               "  -e, --eye-light      OpenGL-like headlight shading instead of Whitted\n"
+               "      --info           print the library version, renderer and configuration\n"
+               "  -h, --help           display this help and exit\n"
+               "  -V, --version        output version information and exit\n\n"
+               "Keys in the window:\n" DEMO_COMMON_KEYS
+               "  arrows         rotate the view\n"
+               "  z, Z           rotate about the view axis\n");
 }
 
-static int parse_options(int argc, char **argv, struct options *o)
+enum { OPT_INFO = 256 };
+
+/* Returns 1 to run, 0 to exit with *status (help, version, a bad option). */
+static int parse_options(int argc, char **argv, struct options *o, int *info, int *status)
 {
-    int i;
+    static const struct option long_options[] = {
+        {"headless", no_argument, NULL, 'H'},   {"frames", required_argument, NULL, 'n'},
+        {"size", required_argument, NULL, 's'}, {"threads", required_argument, NULL, 't'},
+        {"out", required_argument, NULL, 'o'},  {"eye-light", no_argument, NULL, 'e'},
+        {"info", no_argument, NULL, OPT_INFO},  {"help", no_argument, NULL, 'h'},
+        {"version", no_argument, NULL, 'V'},    {NULL, 0, NULL, 0}};
+    int c;
     memset(o, 0, sizeof *o);
     o->width = 640;
     o->height = 480;
-    for (i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        const char *next = i + 1 < argc ? argv[i + 1] : NULL;
-        if (strcmp(a, "--headless") == 0) {
+    *info = 0;
+    *status = 2;
+    opterr = 0;
+    while ((c = getopt_long(argc, argv, ":Hn:s:t:o:ehV", long_options, NULL)) != -1) {
+        switch (c) {
+        case 'H':
             o->headless = 1;
-        } else if (strcmp(a, "--eye-light") == 0) {
+            break;
+        case 'e':
             o->eye_light = 1;
-        } else if (strcmp(a, "--frames") == 0 && demo_parse_int(next, 1, 1000000, &o->frames)) {
-            i++;
-        } else if (strcmp(a, "--size") == 0 && demo_parse_size(next, &o->width, &o->height)) {
-            i++;
-        } else if (strcmp(a, "--threads") == 0 && demo_parse_int(next, 1, 256, &o->threads)) {
-            i++;
-        } else if (strcmp(a, "--out") == 0 && next != NULL && next[0] != '\0') {
-            o->out = next;
-            i++;
-        } else if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+            break;
+        case 'n':
+            if (!demo_parse_int(optarg, 1, 1000000, &o->frames)) {
+                demo_usage_error("gears", "invalid frame count '%s' (a whole number, 1 or more)",
+                                 optarg);
+                return 0;
+            }
+            break;
+        case 's':
+            if (!demo_parse_size(optarg, &o->width, &o->height)) {
+                demo_usage_error("gears", "invalid size '%s' (WxH, e.g. 640x480, at most 16384)",
+                                 optarg);
+                return 0;
+            }
+            break;
+        case 't':
+            if (!demo_parse_int(optarg, 1, 256, &o->threads)) {
+                demo_usage_error("gears", "invalid thread count '%s' (1 to 256)", optarg);
+                return 0;
+            }
+            break;
+        case 'o':
+            if (optarg[0] == '\0') {
+                demo_usage_error("gears", "--out needs a file name");
+                return 0;
+            }
+            o->out = optarg;
+            break;
+        case OPT_INFO:
+            *info = 1;
+            break;
+        case 'h':
             usage(stdout);
-            exit(0);
-        } else {
-            fprintf(stderr, "gears: bad or incomplete option '%s'\n", a);
-            usage(stderr);
+            *status = 0;
+            return 0;
+        case 'V':
+            *status = demo_print_version("gears");
+            return 0;
+        case ':':
+            demo_usage_error("gears", "option '%s' requires an argument", argv[optind - 1]);
+            return 0;
+        default:
+            demo_usage_error("gears", "unrecognized option '%s'", argv[optind - 1]);
             return 0;
         }
+    }
+    if (optind < argc) {
+        demo_usage_error("gears", "unexpected argument '%s'", argv[optind]);
+        return 0;
     }
     return 1;
 }
@@ -357,23 +411,29 @@ static int run_headless(const struct options *o)
     char base_buffer[4096];
     const char *base =
         demo_output_name(base_buffer, sizeof base_buffer, o->out, "gears.png", "gears");
-    unsigned char *pixels = malloc((size_t)o->width * (size_t)o->height * 4);
+    unsigned char *pixels;
     double render_seconds = 0.0;
     double start = demo_now();
+    char path[4096], first[4096];
     int k;
+    if (base == NULL)
+        return 2;
+    pixels = malloc((size_t)o->width * (size_t)o->height * 4);
     if (pixels == NULL) {
         fprintf(stderr, "gears: out of memory\n");
         return 1;
     }
+    path[0] = '\0';
     for (k = 1; k <= frames; k++) {
-        char path[4096];
         double t0 = demo_now();
         double elapsed;
         draw();
         render_seconds += demo_now() - t0;
         if (demo_report_error("gears", "rendering"))
             break;
-        demo_frame_name(path, sizeof path, base, k, frames > 1);
+        demo_frame_name(path, sizeof path, base, k - 1, frames > 1);
+        if (k == 1)
+            snprintf(first, sizeof first, "%s", path);
         if (!demo_save_frame("gears", path, o->width, o->height, pixels))
             break;
         angle += 2.0; /* idle() of the original: one step per frame */
@@ -387,6 +447,7 @@ static int run_headless(const struct options *o)
     printf("gears: %d frame%s of %dx%d in %.3f s = %.2f fps (rendering only)\n", frames,
            frames == 1 ? "" : "s", o->width, o->height, render_seconds,
            frames / render_seconds);
+    demo_report_written("gears", first, path);
     return 0;
 }
 
@@ -401,6 +462,7 @@ static void key(GLFWwindow *window, int k, int scancode, int action, int mods)
         return;
     switch (k) {
     case GLFW_KEY_ESCAPE:
+    case GLFW_KEY_Q:
         glfwSetWindowShouldClose(window, GLFW_TRUE);
         break;
     case GLFW_KEY_UP:
@@ -505,13 +567,17 @@ static int run_window(const struct options *o)
             title_time = t;
         }
     }
-    /* --out in a window: keep the last frame shown. */
+    /* --out in a window: keep the last frame shown (the name was checked
+     * before the window opened). */
     char name[4096];
     if (status == 0 && o->out != NULL && pixels != NULL &&
-        !rtuSaveImage(demo_output_name(name, sizeof name, o->out, "gears.png", "gears"), width,
-                      height, RT_UNSIGNED_BYTE, pixels)) {
-        fprintf(stderr, "gears: %s\n", rtuImageError());
-        status = 1;
+        demo_output_name(name, sizeof name, o->out, "gears.png", "gears") != NULL) {
+        if (!rtuSaveImage(name, width, height, RT_UNSIGNED_BYTE, pixels)) {
+            fprintf(stderr, "gears: %s\n", rtuImageError());
+            status = 1;
+        } else {
+            demo_report_written("gears", name, name);
+        }
     }
     free(pixels);
     glfwDestroyWindow(window);
@@ -525,20 +591,25 @@ int main(int argc, char **argv)
 {
     struct options o;
     char config[32];
+    char checked[4096];
     RTcontext context;
-    int status = -1;
+    int status = -1, info = 0;
 
-    if (!parse_options(argc, argv, &o))
-        return 2;
+    if (!parse_options(argc, argv, &o, &info, &status))
+        return status;
+    status = -1; /* not run yet */
     if (o.threads > 0)
         snprintf(config, sizeof config, "threads=%d", o.threads);
     else
         config[0] = '\0';
-    context = rtCreateContext(config);
-    if (context == NULL || !rtMakeCurrent(context)) {
-        fprintf(stderr, "gears: cannot create a Tracelist context (\"%s\")\n", config);
+    if (info)
+        return demo_print_info("gears", config);
+    /* Refuse an unwritable --out before any work. */
+    if (o.out != NULL && demo_output_name(checked, sizeof checked, o.out, NULL, "gears") == NULL)
+        return 2;
+    context = demo_create_context("gears", config);
+    if (context == NULL)
         return 1;
-    }
 
     init(o.eye_light);
     reshape(o.width, o.height);

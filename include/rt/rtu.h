@@ -17,14 +17,19 @@ extern "C" {
 #endif
 
 /* Multiplies the current matrix by a perspective projection (gluPerspective).
- * fovy in degrees; records RT_INVALID_VALUE (through the core entry point
- * it calls) for fovy outside (0, 180), aspect <= 0, zNear <= 0 or
+ * fovy in degrees; records RT_INVALID_VALUE against rtuPerspective
+ * (rtRecordError) for fovy outside (0, 180), aspect <= 0, zNear <= 0 or
  * zFar <= zNear, and then changes nothing. */
 RTAPI void rtuPerspective(RTdouble fovy, RTdouble aspect, RTdouble zNear, RTdouble zFar);
 
+/* The text of an error code from rtGetError (gluErrorString): "invalid
+ * value" for RT_INVALID_VALUE, ...; NULL for a value that is not an error
+ * code.  Needs no context. */
+RTAPI const char *rtuErrorString(RTenum error);
+
 /* Multiplies the current matrix by a viewing transform (gluLookAt).  A
  * degenerate frame (eye == center, or up parallel to the view direction)
- * changes nothing and records RT_INVALID_VALUE. */
+ * changes nothing and records RT_INVALID_VALUE against rtuLookAt. */
 RTAPI void rtuLookAt(RTdouble eyeX, RTdouble eyeY, RTdouble eyeZ, RTdouble centerX,
                      RTdouble centerY, RTdouble centerZ, RTdouble upX, RTdouble upY,
                      RTdouble upZ);

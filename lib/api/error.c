@@ -83,6 +83,40 @@ void rtErrorCallback(RTerrorcallback callback, void *user)
     ctx->error_user = callback ? user : NULL;
 }
 
+/*
+ * For layered libraries (rtu, as GLU relies on GL's error state): the
+ * error is recorded as if `function` had failed, with the same rules as
+ * any entry point: the first error sticks, the callback and
+ * TRACELIST_DEBUG see "function: message".  Between rtBegin and rtEnd the
+ * core's first check wins and RT_INVALID_OPERATION is recorded instead,
+ * so a layered call checks in the same order as a core one.
+ */
+void rtRecordError(RTenum error, const char *function, const char *message)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx)
+        return;
+    switch (error) {
+    case RT_INVALID_ENUM:
+    case RT_INVALID_VALUE:
+    case RT_INVALID_OPERATION:
+    case RT_STACK_OVERFLOW:
+    case RT_STACK_UNDERFLOW:
+    case RT_OUT_OF_MEMORY:
+        break;
+    default:
+        rt_error(ctx, RT_INVALID_ENUM, "rtRecordError(error=0x%x)", error);
+        return;
+    }
+    if (function == NULL || function[0] == '\0') {
+        rt_error(ctx, RT_INVALID_VALUE, "rtRecordError: function is NULL or empty");
+        return;
+    }
+    if (rt_check_outside_begin(ctx, function))
+        return;
+    rt_error(ctx, error, "%s: %s", function, message != NULL ? message : error_name(error));
+}
+
 int rt_check_outside_begin(struct rt_context *ctx, const char *caller)
 {
     if (!ctx->block.active)

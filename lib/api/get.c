@@ -11,7 +11,9 @@
 
 #include "api/context.h"
 
-#define RT_VERSION_STRING "0.1.0 Tracelist"
+/* GL form: "<version> <vendor-specific>"; the numbers come from the
+ * generated rt_version.h, so the string cannot drift from the package. */
+#define RT_VERSION_STRING_FULL RT_VERSION_STRING " Tracelist"
 
 const char *rtGetString(RTenum name)
 {
@@ -24,7 +26,7 @@ const char *rtGetString(RTenum name)
     case RT_RENDERER:
         return "Tracelist CPU ray tracer (binned SAH BVH, two-level, pthreads)";
     case RT_VERSION:
-        return RT_VERSION_STRING;
+        return RT_VERSION_STRING_FULL;
     case RT_EXTENSIONS:
         return "";
     case RT_CONFIGURATION:

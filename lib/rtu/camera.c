@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * camera.c - rtuPerspective and rtuLookAt, the camera helpers of GLU.
  *
@@ -13,20 +14,19 @@
  * Matrices are column-major as in rt.h: element (row r, column c) is
  * m[c*4 + r].
  *
- * Invalid arguments.  rtu is built only on rt.h, which has no entry point
- * for recording an arbitrary error, so rtu makes the core record it: on
- * invalid input it calls rtMultMatrixd with an all-NaN matrix, which the
- * core rejects with RT_INVALID_VALUE leaving the matrix unchanged.  This is
- * the same code an application would get by passing the broken matrix
- * itself, checked in the same order (a call inside rtBegin records
- * RT_INVALID_OPERATION first), and it reaches the error callback like any
- * other error; the message names rtMultMatrixd, the entry point that
- * recorded it.  GLU's own versions return silently on such input.
+ * Invalid arguments are reported against the rtu function itself, through
+ * rtRecordError (rtu uses only rt.h): RT_INVALID_VALUE with a message that
+ * starts with "rtuPerspective" or "rtuLookAt", and nothing changes.  Inside
+ * rtBegin, rtRecordError records RT_INVALID_OPERATION instead, the order of
+ * checks of every core entry point.  A matrix whose elements overflow is
+ * refused here too, before the core sees it.  GLU's own versions return
+ * silently on such input.
  */
 #include <rt/rt.h>
 #include <rt/rtu.h>
 
 #include <math.h>
+#include <stdio.h>
 
 /*
  * Smallest sine of the angle between the view direction and the up vector
@@ -36,14 +36,26 @@
  */
 #define RTU_LOOKAT_MIN_SINE 1e-12
 
-/* Makes the core record RT_INVALID_VALUE for an invalid rtu call. */
-static void record_invalid_value(void)
+/* Records RT_INVALID_VALUE against `function` with a formatted reason. */
+static void invalid_value(const char *function, const char *what, const RTdouble *args, int n)
 {
-    RTdouble m[16];
-    int i;
-    for (i = 0; i < 16; i++)
-        m[i] = NAN;
-    rtMultMatrixd(m);
+    char message[200];
+    int used = snprintf(message, sizeof message, "%s (", what);
+    for (int i = 0; i < n && used > 0 && (size_t)used < sizeof message; i++)
+        used += snprintf(message + used, sizeof message - (size_t)used, "%s%g", i ? ", " : "",
+                         args[i]);
+    if (used > 0 && (size_t)used < sizeof message)
+        snprintf(message + used, sizeof message - (size_t)used, ")");
+    rtRecordError(RT_INVALID_VALUE, function, message);
+}
+
+/* RT_TRUE when all 16 elements are finite (an overflowing product is not). */
+static int finite_matrix(const RTdouble m[16])
+{
+    for (int i = 0; i < 16; i++)
+        if (!isfinite(m[i]))
+            return 0;
+    return 1;
 }
 
 /*
@@ -93,18 +105,24 @@ void rtuPerspective(RTdouble fovy, RTdouble aspect, RTdouble zNear, RTdouble zFa
     /* Written so that NaN fails every test. */
     if (!(fovy > 0.0 && fovy < 180.0) || !(aspect > 0.0) || !(zNear > 0.0) ||
         !(zFar > zNear) || !isfinite(aspect) || !isfinite(zFar)) {
-        record_invalid_value();
+        const RTdouble args[4] = {fovy, aspect, zNear, zFar};
+        invalid_value("rtuPerspective",
+                      "needs 0 < fovy < 180, aspect > 0, 0 < zNear < zFar, all finite", args, 4);
         return;
     }
     half_angle = fovy * 0.5 * (3.14159265358979323846 / 180.0);
     cotangent = cos(half_angle) / sin(half_angle);
     depth = zFar - zNear;
-    /* Elements that overflow become non-finite and the core refuses them. */
     m[0] = cotangent / aspect;
     m[5] = cotangent;
     m[10] = -(zFar + zNear) / depth;
     m[11] = -1.0;
     m[14] = -2.0 * zNear * zFar / depth;
+    if (!finite_matrix(m)) {
+        const RTdouble args[4] = {fovy, aspect, zNear, zFar};
+        invalid_value("rtuPerspective", "the projection matrix overflows", args, 4);
+        return;
+    }
     rtMultMatrixd(m);
 }
 
@@ -128,12 +146,14 @@ void rtuLookAt(RTdouble eyeX, RTdouble eyeY, RTdouble eyeZ, RTdouble centerX,
     up[2] = upZ;
     if (!isfinite(eyeX) || !isfinite(eyeY) || !isfinite(eyeZ) || !normalize3(forward) ||
         !normalize3(up)) {
-        record_invalid_value();
+        const RTdouble args[9] = {eyeX, eyeY, eyeZ, centerX, centerY, centerZ, upX, upY, upZ};
+        invalid_value("rtuLookAt", "needs finite arguments, eye != center and up != 0", args, 9);
         return;
     }
     cross3(forward, up, side);
     if (!(sqrt(dot3(side, side)) >= RTU_LOOKAT_MIN_SINE) || !normalize3(side)) {
-        record_invalid_value();
+        const RTdouble args[9] = {eyeX, eyeY, eyeZ, centerX, centerY, centerZ, upX, upY, upZ};
+        invalid_value("rtuLookAt", "up is parallel to the view direction", args, 9);
         return;
     }
     cross3(side, forward, true_up);
@@ -155,5 +175,10 @@ void rtuLookAt(RTdouble eyeX, RTdouble eyeY, RTdouble eyeZ, RTdouble centerX,
     m[13] = -dot3(true_up, eye);
     m[14] = dot3(forward, eye);
     m[15] = 1.0;
+    if (!finite_matrix(m)) {
+        const RTdouble args[9] = {eyeX, eyeY, eyeZ, centerX, centerY, centerZ, upX, upY, upZ};
+        invalid_value("rtuLookAt", "the viewing matrix overflows", args, 9);
+        return;
+    }
     rtMultMatrixd(m);
 }
