@@ -129,12 +129,12 @@ static void errors(void)
     CHECK_INT(TRIANGLES_OF(rtuSphere(NULL, 1.0, 8, 4)), 0);
     CHECK_ERR(RT_INVALID_VALUE);
 
-    /* Bad enums: recorded through rtGetString(0); the option is unchanged
+    /* Bad enums: recorded against the rtu function; the option is unchanged
      * (the draw style stays RTU_FILL, so drawing works). */
     tu_reset_captured();
     rtuQuadricNormals(q, RTU_FILL);
     CHECK_ERR(RT_INVALID_ENUM);
-    CHECK_MSG("rtGetString");
+    CHECK_MSG("rtuQuadricNormals");
     rtuQuadricOrientation(q, RTU_SMOOTH);
     CHECK_ERR(RT_INVALID_ENUM);
     rtuQuadricDrawStyle(q, RTU_OUTSIDE);
@@ -142,11 +142,11 @@ static void errors(void)
     CHECK_INT(TRIANGLES_OF(rtuDisk(q, 0.5, 1.0, 4, 1)), 8);
     CHECK_NO_ERR();
 
-    /* Bad values: recorded through rtMultMatrixd; nothing drawn. */
+    /* Bad values: recorded against the rtu function; nothing drawn. */
     tu_reset_captured();
     CHECK_INT(TRIANGLES_OF(rtuSphere(q, -1.0, 8, 4)), 0);
     CHECK_ERR(RT_INVALID_VALUE);
-    CHECK_MSG("rtMultMatrixd");
+    CHECK_MSG("rtuSphere");
     CHECK_INT(TRIANGLES_OF(rtuSphere(q, 1.0, 1, 4)), 0);
     CHECK_ERR(RT_INVALID_VALUE);
     CHECK_INT(TRIANGLES_OF(rtuSphere(q, 1.0, 8, 0)), 0);
@@ -171,6 +171,7 @@ static void errors(void)
     CHECK_ERR(RT_INVALID_VALUE);
     CHECK_INT(TRIANGLES_OF(rtuSolidTorus(0.5, 1.0, 0, 8)), 0);
     CHECK_ERR(RT_INVALID_VALUE);
+    CHECK_MSG("rtuSolidTorus");
     CHECK_INT(TRIANGLES_OF(rtuSolidTeapot(NAN)), 0);
     CHECK_ERR(RT_INVALID_VALUE);
     CHECK_INT(TRIANGLES_OF(rtuSolidSphere(1.0, 1, 1)), 0);
@@ -186,8 +187,8 @@ static void errors(void)
             /* In an object. */
             CHECK_INT(TRIANGLES_OF(rtuSphere(q, 1.0, 8, 4)), 0);
             CHECK_ERR(RT_INVALID_OPERATION);
-            /* In an object with an enabled vertex array (the empty draw
-             * rtu uses first draws nothing there). */
+            CHECK_MSG("rtuSphere");
+            /* In an object with an enabled vertex array. */
             rtEnableClientState(RT_VERTEX_ARRAY);
             rtVertexPointer(3, RT_FLOAT, 0, dummy);
             CHECK_INT(TRIANGLES_OF(rtuCylinder(q, 1.0, 1.0, 1.0, 8, 1)), 0);

@@ -114,14 +114,16 @@ void demo_usage_error(const char *program, const char *fmt, ...)
 
 void *demo_create_context(const char *program, const char *config)
 {
-    RTcontext context = rtCreateContext(config);
-    if (context == NULL || !rtMakeCurrent(context)) {
-        fprintf(stderr,
-                "%s: cannot create a Tracelist context with configuration \"%s\" "
-                "(TRACELIST_DEBUG=1 may say more)\n",
-                program, config);
-        if (context != NULL)
-            rtDestroyContext(context);
+    char reason[RT_REASON_SIZE];
+    RTcontext context = rtCreateContextWithReason(config, (RTsizei)sizeof reason, reason);
+    if (context == NULL) {
+        fprintf(stderr, "%s: cannot create a Tracelist context with configuration \"%s\": %s\n",
+                program, config, reason);
+        return NULL;
+    }
+    if (!rtMakeCurrent(context)) {
+        fprintf(stderr, "%s: cannot make the Tracelist context current\n", program);
+        rtDestroyContext(context);
         return NULL;
     }
     return context;

@@ -46,7 +46,7 @@ void rtuSolidCube(RTdouble size)
     float h;
     int i, k;
     if (!(size >= 0.0) || !isfinite(size)) {
-        rtu_record_error(RT_INVALID_VALUE);
+        rtu_record_error(RT_INVALID_VALUE, "rtuSolidCube", "size must be finite and >= 0");
         return;
     }
     h = (float)(size / 2.0);
@@ -78,7 +78,8 @@ void rtuSolidTorus(RTdouble innerRadius, RTdouble outerRadius, RTint sides, RTin
     int i, j;
     if (sides < 1 || rings < 1 || !(innerRadius >= 0.0) || !(outerRadius >= 0.0) ||
         !isfinite(innerRadius) || !isfinite(outerRadius)) {
-        rtu_record_error(RT_INVALID_VALUE);
+        rtu_record_error(RT_INVALID_VALUE, "rtuSolidTorus",
+                         "sides and rings must be >= 1, the radii finite and >= 0");
         return;
     }
     for (i = rings - 1; i >= 0; i--) {

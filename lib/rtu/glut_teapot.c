@@ -121,7 +121,7 @@ void rtuSolidTeapot(RTdouble size)
     const double half_size = 0.5 * size;
     int patch, copy, j, k, c;
     if (!(size >= 0.0) || !isfinite(size)) {
-        rtu_record_error(RT_INVALID_VALUE);
+        rtu_record_error(RT_INVALID_VALUE, "rtuSolidTeapot", "size must be finite and >= 0");
         return;
     }
     for (patch = 0; patch < RTU_TEAPOT_PATCHES; patch++) {

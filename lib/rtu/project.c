@@ -36,7 +36,8 @@ void rtuPickMatrix(RTdouble x, RTdouble y, RTdouble deltaX, RTdouble deltaY,
 {
     RTdouble m[16] = {0};
     if (!viewport || !(deltaX > 0.0) || !(deltaY > 0.0) || viewport[2] <= 0 || viewport[3] <= 0) {
-        rtu_record_error(RT_INVALID_VALUE);
+        rtu_record_error(RT_INVALID_VALUE, "rtuPickMatrix",
+                         "viewport must be non-NULL with a positive size, deltas > 0");
         return;
     }
     /* gluPickMatrix: translate the region's centre to the centre of the

@@ -21,14 +21,16 @@ void rtu_quadric_defaults(struct rtu_quadric *q)
     q->texture = RT_FALSE;
 }
 
-int rtu_quadric_drawable(const struct rtu_quadric *q, int values_ok)
+int rtu_quadric_drawable(const char *caller, const struct rtu_quadric *q, int values_ok)
 {
     if (!q || !values_ok) {
-        rtu_record_error(RT_INVALID_VALUE);
+        rtu_record_error(RT_INVALID_VALUE, caller,
+                         q ? "a size, count or radius is out of range" : "quadric is NULL");
         return 0;
     }
     if (q->draw_style != RTU_FILL) {
-        rtu_record_error(RT_INVALID_OPERATION);
+        rtu_record_error(RT_INVALID_OPERATION, caller,
+                         "draw style RTU_LINE, RTU_POINT and RTU_SILHOUETTE need line primitives");
         return 0;
     }
     return 1;
@@ -50,11 +52,11 @@ void rtuDeleteQuadric(RTUquadric *quadric)
 void rtuQuadricNormals(RTUquadric *quadric, RTenum normals)
 {
     if (!quadric) {
-        rtu_record_error(RT_INVALID_VALUE);
+        rtu_record_error(RT_INVALID_VALUE, "rtuQuadricNormals", "quadric is NULL");
         return;
     }
     if (normals != RTU_SMOOTH && normals != RTU_FLAT && normals != RTU_NONE) {
-        rtu_record_error(RT_INVALID_ENUM);
+        rtu_record_error(RT_INVALID_ENUM, "rtuQuadricNormals", NULL);
         return;
     }
     quadric->normals = normals;
@@ -63,11 +65,11 @@ void rtuQuadricNormals(RTUquadric *quadric, RTenum normals)
 void rtuQuadricOrientation(RTUquadric *quadric, RTenum orientation)
 {
     if (!quadric) {
-        rtu_record_error(RT_INVALID_VALUE);
+        rtu_record_error(RT_INVALID_VALUE, "rtuQuadricOrientation", "quadric is NULL");
         return;
     }
     if (orientation != RTU_OUTSIDE && orientation != RTU_INSIDE) {
-        rtu_record_error(RT_INVALID_ENUM);
+        rtu_record_error(RT_INVALID_ENUM, "rtuQuadricOrientation", NULL);
         return;
     }
     quadric->orientation = orientation;
@@ -76,7 +78,7 @@ void rtuQuadricOrientation(RTUquadric *quadric, RTenum orientation)
 void rtuQuadricTexture(RTUquadric *quadric, RTboolean textureCoords)
 {
     if (!quadric) {
-        rtu_record_error(RT_INVALID_VALUE);
+        rtu_record_error(RT_INVALID_VALUE, "rtuQuadricTexture", "quadric is NULL");
         return;
     }
     /* GLU stores the GLboolean as given; any non-zero value means yes. */
@@ -86,12 +88,12 @@ void rtuQuadricTexture(RTUquadric *quadric, RTboolean textureCoords)
 void rtuQuadricDrawStyle(RTUquadric *quadric, RTenum drawStyle)
 {
     if (!quadric) {
-        rtu_record_error(RT_INVALID_VALUE);
+        rtu_record_error(RT_INVALID_VALUE, "rtuQuadricDrawStyle", "quadric is NULL");
         return;
     }
     if (drawStyle != RTU_FILL && drawStyle != RTU_LINE && drawStyle != RTU_POINT &&
         drawStyle != RTU_SILHOUETTE) {
-        rtu_record_error(RT_INVALID_ENUM);
+        rtu_record_error(RT_INVALID_ENUM, "rtuQuadricDrawStyle", NULL);
         return;
     }
     /* Accepted now; drawing in a style other than RTU_FILL records

@@ -97,7 +97,7 @@ void rtuCylinder(RTUquadric *quadric, RTdouble baseRadius, RTdouble topRadius, R
         float delta = (float)(baseRadius - topRadius);
         ok = (float)sqrt(delta * delta + height * height) != 0.0f;
     }
-    if (!rtu_quadric_drawable(quadric, ok))
+    if (!rtu_quadric_drawable("rtuCylinder", quadric, ok))
         return;
     rtu_cylinder_fill(quadric, baseRadius, topRadius, height, slices, stacks);
 }

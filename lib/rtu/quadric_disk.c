@@ -93,7 +93,7 @@ void rtuPartialDisk(RTUquadric *quadric, RTdouble innerRadius, RTdouble outerRad
 {
     if (slices >= RTU_QUADRIC_CACHE)
         slices = RTU_QUADRIC_CACHE - 1;
-    if (!rtu_quadric_drawable(quadric, slices >= 2 && loops >= 1 && outerRadius > 0.0 &&
+    if (!rtu_quadric_drawable("rtuPartialDisk", quadric, slices >= 2 && loops >= 1 && outerRadius > 0.0 &&
                                            innerRadius >= 0.0 && innerRadius <= outerRadius &&
                                            isfinite(outerRadius) && isfinite(startAngle) &&
                                            isfinite(sweepAngle)))

@@ -42,7 +42,7 @@ void rtu_quadric_defaults(struct rtu_quadric *q);
  * argument check, reported as RT_INVALID_VALUE before the draw style, in
  * GLU's order.  Returns 1 when drawing may go on.
  */
-int rtu_quadric_drawable(const struct rtu_quadric *q, int values_ok);
+int rtu_quadric_drawable(const char *caller, const struct rtu_quadric *q, int values_ok);
 
 /* The drawing functions, after the public entry points' checks. */
 void rtu_sphere_fill(const struct rtu_quadric *q, double radius, int slices, int stacks);

@@ -178,7 +178,7 @@ void rtuSphere(RTUquadric *quadric, RTdouble radius, RTint slices, RTint stacks)
         slices = RTU_QUADRIC_CACHE - 1;
     if (stacks >= RTU_QUADRIC_CACHE)
         stacks = RTU_QUADRIC_CACHE - 1;
-    if (!rtu_quadric_drawable(quadric, slices >= 2 && stacks >= 1 && radius >= 0.0 &&
+    if (!rtu_quadric_drawable("rtuSphere", quadric, slices >= 2 && stacks >= 1 && radius >= 0.0 &&
                                            isfinite(radius)))
         return;
     rtu_sphere_fill(quadric, radius, slices, stacks);
