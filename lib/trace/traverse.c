@@ -90,11 +90,20 @@ static inline int walk(const struct bvh *bvh, const float *tri, const struct tra
         } else {
             uint32_t left = node->first;
             uint32_t right = left + 1;
+            node_tests += 2;
+#if ISECT_PAIR_SSE
+            float t_pair[2];
+            const unsigned mask = isect_box_pair(&br, &nodes[left], box_limit, t_pair);
+            const int hit_left = mask & 1u;
+            const int hit_right = mask >> 1;
+            const float t_left = t_pair[0];
+            const float t_right = t_pair[1];
+#else
             float t_left;
             float t_right;
-            node_tests += 2;
             int hit_left = isect_box(&br, &nodes[left], box_limit, &t_left);
             int hit_right = isect_box(&br, &nodes[right], box_limit, &t_right);
+#endif
             if (hit_left && hit_right) {
                 if (t_right < t_left) {
                     stack[sp].node = left;
