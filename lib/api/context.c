@@ -88,6 +88,15 @@ static int parse_configuration(struct rt_context *ctx, const char *config)
         } else if (key_is(key, key_len, "bins")) {
             if (parse_int(value, value_len, 2, BVH_MAX_BINS, &ctx->build_params.bins))
                 return -1;
+        } else if (key_is(key, key_len, "isa")) {
+            /* auto: the best this CPU runs; a named ISA this build or
+             * CPU lacks is refused (it would not run). */
+            enum trace_isa isa;
+            if (key_is(value, value_len, "auto"))
+                ctx->kernels = trace_kernels_best();
+            else if (trace_isa_parse(value, value_len, &isa) ||
+                     !(ctx->kernels = trace_kernels_get(isa)))
+                return -1;
         } else if (key_is(key, key_len, "builder")) {
             if (key_is(value, value_len, "binned"))
                 ctx->build_params.builder = BVH_BUILDER_BINNED_SAH;
@@ -140,15 +149,16 @@ RTcontext rtCreateContext(const char *configuration)
     ctx->threads = online_cpus();
     ctx->build_threads = 1; /* paper 000 sec. 6: K set by the application */
     bvh_build_params_default(&ctx->build_params);
+    ctx->kernels = trace_kernels_best();
     if (parse_configuration(ctx, configuration)) {
         rt_free(ctx);
         return NULL;
     }
     snprintf(ctx->configuration, sizeof(ctx->configuration),
-             "threads=%d build_threads=%d bins=%d builder=%s toplevel=%s", ctx->threads,
+             "threads=%d build_threads=%d bins=%d builder=%s toplevel=%s isa=%s", ctx->threads,
              ctx->build_threads, ctx->build_params.bins,
              ctx->build_params.builder == BVH_BUILDER_SWEEP_SAH ? "sweep" : "binned",
-             ctx->toplevel_paper004 ? "paper004" : "binned");
+             ctx->toplevel_paper004 ? "paper004" : "binned", ctx->kernels->name);
     const char *debug = getenv("TRACELIST_DEBUG");
     ctx->debug_print = debug && *debug && strcmp(debug, "0") != 0;
 

@@ -20,6 +20,7 @@
 #include "scene/mesh.h"
 #include "scene/object.h"
 #include "scene/texture.h"
+#include "trace/kernels.h"
 
 #define RT_MAX_MODELVIEW_DEPTH 32 /* OpenGL's minimum, DESIGN.md */
 #define RT_MAX_PROJECTION_DEPTH 4 /* >= 2 required */
@@ -67,6 +68,9 @@ struct rt_context {
     /* Configuration (rtCreateContext). */
     int threads;
     struct bvh_build_params build_params;
+    /* The traversal kernels' ISA table (isa=, lib/trace/kernels.h):
+     * chosen here once, read by every trace of the context. */
+    const struct trace_kernels *kernels;
     char configuration[128];
 
     /* Errors (error.c). */

@@ -36,6 +36,8 @@ static int walk(const struct trace_scene *scene, const float org[3], const float
     const struct bvh *top = scene->top;
     if (!top || top->node_count == 0 || !(tmin < tmax))
         return 0;
+    const struct trace_kernels *kernels =
+        scene->kernels ? scene->kernels : trace_kernels_get(TRACE_ISA_SCALAR);
     /* One set-up per ray: the ray constants, and the box test's, which
      * every top-level box test below shares. */
     struct trace_ray ray;
@@ -82,7 +84,7 @@ static int walk(const struct trace_scene *scene, const float org[3], const float
                 else
                     trace_ray_init(&o_ray, o_org, o_dir, tmin);
                 if (any_hit) {
-                    if (trace_any(view.bvh, view.tri, &o_ray, best, &counters->object))
+                    if (kernels->any(view.bvh, view.tri, &o_ray, best, &counters->object))
                         return 1;
                     continue;
                 }
@@ -92,7 +94,7 @@ static int walk(const struct trace_scene *scene, const float org[3], const float
                 uint32_t index = top->prim_index[node->first + i];
                 float limit = found ? isect_next_up(best) : best;
                 struct trace_hit h;
-                if (trace_closest(view.bvh, view.tri, &o_ray, limit, &h, &counters->object) &&
+                if (kernels->closest(view.bvh, view.tri, &o_ray, limit, &h, &counters->object) &&
                     (!found || h.t < best || index < hit->instance)) {
                     best = h.t;
                     box_limit = best * ISECT_BOX_FAR_SCALE;
