@@ -26,6 +26,7 @@
 
 #include "trace/bvh_layout.h"
 #include "base/aabb.h"
+#include "trace/kernels.h"
 #include "trace/trace.h"
 
 /* ------------------------------------------------------------ options */
@@ -38,6 +39,7 @@ struct bench_options {
     const char *baseline; /* --baseline FILE: an earlier results.csv to compare with */
     const char *bart_dir; /* --bart-dir DIR: the BART scenes; NULL = environment, build */
     double tolerance;     /* --tolerance PCT: a drop beyond it is flagged */
+    const char *isa;      /* --isa NAME: our kernels' ISA table; NULL = the best */
     int argc;
     char **argv;
 };
@@ -233,6 +235,12 @@ double bench_run_parallel(bench_kernel_fn kernel, void *ctx, const struct bench_
                           struct bench_hit *hits, int threads);
 
 /* Kernels over our BVH (bench_trace.c).  ctx: const struct bench_accel *. */
+/* The ISA table (lib/trace/kernels.h) "ours" runs: the best this CPU
+ * runs unless bench_select_isa chose one (--isa).  Returns -1 when name
+ * is unknown or not runnable here. */
+const struct trace_kernels *bench_kernels(void);
+int bench_select_isa(const char *name);
+
 void bench_kernel_closest(void *ctx, const RTray *rays, uint32_t begin, uint32_t end,
                           struct bench_hit *hits);
 void bench_kernel_any(void *ctx, const RTray *rays, uint32_t begin, uint32_t end,

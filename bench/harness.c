@@ -19,6 +19,25 @@
 #include "base/timer.h"
 #include "bench.h"
 
+/* The benchmark's choice of ISA table, made once from the command line
+ * before any section runs (the benchmark is an application, not the
+ * library, so a file-scope choice is fine here). */
+static const struct trace_kernels *chosen_kernels;
+
+const struct trace_kernels *bench_kernels(void)
+{
+    return chosen_kernels ? chosen_kernels : trace_kernels_best();
+}
+
+int bench_select_isa(const char *name)
+{
+    enum trace_isa isa;
+    if (trace_isa_parse(name, strlen(name), &isa))
+        return -1;
+    chosen_kernels = trace_kernels_get(isa);
+    return chosen_kernels ? 0 : -1;
+}
+
 int bench_accel_build(struct bench_accel *acc, const struct bench_mesh *mesh,
                       const struct bvh_build_params *params)
 {
@@ -70,7 +89,7 @@ void bench_kernel_closest(void *ctx, const RTray *rays, uint32_t begin, uint32_t
         struct trace_ray ray;
         struct trace_hit h;
         trace_ray_init(&ray, r->org, r->dir, r->tmin);
-        if (trace_closest(&acc->bvh, acc->tri, &ray, r->tmax, &h, NULL)) {
+        if (bench_kernels()->closest(&acc->bvh, acc->tri, &ray, r->tmax, &h, NULL)) {
             hits[i].t = h.t;
             hits[i].prim = h.prim;
         } else {
@@ -88,7 +107,7 @@ void bench_kernel_any(void *ctx, const RTray *rays, uint32_t begin, uint32_t end
         const RTray *r = &rays[i];
         struct trace_ray ray;
         trace_ray_init(&ray, r->org, r->dir, r->tmin);
-        int occluded = trace_any(&acc->bvh, acc->tri, &ray, r->tmax, NULL);
+        int occluded = bench_kernels()->any(&acc->bvh, acc->tri, &ray, r->tmax, NULL);
         hits[i].t = occluded ? 0.0f : INFINITY;
         hits[i].prim = occluded ? 0 : BENCH_MISS;
     }

@@ -273,6 +273,8 @@ int report_open(const struct bench_options *opts)
 #else
     report_row("Embree|not built with Embree (RT_HAVE_EMBREE off)");
 #endif
+    report_row("traversal ISA (ours)|%s%s", bench_kernels()->name,
+               opts->isa ? " (--isa)" : " (the best this CPU runs)");
     report_row("timings|median of %d run%s", opts->runs, opts->runs == 1 ? "" : "s");
     report_row("command|`%s`", command);
     return 0;

@@ -50,7 +50,7 @@ static void usage(FILE *f)
     fprintf(f,
             "usage: rtbench [build|trace|embree|dynamic|bart|all] [--quick] [--runs N]\n"
             "               [--out DIR] [--mesh bumpy|gears|soup] [--baseline FILE]\n"
-            "               [--tolerance PCT] [--bart-dir DIR]\n"
+            "               [--tolerance PCT] [--bart-dir DIR] [--isa NAME]\n"
             "\n"
             "  build      BVH quality against build time per builder and bin count\n"
             "  trace      Mrays/s, trace_closest/trace_any directly and through rtTraceRays\n"
@@ -65,6 +65,8 @@ static void usage(FILE *f)
             "  --out DIR  write results.md, results.csv and PNG plots (gnuplot) to DIR\n"
             "  --baseline FILE  compare with an earlier results.csv; flag drops beyond\n"
             "             --tolerance PCT (default %.0f) and exit with status 2\n"
+            "  --isa NAME  our kernels' ISA table: scalar, sse4, avx2, avx512; default the\n"
+            "             best this CPU runs (API contexts always use their default)\n"
             "  --bart-dir DIR  the BART folder (kitchen/, robots/, museum/); default\n"
             "             $TRACELIST_BART_DIR, else the build's RT_BART_DIR\n",
 #ifdef RT_HAVE_EMBREE
@@ -124,6 +126,14 @@ int main(int argc, char **argv)
             i++;
         } else if (!strcmp(a, "--out") && value) {
             opts.out_dir = value;
+            i++;
+        } else if (!strcmp(a, "--isa") && value) {
+            if (bench_select_isa(value)) {
+                fprintf(stderr, "rtbench: --isa takes scalar, sse4, avx2 or avx512, one this "
+                                "CPU runs\n");
+                return 1;
+            }
+            opts.isa = value;
             i++;
         } else if (!strcmp(a, "--mesh") && value) {
             opts.mesh = value;

@@ -32,7 +32,10 @@ static void config_strings(void)
                                        " threads=2 , bins=8 ",
                                        "   ",
                                        "threads=10",
-                                       "build_threads=0"};
+                                       "build_threads=0",
+                                       "isa=scalar",
+                                       "isa=auto",
+                                       "threads=1 isa=scalar"};
     static const char *const bad[] = {"threads=0",    "threads=257", "threads=-1", "threads=",
                                       "threads=abc",  "threads=2x",  "bins=1",     "bins=257",
                                       "builder=foo",  "foo=1",       "threads",    "=2",
@@ -42,7 +45,9 @@ static void config_strings(void)
                                       "threads=2 threads=3", "bins=8,bins=8", "threads=01",
                                       "bins=08", "threads=+2", " , ", ",", "threads=1,",
                                       ",threads=1", "threads=1,,bins=4", "threads=1, ,bins=4",
-                                      "threads =1", "threads= 1", "build_threads=00"};
+                                      "threads =1", "threads= 1", "build_threads=00",
+                                      "isa=", "isa=sse2", "isa=AVX2", "isa=avx2x",
+                                      "isa=scalar isa=scalar"};
     size_t i;
     tu_section("configuration strings");
     for (i = 0; i < sizeof good / sizeof good[0]; i++) {
@@ -144,6 +149,27 @@ static void effective_configuration(void)
         CHECK(strstr(s, "threads=2") != NULL);
         CHECK(strstr(s, "bins=16") != NULL);
         CHECK(strstr(s, "builder=binned") != NULL);
+    }
+    tu_destroy_context(ctx);
+
+    /* isa=: the traversal kernels' instruction set, reported back; the
+     * default is the best this machine runs, never below scalar. */
+    ctx = tu_make_context("threads=1 isa=scalar");
+    s = rtGetString(RT_CONFIGURATION);
+    CHECK(s != NULL && strstr(s, "isa=scalar") != NULL);
+    tu_destroy_context(ctx);
+    ctx = tu_make_context("threads=1");
+    s = rtGetString(RT_CONFIGURATION);
+    CHECK(s != NULL && (strstr(s, "isa=scalar") || strstr(s, "isa=sse4") ||
+                        strstr(s, "isa=avx2") || strstr(s, "isa=avx512")));
+    if (s) {
+        /* The reported ISA is accepted back, and gives the same string. */
+        char config[160];
+        const char *isa = strstr(s, "isa=");
+        snprintf(config, sizeof(config), "threads=1 %s", isa ? isa : "");
+        RTcontext again = rtCreateContext(config);
+        CHECK(again != NULL);
+        rtDestroyContext(again);
     }
     tu_destroy_context(ctx);
 

@@ -64,6 +64,15 @@ int tu_expect_error(RTenum code, const char *file, int line, const char *expr)
 
 RTcontext tu_make_context(const char *config)
 {
+    /* RT_TEST_ISA=scalar|sse4|avx2|avx512|auto appends isa= to every
+     * configuration: the CI hook that runs the query and stability tests
+     * under each traversal ISA table (conformance/CMakeLists.txt). */
+    char with_isa[512];
+    const char *isa = getenv("RT_TEST_ISA");
+    if (isa && *isa) {
+        snprintf(with_isa, sizeof(with_isa), "%s isa=%s", config ? config : "", isa);
+        config = with_isa;
+    }
     RTcontext ctx = rtCreateContext(config);
     if (!ctx) {
         fprintf(stderr, "fatal: rtCreateContext(\"%s\") returned NULL\n", config ? config : "(null)");

@@ -91,8 +91,9 @@ static int parse_configuration(struct rt_context *ctx, const char *config, char 
                                size_t reason_size)
 {
     static const char *const keys[] = {"threads", "toplevel", "build_threads", "bins",
-                                       "builder"};
-    int seen[5] = {0, 0, 0, 0, 0};
+                                       "builder", "isa"};
+    enum { KEY_COUNT = sizeof keys / sizeof keys[0] };
+    int seen[KEY_COUNT] = {0};
     const char *p = config;
     int need_item = 0; /* after a comma: an item must follow */
     int item_number = 0;
@@ -119,10 +120,10 @@ static int parse_configuration(struct rt_context *ctx, const char *config, char 
         item_number++;
         need_item = 0;
         int k;
-        for (k = 0; k < 5; k++)
+        for (k = 0; k < KEY_COUNT; k++)
             if (key_is(key, key_len, keys[k]))
                 break;
-        if (k == 5)
+        if (k == KEY_COUNT)
             return config_fail(reason, reason_size, "unknown key '%.*s'", (int)key_len, key);
         if (seen[k]++)
             return config_fail(reason, reason_size, "key '%s' is given twice", keys[k]);
@@ -149,6 +150,20 @@ static int parse_configuration(struct rt_context *ctx, const char *config, char 
             lo = 2, hi = BVH_MAX_BINS;
             bad = parse_int(value, value_len, lo, hi, &ctx->build_params.bins);
             break;
+        case 5: {
+            /* auto: the best this CPU runs; a named ISA this build or
+             * CPU lacks is refused (it would not run). */
+            enum trace_isa isa;
+            if (key_is(value, value_len, "auto"))
+                ctx->kernels = trace_kernels_best();
+            else if (trace_isa_parse(value, value_len, &isa))
+                bad = 1, expect = "auto, scalar, sse4, avx2 or avx512";
+            else if (!(ctx->kernels = trace_kernels_get(isa)))
+                return config_fail(reason, reason_size,
+                                   "isa='%.*s': this build or this CPU cannot run it",
+                                   (int)value_len, value);
+            break;
+        }
         default:
             if (key_is(value, value_len, "binned"))
                 ctx->build_params.builder = BVH_BUILDER_BINNED_SAH;
@@ -239,15 +254,16 @@ RTcontext rtCreateContextWithReason(const char *configuration, RTsizei bufSize, 
     ctx->threads = online_cpus();
     ctx->build_threads = 1; /* paper 000 sec. 6: K set by the application */
     bvh_build_params_default(&ctx->build_params);
+    ctx->kernels = trace_kernels_best();
     if (parse_configuration(ctx, configuration, reason, reason_size)) {
         rt_free(ctx);
         return NULL;
     }
     snprintf(ctx->configuration, sizeof(ctx->configuration),
-             "threads=%d build_threads=%d bins=%d builder=%s toplevel=%s", ctx->threads,
+             "threads=%d build_threads=%d bins=%d builder=%s toplevel=%s isa=%s", ctx->threads,
              ctx->build_threads, ctx->build_params.bins,
              ctx->build_params.builder == BVH_BUILDER_SWEEP_SAH ? "sweep" : "binned",
-             ctx->toplevel_cellsplit ? "cellsplit" : "binned");
+             ctx->toplevel_cellsplit ? "cellsplit" : "binned", ctx->kernels->name);
     const char *debug = getenv("TRACELIST_DEBUG");
     ctx->debug_print = debug && *debug && strcmp(debug, "0") != 0;
 

@@ -16,6 +16,7 @@
 #include "render/render.h"
 #include "scene/recording.h"
 #include "scene/scene.h"
+#include "trace/kernels.h"
 
 #define API_MAX_MODELVIEW_DEPTH 32 /* OpenGL's minimum, DESIGN.md */
 #define API_MAX_PROJECTION_DEPTH 4 /* >= 2 required */
@@ -43,6 +44,9 @@ struct rt_context {
     /* Configuration (rtCreateContext). */
     int threads;
     struct bvh_build_params build_params;
+    /* The traversal kernels' ISA table (isa=, lib/trace/kernels.h):
+     * chosen here once, read by every trace of the context. */
+    const struct trace_kernels *kernels;
     char configuration[128];
 
     /* Errors (error.c). */

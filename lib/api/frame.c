@@ -76,6 +76,7 @@ void rt_render_job(struct rt_context *ctx, struct render_job *job)
     job->textures = &ctx->scene.textures;
     job->pool = rt_context_pool(ctx);
     job->threads = rt_pool_threads(job->pool);
+    job->kernels = ctx->kernels;
 }
 
 void rtRenderFrame(void)

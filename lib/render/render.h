@@ -88,6 +88,7 @@ struct render_job {
     const struct scene_textures *textures;
     struct rt_pool *pool;
     int threads;
+    const struct trace_kernels *kernels; /* the context's ISA table; NULL: scalar */
 };
 
 /* Per-worker counters on their own cache lines. */

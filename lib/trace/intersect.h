@@ -34,6 +34,15 @@
 
 #include "trace/trace.h"
 
+/* isect_box_pair tests two sibling boxes at once with SSE2 (the x86-64
+ * baseline); elsewhere traversal calls isect_box twice. */
+#if defined(__SSE2__) && !defined(RT_NO_SIMD)
+#include <emmintrin.h>
+#define ISECT_PAIR_SSE 1
+#else
+#define ISECT_PAIR_SSE 0
+#endif
+
 /*
  * Ize 2013: with the three roundings of a slab distance ((b - o) * inv,
  * inv itself rounded), t_far * (1 + 2 gamma(3)) is never below the exact
@@ -64,6 +73,21 @@ static inline float isect_next_up(float f)
     return f;
 }
 
+/* fminf and fmaxf as the library computed them before they were inlined
+ * (glibc on x86-64: minss/maxss, so the second argument on a tie, which
+ * decides the sign of a zero result), without the libm call through the
+ * PLT that GCC emits for them in the triangle loop.  Only used where
+ * neither argument can be NaN.  These are also exactly one minss/maxss. */
+static inline float isect_min(float a, float b)
+{
+    return a < b ? a : b;
+}
+
+static inline float isect_max(float a, float b)
+{
+    return a > b ? a : b;
+}
+
 /* The slab test's per-ray constants, hoisted out of traversal loops.  For
  * each axis, the byte offsets in a box of the bound the ray enters
  * through and the one it leaves through: the max for a negative
@@ -76,6 +100,16 @@ struct isect_box_ray {
     uint32_t near_offset[3];
     uint32_t far_offset[3];
     float tmin;
+#if ISECT_PAIR_SSE
+    /* isect_box_pair's copies: xyz and a zero lane for the node's
+     * first/count word, and all-ones lanes where the direction is
+     * negative (the near bound is then the max). */
+    __m128 org4;
+    __m128 inv4;
+    __m128 neg4;
+    __m128 keep4;
+    __m128 tmin4;
+#endif
 };
 
 static inline void isect_box_ray_init(struct isect_box_ray *br, const struct trace_ray *ray)
@@ -90,6 +124,14 @@ static inline void isect_box_ray_init(struct isect_box_ray *br, const struct tra
         br->far_offset[k] = neg ? lo : hi;
     }
     br->tmin = ray->tmin;
+#if ISECT_PAIR_SSE
+    br->org4 = _mm_setr_ps(ray->org[0], ray->org[1], ray->org[2], 0.0f);
+    br->inv4 = _mm_setr_ps(ray->inv_dir[0], ray->inv_dir[1], ray->inv_dir[2], 0.0f);
+    /* The sign bit of each inverse, spread over its lane. */
+    br->neg4 = _mm_castsi128_ps(_mm_srai_epi32(_mm_castps_si128(br->inv4), 31));
+    br->keep4 = _mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0));
+    br->tmin4 = _mm_set1_ps(ray->tmin);
+#endif
 }
 
 static inline float isect_bound(const struct bvh_node *node, uint32_t offset)
@@ -115,17 +157,76 @@ static inline int isect_box(const struct isect_box_ray *br, const struct bvh_nod
                             float t_max, float *t_entry)
 {
     float t0 = br->tmin;
-    float t1 = t_max;
+    float t_far_min = INFINITY;
     for (int k = 0; k < 3; k++) {
         float t_near = (isect_bound(node, br->near_offset[k]) - br->org[k]) * br->inv_dir[k];
         float t_far = (isect_bound(node, br->far_offset[k]) - br->org[k]) * br->inv_dir[k];
-        t_far *= ISECT_BOX_FAR_SCALE; /* Ize 2013: the robust far bound */
         t0 = t_near > t0 ? t_near : t0;
-        t1 = t_far < t1 ? t_far : t1;
+        t_far_min = t_far < t_far_min ? t_far : t_far_min;
     }
+    /* Ize 2013's robust far bound, applied once to the smallest far
+     * distance instead of to each of the three: multiplying by a
+     * positive constant is monotone under rounding, so
+     * min_k(fl(t_k * s)) = fl(min_k(t_k) * s) bit for bit (NaN slabs are
+     * skipped either way; +inf stays +inf). */
+    float t1 = t_far_min * ISECT_BOX_FAR_SCALE;
+    t1 = t1 < t_max ? t1 : t_max;
     *t_entry = t0;
     return t0 <= t1;
 }
+
+/*
+ * The boxes of two sibling nodes (pair[0], pair[1]) at once: bit 0 of
+ * the result is isect_box's answer for pair[0], bit 1 for pair[1], and
+ * t_entry[0..1] their entry distances.  The same float operations as
+ * isect_box, lane by lane: each slab distance is the same (bound - org)
+ * * inv, the near/far choice is the same sign test, and min/max are
+ * minps/maxps, which return their second operand when the first is NaN,
+ * exactly the `a < b ? a : b` of isect_box, so a NaN slab is skipped as
+ * there.  Only the order in which the three slabs are folded differs;
+ * max and min do not care, except that an entry distance of zero may
+ * come out as -0 where isect_box gives +0 (or the reverse), which only
+ * ever meets comparisons (-0 == +0), never an answer.
+ */
+#if ISECT_PAIR_SSE
+static inline unsigned isect_box_pair(const struct isect_box_ray *br,
+                                      const struct bvh_node *pair, float t_max,
+                                      float t_entry[2])
+{
+    const __m128 keep = br->keep4;
+    const __m128 lmin = _mm_and_ps(_mm_loadu_ps(pair[0].aabb_min), keep);
+    const __m128 lmax = _mm_and_ps(_mm_loadu_ps(pair[0].aabb_max), keep);
+    const __m128 rmin = _mm_and_ps(_mm_loadu_ps(pair[1].aabb_min), keep);
+    const __m128 rmax = _mm_and_ps(_mm_loadu_ps(pair[1].aabb_max), keep);
+    const __m128 la = _mm_mul_ps(_mm_sub_ps(lmin, br->org4), br->inv4);
+    const __m128 lb = _mm_mul_ps(_mm_sub_ps(lmax, br->org4), br->inv4);
+    const __m128 ra = _mm_mul_ps(_mm_sub_ps(rmin, br->org4), br->inv4);
+    const __m128 rb = _mm_mul_ps(_mm_sub_ps(rmax, br->org4), br->inv4);
+    /* Swap min and max distances where the direction is negative. */
+    const __m128 ld = _mm_and_ps(_mm_xor_ps(la, lb), br->neg4);
+    const __m128 rd = _mm_and_ps(_mm_xor_ps(ra, rb), br->neg4);
+    const __m128 lnear = _mm_xor_ps(la, ld);
+    const __m128 lfar = _mm_xor_ps(lb, ld);
+    const __m128 rnear = _mm_xor_ps(ra, rd);
+    const __m128 rfar = _mm_xor_ps(rb, rd);
+    /* [Lx Rx Ly Ry] and [Lz Rz - -]. */
+    const __m128 near_xy = _mm_unpacklo_ps(lnear, rnear);
+    const __m128 near_z = _mm_unpackhi_ps(lnear, rnear);
+    const __m128 far_xy = _mm_unpacklo_ps(lfar, rfar);
+    const __m128 far_z = _mm_unpackhi_ps(lfar, rfar);
+    __m128 t0 = _mm_max_ps(near_xy, br->tmin4);
+    t0 = _mm_max_ps(_mm_movehl_ps(t0, t0), t0);
+    t0 = _mm_max_ps(near_z, t0);
+    __m128 t1 = _mm_min_ps(far_xy, _mm_set1_ps(INFINITY));
+    t1 = _mm_min_ps(_mm_movehl_ps(t1, t1), t1);
+    t1 = _mm_min_ps(far_z, t1);
+    t1 = _mm_mul_ps(t1, _mm_set1_ps(ISECT_BOX_FAR_SCALE));
+    t1 = _mm_min_ps(t1, _mm_set1_ps(t_max));
+    t_entry[0] = _mm_cvtss_f32(t0);
+    t_entry[1] = _mm_cvtss_f32(_mm_shuffle_ps(t0, t0, 1));
+    return (unsigned)_mm_movemask_ps(_mm_cmple_ps(t0, t1)) & 3u;
+}
+#endif
 
 /*
  * The ray's parameter interval through one slab of a triangle's box, as
@@ -152,8 +253,9 @@ static inline void isect_slab(float d0, float d1, float d2, float inv, float *t_
 }
 
 /*
- * Clamps a hit distance t into [t_lo, t_hi], the ray's interval through
- * the triangle's box as isect_box computes it (isect_slab;
+ * isect_clamp_interval computes [t_lo, t_hi], the ray's interval through
+ * the triangle's box as isect_box computes it, and isect_clamp_to_box
+ * clamps a hit distance t into it (isect_slab;
  * tag-graze-t-in-box).  When the interval is empty (the rounded edge
  * test accepted a ray that passes a rounding error beside the box) the
  * result is t_lo.  A NaN t gives t_hi or t_lo.
@@ -194,14 +296,18 @@ static inline void isect_slab(float d0, float d1, float d2, float inv, float *t_
  * then depends on Ize's far scaling, as for any box the exact ray
  * misses by a rounding error.
  */
-static inline float isect_clamp_to_box(const struct trace_ray *ray, float ax, float bx, float cx,
-                                       float ay, float by, float cy, float z_lo, float z_hi,
-                                       float t)
+static inline void isect_clamp_interval(const struct trace_ray *ray, float ax, float bx,
+                                        float cx, float ay, float by, float cy, float z_lo,
+                                        float z_hi, float *t_lo, float *t_hi)
 {
-    float t_lo = z_lo;
-    float t_hi = z_hi;
-    isect_slab(ax, bx, cx, ray->inv_dir[ray->kx], &t_lo, &t_hi);
-    isect_slab(ay, by, cy, ray->inv_dir[ray->ky], &t_lo, &t_hi);
+    *t_lo = z_lo;
+    *t_hi = z_hi;
+    isect_slab(ax, bx, cx, ray->inv_dir[ray->kx], t_lo, t_hi);
+    isect_slab(ay, by, cy, ray->inv_dir[ray->ky], t_lo, t_hi);
+}
+
+static inline float isect_clamp_to_box(float t_lo, float t_hi, float t)
+{
     t = t < t_hi ? t : t_hi;
     return t > t_lo ? t : t_lo;
 }
@@ -297,9 +403,22 @@ static inline int isect_triangle(const struct trace_ray *ray, const float v0[3],
     const float Az = ray->sz * az;
     const float Bz = ray->sz * bz;
     const float Cz = ray->sz * cz;
-    const float z_lo = fminf(Az, fminf(Bz, Cz));
-    const float z_hi = fmaxf(Az, fmaxf(Bz, Cz));
+    /* Az..Cz are not NaN here: a NaN depth comes from a NaN vertex
+     * coordinate, which made det NaN above. */
+    const float z_lo = isect_min(Az, isect_min(Bz, Cz));
+    const float z_hi = isect_max(Az, isect_max(Bz, Cz));
     if (!(z_hi >= ray->tmin && z_lo < t_max))
+        return 0;
+
+    /* The ray's interval through the triangle's box (isect_clamp_to_box
+     * below).  The final t is clamped to at least t_lo, so when t_lo is
+     * already at or beyond t_max the triangle cannot be accepted, whatever
+     * the double-precision work below would compute: rejecting it here
+     * gives the same answer without that work.  This is the common case
+     * of a candidate behind the closest hit so far. */
+    float t_lo, t_hi;
+    isect_clamp_interval(ray, ax, bx, cx, ay, by, cy, z_lo, z_hi, &t_lo, &t_hi);
+    if (!(t_lo < t_max))
         return 0;
     const float rcp_det = 1.0f / det;
 
@@ -355,8 +474,8 @@ static inline int isect_triangle(const struct trace_ray *ray, const float v0[3],
         const int longest = l1 >= l2 && l1 >= l3 ? 1 : (l2 >= l3 ? 2 : 3);
         const double lmax = longest == 1 ? l1 : (longest == 2 ? l2 : l3);
         /* One rounding of the sheared coordinates: 2^-24 of their size. */
-        float size = fmaxf(fmaxf(fabsf(Ax), fabsf(Ay)), fmaxf(fabsf(Bx), fabsf(By)));
-        size = fmaxf(size, fmaxf(fabsf(Cx), fabsf(Cy)));
+        float size = isect_max(isect_max(fabsf(Ax), fabsf(Ay)), isect_max(fabsf(Bx), fabsf(By)));
+        size = isect_max(size, isect_max(fabsf(Cx), fabsf(Cy)));
         const double rounding = ISECT_SLIVER_ROUNDINGS * 0x1p-24 * (double)size;
         double tp = NAN;
         if (n2 >= rounding * rounding * lmax) {
@@ -388,7 +507,7 @@ static inline int isect_triangle(const struct trace_ray *ray, const float v0[3],
         if (!isnan(tp))
             t = (float)tp;
     }
-    t = isect_clamp_to_box(ray, ax, bx, cx, ay, by, cy, z_lo, z_hi, t);
+    t = isect_clamp_to_box(t_lo, t_hi, t);
     if (!(t >= ray->tmin && t < t_max) || !isfinite(t))
         return 0;
 

@@ -38,5 +38,5 @@ void trace_ray_init(struct trace_ray *ray, const float org[3], const float dir[3
     /* Stored negated, see trace.h. */
     ray->sx = -dir[kx] / dir[kz];
     ray->sy = -dir[ky] / dir[kz];
-    ray->sz = 1.0f / dir[kz];
+    ray->sz = ray->inv_dir[kz]; /* 1 / dir[kz], already computed */
 }

@@ -7,6 +7,7 @@
 
 #include <math.h>
 #include <stddef.h>
+#include <string.h>
 
 /* The ray in object space, computed in double and rounded once. */
 static void to_object_space(const double m[12], const float org[3], const float dir[3],
@@ -35,8 +36,14 @@ static int walk(const struct trace_scene *scene, const float org[3], const float
     const struct bvh *top = scene->top;
     if (!top || top->node_count == 0 || !(tmin < tmax))
         return 0;
+    const struct trace_kernels *kernels =
+        scene->kernels ? scene->kernels : trace_kernels_get(TRACE_ISA_SCALAR);
+    /* One set-up per ray: the ray constants, and the box test's, which
+     * every top-level box test below shares. */
     struct trace_ray ray;
     trace_ray_init(&ray, org, dir, tmin);
+    struct isect_box_ray br;
+    isect_box_ray_init(&br, &ray);
 
     float best = tmax;
     float box_limit = tmax; /* as in traverse.c: widened once a hit is found */
@@ -49,7 +56,7 @@ static int walk(const struct trace_scene *scene, const float org[3], const float
     uint32_t node_index = 0;
     float t_entry;
     counters->top_node_tests++;
-    if (!trace_box(&ray, top->nodes[0].aabb_min, top->nodes[0].aabb_max, best, &t_entry))
+    if (!isect_box(&br, &top->nodes[0], best, &t_entry))
         return 0;
     for (;;) {
         const struct bvh_node *node = &top->nodes[node_index];
@@ -65,10 +72,19 @@ static int walk(const struct trace_scene *scene, const float org[3], const float
                 to_object_space(inst->world_to_object, org, dir, o_org, o_dir);
                 if (!usable_direction(o_dir))
                     continue;
+                /* An instance whose matrix leaves the ray as it is (the
+                 * identity, as for a scene of one static object) reuses
+                 * the world ray's set-up: trace_ray_init depends on org,
+                 * dir and tmin alone, so that is the same ray bit for
+                 * bit, without its five divisions. */
                 struct trace_ray o_ray;
-                trace_ray_init(&o_ray, o_org, o_dir, tmin);
+                if (memcmp(o_org, org, sizeof(o_org)) == 0 &&
+                    memcmp(o_dir, dir, sizeof(o_dir)) == 0)
+                    o_ray = ray;
+                else
+                    trace_ray_init(&o_ray, o_org, o_dir, tmin);
                 if (any_hit) {
-                    if (trace_any(view.bvh, view.tri, &o_ray, best, &counters->object))
+                    if (kernels->any(view.bvh, view.tri, &o_ray, best, &counters->object))
                         return 1;
                     continue;
                 }
@@ -78,7 +94,7 @@ static int walk(const struct trace_scene *scene, const float org[3], const float
                 uint32_t index = top->prim_index[node->first + i];
                 float limit = found ? isect_next_up(best) : best;
                 struct trace_hit h;
-                if (trace_closest(view.bvh, view.tri, &o_ray, limit, &h, &counters->object) &&
+                if (kernels->closest(view.bvh, view.tri, &o_ray, limit, &h, &counters->object) &&
                     (!found || h.t < best || index < hit->instance)) {
                     best = h.t;
                     box_limit = best * ISECT_BOX_FAR_SCALE;
@@ -95,10 +111,8 @@ static int walk(const struct trace_scene *scene, const float org[3], const float
             uint32_t left = node->first, right = node->first + 1;
             float t_left, t_right;
             counters->top_node_tests += 2;
-            int hit_left = trace_box(&ray, top->nodes[left].aabb_min, top->nodes[left].aabb_max,
-                                     box_limit, &t_left);
-            int hit_right = trace_box(&ray, top->nodes[right].aabb_min,
-                                      top->nodes[right].aabb_max, box_limit, &t_right);
+            int hit_left = isect_box(&br, &top->nodes[left], box_limit, &t_left);
+            int hit_right = isect_box(&br, &top->nodes[right], box_limit, &t_right);
             if (hit_left && hit_right) {
                 if (t_right < t_left) {
                     uint32_t tmp = left;

@@ -18,6 +18,7 @@
 
 #include <stdint.h>
 
+#include "trace/kernels.h"
 #include "trace/trace.h"
 
 struct trace_instance {
@@ -44,6 +45,9 @@ struct trace_scene {
     const struct trace_instance *instances; /* indexed by top->prim_index */
     trace_acquire_fn acquire;
     void *user;
+    /* The object walk's ISA table (kernels.h); NULL means the scalar one.
+     * Every table gives the same answers. */
+    const struct trace_kernels *kernels;
 };
 
 struct trace_scene_hit {

@@ -1,0 +1,180 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * kernel_bits.c - answers of the ray/triangle kernel that only a bit-for-bit
+ * comparison sees.
+ *
+ * Hits must be identical whatever the kernel's implementation (inlined
+ * min/max, early rejections, ISA): an image or a query answer must not
+ * change by one bit.  The sign of a zero hit distance is such a bit.  A
+ * ray starting exactly on a vertex, running along an axis with a negative
+ * zero direction component, gets t = 0 from the clamp into the
+ * triangle's box (intersect.h), whose far end is the largest of the
+ * vertices' sheared depths; when those are -0 and +0, which of the two
+ * wins was decided by fmaxf's tie rule on x86-64 (maxss: the second
+ * argument).  An inlined max with the other tie rule gives t = -0 for
+ * the first case below and fails this test.
+ *
+ * Every ISA table of lib/trace/kernels.h that this CPU runs is then
+ * compared with the scalar table, closest and any hit, bit for bit (t, u,
+ * v, primitive, and the node and triangle counts), on rays that stress the
+ * box and triangle tests' corner cases: aimed exactly at vertices and
+ * along edges, axis-parallel with both signs of zero from origins on the
+ * boxes' planes, grazing, from far away, with tmin > 0 and finite t_max;
+ * over a grid-snapped soup (coincident planes and shared coordinates), a
+ * random soup, a cube-sphere at 1e5 and a flat cube.
+ */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "accel/bvh.h"
+#include "accel_testgeo.h"
+#include "base/alloc.h"
+#include "trace/kernels.h"
+#include "trace/trace.h"
+
+static int failures;
+
+static uint32_t bits(float f)
+{
+    uint32_t b;
+    memcpy(&b, &f, sizeof(b));
+    return b;
+}
+
+static void signed_zero_case(const float v0[3], const float v1[3], const float v2[3],
+                             uint32_t want_t_bits, const char *name)
+{
+    const float org[3] = {-0.25f, 0.0f, 0.375f};
+    const float dir[3] = {0.0f, 1.0f, -0.0f};
+    struct trace_ray ray;
+    trace_ray_init(&ray, org, dir, 0.0f);
+    float t = NAN, u = NAN, v = NAN;
+    int hit = trace_triangle(&ray, v0, v1, v2, INFINITY, &t, &u, &v);
+    TG_CHECK(failures, hit && t == 0.0f && bits(t) == want_t_bits,
+             "%s: hit %d, t %a (bits %08x, want %08x)", name, hit, t, bits(t), want_t_bits);
+}
+
+/* A ray of kind 0..5 for mesh m. */
+static void make_ray(const struct tg_mesh *m, struct tg_rng *r, int kind, float org[3],
+                     float dir[3])
+{
+    uint32_t t = tg_below(r, m->tri_count);
+    const float *a = tg_vertex(m, t, 0);
+    const float *b = tg_vertex(m, t, 1 + (int)tg_below(r, 2));
+    float s = tg_unit(r);
+    for (int k = 0; k < 3; k++) {
+        switch (kind) {
+        case 0: /* at a vertex */
+            org[k] = a[k] + tg_range(r, -3.0f, 3.0f);
+            dir[k] = a[k] - org[k];
+            break;
+        case 1: /* at a point of an edge, from far away */
+            org[k] = a[k] + tg_range(r, -50.0f, 50.0f);
+            dir[k] = a[k] + (b[k] - a[k]) * s - org[k];
+            break;
+        case 2: /* grazing: along an edge, slightly turned */
+            dir[k] = (b[k] - a[k]) + tg_range(r, -1e-4f, 1e-4f);
+            org[k] = a[k] + (b[k] - a[k]) * s - dir[k] * (1.0f + tg_unit(r));
+            break;
+        case 3: /* axis-parallel from a vertex's coordinates (box planes) */
+            org[k] = a[k];
+            dir[k] = (tg_below(r, 2) ? 0.0f : -0.0f);
+            break;
+        default: /* anywhere */
+            org[k] = a[k] + tg_range(r, -2.0f, 2.0f);
+            dir[k] = tg_range(r, -1.0f, 1.0f);
+            break;
+        }
+    }
+    if (kind == 3) {
+        int axis = (int)tg_below(r, 3);
+        org[axis] -= 2.0f * (float)(tg_below(r, 2) ? 1 : -1);
+        dir[axis] = tg_below(r, 2) ? 1.0f : -1.0f;
+    }
+    if (dir[0] == 0.0f && dir[1] == 0.0f && dir[2] == 0.0f)
+        dir[0] = 1.0f;
+}
+
+static void compare_tables(const char *name, const struct tg_mesh *m, int rays, uint64_t seed)
+{
+    struct aabb *boxes = tg_boxes(m);
+    struct bvh bvh;
+    if (accel_build(&bvh, boxes, m->tri_count, NULL)) {
+        fprintf(stderr, "out of memory\n");
+        exit(1);
+    }
+    float *tri = accel_gather_triangles(&bvh, m->pos, m->idx);
+    const struct trace_kernels *ref = trace_kernels_get(TRACE_ISA_SCALAR);
+    for (int isa = TRACE_ISA_SCALAR + 1; isa < TRACE_ISA_COUNT; isa++) {
+        const struct trace_kernels *k = trace_kernels_get((enum trace_isa)isa);
+        if (!k)
+            continue;
+        struct tg_rng r;
+        tg_seed(&r, seed);
+        int differ = 0;
+        for (int i = 0; i < rays; i++) {
+            float org[3], dir[3];
+            make_ray(m, &r, i % 6, org, dir);
+            const float tmin = i % 7 == 0 ? 0.5f : 0.0f;
+            const float t_max = i % 11 == 0 ? 1.0f : INFINITY;
+            struct trace_ray ray;
+            trace_ray_init(&ray, org, dir, tmin);
+            struct trace_hit h0, h1;
+            memset(&h0, 0, sizeof(h0));
+            memset(&h1, 0, sizeof(h1));
+            struct trace_counters c0 = {0, 0}, c1 = {0, 0};
+            int f0 = ref->closest(&bvh, tri, &ray, t_max, &h0, &c0);
+            int f1 = k->closest(&bvh, tri, &ray, t_max, &h1, &c1);
+            int a0 = ref->any(&bvh, tri, &ray, t_max, &c0);
+            int a1 = k->any(&bvh, tri, &ray, t_max, &c1);
+            if (f0 != f1 || a0 != a1 || memcmp(&h0, &h1, sizeof(h0)) != 0 ||
+                c0.node_tests != c1.node_tests || c0.triangle_tests != c1.triangle_tests)
+                differ++;
+        }
+        TG_CHECK(failures, differ == 0, "%s: %s differs from scalar on %d of %d rays", name,
+                 k->name, differ, rays);
+        printf("  %s: %s = scalar on %d rays\n", name, k->name, rays - differ);
+    }
+    rt_free(tri);
+    bvh_release(&bvh);
+    free(boxes);
+}
+
+int main(void)
+{
+    printf("kernel_bits:\n");
+    /* The origin is v2 of the first triangle and of the second. */
+    const float a0[3] = {-0.375f, -0.125f, 0.5f};
+    const float a1[3] = {-0.25f, -0.0f, 0.5f};
+    const float a2[3] = {-0.25f, 0.0f, 0.375f};
+    signed_zero_case(a0, a1, a2, 0x00000000u, "vertex hit, depths -0 and +0");
+    const float b0[3] = {-0.25f, 0.125f, 0.25f};
+    const float b1[3] = {-0.125f, 0.125f, 0.25f};
+    const float b2[3] = {-0.25f, -0.0f, 0.375f};
+    signed_zero_case(b0, b1, b2, 0x80000000u, "vertex hit, depth -0 only");
+
+    struct tg_rng r;
+    struct tg_mesh m;
+    tg_seed(&r, 11);
+    tg_soup(&m, 3000, 4.0f, 0.5f, &r);
+    for (uint32_t i = 0; i < 9 * m.tri_count; i++)
+        m.pos[i] = roundf(m.pos[i] * 8.0f) / 8.0f; /* shared planes, slivers, points */
+    compare_tables("grid soup", &m, 60000, 12);
+    tg_mesh_free(&m);
+    tg_soup(&m, 20000, 2.0f, 0.1f, &r);
+    compare_tables("soup", &m, 60000, 13);
+    tg_mesh_free(&m);
+    const double far[3] = {1e5, -1e5, 3e4};
+    tg_cube_sphere(&m, 24, 1, 1.0, far);
+    compare_tables("sphere at 1e5", &m, 30000, 14);
+    tg_mesh_free(&m);
+    const double zero[3] = {0.0, 0.0, 0.0};
+    tg_cube_sphere(&m, 16, 0, 1.0, zero);
+    compare_tables("flat cube", &m, 60000, 15);
+    tg_mesh_free(&m);
+    printf("  %s (%d failures)\n", failures ? "FAIL" : "ok", failures);
+    return failures ? 1 : 0;
+}

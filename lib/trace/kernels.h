@@ -1,0 +1,56 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * kernels.h - the traversal kernels per instruction set, chosen once per
+ * context.
+ *
+ * The single-BVH walk (traverse_walk.h) is compiled once per ISA, each
+ * translation unit with its own flags: the scalar baseline (traverse.c,
+ * no SIMD intrinsics, the reference), SSE4.2, AVX2 + FMA and AVX-512.
+ * Every table gives the same answers bit for bit (traverse_walk.h says
+ * why; conformance/internal/kernel_bits checks it), so the choice changes
+ * speed only.  A context takes the best table the CPU supports (cpuid)
+ * unless its configuration names one (isa=, docs/context.md).
+ */
+#ifndef RT_TRACE_KERNELS_H
+#define RT_TRACE_KERNELS_H
+
+#include <stddef.h>
+
+#include "trace/trace.h"
+
+enum trace_isa {
+    TRACE_ISA_SCALAR,
+    TRACE_ISA_SSE4,
+    TRACE_ISA_AVX2,
+    TRACE_ISA_AVX512,
+    TRACE_ISA_COUNT
+};
+
+struct trace_kernels {
+    enum trace_isa isa;
+    const char *name; /* "scalar", "sse4", "avx2", "avx512": the isa= value */
+    int (*closest)(const struct bvh *bvh, const float *tri, const struct trace_ray *ray,
+                   float t_max, struct trace_hit *hit, struct trace_counters *counters);
+    int (*any)(const struct bvh *bvh, const float *tri, const struct trace_ray *ray,
+               float t_max, struct trace_counters *counters);
+};
+
+/* The table of an ISA, or NULL when this build has no such table or this
+ * CPU cannot run it.  The scalar table always exists. */
+const struct trace_kernels *trace_kernels_get(enum trace_isa isa);
+
+/* The fastest table this CPU runs (never NULL). */
+const struct trace_kernels *trace_kernels_best(void);
+
+/* The ISA named name[0..len) ("scalar", "sse4", "avx2", "avx512");
+ * returns 0 and sets *isa, or -1 for another name. */
+int trace_isa_parse(const char *name, size_t len, enum trace_isa *isa);
+
+/* The per-ISA tables themselves (NULL when the translation unit was
+ * compiled without its instruction set); trace_kernels_get adds the CPU
+ * check. */
+const struct trace_kernels *trace_kernels_sse4(void);
+const struct trace_kernels *trace_kernels_avx2(void);
+const struct trace_kernels *trace_kernels_avx512(void);
+
+#endif

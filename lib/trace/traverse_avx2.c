@@ -1,0 +1,27 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * traverse_avx2.c - the single-BVH walk compiled for AVX2 + FMA
+ * (kernels.h).  The build gives this file its instruction-set flags;
+ * without them (another architecture or compiler) the table is absent
+ * and trace_kernels_avx2 returns NULL.
+ */
+#include "trace/kernels.h"
+
+#if defined(__AVX2__)
+#define TRACE_WALK_CLOSEST trace_closest_avx2
+#define TRACE_WALK_ANY trace_any_avx2
+#include "trace/traverse_walk.h"
+
+static const struct trace_kernels table = {
+    TRACE_ISA_AVX2, "avx2", trace_closest_avx2, trace_any_avx2};
+
+const struct trace_kernels *trace_kernels_avx2(void)
+{
+    return &table;
+}
+#else
+const struct trace_kernels *trace_kernels_avx2(void)
+{
+    return NULL;
+}
+#endif

@@ -1,0 +1,27 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * traverse_avx512.c - the single-BVH walk compiled for AVX-512 (F, VL, BW, DQ)
+ * (kernels.h).  The build gives this file its instruction-set flags;
+ * without them (another architecture or compiler) the table is absent
+ * and trace_kernels_avx512 returns NULL.
+ */
+#include "trace/kernels.h"
+
+#if defined(__AVX512VL__)
+#define TRACE_WALK_CLOSEST trace_closest_avx512
+#define TRACE_WALK_ANY trace_any_avx512
+#include "trace/traverse_walk.h"
+
+static const struct trace_kernels table = {
+    TRACE_ISA_AVX512, "avx512", trace_closest_avx512, trace_any_avx512};
+
+const struct trace_kernels *trace_kernels_avx512(void)
+{
+    return &table;
+}
+#else
+const struct trace_kernels *trace_kernels_avx512(void)
+{
+    return NULL;
+}
+#endif

@@ -1,0 +1,27 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * traverse_sse4.c - the single-BVH walk compiled for SSE4.2
+ * (kernels.h).  The build gives this file its instruction-set flags;
+ * without them (another architecture or compiler) the table is absent
+ * and trace_kernels_sse4 returns NULL.
+ */
+#include "trace/kernels.h"
+
+#if defined(__SSE4_2__)
+#define TRACE_WALK_CLOSEST trace_closest_sse4
+#define TRACE_WALK_ANY trace_any_sse4
+#include "trace/traverse_walk.h"
+
+static const struct trace_kernels table = {
+    TRACE_ISA_SSE4, "sse4", trace_closest_sse4, trace_any_sse4};
+
+const struct trace_kernels *trace_kernels_sse4(void)
+{
+    return &table;
+}
+#else
+const struct trace_kernels *trace_kernels_sse4(void)
+{
+    return NULL;
+}
+#endif
