@@ -29,7 +29,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "accel/bvh.h"
+#include "trace/bvh_layout.h"
 #include "accel_testgeo.h"
 #include "base/alloc.h"
 #include "trace/kernels.h"
@@ -53,7 +53,7 @@ static void signed_zero_case(const float v0[3], const float v1[3], const float v
     trace_ray_init(&ray, org, dir, 0.0f);
     float t = NAN, u = NAN, v = NAN;
     int hit = trace_triangle(&ray, v0, v1, v2, INFINITY, &t, &u, &v);
-    TG_CHECK(failures, hit && t == 0.0f && bits(t) == want_t_bits,
+    failures += !CHECKF(hit && t == 0.0f && bits(t) == want_t_bits,
              "%s: hit %d, t %a (bits %08x, want %08x)", name, hit, t, bits(t), want_t_bits);
 }
 
@@ -134,7 +134,7 @@ static void compare_tables(const char *name, const struct tg_mesh *m, int rays, 
                 c0.node_tests != c1.node_tests || c0.triangle_tests != c1.triangle_tests)
                 differ++;
         }
-        TG_CHECK(failures, differ == 0, "%s: %s differs from scalar on %d of %d rays", name,
+        failures += !CHECKF(differ == 0, "%s: %s differs from scalar on %d of %d rays", name,
                  k->name, differ, rays);
         printf("  %s: %s = scalar on %d rays\n", name, k->name, rays - differ);
     }
