@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * anim_gen.c - the procedural animations of `rtbench dynamic` (bench.h,
  * bench_dynamic.c).

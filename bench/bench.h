@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * bench.h - what the pieces of rtbench share: meshes, ray sets, our
  * acceleration structure, the parallel ray loop, statistics and the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * bench_bart.c - `rtbench bart`: the BART scenes (Lext, Assarsson and
  * Moeller 2000: kitchen, robots, museum) played through the public API the

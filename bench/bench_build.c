@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * bench_build.c - `rtbench build`: BVH quality against build time, per
  * builder and bin count (paper 000 sec. 4 and table 1; DESIGN.md

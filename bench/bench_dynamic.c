@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * bench_dynamic.c - `rtbench dynamic`: dynamic scenes, error against time
  * (DESIGN.md "The runtime" and "Measurement"; docs/dynamic.md).

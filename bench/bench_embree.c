@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * bench_embree.c - `rtbench embree`: the same meshes and the same rays
  * through Embree 3 in the same process, side by side with ours (compiled

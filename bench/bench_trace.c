@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * bench_trace.c - `rtbench trace`: rays per second, ours directly and
  * through the public API.

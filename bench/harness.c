@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * harness.c - the measuring machinery every section shares (bench.h): our
  * BVH over a mesh, the closest-hit and any-hit kernels over it, the

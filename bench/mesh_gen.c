@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * mesh_gen.c - the benchmark's procedural workloads (bench.h):
  *

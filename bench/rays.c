@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * rays.c - the benchmark's ray sets and the comparison of hit arrays
  * (bench.h).  All ray sets are generated once per mesh and fed unchanged

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * report.c - rtbench's output (bench.h): markdown to stdout and to
  * DIR/results.md, metrics to DIR/results.csv, the comparison with an

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * rtbench.c - the benchmark driver: options, workloads, sections.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * sysinfo.c - what the report header says about the machine and the build
  * (bench.h).  Linux first (/proc), with "unknown" wherever a source is

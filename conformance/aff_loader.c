@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * aff_loader.c - conformance: the AFF (BART) scene loader of rtu.h
  * (rtuLoadAFF, rtuDeleteAFF, rtuAFFError, rtuGetAFFiv, rtuAFFFrameTime,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * appearance.c - conformance: materials, lights, the light model, shading
  * modes and the ray-depth parameter.  Errors are checked at the call, and

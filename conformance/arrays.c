@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * arrays.c - conformance: vertex arrays.  rtEnableClientState/
  * rtDisableClientState, rtVertexPointer/rtNormalPointer/rtColorPointer/

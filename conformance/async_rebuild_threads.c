@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * async_rebuild_threads.c - asynchronous rebuilds (paper 000 sec. 6)
  * through the API: correct hits every frame while builds land in the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * bart_scenes.c - the three BART scenes through rtuLoadAFF, against their
  * flattened geometry.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * begin_end.c - conformance: rtBegin/rtEnd, rtVertex*, the current
  * attributes (rtNormal, rtTexCoord, rtColor) and rtShadeModel.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * brute_force.h - the double-precision reference for the correctness tests
  * (query_brute_force.c, instanced_vs_flat.c, stability_*.c).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * context.c - conformance: contexts, configuration strings, rtGetString,
  * rtGetIntegerv/rtGetFloatv defaults, rtEnable/rtDisable/rtIsEnabled,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dynamic.c - conformance: dynamic scenes.  rtObjectParameteri (class and
  * strategy hints), rtUpdateVertices, rtRenderParameteri(RT_UPDATE_STRATEGY),

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dynamic_anim.h - procedural animations and the reference comparison
  * shared by the dynamic-scene tests (dynamic_strategies.c,

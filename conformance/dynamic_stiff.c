@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dynamic_stiff.c - dynamic scenes at their extremes: every update strategy
  * still gives the hits of a freshly defined object, and nothing records an

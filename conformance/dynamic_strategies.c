@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dynamic_strategies.c - every update strategy gives the same hits and the
  * same images.

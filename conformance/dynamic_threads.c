@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * dynamic_threads.c - dynamic scenes give the same images with 1 and 4
  * threads.

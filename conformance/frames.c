@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * frames.c - conformance: rtViewport, rtClearColor, rtRenderFrame, rtFinish
  * and rtReadPixels.  Framebuffer size and read-back bounds, the clear colour

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * instanced_vs_flat.c - a scene of objects under instance transforms
  * against the same geometry flattened into one object.

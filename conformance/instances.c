@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * instances.c - conformance: rtInstantiateObject and immediate-mode frames.
  *

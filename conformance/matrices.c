@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * matrices.c - conformance: matrix modes, loads, products, the transform
  * entry points against hand-computed matrices (float and double variants),

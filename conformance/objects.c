@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * objects.c - conformance: rtGenObjects, rtNewObject/rtEndObject (nesting,
  * redefinition, the previous definition staying in use while recording),

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * queries.c - conformance: rtTraceRays and rtOccludedRays.  Argument and
  * per-ray validation (nothing written on error), the RThit conventions

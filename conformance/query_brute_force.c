@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * query_brute_force.c - rtTraceRays and rtOccludedRays against a
  * double-precision brute-force intersector (brute_force.h).

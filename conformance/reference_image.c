@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * reference_image.c - a fixed scene rendered with Whitted shading against a
  * checked-in reference image, conformance/data/reference_whitted.ppm.

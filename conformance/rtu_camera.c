@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * rtu_camera.c - conformance: rtuPerspective and rtuLookAt.
  *

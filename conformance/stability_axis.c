@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * stability_axis.c - axis-parallel rays and rays grazing along face planes.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * stability_coincident.c - 100k identical triangles in one object.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * stability_degenerate.c - degenerate triangles are never hit and never
  * produce a NaN; their valid neighbours are still hit.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * stability_matrices.c - near-singular, singular and extreme instance
  * matrices.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * stability_nonfinite.c - NaN and infinity are rejected wherever they can be
  * given, and a rejected call leaves the scene exactly as it was.

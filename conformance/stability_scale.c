@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * stability_scale.c - far from the origin and at extreme scales, scenes
  * render without shadow acne, holes or misplaced shadows.

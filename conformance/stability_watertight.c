@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * stability_watertight.c - no ray slips through a closed mesh, through the
  * public API.

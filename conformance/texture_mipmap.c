@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * texture_mipmap.c - conformance: mipmapped minification filters and the
  * ray-cone level of detail (docs/textures.md, "Mipmaps" and "Level of

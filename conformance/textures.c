@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * textures.c - conformance: rtGenTextures, rtDeleteTextures, rtIsTexture,
  * rtBindTexture, rtTexImage2D, rtTexParameteri, the RT_TEXTURE_2D

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * thread_invariance_threads.c - results do not depend on the thread count.
  *

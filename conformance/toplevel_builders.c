@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * toplevel_builders.c - the two top-level builders ("toplevel=binned", the
  * default binned SAH over instance boxes, and "toplevel=cellsplit", paper

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * aff_fuzz.c - libFuzzer target over the AFF (BART) loader.
  *

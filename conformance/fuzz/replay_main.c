@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * replay_main.c - runs a libFuzzer target over files, without libFuzzer.
  *

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Runs the libFuzzer target for a bounded time (the fuzz/aff_loader test).
 # Usage: run_fuzz.sh FUZZER SCRATCH_DIR SECONDS SOURCE_DIR TEXTURE_DIR BART_DIR
 #   SOURCE_DIR  conformance/fuzz: corpus/ (the seeds), regressions/ and aff.dict

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* Compiled with -std=c99 -pedantic-errors: the public headers are C99. */
 #include <rt/rt.h>
 #include <rt/rtu.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 // Compiled as C++ with -pedantic-errors: the public headers are valid C++.
 #include <rt/rt.h>
 #include <rt/rtu.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * accel_testgeo.h - deterministic test geometry for the accel/trace module
  * tests (builders.c, traversal.c, triangle_watertight.c): a seeded random

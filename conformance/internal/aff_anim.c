@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * aff_anim.c - the AFF keyframe maths (lib/rtu/aff_anim.c) against hand-
  * computed values and against the test vectors of FORMAT.md sec. 9.

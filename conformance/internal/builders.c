@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * builders.c - the BVH builders of lib/accel against bvh_layout.h's contract.
  *

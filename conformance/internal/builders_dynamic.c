@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * builders_dynamic.c - the rebuild-every-frame builders against bvh_layout.h's
  * contract: the median builder and the looser leaf criterion

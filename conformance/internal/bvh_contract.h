@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * bvh_contract.h - checks shared by the dynamic-scene accel tests
  * (builders_dynamic.c, refit.c, parallel_build_threads.c): bvh_layout.h's output

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * fault_injection.c - every allocation failure is an RT_OUT_OF_MEMORY or
  * harmless, never a crash, a leak or a corrupted context.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * parallel_build_threads.c - the parallel build (build_parallel.h) and
  * the parallel refit (refit.h) on worker pools of 1 to 4 threads,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * refit.c - BVH refit and triangle-copy update (refit.h) against
  * references computed from scratch.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * restructure.c - selective restructuring (lib/accel/restructure.h, paper
  * 001) on deforming meshes, frame by frame.

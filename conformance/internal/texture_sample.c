@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * texture_sample.c - the texture table, mip chains and sampler of
  * scene/texture.h, directly: the values a sample must give (texel centres,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * traversal.c - trace_closest and trace_any against the brute-force
  * reference (trace_closest_brute_force), the way tinybvh's

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * traversal_grazing.c - closest hits through every builder's BVH against
  * the brute-force reference, for rays that pass exactly through, or

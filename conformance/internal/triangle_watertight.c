@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * triangle_watertight.c - the ray/triangle kernel (trace_triangle, Woop,
  * Benthin and Wald 2013) and the traversal above it on closed meshes.

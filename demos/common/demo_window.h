@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * demo_window.h - showing a Tracelist frame in a GLFW window (built only
  * when the demos have GLFW, RT_HAVE_GLFW).

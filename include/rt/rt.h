@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * rt.h - the Tracelist API: an OpenGL-like, immediate-mode ray tracing API.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * rtu.h - the Tracelist utility library (the analogue of GLU).
  *

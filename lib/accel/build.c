@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * build.c - builder dispatch, parameters, BVH lifetime and the gather of
  * triangles into leaf order (see bvh_layout.h), plus the allocation helpers the

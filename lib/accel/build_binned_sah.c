@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * build_binned_sah.c - binned SAH builder (Wald 2007, "On fast construction
  * of SAH-based bounding volume hierarchies", paper 000's ref. [20]; paper

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * build_internal.h - pieces shared by the top-down BVH builders
  * (build_binned_sah.c, build_sweep_sah.c); not part of the accel interface.

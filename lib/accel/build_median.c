@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * build_median.c - the spatial-median ("BIH-style") builder and the looser
  * leaf criterion (build_median.h).

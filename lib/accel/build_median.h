@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * build_median.h - the cheap builders for per-frame rebuilds: the spatial-
  * median ("BIH-style") builder of paper 000 table 1 and the looser leaf

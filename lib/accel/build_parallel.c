@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * build_parallel.c - the two-stage parallel build (build_parallel.h;
  * paper 000 sec. 5).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * build_parallel.h - the two-stage parallel BVH build of paper 000 sec. 5.
  *

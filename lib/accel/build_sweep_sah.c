@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * build_sweep_sah.c - full sweep SAH builder: the quality reference.
  *

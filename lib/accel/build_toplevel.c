@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * build_toplevel.c - paper 004 sec. 4.5 top-level construction (see
  * build_toplevel.h).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * build_toplevel.h - paper 004's fast top-level construction over
  * instance boxes (sec. 4.5), as an alternative to the binned SAH builder

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * refit.c - serial and parallel BVH refit and the triangle-copy update
  * (refit.h; paper 000 sec. 6, "Parallel BVH Refit").

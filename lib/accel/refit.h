@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * refit.h - refitting a BVH to moved primitives without changing its
  * topology (paper 000 sec. 6, "Parallel BVH Refit"), and updating the

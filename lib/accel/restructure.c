@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * restructure.c - the frame driver of selective restructuring (Yoon,
  * Curtis and Manocha, EGSR 2007, paper 001; restructure.h has the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * restructure.h - selective restructuring of a BVH over deforming
  * geometry: Yoon, Curtis and Manocha, "Ray Tracing Dynamic Scenes using

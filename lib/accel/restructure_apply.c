@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * restructure_apply.c - the basic restructuring operation of paper 001
  * (sec. 3.2, fig. 4): the primitives of sub-BVH(n1) and sub-BVH(n2) are

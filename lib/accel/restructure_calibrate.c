@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * restructure_calibrate.c - the machine constants of selective
  * restructuring, measured at start-up as paper 001 sec. 6.1 does: "We

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * restructure_internal.h - pieces shared by the selective restructuring
  * files (paper 001; restructure.h has the interface):

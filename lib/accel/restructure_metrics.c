@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * restructure_metrics.c - the two metrics of paper 001 sec. 4 (CM-IQ,
  * the culling efficiency of a sub-BVH; RM-IQ, the benefit of

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * sah_cost.c - the SAH cost of a finished tree (MacDonald and Booth 1990),
  * the quality measure that paper 000 table 1 and rtbench compare builders

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * select_median.c - the object-median selection shared by the builders'
  * median splits (binned SAH fallback, median/BIH builder, parallel build).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * vec4.h - four-float vectors for the builders' inner loops.
  *

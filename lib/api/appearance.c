@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * appearance.c - materials, lights, the light model, shading modes and
  * render parameters.

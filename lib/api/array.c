@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * array.c - vertex arrays: rt*Pointer, rtEnable/DisableClientState,
  * rtDrawArrays and rtDrawElements.

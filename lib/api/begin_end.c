@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * begin_end.c - rtBegin/rtEnd, rtVertex*, current attributes and
  * rtShadeModel: the checks, then scene/recording.c, which transforms,

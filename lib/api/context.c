@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * context.c - rtCreateContext, rtDestroyContext, rtMakeCurrent and the
  * per-thread current context.

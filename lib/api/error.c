@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * error.c - rt_error, rtGetError, rtErrorCallback and the shared checks.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * frame.c - rtViewport, rtClearColor, rtRenderFrame, rtFinish,
  * rtReadPixels, and the error reporting around the scene preparation

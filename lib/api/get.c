@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * get.c - state queries (rtGetString, rtGetIntegerv, rtGetFloatv) and
  * capabilities (rtEnable, rtDisable, rtIsEnabled).

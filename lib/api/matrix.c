@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * matrix.c - the matrix stacks: rtMatrixMode, load/mult, translate,
  * rotate, scale, rtFrustum, rtOrtho, push/pop.

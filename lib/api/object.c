@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * object.c - objects, the display lists of Tracelist: rtGenObjects,
  * rtNewObject, rtEndObject, rtDeleteObjects, rtIsObject, rtGetObject*.

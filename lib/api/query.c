@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * query.c - rtTraceRays and rtOccludedRays: batches of rays against the
  * current scene, through the same traversal that renders frames.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * texture.c - 2D texture objects as in OpenGL 1.1: rtGenTextures,
  * rtDeleteTextures, rtIsTexture, rtBindTexture, rtTexImage2D and

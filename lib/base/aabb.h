@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * aabb.h - axis-aligned boxes and small float vector helpers.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * alloc.c - allocation wrapper with fault injection (see alloc.h).
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * mat4.c - matrix inversion (see mat4.h).
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * mat4.h - 4x4 double matrices, column-major as in OpenGL.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * name_table.h - names to items: the table behind objects (rtGenObjects,
  * rtNewObject) and textures (rtGenTextures, rtBindTexture).

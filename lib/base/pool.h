@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * pool.h - a minimal pthread worker pool shared by rendering and parallel
  * builds.

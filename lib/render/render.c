@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * render.c - frames (tiles over the worker pool) and ray-query batches.
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * shade.c - the integrators: eye light and Whitted (see shade.h); what a
  * hit looks like (material, texture, normals) is surface.c's.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * shade.h - surface shading: eye light and Whitted-style ray tracing.
  */

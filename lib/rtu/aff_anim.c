@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * aff_anim.c - keyframe animation of the AFF (BART) format: Kochanek-Bartels
  * splines for translation and scale, a quaternion Kochanek-Bartels spline

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * aff_anim.h - keyframe animation maths of the AFF (BART) scene format.
  *

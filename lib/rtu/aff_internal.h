@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * aff_internal.h - the AFF (BART) scene loader's in-memory scene.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * aff_parse.c - the AFF text reader (see aff_internal.h).
  *

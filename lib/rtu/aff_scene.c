@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * aff_scene.c - AFF scenes as Tracelist objects and instances (rtu.h,
  * docs/aff.md).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * image.c - rtu image I/O: rtuSaveImage, rtuLoadImage, rtuFreeImage,
  * rtuImageFormatSupported, rtuImageError.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * image_internal.h - the split between image.c (C, built-in PPM/PFM, the
  * public rtu image entry points) and image_oiio.cpp (C++, OpenImageIO).

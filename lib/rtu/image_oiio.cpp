@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * image_oiio.cpp - rtu image I/O through OpenImageIO (2.4 API), for every
  * format other than the built-in PPM and PFM of image.c.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * assembly.c - OpenGL primitive assembly rules (OpenGL 2.1 spec sec. 2.6.1;
  * provoking vertices from table 2.12).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * assembly.h - OpenGL primitive assembly: vertex stream -> triangles.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * async_build.c - the asynchronous rebuild thread (see async_build.h).
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * async_build.h - asynchronous rebuilds on K build threads (paper 000
  * sec. 6).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * frame.c - instance lists, change detection and the top-level build
  * (see frame.h).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * frame.h - instances and the immediate-mode frame (paper 004 sec. 4.1).
  *

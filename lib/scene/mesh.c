@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * mesh.c - storage of object definitions (see mesh.h).
  */

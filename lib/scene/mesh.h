@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * mesh.h - one object definition: assembled triangles and their attributes.
  *

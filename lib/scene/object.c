@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * object.c - the object table and lazy BVH construction (see object.h).
  */

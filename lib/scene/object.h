@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * object.h - objects (the display lists of Tracelist) and their table.
  *

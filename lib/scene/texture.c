@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * texture.c - the texture table, mip chain generation and the texture
  * sampler (see texture.h).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * texture.h - 2D texture objects, their table, their mipmaps and sampling.
  *

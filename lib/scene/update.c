@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * update.c - per-object acceleration structure updates (see update.h).
  */

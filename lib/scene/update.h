@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * update.h - keeping an object's acceleration structure in step with its
  * geometry: the per-object update strategies of papers 000 and 001.

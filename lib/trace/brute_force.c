@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * brute_force.c - the reference intersector (trace.h): every triangle,
  * no acceleration structure.  The differential tests and rtbench's error

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * bvh_layout.h - bounding volume hierarchy layout and the builders'
  * interface.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * intersect.c - the exported ray/triangle and ray/box tests (trace.h),
  * thin wrappers around the kernels of intersect.h.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * intersect.h - the ray/triangle and ray/box kernels, static inline so that
  * traversal compiles them into its loops; intersect.c exports them as

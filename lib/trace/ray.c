@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * ray.c - ray preparation (trace.h): the reciprocal direction for the slab
  * test and the shear constants of the watertight triangle test.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * scene_traverse.c - two-level traversal (see scene_traverse.h).
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * scene_traverse.h - two-level traversal: a top-level BVH over instances,
  * object BVHs below (paper 004 sec. 4.4).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * trace.h - rays, ray/box and ray/triangle tests, single-BVH traversal.
  *

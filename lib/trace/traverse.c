@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * traverse.c - closest-hit and any-hit traversal of one BVH (trace.h).
  *
