@@ -3,9 +3,7 @@
 # packages, then builds and runs four suites under ctest:
 #   1. Release build: every test (conformance, internal, demos, bench smoke);
 #   2. AddressSanitizer + UndefinedBehaviorSanitizer build: every test;
-#   3. ThreadSanitizer build: the tests labelled "threads", with
-#      RT_NO_SIMD=ON so the builders' plain C path (lib/accel/vec4.h) is
-#      built and tested too;
+#   3. ThreadSanitizer build: the tests labelled "threads";
 #   4. clang build with libFuzzer + ASan + UBSan: the test labelled "fuzz",
 #      which fuzzes the AFF loader for RT_FUZZ_SECONDS (60 s; builds only
 #      that target).  Suites 1 and 2 replay its corpus (fuzz/aff_replay).
@@ -41,7 +39,7 @@ run_suite asan-ubsan -- -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRT_SANITIZE=address,
   -DRT_BUILD_BENCH=ON
 export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1"
 run_suite tsan -L threads -- -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRT_SANITIZE=thread \
-  -DRT_NO_SIMD=ON -DRT_WITH_OIIO=OFF -DRT_WITH_GLFW=OFF -DRT_WITH_EMBREE=OFF
+  -DRT_WITH_OIIO=OFF -DRT_WITH_GLFW=OFF -DRT_WITH_EMBREE=OFF
 CC=clang CXX=clang++ build_targets=aff_fuzz run_suite fuzz -L fuzz --no-tests=error -- \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRT_SANITIZE=address,undefined -DRT_FUZZ=ON \
   -DRT_WITH_OIIO=OFF -DRT_WITH_GLFW=OFF -DRT_WITH_EMBREE=OFF -DRT_BUILD_DEMOS=OFF \
