@@ -5,9 +5,7 @@
 #   1. Release build: every test under ctest (conformance, internal, demos,
 #      tutorials, install, bench smoke);
 #   2. AddressSanitizer + UndefinedBehaviorSanitizer build: every test;
-#   3. ThreadSanitizer build: the tests labelled "threads", with
-#      RT_NO_SIMD=ON so the builders' plain C path (lib/accel/vec4.h) is
-#      built and tested too;
+#   3. ThreadSanitizer build: the tests labelled "threads";
 #   4. clang build with libFuzzer + ASan + UBSan: the test labelled "fuzz",
 #      which fuzzes the AFF loader for RT_FUZZ_SECONDS (60 s; builds only
 #      that target).  Suites 1 and 2 replay its corpus (fuzz/aff_replay);
@@ -91,7 +89,7 @@ record "asan-ubsan (all tests)" $?
 
 export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1"
 run_suite tsan -L threads -- -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRT_SANITIZE=thread \
-  -DRT_NO_SIMD=ON -DRT_WITH_OIIO=OFF -DRT_WITH_GLFW=OFF -DRT_WITH_EMBREE=OFF
+  -DRT_WITH_OIIO=OFF -DRT_WITH_GLFW=OFF -DRT_WITH_EMBREE=OFF
 record "tsan (label threads)" $?
 
 if command -v clang >/dev/null; then
