@@ -24,6 +24,7 @@
 #include <stdint.h>
 #include <stdio.h>
 
+#include "trace/bvh4_layout.h"
 #include "trace/bvh_layout.h"
 #include "base/aabb.h"
 #include "trace/kernels.h"
@@ -197,6 +198,7 @@ double bench_agreement_percent(const struct bench_agreement *a);
 struct bench_accel {
     struct bvh bvh;
     float *tri; /* accel_gather_triangles */
+    struct bvh4 wide; /* accel_collapse4 */
 };
 
 /* Builds with the given parameters (boxes + build + gather).  Returns 0
@@ -240,6 +242,9 @@ double bench_run_parallel(bench_kernel_fn kernel, void *ctx, const struct bench_
  * is unknown or not runnable here. */
 const struct trace_kernels *bench_kernels(void);
 int bench_select_isa(const char *name);
+/* "bvh4" (default: the 4-wide walk where the ISA table has one) or
+ * "binary" (--layout); -1 for another name. */
+int bench_select_layout(const char *name);
 
 void bench_kernel_closest(void *ctx, const RTray *rays, uint32_t begin, uint32_t end,
                           struct bench_hit *hits);

@@ -24,6 +24,18 @@
  * library, so a file-scope choice is fine here). */
 static const struct trace_kernels *chosen_kernels;
 
+/* --layout binary: the binary walk even where the table has a wide one. */
+static int binary_layout;
+
+int bench_select_layout(const char *name)
+{
+    if (!strcmp(name, "binary") || !strcmp(name, "bvh4")) {
+        binary_layout = !strcmp(name, "binary");
+        return 0;
+    }
+    return -1;
+}
+
 const struct trace_kernels *bench_kernels(void)
 {
     return chosen_kernels ? chosen_kernels : trace_kernels_best();
@@ -50,8 +62,10 @@ int bench_accel_build(struct bench_accel *acc, const struct bench_mesh *mesh,
     if (rc)
         return -1;
     acc->tri = accel_gather_triangles(&acc->bvh, mesh->positions, mesh->indices);
-    if (!acc->tri) {
+    if (!acc->tri || accel_collapse4(&acc->wide, &acc->bvh)) {
+        rt_free(acc->tri);
         bvh_release(&acc->bvh);
+        memset(acc, 0, sizeof(*acc));
         return -1;
     }
     return 0;
@@ -61,6 +75,7 @@ void bench_accel_release(struct bench_accel *acc)
 {
     bvh_release(&acc->bvh);
     rt_free(acc->tri);
+    bvh4_release(&acc->wide);
     memset(acc, 0, sizeof(*acc));
 }
 
@@ -84,12 +99,15 @@ void bench_kernel_closest(void *ctx, const RTray *rays, uint32_t begin, uint32_t
                           struct bench_hit *hits)
 {
     const struct bench_accel *acc = ctx;
+    const struct trace_kernels *k = bench_kernels();
+    const int wide = k->closest4 && !binary_layout && acc->wide.node_count;
     for (uint32_t i = begin; i < end; i++) {
         const RTray *r = &rays[i];
         struct trace_ray ray;
         struct trace_hit h;
         trace_ray_init(&ray, r->org, r->dir, r->tmin);
-        if (bench_kernels()->closest(&acc->bvh, acc->tri, &ray, r->tmax, &h, NULL)) {
+        if (wide ? k->closest4(&acc->wide, &acc->bvh, acc->tri, &ray, r->tmax, &h, NULL)
+                 : k->closest(&acc->bvh, acc->tri, &ray, r->tmax, &h, NULL)) {
             hits[i].t = h.t;
             hits[i].prim = h.prim;
         } else {
@@ -103,11 +121,14 @@ void bench_kernel_any(void *ctx, const RTray *rays, uint32_t begin, uint32_t end
                       struct bench_hit *hits)
 {
     const struct bench_accel *acc = ctx;
+    const struct trace_kernels *k = bench_kernels();
+    const int wide = k->any4 && !binary_layout && acc->wide.node_count;
     for (uint32_t i = begin; i < end; i++) {
         const RTray *r = &rays[i];
         struct trace_ray ray;
         trace_ray_init(&ray, r->org, r->dir, r->tmin);
-        int occluded = bench_kernels()->any(&acc->bvh, acc->tri, &ray, r->tmax, NULL);
+        int occluded = wide ? k->any4(&acc->wide, &acc->bvh, acc->tri, &ray, r->tmax, NULL)
+                            : k->any(&acc->bvh, acc->tri, &ray, r->tmax, NULL);
         hits[i].t = occluded ? 0.0f : INFINITY;
         hits[i].prim = occluded ? 0 : BENCH_MISS;
     }
