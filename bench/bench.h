@@ -255,6 +255,11 @@ void bench_kernel_any(void *ctx, const RTray *rays, uint32_t begin, uint32_t end
  * single-threaded. */
 void bench_count_tests(const struct bench_accel *acc, const struct bench_rays *set,
                        double *nodes_per_ray, double *tris_per_ray);
+/* The same counts for the wide walk of the best table (0 without one);
+ * acc->wide must be collapsed. */
+void bench_count_tests_wide(const struct bench_accel *acc, const struct bench_rays *set,
+                            double *nodes_per_ray, double *tris_per_ray);
+void bench_accel_release_wide(struct bench_accel *acc);
 
 /* ------------------------------------------------------------ statistics */
 

@@ -250,6 +250,28 @@ void bench_count_tests(const struct bench_accel *acc, const struct bench_rays *s
     *tris_per_ray = (double)c.triangle_tests / n;
 }
 
+void bench_count_tests_wide(const struct bench_accel *acc, const struct bench_rays *set,
+                            double *nodes_per_ray, double *tris_per_ray)
+{
+    const struct trace_kernels *k = trace_kernels_best();
+    struct trace_counters c = {0, 0};
+    for (uint32_t i = 0; i < set->count && k->closest4; i++) {
+        const RTray *r = &set->rays[i];
+        struct trace_ray ray;
+        struct trace_hit h;
+        trace_ray_init(&ray, r->org, r->dir, r->tmin);
+        k->closest4(&acc->wide, &acc->bvh, acc->tri, &ray, r->tmax, &h, &c);
+    }
+    double n = set->count ? (double)set->count : 1.0;
+    *nodes_per_ray = (double)c.node_tests / n;
+    *tris_per_ray = (double)c.triangle_tests / n;
+}
+
+void bench_accel_release_wide(struct bench_accel *acc)
+{
+    bvh4_release(&acc->wide);
+}
+
 static int compare_double(const void *a, const void *b)
 {
     double x = *(const double *)a, y = *(const double *)b;

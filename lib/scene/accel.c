@@ -29,7 +29,8 @@ static struct aabb *triangle_boxes(const struct scene_accel_geometry *geom)
 /* The step after every change of the tree's topology: the leaf-ordered
  * triangles and the 4-wide layout traversal reads, and the cost the
  * update strategies compare.  Returns 0, or -1 on allocation failure
- * (accel->tri and accel->wide unchanged). */
+ * (accel->tri unchanged; accel->wide unchanged, or released when the
+ * collapse itself failed). */
 static int finish_layout(struct scene_accel *accel, const struct scene_accel_geometry *geom,
                          const struct bvh_build_params *params)
 {
@@ -38,6 +39,9 @@ static int finish_layout(struct scene_accel *accel, const struct scene_accel_geo
         return -1;
     struct bvh4 wide;
     if (accel_collapse4(&wide, &accel->bvh)) {
+        /* The tree may have changed under the old wide layout
+         * (restructuring): drop it, so traversal takes the binary walk. */
+        bvh4_release(&accel->wide);
         rt_free(tri);
         return -1;
     }
