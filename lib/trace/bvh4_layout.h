@@ -48,7 +48,7 @@ struct bvh4 {
  * Collapses bvh into *out (greedy surface-area collapse: a wide node
  * starts from a binary inner node's two children and repeatedly replaces
  * the inner child of largest surface area by its two children until it
- * has four, as in Wald, Benthin and Boulos 2008 sec. 3 and the MBVH
+ * has four, as in Wald, Benthin and Boulos 2008 and the MBVH
  * conversion of tinybvh).  *out is output only.  Returns 0, or -1 on
  * allocation failure with *out zeroed.  Implemented in lib/accel.
  */
