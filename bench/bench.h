@@ -25,6 +25,7 @@
 #include <stdint.h>
 #include <stdio.h>
 
+#include "trace/bvh4_layout.h"
 #include "trace/bvh_layout.h"
 #include "base/aabb.h"
 #include "trace/kernels.h"
@@ -198,6 +199,7 @@ double bench_agreement_percent(const struct bench_agreement *a);
 struct bench_accel {
     struct bvh bvh;
     float *tri; /* accel_gather_triangles */
+    struct bvh4 wide; /* accel_collapse4 */
 };
 
 /* Builds with the given parameters (boxes + build + gather).  Returns 0
@@ -241,6 +243,9 @@ double bench_run_parallel(bench_kernel_fn kernel, void *ctx, const struct bench_
  * is unknown or not runnable here. */
 const struct trace_kernels *bench_kernels(void);
 int bench_select_isa(const char *name);
+/* "bvh4" (default: the 4-wide walk where the ISA table has one) or
+ * "binary" (--layout); -1 for another name. */
+int bench_select_layout(const char *name);
 
 void bench_kernel_closest(void *ctx, const RTray *rays, uint32_t begin, uint32_t end,
                           struct bench_hit *hits);
@@ -251,6 +256,11 @@ void bench_kernel_any(void *ctx, const RTray *rays, uint32_t begin, uint32_t end
  * single-threaded. */
 void bench_count_tests(const struct bench_accel *acc, const struct bench_rays *set,
                        double *nodes_per_ray, double *tris_per_ray);
+/* The same counts for the wide walk of the best table (0 without one);
+ * acc->wide must be collapsed. */
+void bench_count_tests_wide(const struct bench_accel *acc, const struct bench_rays *set,
+                            double *nodes_per_ray, double *tris_per_ray);
+void bench_accel_release_wide(struct bench_accel *acc);
 
 /* ------------------------------------------------------------ statistics */
 

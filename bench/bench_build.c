@@ -67,6 +67,11 @@ struct build_result {
     double primary_nodes, primary_tris;
     double random_nodes, random_tris;
     double trace_ms;
+    /* The 4-wide layout collapsed from this tree (first builder only). */
+    uint32_t wide_nodes;
+    double collapse_ms;
+    double primary_nodes4, primary_tris4;
+    double random_nodes4, random_tris4;
 };
 
 /* Measures every builder on one mesh.  The runs are interleaved (run 1 of
@@ -119,6 +124,16 @@ static int measure_builders(const struct bench_options *opts, const struct bench
         r->sah = accel_sah_cost(&acc[b].bvh, BVH_C_TRAV, BVH_C_ISECT);
         bench_count_tests(&acc[b], primary, &r->primary_nodes, &r->primary_tris);
         bench_count_tests(&acc[b], random, &r->random_nodes, &r->random_tris);
+        if (b == 0) {
+            double start = rt_now_ms();
+            if (accel_collapse4(&acc[b].wide, &acc[b].bvh))
+                goto out;
+            r->collapse_ms = rt_now_ms() - start;
+            r->wide_nodes = acc[b].wide.node_count;
+            bench_count_tests_wide(&acc[b], primary, &r->primary_nodes4, &r->primary_tris4);
+            bench_count_tests_wide(&acc[b], random, &r->random_nodes4, &r->random_tris4);
+            bench_accel_release_wide(&acc[b]);
+        }
     }
     report_progress("build: %s: trace timings\n", mesh->name);
     for (int run = 0; run < runs; run++) {
@@ -140,7 +155,8 @@ out:
 }
 
 static int build_mesh(const struct bench_options *opts, const struct bench_mesh *mesh,
-                      char *plot_script, size_t script_size, int first_plot)
+                      char *plot_script, size_t script_size, int first_plot,
+                      struct build_result *first)
 {
     struct bench_rays primary, random;
     struct build_result res[BUILDER_COUNT];
@@ -160,6 +176,7 @@ static int build_mesh(const struct bench_options *opts, const struct bench_mesh 
         goto out;
     if (measure_builders(opts, mesh, boxes, &primary, &random, hits, res))
         goto out;
+    *first = res[0];
     char file[64];
     snprintf(file, sizeof(file), "build_%s.dat", mesh->name);
     FILE *data = report_data_file(file);
@@ -230,10 +247,30 @@ int bench_build_section(const struct bench_options *opts, struct bench_mesh *mes
              "set grid\n"
              "set key top center\n");
     int failed = 0;
+    struct build_result first[8];
+    memset(first, 0, sizeof(first));
     bench_share_reset();
-    for (int m = 0; m < mesh_count; m++)
-        failed |= build_mesh(opts, &meshes[m], script, sizeof(script), m == 0) != 0;
+    for (int m = 0; m < mesh_count && m < 8; m++)
+        failed |= build_mesh(opts, &meshes[m], script, sizeof(script), m == 0, &first[m]) != 0;
     bench_share_report();
+    report_printf("\nLayouts of the %s tree: node bytes per triangle (binary: 32-byte "
+                  "nodes; bvh4: 128-byte nodes, trace/bvh4_layout.h), the collapse's time "
+                  "(one thread), and box and triangle tests per ray of the binary walk "
+                  "(scalar table) and of the wide walk (best table; a box test is one "
+                  "child box, four per wide node visited). Same hits.\n\n",
+                  builders[0].label);
+    report_table_header("mesh|binary B/tri|bvh4 B/tri|collapse ms|"
+                        "primary boxes/ray binary|bvh4|primary tris/ray binary|bvh4|"
+                        "random boxes/ray binary|bvh4|random tris/ray binary|bvh4");
+    for (int m = 0; m < mesh_count && m < 8; m++) {
+        const struct build_result *r = &first[m];
+        double n = meshes[m].tri_count ? (double)meshes[m].tri_count : 1.0;
+        report_row("%s|%.1f|%.1f|%.2f|%.1f|%.1f|%.2f|%.2f|%.1f|%.1f|%.2f|%.2f", meshes[m].name,
+                   32.0 * r->nodes / n, (double)sizeof(struct bvh4_node) * r->wide_nodes / n,
+                   r->collapse_ms, r->primary_nodes, r->primary_nodes4, r->primary_tris,
+                   r->primary_tris4, r->random_nodes, r->random_nodes4, r->random_tris,
+                   r->random_tris4);
+    }
     strncat(script, "\n", sizeof(script) - strlen(script) - 1);
     if (!failed)
         report_plot("build", script);

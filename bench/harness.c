@@ -25,6 +25,18 @@
  * library, so a file-scope choice is fine here). */
 static const struct trace_kernels *chosen_kernels;
 
+/* --layout binary: the binary walk even where the table has a wide one. */
+static int binary_layout;
+
+int bench_select_layout(const char *name)
+{
+    if (!strcmp(name, "binary") || !strcmp(name, "bvh4")) {
+        binary_layout = !strcmp(name, "binary");
+        return 0;
+    }
+    return -1;
+}
+
 const struct trace_kernels *bench_kernels(void)
 {
     return chosen_kernels ? chosen_kernels : trace_kernels_best();
@@ -51,8 +63,10 @@ int bench_accel_build(struct bench_accel *acc, const struct bench_mesh *mesh,
     if (rc)
         return -1;
     acc->tri = accel_gather_triangles(&acc->bvh, mesh->positions, mesh->indices);
-    if (!acc->tri) {
+    if (!acc->tri || accel_collapse4(&acc->wide, &acc->bvh)) {
+        rt_free(acc->tri);
         bvh_release(&acc->bvh);
+        memset(acc, 0, sizeof(*acc));
         return -1;
     }
     return 0;
@@ -62,6 +76,7 @@ void bench_accel_release(struct bench_accel *acc)
 {
     bvh_release(&acc->bvh);
     rt_free(acc->tri);
+    bvh4_release(&acc->wide);
     memset(acc, 0, sizeof(*acc));
 }
 
@@ -85,12 +100,15 @@ void bench_kernel_closest(void *ctx, const RTray *rays, uint32_t begin, uint32_t
                           struct bench_hit *hits)
 {
     const struct bench_accel *acc = ctx;
+    const struct trace_kernels *k = bench_kernels();
+    const int wide = k->closest4 && !binary_layout && acc->wide.node_count;
     for (uint32_t i = begin; i < end; i++) {
         const RTray *r = &rays[i];
         struct trace_ray ray;
         struct trace_hit h;
         trace_ray_init(&ray, r->org, r->dir, r->tmin);
-        if (bench_kernels()->closest(&acc->bvh, acc->tri, &ray, r->tmax, &h, NULL)) {
+        if (wide ? k->closest4(&acc->wide, &acc->bvh, acc->tri, &ray, r->tmax, &h, NULL)
+                 : k->closest(&acc->bvh, acc->tri, &ray, r->tmax, &h, NULL)) {
             hits[i].t = h.t;
             hits[i].prim = h.prim;
         } else {
@@ -104,11 +122,14 @@ void bench_kernel_any(void *ctx, const RTray *rays, uint32_t begin, uint32_t end
                       struct bench_hit *hits)
 {
     const struct bench_accel *acc = ctx;
+    const struct trace_kernels *k = bench_kernels();
+    const int wide = k->any4 && !binary_layout && acc->wide.node_count;
     for (uint32_t i = begin; i < end; i++) {
         const RTray *r = &rays[i];
         struct trace_ray ray;
         trace_ray_init(&ray, r->org, r->dir, r->tmin);
-        int occluded = bench_kernels()->any(&acc->bvh, acc->tri, &ray, r->tmax, NULL);
+        int occluded = wide ? k->any4(&acc->wide, &acc->bvh, acc->tri, &ray, r->tmax, NULL)
+                            : k->any(&acc->bvh, acc->tri, &ray, r->tmax, NULL);
         hits[i].t = occluded ? 0.0f : INFINITY;
         hits[i].prim = occluded ? 0 : BENCH_MISS;
     }
@@ -228,6 +249,28 @@ void bench_count_tests(const struct bench_accel *acc, const struct bench_rays *s
     double n = set->count ? (double)set->count : 1.0;
     *nodes_per_ray = (double)c.node_tests / n;
     *tris_per_ray = (double)c.triangle_tests / n;
+}
+
+void bench_count_tests_wide(const struct bench_accel *acc, const struct bench_rays *set,
+                            double *nodes_per_ray, double *tris_per_ray)
+{
+    const struct trace_kernels *k = trace_kernels_best();
+    struct trace_counters c = {0, 0};
+    for (uint32_t i = 0; i < set->count && k->closest4; i++) {
+        const RTray *r = &set->rays[i];
+        struct trace_ray ray;
+        struct trace_hit h;
+        trace_ray_init(&ray, r->org, r->dir, r->tmin);
+        k->closest4(&acc->wide, &acc->bvh, acc->tri, &ray, r->tmax, &h, &c);
+    }
+    double n = set->count ? (double)set->count : 1.0;
+    *nodes_per_ray = (double)c.node_tests / n;
+    *tris_per_ray = (double)c.triangle_tests / n;
+}
+
+void bench_accel_release_wide(struct bench_accel *acc)
+{
+    bvh4_release(&acc->wide);
 }
 
 static int compare_double(const void *a, const void *b)

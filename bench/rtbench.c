@@ -51,7 +51,7 @@ static void usage(FILE *f)
     fprintf(f,
             "usage: rtbench [build|trace|embree|dynamic|bart|all] [--quick] [--runs N]\n"
             "               [--out DIR] [--mesh bumpy|gears|soup] [--baseline FILE]\n"
-            "               [--tolerance PCT] [--bart-dir DIR] [--isa NAME]\n"
+            "               [--tolerance PCT] [--bart-dir DIR] [--isa NAME] [--layout L]\n"
             "\n"
             "  build      BVH quality against build time per builder and bin count\n"
             "  trace      Mrays/s, trace_closest/trace_any directly and through rtTraceRays\n"
@@ -68,6 +68,8 @@ static void usage(FILE *f)
             "             --tolerance PCT (default %.0f) and exit with status 2\n"
             "  --isa NAME  our kernels' ISA table: scalar, sse4, avx2, avx512; default the\n"
             "             best this CPU runs (API contexts always use their default)\n"
+            "  --layout L  our object walk's layout: bvh4 (default, where the ISA table\n"
+            "             has a wide walk) or binary (the walk before the collapse)\n"
             "  --bart-dir DIR  the BART folder (kitchen/, robots/, museum/); default\n"
             "             $TRACELIST_BART_DIR, else the build's RT_BART_DIR\n",
 #ifdef RT_HAVE_EMBREE
@@ -135,6 +137,12 @@ int main(int argc, char **argv)
                 return 1;
             }
             opts.isa = value;
+            i++;
+        } else if (!strcmp(a, "--layout") && value) {
+            if (bench_select_layout(value)) {
+                fprintf(stderr, "rtbench: --layout takes bvh4 or binary\n");
+                return 1;
+            }
             i++;
         } else if (!strcmp(a, "--mesh") && value) {
             opts.mesh = value;

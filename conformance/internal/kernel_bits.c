@@ -22,6 +22,15 @@
  * boxes' planes, grazing, from far away, with tmin > 0 and finite t_max;
  * over a grid-snapped soup (coincident planes and shared coordinates), a
  * random soup, a cube-sphere at 1e5 and a flat cube.
+ *
+ * The same rays then go through each table's walk over the 4-wide layout
+ * (bvh4_layout.h, traverse_wide.h) and must give the scalar binary
+ * walk's answers bit for bit (found, t, u, v, primitive, closest and any
+ * hit); the node and triangle counts differ by design and are printed
+ * per layout.  With `deform`, the mesh's vertices are moved after the
+ * build and both layouts refitted (accel_refit_mesh, accel_refit4) as
+ * lib/scene/accel.c does for a refit strategy: a wide layout left with
+ * the old boxes misses hits and fails the comparison.
  */
 #include <math.h>
 #include <stdint.h>
@@ -29,6 +38,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "accel/refit.h"
+#include "trace/bvh4_layout.h"
 #include "trace/bvh_layout.h"
 #include "accel_testgeo.h"
 #include "base/alloc.h"
@@ -98,7 +109,8 @@ static void make_ray(const struct tg_mesh *m, struct tg_rng *r, int kind, float 
         dir[0] = 1.0f;
 }
 
-static void compare_tables(const char *name, const struct tg_mesh *m, int rays, uint64_t seed)
+static void compare_tables(const char *name, struct tg_mesh *m, int rays, uint64_t seed,
+                           int deform)
 {
     struct aabb *boxes = tg_boxes(m);
     struct bvh bvh;
@@ -107,6 +119,28 @@ static void compare_tables(const char *name, const struct tg_mesh *m, int rays, 
         exit(1);
     }
     float *tri = accel_gather_triangles(&bvh, m->pos, m->idx);
+    struct bvh4 wide;
+    if (accel_collapse4(&wide, &bvh)) {
+        fprintf(stderr, "out of memory\n");
+        exit(1);
+    }
+    printf("  %s: node bytes per triangle: binary %.1f, bvh4 %.1f\n", name,
+           32.0 * bvh.node_count / m->tri_count,
+           (double)sizeof(struct bvh4_node) * wide.node_count / m->tri_count);
+    if (deform) {
+        /* A twist about z growing with height, and a shift: every box
+         * moves. */
+        for (uint32_t i = 0; i < m->vertex_count; i++) {
+            float *p = &m->pos[3 * i];
+            float a = 0.3f * p[2];
+            float x = p[0] * cosf(a) - p[1] * sinf(a);
+            float y = p[0] * sinf(a) + p[1] * cosf(a);
+            p[0] = x + 0.25f;
+            p[1] = y;
+        }
+        accel_refit_mesh(&bvh, tri, m->pos, m->idx, NULL);
+        accel_refit4(&wide, &bvh);
+    }
     const struct trace_kernels *ref = trace_kernels_get(TRACE_ISA_SCALAR);
     for (int isa = TRACE_ISA_SCALAR + 1; isa < TRACE_ISA_COUNT; isa++) {
         const struct trace_kernels *k = trace_kernels_get((enum trace_isa)isa);
@@ -115,6 +149,8 @@ static void compare_tables(const char *name, const struct tg_mesh *m, int rays, 
         struct tg_rng r;
         tg_seed(&r, seed);
         int differ = 0;
+        int differ4 = 0;
+        struct trace_counters n2 = {0, 0}, n4 = {0, 0};
         for (int i = 0; i < rays; i++) {
             float org[3], dir[3];
             make_ray(m, &r, i % 6, org, dir);
@@ -133,12 +169,42 @@ static void compare_tables(const char *name, const struct tg_mesh *m, int rays, 
             if (f0 != f1 || a0 != a1 || memcmp(&h0, &h1, sizeof(h0)) != 0 ||
                 c0.node_tests != c1.node_tests || c0.triangle_tests != c1.triangle_tests)
                 differ++;
+            if (k->closest4) {
+                struct trace_hit h4;
+                memset(&h4, 0, sizeof(h4));
+                struct trace_counters c4 = {0, 0};
+                int f4 = k->closest4(&wide, &bvh, tri, &ray, t_max, &h4, &c4);
+                n4.node_tests += c4.node_tests;
+                n4.triangle_tests += c4.triangle_tests;
+                int a4 = k->any4(&wide, &bvh, tri, &ray, t_max, NULL);
+                struct trace_counters c2 = {0, 0};
+                struct trace_hit h2;
+                ref->closest(&bvh, tri, &ray, t_max, &h2, &c2);
+                n2.node_tests += c2.node_tests;
+                n2.triangle_tests += c2.triangle_tests;
+                if (f0 != f4 || a0 != a4 || memcmp(&h0, &h4, sizeof(h0)) != 0) {
+                    if (differ4 < 5)
+                        printf("    bvh4 ray %d: found %d/%d any %d/%d t %a/%a prim %u/%u\n", i,
+                               f0, f4, a0, a4, h0.t, h4.t, h0.prim, h4.prim);
+                    differ4++;
+                }
+            }
         }
         failures += !CHECKF(differ == 0, "%s: %s differs from scalar on %d of %d rays", name,
                  k->name, differ, rays);
         printf("  %s: %s = scalar on %d rays\n", name, k->name, rays - differ);
+        if (k->closest4) {
+            failures += !CHECKF(differ4 == 0, "%s: %s bvh4 differs from scalar binary on %d of %d rays",
+                     name, k->name, differ4, rays);
+            printf("  %s: %s bvh4 = scalar binary on %d rays; per closest ray: nodes %.1f -> %.1f, "
+                   "triangles %.1f -> %.1f\n",
+                   name, k->name, rays - differ4, (double)n2.node_tests / rays,
+                   (double)n4.node_tests / rays, (double)n2.triangle_tests / rays,
+                   (double)n4.triangle_tests / rays);
+        }
     }
     rt_free(tri);
+    bvh4_release(&wide);
     bvh_release(&bvh);
     free(boxes);
 }
@@ -162,18 +228,19 @@ int main(void)
     tg_soup(&m, 3000, 4.0f, 0.5f, &r);
     for (uint32_t i = 0; i < 9 * m.tri_count; i++)
         m.pos[i] = roundf(m.pos[i] * 8.0f) / 8.0f; /* shared planes, slivers, points */
-    compare_tables("grid soup", &m, 60000, 12);
+    compare_tables("grid soup", &m, 60000, 12, 0);
     tg_mesh_free(&m);
     tg_soup(&m, 20000, 2.0f, 0.1f, &r);
-    compare_tables("soup", &m, 60000, 13);
+    compare_tables("soup", &m, 60000, 13, 0);
+    compare_tables("soup, deformed and refitted", &m, 60000, 16, 1);
     tg_mesh_free(&m);
     const double far[3] = {1e5, -1e5, 3e4};
     tg_cube_sphere(&m, 24, 1, 1.0, far);
-    compare_tables("sphere at 1e5", &m, 30000, 14);
+    compare_tables("sphere at 1e5", &m, 30000, 14, 0);
     tg_mesh_free(&m);
     const double zero[3] = {0.0, 0.0, 0.0};
     tg_cube_sphere(&m, 16, 0, 1.0, zero);
-    compare_tables("flat cube", &m, 60000, 15);
+    compare_tables("flat cube", &m, 60000, 15, 0);
     tg_mesh_free(&m);
     printf("  %s (%d failures)\n", failures ? "FAIL" : "ok", failures);
     return failures ? 1 : 0;

@@ -25,6 +25,7 @@ static int acquire_object(void *user, void *object, struct trace_object_view *vi
     if (accel && accel->serial == ((const struct scene_object *)object)->serial) {
         view->bvh = &accel->bvh;
         view->tri = accel->tri;
+        view->wide = &accel->wide;
         return 1;
     }
     int built_now;
@@ -41,6 +42,7 @@ static int acquire_object(void *user, void *object, struct trace_object_view *vi
     }
     view->bvh = &accel->bvh;
     view->tri = accel->tri;
+    view->wide = &accel->wide;
     return 1;
 }
 

@@ -27,16 +27,28 @@ static struct aabb *triangle_boxes(const struct scene_accel_geometry *geom)
 }
 
 /* The step after every change of the tree's topology: the leaf-ordered
- * triangles traversal reads, and the cost the update strategies compare.
- * Returns 0, or -1 on allocation failure (accel->tri unchanged). */
+ * triangles and the 4-wide layout traversal reads, and the cost the
+ * update strategies compare.  Returns 0, or -1 on allocation failure
+ * (accel->tri unchanged; accel->wide unchanged, or released when the
+ * collapse itself failed). */
 static int finish_layout(struct scene_accel *accel, const struct scene_accel_geometry *geom,
                          const struct bvh_build_params *params)
 {
     float *tri = accel_gather_triangles(&accel->bvh, geom->positions, geom->indices);
     if (!tri)
         return -1;
+    struct bvh4 wide;
+    if (accel_collapse4(&wide, &accel->bvh)) {
+        /* The tree may have changed under the old wide layout
+         * (restructuring): drop it, so traversal takes the binary walk. */
+        bvh4_release(&accel->wide);
+        rt_free(tri);
+        return -1;
+    }
     rt_free(accel->tri);
     accel->tri = tri;
+    bvh4_release(&accel->wide);
+    accel->wide = wide;
     accel->sah_cost = accel_sah_cost(&accel->bvh, params->c_trav, params->c_isect);
     return 0;
 }
@@ -71,11 +83,14 @@ fail:
 
 /* Boxes and leaf-ordered triangles in one pass over the leaves (paper 000
  * sec. 6 interleaves the two the same way): the refit updates the layout
- * in place, so finish_layout's gather is not needed, only the cost. */
+ * in place, so finish_layout's gather is not needed, only the cost.  The
+ * topology is unchanged, so the wide layout keeps its shape and only
+ * takes the refitted boxes (no allocation, nothing can fail). */
 void scene_accel_refit(struct scene_accel *accel, const struct scene_accel_geometry *geom,
                        const struct bvh_build_params *params, struct rt_pool *pool)
 {
     accel_refit_mesh(&accel->bvh, accel->tri, geom->positions, geom->indices, pool);
+    accel_refit4(&accel->wide, &accel->bvh);
     accel->sah_cost = accel_sah_cost(&accel->bvh, params->c_trav, params->c_isect);
 }
 
@@ -117,6 +132,7 @@ void scene_accel_release(struct scene_accel *accel)
         return;
     bvh_release(&accel->bvh);
     rt_free(accel->tri);
+    bvh4_release(&accel->wide);
     if (accel->restructure_state_ready)
         accel_restructure_state_release(&accel->restructure_state);
     rt_free(accel);

@@ -20,6 +20,7 @@
 
 #include "accel/restructure.h"
 #include "base/pool.h"
+#include "trace/bvh4_layout.h"
 #include "trace/bvh_layout.h"
 
 struct scene_object;
@@ -27,6 +28,7 @@ struct scene_object;
 struct scene_accel {
     struct bvh bvh;
     float *tri; /* leaf-ordered vertices, accel_gather_triangles */
+    struct bvh4 wide; /* the 4-wide traversal layout of bvh (bvh4_layout.h) */
     uint32_t serial;   /* the object's serial this structure reflects */
     uint32_t topology; /* the object's topology serial it was built for */
     double sah_cost;       /* of the tree as it is now */

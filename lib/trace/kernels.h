@@ -16,6 +16,7 @@
 
 #include <stddef.h>
 
+#include "trace/bvh4_layout.h"
 #include "trace/trace.h"
 
 enum trace_isa {
@@ -33,6 +34,15 @@ struct trace_kernels {
                    float t_max, struct trace_hit *hit, struct trace_counters *counters);
     int (*any)(const struct bvh *bvh, const float *tri, const struct trace_ray *ray,
                float t_max, struct trace_counters *counters);
+    /* The walk over the 4-wide layout (traverse_wide.h), same answers as
+     * closest/any (not the same node and triangle counts); NULL in the
+     * scalar table, which keeps the binary walk as the reference.  bvh is
+     * the binary tree wide was collapsed from (its prim_index). */
+    int (*closest4)(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,
+                    const struct trace_ray *ray, float t_max, struct trace_hit *hit,
+                    struct trace_counters *counters);
+    int (*any4)(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,
+                const struct trace_ray *ray, float t_max, struct trace_counters *counters);
 };
 
 /* The table of an ISA, or NULL when this build has no such table or this

@@ -65,7 +65,7 @@ static int walk(const struct trace_scene *scene, const float org[3], const float
             for (uint32_t i = 0; i < node->count; i++) {
                 const struct trace_instance *inst =
                     &scene->instances[top->prim_index[node->first + i]];
-                struct trace_object_view view;
+                struct trace_object_view view = {NULL, NULL, NULL};
                 counters->instance_tests++;
                 if (!scene->acquire(scene->user, inst->object, &view))
                     continue;
@@ -84,8 +84,14 @@ static int walk(const struct trace_scene *scene, const float org[3], const float
                     o_ray = ray;
                 else
                     trace_ray_init(&o_ray, o_org, o_dir, tmin);
+                /* The wide walk where the table has one and the object a
+                 * wide layout: the same answers (kernels.h). */
+                const int wide = view.wide && view.wide->node_count && kernels->closest4;
                 if (any_hit) {
-                    if (kernels->any(view.bvh, view.tri, &o_ray, best, &counters->object))
+                    if (wide ? kernels->any4(view.wide, view.bvh, view.tri, &o_ray, best,
+                                             &counters->object)
+                             : kernels->any(view.bvh, view.tri, &o_ray, best,
+                                            &counters->object))
                         return 1;
                     continue;
                 }
@@ -95,7 +101,11 @@ static int walk(const struct trace_scene *scene, const float org[3], const float
                 uint32_t index = top->prim_index[node->first + i];
                 float limit = found ? isect_next_up(best) : best;
                 struct trace_hit h;
-                if (kernels->closest(view.bvh, view.tri, &o_ray, limit, &h, &counters->object) &&
+                int got = wide ? kernels->closest4(view.wide, view.bvh, view.tri, &o_ray, limit,
+                                                   &h, &counters->object)
+                               : kernels->closest(view.bvh, view.tri, &o_ray, limit, &h,
+                                                  &counters->object);
+                if (got &&
                     (!found || h.t < best || index < hit->instance)) {
                     best = h.t;
                     box_limit = best * ISECT_BOX_FAR_SCALE;

@@ -35,6 +35,7 @@ struct trace_instance {
 struct trace_object_view {
     const struct bvh *bvh;
     const float *tri;
+    const struct bvh4 *wide; /* NULL or empty: the binary walk only */
 };
 
 /* Fills *view for the object; returns 0 when it cannot be had (allocation

@@ -11,9 +11,13 @@
 #define TRACE_WALK_CLOSEST trace_closest_avx2
 #define TRACE_WALK_ANY trace_any_avx2
 #include "trace/traverse_walk.h"
+#define TRACE_WIDE_CLOSEST trace_closest4_avx2
+#define TRACE_WIDE_ANY trace_any4_avx2
+#include "trace/traverse_wide.h"
 
 static const struct trace_kernels table = {
-    TRACE_ISA_AVX2, "avx2", trace_closest_avx2, trace_any_avx2};
+    TRACE_ISA_AVX2, "avx2", trace_closest_avx2, trace_any_avx2,
+    trace_closest4_avx2, trace_any4_avx2};
 
 const struct trace_kernels *trace_kernels_avx2(void)
 {

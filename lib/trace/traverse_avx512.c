@@ -11,9 +11,13 @@
 #define TRACE_WALK_CLOSEST trace_closest_avx512
 #define TRACE_WALK_ANY trace_any_avx512
 #include "trace/traverse_walk.h"
+#define TRACE_WIDE_CLOSEST trace_closest4_avx512
+#define TRACE_WIDE_ANY trace_any4_avx512
+#include "trace/traverse_wide.h"
 
 static const struct trace_kernels table = {
-    TRACE_ISA_AVX512, "avx512", trace_closest_avx512, trace_any_avx512};
+    TRACE_ISA_AVX512, "avx512", trace_closest_avx512, trace_any_avx512,
+    trace_closest4_avx512, trace_any4_avx512};
 
 const struct trace_kernels *trace_kernels_avx512(void)
 {

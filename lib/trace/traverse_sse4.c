@@ -11,9 +11,13 @@
 #define TRACE_WALK_CLOSEST trace_closest_sse4
 #define TRACE_WALK_ANY trace_any_sse4
 #include "trace/traverse_walk.h"
+#define TRACE_WIDE_CLOSEST trace_closest4_sse4
+#define TRACE_WIDE_ANY trace_any4_sse4
+#include "trace/traverse_wide.h"
 
 static const struct trace_kernels table = {
-    TRACE_ISA_SSE4, "sse4", trace_closest_sse4, trace_any_sse4};
+    TRACE_ISA_SSE4, "sse4", trace_closest_sse4, trace_any_sse4,
+    trace_closest4_sse4, trace_any4_sse4};
 
 const struct trace_kernels *trace_kernels_sse4(void)
 {
