@@ -26,7 +26,7 @@
 #include <stdio.h>
 
 #include "trace/bvh4_layout.h"
-#include "trace/bvh_layout.h"
+#include "accel/bvh_build.h"
 #include "base/aabb.h"
 #include "trace/kernels.h"
 #include "trace/trace.h"

@@ -24,7 +24,7 @@
 #include <string.h>
 
 #include "accel/build_internal.h"
-#include "trace/bvh_layout.h"
+#include "accel/bvh_build.h"
 #include "accel_testgeo.h"
 #include "base/alloc.h"
 #include "base/timer.h"

@@ -27,7 +27,7 @@ static int failures;
 #include "accel/build_internal.h"
 #include "accel/build_median.h"
 #include "accel/build_parallel.h"
-#include "trace/bvh_layout.h"
+#include "accel/bvh_build.h"
 #include "accel_testgeo.h"
 #include "base/alloc.h"
 #include "base/timer.h"

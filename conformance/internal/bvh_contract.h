@@ -22,7 +22,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "trace/bvh_layout.h"
+#include "accel/bvh_build.h"
 #include "accel_testgeo.h"
 #include "trace/trace.h"
 

@@ -40,7 +40,7 @@
 
 #include "accel/refit.h"
 #include "trace/bvh4_layout.h"
-#include "trace/bvh_layout.h"
+#include "accel/bvh_build.h"
 #include "accel_testgeo.h"
 #include "base/alloc.h"
 #include "trace/kernels.h"

@@ -21,7 +21,7 @@
 static int failures;
 
 #include "accel/build_parallel.h"
-#include "trace/bvh_layout.h"
+#include "accel/bvh_build.h"
 #include "accel/refit.h"
 #include "accel_testgeo.h"
 #include "base/alloc.h"

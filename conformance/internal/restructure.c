@@ -43,7 +43,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "trace/bvh_layout.h"
+#include "accel/bvh_build.h"
 #include "accel/restructure.h"
 #include "accel_testgeo.h"
 #include "base/alloc.h"

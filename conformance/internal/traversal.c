@@ -29,7 +29,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "trace/bvh_layout.h"
+#include "accel/bvh_build.h"
 #include "accel_testgeo.h"
 #include "base/alloc.h"
 #include "base/timer.h"

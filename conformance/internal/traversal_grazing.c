@@ -53,7 +53,7 @@
 
 #include "accel/build_parallel.h"
 #include "accel/build_toplevel.h"
-#include "trace/bvh_layout.h"
+#include "accel/bvh_build.h"
 #include "accel_testgeo.h"
 #include "base/alloc.h"
 #include "base/timer.h"

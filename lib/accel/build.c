@@ -7,7 +7,7 @@
  * Ownership: a struct bvh owns its nodes and prim_index arrays, both from
  * rt_malloc/rt_realloc_array; bvh_release returns them.
  */
-#include "trace/bvh_layout.h"
+#include "accel/bvh_build.h"
 
 #include <math.h>
 #include <stddef.h>

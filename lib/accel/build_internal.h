@@ -23,7 +23,7 @@
 #include <string.h>
 
 #include "accel/vec4.h"
-#include "trace/bvh_layout.h"
+#include "accel/bvh_build.h"
 
 /* Half the surface area of a node's box (the SAH's A). */
 static inline float build_node_half_area(const struct bvh_node *node)

@@ -18,7 +18,7 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "trace/bvh_layout.h"
+#include "accel/bvh_build.h"
 
 /*
  * The leaf-growth factor we recommend for rebuild-every-frame objects

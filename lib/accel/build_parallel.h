@@ -20,7 +20,7 @@
 #include <stdint.h>
 
 #include "accel/build_median.h"
-#include "trace/bvh_layout.h"
+#include "accel/bvh_build.h"
 #include "base/pool.h"
 
 /* Stage 1 (paper 000 sec. 5, "Coarse Scene Partitioning"). */

@@ -9,7 +9,7 @@
 
 #include <stdint.h>
 
-#include "trace/bvh_layout.h"
+#include "accel/bvh_build.h"
 
 /*
  * Builds a BVH over instance boxes with the split rule of paper 004 sec.

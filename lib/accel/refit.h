@@ -34,7 +34,7 @@
 
 #include <stdint.h>
 
-#include "trace/bvh_layout.h"
+#include "accel/bvh_build.h"
 #include "base/pool.h"
 
 /*

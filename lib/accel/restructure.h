@@ -38,7 +38,7 @@
 
 #include <stdint.h>
 
-#include "trace/bvh_layout.h"
+#include "accel/bvh_build.h"
 #include "base/aabb.h"
 
 /* A node pair of the pair-queue and an entry of the pair-heap; defined

@@ -21,7 +21,7 @@
 
 #include <stdint.h>
 
-#include "trace/bvh_layout.h"
+#include "accel/bvh_build.h"
 #include "accel/restructure.h"
 
 #define RS_NONE UINT32_MAX

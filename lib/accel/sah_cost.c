@@ -4,7 +4,7 @@
  * the quality measure that paper 000 table 1 and rtbench compare builders
  * by.  See bvh_layout.h for the formula.
  */
-#include "trace/bvh_layout.h"
+#include "accel/bvh_build.h"
 
 static double node_half_area(const struct bvh_node *n)
 {

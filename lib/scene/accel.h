@@ -21,7 +21,7 @@
 #include "accel/restructure.h"
 #include "base/pool.h"
 #include "trace/bvh4_layout.h"
-#include "trace/bvh_layout.h"
+#include "accel/bvh_build.h"
 
 struct scene_object;
 

@@ -19,7 +19,7 @@
 
 #include <stdint.h>
 
-#include "trace/bvh_layout.h"
+#include "accel/bvh_build.h"
 #include "scene/object.h"
 #include "trace/scene_traverse.h"
 

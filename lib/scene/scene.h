@@ -28,7 +28,7 @@
 #include "scene/object.h"
 #include "scene/texture.h"
 #include "scene/update.h"
-#include "trace/bvh_layout.h"
+#include "accel/bvh_build.h"
 
 /* What changed in the scene since the last preparation: what an MPI
  * master will broadcast and what an accumulating renderer resets on.

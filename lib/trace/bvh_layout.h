@@ -1,18 +1,9 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * bvh_layout.h - bounding volume hierarchy layout and the builders'
- * interface.
+ * bvh_layout.h - the binary bounding volume hierarchy's memory layout.
  *
  * The layout sits below both layers that use it: trace/ reads it, the
- * builders of accel/ write it.  The builders' declarations (parameters,
- * accel_build*, accel_sah_cost, accel_gather_triangles, bvh_release; all
- * implemented in lib/accel) are still in this header so that edits made
- * to the former accel/bvh.h on other branches carry over to it by rename;
- * they are to move to an accel/ header once those branches have merged.
- *
- * A BVH is built over an array of primitive boxes (triangles for objects,
- * instance boxes for the top level): the builders never see triangles,
- * RT_ enums or the context, so each is testable alone.
+ * builders of accel/ (accel/bvh_build.h) write it.
  *
  * Node layout (32 bytes, two nodes per 64-byte cache line):
  *
@@ -49,106 +40,8 @@ struct bvh {
     uint32_t depth; /* edges on the longest root-to-leaf path; <= BVH_MAX_DEPTH */
 };
 
-/* Bins of the binned SAH build.  Paper 000 sec. 4 and table 1: 16 bins
- * are within a few percent of the sweep build, 4 already usable. */
-#define BVH_DEFAULT_BINS 16
-#define BVH_MAX_BINS 256
-/* SAH constants (MacDonald and Booth 1990): the cost of one traversal step
- * and of one primitive test, in the same unit.  Ratio 1:1 as in tinybvh's
- * C_TRAV/C_INT defaults; only the ratio matters. */
-#define BVH_C_TRAV 1.0f
-#define BVH_C_ISECT 1.0f
-/* Leaves never hold more primitives than this: larger ones are split at
- * the object median even when the SAH prefers a leaf. */
-#define BVH_MAX_LEAF_SIZE 8
 /* The builders guarantee depth <= BVH_MAX_DEPTH so that traversal can use
  * a fixed stack of BVH_MAX_DEPTH + 1 entries. */
 #define BVH_MAX_DEPTH 64
-
-enum bvh_builder {
-    BVH_BUILDER_BINNED_SAH, /* Wald 2007; paper 000 sec. 4 */
-    BVH_BUILDER_SWEEP_SAH   /* full sweep over sorted centroids: the quality reference */
-};
-
-struct bvh_build_params {
-    enum bvh_builder builder;
-    int bins;          /* binned builder only: 2..BVH_MAX_BINS */
-    int max_leaf_size; /* 1..BVH_MAX_LEAF_SIZE */
-    float c_trav;
-    float c_isect;
-    /* Looser leaf criterion for per-frame rebuilds (paper 004 sec. 4.3):
-     * a node at depth d with at most min(max_leaf_size, floor(g^d))
-     * primitives becomes a leaf without any split being evaluated, g =
-     * leaf_growth.  1 (the default) switches it off; values below 1 or
-     * not finite are treated as 1.  Read by the median builder and the
-     * parallel build's median subtrees (build_more.h, which names the
-     * recommended value, BVH_LEAF_GROWTH_REBUILD).  TODO(issue "dynamic
-     * scenes"): the binned and sweep builders do not read it yet. */
-    float leaf_growth;
-};
-
-/* Fills *params with the defaults above (binned SAH, 16 bins). */
-void bvh_build_params_default(struct bvh_build_params *params);
-
-/*
- * Builds a BVH over prim_count boxes.  prim_boxes must be finite and
- * non-empty (min <= max); degenerate (flat or point) boxes are fine, as
- * are any number of identical boxes: when the centroids cannot be
- * separated the builder splits at the object median, so depth stays
- * bounded by BVH_MAX_DEPTH.  Boxes that break the contract (NaN, inf)
- * give a valid tree (each primitive in exactly one leaf, depth bounded)
- * with meaningless bounds, never a crash.
- *
- * params NULL means the defaults; fields out of range are brought into
- * range (accel_build_params_normalize in build_internal.h: bins and
- * max_leaf_size clamped, a bad cost or builder replaced by its default).
- * *out is output only: whatever it held is overwritten, not released.
- * Leaves hold 1..max_leaf_size primitives.  With prim_count == 0 the
- * result is the empty BVH above and 0 is returned.
- *
- * On success returns 0 and *out owns freshly allocated arrays (release
- * with bvh_release).  On allocation failure (or prim_count > 2^31, whose
- * 2n - 1 nodes would not fit the 32-bit indices) returns -1 and *out is
- * left zeroed.  Deterministic: the same input gives the same tree, on any
- * machine (the SIMD and plain C paths compute the same floats).
- * Thread-safe for distinct outputs.
- *
- * accel_build dispatches on params->builder; the two builders can also
- * be called directly (they ignore params->builder).  The binned builder
- * uses fewer bins than params->bins for small nodes (at most 4 + n/2) and
- * an exact sweep for nodes of at most 8 primitives, see
- * build_binned_sah.c.
- */
-int accel_build(struct bvh *out, const struct aabb *prim_boxes, uint32_t prim_count,
-                const struct bvh_build_params *params);
-int accel_build_binned_sah(struct bvh *out, const struct aabb *prim_boxes,
-                           uint32_t prim_count, const struct bvh_build_params *params);
-int accel_build_sweep_sah(struct bvh *out, const struct aabb *prim_boxes,
-                          uint32_t prim_count, const struct bvh_build_params *params);
-
-/* Frees the arrays of *bvh and zeroes it; safe on a zeroed bvh. */
-void bvh_release(struct bvh *bvh);
-
-/*
- * SAH cost of a finished tree (MacDonald and Booth 1990): the sum over
- * inner nodes of A(n)/A(root) * c_trav plus the sum over leaves of
- * A(n)/A(root) * count * c_isect, A = surface area.  0 for an empty tree,
- * and 0 when the root's area is 0 (every primitive on one line).
- * Computed in double.  Used to compare builders: cost / cost(sweep) is
- * the quality ratio.
- */
-double accel_sah_cost(const struct bvh *bvh, float c_trav, float c_isect);
-
-/*
- * Copies triangle vertices into leaf order for traversal: returns an
- * array of 9 * bvh->prim_count floats, slot i holding v0, v1, v2 of
- * triangle prim_index[i], where triangle j has vertex indices
- * indices[3j..3j+2] into positions (xyz per vertex).  The indices are
- * not checked: the caller validates them.  For an empty BVH the result
- * is a valid pointer to no data.  NULL on allocation failure.  Caller
- * frees with rt_free.
- */
-float *accel_gather_triangles(const struct bvh *bvh, const float *positions,
-                              const uint32_t *indices);
 
 #endif
