@@ -5,14 +5,14 @@
  *
  *   explode  a torus whose triangles (three vertices of their own each)
  *            fly apart, each along its normal with a random extra
- *            velocity: a refitted tree degrades fast (paper 000 fig. 3's
+ *            velocity: a refitted tree degrades fast (Wald, Ize and Parker (2008) fig. 3's
  *            exploding dragon);
  *   cloth    a waving grid, neighbours stay neighbours: refitting keeps
- *            the first tree good (paper 001's cloth benchmark);
+ *            the first tree good (Yoon, Curtis and Manocha's (2007) cloth benchmark);
  *   soup     N random triangles morphing from one random configuration to
  *            the next every BENCH_SOUP_KEY_FRAMES frames, each moving a
  *            random step (up to 0.75 per axis in a cube of side 4; the unstructured
- *            motion of BART's museum, paper 004 sec. 5.3, in the shape of
+ *            motion of BART's museum, Wald, Benthin and Slusallek (2003) sec. 5.3, in the shape of
  *            its worst case: uniformly random, never a surface).
  *
  * Frame f of an animation is a pure function of (kind, size, f): values

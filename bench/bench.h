@@ -210,7 +210,7 @@ void bench_accel_release(struct bench_accel *acc);
 
 /*
  * The reference of the SAH-cost ratio that `rtbench dynamic` and `rtbench
- * bart` report for an object's tree (paper 000 fig. 3's quality measure):
+ * bart` report for an object's tree (Wald, Ize and Parker (2008) fig. 3's quality measure):
  * builds mesh afresh with `builder` (otherwise bvh_build_params_default,
  * the parameters a context's objects are built with) and returns the
  * tree's SAH cost as RT_OBJECT_SAH_COST measures an object's tree,
@@ -366,7 +366,7 @@ int bench_trace_section(const struct bench_options *opts, struct bench_mesh *mes
                         int mesh_count);
 int bench_dynamic_section(const struct bench_options *opts, struct bench_mesh *meshes,
                           int mesh_count);
-/* `rtbench bart` (bench_bart.c): the BART scenes, paper 004 sec. 5.
+/* `rtbench bart` (bench_bart.c): the BART scenes, Wald, Benthin and Slusallek (2003) sec. 5.
  * bench_bart_find_data returns 0 when the three scenes are readable under
  * the data folder opts selects (--bart-dir, $TRACELIST_BART_DIR, the build's
  * RT_BART_DIR), else -1 with the reason in why (no path in it). */

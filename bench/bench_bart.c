@@ -2,7 +2,7 @@
 /*
  * bench_bart.c - `rtbench bart`: the BART scenes (Lext, Assarsson and
  * Moeller 2000: kitchen, robots, museum) played through the public API the
- * way paper 004 (Wald, Benthin and Slusallek 2003, sec. 5) played them
+ * way Wald, Benthin and Slusallek (2003, sec. 5) played them
  * through OpenRT, with the paper's figures printed beside ours.
  *
  * The data is third-party and only read at run time, from --bart-dir, else
@@ -28,21 +28,21 @@
  * Measurements, in the order of the report:
  *  1. the scenes: objects by class, instances, triangles, load time, the
  *     first frame and its lazy builds;
- *  2. RT_STAT_TOPLEVEL_TIME over every frame of each animation (paper 004
+ *  2. RT_STAT_TOPLEVEL_TIME over every frame of each animation (Wald, Benthin and Slusallek (2003)
  *     secs. 4.5, 5.2 and 5.4);
  *  3. the museum's unstructured update time per frame with RT_REBUILD and
- *     RT_REBUILD_MEDIAN (paper 004 table 3);
+ *     RT_REBUILD_MEDIAN (Wald, Benthin and Slusallek (2003) table 3);
  *  4. frames per second, eye light and Whitted, on contexts threads=1 and
- *     threads=2, over frames spread through each animation (paper 004
+ *     threads=2, over frames spread through each animation (Wald, Benthin and Slusallek (2003)
  *     tables 1, 2 and 4);
  *  5. the update strategies over the whole museum animation, with the
  *     SAH-cost ratio of the unstructured object's tree against a fresh
- *     sweep SAH build of the same frame (paper 000 fig. 3; the measure of
+ *     sweep SAH build of the same frame (Wald, Ize and Parker (2008) fig. 3; the measure of
  *     `rtbench dynamic`), and a short robots run showing that rigid motion
  *     gives the strategies nothing to do;
  *  6. the two-level overhead: the same frames rendered through the
  *     instances and as one flattened static object (rtuBakeAFF), structures
- *     built before timing (paper 004 sec. 6, "Total Overhead").
+ *     built before timing (Wald, Benthin and Slusallek (2003) sec. 6, "Total Overhead").
  *
  * Correctness checks (rtbench exits with status 3 when one fails): a
  * frame's image must be bit-identical on threads=1 and threads=2 (4) and
@@ -66,7 +66,7 @@
 #define RT_BART_DIR ""
 #endif
 
-/* Paper 004 sec. 5: "All examples are rendered at video resolution of
+/* Wald, Benthin and Slusallek (2003) sec. 5: "All examples are rendered at video resolution of
  * 640x480 pixels"; sec. 5.1: "a reflection depth of 3". */
 #define BART_WIDTH 640
 #define BART_HEIGHT 480
@@ -111,7 +111,7 @@
 static const char *const shading_label[SHADINGS] = {"eye light", "Whitted"};
 static const char *const shading_key[SHADINGS] = {"eye", "whitted"};
 
-/* The scenes and paper 004's figures for them.  The fps are for "2 CPUs",
+/* The scenes and Wald, Benthin and Slusallek's (2003) figures for them.  The fps are for "2 CPUs",
  * i.e. one dual-CPU client (table 4's column "1"); the paper gives no
  * one-CPU figure. */
 struct bart_scene_info {
@@ -119,7 +119,7 @@ struct bart_scene_info {
     const char *file; /* under the data folder */
     const char *paper_source;
     double paper_fps[SHADINGS];
-    const char *paper_scene;    /* how paper 004 describes it */
+    const char *paper_scene;    /* how Wald, Benthin and Slusallek (2003) describes it */
     const char *paper_toplevel; /* its top-level build time */
 };
 
@@ -143,7 +143,7 @@ static const struct bart_scene_info scene_info[] = {
 #define ROBOTS 1
 #define MUSEUM 2
 
-/* Paper 004 sec. 5.1: rays per frame in the kitchen at reflection depth 3. */
+/* Wald, Benthin and Slusallek (2003) sec. 5.1: rays per frame in the kitchen at reflection depth 3. */
 #define PAPER_KITCHEN_RAYS 3867661.0
 
 struct strategy {
@@ -921,7 +921,7 @@ static int museum_strategies_table(const struct bench_options *opts, const char 
         }
         fclose(data);
     }
-    report_printf("\n### Update strategies over the museum animation (paper 000 fig. 3)\n\n");
+    report_printf("\n### Update strategies over the museum animation (Wald, Ize and Parker (2008) fig. 3)\n\n");
     report_printf(
         "All %d frames of the museum, consecutive, eye light at %dx%d (a quarter of the "
         "paper's pixels, so that the seven strategies fit in the run time), on a context `%s`; "
@@ -934,7 +934,7 @@ static int museum_strategies_table(const struct bench_options *opts, const char 
         "after each frame / SAH cost of a fresh sweep SAH build of that frame's triangles "
         "(the measure of `rtbench dynamic`; mean and max over frames and runs). Rebuilds and "
         "refits: RT_OBJECT_REBUILDS and RT_OBJECT_REFITS at the end (the first build "
-        "included). Images: every frame's image against RT_REFIT's, bit for bit. Paper 000 "
+        "included). Images: every frame's image against RT_REFIT's, bit for bit. Wald, Ize and Parker (2008) "
         "fig. 3 has no museum; its point, that refitting alone degrades under unstructured "
         "motion, is what the SAH column tests.\n\n",
         frames, m.w, m.h, STRATEGY_CONFIG, tpa_triangles, runs, runs == 1 ? "" : "s",
@@ -1126,7 +1126,7 @@ static void print_tables(const struct bench_options *opts, struct scene_result *
     char key[96];
 
     report_printf("\n### Scenes\n\n");
-    report_printf("Objects as rtuLoadAFF records them (paper 004 sec. 4.1's grouping: one "
+    report_printf("Objects as rtuLoadAFF records them (Wald, Benthin and Slusallek (2003) sec. 4.1's grouping: one "
                   "static object, one object per animated transform that owns geometry, one "
                   "unstructured object of the animated triangles); instances per frame; "
                   "triangles as instantiated (animated ones in brackets). Load: rtuLoadAFF "
@@ -1138,7 +1138,7 @@ static void print_tables(const struct bench_options *opts, struct scene_result *
                   w, h);
     report_table_header("scene|frames|static / rigid / unstructured objects|instances|"
                         "triangles|lights|textures|load ms|first frame ms|lazy builds ms|"
-                        "objects built|paper 004");
+                        "objects built|Wald, Benthin and Slusallek (2003)");
     for (int i = 0; i < SCENES; i++) {
         const struct scene_result *r = &res[i];
         report_row("%s|%d|%d / %d / %d|%d|%d (%d)|%d|%d|%.1f|%.1f|%.1f|%d of %d|%s",
@@ -1154,20 +1154,20 @@ static void print_tables(const struct bench_options *opts, struct scene_result *
         report_metric(key, r->first.build_ms, 0);
     }
 
-    report_printf("\n### Top-level update per frame (paper 004 secs. 4.5 and 5.2)\n\n");
+    report_printf("\n### Top-level update per frame (Wald, Benthin and Slusallek (2003) secs. 4.5 and 5.2)\n\n");
     report_printf("Every frame of each animation in order (frames 1..N-1 counted), eye light "
                   "at %dx%d, context `threads=2`, one pass: RT_STAT_TOPLEVEL_TIME (the "
                   "top-level build over the instance boxes; near 0 when the instance list did "
                   "not change), its median and maximum; frames whose top level was rebuilt "
                   "(RT_STAT_TOPLEVEL_BUILDS); and the median time to describe a frame "
                   "(rtuAFFView, rtuAFFLights, rtuDrawAFF: issuing the instances, and for the "
-                  "museum evaluating and sending its animated triangles). Paper 004: under "
+                  "museum evaluating and sending its animated triangles). Wald, Benthin and Slusallek (2003): under "
                   "1 ms for the robots' 161 objects, up to 4 ms for its Terrain scene's 661 "
                   "instances (not BART).\n\n",
                   opts->quick ? BART_QUICK_WIDTH : BART_PLAY_WIDTH,
                   opts->quick ? BART_QUICK_HEIGHT : BART_PLAY_HEIGHT);
     report_table_header("scene|instances|frames|top level median ms|top level max ms|"
-                        "rebuilt in frames|describe median ms|paper 004");
+                        "rebuilt in frames|describe median ms|Wald, Benthin and Slusallek (2003)");
     for (int i = 0; i < SCENES; i++) {
         const struct scene_result *r = &res[i];
         report_row("%s|%d|%d|%.3f|%.3f|%d|%.3f|%s", scene_info[i].name, r->instances, r->played,
@@ -1179,19 +1179,19 @@ static void print_tables(const struct bench_options *opts, struct scene_result *
         report_metric(key, r->toplevel_max, -1);
     }
 
-    report_printf("\n### Museum: unstructured update per frame (paper 004 table 3)\n\n");
+    report_printf("\n### Museum: unstructured update per frame (Wald, Benthin and Slusallek (2003) table 3)\n\n");
     report_printf("The museum's unstructured object (%d animated triangles) with the strategy "
                   "hint RT_REBUILD (binned SAH) or RT_REBUILD_MEDIAN (spatial median), every "
                   "frame in order at %dx%d, eye light, context `threads=2` (at this size the "
                   "build runs on the calling thread); RT_OBJECT_UPDATE_TIME of the object over "
-                  "frames 1..%d, and the median RT_STAT_UPDATE_TIME. Paper 004 table 3: the "
+                  "frames 1..%d, and the median RT_STAT_UPDATE_TIME. Wald, Benthin and Slusallek (2003) table 3: the "
                   "object BSP's reconstruction for museum/1k (2003, one CPU); its other sizes "
                   "(64 to 64k) are not in the BART data here, the dynamic section's soup "
                   "covers them.\n\n",
                   res[MUSEUM].animated_triangles, opts->quick ? BART_QUICK_WIDTH : BART_PLAY_WIDTH,
                   opts->quick ? BART_QUICK_HEIGHT : BART_PLAY_HEIGHT, mu[0].frames);
     report_table_header("strategy|median ms|mean ms|max ms|RT_STAT_UPDATE_TIME median ms|"
-                        "paper 004 (1k)");
+                        "Wald, Benthin and Slusallek (2003) (1k)");
     for (int k = 0; k < 2; k++) {
         report_row("%s|%.3f|%.3f|%.3f|%.3f|8 ms", museum_strategies[k + 1].label, mu[k].median,
                    mu[k].mean, mu[k].max, mu[k].stat_median);
@@ -1199,7 +1199,7 @@ static void print_tables(const struct bench_options *opts, struct scene_result *
         report_metric(key, mu[k].median, 0);
     }
 
-    report_printf("\n### Frames per second (paper 004 tables 1, 2 and 4)\n\n");
+    report_printf("\n### Frames per second (Wald, Benthin and Slusallek (2003) tables 1, 2 and 4)\n\n");
     report_printf(
         "%d frames spread evenly through each animation (frame round(i (N-1) / %d), "
         "i = 1..%d), played in order after an untimed eye-light frame 0, so that "
@@ -1208,7 +1208,7 @@ static void print_tables(const struct bench_options *opts, struct scene_result *
         "RT_MAX_RAY_DEPTH %d, \"Ray Tracing\"); contexts `threads=1` and `threads=2`. "
         "fps = frames / total wall clock (describe + update + render), median of %d "
         "interleaved runs; the first frame (lazy builds) is in the Scenes table. "
-        "Paper 004: 2 CPUs = one dual AthlonMP 1800+ client (tables 1 and 2, column 2; "
+        "Wald, Benthin and Slusallek (2003): 2 CPUs = one dual AthlonMP 1800+ client (tables 1 and 2, column 2; "
         "table 4, column 1); it gives no 1-CPU figure (n/r). Its shading is "
         "programmable shaders with texturing; ours is fixed-function Phong with "
         "textures.\n\n",
@@ -1266,7 +1266,7 @@ static void print_overhead(const struct bench_options *opts, const struct scene_
     const int h = opts->quick ? BART_QUICK_HEIGHT : BART_HEIGHT;
     char key[96];
     int unsettled = 0;
-    report_printf("\n### Two-level overhead: dynamic against flattened (paper 004 sec. 6, "
+    report_printf("\n### Two-level overhead: dynamic against flattened (Wald, Benthin and Slusallek (2003) sec. 6, "
                   "\"Total Overhead\")\n\n");
     report_printf("The same %d frames (spread as above, round(i (N-1) / %d)) rendered (a) as "
                   "the application describes them, instances of the scene's objects "
@@ -1278,12 +1278,12 @@ static void print_overhead(const struct bench_options *opts, const struct scene_
                   "object), so times are render only, structures built. ms per frame, median of "
                   "%d runs; tests per ray over the frames (RT_STAT_NODE_TESTS: top-level and "
                   "object BVH nodes, RT_STAT_TRIANGLE_TESTS, RT_STAT_INSTANCE_TESTS: instances "
-                  "entered, each a ray transformation). Paper 004 found 10-20%% on static test "
+                  "entered, each a ray transformation). Wald, Benthin and Slusallek (2003) found 10-20%% on static test "
                   "scenes split into objects (it had no flattened BART).\n\n",
                   res[0].overhead_frames, res[0].overhead_frames, w, h, res[0].overhead_runs);
     report_table_header("scene|shading|dynamic ms|flat ms|dynamic / flat|rays/frame|"
                         "nodes/ray dynamic|nodes/ray flat|triangles/ray dynamic|"
-                        "triangles/ray flat|instances/ray dynamic|paper 004");
+                        "triangles/ray flat|instances/ray dynamic|Wald, Benthin and Slusallek (2003)");
     for (int i = 0; i < SCENES; i++)
         for (int s = 0; s < SHADINGS; s++) {
             const struct scene_result *r = &res[i];
@@ -1343,7 +1343,7 @@ int bench_bart_section(const struct bench_options *opts)
     char why[512];
     const char *source;
     const char *dir = data_dir(opts, &source);
-    report_printf("\n## BART (paper 004 sec. 5)\n\n");
+    report_printf("\n## BART (Wald, Benthin and Slusallek (2003) sec. 5)\n\n");
     if (bench_bart_find_data(opts, why, sizeof(why))) {
         report_printf("Skipped: %s.\n", why);
         return 0;
@@ -1353,7 +1353,7 @@ int bench_bart_section(const struct bench_options *opts)
                   "museum5.aff, read from %s) played through the public API as "
                   "demos/bart/bart.c plays them: per frame, projection = rtuAFFView, modelview "
                   "identity, rtuAFFLights, rtuDrawAFF (instances, and rtUpdateVertices for the "
-                  "museum's animated triangles), rtRenderFrame. Paper 004's figures are from "
+                  "museum's animated triangles), rtRenderFrame. Wald, Benthin and Slusallek's (2003) figures are from "
                   "2003 (dual AthlonMP 1800+ clients, a BSP per object, OpenRT's programmable "
                   "shaders); ours from the machine in the header.%s\n",
                   source, opts->quick ? " --quick: tiny images and few frames." : "");

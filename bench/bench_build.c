@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * bench_build.c - `rtbench build`: BVH quality against build time, per
- * builder and bin count (paper 000 sec. 4 and table 1; DESIGN.md
+ * builder and bin count (Wald, Ize and Parker (2008) sec. 4 and table 1; DESIGN.md
  * "Measurement").
  *
  * For each mesh, the sweep SAH build (the quality reference), the
@@ -17,7 +17,7 @@
  *     camera) and of random rays, from trace_counters;
  *   - render speed relative to the sweep build: the single-thread time of
  *     the primary-like set, sweep time / this time, which is the quantity
- *     paper 000's table 1 gives as a percentage.
+ *     Wald, Ize and Parker's (2008) table 1 gives as a percentage.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -48,7 +48,7 @@ struct builder_row {
 };
 
 /* Sweep first: the others are reported relative to it.  The spatial-median
- * ("BIH-style") builder is paper 000 table 1's middle row. */
+ * ("BIH-style") builder is Wald, Ize and Parker (2008) table 1's middle row. */
 static const struct builder_row builders[] = {
     {"sweep SAH", "sweep", 0, BVH_BUILDER_SWEEP_SAH, 0},
     {"median (BIH)", "median", 1, BVH_BUILDER_BINNED_SAH, 0},
@@ -222,13 +222,13 @@ out:
 int bench_build_section(const struct bench_options *opts, struct bench_mesh *meshes, int mesh_count)
 {
     char script[4096];
-    report_printf("\n## Build: quality against build time (paper 000 table 1)\n\n");
+    report_printf("\n## Build: quality against build time (Wald, Ize and Parker (2008) table 1)\n\n");
     report_printf("One thread. \"build ms\": the builder alone (median of %d runs) over "
                   "precomputed triangle boxes. SAH cost: MacDonald-Booth with c_trav = %g, "
                   "c_isect = %g, leaves of at most %d triangles; \"SAH/sweep\": relative to the "
                   "sweep build (lower is better). Tests per ray: ray/box and ray/triangle tests "
                   "of trace_closest for %ux%u primary rays and %u random rays. \"speed vs "
-                  "sweep\": single-thread time of the primary set, sweep / this (paper 000 "
+                  "sweep\": single-thread time of the primary set, sweep / this (Wald, Ize and Parker (2008) "
                   "table 1's relative render performance).\n\n",
                   opts->runs, (double)BVH_C_TRAV, (double)BVH_C_ISECT, BVH_MAX_LEAF_SIZE,
                   opts->quick ? COUNT_WIDTH_QUICK : COUNT_WIDTH,

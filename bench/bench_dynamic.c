@@ -6,18 +6,18 @@
  * Four measurements, all through the public API on a context created with
  * DYN_CONFIG (two render threads, one asynchronous build thread):
  *
- *  1. Unstructured soup rebuild time (paper 004 table 3): N random
+ *  1. Unstructured soup rebuild time (Wald, Benthin and Slusallek (2003) table 3): N random
  *     triangles morphing (anim_gen.c), N = 64 .. 64k; RT_STAT_UPDATE_TIME
  *     per frame, median over the frames after the first, for RT_REBUILD
  *     and RT_REBUILD_MEDIAN, beside the paper's 2003 figures.
- *  2. Top-level update time (paper 004 sec. 4.5): 100, 1k, 10k instances
+ *  2. Top-level update time (Wald, Benthin and Slusallek (2003) sec. 4.5): 100, 1k, 10k instances
  *     of one small object bouncing in a box, every matrix new each frame;
  *     RT_STAT_TOPLEVEL_TIME per frame, median.
- *  3. Parallel build speedup (paper 000 table 2): accel_build_parallel_ex
+ *  3. Parallel build speedup (Wald, Ize and Parker (2008) table 2): accel_build_parallel_ex
  *     SAH+SAH and grid+BIH on 1 and 2 threads against the serial builders
  *     (binned SAH, median), on the 1M bumpy torus and the exploding
  *     torus's first frame.  The static core directly, not the API.
- *  4. Strategies over animations (paper 000 fig. 3, paper 001 table 2):
+ *  4. Strategies over animations (Wald, Ize and Parker (2008) fig. 3, Yoon, Curtis and Manocha (2007) table 2):
  *     for the exploding torus, the waving cloth and the 64k soup, every
  *     frame is rtUpdateVertices + rtRenderFrame (eye light), timed as a
  *     whole; "update" is RT_STAT_UPDATE_TIME (+ RT_STAT_BUILD_TIME, the
@@ -140,7 +140,7 @@ static float get_f(RTenum pname)
 /* ------------------------------------------------------------ 1. soup rebuild */
 
 static const uint32_t soup_sizes[] = {64, 256, 1024, 4096, 16384, 65536};
-/* Paper 004 table 3, "reconst.time" of the object BSP (2003, one CPU). */
+/* Wald, Benthin and Slusallek (2003) table 3, "reconst.time" of the object BSP (2003, one CPU). */
 static const char *const soup_paper[] = {"< 1 ms", "2 ms", "8 ms", "34 ms", "0.1 s", "> 1 s"};
 #define SOUP_SIZES ((int)(sizeof(soup_sizes) / sizeof(soup_sizes[0])))
 #define SOUP_FRAMES 20
@@ -181,16 +181,16 @@ static double soup_update_ms(struct bench_anim *a, RTenum strategy, int frames, 
 static int soup_table(const struct bench_options *opts)
 {
     const int frames = opts->quick ? SOUP_FRAMES_QUICK : SOUP_FRAMES;
-    report_printf("\n### Unstructured motion: rebuild time per frame (paper 004 table 3)\n\n");
+    report_printf("\n### Unstructured motion: rebuild time per frame (Wald, Benthin and Slusallek (2003) table 3)\n\n");
     report_printf("N random triangles morphing between random configurations (a new one every "
                   "%d frames), one object updated with rtUpdateVertices; RT_STAT_UPDATE_TIME per "
                   "frame, median over frames 1..%d, context `%s`. RT_REBUILD: binned SAH "
                   "(two-stage parallel build on both threads for large objects); "
                   "RT_REBUILD_MEDIAN: spatial-median (BIH-like) build. Paper: the 2003 "
-                  "object-BSP reconstruction time of the BART museum (Wald et al., paper 004 "
+                  "object-BSP reconstruction time of the BART museum (Wald et al., Wald, Benthin and Slusallek (2003) "
                   "table 3; 2003 hardware, one CPU, and a BSP, not a BVH).\n\n",
                   BENCH_SOUP_KEY_FRAMES, frames - 1, DYN_CONFIG);
-    report_table_header("triangles|RT_REBUILD ms|RT_REBUILD_MEDIAN ms|paper 004 (2003)");
+    report_table_header("triangles|RT_REBUILD ms|RT_REBUILD_MEDIAN ms|Wald, Benthin and Slusallek (2003) (2003)");
     for (int i = 0; i < SOUP_SIZES; i++) {
         uint32_t n = soup_sizes[i];
         if (opts->quick && n > 4096)
@@ -272,13 +272,13 @@ static int toplevel_table(const struct bench_options *opts)
     const int frames = opts->quick ? INSTANCE_FRAMES_QUICK : INSTANCE_FRAMES;
     const uint32_t w = opts->quick ? DYN_WIDTH_QUICK : DYN_WIDTH;
     const uint32_t h = opts->quick ? DYN_HEIGHT_QUICK : DYN_HEIGHT;
-    report_printf("\n### Rigid bodies: top-level update time (paper 004 sec. 4.5)\n\n");
+    report_printf("\n### Rigid bodies: top-level update time (Wald, Benthin and Slusallek (2003) sec. 4.5)\n\n");
     report_printf("N instances of one 96-triangle ball bouncing in a box, every matrix new in "
                   "every frame (rtLoadIdentity, rtTranslatef, rtScalef, rtInstantiateObject), "
                   "rendered at %ux%u with eye-light shading on a context `%s`. Median over "
                   "frames 1..%d of RT_STAT_TOPLEVEL_TIME (top-level build over the instance "
                   "boxes), of the time to issue the N instances, and of the whole "
-                  "rtRenderFrame. Paper 004 reports under 1 ms for the 161 objects of BART "
+                  "rtRenderFrame. Wald, Benthin and Slusallek (2003) reports under 1 ms for the 161 objects of BART "
                   "Robots (2003).\n\n",
                   w, h, DYN_CONFIG, frames - 1);
     report_table_header("instances|top level ms|issue instances ms|rtRenderFrame ms|"
@@ -397,7 +397,7 @@ static int pbuild_mesh(const struct bench_options *opts, const struct bench_mesh
         med[r] = bench_median(times[r], runs);
     for (int r = 0; r < PBUILD_ROWS; r++) {
         const struct pbuild_row *row = &pbuild_rows[r];
-        /* Paper 000 table 2's speedup: over the single-threaded build of the
+        /* Wald, Ize and Parker (2008) table 2's speedup: over the single-threaded build of the
          * same kind (binned SAH for SAH+SAH, median for grid+BIH). */
         double serial = row->kind == 3 || row->kind == 1 ? med[1] : med[0];
         double one = row->kind == 2 ? med[2] : row->kind == 3 ? med[4] : med[r];
@@ -415,14 +415,14 @@ static int pbuild_mesh(const struct bench_options *opts, const struct bench_mesh
 static int pbuild_table(const struct bench_options *opts, struct bench_mesh *meshes, int mesh_count)
 {
     const int runs = opts->runs < DYN_MAX_RUNS ? opts->runs : DYN_MAX_RUNS;
-    report_printf("\n### Parallel build (paper 000 table 2)\n\n");
+    report_printf("\n### Parallel build (Wald, Ize and Parker (2008) table 2)\n\n");
     report_printf("accel_build_parallel_ex through the static core, over precomputed triangle "
                   "boxes, median of %d interleaved runs. SAH+SAH: parallel binning at the top, "
                   "binned SAH subtrees; grid+BIH: grid partition, median subtrees. 1 thread: "
                   "no pool (the same code on the calling thread). \"vs serial\": the serial "
-                  "builder of the same kind (binned SAH, median) / this, paper 000 table 2's "
+                  "builder of the same kind (binned SAH, median) / this, Wald, Ize and Parker (2008) table 2's "
                   "speedup; \"vs 1 thread\": the same parallel builder on 1 thread / this. "
-                  "Paper 000 table 2, 2 threads (2008 Opteron): grid+BIH 2.4-2.9x, SAH+SAH "
+                  "Wald, Ize and Parker (2008) table 2, 2 threads (2008 Opteron): grid+BIH 2.4-2.9x, SAH+SAH "
                   "1.9-2.3x (exploding dragon: 29 ms, 2.4x and 97 ms, 1.9x for 252k "
                   "triangles).\n\n",
                   runs);
@@ -879,7 +879,7 @@ static int strategies_table(const struct bench_options *opts)
         goto out;
     rtcSetDeviceErrorFunction(s.device, dyn_embree_error, NULL);
 #endif
-    report_printf("\n### Update strategies over animations (paper 000 fig. 3, paper 001 "
+    report_printf("\n### Update strategies over animations (Wald, Ize and Parker (2008) fig. 3, Yoon, Curtis and Manocha (2007) "
                   "table 2)\n\n");
     report_printf(
         "%d frames per animation, %ux%u eye-light frames on a context `%s`. A frame is "

@@ -7,7 +7,7 @@
  *   rtbench embree  the same work through Embree 3 (bench_embree.c; needs Embree)
  *   rtbench dynamic dynamic scenes: update strategies over animations, soup
  *                   rebuild, top level, parallel build (bench_dynamic.c)
- *   rtbench bart    the BART scenes against paper 004 sec. 5 (bench_bart.c;
+ *   rtbench bart    the BART scenes against Wald, Benthin and Slusallek (2003) sec. 5 (bench_bart.c;
  *                   needs the BART data, fails without it)
  *   rtbench all     all of the above (default); bart only when its data is
  *                   found, otherwise the report says it was skipped and why
@@ -58,7 +58,7 @@ static void usage(FILE *f)
             "  embree     the same meshes and rays through Embree 3%s\n"
             "  dynamic    dynamic scenes: update strategies over animations (error\n"
             "             against time), soup rebuild, top level, parallel build\n"
-            "  bart       the BART scenes (kitchen, robots, museum) against paper 004\n"
+            "  bart       the BART scenes (kitchen, robots, museum) against Wald, Benthin and Slusallek (2003)\n"
             "             sec. 5: fps, top level, updates, strategies, two-level overhead\n"
             "  all        everything (default); bart only when its data is found\n"
             "  --quick    toy sizes and 1 run unless --runs is given: a smoke test\n"

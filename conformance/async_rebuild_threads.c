@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * async_rebuild_threads.c - asynchronous rebuilds (paper 000 sec. 6)
+ * async_rebuild_threads.c - asynchronous rebuilds (Wald, Ize and Parker (2008) sec. 6)
  * through the API: correct hits every frame while builds land in the
  * background, no build thread before an object asks for one, none with
  * build_threads=0, and objects deleted, redefined or abandoned (context

@@ -6,7 +6,7 @@
  * For each scene and two frames (the first and one in the middle of the
  * animation), the two-level configuration (one static object, one object
  * per animated transform, one unstructured object for the museum's
- * animated triangles, all instanced under their matrices: paper 004 sec. 3)
+ * animated triangles, all instanced under their matrices: Wald, Benthin and Slusallek (2003) sec. 3)
  * is rendered and compared pixel for pixel with the same frame rendered
  * from one static object into which rtuBakeAFF has baked every instance
  * and every animated triangle, through the same code path.
@@ -21,7 +21,7 @@
  * changes the filtered colour) by more.  Those bounds are checked and the statistics printed.
  *
  * It also checks the loader's grouping against FORMAT.md sec. 10 and that
- * the runtime classifies the objects as paper 004 sec. 3 says it should
+ * the runtime classifies the objects as Wald, Benthin and Slusallek (2003) sec. 3 says it should
  * when a scene is played: static parts never rebuilt, rigid parts never
  * rebuilt (affine), animated triangles updated every frame.
  *
@@ -121,7 +121,7 @@ static void compare(const struct scene_case *c, int frame, const unsigned char *
 }
 
 /* Plays three consecutive frames and checks what the runtime did with
- * each kind of object (paper 004 sec. 3). */
+ * each kind of object (Wald, Benthin and Slusallek (2003) sec. 3). */
 static void check_classes(const struct scene_case *c, RTUaffscene *scene)
 {
     RTuint statics[4], rigid[200], moving[4];

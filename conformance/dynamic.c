@@ -2,7 +2,7 @@
 /*
  * dynamic.c - conformance: dynamic scenes.  rtObjectParameteri (class and
  * strategy hints), rtUpdateVertices, rtRenderParameteri(RT_UPDATE_STRATEGY),
- * the automatic classification (paper 004 sec. 3) and the update
+ * the automatic classification (Wald, Benthin and Slusallek (2003) sec. 3) and the update
  * statistics.
  *
  *   - every error of the three calls, each followed by a check that the

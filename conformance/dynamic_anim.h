@@ -10,13 +10,13 @@
  *     order and always describe the same geometry:
  *       DA_SPHERE  a tessellated sphere exploding: every triangle has its
  *                  own three vertices and flies off along its normal while
- *                  spinning (paper 000's "exploding dragon" in small);
+ *                  spinning (Wald, Ize and Parker's (2008) "exploding dragon" in small);
  *       DA_CLOTH   a waving grid drawn with rtDrawElements from a vertex
  *                  array whose first DA_CLOTH_OFFSET elements no index
  *                  uses, so object vertex k is array element
  *                  DA_CLOTH_OFFSET + k (docs/arrays.md);
  *       DA_SOUP    random triangles morphing between random key frames
- *                  (the incoherent motion of BART, paper 000 sec. 7);
+ *                  (the incoherent motion of BART, Wald, Ize and Parker (2008) sec. 7);
  *       DA_BIG     a larger waving grid (DA_BIG_N^2 * 2 triangles), above
  *                  the size from which updates run on the context's worker
  *                  threads (PARALLEL_UPDATE_MIN_TRIANGLES in update.c);

@@ -7,7 +7,7 @@
  * box contains its children's boxes and its leaf primitives' boxes,
  * depth <= BVH_MAX_DEPTH and equals the recorded depth, leaves respect
  * max_leaf_size, and equal input gives an identical tree.  Quality: the
- * binned SAH's cost stays within a bound of the sweep SAH's (paper 000
+ * binned SAH's cost stays within a bound of the sweep SAH's (Wald, Ize and Parker (2008)
  * table 1: 16 bins within a few percent), both beat a plain object-median
  * tree, and accel_sah_cost matches an independent computation.  Limits:
  * 0 and 1 primitive, 100k identical triangles (fast, bounded depth),
@@ -140,7 +140,7 @@ static void check_quality(const char *scene, const struct aabb *boxes, uint32_t 
     failures += !CHECKF(ref < 0.97 * median, "%s: sweep SAH %.3f not below median tree %.3f",
              scene, ref, median);
 
-    /* Allowed cost / sweep cost per bin count.  Paper 000 table 1 reports
+    /* Allowed cost / sweep cost per bin count.  Wald, Ize and Parker (2008) table 1 reports
      * render speed within ~5% at 16 bins; the costs measured here are
      * within 1% at 16 bins, so the bounds leave room without letting a
      * broken SAH evaluation through (a constant plane or a wrong area

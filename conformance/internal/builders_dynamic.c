@@ -10,7 +10,7 @@
  * their children and primitives, children after parents, depth bound and
  * recorded depth, leaf size bound, determinism, closest hits equal to the
  * brute-force intersector's.  Quality: SAH cost relative to the sweep
- * build inside bounds taken from paper 000 table 1 (median ~ BIH) and
+ * build inside bounds taken from Wald, Ize and Parker (2008) table 1 (median ~ BIH) and
  * from the serial binned build (parallel SAH+SAH).  Limits: 0 and 1
  * primitive, 100k coincident boxes (fast, shallow), a geometric chain
  * that only the depth guard keeps shallow, non-finite boxes, parameter
@@ -193,7 +193,7 @@ static void check_tiny(void)
 
 /*
  * Quality and structure on one scene.  Bounds on cost / sweep cost:
- * paper 000 table 1 has the median (BIH) build at 72-87% of the sweep's
+ * Wald, Ize and Parker (2008) table 1 has the median (BIH) build at 72-87% of the sweep's
  * render speed, i.e. roughly 1.15-1.4x its cost; our median build
  * measures 1.02-1.11x here, so 1.6 catches a broken split (a plane at
  * 5% of the bounds gives 2.6-4.4x, always splitting x gives 7-136x)
@@ -291,7 +291,7 @@ static void check_params(void)
 }
 
 /*
- * The looser criterion (paper 004 sec. 4.3) does what it says: no leaf
+ * The looser criterion (Wald, Benthin and Slusallek (2003) sec. 4.3) does what it says: no leaf
  * splits below its tolerance, trees get shallower with fewer nodes, and
  * the SAH cost rises only moderately.  Checked on the median builder and
  * the parallel median subtrees, which honour it.

@@ -7,7 +7,7 @@
  * (radial speeds that differ per triangle plus a tangential drift), a
  * triangle soup morphing between two unrelated random configurations, a
  * cloth-like grid with a travelling wave of growing amplitude, and a
- * sphere of which only a cap explodes (paper 001 fig. 9-10: "only a small
+ * sphere of which only a cap explodes (Yoon, Curtis and Manocha (2007) fig. 9-10: "only a small
  * subset of the geometric primitives are moving").  After every frame's
  * accel_restructure (with the fixed default constants, so the decisions
  * do not depend on the clock):
@@ -212,7 +212,7 @@ static void soup_of(struct tg_mesh *soup, const struct tg_mesh *m)
  * velocity drawn once: speeds 0.5..1.5, drift up to 0.4 per axis.  With
  * cap > -1 only the triangles whose centre lies above z = cap (on the
  * unit sphere) move: a local explosion, the case selective restructuring
- * is made for (paper 001 fig. 9 and 10: "only a small subset of the
+ * is made for (Yoon, Curtis and Manocha (2007) fig. 9 and 10: "only a small subset of the
  * geometric primitives are moving"). */
 static void explode_pose(struct anim *a, uint32_t frame)
 {

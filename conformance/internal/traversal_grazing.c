@@ -41,7 +41,7 @@
  * Meshes from accel_testgeo.h: the cube-sphere of the report (g = 60,
  * unit radius), a smaller cube-sphere, the flat cube (axis-aligned faces:
  * flat boxes) and a height field.  Every builder of lib/accel: binned
- * SAH, sweep SAH, median, the parallel builds (pool NULL) and paper 004's
+ * SAH, sweep SAH, median, the parallel builds (pool NULL) and Wald, Benthin and Slusallek's (2003)
  * top-level builder, with leaves of 1 (leaf box = triangle box, the most
  * sensitive) up to 8.
  */

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * bart - plays the BART benchmark scenes (kitchen, robots, museum) through
- * Tracelist, the way paper 004 (Wald, Benthin, Slusallek 2003, sec. 5)
+ * Tracelist, the way Wald, Benthin and Slusallek (2003, sec. 5)
  * played them through OpenRT: the scene is recorded once as objects by
  * rtuLoadAFF, and every frame the application only sets the camera and
  * re-issues its instances (rtuDrawAFF), with the animated triangles of the

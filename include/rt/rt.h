@@ -203,19 +203,19 @@ typedef struct rt_context *RTcontext;
 #define RT_OBJECT_REFITS 0x8F5A      /* refits so far */
 #define RT_OBJECT_VERTICES 0x8F5B    /* vertices, in recording order */
 
-/* Object classes (paper 004 sec. 3).  As hints, RT_AUTOMATIC lets the
+/* Object classes (Wald, Benthin and Slusallek (2003) sec. 3).  As hints, RT_AUTOMATIC lets the
  * runtime classify from what changed each frame. */
 #define RT_AUTOMATIC 0x8F60
 #define RT_STATIC 0x8F61
 #define RT_AFFINE 0x8F62
 #define RT_UNSTRUCTURED 0x8F63
-/* Update strategies for unstructured objects (papers 000 and 001). */
+/* Update strategies for unstructured objects (Wald, Ize and Parker (2008) and Yoon, Curtis and Manocha (2007)). */
 #define RT_REFIT 0x8F64               /* refit the bounds only */
 #define RT_REBUILD 0x8F65             /* binned SAH rebuild every frame */
 #define RT_REBUILD_MEDIAN 0x8F66      /* spatial-median (BIH-like) rebuild every frame */
 #define RT_REBUILD_HEURISTIC 0x8F67   /* refit; rebuild when SAH cost degraded */
-#define RT_RESTRUCTURE 0x8F68         /* selective restructuring (paper 001) */
-#define RT_ASYNC_REBUILD 0x8F69       /* refit while K threads rebuild (paper 000 sec. 6) */
+#define RT_RESTRUCTURE 0x8F68         /* selective restructuring (Yoon, Curtis and Manocha (2007)) */
+#define RT_ASYNC_REBUILD 0x8F69       /* refit while K threads rebuild (Wald, Ize and Parker (2008) sec. 6) */
 
 /* ---- Ray queries ----------------------------------------------------- */
 /* A ray: points org + t*dir for t in [tmin, tmax].  dir need not be

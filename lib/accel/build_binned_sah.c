@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * build_binned_sah.c - binned SAH builder (Wald 2007, "On fast construction
- * of SAH-based bounding volume hierarchies", paper 000's ref. [20]; paper
+ * of SAH-based bounding volume hierarchies", Wald, Ize and Parker's (2008) ref. [20]; paper
  * 000 sec. 4).
  *
  * Each node projects its primitives' centroids into `bins` equal slices of
@@ -31,7 +31,7 @@
 /* Primitives travel as struct build_ref (build_median.h): the box plus the
  * caller's index in lane 3 of lo, 32 bytes, loaded as two vec4. */
 
-/* The bins of all three axes (paper 000 sec. 4: "we track not only the
+/* The bins of all three axes (Wald, Ize and Parker (2008) sec. 4: "we track not only the
  * number of triangles in each bin, but also the bounds of all triangles
  * projecting to this bin"): box[axis][bin] = min xyz -, max xyz -. */
 struct bins {
@@ -155,7 +155,7 @@ static void range_bounds(const struct build_ref *refs, uint32_t begin, uint32_t 
 }
 
 /* Step 1: project every primitive of the node into the bins of each axis
- * (paper 000 sec. 4; Wald 2007). */
+ * (Wald, Ize and Parker (2008) sec. 4; Wald 2007). */
 static void fill_bins(struct bins *bins, int bin_count, const struct binning *bn,
                       const struct build_ref *refs, uint32_t begin, uint32_t end)
 {

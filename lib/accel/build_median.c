@@ -3,7 +3,7 @@
  * build_median.c - the spatial-median ("BIH-style") builder and the looser
  * leaf criterion (build_median.h).
  *
- * Paper 000 table 1 compares the sweep SAH, the binned SAH and a
+ * Wald, Ize and Parker (2008) table 1 compares the sweep SAH, the binned SAH and a
  * "median-split BIH-style build" (Wachter and Keller 2006): the median
  * build is 1.7-3.3x faster than 16-bin binning and gives 72-87% of the
  * sweep build's render speed.  It is the cheapest rebuild the runtime
@@ -50,7 +50,7 @@ struct mtask {
 void build_leaf_tolerance(const struct bvh_build_params *params,
                           uint32_t tol[BVH_MAX_DEPTH + 1])
 {
-    /* Paper 004 sec. 4.3: "the deeper the subdivision, the more triangles
+    /* Wald, Benthin and Slusallek (2003) sec. 4.3: "the deeper the subdivision, the more triangles
      * will be tolerated per cell ... increase the tolerance threshold by
      * a constant factor for each level".  Starting at 1, not at the
      * paper's "2 or 3 triangles per cell": where the tolerance makes no
@@ -189,7 +189,7 @@ void build_median_refs(struct bvh_node *nodes, struct build_ref *refs, uint32_t 
          * only protects the table against a broken caller. */
         uint32_t tol_here = tol[task.r.depth <= BVH_MAX_DEPTH ? task.r.depth : BVH_MAX_DEPTH];
         int forced_median = build_must_split_median(task.r.depth, count);
-        /* Paper 004 sec. 4.3's looser criterion first: it exists to save
+        /* Wald, Benthin and Slusallek (2003) sec. 4.3's looser criterion first: it exists to save
          * the split's work.  Then the leaves the depth guard forces (as
          * in build_binned_sah.c). */
         if (count <= tol_here || (count <= max_leaf && forced_median)) {

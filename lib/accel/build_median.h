@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * build_median.h - the cheap builders for per-frame rebuilds: the spatial-
- * median ("BIH-style") builder of paper 000 table 1 and the looser leaf
- * criterion of paper 004 sec. 4.3, plus the pieces of them that the
+ * median ("BIH-style") builder of Wald, Ize and Parker (2008) table 1 and the looser leaf
+ * criterion of Wald, Benthin and Slusallek (2003) sec. 4.3, plus the pieces of them that the
  * two-stage parallel builder (build_parallel.c) builds its subtrees with.
  *
  * Same conventions as the other builders (bvh_layout.h, build_internal.h): a node
@@ -22,7 +22,7 @@
 
 /*
  * The leaf-growth factor we recommend for rebuild-every-frame objects
- * (bvh_build_params.leaf_growth; paper 004 sec. 4.3: "we currently
+ * (bvh_build_params.leaf_growth; Wald, Benthin and Slusallek (2003) sec. 4.3: "we currently
  * increase the tolerance threshold by a constant factor for each level of
  * subdivision", no value given).  With 1.1 the tolerance reaches 2 at
  * depth 8, 4 at depth 15 and the cap of 8 at depth 22: objects of a few
@@ -39,7 +39,7 @@
 /*
  * Spatial-median build: each node is split at the middle of its centroid
  * bounds on their longest axis (Wachter and Keller 2006, "Instant ray
- * tracing: the bounding interval hierarchy", as paper 000 table 1's "BIH"
+ * tracing: the bounding interval hierarchy", as Wald, Ize and Parker (2008) table 1's "BIH"
  * row), at the object median when that leaves a side empty or the depth
  * guard (build_internal.h) requires it.  A node of at most max_leaf_size
  * primitives becomes a leaf when the SAH (MacDonald and Booth 1990) does
@@ -57,7 +57,7 @@ int accel_build_median(struct bvh *out, const struct aabb *prim_boxes, uint32_t 
                        const struct bvh_build_params *params);
 
 /*
- * The looser leaf criterion (paper 004 sec. 4.3) as a table: tol[d] =
+ * The looser leaf criterion (Wald, Benthin and Slusallek (2003) sec. 4.3) as a table: tol[d] =
  * min(max_leaf_size, floor(g^d)) for d = 0..BVH_MAX_DEPTH, g =
  * params->leaf_growth, computed by repeated float multiplication so that
  * every machine gets the same table (powf's last bit is not portable).

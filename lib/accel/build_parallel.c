@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * build_parallel.c - the two-stage parallel build (build_parallel.h;
- * paper 000 sec. 5).
+ * Wald, Ize and Parker (2008) sec. 5).
  *
  * Setup: all threads convert the input boxes into refs (struct build_ref,
  * build_median.h) and reduce the root's box and centroid bounds.
@@ -54,7 +54,7 @@
 
 /*
  * Subtree size target of stage 1: max(PARALLEL_MIN_SUBTREE, n /
- * PARALLEL_SUBTREES).  Paper 000 sec. 5 does not give its numbers.  64
+ * PARALLEL_SUBTREES).  Wald, Ize and Parker (2008) sec. 5 does not give its numbers.  64
  * subtrees keep 8 threads busy with the largest-first hand-out even when
  * the SAH splits unevenly, and stay a fixed number, so the tree does not
  * depend on the thread count.  Below PARALLEL_MIN_SUBTREE primitives a
@@ -276,7 +276,7 @@ static void box_grow_ref(vec4 *lo, vec4 *hi, vec4 *clo, vec4 *chi, const struct 
 
 /* ------------------------------------------------------------ setup */
 
-/* Paper 000 sec. 5, "Setup": each thread prepares a share of the refs
+/* Wald, Ize and Parker (2008) sec. 5, "Setup": each thread prepares a share of the refs
  * and reduces their bounds; chunk_box[2c] = box, [2c + 1] = centroid
  * bounds of chunk c. */
 static void setup_task(void *arg, int worker)
@@ -461,7 +461,7 @@ static void pick_split(struct pbuild *b, struct open_node *o)
 
 /* Phase C: every chunk of a splitting node copies its left refs to its
  * part of the left child's range and its right refs to the right's, in
- * order (paper 000 sec. 5: "copies the two halves into the respective
+ * order (Wald, Ize and Parker (2008) sec. 5: "copies the two halves into the respective
  * regions ... predetermined by the known sizes of all threads' bins"). */
 static void partition_task(void *arg, int worker)
 {
@@ -684,7 +684,7 @@ static void worker_range(const struct pbuild *b, int worker, uint32_t *begin, ui
     *end = (uint32_t)((uint64_t)b->n * ((uint32_t)worker + 1) / b->threads);
 }
 
-/* Paper 000 sec. 5: "Each of the T threads create their own copy of that
+/* Wald, Ize and Parker (2008) sec. 5: "Each of the T threads create their own copy of that
  * grid, then takes one T-th of the triangles, and ... bins each triangle
  * into the cell that its centroid projects to." */
 static void grid_count_task(void *arg, int worker)
@@ -779,7 +779,7 @@ static void plan_grid(struct pbuild *b, const float clo[4], const float chi[4])
 }
 
 /*
- * BIH-like nodes over the grid (paper 000 sec. 5: "one of the threads
+ * BIH-like nodes over the grid (Wald, Ize and Parker (2008) sec. 5: "one of the threads
  * builds the BVH nodes that represent that grid, which is very similar to
  * Wachter's BIH technique"): a block is halved in cell units across its
  * longest side in space; an empty half is dropped without a node; a block
@@ -958,7 +958,7 @@ static int build_sah_subtree(struct pbuild *b, struct subtree *s)
 }
 
 /* A median subtree, in place, into its preassigned range of 2m - 1 nodes
- * of the scratch array (paper 000 sec. 5: "a subtree of N triangles can
+ * of the scratch array (Wald, Ize and Parker (2008) sec. 5: "a subtree of N triangles can
  * use at most 2N - 1 nodes ... so we can simply assign each subtree to
  * one contiguous region of the node array"): no allocation at all. */
 static void build_median_subtree(struct pbuild *b, struct subtree *s, struct bvh_node *range)
@@ -971,7 +971,7 @@ static void build_median_subtree(struct pbuild *b, struct subtree *s, struct bvh
         b->prim_index[s->begin + i] = build_ref_id(&refs[i]);
 }
 
-/* Paper 000 sec. 5, stage 2: "the render threads dynamically request
+/* Wald, Ize and Parker (2008) sec. 5, stage 2: "the render threads dynamically request
  * subtrees to work on using an atomic read-and-increment on a shared
  * counter, until all subtrees are finished". */
 static void subtree_task(void *arg, int worker)
@@ -1083,7 +1083,7 @@ static int build_subtrees(struct pbuild *b, struct bvh *out)
         keys[i].key = ((uint64_t)~(s->end - s->begin) << 32) | s->begin;
         keys[i].index = i;
     }
-    /* Paper 000 sec. 5: "to obtain good load balancing we first sort the
+    /* Wald, Ize and Parker (2008) sec. 5: "to obtain good load balancing we first sort the
      * subtrees by descending size". */
     qsort(keys, k, sizeof(*keys), by_key);
     for (uint32_t i = 0; i < k; i++)

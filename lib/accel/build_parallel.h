@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * build_parallel.h - the two-stage parallel BVH build of paper 000 sec. 5.
+ * build_parallel.h - the two-stage parallel BVH build of Wald, Ize and Parker (2008) sec. 5.
  *
  * Stage 1 partitions the primitives coarsely with all threads together,
  * either by parallel binning (every split of the top levels is a binned
@@ -23,13 +23,13 @@
 #include "accel/bvh_build.h"
 #include "base/pool.h"
 
-/* Stage 1 (paper 000 sec. 5, "Coarse Scene Partitioning"). */
+/* Stage 1 (Wald, Ize and Parker (2008) sec. 5, "Coarse Scene Partitioning"). */
 enum bvh_partition {
     BVH_PARTITION_BINNING, /* parallel binning: SAH splits at the top */
     BVH_PARTITION_GRID     /* per-thread grids, spatial median at the top */
 };
 
-/* Stage 2 (paper 000 sec. 5, "Parallel subtree building"). */
+/* Stage 2 (Wald, Ize and Parker (2008) sec. 5, "Parallel subtree building"). */
 enum bvh_subtree_builder {
     BVH_SUBTREE_SAH,   /* accel_build with the build params (binned or sweep) */
     BVH_SUBTREE_MEDIAN /* the median builder, build_median.h */

@@ -6,7 +6,7 @@
  * split between consecutive centroids on each axis, from prefix boxes
  * swept in from both ends: the "sweep" build of Wald, Boulos and Shirley
  * 2007 ("Ray tracing deformable scenes using dynamic bounding volume
- * hierarchies", paper 000's ref. [22]) that paper 000 table 1 takes as
+ * hierarchies", Wald, Ize and Parker's (2008) ref. [22]) that Wald, Ize and Parker (2008) table 1 takes as
  * the 100% reference.
  *
  * To stay O(n log n) the three axes are sorted once, up front, and kept

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * build_toplevel.c - paper 004 sec. 4.5 top-level construction (see
+ * build_toplevel.c - Wald, Benthin and Slusallek (2003) sec. 4.5 top-level construction (see
  * build_toplevel.h).
  */
 #include "accel/build_toplevel.h"

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * build_toplevel.h - paper 004's fast top-level construction over
+ * build_toplevel.h - Wald, Benthin and Slusallek's (2003) fast top-level construction over
  * instance boxes (sec. 4.5), as an alternative to the binned SAH builder
  * for the top level.
  */
@@ -12,11 +12,11 @@
 #include "accel/bvh_build.h"
 
 /*
- * Builds a BVH over instance boxes with the split rule of paper 004 sec.
+ * Builds a BVH over instance boxes with the split rule of Wald, Benthin and Slusallek (2003) sec.
  * 4.5: axes in order of the cell's extent; among the box borders on that
  * axis, the one nearest the cell centre on the side holding more boxes
  * (so the plane lies between the cell centre and the object median).
- * Paper 004 builds a BSP; in a BVH each box goes to the side holding its
+ * Wald, Benthin and Slusallek (2003) builds a BSP; in a BVH each box goes to the side holding its
  * centroid and a child's cell is its side of the plane.  A cell with no
  * border that separates its boxes becomes a leaf, as in the paper; the
  * depth guard of the other builders (object-median splits near

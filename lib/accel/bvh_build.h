@@ -15,7 +15,7 @@
 #include "base/aabb.h"
 #include "trace/bvh_layout.h"
 
-/* Bins of the binned SAH build.  Paper 000 sec. 4 and table 1: 16 bins
+/* Bins of the binned SAH build.  Wald, Ize and Parker (2008) sec. 4 and table 1: 16 bins
  * are within a few percent of the sweep build, 4 already usable. */
 #define BVH_DEFAULT_BINS 16
 #define BVH_MAX_BINS 256
@@ -29,7 +29,7 @@
 #define BVH_MAX_LEAF_SIZE 8
 
 enum bvh_builder {
-    BVH_BUILDER_BINNED_SAH, /* Wald 2007; paper 000 sec. 4 */
+    BVH_BUILDER_BINNED_SAH, /* Wald 2007; Wald, Ize and Parker (2008) sec. 4 */
     BVH_BUILDER_SWEEP_SAH   /* full sweep over sorted centroids: the quality reference */
 };
 
@@ -39,7 +39,7 @@ struct bvh_build_params {
     int max_leaf_size; /* 1..BVH_MAX_LEAF_SIZE */
     float c_trav;
     float c_isect;
-    /* Looser leaf criterion for per-frame rebuilds (paper 004 sec. 4.3):
+    /* Looser leaf criterion for per-frame rebuilds (Wald, Benthin and Slusallek (2003) sec. 4.3):
      * a node at depth d with at most min(max_leaf_size, floor(g^d))
      * primitives becomes a leaf without any split being evaluated, g =
      * leaf_growth.  1 (the default) switches it off; values below 1 or

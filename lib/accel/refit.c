@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * refit.c - serial and parallel BVH refit and the triangle-copy update
- * (refit.h; paper 000 sec. 6, "Parallel BVH Refit").
+ * (refit.h; Wald, Ize and Parker (2008) sec. 6, "Parallel BVH Refit").
  *
  * One routine computes one node's box from its children or its leaf's
  * primitives (refit_node); everything else only decides the order in
@@ -26,7 +26,7 @@
 /*
  * Seeding depth of the parallel refit: the seeder walks the top k levels,
  * with k the smallest depth giving REFIT_TASKS_PER_THREAD subtrees per
- * thread in a balanced tree.  Paper 000 sec. 6 leaves k open; several
+ * thread in a balanced tree.  Wald, Ize and Parker (2008) sec. 6 leaves k open; several
  * subtrees per thread let the atomic counter even out unbalanced trees
  * (a refit costs in proportion to the subtree), and the top levels the
  * merging thread refits alone stay a few hundred nodes.
@@ -176,7 +176,7 @@ static void refit_task(void *arg, int worker)
         /* Release this subtree's boxes; the last thread acquires all of
          * them (the increments form one release sequence) and merges the
          * top: "the last thread to finish a subtree update also performs
-         * the final merge" (paper 000 sec. 6). */
+         * the final merge" (Wald, Ize and Parker (2008) sec. 6). */
         uint32_t done = rt_atomic_add_fetch_acq_rel(&sh->finished, 1);
         if (done == sh->task_count) {
             for (uint32_t i = sh->top_count; i-- > 0;)
@@ -186,7 +186,7 @@ static void refit_task(void *arg, int worker)
 }
 
 /*
- * The seeder (paper 000 sec. 6): walks the top `levels` levels from the
+ * The seeder (Wald, Ize and Parker (2008) sec. 6): walks the top `levels` levels from the
  * root in pre-order, recording inner nodes above that depth in top[] and
  * the nodes at that depth, and leaves above it, in tasks[].  Reverse
  * pre-order visits children before parents, which is the merge order.
@@ -318,7 +318,7 @@ void accel_refit_triangles_parallel(const struct bvh *bvh, float *tri, const flo
 void accel_refit_mesh(struct bvh *bvh, float *tri, const float *positions,
                       const uint32_t *indices, struct rt_pool *pool)
 {
-    /* Two passes, not paper 000's interleaving: the triangle update in
+    /* Two passes, not Wald, Ize and Parker's (2008) interleaving: the triangle update in
      * slot order keeps many vertex fetches in flight, and the refit then
      * reads tri sequentially.  Fused into the refit's node walk, each
      * leaf's dependent fetches (slot -> indices -> positions) waited

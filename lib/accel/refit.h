@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * refit.h - refitting a BVH to moved primitives without changing its
- * topology (paper 000 sec. 6, "Parallel BVH Refit"), and updating the
+ * topology (Wald, Ize and Parker (2008) sec. 6, "Parallel BVH Refit"), and updating the
  * leaf-ordered triangle copy that traversal reads (accel_gather_triangles
  * in bvh_layout.h).
  *
@@ -50,7 +50,7 @@ void accel_refit(struct bvh *bvh, const struct aabb *prim_boxes);
  * seeds (walks the top levels and records the subtree roots below them,
  * and the leaves above), every thread takes subtrees from an atomic
  * counter and refits them, and the thread that finishes the last subtree
- * refits the top levels (paper 000 sec. 6).
+ * refits the top levels (Wald, Ize and Parker (2008) sec. 6).
  */
 void accel_refit_parallel(struct bvh *bvh, const struct aabb *prim_boxes, struct rt_pool *pool);
 

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * restructure.c - the frame driver of selective restructuring (Yoon,
- * Curtis and Manocha, EGSR 2007, paper 001; restructure.h has the
+ * Curtis and Manocha, EGSR 2007, Yoon, Curtis and Manocha (2007); restructure.h has the
  * interface and the outline): refit, the hierarchical refinement phase
  * with its pair-queue, the restructuring phase with its pair-heap
  * (Alg. 1), and the state's lifetime.  The metrics are in
@@ -217,7 +217,7 @@ static int pre_order(const struct bvh *bvh, uint32_t *order)
     return count == bvh->node_count ? 0 : -1;
 }
 
-/* Paper 001 sec. 5.1: "We first perform BV refitting by updating the BVs
+/* Yoon, Curtis and Manocha (2007) sec. 5.1: "We first perform BV refitting by updating the BVs
  * in a bottom-up manner".  The unions are refit.h's (build_min/build_max,
  * left child then right, slots in order), so the boxes equal
  * accel_refit's bit for bit; this copy walks a given pre-order, which the

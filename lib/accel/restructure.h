@@ -2,11 +2,11 @@
 /*
  * restructure.h - selective restructuring of a BVH over deforming
  * geometry: Yoon, Curtis and Manocha, "Ray Tracing Dynamic Scenes using
- * Selective Restructuring", EGSR 2007 (paper 001).
+ * Selective Restructuring", EGSR 2007 (Yoon, Curtis and Manocha (2007)).
  *
  * Each frame the primitive boxes move (same primitives, same indices) and
  * accel_restructure
- *   1. refits every box bottom-up (paper 001 sec. 5.1),
+ *   1. refits every box bottom-up (Yoon, Curtis and Manocha (2007) sec. 5.1),
  *   2. evaluates the culling-efficiency metric CM-IQ (sec. 4.1, eq. 1) of
  *      every node,
  *   3. walks a FIFO pair-queue top-down from (Left(root), Right(root)),
@@ -26,7 +26,7 @@
  * per-node access time-stamps, no lazy construction, a few bounds the
  * paper leaves open) restructure.c's header comment says so.
  *
- * Units: every cost and benefit is in ray/AABB tests (paper 001 sec. 6.1:
+ * Units: every cost and benefit is in ray/AABB tests (Yoon, Curtis and Manocha (2007) sec. 6.1:
  * "We also measure C_refine and C_rebuild as the relative cost to the
  * cost of ray-AABB intersection cost"), per frame.
  *
@@ -51,7 +51,7 @@ struct accel_restructure_heap_entry;
  * accel_restructure_measure_constants on the development machine (AMD
  * EPYC, 2 cores shared with other jobs, gcc 12 -O2 Release); each is a
  * cost relative to one ray/AABB test of the traversal's kernel
- * (trace/intersect.h).  Paper 001 sec. 6.1 measures them at start-up;
+ * (trace/intersect.h).  Yoon, Curtis and Manocha (2007) sec. 6.1 measures them at start-up;
  * these are the fallback when the caller does not, and what the tests use
  * so that their decisions do not depend on the clock.
  */
@@ -66,7 +66,7 @@ struct accel_restructure_heap_entry;
 #define ACCEL_RESTRUCTURE_DEFAULT_C_REFINE 10.4f
 
 /*
- * Rays expected to hit the root's box in a frame.  Paper 001 sec. 4.1.1
+ * Rays expected to hit the root's box in a frame.  Yoon, Curtis and Manocha (2007) sec. 4.1.1
  * multiplies CM-IQ by this count ("we estimate it with that of the
  * previous frame") and then omits it from its derivations; the comparison
  * of a per-ray benefit with a per-frame cost needs it.  The default is
@@ -105,7 +105,7 @@ struct accel_restructure_params {
      * tree's CM-IQ is undone (not in the paper, which trusts the
      * estimate of eq. 7; restructure.c explains).  0: the paper's rule. */
     int verify_cost;
-    /* Builder of the new sub-BVHs: the SAH builders of bvh_layout.h (paper 001
+    /* Builder of the new sub-BVHs: the SAH builders of bvh_layout.h (Yoon, Curtis and Manocha (2007)
      * sec. 5.4 uses an SAH build, [WH06]). */
     struct bvh_build_params build;
 };
@@ -184,7 +184,7 @@ void accel_restructure_params_default(struct accel_restructure_params *out);
 
 /*
  * Fills *out with the defaults and replaces c_leaf, c_rebuild and
- * c_refine by values measured now on this machine (paper 001 sec. 6.1:
+ * c_refine by values measured now on this machine (Yoon, Curtis and Manocha (2007) sec. 6.1:
  * "We automatically compute these costs by running those routines a few
  * times ... during the ray tracing system's initialization"): ray/AABB
  * and ray/triangle tests of the traversal's kernels, restructurings of

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * restructure_apply.c - the basic restructuring operation of paper 001
+ * restructure_apply.c - the basic restructuring operation of Yoon, Curtis and Manocha (2007)
  * (sec. 3.2, fig. 4): the primitives of sub-BVH(n1) and sub-BVH(n2) are
  * pooled, split in two by the partitioning plane of sec. 5.3, and each
  * side gets a new SAH sub-BVH (sec. 5.4) that takes the place of n1 and
@@ -142,7 +142,7 @@ static void sort_prims(struct aabb *boxes, uint32_t *ids, uint32_t k, int axis)
 }
 
 /*
- * The partitioning plane of paper 001 sec. 5.3: "We set the partitioning
+ * The partitioning plane of Yoon, Curtis and Manocha (2007) sec. 5.3: "We set the partitioning
  * plane to pass the centroid of the overlapping area between
  * BV(Left(n_A)) and BV(Right(n_A)) and the normal of the plane is
  * parallel to a direction that has longest extent of BV(n_A)", n_A the

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * restructure_calibrate.c - the machine constants of selective
- * restructuring, measured at start-up as paper 001 sec. 6.1 does: "We
+ * restructuring, measured at start-up as Yoon, Curtis and Manocha (2007) sec. 6.1 does: "We
  * automatically compute these costs by running those routines a few
  * times without any manual intervention during the ray tracing system's
  * initialization.  Then, we use their average values".

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * restructure_internal.h - pieces shared by the selective restructuring
- * files (paper 001; restructure.h has the interface):
+ * files (Yoon, Curtis and Manocha (2007); restructure.h has the interface):
  *   restructure.c            the frame driver: refit, pair-queue, pair-heap
  *   restructure_metrics.c    CM-IQ, RM-IQ, the refinement bound, life time
  *   restructure_apply.c      one restructuring operation and the re-layout
@@ -32,7 +32,7 @@
 #define RS_ABOVE 4u  /* an ancestor of a sub-BVH restructured this frame */
 
 /*
- * A node pair (paper 001 sec. 3.2 and 5.2).  n1 lies in the sub-BVH of
+ * A node pair (Yoon, Curtis and Manocha (2007) sec. 3.2 and 5.2).  n1 lies in the sub-BVH of
  * Left(lca) and n2 in that of Right(lca), lca their lowest common
  * ancestor; neither is an ancestor of the other.  parent is the pair it
  * was refined from (RS_NONE for the first pair), always at a lower index

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * restructure_metrics.c - the two metrics of paper 001 sec. 4 (CM-IQ,
+ * restructure_metrics.c - the two metrics of Yoon, Curtis and Manocha (2007) sec. 4 (CM-IQ,
  * the culling efficiency of a sub-BVH; RM-IQ, the benefit of
  * restructuring a node pair), the bound that lets the pair-queue descend
  * (restructure.c), the restructuring cost f_rebuild and the expected life

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * sah_cost.c - the SAH cost of a finished tree (MacDonald and Booth 1990),
- * the quality measure that paper 000 table 1 and rtbench compare builders
+ * the quality measure that Wald, Ize and Parker (2008) table 1 and rtbench compare builders
  * by.  See bvh_layout.h for the formula.
  */
 #include "accel/bvh_build.h"

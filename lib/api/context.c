@@ -210,7 +210,7 @@ static void render_state_init(struct render_state *r)
 {
     memset(r, 0, sizeof(*r));
     r->shading = RENDER_EYE_LIGHT;
-    r->max_depth = 3; /* paper 004 tables 1 and 2: three reflection levels */
+    r->max_depth = 3; /* Wald, Benthin and Slusallek (2003) tables 1 and 2: three reflection levels */
     r->clear_color[3] = 0.0f;
     for (int k = 0; k < 3; k++)
         r->global_ambient[k] = 0.2f;
@@ -253,7 +253,7 @@ RTcontext rtCreateContextWithReason(const char *configuration, RTsizei bufSize, 
         return NULL;
     }
     ctx->threads = online_cpus();
-    ctx->build_threads = 1; /* paper 000 sec. 6: K set by the application */
+    ctx->build_threads = 1; /* Wald, Ize and Parker (2008) sec. 6: K set by the application */
     bvh_build_params_default(&ctx->build_params);
     ctx->kernels = trace_kernels_best();
     if (parse_configuration(ctx, configuration, reason, reason_size)) {

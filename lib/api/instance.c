@@ -3,7 +3,7 @@
  * instance.c - rtInstantiateObject and rtBeginFrame.
  *
  * An instance is an object placed under the modelview matrix current at
- * the call, as glCallList (paper 004 sec. 4.1).  Instances are issued
+ * the call, as glCallList (Wald, Benthin and Slusallek (2003) sec. 4.1).  Instances are issued
  * anew each frame; scene/frame.c decides whether the list changed.
  */
 #include <string.h>
@@ -23,7 +23,7 @@ void rtInstantiateObject(RTuint name)
     }
     const double *m = ctx->modelview.m[ctx->modelview.depth - 1];
     double inverse[16], normal[16];
-    /* Rays are transformed into object space by the inverse (paper 004
+    /* Rays are transformed into object space by the inverse (Wald, Benthin and Slusallek (2003)
      * sec. 4.4); an instance whose matrix cannot be inverted in double
      * precision, or is not affine, cannot be traced. */
     if (m[3] != 0.0 || m[7] != 0.0 || m[11] != 0.0 || m[15] != 1.0) {

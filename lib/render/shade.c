@@ -143,7 +143,7 @@ void shade_ray(const struct shade_context *sc, const float org[3], const float d
     vec3_normalize(unit_dir);
 
     if (st->shading == RENDER_EYE_LIGHT) {
-        /* A headlight at the eye, no shadows: paper 004's "OpenGL-like
+        /* A headlight at the eye, no shadows: Wald, Benthin and Slusallek's (2003) "OpenGL-like
          * ray casting". */
         float cosine = fabsf(vec3_dot(s.n, unit_dir));
         for (int k = 0; k < 3; k++)

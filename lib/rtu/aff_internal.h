@@ -11,7 +11,7 @@
  *   aff_scene.c  struct aff_data -> Tracelist objects and per-frame
  *                instances, the public rtu*AFF* entry points.
  *
- * Grouping (paper 004 sec. 4.1, "for scene-graph-like applications this
+ * Grouping (Wald, Benthin and Slusallek (2003) sec. 4.1, "for scene-graph-like applications this
  * grouping is often trivial"): geometry is grouped by the innermost
  * animated transform ('x' block) enclosing it.  Each such *frame* owns one
  * object, built once and instanced every frame under the product of the

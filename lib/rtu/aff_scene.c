@@ -3,7 +3,7 @@
  * aff_scene.c - AFF scenes as Tracelist objects and instances (rtu.h,
  * docs/aff.md).
  *
- * This is what paper 004 sec. 4.1 asks of a scene-graph application: group
+ * This is what Wald, Benthin and Slusallek (2003) sec. 4.1 asks of a scene-graph application: group
  * the primitives by their dynamic properties, record each group once as an
  * object, and every frame instantiate the objects under the transforms of
  * the moment, redefining only the objects whose triangles move without

@@ -81,7 +81,7 @@ fail:
     return NULL;
 }
 
-/* Boxes and leaf-ordered triangles in one pass over the leaves (paper 000
+/* Boxes and leaf-ordered triangles in one pass over the leaves (Wald, Ize and Parker (2008)
  * sec. 6 interleaves the two the same way): the refit updates the layout
  * in place, so finish_layout's gather is not needed, only the cost.  The
  * topology is unchanged, so the wide layout keeps its shape and only

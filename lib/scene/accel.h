@@ -68,7 +68,7 @@ struct scene_accel *scene_accel_build(const struct scene_accel_geometry *geom,
 void scene_accel_refit(struct scene_accel *accel, const struct scene_accel_geometry *geom,
                        const struct bvh_build_params *params, struct rt_pool *pool);
 
-/* Selective restructuring (paper 001) of accel to geom's positions, with
+/* Selective restructuring (Yoon, Curtis and Manocha (2007)) of accel to geom's positions, with
  * the measured constants and rays_per_frame.  0, or -1 on allocation
  * failure (accel stays valid). */
 int scene_accel_restructure(struct scene_accel *accel, const struct scene_accel_geometry *geom,

@@ -60,7 +60,7 @@ static struct scene_accel *build_snapshot(struct scene_async_builder *b,
 static void *build_thread(void *arg)
 {
     struct scene_async_builder *b = arg;
-    /* The K threads of paper 000 sec. 6: this one and K - 1 workers. */
+    /* The K threads of Wald, Ize and Parker (2008) sec. 6: this one and K - 1 workers. */
     struct rt_pool *pool = rt_pool_create(b->threads);
     pthread_mutex_lock(&b->lock);
     b->pool = pool;

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * async_build.h - asynchronous rebuilds on K build threads (paper 000
+ * async_build.h - asynchronous rebuilds on K build threads (Wald, Ize and Parker (2008)
  * sec. 6).
  *
  * While an object's new BVH is built in the background from a snapshot of

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * frame.h - instances and the immediate-mode frame (paper 004 sec. 4.1).
+ * frame.h - instances and the immediate-mode frame (Wald, Benthin and Slusallek (2003) sec. 4.1).
  *
  * The application re-issues its instances every frame, as it would call
  * glCallList.  Instances go to the `pending` list; before rays are traced
@@ -10,7 +10,7 @@
  * unchanged frame costs a comparison and no build.
  *
  * The top level is a BVH over the world-space boxes of the instances'
- * object boxes (paper 004 sec. 4.5 builds a BSP over the same boxes; we
+ * object boxes (Wald, Benthin and Slusallek (2003) sec. 4.5 builds a BSP over the same boxes; we
  * use the binned SAH builder over boxes, and rays are clipped exactly by
  * the object box in object space by the object BVH's root).
  */
@@ -43,7 +43,7 @@ struct scene_frame {
     struct scene_instance_list committed;
 
     /* The top level over `committed`; valid when top_valid.  Built with
-     * the binned SAH over instance boxes, or with paper 004 sec. 4.5's
+     * the binned SAH over instance boxes, or with Wald, Benthin and Slusallek (2003) sec. 4.5's
      * rule when toplevel_cellsplit is set ("toplevel=cellsplit"). */
     int top_valid;
     int toplevel_cellsplit;
@@ -78,7 +78,7 @@ void scene_frame_forget_object(struct scene_frame *frame, const struct scene_obj
  * Makes the committed list current and the top level valid.  When the
  * list changes, the objects of instances whose matrix differs from the
  * instance at the same position before get moved_frame = frame_number
- * (the affine class of paper 004 sec. 3).  Returns 0
+ * (the affine class of Wald, Benthin and Slusallek (2003) sec. 3).  Returns 0
  * with *toplevel_built = 1 if a top-level build happened, 0 if nothing
  * changed; -1 on allocation failure (the previous committed scene stays).
  */

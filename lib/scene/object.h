@@ -4,7 +4,7 @@
  *
  * An object owns its committed definition (a scene_mesh) and, once a ray
  * has needed it, the acceleration structure over it.  Construction is
- * lazy (paper 004 sec. 3, "on demand"): scene_object_acquire (update.h) builds the
+ * lazy (Wald, Benthin and Slusallek (2003) sec. 3, "on demand"): scene_object_acquire (update.h) builds the
  * BVH the first time any thread asks, under the object's lock, and
  * publishes it with a release store so later readers take no lock.
  *
@@ -34,7 +34,7 @@ struct scene_object {
     struct scene_async_job *async_job; /* asynchronous rebuild in flight (async_build.h) */
     /* Rays expected to reach it per frame: the last frame's rays times the
      * SAH probability of hitting its largest instance box (MacDonald and
-     * Booth 1990); paper 001 sec. 4.1.1 scales its benefits by this. */
+     * Booth 1990); Yoon, Curtis and Manocha (2007) sec. 4.1.1 scales its benefits by this. */
     double expected_rays;
     /* RT_AUTOMATIC: traversal time lost to refitting since the last build
      * (update.c). */
@@ -43,8 +43,8 @@ struct scene_object {
     /* Hints (rtObjectParameteri); RT_AUTOMATIC when none was given. */
     unsigned class_hint;
     unsigned strategy_hint;
-    /* What the runtime did, for rtGetObject* (paper 004 sec. 3 classes,
-     * papers 000/001 strategies). */
+    /* What the runtime did, for rtGetObject* (Wald, Benthin and Slusallek (2003) sec. 3 classes,
+     * Wald, Ize and Parker (2008) and Yoon, Curtis and Manocha (2007) strategies). */
     unsigned current_class;
     unsigned last_strategy;
     double update_ms;

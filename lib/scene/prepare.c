@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * prepare.c - getting a scene ready for a frame or query: the top level,
- * object classification (paper 004 sec. 3), the expected-ray estimates
+ * object classification (Wald, Benthin and Slusallek (2003) sec. 3), the expected-ray estimates
  * and the per-object structure updates (see scene.h).
  */
 #include <rt/rt.h>
@@ -11,7 +11,7 @@
 #include "base/timer.h"
 #include "scene/scene.h"
 
-/* The class of an object this frame (paper 004 sec. 3): hints override;
+/* The class of an object this frame (Wald, Benthin and Slusallek (2003) sec. 3): hints override;
  * otherwise geometry changed since its first definition in this frame
  * means unstructured, an instance moved this frame means affine, and
  * everything else is static. */
@@ -95,7 +95,7 @@ enum scene_status scene_prepare_objects(struct scene *scene, struct rt_pool *poo
         object->expected_rays = expected_rays(scene, object, default_rays);
         if (scene_object_strategy(object, scene->default_strategy) == RT_RESTRUCTURE &&
             !scene->restructure_measured) {
-            /* Paper 001 sec. 6.1 measures its constants at start-up; we
+            /* Yoon, Curtis and Manocha (2007) sec. 6.1 measures its constants at start-up; we
              * do it when the first object needs them. */
             accel_restructure_measure_constants(&scene->restructure_params);
             scene->restructure_measured = 1;

@@ -112,7 +112,7 @@ void scene_update_vertices(struct scene *scene, struct scene_object *object, int
  * can start its worker pool between them (only if the first succeeded):
  * scene_prepare_toplevel commits the frame's instances and rebuilds the
  * top level if they or their objects changed; scene_prepare_objects
- * classifies the instanced objects (paper 004 sec. 3) and brings their
+ * classifies the instanced objects (Wald, Benthin and Slusallek (2003) sec. 3) and brings their
  * stale structures up to date, on pool where that pays.  default_rays is
  * the expected ray count before any frame was traced (viewport pixels).
  * Both reset scene->stats at their start (the first) and add to them.

@@ -13,7 +13,7 @@
 
 /* Rebuild once refitting has made the SAH cost this many times the cost
  * right after the last build.  Lauterbach et al.'s RT-DEFORM rebuild
- * heuristic (paper 000 sec. 2 names it, without a value); 1.5 is our
+ * heuristic (Wald, Ize and Parker (2008) sec. 2 names it, without a value); 1.5 is our
  * starting point, to be tuned against the benchmark animations. */
 #define REBUILD_HEURISTIC_THRESHOLD 1.5
 
@@ -89,7 +89,7 @@ static int refit_or_rebuild(struct scene_object *object, const struct bvh_build_
 }
 
 /*
- * Paper 000 sec. 6: swap in a build that has landed, refit whatever
+ * Wald, Ize and Parker (2008) sec. 6: swap in a build that has landed, refit whatever
  * structure is current to the current vertices, and keep the build
  * threads busy with the newest snapshot.  Without build threads this is
  * the rebuild heuristic.
@@ -117,7 +117,7 @@ static int async_rebuild(struct scene_object *object, const struct bvh_build_par
 }
 
 /*
- * RT_AUTOMATIC: the choice paper 000 (sec. 7.5) leaves open, made from
+ * RT_AUTOMATIC: the choice Wald, Ize and Parker (2008) (sec. 7.5) leaves open, made from
  * measured costs.  Refit first (it is needed to know how far the tree has
  * degraded and costs O(n)); then rebuild once the traversal time lost to
  * the degraded tree since the last build has added up to what a rebuild
@@ -171,7 +171,7 @@ const struct scene_accel *scene_object_update(struct scene_object *object,
     dynamic.builder = BVH_BUILDER_BINNED_SAH;
     int status;
     if (!accel) {
-        /* First build: the high-quality static build, lazily (paper 004
+        /* First build: the high-quality static build, lazily (Wald, Benthin and Slusallek (2003)
          * sec. 3), unless the object is known to be unstructured. */
         int unstructured = object->class_hint == RT_UNSTRUCTURED;
         status = rebuild(object, unstructured ? &dynamic : quality, 0,

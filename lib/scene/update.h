@@ -1,23 +1,23 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * update.h - keeping an object's acceleration structure in step with its
- * geometry: the per-object update strategies of papers 000 and 001.
+ * geometry: the per-object update strategies of Wald, Ize and Parker (2008) and Yoon, Curtis and Manocha (2007).
  *
  * An object whose geometry changed (redefined with the same connectivity,
  * or rtUpdateVertices) has a stale structure.  scene_object_update brings
  * it up to date with the strategy the object's class and hints select:
  *
- *   RT_REFIT               refit the boxes bottom-up (paper 000 sec. 6)
+ *   RT_REFIT               refit the boxes bottom-up (Wald, Ize and Parker (2008) sec. 6)
  *   RT_REBUILD             binned SAH rebuild, two-stage parallel with a
- *                          pool (paper 000 secs. 4, 5)
- *   RT_REBUILD_MEDIAN      spatial-median (BIH-like) rebuild (paper 000
+ *                          pool (Wald, Ize and Parker (2008) secs. 4, 5)
+ *   RT_REBUILD_MEDIAN      spatial-median (BIH-like) rebuild (Wald, Ize and Parker (2008)
  *                          table 1)
  *   RT_REBUILD_HEURISTIC   refit, rebuild once the SAH cost has grown past
  *                          REBUILD_HEURISTIC_THRESHOLD times the cost
  *                          after the last build (the RT-DEFORM rebuild
- *                          heuristic, paper 000 sec. 2)
- *   RT_RESTRUCTURE         selective restructuring (paper 001)
- *   RT_ASYNC_REBUILD       refit while build threads rebuild (paper 000
+ *                          heuristic, Wald, Ize and Parker (2008) sec. 2)
+ *   RT_RESTRUCTURE         selective restructuring (Yoon, Curtis and Manocha (2007))
+ *   RT_ASYNC_REBUILD       refit while build threads rebuild (Wald, Ize and Parker (2008)
  *                          sec. 6; async_build.h)
  *   RT_AUTOMATIC           refit, or rebuild when the measured traversal
  *                          time it saves exceeds its measured cost
@@ -37,10 +37,10 @@ struct scene_update_config {
     const struct bvh_build_params *static_params; /* first builds, static objects */
     unsigned default_strategy; /* for objects without a hint; RT_AUTOMATIC allowed */
     struct rt_pool *pool;      /* parallel builds and refits; NULL = caller only */
-    /* Selective restructuring's machine constants (paper 001 sec. 6.1),
+    /* Selective restructuring's machine constants (Yoon, Curtis and Manocha (2007) sec. 6.1),
      * measured by the context the first time an object restructures. */
     const struct accel_restructure_params *restructure;
-    /* Asynchronous rebuilds (paper 000 sec. 6); threads == 0 disables
+    /* Asynchronous rebuilds (Wald, Ize and Parker (2008) sec. 6); threads == 0 disables
      * them and RT_ASYNC_REBUILD then behaves as RT_REBUILD_HEURISTIC. */
     struct scene_async_builder *async;
     /* Measured time of one traversal step (node or triangle test), ms:

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * scene_traverse.h - two-level traversal: a top-level BVH over instances,
- * object BVHs below (paper 004 sec. 4.4).
+ * object BVHs below (Wald, Benthin and Slusallek (2003) sec. 4.4).
  *
  * A ray reaching an instance leaf is transformed into the object's space
  * by the instance's world-to-object matrix, without renormalising the
@@ -9,7 +9,7 @@
  * object's own root box then clips it exactly in object space.  Each
  * instance sits in exactly one top-level leaf (the BVH partitions
  * instances, not space), so no ray visits an instance twice: that is the
- * equivalent of the mailboxing paper 004 needs for its top-level BSP.
+ * equivalent of the mailboxing Wald, Benthin and Slusallek (2003) needs for its top-level BSP.
  *
  * Object structures are obtained through a callback the first time a ray
  * reaches the instance, which lets the scene build them on demand.

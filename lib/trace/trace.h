@@ -6,7 +6,7 @@
  * world space for the top level) and knows nothing of instances, the
  * context or RT_ enums.  Directions are never normalised: t is measured
  * in units of dir, so the same t holds in world and object space under an
- * affine map (paper 004 sec. 4.4).
+ * affine map (Wald, Benthin and Slusallek (2003) sec. 4.4).
  */
 #ifndef RT_TRACE_TRACE_H
 #define RT_TRACE_TRACE_H
