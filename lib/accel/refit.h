@@ -3,7 +3,15 @@
  * refit.h - refitting a BVH to moved primitives without changing its
  * topology (Wald, Ize and Parker (2008) sec. 6, "Parallel BVH Refit"), and updating the
  * leaf-ordered triangle copy that traversal reads (accel_gather_triangles
- * in bvh_layout.h).
+ * in accel/bvh_build.h).
+ *
+ * Who calls what: the runtime refits objects through accel_refit_mesh
+ * alone (scene/accel.c).  accel_refit and accel_refit_parallel refit from
+ * per-primitive boxes, the general form (any primitive, e.g. instance
+ * boxes) against which internal/refit and internal/parallel_build_threads
+ * check accel_refit_mesh bit for bit; accel_refit_triangles(_parallel)
+ * are accel_refit_mesh's first step, exposed so the tests can check that
+ * step alone.  They stay as the reference the production path is held to.
  *
  * A refit recomputes every node box bottom-up: a leaf's box is the union
  * of its primitives' boxes, an inner node's the union of its two
