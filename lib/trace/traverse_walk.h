@@ -26,6 +26,49 @@ struct stack_entry {
     float t_entry;
 };
 
+/*
+ * The leaf test and the hit rule, shared by the binary walk below and the
+ * wide walk (traverse_wide.h): tests the triangles of leaf slots
+ * [first, first + count) against the current best.  Once a hit is known,
+ * hits at the same distance are tested too, and the lower primitive index
+ * wins: the answer is then the same for every tree over the same
+ * triangles (builder, layout, strategy, thread count).  Returns 1 when an
+ * any-hit walk has its hit and can stop.  Forced inline: called from two
+ * walks, GCC would otherwise emit it once and pass found, best and
+ * box_limit through memory on every leaf.
+ */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline int walk_leaf(const struct bvh *bvh, const float *tri, const struct trace_ray *ray,
+                            uint32_t first, uint32_t count, int any_hit, struct trace_hit *hit,
+                            int *found, float *best, float *box_limit, uint64_t *triangle_tests)
+{
+    for (uint32_t slot = first; slot < first + count; slot++) {
+        const float *v = &tri[9 * (size_t)slot];
+        float t, u, w;
+        (*triangle_tests)++;
+        float limit = *found ? isect_next_up(*best) : *best;
+        if (!isect_triangle(ray, v, v + 3, v + 6, limit, &t, &u, &w))
+            continue;
+        if (any_hit) {
+            *found = 1;
+            return 1;
+        }
+        uint32_t prim = bvh->prim_index[slot];
+        if (*found && !(t < *best || prim < hit->prim))
+            continue;
+        *found = 1;
+        *best = t;
+        *box_limit = t * ISECT_BOX_FAR_SCALE;
+        hit->t = t;
+        hit->u = u;
+        hit->v = w;
+        hit->prim = prim;
+    }
+    return 0;
+}
+
 /* Shared walk; any_hit ends it at the first hit. */
 static inline int walk(const struct bvh *bvh, const float *tri, const struct trace_ray *ray,
                        float t_max, int any_hit, struct trace_hit *hit,
@@ -60,32 +103,9 @@ static inline int walk(const struct bvh *bvh, const float *tri, const struct tra
     for (;;) {
         const struct bvh_node *node = &nodes[current];
         if (node->count) {
-            for (uint32_t slot = node->first; slot < node->first + node->count; slot++) {
-                const float *v = &tri[9 * (size_t)slot];
-                float t, u, w;
-                triangle_tests++;
-                /* Once a hit is known, hits at the same distance are
-                 * tested too, and the lower primitive index wins: the
-                 * answer is then the same for every tree over the same
-                 * triangles (builder, strategy, thread count). */
-                float limit = found ? isect_next_up(best) : best;
-                if (!isect_triangle(ray, v, v + 3, v + 6, limit, &t, &u, &w))
-                    continue;
-                if (any_hit) {
-                    found = 1;
-                    goto done;
-                }
-                uint32_t prim = bvh->prim_index[slot];
-                if (found && !(t < best || prim < hit->prim))
-                    continue;
-                found = 1;
-                best = t;
-                box_limit = best * ISECT_BOX_FAR_SCALE;
-                hit->t = t;
-                hit->u = u;
-                hit->v = w;
-                hit->prim = prim;
-            }
+            if (walk_leaf(bvh, tri, ray, node->first, node->count, any_hit, hit, &found, &best,
+                          &box_limit, &triangle_tests))
+                goto done;
         } else {
             uint32_t left = node->first;
             uint32_t right = left + 1;

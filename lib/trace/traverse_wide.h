@@ -18,7 +18,8 @@
  *   tag-graze-box-limit), so skipping the binary inner nodes the collapse
  *   removed and visiting children in another order change the work done
  *   (the node and triangle counts) but not the hit;
- * - the leaves use the same scalar isect_triangle with the same limit.
+ * - the leaves go through the binary walk's walk_leaf (traverse_walk.h):
+ *   the same triangle test, limit and hit rule.
  */
 #include <immintrin.h>
 
@@ -60,28 +61,9 @@ static inline int walk_wide(const struct bvh4 *wide, const struct bvh *bvh, cons
     uint32_t cur_count = 0;
     for (;;) {
         if (cur_count) {
-            for (uint32_t slot = cur; slot < cur + cur_count; slot++) {
-                const float *v = &tri[9 * (size_t)slot];
-                float t, u, w;
-                triangle_tests++;
-                float limit = found ? isect_next_up(best) : best;
-                if (!isect_triangle(ray, v, v + 3, v + 6, limit, &t, &u, &w))
-                    continue;
-                if (any_hit) {
-                    found = 1;
-                    goto done;
-                }
-                uint32_t prim = bvh->prim_index[slot];
-                if (found && !(t < best || prim < hit->prim))
-                    continue;
-                found = 1;
-                best = t;
-                box_limit = best * ISECT_BOX_FAR_SCALE;
-                hit->t = t;
-                hit->u = u;
-                hit->v = w;
-                hit->prim = prim;
-            }
+            if (walk_leaf(bvh, tri, ray, cur, cur_count, any_hit, hit, &found, &best, &box_limit,
+                          &triangle_tests))
+                goto done;
         } else {
             const struct bvh4_node *n = &nodes[cur];
             node_tests += 4;
