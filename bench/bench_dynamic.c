@@ -70,8 +70,8 @@
 #define DYN_SAMPLE_H_QUICK 12
 #define EMBREE_MIN_AGREEMENT 99.9
 /* A strategy whose first run of an animation takes longer than this is
- * not repeated (refitting the explosion: a near standstill, as in paper
- * 000 fig. 3): its figures are from one run, and the table says so. */
+ * not repeated (refitting the explosion: a near standstill, as in Wald, Ize and Parker
+ * (2008) fig. 3): its figures are from one run, and the table says so. */
 #define DYN_SLOW_RUN_MS 8000.0
 
 /* Sizes (anim_gen.c): explode 2 * S * S/2 triangles, cloth 2 * S * S. */

@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * toplevel_builders.c - the two top-level builders ("toplevel=binned", the
- * default binned SAH over instance boxes, and "toplevel=cellsplit", paper
- * 004 sec. 4.5's split rule) give bit-identical hits, on scattered,
+ * default binned SAH over instance boxes, and "toplevel=cellsplit", Wald, Benthin and Slusallek
+ * (2003) sec. 4.5's split rule) give bit-identical hits, on scattered,
  * overlapping and coincident instances, and both rebuild only when the
  * instance list changes.
  */

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * restructure.c - selective restructuring (lib/accel/restructure.h, paper
- * 001) on deforming meshes, frame by frame.
+ * restructure.c - selective restructuring (lib/accel/restructure.h, Yoon, Curtis and Manocha
+ * (2007)) on deforming meshes, frame by frame.
  *
  * Scenes (fixed seeds): a tessellated sphere whose triangles fly apart
  * (radial speeds that differ per triangle plus a tangential drift), a

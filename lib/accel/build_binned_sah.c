@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * build_binned_sah.c - binned SAH builder (Wald 2007, "On fast construction
- * of SAH-based bounding volume hierarchies", Wald, Ize and Parker's (2008) ref. [20]; paper
- * 000 sec. 4).
+ * of SAH-based bounding volume hierarchies", Wald, Ize and Parker's (2008) ref. [20]; Wald, Ize and Parker
+ * (2008) sec. 4).
  *
  * Each node projects its primitives' centroids into `bins` equal slices of
  * the centroid bounds on each axis, keeps a count and a box per bin, and

@@ -7,8 +7,8 @@
  * "median-split BIH-style build" (Wachter and Keller 2006): the median
  * build is 1.7-3.3x faster than 16-bin binning and gives 72-87% of the
  * sweep build's render speed.  It is the cheapest rebuild the runtime
- * has, and what the grid-based parallel build uses below its grid (paper
- * 000 sec. 5, "grid+BIH").
+ * has, and what the grid-based parallel build uses below its grid (Wald, Ize and Parker
+ * (2008) sec. 5, "grid+BIH").
  *
  * Unlike a BIH, a small node (at most max_leaf_size primitives) keeps its
  * split only when the SAH favours it, which costs nothing but the node's
@@ -206,8 +206,8 @@ void build_median_refs(struct bvh_node *nodes, struct build_ref *refs, uint32_t 
         int axis = longest_axis(task.clo, task.chi, &extent);
         int spatial = 0;
         if (!forced_median && extent > 0.0f) {
-            /* Wachter and Keller 2006 split the node's box; like paper
-             * 000's binning we split the centroid bounds, which never
+            /* Wachter and Keller 2006 split the node's box; like Wald, Ize and Parker's
+             * (2008) binning we split the centroid bounds, which never
              * leaves a side empty unless the midpoint rounds onto a
              * bound. */
             float plane = 0.5f * (task.clo[axis] + task.chi[axis]);

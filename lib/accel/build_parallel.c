@@ -335,8 +335,8 @@ static void init_binning(struct open_node *o, int bins)
     }
 }
 
-/* Phase A: each chunk's histogram, for the three axes (Wald 2007; paper
- * 000 sec. 5: "each of the T threads computes a bin histogram ... for
+/* Phase A: each chunk's histogram, for the three axes (Wald 2007; Wald, Ize and Parker
+ * (2008) sec. 5: "each of the T threads computes a bin histogram ... for
  * one T-th of the triangles"). */
 static void bin_task(void *arg, int worker)
 {

@@ -34,8 +34,8 @@ struct scene_accel {
     double sah_cost;       /* of the tree as it is now */
     double built_sah_cost; /* right after the last full build (rebuild heuristic) */
     double build_ms;       /* the last full build */
-    /* Per-node life times and scratch of selective restructuring (paper
-     * 001), initialised by its first use. */
+    /* Per-node life times and scratch of selective restructuring (Yoon, Curtis and Manocha
+     * (2007)), initialised by its first use. */
     struct accel_restructure_state restructure_state;
     int restructure_state_ready;
 };
