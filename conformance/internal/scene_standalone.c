@@ -11,6 +11,7 @@
 
 #include "base/mat4.h"
 #include "check.h"
+#include "scene/accel.h"
 #include "scene/recording.h"
 #include "scene/scene.h"
 
@@ -37,6 +38,37 @@ static enum scene_record_status record_quad(struct scene_recording *rec, float z
             return s;
     }
     return SCENE_RECORD_OK;
+}
+
+/* The 4-wide layout is made only when the kernels walk it: a context
+ * with isa=scalar sets wide_layout to 0 (api/context.c), and then no
+ * build spends time or memory on it; the binary tree is the same. */
+static void check_wide_layout_only_when_walked(void)
+{
+    static const float positions[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0,
+                                      0, 0, 1, 1, 0, 1, 0, 1, 1, 1, 1, 1};
+    static const uint32_t indices[] = {0, 1, 2, 1, 3, 2, 4, 5, 6, 5, 7, 6};
+    const struct scene_accel_geometry g = {positions, indices, 4};
+    struct bvh_build_params params;
+    bvh_build_params_default(&params);
+    params.max_leaf_size = 1;
+    CHECK(params.wide_layout == 1);
+    struct scene_accel *with = scene_accel_build(&g, &params, SCENE_ACCEL_SERIAL, NULL);
+    params.wide_layout = 0;
+    struct scene_accel *without = scene_accel_build(&g, &params, SCENE_ACCEL_SERIAL, NULL);
+    CHECK(with && without);
+    if (with && without) {
+        CHECK(with->wide.node_count > 0 && with->wide.nodes != NULL);
+        CHECK(without->wide.node_count == 0 && without->wide.nodes == NULL);
+        CHECK(with->bvh.node_count == without->bvh.node_count &&
+              memcmp(with->bvh.nodes, without->bvh.nodes,
+                     with->bvh.node_count * sizeof(*with->bvh.nodes)) == 0);
+        /* A refit of the binary-only structure leaves it binary-only. */
+        scene_accel_refit(without, &g, &params, NULL);
+        CHECK(without->wide.node_count == 0);
+    }
+    scene_accel_release(with);
+    scene_accel_release(without);
 }
 
 int main(void)
@@ -137,5 +169,6 @@ int main(void)
 
     scene_mesh_release(&rec.mesh);
     scene_release(&scene);
+    check_wide_layout_only_when_walked();
     return test_summary("scene_standalone");
 }

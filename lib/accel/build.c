@@ -24,6 +24,7 @@ void bvh_build_params_default(struct bvh_build_params *params)
     params->c_trav = BVH_C_TRAV;
     params->c_isect = BVH_C_ISECT;
     params->leaf_growth = 1.0f;
+    params->wide_layout = 1;
 }
 
 void accel_build_params_normalize(struct bvh_build_params *out,

@@ -44,10 +44,16 @@ struct bvh_build_params {
      * primitives becomes a leaf without any split being evaluated, g =
      * leaf_growth.  1 (the default) switches it off; values below 1 or
      * not finite are treated as 1.  Read by the median builder and the
-     * parallel build's median subtrees (build_more.h, which names the
+     * parallel build's median subtrees (build_median.h, which names the
      * recommended value, BVH_LEAF_GROWTH_REBUILD).  TODO(issue "dynamic
      * scenes"): the binned and sweep builders do not read it yet. */
     float leaf_growth;
+    /* Not read by the builders: whoever finishes a build (scene/accel.c)
+     * also collapses it into the 4-wide traversal layout (collapse4.c)
+     * when this is 1 (the default).  The context sets it to 0 when its
+     * kernels walk only the binary tree (isa=scalar), so no time or
+     * memory goes to a layout nothing reads. */
+    int wide_layout;
 };
 
 /* Fills *params with the defaults above (binned SAH, 16 bins). */

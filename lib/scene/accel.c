@@ -37,8 +37,8 @@ static int finish_layout(struct scene_accel *accel, const struct scene_accel_geo
     float *tri = accel_gather_triangles(&accel->bvh, geom->positions, geom->indices);
     if (!tri)
         return -1;
-    struct bvh4 wide;
-    if (accel_collapse4(&wide, &accel->bvh)) {
+    struct bvh4 wide = {0};
+    if (params->wide_layout && accel_collapse4(&wide, &accel->bvh)) {
         /* The tree may have changed under the old wide layout
          * (restructuring): drop it, so traversal takes the binary walk. */
         bvh4_release(&accel->wide);
