@@ -78,6 +78,10 @@ typedef struct rt_context *RTcontext;
 #define RT_DOUBLE 0x140A
 
 /* ---- Primitive modes ------------------------------------------------- */
+#define RT_POINTS 0x0000
+#define RT_LINES 0x0001
+#define RT_LINE_LOOP 0x0002
+#define RT_LINE_STRIP 0x0003
 #define RT_TRIANGLES 0x0004
 #define RT_TRIANGLE_STRIP 0x0005
 #define RT_TRIANGLE_FAN 0x0006
@@ -363,6 +367,45 @@ RTAPI void rtRenderFrame(void);
 RTAPI void rtFinish(void);
 RTAPI void rtReadPixels(RTint x, RTint y, RTsizei width, RTsizei height, RTenum format,
                         RTenum type, void *pixels);
+
+/* ---- Raster position and bitmaps (docs/text.md) ---------------------- */
+#define RT_CURRENT_RASTER_COLOR 0x0B04          /* rtGetFloatv: 4 floats */
+#define RT_CURRENT_RASTER_POSITION 0x0B07       /* rtGetFloatv: window x, y, z, w */
+#define RT_CURRENT_RASTER_POSITION_VALID 0x0B08 /* rtGetIntegerv */
+RTAPI void rtRasterPos2i(RTint x, RTint y);
+RTAPI void rtRasterPos2f(RTfloat x, RTfloat y);
+RTAPI void rtRasterPos2d(RTdouble x, RTdouble y);
+RTAPI void rtRasterPos3i(RTint x, RTint y, RTint z);
+RTAPI void rtRasterPos3f(RTfloat x, RTfloat y, RTfloat z);
+RTAPI void rtRasterPos3d(RTdouble x, RTdouble y, RTdouble z);
+RTAPI void rtRasterPos4i(RTint x, RTint y, RTint z, RTint w);
+RTAPI void rtRasterPos4f(RTfloat x, RTfloat y, RTfloat z, RTfloat w);
+RTAPI void rtRasterPos4d(RTdouble x, RTdouble y, RTdouble z, RTdouble w);
+RTAPI void rtRasterPos2iv(const RTint *v);
+RTAPI void rtRasterPos2fv(const RTfloat *v);
+RTAPI void rtRasterPos2dv(const RTdouble *v);
+RTAPI void rtRasterPos3iv(const RTint *v);
+RTAPI void rtRasterPos3fv(const RTfloat *v);
+RTAPI void rtRasterPos3dv(const RTdouble *v);
+RTAPI void rtRasterPos4iv(const RTint *v);
+RTAPI void rtRasterPos4fv(const RTfloat *v);
+RTAPI void rtRasterPos4dv(const RTdouble *v);
+RTAPI void rtWindowPos2i(RTint x, RTint y);
+RTAPI void rtWindowPos2f(RTfloat x, RTfloat y);
+RTAPI void rtWindowPos2d(RTdouble x, RTdouble y);
+RTAPI void rtWindowPos3i(RTint x, RTint y, RTint z);
+RTAPI void rtWindowPos3f(RTfloat x, RTfloat y, RTfloat z);
+RTAPI void rtWindowPos3d(RTdouble x, RTdouble y, RTdouble z);
+RTAPI void rtWindowPos2iv(const RTint *v);
+RTAPI void rtWindowPos2fv(const RTfloat *v);
+RTAPI void rtWindowPos2dv(const RTdouble *v);
+RTAPI void rtWindowPos3iv(const RTint *v);
+RTAPI void rtWindowPos3fv(const RTfloat *v);
+RTAPI void rtWindowPos3dv(const RTdouble *v);
+/* Rows bottom to top, most significant bit first, each row padded to a
+ * multiple of 4 bytes (GL's default unpack alignment). */
+RTAPI void rtBitmap(RTsizei width, RTsizei height, RTfloat xorig, RTfloat yorig, RTfloat xmove,
+                    RTfloat ymove, const RTubyte *bitmap);
 
 /* ---- Ray queries (docs/queries.md) ------------------------------------ */
 RTAPI void rtTraceRays(RTsizei count, const RTray *rays, RThit *hits);

@@ -137,8 +137,8 @@ RTAPI void rtuPartialDisk(RTUquadric *quadric, RTdouble innerRadius, RTdouble ou
 /* ---- GLUT solid shapes (docs/quadrics.md) ----------------------------- */
 
 /* The solid shapes of GLUT 3 with its geometry and normals, emitted like
- * the quadrics (call them inside rtNewObject).  The wire variants need
- * line primitives and are deliberately absent until the core has them. */
+ * the quadrics (call them inside rtNewObject).  The wire variants emit
+ * RT_LINE_LOOP / RT_LINE_STRIP blocks through the solids' vertices. */
 RTAPI void rtuSolidSphere(RTdouble radius, RTint slices, RTint stacks);
 RTAPI void rtuSolidCube(RTdouble size);
 RTAPI void rtuSolidCone(RTdouble base, RTdouble height, RTint slices, RTint stacks);
@@ -148,6 +148,15 @@ RTAPI void rtuSolidDodecahedron(void);
 RTAPI void rtuSolidOctahedron(void);
 RTAPI void rtuSolidTetrahedron(void);
 RTAPI void rtuSolidIcosahedron(void);
+RTAPI void rtuWireSphere(RTdouble radius, RTint slices, RTint stacks);
+RTAPI void rtuWireCube(RTdouble size);
+RTAPI void rtuWireCone(RTdouble base, RTdouble height, RTint slices, RTint stacks);
+RTAPI void rtuWireTorus(RTdouble innerRadius, RTdouble outerRadius, RTint sides, RTint rings);
+RTAPI void rtuWireTeapot(RTdouble size);
+RTAPI void rtuWireDodecahedron(void);
+RTAPI void rtuWireOctahedron(void);
+RTAPI void rtuWireTetrahedron(void);
+RTAPI void rtuWireIcosahedron(void);
 
 
 /* ---- AFF scenes (BART; docs/aff.md) ----------------------------------- */

@@ -276,6 +276,11 @@ RTcontext rtCreateContextWithReason(const char *configuration, RTsizei bufSize, 
     for (int k = 0; k < 4; k++)
         ctx->current_color[k] = 1.0f;
     ctx->shade_model = RT_SMOOTH;
+    /* GL's initial raster position: (0, 0, 0, 1), valid, white. */
+    ctx->raster_pos[3] = 1.0f;
+    ctx->raster_valid = 1;
+    for (int k = 0; k < 4; k++)
+        ctx->raster_color[k] = 1.0f;
     scene_material_default(&ctx->material);
     ctx->recording.mesh.bounds = aabb_empty();
     scene_init(&ctx->scene, &ctx->build_params, ctx->build_threads, ctx->toplevel_cellsplit);
@@ -297,6 +302,7 @@ void rtDestroyContext(RTcontext ctx)
     scene_release(&ctx->scene);
     scene_mesh_release(&ctx->recording.mesh);
     render_framebuffer_release(&ctx->render.fb);
+    render_overlay_release(&ctx->overlay);
     rt_free(ctx);
 }
 

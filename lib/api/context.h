@@ -14,6 +14,7 @@
 #include <rt/rt.h>
 #include <stdint.h>
 
+#include "render/overlay.h"
 #include "render/render.h"
 #include "scene/recording.h"
 #include "scene/scene.h"
@@ -96,6 +97,14 @@ struct rt_context {
 
     /* Statistics of the last frame or query. */
     struct render_stats stats;
+
+    /* The current raster position (raster.c): window coordinates, valid
+     * flag, and the colour latched by rtRasterPos / rtWindowPos; and the
+     * frame's bitmaps, drawn over its image by rtRenderFrame. */
+    float raster_pos[4];
+    int raster_valid;
+    float raster_color[4];
+    struct render_overlay overlay;
 };
 
 /* The calling thread's current context, or NULL. */

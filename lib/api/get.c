@@ -161,6 +161,19 @@ static enum value_kind state_values(const struct rt_context *ctx, RTenum pname, 
         memcpy(v, ctx->projection.m[ctx->projection.depth - 1], 16 * sizeof(double));
         *count = 16;
         return VALUE_MATRIX;
+    case RT_CURRENT_RASTER_POSITION: /* raster.c */
+        for (int i = 0; i < 4; i++)
+            v[i] = ctx->raster_pos[i];
+        *count = 4;
+        return VALUE_FLOAT;
+    case RT_CURRENT_RASTER_COLOR:
+        for (int i = 0; i < 4; i++)
+            v[i] = ctx->raster_color[i];
+        *count = 4;
+        return VALUE_FLOAT;
+    case RT_CURRENT_RASTER_POSITION_VALID:
+        v[0] = ctx->raster_valid;
+        return VALUE_INT;
     default:
         *count = 0;
         return VALUE_NONE;

@@ -46,4 +46,5 @@ void rtBeginFrame(void)
     if (!ctx || rt_check_outside_object(ctx, "rtBeginFrame"))
         return;
     scene_frame_begin(&ctx->scene.frame);
+    render_overlay_clear(&ctx->overlay); /* the frame's bitmaps (raster.c) */
 }

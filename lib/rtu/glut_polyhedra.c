@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * glut_polyhedra.c - rtuSolidTetrahedron, rtuSolidOctahedron,
- * rtuSolidDodecahedron, rtuSolidIcosahedron: the regular solids of GLUT 3
+ * rtuSolidDodecahedron, rtuSolidIcosahedron and their rtuWire variants:
+ * the regular solids of GLUT 3
  * (Kilgard 1996, sec. 11), centred at the origin with GLUT's radii
  * (circumradius sqrt(3) for the tetrahedron and the dodecahedron, 1 for the
  * octahedron and the icosahedron) and orientation, one flat normal per
@@ -37,8 +38,10 @@ static double dot3(const double a[3], const double b[3])
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
-/* Emits the face of `verts` farthest along `dir`. */
-static void emit_face(const double (*verts)[3], int n, const double dir[3])
+/* Emits the face of `verts` farthest along `dir`: filled, or (wire) as a
+ * line loop through the same vertices, as GLUT's wire solids draw each
+ * face with GL_LINE_LOOP. */
+static void emit_face(const double (*verts)[3], int n, const double dir[3], int wire)
 {
     double best = -INFINITY;
     int face[MAX_FACE];
@@ -76,7 +79,7 @@ static void emit_face(const double (*verts)[3], int n, const double dir[3])
             angle[j - 1] = ta;
             face[j - 1] = tf;
         }
-    rtBegin(count == 3 ? RT_TRIANGLES : RT_TRIANGLE_FAN);
+    rtBegin(wire ? RT_LINE_LOOP : count == 3 ? RT_TRIANGLES : RT_TRIANGLE_FAN);
     rtNormal3f((float)(dir[0] / len), (float)(dir[1] / len), (float)(dir[2] / len));
     for (i = 0; i < count; i++)
         rtVertex3f((float)verts[face[i]][0], (float)verts[face[i]][1],
@@ -84,11 +87,12 @@ static void emit_face(const double (*verts)[3], int n, const double dir[3])
     rtEnd();
 }
 
-static void emit_solid(const double (*verts)[3], int n, const double (*dirs)[3], int faces)
+static void emit_solid(const double (*verts)[3], int n, const double (*dirs)[3], int faces,
+                       int wire)
 {
     int f;
     for (f = 0; f < faces; f++)
-        emit_face(verts, n, dirs[f]);
+        emit_face(verts, n, dirs[f], wire);
 }
 
 /* The 12 points (0, +-a, +-b), (+-b, 0, +-a), (+-a, +-b, 0), scaled by s. */
@@ -118,24 +122,24 @@ static int cube_corners(double s, double (*out)[3])
     return 8;
 }
 
-void rtuSolidTetrahedron(void)
+static void draw_tetrahedron(int wire)
 {
     /* Alternate corners of the cube (+-1)^3: circumradius sqrt(3). */
     static const double verts[4][3] = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
     static const double dirs[4][3] = {{-1, -1, -1}, {-1, 1, 1}, {1, -1, 1}, {1, 1, -1}};
-    emit_solid(verts, 4, dirs, 4);
+    emit_solid(verts, 4, dirs, 4, wire);
 }
 
-void rtuSolidOctahedron(void)
+static void draw_octahedron(int wire)
 {
     static const double verts[6][3] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
                                        {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
     double dirs[8][3];
     cube_corners(1.0, dirs);
-    emit_solid(verts, 6, (const double(*)[3])dirs, 8);
+    emit_solid(verts, 6, (const double(*)[3])dirs, 8, wire);
 }
 
-void rtuSolidIcosahedron(void)
+static void draw_icosahedron(int wire)
 {
     /* GLUT's (0, +-phi, +-1) cyclically, scaled to radius 1; its faces
      * point at the vertices of the dual dodecahedron, (+-1, +-1, +-1) and
@@ -145,10 +149,10 @@ void rtuSolidIcosahedron(void)
     int n = cyclic_points(PHI, 1.0, 1.0 / sqrt(1.0 + PHI * PHI), verts);
     int f = cube_corners(1.0, dirs);
     f += cyclic_points(1.0 / PHI, PHI, 1.0, dirs + f);
-    emit_solid((const double(*)[3])verts, n, (const double(*)[3])dirs, f);
+    emit_solid((const double(*)[3])verts, n, (const double(*)[3])dirs, f, wire);
 }
 
-void rtuSolidDodecahedron(void)
+static void draw_dodecahedron(int wire)
 {
     /* GLUT's (+-1, +-1, +-1) and (0, +-phi, +-1/phi) cyclically: radius
      * sqrt(3); its faces point at the vertices of the dual icosahedron,
@@ -159,5 +163,45 @@ void rtuSolidDodecahedron(void)
     int f;
     n += cyclic_points(PHI, 1.0 / PHI, 1.0, verts + n);
     f = cyclic_points(1.0, PHI, 1.0, dirs);
-    emit_solid((const double(*)[3])verts, n, (const double(*)[3])dirs, f);
+    emit_solid((const double(*)[3])verts, n, (const double(*)[3])dirs, f, wire);
+}
+
+void rtuSolidTetrahedron(void)
+{
+    draw_tetrahedron(0);
+}
+
+void rtuWireTetrahedron(void)
+{
+    draw_tetrahedron(1);
+}
+
+void rtuSolidOctahedron(void)
+{
+    draw_octahedron(0);
+}
+
+void rtuWireOctahedron(void)
+{
+    draw_octahedron(1);
+}
+
+void rtuSolidIcosahedron(void)
+{
+    draw_icosahedron(0);
+}
+
+void rtuWireIcosahedron(void)
+{
+    draw_icosahedron(1);
+}
+
+void rtuSolidDodecahedron(void)
+{
+    draw_dodecahedron(0);
+}
+
+void rtuWireDodecahedron(void)
+{
+    draw_dodecahedron(1);
 }

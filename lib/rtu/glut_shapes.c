@@ -32,7 +32,9 @@ void rtuSolidCone(RTdouble base, RTdouble height, RTint slices, RTint stacks)
     rtuCylinder(&q, base, 0.0, height, slices, stacks);
 }
 
-void rtuSolidCube(RTdouble size)
+/* GLUT's drawBox(size, type): six faces of four corners each, as `mode`
+ * (RT_QUADS filled, RT_LINE_LOOP wire). */
+static void draw_box(RTdouble size, RTenum mode, const char *caller)
 {
     /* GLUT's drawBox: corners 0-3 at x = -size/2, 4-7 at +size/2; y and z
      * as set below.  Each face lists its corners counter-clockwise seen
@@ -46,7 +48,7 @@ void rtuSolidCube(RTdouble size)
     float h;
     int i, k;
     if (!(size >= 0.0) || !isfinite(size)) {
-        rtu_record_error(RT_INVALID_VALUE, "rtuSolidCube", "size must be finite and >= 0");
+        rtu_record_error(RT_INVALID_VALUE, caller, "size must be finite and >= 0");
         return;
     }
     h = (float)(size / 2.0);
@@ -56,12 +58,22 @@ void rtuSolidCube(RTdouble size)
         v[k][2] = (k == 0 || k == 3 || k == 4 || k == 7) ? -h : h;
     }
     for (i = 5; i >= 0; i--) {
-        rtBegin(RT_QUADS);
+        rtBegin(mode);
         rtNormal3fv(normals[i]);
         for (k = 0; k < 4; k++)
             rtVertex3fv(v[faces[i][k]]);
         rtEnd();
     }
+}
+
+void rtuSolidCube(RTdouble size)
+{
+    draw_box(size, RT_QUADS, "rtuSolidCube");
+}
+
+void rtuWireCube(RTdouble size)
+{
+    draw_box(size, RT_LINE_LOOP, "rtuWireCube");
 }
 
 void rtuSolidTorus(RTdouble innerRadius, RTdouble outerRadius, RTint sides, RTint rings)

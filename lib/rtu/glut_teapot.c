@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * glut_teapot.c - rtuSolidTeapot: Newell's teapot as GLUT 3 draws it.
+ * glut_teapot.c - rtuSolidTeapot, rtuWireTeapot: Newell's teapot as GLUT 3
+ * draws it.
  *
  * GLUT 3 (Kilgard 1996, sec. 11.9) draws the teapot with OpenGL
  * evaluators: each of the 10 bicubic Bezier patches of teapot_data.h is
@@ -100,6 +101,26 @@ static void emit_vertex(const double net[4][4][3], double u, double v, double ha
                (float)(half_size * -p[1]));
 }
 
+/* The wire teapot (glutWireTeapot: glEvalMesh2(GL_LINE)) draws the grid's
+ * lines through the same points: a line strip along u for every row v_j
+ * (j = 0 .. 7), then one along v for every column u_i. */
+static void draw_patch_lines(const double net[4][4][3], double half_size)
+{
+    int i, j;
+    for (j = 0; j <= TEAPOT_GRID; j++) {
+        rtBegin(RT_LINE_STRIP);
+        for (i = 0; i <= TEAPOT_GRID; i++)
+            emit_vertex(net, (double)i / TEAPOT_GRID, (double)j / TEAPOT_GRID, half_size);
+        rtEnd();
+    }
+    for (i = 0; i <= TEAPOT_GRID; i++) {
+        rtBegin(RT_LINE_STRIP);
+        for (j = 0; j <= TEAPOT_GRID; j++)
+            emit_vertex(net, (double)i / TEAPOT_GRID, (double)j / TEAPOT_GRID, half_size);
+        rtEnd();
+    }
+}
+
 static void draw_patch(const double net[4][4][3], double half_size)
 {
     int i, j;
@@ -116,12 +137,12 @@ static void draw_patch(const double net[4][4][3], double half_size)
     }
 }
 
-void rtuSolidTeapot(RTdouble size)
+static void draw_teapot(RTdouble size, int wire, const char *caller)
 {
     const double half_size = 0.5 * size;
     int patch, copy, j, k, c;
     if (!(size >= 0.0) || !isfinite(size)) {
-        rtu_record_error(RT_INVALID_VALUE, "rtuSolidTeapot", "size must be finite and >= 0");
+        rtu_record_error(RT_INVALID_VALUE, caller, "size must be finite and >= 0");
         return;
     }
     for (patch = 0; patch < RTU_TEAPOT_PATCHES; patch++) {
@@ -141,7 +162,20 @@ void rtuSolidTeapot(RTdouble size)
                     net[j][k][0] *= sx;
                     net[j][k][1] *= sy;
                 }
-            draw_patch((const double(*)[4][3])net, half_size);
+            if (wire)
+                draw_patch_lines((const double(*)[4][3])net, half_size);
+            else
+                draw_patch((const double(*)[4][3])net, half_size);
         }
     }
+}
+
+void rtuSolidTeapot(RTdouble size)
+{
+    draw_teapot(size, 0, "rtuSolidTeapot");
+}
+
+void rtuWireTeapot(RTdouble size)
+{
+    draw_teapot(size, 1, "rtuWireTeapot");
 }

@@ -1,0 +1,49 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * overlay.h - the bitmaps of a frame (rtBitmap), drawn over its ray
+ * traced image.
+ *
+ * GL draws glBitmap into the framebuffer at the call, over whatever the
+ * frame's earlier drawing left there.  A ray traced frame exists only
+ * when rtRenderFrame has traced it, so the API keeps the frame's bitmaps
+ * here, in call order, and the overlay is applied to the finished image
+ * right after the trace, before anyone can read it: the image then holds
+ * what GL's would, text over the scene.  The list ends with the frame.
+ */
+#ifndef RT_RENDER_OVERLAY_H
+#define RT_RENDER_OVERLAY_H
+
+#include <stddef.h>
+
+#include "render/render.h"
+
+/* One bitmap: its lower-left pixel, size, colour, and its rows (bottom to
+ * top, MSB first, `stride` bytes apart) at `offset` in the overlay's bits. */
+struct render_bitmap {
+    int x, y;
+    int width, height;
+    size_t stride;
+    size_t offset;
+    float color[4];
+};
+
+struct render_overlay {
+    struct render_bitmap *items;
+    size_t count, capacity;
+    unsigned char *bits;
+    size_t bits_used, bits_capacity;
+};
+
+/* Appends a bitmap (copying height rows of `stride` bytes from `rows`).
+ * Returns 0, or -1 when out of memory (the overlay unchanged). */
+int render_overlay_add(struct render_overlay *overlay, int x, int y, int width, int height,
+                       size_t stride, const unsigned char *rows, const float color[4]);
+/* Draws every bitmap, in order, into fb: a pixel whose bit is 1 takes
+ * the bitmap's colour; pixels outside fb are clipped. */
+void render_overlay_apply(const struct render_overlay *overlay, struct render_framebuffer *fb);
+/* Forgets the bitmaps, keeping the memory for the next frame. */
+void render_overlay_clear(struct render_overlay *overlay);
+/* Frees everything and zeroes *overlay. */
+void render_overlay_release(struct render_overlay *overlay);
+
+#endif
