@@ -18,7 +18,7 @@ file(MAKE_DIRECTORY ${RT_MAN_DIR}/man3)
 file(GLOB pages ${RT_SOURCE_DIR}/docs/*.md)
 
 set(pages_used "")
-foreach(header rt.h rtu.h)
+foreach(header rt.h rtu.h rtu_glut.h)
   file(STRINGS ${RT_SOURCE_DIR}/include/rt/${header} lines)
   if(header STREQUAL "rtu.h")
     set(section_page rtu)

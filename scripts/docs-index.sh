@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: Apache-2.0
 #
 # docs/index.md: the alphabetical index of every entry point declared in
-# include/rt/rt.h and include/rt/rtu.h, each linked to its reference page.
+# include/rt/rt.h, include/rt/rtu.h and include/rt/rtu_glut.h, each linked to its reference page.
 # A function belongs to the page that names it in a heading ("### rtNewObject"),
 # else to the page its header section names ("/* ---- Objects (docs/objects.md)"),
 # rtu.h's functions by default to rtu.md (cmake/GenerateManPages.cmake uses the
@@ -16,9 +16,10 @@ root="${2:-$(cd "$(dirname "$0")/.." && pwd)}"
 
 entries() {
   local header section fn page
-  for header in rt.h rtu.h; do
+  for header in rt.h rtu.h rtu_glut.h; do
     section=""
     [ "$header" = rtu.h ] && section=rtu
+    [ "$header" = rtu_glut.h ] && section=glut
     while IFS= read -r line; do
       if [[ "$line" =~ ^/\*\ ----.*docs/([a-z_]+)\.md ]]; then
         section="${BASH_REMATCH[1]}"

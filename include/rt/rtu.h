@@ -264,4 +264,7 @@ RTAPI RTsizei rtuAFFObjects(const RTUaffscene *scene, RTenum kind, RTsizei max, 
 }
 #endif
 
+/* The GLUT-style window shell and bitmap fonts (docs/glut.md, docs/text.md). */
+#include <rt/rtu_glut.h>
+
 #endif /* RT_RTU_H */
