@@ -157,11 +157,12 @@ static void choose(struct rtu_shell *s, int id, int value)
         s->current_menu = saved;
 }
 
-/* Label equality with '_' in `wanted` read as a space. */
+/* Label equality, a '_' in `wanted` standing for a space (or itself, so
+ * that a label with an underscore can be chosen too). */
 static int label_matches(const char *label, const char *wanted)
 {
     for (; *label && *wanted; label++, wanted++)
-        if (*label != (*wanted == '_' ? ' ' : *wanted))
+        if (*label != *wanted && !(*wanted == '_' && *label == ' '))
             return 0;
     return *label == '\0' && *wanted == '\0';
 }
