@@ -24,8 +24,9 @@
 #include "render/visibility.h"
 #include "scene/lines.h"
 
-/* Depth tolerance: four steps of a 24-bit depth buffer, GL's usual. */
-#define RASTER_DEPTH_EPSILON (4.0 / 16777216.0)
+/* Depth tolerance of lines against surfaces: one step of a 24-bit depth
+ * buffer. */
+#define RASTER_DEPTH_EPSILON (1.0 / 16777216.0)
 
 struct raster_target {
     float *rgba;   /* width x height RGBA, row 0 at the bottom */
@@ -44,17 +45,15 @@ double raster_window_depth(const double projection[16], const float org[3], cons
 /*
  * Turns the primary hits' window depths (1 where none) into the buffer
  * lines are tested against, in place: a pixel showing a surface gets its
- * depth plus the surface's depth slope over one pixel plus
- * RASTER_DEPTH_EPSILON, so a line lying on the surface (a wireframe over
- * its own filled polygons, whose fragments sample the line's depth up to
- * half a pixel away from where the surface is sampled) is in front of it,
- * and a line one pixel's depth slope behind is hidden.  The slope is
- * taken from the neighbouring pixels: per axis the smaller difference to
- * the two neighbours that show a surface (the one on the same surface at
- * a silhouette), the larger of the two axes (GL's polygon-offset slope).
- * scratch holds width x height doubles.
+ * depth plus RASTER_DEPTH_EPSILON, one step of a 24-bit depth buffer, so
+ * a fragment within the buffer's resolution of the surface is in front.
+ * No slope term: a line lying on a surface (a wireframe over its own
+ * filled polygons) samples its depth up to half a pixel away from where
+ * the surface is sampled and shows where it comes out nearer, the
+ * stitched look GL's RT_LESS gives it (docs/lines.md: 99.67% of the
+ * pixels as OSMesa's).
  */
-void raster_depth_prepare(double *depth, double *scratch, int width, int height);
+void raster_depth_prepare(double *depth, int width, int height);
 
 /* Rasterises the segments and points of `lines`, whose vertices are
  * mapped to eye space by object_to_eye. */

@@ -28,32 +28,12 @@ double raster_window_depth(const double projection[16], const float org[3], cons
     return d < 0.0 ? 0.0 : d > 1.0 ? 1.0 : d;
 }
 
-/* The smaller difference to the neighbours (i - step, i + step) that
- * show a surface; 0 when neither does. */
-static double axis_slope(const double *depth, size_t i, int has_before, int has_after,
-                         size_t step)
-{
-    double best = INFINITY;
-    if (has_before && depth[i - step] < 1.0)
-        best = fabs(depth[i - step] - depth[i]);
-    if (has_after && depth[i + step] < 1.0)
-        best = fmin(best, fabs(depth[i + step] - depth[i]));
-    return isfinite(best) ? best : 0.0;
-}
-
-void raster_depth_prepare(double *depth, double *scratch, int width, int height)
+void raster_depth_prepare(double *depth, int width, int height)
 {
     size_t n = (size_t)width * (size_t)height;
-    memcpy(scratch, depth, n * sizeof(*depth));
-    for (int y = 0; y < height; y++)
-        for (int x = 0; x < width; x++) {
-            size_t i = (size_t)y * (size_t)width + (size_t)x;
-            if (!(scratch[i] < 1.0))
-                continue;
-            double sx = axis_slope(scratch, i, x > 0, x + 1 < width, 1);
-            double sy = axis_slope(scratch, i, y > 0, y + 1 < height, (size_t)width);
-            depth[i] = scratch[i] + fmax(sx, sy) + RASTER_DEPTH_EPSILON;
-        }
+    for (size_t i = 0; i < n; i++)
+        if (depth[i] < 1.0)
+            depth[i] += RASTER_DEPTH_EPSILON;
 }
 
 void raster_fragment(const struct raster_target *target, long x, long y, double z,

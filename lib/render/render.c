@@ -231,16 +231,11 @@ void render_tile(struct render_pass *pass, uint32_t tile, int worker)
         }
 }
 
-int render_pass_raster(struct render_pass *pass)
+void render_pass_raster(struct render_pass *pass)
 {
     if (!pass->depth || !pass->projectable)
-        return 0;
-    size_t pixels = (size_t)pass->fb_width * (size_t)pass->fb_height;
-    double *scratch = rt_malloc((pixels ? pixels : 1) * sizeof(*scratch));
-    if (!scratch)
-        return -1;
-    raster_depth_prepare(pass->depth, scratch, pass->fb_width, pass->fb_height);
-    rt_free(scratch);
+        return;
+    raster_depth_prepare(pass->depth, pass->fb_width, pass->fb_height);
     const struct render_state *st = pass->job->state;
     struct raster_target target = {pass->fb, pass->depth, pass->fb_width, pass->fb_height,
                                    st->viewport, st->projection, &st->vis};
@@ -249,7 +244,6 @@ int render_pass_raster(struct render_pass *pass)
         const struct scene_instance *inst = &list->items[i];
         raster_lines(&target, &inst->object->mesh.lines, inst->object_to_world);
     }
-    return 0;
 }
 
 int render_pass_end(struct render_pass *pass, struct render_framebuffer *fb,
@@ -294,8 +288,7 @@ int render_frame(const struct render_job *job, int fb_width, int fb_height,
         return -1;
     if (render_pass_tiles(&pass) > 0)
         rt_pool_run(job->pool, frame_task, &pass);
-    if (render_pass_raster(&pass))
-        rt_atomic_store_relaxed(&pass.failed, 1);
+    render_pass_raster(&pass);
     return render_pass_end(&pass, fb, stats);
 }
 

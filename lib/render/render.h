@@ -144,9 +144,8 @@ uint32_t render_pass_tiles(const struct render_pass *pass);
  * (0 .. threads - 1, the index of its counters). */
 void render_tile(struct render_pass *pass, uint32_t tile, int worker);
 /* After every tile: rasterises the lines and points of the committed
- * instances over the image (raster.h), on the calling thread.  Returns 0,
- * or -1 when its scratch buffer cannot be had (the pass then fails). */
-int render_pass_raster(struct render_pass *pass);
+ * instances over the image (raster.h), on the calling thread. */
+void render_pass_raster(struct render_pass *pass);
 /* Adds the pass's work to stats and, if every object could be built,
  * hands the new image to fb (freeing the old); returns 0, or -1 (fb
  * unchanged) when one could not. */
