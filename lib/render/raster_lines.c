@@ -265,6 +265,9 @@ static void draw_segment(const struct raster_target *target, const struct scene_
     raster_to_window(target, c1, seg.b);
     seg.wa = c0[3];
     seg.wb = c1[3];
+    /* The vertices' colours: GL's lines with lighting disabled.  Lit lines
+     * (GL lights a line's vertices like any vertex) would compute the
+     * vertex colours here, from a normal and material stored with them. */
     const float *col_a = &lines->colors[4 * sg->v[0]], *col_b = &lines->colors[4 * sg->v[1]];
     seg.flat = (sg->flags & SCENE_LINE_FLAT) != 0;
     if (seg.flat) {
