@@ -35,12 +35,6 @@ struct oracle_scene {
      * yet); otherwise also the colour of pixels both cover, each channel
      * within this many 8-bit steps. */
     int colour_tolerance;
-    /* 1: lines or points only, which cover fewer pixels than the check
-     * against an empty GL image (2% of the image) expects: 0.25% then. */
-    int sparse;
-    /* Matching pixels (percent) below which the scene fails; 0: the
-     * oracle's threshold (ORACLE_MIN_MATCH). */
-    double min_match;
 };
 
 extern const struct oracle_scene oracle_scenes_gl[];
