@@ -106,7 +106,7 @@ C(objectfv_null, rtGetObjectfv(OBJ, RT_OBJECT_BOUNDS, NULL))
 
 C(begin_tri, rtBegin(RT_TRIANGLES))
 C(begin_enum, rtBegin(0x1234))
-C(begin_points, rtBegin(0)) /* GL_POINTS is not a Tracelist mode */
+C(begin_points, rtBegin(0x000A)) /* GL_LINES_ADJACENCY is not a Tracelist mode (RT_POINTS, 0, is) */
 C(end_plain, rtEnd())
 C(vertex2f, rtVertex2f(0, 0))
 C(vertex2d, rtVertex2d(0, 0))

@@ -42,6 +42,15 @@ int oracle_gl_render(const struct oracle_scene *scene, unsigned char *rgba)
     glDisable(GL_LIGHTING);
     glDisable(GL_CULL_FACE);
     glColor3f(1.0f, 1.0f, 1.0f);
+    /* What a scene may have changed (scenes_vis.inc), back to GL's initial state. */
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    glLineWidth(1.0f);
+    glPointSize(1.0f);
+    glDisable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ZERO);
+    glDepthMask(GL_TRUE);
+    for (int i = 0; i < 6; i++)
+        glDisable(GL_CLIP_PLANE0 + i);
 
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();

@@ -35,6 +35,19 @@ int oracle_rt_render(const struct oracle_scene *scene, unsigned char *rgba)
     RTenum error;
     rtViewport(0, 0, ORACLE_W, ORACLE_H);
     rtClearColor(ORACLE_BG_R, ORACLE_BG_G, ORACLE_BG_B, 1.0f);
+    /* What a scene may have changed (scenes_vis.inc), back to the initial
+     * state, as backend_gl.c does. */
+    static const RTfloat black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+    rtColor4f(1.0f, 1.0f, 1.0f, 1.0f);
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_EMISSION, black);
+    rtPolygonMode(RT_FRONT_AND_BACK, RT_FILL);
+    rtLineWidth(1.0f);
+    rtPointSize(1.0f);
+    rtDisable(RT_BLEND);
+    rtBlendFunc(RT_ONE, RT_ZERO);
+    rtDepthMask(RT_TRUE);
+    for (int i = 0; i < 6; i++)
+        rtDisable(RT_CLIP_PLANE0 + (RTenum)i);
 
     rtMatrixMode(RT_PROJECTION);
     rtLoadIdentity();

@@ -23,6 +23,7 @@
 #define O_GLUT(name) oracle_glut##name
 #define O_QUADRIC GLUquadric
 #define O_INT GLint
+#define O_UNLIT_COLOR(r, g, b, a) glColor4f(r, g, b, a)
 #define ORACLE_SCENES oracle_scenes_gl
 #define ORACLE_SCENE_COUNT oracle_scene_count_gl
 

@@ -221,6 +221,39 @@ typedef struct rt_context *RTcontext;
 #define RT_RESTRUCTURE 0x8F68         /* selective restructuring (Yoon, Curtis and Manocha (2007)) */
 #define RT_ASYNC_REBUILD 0x8F69       /* refit while K threads rebuild (Wald, Ize and Parker (2008) sec. 6) */
 
+/* ---- Lines, points, polygon mode, blending, clip planes (docs/lines.md,
+ * docs/blending.md, docs/clip_planes.md) ------------------------------ */
+#define RT_POINT_SIZE 0x0B11
+#define RT_LINE_WIDTH 0x0B21
+#define RT_ALIASED_POINT_SIZE_RANGE 0x846D /* float[2]: 1, 64 */
+#define RT_ALIASED_LINE_WIDTH_RANGE 0x846E /* float[2]: 1, 64 */
+#define RT_POLYGON_MODE 0x0B40 /* rtGetIntegerv: front, back */
+#define RT_POINT 0x1B00
+#define RT_LINE 0x1B01
+#define RT_FILL 0x1B02
+#define RT_BLEND 0x0BE2     /* rtEnable capability */
+#define RT_BLEND_DST 0x0BE0 /* rtGetIntegerv */
+#define RT_BLEND_SRC 0x0BE1 /* rtGetIntegerv */
+#define RT_ZERO 0
+#define RT_ONE 1
+#define RT_SRC_COLOR 0x0300
+#define RT_ONE_MINUS_SRC_COLOR 0x0301
+#define RT_SRC_ALPHA 0x0302
+#define RT_ONE_MINUS_SRC_ALPHA 0x0303
+#define RT_DST_ALPHA 0x0304
+#define RT_ONE_MINUS_DST_ALPHA 0x0305
+#define RT_DST_COLOR 0x0306
+#define RT_ONE_MINUS_DST_COLOR 0x0307
+#define RT_SRC_ALPHA_SATURATE 0x0308
+#define RT_DEPTH_WRITEMASK 0x0B72 /* rtGetIntegerv */
+#define RT_CLIP_PLANE0 0x3000     /* RT_CLIP_PLANE0 + i, i < RT_MAX_CLIP_PLANES */
+#define RT_CLIP_PLANE1 0x3001
+#define RT_CLIP_PLANE2 0x3002
+#define RT_CLIP_PLANE3 0x3003
+#define RT_CLIP_PLANE4 0x3004
+#define RT_CLIP_PLANE5 0x3005
+#define RT_MAX_CLIP_PLANES 0x0D32 /* rtGetIntegerv: 6 */
+
 /* ---- Ray queries ----------------------------------------------------- */
 /* A ray: points org + t*dir for t in [tmin, tmax].  dir need not be
  * normalised; t is measured in units of dir. */
@@ -406,6 +439,18 @@ RTAPI void rtWindowPos3dv(const RTdouble *v);
  * multiple of 4 bytes (GL's default unpack alignment). */
 RTAPI void rtBitmap(RTsizei width, RTsizei height, RTfloat xorig, RTfloat yorig, RTfloat xmove,
                     RTfloat ymove, const RTubyte *bitmap);
+/* ---- Lines and points (docs/lines.md) --------------------------------- */
+RTAPI void rtLineWidth(RTfloat width);
+RTAPI void rtPointSize(RTfloat size);
+RTAPI void rtPolygonMode(RTenum face, RTenum mode);
+
+/* ---- Blending (docs/blending.md) --------------------------------------- */
+RTAPI void rtBlendFunc(RTenum sfactor, RTenum dfactor);
+RTAPI void rtDepthMask(RTboolean flag);
+
+/* ---- Clip planes (docs/clip_planes.md) --------------------------------- */
+RTAPI void rtClipPlane(RTenum plane, const RTdouble *equation);
+RTAPI void rtGetClipPlane(RTenum plane, RTdouble *equation);
 
 /* ---- Ray queries (docs/queries.md) ------------------------------------ */
 RTAPI void rtTraceRays(RTsizei count, const RTray *rays, RThit *hits);

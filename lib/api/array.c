@@ -264,7 +264,7 @@ static int draw_allowed(struct rt_context *ctx, const char *caller, RTenum mode)
                  caller);
         return 0;
     }
-    if (!scene_mode_is_valid(mode)) {
+    if (!scene_mode_is_valid(mode) && !scene_lines_mode_is_valid(mode)) {
         rt_error(ctx, RT_INVALID_ENUM, "%s(mode=0x%x)", caller, mode);
         return 0;
     }
@@ -382,6 +382,25 @@ static void draw_indexed(struct rt_context *ctx, const char *caller, size_t coun
     rt_free(used);
 }
 
+/* A batch that gives lines or points (lines.c): every index in order, as
+ * the rtBegin/rtArrayElement/rtEnd sequence it stands for (vertices are
+ * not shared: lines are not traced). */
+static void draw_lines(struct rt_context *ctx, const char *caller, RTenum index_type,
+                       const void *indices, size_t first, size_t count)
+{
+    for (size_t k = 0; k < count; k++) {
+        double p[3];
+        float normal[3], color[4], texcoord[2];
+        fetch_element(ctx, element_index(index_type, indices, first, k), p, normal, color,
+                      texcoord);
+        if (rt_lines_vertex(ctx, caller, p, color)) {
+            ctx->lines_block = 0;
+            return;
+        }
+    }
+    rt_lines_block_end(ctx, caller);
+}
+
 static void draw(struct rt_context *ctx, const char *caller, RTenum mode, size_t first,
                  size_t count, RTenum index_type, const void *indices)
 {
@@ -405,6 +424,10 @@ static void draw(struct rt_context *ctx, const char *caller, RTenum mode, size_t
                      caller, i);
             return;
         }
+    }
+    if (rt_lines_block_start(ctx, mode)) {
+        draw_lines(ctx, caller, index_type, indices, first, count);
+        return;
     }
     /* Normals from an array count as set normals (see rtNormal3f). */
     if (ctx->normal_array.enabled && count > 0)

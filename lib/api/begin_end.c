@@ -94,11 +94,13 @@ void rtBegin(RTenum mode)
                  "rtBegin(mode=0x%x): primitives are only recorded inside rtNewObject", mode);
         return;
     }
-    if (!scene_mode_is_valid(mode)) {
+    if (!scene_mode_is_valid(mode) && !scene_lines_mode_is_valid(mode)) {
         rt_error(ctx, RT_INVALID_ENUM, "rtBegin(mode=0x%x)", mode);
         return;
     }
-    rt_block_start(ctx, mode);
+    /* Lines, points and polygons drawn as either go to lines.c. */
+    if (!rt_lines_block_start(ctx, mode))
+        rt_block_start(ctx, mode);
     ctx->block.active = 1;
 }
 
@@ -114,6 +116,7 @@ void rtEnd(void)
     /* Vertices of an incomplete last primitive stay unused (GL drops
      * them); they are not referenced by any triangle. */
     ctx->block.active = 0;
+    rt_lines_block_end(ctx, "rtEnd");
 }
 
 static void vertex(const char *caller, double x, double y, double z)
@@ -128,6 +131,10 @@ static void vertex(const char *caller, double x, double y, double z)
     double p[3] = {x, y, z};
     if (!rt_check_finite_d(ctx, caller, p, 3))
         return;
+    if (ctx->lines_block) {
+        rt_lines_vertex(ctx, caller, p, ctx->current_color);
+        return;
+    }
     rt_record_vertex(ctx, caller, p, ctx->current_normal, ctx->current_color,
                      ctx->current_texcoord);
 }

@@ -227,6 +227,11 @@ static void render_state_init(struct render_state *r)
         l->attenuation[0] = 1.0f;
     }
     mat4_identity(r->projection);
+    r->vis.line_width = 1.0f;
+    r->vis.point_size = 1.0f;
+    r->vis.blend_src = RT_ONE;
+    r->vis.blend_dst = RT_ZERO;
+    r->vis.depth_mask = 1;
 }
 
 RTcontext rtCreateContext(const char *configuration)
@@ -281,6 +286,7 @@ RTcontext rtCreateContextWithReason(const char *configuration, RTsizei bufSize, 
     ctx->raster_valid = 1;
     for (int k = 0; k < 4; k++)
         ctx->raster_color[k] = 1.0f;
+    ctx->polygon_mode[0] = ctx->polygon_mode[1] = RT_FILL;
     scene_material_default(&ctx->material);
     ctx->recording.mesh.bounds = aabb_empty();
     scene_init(&ctx->scene, &ctx->build_params, ctx->build_threads, ctx->toplevel_cellsplit);

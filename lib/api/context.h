@@ -80,6 +80,12 @@ struct rt_context {
     uint32_t texture_binding; /* RT_TEXTURE_BINDING_2D; 0: none */
     int texture_2d;           /* rtEnable(RT_TEXTURE_2D) */
 
+    /* Lines and points (lines.c): the polygon mode of front and back
+     * faces, and the open block when it gives lines or points. */
+    RTenum polygon_mode[2];
+    int lines_block;
+    struct scene_line_block line_block;
+
     /* Vertex arrays (array.c). */
     struct client_array vertex_array, normal_array, color_array, texcoord_array;
 
@@ -153,6 +159,18 @@ int rt_assemble_indexed(struct rt_context *ctx, const char *caller, uint32_t k,
                         const uint32_t *map);
 /* Checks that a vertex would transform to finite values without storing. */
 int rt_vertex_is_finite(const struct rt_context *ctx, const double position[3]);
+
+/*
+ * Blocks that give lines or points (lines.c): rt_lines_block_start starts
+ * the block (rt_block_start included) and returns 1 when mode is a line
+ * mode or a polygon mode under rtPolygonMode RT_LINE / RT_POINT, else 0
+ * (the block gives triangles); rt_lines_vertex stores a vertex (0, or -1
+ * after recording the error); rt_lines_block_end closes the block.
+ */
+int rt_lines_block_start(struct rt_context *ctx, RTenum mode);
+int rt_lines_vertex(struct rt_context *ctx, const char *caller, const double position[3],
+                    const float color[4]);
+void rt_lines_block_end(struct rt_context *ctx, const char *caller);
 
 /* 1 when s is RT_AUTOMATIC or an update strategy (object.c). */
 int rt_strategy_is_valid(RTenum s);

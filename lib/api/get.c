@@ -153,6 +153,39 @@ static enum value_kind state_values(const struct rt_context *ctx, RTenum pname, 
             v[i] = ctx->render.global_ambient[i];
         *count = 4;
         return VALUE_FLOAT;
+    case RT_LINE_WIDTH:
+        v[0] = ctx->render.vis.line_width;
+        return VALUE_FLOAT;
+    case RT_POINT_SIZE:
+        v[0] = ctx->render.vis.point_size;
+        return VALUE_FLOAT;
+    case RT_ALIASED_LINE_WIDTH_RANGE:
+        v[0] = 1.0;
+        v[1] = RENDER_MAX_LINE_WIDTH;
+        *count = 2;
+        return VALUE_FLOAT;
+    case RT_ALIASED_POINT_SIZE_RANGE:
+        v[0] = 1.0;
+        v[1] = RENDER_MAX_POINT_SIZE;
+        *count = 2;
+        return VALUE_FLOAT;
+    case RT_POLYGON_MODE:
+        v[0] = ctx->polygon_mode[0];
+        v[1] = ctx->polygon_mode[1];
+        *count = 2;
+        return VALUE_INT;
+    case RT_BLEND_SRC:
+        v[0] = ctx->render.vis.blend_src;
+        return VALUE_INT;
+    case RT_BLEND_DST:
+        v[0] = ctx->render.vis.blend_dst;
+        return VALUE_INT;
+    case RT_DEPTH_WRITEMASK:
+        v[0] = ctx->render.vis.depth_mask;
+        return VALUE_INT;
+    case RT_MAX_CLIP_PLANES:
+        v[0] = RENDER_MAX_CLIP_PLANES;
+        return VALUE_INT;
     case RT_MODELVIEW_MATRIX:
         memcpy(v, ctx->modelview.m[ctx->modelview.depth - 1], 16 * sizeof(double));
         *count = 16;
@@ -228,6 +261,10 @@ static int *capability(struct rt_context *ctx, RTenum cap)
         return &ctx->color_material;
     if (cap == RT_TEXTURE_2D)
         return &ctx->texture_2d;
+    if (cap == RT_BLEND)
+        return &ctx->render.vis.blend;
+    if (cap >= RT_CLIP_PLANE0 && cap < RT_CLIP_PLANE0 + RENDER_MAX_CLIP_PLANES)
+        return &ctx->render.vis.clip_enabled[cap - RT_CLIP_PLANE0];
     return NULL;
 }
 

@@ -11,6 +11,8 @@
 #include "base/atomic.h"
 #include "base/mat4.h"
 #include "base/timer.h"
+#include "render/blend.h"
+#include "render/raster.h"
 #include "render/shade.h"
 
 /* Rays per work item of a query batch. */
@@ -154,6 +156,15 @@ void render_framebuffer_release(struct render_framebuffer *fb)
     memset(fb, 0, sizeof(*fb));
 }
 
+/* 1 when an instance of the committed frame has lines or points. */
+static int frame_has_lines(const struct scene_frame *frame)
+{
+    for (uint32_t i = 0; i < frame->committed.count; i++)
+        if (scene_lines_nonempty(&frame->committed.items[i].object->mesh.lines))
+            return 1;
+    return 0;
+}
+
 int render_pass_begin(struct render_pass *pass, const struct render_job *job, int fb_width,
                       int fb_height)
 {
@@ -167,6 +178,16 @@ int render_pass_begin(struct render_pass *pass, const struct render_job *job, in
     if (shared_init(pass, job)) {
         rt_free(fb);
         return -1;
+    }
+    if (frame_has_lines(job->frame)) {
+        pass->depth = rt_malloc((pixels ? pixels : 1) * sizeof(*pass->depth));
+        if (!pass->depth) {
+            rt_free(fb);
+            rt_free(pass->counters);
+            return -1;
+        }
+        for (size_t i = 0; i < pixels; i++)
+            pass->depth[i] = 1.0;
     }
     pass->fb = fb;
     pass->fb_width = fb_width;
@@ -202,8 +223,27 @@ void render_tile(struct render_pass *pass, uint32_t tile, int worker)
                 memcpy(px, st->clear_color, 4 * sizeof(float));
                 continue;
             }
-            shade_ray(&sc, org, dir, tmax, cone, 0, px);
+            float t_first;
+            blend_trace_primary(&sc, org, dir, tmax, cone, px, &t_first);
+            if (pass->depth)
+                pass->depth[(size_t)(vp[1] + y) * pass->fb_width + vp[0] + x] =
+                    raster_window_depth(st->projection, org, dir, t_first);
         }
+}
+
+void render_pass_raster(struct render_pass *pass)
+{
+    if (!pass->depth || !pass->projectable)
+        return;
+    raster_depth_prepare(pass->depth, pass->fb_width, pass->fb_height);
+    const struct render_state *st = pass->job->state;
+    struct raster_target target = {pass->fb, pass->depth, pass->fb_width, pass->fb_height,
+                                   st->viewport, st->projection, &st->vis};
+    const struct scene_instance_list *list = &pass->job->frame->committed;
+    for (uint32_t i = 0; i < list->count; i++) {
+        const struct scene_instance *inst = &list->items[i];
+        raster_lines(&target, &inst->object->mesh.lines, inst->object_to_world);
+    }
 }
 
 int render_pass_end(struct render_pass *pass, struct render_framebuffer *fb,
@@ -211,6 +251,8 @@ int render_pass_end(struct render_pass *pass, struct render_framebuffer *fb,
 {
     int failed = pass->failed;
     shared_finish(pass, stats);
+    rt_free(pass->depth);
+    pass->depth = NULL;
     if (failed) {
         rt_free(pass->fb);
         return -1;
@@ -246,6 +288,7 @@ int render_frame(const struct render_job *job, int fb_width, int fb_height,
         return -1;
     if (render_pass_tiles(&pass) > 0)
         rt_pool_run(job->pool, frame_task, &pass);
+    render_pass_raster(&pass);
     return render_pass_end(&pass, fb, stats);
 }
 

@@ -19,6 +19,7 @@
 
 #include "trace/bvh_layout.h"
 #include "base/pool.h"
+#include "render/visibility.h"
 #include "scene/frame.h"
 #include "scene/texture.h"
 #include "scene/update.h"
@@ -63,6 +64,8 @@ struct render_state {
     int viewport[4]; /* x, y, width, height */
     double projection[16];
     struct render_framebuffer fb;
+    /* Blending, clip planes, line width and point size (visibility.h). */
+    struct render_visibility vis;
 };
 
 struct render_stats {
@@ -119,6 +122,10 @@ struct render_pass {
     float *fb;           /* the image being rendered, fb_width x fb_height */
     int fb_width, fb_height;
     int tiles_x, tiles_y;
+    /* Window depth of each pixel's primary hit (1 for none), kept only
+     * when the frame has lines or points to rasterise (raster.h); else
+     * NULL. */
+    double *depth;
     /* Queries. */
     int count;
     const RTray *rays;
@@ -136,6 +143,9 @@ uint32_t render_pass_tiles(const struct render_pass *pass);
 /* Renders tile `tile` into the pass's image on behalf of worker `worker`
  * (0 .. threads - 1, the index of its counters). */
 void render_tile(struct render_pass *pass, uint32_t tile, int worker);
+/* After every tile: rasterises the lines and points of the committed
+ * instances over the image (raster.h), on the calling thread. */
+void render_pass_raster(struct render_pass *pass);
 /* Adds the pass's work to stats and, if every object could be built,
  * hands the new image to fb (freeing the old); returns 0, or -1 (fb
  * unchanged) when one could not. */

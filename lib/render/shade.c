@@ -123,12 +123,20 @@ static int refract_dir(const float d[3], const float n[3], float eta, float t[3]
 void shade_ray(const struct shade_context *sc, const float org[3], const float dir[3],
                float tmax, struct shade_cone cone, int depth, float rgba[4])
 {
-    const struct render_state *st = sc->state;
     struct trace_scene_hit hit;
     if (!trace_scene_closest(sc->scene, org, dir, 0.0f, tmax, &hit, sc->counters)) {
-        memcpy(rgba, st->clear_color, 4 * sizeof(float));
+        memcpy(rgba, sc->state->clear_color, 4 * sizeof(float));
         return;
     }
+    shade_hit(sc, dir, &hit, cone, depth, rgba);
+}
+
+void shade_hit(const struct shade_context *sc, const float dir[3],
+               const struct trace_scene_hit *found, struct shade_cone cone, int depth,
+               float rgba[4])
+{
+    const struct render_state *st = sc->state;
+    const struct trace_scene_hit hit = *found;
     /* The cone at the hit: t counts in units of dir, which need not be
      * unit length.  Reflected and refracted rays start with this width and
      * the same spread: the paper's curvature term (sec. 20.3.4), which

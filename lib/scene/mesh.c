@@ -35,6 +35,7 @@ void scene_mesh_release(struct scene_mesh *mesh)
     rt_free(mesh->tri_material);
     rt_free(mesh->tri_flags);
     rt_free(mesh->materials);
+    scene_lines_release(&mesh->lines);
     memset(mesh, 0, sizeof(*mesh));
     mesh->bounds = aabb_empty();
 }

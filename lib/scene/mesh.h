@@ -18,6 +18,7 @@
 #include <stdint.h>
 
 #include "base/aabb.h"
+#include "scene/lines.h"
 
 /* Material as set by rtMaterialfv; colours RGBA. */
 struct scene_material {
@@ -59,6 +60,10 @@ struct scene_mesh {
 
     int has_normals; /* some vertex was given an explicit normal */
     struct aabb bounds;
+
+    /* Lines and points (RT_LINES ..., rtPolygonMode): rasterised, not
+     * traced; in object space like the triangles (lines.h). */
+    struct scene_lines lines;
 };
 
 /* Defaults of OpenGL's material state. */

@@ -1,0 +1,280 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * blend_clip.c - conformance: RT_BLEND with rtBlendFunc (see-through
+ * surfaces composited as GL composites a back-to-front program),
+ * rtDepthMask, and the user clip planes rtClipPlane / rtGetClipPlane
+ * (the plane transformed by the modelview at the call; primary rays
+ * continue past a clipped hit; lines clipped too; ray queries
+ * unchanged).  State queries and errors.
+ *
+ * Camera: rtOrtho(0, N, 0, N, -1, 1) on N x N pixels, eye looking down
+ * -z; surfaces are emissive (the eye light then shows the emission
+ * exactly) with the alpha in the diffuse material.
+ *
+ * Reference: docs/blending.md, docs/clip_planes.md.
+ */
+#include "testutil.h"
+
+#include <math.h>
+#include <string.h>
+
+#define N 16
+#define BACK 800u
+#define FRONT 801u
+#define LINES 802u
+
+static float img[4 * N * N];
+
+static void window_camera(void)
+{
+    rtMatrixMode(RT_PROJECTION);
+    rtLoadIdentity();
+    rtOrtho(0.0, N, 0.0, N, -1.0, 1.0);
+    rtMatrixMode(RT_MODELVIEW);
+    rtLoadIdentity();
+}
+
+static const float *px(int x, int y)
+{
+    return &img[4 * (y * N + x)];
+}
+
+/* A square over x in [x0, x1] (all of y) at depth z, emissive colour c
+ * with alpha a. */
+static void square(RTuint name, float x0, float x1, float z, const float c[3], float a)
+{
+    const float black[4] = {0.0f, 0.0f, 0.0f, 1.0f}, diffuse[4] = {0.0f, 0.0f, 0.0f, a};
+    const float emission[4] = {c[0], c[1], c[2], 1.0f};
+    rtNewObject(name);
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_AMBIENT, black);
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_DIFFUSE, diffuse);
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_EMISSION, emission);
+    rtBegin(RT_QUADS);
+    rtVertex3f(x0, 0.0f, z);
+    rtVertex3f(x1, 0.0f, z);
+    rtVertex3f(x1, (float)N, z);
+    rtVertex3f(x0, (float)N, z);
+    rtEnd();
+    rtEndObject();
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_EMISSION, black);
+}
+
+static void render_both(void)
+{
+    rtClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    rtBeginFrame();
+    rtInstantiateObject(BACK);
+    rtInstantiateObject(FRONT);
+    tu_render_float(N, N, img);
+}
+
+static int near3(const float *p, double r, double g, double b)
+{
+    return fabs(p[0] - r) < 1e-5 && fabs(p[1] - g) < 1e-5 && fabs(p[2] - b) < 1e-5;
+}
+
+static void blending(void)
+{
+    static const float red[3] = {0.9f, 0.2f, 0.1f}, green[3] = {0.1f, 0.8f, 0.3f};
+    tu_section("RT_BLEND: two quads, back to front");
+    window_camera();
+    square(BACK, 0.0f, 10.0f, -0.5f, red, 1.0f);
+    square(FRONT, 6.0f, 16.0f, 0.5f, green, 0.25f);
+    render_both();
+    /* Blending off: the nearest surface, whatever its alpha. */
+    CHECK(near3(px(8, 8), 0.1, 0.8, 0.3));
+    CHECK(px(8, 8)[3] == 1.0f);
+    rtEnable(RT_BLEND);
+    rtBlendFunc(RT_SRC_ALPHA, RT_ONE_MINUS_SRC_ALPHA);
+    render_both();
+    /* GL: the red quad drawn first, then the green one over it. */
+    CHECK(near3(px(8, 8), 0.25 * 0.1 + 0.75 * 0.9, 0.25 * 0.8 + 0.75 * 0.2,
+                0.25 * 0.3 + 0.75 * 0.1));
+    CHECK_NEAR(px(8, 8)[3], 0.25 * 0.25 + 0.75 * 1.0, 1e-6);
+    CHECK(near3(px(3, 8), 0.9, 0.2, 0.1));       /* red alone */
+    CHECK(near3(px(13, 8), 0.025, 0.2, 0.075));  /* green over the black clear colour */
+    /* The order of instances does not matter: depth order does. */
+    rtBeginFrame();
+    rtInstantiateObject(FRONT);
+    rtInstantiateObject(BACK);
+    rtClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    float again[4 * N * N];
+    tu_render_float(N, N, again);
+    CHECK(memcmp(again, img, sizeof(again)) == 0);
+    /* Additive. */
+    rtBlendFunc(RT_ONE, RT_ONE);
+    render_both();
+    CHECK(near3(px(8, 8), 1.0, 1.0, 0.4));
+    /* A destination factor: DST_COLOR, ZERO multiplies, down to the
+     * clear colour (white here, so the red quad stays red). */
+    rtBlendFunc(RT_DST_COLOR, RT_ZERO);
+    rtBeginFrame();
+    rtInstantiateObject(BACK);
+    rtInstantiateObject(FRONT);
+    rtClearColor(1.0f, 1.0f, 1.0f, 1.0f);
+    tu_render_float(N, N, img);
+    CHECK(near3(px(8, 8), 0.09, 0.16, 0.03));
+    CHECK(near3(px(3, 8), 0.9, 0.2, 0.1));
+    /* An opaque front surface hides what is behind. */
+    square(FRONT, 6.0f, 16.0f, 0.5f, green, 1.0f);
+    rtBlendFunc(RT_SRC_ALPHA, RT_ONE_MINUS_SRC_ALPHA);
+    render_both();
+    CHECK(near3(px(8, 8), 0.1, 0.8, 0.3));
+    rtDisable(RT_BLEND);
+    rtBlendFunc(RT_ONE, RT_ZERO);
+    CHECK_NO_ERR();
+}
+
+static void clip_planes(void)
+{
+    static const float red[3] = {1.0f, 0.0f, 0.0f}, blue[3] = {0.0f, 0.0f, 1.0f};
+    tu_section("rtClipPlane: eye space, primary rays continue, lines clipped");
+    window_camera();
+    square(BACK, 0.0f, 16.0f, -0.5f, red, 1.0f);
+    square(FRONT, 0.0f, 16.0f, 0.5f, blue, 1.0f);
+    /* Keep x >= 8 of the front quad's space; given under a translation
+     * by (4, 0, 0) the plane is x >= 12 in eye space. */
+    static const double plane[4] = {1.0, 0.0, 0.0, -8.0};
+    rtPushMatrix();
+    rtTranslatef(4.0f, 0.0f, 0.0f);
+    rtClipPlane(RT_CLIP_PLANE3, plane);
+    rtPopMatrix();
+    double eq[4];
+    rtGetClipPlane(RT_CLIP_PLANE3, eq);
+    CHECK(eq[0] == 1.0 && eq[1] == 0.0 && eq[2] == 0.0 && eq[3] == -12.0);
+    render_both();
+    CHECK(near3(px(5, 5), 0.0, 0.0, 1.0)); /* not enabled yet */
+    rtEnable(RT_CLIP_PLANE3);
+    CHECK(rtIsEnabled(RT_CLIP_PLANE3) == RT_TRUE);
+    render_both();
+    /* Both quads are cut at x = 12: nothing left of it. */
+    CHECK(near3(px(5, 5), 0.0, 0.0, 0.0) && px(5, 5)[3] == 0.0f);
+    CHECK(near3(px(11, 5), 0.0, 0.0, 0.0));
+    CHECK(near3(px(12, 5), 0.0, 0.0, 1.0));
+    /* A plane in z removes the front quad only: the ray goes on to the
+     * red one behind it. */
+    rtDisable(RT_CLIP_PLANE3);
+    static const double below[4] = {0.0, 0.0, -1.0, 0.0}; /* keep z <= 0 */
+    rtClipPlane(RT_CLIP_PLANE0, below);
+    rtEnable(RT_CLIP_PLANE0);
+    render_both();
+    CHECK(near3(px(5, 5), 1.0, 0.0, 0.0) && near3(px(14, 14), 1.0, 0.0, 0.0));
+    /* Ray queries are not clipped. */
+    RTray ray = {{5.5f, 5.5f, 1.0f}, 0.0f, {0.0f, 0.0f, -1.0f}, INFINITY};
+    RThit hit;
+    rtTraceRays(1, &ray, &hit);
+    CHECK(hit.object == FRONT && hit.t == 0.5f);
+    /* Lines: a segment crossing z = 0 is cut there. */
+    rtNewObject(LINES);
+    rtColor3f(0.0f, 1.0f, 0.0f);
+    rtBegin(RT_LINES);
+    rtVertex3f(0.5f, 12.5f, -0.9f);
+    rtVertex3f(15.5f, 12.5f, 0.9f);
+    rtEnd();
+    rtPointSize(3.0f);
+    rtBegin(RT_POINTS);
+    rtVertex3f(3.5f, 3.5f, -0.1f); /* kept */
+    rtVertex3f(10.5f, 3.5f, 0.8f); /* clipped */
+    rtEnd();
+    rtEndObject();
+    rtPointSize(1.0f);
+    rtDisable(RT_CLIP_PLANE0);
+    square(BACK, 0.0f, 0.0f, -0.5f, red, 1.0f); /* empty: nothing behind */
+    rtBeginFrame();
+    rtInstantiateObject(LINES);
+    rtClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    tu_render_float(N, N, img);
+    CHECK(px(3, 12)[1] == 1.0f && px(12, 12)[1] == 1.0f && px(10, 3)[1] == 1.0f);
+    rtEnable(RT_CLIP_PLANE0);
+    rtBeginFrame();
+    rtInstantiateObject(LINES);
+    tu_render_float(N, N, img);
+    CHECK(px(3, 12)[1] == 1.0f && px(12, 12)[1] == 0.0f);
+    CHECK(px(3, 3)[1] == 1.0f && px(10, 3)[1] == 0.0f);
+    rtDisable(RT_CLIP_PLANE0);
+    CHECK_NO_ERR();
+}
+
+static void state_and_errors(void)
+{
+    tu_section("state queries and errors");
+    RTint v = -1;
+    CHECK(rtIsEnabled(RT_BLEND) == RT_FALSE);
+    rtEnable(RT_BLEND);
+    CHECK(rtIsEnabled(RT_BLEND) == RT_TRUE);
+    rtDisable(RT_BLEND);
+    rtGetIntegerv(RT_BLEND_SRC, &v);
+    CHECK_INT(v, RT_ONE);
+    rtGetIntegerv(RT_BLEND_DST, &v);
+    CHECK_INT(v, RT_ZERO);
+    rtBlendFunc(RT_SRC_ALPHA_SATURATE, RT_ONE_MINUS_DST_ALPHA);
+    rtGetIntegerv(RT_BLEND_SRC, &v);
+    CHECK_INT(v, RT_SRC_ALPHA_SATURATE);
+    rtGetIntegerv(RT_BLEND_DST, &v);
+    CHECK_INT(v, RT_ONE_MINUS_DST_ALPHA);
+    rtGetIntegerv(RT_DEPTH_WRITEMASK, &v);
+    CHECK_INT(v, RT_TRUE);
+    rtDepthMask(RT_FALSE);
+    rtGetIntegerv(RT_DEPTH_WRITEMASK, &v);
+    CHECK_INT(v, RT_FALSE);
+    rtDepthMask(RT_TRUE);
+    rtGetIntegerv(RT_MAX_CLIP_PLANES, &v);
+    CHECK_INT(v, 6);
+    for (int i = 0; i < 6; i++) {
+        double eq[4] = {1, 1, 1, 1};
+        CHECK(rtIsEnabled(RT_CLIP_PLANE0 + (RTenum)i) == RT_FALSE);
+        rtGetClipPlane(RT_CLIP_PLANE0 + (RTenum)i, eq);
+        (void)eq;
+    }
+    double eq[4] = {9, 9, 9, 9};
+    rtGetClipPlane(RT_CLIP_PLANE5, eq);
+    CHECK(eq[0] == 0.0 && eq[1] == 0.0 && eq[2] == 0.0 && eq[3] == 0.0);
+    CHECK_NO_ERR();
+
+    rtBlendFunc(0x1234, RT_ONE);
+    CHECK_ERR(RT_INVALID_ENUM);
+    rtBlendFunc(RT_ONE, RT_SRC_ALPHA_SATURATE);
+    CHECK_ERR(RT_INVALID_ENUM);
+    rtGetIntegerv(RT_BLEND_SRC, &v);
+    CHECK_INT(v, RT_SRC_ALPHA_SATURATE); /* unchanged */
+    rtClipPlane(RT_CLIP_PLANE0 + 6, eq);
+    CHECK_ERR(RT_INVALID_ENUM);
+    rtClipPlane(RT_CLIP_PLANE0, NULL);
+    CHECK_ERR(RT_INVALID_VALUE);
+    double bad[4] = {1.0, tu_nan_d(), 0.0, 0.0};
+    rtClipPlane(RT_CLIP_PLANE0, bad);
+    CHECK_ERR(RT_INVALID_VALUE);
+    rtGetClipPlane(0x2FFF, eq);
+    CHECK_ERR(RT_INVALID_ENUM);
+    rtGetClipPlane(RT_CLIP_PLANE1, NULL);
+    CHECK_ERR(RT_INVALID_VALUE);
+    rtEnable(RT_CLIP_PLANE0 + 6);
+    CHECK_ERR(RT_INVALID_ENUM);
+    rtIsEnabled(RT_CLIP_PLANE0 + 6);
+    CHECK_ERR(RT_INVALID_ENUM);
+    rtNewObject(LINES);
+    rtBegin(RT_TRIANGLES);
+    rtBlendFunc(RT_ONE, RT_ONE);
+    CHECK_ERR(RT_INVALID_OPERATION);
+    rtDepthMask(RT_FALSE);
+    CHECK_ERR(RT_INVALID_OPERATION);
+    rtClipPlane(RT_CLIP_PLANE0, eq);
+    CHECK_ERR(RT_INVALID_OPERATION);
+    rtGetClipPlane(RT_CLIP_PLANE0, eq);
+    CHECK_ERR(RT_INVALID_OPERATION);
+    rtEnd();
+    rtEndObject();
+    rtGetIntegerv(RT_DEPTH_WRITEMASK, &v);
+    CHECK_INT(v, RT_TRUE);
+    CHECK_NO_ERR();
+}
+
+int main(void)
+{
+    RTcontext ctx = tu_make_context("threads=2");
+    blending();
+    clip_planes();
+    state_and_errors();
+    tu_destroy_context(ctx);
+    return test_summary("blend_clip");
+}

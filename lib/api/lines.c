@@ -1,0 +1,230 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * lines.c - lines, points and the visibility state: rtLineWidth,
+ * rtPointSize, rtPolygonMode, rtBlendFunc, rtDepthMask, rtClipPlane,
+ * rtGetClipPlane, and the recording of blocks that give lines or points
+ * (RT_LINES ..., polygons under rtPolygonMode RT_LINE / RT_POINT) into
+ * scene/lines.h's storage.  Validation follows Mesa (lines.c, points.c,
+ * polygon.c, blend.c, depth.c, clip.c).
+ */
+#include <math.h>
+#include <string.h>
+
+#include "api/context.h"
+#include "base/mat4.h"
+
+/* Where the current block's lines go: the definition being recorded. */
+static struct scene_lines *lines_target(struct rt_context *ctx)
+{
+    return &ctx->recording.mesh.lines;
+}
+
+/* The mode polygons are drawn in: one mode for both faces (the front
+ * face's when they differ; docs/lines.md). */
+static RTenum polygon_mode(const struct rt_context *ctx)
+{
+    return ctx->polygon_mode[0];
+}
+
+int rt_lines_block_start(struct rt_context *ctx, RTenum mode)
+{
+    int line_mode = scene_lines_mode_is_valid(mode);
+    RTenum pmode = polygon_mode(ctx);
+    if (!line_mode && pmode == RT_FILL) {
+        ctx->lines_block = 0;
+        return 0;
+    }
+    rt_block_start(ctx, mode);
+    struct scene_lines *lines = lines_target(ctx);
+    scene_line_block_start(&ctx->line_block, lines, mode, line_mode ? 0u : pmode, lines->width,
+                           lines->size, ctx->shade_model == RT_FLAT ? SCENE_LINE_FLAT : 0u);
+    ctx->lines_block = 1;
+    return 1;
+}
+
+int rt_lines_vertex(struct rt_context *ctx, const char *caller, const double position[3],
+                    const float color[4])
+{
+    double p[3];
+    mat4_transform_point(ctx->block.position_matrix, position, p);
+    float pf[3] = {(float)p[0], (float)p[1], (float)p[2]};
+    if (!isfinite(pf[0]) || !isfinite(pf[1]) || !isfinite(pf[2])) {
+        rt_error(ctx, RT_INVALID_VALUE,
+                 "%s: vertex (%g, %g, %g) is not finite under the modelview matrix", caller,
+                 position[0], position[1], position[2]);
+        return -1;
+    }
+    if (scene_lines_vertex(lines_target(ctx), &ctx->line_block, pf, color)) {
+        ctx->recording.out_of_memory = 1;
+        rt_error(ctx, RT_OUT_OF_MEMORY, "%s: out of memory recording object %u", caller,
+                 ctx->recording.name);
+        return -1;
+    }
+    return 0;
+}
+
+void rt_lines_block_end(struct rt_context *ctx, const char *caller)
+{
+    if (!ctx->lines_block)
+        return;
+    ctx->lines_block = 0;
+    if (scene_lines_end(lines_target(ctx), &ctx->line_block)) {
+        ctx->recording.out_of_memory = 1;
+        rt_error(ctx, RT_OUT_OF_MEMORY, "%s: out of memory recording object %u", caller,
+                 ctx->recording.name);
+    }
+}
+
+/* rtLineWidth and rtPointSize: outside an object they set the current
+ * value; inside one they are recorded for the object's later primitives
+ * (a display list compiled with GL_COMPILE records glLineWidth without
+ * executing it). */
+static void set_size(const char *caller, float value, int is_width)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_begin(ctx, caller))
+        return;
+    if (!(value > 0.0f) || !isfinite(value)) {
+        rt_error(ctx, RT_INVALID_VALUE, "%s(%g): not positive", caller, (double)value);
+        return;
+    }
+    if (ctx->recording.active) {
+        struct scene_lines *lines = lines_target(ctx);
+        if (is_width)
+            lines->width = value;
+        else
+            lines->size = value;
+        return;
+    }
+    if (is_width)
+        ctx->render.vis.line_width = value;
+    else
+        ctx->render.vis.point_size = value;
+}
+
+void rtLineWidth(RTfloat width)
+{
+    set_size("rtLineWidth", width, 1);
+}
+
+void rtPointSize(RTfloat size)
+{
+    set_size("rtPointSize", size, 0);
+}
+
+void rtPolygonMode(RTenum face, RTenum mode)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_begin(ctx, "rtPolygonMode"))
+        return;
+    if (mode != RT_POINT && mode != RT_LINE && mode != RT_FILL) {
+        rt_error(ctx, RT_INVALID_ENUM, "rtPolygonMode(mode=0x%x)", mode);
+        return;
+    }
+    if (face != RT_FRONT && face != RT_BACK && face != RT_FRONT_AND_BACK) {
+        rt_error(ctx, RT_INVALID_ENUM, "rtPolygonMode(face=0x%x)", face);
+        return;
+    }
+    if (face != RT_BACK)
+        ctx->polygon_mode[0] = mode;
+    if (face != RT_FRONT)
+        ctx->polygon_mode[1] = mode;
+}
+
+static int blend_factor_is_valid(RTenum f, int is_source)
+{
+    switch (f) {
+    case RT_ZERO:
+    case RT_ONE:
+    case RT_SRC_COLOR:
+    case RT_ONE_MINUS_SRC_COLOR:
+    case RT_DST_COLOR:
+    case RT_ONE_MINUS_DST_COLOR:
+    case RT_SRC_ALPHA:
+    case RT_ONE_MINUS_SRC_ALPHA:
+    case RT_DST_ALPHA:
+    case RT_ONE_MINUS_DST_ALPHA:
+        return 1;
+    case RT_SRC_ALPHA_SATURATE:
+        return is_source; /* a destination factor only with dual-source blending */
+    default:
+        return 0;
+    }
+}
+
+void rtBlendFunc(RTenum sfactor, RTenum dfactor)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_begin(ctx, "rtBlendFunc"))
+        return;
+    if (!blend_factor_is_valid(sfactor, 1) || !blend_factor_is_valid(dfactor, 0)) {
+        rt_error(ctx, RT_INVALID_ENUM, "rtBlendFunc(sfactor=0x%x, dfactor=0x%x)", sfactor,
+                 dfactor);
+        return;
+    }
+    ctx->render.vis.blend_src = sfactor;
+    ctx->render.vis.blend_dst = dfactor;
+}
+
+void rtDepthMask(RTboolean flag)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_begin(ctx, "rtDepthMask"))
+        return;
+    ctx->render.vis.depth_mask = flag != RT_FALSE;
+}
+
+/* The plane index of RT_CLIP_PLANEi, or -1 (recording RT_INVALID_ENUM). */
+static int clip_plane_index(struct rt_context *ctx, const char *caller, RTenum plane)
+{
+    if (plane < RT_CLIP_PLANE0 || plane >= RT_CLIP_PLANE0 + RENDER_MAX_CLIP_PLANES) {
+        rt_error(ctx, RT_INVALID_ENUM, "%s(plane=0x%x)", caller, plane);
+        return -1;
+    }
+    return (int)(plane - RT_CLIP_PLANE0);
+}
+
+void rtClipPlane(RTenum plane, const RTdouble *equation)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_begin(ctx, "rtClipPlane"))
+        return;
+    int i = clip_plane_index(ctx, "rtClipPlane", plane);
+    if (i < 0)
+        return;
+    if (!equation) {
+        rt_error(ctx, RT_INVALID_VALUE, "rtClipPlane(equation=NULL)");
+        return;
+    }
+    if (!rt_check_finite_d(ctx, "rtClipPlane", equation, 4))
+        return;
+    /* Into eye space as GL (OpenGL 2.1 sec. 2.12): the row vector times
+     * the inverse of the modelview at the call; a singular modelview
+     * counts as the identity, as Mesa's matrix inverse falls back to. */
+    double inv[16], e[4];
+    if (!mat4_invert(inv, ctx->modelview.m[ctx->modelview.depth - 1]))
+        mat4_identity(inv);
+    for (int j = 0; j < 4; j++)
+        e[j] = equation[0] * inv[4 * j] + equation[1] * inv[4 * j + 1] +
+               equation[2] * inv[4 * j + 2] + equation[3] * inv[4 * j + 3];
+    if (!isfinite(e[0]) || !isfinite(e[1]) || !isfinite(e[2]) || !isfinite(e[3])) {
+        rt_error(ctx, RT_INVALID_VALUE, "rtClipPlane: the equation is not finite in eye space");
+        return;
+    }
+    memcpy(ctx->render.vis.clip_plane[i], e, sizeof(e));
+}
+
+void rtGetClipPlane(RTenum plane, RTdouble *equation)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_begin(ctx, "rtGetClipPlane"))
+        return;
+    int i = clip_plane_index(ctx, "rtGetClipPlane", plane);
+    if (i < 0)
+        return;
+    if (!equation) {
+        rt_error(ctx, RT_INVALID_VALUE, "rtGetClipPlane(equation=NULL)");
+        return;
+    }
+    memcpy(equation, ctx->render.vis.clip_plane[i], 4 * sizeof(double));
+}

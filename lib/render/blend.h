@@ -1,0 +1,41 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * blend.h - the primary-ray path: user clip planes and blending
+ * (non-refractive see-through surfaces, GL's RT_BLEND).
+ *
+ * A primary ray takes the nearest hit that no enabled clip plane removes;
+ * with RT_BLEND enabled it continues past a surface whose blend needs
+ * what lies behind it (a source alpha below 1 under
+ * RT_SRC_ALPHA / RT_ONE_MINUS_SRC_ALPHA), and the layers it found are
+ * composited from the back (the clear colour) to the front with
+ * rtBlendFunc's factors, as GL composites a program that draws back to
+ * front.  docs/blending.md says where that agrees with GL's draw order.
+ */
+#ifndef RT_RENDER_BLEND_H
+#define RT_RENDER_BLEND_H
+
+#include "render/shade.h"
+
+/* Layers a primary ray composites at most; the deepest one found is
+ * composited over the clear colour as if it were the last. */
+#define BLEND_MAX_LAYERS 32
+
+/* out = src * F_src + dst * F_dst per channel with GL's factors (OpenGL
+ * 1.1 sec. 4.1.6, table 4.1 and 4.2), src and dst clamped to [0, 1]
+ * first and the result clamped, as in a fixed-point framebuffer. */
+void blend_combine(unsigned src_factor, unsigned dst_factor, const float src[4],
+                   const float dst[4], float out[4]);
+
+/* 1 when blend_combine's result for this source depends on dst. */
+int blend_needs_destination(unsigned src_factor, unsigned dst_factor, const float src[4]);
+
+/*
+ * The colour of primary ray (org, dir, tmax) with the pass's clip planes
+ * and blend state; *t_first is the distance of the nearest kept hit
+ * (+infinity when none), the surface that decides depth for rasterised
+ * lines.  Without blending and clip planes this is exactly shade_ray.
+ */
+void blend_trace_primary(const struct shade_context *sc, const float org[3], const float dir[3],
+                         float tmax, struct shade_cone cone, float rgba[4], float *t_first);
+
+#endif

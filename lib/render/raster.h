@@ -1,0 +1,82 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * raster.h - lines and points rasterised over the ray-traced image, with
+ * GL's rules for non-antialiased primitives (OpenGL 2.1 sec. 3.3 and
+ * 3.4): width-1 segments by the diamond-exit rule, wide segments as
+ * columns (x-major) or rows (y-major) of `width` fragments, points as a
+ * square of `size` fragments centred on the projected point.
+ *
+ * Primitives are projected by their owner's object-to-eye matrix and the
+ * projection, clipped (in homogeneous coordinates) by the view volume and
+ * the enabled user clip planes, and depth-tested with GL's default
+ * RT_LESS against a depth buffer that starts as the window depth of each
+ * pixel's primary hit (1 where the primary ray hit nothing), plus the
+ * tolerance raster_depth_prepare documents; fragments that pass write
+ * their depth (unless rtDepthMask(RT_FALSE)), so lines also hide each
+ * other as GL's do.  Colours are the vertices' (GL with lighting
+ * disabled); blending applies as to any GL fragment.
+ */
+#ifndef RT_RENDER_RASTER_H
+#define RT_RENDER_RASTER_H
+
+#include <stddef.h>
+
+#include "render/visibility.h"
+#include "scene/lines.h"
+
+/* Depth tolerance of lines against surfaces: one step of a 24-bit depth
+ * buffer. */
+#define RASTER_DEPTH_EPSILON (1.0 / 16777216.0)
+
+struct raster_target {
+    float *rgba;   /* width x height RGBA, row 0 at the bottom */
+    double *depth; /* width x height window depths, the test (LESS) and write buffer */
+    int width, height;
+    const int *viewport;      /* x, y, width, height */
+    const double *projection; /* column-major */
+    const struct render_visibility *vis;
+};
+
+/* The window depth (GL's depth range [0, 1]) of the eye-space point
+ * org + t dir under the projection; 1 when t is not finite. */
+double raster_window_depth(const double projection[16], const float org[3], const float dir[3],
+                           float t);
+
+/*
+ * Turns the primary hits' window depths (1 where none) into the buffer
+ * lines are tested against, in place: a pixel showing a surface gets its
+ * depth plus RASTER_DEPTH_EPSILON, one step of a 24-bit depth buffer, so
+ * a fragment within the buffer's resolution of the surface is in front.
+ * No slope term: a line lying on a surface (a wireframe over its own
+ * filled polygons) samples its depth up to half a pixel away from where
+ * the surface is sampled and shows where it comes out nearer, the
+ * stitched look GL's RT_LESS gives it (docs/lines.md: 99.67% of the
+ * pixels as OSMesa's).
+ */
+void raster_depth_prepare(double *depth, int width, int height);
+
+/* Rasterises the segments and points of `lines`, whose vertices are
+ * mapped to eye space by object_to_eye. */
+void raster_lines(const struct raster_target *target, const struct scene_lines *lines,
+                  const double object_to_eye[16]);
+
+/* ---- shared by raster_lines.c and raster_points.c ---------------------- */
+
+/* One fragment at window pixel (x, y): depth test, blend, write. */
+void raster_fragment(const struct raster_target *target, long x, long y, double z,
+                     const float color[4]);
+
+/* Clip coordinates -> window x, y, z. */
+void raster_to_window(const struct raster_target *target, const double clip[4], double win[3]);
+
+/* Vertex v of lines in eye and clip coordinates. */
+void raster_vertex(const struct raster_target *target, const struct scene_lines *lines,
+                   uint32_t v, const double object_to_eye[16], double eye[3], double clip[4]);
+
+void raster_points(const struct raster_target *target, const struct scene_lines *lines,
+                   const double object_to_eye[16]);
+
+/* Width or size in whole pixels: rounded, at least 1, at most max. */
+long raster_pixels(float value, float current, float max);
+
+#endif

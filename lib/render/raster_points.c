@@ -1,0 +1,39 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * raster_points.c - points over the ray-traced image (raster.h): GL's
+ * non-antialiased points (OpenGL 2.1 sec. 3.3.1), a square of size x size
+ * fragments centred on the projected point.
+ */
+#include "render/raster.h"
+
+#include <math.h>
+
+void raster_points(const struct raster_target *target, const struct scene_lines *lines,
+                   const double object_to_eye[16])
+{
+    const struct render_visibility *vis = target->vis;
+    for (uint32_t i = 0; i < lines->point_count; i++) {
+        const struct scene_line_point *pt = &lines->points[i];
+        double eye[3], clip[4];
+        raster_vertex(target, lines, pt->v, object_to_eye, eye, clip);
+        /* A point outside the view volume or a clip plane is discarded
+         * whole (GL clips points by their vertex). */
+        const double w = clip[3];
+        if (!(w > 0.0) || !(fabs(clip[0]) <= w) || !(fabs(clip[1]) <= w) ||
+            !(fabs(clip[2]) <= w) || visibility_clipped(vis, eye))
+            continue;
+        double win[3];
+        raster_to_window(target, clip, win);
+        long size = raster_pixels(pt->size, vis->point_size, RENDER_MAX_POINT_SIZE);
+        /* Odd sizes centre on the pixel holding the point, even ones on the
+         * pixel corner nearest to it. */
+        long x0 = size % 2 ? (long)floor(win[0]) - (size - 1) / 2
+                           : (long)floor(win[0] + 0.5) - size / 2;
+        long y0 = size % 2 ? (long)floor(win[1]) - (size - 1) / 2
+                           : (long)floor(win[1] + 0.5) - size / 2;
+        const float *color = &lines->colors[4 * pt->v];
+        for (long y = y0; y < y0 + size; y++)
+            for (long x = x0; x < x0 + size; x++)
+                raster_fragment(target, x, y, win[2], color);
+    }
+}
