@@ -153,7 +153,7 @@ static void init(void)
 
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
-    gluPerspective(40.0, (GLdouble)WIDTH / HEIGHT, 1.0, 30.0);
+    gluPerspective(32.0, (GLdouble)WIDTH / HEIGHT, 1.0, 30.0);
     glMatrixMode(GL_MODELVIEW);
     glLoadIdentity();
     gluLookAt(3.5, 4.0, 8.5, -0.3, 1.9, 0.0, 0.0, 1.0, 0.0);

@@ -61,6 +61,21 @@ typedef RTdouble GLdouble;
 typedef RTdouble GLclampd;
 typedef void GLvoid;
 
+/* The calling-convention macros programs put in callback casts
+ * ((void (APIENTRY *)(void)) ...): empty, as on every non-Windows GL. */
+#ifndef APIENTRY
+#define APIENTRY
+#endif
+#ifndef APIENTRYP
+#define APIENTRYP APIENTRY *
+#endif
+#ifndef GLAPIENTRY
+#define GLAPIENTRY APIENTRY
+#endif
+#ifndef GLAPIENTRYP
+#define GLAPIENTRYP GLAPIENTRY *
+#endif
+
 /* ---- How an unsupported name fails -------------------------------------- */
 #define RTGLC_PRAGMA(x) _Pragma(#x)
 #if defined(__GNUC__) || defined(__clang__)
