@@ -59,6 +59,10 @@ static void init(void)
     glLighti(GL_LIGHT0, GL_CONSTANT_ATTENUATION, 1);
     glLightModeliv(GL_LIGHT_MODEL_AMBIENT, ambient);
     glEnable(GL_LIGHT0);
+    glLightfv(GL_LIGHT1, GL_POSITION, pos); /* GL_LIGHT1 is RT_LIGHT0 + 1 */
+    glEnable(GL_LIGHT1);
+    check(glIsEnabled(GL_LIGHT1) == GL_TRUE, "glIsEnabled(GL_LIGHT1)");
+    glDisable(GL_LIGHT1);
     glEnable(GL_COLOR_MATERIAL);
     check(glIsEnabled(GL_COLOR_MATERIAL) == GL_TRUE, "glIsEnabled(GL_COLOR_MATERIAL)");
     check_no_error("init");

@@ -1310,13 +1310,41 @@ static inline void rtglc_PrioritizeTextures(GLsizei n, const GLuint *textures, c
 #define GL_COMPILE RT_COMPILE
 #define GL_COMPILE_AND_EXECUTE RT_COMPILE_AND_EXECUTE
 #define GL_LIGHTING RT_LIGHTING
+#ifdef RT_LIGHT1
 #define GL_LIGHT1 RT_LIGHT1
+#else
+#define GL_LIGHT1 (RT_LIGHT0 + 1) /* rt.h: RT_LIGHT0 + i */
+#endif
+#ifdef RT_LIGHT2
 #define GL_LIGHT2 RT_LIGHT2
+#else
+#define GL_LIGHT2 (RT_LIGHT0 + 2) /* rt.h: RT_LIGHT0 + i */
+#endif
+#ifdef RT_LIGHT3
 #define GL_LIGHT3 RT_LIGHT3
+#else
+#define GL_LIGHT3 (RT_LIGHT0 + 3) /* rt.h: RT_LIGHT0 + i */
+#endif
+#ifdef RT_LIGHT4
 #define GL_LIGHT4 RT_LIGHT4
+#else
+#define GL_LIGHT4 (RT_LIGHT0 + 4) /* rt.h: RT_LIGHT0 + i */
+#endif
+#ifdef RT_LIGHT5
 #define GL_LIGHT5 RT_LIGHT5
+#else
+#define GL_LIGHT5 (RT_LIGHT0 + 5) /* rt.h: RT_LIGHT0 + i */
+#endif
+#ifdef RT_LIGHT6
 #define GL_LIGHT6 RT_LIGHT6
+#else
+#define GL_LIGHT6 (RT_LIGHT0 + 6) /* rt.h: RT_LIGHT0 + i */
+#endif
+#ifdef RT_LIGHT7
 #define GL_LIGHT7 RT_LIGHT7
+#else
+#define GL_LIGHT7 (RT_LIGHT0 + 7) /* rt.h: RT_LIGHT0 + i */
+#endif
 #define GL_SPOT_EXPONENT RT_SPOT_EXPONENT
 #define GL_SPOT_CUTOFF RT_SPOT_CUTOFF
 #define GL_SPOT_DIRECTION RT_SPOT_DIRECTION
