@@ -4,8 +4,9 @@
  *
  * A GL 1.x program whose #include <GL/gl.h>, <GL/glu.h> and <GL/glut.h>
  * lines are replaced by #include <rt/glcompat.h> compiles against
- * Tracelist: every GL 1.0/1.1 name (and GL 1.4's glWindowPos), every GLU
- * 1.3 name and every GLUT 3 name is defined here by the renaming rule
+ * Tracelist: every GL 1.0/1.1 name (and the GL 1.2 and 1.4 names 1.x
+ * programs commonly use), every GLU 1.3 name and every GLUT 3 name is
+ * defined here by the renaming rule
  * (glFoo -> rtFoo, gluFoo / glutFoo -> rtuFoo, GL_FOO -> RT_FOO,
  * GLU_FOO / GLUT_FOO -> RTU_FOO, GLfloat -> RTfloat), with GL's
  * signatures.  Each name is one of (docs/glcompat.md lists them):
@@ -1683,6 +1684,22 @@ static inline void rtglc_PrioritizeTextures(GLsizei n, const GLuint *textures, c
 #define GL_CLIENT_VERTEX_ARRAY_BIT RTGLC_ABSENT(GL_CLIENT_VERTEX_ARRAY_BIT, "GL_CLIENT_VERTEX_ARRAY_BIT: no Tracelist equivalent (docs/glcompat.md)")
 #define GL_ALL_CLIENT_ATTRIB_BITS RTGLC_ABSENT(GL_ALL_CLIENT_ATTRIB_BITS, "GL_ALL_CLIENT_ATTRIB_BITS: no Tracelist equivalent (docs/glcompat.md)")
 #define GL_CLIENT_ALL_ATTRIB_BITS RTGLC_ABSENT(GL_CLIENT_ALL_ATTRIB_BITS, "GL_CLIENT_ALL_ATTRIB_BITS: no Tracelist equivalent (docs/glcompat.md)")
+
+/* ---- The GL 1.2 names GL 1.x programs commonly use ------------------- */
+#define GL_CLAMP_TO_EDGE RT_CLAMP_TO_EDGE
+#define GL_RESCALE_NORMAL RT_RESCALE_NORMAL
+#define GL_LIGHT_MODEL_COLOR_CONTROL RT_LIGHT_MODEL_COLOR_CONTROL
+#define GL_SINGLE_COLOR RT_SINGLE_COLOR
+#define GL_SEPARATE_SPECULAR_COLOR RT_SEPARATE_SPECULAR_COLOR
+/* glDrawRangeElements: start and end only promise the index range. */
+static inline void rtglc_DrawRangeElements(GLenum mode, GLuint start, GLuint end, GLsizei count,
+                                           GLenum type, const GLvoid *indices)
+{
+    (void)start;
+    (void)end;
+    rtDrawElements(mode, count, type, indices);
+}
+#define glDrawRangeElements rtglc_DrawRangeElements
 
 /* ---- GLU -------------------------------------------------------------- */
 typedef RTUquadric GLUquadric;
