@@ -522,7 +522,7 @@ static inline void rtglc_PixelStoref(GLenum pname, GLfloat param) { (void)pname;
 static inline void rtglc_PixelStorei(GLenum pname, GLint param) { (void)pname; (void)param; }
 static inline void rtglc_ClearStencil(GLint s) { (void)s; }
 static inline void rtglc_PrioritizeTextures(GLsizei n, const GLuint *textures, const GLclampf *priorities) { (void)n; (void)textures; (void)priorities; }
-#ifdef RT_POLYGON_OFFSET_FACTOR
+#ifdef RT_POLYGON_OFFSET_FILL
 #define glPolygonOffset rtPolygonOffset
 #else
 #define glPolygonOffset rtglc_PolygonOffset
@@ -544,7 +544,7 @@ static inline void rtglc_PrioritizeTextures(GLsizei n, const GLuint *textures, c
 #else
 #define glHint rtglc_Hint
 #endif
-#ifdef RT_DEPTH_CLEAR_VALUE
+#ifdef RT_LEQUAL
 #define glClearDepth rtClearDepth
 #else
 #define glClearDepth rtglc_ClearDepth
@@ -559,23 +559,26 @@ static inline void rtglc_PrioritizeTextures(GLsizei n, const GLuint *textures, c
 #else
 #define glDepthMask rtglc_DepthMask
 #endif
-#ifdef RT_DEPTH_RANGE
+#ifdef RT_LEQUAL
 #define glDepthRange rtDepthRange
 #else
 #define glDepthRange rtglc_DepthRange
 #endif
-#ifdef RT_UNPACK_ALIGNMENT
-#define glPixelStoref rtPixelStoref
-#else
 #define glPixelStoref rtglc_PixelStoref
-#endif
-#ifdef RT_UNPACK_ALIGNMENT
-#define glPixelStorei rtPixelStorei
-#else
 #define glPixelStorei rtglc_PixelStorei
-#endif
 #define glClearStencil rtglc_ClearStencil
 #define glPrioritizeTextures rtglc_PrioritizeTextures
+/* GL_EXT_compiled_vertex_array: locking the arrays is only a promise. */
+#define GL_EXT_compiled_vertex_array 1
+static inline void rtglc_LockArraysEXT(GLint first, GLsizei count) { (void)first; (void)count; }
+static inline void rtglc_UnlockArraysEXT(void) { }
+#ifdef RT_LEQUAL
+#define glLockArraysEXT rtLockArraysEXT
+#define glUnlockArraysEXT rtUnlockArraysEXT
+#else
+#define glLockArraysEXT rtglc_LockArraysEXT
+#define glUnlockArraysEXT rtglc_UnlockArraysEXT
+#endif
 
 /* ---- GL functions whose Tracelist entry point comes with a feature -----
  * A feature is present when rt.h / rtu.h define the enum named here; a
@@ -622,10 +625,14 @@ static inline void rtglc_PrioritizeTextures(GLsizei n, const GLuint *textures, c
 #define glLightModelf rtLightModelf
 #define glLightModeli rtLightModeli
 #define glColorMaterial rtColorMaterial
+#define glGetMaterialfv rtGetMaterialfv
+#define glGetLightfv rtGetLightfv
 #else
 #define glLightModelf RTGLC_PENDING(glLightModelf, "glLightModelf: needs GL lighting state (rtLightModelf/i, rtColorMaterial), not in this Tracelist (docs/glcompat.md)")
 #define glLightModeli RTGLC_PENDING(glLightModeli, "glLightModeli: needs GL lighting state (rtLightModelf/i, rtColorMaterial), not in this Tracelist (docs/glcompat.md)")
 #define glColorMaterial RTGLC_PENDING(glColorMaterial, "glColorMaterial: needs GL lighting state (rtLightModelf/i, rtColorMaterial), not in this Tracelist (docs/glcompat.md)")
+#define glGetMaterialfv RTGLC_PENDING(glGetMaterialfv, "glGetMaterialfv: needs GL lighting state (rtLightModelf/i, rtColorMaterial), not in this Tracelist (docs/glcompat.md)")
+#define glGetLightfv RTGLC_PENDING(glGetLightfv, "glGetLightfv: needs GL lighting state (rtLightModelf/i, rtColorMaterial), not in this Tracelist (docs/glcompat.md)")
 #endif
 #if !defined(RT_GLCOMPAT_HAVE_CULL_FACE) && (defined(RT_CULL_FACE))
 #define RT_GLCOMPAT_HAVE_CULL_FACE 1
@@ -650,7 +657,15 @@ static inline void rtglc_PrioritizeTextures(GLsizei n, const GLuint *textures, c
 #define glFogf rtFogf
 #define glFogi rtFogi
 #define glFogfv rtFogfv
-#define glFogiv rtFogiv
+static inline void rtglc_Fogiv(GLenum pname, const GLint *params)
+{
+    GLfloat f[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    int i;
+    for (i = 0; i < (pname == RT_FOG_COLOR ? 4 : 1); i++)
+        f[i] = pname == RT_FOG_COLOR ? (GLfloat)((GLdouble)params[i] / 2147483647.0) : (GLfloat)params[i];
+    rtFogfv(pname, f);
+}
+#define glFogiv rtglc_Fogiv
 #else
 #define glFogf RTGLC_PENDING(glFogf, "glFogf: needs fog (rtFog*), not in this Tracelist (docs/glcompat.md)")
 #define glFogi RTGLC_PENDING(glFogi, "glFogi: needs fog (rtFog*), not in this Tracelist (docs/glcompat.md)")
@@ -661,12 +676,33 @@ static inline void rtglc_PrioritizeTextures(GLsizei n, const GLuint *textures, c
 #define RT_GLCOMPAT_HAVE_TEXGEN 1
 #endif
 #ifdef RT_GLCOMPAT_HAVE_TEXGEN
-#define glTexGend rtTexGend
+static inline void rtglc_TexGend(GLenum coord, GLenum pname, GLdouble param) { rtTexGenf(coord, pname, (GLfloat)param); }
+#define glTexGend rtglc_TexGend
 #define glTexGenf rtTexGenf
 #define glTexGeni rtTexGeni
-#define glTexGendv rtTexGendv
+static inline void rtglc_TexGendv(GLenum coord, GLenum pname, const GLdouble *params)
+{
+    GLfloat f[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    int i;
+    for (i = 0; i < (pname == RT_TEXTURE_GEN_MODE ? 1 : 4); i++)
+        f[i] = (GLfloat)params[i];
+    rtTexGenfv(coord, pname, f);
+}
+#define glTexGendv rtglc_TexGendv
 #define glTexGenfv rtTexGenfv
-#define glTexGeniv rtTexGeniv
+static inline void rtglc_TexGeniv(GLenum coord, GLenum pname, const GLint *params)
+{
+    GLfloat f[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    int i;
+    if (pname == RT_TEXTURE_GEN_MODE) {
+        rtTexGeni(coord, pname, params[0]);
+        return;
+    }
+    for (i = 0; i < 4; i++)
+        f[i] = (GLfloat)params[i];
+    rtTexGenfv(coord, pname, f);
+}
+#define glTexGeniv rtglc_TexGeniv
 #else
 #define glTexGend RTGLC_PENDING(glTexGend, "glTexGend: needs texture coordinate generation (rtTexGen*), not in this Tracelist (docs/glcompat.md)")
 #define glTexGenf RTGLC_PENDING(glTexGenf, "glTexGenf: needs texture coordinate generation (rtTexGen*), not in this Tracelist (docs/glcompat.md)")
@@ -682,7 +718,19 @@ static inline void rtglc_PrioritizeTextures(GLsizei n, const GLuint *textures, c
 #define glTexEnvf rtTexEnvf
 #define glTexEnvi rtTexEnvi
 #define glTexEnvfv rtTexEnvfv
-#define glTexEnviv rtTexEnviv
+static inline void rtglc_TexEnviv(GLenum target, GLenum pname, const GLint *params)
+{
+    GLfloat f[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    int i;
+    if (pname != RT_TEXTURE_ENV_COLOR) {
+        rtTexEnvi(target, pname, params[0]);
+        return;
+    }
+    for (i = 0; i < 4; i++)
+        f[i] = (GLfloat)((GLdouble)params[i] / 2147483647.0);
+    rtTexEnvfv(target, pname, f);
+}
+#define glTexEnviv rtglc_TexEnviv
 #else
 #define glTexEnvf RTGLC_PENDING(glTexEnvf, "glTexEnvf: needs texture environments (rtTexEnv*), not in this Tracelist (docs/glcompat.md)")
 #define glTexEnvi RTGLC_PENDING(glTexEnvi, "glTexEnvi: needs texture environments (rtTexEnv*), not in this Tracelist (docs/glcompat.md)")
@@ -721,7 +769,7 @@ static inline void rtglc_PrioritizeTextures(GLsizei n, const GLuint *textures, c
 #else
 #define glPolygonMode RTGLC_PENDING(glPolygonMode, "glPolygonMode: needs rtPolygonMode, not in this Tracelist (docs/glcompat.md)")
 #endif
-#if !defined(RT_GLCOMPAT_HAVE_BLEND_FUNC) && (defined(RT_BLEND))
+#if !defined(RT_GLCOMPAT_HAVE_BLEND_FUNC) && (defined(RT_SRC_ALPHA))
 #define RT_GLCOMPAT_HAVE_BLEND_FUNC 1
 #endif
 #ifdef RT_GLCOMPAT_HAVE_BLEND_FUNC
@@ -734,37 +782,73 @@ static inline void rtglc_PrioritizeTextures(GLsizei n, const GLuint *textures, c
 #endif
 #ifdef RT_GLCOMPAT_HAVE_CLIP_PLANE
 #define glClipPlane rtClipPlane
+#define glGetClipPlane rtGetClipPlane
 #else
+#define glGetClipPlane RTGLC_PENDING(glGetClipPlane, "glGetClipPlane: needs user clip planes (rtClipPlane), not in this Tracelist (docs/glcompat.md)")
 #define glClipPlane RTGLC_PENDING(glClipPlane, "glClipPlane: needs user clip planes (rtClipPlane), not in this Tracelist (docs/glcompat.md)")
 #endif
-#if !defined(RT_GLCOMPAT_HAVE_RASTER_POS) && (defined(RTU_BITMAP_8_BY_13))
+#if !defined(RT_GLCOMPAT_HAVE_RASTER_POS) && (defined(RT_CURRENT_RASTER_POSITION))
 #define RT_GLCOMPAT_HAVE_RASTER_POS 1
 #endif
 #ifdef RT_GLCOMPAT_HAVE_RASTER_POS
 #define glRasterPos2d rtRasterPos2d
 #define glRasterPos2f rtRasterPos2f
 #define glRasterPos2i rtRasterPos2i
-#define glRasterPos2s rtRasterPos2s
 #define glRasterPos3d rtRasterPos3d
 #define glRasterPos3f rtRasterPos3f
 #define glRasterPos3i rtRasterPos3i
-#define glRasterPos3s rtRasterPos3s
 #define glRasterPos2dv rtRasterPos2dv
 #define glRasterPos2fv rtRasterPos2fv
 #define glRasterPos2iv rtRasterPos2iv
-#define glRasterPos2sv rtRasterPos2sv
 #define glRasterPos3dv rtRasterPos3dv
 #define glRasterPos3fv rtRasterPos3fv
 #define glRasterPos3iv rtRasterPos3iv
-#define glRasterPos3sv rtRasterPos3sv
 #define glWindowPos2i rtWindowPos2i
 #define glWindowPos2f rtWindowPos2f
 #define glWindowPos2d rtWindowPos2d
 #define glWindowPos3i rtWindowPos3i
 #define glWindowPos3f rtWindowPos3f
 #define glWindowPos3d rtWindowPos3d
+#define glRasterPos4d rtRasterPos4d
+#define glRasterPos4f rtRasterPos4f
+#define glRasterPos4i rtRasterPos4i
+#define glRasterPos4dv rtRasterPos4dv
+#define glRasterPos4fv rtRasterPos4fv
+#define glRasterPos4iv rtRasterPos4iv
+static inline void rtglc_RasterPos2s(GLshort x, GLshort y) { rtRasterPos2i(x, y); }
+static inline void rtglc_RasterPos3s(GLshort x, GLshort y, GLshort z) { rtRasterPos3i(x, y, z); }
+static inline void rtglc_RasterPos4s(GLshort x, GLshort y, GLshort z, GLshort w) { rtRasterPos4i(x, y, z, w); }
+static inline void rtglc_RasterPos2sv(const GLshort *v) { rtRasterPos2i(v[0], v[1]); }
+static inline void rtglc_RasterPos3sv(const GLshort *v) { rtRasterPos3i(v[0], v[1], v[2]); }
+static inline void rtglc_RasterPos4sv(const GLshort *v) { rtRasterPos4i(v[0], v[1], v[2], v[3]); }
+#define glRasterPos2s rtglc_RasterPos2s
+#define glRasterPos3s rtglc_RasterPos3s
+#define glRasterPos4s rtglc_RasterPos4s
+#define glRasterPos2sv rtglc_RasterPos2sv
+#define glRasterPos3sv rtglc_RasterPos3sv
+#define glRasterPos4sv rtglc_RasterPos4sv
+#define glWindowPos2iv rtWindowPos2iv
+#define glWindowPos2fv rtWindowPos2fv
+#define glWindowPos2dv rtWindowPos2dv
+#define glWindowPos3iv rtWindowPos3iv
+#define glWindowPos3fv rtWindowPos3fv
+#define glWindowPos3dv rtWindowPos3dv
 #define glBitmap rtBitmap
 #else
+#define glRasterPos4d RTGLC_PENDING(glRasterPos4d, "glRasterPos4d: needs bitmap text (rtRasterPos*, rtWindowPos*, rtBitmap), not in this Tracelist (docs/glcompat.md)")
+#define glRasterPos4f RTGLC_PENDING(glRasterPos4f, "glRasterPos4f: needs bitmap text (rtRasterPos*, rtWindowPos*, rtBitmap), not in this Tracelist (docs/glcompat.md)")
+#define glRasterPos4i RTGLC_PENDING(glRasterPos4i, "glRasterPos4i: needs bitmap text (rtRasterPos*, rtWindowPos*, rtBitmap), not in this Tracelist (docs/glcompat.md)")
+#define glRasterPos4s RTGLC_PENDING(glRasterPos4s, "glRasterPos4s: needs bitmap text (rtRasterPos*, rtWindowPos*, rtBitmap), not in this Tracelist (docs/glcompat.md)")
+#define glRasterPos4dv RTGLC_PENDING(glRasterPos4dv, "glRasterPos4dv: needs bitmap text (rtRasterPos*, rtWindowPos*, rtBitmap), not in this Tracelist (docs/glcompat.md)")
+#define glRasterPos4fv RTGLC_PENDING(glRasterPos4fv, "glRasterPos4fv: needs bitmap text (rtRasterPos*, rtWindowPos*, rtBitmap), not in this Tracelist (docs/glcompat.md)")
+#define glRasterPos4iv RTGLC_PENDING(glRasterPos4iv, "glRasterPos4iv: needs bitmap text (rtRasterPos*, rtWindowPos*, rtBitmap), not in this Tracelist (docs/glcompat.md)")
+#define glRasterPos4sv RTGLC_PENDING(glRasterPos4sv, "glRasterPos4sv: needs bitmap text (rtRasterPos*, rtWindowPos*, rtBitmap), not in this Tracelist (docs/glcompat.md)")
+#define glWindowPos2iv RTGLC_PENDING(glWindowPos2iv, "glWindowPos2iv: needs bitmap text (rtRasterPos*, rtWindowPos*, rtBitmap), not in this Tracelist (docs/glcompat.md)")
+#define glWindowPos2fv RTGLC_PENDING(glWindowPos2fv, "glWindowPos2fv: needs bitmap text (rtRasterPos*, rtWindowPos*, rtBitmap), not in this Tracelist (docs/glcompat.md)")
+#define glWindowPos2dv RTGLC_PENDING(glWindowPos2dv, "glWindowPos2dv: needs bitmap text (rtRasterPos*, rtWindowPos*, rtBitmap), not in this Tracelist (docs/glcompat.md)")
+#define glWindowPos3iv RTGLC_PENDING(glWindowPos3iv, "glWindowPos3iv: needs bitmap text (rtRasterPos*, rtWindowPos*, rtBitmap), not in this Tracelist (docs/glcompat.md)")
+#define glWindowPos3fv RTGLC_PENDING(glWindowPos3fv, "glWindowPos3fv: needs bitmap text (rtRasterPos*, rtWindowPos*, rtBitmap), not in this Tracelist (docs/glcompat.md)")
+#define glWindowPos3dv RTGLC_PENDING(glWindowPos3dv, "glWindowPos3dv: needs bitmap text (rtRasterPos*, rtWindowPos*, rtBitmap), not in this Tracelist (docs/glcompat.md)")
 #define glRasterPos2d RTGLC_PENDING(glRasterPos2d, "glRasterPos2d: needs bitmap text (rtRasterPos*, rtWindowPos*, rtBitmap), not in this Tracelist (docs/glcompat.md)")
 #define glRasterPos2f RTGLC_PENDING(glRasterPos2f, "glRasterPos2f: needs bitmap text (rtRasterPos*, rtWindowPos*, rtBitmap), not in this Tracelist (docs/glcompat.md)")
 #define glRasterPos2i RTGLC_PENDING(glRasterPos2i, "glRasterPos2i: needs bitmap text (rtRasterPos*, rtWindowPos*, rtBitmap), not in this Tracelist (docs/glcompat.md)")
@@ -800,7 +884,6 @@ static inline void rtglc_PrioritizeTextures(GLsizei n, const GLuint *textures, c
 #define glPolygonStipple RTGLC_ABSENT(glPolygonStipple, "glPolygonStipple: no stipple patterns (docs/glcompat.md)")
 #define glGetPolygonStipple RTGLC_ABSENT(glGetPolygonStipple, "glGetPolygonStipple: no stipple patterns (docs/glcompat.md)")
 #define glScissor RTGLC_ABSENT(glScissor, "glScissor: no scissor rectangle (docs/glcompat.md)")
-#define glGetClipPlane RTGLC_ABSENT(glGetClipPlane, "glGetClipPlane: state is not read back by this query (docs/glcompat.md)")
 #define glPushAttrib RTGLC_ABSENT(glPushAttrib, "glPushAttrib: no attribute stack (docs/glcompat.md)")
 #define glPopAttrib RTGLC_ABSENT(glPopAttrib, "glPopAttrib: no attribute stack (docs/glcompat.md)")
 #define glPushClientAttrib RTGLC_ABSENT(glPushClientAttrib, "glPushClientAttrib: no attribute stack (docs/glcompat.md)")
@@ -834,20 +917,10 @@ static inline void rtglc_PrioritizeTextures(GLsizei n, const GLuint *textures, c
 #define glTexCoord4fv RTGLC_ABSENT(glTexCoord4fv, "glTexCoord4fv: no projective (q) texture coordinates (docs/glcompat.md)")
 #define glTexCoord4iv RTGLC_ABSENT(glTexCoord4iv, "glTexCoord4iv: no projective (q) texture coordinates (docs/glcompat.md)")
 #define glTexCoord4sv RTGLC_ABSENT(glTexCoord4sv, "glTexCoord4sv: no projective (q) texture coordinates (docs/glcompat.md)")
-#define glRasterPos4d RTGLC_ABSENT(glRasterPos4d, "glRasterPos4d: no homogeneous (w) vertices (docs/glcompat.md)")
-#define glRasterPos4f RTGLC_ABSENT(glRasterPos4f, "glRasterPos4f: no homogeneous (w) vertices (docs/glcompat.md)")
-#define glRasterPos4i RTGLC_ABSENT(glRasterPos4i, "glRasterPos4i: no homogeneous (w) vertices (docs/glcompat.md)")
-#define glRasterPos4s RTGLC_ABSENT(glRasterPos4s, "glRasterPos4s: no homogeneous (w) vertices (docs/glcompat.md)")
-#define glRasterPos4dv RTGLC_ABSENT(glRasterPos4dv, "glRasterPos4dv: no homogeneous (w) vertices (docs/glcompat.md)")
-#define glRasterPos4fv RTGLC_ABSENT(glRasterPos4fv, "glRasterPos4fv: no homogeneous (w) vertices (docs/glcompat.md)")
-#define glRasterPos4iv RTGLC_ABSENT(glRasterPos4iv, "glRasterPos4iv: no homogeneous (w) vertices (docs/glcompat.md)")
-#define glRasterPos4sv RTGLC_ABSENT(glRasterPos4sv, "glRasterPos4sv: no homogeneous (w) vertices (docs/glcompat.md)")
 #define glIndexPointer RTGLC_ABSENT(glIndexPointer, "glIndexPointer: colour-index mode (docs/glcompat.md)")
 #define glEdgeFlagPointer RTGLC_ABSENT(glEdgeFlagPointer, "glEdgeFlagPointer: no edge-flag array (docs/glcompat.md)")
 #define glGetPointerv RTGLC_ABSENT(glGetPointerv, "glGetPointerv: state is not read back by this query (docs/glcompat.md)")
-#define glGetLightfv RTGLC_ABSENT(glGetLightfv, "glGetLightfv: state is not read back by this query (docs/glcompat.md)")
 #define glGetLightiv RTGLC_ABSENT(glGetLightiv, "glGetLightiv: state is not read back by this query (docs/glcompat.md)")
-#define glGetMaterialfv RTGLC_ABSENT(glGetMaterialfv, "glGetMaterialfv: state is not read back by this query (docs/glcompat.md)")
 #define glGetMaterialiv RTGLC_ABSENT(glGetMaterialiv, "glGetMaterialiv: state is not read back by this query (docs/glcompat.md)")
 #define glPixelZoom RTGLC_ABSENT(glPixelZoom, "glPixelZoom: no pixel drawing into the frame (docs/glcompat.md)")
 #define glPixelTransferf RTGLC_ABSENT(glPixelTransferf, "glPixelTransferf: no pixel drawing into the frame (docs/glcompat.md)")
@@ -1426,264 +1499,1296 @@ static inline void rtglc_PrioritizeTextures(GLsizei n, const GLuint *textures, c
 #define GL_INTENSITY RT_INTENSITY
 
 /* Enums of what Tracelist does not have. */
+#ifdef RT_INDEX_ARRAY
+#define GL_INDEX_ARRAY RT_INDEX_ARRAY
+#else
 #define GL_INDEX_ARRAY RTGLC_ABSENT(GL_INDEX_ARRAY, "GL_INDEX_ARRAY: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_EDGE_FLAG_ARRAY
+#define GL_EDGE_FLAG_ARRAY RT_EDGE_FLAG_ARRAY
+#else
 #define GL_EDGE_FLAG_ARRAY RTGLC_ABSENT(GL_EDGE_FLAG_ARRAY, "GL_EDGE_FLAG_ARRAY: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_INDEX_ARRAY_TYPE
+#define GL_INDEX_ARRAY_TYPE RT_INDEX_ARRAY_TYPE
+#else
 #define GL_INDEX_ARRAY_TYPE RTGLC_ABSENT(GL_INDEX_ARRAY_TYPE, "GL_INDEX_ARRAY_TYPE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_INDEX_ARRAY_STRIDE
+#define GL_INDEX_ARRAY_STRIDE RT_INDEX_ARRAY_STRIDE
+#else
 #define GL_INDEX_ARRAY_STRIDE RTGLC_ABSENT(GL_INDEX_ARRAY_STRIDE, "GL_INDEX_ARRAY_STRIDE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_EDGE_FLAG_ARRAY_STRIDE
+#define GL_EDGE_FLAG_ARRAY_STRIDE RT_EDGE_FLAG_ARRAY_STRIDE
+#else
 #define GL_EDGE_FLAG_ARRAY_STRIDE RTGLC_ABSENT(GL_EDGE_FLAG_ARRAY_STRIDE, "GL_EDGE_FLAG_ARRAY_STRIDE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_INDEX_ARRAY_POINTER
+#define GL_INDEX_ARRAY_POINTER RT_INDEX_ARRAY_POINTER
+#else
 #define GL_INDEX_ARRAY_POINTER RTGLC_ABSENT(GL_INDEX_ARRAY_POINTER, "GL_INDEX_ARRAY_POINTER: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_EDGE_FLAG_ARRAY_POINTER
+#define GL_EDGE_FLAG_ARRAY_POINTER RT_EDGE_FLAG_ARRAY_POINTER
+#else
 #define GL_EDGE_FLAG_ARRAY_POINTER RTGLC_ABSENT(GL_EDGE_FLAG_ARRAY_POINTER, "GL_EDGE_FLAG_ARRAY_POINTER: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_LINE_STIPPLE
+#define GL_LINE_STIPPLE RT_LINE_STIPPLE
+#else
 #define GL_LINE_STIPPLE RTGLC_ABSENT(GL_LINE_STIPPLE, "GL_LINE_STIPPLE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_LINE_STIPPLE_PATTERN
+#define GL_LINE_STIPPLE_PATTERN RT_LINE_STIPPLE_PATTERN
+#else
 #define GL_LINE_STIPPLE_PATTERN RTGLC_ABSENT(GL_LINE_STIPPLE_PATTERN, "GL_LINE_STIPPLE_PATTERN: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_LINE_STIPPLE_REPEAT
+#define GL_LINE_STIPPLE_REPEAT RT_LINE_STIPPLE_REPEAT
+#else
 #define GL_LINE_STIPPLE_REPEAT RTGLC_ABSENT(GL_LINE_STIPPLE_REPEAT, "GL_LINE_STIPPLE_REPEAT: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_POLYGON_STIPPLE
+#define GL_POLYGON_STIPPLE RT_POLYGON_STIPPLE
+#else
 #define GL_POLYGON_STIPPLE RTGLC_ABSENT(GL_POLYGON_STIPPLE, "GL_POLYGON_STIPPLE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_EDGE_FLAG
+#define GL_EDGE_FLAG RT_EDGE_FLAG
+#else
 #define GL_EDGE_FLAG RTGLC_ABSENT(GL_EDGE_FLAG, "GL_EDGE_FLAG: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_LIST_BASE
+#define GL_LIST_BASE RT_LIST_BASE
+#else
 #define GL_LIST_BASE RTGLC_ABSENT(GL_LIST_BASE, "GL_LIST_BASE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_LIST_INDEX
+#define GL_LIST_INDEX RT_LIST_INDEX
+#else
 #define GL_LIST_INDEX RTGLC_ABSENT(GL_LIST_INDEX, "GL_LIST_INDEX: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_LIST_MODE
+#define GL_LIST_MODE RT_LIST_MODE
+#else
 #define GL_LIST_MODE RTGLC_ABSENT(GL_LIST_MODE, "GL_LIST_MODE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_DEPTH_BITS
+#define GL_DEPTH_BITS RT_DEPTH_BITS
+#else
 #define GL_DEPTH_BITS RTGLC_ABSENT(GL_DEPTH_BITS, "GL_DEPTH_BITS: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_DEPTH_CLEAR_VALUE
+#define GL_DEPTH_CLEAR_VALUE RT_DEPTH_CLEAR_VALUE
+#else
 #define GL_DEPTH_CLEAR_VALUE RTGLC_ABSENT(GL_DEPTH_CLEAR_VALUE, "GL_DEPTH_CLEAR_VALUE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_DEPTH_FUNC
+#define GL_DEPTH_FUNC RT_DEPTH_FUNC
+#else
 #define GL_DEPTH_FUNC RTGLC_ABSENT(GL_DEPTH_FUNC, "GL_DEPTH_FUNC: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_DEPTH_RANGE
+#define GL_DEPTH_RANGE RT_DEPTH_RANGE
+#else
 #define GL_DEPTH_RANGE RTGLC_ABSENT(GL_DEPTH_RANGE, "GL_DEPTH_RANGE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_DEPTH_WRITEMASK
+#define GL_DEPTH_WRITEMASK RT_DEPTH_WRITEMASK
+#else
 #define GL_DEPTH_WRITEMASK RTGLC_ABSENT(GL_DEPTH_WRITEMASK, "GL_DEPTH_WRITEMASK: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_DEPTH_COMPONENT
+#define GL_DEPTH_COMPONENT RT_DEPTH_COMPONENT
+#else
 #define GL_DEPTH_COMPONENT RTGLC_ABSENT(GL_DEPTH_COMPONENT, "GL_DEPTH_COMPONENT: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_COLOR_INDEXES
+#define GL_COLOR_INDEXES RT_COLOR_INDEXES
+#else
 #define GL_COLOR_INDEXES RTGLC_ABSENT(GL_COLOR_INDEXES, "GL_COLOR_INDEXES: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_ACCUM_RED_BITS
+#define GL_ACCUM_RED_BITS RT_ACCUM_RED_BITS
+#else
 #define GL_ACCUM_RED_BITS RTGLC_ABSENT(GL_ACCUM_RED_BITS, "GL_ACCUM_RED_BITS: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_ACCUM_GREEN_BITS
+#define GL_ACCUM_GREEN_BITS RT_ACCUM_GREEN_BITS
+#else
 #define GL_ACCUM_GREEN_BITS RTGLC_ABSENT(GL_ACCUM_GREEN_BITS, "GL_ACCUM_GREEN_BITS: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_ACCUM_BLUE_BITS
+#define GL_ACCUM_BLUE_BITS RT_ACCUM_BLUE_BITS
+#else
 #define GL_ACCUM_BLUE_BITS RTGLC_ABSENT(GL_ACCUM_BLUE_BITS, "GL_ACCUM_BLUE_BITS: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_ACCUM_ALPHA_BITS
+#define GL_ACCUM_ALPHA_BITS RT_ACCUM_ALPHA_BITS
+#else
 #define GL_ACCUM_ALPHA_BITS RTGLC_ABSENT(GL_ACCUM_ALPHA_BITS, "GL_ACCUM_ALPHA_BITS: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_ACCUM_CLEAR_VALUE
+#define GL_ACCUM_CLEAR_VALUE RT_ACCUM_CLEAR_VALUE
+#else
 #define GL_ACCUM_CLEAR_VALUE RTGLC_ABSENT(GL_ACCUM_CLEAR_VALUE, "GL_ACCUM_CLEAR_VALUE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_ACCUM
+#define GL_ACCUM RT_ACCUM
+#else
 #define GL_ACCUM RTGLC_ABSENT(GL_ACCUM, "GL_ACCUM: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_ADD
+#define GL_ADD RT_ADD
+#else
 #define GL_ADD RTGLC_ABSENT(GL_ADD, "GL_ADD: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_LOAD
+#define GL_LOAD RT_LOAD
+#else
 #define GL_LOAD RTGLC_ABSENT(GL_LOAD, "GL_LOAD: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_MULT
+#define GL_MULT RT_MULT
+#else
 #define GL_MULT RTGLC_ABSENT(GL_MULT, "GL_MULT: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_RETURN
+#define GL_RETURN RT_RETURN
+#else
 #define GL_RETURN RTGLC_ABSENT(GL_RETURN, "GL_RETURN: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_ALPHA_TEST
+#define GL_ALPHA_TEST RT_ALPHA_TEST
+#else
 #define GL_ALPHA_TEST RTGLC_ABSENT(GL_ALPHA_TEST, "GL_ALPHA_TEST: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_ALPHA_TEST_REF
+#define GL_ALPHA_TEST_REF RT_ALPHA_TEST_REF
+#else
 #define GL_ALPHA_TEST_REF RTGLC_ABSENT(GL_ALPHA_TEST_REF, "GL_ALPHA_TEST_REF: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_ALPHA_TEST_FUNC
+#define GL_ALPHA_TEST_FUNC RT_ALPHA_TEST_FUNC
+#else
 #define GL_ALPHA_TEST_FUNC RTGLC_ABSENT(GL_ALPHA_TEST_FUNC, "GL_ALPHA_TEST_FUNC: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_FEEDBACK
+#define GL_FEEDBACK RT_FEEDBACK
+#else
 #define GL_FEEDBACK RTGLC_ABSENT(GL_FEEDBACK, "GL_FEEDBACK: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_RENDER
+#define GL_RENDER RT_RENDER
+#else
 #define GL_RENDER RTGLC_ABSENT(GL_RENDER, "GL_RENDER: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_SELECT
+#define GL_SELECT RT_SELECT
+#else
 #define GL_SELECT RTGLC_ABSENT(GL_SELECT, "GL_SELECT: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_2D
+#define GL_2D RT_2D
+#else
 #define GL_2D RTGLC_ABSENT(GL_2D, "GL_2D: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_3D
+#define GL_3D RT_3D
+#else
 #define GL_3D RTGLC_ABSENT(GL_3D, "GL_3D: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_3D_COLOR
+#define GL_3D_COLOR RT_3D_COLOR
+#else
 #define GL_3D_COLOR RTGLC_ABSENT(GL_3D_COLOR, "GL_3D_COLOR: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_3D_COLOR_TEXTURE
+#define GL_3D_COLOR_TEXTURE RT_3D_COLOR_TEXTURE
+#else
 #define GL_3D_COLOR_TEXTURE RTGLC_ABSENT(GL_3D_COLOR_TEXTURE, "GL_3D_COLOR_TEXTURE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_4D_COLOR_TEXTURE
+#define GL_4D_COLOR_TEXTURE RT_4D_COLOR_TEXTURE
+#else
 #define GL_4D_COLOR_TEXTURE RTGLC_ABSENT(GL_4D_COLOR_TEXTURE, "GL_4D_COLOR_TEXTURE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_POINT_TOKEN
+#define GL_POINT_TOKEN RT_POINT_TOKEN
+#else
 #define GL_POINT_TOKEN RTGLC_ABSENT(GL_POINT_TOKEN, "GL_POINT_TOKEN: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_LINE_TOKEN
+#define GL_LINE_TOKEN RT_LINE_TOKEN
+#else
 #define GL_LINE_TOKEN RTGLC_ABSENT(GL_LINE_TOKEN, "GL_LINE_TOKEN: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_LINE_RESET_TOKEN
+#define GL_LINE_RESET_TOKEN RT_LINE_RESET_TOKEN
+#else
 #define GL_LINE_RESET_TOKEN RTGLC_ABSENT(GL_LINE_RESET_TOKEN, "GL_LINE_RESET_TOKEN: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_POLYGON_TOKEN
+#define GL_POLYGON_TOKEN RT_POLYGON_TOKEN
+#else
 #define GL_POLYGON_TOKEN RTGLC_ABSENT(GL_POLYGON_TOKEN, "GL_POLYGON_TOKEN: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_BITMAP_TOKEN
+#define GL_BITMAP_TOKEN RT_BITMAP_TOKEN
+#else
 #define GL_BITMAP_TOKEN RTGLC_ABSENT(GL_BITMAP_TOKEN, "GL_BITMAP_TOKEN: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_DRAW_PIXEL_TOKEN
+#define GL_DRAW_PIXEL_TOKEN RT_DRAW_PIXEL_TOKEN
+#else
 #define GL_DRAW_PIXEL_TOKEN RTGLC_ABSENT(GL_DRAW_PIXEL_TOKEN, "GL_DRAW_PIXEL_TOKEN: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_COPY_PIXEL_TOKEN
+#define GL_COPY_PIXEL_TOKEN RT_COPY_PIXEL_TOKEN
+#else
 #define GL_COPY_PIXEL_TOKEN RTGLC_ABSENT(GL_COPY_PIXEL_TOKEN, "GL_COPY_PIXEL_TOKEN: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_PASS_THROUGH_TOKEN
+#define GL_PASS_THROUGH_TOKEN RT_PASS_THROUGH_TOKEN
+#else
 #define GL_PASS_THROUGH_TOKEN RTGLC_ABSENT(GL_PASS_THROUGH_TOKEN, "GL_PASS_THROUGH_TOKEN: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_FEEDBACK_BUFFER_POINTER
+#define GL_FEEDBACK_BUFFER_POINTER RT_FEEDBACK_BUFFER_POINTER
+#else
 #define GL_FEEDBACK_BUFFER_POINTER RTGLC_ABSENT(GL_FEEDBACK_BUFFER_POINTER, "GL_FEEDBACK_BUFFER_POINTER: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_FEEDBACK_BUFFER_SIZE
+#define GL_FEEDBACK_BUFFER_SIZE RT_FEEDBACK_BUFFER_SIZE
+#else
 #define GL_FEEDBACK_BUFFER_SIZE RTGLC_ABSENT(GL_FEEDBACK_BUFFER_SIZE, "GL_FEEDBACK_BUFFER_SIZE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_FEEDBACK_BUFFER_TYPE
+#define GL_FEEDBACK_BUFFER_TYPE RT_FEEDBACK_BUFFER_TYPE
+#else
 #define GL_FEEDBACK_BUFFER_TYPE RTGLC_ABSENT(GL_FEEDBACK_BUFFER_TYPE, "GL_FEEDBACK_BUFFER_TYPE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_SELECTION_BUFFER_POINTER
+#define GL_SELECTION_BUFFER_POINTER RT_SELECTION_BUFFER_POINTER
+#else
 #define GL_SELECTION_BUFFER_POINTER RTGLC_ABSENT(GL_SELECTION_BUFFER_POINTER, "GL_SELECTION_BUFFER_POINTER: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_SELECTION_BUFFER_SIZE
+#define GL_SELECTION_BUFFER_SIZE RT_SELECTION_BUFFER_SIZE
+#else
 #define GL_SELECTION_BUFFER_SIZE RTGLC_ABSENT(GL_SELECTION_BUFFER_SIZE, "GL_SELECTION_BUFFER_SIZE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_FOG_INDEX
+#define GL_FOG_INDEX RT_FOG_INDEX
+#else
 #define GL_FOG_INDEX RTGLC_ABSENT(GL_FOG_INDEX, "GL_FOG_INDEX: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_LOGIC_OP
+#define GL_LOGIC_OP RT_LOGIC_OP
+#else
 #define GL_LOGIC_OP RTGLC_ABSENT(GL_LOGIC_OP, "GL_LOGIC_OP: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_INDEX_LOGIC_OP
+#define GL_INDEX_LOGIC_OP RT_INDEX_LOGIC_OP
+#else
 #define GL_INDEX_LOGIC_OP RTGLC_ABSENT(GL_INDEX_LOGIC_OP, "GL_INDEX_LOGIC_OP: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_COLOR_LOGIC_OP
+#define GL_COLOR_LOGIC_OP RT_COLOR_LOGIC_OP
+#else
 #define GL_COLOR_LOGIC_OP RTGLC_ABSENT(GL_COLOR_LOGIC_OP, "GL_COLOR_LOGIC_OP: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_LOGIC_OP_MODE
+#define GL_LOGIC_OP_MODE RT_LOGIC_OP_MODE
+#else
 #define GL_LOGIC_OP_MODE RTGLC_ABSENT(GL_LOGIC_OP_MODE, "GL_LOGIC_OP_MODE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_CLEAR
+#define GL_CLEAR RT_CLEAR
+#else
 #define GL_CLEAR RTGLC_ABSENT(GL_CLEAR, "GL_CLEAR: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_SET
+#define GL_SET RT_SET
+#else
 #define GL_SET RTGLC_ABSENT(GL_SET, "GL_SET: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_COPY
+#define GL_COPY RT_COPY
+#else
 #define GL_COPY RTGLC_ABSENT(GL_COPY, "GL_COPY: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_COPY_INVERTED
+#define GL_COPY_INVERTED RT_COPY_INVERTED
+#else
 #define GL_COPY_INVERTED RTGLC_ABSENT(GL_COPY_INVERTED, "GL_COPY_INVERTED: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_NOOP
+#define GL_NOOP RT_NOOP
+#else
 #define GL_NOOP RTGLC_ABSENT(GL_NOOP, "GL_NOOP: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_INVERT
+#define GL_INVERT RT_INVERT
+#else
 #define GL_INVERT RTGLC_ABSENT(GL_INVERT, "GL_INVERT: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_AND
+#define GL_AND RT_AND
+#else
 #define GL_AND RTGLC_ABSENT(GL_AND, "GL_AND: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_NAND
+#define GL_NAND RT_NAND
+#else
 #define GL_NAND RTGLC_ABSENT(GL_NAND, "GL_NAND: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_OR
+#define GL_OR RT_OR
+#else
 #define GL_OR RTGLC_ABSENT(GL_OR, "GL_OR: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_NOR
+#define GL_NOR RT_NOR
+#else
 #define GL_NOR RTGLC_ABSENT(GL_NOR, "GL_NOR: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_XOR
+#define GL_XOR RT_XOR
+#else
 #define GL_XOR RTGLC_ABSENT(GL_XOR, "GL_XOR: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_EQUIV
+#define GL_EQUIV RT_EQUIV
+#else
 #define GL_EQUIV RTGLC_ABSENT(GL_EQUIV, "GL_EQUIV: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_AND_REVERSE
+#define GL_AND_REVERSE RT_AND_REVERSE
+#else
 #define GL_AND_REVERSE RTGLC_ABSENT(GL_AND_REVERSE, "GL_AND_REVERSE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_AND_INVERTED
+#define GL_AND_INVERTED RT_AND_INVERTED
+#else
 #define GL_AND_INVERTED RTGLC_ABSENT(GL_AND_INVERTED, "GL_AND_INVERTED: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_OR_REVERSE
+#define GL_OR_REVERSE RT_OR_REVERSE
+#else
 #define GL_OR_REVERSE RTGLC_ABSENT(GL_OR_REVERSE, "GL_OR_REVERSE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_OR_INVERTED
+#define GL_OR_INVERTED RT_OR_INVERTED
+#else
 #define GL_OR_INVERTED RTGLC_ABSENT(GL_OR_INVERTED, "GL_OR_INVERTED: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_STENCIL_BITS
+#define GL_STENCIL_BITS RT_STENCIL_BITS
+#else
 #define GL_STENCIL_BITS RTGLC_ABSENT(GL_STENCIL_BITS, "GL_STENCIL_BITS: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_STENCIL_TEST
+#define GL_STENCIL_TEST RT_STENCIL_TEST
+#else
 #define GL_STENCIL_TEST RTGLC_ABSENT(GL_STENCIL_TEST, "GL_STENCIL_TEST: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_STENCIL_CLEAR_VALUE
+#define GL_STENCIL_CLEAR_VALUE RT_STENCIL_CLEAR_VALUE
+#else
 #define GL_STENCIL_CLEAR_VALUE RTGLC_ABSENT(GL_STENCIL_CLEAR_VALUE, "GL_STENCIL_CLEAR_VALUE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_STENCIL_FUNC
+#define GL_STENCIL_FUNC RT_STENCIL_FUNC
+#else
 #define GL_STENCIL_FUNC RTGLC_ABSENT(GL_STENCIL_FUNC, "GL_STENCIL_FUNC: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_STENCIL_VALUE_MASK
+#define GL_STENCIL_VALUE_MASK RT_STENCIL_VALUE_MASK
+#else
 #define GL_STENCIL_VALUE_MASK RTGLC_ABSENT(GL_STENCIL_VALUE_MASK, "GL_STENCIL_VALUE_MASK: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_STENCIL_FAIL
+#define GL_STENCIL_FAIL RT_STENCIL_FAIL
+#else
 #define GL_STENCIL_FAIL RTGLC_ABSENT(GL_STENCIL_FAIL, "GL_STENCIL_FAIL: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_STENCIL_PASS_DEPTH_FAIL
+#define GL_STENCIL_PASS_DEPTH_FAIL RT_STENCIL_PASS_DEPTH_FAIL
+#else
 #define GL_STENCIL_PASS_DEPTH_FAIL RTGLC_ABSENT(GL_STENCIL_PASS_DEPTH_FAIL, "GL_STENCIL_PASS_DEPTH_FAIL: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_STENCIL_PASS_DEPTH_PASS
+#define GL_STENCIL_PASS_DEPTH_PASS RT_STENCIL_PASS_DEPTH_PASS
+#else
 #define GL_STENCIL_PASS_DEPTH_PASS RTGLC_ABSENT(GL_STENCIL_PASS_DEPTH_PASS, "GL_STENCIL_PASS_DEPTH_PASS: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_STENCIL_REF
+#define GL_STENCIL_REF RT_STENCIL_REF
+#else
 #define GL_STENCIL_REF RTGLC_ABSENT(GL_STENCIL_REF, "GL_STENCIL_REF: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_STENCIL_WRITEMASK
+#define GL_STENCIL_WRITEMASK RT_STENCIL_WRITEMASK
+#else
 #define GL_STENCIL_WRITEMASK RTGLC_ABSENT(GL_STENCIL_WRITEMASK, "GL_STENCIL_WRITEMASK: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_STENCIL_INDEX
+#define GL_STENCIL_INDEX RT_STENCIL_INDEX
+#else
 #define GL_STENCIL_INDEX RTGLC_ABSENT(GL_STENCIL_INDEX, "GL_STENCIL_INDEX: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_KEEP
+#define GL_KEEP RT_KEEP
+#else
 #define GL_KEEP RTGLC_ABSENT(GL_KEEP, "GL_KEEP: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_INCR
+#define GL_INCR RT_INCR
+#else
 #define GL_INCR RTGLC_ABSENT(GL_INCR, "GL_INCR: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_DECR
+#define GL_DECR RT_DECR
+#else
 #define GL_DECR RTGLC_ABSENT(GL_DECR, "GL_DECR: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_COLOR_INDEX
+#define GL_COLOR_INDEX RT_COLOR_INDEX
+#else
 #define GL_COLOR_INDEX RTGLC_ABSENT(GL_COLOR_INDEX, "GL_COLOR_INDEX: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_ALPHA_BITS
+#define GL_ALPHA_BITS RT_ALPHA_BITS
+#else
 #define GL_ALPHA_BITS RTGLC_ABSENT(GL_ALPHA_BITS, "GL_ALPHA_BITS: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_RED_BITS
+#define GL_RED_BITS RT_RED_BITS
+#else
 #define GL_RED_BITS RTGLC_ABSENT(GL_RED_BITS, "GL_RED_BITS: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_GREEN_BITS
+#define GL_GREEN_BITS RT_GREEN_BITS
+#else
 #define GL_GREEN_BITS RTGLC_ABSENT(GL_GREEN_BITS, "GL_GREEN_BITS: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_BLUE_BITS
+#define GL_BLUE_BITS RT_BLUE_BITS
+#else
 #define GL_BLUE_BITS RTGLC_ABSENT(GL_BLUE_BITS, "GL_BLUE_BITS: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_INDEX_BITS
+#define GL_INDEX_BITS RT_INDEX_BITS
+#else
 #define GL_INDEX_BITS RTGLC_ABSENT(GL_INDEX_BITS, "GL_INDEX_BITS: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_SUBPIXEL_BITS
+#define GL_SUBPIXEL_BITS RT_SUBPIXEL_BITS
+#else
 #define GL_SUBPIXEL_BITS RTGLC_ABSENT(GL_SUBPIXEL_BITS, "GL_SUBPIXEL_BITS: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_AUX_BUFFERS
+#define GL_AUX_BUFFERS RT_AUX_BUFFERS
+#else
 #define GL_AUX_BUFFERS RTGLC_ABSENT(GL_AUX_BUFFERS, "GL_AUX_BUFFERS: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_DOUBLEBUFFER
+#define GL_DOUBLEBUFFER RT_DOUBLEBUFFER
+#else
 #define GL_DOUBLEBUFFER RTGLC_ABSENT(GL_DOUBLEBUFFER, "GL_DOUBLEBUFFER: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_STEREO
+#define GL_STEREO RT_STEREO
+#else
 #define GL_STEREO RTGLC_ABSENT(GL_STEREO, "GL_STEREO: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_BITMAP
+#define GL_BITMAP RT_BITMAP
+#else
 #define GL_BITMAP RTGLC_ABSENT(GL_BITMAP, "GL_BITMAP: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_STENCIL
+#define GL_STENCIL RT_STENCIL
+#else
 #define GL_STENCIL RTGLC_ABSENT(GL_STENCIL, "GL_STENCIL: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_MAX_LIST_NESTING
+#define GL_MAX_LIST_NESTING RT_MAX_LIST_NESTING
+#else
 #define GL_MAX_LIST_NESTING RTGLC_ABSENT(GL_MAX_LIST_NESTING, "GL_MAX_LIST_NESTING: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_MAX_EVAL_ORDER
+#define GL_MAX_EVAL_ORDER RT_MAX_EVAL_ORDER
+#else
 #define GL_MAX_EVAL_ORDER RTGLC_ABSENT(GL_MAX_EVAL_ORDER, "GL_MAX_EVAL_ORDER: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_MAX_CLIP_PLANES
+#define GL_MAX_CLIP_PLANES RT_MAX_CLIP_PLANES
+#else
 #define GL_MAX_CLIP_PLANES RTGLC_ABSENT(GL_MAX_CLIP_PLANES, "GL_MAX_CLIP_PLANES: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_MAX_PIXEL_MAP_TABLE
+#define GL_MAX_PIXEL_MAP_TABLE RT_MAX_PIXEL_MAP_TABLE
+#else
 #define GL_MAX_PIXEL_MAP_TABLE RTGLC_ABSENT(GL_MAX_PIXEL_MAP_TABLE, "GL_MAX_PIXEL_MAP_TABLE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_MAX_ATTRIB_STACK_DEPTH
+#define GL_MAX_ATTRIB_STACK_DEPTH RT_MAX_ATTRIB_STACK_DEPTH
+#else
 #define GL_MAX_ATTRIB_STACK_DEPTH RTGLC_ABSENT(GL_MAX_ATTRIB_STACK_DEPTH, "GL_MAX_ATTRIB_STACK_DEPTH: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_MAX_NAME_STACK_DEPTH
+#define GL_MAX_NAME_STACK_DEPTH RT_MAX_NAME_STACK_DEPTH
+#else
 #define GL_MAX_NAME_STACK_DEPTH RTGLC_ABSENT(GL_MAX_NAME_STACK_DEPTH, "GL_MAX_NAME_STACK_DEPTH: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_MAX_CLIENT_ATTRIB_STACK_DEPTH
+#define GL_MAX_CLIENT_ATTRIB_STACK_DEPTH RT_MAX_CLIENT_ATTRIB_STACK_DEPTH
+#else
 #define GL_MAX_CLIENT_ATTRIB_STACK_DEPTH RTGLC_ABSENT(GL_MAX_CLIENT_ATTRIB_STACK_DEPTH, "GL_MAX_CLIENT_ATTRIB_STACK_DEPTH: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_ATTRIB_STACK_DEPTH
+#define GL_ATTRIB_STACK_DEPTH RT_ATTRIB_STACK_DEPTH
+#else
 #define GL_ATTRIB_STACK_DEPTH RTGLC_ABSENT(GL_ATTRIB_STACK_DEPTH, "GL_ATTRIB_STACK_DEPTH: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_CLIENT_ATTRIB_STACK_DEPTH
+#define GL_CLIENT_ATTRIB_STACK_DEPTH RT_CLIENT_ATTRIB_STACK_DEPTH
+#else
 #define GL_CLIENT_ATTRIB_STACK_DEPTH RTGLC_ABSENT(GL_CLIENT_ATTRIB_STACK_DEPTH, "GL_CLIENT_ATTRIB_STACK_DEPTH: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_COLOR_WRITEMASK
+#define GL_COLOR_WRITEMASK RT_COLOR_WRITEMASK
+#else
 #define GL_COLOR_WRITEMASK RTGLC_ABSENT(GL_COLOR_WRITEMASK, "GL_COLOR_WRITEMASK: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_CURRENT_INDEX
+#define GL_CURRENT_INDEX RT_CURRENT_INDEX
+#else
 #define GL_CURRENT_INDEX RTGLC_ABSENT(GL_CURRENT_INDEX, "GL_CURRENT_INDEX: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_CURRENT_RASTER_DISTANCE
+#define GL_CURRENT_RASTER_DISTANCE RT_CURRENT_RASTER_DISTANCE
+#else
 #define GL_CURRENT_RASTER_DISTANCE RTGLC_ABSENT(GL_CURRENT_RASTER_DISTANCE, "GL_CURRENT_RASTER_DISTANCE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_CURRENT_RASTER_INDEX
+#define GL_CURRENT_RASTER_INDEX RT_CURRENT_RASTER_INDEX
+#else
 #define GL_CURRENT_RASTER_INDEX RTGLC_ABSENT(GL_CURRENT_RASTER_INDEX, "GL_CURRENT_RASTER_INDEX: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_CURRENT_RASTER_POSITION_VALID
+#define GL_CURRENT_RASTER_POSITION_VALID RT_CURRENT_RASTER_POSITION_VALID
+#else
 #define GL_CURRENT_RASTER_POSITION_VALID RTGLC_ABSENT(GL_CURRENT_RASTER_POSITION_VALID, "GL_CURRENT_RASTER_POSITION_VALID: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_INDEX_CLEAR_VALUE
+#define GL_INDEX_CLEAR_VALUE RT_INDEX_CLEAR_VALUE
+#else
 #define GL_INDEX_CLEAR_VALUE RTGLC_ABSENT(GL_INDEX_CLEAR_VALUE, "GL_INDEX_CLEAR_VALUE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_INDEX_MODE
+#define GL_INDEX_MODE RT_INDEX_MODE
+#else
 #define GL_INDEX_MODE RTGLC_ABSENT(GL_INDEX_MODE, "GL_INDEX_MODE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_INDEX_WRITEMASK
+#define GL_INDEX_WRITEMASK RT_INDEX_WRITEMASK
+#else
 #define GL_INDEX_WRITEMASK RTGLC_ABSENT(GL_INDEX_WRITEMASK, "GL_INDEX_WRITEMASK: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_NAME_STACK_DEPTH
+#define GL_NAME_STACK_DEPTH RT_NAME_STACK_DEPTH
+#else
 #define GL_NAME_STACK_DEPTH RTGLC_ABSENT(GL_NAME_STACK_DEPTH, "GL_NAME_STACK_DEPTH: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_RENDER_MODE
+#define GL_RENDER_MODE RT_RENDER_MODE
+#else
 #define GL_RENDER_MODE RTGLC_ABSENT(GL_RENDER_MODE, "GL_RENDER_MODE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_RGBA_MODE
+#define GL_RGBA_MODE RT_RGBA_MODE
+#else
 #define GL_RGBA_MODE RTGLC_ABSENT(GL_RGBA_MODE, "GL_RGBA_MODE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_AUTO_NORMAL
+#define GL_AUTO_NORMAL RT_AUTO_NORMAL
+#else
 #define GL_AUTO_NORMAL RTGLC_ABSENT(GL_AUTO_NORMAL, "GL_AUTO_NORMAL: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_MAP1_COLOR_4
+#define GL_MAP1_COLOR_4 RT_MAP1_COLOR_4
+#else
 #define GL_MAP1_COLOR_4 RTGLC_ABSENT(GL_MAP1_COLOR_4, "GL_MAP1_COLOR_4: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_MAP1_INDEX
+#define GL_MAP1_INDEX RT_MAP1_INDEX
+#else
 #define GL_MAP1_INDEX RTGLC_ABSENT(GL_MAP1_INDEX, "GL_MAP1_INDEX: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_MAP1_NORMAL
+#define GL_MAP1_NORMAL RT_MAP1_NORMAL
+#else
 #define GL_MAP1_NORMAL RTGLC_ABSENT(GL_MAP1_NORMAL, "GL_MAP1_NORMAL: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_MAP1_TEXTURE_COORD_1
+#define GL_MAP1_TEXTURE_COORD_1 RT_MAP1_TEXTURE_COORD_1
+#else
 #define GL_MAP1_TEXTURE_COORD_1 RTGLC_ABSENT(GL_MAP1_TEXTURE_COORD_1, "GL_MAP1_TEXTURE_COORD_1: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_MAP1_TEXTURE_COORD_2
+#define GL_MAP1_TEXTURE_COORD_2 RT_MAP1_TEXTURE_COORD_2
+#else
 #define GL_MAP1_TEXTURE_COORD_2 RTGLC_ABSENT(GL_MAP1_TEXTURE_COORD_2, "GL_MAP1_TEXTURE_COORD_2: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_MAP1_TEXTURE_COORD_3
+#define GL_MAP1_TEXTURE_COORD_3 RT_MAP1_TEXTURE_COORD_3
+#else
 #define GL_MAP1_TEXTURE_COORD_3 RTGLC_ABSENT(GL_MAP1_TEXTURE_COORD_3, "GL_MAP1_TEXTURE_COORD_3: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_MAP1_TEXTURE_COORD_4
+#define GL_MAP1_TEXTURE_COORD_4 RT_MAP1_TEXTURE_COORD_4
+#else
 #define GL_MAP1_TEXTURE_COORD_4 RTGLC_ABSENT(GL_MAP1_TEXTURE_COORD_4, "GL_MAP1_TEXTURE_COORD_4: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_MAP1_VERTEX_3
+#define GL_MAP1_VERTEX_3 RT_MAP1_VERTEX_3
+#else
 #define GL_MAP1_VERTEX_3 RTGLC_ABSENT(GL_MAP1_VERTEX_3, "GL_MAP1_VERTEX_3: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_MAP1_VERTEX_4
+#define GL_MAP1_VERTEX_4 RT_MAP1_VERTEX_4
+#else
 #define GL_MAP1_VERTEX_4 RTGLC_ABSENT(GL_MAP1_VERTEX_4, "GL_MAP1_VERTEX_4: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_MAP2_COLOR_4
+#define GL_MAP2_COLOR_4 RT_MAP2_COLOR_4
+#else
 #define GL_MAP2_COLOR_4 RTGLC_ABSENT(GL_MAP2_COLOR_4, "GL_MAP2_COLOR_4: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_MAP2_INDEX
+#define GL_MAP2_INDEX RT_MAP2_INDEX
+#else
 #define GL_MAP2_INDEX RTGLC_ABSENT(GL_MAP2_INDEX, "GL_MAP2_INDEX: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_MAP2_NORMAL
+#define GL_MAP2_NORMAL RT_MAP2_NORMAL
+#else
 #define GL_MAP2_NORMAL RTGLC_ABSENT(GL_MAP2_NORMAL, "GL_MAP2_NORMAL: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_MAP2_TEXTURE_COORD_1
+#define GL_MAP2_TEXTURE_COORD_1 RT_MAP2_TEXTURE_COORD_1
+#else
 #define GL_MAP2_TEXTURE_COORD_1 RTGLC_ABSENT(GL_MAP2_TEXTURE_COORD_1, "GL_MAP2_TEXTURE_COORD_1: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_MAP2_TEXTURE_COORD_2
+#define GL_MAP2_TEXTURE_COORD_2 RT_MAP2_TEXTURE_COORD_2
+#else
 #define GL_MAP2_TEXTURE_COORD_2 RTGLC_ABSENT(GL_MAP2_TEXTURE_COORD_2, "GL_MAP2_TEXTURE_COORD_2: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_MAP2_TEXTURE_COORD_3
+#define GL_MAP2_TEXTURE_COORD_3 RT_MAP2_TEXTURE_COORD_3
+#else
 #define GL_MAP2_TEXTURE_COORD_3 RTGLC_ABSENT(GL_MAP2_TEXTURE_COORD_3, "GL_MAP2_TEXTURE_COORD_3: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_MAP2_TEXTURE_COORD_4
+#define GL_MAP2_TEXTURE_COORD_4 RT_MAP2_TEXTURE_COORD_4
+#else
 #define GL_MAP2_TEXTURE_COORD_4 RTGLC_ABSENT(GL_MAP2_TEXTURE_COORD_4, "GL_MAP2_TEXTURE_COORD_4: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_MAP2_VERTEX_3
+#define GL_MAP2_VERTEX_3 RT_MAP2_VERTEX_3
+#else
 #define GL_MAP2_VERTEX_3 RTGLC_ABSENT(GL_MAP2_VERTEX_3, "GL_MAP2_VERTEX_3: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_MAP2_VERTEX_4
+#define GL_MAP2_VERTEX_4 RT_MAP2_VERTEX_4
+#else
 #define GL_MAP2_VERTEX_4 RTGLC_ABSENT(GL_MAP2_VERTEX_4, "GL_MAP2_VERTEX_4: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_MAP1_GRID_DOMAIN
+#define GL_MAP1_GRID_DOMAIN RT_MAP1_GRID_DOMAIN
+#else
 #define GL_MAP1_GRID_DOMAIN RTGLC_ABSENT(GL_MAP1_GRID_DOMAIN, "GL_MAP1_GRID_DOMAIN: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_MAP1_GRID_SEGMENTS
+#define GL_MAP1_GRID_SEGMENTS RT_MAP1_GRID_SEGMENTS
+#else
 #define GL_MAP1_GRID_SEGMENTS RTGLC_ABSENT(GL_MAP1_GRID_SEGMENTS, "GL_MAP1_GRID_SEGMENTS: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_MAP2_GRID_DOMAIN
+#define GL_MAP2_GRID_DOMAIN RT_MAP2_GRID_DOMAIN
+#else
 #define GL_MAP2_GRID_DOMAIN RTGLC_ABSENT(GL_MAP2_GRID_DOMAIN, "GL_MAP2_GRID_DOMAIN: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_MAP2_GRID_SEGMENTS
+#define GL_MAP2_GRID_SEGMENTS RT_MAP2_GRID_SEGMENTS
+#else
 #define GL_MAP2_GRID_SEGMENTS RTGLC_ABSENT(GL_MAP2_GRID_SEGMENTS, "GL_MAP2_GRID_SEGMENTS: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_COEFF
+#define GL_COEFF RT_COEFF
+#else
 #define GL_COEFF RTGLC_ABSENT(GL_COEFF, "GL_COEFF: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_ORDER
+#define GL_ORDER RT_ORDER
+#else
 #define GL_ORDER RTGLC_ABSENT(GL_ORDER, "GL_ORDER: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_DOMAIN
+#define GL_DOMAIN RT_DOMAIN
+#else
 #define GL_DOMAIN RTGLC_ABSENT(GL_DOMAIN, "GL_DOMAIN: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_SCISSOR_BOX
+#define GL_SCISSOR_BOX RT_SCISSOR_BOX
+#else
 #define GL_SCISSOR_BOX RTGLC_ABSENT(GL_SCISSOR_BOX, "GL_SCISSOR_BOX: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_SCISSOR_TEST
+#define GL_SCISSOR_TEST RT_SCISSOR_TEST
+#else
 #define GL_SCISSOR_TEST RTGLC_ABSENT(GL_SCISSOR_TEST, "GL_SCISSOR_TEST: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_MAP_COLOR
+#define GL_MAP_COLOR RT_MAP_COLOR
+#else
 #define GL_MAP_COLOR RTGLC_ABSENT(GL_MAP_COLOR, "GL_MAP_COLOR: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_MAP_STENCIL
+#define GL_MAP_STENCIL RT_MAP_STENCIL
+#else
 #define GL_MAP_STENCIL RTGLC_ABSENT(GL_MAP_STENCIL, "GL_MAP_STENCIL: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_INDEX_SHIFT
+#define GL_INDEX_SHIFT RT_INDEX_SHIFT
+#else
 #define GL_INDEX_SHIFT RTGLC_ABSENT(GL_INDEX_SHIFT, "GL_INDEX_SHIFT: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_INDEX_OFFSET
+#define GL_INDEX_OFFSET RT_INDEX_OFFSET
+#else
 #define GL_INDEX_OFFSET RTGLC_ABSENT(GL_INDEX_OFFSET, "GL_INDEX_OFFSET: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_RED_SCALE
+#define GL_RED_SCALE RT_RED_SCALE
+#else
 #define GL_RED_SCALE RTGLC_ABSENT(GL_RED_SCALE, "GL_RED_SCALE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_RED_BIAS
+#define GL_RED_BIAS RT_RED_BIAS
+#else
 #define GL_RED_BIAS RTGLC_ABSENT(GL_RED_BIAS, "GL_RED_BIAS: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_GREEN_SCALE
+#define GL_GREEN_SCALE RT_GREEN_SCALE
+#else
 #define GL_GREEN_SCALE RTGLC_ABSENT(GL_GREEN_SCALE, "GL_GREEN_SCALE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_GREEN_BIAS
+#define GL_GREEN_BIAS RT_GREEN_BIAS
+#else
 #define GL_GREEN_BIAS RTGLC_ABSENT(GL_GREEN_BIAS, "GL_GREEN_BIAS: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_BLUE_SCALE
+#define GL_BLUE_SCALE RT_BLUE_SCALE
+#else
 #define GL_BLUE_SCALE RTGLC_ABSENT(GL_BLUE_SCALE, "GL_BLUE_SCALE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_BLUE_BIAS
+#define GL_BLUE_BIAS RT_BLUE_BIAS
+#else
 #define GL_BLUE_BIAS RTGLC_ABSENT(GL_BLUE_BIAS, "GL_BLUE_BIAS: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_ALPHA_SCALE
+#define GL_ALPHA_SCALE RT_ALPHA_SCALE
+#else
 #define GL_ALPHA_SCALE RTGLC_ABSENT(GL_ALPHA_SCALE, "GL_ALPHA_SCALE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_ALPHA_BIAS
+#define GL_ALPHA_BIAS RT_ALPHA_BIAS
+#else
 #define GL_ALPHA_BIAS RTGLC_ABSENT(GL_ALPHA_BIAS, "GL_ALPHA_BIAS: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_DEPTH_SCALE
+#define GL_DEPTH_SCALE RT_DEPTH_SCALE
+#else
 #define GL_DEPTH_SCALE RTGLC_ABSENT(GL_DEPTH_SCALE, "GL_DEPTH_SCALE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_DEPTH_BIAS
+#define GL_DEPTH_BIAS RT_DEPTH_BIAS
+#else
 #define GL_DEPTH_BIAS RTGLC_ABSENT(GL_DEPTH_BIAS, "GL_DEPTH_BIAS: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_PIXEL_MAP_S_TO_S_SIZE
+#define GL_PIXEL_MAP_S_TO_S_SIZE RT_PIXEL_MAP_S_TO_S_SIZE
+#else
 #define GL_PIXEL_MAP_S_TO_S_SIZE RTGLC_ABSENT(GL_PIXEL_MAP_S_TO_S_SIZE, "GL_PIXEL_MAP_S_TO_S_SIZE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_PIXEL_MAP_I_TO_I_SIZE
+#define GL_PIXEL_MAP_I_TO_I_SIZE RT_PIXEL_MAP_I_TO_I_SIZE
+#else
 #define GL_PIXEL_MAP_I_TO_I_SIZE RTGLC_ABSENT(GL_PIXEL_MAP_I_TO_I_SIZE, "GL_PIXEL_MAP_I_TO_I_SIZE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_PIXEL_MAP_I_TO_R_SIZE
+#define GL_PIXEL_MAP_I_TO_R_SIZE RT_PIXEL_MAP_I_TO_R_SIZE
+#else
 #define GL_PIXEL_MAP_I_TO_R_SIZE RTGLC_ABSENT(GL_PIXEL_MAP_I_TO_R_SIZE, "GL_PIXEL_MAP_I_TO_R_SIZE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_PIXEL_MAP_I_TO_G_SIZE
+#define GL_PIXEL_MAP_I_TO_G_SIZE RT_PIXEL_MAP_I_TO_G_SIZE
+#else
 #define GL_PIXEL_MAP_I_TO_G_SIZE RTGLC_ABSENT(GL_PIXEL_MAP_I_TO_G_SIZE, "GL_PIXEL_MAP_I_TO_G_SIZE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_PIXEL_MAP_I_TO_B_SIZE
+#define GL_PIXEL_MAP_I_TO_B_SIZE RT_PIXEL_MAP_I_TO_B_SIZE
+#else
 #define GL_PIXEL_MAP_I_TO_B_SIZE RTGLC_ABSENT(GL_PIXEL_MAP_I_TO_B_SIZE, "GL_PIXEL_MAP_I_TO_B_SIZE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_PIXEL_MAP_I_TO_A_SIZE
+#define GL_PIXEL_MAP_I_TO_A_SIZE RT_PIXEL_MAP_I_TO_A_SIZE
+#else
 #define GL_PIXEL_MAP_I_TO_A_SIZE RTGLC_ABSENT(GL_PIXEL_MAP_I_TO_A_SIZE, "GL_PIXEL_MAP_I_TO_A_SIZE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_PIXEL_MAP_R_TO_R_SIZE
+#define GL_PIXEL_MAP_R_TO_R_SIZE RT_PIXEL_MAP_R_TO_R_SIZE
+#else
 #define GL_PIXEL_MAP_R_TO_R_SIZE RTGLC_ABSENT(GL_PIXEL_MAP_R_TO_R_SIZE, "GL_PIXEL_MAP_R_TO_R_SIZE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_PIXEL_MAP_G_TO_G_SIZE
+#define GL_PIXEL_MAP_G_TO_G_SIZE RT_PIXEL_MAP_G_TO_G_SIZE
+#else
 #define GL_PIXEL_MAP_G_TO_G_SIZE RTGLC_ABSENT(GL_PIXEL_MAP_G_TO_G_SIZE, "GL_PIXEL_MAP_G_TO_G_SIZE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_PIXEL_MAP_B_TO_B_SIZE
+#define GL_PIXEL_MAP_B_TO_B_SIZE RT_PIXEL_MAP_B_TO_B_SIZE
+#else
 #define GL_PIXEL_MAP_B_TO_B_SIZE RTGLC_ABSENT(GL_PIXEL_MAP_B_TO_B_SIZE, "GL_PIXEL_MAP_B_TO_B_SIZE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_PIXEL_MAP_A_TO_A_SIZE
+#define GL_PIXEL_MAP_A_TO_A_SIZE RT_PIXEL_MAP_A_TO_A_SIZE
+#else
 #define GL_PIXEL_MAP_A_TO_A_SIZE RTGLC_ABSENT(GL_PIXEL_MAP_A_TO_A_SIZE, "GL_PIXEL_MAP_A_TO_A_SIZE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_PIXEL_MAP_S_TO_S
+#define GL_PIXEL_MAP_S_TO_S RT_PIXEL_MAP_S_TO_S
+#else
 #define GL_PIXEL_MAP_S_TO_S RTGLC_ABSENT(GL_PIXEL_MAP_S_TO_S, "GL_PIXEL_MAP_S_TO_S: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_PIXEL_MAP_I_TO_I
+#define GL_PIXEL_MAP_I_TO_I RT_PIXEL_MAP_I_TO_I
+#else
 #define GL_PIXEL_MAP_I_TO_I RTGLC_ABSENT(GL_PIXEL_MAP_I_TO_I, "GL_PIXEL_MAP_I_TO_I: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_PIXEL_MAP_I_TO_R
+#define GL_PIXEL_MAP_I_TO_R RT_PIXEL_MAP_I_TO_R
+#else
 #define GL_PIXEL_MAP_I_TO_R RTGLC_ABSENT(GL_PIXEL_MAP_I_TO_R, "GL_PIXEL_MAP_I_TO_R: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_PIXEL_MAP_I_TO_G
+#define GL_PIXEL_MAP_I_TO_G RT_PIXEL_MAP_I_TO_G
+#else
 #define GL_PIXEL_MAP_I_TO_G RTGLC_ABSENT(GL_PIXEL_MAP_I_TO_G, "GL_PIXEL_MAP_I_TO_G: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_PIXEL_MAP_I_TO_B
+#define GL_PIXEL_MAP_I_TO_B RT_PIXEL_MAP_I_TO_B
+#else
 #define GL_PIXEL_MAP_I_TO_B RTGLC_ABSENT(GL_PIXEL_MAP_I_TO_B, "GL_PIXEL_MAP_I_TO_B: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_PIXEL_MAP_I_TO_A
+#define GL_PIXEL_MAP_I_TO_A RT_PIXEL_MAP_I_TO_A
+#else
 #define GL_PIXEL_MAP_I_TO_A RTGLC_ABSENT(GL_PIXEL_MAP_I_TO_A, "GL_PIXEL_MAP_I_TO_A: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_PIXEL_MAP_R_TO_R
+#define GL_PIXEL_MAP_R_TO_R RT_PIXEL_MAP_R_TO_R
+#else
 #define GL_PIXEL_MAP_R_TO_R RTGLC_ABSENT(GL_PIXEL_MAP_R_TO_R, "GL_PIXEL_MAP_R_TO_R: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_PIXEL_MAP_G_TO_G
+#define GL_PIXEL_MAP_G_TO_G RT_PIXEL_MAP_G_TO_G
+#else
 #define GL_PIXEL_MAP_G_TO_G RTGLC_ABSENT(GL_PIXEL_MAP_G_TO_G, "GL_PIXEL_MAP_G_TO_G: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_PIXEL_MAP_B_TO_B
+#define GL_PIXEL_MAP_B_TO_B RT_PIXEL_MAP_B_TO_B
+#else
 #define GL_PIXEL_MAP_B_TO_B RTGLC_ABSENT(GL_PIXEL_MAP_B_TO_B, "GL_PIXEL_MAP_B_TO_B: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_PIXEL_MAP_A_TO_A
+#define GL_PIXEL_MAP_A_TO_A RT_PIXEL_MAP_A_TO_A
+#else
 #define GL_PIXEL_MAP_A_TO_A RTGLC_ABSENT(GL_PIXEL_MAP_A_TO_A, "GL_PIXEL_MAP_A_TO_A: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_ZOOM_X
+#define GL_ZOOM_X RT_ZOOM_X
+#else
 #define GL_ZOOM_X RTGLC_ABSENT(GL_ZOOM_X, "GL_ZOOM_X: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_ZOOM_Y
+#define GL_ZOOM_Y RT_ZOOM_Y
+#else
 #define GL_ZOOM_Y RTGLC_ABSENT(GL_ZOOM_Y, "GL_ZOOM_Y: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_TEXTURE_1D
+#define GL_TEXTURE_1D RT_TEXTURE_1D
+#else
 #define GL_TEXTURE_1D RTGLC_ABSENT(GL_TEXTURE_1D, "GL_TEXTURE_1D: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_TEXTURE_BORDER_COLOR
+#define GL_TEXTURE_BORDER_COLOR RT_TEXTURE_BORDER_COLOR
+#else
 #define GL_TEXTURE_BORDER_COLOR RTGLC_ABSENT(GL_TEXTURE_BORDER_COLOR, "GL_TEXTURE_BORDER_COLOR: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_TEXTURE_WIDTH
+#define GL_TEXTURE_WIDTH RT_TEXTURE_WIDTH
+#else
 #define GL_TEXTURE_WIDTH RTGLC_ABSENT(GL_TEXTURE_WIDTH, "GL_TEXTURE_WIDTH: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_TEXTURE_HEIGHT
+#define GL_TEXTURE_HEIGHT RT_TEXTURE_HEIGHT
+#else
 #define GL_TEXTURE_HEIGHT RTGLC_ABSENT(GL_TEXTURE_HEIGHT, "GL_TEXTURE_HEIGHT: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_TEXTURE_BORDER
+#define GL_TEXTURE_BORDER RT_TEXTURE_BORDER
+#else
 #define GL_TEXTURE_BORDER RTGLC_ABSENT(GL_TEXTURE_BORDER, "GL_TEXTURE_BORDER: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_TEXTURE_COMPONENTS
+#define GL_TEXTURE_COMPONENTS RT_TEXTURE_COMPONENTS
+#else
 #define GL_TEXTURE_COMPONENTS RTGLC_ABSENT(GL_TEXTURE_COMPONENTS, "GL_TEXTURE_COMPONENTS: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_TEXTURE_RED_SIZE
+#define GL_TEXTURE_RED_SIZE RT_TEXTURE_RED_SIZE
+#else
 #define GL_TEXTURE_RED_SIZE RTGLC_ABSENT(GL_TEXTURE_RED_SIZE, "GL_TEXTURE_RED_SIZE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_TEXTURE_GREEN_SIZE
+#define GL_TEXTURE_GREEN_SIZE RT_TEXTURE_GREEN_SIZE
+#else
 #define GL_TEXTURE_GREEN_SIZE RTGLC_ABSENT(GL_TEXTURE_GREEN_SIZE, "GL_TEXTURE_GREEN_SIZE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_TEXTURE_BLUE_SIZE
+#define GL_TEXTURE_BLUE_SIZE RT_TEXTURE_BLUE_SIZE
+#else
 #define GL_TEXTURE_BLUE_SIZE RTGLC_ABSENT(GL_TEXTURE_BLUE_SIZE, "GL_TEXTURE_BLUE_SIZE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_TEXTURE_ALPHA_SIZE
+#define GL_TEXTURE_ALPHA_SIZE RT_TEXTURE_ALPHA_SIZE
+#else
 #define GL_TEXTURE_ALPHA_SIZE RTGLC_ABSENT(GL_TEXTURE_ALPHA_SIZE, "GL_TEXTURE_ALPHA_SIZE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_TEXTURE_LUMINANCE_SIZE
+#define GL_TEXTURE_LUMINANCE_SIZE RT_TEXTURE_LUMINANCE_SIZE
+#else
 #define GL_TEXTURE_LUMINANCE_SIZE RTGLC_ABSENT(GL_TEXTURE_LUMINANCE_SIZE, "GL_TEXTURE_LUMINANCE_SIZE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_TEXTURE_INTENSITY_SIZE
+#define GL_TEXTURE_INTENSITY_SIZE RT_TEXTURE_INTENSITY_SIZE
+#else
 #define GL_TEXTURE_INTENSITY_SIZE RTGLC_ABSENT(GL_TEXTURE_INTENSITY_SIZE, "GL_TEXTURE_INTENSITY_SIZE: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_CURRENT_BIT
+#define GL_CURRENT_BIT RT_CURRENT_BIT
+#else
 #define GL_CURRENT_BIT RTGLC_ABSENT(GL_CURRENT_BIT, "GL_CURRENT_BIT: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_POINT_BIT
+#define GL_POINT_BIT RT_POINT_BIT
+#else
 #define GL_POINT_BIT RTGLC_ABSENT(GL_POINT_BIT, "GL_POINT_BIT: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_LINE_BIT
+#define GL_LINE_BIT RT_LINE_BIT
+#else
 #define GL_LINE_BIT RTGLC_ABSENT(GL_LINE_BIT, "GL_LINE_BIT: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_POLYGON_BIT
+#define GL_POLYGON_BIT RT_POLYGON_BIT
+#else
 #define GL_POLYGON_BIT RTGLC_ABSENT(GL_POLYGON_BIT, "GL_POLYGON_BIT: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_POLYGON_STIPPLE_BIT
+#define GL_POLYGON_STIPPLE_BIT RT_POLYGON_STIPPLE_BIT
+#else
 #define GL_POLYGON_STIPPLE_BIT RTGLC_ABSENT(GL_POLYGON_STIPPLE_BIT, "GL_POLYGON_STIPPLE_BIT: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_PIXEL_MODE_BIT
+#define GL_PIXEL_MODE_BIT RT_PIXEL_MODE_BIT
+#else
 #define GL_PIXEL_MODE_BIT RTGLC_ABSENT(GL_PIXEL_MODE_BIT, "GL_PIXEL_MODE_BIT: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_LIGHTING_BIT
+#define GL_LIGHTING_BIT RT_LIGHTING_BIT
+#else
 #define GL_LIGHTING_BIT RTGLC_ABSENT(GL_LIGHTING_BIT, "GL_LIGHTING_BIT: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_FOG_BIT
+#define GL_FOG_BIT RT_FOG_BIT
+#else
 #define GL_FOG_BIT RTGLC_ABSENT(GL_FOG_BIT, "GL_FOG_BIT: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_VIEWPORT_BIT
+#define GL_VIEWPORT_BIT RT_VIEWPORT_BIT
+#else
 #define GL_VIEWPORT_BIT RTGLC_ABSENT(GL_VIEWPORT_BIT, "GL_VIEWPORT_BIT: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_TRANSFORM_BIT
+#define GL_TRANSFORM_BIT RT_TRANSFORM_BIT
+#else
 #define GL_TRANSFORM_BIT RTGLC_ABSENT(GL_TRANSFORM_BIT, "GL_TRANSFORM_BIT: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_ENABLE_BIT
+#define GL_ENABLE_BIT RT_ENABLE_BIT
+#else
 #define GL_ENABLE_BIT RTGLC_ABSENT(GL_ENABLE_BIT, "GL_ENABLE_BIT: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_HINT_BIT
+#define GL_HINT_BIT RT_HINT_BIT
+#else
 #define GL_HINT_BIT RTGLC_ABSENT(GL_HINT_BIT, "GL_HINT_BIT: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_EVAL_BIT
+#define GL_EVAL_BIT RT_EVAL_BIT
+#else
 #define GL_EVAL_BIT RTGLC_ABSENT(GL_EVAL_BIT, "GL_EVAL_BIT: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_LIST_BIT
+#define GL_LIST_BIT RT_LIST_BIT
+#else
 #define GL_LIST_BIT RTGLC_ABSENT(GL_LIST_BIT, "GL_LIST_BIT: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_TEXTURE_BIT
+#define GL_TEXTURE_BIT RT_TEXTURE_BIT
+#else
 #define GL_TEXTURE_BIT RTGLC_ABSENT(GL_TEXTURE_BIT, "GL_TEXTURE_BIT: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_SCISSOR_BIT
+#define GL_SCISSOR_BIT RT_SCISSOR_BIT
+#else
 #define GL_SCISSOR_BIT RTGLC_ABSENT(GL_SCISSOR_BIT, "GL_SCISSOR_BIT: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_ALL_ATTRIB_BITS
+#define GL_ALL_ATTRIB_BITS RT_ALL_ATTRIB_BITS
+#else
 #define GL_ALL_ATTRIB_BITS RTGLC_ABSENT(GL_ALL_ATTRIB_BITS, "GL_ALL_ATTRIB_BITS: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_PROXY_TEXTURE_1D
+#define GL_PROXY_TEXTURE_1D RT_PROXY_TEXTURE_1D
+#else
 #define GL_PROXY_TEXTURE_1D RTGLC_ABSENT(GL_PROXY_TEXTURE_1D, "GL_PROXY_TEXTURE_1D: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_PROXY_TEXTURE_2D
+#define GL_PROXY_TEXTURE_2D RT_PROXY_TEXTURE_2D
+#else
 #define GL_PROXY_TEXTURE_2D RTGLC_ABSENT(GL_PROXY_TEXTURE_2D, "GL_PROXY_TEXTURE_2D: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_TEXTURE_PRIORITY
+#define GL_TEXTURE_PRIORITY RT_TEXTURE_PRIORITY
+#else
 #define GL_TEXTURE_PRIORITY RTGLC_ABSENT(GL_TEXTURE_PRIORITY, "GL_TEXTURE_PRIORITY: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_TEXTURE_RESIDENT
+#define GL_TEXTURE_RESIDENT RT_TEXTURE_RESIDENT
+#else
 #define GL_TEXTURE_RESIDENT RTGLC_ABSENT(GL_TEXTURE_RESIDENT, "GL_TEXTURE_RESIDENT: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_TEXTURE_BINDING_1D
+#define GL_TEXTURE_BINDING_1D RT_TEXTURE_BINDING_1D
+#else
 #define GL_TEXTURE_BINDING_1D RTGLC_ABSENT(GL_TEXTURE_BINDING_1D, "GL_TEXTURE_BINDING_1D: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_TEXTURE_INTERNAL_FORMAT
+#define GL_TEXTURE_INTERNAL_FORMAT RT_TEXTURE_INTERNAL_FORMAT
+#else
 #define GL_TEXTURE_INTERNAL_FORMAT RTGLC_ABSENT(GL_TEXTURE_INTERNAL_FORMAT, "GL_TEXTURE_INTERNAL_FORMAT: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_ALPHA4
+#define GL_ALPHA4 RT_ALPHA4
+#else
 #define GL_ALPHA4 RTGLC_ABSENT(GL_ALPHA4, "GL_ALPHA4: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_ALPHA8
+#define GL_ALPHA8 RT_ALPHA8
+#else
 #define GL_ALPHA8 RTGLC_ABSENT(GL_ALPHA8, "GL_ALPHA8: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_ALPHA12
+#define GL_ALPHA12 RT_ALPHA12
+#else
 #define GL_ALPHA12 RTGLC_ABSENT(GL_ALPHA12, "GL_ALPHA12: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_ALPHA16
+#define GL_ALPHA16 RT_ALPHA16
+#else
 #define GL_ALPHA16 RTGLC_ABSENT(GL_ALPHA16, "GL_ALPHA16: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_LUMINANCE4
+#define GL_LUMINANCE4 RT_LUMINANCE4
+#else
 #define GL_LUMINANCE4 RTGLC_ABSENT(GL_LUMINANCE4, "GL_LUMINANCE4: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_LUMINANCE8
+#define GL_LUMINANCE8 RT_LUMINANCE8
+#else
 #define GL_LUMINANCE8 RTGLC_ABSENT(GL_LUMINANCE8, "GL_LUMINANCE8: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_LUMINANCE12
+#define GL_LUMINANCE12 RT_LUMINANCE12
+#else
 #define GL_LUMINANCE12 RTGLC_ABSENT(GL_LUMINANCE12, "GL_LUMINANCE12: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_LUMINANCE16
+#define GL_LUMINANCE16 RT_LUMINANCE16
+#else
 #define GL_LUMINANCE16 RTGLC_ABSENT(GL_LUMINANCE16, "GL_LUMINANCE16: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_LUMINANCE4_ALPHA4
+#define GL_LUMINANCE4_ALPHA4 RT_LUMINANCE4_ALPHA4
+#else
 #define GL_LUMINANCE4_ALPHA4 RTGLC_ABSENT(GL_LUMINANCE4_ALPHA4, "GL_LUMINANCE4_ALPHA4: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_LUMINANCE6_ALPHA2
+#define GL_LUMINANCE6_ALPHA2 RT_LUMINANCE6_ALPHA2
+#else
 #define GL_LUMINANCE6_ALPHA2 RTGLC_ABSENT(GL_LUMINANCE6_ALPHA2, "GL_LUMINANCE6_ALPHA2: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_LUMINANCE8_ALPHA8
+#define GL_LUMINANCE8_ALPHA8 RT_LUMINANCE8_ALPHA8
+#else
 #define GL_LUMINANCE8_ALPHA8 RTGLC_ABSENT(GL_LUMINANCE8_ALPHA8, "GL_LUMINANCE8_ALPHA8: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_LUMINANCE12_ALPHA4
+#define GL_LUMINANCE12_ALPHA4 RT_LUMINANCE12_ALPHA4
+#else
 #define GL_LUMINANCE12_ALPHA4 RTGLC_ABSENT(GL_LUMINANCE12_ALPHA4, "GL_LUMINANCE12_ALPHA4: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_LUMINANCE12_ALPHA12
+#define GL_LUMINANCE12_ALPHA12 RT_LUMINANCE12_ALPHA12
+#else
 #define GL_LUMINANCE12_ALPHA12 RTGLC_ABSENT(GL_LUMINANCE12_ALPHA12, "GL_LUMINANCE12_ALPHA12: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_LUMINANCE16_ALPHA16
+#define GL_LUMINANCE16_ALPHA16 RT_LUMINANCE16_ALPHA16
+#else
 #define GL_LUMINANCE16_ALPHA16 RTGLC_ABSENT(GL_LUMINANCE16_ALPHA16, "GL_LUMINANCE16_ALPHA16: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_INTENSITY4
+#define GL_INTENSITY4 RT_INTENSITY4
+#else
 #define GL_INTENSITY4 RTGLC_ABSENT(GL_INTENSITY4, "GL_INTENSITY4: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_INTENSITY8
+#define GL_INTENSITY8 RT_INTENSITY8
+#else
 #define GL_INTENSITY8 RTGLC_ABSENT(GL_INTENSITY8, "GL_INTENSITY8: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_INTENSITY12
+#define GL_INTENSITY12 RT_INTENSITY12
+#else
 #define GL_INTENSITY12 RTGLC_ABSENT(GL_INTENSITY12, "GL_INTENSITY12: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_INTENSITY16
+#define GL_INTENSITY16 RT_INTENSITY16
+#else
 #define GL_INTENSITY16 RTGLC_ABSENT(GL_INTENSITY16, "GL_INTENSITY16: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_R3_G3_B2
+#define GL_R3_G3_B2 RT_R3_G3_B2
+#else
 #define GL_R3_G3_B2 RTGLC_ABSENT(GL_R3_G3_B2, "GL_R3_G3_B2: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_RGB4
+#define GL_RGB4 RT_RGB4
+#else
 #define GL_RGB4 RTGLC_ABSENT(GL_RGB4, "GL_RGB4: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_RGB5
+#define GL_RGB5 RT_RGB5
+#else
 #define GL_RGB5 RTGLC_ABSENT(GL_RGB5, "GL_RGB5: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_RGB8
+#define GL_RGB8 RT_RGB8
+#else
 #define GL_RGB8 RTGLC_ABSENT(GL_RGB8, "GL_RGB8: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_RGB10
+#define GL_RGB10 RT_RGB10
+#else
 #define GL_RGB10 RTGLC_ABSENT(GL_RGB10, "GL_RGB10: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_RGB12
+#define GL_RGB12 RT_RGB12
+#else
 #define GL_RGB12 RTGLC_ABSENT(GL_RGB12, "GL_RGB12: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_RGB16
+#define GL_RGB16 RT_RGB16
+#else
 #define GL_RGB16 RTGLC_ABSENT(GL_RGB16, "GL_RGB16: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_RGBA2
+#define GL_RGBA2 RT_RGBA2
+#else
 #define GL_RGBA2 RTGLC_ABSENT(GL_RGBA2, "GL_RGBA2: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_RGBA4
+#define GL_RGBA4 RT_RGBA4
+#else
 #define GL_RGBA4 RTGLC_ABSENT(GL_RGBA4, "GL_RGBA4: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_RGB5_A1
+#define GL_RGB5_A1 RT_RGB5_A1
+#else
 #define GL_RGB5_A1 RTGLC_ABSENT(GL_RGB5_A1, "GL_RGB5_A1: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_RGBA8
+#define GL_RGBA8 RT_RGBA8
+#else
 #define GL_RGBA8 RTGLC_ABSENT(GL_RGBA8, "GL_RGBA8: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_RGB10_A2
+#define GL_RGB10_A2 RT_RGB10_A2
+#else
 #define GL_RGB10_A2 RTGLC_ABSENT(GL_RGB10_A2, "GL_RGB10_A2: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_RGBA12
+#define GL_RGBA12 RT_RGBA12
+#else
 #define GL_RGBA12 RTGLC_ABSENT(GL_RGBA12, "GL_RGBA12: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_RGBA16
+#define GL_RGBA16 RT_RGBA16
+#else
 #define GL_RGBA16 RTGLC_ABSENT(GL_RGBA16, "GL_RGBA16: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_CLIENT_PIXEL_STORE_BIT
+#define GL_CLIENT_PIXEL_STORE_BIT RT_CLIENT_PIXEL_STORE_BIT
+#else
 #define GL_CLIENT_PIXEL_STORE_BIT RTGLC_ABSENT(GL_CLIENT_PIXEL_STORE_BIT, "GL_CLIENT_PIXEL_STORE_BIT: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_CLIENT_VERTEX_ARRAY_BIT
+#define GL_CLIENT_VERTEX_ARRAY_BIT RT_CLIENT_VERTEX_ARRAY_BIT
+#else
 #define GL_CLIENT_VERTEX_ARRAY_BIT RTGLC_ABSENT(GL_CLIENT_VERTEX_ARRAY_BIT, "GL_CLIENT_VERTEX_ARRAY_BIT: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_ALL_CLIENT_ATTRIB_BITS
+#define GL_ALL_CLIENT_ATTRIB_BITS RT_ALL_CLIENT_ATTRIB_BITS
+#else
 #define GL_ALL_CLIENT_ATTRIB_BITS RTGLC_ABSENT(GL_ALL_CLIENT_ATTRIB_BITS, "GL_ALL_CLIENT_ATTRIB_BITS: no Tracelist equivalent (docs/glcompat.md)")
+#endif
+#ifdef RT_CLIENT_ALL_ATTRIB_BITS
+#define GL_CLIENT_ALL_ATTRIB_BITS RT_CLIENT_ALL_ATTRIB_BITS
+#else
 #define GL_CLIENT_ALL_ATTRIB_BITS RTGLC_ABSENT(GL_CLIENT_ALL_ATTRIB_BITS, "GL_CLIENT_ALL_ATTRIB_BITS: no Tracelist equivalent (docs/glcompat.md)")
+#endif
 
 /* ---- The GL 1.2 names GL 1.x programs commonly use ------------------- */
 #define GL_CLAMP_TO_EDGE RT_CLAMP_TO_EDGE
@@ -1767,99 +2872,471 @@ typedef RTUquadric GLUquadricObj;
 #define GLU_TRUE RT_TRUE
 #define GLU_VERSION 100800
 #define GLU_EXTENSIONS 100801
+#ifdef RTU_INVALID_ENUM
+#define GLU_INVALID_ENUM RTU_INVALID_ENUM
+#else
 #define GLU_INVALID_ENUM RTGLC_ABSENT(GLU_INVALID_ENUM, "GLU_INVALID_ENUM: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_INVALID_VALUE
+#define GLU_INVALID_VALUE RTU_INVALID_VALUE
+#else
 #define GLU_INVALID_VALUE RTGLC_ABSENT(GLU_INVALID_VALUE, "GLU_INVALID_VALUE: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_OUT_OF_MEMORY
+#define GLU_OUT_OF_MEMORY RTU_OUT_OF_MEMORY
+#else
 #define GLU_OUT_OF_MEMORY RTGLC_ABSENT(GLU_OUT_OF_MEMORY, "GLU_OUT_OF_MEMORY: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_INCOMPATIBLE_GL_VERSION
+#define GLU_INCOMPATIBLE_GL_VERSION RTU_INCOMPATIBLE_GL_VERSION
+#else
 #define GLU_INCOMPATIBLE_GL_VERSION RTGLC_ABSENT(GLU_INCOMPATIBLE_GL_VERSION, "GLU_INCOMPATIBLE_GL_VERSION: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_INVALID_OPERATION
+#define GLU_INVALID_OPERATION RTU_INVALID_OPERATION
+#else
 #define GLU_INVALID_OPERATION RTGLC_ABSENT(GLU_INVALID_OPERATION, "GLU_INVALID_OPERATION: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_OUTLINE_POLYGON
+#define GLU_OUTLINE_POLYGON RTU_OUTLINE_POLYGON
+#else
 #define GLU_OUTLINE_POLYGON RTGLC_ABSENT(GLU_OUTLINE_POLYGON, "GLU_OUTLINE_POLYGON: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_OUTLINE_PATCH
+#define GLU_OUTLINE_PATCH RTU_OUTLINE_PATCH
+#else
 #define GLU_OUTLINE_PATCH RTGLC_ABSENT(GLU_OUTLINE_PATCH, "GLU_OUTLINE_PATCH: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR
+#define GLU_NURBS_ERROR RTU_NURBS_ERROR
+#else
 #define GLU_NURBS_ERROR RTGLC_ABSENT(GLU_NURBS_ERROR, "GLU_NURBS_ERROR: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_ERROR
+#define GLU_ERROR RTU_ERROR
+#else
 #define GLU_ERROR RTGLC_ABSENT(GLU_ERROR, "GLU_ERROR: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_BEGIN
+#define GLU_NURBS_BEGIN RTU_NURBS_BEGIN
+#else
 #define GLU_NURBS_BEGIN RTGLC_ABSENT(GLU_NURBS_BEGIN, "GLU_NURBS_BEGIN: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_BEGIN_EXT
+#define GLU_NURBS_BEGIN_EXT RTU_NURBS_BEGIN_EXT
+#else
 #define GLU_NURBS_BEGIN_EXT RTGLC_ABSENT(GLU_NURBS_BEGIN_EXT, "GLU_NURBS_BEGIN_EXT: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_VERTEX
+#define GLU_NURBS_VERTEX RTU_NURBS_VERTEX
+#else
 #define GLU_NURBS_VERTEX RTGLC_ABSENT(GLU_NURBS_VERTEX, "GLU_NURBS_VERTEX: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_VERTEX_EXT
+#define GLU_NURBS_VERTEX_EXT RTU_NURBS_VERTEX_EXT
+#else
 #define GLU_NURBS_VERTEX_EXT RTGLC_ABSENT(GLU_NURBS_VERTEX_EXT, "GLU_NURBS_VERTEX_EXT: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_NORMAL
+#define GLU_NURBS_NORMAL RTU_NURBS_NORMAL
+#else
 #define GLU_NURBS_NORMAL RTGLC_ABSENT(GLU_NURBS_NORMAL, "GLU_NURBS_NORMAL: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_NORMAL_EXT
+#define GLU_NURBS_NORMAL_EXT RTU_NURBS_NORMAL_EXT
+#else
 #define GLU_NURBS_NORMAL_EXT RTGLC_ABSENT(GLU_NURBS_NORMAL_EXT, "GLU_NURBS_NORMAL_EXT: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_COLOR
+#define GLU_NURBS_COLOR RTU_NURBS_COLOR
+#else
 #define GLU_NURBS_COLOR RTGLC_ABSENT(GLU_NURBS_COLOR, "GLU_NURBS_COLOR: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_COLOR_EXT
+#define GLU_NURBS_COLOR_EXT RTU_NURBS_COLOR_EXT
+#else
 #define GLU_NURBS_COLOR_EXT RTGLC_ABSENT(GLU_NURBS_COLOR_EXT, "GLU_NURBS_COLOR_EXT: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_TEXTURE_COORD
+#define GLU_NURBS_TEXTURE_COORD RTU_NURBS_TEXTURE_COORD
+#else
 #define GLU_NURBS_TEXTURE_COORD RTGLC_ABSENT(GLU_NURBS_TEXTURE_COORD, "GLU_NURBS_TEXTURE_COORD: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_TEX_COORD_EXT
+#define GLU_NURBS_TEX_COORD_EXT RTU_NURBS_TEX_COORD_EXT
+#else
 #define GLU_NURBS_TEX_COORD_EXT RTGLC_ABSENT(GLU_NURBS_TEX_COORD_EXT, "GLU_NURBS_TEX_COORD_EXT: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_END
+#define GLU_NURBS_END RTU_NURBS_END
+#else
 #define GLU_NURBS_END RTGLC_ABSENT(GLU_NURBS_END, "GLU_NURBS_END: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_END_EXT
+#define GLU_NURBS_END_EXT RTU_NURBS_END_EXT
+#else
 #define GLU_NURBS_END_EXT RTGLC_ABSENT(GLU_NURBS_END_EXT, "GLU_NURBS_END_EXT: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_BEGIN_DATA
+#define GLU_NURBS_BEGIN_DATA RTU_NURBS_BEGIN_DATA
+#else
 #define GLU_NURBS_BEGIN_DATA RTGLC_ABSENT(GLU_NURBS_BEGIN_DATA, "GLU_NURBS_BEGIN_DATA: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_BEGIN_DATA_EXT
+#define GLU_NURBS_BEGIN_DATA_EXT RTU_NURBS_BEGIN_DATA_EXT
+#else
 #define GLU_NURBS_BEGIN_DATA_EXT RTGLC_ABSENT(GLU_NURBS_BEGIN_DATA_EXT, "GLU_NURBS_BEGIN_DATA_EXT: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_VERTEX_DATA
+#define GLU_NURBS_VERTEX_DATA RTU_NURBS_VERTEX_DATA
+#else
 #define GLU_NURBS_VERTEX_DATA RTGLC_ABSENT(GLU_NURBS_VERTEX_DATA, "GLU_NURBS_VERTEX_DATA: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_VERTEX_DATA_EXT
+#define GLU_NURBS_VERTEX_DATA_EXT RTU_NURBS_VERTEX_DATA_EXT
+#else
 #define GLU_NURBS_VERTEX_DATA_EXT RTGLC_ABSENT(GLU_NURBS_VERTEX_DATA_EXT, "GLU_NURBS_VERTEX_DATA_EXT: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_NORMAL_DATA
+#define GLU_NURBS_NORMAL_DATA RTU_NURBS_NORMAL_DATA
+#else
 #define GLU_NURBS_NORMAL_DATA RTGLC_ABSENT(GLU_NURBS_NORMAL_DATA, "GLU_NURBS_NORMAL_DATA: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_NORMAL_DATA_EXT
+#define GLU_NURBS_NORMAL_DATA_EXT RTU_NURBS_NORMAL_DATA_EXT
+#else
 #define GLU_NURBS_NORMAL_DATA_EXT RTGLC_ABSENT(GLU_NURBS_NORMAL_DATA_EXT, "GLU_NURBS_NORMAL_DATA_EXT: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_COLOR_DATA
+#define GLU_NURBS_COLOR_DATA RTU_NURBS_COLOR_DATA
+#else
 #define GLU_NURBS_COLOR_DATA RTGLC_ABSENT(GLU_NURBS_COLOR_DATA, "GLU_NURBS_COLOR_DATA: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_COLOR_DATA_EXT
+#define GLU_NURBS_COLOR_DATA_EXT RTU_NURBS_COLOR_DATA_EXT
+#else
 #define GLU_NURBS_COLOR_DATA_EXT RTGLC_ABSENT(GLU_NURBS_COLOR_DATA_EXT, "GLU_NURBS_COLOR_DATA_EXT: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_TEXTURE_COORD_DATA
+#define GLU_NURBS_TEXTURE_COORD_DATA RTU_NURBS_TEXTURE_COORD_DATA
+#else
 #define GLU_NURBS_TEXTURE_COORD_DATA RTGLC_ABSENT(GLU_NURBS_TEXTURE_COORD_DATA, "GLU_NURBS_TEXTURE_COORD_DATA: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_TEX_COORD_DATA_EXT
+#define GLU_NURBS_TEX_COORD_DATA_EXT RTU_NURBS_TEX_COORD_DATA_EXT
+#else
 #define GLU_NURBS_TEX_COORD_DATA_EXT RTGLC_ABSENT(GLU_NURBS_TEX_COORD_DATA_EXT, "GLU_NURBS_TEX_COORD_DATA_EXT: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_END_DATA
+#define GLU_NURBS_END_DATA RTU_NURBS_END_DATA
+#else
 #define GLU_NURBS_END_DATA RTGLC_ABSENT(GLU_NURBS_END_DATA, "GLU_NURBS_END_DATA: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_END_DATA_EXT
+#define GLU_NURBS_END_DATA_EXT RTU_NURBS_END_DATA_EXT
+#else
 #define GLU_NURBS_END_DATA_EXT RTGLC_ABSENT(GLU_NURBS_END_DATA_EXT, "GLU_NURBS_END_DATA_EXT: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR1
+#define GLU_NURBS_ERROR1 RTU_NURBS_ERROR1
+#else
 #define GLU_NURBS_ERROR1 RTGLC_ABSENT(GLU_NURBS_ERROR1, "GLU_NURBS_ERROR1: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR2
+#define GLU_NURBS_ERROR2 RTU_NURBS_ERROR2
+#else
 #define GLU_NURBS_ERROR2 RTGLC_ABSENT(GLU_NURBS_ERROR2, "GLU_NURBS_ERROR2: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR3
+#define GLU_NURBS_ERROR3 RTU_NURBS_ERROR3
+#else
 #define GLU_NURBS_ERROR3 RTGLC_ABSENT(GLU_NURBS_ERROR3, "GLU_NURBS_ERROR3: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR4
+#define GLU_NURBS_ERROR4 RTU_NURBS_ERROR4
+#else
 #define GLU_NURBS_ERROR4 RTGLC_ABSENT(GLU_NURBS_ERROR4, "GLU_NURBS_ERROR4: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR5
+#define GLU_NURBS_ERROR5 RTU_NURBS_ERROR5
+#else
 #define GLU_NURBS_ERROR5 RTGLC_ABSENT(GLU_NURBS_ERROR5, "GLU_NURBS_ERROR5: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR6
+#define GLU_NURBS_ERROR6 RTU_NURBS_ERROR6
+#else
 #define GLU_NURBS_ERROR6 RTGLC_ABSENT(GLU_NURBS_ERROR6, "GLU_NURBS_ERROR6: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR7
+#define GLU_NURBS_ERROR7 RTU_NURBS_ERROR7
+#else
 #define GLU_NURBS_ERROR7 RTGLC_ABSENT(GLU_NURBS_ERROR7, "GLU_NURBS_ERROR7: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR8
+#define GLU_NURBS_ERROR8 RTU_NURBS_ERROR8
+#else
 #define GLU_NURBS_ERROR8 RTGLC_ABSENT(GLU_NURBS_ERROR8, "GLU_NURBS_ERROR8: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR9
+#define GLU_NURBS_ERROR9 RTU_NURBS_ERROR9
+#else
 #define GLU_NURBS_ERROR9 RTGLC_ABSENT(GLU_NURBS_ERROR9, "GLU_NURBS_ERROR9: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR10
+#define GLU_NURBS_ERROR10 RTU_NURBS_ERROR10
+#else
 #define GLU_NURBS_ERROR10 RTGLC_ABSENT(GLU_NURBS_ERROR10, "GLU_NURBS_ERROR10: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR11
+#define GLU_NURBS_ERROR11 RTU_NURBS_ERROR11
+#else
 #define GLU_NURBS_ERROR11 RTGLC_ABSENT(GLU_NURBS_ERROR11, "GLU_NURBS_ERROR11: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR12
+#define GLU_NURBS_ERROR12 RTU_NURBS_ERROR12
+#else
 #define GLU_NURBS_ERROR12 RTGLC_ABSENT(GLU_NURBS_ERROR12, "GLU_NURBS_ERROR12: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR13
+#define GLU_NURBS_ERROR13 RTU_NURBS_ERROR13
+#else
 #define GLU_NURBS_ERROR13 RTGLC_ABSENT(GLU_NURBS_ERROR13, "GLU_NURBS_ERROR13: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR14
+#define GLU_NURBS_ERROR14 RTU_NURBS_ERROR14
+#else
 #define GLU_NURBS_ERROR14 RTGLC_ABSENT(GLU_NURBS_ERROR14, "GLU_NURBS_ERROR14: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR15
+#define GLU_NURBS_ERROR15 RTU_NURBS_ERROR15
+#else
 #define GLU_NURBS_ERROR15 RTGLC_ABSENT(GLU_NURBS_ERROR15, "GLU_NURBS_ERROR15: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR16
+#define GLU_NURBS_ERROR16 RTU_NURBS_ERROR16
+#else
 #define GLU_NURBS_ERROR16 RTGLC_ABSENT(GLU_NURBS_ERROR16, "GLU_NURBS_ERROR16: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR17
+#define GLU_NURBS_ERROR17 RTU_NURBS_ERROR17
+#else
 #define GLU_NURBS_ERROR17 RTGLC_ABSENT(GLU_NURBS_ERROR17, "GLU_NURBS_ERROR17: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR18
+#define GLU_NURBS_ERROR18 RTU_NURBS_ERROR18
+#else
 #define GLU_NURBS_ERROR18 RTGLC_ABSENT(GLU_NURBS_ERROR18, "GLU_NURBS_ERROR18: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR19
+#define GLU_NURBS_ERROR19 RTU_NURBS_ERROR19
+#else
 #define GLU_NURBS_ERROR19 RTGLC_ABSENT(GLU_NURBS_ERROR19, "GLU_NURBS_ERROR19: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR20
+#define GLU_NURBS_ERROR20 RTU_NURBS_ERROR20
+#else
 #define GLU_NURBS_ERROR20 RTGLC_ABSENT(GLU_NURBS_ERROR20, "GLU_NURBS_ERROR20: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR21
+#define GLU_NURBS_ERROR21 RTU_NURBS_ERROR21
+#else
 #define GLU_NURBS_ERROR21 RTGLC_ABSENT(GLU_NURBS_ERROR21, "GLU_NURBS_ERROR21: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR22
+#define GLU_NURBS_ERROR22 RTU_NURBS_ERROR22
+#else
 #define GLU_NURBS_ERROR22 RTGLC_ABSENT(GLU_NURBS_ERROR22, "GLU_NURBS_ERROR22: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR23
+#define GLU_NURBS_ERROR23 RTU_NURBS_ERROR23
+#else
 #define GLU_NURBS_ERROR23 RTGLC_ABSENT(GLU_NURBS_ERROR23, "GLU_NURBS_ERROR23: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR24
+#define GLU_NURBS_ERROR24 RTU_NURBS_ERROR24
+#else
 #define GLU_NURBS_ERROR24 RTGLC_ABSENT(GLU_NURBS_ERROR24, "GLU_NURBS_ERROR24: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR25
+#define GLU_NURBS_ERROR25 RTU_NURBS_ERROR25
+#else
 #define GLU_NURBS_ERROR25 RTGLC_ABSENT(GLU_NURBS_ERROR25, "GLU_NURBS_ERROR25: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR26
+#define GLU_NURBS_ERROR26 RTU_NURBS_ERROR26
+#else
 #define GLU_NURBS_ERROR26 RTGLC_ABSENT(GLU_NURBS_ERROR26, "GLU_NURBS_ERROR26: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR27
+#define GLU_NURBS_ERROR27 RTU_NURBS_ERROR27
+#else
 #define GLU_NURBS_ERROR27 RTGLC_ABSENT(GLU_NURBS_ERROR27, "GLU_NURBS_ERROR27: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR28
+#define GLU_NURBS_ERROR28 RTU_NURBS_ERROR28
+#else
 #define GLU_NURBS_ERROR28 RTGLC_ABSENT(GLU_NURBS_ERROR28, "GLU_NURBS_ERROR28: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR29
+#define GLU_NURBS_ERROR29 RTU_NURBS_ERROR29
+#else
 #define GLU_NURBS_ERROR29 RTGLC_ABSENT(GLU_NURBS_ERROR29, "GLU_NURBS_ERROR29: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR30
+#define GLU_NURBS_ERROR30 RTU_NURBS_ERROR30
+#else
 #define GLU_NURBS_ERROR30 RTGLC_ABSENT(GLU_NURBS_ERROR30, "GLU_NURBS_ERROR30: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR31
+#define GLU_NURBS_ERROR31 RTU_NURBS_ERROR31
+#else
 #define GLU_NURBS_ERROR31 RTGLC_ABSENT(GLU_NURBS_ERROR31, "GLU_NURBS_ERROR31: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR32
+#define GLU_NURBS_ERROR32 RTU_NURBS_ERROR32
+#else
 #define GLU_NURBS_ERROR32 RTGLC_ABSENT(GLU_NURBS_ERROR32, "GLU_NURBS_ERROR32: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR33
+#define GLU_NURBS_ERROR33 RTU_NURBS_ERROR33
+#else
 #define GLU_NURBS_ERROR33 RTGLC_ABSENT(GLU_NURBS_ERROR33, "GLU_NURBS_ERROR33: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR34
+#define GLU_NURBS_ERROR34 RTU_NURBS_ERROR34
+#else
 #define GLU_NURBS_ERROR34 RTGLC_ABSENT(GLU_NURBS_ERROR34, "GLU_NURBS_ERROR34: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR35
+#define GLU_NURBS_ERROR35 RTU_NURBS_ERROR35
+#else
 #define GLU_NURBS_ERROR35 RTGLC_ABSENT(GLU_NURBS_ERROR35, "GLU_NURBS_ERROR35: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR36
+#define GLU_NURBS_ERROR36 RTU_NURBS_ERROR36
+#else
 #define GLU_NURBS_ERROR36 RTGLC_ABSENT(GLU_NURBS_ERROR36, "GLU_NURBS_ERROR36: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_ERROR37
+#define GLU_NURBS_ERROR37 RTU_NURBS_ERROR37
+#else
 #define GLU_NURBS_ERROR37 RTGLC_ABSENT(GLU_NURBS_ERROR37, "GLU_NURBS_ERROR37: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_AUTO_LOAD_MATRIX
+#define GLU_AUTO_LOAD_MATRIX RTU_AUTO_LOAD_MATRIX
+#else
 #define GLU_AUTO_LOAD_MATRIX RTGLC_ABSENT(GLU_AUTO_LOAD_MATRIX, "GLU_AUTO_LOAD_MATRIX: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_CULLING
+#define GLU_CULLING RTU_CULLING
+#else
 #define GLU_CULLING RTGLC_ABSENT(GLU_CULLING, "GLU_CULLING: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_SAMPLING_TOLERANCE
+#define GLU_SAMPLING_TOLERANCE RTU_SAMPLING_TOLERANCE
+#else
 #define GLU_SAMPLING_TOLERANCE RTGLC_ABSENT(GLU_SAMPLING_TOLERANCE, "GLU_SAMPLING_TOLERANCE: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_DISPLAY_MODE
+#define GLU_DISPLAY_MODE RTU_DISPLAY_MODE
+#else
 #define GLU_DISPLAY_MODE RTGLC_ABSENT(GLU_DISPLAY_MODE, "GLU_DISPLAY_MODE: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_PARAMETRIC_TOLERANCE
+#define GLU_PARAMETRIC_TOLERANCE RTU_PARAMETRIC_TOLERANCE
+#else
 #define GLU_PARAMETRIC_TOLERANCE RTGLC_ABSENT(GLU_PARAMETRIC_TOLERANCE, "GLU_PARAMETRIC_TOLERANCE: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_SAMPLING_METHOD
+#define GLU_SAMPLING_METHOD RTU_SAMPLING_METHOD
+#else
 #define GLU_SAMPLING_METHOD RTGLC_ABSENT(GLU_SAMPLING_METHOD, "GLU_SAMPLING_METHOD: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_U_STEP
+#define GLU_U_STEP RTU_U_STEP
+#else
 #define GLU_U_STEP RTGLC_ABSENT(GLU_U_STEP, "GLU_U_STEP: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_V_STEP
+#define GLU_V_STEP RTU_V_STEP
+#else
 #define GLU_V_STEP RTGLC_ABSENT(GLU_V_STEP, "GLU_V_STEP: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_MODE
+#define GLU_NURBS_MODE RTU_NURBS_MODE
+#else
 #define GLU_NURBS_MODE RTGLC_ABSENT(GLU_NURBS_MODE, "GLU_NURBS_MODE: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_MODE_EXT
+#define GLU_NURBS_MODE_EXT RTU_NURBS_MODE_EXT
+#else
 #define GLU_NURBS_MODE_EXT RTGLC_ABSENT(GLU_NURBS_MODE_EXT, "GLU_NURBS_MODE_EXT: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_TESSELLATOR
+#define GLU_NURBS_TESSELLATOR RTU_NURBS_TESSELLATOR
+#else
 #define GLU_NURBS_TESSELLATOR RTGLC_ABSENT(GLU_NURBS_TESSELLATOR, "GLU_NURBS_TESSELLATOR: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_TESSELLATOR_EXT
+#define GLU_NURBS_TESSELLATOR_EXT RTU_NURBS_TESSELLATOR_EXT
+#else
 #define GLU_NURBS_TESSELLATOR_EXT RTGLC_ABSENT(GLU_NURBS_TESSELLATOR_EXT, "GLU_NURBS_TESSELLATOR_EXT: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_RENDERER
+#define GLU_NURBS_RENDERER RTU_NURBS_RENDERER
+#else
 #define GLU_NURBS_RENDERER RTGLC_ABSENT(GLU_NURBS_RENDERER, "GLU_NURBS_RENDERER: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_NURBS_RENDERER_EXT
+#define GLU_NURBS_RENDERER_EXT RTU_NURBS_RENDERER_EXT
+#else
 #define GLU_NURBS_RENDERER_EXT RTGLC_ABSENT(GLU_NURBS_RENDERER_EXT, "GLU_NURBS_RENDERER_EXT: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_OBJECT_PARAMETRIC_ERROR
+#define GLU_OBJECT_PARAMETRIC_ERROR RTU_OBJECT_PARAMETRIC_ERROR
+#else
 #define GLU_OBJECT_PARAMETRIC_ERROR RTGLC_ABSENT(GLU_OBJECT_PARAMETRIC_ERROR, "GLU_OBJECT_PARAMETRIC_ERROR: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_OBJECT_PARAMETRIC_ERROR_EXT
+#define GLU_OBJECT_PARAMETRIC_ERROR_EXT RTU_OBJECT_PARAMETRIC_ERROR_EXT
+#else
 #define GLU_OBJECT_PARAMETRIC_ERROR_EXT RTGLC_ABSENT(GLU_OBJECT_PARAMETRIC_ERROR_EXT, "GLU_OBJECT_PARAMETRIC_ERROR_EXT: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_OBJECT_PATH_LENGTH
+#define GLU_OBJECT_PATH_LENGTH RTU_OBJECT_PATH_LENGTH
+#else
 #define GLU_OBJECT_PATH_LENGTH RTGLC_ABSENT(GLU_OBJECT_PATH_LENGTH, "GLU_OBJECT_PATH_LENGTH: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_OBJECT_PATH_LENGTH_EXT
+#define GLU_OBJECT_PATH_LENGTH_EXT RTU_OBJECT_PATH_LENGTH_EXT
+#else
 #define GLU_OBJECT_PATH_LENGTH_EXT RTGLC_ABSENT(GLU_OBJECT_PATH_LENGTH_EXT, "GLU_OBJECT_PATH_LENGTH_EXT: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_PATH_LENGTH
+#define GLU_PATH_LENGTH RTU_PATH_LENGTH
+#else
 #define GLU_PATH_LENGTH RTGLC_ABSENT(GLU_PATH_LENGTH, "GLU_PATH_LENGTH: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_PARAMETRIC_ERROR
+#define GLU_PARAMETRIC_ERROR RTU_PARAMETRIC_ERROR
+#else
 #define GLU_PARAMETRIC_ERROR RTGLC_ABSENT(GLU_PARAMETRIC_ERROR, "GLU_PARAMETRIC_ERROR: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_DOMAIN_DISTANCE
+#define GLU_DOMAIN_DISTANCE RTU_DOMAIN_DISTANCE
+#else
 #define GLU_DOMAIN_DISTANCE RTGLC_ABSENT(GLU_DOMAIN_DISTANCE, "GLU_DOMAIN_DISTANCE: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_MAP1_TRIM_2
+#define GLU_MAP1_TRIM_2 RTU_MAP1_TRIM_2
+#else
 #define GLU_MAP1_TRIM_2 RTGLC_ABSENT(GLU_MAP1_TRIM_2, "GLU_MAP1_TRIM_2: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_MAP1_TRIM_3
+#define GLU_MAP1_TRIM_3 RTU_MAP1_TRIM_3
+#else
 #define GLU_MAP1_TRIM_3 RTGLC_ABSENT(GLU_MAP1_TRIM_3, "GLU_MAP1_TRIM_3: no rtu equivalent (docs/glcompat.md)")
+#endif
 #define GLU_POINT RTU_POINT
 #define GLU_LINE RTU_LINE
 #define GLU_FILL RTU_FILL
@@ -1869,50 +3346,226 @@ typedef RTUquadric GLUquadricObj;
 #define GLU_NONE RTU_NONE
 #define GLU_OUTSIDE RTU_OUTSIDE
 #define GLU_INSIDE RTU_INSIDE
+#ifdef RTU_TESS_BEGIN
+#define GLU_TESS_BEGIN RTU_TESS_BEGIN
+#else
 #define GLU_TESS_BEGIN RTGLC_ABSENT(GLU_TESS_BEGIN, "GLU_TESS_BEGIN: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_BEGIN
+#define GLU_BEGIN RTU_BEGIN
+#else
 #define GLU_BEGIN RTGLC_ABSENT(GLU_BEGIN, "GLU_BEGIN: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_TESS_VERTEX
+#define GLU_TESS_VERTEX RTU_TESS_VERTEX
+#else
 #define GLU_TESS_VERTEX RTGLC_ABSENT(GLU_TESS_VERTEX, "GLU_TESS_VERTEX: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_VERTEX
+#define GLU_VERTEX RTU_VERTEX
+#else
 #define GLU_VERTEX RTGLC_ABSENT(GLU_VERTEX, "GLU_VERTEX: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_TESS_END
+#define GLU_TESS_END RTU_TESS_END
+#else
 #define GLU_TESS_END RTGLC_ABSENT(GLU_TESS_END, "GLU_TESS_END: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_END
+#define GLU_END RTU_END
+#else
 #define GLU_END RTGLC_ABSENT(GLU_END, "GLU_END: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_TESS_ERROR
+#define GLU_TESS_ERROR RTU_TESS_ERROR
+#else
 #define GLU_TESS_ERROR RTGLC_ABSENT(GLU_TESS_ERROR, "GLU_TESS_ERROR: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_TESS_EDGE_FLAG
+#define GLU_TESS_EDGE_FLAG RTU_TESS_EDGE_FLAG
+#else
 #define GLU_TESS_EDGE_FLAG RTGLC_ABSENT(GLU_TESS_EDGE_FLAG, "GLU_TESS_EDGE_FLAG: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_EDGE_FLAG
+#define GLU_EDGE_FLAG RTU_EDGE_FLAG
+#else
 #define GLU_EDGE_FLAG RTGLC_ABSENT(GLU_EDGE_FLAG, "GLU_EDGE_FLAG: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_TESS_COMBINE
+#define GLU_TESS_COMBINE RTU_TESS_COMBINE
+#else
 #define GLU_TESS_COMBINE RTGLC_ABSENT(GLU_TESS_COMBINE, "GLU_TESS_COMBINE: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_TESS_BEGIN_DATA
+#define GLU_TESS_BEGIN_DATA RTU_TESS_BEGIN_DATA
+#else
 #define GLU_TESS_BEGIN_DATA RTGLC_ABSENT(GLU_TESS_BEGIN_DATA, "GLU_TESS_BEGIN_DATA: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_TESS_VERTEX_DATA
+#define GLU_TESS_VERTEX_DATA RTU_TESS_VERTEX_DATA
+#else
 #define GLU_TESS_VERTEX_DATA RTGLC_ABSENT(GLU_TESS_VERTEX_DATA, "GLU_TESS_VERTEX_DATA: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_TESS_END_DATA
+#define GLU_TESS_END_DATA RTU_TESS_END_DATA
+#else
 #define GLU_TESS_END_DATA RTGLC_ABSENT(GLU_TESS_END_DATA, "GLU_TESS_END_DATA: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_TESS_ERROR_DATA
+#define GLU_TESS_ERROR_DATA RTU_TESS_ERROR_DATA
+#else
 #define GLU_TESS_ERROR_DATA RTGLC_ABSENT(GLU_TESS_ERROR_DATA, "GLU_TESS_ERROR_DATA: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_TESS_EDGE_FLAG_DATA
+#define GLU_TESS_EDGE_FLAG_DATA RTU_TESS_EDGE_FLAG_DATA
+#else
 #define GLU_TESS_EDGE_FLAG_DATA RTGLC_ABSENT(GLU_TESS_EDGE_FLAG_DATA, "GLU_TESS_EDGE_FLAG_DATA: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_TESS_COMBINE_DATA
+#define GLU_TESS_COMBINE_DATA RTU_TESS_COMBINE_DATA
+#else
 #define GLU_TESS_COMBINE_DATA RTGLC_ABSENT(GLU_TESS_COMBINE_DATA, "GLU_TESS_COMBINE_DATA: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_CW
+#define GLU_CW RTU_CW
+#else
 #define GLU_CW RTGLC_ABSENT(GLU_CW, "GLU_CW: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_CCW
+#define GLU_CCW RTU_CCW
+#else
 #define GLU_CCW RTGLC_ABSENT(GLU_CCW, "GLU_CCW: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_INTERIOR
+#define GLU_INTERIOR RTU_INTERIOR
+#else
 #define GLU_INTERIOR RTGLC_ABSENT(GLU_INTERIOR, "GLU_INTERIOR: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_EXTERIOR
+#define GLU_EXTERIOR RTU_EXTERIOR
+#else
 #define GLU_EXTERIOR RTGLC_ABSENT(GLU_EXTERIOR, "GLU_EXTERIOR: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_UNKNOWN
+#define GLU_UNKNOWN RTU_UNKNOWN
+#else
 #define GLU_UNKNOWN RTGLC_ABSENT(GLU_UNKNOWN, "GLU_UNKNOWN: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_TESS_WINDING_RULE
+#define GLU_TESS_WINDING_RULE RTU_TESS_WINDING_RULE
+#else
 #define GLU_TESS_WINDING_RULE RTGLC_ABSENT(GLU_TESS_WINDING_RULE, "GLU_TESS_WINDING_RULE: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_TESS_BOUNDARY_ONLY
+#define GLU_TESS_BOUNDARY_ONLY RTU_TESS_BOUNDARY_ONLY
+#else
 #define GLU_TESS_BOUNDARY_ONLY RTGLC_ABSENT(GLU_TESS_BOUNDARY_ONLY, "GLU_TESS_BOUNDARY_ONLY: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_TESS_TOLERANCE
+#define GLU_TESS_TOLERANCE RTU_TESS_TOLERANCE
+#else
 #define GLU_TESS_TOLERANCE RTGLC_ABSENT(GLU_TESS_TOLERANCE, "GLU_TESS_TOLERANCE: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_TESS_ERROR1
+#define GLU_TESS_ERROR1 RTU_TESS_ERROR1
+#else
 #define GLU_TESS_ERROR1 RTGLC_ABSENT(GLU_TESS_ERROR1, "GLU_TESS_ERROR1: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_TESS_ERROR2
+#define GLU_TESS_ERROR2 RTU_TESS_ERROR2
+#else
 #define GLU_TESS_ERROR2 RTGLC_ABSENT(GLU_TESS_ERROR2, "GLU_TESS_ERROR2: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_TESS_ERROR3
+#define GLU_TESS_ERROR3 RTU_TESS_ERROR3
+#else
 #define GLU_TESS_ERROR3 RTGLC_ABSENT(GLU_TESS_ERROR3, "GLU_TESS_ERROR3: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_TESS_ERROR4
+#define GLU_TESS_ERROR4 RTU_TESS_ERROR4
+#else
 #define GLU_TESS_ERROR4 RTGLC_ABSENT(GLU_TESS_ERROR4, "GLU_TESS_ERROR4: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_TESS_ERROR5
+#define GLU_TESS_ERROR5 RTU_TESS_ERROR5
+#else
 #define GLU_TESS_ERROR5 RTGLC_ABSENT(GLU_TESS_ERROR5, "GLU_TESS_ERROR5: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_TESS_ERROR6
+#define GLU_TESS_ERROR6 RTU_TESS_ERROR6
+#else
 #define GLU_TESS_ERROR6 RTGLC_ABSENT(GLU_TESS_ERROR6, "GLU_TESS_ERROR6: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_TESS_ERROR7
+#define GLU_TESS_ERROR7 RTU_TESS_ERROR7
+#else
 #define GLU_TESS_ERROR7 RTGLC_ABSENT(GLU_TESS_ERROR7, "GLU_TESS_ERROR7: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_TESS_ERROR8
+#define GLU_TESS_ERROR8 RTU_TESS_ERROR8
+#else
 #define GLU_TESS_ERROR8 RTGLC_ABSENT(GLU_TESS_ERROR8, "GLU_TESS_ERROR8: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_TESS_MISSING_BEGIN_POLYGON
+#define GLU_TESS_MISSING_BEGIN_POLYGON RTU_TESS_MISSING_BEGIN_POLYGON
+#else
 #define GLU_TESS_MISSING_BEGIN_POLYGON RTGLC_ABSENT(GLU_TESS_MISSING_BEGIN_POLYGON, "GLU_TESS_MISSING_BEGIN_POLYGON: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_TESS_MISSING_BEGIN_CONTOUR
+#define GLU_TESS_MISSING_BEGIN_CONTOUR RTU_TESS_MISSING_BEGIN_CONTOUR
+#else
 #define GLU_TESS_MISSING_BEGIN_CONTOUR RTGLC_ABSENT(GLU_TESS_MISSING_BEGIN_CONTOUR, "GLU_TESS_MISSING_BEGIN_CONTOUR: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_TESS_MISSING_END_POLYGON
+#define GLU_TESS_MISSING_END_POLYGON RTU_TESS_MISSING_END_POLYGON
+#else
 #define GLU_TESS_MISSING_END_POLYGON RTGLC_ABSENT(GLU_TESS_MISSING_END_POLYGON, "GLU_TESS_MISSING_END_POLYGON: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_TESS_MISSING_END_CONTOUR
+#define GLU_TESS_MISSING_END_CONTOUR RTU_TESS_MISSING_END_CONTOUR
+#else
 #define GLU_TESS_MISSING_END_CONTOUR RTGLC_ABSENT(GLU_TESS_MISSING_END_CONTOUR, "GLU_TESS_MISSING_END_CONTOUR: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_TESS_COORD_TOO_LARGE
+#define GLU_TESS_COORD_TOO_LARGE RTU_TESS_COORD_TOO_LARGE
+#else
 #define GLU_TESS_COORD_TOO_LARGE RTGLC_ABSENT(GLU_TESS_COORD_TOO_LARGE, "GLU_TESS_COORD_TOO_LARGE: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_TESS_NEED_COMBINE_CALLBACK
+#define GLU_TESS_NEED_COMBINE_CALLBACK RTU_TESS_NEED_COMBINE_CALLBACK
+#else
 #define GLU_TESS_NEED_COMBINE_CALLBACK RTGLC_ABSENT(GLU_TESS_NEED_COMBINE_CALLBACK, "GLU_TESS_NEED_COMBINE_CALLBACK: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_TESS_WINDING_ODD
+#define GLU_TESS_WINDING_ODD RTU_TESS_WINDING_ODD
+#else
 #define GLU_TESS_WINDING_ODD RTGLC_ABSENT(GLU_TESS_WINDING_ODD, "GLU_TESS_WINDING_ODD: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_TESS_WINDING_NONZERO
+#define GLU_TESS_WINDING_NONZERO RTU_TESS_WINDING_NONZERO
+#else
 #define GLU_TESS_WINDING_NONZERO RTGLC_ABSENT(GLU_TESS_WINDING_NONZERO, "GLU_TESS_WINDING_NONZERO: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_TESS_WINDING_POSITIVE
+#define GLU_TESS_WINDING_POSITIVE RTU_TESS_WINDING_POSITIVE
+#else
 #define GLU_TESS_WINDING_POSITIVE RTGLC_ABSENT(GLU_TESS_WINDING_POSITIVE, "GLU_TESS_WINDING_POSITIVE: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_TESS_WINDING_NEGATIVE
+#define GLU_TESS_WINDING_NEGATIVE RTU_TESS_WINDING_NEGATIVE
+#else
 #define GLU_TESS_WINDING_NEGATIVE RTGLC_ABSENT(GLU_TESS_WINDING_NEGATIVE, "GLU_TESS_WINDING_NEGATIVE: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_TESS_WINDING_ABS_GEQ_TWO
+#define GLU_TESS_WINDING_ABS_GEQ_TWO RTU_TESS_WINDING_ABS_GEQ_TWO
+#else
 #define GLU_TESS_WINDING_ABS_GEQ_TWO RTGLC_ABSENT(GLU_TESS_WINDING_ABS_GEQ_TWO, "GLU_TESS_WINDING_ABS_GEQ_TWO: no rtu equivalent (docs/glcompat.md)")
+#endif
+#ifdef RTU_TESS_MAX_COORD
+#define GLU_TESS_MAX_COORD RTU_TESS_MAX_COORD
+#else
 #define GLU_TESS_MAX_COORD RTGLC_ABSENT(GLU_TESS_MAX_COORD, "GLU_TESS_MAX_COORD: no rtu equivalent (docs/glcompat.md)")
+#endif
 
 /* ---- GLUT ------------------------------------------------------------- */
 #define glutSolidCube rtuSolidCube
@@ -1960,12 +3613,10 @@ static inline void rtglc_utReportErrors(void) { }
 #define glutMainLoop rtuMainLoop
 #define glutCreateWindow rtuCreateWindow
 #define glutDestroyWindow rtuDestroyWindow
-#define glutSetWindow rtuSetWindow
 #define glutGetWindow rtuGetWindow
 #define glutSetWindowTitle rtuSetWindowTitle
 #define glutReshapeWindow rtuReshapeWindow
 #define glutFullScreen rtuFullScreen
-#define glutPostWindowRedisplay rtuPostWindowRedisplay
 #define glutPostRedisplay rtuPostRedisplay
 #define glutSwapBuffers rtuSwapBuffers
 #define glutCreateMenu rtuCreateMenu
@@ -1974,9 +3625,6 @@ static inline void rtglc_utReportErrors(void) { }
 #define glutSetMenu rtuSetMenu
 #define glutAddMenuEntry rtuAddMenuEntry
 #define glutAddSubMenu rtuAddSubMenu
-#define glutChangeToMenuEntry rtuChangeToMenuEntry
-#define glutChangeToSubMenu rtuChangeToSubMenu
-#define glutRemoveMenuItem rtuRemoveMenuItem
 #define glutAttachMenu rtuAttachMenu
 #define glutDetachMenu rtuDetachMenu
 #define glutTimerFunc rtuTimerFunc
@@ -1989,12 +3637,8 @@ static inline void rtglc_utReportErrors(void) { }
 #define glutMouseFunc rtuMouseFunc
 #define glutMotionFunc rtuMotionFunc
 #define glutPassiveMotionFunc rtuPassiveMotionFunc
-#define glutEntryFunc rtuEntryFunc
 #define glutKeyboardUpFunc rtuKeyboardUpFunc
 #define glutSpecialUpFunc rtuSpecialUpFunc
-#define glutMenuStateFunc rtuMenuStateFunc
-#define glutMenuStatusFunc rtuMenuStatusFunc
-#define glutWindowStatusFunc rtuWindowStatusFunc
 #define glutGet rtuGet
 #define glutGetModifiers rtuGetModifiers
 #define GLUT_API_VERSION 3
@@ -2006,12 +3650,10 @@ static inline void rtglc_utReportErrors(void) { }
 #define glutMainLoop RTGLC_PENDING(glutMainLoop, "glutMainLoop: needs the rtu GLUT shell, not in this Tracelist (docs/glcompat.md)")
 #define glutCreateWindow RTGLC_PENDING(glutCreateWindow, "glutCreateWindow: needs the rtu GLUT shell, not in this Tracelist (docs/glcompat.md)")
 #define glutDestroyWindow RTGLC_PENDING(glutDestroyWindow, "glutDestroyWindow: needs the rtu GLUT shell, not in this Tracelist (docs/glcompat.md)")
-#define glutSetWindow RTGLC_PENDING(glutSetWindow, "glutSetWindow: needs the rtu GLUT shell, not in this Tracelist (docs/glcompat.md)")
 #define glutGetWindow RTGLC_PENDING(glutGetWindow, "glutGetWindow: needs the rtu GLUT shell, not in this Tracelist (docs/glcompat.md)")
 #define glutSetWindowTitle RTGLC_PENDING(glutSetWindowTitle, "glutSetWindowTitle: needs the rtu GLUT shell, not in this Tracelist (docs/glcompat.md)")
 #define glutReshapeWindow RTGLC_PENDING(glutReshapeWindow, "glutReshapeWindow: needs the rtu GLUT shell, not in this Tracelist (docs/glcompat.md)")
 #define glutFullScreen RTGLC_PENDING(glutFullScreen, "glutFullScreen: needs the rtu GLUT shell, not in this Tracelist (docs/glcompat.md)")
-#define glutPostWindowRedisplay RTGLC_PENDING(glutPostWindowRedisplay, "glutPostWindowRedisplay: needs the rtu GLUT shell, not in this Tracelist (docs/glcompat.md)")
 #define glutPostRedisplay RTGLC_PENDING(glutPostRedisplay, "glutPostRedisplay: needs the rtu GLUT shell, not in this Tracelist (docs/glcompat.md)")
 #define glutSwapBuffers RTGLC_PENDING(glutSwapBuffers, "glutSwapBuffers: needs the rtu GLUT shell, not in this Tracelist (docs/glcompat.md)")
 #define glutCreateMenu RTGLC_PENDING(glutCreateMenu, "glutCreateMenu: needs the rtu GLUT shell, not in this Tracelist (docs/glcompat.md)")
@@ -2020,9 +3662,6 @@ static inline void rtglc_utReportErrors(void) { }
 #define glutSetMenu RTGLC_PENDING(glutSetMenu, "glutSetMenu: needs the rtu GLUT shell, not in this Tracelist (docs/glcompat.md)")
 #define glutAddMenuEntry RTGLC_PENDING(glutAddMenuEntry, "glutAddMenuEntry: needs the rtu GLUT shell, not in this Tracelist (docs/glcompat.md)")
 #define glutAddSubMenu RTGLC_PENDING(glutAddSubMenu, "glutAddSubMenu: needs the rtu GLUT shell, not in this Tracelist (docs/glcompat.md)")
-#define glutChangeToMenuEntry RTGLC_PENDING(glutChangeToMenuEntry, "glutChangeToMenuEntry: needs the rtu GLUT shell, not in this Tracelist (docs/glcompat.md)")
-#define glutChangeToSubMenu RTGLC_PENDING(glutChangeToSubMenu, "glutChangeToSubMenu: needs the rtu GLUT shell, not in this Tracelist (docs/glcompat.md)")
-#define glutRemoveMenuItem RTGLC_PENDING(glutRemoveMenuItem, "glutRemoveMenuItem: needs the rtu GLUT shell, not in this Tracelist (docs/glcompat.md)")
 #define glutAttachMenu RTGLC_PENDING(glutAttachMenu, "glutAttachMenu: needs the rtu GLUT shell, not in this Tracelist (docs/glcompat.md)")
 #define glutDetachMenu RTGLC_PENDING(glutDetachMenu, "glutDetachMenu: needs the rtu GLUT shell, not in this Tracelist (docs/glcompat.md)")
 #define glutTimerFunc RTGLC_PENDING(glutTimerFunc, "glutTimerFunc: needs the rtu GLUT shell, not in this Tracelist (docs/glcompat.md)")
@@ -2035,15 +3674,32 @@ static inline void rtglc_utReportErrors(void) { }
 #define glutMouseFunc RTGLC_PENDING(glutMouseFunc, "glutMouseFunc: needs the rtu GLUT shell, not in this Tracelist (docs/glcompat.md)")
 #define glutMotionFunc RTGLC_PENDING(glutMotionFunc, "glutMotionFunc: needs the rtu GLUT shell, not in this Tracelist (docs/glcompat.md)")
 #define glutPassiveMotionFunc RTGLC_PENDING(glutPassiveMotionFunc, "glutPassiveMotionFunc: needs the rtu GLUT shell, not in this Tracelist (docs/glcompat.md)")
-#define glutEntryFunc RTGLC_PENDING(glutEntryFunc, "glutEntryFunc: needs the rtu GLUT shell, not in this Tracelist (docs/glcompat.md)")
 #define glutKeyboardUpFunc RTGLC_PENDING(glutKeyboardUpFunc, "glutKeyboardUpFunc: needs the rtu GLUT shell, not in this Tracelist (docs/glcompat.md)")
 #define glutSpecialUpFunc RTGLC_PENDING(glutSpecialUpFunc, "glutSpecialUpFunc: needs the rtu GLUT shell, not in this Tracelist (docs/glcompat.md)")
-#define glutMenuStateFunc RTGLC_PENDING(glutMenuStateFunc, "glutMenuStateFunc: needs the rtu GLUT shell, not in this Tracelist (docs/glcompat.md)")
-#define glutMenuStatusFunc RTGLC_PENDING(glutMenuStatusFunc, "glutMenuStatusFunc: needs the rtu GLUT shell, not in this Tracelist (docs/glcompat.md)")
-#define glutWindowStatusFunc RTGLC_PENDING(glutWindowStatusFunc, "glutWindowStatusFunc: needs the rtu GLUT shell, not in this Tracelist (docs/glcompat.md)")
 #define glutGet RTGLC_PENDING(glutGet, "glutGet: needs the rtu GLUT shell, not in this Tracelist (docs/glcompat.md)")
 #define glutGetModifiers RTGLC_PENDING(glutGetModifiers, "glutGetModifiers: needs the rtu GLUT shell, not in this Tracelist (docs/glcompat.md)")
 #endif
+/* One window, and callbacks of events the shell does not produce: accepted,
+ * never called. */
+static inline void rtglc_utSetWindow(int window) { (void)window; }
+#define glutSetWindow rtglc_utSetWindow
+static inline void rtglc_utEntryFunc(void (*func)(int state)) { (void)func; }
+#define glutEntryFunc rtglc_utEntryFunc
+static inline void rtglc_utMenuStateFunc(void (*func)(int state)) { (void)func; }
+#define glutMenuStateFunc rtglc_utMenuStateFunc
+static inline void rtglc_utMenuStatusFunc(void (*func)(int status, int x, int y)) { (void)func; }
+#define glutMenuStatusFunc rtglc_utMenuStatusFunc
+static inline void rtglc_utWindowStatusFunc(void (*func)(int state)) { (void)func; }
+#define glutWindowStatusFunc rtglc_utWindowStatusFunc
+#ifdef RT_GLCOMPAT_HAVE_GLUT
+static inline void rtglc_utPostWindowRedisplay(int window) { (void)window; rtuPostRedisplay(); }
+#define glutPostWindowRedisplay rtglc_utPostWindowRedisplay
+#else
+#define glutPostWindowRedisplay RTGLC_PENDING(glutPostWindowRedisplay, "glutPostWindowRedisplay: needs the rtu GLUT shell, not in this Tracelist (docs/glcompat.md)")
+#endif
+#define glutChangeToMenuEntry RTGLC_ABSENT(glutChangeToMenuEntry, "glutChangeToMenuEntry: not in the rtu GLUT shell (docs/glcompat.md)")
+#define glutChangeToSubMenu RTGLC_ABSENT(glutChangeToSubMenu, "glutChangeToSubMenu: not in the rtu GLUT shell (docs/glcompat.md)")
+#define glutRemoveMenuItem RTGLC_ABSENT(glutRemoveMenuItem, "glutRemoveMenuItem: not in the rtu GLUT shell (docs/glcompat.md)")
 #if !defined(RT_GLCOMPAT_HAVE_GLUT_FONTS) && (defined(RTU_BITMAP_8_BY_13))
 #define RT_GLCOMPAT_HAVE_GLUT_FONTS 1
 #endif
@@ -2149,7 +3805,11 @@ static inline void rtglc_utReportErrors(void) { }
 #define GLUT_ENTERED RTU_ENTERED
 #define GLUT_RGB RTU_RGB
 #define GLUT_RGBA RTU_RGBA
+#ifdef RTU_INDEX
+#define GLUT_INDEX RTU_INDEX
+#else
 #define GLUT_INDEX RTGLC_ABSENT(GLUT_INDEX, "GLUT_INDEX: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
 #define GLUT_SINGLE RTU_SINGLE
 #define GLUT_DOUBLE RTU_DOUBLE
 #define GLUT_ACCUM RTU_ACCUM
@@ -2186,7 +3846,11 @@ static inline void rtglc_utReportErrors(void) { }
 #define GLUT_WINDOW_RGBA RTU_WINDOW_RGBA
 #define GLUT_WINDOW_PARENT RTU_WINDOW_PARENT
 #define GLUT_WINDOW_NUM_CHILDREN RTU_WINDOW_NUM_CHILDREN
+#ifdef RTU_WINDOW_COLORMAP_SIZE
+#define GLUT_WINDOW_COLORMAP_SIZE RTU_WINDOW_COLORMAP_SIZE
+#else
 #define GLUT_WINDOW_COLORMAP_SIZE RTGLC_ABSENT(GLUT_WINDOW_COLORMAP_SIZE, "GLUT_WINDOW_COLORMAP_SIZE: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
 #define GLUT_WINDOW_NUM_SAMPLES RTU_WINDOW_NUM_SAMPLES
 #define GLUT_WINDOW_STEREO RTU_WINDOW_STEREO
 #define GLUT_WINDOW_CURSOR RTU_WINDOW_CURSOR
@@ -2202,42 +3866,186 @@ static inline void rtglc_utReportErrors(void) { }
 #define GLUT_INIT_WINDOW_HEIGHT RTU_INIT_WINDOW_HEIGHT
 #define GLUT_INIT_DISPLAY_MODE RTU_INIT_DISPLAY_MODE
 #define GLUT_ELAPSED_TIME RTU_ELAPSED_TIME
+#ifdef RTU_WINDOW_FORMAT_ID
+#define GLUT_WINDOW_FORMAT_ID RTU_WINDOW_FORMAT_ID
+#else
 #define GLUT_WINDOW_FORMAT_ID RTGLC_ABSENT(GLUT_WINDOW_FORMAT_ID, "GLUT_WINDOW_FORMAT_ID: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_HAS_KEYBOARD
+#define GLUT_HAS_KEYBOARD RTU_HAS_KEYBOARD
+#else
 #define GLUT_HAS_KEYBOARD RTGLC_ABSENT(GLUT_HAS_KEYBOARD, "GLUT_HAS_KEYBOARD: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_HAS_MOUSE
+#define GLUT_HAS_MOUSE RTU_HAS_MOUSE
+#else
 #define GLUT_HAS_MOUSE RTGLC_ABSENT(GLUT_HAS_MOUSE, "GLUT_HAS_MOUSE: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_HAS_SPACEBALL
+#define GLUT_HAS_SPACEBALL RTU_HAS_SPACEBALL
+#else
 #define GLUT_HAS_SPACEBALL RTGLC_ABSENT(GLUT_HAS_SPACEBALL, "GLUT_HAS_SPACEBALL: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_HAS_DIAL_AND_BUTTON_BOX
+#define GLUT_HAS_DIAL_AND_BUTTON_BOX RTU_HAS_DIAL_AND_BUTTON_BOX
+#else
 #define GLUT_HAS_DIAL_AND_BUTTON_BOX RTGLC_ABSENT(GLUT_HAS_DIAL_AND_BUTTON_BOX, "GLUT_HAS_DIAL_AND_BUTTON_BOX: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_HAS_TABLET
+#define GLUT_HAS_TABLET RTU_HAS_TABLET
+#else
 #define GLUT_HAS_TABLET RTGLC_ABSENT(GLUT_HAS_TABLET, "GLUT_HAS_TABLET: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_NUM_MOUSE_BUTTONS
+#define GLUT_NUM_MOUSE_BUTTONS RTU_NUM_MOUSE_BUTTONS
+#else
 #define GLUT_NUM_MOUSE_BUTTONS RTGLC_ABSENT(GLUT_NUM_MOUSE_BUTTONS, "GLUT_NUM_MOUSE_BUTTONS: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_NUM_SPACEBALL_BUTTONS
+#define GLUT_NUM_SPACEBALL_BUTTONS RTU_NUM_SPACEBALL_BUTTONS
+#else
 #define GLUT_NUM_SPACEBALL_BUTTONS RTGLC_ABSENT(GLUT_NUM_SPACEBALL_BUTTONS, "GLUT_NUM_SPACEBALL_BUTTONS: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_NUM_BUTTON_BOX_BUTTONS
+#define GLUT_NUM_BUTTON_BOX_BUTTONS RTU_NUM_BUTTON_BOX_BUTTONS
+#else
 #define GLUT_NUM_BUTTON_BOX_BUTTONS RTGLC_ABSENT(GLUT_NUM_BUTTON_BOX_BUTTONS, "GLUT_NUM_BUTTON_BOX_BUTTONS: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_NUM_DIALS
+#define GLUT_NUM_DIALS RTU_NUM_DIALS
+#else
 #define GLUT_NUM_DIALS RTGLC_ABSENT(GLUT_NUM_DIALS, "GLUT_NUM_DIALS: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_NUM_TABLET_BUTTONS
+#define GLUT_NUM_TABLET_BUTTONS RTU_NUM_TABLET_BUTTONS
+#else
 #define GLUT_NUM_TABLET_BUTTONS RTGLC_ABSENT(GLUT_NUM_TABLET_BUTTONS, "GLUT_NUM_TABLET_BUTTONS: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_DEVICE_IGNORE_KEY_REPEAT
+#define GLUT_DEVICE_IGNORE_KEY_REPEAT RTU_DEVICE_IGNORE_KEY_REPEAT
+#else
 #define GLUT_DEVICE_IGNORE_KEY_REPEAT RTGLC_ABSENT(GLUT_DEVICE_IGNORE_KEY_REPEAT, "GLUT_DEVICE_IGNORE_KEY_REPEAT: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_DEVICE_KEY_REPEAT
+#define GLUT_DEVICE_KEY_REPEAT RTU_DEVICE_KEY_REPEAT
+#else
 #define GLUT_DEVICE_KEY_REPEAT RTGLC_ABSENT(GLUT_DEVICE_KEY_REPEAT, "GLUT_DEVICE_KEY_REPEAT: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_HAS_JOYSTICK
+#define GLUT_HAS_JOYSTICK RTU_HAS_JOYSTICK
+#else
 #define GLUT_HAS_JOYSTICK RTGLC_ABSENT(GLUT_HAS_JOYSTICK, "GLUT_HAS_JOYSTICK: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_OWNS_JOYSTICK
+#define GLUT_OWNS_JOYSTICK RTU_OWNS_JOYSTICK
+#else
 #define GLUT_OWNS_JOYSTICK RTGLC_ABSENT(GLUT_OWNS_JOYSTICK, "GLUT_OWNS_JOYSTICK: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_JOYSTICK_BUTTONS
+#define GLUT_JOYSTICK_BUTTONS RTU_JOYSTICK_BUTTONS
+#else
 #define GLUT_JOYSTICK_BUTTONS RTGLC_ABSENT(GLUT_JOYSTICK_BUTTONS, "GLUT_JOYSTICK_BUTTONS: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_JOYSTICK_AXES
+#define GLUT_JOYSTICK_AXES RTU_JOYSTICK_AXES
+#else
 #define GLUT_JOYSTICK_AXES RTGLC_ABSENT(GLUT_JOYSTICK_AXES, "GLUT_JOYSTICK_AXES: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_JOYSTICK_POLL_RATE
+#define GLUT_JOYSTICK_POLL_RATE RTU_JOYSTICK_POLL_RATE
+#else
 #define GLUT_JOYSTICK_POLL_RATE RTGLC_ABSENT(GLUT_JOYSTICK_POLL_RATE, "GLUT_JOYSTICK_POLL_RATE: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_OVERLAY_POSSIBLE
+#define GLUT_OVERLAY_POSSIBLE RTU_OVERLAY_POSSIBLE
+#else
 #define GLUT_OVERLAY_POSSIBLE RTGLC_ABSENT(GLUT_OVERLAY_POSSIBLE, "GLUT_OVERLAY_POSSIBLE: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_LAYER_IN_USE
+#define GLUT_LAYER_IN_USE RTU_LAYER_IN_USE
+#else
 #define GLUT_LAYER_IN_USE RTGLC_ABSENT(GLUT_LAYER_IN_USE, "GLUT_LAYER_IN_USE: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_HAS_OVERLAY
+#define GLUT_HAS_OVERLAY RTU_HAS_OVERLAY
+#else
 #define GLUT_HAS_OVERLAY RTGLC_ABSENT(GLUT_HAS_OVERLAY, "GLUT_HAS_OVERLAY: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_TRANSPARENT_INDEX
+#define GLUT_TRANSPARENT_INDEX RTU_TRANSPARENT_INDEX
+#else
 #define GLUT_TRANSPARENT_INDEX RTGLC_ABSENT(GLUT_TRANSPARENT_INDEX, "GLUT_TRANSPARENT_INDEX: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_NORMAL_DAMAGED
+#define GLUT_NORMAL_DAMAGED RTU_NORMAL_DAMAGED
+#else
 #define GLUT_NORMAL_DAMAGED RTGLC_ABSENT(GLUT_NORMAL_DAMAGED, "GLUT_NORMAL_DAMAGED: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_OVERLAY_DAMAGED
+#define GLUT_OVERLAY_DAMAGED RTU_OVERLAY_DAMAGED
+#else
 #define GLUT_OVERLAY_DAMAGED RTGLC_ABSENT(GLUT_OVERLAY_DAMAGED, "GLUT_OVERLAY_DAMAGED: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_VIDEO_RESIZE_POSSIBLE
+#define GLUT_VIDEO_RESIZE_POSSIBLE RTU_VIDEO_RESIZE_POSSIBLE
+#else
 #define GLUT_VIDEO_RESIZE_POSSIBLE RTGLC_ABSENT(GLUT_VIDEO_RESIZE_POSSIBLE, "GLUT_VIDEO_RESIZE_POSSIBLE: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_VIDEO_RESIZE_IN_USE
+#define GLUT_VIDEO_RESIZE_IN_USE RTU_VIDEO_RESIZE_IN_USE
+#else
 #define GLUT_VIDEO_RESIZE_IN_USE RTGLC_ABSENT(GLUT_VIDEO_RESIZE_IN_USE, "GLUT_VIDEO_RESIZE_IN_USE: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_VIDEO_RESIZE_X_DELTA
+#define GLUT_VIDEO_RESIZE_X_DELTA RTU_VIDEO_RESIZE_X_DELTA
+#else
 #define GLUT_VIDEO_RESIZE_X_DELTA RTGLC_ABSENT(GLUT_VIDEO_RESIZE_X_DELTA, "GLUT_VIDEO_RESIZE_X_DELTA: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_VIDEO_RESIZE_Y_DELTA
+#define GLUT_VIDEO_RESIZE_Y_DELTA RTU_VIDEO_RESIZE_Y_DELTA
+#else
 #define GLUT_VIDEO_RESIZE_Y_DELTA RTGLC_ABSENT(GLUT_VIDEO_RESIZE_Y_DELTA, "GLUT_VIDEO_RESIZE_Y_DELTA: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_VIDEO_RESIZE_WIDTH_DELTA
+#define GLUT_VIDEO_RESIZE_WIDTH_DELTA RTU_VIDEO_RESIZE_WIDTH_DELTA
+#else
 #define GLUT_VIDEO_RESIZE_WIDTH_DELTA RTGLC_ABSENT(GLUT_VIDEO_RESIZE_WIDTH_DELTA, "GLUT_VIDEO_RESIZE_WIDTH_DELTA: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_VIDEO_RESIZE_HEIGHT_DELTA
+#define GLUT_VIDEO_RESIZE_HEIGHT_DELTA RTU_VIDEO_RESIZE_HEIGHT_DELTA
+#else
 #define GLUT_VIDEO_RESIZE_HEIGHT_DELTA RTGLC_ABSENT(GLUT_VIDEO_RESIZE_HEIGHT_DELTA, "GLUT_VIDEO_RESIZE_HEIGHT_DELTA: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_VIDEO_RESIZE_X
+#define GLUT_VIDEO_RESIZE_X RTU_VIDEO_RESIZE_X
+#else
 #define GLUT_VIDEO_RESIZE_X RTGLC_ABSENT(GLUT_VIDEO_RESIZE_X, "GLUT_VIDEO_RESIZE_X: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_VIDEO_RESIZE_Y
+#define GLUT_VIDEO_RESIZE_Y RTU_VIDEO_RESIZE_Y
+#else
 #define GLUT_VIDEO_RESIZE_Y RTGLC_ABSENT(GLUT_VIDEO_RESIZE_Y, "GLUT_VIDEO_RESIZE_Y: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_VIDEO_RESIZE_WIDTH
+#define GLUT_VIDEO_RESIZE_WIDTH RTU_VIDEO_RESIZE_WIDTH
+#else
 #define GLUT_VIDEO_RESIZE_WIDTH RTGLC_ABSENT(GLUT_VIDEO_RESIZE_WIDTH, "GLUT_VIDEO_RESIZE_WIDTH: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_VIDEO_RESIZE_HEIGHT
+#define GLUT_VIDEO_RESIZE_HEIGHT RTU_VIDEO_RESIZE_HEIGHT
+#else
 #define GLUT_VIDEO_RESIZE_HEIGHT RTGLC_ABSENT(GLUT_VIDEO_RESIZE_HEIGHT, "GLUT_VIDEO_RESIZE_HEIGHT: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_NORMAL
+#define GLUT_NORMAL RTU_NORMAL
+#else
 #define GLUT_NORMAL RTGLC_ABSENT(GLUT_NORMAL, "GLUT_NORMAL: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_OVERLAY
+#define GLUT_OVERLAY RTU_OVERLAY
+#else
 #define GLUT_OVERLAY RTGLC_ABSENT(GLUT_OVERLAY, "GLUT_OVERLAY: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
 #define GLUT_ACTIVE_SHIFT RTU_ACTIVE_SHIFT
 #define GLUT_ACTIVE_CTRL RTU_ACTIVE_CTRL
 #define GLUT_ACTIVE_ALT RTU_ACTIVE_ALT
@@ -2356,9 +4164,21 @@ static inline void rtglc_utReportErrors(void) { }
 #else
 #define GLUT_CURSOR_FULL_CROSSHAIR 0x0066
 #endif
+#ifdef RTU_RED
+#define GLUT_RED RTU_RED
+#else
 #define GLUT_RED RTGLC_ABSENT(GLUT_RED, "GLUT_RED: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_GREEN
+#define GLUT_GREEN RTU_GREEN
+#else
 #define GLUT_GREEN RTGLC_ABSENT(GLUT_GREEN, "GLUT_GREEN: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_BLUE
+#define GLUT_BLUE RTU_BLUE
+#else
 #define GLUT_BLUE RTGLC_ABSENT(GLUT_BLUE, "GLUT_BLUE: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
 #ifdef RTU_KEY_REPEAT_OFF
 #define GLUT_KEY_REPEAT_OFF RTU_KEY_REPEAT_OFF
 #else
@@ -2374,17 +4194,61 @@ static inline void rtglc_utReportErrors(void) { }
 #else
 #define GLUT_KEY_REPEAT_DEFAULT 0x0002
 #endif
+#ifdef RTU_JOYSTICK_BUTTON_A
+#define GLUT_JOYSTICK_BUTTON_A RTU_JOYSTICK_BUTTON_A
+#else
 #define GLUT_JOYSTICK_BUTTON_A RTGLC_ABSENT(GLUT_JOYSTICK_BUTTON_A, "GLUT_JOYSTICK_BUTTON_A: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_JOYSTICK_BUTTON_B
+#define GLUT_JOYSTICK_BUTTON_B RTU_JOYSTICK_BUTTON_B
+#else
 #define GLUT_JOYSTICK_BUTTON_B RTGLC_ABSENT(GLUT_JOYSTICK_BUTTON_B, "GLUT_JOYSTICK_BUTTON_B: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_JOYSTICK_BUTTON_C
+#define GLUT_JOYSTICK_BUTTON_C RTU_JOYSTICK_BUTTON_C
+#else
 #define GLUT_JOYSTICK_BUTTON_C RTGLC_ABSENT(GLUT_JOYSTICK_BUTTON_C, "GLUT_JOYSTICK_BUTTON_C: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_JOYSTICK_BUTTON_D
+#define GLUT_JOYSTICK_BUTTON_D RTU_JOYSTICK_BUTTON_D
+#else
 #define GLUT_JOYSTICK_BUTTON_D RTGLC_ABSENT(GLUT_JOYSTICK_BUTTON_D, "GLUT_JOYSTICK_BUTTON_D: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_GAME_MODE_ACTIVE
+#define GLUT_GAME_MODE_ACTIVE RTU_GAME_MODE_ACTIVE
+#else
 #define GLUT_GAME_MODE_ACTIVE RTGLC_ABSENT(GLUT_GAME_MODE_ACTIVE, "GLUT_GAME_MODE_ACTIVE: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_GAME_MODE_POSSIBLE
+#define GLUT_GAME_MODE_POSSIBLE RTU_GAME_MODE_POSSIBLE
+#else
 #define GLUT_GAME_MODE_POSSIBLE RTGLC_ABSENT(GLUT_GAME_MODE_POSSIBLE, "GLUT_GAME_MODE_POSSIBLE: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_GAME_MODE_WIDTH
+#define GLUT_GAME_MODE_WIDTH RTU_GAME_MODE_WIDTH
+#else
 #define GLUT_GAME_MODE_WIDTH RTGLC_ABSENT(GLUT_GAME_MODE_WIDTH, "GLUT_GAME_MODE_WIDTH: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_GAME_MODE_HEIGHT
+#define GLUT_GAME_MODE_HEIGHT RTU_GAME_MODE_HEIGHT
+#else
 #define GLUT_GAME_MODE_HEIGHT RTGLC_ABSENT(GLUT_GAME_MODE_HEIGHT, "GLUT_GAME_MODE_HEIGHT: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_GAME_MODE_PIXEL_DEPTH
+#define GLUT_GAME_MODE_PIXEL_DEPTH RTU_GAME_MODE_PIXEL_DEPTH
+#else
 #define GLUT_GAME_MODE_PIXEL_DEPTH RTGLC_ABSENT(GLUT_GAME_MODE_PIXEL_DEPTH, "GLUT_GAME_MODE_PIXEL_DEPTH: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_GAME_MODE_REFRESH_RATE
+#define GLUT_GAME_MODE_REFRESH_RATE RTU_GAME_MODE_REFRESH_RATE
+#else
 #define GLUT_GAME_MODE_REFRESH_RATE RTGLC_ABSENT(GLUT_GAME_MODE_REFRESH_RATE, "GLUT_GAME_MODE_REFRESH_RATE: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
+#ifdef RTU_GAME_MODE_DISPLAY_CHANGED
+#define GLUT_GAME_MODE_DISPLAY_CHANGED RTU_GAME_MODE_DISPLAY_CHANGED
+#else
 #define GLUT_GAME_MODE_DISPLAY_CHANGED RTGLC_ABSENT(GLUT_GAME_MODE_DISPLAY_CHANGED, "GLUT_GAME_MODE_DISPLAY_CHANGED: not in the rtu GLUT shell (docs/glcompat.md)")
+#endif
 #define GLUT_BITMAP_9_BY_15 RTU_BITMAP_9_BY_15
 #define GLUT_BITMAP_8_BY_13 RTU_BITMAP_8_BY_13
 #define GLUT_BITMAP_TIMES_ROMAN_10 RTU_BITMAP_TIMES_ROMAN_10
@@ -2392,8 +4256,16 @@ static inline void rtglc_utReportErrors(void) { }
 #define GLUT_BITMAP_HELVETICA_10 RTU_BITMAP_HELVETICA_10
 #define GLUT_BITMAP_HELVETICA_12 RTU_BITMAP_HELVETICA_12
 #define GLUT_BITMAP_HELVETICA_18 RTU_BITMAP_HELVETICA_18
+#ifdef RTU_STROKE_ROMAN
+#define GLUT_STROKE_ROMAN RTU_STROKE_ROMAN
+#else
 #define GLUT_STROKE_ROMAN RTGLC_ABSENT(GLUT_STROKE_ROMAN, "GLUT_STROKE_ROMAN: no stroke fonts (docs/glcompat.md)")
+#endif
+#ifdef RTU_STROKE_MONO_ROMAN
+#define GLUT_STROKE_MONO_ROMAN RTU_STROKE_MONO_ROMAN
+#else
 #define GLUT_STROKE_MONO_ROMAN RTGLC_ABSENT(GLUT_STROKE_MONO_ROMAN, "GLUT_STROKE_MONO_ROMAN: no stroke fonts (docs/glcompat.md)")
+#endif
 
 #ifdef __cplusplus
 }
