@@ -1,9 +1,12 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * offscreen_rt.c - offscreen.h over Tracelist: the build under test.  A
- * frame ends with rtRenderFrame (what a buffer swap is for a ray tracer);
- * every error is counted and printed through rtErrorCallback, so that a
- * program that renders the right image with errors along the way fails.
+ * frame ends with rtFinish, as it ends with glFinish on the GL side: in a
+ * GL-style frame (one begun by glClear / rtClear) the frame described and
+ * not rendered yet is rendered then, and an already rendered one (by the
+ * program's glFlush) is not rendered again.  Every error is counted and
+ * printed through rtErrorCallback, so that a program that renders the
+ * right image with errors along the way fails.
  */
 #include "offscreen.h"
 #include "ppm.h"
@@ -42,7 +45,7 @@ int offscreen_open(int width, int height)
 
 void offscreen_swap(void)
 {
-    rtRenderFrame();
+    rtFinish();
 }
 
 int offscreen_close(const char *path)
