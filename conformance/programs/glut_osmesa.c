@@ -5,9 +5,10 @@
  * rules of the Tracelist rtu shell (docs/glcompat.md):
  *
  *   TRACELIST_SIZE    WxH, replaces the glutInitWindowSize size
- *   TRACELIST_EVENTS  space-separated: "k:x" a key, "s:101" a special key
- *                     code, "m:Label" a menu entry by its label ('_' for a
- *                     space); replayed in order after the reshape callback
+ *   TRACELIST_EVENTS  space-separated: "k:x" a key ("k:#27" by its code),
+ *                     "s:101" a special key code, "m:Label" a menu entry by
+ *                     its label ('_' for a space); replayed in order after
+ *                     the reshape callback
  *   TRACELIST_FRAMES  display calls (default 1), the idle callback between
  *   TRACELIST_OUT     the file of the last frame (binary PPM)
  *
@@ -141,9 +142,12 @@ int glutGet(GLenum state)
 /* One event of TRACELIST_EVENTS; returns 0 for one it does not know. */
 static int replay(const char *event)
 {
-    if (strncmp(event, "k:", 2) == 0 && event[2] && !event[3]) {
+    if (strncmp(event, "k:", 2) == 0 && event[2] && (!event[3] || event[2] == '#')) {
+        int key = event[2] == '#' ? atoi(event + 3) : (unsigned char)event[2];
+        if (key < 0 || key > 255)
+            return 0;
         if (glut.keyboard)
-            glut.keyboard((unsigned char)event[2], 0, 0);
+            glut.keyboard((unsigned char)key, 0, 0);
         return 1;
     }
     if (strncmp(event, "s:", 2) == 0) {
