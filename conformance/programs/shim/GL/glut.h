@@ -1,0 +1,71 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * shim/GL/glut.h - a headless GLUT subset over Mesa's OSMesa, for building
+ * the GLUT programs of conformance/programs against real GL without a
+ * display (glut_osmesa.c).  It runs a program the way the Tracelist rtu
+ * shell runs it headless: the reshape callback at the window size, the
+ * events of TRACELIST_EVENTS, TRACELIST_FRAMES display calls (default 1),
+ * then the last frame written to TRACELIST_OUT (binary PPM) and exit.
+ *
+ * Names and values are GLUT 3's (its API, not its code).  Only the calls
+ * the programs here use are declared.
+ */
+#ifndef PROGRAMS_SHIM_GLUT_H
+#define PROGRAMS_SHIM_GLUT_H
+
+#include <GL/gl.h>
+#include <GL/glu.h>
+
+#define GLUT_RGB 0
+#define GLUT_RGBA 0
+#define GLUT_SINGLE 0
+#define GLUT_DOUBLE 2
+#define GLUT_DEPTH 16
+
+#define GLUT_LEFT_BUTTON 0
+#define GLUT_MIDDLE_BUTTON 1
+#define GLUT_RIGHT_BUTTON 2
+#define GLUT_DOWN 0
+#define GLUT_UP 1
+
+#define GLUT_KEY_F1 1
+#define GLUT_KEY_LEFT 100
+#define GLUT_KEY_UP 101
+#define GLUT_KEY_RIGHT 102
+#define GLUT_KEY_DOWN 103
+#define GLUT_KEY_PAGE_UP 104
+#define GLUT_KEY_PAGE_DOWN 105
+#define GLUT_KEY_HOME 106
+#define GLUT_KEY_END 107
+
+#define GLUT_WINDOW_WIDTH 102
+#define GLUT_WINDOW_HEIGHT 103
+#define GLUT_ELAPSED_TIME 700
+
+void glutInit(int *argcp, char **argv);
+void glutInitDisplayMode(unsigned int mode);
+void glutInitWindowSize(int width, int height);
+void glutInitWindowPosition(int x, int y);
+int glutCreateWindow(const char *title);
+void glutDisplayFunc(void (*func)(void));
+void glutReshapeFunc(void (*func)(int width, int height));
+void glutKeyboardFunc(void (*func)(unsigned char key, int x, int y));
+void glutSpecialFunc(void (*func)(int key, int x, int y));
+void glutIdleFunc(void (*func)(void));
+void glutMainLoop(void);
+void glutSwapBuffers(void);
+void glutPostRedisplay(void);
+int glutCreateMenu(void (*func)(int value));
+void glutAddMenuEntry(const char *label, int value);
+void glutAttachMenu(int button);
+int glutGet(GLenum state);
+
+/* GLUT 3's solids as drawn by ../gl_oracle/glut_gl.c, and the wire cube. */
+void glutSolidSphere(GLdouble radius, GLint slices, GLint stacks);
+void glutSolidCube(GLdouble size);
+void glutSolidCone(GLdouble base, GLdouble height, GLint slices, GLint stacks);
+void glutSolidTorus(GLdouble innerRadius, GLdouble outerRadius, GLint sides, GLint rings);
+void glutSolidTeapot(GLdouble size);
+void glutWireCube(GLdouble size);
+
+#endif /* PROGRAMS_SHIM_GLUT_H */
