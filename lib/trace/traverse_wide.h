@@ -104,6 +104,11 @@ static inline void wide_prefetch(const void *node, size_t bytes)
         _mm_prefetch((const char *)node + off, _MM_HINT_T0);
 }
 
+/* Forced inline, as wide_leaf: inlined into walk_wide, the state's
+ * address never escapes and its fields live in registers. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
 static inline int walk_wide4(const struct bvh4 *wide, struct wide_state *s)
 {
     const struct trace_ray *ray = s->ray;
@@ -191,6 +196,9 @@ static inline int walk_wide4(const struct bvh4 *wide, struct wide_state *s)
 }
 
 #if defined(__AVX__)
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
 static inline int walk_wide8(const struct bvh4 *wide, struct wide_state *s)
 {
     const struct trace_ray *ray = s->ray;
@@ -277,6 +285,9 @@ static inline int walk_wide8(const struct bvh4 *wide, struct wide_state *s)
 
 /* The walk of the layout's width; a width this table does not walk
  * (8 without AVX) takes the binary walk, which gives the same answers. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
 static inline int walk_wide(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,
                             const struct trace_ray *ray, float t_max, int any_hit,
                             struct trace_hit *hit, struct trace_counters *counters)
