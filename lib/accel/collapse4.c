@@ -128,18 +128,15 @@ static int gather(const struct bvh *bvh, const uint32_t *span, uint32_t inner, u
  * their box centres on the octant's diagonal (ties: lower lane first),
  * unused lanes last.  A heuristic only: the walk's answers do not
  * depend on the order of visits (traverse_wide.h). */
-static void octant_order(const struct bvh *bvh, const struct scratch_node *s, int oct,
+static void octant_order(const double centre[MAX_WIDTH][3], int lanes, int oct,
                          int order[MAX_WIDTH])
 {
     double key[MAX_WIDTH];
     int m = 0;
-    for (int l = 0; l < s->lanes; l++) {
-        const struct bvh_node *b = &bvh->nodes[s->source[l]];
+    for (int l = 0; l < lanes; l++) {
         double k = 0.0;
-        for (int a = 0; a < 3; a++) {
-            double c = (double)b->aabb_min[a] + (double)b->aabb_max[a];
-            k += (oct >> a & 1) ? -c : c;
-        }
+        for (int a = 0; a < 3; a++)
+            k += (oct >> a & 1) ? -centre[l][a] : centre[l][a];
         int j = m++;
         while (j > 0 && key[j - 1] > k) {
             key[j] = key[j - 1];
@@ -149,8 +146,19 @@ static void octant_order(const struct bvh *bvh, const struct scratch_node *s, in
         key[j] = k;
         order[j] = l;
     }
-    for (int l = s->lanes; l < MAX_WIDTH; l++)
+    for (int l = lanes; l < MAX_WIDTH; l++)
         order[l] = l;
+}
+
+/* Twice the lanes' box centres (the order only compares them). */
+static void lane_centres(const struct bvh *bvh, const struct scratch_node *s,
+                         double centre[MAX_WIDTH][3])
+{
+    for (int l = 0; l < s->lanes; l++) {
+        const struct bvh_node *b = &bvh->nodes[s->source[l]];
+        for (int a = 0; a < 3; a++)
+            centre[l][a] = (double)b->aabb_min[a] + (double)b->aabb_max[a];
+    }
 }
 
 static void write_node4(struct bvh4_node *w, const struct bvh *bvh, const struct scratch_node *s)
@@ -164,9 +172,11 @@ static void write_node4(struct bvh4_node *w, const struct bvh *bvh, const struct
         w->child[l] = l < s->lanes ? s->child[l] : 0;
         w->count[l] = (uint8_t)(l < s->lanes ? s->count[l] : 0);
     }
+    double centre[MAX_WIDTH][3];
+    lane_centres(bvh, s, centre);
     for (int oct = 0; oct < 8; oct++) {
         int order[MAX_WIDTH];
-        octant_order(bvh, s, oct, order);
+        octant_order(centre, s->lanes, oct, order);
         unsigned bits = 0;
         for (int p = 0; p < 4; p++)
             bits |= (unsigned)order[p] << (2 * p);
@@ -185,9 +195,11 @@ static void write_node8(struct bvh8_node *w, const struct bvh *bvh, const struct
         w->child[l] = l < s->lanes ? s->child[l] : 0;
         w->count[l] = (uint8_t)(l < s->lanes ? s->count[l] : 0);
     }
+    double centre[MAX_WIDTH][3];
+    lane_centres(bvh, s, centre);
     for (int oct = 0; oct < 8; oct++) {
         int order[MAX_WIDTH];
-        octant_order(bvh, s, oct, order);
+        octant_order(centre, s->lanes, oct, order);
         uint32_t bits = 0;
         for (int p = 0; p < 8; p++)
             bits |= (uint32_t)order[p] << (3 * p);
