@@ -199,7 +199,7 @@ double bench_agreement_percent(const struct bench_agreement *a);
 struct bench_accel {
     struct bvh bvh;
     float *tri; /* accel_gather_triangles */
-    struct bvh4 wide; /* accel_collapse4 */
+    struct bvh4 wide; /* accel_collapse_wide, bench_layout_width() wide */
 };
 
 /* Builds with the given parameters (boxes + build + gather).  Returns 0
@@ -243,9 +243,12 @@ double bench_run_parallel(bench_kernel_fn kernel, void *ctx, const struct bench_
  * is unknown or not runnable here. */
 const struct trace_kernels *bench_kernels(void);
 int bench_select_isa(const char *name);
-/* "bvh4" (default: the 4-wide walk where the ISA table has one) or
+/* "bvh8", "bvh4" (default: the table's widest walk, wide_width) or
  * "binary" (--layout); -1 for another name. */
 int bench_select_layout(const char *name);
+/* The width bench_accel_build collapses to: --layout's, else the
+ * table's wide_width (4 for the scalar table, which walks none). */
+uint32_t bench_layout_width(void);
 
 void bench_kernel_closest(void *ctx, const RTray *rays, uint32_t begin, uint32_t end,
                           struct bench_hit *hits);

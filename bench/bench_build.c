@@ -67,11 +67,12 @@ struct build_result {
     double primary_nodes, primary_tris;
     double random_nodes, random_tris;
     double trace_ms;
-    /* The 4-wide layout collapsed from this tree (first builder only). */
-    uint32_t wide_nodes;
-    double collapse_ms;
-    double primary_nodes4, primary_tris4;
-    double random_nodes4, random_tris4;
+    /* The 4- and 8-wide layouts collapsed from this tree (first builder
+     * only), [0] 4-wide, [1] 8-wide. */
+    double node_bytes[2], leaf_bytes[2];
+    double collapse_ms[2];
+    double primary_nodes4[2], primary_tris4[2];
+    double random_nodes4[2], random_tris4[2];
 };
 
 /* Measures every builder on one mesh.  The runs are interleaved (run 1 of
@@ -124,14 +125,15 @@ static int measure_builders(const struct bench_options *opts, const struct bench
         r->sah = accel_sah_cost(&acc[b].bvh, BVH_C_TRAV, BVH_C_ISECT);
         bench_count_tests(&acc[b], primary, &r->primary_nodes, &r->primary_tris);
         bench_count_tests(&acc[b], random, &r->random_nodes, &r->random_tris);
-        if (b == 0) {
+        for (int w = 0; b == 0 && w < 2; w++) {
             double start = rt_now_ms();
-            if (accel_collapse4(&acc[b].wide, &acc[b].bvh))
+            if (accel_collapse_wide(&acc[b].wide, &acc[b].bvh, acc[b].tri, w ? 8 : 4))
                 goto out;
-            r->collapse_ms = rt_now_ms() - start;
-            r->wide_nodes = acc[b].wide.node_count;
-            bench_count_tests_wide(&acc[b], primary, &r->primary_nodes4, &r->primary_tris4);
-            bench_count_tests_wide(&acc[b], random, &r->random_nodes4, &r->random_tris4);
+            r->collapse_ms[w] = rt_now_ms() - start;
+            r->node_bytes[w] = (double)bvh4_node_bytes(&acc[b].wide);
+            r->leaf_bytes[w] = (double)bvh4_leaf_bytes(&acc[b].wide);
+            bench_count_tests_wide(&acc[b], primary, &r->primary_nodes4[w], &r->primary_tris4[w]);
+            bench_count_tests_wide(&acc[b], random, &r->random_nodes4[w], &r->random_tris4[w]);
             bench_accel_release_wide(&acc[b]);
         }
     }
@@ -253,23 +255,31 @@ int bench_build_section(const struct bench_options *opts, struct bench_mesh *mes
     for (int m = 0; m < mesh_count && m < 8; m++)
         failed |= build_mesh(opts, &meshes[m], script, sizeof(script), m == 0, &first[m]) != 0;
     bench_share_report();
-    report_printf("\nLayouts of the %s tree: node bytes per triangle (binary: 32-byte "
-                  "nodes; bvh4: 128-byte nodes, trace/bvh4_layout.h), the collapse's time "
-                  "(one thread), and box and triangle tests per ray of the binary walk "
-                  "(scalar table) and of the wide walk (best table; a box test is one "
-                  "child box, four per wide node visited). Same hits.\n\n",
+    report_printf("\nLayouts of the %s tree: bytes per triangle of the nodes and of the "
+                  "leaves (binary: 32-byte nodes, leaves the 36-byte leaf-ordered triangles "
+                  "plus the 4-byte primitive index; bvh4/bvh8: 128/256-byte nodes, leaves "
+                  "160-byte packets of four triangles, trace/bvh4_layout.h; Embree 3's "
+                  "BVH8 node is 256 bytes and its Triangle4 leaf block 176), the "
+                  "collapse's time (one thread), and box and triangle tests per ray of the "
+                  "binary walk (scalar table) and of the wide walks (best table; a box test "
+                  "is one child box: four or eight per wide node visited; a triangle test "
+                  "one packet lane). Same hits.\n\n",
                   builders[0].label);
-    report_table_header("mesh|binary B/tri|bvh4 B/tri|collapse ms|"
-                        "primary boxes/ray binary|bvh4|primary tris/ray binary|bvh4|"
-                        "random boxes/ray binary|bvh4|random tris/ray binary|bvh4");
+    report_table_header("mesh|binary node B/tri|leaf|bvh4 node B/tri|leaf|bvh8 node B/tri|leaf|"
+                        "collapse ms bvh4|bvh8|"
+                        "primary boxes/ray binary|bvh4|bvh8|primary tris/ray binary|bvh4|bvh8|"
+                        "random boxes/ray binary|bvh4|bvh8|random tris/ray binary|bvh4|bvh8");
     for (int m = 0; m < mesh_count && m < 8; m++) {
         const struct build_result *r = &first[m];
         double n = meshes[m].tri_count ? (double)meshes[m].tri_count : 1.0;
-        report_row("%s|%.1f|%.1f|%.2f|%.1f|%.1f|%.2f|%.2f|%.1f|%.1f|%.2f|%.2f", meshes[m].name,
-                   32.0 * r->nodes / n, (double)sizeof(struct bvh4_node) * r->wide_nodes / n,
-                   r->collapse_ms, r->primary_nodes, r->primary_nodes4, r->primary_tris,
-                   r->primary_tris4, r->random_nodes, r->random_nodes4, r->random_tris,
-                   r->random_tris4);
+        report_row("%s|%.1f|%.1f|%.1f|%.1f|%.1f|%.1f|%.2f|%.2f|%.1f|%.1f|%.1f|%.2f|%.2f|%.2f|"
+                   "%.1f|%.1f|%.1f|%.2f|%.2f|%.2f",
+                   meshes[m].name, 32.0 * r->nodes / n, 40.0, r->node_bytes[0] / n,
+                   r->leaf_bytes[0] / n, r->node_bytes[1] / n, r->leaf_bytes[1] / n,
+                   r->collapse_ms[0], r->collapse_ms[1], r->primary_nodes, r->primary_nodes4[0],
+                   r->primary_nodes4[1], r->primary_tris, r->primary_tris4[0],
+                   r->primary_tris4[1], r->random_nodes, r->random_nodes4[0],
+                   r->random_nodes4[1], r->random_tris, r->random_tris4[0], r->random_tris4[1]);
     }
     strncat(script, "\n", sizeof(script) - strlen(script) - 1);
     if (!failed)

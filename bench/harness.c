@@ -27,14 +27,25 @@ static const struct trace_kernels *chosen_kernels;
 
 /* --layout binary: the binary walk even where the table has a wide one. */
 static int binary_layout;
+/* --layout bvh4 / bvh8: that width; 0 = the table's own (wide_width). */
+static uint32_t chosen_width;
 
 int bench_select_layout(const char *name)
 {
-    if (!strcmp(name, "binary") || !strcmp(name, "bvh4")) {
+    if (!strcmp(name, "binary") || !strcmp(name, "bvh4") || !strcmp(name, "bvh8")) {
         binary_layout = !strcmp(name, "binary");
+        chosen_width = !strcmp(name, "bvh8") ? 8 : !strcmp(name, "bvh4") ? 4 : 0;
         return 0;
     }
     return -1;
+}
+
+uint32_t bench_layout_width(void)
+{
+    if (chosen_width)
+        return chosen_width;
+    uint32_t w = bench_kernels()->wide_width;
+    return w ? w : 4;
 }
 
 const struct trace_kernels *bench_kernels(void)
@@ -63,7 +74,8 @@ int bench_accel_build(struct bench_accel *acc, const struct bench_mesh *mesh,
     if (rc)
         return -1;
     acc->tri = accel_gather_triangles(&acc->bvh, mesh->positions, mesh->indices);
-    if (!acc->tri || accel_collapse4(&acc->wide, &acc->bvh)) {
+    if (!acc->tri ||
+        accel_collapse_wide(&acc->wide, &acc->bvh, acc->tri, bench_layout_width())) {
         rt_free(acc->tri);
         bvh_release(&acc->bvh);
         memset(acc, 0, sizeof(*acc));

@@ -68,8 +68,9 @@ static void usage(FILE *f)
             "             --tolerance PCT (default %.0f) and exit with status 2\n"
             "  --isa NAME  our kernels' ISA table: scalar, sse4, avx2, avx512; default the\n"
             "             best this CPU runs (API contexts always use their default)\n"
-            "  --layout L  our object walk's layout: bvh4 (default, where the ISA table\n"
-            "             has a wide walk) or binary (the walk before the collapse)\n"
+            "  --layout L  our object walk's layout: bvh8 (AVX2, AVX-512), bvh4 (SSE4.2\n"
+            "             up), binary (the walk before the collapse); default the\n"
+            "             widest the ISA table walks\n"
             "  --bart-dir DIR  the BART folder (kitchen/, robots/, museum/); default\n"
             "             $TRACELIST_BART_DIR, else the build's RT_BART_DIR\n",
 #ifdef RT_HAVE_EMBREE
@@ -140,7 +141,7 @@ int main(int argc, char **argv)
             i++;
         } else if (!strcmp(a, "--layout") && value) {
             if (bench_select_layout(value)) {
-                fprintf(stderr, "rtbench: --layout takes bvh4 or binary\n");
+                fprintf(stderr, "rtbench: --layout takes bvh8, bvh4 or binary\n");
                 return 1;
             }
             i++;

@@ -23,8 +23,9 @@
  * over a grid-snapped soup (coincident planes and shared coordinates), a
  * random soup, a cube-sphere at 1e5 and a flat cube.
  *
- * The same rays then go through each table's walk over the 4-wide layout
- * (bvh4_layout.h, traverse_wide.h) and must give the scalar binary
+ * The same rays then go through each table's walk over the 4-wide and the
+ * 8-wide layout (bvh4_layout.h, traverse_wide.h; a table without the
+ * 8-wide walk takes the binary one) and must give the scalar binary
  * walk's answers bit for bit (found, t, u, v, primitive, closest and any
  * hit); the node and triangle counts differ by design and are printed
  * per layout.  With `deform`, the mesh's vertices are moved after the
@@ -119,14 +120,16 @@ static void compare_tables(const char *name, struct tg_mesh *m, int rays, uint64
         exit(1);
     }
     float *tri = accel_gather_triangles(&bvh, m->pos, m->idx);
-    struct bvh4 wide;
-    if (accel_collapse4(&wide, &bvh)) {
+    struct bvh4 wides[2];
+    if (accel_collapse_wide(&wides[0], &bvh, tri, 4) ||
+        accel_collapse_wide(&wides[1], &bvh, tri, 8)) {
         fprintf(stderr, "out of memory\n");
         exit(1);
     }
-    printf("  %s: node bytes per triangle: binary %.1f, bvh4 %.1f\n", name,
+    printf("  %s: node bytes per triangle: binary %.1f, bvh4 %.1f, bvh8 %.1f\n", name,
            32.0 * bvh.node_count / m->tri_count,
-           (double)sizeof(struct bvh4_node) * wide.node_count / m->tri_count);
+           (double)bvh4_node_bytes(&wides[0]) / m->tri_count,
+           (double)bvh4_node_bytes(&wides[1]) / m->tri_count);
     if (deform) {
         /* A twist about z growing with height, and a shift: every box
          * moves. */
@@ -139,13 +142,16 @@ static void compare_tables(const char *name, struct tg_mesh *m, int rays, uint64
             p[1] = y;
         }
         accel_refit_mesh(&bvh, tri, m->pos, m->idx, NULL);
-        accel_refit4(&wide, &bvh);
+        accel_refit4(&wides[0], &bvh, tri);
+        accel_refit4(&wides[1], &bvh, tri);
     }
     const struct trace_kernels *ref = trace_kernels_get(TRACE_ISA_SCALAR);
-    for (int isa = TRACE_ISA_SCALAR + 1; isa < TRACE_ISA_COUNT; isa++) {
-        const struct trace_kernels *k = trace_kernels_get((enum trace_isa)isa);
-        if (!k)
+    for (int isa = TRACE_ISA_SCALAR + 1; isa < 2 * TRACE_ISA_COUNT; isa++) {
+        const struct trace_kernels *k = trace_kernels_get((enum trace_isa)(isa / 2));
+        if (!k || isa / 2 == TRACE_ISA_SCALAR)
             continue;
+        const struct bvh4 *wide = &wides[isa % 2];
+        const char *layout = isa % 2 ? "bvh8" : "bvh4";
         struct tg_rng r;
         tg_seed(&r, seed);
         int differ = 0;
@@ -173,10 +179,10 @@ static void compare_tables(const char *name, struct tg_mesh *m, int rays, uint64
                 struct trace_hit h4;
                 memset(&h4, 0, sizeof(h4));
                 struct trace_counters c4 = {0, 0};
-                int f4 = k->closest4(&wide, &bvh, tri, &ray, t_max, &h4, &c4);
+                int f4 = k->closest4(wide, &bvh, tri, &ray, t_max, &h4, &c4);
                 n4.node_tests += c4.node_tests;
                 n4.triangle_tests += c4.triangle_tests;
-                int a4 = k->any4(&wide, &bvh, tri, &ray, t_max, NULL);
+                int a4 = k->any4(wide, &bvh, tri, &ray, t_max, NULL);
                 struct trace_counters c2 = {0, 0};
                 struct trace_hit h2;
                 ref->closest(&bvh, tri, &ray, t_max, &h2, &c2);
@@ -184,8 +190,8 @@ static void compare_tables(const char *name, struct tg_mesh *m, int rays, uint64
                 n2.triangle_tests += c2.triangle_tests;
                 if (f0 != f4 || a0 != a4 || memcmp(&h0, &h4, sizeof(h0)) != 0) {
                     if (differ4 < 5)
-                        printf("    bvh4 ray %d: found %d/%d any %d/%d t %a/%a prim %u/%u\n", i,
-                               f0, f4, a0, a4, h0.t, h4.t, h0.prim, h4.prim);
+                        printf("    %s ray %d: found %d/%d any %d/%d t %a/%a prim %u/%u\n",
+                               layout, i, f0, f4, a0, a4, h0.t, h4.t, h0.prim, h4.prim);
                     differ4++;
                 }
             }
@@ -194,17 +200,18 @@ static void compare_tables(const char *name, struct tg_mesh *m, int rays, uint64
                  k->name, differ, rays);
         printf("  %s: %s = scalar on %d rays\n", name, k->name, rays - differ);
         if (k->closest4) {
-            failures += !CHECKF(differ4 == 0, "%s: %s bvh4 differs from scalar binary on %d of %d rays",
-                     name, k->name, differ4, rays);
-            printf("  %s: %s bvh4 = scalar binary on %d rays; per closest ray: nodes %.1f -> %.1f, "
+            failures += !CHECKF(differ4 == 0, "%s: %s %s differs from scalar binary on %d of %d rays",
+                     name, k->name, layout, differ4, rays);
+            printf("  %s: %s %s = scalar binary on %d rays; per closest ray: nodes %.1f -> %.1f, "
                    "triangles %.1f -> %.1f\n",
-                   name, k->name, rays - differ4, (double)n2.node_tests / rays,
+                   name, k->name, layout, rays - differ4, (double)n2.node_tests / rays,
                    (double)n4.node_tests / rays, (double)n2.triangle_tests / rays,
                    (double)n4.triangle_tests / rays);
         }
     }
     rt_free(tri);
-    bvh4_release(&wide);
+    bvh4_release(&wides[0]);
+    bvh4_release(&wides[1]);
     bvh_release(&bvh);
     free(boxes);
 }

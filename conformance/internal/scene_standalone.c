@@ -40,9 +40,11 @@ static enum scene_record_status record_quad(struct scene_recording *rec, float z
     return SCENE_RECORD_OK;
 }
 
-/* The 4-wide layout is made only when the kernels walk it: a context
+/* The wide layout is made only when the kernels walk it: a context
  * with isa=scalar sets wide_layout to 0 (api/context.c), and then no
- * build spends time or memory on it; the binary tree is the same. */
+ * build spends time or memory on it; the binary tree is the same.  An
+ * AVX2 context sets 8 and gets the 8-wide layout, others 4 (the default
+ * 1 means 4); the collapse and the wide refit are timed. */
 static void check_wide_layout_only_when_walked(void)
 {
     static const float positions[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0,
@@ -66,7 +68,20 @@ static void check_wide_layout_only_when_walked(void)
         /* A refit of the binary-only structure leaves it binary-only. */
         scene_accel_refit(without, &g, &params, NULL);
         CHECK(without->wide.node_count == 0);
+        CHECK(with->wide.width == 4 && with->wide.nodes8 == NULL && with->collapse_ms >= 0.0);
+        CHECK(with->wide.packet_count > 0 && with->wide.packets != NULL);
     }
+    params.wide_layout = 8;
+    struct scene_accel *eight = scene_accel_build(&g, &params, SCENE_ACCEL_SERIAL, NULL);
+    CHECK(eight != NULL);
+    if (eight) {
+        CHECK(eight->wide.width == 8 && eight->wide.nodes8 != NULL && eight->wide.nodes == NULL);
+        CHECK(((uintptr_t)eight->wide.nodes8 & 63u) == 0);
+        CHECK(eight->wide_refit_ms == 0.0);
+        scene_accel_refit(eight, &g, &params, NULL);
+        CHECK(eight->wide.width == 8 && eight->wide_refit_ms >= 0.0);
+    }
+    scene_accel_release(eight);
     scene_accel_release(with);
     scene_accel_release(without);
 }

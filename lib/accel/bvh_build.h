@@ -49,10 +49,11 @@ struct bvh_build_params {
      * scenes"): the binned and sweep builders do not read it yet. */
     float leaf_growth;
     /* Not read by the builders: whoever finishes a build (scene/accel.c)
-     * also collapses it into the 4-wide traversal layout (collapse4.c)
-     * when this is 1 (the default).  The context sets it to 0 when its
-     * kernels walk only the binary tree (isa=scalar), so no time or
-     * memory goes to a layout nothing reads. */
+     * also collapses it into the wide traversal layout (collapse4.c):
+     * 8-wide when this is 8, 4-wide for any other non-zero value (the
+     * default is 1), none for 0.  The context sets it to its kernels'
+     * wide_width: 0 when they walk only the binary tree (isa=scalar), so
+     * no time or memory goes to a layout nothing reads, 8 for AVX2. */
     int wide_layout;
 };
 

@@ -1,7 +1,13 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * collapse4.c - the binary BVH collapsed into the 4-wide traversal layout
- * (trace/bvh4_layout.h).
+ * collapse4.c - the binary BVH collapsed into the wide traversal layout,
+ * 4- or 8-wide, with triangle packets for leaves (trace/bvh4_layout.h),
+ * and its refit.
+ *
+ * Three steps: per binary node, the leaf slots its subtree covers (to
+ * find subtrees small enough to become one packet leaf); the greedy
+ * collapse into a width-generic scratch node; the final nodes (with the
+ * per-octant child order) and packets in one 64-byte aligned block.
  */
 #include "trace/bvh4_layout.h"
 
@@ -11,6 +17,18 @@
 
 #include "base/alloc.h"
 
+#define MAX_WIDTH 8
+
+/* A wide node before it is written in its width's layout.  count is the
+ * leaf's triangles (0: inner child or unused lane); a leaf's child is its
+ * first leaf slot until the packets are made. */
+struct scratch_node {
+    uint32_t source[MAX_WIDTH];
+    uint32_t child[MAX_WIDTH];
+    uint32_t count[MAX_WIDTH];
+    int lanes;
+};
+
 static float node_area(const struct bvh_node *n)
 {
     float dx = n->aabb_max[0] - n->aabb_min[0];
@@ -19,40 +37,81 @@ static float node_area(const struct bvh_node *n)
     return dx * dy + dy * dz + dz * dx;
 }
 
-static void set_lane(struct bvh4_node *w, int lane, const struct bvh_node *n)
+/* Per binary node, the triangles of its subtree when they occupy
+ * consecutive leaf slots (span[n] of them from first[n]), else span 0.
+ * Builders partition slots in place, so a subtree's slots are normally
+ * consecutive; restructuring can break that, and such a subtree is then
+ * simply never merged.  Children are visited before parents: reverse
+ * preorder.  Returns 0 or -1 on allocation failure. */
+static int subtree_spans(const struct bvh *bvh, uint32_t *first, uint32_t *span)
 {
-    for (int k = 0; k < 3; k++) {
-        w->bounds[k][lane] = n->aabb_min[k];
-        w->bounds[3 + k][lane] = n->aabb_max[k];
+    uint32_t *pre = rt_calloc(bvh->node_count, sizeof(uint32_t));
+    uint32_t *stack = rt_calloc(BVH_MAX_DEPTH + 2, sizeof(uint32_t));
+    if (!pre || !stack) {
+        rt_free(pre);
+        rt_free(stack);
+        return -1;
     }
+    uint32_t n = 0;
+    uint32_t sp = 0;
+    stack[sp++] = 0;
+    while (sp) {
+        uint32_t i = stack[--sp];
+        pre[n++] = i;
+        if (bvh->nodes[i].count == 0) {
+            stack[sp++] = bvh->nodes[i].first;
+            stack[sp++] = bvh->nodes[i].first + 1;
+        }
+    }
+    while (n) {
+        uint32_t i = pre[--n];
+        const struct bvh_node *node = &bvh->nodes[i];
+        if (node->count) {
+            first[i] = node->first;
+            span[i] = node->count;
+            continue;
+        }
+        uint32_t l = node->first;
+        uint32_t r = l + 1;
+        span[i] = 0;
+        if (span[l] && span[r] && first[l] + span[l] == first[r]) {
+            first[i] = first[l];
+            span[i] = span[l] + span[r];
+        } else if (span[l] && span[r] && first[r] + span[r] == first[l]) {
+            first[i] = first[r];
+            span[i] = span[l] + span[r];
+        }
+    }
+    rt_free(pre);
+    rt_free(stack);
+    return 0;
 }
 
-static void clear_lane(struct bvh4_node *w, int lane)
+/* A lane that is a leaf of the wide layout: a binary leaf, or a small
+ * subtree in consecutive slots. */
+static int is_leaf_lane(const struct bvh *bvh, const uint32_t *span, uint32_t i)
 {
-    for (int k = 0; k < 3; k++) {
-        w->bounds[k][lane] = INFINITY;
-        w->bounds[3 + k][lane] = -INFINITY;
-    }
-    w->child[lane] = 0;
-    w->count[lane] = 0;
+    return bvh->nodes[i].count != 0 || (span[i] != 0 && span[i] <= BVH_WIDE_MERGE);
 }
 
 /* The binary nodes a wide node over binary inner node `inner` holds:
- * starting from its two children, the inner one of largest area is
- * replaced by its children until there are four (ties: the first). */
-static int gather(const struct bvh *bvh, uint32_t inner, uint32_t out[4])
+ * starting from its two children, the openable (inner, not merged) one
+ * of largest area is replaced by its children until there are `width`
+ * (ties: the first). */
+static int gather(const struct bvh *bvh, const uint32_t *span, uint32_t inner, uint32_t width,
+                  uint32_t out[MAX_WIDTH])
 {
-    int n = 2;
+    uint32_t n = 2;
     out[0] = bvh->nodes[inner].first;
     out[1] = out[0] + 1;
-    while (n < 4) {
+    while (n < width) {
         int pick = -1;
         float best = -1.0f;
-        for (int i = 0; i < n; i++) {
+        for (uint32_t i = 0; i < n; i++) {
             const struct bvh_node *c = &bvh->nodes[out[i]];
             float a = node_area(c);
-            if (c->count == 0 && (pick < 0 || a > best)) {
-                pick = i;
+            if (!is_leaf_lane(bvh, span, out[i]) && (pick < 0 || a > best)) {
+                pick = (int)i;
                 best = a;
             }
         }
@@ -62,87 +121,270 @@ static int gather(const struct bvh *bvh, uint32_t inner, uint32_t out[4])
         out[pick] = first;
         out[n++] = first + 1;
     }
-    return n;
+    return (int)n;
 }
 
-int accel_collapse4(struct bvh4 *out, const struct bvh *bvh)
+/* Per octant, the used lanes sorted front to back by the projection of
+ * their box centres on the octant's diagonal (ties: lower lane first),
+ * unused lanes last.  A heuristic only: the walk's answers do not
+ * depend on the order of visits (traverse_wide.h). */
+static void octant_order(const double centre[MAX_WIDTH][3], int lanes, int oct,
+                         int order[MAX_WIDTH])
+{
+    double key[MAX_WIDTH];
+    int m = 0;
+    for (int l = 0; l < lanes; l++) {
+        double k = 0.0;
+        for (int a = 0; a < 3; a++)
+            k += (oct >> a & 1) ? -centre[l][a] : centre[l][a];
+        int j = m++;
+        while (j > 0 && key[j - 1] > k) {
+            key[j] = key[j - 1];
+            order[j] = order[j - 1];
+            j--;
+        }
+        key[j] = k;
+        order[j] = l;
+    }
+    for (int l = lanes; l < MAX_WIDTH; l++)
+        order[l] = l;
+}
+
+/* Twice the lanes' box centres (the order only compares them). */
+static void lane_centres(const struct bvh *bvh, const struct scratch_node *s,
+                         double centre[MAX_WIDTH][3])
+{
+    for (int l = 0; l < s->lanes; l++) {
+        const struct bvh_node *b = &bvh->nodes[s->source[l]];
+        for (int a = 0; a < 3; a++)
+            centre[l][a] = (double)b->aabb_min[a] + (double)b->aabb_max[a];
+    }
+}
+
+static void write_node4(struct bvh4_node *w, const struct bvh *bvh, const struct scratch_node *s)
+{
+    memset(w, 0, sizeof(*w));
+    for (int l = 0; l < 4; l++) {
+        for (int k = 0; k < 3; k++) {
+            w->bounds[k][l] = l < s->lanes ? bvh->nodes[s->source[l]].aabb_min[k] : INFINITY;
+            w->bounds[3 + k][l] = l < s->lanes ? bvh->nodes[s->source[l]].aabb_max[k] : -INFINITY;
+        }
+        w->child[l] = l < s->lanes ? s->child[l] : 0;
+        w->count[l] = (uint8_t)(l < s->lanes ? s->count[l] : 0);
+    }
+    double centre[MAX_WIDTH][3];
+    lane_centres(bvh, s, centre);
+    for (int oct = 0; oct < 8; oct++) {
+        int order[MAX_WIDTH];
+        octant_order(centre, s->lanes, oct, order);
+        unsigned bits = 0;
+        for (int p = 0; p < 4; p++)
+            bits |= (unsigned)order[p] << (2 * p);
+        w->order[oct] = (uint8_t)bits;
+    }
+}
+
+static void write_node8(struct bvh8_node *w, const struct bvh *bvh, const struct scratch_node *s)
+{
+    memset(w, 0, sizeof(*w));
+    for (int l = 0; l < 8; l++) {
+        for (int k = 0; k < 3; k++) {
+            w->bounds[k][l] = l < s->lanes ? bvh->nodes[s->source[l]].aabb_min[k] : INFINITY;
+            w->bounds[3 + k][l] = l < s->lanes ? bvh->nodes[s->source[l]].aabb_max[k] : -INFINITY;
+        }
+        w->child[l] = l < s->lanes ? s->child[l] : 0;
+        w->count[l] = (uint8_t)(l < s->lanes ? s->count[l] : 0);
+    }
+    double centre[MAX_WIDTH][3];
+    lane_centres(bvh, s, centre);
+    for (int oct = 0; oct < 8; oct++) {
+        int order[MAX_WIDTH];
+        octant_order(centre, s->lanes, oct, order);
+        uint32_t bits = 0;
+        for (int p = 0; p < 8; p++)
+            bits |= (uint32_t)order[p] << (3 * p);
+        w->order[oct][0] = (uint8_t)bits;
+        w->order[oct][1] = (uint8_t)(bits >> 8);
+        w->order[oct][2] = (uint8_t)(bits >> 16);
+    }
+}
+
+/* Packet p's lanes from leaf slots [slot, slot + n), n <= 4; lanes past n
+ * repeat the last triangle. */
+static void fill_packet(struct tri4_packet *p, const float *tri, const uint32_t *prim_index,
+                        uint32_t slot, uint32_t n)
+{
+    for (uint32_t l = 0; l < 4; l++) {
+        uint32_t s = slot + (l < n ? l : n - 1);
+        const float *v = &tri[9 * (size_t)s];
+        for (int j = 0; j < 3; j++) {
+            for (int k = 0; k < 3; k++)
+                p->v[j][k][l] = v[3 * j + k];
+        }
+        if (prim_index)
+            p->prim[l] = prim_index[s];
+    }
+}
+
+int accel_collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *tri,
+                        uint32_t width)
 {
     memset(out, 0, sizeof(*out));
+    if (width != 4 && width != 8)
+        return -1;
     if (bvh->node_count == 0)
         return 0;
     /* Every wide node but the root consumes a binary inner node, so
      * there are at most (node_count - 1) / 2 + 1 of them. */
     uint32_t cap = (bvh->node_count - 1) / 2 + 1;
-    void *raw = rt_malloc((size_t)cap * sizeof(struct bvh4_node) + 63);
-    uint32_t *source = rt_calloc((size_t)cap * 4, sizeof(uint32_t));
-    /* Work list of (wide node, binary inner node) pairs still to fill. */
-    uint32_t *todo = rt_calloc((size_t)cap, sizeof(uint32_t));
-    if (!raw || !source || !todo) {
-        rt_free(raw);
-        rt_free(source);
-        rt_free(todo);
-        return -1;
-    }
-    struct bvh4_node *nodes =
-        (struct bvh4_node *)(void *)(((uintptr_t)raw + 63) & ~(uintptr_t)63);
+    uint32_t *first = rt_calloc(bvh->node_count, sizeof(uint32_t));
+    uint32_t *span = rt_calloc(bvh->node_count, sizeof(uint32_t));
+    struct scratch_node *scratch = rt_calloc(cap, sizeof(*scratch));
+    uint32_t *todo = rt_calloc(cap, sizeof(uint32_t));
+    void *raw = NULL;
+    uint32_t *source = NULL;
+    uint32_t *packet_slot = NULL;
+    if (!first || !span || !scratch || !todo || subtree_spans(bvh, first, span))
+        goto fail;
     uint32_t count = 1;
-    if (bvh->nodes[0].count) {
-        /* A single leaf: the root's one lane. */
-        for (int l = 0; l < 4; l++)
-            clear_lane(&nodes[0], l);
-        set_lane(&nodes[0], 0, &bvh->nodes[0]);
-        nodes[0].child[0] = bvh->nodes[0].first;
-        nodes[0].count[0] = bvh->nodes[0].count;
-        source[0] = 0;
-        source[1] = source[2] = source[3] = UINT32_MAX;
+    uint32_t packets = 0;
+    if (is_leaf_lane(bvh, span, 0)) {
+        /* One leaf under the root: the root's one lane. */
+        scratch[0].lanes = 1;
+        scratch[0].source[0] = 0;
     } else {
         todo[0] = 0;
         for (uint32_t w = 0; w < count; w++) {
-            uint32_t lanes[4];
-            int n = gather(bvh, todo[w], lanes);
-            struct bvh4_node *wn = &nodes[w];
-            for (int l = 0; l < 4; l++) {
-                clear_lane(wn, l);
-                source[4 * w + l] = l < n ? lanes[l] : UINT32_MAX;
-                if (l >= n)
-                    continue;
-                const struct bvh_node *c = &bvh->nodes[lanes[l]];
-                set_lane(wn, l, c);
-                if (c->count) {
-                    wn->child[l] = c->first;
-                    wn->count[l] = c->count;
-                } else {
-                    todo[count] = lanes[l];
-                    wn->child[l] = count++;
-                    wn->count[l] = 0;
+            struct scratch_node *s = &scratch[w];
+            s->lanes = gather(bvh, span, todo[w], width, s->source);
+            for (int l = 0; l < s->lanes; l++) {
+                if (!is_leaf_lane(bvh, span, s->source[l])) {
+                    todo[count] = s->source[l];
+                    s->child[l] = count++;
                 }
             }
         }
     }
-    rt_free(todo);
-    out->nodes = nodes;
-    out->node_count = count;
-    out->source = source;
-    out->raw = raw;
-    return 0;
-}
-
-void accel_refit4(struct bvh4 *wide, const struct bvh *bvh)
-{
-    for (uint32_t w = 0; w < wide->node_count; w++) {
-        struct bvh4_node *wn = &wide->nodes[w];
-        for (int l = 0; l < 4; l++) {
-            /* Unused lanes keep their empty box. */
-            if (wide->source[4 * w + l] == UINT32_MAX)
+    for (uint32_t w = 0; w < count; w++) {
+        struct scratch_node *s = &scratch[w];
+        for (int l = 0; l < s->lanes; l++) {
+            uint32_t i = s->source[l];
+            if (!is_leaf_lane(bvh, span, i))
                 continue;
-            set_lane(wn, l, &bvh->nodes[wide->source[4 * w + l]]);
+            s->count[l] = bvh->nodes[i].count ? bvh->nodes[i].count : span[i];
+            s->child[l] = packets; /* first packet; slots from first[i] */
+            packets += (s->count[l] + 3) / 4;
         }
     }
+    size_t node_size = width == 4 ? sizeof(struct bvh4_node) : sizeof(struct bvh8_node);
+    size_t node_bytes = (size_t)count * node_size;
+    raw = rt_malloc(node_bytes + (size_t)packets * sizeof(struct tri4_packet) + 63);
+    source = rt_calloc((size_t)count * width, sizeof(uint32_t));
+    packet_slot = rt_calloc(packets ? packets : 1, sizeof(uint32_t));
+    if (!raw || !source || !packet_slot)
+        goto fail;
+    char *base = (char *)(((uintptr_t)raw + 63) & ~(uintptr_t)63);
+    struct tri4_packet *pk = (struct tri4_packet *)(void *)(base + node_bytes);
+    for (uint32_t w = 0; w < count; w++) {
+        struct scratch_node *s = &scratch[w];
+        for (uint32_t l = 0; l < width; l++)
+            source[width * w + l] = (int)l < s->lanes ? s->source[l] : UINT32_MAX;
+        for (int l = 0; l < s->lanes; l++) {
+            if (!s->count[l])
+                continue;
+            uint32_t slot = first[s->source[l]];
+            for (uint32_t j = 0; j < s->count[l]; j += 4) {
+                uint32_t p = s->child[l] + j / 4;
+                uint32_t n = s->count[l] - j < 4 ? s->count[l] - j : 4;
+                packet_slot[p] = slot + j;
+                fill_packet(&pk[p], tri, bvh->prim_index, slot + j, n);
+            }
+        }
+        if (width == 4)
+            write_node4((struct bvh4_node *)(void *)base + w, bvh, s);
+        else
+            write_node8((struct bvh8_node *)(void *)base + w, bvh, s);
+    }
+    rt_free(first);
+    rt_free(span);
+    rt_free(scratch);
+    rt_free(todo);
+    out->width = width;
+    out->node_count = count;
+    out->nodes = width == 4 ? (struct bvh4_node *)(void *)base : NULL;
+    out->nodes8 = width == 8 ? (struct bvh8_node *)(void *)base : NULL;
+    out->packets = pk;
+    out->packet_count = packets;
+    out->source = source;
+    out->packet_slot = packet_slot;
+    out->raw = raw;
+    return 0;
+fail:
+    rt_free(first);
+    rt_free(span);
+    rt_free(scratch);
+    rt_free(todo);
+    rt_free(raw);
+    rt_free(source);
+    rt_free(packet_slot);
+    return -1;
+}
+
+int accel_collapse4(struct bvh4 *out, const struct bvh *bvh, const float *tri)
+{
+    return accel_collapse_wide(out, bvh, tri, 4);
+}
+
+void accel_refit4(struct bvh4 *wide, const struct bvh *bvh, const float *tri)
+{
+    const uint32_t width = wide->width;
+    for (uint32_t w = 0; w < wide->node_count; w++) {
+        for (uint32_t l = 0; l < width; l++) {
+            /* Unused lanes keep their empty box. */
+            uint32_t i = wide->source[width * w + l];
+            if (i == UINT32_MAX)
+                continue;
+            for (int k = 0; k < 3; k++) {
+                float lo = bvh->nodes[i].aabb_min[k];
+                float hi = bvh->nodes[i].aabb_max[k];
+                if (width == 4) {
+                    wide->nodes[w].bounds[k][l] = lo;
+                    wide->nodes[w].bounds[3 + k][l] = hi;
+                } else {
+                    wide->nodes8[w].bounds[k][l] = lo;
+                    wide->nodes8[w].bounds[3 + k][l] = hi;
+                }
+            }
+        }
+    }
+    /* The packets' vertices; the primitives and their slots are unchanged. */
+    for (uint32_t p = 0; p < wide->packet_count; p++) {
+        uint32_t slot = wide->packet_slot[p];
+        /* Lanes past the leaf's end repeat its last triangle, and a
+         * primitive is in one slot only: the triangles are the lanes up to
+         * the first repeated primitive. */
+        uint32_t n = 1;
+        while (n < 4 && (wide->packets[p].prim[n] != wide->packets[p].prim[n - 1]))
+            n++;
+        fill_packet(&wide->packets[p], tri, NULL, slot, n);
+    }
+}
+
+uint64_t bvh4_node_bytes(const struct bvh4 *wide)
+{
+    size_t size = wide->width == 8 ? sizeof(struct bvh8_node) : sizeof(struct bvh4_node);
+    return (uint64_t)wide->node_count * size;
+}
+
+uint64_t bvh4_leaf_bytes(const struct bvh4 *wide)
+{
+    return (uint64_t)wide->packet_count * sizeof(struct tri4_packet);
 }
 
 void bvh4_release(struct bvh4 *wide)
 {
     rt_free(wide->raw);
     rt_free(wide->source);
+    rt_free(wide->packet_slot);
     memset(wide, 0, sizeof(*wide));
 }

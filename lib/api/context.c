@@ -265,7 +265,7 @@ RTcontext rtCreateContextWithReason(const char *configuration, RTsizei bufSize, 
         rt_free(ctx);
         return NULL;
     }
-    ctx->build_params.wide_layout = ctx->kernels->closest4 != NULL;
+    ctx->build_params.wide_layout = (int)ctx->kernels->wide_width;
     snprintf(ctx->configuration, sizeof(ctx->configuration),
              "threads=%d build_threads=%d bins=%d builder=%s toplevel=%s isa=%s", ctx->threads,
              ctx->build_threads, ctx->build_params.bins,

@@ -30,7 +30,7 @@ static struct aabb *triangle_boxes(const struct scene_accel_geometry *geom)
  * triangles and the 4-wide layout traversal reads, and the cost the
  * update strategies compare.  Returns 0, or -1 on allocation failure
  * (accel->tri unchanged; accel->wide unchanged, or released when the
- * collapse itself failed). */
+ * collapse itself failed).  Times the collapse into accel->collapse_ms. */
 static int finish_layout(struct scene_accel *accel, const struct scene_accel_geometry *geom,
                          const struct bvh_build_params *params)
 {
@@ -38,7 +38,9 @@ static int finish_layout(struct scene_accel *accel, const struct scene_accel_geo
     if (!tri)
         return -1;
     struct bvh4 wide = {0};
-    if (params->wide_layout && accel_collapse4(&wide, &accel->bvh)) {
+    const uint32_t width = params->wide_layout == 8 ? 8u : 4u;
+    double start = rt_now_ms();
+    if (params->wide_layout && accel_collapse_wide(&wide, &accel->bvh, tri, width)) {
         /* The tree may have changed under the old wide layout
          * (restructuring): drop it, so traversal takes the binary walk. */
         bvh4_release(&accel->wide);
@@ -49,6 +51,7 @@ static int finish_layout(struct scene_accel *accel, const struct scene_accel_geo
     accel->tri = tri;
     bvh4_release(&accel->wide);
     accel->wide = wide;
+    accel->collapse_ms = params->wide_layout ? rt_now_ms() - start : 0.0;
     accel->sah_cost = accel_sah_cost(&accel->bvh, params->c_trav, params->c_isect);
     return 0;
 }
@@ -85,12 +88,15 @@ fail:
  * sec. 6 interleaves the two the same way): the refit updates the layout
  * in place, so finish_layout's gather is not needed, only the cost.  The
  * topology is unchanged, so the wide layout keeps its shape and only
- * takes the refitted boxes (no allocation, nothing can fail). */
+ * takes the refitted boxes and triangles (no allocation, nothing can
+ * fail; timed into accel->wide_refit_ms). */
 void scene_accel_refit(struct scene_accel *accel, const struct scene_accel_geometry *geom,
                        const struct bvh_build_params *params, struct rt_pool *pool)
 {
     accel_refit_mesh(&accel->bvh, accel->tri, geom->positions, geom->indices, pool);
-    accel_refit4(&accel->wide, &accel->bvh);
+    double start = rt_now_ms();
+    accel_refit4(&accel->wide, &accel->bvh, accel->tri);
+    accel->wide_refit_ms = rt_now_ms() - start;
     accel->sah_cost = accel_sah_cost(&accel->bvh, params->c_trav, params->c_isect);
 }
 

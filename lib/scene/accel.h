@@ -28,12 +28,18 @@ struct scene_object;
 struct scene_accel {
     struct bvh bvh;
     float *tri; /* leaf-ordered vertices, accel_gather_triangles */
-    struct bvh4 wide; /* the 4-wide traversal layout of bvh (bvh4_layout.h) */
+    struct bvh4 wide; /* the wide traversal layout of bvh, 4- or 8-wide (bvh4_layout.h) */
     uint32_t serial;   /* the object's serial this structure reflects */
     uint32_t topology; /* the object's topology serial it was built for */
     double sah_cost;       /* of the tree as it is now */
     double built_sah_cost; /* right after the last full build (rebuild heuristic) */
     double build_ms;       /* the last full build */
+    /* The wide layout's share of the work (rtbench dynamic reports them):
+     * the last collapse (full build or restructure, included in build_ms
+     * for a build; 0 when no wide layout is made) and the last refit of
+     * the wide layout from the refitted binary tree (0 before any refit). */
+    double collapse_ms;
+    double wide_refit_ms;
     /* Per-node life times and scratch of selective restructuring (Yoon, Curtis and Manocha
      * (2007)), initialised by its first use. */
     struct accel_restructure_state restructure_state;

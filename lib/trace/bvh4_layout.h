@@ -1,24 +1,60 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * bvh4_layout.h - the 4-wide traversal layout of an object's BVH.
+ * bvh4_layout.h - the wide traversal layout of an object's BVH: 4-wide
+ * (struct bvh4_node) or 8-wide (struct bvh8_node) nodes over leaves of
+ * triangle packets (struct tri4_packet).  `struct bvh4` is the layout
+ * of either width (the name is from when there was only the 4-wide one).
  *
- * Collapsed from the binary tree after every build, refit and
- * restructure (lib/scene/accel.c); the binary tree stays the build and
- * update representation.  Each wide node holds up to four children in
- * structure-of-arrays form, so that one SIMD test covers all four boxes
- * (Wald, Benthin and Boulos 2008; Dammertz et al. 2008): the child boxes
- * are copied bit for bit from binary nodes, which is what lets the wide
- * walk give the same answers as the binary one (traverse_wide.h).
+ * Collapsed from the binary tree after every build and restructure
+ * (lib/scene/accel.c) and refitted from it after a refit; the binary
+ * tree stays the build and update representation.  Each wide node holds
+ * up to four (eight) children in structure-of-arrays form, so that one
+ * SIMD test covers all their boxes (Wald, Benthin and Boulos 2008;
+ * Dammertz et al. 2008): the child boxes are copied bit for bit from
+ * binary nodes, which is what lets the wide walk give the same answers
+ * as the binary one (traverse_wide.h).
  *
- * Node layout (128 bytes, two 64-byte cache lines, 64-byte aligned):
+ * 4-wide node (128 bytes, two 64-byte cache lines, 64-byte aligned):
  *
- *   bounds[0..5][4]  min x, min y, min z, max x, max y, max z of the four
- *                    children (float); an unused lane holds the empty
- *                    box min = +inf, max = -inf, which every ray misses.
- *   child[4]         inner child: index of its wide node; leaf child:
- *                    first slot in the binary tree's prim_index.
- *   count[4]         0 for an inner child (or an unused lane), else the
- *                    primitives of the leaf.
+ *   byte   0.. 95  bounds[0..5][4]  min x, min y, min z, max x, max y,
+ *                  max z of the four children (float); an unused lane
+ *                  holds the empty box min = +inf, max = -inf, which
+ *                  every ray misses.
+ *   byte  96..111  child[4]  inner child: index of its wide node; leaf
+ *                  child: its first packet.
+ *   byte 112..115  count[4]  0 for an inner child (or an unused lane),
+ *                  else the triangles of the leaf (1..BVH_WIDE_MAX_LEAF).
+ *   byte 116..123  order[8]  per ray octant (bit 0: x direction negative,
+ *                  bit 1: y, bit 2: z), the lanes front to back, 2 bits
+ *                  each, first lane in the low bits (Fuetterling,
+ *                  Lojewski, Pfreundt and Ebert 2017: precomputed
+ *                  per-octant child order instead of a sort).
+ *   byte 124..127  padding
+ *
+ * 8-wide node (256 bytes, four cache lines, 64-byte aligned; Embree's
+ * BVH8 node is 256 bytes too):
+ *
+ *   byte   0..191  bounds[0..5][8]
+ *   byte 192..223  child[8]
+ *   byte 224..231  count[8]
+ *   byte 232..255  order[8][3]  per octant the lanes front to back,
+ *                  3 bits each in 24 bits, little-endian
+ *
+ * Triangle packet (160 bytes, 32-byte aligned; Embree's Triangle4 is 176:
+ * v0, e1, e2 and geometry and primitive ids of four triangles): the
+ * vertices themselves rather than edges, because the watertight test of
+ * Woop, Benthin and Wald 2013 subtracts the origin from each vertex, and
+ * the SIMD leaf test must compute its floats exactly as the scalar one
+ * (intersect_tri4.h):
+ *
+ *   byte   0..143  v[3][3][4]  vertex 0..2, axis x..z, lane (float)
+ *   byte 144..159  prim[4]     the caller's primitive index per lane
+ *
+ * A leaf of n triangles is ceil(n / 4) consecutive packets; the lanes of
+ * the last one beyond n repeat its last triangle and are never tested.
+ * A leaf lane is a binary leaf, or a binary subtree of at most
+ * BVH_WIDE_MERGE triangles in consecutive leaf slots (its box is the
+ * subtree root's box, again a binary node's box bit for bit).
  *
  * Wide node 0 is the root; it covers the binary root's children (or the
  * binary root itself when that is a leaf).
@@ -30,33 +66,72 @@
 
 #include "trace/bvh_layout.h"
 
+/* A binary subtree of at most this many triangles in consecutive slots
+ * becomes one leaf lane: one packet (Embree's builders make leaves of
+ * Triangle4 blocks the same way). */
+#define BVH_WIDE_MERGE 4
+/* A leaf lane's triangles: a binary leaf holds up to BVH_MAX_LEAF_SIZE. */
+#define BVH_WIDE_MAX_LEAF (BVH_MAX_LEAF_SIZE > BVH_WIDE_MERGE ? BVH_MAX_LEAF_SIZE : BVH_WIDE_MERGE)
+
 struct bvh4_node {
     float bounds[6][4];
     uint32_t child[4];
-    uint32_t count[4];
+    uint8_t count[4];
+    uint8_t order[8];
+    uint32_t pad;
 };
 typedef char bvh4_node_is_128_bytes[sizeof(struct bvh4_node) == 128 ? 1 : -1];
 
+struct bvh8_node {
+    float bounds[6][8];
+    uint32_t child[8];
+    uint8_t count[8];
+    uint8_t order[8][3];
+};
+typedef char bvh8_node_is_256_bytes[sizeof(struct bvh8_node) == 256 ? 1 : -1];
+
+struct tri4_packet {
+    float v[3][3][4];
+    uint32_t prim[4];
+};
+typedef char tri4_packet_is_160_bytes[sizeof(struct tri4_packet) == 160 ? 1 : -1];
+
 struct bvh4 {
-    struct bvh4_node *nodes; /* 64-byte aligned inside raw */
+    uint32_t width;          /* 4 or 8; 0 when there is no layout */
     uint32_t node_count;     /* 0: no wide layout (empty tree) */
-    uint32_t *source;        /* 4 per node: the binary node of each lane (refit) */
+    struct bvh4_node *nodes; /* width 4: 64-byte aligned inside raw; else NULL */
+    struct bvh8_node *nodes8; /* width 8: likewise */
+    struct tri4_packet *packets; /* 64-byte aligned inside raw */
+    uint32_t packet_count;
+    uint32_t *source;        /* width per node: the binary node of each lane (refit) */
+    uint32_t *packet_slot;   /* per packet: its first leaf slot (refit) */
     void *raw;
 };
 
 /*
- * Collapses bvh into *out (greedy surface-area collapse: a wide node
- * starts from a binary inner node's two children and repeatedly replaces
- * the inner child of largest surface area by its two children until it
- * has four, as in Wald, Benthin and Boulos 2008 and the MBVH
- * conversion of tinybvh).  *out is output only.  Returns 0, or -1 on
- * allocation failure with *out zeroed.  Implemented in lib/accel.
+ * Collapses bvh into *out, `width` 4 or 8 (greedy surface-area collapse:
+ * a wide node starts from a binary inner node's two children and
+ * repeatedly replaces the inner child of largest surface area by its two
+ * children until it has `width`, as in Wald, Benthin and Boulos 2008 and
+ * the MBVH conversion of tinybvh; subtrees of at most BVH_WIDE_MERGE
+ * triangles stay closed and become leaves), and copies the triangles of
+ * tri (accel_gather_triangles' leaf order) into packets.  *out is output
+ * only.  Returns 0, or -1 on allocation failure (or another width) with
+ * *out zeroed.  Implemented in lib/accel.
  */
-int accel_collapse4(struct bvh4 *out, const struct bvh *bvh);
+int accel_collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *tri,
+                        uint32_t width);
+/* accel_collapse_wide with width 4. */
+int accel_collapse4(struct bvh4 *out, const struct bvh *bvh, const float *tri);
 
-/* Copies the refitted binary boxes into the wide layout (same topology:
- * accel_refit keeps it); no allocation. */
-void accel_refit4(struct bvh4 *wide, const struct bvh *bvh);
+/* Copies the refitted binary boxes and the refitted leaf-ordered
+ * triangles tri into the wide layout (same topology: accel_refit keeps
+ * it); no allocation.  Safe on a zeroed layout. */
+void accel_refit4(struct bvh4 *wide, const struct bvh *bvh, const float *tri);
+
+/* Node and packet bytes of a layout (the memory table). */
+uint64_t bvh4_node_bytes(const struct bvh4 *wide);
+uint64_t bvh4_leaf_bytes(const struct bvh4 *wide);
 
 /* Frees *wide and zeroes it; safe on a zeroed one. */
 void bvh4_release(struct bvh4 *wide);

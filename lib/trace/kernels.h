@@ -34,15 +34,21 @@ struct trace_kernels {
                    float t_max, struct trace_hit *hit, struct trace_counters *counters);
     int (*any)(const struct bvh *bvh, const float *tri, const struct trace_ray *ray,
                float t_max, struct trace_counters *counters);
-    /* The walk over the 4-wide layout (traverse_wide.h), same answers as
-     * closest/any (not the same node and triangle counts); NULL in the
-     * scalar table, which keeps the binary walk as the reference.  bvh is
-     * the binary tree wide was collapsed from (its prim_index). */
+    /* The walk over the wide layout (traverse_wide.h), 4- or 8-wide as
+     * wide->width says, same answers as closest/any (not the same node
+     * and triangle counts); NULL in the scalar table, which keeps the
+     * binary walk as the reference.  bvh and tri are the binary tree
+     * wide was collapsed from and its triangles: a width the table does
+     * not walk takes the binary walk over them. */
     int (*closest4)(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,
                     const struct trace_ray *ray, float t_max, struct trace_hit *hit,
                     struct trace_counters *counters);
     int (*any4)(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,
                 const struct trace_ray *ray, float t_max, struct trace_counters *counters);
+    /* The widest layout closest4/any4 walk: 0 (scalar), 4 (SSE4.2) or 8
+     * (AVX2, AVX-512); the width a context's objects are collapsed to
+     * (bvh_build_params.wide_layout). */
+    uint32_t wide_width;
 };
 
 /* The table of an ISA, or NULL when this build has no such table or this

@@ -17,7 +17,7 @@
 
 static const struct trace_kernels table = {
     TRACE_ISA_AVX2, "avx2", trace_closest_avx2, trace_any_avx2,
-    trace_closest4_avx2, trace_any4_avx2};
+    trace_closest4_avx2, trace_any4_avx2, 8};
 
 const struct trace_kernels *trace_kernels_avx2(void)
 {

@@ -17,7 +17,7 @@
 
 static const struct trace_kernels table = {
     TRACE_ISA_AVX512, "avx512", trace_closest_avx512, trace_any_avx512,
-    trace_closest4_avx512, trace_any4_avx512};
+    trace_closest4_avx512, trace_any4_avx512, 8};
 
 const struct trace_kernels *trace_kernels_avx512(void)
 {

@@ -1,27 +1,37 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * traverse_wide.h - the walk over the 4-wide layout (bvh4_layout.h),
- * included by the SIMD translation units (kernels.h) after
+ * traverse_wide.h - the walk over the wide layout (bvh4_layout.h), 4-wide
+ * in every SIMD table and 8-wide where the table has AVX (AVX2,
+ * AVX-512), included by the SIMD translation units (kernels.h) after
  * traverse_walk.h.  Define TRACE_WIDE_CLOSEST and TRACE_WIDE_ANY.
  *
  * Same answers as the binary walk of traverse_walk.h, bit for bit:
- * - the four child boxes are tested with isect_box's float operations
- *   lane by lane: (bound - org) * inv per slab with the same near/far
- *   choice, the entry folded as max(z, max(y, max(x, tmin))) and the exit
- *   as min(z, min(y, min(x, inf))) with maxps/minps, which return their
+ * - the child boxes are tested with isect_box's float operations lane by
+ *   lane: (bound - org) * inv per slab with the same near/far choice, the
+ *   entry folded as max(z, max(y, max(x, tmin))) and the exit as
+ *   min(z, min(y, min(x, inf))) with maxps/minps, which return their
  *   second operand for a NaN first one exactly as isect_box's
  *   `a > b ? a : b` does, then the far scale and the clamp to box_limit;
- *   the boxes are the binary nodes' boxes copied bit for bit;
+ *   the boxes are binary nodes' boxes copied bit for bit;
  * - the closest-hit rule does not depend on the order of visits (the
  *   smallest t, ties to the lower primitive; every box holding a hit at
  *   or below the current best passes the test, intersect.h's
  *   tag-graze-box-limit), so skipping the binary inner nodes the collapse
- *   removed and visiting children in another order change the work done
- *   (the node and triangle counts) but not the hit;
- * - the leaves go through the binary walk's walk_leaf (traverse_walk.h):
- *   the same triangle test, limit and hit rule.
+ *   removed, visiting a small subtree's triangles as one leaf, and
+ *   visiting children in another order change the work done (the node
+ *   and triangle counts) but not the hit;
+ * - the leaves are tested by the packet filter of intersect_tri4.h and
+ *   isect_triangle itself for the lanes it keeps, with walk_leaf's limit
+ *   and hit rule (traverse_walk.h).
+ *
+ * Child order: the hit children are visited in the node's precomputed
+ * order for the ray's octant (Fuetterling, Lojewski, Pfreundt and Ebert
+ * 2017), with no sort; each pushed child keeps its entry distance, so
+ * a subtree behind the closest hit so far is still skipped when popped.
  */
 #include <immintrin.h>
+
+#include "trace/intersect_tri4.h"
 
 struct wide_entry {
     uint32_t child;
@@ -29,44 +39,108 @@ struct wide_entry {
     float t_entry;
 };
 
-static inline int walk_wide(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,
-                            const struct trace_ray *ray, float t_max, int any_hit,
-                            struct trace_hit *hit, struct trace_counters *counters)
+/* The stack: at most width - 1 entries per level left behind on the
+ * current path, plus the width pushed at the deepest node. */
+#define WIDE_STACK (7 * BVH_MAX_DEPTH + 8)
+
+/* The per-ray state every wide walk keeps. */
+struct wide_state {
+    const struct trace_ray *ray;
+    struct tri4_ray r4;
+    int any_hit;
+    struct trace_hit *hit;
+    int found;
+    float best;
+    float box_limit;
+    uint64_t node_tests;
+    uint64_t triangle_tests;
+};
+
+/* A leaf lane: count triangles in packets from `first`.  walk_leaf's
+ * limit and hit rule; returns 1 when an any-hit walk has its hit. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline int wide_leaf(struct wide_state *s, const struct tri4_packet *packets,
+                            uint32_t first, uint32_t count)
 {
-    if (wide->node_count == 0)
-        return 0;
+    for (uint32_t j = 0; j < count; j += 4) {
+        const struct tri4_packet *p = &packets[first + j / 4];
+        const uint32_t n = count - j < 4 ? count - j : 4;
+        s->triangle_tests += n;
+        float limit = s->found ? isect_next_up(s->best) : s->best;
+        unsigned mask = tri4_candidates(&s->r4, p, (1u << n) - 1u, limit);
+        while (mask) {
+            const unsigned l = (unsigned)__builtin_ctz(mask);
+            mask &= mask - 1u;
+            float v[9];
+            float t, u, w;
+            tri4_lane(p, l, v);
+            limit = s->found ? isect_next_up(s->best) : s->best;
+            if (!isect_triangle(s->ray, v, v + 3, v + 6, limit, &t, &u, &w))
+                continue;
+            if (s->any_hit) {
+                s->found = 1;
+                return 1;
+            }
+            const uint32_t prim = p->prim[l];
+            if (s->found && !(t < s->best || prim < s->hit->prim))
+                continue;
+            s->found = 1;
+            s->best = t;
+            s->box_limit = t * ISECT_BOX_FAR_SCALE;
+            s->hit->t = t;
+            s->hit->u = u;
+            s->hit->v = w;
+            s->hit->prim = prim;
+        }
+    }
+    return 0;
+}
+
+static inline void wide_prefetch(const void *node, size_t bytes)
+{
+    for (size_t off = 0; off < bytes; off += 64)
+        _mm_prefetch((const char *)node + off, _MM_HINT_T0);
+}
+
+/* Forced inline, as wide_leaf: inlined into walk_wide, the state's
+ * address never escapes and its fields live in registers. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline int walk_wide4(const struct bvh4 *wide, struct wide_state *s)
+{
+    const struct trace_ray *ray = s->ray;
     const struct bvh4_node *nodes = wide->nodes;
     /* Per ray: which of bounds[0..5] is the near and the far plane of each
-     * axis (the max for a negative direction, -0 included). */
+     * axis (the max for a negative direction, -0 included), and the
+     * octant that picks the child order. */
     int near_row[3], far_row[3];
+    int octant = 0;
     __m128 org[3], inv[3];
     for (int k = 0; k < 3; k++) {
         int neg = signbit(ray->inv_dir[k]) != 0;
         near_row[k] = neg ? 3 + k : k;
         far_row[k] = neg ? k : 3 + k;
+        octant |= neg << k;
         org[k] = _mm_set1_ps(ray->org[k]);
         inv[k] = _mm_set1_ps(ray->inv_dir[k]);
     }
     const __m128 tmin4 = _mm_set1_ps(ray->tmin);
     const __m128 inf4 = _mm_set1_ps(INFINITY);
     const __m128 scale4 = _mm_set1_ps(ISECT_BOX_FAR_SCALE);
-    uint64_t node_tests = 0;
-    uint64_t triangle_tests = 0;
-    float best = t_max;
-    float box_limit = t_max * ISECT_BOX_FAR_SCALE; /* as traverse_walk.h */
-    int found = 0;
-    struct wide_entry stack[3 * BVH_MAX_DEPTH + 4];
+    struct wide_entry stack[WIDE_STACK];
     uint32_t sp = 0;
     uint32_t cur = 0;
     uint32_t cur_count = 0;
     for (;;) {
         if (cur_count) {
-            if (walk_leaf(bvh, tri, ray, cur, cur_count, any_hit, hit, &found, &best, &box_limit,
-                          &triangle_tests))
-                goto done;
+            if (wide_leaf(s, wide->packets, cur, cur_count))
+                return 1;
         } else {
             const struct bvh4_node *n = &nodes[cur];
-            node_tests += 4;
+            s->node_tests += 4;
             __m128 t0 = tmin4;
             __m128 t1 = inf4;
             for (int k = 0; k < 3; k++) {
@@ -78,53 +152,172 @@ static inline int walk_wide(const struct bvh4 *wide, const struct bvh *bvh, cons
                 t1 = _mm_min_ps(tf, t1);
             }
             t1 = _mm_mul_ps(t1, scale4);
-            t1 = _mm_min_ps(t1, _mm_set1_ps(box_limit));
+            t1 = _mm_min_ps(t1, _mm_set1_ps(s->box_limit));
             unsigned mask = (unsigned)_mm_movemask_ps(_mm_cmple_ps(t0, t1));
             if (mask) {
-                float te[4];
-                _mm_storeu_ps(te, t0);
-                /* The hit children nearest first: push all but the
-                 * nearest, farthest first. */
-                int order[4];
-                int m = 0;
-                for (int l = 0; l < 4; l++) {
-                    if (!(mask >> l & 1u))
-                        continue;
-                    int j = m++;
-                    while (j > 0 && te[order[j - 1]] > te[l]) {
-                        order[j] = order[j - 1];
-                        j--;
+                if (!(mask & (mask - 1u))) {
+                    const unsigned l = (unsigned)__builtin_ctz(mask);
+                    cur = n->child[l];
+                    cur_count = n->count[l];
+                } else {
+                    float te[4];
+                    _mm_storeu_ps(te, t0);
+                    /* Push the hit children back to front in the
+                     * octant's order, then take the front one. */
+                    const unsigned order = n->order[octant];
+                    for (int p = 3; p >= 0; p--) {
+                        const unsigned l = order >> (2 * p) & 3u;
+                        if (!(mask >> l & 1u))
+                            continue;
+                        stack[sp].child = n->child[l];
+                        stack[sp].count = n->count[l];
+                        stack[sp].t_entry = te[l];
+                        sp++;
                     }
-                    order[j] = l;
+                    sp--;
+                    cur = stack[sp].child;
+                    cur_count = stack[sp].count;
                 }
-                for (int j = m - 1; j > 0; j--) {
-                    int l = order[j];
-                    stack[sp].child = n->child[l];
-                    stack[sp].count = n->count[l];
-                    stack[sp].t_entry = te[l];
-                    sp++;
-                }
-                cur = n->child[order[0]];
-                cur_count = n->count[order[0]];
+                if (!cur_count)
+                    wide_prefetch(&nodes[cur], sizeof(struct bvh4_node));
                 continue;
             }
         }
         for (;;) {
             if (sp == 0)
-                goto done;
+                return 0;
             sp--;
-            if (stack[sp].t_entry <= box_limit)
+            if (stack[sp].t_entry <= s->box_limit)
                 break;
         }
         cur = stack[sp].child;
         cur_count = stack[sp].count;
     }
-done:
-    if (counters) {
-        counters->node_tests += node_tests;
-        counters->triangle_tests += triangle_tests;
+}
+
+#if defined(__AVX__)
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline int walk_wide8(const struct bvh4 *wide, struct wide_state *s)
+{
+    const struct trace_ray *ray = s->ray;
+    const struct bvh8_node *nodes = wide->nodes8;
+    int near_row[3], far_row[3];
+    int octant = 0;
+    __m256 org[3], inv[3];
+    for (int k = 0; k < 3; k++) {
+        int neg = signbit(ray->inv_dir[k]) != 0;
+        near_row[k] = neg ? 3 + k : k;
+        far_row[k] = neg ? k : 3 + k;
+        octant |= neg << k;
+        org[k] = _mm256_set1_ps(ray->org[k]);
+        inv[k] = _mm256_set1_ps(ray->inv_dir[k]);
     }
-    return found;
+    const __m256 tmin8 = _mm256_set1_ps(ray->tmin);
+    const __m256 inf8 = _mm256_set1_ps(INFINITY);
+    const __m256 scale8 = _mm256_set1_ps(ISECT_BOX_FAR_SCALE);
+    struct wide_entry stack[WIDE_STACK];
+    uint32_t sp = 0;
+    uint32_t cur = 0;
+    uint32_t cur_count = 0;
+    for (;;) {
+        if (cur_count) {
+            if (wide_leaf(s, wide->packets, cur, cur_count))
+                return 1;
+        } else {
+            const struct bvh8_node *n = &nodes[cur];
+            s->node_tests += 8;
+            __m256 t0 = tmin8;
+            __m256 t1 = inf8;
+            for (int k = 0; k < 3; k++) {
+                const __m256 tn = _mm256_mul_ps(
+                    _mm256_sub_ps(_mm256_load_ps(n->bounds[near_row[k]]), org[k]), inv[k]);
+                const __m256 tf = _mm256_mul_ps(
+                    _mm256_sub_ps(_mm256_load_ps(n->bounds[far_row[k]]), org[k]), inv[k]);
+                t0 = _mm256_max_ps(tn, t0);
+                t1 = _mm256_min_ps(tf, t1);
+            }
+            t1 = _mm256_mul_ps(t1, scale8);
+            t1 = _mm256_min_ps(t1, _mm256_set1_ps(s->box_limit));
+            unsigned mask = (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(t0, t1, _CMP_LE_OQ));
+            if (mask) {
+                if (!(mask & (mask - 1u))) {
+                    const unsigned l = (unsigned)__builtin_ctz(mask);
+                    cur = n->child[l];
+                    cur_count = n->count[l];
+                } else {
+                    float te[8];
+                    _mm256_storeu_ps(te, t0);
+                    const uint32_t order = (uint32_t)n->order[octant][0] |
+                                           (uint32_t)n->order[octant][1] << 8 |
+                                           (uint32_t)n->order[octant][2] << 16;
+                    for (int p = 7; p >= 0; p--) {
+                        const unsigned l = order >> (3 * p) & 7u;
+                        if (!(mask >> l & 1u))
+                            continue;
+                        stack[sp].child = n->child[l];
+                        stack[sp].count = n->count[l];
+                        stack[sp].t_entry = te[l];
+                        sp++;
+                    }
+                    sp--;
+                    cur = stack[sp].child;
+                    cur_count = stack[sp].count;
+                }
+                if (!cur_count)
+                    wide_prefetch(&nodes[cur], sizeof(struct bvh8_node));
+                continue;
+            }
+        }
+        for (;;) {
+            if (sp == 0)
+                return 0;
+            sp--;
+            if (stack[sp].t_entry <= s->box_limit)
+                break;
+        }
+        cur = stack[sp].child;
+        cur_count = stack[sp].count;
+    }
+}
+#endif
+
+/* The walk of the layout's width; a width this table does not walk
+ * (8 without AVX) takes the binary walk, which gives the same answers. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline int walk_wide(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,
+                            const struct trace_ray *ray, float t_max, int any_hit,
+                            struct trace_hit *hit, struct trace_counters *counters)
+{
+    if (wide->node_count == 0)
+        return walk(bvh, tri, ray, t_max, any_hit, hit, counters);
+    struct wide_state s;
+    s.ray = ray;
+    tri4_ray_init(&s.r4, ray);
+    s.any_hit = any_hit;
+    s.hit = hit;
+    s.found = 0;
+    s.best = t_max;
+    s.box_limit = t_max * ISECT_BOX_FAR_SCALE; /* as traverse_walk.h */
+    s.node_tests = 0;
+    s.triangle_tests = 0;
+    int done;
+    if (wide->width == 4)
+        done = walk_wide4(wide, &s);
+#if defined(__AVX__)
+    else if (wide->width == 8)
+        done = walk_wide8(wide, &s);
+#endif
+    else
+        return walk(bvh, tri, ray, t_max, any_hit, hit, counters);
+    if (counters) {
+        counters->node_tests += s.node_tests;
+        counters->triangle_tests += s.triangle_tests;
+    }
+    return any_hit ? done : s.found;
 }
 
 int TRACE_WIDE_CLOSEST(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,

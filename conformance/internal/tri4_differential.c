@@ -1,0 +1,245 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * tri4_differential.c - the packet triangle test (trace/intersect_tri4.h)
+ * against the scalar watertight test (trace/intersect.h's isect_triangle),
+ * randomized, lane by lane.
+ *
+ * Two checks per packet of four triangles and ray:
+ * 1. the filter keeps every lane isect_triangle accepts at the packet's
+ *    limit (a lane it drops must be one the scalar test rejects);
+ * 2. the leaf as the wide walk tests it (filter once, then isect_triangle
+ *    on the kept lanes in order with walk_leaf's shrinking limit and tie
+ *    rule) gives bit for bit the answer of walk_leaf's plain loop over
+ *    the four triangles: found, t, u, v and primitive, closest and any.
+ * The rays are aimed at the triangles' vertices and edge points (where
+ * the edge functions are 0 and the double-precision fallback decides),
+ * at their insides, and past them; the triangles are random, grid
+ * snapped (shared planes, exact zeros), collinear or with repeated
+ * vertices, slivers, far from the origin (1e5), and the rays have zero
+ * direction components, tmin > 0 and finite limits.  It also counts the
+ * lanes the filter kept that the scalar test then rejected: those are
+ * the candidate hits the scalar test needs its double precision for
+ * (edge-function zeros included), and must be a small share.
+ */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "accel_testgeo.h"
+
+#if defined(__SSE2__)
+#include "trace/intersect_tri4.h"
+
+static int failures;
+
+struct leaf_answer {
+    int found;
+    struct trace_hit hit;
+};
+
+/* walk_leaf's loop (traverse_walk.h) over four triangles. */
+static struct leaf_answer scalar_leaf(const struct trace_ray *ray, const float tri[4][9],
+                                      const uint32_t prim[4], float t_max, int any_hit)
+{
+    struct leaf_answer a;
+    memset(&a, 0, sizeof(a));
+    float best = t_max;
+    for (int l = 0; l < 4; l++) {
+        float t, u, w;
+        float limit = a.found ? isect_next_up(best) : best;
+        if (!isect_triangle(ray, tri[l], tri[l] + 3, tri[l] + 6, limit, &t, &u, &w))
+            continue;
+        if (any_hit) {
+            a.found = 1;
+            return a;
+        }
+        if (a.found && !(t < best || prim[l] < a.hit.prim))
+            continue;
+        a.found = 1;
+        best = t;
+        a.hit.t = t;
+        a.hit.u = u;
+        a.hit.v = w;
+        a.hit.prim = prim[l];
+    }
+    return a;
+}
+
+/* The same leaf as traverse_wide.h's wide_leaf tests it. */
+static struct leaf_answer packet_leaf(const struct trace_ray *ray, const struct tri4_packet *p,
+                                      float t_max, int any_hit, unsigned *kept)
+{
+    struct leaf_answer a;
+    memset(&a, 0, sizeof(a));
+    struct tri4_ray r4;
+    tri4_ray_init(&r4, ray);
+    float best = t_max;
+    unsigned mask = tri4_candidates(&r4, p, 15u, t_max);
+    *kept = mask;
+    while (mask) {
+        unsigned l = (unsigned)__builtin_ctz(mask);
+        mask &= mask - 1u;
+        float v[9], t, u, w;
+        tri4_lane(p, l, v);
+        float limit = a.found ? isect_next_up(best) : best;
+        if (!isect_triangle(ray, v, v + 3, v + 6, limit, &t, &u, &w))
+            continue;
+        if (any_hit) {
+            a.found = 1;
+            return a;
+        }
+        if (a.found && !(t < best || p->prim[l] < a.hit.prim))
+            continue;
+        a.found = 1;
+        best = t;
+        a.hit.t = t;
+        a.hit.u = u;
+        a.hit.v = w;
+        a.hit.prim = p->prim[l];
+    }
+    return a;
+}
+
+static void random_triangle(struct tg_rng *r, int kind, const float centre[3], float tri[9])
+{
+    for (int i = 0; i < 9; i++) {
+        float x = centre[i % 3] + tg_range(r, -1.0f, 1.0f);
+        if (kind == 1)
+            x = roundf(x * 4.0f) / 4.0f; /* grid: shared planes, exact zeros */
+        tri[i] = x;
+    }
+    if (kind == 2) {
+        /* Collinear: v2 on the line through v0 and v1, or v2 = v1. */
+        float s = tg_below(r, 2) ? 0.5f : 1.0f;
+        for (int k = 0; k < 3; k++)
+            tri[6 + k] = tri[k] + s * (tri[3 + k] - tri[k]);
+    } else if (kind == 3) {
+        /* Sliver: v2 a hair beside the midpoint of v0 v1. */
+        for (int k = 0; k < 3; k++)
+            tri[6 + k] = 0.5f * (tri[k] + tri[3 + k]) + tg_range(r, -1e-6f, 1e-6f);
+    }
+}
+
+static void one_case(struct tg_rng *r, uint64_t *cases, uint64_t *kept_rejected, uint64_t *hits)
+{
+    float centre[3] = {0.0f, 0.0f, 0.0f};
+    if (tg_below(r, 4) == 0) {
+        centre[0] = 1e5f;
+        centre[1] = -1e5f;
+        centre[2] = 3e4f;
+    }
+    float tri[4][9];
+    uint32_t prim[4];
+    const int kind = (int)tg_below(r, 4);
+    for (int l = 0; l < 4; l++) {
+        random_triangle(r, kind, centre, tri[l]);
+        prim[l] = (uint32_t)tg_below(r, 1000);
+    }
+    /* Neighbours share an edge (watertightness) now and then. */
+    if (tg_below(r, 2)) {
+        memcpy(tri[1], tri[0] + 3, 6 * sizeof(float));
+        memcpy(tri[2], tri[0], 3 * sizeof(float));
+        memcpy(tri[2] + 3, tri[0] + 6, 3 * sizeof(float));
+    }
+    if (tg_below(r, 8) == 0)
+        memcpy(tri[3], tri[2], sizeof(tri[2])); /* a duplicate: a tie */
+    /* The aim: a vertex, an edge point, an inside point or anywhere. */
+    const float *t0 = tri[tg_below(r, 4)];
+    float target[3];
+    const int aim = (int)tg_below(r, 4);
+    const float a = tg_unit(r), b = tg_unit(r);
+    for (int k = 0; k < 3; k++) {
+        if (aim == 0)
+            target[k] = t0[3 * (int)(a * 3.0f) + k];
+        else if (aim == 1)
+            target[k] = t0[k] + a * (t0[3 + k] - t0[k]);
+        else if (aim == 2)
+            target[k] = t0[k] + a * (t0[3 + k] - t0[k]) * (1.0f - b) + b * (t0[6 + k] - t0[k]) * (1.0f - a);
+        else
+            target[k] = centre[k] + tg_range(r, -1.5f, 1.5f);
+    }
+    float org[3], dir[3];
+    for (int k = 0; k < 3; k++)
+        org[k] = centre[k] + tg_range(r, -4.0f, 4.0f);
+    if (tg_below(r, 8) == 0) {
+        /* Axis-parallel from a grid point: zero direction components. */
+        int axis = (int)tg_below(r, 3);
+        for (int k = 0; k < 3; k++)
+            org[k] = k == axis ? target[k] - 3.0f : target[k];
+    }
+    for (int k = 0; k < 3; k++)
+        dir[k] = target[k] - org[k];
+    if (tg_below(r, 8) == 0)
+        dir[tg_below(r, 3)] = tg_below(r, 2) ? 0.0f : -0.0f;
+    if (dir[0] == 0.0f && dir[1] == 0.0f && dir[2] == 0.0f)
+        dir[2] = 1.0f;
+    const float tmin = tg_below(r, 6) == 0 ? tg_range(r, 0.0f, 1.0f) : 0.0f;
+    const int limit_kind = (int)tg_below(r, 4);
+    const float t_max = limit_kind == 0 ? tg_range(r, 0.5f, 1.5f) : INFINITY;
+
+    struct trace_ray ray;
+    trace_ray_init(&ray, org, dir, tmin);
+    struct tri4_packet p;
+    for (int l = 0; l < 4; l++) {
+        for (int j = 0; j < 3; j++) {
+            for (int k = 0; k < 3; k++)
+                p.v[j][k][l] = tri[l][3 * j + k];
+        }
+        p.prim[l] = prim[l];
+    }
+    /* Check 1: no lane the scalar test accepts is dropped. */
+    struct tri4_ray r4;
+    tri4_ray_init(&r4, &ray);
+    const unsigned mask = tri4_candidates(&r4, &p, 15u, t_max);
+    for (int l = 0; l < 4; l++) {
+        float t, u, w;
+        int accepted = isect_triangle(&ray, tri[l], tri[l] + 3, tri[l] + 6, t_max, &t, &u, &w);
+        *hits += (uint64_t)accepted;
+        if (accepted && !(mask >> l & 1u)) {
+            if (failures < 10)
+                printf("  FAIL: lane %d accepted (t %a) but dropped; org %a %a %a dir %a %a %a\n",
+                       l, t, org[0], org[1], org[2], dir[0], dir[1], dir[2]);
+            failures++;
+        }
+        if (!accepted && (mask >> l & 1u))
+            (*kept_rejected)++;
+    }
+    /* Check 2: the leaf's answer, closest and any. */
+    for (int any = 0; any < 2; any++) {
+        unsigned kept;
+        struct leaf_answer s = scalar_leaf(&ray, tri, prim, t_max, any);
+        struct leaf_answer q = packet_leaf(&ray, &p, t_max, any, &kept);
+        if (s.found != q.found ||
+            (!any && s.found && memcmp(&s.hit, &q.hit, sizeof(s.hit)) != 0)) {
+            if (failures < 10)
+                printf("  FAIL: leaf %s: found %d/%d t %a/%a prim %u/%u\n",
+                       any ? "any" : "closest", s.found, q.found, s.hit.t, q.hit.t, s.hit.prim,
+                       q.hit.prim);
+            failures++;
+        }
+    }
+    (*cases)++;
+}
+
+int main(void)
+{
+    struct tg_rng r;
+    tg_seed(&r, 2017);
+    uint64_t cases = 0, kept_rejected = 0, hits = 0;
+    for (int i = 0; i < 400000; i++)
+        one_case(&r, &cases, &kept_rejected, &hits);
+    printf("tri4_differential: %llu packets x 4 lanes, %llu scalar hits, %llu lanes kept by the "
+           "filter and rejected by the scalar test, %d failures\n",
+           (unsigned long long)cases, (unsigned long long)hits,
+           (unsigned long long)kept_rejected, failures);
+    CHECKF(failures == 0, "the packet test differs from the scalar test on %d checks", failures);
+    return failures ? 1 : 0;
+}
+#else
+int main(void)
+{
+    printf("tri4_differential: no SSE2 on this target, nothing to compare\n");
+    return 0;
+}
+#endif
