@@ -193,9 +193,19 @@ void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit 
     }
 
     s->mat = mesh->materials[mesh->tri_material[hit->prim]];
+    if (flags & TRI_INHERIT_MATERIAL) {
+        /* Recorded in a list before it set a material: the material
+         * current at the call (its instance's), as GL; the list's
+         * texture state stays. */
+        uint32_t texture = s->mat.texture;
+        s->mat = inst->appearance.material;
+        s->mat.texture = texture;
+    }
     if (flags & TRI_COLOR_MATERIAL) {
         float c[4];
-        if (flags & TRI_FLAT)
+        if (flags & TRI_INHERIT_COLOR)
+            memcpy(c, inst->appearance.color, sizeof(c)); /* the colour at the call */
+        else if (flags & TRI_FLAT)
             memcpy(c, &mesh->colors[4 * provoking], sizeof(c));
         else
             interpolate(mesh->colors, 4, v, b0, b1, b2, 4, c);

@@ -37,6 +37,12 @@ struct scene_material {
 
 #define TRI_FLAT 1u           /* rtShadeModel(RT_FLAT) was current */
 #define TRI_COLOR_MATERIAL 2u /* RT_COLOR_MATERIAL was enabled */
+/* Recorded in a display list before the list set a material (a colour):
+ * the triangle takes the material (colour) current at rtCallList, which
+ * its instance keeps (struct scene_appearance, frame.h), as GL's
+ * geometry takes the state current at glCallList. */
+#define TRI_INHERIT_MATERIAL 0x40u
+#define TRI_INHERIT_COLOR 0x80u
 
 struct scene_mesh {
     uint32_t vertex_count;

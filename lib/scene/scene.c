@@ -56,6 +56,11 @@ void scene_delete_object(struct scene *scene, uint32_t name)
         return;
     if (object->defined)
         scene->changes.deleted++;
+    for (uint32_t i = 0; i < object->segment_count; i++) {
+        /* A display list's hidden segments go with it. */
+        scene_frame_forget_object(&scene->frame, object->segments[i]);
+        scene_async_cancel(&scene->async, object->segments[i]);
+    }
     scene_frame_forget_object(&scene->frame, object);
     scene_async_cancel(&scene->async, object);
     scene_objects_remove(&scene->objects, name);
