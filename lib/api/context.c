@@ -297,7 +297,6 @@ void rtDestroyContext(RTcontext ctx)
     scene_release(&ctx->scene);
     scene_mesh_release(&ctx->recording.mesh);
     scene_list_release(&ctx->recording);
-    rt_free(ctx->saved);
     rt_free(ctx->exec);
     render_framebuffer_release(&ctx->render.fb);
     rt_free(ctx);

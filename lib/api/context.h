@@ -39,6 +39,19 @@ struct client_array {
     const void *pointer;
 };
 
+/* What RT_COMPILE restores at rtEndList (list.c). */
+struct list_saved_state {
+    float normal[3], color[4], texcoord[2];
+    RTenum shade_model;
+    int color_material;
+    struct scene_material material;
+    uint32_t texture_binding;
+    int texture_2d;
+    struct render_light lights[RENDER_MAX_LIGHTS];
+    float global_ambient[4];
+    RTuint list_base;
+};
+
 struct rt_context {
     int bound; /* current in some thread */
 
@@ -79,7 +92,7 @@ struct rt_context {
     RTuint list_base;   /* rtListBase */
     int call_depth;     /* nesting of the lists being executed (GL's CallDepth) */
     int replaying;      /* > 0: calls come from a list's replay, never recorded */
-    struct list_saved_state *saved; /* RT_COMPILE: state rtEndList restores */
+    struct list_saved_state saved;  /* RT_COMPILE: state rtEndList restores */
     struct list_exec *exec;         /* RT_COMPILE_AND_EXECUTE: segments to instance */
     uint32_t exec_count, exec_capacity;
 

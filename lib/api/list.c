@@ -32,18 +32,6 @@
 
 #define LIST_MAX_NESTING 64 /* GL's minimum and Mesa's MAX_LIST_NESTING */
 
-struct list_saved_state {
-    float normal[3], color[4], texcoord[2];
-    RTenum shade_model;
-    int color_material;
-    struct scene_material material;
-    uint32_t texture_binding;
-    int texture_2d;
-    struct render_light lights[RENDER_MAX_LIGHTS];
-    float global_ambient[4];
-    RTuint list_base;
-};
-
 struct list_exec {
     uint32_t segment;
     double m[16];
@@ -321,17 +309,11 @@ void rtNewList(RTuint list, RTenum mode)
                  ctx->recording.name);
         return;
     }
-    if (!ctx->saved && !(ctx->saved = rt_malloc(sizeof(*ctx->saved)))) {
+    if (scene_list_begin(&ctx->recording, list, ctx->matrix_mode))
+        /* Recording goes on (out_of_memory set): rtEndList keeps the old
+         * definition, and the calls in between are consumed as GL's. */
         rt_error(ctx, RT_OUT_OF_MEMORY, "rtNewList(%u): out of memory", list);
-        return;
-    }
-    if (scene_list_begin(&ctx->recording, list, ctx->matrix_mode)) {
-        scene_list_release(&ctx->recording);
-        ctx->recording.active = 0;
-        rt_error(ctx, RT_OUT_OF_MEMORY, "rtNewList(%u): out of memory", list);
-        return;
-    }
-    save_state(ctx, ctx->saved);
+    save_state(ctx, &ctx->saved);
     ctx->list_mode = mode;
     ctx->exec_count = 0;
     capture_segment(ctx);
@@ -368,7 +350,7 @@ static void end_list(const char *caller)
     }
     rec->active = 0;
     if (ctx->list_mode == RT_COMPILE)
-        restore_state(ctx, ctx->saved); /* GL_COMPILE executed nothing */
+        restore_state(ctx, &ctx->saved); /* GL_COMPILE executed nothing */
     uint32_t *map = NULL;
     struct scene_object *object = NULL;
     if (!rec->out_of_memory) {
@@ -381,12 +363,13 @@ static void end_list(const char *caller)
     struct scene_mesh *meshes = NULL;
     struct scene_list_op *ops = NULL;
     uint32_t count = 0, op_count = 0;
+    int reported = rec->out_of_memory || !object || !map;
     if (rec->out_of_memory || !object || !map ||
         scene_list_finish(rec, &meshes, &count, &ops, &op_count, map) ||
         scene_define_list(&ctx->scene, object, meshes, count, ops, op_count)) {
         /* The error was recorded where memory ran out; the incomplete
          * definition is dropped and the old one stays. */
-        if (!rec->out_of_memory && object && map)
+        if (!reported)
             rt_error(ctx, RT_OUT_OF_MEMORY, "%s: out of memory defining list %u", caller,
                      rec->name);
         scene_list_release(rec);

@@ -244,6 +244,8 @@ int scene_list_begin(struct scene_recording *rec, uint32_t name, unsigned matrix
     mat4_identity(rec->stack[0].m);
     rec->stack[0].segment = 0;
     rec->material_set = rec->color_set = 0;
+    /* Keeps the operations' memory of the last list: no allocation for
+     * lists of one segment after the first. */
     return segment_op(rec);
 }
 
@@ -348,7 +350,9 @@ int scene_list_finish(struct scene_recording *rec, struct scene_mesh **meshes,
     uint32_t kept = 0;
     for (uint32_t i = 0; i < total; i++) {
         uint32_t to = UINT32_MAX;
-        if (all[i].tri_count > 0) {
+        /* Segment 0 stays the object's mesh (rtUpdateVertices numbers
+         * its vertices even without triangles); later ones go when empty. */
+        if (i == 0 || all[i].vertex_count > 0) {
             to = kept;
             all[kept++] = all[i];
         } else {
