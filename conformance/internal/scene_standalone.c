@@ -28,7 +28,7 @@ static enum scene_record_status record_quad(struct scene_recording *rec, float z
     scene_block_start(&block, rec, RT_TRIANGLE_STRIP, identity);
     struct scene_material material;
     scene_material_default(&material);
-    struct scene_triangle_state ts = {&material, 0, 0};
+    struct scene_triangle_state ts = {&material, 0, 0, 0};
     const float normal[3] = {0, 0, 1}, color[4] = {1, 1, 1, 1}, texcoord[2] = {0, 0};
     for (int i = 0; i < 4; i++) {
         double p[3] = {corners[i][0], corners[i][1], corners[i][2] + z};
@@ -104,7 +104,7 @@ int main(void)
         scene_block_start(&block, &bad, RT_TRIANGLES, m);
         struct scene_material material;
         scene_material_default(&material);
-        struct scene_triangle_state ts = {&material, 0, 0};
+        struct scene_triangle_state ts = {&material, 0, 0, 0};
         const double p[3] = {1, 0, 0};
         const float n[3] = {0, 0, 1}, c[4] = {1, 1, 1, 1}, t[2] = {0, 0};
         CHECK(!scene_block_vertex_is_finite(&block, p));

@@ -404,6 +404,9 @@ static void draw(struct rt_context *ctx, const char *caller, RTenum mode, size_t
             return;
         }
     }
+    /* Colours from an array are the list's own (not the caller's). */
+    if (ctx->color_array.enabled && count > 0 && ctx->target == &ctx->recording)
+        ctx->recording.color_set = 1;
     /* Normals from an array count as set normals (see rtNormal3f). */
     if (ctx->normal_array.enabled && count > 0) {
         ctx->target->mesh.has_normals = 1;

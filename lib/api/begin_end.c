@@ -46,10 +46,12 @@ static struct scene_triangle_state triangle_state(const struct rt_context *ctx)
     ts.flags = (uint8_t)((ctx->shade_model == RT_FLAT ? TRI_FLAT : 0u) |
                          (ctx->color_material ? TRI_COLOR_MATERIAL : 0u));
     /* In a list, what the list did not set yet comes from the caller. */
-    if (ctx->target == &ctx->recording && !ctx->recording.material_set)
-        ts.flags |= TRI_INHERIT_MATERIAL;
-    if (ctx->target == &ctx->recording && !ctx->recording.color_set)
-        ts.flags |= TRI_INHERIT_COLOR;
+    ts.inherit = 0;
+    if (ctx->target == &ctx->recording) {
+        ts.inherit = SCENE_MATERIAL_ALL & ~ctx->recording.material_set;
+        if (!ctx->recording.color_set)
+            ts.flags |= TRI_INHERIT_COLOR;
+    }
     return ts;
 }
 

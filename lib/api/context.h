@@ -186,8 +186,8 @@ enum list_state_call {
     LIST_DISABLE, LIST_BIND_TEXTURE, LIST_LIGHT, LIST_LIGHT_MODEL, LIST_LIST_BASE
 };
 int rt_list_compiling(const struct rt_context *ctx);
-int rt_list_matrix(struct rt_context *ctx, enum scene_list_op_kind kind, RTenum mode,
-                   const double m[16]);
+int rt_list_matrix(struct rt_context *ctx, const char *caller, enum scene_list_op_kind kind,
+                   RTenum mode, const double m[16]);
 void rt_list_state(struct rt_context *ctx, enum list_state_call what, RTenum b, RTenum c,
                    const float *v, int n);
 /* Applies a matrix operation to the context's stacks as the entry point

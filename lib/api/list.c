@@ -118,17 +118,22 @@ static void list_out_of_memory(struct rt_context *ctx, const char *what)
              ctx->recording.name);
 }
 
-int rt_list_matrix(struct rt_context *ctx, enum scene_list_op_kind kind, RTenum mode,
-                   const double m[16])
+int rt_list_matrix(struct rt_context *ctx, const char *caller, enum scene_list_op_kind kind,
+                   RTenum mode, const double m[16])
 {
     if (!rt_list_compiling(ctx))
         return 0;
-    if (scene_list_matrix_op(&ctx->recording, kind, mode, m)) {
-        list_out_of_memory(ctx, "matrix call");
+    int status = scene_list_matrix_op(&ctx->recording, kind, mode, m);
+    if (status == -2) {
+        rt_error(ctx, RT_INVALID_VALUE, "%s: the resulting matrix is not finite", caller);
+        return 1;
+    }
+    if (status) {
+        list_out_of_memory(ctx, caller);
         return 1;
     }
     if (ctx->list_mode == RT_COMPILE_AND_EXECUTE) {
-        rt_matrix_apply(ctx, "matrix call", kind, mode, m);
+        rt_matrix_apply(ctx, caller, kind, mode, m);
         capture_segment(ctx);
     }
     return 1;
@@ -151,8 +156,23 @@ void rt_list_state(struct rt_context *ctx, enum list_state_call what, RTenum b, 
     struct scene_recording *rec = &ctx->recording;
     if (what == LIST_COLOR)
         rec->color_set = 1;
-    if (what == LIST_MATERIAL)
-        rec->material_set = 1;
+    if (what == LIST_MATERIAL) {
+        static const struct {
+            RTenum pname;
+            uint32_t bits;
+        } props[] = {{RT_AMBIENT, SCENE_MATERIAL_AMBIENT},
+                     {RT_DIFFUSE, SCENE_MATERIAL_DIFFUSE},
+                     {RT_AMBIENT_AND_DIFFUSE, SCENE_MATERIAL_AMBIENT | SCENE_MATERIAL_DIFFUSE},
+                     {RT_SPECULAR, SCENE_MATERIAL_SPECULAR},
+                     {RT_EMISSION, SCENE_MATERIAL_EMISSION},
+                     {RT_SHININESS, SCENE_MATERIAL_SHININESS},
+                     {RT_REFLECTIVITY, SCENE_MATERIAL_REFLECTIVITY},
+                     {RT_TRANSPARENCY, SCENE_MATERIAL_TRANSPARENCY},
+                     {RT_INDEX_OF_REFRACTION, SCENE_MATERIAL_IOR}};
+        for (size_t i = 0; i < sizeof(props) / sizeof(props[0]); i++)
+            if (props[i].pname == c)
+                rec->material_set |= props[i].bits;
+    }
     if (what == LIST_COLOR || what == LIST_NORMAL || what == LIST_TEXCOORD) {
         for (uint32_t k = rec->op_count; k > 0 && is_attribute(&rec->ops[k - 1]); k--)
             if (rec->ops[k - 1].a == (uint32_t)what) {

@@ -39,7 +39,7 @@ static void store(struct rt_context *ctx, const char *caller, const double m[16]
 /* current = current * m, checked; recorded inside a display list. */
 static void multiply(struct rt_context *ctx, const char *caller, const double m[16])
 {
-    if (rt_list_matrix(ctx, SCENE_OP_MULT, 0, m))
+    if (rt_list_matrix(ctx, caller, SCENE_OP_MULT, 0, m))
         return;
     double r[16];
     mat4_mul(r, rt_current_matrix(ctx), m);
@@ -55,7 +55,7 @@ void rtMatrixMode(RTenum mode)
         rt_error(ctx, RT_INVALID_ENUM, "rtMatrixMode(mode=0x%x)", mode);
         return;
     }
-    if (rt_list_matrix(ctx, SCENE_OP_MATRIX_MODE, mode, NULL))
+    if (rt_list_matrix(ctx, "rtMatrixMode", SCENE_OP_MATRIX_MODE, mode, NULL))
         return;
     ctx->matrix_mode = mode;
 }
@@ -67,7 +67,7 @@ void rtLoadIdentity(void)
         return;
     double m[16];
     mat4_identity(m);
-    if (rt_list_matrix(ctx, SCENE_OP_LOAD, 0, m))
+    if (rt_list_matrix(ctx, "rtLoadIdentity", SCENE_OP_LOAD, 0, m))
         return;
     mat4_identity(rt_current_matrix(ctx));
 }
@@ -88,7 +88,7 @@ static void load_or_mult(const char *caller, const float *mf, const double *md, 
         return;
     if (mult)
         multiply(ctx, caller, m);
-    else if (!rt_list_matrix(ctx, SCENE_OP_LOAD, 0, m))
+    else if (!rt_list_matrix(ctx, caller, SCENE_OP_LOAD, 0, m))
         store(ctx, caller, m);
 }
 
@@ -284,7 +284,7 @@ void rtPushMatrix(void)
     GET_CURRENT_CONTEXT(ctx);
     if (!ctx || rt_check_outside_begin(ctx, "rtPushMatrix"))
         return;
-    if (!rt_list_matrix(ctx, SCENE_OP_PUSH, 0, NULL))
+    if (!rt_list_matrix(ctx, "rtPushMatrix", SCENE_OP_PUSH, 0, NULL))
         push(ctx, "rtPushMatrix");
 }
 
@@ -293,7 +293,7 @@ void rtPopMatrix(void)
     GET_CURRENT_CONTEXT(ctx);
     if (!ctx || rt_check_outside_begin(ctx, "rtPopMatrix"))
         return;
-    if (!rt_list_matrix(ctx, SCENE_OP_POP, 0, NULL))
+    if (!rt_list_matrix(ctx, "rtPopMatrix", SCENE_OP_POP, 0, NULL))
         pop(ctx, "rtPopMatrix");
 }
 

@@ -25,7 +25,7 @@
 #include "trace/scene_traverse.h"
 
 /* The appearance current when an instance was issued: what its triangles
- * marked TRI_INHERIT_MATERIAL / TRI_INHERIT_COLOR (mesh.h) take. */
+ * with inherited material properties or TRI_INHERIT_COLOR (mesh.h) take. */
 struct scene_appearance {
     struct scene_material material;
     float color[4];

@@ -63,11 +63,14 @@ int scene_block_vertex_is_finite(const struct scene_block *block, const double p
  * forget it.  -1 on allocation failure (the next call tries again). */
 static int current_material(struct scene_recording *rec, const struct scene_triangle_state *ts)
 {
-    if (rec->material_index < 0 || rec->material_texture != ts->texture) {
+    if (rec->material_index < 0 || rec->material_texture != ts->texture ||
+        rec->material_inherit != ts->inherit) {
         struct scene_material m = *ts->material;
         m.texture = ts->texture;
+        m.inherit = ts->inherit;
         rec->material_index = scene_mesh_intern_material(&rec->mesh, &m);
         rec->material_texture = ts->texture;
+        rec->material_inherit = ts->inherit;
     }
     return rec->material_index;
 }
@@ -263,6 +266,13 @@ int scene_list_matrix_op(struct scene_recording *rec, enum scene_list_op_kind ki
     op.a = mode;
     if (m)
         memcpy(op.v, m, sizeof(op.v));
+    if (kind == SCENE_OP_MULT && rec->matrix_mode == RT_MODELVIEW) {
+        /* A product that overflows is rejected as outside lists. */
+        double r[16];
+        mat4_mul(r, rec->stack[rec->depth - 1].m, m);
+        if (!mat4_is_finite(r))
+            return -2;
+    }
     if (push_op(rec, &op))
         return -1;
     if (kind == SCENE_OP_MATRIX_MODE) {
@@ -347,12 +357,15 @@ int scene_list_finish(struct scene_recording *rec, struct scene_mesh **meshes,
     all[rec->segment_count++] = rec->mesh;
     memset(&rec->mesh, 0, sizeof(rec->mesh));
     rec->mesh.bounds = aabb_empty();
-    uint32_t kept = 0;
+    uint32_t kept = 0, with_vertices = 0;
+    for (uint32_t i = 0; i < total; i++)
+        with_vertices += all[i].vertex_count > 0;
     for (uint32_t i = 0; i < total; i++) {
         uint32_t to = UINT32_MAX;
-        /* Segment 0 stays the object's mesh (rtUpdateVertices numbers
-         * its vertices even without triangles); later ones go when empty. */
-        if (i == 0 || all[i].vertex_count > 0) {
+        /* Empty segments go; the first stays the object's mesh when no
+         * segment has vertices (rtUpdateVertices numbers a mesh's vertices
+         * even without triangles, an empty list is still an object). */
+        if (all[i].vertex_count > 0 || (i == 0 && with_vertices == 0)) {
             to = kept;
             all[kept++] = all[i];
         } else {

@@ -83,9 +83,12 @@ struct scene_recording {
         uint32_t segment;
     } stack[SCENE_LIST_MAX_PUSH];
     int depth;
-    /* Since the start (or the last nested call): the list set a material,
-     * a colour.  Triangles before inherit the caller's (TRI_INHERIT_*). */
-    int material_set, color_set;
+    /* Since the start (or the last nested call): the material properties
+     * (SCENE_MATERIAL_* bits) and whether a colour the list set; what it
+     * did not set, its triangles take from the caller. */
+    uint32_t material_set;
+    int color_set;
+    uint32_t material_inherit; /* the inherit mask material_index was interned with */
 };
 
 /* Starts recording a display list (the recording matrix is the identity;
@@ -98,7 +101,8 @@ void scene_list_release(struct scene_recording *rec);
 const double *scene_list_matrix(const struct scene_recording *rec);
 /* Records a matrix operation (SCENE_OP_MATRIX_MODE .. SCENE_OP_POP; m for
  * LOAD and MULT) and applies it to the recording matrix.  0, -1 on
- * allocation failure (rec->out_of_memory set). */
+ * allocation failure (rec->out_of_memory set), -2 when a product with
+ * the recording modelview is not finite (nothing recorded). */
 int scene_list_matrix_op(struct scene_recording *rec, enum scene_list_op_kind kind,
                          unsigned mode, const double m[16]);
 /* Records a nested call of `name` (ends the segment). */
@@ -132,7 +136,8 @@ struct scene_block {
 struct scene_triangle_state {
     const struct scene_material *material;
     uint32_t texture; /* 0: untextured */
-    uint8_t flags;    /* TRI_FLAT, TRI_COLOR_MATERIAL */
+    uint8_t flags;    /* TRI_FLAT, TRI_COLOR_MATERIAL, TRI_INHERIT_COLOR */
+    uint32_t inherit; /* material properties taken from the caller (mesh.h) */
 };
 
 enum scene_record_status {
