@@ -51,6 +51,8 @@ static struct scene_triangle_state triangle_state(const struct rt_context *ctx)
         ts.inherit = SCENE_MATERIAL_ALL & ~ctx->recording.material_set;
         if (!ctx->recording.color_set)
             ts.flags |= TRI_INHERIT_COLOR;
+        if (!ctx->recording.color_material_set)
+            ts.flags |= TRI_INHERIT_COLOR_MATERIAL;
     }
     return ts;
 }

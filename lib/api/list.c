@@ -78,6 +78,7 @@ static void appearance_now(const struct rt_context *ctx, struct scene_appearance
     a->material = ctx->material;
     a->material.texture = ctx->texture_2d ? ctx->texture_binding : 0;
     memcpy(a->color, ctx->current_color, sizeof(a->color));
+    a->color_material = ctx->color_material;
 }
 
 /* RT_COMPILE_AND_EXECUTE: notes the modelview and appearance a segment
@@ -156,6 +157,8 @@ void rt_list_state(struct rt_context *ctx, enum list_state_call what, RTenum b, 
     struct scene_recording *rec = &ctx->recording;
     if (what == LIST_COLOR)
         rec->color_set = 1;
+    if ((what == LIST_ENABLE || what == LIST_DISABLE) && b == RT_COLOR_MATERIAL)
+        rec->color_material_set = 1;
     if (what == LIST_MATERIAL) {
         static const struct {
             RTenum pname;

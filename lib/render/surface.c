@@ -216,7 +216,9 @@ void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit 
             s->mat.ior = c->ior;
         s->mat.inherit = 0;
     }
-    if (flags & TRI_COLOR_MATERIAL) {
+    int color_material = (flags & TRI_INHERIT_COLOR_MATERIAL) ? inst->appearance.color_material
+                                                              : (flags & TRI_COLOR_MATERIAL) != 0;
+    if (color_material) {
         float c[4];
         if (flags & TRI_INHERIT_COLOR)
             memcpy(c, inst->appearance.color, sizeof(c)); /* the colour at the call */

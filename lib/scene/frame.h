@@ -29,6 +29,7 @@
 struct scene_appearance {
     struct scene_material material;
     float color[4];
+    int color_material; /* RT_COLOR_MATERIAL enabled */
 };
 
 struct scene_instance {

@@ -57,6 +57,9 @@ struct scene_material {
  * (struct scene_appearance, frame.h), as GL's geometry takes the state
  * current at glCallList (materials: scene_material.inherit). */
 #define TRI_INHERIT_COLOR 0x80u
+/* Recorded before the list enabled or disabled RT_COLOR_MATERIAL: the
+ * enable current at rtCallList applies (the instance's). */
+#define TRI_INHERIT_COLOR_MATERIAL 0x40u
 
 struct scene_mesh {
     uint32_t vertex_count;

@@ -246,7 +246,8 @@ int scene_list_begin(struct scene_recording *rec, uint32_t name, unsigned matrix
     rec->depth = 1;
     mat4_identity(rec->stack[0].m);
     rec->stack[0].segment = 0;
-    rec->material_set = rec->color_set = 0;
+    rec->material_set = 0;
+    rec->color_set = rec->color_material_set = 0;
     /* Keeps the operations' memory of the last list: no allocation for
      * lists of one segment after the first. */
     return segment_op(rec);
@@ -320,7 +321,8 @@ int scene_list_call(struct scene_recording *rec, uint32_t name, int add_base)
     if (push_op(rec, &op))
         return -1;
     /* The callee may change the matrix, the material and the colour. */
-    rec->material_set = rec->color_set = 0;
+    rec->material_set = 0;
+    rec->color_set = rec->color_material_set = 0;
     return new_segment(rec);
 }
 

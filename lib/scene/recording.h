@@ -88,6 +88,7 @@ struct scene_recording {
      * did not set, its triangles take from the caller. */
     uint32_t material_set;
     int color_set;
+    int color_material_set; /* the list enabled or disabled RT_COLOR_MATERIAL */
     uint32_t material_inherit; /* the inherit mask material_index was interned with */
 };
 
