@@ -841,11 +841,12 @@ static void modulate(void)
     rtEnable(RT_TEXTURE_2D);
     define_quad(QUAD, 0, 0, 1, 1);
     rtDisable(RT_TEXTURE_2D);
-    rtDisable(RT_COLOR_MATERIAL);
-    /* The quad sets no colour: it takes the one current at the call. */
+    /* The quad sets no colour and leaves RT_COLOR_MATERIAL alone: both
+     * are the ones current at the call (GL's display lists). */
     rtColor3f(0.5f, 1, 0.25f);
     render(QUAD);
     rtColor3f(1, 1, 1);
+    rtDisable(RT_COLOR_MATERIAL);
     CHECK(quadrants_scaled_ok(0.5f, 1, 0.25f));
 
     tu_section("MODULATE in Whitted shading");
