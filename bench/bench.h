@@ -375,6 +375,7 @@ int bench_dynamic_section(const struct bench_options *opts, struct bench_mesh *m
  * RT_BART_DIR), else -1 with the reason in why (no path in it). */
 int bench_bart_find_data(const struct bench_options *opts, char *why, size_t why_size);
 int bench_bart_section(const struct bench_options *opts);
+int bench_immediate_section(const struct bench_options *opts);
 #ifdef RT_HAVE_EMBREE
 int bench_embree_section(const struct bench_options *opts, struct bench_mesh *meshes,
                          int mesh_count);

@@ -9,6 +9,7 @@
  *                   rebuild, top level, parallel build (bench_dynamic.c)
  *   rtbench bart    the BART scenes against Wald, Benthin and Slusallek (2003) sec. 5 (bench_bart.c;
  *                   needs the BART data, fails without it)
+ *   rtbench immediate  immediate mode against objects (bench_immediate.c)
  *   rtbench all     all of the above (default); bart only when its data is
  *                   found, otherwise the report says it was skipped and why
  *
@@ -39,17 +40,19 @@ enum section {
     SECTION_TRACE = 2,
     SECTION_EMBREE = 4,
     SECTION_DYNAMIC = 8,
-    SECTION_BART = 16
+    SECTION_BART = 16,
+    SECTION_IMMEDIATE = 32
 };
 #define SECTION_ALL                                                                                \
-    (SECTION_BUILD | SECTION_TRACE | SECTION_EMBREE | SECTION_DYNAMIC | SECTION_BART)
+    (SECTION_BUILD | SECTION_TRACE | SECTION_EMBREE | SECTION_DYNAMIC | SECTION_BART |           \
+     SECTION_IMMEDIATE)
 /* The sections that run on the generated meshes. */
 #define SECTION_MESHES (SECTION_BUILD | SECTION_TRACE | SECTION_EMBREE | SECTION_DYNAMIC)
 
 static void usage(FILE *f)
 {
     fprintf(f,
-            "usage: rtbench [build|trace|embree|dynamic|bart|all] [--quick] [--runs N]\n"
+            "usage: rtbench [build|trace|embree|dynamic|immediate|bart|all] [--quick] [--runs N]\n"
             "               [--out DIR] [--mesh bumpy|gears|soup] [--baseline FILE]\n"
             "               [--tolerance PCT] [--bart-dir DIR] [--isa NAME] [--layout L]\n"
             "\n"
@@ -60,6 +63,7 @@ static void usage(FILE *f)
             "             against time), soup rebuild, top level, parallel build\n"
             "  bart       the BART scenes (kitchen, robots, museum) against Wald, Benthin and Slusallek (2003)\n"
             "             sec. 5: fps, top level, updates, strategies, two-level overhead\n"
+            "  immediate  immediate-mode re-send against objects (bench_immediate.c)\n"
             "  all        everything (default); bart only when its data is found\n"
             "  --quick    toy sizes and 1 run unless --runs is given: a smoke test\n"
             "  --runs N   timings are the median of N runs (default %d)\n"
@@ -114,6 +118,8 @@ int main(int argc, char **argv)
             sections |= SECTION_EMBREE;
         } else if (!strcmp(a, "dynamic")) {
             sections |= SECTION_DYNAMIC;
+        } else if (!strcmp(a, "immediate")) {
+            sections |= SECTION_IMMEDIATE;
         } else if (!strcmp(a, "bart")) {
             sections |= SECTION_BART;
             bart_required = 1;
@@ -234,6 +240,8 @@ int main(int argc, char **argv)
     }
     if (sections & SECTION_DYNAMIC)
         failed |= bench_dynamic_section(&opts, meshes, mesh_count) != 0;
+    if (sections & SECTION_IMMEDIATE)
+        failed |= bench_immediate_section(&opts) != 0;
     if (sections & SECTION_BART)
         failed |= bench_bart_section(&opts) != 0;
     int flagged = report_close();

@@ -52,6 +52,21 @@ static void default_material(void)
     rtMaterialf(RT_FRONT_AND_BACK, RT_INDEX_OF_REFRACTION, 1);
 }
 
+/* The Whitted section's materials: black diffuse and ambient, the given
+ * emission, reflectivity and transparency.  Its objects set no material
+ * of their own, so each takes the one current at rtInstantiateObject
+ * (GL's glCallList semantics, docs/lists.md). */
+static void whitted_material(const float emission[4], float reflectivity, float transparency)
+{
+    static const float black4[4] = {0, 0, 0, 1};
+    default_material();
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_DIFFUSE, black4);
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_AMBIENT, black4);
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_EMISSION, emission);
+    rtMaterialf(RT_FRONT_AND_BACK, RT_REFLECTIVITY, reflectivity);
+    rtMaterialf(RT_FRONT_AND_BACK, RT_TRANSPARENCY, transparency);
+}
+
 /* A camera-facing quad [-0.9, 0.9]^2 at depth z. */
 static void define_facing_quad(RTuint name, float z)
 {
@@ -469,7 +484,9 @@ static void whitted_reflection_refraction(void)
     rtEndObject();
     CHECK_NO_ERR();
     rtBeginFrame();
+    whitted_material(green, 0, 0);
     rtInstantiateObject(WALL);
+    whitted_material(black, 1, 0);
     rtInstantiateObject(OBJ);
     rtRenderParameteri(RT_MAX_RAY_DEPTH, 1);
     render();
@@ -494,7 +511,9 @@ static void whitted_reflection_refraction(void)
     rtMaterialf(RT_FRONT_AND_BACK, RT_TRANSPARENCY, 1);
     define_facing_quad(OBJ, -5);
     rtBeginFrame();
+    whitted_material(black, 0, 1);
     rtInstantiateObject(OBJ);
+    whitted_material(red, 0, 0);
     rtInstantiateObject(WALL);
     rtRenderParameteri(RT_MAX_RAY_DEPTH, 2);
     render();
@@ -514,6 +533,11 @@ static void whitted_reflection_refraction(void)
         rtMaterialfv(RT_FRONT_AND_BACK, RT_EMISSION, red);
         rtMaterialf(RT_FRONT_AND_BACK, RT_TRANSPARENCY, 0.5f);
         define_facing_quad(OBJ, -5);
+        rtBeginFrame();
+        whitted_material(red, 0, 0.5f);
+        rtInstantiateObject(OBJ);
+        whitted_material(green4, 0, 0);
+        rtInstantiateObject(WALL);
         rtRenderParameteri(RT_MAX_RAY_DEPTH, 2);
         render();
         CHECK_RGB(CENTRE, 0.5f, 0.5f, 0);

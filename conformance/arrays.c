@@ -203,11 +203,13 @@ static void draw_errors(void)
     tu_section("rtDrawArrays / rtDrawElements errors");
     rtVertexPointer(3, RT_FLOAT, 0, v);
     rtEnableClientState(RT_VERTEX_ARRAY);
-    /* Outside an object. */
+    /* Outside an object: immediate mode (docs/lists.md), no error. */
+    rtBeginFrame();
     rtDrawArrays(RT_TRIANGLES, 0, 3);
-    CHECK_ERR(RT_INVALID_OPERATION);
+    CHECK_NO_ERR();
     rtDrawElements(RT_TRIANGLES, 3, RT_UNSIGNED_BYTE, idx);
-    CHECK_ERR(RT_INVALID_OPERATION);
+    CHECK_NO_ERR();
+    rtBeginFrame();
 
     rtNewObject(ARR);
     rtDrawArrays(RT_TRIANGLES, 0, 3); /* triangle 0 */
@@ -487,22 +489,26 @@ static void types_sizes_strides(void)
         rtEndObject();
         CHECK_NO_ERR();
         compare_with_reference("RT_DOUBLE size 3, stride 32");
-        /* Integer positions are not normalised: scale by 1/2 to compare. */
-        rtPushMatrix();
-        rtScalef(0.5f, 0.5f, 0.5f);
+        /* Integer positions are not normalised: scale by 1/2 to compare
+         * (inside the list, whose vertices its own matrix transforms). */
         rtVertexPointer(3, RT_SHORT, (RTsizei)sizeof rs[0], rs[0].xyz);
         rtNewObject(ARR);
+        rtPushMatrix();
+        rtScalef(0.5f, 0.5f, 0.5f);
         rtDrawArrays(RT_TRIANGLE_FAN, 0, NV);
+        rtPopMatrix();
         rtEndObject();
         CHECK_NO_ERR();
         compare_with_reference("RT_SHORT size 3, interleaved stride, under scale 1/2");
         rtVertexPointer(3, RT_INT, (RTsizei)sizeof ri[0], ri);
         rtNewObject(ARR);
+        rtPushMatrix();
+        rtScalef(0.5f, 0.5f, 0.5f);
         rtDrawArrays(RT_TRIANGLE_FAN, 0, NV);
+        rtPopMatrix();
         rtEndObject();
         CHECK_NO_ERR();
         compare_with_reference("RT_INT size 3, stride 16, under scale 1/2");
-        rtPopMatrix();
     }
     /* The modelview at the call transforms array vertices. */
     {

@@ -229,6 +229,7 @@ static void vertex_forms(void)
     }
 
     tu_section("a rejected vertex is not recorded");
+    rtLoadIdentity(); /* calling the last list left its matrix calls' effect (GL) */
     rtNewObject(OBJ);
     rtBegin(RT_TRIANGLES);
     rtVertex3f(0, 0, 0);
@@ -255,16 +256,14 @@ static void begin_end_errors(void)
 {
     RTint tris;
     tu_section("rtBegin / rtEnd errors");
-    /* Outside an object there is no drawing. */
-    rtBegin(RT_TRIANGLES);
-    CHECK_ERR(RT_INVALID_OPERATION);
+    /* Outside an object rtBegin draws in immediate mode (docs/lists.md);
+     * a vertex outside rtBegin and an unmatched rtEnd are errors. */
     rtVertex3f(0, 0, 0);
     CHECK_ERR(RT_INVALID_OPERATION);
     rtEnd();
     CHECK_ERR(RT_INVALID_OPERATION);
-    /* Outside an object the mode error comes first, even with a bad enum. */
     rtBegin(0x1234);
-    CHECK_ERR(RT_INVALID_OPERATION);
+    CHECK_ERR(RT_INVALID_ENUM);
 
     rtNewObject(OBJ);
     rtBegin(0x1234);

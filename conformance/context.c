@@ -377,10 +377,13 @@ static void enable_disable(void)
     CHECK(rtIsEnabled(RT_COLOR_MATERIAL) == RT_TRUE);
     CHECK(rtIsEnabled(RT_LIGHT0) == RT_FALSE);
     CHECK_NO_ERR();
-    /* Allowed inside an object (outside rtBegin). */
+    /* Allowed inside an object (outside rtBegin): recorded, as in a GL
+     * display list, so it takes effect when the list is called. */
     rtNewObject(5);
     rtEnable(RT_LIGHT0 + 1);
     rtEndObject();
+    CHECK(rtIsEnabled(RT_LIGHT0 + 1) == RT_FALSE);
+    rtInstantiateObject(5);
     CHECK(rtIsEnabled(RT_LIGHT0 + 1) == RT_TRUE);
     CHECK_NO_ERR();
     tu_destroy_context(ctx);

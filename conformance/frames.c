@@ -265,15 +265,17 @@ static void camera(void)
      * plane) and one at z = -200 (beyond far) are clipped; the green one at
      * z = -5 shows. */
     tu_ortho_camera();
-    rtMaterialfv(RT_FRONT_AND_BACK, RT_DIFFUSE, red);
+    /* The quads set no material: each takes the one current at its
+     * rtInstantiateObject, as GL's lists take the one at glCallList. */
     CHECK(tu_define_quad(NEAR_OBJ, -2, -2, 2, 2, -0.5f));
-    rtMaterialfv(RT_FRONT_AND_BACK, RT_DIFFUSE, green);
     CHECK(tu_define_quad(OBJ, -2, -2, 2, 2, -5));
-    rtMaterialfv(RT_FRONT_AND_BACK, RT_DIFFUSE, red);
     CHECK(tu_define_quad(FAR_OBJ, -2, -2, 2, 2, -200));
     rtBeginFrame();
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_DIFFUSE, red);
     rtInstantiateObject(NEAR_OBJ);
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_DIFFUSE, green);
     rtInstantiateObject(OBJ);
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_DIFFUSE, red);
     rtRenderFrame();
     rtReadPixels(0, 0, 8, 8, RT_RGBA, RT_FLOAT, f);
     CHECK_NEAR(f[4 * 27 + 0], 0, 0.01);

@@ -358,8 +358,13 @@ static void define_flat(const struct world *w)
     rtMatrixMode(RT_MODELVIEW);
     rtNewObject(FLAT_OBJECT);
     for (int i = 0; i < INSTANCES; i++) {
-        rtLoadMatrixd(w->matrices[i]);
+        /* Relative to the list's own identity: one mesh whose vertices
+         * are transformed by exactly this matrix (an absolute
+         * rtLoadMatrixd would make each a segment of its own). */
+        rtPushMatrix();
+        rtMultMatrixd(w->matrices[i]);
         emit(&w->objects[w->instance_object[i]]);
+        rtPopMatrix();
     }
     rtEndObject();
     rtLoadIdentity();

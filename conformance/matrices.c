@@ -471,8 +471,8 @@ static void inside_objects(void)
     rtNewObject(7);
     rtPushMatrix();
     rtTranslatef(10, 0, 0);
-    /* The call takes effect at once: the current matrix is visible. */
-    translation(e, 10, 0, 0);
+    /* Recorded, not executed (GL_COMPILE): the context's matrix stays. */
+    translation(e, 0, 0, 0);
     CHECK_CURRENT_MATRIX(RT_MODELVIEW_MATRIX, e, 0.0);
     rtBegin(RT_TRIANGLES);
     rtVertex3f(0, 0, 0);
@@ -502,11 +502,11 @@ static void inside_objects(void)
     rtGetObjectfv(7, RT_OBJECT_BOUNDS, bounds);
     CHECK_NEAR(bounds[0], 10, EPS);
     rtLoadIdentity();
-    /* Stack errors inside an object are recorded at the call and do not end
-     * the recording. */
+    /* Stack errors of a list happen when it is called, as in GL; the
+     * recording goes on. */
     rtNewObject(8);
     rtPopMatrix();
-    CHECK_ERR(RT_STACK_UNDERFLOW);
+    CHECK_NO_ERR();
     rtBegin(RT_TRIANGLES);
     rtVertex3f(0, 0, 0);
     rtVertex3f(1, 0, 0);
@@ -515,6 +515,8 @@ static void inside_objects(void)
     rtEndObject();
     CHECK_NO_ERR();
     CHECK_INT(tu_object_triangles(8), 1);
+    rtInstantiateObject(8);
+    CHECK_ERR(RT_STACK_UNDERFLOW);
 }
 
 int main(void)

@@ -74,8 +74,6 @@ static void new_end_object(void)
     /* Name 0 is invalid and starts no recording. */
     rtNewObject(0);
     CHECK_ERR(RT_INVALID_VALUE);
-    rtBegin(RT_TRIANGLES);
-    CHECK_ERR(RT_INVALID_OPERATION);
     rtEndObject();
     CHECK_ERR(RT_INVALID_OPERATION);
     CHECK(rtIsObject(0) == RT_FALSE);

@@ -275,8 +275,8 @@ static void level_of_detail(void)
     frustum_camera(-0.5, 1.5, -1, 1, 1, 1e4);
     rtTranslatef(1, 0, 0);
     define_quad(QUAD, TEX_CHECKER, 2, -2, 0.375f);
+    render(QUAD); /* instanced under the translation (a list's own matrix starts at identity) */
     rtLoadIdentity();
-    render(QUAD);
     check_fraction(0.375f, (float)log2(1.5), 3e-3f, 3, 5, 7, 9);
     /* 0.75 texels a pixel head-on: a magnification, level 0 exactly. */
     frustum_camera(-1, 1, -1, 1, 1, 10);
@@ -291,8 +291,8 @@ static void level_of_detail(void)
     rtRotatef(60, 1, 0, 0);
     rtTranslatef(0, 0, 2);
     define_quad(QUAD, TEX_CHECKER, 2, -2, 0.1875f);
-    rtLoadIdentity();
     render(QUAD);
+    rtLoadIdentity();
     for (int j = 7; j < 9; j++)
         for (int i = 7; i < 9; i++) {
             float f = fraction_at(i, j);

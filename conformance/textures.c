@@ -253,11 +253,14 @@ static void names_and_binding(void)
     tu_end_scratch();
     CHECK(rtIsTexture(8) == RT_FALSE);
     CHECK_INT(geti(RT_TEXTURE_BINDING_2D), 4242);
-    /* Allowed inside an object definition. */
+    /* Allowed inside an object definition: recorded, and bound when the
+     * object is called (GL's display lists, docs/lists.md). */
     rtNewObject(TU_SCRATCH_OBJECT);
     rtBindTexture(RT_TEXTURE_2D, names[2]);
     CHECK_NO_ERR();
     rtEndObject();
+    CHECK_INT(geti(RT_TEXTURE_BINDING_2D), 4242);
+    rtInstantiateObject(TU_SCRATCH_OBJECT);
     CHECK_INT(geti(RT_TEXTURE_BINDING_2D), names[2]);
     rtBindTexture(RT_TEXTURE_2D, 0);
     CHECK_INT(geti(RT_TEXTURE_BINDING_2D), 0);
@@ -836,12 +839,14 @@ static void modulate(void)
     tu_section("MODULATE with RT_COLOR_MATERIAL");
     rtEnable(RT_COLOR_MATERIAL);
     rtEnable(RT_TEXTURE_2D);
-    rtColor3f(0.5f, 1, 0.25f);
     define_quad(QUAD, 0, 0, 1, 1);
-    rtColor3f(1, 1, 1);
     rtDisable(RT_TEXTURE_2D);
-    rtDisable(RT_COLOR_MATERIAL);
+    /* The quad sets no colour and leaves RT_COLOR_MATERIAL alone: both
+     * are the ones current at the call (GL's display lists). */
+    rtColor3f(0.5f, 1, 0.25f);
     render(QUAD);
+    rtColor3f(1, 1, 1);
+    rtDisable(RT_COLOR_MATERIAL);
     CHECK(quadrants_scaled_ok(0.5f, 1, 0.25f));
 
     tu_section("MODULATE in Whitted shading");

@@ -154,6 +154,19 @@ static void define_scene(void)
 
 static void instantiate_scene(void)
 {
+    /* The lists set only some material properties; the others are the
+     * ones current at the call (GL's display lists), which the last
+     * frame's calls changed: start every frame from GL's defaults. */
+    static const float amb[4] = {0.2f, 0.2f, 0.2f, 1}, dif[4] = {0.8f, 0.8f, 0.8f, 1},
+                       black[4] = {0, 0, 0, 1};
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_AMBIENT, amb);
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_DIFFUSE, dif);
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_SPECULAR, black);
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_EMISSION, black);
+    rtMaterialf(RT_FRONT_AND_BACK, RT_SHININESS, 0);
+    rtMaterialf(RT_FRONT_AND_BACK, RT_REFLECTIVITY, 0);
+    rtMaterialf(RT_FRONT_AND_BACK, RT_TRANSPARENCY, 0);
+    rtMaterialf(RT_FRONT_AND_BACK, RT_INDEX_OF_REFRACTION, 1);
     rtMatrixMode(RT_MODELVIEW);
     rtLoadIdentity();
     rtTranslatef(0.0f, -2.0f, 0.0f);

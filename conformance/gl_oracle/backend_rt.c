@@ -59,8 +59,8 @@ int oracle_rt_render(const struct oracle_scene *scene, unsigned char *rgba)
     scene->shape();
     rtEndObject();
     rtLoadIdentity();
+    rtBeginFrame(); /* before the view step, which may draw in immediate mode */
     scene->view();
-    rtBeginFrame();
     rtInstantiateObject(object);
     rtRenderFrame();
     rtReadPixels(0, 0, ORACLE_W, ORACLE_H, RT_RGBA, RT_UNSIGNED_BYTE, rgba);

@@ -201,9 +201,9 @@ int main(int argc, char **argv)
     const char *out_dir = NULL, *docs_dir = NULL;
     unsigned char *gl, *rt, *diff, *triptych, **sheets;
     int i, failures = 0, f;
-    const char *families[] = {"quadrics", "glut", "projections", "lines", "blend", "clip"};
-    const int family_count = 6;
-    int family_scenes[6] = {0, 0, 0, 0, 0, 0};
+    const char *families[] = {"quadrics", "glut", "projections", "lists", "lines", "blend", "clip"};
+    const int family_count = 7;
+    int family_scenes[7] = {0, 0, 0, 0, 0, 0, 0};
     for (i = 1; i + 1 < argc; i += 2) {
         if (strcmp(argv[i], "--out") == 0)
             out_dir = argv[i + 1];

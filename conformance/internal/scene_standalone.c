@@ -12,6 +12,7 @@
 #include "base/mat4.h"
 #include "check.h"
 #include "scene/accel.h"
+#include "scene/list.h"
 #include "scene/recording.h"
 #include "scene/scene.h"
 
@@ -28,7 +29,7 @@ static enum scene_record_status record_quad(struct scene_recording *rec, float z
     scene_block_start(&block, rec, RT_TRIANGLE_STRIP, identity);
     struct scene_material material;
     scene_material_default(&material);
-    struct scene_triangle_state ts = {&material, 0, 0};
+    struct scene_triangle_state ts = {&material, 0, 0, 0};
     const float normal[3] = {0, 0, 1}, color[4] = {1, 1, 1, 1}, texcoord[2] = {0, 0};
     for (int i = 0; i < 4; i++) {
         double p[3] = {corners[i][0], corners[i][1], corners[i][2] + z};
@@ -86,6 +87,49 @@ static void check_wide_layout_only_when_walked(void)
     scene_accel_release(without);
 }
 
+/* A display list recorded and committed without an API context (the MPI
+ * replay seam, recording.h): a quad, a recorded translation that moves
+ * the next quad, an absolute load that starts a segment of its own. */
+static void check_list_without_context(struct scene *scene)
+{
+    struct scene_recording rec;
+    memset(&rec, 0, sizeof(rec));
+    CHECK(scene_list_begin(&rec, 9, RT_MODELVIEW) == 0);
+    double t[16];
+    mat4_identity(t);
+    t[12] = 2.0;
+    struct scene_block block;
+    memset(&block, 0, sizeof(block));
+    struct scene_material material;
+    scene_material_default(&material);
+    struct scene_triangle_state ts = {&material, 0, 0, 0};
+    const float n[3] = {0, 0, 1}, c[4] = {1, 1, 1, 1}, st[2] = {0, 0};
+    static const double tri[3][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    for (int pass = 0; pass < 3; pass++) {
+        if (pass == 1)
+            CHECK(scene_list_matrix_op(&rec, SCENE_OP_MULT, 0, t) == 0);
+        if (pass == 2)
+            CHECK(scene_list_matrix_op(&rec, SCENE_OP_LOAD, 0, t) == 0);
+        scene_block_start(&block, &rec, RT_TRIANGLES, scene_list_matrix(&rec));
+        for (int v = 0; v < 3; v++)
+            CHECK(scene_record_vertex(&rec, &block, &ts, tri[v], n, c, st) == SCENE_RECORD_OK);
+    }
+    struct scene_mesh *meshes = NULL;
+    struct scene_list_op *ops = NULL;
+    uint32_t count = 0, op_count = 0;
+    CHECK(scene_list_finish(&rec, &meshes, &count, &ops, &op_count, NULL) == 0);
+    CHECK(count == 2);
+    CHECK(meshes && meshes[0].tri_count == 2 && meshes[0].positions[3 * 3] == 2.0f);
+    /* segment 0, mult, load, segment 1 */
+    CHECK(op_count == 4 && ops[0].kind == SCENE_OP_SEGMENT && ops[3].kind == SCENE_OP_SEGMENT &&
+          ops[3].a == 1);
+    struct scene_object *object = scene_objects_get_or_create(&scene->objects, 9);
+    CHECK(object && scene_define_list(scene, object, meshes, count, ops, op_count) == 0);
+    CHECK(object && object->segment_count == 1 && object->op_count == 4);
+    scene_list_release(&rec);
+    scene_mesh_release(&rec.mesh);
+}
+
 int main(void)
 {
     struct bvh_build_params params;
@@ -105,6 +149,12 @@ int main(void)
     if (!object)
         return 1;
     scene_define_object(&scene, object, &rec.mesh);
+    {
+        struct scene lists; /* a scene of its own: the change set below is counted */
+        scene_init(&lists, &params, 0, 0);
+        check_list_without_context(&lists);
+        scene_release(&lists);
+    }
 
     /* A non-finite vertex is refused without storing anything. */
     {
@@ -119,7 +169,7 @@ int main(void)
         scene_block_start(&block, &bad, RT_TRIANGLES, m);
         struct scene_material material;
         scene_material_default(&material);
-        struct scene_triangle_state ts = {&material, 0, 0};
+        struct scene_triangle_state ts = {&material, 0, 0, 0};
         const double p[3] = {1, 0, 0};
         const float n[3] = {0, 0, 1}, c[4] = {1, 1, 1, 1}, t[2] = {0, 0};
         CHECK(!scene_block_vertex_is_finite(&block, p));

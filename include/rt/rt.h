@@ -456,6 +456,34 @@ RTAPI void rtGetClipPlane(RTenum plane, RTdouble *equation);
 RTAPI void rtTraceRays(RTsizei count, const RTray *rays, RThit *hits);
 RTAPI void rtOccludedRays(RTsizei count, const RTray *rays, RTboolean *occluded);
 
+/* ---- Display lists, GL-named (docs/lists.md) -------------------------- */
+#define RT_COMPILE 0x1300
+#define RT_COMPILE_AND_EXECUTE 0x1301
+#define RT_LIST_MODE 0x0B30
+#define RT_MAX_LIST_NESTING 0x0B31
+#define RT_LIST_BASE 0x0B32
+#define RT_LIST_INDEX 0x0B33
+#define RT_2_BYTES 0x1407
+#define RT_3_BYTES 0x1408
+#define RT_4_BYTES 0x1409
+RTAPI void rtNewList(RTuint list, RTenum mode);
+RTAPI void rtEndList(void);
+RTAPI void rtCallList(RTuint list);
+RTAPI void rtCallLists(RTsizei n, RTenum type, const void *lists);
+RTAPI void rtListBase(RTuint base);
+RTAPI RTuint rtGenLists(RTsizei range);
+RTAPI void rtDeleteLists(RTuint list, RTsizei range);
+RTAPI RTboolean rtIsList(RTuint list);
+RTAPI void rtArrayElement(RTint i);
+
+/* ---- GL frames (docs/frames.md) --------------------------------------- */
+#define RT_DEPTH_BUFFER_BIT 0x00000100
+#define RT_ACCUM_BUFFER_BIT 0x00000200
+#define RT_STENCIL_BUFFER_BIT 0x00000400
+#define RT_COLOR_BUFFER_BIT 0x00004000
+RTAPI void rtClear(RTbitfield mask);
+RTAPI void rtFlush(void);
+
 #ifdef __cplusplus
 }
 #endif

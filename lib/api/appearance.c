@@ -63,6 +63,7 @@ static void material(const char *caller, RTenum face, RTenum pname, const RTfloa
                  (double)v);
         return;
     }
+    rt_list_state(ctx, LIST_MATERIAL, face, pname, params, n);
     struct scene_material m = ctx->material;
     switch (pname) {
     case RT_AMBIENT:
@@ -156,6 +157,7 @@ static void light(const char *caller, RTenum which, RTenum pname, const RTfloat 
                  (double)params[0]);
         return;
     }
+    rt_list_state(ctx, LIST_LIGHT, which, pname, params, n);
     struct render_light *l = &ctx->render.lights[which - RT_LIGHT0];
     switch (pname) {
     case RT_AMBIENT:
@@ -219,6 +221,7 @@ void rtLightModelfv(RTenum pname, const RTfloat *params)
     }
     if (!rt_check_finite(ctx, "rtLightModelfv", params, 4))
         return;
+    rt_list_state(ctx, LIST_LIGHT_MODEL, pname, 0, params, 4);
     memcpy(ctx->render.global_ambient, params, 4 * sizeof(float));
 }
 

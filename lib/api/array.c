@@ -259,11 +259,6 @@ static int draw_allowed(struct rt_context *ctx, const char *caller, RTenum mode)
         rt_error(ctx, RT_INVALID_OPERATION, "%s: not allowed between rtBegin and rtEnd", caller);
         return 0;
     }
-    if (!ctx->recording.active) {
-        rt_error(ctx, RT_INVALID_OPERATION, "%s: draw calls are only recorded inside rtNewObject",
-                 caller);
-        return 0;
-    }
     if (!scene_mode_is_valid(mode) && !scene_lines_mode_is_valid(mode)) {
         rt_error(ctx, RT_INVALID_ENUM, "%s(mode=0x%x)", caller, mode);
         return 0;
@@ -308,10 +303,10 @@ static void draw_sequential(struct rt_context *ctx, const char *caller, size_t f
                             size_t count)
 {
     /* Reserve up front so the batch cannot fail half-way. */
-    struct scene_mesh *mesh = &ctx->recording.mesh;
+    struct scene_mesh *mesh = &ctx->target->mesh;
     if (count > UINT32_MAX / 2 || scene_mesh_reserve_vertices(mesh, (uint32_t)count) ||
         scene_mesh_reserve_triangles(mesh, (uint32_t)(2 * count))) {
-        ctx->recording.out_of_memory = 1;
+        ctx->target->out_of_memory = 1;
         rt_error(ctx, RT_OUT_OF_MEMORY, "%s: out of memory", caller);
         return;
     }
@@ -341,7 +336,7 @@ static void draw_indexed(struct rt_context *ctx, const char *caller, size_t coun
         hi = i > hi ? i : hi;
     }
     size_t range = hi - lo + 1;
-    struct scene_mesh *mesh = &ctx->recording.mesh;
+    struct scene_mesh *mesh = &ctx->target->mesh;
     uint32_t *map = NULL;
     unsigned char *used = NULL;
     if (range > UINT32_MAX / 2 || count > UINT32_MAX / 2 ||
@@ -350,7 +345,7 @@ static void draw_indexed(struct rt_context *ctx, const char *caller, size_t coun
         scene_mesh_reserve_triangles(mesh, (uint32_t)(2 * count))) {
         rt_free(map);
         rt_free(used);
-        ctx->recording.out_of_memory = 1;
+        ctx->target->out_of_memory = 1;
         rt_error(ctx, RT_OUT_OF_MEMORY, "%s: out of memory", caller);
         return;
     }
@@ -408,7 +403,10 @@ static void draw(struct rt_context *ctx, const char *caller, RTenum mode, size_t
      * non-finite normal, colour or texture coordinate is rejected as
      * rtNormal, rtColor and rtTexCoord reject it (only the components
      * emit_element reads are checked). */
-    rt_block_start(ctx, mode);
+    if (rt_block_start(ctx, mode)) {
+        rt_error(ctx, RT_OUT_OF_MEMORY, "%s: out of memory", caller);
+        return;
+    }
     int texcoord_components = ctx->texcoord_array.size < 2 ? ctx->texcoord_array.size : 2;
     for (size_t k = 0; k < count; k++) {
         double p[3];
@@ -425,13 +423,24 @@ static void draw(struct rt_context *ctx, const char *caller, RTenum mode, size_t
             return;
         }
     }
-    if (rt_lines_block_start(ctx, mode)) {
+    int lines = rt_lines_block_start(ctx, mode);
+    if (lines < 0) {
+        rt_error(ctx, RT_OUT_OF_MEMORY, "%s: out of memory", caller);
+        return;
+    }
+    if (lines) {
         draw_lines(ctx, caller, index_type, indices, first, count);
         return;
     }
+    /* Colours from an array are the list's own (not the caller's). */
+    if (ctx->color_array.enabled && count > 0 && ctx->target == &ctx->recording)
+        ctx->recording.color_set = 1;
     /* Normals from an array count as set normals (see rtNormal3f). */
-    if (ctx->normal_array.enabled && count > 0)
-        ctx->recording.mesh.has_normals = 1;
+    if (ctx->normal_array.enabled && count > 0) {
+        ctx->target->mesh.has_normals = 1;
+        if (ctx->target != &ctx->recording)
+            ctx->normal_given = 1;
+    }
     if (indices)
         draw_indexed(ctx, caller, count, index_type, indices);
     else
@@ -470,4 +479,45 @@ void rtDrawElements(RTenum mode, RTsizei count, RTenum type, const void *indices
     if (!arrays_ready(ctx, "rtDrawElements"))
         return;
     draw(ctx, "rtDrawElements", mode, 0, (size_t)count, type, indices);
+}
+
+/* glArrayElement: element i as the next vertex of the current rtBegin
+ * block (in a list or immediate mode), with its attributes, which become
+ * the current ones as GL's glArrayElement issues glColor, glNormal and
+ * glTexCoord.  Outside rtBegin/rtEnd it is RT_INVALID_OPERATION here: a
+ * vertex has no primitive to join. */
+void rtArrayElement(RTint i)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx)
+        return;
+    if (!ctx->block.active) {
+        rt_error(ctx, RT_INVALID_OPERATION, "rtArrayElement: only allowed between rtBegin and rtEnd");
+        return;
+    }
+    if (i < 0) {
+        rt_error(ctx, RT_INVALID_VALUE, "rtArrayElement(i=%d)", i);
+        return;
+    }
+    if (!arrays_ready(ctx, "rtArrayElement"))
+        return;
+    size_t e = (size_t)i;
+    double p[3];
+    int texcoord_components = ctx->texcoord_array.size < 2 ? ctx->texcoord_array.size : 2;
+    if (!fetch_position(&ctx->vertex_array, e, p) || !rt_vertex_is_finite(ctx, p) ||
+        !attribute_is_finite(&ctx->normal_array, e, 3) ||
+        !attribute_is_finite(&ctx->color_array, e, ctx->color_array.size) ||
+        !attribute_is_finite(&ctx->texcoord_array, e, texcoord_components)) {
+        rt_error(ctx, RT_INVALID_VALUE, "rtArrayElement(i=%d): not finite", i);
+        return;
+    }
+    float normal[3], color[4], texcoord[2];
+    fetch_element(ctx, e, p, normal, color, texcoord);
+    if (ctx->normal_array.enabled)
+        rtNormal3fv(normal);
+    if (ctx->color_array.enabled)
+        rtColor4fv(color);
+    if (ctx->texcoord_array.enabled)
+        rtTexCoord2fv(texcoord);
+    rt_record_vertex(ctx, "rtArrayElement", p, normal, color, texcoord);
 }

@@ -11,10 +11,24 @@
 #include "api/context.h"
 #include "scene/assembly.h"
 
-void rt_block_start(struct rt_context *ctx, RTenum mode)
+int rt_block_start(struct rt_context *ctx, RTenum mode)
 {
-    scene_block_start(&ctx->block, &ctx->recording, mode,
-                      ctx->modelview.m[ctx->modelview.depth - 1]);
+    if (ctx->recording.active) {
+        /* A display list: relative to the list's own matrix (list.c). */
+        ctx->target = &ctx->recording;
+        scene_block_start(&ctx->block, ctx->target, mode, scene_list_matrix(ctx->target));
+        return 0;
+    }
+    /* Immediate mode: into the frame under the current modelview. */
+    ctx->target = scene_immediate_segment(&ctx->scene.frame,
+                                          ctx->modelview.m[ctx->modelview.depth - 1]);
+    if (!ctx->target)
+        return -1;
+    rt_frame_described(ctx);
+    if (ctx->normal_given)
+        ctx->target->mesh.has_normals = 1;
+    scene_block_start(&ctx->block, ctx->target, mode, ctx->scene.frame.immediate.block_matrix);
+    return 0;
 }
 
 int rt_vertex_is_finite(const struct rt_context *ctx, const double position[3])
@@ -31,6 +45,15 @@ static struct scene_triangle_state triangle_state(const struct rt_context *ctx)
     ts.texture = ctx->texture_2d ? ctx->texture_binding : 0;
     ts.flags = (uint8_t)((ctx->shade_model == RT_FLAT ? TRI_FLAT : 0u) |
                          (ctx->color_material ? TRI_COLOR_MATERIAL : 0u));
+    /* In a list, what the list did not set yet comes from the caller. */
+    ts.inherit = 0;
+    if (ctx->target == &ctx->recording) {
+        ts.inherit = SCENE_MATERIAL_ALL & ~ctx->recording.material_set;
+        if (!ctx->recording.color_set)
+            ts.flags |= TRI_INHERIT_COLOR;
+        if (!ctx->recording.color_material_set)
+            ts.flags |= TRI_INHERIT_COLOR_MATERIAL;
+    }
     return ts;
 }
 
@@ -47,8 +70,8 @@ static int recorded(struct rt_context *ctx, const char *caller, enum scene_recor
                  position[0], position[1], position[2]);
         return -1;
     default:
-        rt_error(ctx, RT_OUT_OF_MEMORY, "%s: out of memory recording object %u", caller,
-                 ctx->recording.name);
+        rt_error(ctx, RT_OUT_OF_MEMORY, "%s: out of memory recording %s", caller,
+                 ctx->target == &ctx->recording ? "a list" : "immediate-mode geometry");
         return -1;
     }
 }
@@ -58,7 +81,7 @@ int rt_record_vertex(struct rt_context *ctx, const char *caller, const double po
 {
     struct scene_triangle_state ts = triangle_state(ctx);
     return recorded(ctx, caller,
-                    scene_record_vertex(&ctx->recording, &ctx->block, &ts, position, normal,
+                    scene_record_vertex(ctx->target, &ctx->block, &ts, position, normal,
                                         color, texcoord),
                     position);
 }
@@ -67,7 +90,7 @@ int rt_store_vertex(struct rt_context *ctx, const char *caller, const double pos
                     const float normal[3], const float color[4], const float texcoord[2])
 {
     return recorded(ctx, caller,
-                    scene_store_vertex(&ctx->recording, &ctx->block, position, normal, color,
+                    scene_store_vertex(ctx->target, &ctx->block, position, normal, color,
                                        texcoord),
                     position);
 }
@@ -77,7 +100,7 @@ int rt_assemble_indexed(struct rt_context *ctx, const char *caller, uint32_t k,
 {
     struct scene_triangle_state ts = triangle_state(ctx);
     return recorded(ctx, caller,
-                    scene_assemble_indexed(&ctx->recording, &ctx->block, &ts, k, map), NULL);
+                    scene_assemble_indexed(ctx->target, &ctx->block, &ts, k, map), NULL);
 }
 
 void rtBegin(RTenum mode)
@@ -89,18 +112,19 @@ void rtBegin(RTenum mode)
         rt_error(ctx, RT_INVALID_OPERATION, "rtBegin(mode=0x%x): already inside rtBegin", mode);
         return;
     }
-    if (!ctx->recording.active) {
-        rt_error(ctx, RT_INVALID_OPERATION,
-                 "rtBegin(mode=0x%x): primitives are only recorded inside rtNewObject", mode);
-        return;
-    }
     if (!scene_mode_is_valid(mode) && !scene_lines_mode_is_valid(mode)) {
         rt_error(ctx, RT_INVALID_ENUM, "rtBegin(mode=0x%x)", mode);
         return;
     }
-    /* Lines, points and polygons drawn as either go to lines.c. */
-    if (!rt_lines_block_start(ctx, mode))
-        rt_block_start(ctx, mode);
+    /* Lines, points and polygons drawn as either go to lines.c; both
+     * start the block in the list or in the frame (rt_block_start). */
+    int started = rt_lines_block_start(ctx, mode);
+    if (started == 0)
+        started = rt_block_start(ctx, mode) ? -1 : 1;
+    if (started < 0) {
+        rt_error(ctx, RT_OUT_OF_MEMORY, "rtBegin(mode=0x%x): out of memory", mode);
+        return;
+    }
     ctx->block.active = 1;
 }
 
@@ -219,17 +243,26 @@ static void set_attribute(const char *caller, enum attribute which, const float 
     switch (which) {
     case ATTR_NORMAL:
         memcpy(ctx->current_normal, src, 3 * sizeof(float));
+        rt_list_state(ctx, LIST_NORMAL, 0, 0, ctx->current_normal, 3);
         /* An object that never sets a normal is shaded with geometric
-         * normals instead of GL's default (0, 0, 1). */
-        if (ctx->recording.active)
+         * normals instead of GL's default (0, 0, 1); so is immediate-mode
+         * geometry drawn with no normal in its frame. */
+        if (rt_list_compiling(ctx)) {
             ctx->recording.mesh.has_normals = 1;
+        } else {
+            ctx->normal_given = 1;
+            if (ctx->block.active && ctx->target == &ctx->scene.frame.immediate.rec)
+                ctx->target->mesh.has_normals = 1;
+        }
         break;
     case ATTR_TEXCOORD:
         memcpy(ctx->current_texcoord, src, 2 * sizeof(float));
+        rt_list_state(ctx, LIST_TEXCOORD, 0, 0, ctx->current_texcoord, 2);
         break;
     case ATTR_COLOR:
         for (int i = 0; i < 4; i++)
             ctx->current_color[i] = i < n ? fminf(fmaxf(src[i], 0.0f), 1.0f) : 1.0f;
+        rt_list_state(ctx, LIST_COLOR, 0, 0, ctx->current_color, 4);
         break;
     }
 }
@@ -287,5 +320,6 @@ void rtShadeModel(RTenum mode)
         rt_error(ctx, RT_INVALID_ENUM, "rtShadeModel(mode=0x%x)", mode);
         return;
     }
+    rt_list_state(ctx, LIST_SHADE_MODEL, mode, 0, NULL, 0);
     ctx->shade_model = mode;
 }

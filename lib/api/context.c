@@ -307,6 +307,8 @@ void rtDestroyContext(RTcontext ctx)
     rt_pool_destroy(ctx->pool);
     scene_release(&ctx->scene);
     scene_mesh_release(&ctx->recording.mesh);
+    scene_list_release(&ctx->recording);
+    rt_free(ctx->exec);
     render_framebuffer_release(&ctx->render.fb);
     render_overlay_release(&ctx->overlay);
     rt_free(ctx);

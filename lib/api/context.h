@@ -40,6 +40,19 @@ struct client_array {
     const void *pointer;
 };
 
+/* What RT_COMPILE restores at rtEndList (list.c). */
+struct list_saved_state {
+    float normal[3], color[4], texcoord[2];
+    RTenum shade_model;
+    int color_material;
+    struct scene_material material;
+    uint32_t texture_binding;
+    int texture_2d;
+    struct render_light lights[RENDER_MAX_LIGHTS];
+    float global_ambient[4];
+    RTuint list_base;
+};
+
 struct rt_context {
     int bound; /* current in some thread */
 
@@ -73,6 +86,23 @@ struct rt_context {
     struct scene_material material;
     struct scene_recording recording; /* rtNewObject .. rtEndObject */
     struct scene_block block;         /* rtBegin .. rtEnd */
+    struct scene_recording *target;   /* where the block's vertices go (list or immediate) */
+
+    /* Display lists (list.c). */
+    RTenum list_mode;   /* RT_COMPILE or RT_COMPILE_AND_EXECUTE while recording */
+    RTuint list_base;   /* rtListBase */
+    int call_depth;     /* nesting of the lists being executed (GL's CallDepth) */
+    int replaying;      /* > 0: calls come from a list's replay, never recorded */
+    struct list_saved_state saved;  /* RT_COMPILE: state rtEndList restores */
+    struct list_exec *exec;         /* RT_COMPILE_AND_EXECUTE: segments to instance */
+    uint32_t exec_count, exec_capacity;
+
+    /* GL frames (frame.c): rtClear was called once, and a frame was
+     * described since the last render, which rtFinish, rtFlush and
+     * rtReadPixels then render. */
+    int gl_frames;
+    int frame_unrendered;
+    int normal_given; /* the application set a normal outside lists */
 
     /* Texture state (texture.c); the textures are the scene's.  A
      * triangle records texture_binding when texture_2d is enabled
@@ -146,7 +176,8 @@ int rt_check_finite_d(struct rt_context *ctx, const char *caller, const double *
  * recording RT_INVALID_VALUE (non-finite result) or RT_OUT_OF_MEMORY, in
  * which case nothing was stored.
  */
-void rt_block_start(struct rt_context *ctx, RTenum mode);
+/* Returns 0, -1 on allocation failure (immediate mode). */
+int rt_block_start(struct rt_context *ctx, RTenum mode);
 int rt_record_vertex(struct rt_context *ctx, const char *caller, const double position[3],
                      const float normal[3], const float color[4], const float texcoord[2]);
 /* Indexed drawing: rt_store_vertex stores a vertex without assembling;
@@ -164,13 +195,39 @@ int rt_vertex_is_finite(const struct rt_context *ctx, const double position[3]);
  * Blocks that give lines or points (lines.c): rt_lines_block_start starts
  * the block (rt_block_start included) and returns 1 when mode is a line
  * mode or a polygon mode under rtPolygonMode RT_LINE / RT_POINT, else 0
- * (the block gives triangles); rt_lines_vertex stores a vertex (0, or -1
+ * (the block gives triangles), -1 when the block could not start (out of
+ * memory, nothing recorded); rt_lines_vertex stores a vertex (0, or -1
  * after recording the error); rt_lines_block_end closes the block.
  */
 int rt_lines_block_start(struct rt_context *ctx, RTenum mode);
 int rt_lines_vertex(struct rt_context *ctx, const char *caller, const double position[3],
                     const float color[4]);
 void rt_lines_block_end(struct rt_context *ctx, const char *caller);
+/* Display lists (list.c).  rt_list_compiling: a list is being recorded
+ * and the call comes from the application (not a replay).  The record
+ * functions add an operation; they return 1 when the call must not take
+ * effect now (RT_COMPILE), 0 when it must (RT_COMPILE_AND_EXECUTE, or
+ * not compiling). */
+enum list_state_call {
+    LIST_COLOR, LIST_NORMAL, LIST_TEXCOORD, LIST_MATERIAL, LIST_SHADE_MODEL, LIST_ENABLE,
+    LIST_DISABLE, LIST_BIND_TEXTURE, LIST_LIGHT, LIST_LIGHT_MODEL, LIST_LIST_BASE
+};
+int rt_list_compiling(const struct rt_context *ctx);
+int rt_list_matrix(struct rt_context *ctx, const char *caller, enum scene_list_op_kind kind,
+                   RTenum mode, const double m[16]);
+void rt_list_state(struct rt_context *ctx, enum list_state_call what, RTenum b, RTenum c,
+                   const float *v, int n);
+/* Applies a matrix operation to the context's stacks as the entry point
+ * would (errors named after caller) (matrix.c). */
+void rt_matrix_apply(struct rt_context *ctx, const char *caller, enum scene_list_op_kind kind,
+                     RTenum mode, const double m[16]);
+/* rtCallList's work: replays list `name` (ignored when undefined or
+ * nested too deep, as GL) (list.c). */
+void rt_call_list(struct rt_context *ctx, const char *caller, RTuint name);
+/* Marks the frame described (frame.c's implicit render). */
+void rt_frame_described(struct rt_context *ctx);
+/* Renders a frame described since rtClear and not rendered yet. */
+void rt_render_if_described(struct rt_context *ctx);
 
 /* 1 when s is RT_AUTOMATIC or an update strategy (object.c). */
 int rt_strategy_is_valid(RTenum s);

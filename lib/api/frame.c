@@ -1,8 +1,17 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * frame.c - rtViewport, rtClearColor, rtRenderFrame, rtFinish,
- * rtReadPixels, and the error reporting around the scene preparation
- * (scene/prepare.c) shared with the ray queries.
+ * frame.c - rtViewport, rtClearColor, rtClear, rtRenderFrame, rtFinish,
+ * rtFlush, rtReadPixels, and the error reporting around the scene
+ * preparation (scene/prepare.c) shared with the ray queries.
+ *
+ * GL frames: a GL program starts each frame with glClear and never asks
+ * for a render; it reads the image with glReadPixels or ends with
+ * glFinish / glFlush / a buffer swap.  rtClear starts a new frame
+ * description (as rtBeginFrame) and, from then on, a frame described and
+ * not rendered yet is rendered by rtFinish, rtFlush and rtReadPixels.  A
+ * context in which rtClear was never called keeps rtFinish's meaning of
+ * preparing the scene without rendering, and rtReadPixels reads the last
+ * rtRenderFrame.
  */
 #include <math.h>
 #include <string.h>
@@ -80,11 +89,57 @@ void rt_render_job(struct rt_context *ctx, struct render_job *job)
     job->kernels = ctx->kernels;
 }
 
+void rt_frame_described(struct rt_context *ctx)
+{
+    if (ctx->gl_frames)
+        ctx->frame_unrendered = 1;
+}
+
+static void render_frame_now(struct rt_context *ctx);
+
+void rt_render_if_described(struct rt_context *ctx)
+{
+    if (ctx->frame_unrendered && !ctx->recording.active && !ctx->block.active)
+        render_frame_now(ctx);
+}
+
+void rtClear(RTbitfield mask)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_object(ctx, "rtClear"))
+        return;
+    /* Mesa's glClear: any bit beyond the four buffers is INVALID_VALUE. */
+    if (mask & ~(RTbitfield)(RT_COLOR_BUFFER_BIT | RT_DEPTH_BUFFER_BIT | RT_STENCIL_BUFFER_BIT |
+                             RT_ACCUM_BUFFER_BIT)) {
+        rt_error(ctx, RT_INVALID_VALUE, "rtClear(mask=0x%x)", mask);
+        return;
+    }
+    /* Every frame is rendered whole on the clear colour: clearing starts
+     * the description of the next one. */
+    scene_frame_begin(&ctx->scene.frame);
+    ctx->gl_frames = 1;
+    ctx->frame_unrendered = 1;
+}
+
+void rtFlush(void)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_object(ctx, "rtFlush"))
+        return;
+    rt_render_if_described(ctx);
+}
+
 void rtRenderFrame(void)
 {
     GET_CURRENT_CONTEXT(ctx);
     if (!ctx || rt_check_outside_object(ctx, "rtRenderFrame"))
         return;
+    render_frame_now(ctx);
+}
+
+static void render_frame_now(struct rt_context *ctx)
+{
+    ctx->frame_unrendered = 0;
     double start = rt_now_ms();
     memset(&ctx->stats, 0, sizeof(ctx->stats));
     if (rt_prepare_scene(ctx, "rtRenderFrame"))
@@ -113,6 +168,10 @@ void rtFinish(void)
     GET_CURRENT_CONTEXT(ctx);
     if (!ctx || rt_check_outside_object(ctx, "rtFinish"))
         return;
+    if (ctx->frame_unrendered) {
+        render_frame_now(ctx);
+        return;
+    }
     memset(&ctx->stats, 0, sizeof(ctx->stats));
     rt_prepare_scene(ctx, "rtFinish");
 }
@@ -131,6 +190,7 @@ void rtReadPixels(RTint x, RTint y, RTsizei width, RTsizei height, RTenum format
         rt_error(ctx, RT_INVALID_ENUM, "rtReadPixels(type=0x%x)", type);
         return;
     }
+    rt_render_if_described(ctx);
     const struct render_framebuffer *fb = &ctx->render.fb;
     if (!pixels || x < 0 || y < 0 || width < 0 || height < 0 || x > fb->width - width ||
         y > fb->height - height) {

@@ -51,6 +51,18 @@ static enum value_kind state_values(const struct rt_context *ctx, RTenum pname, 
     case RT_MATRIX_MODE:
         v[0] = ctx->matrix_mode;
         return VALUE_INT;
+    case RT_LIST_BASE:
+        v[0] = ctx->list_base;
+        return VALUE_INT;
+    case RT_LIST_INDEX:
+        v[0] = ctx->recording.active ? ctx->recording.name : 0;
+        return VALUE_INT;
+    case RT_LIST_MODE:
+        v[0] = ctx->recording.active ? ctx->list_mode : 0;
+        return VALUE_INT;
+    case RT_MAX_LIST_NESTING:
+        v[0] = 64;
+        return VALUE_INT;
     case RT_MODELVIEW_STACK_DEPTH:
         v[0] = ctx->modelview.depth;
         return VALUE_INT;
@@ -278,6 +290,7 @@ static void set_capability(const char *caller, RTenum cap, int value)
         rt_error(ctx, RT_INVALID_ENUM, "%s(cap=0x%x)", caller, cap);
         return;
     }
+    rt_list_state(ctx, value ? LIST_ENABLE : LIST_DISABLE, cap, 0, NULL, 0);
     *flag = value;
 }
 

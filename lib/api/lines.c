@@ -13,10 +13,11 @@
 #include "api/context.h"
 #include "base/mat4.h"
 
-/* Where the current block's lines go: the definition being recorded. */
+/* Where the current block's lines go: the list being recorded, or the
+ * frame's immediate-mode segment (rt_block_start chose ctx->target). */
 static struct scene_lines *lines_target(struct rt_context *ctx)
 {
-    return &ctx->recording.mesh.lines;
+    return &ctx->target->mesh.lines;
 }
 
 /* The mode polygons are drawn in: one mode for both faces (the front
@@ -34,7 +35,8 @@ int rt_lines_block_start(struct rt_context *ctx, RTenum mode)
         ctx->lines_block = 0;
         return 0;
     }
-    rt_block_start(ctx, mode);
+    if (rt_block_start(ctx, mode))
+        return -1;
     struct scene_lines *lines = lines_target(ctx);
     scene_line_block_start(&ctx->line_block, lines, mode, line_mode ? 0u : pmode, lines->width,
                            lines->size, ctx->shade_model == RT_FLAT ? SCENE_LINE_FLAT : 0u);
@@ -55,9 +57,8 @@ int rt_lines_vertex(struct rt_context *ctx, const char *caller, const double pos
         return -1;
     }
     if (scene_lines_vertex(lines_target(ctx), &ctx->line_block, pf, color)) {
-        ctx->recording.out_of_memory = 1;
-        rt_error(ctx, RT_OUT_OF_MEMORY, "%s: out of memory recording object %u", caller,
-                 ctx->recording.name);
+        ctx->target->out_of_memory = 1;
+        rt_error(ctx, RT_OUT_OF_MEMORY, "%s: out of memory recording lines", caller);
         return -1;
     }
     return 0;
@@ -69,9 +70,8 @@ void rt_lines_block_end(struct rt_context *ctx, const char *caller)
         return;
     ctx->lines_block = 0;
     if (scene_lines_end(lines_target(ctx), &ctx->line_block)) {
-        ctx->recording.out_of_memory = 1;
-        rt_error(ctx, RT_OUT_OF_MEMORY, "%s: out of memory recording object %u", caller,
-                 ctx->recording.name);
+        ctx->target->out_of_memory = 1;
+        rt_error(ctx, RT_OUT_OF_MEMORY, "%s: out of memory recording lines", caller);
     }
 }
 
@@ -89,7 +89,7 @@ static void set_size(const char *caller, float value, int is_width)
         return;
     }
     if (ctx->recording.active) {
-        struct scene_lines *lines = lines_target(ctx);
+        struct scene_lines *lines = &ctx->recording.mesh.lines;
         if (is_width)
             lines->width = value;
         else

@@ -36,9 +36,11 @@ static void store(struct rt_context *ctx, const char *caller, const double m[16]
     memcpy(rt_current_matrix(ctx), m, 16 * sizeof(double));
 }
 
-/* current = current * m, checked. */
+/* current = current * m, checked; recorded inside a display list. */
 static void multiply(struct rt_context *ctx, const char *caller, const double m[16])
 {
+    if (rt_list_matrix(ctx, caller, SCENE_OP_MULT, 0, m))
+        return;
     double r[16];
     mat4_mul(r, rt_current_matrix(ctx), m);
     store(ctx, caller, r);
@@ -53,6 +55,8 @@ void rtMatrixMode(RTenum mode)
         rt_error(ctx, RT_INVALID_ENUM, "rtMatrixMode(mode=0x%x)", mode);
         return;
     }
+    if (rt_list_matrix(ctx, "rtMatrixMode", SCENE_OP_MATRIX_MODE, mode, NULL))
+        return;
     ctx->matrix_mode = mode;
 }
 
@@ -60,6 +64,10 @@ void rtLoadIdentity(void)
 {
     GET_CURRENT_CONTEXT(ctx);
     if (!ctx || rt_check_outside_begin(ctx, "rtLoadIdentity"))
+        return;
+    double m[16];
+    mat4_identity(m);
+    if (rt_list_matrix(ctx, "rtLoadIdentity", SCENE_OP_LOAD, 0, m))
         return;
     mat4_identity(rt_current_matrix(ctx));
 }
@@ -80,7 +88,7 @@ static void load_or_mult(const char *caller, const float *mf, const double *md, 
         return;
     if (mult)
         multiply(ctx, caller, m);
-    else
+    else if (!rt_list_matrix(ctx, caller, SCENE_OP_LOAD, 0, m))
         store(ctx, caller, m);
 }
 
@@ -248,14 +256,11 @@ void rtOrtho(RTdouble l, RTdouble r, RTdouble b, RTdouble t, RTdouble n, RTdoubl
     multiply(ctx, "rtOrtho", m);
 }
 
-void rtPushMatrix(void)
+static void push(struct rt_context *ctx, const char *caller)
 {
-    GET_CURRENT_CONTEXT(ctx);
-    if (!ctx || rt_check_outside_begin(ctx, "rtPushMatrix"))
-        return;
     struct matrix_stack *s = current_stack(ctx);
     if (s->depth >= s->max_depth) {
-        rt_error(ctx, RT_STACK_OVERFLOW, "rtPushMatrix: %s stack overflow (depth %d)",
+        rt_error(ctx, RT_STACK_OVERFLOW, "%s: %s stack overflow (depth %d)", caller,
                  ctx->matrix_mode == RT_PROJECTION ? "projection" : "modelview", s->depth);
         return;
     }
@@ -263,16 +268,57 @@ void rtPushMatrix(void)
     s->depth++;
 }
 
+static void pop(struct rt_context *ctx, const char *caller)
+{
+    struct matrix_stack *s = current_stack(ctx);
+    if (s->depth <= 1) {
+        rt_error(ctx, RT_STACK_UNDERFLOW, "%s: %s stack underflow", caller,
+                 ctx->matrix_mode == RT_PROJECTION ? "projection" : "modelview");
+        return;
+    }
+    s->depth--;
+}
+
+void rtPushMatrix(void)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_begin(ctx, "rtPushMatrix"))
+        return;
+    if (!rt_list_matrix(ctx, "rtPushMatrix", SCENE_OP_PUSH, 0, NULL))
+        push(ctx, "rtPushMatrix");
+}
+
 void rtPopMatrix(void)
 {
     GET_CURRENT_CONTEXT(ctx);
     if (!ctx || rt_check_outside_begin(ctx, "rtPopMatrix"))
         return;
-    struct matrix_stack *s = current_stack(ctx);
-    if (s->depth <= 1) {
-        rt_error(ctx, RT_STACK_UNDERFLOW, "rtPopMatrix: %s stack underflow",
-                 ctx->matrix_mode == RT_PROJECTION ? "projection" : "modelview");
-        return;
+    if (!rt_list_matrix(ctx, "rtPopMatrix", SCENE_OP_POP, 0, NULL))
+        pop(ctx, "rtPopMatrix");
+}
+
+void rt_matrix_apply(struct rt_context *ctx, const char *caller, enum scene_list_op_kind kind,
+                     RTenum mode, const double m[16])
+{
+    double r[16];
+    switch (kind) {
+    case SCENE_OP_MATRIX_MODE:
+        ctx->matrix_mode = mode;
+        break;
+    case SCENE_OP_LOAD:
+        store(ctx, caller, m);
+        break;
+    case SCENE_OP_MULT:
+        mat4_mul(r, rt_current_matrix(ctx), m);
+        store(ctx, caller, r);
+        break;
+    case SCENE_OP_PUSH:
+        push(ctx, caller);
+        break;
+    case SCENE_OP_POP:
+        pop(ctx, caller);
+        break;
+    default:
+        break;
     }
-    s->depth--;
 }

@@ -1,7 +1,9 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * object.c - objects, the display lists of Tracelist: rtGenObjects,
- * rtNewObject, rtEndObject, rtDeleteObjects, rtIsObject, rtGetObject*.
+ * rtDeleteObjects, rtIsObject, rtGetObject*, rtObjectParameteri,
+ * rtUpdateVertices.  rtNewObject and rtEndObject are rtNewList(RT_COMPILE)
+ * and rtEndList (list.c).
  *
  * A definition is recorded into a private mesh and swapped in whole at
  * rtEndObject, so instances keep showing the previous definition until
@@ -24,59 +26,6 @@ void rtGenObjects(RTsizei n, RTuint *names)
     }
     if (scene_objects_generate(&ctx->scene.objects, (uint32_t)n, names))
         rt_error(ctx, RT_OUT_OF_MEMORY, "rtGenObjects(n=%d): out of memory", n);
-}
-
-void rtNewObject(RTuint name)
-{
-    GET_CURRENT_CONTEXT(ctx);
-    if (!ctx || rt_check_outside_begin(ctx, "rtNewObject"))
-        return;
-    if (ctx->recording.active) {
-        rt_error(ctx, RT_INVALID_OPERATION,
-                 "rtNewObject(%u): objects cannot nest (object %u is being defined)", name,
-                 ctx->recording.name);
-        return;
-    }
-    if (name == 0) {
-        rt_error(ctx, RT_INVALID_VALUE, "rtNewObject(0): 0 is not an object name");
-        return;
-    }
-    struct scene_recording *rec = &ctx->recording;
-    scene_mesh_release(&rec->mesh);
-    rec->active = 1;
-    rec->name = name;
-    rec->out_of_memory = 0;
-    rec->material_index = -1;
-}
-
-void rtEndObject(void)
-{
-    GET_CURRENT_CONTEXT(ctx);
-    if (!ctx || rt_check_outside_begin(ctx, "rtEndObject"))
-        return;
-    struct scene_recording *rec = &ctx->recording;
-    if (!rec->active) {
-        rt_error(ctx, RT_INVALID_OPERATION, "rtEndObject: no matching rtNewObject");
-        return;
-    }
-    if (rec->out_of_memory) {
-        /* The error was recorded where memory ran out; the incomplete
-         * definition is dropped and the old one stays. */
-        scene_mesh_release(&rec->mesh);
-        rec->active = 0;
-        return;
-    }
-    struct scene_object *object = scene_objects_get_or_create(&ctx->scene.objects, rec->name);
-    if (!object) {
-        rt_error(ctx, RT_OUT_OF_MEMORY, "rtEndObject: out of memory creating object %u",
-                 rec->name);
-        scene_mesh_release(&rec->mesh);
-        rec->active = 0;
-        return;
-    }
-    scene_mesh_compute_bounds(&rec->mesh);
-    scene_define_object(&ctx->scene, object, &rec->mesh);
-    rec->active = 0;
 }
 
 void rtDeleteObjects(RTsizei n, const RTuint *names)

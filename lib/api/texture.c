@@ -84,6 +84,7 @@ void rtBindTexture(RTenum target, RTuint texture)
         }
         tex->created = 1;
     }
+    rt_list_state(ctx, LIST_BIND_TEXTURE, target, texture, NULL, 0);
     ctx->texture_binding = texture;
 }
 

@@ -193,9 +193,36 @@ void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit 
     }
 
     s->mat = mesh->materials[mesh->tri_material[hit->prim]];
-    if (flags & TRI_COLOR_MATERIAL) {
+    if (s->mat.inherit) {
+        /* Recorded in a list before it set these properties: the
+         * material current at the call (its instance's), as GL. */
+        const struct scene_material *c = &inst->appearance.material;
+        uint32_t k = s->mat.inherit;
+        if (k & SCENE_MATERIAL_AMBIENT)
+            memcpy(s->mat.ambient, c->ambient, sizeof(s->mat.ambient));
+        if (k & SCENE_MATERIAL_DIFFUSE)
+            memcpy(s->mat.diffuse, c->diffuse, sizeof(s->mat.diffuse));
+        if (k & SCENE_MATERIAL_SPECULAR)
+            memcpy(s->mat.specular, c->specular, sizeof(s->mat.specular));
+        if (k & SCENE_MATERIAL_EMISSION)
+            memcpy(s->mat.emission, c->emission, sizeof(s->mat.emission));
+        if (k & SCENE_MATERIAL_SHININESS)
+            s->mat.shininess = c->shininess;
+        if (k & SCENE_MATERIAL_REFLECTIVITY)
+            s->mat.reflectivity = c->reflectivity;
+        if (k & SCENE_MATERIAL_TRANSPARENCY)
+            s->mat.transparency = c->transparency;
+        if (k & SCENE_MATERIAL_IOR)
+            s->mat.ior = c->ior;
+        s->mat.inherit = 0;
+    }
+    int color_material = (flags & TRI_INHERIT_COLOR_MATERIAL) ? inst->appearance.color_material
+                                                              : (flags & TRI_COLOR_MATERIAL) != 0;
+    if (color_material) {
         float c[4];
-        if (flags & TRI_FLAT)
+        if (flags & TRI_INHERIT_COLOR)
+            memcpy(c, inst->appearance.color, sizeof(c)); /* the colour at the call */
+        else if (flags & TRI_FLAT)
             memcpy(c, &mesh->colors[4 * provoking], sizeof(c));
         else
             interpolate(mesh->colors, 4, v, b0, b1, b2, 4, c);

@@ -124,6 +124,38 @@ static void apply_state(const RTUaffscene *s, struct record_state *rs, int mater
     }
 }
 
+/*
+ * The loader places vertices itself: a display list's vertices are
+ * relative to the list's own matrix (docs/lists.md), and an absolute
+ * rtLoadMatrixd would make them ignore the instance matrix, a
+ * push/multiply/pop pair would cost every rtuDrawAFF a second stack level.
+ * These are the recording's own operations in double (mat4.h's point
+ * transform and the cofactor matrix for normals, scene/recording.c), so
+ * the stored floats, and the images, are those of the loader before lists
+ * had matrices of their own.
+ */
+static void vertex(const double m[16], const float p[3])
+{
+    double out[3];
+    for (int r = 0; r < 3; r++)
+        out[r] = m[r] * p[0] + m[4 + r] * p[1] + m[8 + r] * p[2] + m[12 + r];
+    rtVertex3d(out[0], out[1], out[2]);
+}
+
+static void normal(const double m[16], const float n[3])
+{
+    const double a = m[0], b = m[4], c = m[8];
+    const double d = m[1], e = m[5], f = m[9];
+    const double g = m[2], h = m[6], i = m[10];
+    const double C[3][3] = {{e * i - f * h, -(d * i - f * g), d * h - e * g},
+                            {-(b * i - c * h), a * i - c * g, -(a * h - b * g)},
+                            {b * f - c * e, -(a * f - c * d), a * e - b * d}};
+    float out[3];
+    for (int r = 0; r < 3; r++)
+        out[r] = (float)(C[r][0] * n[0] + C[r][1] * n[1] + C[r][2] * n[2]);
+    rtNormal3fv(out);
+}
+
 /* Records a group's static triangles into the object being defined, each
  * batch under base * (its static matrix). */
 static void record_triangles(const RTUaffscene *s, const struct aff_group *g,
@@ -133,16 +165,15 @@ static void record_triangles(const RTUaffscene *s, const struct aff_group *g,
         const struct aff_batch *batch = &g->batches[b];
         double m[16];
         aff_matrix_mul(m, base, s->data.matrices[batch->matrix]);
-        rtLoadMatrixd(m);
         apply_state(s, rs, batch->material, batch->texture);
         rtBegin(RT_TRIANGLES);
         for (uint32_t i = 0; i < batch->count; i++) {
             const struct aff_triangle *t = &g->tris[batch->first + i];
             for (int j = 0; j < 3; j++) {
-                rtNormal3fv(&t->n[3 * j]);
+                normal(m, &t->n[3 * j]);
                 if (batch->has_uv)
                     rtTexCoord2fv(&t->uv[2 * j]);
-                rtVertex3fv(&t->p[3 * j]);
+                vertex(m, &t->p[3 * j]);
             }
         }
         rtEnd();
@@ -162,7 +193,6 @@ static void record_tpas(RTUaffscene *s, const struct aff_group *g, const double 
                         double t, struct record_state *rs)
 {
     eval_tpas(s, g, t);
-    rtLoadMatrixd(base);
     int open = 0;
     for (uint32_t i = 0; i < g->tpa_count; i++) {
         if (g->tpas[i].material != rs->material || rs->texture != -1) {
@@ -176,8 +206,8 @@ static void record_tpas(RTUaffscene *s, const struct aff_group *g, const double 
             open = 1;
         }
         for (int j = 0; j < 3; j++) {
-            rtNormal3fv(&s->tpa_normals[9 * i + 3 * j]);
-            rtVertex3fv(&s->tpa_positions[9 * i + 3 * j]);
+            normal(base, &s->tpa_normals[9 * i + 3 * j]);
+            vertex(base, &s->tpa_positions[9 * i + 3 * j]);
         }
     }
     if (open)
@@ -309,8 +339,14 @@ static int load_texture(RTUaffscene *s, int i)
     return 0;
 }
 
-static RTuint new_object(void)
+/* Starts an object; rs is reset because a display list's state calls
+ * apply inside it only (GL_COMPILE): each object sets its own material
+ * and texture, or its triangles would take the caller's at
+ * rtInstantiateObject (docs/lists.md). */
+static RTuint new_object(struct record_state *rs)
 {
+    rs->material = -2;
+    rs->texture = -2;
     RTuint name = 0;
     rtGenObjects(1, &name);
     if (name)
@@ -438,12 +474,12 @@ RTUaffscene *aff_scene_create(struct aff_data *data, const char *name)
     for (int f = 0; f < frames && ok; f++) {
         const struct aff_group *g = &d->frames[f].group;
         if (g->tri_count) {
-            s->objects[f] = new_object();
+            s->objects[f] = new_object(&rs);
             record_triangles(s, g, identity, &rs);
             rtEndObject();
         }
         if (g->tpa_count) {
-            s->tpa_objects[f] = new_object();
+            s->tpa_objects[f] = new_object(&rs);
             record_tpas(s, g, identity, t0, &rs);
             rtEndObject();
         }
@@ -687,8 +723,13 @@ void rtuDrawAFF(RTUaffscene *s, RTdouble t)
         return;
     }
     update_tpas(s, t);
-    RTint mode;
+    RTint mode, texture_binding;
     rtGetIntegerv(RT_MATRIX_MODE, &mode);
+    /* Calling the objects replays their texture calls (GL's glCallList
+     * semantics, docs/lists.md): the application's texture state is put
+     * back below. */
+    rtGetIntegerv(RT_TEXTURE_BINDING_2D, &texture_binding);
+    RTboolean texture_enabled = rtIsEnabled(RT_TEXTURE_2D);
     rtMatrixMode(RT_MODELVIEW);
     memset(s->state, 0, (size_t)d->frame_count_nodes * sizeof *s->state);
     for (int f = 0; f < d->frame_count_nodes; f++) {
@@ -705,6 +746,11 @@ void rtuDrawAFF(RTUaffscene *s, RTdouble t)
             rtInstantiateObject(s->tpa_objects[f]);
         rtPopMatrix();
     }
+    rtBindTexture(RT_TEXTURE_2D, (RTuint)texture_binding);
+    if (texture_enabled)
+        rtEnable(RT_TEXTURE_2D);
+    else
+        rtDisable(RT_TEXTURE_2D);
     rtMatrixMode((RTenum)mode);
 }
 
@@ -718,9 +764,9 @@ RTuint rtuBakeAFF(RTUaffscene *s, RTdouble t)
         record_modelview_overflow(); /* see rtuDrawAFF */
         return 0;
     }
-    RTuint name = new_object();
+    struct record_state rs = {-2, -2};
+    RTuint name = new_object(&rs);
     if (name) {
-        struct record_state rs = {-2, -2};
         memset(s->state, 0, (size_t)d->frame_count_nodes * sizeof *s->state);
         for (int f = 0; f < d->frame_count_nodes; f++) {
             const struct aff_group *g = &d->frames[f].group;

@@ -18,6 +18,7 @@ void scene_frame_init(struct scene_frame *frame)
 
 void scene_frame_release(struct scene_frame *frame)
 {
+    scene_immediate_release(&frame->immediate);
     rt_free(frame->pending.items);
     rt_free(frame->committed.items);
     bvh_release(&frame->top);
@@ -47,12 +48,24 @@ int scene_frame_add_instance(struct scene_frame *frame, struct scene_object *obj
                              const double object_to_world[16], const double world_to_object[16],
                              const double normal_to_world[16])
 {
+    return scene_frame_add_instance_appearance(frame, object, object_to_world, world_to_object,
+                                               normal_to_world, NULL);
+}
+
+int scene_frame_add_instance_appearance(struct scene_frame *frame, struct scene_object *object,
+                                        const double object_to_world[16],
+                                        const double world_to_object[16],
+                                        const double normal_to_world[16],
+                                        const struct scene_appearance *appearance)
+{
     uint32_t count = frame->open ? frame->pending.count : 0;
     if (count == UINT32_MAX || list_reserve(&frame->pending, count + 1))
         return -1;
     if (!frame->open) {
         frame->pending.count = 0;
         frame->open = 1;
+        if (frame->immediate.open || frame->immediate.used)
+            scene_immediate_restart(&frame->immediate);
     }
     struct scene_instance *inst = &frame->pending.items[frame->pending.count++];
     memset(inst, 0, sizeof(*inst));
@@ -61,6 +74,8 @@ int scene_frame_add_instance(struct scene_frame *frame, struct scene_object *obj
     memcpy(inst->object_to_world, object_to_world, sizeof(inst->object_to_world));
     memcpy(inst->world_to_object, world_to_object, sizeof(inst->world_to_object));
     memcpy(inst->normal_to_world, normal_to_world, sizeof(inst->normal_to_world));
+    if (appearance)
+        inst->appearance = *appearance;
     return 0;
 }
 
@@ -68,6 +83,7 @@ void scene_frame_begin(struct scene_frame *frame)
 {
     frame->pending.count = 0;
     frame->open = 1;
+    scene_immediate_restart(&frame->immediate);
 }
 
 void scene_frame_end(struct scene_frame *frame)
@@ -210,6 +226,8 @@ int scene_frame_prepare(struct scene_frame *frame, const struct bvh_build_params
                         uint64_t frame_number, int *toplevel_built)
 {
     *toplevel_built = 0;
+    if (frame->open)
+        scene_immediate_commit(frame, frame_number);
     if (frame->open && !lists_equal(&frame->pending, &frame->committed)) {
         mark_moved(&frame->committed, &frame->pending, frame_number);
         if (list_reserve(&frame->committed, frame->pending.count))
@@ -218,6 +236,11 @@ int scene_frame_prepare(struct scene_frame *frame, const struct bvh_build_params
                frame->pending.count * sizeof(*frame->pending.items));
         frame->committed.count = frame->pending.count;
         frame->top_valid = 0;
+    } else if (frame->open) {
+        /* Same instances: only the call-time appearance can differ, which
+         * shading reads and the top level does not. */
+        for (uint32_t i = 0; i < frame->pending.count; i++)
+            frame->committed.items[i].appearance = frame->pending.items[i].appearance;
     }
     /* A redefined object changes its box even when the list is the same. */
     for (uint32_t i = 0; i < frame->committed.count; i++) {

@@ -21,7 +21,16 @@
 
 #include "accel/bvh_build.h"
 #include "scene/object.h"
+#include "scene/recording.h"
 #include "trace/scene_traverse.h"
+
+/* The appearance current when an instance was issued: what its triangles
+ * with inherited material properties or TRI_INHERIT_COLOR (mesh.h) take. */
+struct scene_appearance {
+    struct scene_material material;
+    float color[4];
+    int color_material; /* RT_COLOR_MATERIAL enabled */
+};
 
 struct scene_instance {
     struct scene_object *object;
@@ -29,12 +38,39 @@ struct scene_instance {
     double object_to_world[16]; /* the modelview at rtInstantiateObject */
     double world_to_object[16];
     double normal_to_world[16]; /* inverse transpose of object_to_world */
+    struct scene_appearance appearance;
 };
 
 struct scene_instance_list {
     struct scene_instance *items;
     uint32_t count;
     uint32_t capacity;
+};
+
+/*
+ * Immediate mode: rtBegin/rtEnd and draw calls outside display lists.
+ * The frame's immediate geometry is cut into segments, one per run of
+ * blocks under the same modelview; segment i of a frame is recorded in
+ * the modelview's object space and instanced under it, through the
+ * hidden object slots[i], which persists from frame to frame.  When a
+ * segment is committed it is compared with what its slot holds: equal
+ * geometry keeps the slot as it is (static class, no build); a new
+ * definition with the same connectivity keeps the stale structure for the
+ * update strategies (unstructured class: refit or rebuild); otherwise it
+ * is rebuilt.  The same mesh under a new modelview is an instance that
+ * moved (affine class).  A modelview that cannot be inverted leaves the
+ * vertices transformed in the recording, under an identity instance.
+ */
+struct scene_immediate {
+    struct scene_recording rec; /* the open segment's geometry */
+    int open;
+    double matrix[16];       /* the open segment's modelview (its instance matrix) */
+    double block_matrix[16]; /* what its blocks transform vertices by */
+    struct scene_object **slots;
+    struct scene_mesh *staged; /* per slot: the segment recorded this frame */
+    uint8_t *is_staged;        /* per slot: staged holds a mesh to commit */
+    uint32_t used, capacity; /* slots used by this frame; allocated */
+    uint64_t kept, redefined; /* segments committed unchanged / changed, ever */
 };
 
 struct scene_frame {
@@ -50,6 +86,8 @@ struct scene_frame {
     struct bvh top;
     struct trace_instance *trace_instances; /* one per non-empty instance */
     uint32_t trace_instance_count;
+
+    struct scene_immediate immediate;
 };
 
 void scene_frame_init(struct scene_frame *frame);
@@ -60,6 +98,27 @@ void scene_frame_release(struct scene_frame *frame);
 int scene_frame_add_instance(struct scene_frame *frame, struct scene_object *object,
                              const double object_to_world[16], const double world_to_object[16],
                              const double normal_to_world[16]);
+
+/* The same with the appearance current at the call (NULL: none). */
+int scene_frame_add_instance_appearance(struct scene_frame *frame, struct scene_object *object,
+                                        const double object_to_world[16],
+                                        const double world_to_object[16],
+                                        const double normal_to_world[16],
+                                        const struct scene_appearance *appearance);
+
+/* Immediate mode.  scene_immediate_segment makes the open segment the
+ * one of `modelview` (committing the open one if its modelview differs,
+ * starting the frame's list if the last frame ended) and returns the
+ * recording vertices go to; its block_matrix is what blocks transform
+ * by.  NULL on allocation failure.  scene_immediate_commit commits the
+ * open segment (scene_frame_prepare does it first); 0, -1 on allocation
+ * failure. */
+struct scene_recording *scene_immediate_segment(struct scene_frame *frame,
+                                                const double modelview[16]);
+void scene_immediate_commit(struct scene_frame *frame, uint64_t frame_number);
+/* Drops the segments recorded and not committed (a new frame). */
+void scene_immediate_restart(struct scene_immediate *im);
+void scene_immediate_release(struct scene_immediate *im);
 
 /* Starts a new, empty list (rtBeginFrame). */
 void scene_frame_begin(struct scene_frame *frame);

@@ -34,10 +34,33 @@ struct scene_material {
      * none.  Kept by name, as a GL display list keeps it: the image is
      * looked up when a frame is rendered (scene/texture.h). */
     uint32_t texture;
+    /* Properties (SCENE_MATERIAL_* bits) recorded in a display list before
+     * the list set them: taken from the material current at rtCallList,
+     * which the instance keeps (struct scene_appearance, frame.h), as GL's
+     * geometry takes the state current at glCallList.  0 elsewhere. */
+    uint32_t inherit;
 };
+
+#define SCENE_MATERIAL_AMBIENT 1u
+#define SCENE_MATERIAL_DIFFUSE 2u
+#define SCENE_MATERIAL_SPECULAR 4u
+#define SCENE_MATERIAL_EMISSION 8u
+#define SCENE_MATERIAL_SHININESS 16u
+#define SCENE_MATERIAL_REFLECTIVITY 32u
+#define SCENE_MATERIAL_TRANSPARENCY 64u
+#define SCENE_MATERIAL_IOR 128u
+#define SCENE_MATERIAL_ALL 255u
 
 #define TRI_FLAT 1u           /* rtShadeModel(RT_FLAT) was current */
 #define TRI_COLOR_MATERIAL 2u /* RT_COLOR_MATERIAL was enabled */
+/* Recorded in a display list before the list set a colour: the triangle
+ * takes the colour current at rtCallList, which its instance keeps
+ * (struct scene_appearance, frame.h), as GL's geometry takes the state
+ * current at glCallList (materials: scene_material.inherit). */
+#define TRI_INHERIT_COLOR 0x80u
+/* Recorded before the list enabled or disabled RT_COLOR_MATERIAL: the
+ * enable current at rtCallList applies (the instance's). */
+#define TRI_INHERIT_COLOR_MATERIAL 0x40u
 
 struct scene_mesh {
     uint32_t vertex_count;

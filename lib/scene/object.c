@@ -21,9 +21,15 @@ void scene_objects_init(struct scene_objects *table)
     table->defined = 0;
 }
 
+static void *object_new(uint32_t name);
+
 static void object_free(void *item)
 {
     struct scene_object *object = item;
+    for (uint32_t i = 0; i < object->segment_count; i++)
+        object_free(object->segments[i]);
+    rt_free(object->segments);
+    rt_free(object->ops);
     scene_mesh_release(&object->mesh);
     scene_accel_release(object->accel);
     pthread_mutex_destroy(&object->build_lock);
@@ -59,6 +65,17 @@ static void *object_new(uint32_t name)
         return NULL;
     }
     return o;
+}
+
+struct scene_object *scene_object_create_hidden(void)
+{
+    return object_new(0);
+}
+
+void scene_object_free(struct scene_object *object)
+{
+    if (object)
+        object_free(object);
 }
 
 struct scene_object *scene_objects_get_or_create(struct scene_objects *table, uint32_t name)
@@ -100,7 +117,7 @@ void scene_object_define(struct scene_objects *table, struct scene_object *objec
         object->accel = NULL;
         object->topology_serial++;
     }
-    if (!object->defined)
+    if (!object->defined && table)
         table->defined++;
     object->defined = 1;
     object->serial++;

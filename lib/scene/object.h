@@ -52,6 +52,15 @@ struct scene_object {
     uint64_t refits;
     pthread_mutex_t build_lock;
     struct scene_accel *accel; /* NULL until built; read with acquire loads */
+
+    /* A display list's operations (recording.h), replayed at call time;
+     * NULL when the list is its own geometry alone (op_count 0).  Segment
+     * 0 is this object's mesh, segment i > 0 the hidden object
+     * segments[i - 1], which is never in the table. */
+    struct scene_list_op *ops;
+    uint32_t op_count;
+    struct scene_object **segments;
+    uint32_t segment_count;
 };
 
 struct scene_async_job;
@@ -80,11 +89,16 @@ int scene_objects_generate(struct scene_objects *table, uint32_t n, uint32_t *na
 /* Removes and frees the entry for name; no-op if absent. */
 void scene_objects_remove(struct scene_objects *table, uint32_t name);
 
+/* A hidden object (segments of lists, immediate-mode geometry) outside
+ * any table, and its release.  NULL on allocation failure. */
+struct scene_object *scene_object_create_hidden(void);
+void scene_object_free(struct scene_object *object);
+
 /* Replaces the object's definition by *mesh (ownership moves; *mesh is
  * zeroed) in frame `frame`.  When the new definition has the same
  * connectivity (same vertex count and triangle indices) the acceleration
  * structure is kept, stale, so an update strategy can refit it; otherwise
- * it is dropped. */
+ * it is dropped.  table may be NULL (hidden objects). */
 void scene_object_define(struct scene_objects *table, struct scene_object *object,
                          struct scene_mesh *mesh, uint64_t frame);
 

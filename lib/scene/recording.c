@@ -8,6 +8,9 @@
 #include <math.h>
 #include <string.h>
 
+#include <rt/rt.h>
+
+#include "base/alloc.h"
 #include "base/mat4.h"
 #include "scene/assembly.h"
 
@@ -60,11 +63,14 @@ int scene_block_vertex_is_finite(const struct scene_block *block, const double p
  * forget it.  -1 on allocation failure (the next call tries again). */
 static int current_material(struct scene_recording *rec, const struct scene_triangle_state *ts)
 {
-    if (rec->material_index < 0 || rec->material_texture != ts->texture) {
+    if (rec->material_index < 0 || rec->material_texture != ts->texture ||
+        rec->material_inherit != ts->inherit) {
         struct scene_material m = *ts->material;
         m.texture = ts->texture;
+        m.inherit = ts->inherit;
         rec->material_index = scene_mesh_intern_material(&rec->mesh, &m);
         rec->material_texture = ts->texture;
+        rec->material_inherit = ts->inherit;
     }
     return rec->material_index;
 }
@@ -157,4 +163,234 @@ enum scene_record_status scene_assemble_indexed(struct scene_recording *rec,
         return out_of_memory(rec);
     emit(rec, ts, tris, n, map);
     return SCENE_RECORD_OK;
+}
+
+/* Display lists (see recording.h). */
+
+static int push_op(struct scene_recording *rec, const struct scene_list_op *op)
+{
+    if (rec->op_count == rec->op_capacity) {
+        uint32_t cap = rec->op_capacity ? 2 * rec->op_capacity : 16;
+        if (cap < rec->op_capacity)
+            return out_of_memory(rec), -1;
+        void *p = rt_realloc_array(rec->ops, cap, sizeof(*rec->ops));
+        if (!p)
+            return out_of_memory(rec), -1;
+        rec->ops = p;
+        rec->op_capacity = cap;
+    }
+    rec->ops[rec->op_count++] = *op;
+    return 0;
+}
+
+static int segment_op(struct scene_recording *rec)
+{
+    struct scene_list_op op;
+    memset(&op, 0, sizeof(op));
+    op.kind = SCENE_OP_SEGMENT;
+    op.a = rec->segment_count;
+    return push_op(rec, &op);
+}
+
+/* Ends the current segment and starts the next at the current operation:
+ * the current level's matrix becomes the identity relative to it. */
+static int new_segment(struct scene_recording *rec)
+{
+    struct scene_list_op *last = rec->op_count ? &rec->ops[rec->op_count - 1] : NULL;
+    if (rec->mesh.vertex_count == 0 && last && last->kind == SCENE_OP_SEGMENT &&
+        last->a == rec->segment_count) {
+        /* Nothing recorded since the segment started: restart it here. */
+        rec->op_count--;
+    } else {
+        if (rec->segment_count == rec->segment_capacity) {
+            uint32_t cap = rec->segment_capacity ? 2 * rec->segment_capacity : 4;
+            void *p = rt_realloc_array(rec->segments, cap, sizeof(*rec->segments));
+            if (!p)
+                return out_of_memory(rec), -1;
+            rec->segments = p;
+            rec->segment_capacity = cap;
+        }
+        int has_normals = rec->mesh.has_normals;
+        rec->segments[rec->segment_count++] = rec->mesh;
+        memset(&rec->mesh, 0, sizeof(rec->mesh));
+        rec->mesh.bounds = aabb_empty();
+        rec->mesh.has_normals = has_normals;
+        rec->material_index = -1;
+    }
+    mat4_identity(rec->stack[rec->depth - 1].m);
+    rec->stack[rec->depth - 1].segment = rec->segment_count;
+    return segment_op(rec);
+}
+
+void scene_list_release(struct scene_recording *rec)
+{
+    for (uint32_t i = 0; i < rec->segment_count; i++)
+        scene_mesh_release(&rec->segments[i]);
+    rt_free(rec->segments);
+    rt_free(rec->ops);
+    rec->segments = NULL;
+    rec->ops = NULL;
+    rec->segment_count = rec->segment_capacity = 0;
+    rec->op_count = rec->op_capacity = 0;
+}
+
+int scene_list_begin(struct scene_recording *rec, uint32_t name, unsigned matrix_mode)
+{
+    scene_list_release(rec);
+    scene_mesh_release(&rec->mesh);
+    rec->active = 1;
+    rec->name = name;
+    rec->out_of_memory = 0;
+    rec->material_index = -1;
+    rec->matrix_mode = matrix_mode;
+    rec->depth = 1;
+    mat4_identity(rec->stack[0].m);
+    rec->stack[0].segment = 0;
+    rec->material_set = 0;
+    rec->color_set = rec->color_material_set = 0;
+    /* Keeps the operations' memory of the last list: no allocation for
+     * lists of one segment after the first. */
+    return segment_op(rec);
+}
+
+const double *scene_list_matrix(const struct scene_recording *rec)
+{
+    return rec->stack[rec->depth - 1].m;
+}
+
+int scene_list_matrix_op(struct scene_recording *rec, enum scene_list_op_kind kind,
+                         unsigned mode, const double m[16])
+{
+    struct scene_list_op op;
+    memset(&op, 0, sizeof(op));
+    op.kind = (uint32_t)kind;
+    op.a = mode;
+    if (m)
+        memcpy(op.v, m, sizeof(op.v));
+    if (kind == SCENE_OP_MULT && rec->matrix_mode == RT_MODELVIEW) {
+        /* A product that overflows is rejected as outside lists. */
+        double r[16];
+        mat4_mul(r, rec->stack[rec->depth - 1].m, m);
+        if (!mat4_is_finite(r))
+            return -2;
+    }
+    if (push_op(rec, &op))
+        return -1;
+    if (kind == SCENE_OP_MATRIX_MODE) {
+        rec->matrix_mode = mode;
+        return 0;
+    }
+    if (rec->matrix_mode != RT_MODELVIEW)
+        return 0; /* the projection does not move vertices */
+    switch (kind) {
+    case SCENE_OP_LOAD:
+        /* The replay holds exactly m from here: a segment of its own. */
+        return new_segment(rec);
+    case SCENE_OP_MULT: {
+        double r[16];
+        mat4_mul(r, rec->stack[rec->depth - 1].m, m);
+        memcpy(rec->stack[rec->depth - 1].m, r, sizeof(r));
+        return 0;
+    }
+    case SCENE_OP_PUSH:
+        if (rec->depth < SCENE_LIST_MAX_PUSH) {
+            rec->stack[rec->depth] = rec->stack[rec->depth - 1];
+            rec->depth++;
+        }
+        return 0;
+    case SCENE_OP_POP:
+        if (rec->depth > 1) {
+            rec->depth--;
+            if (rec->stack[rec->depth - 1].segment == rec->segment_count)
+                return 0; /* back to a level of this segment: known */
+        }
+        /* A level of an earlier segment, or the caller's: start anew. */
+        return new_segment(rec);
+    default:
+        return 0;
+    }
+}
+
+int scene_list_call(struct scene_recording *rec, uint32_t name, int add_base)
+{
+    struct scene_list_op op;
+    memset(&op, 0, sizeof(op));
+    op.kind = SCENE_OP_CALL;
+    op.a = name;
+    op.b = add_base ? 1u : 0u;
+    if (push_op(rec, &op))
+        return -1;
+    /* The callee may change the matrix, the material and the colour. */
+    rec->material_set = 0;
+    rec->color_set = rec->color_material_set = 0;
+    return new_segment(rec);
+}
+
+int scene_list_state(struct scene_recording *rec, uint32_t what, uint32_t b, uint32_t c,
+                     const float *v, int n)
+{
+    struct scene_list_op op;
+    memset(&op, 0, sizeof(op));
+    op.kind = SCENE_OP_STATE;
+    op.a = what;
+    op.b = b;
+    op.c = c;
+    for (int i = 0; i < n && i < 16; i++)
+        op.v[i] = v[i];
+    return push_op(rec, &op);
+}
+
+uint32_t scene_list_segment_count(const struct scene_recording *rec)
+{
+    return rec->segment_count + 1;
+}
+
+int scene_list_finish(struct scene_recording *rec, struct scene_mesh **meshes,
+                      uint32_t *mesh_count, struct scene_list_op **ops, uint32_t *op_count,
+                      uint32_t *map)
+{
+    /* The current segment joins the finished ones. */
+    uint32_t total = rec->segment_count + 1;
+    struct scene_mesh *all = rt_realloc_array(rec->segments, total, sizeof(*all));
+    if (!all)
+        return out_of_memory(rec), -1;
+    rec->segments = all;
+    rec->segment_capacity = total;
+    all[rec->segment_count++] = rec->mesh;
+    memset(&rec->mesh, 0, sizeof(rec->mesh));
+    rec->mesh.bounds = aabb_empty();
+    uint32_t kept = 0, with_vertices = 0;
+    for (uint32_t i = 0; i < total; i++)
+        with_vertices += all[i].vertex_count > 0;
+    for (uint32_t i = 0; i < total; i++) {
+        uint32_t to = UINT32_MAX;
+        /* Empty segments go; the first stays the object's mesh when no
+         * segment has vertices (rtUpdateVertices numbers a mesh's vertices
+         * even without triangles, an empty list is still an object). */
+        if (all[i].vertex_count > 0 || (i == 0 && with_vertices == 0)) {
+            to = kept;
+            all[kept++] = all[i];
+        } else {
+            scene_mesh_release(&all[i]);
+        }
+        if (map)
+            map[i] = to;
+        /* Renumber in place: segment ops are in increasing order. */
+        for (uint32_t k = 0; k < rec->op_count; k++)
+            if (rec->ops[k].kind == SCENE_OP_SEGMENT && rec->ops[k].a == i)
+                rec->ops[k].a = to;
+    }
+    uint32_t n = 0;
+    for (uint32_t k = 0; k < rec->op_count; k++)
+        if (rec->ops[k].kind != SCENE_OP_SEGMENT || rec->ops[k].a != UINT32_MAX)
+            rec->ops[n++] = rec->ops[k];
+    *meshes = all;
+    *mesh_count = kept;
+    *ops = rec->ops;
+    *op_count = n;
+    rec->segments = NULL;
+    rec->segment_count = rec->segment_capacity = 0;
+    rec->ops = NULL;
+    rec->op_count = rec->op_capacity = 0;
+    return 0;
 }

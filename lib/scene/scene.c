@@ -31,8 +31,16 @@ void scene_release(struct scene *scene)
     /* Jobs first (their objects go next), then the build thread. */
     const struct name_table *table = &scene->objects.table;
     for (uint32_t i = 0; i < table->capacity; i++)
-        if (table->slots[i].name)
-            scene_async_cancel(&scene->async, table->slots[i].item);
+        if (table->slots[i].name) {
+            struct scene_object *object = table->slots[i].item;
+            for (uint32_t k = 0; k < object->segment_count; k++)
+                scene_async_cancel(&scene->async, object->segments[k]);
+            scene_async_cancel(&scene->async, object);
+        }
+    /* The hidden objects of immediate mode (frame.h). */
+    for (uint32_t i = 0; i < scene->frame.immediate.capacity; i++)
+        if (scene->frame.immediate.slots[i])
+            scene_async_cancel(&scene->async, scene->frame.immediate.slots[i]);
     scene_async_release(&scene->async);
     scene_frame_release(&scene->frame);
     scene_objects_release(&scene->objects);
@@ -56,6 +64,11 @@ void scene_delete_object(struct scene *scene, uint32_t name)
         return;
     if (object->defined)
         scene->changes.deleted++;
+    for (uint32_t i = 0; i < object->segment_count; i++) {
+        /* A display list's hidden segments go with it. */
+        scene_frame_forget_object(&scene->frame, object->segments[i]);
+        scene_async_cancel(&scene->async, object->segments[i]);
+    }
     scene_frame_forget_object(&scene->frame, object);
     scene_async_cancel(&scene->async, object);
     scene_objects_remove(&scene->objects, name);
