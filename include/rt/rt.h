@@ -139,6 +139,7 @@ typedef struct rt_context *RTcontext;
 #define RT_EYE_LIGHT 0x8F21 /* headlight, no shadows: "OpenGL-like ray casting" */
 #define RT_WHITTED 0x8F22   /* Phong + hard shadows + reflection/refraction */
 #define RT_MAX_RAY_DEPTH 0x8F23 /* rtRenderParameteri: Whitted recursion depth */
+#define RT_FIXED_FUNCTION 0x8F24 /* OpenGL 1.x fixed-function look (the default) */
 /* rtRenderParameteri(RT_UPDATE_STRATEGY, s): the strategy of objects
  * without their own hint (RT_UPDATE_STRATEGY is defined below). */
 
@@ -216,6 +217,76 @@ typedef struct rt_context *RTcontext;
 #define RT_REBUILD_HEURISTIC 0x8F67   /* refit; rebuild when SAH cost degraded */
 #define RT_RESTRUCTURE 0x8F68         /* selective restructuring (Yoon, Curtis and Manocha (2007)) */
 #define RT_ASYNC_REBUILD 0x8F69       /* refit while K threads rebuild (Wald, Ize and Parker (2008) sec. 6) */
+
+/* ---- OpenGL fixed-function state (docs/appearance.md, docs/fog.md,
+ *      docs/textures.md): GL's names with GL's values. ------------------ */
+#define RT_LIGHTING 0x0B50
+#define RT_LIGHT1 0x4001
+#define RT_LIGHT2 0x4002
+#define RT_LIGHT3 0x4003
+#define RT_LIGHT4 0x4004
+#define RT_LIGHT5 0x4005
+#define RT_LIGHT6 0x4006
+#define RT_LIGHT7 0x4007
+#define RT_LIGHT_MODEL_LOCAL_VIEWER 0x0B51
+#define RT_LIGHT_MODEL_TWO_SIDE 0x0B52
+#define RT_COLOR_MATERIAL_FACE 0x0B55
+#define RT_COLOR_MATERIAL_PARAMETER 0x0B56
+#define RT_SPOT_DIRECTION 0x1204
+#define RT_SPOT_EXPONENT 0x1205
+#define RT_SPOT_CUTOFF 0x1206
+#define RT_CULL_FACE 0x0B44
+#define RT_CULL_FACE_MODE 0x0B45
+#define RT_FRONT_FACE 0x0B46
+#define RT_CW 0x0900
+#define RT_CCW 0x0901
+#define RT_NORMALIZE 0x0BA1
+#define RT_RESCALE_NORMAL 0x803A
+#define RT_FOG 0x0B60
+#define RT_FOG_DENSITY 0x0B62
+#define RT_FOG_START 0x0B63
+#define RT_FOG_END 0x0B64
+#define RT_FOG_MODE 0x0B65
+#define RT_FOG_COLOR 0x0B66
+#define RT_EXP 0x0800
+#define RT_EXP2 0x0801
+#define RT_TEXTURE_ENV 0x2300
+#define RT_TEXTURE_ENV_MODE 0x2200
+#define RT_TEXTURE_ENV_COLOR 0x2201
+#define RT_MODULATE 0x2100
+#define RT_DECAL 0x2101
+#define RT_REPLACE 0x1E01
+#define RT_BLEND 0x0BE2
+/* Capabilities a ray tracer accepts with no effect (docs/appearance.md). */
+#define RT_DEPTH_TEST 0x0B71
+#define RT_DITHER 0x0BD0
+#define RT_POLYGON_OFFSET_FILL 0x8037
+/* rtHint targets and modes (accepted, no effect). */
+#define RT_PERSPECTIVE_CORRECTION_HINT 0x0C50
+#define RT_POINT_SMOOTH_HINT 0x0C51
+#define RT_LINE_SMOOTH_HINT 0x0C52
+#define RT_POLYGON_SMOOTH_HINT 0x0C53
+#define RT_FOG_HINT 0x0C54
+#define RT_DONT_CARE 0x1100
+#define RT_FASTEST 0x1101
+#define RT_NICEST 0x1102
+/* rtDepthFunc (accepted, no effect). */
+#define RT_NEVER 0x0200
+#define RT_LESS 0x0201
+#define RT_EQUAL 0x0202
+#define RT_LEQUAL 0x0203
+#define RT_GREATER 0x0204
+#define RT_NOTEQUAL 0x0205
+#define RT_GEQUAL 0x0206
+#define RT_ALWAYS 0x0207
+/* rtDrawBuffer / rtReadBuffer (accepted, no effect). */
+#define RT_NONE 0
+#define RT_FRONT_LEFT 0x0400
+#define RT_FRONT_RIGHT 0x0401
+#define RT_BACK_LEFT 0x0402
+#define RT_BACK_RIGHT 0x0403
+#define RT_LEFT 0x0406
+#define RT_RIGHT 0x0407
 
 /* ---- Ray queries ----------------------------------------------------- */
 /* A ray: points org + t*dir for t in [tmin, tmax].  dir need not be
@@ -345,6 +416,32 @@ RTAPI void rtLightfv(RTenum light, RTenum pname, const RTfloat *params);
 RTAPI void rtLightModelfv(RTenum pname, const RTfloat *params);
 RTAPI void rtShadingMode(RTenum mode);
 RTAPI void rtRenderParameteri(RTenum pname, RTint param);
+RTAPI void rtLightModelf(RTenum pname, RTfloat param);
+RTAPI void rtLightModeli(RTenum pname, RTint param);
+RTAPI void rtLightModeliv(RTenum pname, const RTint *params);
+RTAPI void rtColorMaterial(RTenum face, RTenum mode);
+RTAPI void rtCullFace(RTenum mode);
+RTAPI void rtFrontFace(RTenum mode);
+RTAPI void rtGetMaterialfv(RTenum face, RTenum pname, RTfloat *params);
+RTAPI void rtGetLightfv(RTenum light, RTenum pname, RTfloat *params);
+RTAPI void rtGetBooleanv(RTenum pname, RTboolean *params);
+RTAPI void rtFogf(RTenum pname, RTfloat param);
+RTAPI void rtFogi(RTenum pname, RTint param);
+RTAPI void rtFogfv(RTenum pname, const RTfloat *params);
+RTAPI void rtTexEnvi(RTenum target, RTenum pname, RTint param);
+RTAPI void rtTexEnvf(RTenum target, RTenum pname, RTfloat param);
+RTAPI void rtTexEnvfv(RTenum target, RTenum pname, const RTfloat *params);
+/* Accepted with no effect: a ray tracer has no depth buffer, no double
+ * buffering, no rasterisation hints and no compiled vertex arrays. */
+RTAPI void rtHint(RTenum target, RTenum mode);
+RTAPI void rtDrawBuffer(RTenum mode);
+RTAPI void rtReadBuffer(RTenum mode);
+RTAPI void rtDepthFunc(RTenum func);
+RTAPI void rtDepthRange(RTdouble zNear, RTdouble zFar);
+RTAPI void rtClearDepth(RTdouble depth);
+RTAPI void rtPolygonOffset(RTfloat factor, RTfloat units);
+RTAPI void rtLockArraysEXT(RTint first, RTsizei count);
+RTAPI void rtUnlockArraysEXT(void);
 
 /* ---- Textures (docs/textures.md) -------------------------------------- */
 RTAPI void rtGenTextures(RTsizei n, RTuint *textures);

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * shade.c - the integrators: eye light and Whitted (see shade.h); what a
- * hit looks like (material, texture, normals) is surface.c's.
+ * hit looks like (material, texture, normals) is surface.c's.  The
+ * RT_FIXED_FUNCTION mode, GL's own pipeline, is gl_shade.c's.
  *
  * Lighting follows OpenGL's fixed-function model (OpenGL 2.1 spec sec.
  * 2.14.1: emission + global ambient + per light attenuated ambient,
@@ -21,6 +22,7 @@
 #include <string.h>
 
 #include "base/mat4.h"
+#include "render/gl_shade.h"
 #include "render/surface.h"
 
 /* Safety factor on the error bound of the hit point (see surface_fetch in surface.c). */
@@ -125,7 +127,12 @@ void shade_ray(const struct shade_context *sc, const float org[3], const float d
 {
     const struct render_state *st = sc->state;
     struct trace_scene_hit hit;
-    if (!trace_scene_closest(sc->scene, org, dir, 0.0f, tmax, &hit, sc->counters)) {
+    /* Camera rays (depth 0) pass faces RT_CULL_FACE removed, as GL does
+     * not draw them; secondary rays see every face (gl_shade.h). */
+    int found = depth == 0 ? gl_closest_drawn(sc, org, dir, tmax, &hit)
+                           : trace_scene_closest(sc->scene, org, dir, 0.0f, tmax, &hit,
+                                                 sc->counters);
+    if (!found) {
         memcpy(rgba, st->clear_color, 4 * sizeof(float));
         return;
     }
@@ -136,6 +143,10 @@ void shade_ray(const struct shade_context *sc, const float org[3], const float d
      * is left out, so secondary rays filter as if every mirror were flat. */
     const float distance = hit.t * sqrtf(vec3_dot(dir, dir));
     const struct shade_cone at_hit = {fabsf(cone.width + cone.spread * distance), cone.spread};
+    if (st->shading == RENDER_FIXED_FUNCTION) {
+        gl_shade_hit(sc, &hit, org, dir, at_hit.width, rgba);
+        return;
+    }
     struct surface s;
     surface_fetch(sc, &hit, dir, at_hit.width, &s);
     float c[3];

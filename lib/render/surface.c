@@ -205,3 +205,24 @@ void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit 
     if (s->mat.texture)
         apply_texture(sc, inst, mesh, v, b0, b1, b2, s->ng, dir, width, &s->mat);
 }
+
+int surface_texel(const struct shade_context *sc, const struct trace_scene_hit *hit,
+                  uint32_t name, const float ng[3], const float dir[3], float width,
+                  float texel[4])
+{
+    const struct scene_texture *tex = scene_textures_lookup(sc->textures, name);
+    if (!tex || !tex->texels)
+        return 0;
+    const struct trace_instance *ti = &sc->scene->instances[hit->instance];
+    const struct scene_instance *inst = &sc->frame->committed.items[ti->instance_id];
+    const struct scene_mesh *mesh = &inst->object->mesh;
+    const uint32_t *v = &mesh->indices[3 * hit->prim];
+    const float b1 = hit->u, b2 = hit->v, b0 = 1.0f - hit->u - hit->v;
+    float st[2];
+    interpolate(mesh->texcoords, 2, v, b0, b1, b2, 2, st);
+    float lambda = -INFINITY;
+    if (tex->min_filter != tex->mag_filter)
+        lambda = texture_lod(tex, inst, mesh, v, ng, dir, width);
+    scene_texture_sample_lod(tex, lambda, st[0], st[1], texel);
+    return 1;
+}

@@ -26,4 +26,13 @@ struct surface {
 void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit *hit,
                    const float dir[3], float width, struct surface *s);
 
+/* The texel of texture `name` at a hit, for the RT_FIXED_FUNCTION mode,
+ * which applies it after lighting through the texture environment
+ * (gl_shade.c): the interpolated coordinates, filtered for the cone's
+ * `width` as apply_texture does; ng is the unit geometric normal in world
+ * space.  Returns 0 (texel untouched) when the name has no image. */
+int surface_texel(const struct shade_context *sc, const struct trace_scene_hit *hit,
+                  uint32_t name, const float ng[3], const float dir[3], float width,
+                  float texel[4]);
+
 #endif
