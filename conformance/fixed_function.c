@@ -396,6 +396,56 @@ static void no_ops(void)
     CHECK_ERR(RT_INVALID_VALUE);
 }
 
+static void interleaved(void)
+{
+    tu_section("rtInterleavedArrays: RT_C4UB_V3F and RT_T2F_C4F_N3F_V3F");
+    struct {
+        unsigned char c[4];
+        float v[3];
+    } ub[4] = {{{64, 128, 255, 255}, {-2, -2, -5}},
+               {{64, 128, 255, 255}, {2, -2, -5}},
+               {{64, 128, 255, 255}, {2, 2, -5}},
+               {{64, 128, 255, 255}, {-2, 2, -5}}};
+    CHECK_INT(sizeof ub[0], 16); /* the format's own stride: c = 4 bytes */
+    reset();
+    rtInterleavedArrays(RT_C4UB_V3F, 0, ub);
+    rtNewObject(OBJ);
+    rtDrawArrays(RT_QUADS, 0, 4);
+    rtEndObject();
+    render_obj();
+    CHECK_RGB(pixel(1, 1), 64.0f / 255.0f, 128.0f / 255.0f, 1.0f);
+    /* t2 c4 n3 v3, lit: the colour through RT_COLOR_MATERIAL, the normal
+     * (0, 0, 1) from the array, towards the light. */
+    float big[4][12];
+    for (int i = 0; i < 4; i++) {
+        const float t[12] = {0, 0, 0.5f, 0.25f, 1.0f, 1.0f, 0, 0, 1,
+                             ub[i].v[0], ub[i].v[1], ub[i].v[2]};
+        memcpy(big[i], t, sizeof t);
+    }
+    rtInterleavedArrays(RT_T2F_C4F_N3F_V3F, 0, big);
+    rtNewObject(OBJ);
+    rtEnable(RT_LIGHTING);
+    rtEnable(RT_COLOR_MATERIAL);
+    rtDrawArrays(RT_QUADS, 0, 4);
+    rtDisable(RT_COLOR_MATERIAL);
+    rtEndObject();
+    render_obj();
+    /* 0.2 * 0.5 + 0.5 (red); 0.2 * 0.25 + 0.25 (green); blue clamped. */
+    CHECK_RGB(pixel(1, 1), 0.6f, 0.3f, 1.0f);
+    rtInterleavedArrays(RT_T4F_V4F, 0, big);
+    CHECK_ERR(RT_INVALID_ENUM);
+    CHECK(message_has("four texture coordinates"));
+    rtInterleavedArrays(RT_FLOAT, 0, big);
+    CHECK_ERR(RT_INVALID_ENUM);
+    rtInterleavedArrays(RT_V3F, -4, big);
+    CHECK_ERR(RT_INVALID_VALUE);
+    rtDisableClientState(RT_VERTEX_ARRAY);
+    rtDisableClientState(RT_COLOR_ARRAY);
+    rtDisableClientState(RT_NORMAL_ARRAY);
+    rtDisableClientState(RT_TEXTURE_COORD_ARRAY);
+    CHECK_NO_ERR();
+}
+
 int main(void)
 {
     RTcontext ctx = tu_make_context("threads=2");
@@ -407,6 +457,7 @@ int main(void)
     fog();
     errors();
     no_ops();
+    interleaved();
     tu_destroy_context(ctx);
     return test_summary("fixed_function");
 }

@@ -257,6 +257,21 @@ typedef struct rt_context *RTcontext;
 #define RT_DECAL 0x2101
 #define RT_REPLACE 0x1E01
 #define RT_BLEND 0x0BE2
+/* rtInterleavedArrays formats (GL 1.1 table 2.5). */
+#define RT_V2F 0x2A20
+#define RT_V3F 0x2A21
+#define RT_C4UB_V2F 0x2A22
+#define RT_C4UB_V3F 0x2A23
+#define RT_C3F_V3F 0x2A24
+#define RT_N3F_V3F 0x2A25
+#define RT_C4F_N3F_V3F 0x2A26
+#define RT_T2F_V3F 0x2A27
+#define RT_T4F_V4F 0x2A28 /* refused: no projective texture coordinates */
+#define RT_T2F_C4UB_V3F 0x2A29
+#define RT_T2F_C3F_V3F 0x2A2A
+#define RT_T2F_N3F_V3F 0x2A2B
+#define RT_T2F_C4F_N3F_V3F 0x2A2C
+#define RT_T4F_C4F_N3F_V4F 0x2A2D /* refused */
 /* Capabilities a ray tracer accepts with no effect (docs/appearance.md). */
 #define RT_DEPTH_TEST 0x0B71
 #define RT_DITHER 0x0BD0
@@ -431,6 +446,7 @@ RTAPI void rtFogfv(RTenum pname, const RTfloat *params);
 RTAPI void rtTexEnvi(RTenum target, RTenum pname, RTint param);
 RTAPI void rtTexEnvf(RTenum target, RTenum pname, RTfloat param);
 RTAPI void rtTexEnvfv(RTenum target, RTenum pname, const RTfloat *params);
+RTAPI void rtInterleavedArrays(RTenum format, RTsizei stride, const void *pointer);
 /* Accepted with no effect: a ray tracer has no depth buffer, no double
  * buffering, no rasterisation hints and no compiled vertex arrays. */
 RTAPI void rtHint(RTenum target, RTenum mode);
