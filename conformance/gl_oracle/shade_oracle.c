@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * shade_oracle.c - the OpenGL colour oracle: every scene of
- * shade_scenes.inc (lighting switches, faces, fog, texture environment)
+ * shade_scenes.inc (lighting switches, faces, fog, texture environment,
+ * texture coordinate generation)
  * rendered by Mesa's OSMesa and by Tracelist in its default
  * RT_FIXED_FUNCTION mode, compared per pixel for coverage AND colour.
  *
@@ -110,8 +111,8 @@ static int save(const char *path, int w, int h, const unsigned char *rgba)
 int main(int argc, char **argv)
 {
     const char *out_dir = NULL, *docs_dir = NULL;
-    const char *families[] = {"lighting", "faces", "fog", "texenv"};
-    enum { FAMILIES = 4 };
+    const char *families[] = {"lighting", "faces", "fog", "texenv", "texgen"};
+    enum { FAMILIES = 5 };
     unsigned char *gl, *rt, *diff, *triptych, *sheets[FAMILIES] = {NULL};
     int sheet_w = SHEET_COLUMNS * TRIPTYCH_W + (SHEET_COLUMNS - 1) * 3 * PANEL_GAP;
     int sheet_h[FAMILIES] = {0}, placed[FAMILIES] = {0};

@@ -257,6 +257,19 @@ typedef struct rt_context *RTcontext;
 #define RT_DECAL 0x2101
 #define RT_REPLACE 0x1E01
 #define RT_BLEND 0x0BE2
+/* rtTexGen (docs/textures.md). */
+#define RT_S 0x2000
+#define RT_T 0x2001
+#define RT_R 0x2002 /* refused: 2D textures only */
+#define RT_Q 0x2003 /* refused */
+#define RT_EYE_LINEAR 0x2400
+#define RT_OBJECT_LINEAR 0x2401
+#define RT_SPHERE_MAP 0x2402
+#define RT_TEXTURE_GEN_MODE 0x2500
+#define RT_OBJECT_PLANE 0x2501
+#define RT_EYE_PLANE 0x2502
+#define RT_TEXTURE_GEN_S 0x0C60
+#define RT_TEXTURE_GEN_T 0x0C61
 /* rtInterleavedArrays formats (GL 1.1 table 2.5). */
 #define RT_V2F 0x2A20
 #define RT_V3F 0x2A21
@@ -446,6 +459,9 @@ RTAPI void rtFogfv(RTenum pname, const RTfloat *params);
 RTAPI void rtTexEnvi(RTenum target, RTenum pname, RTint param);
 RTAPI void rtTexEnvf(RTenum target, RTenum pname, RTfloat param);
 RTAPI void rtTexEnvfv(RTenum target, RTenum pname, const RTfloat *params);
+RTAPI void rtTexGeni(RTenum coord, RTenum pname, RTint param);
+RTAPI void rtTexGenf(RTenum coord, RTenum pname, RTfloat param);
+RTAPI void rtTexGenfv(RTenum coord, RTenum pname, const RTfloat *params);
 RTAPI void rtInterleavedArrays(RTenum format, RTsizei stride, const void *pointer);
 /* Accepted with no effect: a ray tracer has no depth buffer, no double
  * buffering, no rasterisation hints and no compiled vertex arrays. */

@@ -342,6 +342,16 @@ void rt_sync_fixed_function(struct rt_context *ctx)
     m.normalize = ctx->normalize_enabled        ? SCENE_NORMALIZE_ON
                   : ctx->rescale_normal_enabled ? SCENE_NORMALIZE_RESCALE
                                                 : SCENE_NORMALIZE_OFF;
+    for (int i = 0; i < 2; i++) {
+        /* Planes only while generating, so the disabled ones do not split
+         * materials. */
+        int on = ctx->texgen_enabled[i];
+        m.texgen_mode[i] = on ? ctx->texgen_mode[i] : 0;
+        for (int k = 0; k < 4; k++) {
+            m.texgen_object_plane[i][k] = on ? ctx->texgen_object_plane[i][k] : 0.0f;
+            m.texgen_eye_plane[i][k] = on ? ctx->texgen_eye_plane[i][k] : 0.0f;
+        }
+    }
     if (memcmp(&m, &ctx->material, sizeof(m)) == 0)
         return;
     ctx->material = m;

@@ -287,6 +287,10 @@ RTcontext rtCreateContextWithReason(const char *configuration, RTsizei bufSize, 
     render_state_init(&ctx->render);
     ctx->cull_face_mode = RT_BACK;
     ctx->dither = 1; /* GL's default */
+    for (int i = 0; i < 2; i++) {
+        ctx->texgen_mode[i] = RT_EYE_LINEAR;
+        ctx->texgen_object_plane[i][i] = ctx->texgen_eye_plane[i][i] = 1.0f;
+    }
     return ctx;
 }
 

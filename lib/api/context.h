@@ -108,6 +108,12 @@ struct rt_context {
     /* Accepted capabilities without a ray tracing meaning: remembered
      * for rtIsEnabled only. */
     int depth_test, dither, polygon_offset_fill;
+    /* rtTexGen for s (0) and t (1) (fixed_function.c); recorded through
+     * ctx->material by rt_sync_fixed_function while enabled. */
+    int texgen_enabled[2];  /* RT_TEXTURE_GEN_S, RT_TEXTURE_GEN_T */
+    RTenum texgen_mode[2];  /* RT_EYE_LINEAR initially */
+    float texgen_object_plane[2][4];
+    float texgen_eye_plane[2][4]; /* in eye space */
 };
 
 /* Derives ctx->material's culling and normalisation fields from the

@@ -1,8 +1,9 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * fixed_function.c - the rest of GL 1.x's fixed-function state that ported
- * programs set: rtFog (frame state, docs/fog.md), rtTexEnv (recorded with
- * the triangles, as GL applies it per primitive; docs/textures.md), and
+ * programs set: rtFog (frame state, docs/fog.md), rtTexEnv and rtTexGen
+ * (recorded with the triangles, as GL applies them per primitive;
+ * docs/textures.md), and
  * the names with no ray tracing meaning, accepted with no effect after
  * GL's own validation (docs/appearance.md, "Accepted no-ops").
  */
@@ -11,6 +12,7 @@
 
 #include "api/context.h"
 #include "api/enum_names.h"
+#include "base/mat4.h"
 
 static void fog(const char *caller, RTenum pname, const RTfloat *params, int vector)
 {
@@ -142,6 +144,87 @@ void rtTexEnvf(RTenum target, RTenum pname, RTfloat param)
 void rtTexEnvfv(RTenum target, RTenum pname, const RTfloat *params)
 {
     tex_env("rtTexEnvfv", target, pname, params, 1);
+}
+
+/* rtTexGen*: GL 1.1 sec. 2.10.4.  The eye plane is transformed by the
+ * inverse of the modelview at the call, as GL: p_eye = p M^-1. */
+static void tex_gen(const char *caller, RTenum coord, RTenum pname, const RTfloat *params,
+                    int vector)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_begin(ctx, caller))
+        return;
+    char b1[RT_ENUM_STRING_SIZE];
+    if (coord != RT_S && coord != RT_T) {
+        rt_error(ctx, RT_INVALID_ENUM, "%s(coord=%s): not RT_S or RT_T%s", caller,
+                 rt_enum_string(coord, b1),
+                 coord == RT_R || coord == RT_Q ? " (2D textures only)" : "");
+        return;
+    }
+    int plane = pname == RT_OBJECT_PLANE || pname == RT_EYE_PLANE;
+    if (pname != RT_TEXTURE_GEN_MODE && (!plane || !vector)) {
+        rt_error(ctx, RT_INVALID_ENUM, "%s(pname=%s): not a texture generation parameter%s",
+                 caller, rt_enum_string(pname, b1), plane ? " for a scalar call" : "");
+        return;
+    }
+    if (!params) {
+        rt_error(ctx, RT_INVALID_VALUE, "%s(params=NULL)", caller);
+        return;
+    }
+    const int i = coord == RT_S ? 0 : 1;
+    if (pname == RT_TEXTURE_GEN_MODE) {
+        RTenum mode = (RTenum)params[0];
+        if ((float)mode != params[0] ||
+            (mode != RT_OBJECT_LINEAR && mode != RT_EYE_LINEAR && mode != RT_SPHERE_MAP)) {
+            rt_error(ctx, RT_INVALID_ENUM,
+                     "%s(RT_TEXTURE_GEN_MODE, %s): not RT_OBJECT_LINEAR, RT_EYE_LINEAR or "
+                     "RT_SPHERE_MAP",
+                     caller, rt_enum_string(mode, b1));
+            return;
+        }
+        ctx->texgen_mode[i] = mode;
+    } else {
+        if (!rt_check_finite(ctx, caller, params, 4))
+            return;
+        if (pname == RT_OBJECT_PLANE) {
+            memcpy(ctx->texgen_object_plane[i], params, 4 * sizeof(float));
+        } else {
+            double inv[16], out[4];
+            if (!mat4_invert(inv, ctx->modelview.m[ctx->modelview.depth - 1])) {
+                /* GL leaves a singular modelview undefined; keep the plane. */
+                for (int k = 0; k < 4; k++)
+                    out[k] = params[k];
+            } else {
+                /* Row vector times M^-1: column c of the inverse. */
+                for (int c = 0; c < 4; c++)
+                    out[c] = params[0] * inv[4 * c] + params[1] * inv[4 * c + 1] +
+                             params[2] * inv[4 * c + 2] + params[3] * inv[4 * c + 3];
+            }
+            float f[4];
+            for (int k = 0; k < 4; k++)
+                f[k] = (float)out[k];
+            if (!rt_check_finite(ctx, caller, f, 4))
+                return;
+            memcpy(ctx->texgen_eye_plane[i], f, sizeof(f));
+        }
+    }
+    rt_sync_fixed_function(ctx);
+}
+
+void rtTexGeni(RTenum coord, RTenum pname, RTint param)
+{
+    RTfloat f = (RTfloat)param;
+    tex_gen("rtTexGeni", coord, pname, &f, 0);
+}
+
+void rtTexGenf(RTenum coord, RTenum pname, RTfloat param)
+{
+    tex_gen("rtTexGenf", coord, pname, &param, 0);
+}
+
+void rtTexGenfv(RTenum coord, RTenum pname, const RTfloat *params)
+{
+    tex_gen("rtTexGenfv", coord, pname, params, 1);
 }
 
 /* ---- Accepted no-ops: GL's checks, then nothing ------------------------- */

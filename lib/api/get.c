@@ -266,6 +266,10 @@ static int *capability(struct rt_context *ctx, RTenum cap)
         return &ctx->rescale_normal_enabled;
     case RT_FOG:
         return &ctx->render.fog.enabled;
+    case RT_TEXTURE_GEN_S:
+        return &ctx->texgen_enabled[0];
+    case RT_TEXTURE_GEN_T:
+        return &ctx->texgen_enabled[1];
     /* No ray tracing meaning: accepted and remembered (docs/appearance.md). */
     case RT_DEPTH_TEST:
         return &ctx->depth_test;
@@ -298,7 +302,8 @@ static void set_capability(const char *caller, RTenum cap, int value)
         return;
     }
     *flag = value;
-    if (cap == RT_CULL_FACE || cap == RT_NORMALIZE || cap == RT_RESCALE_NORMAL)
+    if (cap == RT_CULL_FACE || cap == RT_NORMALIZE || cap == RT_RESCALE_NORMAL ||
+        cap == RT_TEXTURE_GEN_S || cap == RT_TEXTURE_GEN_T)
         rt_sync_fixed_function(ctx);
 }
 

@@ -18,7 +18,8 @@
  * switches to it for that comparison.
  *
  * After lighting (or the vertex colour, RT_LIGHTING disabled) comes the
- * texture environment (sec. 3.8.13) and then fog (sec. 3.10), whose
+ * texture, its coordinates recorded or generated per vertex (rtTexGen),
+ * through the texture environment (sec. 3.8.13) and then fog (sec. 3.10), whose
  * coordinate is the hit's |z| in eye space, as Mesa's default
  * (GL_EYE_PLANE_ABSOLUTE_NV) takes it.
  */
@@ -139,6 +140,59 @@ static void lit_colour(const struct shade_context *sc, const struct gl_triangle 
     gl_light_point(sc->state, &fm, p, n, out);
 }
 
+/*
+ * The texture coordinates of a vertex: recorded, or generated as GL 1.1
+ * sec. 2.10.4 does per vertex (the rasteriser then interpolates them):
+ * RT_OBJECT_LINEAR dots the vertex as recorded with the object plane,
+ * RT_EYE_LINEAR its eye position with the eye plane (transformed at the
+ * rtTexGen call), RT_SPHERE_MAP reflects the unit vector from the eye
+ * about the eye normal, r = u - 2 n (n . u), and maps it with
+ * m = 2 sqrt(rx^2 + ry^2 + (rz + 1)^2) to (rx / m + 1/2, ry / m + 1/2).
+ */
+static void texture_coordinates(const struct gl_triangle *t, uint32_t vertex, float st[2])
+{
+    const struct scene_material *m = t->mat;
+    const float *tc = &t->mesh->texcoords[2 * vertex];
+    st[0] = tc[0];
+    st[1] = tc[1];
+    if (!m->texgen_mode[0] && !m->texgen_mode[1])
+        return;
+    const float *po = &t->mesh->positions[3 * vertex];
+    float pe[3], sphere[2] = {0.0f, 0.0f};
+    eye_position(t->inst, t->mesh, vertex, pe);
+    if (m->texgen_mode[0] == RT_SPHERE_MAP || m->texgen_mode[1] == RT_SPHERE_MAP) {
+        float u[3] = {pe[0], pe[1], pe[2]}, n[3], r[3];
+        vec3_normalize(u);
+        eye_normal(t, &t->mesh->normals[3 * vertex], n);
+        float nu = vec3_dot(n, u);
+        for (int k = 0; k < 3; k++)
+            r[k] = u[k] - 2.0f * n[k] * nu;
+        float mm = 2.0f * sqrtf(r[0] * r[0] + r[1] * r[1] + (r[2] + 1.0f) * (r[2] + 1.0f));
+        if (mm > 0.0f) {
+            sphere[0] = r[0] / mm + 0.5f;
+            sphere[1] = r[1] / mm + 0.5f;
+        }
+    }
+    for (int i = 0; i < 2; i++) {
+        const float *p;
+        switch (m->texgen_mode[i]) {
+        case RT_OBJECT_LINEAR:
+            p = m->texgen_object_plane[i];
+            st[i] = p[0] * po[0] + p[1] * po[1] + p[2] * po[2] + p[3];
+            break;
+        case RT_EYE_LINEAR:
+            p = m->texgen_eye_plane[i];
+            st[i] = p[0] * pe[0] + p[1] * pe[1] + p[2] * pe[2] + p[3];
+            break;
+        case RT_SPHERE_MAP:
+            st[i] = sphere[i];
+            break;
+        default:
+            break;
+        }
+    }
+}
+
 static void texture_environment(const struct scene_material *mat, const float tex[4],
                                 float c[4])
 {
@@ -209,9 +263,11 @@ void gl_shade_hit(const struct shade_context *sc, const struct trace_scene_hit *
         }
     }
     if (t.mat->texture) {
-        float ng[3] = {t.ng[0], t.ng[1], t.ng[2]}, tex[4];
+        float ng[3] = {t.ng[0], t.ng[1], t.ng[2]}, tex[4], coords[3][2];
         vec3_normalize(ng);
-        if (surface_texel(sc, hit, t.mat->texture, ng, dir, width, tex))
+        for (int i = 0; i < 3; i++)
+            texture_coordinates(&t, t.v[i], coords[i]);
+        if (surface_texel(sc, hit, t.mat->texture, coords, ng, dir, width, tex))
             texture_environment(t.mat, tex, c);
     }
     if (st->fog.enabled) {

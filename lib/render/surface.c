@@ -54,15 +54,14 @@ static void interpolate(const float *attr, int stride, const uint32_t v[3], floa
  * a magnification.
  */
 static float texture_lod(const struct scene_texture *tex, const struct scene_instance *inst,
-                         const struct scene_mesh *mesh, const uint32_t v[3], const float ng[3],
-                         const float dir[3], float width)
+                         const struct scene_mesh *mesh, const uint32_t v[3],
+                         const float *const st[3], const float ng[3], const float dir[3],
+                         float width)
 {
     const float *p0 = &mesh->positions[3 * v[0]];
     const float *p1 = &mesh->positions[3 * v[1]];
     const float *p2 = &mesh->positions[3 * v[2]];
-    const float *t0 = &mesh->texcoords[2 * v[0]];
-    const float *t1 = &mesh->texcoords[2 * v[1]];
-    const float *t2 = &mesh->texcoords[2 * v[2]];
+    const float *t0 = st[0], *t1 = st[1], *t2 = st[2];
     double e1[3], e2[3], w1[3], w2[3];
     for (int k = 0; k < 3; k++) {
         e1[k] = (double)p1[k] - (double)p0[k];
@@ -111,8 +110,11 @@ static void apply_texture(const struct shade_context *sc, const struct scene_ins
     float st[2], texel[4];
     interpolate(mesh->texcoords, 2, v, b0, b1, b2, 2, st);
     float lambda = -INFINITY; /* a magnification */
-    if (tex->min_filter != tex->mag_filter)
-        lambda = texture_lod(tex, inst, mesh, v, ng, dir, width);
+    if (tex->min_filter != tex->mag_filter) {
+        const float *const vst[3] = {&mesh->texcoords[2 * v[0]], &mesh->texcoords[2 * v[1]],
+                                     &mesh->texcoords[2 * v[2]]};
+        lambda = texture_lod(tex, inst, mesh, v, vst, ng, dir, width);
+    }
     scene_texture_sample_lod(tex, lambda, st[0], st[1], texel);
     for (int k = 0; k < 3; k++) {
         mat->ambient[k] *= texel[k];
@@ -207,8 +209,8 @@ void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit 
 }
 
 int surface_texel(const struct shade_context *sc, const struct trace_scene_hit *hit,
-                  uint32_t name, const float ng[3], const float dir[3], float width,
-                  float texel[4])
+                  uint32_t name, const float vertex_st[3][2], const float ng[3],
+                  const float dir[3], float width, float texel[4])
 {
     const struct scene_texture *tex = scene_textures_lookup(sc->textures, name);
     if (!tex || !tex->texels)
@@ -218,11 +220,13 @@ int surface_texel(const struct shade_context *sc, const struct trace_scene_hit *
     const struct scene_mesh *mesh = &inst->object->mesh;
     const uint32_t *v = &mesh->indices[3 * hit->prim];
     const float b1 = hit->u, b2 = hit->v, b0 = 1.0f - hit->u - hit->v;
+    const float *const vst[3] = {vertex_st[0], vertex_st[1], vertex_st[2]};
     float st[2];
-    interpolate(mesh->texcoords, 2, v, b0, b1, b2, 2, st);
+    for (int k = 0; k < 2; k++)
+        st[k] = b0 * vst[0][k] + b1 * vst[1][k] + b2 * vst[2][k];
     float lambda = -INFINITY;
     if (tex->min_filter != tex->mag_filter)
-        lambda = texture_lod(tex, inst, mesh, v, ng, dir, width);
+        lambda = texture_lod(tex, inst, mesh, v, vst, ng, dir, width);
     scene_texture_sample_lod(tex, lambda, st[0], st[1], texel);
     return 1;
 }

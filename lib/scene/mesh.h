@@ -52,6 +52,12 @@ struct scene_material {
     uint8_t cull_face;            /* SCENE_CULL_* of RT_CULL_FACE and rtCullFace */
     uint8_t front_cw;             /* rtFrontFace(RT_CW) */
     uint8_t normalize;            /* SCENE_NORMALIZE_* */
+    /* rtTexGen for s and t: the mode while RT_TEXTURE_GEN_S / _T was
+     * enabled (RT_OBJECT_LINEAR, RT_EYE_LINEAR, RT_SPHERE_MAP), else 0;
+     * the planes (the eye planes already in eye space). */
+    uint32_t texgen_mode[2];
+    float texgen_object_plane[2][4];
+    float texgen_eye_plane[2][4];
 };
 
 /* Which faces RT_CULL_FACE removes (scene_material.cull_face). */
