@@ -446,6 +446,50 @@ static void interleaved(void)
     CHECK_NO_ERR();
 }
 
+static void texgen(void)
+{
+    tu_section("rtTexGen: object-linear s, recorded per primitive");
+    static const unsigned char texels[8] = {255, 0, 0, 255, 0, 255, 0, 255}; /* red, green */
+    static const float s_plane[4] = {0.25f, 0.0f, 0.0f, 0.5f}; /* x = -2 .. 2 -> s = 0 .. 1 */
+    RTuint tex = 0;
+    reset();
+    rtGenTextures(1, &tex);
+    rtBindTexture(RT_TEXTURE_2D, tex);
+    rtTexParameteri(RT_TEXTURE_2D, RT_TEXTURE_MIN_FILTER, RT_NEAREST);
+    rtTexParameteri(RT_TEXTURE_2D, RT_TEXTURE_MAG_FILTER, RT_NEAREST);
+    rtTexImage2D(RT_TEXTURE_2D, 0, RT_RGBA, 2, 1, 0, RT_RGBA, RT_UNSIGNED_BYTE, texels);
+    rtTexCoord2f(0.0f, 0.0f);
+    rtTexGeni(RT_S, RT_TEXTURE_GEN_MODE, RT_OBJECT_LINEAR);
+    rtTexGenfv(RT_S, RT_OBJECT_PLANE, s_plane);
+    rtEnable(RT_TEXTURE_GEN_S);
+    CHECK(rtIsEnabled(RT_TEXTURE_GEN_S) && !rtIsEnabled(RT_TEXTURE_GEN_T));
+    rtEnable(RT_TEXTURE_2D);
+    rtNewObject(OBJ);
+    square(-5, 1);
+    rtEndObject();
+    rtDisable(RT_TEXTURE_GEN_S);
+    render_obj();
+    CHECK_RGB(pixel(0, 1), 1, 0, 0);
+    CHECK_RGB(pixel(3, 1), 0, 1, 0);
+    rtNewObject(OBJ); /* without generation: the recorded s = 0 everywhere */
+    square(-5, 1);
+    rtEndObject();
+    render_obj();
+    CHECK_RGB(pixel(3, 1), 1, 0, 0);
+    rtDisable(RT_TEXTURE_2D);
+    rtDeleteTextures(1, &tex);
+    CHECK_NO_ERR();
+    rtTexGeni(RT_R, RT_TEXTURE_GEN_MODE, RT_OBJECT_LINEAR);
+    CHECK_ERR(RT_INVALID_ENUM);
+    CHECK(message_has("RT_R"));
+    rtTexGenf(RT_S, RT_OBJECT_PLANE, 1.0f);
+    CHECK_ERR(RT_INVALID_ENUM);
+    rtTexGeni(RT_T, RT_TEXTURE_GEN_MODE, RT_LINEAR);
+    CHECK_ERR(RT_INVALID_ENUM);
+    rtTexGenfv(RT_T, RT_EYE_PLANE, NULL);
+    CHECK_ERR(RT_INVALID_VALUE);
+}
+
 int main(void)
 {
     RTcontext ctx = tu_make_context("threads=2");
@@ -458,6 +502,7 @@ int main(void)
     errors();
     no_ops();
     interleaved();
+    texgen();
     tu_destroy_context(ctx);
     return test_summary("fixed_function");
 }
