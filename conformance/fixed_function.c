@@ -490,6 +490,31 @@ static void texgen(void)
     CHECK_ERR(RT_INVALID_VALUE);
 }
 
+static void whitted_spot(void)
+{
+    tu_section("Whitted: spot lights cut the light's terms outside the cone");
+    static const float at_eye[4] = {0, 0, 0, 1}, down[3] = {0, 0, -1};
+    reset();
+    rtNewObject(OBJ);
+    square(-5, 1);
+    rtEndObject();
+    rtLightfv(RT_LIGHT0, RT_POSITION, at_eye);
+    rtLightfv(RT_LIGHT0, RT_SPOT_DIRECTION, down);
+    rtShadingMode(RT_WHITTED);
+    render_obj();
+    float centre = pixel(2, 2)[0], corner = pixel(3, 3)[0];
+    CHECKF(centre > 0.8f && corner > 0.8f, "no spot: %g %g", (double)centre, (double)corner);
+    rtLightf(RT_LIGHT0, RT_SPOT_CUTOFF, 10.0f); /* the corner pixel is 12 degrees off */
+    render_obj();
+    CHECKF(fabsf(pixel(2, 2)[0] - centre) < 1e-6f, "inside the cone: %g", (double)pixel(2, 2)[0]);
+    CHECK_RGB(pixel(3, 3), 0.04f, 0.04f, 0.04f);
+    rtLightf(RT_LIGHT0, RT_SPOT_CUTOFF, 180.0f);
+    rtShadingMode(RT_FIXED_FUNCTION);
+    static const float sky[4] = {0, 0, 1, 0};
+    rtLightfv(RT_LIGHT0, RT_POSITION, sky);
+    CHECK_NO_ERR();
+}
+
 int main(void)
 {
     RTcontext ctx = tu_make_context("threads=2");
@@ -503,6 +528,7 @@ int main(void)
     no_ops();
     interleaved();
     texgen();
+    whitted_spot();
     tu_destroy_context(ctx);
     return test_summary("fixed_function");
 }

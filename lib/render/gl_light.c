@@ -59,6 +59,17 @@ static float clamp01(float x)
     return x < 0.0f ? 0.0f : (x > 1.0f ? 1.0f : x);
 }
 
+float gl_spot_factor(const struct render_light *l, const float vp[3])
+{
+    float s[3] = {l->spot_direction[0], l->spot_direction[1], l->spot_direction[2]};
+    vec3_normalize(s);
+    float cosine = -vec3_dot(vp, s);
+    float cutoff = (float)cos((double)l->spot_cutoff * GL_LIGHT_PI / 180.0);
+    if (cosine < cutoff)
+        return 0.0f;
+    return cosine > 0.0f ? powf(cosine, l->spot_exponent) : 0.0f;
+}
+
 void gl_light_point(const struct render_state *st, const struct gl_face_material *m,
                     const float p[3], const float n[3], float rgba[4])
 {
@@ -80,13 +91,10 @@ void gl_light_point(const struct render_state *st, const struct gl_face_material
             float att = l->attenuation[0] + l->attenuation[1] * d + l->attenuation[2] * d * d;
             factor = att > 0.0f ? 1.0f / att : 1.0f;
             if (l->spot_cutoff != 180.0f) {
-                float s[3] = {l->spot_direction[0], l->spot_direction[1], l->spot_direction[2]};
-                vec3_normalize(s);
-                float cosine = -vec3_dot(vp, s);
-                float cutoff = (float)cos((double)l->spot_cutoff * GL_LIGHT_PI / 180.0);
-                if (cosine < cutoff)
+                float spot = gl_spot_factor(l, vp);
+                if (spot == 0.0f)
                     continue; /* outside the cone: the light adds nothing */
-                factor *= cosine > 0.0f ? powf(cosine, l->spot_exponent) : 0.0f;
+                factor *= spot;
             }
         } else {
             memcpy(vp, l->position, sizeof(vp));

@@ -22,6 +22,7 @@
 #include <string.h>
 
 #include "base/mat4.h"
+#include "render/gl_light.h"
 #include "render/gl_shade.h"
 #include "render/surface.h"
 
@@ -76,6 +77,13 @@ static void local_whitted(const struct shade_context *sc, const struct surface *
             float att = light->attenuation[0] + light->attenuation[1] * d +
                         light->attenuation[2] * d * d;
             attenuation = att > 0.0f ? 1.0f / att : 1.0f;
+            if (light->spot_cutoff != 180.0f && d > 0.0f) {
+                /* GL's spot cone (gl_light.c) scales every term of the
+                 * light, its ambient one too; 180 (the default) leaves the
+                 * Whitted images as they were. */
+                float u[3] = {to_light[0] / d, to_light[1] / d, to_light[2] / d};
+                attenuation *= gl_spot_factor(light, u);
+            }
         } else {
             memcpy(to_light, light->position, sizeof(to_light));
             memcpy(shadow_dir, to_light, sizeof(shadow_dir));
