@@ -2169,6 +2169,9 @@ int main(void)
 {
     RTcontext ctx = tu_make_context("threads=2");
     tu_capture_errors();
+    /* The probes' expected colours are the eye light's (explicit since
+     * RT_FIXED_FUNCTION became the default). */
+    rtShadingMode(RT_EYE_LIGHT);
     make_root();
     /* First, while the heap holds little freed memory the address-space
      * limit would not count. */

@@ -178,8 +178,12 @@ static void material_errors_and_defaults(void)
     CHECK_ERR(RT_INVALID_VALUE);
 
     tu_section("faces, emission, ambient-and-diffuse");
-    /* Materials are two-sided: RT_BACK sets what the front shows. */
+    /* RT_BACK sets the back material only (GL; issue 10: it used to set
+     * the one two-sided material); the eye light shows the front. */
     rtMaterialfv(RT_BACK, RT_DIFFUSE, green);
+    render_quad();
+    CHECK_RGB(CENTRE, 1, 0, 0);
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_DIFFUSE, green);
     render_quad();
     CHECK_RGB(CENTRE, 0, 1, 0);
     /* Emission adds; RT_AMBIENT_AND_DIFFUSE sets both. */

@@ -940,6 +940,8 @@ int main(void)
 {
     RTcontext ctx = tu_make_context("threads=2");
     tu_capture_errors();
+    /* The expected colours are the eye light's (MODULATE on the material). */
+    rtShadingMode(RT_EYE_LIGHT);
     names_and_binding();
     image_errors();
     nearest_and_linear();

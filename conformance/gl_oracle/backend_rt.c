@@ -5,10 +5,9 @@
  *
  * The geometry is recorded into object 1 under the identity modelview and
  * instantiated under the scene's view, as backend_gl.c compiles and calls
- * display list 1.  Shading: the default (RT_EYE_LIGHT) on a white
- * material; coverage is what is compared until Tracelist has a GL shading
- * mode, so only "not the clear colour" matters.  Any recorded error fails
- * the scene.
+ * display list 1.  Shading: the default, RT_FIXED_FUNCTION, GL's look
+ * (unlit white unless a scene enables RT_LIGHTING, as the colour oracle's
+ * scenes do).  Any recorded error fails the scene.
  */
 #include "oracle.h"
 

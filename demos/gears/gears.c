@@ -16,14 +16,15 @@
  *   glPushMatrix / glRotatef / ...       rtPushMatrix / rtRotatef / ...
  *   glFrustum / glViewport               rtFrustum / rtViewport
  *   glClear + glutSwapBuffers            rtRenderFrame (+ rtReadPixels to get the image)
- *   glEnable(GL_LIGHTING, GL_DEPTH_TEST, GL_CULL_FACE, GL_NORMALIZE)
- *                                        nothing: a ray tracer always lights,
- *                                        resolves visibility and normalises
+ *   glEnable(GL_LIGHTING, GL_NORMALIZE)  rtEnable(RT_LIGHTING, RT_NORMALIZE)
+ *   glEnable(GL_CULL_FACE)               rtEnable(RT_CULL_FACE) (--gl only)
+ *   glEnable(GL_DEPTH_TEST)              accepted, not needed
  *
  * What the ray tracer adds: with the default Whitted shading the light at
  * (5, 5, 10, 0) casts shadows (the gears shadow each other and their own
- * teeth); --eye-light switches to the headlight shading that looks like
- * OpenGL without shadows.
+ * teeth); --eye-light switches to the headlight shading without shadows,
+ * --gl to RT_FIXED_FUNCTION, OpenGL's own look (GL's lighting per vertex,
+ * the gears culled as the original culls them).
  *
  * Usage: gears [OPTION]...   (gears --help lists the options and keys)
  *
@@ -251,7 +252,7 @@ static void reshape(int width, int height)
     rtTranslatef(0.0, 0.0, -40.0);
 }
 
-static void init(int eye_light)
+static void init(int eye_light, int gl)
 {
     static RTfloat pos[4] = {5.0, 5.0, 10.0, 0.0};
     static RTfloat red[4] = {0.8, 0.1, 0.0, 1.0};
@@ -261,20 +262,28 @@ static void init(int eye_light)
     /* Set while the modelview is the identity, so the light is fixed in eye
      * space (world space is eye space, as in OpenGL). */
     rtLightfv(RT_LIGHT0, RT_POSITION, pos);
-    /* glEnable(GL_CULL_FACE), glEnable(GL_LIGHTING), glEnable(GL_DEPTH_TEST):
-     * not needed; rays find the nearest surface and are always lit. */
+    /* As the original: lighting (recorded with the gears, read by the
+     * RT_FIXED_FUNCTION mode; Whitted and the eye light always light) and
+     * culling, which camera rays obey in every mode, so only --gl asks for
+     * it and the Whitted images stay as they were.  The depth test is
+     * accepted and not needed: rays find the nearest surface. */
+    if (gl)
+        rtEnable(RT_CULL_FACE);
+    rtEnable(RT_LIGHTING);
     rtEnable(RT_LIGHT0);
+    rtEnable(RT_DEPTH_TEST);
 
     /* Tracelist only: how to light.  Whitted shading traces a shadow ray to
-     * the light; the eye light is a headlight without shadows.  Opaque black
-     * background so that saved images are not transparent. */
-    rtShadingMode(eye_light ? RT_EYE_LIGHT : RT_WHITTED);
+     * the light; the eye light is a headlight without shadows; GL's look is
+     * RT_FIXED_FUNCTION.  Opaque black background so that saved images are
+     * not transparent. */
+    rtShadingMode(gl ? RT_FIXED_FUNCTION : eye_light ? RT_EYE_LIGHT : RT_WHITTED);
     rtClearColor(0.0, 0.0, 0.0, 1.0);
 
     /* make the gears */
     rtGenObjects(1, &gear1);        /* gear1 = glGenLists(1) */
     rtNewObject(gear1);             /* glNewList(gear1, GL_COMPILE) */
-    rtMaterialfv(RT_FRONT, RT_AMBIENT_AND_DIFFUSE, red); /* two-sided in Tracelist */
+    rtMaterialfv(RT_FRONT, RT_AMBIENT_AND_DIFFUSE, red);
     gear(1.0, 4.0, 1.0, 20, 0.7);
     rtEndObject();                  /* glEndList() */
 
@@ -290,7 +299,11 @@ static void init(int eye_light)
     gear(1.3, 2.0, 0.5, 10, 0.7);
     rtEndObject();
 
-    /* glEnable(GL_NORMALIZE): Tracelist always normalises normals. */
+    /* The original enables GL_NORMALIZE here, after the lists; GL reads it
+     * when the lists are called.  Tracelist records it with the triangles,
+     * so the gears above were recorded without it: their normals are unit
+     * already, and RT_FIXED_FUNCTION lights them as GL does. */
+    rtEnable(RT_NORMALIZE);
 }
 
 /* ------------------------------------------------------------------------ */
@@ -304,6 +317,7 @@ struct options {
     int threads;       /* --threads N; 0 = the library's default */
     const char *out;   /* --out FILE; NULL = default name */
     int eye_light;     /* --eye-light */
+    int gl;            /* --gl */
 };
 
 static void usage(FILE *f)
@@ -319,6 +333,7 @@ static void usage(FILE *f)
                "                       frame index when N > 1 (default gears.png, gears.ppm\n"
                "                       in a build without PNG); an unknown extension is refused\n"
                "  -e, --eye-light      OpenGL-like headlight shading instead of Whitted\n"
+               "  -g, --gl             OpenGL's fixed-function look (RT_FIXED_FUNCTION)\n"
                "      --info           print the library version, renderer and configuration\n"
                "  -h, --help           display this help and exit\n"
                "  -V, --version        output version information and exit\n\n"
@@ -336,6 +351,7 @@ static int parse_options(int argc, char **argv, struct options *o, int *info, in
         {"headless", no_argument, NULL, 'H'},   {"frames", required_argument, NULL, 'n'},
         {"size", required_argument, NULL, 's'}, {"threads", required_argument, NULL, 't'},
         {"out", required_argument, NULL, 'o'},  {"eye-light", no_argument, NULL, 'e'},
+        {"gl", no_argument, NULL, 'g'},
         {"info", no_argument, NULL, OPT_INFO},  {"help", no_argument, NULL, 'h'},
         {"version", no_argument, NULL, 'V'},    {NULL, 0, NULL, 0}};
     int c;
@@ -345,13 +361,16 @@ static int parse_options(int argc, char **argv, struct options *o, int *info, in
     *info = 0;
     *status = 2;
     opterr = 0;
-    while ((c = getopt_long(argc, argv, ":Hn:s:t:o:ehV", long_options, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, ":Hn:s:t:o:eghV", long_options, NULL)) != -1) {
         switch (c) {
         case 'H':
             o->headless = 1;
             break;
         case 'e':
             o->eye_light = 1;
+            break;
+        case 'g':
+            o->gl = 1;
             break;
         case 'n':
             if (!demo_parse_int(optarg, 1, 1000000, &o->frames)) {
@@ -611,7 +630,7 @@ int main(int argc, char **argv)
     if (context == NULL)
         return 1;
 
-    init(o.eye_light);
+    init(o.eye_light, o.gl);
     reshape(o.width, o.height);
     if (demo_report_error("gears", "setting up the scene")) {
         rtDestroyContext(context);

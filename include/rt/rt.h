@@ -143,6 +143,7 @@ typedef struct rt_context *RTcontext;
 #define RT_EYE_LIGHT 0x8F21 /* headlight, no shadows: "OpenGL-like ray casting" */
 #define RT_WHITTED 0x8F22   /* Phong + hard shadows + reflection/refraction */
 #define RT_MAX_RAY_DEPTH 0x8F23 /* rtRenderParameteri: Whitted recursion depth */
+#define RT_FIXED_FUNCTION 0x8F24 /* OpenGL 1.x fixed-function look (the default) */
 /* rtRenderParameteri(RT_UPDATE_STRATEGY, s): the strategy of objects
  * without their own hint (RT_UPDATE_STRATEGY is defined below). */
 
@@ -253,6 +254,102 @@ typedef struct rt_context *RTcontext;
 #define RT_CLIP_PLANE4 0x3004
 #define RT_CLIP_PLANE5 0x3005
 #define RT_MAX_CLIP_PLANES 0x0D32 /* rtGetIntegerv: 6 */
+/* ---- OpenGL fixed-function state (docs/appearance.md, docs/fog.md,
+ *      docs/textures.md): GL's names with GL's values. ------------------ */
+#define RT_LIGHTING 0x0B50
+#define RT_LIGHT1 0x4001
+#define RT_LIGHT2 0x4002
+#define RT_LIGHT3 0x4003
+#define RT_LIGHT4 0x4004
+#define RT_LIGHT5 0x4005
+#define RT_LIGHT6 0x4006
+#define RT_LIGHT7 0x4007
+#define RT_LIGHT_MODEL_LOCAL_VIEWER 0x0B51
+#define RT_LIGHT_MODEL_TWO_SIDE 0x0B52
+#define RT_COLOR_MATERIAL_FACE 0x0B55
+#define RT_COLOR_MATERIAL_PARAMETER 0x0B56
+#define RT_SPOT_DIRECTION 0x1204
+#define RT_SPOT_EXPONENT 0x1205
+#define RT_SPOT_CUTOFF 0x1206
+#define RT_CULL_FACE 0x0B44
+#define RT_CULL_FACE_MODE 0x0B45
+#define RT_FRONT_FACE 0x0B46
+#define RT_CW 0x0900
+#define RT_CCW 0x0901
+#define RT_NORMALIZE 0x0BA1
+#define RT_RESCALE_NORMAL 0x803A
+#define RT_FOG 0x0B60
+#define RT_FOG_DENSITY 0x0B62
+#define RT_FOG_START 0x0B63
+#define RT_FOG_END 0x0B64
+#define RT_FOG_MODE 0x0B65
+#define RT_FOG_COLOR 0x0B66
+#define RT_EXP 0x0800
+#define RT_EXP2 0x0801
+#define RT_TEXTURE_ENV 0x2300
+#define RT_TEXTURE_ENV_MODE 0x2200
+#define RT_TEXTURE_ENV_COLOR 0x2201
+#define RT_MODULATE 0x2100
+#define RT_DECAL 0x2101
+#define RT_REPLACE 0x1E01
+/* rtTexGen (docs/textures.md). */
+#define RT_S 0x2000
+#define RT_T 0x2001
+#define RT_R 0x2002 /* refused: 2D textures only */
+#define RT_Q 0x2003 /* refused */
+#define RT_EYE_LINEAR 0x2400
+#define RT_OBJECT_LINEAR 0x2401
+#define RT_SPHERE_MAP 0x2402
+#define RT_TEXTURE_GEN_MODE 0x2500
+#define RT_OBJECT_PLANE 0x2501
+#define RT_EYE_PLANE 0x2502
+#define RT_TEXTURE_GEN_S 0x0C60
+#define RT_TEXTURE_GEN_T 0x0C61
+/* rtInterleavedArrays formats (GL 1.1 table 2.5). */
+#define RT_V2F 0x2A20
+#define RT_V3F 0x2A21
+#define RT_C4UB_V2F 0x2A22
+#define RT_C4UB_V3F 0x2A23
+#define RT_C3F_V3F 0x2A24
+#define RT_N3F_V3F 0x2A25
+#define RT_C4F_N3F_V3F 0x2A26
+#define RT_T2F_V3F 0x2A27
+#define RT_T4F_V4F 0x2A28 /* refused: no projective texture coordinates */
+#define RT_T2F_C4UB_V3F 0x2A29
+#define RT_T2F_C3F_V3F 0x2A2A
+#define RT_T2F_N3F_V3F 0x2A2B
+#define RT_T2F_C4F_N3F_V3F 0x2A2C
+#define RT_T4F_C4F_N3F_V4F 0x2A2D /* refused */
+/* Capabilities a ray tracer accepts with no effect (docs/appearance.md). */
+#define RT_DEPTH_TEST 0x0B71
+#define RT_DITHER 0x0BD0
+#define RT_POLYGON_OFFSET_FILL 0x8037
+/* rtHint targets and modes (accepted, no effect). */
+#define RT_PERSPECTIVE_CORRECTION_HINT 0x0C50
+#define RT_POINT_SMOOTH_HINT 0x0C51
+#define RT_LINE_SMOOTH_HINT 0x0C52
+#define RT_POLYGON_SMOOTH_HINT 0x0C53
+#define RT_FOG_HINT 0x0C54
+#define RT_DONT_CARE 0x1100
+#define RT_FASTEST 0x1101
+#define RT_NICEST 0x1102
+/* rtDepthFunc (accepted, no effect). */
+#define RT_NEVER 0x0200
+#define RT_LESS 0x0201
+#define RT_EQUAL 0x0202
+#define RT_LEQUAL 0x0203
+#define RT_GREATER 0x0204
+#define RT_NOTEQUAL 0x0205
+#define RT_GEQUAL 0x0206
+#define RT_ALWAYS 0x0207
+/* rtDrawBuffer / rtReadBuffer (accepted, no effect). */
+#define RT_NONE 0
+#define RT_FRONT_LEFT 0x0400
+#define RT_FRONT_RIGHT 0x0401
+#define RT_BACK_LEFT 0x0402
+#define RT_BACK_RIGHT 0x0403
+#define RT_LEFT 0x0406
+#define RT_RIGHT 0x0407
 
 /* ---- Ray queries ----------------------------------------------------- */
 /* A ray: points org + t*dir for t in [tmin, tmax].  dir need not be
@@ -382,6 +479,36 @@ RTAPI void rtLightfv(RTenum light, RTenum pname, const RTfloat *params);
 RTAPI void rtLightModelfv(RTenum pname, const RTfloat *params);
 RTAPI void rtShadingMode(RTenum mode);
 RTAPI void rtRenderParameteri(RTenum pname, RTint param);
+RTAPI void rtLightModelf(RTenum pname, RTfloat param);
+RTAPI void rtLightModeli(RTenum pname, RTint param);
+RTAPI void rtLightModeliv(RTenum pname, const RTint *params);
+RTAPI void rtColorMaterial(RTenum face, RTenum mode);
+RTAPI void rtCullFace(RTenum mode);
+RTAPI void rtFrontFace(RTenum mode);
+RTAPI void rtGetMaterialfv(RTenum face, RTenum pname, RTfloat *params);
+RTAPI void rtGetLightfv(RTenum light, RTenum pname, RTfloat *params);
+RTAPI void rtGetBooleanv(RTenum pname, RTboolean *params);
+RTAPI void rtFogf(RTenum pname, RTfloat param);
+RTAPI void rtFogi(RTenum pname, RTint param);
+RTAPI void rtFogfv(RTenum pname, const RTfloat *params);
+RTAPI void rtTexEnvi(RTenum target, RTenum pname, RTint param);
+RTAPI void rtTexEnvf(RTenum target, RTenum pname, RTfloat param);
+RTAPI void rtTexEnvfv(RTenum target, RTenum pname, const RTfloat *params);
+RTAPI void rtTexGeni(RTenum coord, RTenum pname, RTint param);
+RTAPI void rtTexGenf(RTenum coord, RTenum pname, RTfloat param);
+RTAPI void rtTexGenfv(RTenum coord, RTenum pname, const RTfloat *params);
+RTAPI void rtInterleavedArrays(RTenum format, RTsizei stride, const void *pointer);
+/* Accepted with no effect: a ray tracer has no depth buffer, no double
+ * buffering, no rasterisation hints and no compiled vertex arrays. */
+RTAPI void rtHint(RTenum target, RTenum mode);
+RTAPI void rtDrawBuffer(RTenum mode);
+RTAPI void rtReadBuffer(RTenum mode);
+RTAPI void rtDepthFunc(RTenum func);
+RTAPI void rtDepthRange(RTdouble zNear, RTdouble zFar);
+RTAPI void rtClearDepth(RTdouble depth);
+RTAPI void rtPolygonOffset(RTfloat factor, RTfloat units);
+RTAPI void rtLockArraysEXT(RTint first, RTsizei count);
+RTAPI void rtUnlockArraysEXT(void);
 
 /* ---- Textures (docs/textures.md) -------------------------------------- */
 RTAPI void rtGenTextures(RTsizei n, RTuint *textures);

@@ -3,14 +3,19 @@
  * appearance.c - materials, lights, the light model, shading modes and
  * render parameters.
  *
- * Materials are two-sided: RT_FRONT, RT_BACK and RT_FRONT_AND_BACK all set
- * the one material (a ray tracer sees both sides of every triangle).
- * Light positions are transformed by the modelview at the call, as GL.
+ * Materials have a front and a back (GL): RT_FRONT sets the front,
+ * RT_BACK the back and RT_FRONT_AND_BACK both.  The RT_FIXED_FUNCTION mode
+ * lights back faces with the back material under RT_LIGHT_MODEL_TWO_SIDE;
+ * the eye-light and Whitted modes use the front material on both sides.
+ * The ray tracing parameters (reflectivity, transparency, index of
+ * refraction) have no back: any face sets them.  Light positions and spot
+ * directions are transformed by the modelview at the call, as GL.
  */
 #include <math.h>
 #include <string.h>
 
 #include "api/context.h"
+#include "api/enum_names.h"
 #include "base/mat4.h"
 
 /* Number of values a material pname takes; 0 for an unknown pname. */
@@ -33,19 +38,30 @@ static int material_size(RTenum pname)
     }
 }
 
+static void set_colour(float *front, float *back, RTenum face, const RTfloat *params)
+{
+    if (face != RT_BACK)
+        memcpy(front, params, 4 * sizeof(float));
+    if (face != RT_FRONT)
+        memcpy(back, params, 4 * sizeof(float));
+}
+
 static void material(const char *caller, RTenum face, RTenum pname, const RTfloat *params,
                      int scalar_only)
 {
     GET_CURRENT_CONTEXT(ctx);
     if (!ctx)
         return;
+    char b1[RT_ENUM_STRING_SIZE];
     if (face != RT_FRONT && face != RT_BACK && face != RT_FRONT_AND_BACK) {
-        rt_error(ctx, RT_INVALID_ENUM, "%s(face=0x%x)", caller, face);
+        rt_error(ctx, RT_INVALID_ENUM, "%s(face=%s): not a face", caller,
+                 rt_enum_string(face, b1));
         return;
     }
     int n = material_size(pname);
     if (n == 0 || (scalar_only && n != 1)) {
-        rt_error(ctx, RT_INVALID_ENUM, "%s(pname=0x%x)", caller, pname);
+        rt_error(ctx, RT_INVALID_ENUM, "%s(pname=%s): not a material parameter", caller,
+                 rt_enum_string(pname, b1));
         return;
     }
     if (!params) {
@@ -59,31 +75,34 @@ static void material(const char *caller, RTenum face, RTenum pname, const RTfloa
               ((pname == RT_REFLECTIVITY || pname == RT_TRANSPARENCY) && (v < 0.0f || v > 1.0f)) ||
               (pname == RT_INDEX_OF_REFRACTION && !(v > 0.0f));
     if (bad) {
-        rt_error(ctx, RT_INVALID_VALUE, "%s(pname=0x%x, value=%g): out of range", caller, pname,
-                 (double)v);
+        rt_error(ctx, RT_INVALID_VALUE, "%s(pname=%s, value=%g): out of range", caller,
+                 rt_enum_string(pname, b1), (double)v);
         return;
     }
     rt_list_state(ctx, LIST_MATERIAL, face, pname, params, n);
     struct scene_material m = ctx->material;
     switch (pname) {
     case RT_AMBIENT:
-        memcpy(m.ambient, params, sizeof(m.ambient));
+        set_colour(m.ambient, m.back_ambient, face, params);
         break;
     case RT_DIFFUSE:
-        memcpy(m.diffuse, params, sizeof(m.diffuse));
+        set_colour(m.diffuse, m.back_diffuse, face, params);
         break;
     case RT_AMBIENT_AND_DIFFUSE:
-        memcpy(m.ambient, params, sizeof(m.ambient));
-        memcpy(m.diffuse, params, sizeof(m.diffuse));
+        set_colour(m.ambient, m.back_ambient, face, params);
+        set_colour(m.diffuse, m.back_diffuse, face, params);
         break;
     case RT_SPECULAR:
-        memcpy(m.specular, params, sizeof(m.specular));
+        set_colour(m.specular, m.back_specular, face, params);
         break;
     case RT_EMISSION:
-        memcpy(m.emission, params, sizeof(m.emission));
+        set_colour(m.emission, m.back_emission, face, params);
         break;
     case RT_SHININESS:
-        m.shininess = v;
+        if (face != RT_BACK)
+            m.shininess = v;
+        if (face != RT_FRONT)
+            m.back_shininess = v;
         break;
     case RT_REFLECTIVITY:
         m.reflectivity = v;
@@ -125,7 +144,11 @@ static int light_size(RTenum pname)
     case RT_CONSTANT_ATTENUATION:
     case RT_LINEAR_ATTENUATION:
     case RT_QUADRATIC_ATTENUATION:
+    case RT_SPOT_EXPONENT:
+    case RT_SPOT_CUTOFF:
         return 1;
+    case RT_SPOT_DIRECTION:
+        return 3;
     default:
         return 0;
     }
@@ -137,13 +160,16 @@ static void light(const char *caller, RTenum which, RTenum pname, const RTfloat 
     GET_CURRENT_CONTEXT(ctx);
     if (!ctx || rt_check_outside_begin(ctx, caller))
         return;
+    char b1[RT_ENUM_STRING_SIZE];
     if (which < RT_LIGHT0 || which >= RT_LIGHT0 + RENDER_MAX_LIGHTS) {
-        rt_error(ctx, RT_INVALID_ENUM, "%s(light=0x%x)", caller, which);
+        rt_error(ctx, RT_INVALID_ENUM, "%s(light=%s): not RT_LIGHT0 .. RT_LIGHT7", caller,
+                 rt_enum_string(which, b1));
         return;
     }
     int n = light_size(pname);
     if (n == 0 || (scalar_only && n != 1)) {
-        rt_error(ctx, RT_INVALID_ENUM, "%s(pname=0x%x)", caller, pname);
+        rt_error(ctx, RT_INVALID_ENUM, "%s(pname=%s): not a light parameter", caller,
+                 rt_enum_string(pname, b1));
         return;
     }
     if (!params) {
@@ -152,9 +178,18 @@ static void light(const char *caller, RTenum which, RTenum pname, const RTfloat 
     }
     if (!rt_check_finite(ctx, caller, params, n))
         return;
-    if (n == 1 && params[0] < 0.0f) {
-        rt_error(ctx, RT_INVALID_VALUE, "%s(attenuation=%g): negative", caller,
-                 (double)params[0]);
+    /* GL's ranges: attenuations and the exponent >= 0 (exponent <= 128),
+     * the cutoff in [0, 90] or 180. */
+    int bad = 0;
+    if (pname == RT_SPOT_EXPONENT)
+        bad = params[0] < 0.0f || params[0] > 128.0f;
+    else if (pname == RT_SPOT_CUTOFF)
+        bad = (params[0] < 0.0f || params[0] > 90.0f) && params[0] != 180.0f;
+    else if (n == 1)
+        bad = params[0] < 0.0f;
+    if (bad) {
+        rt_error(ctx, RT_INVALID_VALUE, "%s(pname=%s, value=%g): out of range", caller,
+                 rt_enum_string(pname, b1), (double)params[0]);
         return;
     }
     rt_list_state(ctx, LIST_LIGHT, which, pname, params, n);
@@ -183,6 +218,23 @@ static void light(const char *caller, RTenum which, RTenum pname, const RTfloat 
         memcpy(l->position, f, sizeof(f));
         break;
     }
+    case RT_SPOT_DIRECTION: {
+        /* A direction: the modelview's upper 3x3 at the call (GL). */
+        const double *m = ctx->modelview.m[ctx->modelview.depth - 1];
+        float f[3];
+        for (int r = 0; r < 3; r++)
+            f[r] = (float)(m[r] * params[0] + m[4 + r] * params[1] + m[8 + r] * params[2]);
+        if (!rt_check_finite(ctx, caller, f, 3))
+            return;
+        memcpy(l->spot_direction, f, sizeof(f));
+        break;
+    }
+    case RT_SPOT_EXPONENT:
+        l->spot_exponent = params[0];
+        break;
+    case RT_SPOT_CUTOFF:
+        l->spot_cutoff = params[0];
+        break;
     case RT_CONSTANT_ATTENUATION:
         l->attenuation[0] = params[0];
         break;
@@ -206,23 +258,64 @@ void rtLightfv(RTenum which, RTenum pname, const RTfloat *params)
     light("rtLightfv", which, pname, params, 0);
 }
 
-void rtLightModelfv(RTenum pname, const RTfloat *params)
+/* rtLightModel*: the ambient colour (vector forms only), the local
+ * viewer and two-sided lighting (any form; non-zero is true). */
+static void light_model(const char *caller, RTenum pname, const RTfloat *params, int vector)
 {
     GET_CURRENT_CONTEXT(ctx);
-    if (!ctx || rt_check_outside_begin(ctx, "rtLightModelfv"))
+    if (!ctx || rt_check_outside_begin(ctx, caller))
         return;
-    if (pname != RT_LIGHT_MODEL_AMBIENT) {
-        rt_error(ctx, RT_INVALID_ENUM, "rtLightModelfv(pname=0x%x)", pname);
+    char b1[RT_ENUM_STRING_SIZE];
+    if (pname != RT_LIGHT_MODEL_LOCAL_VIEWER && pname != RT_LIGHT_MODEL_TWO_SIDE &&
+        (pname != RT_LIGHT_MODEL_AMBIENT || !vector)) {
+        rt_error(ctx, RT_INVALID_ENUM, "%s(pname=%s): not a light model parameter%s", caller,
+                 rt_enum_string(pname, b1),
+                 pname == RT_LIGHT_MODEL_AMBIENT ? " for a scalar call" : "");
         return;
     }
     if (!params) {
-        rt_error(ctx, RT_INVALID_VALUE, "rtLightModelfv(params=NULL)");
+        rt_error(ctx, RT_INVALID_VALUE, "%s(params=NULL)", caller);
         return;
     }
-    if (!rt_check_finite(ctx, "rtLightModelfv", params, 4))
+    if (!rt_check_finite(ctx, caller, params, pname == RT_LIGHT_MODEL_AMBIENT ? 4 : 1))
         return;
-    rt_list_state(ctx, LIST_LIGHT_MODEL, pname, 0, params, 4);
-    memcpy(ctx->render.global_ambient, params, 4 * sizeof(float));
+    rt_list_state(ctx, LIST_LIGHT_MODEL, pname, 0, params,
+                  pname == RT_LIGHT_MODEL_AMBIENT ? 4 : 1);
+    if (pname == RT_LIGHT_MODEL_AMBIENT)
+        memcpy(ctx->render.global_ambient, params, 4 * sizeof(float));
+    else if (pname == RT_LIGHT_MODEL_TWO_SIDE)
+        ctx->render.light_model_two_side = params[0] != 0.0f;
+    else
+        ctx->render.light_model_local_viewer = params[0] != 0.0f;
+}
+
+void rtLightModelfv(RTenum pname, const RTfloat *params)
+{
+    light_model("rtLightModelfv", pname, params, 1);
+}
+
+void rtLightModelf(RTenum pname, RTfloat param)
+{
+    light_model("rtLightModelf", pname, &param, 0);
+}
+
+void rtLightModeli(RTenum pname, RTint param)
+{
+    RTfloat f = (RTfloat)param;
+    light_model("rtLightModeli", pname, &f, 0);
+}
+
+void rtLightModeliv(RTenum pname, const RTint *params)
+{
+    /* GL maps integer colours linearly, the largest integer to 1.0. */
+    RTfloat f[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    if (params) {
+        int n = pname == RT_LIGHT_MODEL_AMBIENT ? 4 : 1;
+        for (int i = 0; i < n; i++)
+            f[i] = pname == RT_LIGHT_MODEL_AMBIENT ? (RTfloat)((double)params[i] / 2147483647.0)
+                                                  : (RTfloat)params[i];
+    }
+    light_model("rtLightModeliv", pname, params ? f : NULL, 1);
 }
 
 void rtShadingMode(RTenum mode)
@@ -230,11 +323,212 @@ void rtShadingMode(RTenum mode)
     GET_CURRENT_CONTEXT(ctx);
     if (!ctx || rt_check_outside_begin(ctx, "rtShadingMode"))
         return;
-    if (mode != RT_EYE_LIGHT && mode != RT_WHITTED) {
-        rt_error(ctx, RT_INVALID_ENUM, "rtShadingMode(mode=0x%x)", mode);
+    char b1[RT_ENUM_STRING_SIZE];
+    if (mode != RT_EYE_LIGHT && mode != RT_WHITTED && mode != RT_FIXED_FUNCTION) {
+        rt_error(ctx, RT_INVALID_ENUM,
+                 "rtShadingMode(mode=%s): not RT_FIXED_FUNCTION, RT_EYE_LIGHT or RT_WHITTED",
+                 rt_enum_string(mode, b1));
         return;
     }
-    ctx->render.shading = mode == RT_WHITTED ? RENDER_WHITTED : RENDER_EYE_LIGHT;
+    ctx->render.shading = mode == RT_WHITTED       ? RENDER_WHITTED
+                          : mode == RT_EYE_LIGHT ? RENDER_EYE_LIGHT
+                                                 : RENDER_FIXED_FUNCTION;
+}
+
+void rt_sync_fixed_function(struct rt_context *ctx)
+{
+    struct scene_material m = ctx->material;
+    m.cull_face = SCENE_CULL_NONE;
+    if (ctx->cull_face_enabled)
+        m.cull_face = ctx->cull_face_mode == RT_FRONT  ? SCENE_CULL_FRONT
+                      : ctx->cull_face_mode == RT_BACK ? SCENE_CULL_BACK
+                                                       : SCENE_CULL_BOTH;
+    m.normalize = ctx->normalize_enabled        ? SCENE_NORMALIZE_ON
+                  : ctx->rescale_normal_enabled ? SCENE_NORMALIZE_RESCALE
+                                                : SCENE_NORMALIZE_OFF;
+    for (int i = 0; i < 2; i++) {
+        /* Planes only while generating, so the disabled ones do not split
+         * materials. */
+        int on = ctx->texgen_enabled[i];
+        m.texgen_mode[i] = on ? ctx->texgen_mode[i] : 0;
+        for (int k = 0; k < 4; k++) {
+            m.texgen_object_plane[i][k] = on ? ctx->texgen_object_plane[i][k] : 0.0f;
+            m.texgen_eye_plane[i][k] = on ? ctx->texgen_eye_plane[i][k] : 0.0f;
+        }
+    }
+    if (memcmp(&m, &ctx->material, sizeof(m)) == 0)
+        return;
+    ctx->material = m;
+    ctx->recording.material_index = -1;
+}
+
+void rtColorMaterial(RTenum face, RTenum mode)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_begin(ctx, "rtColorMaterial"))
+        return;
+    char b1[RT_ENUM_STRING_SIZE];
+    if (face != RT_FRONT && face != RT_BACK && face != RT_FRONT_AND_BACK) {
+        rt_error(ctx, RT_INVALID_ENUM, "rtColorMaterial(face=%s): not a face",
+                 rt_enum_string(face, b1));
+        return;
+    }
+    if (mode != RT_AMBIENT && mode != RT_DIFFUSE && mode != RT_SPECULAR && mode != RT_EMISSION &&
+        mode != RT_AMBIENT_AND_DIFFUSE) {
+        rt_error(ctx, RT_INVALID_ENUM, "rtColorMaterial(mode=%s): not a material colour",
+                 rt_enum_string(mode, b1));
+        return;
+    }
+    if (ctx->material.color_material_face == face && ctx->material.color_material_mode == mode)
+        return;
+    ctx->material.color_material_face = face;
+    ctx->material.color_material_mode = mode;
+    ctx->recording.material_index = -1;
+}
+
+void rtCullFace(RTenum mode)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_begin(ctx, "rtCullFace"))
+        return;
+    char b1[RT_ENUM_STRING_SIZE];
+    if (mode != RT_FRONT && mode != RT_BACK && mode != RT_FRONT_AND_BACK) {
+        rt_error(ctx, RT_INVALID_ENUM, "rtCullFace(mode=%s): not a face",
+                 rt_enum_string(mode, b1));
+        return;
+    }
+    ctx->cull_face_mode = mode;
+    rt_sync_fixed_function(ctx);
+}
+
+void rtFrontFace(RTenum mode)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_begin(ctx, "rtFrontFace"))
+        return;
+    char b1[RT_ENUM_STRING_SIZE];
+    if (mode != RT_CW && mode != RT_CCW) {
+        rt_error(ctx, RT_INVALID_ENUM, "rtFrontFace(mode=%s): not RT_CW or RT_CCW",
+                 rt_enum_string(mode, b1));
+        return;
+    }
+    uint8_t cw = mode == RT_CW;
+    if (ctx->material.front_cw == cw)
+        return;
+    ctx->material.front_cw = cw;
+    ctx->recording.material_index = -1;
+}
+
+void rtGetMaterialfv(RTenum face, RTenum pname, RTfloat *params)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_begin(ctx, "rtGetMaterialfv"))
+        return;
+    char b1[RT_ENUM_STRING_SIZE];
+    if (face != RT_FRONT && face != RT_BACK) {
+        rt_error(ctx, RT_INVALID_ENUM, "rtGetMaterialfv(face=%s): not RT_FRONT or RT_BACK",
+                 rt_enum_string(face, b1));
+        return;
+    }
+    int n = material_size(pname);
+    if (n == 0 || pname == RT_AMBIENT_AND_DIFFUSE) {
+        rt_error(ctx, RT_INVALID_ENUM, "rtGetMaterialfv(pname=%s): not a material parameter",
+                 rt_enum_string(pname, b1));
+        return;
+    }
+    if (!params) {
+        rt_error(ctx, RT_INVALID_VALUE, "rtGetMaterialfv(params=NULL)");
+        return;
+    }
+    const struct scene_material *m = &ctx->material;
+    const int back = face == RT_BACK;
+    const float *src;
+    switch (pname) {
+    case RT_AMBIENT:
+        src = back ? m->back_ambient : m->ambient;
+        break;
+    case RT_DIFFUSE:
+        src = back ? m->back_diffuse : m->diffuse;
+        break;
+    case RT_SPECULAR:
+        src = back ? m->back_specular : m->specular;
+        break;
+    case RT_EMISSION:
+        src = back ? m->back_emission : m->emission;
+        break;
+    case RT_SHININESS:
+        src = back ? &m->back_shininess : &m->shininess;
+        break;
+    case RT_REFLECTIVITY:
+        src = &m->reflectivity;
+        break;
+    case RT_TRANSPARENCY:
+        src = &m->transparency;
+        break;
+    default:
+        src = &m->ior;
+        break;
+    }
+    memcpy(params, src, (size_t)n * sizeof(float));
+}
+
+void rtGetLightfv(RTenum which, RTenum pname, RTfloat *params)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_begin(ctx, "rtGetLightfv"))
+        return;
+    char b1[RT_ENUM_STRING_SIZE];
+    if (which < RT_LIGHT0 || which >= RT_LIGHT0 + RENDER_MAX_LIGHTS) {
+        rt_error(ctx, RT_INVALID_ENUM, "rtGetLightfv(light=%s): not RT_LIGHT0 .. RT_LIGHT7",
+                 rt_enum_string(which, b1));
+        return;
+    }
+    int n = light_size(pname);
+    if (n == 0) {
+        rt_error(ctx, RT_INVALID_ENUM, "rtGetLightfv(pname=%s): not a light parameter",
+                 rt_enum_string(pname, b1));
+        return;
+    }
+    if (!params) {
+        rt_error(ctx, RT_INVALID_VALUE, "rtGetLightfv(params=NULL)");
+        return;
+    }
+    /* As GL: positions and directions in eye coordinates. */
+    const struct render_light *l = &ctx->render.lights[which - RT_LIGHT0];
+    const float *src;
+    switch (pname) {
+    case RT_AMBIENT:
+        src = l->ambient;
+        break;
+    case RT_DIFFUSE:
+        src = l->diffuse;
+        break;
+    case RT_SPECULAR:
+        src = l->specular;
+        break;
+    case RT_POSITION:
+        src = l->position;
+        break;
+    case RT_SPOT_DIRECTION:
+        src = l->spot_direction;
+        break;
+    case RT_SPOT_EXPONENT:
+        src = &l->spot_exponent;
+        break;
+    case RT_SPOT_CUTOFF:
+        src = &l->spot_cutoff;
+        break;
+    case RT_CONSTANT_ATTENUATION:
+        src = &l->attenuation[0];
+        break;
+    case RT_LINEAR_ATTENUATION:
+        src = &l->attenuation[1];
+        break;
+    default:
+        src = &l->attenuation[2];
+        break;
+    }
+    memcpy(params, src, (size_t)n * sizeof(float));
 }
 
 void rtRenderParameteri(RTenum pname, RTint param)
@@ -244,15 +538,17 @@ void rtRenderParameteri(RTenum pname, RTint param)
         return;
     if (pname == RT_UPDATE_STRATEGY) {
         if (!rt_strategy_is_valid((RTenum)param)) {
-            rt_error(ctx, RT_INVALID_ENUM, "rtRenderParameteri(RT_UPDATE_STRATEGY, 0x%x)",
-                     (RTenum)param);
+            char b1[RT_ENUM_STRING_SIZE];
+            rt_error(ctx, RT_INVALID_ENUM, "rtRenderParameteri(RT_UPDATE_STRATEGY, %s)",
+                     rt_enum_string((RTenum)param, b1));
             return;
         }
         ctx->scene.default_strategy = (RTenum)param;
         return;
     }
     if (pname != RT_MAX_RAY_DEPTH) {
-        rt_error(ctx, RT_INVALID_ENUM, "rtRenderParameteri(pname=0x%x)", pname);
+        char b1[RT_ENUM_STRING_SIZE];
+        rt_error(ctx, RT_INVALID_ENUM, "rtRenderParameteri(pname=%s)", rt_enum_string(pname, b1));
         return;
     }
     if (param < 0 || param > API_MAX_RAY_DEPTH_LIMIT) {

@@ -209,7 +209,7 @@ static void matrix_stack_init(struct matrix_stack *s, int max_depth)
 static void render_state_init(struct render_state *r)
 {
     memset(r, 0, sizeof(*r));
-    r->shading = RENDER_EYE_LIGHT;
+    r->shading = RENDER_FIXED_FUNCTION; /* GL's look (docs/appearance.md) */
     r->max_depth = 3; /* Wald, Benthin and Slusallek (2003) tables 1 and 2: three reflection levels */
     r->clear_color[3] = 0.0f;
     for (int k = 0; k < 3; k++)
@@ -225,7 +225,12 @@ static void render_state_init(struct render_state *r)
         l->diffuse[3] = l->specular[3] = 1.0f;
         l->position[2] = 1.0f; /* (0, 0, 1, 0): directional, towards +z */
         l->attenuation[0] = 1.0f;
+        l->spot_direction[2] = -1.0f;
+        l->spot_cutoff = 180.0f;
     }
+    r->fog.mode = RT_EXP;
+    r->fog.density = 1.0f;
+    r->fog.end = 1.0f;
     mat4_identity(r->projection);
     r->vis.line_width = 1.0f;
     r->vis.point_size = 1.0f;
@@ -291,6 +296,12 @@ RTcontext rtCreateContextWithReason(const char *configuration, RTsizei bufSize, 
     ctx->recording.mesh.bounds = aabb_empty();
     scene_init(&ctx->scene, &ctx->build_params, ctx->build_threads, ctx->toplevel_cellsplit);
     render_state_init(&ctx->render);
+    ctx->cull_face_mode = RT_BACK;
+    ctx->dither = 1; /* GL's default */
+    for (int i = 0; i < 2; i++) {
+        ctx->texgen_mode[i] = RT_EYE_LINEAR;
+        ctx->texgen_object_plane[i][i] = ctx->texgen_eye_plane[i][i] = 1.0f;
+    }
     return ctx;
 }
 

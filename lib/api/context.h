@@ -141,7 +141,29 @@ struct rt_context {
     int raster_valid;
     float raster_color[4];
     struct render_overlay overlay;
+    /* GL fixed-function switches (appearance.c, get.c).  Those that GL
+     * applies per primitive reach the triangles through ctx->material's
+     * appended fields (rt_sync_fixed_function); RT_LIGHTING lives there
+     * directly (material.lighting). */
+    int cull_face_enabled;  /* RT_CULL_FACE */
+    RTenum cull_face_mode;  /* rtCullFace, RT_BACK by default */
+    int normalize_enabled;  /* RT_NORMALIZE */
+    int rescale_normal_enabled; /* RT_RESCALE_NORMAL */
+    /* Accepted capabilities without a ray tracing meaning: remembered
+     * for rtIsEnabled only. */
+    int depth_test, dither, polygon_offset_fill;
+    /* rtTexGen for s (0) and t (1) (fixed_function.c); recorded through
+     * ctx->material by rt_sync_fixed_function while enabled. */
+    int texgen_enabled[2];  /* RT_TEXTURE_GEN_S, RT_TEXTURE_GEN_T */
+    RTenum texgen_mode[2];  /* RT_EYE_LINEAR initially */
+    float texgen_object_plane[2][4];
+    float texgen_eye_plane[2][4]; /* in eye space */
 };
+
+/* Derives ctx->material's culling and normalisation fields from the
+ * switches above, re-interning the material when they changed
+ * (appearance.c). */
+void rt_sync_fixed_function(struct rt_context *ctx);
 
 /* The calling thread's current context, or NULL. */
 struct rt_context *rt_current_context(void);

@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "api/context.h"
+#include "api/enum_names.h"
 
 /* GL form: "<version> <vendor-specific>"; the numbers come from the
  * generated rt_version.h, so the string cannot drift from the package. */
@@ -108,8 +109,45 @@ static enum value_kind state_values(const struct rt_context *ctx, RTenum pname, 
         v[0] = scene_async_threads_running(&ctx->scene.async);
         return VALUE_INT;
     case RT_SHADING_MODE:
-        v[0] = ctx->render.shading == RENDER_WHITTED ? RT_WHITTED : RT_EYE_LIGHT;
+        v[0] = ctx->render.shading == RENDER_WHITTED     ? RT_WHITTED
+               : ctx->render.shading == RENDER_EYE_LIGHT ? RT_EYE_LIGHT
+                                                         : RT_FIXED_FUNCTION;
         return VALUE_INT;
+    case RT_COLOR_MATERIAL_FACE:
+        v[0] = ctx->material.color_material_face;
+        return VALUE_INT;
+    case RT_COLOR_MATERIAL_PARAMETER:
+        v[0] = ctx->material.color_material_mode;
+        return VALUE_INT;
+    case RT_CULL_FACE_MODE:
+        v[0] = ctx->cull_face_mode;
+        return VALUE_INT;
+    case RT_FRONT_FACE:
+        v[0] = ctx->material.front_cw ? RT_CW : RT_CCW;
+        return VALUE_INT;
+    case RT_LIGHT_MODEL_TWO_SIDE:
+        v[0] = ctx->render.light_model_two_side;
+        return VALUE_INT;
+    case RT_LIGHT_MODEL_LOCAL_VIEWER:
+        v[0] = ctx->render.light_model_local_viewer;
+        return VALUE_INT;
+    case RT_FOG_MODE:
+        v[0] = ctx->render.fog.mode;
+        return VALUE_INT;
+    case RT_FOG_DENSITY:
+        v[0] = ctx->render.fog.density;
+        return VALUE_FLOAT;
+    case RT_FOG_START:
+        v[0] = ctx->render.fog.start;
+        return VALUE_FLOAT;
+    case RT_FOG_END:
+        v[0] = ctx->render.fog.end;
+        return VALUE_FLOAT;
+    case RT_FOG_COLOR:
+        for (int i = 0; i < 4; i++)
+            v[i] = ctx->render.fog.color[i];
+        *count = 4;
+        return VALUE_FLOAT;
     case RT_MAX_RAY_DEPTH:
         v[0] = ctx->render.max_depth;
         return VALUE_INT;
@@ -234,7 +272,8 @@ void rtGetIntegerv(RTenum pname, RTint *params)
     int n;
     enum value_kind kind = state_values(ctx, pname, v, &n);
     if (kind != VALUE_INT) {
-        rt_error(ctx, RT_INVALID_ENUM, "rtGetIntegerv(pname=0x%x)", pname);
+        char b1[RT_ENUM_STRING_SIZE];
+        rt_error(ctx, RT_INVALID_ENUM, "rtGetIntegerv(pname=%s)", rt_enum_string(pname, b1));
         return;
     }
     if (!params) {
@@ -253,7 +292,8 @@ void rtGetFloatv(RTenum pname, RTfloat *params)
     double v[16];
     int n;
     if (state_values(ctx, pname, v, &n) == VALUE_NONE) {
-        rt_error(ctx, RT_INVALID_ENUM, "rtGetFloatv(pname=0x%x)", pname);
+        char b1[RT_ENUM_STRING_SIZE];
+        rt_error(ctx, RT_INVALID_ENUM, "rtGetFloatv(pname=%s)", rt_enum_string(pname, b1));
         return;
     }
     if (!params) {
@@ -264,20 +304,44 @@ void rtGetFloatv(RTenum pname, RTfloat *params)
         params[i] = (RTfloat)v[i];
 }
 
-/* The flag behind a capability, or NULL when cap is not one. */
+/* The flag behind a capability, or NULL when cap is not one.  RT_LIGHTING
+ * is the material's byte (per primitive, as GL) and handled by the
+ * callers. */
 static int *capability(struct rt_context *ctx, RTenum cap)
 {
     if (cap >= RT_LIGHT0 && cap < RT_LIGHT0 + RENDER_MAX_LIGHTS)
         return &ctx->render.lights[cap - RT_LIGHT0].enabled;
-    if (cap == RT_COLOR_MATERIAL)
+    switch (cap) {
+    case RT_COLOR_MATERIAL:
         return &ctx->color_material;
-    if (cap == RT_TEXTURE_2D)
+    case RT_TEXTURE_2D:
         return &ctx->texture_2d;
-    if (cap == RT_BLEND)
+    case RT_CULL_FACE:
+        return &ctx->cull_face_enabled;
+    case RT_NORMALIZE:
+        return &ctx->normalize_enabled;
+    case RT_RESCALE_NORMAL:
+        return &ctx->rescale_normal_enabled;
+    case RT_FOG:
+        return &ctx->render.fog.enabled;
+    case RT_TEXTURE_GEN_S:
+        return &ctx->texgen_enabled[0];
+    case RT_TEXTURE_GEN_T:
+        return &ctx->texgen_enabled[1];
+    case RT_BLEND:
         return &ctx->render.vis.blend;
-    if (cap >= RT_CLIP_PLANE0 && cap < RT_CLIP_PLANE0 + RENDER_MAX_CLIP_PLANES)
-        return &ctx->render.vis.clip_enabled[cap - RT_CLIP_PLANE0];
-    return NULL;
+    /* No ray tracing meaning: accepted and remembered (docs/appearance.md). */
+    case RT_DEPTH_TEST:
+        return &ctx->depth_test;
+    case RT_DITHER:
+        return &ctx->dither;
+    case RT_POLYGON_OFFSET_FILL:
+        return &ctx->polygon_offset_fill;
+    default:
+        if (cap >= RT_CLIP_PLANE0 && cap < RT_CLIP_PLANE0 + RENDER_MAX_CLIP_PLANES)
+            return &ctx->render.vis.clip_enabled[cap - RT_CLIP_PLANE0];
+        return NULL;
+    }
 }
 
 static void set_capability(const char *caller, RTenum cap, int value)
@@ -285,13 +349,26 @@ static void set_capability(const char *caller, RTenum cap, int value)
     GET_CURRENT_CONTEXT(ctx);
     if (!ctx || rt_check_outside_begin(ctx, caller))
         return;
+    if (cap == RT_LIGHTING) {
+        rt_list_state(ctx, value ? LIST_ENABLE : LIST_DISABLE, cap, 0, NULL, 0);
+        if (ctx->material.lighting != (uint8_t)value) {
+            ctx->material.lighting = (uint8_t)value;
+            ctx->recording.material_index = -1;
+        }
+        return;
+    }
     int *flag = capability(ctx, cap);
     if (!flag) {
-        rt_error(ctx, RT_INVALID_ENUM, "%s(cap=0x%x)", caller, cap);
+        char b1[RT_ENUM_STRING_SIZE];
+        rt_error(ctx, RT_INVALID_ENUM, "%s(cap=%s): not a capability", caller,
+                 rt_enum_string(cap, b1));
         return;
     }
     rt_list_state(ctx, value ? LIST_ENABLE : LIST_DISABLE, cap, 0, NULL, 0);
     *flag = value;
+    if (cap == RT_CULL_FACE || cap == RT_NORMALIZE || cap == RT_RESCALE_NORMAL ||
+        cap == RT_TEXTURE_GEN_S || cap == RT_TEXTURE_GEN_T)
+        rt_sync_fixed_function(ctx);
 }
 
 void rtEnable(RTenum cap)
@@ -309,10 +386,44 @@ RTboolean rtIsEnabled(RTenum cap)
     GET_CURRENT_CONTEXT(ctx);
     if (!ctx || rt_check_outside_begin(ctx, "rtIsEnabled"))
         return RT_FALSE;
+    if (cap == RT_LIGHTING)
+        return ctx->material.lighting ? RT_TRUE : RT_FALSE;
     int *flag = capability(ctx, cap);
     if (!flag) {
-        rt_error(ctx, RT_INVALID_ENUM, "rtIsEnabled(cap=0x%x)", cap);
+        char b1[RT_ENUM_STRING_SIZE];
+        rt_error(ctx, RT_INVALID_ENUM, "rtIsEnabled(cap=%s): not a capability",
+                 rt_enum_string(cap, b1));
         return RT_FALSE;
     }
     return *flag ? RT_TRUE : RT_FALSE;
+}
+
+/* GL: a capability reads as its flag; any other state as "non-zero". */
+void rtGetBooleanv(RTenum pname, RTboolean *params)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx)
+        return;
+    double v[16];
+    int n;
+    char b1[RT_ENUM_STRING_SIZE];
+    int *flag = pname == RT_LIGHTING ? NULL : capability(ctx, pname);
+    if (pname == RT_LIGHTING || flag) {
+        if (!params) {
+            rt_error(ctx, RT_INVALID_VALUE, "rtGetBooleanv(params=NULL)");
+            return;
+        }
+        params[0] = (pname == RT_LIGHTING ? ctx->material.lighting : *flag) ? RT_TRUE : RT_FALSE;
+        return;
+    }
+    if (state_values(ctx, pname, v, &n) == VALUE_NONE) {
+        rt_error(ctx, RT_INVALID_ENUM, "rtGetBooleanv(pname=%s)", rt_enum_string(pname, b1));
+        return;
+    }
+    if (!params) {
+        rt_error(ctx, RT_INVALID_VALUE, "rtGetBooleanv(params=NULL)");
+        return;
+    }
+    for (int i = 0; i < n; i++)
+        params[i] = v[i] != 0.0 ? RT_TRUE : RT_FALSE;
 }

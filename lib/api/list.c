@@ -172,10 +172,21 @@ void rt_list_state(struct rt_context *ctx, enum list_state_call what, RTenum b, 
                      {RT_REFLECTIVITY, SCENE_MATERIAL_REFLECTIVITY},
                      {RT_TRANSPARENCY, SCENE_MATERIAL_TRANSPARENCY},
                      {RT_INDEX_OF_REFRACTION, SCENE_MATERIAL_IOR}};
+        /* The face: RT_FRONT the front bits, RT_BACK the back ones (only
+         * GL's five lighting properties have a back side). */
         for (size_t i = 0; i < sizeof(props) / sizeof(props[0]); i++)
-            if (props[i].pname == c)
-                rec->material_set |= props[i].bits;
+            if (props[i].pname == c) {
+                uint32_t lit = props[i].bits & (SCENE_MATERIAL_AMBIENT | SCENE_MATERIAL_DIFFUSE |
+                                                SCENE_MATERIAL_SPECULAR | SCENE_MATERIAL_EMISSION |
+                                                SCENE_MATERIAL_SHININESS);
+                if (b != RT_BACK)
+                    rec->material_set |= props[i].bits;
+                if (b != RT_FRONT)
+                    rec->material_set |= lit << SCENE_MATERIAL_BACK_SHIFT;
+            }
     }
+    if ((what == LIST_ENABLE || what == LIST_DISABLE) && b == RT_LIGHTING)
+        rec->material_set |= SCENE_MATERIAL_LIGHTING;
     if (what == LIST_COLOR || what == LIST_NORMAL || what == LIST_TEXCOORD) {
         for (uint32_t k = rec->op_count; k > 0 && is_attribute(&rec->ops[k - 1]); k--)
             if (rec->ops[k - 1].a == (uint32_t)what) {

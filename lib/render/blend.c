@@ -17,6 +17,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "render/gl_shade.h"
 #include "render/surface.h"
 #include "render/visibility.h"
 
@@ -114,7 +115,8 @@ void blend_trace_primary(const struct shade_context *sc, const float org[3], con
     *t_first = INFINITY;
     for (;;) {
         struct trace_scene_hit hit;
-        if (!trace_scene_closest(sc->scene, org, dir, tmin, tmax, &hit, sc->counters))
+        /* Faces RT_CULL_FACE removes are passed as GL does not draw them. */
+        if (!gl_closest_drawn(sc, org, dir, tmin, tmax, &hit))
             break;
         tmin = nextafterf(hit.t, INFINITY);
         if (clipping) {
@@ -126,12 +128,16 @@ void blend_trace_primary(const struct shade_context *sc, const float org[3], con
         }
         if (n == 0)
             *t_first = hit.t;
-        shade_hit(sc, dir, &hit, cone, 0, layers[n]);
+        shade_hit(sc, org, dir, &hit, cone, 0, layers[n]);
         if (!vis->blend) {
             memcpy(rgba, layers[0], 4 * sizeof(float));
             return;
         }
-        layers[n][3] = surface_alpha(sc, &hit, dir, cone);
+        /* The fixed-function mode's colour carries GL's alpha (the
+         * colour's unlit, the diffuse material's lit); the other modes
+         * take the diffuse material's. */
+        if (sc->state->shading != RENDER_FIXED_FUNCTION)
+            layers[n][3] = surface_alpha(sc, &hit, dir, cone);
         n++;
         if (n == BLEND_MAX_LAYERS ||
             !blend_needs_destination(vis->blend_src, vis->blend_dst, layers[n - 1]))

@@ -30,7 +30,7 @@
  * 640x480 (1200 tiles), large enough that the atomic counter is noise. */
 #define RENDER_TILE_SIZE 16
 
-enum render_shading { RENDER_EYE_LIGHT, RENDER_WHITTED };
+enum render_shading { RENDER_EYE_LIGHT, RENDER_WHITTED, RENDER_FIXED_FUNCTION };
 
 struct render_light {
     int enabled;
@@ -39,6 +39,20 @@ struct render_light {
     float specular[4];
     float position[4]; /* world (eye) space; w = 0: direction towards the light */
     float attenuation[3]; /* constant, linear, quadratic */
+    /* Spot light (GL): the direction in eye space (transformed by the
+     * modelview's upper 3x3 at the call), exponent, cutoff in degrees
+     * (180: no spot). */
+    float spot_direction[3];
+    float spot_exponent;
+    float spot_cutoff;
+};
+
+/* rtFog state (docs/fog.md), applied by the RT_FIXED_FUNCTION mode. */
+struct render_fog {
+    int enabled;
+    RTenum mode; /* RT_LINEAR, RT_EXP, RT_EXP2 */
+    float density, start, end;
+    float color[4];
 };
 
 /*
@@ -66,6 +80,11 @@ struct render_state {
     struct render_framebuffer fb;
     /* Blending, clip planes, line width and point size (visibility.h). */
     struct render_visibility vis;
+    /* rtLightModel (RT_FIXED_FUNCTION mode; frame state, see
+     * docs/appearance.md). */
+    int light_model_two_side;
+    int light_model_local_viewer;
+    struct render_fog fog;
 };
 
 struct render_stats {

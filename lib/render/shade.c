@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * shade.c - the integrators: eye light and Whitted (see shade.h); what a
- * hit looks like (material, texture, normals) is surface.c's.
+ * hit looks like (material, texture, normals) is surface.c's.  The
+ * RT_FIXED_FUNCTION mode, GL's own pipeline, is gl_shade.c's.
  *
  * Lighting follows OpenGL's fixed-function model (OpenGL 2.1 spec sec.
  * 2.14.1: emission + global ambient + per light attenuated ambient,
@@ -21,6 +22,8 @@
 #include <string.h>
 
 #include "base/mat4.h"
+#include "render/gl_light.h"
+#include "render/gl_shade.h"
 #include "render/surface.h"
 
 /* Safety factor on the error bound of the hit point (see surface_fetch in surface.c). */
@@ -74,6 +77,13 @@ static void local_whitted(const struct shade_context *sc, const struct surface *
             float att = light->attenuation[0] + light->attenuation[1] * d +
                         light->attenuation[2] * d * d;
             attenuation = att > 0.0f ? 1.0f / att : 1.0f;
+            if (light->spot_cutoff != 180.0f && d > 0.0f) {
+                /* GL's spot cone (gl_light.c) scales every term of the
+                 * light, its ambient one too; 180 (the default) leaves the
+                 * Whitted images as they were. */
+                float u[3] = {to_light[0] / d, to_light[1] / d, to_light[2] / d};
+                attenuation *= gl_spot_factor(light, u);
+            }
         } else {
             memcpy(to_light, light->position, sizeof(to_light));
             memcpy(shadow_dir, to_light, sizeof(shadow_dir));
@@ -124,14 +134,19 @@ void shade_ray(const struct shade_context *sc, const float org[3], const float d
                float tmax, struct shade_cone cone, int depth, float rgba[4])
 {
     struct trace_scene_hit hit;
-    if (!trace_scene_closest(sc->scene, org, dir, 0.0f, tmax, &hit, sc->counters)) {
+    /* Camera rays (depth 0) pass faces RT_CULL_FACE removed, as GL does
+     * not draw them; secondary rays see every face (gl_shade.h). */
+    int found = depth == 0 ? gl_closest_drawn(sc, org, dir, 0.0f, tmax, &hit)
+                           : trace_scene_closest(sc->scene, org, dir, 0.0f, tmax, &hit,
+                                                 sc->counters);
+    if (!found) {
         memcpy(rgba, sc->state->clear_color, 4 * sizeof(float));
         return;
     }
-    shade_hit(sc, dir, &hit, cone, depth, rgba);
+    shade_hit(sc, org, dir, &hit, cone, depth, rgba);
 }
 
-void shade_hit(const struct shade_context *sc, const float dir[3],
+void shade_hit(const struct shade_context *sc, const float org[3], const float dir[3],
                const struct trace_scene_hit *found, struct shade_cone cone, int depth,
                float rgba[4])
 {
@@ -144,6 +159,10 @@ void shade_hit(const struct shade_context *sc, const float dir[3],
      * is left out, so secondary rays filter as if every mirror were flat. */
     const float distance = hit.t * sqrtf(vec3_dot(dir, dir));
     const struct shade_cone at_hit = {fabsf(cone.width + cone.spread * distance), cone.spread};
+    if (st->shading == RENDER_FIXED_FUNCTION) {
+        gl_shade_hit(sc, &hit, org, dir, at_hit.width, rgba);
+        return;
+    }
     struct surface s;
     surface_fetch(sc, &hit, dir, at_hit.width, &s);
     float c[3];

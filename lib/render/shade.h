@@ -45,7 +45,7 @@ void shade_ray(const struct shade_context *sc, const float org[3], const float d
 /* The colour of a hit `found` of a ray along dir (what shade_ray does
  * after tracing): the primary path of render/blend.c, which continues
  * rays past clipped and blended surfaces, shades the hits it keeps. */
-void shade_hit(const struct shade_context *sc, const float dir[3],
+void shade_hit(const struct shade_context *sc, const float org[3], const float dir[3],
                const struct trace_scene_hit *found, struct shade_cone cone, int depth,
                float rgba[4]);
 

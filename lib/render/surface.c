@@ -54,15 +54,14 @@ static void interpolate(const float *attr, int stride, const uint32_t v[3], floa
  * a magnification.
  */
 static float texture_lod(const struct scene_texture *tex, const struct scene_instance *inst,
-                         const struct scene_mesh *mesh, const uint32_t v[3], const float ng[3],
-                         const float dir[3], float width)
+                         const struct scene_mesh *mesh, const uint32_t v[3],
+                         const float *const st[3], const float ng[3], const float dir[3],
+                         float width)
 {
     const float *p0 = &mesh->positions[3 * v[0]];
     const float *p1 = &mesh->positions[3 * v[1]];
     const float *p2 = &mesh->positions[3 * v[2]];
-    const float *t0 = &mesh->texcoords[2 * v[0]];
-    const float *t1 = &mesh->texcoords[2 * v[1]];
-    const float *t2 = &mesh->texcoords[2 * v[2]];
+    const float *t0 = st[0], *t1 = st[1], *t2 = st[2];
     double e1[3], e2[3], w1[3], w2[3];
     for (int k = 0; k < 3; k++) {
         e1[k] = (double)p1[k] - (double)p0[k];
@@ -111,13 +110,56 @@ static void apply_texture(const struct shade_context *sc, const struct scene_ins
     float st[2], texel[4];
     interpolate(mesh->texcoords, 2, v, b0, b1, b2, 2, st);
     float lambda = -INFINITY; /* a magnification */
-    if (tex->min_filter != tex->mag_filter)
-        lambda = texture_lod(tex, inst, mesh, v, ng, dir, width);
+    if (tex->min_filter != tex->mag_filter) {
+        const float *const vst[3] = {&mesh->texcoords[2 * v[0]], &mesh->texcoords[2 * v[1]],
+                                     &mesh->texcoords[2 * v[2]]};
+        lambda = texture_lod(tex, inst, mesh, v, vst, ng, dir, width);
+    }
     scene_texture_sample_lod(tex, lambda, st[0], st[1], texel);
     for (int k = 0; k < 3; k++) {
         mat->ambient[k] *= texel[k];
         mat->diffuse[k] *= texel[k];
     }
+}
+
+void surface_resolve_material(const struct scene_appearance *call, struct scene_material *m)
+{
+    uint32_t k = m->inherit;
+    if (!k)
+        return;
+    /* Recorded in a list before it set these properties: the material
+     * current at the call (its instance's), as GL. */
+    const struct scene_material *c = &call->material;
+    if (k & SCENE_MATERIAL_AMBIENT)
+        memcpy(m->ambient, c->ambient, sizeof(m->ambient));
+    if (k & SCENE_MATERIAL_DIFFUSE)
+        memcpy(m->diffuse, c->diffuse, sizeof(m->diffuse));
+    if (k & SCENE_MATERIAL_SPECULAR)
+        memcpy(m->specular, c->specular, sizeof(m->specular));
+    if (k & SCENE_MATERIAL_EMISSION)
+        memcpy(m->emission, c->emission, sizeof(m->emission));
+    if (k & SCENE_MATERIAL_SHININESS)
+        m->shininess = c->shininess;
+    if (k & SCENE_MATERIAL_REFLECTIVITY)
+        m->reflectivity = c->reflectivity;
+    if (k & SCENE_MATERIAL_TRANSPARENCY)
+        m->transparency = c->transparency;
+    if (k & SCENE_MATERIAL_IOR)
+        m->ior = c->ior;
+    const uint32_t back = k >> SCENE_MATERIAL_BACK_SHIFT;
+    if (back & SCENE_MATERIAL_AMBIENT)
+        memcpy(m->back_ambient, c->back_ambient, sizeof(m->back_ambient));
+    if (back & SCENE_MATERIAL_DIFFUSE)
+        memcpy(m->back_diffuse, c->back_diffuse, sizeof(m->back_diffuse));
+    if (back & SCENE_MATERIAL_SPECULAR)
+        memcpy(m->back_specular, c->back_specular, sizeof(m->back_specular));
+    if (back & SCENE_MATERIAL_EMISSION)
+        memcpy(m->back_emission, c->back_emission, sizeof(m->back_emission));
+    if (back & SCENE_MATERIAL_SHININESS)
+        m->back_shininess = c->back_shininess;
+    if (k & SCENE_MATERIAL_LIGHTING)
+        m->lighting = c->lighting;
+    m->inherit = 0;
 }
 
 void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit *hit,
@@ -193,29 +235,7 @@ void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit 
     }
 
     s->mat = mesh->materials[mesh->tri_material[hit->prim]];
-    if (s->mat.inherit) {
-        /* Recorded in a list before it set these properties: the
-         * material current at the call (its instance's), as GL. */
-        const struct scene_material *c = &inst->appearance.material;
-        uint32_t k = s->mat.inherit;
-        if (k & SCENE_MATERIAL_AMBIENT)
-            memcpy(s->mat.ambient, c->ambient, sizeof(s->mat.ambient));
-        if (k & SCENE_MATERIAL_DIFFUSE)
-            memcpy(s->mat.diffuse, c->diffuse, sizeof(s->mat.diffuse));
-        if (k & SCENE_MATERIAL_SPECULAR)
-            memcpy(s->mat.specular, c->specular, sizeof(s->mat.specular));
-        if (k & SCENE_MATERIAL_EMISSION)
-            memcpy(s->mat.emission, c->emission, sizeof(s->mat.emission));
-        if (k & SCENE_MATERIAL_SHININESS)
-            s->mat.shininess = c->shininess;
-        if (k & SCENE_MATERIAL_REFLECTIVITY)
-            s->mat.reflectivity = c->reflectivity;
-        if (k & SCENE_MATERIAL_TRANSPARENCY)
-            s->mat.transparency = c->transparency;
-        if (k & SCENE_MATERIAL_IOR)
-            s->mat.ior = c->ior;
-        s->mat.inherit = 0;
-    }
+    surface_resolve_material(&inst->appearance, &s->mat);
     int color_material = (flags & TRI_INHERIT_COLOR_MATERIAL) ? inst->appearance.color_material
                                                               : (flags & TRI_COLOR_MATERIAL) != 0;
     if (color_material) {
@@ -231,4 +251,27 @@ void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit 
     }
     if (s->mat.texture)
         apply_texture(sc, inst, mesh, v, b0, b1, b2, s->ng, dir, width, &s->mat);
+}
+
+int surface_texel(const struct shade_context *sc, const struct trace_scene_hit *hit,
+                  uint32_t name, const float vertex_st[3][2], const float ng[3],
+                  const float dir[3], float width, float texel[4])
+{
+    const struct scene_texture *tex = scene_textures_lookup(sc->textures, name);
+    if (!tex || !tex->texels)
+        return 0;
+    const struct trace_instance *ti = &sc->scene->instances[hit->instance];
+    const struct scene_instance *inst = &sc->frame->committed.items[ti->instance_id];
+    const struct scene_mesh *mesh = &inst->object->mesh;
+    const uint32_t *v = &mesh->indices[3 * hit->prim];
+    const float b1 = hit->u, b2 = hit->v, b0 = 1.0f - hit->u - hit->v;
+    const float *const vst[3] = {vertex_st[0], vertex_st[1], vertex_st[2]};
+    float st[2];
+    for (int k = 0; k < 2; k++)
+        st[k] = b0 * vst[0][k] + b1 * vst[1][k] + b2 * vst[2][k];
+    float lambda = -INFINITY;
+    if (tex->min_filter != tex->mag_filter)
+        lambda = texture_lod(tex, inst, mesh, v, vst, ng, dir, width);
+    scene_texture_sample_lod(tex, lambda, st[0], st[1], texel);
+    return 1;
 }

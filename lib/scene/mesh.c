@@ -6,6 +6,8 @@
 
 #include <string.h>
 
+#include <rt/rt.h>
+
 #include "base/alloc.h"
 
 void scene_material_default(struct scene_material *m)
@@ -13,6 +15,7 @@ void scene_material_default(struct scene_material *m)
     static const float ambient[4] = {0.2f, 0.2f, 0.2f, 1.0f};
     static const float diffuse[4] = {0.8f, 0.8f, 0.8f, 1.0f};
     static const float black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+    memset(m, 0, sizeof(*m));
     memcpy(m->ambient, ambient, sizeof(ambient));
     memcpy(m->diffuse, diffuse, sizeof(diffuse));
     memcpy(m->specular, black, sizeof(black));
@@ -22,6 +25,15 @@ void scene_material_default(struct scene_material *m)
     m->transparency = 0.0f;
     m->ior = 1.0f;
     m->texture = 0;
+    memcpy(m->back_ambient, ambient, sizeof(ambient));
+    memcpy(m->back_diffuse, diffuse, sizeof(diffuse));
+    memcpy(m->back_specular, black, sizeof(black));
+    memcpy(m->back_emission, black, sizeof(black));
+    m->back_shininess = 0.0f;
+    /* GL's defaults: RT_FRONT_AND_BACK, RT_AMBIENT_AND_DIFFUSE, RT_MODULATE. */
+    m->color_material_face = RT_FRONT_AND_BACK;
+    m->color_material_mode = RT_AMBIENT_AND_DIFFUSE;
+    m->tex_env_mode = RT_MODULATE;
 }
 
 void scene_mesh_release(struct scene_mesh *mesh)

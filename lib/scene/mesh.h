@@ -34,6 +34,31 @@ struct scene_material {
      * none.  Kept by name, as a GL display list keeps it: the image is
      * looked up when a frame is rendered (scene/texture.h). */
     uint32_t texture;
+
+    /* OpenGL fixed-function state current at the vertex, read by the
+     * RT_FIXED_FUNCTION shading mode only (lib/render/gl_shade.c); the
+     * eye-light and Whitted modes use the front fields above.  Appended,
+     * never reordered: the struct is interned by memcmp, so
+     * scene_material_default zeroes it whole first. */
+    float back_ambient[4];  /* rtMaterial(RT_BACK, ...) */
+    float back_diffuse[4];
+    float back_specular[4];
+    float back_emission[4];
+    float back_shininess;
+    uint32_t color_material_face; /* rtColorMaterial: RT_FRONT, RT_BACK, RT_FRONT_AND_BACK */
+    uint32_t color_material_mode; /* RT_AMBIENT ... RT_AMBIENT_AND_DIFFUSE */
+    uint32_t tex_env_mode;        /* RT_MODULATE, RT_REPLACE, RT_DECAL, RT_BLEND */
+    float tex_env_color[4];       /* RT_TEXTURE_ENV_COLOR */
+    uint8_t lighting;             /* rtEnable(RT_LIGHTING) */
+    uint8_t cull_face;            /* SCENE_CULL_* of RT_CULL_FACE and rtCullFace */
+    uint8_t front_cw;             /* rtFrontFace(RT_CW) */
+    uint8_t normalize;            /* SCENE_NORMALIZE_* */
+    /* rtTexGen for s and t: the mode while RT_TEXTURE_GEN_S / _T was
+     * enabled (RT_OBJECT_LINEAR, RT_EYE_LINEAR, RT_SPHERE_MAP), else 0;
+     * the planes (the eye planes already in eye space). */
+    uint32_t texgen_mode[2];
+    float texgen_object_plane[2][4];
+    float texgen_eye_plane[2][4];
     /* Properties (SCENE_MATERIAL_* bits) recorded in a display list before
      * the list set them: taken from the material current at rtCallList,
      * which the instance keeps (struct scene_appearance, frame.h), as GL's
@@ -49,7 +74,21 @@ struct scene_material {
 #define SCENE_MATERIAL_REFLECTIVITY 32u
 #define SCENE_MATERIAL_TRANSPARENCY 64u
 #define SCENE_MATERIAL_IOR 128u
-#define SCENE_MATERIAL_ALL 255u
+/* The back material's properties (rtMaterial(RT_BACK, ...)): the front
+ * bit shifted by SCENE_MATERIAL_BACK_SHIFT. */
+#define SCENE_MATERIAL_BACK_SHIFT 8
+#define SCENE_MATERIAL_LIGHTING (1u << 13) /* rtEnable(RT_LIGHTING) */
+#define SCENE_MATERIAL_ALL ((1u << 14) - 1u)
+
+/* Which faces RT_CULL_FACE removes (scene_material.cull_face). */
+#define SCENE_CULL_NONE 0u
+#define SCENE_CULL_FRONT 1u
+#define SCENE_CULL_BACK 2u
+#define SCENE_CULL_BOTH 3u
+/* RT_NORMALIZE / RT_RESCALE_NORMAL (scene_material.normalize). */
+#define SCENE_NORMALIZE_OFF 0u
+#define SCENE_NORMALIZE_RESCALE 1u
+#define SCENE_NORMALIZE_ON 2u
 
 #define TRI_FLAT 1u           /* rtShadeModel(RT_FLAT) was current */
 #define TRI_COLOR_MATERIAL 2u /* RT_COLOR_MATERIAL was enabled */

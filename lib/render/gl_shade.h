@@ -1,0 +1,28 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * gl_shade.h - the RT_FIXED_FUNCTION shading mode: what OpenGL 1.x's
+ * fixed-function pipeline draws at a camera ray's hit (lighting at the
+ * vertices, texture environment, fog), and GL's face culling of camera
+ * rays.  docs/appearance.md describes the mode.
+ */
+#ifndef RT_RENDER_GL_SHADE_H
+#define RT_RENDER_GL_SHADE_H
+
+#include "render/shade.h"
+
+/*
+ * The closest hit of a camera ray along dir (0 <= t < tmax) that GL would
+ * draw: triangles whose face RT_CULL_FACE removed when they were recorded
+ * are passed through, as GL does not rasterise them.  Only camera rays
+ * cull; shadow, reflected and refracted rays and rtTraceRays see every
+ * triangle.  The search covers (tmin, tmax]; returns 0 on a miss.
+ */
+int gl_closest_drawn(const struct shade_context *sc, const float org[3], const float dir[3],
+                     float tmin, float tmax, struct trace_scene_hit *hit);
+
+/* The colour GL's fixed-function pipeline gives the hit `hit` of the ray
+ * org + t dir whose cone is `width` wide there (shade.h), RGBA. */
+void gl_shade_hit(const struct shade_context *sc, const struct trace_scene_hit *hit,
+                  const float org[3], const float dir[3], float width, float rgba[4]);
+
+#endif
