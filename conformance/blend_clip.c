@@ -272,6 +272,10 @@ static void state_and_errors(void)
 int main(void)
 {
     RTcontext ctx = tu_make_context("threads=2");
+    /* Surfaces here are given their colour as emission, which the eye
+     * light shows as is (the fixed-function default would show the
+     * vertex colour, white). */
+    rtShadingMode(RT_EYE_LIGHT);
     blending();
     clip_planes();
     state_and_errors();

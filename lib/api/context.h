@@ -232,7 +232,8 @@ void rt_lines_block_end(struct rt_context *ctx, const char *caller);
  * not compiling). */
 enum list_state_call {
     LIST_COLOR, LIST_NORMAL, LIST_TEXCOORD, LIST_MATERIAL, LIST_SHADE_MODEL, LIST_ENABLE,
-    LIST_DISABLE, LIST_BIND_TEXTURE, LIST_LIGHT, LIST_LIGHT_MODEL, LIST_LIST_BASE
+    LIST_DISABLE, LIST_BIND_TEXTURE, LIST_LIGHT, LIST_LIGHT_MODEL, LIST_LIST_BASE,
+    LIST_CLIP_PLANE
 };
 int rt_list_compiling(const struct rt_context *ctx);
 int rt_list_matrix(struct rt_context *ctx, const char *caller, enum scene_list_op_kind kind,

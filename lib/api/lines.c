@@ -198,6 +198,19 @@ void rtClipPlane(RTenum plane, const RTdouble *equation)
     }
     if (!rt_check_finite_d(ctx, "rtClipPlane", equation, 4))
         return;
+    /* Inside a list, recorded (in double) and executed at the call under
+     * the modelview then current; RT_COMPILE_AND_EXECUTE also executes it
+     * now. */
+    if (rt_list_compiling(ctx)) {
+        if (scene_list_state_d(&ctx->recording, LIST_CLIP_PLANE, plane, 0, equation, 4)) {
+            ctx->recording.out_of_memory = 1;
+            rt_error(ctx, RT_OUT_OF_MEMORY, "rtClipPlane: out of memory recording list %u",
+                     ctx->recording.name);
+            return;
+        }
+        if (ctx->list_mode != RT_COMPILE_AND_EXECUTE)
+            return;
+    }
     /* Into eye space as GL (OpenGL 2.1 sec. 2.12): the row vector times
      * the inverse of the modelview at the call; a singular modelview
      * counts as the identity, as Mesa's matrix inverse falls back to. */

@@ -263,6 +263,11 @@ static void replay_state(const struct scene_list_op *op)
     case LIST_LIST_BASE:
         rtListBase(op->b);
         break;
+    case LIST_CLIP_PLANE:
+        /* The equation in double, as recorded; transformed by the
+         * modelview current at the call, as glCallList executes it. */
+        rtClipPlane(op->b, op->v);
+        break;
     }
 }
 

@@ -340,6 +340,20 @@ int scene_list_state(struct scene_recording *rec, uint32_t what, uint32_t b, uin
     return push_op(rec, &op);
 }
 
+int scene_list_state_d(struct scene_recording *rec, uint32_t what, uint32_t b, uint32_t c,
+                       const double *v, int n)
+{
+    struct scene_list_op op;
+    memset(&op, 0, sizeof(op));
+    op.kind = SCENE_OP_STATE;
+    op.a = what;
+    op.b = b;
+    op.c = c;
+    for (int i = 0; i < n && i < 16; i++)
+        op.v[i] = v[i];
+    return push_op(rec, &op);
+}
+
 uint32_t scene_list_segment_count(const struct scene_recording *rec)
 {
     return rec->segment_count + 1;

@@ -111,6 +111,9 @@ int scene_list_call(struct scene_recording *rec, uint32_t name, int add_base);
 /* Records a state call for the API to replay. */
 int scene_list_state(struct scene_recording *rec, uint32_t what, uint32_t b, uint32_t c,
                      const float *v, int n);
+/* The same with double values (rtClipPlane's equation). */
+int scene_list_state_d(struct scene_recording *rec, uint32_t what, uint32_t b, uint32_t c,
+                       const double *v, int n);
 /* Ends a list recording: moves the non-empty segments (in order) into
  * *meshes (count in *mesh_count; may be 0) and the operations into *ops,
  * renumbering the SCENE_OP_SEGMENT operations and dropping those of empty
