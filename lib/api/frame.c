@@ -99,8 +99,12 @@ void rtRenderFrame(void)
         rt_error(ctx, RT_OUT_OF_MEMORY, "rtRenderFrame: out of memory");
         return;
     }
+    /* RT_AUTOMATIC's time per traversal step is this frame's tracing
+     * time: the time so far less the updates before tracing, taken here
+     * because render_ms is only set below (internal/automatic_cost). */
+    double frame_ms = rt_now_ms() - start;
     scene_end_frame(&ctx->scene, ctx->stats.rays, ctx->stats.node_tests + ctx->stats.triangle_tests,
-                    ctx->stats.render_ms - ctx->stats.update_ms - ctx->stats.toplevel_ms);
+                    frame_ms - ctx->stats.update_ms - ctx->stats.toplevel_ms);
     ctx->stats.render_ms = rt_now_ms() - start;
 }
 

@@ -38,7 +38,10 @@ static int finish_layout(struct scene_accel *accel, const struct scene_accel_geo
     if (!tri)
         return -1;
     struct bvh4 wide = {0};
-    if (params->wide_layout && accel_collapse4(&wide, &accel->bvh)) {
+    double collapse_start = rt_now_ms();
+    int collapse_failed = params->wide_layout && accel_collapse4(&wide, &accel->bvh);
+    accel->collapse_ms = rt_now_ms() - collapse_start;
+    if (collapse_failed) {
         /* The tree may have changed under the old wide layout
          * (restructuring): drop it, so traversal takes the binary walk. */
         bvh4_release(&accel->wide);
@@ -90,7 +93,9 @@ void scene_accel_refit(struct scene_accel *accel, const struct scene_accel_geome
                        const struct bvh_build_params *params, struct rt_pool *pool)
 {
     accel_refit_mesh(&accel->bvh, accel->tri, geom->positions, geom->indices, pool);
+    double wide_start = rt_now_ms();
     accel_refit4(&accel->wide, &accel->bvh);
+    accel->wide_refit_ms = rt_now_ms() - wide_start;
     accel->sah_cost = accel_sah_cost(&accel->bvh, params->c_trav, params->c_isect);
 }
 

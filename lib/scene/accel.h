@@ -34,6 +34,11 @@ struct scene_accel {
     double sah_cost;       /* of the tree as it is now */
     double built_sah_cost; /* right after the last full build (rebuild heuristic) */
     double build_ms;       /* the last full build */
+    /* Wall time of producing the wide layout from the binary tree: the
+     * collapse of the last build or restructure, and the wide part of
+     * the last refit (rtbench dynamic reports both per frame). */
+    double collapse_ms;
+    double wide_refit_ms;
     /* Per-node life times and scratch of selective restructuring (Yoon, Curtis and Manocha
      * (2007)), initialised by its first use. */
     struct accel_restructure_state restructure_state;
