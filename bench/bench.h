@@ -366,6 +366,9 @@ int bench_trace_section(const struct bench_options *opts, struct bench_mesh *mes
                         int mesh_count);
 int bench_dynamic_section(const struct bench_options *opts, struct bench_mesh *meshes,
                           int mesh_count);
+/* `rtbench error` (bench_error.c): intersection error against time on
+ * workloads of its own. */
+int bench_error_section(const struct bench_options *opts);
 /* `rtbench bart` (bench_bart.c): the BART scenes, Wald, Benthin and Slusallek (2003) sec. 5.
  * bench_bart_find_data returns 0 when the three scenes are readable under
  * the data folder opts selects (--bart-dir, $TRACELIST_BART_DIR, the build's

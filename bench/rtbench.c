@@ -7,6 +7,8 @@
  *   rtbench embree  the same work through Embree 3 (bench_embree.c; needs Embree)
  *   rtbench dynamic dynamic scenes: update strategies over animations, soup
  *                   rebuild, top level, parallel build (bench_dynamic.c)
+ *   rtbench error   intersection error against time per kernel, layout and
+ *                   ISA on the stability workloads (bench_error.c)
  *   rtbench bart    the BART scenes against Wald, Benthin and Slusallek (2003) sec. 5 (bench_bart.c;
  *                   needs the BART data, fails without it)
  *   rtbench all     all of the above (default); bart only when its data is
@@ -39,17 +41,20 @@ enum section {
     SECTION_TRACE = 2,
     SECTION_EMBREE = 4,
     SECTION_DYNAMIC = 8,
-    SECTION_BART = 16
+    SECTION_BART = 16,
+    SECTION_ERROR = 32
 };
+/* `error` takes about 20 s on the development machine: in `all`. */
 #define SECTION_ALL                                                                                \
-    (SECTION_BUILD | SECTION_TRACE | SECTION_EMBREE | SECTION_DYNAMIC | SECTION_BART)
+    (SECTION_BUILD | SECTION_TRACE | SECTION_EMBREE | SECTION_DYNAMIC | SECTION_BART |           \
+     SECTION_ERROR)
 /* The sections that run on the generated meshes. */
 #define SECTION_MESHES (SECTION_BUILD | SECTION_TRACE | SECTION_EMBREE | SECTION_DYNAMIC)
 
 static void usage(FILE *f)
 {
     fprintf(f,
-            "usage: rtbench [build|trace|embree|dynamic|bart|all] [--quick] [--runs N]\n"
+            "usage: rtbench [build|trace|embree|dynamic|error|bart|all] [--quick] [--runs N]\n"
             "               [--out DIR] [--mesh bumpy|gears|soup] [--baseline FILE]\n"
             "               [--tolerance PCT] [--bart-dir DIR] [--isa NAME] [--layout L]\n"
             "\n"
@@ -58,6 +63,8 @@ static void usage(FILE *f)
             "  embree     the same meshes and rays through Embree 3%s\n"
             "  dynamic    dynamic scenes: update strategies over animations (error\n"
             "             against time), soup rebuild, top level, parallel build\n"
+            "  error      intersection error against ns per ray per kernel, layout and\n"
+            "             ISA on the stability workloads (far, tiny, huge, slivers, grazing)\n"
             "  bart       the BART scenes (kitchen, robots, museum) against Wald, Benthin and Slusallek (2003)\n"
             "             sec. 5: fps, top level, updates, strategies, two-level overhead\n"
             "  all        everything (default); bart only when its data is found\n"
@@ -113,6 +120,8 @@ int main(int argc, char **argv)
             sections |= SECTION_EMBREE;
         } else if (!strcmp(a, "dynamic")) {
             sections |= SECTION_DYNAMIC;
+        } else if (!strcmp(a, "error")) {
+            sections |= SECTION_ERROR;
         } else if (!strcmp(a, "bart")) {
             sections |= SECTION_BART;
             bart_required = 1;
@@ -233,6 +242,8 @@ int main(int argc, char **argv)
     }
     if (sections & SECTION_DYNAMIC)
         failed |= bench_dynamic_section(&opts, meshes, mesh_count) != 0;
+    if (sections & SECTION_ERROR)
+        failed |= bench_error_section(&opts) != 0;
     if (sections & SECTION_BART)
         failed |= bench_bart_section(&opts) != 0;
     int flagged = report_close();
