@@ -42,6 +42,7 @@ struct bench_options {
     const char *bart_dir; /* --bart-dir DIR: the BART scenes; NULL = environment, build */
     double tolerance;     /* --tolerance PCT: a drop beyond it is flagged */
     const char *isa;      /* --isa NAME: our kernels' ISA table; NULL = the best */
+    int bart_strategies_only; /* `bart-strategies`: only the museum's update strategies */
     int argc;
     char **argv;
 };

@@ -54,8 +54,9 @@ enum section {
 static void usage(FILE *f)
 {
     fprintf(f,
-            "usage: rtbench [build|trace|embree|dynamic|error|bart|all] [--quick] [--runs N]\n"
-            "               [--out DIR] [--mesh bumpy|gears|soup] [--baseline FILE]\n"
+            "usage: rtbench [build|trace|embree|dynamic|error|bart|bart-strategies|all] [--quick]\n"
+            "               [--runs N]"
+            " [--out DIR] [--mesh bumpy|gears|soup] [--baseline FILE]\n"
             "               [--tolerance PCT] [--bart-dir DIR] [--isa NAME] [--layout L]\n"
             "\n"
             "  build      BVH quality against build time per builder and bin count\n"
@@ -67,6 +68,8 @@ static void usage(FILE *f)
             "             ISA on the stability workloads (far, tiny, huge, slivers, grazing)\n"
             "  bart       the BART scenes (kitchen, robots, museum) against Wald, Benthin and Slusallek (2003)\n"
             "             sec. 5: fps, top level, updates, strategies, two-level overhead\n"
+            "  bart-strategies  only the BART section's update strategies over the museum\n"
+            "             (RT_AUTOMATIC against the fixed strategies, about a third of bart)\n"
             "  all        everything (default); bart only when its data is found\n"
             "  --quick    toy sizes and 1 run unless --runs is given: a smoke test\n"
             "  --runs N   timings are the median of N runs (default %d)\n"
@@ -125,6 +128,10 @@ int main(int argc, char **argv)
         } else if (!strcmp(a, "bart")) {
             sections |= SECTION_BART;
             bart_required = 1;
+        } else if (!strcmp(a, "bart-strategies")) {
+            sections |= SECTION_BART;
+            bart_required = 1;
+            opts.bart_strategies_only = 1;
         } else if (!strcmp(a, "all")) {
             sections |= SECTION_ALL;
         } else if (!strcmp(a, "--quick")) {
