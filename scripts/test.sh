@@ -87,13 +87,16 @@ run_suite() {
   grep "Tracelist:" "$dir.configure.log" || true
   # $build_targets (optional): build only these targets.  $build_label
   # (optional): build only the programs the tests with that label run
-  # (their executables in the build tree, named after their targets).
+  # (their executables in the build tree, named after their targets; ctest
+  # -N names them "Test command: PATH" once built, "Could not find
+  # executable PATH" before).  An empty list builds everything.
   local targets="${build_targets:-}"
   if [ -n "${build_label:-}" ]; then
     targets="$(ctest --test-dir "$dir" -N -V -L "$build_label" |
-      sed -n 's|.*Test command: \([^ ]*\).*|\1|p' | grep "^$dir/" | xargs -r -n1 basename |
-      sort -u | tr '\n' ' ')"
-    echo "=== $name: building the targets of label $build_label: $targets"
+      sed -n -e 's|^Could not find executable \([^ ]*\).*|\1|p' \
+        -e 's|.*Test command: \([^ "][^ ]*\).*|\1|p' | grep "^$dir/" |
+      xargs -r -n1 basename | sort -u | tr '\n' ' ')"
+    echo "=== $name: building the targets of label $build_label: ${targets:-(all)}"
   fi
   cmake --build "$dir" -j"$jobs" ${targets:+--target $targets} || return 1
   echo "=== $name: test"
