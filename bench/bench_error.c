@@ -832,13 +832,14 @@ int bench_error_section(const struct bench_options *opts)
                     "set xlabel 'mean ns per ray (closest hit)'\n"
                     "set ylabel 'largest error (log)'\n"
                     "set logscale xy\n"
+                    "set format y '10^{%L}'\n"
                     "set grid\n"
                     "set key top right\n"
                     "plot 'error.dat' using 2:3 with points pt 7 ps 1.5 title 'relative t "
                     "error', \\\n"
                     "     'error.dat' using 2:4 with points pt 5 ps 1.2 title 'u/v error', \\\n"
-                    "     'error.dat' using 2:3:1 with labels offset char 1,0.6 left font ',8' "
-                    "notitle\n");
+                    "     'error.dat' using 2:3:1 with labels rotate by 40 offset char 0.5,0.8 left "
+                    "font ',8' notitle\n");
     }
     report_printf("\n");
     bench_share_report();
