@@ -42,6 +42,7 @@ struct bench_options {
     const char *bart_dir; /* --bart-dir DIR: the BART scenes; NULL = environment, build */
     double tolerance;     /* --tolerance PCT: a drop beyond it is flagged */
     const char *isa;      /* --isa NAME: our kernels' ISA table; NULL = the best */
+    int bart_strategies_only; /* `bart-strategies`: only the museum's update strategies */
     int argc;
     char **argv;
 };
@@ -369,6 +370,9 @@ int bench_trace_section(const struct bench_options *opts, struct bench_mesh *mes
                         int mesh_count);
 int bench_dynamic_section(const struct bench_options *opts, struct bench_mesh *meshes,
                           int mesh_count);
+/* `rtbench error` (bench_error.c): intersection error against time on
+ * workloads of its own. */
+int bench_error_section(const struct bench_options *opts);
 /* `rtbench bart` (bench_bart.c): the BART scenes, Wald, Benthin and Slusallek (2003) sec. 5.
  * bench_bart_find_data returns 0 when the three scenes are readable under
  * the data folder opts selects (--bart-dir, $TRACELIST_BART_DIR, the build's

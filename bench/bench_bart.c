@@ -1362,6 +1362,15 @@ int bench_bart_section(const struct bench_options *opts)
     memset(res, 0, sizeof(res));
     memset(mu, 0, sizeof(mu));
     bench_share_reset();
+    if (opts->bart_strategies_only) {
+        /* `rtbench bart-strategies`: RT_AUTOMATIC against the fixed
+         * strategies without the rest of the section. */
+        if (museum_strategies_table(opts, dir))
+            return -1;
+        bench_share_report();
+        report_printf("\nThe BART strategies took %.0f s.\n", (rt_now_ms() - start) / 1e3);
+        return 0;
+    }
     for (int i = 0; i < SCENES; i++)
         if (scene_measure(opts, dir, i, &res[i]))
             return -1;

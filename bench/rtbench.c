@@ -7,6 +7,8 @@
  *   rtbench embree  the same work through Embree 3 (bench_embree.c; needs Embree)
  *   rtbench dynamic dynamic scenes: update strategies over animations, soup
  *                   rebuild, top level, parallel build (bench_dynamic.c)
+ *   rtbench error   intersection error against time per kernel, layout and
+ *                   ISA on the stability workloads (bench_error.c)
  *   rtbench bart    the BART scenes against Wald, Benthin and Slusallek (2003) sec. 5 (bench_bart.c;
  *                   needs the BART data, fails without it)
  *   rtbench immediate  immediate mode against objects (bench_immediate.c)
@@ -41,19 +43,22 @@ enum section {
     SECTION_EMBREE = 4,
     SECTION_DYNAMIC = 8,
     SECTION_BART = 16,
-    SECTION_IMMEDIATE = 32
+    SECTION_IMMEDIATE = 32,
+    SECTION_ERROR = 64
 };
+/* `error` takes about 20 s on the development machine: in `all`. */
 #define SECTION_ALL                                                                                \
     (SECTION_BUILD | SECTION_TRACE | SECTION_EMBREE | SECTION_DYNAMIC | SECTION_BART |           \
-     SECTION_IMMEDIATE)
+     SECTION_IMMEDIATE | SECTION_ERROR)
 /* The sections that run on the generated meshes. */
 #define SECTION_MESHES (SECTION_BUILD | SECTION_TRACE | SECTION_EMBREE | SECTION_DYNAMIC)
 
 static void usage(FILE *f)
 {
     fprintf(f,
-            "usage: rtbench [build|trace|embree|dynamic|immediate|bart|all] [--quick] [--runs N]\n"
-            "               [--out DIR] [--mesh bumpy|gears|soup] [--baseline FILE]\n"
+            "usage: rtbench [build|trace|embree|dynamic|immediate|error|bart|bart-strategies|all]\n"
+            "               [--quick] [--runs N]"
+            " [--out DIR] [--mesh bumpy|gears|soup] [--baseline FILE]\n"
             "               [--tolerance PCT] [--bart-dir DIR] [--isa NAME] [--layout L]\n"
             "\n"
             "  build      BVH quality against build time per builder and bin count\n"
@@ -61,9 +66,13 @@ static void usage(FILE *f)
             "  embree     the same meshes and rays through Embree 3%s\n"
             "  dynamic    dynamic scenes: update strategies over animations (error\n"
             "             against time), soup rebuild, top level, parallel build\n"
+            "  error      intersection error against ns per ray per kernel, layout and\n"
+            "             ISA on the stability workloads (far, tiny, huge, slivers, grazing)\n"
             "  bart       the BART scenes (kitchen, robots, museum) against Wald, Benthin and Slusallek (2003)\n"
             "             sec. 5: fps, top level, updates, strategies, two-level overhead\n"
             "  immediate  immediate-mode re-send against objects (bench_immediate.c)\n"
+            "  bart-strategies  only the BART section's update strategies over the museum\n"
+            "             (RT_AUTOMATIC against the fixed strategies, about a third of bart)\n"
             "  all        everything (default); bart only when its data is found\n"
             "  --quick    toy sizes and 1 run unless --runs is given: a smoke test\n"
             "  --runs N   timings are the median of N runs (default %d)\n"
@@ -120,9 +129,15 @@ int main(int argc, char **argv)
             sections |= SECTION_DYNAMIC;
         } else if (!strcmp(a, "immediate")) {
             sections |= SECTION_IMMEDIATE;
+        } else if (!strcmp(a, "error")) {
+            sections |= SECTION_ERROR;
         } else if (!strcmp(a, "bart")) {
             sections |= SECTION_BART;
             bart_required = 1;
+        } else if (!strcmp(a, "bart-strategies")) {
+            sections |= SECTION_BART;
+            bart_required = 1;
+            opts.bart_strategies_only = 1;
         } else if (!strcmp(a, "all")) {
             sections |= SECTION_ALL;
         } else if (!strcmp(a, "--quick")) {
@@ -242,6 +257,8 @@ int main(int argc, char **argv)
         failed |= bench_dynamic_section(&opts, meshes, mesh_count) != 0;
     if (sections & SECTION_IMMEDIATE)
         failed |= bench_immediate_section(&opts) != 0;
+    if (sections & SECTION_ERROR)
+        failed |= bench_error_section(&opts) != 0;
     if (sections & SECTION_BART)
         failed |= bench_bart_section(&opts) != 0;
     int flagged = report_close();

@@ -16,6 +16,11 @@
  * hits of RAY_COUNT fixed rays must agree with it (same primitive and t,
  * or an equally close triangle; dynamic_anim.h).
  *
+ * With RT_TEST_WORKLOAD=small (the sanitizer suites, scripts/test.sh) each
+ * playing has FRAMES_SMALL frames instead of FRAMES: the first build, then
+ * an update rendered before tracing and one traced before rendering, the
+ * same paths and checks as the full run.
+ *
  * Named *_threads.c: ctest label "threads", run under ThreadSanitizer.
  * The players make no checks (testutil is single-threaded): they record
  * what they saw and the main thread compares.
@@ -31,6 +36,7 @@
 #include "testutil.h"
 
 #define FRAMES 6
+#define FRAMES_SMALL 3
 #define RAY_COUNT 1500
 
 enum method { BY_UPDATE, BY_REDEFINITION };
@@ -55,11 +61,12 @@ struct play {
     /* in */
     RTenum strategy;
     enum method method;
+    int frames; /* FRAMES, or FRAMES_SMALL */
     const char *config;
     const RTray *rays;
     /* out */
-    float *images; /* FRAMES * DA_PIXELS */
-    RThit *hits;   /* FRAMES * RAY_COUNT */
+    float *images; /* frames * DA_PIXELS */
+    RThit *hits;   /* frames * RAY_COUNT */
     RTenum error;  /* the first error any frame recorded */
     int updates_ok; /* RT_STAT_OBJECT_UPDATES as expected on every frame */
 };
@@ -81,7 +88,7 @@ static void *play(void *arg)
     da_camera();
     if (p->method == BY_REDEFINITION)
         rtRenderParameteri(RT_UPDATE_STRATEGY, (RTint)p->strategy);
-    for (int f = 0; f < FRAMES; f++) {
+    for (int f = 0; f < p->frames; f++) {
         for (int i = 0; i < KIND_COUNT; i++) {
             RTuint name = DA_NAME_BASE + (RTuint)kinds[i];
             if (f == 0 || p->method == BY_REDEFINITION)
@@ -121,10 +128,11 @@ static void play_init(struct play *p, RTenum strategy, enum method method, const
     memset(p, 0, sizeof(*p));
     p->strategy = strategy;
     p->method = method;
+    p->frames = tu_small_workload() ? FRAMES_SMALL : FRAMES;
     p->config = config;
     p->rays = rays;
-    p->images = (float *)calloc((size_t)FRAMES * DA_PIXELS, sizeof(float));
-    p->hits = (RThit *)calloc((size_t)FRAMES * RAY_COUNT, sizeof(RThit));
+    p->images = (float *)calloc((size_t)p->frames * DA_PIXELS, sizeof(float));
+    p->hits = (RThit *)calloc((size_t)p->frames * RAY_COUNT, sizeof(RThit));
 }
 
 static void play_free(struct play *p)
@@ -140,7 +148,7 @@ static void compare(const struct play *base, const struct play *p, const char *w
     char label[160];
     CHECK_INT(p->error, RT_NO_ERROR);
     CHECK(p->updates_ok);
-    for (int f = 0; f < FRAMES; f++) {
+    for (int f = 0; f < p->frames; f++) {
         snprintf(label, sizeof label, "%s by %s, %s, frame %d", da_strategy_name(p->strategy),
                  p->method == BY_UPDATE ? "rtUpdateVertices" : "redefinition", what, f);
         CHECK_INT(da_compare_images(&p->images[(size_t)f * DA_PIXELS],

@@ -48,8 +48,12 @@
 #define MAX_OBJECTS 3
 #define REL_T 1e-4
 #define POS_EPS_PER_UNIT 1e-5
-/* Brute-force budget per scene: rays * world triangles. */
+/* Brute-force budget per scene: rays * world triangles; a quarter of it
+ * (at least 500 rays a scene, as always) with RT_TEST_WORKLOAD=small, which
+ * scripts/test.sh sets for the sanitizer suites: fewer rays, the same
+ * scenes and checks. */
 #define BRUTE_FORCE_BUDGET 5.0e7
+#define BRUTE_FORCE_BUDGET_SMALL 1.25e7
 #define MAX_PRINTED_FAILURES 10
 
 struct object_def {
@@ -392,7 +396,8 @@ static void run_scene(uint32_t n, int seed_index, double *largest_error)
     double radius = 1.5 * (sc.extent > 1.0 ? sc.extent : 1.0);
     double magnitude = radius > sc.extent ? radius : sc.extent;
     struct bf_tolerance tol = {REL_T, POS_EPS_PER_UNIT * magnitude};
-    double budget = BRUTE_FORCE_BUDGET / (double)(sc.ref.count ? sc.ref.count : 1);
+    double budget = (tu_small_workload() ? BRUTE_FORCE_BUDGET_SMALL : BRUTE_FORCE_BUDGET) /
+                    (double)(sc.ref.count ? sc.ref.count : 1);
     int count = budget > 20000 ? 20000 : budget < 500 ? 500 : (int)budget;
 
     RTray *rays = bf_xrealloc(NULL, (size_t)count * sizeof(*rays));

@@ -449,3 +449,11 @@ double tu_inf_d(void)
 {
     return 1.0 / zero_d;
 }
+
+/* ---- workload size ---------------------------------------------------------- */
+
+int tu_small_workload(void)
+{
+    const char *w = getenv("RT_TEST_WORKLOAD");
+    return w && strcmp(w, "small") == 0;
+}

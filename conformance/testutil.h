@@ -166,4 +166,13 @@ float tu_inf(void);
 double tu_nan_d(void);
 double tu_inf_d(void);
 
+/* ---- workload size ---------------------------------------------------------- */
+
+/*
+ * 1 when RT_TEST_WORKLOAD=small: scripts/test.sh sets it for the sanitizer
+ * suites, where the longest tests then run fewer rays or frames with the same
+ * assertions (the Release suite runs them at full size).  0 otherwise.
+ */
+int tu_small_workload(void);
+
 #endif

@@ -6,7 +6,8 @@
 #      tutorials, install, bench smoke);
 #   2. AddressSanitizer + UndefinedBehaviorSanitizer build: every test but
 #      the isa=scalar re-runs (label "isa"), which Release runs;
-#   3. ThreadSanitizer build: the tests labelled "threads";
+#   3. ThreadSanitizer build: the tests labelled "threads" (building only
+#      their targets);
 #   4. clang build with libFuzzer + ASan + UBSan: the test labelled "fuzz",
 #      which fuzzes the AFF loader for RT_FUZZ_SECONDS (60 s; builds only
 #      that target).  Suites 1 and 2 replay its corpus (fuzz/aff_replay);
@@ -18,8 +19,14 @@
 # them the tests labelled "bart" are skipped with one line saying so and
 # everything else runs; under CI (CI=true) missing data is a failure.
 #
-# Every suite runs even when an earlier one failed; a summary follows, and
-# the exit status is non-zero when any build or test failed.
+# The sanitizer suites set RT_TEST_WORKLOAD=small: the longest tests
+# (api/query_brute_force, api/dynamic_threads) then run fewer rays or frames
+# with the same checks; Release runs them at full size.  With ccache on PATH
+# every build goes through it (optional).
+#
+# Every suite runs even when an earlier one failed; a summary follows with
+# each suite's time, and the exit status is non-zero when any build or test
+# failed.
 set -uo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 jobs="$(nproc)"
@@ -50,14 +57,23 @@ fi
 declare -a summary=()
 failed=0
 
-record() { # record NAME STATUS
+suite_start=$SECONDS
+record() { # record NAME STATUS: the time since the last record is the suite's
+  local took=$((SECONDS - suite_start))
+  suite_start=$SECONDS
+  echo "=== $1: $took s"
   if [ "$2" -eq 0 ]; then
-    summary+=("passed  $1")
+    summary+=("passed  $1 ($took s)")
   else
-    summary+=("FAILED  $1")
+    summary+=("FAILED  $1 ($took s)")
     failed=1
   fi
 }
+
+launcher=()
+if command -v ccache >/dev/null; then
+  launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+fi
 
 run_suite() {
   local name="$1" ; shift
@@ -66,10 +82,23 @@ run_suite() {
   while [ "$1" != "--" ]; do ctest_args+=("$1"); shift; done
   shift
   echo "=== $name: configure and build"
-  cmake -S "$root" -B "$dir" "$@" >"$dir.configure.log" 2>&1 || { cat "$dir.configure.log"; return 1; }
+  cmake -S "$root" -B "$dir" ${launcher[@]+"${launcher[@]}"} "$@" >"$dir.configure.log" 2>&1 ||
+    { cat "$dir.configure.log"; return 1; }
   grep "Tracelist:" "$dir.configure.log" || true
-  # $build_targets (optional): build only these targets.
-  cmake --build "$dir" -j"$jobs" ${build_targets:+--target $build_targets} || return 1
+  # $build_targets (optional): build only these targets.  $build_label
+  # (optional): build only the programs the tests with that label run
+  # (their executables in the build tree, named after their targets; ctest
+  # -N names them "Test command: PATH" once built, "Could not find
+  # executable PATH" before).  An empty list builds everything.
+  local targets="${build_targets:-}"
+  if [ -n "${build_label:-}" ]; then
+    targets="$(ctest --test-dir "$dir" -N -V -L "$build_label" |
+      sed -n -e 's|^Could not find executable \([^ ]*\).*|\1|p' \
+        -e 's|.*Test command: \([^ "][^ ]*\).*|\1|p' | grep "^$dir/" |
+      xargs -r -n1 basename | sort -u | tr '\n' ' ')"
+    echo "=== $name: building the targets of label $build_label: ${targets:-(all)}"
+  fi
+  cmake --build "$dir" -j"$jobs" ${targets:+--target $targets} || return 1
   echo "=== $name: test"
   ctest --test-dir "$dir" --output-on-failure -j"$jobs" ${bart_ctest[@]+"${bart_ctest[@]}"} \
     "${ctest_args[@]}"
@@ -84,6 +113,7 @@ record "release (all tests)" $?
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"
 export LSAN_OPTIONS="suppressions=$root/scripts/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+export RT_TEST_WORKLOAD=small
 # The isa=scalar re-runs (label "isa") compare kernels, not memory use:
 # the Release suite runs them; here they would only double the longest tests.
 run_suite asan-ubsan -LE isa -- -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRT_SANITIZE=address,undefined \
@@ -91,9 +121,10 @@ run_suite asan-ubsan -LE isa -- -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRT_SANITIZE=
 record "asan-ubsan (all tests but the isa=scalar re-runs)" $?
 
 export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1"
-run_suite tsan -L threads -- -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRT_SANITIZE=thread \
-  -DRT_WITH_OIIO=OFF -DRT_WITH_GLFW=OFF -DRT_WITH_EMBREE=OFF
+build_label=threads run_suite tsan -L threads -- -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DRT_SANITIZE=thread -DRT_WITH_OIIO=OFF -DRT_WITH_GLFW=OFF -DRT_WITH_EMBREE=OFF
 record "tsan (label threads)" $?
+unset RT_TEST_WORKLOAD
 
 if command -v clang >/dev/null; then
   CC=clang CXX=clang++ build_targets=aff_fuzz run_suite fuzz -L fuzz --no-tests=error -- \

@@ -154,12 +154,16 @@ static void render_frame_now(struct rt_context *ctx)
         rt_error(ctx, RT_OUT_OF_MEMORY, "rtRenderFrame: out of memory");
         return;
     }
+    /* RT_AUTOMATIC's time per traversal step is this frame's tracing
+     * time: the time so far less the updates before tracing, taken here
+     * because render_ms is only set below (internal/automatic_cost). */
+    double frame_ms = rt_now_ms() - start;
     /* The frame's bitmaps go over its image, as GL's glBitmap over the
      * scene drawn before it (render/overlay.h); they end with the frame. */
     render_overlay_apply(&ctx->overlay, &ctx->render.fb);
     render_overlay_clear(&ctx->overlay);
     scene_end_frame(&ctx->scene, ctx->stats.rays, ctx->stats.node_tests + ctx->stats.triangle_tests,
-                    ctx->stats.render_ms - ctx->stats.update_ms - ctx->stats.toplevel_ms);
+                    frame_ms - ctx->stats.update_ms - ctx->stats.toplevel_ms);
     ctx->stats.render_ms = rt_now_ms() - start;
 }
 

@@ -50,6 +50,11 @@ struct scene_object {
     double update_ms;
     uint64_t rebuilds;
     uint64_t refits;
+    /* Wide-layout work of the updates so far, ms (scene_accel's
+     * collapse_ms and wide_refit_ms summed; builds that landed from the
+     * asynchronous builder are not counted, they ran off the frame). */
+    double collapse_ms_total;
+    double wide_refit_ms_total;
     pthread_mutex_t build_lock;
     struct scene_accel *accel; /* NULL until built; read with acquire loads */
 

@@ -54,6 +54,7 @@ static int rebuild(struct scene_object *object, const struct bvh_build_params *p
         return -1;
     fresh->serial = object->serial;
     fresh->topology = object->topology_serial;
+    object->collapse_ms_total += fresh->collapse_ms;
     scene_accel_install(object, fresh);
     return 0;
 }
@@ -63,6 +64,7 @@ static void refit(struct scene_object *object, const struct bvh_build_params *pa
 {
     struct scene_accel_geometry g = geometry(object);
     scene_accel_refit(object->accel, &g, params, pool_for(&object->mesh, pool));
+    object->wide_refit_ms_total += object->accel->wide_refit_ms;
     object->refits++;
 }
 
@@ -72,6 +74,7 @@ static int restructure(struct scene_object *object, const struct bvh_build_param
     struct scene_accel_geometry g = geometry(object);
     if (scene_accel_restructure(object->accel, &g, params, measured, object->expected_rays))
         return -1;
+    object->collapse_ms_total += object->accel->collapse_ms;
     object->refits++;
     return 0;
 }

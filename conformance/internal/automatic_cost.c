@@ -1,0 +1,167 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * automatic_cost.c - the inputs of RT_AUTOMATIC's cost model
+ * (lib/scene/update.c, automatic()): the time per traversal step that
+ * rtRenderFrame measures (scene_end_frame, lib/api/frame.c) and the use
+ * of that rate by the rent-or-buy rule.
+ *
+ * Not a timing test: nothing here asserts that anything is fast.  It
+ * checks that the measurement happens at all and in the right order (the
+ * frame's tracing time was once computed from render_ms before
+ * render_ms was set, so every frame handed scene_end_frame a negative
+ * time and the 5 ns default rate stayed in force for ever, which made
+ * the rule rebuild far too late on the BART museum), that the measured
+ * rate is consistent with the frame's own statistics, and that the rate
+ * actually decides between refit and rebuild.
+ */
+#include <rt/rt.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "api/context.h"
+#include "check.h"
+
+#define GRID 48 /* GRID x GRID quads: 4608 triangles */
+#define SIZE 96 /* SIZE x SIZE pixels */
+
+static float positions[(GRID + 1) * (GRID + 1) * 3];
+static RTuint indices[GRID * GRID * 6];
+
+/* A grid in the plane z = -3 (in front of the camera), with a ripple of
+ * amplitude `amp` along z that degrades a refitted tree. */
+static void grid(float amp, int phase)
+{
+    for (int j = 0; j <= GRID; j++)
+        for (int i = 0; i <= GRID; i++) {
+            float *p = &positions[3 * (j * (GRID + 1) + i)];
+            float x = -1.0f + 2.0f * (float)i / GRID, y = -1.0f + 2.0f * (float)j / GRID;
+            /* A scrambling displacement: neighbours move apart, so the
+             * refitted boxes overlap and the SAH cost grows. */
+            int h = (i * 7919 + j * 104729 + phase * 31) % 17;
+            p[0] = x + amp * (float)(h - 8) / 8.0f;
+            p[1] = y + amp * (float)((h * 5) % 17 - 8) / 8.0f;
+            p[2] = -3.0f + amp * (float)((h * 3) % 17 - 8) / 8.0f;
+        }
+}
+
+static void define(RTuint name)
+{
+    int k = 0;
+    for (int j = 0; j < GRID; j++)
+        for (int i = 0; i < GRID; i++) {
+            RTuint a = (RTuint)(j * (GRID + 1) + i), b = a + 1, c = a + GRID + 1, d = c + 1;
+            RTuint q[6] = {a, b, c, b, d, c};
+            memcpy(&indices[k], q, sizeof(q));
+            k += 6;
+        }
+    rtNewObject(name);
+    rtEnableClientState(RT_VERTEX_ARRAY);
+    rtVertexPointer(3, RT_FLOAT, 0, positions);
+    rtDrawElements(RT_TRIANGLES, GRID * GRID * 6, RT_UNSIGNED_INT, indices);
+    rtDisableClientState(RT_VERTEX_ARRAY);
+    rtEndObject();
+}
+
+static void frame(void)
+{
+    rtMatrixMode(RT_MODELVIEW);
+    rtLoadIdentity();
+    rtInstantiateObject(1);
+    rtRenderFrame();
+}
+
+static RTint object_int(RTenum pname)
+{
+    RTint v = -1;
+    rtGetObjectiv(1, pname, &v);
+    return v;
+}
+
+/* rtRenderFrame measures the time per traversal step of the frame it
+ * traced, from that frame's own tracing time. */
+static void check_rate_is_measured(void)
+{
+    tu_section("rate measured by rtRenderFrame");
+    RTcontext c = rtCreateContext("threads=1");
+    CHECK(c != NULL && rtMakeCurrent(c));
+    struct rt_context *ctx = rt_current_context();
+    rtViewport(0, 0, SIZE, SIZE);
+    rtMatrixMode(RT_PROJECTION);
+    rtLoadIdentity();
+    rtFrustum(-0.5, 0.5, -0.5, 0.5, 1.0, 100.0);
+    grid(0.0f, 0);
+    define(1);
+    frame(); /* the lazy build */
+    const double default_rate = 1.0 / 64.0; /* unusable as a measured rate: 16 us per test */
+    ctx->scene.ms_per_test = default_rate;
+    for (int f = 0; f < 2; f++) {
+        frame();
+        RTint nodes = 0, tris = 0;
+        RTfloat render_ms = 0.0f, update_ms = 1.0f, toplevel_ms = 1.0f;
+        rtGetIntegerv(RT_STAT_NODE_TESTS, &nodes);
+        rtGetIntegerv(RT_STAT_TRIANGLE_TESTS, &tris);
+        rtGetFloatv(RT_STAT_RENDER_TIME, &render_ms);
+        rtGetFloatv(RT_STAT_UPDATE_TIME, &update_ms);
+        rtGetFloatv(RT_STAT_TOPLEVEL_TIME, &toplevel_ms);
+        double tests = (double)nodes + (double)tris;
+        double rate = ctx->scene.ms_per_test;
+        CHECKF(tests > 10000.0, "frame %d: %.0f traversal steps", f, tests);
+        /* Without the measurement the rate stays where it was. */
+        CHECKF(rate != default_rate, "frame %d: ms_per_test still %g", f, rate);
+        CHECKF(rate > 0.0 && isfinite(rate), "frame %d: ms_per_test %g", f, rate);
+        /* Measured from this frame: steps x rate is the frame's tracing
+         * time, which is at most its whole time (render_ms is taken just
+         * after). */
+        CHECKF(rate * tests <= (double)render_ms - (double)update_ms - (double)toplevel_ms + 1e-3,
+               "frame %d: %.0f steps x %g ms > render %g - update %g - top level %g ms", f,
+               tests, rate, (double)render_ms, (double)update_ms, (double)toplevel_ms);
+        ctx->scene.ms_per_test = default_rate;
+    }
+    CHECK_INT(rtGetError(), RT_NO_ERROR);
+    rtMakeCurrent(NULL);
+    rtDestroyContext(c);
+}
+
+/* The rate decides: the same degrading update rebuilds when a traversal
+ * step is dear and refits when it is cheap. */
+static void check_rate_decides(void)
+{
+    tu_section("rate decides refit or rebuild");
+    const double rates[2] = {1e-12, 1.0};
+    const RTint expect_rebuild[2] = {0, 1};
+    for (int k = 0; k < 2; k++) {
+        RTcontext c = rtCreateContext("threads=1");
+        CHECK(c != NULL && rtMakeCurrent(c));
+        struct rt_context *ctx = rt_current_context();
+        rtViewport(0, 0, SIZE, SIZE);
+        rtMatrixMode(RT_PROJECTION);
+        rtLoadIdentity();
+        rtFrustum(-0.5, 0.5, -0.5, 0.5, 1.0, 100.0);
+        grid(0.0f, 0);
+        define(1);
+        rtObjectParameteri(1, RT_UPDATE_STRATEGY, RT_AUTOMATIC);
+        frame(); /* the first build */
+        RTint rebuilds = object_int(RT_OBJECT_REBUILDS);
+        grid(0.2f, 1);
+        rtUpdateVertices(1, RT_VERTEX_ARRAY, 0, (GRID + 1) * (GRID + 1), RT_FLOAT, 0, positions);
+        /* The update of the next frame reads the rate the last frame
+         * left; set it to the case's value. */
+        ctx->scene.ms_per_test = rates[k];
+        frame();
+        CHECKF(object_int(RT_OBJECT_REBUILDS) - rebuilds == expect_rebuild[k],
+               "ms_per_test %g: %d rebuilds (expected %d)", rates[k],
+               object_int(RT_OBJECT_REBUILDS) - rebuilds, expect_rebuild[k]);
+        CHECK_INT(object_int(RT_UPDATE_STRATEGY), expect_rebuild[k] ? RT_REBUILD : RT_REFIT);
+        CHECK_INT(rtGetError(), RT_NO_ERROR);
+        rtMakeCurrent(NULL);
+        rtDestroyContext(c);
+    }
+}
+
+int main(void)
+{
+    check_rate_is_measured();
+    check_rate_decides();
+    return test_summary("internal/automatic_cost");
+}
