@@ -31,9 +31,8 @@ struct oracle_scene {
     void (*projection)(void);
     void (*shape)(void);
     void (*view)(void);
-    /* 0: compare coverage only (today: Tracelist has no GL shading mode
-     * yet); otherwise also the colour of pixels both cover, each channel
-     * within this many 8-bit steps. */
+    /* 0: compare coverage only; otherwise also the colour of pixels both
+     * cover, each channel within this many 8-bit steps. */
     int colour_tolerance;
 };
 

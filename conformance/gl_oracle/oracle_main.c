@@ -123,8 +123,7 @@ static void compare(const struct oracle_scene *scene, const unsigned char *gl,
 }
 
 /*
- * The colour comparison is off in every scene today; this checks that it
- * works for when it is switched on: on one rendered image against itself
+ * Checks that the colour comparison works: on one rendered image against itself
  * (all match) and against a copy with the covered pixels' red channel
  * moved by tolerance + 1 (every covered pixel a colour mismatch) and by
  * the tolerance itself (none).  Returns 1 when it behaves.
