@@ -389,6 +389,18 @@ int main(void)
     rtuSolidCone(1.0, 2.0, 9, 3);
     compare("glutSolidCone(1, 2, 9, 3)");
 
+    /* GLUT's quadric wire shapes: gluSphere / gluCylinder in GLU_LINE. */
+    gluQuadricDrawStyle(gq, GLU_LINE);
+    gluQuadricNormals(gq, GLU_SMOOTH);
+    gluQuadricOrientation(gq, GLU_OUTSIDE);
+    gluQuadricTexture(gq, GL_FALSE);
+    gluSphere(gq, 1.5, 12, 8);
+    rtuWireSphere(1.5, 12, 8);
+    compare("glutWireSphere(1.5, 12, 8)");
+    gluCylinder(gq, 1.0, 0.0, 2.0, 9, 3);
+    rtuWireCone(1.0, 2.0, 9, 3);
+    compare("glutWireCone(1, 2, 9, 3)");
+
     /* The other GLUT shapes: their normals and winding. */
     rtuSolidCube(1.5);
     check_polyhedron("rtuSolidCube");
