@@ -17,8 +17,8 @@
  * solids) are checked for their normals instead: unit, outward, and (for
  * the flat-faced solids) with counter-clockwise faces.
  *
- * The cases cover every normal mode, both orientations, with and without
- * texture coordinates, the slice clamp (GLU's 240-entry tables), the
+ * The cases cover every draw style (fill, line, point, silhouette), every
+ * normal mode, both orientations, with and without texture coordinates, the slice clamp (GLU's 240-entry tables), the
  * smallest tessellations and GLU's treatment of sweep angles.  Spheres
  * keep stacks <= slices: for more stacks than slices gluSphere reads an
  * uninitialised table entry for the normal before its lower fan (its x
@@ -261,26 +261,68 @@ static void check_teapot(const char *what, double size)
 
 static const GLenum normal_modes[3] = {GLU_SMOOTH, GLU_FLAT, GLU_NONE};
 static const RTenum rt_normal_modes[3] = {RTU_SMOOTH, RTU_FLAT, RTU_NONE};
+static const GLenum draw_styles[4] = {GLU_FILL, GLU_LINE, GLU_POINT, GLU_SILHOUETTE};
+static const RTenum rt_draw_styles[4] = {RTU_FILL, RTU_LINE, RTU_POINT, RTU_SILHOUETTE};
+static const char *const style_names[4] = {"fill", "line", "point", "silhouette"};
 
-/* Calls `draw` on a GLU and an rtu quadric set up alike, for every normal
- * mode, orientation and texture setting, and compares each pair. */
+/*
+ * Where libGLU's output is undefined: with GLU_FLAT it draws points, and a
+ * sphere's or cylinder's silhouette, from normal tables it fills only for
+ * other styles (uninitialised reads; NaNs here).  rtu defines them
+ * (lib/rtu/quadric_wire.c): points take the smooth normals, a silhouette
+ * the flat GLU_LINE normals of its edges.  The reference is then GLU's
+ * own output for those settings: GLU_SMOOTH points; GLU_LINE with the
+ * first `inner_rings` line strips (a cylinder's inner rings, which a
+ * silhouette leaves out) dropped.  Disks (inner_rings -1) give one normal
+ * and are compared as they are.
+ */
+static void gl_reference(GLUquadric *gq, int style, int normals, int inner_rings)
+{
+    if (normals != 1)
+        return;
+    if (draw_styles[style] == GLU_POINT)
+        gluQuadricNormals(gq, GLU_SMOOTH);
+    if (draw_styles[style] == GLU_SILHOUETTE && inner_rings >= 0)
+        gluQuadricDrawStyle(gq, GLU_LINE);
+}
+
+static void gl_reference_done(int style, int normals, int inner_rings)
+{
+    int i, blocks = 0;
+    if (normals != 1 || draw_styles[style] != GLU_SILHOUETTE || inner_rings <= 0)
+        return;
+    for (i = 0; i < gl_trace.count && blocks < inner_rings; i++)
+        blocks += gl_trace.events[i].type == EV_END;
+    memmove(gl_trace.events, gl_trace.events + i, (size_t)(gl_trace.count - i) *
+            sizeof gl_trace.events[0]);
+    gl_trace.count -= i;
+}
+
+/* Calls `draw` on a GLU and an rtu quadric set up alike, for every draw
+ * style, normal mode, orientation and texture setting, and compares each
+ * pair. */
 #define FOR_EACH_SETUP(label, gl_call, rt_call)                                               \
     do {                                                                                      \
-        int nm_, o_, tex_;                                                                    \
+        int ds_, nm_, o_, tex_;                                                               \
+        for (ds_ = 0; ds_ < 4; ds_++)                                                         \
         for (nm_ = 0; nm_ < 3; nm_++)                                                         \
             for (o_ = 0; o_ < 2; o_++)                                                        \
                 for (tex_ = 0; tex_ < 2; tex_++) {                                            \
                     char what_[256];                                                          \
+                    gluQuadricDrawStyle(gq, draw_styles[ds_]);                                \
+                    rtuQuadricDrawStyle(rq, rt_draw_styles[ds_]);                             \
                     gluQuadricNormals(gq, normal_modes[nm_]);                                 \
                     gluQuadricOrientation(gq, o_ ? GLU_INSIDE : GLU_OUTSIDE);                 \
                     gluQuadricTexture(gq, (GLboolean)tex_);                                   \
                     rtuQuadricNormals(rq, rt_normal_modes[nm_]);                              \
                     rtuQuadricOrientation(rq, o_ ? RTU_INSIDE : RTU_OUTSIDE);                 \
                     rtuQuadricTexture(rq, (RTboolean)tex_);                                   \
+                    gl_reference(gq, ds_, nm_, gl_inner_rings);                               \
                     gl_call;                                                                  \
+                    gl_reference_done(ds_, nm_, gl_inner_rings);                              \
                     rt_call;                                                                  \
-                    snprintf(what_, sizeof what_, "%s [normals %d, %s, texture %d]", label,   \
-                             nm_, o_ ? "inside" : "outside", tex_);                           \
+                    snprintf(what_, sizeof what_, "%s [%s, normals %d, %s, texture %d]",      \
+                             label, style_names[ds_], nm_, o_ ? "inside" : "outside", tex_);  \
                     compare(what_);                                                           \
                 }                                                                             \
     } while (0)
@@ -290,6 +332,7 @@ int main(void)
     GLUquadric *gq = gluNewQuadric();
     RTUquadric *rq = rtuNewQuadric();
     char label[128];
+    int gl_inner_rings = 0; /* see gl_reference */
     static const int sphere_sizes[][2] = {{2, 1}, {2, 2}, {3, 2}, {5, 3}, {16, 8}, {24, 16},
                                           {31, 31}, {100, 60}, {300, 200}};
     static const double cylinders[][3] = {{1.0, 1.0, 2.0}, {1.5, 0.5, 1.0}, {0.0, 1.0, 1.0},
@@ -317,9 +360,11 @@ int main(void)
             const int sl = cylinder_sizes[j][0], st = cylinder_sizes[j][1];
             snprintf(label, sizeof label, "cylinder(%g, %g, %g, %d, %d)", c[0], c[1], c[2], sl,
                      st);
+            gl_inner_rings = st - 1;
             FOR_EACH_SETUP(label, gluCylinder(gq, c[0], c[1], c[2], sl, st),
                            rtuCylinder(rq, c[0], c[1], c[2], sl, st));
         }
+    gl_inner_rings = -1;
     for (i = 0; i < sizeof disks / sizeof disks[0]; i++)
         for (j = 0; j < sizeof disk_sizes / sizeof disk_sizes[0]; j++) {
             const double *d = disks[i];
@@ -334,6 +379,8 @@ int main(void)
                                rtuPartialDisk(rq, d[0], d[1], sl, lo, s[0], s[1]));
             }
         }
+    gluQuadricDrawStyle(gq, GLU_FILL);
+    rtuQuadricDrawStyle(rq, RTU_FILL);
     /* GLUT's quadric solids. */
     oracle_glutSolidSphere(1.5, 12, 8);
     rtuSolidSphere(1.5, 12, 8);
@@ -341,6 +388,18 @@ int main(void)
     oracle_glutSolidCone(1.0, 2.0, 9, 3);
     rtuSolidCone(1.0, 2.0, 9, 3);
     compare("glutSolidCone(1, 2, 9, 3)");
+
+    /* GLUT's quadric wire shapes: gluSphere / gluCylinder in GLU_LINE. */
+    gluQuadricDrawStyle(gq, GLU_LINE);
+    gluQuadricNormals(gq, GLU_SMOOTH);
+    gluQuadricOrientation(gq, GLU_OUTSIDE);
+    gluQuadricTexture(gq, GL_FALSE);
+    gluSphere(gq, 1.5, 12, 8);
+    rtuWireSphere(1.5, 12, 8);
+    compare("glutWireSphere(1.5, 12, 8)");
+    gluCylinder(gq, 1.0, 0.0, 2.0, 9, 3);
+    rtuWireCone(1.0, 2.0, 9, 3);
+    compare("glutWireCone(1, 2, 9, 3)");
 
     /* The other GLUT shapes: their normals and winding. */
     rtuSolidCube(1.5);

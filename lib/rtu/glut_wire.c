@@ -5,10 +5,12 @@
  * vertices of their solid namesakes (glut_shapes.c, quadric_*.c).
  *
  * GLUT 3.7 draws the wire sphere and cone as GLU quadrics in the GLU_LINE
- * style: the sphere's inner stack circles and its slice meridians, the
- * cone's stack circles (base to apex) and its slice lines, each a line
- * strip whose points are the filled quadric's vertices (same float
- * rounding), with the filled quadric's smooth normals.  The wire torus is
+ * style with smooth normals (gluSphere, gluCylinder with top radius 0), so
+ * they are rtu's quadrics in RTU_LINE (quadric_wire.c): the sphere's
+ * inner stack circles and its slice meridians, the cone's inner stack
+ * circles, its base and apex circles and its slice lines, through the
+ * filled quadric's vertices; the trace oracle compares them with libGLU's
+ * calls.  The wire torus is
  * the doughnut in polygon mode GL_LINE: the outlines of its quads, which
  * are its ring circles and its tube circles; we emit each circle once as
  * a line strip through the solid's vertices (the same pixels; GL draws
@@ -21,12 +23,16 @@
 #include <math.h>
 #include <stdlib.h>
 
+/* GLUT's quadric for the wire shapes: GLU's defaults in GLU_LINE. */
+static void wire_quadric(struct rtu_quadric *q)
+{
+    rtu_quadric_defaults(q);
+    q->draw_style = RTU_LINE;
+}
+
 void rtuWireSphere(RTdouble radius, RTint slices, RTint stacks)
 {
-    float sin1a[RTU_QUADRIC_CACHE], cos1a[RTU_QUADRIC_CACHE];
-    float sin1b[RTU_QUADRIC_CACHE], cos1b[RTU_QUADRIC_CACHE];
-    float sin2b[RTU_QUADRIC_CACHE], cos2b[RTU_QUADRIC_CACHE];
-    int i, j;
+    struct rtu_quadric q;
     if (slices >= RTU_QUADRIC_CACHE)
         slices = RTU_QUADRIC_CACHE - 1;
     if (stacks >= RTU_QUADRIC_CACHE)
@@ -36,49 +42,13 @@ void rtuWireSphere(RTdouble radius, RTint slices, RTint stacks)
                          "needs slices >= 2, stacks >= 1 and a finite radius >= 0");
         return;
     }
-    /* The tables of rtu_sphere_fill (outside, smooth). */
-    for (i = 0; i < slices; i++) {
-        float angle = (float)(2 * RTU_PI * i / slices);
-        sin1a[i] = (float)sin(angle);
-        cos1a[i] = (float)cos(angle);
-    }
-    sin1a[slices] = sin1a[0];
-    cos1a[slices] = cos1a[0];
-    for (j = 0; j <= stacks; j++) {
-        float angle = (float)(RTU_PI * j / stacks);
-        sin2b[j] = (float)sin(angle);
-        cos2b[j] = (float)cos(angle);
-        sin1b[j] = (float)(radius * sin(angle));
-        cos1b[j] = (float)(radius * cos(angle));
-    }
-    sin1b[0] = 0.0f;
-    sin1b[stacks] = 0.0f;
-    /* Stack circles (the poles are points: none there). */
-    for (j = 1; j < stacks; j++) {
-        rtBegin(RT_LINE_STRIP);
-        for (i = 0; i <= slices; i++) {
-            rtNormal3f(sin1a[i] * sin2b[j], cos1a[i] * sin2b[j], cos2b[j]);
-            rtVertex3f(sin1b[j] * sin1a[i], sin1b[j] * cos1a[i], cos1b[j]);
-        }
-        rtEnd();
-    }
-    /* Slice meridians, pole to pole. */
-    for (i = 0; i < slices; i++) {
-        rtBegin(RT_LINE_STRIP);
-        for (j = 0; j <= stacks; j++) {
-            rtNormal3f(sin1a[i] * sin2b[j], cos1a[i] * sin2b[j], cos2b[j]);
-            rtVertex3f(sin1b[j] * sin1a[i], sin1b[j] * cos1a[i], cos1b[j]);
-        }
-        rtEnd();
-    }
+    wire_quadric(&q);
+    rtu_sphere_wire(&q, radius, slices, stacks);
 }
 
 void rtuWireCone(RTdouble base, RTdouble height, RTint slices, RTint stacks)
 {
-    float sin1[RTU_QUADRIC_CACHE], cos1[RTU_QUADRIC_CACHE];
-    float sin2[RTU_QUADRIC_CACHE], cos2[RTU_QUADRIC_CACHE];
-    float length, z_normal, xy_ratio, delta_radius;
-    int i, j;
+    struct rtu_quadric q;
     if (slices >= RTU_QUADRIC_CACHE)
         slices = RTU_QUADRIC_CACHE - 1;
     if (slices < 2 || stacks < 1 || !(base >= 0.0) || !(height >= 0.0) || !isfinite(base) ||
@@ -88,44 +58,8 @@ void rtuWireCone(RTdouble base, RTdouble height, RTint slices, RTint stacks)
                          "not both 0");
         return;
     }
-    /* The tables of rtu_cylinder_fill with top radius 0 (outside). */
-    delta_radius = (float)base;
-    length = (float)sqrt(delta_radius * delta_radius + height * height);
-    z_normal = delta_radius / length;
-    xy_ratio = (float)(height / length);
-    for (i = 0; i < slices; i++) {
-        float angle = (float)(2 * RTU_PI * i / slices);
-        sin2[i] = (float)(xy_ratio * sin(angle));
-        cos2[i] = (float)(xy_ratio * cos(angle));
-        sin1[i] = (float)sin(angle);
-        cos1[i] = (float)cos(angle);
-    }
-    sin1[slices] = sin1[0];
-    cos1[slices] = cos1[0];
-    sin2[slices] = sin2[0];
-    cos2[slices] = cos2[0];
-    /* Stack circles, base to apex (the apex circle has radius 0). */
-    for (j = 0; j <= stacks; j++) {
-        const float z = (float)(j * height / stacks);
-        const float r = (float)(base - delta_radius * ((float)j / stacks));
-        rtBegin(RT_LINE_STRIP);
-        for (i = 0; i <= slices; i++) {
-            rtNormal3f(sin2[i], cos2[i], z_normal);
-            rtVertex3f(r * sin1[i], r * cos1[i], z);
-        }
-        rtEnd();
-    }
-    /* Slice lines, base to apex. */
-    for (i = 0; i < slices; i++) {
-        rtBegin(RT_LINE_STRIP);
-        rtNormal3f(sin2[i], cos2[i], z_normal);
-        for (j = 0; j <= stacks; j++) {
-            const float z = (float)(j * height / stacks);
-            const float r = (float)(base - delta_radius * ((float)j / stacks));
-            rtVertex3f(r * sin1[i], r * cos1[i], z);
-        }
-        rtEnd();
-    }
+    wire_quadric(&q);
+    rtu_cylinder_wire(&q, base, 0.0, height, slices, stacks);
 }
 
 void rtuWireTorus(RTdouble innerRadius, RTdouble outerRadius, RTint sides, RTint rings)

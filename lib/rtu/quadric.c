@@ -28,11 +28,6 @@ int rtu_quadric_drawable(const char *caller, const struct rtu_quadric *q, int va
                          q ? "a size, count or radius is out of range" : "quadric is NULL");
         return 0;
     }
-    if (q->draw_style != RTU_FILL) {
-        rtu_record_error(RT_INVALID_OPERATION, caller,
-                         "draw style RTU_LINE, RTU_POINT and RTU_SILHOUETTE need line primitives");
-        return 0;
-    }
     return 1;
 }
 
@@ -96,7 +91,5 @@ void rtuQuadricDrawStyle(RTUquadric *quadric, RTenum drawStyle)
         rtu_record_error(RT_INVALID_ENUM, "rtuQuadricDrawStyle", NULL);
         return;
     }
-    /* Accepted now; drawing in a style other than RTU_FILL records
-     * RT_INVALID_OPERATION until the core has lines and points. */
     quadric->draw_style = drawStyle;
 }

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * quadric_cylinder.c - rtuCylinder (gluCylinder), filled.
+ * quadric_cylinder.c - rtuCylinder (gluCylinder): its angle tables and the
+ * filled side (the other draw styles are in quadric_wire.c).
  *
  * GLU 1.3: a (truncated) cone along +z from z = 0 (radius baseRadius) to
  * z = height (radius topRadius), without end caps; slice i at angle
@@ -16,37 +17,49 @@
 
 #include <math.h>
 
-void rtu_cylinder_fill(const struct rtu_quadric *q, double base_radius, double top_radius,
-                       double height, int slices, int stacks)
+void rtu_cylinder_tables(struct rtu_cylinder_tables *t, const struct rtu_quadric *q,
+                         double base_radius, double top_radius, double height, int slices)
 {
-    float sin1[RTU_QUADRIC_CACHE], cos1[RTU_QUADRIC_CACHE];
-    float sin2[RTU_QUADRIC_CACHE], cos2[RTU_QUADRIC_CACHE];
-    float sin3[RTU_QUADRIC_CACHE], cos3[RTU_QUADRIC_CACHE];
-    const int outside = q->orientation == RTU_OUTSIDE;
     const float delta_radius = (float)(base_radius - top_radius);
     const float length =
         (float)sqrt(delta_radius * delta_radius + height * height);
-    const float z_normal = delta_radius / length;
     const float xy_ratio = (float)(height / length);
-    const double signed_ratio = outside ? xy_ratio : -xy_ratio;
-    int i, j;
+    const double signed_ratio = q->orientation == RTU_OUTSIDE ? xy_ratio : -xy_ratio;
+    int i;
 
+    t->delta_radius = delta_radius;
+    t->z_normal = delta_radius / length;
     for (i = 0; i < slices; i++) {
         float angle = (float)(2 * RTU_PI * i / slices);
-        sin2[i] = (float)(signed_ratio * sin(angle));
-        cos2[i] = (float)(signed_ratio * cos(angle));
-        sin1[i] = (float)sin(angle);
-        cos1[i] = (float)cos(angle);
+        t->sin2[i] = (float)(signed_ratio * sin(angle));
+        t->cos2[i] = (float)(signed_ratio * cos(angle));
+        t->sin1[i] = (float)sin(angle);
+        t->cos1[i] = (float)cos(angle);
         angle = (float)(2 * RTU_PI * (i - 0.5) / slices);
-        sin3[i] = (float)(signed_ratio * sin(angle));
-        cos3[i] = (float)(signed_ratio * cos(angle));
+        t->sin3[i] = (float)(signed_ratio * sin(angle));
+        t->cos3[i] = (float)(signed_ratio * cos(angle));
     }
-    sin1[slices] = sin1[0];
-    cos1[slices] = cos1[0];
-    sin2[slices] = sin2[0];
-    cos2[slices] = cos2[0];
-    sin3[slices] = sin3[0];
-    cos3[slices] = cos3[0];
+    t->sin1[slices] = t->sin1[0];
+    t->cos1[slices] = t->cos1[0];
+    t->sin2[slices] = t->sin2[0];
+    t->cos2[slices] = t->cos2[0];
+    t->sin3[slices] = t->sin3[0];
+    t->cos3[slices] = t->cos3[0];
+}
+
+void rtu_cylinder_fill(const struct rtu_quadric *q, double base_radius, double top_radius,
+                       double height, int slices, int stacks)
+{
+    struct rtu_cylinder_tables t;
+    const float *sin1 = t.sin1, *cos1 = t.cos1, *sin2 = t.sin2, *cos2 = t.cos2;
+    const float *sin3 = t.sin3, *cos3 = t.cos3;
+    const int outside = q->orientation == RTU_OUTSIDE;
+    float delta_radius, z_normal;
+    int i, j;
+
+    rtu_cylinder_tables(&t, q, base_radius, top_radius, height, slices);
+    delta_radius = t.delta_radius;
+    z_normal = t.z_normal;
 
     for (j = 0; j < stacks; j++) {
         const float z_low = (float)(j * height / stacks);
@@ -99,5 +112,8 @@ void rtuCylinder(RTUquadric *quadric, RTdouble baseRadius, RTdouble topRadius, R
     }
     if (!rtu_quadric_drawable("rtuCylinder", quadric, ok))
         return;
-    rtu_cylinder_fill(quadric, baseRadius, topRadius, height, slices, stacks);
+    if (quadric->draw_style == RTU_FILL)
+        rtu_cylinder_fill(quadric, baseRadius, topRadius, height, slices, stacks);
+    else
+        rtu_cylinder_wire(quadric, baseRadius, topRadius, height, slices, stacks);
 }

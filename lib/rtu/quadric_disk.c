@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * quadric_disk.c - rtuDisk and rtuPartialDisk (gluDisk, gluPartialDisk),
- * filled.
+ * quadric_disk.c - rtuDisk and rtuPartialDisk (gluDisk, gluPartialDisk):
+ * the angle table and the filled disk (the other draw styles are in
+ * quadric_wire.c).
  *
  * GLU 1.3: a disk (annulus) in the plane z = 0, from innerRadius to
  * outerRadius, in `loops` concentric rings; slice i at angle startAngle +
@@ -19,26 +20,33 @@
 
 #include <math.h>
 
-static void partial_disk_fill(const struct rtu_quadric *q, double inner, double outer, int slices,
-                              int loops, double start_angle, double sweep_angle)
+void rtu_disk_tables(struct rtu_disk_tables *t, int slices, double start_angle,
+                     double sweep_angle)
 {
-    float sin1[RTU_QUADRIC_CACHE], cos1[RTU_QUADRIC_CACHE];
-    const int outside = q->orientation == RTU_OUTSIDE;
-    const float delta_radius = (float)(outer - inner);
     const float angle_offset = (float)(start_angle / 180.0 * RTU_PI);
-    int i, j, finish;
-
+    int i;
     for (i = 0; i <= slices; i++) {
         const float angle =
             (float)(angle_offset + ((RTU_PI * sweep_angle) / 180.0) * i / slices);
-        sin1[i] = (float)sin(angle);
-        cos1[i] = (float)cos(angle);
+        t->sin1[i] = (float)sin(angle);
+        t->cos1[i] = (float)cos(angle);
     }
     if (sweep_angle == 360.0) {
-        sin1[slices] = sin1[0];
-        cos1[slices] = cos1[0];
+        t->sin1[slices] = t->sin1[0];
+        t->cos1[slices] = t->cos1[0];
     }
+}
 
+static void partial_disk_fill(const struct rtu_quadric *q, double inner, double outer, int slices,
+                              int loops, double start_angle, double sweep_angle)
+{
+    struct rtu_disk_tables t;
+    const float *sin1 = t.sin1, *cos1 = t.cos1;
+    const int outside = q->orientation == RTU_OUTSIDE;
+    const float delta_radius = (float)(outer - inner);
+    int i, j, finish;
+
+    rtu_disk_tables(&t, slices, start_angle, sweep_angle);
     if (q->normals != RTU_NONE)
         rtNormal3f(0.0f, 0.0f, outside ? 1.0f : -1.0f);
 
@@ -106,7 +114,12 @@ void rtuPartialDisk(RTUquadric *quadric, RTdouble innerRadius, RTdouble outerRad
         startAngle += sweepAngle;
         sweepAngle = -sweepAngle;
     }
-    partial_disk_fill(quadric, innerRadius, outerRadius, slices, loops, startAngle, sweepAngle);
+    if (quadric->draw_style == RTU_FILL)
+        partial_disk_fill(quadric, innerRadius, outerRadius, slices, loops, startAngle,
+                          sweepAngle);
+    else
+        rtu_partial_disk_wire(quadric, innerRadius, outerRadius, slices, loops, startAngle,
+                              sweepAngle);
 }
 
 void rtuDisk(RTUquadric *quadric, RTdouble innerRadius, RTdouble outerRadius, RTint slices,

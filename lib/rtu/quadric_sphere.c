@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * quadric_sphere.c - rtuSphere (gluSphere), filled.
+ * quadric_sphere.c - rtuSphere (gluSphere): its angle tables and the
+ * filled sphere (the other draw styles are in quadric_wire.c).
  *
  * Tessellation of GLU 1.3 as Mesa's libGLU draws it: the sphere is centred
  * at the origin with its axis on z; slice i lies at angle 2 pi i / slices
@@ -21,46 +22,51 @@
 
 #include <math.h>
 
+void rtu_sphere_tables(struct rtu_sphere_tables *t, const struct rtu_quadric *q, double radius,
+                       int slices, int stacks)
+{
+    const float sign = q->orientation == RTU_OUTSIDE ? 1.0f : -1.0f;
+    int i, j;
+
+    for (i = 0; i < slices; i++) {
+        float angle = (float)(2 * RTU_PI * i / slices);
+        t->sin1a[i] = (float)sin(angle);
+        t->cos1a[i] = (float)cos(angle);
+        angle = (float)(2 * RTU_PI * (i - 0.5) / slices);
+        t->sin3a[i] = (float)sin(angle);
+        t->cos3a[i] = (float)cos(angle);
+    }
+    t->sin1a[slices] = t->sin1a[0];
+    t->cos1a[slices] = t->cos1a[0];
+    t->sin3a[slices] = t->sin3a[0];
+    t->cos3a[slices] = t->cos3a[0];
+    for (j = 0; j <= stacks; j++) {
+        float angle = (float)(RTU_PI * j / stacks);
+        t->sin2b[j] = sign * (float)sin(angle);
+        t->cos2b[j] = sign * (float)cos(angle);
+        t->sin1b[j] = (float)(radius * sin(angle));
+        t->cos1b[j] = (float)(radius * cos(angle));
+        angle = (float)(RTU_PI * (j - 0.5) / stacks);
+        t->sin3b[j] = sign * (float)sin(angle);
+        t->cos3b[j] = sign * (float)cos(angle);
+    }
+    /* The poles are exactly on the axis. */
+    t->sin1b[0] = 0.0f;
+    t->sin1b[stacks] = 0.0f;
+}
+
 void rtu_sphere_fill(const struct rtu_quadric *q, double radius, int slices, int stacks)
 {
-    /* a: around the axis (slices); b: from pole to pole (stacks).
-     * 1: positions, 2: smooth normals, 3: flat normals. */
-    float sin1a[RTU_QUADRIC_CACHE], cos1a[RTU_QUADRIC_CACHE];
-    float sin3a[RTU_QUADRIC_CACHE], cos3a[RTU_QUADRIC_CACHE];
-    float sin1b[RTU_QUADRIC_CACHE], cos1b[RTU_QUADRIC_CACHE];
-    float sin2b[RTU_QUADRIC_CACHE], cos2b[RTU_QUADRIC_CACHE];
-    float sin3b[RTU_QUADRIC_CACHE], cos3b[RTU_QUADRIC_CACHE];
+    struct rtu_sphere_tables t;
+    const float *sin1a = t.sin1a, *cos1a = t.cos1a, *sin3a = t.sin3a, *cos3a = t.cos3a;
+    const float *sin1b = t.sin1b, *cos1b = t.cos1b, *sin2b = t.sin2b, *cos2b = t.cos2b;
+    const float *sin3b = t.sin3b, *cos3b = t.cos3b;
     const int outside = q->orientation == RTU_OUTSIDE;
-    const float sign = outside ? 1.0f : -1.0f;
     const int smooth = q->normals == RTU_SMOOTH;
     const int flat = q->normals == RTU_FLAT;
     int i, j, start, finish;
 
-    for (i = 0; i < slices; i++) {
-        float angle = (float)(2 * RTU_PI * i / slices);
-        sin1a[i] = (float)sin(angle);
-        cos1a[i] = (float)cos(angle);
-        angle = (float)(2 * RTU_PI * (i - 0.5) / slices);
-        sin3a[i] = (float)sin(angle);
-        cos3a[i] = (float)cos(angle);
-    }
-    sin1a[slices] = sin1a[0];
-    cos1a[slices] = cos1a[0];
-    sin3a[slices] = sin3a[0];
-    cos3a[slices] = cos3a[0];
-    for (j = 0; j <= stacks; j++) {
-        float angle = (float)(RTU_PI * j / stacks);
-        sin2b[j] = sign * (float)sin(angle);
-        cos2b[j] = sign * (float)cos(angle);
-        sin1b[j] = (float)(radius * sin(angle));
-        cos1b[j] = (float)(radius * cos(angle));
-        angle = (float)(RTU_PI * (j - 0.5) / stacks);
-        sin3b[j] = sign * (float)sin(angle);
-        cos3b[j] = sign * (float)cos(angle);
-    }
-    /* The poles are exactly on the axis. */
-    sin1b[0] = 0.0f;
-    sin1b[stacks] = 0.0f;
+    rtu_sphere_tables(&t, q, radius, slices, stacks);
 
     if (!q->texture) {
         float s2, z, s3 = 0.0f, c3 = 0.0f;
@@ -181,5 +187,8 @@ void rtuSphere(RTUquadric *quadric, RTdouble radius, RTint slices, RTint stacks)
     if (!rtu_quadric_drawable("rtuSphere", quadric, slices >= 2 && stacks >= 1 && radius >= 0.0 &&
                                            isfinite(radius)))
         return;
-    rtu_sphere_fill(quadric, radius, slices, stacks);
+    if (quadric->draw_style == RTU_FILL)
+        rtu_sphere_fill(quadric, radius, slices, stacks);
+    else
+        rtu_sphere_wire(quadric, radius, slices, stacks);
 }
