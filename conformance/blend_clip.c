@@ -22,6 +22,8 @@
 #define BACK 800u
 #define FRONT 801u
 #define LINES 802u
+#define CLIPPED 803u
+#define CLIPPED_EXEC 804u
 
 static float img[4 * N * N];
 
@@ -195,6 +197,115 @@ static void clip_planes(void)
     CHECK_NO_ERR();
 }
 
+/* An emissive quad over x in [x0, x1], y in [y0, y1] at z = 0, drawn now
+ * (immediate mode, or into the list being recorded). */
+static void quad_now(float x0, float x1, float y0, float y1, const float c[3])
+{
+    const float black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+    const float emission[4] = {c[0], c[1], c[2], 1.0f};
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_AMBIENT, black);
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_DIFFUSE, black);
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_EMISSION, emission);
+    rtBegin(RT_QUADS);
+    rtVertex3f(x0, y0, 0.0f);
+    rtVertex3f(x1, y0, 0.0f);
+    rtVertex3f(x1, y1, 0.0f);
+    rtVertex3f(x0, y1, 0.0f);
+    rtEnd();
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_EMISSION, black);
+}
+
+/* A list that sets its own plane (x <= 4 in the list's space), enables
+ * it, draws a quad over x in [0, 16], y in [0, 8], and disables it: what
+ * varray.c does. */
+static void clipped_list(RTuint name, RTenum mode, const float c[3])
+{
+    static const double keep_left[4] = {-1.0, 0.0, 0.0, 4.0};
+    rtNewList(name, mode);
+    rtClipPlane(RT_CLIP_PLANE2, keep_left);
+    rtEnable(RT_CLIP_PLANE2);
+    quad_now(0.0f, 16.0f, 0.0f, 8.0f, c);
+    rtDisable(RT_CLIP_PLANE2);
+    rtEndList();
+}
+
+/* GL clips each primitive by the planes enabled when it is drawn, with
+ * the equations of that moment; a list's rtClipPlane is executed at the
+ * call under the modelview then current (OpenGL 2.1 sec. 2.12, 5.4). */
+static void per_primitive_clip(void)
+{
+    static const float red[3] = {1.0f, 0.0f, 0.0f}, blue[3] = {0.0f, 0.0f, 1.0f};
+    static const float green[3] = {0.0f, 1.0f, 0.0f};
+    static const double keep_top[4] = {0.0, 1.0, 0.0, -8.0}; /* y >= 8 */
+    tu_section("clip planes per primitive: the planes current at the draw or the call");
+    window_camera();
+    rtClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    square(BACK, 0.0f, 8.0f, -0.5f, red, 1.0f);
+    square(FRONT, 8.0f, 16.0f, 0.5f, blue, 1.0f);
+    rtClipPlane(RT_CLIP_PLANE1, keep_top);
+
+    /* Objects: enable, draw A, disable, draw B: A clipped, B whole. */
+    rtBeginFrame();
+    rtEnable(RT_CLIP_PLANE1);
+    rtInstantiateObject(BACK);
+    rtDisable(RT_CLIP_PLANE1);
+    rtInstantiateObject(FRONT);
+    tu_render_float(N, N, img);
+    CHECK(near3(px(3, 3), 0.0, 0.0, 0.0) && px(3, 3)[3] == 0.0f);
+    CHECK(near3(px(3, 12), 1.0, 0.0, 0.0));
+    CHECK(near3(px(12, 3), 0.0, 0.0, 1.0) && near3(px(12, 12), 0.0, 0.0, 1.0));
+
+    /* Immediate mode, surfaces and points alike. */
+    rtBeginFrame();
+    rtEnable(RT_CLIP_PLANE1);
+    quad_now(0.0f, 8.0f, 0.0f, 16.0f, red);
+    rtColor3f(0.0f, 1.0f, 0.0f);
+    rtBegin(RT_POINTS);
+    rtVertex3f(12.5f, 3.5f, 0.9f); /* clipped */
+    rtEnd();
+    rtDisable(RT_CLIP_PLANE1);
+    quad_now(8.0f, 16.0f, 0.0f, 16.0f, blue);
+    rtBegin(RT_POINTS);
+    rtVertex3f(14.5f, 3.5f, 0.9f); /* drawn after the disable: kept */
+    rtEnd();
+    tu_render_float(N, N, img);
+    CHECK(near3(px(3, 3), 0.0, 0.0, 0.0) && near3(px(3, 12), 1.0, 0.0, 0.0));
+    CHECK(near3(px(12, 3), 0.0, 0.0, 1.0) && near3(px(12, 12), 0.0, 0.0, 1.0));
+    CHECK(near3(px(14, 3), 0.0, 1.0, 0.0));
+
+    /* A list with its own plane, called under two modelviews: two
+     * instances cut at x = 4 and at x = 12 (the plane moved by the
+     * translation at each call). */
+    clipped_list(CLIPPED, RT_COMPILE, green);
+    CHECK(rtIsEnabled(RT_CLIP_PLANE2) == RT_FALSE); /* RT_COMPILE executed nothing */
+    rtBeginFrame();
+    rtCallList(CLIPPED);
+    rtPushMatrix();
+    rtTranslatef(8.0f, 8.0f, 0.0f);
+    rtCallList(CLIPPED);
+    rtPopMatrix();
+    CHECK(rtIsEnabled(RT_CLIP_PLANE2) == RT_FALSE);
+    double eq[4];
+    rtGetClipPlane(RT_CLIP_PLANE2, eq); /* the last call's: x <= 12 */
+    CHECK(eq[0] == -1.0 && eq[1] == 0.0 && eq[2] == 0.0 && eq[3] == 12.0);
+    tu_render_float(N, N, img);
+    CHECK(near3(px(2, 3), 0.0, 1.0, 0.0) && near3(px(6, 3), 0.0, 0.0, 0.0));
+    CHECK(near3(px(10, 12), 0.0, 1.0, 0.0) && near3(px(14, 12), 0.0, 0.0, 0.0));
+    CHECK(near3(px(2, 12), 0.0, 0.0, 0.0));
+
+    /* RT_COMPILE_AND_EXECUTE: the executed instance is clipped too. */
+    rtBeginFrame();
+    rtPushMatrix();
+    rtTranslatef(4.0f, 0.0f, 0.0f);
+    clipped_list(CLIPPED_EXEC, RT_COMPILE_AND_EXECUTE, blue);
+    rtPopMatrix();
+    tu_render_float(N, N, img);
+    CHECK(near3(px(6, 3), 0.0, 0.0, 1.0) && near3(px(10, 3), 0.0, 0.0, 0.0));
+    CHECK(near3(px(6, 12), 0.0, 0.0, 0.0));
+    CHECK(rtIsEnabled(RT_CLIP_PLANE2) == RT_FALSE);
+    CHECK_NO_ERR();
+}
+
 static void state_and_errors(void)
 {
     tu_section("state queries and errors");
@@ -278,6 +389,7 @@ int main(void)
     rtShadingMode(RT_EYE_LIGHT);
     blending();
     clip_planes();
+    per_primitive_clip();
     state_and_errors();
     tu_destroy_context(ctx);
     return test_summary("blend_clip");

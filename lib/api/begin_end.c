@@ -20,8 +20,10 @@ int rt_block_start(struct rt_context *ctx, RTenum mode)
         return 0;
     }
     /* Immediate mode: into the frame under the current modelview. */
+    struct scene_clip clip;
+    rt_clip_now(ctx, &clip);
     ctx->target = scene_immediate_segment(&ctx->scene.frame,
-                                          ctx->modelview.m[ctx->modelview.depth - 1]);
+                                          ctx->modelview.m[ctx->modelview.depth - 1], &clip);
     if (!ctx->target)
         return -1;
     rt_frame_described(ctx);

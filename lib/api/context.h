@@ -51,6 +51,7 @@ struct list_saved_state {
     struct render_light lights[RENDER_MAX_LIGHTS];
     float global_ambient[4];
     RTuint list_base;
+    int clip_enabled[RENDER_MAX_CLIP_PLANES]; /* rtEnable(RT_CLIP_PLANEi) */
 };
 
 struct rt_context {
@@ -225,6 +226,9 @@ int rt_lines_block_start(struct rt_context *ctx, RTenum mode);
 int rt_lines_vertex(struct rt_context *ctx, const char *caller, const double position[3],
                     const float color[4]);
 void rt_lines_block_end(struct rt_context *ctx, const char *caller);
+/* The clip planes geometry drawn now is clipped by (lines.c): the enabled
+ * planes and their eye-space equations, the others zero. */
+void rt_clip_now(const struct rt_context *ctx, struct scene_clip *clip);
 /* Display lists (list.c).  rt_list_compiling: a list is being recorded
  * and the call comes from the application (not a replay).  The record
  * functions add an operation; they return 1 when the call must not take
@@ -240,6 +244,10 @@ int rt_list_matrix(struct rt_context *ctx, const char *caller, enum scene_list_o
                    RTenum mode, const double m[16]);
 void rt_list_state(struct rt_context *ctx, enum list_state_call what, RTenum b, RTenum c,
                    const float *v, int n);
+/* After a clip-plane call took effect while a list is compiled: the
+ * list's later geometry starts a segment of its own, so that its
+ * instance carries the clip planes current there at the call. */
+void rt_list_clip_changed(struct rt_context *ctx);
 /* Applies a matrix operation to the context's stacks as the entry point
  * would (errors named after caller) (matrix.c). */
 void rt_matrix_apply(struct rt_context *ctx, const char *caller, enum scene_list_op_kind kind,

@@ -366,6 +366,10 @@ static void set_capability(const char *caller, RTenum cap, int value)
     }
     rt_list_state(ctx, value ? LIST_ENABLE : LIST_DISABLE, cap, 0, NULL, 0);
     *flag = value;
+    /* Clip planes are per primitive: a list's later geometry gets a
+     * segment of its own (list.c). */
+    if (cap >= RT_CLIP_PLANE0 && cap < RT_CLIP_PLANE0 + RENDER_MAX_CLIP_PLANES)
+        rt_list_clip_changed(ctx);
     if (cap == RT_CULL_FACE || cap == RT_NORMALIZE || cap == RT_RESCALE_NORMAL ||
         cap == RT_TEXTURE_GEN_S || cap == RT_TEXTURE_GEN_T)
         rt_sync_fixed_function(ctx);

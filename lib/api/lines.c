@@ -201,15 +201,18 @@ void rtClipPlane(RTenum plane, const RTdouble *equation)
     /* Inside a list, recorded (in double) and executed at the call under
      * the modelview then current; RT_COMPILE_AND_EXECUTE also executes it
      * now. */
-    if (rt_list_compiling(ctx)) {
+    const int compiling = rt_list_compiling(ctx);
+    if (compiling) {
         if (scene_list_state_d(&ctx->recording, LIST_CLIP_PLANE, plane, 0, equation, 4)) {
             ctx->recording.out_of_memory = 1;
             rt_error(ctx, RT_OUT_OF_MEMORY, "rtClipPlane: out of memory recording list %u",
                      ctx->recording.name);
             return;
         }
-        if (ctx->list_mode != RT_COMPILE_AND_EXECUTE)
+        if (ctx->list_mode != RT_COMPILE_AND_EXECUTE) {
+            rt_list_clip_changed(ctx);
             return;
+        }
     }
     /* Into eye space as GL (OpenGL 2.1 sec. 2.12): the row vector times
      * the inverse of the modelview at the call; a singular modelview
@@ -225,6 +228,18 @@ void rtClipPlane(RTenum plane, const RTdouble *equation)
         return;
     }
     memcpy(ctx->render.vis.clip_plane[i], e, sizeof(e));
+    if (compiling)
+        rt_list_clip_changed(ctx);
+}
+
+void rt_clip_now(const struct rt_context *ctx, struct scene_clip *clip)
+{
+    memset(clip, 0, sizeof(*clip));
+    for (int i = 0; i < RENDER_MAX_CLIP_PLANES; i++)
+        if (ctx->render.vis.clip_enabled[i]) {
+            clip->enabled |= 1u << i;
+            memcpy(clip->plane[i], ctx->render.vis.clip_plane[i], sizeof(clip->plane[i]));
+        }
 }
 
 void rtGetClipPlane(RTenum plane, RTdouble *equation)

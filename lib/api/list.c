@@ -56,6 +56,7 @@ static void save_state(const struct rt_context *ctx, struct list_saved_state *s)
     memcpy(s->lights, ctx->render.lights, sizeof(s->lights));
     memcpy(s->global_ambient, ctx->render.global_ambient, sizeof(s->global_ambient));
     s->list_base = ctx->list_base;
+    memcpy(s->clip_enabled, ctx->render.vis.clip_enabled, sizeof(s->clip_enabled));
 }
 
 static void restore_state(struct rt_context *ctx, const struct list_saved_state *s)
@@ -71,6 +72,7 @@ static void restore_state(struct rt_context *ctx, const struct list_saved_state 
     memcpy(ctx->render.lights, s->lights, sizeof(s->lights));
     memcpy(ctx->render.global_ambient, s->global_ambient, sizeof(s->global_ambient));
     ctx->list_base = s->list_base;
+    memcpy(ctx->render.vis.clip_enabled, s->clip_enabled, sizeof(s->clip_enabled));
 }
 
 static void appearance_now(const struct rt_context *ctx, struct scene_appearance *a)
@@ -79,6 +81,7 @@ static void appearance_now(const struct rt_context *ctx, struct scene_appearance
     a->material.texture = ctx->texture_2d ? ctx->texture_binding : 0;
     memcpy(a->color, ctx->current_color, sizeof(a->color));
     a->color_material = ctx->color_material;
+    rt_clip_now(ctx, &a->clip);
 }
 
 /* RT_COMPILE_AND_EXECUTE: notes the modelview and appearance a segment
@@ -138,6 +141,19 @@ int rt_list_matrix(struct rt_context *ctx, const char *caller, enum scene_list_o
         capture_segment(ctx);
     }
     return 1;
+}
+
+void rt_list_clip_changed(struct rt_context *ctx)
+{
+    if (!rt_list_compiling(ctx))
+        return;
+    if (scene_list_split(&ctx->recording)) {
+        list_out_of_memory(ctx, "clip plane");
+        return;
+    }
+    /* RT_COMPILE_AND_EXECUTE: the new segment is instanced with the
+     * state now in effect. */
+    capture_segment(ctx);
 }
 
 /* Attribute calls commute with each other: a repeated one replaces the

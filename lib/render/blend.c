@@ -111,7 +111,7 @@ void blend_trace_primary(const struct shade_context *sc, const float org[3], con
     float layers[BLEND_MAX_LAYERS][4];
     int n = 0;
     float tmin = 0.0f;
-    const int clipping = visibility_any_clip(vis);
+    const int clipping = sc->clipping;
     *t_first = INFINITY;
     for (;;) {
         struct trace_scene_hit hit;
@@ -123,7 +123,11 @@ void blend_trace_primary(const struct shade_context *sc, const float org[3], con
             double p[3];
             for (int k = 0; k < 3; k++)
                 p[k] = (double)org[k] + (double)hit.t * (double)dir[k];
-            if (visibility_clipped(vis, p))
+            /* The planes the hit triangle was drawn under: GL clips each
+             * primitive by its own (scene/clip.h). */
+            const struct trace_instance *ti = &sc->scene->instances[hit.instance];
+            if (scene_clip_removes(&sc->frame->committed.items[ti->instance_id].appearance.clip,
+                                   p))
                 continue;
         }
         if (n == 0)

@@ -35,6 +35,7 @@ struct raster_target {
     const int *viewport;      /* x, y, width, height */
     const double *projection; /* column-major */
     const struct render_visibility *vis;
+    const struct scene_clip *clip; /* the planes of the instance being drawn */
 };
 
 /* The window depth (GL's depth range [0, 1]) of the eye-space point

@@ -83,11 +83,11 @@ long raster_pixels(float value, float current, float max)
 
 /*
  * Clips the segment (eye ea..eb, clip ca..cb) to the view volume and the
- * enabled user clip planes (Liang-Barsky on the parameter, which is the
+ * user clip planes enabled when it was drawn (Liang-Barsky on the parameter, which is the
  * same in eye and clip space: both are affine images of the object-space
  * segment).  Returns 0 when nothing is left, else [*t0, *t1].
  */
-static int clip_segment(const struct render_visibility *vis, const double ea[3],
+static int clip_segment(const struct scene_clip *clip, const double ea[3],
                         const double eb[3], const double ca[4], const double cb[4], double *t0,
                         double *t1)
 {
@@ -101,9 +101,9 @@ static int clip_segment(const struct render_visibility *vis, const double ea[3],
         db[n++] = cb[3] - cb[axis];
     }
     for (int i = 0; i < RENDER_MAX_CLIP_PLANES; i++) {
-        if (!vis->clip_enabled[i])
+        if (!(clip->enabled >> i & 1u))
             continue;
-        const double *e = vis->clip_plane[i];
+        const double *e = clip->plane[i];
         da[n] = e[0] * ea[0] + e[1] * ea[1] + e[2] * ea[2] + e[3];
         db[n++] = e[0] * eb[0] + e[1] * eb[1] + e[2] * eb[2] + e[3];
     }
@@ -251,7 +251,7 @@ static void draw_segment(const struct raster_target *target, const struct scene_
     double ea[3], eb[3], ca[4], cb[4], t0, t1;
     raster_vertex(target, lines, sg->v[0], object_to_eye, ea, ca);
     raster_vertex(target, lines, sg->v[1], object_to_eye, eb, cb);
-    if (!clip_segment(target->vis, ea, eb, ca, cb, &t0, &t1))
+    if (!clip_segment(target->clip, ea, eb, ca, cb, &t0, &t1))
         return;
     double c0[4], c1[4];
     for (int k = 0; k < 4; k++) {

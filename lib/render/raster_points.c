@@ -20,7 +20,7 @@ void raster_points(const struct raster_target *target, const struct scene_lines 
          * whole (GL clips points by their vertex). */
         const double w = clip[3];
         if (!(w > 0.0) || !(fabs(clip[0]) <= w) || !(fabs(clip[1]) <= w) ||
-            !(fabs(clip[2]) <= w) || visibility_clipped(vis, eye))
+            !(fabs(clip[2]) <= w) || scene_clip_removes(target->clip, eye))
             continue;
         double win[3];
         raster_to_window(target, clip, win);

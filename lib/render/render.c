@@ -165,6 +165,16 @@ static int frame_has_lines(const struct scene_frame *frame)
     return 0;
 }
 
+/* 1 when some instance was drawn under a clip plane: only then does a
+ * primary hit look its instance's planes up (blend.c). */
+static int frame_has_clip(const struct scene_frame *frame)
+{
+    for (uint32_t i = 0; i < frame->committed.count; i++)
+        if (frame->committed.items[i].appearance.clip.enabled)
+            return 1;
+    return 0;
+}
+
 int render_pass_begin(struct render_pass *pass, const struct render_job *job, int fb_width,
                       int fb_height)
 {
@@ -179,6 +189,7 @@ int render_pass_begin(struct render_pass *pass, const struct render_job *job, in
         rt_free(fb);
         return -1;
     }
+    pass->clipping = frame_has_clip(job->frame);
     if (frame_has_lines(job->frame)) {
         pass->depth = rt_malloc((pixels ? pixels : 1) * sizeof(*pass->depth));
         if (!pass->depth) {
@@ -210,7 +221,7 @@ void render_tile(struct render_pass *pass, uint32_t tile, int worker)
 {
     const struct render_state *st = pass->job->state;
     struct shade_context sc = {st, pass->job->frame, &pass->scene, &pass->counters[worker].c,
-                               pass->job->textures};
+                               pass->job->textures, pass->clipping};
     const int *vp = st->viewport;
     int x0 = (int)(tile % (uint32_t)pass->tiles_x) * RENDER_TILE_SIZE;
     int y0 = (int)(tile / (uint32_t)pass->tiles_x) * RENDER_TILE_SIZE;
@@ -238,10 +249,11 @@ void render_pass_raster(struct render_pass *pass)
     raster_depth_prepare(pass->depth, pass->fb_width, pass->fb_height);
     const struct render_state *st = pass->job->state;
     struct raster_target target = {pass->fb, pass->depth, pass->fb_width, pass->fb_height,
-                                   st->viewport, st->projection, &st->vis};
+                                   st->viewport, st->projection, &st->vis, NULL};
     const struct scene_instance_list *list = &pass->job->frame->committed;
     for (uint32_t i = 0; i < list->count; i++) {
         const struct scene_instance *inst = &list->items[i];
+        target.clip = &inst->appearance.clip; /* GL clips per primitive */
         raster_lines(&target, &inst->object->mesh.lines, inst->object_to_world);
     }
 }

@@ -137,6 +137,7 @@ struct render_pass {
     uint32_t next_item;  /* atomic work counter */
     /* Frames. */
     int projectable;     /* the projection could be inverted */
+    int clipping;        /* some instance has clip planes (frame_has_clip) */
     double inv_projection[16];
     float *fb;           /* the image being rendered, fb_width x fb_height */
     int fb_width, fb_height;

@@ -14,6 +14,7 @@ struct shade_context {
     const struct trace_scene *scene;
     struct trace_scene_counters *counters;
     const struct scene_textures *textures; /* read only */
+    int clipping; /* some instance has clip planes (scene_appearance.clip) */
 };
 
 /*

@@ -2,14 +2,16 @@
 /*
  * visibility.h - the GL state that decides what a pixel shows besides the
  * nearest hit: blending (see-through surfaces, render/blend.c), user clip
- * planes (primary rays and rasterised primitives), and the line width and
+ * planes (the current ones; primitives keep theirs, scene/clip.h), and the line width and
  * point size that lines and points without their own take
  * (render/raster.h).  Part of struct render_state, read by the renderer.
  */
 #ifndef RT_RENDER_VISIBILITY_H
 #define RT_RENDER_VISIBILITY_H
 
-#define RENDER_MAX_CLIP_PLANES 6
+#include "scene/clip.h"
+
+#define RENDER_MAX_CLIP_PLANES SCENE_MAX_CLIP_PLANES
 /* Largest line width and point size (RT_ALIASED_*_RANGE); larger values
  * are clamped, as GL clamps to its implementation range. */
 #define RENDER_MAX_LINE_WIDTH 64.0f
@@ -27,24 +29,7 @@ struct render_visibility {
     double clip_plane[RENDER_MAX_CLIP_PLANES][4];
 };
 
-/* 1 when a clip plane is enabled. */
-static inline int visibility_any_clip(const struct render_visibility *vis)
-{
-    for (int i = 0; i < RENDER_MAX_CLIP_PLANES; i++)
-        if (vis->clip_enabled[i])
-            return 1;
-    return 0;
-}
-
-/* 1 when the eye-space point p is removed by an enabled clip plane. */
-static inline int visibility_clipped(const struct render_visibility *vis, const double p[3])
-{
-    for (int i = 0; i < RENDER_MAX_CLIP_PLANES; i++) {
-        const double *e = vis->clip_plane[i];
-        if (vis->clip_enabled[i] && e[0] * p[0] + e[1] * p[1] + e[2] * p[2] + e[3] < 0.0)
-            return 1;
-    }
-    return 0;
-}
-
+/* The planes a primitive is clipped by travel with its instance
+ * (scene_appearance.clip, scene/clip.h); clip_enabled / clip_plane above
+ * are the context's current state, which geometry takes when drawn. */
 #endif

@@ -20,6 +20,7 @@
 #include <stdint.h>
 
 #include "accel/bvh_build.h"
+#include "scene/clip.h"
 #include "scene/object.h"
 #include "scene/recording.h"
 #include "trace/scene_traverse.h"
@@ -30,6 +31,9 @@ struct scene_appearance {
     struct scene_material material;
     float color[4];
     int color_material; /* RT_COLOR_MATERIAL enabled */
+    /* The clip planes the instance's geometry was drawn under (clip.h):
+     * every instance carries its own, as GL clips per primitive. */
+    struct scene_clip clip;
 };
 
 struct scene_instance {
@@ -71,6 +75,7 @@ struct scene_immediate {
     uint8_t *is_staged;        /* per slot: staged holds a mesh to commit */
     uint32_t used, capacity; /* slots used by this frame; allocated */
     uint64_t kept, redefined; /* segments committed unchanged / changed, ever */
+    struct scene_clip clip;   /* the open segment's clip planes (its instance's) */
 };
 
 struct scene_frame {
@@ -107,14 +112,16 @@ int scene_frame_add_instance_appearance(struct scene_frame *frame, struct scene_
                                         const struct scene_appearance *appearance);
 
 /* Immediate mode.  scene_immediate_segment makes the open segment the
- * one of `modelview` (committing the open one if its modelview differs,
+ * one of `modelview` and `clip` (committing the open one if its modelview
+ * or clip planes differ,
  * starting the frame's list if the last frame ended) and returns the
  * recording vertices go to; its block_matrix is what blocks transform
  * by.  NULL on allocation failure.  scene_immediate_commit commits the
  * open segment (scene_frame_prepare does it first); 0, -1 on allocation
  * failure. */
 struct scene_recording *scene_immediate_segment(struct scene_frame *frame,
-                                                const double modelview[16]);
+                                                const double modelview[16],
+                                                const struct scene_clip *clip);
 void scene_immediate_commit(struct scene_frame *frame, uint64_t frame_number);
 /* Drops the segments recorded and not committed (a new frame). */
 void scene_immediate_restart(struct scene_immediate *im);

@@ -138,10 +138,14 @@ static int slot_reserve(struct scene_immediate *im)
 }
 
 struct scene_recording *scene_immediate_segment(struct scene_frame *frame,
-                                                const double modelview[16])
+                                                const double modelview[16],
+                                                const struct scene_clip *clip)
 {
     struct scene_immediate *im = &frame->immediate;
-    if (frame->open && im->open && memcmp(im->matrix, modelview, sizeof(im->matrix)) == 0)
+    /* A change of clip planes starts a segment too: the planes are its
+     * instance's (clip.h), as GL clips by those current at the draw. */
+    if (frame->open && im->open && memcmp(im->matrix, modelview, sizeof(im->matrix)) == 0 &&
+        memcmp(&im->clip, clip, sizeof(*clip)) == 0)
         return &im->rec;
     if (!frame->open)
         scene_frame_begin(frame); /* the first geometry of a new frame */
@@ -161,11 +165,16 @@ struct scene_recording *scene_immediate_segment(struct scene_frame *frame,
         memcpy(inverse, identity, sizeof(identity));
         memcpy(normal, identity, sizeof(identity));
     }
-    if (scene_frame_add_instance(frame, im->slots[im->used], instance, inverse, normal))
+    struct scene_appearance appearance;
+    memset(&appearance, 0, sizeof(appearance));
+    appearance.clip = *clip;
+    if (scene_frame_add_instance_appearance(frame, im->slots[im->used], instance, inverse,
+                                            normal, &appearance))
         return NULL;
     stage_open(im);
     im->used++;
     memcpy(im->matrix, modelview, sizeof(im->matrix));
+    im->clip = *clip;
     scene_mesh_release(&im->rec.mesh);
     im->rec.mesh.bounds = aabb_empty();
     im->rec.active = 0;

@@ -222,6 +222,11 @@ static int new_segment(struct scene_recording *rec)
     return segment_op(rec);
 }
 
+int scene_list_split(struct scene_recording *rec)
+{
+    return new_segment(rec);
+}
+
 void scene_list_release(struct scene_recording *rec)
 {
     for (uint32_t i = 0; i < rec->segment_count; i++)

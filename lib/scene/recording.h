@@ -106,6 +106,10 @@ const double *scene_list_matrix(const struct scene_recording *rec);
  * the recording modelview is not finite (nothing recorded). */
 int scene_list_matrix_op(struct scene_recording *rec, enum scene_list_op_kind kind,
                          unsigned mode, const double m[16]);
+/* Ends the segment: the following geometry is instanced where the replay
+ * is then, with the state current there (a clip-plane change: clip.h).
+ * 0, -1 on allocation failure. */
+int scene_list_split(struct scene_recording *rec);
 /* Records a nested call of `name` (ends the segment). */
 int scene_list_call(struct scene_recording *rec, uint32_t name, int add_base);
 /* Records a state call for the API to replay. */
