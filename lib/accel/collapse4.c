@@ -246,6 +246,11 @@ int accel_collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *tr
     uint32_t *packet_slot = NULL;
     if (!first || !span || !scratch || !todo || subtree_spans(bvh, first, span))
         goto fail;
+    /* Range leaves are the binary leaves only: a merged subtree would
+     * visit (transform, set up and enter) every instance under it, where
+     * the binary subtree's boxes cull most of them. */
+    if (!tri)
+        memset(span, 0, bvh->node_count * sizeof(uint32_t));
     uint32_t count = 1;
     uint32_t packets = 0;
     if (is_leaf_lane(bvh, span, 0)) {

@@ -123,7 +123,8 @@ int accel_collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *tr
                         uint32_t width);
 /*
  * tri NULL (the top level over instances, which has no triangles): the
- * same nodes, no packets; a leaf lane's child is its first leaf slot and
+ * same nodes without merging small subtrees (a leaf lane is a binary
+ * leaf), no packets; a leaf lane's child is its first leaf slot and
  * its count the slots it covers, so its primitives are
  * bvh->prim_index[child .. child + count).  The caller keeps the binary
  * leaves at most UINT8_MAX primitives (count is a byte).
