@@ -30,6 +30,7 @@
 
 #include "base/timer.h"
 #include "bench.h"
+#include "trace/scene_traverse.h"
 
 /* Brute-force check: at most this many triangle tests per ray set (about
  * a second), at most BRUTE_MAX_RAYS rays. */
@@ -388,6 +389,181 @@ out:
     return rc;
 }
 
+/* ------------------------------------------------------------ wide top level */
+
+/* Issue 11 item 2: the top level over instances binary against wide, the
+ * same scene, kernels and rays in one run.  The scene: a grid of
+ * instances of one mesh, scaled to overlap their neighbours, with
+ * trace_scene_closest/any called directly (lib/trace/scene_traverse.h). */
+struct top_bench {
+    struct trace_scene scene;
+    struct trace_object_view view;
+};
+
+static int top_acquire(void *user, void *object, struct trace_object_view *view)
+{
+    (void)object;
+    *view = ((const struct top_bench *)user)->view;
+    return 1;
+}
+
+static double top_run(const struct trace_scene *sc, const struct bench_rays *set, int any_hit,
+                      double *checksum, struct trace_scene_counters *counters)
+{
+    struct trace_scene_counters c;
+    memset(&c, 0, sizeof(c));
+    double sum = 0.0;
+    double start = rt_now_ms();
+    for (uint32_t i = 0; i < set->count; i++) {
+        const RTray *r = &set->rays[i];
+        struct trace_scene_hit h;
+        if (any_hit)
+            sum += trace_scene_any(sc, r->org, r->dir, r->tmin, r->tmax, &c);
+        else if (trace_scene_closest(sc, r->org, r->dir, r->tmin, r->tmax, &h, &c))
+            sum += (double)h.t + (double)h.instance;
+    }
+    double ms = rt_now_ms() - start;
+    *checksum = sum;
+    *counters = c;
+    return ms;
+}
+
+static void trace_toplevel_wide(const struct bench_options *opts, const struct bench_mesh *mesh)
+{
+    const struct trace_kernels *kernels = bench_kernels();
+    const uint32_t width = kernels->wide_width;
+    report_printf("\n### Wide top level over instances (binary vs %u-wide)\n\n", width);
+    if (!width) {
+        report_printf("The kernels (%s) walk no wide layout: nothing to compare.\n",
+                      kernels->name);
+        return;
+    }
+    struct bvh_build_params params;
+    bvh_build_params_default(&params);
+    struct bench_accel acc;
+    memset(&acc, 0, sizeof(acc));
+    const int side = opts->quick ? 16 : 32, layers = 4;
+    const uint32_t n = (uint32_t)(side * side * layers);
+    struct trace_instance *inst = calloc(n, sizeof(*inst));
+    struct aabb *boxes = calloc(n, sizeof(*boxes));
+    struct bvh top;
+    struct bvh4 top_wide;
+    memset(&top, 0, sizeof(top));
+    memset(&top_wide, 0, sizeof(top_wide));
+    struct bench_rays set;
+    memset(&set, 0, sizeof(set));
+    /* The object: the mesh's first triangles only, so that the top level
+     * is a visible share of the work (many small instances). */
+    struct bench_mesh part = *mesh;
+    part.tri_count = mesh->tri_count < 256 ? mesh->tri_count : 256;
+    part.bounds = aabb_empty();
+    for (uint32_t i = 0; i < 3 * part.tri_count; i++) {
+        const float *p = &mesh->positions[3 * (size_t)mesh->indices[i]];
+        for (int k = 0; k < 3; k++) {
+            part.bounds.min[k] = p[k] < part.bounds.min[k] ? p[k] : part.bounds.min[k];
+            part.bounds.max[k] = p[k] > part.bounds.max[k] ? p[k] : part.bounds.max[k];
+        }
+    }
+    mesh = &part;
+    if (!inst || !boxes || bench_accel_build(&acc, mesh, &params)) {
+        report_printf("allocation failed\n");
+        goto done;
+    }
+    /* Each instance: the mesh scaled to a cell of 1 (times 1.5, so that
+     * boxes overlap), at a grid point with a jitter of a quarter cell. */
+    float ext = 0.0f;
+    for (int k = 0; k < 3; k++) {
+        float e = mesh->bounds.max[k] - mesh->bounds.min[k];
+        ext = e > ext ? e : ext;
+    }
+    const double sc = 1.5 / (double)ext;
+    struct bench_rng rng;
+    bench_rng_seed(&rng, 2026);
+    for (uint32_t i = 0; i < n; i++) {
+        double t[3] = {(double)(i % (uint32_t)side), (double)(i / (uint32_t)side % (uint32_t)side),
+                       (double)(i / (uint32_t)(side * side))};
+        for (int k = 0; k < 3; k++)
+            t[k] += 0.25 * (double)bench_rng_float(&rng);
+        /* world = sc * (p - min) + t; object = (world - t) / sc + min. */
+        for (int k = 0; k < 3; k++) {
+            inst[i].world_to_object[4 * k + k] = 1.0 / sc;
+            inst[i].world_to_object[4 * k + 3] = (double)mesh->bounds.min[k] - t[k] / sc;
+            double lo = t[k], hi = t[k] + sc * (double)(mesh->bounds.max[k] - mesh->bounds.min[k]);
+            boxes[i].min[k] = nextafterf((float)lo, -INFINITY);
+            boxes[i].max[k] = nextafterf((float)hi, INFINITY);
+        }
+        inst[i].instance_id = i;
+    }
+    if (accel_build(&top, boxes, n, &params) ||
+        accel_collapse_wide(&top_wide, &top, NULL, width)) {
+        report_printf("allocation failed\n");
+        goto done;
+    }
+    /* Random rays over the grid's box (the bench's random set over a
+     * mesh with these bounds). */
+    struct bench_mesh grid = part;
+    grid.bounds = top.node_count ? (struct aabb){{top.nodes[0].aabb_min[0], top.nodes[0].aabb_min[1],
+                                                 top.nodes[0].aabb_min[2]},
+                                                {top.nodes[0].aabb_max[0], top.nodes[0].aabb_max[1],
+                                                 top.nodes[0].aabb_max[2]}}
+                                 : mesh->bounds;
+    if (bench_rays_random(&set, &grid, opts->quick ? 20000u : 200000u, 7)) {
+        report_printf("allocation failed\n");
+        goto done;
+    }
+    struct top_bench tb;
+    memset(&tb, 0, sizeof(tb));
+    tb.view.bvh = &acc.bvh;
+    tb.view.tri = acc.tri;
+    tb.view.wide = &acc.wide;
+    tb.scene.top = &top;
+    tb.scene.instances = inst;
+    tb.scene.acquire = top_acquire;
+    tb.scene.user = &tb;
+    tb.scene.kernels = kernels;
+    report_printf("%u instances of the first %u triangles of %s on a %dx%dx%d grid, boxes "
+                  "overlapping; %u random rays; one thread; kernels %s (object walk %u-wide in "
+                  "both columns); binary top level (2-wide walk) and the same tree collapsed to "
+                  "%u-wide (%u nodes vs %u), run alternately, median of %d. Mrays/s.\n\n",
+                  n, mesh->tri_count, mesh->name, side, side, layers, set.count, kernels->name,
+                  acc.wide.width, width, top_wide.node_count, top.node_count, opts->runs);
+    report_table_header("rays|binary top|wide top|wide/binary|same answers|top node tests/ray "
+                        "binary / wide|instances/ray binary / wide|CPU share|load");
+    for (int any_hit = 0; any_hit < 2; any_hit++) {
+        double t_bin[16], t_wide[16];
+        double sum_bin = 0.0, sum_wide = 0.0;
+        struct trace_scene_counters c_bin, c_wide;
+        int runs = opts->runs < 16 ? opts->runs : 16;
+        double wall = 0.0, cpu0 = bench_cpu_ms();
+        for (int r = 0; r < runs; r++) {
+            tb.scene.top_wide = NULL;
+            t_bin[r] = top_run(&tb.scene, &set, any_hit, &sum_bin, &c_bin);
+            tb.scene.top_wide = &top_wide;
+            t_wide[r] = top_run(&tb.scene, &set, any_hit, &sum_wide, &c_wide);
+            wall += t_bin[r] + t_wide[r];
+        }
+        double cpu = bench_cpu_ms() - cpu0;
+        double mb = (double)set.count / (bench_median(t_bin, runs) * 1e3);
+        double mw = (double)set.count / (bench_median(t_wide, runs) * 1e3);
+        const double rays = (double)set.count;
+        report_row("%s|%.2f|%.2f|%.2f|%s|%.1f / %.1f|%.2f / %.2f|%.0f%%|%s",
+                   any_hit ? "random, any hit" : "random, closest", mb, mw, mw / mb,
+                   sum_bin == sum_wide ? "yes" : "NO", (double)c_bin.top_node_tests / rays,
+                   (double)c_wide.top_node_tests / rays, (double)c_bin.instance_tests / rays,
+                   (double)c_wide.instance_tests / rays,
+                   wall > 0.0 ? 100.0 * cpu / wall : 0.0, sysinfo_loadavg());
+        if (sum_bin != sum_wide)
+            report_check_failed();
+    }
+done:
+    bench_rays_release(&set);
+    bvh4_release(&top_wide);
+    bvh_release(&top);
+    bench_accel_release(&acc);
+    free(inst);
+    free(boxes);
+}
+
 int bench_trace_section(const struct bench_options *opts, struct bench_mesh *meshes, int mesh_count)
 {
     report_printf("\n## Trace: rays per second\n\n");
@@ -416,6 +592,8 @@ int bench_trace_section(const struct bench_options *opts, struct bench_mesh *mes
     for (int m = 0; m < mesh_count; m++)
         failed |= trace_mesh(opts, &meshes[m], plot_data, &notes[m]) != 0;
     bench_share_report();
+    if (mesh_count > 0)
+        trace_toplevel_wide(opts, &meshes[0]);
     report_printf("\nCorrectness: ours (binned SAH BVH) against the brute-force reference "
                   "intersector on a sample of rays (hit/miss and t within %g relative):\n\n",
                   (double)BENCH_T_TOLERANCE);

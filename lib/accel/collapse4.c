@@ -246,6 +246,11 @@ int accel_collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *tr
     uint32_t *packet_slot = NULL;
     if (!first || !span || !scratch || !todo || subtree_spans(bvh, first, span))
         goto fail;
+    /* Range leaves are the binary leaves only: a merged subtree would
+     * visit (transform, set up and enter) every instance under it, where
+     * the binary subtree's boxes cull most of them. */
+    if (!tri)
+        memset(span, 0, bvh->node_count * sizeof(uint32_t));
     uint32_t count = 1;
     uint32_t packets = 0;
     if (is_leaf_lane(bvh, span, 0)) {
@@ -272,6 +277,11 @@ int accel_collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *tr
             if (!is_leaf_lane(bvh, span, i))
                 continue;
             s->count[l] = bvh->nodes[i].count ? bvh->nodes[i].count : span[i];
+            if (!tri) {
+                /* Range leaves (the top level): the first leaf slot. */
+                s->child[l] = first[i];
+                continue;
+            }
             s->child[l] = packets; /* first packet; slots from first[i] */
             packets += (s->count[l] + 3) / 4;
         }
@@ -290,7 +300,7 @@ int accel_collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *tr
         for (uint32_t l = 0; l < width; l++)
             source[width * w + l] = (int)l < s->lanes ? s->source[l] : UINT32_MAX;
         for (int l = 0; l < s->lanes; l++) {
-            if (!s->count[l])
+            if (!s->count[l] || !tri)
                 continue;
             uint32_t slot = first[s->source[l]];
             for (uint32_t j = 0; j < s->count[l]; j += 4) {

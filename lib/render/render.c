@@ -56,6 +56,7 @@ static int shared_init(struct render_pass *sh, const struct render_job *job)
     sh->scene.instances = job->frame->trace_instances;
     sh->scene.acquire = acquire_object;
     sh->scene.kernels = job->kernels;
+    sh->scene.top_wide = &job->frame->top_wide;
     sh->scene.user = sh;
     sh->counters = rt_calloc((size_t)rt_pool_threads(job->pool), sizeof(*sh->counters));
     return sh->counters ? 0 : -1;

@@ -22,6 +22,7 @@ void scene_frame_release(struct scene_frame *frame)
     rt_free(frame->pending.items);
     rt_free(frame->committed.items);
     bvh_release(&frame->top);
+    bvh4_release(&frame->top_wide);
     rt_free(frame->trace_instances);
     scene_frame_init(frame);
 }
@@ -163,6 +164,17 @@ static int lists_equal(const struct scene_instance_list *a, const struct scene_i
     return 1;
 }
 
+/* The wide layout's leaf count is a byte: the cell-split rule can leave
+ * more coincident instances than that in one leaf, and such a top level
+ * keeps the binary walk (the same answers). */
+static int top_fits_wide(const struct bvh *top)
+{
+    for (uint32_t i = 0; i < top->node_count; i++)
+        if (top->nodes[i].count > UINT8_MAX)
+            return 0;
+    return 1;
+}
+
 static int build_top(struct scene_frame *frame, const struct bvh_build_params *params)
 {
     const struct scene_instance_list *list = &frame->committed;
@@ -194,10 +206,19 @@ static int build_top(struct scene_frame *frame, const struct bvh_build_params *p
                                           : accel_build(&top, boxes, n, params);
     if (status)
         goto fail;
+    struct bvh4 wide;
+    memset(&wide, 0, sizeof(wide));
+    if (params->wide_layout && top_fits_wide(&top) &&
+        accel_collapse_wide(&wide, &top, NULL, params->wide_layout == 8 ? 8u : 4u)) {
+        bvh_release(&top);
+        goto fail;
+    }
     rt_free(boxes);
     bvh_release(&frame->top);
+    bvh4_release(&frame->top_wide);
     rt_free(frame->trace_instances);
     frame->top = top;
+    frame->top_wide = wide;
     frame->trace_instances = tis;
     frame->trace_instance_count = n;
     frame->top_valid = 1;

@@ -89,6 +89,11 @@ struct scene_frame {
     int top_valid;
     int toplevel_cellsplit;
     struct bvh top;
+    /* `top` collapsed to the context's wide layout (params->wide_layout:
+     * 4 or 8 wide, range leaves of instance slots) after every top-level
+     * build, walked by the SIMD tables; node_count 0 when there is none
+     * (isa=scalar), and then the binary walk over `top` runs. */
+    struct bvh4 top_wide;
     struct trace_instance *trace_instances; /* one per non-empty instance */
     uint32_t trace_instance_count;
 

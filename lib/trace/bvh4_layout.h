@@ -121,6 +121,14 @@ struct bvh4 {
  */
 int accel_collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *tri,
                         uint32_t width);
+/*
+ * tri NULL (the top level over instances, which has no triangles): the
+ * same nodes without merging small subtrees (a leaf lane is a binary
+ * leaf), no packets; a leaf lane's child is its first leaf slot and
+ * its count the slots it covers, so its primitives are
+ * bvh->prim_index[child .. child + count).  The caller keeps the binary
+ * leaves at most UINT8_MAX primitives (count is a byte).
+ */
 /* accel_collapse_wide with width 4. */
 int accel_collapse4(struct bvh4 *out, const struct bvh *bvh, const float *tri);
 

@@ -29,26 +29,87 @@ static int usable_direction(const float d[3])
            (d[0] != 0.0f || d[1] != 0.0f || d[2] != 0.0f);
 }
 
-/* Shared top-level walk.  With any_hit the first hit ends the walk. */
-static int walk(const struct trace_scene *scene, const float org[3], const float dir[3],
-                float tmin, float tmax, int any_hit, struct trace_scene_hit *hit,
-                struct trace_scene_counters *counters)
-{
-    const struct bvh *top = scene->top;
-    if (!top || top->node_count == 0 || !(tmin < tmax))
-        return 0;
-    const struct trace_kernels *kernels =
-        scene->kernels ? scene->kernels : trace_kernels_get(TRACE_ISA_SCALAR);
-    /* One set-up per ray: the ray constants, and the box test's, which
-     * every top-level box test below shares. */
-    struct trace_ray ray;
-    trace_ray_init(&ray, org, dir, tmin);
-    struct isect_box_ray br;
-    isect_box_ray_init(&br, &ray);
+/* The per-ray state both top-level walks share. */
+struct top_state {
+    const struct trace_scene *scene;
+    const struct trace_kernels *kernels;
+    const float *org;
+    const float *dir;
+    float tmin;
+    struct trace_ray ray; /* the world ray's set-up */
+    int any_hit;
+    struct trace_scene_hit *hit;
+    struct trace_scene_counters *counters;
+    float best;
+    float box_limit; /* as in traverse.c: widened once a hit is found */
+    int found;
+};
 
-    float best = tmax;
-    float box_limit = tmax; /* as in traverse.c: widened once a hit is found */
-    int found = 0;
+/* The instance in slot `index` of scene->instances.  Returns 1 when an
+ * any-hit walk has its hit. */
+static int visit_instance(struct top_state *s, uint32_t index)
+{
+    const struct trace_scene *scene = s->scene;
+    const struct trace_kernels *kernels = s->kernels;
+    struct trace_scene_counters *counters = s->counters;
+    const struct trace_instance *inst = &scene->instances[index];
+    struct trace_object_view view = {NULL, NULL, NULL};
+    counters->instance_tests++;
+    if (!scene->acquire(scene->user, inst->object, &view))
+        return 0;
+    float o_org[3], o_dir[3];
+    to_object_space(inst->world_to_object, s->org, s->dir, o_org, o_dir);
+    if (!usable_direction(o_dir))
+        return 0;
+    /* An instance whose matrix leaves the ray as it is (the identity, as
+     * for a scene of one static object) reuses the world ray's set-up:
+     * trace_ray_init depends on org, dir and tmin alone, so that is the
+     * same ray bit for bit, without its five divisions. */
+    struct trace_ray o_ray;
+    if (memcmp(o_org, s->org, sizeof(o_org)) == 0 && memcmp(o_dir, s->dir, sizeof(o_dir)) == 0)
+        o_ray = s->ray;
+    else
+        trace_ray_init(&o_ray, o_org, o_dir, s->tmin);
+    /* The wide walk where the table has one and the object a wide
+     * layout: the same answers (kernels.h). */
+    const int wide = view.wide && view.wide->node_count && kernels->closest4;
+    if (s->any_hit)
+        return wide ? kernels->any4(view.wide, view.bvh, view.tri, &o_ray, s->best,
+                                    &counters->object)
+                    : kernels->any(view.bvh, view.tri, &o_ray, s->best, &counters->object);
+    /* Ties between instances go to the lower instance, as ties inside an
+     * object go to the lower primitive: hits do not depend on the
+     * top-level tree nor on the order of visits (an instance's hit at
+     * the current best still comes back, with the limit one ulp above
+     * it, and then the lower index wins). */
+    float limit = s->found ? isect_next_up(s->best) : s->best;
+    struct trace_hit h;
+    int got = wide ? kernels->closest4(view.wide, view.bvh, view.tri, &o_ray, limit, &h,
+                                       &counters->object)
+                   : kernels->closest(view.bvh, view.tri, &o_ray, limit, &h, &counters->object);
+    struct trace_scene_hit *hit = s->hit;
+    if (got && (!s->found || h.t < s->best || index < hit->instance)) {
+        s->best = h.t;
+        s->box_limit = s->best * ISECT_BOX_FAR_SCALE;
+        s->found = 1;
+        hit->t = h.t;
+        hit->u = h.u;
+        hit->v = h.v;
+        hit->prim = h.prim;
+        hit->instance = index;
+    }
+    return 0;
+}
+
+/* The binary top-level walk.  With any_hit the first hit ends it. */
+static int walk_binary(struct top_state *s)
+{
+    const struct bvh *top = s->scene->top;
+    struct trace_scene_counters *counters = s->counters;
+    /* One set-up per ray: the box test's, which every top-level box test
+     * below shares. */
+    struct isect_box_ray br;
+    isect_box_ray_init(&br, &s->ray);
     /* Deferred far children with their entry distances: a popped subtree
      * that starts beyond the closest hit so far is skipped. */
     uint32_t stack[BVH_MAX_DEPTH + 1];
@@ -57,73 +118,21 @@ static int walk(const struct trace_scene *scene, const float org[3], const float
     uint32_t node_index = 0;
     float t_entry;
     counters->top_node_tests++;
-    if (!isect_box(&br, &top->nodes[0], best, &t_entry))
+    if (!isect_box(&br, &top->nodes[0], s->best, &t_entry))
         return 0;
     for (;;) {
         const struct bvh_node *node = &top->nodes[node_index];
         if (node->count) {
-            for (uint32_t i = 0; i < node->count; i++) {
-                const struct trace_instance *inst =
-                    &scene->instances[top->prim_index[node->first + i]];
-                struct trace_object_view view = {NULL, NULL, NULL};
-                counters->instance_tests++;
-                if (!scene->acquire(scene->user, inst->object, &view))
-                    continue;
-                float o_org[3], o_dir[3];
-                to_object_space(inst->world_to_object, org, dir, o_org, o_dir);
-                if (!usable_direction(o_dir))
-                    continue;
-                /* An instance whose matrix leaves the ray as it is (the
-                 * identity, as for a scene of one static object) reuses
-                 * the world ray's set-up: trace_ray_init depends on org,
-                 * dir and tmin alone, so that is the same ray bit for
-                 * bit, without its five divisions. */
-                struct trace_ray o_ray;
-                if (memcmp(o_org, org, sizeof(o_org)) == 0 &&
-                    memcmp(o_dir, dir, sizeof(o_dir)) == 0)
-                    o_ray = ray;
-                else
-                    trace_ray_init(&o_ray, o_org, o_dir, tmin);
-                /* The wide walk where the table has one and the object a
-                 * wide layout: the same answers (kernels.h). */
-                const int wide = view.wide && view.wide->node_count && kernels->closest4;
-                if (any_hit) {
-                    if (wide ? kernels->any4(view.wide, view.bvh, view.tri, &o_ray, best,
-                                             &counters->object)
-                             : kernels->any(view.bvh, view.tri, &o_ray, best,
-                                            &counters->object))
-                        return 1;
-                    continue;
-                }
-                /* Ties between instances go to the lower instance, as ties
-                 * inside an object go to the lower primitive: hits do not
-                 * depend on the top-level tree. */
-                uint32_t index = top->prim_index[node->first + i];
-                float limit = found ? isect_next_up(best) : best;
-                struct trace_hit h;
-                int got = wide ? kernels->closest4(view.wide, view.bvh, view.tri, &o_ray, limit,
-                                                   &h, &counters->object)
-                               : kernels->closest(view.bvh, view.tri, &o_ray, limit, &h,
-                                                  &counters->object);
-                if (got &&
-                    (!found || h.t < best || index < hit->instance)) {
-                    best = h.t;
-                    box_limit = best * ISECT_BOX_FAR_SCALE;
-                    found = 1;
-                    hit->t = h.t;
-                    hit->u = h.u;
-                    hit->v = h.v;
-                    hit->prim = h.prim;
-                    hit->instance = index;
-                }
-            }
+            for (uint32_t i = 0; i < node->count; i++)
+                if (visit_instance(s, top->prim_index[node->first + i]))
+                    return 1;
         } else {
             /* Visit the nearer child first; push the farther one. */
             uint32_t left = node->first, right = node->first + 1;
             float t_left, t_right;
             counters->top_node_tests += 2;
-            int hit_left = isect_box(&br, &top->nodes[left], box_limit, &t_left);
-            int hit_right = isect_box(&br, &top->nodes[right], box_limit, &t_right);
+            int hit_left = isect_box(&br, &top->nodes[left], s->box_limit, &t_left);
+            int hit_right = isect_box(&br, &top->nodes[right], s->box_limit, &t_right);
             if (hit_left && hit_right) {
                 if (t_right < t_left) {
                     uint32_t tmp = left;
@@ -149,11 +158,185 @@ static int walk(const struct trace_scene *scene, const float org[3], const float
         }
         do {
             if (sp == 0)
-                return found;
+                return s->found;
             --sp;
-        } while (stack_t[sp] > box_limit);
+        } while (stack_t[sp] > s->box_limit);
         node_index = stack[sp];
     }
+}
+
+/*
+ * The lanes of a wide node (bounds[row * width + lane], bvh4_layout.h)
+ * whose boxes the ray's [tmin, t_max] meets, as a bit mask, with their
+ * entry distances.  isect_box's float operations lane by lane (the
+ * argument of traverse_wide.h): the same (bound - org) * inv per slab
+ * and near/far choice, the entry folded with `>` and the exit with `<`
+ * so that a NaN slab is skipped (maxps/minps return their second operand
+ * for a NaN first one, which is the same rule), the far scale, the clamp
+ * to t_max.  The lanes are binary nodes' boxes bit for bit.
+ */
+static unsigned wide_lanes(const float *bounds, uint32_t width, const int near_row[3],
+                           const int far_row[3], const struct trace_ray *ray, float t_max,
+                           float t_entry[8])
+{
+    unsigned mask = 0;
+#if ISECT_PAIR_SSE
+    const __m128 scale4 = _mm_set1_ps(ISECT_BOX_FAR_SCALE);
+    const __m128 limit4 = _mm_set1_ps(t_max);
+    for (uint32_t h = 0; h < width; h += 4) {
+        __m128 t0 = _mm_set1_ps(ray->tmin);
+        __m128 t1 = _mm_set1_ps(INFINITY);
+        for (int k = 0; k < 3; k++) {
+            const __m128 o = _mm_set1_ps(ray->org[k]);
+            const __m128 inv = _mm_set1_ps(ray->inv_dir[k]);
+            const __m128 tn =
+                _mm_mul_ps(_mm_sub_ps(_mm_load_ps(bounds + near_row[k] * width + h), o), inv);
+            const __m128 tf =
+                _mm_mul_ps(_mm_sub_ps(_mm_load_ps(bounds + far_row[k] * width + h), o), inv);
+            t0 = _mm_max_ps(tn, t0);
+            t1 = _mm_min_ps(tf, t1);
+        }
+        t1 = _mm_min_ps(_mm_mul_ps(t1, scale4), limit4);
+        mask |= (unsigned)_mm_movemask_ps(_mm_cmple_ps(t0, t1)) << h;
+        _mm_storeu_ps(t_entry + h, t0);
+    }
+#else
+    for (uint32_t l = 0; l < width; l++) {
+        float t0 = ray->tmin;
+        float t_far_min = INFINITY;
+        for (int k = 0; k < 3; k++) {
+            float t_near = (bounds[near_row[k] * width + l] - ray->org[k]) * ray->inv_dir[k];
+            float t_far = (bounds[far_row[k] * width + l] - ray->org[k]) * ray->inv_dir[k];
+            t0 = t_near > t0 ? t_near : t0;
+            t_far_min = t_far < t_far_min ? t_far : t_far_min;
+        }
+        float t1 = t_far_min * ISECT_BOX_FAR_SCALE;
+        t1 = t1 < t_max ? t1 : t_max;
+        t_entry[l] = t0;
+        mask |= (unsigned)(t0 <= t1) << l;
+    }
+#endif
+    return mask;
+}
+
+/*
+ * The wide top-level walk over scene->top_wide (4 or 8 wide, range
+ * leaves of instance slots): the object walk's child order (the node's
+ * precomputed order for the ray's octant, Fuetterling, Lojewski,
+ * Pfreundt and Ebert 2017) and entry-distance culling on pop.  The same
+ * answers as walk_binary: every box holding a hit at or below the best
+ * so far passes (the lanes are boxes of the binary tree, tested as
+ * isect_box tests them), and visit_instance's rule does not depend on
+ * the order of visits.
+ */
+static int walk_wide(struct top_state *s, const struct bvh4 *wide)
+{
+    const struct bvh *top = s->scene->top;
+    struct trace_scene_counters *counters = s->counters;
+    const struct trace_ray *ray = &s->ray;
+    const uint32_t width = wide->width;
+    int near_row[3], far_row[3];
+    int octant = 0;
+    for (int k = 0; k < 3; k++) {
+        int neg = signbit(ray->inv_dir[k]) != 0;
+        near_row[k] = neg ? 3 + k : k;
+        far_row[k] = neg ? k : 3 + k;
+        octant |= neg << k;
+    }
+    struct {
+        uint32_t child;
+        uint32_t count; /* 0: wide node, else a leaf of `count` slots */
+        float t_entry;
+    } stack[7 * BVH_MAX_DEPTH + 8];
+    uint32_t sp = 0;
+    uint32_t cur = 0, cur_count = 0;
+    for (;;) {
+        if (cur_count) {
+            for (uint32_t i = 0; i < cur_count; i++)
+                if (visit_instance(s, top->prim_index[cur + i]))
+                    return 1;
+        } else {
+            const float *bounds;
+            const uint32_t *child;
+            const uint8_t *count;
+            uint32_t order;
+            if (width == 4) {
+                const struct bvh4_node *n = &wide->nodes[cur];
+                bounds = &n->bounds[0][0];
+                child = n->child;
+                count = n->count;
+                order = 0;
+                for (int p = 0; p < 4; p++)
+                    order |= (uint32_t)(n->order[octant] >> (2 * p) & 3u) << (3 * p);
+            } else {
+                const struct bvh8_node *n = &wide->nodes8[cur];
+                bounds = &n->bounds[0][0];
+                child = n->child;
+                count = n->count;
+                order = (uint32_t)n->order[octant][0] | (uint32_t)n->order[octant][1] << 8 |
+                        (uint32_t)n->order[octant][2] << 16;
+            }
+            counters->top_node_tests += width;
+            float te[8];
+            unsigned mask = wide_lanes(bounds, width, near_row, far_row, ray, s->box_limit, te);
+            if (mask) {
+                /* Push the hit lanes back to front in the octant's order
+                 * (3 bits per position here), then take the front one. */
+                for (int p = (int)width - 1; p >= 0; p--) {
+                    const unsigned l = order >> (3 * p) & 7u;
+                    if (!(mask >> l & 1u))
+                        continue;
+                    stack[sp].child = child[l];
+                    stack[sp].count = count[l];
+                    stack[sp].t_entry = te[l];
+                    sp++;
+                }
+                sp--;
+                cur = stack[sp].child;
+                cur_count = stack[sp].count;
+                continue;
+            }
+        }
+        for (;;) {
+            if (sp == 0)
+                return s->found;
+            sp--;
+            if (stack[sp].t_entry <= s->box_limit)
+                break;
+        }
+        cur = stack[sp].child;
+        cur_count = stack[sp].count;
+    }
+}
+
+/* Shared by closest and any hit: the wide walk where the table walks a
+ * wide layout and the scene has one, else the binary walk. */
+static int walk(const struct trace_scene *scene, const float org[3], const float dir[3],
+                float tmin, float tmax, int any_hit, struct trace_scene_hit *hit,
+                struct trace_scene_counters *counters)
+{
+    const struct bvh *top = scene->top;
+    if (!top || top->node_count == 0 || !(tmin < tmax))
+        return 0;
+    struct top_state s;
+    s.scene = scene;
+    s.kernels = scene->kernels ? scene->kernels : trace_kernels_get(TRACE_ISA_SCALAR);
+    s.org = org;
+    s.dir = dir;
+    s.tmin = tmin;
+    /* One set-up per ray; instances with the identity matrix reuse it. */
+    trace_ray_init(&s.ray, org, dir, tmin);
+    s.any_hit = any_hit;
+    s.hit = hit;
+    s.counters = counters;
+    s.best = tmax;
+    s.box_limit = tmax;
+    s.found = 0;
+    const struct bvh4 *wide = scene->top_wide;
+    if (wide && wide->node_count && s.kernels->wide_width &&
+        (wide->width == 4 || wide->width == 8))
+        return walk_wide(&s, wide);
+    return walk_binary(&s);
 }
 
 int trace_scene_closest(const struct trace_scene *scene, const float org[3], const float dir[3],

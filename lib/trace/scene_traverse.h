@@ -50,6 +50,11 @@ struct trace_scene {
     /* The object walk's ISA table (kernels.h); NULL means the scalar one.
      * Every table gives the same answers. */
     const struct trace_kernels *kernels;
+    /* NULL or empty: the binary walk over `top`.  Else `top` collapsed to
+     * the wide layout with range leaves (accel_collapse_wide with no
+     * triangles), walked when kernels has a wide walk (wide_width != 0):
+     * the same answers as the binary walk. */
+    const struct bvh4 *top_wide;
 };
 
 struct trace_scene_hit {

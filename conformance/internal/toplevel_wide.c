@@ -1,0 +1,286 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * toplevel_wide.c - the wide top level over instances (issue 11 item 2).
+ *
+ * A scene prepared with a wide layout (bvh_build_params.wide_layout 4 or
+ * 8, what a context whose kernels walk 4 or 8 wide sets) has its top
+ * level collapsed to that width with leaves of instance slots, and one
+ * with wide_layout 0 (isa=scalar) has none.  The two-level walk over the
+ * wide top level gives the binary top level's answers bit for bit (t,
+ * u, v, primitive, instance; any hit) on many random rays over a scene
+ * of many instances whose boxes coincide and overlap, with equal-t hits
+ * between instances (duplicated instances, coplanar overlapping quads),
+ * whose winner is the lower instance whatever the order of visits.
+ */
+#include <rt/rt.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "check.h"
+#include "scene/scene.h"
+#include "scene/update.h"
+#include "trace/kernels.h"
+#include "trace/scene_traverse.h"
+
+static uint32_t rng_state = 12345u;
+
+static float rnd(void)
+{
+    rng_state = rng_state * 1664525u + 1013904223u;
+    return (float)(rng_state >> 8) * 0x1p-24f;
+}
+
+/* Records triangles (9 doubles each) into a new object `name`. */
+static struct scene_object *define(struct scene *scene, uint32_t name, const double *tris,
+                                   int count)
+{
+    struct scene_recording rec;
+    memset(&rec, 0, sizeof(rec));
+    rec.material_index = -1;
+    double identity[16];
+    memset(identity, 0, sizeof(identity));
+    identity[0] = identity[5] = identity[10] = identity[15] = 1.0;
+    struct scene_block block;
+    memset(&block, 0, sizeof(block));
+    scene_block_start(&block, &rec, RT_TRIANGLES, identity);
+    struct scene_material material;
+    scene_material_default(&material);
+    struct scene_triangle_state ts = {&material, 0, 0, 0};
+    const float n[3] = {0, 0, 1}, c[4] = {1, 1, 1, 1}, st[2] = {0, 0};
+    for (int i = 0; i < 3 * count; i++)
+        CHECK(scene_record_vertex(&rec, &block, &ts, &tris[3 * i], n, c, st) ==
+              SCENE_RECORD_OK);
+    scene_mesh_compute_bounds(&rec.mesh);
+    struct scene_object *object = scene_objects_get_or_create(&scene->objects, name);
+    CHECK(object != NULL);
+    if (object)
+        scene_define_object(scene, object, &rec.mesh);
+    return object;
+}
+
+/* The instances: object_to_world = translate(t) * R * scale(s), R a
+ * rotation by a multiple of 90 degrees about z, s a power of two, so
+ * the inverse is exact. */
+struct placement {
+    int object;
+    double s;
+    int quarter;
+    double t[3];
+};
+
+static void matrices(const struct placement *p, double o2w[16], double w2o[16])
+{
+    static const double cs[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+    double c = cs[p->quarter][0], sn = cs[p->quarter][1];
+    memset(o2w, 0, 16 * sizeof(double));
+    memset(w2o, 0, 16 * sizeof(double));
+    /* Column-major, as GL. */
+    o2w[0] = c * p->s;
+    o2w[1] = sn * p->s;
+    o2w[4] = -sn * p->s;
+    o2w[5] = c * p->s;
+    o2w[10] = p->s;
+    o2w[12] = p->t[0];
+    o2w[13] = p->t[1];
+    o2w[14] = p->t[2];
+    o2w[15] = 1.0;
+    /* Inverse: scale(1/s) * R^T * translate(-t). */
+    double is = 1.0 / p->s;
+    w2o[0] = c * is;
+    w2o[1] = -sn * is;
+    w2o[4] = sn * is;
+    w2o[5] = c * is;
+    w2o[10] = is;
+    w2o[12] = -(w2o[0] * p->t[0] + w2o[4] * p->t[1]);
+    w2o[13] = -(w2o[1] * p->t[0] + w2o[5] * p->t[1]);
+    w2o[14] = -is * p->t[2];
+    w2o[15] = 1.0;
+}
+
+enum { OBJECTS = 3, INSTANCES = 400 };
+
+static void build_scene(struct scene *scene, const struct bvh_build_params *params, int cellsplit,
+                        const struct placement *places, int count)
+{
+    scene_init(scene, params, 0, 0);
+    scene->frame.toplevel_cellsplit = cellsplit;
+    /* Object 0: the unit quad in z = 0; object 1: random triangles in the
+     * unit cube; object 2: two triangles sharing the quad's plane. */
+    static const double quad[18] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+    double soup[9 * 24];
+    uint32_t keep = rng_state;
+    rng_state = 777u;
+    for (int i = 0; i < 9 * 24; i++)
+        soup[i] = (double)rnd();
+    rng_state = keep;
+    static const double half[18] = {0, 0, 0, 2, 0, 0, 0, 2, 0, 0, 0, 0, 0, 0.5, 0, 0.5, 0, 0};
+    struct scene_object *objects[OBJECTS] = {define(scene, 1, quad, 2), define(scene, 2, soup, 24),
+                                             define(scene, 3, half, 2)};
+    for (int i = 0; i < count; i++) {
+        double o2w[16], w2o[16];
+        matrices(&places[i], o2w, w2o);
+        CHECK(scene_frame_add_instance(&scene->frame, objects[places[i].object], o2w, w2o, o2w) ==
+              0);
+    }
+    struct scene_changes changes;
+    CHECK(scene_prepare_toplevel(scene) == SCENE_OK);
+    CHECK(scene_prepare_objects(scene, NULL, 100.0, &changes) == SCENE_OK);
+}
+
+static int acquire(void *user, void *object, struct trace_object_view *view)
+{
+    struct scene *scene = user;
+    int built = 0;
+    const struct scene_accel *accel = scene_object_acquire(object, &scene->update_config, &built);
+    if (!accel)
+        return 0;
+    view->bvh = &accel->bvh;
+    view->tri = accel->tri;
+    view->wide = &accel->wide;
+    return 1;
+}
+
+static struct trace_scene view_of(struct scene *scene, const struct trace_kernels *kernels,
+                                  int wide)
+{
+    struct trace_scene ts;
+    memset(&ts, 0, sizeof(ts));
+    ts.top = &scene->frame.top;
+    ts.instances = scene->frame.trace_instances;
+    ts.acquire = acquire;
+    ts.user = scene;
+    ts.kernels = kernels;
+    ts.top_wide = wide ? &scene->frame.top_wide : NULL;
+    return ts;
+}
+
+static int same_hit(int got_a, const struct trace_scene_hit *a, int got_b,
+                    const struct trace_scene_hit *b)
+{
+    if (got_a != got_b)
+        return 0;
+    if (!got_a)
+        return 1;
+    return memcmp(&a->t, &b->t, sizeof(float)) == 0 && memcmp(&a->u, &b->u, sizeof(float)) == 0 &&
+           memcmp(&a->v, &b->v, sizeof(float)) == 0 && a->prim == b->prim &&
+           a->instance == b->instance;
+}
+
+int main(void)
+{
+    const struct trace_kernels *best = trace_kernels_best();
+    const struct trace_kernels *scalar = trace_kernels_get(TRACE_ISA_SCALAR);
+    struct placement places[INSTANCES];
+    for (int i = 0; i < INSTANCES; i++) {
+        struct placement *p = &places[i];
+        if (i >= 8 && i % 8 == 0) {
+            /* An exact duplicate of an earlier instance: equal-t hits
+             * across instances, the later one must lose. */
+            *p = places[(int)(rnd() * (float)i)];
+            continue;
+        }
+        p->object = (int)(rnd() * OBJECTS) % OBJECTS;
+        p->s = ldexp(1.0, (int)(rnd() * 3.0f) - 1);
+        p->quarter = (int)(rnd() * 4.0f) % 4;
+        for (int k = 0; k < 3; k++)
+            p->t[k] = floor((double)rnd() * 16.0) * 0.5;
+        if (i % 5 == 1)
+            p->t[2] = 2.0; /* coplanar quads in z = 2, overlapping */
+    }
+
+    struct bvh_build_params params;
+    bvh_build_params_default(&params);
+    int widths[3] = {0, 4, 8};
+    for (int cellsplit = 0; cellsplit < 2; cellsplit++) {
+        struct scene scenes[3];
+        for (int w = 0; w < 3; w++) {
+            params.wide_layout = widths[w];
+            build_scene(&scenes[w], &params, cellsplit, places, INSTANCES);
+        }
+        /* Structure: the wide top level exists exactly when asked for, at
+         * that width, over the same binary tree, with leaves of instance
+         * slots and no packets. */
+        CHECK(scenes[0].frame.top_wide.node_count == 0);
+        for (int w = 1; w < 3; w++) {
+            const struct bvh4 *tw = &scenes[w].frame.top_wide;
+            CHECK(tw->width == (uint32_t)widths[w] && tw->node_count > 0);
+            CHECK(tw->packet_count == 0);
+            CHECK(tw->node_count < scenes[w].frame.top.node_count);
+            CHECK(scenes[w].frame.top.node_count == scenes[0].frame.top.node_count &&
+                  memcmp(scenes[w].frame.top.nodes, scenes[0].frame.top.nodes,
+                         scenes[0].frame.top.node_count * sizeof(struct bvh_node)) == 0);
+        }
+        CHECK(scenes[0].frame.trace_instance_count == INSTANCES);
+
+        long mismatches = 0, hits = 0, ties = 0;
+        uint64_t top_tests[3] = {0, 0, 0};
+        for (int r = 0; r < 20000; r++) {
+            float org[3], dir[3];
+            if (r % 4 == 0) {
+                /* Straight down onto the coplanar quads (equal t). */
+                org[0] = rnd() * 10.0f;
+                org[1] = rnd() * 10.0f;
+                org[2] = 20.0f;
+                dir[0] = 0.0f;
+                dir[1] = 0.0f;
+                dir[2] = -1.0f;
+            } else {
+                for (int k = 0; k < 3; k++) {
+                    org[k] = rnd() * 14.0f - 2.0f;
+                    dir[k] = rnd() * 2.0f - 1.0f;
+                }
+                if (r % 4 == 1) {
+                    /* Aimed at an instance's translation. */
+                    const struct placement *p = &places[(int)(rnd() * INSTANCES) % INSTANCES];
+                    for (int k = 0; k < 3; k++)
+                        dir[k] = (float)p->t[k] + 0.25f - org[k];
+                }
+            }
+            struct trace_scene_hit ref, h;
+            struct trace_scene_counters c;
+            memset(&c, 0, sizeof(c));
+            struct trace_scene ts = view_of(&scenes[0], scalar, 0);
+            int got_ref = trace_scene_closest(&ts, org, dir, 0.0f, INFINITY, &ref, &c);
+            int any_ref = trace_scene_any(&ts, org, dir, 0.0f, INFINITY, &c);
+            top_tests[0] += c.top_node_tests;
+            hits += got_ref;
+            CHECK(any_ref == got_ref);
+            for (int w = 1; w < 3; w++) {
+                for (int wide = 0; wide < 2; wide++) {
+                    memset(&c, 0, sizeof(c));
+                    ts = view_of(&scenes[w], best, wide);
+                    int got = trace_scene_closest(&ts, org, dir, 0.0f, INFINITY, &h, &c);
+                    int any = trace_scene_any(&ts, org, dir, 0.0f, INFINITY, &c);
+                    if (wide)
+                        top_tests[w] += c.top_node_tests;
+                    if (!same_hit(got_ref, &ref, got, &h) || any != any_ref)
+                        mismatches++;
+                }
+            }
+            /* An equal-t hit of a duplicated instance: the lower wins. */
+            if (got_ref) {
+                const struct placement *p = &places[ref.instance];
+                for (uint32_t j = 0; j < ref.instance; j++)
+                    ties += memcmp(&places[j], p, sizeof(*p)) == 0;
+            }
+        }
+        printf("cellsplit %d: %ld hits of 20000, %ld mismatches, top node tests per ray "
+               "binary %.2f wide4 %.2f wide8 %.2f\n",
+               cellsplit, hits, mismatches, (double)top_tests[0] / 20000.0,
+               (double)top_tests[1] / 20000.0, (double)top_tests[2] / 20000.0);
+        CHECK(hits > 5000);
+        CHECK(mismatches == 0);
+        /* A winner never has an identical lower-indexed twin. */
+        CHECK(ties == 0);
+        /* The wide walk ran (tests counted per lane, a multiple of the
+         * width) where the kernels walk a wide layout. */
+        if (best->wide_width) {
+            CHECK(top_tests[1] > 0 && top_tests[1] % 4 == 0);
+            CHECK(top_tests[2] > 0 && top_tests[2] % 8 == 0);
+        }
+        for (int w = 0; w < 3; w++)
+            scene_release(&scenes[w]);
+    }
+    return test_summary("toplevel_wide");
+}
