@@ -161,51 +161,52 @@ static void lane_centres(const struct bvh *bvh, const struct scratch_node *s,
     }
 }
 
-static void write_node4(struct bvh4_node *w, const struct bvh *bvh, const struct scratch_node *s)
+/* The lanes of a width-wide node (4 or 8): bounds as rows of `width`
+ * floats (empty lanes inverted), children and counts, and per ray octant
+ * the lanes front to back packed at bits_per_lane bits each (2 for 4-wide,
+ * 3 for 8-wide). */
+static void write_lanes(const struct bvh *bvh, const struct scratch_node *s, int width,
+                        float *bounds, uint32_t *child, uint8_t *count, uint32_t order_bits[8])
 {
-    memset(w, 0, sizeof(*w));
-    for (int l = 0; l < 4; l++) {
+    for (int l = 0; l < width; l++) {
         for (int k = 0; k < 3; k++) {
-            w->bounds[k][l] = l < s->lanes ? bvh->nodes[s->source[l]].aabb_min[k] : INFINITY;
-            w->bounds[3 + k][l] = l < s->lanes ? bvh->nodes[s->source[l]].aabb_max[k] : -INFINITY;
+            bounds[k * width + l] = l < s->lanes ? bvh->nodes[s->source[l]].aabb_min[k] : INFINITY;
+            bounds[(3 + k) * width + l] =
+                l < s->lanes ? bvh->nodes[s->source[l]].aabb_max[k] : -INFINITY;
         }
-        w->child[l] = l < s->lanes ? s->child[l] : 0;
-        w->count[l] = (uint8_t)(l < s->lanes ? s->count[l] : 0);
+        child[l] = l < s->lanes ? s->child[l] : 0;
+        count[l] = (uint8_t)(l < s->lanes ? s->count[l] : 0);
     }
+    const int bits_per_lane = width == 4 ? 2 : 3;
     double centre[MAX_WIDTH][3];
     lane_centres(bvh, s, centre);
     for (int oct = 0; oct < 8; oct++) {
         int order[MAX_WIDTH];
         octant_order(centre, s->lanes, oct, order);
-        unsigned bits = 0;
-        for (int p = 0; p < 4; p++)
-            bits |= (unsigned)order[p] << (2 * p);
-        w->order[oct] = (uint8_t)bits;
+        order_bits[oct] = 0;
+        for (int p = 0; p < width; p++)
+            order_bits[oct] |= (uint32_t)order[p] << (bits_per_lane * p);
     }
+}
+
+static void write_node4(struct bvh4_node *w, const struct bvh *bvh, const struct scratch_node *s)
+{
+    uint32_t bits[8];
+    memset(w, 0, sizeof(*w));
+    write_lanes(bvh, s, 4, &w->bounds[0][0], w->child, w->count, bits);
+    for (int oct = 0; oct < 8; oct++)
+        w->order[oct] = (uint8_t)bits[oct];
 }
 
 static void write_node8(struct bvh8_node *w, const struct bvh *bvh, const struct scratch_node *s)
 {
+    uint32_t bits[8];
     memset(w, 0, sizeof(*w));
-    for (int l = 0; l < 8; l++) {
-        for (int k = 0; k < 3; k++) {
-            w->bounds[k][l] = l < s->lanes ? bvh->nodes[s->source[l]].aabb_min[k] : INFINITY;
-            w->bounds[3 + k][l] = l < s->lanes ? bvh->nodes[s->source[l]].aabb_max[k] : -INFINITY;
-        }
-        w->child[l] = l < s->lanes ? s->child[l] : 0;
-        w->count[l] = (uint8_t)(l < s->lanes ? s->count[l] : 0);
-    }
-    double centre[MAX_WIDTH][3];
-    lane_centres(bvh, s, centre);
+    write_lanes(bvh, s, 8, &w->bounds[0][0], w->child, w->count, bits);
     for (int oct = 0; oct < 8; oct++) {
-        int order[MAX_WIDTH];
-        octant_order(centre, s->lanes, oct, order);
-        uint32_t bits = 0;
-        for (int p = 0; p < 8; p++)
-            bits |= (uint32_t)order[p] << (3 * p);
-        w->order[oct][0] = (uint8_t)bits;
-        w->order[oct][1] = (uint8_t)(bits >> 8);
-        w->order[oct][2] = (uint8_t)(bits >> 16);
+        w->order[oct][0] = (uint8_t)bits[oct];
+        w->order[oct][1] = (uint8_t)(bits[oct] >> 8);
+        w->order[oct][2] = (uint8_t)(bits[oct] >> 16);
     }
 }
 
