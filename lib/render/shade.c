@@ -134,12 +134,9 @@ void shade_ray(const struct shade_context *sc, const float org[3], const float d
                float tmax, struct shade_cone cone, int depth, float rgba[4])
 {
     struct trace_scene_hit hit;
-    /* Camera rays (depth 0) pass faces RT_CULL_FACE removed, as GL does
-     * not draw them; secondary rays see every face (gl_shade.h). */
-    int found = depth == 0 ? gl_closest_drawn(sc, org, dir, 0.0f, tmax, &hit)
-                           : trace_scene_closest(sc->scene, org, dir, 0.0f, tmax, &hit,
-                                                 sc->counters);
-    if (!found) {
+    /* Reflected and refracted rays see every face; camera rays, which
+     * skip the faces RT_CULL_FACE removes, go through render/blend.c. */
+    if (!trace_scene_closest(sc->scene, org, dir, 0.0f, tmax, &hit, sc->counters)) {
         memcpy(rgba, sc->state->clear_color, 4 * sizeof(float));
         return;
     }

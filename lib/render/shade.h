@@ -34,8 +34,9 @@ struct shade_cone {
 };
 
 /*
- * Colour seen along a world-space ray (dir need not be normalised) with
- * 0 <= t < tmax; depth counts the recursion of Whitted shading.  `cone` is
+ * Colour seen along a world-space secondary ray (reflected or refracted;
+ * camera rays take render/blend.c's path) (dir need not be normalised)
+ * with 0 <= t < tmax; depth counts the recursion of Whitted shading.  `cone` is
  * the ray's footprint for textures; reflected and refracted rays continue
  * it.  Writes RGBA to rgba; alpha is 1 on a hit and the clear alpha on a
  * miss.
