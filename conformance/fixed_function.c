@@ -208,9 +208,16 @@ static void faces(void)
     RThit hit = tu_trace(0.1f, 0.2f, 0.0f, 0.0f, 0.0f, -1.0f);
     CHECK_NEAR(hit.t, 5.0, 1e-5);
     rtCullFace(RT_FRONT_AND_BACK);
-    CHECK(rtIsEnabled(RT_CULL_FACE));
-    render_obj(); /* state at recording counts, as in a GL list */
+    CHECK(rtIsEnabled(RT_CULL_FACE)); /* the call executed the list's rtEnable */
+    /* The list enables culling but sets no rtCullFace: its geometry takes
+     * the mode current at the call, as glCallList (until 25814ff the mode
+     * at recording counted, which is not GL): both faces culled. */
+    render_obj();
+    CHECK_RGB(pixel(1, 1), 0, 0, 0);
+    rtCullFace(RT_BACK);
+    render_obj();
     CHECK_RGB(pixel(1, 1), 1, 0, 0);
+    rtCullFace(RT_FRONT_AND_BACK);
     rtNewObject(OBJ);
     square(-5, 0);
     square(-8, 1);
@@ -467,15 +474,29 @@ static void texgen(void)
     rtNewObject(OBJ);
     square(-5, 1);
     rtEndObject();
-    rtDisable(RT_TEXTURE_GEN_S);
     render_obj();
     CHECK_RGB(pixel(0, 1), 1, 0, 0);
     CHECK_RGB(pixel(3, 1), 0, 1, 0);
-    rtNewObject(OBJ); /* without generation: the recorded s = 0 everywhere */
-    square(-5, 1);
-    rtEndObject();
+    /* The object sets no texture generation: the call's applies, as GL's
+     * list geometry takes the state at glCallList (until 25814ff the
+     * state at recording did).  Without it, the recorded s = 0. */
+    rtDisable(RT_TEXTURE_GEN_S);
     render_obj();
     CHECK_RGB(pixel(3, 1), 1, 0, 0);
+    rtNewObject(OBJ); /* recorded without generation, called with it */
+    square(-5, 1);
+    rtEndObject();
+    rtEnable(RT_TEXTURE_GEN_S);
+    render_obj();
+    CHECK_RGB(pixel(3, 1), 0, 1, 0);
+    rtDisable(RT_TEXTURE_GEN_S);
+    /* Immediate mode: the state at the draw, per primitive. */
+    rtBeginFrame();
+    rtEnable(RT_TEXTURE_GEN_S);
+    square(-5, 1);
+    rtDisable(RT_TEXTURE_GEN_S);
+    tu_render_float(W, H, px);
+    CHECK_RGB(pixel(3, 1), 0, 1, 0);
     rtDisable(RT_TEXTURE_2D);
     rtDeleteTextures(1, &tex);
     CHECK_NO_ERR();

@@ -163,7 +163,7 @@ int main(void)
     CHECK_NEAR(c[0], 0.04 + 0.2, TOL);
 
     tu_section("fog factor");
-    struct render_fog fog = {1, RT_LINEAR, 0.5f, 1.0f, 5.0f, {0, 0, 0, 0}};
+    struct scene_fog fog = {1, RT_LINEAR, 0.5f, 1.0f, 5.0f, {0, 0, 0, 0}};
     CHECK_NEAR(gl_fog_factor(&fog, 2.0f), 0.75, TOL);
     CHECK_NEAR(gl_fog_factor(&fog, 9.0f), 0.0, TOL);
     CHECK_NEAR(gl_fog_factor(&fog, 0.0f), 1.0, TOL);

@@ -287,6 +287,9 @@ static void light_model(const char *caller, RTenum pname, const RTfloat *params,
         ctx->render.light_model_two_side = params[0] != 0.0f;
     else
         ctx->render.light_model_local_viewer = params[0] != 0.0f;
+    /* Per primitive (scene/gl_state.h): a list's later geometry gets a
+     * segment whose instance carries the light model current there. */
+    rt_list_gl_state_changed(ctx, caller);
 }
 
 void rtLightModelfv(RTenum pname, const RTfloat *params)
@@ -338,11 +341,10 @@ void rtShadingMode(RTenum mode)
 void rt_sync_fixed_function(struct rt_context *ctx)
 {
     struct scene_material m = ctx->material;
-    m.cull_face = SCENE_CULL_NONE;
-    if (ctx->cull_face_enabled)
-        m.cull_face = ctx->cull_face_mode == RT_FRONT  ? SCENE_CULL_FRONT
-                      : ctx->cull_face_mode == RT_BACK ? SCENE_CULL_BACK
-                                                       : SCENE_CULL_BOTH;
+    m.cull_mode = ctx->cull_face_mode == RT_FRONT  ? SCENE_CULL_FRONT
+                  : ctx->cull_face_mode == RT_BACK ? SCENE_CULL_BACK
+                                                   : SCENE_CULL_BOTH;
+    m.cull_face = ctx->cull_face_enabled ? (uint8_t)m.cull_mode : (uint8_t)SCENE_CULL_NONE;
     m.normalize = ctx->normalize_enabled        ? SCENE_NORMALIZE_ON
                   : ctx->rescale_normal_enabled ? SCENE_NORMALIZE_RESCALE
                                                 : SCENE_NORMALIZE_OFF;
@@ -379,6 +381,7 @@ void rtColorMaterial(RTenum face, RTenum mode)
                  rt_enum_string(mode, b1));
         return;
     }
+    rt_list_state(ctx, LIST_COLOR_MATERIAL, face, mode, NULL, 0);
     if (ctx->material.color_material_face == face && ctx->material.color_material_mode == mode)
         return;
     ctx->material.color_material_face = face;
@@ -397,6 +400,7 @@ void rtCullFace(RTenum mode)
                  rt_enum_string(mode, b1));
         return;
     }
+    rt_list_state(ctx, LIST_CULL_FACE, mode, 0, NULL, 0);
     ctx->cull_face_mode = mode;
     rt_sync_fixed_function(ctx);
 }
@@ -412,6 +416,7 @@ void rtFrontFace(RTenum mode)
                  rt_enum_string(mode, b1));
         return;
     }
+    rt_list_state(ctx, LIST_FRONT_FACE, mode, 0, NULL, 0);
     uint8_t cw = mode == RT_CW;
     if (ctx->material.front_cw == cw)
         return;

@@ -21,9 +21,11 @@ int rt_block_start(struct rt_context *ctx, RTenum mode)
     }
     /* Immediate mode: into the frame under the current modelview. */
     struct scene_clip clip;
+    struct scene_gl_state gl;
     rt_clip_now(ctx, &clip);
-    ctx->target = scene_immediate_segment(&ctx->scene.frame,
-                                          ctx->modelview.m[ctx->modelview.depth - 1], &clip);
+    rt_gl_state_now(ctx, &gl);
+    ctx->target = scene_immediate_segment(
+        &ctx->scene.frame, ctx->modelview.m[ctx->modelview.depth - 1], &clip, &gl);
     if (!ctx->target)
         return -1;
     rt_frame_described(ctx);
@@ -50,11 +52,13 @@ static struct scene_triangle_state triangle_state(const struct rt_context *ctx)
     /* In a list, what the list did not set yet comes from the caller. */
     ts.inherit = 0;
     if (ctx->target == &ctx->recording) {
-        ts.inherit = SCENE_MATERIAL_ALL & ~ctx->recording.material_set;
+        ts.inherit = SCENE_MATERIAL_ALL_STATE & ~ctx->recording.material_set;
         if (!ctx->recording.color_set)
             ts.flags |= TRI_INHERIT_COLOR;
         if (!ctx->recording.color_material_set)
             ts.flags |= TRI_INHERIT_COLOR_MATERIAL;
+        if (!ctx->recording.shade_model_set)
+            ts.flags |= TRI_INHERIT_SHADE;
     }
     return ts;
 }

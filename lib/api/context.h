@@ -52,6 +52,16 @@ struct list_saved_state {
     float global_ambient[4];
     RTuint list_base;
     int clip_enabled[RENDER_MAX_CLIP_PLANES]; /* rtEnable(RT_CLIP_PLANEi) */
+    /* The fixed-function switches a list may record (n-ffstate). */
+    int cull_face_enabled;
+    RTenum cull_face_mode;
+    int normalize_enabled, rescale_normal_enabled;
+    int texgen_enabled[2];
+    RTenum texgen_mode[2];
+    float texgen_object_plane[2][4];
+    float texgen_eye_plane[2][4];
+    int light_model_two_side, light_model_local_viewer;
+    struct scene_fog fog;
 };
 
 struct rt_context {
@@ -229,6 +239,9 @@ void rt_lines_block_end(struct rt_context *ctx, const char *caller);
 /* The clip planes geometry drawn now is clipped by (lines.c): the enabled
  * planes and their eye-space equations, the others zero. */
 void rt_clip_now(const struct rt_context *ctx, struct scene_clip *clip);
+/* The fog and light model geometry drawn now is drawn under
+ * (fixed_function.c), zero-filled so that equal states compare equal. */
+void rt_gl_state_now(const struct rt_context *ctx, struct scene_gl_state *gl);
 /* Display lists (list.c).  rt_list_compiling: a list is being recorded
  * and the call comes from the application (not a replay).  The record
  * functions add an operation; they return 1 when the call must not take
@@ -237,7 +250,9 @@ void rt_clip_now(const struct rt_context *ctx, struct scene_clip *clip);
 enum list_state_call {
     LIST_COLOR, LIST_NORMAL, LIST_TEXCOORD, LIST_MATERIAL, LIST_SHADE_MODEL, LIST_ENABLE,
     LIST_DISABLE, LIST_BIND_TEXTURE, LIST_LIGHT, LIST_LIGHT_MODEL, LIST_LIST_BASE,
-    LIST_CLIP_PLANE
+    LIST_CLIP_PLANE,
+    /* Fixed-function state (appearance.c, fixed_function.c). */
+    LIST_CULL_FACE, LIST_FRONT_FACE, LIST_COLOR_MATERIAL, LIST_TEX_ENV, LIST_TEX_GEN, LIST_FOG
 };
 int rt_list_compiling(const struct rt_context *ctx);
 int rt_list_matrix(struct rt_context *ctx, const char *caller, enum scene_list_op_kind kind,
@@ -248,6 +263,9 @@ void rt_list_state(struct rt_context *ctx, enum list_state_call what, RTenum b, 
  * list's later geometry starts a segment of its own, so that its
  * instance carries the clip planes current there at the call. */
 void rt_list_clip_changed(struct rt_context *ctx);
+/* The same after a fog or light-model call took effect: the state is
+ * per primitive, carried by the instance (scene/gl_state.h). */
+void rt_list_gl_state_changed(struct rt_context *ctx, const char *caller);
 /* Applies a matrix operation to the context's stacks as the entry point
  * would (errors named after caller) (matrix.c). */
 void rt_matrix_apply(struct rt_context *ctx, const char *caller, enum scene_list_op_kind kind,

@@ -1,9 +1,10 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * fixed_function.c - the rest of GL 1.x's fixed-function state that ported
- * programs set: rtFog (frame state, docs/fog.md), rtTexEnv and rtTexGen
+ * programs set: rtFog (per primitive, carried by the instance of the
+ * geometry, scene/gl_state.h; docs/fog.md), rtTexEnv and rtTexGen
  * (recorded with the triangles, as GL applies them per primitive;
- * docs/textures.md), and
+ * docs/textures.md), all three recorded in display lists, and
  * the names with no ray tracing meaning, accepted with no effect after
  * GL's own validation (docs/appearance.md, "Accepted no-ops").
  */
@@ -31,9 +32,10 @@ static void fog(const char *caller, RTenum pname, const RTfloat *params, int vec
         rt_error(ctx, RT_INVALID_VALUE, "%s(params=NULL)", caller);
         return;
     }
-    if (!rt_check_finite(ctx, caller, params, pname == RT_FOG_COLOR ? 4 : 1))
+    const int n = pname == RT_FOG_COLOR ? 4 : 1;
+    if (!rt_check_finite(ctx, caller, params, n))
         return;
-    struct render_fog *f = &ctx->render.fog;
+    struct scene_fog *f = &ctx->render.fog;
     switch (pname) {
     case RT_FOG_MODE: {
         RTenum mode = (RTenum)params[0];
@@ -43,7 +45,6 @@ static void fog(const char *caller, RTenum pname, const RTfloat *params, int vec
                      caller, rt_enum_string(mode, b1));
             return;
         }
-        f->mode = mode;
         break;
     }
     case RT_FOG_DENSITY:
@@ -52,6 +53,16 @@ static void fog(const char *caller, RTenum pname, const RTfloat *params, int vec
                      (double)params[0]);
             return;
         }
+        break;
+    default:
+        break;
+    }
+    rt_list_state(ctx, LIST_FOG, pname, 0, params, n);
+    switch (pname) {
+    case RT_FOG_MODE:
+        f->mode = (RTenum)params[0];
+        break;
+    case RT_FOG_DENSITY:
         f->density = params[0];
         break;
     case RT_FOG_START:
@@ -66,6 +77,20 @@ static void fog(const char *caller, RTenum pname, const RTfloat *params, int vec
             f->color[k] = params[k] < 0.0f ? 0.0f : (params[k] > 1.0f ? 1.0f : params[k]);
         break;
     }
+    /* Per primitive: a list's later geometry gets a segment of its own. */
+    rt_list_gl_state_changed(ctx, caller);
+}
+
+void rt_gl_state_now(const struct rt_context *ctx, struct scene_gl_state *gl)
+{
+    memset(gl, 0, sizeof(*gl));
+    /* The fog parameters only while fog is enabled, so that changing them
+     * with fog off does not cut segments. */
+    if (ctx->render.fog.enabled)
+        gl->fog = ctx->render.fog;
+    gl->light_model.two_side = ctx->render.light_model_two_side;
+    gl->light_model.local_viewer = ctx->render.light_model_local_viewer;
+    memcpy(gl->light_model.ambient, ctx->render.global_ambient, sizeof(gl->light_model.ambient));
 }
 
 void rtFogf(RTenum pname, RTfloat param)
@@ -106,6 +131,8 @@ static void tex_env(const char *caller, RTenum target, RTenum pname, const RTflo
         rt_error(ctx, RT_INVALID_VALUE, "%s(params=NULL)", caller);
         return;
     }
+    if (pname == RT_TEXTURE_ENV_COLOR && !rt_check_finite(ctx, caller, params, 4))
+        return;
     struct scene_material m = ctx->material;
     if (pname == RT_TEXTURE_ENV_MODE) {
         RTenum mode = (RTenum)params[0];
@@ -117,10 +144,10 @@ static void tex_env(const char *caller, RTenum target, RTenum pname, const RTflo
                      caller, rt_enum_string(mode, b1));
             return;
         }
+        rt_list_state(ctx, LIST_TEX_ENV, pname, 0, params, 1);
         m.tex_env_mode = mode;
     } else {
-        if (!rt_check_finite(ctx, caller, params, 4))
-            return;
+        rt_list_state(ctx, LIST_TEX_ENV, pname, 0, params, 4);
         for (int k = 0; k < 4; k++)
             m.tex_env_color[k] = params[k] < 0.0f ? 0.0f : (params[k] > 1.0f ? 1.0f : params[k]);
     }
@@ -172,6 +199,8 @@ static void tex_gen(const char *caller, RTenum coord, RTenum pname, const RTfloa
         return;
     }
     const int i = coord == RT_S ? 0 : 1;
+    if (pname != RT_TEXTURE_GEN_MODE && !rt_check_finite(ctx, caller, params, 4))
+        return;
     if (pname == RT_TEXTURE_GEN_MODE) {
         RTenum mode = (RTenum)params[0];
         if ((float)mode != params[0] ||
@@ -182,10 +211,10 @@ static void tex_gen(const char *caller, RTenum coord, RTenum pname, const RTfloa
                      caller, rt_enum_string(mode, b1));
             return;
         }
+        rt_list_state(ctx, LIST_TEX_GEN, coord, pname, params, 1);
         ctx->texgen_mode[i] = mode;
     } else {
-        if (!rt_check_finite(ctx, caller, params, 4))
-            return;
+        rt_list_state(ctx, LIST_TEX_GEN, coord, pname, params, 4);
         if (pname == RT_OBJECT_PLANE) {
             memcpy(ctx->texgen_object_plane[i], params, 4 * sizeof(float));
         } else {
@@ -209,6 +238,11 @@ static void tex_gen(const char *caller, RTenum coord, RTenum pname, const RTfloa
         }
     }
     rt_sync_fixed_function(ctx);
+    /* A list's triangles take texture generation from their instance (an
+     * eye plane recorded in a list is transformed by the modelview of its
+     * replay, as glCallList executes glTexGen): later geometry gets a
+     * segment of its own. */
+    rt_list_gl_state_changed(ctx, caller);
 }
 
 void rtTexGeni(RTenum coord, RTenum pname, RTint param)

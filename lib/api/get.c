@@ -373,6 +373,10 @@ static void set_capability(const char *caller, RTenum cap, int value)
     if (cap == RT_CULL_FACE || cap == RT_NORMALIZE || cap == RT_RESCALE_NORMAL ||
         cap == RT_TEXTURE_GEN_S || cap == RT_TEXTURE_GEN_T)
         rt_sync_fixed_function(ctx);
+    /* Fog and texture generation reach a list's geometry through its
+     * instance (scene/gl_state.h, list.c): a segment of its own. */
+    if (cap == RT_FOG || cap == RT_TEXTURE_GEN_S || cap == RT_TEXTURE_GEN_T)
+        rt_list_gl_state_changed(ctx, caller);
 }
 
 void rtEnable(RTenum cap)

@@ -57,6 +57,17 @@ static void save_state(const struct rt_context *ctx, struct list_saved_state *s)
     memcpy(s->global_ambient, ctx->render.global_ambient, sizeof(s->global_ambient));
     s->list_base = ctx->list_base;
     memcpy(s->clip_enabled, ctx->render.vis.clip_enabled, sizeof(s->clip_enabled));
+    s->cull_face_enabled = ctx->cull_face_enabled;
+    s->cull_face_mode = ctx->cull_face_mode;
+    s->normalize_enabled = ctx->normalize_enabled;
+    s->rescale_normal_enabled = ctx->rescale_normal_enabled;
+    memcpy(s->texgen_enabled, ctx->texgen_enabled, sizeof(s->texgen_enabled));
+    memcpy(s->texgen_mode, ctx->texgen_mode, sizeof(s->texgen_mode));
+    memcpy(s->texgen_object_plane, ctx->texgen_object_plane, sizeof(s->texgen_object_plane));
+    memcpy(s->texgen_eye_plane, ctx->texgen_eye_plane, sizeof(s->texgen_eye_plane));
+    s->light_model_two_side = ctx->render.light_model_two_side;
+    s->light_model_local_viewer = ctx->render.light_model_local_viewer;
+    s->fog = ctx->render.fog;
 }
 
 static void restore_state(struct rt_context *ctx, const struct list_saved_state *s)
@@ -73,6 +84,18 @@ static void restore_state(struct rt_context *ctx, const struct list_saved_state 
     memcpy(ctx->render.global_ambient, s->global_ambient, sizeof(s->global_ambient));
     ctx->list_base = s->list_base;
     memcpy(ctx->render.vis.clip_enabled, s->clip_enabled, sizeof(s->clip_enabled));
+    ctx->cull_face_enabled = s->cull_face_enabled;
+    ctx->cull_face_mode = s->cull_face_mode;
+    ctx->normalize_enabled = s->normalize_enabled;
+    ctx->rescale_normal_enabled = s->rescale_normal_enabled;
+    memcpy(ctx->texgen_enabled, s->texgen_enabled, sizeof(s->texgen_enabled));
+    memcpy(ctx->texgen_mode, s->texgen_mode, sizeof(s->texgen_mode));
+    memcpy(ctx->texgen_object_plane, s->texgen_object_plane, sizeof(s->texgen_object_plane));
+    memcpy(ctx->texgen_eye_plane, s->texgen_eye_plane, sizeof(s->texgen_eye_plane));
+    ctx->render.light_model_two_side = s->light_model_two_side;
+    ctx->render.light_model_local_viewer = s->light_model_local_viewer;
+    ctx->render.fog = s->fog;
+    /* ctx->material (restored above) already holds the derived fields. */
 }
 
 static void appearance_now(const struct rt_context *ctx, struct scene_appearance *a)
@@ -82,6 +105,8 @@ static void appearance_now(const struct rt_context *ctx, struct scene_appearance
     memcpy(a->color, ctx->current_color, sizeof(a->color));
     a->color_material = ctx->color_material;
     rt_clip_now(ctx, &a->clip);
+    rt_gl_state_now(ctx, &a->gl);
+    a->flat = ctx->shade_model == RT_FLAT;
 }
 
 /* RT_COMPILE_AND_EXECUTE: notes the modelview and appearance a segment
@@ -156,6 +181,56 @@ void rt_list_clip_changed(struct rt_context *ctx)
     capture_segment(ctx);
 }
 
+void rt_list_gl_state_changed(struct rt_context *ctx, const char *caller)
+{
+    if (!rt_list_compiling(ctx))
+        return;
+    if (scene_list_split(&ctx->recording)) {
+        list_out_of_memory(ctx, caller);
+        return;
+    }
+    capture_segment(ctx);
+}
+
+/* The SCENE_MATERIAL_* bit of the per-primitive state a state call sets,
+ * 0 for none: what the list's later triangles record rather than inherit.
+ * Texture generation has none: a list's triangles always take it from
+ * their instance, the list's segments cut at every rtTexGen and
+ * RT_TEXTURE_GEN_S / _T change (fixed_function.c), because an eye plane
+ * depends on the modelview of the replay. */
+static uint32_t state_bit(enum list_state_call what, RTenum b)
+{
+    switch (what) {
+    case LIST_CULL_FACE:
+        return SCENE_MATERIAL_CULL_MODE;
+    case LIST_FRONT_FACE:
+        return SCENE_MATERIAL_FRONT_FACE;
+    case LIST_COLOR_MATERIAL:
+        return SCENE_MATERIAL_COLOR_MATERIAL_MODE;
+    case LIST_TEX_ENV:
+        return SCENE_MATERIAL_TEX_ENV;
+    case LIST_BIND_TEXTURE:
+        return SCENE_MATERIAL_TEXTURE;
+    case LIST_ENABLE:
+    case LIST_DISABLE:
+        switch (b) {
+        case RT_LIGHTING:
+            return SCENE_MATERIAL_LIGHTING;
+        case RT_CULL_FACE:
+            return SCENE_MATERIAL_CULL_ENABLE;
+        case RT_TEXTURE_2D:
+            return SCENE_MATERIAL_TEXTURE;
+        case RT_NORMALIZE:
+        case RT_RESCALE_NORMAL:
+            return SCENE_MATERIAL_NORMALIZE;
+        default:
+            return 0;
+        }
+    default:
+        return 0;
+    }
+}
+
 /* Attribute calls commute with each other: a repeated one replaces the
  * last of its kind among the trailing attribute operations, so a list
  * setting a normal per vertex keeps one operation. */
@@ -201,8 +276,9 @@ void rt_list_state(struct rt_context *ctx, enum list_state_call what, RTenum b, 
                     rec->material_set |= lit << SCENE_MATERIAL_BACK_SHIFT;
             }
     }
-    if ((what == LIST_ENABLE || what == LIST_DISABLE) && b == RT_LIGHTING)
-        rec->material_set |= SCENE_MATERIAL_LIGHTING;
+    rec->material_set |= state_bit(what, b);
+    if (what == LIST_SHADE_MODEL)
+        rec->shade_model_set = 1;
     if (what == LIST_COLOR || what == LIST_NORMAL || what == LIST_TEXCOORD) {
         for (uint32_t k = rec->op_count; k > 0 && is_attribute(&rec->ops[k - 1]); k--)
             if (rec->ops[k - 1].a == (uint32_t)what) {
@@ -283,6 +359,26 @@ static void replay_state(const struct scene_list_op *op)
         /* The equation in double, as recorded; transformed by the
          * modelview current at the call, as glCallList executes it. */
         rtClipPlane(op->b, op->v);
+        break;
+    case LIST_CULL_FACE:
+        rtCullFace(op->b);
+        break;
+    case LIST_FRONT_FACE:
+        rtFrontFace(op->b);
+        break;
+    case LIST_COLOR_MATERIAL:
+        rtColorMaterial(op->b, op->c);
+        break;
+    case LIST_TEX_ENV:
+        rtTexEnvfv(RT_TEXTURE_ENV, op->b, v);
+        break;
+    case LIST_TEX_GEN:
+        /* An eye plane is transformed by the modelview at the call, as
+         * glCallList executes glTexGen. */
+        rtTexGenfv(op->b, op->c, v);
+        break;
+    case LIST_FOG:
+        rtFogfv(op->b, v);
         break;
     }
 }

@@ -73,9 +73,21 @@ float gl_spot_factor(const struct render_light *l, const float vp[3])
 void gl_light_point(const struct render_state *st, const struct gl_face_material *m,
                     const float p[3], const float n[3], float rgba[4])
 {
+    struct scene_light_model lm;
+    memset(&lm, 0, sizeof(lm));
+    lm.two_side = st->light_model_two_side;
+    lm.local_viewer = st->light_model_local_viewer;
+    memcpy(lm.ambient, st->global_ambient, sizeof(lm.ambient));
+    gl_light_point_model(st, &lm, m, p, n, rgba);
+}
+
+void gl_light_point_model(const struct render_state *st, const struct scene_light_model *lm,
+                          const struct gl_face_material *m, const float p[3], const float n[3],
+                          float rgba[4])
+{
     float c[3];
     for (int k = 0; k < 3; k++)
-        c[k] = m->emission[k] + m->ambient[k] * st->global_ambient[k];
+        c[k] = m->emission[k] + m->ambient[k] * lm->ambient[k];
     for (int i = 0; i < RENDER_MAX_LIGHTS; i++) {
         const struct render_light *l = &st->lights[i];
         if (!l->enabled)
@@ -106,7 +118,7 @@ void gl_light_point(const struct render_state *st, const struct gl_face_material
         float n_dot_l = vec3_dot(n, vp);
         if (n_dot_l > 0.0f) {
             float h[3];
-            if (st->light_model_local_viewer) {
+            if (lm->local_viewer) {
                 float e[3] = {-p[0], -p[1], -p[2]};
                 vec3_normalize(e);
                 for (int k = 0; k < 3; k++)
@@ -132,7 +144,7 @@ void gl_light_point(const struct render_state *st, const struct gl_face_material
     rgba[3] = clamp01(m->diffuse[3]);
 }
 
-float gl_fog_factor(const struct render_fog *fog, float z)
+float gl_fog_factor(const struct scene_fog *fog, float z)
 {
     double f;
     switch (fog->mode) {

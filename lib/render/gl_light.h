@@ -47,6 +47,12 @@ void gl_face_material(const struct scene_material *mat, int back, int color_mate
  */
 void gl_light_point(const struct render_state *st, const struct gl_face_material *m,
                     const float p[3], const float n[3], float rgba[4]);
+/* The same under the light model `lm` (the global ambient and the local
+ * viewer) rather than st's: the one current when the primitive was drawn
+ * (scene/gl_state.h).  gl_light_point is this with st's own. */
+void gl_light_point_model(const struct render_state *st, const struct scene_light_model *lm,
+                          const struct gl_face_material *m, const float p[3], const float n[3],
+                          float rgba[4]);
 
 /* GL's spot factor of a positional light with a cutoff other than 180
  * for a point whose unit direction to the light is vp: 0 outside the
@@ -55,6 +61,6 @@ float gl_spot_factor(const struct render_light *l, const float vp[3]);
 
 /* GL's fog factor for fog coordinate z (docs/fog.md), clamped to [0, 1]:
  * 1 leaves the colour, 0 gives the fog colour. */
-float gl_fog_factor(const struct render_fog *fog, float z);
+float gl_fog_factor(const struct scene_fog *fog, float z);
 
 #endif

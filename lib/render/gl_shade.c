@@ -79,6 +79,8 @@ static void fetch_triangle(const struct shade_context *sc, const struct trace_sc
     if (t->flags & TRI_INHERIT_COLOR_MATERIAL)
         t->flags = (uint8_t)((t->flags & ~TRI_COLOR_MATERIAL) |
                              (t->inst->appearance.color_material ? TRI_COLOR_MATERIAL : 0u));
+    if (t->flags & TRI_INHERIT_SHADE) /* rtShadeModel at the call */
+        t->flags = (uint8_t)((t->flags & ~TRI_FLAT) | (t->inst->appearance.flat ? TRI_FLAT : 0u));
     t->call_color = (t->flags & TRI_INHERIT_COLOR) ? t->inst->appearance.color : NULL;
     t->provoking = t->mesh->tri_provoking[hit->prim];
     float p[3][3], e1[3], e2[3];
@@ -116,9 +118,15 @@ int gl_closest_drawn(const struct shade_context *sc, const float org[3], const f
         if (!trace_scene_closest(sc->scene, org, dir, tmin, tmax, hit, sc->counters))
             return 0;
         const struct trace_instance *ti = &sc->scene->instances[hit->instance];
-        const struct scene_mesh *mesh =
-            &sc->frame->committed.items[ti->instance_id].object->mesh;
-        if (mesh->materials[mesh->tri_material[hit->prim]].cull_face == SCENE_CULL_NONE)
+        const struct scene_instance *inst = &sc->frame->committed.items[ti->instance_id];
+        const struct scene_mesh *mesh = &inst->object->mesh;
+        const struct scene_material *m = &mesh->materials[mesh->tri_material[hit->prim]];
+        /* No culling recorded, and none taken from the call (a list's
+         * triangles that did not set the enable inherit it, mesh.h):
+         * drawn, with no more work than before. */
+        if (m->cull_face == SCENE_CULL_NONE &&
+            (!(m->inherit & SCENE_MATERIAL_CULL_ENABLE) ||
+             inst->appearance.material.cull_face == SCENE_CULL_NONE))
             return 1;
         struct gl_triangle t;
         fetch_triangle(sc, hit, &t);
@@ -152,7 +160,7 @@ static void lit_colour(const struct shade_context *sc, const struct gl_triangle 
             n[k] = -n[k];
     struct gl_face_material fm;
     gl_face_material(t->mat, back, (t->flags & TRI_COLOR_MATERIAL) != 0, color, &fm);
-    gl_light_point(sc->state, &fm, p, n, out);
+    gl_light_point_model(sc->state, &t->inst->appearance.gl.light_model, &fm, p, n, out);
 }
 
 /*
@@ -234,7 +242,6 @@ static void texture_environment(const struct scene_material *mat, const float te
 void gl_shade_hit(const struct shade_context *sc, const struct trace_scene_hit *hit,
                   const float org[3], const float dir[3], float width, float rgba[4])
 {
-    const struct render_state *st = sc->state;
     struct gl_triangle t;
     fetch_triangle(sc, hit, &t);
     const struct scene_mesh *mesh = t.mesh;
@@ -249,7 +256,7 @@ void gl_shade_hit(const struct shade_context *sc, const struct trace_scene_hit *
                 for (int k = 0; k < 4; k++)
                     c[k] += b[i] * vertex_color(&t, t.v[i])[k];
     } else {
-        const int back = !is_front(&t, dir) && st->light_model_two_side;
+        const int back = !is_front(&t, dir) && t.inst->appearance.gl.light_model.two_side;
         if (flat) {
             float p[3];
             eye_position(t.inst, mesh, t.provoking, p);
@@ -285,11 +292,13 @@ void gl_shade_hit(const struct shade_context *sc, const struct trace_scene_hit *
         if (surface_texel(sc, hit, t.mat->texture, coords, ng, dir, width, tex))
             texture_environment(t.mat, tex, c);
     }
-    if (st->fog.enabled) {
+    /* Fog as current when the primitive was drawn (scene/gl_state.h). */
+    const struct scene_fog *fog = &t.inst->appearance.gl.fog;
+    if (fog->enabled) {
         float z = fabsf(org[2] + hit->t * dir[2]);
-        float f = gl_fog_factor(&st->fog, z);
+        float f = gl_fog_factor(fog, z);
         for (int k = 0; k < 3; k++)
-            c[k] = f * c[k] + (1.0f - f) * st->fog.color[k];
+            c[k] = f * c[k] + (1.0f - f) * fog->color[k];
     }
     for (int k = 0; k < 4; k++)
         rgba[k] = c[k] < 0.0f ? 0.0f : (c[k] > 1.0f ? 1.0f : c[k]);

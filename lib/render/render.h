@@ -47,13 +47,6 @@ struct render_light {
     float spot_cutoff;
 };
 
-/* rtFog state (docs/fog.md), applied by the RT_FIXED_FUNCTION mode. */
-struct render_fog {
-    int enabled;
-    RTenum mode; /* RT_LINEAR, RT_EXP, RT_EXP2 */
-    float density, start, end;
-    float color[4];
-};
 
 /*
  * The framebuffer, which outlives frames: the last finished image, which
@@ -80,11 +73,13 @@ struct render_state {
     struct render_framebuffer fb;
     /* Blending, clip planes, line width and point size (visibility.h). */
     struct render_visibility vis;
-    /* rtLightModel (RT_FIXED_FUNCTION mode; frame state, see
-     * docs/appearance.md). */
+    /* rtLightModel and rtFog as current now (RT_FIXED_FUNCTION mode):
+     * what the next primitive is drawn with.  Each instance keeps the
+     * values current at its draw (scene_appearance.gl, scene/gl_state.h),
+     * which the mode reads; these are the context's. */
     int light_model_two_side;
     int light_model_local_viewer;
-    struct render_fog fog;
+    struct scene_fog fog;
 };
 
 struct render_stats {

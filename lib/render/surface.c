@@ -159,6 +159,34 @@ void surface_resolve_material(const struct scene_appearance *call, struct scene_
         m->back_shininess = c->back_shininess;
     if (k & SCENE_MATERIAL_LIGHTING)
         m->lighting = c->lighting;
+    /* The rest of GL's per-primitive state (mesh.h).  The cull enable and
+     * rtCullFace's mode may come from different places. */
+    if (k & (SCENE_MATERIAL_CULL_ENABLE | SCENE_MATERIAL_CULL_MODE)) {
+        int on = (k & SCENE_MATERIAL_CULL_ENABLE) ? c->cull_face != SCENE_CULL_NONE
+                                                  : m->cull_face != SCENE_CULL_NONE;
+        if (k & SCENE_MATERIAL_CULL_MODE)
+            m->cull_mode = c->cull_mode;
+        m->cull_face = on ? (uint8_t)m->cull_mode : (uint8_t)SCENE_CULL_NONE;
+    }
+    if (k & SCENE_MATERIAL_FRONT_FACE)
+        m->front_cw = c->front_cw;
+    if (k & SCENE_MATERIAL_TEX_ENV) {
+        m->tex_env_mode = c->tex_env_mode;
+        memcpy(m->tex_env_color, c->tex_env_color, sizeof(m->tex_env_color));
+    }
+    if (k & SCENE_MATERIAL_TEXGEN) {
+        memcpy(m->texgen_mode, c->texgen_mode, sizeof(m->texgen_mode));
+        memcpy(m->texgen_object_plane, c->texgen_object_plane, sizeof(m->texgen_object_plane));
+        memcpy(m->texgen_eye_plane, c->texgen_eye_plane, sizeof(m->texgen_eye_plane));
+    }
+    if (k & SCENE_MATERIAL_COLOR_MATERIAL_MODE) {
+        m->color_material_face = c->color_material_face;
+        m->color_material_mode = c->color_material_mode;
+    }
+    if (k & SCENE_MATERIAL_TEXTURE)
+        m->texture = c->texture;
+    if (k & SCENE_MATERIAL_NORMALIZE)
+        m->normalize = c->normalize;
     m->inherit = 0;
 }
 
@@ -216,6 +244,8 @@ void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit 
             s->ng[k] = -s->ng[k];
 
     uint8_t flags = mesh->tri_flags[hit->prim];
+    if (flags & TRI_INHERIT_SHADE) /* the shade model at the call (frame.h) */
+        flags = (uint8_t)((flags & ~TRI_FLAT) | (inst->appearance.flat ? TRI_FLAT : 0u));
     uint32_t provoking = mesh->tri_provoking[hit->prim];
     memcpy(s->n, s->ng, sizeof(s->n));
     if (mesh->has_normals) {

@@ -21,6 +21,7 @@
 
 #include "accel/bvh_build.h"
 #include "scene/clip.h"
+#include "scene/gl_state.h"
 #include "scene/object.h"
 #include "scene/recording.h"
 #include "trace/scene_traverse.h"
@@ -34,6 +35,12 @@ struct scene_appearance {
     /* The clip planes the instance's geometry was drawn under (clip.h):
      * every instance carries its own, as GL clips per primitive. */
     struct scene_clip clip;
+    /* Fog and the light model the geometry was drawn under (gl_state.h),
+     * per primitive as GL. */
+    struct scene_gl_state gl;
+    /* rtShadeModel(RT_FLAT) at the call: what triangles recorded in a
+     * list before it set a shade model take (TRI_INHERIT_SHADE, mesh.h). */
+    int flat;
 };
 
 struct scene_instance {
@@ -76,6 +83,7 @@ struct scene_immediate {
     uint32_t used, capacity; /* slots used by this frame; allocated */
     uint64_t kept, redefined; /* segments committed unchanged / changed, ever */
     struct scene_clip clip;   /* the open segment's clip planes (its instance's) */
+    struct scene_gl_state gl; /* the open segment's fog and light model */
 };
 
 struct scene_frame {
@@ -117,8 +125,8 @@ int scene_frame_add_instance_appearance(struct scene_frame *frame, struct scene_
                                         const struct scene_appearance *appearance);
 
 /* Immediate mode.  scene_immediate_segment makes the open segment the
- * one of `modelview` and `clip` (committing the open one if its modelview
- * or clip planes differ,
+ * one of `modelview`, `clip` and `gl` (committing the open one if its
+ * modelview, clip planes, fog or light model differ,
  * starting the frame's list if the last frame ended) and returns the
  * recording vertices go to; its block_matrix is what blocks transform
  * by.  NULL on allocation failure.  scene_immediate_commit commits the
@@ -126,7 +134,8 @@ int scene_frame_add_instance_appearance(struct scene_frame *frame, struct scene_
  * failure. */
 struct scene_recording *scene_immediate_segment(struct scene_frame *frame,
                                                 const double modelview[16],
-                                                const struct scene_clip *clip);
+                                                const struct scene_clip *clip,
+                                                const struct scene_gl_state *gl);
 void scene_immediate_commit(struct scene_frame *frame, uint64_t frame_number);
 /* Drops the segments recorded and not committed (a new frame). */
 void scene_immediate_restart(struct scene_immediate *im);

@@ -64,6 +64,11 @@ struct scene_material {
      * which the instance keeps (struct scene_appearance, frame.h), as GL's
      * geometry takes the state current at glCallList.  0 elsewhere. */
     uint32_t inherit;
+    /* rtCullFace's mode as SCENE_CULL_FRONT / _BACK / _BOTH whether or not
+     * RT_CULL_FACE is enabled (cull_face is the two together), so that a
+     * list's geometry can take the enable and the mode from different
+     * places (SCENE_MATERIAL_CULL_ENABLE, SCENE_MATERIAL_CULL_MODE). */
+    uint32_t cull_mode;
 };
 
 #define SCENE_MATERIAL_AMBIENT 1u
@@ -79,6 +84,20 @@ struct scene_material {
 #define SCENE_MATERIAL_BACK_SHIFT 8
 #define SCENE_MATERIAL_LIGHTING (1u << 13) /* rtEnable(RT_LIGHTING) */
 #define SCENE_MATERIAL_ALL ((1u << 14) - 1u)
+/* The rest of the per-primitive state a triangle records in its material,
+ * inherited the same way (surface_resolve_material): the RT_CULL_FACE
+ * enable, rtCullFace, rtFrontFace, rtTexEnv, rtTexGen and its enables,
+ * rtColorMaterial's face and mode, the texture (rtBindTexture and the
+ * RT_TEXTURE_2D enable) and RT_NORMALIZE / RT_RESCALE_NORMAL. */
+#define SCENE_MATERIAL_CULL_ENABLE (1u << 14)
+#define SCENE_MATERIAL_CULL_MODE (1u << 15)
+#define SCENE_MATERIAL_FRONT_FACE (1u << 16)
+#define SCENE_MATERIAL_TEX_ENV (1u << 17)
+#define SCENE_MATERIAL_TEXGEN (1u << 18)
+#define SCENE_MATERIAL_COLOR_MATERIAL_MODE (1u << 19)
+#define SCENE_MATERIAL_TEXTURE (1u << 20)
+#define SCENE_MATERIAL_NORMALIZE (1u << 21)
+#define SCENE_MATERIAL_ALL_STATE ((1u << 22) - 1u)
 
 /* Which faces RT_CULL_FACE removes (scene_material.cull_face). */
 #define SCENE_CULL_NONE 0u
@@ -100,6 +119,9 @@ struct scene_material {
 /* Recorded before the list enabled or disabled RT_COLOR_MATERIAL: the
  * enable current at rtCallList applies (the instance's). */
 #define TRI_INHERIT_COLOR_MATERIAL 0x40u
+/* Recorded in a display list before the list called rtShadeModel: the
+ * shade model current at rtCallList applies (scene_appearance.flat). */
+#define TRI_INHERIT_SHADE 0x20u
 
 struct scene_mesh {
     uint32_t vertex_count;

@@ -253,6 +253,7 @@ int scene_list_begin(struct scene_recording *rec, uint32_t name, unsigned matrix
     rec->stack[0].segment = 0;
     rec->material_set = 0;
     rec->color_set = rec->color_material_set = 0;
+    rec->shade_model_set = 0;
     /* Keeps the operations' memory of the last list: no allocation for
      * lists of one segment after the first. */
     return segment_op(rec);
@@ -328,6 +329,7 @@ int scene_list_call(struct scene_recording *rec, uint32_t name, int add_base)
     /* The callee may change the matrix, the material and the colour. */
     rec->material_set = 0;
     rec->color_set = rec->color_material_set = 0;
+    rec->shade_model_set = 0;
     return new_segment(rec);
 }
 

@@ -90,6 +90,7 @@ struct scene_recording {
     int color_set;
     int color_material_set; /* the list enabled or disabled RT_COLOR_MATERIAL */
     uint32_t material_inherit; /* the inherit mask material_index was interned with */
+    int shade_model_set; /* the list called rtShadeModel (TRI_INHERIT_SHADE) */
 };
 
 /* Starts recording a display list (the recording matrix is the identity;
