@@ -57,6 +57,9 @@ static void save_state(const struct rt_context *ctx, struct list_saved_state *s)
     memcpy(s->global_ambient, ctx->render.global_ambient, sizeof(s->global_ambient));
     s->list_base = ctx->list_base;
     memcpy(s->clip_enabled, ctx->render.vis.clip_enabled, sizeof(s->clip_enabled));
+    s->vis = ctx->render.vis;
+    memcpy(s->polygon_mode, ctx->polygon_mode, sizeof(s->polygon_mode));
+    s->polygon_offset_fill = ctx->polygon_offset_fill;
 }
 
 static void restore_state(struct rt_context *ctx, const struct list_saved_state *s)
@@ -73,6 +76,21 @@ static void restore_state(struct rt_context *ctx, const struct list_saved_state 
     memcpy(ctx->render.global_ambient, s->global_ambient, sizeof(s->global_ambient));
     ctx->list_base = s->list_base;
     memcpy(ctx->render.vis.clip_enabled, s->clip_enabled, sizeof(s->clip_enabled));
+    /* The raster state a list records (lines.c); rtDepthMask and the clip
+     * equations are not restored here. */
+    struct render_visibility *vis = &ctx->render.vis;
+    vis->blend = s->vis.blend;
+    vis->blend_src = s->vis.blend_src;
+    vis->blend_dst = s->vis.blend_dst;
+    vis->line_width = s->vis.line_width;
+    vis->point_size = s->vis.point_size;
+    vis->alpha_test = s->vis.alpha_test;
+    vis->alpha_func = s->vis.alpha_func;
+    vis->alpha_ref = s->vis.alpha_ref;
+    vis->offset_factor = s->vis.offset_factor;
+    vis->offset_units = s->vis.offset_units;
+    memcpy(ctx->polygon_mode, s->polygon_mode, sizeof(s->polygon_mode));
+    ctx->polygon_offset_fill = s->polygon_offset_fill;
 }
 
 static void appearance_now(const struct rt_context *ctx, struct scene_appearance *a)
@@ -82,6 +100,7 @@ static void appearance_now(const struct rt_context *ctx, struct scene_appearance
     memcpy(a->color, ctx->current_color, sizeof(a->color));
     a->color_material = ctx->color_material;
     rt_clip_now(ctx, &a->clip);
+    rt_raster_now(ctx, &a->raster);
 }
 
 /* RT_COMPILE_AND_EXECUTE: notes the modelview and appearance a segment
@@ -283,6 +302,24 @@ static void replay_state(const struct scene_list_op *op)
         /* The equation in double, as recorded; transformed by the
          * modelview current at the call, as glCallList executes it. */
         rtClipPlane(op->b, op->v);
+        break;
+    case LIST_BLEND_FUNC:
+        rtBlendFunc(op->b, op->c);
+        break;
+    case LIST_POLYGON_MODE:
+        rtPolygonMode(op->b, op->c);
+        break;
+    case LIST_LINE_WIDTH:
+        rtLineWidth(v[0]);
+        break;
+    case LIST_POINT_SIZE:
+        rtPointSize(v[0]);
+        break;
+    case LIST_ALPHA_FUNC:
+        rtAlphaFunc(op->b, v[0]);
+        break;
+    case LIST_POLYGON_OFFSET:
+        rtPolygonOffset(v[0], v[1]);
         break;
     }
 }

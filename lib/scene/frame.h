@@ -22,6 +22,7 @@
 #include "accel/bvh_build.h"
 #include "scene/clip.h"
 #include "scene/object.h"
+#include "scene/raster_state.h"
 #include "scene/recording.h"
 #include "trace/scene_traverse.h"
 
@@ -34,6 +35,9 @@ struct scene_appearance {
     /* The clip planes the instance's geometry was drawn under (clip.h):
      * every instance carries its own, as GL clips per primitive. */
     struct scene_clip clip;
+    /* The blend, alpha-test, polygon-offset, line-width and point-size
+     * state it was drawn under (raster_state.h), per primitive as GL. */
+    struct scene_raster raster;
 };
 
 struct scene_instance {
@@ -76,6 +80,7 @@ struct scene_immediate {
     uint32_t used, capacity; /* slots used by this frame; allocated */
     uint64_t kept, redefined; /* segments committed unchanged / changed, ever */
     struct scene_clip clip;   /* the open segment's clip planes (its instance's) */
+    struct scene_raster raster; /* the open segment's raster state (its instance's) */
 };
 
 struct scene_frame {
@@ -117,8 +122,8 @@ int scene_frame_add_instance_appearance(struct scene_frame *frame, struct scene_
                                         const struct scene_appearance *appearance);
 
 /* Immediate mode.  scene_immediate_segment makes the open segment the
- * one of `modelview` and `clip` (committing the open one if its modelview
- * or clip planes differ,
+ * one of `modelview`, `clip` and `raster` (committing the open one if its
+ * modelview, clip planes or raster state differ,
  * starting the frame's list if the last frame ended) and returns the
  * recording vertices go to; its block_matrix is what blocks transform
  * by.  NULL on allocation failure.  scene_immediate_commit commits the
@@ -126,7 +131,8 @@ int scene_frame_add_instance_appearance(struct scene_frame *frame, struct scene_
  * failure. */
 struct scene_recording *scene_immediate_segment(struct scene_frame *frame,
                                                 const double modelview[16],
-                                                const struct scene_clip *clip);
+                                                const struct scene_clip *clip,
+                                                const struct scene_raster *raster);
 void scene_immediate_commit(struct scene_frame *frame, uint64_t frame_number);
 /* Drops the segments recorded and not committed (a new frame). */
 void scene_immediate_restart(struct scene_immediate *im);
