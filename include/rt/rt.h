@@ -323,7 +323,7 @@ typedef struct rt_context *RTcontext;
 /* Capabilities a ray tracer accepts with no effect (docs/appearance.md). */
 #define RT_DEPTH_TEST 0x0B71
 #define RT_DITHER 0x0BD0
-#define RT_POLYGON_OFFSET_FILL 0x8037
+#define RT_POLYGON_OFFSET_FILL 0x8037 /* rtEnable capability (docs/polygon_offset.md) */
 /* rtHint targets and modes (accepted, no effect). */
 #define RT_PERSPECTIVE_CORRECTION_HINT 0x0C50
 #define RT_POINT_SMOOTH_HINT 0x0C51
@@ -506,7 +506,6 @@ RTAPI void rtReadBuffer(RTenum mode);
 RTAPI void rtDepthFunc(RTenum func);
 RTAPI void rtDepthRange(RTdouble zNear, RTdouble zFar);
 RTAPI void rtClearDepth(RTdouble depth);
-RTAPI void rtPolygonOffset(RTfloat factor, RTfloat units);
 RTAPI void rtLockArraysEXT(RTint first, RTsizei count);
 RTAPI void rtUnlockArraysEXT(void);
 
@@ -574,6 +573,16 @@ RTAPI void rtPolygonMode(RTenum face, RTenum mode);
 /* ---- Blending (docs/blending.md) --------------------------------------- */
 RTAPI void rtBlendFunc(RTenum sfactor, RTenum dfactor);
 RTAPI void rtDepthMask(RTboolean flag);
+
+/* ---- Alpha test and polygon offset (docs/alpha_test.md,
+ * docs/polygon_offset.md) ----------------------------------------------- */
+#define RT_ALPHA_TEST 0x0BC0      /* rtEnable capability */
+#define RT_ALPHA_TEST_FUNC 0x0BC1 /* rtGetIntegerv */
+#define RT_ALPHA_TEST_REF 0x0BC2  /* rtGetFloatv */
+#define RT_POLYGON_OFFSET_FACTOR 0x8038 /* rtGetFloatv */
+#define RT_POLYGON_OFFSET_UNITS 0x2A00  /* rtGetFloatv */
+RTAPI void rtAlphaFunc(RTenum func, RTfloat ref);
+RTAPI void rtPolygonOffset(RTfloat factor, RTfloat units);
 
 /* ---- Clip planes (docs/clip_planes.md) --------------------------------- */
 RTAPI void rtClipPlane(RTenum plane, const RTdouble *equation);

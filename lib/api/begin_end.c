@@ -24,8 +24,14 @@ int rt_block_start(struct rt_context *ctx, RTenum mode)
     struct scene_gl_state gl;
     rt_clip_now(ctx, &clip);
     rt_gl_state_now(ctx, &gl);
+    /* Lines and points carry their width and size (lines.c): a change of
+     * width alone does not start a segment. */
+    struct scene_raster raster;
+    rt_raster_now(ctx, &raster);
+    raster.line_width = 0.0f;
+    raster.point_size = 0.0f;
     ctx->target = scene_immediate_segment(
-        &ctx->scene.frame, ctx->modelview.m[ctx->modelview.depth - 1], &clip, &gl);
+        &ctx->scene.frame, ctx->modelview.m[ctx->modelview.depth - 1], &clip, &gl, &raster);
     if (!ctx->target)
         return -1;
     rt_frame_described(ctx);

@@ -237,6 +237,7 @@ static void render_state_init(struct render_state *r)
     r->vis.blend_src = RT_ONE;
     r->vis.blend_dst = RT_ZERO;
     r->vis.depth_mask = 1;
+    r->vis.alpha_func = RT_ALWAYS;
 }
 
 RTcontext rtCreateContext(const char *configuration)

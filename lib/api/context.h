@@ -62,6 +62,12 @@ struct list_saved_state {
     float texgen_eye_plane[2][4];
     int light_model_two_side, light_model_local_viewer;
     struct scene_fog fog;
+    /* Raster state a list can set (lines.c): RT_BLEND, rtBlendFunc,
+     * rtPolygonMode, rtLineWidth, rtPointSize, RT_ALPHA_TEST, rtAlphaFunc,
+     * RT_POLYGON_OFFSET_FILL, rtPolygonOffset. */
+    struct render_visibility vis;
+    RTenum polygon_mode[2];
+    int polygon_offset_fill;
 };
 
 struct rt_context {
@@ -242,6 +248,8 @@ void rt_clip_now(const struct rt_context *ctx, struct scene_clip *clip);
 /* The fog and light model geometry drawn now is drawn under
  * (fixed_function.c), zero-filled so that equal states compare equal. */
 void rt_gl_state_now(const struct rt_context *ctx, struct scene_gl_state *gl);
+/* The raster state geometry drawn now takes (lines.c, raster_state.h). */
+void rt_raster_now(const struct rt_context *ctx, struct scene_raster *raster);
 /* Display lists (list.c).  rt_list_compiling: a list is being recorded
  * and the call comes from the application (not a replay).  The record
  * functions add an operation; they return 1 when the call must not take
@@ -252,16 +260,19 @@ enum list_state_call {
     LIST_DISABLE, LIST_BIND_TEXTURE, LIST_LIGHT, LIST_LIGHT_MODEL, LIST_LIST_BASE,
     LIST_CLIP_PLANE,
     /* Fixed-function state (appearance.c, fixed_function.c). */
-    LIST_CULL_FACE, LIST_FRONT_FACE, LIST_COLOR_MATERIAL, LIST_TEX_ENV, LIST_TEX_GEN, LIST_FOG
+    LIST_CULL_FACE, LIST_FRONT_FACE, LIST_COLOR_MATERIAL, LIST_TEX_ENV, LIST_TEX_GEN, LIST_FOG,
+    LIST_BLEND_FUNC, LIST_POLYGON_MODE, LIST_LINE_WIDTH, LIST_POINT_SIZE,
+    LIST_ALPHA_FUNC, LIST_POLYGON_OFFSET
 };
 int rt_list_compiling(const struct rt_context *ctx);
 int rt_list_matrix(struct rt_context *ctx, const char *caller, enum scene_list_op_kind kind,
                    RTenum mode, const double m[16]);
 void rt_list_state(struct rt_context *ctx, enum list_state_call what, RTenum b, RTenum c,
                    const float *v, int n);
-/* After a clip-plane call took effect while a list is compiled: the
+/* After a clip-plane call (or a change of the raster state of
+ * scene/raster_state.h) took effect while a list is compiled: the
  * list's later geometry starts a segment of its own, so that its
- * instance carries the clip planes current there at the call. */
+ * instance carries the state current there at the call. */
 void rt_list_clip_changed(struct rt_context *ctx);
 /* The same after a fog or light-model call took effect: the state is
  * per primitive, carried by the instance (scene/gl_state.h). */

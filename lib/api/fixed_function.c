@@ -327,13 +327,6 @@ void rtClearDepth(RTdouble depth)
     no_op_context("rtClearDepth");
 }
 
-void rtPolygonOffset(RTfloat factor, RTfloat units)
-{
-    (void)factor;
-    (void)units;
-    no_op_context("rtPolygonOffset");
-}
-
 void rtLockArraysEXT(RTint first, RTsizei count)
 {
     struct rt_context *ctx = no_op_context("rtLockArraysEXT");

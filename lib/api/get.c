@@ -233,6 +233,18 @@ static enum value_kind state_values(const struct rt_context *ctx, RTenum pname, 
     case RT_DEPTH_WRITEMASK:
         v[0] = ctx->render.vis.depth_mask;
         return VALUE_INT;
+    case RT_ALPHA_TEST_FUNC:
+        v[0] = ctx->render.vis.alpha_func;
+        return VALUE_INT;
+    case RT_ALPHA_TEST_REF:
+        v[0] = ctx->render.vis.alpha_ref;
+        return VALUE_FLOAT;
+    case RT_POLYGON_OFFSET_FACTOR:
+        v[0] = ctx->render.vis.offset_factor;
+        return VALUE_FLOAT;
+    case RT_POLYGON_OFFSET_UNITS:
+        v[0] = ctx->render.vis.offset_units;
+        return VALUE_FLOAT;
     case RT_MAX_CLIP_PLANES:
         v[0] = RENDER_MAX_CLIP_PLANES;
         return VALUE_INT;
@@ -337,6 +349,8 @@ static int *capability(struct rt_context *ctx, RTenum cap)
         return &ctx->dither;
     case RT_POLYGON_OFFSET_FILL:
         return &ctx->polygon_offset_fill;
+    case RT_ALPHA_TEST:
+        return &ctx->render.vis.alpha_test;
     default:
         if (cap >= RT_CLIP_PLANE0 && cap < RT_CLIP_PLANE0 + RENDER_MAX_CLIP_PLANES)
             return &ctx->render.vis.clip_enabled[cap - RT_CLIP_PLANE0];
@@ -369,6 +383,9 @@ static void set_capability(const char *caller, RTenum cap, int value)
     /* Clip planes are per primitive: a list's later geometry gets a
      * segment of its own (list.c). */
     if (cap >= RT_CLIP_PLANE0 && cap < RT_CLIP_PLANE0 + RENDER_MAX_CLIP_PLANES)
+        rt_list_clip_changed(ctx);
+    /* So is the raster state triangles take (scene/raster_state.h). */
+    if (cap == RT_BLEND || cap == RT_ALPHA_TEST || cap == RT_POLYGON_OFFSET_FILL)
         rt_list_clip_changed(ctx);
     if (cap == RT_CULL_FACE || cap == RT_NORMALIZE || cap == RT_RESCALE_NORMAL ||
         cap == RT_TEXTURE_GEN_S || cap == RT_TEXTURE_GEN_T)

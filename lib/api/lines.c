@@ -1,16 +1,23 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * lines.c - lines, points and the visibility state: rtLineWidth,
- * rtPointSize, rtPolygonMode, rtBlendFunc, rtDepthMask, rtClipPlane,
- * rtGetClipPlane, and the recording of blocks that give lines or points
- * (RT_LINES ..., polygons under rtPolygonMode RT_LINE / RT_POINT) into
- * scene/lines.h's storage.  Validation follows Mesa (lines.c, points.c,
- * polygon.c, blend.c, depth.c, clip.c).
+ * rtPointSize, rtPolygonMode, rtBlendFunc, rtDepthMask, rtAlphaFunc,
+ * rtPolygonOffset, rtClipPlane, rtGetClipPlane, and the recording of
+ * blocks that give lines or points (RT_LINES ..., polygons under
+ * rtPolygonMode RT_LINE / RT_POINT) into scene/lines.h's storage.
+ * Validation follows Mesa (lines.c, points.c, polygon.c, blend.c,
+ * depth.c, clip.c, alpha in blend.c, polygon offset in polygon.c).
+ *
+ * The raster state is per primitive (scene/raster_state.h): geometry takes
+ * the state current when it is drawn.  Inside a display list every one of
+ * these calls is recorded (and replayed by rtCallList); RT_COMPILE leaves
+ * the context's values alone, RT_COMPILE_AND_EXECUTE sets them too.
  */
 #include <math.h>
 #include <string.h>
 
 #include "api/context.h"
+#include "api/enum_names.h"
 #include "base/mat4.h"
 
 /* Where the current block's lines go: the list being recorded, or the
@@ -38,8 +45,16 @@ int rt_lines_block_start(struct rt_context *ctx, RTenum mode)
     if (rt_block_start(ctx, mode))
         return -1;
     struct scene_lines *lines = lines_target(ctx);
-    scene_line_block_start(&ctx->line_block, lines, mode, line_mode ? 0u : pmode, lines->width,
-                           lines->size, ctx->shade_model == RT_FLAT ? SCENE_LINE_FLAT : 0u);
+    /* In a list, the width the list set (0 until it sets one: the
+     * primitives then take the caller's at rtCallList, through the
+     * instance's scene_raster); in immediate mode, the current one. */
+    float width = lines->width, size = lines->size;
+    if (ctx->target != &ctx->recording) {
+        width = ctx->render.vis.line_width;
+        size = ctx->render.vis.point_size;
+    }
+    scene_line_block_start(&ctx->line_block, lines, mode, line_mode ? 0u : pmode, width, size,
+                           ctx->shade_model == RT_FLAT ? SCENE_LINE_FLAT : 0u);
     ctx->lines_block = 1;
     return 1;
 }
@@ -75,10 +90,31 @@ void rt_lines_block_end(struct rt_context *ctx, const char *caller)
     }
 }
 
-/* rtLineWidth and rtPointSize: outside an object they set the current
- * value; inside one they are recorded for the object's later primitives
- * (a display list compiled with GL_COMPILE records glLineWidth without
- * executing it). */
+/* Records a raster-state call in the list being compiled.  Returns 1
+ * when the call must not change the context (RT_COMPILE), 0 when it must
+ * (RT_COMPILE_AND_EXECUTE, or no list being compiled).  split: the call
+ * changes the state triangles take (blend, alpha test, polygon offset),
+ * so the list's later geometry gets a segment (and an instance) of its
+ * own, as clip planes do. */
+static int record(struct rt_context *ctx, enum list_state_call what, RTenum b, RTenum c,
+                  const float *v, int n, int split)
+{
+    if (!rt_list_compiling(ctx))
+        return 0;
+    rt_list_state(ctx, what, b, c, v, n);
+    if (ctx->list_mode != RT_COMPILE_AND_EXECUTE) {
+        if (split)
+            rt_list_clip_changed(ctx);
+        return 1;
+    }
+    return 0;
+}
+
+/* rtLineWidth and rtPointSize: outside a list they set the current value,
+ * which the lines and points drawn later take; inside one they are
+ * recorded, and the list's later primitives take the value (a display
+ * list compiled with GL_COMPILE records glLineWidth without executing
+ * it). */
 static void set_size(const char *caller, float value, int is_width)
 {
     GET_CURRENT_CONTEXT(ctx);
@@ -88,14 +124,15 @@ static void set_size(const char *caller, float value, int is_width)
         rt_error(ctx, RT_INVALID_VALUE, "%s(%g): not positive", caller, (double)value);
         return;
     }
-    if (ctx->recording.active) {
+    if (rt_list_compiling(ctx)) {
         struct scene_lines *lines = &ctx->recording.mesh.lines;
         if (is_width)
             lines->width = value;
         else
             lines->size = value;
-        return;
     }
+    if (record(ctx, is_width ? LIST_LINE_WIDTH : LIST_POINT_SIZE, 0, 0, &value, 1, 0))
+        return;
     if (is_width)
         ctx->render.vis.line_width = value;
     else
@@ -125,6 +162,10 @@ void rtPolygonMode(RTenum face, RTenum mode)
         rt_error(ctx, RT_INVALID_ENUM, "rtPolygonMode(face=0x%x)", face);
         return;
     }
+    /* Applied even under RT_COMPILE: polygons are turned into lines or
+     * points when recorded, so the list's later polygons need the mode
+     * (rtEndList restores the caller's, list.c). */
+    record(ctx, LIST_POLYGON_MODE, face, mode, NULL, 0, 0);
     if (face != RT_BACK)
         ctx->polygon_mode[0] = mode;
     if (face != RT_FRONT)
@@ -162,8 +203,44 @@ void rtBlendFunc(RTenum sfactor, RTenum dfactor)
                  dfactor);
         return;
     }
+    if (record(ctx, LIST_BLEND_FUNC, sfactor, dfactor, NULL, 0, 1))
+        return;
     ctx->render.vis.blend_src = sfactor;
     ctx->render.vis.blend_dst = dfactor;
+    rt_list_clip_changed(ctx); /* RT_COMPILE_AND_EXECUTE: a segment of its own */
+}
+
+void rtAlphaFunc(RTenum func, RTfloat ref)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_begin(ctx, "rtAlphaFunc"))
+        return;
+    if (func < RT_NEVER || func > RT_ALWAYS) {
+        char b1[RT_ENUM_STRING_SIZE];
+        rt_error(ctx, RT_INVALID_ENUM, "rtAlphaFunc(func=%s)", rt_enum_string(func, b1));
+        return;
+    }
+    /* GL clamps ref to [0, 1] (Mesa's _mesa_AlphaFunc: CLAMP); NaN as 0. */
+    float r = ref >= 0.0f ? fminf(ref, 1.0f) : 0.0f;
+    if (record(ctx, LIST_ALPHA_FUNC, func, 0, &r, 1, 1))
+        return;
+    ctx->render.vis.alpha_func = func;
+    ctx->render.vis.alpha_ref = r;
+    rt_list_clip_changed(ctx);
+}
+
+void rtPolygonOffset(RTfloat factor, RTfloat units)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx || rt_check_outside_begin(ctx, "rtPolygonOffset"))
+        return;
+    /* GL accepts any value (Mesa's _mesa_PolygonOffset checks nothing). */
+    const float v[2] = {factor, units};
+    if (record(ctx, LIST_POLYGON_OFFSET, 0, 0, v, 2, 1))
+        return;
+    ctx->render.vis.offset_factor = factor;
+    ctx->render.vis.offset_units = units;
+    rt_list_clip_changed(ctx);
 }
 
 void rtDepthMask(RTboolean flag)
@@ -240,6 +317,23 @@ void rt_clip_now(const struct rt_context *ctx, struct scene_clip *clip)
             clip->enabled |= 1u << i;
             memcpy(clip->plane[i], ctx->render.vis.clip_plane[i], sizeof(clip->plane[i]));
         }
+}
+
+void rt_raster_now(const struct rt_context *ctx, struct scene_raster *raster)
+{
+    const struct render_visibility *vis = &ctx->render.vis;
+    memset(raster, 0, sizeof(*raster));
+    raster->blend = vis->blend != 0;
+    raster->alpha_test = vis->alpha_test != 0;
+    raster->offset_fill = ctx->polygon_offset_fill != 0;
+    raster->blend_src = (uint16_t)vis->blend_src;
+    raster->blend_dst = (uint16_t)vis->blend_dst;
+    raster->alpha_func = (uint16_t)vis->alpha_func;
+    raster->alpha_ref = vis->alpha_ref;
+    raster->offset_factor = vis->offset_factor;
+    raster->offset_units = vis->offset_units;
+    raster->line_width = vis->line_width;
+    raster->point_size = vis->point_size;
 }
 
 void rtGetClipPlane(RTenum plane, RTdouble *equation)

@@ -68,6 +68,9 @@ static void save_state(const struct rt_context *ctx, struct list_saved_state *s)
     s->light_model_two_side = ctx->render.light_model_two_side;
     s->light_model_local_viewer = ctx->render.light_model_local_viewer;
     s->fog = ctx->render.fog;
+    s->vis = ctx->render.vis;
+    memcpy(s->polygon_mode, ctx->polygon_mode, sizeof(s->polygon_mode));
+    s->polygon_offset_fill = ctx->polygon_offset_fill;
 }
 
 static void restore_state(struct rt_context *ctx, const struct list_saved_state *s)
@@ -96,6 +99,21 @@ static void restore_state(struct rt_context *ctx, const struct list_saved_state 
     ctx->render.light_model_local_viewer = s->light_model_local_viewer;
     ctx->render.fog = s->fog;
     /* ctx->material (restored above) already holds the derived fields. */
+    /* The raster state a list records (lines.c); rtDepthMask and the clip
+     * equations are not restored here. */
+    struct render_visibility *vis = &ctx->render.vis;
+    vis->blend = s->vis.blend;
+    vis->blend_src = s->vis.blend_src;
+    vis->blend_dst = s->vis.blend_dst;
+    vis->line_width = s->vis.line_width;
+    vis->point_size = s->vis.point_size;
+    vis->alpha_test = s->vis.alpha_test;
+    vis->alpha_func = s->vis.alpha_func;
+    vis->alpha_ref = s->vis.alpha_ref;
+    vis->offset_factor = s->vis.offset_factor;
+    vis->offset_units = s->vis.offset_units;
+    memcpy(ctx->polygon_mode, s->polygon_mode, sizeof(s->polygon_mode));
+    ctx->polygon_offset_fill = s->polygon_offset_fill;
 }
 
 static void appearance_now(const struct rt_context *ctx, struct scene_appearance *a)
@@ -107,6 +125,7 @@ static void appearance_now(const struct rt_context *ctx, struct scene_appearance
     rt_clip_now(ctx, &a->clip);
     rt_gl_state_now(ctx, &a->gl);
     a->flat = ctx->shade_model == RT_FLAT;
+    rt_raster_now(ctx, &a->raster);
 }
 
 /* RT_COMPILE_AND_EXECUTE: notes the modelview and appearance a segment
@@ -379,6 +398,24 @@ static void replay_state(const struct scene_list_op *op)
         break;
     case LIST_FOG:
         rtFogfv(op->b, v);
+        break;
+    case LIST_BLEND_FUNC:
+        rtBlendFunc(op->b, op->c);
+        break;
+    case LIST_POLYGON_MODE:
+        rtPolygonMode(op->b, op->c);
+        break;
+    case LIST_LINE_WIDTH:
+        rtLineWidth(v[0]);
+        break;
+    case LIST_POINT_SIZE:
+        rtPointSize(v[0]);
+        break;
+    case LIST_ALPHA_FUNC:
+        rtAlphaFunc(op->b, v[0]);
+        break;
+    case LIST_POLYGON_OFFSET:
+        rtPolygonOffset(v[0], v[1]);
         break;
     }
 }

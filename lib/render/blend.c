@@ -104,14 +104,25 @@ static float surface_alpha(const struct shade_context *sc, const struct trace_sc
     return s.mat.diffuse[3];
 }
 
+/* The raster state of the instance a hit belongs to (raster_state.h). */
+static const struct scene_raster *hit_raster(const struct shade_context *sc,
+                                             const struct trace_scene_hit *hit)
+{
+    const struct trace_instance *ti = &sc->scene->instances[hit->instance];
+    return &sc->frame->committed.items[ti->instance_id].appearance.raster;
+}
+
 void blend_trace_primary(const struct shade_context *sc, const float org[3], const float dir[3],
                          float tmax, struct shade_cone cone, float rgba[4], float *t_first)
 {
-    const struct render_visibility *vis = &sc->state->vis;
     float layers[BLEND_MAX_LAYERS][4];
+    /* Each layer's blend state: GL blends a fragment by the state current
+     * when its primitive was drawn; NULL or blend off: opaque. */
+    const struct scene_raster *layer_state[BLEND_MAX_LAYERS];
     int n = 0;
     float tmin = 0.0f;
     const int clipping = sc->clipping;
+    const int see_through = sc->see_through;
     *t_first = INFINITY;
     for (;;) {
         struct trace_scene_hit hit;
@@ -130,21 +141,35 @@ void blend_trace_primary(const struct shade_context *sc, const float org[3], con
                                    p))
                 continue;
         }
-        if (n == 0)
-            *t_first = hit.t;
         shade_hit(sc, org, dir, &hit, cone, 0, layers[n]);
-        if (!vis->blend) {
-            memcpy(rgba, layers[0], 4 * sizeof(float));
-            return;
+        /* A frame with neither blending nor the alpha test anywhere: the
+         * nearest kept hit, with no look-up per hit. */
+        const struct scene_raster *r = see_through ? hit_raster(sc, &hit) : NULL;
+        if (!r || !scene_raster_see_through(r)) {
+            if (n == 0) {
+                *t_first = hit.t;
+                memcpy(rgba, layers[0], 4 * sizeof(float));
+                return;
+            }
+            layer_state[n++] = NULL; /* opaque: what lies behind is hidden */
+            break;
         }
         /* The fixed-function mode's colour carries GL's alpha (the
-         * colour's unlit, the diffuse material's lit); the other modes
-         * take the diffuse material's. */
+         * colour's unlit, the diffuse material's lit, times the texture's
+         * under RT_MODULATE); the other modes take the diffuse material's. */
         if (sc->state->shading != RENDER_FIXED_FUNCTION)
             layers[n][3] = surface_alpha(sc, &hit, dir, cone);
+        /* GL's alpha test (OpenGL 1.5 sec. 4.1.4) on the fragment's
+         * clamped alpha: a failing surface is not drawn, so the ray goes
+         * on behind it, a cutout. */
+        if (r->alpha_test && !scene_alpha_passes(r->alpha_func, clamp01(layers[n][3]), r->alpha_ref))
+            continue;
+        if (n == 0)
+            *t_first = hit.t;
+        layer_state[n] = r->blend ? r : NULL;
         n++;
-        if (n == BLEND_MAX_LAYERS ||
-            !blend_needs_destination(vis->blend_src, vis->blend_dst, layers[n - 1]))
+        if (!r->blend || n == BLEND_MAX_LAYERS ||
+            !blend_needs_destination(r->blend_src, r->blend_dst, layers[n - 1]))
             break;
     }
     /* Back to front: the clear colour, then every layer over it, as GL
@@ -152,11 +177,12 @@ void blend_trace_primary(const struct shade_context *sc, const float org[3], con
     float c[4];
     memcpy(c, sc->state->clear_color, sizeof(c));
     for (int i = n - 1; i >= 0; i--) {
-        if (!vis->blend) {
+        const struct scene_raster *r = layer_state[i];
+        if (!r) {
             memcpy(c, layers[i], sizeof(c));
             continue;
         }
-        blend_combine(vis->blend_src, vis->blend_dst, layers[i], c, c);
+        blend_combine(r->blend_src, r->blend_dst, layers[i], c, c);
     }
     memcpy(rgba, c, sizeof(c));
 }

@@ -22,6 +22,7 @@
 #include <stddef.h>
 
 #include "render/visibility.h"
+#include "scene/raster_state.h"
 #include "scene/lines.h"
 
 /* Depth tolerance of lines against surfaces: one step of a 24-bit depth
@@ -36,6 +37,9 @@ struct raster_target {
     const double *projection; /* column-major */
     const struct render_visibility *vis;
     const struct scene_clip *clip; /* the planes of the instance being drawn */
+    /* Its blend state, and the width and size its lines and points
+     * without their own take (scene/raster_state.h). */
+    const struct scene_raster *raster;
 };
 
 /* The window depth (GL's depth range [0, 1]) of the eye-space point

@@ -46,8 +46,13 @@ void raster_fragment(const struct raster_target *target, long x, long y, double 
         return; /* GL's default depth function, RT_LESS */
     float *px = &target->rgba[4 * i];
     const struct render_visibility *vis = target->vis;
-    if (vis->blend)
-        blend_combine(vis->blend_src, vis->blend_dst, color, px, px);
+    const struct scene_raster *r = target->raster;
+    /* GL's alpha test, then blending, with the primitive's state. */
+    if (r->alpha_test &&
+        !scene_alpha_passes(r->alpha_func, fminf(fmaxf(color[3], 0.0f), 1.0f), r->alpha_ref))
+        return;
+    if (r->blend)
+        blend_combine(r->blend_src, r->blend_dst, color, px, px);
     else
         memcpy(px, color, 4 * sizeof(float));
     if (vis->depth_mask)
@@ -277,7 +282,7 @@ static void draw_segment(const struct raster_target *target, const struct scene_
         lerp4(col_a, col_b, t0, seg.ca);
         lerp4(col_a, col_b, t1, seg.cb);
     }
-    seg.width = raster_pixels(sg->width, target->vis->line_width, RENDER_MAX_LINE_WIDTH);
+    seg.width = raster_pixels(sg->width, target->raster->line_width, RENDER_MAX_LINE_WIDTH);
     seg.x_major = 1;
     rasterise_segment(target, &seg);
 }

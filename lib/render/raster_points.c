@@ -11,7 +11,6 @@
 void raster_points(const struct raster_target *target, const struct scene_lines *lines,
                    const double object_to_eye[16])
 {
-    const struct render_visibility *vis = target->vis;
     for (uint32_t i = 0; i < lines->point_count; i++) {
         const struct scene_line_point *pt = &lines->points[i];
         double eye[3], clip[4];
@@ -24,7 +23,7 @@ void raster_points(const struct raster_target *target, const struct scene_lines 
             continue;
         double win[3];
         raster_to_window(target, clip, win);
-        long size = raster_pixels(pt->size, vis->point_size, RENDER_MAX_POINT_SIZE);
+        long size = raster_pixels(pt->size, target->raster->point_size, RENDER_MAX_POINT_SIZE);
         /* Odd sizes centre on the pixel holding the point, even ones on the
          * pixel corner nearest to it. */
         long x0 = size % 2 ? (long)floor(win[0]) - (size - 1) / 2

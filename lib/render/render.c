@@ -176,6 +176,17 @@ static int frame_has_clip(const struct scene_frame *frame)
     return 0;
 }
 
+/* 1 when some instance was drawn with RT_BLEND or RT_ALPHA_TEST: only
+ * then does a primary hit look its instance's raster state up (blend.c),
+ * so a frame without them costs nothing per ray. */
+static int frame_has_see_through(const struct scene_frame *frame)
+{
+    for (uint32_t i = 0; i < frame->committed.count; i++)
+        if (scene_raster_see_through(&frame->committed.items[i].appearance.raster))
+            return 1;
+    return 0;
+}
+
 int render_pass_begin(struct render_pass *pass, const struct render_job *job, int fb_width,
                       int fb_height)
 {
@@ -191,6 +202,7 @@ int render_pass_begin(struct render_pass *pass, const struct render_job *job, in
         return -1;
     }
     pass->clipping = frame_has_clip(job->frame);
+    pass->see_through = frame_has_see_through(job->frame);
     if (frame_has_lines(job->frame)) {
         pass->depth = rt_malloc((pixels ? pixels : 1) * sizeof(*pass->depth));
         if (!pass->depth) {
@@ -222,7 +234,7 @@ void render_tile(struct render_pass *pass, uint32_t tile, int worker)
 {
     const struct render_state *st = pass->job->state;
     struct shade_context sc = {st, pass->job->frame, &pass->scene, &pass->counters[worker].c,
-                               pass->job->textures, pass->clipping};
+                               pass->job->textures, pass->clipping, pass->see_through};
     const int *vp = st->viewport;
     int x0 = (int)(tile % (uint32_t)pass->tiles_x) * RENDER_TILE_SIZE;
     int y0 = (int)(tile / (uint32_t)pass->tiles_x) * RENDER_TILE_SIZE;
@@ -250,11 +262,12 @@ void render_pass_raster(struct render_pass *pass)
     raster_depth_prepare(pass->depth, pass->fb_width, pass->fb_height);
     const struct render_state *st = pass->job->state;
     struct raster_target target = {pass->fb, pass->depth, pass->fb_width, pass->fb_height,
-                                   st->viewport, st->projection, &st->vis, NULL};
+                                   st->viewport, st->projection, &st->vis, NULL, NULL};
     const struct scene_instance_list *list = &pass->job->frame->committed;
     for (uint32_t i = 0; i < list->count; i++) {
         const struct scene_instance *inst = &list->items[i];
         target.clip = &inst->appearance.clip; /* GL clips per primitive */
+        target.raster = &inst->appearance.raster; /* and blends, sizes */
         raster_lines(&target, &inst->object->mesh.lines, inst->object_to_world);
     }
 }

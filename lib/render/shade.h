@@ -15,6 +15,10 @@ struct shade_context {
     struct trace_scene_counters *counters;
     const struct scene_textures *textures; /* read only */
     int clipping; /* some instance has clip planes (scene_appearance.clip) */
+    /* Some instance was drawn with RT_BLEND or RT_ALPHA_TEST
+     * (scene_appearance.raster): only then does a primary hit look its
+     * instance's raster state up (blend.c). */
+    int see_through;
 };
 
 /*

@@ -27,6 +27,12 @@ struct render_visibility {
     /* Plane i in eye space (rtClipPlane transformed by the inverse of the
      * modelview at the call): p is kept where plane . (x, y, z, 1) >= 0. */
     double clip_plane[RENDER_MAX_CLIP_PLANES][4];
+    /* Current values only, taken by the primitives drawn
+     * (scene_appearance.raster, scene/raster_state.h). */
+    int alpha_test;        /* RT_ALPHA_TEST enabled */
+    unsigned alpha_func;   /* rtAlphaFunc, RT_ALWAYS initially */
+    float alpha_ref;       /* clamped to [0, 1] */
+    float offset_factor, offset_units; /* rtPolygonOffset */
 };
 
 /* The planes a primitive is clipped by travel with its instance

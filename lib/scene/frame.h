@@ -23,6 +23,7 @@
 #include "scene/clip.h"
 #include "scene/gl_state.h"
 #include "scene/object.h"
+#include "scene/raster_state.h"
 #include "scene/recording.h"
 #include "trace/scene_traverse.h"
 
@@ -41,6 +42,9 @@ struct scene_appearance {
     /* rtShadeModel(RT_FLAT) at the call: what triangles recorded in a
      * list before it set a shade model take (TRI_INHERIT_SHADE, mesh.h). */
     int flat;
+    /* The blend, alpha-test, polygon-offset, line-width and point-size
+     * state it was drawn under (raster_state.h), per primitive as GL. */
+    struct scene_raster raster;
 };
 
 struct scene_instance {
@@ -84,6 +88,7 @@ struct scene_immediate {
     uint64_t kept, redefined; /* segments committed unchanged / changed, ever */
     struct scene_clip clip;   /* the open segment's clip planes (its instance's) */
     struct scene_gl_state gl; /* the open segment's fog and light model */
+    struct scene_raster raster; /* the open segment's raster state (its instance's) */
 };
 
 struct scene_frame {
@@ -125,8 +130,8 @@ int scene_frame_add_instance_appearance(struct scene_frame *frame, struct scene_
                                         const struct scene_appearance *appearance);
 
 /* Immediate mode.  scene_immediate_segment makes the open segment the
- * one of `modelview`, `clip` and `gl` (committing the open one if its
- * modelview, clip planes, fog or light model differ,
+ * one of `modelview`, `clip`, `gl` and `raster` (committing the open one
+ * if its modelview, clip planes, fog, light model or raster state differ,
  * starting the frame's list if the last frame ended) and returns the
  * recording vertices go to; its block_matrix is what blocks transform
  * by.  NULL on allocation failure.  scene_immediate_commit commits the
@@ -135,7 +140,8 @@ int scene_frame_add_instance_appearance(struct scene_frame *frame, struct scene_
 struct scene_recording *scene_immediate_segment(struct scene_frame *frame,
                                                 const double modelview[16],
                                                 const struct scene_clip *clip,
-                                                const struct scene_gl_state *gl);
+                                                const struct scene_gl_state *gl,
+                                                const struct scene_raster *raster);
 void scene_immediate_commit(struct scene_frame *frame, uint64_t frame_number);
 /* Drops the segments recorded and not committed (a new frame). */
 void scene_immediate_restart(struct scene_immediate *im);

@@ -140,14 +140,17 @@ static int slot_reserve(struct scene_immediate *im)
 struct scene_recording *scene_immediate_segment(struct scene_frame *frame,
                                                 const double modelview[16],
                                                 const struct scene_clip *clip,
-                                                const struct scene_gl_state *gl)
+                                                const struct scene_gl_state *gl,
+                                                const struct scene_raster *raster)
 {
     struct scene_immediate *im = &frame->immediate;
     /* A change of clip planes starts a segment too: the planes are its
      * instance's (clip.h), as GL clips by those current at the draw;
-     * so does a change of fog or light model (gl_state.h). */
+     * so does a change of fog or light model (gl_state.h) or of blend or
+     * alpha-test state (raster_state.h). */
     if (frame->open && im->open && memcmp(im->matrix, modelview, sizeof(im->matrix)) == 0 &&
-        memcmp(&im->clip, clip, sizeof(*clip)) == 0 && memcmp(&im->gl, gl, sizeof(*gl)) == 0)
+        memcmp(&im->clip, clip, sizeof(*clip)) == 0 && memcmp(&im->gl, gl, sizeof(*gl)) == 0 &&
+        memcmp(&im->raster, raster, sizeof(*raster)) == 0)
         return &im->rec;
     if (!frame->open)
         scene_frame_begin(frame); /* the first geometry of a new frame */
@@ -171,6 +174,7 @@ struct scene_recording *scene_immediate_segment(struct scene_frame *frame,
     memset(&appearance, 0, sizeof(appearance));
     appearance.clip = *clip;
     appearance.gl = *gl;
+    appearance.raster = *raster;
     if (scene_frame_add_instance_appearance(frame, im->slots[im->used], instance, inverse,
                                             normal, &appearance))
         return NULL;
@@ -179,6 +183,7 @@ struct scene_recording *scene_immediate_segment(struct scene_frame *frame,
     memcpy(im->matrix, modelview, sizeof(im->matrix));
     im->clip = *clip;
     im->gl = *gl;
+    im->raster = *raster;
     scene_mesh_release(&im->rec.mesh);
     im->rec.mesh.bounds = aabb_empty();
     im->rec.active = 0;

@@ -194,10 +194,18 @@ static int segment_op(struct scene_recording *rec)
 
 /* Ends the current segment and starts the next at the current operation:
  * the current level's matrix becomes the identity relative to it. */
+/* 1 when a segment holds geometry: triangles' vertices, or lines and
+ * points (a segment can hold only those, e.g. after RT_BLEND is enabled
+ * in a list). */
+static int segment_has_geometry(const struct scene_mesh *mesh)
+{
+    return mesh->vertex_count > 0 || mesh->lines.vertex_count > 0;
+}
+
 static int new_segment(struct scene_recording *rec)
 {
     struct scene_list_op *last = rec->op_count ? &rec->ops[rec->op_count - 1] : NULL;
-    if (rec->mesh.vertex_count == 0 && last && last->kind == SCENE_OP_SEGMENT &&
+    if (!segment_has_geometry(&rec->mesh) && last && last->kind == SCENE_OP_SEGMENT &&
         last->a == rec->segment_count) {
         /* Nothing recorded since the segment started: restart it here. */
         rec->op_count--;
@@ -211,10 +219,15 @@ static int new_segment(struct scene_recording *rec)
             rec->segment_capacity = cap;
         }
         int has_normals = rec->mesh.has_normals;
+        /* The width and size the list set go on applying to its later
+         * lines and points (scene/lines.h). */
+        float width = rec->mesh.lines.width, size = rec->mesh.lines.size;
         rec->segments[rec->segment_count++] = rec->mesh;
         memset(&rec->mesh, 0, sizeof(rec->mesh));
         rec->mesh.bounds = aabb_empty();
         rec->mesh.has_normals = has_normals;
+        rec->mesh.lines.width = width;
+        rec->mesh.lines.size = size;
         rec->material_index = -1;
     }
     mat4_identity(rec->stack[rec->depth - 1].m);
@@ -382,13 +395,13 @@ int scene_list_finish(struct scene_recording *rec, struct scene_mesh **meshes,
     rec->mesh.bounds = aabb_empty();
     uint32_t kept = 0, with_vertices = 0;
     for (uint32_t i = 0; i < total; i++)
-        with_vertices += all[i].vertex_count > 0;
+        with_vertices += segment_has_geometry(&all[i]);
     for (uint32_t i = 0; i < total; i++) {
         uint32_t to = UINT32_MAX;
         /* Empty segments go; the first stays the object's mesh when no
          * segment has vertices (rtUpdateVertices numbers a mesh's vertices
          * even without triangles, an empty list is still an object). */
-        if (all[i].vertex_count > 0 || (i == 0 && with_vertices == 0)) {
+        if (segment_has_geometry(&all[i]) || (i == 0 && with_vertices == 0)) {
             to = kept;
             all[kept++] = all[i];
         } else {
