@@ -236,3 +236,13 @@ void glutWireCube(GLdouble size)
         glEnd();
     }
 }
+
+/* GLUT 3's wire sphere: a GLU sphere in the GLU_LINE style, smooth normals. */
+void glutWireSphere(GLdouble radius, GLint slices, GLint stacks)
+{
+    GLUquadric *q = gluNewQuadric();
+    gluQuadricDrawStyle(q, GLU_LINE);
+    gluQuadricNormals(q, GLU_SMOOTH);
+    gluSphere(q, radius, slices, stacks);
+    gluDeleteQuadric(q);
+}

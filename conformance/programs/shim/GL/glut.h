@@ -60,12 +60,14 @@ void glutAddMenuEntry(const char *label, int value);
 void glutAttachMenu(int button);
 int glutGet(GLenum state);
 
-/* GLUT 3's solids as drawn by ../gl_oracle/glut_gl.c, and the wire cube. */
+/* GLUT 3's solids as drawn by ../gl_oracle/glut_gl.c, the wire cube and
+ * the wire sphere. */
 void glutSolidSphere(GLdouble radius, GLint slices, GLint stacks);
 void glutSolidCube(GLdouble size);
 void glutSolidCone(GLdouble base, GLdouble height, GLint slices, GLint stacks);
 void glutSolidTorus(GLdouble innerRadius, GLdouble outerRadius, GLint sides, GLint rings);
 void glutSolidTeapot(GLdouble size);
 void glutWireCube(GLdouble size);
+void glutWireSphere(GLdouble radius, GLint slices, GLint stacks);
 
 #endif /* PROGRAMS_SHIM_GLUT_H */
