@@ -8,7 +8,8 @@
  *   Esc quit
  *
  * The fog colour is the clear colour, so the far objects fade into the
- * background.  Built twice from this source: against GL (headless with
+ * background.  The mode is written in the corner with glRasterPos under a
+ * pushed window projection and glutBitmapCharacter.  Built twice from this source: against GL (headless with
  * the OSMesa GLUT subset in shim/, or any GLUT) and against Tracelist
  * through rt/glcompat.h; only the #include lines below differ.
  */
@@ -75,12 +76,43 @@ static void object(int i, GLfloat x, GLfloat z)
     glPopMatrix();
 }
 
+/* The fog mode in the top left corner, as text over the scene: a window
+ * projection pushed for the raster position, popped again. */
+static void show_mode(void)
+{
+    const char *text = fog_mode == GL_EXP ? "GL_EXP" : fog_mode == GL_EXP2 ? "GL_EXP2" : "GL_LINEAR";
+    GLint viewport[4];
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    glDisable(GL_LIGHTING);
+    glDisable(GL_FOG);
+    glDisable(GL_DEPTH_TEST);
+    glMatrixMode(GL_PROJECTION);
+    glPushMatrix();
+    glLoadIdentity();
+    gluOrtho2D(0.0, (GLdouble)viewport[2], 0.0, (GLdouble)viewport[3]);
+    glMatrixMode(GL_MODELVIEW);
+    glPushMatrix();
+    glLoadIdentity();
+    glColor3f(1.0f, 1.0f, 0.3f);
+    glRasterPos2i(8, viewport[3] - 20);
+    while (*text)
+        glutBitmapCharacter(GLUT_BITMAP_HELVETICA_18, *text++);
+    glPopMatrix();
+    glMatrixMode(GL_PROJECTION);
+    glPopMatrix();
+    glMatrixMode(GL_MODELVIEW);
+    glEnable(GL_DEPTH_TEST);
+    glEnable(GL_FOG);
+    glEnable(GL_LIGHTING);
+}
+
 static void display(void)
 {
     int i;
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     for (i = 0; i < 5; i++)
         object(i, -1.8f + 1.4f * i, -6.0f - 2.0f * i);
+    show_mode();
     glFlush();
     glutSwapBuffers();
     check_errors("display");

@@ -20,6 +20,7 @@
 
 #include "../gl_oracle/glut_gl.h"
 #include "ppm.h"
+#include "rtu/font_internal.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -245,4 +246,38 @@ void glutWireSphere(GLdouble radius, GLint slices, GLint stacks)
     gluQuadricNormals(q, GLU_SMOOTH);
     gluSphere(q, radius, slices, stacks);
     gluDeleteQuadric(q);
+}
+
+/* GLUT's bitmap characters with glBitmap, GLUT's way: one bitmap per
+ * character at the raster position, which it advances by the character's
+ * width.  The glyphs are rtu's (lib/rtu/font_data.c: the real GLUT fonts'
+ * pixels are not ours to copy), each dot scaled and the glyph centred in
+ * its advance as rtu's font.c does, so the two builds draw the same
+ * pixels when their raster positions agree. */
+void glutBitmapCharacter(void *font, int character)
+{
+    const size_t id = (size_t)font;
+    const struct rtu_font *f;
+    const struct rtu_glyph *g;
+    GLubyte bits[RTU_FONT_ROWS * RTU_FONT_MAX_SCALE][4];
+    int s, width, advance, offset, r, dy, i, k;
+    if (id < 2 || id >= 2 + RTU_FONT_COUNT || character < RTU_FONT_FIRST ||
+        character >= RTU_FONT_FIRST + RTU_FONT_GLYPHS)
+        return;
+    f = &rtu_fonts[id - 2];
+    g = &rtu_glyphs[character - RTU_FONT_FIRST];
+    s = f->scale;
+    width = g->width * s;
+    advance = f->advance[character - RTU_FONT_FIRST];
+    offset = advance > width ? (advance - width) / 2 : 0;
+    memset(bits, 0, sizeof bits);
+    for (r = 0; r < RTU_FONT_ROWS; r++)
+        for (dy = 0; dy < s; dy++)
+            for (i = 0; i < g->width; i++)
+                if (g->rows[r] & (0x80u >> i))
+                    for (k = 0; k < s; k++)
+                        bits[r * s + dy][(i * s + k) / 8] |= (GLubyte)(0x80u >> ((i * s + k) % 8));
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glBitmap(width, RTU_FONT_ROWS * s, (GLfloat)-offset, (GLfloat)(RTU_FONT_DESCENT * s),
+             (GLfloat)advance, 0.0f, &bits[0][0]);
 }

@@ -38,6 +38,15 @@
 #define GLUT_KEY_HOME 106
 #define GLUT_KEY_END 107
 
+/* The bitmap fonts: GLUT 3's names; the glyphs are rtu's (glut_osmesa.c). */
+#define GLUT_BITMAP_9_BY_15 ((void *)2)
+#define GLUT_BITMAP_8_BY_13 ((void *)3)
+#define GLUT_BITMAP_TIMES_ROMAN_10 ((void *)4)
+#define GLUT_BITMAP_TIMES_ROMAN_24 ((void *)5)
+#define GLUT_BITMAP_HELVETICA_10 ((void *)6)
+#define GLUT_BITMAP_HELVETICA_12 ((void *)7)
+#define GLUT_BITMAP_HELVETICA_18 ((void *)8)
+
 #define GLUT_WINDOW_WIDTH 102
 #define GLUT_WINDOW_HEIGHT 103
 #define GLUT_ELAPSED_TIME 700
@@ -59,6 +68,7 @@ int glutCreateMenu(void (*func)(int value));
 void glutAddMenuEntry(const char *label, int value);
 void glutAttachMenu(int button);
 int glutGet(GLenum state);
+void glutBitmapCharacter(void *font, int character);
 
 /* GLUT 3's solids as drawn by ../gl_oracle/glut_gl.c, the wire cube and
  * the wire sphere. */
