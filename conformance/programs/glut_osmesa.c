@@ -9,7 +9,7 @@
  *                     "s:101" a special key code, "m:Label" a menu entry by
  *                     its label ('_' for a space); replayed in order after
  *                     the reshape callback
- *   TRACELIST_FRAMES  display calls (default 1), the idle callback between
+ *   TRACELIST_FRAMES  display calls (default 1), each after the idle callback
  *   TRACELIST_OUT     the file of the last frame (binary PPM)
  *
  * glutMainLoop does all of it and exits: status 1 when a GL error was
@@ -190,7 +190,7 @@ void glutMainLoop(void)
             failed |= !replay(event);
     }
     for (frame = 0; frame < (frames > 0 ? frames : 1); frame++) {
-        if (frame > 0 && glut.idle)
+        if (glut.idle)
             glut.idle();
         if (glut.display)
             glut.display();

@@ -9,10 +9,12 @@
  * the 'l' key turns it) and marked by a small unlit wire sphere drawn
  * under the same matrix.  Round the torus a wire planet circles on its
  * year, turns on its day, and carries a small lit solid moon: each body
- * between glPushMatrix and glPopMatrix.
+ * between glPushMatrix and glPopMatrix.  The idle callback moves the
+ * planet on between frames.
  *
  *   l   move the light 30 degrees     y / Y   planet's year forward / back
- *   d   planet's day forward          Esc     quit
+ *   d   planet's day forward          space   animation (the idle callback) on/off
+ *   Esc quit
  *
  * Built twice from this source: against GL (headless with the OSMesa GLUT
  * subset in shim/, or any GLUT) and against Tracelist through
@@ -27,7 +29,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-static int spin = 300, year = 120, day = 0, gl_errors;
+static int spin = 300, year = 120, day = 0, animate = 1, gl_errors;
 
 static void check_errors(const char *where)
 {
@@ -108,6 +110,14 @@ static void reshape(int width, int height)
     glLoadIdentity();
 }
 
+/* The animation: a step of the planet's day and year per idle call. */
+static void step(void)
+{
+    day = (day + 10) % 360;
+    year = (year + 3) % 360;
+    glutPostRedisplay();
+}
+
 static void keyboard(unsigned char key, int x, int y)
 {
     (void)x;
@@ -124,6 +134,10 @@ static void keyboard(unsigned char key, int x, int y)
         break;
     case 'd':
         day = (day + 15) % 360;
+        break;
+    case ' ':
+        animate = !animate;
+        glutIdleFunc(animate ? step : NULL);
         break;
     case 27:
         exit(gl_errors != 0);
@@ -144,6 +158,7 @@ int main(int argc, char **argv)
     glutDisplayFunc(display);
     glutReshapeFunc(reshape);
     glutKeyboardFunc(keyboard);
+    glutIdleFunc(step);
     glutMainLoop();
     return 0;
 }

@@ -4,7 +4,8 @@
  * the GLUT programs of conformance/programs against real GL without a
  * display (glut_osmesa.c).  It runs a program the way the Tracelist rtu
  * shell runs it headless: the reshape callback at the window size, the
- * events of TRACELIST_EVENTS, TRACELIST_FRAMES display calls (default 1),
+ * events of TRACELIST_EVENTS, TRACELIST_FRAMES display calls (default 1,
+ * each after the idle callback),
  * then the last frame written to TRACELIST_OUT (binary PPM) and exit.
  *
  * Names and values are GLUT 3's (its API, not its code).  Only the calls
