@@ -243,6 +243,40 @@ static void parameters(void)
         CHECK_ERR(RT_INVALID_VALUE);
         rtBindTexture(RT_TEXTURE_2D, TEX_CHECKER);
     }
+    tu_section("lambda of a texture stretched one way: the denser direction, as GL's rho");
+    {
+        static unsigned char blue[32 * 32 * 3], red[16 * 16 * 3];
+        for (int i = 0; i < 32 * 32; i++)
+            blue[3 * i + 2] = 255;
+        for (int i = 0; i < 16 * 16; i++)
+            red[3 * i] = 255;
+        rtBindTexture(RT_TEXTURE_2D, TEX_CHECKER);
+        rtTexImage2D(RT_TEXTURE_2D, 1, RT_RGB, 32, 32, 0, RT_RGB, RT_UNSIGNED_BYTE, blue);
+        rtTexImage2D(RT_TEXTURE_2D, 2, RT_RGB, 16, 16, 0, RT_RGB, RT_UNSIGNED_BYTE, red);
+        set_filters(RT_NEAREST_MIPMAP_NEAREST, RT_NEAREST);
+        /* 1 texel a pixel across (s to 0.25), 4 along (t to 1): GL's rho
+         * is 4, lambda 2, level 2 (red); the two directions' geometric
+         * mean, 2 texels, would give level 1 (blue). */
+        rtNewObject(QUAD);
+        texel_material();
+        rtEnable(RT_TEXTURE_2D);
+        rtBegin(RT_QUADS);
+        rtTexCoord2f(0, 0);
+        rtVertex3f(-1, -1, -5);
+        rtTexCoord2f(0.25f, 0);
+        rtVertex3f(1, -1, -5);
+        rtTexCoord2f(0.25f, 1);
+        rtVertex3f(1, 1, -5);
+        rtTexCoord2f(0, 1);
+        rtVertex3f(-1, 1, -5);
+        rtEnd();
+        rtDisable(RT_TEXTURE_2D);
+        rtEndObject();
+        render(QUAD);
+        CHECK(pixel(5, 9)[0] == 1.0f && pixel(5, 9)[2] == 0.0f);
+        CHECK(pixel(12, 3)[0] == 1.0f && pixel(12, 3)[2] == 0.0f);
+        upload_checker();
+    }
     set_filters(RT_LINEAR, RT_LINEAR);
     CHECK_NO_ERR();
 }
