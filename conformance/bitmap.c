@@ -239,6 +239,32 @@ static void test_errors(void)
     CHECK_NO_ERR();
 }
 
+/* A GL frame (begun by rtClear) rendered twice, as a GLUT program's
+ * glFlush followed by glutSwapBuffers renders it: GL's framebuffer still
+ * holds the text at the swap, so the second image has it too; the next
+ * rtClear ends it.  Last: it leaves the context in GL frames. */
+static void test_gl_frame_rendered_twice(void)
+{
+    static const unsigned char bits[3 * 4] = {0x80, 0x40, 0xEE, 0xEE, 0x66, 0x00, 0xEE, 0xEE,
+                                              0xFF, 0xC0, 0xEE, 0xEE};
+    static const float yellow[4] = {1, 1, 0, 1}, clear[4] = {0, 0, 0, 0};
+    window_camera();
+    rtClearColor(0, 0, 0, 0);
+    rtClear(RT_COLOR_BUFFER_BIT | RT_DEPTH_BUFFER_BIT);
+    rtColor3f(1, 1, 0);
+    rtWindowPos2i(5, 7);
+    rtBitmap(10, 3, 0, 0, 0, 0, bits);
+    rtFlush();
+    rtReadPixels(0, 0, W, H, RT_RGBA, RT_FLOAT, image);
+    CHECK_INT(compare_bitmap(bits, 10, 3, 5, 7, yellow, clear), 0);
+    render(); /* the buffer swap's render of the same frame */
+    CHECK_INT(compare_bitmap(bits, 10, 3, 5, 7, yellow, clear), 0);
+    rtClear(RT_COLOR_BUFFER_BIT);
+    render();
+    CHECK_INT(compare_bitmap(bits, 10, 3, -100, -100, yellow, clear), 0);
+    CHECK_NO_ERR();
+}
+
 int main(void)
 {
     RTcontext ctx = tu_make_context("threads=2");
@@ -256,6 +282,7 @@ int main(void)
     test_unpack_and_place();
     test_clipped_and_transformed();
     test_errors();
+    test_gl_frame_rendered_twice();
     tu_destroy_context(ctx);
     return test_summary("bitmap");
 }

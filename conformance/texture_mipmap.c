@@ -195,7 +195,7 @@ static void parameters(void)
     render(QUAD);
     CHECK(pixel(0, 0)[0] == 1.0f && pixel(1, 0)[0] == 1.0f && pixel(2, 0)[0] == 0.0f);
 
-    tu_section("rtTexImage2D: levels > 0 are generated, not uploaded");
+    tu_section("rtTexImage2D: a level > 0 of another size than the chain's is refused");
     {
         static const unsigned char red[3] = {255, 0, 0};
         rtTexImage2D(RT_TEXTURE_2D, 1, RT_RGB, 1, 1, 0, RT_RGB, RT_UNSIGNED_BYTE, red);
@@ -203,6 +203,79 @@ static void parameters(void)
         CHECK_MSG("rtTexImage2D");
         render(QUAD);
         CHECK(pixel(0, 0)[0] == 1.0f && pixel(2, 0)[0] == 0.0f);
+    }
+    tu_section("rtTexImage2D: a level k > 0 of the chain's size replaces level k");
+    {
+        static unsigned char blue[32 * 32 * 3];
+        static const unsigned char red[3] = {255, 0, 0};
+        for (int i = 0; i < 32 * 32; i++)
+            blue[3 * i + 2] = 255;
+        rtBindTexture(RT_TEXTURE_2D, TEX_CHECKER);
+        rtTexImage2D(RT_TEXTURE_2D, 1, RT_RGB, 32, 32, 0, RT_RGB, RT_UNSIGNED_BYTE, blue);
+        CHECK_NO_ERR();
+        rtTexImage2D(RT_TEXTURE_2D, 6, RT_RGB, 1, 1, 0, RT_RGB, RT_UNSIGNED_BYTE, red);
+        CHECK_NO_ERR();
+        set_filters(RT_NEAREST_MIPMAP_NEAREST, RT_NEAREST);
+        /* 2 texels a pixel, lambda = 1: level 1, the uploaded one. */
+        define_quad(QUAD, TEX_CHECKER, 1, -5, 0.5f);
+        render(QUAD);
+        CHECK(pixel(5, 9)[0] == 0.0f && pixel(5, 9)[1] == 0.0f && pixel(5, 9)[2] == 1.0f);
+        /* 4 texels a pixel, lambda = 2: level 2, still made from level 0. */
+        define_quad(QUAD, TEX_CHECKER, 1, -5, 1);
+        render(QUAD);
+        CHECK_NEAR(pixel(5, 9)[0], grey128, 1e-6);
+        CHECK_NEAR(pixel(5, 9)[2], grey128, 1e-6);
+        /* 64 texels a pixel, lambda = 6: the last level, uploaded red. */
+        define_quad(QUAD, TEX_CHECKER, 1, -5, 16);
+        render(QUAD);
+        CHECK(pixel(5, 9)[0] == 1.0f && pixel(5, 9)[2] == 0.0f);
+        /* Beyond the chain (64x64 has levels 0 .. 6): refused. */
+        rtTexImage2D(RT_TEXTURE_2D, 7, RT_RGB, 1, 1, 0, RT_RGB, RT_UNSIGNED_BYTE, red);
+        CHECK_ERR(RT_INVALID_VALUE);
+        /* Level 0 again makes the whole chain again. */
+        upload_checker();
+        define_quad(QUAD, TEX_CHECKER, 1, -5, 0.5f);
+        render(QUAD);
+        CHECK_NEAR(pixel(5, 9)[2], grey128, 1e-6);
+        /* A level before level 0: refused (GL would keep it for later). */
+        rtBindTexture(RT_TEXTURE_2D, TEX_CHECKER + 100);
+        rtTexImage2D(RT_TEXTURE_2D, 1, RT_RGB, 1, 1, 0, RT_RGB, RT_UNSIGNED_BYTE, red);
+        CHECK_ERR(RT_INVALID_VALUE);
+        rtBindTexture(RT_TEXTURE_2D, TEX_CHECKER);
+    }
+    tu_section("lambda of a texture stretched one way: the denser direction, as GL's rho");
+    {
+        static unsigned char blue[32 * 32 * 3], red[16 * 16 * 3];
+        for (int i = 0; i < 32 * 32; i++)
+            blue[3 * i + 2] = 255;
+        for (int i = 0; i < 16 * 16; i++)
+            red[3 * i] = 255;
+        rtBindTexture(RT_TEXTURE_2D, TEX_CHECKER);
+        rtTexImage2D(RT_TEXTURE_2D, 1, RT_RGB, 32, 32, 0, RT_RGB, RT_UNSIGNED_BYTE, blue);
+        rtTexImage2D(RT_TEXTURE_2D, 2, RT_RGB, 16, 16, 0, RT_RGB, RT_UNSIGNED_BYTE, red);
+        set_filters(RT_NEAREST_MIPMAP_NEAREST, RT_NEAREST);
+        /* 1 texel a pixel across (s to 0.25), 4 along (t to 1): GL's rho
+         * is 4, lambda 2, level 2 (red); the two directions' geometric
+         * mean, 2 texels, would give level 1 (blue). */
+        rtNewObject(QUAD);
+        texel_material();
+        rtEnable(RT_TEXTURE_2D);
+        rtBegin(RT_QUADS);
+        rtTexCoord2f(0, 0);
+        rtVertex3f(-1, -1, -5);
+        rtTexCoord2f(0.25f, 0);
+        rtVertex3f(1, -1, -5);
+        rtTexCoord2f(0.25f, 1);
+        rtVertex3f(1, 1, -5);
+        rtTexCoord2f(0, 1);
+        rtVertex3f(-1, 1, -5);
+        rtEnd();
+        rtDisable(RT_TEXTURE_2D);
+        rtEndObject();
+        render(QUAD);
+        CHECK(pixel(5, 9)[0] == 1.0f && pixel(5, 9)[2] == 0.0f);
+        CHECK(pixel(12, 3)[0] == 1.0f && pixel(12, 3)[2] == 0.0f);
+        upload_checker();
     }
     set_filters(RT_LINEAR, RT_LINEAR);
     CHECK_NO_ERR();

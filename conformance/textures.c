@@ -366,9 +366,12 @@ static void image_errors(void)
     CHECK_ERR(RT_INVALID_ENUM);
     rtTexImage2D(RT_TEXTURE_2D, 0, RT_RGBA, 1, 1, 0, RT_RGBA, RT_DOUBLE, red);
     CHECK_ERR(RT_INVALID_ENUM);
-    rtTexImage2D(RT_TEXTURE_2D, 1, RT_RGBA, 1, 1, 0, RT_RGBA, RT_UNSIGNED_BYTE, red);
+    /* Level 1 of this 2x2 image is 1x1: 2x2 there is refused. */
+    rtTexImage2D(RT_TEXTURE_2D, 1, RT_RGBA, 2, 2, 0, RT_RGBA, RT_UNSIGNED_BYTE, red);
     CHECK_ERR(RT_INVALID_VALUE);
     CHECK_MSG("rtTexImage2D");
+    rtTexImage2D(RT_TEXTURE_2D, 15, RT_RGBA, 1, 1, 0, RT_RGBA, RT_UNSIGNED_BYTE, red);
+    CHECK_ERR(RT_INVALID_VALUE);
     rtTexImage2D(RT_TEXTURE_2D, -1, RT_RGBA, 1, 1, 0, RT_RGBA, RT_UNSIGNED_BYTE, red);
     CHECK_ERR(RT_INVALID_VALUE);
     rtTexImage2D(RT_TEXTURE_2D, 0, 1, 1, 1, 0, RT_RGBA, RT_UNSIGNED_BYTE, red);

@@ -9,7 +9,7 @@
  *                     "s:101" a special key code, "m:Label" a menu entry by
  *                     its label ('_' for a space); replayed in order after
  *                     the reshape callback
- *   TRACELIST_FRAMES  display calls (default 1), the idle callback between
+ *   TRACELIST_FRAMES  display calls (default 1), each after the idle callback
  *   TRACELIST_OUT     the file of the last frame (binary PPM)
  *
  * glutMainLoop does all of it and exits: status 1 when a GL error was
@@ -20,6 +20,7 @@
 
 #include "../gl_oracle/glut_gl.h"
 #include "ppm.h"
+#include "rtu/font_internal.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -189,7 +190,7 @@ void glutMainLoop(void)
             failed |= !replay(event);
     }
     for (frame = 0; frame < (frames > 0 ? frames : 1); frame++) {
-        if (frame > 0 && glut.idle)
+        if (glut.idle)
             glut.idle();
         if (glut.display)
             glut.display();
@@ -235,4 +236,48 @@ void glutWireCube(GLdouble size)
         glVertex3fv(v[faces[i][3]]);
         glEnd();
     }
+}
+
+/* GLUT 3's wire sphere: a GLU sphere in the GLU_LINE style, smooth normals. */
+void glutWireSphere(GLdouble radius, GLint slices, GLint stacks)
+{
+    GLUquadric *q = gluNewQuadric();
+    gluQuadricDrawStyle(q, GLU_LINE);
+    gluQuadricNormals(q, GLU_SMOOTH);
+    gluSphere(q, radius, slices, stacks);
+    gluDeleteQuadric(q);
+}
+
+/* GLUT's bitmap characters with glBitmap, GLUT's way: one bitmap per
+ * character at the raster position, which it advances by the character's
+ * width.  The glyphs are rtu's (lib/rtu/font_data.c: the real GLUT fonts'
+ * pixels are not ours to copy), each dot scaled and the glyph centred in
+ * its advance as rtu's font.c does, so the two builds draw the same
+ * pixels when their raster positions agree. */
+void glutBitmapCharacter(void *font, int character)
+{
+    const size_t id = (size_t)font;
+    const struct rtu_font *f;
+    const struct rtu_glyph *g;
+    GLubyte bits[RTU_FONT_ROWS * RTU_FONT_MAX_SCALE][4];
+    int s, width, advance, offset, r, dy, i, k;
+    if (id < 2 || id >= 2 + RTU_FONT_COUNT || character < RTU_FONT_FIRST ||
+        character >= RTU_FONT_FIRST + RTU_FONT_GLYPHS)
+        return;
+    f = &rtu_fonts[id - 2];
+    g = &rtu_glyphs[character - RTU_FONT_FIRST];
+    s = f->scale;
+    width = g->width * s;
+    advance = f->advance[character - RTU_FONT_FIRST];
+    offset = advance > width ? (advance - width) / 2 : 0;
+    memset(bits, 0, sizeof bits);
+    for (r = 0; r < RTU_FONT_ROWS; r++)
+        for (dy = 0; dy < s; dy++)
+            for (i = 0; i < g->width; i++)
+                if (g->rows[r] & (0x80u >> i))
+                    for (k = 0; k < s; k++)
+                        bits[r * s + dy][(i * s + k) / 8] |= (GLubyte)(0x80u >> ((i * s + k) % 8));
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glBitmap(width, RTU_FONT_ROWS * s, (GLfloat)-offset, (GLfloat)(RTU_FONT_DESCENT * s),
+             (GLfloat)advance, 0.0f, &bits[0][0]);
 }

@@ -117,6 +117,7 @@ void rtClear(RTbitfield mask)
     /* Every frame is rendered whole on the clear colour: clearing starts
      * the description of the next one. */
     scene_frame_begin(&ctx->scene.frame);
+    render_overlay_clear(&ctx->overlay); /* the last GL frame's bitmaps */
     ctx->gl_frames = 1;
     ctx->frame_unrendered = 1;
 }
@@ -159,9 +160,13 @@ static void render_frame_now(struct rt_context *ctx)
      * because render_ms is only set below (internal/automatic_cost). */
     double frame_ms = rt_now_ms() - start;
     /* The frame's bitmaps go over its image, as GL's glBitmap over the
-     * scene drawn before it (render/overlay.h); they end with the frame. */
+     * scene drawn before it (render/overlay.h); they end with the frame.
+     * A GL frame ends at the next rtClear instead: GL's framebuffer keeps
+     * the text until it is cleared, so a frame rendered again (glFlush,
+     * then the buffer swap that renders once more) shows it again. */
     render_overlay_apply(&ctx->overlay, &ctx->render.fb);
-    render_overlay_clear(&ctx->overlay);
+    if (!ctx->gl_frames)
+        render_overlay_clear(&ctx->overlay);
     scene_end_frame(&ctx->scene, ctx->stats.rays, ctx->stats.node_tests + ctx->stats.triangle_tests,
                     frame_ms - ctx->stats.update_ms - ctx->stats.toplevel_ms);
     ctx->stats.render_ms = rt_now_ms() - start;

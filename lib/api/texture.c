@@ -7,8 +7,9 @@
  *
  * Deviations from GL 1.1 (docs/textures.md): there is no default texture
  * object, so with 0 bound rtTexImage2D and rtTexParameteri record
- * RT_INVALID_OPERATION; only level 0 is uploaded, and rtTexImage2D
- * generates the other mipmap levels from it (GL_GENERATE_MIPMAP); pixel
+ * RT_INVALID_OPERATION; an upload of level 0 generates the other mipmap
+ * levels from it (GL_GENERATE_MIPMAP), and a later upload of level k > 0
+ * replaces level k of that chain, which must then have its size; pixel
  * rows are tightly packed (GL's UNPACK_ALIGNMENT 1, there is no
  * rtPixelStorei); images are stored as 8-bit RGBA whatever the upload
  * type.
@@ -113,6 +114,51 @@ static uint8_t upload_component(const void *pixels, RTenum type, size_t index)
     return (uint8_t)lrintf(f * 255.0f);
 }
 
+/* The upload's texels as 8-bit RGBA into dst (count texels); NULL pixels
+ * give a black image. */
+static void convert_upload(uint8_t *dst, size_t count, const void *pixels, RTenum format,
+                           RTenum type, int opaque)
+{
+    const size_t components = format == RT_RGB ? 3 : 4;
+    for (size_t i = 0; i < count; i++) {
+        uint8_t *t = &dst[4 * i];
+        if (!pixels) {
+            t[0] = t[1] = t[2] = 0; /* NULL: a black image */
+            t[3] = 255;
+            continue;
+        }
+        for (size_t c = 0; c < 3; c++)
+            t[c] = upload_component(pixels, type, components * i + c);
+        t[3] = components == 4 && !opaque ? upload_component(pixels, type, components * i + 3)
+                                          : 255;
+    }
+}
+
+/* Level k > 0 given by the program, as GL 1.1 programs load their own
+ * mipmaps (each level a picture of its own, e.g. of another colour): it
+ * replaces level k of the chain generated from level 0, so level 0 comes
+ * first and level k must have the chain's size there, max(1, w >> k) x
+ * max(1, h >> k).  GL also accepts other sizes, and levels before level 0,
+ * and leaves the texture incomplete until they agree; Tracelist records
+ * RT_INVALID_VALUE for them instead, so the difference is not silent. */
+static void upload_level(struct rt_context *ctx, struct scene_texture *tex, RTint level,
+                         RTsizei width, RTsizei height, RTenum format, RTenum type,
+                         const void *pixels, int opaque)
+{
+    if (!tex->texels || level >= tex->level_count || width != tex->levels[level].width ||
+        height != tex->levels[level].height) {
+        rt_error(ctx, RT_INVALID_VALUE,
+                 "rtTexImage2D(level=%d, width=%d, height=%d): level %d must have the size of "
+                 "level %d of the chain of level 0, which is uploaded first (%s)",
+                 level, width, height, level, level,
+                 tex->texels ? "this chain has fewer levels or another size there"
+                             : "no level 0 yet");
+        return;
+    }
+    uint8_t *dst = tex->texels + (tex->levels[level].texels - tex->texels);
+    convert_upload(dst, (size_t)width * (size_t)height, pixels, format, type, opaque);
+}
+
 void rtTexImage2D(RTenum target, RTint level, RTint internalformat, RTsizei width,
                   RTsizei height, RTint border, RTenum format, RTenum type, const void *pixels)
 {
@@ -134,10 +180,9 @@ void rtTexImage2D(RTenum target, RTint level, RTint internalformat, RTsizei widt
         rt_error(ctx, RT_INVALID_ENUM, "rtTexImage2D(type=0x%x)", type);
         return;
     }
-    if (level != 0) {
-        rt_error(ctx, RT_INVALID_VALUE,
-                 "rtTexImage2D(level=%d): only level 0 (levels > 0 are generated from it)",
-                 level);
+    if (level < 0 || level >= SCENE_TEXTURE_MAX_LEVELS) {
+        rt_error(ctx, RT_INVALID_VALUE, "rtTexImage2D(level=%d): levels 0..%d", level,
+                 SCENE_TEXTURE_MAX_LEVELS - 1);
         return;
     }
     /* GL 1.1 takes the component count (3, 4) or a format name. */
@@ -154,6 +199,10 @@ void rtTexImage2D(RTenum target, RTint level, RTint internalformat, RTsizei widt
                  height, border, SCENE_TEXTURE_MAX_SIZE);
         return;
     }
+    if (level > 0) {
+        upload_level(ctx, tex, level, width, height, format, type, pixels, opaque);
+        return;
+    }
     /* The whole mip chain in one block, level 0 first. */
     size_t count = (size_t)width * (size_t)height;
     uint8_t *texels = rt_malloc(4 * scene_texture_chain_texels(width, height));
@@ -162,19 +211,7 @@ void rtTexImage2D(RTenum target, RTint level, RTint internalformat, RTsizei widt
                  width, height);
         return;
     }
-    const size_t components = format == RT_RGB ? 3 : 4;
-    for (size_t i = 0; i < count; i++) {
-        uint8_t *t = &texels[4 * i];
-        if (!pixels) {
-            t[0] = t[1] = t[2] = 0; /* NULL: a black image */
-            t[3] = 255;
-            continue;
-        }
-        for (size_t c = 0; c < 3; c++)
-            t[c] = upload_component(pixels, type, components * i + c);
-        t[3] = components == 4 && !opaque ? upload_component(pixels, type, components * i + 3)
-                                          : 255;
-    }
+    convert_upload(texels, count, pixels, format, type, opaque);
     /* Built here, on the API thread, whatever the filters: a later
      * rtTexParameteri can choose a mipmapped filter without any work. */
     if (scene_texture_build_mipmaps(texels, width, height)) {

@@ -32,26 +32,61 @@ static void interpolate(const float *attr, int stride, const uint32_t v[3], floa
  * than head-on, more than the 14 halvings of the largest mip chain. */
 #define LOD_MIN_COSINE 1e-5
 
+static double dot3d(const double a[3], const double b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static void cross3d(const double a[3], const double b[3], double out[3])
+{
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/* The level-0 texels spanned by the in-plane vector e of the triangle
+ * with world edges w1, w2 (normal nn = w1 x w2, |nn|^2 = nn2) and texel
+ * edges a1, a2: e = alpha w1 + beta w2 maps to alpha a1 + beta a2. */
+static double texel_length(const double e[3], const double w1[3], const double w2[3],
+                           const double nn[3], double nn2, const double a1[2],
+                           const double a2[2])
+{
+    double ew2[3], w1e[3];
+    cross3d(e, w2, ew2);
+    cross3d(w1, e, w1e);
+    const double alpha = dot3d(ew2, nn) / nn2, beta = dot3d(w1e, nn) / nn2;
+    return hypot(alpha * a1[0] + beta * a2[0], alpha * a1[1] + beta * a2[1]);
+}
+
 /*
  * The texture level of detail at a hit by ray cones (Akenine-Möller et
  * al. 2019, "Texture Level of Detail Strategies for Real-Time Ray
- * Tracing", Ray Tracing Gems ch. 20, sec. 20.3.4):
+ * Tracing", Ray Tracing Gems ch. 20, sec. 20.3.4), with the footprint's
+ * two axes mapped to texels separately, as GL's rho takes the longer of
+ * the texel derivatives along the two screen axes (OpenGL 1.1, texture
+ * minification):
  *
- *     lambda = Delta + log2(width / |n . d|),  Delta = 0.5 log2(t_a / p_a)
+ *     lambda = log2(max(|J e1| width / |n . d|, |J e2| width))
  *
- * `width` is the cone's width at the hit (world units), n the unit
- * geometric normal and d the unit ray direction, so width / |n . d| is the
- * footprint stretched across the triangle's plane; t_a is the triangle's
- * area in level-0 texels (w h |(st1 - st0) x (st2 - st0)|) and p_a its
- * area in world space, so sqrt(t_a / p_a) converts world length to texels
- * and lambda is log2 of the texels a pixel spans, GL's log2(rho).  The
- * triangle's edges go through the instance matrix before p_a is taken,
- * so an instance scaled 4x gets the level of detail of the same triangles
- * recorded 4x larger.  All in double; the same operations for every pixel,
- * so the result does not depend on threads.  A triangle without texture
- * area (constant coordinates) gives -inf, a magnification; one without
- * world area +inf, the last level; 0 / 0 a NaN, which the sampler takes as
- * a magnification.
+ * `width` is the cone's width at the hit (world units), n the unit normal
+ * of the triangle's plane and d the unit ray direction; the cone's
+ * footprint on the plane is an ellipse, width / |n . d| long along e1 (the
+ * ray's direction projected into the plane) and width wide along e2 = n x
+ * e1; J maps in-plane world vectors to level-0 texels (the triangle's
+ * edges to its texture-coordinate edges times w and h).  A texture laid
+ * on with the same density in every direction has |J e| the same for all
+ * e, sqrt(t_a / p_a) (t_a the triangle's area in texels, p_a in world
+ * units), and this is the chapter's Delta + log2(width / |n . d|).  One
+ * stretched more one way (a long floor with its coordinates running to
+ * 2000 along and 8 across) takes its level from the denser direction, as
+ * GL does, where the chapter's isotropic Delta would average the two.
+ * The triangle's edges go through the instance matrix first, so an
+ * instance scaled 4x gets the level of detail of the same triangles
+ * recorded 4x larger.  All in double; the same operations for every
+ * pixel, so the result does not depend on threads.  A triangle without
+ * texture area (constant coordinates) gives -inf, a magnification; one
+ * without world area +inf, the last level; 0 / 0 a NaN, which the
+ * sampler takes as a magnification.
  */
 static float texture_lod(const struct scene_texture *tex, const struct scene_instance *inst,
                          const struct scene_mesh *mesh, const uint32_t v[3],
@@ -62,28 +97,49 @@ static float texture_lod(const struct scene_texture *tex, const struct scene_ins
     const float *p1 = &mesh->positions[3 * v[1]];
     const float *p2 = &mesh->positions[3 * v[2]];
     const float *t0 = st[0], *t1 = st[1], *t2 = st[2];
-    double e1[3], e2[3], w1[3], w2[3];
+    double e1[3], e2[3], w1[3], w2[3], nn[3];
     for (int k = 0; k < 3; k++) {
         e1[k] = (double)p1[k] - (double)p0[k];
         e2[k] = (double)p2[k] - (double)p0[k];
     }
     mat4_transform_vector(inst->object_to_world, e1, w1);
     mat4_transform_vector(inst->object_to_world, e2, w2);
-    const double cx = w1[1] * w2[2] - w1[2] * w2[1];
-    const double cy = w1[2] * w2[0] - w1[0] * w2[2];
-    const double cz = w1[0] * w2[1] - w1[1] * w2[0];
-    const double p_a = sqrt(cx * cx + cy * cy + cz * cz);
-    const double uv_cross = ((double)t1[0] - (double)t0[0]) * ((double)t2[1] - (double)t0[1]) -
-                            ((double)t2[0] - (double)t0[0]) * ((double)t1[1] - (double)t0[1]);
-    const double t_a = (double)tex->width * (double)tex->height * fabs(uv_cross);
-    const double dir_len = sqrt((double)dir[0] * dir[0] + (double)dir[1] * dir[1] +
-                                (double)dir[2] * dir[2]);
-    double cosine = fabs((double)ng[0] * dir[0] + (double)ng[1] * dir[1] +
-                         (double)ng[2] * dir[2]) /
+    cross3d(w1, w2, nn);
+    const double nn2 = dot3d(nn, nn);
+    const double p_a = sqrt(nn2);
+    const double a1[2] = {((double)t1[0] - (double)t0[0]) * tex->width,
+                          ((double)t1[1] - (double)t0[1]) * tex->height};
+    const double a2[2] = {((double)t2[0] - (double)t0[0]) * tex->width,
+                          ((double)t2[1] - (double)t0[1]) * tex->height};
+    const double t_a = fabs(a1[0] * a2[1] - a2[0] * a1[1]);
+    const double d[3] = {dir[0], dir[1], dir[2]};
+    const double dir_len = sqrt(dot3d(d, d));
+    double cosine = fabs((double)ng[0] * d[0] + (double)ng[1] * d[1] + (double)ng[2] * d[2]) /
                     dir_len;
     if (!(cosine >= LOD_MIN_COSINE))
         cosine = LOD_MIN_COSINE;
-    return (float)(0.5 * log2(t_a / p_a) + log2((double)width / cosine));
+    if (!(p_a > 0.0) || !(t_a > 0.0) || !(dir_len > 0.0) || !isfinite(nn2))
+        return (float)(0.5 * log2(t_a / p_a) + log2((double)width / cosine));
+    /* The footprint's axes: e1 along the ray's projection into the plane
+     * (any in-plane direction when the ray meets the plane head-on). */
+    double n[3], along[3], across[3];
+    for (int k = 0; k < 3; k++)
+        n[k] = nn[k] / p_a;
+    const double dn = dot3d(d, n) / dir_len;
+    for (int k = 0; k < 3; k++)
+        along[k] = d[k] / dir_len - dn * n[k];
+    double along_len = sqrt(dot3d(along, along));
+    if (!(along_len > 1e-9)) {
+        for (int k = 0; k < 3; k++)
+            along[k] = w1[k];
+        along_len = sqrt(dot3d(along, along));
+    }
+    for (int k = 0; k < 3; k++)
+        along[k] /= along_len;
+    cross3d(n, along, across);
+    const double major = texel_length(along, w1, w2, nn, nn2, a1, a2) * (double)width / cosine;
+    const double minor = texel_length(across, w1, w2, nn, nn2, a1, a2) * (double)width;
+    return (float)log2(fmax(major, minor));
 }
 
 /*
