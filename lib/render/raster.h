@@ -19,6 +19,7 @@
 #ifndef RT_RENDER_RASTER_H
 #define RT_RENDER_RASTER_H
 
+#include <math.h>
 #include <stddef.h>
 
 #include "render/visibility.h"
@@ -80,6 +81,19 @@ void raster_vertex(const struct raster_target *target, const struct scene_lines 
 
 void raster_points(const struct raster_target *target, const struct scene_lines *lines,
                    const double object_to_eye[16]);
+
+/* Sub-pixel positions per pixel that window coordinates are snapped to
+ * before points are placed: GL leaves the precision to the implementation
+ * (OpenGL 2.1 sec. 3.3.1 computes in window coordinates of finite
+ * precision); Mesa's rasterisers, which the OSMesa oracle runs, use 8
+ * fractional bits. */
+#define RASTER_SUBPIXEL_STEPS 256.0
+
+/* x rounded to the nearest sub-pixel position. */
+static inline double raster_snap(double x)
+{
+    return floor(x * RASTER_SUBPIXEL_STEPS + 0.5) / RASTER_SUBPIXEL_STEPS;
+}
 
 /* Width or size in whole pixels: rounded, at least 1, at most max. */
 long raster_pixels(float value, float current, float max);
