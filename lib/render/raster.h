@@ -61,6 +61,21 @@ double raster_window_depth(const double projection[16], const float org[3], cons
  */
 void raster_depth_prepare(double *depth, int width, int height);
 
+/*
+ * GL's polygon offset on the primary hits' window depths, in place, before
+ * raster_depth_prepare: a pixel whose surface was drawn under
+ * RT_POLYGON_OFFSET_FILL (state[i]->offset_fill) moves back by
+ * m * factor + r * units (OpenGL 1.5 sec. 3.5.5), r being
+ * RASTER_DEPTH_EPSILON and m the surface's depth slope max(|dz/dx|,
+ * |dz/dy|), which GL computes from the polygon and we take from the
+ * neighbouring pixels of the same instance (per axis, the smaller
+ * one-sided difference, which is the surface's own at a silhouette).
+ * Lines and points are tested against the result, so a wireframe drawn
+ * over its offset fill shows whole, as in GL's hidden-line drawing.
+ */
+void raster_depth_offset(double *depth, const struct scene_raster *const *state, int width,
+                         int height);
+
 /* Rasterises the segments and points of `lines`, whose vertices are
  * mapped to eye space by object_to_eye. */
 void raster_lines(const struct raster_target *target, const struct scene_lines *lines,
