@@ -258,6 +258,9 @@ static void polygon_modes(void)
 {
     tu_section("rtPolygonMode: outlines with GL's edges, vertices as points");
     window_camera();
+    /* Instancing the objects above executed their rtLineWidth (as
+     * glCallList does): back to width 1. */
+    rtLineWidth(1.0f);
     outline_quad(RT_LINE);
     render_object();
     /* The boundary, not the diagonal (2.5, 2.5)-(12.5, 12.5). */
@@ -362,9 +365,11 @@ static void strips_loops_arrays(void)
     rtShadeModel(RT_SMOOTH);
     render_object();
     CHECK(px(3, 8)[2] == 1.0f && px(3, 8)[0] == 0.0f);
-    /* rtLineWidth inside an object is recorded, not executed; an object
-     * without one takes the width current at rtRenderFrame. */
+    /* rtLineWidth inside an object is recorded, not executed (it is at
+     * rtInstantiateObject, as glCallList executes glLineWidth); an object
+     * without one takes the width current at rtInstantiateObject. */
     static const float h[4] = {2.5f, 8.5f, 12.5f, 8.5f};
+    rtLineWidth(1.0f);
     segment_object(RT_LINES, h, 2, 3.0f);
     float w = 0.0f;
     rtGetFloatv(RT_LINE_WIDTH, &w);

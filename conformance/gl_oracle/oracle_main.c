@@ -52,6 +52,7 @@ static const struct {
     {"lines/points_sizes", 1, 0.0},        {"lines/wireframe_over_fill", 0, 99.5},
     {"lines/polygon_mode_line", 1, 0.0},   {"lines/polygon_mode_point", 1, 0.0},
     {"lines/vertex_arrays", 1, 0.0},       {"clip/lines_and_points", 1, 0.0},
+    {"lines/points_on_pixel_edges", 1, 0.0}, {"lines/widths_immediate", 1, 0.0},
 };
 
 static void limits_of(const char *label, int *sparse, double *min_match)

@@ -874,11 +874,14 @@ static inline void rtglc_RasterPos4sv(const GLshort *v) { rtRasterPos4i(v[0], v[
 #define glBitmap RTGLC_PENDING(glBitmap, "glBitmap: needs bitmap text (rtRasterPos*, rtWindowPos*, rtBitmap), not in this Tracelist (docs/glcompat.md)")
 #endif
 
+/* The alpha test (docs/alpha_test.md): GL's signature, glAlphaFunc(GLenum,
+ * GLclampf). */
+#define glAlphaFunc rtAlphaFunc
+
 /* ---- GL functions Tracelist does not have ----------------------------- */
 #define glClearIndex RTGLC_ABSENT(glClearIndex, "glClearIndex: colour-index mode (docs/glcompat.md)")
 #define glIndexMask RTGLC_ABSENT(glIndexMask, "glIndexMask: colour-index mode (docs/glcompat.md)")
 #define glColorMask RTGLC_ABSENT(glColorMask, "glColorMask: no per-channel write mask (docs/glcompat.md)")
-#define glAlphaFunc RTGLC_ABSENT(glAlphaFunc, "glAlphaFunc: no alpha test (docs/glcompat.md)")
 #define glLogicOp RTGLC_ABSENT(glLogicOp, "glLogicOp: no logic ops (docs/glcompat.md)")
 #define glLineStipple RTGLC_ABSENT(glLineStipple, "glLineStipple: no stipple patterns (docs/glcompat.md)")
 #define glPolygonStipple RTGLC_ABSENT(glPolygonStipple, "glPolygonStipple: no stipple patterns (docs/glcompat.md)")

@@ -115,6 +115,14 @@ static const struct scene_raster *hit_raster(const struct shade_context *sc,
 void blend_trace_primary(const struct shade_context *sc, const float org[3], const float dir[3],
                          float tmax, struct shade_cone cone, float rgba[4], float *t_first)
 {
+    blend_trace_primary_state(sc, org, dir, tmax, cone, rgba, t_first, NULL);
+}
+
+void blend_trace_primary_state(const struct shade_context *sc, const float org[3],
+                               const float dir[3], float tmax, struct shade_cone cone,
+                               float rgba[4], float *t_first,
+                               const struct scene_raster **first_state)
+{
     float layers[BLEND_MAX_LAYERS][4];
     /* Each layer's blend state: GL blends a fragment by the state current
      * when its primitive was drawn; NULL or blend off: opaque. */
@@ -124,6 +132,8 @@ void blend_trace_primary(const struct shade_context *sc, const float org[3], con
     const int clipping = sc->clipping;
     const int see_through = sc->see_through;
     *t_first = INFINITY;
+    if (first_state)
+        *first_state = NULL;
     for (;;) {
         struct trace_scene_hit hit;
         /* Faces RT_CULL_FACE removes are passed as GL does not draw them. */
@@ -148,6 +158,8 @@ void blend_trace_primary(const struct shade_context *sc, const float org[3], con
         if (!r || !scene_raster_see_through(r)) {
             if (n == 0) {
                 *t_first = hit.t;
+                if (first_state)
+                    *first_state = hit_raster(sc, &hit);
                 memcpy(rgba, layers[0], 4 * sizeof(float));
                 return;
             }
@@ -164,8 +176,11 @@ void blend_trace_primary(const struct shade_context *sc, const float org[3], con
          * on behind it, a cutout. */
         if (r->alpha_test && !scene_alpha_passes(r->alpha_func, clamp01(layers[n][3]), r->alpha_ref))
             continue;
-        if (n == 0)
+        if (n == 0) {
             *t_first = hit.t;
+            if (first_state)
+                *first_state = r;
+        }
         layer_state[n] = r->blend ? r : NULL;
         n++;
         if (!r->blend || n == BLEND_MAX_LAYERS ||

@@ -38,4 +38,12 @@ int blend_needs_destination(unsigned src_factor, unsigned dst_factor, const floa
 void blend_trace_primary(const struct shade_context *sc, const float org[3], const float dir[3],
                          float tmax, struct shade_cone cone, float rgba[4], float *t_first);
 
+/* The same, also giving the raster state (scene/raster_state.h) of the
+ * nearest kept hit's instance in *first_state (NULL when none): its
+ * polygon offset applies to the depth lines are tested against. */
+void blend_trace_primary_state(const struct shade_context *sc, const float org[3],
+                               const float dir[3], float tmax, struct shade_cone cone,
+                               float rgba[4], float *t_first,
+                               const struct scene_raster **first_state);
+
 #endif

@@ -19,6 +19,7 @@
 #ifndef RT_RENDER_RASTER_H
 #define RT_RENDER_RASTER_H
 
+#include <math.h>
 #include <stddef.h>
 
 #include "render/visibility.h"
@@ -60,6 +61,21 @@ double raster_window_depth(const double projection[16], const float org[3], cons
  */
 void raster_depth_prepare(double *depth, int width, int height);
 
+/*
+ * GL's polygon offset on the primary hits' window depths, in place, before
+ * raster_depth_prepare: a pixel whose surface was drawn under
+ * RT_POLYGON_OFFSET_FILL (state[i]->offset_fill) moves back by
+ * m * factor + r * units (OpenGL 1.5 sec. 3.5.5), r being
+ * RASTER_DEPTH_EPSILON and m the surface's depth slope max(|dz/dx|,
+ * |dz/dy|), which GL computes from the polygon and we take from the
+ * neighbouring pixels of the same instance (per axis, the smaller
+ * one-sided difference, which is the surface's own at a silhouette).
+ * Lines and points are tested against the result, so a wireframe drawn
+ * over its offset fill shows whole, as in GL's hidden-line drawing.
+ */
+void raster_depth_offset(double *depth, const struct scene_raster *const *state, int width,
+                         int height);
+
 /* Rasterises the segments and points of `lines`, whose vertices are
  * mapped to eye space by object_to_eye. */
 void raster_lines(const struct raster_target *target, const struct scene_lines *lines,
@@ -80,6 +96,19 @@ void raster_vertex(const struct raster_target *target, const struct scene_lines 
 
 void raster_points(const struct raster_target *target, const struct scene_lines *lines,
                    const double object_to_eye[16]);
+
+/* Sub-pixel positions per pixel that window coordinates are snapped to
+ * before points are placed: GL leaves the precision to the implementation
+ * (OpenGL 2.1 sec. 3.3.1 computes in window coordinates of finite
+ * precision); Mesa's rasterisers, which the OSMesa oracle runs, use 8
+ * fractional bits. */
+#define RASTER_SUBPIXEL_STEPS 256.0
+
+/* x rounded to the nearest sub-pixel position. */
+static inline double raster_snap(double x)
+{
+    return floor(x * RASTER_SUBPIXEL_STEPS + 0.5) / RASTER_SUBPIXEL_STEPS;
+}
 
 /* Width or size in whole pixels: rounded, at least 1, at most max. */
 long raster_pixels(float value, float current, float max);

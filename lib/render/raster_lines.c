@@ -8,6 +8,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "base/alloc.h"
 #include "base/mat4.h"
 #include "render/blend.h"
 
@@ -34,6 +35,56 @@ void raster_depth_prepare(double *depth, int width, int height)
     for (size_t i = 0; i < n; i++)
         if (depth[i] < 1.0)
             depth[i] += RASTER_DEPTH_EPSILON;
+}
+
+/* |d(i) - d(j)| when pixel j shows the same instance's surface as pixel i
+ * (same state block) and is covered; -1 when it cannot tell. */
+static double step(const double *depth, const struct scene_raster *const *state, size_t i,
+                   size_t j)
+{
+    if (state[j] != state[i] || !(depth[j] < 1.0))
+        return -1.0;
+    return fabs(depth[j] - depth[i]);
+}
+
+/* The slope along one axis: the smaller of the two one-sided differences
+ * that exist (at a silhouette, the one on the surface's side). */
+static double axis_slope(double a, double b)
+{
+    if (a < 0.0)
+        return b < 0.0 ? 0.0 : b;
+    return b < 0.0 ? a : fmin(a, b);
+}
+
+void raster_depth_offset(double *depth, const struct scene_raster *const *state, int width,
+                         int height)
+{
+    size_t n = (size_t)width * (size_t)height;
+    double *d = rt_malloc((n ? n : 1) * sizeof(*d));
+    if (d)
+        memcpy(d, depth, n * sizeof(*d));
+    for (int y = 0; y < height; y++)
+        for (int x = 0; x < width; x++) {
+            size_t i = (size_t)y * (size_t)width + (size_t)x;
+            const struct scene_raster *r = state[i];
+            if (!r || !r->offset_fill || !(depth[i] < 1.0))
+                continue;
+            double m = 0.0;
+            if (d) {
+                double sx = axis_slope(x > 0 ? step(d, state, i, i - 1) : -1.0,
+                                       x + 1 < width ? step(d, state, i, i + 1) : -1.0);
+                double sy = axis_slope(y > 0 ? step(d, state, i, i - (size_t)width) : -1.0,
+                                       y + 1 < height ? step(d, state, i, i + (size_t)width)
+                                                      : -1.0);
+                m = fmax(sx, sy);
+            }
+            /* GL's o = m * factor + r * units (OpenGL 1.5 sec. 3.5.5), r
+             * the depth buffer's resolution; clamped to GL's depth range. */
+            double o = m * (double)r->offset_factor + RASTER_DEPTH_EPSILON * (double)r->offset_units;
+            double z = depth[i] + o;
+            depth[i] = z < 0.0 ? 0.0 : z > 1.0 ? 1.0 : z;
+        }
+    rt_free(d);
 }
 
 void raster_fragment(const struct raster_target *target, long x, long y, double z,

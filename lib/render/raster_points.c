@@ -24,12 +24,15 @@ void raster_points(const struct raster_target *target, const struct scene_lines 
         double win[3];
         raster_to_window(target, clip, win);
         long size = raster_pixels(pt->size, target->raster->point_size, RENDER_MAX_POINT_SIZE);
-        /* Odd sizes centre on the pixel holding the point, even ones on the
-         * pixel corner nearest to it. */
-        long x0 = size % 2 ? (long)floor(win[0]) - (size - 1) / 2
-                           : (long)floor(win[0] + 0.5) - size / 2;
-        long y0 = size % 2 ? (long)floor(win[1]) - (size - 1) / 2
-                           : (long)floor(win[1] + 0.5) - size / 2;
+        /* GL's rule (OpenGL 2.1 sec. 3.3.1): odd sizes centre on the pixel
+         * holding the point, even ones on the pixel corner nearest to it;
+         * decided on the window position snapped to the sub-pixel grid
+         * first, as GL implementations rasterise (RASTER_SUBPIXEL_STEPS): a
+         * point projecting a rounding error left of a pixel edge is on
+         * the edge, not in the pixel to its left. */
+        const double xs = raster_snap(win[0]), ys = raster_snap(win[1]);
+        long x0 = size % 2 ? (long)floor(xs) - (size - 1) / 2 : (long)floor(xs + 0.5) - size / 2;
+        long y0 = size % 2 ? (long)floor(ys) - (size - 1) / 2 : (long)floor(ys + 0.5) - size / 2;
         const float *color = &lines->colors[4 * pt->v];
         for (long y = y0; y < y0 + size; y++)
             for (long x = x0; x < x0 + size; x++)

@@ -187,6 +187,15 @@ static int frame_has_see_through(const struct scene_frame *frame)
     return 0;
 }
 
+/* 1 when some instance was drawn with RT_POLYGON_OFFSET_FILL. */
+static int frame_has_offset(const struct scene_frame *frame)
+{
+    for (uint32_t i = 0; i < frame->committed.count; i++)
+        if (frame->committed.items[i].appearance.raster.offset_fill)
+            return 1;
+    return 0;
+}
+
 int render_pass_begin(struct render_pass *pass, const struct render_job *job, int fb_width,
                       int fb_height)
 {
@@ -212,6 +221,16 @@ int render_pass_begin(struct render_pass *pass, const struct render_job *job, in
         }
         for (size_t i = 0; i < pixels; i++)
             pass->depth[i] = 1.0;
+        if (frame_has_offset(job->frame)) {
+            pass->depth_state = rt_calloc(pixels ? pixels : 1, sizeof(*pass->depth_state));
+            if (!pass->depth_state) {
+                rt_free(pass->depth);
+                pass->depth = NULL;
+                rt_free(fb);
+                rt_free(pass->counters);
+                return -1;
+            }
+        }
     }
     pass->fb = fb;
     pass->fb_width = fb_width;
@@ -248,10 +267,14 @@ void render_tile(struct render_pass *pass, uint32_t tile, int worker)
                 continue;
             }
             float t_first;
-            blend_trace_primary(&sc, org, dir, tmax, cone, px, &t_first);
+            const size_t i = (size_t)(vp[1] + y) * pass->fb_width + vp[0] + x;
+            if (pass->depth_state)
+                blend_trace_primary_state(&sc, org, dir, tmax, cone, px, &t_first,
+                                          &pass->depth_state[i]);
+            else
+                blend_trace_primary(&sc, org, dir, tmax, cone, px, &t_first);
             if (pass->depth)
-                pass->depth[(size_t)(vp[1] + y) * pass->fb_width + vp[0] + x] =
-                    raster_window_depth(st->projection, org, dir, t_first);
+                pass->depth[i] = raster_window_depth(st->projection, org, dir, t_first);
         }
 }
 
@@ -259,6 +282,8 @@ void render_pass_raster(struct render_pass *pass)
 {
     if (!pass->depth || !pass->projectable)
         return;
+    if (pass->depth_state)
+        raster_depth_offset(pass->depth, pass->depth_state, pass->fb_width, pass->fb_height);
     raster_depth_prepare(pass->depth, pass->fb_width, pass->fb_height);
     const struct render_state *st = pass->job->state;
     struct raster_target target = {pass->fb, pass->depth, pass->fb_width, pass->fb_height,
@@ -279,6 +304,8 @@ int render_pass_end(struct render_pass *pass, struct render_framebuffer *fb,
     shared_finish(pass, stats);
     rt_free(pass->depth);
     pass->depth = NULL;
+    rt_free(pass->depth_state);
+    pass->depth_state = NULL;
     if (failed) {
         rt_free(pass->fb);
         return -1;

@@ -142,6 +142,10 @@ struct render_pass {
      * when the frame has lines or points to rasterise (raster.h); else
      * NULL. */
     double *depth;
+    /* With depth, when some instance has RT_POLYGON_OFFSET_FILL: the
+     * raster state of each pixel's primary hit (NULL for none), whose
+     * offset raster_depth_offset applies; else NULL. */
+    const struct scene_raster **depth_state;
     /* Queries. */
     int count;
     const RTray *rays;

@@ -19,7 +19,6 @@
 #define RT_SCENE_RASTER_STATE_H
 
 #include <stdint.h>
-#include <string.h>
 
 struct scene_raster {
     uint8_t blend;          /* RT_BLEND enabled */
