@@ -28,6 +28,10 @@ int rt_block_start(struct rt_context *ctx, RTenum mode)
         &ctx->scene.frame, ctx->modelview.m[ctx->modelview.depth - 1], &clip, &gl);
     if (!ctx->target)
         return -1;
+    /* The state calls mark only the list recording's material stale
+     * (ctx->recording.material_index): a block of the open immediate
+     * segment re-interns the material current now. */
+    ctx->target->material_index = -1;
     rt_frame_described(ctx);
     if (ctx->normal_given)
         ctx->target->mesh.has_normals = 1;
