@@ -368,7 +368,24 @@ static void lists_tex_env_render(void)
     rtInstantiateObject(RIGHT);
     tu_render_float(W, H, px);
     CHECK_RGB(pixel(3, 1), 1, 1, 1);
+    /* A list that binds its texture and leaves RT_TEXTURE_2D to the caller
+     * (compiled with it disabled): textured exactly when called with it
+     * enabled. */
     rtDisable(RT_TEXTURE_2D);
+    rtNewObject(RIGHT);
+    rtBindTexture(RT_TEXTURE_2D, tex);
+    square(0, -5, 1);
+    rtEndObject();
+    rtEnable(RT_TEXTURE_2D);
+    rtBeginFrame();
+    rtInstantiateObject(RIGHT);
+    tu_render_float(W, H, px);
+    CHECK_RGB(pixel(3, 1), 0, 1, 0);
+    rtDisable(RT_TEXTURE_2D);
+    rtBeginFrame();
+    rtInstantiateObject(RIGHT);
+    tu_render_float(W, H, px);
+    CHECK_RGB(pixel(3, 1), 1, 1, 1);
     rtDeleteTextures(1, &tex);
 
     /* One triangle over the view, red, green and blue at its corners;

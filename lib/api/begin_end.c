@@ -13,6 +13,14 @@
 
 int rt_block_start(struct rt_context *ctx, RTenum mode)
 {
+    /* The texture state as the material records it for inheritance
+     * (scene_material.texture_bound); it cannot change inside a block. */
+    if (ctx->material.texture_bound != ctx->texture_binding ||
+        ctx->material.texture_enabled != (uint32_t)ctx->texture_2d) {
+        ctx->material.texture_bound = ctx->texture_binding;
+        ctx->material.texture_enabled = (uint32_t)ctx->texture_2d;
+        ctx->recording.material_index = -1;
+    }
     if (ctx->recording.active) {
         /* A display list: relative to the list's own matrix (list.c). */
         ctx->target = &ctx->recording;

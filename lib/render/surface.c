@@ -183,8 +183,11 @@ void surface_resolve_material(const struct scene_appearance *call, struct scene_
         m->color_material_face = c->color_material_face;
         m->color_material_mode = c->color_material_mode;
     }
-    if (k & SCENE_MATERIAL_TEXTURE)
-        m->texture = c->texture;
+    if (k & (SCENE_MATERIAL_TEXTURE | SCENE_MATERIAL_TEXTURE_ENABLE)) {
+        uint32_t bound = (k & SCENE_MATERIAL_TEXTURE) ? c->texture_bound : m->texture_bound;
+        uint32_t on = (k & SCENE_MATERIAL_TEXTURE_ENABLE) ? c->texture_enabled : m->texture_enabled;
+        m->texture = on ? bound : 0;
+    }
     if (k & SCENE_MATERIAL_NORMALIZE)
         m->normalize = c->normalize;
     m->inherit = 0;
