@@ -195,6 +195,31 @@ static void two_side_between_objects(void)
     CHECK_NO_ERR();
 }
 
+static void color_material_at_call(void)
+{
+    tu_section("rtColorMaterial: the mode at the call for a list that sets none");
+    static const float zero[4] = {0, 0, 0, 1};
+    reset();
+    rtEnable(RT_LIGHTING);
+    rtDisable(RT_LIGHT0); /* unlit but for emission and the global ambient (0) */
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_AMBIENT, zero);
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_EMISSION, zero);
+    rtEnable(RT_COLOR_MATERIAL);
+    rtColor3f(1, 0, 0);
+    two_objects(1);
+    rtBeginFrame();
+    rtInstantiateObject(LEFT); /* red ambient and diffuse: black */
+    rtColorMaterial(RT_FRONT_AND_BACK, RT_EMISSION);
+    rtInstantiateObject(RIGHT); /* red emission */
+    tu_render_float(W, H, px);
+    CHECK_RGB(pixel(0, 1), 0, 0, 0);
+    CHECK_RGB(pixel(3, 1), 1, 0, 0);
+    rtColorMaterial(RT_FRONT_AND_BACK, RT_AMBIENT_AND_DIFFUSE);
+    rtDisable(RT_COLOR_MATERIAL);
+    rtEnable(RT_LIGHT0);
+    CHECK_NO_ERR();
+}
+
 static RTint get_int(RTenum pname)
 {
     RTint v[4] = {0, 0, 0, 0};
@@ -433,6 +458,7 @@ int main(void)
     fog_between_objects();
     cull_between_objects();
     two_side_between_objects();
+    color_material_at_call();
     lists_compile();
     lists_fog_render();
     lists_tex_env_render();
