@@ -13,6 +13,14 @@
 
 int rt_block_start(struct rt_context *ctx, RTenum mode)
 {
+    /* The texture state as the material records it for inheritance
+     * (scene_material.texture_bound); it cannot change inside a block. */
+    if (ctx->material.texture_bound != ctx->texture_binding ||
+        ctx->material.texture_enabled != (uint32_t)ctx->texture_2d) {
+        ctx->material.texture_bound = ctx->texture_binding;
+        ctx->material.texture_enabled = (uint32_t)ctx->texture_2d;
+        ctx->recording.material_index = -1;
+    }
     if (ctx->recording.active) {
         /* A display list: relative to the list's own matrix (list.c). */
         ctx->target = &ctx->recording;
@@ -34,6 +42,10 @@ int rt_block_start(struct rt_context *ctx, RTenum mode)
         &ctx->scene.frame, ctx->modelview.m[ctx->modelview.depth - 1], &clip, &gl, &raster);
     if (!ctx->target)
         return -1;
+    /* The state calls mark only the list recording's material stale
+     * (ctx->recording.material_index): a block of the open immediate
+     * segment re-interns the material current now. */
+    ctx->target->material_index = -1;
     rt_frame_described(ctx);
     if (ctx->normal_given)
         ctx->target->mesh.has_normals = 1;

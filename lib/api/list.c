@@ -120,6 +120,8 @@ static void appearance_now(const struct rt_context *ctx, struct scene_appearance
 {
     a->material = ctx->material;
     a->material.texture = ctx->texture_2d ? ctx->texture_binding : 0;
+    a->material.texture_bound = ctx->texture_binding;
+    a->material.texture_enabled = (uint32_t)ctx->texture_2d;
     memcpy(a->color, ctx->current_color, sizeof(a->color));
     a->color_material = ctx->color_material;
     rt_clip_now(ctx, &a->clip);
@@ -238,7 +240,7 @@ static uint32_t state_bit(enum list_state_call what, RTenum b)
         case RT_CULL_FACE:
             return SCENE_MATERIAL_CULL_ENABLE;
         case RT_TEXTURE_2D:
-            return SCENE_MATERIAL_TEXTURE;
+            return SCENE_MATERIAL_TEXTURE_ENABLE;
         case RT_NORMALIZE:
         case RT_RESCALE_NORMAL:
             return SCENE_MATERIAL_NORMALIZE;

@@ -12,7 +12,7 @@
 
 /*
  * The closest hit of a camera ray along dir (0 <= t < tmax) that GL would
- * draw: triangles whose face RT_CULL_FACE removed when they were recorded
+ * draw: triangles whose face RT_CULL_FACE removed when they were drawn
  * are passed through, as GL does not rasterise them.  Only camera rays
  * cull; shadow, reflected and refracted rays and rtTraceRays see every
  * triangle.  The search covers (tmin, tmax]; returns 0 on a miss.

@@ -226,21 +226,31 @@ void surface_resolve_material(const struct scene_appearance *call, struct scene_
     }
     if (k & SCENE_MATERIAL_FRONT_FACE)
         m->front_cw = c->front_cw;
-    if (k & SCENE_MATERIAL_TEX_ENV) {
-        m->tex_env_mode = c->tex_env_mode;
-        memcpy(m->tex_env_color, c->tex_env_color, sizeof(m->tex_env_color));
-    }
-    if (k & SCENE_MATERIAL_TEXGEN) {
-        memcpy(m->texgen_mode, c->texgen_mode, sizeof(m->texgen_mode));
-        memcpy(m->texgen_object_plane, c->texgen_object_plane, sizeof(m->texgen_object_plane));
-        memcpy(m->texgen_eye_plane, c->texgen_eye_plane, sizeof(m->texgen_eye_plane));
-    }
     if (k & SCENE_MATERIAL_COLOR_MATERIAL_MODE) {
         m->color_material_face = c->color_material_face;
         m->color_material_mode = c->color_material_mode;
     }
-    if (k & SCENE_MATERIAL_TEXTURE)
-        m->texture = c->texture;
+    if (k & (SCENE_MATERIAL_TEXTURE | SCENE_MATERIAL_TEXTURE_ENABLE)) {
+        uint32_t bound = (k & SCENE_MATERIAL_TEXTURE) ? c->texture_bound : m->texture_bound;
+        uint32_t on = (k & SCENE_MATERIAL_TEXTURE_ENABLE) ? c->texture_enabled : m->texture_enabled;
+        m->texture = on ? bound : 0;
+    }
+    /* The environment and generation matter to textured triangles only:
+     * an untextured hit copies nothing more. */
+    if (m->texture) {
+        if (k & SCENE_MATERIAL_TEX_ENV) {
+            m->tex_env_mode = c->tex_env_mode;
+            memcpy(m->tex_env_color, c->tex_env_color, sizeof(m->tex_env_color));
+        }
+        /* Planes are zero while generation is off (rt_sync_fixed_function):
+         * nothing to copy when neither side generates, the common case. */
+        if ((k & SCENE_MATERIAL_TEXGEN) &&
+            (c->texgen_mode[0] | c->texgen_mode[1] | m->texgen_mode[0] | m->texgen_mode[1])) {
+            memcpy(m->texgen_mode, c->texgen_mode, sizeof(m->texgen_mode));
+            memcpy(m->texgen_object_plane, c->texgen_object_plane, sizeof(m->texgen_object_plane));
+            memcpy(m->texgen_eye_plane, c->texgen_eye_plane, sizeof(m->texgen_eye_plane));
+        }
+    }
     if (k & SCENE_MATERIAL_NORMALIZE)
         m->normalize = c->normalize;
     m->inherit = 0;

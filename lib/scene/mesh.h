@@ -69,6 +69,13 @@ struct scene_material {
      * list's geometry can take the enable and the mode from different
      * places (SCENE_MATERIAL_CULL_ENABLE, SCENE_MATERIAL_CULL_MODE). */
     uint32_t cull_mode;
+    /* The 2D texture bound and the RT_TEXTURE_2D enable, each whatever the
+     * other (texture is the two together), so that a list's geometry can
+     * take them from different places (SCENE_MATERIAL_TEXTURE,
+     * SCENE_MATERIAL_TEXTURE_ENABLE): a list that binds its texture, called
+     * with RT_TEXTURE_2D enabled, as GL. */
+    uint32_t texture_bound;
+    uint32_t texture_enabled;
 };
 
 #define SCENE_MATERIAL_AMBIENT 1u
@@ -87,8 +94,8 @@ struct scene_material {
 /* The rest of the per-primitive state a triangle records in its material,
  * inherited the same way (surface_resolve_material): the RT_CULL_FACE
  * enable, rtCullFace, rtFrontFace, rtTexEnv, rtTexGen and its enables,
- * rtColorMaterial's face and mode, the texture (rtBindTexture and the
- * RT_TEXTURE_2D enable) and RT_NORMALIZE / RT_RESCALE_NORMAL. */
+ * rtColorMaterial's face and mode, the texture bound (rtBindTexture), the
+ * RT_TEXTURE_2D enable and RT_NORMALIZE / RT_RESCALE_NORMAL. */
 #define SCENE_MATERIAL_CULL_ENABLE (1u << 14)
 #define SCENE_MATERIAL_CULL_MODE (1u << 15)
 #define SCENE_MATERIAL_FRONT_FACE (1u << 16)
@@ -97,7 +104,8 @@ struct scene_material {
 #define SCENE_MATERIAL_COLOR_MATERIAL_MODE (1u << 19)
 #define SCENE_MATERIAL_TEXTURE (1u << 20)
 #define SCENE_MATERIAL_NORMALIZE (1u << 21)
-#define SCENE_MATERIAL_ALL_STATE ((1u << 22) - 1u)
+#define SCENE_MATERIAL_TEXTURE_ENABLE (1u << 22)
+#define SCENE_MATERIAL_ALL_STATE ((1u << 23) - 1u)
 
 /* Which faces RT_CULL_FACE removes (scene_material.cull_face). */
 #define SCENE_CULL_NONE 0u
