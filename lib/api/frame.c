@@ -11,7 +11,9 @@
  * not rendered yet is rendered by rtFinish, rtFlush and rtReadPixels.  A
  * context in which rtClear was never called keeps rtFinish's meaning of
  * preparing the scene without rendering, and rtReadPixels reads the last
- * rtRenderFrame.
+ * rtRenderFrame.  rtReadPixels writes its rows as the pack state of
+ * rtPixelStorei lays them out (RT_PACK_ALIGNMENT 4 by default, which
+ * RGBA rows always meet).
  */
 #include <math.h>
 #include <string.h>
@@ -204,15 +206,27 @@ void rtReadPixels(RTint x, RTint y, RTsizei width, RTsizei height, RTenum format
                  x, y, width, height, pixels, fb->width, fb->height);
         return;
     }
+    /* Rows laid out as the pack state says (GL 1.5 sec. 4.3.2). */
+    size_t first, stride;
+    rt_pixel_layout(&ctx->pack, width, 4, type == RT_FLOAT ? (int)sizeof(float) : 1, &first,
+                    &stride);
     for (int row = 0; row < height; row++) {
         const float *src = &fb->rgba[4 * ((size_t)(y + row) * fb->width + x)];
         size_t n = 4 * (size_t)width;
-        size_t offset = (size_t)row * n;
+        unsigned char *dst = (unsigned char *)pixels + first + (size_t)row * stride;
         if (type == RT_FLOAT) {
-            memcpy((float *)pixels + offset, src, n * sizeof(float));
+            memcpy(dst, src, n * sizeof(float));
+            if (ctx->pack.swap_bytes)
+                for (size_t i = 0; i < n * sizeof(float); i += sizeof(float)) {
+                    unsigned char t = dst[i];
+                    dst[i] = dst[i + 3];
+                    dst[i + 3] = t;
+                    t = dst[i + 1];
+                    dst[i + 1] = dst[i + 2];
+                    dst[i + 2] = t;
+                }
             continue;
         }
-        unsigned char *dst = (unsigned char *)pixels + offset;
         for (size_t i = 0; i < n; i++) {
             float c = fminf(fmaxf(src[i], 0.0f), 1.0f);
             dst[i] = (unsigned char)lrintf(c * 255.0f);

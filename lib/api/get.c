@@ -257,6 +257,42 @@ static enum value_kind state_values(const struct rt_context *ctx, RTenum pname, 
     case RT_CURRENT_RASTER_POSITION_VALID:
         v[0] = ctx->raster_valid;
         return VALUE_INT;
+    case RT_ATTRIB_STACK_DEPTH: /* attrib.c */
+        v[0] = ctx->attrib_depth;
+        return VALUE_INT;
+    case RT_MAX_ATTRIB_STACK_DEPTH:
+        v[0] = API_MAX_ATTRIB_STACK_DEPTH;
+        return VALUE_INT;
+    case RT_CLIENT_ATTRIB_STACK_DEPTH:
+        v[0] = ctx->client_attrib_depth;
+        return VALUE_INT;
+    case RT_MAX_CLIENT_ATTRIB_STACK_DEPTH:
+        v[0] = API_MAX_CLIENT_ATTRIB_STACK_DEPTH;
+        return VALUE_INT;
+    case RT_UNPACK_SWAP_BYTES: /* pixel_store.c */
+    case RT_PACK_SWAP_BYTES:
+        v[0] = (pname == RT_PACK_SWAP_BYTES ? &ctx->pack : &ctx->unpack)->swap_bytes;
+        return VALUE_INT;
+    case RT_UNPACK_LSB_FIRST:
+    case RT_PACK_LSB_FIRST:
+        v[0] = (pname == RT_PACK_LSB_FIRST ? &ctx->pack : &ctx->unpack)->lsb_first;
+        return VALUE_INT;
+    case RT_UNPACK_ROW_LENGTH:
+    case RT_PACK_ROW_LENGTH:
+        v[0] = (pname == RT_PACK_ROW_LENGTH ? &ctx->pack : &ctx->unpack)->row_length;
+        return VALUE_INT;
+    case RT_UNPACK_SKIP_ROWS:
+    case RT_PACK_SKIP_ROWS:
+        v[0] = (pname == RT_PACK_SKIP_ROWS ? &ctx->pack : &ctx->unpack)->skip_rows;
+        return VALUE_INT;
+    case RT_UNPACK_SKIP_PIXELS:
+    case RT_PACK_SKIP_PIXELS:
+        v[0] = (pname == RT_PACK_SKIP_PIXELS ? &ctx->pack : &ctx->unpack)->skip_pixels;
+        return VALUE_INT;
+    case RT_UNPACK_ALIGNMENT:
+    case RT_PACK_ALIGNMENT:
+        v[0] = (pname == RT_PACK_ALIGNMENT ? &ctx->pack : &ctx->unpack)->alignment;
+        return VALUE_INT;
     default:
         *count = 0;
         return VALUE_NONE;

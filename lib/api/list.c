@@ -284,6 +284,12 @@ static void replay_state(const struct scene_list_op *op)
          * modelview current at the call, as glCallList executes it. */
         rtClipPlane(op->b, op->v);
         break;
+    case LIST_PUSH_ATTRIB:
+        rtPushAttrib(op->b);
+        break;
+    case LIST_POP_ATTRIB:
+        rtPopAttrib();
+        break;
     }
 }
 
@@ -369,6 +375,8 @@ void rtNewList(RTuint list, RTenum mode)
          * definition, and the calls in between are consumed as GL's. */
         rt_error(ctx, RT_OUT_OF_MEMORY, "rtNewList(%u): out of memory", list);
     save_state(ctx, &ctx->saved);
+    ctx->attrib_list_base = ctx->attrib_depth; /* attrib.c */
+    ctx->attrib_skipped = 0;
     ctx->list_mode = mode;
     ctx->exec_count = 0;
     capture_segment(ctx);
@@ -404,8 +412,10 @@ static void end_list(const char *caller)
         return;
     }
     rec->active = 0;
-    if (ctx->list_mode == RT_COMPILE)
+    if (ctx->list_mode == RT_COMPILE) {
         restore_state(ctx, &ctx->saved); /* GL_COMPILE executed nothing */
+        rt_attrib_list_end(ctx);
+    }
     uint32_t *map = NULL;
     struct scene_object *object = NULL;
     if (!rec->out_of_memory) {

@@ -18,6 +18,7 @@
 #include <string.h>
 
 #include "api/context.h"
+#include "base/alloc.h"
 
 /* Mesa (like SGI's GL before it) adds this to the raster position before
  * flooring it to the bitmap's first pixel, so that a position computed as
@@ -173,14 +174,41 @@ void rtBitmap(RTsizei width, RTsizei height, RTfloat xorig, RTfloat yorig, RTflo
     if (!ctx->raster_valid)
         return; /* GL: nothing drawn, the position does not move */
     if (bitmap && width > 0 && height > 0) {
-        /* GL's unpacking with the default pixel store: one bit a pixel,
-         * the most significant first, rows bottom to top, each row
-         * padded to a multiple of 4 bytes. */
-        const size_t stride = (((size_t)width + 7) / 8 + 3) / 4 * 4;
+        /* GL's unpacking under the pixel store (pixel_store.c): one bit a
+         * pixel, rows bottom to top, each row RT_UNPACK_ALIGNMENT-padded
+         * (4 by default), the most significant bit first unless
+         * RT_UNPACK_LSB_FIRST.  The overlay takes MSB-first rows starting
+         * at bit 0: other layouts are repacked into that. */
+        size_t first, stride;
+        rt_pixel_layout(&ctx->unpack, width, 1, 0, &first, &stride);
+        const unsigned char *rows = bitmap + first;
+        unsigned char *packed = NULL;
+        const size_t skip = (size_t)ctx->unpack.skip_pixels;
+        if (skip || ctx->unpack.lsb_first) {
+            const size_t out_stride = ((size_t)width + 7) / 8;
+            packed = rt_calloc((size_t)height, out_stride);
+            if (!packed) {
+                rt_error(ctx, RT_OUT_OF_MEMORY, "rtBitmap: out of memory");
+                return;
+            }
+            for (size_t j = 0; j < (size_t)height; j++)
+                for (size_t i = 0; i < (size_t)width; i++) {
+                    const size_t b = skip + i;
+                    const unsigned byte = rows[j * stride + b / 8];
+                    const unsigned bit = ctx->unpack.lsb_first ? (byte >> (b % 8)) & 1u
+                                                               : (byte >> (7 - b % 8)) & 1u;
+                    if (bit)
+                        packed[j * out_stride + i / 8] |= (unsigned char)(0x80u >> (i % 8));
+                }
+            rows = packed;
+            stride = out_stride;
+        }
         const int x = (int)floor((double)ctx->raster_pos[0] + RASTER_EPSILON - xorig);
         const int y = (int)floor((double)ctx->raster_pos[1] + RASTER_EPSILON - yorig);
-        if (render_overlay_add(&ctx->overlay, x, y, width, height, stride, bitmap,
-                               ctx->raster_color)) {
+        int failed = render_overlay_add(&ctx->overlay, x, y, width, height, stride, rows,
+                                        ctx->raster_color);
+        rt_free(packed);
+        if (failed) {
             rt_error(ctx, RT_OUT_OF_MEMORY, "rtBitmap: out of memory");
             return;
         }
