@@ -428,6 +428,14 @@ RTboolean rtIsEnabled(RTenum cap)
         return RT_FALSE;
     if (cap == RT_LIGHTING)
         return ctx->material.lighting ? RT_TRUE : RT_FALSE;
+    /* GL's glIsEnabled also answers for the client arrays (array.c). */
+    const struct client_array *array = cap == RT_VERTEX_ARRAY   ? &ctx->vertex_array
+                                       : cap == RT_NORMAL_ARRAY ? &ctx->normal_array
+                                       : cap == RT_COLOR_ARRAY  ? &ctx->color_array
+                                       : cap == RT_TEXTURE_COORD_ARRAY ? &ctx->texcoord_array
+                                                                       : NULL;
+    if (array)
+        return array->enabled ? RT_TRUE : RT_FALSE;
     int *flag = capability(ctx, cap);
     if (!flag) {
         char b1[RT_ENUM_STRING_SIZE];
