@@ -638,6 +638,10 @@ RTAPI void rtFlush(void);
 #define RT_CLIENT_ATTRIB_STACK_DEPTH 0x0BB1
 #define RT_MAX_ATTRIB_STACK_DEPTH 0x0D35
 #define RT_MAX_CLIENT_ATTRIB_STACK_DEPTH 0x0D3B
+/* The current vertex attributes, for rtGetFloatv (GL's values). */
+#define RT_CURRENT_COLOR 0x0B00
+#define RT_CURRENT_NORMAL 0x0B02
+#define RT_CURRENT_TEXTURE_COORDS 0x0B03
 RTAPI void rtPushAttrib(RTbitfield mask);
 RTAPI void rtPopAttrib(void);
 RTAPI void rtPushClientAttrib(RTbitfield mask);

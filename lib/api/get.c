@@ -257,6 +257,23 @@ static enum value_kind state_values(const struct rt_context *ctx, RTenum pname, 
     case RT_CURRENT_RASTER_POSITION_VALID:
         v[0] = ctx->raster_valid;
         return VALUE_INT;
+    case RT_CURRENT_COLOR:
+        for (int i = 0; i < 4; i++)
+            v[i] = ctx->current_color[i];
+        *count = 4;
+        return VALUE_FLOAT;
+    case RT_CURRENT_NORMAL:
+        for (int i = 0; i < 3; i++)
+            v[i] = ctx->current_normal[i];
+        *count = 3;
+        return VALUE_FLOAT;
+    case RT_CURRENT_TEXTURE_COORDS: /* s, t, r = 0, q = 1 (GL) */
+        v[0] = ctx->current_texcoord[0];
+        v[1] = ctx->current_texcoord[1];
+        v[2] = 0.0;
+        v[3] = 1.0;
+        *count = 4;
+        return VALUE_FLOAT;
     case RT_ATTRIB_STACK_DEPTH: /* attrib.c */
         v[0] = ctx->attrib_depth;
         return VALUE_INT;
