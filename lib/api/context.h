@@ -143,6 +143,7 @@ struct rt_context {
     RTenum list_mode;   /* RT_COMPILE or RT_COMPILE_AND_EXECUTE while recording */
     RTuint list_base;   /* rtListBase */
     int call_depth;     /* nesting of the lists being executed (GL's CallDepth) */
+    int recording_object; /* rtNewObject (not rtNewList): geometry only, no bare vertices */
     int replaying;      /* > 0: calls come from a list's replay, never recorded */
     struct list_saved_state saved;  /* RT_COMPILE: state rtEndList restores */
     struct list_exec *exec;         /* RT_COMPILE_AND_EXECUTE: segments to instance */
@@ -299,7 +300,8 @@ void rt_clip_now(const struct rt_context *ctx, struct scene_clip *clip);
 enum list_state_call {
     LIST_COLOR, LIST_NORMAL, LIST_TEXCOORD, LIST_MATERIAL, LIST_SHADE_MODEL, LIST_ENABLE,
     LIST_DISABLE, LIST_BIND_TEXTURE, LIST_LIGHT, LIST_LIGHT_MODEL, LIST_LIST_BASE,
-    LIST_CLIP_PLANE, LIST_PUSH_ATTRIB, LIST_POP_ATTRIB
+    LIST_CLIP_PLANE, LIST_PUSH_ATTRIB, LIST_POP_ATTRIB, LIST_CLEAR, LIST_RASTER_POS,
+    LIST_WINDOW_POS, LIST_BITMAP, LIST_BITMAP_DATA, LIST_VERTEX
 };
 int rt_list_compiling(const struct rt_context *ctx);
 int rt_list_matrix(struct rt_context *ctx, const char *caller, enum scene_list_op_kind kind,
@@ -329,6 +331,19 @@ void rt_render_if_described(struct rt_context *ctx);
  * excluding skip_pixels' bits (pixel_store.c). */
 void rt_pixel_layout(const struct pixel_store *ps, int width, int components, int size,
                      size_t *first, size_t *row_stride);
+/* Raster calls compiled into display lists (raster.c): rt_raster_record
+ * records rtRasterPos (window 0) or rtWindowPos (window 1) when a list is
+ * being compiled and returns 1 when the call must not take effect now;
+ * rt_bitmap_replay draws the bitmap recorded at ops[0] (LIST_BITMAP, its
+ * MSB-first rows in the LIST_BITMAP_DATA operations after it) and
+ * returns the number of operations it took. */
+int rt_raster_record(struct rt_context *ctx, const char *caller, int window, const double p[4]);
+uint32_t rt_bitmap_replay(struct rt_context *ctx, const struct scene_list_op *ops,
+                          uint32_t count);
+/* rtClear compiled into a display list (frame.c): 1 when the call must
+ * not take effect now (RT_COMPILE). */
+int rt_clear_record(struct rt_context *ctx, RTbitfield mask);
+
 /* rtEndList's clean-up of the attribute stack for an RT_COMPILE list
  * (attrib.c). */
 void rt_attrib_list_end(struct rt_context *ctx);

@@ -105,10 +105,25 @@ void rt_render_if_described(struct rt_context *ctx)
         render_frame_now(ctx);
 }
 
+int rt_clear_record(struct rt_context *ctx, RTbitfield mask)
+{
+    if (!rt_list_compiling(ctx))
+        return 0;
+    /* Recorded as GL records it, its mask checked when it runs. */
+    if (scene_list_state(&ctx->recording, LIST_CLEAR, mask, 0, NULL, 0)) {
+        ctx->recording.out_of_memory = 1;
+        rt_error(ctx, RT_OUT_OF_MEMORY, "rtClear: out of memory recording list %u",
+                 ctx->recording.name);
+    }
+    return ctx->list_mode == RT_COMPILE;
+}
+
 void rtClear(RTbitfield mask)
 {
     GET_CURRENT_CONTEXT(ctx);
-    if (!ctx || rt_check_outside_object(ctx, "rtClear"))
+    /* GL compiles glClear into display lists: it runs when the list is
+     * called (list.c), and starts the frame there. */
+    if (!ctx || rt_check_outside_begin(ctx, "rtClear") || rt_clear_record(ctx, mask))
         return;
     /* Mesa's glClear: any bit beyond the four buffers is INVALID_VALUE. */
     if (mask & ~(RTbitfield)(RT_COLOR_BUFFER_BIT | RT_DEPTH_BUFFER_BIT | RT_STENCIL_BUFFER_BIT |
