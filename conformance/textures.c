@@ -611,7 +611,7 @@ static void repeat_and_clamp(void)
 static void upload_formats(void)
 {
     const RTuint tex = 40;
-    tu_section("RT_RGB uploads: rows tightly packed");
+    tu_section("RT_RGB uploads: rows tightly packed under RT_UNPACK_ALIGNMENT 1");
     tu_ortho_camera();
     plain_material();
     rtBindTexture(RT_TEXTURE_2D, tex);
@@ -620,10 +620,13 @@ static void upload_formats(void)
     define_quad(QUAD, 0, 0, 1, 1);
     rtDisable(RT_TEXTURE_2D);
     {
-        /* 3x2, 9 bytes a row (GL's default 4-byte alignment would pad to 12). */
+        /* 3x2, 9 bytes a row (GL's default 4-byte alignment would pad to
+         * 12: conformance/pixel_store.c tests that default). */
         static const unsigned char rgb[18] = {255, 0,   0,   0,  255, 0,   0,   0,   255,
                                               51,  102, 153, 204, 255, 0,  0,   51,  102};
+        rtPixelStorei(RT_UNPACK_ALIGNMENT, 1);
         rtTexImage2D(RT_TEXTURE_2D, 0, RT_RGB, 3, 2, 0, RT_RGB, RT_UNSIGNED_BYTE, rgb);
+        rtPixelStorei(RT_UNPACK_ALIGNMENT, 4);
         CHECK_NO_ERR();
         render(QUAD);
         /* Column i samples texel floor(3 (i + 0.5) / 16): 2 -> 0, 8 -> 1,

@@ -518,8 +518,6 @@ static inline void rtglc_ClearDepth(GLclampd depth) { (void)depth; }
 static inline void rtglc_DepthFunc(GLenum func) { (void)func; }
 static inline void rtglc_DepthMask(GLboolean flag) { (void)flag; }
 static inline void rtglc_DepthRange(GLclampd zNear, GLclampd zFar) { (void)zNear; (void)zFar; }
-static inline void rtglc_PixelStoref(GLenum pname, GLfloat param) { (void)pname; (void)param; }
-static inline void rtglc_PixelStorei(GLenum pname, GLint param) { (void)pname; (void)param; }
 static inline void rtglc_ClearStencil(GLint s) { (void)s; }
 static inline void rtglc_PrioritizeTextures(GLsizei n, const GLuint *textures, const GLclampf *priorities) { (void)n; (void)textures; (void)priorities; }
 #ifdef RT_POLYGON_OFFSET_FILL
@@ -564,8 +562,8 @@ static inline void rtglc_PrioritizeTextures(GLsizei n, const GLuint *textures, c
 #else
 #define glDepthRange rtglc_DepthRange
 #endif
-#define glPixelStoref rtglc_PixelStoref
-#define glPixelStorei rtglc_PixelStorei
+#define glPixelStoref rtPixelStoref
+#define glPixelStorei rtPixelStorei
 #define glClearStencil rtglc_ClearStencil
 #define glPrioritizeTextures rtglc_PrioritizeTextures
 /* GL_EXT_compiled_vertex_array: locking the arrays is only a promise. */
@@ -887,10 +885,10 @@ static inline void rtglc_RasterPos4sv(const GLshort *v) { rtRasterPos4i(v[0], v[
 #define glPolygonStipple RTGLC_ABSENT(glPolygonStipple, "glPolygonStipple: no stipple patterns (docs/glcompat.md)")
 #define glGetPolygonStipple RTGLC_ABSENT(glGetPolygonStipple, "glGetPolygonStipple: no stipple patterns (docs/glcompat.md)")
 #define glScissor RTGLC_ABSENT(glScissor, "glScissor: no scissor rectangle (docs/glcompat.md)")
-#define glPushAttrib RTGLC_ABSENT(glPushAttrib, "glPushAttrib: no attribute stack (docs/glcompat.md)")
-#define glPopAttrib RTGLC_ABSENT(glPopAttrib, "glPopAttrib: no attribute stack (docs/glcompat.md)")
-#define glPushClientAttrib RTGLC_ABSENT(glPushClientAttrib, "glPushClientAttrib: no attribute stack (docs/glcompat.md)")
-#define glPopClientAttrib RTGLC_ABSENT(glPopClientAttrib, "glPopClientAttrib: no attribute stack (docs/glcompat.md)")
+#define glPushAttrib rtPushAttrib
+#define glPopAttrib rtPopAttrib
+#define glPushClientAttrib rtPushClientAttrib
+#define glPopClientAttrib rtPopClientAttrib
 #define glRenderMode RTGLC_ABSENT(glRenderMode, "glRenderMode: no selection or feedback mode (pick with rtTraceRays) (docs/glcompat.md)")
 #define glClearAccum RTGLC_ABSENT(glClearAccum, "glClearAccum: no accumulation buffer (docs/glcompat.md)")
 #define glAccum RTGLC_ABSENT(glAccum, "glAccum: no accumulation buffer (docs/glcompat.md)")
@@ -952,7 +950,7 @@ static inline void rtglc_RasterPos4sv(const GLshort *v) { rtRasterPos4i(v[0], v[
 #define glGetTexImage RTGLC_ABSENT(glGetTexImage, "glGetTexImage: state is not read back by this query (docs/glcompat.md)")
 #define glAreTexturesResident RTGLC_ABSENT(glAreTexturesResident, "glAreTexturesResident: 2D textures are loaded whole with glTexImage2D (docs/glcompat.md)")
 #define glTexSubImage1D RTGLC_ABSENT(glTexSubImage1D, "glTexSubImage1D: 2D textures are loaded whole with glTexImage2D (docs/glcompat.md)")
-#define glTexSubImage2D RTGLC_ABSENT(glTexSubImage2D, "glTexSubImage2D: 2D textures are loaded whole with glTexImage2D (docs/glcompat.md)")
+#define glTexSubImage2D rtTexSubImage2D
 #define glCopyTexImage1D RTGLC_ABSENT(glCopyTexImage1D, "glCopyTexImage1D: 2D textures are loaded whole with glTexImage2D (docs/glcompat.md)")
 #define glCopyTexImage2D RTGLC_ABSENT(glCopyTexImage2D, "glCopyTexImage2D: 2D textures are loaded whole with glTexImage2D (docs/glcompat.md)")
 #define glCopyTexSubImage1D RTGLC_ABSENT(glCopyTexSubImage1D, "glCopyTexSubImage1D: 2D textures are loaded whole with glTexImage2D (docs/glcompat.md)")

@@ -620,6 +620,60 @@ RTAPI void rtArrayElement(RTint i);
 RTAPI void rtClear(RTbitfield mask);
 RTAPI void rtFlush(void);
 
+/* ---- Attribute stacks and pixel storage (docs/attrib.md, docs/pixelstore.md) ---- */
+/* rtPushAttrib groups: GL's own bits (GL 1.5 table 6.5 ff.). */
+#define RT_CURRENT_BIT 0x00000001
+#define RT_POINT_BIT 0x00000002
+#define RT_LINE_BIT 0x00000004
+#define RT_POLYGON_BIT 0x00000008
+#define RT_POLYGON_STIPPLE_BIT 0x00000010
+#define RT_PIXEL_MODE_BIT 0x00000020
+#define RT_LIGHTING_BIT 0x00000040
+#define RT_FOG_BIT 0x00000080
+#define RT_VIEWPORT_BIT 0x00000800
+#define RT_TRANSFORM_BIT 0x00001000
+#define RT_ENABLE_BIT 0x00002000
+#define RT_HINT_BIT 0x00008000
+#define RT_EVAL_BIT 0x00010000
+#define RT_LIST_BIT 0x00020000
+#define RT_TEXTURE_BIT 0x00040000
+#define RT_SCISSOR_BIT 0x00080000
+#define RT_ALL_ATTRIB_BITS 0x000FFFFF
+/* rtPushClientAttrib groups. */
+#define RT_CLIENT_PIXEL_STORE_BIT 0x00000001
+#define RT_CLIENT_VERTEX_ARRAY_BIT 0x00000002
+#define RT_CLIENT_ALL_ATTRIB_BITS 0xFFFFFFFF
+#define RT_ATTRIB_STACK_DEPTH 0x0BB0
+#define RT_CLIENT_ATTRIB_STACK_DEPTH 0x0BB1
+#define RT_MAX_ATTRIB_STACK_DEPTH 0x0D35
+#define RT_MAX_CLIENT_ATTRIB_STACK_DEPTH 0x0D3B
+/* The current vertex attributes, for rtGetFloatv (GL's values). */
+#define RT_CURRENT_COLOR 0x0B00
+#define RT_CURRENT_NORMAL 0x0B02
+#define RT_CURRENT_TEXTURE_COORDS 0x0B03
+RTAPI void rtPushAttrib(RTbitfield mask);
+RTAPI void rtPopAttrib(void);
+RTAPI void rtPushClientAttrib(RTbitfield mask);
+RTAPI void rtPopClientAttrib(void);
+/* rtPixelStorei / rtPixelStoref parameters (GL's values). */
+#define RT_UNPACK_SWAP_BYTES 0x0CF0
+#define RT_UNPACK_LSB_FIRST 0x0CF1
+#define RT_UNPACK_ROW_LENGTH 0x0CF2
+#define RT_UNPACK_SKIP_ROWS 0x0CF3
+#define RT_UNPACK_SKIP_PIXELS 0x0CF4
+#define RT_UNPACK_ALIGNMENT 0x0CF5
+#define RT_PACK_SWAP_BYTES 0x0D00
+#define RT_PACK_LSB_FIRST 0x0D01
+#define RT_PACK_ROW_LENGTH 0x0D02
+#define RT_PACK_SKIP_ROWS 0x0D03
+#define RT_PACK_SKIP_PIXELS 0x0D04
+#define RT_PACK_ALIGNMENT 0x0D05
+RTAPI void rtPixelStorei(RTenum pname, RTint param);
+RTAPI void rtPixelStoref(RTenum pname, RTfloat param);
+RTAPI void rtTexSubImage2D(RTenum target, RTint level, RTint xoffset, RTint yoffset,
+                           RTsizei width, RTsizei height, RTenum format, RTenum type,
+                           const void *pixels);
+
 #ifdef __cplusplus
 }
 #endif

@@ -172,11 +172,27 @@ static void vertex(const char *caller, double x, double y, double z)
     GET_CURRENT_CONTEXT(ctx);
     if (!ctx)
         return;
+    double p[3] = {x, y, z};
     if (!ctx->block.active) {
-        rt_error(ctx, RT_INVALID_OPERATION, "%s: only allowed between rtBegin and rtEnd", caller);
+        /* A display list records a vertex outside its own rtBegin/rtEnd
+         * (list.c): it continues the primitive open where the list is
+         * called, as GL's.  Replayed where no primitive is open, GL
+         * leaves it undefined; Mesa ignores it, and so do we. */
+        if (rt_list_compiling(ctx) && !ctx->recording_object) {
+            const double rec[3] = {x, y, z};
+            if (rt_check_finite_d(ctx, caller, p, 3) &&
+                scene_list_state_d(&ctx->recording, LIST_VERTEX, 0, 0, rec, 3)) {
+                ctx->recording.out_of_memory = 1;
+                rt_error(ctx, RT_OUT_OF_MEMORY, "%s: out of memory recording list %u", caller,
+                         ctx->recording.name);
+            }
+            return;
+        }
+        if (ctx->replaying == 0)
+            rt_error(ctx, RT_INVALID_OPERATION, "%s: only allowed between rtBegin and rtEnd",
+                     caller);
         return;
     }
-    double p[3] = {x, y, z};
     if (!rt_check_finite_d(ctx, caller, p, 3))
         return;
     if (ctx->lines_block) {
@@ -214,8 +230,10 @@ static int vertex_pointer_ok(const void *v, const char *caller)
     GET_CURRENT_CONTEXT(ctx);
     if (!ctx)
         return 0;
-    if (!ctx->block.active) {
-        rt_error(ctx, RT_INVALID_OPERATION, "%s: only allowed between rtBegin and rtEnd", caller);
+    if (!ctx->block.active && (!rt_list_compiling(ctx) || ctx->recording_object)) {
+        if (ctx->replaying == 0)
+            rt_error(ctx, RT_INVALID_OPERATION, "%s: only allowed between rtBegin and rtEnd",
+                     caller);
         return 0;
     }
     if (!v) {

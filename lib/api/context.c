@@ -303,6 +303,7 @@ RTcontext rtCreateContextWithReason(const char *configuration, RTsizei bufSize, 
         ctx->texgen_mode[i] = RT_EYE_LINEAR;
         ctx->texgen_object_plane[i][i] = ctx->texgen_eye_plane[i][i] = 1.0f;
     }
+    ctx->unpack.alignment = ctx->pack.alignment = 4; /* GL's default (pixel_store.c) */
     return ctx;
 }
 

@@ -25,6 +25,8 @@
 #define API_MAX_THREADS 256
 #define API_MAX_VIEWPORT 16384
 #define API_MAX_RAY_DEPTH_LIMIT 16
+#define API_MAX_ATTRIB_STACK_DEPTH 16        /* GL's minimum for both stacks (attrib.c) */
+#define API_MAX_CLIENT_ATTRIB_STACK_DEPTH 16
 
 struct matrix_stack {
     double m[API_MAX_MODELVIEW_DEPTH][16]; /* m[depth-1] is the top */
@@ -38,6 +40,54 @@ struct client_array {
     RTenum type;
     RTsizei stride;
     const void *pointer;
+};
+
+/* rtPixelStorei's state for one direction (pixel_store.c): GL's names,
+ * GL's defaults (alignment 4, the rest 0). */
+struct pixel_store {
+    int swap_bytes, lsb_first;
+    int row_length, skip_rows, skip_pixels;
+    int alignment;
+};
+
+/* One entry of the attribute stack (attrib.c): the groups of `mask` as
+ * they were at rtPushAttrib.  Everything is copied whatever the mask (a
+ * few kilobytes); rtPopAttrib restores only the groups in the mask. */
+struct attrib_entry {
+    RTbitfield mask;
+    float current_color[4], current_normal[3], current_texcoord[2];
+    float raster_pos[4], raster_color[4];
+    int raster_valid;
+    struct scene_material material;
+    int color_material;
+    RTenum shade_model;
+    uint32_t texture_binding;
+    int texture_2d;
+    RTenum polygon_mode[2];
+    int cull_face_enabled;
+    RTenum cull_face_mode;
+    int normalize_enabled, rescale_normal_enabled;
+    int depth_test, dither, polygon_offset_fill;
+    int texgen_enabled[2];
+    RTenum texgen_mode[2];
+    float texgen_object_plane[2][4];
+    float texgen_eye_plane[2][4];
+    struct render_light lights[RENDER_MAX_LIGHTS];
+    float global_ambient[4];
+    int light_model_two_side, light_model_local_viewer;
+    struct scene_fog fog;
+    struct render_visibility vis;
+    float clear_color[4];
+    int viewport[4];
+    RTenum matrix_mode;
+    RTuint list_base;
+};
+
+/* One entry of the client attribute stack (attrib.c). */
+struct client_attrib_entry {
+    RTbitfield mask;
+    struct client_array vertex_array, normal_array, color_array, texcoord_array;
+    struct pixel_store unpack, pack;
 };
 
 /* What RT_COMPILE restores at rtEndList (list.c). */
@@ -109,6 +159,7 @@ struct rt_context {
     RTenum list_mode;   /* RT_COMPILE or RT_COMPILE_AND_EXECUTE while recording */
     RTuint list_base;   /* rtListBase */
     int call_depth;     /* nesting of the lists being executed (GL's CallDepth) */
+    int recording_object; /* rtNewObject (not rtNewList): geometry only, no bare vertices */
     int replaying;      /* > 0: calls come from a list's replay, never recorded */
     struct list_saved_state saved;  /* RT_COMPILE: state rtEndList restores */
     struct list_exec *exec;         /* RT_COMPILE_AND_EXECUTE: segments to instance */
@@ -175,6 +226,18 @@ struct rt_context {
     RTenum texgen_mode[2];  /* RT_EYE_LINEAR initially */
     float texgen_object_plane[2][4];
     float texgen_eye_plane[2][4]; /* in eye space */
+    /* rtPushAttrib / rtPushClientAttrib (attrib.c).  attrib_list_base:
+     * the depth at rtNewList, below which an RT_COMPILE list's
+     * rtPopAttrib does not reach while it is recorded; attrib_skipped:
+     * the RT_COMPILE pushes recorded but not made (stack full). */
+    struct attrib_entry attrib_stack[API_MAX_ATTRIB_STACK_DEPTH];
+    int attrib_depth;
+    int attrib_list_base, attrib_skipped;
+    struct client_attrib_entry client_attrib_stack[API_MAX_CLIENT_ATTRIB_STACK_DEPTH];
+    int client_attrib_depth;
+    /* rtPixelStorei (pixel_store.c): rtTexImage2D, rtTexSubImage2D and
+     * rtBitmap read with unpack, rtReadPixels writes with pack. */
+    struct pixel_store unpack, pack;
 };
 
 /* Derives ctx->material's culling and normalisation fields from the
@@ -262,7 +325,9 @@ enum list_state_call {
     /* Fixed-function state (appearance.c, fixed_function.c). */
     LIST_CULL_FACE, LIST_FRONT_FACE, LIST_COLOR_MATERIAL, LIST_TEX_ENV, LIST_TEX_GEN, LIST_FOG,
     LIST_BLEND_FUNC, LIST_POLYGON_MODE, LIST_LINE_WIDTH, LIST_POINT_SIZE,
-    LIST_ALPHA_FUNC, LIST_POLYGON_OFFSET
+    LIST_ALPHA_FUNC, LIST_POLYGON_OFFSET,
+    LIST_PUSH_ATTRIB, LIST_POP_ATTRIB, LIST_CLEAR, LIST_RASTER_POS,
+    LIST_WINDOW_POS, LIST_BITMAP, LIST_BITMAP_DATA, LIST_VERTEX
 };
 int rt_list_compiling(const struct rt_context *ctx);
 int rt_list_matrix(struct rt_context *ctx, const char *caller, enum scene_list_op_kind kind,
@@ -288,6 +353,30 @@ void rt_call_list(struct rt_context *ctx, const char *caller, RTuint name);
 void rt_frame_described(struct rt_context *ctx);
 /* Renders a frame described since rtClear and not rendered yet. */
 void rt_render_if_described(struct rt_context *ctx);
+
+/* The layout of a width x height image of `components` components of
+ * `size` bytes in client memory under pixel store `ps` (GL 1.5 sec.
+ * 3.6.4, "Unpacking"): the offset of its first pixel and the bytes from
+ * one row to the next.  For bitmaps (size 0) one bit a pixel, the offset
+ * excluding skip_pixels' bits (pixel_store.c). */
+void rt_pixel_layout(const struct pixel_store *ps, int width, int components, int size,
+                     size_t *first, size_t *row_stride);
+/* Raster calls compiled into display lists (raster.c): rt_raster_record
+ * records rtRasterPos (window 0) or rtWindowPos (window 1) when a list is
+ * being compiled and returns 1 when the call must not take effect now;
+ * rt_bitmap_replay draws the bitmap recorded at ops[0] (LIST_BITMAP, its
+ * MSB-first rows in the LIST_BITMAP_DATA operations after it) and
+ * returns the number of operations it took. */
+int rt_raster_record(struct rt_context *ctx, const char *caller, int window, const double p[4]);
+uint32_t rt_bitmap_replay(struct rt_context *ctx, const struct scene_list_op *ops,
+                          uint32_t count);
+/* rtClear compiled into a display list (frame.c): 1 when the call must
+ * not take effect now (RT_COMPILE). */
+int rt_clear_record(struct rt_context *ctx, RTbitfield mask);
+
+/* rtEndList's clean-up of the attribute stack for an RT_COMPILE list
+ * (attrib.c). */
+void rt_attrib_list_end(struct rt_context *ctx);
 
 /* 1 when s is RT_AUTOMATIC or an update strategy (object.c). */
 int rt_strategy_is_valid(RTenum s);

@@ -11,7 +11,9 @@
  * not rendered yet is rendered by rtFinish, rtFlush and rtReadPixels.  A
  * context in which rtClear was never called keeps rtFinish's meaning of
  * preparing the scene without rendering, and rtReadPixels reads the last
- * rtRenderFrame.
+ * rtRenderFrame.  rtReadPixels writes its rows as the pack state of
+ * rtPixelStorei lays them out (RT_PACK_ALIGNMENT 4 by default, which
+ * RGBA rows always meet).
  */
 #include <math.h>
 #include <string.h>
@@ -103,10 +105,25 @@ void rt_render_if_described(struct rt_context *ctx)
         render_frame_now(ctx);
 }
 
+int rt_clear_record(struct rt_context *ctx, RTbitfield mask)
+{
+    if (!rt_list_compiling(ctx))
+        return 0;
+    /* Recorded as GL records it, its mask checked when it runs. */
+    if (scene_list_state(&ctx->recording, LIST_CLEAR, mask, 0, NULL, 0)) {
+        ctx->recording.out_of_memory = 1;
+        rt_error(ctx, RT_OUT_OF_MEMORY, "rtClear: out of memory recording list %u",
+                 ctx->recording.name);
+    }
+    return ctx->list_mode == RT_COMPILE;
+}
+
 void rtClear(RTbitfield mask)
 {
     GET_CURRENT_CONTEXT(ctx);
-    if (!ctx || rt_check_outside_object(ctx, "rtClear"))
+    /* GL compiles glClear into display lists: it runs when the list is
+     * called (list.c), and starts the frame there. */
+    if (!ctx || rt_check_outside_begin(ctx, "rtClear") || rt_clear_record(ctx, mask))
         return;
     /* Mesa's glClear: any bit beyond the four buffers is INVALID_VALUE. */
     if (mask & ~(RTbitfield)(RT_COLOR_BUFFER_BIT | RT_DEPTH_BUFFER_BIT | RT_STENCIL_BUFFER_BIT |
@@ -209,15 +226,27 @@ void rtReadPixels(RTint x, RTint y, RTsizei width, RTsizei height, RTenum format
                  x, y, width, height, pixels, fb->width, fb->height);
         return;
     }
+    /* Rows laid out as the pack state says (GL 1.5 sec. 4.3.2). */
+    size_t first, stride;
+    rt_pixel_layout(&ctx->pack, width, 4, type == RT_FLOAT ? (int)sizeof(float) : 1, &first,
+                    &stride);
     for (int row = 0; row < height; row++) {
         const float *src = &fb->rgba[4 * ((size_t)(y + row) * fb->width + x)];
         size_t n = 4 * (size_t)width;
-        size_t offset = (size_t)row * n;
+        unsigned char *dst = (unsigned char *)pixels + first + (size_t)row * stride;
         if (type == RT_FLOAT) {
-            memcpy((float *)pixels + offset, src, n * sizeof(float));
+            memcpy(dst, src, n * sizeof(float));
+            if (ctx->pack.swap_bytes)
+                for (size_t i = 0; i < n * sizeof(float); i += sizeof(float)) {
+                    unsigned char t = dst[i];
+                    dst[i] = dst[i + 3];
+                    dst[i + 3] = t;
+                    t = dst[i + 1];
+                    dst[i + 1] = dst[i + 2];
+                    dst[i + 2] = t;
+                }
             continue;
         }
-        unsigned char *dst = (unsigned char *)pixels + offset;
         for (size_t i = 0; i < n; i++) {
             float c = fminf(fmaxf(src[i], 0.0f), 1.0f);
             dst[i] = (unsigned char)lrintf(c * 255.0f);

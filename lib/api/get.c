@@ -269,6 +269,59 @@ static enum value_kind state_values(const struct rt_context *ctx, RTenum pname, 
     case RT_CURRENT_RASTER_POSITION_VALID:
         v[0] = ctx->raster_valid;
         return VALUE_INT;
+    case RT_CURRENT_COLOR:
+        for (int i = 0; i < 4; i++)
+            v[i] = ctx->current_color[i];
+        *count = 4;
+        return VALUE_FLOAT;
+    case RT_CURRENT_NORMAL:
+        for (int i = 0; i < 3; i++)
+            v[i] = ctx->current_normal[i];
+        *count = 3;
+        return VALUE_FLOAT;
+    case RT_CURRENT_TEXTURE_COORDS: /* s, t, r = 0, q = 1 (GL) */
+        v[0] = ctx->current_texcoord[0];
+        v[1] = ctx->current_texcoord[1];
+        v[2] = 0.0;
+        v[3] = 1.0;
+        *count = 4;
+        return VALUE_FLOAT;
+    case RT_ATTRIB_STACK_DEPTH: /* attrib.c */
+        v[0] = ctx->attrib_depth;
+        return VALUE_INT;
+    case RT_MAX_ATTRIB_STACK_DEPTH:
+        v[0] = API_MAX_ATTRIB_STACK_DEPTH;
+        return VALUE_INT;
+    case RT_CLIENT_ATTRIB_STACK_DEPTH:
+        v[0] = ctx->client_attrib_depth;
+        return VALUE_INT;
+    case RT_MAX_CLIENT_ATTRIB_STACK_DEPTH:
+        v[0] = API_MAX_CLIENT_ATTRIB_STACK_DEPTH;
+        return VALUE_INT;
+    case RT_UNPACK_SWAP_BYTES: /* pixel_store.c */
+    case RT_PACK_SWAP_BYTES:
+        v[0] = (pname == RT_PACK_SWAP_BYTES ? &ctx->pack : &ctx->unpack)->swap_bytes;
+        return VALUE_INT;
+    case RT_UNPACK_LSB_FIRST:
+    case RT_PACK_LSB_FIRST:
+        v[0] = (pname == RT_PACK_LSB_FIRST ? &ctx->pack : &ctx->unpack)->lsb_first;
+        return VALUE_INT;
+    case RT_UNPACK_ROW_LENGTH:
+    case RT_PACK_ROW_LENGTH:
+        v[0] = (pname == RT_PACK_ROW_LENGTH ? &ctx->pack : &ctx->unpack)->row_length;
+        return VALUE_INT;
+    case RT_UNPACK_SKIP_ROWS:
+    case RT_PACK_SKIP_ROWS:
+        v[0] = (pname == RT_PACK_SKIP_ROWS ? &ctx->pack : &ctx->unpack)->skip_rows;
+        return VALUE_INT;
+    case RT_UNPACK_SKIP_PIXELS:
+    case RT_PACK_SKIP_PIXELS:
+        v[0] = (pname == RT_PACK_SKIP_PIXELS ? &ctx->pack : &ctx->unpack)->skip_pixels;
+        return VALUE_INT;
+    case RT_UNPACK_ALIGNMENT:
+    case RT_PACK_ALIGNMENT:
+        v[0] = (pname == RT_PACK_ALIGNMENT ? &ctx->pack : &ctx->unpack)->alignment;
+        return VALUE_INT;
     default:
         *count = 0;
         return VALUE_NONE;
@@ -413,6 +466,14 @@ RTboolean rtIsEnabled(RTenum cap)
         return RT_FALSE;
     if (cap == RT_LIGHTING)
         return ctx->material.lighting ? RT_TRUE : RT_FALSE;
+    /* GL's glIsEnabled also answers for the client arrays (array.c). */
+    const struct client_array *array = cap == RT_VERTEX_ARRAY   ? &ctx->vertex_array
+                                       : cap == RT_NORMAL_ARRAY ? &ctx->normal_array
+                                       : cap == RT_COLOR_ARRAY  ? &ctx->color_array
+                                       : cap == RT_TEXTURE_COORD_ARRAY ? &ctx->texcoord_array
+                                                                       : NULL;
+    if (array)
+        return array->enabled ? RT_TRUE : RT_FALSE;
     int *flag = capability(ctx, cap);
     if (!flag) {
         char b1[RT_ENUM_STRING_SIZE];

@@ -419,6 +419,27 @@ static void replay_state(const struct scene_list_op *op)
     case LIST_POLYGON_OFFSET:
         rtPolygonOffset(v[0], v[1]);
         break;
+    case LIST_PUSH_ATTRIB:
+        rtPushAttrib(op->b);
+        break;
+    case LIST_POP_ATTRIB:
+        rtPopAttrib();
+        break;
+    case LIST_CLEAR:
+        rtClear(op->b);
+        break;
+    case LIST_RASTER_POS:
+        rtRasterPos4dv(op->v);
+        break;
+    case LIST_WINDOW_POS:
+        rtWindowPos3dv(op->v);
+        break;
+    case LIST_VERTEX:
+        rtVertex3dv(op->v);
+        break;
+    case LIST_BITMAP:      /* rt_call_list's */
+    case LIST_BITMAP_DATA: /* read by rt_bitmap_replay */
+        break;
     }
 }
 
@@ -433,7 +454,18 @@ void rt_call_list(struct rt_context *ctx, const char *caller, RTuint name)
         return;
     ctx->call_depth++;
     ctx->replaying++;
-    if (object->op_count == 0) {
+    /* Called between rtBegin and rtEnd (GL allows it): the list's vertex
+     * and attribute calls continue the open primitive; primitives of its
+     * own and matrix calls are errors there, as glBegin and the matrix
+     * calls are between glBegin and glEnd. */
+    const int in_block = ctx->block.active;
+    if (object->op_count == 0 && in_block &&
+        (object->mesh.vertex_count > 0 || object->mesh.lines.vertex_count > 0))
+        rt_error(ctx, RT_INVALID_OPERATION,
+                 "%s(list=%u): the list draws primitives of its own, not allowed between "
+                 "rtBegin and rtEnd",
+                 caller, name);
+    if (object->op_count == 0 && !in_block) {
         struct scene_appearance a;
         appearance_now(ctx, &a);
         instance_segment(ctx, caller, object, ctx->modelview.m[ctx->modelview.depth - 1], &a);
@@ -442,6 +474,16 @@ void rt_call_list(struct rt_context *ctx, const char *caller, RTuint name)
         const struct scene_list_op *op = &object->ops[k];
         switch ((enum scene_list_op_kind)op->kind) {
         case SCENE_OP_SEGMENT: {
+            const struct scene_mesh *seg = &scene_list_segment(object, op->a)->mesh;
+            if (in_block && seg->vertex_count == 0 && seg->lines.vertex_count == 0)
+                break; /* a list without primitives keeps its (empty) first mesh */
+            if (in_block) {
+                rt_error(ctx, RT_INVALID_OPERATION,
+                         "%s(list=%u): the list draws primitives of its own, not allowed "
+                         "between rtBegin and rtEnd",
+                         caller, name);
+                break;
+            }
             struct scene_appearance a;
             appearance_now(ctx, &a);
             instance_segment(ctx, caller, scene_list_segment(object, op->a),
@@ -452,9 +494,17 @@ void rt_call_list(struct rt_context *ctx, const char *caller, RTuint name)
             rt_call_list(ctx, caller, op->b ? ctx->list_base + op->a : op->a);
             break;
         case SCENE_OP_STATE:
-            replay_state(op);
+            if (op->a == LIST_BITMAP) /* with its rows in the operations after it */
+                k += rt_bitmap_replay(ctx, op, object->op_count - k) - 1;
+            else
+                replay_state(op);
             break;
         default:
+            if (in_block) {
+                rt_error(ctx, RT_INVALID_OPERATION,
+                         "%s(list=%u): a matrix call between rtBegin and rtEnd", caller, name);
+                break;
+            }
             rt_matrix_apply(ctx, caller, (enum scene_list_op_kind)op->kind, op->a, op->v);
             break;
         }
@@ -466,7 +516,11 @@ void rt_call_list(struct rt_context *ctx, const char *caller, RTuint name)
 /* A call from the application (rtCallList, rtCallLists, rtInstantiateObject). */
 static void call(struct rt_context *ctx, const char *caller, RTuint name, int add_base)
 {
-    if (rt_list_compiling(ctx)) {
+    /* A list recorded inside its own rtBegin/rtEnd keeps that block's
+     * vertices in one mesh: a call there is expanded into the block when
+     * recorded (its vertices and attributes join the primitive), not kept
+     * by name. */
+    if (rt_list_compiling(ctx) && !ctx->block.active) {
         if (scene_list_call(&ctx->recording, name, add_base)) {
             list_out_of_memory(ctx, caller);
             return;
@@ -504,6 +558,9 @@ void rtNewList(RTuint list, RTenum mode)
          * definition, and the calls in between are consumed as GL's. */
         rt_error(ctx, RT_OUT_OF_MEMORY, "rtNewList(%u): out of memory", list);
     save_state(ctx, &ctx->saved);
+    ctx->recording_object = 0;
+    ctx->attrib_list_base = ctx->attrib_depth; /* attrib.c */
+    ctx->attrib_skipped = 0;
     ctx->list_mode = mode;
     ctx->exec_count = 0;
     capture_segment(ctx);
@@ -525,6 +582,7 @@ void rtNewObject(RTuint name)
         return;
     }
     rtNewList(name, RT_COMPILE);
+    ctx->recording_object = ctx->recording.active;
 }
 
 static void end_list(const char *caller)
@@ -539,8 +597,10 @@ static void end_list(const char *caller)
         return;
     }
     rec->active = 0;
-    if (ctx->list_mode == RT_COMPILE)
+    if (ctx->list_mode == RT_COMPILE) {
         restore_state(ctx, &ctx->saved); /* GL_COMPILE executed nothing */
+        rt_attrib_list_end(ctx);
+    }
     uint32_t *map = NULL;
     struct scene_object *object = NULL;
     if (!rec->out_of_memory) {
@@ -591,7 +651,7 @@ void rtEndObject(void)
 void rtCallList(RTuint list)
 {
     GET_CURRENT_CONTEXT(ctx);
-    if (!ctx || rt_check_outside_begin(ctx, "rtCallList"))
+    if (!ctx) /* allowed between rtBegin and rtEnd, as glCallList */
         return;
     call(ctx, "rtCallList", list, 0);
 }
@@ -636,7 +696,7 @@ static RTuint list_id(RTenum type, const void *lists, RTsizei k)
 void rtCallLists(RTsizei n, RTenum type, const void *lists)
 {
     GET_CURRENT_CONTEXT(ctx);
-    if (!ctx || rt_check_outside_begin(ctx, "rtCallLists"))
+    if (!ctx) /* allowed between rtBegin and rtEnd, as glCallList */
         return;
     switch (type) {
     case RT_BYTE:

@@ -8,11 +8,14 @@
  * Deviations from GL 1.1 (docs/textures.md): there is no default texture
  * object, so with 0 bound rtTexImage2D and rtTexParameteri record
  * RT_INVALID_OPERATION; an upload of level 0 generates the other mipmap
- * levels from it (GL_GENERATE_MIPMAP), and a later upload of level k > 0
- * replaces level k of that chain, which must then have its size; pixel
- * rows are tightly packed (GL's UNPACK_ALIGNMENT 1, there is no
- * rtPixelStorei); images are stored as 8-bit RGBA whatever the upload
- * type.
+ * levels from it (GL_GENERATE_MIPMAP), again after every
+ * rtTexSubImage2D, and a later upload of level k > 0 replaces level k of
+ * that chain, which must then have its size; images are stored as 8-bit
+ * RGBA whatever the upload type.  Pixels are unpacked as GL unpacks them,
+ * under the rtPixelStorei state (pixel_store.c): rows aligned to
+ * RT_UNPACK_ALIGNMENT (4 by default, so an RGB image of odd width has
+ * padded rows, as in GL), RT_UNPACK_ROW_LENGTH, the skips and byte
+ * swapping of RT_FLOAT data.
  *
  * Triangles keep the texture's name, not its image (scene/recording.c,
  * current_material), so every change made here shows in the next frame of
@@ -102,36 +105,62 @@ static struct scene_texture *bound_texture(struct rt_context *ctx, const char *c
     return tex;
 }
 
-/* Component c of pixel i of an upload, as an 8-bit value: RT_FLOAT is
- * clamped to [0, 1] (NaN to 0) and rounded, as rtReadPixels converts. */
-static uint8_t upload_component(const void *pixels, RTenum type, size_t index)
+/* Where an upload's pixels are in client memory (rt_pixel_layout). */
+struct upload {
+    const unsigned char *pixels;
+    RTenum type;
+    size_t components, size, first, stride;
+    int swap;
+};
+
+static void upload_init(struct upload *u, const struct rt_context *ctx, const void *pixels,
+                        RTenum format, RTenum type, int width)
 {
-    if (type == RT_UNSIGNED_BYTE)
-        return ((const uint8_t *)pixels)[index];
+    u->pixels = pixels;
+    u->type = type;
+    u->components = format == RT_RGB ? 3 : 4;
+    u->size = type == RT_FLOAT ? sizeof(float) : 1;
+    u->swap = ctx->unpack.swap_bytes;
+    rt_pixel_layout(&ctx->unpack, width, (int)u->components, (int)u->size, &u->first,
+                    &u->stride);
+}
+
+/* Component c of pixel (i, j) of an upload, as an 8-bit value: RT_FLOAT
+ * is clamped to [0, 1] (NaN to 0) and rounded, as rtReadPixels
+ * converts. */
+static uint8_t upload_component(const struct upload *u, size_t i, size_t j, size_t c)
+{
+    const unsigned char *p =
+        u->pixels + u->first + j * u->stride + (i * u->components + c) * u->size;
+    if (u->type == RT_UNSIGNED_BYTE)
+        return *p;
+    unsigned char b[sizeof(float)];
+    for (size_t k = 0; k < sizeof(float); k++)
+        b[k] = p[u->swap ? sizeof(float) - 1 - k : k];
     float f;
-    memcpy(&f, (const unsigned char *)pixels + index * sizeof(float), sizeof(f));
+    memcpy(&f, b, sizeof(f));
     f = fminf(fmaxf(f, 0.0f), 1.0f); /* fmaxf(NaN, 0) is 0 */
     return (uint8_t)lrintf(f * 255.0f);
 }
 
-/* The upload's texels as 8-bit RGBA into dst (count texels); NULL pixels
- * give a black image. */
-static void convert_upload(uint8_t *dst, size_t count, const void *pixels, RTenum format,
-                           RTenum type, int opaque)
+/* Writes the upload's width x height pixels into the RGBA texels of a
+ * level `level_width` wide at (x, y); alpha 255 where the data has none
+ * or the texture is opaque. */
+static void unpack_pixels(const struct upload *u, int width, int height, uint8_t *texels,
+                          int level_width, int x, int y, int opaque)
 {
-    const size_t components = format == RT_RGB ? 3 : 4;
-    for (size_t i = 0; i < count; i++) {
-        uint8_t *t = &dst[4 * i];
-        if (!pixels) {
-            t[0] = t[1] = t[2] = 0; /* NULL: a black image */
-            t[3] = 255;
-            continue;
+    for (size_t j = 0; j < (size_t)height; j++)
+        for (size_t i = 0; i < (size_t)width; i++) {
+            uint8_t *t = &texels[4 * (((size_t)y + j) * (size_t)level_width + (size_t)x + i)];
+            if (!u->pixels) {
+                t[0] = t[1] = t[2] = 0; /* NULL: a black image */
+                t[3] = 255;
+                continue;
+            }
+            for (size_t c = 0; c < 3; c++)
+                t[c] = upload_component(u, i, j, c);
+            t[3] = u->components == 4 && !opaque ? upload_component(u, i, j, 3) : 255;
         }
-        for (size_t c = 0; c < 3; c++)
-            t[c] = upload_component(pixels, type, components * i + c);
-        t[3] = components == 4 && !opaque ? upload_component(pixels, type, components * i + 3)
-                                          : 255;
-    }
 }
 
 /* Level k > 0 given by the program, as GL 1.1 programs load their own
@@ -156,7 +185,9 @@ static void upload_level(struct rt_context *ctx, struct scene_texture *tex, RTin
         return;
     }
     uint8_t *dst = tex->texels + (tex->levels[level].texels - tex->texels);
-    convert_upload(dst, (size_t)width * (size_t)height, pixels, format, type, opaque);
+    struct upload u;
+    upload_init(&u, ctx, pixels, format, type, width);
+    unpack_pixels(&u, width, height, dst, width, 0, 0, opaque);
 }
 
 void rtTexImage2D(RTenum target, RTint level, RTint internalformat, RTsizei width,
@@ -204,14 +235,15 @@ void rtTexImage2D(RTenum target, RTint level, RTint internalformat, RTsizei widt
         return;
     }
     /* The whole mip chain in one block, level 0 first. */
-    size_t count = (size_t)width * (size_t)height;
     uint8_t *texels = rt_malloc(4 * scene_texture_chain_texels(width, height));
     if (!texels) {
         rt_error(ctx, RT_OUT_OF_MEMORY, "rtTexImage2D(width=%d, height=%d): out of memory",
                  width, height);
         return;
     }
-    convert_upload(texels, count, pixels, format, type, opaque);
+    struct upload u;
+    upload_init(&u, ctx, pixels, format, type, width);
+    unpack_pixels(&u, width, height, texels, width, 0, 0, opaque);
     /* Built here, on the API thread, whatever the filters: a later
      * rtTexParameteri can choose a mipmapped filter without any work. */
     if (scene_texture_build_mipmaps(texels, width, height)) {
@@ -222,6 +254,62 @@ void rtTexImage2D(RTenum target, RTint level, RTint internalformat, RTsizei widt
         return;
     }
     scene_texture_set_image(tex, width, height, texels);
+    tex->opaque = opaque;
+}
+
+void rtTexSubImage2D(RTenum target, RTint level, RTint xoffset, RTint yoffset, RTsizei width,
+                     RTsizei height, RTenum format, RTenum type, const void *pixels)
+{
+    GET_CURRENT_CONTEXT(ctx);
+    if (!ctx)
+        return;
+    /* Mesa's texsubimage_error_check order: target, format and type,
+     * level, then the texture and the rectangle. */
+    if (rt_check_outside_begin(ctx, "rtTexSubImage2D"))
+        return;
+    if (target != RT_TEXTURE_2D) {
+        rt_error(ctx, RT_INVALID_ENUM, "rtTexSubImage2D(target=0x%x)", target);
+        return;
+    }
+    if (format != RT_RGB && format != RT_RGBA) {
+        rt_error(ctx, RT_INVALID_ENUM, "rtTexSubImage2D(format=0x%x)", format);
+        return;
+    }
+    if (type != RT_UNSIGNED_BYTE && type != RT_FLOAT) {
+        rt_error(ctx, RT_INVALID_ENUM, "rtTexSubImage2D(type=0x%x)", type);
+        return;
+    }
+    if (level != 0) {
+        rt_error(ctx, RT_INVALID_VALUE,
+                 "rtTexSubImage2D(level=%d): only level 0 (levels > 0 are generated from it)",
+                 level);
+        return;
+    }
+    struct scene_texture *tex = bound_texture(ctx, "rtTexSubImage2D");
+    if (!tex)
+        return;
+    if (!tex->texels) {
+        rt_error(ctx, RT_INVALID_OPERATION,
+                 "rtTexSubImage2D: texture %u has no image (rtTexImage2D first)", tex->name);
+        return;
+    }
+    if (width < 0 || height < 0 || xoffset < 0 || yoffset < 0 ||
+        xoffset > tex->width - width || yoffset > tex->height - height) {
+        rt_error(ctx, RT_INVALID_VALUE,
+                 "rtTexSubImage2D(xoffset=%d, yoffset=%d, width=%d, height=%d): the "
+                 "texture is %dx%d",
+                 xoffset, yoffset, width, height, tex->width, tex->height);
+        return;
+    }
+    if (width == 0 || height == 0 || !pixels)
+        return; /* nothing to copy (GL leaves NULL undefined; Mesa copies nothing) */
+    struct upload u;
+    upload_init(&u, ctx, pixels, format, type, width);
+    unpack_pixels(&u, width, height, tex->texels, tex->width, xoffset, yoffset, tex->opaque);
+    if (scene_texture_build_mipmaps(tex->texels, tex->width, tex->height))
+        rt_error(ctx, RT_OUT_OF_MEMORY,
+                 "rtTexSubImage2D: out of memory rebuilding the mipmaps of texture %u",
+                 tex->name);
 }
 
 /* The filter or wrap value for pname, or -1 when param is not one.  The

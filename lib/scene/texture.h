@@ -68,6 +68,7 @@ struct scene_texture {
     enum scene_texture_filter mag_filter;
     enum scene_texture_wrap wrap_s;
     enum scene_texture_wrap wrap_t;
+    int opaque; /* internal format RGB: alpha 255 whatever the data (rtTexSubImage2D) */
 };
 
 struct scene_textures {
