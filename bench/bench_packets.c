@@ -15,6 +15,13 @@
  * 8, for each thread count) and each figure is the median; the packets'
  * answers must equal the single walk's bit for bit (t and primitive).
  *
+ * The third table is the same through the API: rtTraceRays on the
+ * primary rays, rtOccludedRays on the shadow rays and whole frames
+ * (rtRenderFrame, eye light: camera rays only; Whitted: plus a shadow ray
+ * per hit to a point light, traced one at a time from inside shading) of
+ * the mesh from its camera, on contexts with packets=on and packets=off
+ * (the answers and images must be equal, memcmp).
+ *
  * The second table is the hybrid threshold: packets of the same rays
  * with every threshold from 0 (packets to the leaves) to 9 (each ray
  * alone from the root: the packet set-up's overhead over single rays),
@@ -24,6 +31,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <rt/rtu.h>
+
+#include "base/timer.h"
 #include "bench.h"
 
 struct packet_ctx {
@@ -256,6 +266,157 @@ out:
     return rc;
 }
 
+/* The API table: a context over the mesh, one instance, its camera. */
+static RTcontext api_context(const struct bench_mesh *mesh, const float *flat, int threads,
+                             int packets)
+{
+    char config[64];
+    snprintf(config, sizeof(config), "threads=%d packets=%s", threads, packets ? "on" : "off");
+    RTcontext ctx = rtCreateContext(config);
+    if (!ctx || !rtMakeCurrent(ctx))
+        return NULL;
+    RTuint object;
+    rtGenObjects(1, &object);
+    rtNewObject(object);
+    rtEnableClientState(RT_VERTEX_ARRAY);
+    rtVertexPointer(3, RT_FLOAT, 0, flat);
+    rtDrawArrays(RT_TRIANGLES, 0, (RTsizei)(3 * mesh->tri_count));
+    rtDisableClientState(RT_VERTEX_ARRAY);
+    rtEndObject();
+    const struct bench_camera *c = &mesh->camera;
+    const double w = BENCH_PRIMARY_WIDTH, h = BENCH_PRIMARY_HEIGHT;
+    rtViewport(0, 0, (RTsizei)w, (RTsizei)h);
+    rtMatrixMode(RT_PROJECTION);
+    rtLoadIdentity();
+    rtuPerspective(2.0 * atan(c->tan_x * h / w) * (180.0 / 3.14159265358979323846), w / h, 0.01, 1e4);
+    rtMatrixMode(RT_MODELVIEW);
+    rtLoadIdentity();
+    rtuLookAt(c->eye[0], c->eye[1], c->eye[2], c->eye[0] + c->forward[0],
+              c->eye[1] + c->forward[1], c->eye[2] + c->forward[2], c->up[0], c->up[1], c->up[2]);
+    const float light[4] = {mesh->light[0], mesh->light[1], mesh->light[2], 1.0f};
+    rtLightfv(RT_LIGHT0, RT_POSITION, light); /* through the modelview, as GL */
+    rtEnable(RT_LIGHT0);
+    rtLoadIdentity();
+    rtBeginFrame();
+    rtuLookAt(c->eye[0], c->eye[1], c->eye[2], c->eye[0] + c->forward[0],
+              c->eye[1] + c->forward[1], c->eye[2] + c->forward[2], c->up[0], c->up[1], c->up[2]);
+    rtInstantiateObject(object);
+    rtLoadIdentity();
+    return ctx;
+}
+
+#define API_WORK 4 /* rtTraceRays, rtOccludedRays, eye-light frame, Whitted frame */
+
+static int api_mesh(const struct bench_options *opts, const struct bench_mesh *mesh)
+{
+    struct bench_accel acc;
+    struct bench_rays sets[3];
+    float *flat = NULL;
+    RThit *hits[2] = {NULL, NULL};
+    RTboolean *occ[2] = {NULL, NULL};
+    float *image[2] = {NULL, NULL};
+    double *times = NULL;
+    int rc = -1;
+    const size_t pixels = (size_t)BENCH_PRIMARY_WIDTH * BENCH_PRIMARY_HEIGHT;
+    memset(sets, 0, sizeof(sets));
+    memset(&acc, 0, sizeof(acc));
+    if (opts->quick)
+        return 0; /* whole frames: not a smoke test */
+    if (bench_accel_build(&acc, mesh, NULL) || bench_rays_trace_sets(sets, mesh, &acc, 0))
+        goto out;
+    flat = malloc((size_t)mesh->tri_count * 9 * sizeof(*flat));
+    times = malloc((size_t)2 * 2 * API_WORK * opts->runs * sizeof(*times));
+    for (int p = 0; p < 2; p++) {
+        hits[p] = malloc((size_t)sets[0].count * sizeof(RThit));
+        occ[p] = malloc((size_t)sets[2].count * sizeof(RTboolean) + 1);
+        image[p] = malloc(pixels * 4 * sizeof(float));
+        if (!hits[p] || !occ[p] || !image[p])
+            goto out;
+    }
+    if (!flat || !times)
+        goto out;
+    for (size_t j = 0; j < 3 * (size_t)mesh->tri_count; j++)
+        memcpy(&flat[3 * j], &mesh->positions[3 * (size_t)mesh->indices[j]], 3 * sizeof(float));
+    int same = 1;
+    for (int t = 0; t < 2; t++) {
+        RTcontext ctx[2];
+        for (int p = 0; p < 2; p++) {
+            ctx[p] = api_context(mesh, flat, t + 1, p);
+            if (!ctx[p])
+                goto out;
+            /* Build the object outside the timed calls. */
+            rtShadingMode(RT_EYE_LIGHT);
+            rtRenderFrame();
+        }
+        for (int run = 0; run < opts->runs; run++)
+            for (int w = 0; w < API_WORK; w++)
+                for (int p = 0; p < 2; p++) {
+                    rtMakeCurrent(ctx[p]);
+                    double cpu = bench_cpu_ms();
+                    double start = rt_now_ms();
+                    if (w == 0)
+                        rtTraceRays((RTsizei)sets[0].count, sets[0].rays, hits[p]);
+                    else if (w == 1)
+                        rtOccludedRays((RTsizei)sets[2].count, sets[2].rays, occ[p]);
+                    else {
+                        rtShadingMode(w == 2 ? RT_EYE_LIGHT : RT_WHITTED);
+                        rtRenderFrame();
+                    }
+                    double ms = rt_now_ms() - start;
+                    bench_share_add(t + 1, ms, bench_cpu_ms() - cpu);
+                    times[((t * API_WORK + w) * 2 + p) * opts->runs + run] = ms;
+                    if (w >= 2 && run == 0)
+                        rtReadPixels(0, 0, BENCH_PRIMARY_WIDTH, BENCH_PRIMARY_HEIGHT, RT_RGBA,
+                                     RT_FLOAT, image[p]);
+                    if (rtGetError() != RT_NO_ERROR)
+                        same = 0;
+                    if (run == 0 && p == 1) {
+                        if (w == 0)
+                            same &= memcmp(hits[0], hits[1],
+                                           sets[0].count * sizeof(RThit)) == 0;
+                        else if (w == 1)
+                            same &= memcmp(occ[0], occ[1],
+                                           sets[2].count * sizeof(RTboolean)) == 0;
+                        else
+                            same &= memcmp(image[0], image[1], pixels * 4 * sizeof(float)) == 0;
+                    }
+                }
+        for (int p = 0; p < 2; p++) {
+            rtMakeCurrent(NULL);
+            rtDestroyContext(ctx[p]);
+        }
+    }
+    static const char *const work[API_WORK] = {"rtTraceRays primary", "rtOccludedRays shadow",
+                                               "frame, eye light", "frame, Whitted"};
+    for (int w = 0; w < API_WORK; w++)
+        for (int t = 0; t < 2; t++) {
+            double ms[2];
+            for (int p = 0; p < 2; p++)
+                ms[p] = bench_median(&times[((t * API_WORK + w) * 2 + p) * opts->runs],
+                                     opts->runs);
+            report_row("%s|%s|%d|%.1f|%.1f|%.2f|%s", mesh->name, work[w], t + 1, ms[0], ms[1],
+                       ms[1] > 0 ? ms[0] / ms[1] : 0.0, same ? "yes" : "NO");
+        }
+    if (!same) {
+        report_check_failed();
+        report_progress("packets: WARNING: %s: packets=on and off answer differently\n",
+                        mesh->name);
+    }
+    rc = 0;
+out:
+    for (int s = 0; s < 3; s++)
+        bench_rays_release(&sets[s]);
+    for (int p = 0; p < 2; p++) {
+        free(hits[p]);
+        free(occ[p]);
+        free(image[p]);
+    }
+    free(flat);
+    free(times);
+    bench_accel_release(&acc);
+    return rc;
+}
+
 int bench_packets_section(const struct bench_options *opts, struct bench_mesh *meshes,
                           int mesh_count)
 {
@@ -289,5 +450,16 @@ int bench_packets_section(const struct bench_options *opts, struct bench_mesh *m
     report_table_header("mesh|rays|single|0|2|3|4|6|9");
     for (int m = 0; m < mesh_count; m++)
         failed |= hybrid_mesh(opts, &meshes[m]) != 0;
+    if (!opts->quick) {
+        report_printf("\nThrough the API, %dx%d: ms per call (median of %d runs, on and off "
+                      "interleaved), contexts \"threads=N packets=off|on\" with their default "
+                      "ISA; \"same\": answers and images of on and off equal (memcmp).\n\n",
+                      BENCH_PRIMARY_WIDTH, BENCH_PRIMARY_HEIGHT, opts->runs);
+        report_table_header("mesh|work|threads|packets=off ms|packets=on ms|off/on|same");
+        bench_share_reset();
+        for (int m = 0; m < mesh_count; m++)
+            failed |= api_mesh(opts, &meshes[m]) != 0;
+        bench_share_report();
+    }
     return failed ? -1 : 0;
 }
