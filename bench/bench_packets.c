@@ -320,6 +320,48 @@ static RTcontext api_context(const struct bench_mesh *mesh, const float *flat, i
 
 #define API_WORK 4 /* rtTraceRays, rtOccludedRays, eye-light frame, Whitted frame */
 
+/* The rays of set in the camera's eye space (rtuLookAt's matrix, in
+ * double): api_context puts the mesh there, as a GL program draws under
+ * its viewing transform, and queries take eye-space rays. */
+static RTray *eye_rays(const struct bench_mesh *mesh, const struct bench_rays *set)
+{
+    const struct bench_camera *c = &mesh->camera;
+    double f[3], s[3], u[3], len = 0.0, sl = 0.0;
+    for (int k = 0; k < 3; k++)
+        len += (double)c->forward[k] * c->forward[k];
+    for (int k = 0; k < 3; k++)
+        f[k] = c->forward[k] / sqrt(len);
+    s[0] = f[1] * c->up[2] - f[2] * c->up[1];
+    s[1] = f[2] * c->up[0] - f[0] * c->up[2];
+    s[2] = f[0] * c->up[1] - f[1] * c->up[0];
+    for (int k = 0; k < 3; k++)
+        sl += s[k] * s[k];
+    for (int k = 0; k < 3; k++)
+        s[k] /= sqrt(sl);
+    u[0] = s[1] * f[2] - s[2] * f[1];
+    u[1] = s[2] * f[0] - s[0] * f[2];
+    u[2] = s[0] * f[1] - s[1] * f[0];
+    const double *rows[3] = {s, u, f};
+    const double sign[3] = {1.0, 1.0, -1.0};
+    RTray *out = malloc((size_t)set->count * sizeof(*out));
+    if (!out)
+        return NULL;
+    for (uint32_t i = 0; i < set->count; i++) {
+        const RTray *r = &set->rays[i];
+        out[i] = *r;
+        for (int a = 0; a < 3; a++) {
+            double o = 0.0, d = 0.0;
+            for (int k = 0; k < 3; k++) {
+                o += rows[a][k] * ((double)r->org[k] - c->eye[k]);
+                d += rows[a][k] * r->dir[k];
+            }
+            out[i].org[a] = (float)(sign[a] * o);
+            out[i].dir[a] = (float)(sign[a] * d);
+        }
+    }
+    return out;
+}
+
 static int api_mesh(const struct bench_options *opts, const struct bench_mesh *mesh)
 {
     struct bench_accel acc;
@@ -328,6 +370,7 @@ static int api_mesh(const struct bench_options *opts, const struct bench_mesh *m
     RThit *hits[2] = {NULL, NULL};
     RTboolean *occ[2] = {NULL, NULL};
     float *image[2] = {NULL, NULL};
+    RTray *eye[2] = {NULL, NULL};
     double *times = NULL;
     int rc = -1;
     const size_t pixels = (size_t)BENCH_PRIMARY_WIDTH * BENCH_PRIMARY_HEIGHT;
@@ -346,7 +389,9 @@ static int api_mesh(const struct bench_options *opts, const struct bench_mesh *m
         if (!hits[p] || !occ[p] || !image[p])
             goto out;
     }
-    if (!flat || !times)
+    eye[0] = eye_rays(mesh, &sets[0]);
+    eye[1] = eye_rays(mesh, &sets[2]);
+    if (!flat || !times || !eye[0] || !eye[1])
         goto out;
     for (size_t j = 0; j < 3 * (size_t)mesh->tri_count; j++)
         memcpy(&flat[3 * j], &mesh->positions[3 * (size_t)mesh->indices[j]], 3 * sizeof(float));
@@ -368,9 +413,9 @@ static int api_mesh(const struct bench_options *opts, const struct bench_mesh *m
                     double cpu = bench_cpu_ms();
                     double start = rt_now_ms();
                     if (w == 0)
-                        rtTraceRays((RTsizei)sets[0].count, sets[0].rays, hits[p]);
+                        rtTraceRays((RTsizei)sets[0].count, eye[0], hits[p]);
                     else if (w == 1)
-                        rtOccludedRays((RTsizei)sets[2].count, sets[2].rays, occ[p]);
+                        rtOccludedRays((RTsizei)sets[2].count, eye[1], occ[p]);
                     else {
                         rtShadingMode(w == 2 ? RT_EYE_LIGHT : RT_WHITTED);
                         rtRenderFrame();
@@ -400,6 +445,11 @@ static int api_mesh(const struct bench_options *opts, const struct bench_mesh *m
             rtDestroyContext(ctx[p]);
         }
     }
+    uint32_t hit_count = 0;
+    for (uint32_t i = 0; i < sets[0].count; i++)
+        hit_count += hits[0][i].t < INFINITY;
+    report_progress("packets: %s: API primary rays hitting: %u of %u\n", mesh->name, hit_count,
+                    sets[0].count);
     static const char *const work[API_WORK] = {"rtTraceRays primary", "rtOccludedRays shadow",
                                                "frame, eye light", "frame, Whitted"};
     for (int w = 0; w < API_WORK; w++)
@@ -424,6 +474,7 @@ out:
         free(hits[p]);
         free(occ[p]);
         free(image[p]);
+        free(eye[p]);
     }
     free(flat);
     free(times);

@@ -32,8 +32,12 @@
 
 /* Rays per packet: 8, one ray per bit of an active mask. */
 #define TRACE_PACKET 8
-/* Below this many active rays a subtree is walked ray by ray. */
-#define TRACE_PACKET_HYBRID 3
+/* Below this many active rays a subtree is walked ray by ray.  0: never.
+ * Measured (rtbench packets, docs/performance.md): with every box test
+ * a ray's own, a packet of few rays wastes no SIMD lanes, only its
+ * bookkeeping, and falling back at 2, 3, 4 or 6 rays was up to 10%
+ * slower than never on the coherent sets (within noise on two of six). */
+#define TRACE_PACKET_HYBRID 0
 
 /*
  * The packet walks of a kernels table (kernels.h): rays[i] with
