@@ -385,6 +385,23 @@ int bench_embree_section(const struct bench_options *opts, struct bench_mesh *me
                          int mesh_count);
 /* "3.13.5" etc., from the headers rtbench was compiled with. */
 const char *bench_embree_version(void);
+/* `rtbench packets`: an Embree MEDIUM scene over mesh (NULL on failure)
+ * and kernels over it: rtcIntersect1/rtcOccluded1 in a loop, and
+ * rtcIntersect8/rtcOccluded8 over groups of eight consecutive rays. */
+void *bench_embree_packets_new(const struct bench_mesh *mesh);
+void bench_embree_packets_release(void *ctx);
+void bench_embree_kernel_closest1(void *ctx, const RTray *rays, uint32_t begin, uint32_t end,
+                                  struct bench_hit *hits);
+void bench_embree_kernel_any1(void *ctx, const RTray *rays, uint32_t begin, uint32_t end,
+                              struct bench_hit *hits);
+void bench_embree_kernel_closest8(void *ctx, const RTray *rays, uint32_t begin, uint32_t end,
+                                  struct bench_hit *hits);
+void bench_embree_kernel_any8(void *ctx, const RTray *rays, uint32_t begin, uint32_t end,
+                              struct bench_hit *hits);
 #endif
+/* `rtbench packets` (bench_packets.c): our packet walks against the
+ * single-ray walk (and Embree's packets) on coherent rays. */
+int bench_packets_section(const struct bench_options *opts, struct bench_mesh *meshes,
+                          int mesh_count);
 
 #endif

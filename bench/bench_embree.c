@@ -454,3 +454,138 @@ int bench_embree_section(const struct bench_options *opts, struct bench_mesh *me
     rtcReleaseDevice(device);
     return failed ? -1 : 0;
 }
+
+/* ------------------------------------------------------------------ packets
+ * `rtbench packets` (bench_packets.c) against Embree's packet interface:
+ * rtcIntersect8 / rtcOccluded8 over groups of eight consecutive rays of a
+ * set (a row of eight pixels for primary rays), valid lanes beyond the end
+ * of a chunk off, beside rtcIntersect1 / rtcOccluded1 on the same scene
+ * (MEDIUM, Embree's default). */
+
+struct bench_embree_packets {
+    RTCDevice device;
+    RTCScene scene;
+};
+
+void *bench_embree_packets_new(const struct bench_mesh *mesh)
+{
+    struct bench_embree_packets *e = calloc(1, sizeof(*e));
+    double ms;
+    if (!e)
+        return NULL;
+    e->device = rtcNewDevice("threads=1");
+    if (!e->device) {
+        free(e);
+        return NULL;
+    }
+    rtcSetDeviceErrorFunction(e->device, embree_error, NULL);
+    e->scene = embree_scene(e->device, mesh, RTC_BUILD_QUALITY_MEDIUM, &ms);
+    if (!e->scene) {
+        rtcReleaseDevice(e->device);
+        free(e);
+        return NULL;
+    }
+    return e;
+}
+
+void bench_embree_packets_release(void *ctx)
+{
+    struct bench_embree_packets *e = ctx;
+    if (!e)
+        return;
+    rtcReleaseScene(e->scene);
+    rtcReleaseDevice(e->device);
+    free(e);
+}
+
+void bench_embree_kernel_closest1(void *ctx, const RTray *rays, uint32_t begin, uint32_t end,
+                                  struct bench_hit *hits)
+{
+    embree_kernel_closest(((struct bench_embree_packets *)ctx)->scene, rays, begin, end, hits);
+}
+
+void bench_embree_kernel_any1(void *ctx, const RTray *rays, uint32_t begin, uint32_t end,
+                              struct bench_hit *hits)
+{
+    embree_kernel_any(((struct bench_embree_packets *)ctx)->scene, rays, begin, end, hits);
+}
+
+void bench_embree_kernel_closest8(void *ctx, const RTray *rays, uint32_t begin, uint32_t end,
+                                  struct bench_hit *hits)
+{
+    RTCScene scene = ((struct bench_embree_packets *)ctx)->scene;
+    struct RTCIntersectContext ic;
+    rtcInitIntersectContext(&ic);
+    ic.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    for (uint32_t g = begin; g < end; g += 8) {
+        RTC_ALIGN(32) int valid[8];
+        RTC_ALIGN(32) struct RTCRayHit8 rh;
+        for (int j = 0; j < 8; j++) {
+            const uint32_t i = g + (uint32_t)j;
+            valid[j] = i < end ? -1 : 0;
+            const RTray *r = &rays[i < end ? i : g];
+            rh.ray.org_x[j] = r->org[0];
+            rh.ray.org_y[j] = r->org[1];
+            rh.ray.org_z[j] = r->org[2];
+            rh.ray.tnear[j] = r->tmin;
+            rh.ray.dir_x[j] = r->dir[0];
+            rh.ray.dir_y[j] = r->dir[1];
+            rh.ray.dir_z[j] = r->dir[2];
+            rh.ray.time[j] = 0.0f;
+            rh.ray.tfar[j] = r->tmax;
+            rh.ray.mask[j] = 0xFFFFFFFFu;
+            rh.ray.id[j] = 0;
+            rh.ray.flags[j] = 0;
+            rh.hit.geomID[j] = RTC_INVALID_GEOMETRY_ID;
+            rh.hit.primID[j] = RTC_INVALID_GEOMETRY_ID;
+            rh.hit.instID[0][j] = RTC_INVALID_GEOMETRY_ID;
+        }
+        rtcIntersect8(valid, scene, &ic, &rh);
+        for (int j = 0; j < 8 && g + (uint32_t)j < end; j++) {
+            struct bench_hit *h = &hits[g + (uint32_t)j];
+            if (rh.hit.geomID[j] != RTC_INVALID_GEOMETRY_ID) {
+                h->t = rh.ray.tfar[j];
+                h->prim = rh.hit.primID[j];
+            } else {
+                h->t = INFINITY;
+                h->prim = BENCH_MISS;
+            }
+        }
+    }
+}
+
+void bench_embree_kernel_any8(void *ctx, const RTray *rays, uint32_t begin, uint32_t end,
+                              struct bench_hit *hits)
+{
+    RTCScene scene = ((struct bench_embree_packets *)ctx)->scene;
+    struct RTCIntersectContext ic;
+    rtcInitIntersectContext(&ic);
+    ic.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    for (uint32_t g = begin; g < end; g += 8) {
+        RTC_ALIGN(32) int valid[8];
+        RTC_ALIGN(32) struct RTCRay8 ray;
+        for (int j = 0; j < 8; j++) {
+            const uint32_t i = g + (uint32_t)j;
+            valid[j] = i < end ? -1 : 0;
+            const RTray *r = &rays[i < end ? i : g];
+            ray.org_x[j] = r->org[0];
+            ray.org_y[j] = r->org[1];
+            ray.org_z[j] = r->org[2];
+            ray.tnear[j] = r->tmin;
+            ray.dir_x[j] = r->dir[0];
+            ray.dir_y[j] = r->dir[1];
+            ray.dir_z[j] = r->dir[2];
+            ray.time[j] = 0.0f;
+            ray.tfar[j] = r->tmax;
+            ray.mask[j] = 0xFFFFFFFFu;
+            ray.id[j] = 0;
+            ray.flags[j] = 0;
+        }
+        rtcOccluded8(valid, scene, &ic, &ray);
+        for (int j = 0; j < 8 && g + (uint32_t)j < end; j++) {
+            const int occluded = ray.tfar[j] == -INFINITY;
+            hits[g + (uint32_t)j].t = occluded ? 0.0f : INFINITY;
+            hits[g + (uint32_t)j].prim = occluded ? 0 : BENCH_MISS;
+        }
+    }
+}

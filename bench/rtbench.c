@@ -44,19 +44,22 @@ enum section {
     SECTION_DYNAMIC = 8,
     SECTION_BART = 16,
     SECTION_IMMEDIATE = 32,
-    SECTION_ERROR = 64
+    SECTION_ERROR = 64,
+    SECTION_PACKETS = 128
 };
 /* `error` takes about 20 s on the development machine: in `all`. */
 #define SECTION_ALL                                                                                \
     (SECTION_BUILD | SECTION_TRACE | SECTION_EMBREE | SECTION_DYNAMIC | SECTION_BART |           \
-     SECTION_IMMEDIATE | SECTION_ERROR)
+     SECTION_IMMEDIATE | SECTION_ERROR | SECTION_PACKETS)
 /* The sections that run on the generated meshes. */
-#define SECTION_MESHES (SECTION_BUILD | SECTION_TRACE | SECTION_EMBREE | SECTION_DYNAMIC)
+#define SECTION_MESHES                                                                             \
+    (SECTION_BUILD | SECTION_TRACE | SECTION_EMBREE | SECTION_DYNAMIC | SECTION_PACKETS)
 
 static void usage(FILE *f)
 {
     fprintf(f,
-            "usage: rtbench [build|trace|embree|dynamic|immediate|error|bart|bart-strategies|all]\n"
+            "usage: rtbench [build|trace|embree|packets|dynamic|immediate|error|bart|\n"
+            "                bart-strategies|all]\n"
             "               [--quick] [--runs N]"
             " [--out DIR] [--mesh bumpy|gears|soup] [--baseline FILE]\n"
             "               [--tolerance PCT] [--bart-dir DIR] [--isa NAME] [--layout L]\n"
@@ -64,6 +67,8 @@ static void usage(FILE *f)
             "  build      BVH quality against build time per builder and bin count\n"
             "  trace      Mrays/s, trace_closest/trace_any directly and through rtTraceRays\n"
             "  embree     the same meshes and rays through Embree 3%s\n"
+            "  packets    8-ray packets against single rays (and Embree's rtcIntersect8)\n"
+            "             on the trace section's coherent sets; the hybrid threshold\n"
             "  dynamic    dynamic scenes: update strategies over animations (error\n"
             "             against time), soup rebuild, top level, parallel build\n"
             "  error      intersection error against ns per ray per kernel, layout and\n"
@@ -125,6 +130,8 @@ int main(int argc, char **argv)
             sections |= SECTION_TRACE;
         } else if (!strcmp(a, "embree")) {
             sections |= SECTION_EMBREE;
+        } else if (!strcmp(a, "packets")) {
+            sections |= SECTION_PACKETS;
         } else if (!strcmp(a, "dynamic")) {
             sections |= SECTION_DYNAMIC;
         } else if (!strcmp(a, "immediate")) {
@@ -253,6 +260,8 @@ int main(int argc, char **argv)
                       "(CMake did not find embree 3, or RT_WITH_EMBREE=OFF).\n");
 #endif
     }
+    if (sections & SECTION_PACKETS)
+        failed |= bench_packets_section(&opts, meshes, mesh_count) != 0;
     if (sections & SECTION_DYNAMIC)
         failed |= bench_dynamic_section(&opts, meshes, mesh_count) != 0;
     if (sections & SECTION_IMMEDIATE)

@@ -36,7 +36,9 @@ static void config_strings(void)
                                        "build_threads=0",
                                        "isa=scalar",
                                        "isa=auto",
-                                       "threads=1 isa=scalar"};
+                                       "threads=1 isa=scalar",
+                                       "packets=on",
+                                       "packets=off isa=auto"};
     static const char *const bad[] = {"threads=0",    "threads=257", "threads=-1", "threads=",
                                       "threads=abc",  "threads=2x",  "bins=1",     "bins=257",
                                       "builder=foo",  "foo=1",       "threads",    "=2",
@@ -48,7 +50,8 @@ static void config_strings(void)
                                       ",threads=1", "threads=1,,bins=4", "threads=1, ,bins=4",
                                       "threads =1", "threads= 1", "build_threads=00",
                                       "isa=", "isa=sse2", "isa=AVX2", "isa=avx2x",
-                                      "isa=scalar isa=scalar"};
+                                      "isa=scalar isa=scalar", "packets=", "packets=ON",
+                                      "packets=1", "packets=on packets=off"};
     size_t i;
     tu_section("configuration strings");
     for (i = 0; i < sizeof good / sizeof good[0]; i++) {
@@ -172,6 +175,21 @@ static void effective_configuration(void)
         CHECK(again != NULL);
         rtDestroyContext(again);
     }
+    tu_destroy_context(ctx);
+
+    /* packets=: reported; on by default where the kernels have a packet
+     * walk, and off for isa=scalar, which has none. */
+    ctx = tu_make_context("threads=1 packets=off");
+    s = rtGetString(RT_CONFIGURATION);
+    CHECK(s != NULL && strstr(s, "packets=off") != NULL);
+    tu_destroy_context(ctx);
+    ctx = tu_make_context("threads=1 isa=scalar packets=on");
+    s = rtGetString(RT_CONFIGURATION);
+    CHECK(s != NULL && strstr(s, "packets=off") != NULL);
+    tu_destroy_context(ctx);
+    ctx = tu_make_context("threads=1");
+    s = rtGetString(RT_CONFIGURATION);
+    CHECK(s != NULL && (strstr(s, "packets=on") || strstr(s, "isa=scalar")));
     tu_destroy_context(ctx);
 
     /* Default thread count: at least one. */

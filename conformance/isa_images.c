@@ -15,6 +15,16 @@
  * (memcmp); an ISA the CPU cannot run is skipped (rtCreateContext gives
  * NULL), so on an AVX2 machine the 4- and 8-wide layouts are both
  * compared with the binary one.
+ *
+ * Packets (lib/trace/packet_scene.h): every SIMD configuration runs with
+ * packets=on (the default: camera rays in 4 x 2 blocks, coherent query
+ * groups of eight) and packets=off, both against the same reference.
+ * COHERENT more query rays follow the random ones, in groups of eight
+ * that rtTraceRays takes as packets: camera rays from the eye, shadow
+ * rays from the floor to a point light, rays aimed exactly at the
+ * vertices and edge midpoints of an instanced sphere, rays grazing the
+ * floor, and rays from 1e4 away; packets=on must do different node work
+ * than packets=off on them (the packet path ran) with the same answers.
  */
 #include <rt/rt.h>
 #include <math.h>
@@ -28,7 +38,9 @@
 
 #define WIDTH 96
 #define HEIGHT 72
-#define RAYS 20000
+#define RANDOM_RAYS 20000
+#define COHERENT 12000
+#define RAYS (RANDOM_RAYS + COHERENT)
 
 static uint64_t rng_state = 12345;
 
@@ -124,7 +136,95 @@ struct answers {
     float image[2][WIDTH * HEIGHT * 4];
     RThit hits[RAYS];
     RTboolean occluded[RAYS];
+    /* RT_STAT_RAYS and RT_STAT_NODE_TESTS of the two frames, the trace
+     * and the occlusion query. */
+    RTint rays[4];
+    RTint nodes[4];
 };
+
+static void stats(struct answers *out, int i)
+{
+    rtGetIntegerv(RT_STAT_RAYS, &out->rays[i]);
+    rtGetIntegerv(RT_STAT_NODE_TESTS, &out->nodes[i]);
+}
+
+/* The coherent query rays, in groups of eight (a multiple of 8 per
+ * kind, so that groups never straddle two kinds). */
+static void coherent_rays(RTray *rays, int count)
+{
+    int n = 0;
+    /* Camera rays from the eye, rows of a 100 x 30 grid. */
+    for (int y = 0; y < 30 && n + 100 <= count; y++)
+        for (int x = 0; x < 100; x++, n++) {
+            RTray *r = &rays[n];
+            r->org[0] = r->org[1] = r->org[2] = 0.0f;
+            r->dir[0] = 0.8f * (2.0f * ((float)x + 0.5f) / 100.0f - 1.0f);
+            r->dir[1] = 0.6f * (2.0f * ((float)y + 0.5f) / 30.0f - 1.0f);
+            r->dir[2] = -1.0f;
+            r->tmin = 0.0f;
+            r->tmax = INFINITY;
+        }
+    /* Shadow rays from points of the floor to a point light. */
+    const float light[3] = {3.0f, 6.0f, -4.0f};
+    for (int z = 0; z < 40 && n + 80 <= count; z++)
+        for (int x = 0; x < 80; x++, n++) {
+            RTray *r = &rays[n];
+            r->org[0] = -6.0f + 12.0f * (float)x / 80.0f;
+            r->org[1] = -2.0f;
+            r->org[2] = -14.0f + 12.0f * (float)z / 40.0f;
+            for (int k = 0; k < 3; k++)
+                r->dir[k] = light[k] - r->org[k];
+            r->tmin = 1e-4f;
+            r->tmax = 1.0f;
+        }
+    /* At the vertices and edge midpoints of the sphere instanced at
+     * (-2, 0, -8), from the eye, neighbours in one group. */
+    for (int i = 0; i <= 12; i++)
+        for (int j = 0; j < 24; j++)
+            for (int mid = 0; mid < 2 && n < count; mid++, n++) {
+                const float b = (float)j + 0.5f * (float)mid;
+                const float th = 3.14159265f * (float)i / 12.0f;
+                const float ph = 6.2831853f * b / 24.0f;
+                RTray *r = &rays[n];
+                r->org[0] = r->org[1] = r->org[2] = 0.0f;
+                r->dir[0] = sinf(th) * cosf(ph) - 2.0f;
+                r->dir[1] = cosf(th);
+                r->dir[2] = sinf(th) * sinf(ph) - 8.0f;
+                r->tmin = 0.0f;
+                r->tmax = INFINITY;
+            }
+    n = (n + 7) / 8 * 8;
+    for (int i = 1; i < 8 && n - i >= 0 && n <= count; i++)
+        if (rays[n - i].dir[2] == 0.0f && rays[n - i].dir[0] == 0.0f)
+            rays[n - i] = rays[0];
+    /* Grazing the floor: in its plane, or a hair above it. */
+    for (int i = 0; i < 1000 && n < count; i++, n++) {
+        RTray *r = &rays[n];
+        r->org[0] = -5.0f + 10.0f * (float)(i % 200) / 200.0f;
+        r->org[1] = -2.0f + (i / 200 == 1 ? 1e-6f : 0.0f);
+        r->org[2] = 0.0f;
+        r->dir[0] = 0.01f * (float)(i / 200);
+        r->dir[1] = i / 200 == 2 ? -1e-7f : 0.0f;
+        r->dir[2] = -1.0f;
+        r->tmin = 0.0f;
+        r->tmax = INFINITY;
+    }
+    /* From far away, towards the middle of the scene. */
+    for (int i = 0; n < count; i++, n++) {
+        RTray *r = &rays[n];
+        r->org[0] = 1e4f + 0.5f * (float)(i % 8);
+        r->org[1] = 5e3f;
+        r->org[2] = 1e4f + 0.5f * (float)((i / 8) % 8);
+        const float target[3] = {-3.0f + 6.0f * unit(), -2.0f + 4.0f * unit(), -8.0f};
+        for (int k = 0; k < 3; k++)
+            r->dir[k] = target[k] - r->org[k];
+        if (i % 8)
+            for (int k = 0; k < 3; k++)
+                r->dir[k] = rays[n - 1].dir[k] * (1.0f + 1e-3f * (unit() - 0.5f));
+        r->tmin = 0.0f;
+        r->tmax = INFINITY;
+    }
+}
 
 static int run(const char *config, const RTray *rays, struct answers *out)
 {
@@ -137,10 +237,13 @@ static int run(const char *config, const RTray *rays, struct answers *out)
     for (int m = 0; m < 2; m++) {
         rtShadingMode(modes[m]);
         rtRenderFrame();
+        stats(out, m);
         rtReadPixels(0, 0, WIDTH, HEIGHT, RT_RGBA, RT_FLOAT, out->image[m]);
     }
     rtTraceRays(RAYS, rays, out->hits);
+    stats(out, 2);
     rtOccludedRays(RAYS, rays, out->occluded);
+    stats(out, 3);
     CHECK_NO_ERR();
     rtMakeCurrent(NULL);
     rtDestroyContext(ctx);
@@ -155,7 +258,7 @@ int main(void)
     struct answers *got = malloc(sizeof(*got));
     if (!rays || !ref || !got)
         return 1;
-    for (int i = 0; i < RAYS; i++) {
+    for (int i = 0; i < RANDOM_RAYS; i++) {
         for (int k = 0; k < 3; k++) {
             rays[i].org[k] = unit() * 6.0f - 3.0f;
             rays[i].dir[k] = unit() * 2.0f - 1.0f;
@@ -168,21 +271,58 @@ int main(void)
         rays[i].tmin = 0.0f;
         rays[i].tmax = (i % 7 == 0) ? 3.0f : INFINITY;
     }
+    coherent_rays(rays + RANDOM_RAYS, COHERENT);
     CHECK(run("threads=1 isa=scalar", rays, ref));
     /* The comparison means something only if the scene is hit. */
-    int hit_count = 0;
-    for (int i = 0; i < RAYS; i++)
+    int hit_count = 0, coherent_hits = 0, coherent_occluded = 0;
+    for (int i = 0; i < RAYS; i++) {
         hit_count += ref->hits[i].t < INFINITY;
-    printf("  reference: %d of %d rays hit\n", hit_count, RAYS);
+        coherent_hits += i >= RANDOM_RAYS && ref->hits[i].t < INFINITY;
+        coherent_occluded += i >= RANDOM_RAYS && ref->occluded[i];
+    }
+    printf("  reference: %d of %d rays hit (%d of the %d coherent ones; %d occluded)\n",
+           hit_count, RAYS, coherent_hits, COHERENT, coherent_occluded);
     CHECK(hit_count > RAYS / 10);
-    static const char *const configs[] = {"threads=1 isa=sse4", "threads=3 isa=sse4",
-                                          "threads=1 isa=avx2", "threads=3 isa=avx2",
-                                          "threads=1 isa=avx512", "threads=3 isa=avx512",
-                                          "threads=3 isa=scalar"};
+    CHECK(coherent_hits > COHERENT / 4 && coherent_occluded > COHERENT / 20);
+    static const char *const configs[] = {
+        "threads=1 isa=sse4",  "threads=3 isa=sse4",   "threads=1 isa=avx2",
+        "threads=3 isa=avx2",  "threads=1 isa=avx512", "threads=3 isa=avx512",
+        "threads=3 isa=scalar", "threads=1 isa=sse4 packets=off",
+        "threads=2 isa=sse4 packets=off", "threads=1 isa=avx2 packets=off",
+        "threads=2 isa=avx2 packets=off", "threads=2 isa=avx2 packets=on",
+        "threads=1 isa=avx512 packets=off"};
+    /* Node tests of the packets=on run of each ISA, threads=1 (the
+     * entry before its packets=off one). */
+    RTint packet_nodes[8][4];
+    int have_packet_nodes[8] = {0};
     for (size_t c = 0; c < sizeof(configs) / sizeof(configs[0]); c++) {
         if (!run(configs[c], rays, got)) {
             printf("  %s: not runnable here, skipped\n", configs[c]);
             continue;
+        }
+        CHECKF(memcmp(ref->rays, got->rays, sizeof(ref->rays)) == 0,
+               "%s: RT_STAT_RAYS %d %d %d %d, reference %d %d %d %d", configs[c], got->rays[0],
+               got->rays[1], got->rays[2], got->rays[3], ref->rays[0], ref->rays[1],
+               ref->rays[2], ref->rays[3]);
+        const int isa = strstr(configs[c], "sse4") ? 1 : strstr(configs[c], "avx2") ? 2 : 3;
+        if (strstr(configs[c], "threads=1") && !strstr(configs[c], "packets=")) {
+            memcpy(packet_nodes[isa], got->nodes, sizeof(got->nodes));
+            have_packet_nodes[isa] = 1;
+        }
+        if (strstr(configs[c], "threads=1") && strstr(configs[c], "packets=off") &&
+            have_packet_nodes[isa]) {
+            /* Different work, same answers: the packet path ran for the
+             * frame and the coherent closest-hit queries.  (Any-hit
+             * packets of one octant visit exactly the single rays'
+             * nodes: same order, no culling by a closest hit.) */
+            CHECKF(packet_nodes[isa][0] != got->nodes[0] &&
+                       packet_nodes[isa][2] != got->nodes[2],
+                   "%s: node tests %d %d equal packets=on's: no packet ran", configs[c],
+                   got->nodes[0], got->nodes[2]);
+            printf("  %s: node tests eye light %d, trace %d, occluded %d; packets=on: %d, %d, "
+                   "%d\n",
+                   configs[c], got->nodes[0], got->nodes[2], got->nodes[3],
+                   packet_nodes[isa][0], packet_nodes[isa][2], packet_nodes[isa][3]);
         }
         int same_images = memcmp(ref->image, got->image, sizeof(ref->image)) == 0;
         int same_hits = memcmp(ref->hits, got->hits, sizeof(ref->hits)) == 0;

@@ -6,7 +6,8 @@
  * object placed five times - one instance a mirror, one glass -, boxes, a
  * 4000-triangle random soup; two lights; Whitted shading with shadows,
  * reflection and refraction, which carry the texture's ray cones) is built in
- * separate contexts created with threads=1, 2 and 8, and rendered at
+ * separate contexts created with threads=1, 2 and 8 (and threads=2
+ * packets=off, which traces every ray alone), and rendered at
  * 256x192.  Every pixel and every query ray is computed independently by
  * the same float operations (render.h), so:
  *   - the RGBA float framebuffers are identical bit for bit (memcmp);
@@ -329,12 +330,15 @@ int main(void)
     RTray *rays = malloc(RAY_COUNT * sizeof(*rays));
     make_rays(rays);
 
-    tu_section("threads=1, 2, 8 in turn");
-    static const char *const configs[3] = {"threads=1", "threads=2", "threads=8"};
-    static const int thread_counts[3] = {1, 2, 8};
-    struct results seq[3];
+    tu_section("threads=1, 2, 8 in turn, and 2 without packets");
+    /* The last: packets=off (docs/context.md) traces every camera and
+     * query ray alone, the others trace coherent ones in packets. */
+    static const char *const configs[4] = {"threads=1", "threads=2", "threads=8",
+                                           "threads=2 packets=off"};
+    static const int thread_counts[4] = {1, 2, 8, 2};
+    struct results seq[4];
     memset(seq, 0, sizeof(seq));
-    for (int i = 0; i < 3; i++) {
+    for (int i = 0; i < 4; i++) {
         seq[i].config = configs[i];
         seq[i].with_queries = i != 1;
         produce(&seq[i], rays);
@@ -346,12 +350,12 @@ int main(void)
     for (size_t p = 0; p < PIXELS; p += 4)
         background += seq[0].image[p + 3] == 0.0f;
     CHECK(background < WIDTH * HEIGHT / 2);
-    for (int i = 1; i < 3; i++) {
+    for (int i = 1; i < 4; i++) {
         if (!CHECK(images_equal(seq[0].image, seq[i].image)))
             fprintf(stderr, "  threads=1 vs %s: %d pixels differ\n", configs[i],
                     differing_pixels(seq[0].image, seq[i].image));
     }
-    for (int i = 0; i < 3; i++) {
+    for (int i = 0; i < 4; i++) {
         if (!CHECK(images_equal(seq[i].image, seq[i].image_again)))
             fprintf(stderr, "  %s rendered twice: %d pixels differ\n", configs[i],
                     differing_pixels(seq[i].image, seq[i].image_again));
@@ -361,6 +365,8 @@ int main(void)
     }
     CHECK(memcmp(seq[0].hits, seq[2].hits, RAY_COUNT * sizeof(RThit)) == 0);
     CHECK(memcmp(seq[0].occluded, seq[2].occluded, RAY_COUNT) == 0);
+    CHECK(memcmp(seq[0].hits, seq[3].hits, RAY_COUNT * sizeof(RThit)) == 0);
+    CHECK(memcmp(seq[0].occluded, seq[3].occluded, RAY_COUNT) == 0);
     int hit_count = 0;
     for (int i = 0; i < RAY_COUNT; i++)
         hit_count += seq[0].hits[i].t < INFINITY;
@@ -391,7 +397,7 @@ int main(void)
               memcmp(seq[0].occluded, jobs[i].res.occluded, RAY_COUNT) == 0);
         free_results(&jobs[i].res);
     }
-    for (int i = 0; i < 3; i++)
+    for (int i = 0; i < 4; i++)
         free_results(&seq[i]);
     free(rays);
     printf("cpu time %.2f s\n", (double)(clock() - start) / CLOCKS_PER_SEC);

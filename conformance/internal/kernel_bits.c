@@ -28,7 +28,8 @@
  * 8-wide walk takes the binary one) and must give the scalar binary
  * walk's answers bit for bit (found, t, u, v, primitive, closest and any
  * hit); the node and triangle counts differ by design and are printed
- * per layout.  With `deform`, the mesh's vertices are moved after the
+ * per layout.  The packet walks of each table then take the same kinds of
+ * rays in packets of eight (compare_packets).  With `deform`, the mesh's vertices are moved after the
  * build and both layouts refitted (accel_refit_mesh, accel_refit4) as
  * lib/scene/accel.c does for a refit strategy: a wide layout left with
  * the old boxes misses hits and fails the comparison.
@@ -108,6 +109,83 @@ static void make_ray(const struct tg_mesh *m, struct tg_rng *r, int kind, float 
     }
     if (dir[0] == 0.0f && dir[1] == 0.0f && dir[2] == 0.0f)
         dir[0] = 1.0f;
+}
+
+/*
+ * The packet walks (packet.h, packet_wide.h) against the scalar binary
+ * walk, ray by ray and bit for bit (found, t, u, v, primitive; closest
+ * and any hit), on packets of TRACE_PACKET rays: incoherent ones (eight
+ * consecutive rays of make_ray, any mix of octants, tmin and t_max),
+ * coherent ones (one origin, directions turned by up to 1e-3 around one
+ * aimed at a vertex or an edge, the first exactly at it), with random
+ * inactive lanes, and with the hybrid fallback off (0: the packet walk
+ * to the leaves, TRACE_PACKET_HYBRID's value), at 3 and always (9: every
+ * ray alone).
+ * Returns the number of failed checks.
+ */
+static int compare_packets(const char *name, const struct trace_kernels *k, const char *layout,
+                           const struct tg_mesh *m, const struct bvh4 *wide,
+                           const struct bvh *bvh, const float *tri, int rays, uint64_t seed)
+{
+    const struct trace_kernels *ref = trace_kernels_get(TRACE_ISA_SCALAR);
+    static const unsigned hybrids[3] = {0, 3, TRACE_PACKET + 1};
+    struct tg_rng r;
+    tg_seed(&r, seed ^ 0x9e3779b97f4a7c15ull);
+    int differ = 0, compared = 0;
+    struct trace_counters cp = {0, 0}, cs = {0, 0};
+    for (int g = 0; g + TRACE_PACKET <= rays; g += TRACE_PACKET) {
+        struct trace_ray ray[TRACE_PACKET];
+        float t_max[TRACE_PACKET];
+        const int coherent = (g / TRACE_PACKET) % 2;
+        float org0[3], dir0[3];
+        make_ray(m, &r, (g / TRACE_PACKET / 2) % 3 == 0 ? 1 : 0, org0, dir0);
+        for (int i = 0; i < TRACE_PACKET; i++) {
+            float org[3], dir[3];
+            if (coherent) {
+                for (int a = 0; a < 3; a++) {
+                    org[a] = org0[a];
+                    dir[a] = dir0[a] * (1.0f + (i ? tg_range(&r, -1e-3f, 1e-3f) : 0.0f));
+                }
+            } else {
+                make_ray(m, &r, (g + i) % 6, org, dir);
+            }
+            const float tmin = (g + i) % 7 == 0 ? 0.5f : 0.0f;
+            t_max[i] = (g + i) % 11 == 0 ? 1.0f : INFINITY;
+            trace_ray_init(&ray[i], org, dir, tmin);
+        }
+        const unsigned active = (g / TRACE_PACKET) % 5 == 0
+                                    ? (unsigned)tg_below(&r, 1u << TRACE_PACKET)
+                                    : (1u << TRACE_PACKET) - 1u;
+        const unsigned hybrid = hybrids[(g / TRACE_PACKET) % 3];
+        struct trace_hit hp[TRACE_PACKET];
+        memset(hp, 0, sizeof(hp));
+        const unsigned fp = k->closest_packet(wide, bvh, tri, ray, t_max, active, hybrid, hp, &cp);
+        const unsigned ap = k->any_packet(wide, bvh, tri, ray, t_max, active, hybrid, NULL);
+        for (int i = 0; i < TRACE_PACKET; i++) {
+            struct trace_hit h0;
+            memset(&h0, 0, sizeof(h0));
+            const int in = active >> i & 1u;
+            const int f0 = in && ref->closest(bvh, tri, &ray[i], t_max[i], &h0, &cs);
+            const int a0 = in && ref->any(bvh, tri, &ray[i], t_max[i], NULL);
+            const int f1 = (int)(fp >> i & 1u), a1 = (int)(ap >> i & 1u);
+            compared += in;
+            if (f0 != f1 || a0 != a1 || (f0 && memcmp(&h0, &hp[i], sizeof(h0)) != 0)) {
+                if (differ < 5)
+                    printf("    packet %s group %d ray %d (hybrid %u): found %d/%d any %d/%d "
+                           "t %a/%a prim %u/%u\n",
+                           layout, g / TRACE_PACKET, i, hybrid, f0, f1, a0, a1, h0.t, hp[i].t,
+                           h0.prim, hp[i].prim);
+                differ++;
+            }
+        }
+    }
+    printf("  %s: %s %s packets = scalar binary on %d rays; per closest ray: nodes %.1f, "
+           "triangles %.1f (binary %.1f, %.1f)\n",
+           name, k->name, layout, compared - differ, (double)cp.node_tests / compared,
+           (double)cp.triangle_tests / compared, (double)cs.node_tests / compared,
+           (double)cs.triangle_tests / compared);
+    return !CHECKF(differ == 0, "%s: %s %s packets differ from scalar binary on %d of %d rays",
+                   name, k->name, layout, differ, compared);
 }
 
 static void compare_tables(const char *name, struct tg_mesh *m, int rays, uint64_t seed,
@@ -196,6 +274,8 @@ static void compare_tables(const char *name, struct tg_mesh *m, int rays, uint64
                 }
             }
         }
+        if (k->closest_packet)
+            failures += compare_packets(name, k, layout, m, wide, &bvh, tri, rays, seed);
         failures += !CHECKF(differ == 0, "%s: %s differs from scalar on %d of %d rays", name,
                  k->name, differ, rays);
         printf("  %s: %s = scalar on %d rays\n", name, k->name, rays - differ);

@@ -92,7 +92,7 @@ static int parse_configuration(struct rt_context *ctx, const char *config, char 
                                size_t reason_size)
 {
     static const char *const keys[] = {"threads", "toplevel", "build_threads", "bins",
-                                       "builder", "isa"};
+                                       "builder", "isa", "packets"};
     enum { KEY_COUNT = sizeof keys / sizeof keys[0] };
     int seen[KEY_COUNT] = {0};
     const char *p = config;
@@ -165,6 +165,14 @@ static int parse_configuration(struct rt_context *ctx, const char *config, char 
                                    (int)value_len, value);
             break;
         }
+        case 6:
+            if (key_is(value, value_len, "on"))
+                ctx->packets_off = 0;
+            else if (key_is(value, value_len, "off"))
+                ctx->packets_off = 1;
+            else
+                bad = 1, expect = "on or off";
+            break;
         default:
             if (key_is(value, value_len, "binned"))
                 ctx->build_params.builder = BVH_BUILDER_BINNED_SAH;
@@ -272,11 +280,21 @@ RTcontext rtCreateContextWithReason(const char *configuration, RTsizei bufSize, 
         return NULL;
     }
     ctx->build_params.wide_layout = (int)ctx->kernels->wide_width;
+    /* packets=: the context's own copy of its table, without the packet
+     * walks when off (every trace then goes ray by ray); "off" is
+     * reported for a table that has none (isa=scalar). */
+    ctx->kernel_table = *ctx->kernels;
+    if (ctx->packets_off) {
+        ctx->kernel_table.closest_packet = NULL;
+        ctx->kernel_table.any_packet = NULL;
+    }
+    ctx->kernels = &ctx->kernel_table;
     snprintf(ctx->configuration, sizeof(ctx->configuration),
-             "threads=%d build_threads=%d bins=%d builder=%s toplevel=%s isa=%s", ctx->threads,
-             ctx->build_threads, ctx->build_params.bins,
+             "threads=%d build_threads=%d bins=%d builder=%s toplevel=%s isa=%s packets=%s",
+             ctx->threads, ctx->build_threads, ctx->build_params.bins,
              ctx->build_params.builder == BVH_BUILDER_SWEEP_SAH ? "sweep" : "binned",
-             ctx->toplevel_cellsplit ? "cellsplit" : "binned", ctx->kernels->name);
+             ctx->toplevel_cellsplit ? "cellsplit" : "binned", ctx->kernels->name,
+             ctx->kernels->closest_packet ? "on" : "off");
     const char *debug = getenv("TRACELIST_DEBUG");
     ctx->debug_print = debug && *debug && strcmp(debug, "0") != 0;
 

@@ -130,6 +130,10 @@ struct rt_context {
      * chosen here once, read by every trace of the context. */
     const struct trace_kernels *kernels;
     char configuration[128];
+    /* packets= (docs/context.md): kernels points here after creation, a
+     * copy of the chosen table whose packet walks are NULL when off. */
+    int packets_off;
+    struct trace_kernels kernel_table;
 
     /* Errors (error.c). */
     RTenum error;

@@ -115,7 +115,12 @@ int gl_closest_drawn(const struct shade_context *sc, const float org[3], const f
                      float tmin, float tmax, struct trace_scene_hit *hit)
 {
     for (int i = 0; i <= GL_SHADE_MAX_CULLED; i++) {
-        if (!trace_scene_closest(sc->scene, org, dir, tmin, tmax, hit, sc->counters))
+        /* A camera ray the tile loop traced in a packet: its first hit. */
+        if (i == 0 && sc->primed && tmin == 0.0f) {
+            if (!sc->primed->found)
+                return 0;
+            *hit = sc->primed->hit;
+        } else if (!trace_scene_closest(sc->scene, org, dir, tmin, tmax, hit, sc->counters))
             return 0;
         const struct trace_instance *ti = &sc->scene->instances[hit->instance];
         const struct scene_instance *inst = &sc->frame->committed.items[ti->instance_id];

@@ -14,6 +14,7 @@
 #include "render/blend.h"
 #include "render/raster.h"
 #include "render/shade.h"
+#include "trace/packet_scene.h"
 
 /* Rays per work item of a query batch. */
 #define RENDER_QUERY_CHUNK 1024
@@ -249,14 +250,83 @@ uint32_t render_pass_tiles(const struct render_pass *pass)
     return (uint32_t)pass->tiles_x * (uint32_t)pass->tiles_y;
 }
 
+/* Packet blocks of the tile loop: 4 x 2 pixels, one packet of
+ * TRACE_PACKET camera rays. */
+#define RENDER_BLOCK_W 4
+#define RENDER_BLOCK_H 2
+
+/*
+ * The tile with packets (packets=on, trace/packet_scene.h): the camera
+ * rays of each 4 x 2 block of pixels are traced together to their first
+ * hit, then each pixel is shaded as render_tile does, its first trace
+ * taken from the packet (shade_context.primed).  The same image bit for
+ * bit: a packet's hits are the single rays' hits, and pixels do not
+ * depend on the order they are shaded in.
+ */
+static void render_tile_packets(struct render_pass *pass, struct shade_context *sc, int x0,
+                                int y0)
+{
+    const struct render_state *st = pass->job->state;
+    const int *vp = st->viewport;
+    for (int by = y0; by < y0 + RENDER_TILE_SIZE && by < vp[3]; by += RENDER_BLOCK_H)
+        for (int bx = x0; bx < x0 + RENDER_TILE_SIZE && bx < vp[2]; bx += RENDER_BLOCK_W) {
+            struct trace_packet pk;
+            struct shade_cone cone[TRACE_PACKET];
+            struct trace_scene_hit hits[TRACE_PACKET];
+            pk.active = 0;
+            for (int i = 0; i < TRACE_PACKET; i++) {
+                const int x = bx + i % RENDER_BLOCK_W, y = by + i / RENDER_BLOCK_W;
+                if (x < x0 + RENDER_TILE_SIZE && x < vp[2] && y < y0 + RENDER_TILE_SIZE &&
+                    y < vp[3] && primary_ray(pass, x, y, pk.org[i], pk.dir[i], &pk.tmax[i],
+                                             &cone[i])) {
+                    pk.tmin[i] = 0.0f;
+                    pk.active |= 1u << i;
+                }
+            }
+            const unsigned found = trace_scene_closest_packet(sc->scene, &pk, hits, sc->counters);
+            for (int i = 0; i < TRACE_PACKET; i++) {
+                const int x = bx + i % RENDER_BLOCK_W, y = by + i / RENDER_BLOCK_W;
+                if (!(x < x0 + RENDER_TILE_SIZE && x < vp[2] && y < y0 + RENDER_TILE_SIZE &&
+                      y < vp[3]))
+                    continue;
+                float *px = &pass->fb[4 * ((size_t)(vp[1] + y) * pass->fb_width + vp[0] + x)];
+                if (!(pk.active >> i & 1u)) {
+                    memcpy(px, st->clear_color, 4 * sizeof(float));
+                    continue;
+                }
+                struct shade_primed primed;
+                primed.found = (int)(found >> i & 1u);
+                if (primed.found)
+                    primed.hit = hits[i];
+                sc->primed = &primed;
+                float t_first;
+                blend_trace_primary(sc, pk.org[i], pk.dir[i], pk.tmax[i], cone[i], px, &t_first);
+                sc->primed = NULL;
+                if (pass->depth)
+                    pass->depth[(size_t)(vp[1] + y) * pass->fb_width + vp[0] + x] =
+                        raster_window_depth(st->projection, pk.org[i], pk.dir[i], t_first);
+            }
+        }
+}
+
 void render_tile(struct render_pass *pass, uint32_t tile, int worker)
 {
     const struct render_state *st = pass->job->state;
-    struct shade_context sc = {st, pass->job->frame, &pass->scene, &pass->counters[worker].c,
-                               pass->job->textures, pass->clipping, pass->see_through};
+    struct shade_context sc = {st,
+                               pass->job->frame,
+                               &pass->scene,
+                               &pass->counters[worker].c,
+                               pass->job->textures,
+                               pass->clipping,
+                               pass->see_through,
+                               NULL};
     const int *vp = st->viewport;
     int x0 = (int)(tile % (uint32_t)pass->tiles_x) * RENDER_TILE_SIZE;
     int y0 = (int)(tile / (uint32_t)pass->tiles_x) * RENDER_TILE_SIZE;
+    if (pass->scene.kernels && pass->scene.kernels->closest_packet) {
+        render_tile_packets(pass, &sc, x0, y0);
+        return;
+    }
     for (int y = y0; y < y0 + RENDER_TILE_SIZE && y < vp[3]; y++)
         for (int x = x0; x < x0 + RENDER_TILE_SIZE && x < vp[2]; x++) {
             float *px = &pass->fb[4 * ((size_t)(vp[1] + y) * pass->fb_width + vp[0] + x)];
@@ -355,10 +425,59 @@ static void miss(RThit *h)
     h->primitive = RT_INVALID_ID;
 }
 
+static void store_hit(const struct render_pass *sh, const struct trace_scene_hit *h, RThit *out)
+{
+    const struct trace_instance *ti = &sh->scene.instances[h->instance];
+    const struct scene_object *object = ti->object;
+    out->t = h->t;
+    out->u = h->u;
+    out->v = h->v;
+    out->instance = ti->instance_id;
+    out->object = object->name;
+    out->primitive = h->prim;
+}
+
+/* Rays i .. i + TRACE_PACKET - 1 of a query as one packet, when their
+ * directions look coherent (trace_packet_coherent); returns 0, having
+ * traced nothing, when they do not.  The answers are the single rays'. */
+static int query_packet(struct render_pass *sh, size_t i, struct trace_scene_counters *counters)
+{
+    const float *dirs[TRACE_PACKET];
+    for (int j = 0; j < TRACE_PACKET; j++)
+        dirs[j] = sh->rays[i + (size_t)j].dir;
+    if (!trace_packet_coherent(dirs, TRACE_PACKET))
+        return 0;
+    struct trace_packet pk;
+    for (int j = 0; j < TRACE_PACKET; j++) {
+        const RTray *r = &sh->rays[i + (size_t)j];
+        memcpy(pk.org[j], r->org, sizeof(pk.org[j]));
+        memcpy(pk.dir[j], r->dir, sizeof(pk.dir[j]));
+        pk.tmin[j] = r->tmin;
+        pk.tmax[j] = r->tmax;
+    }
+    pk.active = (1u << TRACE_PACKET) - 1u;
+    if (sh->occluded) {
+        const unsigned occ = trace_scene_any_packet(&sh->scene, &pk, counters);
+        for (int j = 0; j < TRACE_PACKET; j++)
+            sh->occluded[i + (size_t)j] = (RTboolean)(occ >> j & 1u);
+        return 1;
+    }
+    struct trace_scene_hit h[TRACE_PACKET];
+    const unsigned found = trace_scene_closest_packet(&sh->scene, &pk, h, counters);
+    for (int j = 0; j < TRACE_PACKET; j++) {
+        if (found >> j & 1u)
+            store_hit(sh, &h[j], &sh->hits[i + (size_t)j]);
+        else
+            miss(&sh->hits[i + (size_t)j]);
+    }
+    return 1;
+}
+
 static void query_task(void *arg, int worker)
 {
     struct render_pass *sh = arg;
     struct trace_scene_counters *counters = &sh->counters[worker].c;
+    const int packets = sh->scene.kernels && sh->scene.kernels->closest_packet;
     for (;;) {
         uint32_t item = rt_atomic_fetch_add_relaxed(&sh->next_item, 1);
         size_t first = (size_t)item * RENDER_QUERY_CHUNK;
@@ -369,6 +488,12 @@ static void query_task(void *arg, int worker)
             last = (size_t)sh->count;
         for (size_t i = first; i < last; i++) {
             const RTray *r = &sh->rays[i];
+            /* Coherent groups of TRACE_PACKET rays go as a packet. */
+            if (packets && (i - first) % TRACE_PACKET == 0 && last - i >= TRACE_PACKET &&
+                query_packet(sh, i, counters)) {
+                i += TRACE_PACKET - 1;
+                continue;
+            }
             if (sh->occluded) {
                 sh->occluded[i] = (RTboolean)trace_scene_any(&sh->scene, r->org, r->dir, r->tmin,
                                                              r->tmax, counters);
@@ -381,14 +506,7 @@ static void query_task(void *arg, int worker)
                 miss(out);
                 continue;
             }
-            const struct trace_instance *ti = &sh->scene.instances[h.instance];
-            const struct scene_object *object = ti->object;
-            out->t = h.t;
-            out->u = h.u;
-            out->v = h.v;
-            out->instance = ti->instance_id;
-            out->object = object->name;
-            out->primitive = h.prim;
+            store_hit(sh, &h, out);
         }
     }
 }

@@ -19,6 +19,17 @@ struct shade_context {
      * (scene_appearance.raster): only then does a primary hit look its
      * instance's raster state up (blend.c). */
     int see_through;
+    /* NULL, or the first hit of the camera ray being shaded, already
+     * traced with tmin 0 in a packet by the tile loop (render.c): the
+     * first trace of render/gl_shade.c's gl_closest_drawn takes it
+     * instead of tracing again.  The same hit bit for bit
+     * (trace/packet_scene.h). */
+    const struct shade_primed *primed;
+};
+
+struct shade_primed {
+    int found;
+    struct trace_scene_hit hit;
 };
 
 /*

@@ -17,6 +17,7 @@
 #include <stddef.h>
 
 #include "trace/bvh4_layout.h"
+#include "trace/packet.h"
 #include "trace/trace.h"
 
 enum trace_isa {
@@ -49,6 +50,13 @@ struct trace_kernels {
      * (AVX2, AVX-512); the width a context's objects are collapsed to
      * (bvh_build_params.wide_layout). */
     uint32_t wide_width;
+    /* Packet walks over the wide layout (packet.h, packet_wide.h): up to
+     * TRACE_PACKET rays at once, each with closest4's (any4's) answer bit
+     * for bit.  NULL in the scalar table, and in a context's copy of a
+     * table when its configuration says packets=off: every caller then
+     * traces ray by ray, which is how packets on and off are compared. */
+    trace_packet_closest_fn closest_packet;
+    trace_packet_any_fn any_packet;
 };
 
 /* The table of an ISA, or NULL when this build has no such table or this

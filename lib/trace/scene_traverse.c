@@ -29,6 +29,25 @@ static int usable_direction(const float d[3])
            (d[0] != 0.0f || d[1] != 0.0f || d[2] != 0.0f);
 }
 
+int trace_scene_object_ray(const struct trace_instance *inst, const float org[3],
+                           const float dir[3], float tmin, const struct trace_ray *world,
+                           struct trace_ray *o_ray)
+{
+    float o_org[3], o_dir[3];
+    to_object_space(inst->world_to_object, org, dir, o_org, o_dir);
+    if (!usable_direction(o_dir))
+        return 0;
+    /* An instance whose matrix leaves the ray as it is (the identity, as
+     * for a scene of one static object) reuses the world ray's set-up:
+     * trace_ray_init depends on org, dir and tmin alone, so that is the
+     * same ray bit for bit, without its five divisions. */
+    if (memcmp(o_org, org, sizeof(o_org)) == 0 && memcmp(o_dir, dir, sizeof(o_dir)) == 0)
+        *o_ray = *world;
+    else
+        trace_ray_init(o_ray, o_org, o_dir, tmin);
+    return 1;
+}
+
 /* The per-ray state both top-level walks share. */
 struct top_state {
     const struct trace_scene *scene;
@@ -57,19 +76,9 @@ static int visit_instance(struct top_state *s, uint32_t index)
     counters->instance_tests++;
     if (!scene->acquire(scene->user, inst->object, &view))
         return 0;
-    float o_org[3], o_dir[3];
-    to_object_space(inst->world_to_object, s->org, s->dir, o_org, o_dir);
-    if (!usable_direction(o_dir))
-        return 0;
-    /* An instance whose matrix leaves the ray as it is (the identity, as
-     * for a scene of one static object) reuses the world ray's set-up:
-     * trace_ray_init depends on org, dir and tmin alone, so that is the
-     * same ray bit for bit, without its five divisions. */
     struct trace_ray o_ray;
-    if (memcmp(o_org, s->org, sizeof(o_org)) == 0 && memcmp(o_dir, s->dir, sizeof(o_dir)) == 0)
-        o_ray = s->ray;
-    else
-        trace_ray_init(&o_ray, o_org, o_dir, s->tmin);
+    if (!trace_scene_object_ray(inst, s->org, s->dir, s->tmin, &s->ray, &o_ray))
+        return 0;
     /* The wide walk where the table has one and the object a wide
      * layout: the same answers (kernels.h). */
     const int wide = view.wide && view.wide->node_count && kernels->closest4;
@@ -175,9 +184,9 @@ static int walk_binary(struct top_state *s)
  * for a NaN first one, which is the same rule), the far scale, the clamp
  * to t_max.  The lanes are binary nodes' boxes bit for bit.
  */
-static unsigned wide_lanes(const float *bounds, uint32_t width, const int near_row[3],
-                           const int far_row[3], const struct trace_ray *ray, float t_max,
-                           float t_entry[8])
+unsigned trace_scene_wide_lanes(const float *bounds, uint32_t width, const int near_row[3],
+                                const int far_row[3], const struct trace_ray *ray, float t_max,
+                                float t_entry[8])
 {
     unsigned mask = 0;
 #if ISECT_PAIR_SSE
@@ -278,7 +287,7 @@ static int walk_wide(struct top_state *s, const struct bvh4 *wide)
             }
             counters->top_node_tests += width;
             float te[8];
-            unsigned mask = wide_lanes(bounds, width, near_row, far_row, ray, s->box_limit, te);
+            unsigned mask = trace_scene_wide_lanes(bounds, width, near_row, far_row, ray, s->box_limit, te);
             if (mask) {
                 /* Push the hit lanes back to front in the octant's order
                  * (3 bits per position here), then take the front one. */

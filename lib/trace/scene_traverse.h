@@ -81,4 +81,21 @@ int trace_scene_closest(const struct trace_scene *scene, const float org[3], con
 int trace_scene_any(const struct trace_scene *scene, const float org[3], const float dir[3],
                     float tmin, float tmax, struct trace_scene_counters *counters);
 
+/*
+ * Pieces of the single-ray walk that the packet walk (packet_scene.c)
+ * repeats ray by ray, so that its answers are the same bit for bit.
+ * trace_scene_object_ray: the world ray (org, dir, tmin; `world` its
+ * set-up) in the instance's object space, set up; 0 when the transformed
+ * direction cannot be traced (the instance is skipped).
+ * trace_scene_wide_lanes: the lanes of a wide top-level node
+ * (bounds[row * width + lane]) whose boxes the ray's [tmin, t_max]
+ * meets, with their entry distances.
+ */
+int trace_scene_object_ray(const struct trace_instance *inst, const float org[3],
+                           const float dir[3], float tmin, const struct trace_ray *world,
+                           struct trace_ray *o_ray);
+unsigned trace_scene_wide_lanes(const float *bounds, uint32_t width, const int near_row[3],
+                                const int far_row[3], const struct trace_ray *ray, float t_max,
+                                float t_entry[8]);
+
 #endif

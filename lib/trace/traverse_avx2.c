@@ -14,10 +14,14 @@
 #define TRACE_WIDE_CLOSEST trace_closest4_avx2
 #define TRACE_WIDE_ANY trace_any4_avx2
 #include "trace/traverse_wide.h"
+#define TRACE_PACKET_CLOSEST trace_closest_packet_avx2
+#define TRACE_PACKET_ANY trace_any_packet_avx2
+#include "trace/packet_wide.h"
 
 static const struct trace_kernels table = {
     TRACE_ISA_AVX2, "avx2", trace_closest_avx2, trace_any_avx2,
-    trace_closest4_avx2, trace_any4_avx2, 8};
+    trace_closest4_avx2, trace_any4_avx2, 8,
+    trace_closest_packet_avx2, trace_any_packet_avx2};
 
 const struct trace_kernels *trace_kernels_avx2(void)
 {

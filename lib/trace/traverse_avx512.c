@@ -14,10 +14,14 @@
 #define TRACE_WIDE_CLOSEST trace_closest4_avx512
 #define TRACE_WIDE_ANY trace_any4_avx512
 #include "trace/traverse_wide.h"
+#define TRACE_PACKET_CLOSEST trace_closest_packet_avx512
+#define TRACE_PACKET_ANY trace_any_packet_avx512
+#include "trace/packet_wide.h"
 
 static const struct trace_kernels table = {
     TRACE_ISA_AVX512, "avx512", trace_closest_avx512, trace_any_avx512,
-    trace_closest4_avx512, trace_any4_avx512, 8};
+    trace_closest4_avx512, trace_any4_avx512, 8,
+    trace_closest_packet_avx512, trace_any_packet_avx512};
 
 const struct trace_kernels *trace_kernels_avx512(void)
 {

@@ -105,11 +105,16 @@ static inline void wide_prefetch(const void *node, size_t bytes)
 }
 
 /* Forced inline, as wide_leaf: inlined into walk_wide, the state's
- * address never escapes and its fields live in registers. */
+ * address never escapes and its fields live in registers.  The walk
+ * starts at `root` (a wide node for root_count 0, else a leaf lane of
+ * root_count triangles from packet `root`): 0, 0 for the whole tree; the
+ * packet walk (packet_wide.h) hands a subtree to it when few of its rays
+ * are left (the hybrid fallback). */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline int walk_wide4(const struct bvh4 *wide, struct wide_state *s)
+static inline int walk_wide4(const struct bvh4 *wide, struct wide_state *s, uint32_t root,
+                             uint32_t root_count)
 {
     const struct trace_ray *ray = s->ray;
     const struct bvh4_node *nodes = wide->nodes;
@@ -132,8 +137,8 @@ static inline int walk_wide4(const struct bvh4 *wide, struct wide_state *s)
     const __m128 scale4 = _mm_set1_ps(ISECT_BOX_FAR_SCALE);
     struct wide_entry stack[WIDE_STACK];
     uint32_t sp = 0;
-    uint32_t cur = 0;
-    uint32_t cur_count = 0;
+    uint32_t cur = root;
+    uint32_t cur_count = root_count;
     for (;;) {
         if (cur_count) {
             if (wide_leaf(s, wide->packets, cur, cur_count))
@@ -199,7 +204,8 @@ static inline int walk_wide4(const struct bvh4 *wide, struct wide_state *s)
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline int walk_wide8(const struct bvh4 *wide, struct wide_state *s)
+static inline int walk_wide8(const struct bvh4 *wide, struct wide_state *s, uint32_t root,
+                             uint32_t root_count)
 {
     const struct trace_ray *ray = s->ray;
     const struct bvh8_node *nodes = wide->nodes8;
@@ -219,8 +225,8 @@ static inline int walk_wide8(const struct bvh4 *wide, struct wide_state *s)
     const __m256 scale8 = _mm256_set1_ps(ISECT_BOX_FAR_SCALE);
     struct wide_entry stack[WIDE_STACK];
     uint32_t sp = 0;
-    uint32_t cur = 0;
-    uint32_t cur_count = 0;
+    uint32_t cur = root;
+    uint32_t cur_count = root_count;
     for (;;) {
         if (cur_count) {
             if (wide_leaf(s, wide->packets, cur, cur_count))
@@ -306,10 +312,10 @@ static inline int walk_wide(const struct bvh4 *wide, const struct bvh *bvh, cons
     s.triangle_tests = 0;
     int done;
     if (wide->width == 4)
-        done = walk_wide4(wide, &s);
+        done = walk_wide4(wide, &s, 0, 0);
 #if defined(__AVX__)
     else if (wide->width == 8)
-        done = walk_wide8(wide, &s);
+        done = walk_wide8(wide, &s, 0, 0);
 #endif
     else
         return walk(bvh, tri, ray, t_max, any_hit, hit, counters);

@@ -1,0 +1,61 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * packet.h - ray packets: up to TRACE_PACKET coherent rays walked through
+ * one BVH together (Wald, Slusallek, Benthin and Wagner 2001; Wald,
+ * Benthin and Boulos 2008 for wide BVHs), with the same answers as the
+ * single-ray walk bit for bit.
+ *
+ * A packet visits a node once for all its active rays: the node is
+ * fetched once, the stack is pushed and popped once, and each child
+ * carries the mask of the rays whose box test it passed.  Every box and
+ * triangle test is the single-ray walk's own, ray by ray (each ray with
+ * its own near/far planes, so rays of one packet need not share the
+ * octant of their directions: after an instance transform they may not,
+ * Wald, Benthin and Slusallek 2003 sec. 4.4), and the closest-hit rule
+ * (smallest t, ties to the lower primitive, traverse_walk.h) does not
+ * depend on the order of visits; so a ray of a packet gets exactly the
+ * hit it gets alone, only the node and triangle counts differ.
+ *
+ * Hybrid fallback (Benthin, Wald, Woop, Ernst and Mark 2012, Embree's
+ * hybrid traversal): when fewer than TRACE_PACKET_HYBRID rays of a
+ * packet are left in a subtree, each continues alone through the
+ * single-ray walk from that subtree's root (docs/performance.md has the
+ * measurement behind the threshold).
+ */
+#ifndef RT_TRACE_PACKET_H
+#define RT_TRACE_PACKET_H
+
+#include <stdint.h>
+
+#include "trace/bvh4_layout.h"
+#include "trace/trace.h"
+
+/* Rays per packet: 8, one ray per bit of an active mask. */
+#define TRACE_PACKET 8
+/* Below this many active rays a subtree is walked ray by ray.  0: never.
+ * Measured (rtbench packets, docs/performance.md): with every box test
+ * a ray's own, a packet of few rays wastes no SIMD lanes, only its
+ * bookkeeping, and falling back at 2, 3, 4 or 6 rays was up to 10%
+ * slower than never on the coherent sets (within noise on two of six). */
+#define TRACE_PACKET_HYBRID 0
+
+/*
+ * The packet walks of a kernels table (kernels.h): rays[i] with
+ * t_max[i] for every bit i of `active`.  Closest: returns the mask of
+ * rays with a hit and fills hits[i] for them (others left alone), each
+ * exactly what the table's closest4 returns for that ray alone.  Any:
+ * returns the mask of occluded rays, each what any4 returns.  `hybrid`:
+ * the hybrid threshold (TRACE_PACKET_HYBRID; 0 never falls back, 9
+ * always does).  counters may be NULL.
+ */
+typedef unsigned (*trace_packet_closest_fn)(const struct bvh4 *wide, const struct bvh *bvh,
+                                            const float *tri, const struct trace_ray *rays,
+                                            const float *t_max, unsigned active,
+                                            unsigned hybrid, struct trace_hit *hits,
+                                            struct trace_counters *counters);
+typedef unsigned (*trace_packet_any_fn)(const struct bvh4 *wide, const struct bvh *bvh,
+                                        const float *tri, const struct trace_ray *rays,
+                                        const float *t_max, unsigned active, unsigned hybrid,
+                                        struct trace_counters *counters);
+
+#endif

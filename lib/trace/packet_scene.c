@@ -1,0 +1,309 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * packet_scene.c - two-level packet traversal (packet_scene.h).
+ *
+ * The top-level walk of scene_traverse.c, with a packet: each node's
+ * lanes are tested ray by ray with trace_scene_wide_lanes (the single
+ * walk's own test), each lane carries the mask of rays that entered it
+ * and the smallest of their entry distances, and a popped lane is left
+ * by the rays whose closest hit lies in front of it.  An instance leaf
+ * transforms each ray with trace_scene_object_ray, as visit_instance
+ * does, and walks the object with the kernels' packet walk (or ray by
+ * ray when one ray is left); each ray's hit is then merged with
+ * visit_instance's rule (ties to the lower instance), which does not
+ * depend on the order of visits.
+ */
+#include "trace/packet_scene.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "trace/intersect.h"
+
+struct packet_top {
+    const struct trace_scene *scene;
+    const struct trace_kernels *kernels;
+    const struct trace_packet *p;
+    int any_hit;
+    struct trace_scene_hit *hits;
+    struct trace_scene_counters *counters;
+    struct trace_ray ray[TRACE_PACKET];
+    float best[TRACE_PACKET];
+    float box_limit[TRACE_PACKET];
+    int near_row[TRACE_PACKET][3];
+    int far_row[TRACE_PACKET][3];
+    int octant[TRACE_PACKET];
+    unsigned found;
+    unsigned done; /* any hit: the rays with their hit */
+};
+
+static int popcount(unsigned m)
+{
+    return __builtin_popcount(m);
+}
+
+static int first(unsigned m)
+{
+    return __builtin_ctz(m);
+}
+
+/* Instance slot `index` for the rays of mask `rays`. */
+static void visit_instance(struct packet_top *s, uint32_t index, unsigned rays)
+{
+    const struct trace_scene *scene = s->scene;
+    const struct trace_kernels *k = s->kernels;
+    struct trace_scene_counters *counters = s->counters;
+    const struct trace_instance *inst = &scene->instances[index];
+    struct trace_object_view view = {NULL, NULL, NULL};
+    counters->instance_tests += (uint64_t)popcount(rays);
+    if (!scene->acquire(scene->user, inst->object, &view))
+        return;
+    struct trace_ray o_ray[TRACE_PACKET];
+    float limit[TRACE_PACKET];
+    unsigned live = 0;
+    for (unsigned m = rays; m; m &= m - 1u) {
+        const int r = first(m);
+        if (!trace_scene_object_ray(inst, s->p->org[r], s->p->dir[r], s->p->tmin[r], &s->ray[r],
+                                    &o_ray[r]))
+            continue;
+        live |= 1u << r;
+        /* visit_instance's limits: an equal t at a lower instance still
+         * comes back, one ulp above the best. */
+        limit[r] = !s->any_hit && (s->found >> r & 1u) ? isect_next_up(s->best[r]) : s->best[r];
+    }
+    if (!live)
+        return;
+    const int wide = view.wide && view.wide->node_count && k->closest4;
+    if (s->any_hit) {
+        unsigned hit = 0;
+        if (wide && popcount(live) > 1) {
+            hit = k->any_packet(view.wide, view.bvh, view.tri, o_ray, limit, live,
+                                TRACE_PACKET_HYBRID, &counters->object);
+        } else {
+            for (unsigned m = live; m; m &= m - 1u) {
+                const int r = first(m);
+                if (wide ? k->any4(view.wide, view.bvh, view.tri, &o_ray[r], limit[r],
+                                   &counters->object)
+                         : k->any(view.bvh, view.tri, &o_ray[r], limit[r], &counters->object))
+                    hit |= 1u << r;
+            }
+        }
+        s->done |= hit;
+        return;
+    }
+    struct trace_hit h[TRACE_PACKET];
+    unsigned got = 0;
+    if (wide && popcount(live) > 1) {
+        got = k->closest_packet(view.wide, view.bvh, view.tri, o_ray, limit, live,
+                                TRACE_PACKET_HYBRID, h, &counters->object);
+    } else {
+        for (unsigned m = live; m; m &= m - 1u) {
+            const int r = first(m);
+            if (wide ? k->closest4(view.wide, view.bvh, view.tri, &o_ray[r], limit[r], &h[r],
+                                   &counters->object)
+                     : k->closest(view.bvh, view.tri, &o_ray[r], limit[r], &h[r],
+                                  &counters->object))
+                got |= 1u << r;
+        }
+    }
+    for (unsigned m = got; m; m &= m - 1u) {
+        const int r = first(m);
+        struct trace_scene_hit *hit = &s->hits[r];
+        const int found = s->found >> r & 1u;
+        if (found && !(h[r].t < s->best[r] || index < hit->instance))
+            continue;
+        s->best[r] = h[r].t;
+        s->box_limit[r] = h[r].t * ISECT_BOX_FAR_SCALE;
+        s->found |= 1u << r;
+        hit->t = h[r].t;
+        hit->u = h[r].u;
+        hit->v = h[r].v;
+        hit->prim = h[r].prim;
+        hit->instance = index;
+    }
+}
+
+/* The packet walk of the wide top level (scene_traverse.c's walk_wide,
+ * ray by ray inside each node). */
+static void walk_top(struct packet_top *s, const struct bvh4 *wide, unsigned active)
+{
+    const struct bvh *top = s->scene->top;
+    struct trace_scene_counters *counters = s->counters;
+    const uint32_t width = wide->width;
+    struct {
+        uint32_t child;
+        uint32_t count;
+        unsigned rays;
+        float t_entry;
+    } stack[7 * BVH_MAX_DEPTH + 8];
+    uint32_t sp = 0;
+    uint32_t cur = 0, cur_count = 0;
+    unsigned rays = active;
+    for (;;) {
+        if (cur_count) {
+            for (uint32_t i = 0; i < cur_count && rays; i++) {
+                visit_instance(s, top->prim_index[cur + i], rays);
+                rays &= ~s->done;
+            }
+        } else {
+            const float *bounds;
+            const uint32_t *child;
+            const uint8_t *count;
+            uint32_t order;
+            const int octant = s->octant[first(rays)];
+            if (width == 4) {
+                const struct bvh4_node *n = &wide->nodes[cur];
+                bounds = &n->bounds[0][0];
+                child = n->child;
+                count = n->count;
+                order = 0;
+                for (int q = 0; q < 4; q++)
+                    order |= (uint32_t)(n->order[octant] >> (2 * q) & 3u) << (3 * q);
+            } else {
+                const struct bvh8_node *n = &wide->nodes8[cur];
+                bounds = &n->bounds[0][0];
+                child = n->child;
+                count = n->count;
+                order = (uint32_t)n->order[octant][0] | (uint32_t)n->order[octant][1] << 8 |
+                        (uint32_t)n->order[octant][2] << 16;
+            }
+            unsigned lane_rays[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+            float t_min[8];
+            for (uint32_t l = 0; l < width; l++)
+                t_min[l] = INFINITY;
+            for (unsigned m = rays; m; m &= m - 1u) {
+                const int r = first(m);
+                float te[8];
+                counters->top_node_tests += width;
+                unsigned in = trace_scene_wide_lanes(bounds, width, s->near_row[r],
+                                                     s->far_row[r], &s->ray[r],
+                                                     s->box_limit[r], te);
+                for (; in; in &= in - 1u) {
+                    const int l = first(in);
+                    lane_rays[l] |= 1u << r;
+                    t_min[l] = te[l] < t_min[l] ? te[l] : t_min[l];
+                }
+            }
+            const uint32_t sp0 = sp;
+            for (int q = (int)width - 1; q >= 0; q--) {
+                const unsigned l = order >> (3 * q) & 7u;
+                if (!lane_rays[l])
+                    continue;
+                stack[sp].child = child[l];
+                stack[sp].count = count[l];
+                stack[sp].rays = lane_rays[l];
+                stack[sp].t_entry = t_min[l];
+                sp++;
+            }
+            if (sp != sp0) {
+                sp--;
+                cur = stack[sp].child;
+                cur_count = stack[sp].count;
+                rays = stack[sp].rays;
+                continue;
+            }
+        }
+        for (;;) {
+            if (sp == 0)
+                return;
+            sp--;
+            rays = stack[sp].rays & ~s->done;
+            for (unsigned m = rays; m; m &= m - 1u) {
+                const int r = first(m);
+                if (!(stack[sp].t_entry <= s->box_limit[r]))
+                    rays &= ~(1u << r);
+            }
+            if (rays)
+                break;
+        }
+        cur = stack[sp].child;
+        cur_count = stack[sp].count;
+    }
+}
+
+static unsigned walk(const struct trace_scene *scene, const struct trace_packet *p, int any_hit,
+                     struct trace_scene_hit *hits, struct trace_scene_counters *counters)
+{
+    const struct trace_kernels *k = scene->kernels;
+    const struct bvh4 *wide = scene->top_wide;
+    const struct bvh *top = scene->top;
+    const unsigned active = p->active & ((1u << TRACE_PACKET) - 1u);
+    unsigned result = 0;
+    if (!k || !k->closest_packet || !k->wide_width || !wide || !wide->node_count ||
+        !(wide->width == 4 || wide->width == 8) || !top || top->node_count == 0 ||
+        popcount(active) < 2) {
+        for (unsigned m = active; m; m &= m - 1u) {
+            const int r = first(m);
+            if (any_hit ? trace_scene_any(scene, p->org[r], p->dir[r], p->tmin[r], p->tmax[r],
+                                          counters)
+                        : trace_scene_closest(scene, p->org[r], p->dir[r], p->tmin[r],
+                                              p->tmax[r], &hits[r], counters))
+                result |= 1u << r;
+        }
+        return result;
+    }
+    struct packet_top s;
+    s.scene = scene;
+    s.kernels = k;
+    s.p = p;
+    s.any_hit = any_hit;
+    s.hits = hits;
+    s.counters = counters;
+    s.found = 0;
+    s.done = 0;
+    unsigned live = 0;
+    for (unsigned m = active; m; m &= m - 1u) {
+        const int r = first(m);
+        counters->rays++;
+        if (!(p->tmin[r] < p->tmax[r]))
+            continue; /* trace_scene_closest's early miss */
+        live |= 1u << r;
+        trace_ray_init(&s.ray[r], p->org[r], p->dir[r], p->tmin[r]);
+        s.best[r] = p->tmax[r];
+        s.box_limit[r] = p->tmax[r];
+        int octant = 0;
+        for (int a = 0; a < 3; a++) {
+            const int neg = signbit(s.ray[r].inv_dir[a]) != 0;
+            s.near_row[r][a] = neg ? 3 + a : a;
+            s.far_row[r][a] = neg ? a : 3 + a;
+            octant |= neg << a;
+        }
+        s.octant[r] = octant;
+    }
+    if (live)
+        walk_top(&s, wide, live);
+    return any_hit ? s.done : s.found;
+}
+
+unsigned trace_scene_closest_packet(const struct trace_scene *scene, const struct trace_packet *p,
+                                    struct trace_scene_hit hits[TRACE_PACKET],
+                                    struct trace_scene_counters *counters)
+{
+    return walk(scene, p, 0, hits, counters);
+}
+
+unsigned trace_scene_any_packet(const struct trace_scene *scene, const struct trace_packet *p,
+                                struct trace_scene_counters *counters)
+{
+    return walk(scene, p, 1, NULL, counters);
+}
+
+int trace_packet_coherent(const float *const dir[], int n)
+{
+    if (n < 2)
+        return 0;
+    const float *d0 = dir[0];
+    const float l0 = d0[0] * d0[0] + d0[1] * d0[1] + d0[2] * d0[2];
+    for (int i = 1; i < n; i++) {
+        const float *d = dir[i];
+        for (int k = 0; k < 3; k++)
+            if (signbit(d[k]) != signbit(d0[k]))
+                return 0;
+        const float dot = d[0] * d0[0] + d[1] * d0[1] + d[2] * d0[2];
+        const float l = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        /* cos > 0.9 (about 25 degrees), without a square root. */
+        if (!(dot > 0.0f) || !(dot * dot > 0.81f * l * l0))
+            return 0;
+    }
+    return 1;
+}

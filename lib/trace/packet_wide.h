@@ -1,0 +1,299 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * packet_wide.h - the packet walk over the wide layout (packet.h),
+ * included by the SIMD translation units (kernels.h) after
+ * traverse_wide.h, whose per-ray pieces it reuses: each ray of a packet
+ * keeps the single-ray walk's state (struct wide_state), every box test
+ * of a ray is walk_wide4's or walk_wide8's float operations on that
+ * ray's own near and far planes, every leaf is wide_leaf for that ray,
+ * and a subtree left with fewer than `hybrid` rays is walked by
+ * walk_wide4/walk_wide8 itself from its root, ray by ray.  So each ray
+ * gets the single walk's hit bit for bit (traverse_wide.h gives the
+ * argument that neither skipped inner nodes nor the order of visits
+ * changes it; a packet only visits, for each ray, nodes whose box that
+ * ray's own test accepted, in the order of the packet's first ray).
+ * Define TRACE_PACKET_CLOSEST and TRACE_PACKET_ANY.
+ *
+ * A node's children are tested ray by ray (one SIMD test over the
+ * children per ray), and the results are transposed into a mask of rays
+ * per child with one AND and OR per ray; a pushed child keeps the
+ * smallest entry distance of its rays, and is skipped on pop for the
+ * rays whose closest hit so far lies in front of it.
+ */
+#include "trace/packet.h"
+
+struct packet_entry {
+    uint32_t child;
+    uint32_t count; /* 0: wide node, else a leaf lane */
+    unsigned rays;  /* the rays that enter it */
+    float t_entry;  /* the smallest of their entry distances */
+};
+
+/* The rays of a packet: the single walk's state per ray, its near and
+ * far bound rows per axis and its octant (traverse_wide.h). */
+struct packet_state {
+    struct wide_state s[TRACE_PACKET];
+    int near_row[TRACE_PACKET][3];
+    int far_row[TRACE_PACKET][3];
+    int octant[TRACE_PACKET];
+};
+
+/* Ray r against the four children of n: walk_wide4's operations.  Adds
+ * r's bit to rays[l] for each child l it enters and folds its entry
+ * distances into *t_min. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void packet_box4(const struct bvh4_node *n, struct packet_state *p, unsigned r,
+                               __m128 *rays, __m128 *t_min)
+{
+    const struct trace_ray *ray = p->s[r].ray;
+    __m128 t0 = _mm_set1_ps(ray->tmin);
+    __m128 t1 = _mm_set1_ps(INFINITY);
+    for (int k = 0; k < 3; k++) {
+        const __m128 o = _mm_set1_ps(ray->org[k]);
+        const __m128 inv = _mm_set1_ps(ray->inv_dir[k]);
+        const __m128 tn = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(n->bounds[p->near_row[r][k]]), o), inv);
+        const __m128 tf = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(n->bounds[p->far_row[r][k]]), o), inv);
+        t0 = _mm_max_ps(tn, t0);
+        t1 = _mm_min_ps(tf, t1);
+    }
+    t1 = _mm_mul_ps(t1, _mm_set1_ps(ISECT_BOX_FAR_SCALE));
+    t1 = _mm_min_ps(t1, _mm_set1_ps(p->s[r].box_limit));
+    const __m128 in = _mm_cmple_ps(t0, t1);
+    p->s[r].node_tests += 4;
+    *rays = _mm_or_ps(*rays, _mm_and_ps(in, _mm_castsi128_ps(_mm_set1_epi32((int)(1u << r)))));
+    *t_min = _mm_min_ps(*t_min, _mm_blendv_ps(_mm_set1_ps(INFINITY), t0, in));
+}
+
+#if defined(__AVX__)
+/* Ray r against the eight children of n: walk_wide8's operations. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void packet_box8(const struct bvh8_node *n, struct packet_state *p, unsigned r,
+                               __m256 *rays, __m256 *t_min)
+{
+    const struct trace_ray *ray = p->s[r].ray;
+    __m256 t0 = _mm256_set1_ps(ray->tmin);
+    __m256 t1 = _mm256_set1_ps(INFINITY);
+    for (int k = 0; k < 3; k++) {
+        const __m256 o = _mm256_set1_ps(ray->org[k]);
+        const __m256 inv = _mm256_set1_ps(ray->inv_dir[k]);
+        const __m256 tn =
+            _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(n->bounds[p->near_row[r][k]]), o), inv);
+        const __m256 tf =
+            _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(n->bounds[p->far_row[r][k]]), o), inv);
+        t0 = _mm256_max_ps(tn, t0);
+        t1 = _mm256_min_ps(tf, t1);
+    }
+    t1 = _mm256_mul_ps(t1, _mm256_set1_ps(ISECT_BOX_FAR_SCALE));
+    t1 = _mm256_min_ps(t1, _mm256_set1_ps(p->s[r].box_limit));
+    const __m256 in = _mm256_cmp_ps(t0, t1, _CMP_LE_OQ);
+    p->s[r].node_tests += 8;
+    *rays = _mm256_or_ps(*rays,
+                         _mm256_and_ps(in, _mm256_castsi256_ps(_mm256_set1_epi32((int)(1u << r)))));
+    *t_min = _mm256_min_ps(*t_min, _mm256_blendv_ps(_mm256_set1_ps(INFINITY), t0, in));
+}
+#endif
+
+/* The packet walk of a `width`-wide layout (4, or 8 with AVX); returns
+ * the rays an any-hit walk found a hit for (0 for closest hit, whose
+ * hits are in the states). */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline unsigned packet_walk(const struct bvh4 *wide, struct packet_state *p,
+                                   unsigned active, unsigned hybrid, const uint32_t width)
+{
+    struct packet_entry stack[WIDE_STACK];
+    uint32_t sp = 0;
+    uint32_t cur = 0, cur_count = 0;
+    unsigned rays = active;
+    unsigned done = 0;
+    for (;;) {
+        if ((unsigned)__builtin_popcount(rays) < hybrid) {
+            /* Hybrid: the few rays left take the single walk from here. */
+            for (unsigned m = rays; m; m &= m - 1u) {
+                const unsigned r = (unsigned)__builtin_ctz(m);
+                int found;
+#if defined(__AVX__)
+                if (width == 8)
+                    found = walk_wide8(wide, &p->s[r], cur, cur_count);
+                else
+#endif
+                    found = walk_wide4(wide, &p->s[r], cur, cur_count);
+                if (found)
+                    done |= 1u << r;
+            }
+        } else if (cur_count) {
+            for (unsigned m = rays; m; m &= m - 1u) {
+                const unsigned r = (unsigned)__builtin_ctz(m);
+                if (wide_leaf(&p->s[r], wide->packets, cur, cur_count))
+                    done |= 1u << r;
+            }
+        } else {
+            uint32_t lane_rays[8];
+            float t_min[8];
+            const uint32_t *child;
+            const uint8_t *count;
+            uint32_t order; /* 3 bits per position */
+            const int octant = p->octant[__builtin_ctz(rays)];
+#if defined(__AVX__)
+            if (width == 8) {
+                const struct bvh8_node *n = &wide->nodes8[cur];
+                __m256 in = _mm256_setzero_ps();
+                __m256 tm = _mm256_set1_ps(INFINITY);
+                for (unsigned m = rays; m; m &= m - 1u)
+                    packet_box8(n, p, (unsigned)__builtin_ctz(m), &in, &tm);
+                _mm256_storeu_ps((float *)lane_rays, in);
+                _mm256_storeu_ps(t_min, tm);
+                child = n->child;
+                count = n->count;
+                order = (uint32_t)n->order[octant][0] | (uint32_t)n->order[octant][1] << 8 |
+                        (uint32_t)n->order[octant][2] << 16;
+            } else
+#endif
+            {
+                const struct bvh4_node *n = &wide->nodes[cur];
+                __m128 in = _mm_setzero_ps();
+                __m128 tm = _mm_set1_ps(INFINITY);
+                for (unsigned m = rays; m; m &= m - 1u)
+                    packet_box4(n, p, (unsigned)__builtin_ctz(m), &in, &tm);
+                _mm_storeu_ps((float *)lane_rays, in);
+                _mm_storeu_ps(t_min, tm);
+                child = n->child;
+                count = n->count;
+                order = 0;
+                for (int q = 0; q < 4; q++)
+                    order |= (uint32_t)(n->order[octant] >> (2 * q) & 3u) << (3 * q);
+            }
+            const uint32_t sp0 = sp;
+            for (int q = (int)width - 1; q >= 0; q--) {
+                const unsigned l = order >> (3 * q) & 7u;
+                if (!lane_rays[l])
+                    continue;
+                stack[sp].child = child[l];
+                stack[sp].count = count[l];
+                stack[sp].rays = lane_rays[l];
+                stack[sp].t_entry = t_min[l];
+                sp++;
+            }
+            if (sp != sp0) {
+                sp--;
+                cur = stack[sp].child;
+                cur_count = stack[sp].count;
+                rays = stack[sp].rays;
+                continue;
+            }
+        }
+        for (;;) {
+            if (sp == 0)
+                return done;
+            sp--;
+            rays = stack[sp].rays & ~done;
+            /* The rays whose closest hit lies in front of the subtree
+             * leave it, as the single walk's pop skips it. */
+            const float t_entry = stack[sp].t_entry;
+            for (unsigned m = rays; m; m &= m - 1u) {
+                const unsigned r = (unsigned)__builtin_ctz(m);
+                if (!(t_entry <= p->s[r].box_limit))
+                    rays &= ~(1u << r);
+            }
+            if (rays)
+                break;
+        }
+        cur = stack[sp].child;
+        cur_count = stack[sp].count;
+    }
+}
+
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh,
+                                  const float *tri, const struct trace_ray *rays,
+                                  const float *t_max, unsigned active, unsigned hybrid,
+                                  int any_hit, struct trace_hit *hits,
+                                  struct trace_counters *counters)
+{
+    active &= (1u << TRACE_PACKET) - 1u;
+    unsigned result = 0;
+    int packet = active && wide->node_count && wide->width == 4;
+#if defined(__AVX__)
+    packet |= active && wide->node_count && wide->width == 8;
+#endif
+    if (!packet) {
+        /* A layout this table does not walk: ray by ray (walk_wide
+         * takes the binary walk). */
+        for (unsigned m = active; m; m &= m - 1u) {
+            const unsigned r = (unsigned)__builtin_ctz(m);
+            if (walk_wide(wide, bvh, tri, &rays[r], t_max[r], any_hit, any_hit ? NULL : &hits[r],
+                          counters))
+                result |= 1u << r;
+        }
+        return result;
+    }
+    struct packet_state p;
+    for (unsigned m = active; m; m &= m - 1u) {
+        const unsigned r = (unsigned)__builtin_ctz(m);
+        struct wide_state *s = &p.s[r];
+        const struct trace_ray *ray = &rays[r];
+        s->ray = ray;
+        tri4_ray_init(&s->r4, ray);
+        s->any_hit = any_hit;
+        s->hit = any_hit ? NULL : &hits[r];
+        s->found = 0;
+        s->best = t_max[r];
+        s->box_limit = t_max[r] * ISECT_BOX_FAR_SCALE; /* as walk_wide */
+        s->node_tests = 0;
+        s->triangle_tests = 0;
+        int octant = 0;
+        for (int k = 0; k < 3; k++) {
+            const int neg = signbit(ray->inv_dir[k]) != 0;
+            p.near_row[r][k] = neg ? 3 + k : k;
+            p.far_row[r][k] = neg ? k : 3 + k;
+            octant |= neg << k;
+        }
+        p.octant[r] = octant;
+    }
+    unsigned done;
+#if defined(__AVX__)
+    if (wide->width == 8)
+        done = packet_walk(wide, &p, active, hybrid, 8);
+    else
+#endif
+        done = packet_walk(wide, &p, active, hybrid, 4);
+    for (unsigned m = active; m; m &= m - 1u) {
+        const unsigned r = (unsigned)__builtin_ctz(m);
+        if (counters) {
+            counters->node_tests += p.s[r].node_tests;
+            counters->triangle_tests += p.s[r].triangle_tests;
+        }
+        if (!any_hit && p.s[r].found)
+            result |= 1u << r;
+    }
+    return any_hit ? done : result;
+}
+
+unsigned TRACE_PACKET_CLOSEST(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,
+                              const struct trace_ray *rays, const float *t_max, unsigned active,
+                              unsigned hybrid, struct trace_hit *hits,
+                              struct trace_counters *counters);
+unsigned TRACE_PACKET_CLOSEST(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,
+                              const struct trace_ray *rays, const float *t_max, unsigned active,
+                              unsigned hybrid, struct trace_hit *hits,
+                              struct trace_counters *counters)
+{
+    return packet_run(wide, bvh, tri, rays, t_max, active, hybrid, 0, hits, counters);
+}
+
+unsigned TRACE_PACKET_ANY(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,
+                          const struct trace_ray *rays, const float *t_max, unsigned active,
+                          unsigned hybrid, struct trace_counters *counters);
+unsigned TRACE_PACKET_ANY(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,
+                          const struct trace_ray *rays, const float *t_max, unsigned active,
+                          unsigned hybrid, struct trace_counters *counters)
+{
+    return packet_run(wide, bvh, tri, rays, t_max, active, hybrid, 1, NULL, counters);
+}
