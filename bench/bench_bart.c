@@ -162,7 +162,6 @@ static const struct strategy museum_strategies[] = {
     {"RT_AUTOMATIC", "automatic", RT_AUTOMATIC},
 };
 #define MUSEUM_STRATEGIES ((int)(sizeof(museum_strategies) / sizeof(museum_strategies[0])))
-#define STRATEGY_CONFIG "threads=2 build_threads=1"
 
 static const struct strategy robot_strategies[] = {
     {"RT_REFIT", "refit", RT_REFIT},
@@ -324,6 +323,7 @@ struct frame {
     double render_ms;   /* call_ms - update_ms, lazy builds included */
     double toplevel_ms, build_ms, object_update_ms;
     double rays, node_tests, triangle_tests, instance_tests;
+    double cpu_ms; /* process CPU time of describe + rtRenderFrame */
     int object_builds, toplevel_builds, object_updates;
 };
 
@@ -369,7 +369,8 @@ static void render_frame(const struct bart_ctx *c, int f, int w, int h, RTuint f
     double t1 = rt_now_ms();
     rtRenderFrame();
     double t2 = rt_now_ms();
-    bench_share_add(c->threads, t2 - t0, bench_cpu_ms() - cpu0);
+    out->cpu_ms = bench_cpu_ms() - cpu0;
+    bench_share_add(c->threads, t2 - t0, out->cpu_ms);
     out->total_ms = t2 - t0;
     out->describe_ms = t1 - t0;
     out->call_ms = t2 - t1;
@@ -778,6 +779,7 @@ static void tpa_mesh_release(struct tpa_mesh *m)
 /* One run of one strategy over the museum; per-frame arrays. */
 struct museum_series {
     double *frame_ms, *update_ms, *sah_ratio;
+    double *cpu_ms, *tests; /* process CPU time; node + triangle tests */
     int rebuilds, refits;
 };
 
@@ -789,13 +791,33 @@ struct museum_setup {
     unsigned char *pixels;
     int image_mismatches[MUSEUM_STRATEGIES];
     int sah_mismatches; /* RT_REBUILD frames whose cost differs from the harness's */
+    int has_reference;  /* reference[] holds the first strategy's images */
+    const char *config;  /* the strategy contexts' configuration */
+    int threads;
+    FILE *decisions;     /* per-frame log of the first run, or NULL */
 };
+
+/* One line of the per-frame decision log (bart_museum_decisions.dat):
+ * what the update of the unstructured object did and the inputs of
+ * RT_AUTOMATIC's rule (lib/scene/update.c), read through the context as
+ * rtbench may (it links the static core). */
+static void log_decision(FILE *log, const char *key, int f, RTuint name, const struct frame *fr,
+                         double sah_ratio)
+{
+    struct bench_automatic_state a;
+    if (bench_automatic_state(name, &a))
+        return;
+    fprintf(log, "%s %d %d %.4f %.0f %.0f %.3f %.4f %.3g %.0f %.4f %.4f %.4f %.4f\n", key, f,
+            a.rebuilds, sah_ratio, fr->rays, fr->node_tests + fr->triangle_tests, fr->cpu_ms,
+            fr->update_ms, a.ms_per_test, a.expected_rays, a.lost_ms, a.build_ms, a.sah_cost,
+            a.built_sah_cost);
+}
 
 static int museum_run(struct museum_setup *m, int si, int first, struct museum_series *out)
 {
     struct bart_ctx c;
     RTuint names[MAX_UNSTRUCTURED];
-    if (ctx_open(&c, m->dir, &scene_info[MUSEUM], STRATEGY_CONFIG, 2))
+    if (ctx_open(&c, m->dir, &scene_info[MUSEUM], m->config, m->threads))
         return -1;
     int un = unstructured_names(&c, names);
     if (un < 1) {
@@ -811,9 +833,14 @@ static int museum_run(struct museum_setup *m, int si, int first, struct museum_s
         render_frame(&c, f, m->w, m->h, 0, &fr);
         out->frame_ms[f] = fr.total_ms;
         out->update_ms[f] = fr.update_ms;
+        out->cpu_ms[f] = fr.cpu_ms;
+        out->tests[f] = fr.node_tests + fr.triangle_tests;
         RTfloat sah = 0.0f;
         rtGetObjectfv(names[0], RT_OBJECT_SAH_COST, &sah);
         out->sah_ratio[f] = m->sweep_sah[f] > 0.0 ? sah / m->sweep_sah[f] : 0.0;
+        if (m->decisions)
+            log_decision(m->decisions, museum_strategies[si].key, f, names[0], &fr,
+                         out->sah_ratio[f]);
         if (museum_strategies[si].value == RT_REBUILD &&
             fabs(sah - m->binned_sah[f]) > BART_SAH_TOLERANCE * m->binned_sah[f])
             m->sah_mismatches++;
@@ -841,6 +868,19 @@ static double sum_of(const double *x, int n)
     return s;
 }
 
+/* --only KEYS (comma-separated strategy keys: refit, rebuild, ...): run
+ * only those; all when not given. */
+static int strategy_selected(const struct bench_options *opts, const char *key)
+{
+    if (!opts->only)
+        return 1;
+    size_t n = strlen(key);
+    for (const char *p = opts->only; (p = strstr(p, key)) != NULL; p += n)
+        if ((p == opts->only || p[-1] == ',') && (p[n] == ',' || p[n] == '\0'))
+            return 1;
+    return 0;
+}
+
 static int museum_strategies_table(const struct bench_options *opts, const char *dir)
 {
     const int runs = opts->runs < BART_STRATEGY_RUNS ? opts->runs : BART_STRATEGY_RUNS;
@@ -848,12 +888,19 @@ static int museum_strategies_table(const struct bench_options *opts, const char 
     struct tpa_mesh tpa;
     struct bart_ctx probe;
     double *buf = NULL, *ref = NULL;
+    FILE *decisions = NULL;
     int done[MUSEUM_STRATEGIES], rebuilds[MUSEUM_STRATEGIES], refits[MUSEUM_STRATEGIES];
     int rc = -1;
     memset(&m, 0, sizeof(m));
     memset(&tpa, 0, sizeof(tpa));
     memset(done, 0, sizeof(done));
     m.dir = dir;
+    /* --threads N: the strategies' contexts on N render threads (one
+     * build thread for RT_ASYNC_REBUILD either way). */
+    char config[64];
+    m.threads = opts->threads > 0 ? opts->threads : 2;
+    snprintf(config, sizeof(config), "threads=%d build_threads=1", m.threads);
+    m.config = config;
     m.w = opts->quick ? BART_QUICK_WIDTH : BART_STRATEGY_WIDTH;
     m.h = opts->quick ? BART_QUICK_HEIGHT : BART_STRATEGY_HEIGHT;
 
@@ -864,7 +911,7 @@ static int museum_strategies_table(const struct bench_options *opts, const char 
                                                                         : probe.frames;
     const int frames = m.frames;
     const size_t per = (size_t)MUSEUM_STRATEGIES * runs * frames;
-    buf = calloc(3 * per, sizeof(double));
+    buf = calloc(5 * per, sizeof(double));
     ref = malloc(2 * (size_t)frames * sizeof(double));
     m.reference = malloc((size_t)frames * sizeof(uint64_t));
     m.pixels = malloc((size_t)m.w * (size_t)m.h * 4);
@@ -887,16 +934,27 @@ static int museum_strategies_table(const struct bench_options *opts, const char 
     m.sweep_sah = ref;
     m.binned_sah = ref + frames;
 
+    decisions = report_data_file("bart_museum_decisions.dat");
+    if (decisions)
+        fprintf(decisions, "# strategy frame rebuilds sah_ratio rays tests cpu_ms update_ms "
+                           "ms_per_test expected_rays lost_ms build_ms sah built_sah\n");
     for (int run = 0; run < runs; run++)
         for (int si = 0; si < MUSEUM_STRATEGIES; si++) {
             size_t o = ((size_t)si * runs + run) * frames;
-            struct museum_series series = {buf + o, buf + per + o, buf + 2 * per + o, 0, 0};
+            struct museum_series series = {buf + o,           buf + per + o,
+                                           buf + 2 * per + o, buf + 3 * per + o,
+                                           buf + 4 * per + o, 0,
+                                           0};
             if (run > 0 && sum_of(buf + (size_t)si * runs * frames, frames) > BART_SLOW_RUN_MS)
+                continue;
+            if (!strategy_selected(opts, museum_strategies[si].key))
                 continue;
             report_progress("bart: museum: %s, run %d of %d\n", museum_strategies[si].label,
                             run + 1, runs);
-            if (museum_run(&m, si, run == 0 && si == 0, &series))
+            m.decisions = run == 0 ? decisions : NULL;
+            if (museum_run(&m, si, run == 0 && !m.has_reference, &series))
                 goto out;
+            m.has_reference = 1;
             rebuilds[si] = series.rebuilds;
             refits[si] = series.refits;
             done[si] = run + 1;
@@ -937,26 +995,39 @@ static int museum_strategies_table(const struct bench_options *opts, const char 
         "included). Images: every frame's image against RT_REFIT's, bit for bit. Wald, Ize and Parker (2008) "
         "fig. 3 has no museum; its point, that refitting alone degrades under unstructured "
         "motion, is what the SAH column tests.\n\n",
-        frames, m.w, m.h, STRATEGY_CONFIG, tpa_triangles, runs, runs == 1 ? "" : "s",
+        frames, m.w, m.h, m.config, tpa_triangles, runs, runs == 1 ? "" : "s",
         BART_SLOW_RUN_MS / 1000.0);
-    report_table_header("strategy|update ms|render ms|total ms|ms/frame|vs best|median update "
+    report_printf("CPU ms: the process's CPU time over the same frames (median of the run "
+                  "totals; it does not count the time other processes took from us, so it is "
+                  "the figure to compare on a loaded machine, and \"CPU vs best\" compares it). "
+                  "Mtests: node + triangle tests over the frames, millions (RT_STAT_NODE_TESTS + "
+                  "RT_STAT_TRIANGLE_TESTS): the traversal work, independent of the load.\n\n");
+    report_table_header("strategy|update ms|render ms|total ms|ms/frame|vs best|CPU ms|CPU vs "
+                        "best|Mtests|median update "
                         "ms/frame|mean SAH ratio|max SAH ratio|rebuilds|refits|runs|images "
                         "= RT_REFIT's");
     double total[MUSEUM_STRATEGIES], update[MUSEUM_STRATEGIES], describe_render[MUSEUM_STRATEGIES];
     double median_update[MUSEUM_STRATEGIES], mean_sah[MUSEUM_STRATEGIES],
-        max_sah[MUSEUM_STRATEGIES];
+        max_sah[MUSEUM_STRATEGIES], cpu[MUSEUM_STRATEGIES], tests[MUSEUM_STRATEGIES];
+    int best_cpu;
     double *col = malloc((size_t)frames * BART_STRATEGY_RUNS * sizeof(double));
     if (!col)
         goto out;
-    int best = 0;
+    int best = -1;
+    best_cpu = -1;
     for (int si = 0; si < MUSEUM_STRATEGIES; si++) {
-        double t[BART_STRATEGY_RUNS], u[BART_STRATEGY_RUNS];
+        if (!done[si])
+            continue;
+        double t[BART_STRATEGY_RUNS], u[BART_STRATEGY_RUNS], cp[BART_STRATEGY_RUNS],
+            ts[BART_STRATEGY_RUNS];
         double ms = 0.0, mx = 0.0;
         int nu = 0;
         for (int run = 0; run < done[si]; run++) {
             size_t o = ((size_t)si * runs + run) * frames;
             t[run] = sum_of(buf + o, frames);
             u[run] = sum_of(buf + per + o, frames);
+            cp[run] = sum_of(buf + 3 * per + o, frames);
+            ts[run] = sum_of(buf + 4 * per + o, frames);
             for (int f = 0; f < frames; f++) {
                 double r = buf[2 * per + o + (size_t)f];
                 ms += r;
@@ -971,19 +1042,31 @@ static int museum_strategies_table(const struct bench_options *opts, const char 
         median_update[si] = nu ? bench_median(col, nu) : 0.0;
         mean_sah[si] = ms / ((double)done[si] * frames);
         max_sah[si] = mx;
-        if (total[si] < total[best])
+        cpu[si] = bench_median(cp, done[si]);
+        tests[si] = bench_median(ts, done[si]);
+        if (best < 0 || total[si] < total[best])
             best = si;
+        if (museum_strategies[si].value != RT_AUTOMATIC &&
+            (best_cpu < 0 || cpu[si] < cpu[best_cpu]))
+            best_cpu = si;
     }
     free(col);
     for (int si = 0; si < MUSEUM_STRATEGIES; si++) {
-        report_row("%s|%.1f|%.1f|%.1f|%.2f|%+.1f%%|%.3f|%.3f|%.3f|%d|%d|%d|%s",
+        if (!done[si])
+            continue;
+        report_row("%s|%.1f|%.1f|%.1f|%.2f|%+.1f%%|%.1f|%+.1f%%|%.2f|%.3f|%.3f|%.3f|%d|%d|%d|%s",
                    museum_strategies[si].label, update[si], describe_render[si], total[si],
-                   total[si] / frames, 100.0 * (total[si] / total[best] - 1.0), median_update[si],
+                   total[si] / frames, 100.0 * (total[si] / total[best] - 1.0), cpu[si],
+                   100.0 * (cpu[si] / cpu[best_cpu] - 1.0), tests[si] / 1e6, median_update[si],
                    mean_sah[si], max_sah[si], rebuilds[si], refits[si], done[si],
                    m.image_mismatches[si] ? "**NO**" : "yes");
         char key[96];
         snprintf(key, sizeof(key), "bart.museum.%s.total_ms", museum_strategies[si].key);
         report_metric(key, total[si], 0);
+        snprintf(key, sizeof(key), "bart.museum.%s.cpu_ms", museum_strategies[si].key);
+        report_metric(key, cpu[si], 0);
+        snprintf(key, sizeof(key), "bart.museum.%s.mtests", museum_strategies[si].key);
+        report_metric(key, tests[si] / 1e6, 0);
         snprintf(key, sizeof(key), "bart.museum.%s.mean_sah_ratio", museum_strategies[si].key);
         report_metric(key, mean_sah[si], -1);
         if (m.image_mismatches[si]) {
@@ -993,6 +1076,14 @@ static int museum_strategies_table(const struct bench_options *opts, const char 
             report_check_failed();
         }
     }
+    for (int si = 0; si < MUSEUM_STRATEGIES; si++)
+        if (museum_strategies[si].value == RT_AUTOMATIC && done[si] && best_cpu >= 0)
+            report_printf("\nBest fixed strategy by CPU time: %s (%.1f ms). RT_AUTOMATIC: %.1f "
+                          "ms, %s of it (%+.1f%%); node + triangle tests %+.1f%% against it.\n",
+                          museum_strategies[best_cpu].label, cpu[best_cpu], cpu[si],
+                          cpu[si] <= 1.1 * cpu[best_cpu] ? "within 10%" : "NOT within 10%",
+                          100.0 * (cpu[si] / cpu[best_cpu] - 1.0),
+                          100.0 * (tests[si] / tests[best_cpu] - 1.0));
     report_printf("\n(\"render\" here is describe + render: everything but the update.) "
                   "RT_OBJECT_SAH_COST after each RT_REBUILD frame against the harness's SAH "
                   "cost of a fresh binned build of the same triangles: %s.\n",
@@ -1011,14 +1102,16 @@ static int museum_strategies_table(const struct bench_options *opts, const char 
     }
     char time_title[160], sah_title[160];
     snprintf(time_title, sizeof(time_title),
-             "BART museum: describe + update + render per frame (%dx%d, eye light, 2 threads)", m.w,
-             m.h);
+             "BART museum: describe + update + render per frame (%dx%d, eye light, %d threads)", m.w,
+             m.h, m.threads);
     snprintf(sah_title, sizeof(sah_title),
              "BART museum: SAH cost of the unstructured object / fresh sweep SAH build");
     report_strategy_plots("bart_museum", "bart_museum.dat", time_title, sah_title,
                           MUSEUM_STRATEGIES, labels, has_sah);
     rc = 0;
 out:
+    if (decisions)
+        fclose(decisions);
     free(buf);
     free(ref);
     free(m.reference);

@@ -503,6 +503,22 @@ static void wide_layout_totals(RTuint name, double *collapse_ms, double *wide_re
     *wide_refit_ms = o ? o->wide_refit_ms_total : 0.0;
 }
 
+int bench_automatic_state(unsigned name, struct bench_automatic_state *out)
+{
+    struct rt_context *ctx = rt_current_context();
+    const struct scene_object *o = ctx ? scene_objects_lookup(&ctx->scene.objects, name) : NULL;
+    if (!o || !o->accel)
+        return -1;
+    out->rebuilds = (int)o->rebuilds;
+    out->ms_per_test = ctx->scene.ms_per_test;
+    out->expected_rays = o->expected_rays;
+    out->lost_ms = o->automatic_lost_ms;
+    out->build_ms = o->accel->build_ms;
+    out->sah_cost = o->accel->sah_cost;
+    out->built_sah_cost = o->accel->built_sah_cost;
+    return 0;
+}
+
 struct dyn_setup {
     struct bench_anim *anim;
     const struct bench_rays *sample;

@@ -76,6 +76,9 @@ static void usage(FILE *f)
             "  all        everything (default); bart only when its data is found\n"
             "  --quick    toy sizes and 1 run unless --runs is given: a smoke test\n"
             "  --runs N   timings are the median of N runs (default %d)\n"
+            "  --threads N  render threads of bart-strategies' contexts (default 2)\n"
+            "  --only KEYS  bart-strategies: only these strategies (refit,rebuild,median,\n"
+            "             heuristic,restructure,async,automatic)\n"
             "  --out DIR  write results.md, results.csv and PNG plots (gnuplot) to DIR\n"
             "  --baseline FILE  compare with an earlier results.csv; flag drops beyond\n"
             "             --tolerance PCT (default %.0f) and exit with status 2\n"
@@ -148,6 +151,15 @@ int main(int argc, char **argv)
                 return 1;
             }
             runs_given = 1;
+            i++;
+        } else if (!strcmp(a, "--threads") && value) {
+            if (parse_int(value, 1, 64, &opts.threads)) {
+                fprintf(stderr, "rtbench: --threads takes 1..64\n");
+                return 1;
+            }
+            i++;
+        } else if (!strcmp(a, "--only") && value) {
+            opts.only = value;
             i++;
         } else if (!strcmp(a, "--out") && value) {
             opts.out_dir = value;

@@ -24,7 +24,12 @@ static int acquire_object(void *user, void *object, struct trace_object_view *vi
     /* The common case, an object already built, takes no lock and no
      * clock reading. */
     const struct scene_accel *accel = scene_object_peek(object);
-    if (accel && accel->serial == ((const struct scene_object *)object)->serial) {
+    struct scene_object *o = object;
+    /* The rays reaching inside an object the automatic strategy updates:
+     * its cost model's expected rays (scene/prepare.c). */
+    if (o->count_rays)
+        view->ray_count = &o->ray_visits;
+    if (accel && accel->serial == o->serial) {
         view->bvh = &accel->bvh;
         view->tri = accel->tri;
         view->wide = &accel->wide;
@@ -66,6 +71,7 @@ static void shared_finish(struct render_pass *sh, struct render_stats *stats)
 {
     int n = rt_pool_threads(sh->job->pool);
     for (int i = 0; i < n; i++) {
+        trace_scene_flush_ray_count(&sh->counters[i].c);
         const struct trace_scene_counters *c = &sh->counters[i].c;
         stats->rays += c->rays;
         stats->node_tests += c->top_node_tests + c->object.node_tests;

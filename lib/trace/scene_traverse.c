@@ -4,6 +4,7 @@
  */
 #include "trace/scene_traverse.h"
 
+#include "base/atomic.h"
 #include "trace/intersect.h"
 
 #include <math.h>
@@ -27,6 +28,27 @@ static int usable_direction(const float d[3])
 {
     return isfinite(d[0]) && isfinite(d[1]) && isfinite(d[2]) &&
            (d[0] != 0.0f || d[1] != 0.0f || d[2] != 0.0f);
+}
+
+void trace_scene_flush_ray_count(struct trace_scene_counters *counters)
+{
+    if (counters->ray_count && counters->ray_count_pending)
+        rt_atomic_add_fetch_relaxed(counters->ray_count, counters->ray_count_pending);
+    counters->ray_count_pending = 0;
+}
+
+/* Counts the ray for `target` when its object walk went past the root's
+ * `root_tests` box tests (tests_before: the node tests before the walk). */
+static void count_ray(struct trace_scene_counters *counters, uint64_t *target,
+                      uint64_t tests_before, uint32_t root_tests)
+{
+    if (counters->object.node_tests - tests_before <= root_tests)
+        return;
+    if (counters->ray_count != target) {
+        trace_scene_flush_ray_count(counters);
+        counters->ray_count = target;
+    }
+    counters->ray_count_pending++;
 }
 
 /* The per-ray state both top-level walks share. */
@@ -53,7 +75,7 @@ static int visit_instance(struct top_state *s, uint32_t index)
     const struct trace_kernels *kernels = s->kernels;
     struct trace_scene_counters *counters = s->counters;
     const struct trace_instance *inst = &scene->instances[index];
-    struct trace_object_view view = {NULL, NULL, NULL};
+    struct trace_object_view view = {NULL, NULL, NULL, NULL};
     counters->instance_tests++;
     if (!scene->acquire(scene->user, inst->object, &view))
         return 0;
@@ -73,10 +95,18 @@ static int visit_instance(struct top_state *s, uint32_t index)
     /* The wide walk where the table has one and the object a wide
      * layout: the same answers (kernels.h). */
     const int wide = view.wide && view.wide->node_count && kernels->closest4;
-    if (s->any_hit)
-        return wide ? kernels->any4(view.wide, view.bvh, view.tri, &o_ray, s->best,
-                                    &counters->object)
-                    : kernels->any(view.bvh, view.tri, &o_ray, s->best, &counters->object);
+    /* A ray reaches inside the object when its walk tests more boxes than
+     * the root's (the root box for the binary walk, the root's children
+     * for a wide one). */
+    const uint64_t tests_before = counters->object.node_tests;
+    if (s->any_hit) {
+        int got = wide ? kernels->any4(view.wide, view.bvh, view.tri, &o_ray, s->best,
+                                       &counters->object)
+                       : kernels->any(view.bvh, view.tri, &o_ray, s->best, &counters->object);
+        if (view.ray_count)
+            count_ray(counters, view.ray_count, tests_before, wide ? view.wide->width : 1);
+        return got;
+    }
     /* Ties between instances go to the lower instance, as ties inside an
      * object go to the lower primitive: hits do not depend on the
      * top-level tree nor on the order of visits (an instance's hit at
@@ -87,6 +117,8 @@ static int visit_instance(struct top_state *s, uint32_t index)
     int got = wide ? kernels->closest4(view.wide, view.bvh, view.tri, &o_ray, limit, &h,
                                        &counters->object)
                    : kernels->closest(view.bvh, view.tri, &o_ray, limit, &h, &counters->object);
+    if (view.ray_count)
+        count_ray(counters, view.ray_count, tests_before, wide ? view.wide->width : 1);
     struct trace_scene_hit *hit = s->hit;
     if (got && (!s->found || h.t < s->best || index < hit->instance)) {
         s->best = h.t;
