@@ -58,6 +58,7 @@
 
 #include <rt/rtu.h>
 
+#include "base/mat4.h"
 #include "base/timer.h"
 #include "bench.h"
 #include "rtu/aff_internal.h"
@@ -868,19 +869,6 @@ static double sum_of(const double *x, int n)
     return s;
 }
 
-/* --only KEYS (comma-separated strategy keys: refit, rebuild, ...): run
- * only those; all when not given. */
-static int strategy_selected(const struct bench_options *opts, const char *key)
-{
-    if (!opts->only)
-        return 1;
-    size_t n = strlen(key);
-    for (const char *p = opts->only; (p = strstr(p, key)) != NULL; p += n)
-        if ((p == opts->only || p[-1] == ',') && (p[n] == ',' || p[n] == '\0'))
-            return 1;
-    return 0;
-}
-
 static int museum_strategies_table(const struct bench_options *opts, const char *dir)
 {
     const int runs = opts->runs < BART_STRATEGY_RUNS ? opts->runs : BART_STRATEGY_RUNS;
@@ -947,7 +935,7 @@ static int museum_strategies_table(const struct bench_options *opts, const char 
                                            0};
             if (run > 0 && sum_of(buf + (size_t)si * runs * frames, frames) > BART_SLOW_RUN_MS)
                 continue;
-            if (!strategy_selected(opts, museum_strategies[si].key))
+            if (opts->only && !bench_strategy_selected(opts->only, museum_strategies[si].key))
                 continue;
             report_progress("bart: museum: %s, run %d of %d\n", museum_strategies[si].label,
                             run + 1, runs);
@@ -1431,6 +1419,124 @@ out:
     return rc;
 }
 
+/* ------------------------------------------------------------ frame overhead */
+
+#define OVERHEAD_WIDTH 1024
+#define OVERHEAD_HEIGHT 768
+#define OVERHEAD_REPS 5
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* render.c's primary rays, bit for bit: pixel centre (x + 0.5, y + 0.5)
+ * from the near to the far plane through the inverse projection.
+ * Returns how many were made (pixels that cannot be unprojected make
+ * none, as they trace none). */
+static size_t primary_rays(int w, int h, RTray *rays)
+{
+    double proj[16], inv[16];
+    bench_current_projection(proj);
+    size_t count = 0;
+    if (!mat4_invert(inv, proj))
+        return 0;
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            double nn[3] = {2.0 * (x + 0.5) / w - 1.0, 2.0 * (y + 0.5) / h - 1.0, -1.0};
+            double nf[3] = {nn[0], nn[1], 1.0}, pn[3], pf[3];
+            if (!mat4_project(inv, nn, pn) || !mat4_project(inv, nf, pf))
+                continue;
+            double d[3] = {pf[0] - pn[0], pf[1] - pn[1], pf[2] - pn[2]};
+            double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+            if (!(len > 0.0) || !isfinite(len))
+                continue;
+            RTray *r = &rays[count++];
+            for (int k = 0; k < 3; k++) {
+                r->org[k] = (float)pn[k];
+                r->dir[k] = (float)(d[k] / len);
+            }
+            r->tmin = 0.0f;
+            r->tmax = (float)len;
+        }
+    return count;
+}
+
+/*
+ * The issue 11 figure "the whole eye-light frame within 1.3x of the bare
+ * ray cost": frame 0 of the kitchen at 1024x768, eye light, threads=1,
+ * rendered whole (describe + rtRenderFrame: ray generation, trace, shade,
+ * write, frame set-up, tile scheduling) against the same primary rays
+ * (primary_rays) traced bare with rtTraceRays on the same context.
+ * Process CPU time, median of OVERHEAD_REPS runs interleaved frame, rays,
+ * frame, rays...; node and triangle tests per ray of both, which must
+ * agree for the comparison to mean anything.
+ */
+static int frame_overhead_table(const struct bench_options *opts, const char *dir)
+{
+    const int w = opts->quick ? BART_QUICK_WIDTH : OVERHEAD_WIDTH;
+    const int h = opts->quick ? BART_QUICK_HEIGHT : OVERHEAD_HEIGHT;
+    const int reps = opts->quick ? 1 : OVERHEAD_REPS;
+    struct bart_ctx c;
+    if (ctx_open(&c, dir, &scene_info[KITCHEN], "threads=1", 1))
+        return -1;
+    set_shading(0);
+    struct frame fr;
+    render_frame(&c, 0, w, h, 0, &fr); /* the lazy builds */
+    size_t n = (size_t)w * (size_t)h;
+    RTray *rays = malloc(n * sizeof(*rays));
+    RThit *hits = malloc(n * sizeof(*hits));
+    if (!rays || !hits) {
+        free(rays);
+        free(hits);
+        ctx_close(&c);
+        return -1;
+    }
+    size_t count = primary_rays(w, h, rays);
+    double frame_cpu[OVERHEAD_REPS], frame_wall[OVERHEAD_REPS];
+    double bare_cpu[OVERHEAD_REPS], bare_wall[OVERHEAD_REPS];
+    double frame_tests = 0.0, frame_rays = 0.0, bare_tests = 0.0;
+    for (int r = 0; r < reps; r++) {
+        render_frame(&c, 0, w, h, 0, &fr);
+        frame_cpu[r] = fr.cpu_ms;
+        frame_wall[r] = fr.total_ms;
+        frame_tests = fr.node_tests + fr.triangle_tests;
+        frame_rays = fr.rays;
+        double cpu0 = bench_cpu_ms(), t0 = rt_now_ms();
+        rtTraceRays((RTsizei)count, rays, hits);
+        bare_wall[r] = rt_now_ms() - t0;
+        bare_cpu[r] = bench_cpu_ms() - cpu0;
+        bench_share_add(1, bare_wall[r], bare_cpu[r]);
+        bare_tests = (double)get_f(RT_STAT_NODE_TESTS) + (double)get_f(RT_STAT_TRIANGLE_TESTS);
+    }
+    int rc = ctx_check(&c, "frame-overhead");
+    ctx_close(&c);
+    free(rays);
+    free(hits);
+    qsort(frame_cpu, (size_t)reps, sizeof(double), cmp_double);
+    qsort(frame_wall, (size_t)reps, sizeof(double), cmp_double);
+    qsort(bare_cpu, (size_t)reps, sizeof(double), cmp_double);
+    qsort(bare_wall, (size_t)reps, sizeof(double), cmp_double);
+    double fc = frame_cpu[reps / 2], bc = bare_cpu[reps / 2];
+    report_printf("\n### Eye-light frame against its bare primary rays\n\n");
+    report_printf("Frame 0 of the kitchen at %dx%d, eye light, context `threads=1`: the whole "
+                  "frame (describe + rtRenderFrame, structures already built) against the same "
+                  "%zu primary rays, made as the renderer makes them, traced with rtTraceRays "
+                  "on the same context. Process CPU time, median of %d interleaved runs.\n\n",
+                  w, h, count, reps);
+    report_table_header("what|CPU ms|wall ms|rays|tests/ray|frame / bare (CPU)");
+    report_row("eye-light frame|%.1f|%.1f|%.0f|%.2f|%.2fx", fc, frame_wall[reps / 2], frame_rays,
+               frame_rays > 0 ? frame_tests / frame_rays : 0.0, bc > 0.0 ? fc / bc : 0.0);
+    report_row("rtTraceRays, same rays|%.1f|%.1f|%zu|%.2f|1.00x", bc, bare_wall[reps / 2], count,
+               count ? bare_tests / (double)count : 0.0);
+    report_metric("frame_overhead.kitchen.frame_cpu_ms", fc, 0);
+    report_metric("frame_overhead.kitchen.bare_cpu_ms", bc, 0);
+    report_metric("frame_overhead.kitchen.ratio", bc > 0.0 ? fc / bc : 0.0, 0);
+    bench_share_report();
+    return rc;
+}
+
 int bench_bart_section(const struct bench_options *opts)
 {
     char why[512];
@@ -1455,6 +1561,14 @@ int bench_bart_section(const struct bench_options *opts)
     memset(res, 0, sizeof(res));
     memset(mu, 0, sizeof(mu));
     bench_share_reset();
+    if (opts->bart_frame_overhead_only) {
+        /* `rtbench frame-overhead`: a whole eye-light frame against its
+         * primary rays traced bare. */
+        if (frame_overhead_table(opts, dir))
+            return -1;
+        report_printf("\nThe frame-overhead section took %.0f s.\n", (rt_now_ms() - start) / 1e3);
+        return 0;
+    }
     if (opts->bart_strategies_only) {
         /* `rtbench bart-strategies`: RT_AUTOMATIC against the fixed
          * strategies without the rest of the section. */
