@@ -1494,6 +1494,9 @@ static int frame_overhead_table(const struct bench_options *opts, const char *di
         return -1;
     }
     size_t count = primary_rays(w, h, rays);
+    unsigned char *pixels = malloc(n * 4);
+    uint64_t hash = pixels ? image_hash(w, h, pixels) : 0;
+    free(pixels);
     double frame_cpu[OVERHEAD_REPS], frame_wall[OVERHEAD_REPS];
     double bare_cpu[OVERHEAD_REPS], bare_wall[OVERHEAD_REPS];
     double frame_tests = 0.0, frame_rays = 0.0, bare_tests = 0.0;
@@ -1533,6 +1536,8 @@ static int frame_overhead_table(const struct bench_options *opts, const char *di
     report_metric("frame_overhead.kitchen.frame_cpu_ms", fc, 0);
     report_metric("frame_overhead.kitchen.bare_cpu_ms", bc, 0);
     report_metric("frame_overhead.kitchen.ratio", bc > 0.0 ? fc / bc : 0.0, 0);
+    report_printf("\nThe frame's image (FNV-1a of rtReadPixels RGBA8): %016llx.\n",
+                  (unsigned long long)hash);
     bench_share_report();
     return rc;
 }
