@@ -43,6 +43,9 @@ struct bench_options {
     double tolerance;     /* --tolerance PCT: a drop beyond it is flagged */
     const char *isa;      /* --isa NAME: our kernels' ISA table; NULL = the best */
     int bart_strategies_only; /* `bart-strategies`: only the museum's update strategies */
+    int threads; /* --threads N: render threads of the strategy tables; 0 = their default */
+    const char *only; /* --only KEYS: bart-strategies runs only these strategies */
+    int bart_frame_overhead_only; /* `frame-overhead`: only the kitchen frame against bare rays */
     int argc;
     char **argv;
 };
@@ -322,6 +325,23 @@ void report_metric(const char *key, double value, int higher_is_better);
 /* Opens DIR/name for writing (a data file for a plot); NULL without --out
  * or on error.  Close with fclose. */
 FILE *report_data_file(const char *name);
+
+/* RT_AUTOMATIC's inputs for object `name` of the current context
+ * (lib/scene/update.c), read through the context (bench_dynamic.c): for
+ * per-frame decision logs.  0, or -1 when the object has no structure. */
+struct bench_automatic_state {
+    int rebuilds;
+    double ms_per_test, expected_rays, lost_ms, build_ms, sah_cost, built_sah_cost;
+};
+int bench_automatic_state(unsigned name, struct bench_automatic_state *out);
+/* The current context's projection matrix, in the doubles the renderer
+ * uses (rtGetFloatv would round it). */
+void bench_current_projection(double m[16]);
+
+/* 1 when `key` is one of the comma-separated keys of `only` (--only). */
+int bench_strategy_selected(const char *only, const char *key);
+/* `rtbench dynamic-cpu` (bench_dynamic.c). */
+int bench_dynamic_cpu_section(const struct bench_options *opts);
 /* Registers a gnuplot script (written to DIR/name.gp, run at the end to
  * make DIR/name.png). */
 void report_plot(const char *name, const char *script);

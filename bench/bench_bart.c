@@ -58,6 +58,7 @@
 
 #include <rt/rtu.h>
 
+#include "base/mat4.h"
 #include "base/timer.h"
 #include "bench.h"
 #include "rtu/aff_internal.h"
@@ -162,7 +163,6 @@ static const struct strategy museum_strategies[] = {
     {"RT_AUTOMATIC", "automatic", RT_AUTOMATIC},
 };
 #define MUSEUM_STRATEGIES ((int)(sizeof(museum_strategies) / sizeof(museum_strategies[0])))
-#define STRATEGY_CONFIG "threads=2 build_threads=1"
 
 static const struct strategy robot_strategies[] = {
     {"RT_REFIT", "refit", RT_REFIT},
@@ -324,6 +324,7 @@ struct frame {
     double render_ms;   /* call_ms - update_ms, lazy builds included */
     double toplevel_ms, build_ms, object_update_ms;
     double rays, node_tests, triangle_tests, instance_tests;
+    double cpu_ms; /* process CPU time of describe + rtRenderFrame */
     int object_builds, toplevel_builds, object_updates;
 };
 
@@ -369,7 +370,8 @@ static void render_frame(const struct bart_ctx *c, int f, int w, int h, RTuint f
     double t1 = rt_now_ms();
     rtRenderFrame();
     double t2 = rt_now_ms();
-    bench_share_add(c->threads, t2 - t0, bench_cpu_ms() - cpu0);
+    out->cpu_ms = bench_cpu_ms() - cpu0;
+    bench_share_add(c->threads, t2 - t0, out->cpu_ms);
     out->total_ms = t2 - t0;
     out->describe_ms = t1 - t0;
     out->call_ms = t2 - t1;
@@ -778,6 +780,7 @@ static void tpa_mesh_release(struct tpa_mesh *m)
 /* One run of one strategy over the museum; per-frame arrays. */
 struct museum_series {
     double *frame_ms, *update_ms, *sah_ratio;
+    double *cpu_ms, *tests; /* process CPU time; node + triangle tests */
     int rebuilds, refits;
 };
 
@@ -789,13 +792,33 @@ struct museum_setup {
     unsigned char *pixels;
     int image_mismatches[MUSEUM_STRATEGIES];
     int sah_mismatches; /* RT_REBUILD frames whose cost differs from the harness's */
+    int has_reference;  /* reference[] holds the first strategy's images */
+    const char *config;  /* the strategy contexts' configuration */
+    int threads;
+    FILE *decisions;     /* per-frame log of the first run, or NULL */
 };
+
+/* One line of the per-frame decision log (bart_museum_decisions.dat):
+ * what the update of the unstructured object did and the inputs of
+ * RT_AUTOMATIC's rule (lib/scene/update.c), read through the context as
+ * rtbench may (it links the static core). */
+static void log_decision(FILE *log, const char *key, int f, RTuint name, const struct frame *fr,
+                         double sah_ratio)
+{
+    struct bench_automatic_state a;
+    if (bench_automatic_state(name, &a))
+        return;
+    fprintf(log, "%s %d %d %.4f %.0f %.0f %.3f %.4f %.3g %.0f %.4f %.4f %.4f %.4f\n", key, f,
+            a.rebuilds, sah_ratio, fr->rays, fr->node_tests + fr->triangle_tests, fr->cpu_ms,
+            fr->update_ms, a.ms_per_test, a.expected_rays, a.lost_ms, a.build_ms, a.sah_cost,
+            a.built_sah_cost);
+}
 
 static int museum_run(struct museum_setup *m, int si, int first, struct museum_series *out)
 {
     struct bart_ctx c;
     RTuint names[MAX_UNSTRUCTURED];
-    if (ctx_open(&c, m->dir, &scene_info[MUSEUM], STRATEGY_CONFIG, 2))
+    if (ctx_open(&c, m->dir, &scene_info[MUSEUM], m->config, m->threads))
         return -1;
     int un = unstructured_names(&c, names);
     if (un < 1) {
@@ -811,9 +834,14 @@ static int museum_run(struct museum_setup *m, int si, int first, struct museum_s
         render_frame(&c, f, m->w, m->h, 0, &fr);
         out->frame_ms[f] = fr.total_ms;
         out->update_ms[f] = fr.update_ms;
+        out->cpu_ms[f] = fr.cpu_ms;
+        out->tests[f] = fr.node_tests + fr.triangle_tests;
         RTfloat sah = 0.0f;
         rtGetObjectfv(names[0], RT_OBJECT_SAH_COST, &sah);
         out->sah_ratio[f] = m->sweep_sah[f] > 0.0 ? sah / m->sweep_sah[f] : 0.0;
+        if (m->decisions)
+            log_decision(m->decisions, museum_strategies[si].key, f, names[0], &fr,
+                         out->sah_ratio[f]);
         if (museum_strategies[si].value == RT_REBUILD &&
             fabs(sah - m->binned_sah[f]) > BART_SAH_TOLERANCE * m->binned_sah[f])
             m->sah_mismatches++;
@@ -848,12 +876,19 @@ static int museum_strategies_table(const struct bench_options *opts, const char 
     struct tpa_mesh tpa;
     struct bart_ctx probe;
     double *buf = NULL, *ref = NULL;
+    FILE *decisions = NULL;
     int done[MUSEUM_STRATEGIES], rebuilds[MUSEUM_STRATEGIES], refits[MUSEUM_STRATEGIES];
     int rc = -1;
     memset(&m, 0, sizeof(m));
     memset(&tpa, 0, sizeof(tpa));
     memset(done, 0, sizeof(done));
     m.dir = dir;
+    /* --threads N: the strategies' contexts on N render threads (one
+     * build thread for RT_ASYNC_REBUILD either way). */
+    char config[64];
+    m.threads = opts->threads > 0 ? opts->threads : 2;
+    snprintf(config, sizeof(config), "threads=%d build_threads=1", m.threads);
+    m.config = config;
     m.w = opts->quick ? BART_QUICK_WIDTH : BART_STRATEGY_WIDTH;
     m.h = opts->quick ? BART_QUICK_HEIGHT : BART_STRATEGY_HEIGHT;
 
@@ -864,7 +899,7 @@ static int museum_strategies_table(const struct bench_options *opts, const char 
                                                                         : probe.frames;
     const int frames = m.frames;
     const size_t per = (size_t)MUSEUM_STRATEGIES * runs * frames;
-    buf = calloc(3 * per, sizeof(double));
+    buf = calloc(5 * per, sizeof(double));
     ref = malloc(2 * (size_t)frames * sizeof(double));
     m.reference = malloc((size_t)frames * sizeof(uint64_t));
     m.pixels = malloc((size_t)m.w * (size_t)m.h * 4);
@@ -887,16 +922,27 @@ static int museum_strategies_table(const struct bench_options *opts, const char 
     m.sweep_sah = ref;
     m.binned_sah = ref + frames;
 
+    decisions = report_data_file("bart_museum_decisions.dat");
+    if (decisions)
+        fprintf(decisions, "# strategy frame rebuilds sah_ratio rays tests cpu_ms update_ms "
+                           "ms_per_test expected_rays lost_ms build_ms sah built_sah\n");
     for (int run = 0; run < runs; run++)
         for (int si = 0; si < MUSEUM_STRATEGIES; si++) {
             size_t o = ((size_t)si * runs + run) * frames;
-            struct museum_series series = {buf + o, buf + per + o, buf + 2 * per + o, 0, 0};
+            struct museum_series series = {buf + o,           buf + per + o,
+                                           buf + 2 * per + o, buf + 3 * per + o,
+                                           buf + 4 * per + o, 0,
+                                           0};
             if (run > 0 && sum_of(buf + (size_t)si * runs * frames, frames) > BART_SLOW_RUN_MS)
+                continue;
+            if (opts->only && !bench_strategy_selected(opts->only, museum_strategies[si].key))
                 continue;
             report_progress("bart: museum: %s, run %d of %d\n", museum_strategies[si].label,
                             run + 1, runs);
-            if (museum_run(&m, si, run == 0 && si == 0, &series))
+            m.decisions = run == 0 ? decisions : NULL;
+            if (museum_run(&m, si, run == 0 && !m.has_reference, &series))
                 goto out;
+            m.has_reference = 1;
             rebuilds[si] = series.rebuilds;
             refits[si] = series.refits;
             done[si] = run + 1;
@@ -937,26 +983,39 @@ static int museum_strategies_table(const struct bench_options *opts, const char 
         "included). Images: every frame's image against RT_REFIT's, bit for bit. Wald, Ize and Parker (2008) "
         "fig. 3 has no museum; its point, that refitting alone degrades under unstructured "
         "motion, is what the SAH column tests.\n\n",
-        frames, m.w, m.h, STRATEGY_CONFIG, tpa_triangles, runs, runs == 1 ? "" : "s",
+        frames, m.w, m.h, m.config, tpa_triangles, runs, runs == 1 ? "" : "s",
         BART_SLOW_RUN_MS / 1000.0);
-    report_table_header("strategy|update ms|render ms|total ms|ms/frame|vs best|median update "
+    report_printf("CPU ms: the process's CPU time over the same frames (median of the run "
+                  "totals; it does not count the time other processes took from us, so it is "
+                  "the figure to compare on a loaded machine, and \"CPU vs best\" compares it). "
+                  "Mtests: node + triangle tests over the frames, millions (RT_STAT_NODE_TESTS + "
+                  "RT_STAT_TRIANGLE_TESTS): the traversal work, independent of the load.\n\n");
+    report_table_header("strategy|update ms|render ms|total ms|ms/frame|vs best|CPU ms|CPU vs "
+                        "best|Mtests|median update "
                         "ms/frame|mean SAH ratio|max SAH ratio|rebuilds|refits|runs|images "
                         "= RT_REFIT's");
     double total[MUSEUM_STRATEGIES], update[MUSEUM_STRATEGIES], describe_render[MUSEUM_STRATEGIES];
     double median_update[MUSEUM_STRATEGIES], mean_sah[MUSEUM_STRATEGIES],
-        max_sah[MUSEUM_STRATEGIES];
+        max_sah[MUSEUM_STRATEGIES], cpu[MUSEUM_STRATEGIES], tests[MUSEUM_STRATEGIES];
+    int best_cpu;
     double *col = malloc((size_t)frames * BART_STRATEGY_RUNS * sizeof(double));
     if (!col)
         goto out;
-    int best = 0;
+    int best = -1;
+    best_cpu = -1;
     for (int si = 0; si < MUSEUM_STRATEGIES; si++) {
-        double t[BART_STRATEGY_RUNS], u[BART_STRATEGY_RUNS];
+        if (!done[si])
+            continue;
+        double t[BART_STRATEGY_RUNS], u[BART_STRATEGY_RUNS], cp[BART_STRATEGY_RUNS],
+            ts[BART_STRATEGY_RUNS];
         double ms = 0.0, mx = 0.0;
         int nu = 0;
         for (int run = 0; run < done[si]; run++) {
             size_t o = ((size_t)si * runs + run) * frames;
             t[run] = sum_of(buf + o, frames);
             u[run] = sum_of(buf + per + o, frames);
+            cp[run] = sum_of(buf + 3 * per + o, frames);
+            ts[run] = sum_of(buf + 4 * per + o, frames);
             for (int f = 0; f < frames; f++) {
                 double r = buf[2 * per + o + (size_t)f];
                 ms += r;
@@ -971,19 +1030,31 @@ static int museum_strategies_table(const struct bench_options *opts, const char 
         median_update[si] = nu ? bench_median(col, nu) : 0.0;
         mean_sah[si] = ms / ((double)done[si] * frames);
         max_sah[si] = mx;
-        if (total[si] < total[best])
+        cpu[si] = bench_median(cp, done[si]);
+        tests[si] = bench_median(ts, done[si]);
+        if (best < 0 || total[si] < total[best])
             best = si;
+        if (museum_strategies[si].value != RT_AUTOMATIC &&
+            (best_cpu < 0 || cpu[si] < cpu[best_cpu]))
+            best_cpu = si;
     }
     free(col);
     for (int si = 0; si < MUSEUM_STRATEGIES; si++) {
-        report_row("%s|%.1f|%.1f|%.1f|%.2f|%+.1f%%|%.3f|%.3f|%.3f|%d|%d|%d|%s",
+        if (!done[si])
+            continue;
+        report_row("%s|%.1f|%.1f|%.1f|%.2f|%+.1f%%|%.1f|%+.1f%%|%.2f|%.3f|%.3f|%.3f|%d|%d|%d|%s",
                    museum_strategies[si].label, update[si], describe_render[si], total[si],
-                   total[si] / frames, 100.0 * (total[si] / total[best] - 1.0), median_update[si],
+                   total[si] / frames, 100.0 * (total[si] / total[best] - 1.0), cpu[si],
+                   100.0 * (cpu[si] / cpu[best_cpu] - 1.0), tests[si] / 1e6, median_update[si],
                    mean_sah[si], max_sah[si], rebuilds[si], refits[si], done[si],
                    m.image_mismatches[si] ? "**NO**" : "yes");
         char key[96];
         snprintf(key, sizeof(key), "bart.museum.%s.total_ms", museum_strategies[si].key);
         report_metric(key, total[si], 0);
+        snprintf(key, sizeof(key), "bart.museum.%s.cpu_ms", museum_strategies[si].key);
+        report_metric(key, cpu[si], 0);
+        snprintf(key, sizeof(key), "bart.museum.%s.mtests", museum_strategies[si].key);
+        report_metric(key, tests[si] / 1e6, 0);
         snprintf(key, sizeof(key), "bart.museum.%s.mean_sah_ratio", museum_strategies[si].key);
         report_metric(key, mean_sah[si], -1);
         if (m.image_mismatches[si]) {
@@ -993,6 +1064,14 @@ static int museum_strategies_table(const struct bench_options *opts, const char 
             report_check_failed();
         }
     }
+    for (int si = 0; si < MUSEUM_STRATEGIES; si++)
+        if (museum_strategies[si].value == RT_AUTOMATIC && done[si] && best_cpu >= 0)
+            report_printf("\nBest fixed strategy by CPU time: %s (%.1f ms). RT_AUTOMATIC: %.1f "
+                          "ms, %s of it (%+.1f%%); node + triangle tests %+.1f%% against it.\n",
+                          museum_strategies[best_cpu].label, cpu[best_cpu], cpu[si],
+                          cpu[si] <= 1.1 * cpu[best_cpu] ? "within 10%" : "NOT within 10%",
+                          100.0 * (cpu[si] / cpu[best_cpu] - 1.0),
+                          100.0 * (tests[si] / tests[best_cpu] - 1.0));
     report_printf("\n(\"render\" here is describe + render: everything but the update.) "
                   "RT_OBJECT_SAH_COST after each RT_REBUILD frame against the harness's SAH "
                   "cost of a fresh binned build of the same triangles: %s.\n",
@@ -1011,14 +1090,16 @@ static int museum_strategies_table(const struct bench_options *opts, const char 
     }
     char time_title[160], sah_title[160];
     snprintf(time_title, sizeof(time_title),
-             "BART museum: describe + update + render per frame (%dx%d, eye light, 2 threads)", m.w,
-             m.h);
+             "BART museum: describe + update + render per frame (%dx%d, eye light, %d threads)", m.w,
+             m.h, m.threads);
     snprintf(sah_title, sizeof(sah_title),
              "BART museum: SAH cost of the unstructured object / fresh sweep SAH build");
     report_strategy_plots("bart_museum", "bart_museum.dat", time_title, sah_title,
                           MUSEUM_STRATEGIES, labels, has_sah);
     rc = 0;
 out:
+    if (decisions)
+        fclose(decisions);
     free(buf);
     free(ref);
     free(m.reference);
@@ -1338,6 +1419,129 @@ out:
     return rc;
 }
 
+/* ------------------------------------------------------------ frame overhead */
+
+#define OVERHEAD_WIDTH 1024
+#define OVERHEAD_HEIGHT 768
+#define OVERHEAD_REPS 5
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* render.c's primary rays, bit for bit: pixel centre (x + 0.5, y + 0.5)
+ * from the near to the far plane through the inverse projection.
+ * Returns how many were made (pixels that cannot be unprojected make
+ * none, as they trace none). */
+static size_t primary_rays(int w, int h, RTray *rays)
+{
+    double proj[16], inv[16];
+    bench_current_projection(proj);
+    size_t count = 0;
+    if (!mat4_invert(inv, proj))
+        return 0;
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            double nn[3] = {2.0 * (x + 0.5) / w - 1.0, 2.0 * (y + 0.5) / h - 1.0, -1.0};
+            double nf[3] = {nn[0], nn[1], 1.0}, pn[3], pf[3];
+            if (!mat4_project(inv, nn, pn) || !mat4_project(inv, nf, pf))
+                continue;
+            double d[3] = {pf[0] - pn[0], pf[1] - pn[1], pf[2] - pn[2]};
+            double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+            if (!(len > 0.0) || !isfinite(len))
+                continue;
+            RTray *r = &rays[count++];
+            for (int k = 0; k < 3; k++) {
+                r->org[k] = (float)pn[k];
+                r->dir[k] = (float)(d[k] / len);
+            }
+            r->tmin = 0.0f;
+            r->tmax = (float)len;
+        }
+    return count;
+}
+
+/*
+ * The issue 11 figure "the whole eye-light frame within 1.3x of the bare
+ * ray cost": frame 0 of the kitchen at 1024x768, eye light, threads=1,
+ * rendered whole (describe + rtRenderFrame: ray generation, trace, shade,
+ * write, frame set-up, tile scheduling) against the same primary rays
+ * (primary_rays) traced bare with rtTraceRays on the same context.
+ * Process CPU time, median of OVERHEAD_REPS runs interleaved frame, rays,
+ * frame, rays...; node and triangle tests per ray of both, which must
+ * agree for the comparison to mean anything.
+ */
+static int frame_overhead_table(const struct bench_options *opts, const char *dir)
+{
+    const int w = opts->quick ? BART_QUICK_WIDTH : OVERHEAD_WIDTH;
+    const int h = opts->quick ? BART_QUICK_HEIGHT : OVERHEAD_HEIGHT;
+    const int reps = opts->quick ? 1 : OVERHEAD_REPS;
+    struct bart_ctx c;
+    if (ctx_open(&c, dir, &scene_info[KITCHEN], "threads=1", 1))
+        return -1;
+    set_shading(0);
+    struct frame fr;
+    render_frame(&c, 0, w, h, 0, &fr); /* the lazy builds */
+    size_t n = (size_t)w * (size_t)h;
+    RTray *rays = malloc(n * sizeof(*rays));
+    RThit *hits = malloc(n * sizeof(*hits));
+    if (!rays || !hits) {
+        free(rays);
+        free(hits);
+        ctx_close(&c);
+        return -1;
+    }
+    size_t count = primary_rays(w, h, rays);
+    unsigned char *pixels = malloc(n * 4);
+    uint64_t hash = pixels ? image_hash(w, h, pixels) : 0;
+    free(pixels);
+    double frame_cpu[OVERHEAD_REPS], frame_wall[OVERHEAD_REPS];
+    double bare_cpu[OVERHEAD_REPS], bare_wall[OVERHEAD_REPS];
+    double frame_tests = 0.0, frame_rays = 0.0, bare_tests = 0.0;
+    for (int r = 0; r < reps; r++) {
+        render_frame(&c, 0, w, h, 0, &fr);
+        frame_cpu[r] = fr.cpu_ms;
+        frame_wall[r] = fr.total_ms;
+        frame_tests = fr.node_tests + fr.triangle_tests;
+        frame_rays = fr.rays;
+        double cpu0 = bench_cpu_ms(), t0 = rt_now_ms();
+        rtTraceRays((RTsizei)count, rays, hits);
+        bare_wall[r] = rt_now_ms() - t0;
+        bare_cpu[r] = bench_cpu_ms() - cpu0;
+        bench_share_add(1, bare_wall[r], bare_cpu[r]);
+        bare_tests = (double)get_f(RT_STAT_NODE_TESTS) + (double)get_f(RT_STAT_TRIANGLE_TESTS);
+    }
+    int rc = ctx_check(&c, "frame-overhead");
+    ctx_close(&c);
+    free(rays);
+    free(hits);
+    qsort(frame_cpu, (size_t)reps, sizeof(double), cmp_double);
+    qsort(frame_wall, (size_t)reps, sizeof(double), cmp_double);
+    qsort(bare_cpu, (size_t)reps, sizeof(double), cmp_double);
+    qsort(bare_wall, (size_t)reps, sizeof(double), cmp_double);
+    double fc = frame_cpu[reps / 2], bc = bare_cpu[reps / 2];
+    report_printf("\n### Eye-light frame against its bare primary rays\n\n");
+    report_printf("Frame 0 of the kitchen at %dx%d, eye light, context `threads=1`: the whole "
+                  "frame (describe + rtRenderFrame, structures already built) against the same "
+                  "%zu primary rays, made as the renderer makes them, traced with rtTraceRays "
+                  "on the same context. Process CPU time, median of %d interleaved runs.\n\n",
+                  w, h, count, reps);
+    report_table_header("what|CPU ms|wall ms|rays|tests/ray|frame / bare (CPU)");
+    report_row("eye-light frame|%.1f|%.1f|%.0f|%.2f|%.2fx", fc, frame_wall[reps / 2], frame_rays,
+               frame_rays > 0 ? frame_tests / frame_rays : 0.0, bc > 0.0 ? fc / bc : 0.0);
+    report_row("rtTraceRays, same rays|%.1f|%.1f|%zu|%.2f|1.00x", bc, bare_wall[reps / 2], count,
+               count ? bare_tests / (double)count : 0.0);
+    report_metric("frame_overhead.kitchen.frame_cpu_ms", fc, 0);
+    report_metric("frame_overhead.kitchen.bare_cpu_ms", bc, 0);
+    report_metric("frame_overhead.kitchen.ratio", bc > 0.0 ? fc / bc : 0.0, 0);
+    report_printf("\nThe frame's image (FNV-1a of rtReadPixels RGBA8): %016llx.\n",
+                  (unsigned long long)hash);
+    bench_share_report();
+    return rc;
+}
+
 int bench_bart_section(const struct bench_options *opts)
 {
     char why[512];
@@ -1362,6 +1566,14 @@ int bench_bart_section(const struct bench_options *opts)
     memset(res, 0, sizeof(res));
     memset(mu, 0, sizeof(mu));
     bench_share_reset();
+    if (opts->bart_frame_overhead_only) {
+        /* `rtbench frame-overhead`: a whole eye-light frame against its
+         * primary rays traced bare. */
+        if (frame_overhead_table(opts, dir))
+            return -1;
+        report_printf("\nThe frame-overhead section took %.0f s.\n", (rt_now_ms() - start) / 1e3);
+        return 0;
+    }
     if (opts->bart_strategies_only) {
         /* `rtbench bart-strategies`: RT_AUTOMATIC against the fixed
          * strategies without the rest of the section. */

@@ -503,6 +503,28 @@ static void wide_layout_totals(RTuint name, double *collapse_ms, double *wide_re
     *wide_refit_ms = o ? o->wide_refit_ms_total : 0.0;
 }
 
+void bench_current_projection(double m[16])
+{
+    struct rt_context *ctx = rt_current_context();
+    memcpy(m, ctx->projection.m[ctx->projection.depth - 1], 16 * sizeof(double));
+}
+
+int bench_automatic_state(unsigned name, struct bench_automatic_state *out)
+{
+    struct rt_context *ctx = rt_current_context();
+    const struct scene_object *o = ctx ? scene_objects_lookup(&ctx->scene.objects, name) : NULL;
+    if (!o || !o->accel)
+        return -1;
+    out->rebuilds = (int)o->rebuilds;
+    out->ms_per_test = ctx->scene.ms_per_test;
+    out->expected_rays = o->expected_rays;
+    out->lost_ms = o->automatic_lost_ms;
+    out->build_ms = o->accel->build_ms;
+    out->sah_cost = o->accel->sah_cost;
+    out->built_sah_cost = o->accel->built_sah_cost;
+    return 0;
+}
+
 struct dyn_setup {
     struct bench_anim *anim;
     const struct bench_rays *sample;
@@ -1003,6 +1025,136 @@ out:
     bench_rays_release(&primary);
     bench_rays_release(&sample);
     return rc;
+}
+
+/* ------------------------------------------------------------ CPU time per strategy */
+
+#define DYN_CPU_CONFIG "threads=1 build_threads=1"
+
+/*
+ * `rtbench dynamic-cpu`: the strategy table's animations, measured by
+ * what does not depend on the machine's load: the process's CPU time
+ * (one render thread; RT_ASYNC_REBUILD's build thread is counted, it is
+ * CPU the strategy spends), and the node + triangle tests of the frames
+ * (RT_STAT_NODE_TESTS + RT_STAT_TRIANGLE_TESTS), beside the decisions
+ * (rebuilds, mean SAH cost).  Runs interleaved strategy by strategy,
+ * median of the run totals.  RT_REFIT is left out of the explosion and
+ * the soup unless --only names it: there its tree degrades 10-30x (the
+ * strategy table's SAH ratios) and one run takes minutes.
+ */
+static int dynamic_cpu_table(const struct bench_options *opts)
+{
+    const int frames = opts->quick ? DYN_FRAMES_QUICK : DYN_FRAMES;
+    const int runs = opts->runs < DYN_MAX_RUNS ? opts->runs : DYN_MAX_RUNS;
+    const uint32_t w = opts->quick ? DYN_WIDTH_QUICK : DYN_WIDTH;
+    const uint32_t h = opts->quick ? DYN_HEIGHT_QUICK : DYN_HEIGHT;
+    static const struct {
+        enum bench_anim_kind kind;
+        uint32_t size, size_quick;
+        const char *title;
+    } anims[] = {
+        {BENCH_ANIM_EXPLODE, EXPLODE_SIZE, EXPLODE_SIZE_QUICK, "explode"},
+        {BENCH_ANIM_CLOTH, CLOTH_SIZE, CLOTH_SIZE_QUICK, "cloth"},
+        {BENCH_ANIM_SOUP, SOUP_BIG, SOUP_BIG_QUICK, "soup"},
+    };
+    report_printf("\n### Update strategies by CPU time and traversal work\n\n");
+    report_printf("The animations of the strategy table, %d frames at %ux%u, eye light, on a "
+                  "context `%s`. CPU ms: process CPU time of rtUpdateVertices + rtRenderFrame "
+                  "over the frames (the build thread's included), median of %d interleaved "
+                  "run%s; Mtests: node + triangle tests over the frames, millions; mean SAH: "
+                  "RT_OBJECT_SAH_COST after each frame, mean over the frames; rebuilds: "
+                  "RT_OBJECT_REBUILDS at the end. \"vs best fixed\": CPU time against the "
+                  "fixed strategy with the least.\n\n",
+                  frames, w, h, DYN_CPU_CONFIG, runs, runs == 1 ? "" : "s");
+    report_table_header("animation|strategy|CPU ms|vs best fixed|Mtests|tests vs best "
+                        "fixed|mean SAH|rebuilds|runs");
+    for (int k = 0; k < 3; k++) {
+        struct bench_anim a;
+        if (bench_anim_create(&a, anims[k].kind, opts->quick ? anims[k].size_quick : anims[k].size,
+                              frames))
+            return -1;
+        double cpu[STRATEGIES][DYN_MAX_RUNS], tests[STRATEGIES][DYN_MAX_RUNS];
+        double sah[STRATEGIES];
+        int rebuilds[STRATEGIES], done[STRATEGIES];
+        memset(done, 0, sizeof(done));
+        for (int run = 0; run < runs; run++)
+            for (int si = 0; si < STRATEGIES; si++) {
+                if (strategies[si].backend != BACKEND_OURS)
+                    continue;
+                if (opts->only ? !bench_strategy_selected(opts->only, strategies[si].key)
+                               : strategies[si].value == RT_REFIT &&
+                                     anims[k].kind != BENCH_ANIM_CLOTH)
+                    continue;
+                report_progress("dynamic-cpu: %s: %s, run %d of %d\n", anims[k].title,
+                                strategies[si].label, run + 1, runs);
+                RTcontext ctx = rtCreateContext(DYN_CPU_CONFIG);
+                if (!ctx || !rtMakeCurrent(ctx)) {
+                    bench_anim_release(&a);
+                    return -1;
+                }
+                RTuint obj;
+                rtGenObjects(1, &obj);
+                bench_anim_frame(&a, 0);
+                define_object(obj, &a);
+                rtObjectParameteri(obj, RT_UPDATE_STRATEGY, (RTint)strategies[si].value);
+                dyn_camera(w, h);
+                rtInstantiateObject(obj);
+                double c = 0.0, t = 0.0, sum_sah = 0.0;
+                for (int f = 0; f < frames; f++) {
+                    if (f > 0)
+                        bench_anim_frame(&a, f);
+                    double cpu0 = bench_cpu_ms();
+                    if (f > 0)
+                        rtUpdateVertices(obj, RT_VERTEX_ARRAY, 0, (RTsizei)a.vertex_count,
+                                         RT_FLOAT, 0, a.positions);
+                    rtRenderFrame();
+                    c += bench_cpu_ms() - cpu0;
+                    t += (double)get_f(RT_STAT_NODE_TESTS) + (double)get_f(RT_STAT_TRIANGLE_TESTS);
+                    RTfloat s = 0.0f;
+                    rtGetObjectfv(obj, RT_OBJECT_SAH_COST, &s);
+                    sum_sah += s;
+                }
+                RTint rb = 0;
+                rtGetObjectiv(obj, RT_OBJECT_REBUILDS, &rb);
+                rtMakeCurrent(NULL);
+                rtDestroyContext(ctx);
+                cpu[si][run] = c;
+                tests[si][run] = t;
+                sah[si] = sum_sah / frames;
+                rebuilds[si] = rb;
+                done[si] = run + 1;
+            }
+        double mc[STRATEGIES], mt[STRATEGIES];
+        int best = -1;
+        for (int si = 0; si < STRATEGIES; si++) {
+            if (!done[si])
+                continue;
+            mc[si] = bench_median(cpu[si], done[si]);
+            mt[si] = bench_median(tests[si], done[si]);
+            if (strategies[si].value != RT_AUTOMATIC && (best < 0 || mc[si] < mc[best]))
+                best = si;
+        }
+        for (int si = 0; si < STRATEGIES; si++) {
+            if (!done[si] || best < 0)
+                continue;
+            report_row("%s|%s|%.1f|%+.1f%%|%.1f|%+.1f%%|%.2f|%d|%d", anims[k].title,
+                       strategies[si].label, mc[si], 100.0 * (mc[si] / mc[best] - 1.0),
+                       mt[si] / 1e6, 100.0 * (mt[si] / mt[best] - 1.0), sah[si], rebuilds[si],
+                       done[si]);
+            char key[96];
+            snprintf(key, sizeof(key), "dynamic_cpu.%s.%s.cpu_ms", anims[k].title,
+                     strategies[si].key);
+            report_metric(key, mc[si], 0);
+        }
+        bench_anim_release(&a);
+    }
+    return 0;
+}
+
+int bench_dynamic_cpu_section(const struct bench_options *opts)
+{
+    report_printf("\n## Dynamic scenes: CPU time\n");
+    return dynamic_cpu_table(opts);
 }
 
 int bench_dynamic_section(const struct bench_options *opts, struct bench_mesh *meshes,

@@ -298,3 +298,12 @@ double bench_median(double *values, int n)
         return values[n / 2];
     return 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
+
+int bench_strategy_selected(const char *only, const char *key)
+{
+    size_t n = strlen(key);
+    for (const char *p = only; (p = strstr(p, key)) != NULL; p += n)
+        if ((p == only || p[-1] == ',') && (p[n] == ',' || p[n] == '\0'))
+            return 1;
+    return 0;
+}

@@ -59,7 +59,7 @@ static void usage(FILE *f)
 {
     fprintf(f,
             "usage: rtbench [build|trace|embree|packets|dynamic|immediate|error|bart|\n"
-            "                bart-strategies|all]\n"
+            "                bart-strategies|frame-overhead|dynamic-cpu|all]\n"
             "               [--quick] [--runs N]"
             " [--out DIR] [--mesh bumpy|gears|soup] [--baseline FILE]\n"
             "               [--tolerance PCT] [--bart-dir DIR] [--isa NAME] [--layout L]\n"
@@ -77,10 +77,15 @@ static void usage(FILE *f)
             "             sec. 5: fps, top level, updates, strategies, two-level overhead\n"
             "  immediate  immediate-mode re-send against objects (bench_immediate.c)\n"
             "  bart-strategies  only the BART section's update strategies over the museum\n"
+            "  frame-overhead   only a kitchen eye-light frame against its bare primary rays\n"
+            "  dynamic-cpu      the dynamic strategies by CPU time and tests (threads=1)\n"
             "             (RT_AUTOMATIC against the fixed strategies, about a third of bart)\n"
             "  all        everything (default); bart only when its data is found\n"
             "  --quick    toy sizes and 1 run unless --runs is given: a smoke test\n"
             "  --runs N   timings are the median of N runs (default %d)\n"
+            "  --threads N  render threads of bart-strategies' contexts (default 2)\n"
+            "  --only KEYS  bart-strategies: only these strategies (refit,rebuild,median,\n"
+            "             heuristic,restructure,async,automatic)\n"
             "  --out DIR  write results.md, results.csv and PNG plots (gnuplot) to DIR\n"
             "  --baseline FILE  compare with an earlier results.csv; flag drops beyond\n"
             "             --tolerance PCT (default %.0f) and exit with status 2\n"
@@ -114,6 +119,7 @@ int main(int argc, char **argv)
     struct bench_options opts;
     int sections = 0;
     int runs_given = 0;
+    int dynamic_cpu = 0;   /* `dynamic-cpu`: the strategies by CPU time alone */
     int bart_required = 0; /* `bart` named: no data is an error, not a skip */
     memset(&opts, 0, sizeof(opts));
     opts.runs = DEFAULT_RUNS;
@@ -145,6 +151,12 @@ int main(int argc, char **argv)
             sections |= SECTION_BART;
             bart_required = 1;
             opts.bart_strategies_only = 1;
+        } else if (!strcmp(a, "dynamic-cpu")) {
+            dynamic_cpu = 1;
+        } else if (!strcmp(a, "frame-overhead")) {
+            sections |= SECTION_BART;
+            bart_required = 1;
+            opts.bart_frame_overhead_only = 1;
         } else if (!strcmp(a, "all")) {
             sections |= SECTION_ALL;
         } else if (!strcmp(a, "--quick")) {
@@ -155,6 +167,15 @@ int main(int argc, char **argv)
                 return 1;
             }
             runs_given = 1;
+            i++;
+        } else if (!strcmp(a, "--threads") && value) {
+            if (parse_int(value, 1, 64, &opts.threads)) {
+                fprintf(stderr, "rtbench: --threads takes 1..64\n");
+                return 1;
+            }
+            i++;
+        } else if (!strcmp(a, "--only") && value) {
+            opts.only = value;
             i++;
         } else if (!strcmp(a, "--out") && value) {
             opts.out_dir = value;
@@ -199,7 +220,7 @@ int main(int argc, char **argv)
             return 1;
         }
     }
-    if (!sections)
+    if (!sections && !dynamic_cpu)
         sections = SECTION_ALL;
     if (opts.quick && !runs_given)
         opts.runs = 1;
@@ -264,6 +285,8 @@ int main(int argc, char **argv)
         failed |= bench_packets_section(&opts, meshes, mesh_count) != 0;
     if (sections & SECTION_DYNAMIC)
         failed |= bench_dynamic_section(&opts, meshes, mesh_count) != 0;
+    if (dynamic_cpu)
+        failed |= bench_dynamic_cpu_section(&opts) != 0;
     if (sections & SECTION_IMMEDIATE)
         failed |= bench_immediate_section(&opts) != 0;
     if (sections & SECTION_ERROR)

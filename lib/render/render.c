@@ -25,7 +25,12 @@ static int acquire_object(void *user, void *object, struct trace_object_view *vi
     /* The common case, an object already built, takes no lock and no
      * clock reading. */
     const struct scene_accel *accel = scene_object_peek(object);
-    if (accel && accel->serial == ((const struct scene_object *)object)->serial) {
+    struct scene_object *o = object;
+    /* The rays reaching inside an object the automatic strategy updates:
+     * its cost model's expected rays (scene/prepare.c). */
+    if (o->count_rays)
+        view->ray_count = &o->ray_visits;
+    if (accel && accel->serial == o->serial) {
         view->bvh = &accel->bvh;
         view->tri = accel->tri;
         view->wide = &accel->wide;
@@ -67,6 +72,7 @@ static void shared_finish(struct render_pass *sh, struct render_stats *stats)
 {
     int n = rt_pool_threads(sh->job->pool);
     for (int i = 0; i < n; i++) {
+        trace_scene_flush_ray_count(&sh->counters[i].c);
         const struct trace_scene_counters *c = &sh->counters[i].c;
         stats->rays += c->rays;
         stats->node_tests += c->top_node_tests + c->object.node_tests;
@@ -119,11 +125,76 @@ static double distance_to_line(const double q[3], const double p[3], const doubl
  * its x and y scale factors.  When a neighbour cannot be unprojected the
  * cone is {0, 0}: unfiltered textures, as before there were cones.
  */
-static int primary_ray(const struct render_pass *sh, int px, int py, float org[3],
-                       float dir[3], float *tmax, struct shade_cone *cone)
+/*
+ * Every pixel's ray needs the unprojection of its own centre and of its
+ * right and lower neighbours' (the cone), which are other pixels' centres:
+ * a tile keeps the unprojected centres of the row it is on and the next
+ * one, so that each is computed once instead of three times.  The cached
+ * point is the one the direct call gives, bit for bit: unproject at
+ * (X + 0.5, Y + 0.5) for whole X, Y, and px + 0.5 + 1 is exactly
+ * (px + 1) + 0.5 in double.
+ */
+struct unproject_point {
+    signed char state; /* 0 not computed, 1 unprojected, -1 cannot be */
+    double near_pt[3], far_pt[3];
+};
+
+struct unproject_cache {
+    int x0, y; /* viewport pixel of row[0][0] */
+    struct unproject_point rows[2][RENDER_TILE_SIZE + 1]; /* rows y and y + 1 */
+};
+
+static void unproject_cache_init(struct unproject_cache *c, int x0, int y)
+{
+    c->x0 = x0;
+    c->y = y;
+    for (int r = 0; r < 2; r++)
+        for (int i = 0; i <= RENDER_TILE_SIZE; i++)
+            c->rows[r][i].state = 0;
+}
+
+/* Moves the cache to row y (the current row or the next one). */
+static void unproject_cache_row(struct unproject_cache *c, int y)
+{
+    if (y == c->y)
+        return;
+    if (y == c->y + 1) {
+        memcpy(c->rows[0], c->rows[1], sizeof(c->rows[0]));
+        for (int i = 0; i <= RENDER_TILE_SIZE; i++)
+            c->rows[1][i].state = 0;
+        c->y = y;
+        return;
+    }
+    unproject_cache_init(c, c->x0, y);
+}
+
+/* The unprojected centre of pixel (x, y), with x - x0 in
+ * [0, RENDER_TILE_SIZE] and y the cache's row or the next; 0 when it
+ * cannot be unprojected. */
+static int unproject_cached(const struct render_pass *sh, struct unproject_cache *c, int x, int y,
+                            double near_pt[3], double far_pt[3])
+{
+    struct unproject_point *p = &c->rows[y - c->y][x - c->x0];
+    if (p->state == 0)
+        p->state = unproject(sh, x + 0.5, y + 0.5, p->near_pt, p->far_pt) ? 1 : -1;
+    memcpy(near_pt, p->near_pt, sizeof(p->near_pt));
+    memcpy(far_pt, p->far_pt, sizeof(p->far_pt));
+    return p->state > 0;
+}
+
+/* fmax without the library call, for values that are never NaN on the
+ * left: the same result as fmax (a NaN on the right gives the left). */
+static double max_left(double x, double y)
+{
+    return y > x ? y : x;
+}
+
+static int primary_ray(const struct render_pass *sh, struct unproject_cache *cache, int px,
+                       int py, float org[3], float dir[3], float *tmax, struct shade_cone *cone)
 {
     double near_pt[3], far_pt[3];
-    if (!unproject(sh, px + 0.5, py + 0.5, near_pt, far_pt))
+    unproject_cache_row(cache, py);
+    if (!unproject_cached(sh, cache, px, py, near_pt, far_pt))
         return 0;
     double d[3] = {far_pt[0] - near_pt[0], far_pt[1] - near_pt[1], far_pt[2] - near_pt[2]};
     double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
@@ -138,14 +209,14 @@ static int primary_ray(const struct render_pass *sh, int px, int py, float org[3
     double width = 0.0, spread = 0.0;
     for (int axis = 0; axis < 2; axis++) {
         double n_near[3], n_far[3];
-        if (!unproject(sh, px + 0.5 + (axis == 0), py + 0.5 + (axis == 1), n_near, n_far)) {
+        if (!unproject_cached(sh, cache, px + (axis == 0), py + (axis == 1), n_near, n_far)) {
             width = spread = 0.0;
             break;
         }
         double w_near = distance_to_line(n_near, near_pt, d);
         double w_far = distance_to_line(n_far, near_pt, d);
-        width = fmax(width, w_near);
-        spread = fmax(spread, (w_far - w_near) / len);
+        width = max_left(width, w_near);
+        spread = max_left(spread, (w_far - w_near) / len);
     }
     cone->width = (float)width;
     cone->spread = (float)spread;
@@ -273,12 +344,15 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
             struct trace_packet pk;
             struct shade_cone cone[TRACE_PACKET];
             struct trace_scene_hit hits[TRACE_PACKET];
+            /* One block's rows share their unprojected pixel centres. */
+            struct unproject_cache cache;
+            unproject_cache_init(&cache, bx, by);
             pk.active = 0;
             for (int i = 0; i < TRACE_PACKET; i++) {
                 const int x = bx + i % RENDER_BLOCK_W, y = by + i / RENDER_BLOCK_W;
                 if (x < x0 + RENDER_TILE_SIZE && x < vp[2] && y < y0 + RENDER_TILE_SIZE &&
-                    y < vp[3] && primary_ray(pass, x, y, pk.org[i], pk.dir[i], &pk.tmax[i],
-                                             &cone[i])) {
+                    y < vp[3] && primary_ray(pass, &cache, x, y, pk.org[i], pk.dir[i],
+                                             &pk.tmax[i], &cone[i])) {
                     pk.tmin[i] = 0.0f;
                     pk.active |= 1u << i;
                 }
@@ -300,10 +374,16 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                     primed.hit = hits[i];
                 sc->primed = &primed;
                 float t_first;
-                blend_trace_primary(sc, pk.org[i], pk.dir[i], pk.tmax[i], cone[i], px, &t_first);
+                const size_t at = (size_t)(vp[1] + y) * pass->fb_width + vp[0] + x;
+                if (pass->depth_state) /* polygon offset in the frame (lines.c) */
+                    blend_trace_primary_state(sc, pk.org[i], pk.dir[i], pk.tmax[i], cone[i], px,
+                                              &t_first, &pass->depth_state[at]);
+                else
+                    blend_trace_primary(sc, pk.org[i], pk.dir[i], pk.tmax[i], cone[i], px,
+                                        &t_first);
                 sc->primed = NULL;
                 if (pass->depth)
-                    pass->depth[(size_t)(vp[1] + y) * pass->fb_width + vp[0] + x] =
+                    pass->depth[at] =
                         raster_window_depth(st->projection, pk.org[i], pk.dir[i], t_first);
             }
         }
@@ -327,12 +407,14 @@ void render_tile(struct render_pass *pass, uint32_t tile, int worker)
         render_tile_packets(pass, &sc, x0, y0);
         return;
     }
+    struct unproject_cache cache;
+    unproject_cache_init(&cache, x0, y0);
     for (int y = y0; y < y0 + RENDER_TILE_SIZE && y < vp[3]; y++)
         for (int x = x0; x < x0 + RENDER_TILE_SIZE && x < vp[2]; x++) {
             float *px = &pass->fb[4 * ((size_t)(vp[1] + y) * pass->fb_width + vp[0] + x)];
             float org[3], dir[3], tmax;
             struct shade_cone cone;
-            if (!primary_ray(pass, x, y, org, dir, &tmax, &cone)) {
+            if (!primary_ray(pass, &cache, x, y, org, dir, &tmax, &cone)) {
                 memcpy(px, st->clear_color, 4 * sizeof(float));
                 continue;
             }

@@ -39,6 +39,17 @@ struct scene_object {
     /* RT_AUTOMATIC: traversal time lost to refitting since the last build
      * (update.c). */
     double automatic_lost_ms;
+    /* RT_AUTOMATIC: the rays that reached inside the object since its
+     * last update (the render threads count them per thread and add them
+     * here, trace/scene_traverse.h), counted only while count_rays is
+     * set, i.e. for objects whose updates the automatic strategy decides;
+     * the next update takes it as expected_rays (Yoon, Curtis and Manocha
+     * (2007) sec. 4.1.1: the previous frame's rays intersecting the
+     * root).  Kept apart from the fields every ray reads. */
+    char ray_visits_pad_before[64];
+    uint64_t ray_visits;
+    char ray_visits_pad_after[64];
+    int count_rays;
 
     /* Hints (rtObjectParameteri); RT_AUTOMATIC when none was given. */
     unsigned class_hint;

@@ -54,7 +54,7 @@ static void visit_instance(struct packet_top *s, uint32_t index, unsigned rays)
     const struct trace_kernels *k = s->kernels;
     struct trace_scene_counters *counters = s->counters;
     const struct trace_instance *inst = &scene->instances[index];
-    struct trace_object_view view = {NULL, NULL, NULL};
+    struct trace_object_view view = {NULL, NULL, NULL, NULL};
     counters->instance_tests += (uint64_t)popcount(rays);
     if (!scene->acquire(scene->user, inst->object, &view))
         return;
@@ -74,6 +74,10 @@ static void visit_instance(struct packet_top *s, uint32_t index, unsigned rays)
     if (!live)
         return;
     const int wide = view.wide && view.wide->node_count && k->closest4;
+    /* RT_AUTOMATIC's count of the rays reaching inside the object, as the
+     * single walk's visit_instance counts them. */
+    const uint64_t tests_before = counters->object.node_tests;
+    const uint32_t root_tests = wide ? view.wide->width : 1;
     if (s->any_hit) {
         unsigned hit = 0;
         if (wide && popcount(live) > 1) {
@@ -88,6 +92,9 @@ static void visit_instance(struct packet_top *s, uint32_t index, unsigned rays)
                     hit |= 1u << r;
             }
         }
+        if (view.ray_count)
+            trace_scene_count_rays(counters, view.ray_count, tests_before, root_tests,
+                                   (uint32_t)popcount(live));
         s->done |= hit;
         return;
     }
@@ -106,6 +113,9 @@ static void visit_instance(struct packet_top *s, uint32_t index, unsigned rays)
                 got |= 1u << r;
         }
     }
+    if (view.ray_count)
+        trace_scene_count_rays(counters, view.ray_count, tests_before, root_tests,
+                               (uint32_t)popcount(live));
     for (unsigned m = got; m; m &= m - 1u) {
         const int r = first(m);
         struct trace_scene_hit *hit = &s->hits[r];

@@ -4,6 +4,7 @@
  */
 #include "trace/scene_traverse.h"
 
+#include "base/atomic.h"
 #include "trace/intersect.h"
 
 #include <math.h>
@@ -48,6 +49,25 @@ int trace_scene_object_ray(const struct trace_instance *inst, const float org[3]
     return 1;
 }
 
+void trace_scene_flush_ray_count(struct trace_scene_counters *counters)
+{
+    if (counters->ray_count && counters->ray_count_pending)
+        rt_atomic_add_fetch_relaxed(counters->ray_count, counters->ray_count_pending);
+    counters->ray_count_pending = 0;
+}
+
+void trace_scene_count_rays(struct trace_scene_counters *counters, uint64_t *target,
+                            uint64_t tests_before, uint32_t root_tests, uint32_t rays)
+{
+    if (counters->object.node_tests - tests_before <= (uint64_t)root_tests * rays)
+        return;
+    if (counters->ray_count != target) {
+        trace_scene_flush_ray_count(counters);
+        counters->ray_count = target;
+    }
+    counters->ray_count_pending += rays;
+}
+
 /* The per-ray state both top-level walks share. */
 struct top_state {
     const struct trace_scene *scene;
@@ -72,7 +92,7 @@ static int visit_instance(struct top_state *s, uint32_t index)
     const struct trace_kernels *kernels = s->kernels;
     struct trace_scene_counters *counters = s->counters;
     const struct trace_instance *inst = &scene->instances[index];
-    struct trace_object_view view = {NULL, NULL, NULL};
+    struct trace_object_view view = {NULL, NULL, NULL, NULL};
     counters->instance_tests++;
     if (!scene->acquire(scene->user, inst->object, &view))
         return 0;
@@ -82,10 +102,19 @@ static int visit_instance(struct top_state *s, uint32_t index)
     /* The wide walk where the table has one and the object a wide
      * layout: the same answers (kernels.h). */
     const int wide = view.wide && view.wide->node_count && kernels->closest4;
-    if (s->any_hit)
-        return wide ? kernels->any4(view.wide, view.bvh, view.tri, &o_ray, s->best,
-                                    &counters->object)
-                    : kernels->any(view.bvh, view.tri, &o_ray, s->best, &counters->object);
+    /* A ray reaches inside the object when its walk tests more boxes than
+     * the root's (the root box for the binary walk, the root's children
+     * for a wide one). */
+    const uint64_t tests_before = counters->object.node_tests;
+    if (s->any_hit) {
+        int got = wide ? kernels->any4(view.wide, view.bvh, view.tri, &o_ray, s->best,
+                                       &counters->object)
+                       : kernels->any(view.bvh, view.tri, &o_ray, s->best, &counters->object);
+        if (view.ray_count)
+            trace_scene_count_rays(counters, view.ray_count, tests_before,
+                                   wide ? view.wide->width : 1, 1);
+        return got;
+    }
     /* Ties between instances go to the lower instance, as ties inside an
      * object go to the lower primitive: hits do not depend on the
      * top-level tree nor on the order of visits (an instance's hit at
@@ -96,6 +125,9 @@ static int visit_instance(struct top_state *s, uint32_t index)
     int got = wide ? kernels->closest4(view.wide, view.bvh, view.tri, &o_ray, limit, &h,
                                        &counters->object)
                    : kernels->closest(view.bvh, view.tri, &o_ray, limit, &h, &counters->object);
+    if (view.ray_count)
+        trace_scene_count_rays(counters, view.ray_count, tests_before,
+                                   wide ? view.wide->width : 1, 1);
     struct trace_scene_hit *hit = s->hit;
     if (got && (!s->found || h.t < s->best || index < hit->instance)) {
         s->best = h.t;

@@ -36,6 +36,11 @@ struct trace_object_view {
     const struct bvh *bvh;
     const float *tri;
     const struct bvh4 *wide; /* NULL or empty: the binary walk only */
+    /* NULL, or where the rays that reach inside the object are counted
+     * (the automatic update strategy's measured rays, scene/update.c):
+     * visit_instance counts them per thread in trace_scene_counters and
+     * the caller adds them here with flush_ray_count. */
+    uint64_t *ray_count;
 };
 
 /* Fills *view for the object; returns 0 when it cannot be had (allocation
@@ -70,7 +75,22 @@ struct trace_scene_counters {
     uint64_t top_node_tests;
     uint64_t instance_tests;
     uint64_t rays;
+    /* Rays counted for view.ray_count and not yet added to it: one
+     * counter at a time per thread, added (one atomic add) when another
+     * counted object comes, and by trace_scene_flush_ray_count. */
+    uint64_t *ray_count;
+    uint64_t ray_count_pending;
 };
+
+/* Adds the rays counted for a view's ray_count (see above) to it;
+ * call when the thread's tracing is over. */
+void trace_scene_flush_ray_count(struct trace_scene_counters *counters);
+/* Counts `rays` rays for `target` when their object walk went past the
+ * root's `root_tests` box tests a ray (tests_before: the node tests before
+ * the walk).  A packet's rays are counted together, all of them when the
+ * packet went past the root (some of its rays may have stopped there). */
+void trace_scene_count_rays(struct trace_scene_counters *counters, uint64_t *target,
+                            uint64_t tests_before, uint32_t root_tests, uint32_t rays);
 
 /* Closest hit with tmin <= t < tmax in world space.  Returns 1 on a hit. */
 int trace_scene_closest(const struct trace_scene *scene, const float org[3], const float dir[3],
