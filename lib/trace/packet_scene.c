@@ -161,22 +161,7 @@ static void walk_top(struct packet_top *s, const struct bvh4 *wide, unsigned act
             const uint8_t *count;
             uint32_t order;
             const int octant = s->octant[first(rays)];
-            if (width == 4) {
-                const struct bvh4_node *n = &wide->nodes[cur];
-                bounds = &n->bounds[0][0];
-                child = n->child;
-                count = n->count;
-                order = 0;
-                for (int q = 0; q < 4; q++)
-                    order |= (uint32_t)(n->order[octant] >> (2 * q) & 3u) << (3 * q);
-            } else {
-                const struct bvh8_node *n = &wide->nodes8[cur];
-                bounds = &n->bounds[0][0];
-                child = n->child;
-                count = n->count;
-                order = (uint32_t)n->order[octant][0] | (uint32_t)n->order[octant][1] << 8 |
-                        (uint32_t)n->order[octant][2] << 16;
-            }
+            order = trace_scene_wide_node(wide, width, cur, octant, &bounds, &child, &count);
             unsigned lane_rays[8] = {0, 0, 0, 0, 0, 0, 0, 0};
             float t_min[8];
             for (uint32_t l = 0; l < width; l++)

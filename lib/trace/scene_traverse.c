@@ -301,22 +301,7 @@ static int walk_wide(struct top_state *s, const struct bvh4 *wide)
             const uint32_t *child;
             const uint8_t *count;
             uint32_t order;
-            if (width == 4) {
-                const struct bvh4_node *n = &wide->nodes[cur];
-                bounds = &n->bounds[0][0];
-                child = n->child;
-                count = n->count;
-                order = 0;
-                for (int p = 0; p < 4; p++)
-                    order |= (uint32_t)(n->order[octant] >> (2 * p) & 3u) << (3 * p);
-            } else {
-                const struct bvh8_node *n = &wide->nodes8[cur];
-                bounds = &n->bounds[0][0];
-                child = n->child;
-                count = n->count;
-                order = (uint32_t)n->order[octant][0] | (uint32_t)n->order[octant][1] << 8 |
-                        (uint32_t)n->order[octant][2] << 16;
-            }
+            order = trace_scene_wide_node(wide, width, cur, octant, &bounds, &child, &count);
             counters->top_node_tests += width;
             float te[8];
             unsigned mask = trace_scene_wide_lanes(bounds, width, near_row, far_row, ray, s->box_limit, te);

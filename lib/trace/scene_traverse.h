@@ -118,4 +118,30 @@ unsigned trace_scene_wide_lanes(const float *bounds, uint32_t width, const int n
                                 const int far_row[3], const struct trace_ray *ray, float t_max,
                                 float t_entry[8]);
 
+/* Node `cur` of the wide top level: its lane boxes, children and counts,
+ * and its child order for `octant` as 3-bit lane numbers (the first lane
+ * to visit in the highest bits), whether the layout is 4 or 8 wide; the
+ * single and the packet walks read nodes through it. */
+static inline uint32_t trace_scene_wide_node(const struct bvh4 *wide, uint32_t width,
+                                             uint32_t cur, int octant, const float **bounds,
+                                             const uint32_t **child, const uint8_t **count)
+{
+    if (width == 4) {
+        const struct bvh4_node *n = &wide->nodes[cur];
+        uint32_t order = 0;
+        *bounds = &n->bounds[0][0];
+        *child = n->child;
+        *count = n->count;
+        for (int q = 0; q < 4; q++)
+            order |= (uint32_t)(n->order[octant] >> (2 * q) & 3u) << (3 * q);
+        return order;
+    }
+    const struct bvh8_node *n = &wide->nodes8[cur];
+    *bounds = &n->bounds[0][0];
+    *child = n->child;
+    *count = n->count;
+    return (uint32_t)n->order[octant][0] | (uint32_t)n->order[octant][1] << 8 |
+           (uint32_t)n->order[octant][2] << 16;
+}
+
 #endif
