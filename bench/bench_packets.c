@@ -124,7 +124,9 @@ static int packets_mesh(const struct bench_options *opts, const struct bench_mes
     struct bench_rays sets[3];
     struct bench_hit *single = NULL, *packed = NULL, *theirs = NULL;
     double *times = NULL;
+#ifdef RT_HAVE_EMBREE
     void *embree = NULL;
+#endif
     int rc = -1;
     memset(sets, 0, sizeof(sets));
     memset(&acc, 0, sizeof(acc));
