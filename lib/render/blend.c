@@ -108,8 +108,7 @@ static float surface_alpha(const struct shade_context *sc, const struct trace_sc
 static const struct scene_raster *hit_raster(const struct shade_context *sc,
                                              const struct trace_scene_hit *hit)
 {
-    const struct trace_instance *ti = &sc->scene->instances[hit->instance];
-    return &sc->frame->committed.items[ti->instance_id].appearance.raster;
+    return &shade_hit_instance(sc, hit)->appearance.raster;
 }
 
 void blend_trace_primary(const struct shade_context *sc, const float org[3], const float dir[3],
@@ -146,9 +145,7 @@ void blend_trace_primary_state(const struct shade_context *sc, const float org[3
                 p[k] = (double)org[k] + (double)hit.t * (double)dir[k];
             /* The planes the hit triangle was drawn under: GL clips each
              * primitive by its own (scene/clip.h). */
-            const struct trace_instance *ti = &sc->scene->instances[hit.instance];
-            if (scene_clip_removes(&sc->frame->committed.items[ti->instance_id].appearance.clip,
-                                   p))
+            if (scene_clip_removes(&shade_hit_instance(sc, &hit)->appearance.clip, p))
                 continue;
         }
         shade_hit(sc, org, dir, &hit, cone, 0, layers[n]);

@@ -66,8 +66,7 @@ static void eye_position(const struct scene_instance *inst, const struct scene_m
 static void fetch_triangle(const struct shade_context *sc, const struct trace_scene_hit *hit,
                            struct gl_triangle *t)
 {
-    const struct trace_instance *ti = &sc->scene->instances[hit->instance];
-    t->inst = &sc->frame->committed.items[ti->instance_id];
+    t->inst = shade_hit_instance(sc, hit);
     t->mesh = &t->inst->object->mesh;
     t->v = &t->mesh->indices[3 * hit->prim];
     t->resolved = t->mesh->materials[t->mesh->tri_material[hit->prim]];
@@ -122,8 +121,7 @@ int gl_closest_drawn(const struct shade_context *sc, const float org[3], const f
             *hit = sc->primed->hit;
         } else if (!trace_scene_closest(sc->scene, org, dir, tmin, tmax, hit, sc->counters))
             return 0;
-        const struct trace_instance *ti = &sc->scene->instances[hit->instance];
-        const struct scene_instance *inst = &sc->frame->committed.items[ti->instance_id];
+        const struct scene_instance *inst = shade_hit_instance(sc, hit);
         const struct scene_mesh *mesh = &inst->object->mesh;
         const struct scene_material *m = &mesh->materials[mesh->tri_material[hit->prim]];
         /* No culling recorded, and none taken from the call (a list's

@@ -32,6 +32,15 @@ struct shade_primed {
     struct trace_scene_hit hit;
 };
 
+/* The frame's instance a hit belongs to: its appearance, clip planes and
+ * raster state, and its object's mesh. */
+static inline const struct scene_instance *shade_hit_instance(const struct shade_context *sc,
+                                                              const struct trace_scene_hit *hit)
+{
+    const struct trace_instance *ti = &sc->scene->instances[hit->instance];
+    return &sc->frame->committed.items[ti->instance_id];
+}
+
 /*
  * A ray cone, the pixel footprint a ray carries for texture level of
  * detail (Akenine-Möller, Nilsson, Andersson, Barré-Brisebois, Toth and

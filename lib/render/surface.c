@@ -259,8 +259,7 @@ void surface_resolve_material(const struct scene_appearance *call, struct scene_
 void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit *hit,
                    const float dir[3], float width, struct surface *s)
 {
-    const struct trace_instance *ti = &sc->scene->instances[hit->instance];
-    const struct scene_instance *inst = &sc->frame->committed.items[ti->instance_id];
+    const struct scene_instance *inst = shade_hit_instance(sc, hit);
     const struct scene_mesh *mesh = &inst->object->mesh;
     const uint32_t *v = &mesh->indices[3 * hit->prim];
     const float b1 = hit->u, b2 = hit->v, b0 = 1.0f - hit->u - hit->v;
@@ -356,8 +355,7 @@ int surface_texel(const struct shade_context *sc, const struct trace_scene_hit *
     const struct scene_texture *tex = scene_textures_lookup(sc->textures, name);
     if (!tex || !tex->texels)
         return 0;
-    const struct trace_instance *ti = &sc->scene->instances[hit->instance];
-    const struct scene_instance *inst = &sc->frame->committed.items[ti->instance_id];
+    const struct scene_instance *inst = shade_hit_instance(sc, hit);
     const struct scene_mesh *mesh = &inst->object->mesh;
     const uint32_t *v = &mesh->indices[3 * hit->prim];
     const float b1 = hit->u, b2 = hit->v, b0 = 1.0f - hit->u - hit->v;
