@@ -289,7 +289,7 @@ static void light_model(const char *caller, RTenum pname, const RTfloat *params,
         ctx->render.light_model_local_viewer = params[0] != 0.0f;
     /* Per primitive (scene/gl_state.h): a list's later geometry gets a
      * segment whose instance carries the light model current there. */
-    rt_list_gl_state_changed(ctx, caller);
+    rt_list_state_changed(ctx, caller);
 }
 
 void rtLightModelfv(RTenum pname, const RTfloat *params)

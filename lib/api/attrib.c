@@ -201,7 +201,7 @@ static void restore(struct rt_context *ctx, const struct attrib_entry *e)
     rt_sync_fixed_function(ctx);
     /* Clip planes, fog, the light model and the raster state travel with a
      * list's segments (list.c): the geometry after the pop starts one. */
-    rt_list_clip_changed(ctx);
+    rt_list_state_changed(ctx, "rtPopAttrib");
 }
 
 /* While an RT_COMPILE list is recorded from the application: the push or

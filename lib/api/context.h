@@ -338,14 +338,13 @@ int rt_list_matrix(struct rt_context *ctx, const char *caller, enum scene_list_o
                    RTenum mode, const double m[16]);
 void rt_list_state(struct rt_context *ctx, enum list_state_call what, RTenum b, RTenum c,
                    const float *v, int n);
-/* After a clip-plane call (or a change of the raster state of
- * scene/raster_state.h) took effect while a list is compiled: the
- * list's later geometry starts a segment of its own, so that its
- * instance carries the state current there at the call. */
-void rt_list_clip_changed(struct rt_context *ctx);
-/* The same after a fog or light-model call took effect: the state is
- * per primitive, carried by the instance (scene/gl_state.h). */
-void rt_list_gl_state_changed(struct rt_context *ctx, const char *caller);
+/* After a call changed state that is per primitive and carried by the
+ * instance (clip planes, scene/clip.h; fog, light model and texture
+ * generation, scene/gl_state.h; blend, alpha test and polygon offset,
+ * scene/raster_state.h) while a list is compiled: the list's later
+ * geometry starts a segment of its own, so that its instance carries the
+ * state current there at the call. */
+void rt_list_state_changed(struct rt_context *ctx, const char *caller);
 /* Applies a matrix operation to the context's stacks as the entry point
  * would (errors named after caller) (matrix.c). */
 void rt_matrix_apply(struct rt_context *ctx, const char *caller, enum scene_list_op_kind kind,

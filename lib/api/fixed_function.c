@@ -78,7 +78,7 @@ static void fog(const char *caller, RTenum pname, const RTfloat *params, int vec
         break;
     }
     /* Per primitive: a list's later geometry gets a segment of its own. */
-    rt_list_gl_state_changed(ctx, caller);
+    rt_list_state_changed(ctx, caller);
 }
 
 void rt_gl_state_now(const struct rt_context *ctx, struct scene_gl_state *gl)
@@ -242,7 +242,7 @@ static void tex_gen(const char *caller, RTenum coord, RTenum pname, const RTfloa
      * eye plane recorded in a list is transformed by the modelview of its
      * replay, as glCallList executes glTexGen): later geometry gets a
      * segment of its own. */
-    rt_list_gl_state_changed(ctx, caller);
+    rt_list_state_changed(ctx, caller);
 }
 
 void rtTexGeni(RTenum coord, RTenum pname, RTint param)

@@ -436,17 +436,17 @@ static void set_capability(const char *caller, RTenum cap, int value)
     /* Clip planes are per primitive: a list's later geometry gets a
      * segment of its own (list.c). */
     if (cap >= RT_CLIP_PLANE0 && cap < RT_CLIP_PLANE0 + RENDER_MAX_CLIP_PLANES)
-        rt_list_clip_changed(ctx);
+        rt_list_state_changed(ctx, caller);
     /* So is the raster state triangles take (scene/raster_state.h). */
     if (cap == RT_BLEND || cap == RT_ALPHA_TEST || cap == RT_POLYGON_OFFSET_FILL)
-        rt_list_clip_changed(ctx);
+        rt_list_state_changed(ctx, caller);
     if (cap == RT_CULL_FACE || cap == RT_NORMALIZE || cap == RT_RESCALE_NORMAL ||
         cap == RT_TEXTURE_GEN_S || cap == RT_TEXTURE_GEN_T)
         rt_sync_fixed_function(ctx);
     /* Fog and texture generation reach a list's geometry through its
      * instance (scene/gl_state.h, list.c): a segment of its own. */
     if (cap == RT_FOG || cap == RT_TEXTURE_GEN_S || cap == RT_TEXTURE_GEN_T)
-        rt_list_gl_state_changed(ctx, caller);
+        rt_list_state_changed(ctx, caller);
 }
 
 void rtEnable(RTenum cap)

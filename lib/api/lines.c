@@ -104,7 +104,7 @@ static int record(struct rt_context *ctx, enum list_state_call what, RTenum b, R
     rt_list_state(ctx, what, b, c, v, n);
     if (ctx->list_mode != RT_COMPILE_AND_EXECUTE) {
         if (split)
-            rt_list_clip_changed(ctx);
+            rt_list_state_changed(ctx, "raster state");
         return 1;
     }
     return 0;
@@ -207,7 +207,7 @@ void rtBlendFunc(RTenum sfactor, RTenum dfactor)
         return;
     ctx->render.vis.blend_src = sfactor;
     ctx->render.vis.blend_dst = dfactor;
-    rt_list_clip_changed(ctx); /* RT_COMPILE_AND_EXECUTE: a segment of its own */
+    rt_list_state_changed(ctx, "rtBlendFunc"); /* RT_COMPILE_AND_EXECUTE: a segment of its own */
 }
 
 void rtAlphaFunc(RTenum func, RTfloat ref)
@@ -226,7 +226,7 @@ void rtAlphaFunc(RTenum func, RTfloat ref)
         return;
     ctx->render.vis.alpha_func = func;
     ctx->render.vis.alpha_ref = r;
-    rt_list_clip_changed(ctx);
+    rt_list_state_changed(ctx, "rtAlphaFunc");
 }
 
 void rtPolygonOffset(RTfloat factor, RTfloat units)
@@ -240,7 +240,7 @@ void rtPolygonOffset(RTfloat factor, RTfloat units)
         return;
     ctx->render.vis.offset_factor = factor;
     ctx->render.vis.offset_units = units;
-    rt_list_clip_changed(ctx);
+    rt_list_state_changed(ctx, "rtPolygonOffset");
 }
 
 void rtDepthMask(RTboolean flag)
@@ -287,7 +287,7 @@ void rtClipPlane(RTenum plane, const RTdouble *equation)
             return;
         }
         if (ctx->list_mode != RT_COMPILE_AND_EXECUTE) {
-            rt_list_clip_changed(ctx);
+            rt_list_state_changed(ctx, "rtClipPlane");
             return;
         }
     }
@@ -306,7 +306,7 @@ void rtClipPlane(RTenum plane, const RTdouble *equation)
     }
     memcpy(ctx->render.vis.clip_plane[i], e, sizeof(e));
     if (compiling)
-        rt_list_clip_changed(ctx);
+        rt_list_state_changed(ctx, "rtClipPlane");
 }
 
 void rt_clip_now(const struct rt_context *ctx, struct scene_clip *clip)

@@ -189,20 +189,7 @@ int rt_list_matrix(struct rt_context *ctx, const char *caller, enum scene_list_o
     return 1;
 }
 
-void rt_list_clip_changed(struct rt_context *ctx)
-{
-    if (!rt_list_compiling(ctx))
-        return;
-    if (scene_list_split(&ctx->recording)) {
-        list_out_of_memory(ctx, "clip plane");
-        return;
-    }
-    /* RT_COMPILE_AND_EXECUTE: the new segment is instanced with the
-     * state now in effect. */
-    capture_segment(ctx);
-}
-
-void rt_list_gl_state_changed(struct rt_context *ctx, const char *caller)
+void rt_list_state_changed(struct rt_context *ctx, const char *caller)
 {
     if (!rt_list_compiling(ctx))
         return;
@@ -210,6 +197,8 @@ void rt_list_gl_state_changed(struct rt_context *ctx, const char *caller)
         list_out_of_memory(ctx, caller);
         return;
     }
+    /* RT_COMPILE_AND_EXECUTE: the new segment is instanced with the
+     * state now in effect. */
     capture_segment(ctx);
 }
 
