@@ -37,6 +37,19 @@ static void default_state(struct render_state *st)
     l->spot_cutoff = 180.0f;
 }
 
+/* gl_light_point_model under the light model st holds, as a primitive
+ * drawn with it would be lit. */
+static void gl_light_point(const struct render_state *st, const struct gl_face_material *m,
+                           const float p[3], const float n[3], float rgba[4])
+{
+    struct scene_light_model lm;
+    memset(&lm, 0, sizeof(lm));
+    lm.two_side = st->light_model_two_side;
+    lm.local_viewer = st->light_model_local_viewer;
+    memcpy(lm.ambient, st->global_ambient, sizeof(lm.ambient));
+    gl_light_point_model(st, &lm, m, p, n, rgba);
+}
+
 static void front(const struct scene_material *mat, struct gl_face_material *fm)
 {
     static const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};

@@ -70,17 +70,6 @@ float gl_spot_factor(const struct render_light *l, const float vp[3])
     return cosine > 0.0f ? powf(cosine, l->spot_exponent) : 0.0f;
 }
 
-void gl_light_point(const struct render_state *st, const struct gl_face_material *m,
-                    const float p[3], const float n[3], float rgba[4])
-{
-    struct scene_light_model lm;
-    memset(&lm, 0, sizeof(lm));
-    lm.two_side = st->light_model_two_side;
-    lm.local_viewer = st->light_model_local_viewer;
-    memcpy(lm.ambient, st->global_ambient, sizeof(lm.ambient));
-    gl_light_point_model(st, &lm, m, p, n, rgba);
-}
-
 void gl_light_point_model(const struct render_state *st, const struct scene_light_model *lm,
                           const struct gl_face_material *m, const float p[3], const float n[3],
                           float rgba[4])

@@ -43,13 +43,10 @@ void gl_face_material(const struct scene_material *mat, int back, int color_mate
  * unit half vector of VP_i and (0, 0, 1), or of VP_i and the unit vector to
  * the eye at the origin under RT_LIGHT_MODEL_LOCAL_VIEWER.  Dot products
  * are clamped at 0; each channel of the result clamped to [0, 1]; alpha is
- * the diffuse material's (GL).
+ * the diffuse material's (GL).  The global ambient a_cs and the local
+ * viewer are the light model `lm`'s: the one current when the primitive
+ * was drawn (scene/gl_state.h), not st's.
  */
-void gl_light_point(const struct render_state *st, const struct gl_face_material *m,
-                    const float p[3], const float n[3], float rgba[4]);
-/* The same under the light model `lm` (the global ambient and the local
- * viewer) rather than st's: the one current when the primitive was drawn
- * (scene/gl_state.h).  gl_light_point is this with st's own. */
 void gl_light_point_model(const struct render_state *st, const struct scene_light_model *lm,
                           const struct gl_face_material *m, const float p[3], const float n[3],
                           float rgba[4]);
