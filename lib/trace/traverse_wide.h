@@ -20,9 +20,10 @@
  *   removed, visiting a small subtree's triangles as one leaf, and
  *   visiting children in another order change the work done (the node
  *   and triangle counts) but not the hit;
- * - the leaves are tested by the packet filter of intersect_tri4.h and
- *   isect_triangle itself for the lanes it keeps, with walk_leaf's limit
- *   and hit rule (traverse_walk.h).
+ * - the leaves are tested by the packet filter of intersect_tri4.h and,
+ *   for the lanes it keeps, the rest of isect_triangle on the filter's
+ *   own floats (tri4_lane_test), with walk_leaf's limit and hit rule
+ *   (traverse_walk.h).
  *
  * Child order: the hit children are visited in the node's precomputed
  * order for the ray's octant (Fuetterling, Lojewski, Pfreundt and Ebert
@@ -69,15 +70,14 @@ static inline int wide_leaf(struct wide_state *s, const struct tri4_packet *pack
         const uint32_t n = count - j < 4 ? count - j : 4;
         s->triangle_tests += n;
         float limit = s->found ? isect_next_up(s->best) : s->best;
-        unsigned mask = tri4_candidates(&s->r4, p, (1u << n) - 1u, limit);
+        struct tri4_lanes lanes;
+        unsigned mask = tri4_candidates_lanes(&s->r4, p, (1u << n) - 1u, limit, &lanes);
         while (mask) {
             const unsigned l = (unsigned)__builtin_ctz(mask);
             mask &= mask - 1u;
-            float v[9];
             float t, u, w;
-            tri4_lane(p, l, v);
             limit = s->found ? isect_next_up(s->best) : s->best;
-            if (!isect_triangle(s->ray, v, v + 3, v + 6, limit, &t, &u, &w))
+            if (!tri4_lane_test(s->ray, p, &lanes, l, s->any_hit, limit, &t, &u, &w))
                 continue;
             if (s->any_hit) {
                 s->found = 1;
