@@ -44,7 +44,8 @@ struct bench_options {
     const char *isa;      /* --isa NAME: our kernels' ISA table; NULL = the best */
     int bart_strategies_only; /* `bart-strategies`: only the museum's update strategies */
     int threads; /* --threads N: render threads of the strategy tables; 0 = their default */
-    const char *only; /* --only KEYS: bart-strategies runs only these strategies */
+    const char *only; /* --only KEYS: bart-strategies runs only these strategies;
+                       * embree: `ours` or `embree` runs only that path */
     int bart_frame_overhead_only; /* `frame-overhead`: only the kitchen frame against bare rays */
     int argc;
     char **argv;
@@ -238,6 +239,9 @@ double bench_fresh_sah(const struct bench_mesh *mesh, enum bvh_builder builder,
 #define BENCH_CHUNK 1024
 typedef void (*bench_kernel_fn)(void *ctx, const RTray *rays, uint32_t begin, uint32_t end,
                                 struct bench_hit *hits);
+/* --thread-clock: bench_run_parallel times one-thread runs by the
+ * thread's CPU clock instead of the wall clock. */
+void bench_use_thread_clock(void);
 double bench_run_parallel(bench_kernel_fn kernel, void *ctx, const struct bench_rays *set,
                           struct bench_hit *hits, int threads);
 

@@ -216,10 +216,23 @@ static int embree_trace_set(const struct bench_options *opts, struct bench_accel
     if (!times)
         return -1;
     memset(row, 0, sizeof(*row));
+    /* --only ours,medium,high: only these paths (e.g. one path alone under
+     * perf stat); --threads 1 or 2: only that thread count. */
+    int run_path[1 + QUALITIES];
+    for (int p = 0; p < 1 + QUALITIES; p++)
+        run_path[p] = !opts->only ||
+                      bench_strategy_selected(opts->only, p == 0   ? "ours"
+                                                          : p == 1 ? "medium"
+                                                                   : "high");
+    memset(times, 0, (size_t)paths * opts->runs * sizeof(*times));
     for (int run = 0; run < opts->runs; run++) {
         for (int t = 0; t < 2; t++) {
+            if (opts->threads && opts->threads != t + 1)
+                continue;
             for (int p = 0; p < 1 + QUALITIES; p++) {
                 double ms;
+                if (!run_path[p])
+                    continue;
                 if (p == 0)
                     ms = bench_run_parallel(any_hit ? bench_kernel_any : bench_kernel_closest, acc,
                                             set, ours, t + 1);
@@ -233,7 +246,7 @@ static int embree_trace_set(const struct bench_options *opts, struct bench_accel
                 times[(t * (1 + QUALITIES) + p) * opts->runs + run] = ms;
                 /* Compare once per quality: the answers do not change
                  * from run to run. */
-                if (p > 0 && run == 0 && t == 0)
+                if (p > 0 && run == 0 && t == (opts->threads == 2) && run_path[0])
                     bench_compare_hits(&row->agree[p - 1], ours, theirs, set->count, 1);
             }
         }
@@ -280,6 +293,8 @@ static int embree_trace_mesh(const struct bench_options *opts, RTCDevice device,
             goto out;
         for (int t = 0; t < 2; t++) {
             const double *m = row.mrays[t];
+            if (opts->threads && opts->threads != t + 1)
+                continue;
             report_row("%s|%s%s|%d|%.3f|%.3f|%.3f|%.2f|%.2f|%.2f%%|%.2f%%|%.2f%%", mesh->name,
                        sets[s].name, any_hit ? " (any hit)" : "", t + 1, m[0], m[1], m[2],
                        m[1] > 0 ? m[0] / m[1] : 0.0, m[2] > 0 ? m[0] / m[2] : 0.0,

@@ -85,7 +85,9 @@ static void usage(FILE *f)
             "  --runs N   timings are the median of N runs (default %d)\n"
             "  --threads N  render threads of bart-strategies' contexts (default 2)\n"
             "  --only KEYS  bart-strategies: only these strategies (refit,rebuild,median,\n"
-            "             heuristic,restructure,async,automatic)\n"
+            "             heuristic,restructure,async,automatic); embree: only these\n"
+            "             paths (ours,medium,high), with --threads 1|2 one thread count\n"
+            "  --thread-clock  one-thread trace runs timed by the thread's CPU clock\n"
             "  --out DIR  write results.md, results.csv and PNG plots (gnuplot) to DIR\n"
             "  --baseline FILE  compare with an earlier results.csv; flag drops beyond\n"
             "             --tolerance PCT (default %.0f) and exit with status 2\n"
@@ -174,6 +176,8 @@ int main(int argc, char **argv)
                 return 1;
             }
             i++;
+        } else if (!strcmp(a, "--thread-clock")) {
+            bench_use_thread_clock();
         } else if (!strcmp(a, "--only") && value) {
             opts.only = value;
             i++;

@@ -7,10 +7,12 @@
  * Two checks per packet of four triangles and ray:
  * 1. the filter keeps every lane isect_triangle accepts at the packet's
  *    limit (a lane it drops must be one the scalar test rejects);
- * 2. the leaf as the wide walk tests it (filter once, then isect_triangle
- *    on the kept lanes in order with walk_leaf's shrinking limit and tie
- *    rule) gives bit for bit the answer of walk_leaf's plain loop over
- *    the four triangles: found, t, u, v and primitive, closest and any.
+ * 2. the leaf as the wide walk tests it (filter once, then tri4_lane_test:
+ *    the rest of isect_triangle on the filter's own floats, or for any
+ *    hit isect_triangle_occludes, on the kept lanes in order with
+ *    walk_leaf's shrinking limit and tie rule) gives bit for bit the
+ *    answer of walk_leaf's plain loop over the four triangles: found, t,
+ *    u, v and primitive, closest and any.
  * The rays are aimed at the triangles' vertices and edge points (where
  * the edge functions are 0 and the double-precision fallback decides),
  * at their insides, and past them; the triangles are random, grid
@@ -75,15 +77,17 @@ static struct leaf_answer packet_leaf(const struct trace_ray *ray, const struct 
     struct tri4_ray r4;
     tri4_ray_init(&r4, ray);
     float best = t_max;
-    unsigned mask = tri4_candidates(&r4, p, 15u, t_max);
+    struct tri4_lanes lanes;
+    unsigned mask = tri4_candidates_lanes(&r4, p, 15u, t_max, &lanes);
     *kept = mask;
     while (mask) {
         unsigned l = (unsigned)__builtin_ctz(mask);
         mask &= mask - 1u;
-        float v[9], t, u, w;
-        tri4_lane(p, l, v);
+        float t, u, w;
         float limit = a.found ? isect_next_up(best) : best;
-        if (!isect_triangle(ray, v, v + 3, v + 6, limit, &t, &u, &w))
+        /* The filter's floats, the rest of isect_triangle on them (or,
+         * any hit, its answer without t). */
+        if (!tri4_lane_test(ray, p, &lanes, l, any_hit, limit, &t, &u, &w))
             continue;
         if (any_hit) {
             a.found = 1;

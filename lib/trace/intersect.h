@@ -314,6 +314,154 @@ static inline float isect_clamp_to_box(float t_lo, float t_hi, float t)
 }
 
 /*
+ * The rest of isect_triangle once its float part has accepted the
+ * triangle as a candidate below t_max: the zero-area test, t and its
+ * clamp, the barycentrics.  U, V, W, det, Az, Bz, Cz, t_lo, t_hi and
+ * size (the largest |sheared x, y| of the three vertices) are the float
+ * values isect_triangle computed; the SIMD leaf test (intersect_tri4.h)
+ * computes the same floats four lanes at a time and calls this for the
+ * lanes it keeps, so that a candidate costs no second float pass.
+ */
+static inline int isect_triangle_finish(const struct trace_ray *ray, const float v0[3],
+                                        const float v1[3], const float v2[3], float U, float V,
+                                        float W, float det, float Az, float Bz, float Cz,
+                                        float size, float t_lo, float t_hi, float t_max,
+                                        float *t_out, float *u_out, float *v_out)
+{
+#if defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#endif
+    const float rcp_det = 1.0f / det;
+
+    /* A triangle whose vertices are collinear can still project to a tiny
+     * non-zero area once the sheared coordinates are rounded (measured:
+     * about one ray in ten aimed at such a triangle hit it).  It has no
+     * area, so it is never hit: the edge vectors' cross product in double
+     * is exactly zero for collinear float vertices (the differences are
+     * exact when the coordinates are within 2^29 of each other, and equal
+     * products round equally).  Our addition to the paper; it runs only
+     * for candidate hits.  A closed mesh that contains such a triangle
+     * can leak through the sliver its rounded projection covers; meshes
+     * without zero-area triangles keep the paper's guarantee. */
+    const double e1x = (double)v1[0] - v0[0];
+    const double e1y = (double)v1[1] - v0[1];
+    const double e1z = (double)v1[2] - v0[2];
+    const double e2x = (double)v2[0] - v0[0];
+    const double e2y = (double)v2[1] - v0[1];
+    const double e2z = (double)v2[2] - v0[2];
+    const double nx = e1y * e2z - e1z * e2y;
+    const double ny = e1z * e2x - e1x * e2z;
+    const double nz = e1x * e2y - e1y * e2x;
+    if (nx == 0.0 && ny == 0.0 && nz == 0.0)
+        return 0;
+
+    /* t.  The paper's T / det is only as good as U, V, W: fine for a
+     * proper triangle, but for a sliver thinner than the rounding of the
+     * sheared coordinates the weights are noise and T / det lands anywhere
+     * between the vertices' depths.  So (our addition too) t comes from
+     * geometry computed in double from the exact edge vectors above:
+     * - a proper triangle: the distance to its plane;
+     * - a sliver, whose height is below ISECT_SLIVER_ROUNDINGS roundings
+     *   of the sheared coordinates: there the edge test itself cannot
+     *   tell whether the ray passes through the sliver or beside it, and
+     *   the plane is no better than that, so t is the ray's closest
+     *   approach to the sliver's longest edge.
+     * The paper's t remains when the double computation is degenerate (a
+     * ray parallel to the plane, or to the edge).  Whichever it is, t is
+     * then clamped into the triangle's box (isect_clamp_to_box). */
+    float t = (U * Az + V * Bz + W * Cz) * rcp_det;
+    {
+        const double dx = ray->dir[0];
+        const double dy = ray->dir[1];
+        const double dz = ray->dir[2];
+        const double n2 = nx * nx + ny * ny + nz * nz;
+        /* The longest edge (p, p + e). */
+        const double e3x = e2x - e1x;
+        const double e3y = e2y - e1y;
+        const double e3z = e2z - e1z;
+        const double l1 = e1x * e1x + e1y * e1y + e1z * e1z;
+        const double l2 = e2x * e2x + e2y * e2y + e2z * e2z;
+        const double l3 = e3x * e3x + e3y * e3y + e3z * e3z;
+        const int longest = l1 >= l2 && l1 >= l3 ? 1 : (l2 >= l3 ? 2 : 3);
+        const double lmax = longest == 1 ? l1 : (longest == 2 ? l2 : l3);
+        /* One rounding of the sheared coordinates: 2^-24 of their size. */
+        const double rounding = ISECT_SLIVER_ROUNDINGS * 0x1p-24 * (double)size;
+        double tp = NAN;
+        if (n2 >= rounding * rounding * lmax) {
+            /* height^2 = n2 / lmax: a proper triangle. */
+            const double den = nx * dx + ny * dy + nz * dz;
+            const double num = nx * ((double)v0[0] - ray->org[0]) +
+                               ny * ((double)v0[1] - ray->org[1]) +
+                               nz * ((double)v0[2] - ray->org[2]);
+            if (den != 0.0)
+                tp = num / den;
+        } else {
+            /* e1 and e2 start at v0, e3 at v1. */
+            const float *p = longest == 3 ? v1 : v0;
+            const double ex = longest == 1 ? e1x : (longest == 2 ? e2x : e3x);
+            const double ey = longest == 1 ? e1y : (longest == 2 ? e2y : e3y);
+            const double ez = longest == 1 ? e1z : (longest == 2 ? e2z : e3z);
+            const double wx = (double)p[0] - ray->org[0];
+            const double wy = (double)p[1] - ray->org[1];
+            const double wz = (double)p[2] - ray->org[2];
+            const double dd = dx * dx + dy * dy + dz * dz;
+            const double de = dx * ex + dy * ey + dz * ez;
+            const double ee = ex * ex + ey * ey + ez * ez;
+            const double dw = dx * wx + dy * wy + dz * wz;
+            const double ew = ex * wx + ey * wy + ez * wz;
+            const double den = dd * ee - de * de;
+            if (den > 0.0)
+                tp = (ee * dw - de * ew) / den;
+        }
+        if (!isnan(tp))
+            t = (float)tp;
+    }
+    t = isect_clamp_to_box(t_lo, t_hi, t);
+    if (!(t >= ray->tmin && t < t_max) || !isfinite(t))
+        return 0;
+
+    *t_out = t;
+    *u_out = V * rcp_det;
+    *v_out = W * rcp_det;
+    return 1;
+}
+
+/*
+ * isect_triangle_finish's answer without t, for any-hit queries.  The
+ * final t is clamped into [t_lo, t_hi] (isect_clamp_to_box: a NaN or
+ * infinite t comes out as t_hi or t_lo), so when that interval is not
+ * empty, finite and lies inside [tmin, t_max), every t is accepted and
+ * only the zero-area test can refuse the triangle: the division and the
+ * double-precision distance are skipped.  Otherwise
+ * isect_triangle_finish decides.  Shadow rays, whose t_max is the light's
+ * distance, nearly always take the short way.
+ */
+static inline int isect_triangle_occludes(const struct trace_ray *ray, const float v0[3],
+                                          const float v1[3], const float v2[3], float U,
+                                          float V, float W, float det, float Az, float Bz,
+                                          float Cz, float size, float t_lo, float t_hi,
+                                          float t_max)
+{
+    if (t_lo >= ray->tmin && t_lo <= t_hi && t_hi < t_max && isfinite(t_lo) &&
+        isfinite(t_hi)) {
+        /* isect_triangle_finish's zero-area test, the same doubles. */
+        const double e1x = (double)v1[0] - v0[0];
+        const double e1y = (double)v1[1] - v0[1];
+        const double e1z = (double)v1[2] - v0[2];
+        const double e2x = (double)v2[0] - v0[0];
+        const double e2y = (double)v2[1] - v0[1];
+        const double e2z = (double)v2[2] - v0[2];
+        const double nx = e1y * e2z - e1z * e2y;
+        const double ny = e1z * e2x - e1x * e2z;
+        const double nz = e1x * e2y - e1y * e2x;
+        return !(nx == 0.0 && ny == 0.0 && nz == 0.0);
+    }
+    float t, u, v;
+    return isect_triangle_finish(ray, v0, v1, v2, U, V, W, det, Az, Bz, Cz, size, t_lo, t_hi,
+                                 t_max, &t, &u, &v);
+}
+
+/*
  * The watertight test of Woop, Benthin and Wald 2013, without backface
  * culling: returns 1 with the hit when tmin <= t < t_max.
  * u, v are the weights of v1 and v2 (trace.h).
@@ -421,101 +569,11 @@ static inline int isect_triangle(const struct trace_ray *ray, const float v0[3],
     isect_clamp_interval(ray, ax, bx, cx, ay, by, cy, z_lo, z_hi, &t_lo, &t_hi);
     if (!(t_lo < t_max))
         return 0;
-    const float rcp_det = 1.0f / det;
-
-    /* A triangle whose vertices are collinear can still project to a tiny
-     * non-zero area once the sheared coordinates are rounded (measured:
-     * about one ray in ten aimed at such a triangle hit it).  It has no
-     * area, so it is never hit: the edge vectors' cross product in double
-     * is exactly zero for collinear float vertices (the differences are
-     * exact when the coordinates are within 2^29 of each other, and equal
-     * products round equally).  Our addition to the paper; it runs only
-     * for candidate hits.  A closed mesh that contains such a triangle
-     * can leak through the sliver its rounded projection covers; meshes
-     * without zero-area triangles keep the paper's guarantee. */
-    const double e1x = (double)v1[0] - v0[0];
-    const double e1y = (double)v1[1] - v0[1];
-    const double e1z = (double)v1[2] - v0[2];
-    const double e2x = (double)v2[0] - v0[0];
-    const double e2y = (double)v2[1] - v0[1];
-    const double e2z = (double)v2[2] - v0[2];
-    const double nx = e1y * e2z - e1z * e2y;
-    const double ny = e1z * e2x - e1x * e2z;
-    const double nz = e1x * e2y - e1y * e2x;
-    if (nx == 0.0 && ny == 0.0 && nz == 0.0)
-        return 0;
-
-    /* t.  The paper's T / det is only as good as U, V, W: fine for a
-     * proper triangle, but for a sliver thinner than the rounding of the
-     * sheared coordinates the weights are noise and T / det lands anywhere
-     * between the vertices' depths.  So (our addition too) t comes from
-     * geometry computed in double from the exact edge vectors above:
-     * - a proper triangle: the distance to its plane;
-     * - a sliver, whose height is below ISECT_SLIVER_ROUNDINGS roundings
-     *   of the sheared coordinates: there the edge test itself cannot
-     *   tell whether the ray passes through the sliver or beside it, and
-     *   the plane is no better than that, so t is the ray's closest
-     *   approach to the sliver's longest edge.
-     * The paper's t remains when the double computation is degenerate (a
-     * ray parallel to the plane, or to the edge).  Whichever it is, t is
-     * then clamped into the triangle's box (isect_clamp_to_box). */
-    float t = (U * Az + V * Bz + W * Cz) * rcp_det;
-    {
-        const double dx = ray->dir[0];
-        const double dy = ray->dir[1];
-        const double dz = ray->dir[2];
-        const double n2 = nx * nx + ny * ny + nz * nz;
-        /* The longest edge (p, p + e). */
-        const double e3x = e2x - e1x;
-        const double e3y = e2y - e1y;
-        const double e3z = e2z - e1z;
-        const double l1 = e1x * e1x + e1y * e1y + e1z * e1z;
-        const double l2 = e2x * e2x + e2y * e2y + e2z * e2z;
-        const double l3 = e3x * e3x + e3y * e3y + e3z * e3z;
-        const int longest = l1 >= l2 && l1 >= l3 ? 1 : (l2 >= l3 ? 2 : 3);
-        const double lmax = longest == 1 ? l1 : (longest == 2 ? l2 : l3);
-        /* One rounding of the sheared coordinates: 2^-24 of their size. */
-        float size = isect_max(isect_max(fabsf(Ax), fabsf(Ay)), isect_max(fabsf(Bx), fabsf(By)));
-        size = isect_max(size, isect_max(fabsf(Cx), fabsf(Cy)));
-        const double rounding = ISECT_SLIVER_ROUNDINGS * 0x1p-24 * (double)size;
-        double tp = NAN;
-        if (n2 >= rounding * rounding * lmax) {
-            /* height^2 = n2 / lmax: a proper triangle. */
-            const double den = nx * dx + ny * dy + nz * dz;
-            const double num = nx * ((double)v0[0] - ray->org[0]) +
-                               ny * ((double)v0[1] - ray->org[1]) +
-                               nz * ((double)v0[2] - ray->org[2]);
-            if (den != 0.0)
-                tp = num / den;
-        } else {
-            /* e1 and e2 start at v0, e3 at v1. */
-            const float *p = longest == 3 ? v1 : v0;
-            const double ex = longest == 1 ? e1x : (longest == 2 ? e2x : e3x);
-            const double ey = longest == 1 ? e1y : (longest == 2 ? e2y : e3y);
-            const double ez = longest == 1 ? e1z : (longest == 2 ? e2z : e3z);
-            const double wx = (double)p[0] - ray->org[0];
-            const double wy = (double)p[1] - ray->org[1];
-            const double wz = (double)p[2] - ray->org[2];
-            const double dd = dx * dx + dy * dy + dz * dz;
-            const double de = dx * ex + dy * ey + dz * ez;
-            const double ee = ex * ex + ey * ey + ez * ez;
-            const double dw = dx * wx + dy * wy + dz * wz;
-            const double ew = ex * wx + ey * wy + ez * wz;
-            const double den = dd * ee - de * de;
-            if (den > 0.0)
-                tp = (ee * dw - de * ew) / den;
-        }
-        if (!isnan(tp))
-            t = (float)tp;
-    }
-    t = isect_clamp_to_box(t_lo, t_hi, t);
-    if (!(t >= ray->tmin && t < t_max) || !isfinite(t))
-        return 0;
-
-    *t_out = t;
-    *u_out = V * rcp_det;
-    *v_out = W * rcp_det;
-    return 1;
+    /* isect_triangle_finish's size: the largest sheared |x|, |y|. */
+    float size = isect_max(isect_max(fabsf(Ax), fabsf(Ay)), isect_max(fabsf(Bx), fabsf(By)));
+    size = isect_max(size, isect_max(fabsf(Cx), fabsf(Cy)));
+    return isect_triangle_finish(ray, v0, v1, v2, U, V, W, det, Az, Bz, Cz, size, t_lo, t_hi,
+                                 t_max, t_out, u_out, v_out);
 }
 
 #endif

@@ -82,12 +82,24 @@ static inline void tri4_slab(__m128 d0, __m128 d1, __m128 d2, __m128 inv, int ne
     *t_hi = _mm_min_ps(t_far, *t_hi);
 }
 
+/* The float values of the four lanes that isect_triangle_finish takes
+ * (tri4_candidates_lanes), and the lanes with an edge function of
+ * exactly 0, which only isect_triangle itself may decide. */
+struct tri4_lanes {
+    float U[4], V[4], W[4], det[4];
+    float Az[4], Bz[4], Cz[4];
+    float size[4], t_lo[4], t_hi[4];
+    unsigned deferred;
+};
+
 /*
  * The lanes of p (among `valid`, bit l for lane l) that isect_triangle
- * with this t_max might accept; every other lane it rejects.
+ * with this t_max might accept; every other lane it rejects.  With out
+ * not NULL, also the lanes' float values for isect_triangle_finish.
  */
-static inline unsigned tri4_candidates(const struct tri4_ray *r, const struct tri4_packet *p,
-                                       unsigned valid, float t_max)
+static inline unsigned tri4_candidates_lanes(const struct tri4_ray *r,
+                                             const struct tri4_packet *p, unsigned valid,
+                                             float t_max, struct tri4_lanes *out)
 {
     /* Unaligned loads: a layout's packets are 32-byte aligned, but a
      * packet elsewhere (a test's, on the stack) need not be; on aligned
@@ -145,7 +157,67 @@ static inline unsigned tri4_candidates(const struct tri4_ray *r, const struct tr
     tri4_slab(ax, bx, cx, r->inv_x, r->neg_x, &t_lo, &t_hi);
     tri4_slab(ay, by, cy, r->inv_y, r->neg_y, &t_lo, &t_hi);
     keep = _mm_and_ps(keep, _mm_cmplt_ps(t_lo, limit));
-    return ((unsigned)_mm_movemask_ps(keep) & valid) | deferred;
+    const unsigned mask = ((unsigned)_mm_movemask_ps(keep) & valid) | deferred;
+    if (out && mask) {
+        /* isect_triangle's size: max(max(|Ax|, |Ay|), max(|Bx|, |By|)),
+         * then max with max(|Cx|, |Cy|); maxps(a, b) is a > b ? a : b. */
+        const __m128 sign = _mm_set1_ps(-0.0f);
+        __m128 size = _mm_max_ps(_mm_max_ps(_mm_andnot_ps(sign, Ax), _mm_andnot_ps(sign, Ay)),
+                                 _mm_max_ps(_mm_andnot_ps(sign, Bx), _mm_andnot_ps(sign, By)));
+        size = _mm_max_ps(size, _mm_max_ps(_mm_andnot_ps(sign, Cx), _mm_andnot_ps(sign, Cy)));
+        _mm_storeu_ps(out->U, U);
+        _mm_storeu_ps(out->V, V);
+        _mm_storeu_ps(out->W, W);
+        _mm_storeu_ps(out->det, det);
+        _mm_storeu_ps(out->Az, Az);
+        _mm_storeu_ps(out->Bz, Bz);
+        _mm_storeu_ps(out->Cz, Cz);
+        _mm_storeu_ps(out->size, size);
+        _mm_storeu_ps(out->t_lo, t_lo);
+        _mm_storeu_ps(out->t_hi, t_hi);
+        out->deferred = deferred;
+    }
+    return mask;
+}
+
+static inline unsigned tri4_candidates(const struct tri4_ray *r, const struct tri4_packet *p,
+                                       unsigned valid, float t_max)
+{
+    return tri4_candidates_lanes(r, p, valid, t_max, NULL);
+}
+
+/*
+ * isect_triangle on lane l of p, which tri4_candidates_lanes kept (with
+ * a limit at least t_max) and whose floats it wrote to `lanes`: a
+ * deferred lane goes to isect_triangle itself; any other gets the
+ * rejections on t_max again with this t_max (z_lo < t_max, t_lo <
+ * t_max: the limit may have shrunk since the filter ran) and then
+ * isect_triangle_finish, or isect_triangle_occludes for any_hit.  Each
+ * step is isect_triangle's on the same floats, so the answer is its
+ * answer bit for bit.  v receives the lane's vertices.
+ */
+static inline int tri4_lane_test(const struct trace_ray *ray, const struct tri4_packet *p,
+                                 const struct tri4_lanes *lanes, unsigned l, int any_hit,
+                                 float t_max, float *t, float *u, float *w)
+{
+    float v[9];
+    for (int j = 0; j < 3; j++) {
+        for (int k = 0; k < 3; k++)
+            v[3 * j + k] = p->v[j][k][l];
+    }
+    if (lanes->deferred >> l & 1u)
+        return isect_triangle(ray, v, v + 3, v + 6, t_max, t, u, w);
+    const float Az = lanes->Az[l], Bz = lanes->Bz[l], Cz = lanes->Cz[l];
+    const float z_lo = isect_min(Az, isect_min(Bz, Cz));
+    if (!(z_lo < t_max) || !(lanes->t_lo[l] < t_max))
+        return 0;
+    if (any_hit)
+        return isect_triangle_occludes(ray, v, v + 3, v + 6, lanes->U[l], lanes->V[l],
+                                       lanes->W[l], lanes->det[l], Az, Bz, Cz, lanes->size[l],
+                                       lanes->t_lo[l], lanes->t_hi[l], t_max);
+    return isect_triangle_finish(ray, v, v + 3, v + 6, lanes->U[l], lanes->V[l], lanes->W[l],
+                                 lanes->det[l], Az, Bz, Cz, lanes->size[l], lanes->t_lo[l],
+                                 lanes->t_hi[l], t_max, t, u, w);
 }
 
 /* Lane l of p as the three vertices isect_triangle takes. */

@@ -20,9 +20,10 @@
  *   removed, visiting a small subtree's triangles as one leaf, and
  *   visiting children in another order change the work done (the node
  *   and triangle counts) but not the hit;
- * - the leaves are tested by the packet filter of intersect_tri4.h and
- *   isect_triangle itself for the lanes it keeps, with walk_leaf's limit
- *   and hit rule (traverse_walk.h).
+ * - the leaves are tested by the packet filter of intersect_tri4.h and,
+ *   for the lanes it keeps, the rest of isect_triangle on the filter's
+ *   own floats (tri4_lane_test), with walk_leaf's limit and hit rule
+ *   (traverse_walk.h).
  *
  * Child order: the hit children are visited in the node's precomputed
  * order for the ray's octant (Fuetterling, Lojewski, Pfreundt and Ebert
@@ -40,8 +41,9 @@ struct wide_entry {
 };
 
 /* The stack: at most width - 1 entries per level left behind on the
- * current path, plus the width pushed at the deepest node. */
-#define WIDE_STACK (7 * BVH_MAX_DEPTH + 8)
+ * current path, plus the width pushed at the deepest node; and 8 more,
+ * for the writes of missed lanes beyond the last entry (the push). */
+#define WIDE_STACK (7 * BVH_MAX_DEPTH + 16)
 
 /* The per-ray state every wide walk keeps. */
 struct wide_state {
@@ -61,23 +63,23 @@ struct wide_state {
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline int wide_leaf(struct wide_state *s, const struct tri4_packet *packets,
-                            uint32_t first, uint32_t count)
+static inline int wide_leaf_impl(struct wide_state *s, const struct tri4_packet *packets,
+                                 uint32_t first, uint32_t count, int stats)
 {
     for (uint32_t j = 0; j < count; j += 4) {
         const struct tri4_packet *p = &packets[first + j / 4];
         const uint32_t n = count - j < 4 ? count - j : 4;
-        s->triangle_tests += n;
+        if (stats)
+            s->triangle_tests += n;
         float limit = s->found ? isect_next_up(s->best) : s->best;
-        unsigned mask = tri4_candidates(&s->r4, p, (1u << n) - 1u, limit);
+        struct tri4_lanes lanes;
+        unsigned mask = tri4_candidates_lanes(&s->r4, p, (1u << n) - 1u, limit, &lanes);
         while (mask) {
             const unsigned l = (unsigned)__builtin_ctz(mask);
             mask &= mask - 1u;
-            float v[9];
             float t, u, w;
-            tri4_lane(p, l, v);
             limit = s->found ? isect_next_up(s->best) : s->best;
-            if (!isect_triangle(s->ray, v, v + 3, v + 6, limit, &t, &u, &w))
+            if (!tri4_lane_test(s->ray, p, &lanes, l, s->any_hit, limit, &t, &u, &w))
                 continue;
             if (s->any_hit) {
                 s->found = 1;
@@ -98,6 +100,23 @@ static inline int wide_leaf(struct wide_state *s, const struct tri4_packet *pack
     return 0;
 }
 
+/* wide_leaf_impl with the counters (the packet walk's entry). */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline int wide_leaf(struct wide_state *s, const struct tri4_packet *packets,
+                            uint32_t first, uint32_t count)
+{
+    return wide_leaf_impl(s, packets, first, count, 1);
+}
+
+/* The bounds row `offset` bytes into a node's bounds (near_row,
+ * far_row: byte offsets per ray, so no index scaling per node). */
+static inline const float *wide_row(const void *bounds, int offset)
+{
+    return (const float *)(const void *)((const char *)bounds + offset);
+}
+
 static inline void wide_prefetch(const void *node, size_t bytes)
 {
     for (size_t off = 0; off < bytes; off += 64)
@@ -113,8 +132,8 @@ static inline void wide_prefetch(const void *node, size_t bytes)
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline int walk_wide4(const struct bvh4 *wide, struct wide_state *s, uint32_t root,
-                             uint32_t root_count)
+static inline int walk_wide4_impl(const struct bvh4 *wide, struct wide_state *s, uint32_t root,
+                                  uint32_t root_count, int stats)
 {
     const struct trace_ray *ray = s->ray;
     const struct bvh4_node *nodes = wide->nodes;
@@ -126,8 +145,8 @@ static inline int walk_wide4(const struct bvh4 *wide, struct wide_state *s, uint
     __m128 org[3], inv[3];
     for (int k = 0; k < 3; k++) {
         int neg = signbit(ray->inv_dir[k]) != 0;
-        near_row[k] = neg ? 3 + k : k;
-        far_row[k] = neg ? k : 3 + k;
+        near_row[k] = (neg ? 3 + k : k) * (int)sizeof(nodes[0].bounds[0]);
+        far_row[k] = (neg ? k : 3 + k) * (int)sizeof(nodes[0].bounds[0]);
         octant |= neg << k;
         org[k] = _mm_set1_ps(ray->org[k]);
         inv[k] = _mm_set1_ps(ray->inv_dir[k]);
@@ -141,18 +160,19 @@ static inline int walk_wide4(const struct bvh4 *wide, struct wide_state *s, uint
     uint32_t cur_count = root_count;
     for (;;) {
         if (cur_count) {
-            if (wide_leaf(s, wide->packets, cur, cur_count))
+            if (wide_leaf_impl(s, wide->packets, cur, cur_count, stats))
                 return 1;
         } else {
             const struct bvh4_node *n = &nodes[cur];
-            s->node_tests += 4;
+            if (stats)
+                s->node_tests += 4;
             __m128 t0 = tmin4;
             __m128 t1 = inf4;
             for (int k = 0; k < 3; k++) {
                 const __m128 tn = _mm_mul_ps(
-                    _mm_sub_ps(_mm_load_ps(n->bounds[near_row[k]]), org[k]), inv[k]);
+                    _mm_sub_ps(_mm_load_ps(wide_row(n->bounds, near_row[k])), org[k]), inv[k]);
                 const __m128 tf = _mm_mul_ps(
-                    _mm_sub_ps(_mm_load_ps(n->bounds[far_row[k]]), org[k]), inv[k]);
+                    _mm_sub_ps(_mm_load_ps(wide_row(n->bounds, far_row[k])), org[k]), inv[k]);
                 t0 = _mm_max_ps(tn, t0);
                 t1 = _mm_min_ps(tf, t1);
             }
@@ -170,14 +190,15 @@ static inline int walk_wide4(const struct bvh4 *wide, struct wide_state *s, uint
                     /* Push the hit children back to front in the
                      * octant's order, then take the front one. */
                     const unsigned order = n->order[octant];
+                    /* Every lane is written, a missed one where the
+                     * next hit one will overwrite it: no branch on the
+                     * mask (the stack has room for the last writes). */
                     for (int p = 3; p >= 0; p--) {
                         const unsigned l = order >> (2 * p) & 3u;
-                        if (!(mask >> l & 1u))
-                            continue;
                         stack[sp].child = n->child[l];
                         stack[sp].count = n->count[l];
                         stack[sp].t_entry = te[l];
-                        sp++;
+                        sp += mask >> l & 1u;
                     }
                     sp--;
                     cur = stack[sp].child;
@@ -200,12 +221,23 @@ static inline int walk_wide4(const struct bvh4 *wide, struct wide_state *s, uint
     }
 }
 
+/* walk_wide4_impl counting node and triangle tests (the packet walk's
+ * hybrid fallback, packet_wide.h). */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline int walk_wide4(const struct bvh4 *wide, struct wide_state *s, uint32_t root,
+                             uint32_t root_count)
+{
+    return walk_wide4_impl(wide, s, root, root_count, 1);
+}
+
 #if defined(__AVX__)
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline int walk_wide8(const struct bvh4 *wide, struct wide_state *s, uint32_t root,
-                             uint32_t root_count)
+static inline int walk_wide8_impl(const struct bvh4 *wide, struct wide_state *s, uint32_t root,
+                                  uint32_t root_count, int stats)
 {
     const struct trace_ray *ray = s->ray;
     const struct bvh8_node *nodes = wide->nodes8;
@@ -214,8 +246,8 @@ static inline int walk_wide8(const struct bvh4 *wide, struct wide_state *s, uint
     __m256 org[3], inv[3];
     for (int k = 0; k < 3; k++) {
         int neg = signbit(ray->inv_dir[k]) != 0;
-        near_row[k] = neg ? 3 + k : k;
-        far_row[k] = neg ? k : 3 + k;
+        near_row[k] = (neg ? 3 + k : k) * (int)sizeof(nodes[0].bounds[0]);
+        far_row[k] = (neg ? k : 3 + k) * (int)sizeof(nodes[0].bounds[0]);
         octant |= neg << k;
         org[k] = _mm256_set1_ps(ray->org[k]);
         inv[k] = _mm256_set1_ps(ray->inv_dir[k]);
@@ -229,18 +261,19 @@ static inline int walk_wide8(const struct bvh4 *wide, struct wide_state *s, uint
     uint32_t cur_count = root_count;
     for (;;) {
         if (cur_count) {
-            if (wide_leaf(s, wide->packets, cur, cur_count))
+            if (wide_leaf_impl(s, wide->packets, cur, cur_count, stats))
                 return 1;
         } else {
             const struct bvh8_node *n = &nodes[cur];
-            s->node_tests += 8;
+            if (stats)
+                s->node_tests += 8;
             __m256 t0 = tmin8;
             __m256 t1 = inf8;
             for (int k = 0; k < 3; k++) {
                 const __m256 tn = _mm256_mul_ps(
-                    _mm256_sub_ps(_mm256_load_ps(n->bounds[near_row[k]]), org[k]), inv[k]);
+                    _mm256_sub_ps(_mm256_load_ps(wide_row(n->bounds, near_row[k])), org[k]), inv[k]);
                 const __m256 tf = _mm256_mul_ps(
-                    _mm256_sub_ps(_mm256_load_ps(n->bounds[far_row[k]]), org[k]), inv[k]);
+                    _mm256_sub_ps(_mm256_load_ps(wide_row(n->bounds, far_row[k])), org[k]), inv[k]);
                 t0 = _mm256_max_ps(tn, t0);
                 t1 = _mm256_min_ps(tf, t1);
             }
@@ -260,12 +293,10 @@ static inline int walk_wide8(const struct bvh4 *wide, struct wide_state *s, uint
                                            (uint32_t)n->order[octant][2] << 16;
                     for (int p = 7; p >= 0; p--) {
                         const unsigned l = order >> (3 * p) & 7u;
-                        if (!(mask >> l & 1u))
-                            continue;
                         stack[sp].child = n->child[l];
                         stack[sp].count = n->count[l];
                         stack[sp].t_entry = te[l];
-                        sp++;
+                        sp += mask >> l & 1u;
                     }
                     sp--;
                     cur = stack[sp].child;
@@ -286,6 +317,15 @@ static inline int walk_wide8(const struct bvh4 *wide, struct wide_state *s, uint
         cur = stack[sp].child;
         cur_count = stack[sp].count;
     }
+}
+
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline int walk_wide8(const struct bvh4 *wide, struct wide_state *s, uint32_t root,
+                             uint32_t root_count)
+{
+    return walk_wide8_impl(wide, s, root, root_count, 1);
 }
 #endif
 
@@ -310,12 +350,14 @@ static inline int walk_wide(const struct bvh4 *wide, const struct bvh *bvh, cons
     s.box_limit = t_max * ISECT_BOX_FAR_SCALE; /* as traverse_walk.h */
     s.node_tests = 0;
     s.triangle_tests = 0;
+    /* Two copies of each walk: without counters (the caller passed
+     * none, the common case) the hot loop does not count. */
     int done;
     if (wide->width == 4)
-        done = walk_wide4(wide, &s, 0, 0);
+        done = counters ? walk_wide4_impl(wide, &s, 0, 0, 1) : walk_wide4_impl(wide, &s, 0, 0, 0);
 #if defined(__AVX__)
     else if (wide->width == 8)
-        done = walk_wide8(wide, &s, 0, 0);
+        done = counters ? walk_wide8_impl(wide, &s, 0, 0, 1) : walk_wide8_impl(wide, &s, 0, 0, 0);
 #endif
     else
         return walk(bvh, tri, ray, t_max, any_hit, hit, counters);
