@@ -212,18 +212,24 @@ static int primary_ray(const struct render_pass *sh, struct unproject_cache *cac
         dir[k] = (float)d[k];
     }
     *tmax = (float)len;
-    double width = 0.0, spread = 0.0;
-    for (int axis = 0; axis < 2; axis++) {
+    /* The spread is the larger growth over len: one division, as the
+     * larger of the two quotients is the quotient of the larger (a
+     * correctly rounded division by len > 0 keeps the order). */
+    double width = 0.0, growth = 0.0, spread = 0.0;
+    int axis = 0;
+    for (; axis < 2; axis++) {
         double n_near[3], n_far[3];
-        if (!unproject_cached(sh, cache, px + (axis == 0), py + (axis == 1), n_near, n_far)) {
-            width = spread = 0.0;
+        if (!unproject_cached(sh, cache, px + (axis == 0), py + (axis == 1), n_near, n_far))
             break;
-        }
         double w_near = distance_to_line(n_near, near_pt, d);
         double w_far = distance_to_line(n_far, near_pt, d);
         width = max_left(width, w_near);
-        spread = max_left(spread, (w_far - w_near) / len);
+        growth = max_left(growth, w_far - w_near);
     }
+    if (axis == 2)
+        spread = growth / len;
+    else
+        width = 0.0;
     cone->width = (float)width;
     cone->spread = (float)spread;
     return 1;
