@@ -25,10 +25,9 @@
  * vertices and edge midpoints of an instanced sphere, rays grazing the
  * floor, and rays from 1e4 away; packets=on must do different node work
  * than packets=off on them (the packet path ran) with the same answers.
- * A third image, Whitted with a point light besides the sun, has the
- * renderer's shadow-ray packets (one per light and 4 x 2 block) against
- * packets=off's single shadow rays; RT_STAT_RAYS must agree too (every
- * shadow ray traced ahead in a packet is one the shading asks for).
+ * A third image, Whitted with a point light besides the sun (shadow rays
+ * converging on a point as well as parallel ones), is compared the same
+ * way, with its RT_STAT_RAYS.
  */
 #include <rt/rt.h>
 #include <math.h>
@@ -249,10 +248,8 @@ static int run(const char *config, const RTray *rays, struct answers *out)
     stats(out, 2);
     rtOccludedRays(RAYS, rays, out->occluded);
     stats(out, 3);
-    /* Whitted again with a point light above the scene as well: the
-     * renderer traces the shadow rays of each 4 x 2 block's first hits to
-     * one light as a packet (render/shade.c, shade_prime_shadows), for the
-     * sun's parallel rays and the point light's converging ones. */
+    /* Whitted again with a point light above the scene as well: shadow
+     * rays converging on a point besides the sun's parallel ones. */
     const float lamp[4] = {1.0f, 6.0f, -5.0f, 1.0f};
     rtLightfv(RT_LIGHT1, RT_POSITION, lamp);
     rtEnable(RT_LIGHT1);

@@ -373,12 +373,6 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                 }
             }
             const unsigned found = trace_scene_closest_packet(sc->scene, &pk, hits, sc->counters);
-            /* Whitted shading's shadow rays of the block's first hits,
-             * one packet per light. */
-            struct shade_shadows shadows[TRACE_PACKET];
-            const int prime_shadows = st->shading == RENDER_WHITTED;
-            if (prime_shadows)
-                shade_prime_shadows(sc, found, hits, pk.dir, shadows);
             for (int i = 0; i < TRACE_PACKET; i++) {
                 const int x = bx + i % RENDER_BLOCK_W, y = by + i / RENDER_BLOCK_W;
                 if (!(x < x0 + RENDER_TILE_SIZE && x < vp[2] && y < y0 + RENDER_TILE_SIZE &&
@@ -394,7 +388,6 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                 if (primed.found)
                     primed.hit = hits[i];
                 sc->primed = &primed;
-                sc->shadows = prime_shadows ? &shadows[i] : NULL;
                 float t_first;
                 const size_t at = (size_t)(vp[1] + y) * pass->fb_width + vp[0] + x;
                 if (pass->depth_state) /* polygon offset in the frame (lines.c) */
@@ -404,7 +397,6 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                     blend_trace_primary(sc, pk.org[i], pk.dir[i], pk.tmax[i], cone[i], px,
                                         &t_first);
                 sc->primed = NULL;
-                sc->shadows = NULL;
                 if (pass->depth)
                     pass->depth[at] =
                         raster_window_depth(st->projection, pk.org[i], pk.dir[i], t_first);
@@ -423,7 +415,6 @@ void render_tile(struct render_pass *pass, uint32_t tile, int worker)
                                pass->job->textures,
                                pass->clipping,
                                pass->see_through,
-                               NULL,
                                NULL};
     const int *vp = st->viewport;
     int x0 = (int)(tile % (uint32_t)pass->tiles_x) * RENDER_TILE_SIZE;

@@ -51,68 +51,6 @@ static void add_scaled(float acc[3], const float a[4], const float b[4], float s
         acc[k] += a[k] * b[k] * scale;
 }
 
-/* A light as seen from a point `origin` off a surface with normals n, ng:
- * its shadow ray (shadow_dir, 0 <= t < tmax), the unit direction to it
- * and its attenuation. */
-struct light_ray {
-    float to_light[3];
-    float shadow_dir[3];
-    float tmax;
-    float attenuation;
-    float n_dot_l;
-};
-
-/* Fills r; returns 1 when the light reaches the surface's lit side, so
- * that its diffuse and specular terms need the shadow ray, 0 when only
- * its ambient term counts. */
-static int light_ray(const struct render_light *light, const float origin[3], const float n[3],
-                     const float ng[3], struct light_ray *r)
-{
-    r->attenuation = 1.0f;
-    if (light->position[3] != 0.0f) {
-        float lp[3];
-        for (int k = 0; k < 3; k++)
-            lp[k] = light->position[k] / light->position[3];
-        vec3_sub(r->shadow_dir, lp, origin);
-        r->tmax = 1.0f;
-        memcpy(r->to_light, r->shadow_dir, sizeof(r->to_light));
-        float d = sqrtf(vec3_dot(r->to_light, r->to_light));
-        float att = light->attenuation[0] + light->attenuation[1] * d +
-                    light->attenuation[2] * d * d;
-        r->attenuation = att > 0.0f ? 1.0f / att : 1.0f;
-        if (light->spot_cutoff != 180.0f && d > 0.0f) {
-            /* GL's spot cone (gl_light.c) scales every term of the
-             * light, its ambient one too; 180 (the default) leaves the
-             * Whitted images as they were. */
-            float u[3] = {r->to_light[0] / d, r->to_light[1] / d, r->to_light[2] / d};
-            r->attenuation *= gl_spot_factor(light, u);
-        }
-    } else {
-        memcpy(r->to_light, light->position, sizeof(r->to_light));
-        memcpy(r->shadow_dir, r->to_light, sizeof(r->shadow_dir));
-        r->tmax = INFINITY;
-    }
-    if (!vec3_normalize(r->to_light))
-        return 0;
-    r->n_dot_l = vec3_dot(n, r->to_light);
-    return r->n_dot_l > 0.0f && vec3_dot(ng, r->to_light) > 0.0f;
-}
-
-/* Whether the shadow ray of light i is blocked: the answer traced ahead
- * in a packet when it is this very ray, else traced now. */
-static int shadowed(const struct shade_context *sc, int i, const float origin[3],
-                    const struct light_ray *r)
-{
-    if (sc->shadows) {
-        const struct shade_shadow *p = &sc->shadows->light[i];
-        if (p->traced && memcmp(p->org, origin, sizeof(p->org)) == 0 &&
-            memcmp(p->dir, r->shadow_dir, sizeof(p->dir)) == 0 &&
-            memcmp(&p->tmax, &r->tmax, sizeof(p->tmax)) == 0)
-            return p->occluded;
-    }
-    return trace_scene_any(sc->scene, origin, r->shadow_dir, 0.0f, r->tmax, sc->counters);
-}
-
 static void local_whitted(const struct shade_context *sc, const struct surface *s,
                           const float dir[3], float c[3])
 {
@@ -127,14 +65,39 @@ static void local_whitted(const struct shade_context *sc, const struct surface *
         const struct render_light *light = &st->lights[i];
         if (!light->enabled)
             continue;
-        struct light_ray r;
-        const int lit = light_ray(light, origin, s->n, s->ng, &r);
-        add_scaled(c, light->ambient, s->mat.ambient, r.attenuation);
-        if (!lit || shadowed(sc, i, origin, &r))
+        float to_light[3], shadow_dir[3], shadow_tmax, attenuation = 1.0f;
+        if (light->position[3] != 0.0f) {
+            float lp[3];
+            for (int k = 0; k < 3; k++)
+                lp[k] = light->position[k] / light->position[3];
+            vec3_sub(shadow_dir, lp, origin);
+            shadow_tmax = 1.0f;
+            memcpy(to_light, shadow_dir, sizeof(to_light));
+            float d = sqrtf(vec3_dot(to_light, to_light));
+            float att = light->attenuation[0] + light->attenuation[1] * d +
+                        light->attenuation[2] * d * d;
+            attenuation = att > 0.0f ? 1.0f / att : 1.0f;
+            if (light->spot_cutoff != 180.0f && d > 0.0f) {
+                /* GL's spot cone (gl_light.c) scales every term of the
+                 * light, its ambient one too; 180 (the default) leaves the
+                 * Whitted images as they were. */
+                float u[3] = {to_light[0] / d, to_light[1] / d, to_light[2] / d};
+                attenuation *= gl_spot_factor(light, u);
+            }
+        } else {
+            memcpy(to_light, light->position, sizeof(to_light));
+            memcpy(shadow_dir, to_light, sizeof(shadow_dir));
+            shadow_tmax = INFINITY;
+        }
+        add_scaled(c, light->ambient, s->mat.ambient, attenuation);
+        if (!vec3_normalize(to_light))
             continue;
-        const float *to_light = r.to_light;
-        const float attenuation = r.attenuation;
-        add_scaled(c, light->diffuse, s->mat.diffuse, attenuation * r.n_dot_l);
+        float n_dot_l = vec3_dot(s->n, to_light);
+        if (n_dot_l <= 0.0f || vec3_dot(s->ng, to_light) <= 0.0f)
+            continue;
+        if (trace_scene_any(sc->scene, origin, shadow_dir, 0.0f, shadow_tmax, sc->counters))
+            continue;
+        add_scaled(c, light->diffuse, s->mat.diffuse, attenuation * n_dot_l);
         float h[3] = {to_light[0] + view[0], to_light[1] + view[1], to_light[2] + view[2]};
         if (vec3_normalize(h)) {
             float n_dot_h = vec3_dot(s->n, h);
@@ -143,76 +106,6 @@ static void local_whitted(const struct shade_context *sc, const struct surface *
                 add_scaled(c, light->specular, s->mat.specular, attenuation * spec);
             }
         }
-    }
-}
-
-void shade_prime_shadows(const struct shade_context *sc, unsigned found,
-                         const struct trace_scene_hit hits[TRACE_PACKET],
-                         const float dir[TRACE_PACKET][3], struct shade_shadows out[TRACE_PACKET])
-{
-    const struct render_state *st = sc->state;
-    float origin[TRACE_PACKET][3];
-    unsigned primed = 0;
-    for (int i = 0; i < TRACE_PACKET; i++) {
-        for (int l = 0; l < RENDER_MAX_LIGHTS; l++)
-            out[i].light[l].traced = 0;
-        if (!(found >> i & 1u) || sc->clipping)
-            continue;
-        /* gl_closest_drawn's test: a triangle that may be culled might
-         * not be the one shaded. */
-        const struct scene_instance *inst = shade_hit_instance(sc, &hits[i]);
-        const struct scene_mesh *mesh = &inst->object->mesh;
-        const struct scene_material *m = &mesh->materials[mesh->tri_material[hits[i].prim]];
-        if (!(m->cull_face == SCENE_CULL_NONE &&
-              (!(m->inherit & SCENE_MATERIAL_CULL_ENABLE) ||
-               inst->appearance.material.cull_face == SCENE_CULL_NONE)))
-            continue;
-        struct surface s;
-        surface_fetch_geometry(sc, &hits[i], dir[i], &s);
-        shade_offset_point(s.p, s.ng, s.p_error, origin[i]);
-        primed |= 1u << i;
-        for (int l = 0; l < RENDER_MAX_LIGHTS; l++) {
-            const struct render_light *light = &st->lights[l];
-            struct light_ray r;
-            if (!light->enabled || !light_ray(light, origin[i], s.n, s.ng, &r))
-                continue;
-            struct shade_shadow *e = &out[i].light[l];
-            memcpy(e->org, origin[i], sizeof(e->org));
-            memcpy(e->dir, r.shadow_dir, sizeof(e->dir));
-            e->tmax = r.tmax;
-            e->traced = 1; /* provisional: cleared below if not traced */
-        }
-    }
-    if (!primed)
-        return;
-    for (int l = 0; l < RENDER_MAX_LIGHTS; l++) {
-        if (!st->lights[l].enabled)
-            continue;
-        struct trace_packet pk;
-        const float *dirs[TRACE_PACKET];
-        int n = 0;
-        pk.active = 0;
-        for (int i = 0; i < TRACE_PACKET; i++) {
-            const struct shade_shadow *e = &out[i].light[l];
-            if (!e->traced)
-                continue;
-            memcpy(pk.org[i], e->org, sizeof(pk.org[i]));
-            memcpy(pk.dir[i], e->dir, sizeof(pk.dir[i]));
-            pk.tmin[i] = 0.0f;
-            pk.tmax[i] = e->tmax;
-            pk.active |= 1u << i;
-            dirs[n++] = e->dir;
-        }
-        /* A lone ray, or rays spreading apart: left to the shading, one
-         * at a time, as without packets. */
-        if (n < 2 || !trace_packet_coherent(dirs, n)) {
-            for (int i = 0; i < TRACE_PACKET; i++)
-                out[i].light[l].traced = 0;
-            continue;
-        }
-        const unsigned occluded = trace_scene_any_packet(sc->scene, &pk, sc->counters);
-        for (int i = 0; i < TRACE_PACKET; i++)
-            out[i].light[l].occluded = (int)(occluded >> i & 1u);
     }
 }
 

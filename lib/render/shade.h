@@ -6,7 +6,6 @@
 #define RT_RENDER_SHADE_H
 
 #include "render/render.h"
-#include "trace/packet_scene.h"
 
 /* Per-thread context for shading one ray tree. */
 struct shade_context {
@@ -26,29 +25,11 @@ struct shade_context {
      * instead of tracing again.  The same hit bit for bit
      * (trace/packet_scene.h). */
     const struct shade_primed *primed;
-    /* NULL, or the shadow rays of the camera ray's first hit, already
-     * traced in packets by the tile loop (shade_prime_shadows): a shadow
-     * ray of the Whitted shading equal to one of them bit for bit takes
-     * its answer instead of tracing again. */
-    const struct shade_shadows *shadows;
 };
 
 struct shade_primed {
     int found;
     struct trace_scene_hit hit;
-};
-
-/* A shadow ray traced ahead, and its answer. */
-struct shade_shadow {
-    float org[3];
-    float dir[3];
-    float tmax; /* tmin is 0 */
-    int traced; /* 0: no ray here, trace it when asked */
-    int occluded;
-};
-
-struct shade_shadows {
-    struct shade_shadow light[RENDER_MAX_LIGHTS];
 };
 
 /* The frame's instance a hit belongs to: its appearance, clip planes and
@@ -93,23 +74,6 @@ void shade_ray(const struct shade_context *sc, const float org[3], const float d
 void shade_hit(const struct shade_context *sc, const float org[3], const float dir[3],
                const struct trace_scene_hit *found, struct shade_cone cone, int depth,
                float rgba[4]);
-
-/*
- * Whitted shading's shadow rays (one per enabled light that faces the
- * surface) of the camera rays' first hits found[i] (bit i of `found`,
- * rays along dir[i]) of a 4 x 2 block, traced as one packet per light
- * when their directions are coherent (trace_packet_coherent); out[i] gets
- * them and their answers, entries not traced marked so.  The rays are
- * the ones shade_hit would trace for those hits, bit for bit, and the
- * packet's answers are the single rays' (trace/packet_scene.h), so the
- * image is the same with packets on or off.  Only hits the camera ray
- * certainly shades are primed (no clip planes, no culling recorded or
- * inherited), so every ray traced here is one the shading asks for and
- * the ray counts stay those of the single rays.
- */
-void shade_prime_shadows(const struct shade_context *sc, unsigned found,
-                         const struct trace_scene_hit hits[TRACE_PACKET],
-                         const float dir[TRACE_PACKET][3], struct shade_shadows out[TRACE_PACKET]);
 
 /*
  * Moves a point off a surface along the unit normal n by

@@ -347,13 +347,14 @@ static int hit_color_material(const struct hit_triangle *t, float c[4])
     return 1;
 }
 
-/* surface_fetch's hit point, error bound and normals, of the triangle t. */
-static void hit_geometry(const struct hit_triangle *t, const struct trace_scene_hit *hit,
-                         const float dir[3], struct surface *s)
+void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit *hit,
+                   const float dir[3], float width, struct surface *s)
 {
-    const struct scene_instance *inst = t->inst;
-    const struct scene_mesh *mesh = t->mesh;
-    const uint32_t *v = t->v;
+    struct hit_triangle t;
+    hit_triangle(sc, hit, &t);
+    const struct scene_instance *inst = t.inst;
+    const struct scene_mesh *mesh = t.mesh;
+    const uint32_t *v = t.v;
 
     const float *p0 = &mesh->positions[3 * v[0]];
     const float *p1 = &mesh->positions[3 * v[1]];
@@ -382,26 +383,7 @@ static void hit_geometry(const struct hit_triangle *t, const struct trace_scene_
         norm = fmax(norm, fabs(m[k]) + fabs(m[4 + k]) + fabs(m[8 + k]));
     }
     s->p_error = (float)(0.5 * FLT_EPSILON * (max_world + norm * max_object) + FLT_MIN);
-    hit_normals(t, dir, s->ng, s->n, &s->front);
-}
-
-void surface_fetch_geometry(const struct shade_context *sc, const struct trace_scene_hit *hit,
-                            const float dir[3], struct surface *s)
-{
-    struct hit_triangle t;
-    hit_triangle(sc, hit, &t);
-    hit_geometry(&t, hit, dir, s);
-}
-
-void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit *hit,
-                   const float dir[3], float width, struct surface *s)
-{
-    struct hit_triangle t;
-    hit_triangle(sc, hit, &t);
-    hit_geometry(&t, hit, dir, s);
-    const struct scene_instance *inst = t.inst;
-    const struct scene_mesh *mesh = t.mesh;
-    const uint32_t *v = t.v;
+    hit_normals(&t, dir, s->ng, s->n, &s->front);
 
     s->mat = mesh->materials[mesh->tri_material[hit->prim]];
     surface_resolve_material(&inst->appearance, &s->mat);

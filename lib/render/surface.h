@@ -32,11 +32,6 @@ void surface_resolve_material(const struct scene_appearance *call, struct scene_
 void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit *hit,
                    const float dir[3], float width, struct surface *s);
 
-/* surface_fetch's p, p_error, ng, n and front alone (mat is left
- * untouched): the same values bit for bit. */
-void surface_fetch_geometry(const struct shade_context *sc, const struct trace_scene_hit *hit,
-                            const float dir[3], struct surface *s);
-
 /* What the eye light and a see-through surface's alpha read of a hit:
  * surface_fetch's normals and its material's emission, ambient and diffuse
  * colours (vertex colours and texture applied), bit for bit, without the
