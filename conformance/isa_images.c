@@ -25,6 +25,9 @@
  * vertices and edge midpoints of an instanced sphere, rays grazing the
  * floor, and rays from 1e4 away; packets=on must do different node work
  * than packets=off on them (the packet path ran) with the same answers.
+ * A third image, Whitted with a point light besides the sun (shadow rays
+ * converging on a point as well as parallel ones), is compared the same
+ * way, with its RT_STAT_RAYS.
  */
 #include <rt/rt.h>
 #include <math.h>
@@ -133,13 +136,14 @@ static void define_scene(void)
 }
 
 struct answers {
-    float image[2][WIDTH * HEIGHT * 4];
+    float image[3][WIDTH * HEIGHT * 4];
     RThit hits[RAYS];
     RTboolean occluded[RAYS];
     /* RT_STAT_RAYS and RT_STAT_NODE_TESTS of the two frames, the trace
-     * and the occlusion query. */
-    RTint rays[4];
-    RTint nodes[4];
+     * and the occlusion query, and of the Whitted frame with a point
+     * light besides the sun. */
+    RTint rays[5];
+    RTint nodes[5];
 };
 
 static void stats(struct answers *out, int i)
@@ -244,6 +248,15 @@ static int run(const char *config, const RTray *rays, struct answers *out)
     stats(out, 2);
     rtOccludedRays(RAYS, rays, out->occluded);
     stats(out, 3);
+    /* Whitted again with a point light above the scene as well: shadow
+     * rays converging on a point besides the sun's parallel ones. */
+    const float lamp[4] = {1.0f, 6.0f, -5.0f, 1.0f};
+    rtLightfv(RT_LIGHT1, RT_POSITION, lamp);
+    rtEnable(RT_LIGHT1);
+    rtShadingMode(RT_WHITTED);
+    rtRenderFrame();
+    stats(out, 4);
+    rtReadPixels(0, 0, WIDTH, HEIGHT, RT_RGBA, RT_FLOAT, out->image[2]);
     CHECK_NO_ERR();
     rtMakeCurrent(NULL);
     rtDestroyContext(ctx);
@@ -301,9 +314,9 @@ int main(void)
             continue;
         }
         CHECKF(memcmp(ref->rays, got->rays, sizeof(ref->rays)) == 0,
-               "%s: RT_STAT_RAYS %d %d %d %d, reference %d %d %d %d", configs[c], got->rays[0],
-               got->rays[1], got->rays[2], got->rays[3], ref->rays[0], ref->rays[1],
-               ref->rays[2], ref->rays[3]);
+               "%s: RT_STAT_RAYS %d %d %d %d %d, reference %d %d %d %d %d", configs[c],
+               got->rays[0], got->rays[1], got->rays[2], got->rays[3], got->rays[4],
+               ref->rays[0], ref->rays[1], ref->rays[2], ref->rays[3], ref->rays[4]);
         const int isa = strstr(configs[c], "sse4") ? 1 : strstr(configs[c], "avx2") ? 2 : 3;
         if (strstr(configs[c], "threads=1") && !strstr(configs[c], "packets=")) {
             memcpy(packet_nodes[isa], got->nodes, sizeof(got->nodes));

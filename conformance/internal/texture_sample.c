@@ -492,8 +492,128 @@ static void table(void)
     failures += !CHECKF(tab.table.capacity == 0 && tab.table.used == 0, "release");
 }
 
+/*
+ * The sampler as it was written before its look-up table and division-free
+ * index wrapping (floor from the library, the remainder of a division, the
+ * division by 255 per channel): the sampler must give its values bit for
+ * bit, since every image hash depends on them.
+ */
+static double ref_reduce(float s, enum scene_texture_wrap wrap)
+{
+    double d = isfinite(s) ? (double)s : 0.0;
+    if (wrap == SCENE_WRAP_REPEAT) {
+        double f = d - floor(d);
+        return f < 1.0 ? f : 0x1.fffffffffffffp-1;
+    }
+    return fmin(fmax(d, -1.0), 2.0);
+}
+
+static int ref_wrap(long i, int n, enum scene_texture_wrap wrap)
+{
+    if (wrap == SCENE_WRAP_REPEAT) {
+        i %= n;
+        return (int)(i < 0 ? i + n : i);
+    }
+    return i < 0 ? 0 : i >= n ? n - 1 : (int)i;
+}
+
+static void ref_texel(const struct scene_texture_level *lv, int i, int j, float rgba[4])
+{
+    const uint8_t *p = &lv->texels[4 * ((size_t)j * (size_t)lv->width + (size_t)i)];
+    for (int k = 0; k < 4; k++)
+        rgba[k] = (float)p[k] / 255.0f;
+}
+
+static void ref_sample_level(const struct scene_texture *tex, int level, int linear, float s,
+                             float t, float rgba[4])
+{
+    const struct scene_texture_level *lv = &tex->levels[level];
+    const int w = lv->width, h = lv->height;
+    const double u = ref_reduce(s, tex->wrap_s) * w;
+    const double v = ref_reduce(t, tex->wrap_t) * h;
+    if (!linear) {
+        ref_texel(lv, ref_wrap((long)floor(u), w, tex->wrap_s),
+                  ref_wrap((long)floor(v), h, tex->wrap_t), rgba);
+        return;
+    }
+    const double uc = u - 0.5, vc = v - 0.5;
+    const double fi = floor(uc), fj = floor(vc);
+    const float a = (float)(uc - fi), b = (float)(vc - fj);
+    const int i0 = ref_wrap((long)fi, w, tex->wrap_s), i1 = ref_wrap((long)fi + 1, w, tex->wrap_s);
+    const int j0 = ref_wrap((long)fj, h, tex->wrap_t), j1 = ref_wrap((long)fj + 1, h, tex->wrap_t);
+    float c00[4], c10[4], c01[4], c11[4];
+    ref_texel(lv, i0, j0, c00);
+    ref_texel(lv, i1, j0, c10);
+    ref_texel(lv, i0, j1, c01);
+    ref_texel(lv, i1, j1, c11);
+    for (int k = 0; k < 4; k++) {
+        float bottom = c00[k] + a * (c10[k] - c00[k]);
+        float top = c01[k] + a * (c11[k] - c01[k]);
+        rgba[k] = bottom + b * (top - bottom);
+    }
+}
+
+/* Every byte value in a 7 x 37 image (odd sizes, all 256 values in each
+ * channel), every level, both filters and wraps, at coordinates on and
+ * beside texel edges and centres, negative, large and not finite. */
+static void reference_bits(void)
+{
+    struct scene_textures tab;
+    scene_textures_init(&tab);
+    struct scene_texture *tex = scene_textures_get_or_create(&tab, 1);
+    if (!CHECKF(tex != NULL, "texture")) {
+        failures++;
+        return;
+    }
+    enum { RW = 7, RH = 37 };
+    uint8_t texels[4 * RW * RH];
+    for (int i = 0; i < RW * RH; i++)
+        for (int k = 0; k < 4; k++)
+            texels[4 * i + k] = (uint8_t)((i + 64 * k) * 3 % 256);
+    set_image(tex, RW, RH, texels);
+    const float special[] = {0.0f,  -0.0f,     1.0f,      -1.0f,   0.5f,     1e-30f, -1e-30f,
+                             1e30f, -1e30f,    3.999999f, -2.5f,   16777216.0f, INFINITY, NAN,
+                             1.0f / 7.0f, -1.0f / 37.0f, 0.99999994f, 2.0f, -2.0000002f};
+    const int nspecial = (int)(sizeof(special) / sizeof(special[0]));
+    unsigned seed = 12345u;
+    int bad = 0;
+    for (int wrap = 0; wrap < 4; wrap++) {
+        tex->wrap_s = (wrap & 1) ? SCENE_WRAP_CLAMP_TO_EDGE : SCENE_WRAP_REPEAT;
+        tex->wrap_t = (wrap & 2) ? SCENE_WRAP_CLAMP_TO_EDGE : SCENE_WRAP_REPEAT;
+        for (int n = 0; n < 4000; n++) {
+            float st[2];
+            for (int c = 0; c < 2; c++) {
+                seed = seed * 1103515245u + 12345u;
+                const unsigned r = seed >> 8;
+                if (r % 5 == 0)
+                    st[c] = special[r % (unsigned)nspecial];
+                else if (r % 5 == 1) /* a texel edge or centre of some level, nudged */
+                    st[c] = nextafterf((float)(r % 75) / (2.0f * (c ? RH : RW)),
+                                       (r & 1) ? INFINITY : -INFINITY);
+                else
+                    st[c] = ((float)(r % 100000) / 10000.0f - 5.0f);
+            }
+            for (int level = 0; level < tex->level_count; level++)
+                for (int linear = 0; linear < 2; linear++) {
+                    float got[4], want[4];
+                    scene_texture_sample_level(tex, level,
+                                               linear ? SCENE_FILTER_LINEAR : SCENE_FILTER_NEAREST,
+                                               st[0], st[1], got);
+                    ref_sample_level(tex, level, linear, st[0], st[1], want);
+                    if (memcmp(got, want, sizeof(got)) != 0 && bad++ < 5)
+                        CHECKF(0, "level %d %s wrap %d at (%a, %a): %a %a %a %a, want %a %a %a %a",
+                               level, linear ? "linear" : "nearest", wrap, st[0], st[1], got[0],
+                               got[1], got[2], got[3], want[0], want[1], want[2], want[3]);
+                }
+        }
+    }
+    failures += bad;
+    scene_textures_release(&tab);
+}
+
 int main(void)
 {
+    reference_bits();
     struct scene_textures tab;
     scene_textures_init(&tab);
     struct scene_texture *tex = scene_textures_get_or_create(&tab, 1);

@@ -98,10 +98,10 @@ int blend_needs_destination(unsigned src_factor, unsigned dst_factor, const floa
 static float surface_alpha(const struct shade_context *sc, const struct trace_scene_hit *hit,
                            const float dir[3], struct shade_cone cone)
 {
-    struct surface s;
+    struct surface_colour s;
     const float distance = hit->t * sqrtf(vec3_dot(dir, dir));
-    surface_fetch(sc, hit, dir, fabsf(cone.width + cone.spread * distance), &s);
-    return s.mat.diffuse[3];
+    surface_fetch_colour(sc, hit, dir, fabsf(cone.width + cone.spread * distance), &s);
+    return s.diffuse[3];
 }
 
 /* The raster state of the instance a hit belongs to (raster_state.h). */

@@ -139,38 +139,45 @@ struct unproject_point {
     double near_pt[3], far_pt[3];
 };
 
+/* Rows y, y + 1 and y + 2 across a tile and the next column: the packet
+ * loop's 4 x 2 blocks step two rows at a time and share the row between
+ * two steps, the scalar loop steps one. */
+#define UNPROJECT_ROWS 3
 struct unproject_cache {
     int x0, y; /* viewport pixel of row[0][0] */
-    struct unproject_point rows[2][RENDER_TILE_SIZE + 1]; /* rows y and y + 1 */
+    struct unproject_point rows[UNPROJECT_ROWS][RENDER_TILE_SIZE + 1];
 };
 
 static void unproject_cache_init(struct unproject_cache *c, int x0, int y)
 {
     c->x0 = x0;
     c->y = y;
-    for (int r = 0; r < 2; r++)
+    for (int r = 0; r < UNPROJECT_ROWS; r++)
         for (int i = 0; i <= RENDER_TILE_SIZE; i++)
             c->rows[r][i].state = 0;
 }
 
-/* Moves the cache to row y (the current row or the next one). */
+/* Moves the cache's first row to y, keeping the rows it already has from
+ * y on. */
 static void unproject_cache_row(struct unproject_cache *c, int y)
 {
-    if (y == c->y)
+    const int shift = y - c->y;
+    if (shift == 0)
         return;
-    if (y == c->y + 1) {
-        memcpy(c->rows[0], c->rows[1], sizeof(c->rows[0]));
-        for (int i = 0; i <= RENDER_TILE_SIZE; i++)
-            c->rows[1][i].state = 0;
-        c->y = y;
+    if (shift < 0 || shift >= UNPROJECT_ROWS) {
+        unproject_cache_init(c, c->x0, y);
         return;
     }
-    unproject_cache_init(c, c->x0, y);
+    memmove(c->rows[0], c->rows[shift], (size_t)(UNPROJECT_ROWS - shift) * sizeof(c->rows[0]));
+    for (int r = UNPROJECT_ROWS - shift; r < UNPROJECT_ROWS; r++)
+        for (int i = 0; i <= RENDER_TILE_SIZE; i++)
+            c->rows[r][i].state = 0;
+    c->y = y;
 }
 
 /* The unprojected centre of pixel (x, y), with x - x0 in
- * [0, RENDER_TILE_SIZE] and y the cache's row or the next; 0 when it
- * cannot be unprojected. */
+ * [0, RENDER_TILE_SIZE] and y - (the cache's row) in [0, UNPROJECT_ROWS);
+ * 0 when it cannot be unprojected. */
 static int unproject_cached(const struct render_pass *sh, struct unproject_cache *c, int x, int y,
                             double near_pt[3], double far_pt[3])
 {
@@ -193,7 +200,6 @@ static int primary_ray(const struct render_pass *sh, struct unproject_cache *cac
                        int py, float org[3], float dir[3], float *tmax, struct shade_cone *cone)
 {
     double near_pt[3], far_pt[3];
-    unproject_cache_row(cache, py);
     if (!unproject_cached(sh, cache, px, py, near_pt, far_pt))
         return 0;
     double d[3] = {far_pt[0] - near_pt[0], far_pt[1] - near_pt[1], far_pt[2] - near_pt[2]};
@@ -206,18 +212,24 @@ static int primary_ray(const struct render_pass *sh, struct unproject_cache *cac
         dir[k] = (float)d[k];
     }
     *tmax = (float)len;
-    double width = 0.0, spread = 0.0;
-    for (int axis = 0; axis < 2; axis++) {
+    /* The spread is the larger growth over len: one division, as the
+     * larger of the two quotients is the quotient of the larger (a
+     * correctly rounded division by len > 0 keeps the order). */
+    double width = 0.0, growth = 0.0, spread = 0.0;
+    int axis = 0;
+    for (; axis < 2; axis++) {
         double n_near[3], n_far[3];
-        if (!unproject_cached(sh, cache, px + (axis == 0), py + (axis == 1), n_near, n_far)) {
-            width = spread = 0.0;
+        if (!unproject_cached(sh, cache, px + (axis == 0), py + (axis == 1), n_near, n_far))
             break;
-        }
         double w_near = distance_to_line(n_near, near_pt, d);
         double w_far = distance_to_line(n_far, near_pt, d);
         width = max_left(width, w_near);
-        spread = max_left(spread, (w_far - w_near) / len);
+        growth = max_left(growth, w_far - w_near);
     }
+    if (axis == 2)
+        spread = growth / len;
+    else
+        width = 0.0;
     cone->width = (float)width;
     cone->spread = (float)spread;
     return 1;
@@ -339,14 +351,17 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
 {
     const struct render_state *st = pass->job->state;
     const int *vp = st->viewport;
-    for (int by = y0; by < y0 + RENDER_TILE_SIZE && by < vp[3]; by += RENDER_BLOCK_H)
+    /* The tile's blocks share their unprojected pixel centres: each one
+     * once, where a cache per block made the blocks' right and lower
+     * neighbours a second time. */
+    struct unproject_cache cache;
+    unproject_cache_init(&cache, x0, y0);
+    for (int by = y0; by < y0 + RENDER_TILE_SIZE && by < vp[3]; by += RENDER_BLOCK_H) {
+        unproject_cache_row(&cache, by);
         for (int bx = x0; bx < x0 + RENDER_TILE_SIZE && bx < vp[2]; bx += RENDER_BLOCK_W) {
             struct trace_packet pk;
             struct shade_cone cone[TRACE_PACKET];
             struct trace_scene_hit hits[TRACE_PACKET];
-            /* One block's rows share their unprojected pixel centres. */
-            struct unproject_cache cache;
-            unproject_cache_init(&cache, bx, by);
             pk.active = 0;
             for (int i = 0; i < TRACE_PACKET; i++) {
                 const int x = bx + i % RENDER_BLOCK_W, y = by + i / RENDER_BLOCK_W;
@@ -387,6 +402,7 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                         raster_window_depth(st->projection, pk.org[i], pk.dir[i], t_first);
             }
         }
+    }
 }
 
 void render_tile(struct render_pass *pass, uint32_t tile, int worker)
@@ -409,7 +425,8 @@ void render_tile(struct render_pass *pass, uint32_t tile, int worker)
     }
     struct unproject_cache cache;
     unproject_cache_init(&cache, x0, y0);
-    for (int y = y0; y < y0 + RENDER_TILE_SIZE && y < vp[3]; y++)
+    for (int y = y0; y < y0 + RENDER_TILE_SIZE && y < vp[3]; y++) {
+        unproject_cache_row(&cache, y);
         for (int x = x0; x < x0 + RENDER_TILE_SIZE && x < vp[2]; x++) {
             float *px = &pass->fb[4 * ((size_t)(vp[1] + y) * pass->fb_width + vp[0] + x)];
             float org[3], dir[3], tmax;
@@ -428,6 +445,7 @@ void render_tile(struct render_pass *pass, uint32_t tile, int worker)
             if (pass->depth)
                 pass->depth[i] = raster_window_depth(st->projection, org, dir, t_first);
         }
+    }
 }
 
 void render_pass_raster(struct render_pass *pass)

@@ -160,23 +160,24 @@ void shade_hit(const struct shade_context *sc, const float org[3], const float d
         gl_shade_hit(sc, &hit, org, dir, at_hit.width, rgba);
         return;
     }
-    struct surface s;
-    surface_fetch(sc, &hit, dir, at_hit.width, &s);
     float c[3];
     float unit_dir[3] = {dir[0], dir[1], dir[2]};
     vec3_normalize(unit_dir);
 
     if (st->shading == RENDER_EYE_LIGHT) {
         /* A headlight at the eye, no shadows: Wald, Benthin and Slusallek's (2003) "OpenGL-like
-         * ray casting". */
-        float cosine = fabsf(vec3_dot(s.n, unit_dir));
+         * ray casting".  Only the colours it reads are fetched. */
+        struct surface_colour e;
+        surface_fetch_colour(sc, &hit, dir, at_hit.width, &e);
+        float cosine = fabsf(vec3_dot(e.n, unit_dir));
         for (int k = 0; k < 3; k++)
-            c[k] = s.mat.emission[k] + st->global_ambient[k] * s.mat.ambient[k] +
-                   s.mat.diffuse[k] * cosine;
+            c[k] = e.emission[k] + st->global_ambient[k] * e.ambient[k] + e.diffuse[k] * cosine;
         memcpy(rgba, c, sizeof(c));
         rgba[3] = 1.0f;
         return;
     }
+    struct surface s;
+    surface_fetch(sc, &hit, dir, at_hit.width, &s);
 
     local_whitted(sc, &s, unit_dir, c);
     float kr = s.mat.reflectivity, kt = s.mat.transparency;

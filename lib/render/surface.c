@@ -158,9 +158,9 @@ static float texture_lod(const struct scene_texture *tex, const struct scene_ins
 static void apply_texture(const struct shade_context *sc, const struct scene_instance *inst,
                           const struct scene_mesh *mesh, const uint32_t v[3], float b0,
                           float b1, float b2, const float ng[3], const float dir[3],
-                          float width, struct scene_material *mat)
+                          float width, uint32_t name, float ambient[4], float diffuse[4])
 {
-    const struct scene_texture *tex = scene_textures_lookup(sc->textures, mat->texture);
+    const struct scene_texture *tex = scene_textures_lookup(sc->textures, name);
     if (!tex || !tex->texels)
         return;
     float st[2], texel[4];
@@ -173,8 +173,8 @@ static void apply_texture(const struct shade_context *sc, const struct scene_ins
     }
     scene_texture_sample_lod(tex, lambda, st[0], st[1], texel);
     for (int k = 0; k < 3; k++) {
-        mat->ambient[k] *= texel[k];
-        mat->diffuse[k] *= texel[k];
+        ambient[k] *= texel[k];
+        diffuse[k] *= texel[k];
     }
 }
 
@@ -256,13 +256,105 @@ void surface_resolve_material(const struct scene_appearance *call, struct scene_
     m->inherit = 0;
 }
 
+/* The triangle of a hit and what its barycentrics and flags say. */
+struct hit_triangle {
+    const struct scene_instance *inst;
+    const struct scene_mesh *mesh;
+    const uint32_t *v;
+    float b0, b1, b2;
+    uint8_t flags; /* TRI_FLAT as inherited from the call */
+    uint32_t provoking;
+};
+
+static void hit_triangle(const struct shade_context *sc, const struct trace_scene_hit *hit,
+                         struct hit_triangle *t)
+{
+    t->inst = shade_hit_instance(sc, hit);
+    t->mesh = &t->inst->object->mesh;
+    t->v = &t->mesh->indices[3 * hit->prim];
+    t->b1 = hit->u;
+    t->b2 = hit->v;
+    t->b0 = 1.0f - hit->u - hit->v;
+    uint8_t flags = t->mesh->tri_flags[hit->prim];
+    if (flags & TRI_INHERIT_SHADE) /* the shade model at the call (frame.h) */
+        flags = (uint8_t)((flags & ~TRI_FLAT) | (t->inst->appearance.flat ? TRI_FLAT : 0u));
+    t->flags = flags;
+    t->provoking = t->mesh->tri_provoking[hit->prim];
+}
+
+/* The unit geometric normal facing the ray along dir, whether the ray
+ * hit the front face, and the shading normal on the same side. */
+static void hit_normals(const struct hit_triangle *t, const float dir[3], float ng[3],
+                        float n[3], int *front)
+{
+    const struct scene_mesh *mesh = t->mesh;
+    const uint32_t *v = t->v;
+    const float *p0 = &mesh->positions[3 * v[0]];
+    const float *p1 = &mesh->positions[3 * v[1]];
+    const float *p2 = &mesh->positions[3 * v[2]];
+    float e1[3], e2[3], ngo[3];
+    vec3_sub(e1, p1, p0);
+    vec3_sub(e2, p2, p0);
+    vec3_cross(ngo, e1, e2);
+    transform_normal(t->inst->normal_to_world, ngo, ng);
+    if (!vec3_normalize(ng)) {
+        /* Sliver too thin for float: any unit vector facing the ray. */
+        ng[0] = -dir[0];
+        ng[1] = -dir[1];
+        ng[2] = -dir[2];
+        vec3_normalize(ng);
+    }
+    *front = vec3_dot(ng, dir) < 0.0f;
+    if (!*front)
+        for (int k = 0; k < 3; k++)
+            ng[k] = -ng[k];
+
+    memcpy(n, ng, 3 * sizeof(float));
+    if (mesh->has_normals) {
+        float no[3];
+        if (t->flags & TRI_FLAT)
+            memcpy(no, &mesh->normals[3 * t->provoking], sizeof(no));
+        else
+            interpolate(mesh->normals, 3, v, t->b0, t->b1, t->b2, 3, no);
+        float nw[3];
+        transform_normal(t->inst->normal_to_world, no, nw);
+        if (vec3_normalize(nw)) {
+            if (vec3_dot(nw, ng) < 0.0f)
+                for (int k = 0; k < 3; k++)
+                    nw[k] = -nw[k];
+            memcpy(n, nw, 3 * sizeof(float));
+        }
+    }
+}
+
+/* The vertex colour RT_COLOR_MATERIAL puts into the ambient and diffuse
+ * material, when it is on for the triangle (as recorded or as at the
+ * call); 0 when it is off. */
+static int hit_color_material(const struct hit_triangle *t, float c[4])
+{
+    const uint8_t flags = t->flags;
+    int color_material = (flags & TRI_INHERIT_COLOR_MATERIAL)
+                             ? t->inst->appearance.color_material
+                             : (flags & TRI_COLOR_MATERIAL) != 0;
+    if (!color_material)
+        return 0;
+    if (flags & TRI_INHERIT_COLOR)
+        memcpy(c, t->inst->appearance.color, 4 * sizeof(float)); /* the colour at the call */
+    else if (flags & TRI_FLAT)
+        memcpy(c, &t->mesh->colors[4 * t->provoking], 4 * sizeof(float));
+    else
+        interpolate(t->mesh->colors, 4, t->v, t->b0, t->b1, t->b2, 4, c);
+    return 1;
+}
+
 void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit *hit,
                    const float dir[3], float width, struct surface *s)
 {
-    const struct scene_instance *inst = shade_hit_instance(sc, hit);
-    const struct scene_mesh *mesh = &inst->object->mesh;
-    const uint32_t *v = &mesh->indices[3 * hit->prim];
-    const float b1 = hit->u, b2 = hit->v, b0 = 1.0f - hit->u - hit->v;
+    struct hit_triangle t;
+    hit_triangle(sc, hit, &t);
+    const struct scene_instance *inst = t.inst;
+    const struct scene_mesh *mesh = t.mesh;
+    const uint32_t *v = t.v;
 
     const float *p0 = &mesh->positions[3 * v[0]];
     const float *p1 = &mesh->positions[3 * v[1]];
@@ -291,61 +383,57 @@ void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit 
         norm = fmax(norm, fabs(m[k]) + fabs(m[4 + k]) + fabs(m[8 + k]));
     }
     s->p_error = (float)(0.5 * FLT_EPSILON * (max_world + norm * max_object) + FLT_MIN);
-    float e1[3], e2[3], ngo[3];
-    vec3_sub(e1, p1, p0);
-    vec3_sub(e2, p2, p0);
-    vec3_cross(ngo, e1, e2);
-    transform_normal(inst->normal_to_world, ngo, s->ng);
-    if (!vec3_normalize(s->ng)) {
-        /* Sliver too thin for float: any unit vector facing the ray. */
-        s->ng[0] = -dir[0];
-        s->ng[1] = -dir[1];
-        s->ng[2] = -dir[2];
-        vec3_normalize(s->ng);
-    }
-    s->front = vec3_dot(s->ng, dir) < 0.0f;
-    if (!s->front)
-        for (int k = 0; k < 3; k++)
-            s->ng[k] = -s->ng[k];
-
-    uint8_t flags = mesh->tri_flags[hit->prim];
-    if (flags & TRI_INHERIT_SHADE) /* the shade model at the call (frame.h) */
-        flags = (uint8_t)((flags & ~TRI_FLAT) | (inst->appearance.flat ? TRI_FLAT : 0u));
-    uint32_t provoking = mesh->tri_provoking[hit->prim];
-    memcpy(s->n, s->ng, sizeof(s->n));
-    if (mesh->has_normals) {
-        float no[3];
-        if (flags & TRI_FLAT)
-            memcpy(no, &mesh->normals[3 * provoking], sizeof(no));
-        else
-            interpolate(mesh->normals, 3, v, b0, b1, b2, 3, no);
-        float nw[3];
-        transform_normal(inst->normal_to_world, no, nw);
-        if (vec3_normalize(nw)) {
-            if (vec3_dot(nw, s->ng) < 0.0f)
-                for (int k = 0; k < 3; k++)
-                    nw[k] = -nw[k];
-            memcpy(s->n, nw, sizeof(s->n));
-        }
-    }
+    hit_normals(&t, dir, s->ng, s->n, &s->front);
 
     s->mat = mesh->materials[mesh->tri_material[hit->prim]];
     surface_resolve_material(&inst->appearance, &s->mat);
-    int color_material = (flags & TRI_INHERIT_COLOR_MATERIAL) ? inst->appearance.color_material
-                                                              : (flags & TRI_COLOR_MATERIAL) != 0;
-    if (color_material) {
-        float c[4];
-        if (flags & TRI_INHERIT_COLOR)
-            memcpy(c, inst->appearance.color, sizeof(c)); /* the colour at the call */
-        else if (flags & TRI_FLAT)
-            memcpy(c, &mesh->colors[4 * provoking], sizeof(c));
-        else
-            interpolate(mesh->colors, 4, v, b0, b1, b2, 4, c);
+    float c[4];
+    if (hit_color_material(&t, c)) {
         memcpy(s->mat.ambient, c, sizeof(c));
         memcpy(s->mat.diffuse, c, sizeof(c));
     }
     if (s->mat.texture)
-        apply_texture(sc, inst, mesh, v, b0, b1, b2, s->ng, dir, width, &s->mat);
+        apply_texture(sc, inst, mesh, v, t.b0, t.b1, t.b2, s->ng, dir, width, s->mat.texture,
+                      s->mat.ambient, s->mat.diffuse);
+}
+
+/*
+ * surface_fetch's normals and colours without the hit point, and of the
+ * material only what the eye light reads: a hit there used to copy the
+ * whole recorded material (some 260 bytes) and resolve every inherited
+ * property of it, the largest part of the frame's cost besides tracing.
+ * The same operations on the same values as surface_fetch and
+ * surface_resolve_material, so the same colours bit for bit.
+ */
+void surface_fetch_colour(const struct shade_context *sc, const struct trace_scene_hit *hit,
+                          const float dir[3], float width, struct surface_colour *s)
+{
+    struct hit_triangle t;
+    hit_triangle(sc, hit, &t);
+    hit_normals(&t, dir, s->ng, s->n, &s->front);
+    const struct scene_material *m = &t.mesh->materials[t.mesh->tri_material[hit->prim]];
+    const struct scene_material *call = &t.inst->appearance.material;
+    const uint32_t k = m->inherit;
+    memcpy(s->emission, (k & SCENE_MATERIAL_EMISSION) ? call->emission : m->emission,
+           sizeof(s->emission));
+    uint32_t texture = m->texture;
+    if (k & (SCENE_MATERIAL_TEXTURE | SCENE_MATERIAL_TEXTURE_ENABLE)) {
+        uint32_t bound = (k & SCENE_MATERIAL_TEXTURE) ? call->texture_bound : m->texture_bound;
+        uint32_t on = (k & SCENE_MATERIAL_TEXTURE_ENABLE) ? call->texture_enabled
+                                                          : m->texture_enabled;
+        texture = on ? bound : 0;
+    }
+    if (hit_color_material(&t, s->ambient)) {
+        memcpy(s->diffuse, s->ambient, sizeof(s->diffuse));
+    } else {
+        memcpy(s->ambient, (k & SCENE_MATERIAL_AMBIENT) ? call->ambient : m->ambient,
+               sizeof(s->ambient));
+        memcpy(s->diffuse, (k & SCENE_MATERIAL_DIFFUSE) ? call->diffuse : m->diffuse,
+               sizeof(s->diffuse));
+    }
+    if (texture)
+        apply_texture(sc, t.inst, t.mesh, t.v, t.b0, t.b1, t.b2, s->ng, dir, width, texture,
+                      s->ambient, s->diffuse);
 }
 
 int surface_texel(const struct shade_context *sc, const struct trace_scene_hit *hit,

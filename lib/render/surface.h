@@ -32,6 +32,22 @@ void surface_resolve_material(const struct scene_appearance *call, struct scene_
 void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit *hit,
                    const float dir[3], float width, struct surface *s);
 
+/* What the eye light and a see-through surface's alpha read of a hit:
+ * surface_fetch's normals and its material's emission, ambient and diffuse
+ * colours (vertex colours and texture applied), bit for bit, without the
+ * hit point or the rest of the material. */
+struct surface_colour {
+    float ng[3]; /* geometric normal, unit, facing the incoming ray */
+    float n[3];  /* shading normal, unit, same side as ng */
+    int front;   /* the ray hit the front face (counter-clockwise side) */
+    float emission[4];
+    float ambient[4];
+    float diffuse[4];
+};
+
+void surface_fetch_colour(const struct shade_context *sc, const struct trace_scene_hit *hit,
+                          const float dir[3], float width, struct surface_colour *s);
+
 /* The texel of texture `name` at a hit, for the RT_FIXED_FUNCTION mode,
  * which applies it after lighting through the texture environment
  * (gl_shade.c): the triangle's vertex coordinates vertex_st (recorded or

@@ -274,11 +274,21 @@ void scene_texture_set_image(struct scene_texture *tex, int width, int height, u
  * in double, where s - floor(s) is exact for every float s but a tiny
  * negative one.  NaN and infinities become 0.
  */
+/* floor(x) for |x| < 2^52 without the library call: the truncation,
+ * one lower for a negative x with a fraction.  Exact, as floor is; only
+ * the sign of a zero result may differ (-0 for floor(-0)), which no use
+ * here can see: it is subtracted from or converted to an integer. */
+static double floor_small(double x)
+{
+    const double t = (double)(long long)x;
+    return t > x ? t - 1.0 : t;
+}
+
 static double reduce_coord(float s, enum scene_texture_wrap wrap)
 {
     double d = isfinite(s) ? (double)s : 0.0;
     if (wrap == SCENE_WRAP_REPEAT) {
-        double f = d - floor(d);
+        double f = d - (fabs(d) < 0x1p52 ? floor_small(d) : floor(d));
         /* A tiny negative s has its fractional part just below 1, which
          * can round to 1: keep it in the last texel, where it belongs. */
         return f < 1.0 ? f : 0x1.fffffffffffffp-1;
@@ -290,20 +300,36 @@ static double reduce_coord(float s, enum scene_texture_wrap wrap)
 static int wrap_index(long i, int n, enum scene_texture_wrap wrap)
 {
     if (wrap == SCENE_WRAP_REPEAT) {
+        /* The filters' indices lie within one period of [0, n): no
+         * division (a 64-bit one per index cost more than the filter). */
+        if (i >= 0 && i < n)
+            return (int)i;
+        if (i < 0 && i >= -(long)n)
+            return (int)(i + n);
+        if (i >= n && i < 2 * (long)n)
+            return (int)(i - n);
         i %= n;
         return (int)(i < 0 ? i + n : i);
     }
     return i < 0 ? 0 : i >= n ? n - 1 : (int)i;
 }
 
+/* b / 255 for every 8-bit b, each the float division itself (folded by
+ * the compiler, correctly rounded as at run time): a division, not a
+ * multiplication by 1/255, so that it is the correctly rounded value of
+ * the 8-bit colour, exactly what an application computes for it; looked
+ * up, because 16 divisions per bilinear lookup were most of its cost. */
+#define UNIT8_1(b) ((float)(b) / 255.0f)
+#define UNIT8_4(b) UNIT8_1(b), UNIT8_1((b) + 1), UNIT8_1((b) + 2), UNIT8_1((b) + 3)
+#define UNIT8_16(b) UNIT8_4(b), UNIT8_4((b) + 4), UNIT8_4((b) + 8), UNIT8_4((b) + 12)
+#define UNIT8_64(b) UNIT8_16(b), UNIT8_16((b) + 16), UNIT8_16((b) + 32), UNIT8_16((b) + 48)
+static const float unit8[256] = {UNIT8_64(0), UNIT8_64(64), UNIT8_64(128), UNIT8_64(192)};
+
 static void fetch_texel(const struct scene_texture_level *lv, int i, int j, float rgba[4])
 {
     const uint8_t *p = &lv->texels[4 * ((size_t)j * (size_t)lv->width + (size_t)i)];
-    /* Division, not a multiplication by 1/255: b / 255 is then the
-     * correctly rounded value of the 8-bit colour, exactly what an
-     * application computes for it. */
     for (int k = 0; k < 4; k++)
-        rgba[k] = (float)p[k] / 255.0f;
+        rgba[k] = unit8[p[k]];
 }
 
 void scene_texture_sample_level(const struct scene_texture *tex, int level,
@@ -317,15 +343,15 @@ void scene_texture_sample_level(const struct scene_texture *tex, int level,
     if (filter == SCENE_FILTER_NEAREST || filter == SCENE_FILTER_NEAREST_MIPMAP_NEAREST ||
         filter == SCENE_FILTER_NEAREST_MIPMAP_LINEAR) {
         /* GL 1.1 eq. 3.16: the texel whose square contains (u, v). */
-        int i = wrap_index((long)floor(u), w, tex->wrap_s);
-        int j = wrap_index((long)floor(v), h, tex->wrap_t);
+        int i = wrap_index((long)floor_small(u), w, tex->wrap_s);
+        int j = wrap_index((long)floor_small(v), h, tex->wrap_t);
         fetch_texel(lv, i, j, rgba);
         return;
     }
     /* GL 1.1 eq. 3.17: i0 = floor(u - 1/2), alpha = frac(u - 1/2); the
      * four texels around the sample point, weighted bilinearly. */
     const double uc = u - 0.5, vc = v - 0.5;
-    const double fi = floor(uc), fj = floor(vc);
+    const double fi = floor_small(uc), fj = floor_small(vc);
     const float a = (float)(uc - fi), b = (float)(vc - fj);
     const int i0 = wrap_index((long)fi, w, tex->wrap_s);
     const int i1 = wrap_index((long)fi + 1, w, tex->wrap_s);
