@@ -193,7 +193,7 @@ static void light(const char *caller, RTenum which, RTenum pname, const RTfloat 
         return;
     }
     rt_list_state(ctx, LIST_LIGHT, which, pname, params, n);
-    struct render_light *l = &ctx->render.lights[which - RT_LIGHT0];
+    struct scene_light *l = &ctx->render.lights[which - RT_LIGHT0];
     switch (pname) {
     case RT_AMBIENT:
         memcpy(l->ambient, params, sizeof(l->ambient));
@@ -245,6 +245,9 @@ static void light(const char *caller, RTenum which, RTenum pname, const RTfloat 
         l->attenuation[2] = params[0];
         break;
     }
+    /* Per primitive (scene/gl_state.h): a list's later geometry gets a
+     * segment whose instance carries the lights as they are there. */
+    rt_list_state_changed(ctx, caller);
 }
 
 void rtLightf(RTenum which, RTenum pname, RTfloat param)
@@ -499,7 +502,7 @@ void rtGetLightfv(RTenum which, RTenum pname, RTfloat *params)
         return;
     }
     /* As GL: positions and directions in eye coordinates. */
-    const struct render_light *l = &ctx->render.lights[which - RT_LIGHT0];
+    const struct scene_light *l = &ctx->render.lights[which - RT_LIGHT0];
     const float *src;
     switch (pname) {
     case RT_AMBIENT:

@@ -447,6 +447,9 @@ static void set_capability(const char *caller, RTenum cap, int value)
      * instance (scene/gl_state.h, list.c): a segment of its own. */
     if (cap == RT_FOG || cap == RT_TEXTURE_GEN_S || cap == RT_TEXTURE_GEN_T)
         rt_list_state_changed(ctx, caller);
+    /* So do the light enables (scene/gl_state.h, light_set). */
+    if (cap >= RT_LIGHT0 && cap < RT_LIGHT0 + RENDER_MAX_LIGHTS)
+        rt_list_state_changed(ctx, caller);
 }
 
 void rtEnable(RTenum cap)

@@ -116,7 +116,7 @@ static void restore_state(struct rt_context *ctx, const struct list_saved_state 
     ctx->polygon_offset_fill = s->polygon_offset_fill;
 }
 
-static void appearance_now(const struct rt_context *ctx, struct scene_appearance *a)
+static void appearance_now(struct rt_context *ctx, struct scene_appearance *a)
 {
     a->material = ctx->material;
     a->material.texture = ctx->texture_2d ? ctx->texture_binding : 0;

@@ -62,7 +62,7 @@ static void local_whitted(const struct shade_context *sc, const struct surface *
     float origin[3];
     shade_offset_point(s->p, s->ng, s->p_error, origin);
     for (int i = 0; i < RENDER_MAX_LIGHTS; i++) {
-        const struct render_light *light = &st->lights[i];
+        const struct scene_light *light = &st->lights[i];
         if (!light->enabled)
             continue;
         float to_light[3], shadow_dir[3], shadow_tmax, attenuation = 1.0f;
