@@ -305,6 +305,9 @@ static void set_attribute(const char *caller, enum attribute which, const float 
         for (int i = 0; i < 4; i++)
             ctx->current_color[i] = i < n ? fminf(fmaxf(src[i], 0.0f), 1.0f) : 1.0f;
         rt_list_state(ctx, LIST_COLOR, 0, 0, ctx->current_color, 4);
+        /* RT_COLOR_MATERIAL: GL writes it into the tracked properties
+         * (appearance.c, rt_color_material_write). */
+        ctx->color_material_current = ctx->color_material;
         break;
     }
 }

@@ -118,6 +118,7 @@ struct list_saved_state {
     struct render_visibility vis;
     RTenum polygon_mode[2];
     int polygon_offset_fill;
+    int color_material_current; /* rt_context's (n-light) */
 };
 
 struct rt_context {
@@ -209,6 +210,11 @@ struct rt_context {
     uint32_t light_set_index;
     uint64_t light_set_serial;
     struct scene_light light_set_lights[RENDER_MAX_LIGHTS];
+    /* RT_COLOR_MATERIAL is on and GL has written the current colour into
+     * the tracked properties (a colour, the enable, rtColorMaterial), which
+     * ctx->material then does not hold yet (rt_color_material_write);
+     * 0 after rtPopAttrib restored the material it pushed. */
+    int color_material_current;
     struct rt_pool *pool; /* NULL until a frame needs threads */
 
     /* Statistics of the last frame or query. */
@@ -327,6 +333,12 @@ void rt_gl_state_now(struct rt_context *ctx, struct scene_gl_state *gl);
  * (scene_frame_light_set), for an instance about to be added
  * (fixed_function.c). */
 uint32_t rt_light_set_now(struct rt_context *ctx);
+/* RT_COLOR_MATERIAL's write-back (appearance.c): rt_color_material_write
+ * puts the current colour into m's tracked properties while the enable
+ * is on; rt_color_material_settle does it to the context's material
+ * where the tracking ends (and, in a list, starts a segment). */
+void rt_color_material_write(const struct rt_context *ctx, struct scene_material *m);
+void rt_color_material_settle(struct rt_context *ctx, const char *caller);
 /* The raster state geometry drawn now takes (lines.c, raster_state.h). */
 void rt_raster_now(const struct rt_context *ctx, struct scene_raster *raster);
 /* Display lists (list.c).  rt_list_compiling: a list is being recorded

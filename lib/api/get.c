@@ -432,6 +432,11 @@ static void set_capability(const char *caller, RTenum cap, int value)
         return;
     }
     rt_list_state(ctx, value ? LIST_ENABLE : LIST_DISABLE, cap, 0, NULL, 0);
+    /* Tracking ends: the tracked properties keep the current colour. */
+    if (cap == RT_COLOR_MATERIAL && !value && *flag)
+        rt_color_material_settle(ctx, caller);
+    if (cap == RT_COLOR_MATERIAL && value && !*flag)
+        ctx->color_material_current = 1; /* GL writes the colour at the enable */
     *flag = value;
     /* Clip planes are per primitive: a list's later geometry gets a
      * segment of its own (list.c). */

@@ -71,6 +71,7 @@ static void save_state(const struct rt_context *ctx, struct list_saved_state *s)
     s->vis = ctx->render.vis;
     memcpy(s->polygon_mode, ctx->polygon_mode, sizeof(s->polygon_mode));
     s->polygon_offset_fill = ctx->polygon_offset_fill;
+    s->color_material_current = ctx->color_material_current;
 }
 
 static void restore_state(struct rt_context *ctx, const struct list_saved_state *s)
@@ -114,6 +115,7 @@ static void restore_state(struct rt_context *ctx, const struct list_saved_state 
     vis->offset_units = s->vis.offset_units;
     memcpy(ctx->polygon_mode, s->polygon_mode, sizeof(s->polygon_mode));
     ctx->polygon_offset_fill = s->polygon_offset_fill;
+    ctx->color_material_current = s->color_material_current;
 }
 
 static void appearance_now(struct rt_context *ctx, struct scene_appearance *a)
