@@ -50,7 +50,8 @@ struct gl_triangle {
     uint8_t flags;         /* with TRI_COLOR_MATERIAL as inherited from the call */
     const float *call_color; /* TRI_INHERIT_COLOR: the colour at the call, else NULL */
     uint32_t provoking;
-    /* The lights the primitive was drawn under (scene/gl_state.h). */
+    /* The lights the primitive was drawn under (scene/gl_state.h):
+     * looked up only when it is lit (gl_shade_hit). */
     const struct scene_light *lights;
     float ng[3]; /* eye-space geometric normal of the counter-clockwise side */
 };
@@ -84,12 +85,6 @@ static void fetch_triangle(const struct shade_context *sc, const struct trace_sc
         t->flags = (uint8_t)((t->flags & ~TRI_FLAT) | (t->inst->appearance.flat ? TRI_FLAT : 0u));
     t->call_color = (t->flags & TRI_INHERIT_COLOR) ? t->inst->appearance.color : NULL;
     t->provoking = t->mesh->tri_provoking[hit->prim];
-    /* The frame's lights only for an instance that has no set (none
-     * could be allocated). */
-    const uint32_t set = t->inst->appearance.gl.light_set;
-    t->lights = set < sc->frame->committed_lights.count
-                    ? sc->frame->committed_lights.items[set].light
-                    : sc->state->lights;
     float p[3][3], e1[3], e2[3];
     for (int i = 0; i < 3; i++)
         eye_position(t->inst, t->mesh, t->v[i], p[i]);
@@ -267,6 +262,12 @@ void gl_shade_hit(const struct shade_context *sc, const struct trace_scene_hit *
                 for (int k = 0; k < 4; k++)
                     c[k] += b[i] * vertex_color(&t, t.v[i])[k];
     } else {
+        /* The frame's lights only for an instance that has no set (none
+         * could be allocated). */
+        const uint32_t set = t.inst->appearance.gl.light_set;
+        t.lights = set < sc->frame->committed_lights.count
+                       ? sc->frame->committed_lights.items[set].light
+                       : sc->state->lights;
         const int back = !is_front(&t, dir) && t.inst->appearance.gl.light_model.two_side;
         if (flat) {
             float p[3];
