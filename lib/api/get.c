@@ -418,6 +418,8 @@ static void set_capability(const char *caller, RTenum cap, int value)
         return;
     if (cap == RT_LIGHTING) {
         rt_list_state(ctx, value ? LIST_ENABLE : LIST_DISABLE, cap, 0, NULL, 0);
+        if (value) /* the eye-light and Whitted modes honour it from now on */
+            ctx->render.lighting_used = 1;
         if (ctx->material.lighting != (uint8_t)value) {
             ctx->material.lighting = (uint8_t)value;
             ctx->recording.material_index = -1;

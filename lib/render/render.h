@@ -68,6 +68,11 @@ struct render_state {
     int light_model_two_side;
     int light_model_local_viewer;
     struct scene_fog fog;
+    /* rtEnable(RT_LIGHTING) was called in this context: from then on the
+     * eye-light and Whitted modes honour each primitive's RT_LIGHTING as
+     * GL does (unlit: its colour); before, they light every surface, the
+     * ray tracer's look (docs/appearance.md). */
+    int lighting_used;
 };
 
 struct render_stats {

@@ -52,11 +52,11 @@ static void add_scaled(float acc[3], const float a[4], const float b[4], float s
 }
 
 static void local_whitted(const struct shade_context *sc, const struct surface *s,
-                          const float dir[3], float c[3])
+                          const float global_ambient[4], const float dir[3], float c[3])
 {
     const struct render_state *st = sc->state;
     for (int k = 0; k < 3; k++)
-        c[k] = s->mat.emission[k] + st->global_ambient[k] * s->mat.ambient[k];
+        c[k] = s->mat.emission[k] + global_ambient[k] * s->mat.ambient[k];
     float view[3] = {-dir[0], -dir[1], -dir[2]};
     vec3_normalize(view);
     float origin[3];
@@ -166,19 +166,29 @@ void shade_hit(const struct shade_context *sc, const float org[3], const float d
     float unit_dir[3] = {dir[0], dir[1], dir[2]};
     vec3_normalize(unit_dir);
 
+    /* GL's switches that mean something here (docs/appearance.md): the
+     * global ambient the primitive was drawn under (scene/gl_state.h), and
+     * RT_LIGHTING once the program has used it (surface.c put the colour
+     * of an unlit primitive into its diffuse material). */
+    const float *global_ambient = shade_hit_instance(sc, &hit)->appearance.gl.light_model.ambient;
+    const int unlit = st->lighting_used && !s.mat.lighting;
     if (st->shading == RENDER_EYE_LIGHT) {
         /* A headlight at the eye, no shadows: Wald, Benthin and Slusallek's (2003) "OpenGL-like
          * ray casting". */
         float cosine = fabsf(vec3_dot(s.n, unit_dir));
         for (int k = 0; k < 3; k++)
-            c[k] = s.mat.emission[k] + st->global_ambient[k] * s.mat.ambient[k] +
-                   s.mat.diffuse[k] * cosine;
+            c[k] = unlit ? s.mat.diffuse[k]
+                         : s.mat.emission[k] + global_ambient[k] * s.mat.ambient[k] +
+                               s.mat.diffuse[k] * cosine;
         memcpy(rgba, c, sizeof(c));
         rgba[3] = 1.0f;
         return;
     }
 
-    local_whitted(sc, &s, unit_dir, c);
+    if (unlit)
+        memcpy(c, s.mat.diffuse, sizeof(c));
+    else
+        local_whitted(sc, &s, global_ambient, unit_dir, c);
     float kr = s.mat.reflectivity, kt = s.mat.transparency;
     if (depth < st->max_depth && (kr > 0.0f || kt > 0.0f)) {
         float out[4], next_org[3], next_dir[3];

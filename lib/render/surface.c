@@ -333,7 +333,13 @@ void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit 
     surface_resolve_material(&inst->appearance, &s->mat);
     int color_material = (flags & TRI_INHERIT_COLOR_MATERIAL) ? inst->appearance.color_material
                                                               : (flags & TRI_COLOR_MATERIAL) != 0;
-    if (color_material) {
+    /* Unlit in the eye-light and Whitted modes (render_state.lighting_used,
+     * shade.c): the primitive shows its colour, which the ambient and
+     * diffuse material carry from here on, as under RT_COLOR_MATERIAL, so
+     * that the texture modulates it and blending takes its alpha. */
+    const int unlit = sc->state->lighting_used && !s->mat.lighting &&
+                      sc->state->shading != RENDER_FIXED_FUNCTION;
+    if (color_material || unlit) {
         float c[4];
         if (flags & TRI_INHERIT_COLOR)
             memcpy(c, inst->appearance.color, sizeof(c)); /* the colour at the call */
