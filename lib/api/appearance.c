@@ -101,17 +101,42 @@ void rt_color_material_settle(struct rt_context *ctx, const char *caller)
         ctx->material = m;
         ctx->recording.material_index = -1;
     }
-    /* In a list the colour written is the one current at the call (the
-     * caller's, unless the list set it): the list's later triangles take
-     * their colours from the instance of a segment of their own, which
-     * carries the material as the replay left it. */
-    if (rt_list_compiling(ctx)) {
-        const uint32_t colours = SCENE_MATERIAL_AMBIENT | SCENE_MATERIAL_DIFFUSE |
-                                 SCENE_MATERIAL_SPECULAR | SCENE_MATERIAL_EMISSION;
-        ctx->recording.material_set &= ~(colours | colours << SCENE_MATERIAL_BACK_SHIFT);
-        ctx->recording.material_index = -1;
-        rt_list_state_changed(ctx, caller);
+    if (!rt_list_compiling(ctx))
+        return;
+    struct scene_recording *rec = &ctx->recording;
+    rec->material_index = -1;
+    if (rec->color_set && rec->color_material_set) {
+        /* The list set the colour and the enable itself: what GL writes
+         * is known now, and the list's later triangles record it as the
+         * list's own material (the properties rtColorMaterial named while
+         * the list recorded; GL takes those named at the call, which
+         * differ only when the list sets none and the caller changes
+         * rtColorMaterial between recording and call). */
+        const RTenum face = ctx->material.color_material_face;
+        const RTenum mode = ctx->material.color_material_mode;
+        uint32_t bits = 0;
+        if (mode == RT_AMBIENT || mode == RT_AMBIENT_AND_DIFFUSE)
+            bits |= SCENE_MATERIAL_AMBIENT;
+        if (mode == RT_DIFFUSE || mode == RT_AMBIENT_AND_DIFFUSE)
+            bits |= SCENE_MATERIAL_DIFFUSE;
+        if (mode == RT_SPECULAR)
+            bits |= SCENE_MATERIAL_SPECULAR;
+        if (mode == RT_EMISSION)
+            bits |= SCENE_MATERIAL_EMISSION;
+        if (face != RT_BACK)
+            rec->material_set |= bits;
+        if (face != RT_FRONT)
+            rec->material_set |= bits << SCENE_MATERIAL_BACK_SHIFT;
+        return;
     }
+    /* Otherwise the colour written is the one current at the call (the
+     * caller's): the list's later triangles take their colours from the
+     * instance of a segment of their own, which carries the material as
+     * the replay left it. */
+    const uint32_t colours = SCENE_MATERIAL_AMBIENT | SCENE_MATERIAL_DIFFUSE |
+                             SCENE_MATERIAL_SPECULAR | SCENE_MATERIAL_EMISSION;
+    rec->material_set &= ~(colours | colours << SCENE_MATERIAL_BACK_SHIFT);
+    rt_list_state_changed(ctx, caller);
 }
 
 static void material(const char *caller, RTenum face, RTenum pname, const RTfloat *params,

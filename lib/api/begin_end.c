@@ -32,6 +32,8 @@ int rt_block_start(struct rt_context *ctx, RTenum mode)
     struct scene_gl_state gl;
     rt_clip_now(ctx, &clip);
     rt_gl_state_now(ctx, &gl);
+    if (gl.light_set == UINT32_MAX)
+        return -1; /* no room for its light set (recorded) */
     /* Lines and points carry their width and size (lines.c): a change of
      * width alone does not start a segment. */
     struct scene_raster raster;

@@ -331,7 +331,8 @@ void rt_clip_now(const struct rt_context *ctx, struct scene_clip *clip);
 void rt_gl_state_now(struct rt_context *ctx, struct scene_gl_state *gl);
 /* The index of the lights current now in the frame's table of light sets
  * (scene_frame_light_set), for an instance about to be added
- * (fixed_function.c). */
+ * (fixed_function.c); UINT32_MAX when out of memory (the caller records
+ * the error and draws nothing). */
 uint32_t rt_light_set_now(struct rt_context *ctx);
 /* RT_COLOR_MATERIAL's write-back (appearance.c): rt_color_material_write
  * puts the current colour into m's tracked properties while the enable

@@ -91,8 +91,7 @@ uint32_t rt_light_set_now(struct rt_context *ctx)
         memcmp(ctx->light_set_lights, ctx->render.lights, sizeof(ctx->light_set_lights)) == 0)
         return ctx->light_set_index;
     uint32_t index = scene_frame_light_set(&ctx->scene.frame, ctx->render.lights);
-    if (index == UINT32_MAX) {
-        rt_error(ctx, RT_OUT_OF_MEMORY, "drawing: out of memory for the light set");
+    if (index == UINT32_MAX) { /* the caller records the error */
         ctx->light_set_cached = 0;
         return index;
     }
