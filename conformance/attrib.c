@@ -172,6 +172,9 @@ static void lighting_group(void)
     rtColorMaterial(RT_FRONT, RT_SPECULAR);
     rtEnable(RT_LIGHTING);
     rtEnable(RT_LIGHT1);
+    /* GL writes the current colour into the tracked specular at the enable
+     * (OpenGL 2.1 sec. 2.14.3): the colour is the specular set above. */
+    rtColor4fv(spec);
     rtEnable(RT_COLOR_MATERIAL);
     rtFogf(RT_FOG_DENSITY, 0.5f);
     CHECK_NO_ERR();

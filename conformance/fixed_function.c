@@ -156,10 +156,11 @@ static void unlit_and_lit(void)
     render_obj();
     CHECK_RGB(pixel(0, 1), 0.84f, 0.84f, 0.84f);
     CHECK_RGB(pixel(3, 1), 1, 0, 0);
-    /* The eye light keeps its own look on the same object. */
+    /* The eye light honours RT_LIGHTING too once the program has enabled
+     * it (docs/appearance.md): the unlit half shows its colour. */
     rtShadingMode(RT_EYE_LIGHT);
     render_obj();
-    CHECK_RGB(pixel(3, 1), 0.84f, 0.84f, 0.84f);
+    CHECK_RGB(pixel(3, 1), 1, 0, 0);
     rtShadingMode(RT_FIXED_FUNCTION);
 }
 
@@ -517,7 +518,10 @@ static void whitted_spot(void)
     static const float at_eye[4] = {0, 0, 0, 1}, down[3] = {0, 0, -1};
     reset();
     rtNewObject(OBJ);
+    /* Lit: this context has used RT_LIGHTING, which Whitted then honours. */
+    rtEnable(RT_LIGHTING);
     square(-5, 1);
+    rtDisable(RT_LIGHTING);
     rtEndObject();
     rtLightfv(RT_LIGHT0, RT_POSITION, at_eye);
     rtLightfv(RT_LIGHT0, RT_SPOT_DIRECTION, down);

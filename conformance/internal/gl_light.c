@@ -26,7 +26,7 @@ static void default_state(struct render_state *st)
     for (int k = 0; k < 3; k++)
         st->global_ambient[k] = 0.2f;
     st->global_ambient[3] = 1.0f;
-    struct render_light *l = &st->lights[0];
+    struct scene_light *l = &st->lights[0];
     l->enabled = 1;
     for (int k = 0; k < 3; k++)
         l->diffuse[k] = l->specular[k] = 1.0f;
@@ -47,7 +47,7 @@ static void gl_light_point(const struct render_state *st, const struct gl_face_m
     lm.two_side = st->light_model_two_side;
     lm.local_viewer = st->light_model_local_viewer;
     memcpy(lm.ambient, st->global_ambient, sizeof(lm.ambient));
-    gl_light_point_model(st, &lm, m, p, n, rgba);
+    gl_light_point_model(st->lights, &lm, m, p, n, rgba);
 }
 
 static void front(const struct scene_material *mat, struct gl_face_material *fm)

@@ -262,8 +262,8 @@ static void init(int eye_light, int gl)
     /* Set while the modelview is the identity, so the light is fixed in eye
      * space (world space is eye space, as in OpenGL). */
     rtLightfv(RT_LIGHT0, RT_POSITION, pos);
-    /* As the original: lighting (recorded with the gears, read by the
-     * RT_FIXED_FUNCTION mode; Whitted and the eye light always light) and
+    /* As the original: lighting (recorded with the gears, read by every
+     * mode: Whitted and the eye light honour it once it is enabled) and
      * culling, which camera rays obey in every mode, so only --gl asks for
      * it and the Whitted images stay as they were.  The depth test is
      * accepted and not needed: rays find the nearest surface. */

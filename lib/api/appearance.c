@@ -46,6 +46,99 @@ static void set_colour(float *front, float *back, RTenum face, const RTfloat *pa
         memcpy(back, params, 4 * sizeof(float));
 }
 
+/* The colours of m that rtColorMaterial(face, mode) names: up to four
+ * (RT_AMBIENT_AND_DIFFUSE of both faces).  Returns how many. */
+static int tracked_colours(struct scene_material *m, RTenum face, RTenum mode, float *out[4])
+{
+    int n = 0;
+    for (int back = 0; back < 2; back++) {
+        if (face != RT_FRONT_AND_BACK && face != (back ? RT_BACK : RT_FRONT))
+            continue;
+        if (mode == RT_AMBIENT || mode == RT_AMBIENT_AND_DIFFUSE)
+            out[n++] = back ? m->back_ambient : m->ambient;
+        if (mode == RT_DIFFUSE || mode == RT_AMBIENT_AND_DIFFUSE)
+            out[n++] = back ? m->back_diffuse : m->diffuse;
+        if (mode == RT_SPECULAR)
+            out[n++] = back ? m->back_specular : m->specular;
+        if (mode == RT_EMISSION)
+            out[n++] = back ? m->back_emission : m->emission;
+    }
+    return n;
+}
+
+/*
+ * GL 2.1 sec. 2.14.3: while RT_COLOR_MATERIAL is enabled the material
+ * properties rtColorMaterial names take the current colour whenever it
+ * changes, and when the enable or the tracked properties change; a
+ * property no longer tracked keeps the last colour.  Tracelist writes the
+ * colour lazily: while the enable is on, the tracked properties are the
+ * current colour by definition (the renderer takes the vertex colour for
+ * them, gl_light.c, and rtGetMaterialfv reports it), and this writes it
+ * into the material where the tracking ends (rtDisable, rtColorMaterial,
+ * rtPushAttrib), so that rtColor costs nothing more while tracking.
+ * After rtPopAttrib restored a material, the tracked properties hold the
+ * restored values until the colour next changes (color_material_current).
+ */
+void rt_color_material_write(const struct rt_context *ctx, struct scene_material *m)
+{
+    if (!ctx->color_material || !ctx->color_material_current)
+        return;
+    float *dst[4];
+    int n = tracked_colours(m, m->color_material_face, m->color_material_mode, dst);
+    for (int i = 0; i < n; i++)
+        memcpy(dst[i], ctx->current_color, 4 * sizeof(float));
+}
+
+void rt_color_material_settle(struct rt_context *ctx, const char *caller)
+{
+    if (!ctx->color_material)
+        return;
+    struct scene_material m = ctx->material;
+    rt_color_material_write(ctx, &m);
+    /* What rtColorMaterial tracks next takes the current colour. */
+    ctx->color_material_current = 1;
+    if (memcmp(&m, &ctx->material, sizeof(m)) != 0) {
+        ctx->material = m;
+        ctx->recording.material_index = -1;
+    }
+    if (!rt_list_compiling(ctx))
+        return;
+    struct scene_recording *rec = &ctx->recording;
+    rec->material_index = -1;
+    if (rec->color_set && rec->color_material_set) {
+        /* The list set the colour and the enable itself: what GL writes
+         * is known now, and the list's later triangles record it as the
+         * list's own material (the properties rtColorMaterial named while
+         * the list recorded; GL takes those named at the call, which
+         * differ only when the list sets none and the caller changes
+         * rtColorMaterial between recording and call). */
+        const RTenum face = ctx->material.color_material_face;
+        const RTenum mode = ctx->material.color_material_mode;
+        uint32_t bits = 0;
+        if (mode == RT_AMBIENT || mode == RT_AMBIENT_AND_DIFFUSE)
+            bits |= SCENE_MATERIAL_AMBIENT;
+        if (mode == RT_DIFFUSE || mode == RT_AMBIENT_AND_DIFFUSE)
+            bits |= SCENE_MATERIAL_DIFFUSE;
+        if (mode == RT_SPECULAR)
+            bits |= SCENE_MATERIAL_SPECULAR;
+        if (mode == RT_EMISSION)
+            bits |= SCENE_MATERIAL_EMISSION;
+        if (face != RT_BACK)
+            rec->material_set |= bits;
+        if (face != RT_FRONT)
+            rec->material_set |= bits << SCENE_MATERIAL_BACK_SHIFT;
+        return;
+    }
+    /* Otherwise the colour written is the one current at the call (the
+     * caller's): the list's later triangles take their colours from the
+     * instance of a segment of their own, which carries the material as
+     * the replay left it. */
+    const uint32_t colours = SCENE_MATERIAL_AMBIENT | SCENE_MATERIAL_DIFFUSE |
+                             SCENE_MATERIAL_SPECULAR | SCENE_MATERIAL_EMISSION;
+    rec->material_set &= ~(colours | colours << SCENE_MATERIAL_BACK_SHIFT);
+    rt_list_state_changed(ctx, caller);
+}
+
 static void material(const char *caller, RTenum face, RTenum pname, const RTfloat *params,
                      int scalar_only)
 {
@@ -113,6 +206,15 @@ static void material(const char *caller, RTenum face, RTenum pname, const RTfloa
     default:
         m.ior = v;
         break;
+    }
+    /* GL ignores a material call for the properties RT_COLOR_MATERIAL
+     * tracks while it is enabled (they keep the current colour). */
+    if (ctx->color_material) {
+        float *keep[4], *now[4];
+        int tracked = tracked_colours(&m, m.color_material_face, m.color_material_mode, keep);
+        tracked_colours(&ctx->material, m.color_material_face, m.color_material_mode, now);
+        for (int i = 0; i < tracked; i++)
+            memcpy(keep[i], now[i], 4 * sizeof(float));
     }
     if (memcmp(&m, &ctx->material, sizeof(m)) == 0)
         return; /* unchanged: keep the interned index (Mesa compares first) */
@@ -193,7 +295,7 @@ static void light(const char *caller, RTenum which, RTenum pname, const RTfloat 
         return;
     }
     rt_list_state(ctx, LIST_LIGHT, which, pname, params, n);
-    struct render_light *l = &ctx->render.lights[which - RT_LIGHT0];
+    struct scene_light *l = &ctx->render.lights[which - RT_LIGHT0];
     switch (pname) {
     case RT_AMBIENT:
         memcpy(l->ambient, params, sizeof(l->ambient));
@@ -245,6 +347,9 @@ static void light(const char *caller, RTenum which, RTenum pname, const RTfloat 
         l->attenuation[2] = params[0];
         break;
     }
+    /* Per primitive (scene/gl_state.h): a list's later geometry gets a
+     * segment whose instance carries the lights as they are there. */
+    rt_list_state_changed(ctx, caller);
 }
 
 void rtLightf(RTenum which, RTenum pname, RTfloat param)
@@ -384,6 +489,9 @@ void rtColorMaterial(RTenum face, RTenum mode)
     rt_list_state(ctx, LIST_COLOR_MATERIAL, face, mode, NULL, 0);
     if (ctx->material.color_material_face == face && ctx->material.color_material_mode == mode)
         return;
+    /* The properties tracked so far keep the current colour; the new
+     * ones take it (by definition, rt_color_material_write). */
+    rt_color_material_settle(ctx, "rtColorMaterial");
     ctx->material.color_material_face = face;
     ctx->material.color_material_mode = mode;
     ctx->recording.material_index = -1;
@@ -445,7 +553,11 @@ void rtGetMaterialfv(RTenum face, RTenum pname, RTfloat *params)
         rt_error(ctx, RT_INVALID_VALUE, "rtGetMaterialfv(params=NULL)");
         return;
     }
-    const struct scene_material *m = &ctx->material;
+    /* The tracked properties hold the current colour while
+     * RT_COLOR_MATERIAL is enabled (rt_color_material_write). */
+    struct scene_material settled = ctx->material;
+    rt_color_material_write(ctx, &settled);
+    const struct scene_material *m = &settled;
     const int back = face == RT_BACK;
     const float *src;
     switch (pname) {
@@ -499,7 +611,7 @@ void rtGetLightfv(RTenum which, RTenum pname, RTfloat *params)
         return;
     }
     /* As GL: positions and directions in eye coordinates. */
-    const struct render_light *l = &ctx->render.lights[which - RT_LIGHT0];
+    const struct scene_light *l = &ctx->render.lights[which - RT_LIGHT0];
     const float *src;
     switch (pname) {
     case RT_AMBIENT:

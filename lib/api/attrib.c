@@ -44,6 +44,7 @@ static void save(const struct rt_context *ctx, struct attrib_entry *e)
     memcpy(e->raster_color, ctx->raster_color, sizeof(e->raster_color));
     e->raster_valid = ctx->raster_valid;
     e->material = ctx->material;
+    rt_color_material_write(ctx, &e->material); /* the colours GL holds */
     e->color_material = ctx->color_material;
     e->shade_model = ctx->shade_model;
     e->texture_binding = ctx->texture_binding;
@@ -98,6 +99,9 @@ static void restore_lighting(struct rt_context *ctx, const struct attrib_entry *
     m->color_material_mode = s->color_material_mode;
     m->lighting = s->lighting;
     ctx->color_material = e->color_material;
+    /* The material as pushed (with the colour GL had written into it,
+     * save): the tracked properties hold it until the colour changes. */
+    ctx->color_material_current = 0;
     ctx->shade_model = e->shade_model;
     memcpy(ctx->render.lights, e->lights, sizeof(e->lights));
     memcpy(ctx->render.global_ambient, e->global_ambient, sizeof(e->global_ambient));
@@ -109,6 +113,12 @@ static void restore_lighting(struct rt_context *ctx, const struct attrib_entry *
 static void restore_enables(struct rt_context *ctx, const struct attrib_entry *e)
 {
     ctx->material.lighting = e->material.lighting;
+    /* As rtEnable / rtDisable(RT_COLOR_MATERIAL) (get.c): the tracking
+     * that ends leaves the colour in the material. */
+    if (ctx->color_material && !e->color_material)
+        rt_color_material_settle(ctx, "rtPopAttrib");
+    else if (!ctx->color_material && e->color_material)
+        ctx->color_material_current = 1;
     ctx->color_material = e->color_material;
     ctx->texture_2d = e->texture_2d;
     ctx->cull_face_enabled = e->cull_face_enabled;

@@ -32,6 +32,8 @@ int rt_block_start(struct rt_context *ctx, RTenum mode)
     struct scene_gl_state gl;
     rt_clip_now(ctx, &clip);
     rt_gl_state_now(ctx, &gl);
+    if (gl.light_set == UINT32_MAX)
+        return -1; /* no room for its light set (recorded) */
     /* Lines and points carry their width and size (lines.c): a change of
      * width alone does not start a segment. */
     struct scene_raster raster;
@@ -305,6 +307,9 @@ static void set_attribute(const char *caller, enum attribute which, const float 
         for (int i = 0; i < 4; i++)
             ctx->current_color[i] = i < n ? fminf(fmaxf(src[i], 0.0f), 1.0f) : 1.0f;
         rt_list_state(ctx, LIST_COLOR, 0, 0, ctx->current_color, 4);
+        /* RT_COLOR_MATERIAL: GL writes it into the tracked properties
+         * (appearance.c, rt_color_material_write). */
+        ctx->color_material_current = ctx->color_material;
         break;
     }
 }

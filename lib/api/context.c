@@ -224,7 +224,7 @@ static void render_state_init(struct render_state *r)
         r->global_ambient[k] = 0.2f;
     r->global_ambient[3] = 1.0f;
     for (int i = 0; i < RENDER_MAX_LIGHTS; i++) {
-        struct render_light *l = &r->lights[i];
+        struct scene_light *l = &r->lights[i];
         l->ambient[3] = 1.0f;
         /* OpenGL: light 0 is white, the others black. */
         float d = i == 0 ? 1.0f : 0.0f;

@@ -72,7 +72,7 @@ struct attrib_entry {
     RTenum texgen_mode[2];
     float texgen_object_plane[2][4];
     float texgen_eye_plane[2][4];
-    struct render_light lights[RENDER_MAX_LIGHTS];
+    struct scene_light lights[RENDER_MAX_LIGHTS];
     float global_ambient[4];
     int light_model_two_side, light_model_local_viewer;
     struct scene_fog fog;
@@ -98,7 +98,7 @@ struct list_saved_state {
     struct scene_material material;
     uint32_t texture_binding;
     int texture_2d;
-    struct render_light lights[RENDER_MAX_LIGHTS];
+    struct scene_light lights[RENDER_MAX_LIGHTS];
     float global_ambient[4];
     RTuint list_base;
     int clip_enabled[RENDER_MAX_CLIP_PLANES]; /* rtEnable(RT_CLIP_PLANEi) */
@@ -118,6 +118,7 @@ struct list_saved_state {
     struct render_visibility vis;
     RTenum polygon_mode[2];
     int polygon_offset_fill;
+    int color_material_current; /* rt_context's (n-light) */
 };
 
 struct rt_context {
@@ -201,6 +202,19 @@ struct rt_context {
 
     /* Rendering (appearance.c, frame.c). */
     struct render_state render;
+    /* The frame's light-set index of render.lights (rt_light_set_now):
+     * valid while light_set_cached, the frame's table has not restarted
+     * (light_set_serial) and the lights equal light_set_lights, so that
+     * drawing under unchanged lights costs a comparison. */
+    int light_set_cached;
+    uint32_t light_set_index;
+    uint64_t light_set_serial;
+    struct scene_light light_set_lights[RENDER_MAX_LIGHTS];
+    /* RT_COLOR_MATERIAL is on and GL has written the current colour into
+     * the tracked properties (a colour, the enable, rtColorMaterial), which
+     * ctx->material then does not hold yet (rt_color_material_write);
+     * 0 after rtPopAttrib restored the material it pushed. */
+    int color_material_current;
     struct rt_pool *pool; /* NULL until a frame needs threads */
 
     /* Statistics of the last frame or query. */
@@ -314,7 +328,18 @@ void rt_lines_block_end(struct rt_context *ctx, const char *caller);
 void rt_clip_now(const struct rt_context *ctx, struct scene_clip *clip);
 /* The fog and light model geometry drawn now is drawn under
  * (fixed_function.c), zero-filled so that equal states compare equal. */
-void rt_gl_state_now(const struct rt_context *ctx, struct scene_gl_state *gl);
+void rt_gl_state_now(struct rt_context *ctx, struct scene_gl_state *gl);
+/* The index of the lights current now in the frame's table of light sets
+ * (scene_frame_light_set), for an instance about to be added
+ * (fixed_function.c); UINT32_MAX when out of memory (the caller records
+ * the error and draws nothing). */
+uint32_t rt_light_set_now(struct rt_context *ctx);
+/* RT_COLOR_MATERIAL's write-back (appearance.c): rt_color_material_write
+ * puts the current colour into m's tracked properties while the enable
+ * is on; rt_color_material_settle does it to the context's material
+ * where the tracking ends (and, in a list, starts a segment). */
+void rt_color_material_write(const struct rt_context *ctx, struct scene_material *m);
+void rt_color_material_settle(struct rt_context *ctx, const char *caller);
 /* The raster state geometry drawn now takes (lines.c, raster_state.h). */
 void rt_raster_now(const struct rt_context *ctx, struct scene_raster *raster);
 /* Display lists (list.c).  rt_list_compiling: a list is being recorded

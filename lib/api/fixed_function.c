@@ -81,7 +81,28 @@ static void fog(const char *caller, RTenum pname, const RTfloat *params, int vec
     rt_list_state_changed(ctx, caller);
 }
 
-void rt_gl_state_now(const struct rt_context *ctx, struct scene_gl_state *gl)
+uint32_t rt_light_set_now(struct rt_context *ctx)
+{
+    const struct scene_frame *f = &ctx->scene.frame;
+    /* The table restarts when the next instance starts a new list
+     * (scene_frame_light_set): then the cached index is stale. */
+    if (ctx->light_set_cached && (f->open || f->light_sets_fresh) &&
+        ctx->light_set_serial == f->light_sets_serial &&
+        memcmp(ctx->light_set_lights, ctx->render.lights, sizeof(ctx->light_set_lights)) == 0)
+        return ctx->light_set_index;
+    uint32_t index = scene_frame_light_set(&ctx->scene.frame, ctx->render.lights);
+    if (index == UINT32_MAX) { /* the caller records the error */
+        ctx->light_set_cached = 0;
+        return index;
+    }
+    ctx->light_set_cached = 1;
+    ctx->light_set_index = index;
+    ctx->light_set_serial = f->light_sets_serial;
+    memcpy(ctx->light_set_lights, ctx->render.lights, sizeof(ctx->light_set_lights));
+    return index;
+}
+
+void rt_gl_state_now(struct rt_context *ctx, struct scene_gl_state *gl)
 {
     memset(gl, 0, sizeof(*gl));
     /* The fog parameters only while fog is enabled, so that changing them
@@ -91,6 +112,7 @@ void rt_gl_state_now(const struct rt_context *ctx, struct scene_gl_state *gl)
     gl->light_model.two_side = ctx->render.light_model_two_side;
     gl->light_model.local_viewer = ctx->render.light_model_local_viewer;
     memcpy(gl->light_model.ambient, ctx->render.global_ambient, sizeof(gl->light_model.ambient));
+    gl->light_set = rt_light_set_now(ctx);
 }
 
 void rtFogf(RTenum pname, RTfloat param)

@@ -418,6 +418,8 @@ static void set_capability(const char *caller, RTenum cap, int value)
         return;
     if (cap == RT_LIGHTING) {
         rt_list_state(ctx, value ? LIST_ENABLE : LIST_DISABLE, cap, 0, NULL, 0);
+        if (value) /* the eye-light and Whitted modes honour it from now on */
+            ctx->render.lighting_used = 1;
         if (ctx->material.lighting != (uint8_t)value) {
             ctx->material.lighting = (uint8_t)value;
             ctx->recording.material_index = -1;
@@ -432,6 +434,11 @@ static void set_capability(const char *caller, RTenum cap, int value)
         return;
     }
     rt_list_state(ctx, value ? LIST_ENABLE : LIST_DISABLE, cap, 0, NULL, 0);
+    /* Tracking ends: the tracked properties keep the current colour. */
+    if (cap == RT_COLOR_MATERIAL && !value && *flag)
+        rt_color_material_settle(ctx, caller);
+    if (cap == RT_COLOR_MATERIAL && value && !*flag)
+        ctx->color_material_current = 1; /* GL writes the colour at the enable */
     *flag = value;
     /* Clip planes are per primitive: a list's later geometry gets a
      * segment of its own (list.c). */
@@ -446,6 +453,9 @@ static void set_capability(const char *caller, RTenum cap, int value)
     /* Fog and texture generation reach a list's geometry through its
      * instance (scene/gl_state.h, list.c): a segment of its own. */
     if (cap == RT_FOG || cap == RT_TEXTURE_GEN_S || cap == RT_TEXTURE_GEN_T)
+        rt_list_state_changed(ctx, caller);
+    /* So do the light enables (scene/gl_state.h, light_set). */
+    if (cap >= RT_LIGHT0 && cap < RT_LIGHT0 + RENDER_MAX_LIGHTS)
         rt_list_state_changed(ctx, caller);
 }
 

@@ -71,6 +71,7 @@ static void save_state(const struct rt_context *ctx, struct list_saved_state *s)
     s->vis = ctx->render.vis;
     memcpy(s->polygon_mode, ctx->polygon_mode, sizeof(s->polygon_mode));
     s->polygon_offset_fill = ctx->polygon_offset_fill;
+    s->color_material_current = ctx->color_material_current;
 }
 
 static void restore_state(struct rt_context *ctx, const struct list_saved_state *s)
@@ -114,9 +115,12 @@ static void restore_state(struct rt_context *ctx, const struct list_saved_state 
     vis->offset_units = s->vis.offset_units;
     memcpy(ctx->polygon_mode, s->polygon_mode, sizeof(s->polygon_mode));
     ctx->polygon_offset_fill = s->polygon_offset_fill;
+    ctx->color_material_current = s->color_material_current;
 }
 
-static void appearance_now(const struct rt_context *ctx, struct scene_appearance *a)
+/* The appearance geometry drawn now takes; 0 when its light set could not
+ * be allocated (RT_OUT_OF_MEMORY recorded: nothing is drawn). */
+static int appearance_now(struct rt_context *ctx, struct scene_appearance *a)
 {
     a->material = ctx->material;
     a->material.texture = ctx->texture_2d ? ctx->texture_binding : 0;
@@ -128,6 +132,10 @@ static void appearance_now(const struct rt_context *ctx, struct scene_appearance
     rt_gl_state_now(ctx, &a->gl);
     a->flat = ctx->shade_model == RT_FLAT;
     rt_raster_now(ctx, &a->raster);
+    if (a->gl.light_set != UINT32_MAX)
+        return 1;
+    rt_error(ctx, RT_OUT_OF_MEMORY, "out of memory for the lights of a list's geometry");
+    return 0;
 }
 
 /* RT_COMPILE_AND_EXECUTE: notes the modelview and appearance a segment
@@ -159,7 +167,8 @@ static void capture_segment(struct rt_context *ctx)
     }
     e->segment = last->a;
     memcpy(e->m, ctx->modelview.m[ctx->modelview.depth - 1], sizeof(e->m));
-    appearance_now(ctx, &e->appearance);
+    if (!appearance_now(ctx, &e->appearance))
+        ctx->exec_count--; /* out of memory (recorded): not drawn */
 }
 
 static void list_out_of_memory(struct rt_context *ctx, const char *what)
@@ -456,8 +465,9 @@ void rt_call_list(struct rt_context *ctx, const char *caller, RTuint name)
                  caller, name);
     if (object->op_count == 0 && !in_block) {
         struct scene_appearance a;
-        appearance_now(ctx, &a);
-        instance_segment(ctx, caller, object, ctx->modelview.m[ctx->modelview.depth - 1], &a);
+        if (appearance_now(ctx, &a))
+            instance_segment(ctx, caller, object, ctx->modelview.m[ctx->modelview.depth - 1],
+                             &a);
     }
     for (uint32_t k = 0; k < object->op_count; k++) {
         const struct scene_list_op *op = &object->ops[k];
@@ -474,9 +484,9 @@ void rt_call_list(struct rt_context *ctx, const char *caller, RTuint name)
                 break;
             }
             struct scene_appearance a;
-            appearance_now(ctx, &a);
-            instance_segment(ctx, caller, scene_list_segment(object, op->a),
-                             ctx->modelview.m[ctx->modelview.depth - 1], &a);
+            if (appearance_now(ctx, &a))
+                instance_segment(ctx, caller, scene_list_segment(object, op->a),
+                                 ctx->modelview.m[ctx->modelview.depth - 1], &a);
             break;
         }
         case SCENE_OP_CALL:

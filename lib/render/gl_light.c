@@ -59,7 +59,7 @@ static float clamp01(float x)
     return x < 0.0f ? 0.0f : (x > 1.0f ? 1.0f : x);
 }
 
-float gl_spot_factor(const struct render_light *l, const float vp[3])
+float gl_spot_factor(const struct scene_light *l, const float vp[3])
 {
     float s[3] = {l->spot_direction[0], l->spot_direction[1], l->spot_direction[2]};
     vec3_normalize(s);
@@ -70,7 +70,8 @@ float gl_spot_factor(const struct render_light *l, const float vp[3])
     return cosine > 0.0f ? powf(cosine, l->spot_exponent) : 0.0f;
 }
 
-void gl_light_point_model(const struct render_state *st, const struct scene_light_model *lm,
+void gl_light_point_model(const struct scene_light lights[SCENE_MAX_LIGHTS],
+                          const struct scene_light_model *lm,
                           const struct gl_face_material *m, const float p[3], const float n[3],
                           float rgba[4])
 {
@@ -78,7 +79,7 @@ void gl_light_point_model(const struct render_state *st, const struct scene_ligh
     for (int k = 0; k < 3; k++)
         c[k] = m->emission[k] + m->ambient[k] * lm->ambient[k];
     for (int i = 0; i < RENDER_MAX_LIGHTS; i++) {
-        const struct render_light *l = &st->lights[i];
+        const struct scene_light *l = &lights[i];
         if (!l->enabled)
             continue;
         float vp[3], factor = 1.0f;

@@ -44,17 +44,18 @@ void gl_face_material(const struct scene_material *mat, int back, int color_mate
  * the eye at the origin under RT_LIGHT_MODEL_LOCAL_VIEWER.  Dot products
  * are clamped at 0; each channel of the result clamped to [0, 1]; alpha is
  * the diffuse material's (GL).  The global ambient a_cs and the local
- * viewer are the light model `lm`'s: the one current when the primitive
- * was drawn (scene/gl_state.h), not st's.
+ * viewer are the light model `lm`'s and the lights `lights`: those current
+ * when the primitive was drawn (scene/gl_state.h), not the frame's.
  */
-void gl_light_point_model(const struct render_state *st, const struct scene_light_model *lm,
+void gl_light_point_model(const struct scene_light lights[SCENE_MAX_LIGHTS],
+                          const struct scene_light_model *lm,
                           const struct gl_face_material *m, const float p[3], const float n[3],
                           float rgba[4]);
 
 /* GL's spot factor of a positional light with a cutoff other than 180
  * for a point whose unit direction to the light is vp: 0 outside the
  * cone, max(-vp . s, 0)^exponent inside (s the unit spot direction). */
-float gl_spot_factor(const struct render_light *l, const float vp[3]);
+float gl_spot_factor(const struct scene_light *l, const float vp[3]);
 
 /* GL's fog factor for fog coordinate z (docs/fog.md), clamped to [0, 1]:
  * 1 leaves the colour, 0 gives the fog colour. */

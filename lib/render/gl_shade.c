@@ -50,6 +50,9 @@ struct gl_triangle {
     uint8_t flags;         /* with TRI_COLOR_MATERIAL as inherited from the call */
     const float *call_color; /* TRI_INHERIT_COLOR: the colour at the call, else NULL */
     uint32_t provoking;
+    /* The lights the primitive was drawn under (scene/gl_state.h):
+     * looked up only when it is lit (gl_shade_hit). */
+    const struct scene_light *lights;
     float ng[3]; /* eye-space geometric normal of the counter-clockwise side */
 };
 
@@ -152,7 +155,7 @@ static void eye_normal(const struct gl_triangle *t, const float n[3], float out[
         vec3_normalize(out);
 }
 
-static void lit_colour(const struct shade_context *sc, const struct gl_triangle *t,
+static void lit_colour(const struct gl_triangle *t,
                        const float p[3], const float n_in[3], const float color[4], int back,
                        float out[4])
 {
@@ -163,7 +166,7 @@ static void lit_colour(const struct shade_context *sc, const struct gl_triangle 
             n[k] = -n[k];
     struct gl_face_material fm;
     gl_face_material(t->mat, back, (t->flags & TRI_COLOR_MATERIAL) != 0, color, &fm);
-    gl_light_point_model(sc->state, &t->inst->appearance.gl.light_model, &fm, p, n, out);
+    gl_light_point_model(t->lights, &t->inst->appearance.gl.light_model, &fm, p, n, out);
 }
 
 /*
@@ -259,11 +262,17 @@ void gl_shade_hit(const struct shade_context *sc, const struct trace_scene_hit *
                 for (int k = 0; k < 4; k++)
                     c[k] += b[i] * vertex_color(&t, t.v[i])[k];
     } else {
+        /* The frame's lights only for an instance that has no set (none
+         * could be allocated). */
+        const uint32_t set = t.inst->appearance.gl.light_set;
+        t.lights = set < sc->frame->committed_lights.count
+                       ? sc->frame->committed_lights.items[set].light
+                       : sc->state->lights;
         const int back = !is_front(&t, dir) && t.inst->appearance.gl.light_model.two_side;
         if (flat) {
             float p[3];
             eye_position(t.inst, mesh, t.provoking, p);
-            lit_colour(sc, &t, p, &mesh->normals[3 * t.provoking],
+            lit_colour(&t, p, &mesh->normals[3 * t.provoking],
                        vertex_color(&t, t.provoking), back, c);
         } else if (GL_SHADE_PER_PIXEL) {
             float p[3], n[3] = {0.0f, 0.0f, 0.0f}, col[4] = {0.0f, 0.0f, 0.0f, 0.0f};
@@ -275,12 +284,12 @@ void gl_shade_hit(const struct shade_context *sc, const struct trace_scene_hit *
                 for (int k = 0; k < 4; k++)
                     col[k] += b[i] * vertex_color(&t, t.v[i])[k];
             }
-            lit_colour(sc, &t, p, n, col, back, c);
+            lit_colour(&t, p, n, col, back, c);
         } else {
             for (int i = 0; i < 3; i++) {
                 float p[3], lit[4];
                 eye_position(t.inst, mesh, t.v[i], p);
-                lit_colour(sc, &t, p, &mesh->normals[3 * t.v[i]], vertex_color(&t, t.v[i]),
+                lit_colour(&t, p, &mesh->normals[3 * t.v[i]], vertex_color(&t, t.v[i]),
                            back, lit);
                 for (int k = 0; k < 4; k++)
                     c[k] += b[i] * lit[k];

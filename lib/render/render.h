@@ -25,28 +25,12 @@
 #include "scene/update.h"
 #include "trace/scene_traverse.h"
 
-#define RENDER_MAX_LIGHTS 8
+#define RENDER_MAX_LIGHTS SCENE_MAX_LIGHTS /* scene/gl_state.h */
 /* 16x16 pixel tiles: small enough to balance two to eight threads on
  * 640x480 (1200 tiles), large enough that the atomic counter is noise. */
 #define RENDER_TILE_SIZE 16
 
 enum render_shading { RENDER_EYE_LIGHT, RENDER_WHITTED, RENDER_FIXED_FUNCTION };
-
-struct render_light {
-    int enabled;
-    float ambient[4];
-    float diffuse[4];
-    float specular[4];
-    float position[4]; /* world (eye) space; w = 0: direction towards the light */
-    float attenuation[3]; /* constant, linear, quadratic */
-    /* Spot light (GL): the direction in eye space (transformed by the
-     * modelview's upper 3x3 at the call), exponent, cutoff in degrees
-     * (180: no spot). */
-    float spot_direction[3];
-    float spot_exponent;
-    float spot_cutoff;
-};
-
 
 /*
  * The framebuffer, which outlives frames: the last finished image, which
@@ -67,7 +51,11 @@ struct render_state {
     int max_depth;
     float clear_color[4];
     float global_ambient[4];
-    struct render_light lights[RENDER_MAX_LIGHTS];
+    /* The lights as current now (struct scene_light, scene/gl_state.h):
+     * what eye-light and Whitted frames light with and what the next
+     * primitive is drawn with; RT_FIXED_FUNCTION lights each primitive
+     * by its own set (scene_appearance.gl.light_set). */
+    struct scene_light lights[RENDER_MAX_LIGHTS];
     int viewport[4]; /* x, y, width, height */
     double projection[16];
     struct render_framebuffer fb;
@@ -80,6 +68,11 @@ struct render_state {
     int light_model_two_side;
     int light_model_local_viewer;
     struct scene_fog fog;
+    /* rtEnable(RT_LIGHTING) was called in this context: from then on the
+     * eye-light and Whitted modes honour each primitive's RT_LIGHTING as
+     * GL does (unlit: its colour); before, they light every surface, the
+     * ray tracer's look (docs/appearance.md). */
+    int lighting_used;
 };
 
 struct render_stats {

@@ -52,17 +52,17 @@ static void add_scaled(float acc[3], const float a[4], const float b[4], float s
 }
 
 static void local_whitted(const struct shade_context *sc, const struct surface *s,
-                          const float dir[3], float c[3])
+                          const float global_ambient[4], const float dir[3], float c[3])
 {
     const struct render_state *st = sc->state;
     for (int k = 0; k < 3; k++)
-        c[k] = s->mat.emission[k] + st->global_ambient[k] * s->mat.ambient[k];
+        c[k] = s->mat.emission[k] + global_ambient[k] * s->mat.ambient[k];
     float view[3] = {-dir[0], -dir[1], -dir[2]};
     vec3_normalize(view);
     float origin[3];
     shade_offset_point(s->p, s->ng, s->p_error, origin);
     for (int i = 0; i < RENDER_MAX_LIGHTS; i++) {
-        const struct render_light *light = &st->lights[i];
+        const struct scene_light *light = &st->lights[i];
         if (!light->enabled)
             continue;
         float to_light[3], shadow_dir[3], shadow_tmax, attenuation = 1.0f;
@@ -164,6 +164,11 @@ void shade_hit(const struct shade_context *sc, const float org[3], const float d
     float unit_dir[3] = {dir[0], dir[1], dir[2]};
     vec3_normalize(unit_dir);
 
+    /* GL's switches that mean something here (docs/appearance.md): the
+     * global ambient the primitive was drawn under (scene/gl_state.h), and
+     * RT_LIGHTING once the program has used it (surface.c put the colour
+     * of an unlit primitive into its diffuse material). */
+    const float *global_ambient = shade_hit_instance(sc, &hit)->appearance.gl.light_model.ambient;
     if (st->shading == RENDER_EYE_LIGHT) {
         /* A headlight at the eye, no shadows: Wald, Benthin and Slusallek's (2003) "OpenGL-like
          * ray casting".  Only the colours it reads are fetched. */
@@ -171,7 +176,9 @@ void shade_hit(const struct shade_context *sc, const float org[3], const float d
         surface_fetch_colour(sc, &hit, dir, at_hit.width, &e);
         float cosine = fabsf(vec3_dot(e.n, unit_dir));
         for (int k = 0; k < 3; k++)
-            c[k] = e.emission[k] + st->global_ambient[k] * e.ambient[k] + e.diffuse[k] * cosine;
+            c[k] = !e.lighting && st->lighting_used
+                       ? e.diffuse[k]
+                       : e.emission[k] + global_ambient[k] * e.ambient[k] + e.diffuse[k] * cosine;
         memcpy(rgba, c, sizeof(c));
         rgba[3] = 1.0f;
         return;
@@ -179,7 +186,11 @@ void shade_hit(const struct shade_context *sc, const float org[3], const float d
     struct surface s;
     surface_fetch(sc, &hit, dir, at_hit.width, &s);
 
-    local_whitted(sc, &s, unit_dir, c);
+    const int unlit = st->lighting_used && !s.mat.lighting;
+    if (unlit)
+        memcpy(c, s.mat.diffuse, sizeof(c));
+    else
+        local_whitted(sc, &s, global_ambient, unit_dir, c);
     float kr = s.mat.reflectivity, kt = s.mat.transparency;
     if (depth < st->max_depth && (kr > 0.0f || kt > 0.0f)) {
         float out[4], next_org[3], next_dir[3];

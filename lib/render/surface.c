@@ -329,14 +329,15 @@ static void hit_normals(const struct hit_triangle *t, const float dir[3], float 
 
 /* The vertex colour RT_COLOR_MATERIAL puts into the ambient and diffuse
  * material, when it is on for the triangle (as recorded or as at the
- * call); 0 when it is off. */
-static int hit_color_material(const struct hit_triangle *t, float c[4])
+ * call) or the primitive is unlit (`unlit`, see surface_fetch); 0 when
+ * neither. */
+static int hit_color_material(const struct hit_triangle *t, int unlit, float c[4])
 {
     const uint8_t flags = t->flags;
     int color_material = (flags & TRI_INHERIT_COLOR_MATERIAL)
                              ? t->inst->appearance.color_material
                              : (flags & TRI_COLOR_MATERIAL) != 0;
-    if (!color_material)
+    if (!color_material && !unlit)
         return 0;
     if (flags & TRI_INHERIT_COLOR)
         memcpy(c, t->inst->appearance.color, 4 * sizeof(float)); /* the colour at the call */
@@ -387,8 +388,14 @@ void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit 
 
     s->mat = mesh->materials[mesh->tri_material[hit->prim]];
     surface_resolve_material(&inst->appearance, &s->mat);
+    /* Unlit in the eye-light and Whitted modes (render_state.lighting_used,
+     * shade.c): the primitive shows its colour, which the ambient and
+     * diffuse material carry from here on, as under RT_COLOR_MATERIAL, so
+     * that the texture modulates it and blending takes its alpha. */
+    const int unlit = sc->state->lighting_used && !s->mat.lighting &&
+                      sc->state->shading != RENDER_FIXED_FUNCTION;
     float c[4];
-    if (hit_color_material(&t, c)) {
+    if (hit_color_material(&t, unlit, c)) {
         memcpy(s->mat.ambient, c, sizeof(c));
         memcpy(s->mat.diffuse, c, sizeof(c));
     }
@@ -423,7 +430,10 @@ void surface_fetch_colour(const struct shade_context *sc, const struct trace_sce
                                                           : m->texture_enabled;
         texture = on ? bound : 0;
     }
-    if (hit_color_material(&t, s->ambient)) {
+    s->lighting = (k & SCENE_MATERIAL_LIGHTING) ? call->lighting : m->lighting;
+    const int unlit = sc->state->lighting_used && !s->lighting &&
+                      sc->state->shading != RENDER_FIXED_FUNCTION;
+    if (hit_color_material(&t, unlit, s->ambient)) {
         memcpy(s->diffuse, s->ambient, sizeof(s->diffuse));
     } else {
         memcpy(s->ambient, (k & SCENE_MATERIAL_AMBIENT) ? call->ambient : m->ambient,

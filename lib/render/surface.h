@@ -43,6 +43,7 @@ struct surface_colour {
     float emission[4];
     float ambient[4];
     float diffuse[4];
+    int lighting; /* RT_LIGHTING as the primitive was drawn (resolved) */
 };
 
 void surface_fetch_colour(const struct shade_context *sc, const struct trace_scene_hit *hit,

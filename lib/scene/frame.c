@@ -19,6 +19,7 @@ void scene_frame_init(struct scene_frame *frame)
 void scene_frame_release(struct scene_frame *frame)
 {
     scene_immediate_release(&frame->immediate);
+    scene_light_sets_release(frame);
     rt_free(frame->pending.items);
     rt_free(frame->committed.items);
     bvh_release(&frame->top);
@@ -65,6 +66,7 @@ int scene_frame_add_instance_appearance(struct scene_frame *frame, struct scene_
     if (!frame->open) {
         frame->pending.count = 0;
         frame->open = 1;
+        scene_light_sets_restart(frame);
         if (frame->immediate.open || frame->immediate.used)
             scene_immediate_restart(&frame->immediate);
     }
@@ -85,6 +87,7 @@ void scene_frame_begin(struct scene_frame *frame)
     frame->pending.count = 0;
     frame->open = 1;
     scene_immediate_restart(&frame->immediate);
+    scene_light_sets_restart(frame);
 }
 
 void scene_frame_end(struct scene_frame *frame)
@@ -247,8 +250,12 @@ int scene_frame_prepare(struct scene_frame *frame, const struct bvh_build_params
                         uint64_t frame_number, int *toplevel_built)
 {
     *toplevel_built = 0;
-    if (frame->open)
+    if (frame->open) {
         scene_immediate_commit(frame, frame_number);
+        /* The instances' light-set indices refer to pending_lights. */
+        if (scene_light_sets_commit(frame))
+            return -1;
+    }
     if (frame->open && !lists_equal(&frame->pending, &frame->committed)) {
         mark_moved(&frame->committed, &frame->pending, frame_number);
         if (list_reserve(&frame->committed, frame->pending.count))

@@ -91,6 +91,14 @@ struct scene_immediate {
     struct scene_raster raster; /* the open segment's raster state (its instance's) */
 };
 
+/* The distinct light sets (gl_state.h) the primitives of one frame were
+ * drawn under, referenced by index from scene_gl_state.light_set. */
+struct scene_light_sets {
+    struct scene_light_set *items;
+    uint32_t *hashes; /* per item, to skip most comparisons */
+    uint32_t count, capacity;
+};
+
 struct scene_frame {
     struct scene_instance_list pending;
     int open; /* pending is the list being described */
@@ -111,6 +119,15 @@ struct scene_frame {
     uint32_t trace_instance_count;
 
     struct scene_immediate immediate;
+
+    /* The light sets of `pending`'s instances, and of `committed`'s
+     * (copied at scene_frame_prepare with the instances' appearance).
+     * light_sets_serial changes whenever pending_lights restarts, so that
+     * a caller caching an index knows when it is stale; light_sets_fresh:
+     * restarted already for the list the next instance starts. */
+    struct scene_light_sets pending_lights, committed_lights;
+    uint64_t light_sets_serial;
+    int light_sets_fresh;
 };
 
 void scene_frame_init(struct scene_frame *frame);
@@ -146,6 +163,22 @@ void scene_immediate_commit(struct scene_frame *frame, uint64_t frame_number);
 /* Drops the segments recorded and not committed (a new frame). */
 void scene_immediate_restart(struct scene_immediate *im);
 void scene_immediate_release(struct scene_immediate *im);
+
+/*
+ * The index in the frame's table of the light set `lights` (the eight as
+ * current now; disabled ones are zeroed in the entry) for an instance
+ * about to be added: equal sets share one entry.  When the last frame
+ * ended, the table restarts for the next one first.  UINT32_MAX on
+ * allocation failure (shading then takes the frame's lights).
+ * (light_set.c)
+ */
+uint32_t scene_frame_light_set(struct scene_frame *frame,
+                               const struct scene_light lights[SCENE_MAX_LIGHTS]);
+/* pending_lights restarts with the instance list (frame.c); committed
+ * takes a copy of it (scene_frame_prepare).  0, -1 on allocation failure. */
+void scene_light_sets_restart(struct scene_frame *frame);
+int scene_light_sets_commit(struct scene_frame *frame);
+void scene_light_sets_release(struct scene_frame *frame);
 
 /* Starts a new, empty list (rtBeginFrame). */
 void scene_frame_begin(struct scene_frame *frame);
