@@ -121,23 +121,29 @@ int gl_closest_drawn(const struct shade_context *sc, const float org[3], const f
             *hit = sc->primed->hit;
         } else if (!trace_scene_closest(sc->scene, org, dir, tmin, tmax, hit, sc->counters))
             return 0;
-        const struct scene_instance *inst = shade_hit_instance(sc, hit);
-        const struct scene_mesh *mesh = &inst->object->mesh;
-        const struct scene_material *m = &mesh->materials[mesh->tri_material[hit->prim]];
-        /* No culling recorded, and none taken from the call (a list's
-         * triangles that did not set the enable inherit it, mesh.h):
-         * drawn, with no more work than before. */
-        if (m->cull_face == SCENE_CULL_NONE &&
-            (!(m->inherit & SCENE_MATERIAL_CULL_ENABLE) ||
-             inst->appearance.material.cull_face == SCENE_CULL_NONE))
-            return 1;
-        struct gl_triangle t;
-        fetch_triangle(sc, hit, &t);
-        if (!culled(&t, dir))
+        if (gl_hit_drawn(sc, dir, hit))
             return 1;
         tmin = nextafterf(hit->t, INFINITY);
     }
     return 0;
+}
+
+int gl_hit_drawn(const struct shade_context *sc, const float dir[3],
+                 const struct trace_scene_hit *hit)
+{
+    const struct scene_instance *inst = shade_hit_instance(sc, hit);
+    const struct scene_mesh *mesh = &inst->object->mesh;
+    const struct scene_material *m = &mesh->materials[mesh->tri_material[hit->prim]];
+    /* No culling recorded, and none taken from the call (a list's
+     * triangles that did not set the enable inherit it, mesh.h):
+     * drawn, with no more work than before. */
+    if (m->cull_face == SCENE_CULL_NONE &&
+        (!(m->inherit & SCENE_MATERIAL_CULL_ENABLE) ||
+         inst->appearance.material.cull_face == SCENE_CULL_NONE))
+        return 1;
+    struct gl_triangle t;
+    fetch_triangle(sc, hit, &t);
+    return !culled(&t, dir);
 }
 
 /* The eye-space normal GL lights with: the recorded normal through the
