@@ -439,9 +439,26 @@ static void interleaved(void)
     render_obj();
     /* 0.2 * 0.5 + 0.5 (red); 0.2 * 0.25 + 0.25 (green); blue clamped. */
     CHECK_RGB(pixel(1, 1), 0.6f, 0.3f, 1.0f);
-    rtInterleavedArrays(RT_T4F_V4F, 0, big);
-    CHECK_ERR(RT_INVALID_ENUM);
-    CHECK(message_has("four texture coordinates"));
+    /* t4 c4 n3 v4: the same quad with homogeneous vertices (w = 2, the
+     * coordinates doubled) and q = 1: the same colour. */
+    float t4[4][15];
+    for (int i = 0; i < 4; i++) {
+        const float t[15] = {0, 0, 0, 1, 0.5f, 0.25f, 1.0f, 1.0f, 0, 0, 1,
+                             2 * ub[i].v[0], 2 * ub[i].v[1], 2 * ub[i].v[2], 2};
+        memcpy(t4[i], t, sizeof t);
+    }
+    rtInterleavedArrays(RT_T4F_C4F_N3F_V4F, 0, t4);
+    CHECK_ERR(RT_NO_ERROR);
+    rtNewObject(OBJ);
+    rtEnable(RT_LIGHTING);
+    rtEnable(RT_COLOR_MATERIAL);
+    rtDrawArrays(RT_QUADS, 0, 4);
+    rtDisable(RT_COLOR_MATERIAL);
+    rtEndObject();
+    render_obj();
+    CHECK_RGB(pixel(1, 1), 0.6f, 0.3f, 1.0f);
+    rtInterleavedArrays(RT_T4F_V4F, 0, t4);
+    CHECK_ERR(RT_NO_ERROR);
     rtInterleavedArrays(RT_FLOAT, 0, big);
     CHECK_ERR(RT_INVALID_ENUM);
     rtInterleavedArrays(RT_V3F, -4, big);

@@ -298,7 +298,13 @@ void gl_shade_hit(const struct shade_context *sc, const struct trace_scene_hit *
         vec3_normalize(ng);
         for (int i = 0; i < 3; i++)
             texture_coordinates(&t, t.v[i], coords[i]);
-        if (surface_texel(sc, hit, t.mat->texture, coords, ng, dir, width, tex))
+        /* rtTexCoord4's q, which rtTexGen of s and t leaves as it is. */
+        float q[3];
+        if (mesh->texcoord_q)
+            for (int i = 0; i < 3; i++)
+                q[i] = mesh->texcoord_q[t.v[i]];
+        if (surface_texel_q(sc, hit, t.mat->texture, coords, mesh->texcoord_q ? q : NULL, ng,
+                            dir, width, tex))
             texture_environment(t.mat, tex, c);
     }
     /* Fog as current when the primitive was drawn (scene/gl_state.h). */
