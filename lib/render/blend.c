@@ -11,9 +11,9 @@
  * triangle at exactly the same t is skipped with it.  At a see-through
  * hit every triangle at that t is a fragment (trace_scene_ties), composited
  * in GL's draw order, instance then primitive, as GL blends coplanar
- * translucent triangles one over the other; of the triangles sharing an
- * edge or vertex the ray passes through only the first counts, as GL's
- * rasterisation gives such a pixel to one of them.
+ * translucent triangles one over the other; of the neighbours of one
+ * instance sharing the edge or vertex the ray passes through only the
+ * first counts, as GL's rasterisation gives such a pixel to one of them.
  */
 #include "render/blend.h"
 
@@ -131,6 +131,29 @@ static int on_boundary(const struct trace_scene_hit *h)
     return h->u <= eps || h->v <= eps || h->u + h->v >= 1.0f - eps;
 }
 
+/* 1 when the triangles of two hits of one instance are neighbours: they
+ * share one or two vertex positions (an edge or a vertex of a mesh, drawn
+ * with shared or with repeated vertices), and are not the same triangle
+ * drawn twice (a coincident copy, which GL draws again). */
+static int neighbours(const struct shade_context *sc, const struct trace_scene_hit *a,
+                      const struct trace_scene_hit *b)
+{
+    if (a->instance != b->instance)
+        return 0;
+    const struct scene_mesh *mesh = &shade_hit_instance(sc, a)->object->mesh;
+    const uint32_t *va = &mesh->indices[3 * a->prim], *vb = &mesh->indices[3 * b->prim];
+    int shared = 0;
+    for (int i = 0; i < 3; i++) {
+        const float *p = &mesh->positions[3 * va[i]];
+        for (int j = 0; j < 3; j++)
+            if (memcmp(p, &mesh->positions[3 * vb[j]], 3 * sizeof(float)) == 0) {
+                shared++;
+                break;
+            }
+    }
+    return shared >= 1 && shared <= 2;
+}
+
 /* 1 when a clip plane the hit's triangle was drawn under removes it. */
 static int clipped(const struct shade_context *sc, const float org[3], const float dir[3],
                    const struct trace_scene_hit *hit)
@@ -150,28 +173,31 @@ struct fragment_group {
     const struct scene_raster *raster[BLEND_MAX_LAYERS]; /* the instance's */
     const struct scene_raster *state[BLEND_MAX_LAYERS];  /* blends by; NULL: copied */
     unsigned char kept[BLEND_MAX_LAYERS], stops[BLEND_MAX_LAYERS];
+    unsigned char boundary[BLEND_MAX_LAYERS]; /* an edge or vertex hit that counts */
     int count;
 };
 
 /*
  * Shades fragment i of the group: whether GL draws it (its face, its
- * clip planes, the alpha test; of the hits on a shared edge or vertex
- * only the first, as GL's rasterisation gives such a pixel to one of the
- * triangles that share it), its colour, and whether what lies behind it
- * still shows through (not `stops`).
+ * clip planes, the alpha test; of the neighbours hit on the edge or
+ * vertex they share only the first, as GL's rasterisation gives such a
+ * pixel to one of the triangles that share it), its colour, and whether
+ * what lies behind it still shows through (not `stops`).
  */
 static void shade_fragment(const struct shade_context *sc, const float org[3],
                            const float dir[3], struct shade_cone cone,
-                           struct fragment_group *g, int i, int *boundary_seen)
+                           struct fragment_group *g, int i)
 {
     const struct trace_scene_hit *hit = &g->hit[i];
     g->kept[i] = 0;
+    g->boundary[i] = 0;
     if (i > 0 && !gl_hit_drawn(sc, dir, hit))
         return;
     if (on_boundary(hit)) {
-        if (*boundary_seen)
-            return;
-        *boundary_seen = 1;
+        for (int j = 0; j < i; j++)
+            if (g->boundary[j] && neighbours(sc, &g->hit[j], hit))
+                return;
+        g->boundary[i] = 1;
     }
     if (sc->clipping && clipped(sc, org, dir, hit))
         return;
@@ -242,9 +268,8 @@ void blend_trace_primary_state(const struct shade_context *sc, const float org[3
          * than a ray composites keeps the first drawn. */
         g.count = 1 + trace_scene_ties(sc->scene, org, dir, hit, &g.hit[1],
                                        BLEND_MAX_LAYERS - 1, sc->counters);
-        int boundary_seen = 0;
         for (int i = 0; i < g.count; i++)
-            shade_fragment(sc, org, dir, cone, &g, i, &boundary_seen);
+            shade_fragment(sc, org, dir, cone, &g, i);
         /* Front to back: the last drawn lies over the others; a fragment
          * that hides what lies behind it ends the ray. */
         for (int i = g.count - 1; i >= 0; i--) {
