@@ -553,6 +553,55 @@ static void whitted_spot(void)
     CHECK_NO_ERR();
 }
 
+/* rtTexCoord4*: GL's current (s, t, r, q), kept through lists. */
+static void texcoord4(void)
+{
+    tu_section("rtTexCoord4: the current (s, t, r, q)");
+    RTfloat v[4];
+    reset();
+    rtTexCoord4f(1, 2, 3, 4);
+    rtGetFloatv(RT_CURRENT_TEXTURE_COORDS, v);
+    CHECK(v[0] == 1 && v[1] == 2 && v[2] == 3 && v[3] == 4);
+    rtTexCoord2f(5, 6); /* GL: r = 0, q = 1 */
+    rtGetFloatv(RT_CURRENT_TEXTURE_COORDS, v);
+    CHECK(v[0] == 5 && v[1] == 6 && v[2] == 0 && v[3] == 1);
+    const RTdouble d[4] = {0.5, 0.25, 0, 2};
+    const RTint iv[4] = {1, 2, 0, 3};
+    const RTshort sv[4] = {4, 5, 0, 6};
+    rtTexCoord4dv(d);
+    rtGetFloatv(RT_CURRENT_TEXTURE_COORDS, v);
+    CHECK(v[0] == 0.5f && v[1] == 0.25f && v[3] == 2);
+    rtTexCoord4iv(iv);
+    rtGetFloatv(RT_CURRENT_TEXTURE_COORDS, v);
+    CHECK(v[0] == 1 && v[1] == 2 && v[3] == 3);
+    rtTexCoord4sv(sv);
+    rtGetFloatv(RT_CURRENT_TEXTURE_COORDS, v);
+    CHECK(v[0] == 4 && v[1] == 5 && v[3] == 6);
+    rtTexCoord4i(7, 8, 9, 10);
+    rtTexCoord4s(1, 1, 1, 1);
+    rtTexCoord4d(2, 2, 2, 2);
+    rtGetFloatv(RT_CURRENT_TEXTURE_COORDS, v);
+    CHECK(v[0] == 2 && v[3] == 2);
+    CHECK_NO_ERR();
+    rtTexCoord4fv(NULL);
+    CHECK_ERR(RT_INVALID_VALUE);
+    rtTexCoord4f(0, 0, 0, NAN);
+    CHECK_ERR(RT_INVALID_VALUE);
+    /* Compiled (RT_COMPILE leaves the current value), replayed at the call. */
+    rtTexCoord2f(0, 0);
+    rtNewObject(OBJ);
+    rtTexCoord4f(1, 2, 3, 4);
+    rtEndObject();
+    rtGetFloatv(RT_CURRENT_TEXTURE_COORDS, v);
+    CHECK(v[0] == 0 && v[3] == 1);
+    rtBeginFrame();
+    rtInstantiateObject(OBJ);
+    rtGetFloatv(RT_CURRENT_TEXTURE_COORDS, v);
+    CHECK(v[0] == 1 && v[1] == 2 && v[2] == 3 && v[3] == 4);
+    rtTexCoord2f(0, 0);
+    CHECK_NO_ERR();
+}
+
 int main(void)
 {
     RTcontext ctx = tu_make_context("threads=2");
@@ -565,6 +614,7 @@ int main(void)
     errors();
     no_ops();
     interleaved();
+    texcoord4();
     texgen();
     whitted_spot();
     tu_destroy_context(ctx);

@@ -432,7 +432,7 @@ RTAPI void rtNormal3fv(const RTfloat *v);
 RTAPI void rtTexCoord2f(RTfloat s, RTfloat t);
 RTAPI void rtTexCoord2fv(const RTfloat *v);
 /* Projective texture coordinates (s, t, r, q): s / q and t / q per
- * fragment, r unused by 2D textures (docs/rtTexCoord4.md). */
+ * fragment, r unused by 2D textures (docs/primitives.md). */
 RTAPI void rtTexCoord4f(RTfloat s, RTfloat t, RTfloat r, RTfloat q);
 RTAPI void rtTexCoord4fv(const RTfloat *v);
 RTAPI void rtTexCoord4d(RTdouble s, RTdouble t, RTdouble r, RTdouble q);
