@@ -127,6 +127,71 @@ static void blending(void)
     CHECK_NO_ERR();
 }
 
+/* Coplanar translucent surfaces: GL blends each over the earlier ones in
+ * draw order (instances, then triangles); a ray meets them at one t. */
+static void coplanar(void)
+{
+    static const float red[3] = {0.9f, 0.2f, 0.1f}, green[3] = {0.1f, 0.8f, 0.3f};
+    tu_section("RT_BLEND: coplanar translucent surfaces in draw order");
+    window_camera();
+    rtEnable(RT_BLEND);
+    rtBlendFunc(RT_SRC_ALPHA, RT_ONE_MINUS_SRC_ALPHA);
+    /* One quad of two triangles: the pixels on its diagonal (x = y, where
+     * the ray meets both triangles at one t) are blended once. */
+    square(BACK, 0.0f, 16.0f, 0.0f, red, 0.5f);
+    rtBeginFrame();
+    rtInstantiateObject(BACK);
+    tu_render_float(N, N, img);
+    for (int i = 0; i < N; i++)
+        CHECK(near3(px(i, i), 0.45, 0.1, 0.05) && near3(px(i, (i + 5) % N), 0.45, 0.1, 0.05));
+    /* Two instances in one plane: the second drawn lies over the first. */
+    square(FRONT, 0.0f, 16.0f, 0.0f, green, 0.5f);
+    render_both();
+    CHECK(near3(px(8, 8), 0.5 * 0.1 + 0.25 * 0.9, 0.5 * 0.8 + 0.25 * 0.2, 0.5 * 0.3 + 0.25 * 0.1));
+    CHECK(near3(px(3, 3), 0.5 * 0.1 + 0.25 * 0.9, 0.5 * 0.8 + 0.25 * 0.2, 0.5 * 0.3 + 0.25 * 0.1));
+    rtBeginFrame();
+    rtInstantiateObject(FRONT);
+    rtInstantiateObject(BACK);
+    tu_render_float(N, N, img);
+    CHECK(near3(px(8, 8), 0.5 * 0.9 + 0.25 * 0.1, 0.5 * 0.2 + 0.25 * 0.8, 0.5 * 0.1 + 0.25 * 0.3));
+    /* Thousands of coincident quads in one object (a stability case):
+     * bounded work, the first BLEND_MAX_LAYERS (32) drawn composited,
+     * alternating red and green at alpha 1/2: the last of them (green)
+     * on top. */
+    const float black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+    rtNewObject(BACK);
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_AMBIENT, black);
+    for (int k = 0; k < 3000; k++) {
+        const float *c = k % 2 ? green : red;
+        const float diffuse[4] = {0.0f, 0.0f, 0.0f, 0.5f}, emission[4] = {c[0], c[1], c[2], 1};
+        rtMaterialfv(RT_FRONT_AND_BACK, RT_DIFFUSE, diffuse);
+        rtMaterialfv(RT_FRONT_AND_BACK, RT_EMISSION, emission);
+        rtBegin(RT_QUADS);
+        rtVertex3f(0.0f, 0.0f, 0.0f);
+        rtVertex3f(16.0f, 0.0f, 0.0f);
+        rtVertex3f(16.0f, 16.0f, 0.0f);
+        rtVertex3f(0.0f, 16.0f, 0.0f);
+        rtEnd();
+    }
+    rtEndObject();
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_EMISSION, black);
+    rtBeginFrame();
+    rtInstantiateObject(BACK);
+    tu_render_float(N, N, img);
+    /* Green over red repeated: g = (G + R / 2) / (1 - 1/4) in the limit. */
+    const double r = (0.5 * 0.1 + 0.25 * 0.9) / 0.75, g = (0.5 * 0.8 + 0.25 * 0.2) / 0.75,
+                 b = (0.5 * 0.3 + 0.25 * 0.1) / 0.75;
+    CHECK(near3(px(5, 9), r, g, b));
+    CHECK(near3(px(12, 3), r, g, b));
+    /* On the quads' diagonal each copy counts once (its two triangles
+     * share the edge), so 16 copies fill the 32 hits taken. */
+    CHECK(fabs(px(8, 8)[0] - r) < 1e-4 && fabs(px(8, 8)[1] - g) < 1e-4 &&
+          fabs(px(8, 8)[2] - b) < 1e-4);
+    rtDisable(RT_BLEND);
+    rtBlendFunc(RT_ONE, RT_ZERO);
+    CHECK_NO_ERR();
+}
+
 static void clip_planes(void)
 {
     static const float red[3] = {1.0f, 0.0f, 0.0f}, blue[3] = {0.0f, 0.0f, 1.0f};
@@ -388,6 +453,7 @@ int main(void)
      * vertex colour, white). */
     rtShadingMode(RT_EYE_LIGHT);
     blending();
+    coplanar();
     clip_planes();
     per_primitive_clip();
     state_and_errors();

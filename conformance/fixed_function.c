@@ -440,9 +440,26 @@ static void interleaved(void)
     render_obj();
     /* 0.2 * 0.5 + 0.5 (red); 0.2 * 0.25 + 0.25 (green); blue clamped. */
     CHECK_RGB(pixel(1, 1), 0.6f, 0.3f, 1.0f);
-    rtInterleavedArrays(RT_T4F_V4F, 0, big);
-    CHECK_ERR(RT_INVALID_ENUM);
-    CHECK(message_has("four texture coordinates"));
+    /* t4 c4 n3 v4: the same quad with homogeneous vertices (w = 2, the
+     * coordinates doubled) and q = 1: the same colour. */
+    float t4[4][15];
+    for (int i = 0; i < 4; i++) {
+        const float t[15] = {0, 0, 0, 1, 0.5f, 0.25f, 1.0f, 1.0f, 0, 0, 1,
+                             2 * ub[i].v[0], 2 * ub[i].v[1], 2 * ub[i].v[2], 2};
+        memcpy(t4[i], t, sizeof t);
+    }
+    rtInterleavedArrays(RT_T4F_C4F_N3F_V4F, 0, t4);
+    CHECK_ERR(RT_NO_ERROR);
+    rtNewObject(OBJ);
+    rtEnable(RT_LIGHTING);
+    rtEnable(RT_COLOR_MATERIAL);
+    rtDrawArrays(RT_QUADS, 0, 4);
+    rtDisable(RT_COLOR_MATERIAL);
+    rtEndObject();
+    render_obj();
+    CHECK_RGB(pixel(1, 1), 0.6f, 0.3f, 1.0f);
+    rtInterleavedArrays(RT_T4F_V4F, 0, t4);
+    CHECK_ERR(RT_NO_ERROR);
     rtInterleavedArrays(RT_FLOAT, 0, big);
     CHECK_ERR(RT_INVALID_ENUM);
     rtInterleavedArrays(RT_V3F, -4, big);
@@ -540,6 +557,55 @@ static void whitted_spot(void)
     CHECK_NO_ERR();
 }
 
+/* rtTexCoord4*: GL's current (s, t, r, q), kept through lists. */
+static void texcoord4(void)
+{
+    tu_section("rtTexCoord4: the current (s, t, r, q)");
+    RTfloat v[4];
+    reset();
+    rtTexCoord4f(1, 2, 3, 4);
+    rtGetFloatv(RT_CURRENT_TEXTURE_COORDS, v);
+    CHECK(v[0] == 1 && v[1] == 2 && v[2] == 3 && v[3] == 4);
+    rtTexCoord2f(5, 6); /* GL: r = 0, q = 1 */
+    rtGetFloatv(RT_CURRENT_TEXTURE_COORDS, v);
+    CHECK(v[0] == 5 && v[1] == 6 && v[2] == 0 && v[3] == 1);
+    const RTdouble d[4] = {0.5, 0.25, 0, 2};
+    const RTint iv[4] = {1, 2, 0, 3};
+    const RTshort sv[4] = {4, 5, 0, 6};
+    rtTexCoord4dv(d);
+    rtGetFloatv(RT_CURRENT_TEXTURE_COORDS, v);
+    CHECK(v[0] == 0.5f && v[1] == 0.25f && v[3] == 2);
+    rtTexCoord4iv(iv);
+    rtGetFloatv(RT_CURRENT_TEXTURE_COORDS, v);
+    CHECK(v[0] == 1 && v[1] == 2 && v[3] == 3);
+    rtTexCoord4sv(sv);
+    rtGetFloatv(RT_CURRENT_TEXTURE_COORDS, v);
+    CHECK(v[0] == 4 && v[1] == 5 && v[3] == 6);
+    rtTexCoord4i(7, 8, 9, 10);
+    rtTexCoord4s(1, 1, 1, 1);
+    rtTexCoord4d(2, 2, 2, 2);
+    rtGetFloatv(RT_CURRENT_TEXTURE_COORDS, v);
+    CHECK(v[0] == 2 && v[3] == 2);
+    CHECK_NO_ERR();
+    rtTexCoord4fv(NULL);
+    CHECK_ERR(RT_INVALID_VALUE);
+    rtTexCoord4f(0, 0, 0, NAN);
+    CHECK_ERR(RT_INVALID_VALUE);
+    /* Compiled (RT_COMPILE leaves the current value), replayed at the call. */
+    rtTexCoord2f(0, 0);
+    rtNewObject(OBJ);
+    rtTexCoord4f(1, 2, 3, 4);
+    rtEndObject();
+    rtGetFloatv(RT_CURRENT_TEXTURE_COORDS, v);
+    CHECK(v[0] == 0 && v[3] == 1);
+    rtBeginFrame();
+    rtInstantiateObject(OBJ);
+    rtGetFloatv(RT_CURRENT_TEXTURE_COORDS, v);
+    CHECK(v[0] == 1 && v[1] == 2 && v[2] == 3 && v[3] == 4);
+    rtTexCoord2f(0, 0);
+    CHECK_NO_ERR();
+}
+
 int main(void)
 {
     RTcontext ctx = tu_make_context("threads=2");
@@ -552,6 +618,7 @@ int main(void)
     errors();
     no_ops();
     interleaved();
+    texcoord4();
     texgen();
     whitted_spot();
     tu_destroy_context(ctx);

@@ -111,8 +111,9 @@ static int save(const char *path, int w, int h, const unsigned char *rgba)
 int main(int argc, char **argv)
 {
     const char *out_dir = NULL, *docs_dir = NULL;
-    const char *families[] = {"lighting", "faces", "fog", "texenv", "texgen", "per_primitive"};
-    enum { FAMILIES = 6 };
+    const char *families[] = {"lighting", "faces", "fog", "texenv", "texgen", "per_primitive",
+                              "texcoord4"};
+    enum { FAMILIES = 7 };
     unsigned char *gl, *rt, *diff, *triptych, *sheets[FAMILIES] = {NULL};
     int sheet_w = SHEET_COLUMNS * TRIPTYCH_W + (SHEET_COLUMNS - 1) * 3 * PANEL_GAP;
     int sheet_h[FAMILIES] = {0}, placed[FAMILIES] = {0};

@@ -30,7 +30,7 @@ static enum scene_record_status record_quad(struct scene_recording *rec, float z
     struct scene_material material;
     scene_material_default(&material);
     struct scene_triangle_state ts = {&material, 0, 0, 0};
-    const float normal[3] = {0, 0, 1}, color[4] = {1, 1, 1, 1}, texcoord[2] = {0, 0};
+    const float normal[3] = {0, 0, 1}, color[4] = {1, 1, 1, 1}, texcoord[4] = {0, 0, 0, 1};
     for (int i = 0; i < 4; i++) {
         double p[3] = {corners[i][0], corners[i][1], corners[i][2] + z};
         enum scene_record_status s =
@@ -103,7 +103,7 @@ static void check_list_without_context(struct scene *scene)
     struct scene_material material;
     scene_material_default(&material);
     struct scene_triangle_state ts = {&material, 0, 0, 0};
-    const float n[3] = {0, 0, 1}, c[4] = {1, 1, 1, 1}, st[2] = {0, 0};
+    const float n[3] = {0, 0, 1}, c[4] = {1, 1, 1, 1}, st[4] = {0, 0, 0, 1};
     static const double tri[3][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
     for (int pass = 0; pass < 3; pass++) {
         if (pass == 1)
@@ -171,7 +171,7 @@ int main(void)
         scene_material_default(&material);
         struct scene_triangle_state ts = {&material, 0, 0, 0};
         const double p[3] = {1, 0, 0};
-        const float n[3] = {0, 0, 1}, c[4] = {1, 1, 1, 1}, t[2] = {0, 0};
+        const float n[3] = {0, 0, 1}, c[4] = {1, 1, 1, 1}, t[4] = {0, 0, 0, 1};
         CHECK(!scene_block_vertex_is_finite(&block, p));
         CHECK(scene_record_vertex(&bad, &block, &ts, p, n, c, t) == SCENE_RECORD_NOT_FINITE);
         CHECK(bad.mesh.vertex_count == 0);

@@ -47,7 +47,7 @@ static struct scene_object *define(struct scene *scene, uint32_t name, const dou
     struct scene_material material;
     scene_material_default(&material);
     struct scene_triangle_state ts = {&material, 0, 0, 0};
-    const float n[3] = {0, 0, 1}, c[4] = {1, 1, 1, 1}, st[2] = {0, 0};
+    const float n[3] = {0, 0, 1}, c[4] = {1, 1, 1, 1}, st[4] = {0, 0, 0, 1};
     for (int i = 0; i < 3 * count; i++)
         CHECK(scene_record_vertex(&rec, &block, &ts, &tris[3 * i], n, c, st) ==
               SCENE_RECORD_OK);

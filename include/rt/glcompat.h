@@ -910,14 +910,14 @@ static inline void rtglc_RasterPos4sv(const GLshort *v) { rtRasterPos4i(v[0], v[
 #define glIndexiv RTGLC_ABSENT(glIndexiv, "glIndexiv: colour-index mode (docs/glcompat.md)")
 #define glIndexsv RTGLC_ABSENT(glIndexsv, "glIndexsv: colour-index mode (docs/glcompat.md)")
 #define glIndexubv RTGLC_ABSENT(glIndexubv, "glIndexubv: colour-index mode (docs/glcompat.md)")
-#define glTexCoord4d RTGLC_ABSENT(glTexCoord4d, "glTexCoord4d: no projective (q) texture coordinates (docs/glcompat.md)")
-#define glTexCoord4f RTGLC_ABSENT(glTexCoord4f, "glTexCoord4f: no projective (q) texture coordinates (docs/glcompat.md)")
-#define glTexCoord4i RTGLC_ABSENT(glTexCoord4i, "glTexCoord4i: no projective (q) texture coordinates (docs/glcompat.md)")
-#define glTexCoord4s RTGLC_ABSENT(glTexCoord4s, "glTexCoord4s: no projective (q) texture coordinates (docs/glcompat.md)")
-#define glTexCoord4dv RTGLC_ABSENT(glTexCoord4dv, "glTexCoord4dv: no projective (q) texture coordinates (docs/glcompat.md)")
-#define glTexCoord4fv RTGLC_ABSENT(glTexCoord4fv, "glTexCoord4fv: no projective (q) texture coordinates (docs/glcompat.md)")
-#define glTexCoord4iv RTGLC_ABSENT(glTexCoord4iv, "glTexCoord4iv: no projective (q) texture coordinates (docs/glcompat.md)")
-#define glTexCoord4sv RTGLC_ABSENT(glTexCoord4sv, "glTexCoord4sv: no projective (q) texture coordinates (docs/glcompat.md)")
+#define glTexCoord4d rtTexCoord4d
+#define glTexCoord4f rtTexCoord4f
+#define glTexCoord4i rtTexCoord4i
+#define glTexCoord4s rtTexCoord4s
+#define glTexCoord4dv rtTexCoord4dv
+#define glTexCoord4fv rtTexCoord4fv
+#define glTexCoord4iv rtTexCoord4iv
+#define glTexCoord4sv rtTexCoord4sv
 #define glIndexPointer RTGLC_ABSENT(glIndexPointer, "glIndexPointer: colour-index mode (docs/glcompat.md)")
 #define glEdgeFlagPointer RTGLC_ABSENT(glEdgeFlagPointer, "glEdgeFlagPointer: no edge-flag array (docs/glcompat.md)")
 #define glGetPointerv RTGLC_ABSENT(glGetPointerv, "glGetPointerv: state is not read back by this query (docs/glcompat.md)")

@@ -314,12 +314,12 @@ typedef struct rt_context *RTcontext;
 #define RT_N3F_V3F 0x2A25
 #define RT_C4F_N3F_V3F 0x2A26
 #define RT_T2F_V3F 0x2A27
-#define RT_T4F_V4F 0x2A28 /* refused: no projective texture coordinates */
+#define RT_T4F_V4F 0x2A28
 #define RT_T2F_C4UB_V3F 0x2A29
 #define RT_T2F_C3F_V3F 0x2A2A
 #define RT_T2F_N3F_V3F 0x2A2B
 #define RT_T2F_C4F_N3F_V3F 0x2A2C
-#define RT_T4F_C4F_N3F_V4F 0x2A2D /* refused */
+#define RT_T4F_C4F_N3F_V4F 0x2A2D
 /* Capabilities a ray tracer accepts with no effect (docs/appearance.md). */
 #define RT_DEPTH_TEST 0x0B71
 #define RT_DITHER 0x0BD0
@@ -431,6 +431,16 @@ RTAPI void rtNormal3f(RTfloat nx, RTfloat ny, RTfloat nz);
 RTAPI void rtNormal3fv(const RTfloat *v);
 RTAPI void rtTexCoord2f(RTfloat s, RTfloat t);
 RTAPI void rtTexCoord2fv(const RTfloat *v);
+/* Projective texture coordinates (s, t, r, q): s / q and t / q per
+ * fragment, r unused by 2D textures (docs/primitives.md). */
+RTAPI void rtTexCoord4f(RTfloat s, RTfloat t, RTfloat r, RTfloat q);
+RTAPI void rtTexCoord4fv(const RTfloat *v);
+RTAPI void rtTexCoord4d(RTdouble s, RTdouble t, RTdouble r, RTdouble q);
+RTAPI void rtTexCoord4dv(const RTdouble *v);
+RTAPI void rtTexCoord4i(RTint s, RTint t, RTint r, RTint q);
+RTAPI void rtTexCoord4iv(const RTint *v);
+RTAPI void rtTexCoord4s(RTshort s, RTshort t, RTshort r, RTshort q);
+RTAPI void rtTexCoord4sv(const RTshort *v);
 RTAPI void rtColor3f(RTfloat r, RTfloat g, RTfloat b);
 RTAPI void rtColor3fv(const RTfloat *v);
 RTAPI void rtColor4f(RTfloat r, RTfloat g, RTfloat b, RTfloat a);

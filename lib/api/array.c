@@ -219,15 +219,22 @@ static int attribute_is_finite(const struct client_array *a, size_t i, int compo
     return 1;
 }
 
+/* The texture coordinates checked for finiteness: s, t and, with four
+ * components, q (r has no meaning for 2D textures). */
+static int texcoord_read(const struct client_array *a)
+{
+    return a->size == 4 ? 4 : (a->size < 2 ? a->size : 2);
+}
+
 /* Reads element i's attributes, falling back to the current attribute for
  * disabled arrays (GL). */
 static void fetch_element(struct rt_context *ctx, size_t i, double p[3], float normal[3],
-                          float color[4], float texcoord[2])
+                          float color[4], float texcoord[4])
 {
     fetch_position(&ctx->vertex_array, i, p);
     memcpy(normal, ctx->current_normal, 3 * sizeof(float));
     memcpy(color, ctx->current_color, 4 * sizeof(float));
-    memcpy(texcoord, ctx->current_texcoord, 2 * sizeof(float));
+    memcpy(texcoord, ctx->current_texcoord, 4 * sizeof(float));
     if (ctx->normal_array.enabled)
         for (int c = 0; c < 3; c++)
             normal[c] = (float)fetch(&ctx->normal_array, i, c, 1);
@@ -237,8 +244,10 @@ static void fetch_element(struct rt_context *ctx, size_t i, double p[3], float n
             color[c] = fminf(fmaxf((float)fetch(&ctx->color_array, i, c, 1), 0.0f), 1.0f);
     }
     if (ctx->texcoord_array.enabled) {
-        texcoord[1] = 0.0f;
-        for (int c = 0; c < 2 && c < ctx->texcoord_array.size; c++)
+        /* GL's missing components: t = r = 0, q = 1. */
+        texcoord[1] = texcoord[2] = 0.0f;
+        texcoord[3] = 1.0f;
+        for (int c = 0; c < ctx->texcoord_array.size; c++)
             texcoord[c] = (float)fetch(&ctx->texcoord_array, i, c, 0);
     }
 }
@@ -247,7 +256,7 @@ static void fetch_element(struct rt_context *ctx, size_t i, double p[3], float n
 static int emit_element(struct rt_context *ctx, const char *caller, size_t i)
 {
     double p[3];
-    float normal[3], color[4], texcoord[2];
+    float normal[3], color[4], texcoord[4];
     fetch_element(ctx, i, p, normal, color, texcoord);
     return rt_record_vertex(ctx, caller, p, normal, color, texcoord);
 }
@@ -357,7 +366,7 @@ static void draw_indexed(struct rt_context *ctx, const char *caller, size_t coun
     }
     for (size_t e = 0; e < range; e++) {
         double p[3] = {0.0, 0.0, 0.0};
-        float normal[3], color[4], texcoord[2];
+        float normal[3], color[4], texcoord[4];
         if (used[e]) {
             fetch_element(ctx, lo + e, p, normal, color, texcoord);
         } else {
@@ -385,7 +394,7 @@ static void draw_lines(struct rt_context *ctx, const char *caller, RTenum index_
 {
     for (size_t k = 0; k < count; k++) {
         double p[3];
-        float normal[3], color[4], texcoord[2];
+        float normal[3], color[4], texcoord[4];
         fetch_element(ctx, element_index(index_type, indices, first, k), p, normal, color,
                       texcoord);
         if (rt_lines_vertex(ctx, caller, p, color)) {
@@ -407,7 +416,7 @@ static void draw(struct rt_context *ctx, const char *caller, RTenum mode, size_t
         rt_error(ctx, RT_OUT_OF_MEMORY, "%s: out of memory", caller);
         return;
     }
-    int texcoord_components = ctx->texcoord_array.size < 2 ? ctx->texcoord_array.size : 2;
+    int texcoord_components = texcoord_read(&ctx->texcoord_array);
     for (size_t k = 0; k < count; k++) {
         double p[3];
         size_t i = element_index(index_type, indices, first, k);
@@ -503,7 +512,7 @@ void rtArrayElement(RTint i)
         return;
     size_t e = (size_t)i;
     double p[3];
-    int texcoord_components = ctx->texcoord_array.size < 2 ? ctx->texcoord_array.size : 2;
+    int texcoord_components = texcoord_read(&ctx->texcoord_array);
     if (!fetch_position(&ctx->vertex_array, e, p) || !rt_vertex_is_finite(ctx, p) ||
         !attribute_is_finite(&ctx->normal_array, e, 3) ||
         !attribute_is_finite(&ctx->color_array, e, ctx->color_array.size) ||
@@ -511,13 +520,13 @@ void rtArrayElement(RTint i)
         rt_error(ctx, RT_INVALID_VALUE, "rtArrayElement(i=%d): not finite", i);
         return;
     }
-    float normal[3], color[4], texcoord[2];
+    float normal[3], color[4], texcoord[4];
     fetch_element(ctx, e, p, normal, color, texcoord);
     if (ctx->normal_array.enabled)
         rtNormal3fv(normal);
     if (ctx->color_array.enabled)
         rtColor4fv(color);
     if (ctx->texcoord_array.enabled)
-        rtTexCoord2fv(texcoord);
+        rtTexCoord4fv(texcoord);
     rt_record_vertex(ctx, "rtArrayElement", p, normal, color, texcoord);
 }

@@ -103,7 +103,7 @@ static int recorded(struct rt_context *ctx, const char *caller, enum scene_recor
 }
 
 int rt_record_vertex(struct rt_context *ctx, const char *caller, const double position[3],
-                     const float normal[3], const float color[4], const float texcoord[2])
+                     const float normal[3], const float color[4], const float texcoord[4])
 {
     struct scene_triangle_state ts = triangle_state(ctx);
     return recorded(ctx, caller,
@@ -113,7 +113,7 @@ int rt_record_vertex(struct rt_context *ctx, const char *caller, const double po
 }
 
 int rt_store_vertex(struct rt_context *ctx, const char *caller, const double position[3],
-                    const float normal[3], const float color[4], const float texcoord[2])
+                    const float normal[3], const float color[4], const float texcoord[4])
 {
     return recorded(ctx, caller,
                     scene_store_vertex(ctx->target, &ctx->block, position, normal, color,
@@ -300,8 +300,10 @@ static void set_attribute(const char *caller, enum attribute which, const float 
         }
         break;
     case ATTR_TEXCOORD:
-        memcpy(ctx->current_texcoord, src, 2 * sizeof(float));
-        rt_list_state(ctx, LIST_TEXCOORD, 0, 0, ctx->current_texcoord, 2);
+        /* GL: rtTexCoord2 sets r = 0, q = 1; rtTexCoord4 all four. */
+        for (int i = 0; i < 4; i++)
+            ctx->current_texcoord[i] = i < n ? src[i] : (i == 3 ? 1.0f : 0.0f);
+        rt_list_state(ctx, LIST_TEXCOORD, 0, 0, ctx->current_texcoord, 4);
         break;
     case ATTR_COLOR:
         for (int i = 0; i < 4; i++)
@@ -334,6 +336,64 @@ void rtTexCoord2f(RTfloat s, RTfloat t)
 void rtTexCoord2fv(const RTfloat *v)
 {
     set_attribute("rtTexCoord2fv", ATTR_TEXCOORD, v, 2);
+}
+
+/* Projective texture coordinates (s, t, r, q): GL interpolates all four
+ * and divides s and t by q per fragment (OpenGL 1.1 sec. 3.8). */
+void rtTexCoord4f(RTfloat s, RTfloat t, RTfloat r, RTfloat q)
+{
+    const float v[4] = {s, t, r, q};
+    set_attribute("rtTexCoord4f", ATTR_TEXCOORD, v, 4);
+}
+
+void rtTexCoord4fv(const RTfloat *v)
+{
+    set_attribute("rtTexCoord4fv", ATTR_TEXCOORD, v, 4);
+}
+
+void rtTexCoord4d(RTdouble s, RTdouble t, RTdouble r, RTdouble q)
+{
+    const float v[4] = {(float)s, (float)t, (float)r, (float)q};
+    set_attribute("rtTexCoord4d", ATTR_TEXCOORD, v, 4);
+}
+
+void rtTexCoord4dv(const RTdouble *v)
+{
+    float f[4];
+    if (v)
+        for (int i = 0; i < 4; i++)
+            f[i] = (float)v[i];
+    set_attribute("rtTexCoord4dv", ATTR_TEXCOORD, v ? f : NULL, 4);
+}
+
+void rtTexCoord4i(RTint s, RTint t, RTint r, RTint q)
+{
+    const float v[4] = {(float)s, (float)t, (float)r, (float)q};
+    set_attribute("rtTexCoord4i", ATTR_TEXCOORD, v, 4);
+}
+
+void rtTexCoord4iv(const RTint *v)
+{
+    float f[4];
+    if (v)
+        for (int i = 0; i < 4; i++)
+            f[i] = (float)v[i];
+    set_attribute("rtTexCoord4iv", ATTR_TEXCOORD, v ? f : NULL, 4);
+}
+
+void rtTexCoord4s(RTshort s, RTshort t, RTshort r, RTshort q)
+{
+    const float v[4] = {s, t, r, q};
+    set_attribute("rtTexCoord4s", ATTR_TEXCOORD, v, 4);
+}
+
+void rtTexCoord4sv(const RTshort *v)
+{
+    float f[4];
+    if (v)
+        for (int i = 0; i < 4; i++)
+            f[i] = v[i];
+    set_attribute("rtTexCoord4sv", ATTR_TEXCOORD, v ? f : NULL, 4);
 }
 
 void rtColor3f(RTfloat r, RTfloat g, RTfloat b)

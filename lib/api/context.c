@@ -304,6 +304,7 @@ RTcontext rtCreateContextWithReason(const char *configuration, RTsizei bufSize, 
     ctx->current_normal[2] = 1.0f;
     for (int k = 0; k < 4; k++)
         ctx->current_color[k] = 1.0f;
+    ctx->current_texcoord[3] = 1.0f; /* GL's initial (0, 0, 0, 1) */
     ctx->shade_model = RT_SMOOTH;
     /* GL's initial raster position: (0, 0, 0, 1), valid, white. */
     ctx->raster_pos[3] = 1.0f;

@@ -55,7 +55,7 @@ struct pixel_store {
  * few kilobytes); rtPopAttrib restores only the groups in the mask. */
 struct attrib_entry {
     RTbitfield mask;
-    float current_color[4], current_normal[3], current_texcoord[2];
+    float current_color[4], current_normal[3], current_texcoord[4];
     float raster_pos[4], raster_color[4];
     int raster_valid;
     struct scene_material material;
@@ -92,7 +92,7 @@ struct client_attrib_entry {
 
 /* What RT_COMPILE restores at rtEndList (list.c). */
 struct list_saved_state {
-    float normal[3], color[4], texcoord[2];
+    float normal[3], color[4], texcoord[4];
     RTenum shade_model;
     int color_material;
     struct scene_material material;
@@ -152,7 +152,7 @@ struct rt_context {
     /* Current vertex attributes and primitive state (begin_end.c). */
     float current_normal[3];
     float current_color[4];
-    float current_texcoord[2];
+    float current_texcoord[4]; /* s, t, r, q (GL) */
     RTenum shade_model;
     int color_material;
     struct scene_material material;
@@ -299,13 +299,13 @@ int rt_check_finite_d(struct rt_context *ctx, const char *caller, const double *
 /* Returns 0, -1 on allocation failure (immediate mode). */
 int rt_block_start(struct rt_context *ctx, RTenum mode);
 int rt_record_vertex(struct rt_context *ctx, const char *caller, const double position[3],
-                     const float normal[3], const float color[4], const float texcoord[2]);
+                     const float normal[3], const float color[4], const float texcoord[4]);
 /* Indexed drawing: rt_store_vertex stores a vertex without assembling;
  * rt_assemble_indexed stores the triangles completed by stream position k
  * of the block, stream position j being mesh vertex map[j].  Same return
  * convention as rt_record_vertex. */
 int rt_store_vertex(struct rt_context *ctx, const char *caller, const double position[3],
-                    const float normal[3], const float color[4], const float texcoord[2]);
+                    const float normal[3], const float color[4], const float texcoord[4]);
 int rt_assemble_indexed(struct rt_context *ctx, const char *caller, uint32_t k,
                         const uint32_t *map);
 /* Checks that a vertex would transform to finite values without storing. */

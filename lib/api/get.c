@@ -279,11 +279,9 @@ static enum value_kind state_values(const struct rt_context *ctx, RTenum pname, 
             v[i] = ctx->current_normal[i];
         *count = 3;
         return VALUE_FLOAT;
-    case RT_CURRENT_TEXTURE_COORDS: /* s, t, r = 0, q = 1 (GL) */
-        v[0] = ctx->current_texcoord[0];
-        v[1] = ctx->current_texcoord[1];
-        v[2] = 0.0;
-        v[3] = 1.0;
+    case RT_CURRENT_TEXTURE_COORDS: /* s, t, r, q (GL) */
+        for (int i = 0; i < 4; i++)
+            v[i] = ctx->current_texcoord[i];
         *count = 4;
         return VALUE_FLOAT;
     case RT_ATTRIB_STACK_DEPTH: /* attrib.c */

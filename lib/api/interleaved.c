@@ -3,9 +3,8 @@
  * interleaved.c - rtInterleavedArrays: GL 1.1's interleaved vertex array
  * formats (OpenGL 1.1 spec sec. 2.8, table 2.5), set through the ordinary
  * array pointers (array.c) after GL's checks.  The two formats with four
- * texture coordinates (RT_T4F_V4F, RT_T4F_C4F_N3F_V4F) are refused with
- * RT_INVALID_ENUM: Tracelist has no projective texture coordinates, and
- * dropping q would draw them wrong without a word.
+ * texture coordinates (RT_T4F_V4F, RT_T4F_C4F_N3F_V4F) give projective
+ * coordinates (s, t, r, q) and homogeneous vertices (x, y, z, w).
  */
 #include "api/context.h"
 #include "api/enum_names.h"
@@ -14,7 +13,8 @@
  * and the default stride. */
 struct interleaved_format {
     RTenum format;
-    int texcoords, color_size, normals, vertex_size;
+    int texcoords; /* texture coordinate components, 0 for none */
+    int color_size, normals, vertex_size;
     RTenum color_type;
     int color_offset, normal_offset, vertex_offset, stride;
 };
@@ -31,11 +31,13 @@ static const struct interleaved_format formats[] = {
     {RT_C3F_V3F, 0, 3, 0, 3, RT_FLOAT, 0, 0, 3 * F, 6 * F},
     {RT_N3F_V3F, 0, 0, 1, 3, 0, 0, 0, 3 * F, 6 * F},
     {RT_C4F_N3F_V3F, 0, 4, 1, 3, RT_FLOAT, 0, 4 * F, 7 * F, 10 * F},
-    {RT_T2F_V3F, 1, 0, 0, 3, 0, 0, 0, 2 * F, 5 * F},
-    {RT_T2F_C4UB_V3F, 1, 4, 0, 3, RT_UNSIGNED_BYTE, 2 * F, 0, 2 * F + C4UB, 5 * F + C4UB},
-    {RT_T2F_C3F_V3F, 1, 3, 0, 3, RT_FLOAT, 2 * F, 0, 5 * F, 8 * F},
-    {RT_T2F_N3F_V3F, 1, 0, 1, 3, 0, 0, 2 * F, 5 * F, 8 * F},
-    {RT_T2F_C4F_N3F_V3F, 1, 4, 1, 3, RT_FLOAT, 2 * F, 6 * F, 9 * F, 12 * F},
+    {RT_T2F_V3F, 2, 0, 0, 3, 0, 0, 0, 2 * F, 5 * F},
+    {RT_T2F_C4UB_V3F, 2, 4, 0, 3, RT_UNSIGNED_BYTE, 2 * F, 0, 2 * F + C4UB, 5 * F + C4UB},
+    {RT_T2F_C3F_V3F, 2, 3, 0, 3, RT_FLOAT, 2 * F, 0, 5 * F, 8 * F},
+    {RT_T2F_N3F_V3F, 2, 0, 1, 3, 0, 0, 2 * F, 5 * F, 8 * F},
+    {RT_T2F_C4F_N3F_V3F, 2, 4, 1, 3, RT_FLOAT, 2 * F, 6 * F, 9 * F, 12 * F},
+    {RT_T4F_V4F, 4, 0, 0, 4, 0, 0, 0, 4 * F, 8 * F},
+    {RT_T4F_C4F_N3F_V4F, 4, 4, 1, 4, RT_FLOAT, 4 * F, 8 * F, 11 * F, 15 * F},
 };
 
 void rtInterleavedArrays(RTenum format, RTsizei stride, const void *pointer)
@@ -49,11 +51,8 @@ void rtInterleavedArrays(RTenum format, RTsizei stride, const void *pointer)
             f = &formats[i];
     if (!f) {
         char b1[RT_ENUM_STRING_SIZE];
-        rt_error(ctx, RT_INVALID_ENUM, "rtInterleavedArrays(format=%s)%s",
-                 rt_enum_string(format, b1),
-                 format == RT_T4F_V4F || format == RT_T4F_C4F_N3F_V4F
-                     ? ": four texture coordinates are not supported"
-                     : "");
+        rt_error(ctx, RT_INVALID_ENUM, "rtInterleavedArrays(format=%s)",
+                 rt_enum_string(format, b1));
         return;
     }
     if (stride < 0) {
@@ -65,7 +64,7 @@ void rtInterleavedArrays(RTenum format, RTsizei stride, const void *pointer)
     /* GL: the texture coordinate, colour and normal arrays the format
      * lacks are disabled; the vertex array is enabled. */
     if (f->texcoords) {
-        rtTexCoordPointer(2, RT_FLOAT, s, base);
+        rtTexCoordPointer(f->texcoords, RT_FLOAT, s, base);
         rtEnableClientState(RT_TEXTURE_COORD_ARRAY);
     } else {
         rtDisableClientState(RT_TEXTURE_COORD_ARRAY);

@@ -348,7 +348,7 @@ static void replay_state(const struct scene_list_op *op)
         rtNormal3fv(v);
         break;
     case LIST_TEXCOORD:
-        rtTexCoord2fv(v);
+        rtTexCoord4fv(v);
         break;
     case LIST_MATERIAL:
         rtMaterialfv(op->b, op->c, v);

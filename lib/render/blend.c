@@ -7,10 +7,13 @@
  * closest-hit search with tmin just above the hit's t (the next float):
  * the same triangle, whose t for this ray is computed by the same
  * operations every time, can never be found again, and the watertight
- * test and its hit rule are untouched.  A triangle at exactly the same t
- * (a neighbour sharing the edge the ray passes through, a coincident
- * copy) is skipped with it: it is the same point, so it is clipped or
- * covered alike.
+ * test and its hit rule are untouched.  Behind an opaque first hit, a
+ * triangle at exactly the same t is skipped with it.  At a see-through
+ * hit every triangle at that t is a fragment (trace_scene_ties), composited
+ * in GL's draw order, instance then primitive, as GL blends coplanar
+ * translucent triangles one over the other; of the neighbours of one
+ * instance sharing the edge or vertex the ray passes through only the
+ * first counts, as GL's rasterisation gives such a pixel to one of them.
  */
 #include "render/blend.h"
 
@@ -20,6 +23,7 @@
 #include "render/gl_shade.h"
 #include "render/surface.h"
 #include "render/visibility.h"
+#include "trace/scene_ties.h"
 
 static float clamp01(float x)
 {
@@ -117,6 +121,104 @@ void blend_trace_primary(const struct shade_context *sc, const float org[3], con
     blend_trace_primary_state(sc, org, dir, tmax, cone, rgba, t_first, NULL);
 }
 
+/* A hit on an edge or a vertex of its triangle, to rounding: where the
+ * neighbours sharing that edge or vertex are hit at the same t too.  The
+ * tolerance covers the rounding of u, v and u + v (a few ulps of 1) and
+ * the double-precision fallback's tiny non-zero edge values. */
+static int on_boundary(const struct trace_scene_hit *h)
+{
+    const float eps = 0x1p-20f;
+    return h->u <= eps || h->v <= eps || h->u + h->v >= 1.0f - eps;
+}
+
+/* 1 when the triangles of two hits of one instance are neighbours: they
+ * share one or two vertex positions (an edge or a vertex of a mesh, drawn
+ * with shared or with repeated vertices), and are not the same triangle
+ * drawn twice (a coincident copy, which GL draws again). */
+static int neighbours(const struct shade_context *sc, const struct trace_scene_hit *a,
+                      const struct trace_scene_hit *b)
+{
+    if (a->instance != b->instance)
+        return 0;
+    const struct scene_mesh *mesh = &shade_hit_instance(sc, a)->object->mesh;
+    const uint32_t *va = &mesh->indices[3 * a->prim], *vb = &mesh->indices[3 * b->prim];
+    int shared = 0;
+    for (int i = 0; i < 3; i++) {
+        const float *p = &mesh->positions[3 * va[i]];
+        for (int j = 0; j < 3; j++)
+            if (memcmp(p, &mesh->positions[3 * vb[j]], 3 * sizeof(float)) == 0) {
+                shared++;
+                break;
+            }
+    }
+    return shared >= 1 && shared <= 2;
+}
+
+/* 1 when a clip plane the hit's triangle was drawn under removes it. */
+static int clipped(const struct shade_context *sc, const float org[3], const float dir[3],
+                   const struct trace_scene_hit *hit)
+{
+    double p[3];
+    for (int k = 0; k < 3; k++)
+        p[k] = (double)org[k] + (double)hit->t * (double)dir[k];
+    /* The planes the hit triangle was drawn under: GL clips each
+     * primitive by its own (scene/clip.h). */
+    return scene_clip_removes(&shade_hit_instance(sc, hit)->appearance.clip, p);
+}
+
+/* The fragments of one distance, in GL's draw order. */
+struct fragment_group {
+    struct trace_scene_hit hit[BLEND_MAX_LAYERS];
+    float rgba[BLEND_MAX_LAYERS][4];
+    const struct scene_raster *raster[BLEND_MAX_LAYERS]; /* the instance's */
+    const struct scene_raster *state[BLEND_MAX_LAYERS];  /* blends by; NULL: copied */
+    unsigned char kept[BLEND_MAX_LAYERS], stops[BLEND_MAX_LAYERS];
+    unsigned char boundary[BLEND_MAX_LAYERS]; /* an edge or vertex hit that counts */
+    int count;
+};
+
+/*
+ * Shades fragment i of the group: whether GL draws it (its face, its
+ * clip planes, the alpha test; of the neighbours hit on the edge or
+ * vertex they share only the first, as GL's rasterisation gives such a
+ * pixel to one of the triangles that share it), its colour, and whether
+ * what lies behind it still shows through (not `stops`).
+ */
+static void shade_fragment(const struct shade_context *sc, const float org[3],
+                           const float dir[3], struct shade_cone cone,
+                           struct fragment_group *g, int i)
+{
+    const struct trace_scene_hit *hit = &g->hit[i];
+    g->kept[i] = 0;
+    g->boundary[i] = 0;
+    if (i > 0 && !gl_hit_drawn(sc, dir, hit))
+        return;
+    if (on_boundary(hit)) {
+        for (int j = 0; j < i; j++)
+            if (g->boundary[j] && neighbours(sc, &g->hit[j], hit))
+                return;
+        g->boundary[i] = 1;
+    }
+    if (sc->clipping && clipped(sc, org, dir, hit))
+        return;
+    shade_hit(sc, org, dir, hit, cone, 0, g->rgba[i]);
+    const struct scene_raster *r = hit_raster(sc, hit);
+    g->raster[i] = r;
+    if (!sc->see_through || !scene_raster_see_through(r)) {
+        g->state[i] = NULL;
+        g->stops[i] = 1;
+        g->kept[i] = 1;
+        return;
+    }
+    if (sc->state->shading != RENDER_FIXED_FUNCTION)
+        g->rgba[i][3] = surface_alpha(sc, hit, dir, cone);
+    if (r->alpha_test && !scene_alpha_passes(r->alpha_func, clamp01(g->rgba[i][3]), r->alpha_ref))
+        return;
+    g->state[i] = r->blend ? r : NULL;
+    g->stops[i] = !r->blend || !blend_needs_destination(r->blend_src, r->blend_dst, g->rgba[i]);
+    g->kept[i] = 1;
+}
+
 void blend_trace_primary_state(const struct shade_context *sc, const float org[3],
                                const float dir[3], float tmax, struct shade_cone cone,
                                float rgba[4], float *t_first,
@@ -126,63 +228,65 @@ void blend_trace_primary_state(const struct shade_context *sc, const float org[3
     /* Each layer's blend state: GL blends a fragment by the state current
      * when its primitive was drawn; NULL or blend off: opaque. */
     const struct scene_raster *layer_state[BLEND_MAX_LAYERS];
-    int n = 0;
+    int n = 0, done = 0;
     float tmin = 0.0f;
     const int clipping = sc->clipping;
     const int see_through = sc->see_through;
+    struct fragment_group g;
     *t_first = INFINITY;
     if (first_state)
         *first_state = NULL;
-    for (;;) {
-        struct trace_scene_hit hit;
+    while (!done) {
+        struct trace_scene_hit *hit = &g.hit[0];
         /* Faces RT_CULL_FACE removes are passed as GL does not draw them. */
-        if (!gl_closest_drawn(sc, org, dir, tmin, tmax, &hit))
+        if (!gl_closest_drawn(sc, org, dir, tmin, tmax, hit))
             break;
-        tmin = nextafterf(hit.t, INFINITY);
-        if (clipping) {
-            double p[3];
-            for (int k = 0; k < 3; k++)
-                p[k] = (double)org[k] + (double)hit.t * (double)dir[k];
-            /* The planes the hit triangle was drawn under: GL clips each
-             * primitive by its own (scene/clip.h). */
-            if (scene_clip_removes(&shade_hit_instance(sc, &hit)->appearance.clip, p))
-                continue;
-        }
-        shade_hit(sc, org, dir, &hit, cone, 0, layers[n]);
-        /* A frame with neither blending nor the alpha test anywhere: the
+        tmin = nextafterf(hit->t, INFINITY);
+        const struct scene_raster *r = see_through ? hit_raster(sc, hit) : NULL;
+        /* A frame with neither blending nor the alpha test anywhere, or a
+         * surface that neither blends nor tests alpha in front: the
          * nearest kept hit, with no look-up per hit. */
-        const struct scene_raster *r = see_through ? hit_raster(sc, &hit) : NULL;
         if (!r || !scene_raster_see_through(r)) {
+            if (clipping && clipped(sc, org, dir, hit))
+                continue;
+            shade_hit(sc, org, dir, hit, cone, 0, layers[n]);
             if (n == 0) {
-                *t_first = hit.t;
+                *t_first = hit->t;
                 if (first_state)
-                    *first_state = hit_raster(sc, &hit);
+                    *first_state = hit_raster(sc, hit);
                 memcpy(rgba, layers[0], 4 * sizeof(float));
                 return;
             }
             layer_state[n++] = NULL; /* opaque: what lies behind is hidden */
             break;
         }
-        /* The fixed-function mode's colour carries GL's alpha (the
-         * colour's unlit, the diffuse material's lit, times the texture's
-         * under RT_MODULATE); the other modes take the diffuse material's. */
-        if (sc->state->shading != RENDER_FIXED_FUNCTION)
-            layers[n][3] = surface_alpha(sc, &hit, dir, cone);
-        /* GL's alpha test (OpenGL 1.5 sec. 4.1.4) on the fragment's
-         * clamped alpha: a failing surface is not drawn, so the ray goes
-         * on behind it, a cutout. */
-        if (r->alpha_test && !scene_alpha_passes(r->alpha_func, clamp01(layers[n][3]), r->alpha_ref))
-            continue;
-        if (n == 0) {
-            *t_first = hit.t;
-            if (first_state)
-                *first_state = r;
+        /* A see-through surface: every other triangle at exactly its
+         * distance (coplanar translucent surfaces) is a fragment of its
+         * own, which GL blends in the order the triangles were drawn;
+         * trace_scene_closest gave the first of them in that order.  The
+         * group is bounded: a pixel covered by more coincident triangles
+         * than a ray composites keeps the first drawn. */
+        g.count = 1 + trace_scene_ties(sc->scene, org, dir, hit, &g.hit[1],
+                                       BLEND_MAX_LAYERS - 1, sc->counters);
+        for (int i = 0; i < g.count; i++)
+            shade_fragment(sc, org, dir, cone, &g, i);
+        /* Front to back: the last drawn lies over the others; a fragment
+         * that hides what lies behind it ends the ray. */
+        for (int i = g.count - 1; i >= 0; i--) {
+            if (!g.kept[i])
+                continue;
+            if (n == 0) {
+                *t_first = g.hit[i].t;
+                if (first_state)
+                    *first_state = g.raster[i];
+            }
+            memcpy(layers[n], g.rgba[i], sizeof(layers[n]));
+            layer_state[n++] = g.state[i];
+            if (g.stops[i] || n == BLEND_MAX_LAYERS) {
+                done = 1;
+                break;
+            }
         }
-        layer_state[n] = r->blend ? r : NULL;
-        n++;
-        if (!r->blend || n == BLEND_MAX_LAYERS ||
-            !blend_needs_destination(r->blend_src, r->blend_dst, layers[n - 1]))
-            break;
     }
     /* Back to front: the clear colour, then every layer over it, as GL
      * blends surfaces drawn from the back to the front. */

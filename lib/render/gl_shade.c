@@ -124,23 +124,29 @@ int gl_closest_drawn(const struct shade_context *sc, const float org[3], const f
             *hit = sc->primed->hit;
         } else if (!trace_scene_closest(sc->scene, org, dir, tmin, tmax, hit, sc->counters))
             return 0;
-        const struct scene_instance *inst = shade_hit_instance(sc, hit);
-        const struct scene_mesh *mesh = &inst->object->mesh;
-        const struct scene_material *m = &mesh->materials[mesh->tri_material[hit->prim]];
-        /* No culling recorded, and none taken from the call (a list's
-         * triangles that did not set the enable inherit it, mesh.h):
-         * drawn, with no more work than before. */
-        if (m->cull_face == SCENE_CULL_NONE &&
-            (!(m->inherit & SCENE_MATERIAL_CULL_ENABLE) ||
-             inst->appearance.material.cull_face == SCENE_CULL_NONE))
-            return 1;
-        struct gl_triangle t;
-        fetch_triangle(sc, hit, &t);
-        if (!culled(&t, dir))
+        if (gl_hit_drawn(sc, dir, hit))
             return 1;
         tmin = nextafterf(hit->t, INFINITY);
     }
     return 0;
+}
+
+int gl_hit_drawn(const struct shade_context *sc, const float dir[3],
+                 const struct trace_scene_hit *hit)
+{
+    const struct scene_instance *inst = shade_hit_instance(sc, hit);
+    const struct scene_mesh *mesh = &inst->object->mesh;
+    const struct scene_material *m = &mesh->materials[mesh->tri_material[hit->prim]];
+    /* No culling recorded, and none taken from the call (a list's
+     * triangles that did not set the enable inherit it, mesh.h):
+     * drawn, with no more work than before. */
+    if (m->cull_face == SCENE_CULL_NONE &&
+        (!(m->inherit & SCENE_MATERIAL_CULL_ENABLE) ||
+         inst->appearance.material.cull_face == SCENE_CULL_NONE))
+        return 1;
+    struct gl_triangle t;
+    fetch_triangle(sc, hit, &t);
+    return !culled(&t, dir);
 }
 
 /* The eye-space normal GL lights with: the recorded normal through the
@@ -301,7 +307,13 @@ void gl_shade_hit(const struct shade_context *sc, const struct trace_scene_hit *
         vec3_normalize(ng);
         for (int i = 0; i < 3; i++)
             texture_coordinates(&t, t.v[i], coords[i]);
-        if (surface_texel(sc, hit, t.mat->texture, coords, ng, dir, width, tex))
+        /* rtTexCoord4's q, which rtTexGen of s and t leaves as it is. */
+        float q[3];
+        if (mesh->texcoord_q)
+            for (int i = 0; i < 3; i++)
+                q[i] = mesh->texcoord_q[t.v[i]];
+        if (surface_texel_q(sc, hit, t.mat->texture, coords, mesh->texcoord_q ? q : NULL, ng,
+                            dir, width, tex))
             texture_environment(t.mat, tex, c);
     }
     /* Fog as current when the primitive was drawn (scene/gl_state.h). */

@@ -20,6 +20,11 @@
 int gl_closest_drawn(const struct shade_context *sc, const float org[3], const float dir[3],
                      float tmin, float tmax, struct trace_scene_hit *hit);
 
+/* 1 when GL draws the camera ray's hit `hit` (travelling along dir):
+ * RT_CULL_FACE, as its triangle was drawn, does not remove its face. */
+int gl_hit_drawn(const struct shade_context *sc, const float dir[3],
+                 const struct trace_scene_hit *hit);
+
 /* The colour GL's fixed-function pipeline gives the hit `hit` of the ray
  * org + t dir whose cone is `width` wide there (shade.h), RGBA. */
 void gl_shade_hit(const struct shade_context *sc, const struct trace_scene_hit *hit,

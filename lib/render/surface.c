@@ -143,6 +143,34 @@ static float texture_lod(const struct scene_texture *tex, const struct scene_ins
 }
 
 /*
+ * GL's projective texture coordinates (OpenGL 1.1 sec. 3.8: s / q and
+ * t / q): s, t and q interpolated across the triangle and divided at the
+ * fragment.  The hit's barycentric weights are those of the triangle in
+ * space, so this is the perspective-correct interpolation GL's
+ * rasteriser makes (Heckbert and Moreton 1991, interpolation of
+ * homogeneous attributes), the projective texture mapping of Segal,
+ * Korobkin, van Widenfelt, Foran and Haeberli (1992).  The level of
+ * detail takes the map's tangent at the hit: vertex coordinates
+ * u + (s_i - u q_i) / q, whose linear interpolation has the value u and
+ * the derivatives of s / q there.  A fragment with q = 0 (s / q
+ * undefined) samples (0, 0).
+ */
+static void projective_st(const float *const vst[3], const float q[3], float b0, float b1,
+                          float b2, float st[2], float lod_st[3][2])
+{
+    const float qb = b0 * q[0] + b1 * q[1] + b2 * q[2];
+    for (int k = 0; k < 2; k++) {
+        float u = (b0 * vst[0][k] + b1 * vst[1][k] + b2 * vst[2][k]) / qb;
+        int finite = isfinite(u);
+        st[k] = finite ? u : 0.0f;
+        for (int i = 0; i < 3; i++) {
+            float l = st[k] + (vst[i][k] - st[k] * q[i]) / qb;
+            lod_st[i][k] = finite && isfinite(l) ? l : st[k];
+        }
+    }
+}
+
+/*
  * GL's MODULATE environment (OpenGL 1.1 sec. 3.8.6, table 3.19: C = Cf Ct)
  * applied before lighting to the colours that carry the surface's own
  * colour: ambient and diffuse (which RT_COLOR_MATERIAL may have replaced).
@@ -164,12 +192,22 @@ static void apply_texture(const struct shade_context *sc, const struct scene_ins
     if (!tex || !tex->texels)
         return;
     float st[2], texel[4];
-    interpolate(mesh->texcoords, 2, v, b0, b1, b2, 2, st);
     float lambda = -INFINITY; /* a magnification */
-    if (tex->min_filter != tex->mag_filter) {
-        const float *const vst[3] = {&mesh->texcoords[2 * v[0]], &mesh->texcoords[2 * v[1]],
-                                     &mesh->texcoords[2 * v[2]]};
-        lambda = texture_lod(tex, inst, mesh, v, vst, ng, dir, width);
+    const float *const vst[3] = {&mesh->texcoords[2 * v[0]], &mesh->texcoords[2 * v[1]],
+                                 &mesh->texcoords[2 * v[2]]};
+    if (mesh->texcoord_q) {
+        /* rtTexCoord4: s / q, t / q (q = 1 everywhere else, unchanged). */
+        const float q[3] = {mesh->texcoord_q[v[0]], mesh->texcoord_q[v[1]],
+                            mesh->texcoord_q[v[2]]};
+        float lod_st[3][2];
+        projective_st(vst, q, b0, b1, b2, st, lod_st);
+        const float *const lst[3] = {lod_st[0], lod_st[1], lod_st[2]};
+        if (tex->min_filter != tex->mag_filter)
+            lambda = texture_lod(tex, inst, mesh, v, lst, ng, dir, width);
+    } else {
+        interpolate(mesh->texcoords, 2, v, b0, b1, b2, 2, st);
+        if (tex->min_filter != tex->mag_filter)
+            lambda = texture_lod(tex, inst, mesh, v, vst, ng, dir, width);
     }
     scene_texture_sample_lod(tex, lambda, st[0], st[1], texel);
     for (int k = 0; k < 3; k++) {
@@ -444,6 +482,29 @@ void surface_fetch_colour(const struct shade_context *sc, const struct trace_sce
     if (texture)
         apply_texture(sc, t.inst, t.mesh, t.v, t.b0, t.b1, t.b2, s->ng, dir, width, texture,
                       s->ambient, s->diffuse);
+}
+
+int surface_texel_q(const struct shade_context *sc, const struct trace_scene_hit *hit,
+                    uint32_t name, const float vertex_st[3][2], const float vertex_q[3],
+                    const float ng[3], const float dir[3], float width, float texel[4])
+{
+    if (!vertex_q)
+        return surface_texel(sc, hit, name, vertex_st, ng, dir, width, texel);
+    const struct scene_texture *tex = scene_textures_lookup(sc->textures, name);
+    if (!tex || !tex->texels)
+        return 0;
+    const struct scene_instance *inst = shade_hit_instance(sc, hit);
+    const struct scene_mesh *mesh = &inst->object->mesh;
+    const uint32_t *v = &mesh->indices[3 * hit->prim];
+    const float *const vst[3] = {vertex_st[0], vertex_st[1], vertex_st[2]};
+    float st[2], lod_st[3][2];
+    projective_st(vst, vertex_q, 1.0f - hit->u - hit->v, hit->u, hit->v, st, lod_st);
+    const float *const lst[3] = {lod_st[0], lod_st[1], lod_st[2]};
+    float lambda = -INFINITY;
+    if (tex->min_filter != tex->mag_filter)
+        lambda = texture_lod(tex, inst, mesh, v, lst, ng, dir, width);
+    scene_texture_sample_lod(tex, lambda, st[0], st[1], texel);
+    return 1;
 }
 
 int surface_texel(const struct shade_context *sc, const struct trace_scene_hit *hit,

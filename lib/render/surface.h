@@ -59,4 +59,11 @@ int surface_texel(const struct shade_context *sc, const struct trace_scene_hit *
                   uint32_t name, const float vertex_st[3][2], const float ng[3],
                   const float dir[3], float width, float texel[4]);
 
+/* The same with GL's projective coordinates: vertex_q holds the three
+ * vertices' q (rtTexCoord4), s / q and t / q are sampled; NULL: q = 1,
+ * exactly surface_texel. */
+int surface_texel_q(const struct shade_context *sc, const struct trace_scene_hit *hit,
+                    uint32_t name, const float vertex_st[3][2], const float vertex_q[3],
+                    const float ng[3], const float dir[3], float width, float texel[4]);
+
 #endif

@@ -39,6 +39,8 @@ static int same_mesh(const struct scene_mesh *a, const struct scene_mesh *b)
            memcmp(a->normals, b->normals, 3 * v * sizeof(float)) == 0 &&
            memcmp(a->colors, b->colors, 4 * v * sizeof(float)) == 0 &&
            memcmp(a->texcoords, b->texcoords, 2 * v * sizeof(float)) == 0 &&
+           !a->texcoord_q == !b->texcoord_q &&
+           (!a->texcoord_q || memcmp(a->texcoord_q, b->texcoord_q, v * sizeof(float)) == 0) &&
            memcmp(a->tri_provoking, b->tri_provoking, t * sizeof(uint32_t)) == 0 &&
            memcmp(a->tri_material, b->tri_material, t * sizeof(uint16_t)) == 0 &&
            memcmp(a->tri_flags, b->tri_flags, t * sizeof(uint8_t)) == 0 &&

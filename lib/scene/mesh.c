@@ -42,6 +42,7 @@ void scene_mesh_release(struct scene_mesh *mesh)
     rt_free(mesh->normals);
     rt_free(mesh->colors);
     rt_free(mesh->texcoords);
+    rt_free(mesh->texcoord_q);
     rt_free(mesh->indices);
     rt_free(mesh->tri_provoking);
     rt_free(mesh->tri_material);
@@ -83,7 +84,8 @@ int scene_mesh_reserve_vertices(struct scene_mesh *mesh, uint32_t extra)
     if (grow((void **)&mesh->positions, cap, 3 * sizeof(float)) ||
         grow((void **)&mesh->normals, cap, 3 * sizeof(float)) ||
         grow((void **)&mesh->colors, cap, 4 * sizeof(float)) ||
-        grow((void **)&mesh->texcoords, cap, 2 * sizeof(float)))
+        grow((void **)&mesh->texcoords, cap, 2 * sizeof(float)) ||
+        (mesh->texcoord_q && grow((void **)&mesh->texcoord_q, cap, sizeof(float))))
         return -1;
     mesh->vertex_capacity = cap;
     return 0;

@@ -138,6 +138,11 @@ struct scene_mesh {
     float *normals;   /* 3 per vertex, not normalised */
     float *colors;    /* 4 per vertex */
     float *texcoords; /* 2 per vertex */
+    /* NULL, or 1 per vertex (vertex_capacity of them): q of GL's
+     * (s, t, r, q) from rtTexCoord4, allocated when the first vertex with
+     * q != 1 is stored; GL divides s and t by the interpolated q per
+     * fragment.  r has no meaning for 2D textures and is not kept. */
+    float *texcoord_q;
 
     uint32_t tri_count;
     uint32_t tri_capacity;

@@ -85,12 +85,22 @@ static enum scene_record_status out_of_memory(struct scene_recording *rec)
 static enum scene_record_status store(struct scene_recording *rec,
                                       const struct scene_block *block, const double position[3],
                                       const float normal[3], const float color[4],
-                                      const float texcoord[2])
+                                      const float texcoord[4])
 {
     struct scene_mesh *mesh = &rec->mesh;
     float pf[3];
     if (!transform(block, position, pf))
         return SCENE_RECORD_NOT_FINITE;
+    /* The first q other than 1: from here on the mesh keeps q, the
+     * vertices before it having GL's default q = 1. */
+    if (texcoord[3] != 1.0f && !mesh->texcoord_q) {
+        float *q = rt_realloc_array(NULL, mesh->vertex_capacity, sizeof(float));
+        if (!q)
+            return out_of_memory(rec);
+        for (uint32_t i = 0; i < mesh->vertex_count; i++)
+            q[i] = 1.0f;
+        mesh->texcoord_q = q;
+    }
     uint32_t v = mesh->vertex_count++;
     memcpy(&mesh->positions[3 * v], pf, sizeof(pf));
     const double *nm = block->normal_matrix;
@@ -99,6 +109,8 @@ static enum scene_record_status store(struct scene_recording *rec,
             (float)(nm[r] * normal[0] + nm[3 + r] * normal[1] + nm[6 + r] * normal[2]);
     memcpy(&mesh->colors[4 * v], color, 4 * sizeof(float));
     memcpy(&mesh->texcoords[2 * v], texcoord, 2 * sizeof(float));
+    if (mesh->texcoord_q)
+        mesh->texcoord_q[v] = texcoord[3];
     return SCENE_RECORD_OK;
 }
 
@@ -122,7 +134,7 @@ enum scene_record_status scene_record_vertex(struct scene_recording *rec,
                                              struct scene_block *block,
                                              const struct scene_triangle_state *ts,
                                              const double position[3], const float normal[3],
-                                             const float color[4], const float texcoord[2])
+                                             const float color[4], const float texcoord[4])
 {
     struct scene_mesh *mesh = &rec->mesh;
     /* Acquire everything this vertex can need before storing anything. */
@@ -142,7 +154,7 @@ enum scene_record_status scene_record_vertex(struct scene_recording *rec,
 enum scene_record_status scene_store_vertex(struct scene_recording *rec,
                                             const struct scene_block *block,
                                             const double position[3], const float normal[3],
-                                            const float color[4], const float texcoord[2])
+                                            const float color[4], const float texcoord[4])
 {
     if (scene_mesh_reserve_vertices(&rec->mesh, 1))
         return out_of_memory(rec);

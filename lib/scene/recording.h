@@ -169,7 +169,7 @@ enum scene_record_status scene_record_vertex(struct scene_recording *rec,
                                              struct scene_block *block,
                                              const struct scene_triangle_state *ts,
                                              const double position[3], const float normal[3],
-                                             const float color[4], const float texcoord[2]);
+                                             const float color[4], const float texcoord[4]);
 
 /* Indexed drawing: scene_store_vertex stores a vertex without assembling;
  * scene_assemble_indexed stores the triangles completed by stream
@@ -177,7 +177,7 @@ enum scene_record_status scene_record_vertex(struct scene_recording *rec,
 enum scene_record_status scene_store_vertex(struct scene_recording *rec,
                                             const struct scene_block *block,
                                             const double position[3], const float normal[3],
-                                            const float color[4], const float texcoord[2]);
+                                            const float color[4], const float texcoord[4]);
 enum scene_record_status scene_assemble_indexed(struct scene_recording *rec,
                                                 const struct scene_block *block,
                                                 const struct scene_triangle_state *ts,

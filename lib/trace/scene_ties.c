@@ -1,0 +1,121 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * scene_ties.c - the hits at one distance, in draw order (scene_ties.h).
+ *
+ * A plain depth-first walk of the binary top level and of each object's
+ * binary BVH with the ray's interval shrunk to the single value t: a box
+ * is entered when trace_box accepts [t, t], a triangle kept when
+ * trace_triangle finds it with t <= t' < next float above t, i.e. at t.
+ * These are the tests the closest-hit walk makes (trace.h: every kernel
+ * gives trace_triangle's answer), so the set of triangles at t is the
+ * same for both.  No order of visits is needed: the hits are kept in a
+ * small array sorted by (instance, prim).
+ */
+#include "trace/scene_ties.h"
+
+#include <math.h>
+
+/* The sorted insertion of one candidate into out[0..*n), keeping the max
+ * smallest keys. */
+static void keep(struct trace_scene_hit *out, int *n, int max, const struct trace_scene_hit *h)
+{
+    int i = *n;
+    if (i == max) {
+        const struct trace_scene_hit *last = &out[max - 1];
+        if (h->instance > last->instance ||
+            (h->instance == last->instance && h->prim >= last->prim))
+            return;
+        i--;
+    } else {
+        (*n)++;
+    }
+    while (i > 0 && (out[i - 1].instance > h->instance ||
+                     (out[i - 1].instance == h->instance && out[i - 1].prim > h->prim))) {
+        out[i] = out[i - 1];
+        i--;
+    }
+    out[i] = *h;
+}
+
+/* Every triangle of one object the ray meets at exactly t. */
+static void object_ties(const struct trace_object_view *view, const struct trace_ray *o_ray,
+                        float t, uint32_t index, const struct trace_scene_hit *after,
+                        struct trace_scene_hit *out, int *n, int max,
+                        struct trace_scene_counters *counters)
+{
+    const struct bvh *bvh = view->bvh;
+    if (!bvh || bvh->node_count == 0)
+        return;
+    const float limit = nextafterf(t, INFINITY);
+    uint32_t stack[BVH_MAX_DEPTH + 1];
+    int sp = 0;
+    stack[sp++] = 0;
+    while (sp > 0) {
+        const struct bvh_node *node = &bvh->nodes[stack[--sp]];
+        float t_entry;
+        counters->object.node_tests++;
+        if (!trace_box(o_ray, node->aabb_min, node->aabb_max, t, &t_entry))
+            continue;
+        if (!node->count) {
+            stack[sp++] = node->first;
+            stack[sp++] = node->first + 1;
+            continue;
+        }
+        for (uint32_t i = 0; i < node->count; i++) {
+            const uint32_t slot = node->first + i;
+            const float *v = &view->tri[9 * (size_t)slot];
+            struct trace_scene_hit h;
+            counters->object.triangle_tests++;
+            if (!trace_triangle(o_ray, v, v + 3, v + 6, limit, &h.t, &h.u, &h.v) || h.t != t)
+                continue;
+            h.prim = bvh->prim_index[slot];
+            h.instance = index;
+            if (index == after->instance && h.prim <= after->prim)
+                continue;
+            keep(out, n, max, &h);
+        }
+    }
+}
+
+int trace_scene_ties(const struct trace_scene *scene, const float org[3], const float dir[3],
+                     const struct trace_scene_hit *after, struct trace_scene_hit *out, int max,
+                     struct trace_scene_counters *counters)
+{
+    const struct bvh *top = scene->top;
+    const float t = after->t;
+    if (max <= 0 || !top || top->node_count == 0 || !isfinite(t))
+        return 0;
+    struct trace_ray world;
+    trace_ray_init(&world, org, dir, t);
+    int n = 0;
+    uint32_t stack[BVH_MAX_DEPTH + 1];
+    int sp = 0;
+    stack[sp++] = 0;
+    while (sp > 0) {
+        const struct bvh_node *node = &top->nodes[stack[--sp]];
+        float t_entry;
+        counters->top_node_tests++;
+        if (!trace_box(&world, node->aabb_min, node->aabb_max, t, &t_entry))
+            continue;
+        if (!node->count) {
+            stack[sp++] = node->first;
+            stack[sp++] = node->first + 1;
+            continue;
+        }
+        for (uint32_t i = 0; i < node->count; i++) {
+            const uint32_t index = top->prim_index[node->first + i];
+            /* Instances before the one of `after` hold nothing after it. */
+            if (index < after->instance)
+                continue;
+            const struct trace_instance *inst = &scene->instances[index];
+            struct trace_object_view view = {NULL, NULL, NULL, NULL};
+            struct trace_ray o_ray;
+            counters->instance_tests++;
+            if (!scene->acquire(scene->user, inst->object, &view) ||
+                !trace_scene_object_ray(inst, org, dir, t, &world, &o_ray))
+                continue;
+            object_ties(&view, &o_ray, t, index, after, out, &n, max, counters);
+        }
+    }
+    return n;
+}
