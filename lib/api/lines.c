@@ -27,17 +27,43 @@ static struct scene_lines *lines_target(struct rt_context *ctx)
     return &ctx->target->mesh.lines;
 }
 
-/* The mode polygons are drawn in: one mode for both faces (the front
- * face's when they differ; docs/lines.md). */
+/*
+ * The mode polygons of this block are turned into lines or points in when
+ * they are recorded, or RT_FILL when they are recorded as triangles.
+ * GL picks the mode per polygon by the face it shows in window space
+ * (OpenGL 2.1 sec. 3.5.4, after culling, sec. 3.5.1), which only the
+ * frame knows.  Recorded as lines or points here (invisible to rays, as
+ * lines are) when both faces are in the same mode other than RT_FILL,
+ * known now (not taken from the caller of a list), and no culling is
+ * known to be on.  Otherwise the polygons are triangles that keep both
+ * modes in their material, with their edge flags: camera rays pass the
+ * faces not filled (render/gl_shade.c) and render/raster_polygons.c
+ * draws the edges or vertices of the others, each polygon in the mode of
+ * the face it shows, culled first.  (A list that sets its own mode but
+ * takes RT_CULL_FACE from its caller so keeps lines that the caller's
+ * culling does not remove; docs/lines.md.)
+ */
 static RTenum polygon_mode(const struct rt_context *ctx)
 {
-    return ctx->polygon_mode[0];
+    const RTenum front = ctx->polygon_mode[0], back = ctx->polygon_mode[1];
+    if (front == RT_FILL || front != back)
+        return RT_FILL;
+    const uint32_t set = ctx->recording.active ? ctx->recording.material_set
+                                               : SCENE_MATERIAL_ALL_STATE;
+    /* In a list or object: what the list has not set comes from the call
+     * (scene_material.inherit). */
+    const uint32_t modes = SCENE_MATERIAL_POLYGON_MODE_FRONT | SCENE_MATERIAL_POLYGON_MODE_BACK;
+    if ((set & modes) != modes)
+        return RT_FILL;
+    if (ctx->cull_face_enabled && (set & SCENE_MATERIAL_CULL_ENABLE))
+        return RT_FILL;
+    return front;
 }
 
 int rt_lines_block_start(struct rt_context *ctx, RTenum mode)
 {
     int line_mode = scene_lines_mode_is_valid(mode);
-    RTenum pmode = polygon_mode(ctx);
+    RTenum pmode = line_mode ? RT_FILL : polygon_mode(ctx);
     if (!line_mode && pmode == RT_FILL) {
         ctx->lines_block = 0;
         return 0;
@@ -162,14 +188,16 @@ void rtPolygonMode(RTenum face, RTenum mode)
         rt_error(ctx, RT_INVALID_ENUM, "rtPolygonMode(face=0x%x)", face);
         return;
     }
-    /* Applied even under RT_COMPILE: polygons are turned into lines or
-     * points when recorded, so the list's later polygons need the mode
-     * (rtEndList restores the caller's, list.c). */
+    /* Applied even under RT_COMPILE: the list's later polygons record
+     * the mode it set (rtEndList restores the caller's, list.c); the ones
+     * before take the caller's at rtCallList (SCENE_MATERIAL_POLYGON_MODE_*
+     * bits, list.c state_bit). */
     record(ctx, LIST_POLYGON_MODE, face, mode, NULL, 0, 0);
     if (face != RT_BACK)
         ctx->polygon_mode[0] = mode;
     if (face != RT_FRONT)
         ctx->polygon_mode[1] = mode;
+    rt_sync_fixed_function(ctx);
 }
 
 static int blend_factor_is_valid(RTenum f, int is_source)
