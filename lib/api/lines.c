@@ -60,11 +60,40 @@ static RTenum polygon_mode(const struct rt_context *ctx)
     return front;
 }
 
+/* The width and size the polygons of a triangle block take when a face
+ * is drawn as lines or points (scene_material.polygon_line_width): in a
+ * list the ones it set (0: the caller's), outside the current ones.  Kept
+ * 0 while no face can be drawn so, so that a width change does not split
+ * the materials of filled geometry. */
+static void polygon_sizes(struct rt_context *ctx)
+{
+    float width = 0.0f, size = 0.0f;
+    const uint32_t modes = SCENE_MATERIAL_POLYGON_MODE_FRONT | SCENE_MATERIAL_POLYGON_MODE_BACK;
+    const int inherited = ctx->recording.active && (ctx->recording.material_set & modes) != modes;
+    if (inherited || ctx->polygon_mode[0] != RT_FILL || ctx->polygon_mode[1] != RT_FILL) {
+        if (ctx->recording.active) {
+            width = ctx->recording.mesh.lines.width;
+            size = ctx->recording.mesh.lines.size;
+        } else {
+            width = ctx->render.vis.line_width;
+            size = ctx->render.vis.point_size;
+        }
+    }
+    if (ctx->material.polygon_line_width != width || ctx->material.polygon_point_size != size) {
+        ctx->material.polygon_line_width = width;
+        ctx->material.polygon_point_size = size;
+        ctx->recording.material_index = -1;
+        if (ctx->target) /* a draw call started its immediate block first */
+            ctx->target->material_index = -1;
+    }
+}
+
 int rt_lines_block_start(struct rt_context *ctx, RTenum mode)
 {
     int line_mode = scene_lines_mode_is_valid(mode);
     RTenum pmode = line_mode ? RT_FILL : polygon_mode(ctx);
     if (!line_mode && pmode == RT_FILL) {
+        polygon_sizes(ctx);
         ctx->lines_block = 0;
         return 0;
     }

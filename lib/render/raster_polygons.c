@@ -87,10 +87,6 @@ void raster_polygons(const struct raster_target *target, const struct scene_inst
     const struct scene_appearance *call = &inst->appearance;
     if (!raster_polygons_present(inst))
         return;
-    const long width = raster_pixels(mesh->lines.width, target->raster->line_width,
-                                     RENDER_MAX_LINE_WIDTH);
-    const long size = raster_pixels(mesh->lines.size, target->raster->point_size,
-                                    RENDER_MAX_POINT_SIZE);
     /* Triangles come in runs of one material: resolve it once per run. */
     uint32_t resolved_index = UINT32_MAX;
     struct scene_material m;
@@ -125,6 +121,10 @@ void raster_polygons(const struct raster_target *target, const struct scene_inst
             v[i].color = (flags & TRI_INHERIT_COLOR) ? call->color
                          : flat                      ? provoking
                                                      : &mesh->colors[4 * idx[i]];
+        const long width = raster_pixels(m.polygon_line_width, target->raster->line_width,
+                                         RENDER_MAX_LINE_WIDTH);
+        const long size = raster_pixels(m.polygon_point_size, target->raster->point_size,
+                                        RENDER_MAX_POINT_SIZE);
         const unsigned edges = mesh->tri_edges[t];
         for (int i = 0; i < 3; i++) {
             if (!(edges >> i & 1u))

@@ -83,6 +83,11 @@ struct scene_material {
      * is passed by camera rays (render/gl_shade.c) and drawn as its
      * boundary edges or vertices by render/raster_polygons.c. */
     uint16_t polygon_mode[2];
+    /* The line width and point size those edges and vertices take, as a
+     * list recorded them (0: the one current at the call, the instance's
+     * scene_raster) or as current when drawn outside lists; 0 while both
+     * faces are filled. */
+    float polygon_line_width, polygon_point_size;
 };
 
 #define SCENE_MATERIAL_AMBIENT 1u
