@@ -311,6 +311,87 @@ static void polygon_modes(void)
     CHECK_NO_ERR();
 }
 
+/* A counter-clockwise quad on the left, a clockwise one on the right. */
+static void two_windings(void)
+{
+    rtColor3f(1.0f, 1.0f, 1.0f);
+    rtBegin(RT_QUADS);
+    rtVertex2f(2.5f, 2.5f);
+    rtVertex2f(10.5f, 2.5f);
+    rtVertex2f(10.5f, 10.5f);
+    rtVertex2f(2.5f, 10.5f);
+    rtVertex2f(13.5f, 2.5f);
+    rtVertex2f(13.5f, 10.5f);
+    rtVertex2f(21.5f, 10.5f);
+    rtVertex2f(21.5f, 2.5f);
+    rtEnd();
+}
+
+static void per_face_object(RTenum cull)
+{
+    rtNewObject(OBJ);
+    rtPolygonMode(RT_FRONT, RT_FILL);
+    rtPolygonMode(RT_BACK, RT_LINE);
+    if (cull) {
+        rtEnable(RT_CULL_FACE);
+        rtCullFace(cull);
+    }
+    two_windings();
+    rtDisable(RT_CULL_FACE);
+    rtCullFace(RT_BACK);
+    rtPolygonMode(RT_FRONT_AND_BACK, RT_FILL);
+    rtEndObject();
+}
+
+static void polygon_modes_per_face(void)
+{
+    tu_section("rtPolygonMode per face in window space, culling, the mode at the call");
+    window_camera();
+    rtLineWidth(1.0f);
+    /* Front filled, back outlined: each quad by its own winding. */
+    per_face_object(0);
+    render_object();
+    CHECK(lit(6, 6) && lit(3, 9));            /* the front quad's inside */
+    CHECK(!lit(17, 6) && !lit(15, 8));        /* the back quad's inside ... */
+    CHECK(lit(13, 6) && lit(17, 2) && lit(21, 6)); /* ... and its outline */
+    /* Seen from behind (the x axis mirrored) the faces swap. */
+    rtBeginFrame();
+    rtTranslatef(24.0f, 0.0f, 0.0f);
+    rtScalef(-1.0f, 1.0f, 1.0f);
+    rtInstantiateObject(OBJ);
+    render();
+    rtLoadIdentity();
+    CHECK(!lit(17, 6) && lit(13, 6)); /* the first quad, now on the right, outlined */
+    CHECK(lit(6, 6));                 /* the second, now on the left, filled */
+    /* Culling comes first: back faces culled leave the front quad only;
+     * both culled leave nothing. */
+    per_face_object(RT_BACK);
+    render_object();
+    CHECK(lit(6, 6) && !lit(13, 6) && !lit(17, 2));
+    per_face_object(RT_FRONT);
+    render_object();
+    CHECK(!lit(6, 6) && !lit(2, 6) && lit(13, 6) && !lit(17, 6));
+    per_face_object(RT_FRONT_AND_BACK);
+    render_object();
+    CHECK_INT(count_lit(), 0);
+    /* An object that sets no mode takes the caller's at the call. */
+    rtNewObject(OBJ);
+    two_windings();
+    rtEndObject();
+    CHECK_INT(tu_object_triangles(OBJ), 4);
+    rtPolygonMode(RT_FRONT_AND_BACK, RT_LINE);
+    render_object();
+    CHECK(!lit(6, 6) && lit(2, 6) && !lit(17, 6) && lit(13, 6));
+    CHECK(!lit(6, 6) && !lit(5, 5)); /* no diagonal */
+    rtPolygonMode(RT_BACK, RT_FILL);
+    render_object();
+    CHECK(!lit(6, 6) && lit(2, 6) && lit(17, 6));
+    rtPolygonMode(RT_FRONT_AND_BACK, RT_FILL);
+    render_object();
+    CHECK(lit(6, 6) && lit(17, 6));
+    CHECK_NO_ERR();
+}
+
 static void strips_loops_arrays(void)
 {
     tu_section("strips, loops, colours, vertex arrays, widths recorded in objects");
@@ -458,6 +539,7 @@ int main(void)
     wide_and_points();
     hidden();
     polygon_modes();
+    polygon_modes_per_face();
     strips_loops_arrays();
     state_and_errors();
     tu_destroy_context(ctx);

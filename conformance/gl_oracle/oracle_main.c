@@ -53,6 +53,7 @@ static const struct {
     {"lines/polygon_mode_line", 1, 0.0},   {"lines/polygon_mode_point", 1, 0.0},
     {"lines/vertex_arrays", 1, 0.0},       {"clip/lines_and_points", 1, 0.0},
     {"lines/points_on_pixel_edges", 1, 0.0}, {"lines/widths_immediate", 1, 0.0},
+    {"polymode/culled_wire_and_points", 1, 0.0},
 };
 
 static void limits_of(const char *label, int *sparse, double *min_match)
@@ -201,9 +202,10 @@ int main(int argc, char **argv)
     const char *out_dir = NULL, *docs_dir = NULL;
     unsigned char *gl, *rt, *diff, *triptych, **sheets;
     int i, failures = 0, f;
-    const char *families[] = {"quadrics", "glut", "projections", "lists", "lines", "blend", "clip"};
-    const int family_count = 7;
-    int family_scenes[7] = {0, 0, 0, 0, 0, 0, 0};
+    const char *families[] = {"quadrics", "glut", "projections", "lists", "lines", "blend", "clip",
+                              "polymode"};
+    const int family_count = 8;
+    int family_scenes[8] = {0, 0, 0, 0, 0, 0, 0, 0};
     for (i = 1; i + 1 < argc; i += 2) {
         if (strcmp(argv[i], "--out") == 0)
             out_dir = argv[i + 1];

@@ -629,6 +629,12 @@ RTAPI void rtArrayElement(RTint i);
 #define RT_COLOR_BUFFER_BIT 0x00004000
 RTAPI void rtClear(RTbitfield mask);
 RTAPI void rtFlush(void);
+/* rtGetIntegerv: frames the context has ray traced (rtRenderFrame, and
+ * rtFlush / rtFinish / rtReadPixels tracing a GL frame), and RT_TRUE while
+ * the last traced image holds the GL frame described since rtClear (a
+ * buffer swap after glFlush then shows it without tracing it again). */
+#define RT_FRAMES_TRACED 0x8F98
+#define RT_FRAME_CURRENT 0x8F99
 
 /* ---- Attribute stacks and pixel storage (docs/attrib.md, docs/pixelstore.md) ---- */
 /* rtPushAttrib groups: GL's own bits (GL 1.5 table 6.5 ff.). */

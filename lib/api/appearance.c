@@ -463,6 +463,8 @@ void rt_sync_fixed_function(struct rt_context *ctx)
             m.texgen_eye_plane[i][k] = on ? ctx->texgen_eye_plane[i][k] : 0.0f;
         }
     }
+    for (int i = 0; i < 2; i++)
+        m.polygon_mode[i] = ctx->polygon_mode[i] == RT_FILL ? 0 : (uint16_t)ctx->polygon_mode[i];
     if (memcmp(&m, &ctx->material, sizeof(m)) == 0)
         return;
     ctx->material = m;

@@ -454,6 +454,7 @@ static void draw(struct rt_context *ctx, const char *caller, RTenum mode, size_t
         draw_indexed(ctx, caller, count, index_type, indices);
     else
         draw_sequential(ctx, caller, first, count);
+    scene_block_close_polygon(ctx->target, &ctx->block, (uint32_t)count);
 }
 
 void rtDrawArrays(RTenum mode, RTint first, RTsizei count)

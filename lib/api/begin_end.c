@@ -166,7 +166,10 @@ void rtEnd(void)
     /* Vertices of an incomplete last primitive stay unused (GL drops
      * them); they are not referenced by any triangle. */
     ctx->block.active = 0;
-    rt_lines_block_end(ctx, "rtEnd");
+    if (ctx->lines_block)
+        rt_lines_block_end(ctx, "rtEnd");
+    else
+        scene_block_close_polygon(ctx->target, &ctx->block, ctx->block.count);
 }
 
 static void vertex(const char *caller, double x, double y, double z)

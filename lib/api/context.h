@@ -175,6 +175,7 @@ struct rt_context {
      * rtReadPixels then render. */
     int gl_frames;
     int frame_unrendered;
+    uint64_t frames_traced; /* RT_FRAMES_TRACED */
     int normal_given; /* the application set a normal outside lists */
 
     /* Texture state (texture.c); the textures are the scene's.  A

@@ -172,6 +172,7 @@ static void render_frame_now(struct rt_context *ctx)
         rt_error(ctx, RT_OUT_OF_MEMORY, "rtRenderFrame: out of memory");
         return;
     }
+    ctx->frames_traced++;
     /* RT_AUTOMATIC's time per traversal step is this frame's tracing
      * time: the time so far less the updates before tracing, taken here
      * because render_ms is only set below (internal/automatic_cost). */
@@ -186,6 +187,10 @@ static void render_frame_now(struct rt_context *ctx)
         render_overlay_clear(&ctx->overlay);
     scene_end_frame(&ctx->scene, ctx->stats.rays, ctx->stats.node_tests + ctx->stats.triangle_tests,
                     frame_ms - ctx->stats.update_ms - ctx->stats.toplevel_ms);
+    /* A GL frame ends at the next rtClear: drawing after glFlush adds to
+     * it, and the swap that follows shows both (glut/flush_swap). */
+    if (ctx->gl_frames)
+        scene_frame_continue(&ctx->scene.frame);
     ctx->stats.render_ms = rt_now_ms() - start;
 }
 

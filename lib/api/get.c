@@ -219,6 +219,12 @@ static enum value_kind state_values(const struct rt_context *ctx, RTenum pname, 
         v[1] = RENDER_MAX_POINT_SIZE;
         *count = 2;
         return VALUE_FLOAT;
+    case RT_FRAMES_TRACED:
+        v[0] = (double)ctx->frames_traced;
+        return VALUE_INT;
+    case RT_FRAME_CURRENT:
+        v[0] = ctx->gl_frames && !ctx->frame_unrendered && ctx->frames_traced > 0;
+        return VALUE_INT;
     case RT_POLYGON_MODE:
         v[0] = ctx->polygon_mode[0];
         v[1] = ctx->polygon_mode[1];

@@ -27,18 +27,73 @@ static struct scene_lines *lines_target(struct rt_context *ctx)
     return &ctx->target->mesh.lines;
 }
 
-/* The mode polygons are drawn in: one mode for both faces (the front
- * face's when they differ; docs/lines.md). */
+/*
+ * The mode polygons of this block are turned into lines or points in when
+ * they are recorded, or RT_FILL when they are recorded as triangles.
+ * GL picks the mode per polygon by the face it shows in window space
+ * (OpenGL 2.1 sec. 3.5.4, after culling, sec. 3.5.1), which only the
+ * frame knows.  Recorded as lines or points here (invisible to rays, as
+ * lines are) when both faces are in the same mode other than RT_FILL,
+ * known now (not taken from the caller of a list), and no culling is
+ * known to be on.  Otherwise the polygons are triangles that keep both
+ * modes in their material, with their edge flags: camera rays pass the
+ * faces not filled (render/gl_shade.c) and render/raster_polygons.c
+ * draws the edges or vertices of the others, each polygon in the mode of
+ * the face it shows, culled first.  (A list that sets its own mode but
+ * takes RT_CULL_FACE from its caller so keeps lines that the caller's
+ * culling does not remove; docs/lines.md.)
+ */
 static RTenum polygon_mode(const struct rt_context *ctx)
 {
-    return ctx->polygon_mode[0];
+    const RTenum front = ctx->polygon_mode[0], back = ctx->polygon_mode[1];
+    if (front == RT_FILL || front != back)
+        return RT_FILL;
+    const uint32_t set = ctx->recording.active ? ctx->recording.material_set
+                                               : SCENE_MATERIAL_ALL_STATE;
+    /* In a list or object: what the list has not set comes from the call
+     * (scene_material.inherit). */
+    const uint32_t modes = SCENE_MATERIAL_POLYGON_MODE_FRONT | SCENE_MATERIAL_POLYGON_MODE_BACK;
+    if ((set & modes) != modes)
+        return RT_FILL;
+    if (ctx->cull_face_enabled && (set & SCENE_MATERIAL_CULL_ENABLE))
+        return RT_FILL;
+    return front;
+}
+
+/* The width and size the polygons of a triangle block take when a face
+ * is drawn as lines or points (scene_material.polygon_line_width): in a
+ * list the ones it set (0: the caller's), outside the current ones.  Kept
+ * 0 while no face can be drawn so, so that a width change does not split
+ * the materials of filled geometry. */
+static void polygon_sizes(struct rt_context *ctx)
+{
+    float width = 0.0f, size = 0.0f;
+    const uint32_t modes = SCENE_MATERIAL_POLYGON_MODE_FRONT | SCENE_MATERIAL_POLYGON_MODE_BACK;
+    const int inherited = ctx->recording.active && (ctx->recording.material_set & modes) != modes;
+    if (inherited || ctx->polygon_mode[0] != RT_FILL || ctx->polygon_mode[1] != RT_FILL) {
+        if (ctx->recording.active) {
+            width = ctx->recording.mesh.lines.width;
+            size = ctx->recording.mesh.lines.size;
+        } else {
+            width = ctx->render.vis.line_width;
+            size = ctx->render.vis.point_size;
+        }
+    }
+    if (ctx->material.polygon_line_width != width || ctx->material.polygon_point_size != size) {
+        ctx->material.polygon_line_width = width;
+        ctx->material.polygon_point_size = size;
+        ctx->recording.material_index = -1;
+        if (ctx->target) /* a draw call started its immediate block first */
+            ctx->target->material_index = -1;
+    }
 }
 
 int rt_lines_block_start(struct rt_context *ctx, RTenum mode)
 {
     int line_mode = scene_lines_mode_is_valid(mode);
-    RTenum pmode = polygon_mode(ctx);
+    RTenum pmode = line_mode ? RT_FILL : polygon_mode(ctx);
     if (!line_mode && pmode == RT_FILL) {
+        polygon_sizes(ctx);
         ctx->lines_block = 0;
         return 0;
     }
@@ -162,14 +217,16 @@ void rtPolygonMode(RTenum face, RTenum mode)
         rt_error(ctx, RT_INVALID_ENUM, "rtPolygonMode(face=0x%x)", face);
         return;
     }
-    /* Applied even under RT_COMPILE: polygons are turned into lines or
-     * points when recorded, so the list's later polygons need the mode
-     * (rtEndList restores the caller's, list.c). */
+    /* Applied even under RT_COMPILE: the list's later polygons record
+     * the mode it set (rtEndList restores the caller's, list.c); the ones
+     * before take the caller's at rtCallList (SCENE_MATERIAL_POLYGON_MODE_*
+     * bits, list.c state_bit). */
     record(ctx, LIST_POLYGON_MODE, face, mode, NULL, 0, 0);
     if (face != RT_BACK)
         ctx->polygon_mode[0] = mode;
     if (face != RT_FRONT)
         ctx->polygon_mode[1] = mode;
+    rt_sync_fixed_function(ctx);
 }
 
 static int blend_factor_is_valid(RTenum f, int is_source)

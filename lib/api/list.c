@@ -230,6 +230,9 @@ static uint32_t state_bit(enum list_state_call what, RTenum b)
         return SCENE_MATERIAL_TEX_ENV;
     case LIST_BIND_TEXTURE:
         return SCENE_MATERIAL_TEXTURE;
+    case LIST_POLYGON_MODE:
+        return (b != RT_BACK ? SCENE_MATERIAL_POLYGON_MODE_FRONT : 0u) |
+               (b != RT_FRONT ? SCENE_MATERIAL_POLYGON_MODE_BACK : 0u);
     case LIST_ENABLE:
     case LIST_DISABLE:
         switch (b) {

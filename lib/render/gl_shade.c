@@ -107,10 +107,14 @@ static int is_front(const struct gl_triangle *t, const float dir[3])
     return t->mat->front_cw ? !counter_clockwise : counter_clockwise;
 }
 
+/* Culled (RT_CULL_FACE), or drawn as lines or points by the polygon mode
+ * of the face the ray sees (render/raster_polygons.c draws those): either
+ * way GL rasterises no fragment of the triangle's interior. */
 static int culled(const struct gl_triangle *t, const float dir[3])
 {
-    unsigned face = is_front(t, dir) ? SCENE_CULL_FRONT : SCENE_CULL_BACK;
-    return (t->mat->cull_face & face) != 0;
+    const int front = is_front(t, dir);
+    unsigned face = front ? SCENE_CULL_FRONT : SCENE_CULL_BACK;
+    return (t->mat->cull_face & face) != 0 || t->mat->polygon_mode[front ? 0 : 1] != 0;
 }
 
 int gl_closest_drawn(const struct shade_context *sc, const float org[3], const float dir[3],
@@ -138,11 +142,14 @@ int gl_hit_drawn(const struct shade_context *sc, const float dir[3],
     const struct scene_mesh *mesh = &inst->object->mesh;
     const struct scene_material *m = &mesh->materials[mesh->tri_material[hit->prim]];
     /* No culling recorded, and none taken from the call (a list's
-     * triangles that did not set the enable inherit it, mesh.h):
-     * drawn, with no more work than before. */
+     * triangles that did not set the enable inherit it, mesh.h), and
+     * both faces filled: drawn, with no more work than before. */
+    const struct scene_material *c = &inst->appearance.material;
+    const uint32_t poly = SCENE_MATERIAL_POLYGON_MODE_FRONT | SCENE_MATERIAL_POLYGON_MODE_BACK;
     if (m->cull_face == SCENE_CULL_NONE &&
-        (!(m->inherit & SCENE_MATERIAL_CULL_ENABLE) ||
-         inst->appearance.material.cull_face == SCENE_CULL_NONE))
+        (!(m->inherit & SCENE_MATERIAL_CULL_ENABLE) || c->cull_face == SCENE_CULL_NONE) &&
+        (m->polygon_mode[0] | m->polygon_mode[1]) == 0 &&
+        (!(m->inherit & poly) || (c->polygon_mode[0] | c->polygon_mode[1]) == 0))
         return 1;
     struct gl_triangle t;
     fetch_triangle(sc, hit, &t);

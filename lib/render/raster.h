@@ -76,6 +76,15 @@ void raster_depth_prepare(double *depth, int width, int height);
 void raster_depth_offset(double *depth, const struct scene_raster *const *state, int width,
                          int height);
 
+struct scene_instance;
+
+/* Draws the instance's triangles whose face in window space is in
+ * rtPolygonMode RT_LINE or RT_POINT (after RT_CULL_FACE): their boundary
+ * edges or vertices (raster_polygons.c).  Filled faces are traced. */
+void raster_polygons(const struct raster_target *target, const struct scene_instance *inst);
+/* 1 when raster_polygons may draw something of the instance. */
+int raster_polygons_present(const struct scene_instance *inst);
+
 /* Rasterises the segments and points of `lines`, whose vertices are
  * mapped to eye space by object_to_eye. */
 void raster_lines(const struct raster_target *target, const struct scene_lines *lines,
@@ -96,6 +105,18 @@ void raster_vertex(const struct raster_target *target, const struct scene_lines 
 
 void raster_points(const struct raster_target *target, const struct scene_lines *lines,
                    const double object_to_eye[16]);
+
+/* One segment, its ends in eye (ea, eb) and clip (ca, cb) coordinates with
+ * their colours (flat: col_a throughout), `width` whole pixels: clipped,
+ * rasterised and depth-tested as the segments of raster_lines. */
+void raster_segment(const struct raster_target *target, const double ea[3], const double eb[3],
+                    const double ca[4], const double cb[4], const float col_a[4],
+                    const float col_b[4], int flat, long width);
+
+/* One point of `size` whole pixels at eye / clip position, as those of
+ * raster_points. */
+void raster_point(const struct raster_target *target, const double eye[3], const double clip[4],
+                  const float color[4], long size);
 
 /* Sub-pixel positions per pixel that window coordinates are snapped to
  * before points are placed: GL leaves the precision to the implementation

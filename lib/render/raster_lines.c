@@ -304,9 +304,24 @@ static void lerp4(const float *a, const float *b, double t, float out[4])
 static void draw_segment(const struct raster_target *target, const struct scene_lines *lines,
                          const struct scene_line_segment *sg, const double object_to_eye[16])
 {
-    double ea[3], eb[3], ca[4], cb[4], t0, t1;
+    double ea[3], eb[3], ca[4], cb[4];
     raster_vertex(target, lines, sg->v[0], object_to_eye, ea, ca);
     raster_vertex(target, lines, sg->v[1], object_to_eye, eb, cb);
+    /* The vertices' colours: GL's lines with lighting disabled.  Lit lines
+     * (GL lights a line's vertices like any vertex) would compute the
+     * vertex colours here, from a normal and material stored with them. */
+    const int flat = (sg->flags & SCENE_LINE_FLAT) != 0;
+    const float *col_a = &lines->colors[4 * (flat ? sg->provoking : sg->v[0])];
+    const float *col_b = &lines->colors[4 * (flat ? sg->provoking : sg->v[1])];
+    raster_segment(target, ea, eb, ca, cb, col_a, col_b, flat,
+                   raster_pixels(sg->width, target->raster->line_width, RENDER_MAX_LINE_WIDTH));
+}
+
+void raster_segment(const struct raster_target *target, const double ea[3], const double eb[3],
+                    const double ca[4], const double cb[4], const float col_a[4],
+                    const float col_b[4], int flat, long width)
+{
+    double t0, t1;
     if (!clip_segment(target->clip, ea, eb, ca, cb, &t0, &t1))
         return;
     double c0[4], c1[4];
@@ -321,19 +336,15 @@ static void draw_segment(const struct raster_target *target, const struct scene_
     raster_to_window(target, c1, seg.b);
     seg.wa = c0[3];
     seg.wb = c1[3];
-    /* The vertices' colours: GL's lines with lighting disabled.  Lit lines
-     * (GL lights a line's vertices like any vertex) would compute the
-     * vertex colours here, from a normal and material stored with them. */
-    const float *col_a = &lines->colors[4 * sg->v[0]], *col_b = &lines->colors[4 * sg->v[1]];
-    seg.flat = (sg->flags & SCENE_LINE_FLAT) != 0;
+    seg.flat = flat;
     if (seg.flat) {
-        memcpy(seg.ca, &lines->colors[4 * sg->provoking], sizeof(seg.ca));
+        memcpy(seg.ca, col_a, sizeof(seg.ca));
         memcpy(seg.cb, seg.ca, sizeof(seg.cb));
     } else {
         lerp4(col_a, col_b, t0, seg.ca);
         lerp4(col_a, col_b, t1, seg.cb);
     }
-    seg.width = raster_pixels(sg->width, target->raster->line_width, RENDER_MAX_LINE_WIDTH);
+    seg.width = width;
     seg.x_major = 1;
     rasterise_segment(target, &seg);
 }

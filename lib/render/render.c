@@ -241,11 +241,13 @@ void render_framebuffer_release(struct render_framebuffer *fb)
     memset(fb, 0, sizeof(*fb));
 }
 
-/* 1 when an instance of the committed frame has lines or points. */
+/* 1 when an instance of the committed frame has lines or points, or
+ * triangles that may be drawn as either (rtPolygonMode). */
 static int frame_has_lines(const struct scene_frame *frame)
 {
     for (uint32_t i = 0; i < frame->committed.count; i++)
-        if (scene_lines_nonempty(&frame->committed.items[i].object->mesh.lines))
+        if (scene_lines_nonempty(&frame->committed.items[i].object->mesh.lines) ||
+            raster_polygons_present(&frame->committed.items[i]))
             return 1;
     return 0;
 }
@@ -463,6 +465,7 @@ void render_pass_raster(struct render_pass *pass)
         const struct scene_instance *inst = &list->items[i];
         target.clip = &inst->appearance.clip; /* GL clips per primitive */
         target.raster = &inst->appearance.raster; /* and blends, sizes */
+        raster_polygons(&target, inst);
         raster_lines(&target, &inst->object->mesh.lines, inst->object_to_world);
     }
 }

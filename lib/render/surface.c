@@ -291,6 +291,10 @@ void surface_resolve_material(const struct scene_appearance *call, struct scene_
     }
     if (k & SCENE_MATERIAL_NORMALIZE)
         m->normalize = c->normalize;
+    if (k & SCENE_MATERIAL_POLYGON_MODE_FRONT)
+        m->polygon_mode[0] = c->polygon_mode[0];
+    if (k & SCENE_MATERIAL_POLYGON_MODE_BACK)
+        m->polygon_mode[1] = c->polygon_mode[1];
     m->inherit = 0;
 }
 

@@ -296,7 +296,14 @@ static void render_frame(struct rtu_shell *s)
     RTint vp[4] = {0, 0, 0, 0};
     int w = s->width, h = s->height, fw, fh, row;
     size_t bytes = (size_t)w * (size_t)h * 4;
-    rtRenderFrame();
+    /* A display that ends with glFlush before glutSwapBuffers had its GL
+     * frame traced by the flush: when nothing was drawn since, that image
+     * is the frame, as GL's swap shows the buffer the flush completed
+     * (state changed after the flush draws nothing in GL either). */
+    RTint current = RT_FALSE;
+    rtGetIntegerv(RT_FRAME_CURRENT, &current);
+    if (!current)
+        rtRenderFrame();
     rtGetIntegerv(RT_VIEWPORT, vp);
     fw = vp[0] + vp[2] < w ? vp[0] + vp[2] : w;
     fh = vp[1] + vp[3] < h ? vp[1] + vp[3] : h;

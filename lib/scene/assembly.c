@@ -13,6 +13,7 @@ static void tri(struct scene_tri *t, uint32_t a, uint32_t b, uint32_t c, uint32_
     t->v[1] = b;
     t->v[2] = c;
     t->provoking = provoking;
+    t->edges = SCENE_TRI_EDGES_ALL;
 }
 
 int scene_mode_is_valid(unsigned mode)
@@ -60,12 +61,17 @@ int scene_assemble(unsigned mode, uint32_t base, uint32_t k, struct scene_tri ou
         if (k < 2)
             return 0;
         tri(&out[0], b, b + k - 1, b + k, b);
+        /* A fan: the edge from the centre is the boundary only for the
+         * first triangle, the closing edge only for the last. */
+        out[0].edges = (uint8_t)(SCENE_TRI_EDGE_1 | (k == 2 ? SCENE_TRI_EDGE_0 : 0u));
         return 1;
     case RT_QUADS:
         if (k % 4 != 3)
             return 0;
         tri(&out[0], b + k - 3, b + k - 2, b + k - 1, b + k);
         tri(&out[1], b + k - 3, b + k - 1, b + k, b + k);
+        out[0].edges = SCENE_TRI_EDGE_0 | SCENE_TRI_EDGE_1; /* not the diagonal */
+        out[1].edges = SCENE_TRI_EDGE_1 | SCENE_TRI_EDGE_2;
         return 2;
     case RT_QUAD_STRIP: {
         if (k < 3 || k % 2 == 0)
@@ -75,6 +81,8 @@ int scene_assemble(unsigned mode, uint32_t base, uint32_t k, struct scene_tri ou
         uint32_t v0 = b + 2 * i, v1 = v0 + 1, v2 = v0 + 3, v3 = v0 + 2;
         tri(&out[0], v0, v1, v2, b + k);
         tri(&out[1], v0, v2, v3, b + k);
+        out[0].edges = SCENE_TRI_EDGE_0 | SCENE_TRI_EDGE_1;
+        out[1].edges = SCENE_TRI_EDGE_1 | SCENE_TRI_EDGE_2;
         return 2;
     }
     default:

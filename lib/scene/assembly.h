@@ -17,7 +17,16 @@
 struct scene_tri {
     uint32_t v[3];
     uint32_t provoking;
+    /* GL's edge flags: bit i when edge v[i] -> v[(i + 1) % 3] lies on the
+     * boundary of the polygon (SCENE_TRI_EDGE_*).  A polygon's closing
+     * edge is known only at its end (scene_block_close_polygon). */
+    uint8_t edges;
 };
+
+#define SCENE_TRI_EDGE_0 1u
+#define SCENE_TRI_EDGE_1 2u
+#define SCENE_TRI_EDGE_2 4u
+#define SCENE_TRI_EDGES_ALL 7u
 
 /* mode is one of RT_TRIANGLES ... RT_POLYGON (already validated).
  * Writes 0, 1 or 2 triangles into out and returns how many. */

@@ -95,6 +95,11 @@ void scene_frame_end(struct scene_frame *frame)
     frame->open = 0;
 }
 
+void scene_frame_continue(struct scene_frame *frame)
+{
+    frame->open = 1;
+}
+
 static void list_forget(struct scene_instance_list *list, const struct scene_object *object)
 {
     uint32_t kept = 0;

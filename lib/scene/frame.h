@@ -186,6 +186,11 @@ void scene_frame_begin(struct scene_frame *frame);
 /* Ends the frame: the next instance starts a new list (rtRenderFrame). */
 void scene_frame_end(struct scene_frame *frame);
 
+/* Reopens the frame just ended: what is drawn next adds to its list and
+ * its immediate segments (a GL frame goes on after glFlush until the next
+ * glClear, as GL's framebuffer keeps what was drawn). */
+void scene_frame_continue(struct scene_frame *frame);
+
 /* The world-space box of an instance (its object's box under its
  * matrix, rounded outwards). */
 struct aabb scene_instance_box(const struct scene_instance *instance);

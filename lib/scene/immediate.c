@@ -44,6 +44,7 @@ static int same_mesh(const struct scene_mesh *a, const struct scene_mesh *b)
            memcmp(a->tri_provoking, b->tri_provoking, t * sizeof(uint32_t)) == 0 &&
            memcmp(a->tri_material, b->tri_material, t * sizeof(uint16_t)) == 0 &&
            memcmp(a->tri_flags, b->tri_flags, t * sizeof(uint8_t)) == 0 &&
+           memcmp(a->tri_edges, b->tri_edges, t * sizeof(uint8_t)) == 0 &&
            memcmp(a->materials, b->materials, a->material_count * sizeof(*a->materials)) == 0;
 }
 

@@ -47,6 +47,7 @@ void scene_mesh_release(struct scene_mesh *mesh)
     rt_free(mesh->tri_provoking);
     rt_free(mesh->tri_material);
     rt_free(mesh->tri_flags);
+    rt_free(mesh->tri_edges);
     rt_free(mesh->materials);
     scene_lines_release(&mesh->lines);
     memset(mesh, 0, sizeof(*mesh));
@@ -102,7 +103,8 @@ int scene_mesh_reserve_triangles(struct scene_mesh *mesh, uint32_t extra)
     if (grow((void **)&mesh->indices, cap, 3 * sizeof(uint32_t)) ||
         grow((void **)&mesh->tri_provoking, cap, sizeof(uint32_t)) ||
         grow((void **)&mesh->tri_material, cap, sizeof(uint16_t)) ||
-        grow((void **)&mesh->tri_flags, cap, sizeof(uint8_t)))
+        grow((void **)&mesh->tri_flags, cap, sizeof(uint8_t)) ||
+        grow((void **)&mesh->tri_edges, cap, sizeof(uint8_t)))
         return -1;
     mesh->tri_capacity = cap;
     return 0;

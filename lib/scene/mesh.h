@@ -76,6 +76,18 @@ struct scene_material {
      * with RT_TEXTURE_2D enabled, as GL. */
     uint32_t texture_bound;
     uint32_t texture_enabled;
+    /* rtPolygonMode of front and back faces: 0 for RT_FILL (so that the
+     * zeroed default fills), else RT_LINE or RT_POINT.  GL decides the
+     * face of each polygon in window space and draws it in that face's
+     * mode (OpenGL 2.1 sec. 3.5.4); a triangle whose face is not filled
+     * is passed by camera rays (render/gl_shade.c) and drawn as its
+     * boundary edges or vertices by render/raster_polygons.c. */
+    uint16_t polygon_mode[2];
+    /* The line width and point size those edges and vertices take, as a
+     * list recorded them (0: the one current at the call, the instance's
+     * scene_raster) or as current when drawn outside lists; 0 while both
+     * faces are filled. */
+    float polygon_line_width, polygon_point_size;
 };
 
 #define SCENE_MATERIAL_AMBIENT 1u
@@ -105,7 +117,10 @@ struct scene_material {
 #define SCENE_MATERIAL_TEXTURE (1u << 20)
 #define SCENE_MATERIAL_NORMALIZE (1u << 21)
 #define SCENE_MATERIAL_TEXTURE_ENABLE (1u << 22)
-#define SCENE_MATERIAL_ALL_STATE ((1u << 23) - 1u)
+/* rtPolygonMode of the front and of the back face (polygon_mode[0], [1]). */
+#define SCENE_MATERIAL_POLYGON_MODE_FRONT (1u << 23)
+#define SCENE_MATERIAL_POLYGON_MODE_BACK (1u << 24)
+#define SCENE_MATERIAL_ALL_STATE ((1u << 25) - 1u)
 
 /* Which faces RT_CULL_FACE removes (scene_material.cull_face). */
 #define SCENE_CULL_NONE 0u
@@ -150,6 +165,11 @@ struct scene_mesh {
     uint32_t *tri_provoking; /* provoking vertex per triangle */
     uint16_t *tri_material;  /* index into materials */
     uint8_t *tri_flags;      /* TRI_* */
+    /* GL's edge flags (OpenGL 2.1 sec. 2.6.2): bit i set when edge
+     * v[i] -> v[(i + 1) % 3] is a boundary edge of the polygon the
+     * triangle came from (not a diagonal of a quad or polygon), what
+     * rtPolygonMode RT_LINE draws; RT_POINT draws v[i] for each set bit. */
+    uint8_t *tri_edges;
 
     uint32_t material_count;
     uint32_t material_capacity;

@@ -127,6 +127,7 @@ static void emit(struct scene_recording *rec, const struct scene_triangle_state 
         mesh->tri_provoking[t] = map ? map[tris[i].provoking] : tris[i].provoking;
         mesh->tri_material[t] = (uint16_t)rec->material_index;
         mesh->tri_flags[t] = ts->flags;
+        mesh->tri_edges[t] = tris[i].edges;
     }
 }
 
@@ -175,6 +176,15 @@ enum scene_record_status scene_assemble_indexed(struct scene_recording *rec,
         return out_of_memory(rec);
     emit(rec, ts, tris, n, map);
     return SCENE_RECORD_OK;
+}
+
+void scene_block_close_polygon(struct scene_recording *rec, const struct scene_block *block,
+                               uint32_t count)
+{
+    /* The block's triangles are the mesh's last ones: its last is the
+     * polygon's last (fan triangle (0, count - 2, count - 1)). */
+    if (block->mode == RT_POLYGON && count >= 3 && rec->mesh.tri_count > 0)
+        rec->mesh.tri_edges[rec->mesh.tri_count - 1] |= SCENE_TRI_EDGE_2;
 }
 
 /* Display lists (see recording.h). */

@@ -183,4 +183,10 @@ enum scene_record_status scene_assemble_indexed(struct scene_recording *rec,
                                                 const struct scene_triangle_state *ts,
                                                 uint32_t k, const uint32_t *map);
 
+/* Ends a block of `count` vertices: an RT_POLYGON's last triangle gets
+ * the closing edge's flag (the fan's edge back to the first vertex,
+ * scene_tri.edges), which assembly cannot know before the end. */
+void scene_block_close_polygon(struct scene_recording *rec, const struct scene_block *block,
+                               uint32_t count);
+
 #endif
