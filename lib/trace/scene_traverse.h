@@ -30,7 +30,16 @@ struct trace_instance {
     double world_to_object[12];
     uint32_t instance_id;      /* reported in hits */
     void *object;              /* opaque, handed to the acquire callback */
+    /* A flattened nested hierarchy (trace/flat_walk.h) when member_count
+     * is not 0: world_to_object is then the inverse of its root's matrix,
+     * object is handed to acquire_flat, and its members are the slots
+     * member_base .. member_base + member_count - 1 of the instances
+     * array, which no top-level leaf names (hits report them). */
+    uint32_t member_base;
+    uint32_t member_count;
 };
+
+struct trace_flat;
 
 struct trace_object_view {
     const struct bvh *bvh;
@@ -60,6 +69,9 @@ struct trace_scene {
      * triangles), walked when kernels has a wide walk (wide_width != 0):
      * the same answers as the binary walk. */
     const struct bvh4 *top_wide;
+    /* Fills *flat for a flattened hierarchy's object (trace_instance);
+     * 0 when it cannot be had (the group is skipped). */
+    int (*acquire_flat)(void *user, void *object, struct trace_flat *flat);
 };
 
 struct trace_scene_hit {
@@ -67,7 +79,8 @@ struct trace_scene_hit {
     float u;
     float v;
     uint32_t prim;     /* primitive index inside the object */
-    uint32_t instance; /* index into trace_scene.instances */
+    uint32_t instance; /* index into trace_scene.instances (a member slot for a
+                        * flattened hierarchy's hit) */
 };
 
 struct trace_scene_counters {
@@ -114,6 +127,12 @@ int trace_scene_any(const struct trace_scene *scene, const float org[3], const f
 int trace_scene_object_ray(const struct trace_instance *inst, const float org[3],
                            const float dir[3], float tmin, const struct trace_ray *world,
                            struct trace_ray *o_ray);
+/* The instance id the tie rule compares for the hit's slot. */
+static inline uint32_t trace_scene_hit_id(const struct trace_scene *scene,
+                                          const struct trace_scene_hit *hit)
+{
+    return scene->instances[hit->instance].instance_id;
+}
 unsigned trace_scene_wide_lanes(const float *bounds, uint32_t width, const int near_row[3],
                                 const int far_row[3], const struct trace_ray *ray, float t_max,
                                 float t_entry[8]);
