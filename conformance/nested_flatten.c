@@ -307,11 +307,14 @@ int main(void)
     if (!rays)
         return 1;
     make_rays(rays);
-    struct result off[2], on[2], automatic[2];
-    char conf_off[256], conf_on[256], conf_auto[256];
+    struct result off[2], on[2], automatic[2], single[2];
+    char conf_off[256], conf_on[256], conf_auto[256], conf_single[256];
     scene_in("flatten=off", rays, &off[0], &off[1], conf_off, sizeof(conf_off));
     scene_in("flatten=on", rays, &on[0], &on[1], conf_on, sizeof(conf_on));
     scene_in("", rays, &automatic[0], &automatic[1], conf_auto, sizeof(conf_auto));
+    /* The flat walk ray by ray (packets=off) against the packet walk's. */
+    scene_in("flatten=on packets=off", rays, &single[0], &single[1], conf_single,
+             sizeof(conf_single));
 
     CHECK(strstr(conf_off, "flatten=off") != NULL);
     CHECK(strstr(conf_on, "flatten=on") != NULL);
@@ -329,6 +332,8 @@ int main(void)
     compare(&on[1], &off[1], "flatten=on vs off, BALL redefined");
     compare(&automatic[0], &off[0], "flatten=auto vs off");
     compare(&automatic[1], &off[1], "flatten=auto vs off, BALL redefined");
+    compare(&single[0], &off[0], "flatten=on packets=off vs flatten=off");
+    compare(&single[1], &off[1], "flatten=on packets=off vs flatten=off, BALL redefined");
     /* The redefinition shows (a stale flattened BVH would keep the old
      * ball, and the comparison above would catch it). */
     int changed = 0;
@@ -345,6 +350,7 @@ int main(void)
         release(&off[k]);
         release(&on[k]);
         release(&automatic[k]);
+        release(&single[k]);
     }
     free(rays);
     return test_summary("nested_flatten");

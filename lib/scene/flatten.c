@@ -126,6 +126,29 @@ int scene_flat_decide(const struct scene_flats *flats, const struct scene_flat_c
     return flattened < instanced;
 }
 
+/*
+ * Two calls of one list place its members under matrices relative to the
+ * root that are equal in exact arithmetic, but computed as root^-1 *
+ * member in double they differ in the last bits from call to call.  They
+ * share an entry when every element agrees within 2^-30 of the matrix's
+ * magnitude: the entry's boxes (built with the first call's matrices) then
+ * hold the other call's triangles with room to spare (each box is padded
+ * by 2^-16 of its magnitude, padded_box), and each call's triangles are
+ * still tested with its own members' matrices (flat_walk.h), so the
+ * answers stay the instance path's.
+ */
+static int same_matrix(const double a[16], const double b[16])
+{
+    double mag = 0.0;
+    for (int i = 0; i < 16; i++)
+        mag = fabs(a[i]) > mag ? fabs(a[i]) : mag;
+    const double tol = 0x1p-30 * (mag > 1.0 ? mag : 1.0);
+    for (int i = 0; i < 16; i++)
+        if (!(fabs(a[i] - b[i]) <= tol))
+            return 0;
+    return 1;
+}
+
 static int same_members(const struct scene_flat *f, const struct scene_flat_member *m,
                         uint32_t n)
 {
@@ -133,7 +156,7 @@ static int same_members(const struct scene_flat *f, const struct scene_flat_memb
         return 0;
     for (uint32_t k = 0; k < n; k++)
         if (f->members[k].object != m[k].object || f->members[k].serial != m[k].serial ||
-            memcmp(f->members[k].rel, m[k].rel, sizeof(m[k].rel)) != 0)
+            !same_matrix(f->members[k].rel, m[k].rel))
             return 0;
     return 1;
 }
