@@ -22,17 +22,28 @@
 #define FLAT_MAX_TRIANGLES (1u << 21)
 
 /*
- * Cost constants of the model, in units of one ray/box test.  A triangle
- * test (the watertight test of Woop, Benthin and Wald 2013) is about one
- * and a half box tests; a ray transformation into an instance's space
- * (two 3x4 matrix products in double, rounding, and the ray set-up with
- * its divisions, trace_scene_object_ray) about four: rtbench nested
- * measures the node and triangle tests and CPU time per ray of both
- * choices on the same scene (docs/performance.md).
+ * Cost constants of the model, in units of one ray/box test of the binary
+ * walk.  A triangle test (the watertight test of Woop, Benthin and Wald
+ * 2013) is about one and a half; a ray transformation into an instance's
+ * space (two 3x4 matrix products in double, rounding, and the ray set-up
+ * with its divisions, trace_scene_object_ray) about four.  An object's own
+ * walk uses the wide layout where the context has one (one SIMD test of
+ * 4 or 8 boxes a level, about two units, and log_8 levels), while the
+ * flattened walk is binary and per ray (flat_walk.c: its member lookup,
+ * transformation cache and per-slot bookkeeping make a level cost about
+ * two and a half units), and its leaves change member for about a third
+ * of the members the ray meets (the instance tests per ray of rtbench
+ * nested).  These were fitted to rtbench nested's CPU times per ray on an
+ * AVX2 machine (docs/performance.md): overlap sums 0.8, 2.3 and 7.8 where
+ * flattening measured 1.3, 1.3-2.0 and 0.7 times the instanced time, and
+ * the model says keep, keep, flatten.
  */
 #define COST_BOX 1.0
 #define COST_TRIANGLE 1.5
 #define COST_TRANSFORM 4.0
+#define COST_WIDE_NODE 2.0
+#define COST_FLAT_NODE 2.5
+#define FLAT_MEMBER_SWITCHES (1.0 / 3.0)
 #define LEAF_SIZE 4.0
 
 void scene_flats_init(struct scene_flats *flats)
@@ -69,13 +80,24 @@ void scene_flats_release(struct scene_flats *flats)
     flats->capacity = 0;
 }
 
-/* The expected cost of walking a BVH over n triangles, for a ray that
- * reaches its root: about two box tests per level of a balanced tree down
- * to one leaf, and the leaf's triangles. */
-static double walk_cost(double n)
+/* The expected cost of an object's own walk over n triangles, for a ray
+ * that reaches its root: the levels of a balanced tree down to one leaf,
+ * then the leaf's triangles.  width: the wide layout's (0: binary). */
+static double object_walk_cost(double n, int width)
 {
-    double levels = n > LEAF_SIZE ? log2(n / LEAF_SIZE) : 0.0;
-    return COST_BOX * (1.0 + 2.0 * levels) + COST_TRIANGLE * (n < LEAF_SIZE ? n : LEAF_SIZE);
+    const double leaves = n > LEAF_SIZE ? n / LEAF_SIZE : 1.0;
+    const double tri = COST_TRIANGLE * (n < LEAF_SIZE ? n : LEAF_SIZE);
+    if (width >= 4)
+        return COST_WIDE_NODE * (1.0 + log(leaves) / log((double)width)) + tri;
+    return COST_BOX * (1.0 + 2.0 * log2(leaves)) + tri;
+}
+
+/* The same for the flattened walk (binary, flat_walk.c). */
+static double flat_walk_cost(double n)
+{
+    const double leaves = n > LEAF_SIZE ? n / LEAF_SIZE : 1.0;
+    return COST_FLAT_NODE * (1.0 + 2.0 * log2(leaves)) +
+           COST_TRIANGLE * (n < LEAF_SIZE ? n : LEAF_SIZE);
 }
 
 /*
@@ -92,11 +114,10 @@ static double walk_cost(double n)
  * object ("Transformation Cost").  Flattened: one walk over all N
  * triangles, whose boxes no longer overlap more than the triangles do,
  * plus the transformations of the members whose triangles the ray tests
- * (the flat walk tests each in its member's space, flat_walk.h): at most
- * S of them, and about the triangles of one or two leaves' owners.
+ * (the flat walk tests each in its member's space, flat_walk.h).
  */
 int scene_flat_decide(const struct scene_flats *flats, const struct scene_flat_candidate *c,
-                      uint32_t n, float group_half_area, int changed)
+                      uint32_t n, float group_half_area, int changed, int wide_width)
 {
     if (flats->mode == SCENE_FLATTEN_OFF || n == 0)
         return 0;
@@ -116,13 +137,13 @@ int scene_flat_decide(const struct scene_flats *flats, const struct scene_flat_c
         total += c[k].triangles;
         const double p = group_half_area > 0.0f ? c[k].half_area / group_half_area : 1.0;
         overlap += p;
-        instanced += p * (COST_TRANSFORM + walk_cost(c[k].triangles));
+        instanced += p * (COST_TRANSFORM + object_walk_cost(c[k].triangles, wide_width));
     }
     if (total > FLAT_MAX_TRIANGLES)
         return 0;
     instanced += COST_BOX * 2.0 * log2((double)n);
-    const double transforms = overlap < 2.0 ? (overlap > 1.0 ? overlap : 1.0) : 2.0;
-    const double flattened = COST_TRANSFORM * (1.0 + transforms) + walk_cost(total);
+    const double flattened =
+        COST_TRANSFORM * (1.0 + FLAT_MEMBER_SWITCHES * overlap) + flat_walk_cost(total);
     return flattened < instanced;
 }
 

@@ -96,9 +96,10 @@ struct scene_flat_candidate {
 
 /* 1 when the group of n members (box: the union's half area) should be
  * flattened under flats->mode; `changed` says its inner structure differs
- * from the entry the same root had before (not static). */
+ * from the entry the same root had before (not static); wide_width is
+ * the objects' wide layout (bvh_build_params.wide_layout, 0: binary). */
 int scene_flat_decide(const struct scene_flats *flats, const struct scene_flat_candidate *c,
-                      uint32_t n, float group_half_area, int changed);
+                      uint32_t n, float group_half_area, int changed, int wide_width);
 
 /* The entry for root with these members (copied), found or made, and
  * marked used; *changed is set when none matched but the root had one

@@ -284,7 +284,7 @@ static int place_group(struct scene_frame *frame, const struct bvh_build_params 
             return -1;
         }
         placed = scene_flat_decide(&frame->flats, cand, count, aabb_half_area(&group_box),
-                                   changed);
+                                   changed, params->wide_layout);
     }
     rt_free(fm);
     rt_free(cand);

@@ -94,8 +94,18 @@ int trace_flat_walk(const struct trace_flat *flat, const struct trace_instance *
             const uint32_t left = node->first, right = left + 1;
             float t_left, t_right;
             counters->object.node_tests += 2;
+#if ISECT_PAIR_SSE
+            /* Both siblings in one SSE test, as the object walk does
+             * (traverse_walk.h); the same entries as isect_box. */
+            float t_pair[2];
+            const unsigned mask = isect_box_pair(&br, &bvh->nodes[left], *r->box_limit, t_pair);
+            const int hit_left = mask & 1u, hit_right = mask >> 1;
+            t_left = t_pair[0];
+            t_right = t_pair[1];
+#else
             const int hit_left = isect_box(&br, &bvh->nodes[left], *r->box_limit, &t_left);
             const int hit_right = isect_box(&br, &bvh->nodes[right], *r->box_limit, &t_right);
+#endif
             if (hit_left && hit_right) {
                 const int right_first = t_right < t_left;
                 stack[sp].node = right_first ? left : right;
