@@ -28,7 +28,7 @@
 
 #include "testutil.h"
 
-enum { BALL = 1, PLATE = 2, ARM = 3, BODY = 4, ROBOT = 5, FLOOR = 6 };
+enum { BALL = 1, PLATE = 2, ARM = 3, BODY = 4, ROBOT = 5, FLOOR = 6, CHAIN = 7, TOWER = 8 };
 
 #define WIDTH 96
 #define HEIGHT 72
@@ -301,6 +301,79 @@ static void scene_in(const char *config, const RTray *rays, struct result *befor
     tu_destroy_context(ctx);
 }
 
+/*
+ * Laziness, sharing and the static rule: with flatten=on nothing is built
+ * before a ray needs it, the two calls of ROBOT share one flattened BVH,
+ * and BALL's own BVH is never built (its triangles are reached through
+ * the flattened one).  With flatten=auto a group whose child was just
+ * redefined is not static: it stays instanced for that top level, and is
+ * flattened again once unchanged (when auto flattens it at all).
+ */
+static void check_lazy(const RTray *rays)
+{
+    RThit *hits = calloc(RAYS, sizeof(*hits));
+    if (!hits)
+        exit(1);
+    RTcontext ctx = tu_make_context("flatten=on");
+    define_scene();
+    issue_frame();
+    rtFinish();
+    RTint builds = -1, built = -1, flattened = -1;
+    rtGetIntegerv(RT_STAT_OBJECT_BUILDS, &builds);
+    CHECK_INT(builds, 0);
+    rtGetIntegerv(RT_FLATTENED_GROUPS, &flattened);
+    CHECK_INT(flattened, 2);
+    rtTraceRays(RAYS, rays, hits);
+    rtGetIntegerv(RT_STAT_OBJECT_BUILDS, &builds);
+    CHECK_INT(builds, 2); /* FLOOR, and one flattened BVH for both robots */
+    rtGetObjectiv(BALL, RT_OBJECT_BUILT, &built);
+    CHECK_INT(built, RT_FALSE);
+    rtGetObjectiv(FLOOR, RT_OBJECT_BUILT, &built);
+    CHECK_INT(built, RT_TRUE);
+    CHECK_NO_ERR();
+    tu_destroy_context(ctx);
+
+    /* A hierarchy whose members overlap heavily (twelve balls nearly on
+     * top of each other), which flatten=auto flattens. */
+    ctx = tu_make_context("flatten=auto");
+    define_ball(0.5, 8, 12);
+    rtNewObject(CHAIN);
+    for (int k = 0; k < 6; k++) {
+        rtCallList(BALL);
+        rtTranslatef(0.02f, 0.0f, 0.0f);
+    }
+    rtEndObject();
+    rtNewObject(TOWER);
+    rtCallList(CHAIN);
+    rtTranslatef(0.0f, 0.03f, 0.0f);
+    rtCallList(CHAIN);
+    rtEndObject();
+    /* Frames as an application renders them (rtRenderFrame ends each):
+     * the redefinition at frame 1 makes the group not static (its
+     * structure changed; at frame 2 BALL is still classified as just
+     * changed), and it is flattened again at frame 3. */
+    RTint flat[4];
+    rtViewport(0, 0, 8, 8);
+    for (int f = 0; f < 4; f++) {
+        if (f == 1)
+            define_ball(0.45, 6, 10);
+        rtBeginFrame();
+        rtPushMatrix();
+        rtTranslatef(0.0f, 0.0f, -5.0f);
+        rtInstantiateObject(TOWER);
+        rtPopMatrix();
+        rtRenderFrame();
+        rtGetIntegerv(RT_FLATTENED_GROUPS, &flat[f]);
+    }
+    CHECK_INT(flat[0], 1);
+    CHECK_INT(flat[1], 0);
+    CHECK_INT(flat[2], 0);
+    CHECK_INT(flat[3], 1);
+    CHECK_NO_ERR();
+    tu_destroy_context(ctx);
+    free(hits);
+}
+
 int main(void)
 {
     RTray *rays = calloc(RAYS, sizeof(*rays));
@@ -340,6 +413,8 @@ int main(void)
     for (int i = 0; i < RAYS; i++)
         changed += memcmp(&off[0].hits[i], &off[1].hits[i], sizeof(RThit)) != 0;
     CHECK(changed > 100);
+
+    check_lazy(rays);
 
     /* The key is validated. */
     char reason[256];

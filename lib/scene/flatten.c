@@ -117,8 +117,10 @@ static double flat_walk_cost(double n)
  * (the flat walk tests each in its member's space, flat_walk.h).
  */
 int scene_flat_decide(const struct scene_flats *flats, const struct scene_flat_candidate *c,
-                      uint32_t n, float group_half_area, int changed, int wide_width)
+                      uint32_t n, float group_half_area, int changed, int wide_width,
+                      int *not_static)
 {
+    *not_static = 0;
     if (flats->mode == SCENE_FLATTEN_OFF || n == 0)
         return 0;
     if (flats->mode == SCENE_FLATTEN_ON)
@@ -126,14 +128,19 @@ int scene_flat_decide(const struct scene_flats *flats, const struct scene_flat_c
     /* Only a static hierarchy: no part moved relative to the root since
      * the last top level, and no member is an object the runtime updates
      * (classified affine or unstructured, or hinted so). */
-    if (changed)
+    if (changed) {
+        *not_static = 1;
         return 0;
+    }
     double total = 0.0, overlap = 0.0, instanced = 0.0;
     for (uint32_t k = 0; k < n; k++) {
         const struct scene_object *o = c[k].object;
-        if (o->current_class != RT_STATIC ||
-            (o->class_hint != RT_AUTOMATIC && o->class_hint != RT_STATIC))
+        if (o->class_hint != RT_AUTOMATIC && o->class_hint != RT_STATIC)
+            return 0; /* hinted dynamic: for good */
+        if (o->current_class != RT_STATIC) {
+            *not_static = 1; /* classified dynamic at the last preparation */
             return 0;
+        }
         total += c[k].triangles;
         const double p = group_half_area > 0.0f ? c[k].half_area / group_half_area : 1.0;
         overlap += p;

@@ -78,8 +78,11 @@ struct scene_flats {
     enum scene_flatten_mode mode;
     /* Of the last top-level build: nested groups seen, flattened. */
     uint32_t groups, flattened;
-    uint64_t builds; /* flattened BVHs built, ever */
-    double build_ms; /* their build time, ms */
+    /* A group was kept as instances because it was not static (it
+     * changed, or a member was not classified static): the top level is
+     * rebuilt once the frame has advanced, to decide again. */
+    int retry;
+    uint64_t retry_frame;
 };
 
 void scene_flats_init(struct scene_flats *flats);
@@ -97,9 +100,12 @@ struct scene_flat_candidate {
 /* 1 when the group of n members (box: the union's half area) should be
  * flattened under flats->mode; `changed` says its inner structure differs
  * from the entry the same root had before (not static); wide_width is
- * the objects' wide layout (bvh_build_params.wide_layout, 0: binary). */
+ * the objects' wide layout (bvh_build_params.wide_layout, 0: binary).
+ * *not_static is set when auto refused because the group is not static
+ * (the answer may change in a later frame). */
 int scene_flat_decide(const struct scene_flats *flats, const struct scene_flat_candidate *c,
-                      uint32_t n, float group_half_area, int changed, int wide_width);
+                      uint32_t n, float group_half_area, int changed, int wide_width,
+                      int *not_static);
 
 /* The entry for root with these members (copied), found or made, and
  * marked used; *changed is set when none matched but the root had one

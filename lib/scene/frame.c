@@ -283,8 +283,10 @@ static int place_group(struct scene_frame *frame, const struct bvh_build_params 
             rt_free(cand);
             return -1;
         }
+        int not_static = 0;
         placed = scene_flat_decide(&frame->flats, cand, count, aabb_half_area(&group_box),
-                                   changed, params->wide_layout);
+                                   changed, params->wide_layout, &not_static);
+        frame->flats.retry |= not_static;
     }
     rt_free(fm);
     rt_free(cand);
@@ -328,6 +330,7 @@ static int build_top(struct scene_frame *frame, const struct bvh_build_params *p
     uint32_t n = 0, m = 0;
     scene_flats_unmark(&frame->flats);
     frame->flats.groups = frame->flats.flattened = 0;
+    frame->flats.retry = 0;
     for (uint32_t i = 0; i < list->count;) {
         const struct scene_instance *inst = &list->items[i];
         if (inst->group) {
@@ -441,10 +444,15 @@ int scene_frame_prepare(struct scene_frame *frame, const struct bvh_build_params
             frame->top_valid = 0;
         }
     }
+    /* A nested group kept as instances because it was not static is
+     * decided again once a frame has passed (flatten.h). */
+    if (frame->top_valid && frame->flats.retry && frame_number > frame->flats.retry_frame)
+        frame->top_valid = 0;
     if (frame->top_valid)
         return 0;
     if (build_top(frame, params))
         return -1;
+    frame->flats.retry_frame = frame_number;
     *toplevel_built = 1;
     return 0;
 }
