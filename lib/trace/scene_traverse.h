@@ -114,6 +114,13 @@ int trace_scene_closest(const struct trace_scene *scene, const float org[3], con
 int trace_scene_any(const struct trace_scene *scene, const float org[3], const float dir[3],
                     float tmin, float tmax, struct trace_scene_counters *counters);
 
+/* The instance id the tie rule compares for the hit's slot. */
+static inline uint32_t trace_scene_hit_id(const struct trace_scene *scene,
+                                          const struct trace_scene_hit *hit)
+{
+    return scene->instances[hit->instance].instance_id;
+}
+
 /*
  * Pieces of the single-ray walk that the packet walk (packet_scene.c)
  * repeats ray by ray, so that its answers are the same bit for bit.
@@ -127,12 +134,6 @@ int trace_scene_any(const struct trace_scene *scene, const float org[3], const f
 int trace_scene_object_ray(const struct trace_instance *inst, const float org[3],
                            const float dir[3], float tmin, const struct trace_ray *world,
                            struct trace_ray *o_ray);
-/* The instance id the tie rule compares for the hit's slot. */
-static inline uint32_t trace_scene_hit_id(const struct trace_scene *scene,
-                                          const struct trace_scene_hit *hit)
-{
-    return scene->instances[hit->instance].instance_id;
-}
 unsigned trace_scene_wide_lanes(const float *bounds, uint32_t width, const int near_row[3],
                                 const int far_row[3], const struct trace_ray *ray, float t_max,
                                 float t_entry[8]);
