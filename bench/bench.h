@@ -404,6 +404,9 @@ int bench_error_section(const struct bench_options *opts);
 int bench_bart_find_data(const struct bench_options *opts, char *why, size_t why_size);
 int bench_bart_section(const struct bench_options *opts);
 int bench_immediate_section(const struct bench_options *opts);
+/* `rtbench nested` (bench_nested.c): flattened against instanced nested
+ * static hierarchies, and what flatten=auto chose. */
+int bench_nested_section(const struct bench_options *opts);
 #ifdef RT_HAVE_EMBREE
 int bench_embree_section(const struct bench_options *opts, struct bench_mesh *meshes,
                          int mesh_count);

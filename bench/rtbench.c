@@ -12,6 +12,8 @@
  *   rtbench bart    the BART scenes against Wald, Benthin and Slusallek (2003) sec. 5 (bench_bart.c;
  *                   needs the BART data, fails without it)
  *   rtbench immediate  immediate mode against objects (bench_immediate.c)
+ *   rtbench nested  nested static hierarchies flattened against instanced
+ *                   (bench_nested.c)
  *   rtbench all     all of the above (default); bart only when its data is
  *                   found, otherwise the report says it was skipped and why
  *
@@ -45,12 +47,13 @@ enum section {
     SECTION_BART = 16,
     SECTION_IMMEDIATE = 32,
     SECTION_ERROR = 64,
-    SECTION_PACKETS = 128
+    SECTION_PACKETS = 128,
+    SECTION_NESTED = 256
 };
 /* `error` takes about 20 s on the development machine: in `all`. */
 #define SECTION_ALL                                                                                \
     (SECTION_BUILD | SECTION_TRACE | SECTION_EMBREE | SECTION_DYNAMIC | SECTION_BART |           \
-     SECTION_IMMEDIATE | SECTION_ERROR | SECTION_PACKETS)
+     SECTION_IMMEDIATE | SECTION_ERROR | SECTION_PACKETS | SECTION_NESTED)
 /* The sections that run on the generated meshes. */
 #define SECTION_MESHES                                                                             \
     (SECTION_BUILD | SECTION_TRACE | SECTION_EMBREE | SECTION_DYNAMIC | SECTION_PACKETS)
@@ -58,7 +61,7 @@ enum section {
 static void usage(FILE *f)
 {
     fprintf(f,
-            "usage: rtbench [build|trace|embree|packets|dynamic|immediate|error|bart|\n"
+            "usage: rtbench [build|trace|embree|packets|dynamic|immediate|nested|error|bart|\n"
             "                bart-strategies|frame-overhead|dynamic-cpu|all]\n"
             "               [--quick] [--runs N]"
             " [--out DIR] [--mesh bumpy|gears|soup] [--baseline FILE]\n"
@@ -76,6 +79,7 @@ static void usage(FILE *f)
             "  bart       the BART scenes (kitchen, robots, museum) against Wald, Benthin and Slusallek (2003)\n"
             "             sec. 5: fps, top level, updates, strategies, two-level overhead\n"
             "  immediate  immediate-mode re-send against objects (bench_immediate.c)\n"
+            "  nested     nested static hierarchies flattened against instanced\n"
             "  bart-strategies  only the BART section's update strategies over the museum\n"
             "  frame-overhead   only a kitchen eye-light frame against its bare primary rays\n"
             "  dynamic-cpu      the dynamic strategies by CPU time and tests (threads=1)\n"
@@ -144,6 +148,8 @@ int main(int argc, char **argv)
             sections |= SECTION_DYNAMIC;
         } else if (!strcmp(a, "immediate")) {
             sections |= SECTION_IMMEDIATE;
+        } else if (!strcmp(a, "nested")) {
+            sections |= SECTION_NESTED;
         } else if (!strcmp(a, "error")) {
             sections |= SECTION_ERROR;
         } else if (!strcmp(a, "bart")) {
@@ -293,6 +299,8 @@ int main(int argc, char **argv)
         failed |= bench_dynamic_cpu_section(&opts) != 0;
     if (sections & SECTION_IMMEDIATE)
         failed |= bench_immediate_section(&opts) != 0;
+    if (sections & SECTION_NESTED)
+        failed |= bench_nested_section(&opts) != 0;
     if (sections & SECTION_ERROR)
         failed |= bench_error_section(&opts) != 0;
     if (sections & SECTION_BART)

@@ -180,6 +180,12 @@ typedef struct rt_context *RTcontext;
 #define RT_WORKER_THREADS_RUNNING 0x8F34 /* threads the context has started */
 #define RT_BUILD_THREADS 0x8F35      /* K of "build_threads=K" */
 #define RT_BUILD_THREADS_RUNNING 0x8F36 /* asynchronous build threads started */
+/* Nested static hierarchies (docs/instances.md, "flatten="): of the
+ * current scene's top level, the groups of two or more instances placed
+ * by one application-level call of a nested list, and how many of them
+ * are flattened into one BVH. */
+#define RT_NESTED_GROUPS 0x8FB0
+#define RT_FLATTENED_GROUPS 0x8FB1
 /* Per-frame statistics: counters are for the last rtRenderFrame /
  * rtTraceRays / rtOccludedRays call, times in milliseconds. */
 #define RT_STAT_RAYS 0x8F40

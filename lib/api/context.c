@@ -92,7 +92,7 @@ static int parse_configuration(struct rt_context *ctx, const char *config, char 
                                size_t reason_size)
 {
     static const char *const keys[] = {"threads", "toplevel", "build_threads", "bins",
-                                       "builder", "isa", "packets"};
+                                       "builder", "isa", "packets", "flatten"};
     enum { KEY_COUNT = sizeof keys / sizeof keys[0] };
     int seen[KEY_COUNT] = {0};
     const char *p = config;
@@ -172,6 +172,18 @@ static int parse_configuration(struct rt_context *ctx, const char *config, char 
                 ctx->packets_off = 1;
             else
                 bad = 1, expect = "on or off";
+            break;
+        case 7:
+            /* Nested static hierarchies: flattened, instanced, or as the
+             * cost model says (scene/flatten.h). */
+            if (key_is(value, value_len, "auto"))
+                ctx->flatten_mode = SCENE_FLATTEN_AUTO;
+            else if (key_is(value, value_len, "on"))
+                ctx->flatten_mode = SCENE_FLATTEN_ON;
+            else if (key_is(value, value_len, "off"))
+                ctx->flatten_mode = SCENE_FLATTEN_OFF;
+            else
+                bad = 1, expect = "auto, on or off";
             break;
         default:
             if (key_is(value, value_len, "binned"))
@@ -290,11 +302,15 @@ RTcontext rtCreateContextWithReason(const char *configuration, RTsizei bufSize, 
     }
     ctx->kernels = &ctx->kernel_table;
     snprintf(ctx->configuration, sizeof(ctx->configuration),
-             "threads=%d build_threads=%d bins=%d builder=%s toplevel=%s isa=%s packets=%s",
+             "threads=%d build_threads=%d bins=%d builder=%s toplevel=%s isa=%s packets=%s "
+             "flatten=%s",
              ctx->threads, ctx->build_threads, ctx->build_params.bins,
              ctx->build_params.builder == BVH_BUILDER_SWEEP_SAH ? "sweep" : "binned",
              ctx->toplevel_cellsplit ? "cellsplit" : "binned", ctx->kernels->name,
-             ctx->kernels->closest_packet ? "on" : "off");
+             ctx->kernels->closest_packet ? "on" : "off",
+             ctx->flatten_mode == SCENE_FLATTEN_ON    ? "on"
+             : ctx->flatten_mode == SCENE_FLATTEN_OFF ? "off"
+                                                      : "auto");
     const char *debug = getenv("TRACELIST_DEBUG");
     ctx->debug_print = debug && *debug && strcmp(debug, "0") != 0;
 
@@ -315,6 +331,7 @@ RTcontext rtCreateContextWithReason(const char *configuration, RTsizei bufSize, 
     scene_material_default(&ctx->material);
     ctx->recording.mesh.bounds = aabb_empty();
     scene_init(&ctx->scene, &ctx->build_params, ctx->build_threads, ctx->toplevel_cellsplit);
+    ctx->scene.frame.flats.mode = (enum scene_flatten_mode)ctx->flatten_mode;
     render_state_init(&ctx->render);
     ctx->cull_face_mode = RT_BACK;
     ctx->dither = 1; /* GL's default */

@@ -130,10 +130,11 @@ struct rt_context {
     /* The traversal kernels' ISA table (isa=, lib/trace/kernels.h):
      * chosen here once, read by every trace of the context. */
     const struct trace_kernels *kernels;
-    char configuration[128];
+    char configuration[192];
     /* packets= (docs/context.md): kernels points here after creation, a
      * copy of the chosen table whose packet walks are NULL when off. */
     int packets_off;
+    int flatten_mode; /* flatten= (enum scene_flatten_mode, scene/flatten.h) */
     struct trace_kernels kernel_table;
 
     /* Errors (error.c). */

@@ -305,6 +305,8 @@ static const struct enum_name names[] = {
     {0x8F69, "RT_ASYNC_REBUILD"},
     {0x8F98, "RT_FRAMES_TRACED"},
     {0x8F99, "RT_FRAME_CURRENT"},
+    {0x8FB0, "RT_NESTED_GROUPS"},
+    {0x8FB1, "RT_FLATTENED_GROUPS"},
     {0x10000, "RT_EVAL_BIT"},
     {0x20000, "RT_LIST_BIT"},
     {0x40000, "RT_TEXTURE_BIT"},

@@ -96,6 +96,12 @@ static enum value_kind state_values(const struct rt_context *ctx, RTenum pname, 
     case RT_INSTANCE_COUNT:
         v[0] = ctx->scene.frame.open ? ctx->scene.frame.pending.count : ctx->scene.frame.committed.count;
         return VALUE_INT;
+    case RT_NESTED_GROUPS:
+        v[0] = ctx->scene.frame.flats.groups;
+        return VALUE_INT;
+    case RT_FLATTENED_GROUPS:
+        v[0] = ctx->scene.frame.flats.flattened;
+        return VALUE_INT;
     case RT_WORKER_THREADS_RUNNING:
         v[0] = ctx->pool ? rt_pool_threads(ctx->pool) - 1 : 0;
         return VALUE_INT;

@@ -453,7 +453,14 @@ void rt_call_list(struct rt_context *ctx, const char *caller, RTuint name)
     struct scene_object *object = scene_objects_lookup(&ctx->scene.objects, name);
     if (!object || !object->defined)
         return;
+    /* The segments of one application-level call form a group that the
+     * top level may flatten (scene/flatten.h); group_depth is the
+     * nesting level of the segments placed now. */
+    if (ctx->call_depth == 0)
+        scene_frame_group_begin(&ctx->scene.frame, object,
+                                ctx->modelview.m[ctx->modelview.depth - 1]);
     ctx->call_depth++;
+    ctx->scene.frame.group_depth = (uint32_t)ctx->call_depth;
     ctx->replaying++;
     /* Called between rtBegin and rtEnd (GL allows it): the list's vertex
      * and attribute calls continue the open primitive; primitives of its
@@ -513,6 +520,9 @@ void rt_call_list(struct rt_context *ctx, const char *caller, RTuint name)
     }
     ctx->replaying--;
     ctx->call_depth--;
+    ctx->scene.frame.group_depth = (uint32_t)ctx->call_depth;
+    if (ctx->call_depth == 0)
+        scene_frame_group_end(&ctx->scene.frame);
 }
 
 /* A call from the application (rtCallList, rtCallLists, rtInstantiateObject). */

@@ -54,6 +54,33 @@ static int acquire_object(void *user, void *object, struct trace_object_view *vi
     return 1;
 }
 
+/* A flattened nested hierarchy (scene/flatten.h), built on first use. */
+static int acquire_flat(void *user, void *object, struct trace_flat *flat)
+{
+    struct render_pass *sh = user;
+    struct scene_flat *f = object;
+    const struct scene_flat_accel *a = rt_atomic_load_acquire(&f->accel);
+    if (!a) {
+        int built_now;
+        double start = rt_now_ms();
+        a = scene_flat_acquire(f, &built_now);
+        if (!a) {
+            rt_atomic_store_relaxed(&sh->failed, 1);
+            return 0;
+        }
+        if (built_now) {
+            rt_atomic_add_fetch_relaxed(&sh->builds, 1);
+            rt_atomic_add_fetch_relaxed(&sh->build_us,
+                                        (uint64_t)((rt_now_ms() - start) * 1000.0));
+        }
+    }
+    flat->bvh = &a->bvh;
+    flat->tri = a->tri;
+    flat->member = a->member;
+    flat->prim = a->prim;
+    return 1;
+}
+
 static int shared_init(struct render_pass *sh, const struct render_job *job)
 {
     memset(sh, 0, sizeof(*sh));
@@ -61,6 +88,7 @@ static int shared_init(struct render_pass *sh, const struct render_job *job)
     sh->scene.top = &job->frame->top;
     sh->scene.instances = job->frame->trace_instances;
     sh->scene.acquire = acquire_object;
+    sh->scene.acquire_flat = acquire_flat;
     sh->scene.kernels = job->kernels;
     sh->scene.top_wide = &job->frame->top_wide;
     sh->scene.user = sh;

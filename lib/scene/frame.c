@@ -25,6 +25,7 @@ void scene_frame_release(struct scene_frame *frame)
     bvh_release(&frame->top);
     bvh4_release(&frame->top_wide);
     rt_free(frame->trace_instances);
+    scene_flats_release(&frame->flats);
     scene_frame_init(frame);
 }
 
@@ -67,6 +68,10 @@ int scene_frame_add_instance_appearance(struct scene_frame *frame, struct scene_
         frame->pending.count = 0;
         frame->open = 1;
         scene_light_sets_restart(frame);
+        /* Group numbers count from 1 each frame, so an unchanged frame
+         * compares equal (scene_frame_group_begin numbered this one). */
+        if (!frame->group_current)
+            frame->group_next = 0;
         if (frame->immediate.open || frame->immediate.used)
             scene_immediate_restart(&frame->immediate);
     }
@@ -79,12 +84,42 @@ int scene_frame_add_instance_appearance(struct scene_frame *frame, struct scene_
     memcpy(inst->normal_to_world, normal_to_world, sizeof(inst->normal_to_world));
     if (appearance)
         inst->appearance = *appearance;
+    if (frame->group_current) {
+        inst->group = frame->group_current;
+        inst->depth = frame->group_depth;
+        inst->root = frame->group_root;
+        memcpy(inst->root_to_world, frame->group_m, sizeof(inst->root_to_world));
+        memcpy(inst->world_to_root, frame->group_inv, sizeof(inst->world_to_root));
+    }
     return 0;
+}
+
+void scene_frame_group_begin(struct scene_frame *frame, struct scene_object *root,
+                             const double m[16])
+{
+    frame->group_current = 0;
+    if (!frame->open)
+        frame->group_next = 0; /* the first call of a new frame */
+    if (m[3] != 0.0 || m[7] != 0.0 || m[11] != 0.0 || m[15] != 1.0 ||
+        !mat4_invert(frame->group_inv, m))
+        return;
+    memcpy(frame->group_m, m, sizeof(frame->group_m));
+    frame->group_root = root;
+    /* Never 0 (no group), also after wrapping. */
+    if (++frame->group_next == 0)
+        frame->group_next = 1;
+    frame->group_current = frame->group_next;
+}
+
+void scene_frame_group_end(struct scene_frame *frame)
+{
+    frame->group_current = 0;
 }
 
 void scene_frame_begin(struct scene_frame *frame)
 {
     frame->pending.count = 0;
+    frame->group_next = 0;
     frame->open = 1;
     scene_immediate_restart(&frame->immediate);
     scene_light_sets_restart(frame);
@@ -116,6 +151,11 @@ void scene_frame_forget_object(struct scene_frame *frame, const struct scene_obj
     list_forget(&frame->committed, object);
     if (frame->committed.count != before)
         frame->top_valid = 0;
+    /* Flattened hierarchies may hold the object as a member or root. */
+    if (frame->flats.count) {
+        scene_flats_clear(&frame->flats);
+        frame->top_valid = 0;
+    }
 }
 
 /* The world box of an object box under an affine map: transform the eight
@@ -165,7 +205,7 @@ static int lists_equal(const struct scene_instance_list *a, const struct scene_i
         return 0;
     for (uint32_t i = 0; i < a->count; i++) {
         const struct scene_instance *x = &a->items[i], *y = &b->items[i];
-        if (x->object != y->object ||
+        if (x->object != y->object || x->group != y->group || x->depth != y->depth ||
             memcmp(x->object_to_world, y->object_to_world, sizeof(x->object_to_world)) != 0)
             return 0;
     }
@@ -183,33 +223,164 @@ static int top_fits_wide(const struct bvh *top)
     return 1;
 }
 
+static void set_rows(struct trace_instance *ti, const double m[16])
+{
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 4; c++)
+            ti->world_to_object[4 * r + c] = m[4 * c + r];
+}
+
+/* 1 when the instance can be hit (its box, rounded outwards, in *box). */
+static int instance_box(const struct scene_instance *inst, struct aabb *box)
+{
+    const struct scene_mesh *mesh = &inst->object->mesh;
+    if (mesh->tri_count == 0 || aabb_is_empty(&mesh->bounds))
+        return 0; /* empty objects are never hit: keep them out */
+    *box = transformed_box(&mesh->bounds, inst->object_to_world);
+    return box_is_finite(box); /* else cannot be bounded in float: unreachable */
+}
+
+/*
+ * The group of instances [begin, end) of one application-level call
+ * (flatten.h): when it is nested and the cost model (or flatten=on) says
+ * so, one top-level slot tops[*n] for the flattened hierarchy, its
+ * members appended to members[*m]; else nothing (returns 0) and the
+ * caller places them one by one.  -1 on allocation failure.
+ */
+static int place_group(struct scene_frame *frame, const struct bvh_build_params *params,
+                       uint32_t begin, uint32_t end, struct aabb *boxes,
+                       struct trace_instance *tops, uint32_t *n, struct trace_instance *members,
+                       uint32_t *m)
+{
+    const struct scene_instance_list *list = &frame->committed;
+    uint32_t count = 0, nested = 0;
+    for (uint32_t i = begin; i < end; i++)
+        nested |= list->items[i].depth > 1;
+    if (!nested || end - begin < 2)
+        return 0;
+    struct scene_flat_member *fm = rt_calloc(end - begin, sizeof(*fm));
+    struct scene_flat_candidate *cand = rt_calloc(end - begin, sizeof(*cand));
+    if (!fm || !cand) {
+        rt_free(fm);
+        rt_free(cand);
+        return -1;
+    }
+    struct aabb group_box = aabb_empty();
+    for (uint32_t i = begin; i < end; i++) {
+        const struct scene_instance *inst = &list->items[i];
+        struct aabb box;
+        if (!instance_box(inst, &box))
+            continue;
+        aabb_grow(&group_box, &box);
+        fm[count].object = inst->object;
+        fm[count].serial = inst->object->serial;
+        mat4_mul(fm[count].rel, inst->world_to_root, inst->object_to_world);
+        cand[count].object = inst->object;
+        cand[count].triangles = inst->object->mesh.tri_count;
+        cand[count].half_area = aabb_half_area(&box);
+        count++;
+    }
+    int changed = 0, placed = 0;
+    struct scene_flat *flat = NULL;
+    if (count >= 2) {
+        frame->flats.groups++;
+        flat = scene_flats_get(&frame->flats, list->items[begin].root, fm, count, params,
+                               &changed);
+        if (!flat) {
+            rt_free(fm);
+            rt_free(cand);
+            return -1;
+        }
+        int not_static = 0;
+        placed = scene_flat_decide(&frame->flats, cand, count, aabb_half_area(&group_box),
+                                   changed, params->wide_layout, &not_static);
+        frame->flats.retry |= not_static;
+    }
+    rt_free(fm);
+    rt_free(cand);
+    if (!placed)
+        return 0;
+    frame->flats.flattened++;
+    struct trace_instance *top = &tops[*n];
+    memset(top, 0, sizeof(*top));
+    set_rows(top, list->items[begin].world_to_root);
+    top->object = flat;
+    top->member_base = *m; /* relative to the members; build_top adds the tops */
+    top->member_count = count;
+    top->instance_id = begin; /* never compared: hits report the members */
+    boxes[*n] = group_box;
+    for (uint32_t i = begin; i < end; i++) {
+        const struct scene_instance *inst = &list->items[i];
+        struct aabb box;
+        if (!instance_box(inst, &box))
+            continue;
+        struct trace_instance *ti = &members[(*m)++];
+        memset(ti, 0, sizeof(*ti));
+        set_rows(ti, inst->world_to_object);
+        ti->instance_id = i;
+        ti->object = inst->object;
+    }
+    (*n)++;
+    return 1;
+}
+
 static int build_top(struct scene_frame *frame, const struct bvh_build_params *params)
 {
     const struct scene_instance_list *list = &frame->committed;
     struct aabb *boxes = rt_calloc(list->count, sizeof(*boxes));
-    struct trace_instance *tis = rt_calloc(list->count, sizeof(*tis));
+    /* A flattened group takes a slot of its own besides its members'. */
+    struct trace_instance *tis = rt_calloc(2 * (size_t)list->count, sizeof(*tis));
+    struct trace_instance *members = rt_calloc(list->count, sizeof(*members));
     struct bvh top;
     memset(&top, 0, sizeof(top));
-    if (!boxes || !tis)
+    if (!boxes || !tis || !members)
         goto fail;
-    uint32_t n = 0;
-    for (uint32_t i = 0; i < list->count; i++) {
+    uint32_t n = 0, m = 0;
+    scene_flats_unmark(&frame->flats);
+    frame->flats.groups = frame->flats.flattened = 0;
+    frame->flats.retry = 0;
+    for (uint32_t i = 0; i < list->count;) {
         const struct scene_instance *inst = &list->items[i];
-        const struct scene_mesh *mesh = &inst->object->mesh;
-        if (mesh->tri_count == 0 || aabb_is_empty(&mesh->bounds))
-            continue; /* empty objects are never hit: keep them out */
-        struct aabb box = transformed_box(&mesh->bounds, inst->object_to_world);
-        if (!box_is_finite(&box))
-            continue; /* cannot be bounded in float: unreachable by rays */
-        boxes[n] = box;
-        struct trace_instance *ti = &tis[n];
-        for (int r = 0; r < 3; r++)
-            for (int c = 0; c < 4; c++)
-                ti->world_to_object[4 * r + c] = inst->world_to_object[4 * c + r];
-        ti->instance_id = i;
-        ti->object = inst->object;
-        n++;
+        if (inst->group) {
+            uint32_t end = i + 1;
+            while (end < list->count && list->items[end].group == inst->group)
+                end++;
+            int status = place_group(frame, params, i, end, boxes, tis, &n, members, &m);
+            if (status < 0)
+                goto fail;
+            if (status) {
+                i = end;
+                continue;
+            }
+            for (; i < end; i++) {
+                struct aabb box;
+                if (!instance_box(&list->items[i], &box))
+                    continue;
+                boxes[n] = box;
+                set_rows(&tis[n], list->items[i].world_to_object);
+                tis[n].instance_id = i;
+                tis[n].object = list->items[i].object;
+                n++;
+            }
+            continue;
+        }
+        struct aabb box;
+        if (instance_box(inst, &box)) {
+            boxes[n] = box;
+            set_rows(&tis[n], inst->world_to_object);
+            tis[n].instance_id = i;
+            tis[n].object = inst->object;
+            n++;
+        }
+        i++;
     }
+    /* The members after the top-level slots (scene_traverse.h). */
+    for (uint32_t i = 0; i < n; i++)
+        if (tis[i].member_count)
+            tis[i].member_base += n;
+    memcpy(&tis[n], members, m * sizeof(*members));
+    rt_free(members);
+    members = NULL;
     int status = frame->toplevel_cellsplit ? accel_build_toplevel_cellsplit(&top, boxes, n)
                                           : accel_build(&top, boxes, n, params);
     if (status)
@@ -228,12 +399,14 @@ static int build_top(struct scene_frame *frame, const struct bvh_build_params *p
     frame->top = top;
     frame->top_wide = wide;
     frame->trace_instances = tis;
-    frame->trace_instance_count = n;
+    frame->trace_instance_count = n + m;
     frame->top_valid = 1;
+    scene_flats_sweep(&frame->flats); /* the old top level is gone */
     return 0;
 fail:
     rt_free(boxes);
     rt_free(tis);
+    rt_free(members);
     return -1;
 }
 
@@ -283,10 +456,15 @@ int scene_frame_prepare(struct scene_frame *frame, const struct bvh_build_params
             frame->top_valid = 0;
         }
     }
+    /* A nested group kept as instances because it was not static is
+     * decided again once a frame has passed (flatten.h). */
+    if (frame->top_valid && frame->flats.retry && frame_number > frame->flats.retry_frame)
+        frame->top_valid = 0;
     if (frame->top_valid)
         return 0;
     if (build_top(frame, params))
         return -1;
+    frame->flats.retry_frame = frame_number;
     *toplevel_built = 1;
     return 0;
 }

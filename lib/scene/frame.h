@@ -21,6 +21,7 @@
 
 #include "accel/bvh_build.h"
 #include "scene/clip.h"
+#include "scene/flatten.h"
 #include "scene/gl_state.h"
 #include "scene/object.h"
 #include "scene/raster_state.h"
@@ -54,6 +55,16 @@ struct scene_instance {
     double world_to_object[16];
     double normal_to_world[16]; /* inverse transpose of object_to_world */
     struct scene_appearance appearance;
+    /* The application-level list call that placed it (flatten.h): 0
+     * outside any, else a number shared by the segments of one call;
+     * depth its nesting level (1: the called list's own segment), root
+     * the called list and root_to_world / world_to_root the modelview at
+     * the call and its inverse. */
+    uint32_t group;
+    uint32_t depth;
+    struct scene_object *root;
+    double root_to_world[16];
+    double world_to_root[16];
 };
 
 struct scene_instance_list {
@@ -128,6 +139,12 @@ struct scene_frame {
     struct scene_light_sets pending_lights, committed_lights;
     uint64_t light_sets_serial;
     int light_sets_fresh;
+    /* Nested static hierarchies (flatten.h): the entries, and the group
+     * the instances being added belong to (scene_frame_group_begin). */
+    struct scene_flats flats;
+    uint32_t group_next, group_current, group_depth;
+    struct scene_object *group_root;
+    double group_m[16], group_inv[16];
 };
 
 void scene_frame_init(struct scene_frame *frame);
@@ -179,6 +196,12 @@ uint32_t scene_frame_light_set(struct scene_frame *frame,
 void scene_light_sets_restart(struct scene_frame *frame);
 int scene_light_sets_commit(struct scene_frame *frame);
 void scene_light_sets_release(struct scene_frame *frame);
+/* The instances added until scene_frame_group_end come from one call of
+ * root under modelview m (flatten.h); group_depth (set by the caller)
+ * is their nesting level.  A singular m starts no group. */
+void scene_frame_group_begin(struct scene_frame *frame, struct scene_object *root,
+                             const double m[16]);
+void scene_frame_group_end(struct scene_frame *frame);
 
 /* Starts a new, empty list (rtBeginFrame). */
 void scene_frame_begin(struct scene_frame *frame);

@@ -18,6 +18,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "trace/flat_walk.h"
 #include "trace/intersect.h"
 
 struct packet_top {
@@ -47,10 +48,36 @@ static int first(unsigned m)
     return __builtin_ctz(m);
 }
 
+/* A flattened hierarchy (flat_walk.h) for the rays of mask `rays`: ray by
+ * ray with the single walk's flat walk, so the same answers. */
+static void visit_group(struct packet_top *s, const struct trace_instance *group, unsigned rays)
+{
+    const struct trace_scene *scene = s->scene;
+    struct trace_flat flat;
+    s->counters->instance_tests += (uint64_t)popcount(rays);
+    if (!scene->acquire_flat || !scene->acquire_flat(scene->user, group->object, &flat))
+        return;
+    for (unsigned m = rays; m; m &= m - 1u) {
+        const int r = first(m);
+        int found = s->found >> r & 1u;
+        struct trace_flat_ray fr = {s->p->org[r], s->p->dir[r], s->p->tmin[r], &s->ray[r],
+                                    &s->best[r], &s->box_limit[r], &found,
+                                    s->any_hit ? NULL : &s->hits[r]};
+        if (trace_flat_walk(&flat, scene->instances, group, &fr, s->counters))
+            s->done |= 1u << r;
+        if (found)
+            s->found |= 1u << r;
+    }
+}
+
 /* Instance slot `index` for the rays of mask `rays`. */
 static void visit_instance(struct packet_top *s, uint32_t index, unsigned rays)
 {
     const struct trace_scene *scene = s->scene;
+    if (scene->instances[index].member_count) {
+        visit_group(s, &scene->instances[index], rays);
+        return;
+    }
     const struct trace_kernels *k = s->kernels;
     struct trace_scene_counters *counters = s->counters;
     const struct trace_instance *inst = &scene->instances[index];
@@ -120,7 +147,8 @@ static void visit_instance(struct packet_top *s, uint32_t index, unsigned rays)
         const int r = first(m);
         struct trace_scene_hit *hit = &s->hits[r];
         const int found = s->found >> r & 1u;
-        if (found && !(h[r].t < s->best[r] || index < hit->instance))
+        if (found && !(h[r].t < s->best[r] ||
+                       inst->instance_id < trace_scene_hit_id(scene, hit)))
             continue;
         s->best[r] = h[r].t;
         s->box_limit[r] = h[r].t * ISECT_BOX_FAR_SCALE;

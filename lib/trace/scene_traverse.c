@@ -5,6 +5,7 @@
 #include "trace/scene_traverse.h"
 
 #include "base/atomic.h"
+#include "trace/flat_walk.h"
 #include "trace/intersect.h"
 
 #include <math.h>
@@ -84,11 +85,27 @@ struct top_state {
     int found;
 };
 
+/* A flattened hierarchy in slot `index` (flat_walk.h): the same answers
+ * as its members visited as instances. */
+static int visit_group(struct top_state *s, const struct trace_instance *group)
+{
+    const struct trace_scene *scene = s->scene;
+    struct trace_flat flat;
+    s->counters->instance_tests++;
+    if (!scene->acquire_flat || !scene->acquire_flat(scene->user, group->object, &flat))
+        return 0;
+    struct trace_flat_ray r = {s->org, s->dir, s->tmin, &s->ray, &s->best, &s->box_limit,
+                               &s->found, s->any_hit ? NULL : s->hit};
+    return trace_flat_walk(&flat, scene->instances, group, &r, s->counters);
+}
+
 /* The instance in slot `index` of scene->instances.  Returns 1 when an
  * any-hit walk has its hit. */
 static int visit_instance(struct top_state *s, uint32_t index)
 {
     const struct trace_scene *scene = s->scene;
+    if (scene->instances[index].member_count)
+        return visit_group(s, &scene->instances[index]);
     const struct trace_kernels *kernels = s->kernels;
     struct trace_scene_counters *counters = s->counters;
     const struct trace_instance *inst = &scene->instances[index];
@@ -119,7 +136,9 @@ static int visit_instance(struct top_state *s, uint32_t index)
      * object go to the lower primitive: hits do not depend on the
      * top-level tree nor on the order of visits (an instance's hit at
      * the current best still comes back, with the limit one ulp above
-     * it, and then the lower index wins). */
+     * it, and then the lower index wins).  The index compared is the
+     * instance id (the order of the committed list), which slots follow
+     * except for a flattened hierarchy's members (flat_walk.h). */
     float limit = s->found ? isect_next_up(s->best) : s->best;
     struct trace_hit h;
     int got = wide ? kernels->closest4(view.wide, view.bvh, view.tri, &o_ray, limit, &h,
@@ -129,7 +148,8 @@ static int visit_instance(struct top_state *s, uint32_t index)
         trace_scene_count_rays(counters, view.ray_count, tests_before,
                                    wide ? view.wide->width : 1, 1);
     struct trace_scene_hit *hit = s->hit;
-    if (got && (!s->found || h.t < s->best || index < hit->instance)) {
+    if (got && (!s->found || h.t < s->best ||
+                inst->instance_id < trace_scene_hit_id(scene, hit))) {
         s->best = h.t;
         s->box_limit = s->best * ISECT_BOX_FAR_SCALE;
         s->found = 1;

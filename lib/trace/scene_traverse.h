@@ -30,7 +30,16 @@ struct trace_instance {
     double world_to_object[12];
     uint32_t instance_id;      /* reported in hits */
     void *object;              /* opaque, handed to the acquire callback */
+    /* A flattened nested hierarchy (trace/flat_walk.h) when member_count
+     * is not 0: world_to_object is then the inverse of its root's matrix,
+     * object is handed to acquire_flat, and its members are the slots
+     * member_base .. member_base + member_count - 1 of the instances
+     * array, which no top-level leaf names (hits report them). */
+    uint32_t member_base;
+    uint32_t member_count;
 };
+
+struct trace_flat;
 
 struct trace_object_view {
     const struct bvh *bvh;
@@ -60,6 +69,9 @@ struct trace_scene {
      * triangles), walked when kernels has a wide walk (wide_width != 0):
      * the same answers as the binary walk. */
     const struct bvh4 *top_wide;
+    /* Fills *flat for a flattened hierarchy's object (trace_instance);
+     * 0 when it cannot be had (the group is skipped). */
+    int (*acquire_flat)(void *user, void *object, struct trace_flat *flat);
 };
 
 struct trace_scene_hit {
@@ -67,7 +79,8 @@ struct trace_scene_hit {
     float u;
     float v;
     uint32_t prim;     /* primitive index inside the object */
-    uint32_t instance; /* index into trace_scene.instances */
+    uint32_t instance; /* index into trace_scene.instances (a member slot for a
+                        * flattened hierarchy's hit) */
 };
 
 struct trace_scene_counters {
@@ -100,6 +113,13 @@ int trace_scene_closest(const struct trace_scene *scene, const float org[3], con
 /* Any hit with tmin <= t < tmax; returns 1 on the first found. */
 int trace_scene_any(const struct trace_scene *scene, const float org[3], const float dir[3],
                     float tmin, float tmax, struct trace_scene_counters *counters);
+
+/* The instance id the tie rule compares for the hit's slot. */
+static inline uint32_t trace_scene_hit_id(const struct trace_scene *scene,
+                                          const struct trace_scene_hit *hit)
+{
+    return scene->instances[hit->instance].instance_id;
+}
 
 /*
  * Pieces of the single-ray walk that the packet walk (packet_scene.c)
