@@ -153,9 +153,8 @@ static inline unsigned packet_walk8(const struct bvh4 *wide, struct packet_state
     unsigned rays = active;
     unsigned done = 0;
     const int r0 = __builtin_ctz(active);
-    /* Locals, not loads through p, which the leaves write. */
-    const int near_row[3] = {p->near_row[r0][0], p->near_row[r0][1], p->near_row[r0][2]};
-    const int far_row[3] = {p->far_row[r0][0], p->far_row[r0][1], p->far_row[r0][2]};
+    const int *near_row = p->near_row[r0];
+    const int *far_row = p->far_row[r0];
     for (;;) {
         if ((unsigned)__builtin_popcount(rays) < hybrid) {
             for (unsigned m = rays; m; m &= m - 1u) {
