@@ -19,6 +19,17 @@
 /* Rays per work item of a query batch. */
 #define RENDER_QUERY_CHUNK 1024
 
+/* A structure a render thread built on first use: counted for the
+ * frame's statistics (RT_OBJECTS_BUILT, build time). */
+static void count_build(struct render_pass *sh, int built_now, double start)
+{
+    if (built_now) {
+        rt_atomic_add_fetch_relaxed(&sh->builds, 1);
+        rt_atomic_add_fetch_relaxed(&sh->build_us,
+                                    (uint64_t)((rt_now_ms() - start) * 1000.0));
+    }
+}
+
 static int acquire_object(void *user, void *object, struct trace_object_view *view)
 {
     struct render_pass *sh = user;
@@ -43,11 +54,7 @@ static int acquire_object(void *user, void *object, struct trace_object_view *vi
         rt_atomic_store_relaxed(&sh->failed, 1);
         return 0;
     }
-    if (built_now) {
-        rt_atomic_add_fetch_relaxed(&sh->builds, 1);
-        rt_atomic_add_fetch_relaxed(&sh->build_us,
-                                    (uint64_t)((rt_now_ms() - start) * 1000.0));
-    }
+    count_build(sh, built_now, start);
     view->bvh = &accel->bvh;
     view->tri = accel->tri;
     view->wide = &accel->wide;
@@ -68,11 +75,7 @@ static int acquire_flat(void *user, void *object, struct trace_flat *flat)
             rt_atomic_store_relaxed(&sh->failed, 1);
             return 0;
         }
-        if (built_now) {
-            rt_atomic_add_fetch_relaxed(&sh->builds, 1);
-            rt_atomic_add_fetch_relaxed(&sh->build_us,
-                                        (uint64_t)((rt_now_ms() - start) * 1000.0));
-        }
+        count_build(sh, built_now, start);
     }
     flat->bvh = &a->bvh;
     flat->tri = a->tri;
