@@ -319,7 +319,7 @@ void gl_shade_hit(const struct shade_context *sc, const struct trace_scene_hit *
         if (mesh->texcoord_q)
             for (int i = 0; i < 3; i++)
                 q[i] = mesh->texcoord_q[t.v[i]];
-        if (surface_texel_q(sc, hit, t.mat->texture, coords, mesh->texcoord_q ? q : NULL, ng,
+        if (surface_texel(sc, hit, t.mat->texture, coords, mesh->texcoord_q ? q : NULL, ng,
                             dir, width, tex))
             texture_environment(t.mat, tex, c);
     }

@@ -488,32 +488,9 @@ void surface_fetch_colour(const struct shade_context *sc, const struct trace_sce
                       s->ambient, s->diffuse);
 }
 
-int surface_texel_q(const struct shade_context *sc, const struct trace_scene_hit *hit,
-                    uint32_t name, const float vertex_st[3][2], const float vertex_q[3],
-                    const float ng[3], const float dir[3], float width, float texel[4])
-{
-    if (!vertex_q)
-        return surface_texel(sc, hit, name, vertex_st, ng, dir, width, texel);
-    const struct scene_texture *tex = scene_textures_lookup(sc->textures, name);
-    if (!tex || !tex->texels)
-        return 0;
-    const struct scene_instance *inst = shade_hit_instance(sc, hit);
-    const struct scene_mesh *mesh = &inst->object->mesh;
-    const uint32_t *v = &mesh->indices[3 * hit->prim];
-    const float *const vst[3] = {vertex_st[0], vertex_st[1], vertex_st[2]};
-    float st[2], lod_st[3][2];
-    projective_st(vst, vertex_q, 1.0f - hit->u - hit->v, hit->u, hit->v, st, lod_st);
-    const float *const lst[3] = {lod_st[0], lod_st[1], lod_st[2]};
-    float lambda = -INFINITY;
-    if (tex->min_filter != tex->mag_filter)
-        lambda = texture_lod(tex, inst, mesh, v, lst, ng, dir, width);
-    scene_texture_sample_lod(tex, lambda, st[0], st[1], texel);
-    return 1;
-}
-
 int surface_texel(const struct shade_context *sc, const struct trace_scene_hit *hit,
-                  uint32_t name, const float vertex_st[3][2], const float ng[3],
-                  const float dir[3], float width, float texel[4])
+                  uint32_t name, const float vertex_st[3][2], const float vertex_q[3],
+                  const float ng[3], const float dir[3], float width, float texel[4])
 {
     const struct scene_texture *tex = scene_textures_lookup(sc->textures, name);
     if (!tex || !tex->texels)
@@ -523,12 +500,19 @@ int surface_texel(const struct shade_context *sc, const struct trace_scene_hit *
     const uint32_t *v = &mesh->indices[3 * hit->prim];
     const float b1 = hit->u, b2 = hit->v, b0 = 1.0f - hit->u - hit->v;
     const float *const vst[3] = {vertex_st[0], vertex_st[1], vertex_st[2]};
-    float st[2];
-    for (int k = 0; k < 2; k++)
-        st[k] = b0 * vst[0][k] + b1 * vst[1][k] + b2 * vst[2][k];
+    float st[2], lod_st[3][2];
+    const float *lst[3] = {vst[0], vst[1], vst[2]};
+    if (vertex_q) {
+        projective_st(vst, vertex_q, b0, b1, b2, st, lod_st);
+        for (int k = 0; k < 3; k++)
+            lst[k] = lod_st[k];
+    } else {
+        for (int k = 0; k < 2; k++)
+            st[k] = b0 * vst[0][k] + b1 * vst[1][k] + b2 * vst[2][k];
+    }
     float lambda = -INFINITY;
     if (tex->min_filter != tex->mag_filter)
-        lambda = texture_lod(tex, inst, mesh, v, vst, ng, dir, width);
+        lambda = texture_lod(tex, inst, mesh, v, lst, ng, dir, width);
     scene_texture_sample_lod(tex, lambda, st[0], st[1], texel);
     return 1;
 }
