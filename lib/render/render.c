@@ -14,6 +14,7 @@
 #include "render/blend.h"
 #include "render/raster.h"
 #include "render/shade.h"
+#include "render/surface.h"
 #include "trace/packet_scene.h"
 
 /* Rays per work item of a query batch. */
@@ -441,6 +442,7 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
 void render_tile(struct render_pass *pass, uint32_t tile, int worker)
 {
     const struct render_state *st = pass->job->state;
+    struct surface_cache cache_entry = {0};
     struct shade_context sc = {st,
                                pass->job->frame,
                                &pass->scene,
@@ -448,7 +450,8 @@ void render_tile(struct render_pass *pass, uint32_t tile, int worker)
                                pass->job->textures,
                                pass->clipping,
                                pass->see_through,
-                               NULL};
+                               NULL,
+                               &cache_entry};
     const int *vp = st->viewport;
     int x0 = (int)(tile % (uint32_t)pass->tiles_x) * RENDER_TILE_SIZE;
     int y0 = (int)(tile / (uint32_t)pass->tiles_x) * RENDER_TILE_SIZE;

@@ -25,6 +25,10 @@ struct shade_context {
      * instead of tracing again.  The same hit bit for bit
      * (trace/packet_scene.h). */
     const struct shade_primed *primed;
+    /* NULL, or the tile's cache of what surface.c derives from a hit's
+     * triangle alone (surface.h, surface_cache): writable through a
+     * const context, as it only remembers results. */
+    struct surface_cache *cache;
 };
 
 struct shade_primed {

@@ -44,19 +44,41 @@ static void cross3d(const double a[3], const double b[3], double out[3])
     out[2] = a[0] * b[1] - a[1] * b[0];
 }
 
-/* The level-0 texels spanned by the in-plane vector e of the triangle
+/* The level-0 texel vector of the in-plane vector e of the triangle
  * with world edges w1, w2 (normal nn = w1 x w2, |nn|^2 = nn2) and texel
  * edges a1, a2: e = alpha w1 + beta w2 maps to alpha a1 + beta a2. */
-static double texel_length(const double e[3], const double w1[3], const double w2[3],
-                           const double nn[3], double nn2, const double a1[2],
-                           const double a2[2])
+static void texel_vector(const double e[3], const double w1[3], const double w2[3],
+                         const double nn[3], double nn2, const double a1[2], const double a2[2],
+                         double out[2])
 {
     double ew2[3], w1e[3];
     cross3d(e, w2, ew2);
     cross3d(w1, e, w1e);
     const double alpha = dot3d(ew2, nn) / nn2, beta = dot3d(w1e, nn) / nn2;
-    return hypot(alpha * a1[0] + beta * a2[0], alpha * a1[1] + beta * a2[1]);
+    out[0] = alpha * a1[0] + beta * a2[0];
+    out[1] = alpha * a1[1] + beta * a2[1];
 }
+
+/* The cache entry of the hit's triangle (surface_cache), emptied when it
+ * held another one; NULL without a cache. */
+static struct surface_cache *triangle_cache(const struct shade_context *sc,
+                                            const struct scene_instance *inst, uint32_t prim)
+{
+    struct surface_cache *c = sc->cache;
+    if (c && (c->inst != inst || c->prim != prim)) {
+        c->inst = inst;
+        c->prim = prim;
+        c->normal = 0;
+        c->geometry = 0;
+        c->tex = NULL;
+    }
+    return c;
+}
+
+/* Relative margin by which one footprint axis must win on squared
+ * lengths before the other's hypot is left out: far above the few
+ * roundings (some 1e-16 each) between the squares and the hypots. */
+#define LOD_AXIS_MARGIN 1e-6
 
 /*
  * The texture level of detail at a hit by ray cones (Akenine-Möller et
@@ -87,31 +109,60 @@ static double texel_length(const double e[3], const double w1[3], const double w
  * texture area (constant coordinates) gives -inf, a magnification; one
  * without world area +inf, the last level; 0 / 0 a NaN, which the
  * sampler takes as a magnification.
+ *
+ * What the sampler does with lambda is all that counts
+ * (scene_texture_sample_lod), so where it cannot matter the work is left
+ * out, each step giving the lookup the full computation gives: the
+ * triangle's edges, normal and texel edges come from the tile's cache
+ * (surface_cache) when the last hit was on the same triangle; the hypot
+ * of an axis that loses the max by far is not taken (squared lengths
+ * decide); and a footprint of at most one texel (log2 <= 0, a
+ * magnification whatever the filters) or of at least 2^(q + 2) texels
+ * (beyond the last level q) returns -inf or +inf without the log2.
  */
-static float texture_lod(const struct scene_texture *tex, const struct scene_instance *inst,
-                         const struct scene_mesh *mesh, const uint32_t v[3],
-                         const float *const st[3], const float ng[3], const float dir[3],
-                         float width)
+static float texture_lod(const struct shade_context *sc, const struct scene_texture *tex,
+                         const struct scene_instance *inst, const struct scene_mesh *mesh,
+                         uint32_t prim, const uint32_t v[3], const float *const st[3],
+                         const float ng[3], const float dir[3], float width)
 {
-    const float *p0 = &mesh->positions[3 * v[0]];
-    const float *p1 = &mesh->positions[3 * v[1]];
-    const float *p2 = &mesh->positions[3 * v[2]];
-    const float *t0 = st[0], *t1 = st[1], *t2 = st[2];
-    double e1[3], e2[3], w1[3], w2[3], nn[3];
-    for (int k = 0; k < 3; k++) {
-        e1[k] = (double)p1[k] - (double)p0[k];
-        e2[k] = (double)p2[k] - (double)p0[k];
+    struct surface_cache scratch, *c = triangle_cache(sc, inst, prim);
+    if (!c) {
+        c = &scratch;
+        c->geometry = 0;
+        c->tex = NULL;
     }
-    mat4_transform_vector(inst->object_to_world, e1, w1);
-    mat4_transform_vector(inst->object_to_world, e2, w2);
-    cross3d(w1, w2, nn);
-    const double nn2 = dot3d(nn, nn);
-    const double p_a = sqrt(nn2);
-    const double a1[2] = {((double)t1[0] - (double)t0[0]) * tex->width,
-                          ((double)t1[1] - (double)t0[1]) * tex->height};
-    const double a2[2] = {((double)t2[0] - (double)t0[0]) * tex->width,
-                          ((double)t2[1] - (double)t0[1]) * tex->height};
-    const double t_a = fabs(a1[0] * a2[1] - a2[0] * a1[1]);
+    if (!c->geometry) {
+        const float *p0 = &mesh->positions[3 * v[0]];
+        const float *p1 = &mesh->positions[3 * v[1]];
+        const float *p2 = &mesh->positions[3 * v[2]];
+        double e1[3], e2[3];
+        for (int k = 0; k < 3; k++) {
+            e1[k] = (double)p1[k] - (double)p0[k];
+            e2[k] = (double)p2[k] - (double)p0[k];
+        }
+        mat4_transform_vector(inst->object_to_world, e1, c->w1);
+        mat4_transform_vector(inst->object_to_world, e2, c->w2);
+        cross3d(c->w1, c->w2, c->nn);
+        c->nn2 = dot3d(c->nn, c->nn);
+        c->p_a = sqrt(c->nn2);
+        for (int k = 0; k < 3; k++)
+            c->n[k] = c->nn[k] / c->p_a;
+        c->geometry = 1;
+    }
+    if (c->tex != tex || memcmp(c->st[0], st[0], sizeof(c->st[0])) ||
+        memcmp(c->st[1], st[1], sizeof(c->st[1])) || memcmp(c->st[2], st[2], sizeof(c->st[2]))) {
+        const float *t0 = st[0], *t1 = st[1], *t2 = st[2];
+        c->a1[0] = ((double)t1[0] - (double)t0[0]) * tex->width;
+        c->a1[1] = ((double)t1[1] - (double)t0[1]) * tex->height;
+        c->a2[0] = ((double)t2[0] - (double)t0[0]) * tex->width;
+        c->a2[1] = ((double)t2[1] - (double)t0[1]) * tex->height;
+        c->t_a = fabs(c->a1[0] * c->a2[1] - c->a2[0] * c->a1[1]);
+        for (int i = 0; i < 3; i++)
+            memcpy(c->st[i], st[i], sizeof(c->st[i]));
+        c->tex = tex;
+    }
+    const double *w1 = c->w1, *w2 = c->w2, *nn = c->nn, *n = c->n, *a1 = c->a1, *a2 = c->a2;
+    const double nn2 = c->nn2, p_a = c->p_a, t_a = c->t_a;
     const double d[3] = {dir[0], dir[1], dir[2]};
     const double dir_len = sqrt(dot3d(d, d));
     double cosine = fabs((double)ng[0] * d[0] + (double)ng[1] * d[1] + (double)ng[2] * d[2]) /
@@ -122,9 +173,7 @@ static float texture_lod(const struct scene_texture *tex, const struct scene_ins
         return (float)(0.5 * log2(t_a / p_a) + log2((double)width / cosine));
     /* The footprint's axes: e1 along the ray's projection into the plane
      * (any in-plane direction when the ray meets the plane head-on). */
-    double n[3], along[3], across[3];
-    for (int k = 0; k < 3; k++)
-        n[k] = nn[k] / p_a;
+    double along[3], across[3];
     const double dn = dot3d(d, n) / dir_len;
     for (int k = 0; k < 3; k++)
         along[k] = d[k] / dir_len - dn * n[k];
@@ -137,9 +186,26 @@ static float texture_lod(const struct scene_texture *tex, const struct scene_ins
     for (int k = 0; k < 3; k++)
         along[k] /= along_len;
     cross3d(n, along, across);
-    const double major = texel_length(along, w1, w2, nn, nn2, a1, a2) * (double)width / cosine;
-    const double minor = texel_length(across, w1, w2, nn, nn2, a1, a2) * (double)width;
-    return (float)log2(fmax(major, minor));
+    double ja[2], jb[2];
+    texel_vector(along, w1, w2, nn, nn2, a1, a2, ja);
+    texel_vector(across, w1, w2, nn, nn2, a1, a2, jb);
+    /* major = hypot(ja) width / cosine, minor = hypot(jb) width: major
+     * wins when |ja|^2 > |jb|^2 cosine^2 by the margin, minor when the
+     * reverse holds; NaNs fail both tests and take the full max. */
+    const double sa = ja[0] * ja[0] + ja[1] * ja[1], sb = jb[0] * jb[0] + jb[1] * jb[1];
+    const double sbc = sb * (cosine * cosine);
+    double x;
+    if (sa > sbc * (1.0 + LOD_AXIS_MARGIN))
+        x = hypot(ja[0], ja[1]) * (double)width / cosine;
+    else if (sbc > sa * (1.0 + LOD_AXIS_MARGIN))
+        x = hypot(jb[0], jb[1]) * (double)width;
+    else
+        x = fmax(hypot(ja[0], ja[1]) * (double)width / cosine, hypot(jb[0], jb[1]) * (double)width);
+    if (!(x > 1.0))
+        return -INFINITY; /* log2(x) <= 0 or NaN: a magnification */
+    if (x >= (double)(1u << (tex->level_count + 1)))
+        return INFINITY; /* log2(x) >= q + 2: level q (or a non-mipmapped minification) */
+    return (float)log2(x);
 }
 
 /*
@@ -184,7 +250,8 @@ static void projective_st(const float *const vst[3], const float q[3], float b0,
  * gives the same lookup, and none is computed.
  */
 static void apply_texture(const struct shade_context *sc, const struct scene_instance *inst,
-                          const struct scene_mesh *mesh, const uint32_t v[3], float b0,
+                          const struct scene_mesh *mesh, uint32_t prim, const uint32_t v[3],
+                          float b0,
                           float b1, float b2, const float ng[3], const float dir[3],
                           float width, uint32_t name, float ambient[4], float diffuse[4])
 {
@@ -203,11 +270,11 @@ static void apply_texture(const struct shade_context *sc, const struct scene_ins
         projective_st(vst, q, b0, b1, b2, st, lod_st);
         const float *const lst[3] = {lod_st[0], lod_st[1], lod_st[2]};
         if (tex->min_filter != tex->mag_filter)
-            lambda = texture_lod(tex, inst, mesh, v, lst, ng, dir, width);
+            lambda = texture_lod(sc, tex, inst, mesh, prim, v, lst, ng, dir, width);
     } else {
         interpolate(mesh->texcoords, 2, v, b0, b1, b2, 2, st);
         if (tex->min_filter != tex->mag_filter)
-            lambda = texture_lod(tex, inst, mesh, v, vst, ng, dir, width);
+            lambda = texture_lod(sc, tex, inst, mesh, prim, v, vst, ng, dir, width);
     }
     scene_texture_sample_lod(tex, lambda, st[0], st[1], texel);
     for (int k = 0; k < 3; k++) {
@@ -326,20 +393,34 @@ static void hit_triangle(const struct shade_context *sc, const struct trace_scen
 
 /* The unit geometric normal facing the ray along dir, whether the ray
  * hit the front face, and the shading normal on the same side. */
-static void hit_normals(const struct hit_triangle *t, const float dir[3], float ng[3],
-                        float n[3], int *front)
+static void hit_normals(const struct shade_context *sc, const struct hit_triangle *t,
+                        uint32_t prim, const float dir[3], float ng[3], float n[3], int *front)
 {
     const struct scene_mesh *mesh = t->mesh;
     const uint32_t *v = t->v;
-    const float *p0 = &mesh->positions[3 * v[0]];
-    const float *p1 = &mesh->positions[3 * v[1]];
-    const float *p2 = &mesh->positions[3 * v[2]];
-    float e1[3], e2[3], ngo[3];
-    vec3_sub(e1, p1, p0);
-    vec3_sub(e2, p2, p0);
-    vec3_cross(ngo, e1, e2);
-    transform_normal(t->inst->normal_to_world, ngo, ng);
-    if (!vec3_normalize(ng)) {
+    /* The triangle's unit normal, from the tile's cache when the last hit
+     * was on the same triangle (surface_cache). */
+    struct surface_cache *c = triangle_cache(sc, t->inst, prim);
+    int unit;
+    if (c && c->normal) {
+        memcpy(ng, c->ng, sizeof(c->ng));
+        unit = c->normal > 0;
+    } else {
+        const float *p0 = &mesh->positions[3 * v[0]];
+        const float *p1 = &mesh->positions[3 * v[1]];
+        const float *p2 = &mesh->positions[3 * v[2]];
+        float e1[3], e2[3], ngo[3];
+        vec3_sub(e1, p1, p0);
+        vec3_sub(e2, p2, p0);
+        vec3_cross(ngo, e1, e2);
+        transform_normal(t->inst->normal_to_world, ngo, ng);
+        unit = vec3_normalize(ng) != 0;
+        if (c) {
+            memcpy(c->ng, ng, sizeof(c->ng));
+            c->normal = unit ? 1 : -1;
+        }
+    }
+    if (!unit) {
         /* Sliver too thin for float: any unit vector facing the ray. */
         ng[0] = -dir[0];
         ng[1] = -dir[1];
@@ -426,7 +507,7 @@ void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit 
         norm = fmax(norm, fabs(m[k]) + fabs(m[4 + k]) + fabs(m[8 + k]));
     }
     s->p_error = (float)(0.5 * FLT_EPSILON * (max_world + norm * max_object) + FLT_MIN);
-    hit_normals(&t, dir, s->ng, s->n, &s->front);
+    hit_normals(sc, &t, hit->prim, dir, s->ng, s->n, &s->front);
 
     s->mat = mesh->materials[mesh->tri_material[hit->prim]];
     surface_resolve_material(&inst->appearance, &s->mat);
@@ -442,7 +523,7 @@ void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit 
         memcpy(s->mat.diffuse, c, sizeof(c));
     }
     if (s->mat.texture)
-        apply_texture(sc, inst, mesh, v, t.b0, t.b1, t.b2, s->ng, dir, width, s->mat.texture,
+        apply_texture(sc, inst, mesh, hit->prim, v, t.b0, t.b1, t.b2, s->ng, dir, width, s->mat.texture,
                       s->mat.ambient, s->mat.diffuse);
 }
 
@@ -459,7 +540,7 @@ void surface_fetch_colour(const struct shade_context *sc, const struct trace_sce
 {
     struct hit_triangle t;
     hit_triangle(sc, hit, &t);
-    hit_normals(&t, dir, s->ng, s->n, &s->front);
+    hit_normals(sc, &t, hit->prim, dir, s->ng, s->n, &s->front);
     const struct scene_material *m = &t.mesh->materials[t.mesh->tri_material[hit->prim]];
     const struct scene_material *call = &t.inst->appearance.material;
     const uint32_t k = m->inherit;
@@ -484,7 +565,7 @@ void surface_fetch_colour(const struct shade_context *sc, const struct trace_sce
                sizeof(s->diffuse));
     }
     if (texture)
-        apply_texture(sc, t.inst, t.mesh, t.v, t.b0, t.b1, t.b2, s->ng, dir, width, texture,
+        apply_texture(sc, t.inst, t.mesh, hit->prim, t.v, t.b0, t.b1, t.b2, s->ng, dir, width, texture,
                       s->ambient, s->diffuse);
 }
 
@@ -512,7 +593,7 @@ int surface_texel(const struct shade_context *sc, const struct trace_scene_hit *
     }
     float lambda = -INFINITY;
     if (tex->min_filter != tex->mag_filter)
-        lambda = texture_lod(tex, inst, mesh, v, lst, ng, dir, width);
+        lambda = texture_lod(sc, tex, inst, mesh, hit->prim, v, lst, ng, dir, width);
     scene_texture_sample_lod(tex, lambda, st[0], st[1], texel);
     return 1;
 }

@@ -11,6 +11,30 @@
 
 #include "render/shade.h"
 
+/*
+ * What surface.c computes from a hit's triangle (its instance and
+ * primitive) and not from the ray: the unit geometric normal in world
+ * space and the triangle-only part of the texture level of detail.  One
+ * per render thread and tile (render.c, shade_context.cache), for the
+ * last triangle shaded: neighbouring pixels mostly hit the same one, and
+ * a hit of another triangle replaces it.  The cached values are the ones
+ * the computation gives, bit for bit, so images do not depend on the
+ * order pixels are shaded in.
+ */
+struct scene_texture;
+struct surface_cache {
+    const struct scene_instance *inst; /* NULL: empty */
+    uint32_t prim;
+    int normal;   /* 0 not computed, 1 ng is the unit normal, -1 degenerate */
+    float ng[3];  /* unit geometric normal, world space, recorded winding */
+    int geometry; /* the level of detail's world edges below are set */
+    double w1[3], w2[3], nn[3], nn2, p_a, n[3];
+    /* The level of detail's texel edges of texture `tex` at coordinates st. */
+    const struct scene_texture *tex;
+    float st[3][2];
+    double a1[2], a2[2], t_a;
+};
+
 /* Surface data at a hit, in world space. */
 struct surface {
     float p[3];  /* hit point */
