@@ -209,16 +209,15 @@ static void unproject_cache_row(struct unproject_cache *c, int y)
 
 /* The unprojected centre of pixel (x, y), with x - x0 in
  * [0, RENDER_TILE_SIZE] and y - (the cache's row) in [0, UNPROJECT_ROWS);
- * 0 when it cannot be unprojected. */
-static int unproject_cached(const struct render_pass *sh, struct unproject_cache *c, int x, int y,
-                            double near_pt[3], double far_pt[3])
+ * NULL when it cannot be unprojected.  The point stays in the cache (no
+ * copy: a pixel reads three of them). */
+static const struct unproject_point *unproject_cached(const struct render_pass *sh,
+                                                      struct unproject_cache *c, int x, int y)
 {
     struct unproject_point *p = &c->rows[y - c->y][x - c->x0];
     if (p->state == 0)
         p->state = unproject(sh, x + 0.5, y + 0.5, p->near_pt, p->far_pt) ? 1 : -1;
-    memcpy(near_pt, p->near_pt, sizeof(p->near_pt));
-    memcpy(far_pt, p->far_pt, sizeof(p->far_pt));
-    return p->state > 0;
+    return p->state > 0 ? p : NULL;
 }
 
 /* fmax without the library call, for values that are never NaN on the
@@ -231,9 +230,10 @@ static double max_left(double x, double y)
 static int primary_ray(const struct render_pass *sh, struct unproject_cache *cache, int px,
                        int py, float org[3], float dir[3], float *tmax, struct shade_cone *cone)
 {
-    double near_pt[3], far_pt[3];
-    if (!unproject_cached(sh, cache, px, py, near_pt, far_pt))
+    const struct unproject_point *centre = unproject_cached(sh, cache, px, py);
+    if (!centre)
         return 0;
+    const double *near_pt = centre->near_pt, *far_pt = centre->far_pt;
     double d[3] = {far_pt[0] - near_pt[0], far_pt[1] - near_pt[1], far_pt[2] - near_pt[2]};
     double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     if (!(len > 0.0) || !isfinite(len))
@@ -250,11 +250,12 @@ static int primary_ray(const struct render_pass *sh, struct unproject_cache *cac
     double width = 0.0, growth = 0.0, spread = 0.0;
     int axis = 0;
     for (; axis < 2; axis++) {
-        double n_near[3], n_far[3];
-        if (!unproject_cached(sh, cache, px + (axis == 0), py + (axis == 1), n_near, n_far))
+        const struct unproject_point *next =
+            unproject_cached(sh, cache, px + (axis == 0), py + (axis == 1));
+        if (!next)
             break;
-        double w_near = distance_to_line(n_near, near_pt, d);
-        double w_far = distance_to_line(n_far, near_pt, d);
+        double w_near = distance_to_line(next->near_pt, near_pt, d);
+        double w_far = distance_to_line(next->far_pt, near_pt, d);
         width = max_left(width, w_near);
         growth = max_left(growth, w_far - w_near);
     }
