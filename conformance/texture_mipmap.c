@@ -587,6 +587,104 @@ static void reflection(void)
     CHECK_NO_ERR();
 }
 
+/* ---- the renderer's per-tile triangle cache ---------------------------------------- */
+
+#define CW 64
+#define CH 32
+
+/* Instances A and B of one quad, side by side, rendered into `out`
+ * (which: 1 A alone, 2 B alone, 3 both). */
+static void cache_pair(int which, float *out)
+{
+    rtBeginFrame();
+    if (which & 1) {
+        rtTranslatef(-0.05f, 0, -20);
+        rtRotatef(35, 0.3f, 1, 0);
+        rtScalef(1.4f, 1.4f, 1.4f);
+        rtInstantiateObject(SMALL);
+        rtLoadIdentity();
+    }
+    if (which & 2) {
+        rtTranslatef(2.45f, 0, -20);
+        rtRotatef(-40, 0.2f, 1, 0);
+        rtScalef(1.7f, 1.7f, 1.7f);
+        rtInstantiateObject(SMALL);
+        rtLoadIdentity();
+    }
+    rtFinish();
+    tu_render_float(CW, CH, out);
+    CHECK_NO_ERR();
+}
+
+/*
+ * The renderer remembers what it derived from the last triangle a tile
+ * shaded (its unit normal, the level of detail's edges: render/surface.h,
+ * surface_cache).  Two instances of one quad have the same triangle
+ * numbers under different matrices, and the pair meets inside a tile
+ * (x = 40 of 64 pixels, tiles are 16 wide): every pixel of the pair must
+ * be bit for bit the pixel of its instance rendered alone, in the
+ * fixed-function mode (level of detail) and under the eye light (normal
+ * and level of detail).  A cache keyed by the triangle number alone shades
+ * B's first pixels with A's normal and level of detail.
+ */
+static void triangle_cache(void)
+{
+    static float a[CW * CH * 4], b[CW * CH * 4], both[CW * CH * 4];
+    tu_section("two instances of one quad meeting inside a tile: each pixel as rendered alone");
+    frustum_camera(-0.25, 0.25, -0.125, 0.125, 1, 100);
+    upload_noise();
+    set_filters(RT_LINEAR_MIPMAP_LINEAR, RT_LINEAR);
+    define_quad(SMALL, TEX_NOISE, 1.0f, 0, 0.25f);
+    const float half[4] = {0.5f, 0.5f, 0.5f, 1.0f};
+    for (int mode = 0; mode < 2; mode++) {
+        rtShadingMode(mode ? RT_EYE_LIGHT : RT_FIXED_FUNCTION);
+        if (mode) { /* the eye light's cosine shows the normal */
+            rtNewObject(SMALL);
+            rtBindTexture(RT_TEXTURE_2D, TEX_NOISE);
+            texel_material();
+            rtMaterialfv(RT_FRONT_AND_BACK, RT_DIFFUSE, half);
+            rtEnable(RT_TEXTURE_2D);
+            rtBegin(RT_QUADS);
+            rtTexCoord2f(0, 0);
+            rtVertex3f(-1, -1, 0);
+            rtTexCoord2f(0.25f, 0);
+            rtVertex3f(1, -1, 0);
+            rtTexCoord2f(0.25f, 0.25f);
+            rtVertex3f(1, 1, 0);
+            rtTexCoord2f(0, 0.25f);
+            rtVertex3f(-1, 1, 0);
+            rtEnd();
+            rtDisable(RT_TEXTURE_2D);
+            rtEndObject();
+        }
+        cache_pair(1, a);
+        cache_pair(2, b);
+        cache_pair(3, both);
+        int from_a = 0, from_b = 0, differ = 0, meet = 0;
+        for (int j = 0; j < CH; j++)
+            for (int i = 0; i < CW; i++) {
+                const float *pa = &a[4 * (j * CW + i)], *pb = &b[4 * (j * CW + i)];
+                const float *p = &both[4 * (j * CW + i)];
+                const int in_a = pa[3] != 0.0f, in_b = pb[3] != 0.0f;
+                if (in_a == in_b)
+                    continue; /* neither, or both (not expected here) */
+                from_a += in_a;
+                from_b += in_b;
+                differ += memcmp(p, in_a ? pa : pb, 4 * sizeof(float)) != 0;
+                /* B right after A in a row of one tile (16 pixels wide) */
+                meet += in_b && i % 16 && a[4 * (j * CW + i - 1) + 3] != 0.0f &&
+                        b[4 * (j * CW + i - 1) + 3] == 0.0f;
+            }
+        printf("%s: %d pixels of A, %d of B, %d rows meeting inside a tile, %d differ\n",
+               mode ? "eye light" : "fixed function", from_a, from_b, meet, differ);
+        CHECK(from_a > CW * CH / 8 && from_b > CW * CH / 8);
+        CHECK(meet >= 8);
+        CHECK(differ == 0);
+    }
+    rtShadingMode(RT_FIXED_FUNCTION);
+    CHECK_NO_ERR();
+}
+
 int main(void)
 {
     RTcontext ctx = tu_make_context("threads=2");
@@ -597,6 +695,7 @@ int main(void)
     magnification();
     instance_scale();
     reflection();
+    triangle_cache();
     tu_destroy_context(ctx);
     return test_summary("texture_mipmap");
 }
