@@ -45,7 +45,7 @@ struct gl_triangle {
     const struct scene_instance *inst;
     const struct scene_mesh *mesh;
     const uint32_t *v;
-    const struct scene_material *mat; /* &resolved */
+    const struct scene_material *mat; /* the recorded one, or &resolved */
     struct scene_material resolved;   /* the recorded one with what it inherits */
     uint8_t flags;         /* with TRI_COLOR_MATERIAL as inherited from the call */
     const float *call_color; /* TRI_INHERIT_COLOR: the colour at the call, else NULL */
@@ -72,9 +72,16 @@ static void fetch_triangle(const struct shade_context *sc, const struct trace_sc
     t->inst = shade_hit_instance(sc, hit);
     t->mesh = &t->inst->object->mesh;
     t->v = &t->mesh->indices[3 * hit->prim];
-    t->resolved = t->mesh->materials[t->mesh->tri_material[hit->prim]];
-    surface_resolve_material(&t->inst->appearance, &t->resolved);
-    t->mat = &t->resolved;
+    /* A material that inherits nothing is used where it is recorded: the
+     * copy (some 260 bytes a hit) only for one completed from the call. */
+    const struct scene_material *recorded = &t->mesh->materials[t->mesh->tri_material[hit->prim]];
+    if (recorded->inherit) {
+        t->resolved = *recorded;
+        surface_resolve_material(&t->inst->appearance, &t->resolved);
+        t->mat = &t->resolved;
+    } else {
+        t->mat = recorded;
+    }
     t->flags = t->mesh->tri_flags[hit->prim];
     /* Recorded in a list before it set a colour or the RT_COLOR_MATERIAL
      * enable: the caller's (the instance keeps them), as GL. */

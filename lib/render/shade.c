@@ -56,7 +56,7 @@ static void local_whitted(const struct shade_context *sc, const struct surface *
 {
     const struct render_state *st = sc->state;
     for (int k = 0; k < 3; k++)
-        c[k] = s->mat.emission[k] + global_ambient[k] * s->mat.ambient[k];
+        c[k] = s->mat->emission[k] + global_ambient[k] * s->ambient[k];
     float view[3] = {-dir[0], -dir[1], -dir[2]};
     vec3_normalize(view);
     float origin[3];
@@ -89,7 +89,7 @@ static void local_whitted(const struct shade_context *sc, const struct surface *
             memcpy(shadow_dir, to_light, sizeof(shadow_dir));
             shadow_tmax = INFINITY;
         }
-        add_scaled(c, light->ambient, s->mat.ambient, attenuation);
+        add_scaled(c, light->ambient, s->ambient, attenuation);
         if (!vec3_normalize(to_light))
             continue;
         float n_dot_l = vec3_dot(s->n, to_light);
@@ -97,13 +97,13 @@ static void local_whitted(const struct shade_context *sc, const struct surface *
             continue;
         if (trace_scene_any(sc->scene, origin, shadow_dir, 0.0f, shadow_tmax, sc->counters))
             continue;
-        add_scaled(c, light->diffuse, s->mat.diffuse, attenuation * n_dot_l);
+        add_scaled(c, light->diffuse, s->diffuse, attenuation * n_dot_l);
         float h[3] = {to_light[0] + view[0], to_light[1] + view[1], to_light[2] + view[2]};
         if (vec3_normalize(h)) {
             float n_dot_h = vec3_dot(s->n, h);
             if (n_dot_h > 0.0f) {
-                float spec = s->mat.shininess > 0.0f ? powf(n_dot_h, s->mat.shininess) : 1.0f;
-                add_scaled(c, light->specular, s->mat.specular, attenuation * spec);
+                float spec = s->mat->shininess > 0.0f ? powf(n_dot_h, s->mat->shininess) : 1.0f;
+                add_scaled(c, light->specular, s->mat->specular, attenuation * spec);
             }
         }
     }
@@ -186,12 +186,12 @@ void shade_hit(const struct shade_context *sc, const float org[3], const float d
     struct surface s;
     surface_fetch(sc, &hit, dir, at_hit.width, &s);
 
-    const int unlit = st->lighting_used && !s.mat.lighting;
+    const int unlit = st->lighting_used && !s.mat->lighting;
     if (unlit)
-        memcpy(c, s.mat.diffuse, sizeof(c));
+        memcpy(c, s.diffuse, sizeof(c));
     else
         local_whitted(sc, &s, global_ambient, unit_dir, c);
-    float kr = s.mat.reflectivity, kt = s.mat.transparency;
+    float kr = s.mat->reflectivity, kt = s.mat->transparency;
     if (depth < st->max_depth && (kr > 0.0f || kt > 0.0f)) {
         float out[4], next_org[3], next_dir[3];
         float local_weight = 1.0f - kt;
@@ -207,7 +207,7 @@ void shade_hit(const struct shade_context *sc, const float org[3], const float d
                 c[k] += kr * out[k];
         }
         if (kt > 0.0f) {
-            float eta = s.front ? 1.0f / s.mat.ior : s.mat.ior;
+            float eta = s.front ? 1.0f / s.mat->ior : s.mat->ior;
             float below[3] = {-s.ng[0], -s.ng[1], -s.ng[2]};
             if (refract_dir(unit_dir, s.n, eta, next_dir) && vec3_dot(next_dir, s.ng) < 0.0f) {
                 shade_offset_point(s.p, below, s.p_error, next_org);

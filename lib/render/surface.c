@@ -509,22 +509,29 @@ void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit 
     s->p_error = (float)(0.5 * FLT_EPSILON * (max_world + norm * max_object) + FLT_MIN);
     hit_normals(sc, &t, hit->prim, dir, s->ng, s->n, &s->front);
 
-    s->mat = mesh->materials[mesh->tri_material[hit->prim]];
-    surface_resolve_material(&inst->appearance, &s->mat);
+    const struct scene_material *recorded = &mesh->materials[mesh->tri_material[hit->prim]];
+    if (recorded->inherit) {
+        s->resolved = *recorded;
+        surface_resolve_material(&inst->appearance, &s->resolved);
+        s->mat = &s->resolved;
+    } else {
+        s->mat = recorded;
+    }
     /* Unlit in the eye-light and Whitted modes (render_state.lighting_used,
      * shade.c): the primitive shows its colour, which the ambient and
      * diffuse material carry from here on, as under RT_COLOR_MATERIAL, so
      * that the texture modulates it and blending takes its alpha. */
-    const int unlit = sc->state->lighting_used && !s->mat.lighting &&
+    const int unlit = sc->state->lighting_used && !s->mat->lighting &&
                       sc->state->shading != RENDER_FIXED_FUNCTION;
-    float c[4];
-    if (hit_color_material(&t, unlit, c)) {
-        memcpy(s->mat.ambient, c, sizeof(c));
-        memcpy(s->mat.diffuse, c, sizeof(c));
+    if (hit_color_material(&t, unlit, s->ambient)) {
+        memcpy(s->diffuse, s->ambient, sizeof(s->diffuse));
+    } else {
+        memcpy(s->ambient, s->mat->ambient, sizeof(s->ambient));
+        memcpy(s->diffuse, s->mat->diffuse, sizeof(s->diffuse));
     }
-    if (s->mat.texture)
-        apply_texture(sc, inst, mesh, hit->prim, v, t.b0, t.b1, t.b2, s->ng, dir, width, s->mat.texture,
-                      s->mat.ambient, s->mat.diffuse);
+    if (s->mat->texture)
+        apply_texture(sc, inst, mesh, hit->prim, v, t.b0, t.b1, t.b2, s->ng, dir, width,
+                      s->mat->texture, s->ambient, s->diffuse);
 }
 
 /*

@@ -42,7 +42,14 @@ struct surface {
     float n[3];  /* shading normal, unit, same side as ng */
     float p_error; /* bound on |p - exact point on the surface| */
     int front;   /* the ray hit the front face (counter-clockwise side) */
-    struct scene_material mat;
+    /* The ambient and diffuse colours with vertex colours and the texture
+     * applied; the rest of the material in mat: the recorded one, or
+     * `resolved` when it inherits from the call (the 260-byte copy only
+     * then). */
+    float ambient[4];
+    float diffuse[4];
+    const struct scene_material *mat;
+    struct scene_material resolved;
 };
 
 /* Completes a material recorded in a display list with the properties it
