@@ -17,6 +17,16 @@
 #include "render/surface.h"
 #include "trace/packet_scene.h"
 
+/* Primary rays pair their double arithmetic in SSE2 lanes (near and far
+ * point, two neighbours): IEEE operations lane by lane, the same floats as
+ * one at a time. */
+#if defined(__SSE2__) && !defined(RT_NO_SIMD)
+#include <emmintrin.h>
+#define RENDER_PAIRS 1
+#else
+#define RENDER_PAIRS 0
+#endif
+
 /* Rays per work item of a query batch. */
 #define RENDER_QUERY_CHUNK 1024
 
@@ -123,22 +133,69 @@ static int unproject(const struct render_pass *sh, double x, double y, double ne
 {
     const int *vp = sh->job->state->viewport;
     double ndc_near[3] = {2.0 * x / vp[2] - 1.0, 2.0 * y / vp[3] - 1.0, -1.0};
+#if RENDER_PAIRS
+    /* mat4_project of the near (lane 0, z = -1) and far (lane 1, z = 1)
+     * points together: each sum in mat4_project's order, ((m0 x + m1 y) +
+     * m2 z) + m3, the shared first sum once. */
+    const double *m = sh->inv_projection;
+    const double nx = ndc_near[0], ny = ndc_near[1];
+    const __m128d z = _mm_set_pd(1.0, -1.0);
+    const __m128d w = _mm_add_pd(
+        _mm_add_pd(_mm_set1_pd(m[3] * nx + m[7] * ny), _mm_mul_pd(_mm_set1_pd(m[11]), z)),
+        _mm_set1_pd(m[15]));
+    double wl[2], out[3][2];
+    _mm_storeu_pd(wl, w);
+    if (wl[0] == 0.0 || wl[1] == 0.0)
+        return 0;
+    for (int r = 0; r < 3; r++) {
+        __m128d v = _mm_add_pd(_mm_set1_pd(m[r] * nx + m[4 + r] * ny),
+                               _mm_mul_pd(_mm_set1_pd(m[8 + r]), z));
+        _mm_storeu_pd(out[r], _mm_div_pd(_mm_add_pd(v, _mm_set1_pd(m[12 + r])), w));
+    }
+    for (int r = 0; r < 3; r++) {
+        near_pt[r] = out[r][0];
+        far_pt[r] = out[r][1];
+    }
+    return isfinite(near_pt[0]) && isfinite(near_pt[1]) && isfinite(near_pt[2]) &&
+           isfinite(far_pt[0]) && isfinite(far_pt[1]) && isfinite(far_pt[2]);
+#else
     double ndc_far[3] = {ndc_near[0], ndc_near[1], 1.0};
     return mat4_project(sh->inv_projection, ndc_near, near_pt) &&
            mat4_project(sh->inv_projection, ndc_far, far_pt);
+#endif
 }
 
-/* Distance from q to the line through p along the unit vector d. */
-static double distance_to_line(const double q[3], const double p[3], const double d[3])
+/* Distances from q0 and q1 to the line through p along the unit vector
+ * d: the same operations for each, in this order. */
+static void distances_to_line(const double q0[3], const double q1[3], const double p[3],
+                              const double d[3], double out[2])
 {
-    double a[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]};
-    double along = a[0] * d[0] + a[1] * d[1] + a[2] * d[2];
-    double r2 = 0.0;
+#if RENDER_PAIRS
+    __m128d a[3];
+    for (int k = 0; k < 3; k++)
+        a[k] = _mm_sub_pd(_mm_set_pd(q1[k], q0[k]), _mm_set1_pd(p[k]));
+    const __m128d along = _mm_add_pd(_mm_add_pd(_mm_mul_pd(a[0], _mm_set1_pd(d[0])),
+                                                _mm_mul_pd(a[1], _mm_set1_pd(d[1]))),
+                                     _mm_mul_pd(a[2], _mm_set1_pd(d[2])));
+    __m128d r2 = _mm_setzero_pd();
     for (int k = 0; k < 3; k++) {
-        double perp = a[k] - along * d[k];
-        r2 += perp * perp;
+        const __m128d perp = _mm_sub_pd(a[k], _mm_mul_pd(along, _mm_set1_pd(d[k])));
+        r2 = _mm_add_pd(r2, _mm_mul_pd(perp, perp));
     }
-    return sqrt(r2);
+    _mm_storeu_pd(out, _mm_sqrt_pd(r2));
+#else
+    const double *q[2] = {q0, q1};
+    for (int i = 0; i < 2; i++) {
+        double a[3] = {q[i][0] - p[0], q[i][1] - p[1], q[i][2] - p[2]};
+        double along = a[0] * d[0] + a[1] * d[1] + a[2] * d[2];
+        double r2 = 0.0;
+        for (int k = 0; k < 3; k++) {
+            double perp = a[k] - along * d[k];
+            r2 += perp * perp;
+        }
+        out[i] = sqrt(r2);
+    }
+#endif
 }
 
 /*
@@ -248,21 +305,19 @@ static int primary_ray(const struct render_pass *sh, struct unproject_cache *cac
      * larger of the two quotients is the quotient of the larger (a
      * correctly rounded division by len > 0 keeps the order). */
     double width = 0.0, growth = 0.0, spread = 0.0;
-    int axis = 0;
-    for (; axis < 2; axis++) {
-        const struct unproject_point *next =
-            unproject_cached(sh, cache, px + (axis == 0), py + (axis == 1));
-        if (!next)
-            break;
-        double w_near = distance_to_line(next->near_pt, near_pt, d);
-        double w_far = distance_to_line(next->far_pt, near_pt, d);
-        width = max_left(width, w_near);
-        growth = max_left(growth, w_far - w_near);
-    }
-    if (axis == 2)
+    const struct unproject_point *right = unproject_cached(sh, cache, px + 1, py);
+    const struct unproject_point *below = right ? unproject_cached(sh, cache, px, py + 1) : NULL;
+    if (right && below) {
+        /* The neighbours' near distances, then their far ones, x first. */
+        double w_near[2], w_far[2];
+        distances_to_line(right->near_pt, below->near_pt, near_pt, d, w_near);
+        distances_to_line(right->far_pt, below->far_pt, near_pt, d, w_far);
+        for (int axis = 0; axis < 2; axis++) {
+            width = max_left(width, w_near[axis]);
+            growth = max_left(growth, w_far[axis] - w_near[axis]);
+        }
         spread = growth / len;
-    else
-        width = 0.0;
+    }
     cone->width = (float)width;
     cone->spread = (float)spread;
     return 1;
