@@ -392,6 +392,44 @@ static void polygon_modes_per_face(void)
     CHECK_NO_ERR();
 }
 
+/* One quad drawn twice at the same place, first in a way GL rasterises
+ * no interior of (its shown face outlined, or culled), then filled: GL
+ * fills it.  The camera ray meets both at exactly one t; the one not
+ * drawn is skipped by identity (render/gl_shade.c), where stepping past
+ * its t lost the filled one too. */
+static void coplanar_unfilled_then_filled(RTenum how)
+{
+    rtNewObject(OBJ);
+    rtColor3f(1.0f, 1.0f, 1.0f);
+    if (how == RT_CULL_FACE) {
+        rtEnable(RT_CULL_FACE);
+        rtCullFace(RT_FRONT);
+    } else {
+        rtPolygonMode(RT_FRONT, how);  /* the face shown */
+        rtPolygonMode(RT_BACK, RT_FILL); /* stored as triangles */
+    }
+    two_windings();
+    rtDisable(RT_CULL_FACE);
+    rtCullFace(RT_BACK);
+    rtPolygonMode(RT_FRONT_AND_BACK, RT_FILL);
+    two_windings();
+    rtEndObject();
+}
+
+static void coplanar_filled(void)
+{
+    tu_section("a filled surface in the plane of an outlined or culled one is drawn");
+    window_camera();
+    rtLineWidth(1.0f);
+    const RTenum hows[3] = {RT_LINE, RT_POINT, RT_CULL_FACE};
+    for (int i = 0; i < 3; i++) {
+        coplanar_unfilled_then_filled(hows[i]);
+        render_object();
+        CHECKF(lit(6, 6) && lit(4, 8) && lit(17, 6) && lit(15, 8), "case %d", i);
+    }
+    CHECK_NO_ERR();
+}
+
 static void strips_loops_arrays(void)
 {
     tu_section("strips, loops, colours, vertex arrays, widths recorded in objects");
@@ -540,6 +578,7 @@ int main(void)
     hidden();
     polygon_modes();
     polygon_modes_per_face();
+    coplanar_filled();
     strips_loops_arrays();
     state_and_errors();
     tu_destroy_context(ctx);
