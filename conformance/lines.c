@@ -267,7 +267,9 @@ static void polygon_modes(void)
     CHECK(lit(2, 2) && lit(7, 2) && lit(12, 7) && lit(7, 12) && lit(2, 7));
     CHECK(!lit(7, 7) && !lit(5, 5));
     CHECK_INT(count_lit(), 40);
-    CHECK_INT(tu_object_triangles(OBJ), 0);
+    /* Triangles that keep the mode: the object leaves RT_CULL_FACE to its
+     * call (polygon_modes_call_culling). */
+    CHECK_INT(tu_object_triangles(OBJ), 2);
     /* The same two triangles as RT_TRIANGLES draw the diagonal too. */
     rtNewObject(OBJ);
     rtPolygonMode(RT_FRONT_AND_BACK, RT_LINE);
@@ -430,6 +432,111 @@ static void coplanar_filled(void)
     CHECK_NO_ERR();
 }
 
+/* An object that sets its own line (point) mode but not RT_CULL_FACE:
+ * GL culls its polygons by the culling current at the call, before the
+ * mode applies, so the caller's culling removes the outline of a face it
+ * culls.  Until o-limits such objects kept their polygons as lines only,
+ * which no culling reached.  An object that disables culling itself is
+ * still stored as lines (no triangles). */
+static void polygon_modes_call_culling(void)
+{
+    tu_section("rtPolygonMode in an object: the caller's culling removes its outlines");
+    window_camera();
+    rtLineWidth(1.0f);
+    const RTenum modes[2] = {RT_LINE, RT_POINT};
+    for (int i = 0; i < 2; i++) {
+        outline_quad(modes[i]); /* counter-clockwise: its front shows */
+        render_object();
+        CHECKF(count_lit() > 0, "mode %d, no culling", i);
+        rtEnable(RT_CULL_FACE);
+        render_object(); /* back faces culled: the front stays */
+        CHECKF(count_lit() > 0, "mode %d, back culled", i);
+        rtCullFace(RT_FRONT);
+        render_object();
+        CHECKF(count_lit() == 0, "mode %d, front culled: %d pixels", i, count_lit());
+        rtCullFace(RT_BACK);
+        rtDisable(RT_CULL_FACE);
+    }
+    rtNewObject(OBJ);
+    rtDisable(RT_CULL_FACE);
+    rtPolygonMode(RT_FRONT_AND_BACK, RT_LINE);
+    rtBegin(RT_QUADS);
+    rtVertex2f(2.5f, 2.5f);
+    rtVertex2f(12.5f, 2.5f);
+    rtVertex2f(12.5f, 12.5f);
+    rtVertex2f(2.5f, 12.5f);
+    rtEnd();
+    rtEndObject();
+    rtPolygonMode(RT_FRONT_AND_BACK, RT_FILL);
+    CHECK_INT(tu_object_triangles(OBJ), 0);
+    rtEnable(RT_CULL_FACE);
+    rtCullFace(RT_FRONT);
+    render_object(); /* its own RT_CULL_FACE (off) wins */
+    CHECK_INT(count_lit(), 40);
+    rtCullFace(RT_BACK);
+    rtDisable(RT_CULL_FACE);
+    CHECK_NO_ERR();
+}
+
+/* Faces drawn as lines or points are no surface for rtTraceRays and
+ * rtOccludedRays either, whichever way the polygons were stored (lines
+ * only, or triangles for a per-face mode or culling), at the face the ray
+ * meets; a culled face that is filled is met (culling is for camera rays
+ * only).  Until o-limits the triangles kept for a per-face mode answered
+ * queries on both faces. */
+static void unfilled_queries(void)
+{
+    tu_section("rtTraceRays, rtOccludedRays: faces drawn as lines or points are passed");
+    window_camera();
+    per_face_object(0); /* front filled, back outlined */
+    rtBeginFrame();
+    rtInstantiateObject(OBJ);
+    rtFinish();
+    /* From +z: the left quad shows its front, the right one its back. */
+    CHECK_NEAR(tu_trace(6.0f, 6.0f, 5.0f, 0, 0, -1).t, 5.0f, 1e-6);
+    CHECK_INT(tu_occluded(6.0f, 6.0f, 5.0f, 0, 0, -1), RT_TRUE);
+    CHECK(tu_trace(17.0f, 6.0f, 5.0f, 0, 0, -1).t == tu_inf());
+    CHECK_INT(tu_occluded(17.0f, 6.0f, 5.0f, 0, 0, -1), RT_FALSE);
+    /* From -z the faces swap. */
+    CHECK(tu_trace(6.0f, 6.0f, -5.0f, 0, 0, 1).t == tu_inf());
+    CHECK_NEAR(tu_trace(17.0f, 6.0f, -5.0f, 0, 0, 1).t, 5.0f, 1e-6);
+    /* Both faces outlined, stored as triangles (culling on in the
+     * object): nothing answers. */
+    rtNewObject(OBJ);
+    rtEnable(RT_CULL_FACE);
+    rtPolygonMode(RT_FRONT_AND_BACK, RT_POINT);
+    two_windings();
+    rtPolygonMode(RT_FRONT_AND_BACK, RT_FILL);
+    rtDisable(RT_CULL_FACE);
+    rtEndObject();
+    CHECK_INT(tu_object_triangles(OBJ), 4);
+    rtBeginFrame();
+    rtInstantiateObject(OBJ);
+    rtFinish();
+    CHECK(tu_trace(6.0f, 6.0f, 5.0f, 0, 0, -1).t == tu_inf());
+    CHECK(tu_trace(17.0f, 6.0f, -5.0f, 0, 0, 1).t == tu_inf());
+    CHECK_INT(tu_occluded(17.0f, 6.0f, 5.0f, 0, 0, -1), RT_FALSE);
+    /* Culled but filled: met; culled and outlined: passed. */
+    per_face_object(RT_FRONT_AND_BACK);
+    rtBeginFrame();
+    rtInstantiateObject(OBJ);
+    rtFinish();
+    CHECK_NEAR(tu_trace(6.0f, 6.0f, 5.0f, 0, 0, -1).t, 5.0f, 1e-6);
+    CHECK(tu_trace(17.0f, 6.0f, 5.0f, 0, 0, -1).t == tu_inf());
+    rtPolygonMode(RT_FRONT_AND_BACK, RT_FILL);
+    rtNewObject(OBJ);
+    rtEnable(RT_CULL_FACE);
+    two_windings();
+    rtDisable(RT_CULL_FACE);
+    rtEndObject();
+    rtBeginFrame();
+    rtInstantiateObject(OBJ);
+    rtFinish();
+    CHECK_NEAR(tu_trace(6.0f, 6.0f, 5.0f, 0, 0, -1).t, 5.0f, 1e-6);
+    CHECK_NEAR(tu_trace(17.0f, 6.0f, 5.0f, 0, 0, -1).t, 5.0f, 1e-6);
+    CHECK_NO_ERR();
+}
+
 static void strips_loops_arrays(void)
 {
     tu_section("strips, loops, colours, vertex arrays, widths recorded in objects");
@@ -579,6 +686,8 @@ int main(void)
     polygon_modes();
     polygon_modes_per_face();
     coplanar_filled();
+    polygon_modes_call_culling();
+    unfilled_queries();
     strips_loops_arrays();
     state_and_errors();
     tu_destroy_context(ctx);

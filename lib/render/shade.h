@@ -25,6 +25,10 @@ struct shade_context {
      * instead of tracing again.  The same hit bit for bit
      * (trace/packet_scene.h). */
     const struct shade_primed *primed;
+    /* Some instance may show a face drawn as lines or points
+     * (filled_frame_has_unfilled): only then do shadow, reflected and
+     * refracted rays take render/filled.c's walks, which pass them. */
+    int unfilled;
 };
 
 struct shade_primed {
