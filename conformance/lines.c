@@ -537,6 +537,57 @@ static void unfilled_queries(void)
     CHECK_NO_ERR();
 }
 
+/* Whitted shadow rays pass a face drawn as lines: a floor at z = -0.5,
+ * a quad at z = 0.5 over its left part lit from (-2, 0, 1), which the
+ * camera sees filled (its front) while the shadow rays from the floor
+ * meet its back, outlined.  Pixel 15 shows floor the quad would shadow;
+ * pixel 20 floor no quad shadows: equal when the back face casts no
+ * shadow, as with the quad filled on both faces they are not. */
+static void unfilled_shadow_floor(RTenum back_mode)
+{
+    static const float white[4] = {1, 1, 1, 1}, black[4] = {0, 0, 0, 1};
+    rtNewObject(OBJ);
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_DIFFUSE, white);
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_EMISSION, black);
+    rtBegin(RT_QUADS); /* the floor */
+    rtVertex3f(0.0f, 0.0f, -0.5f);
+    rtVertex3f(24.0f, 0.0f, -0.5f);
+    rtVertex3f(24.0f, 24.0f, -0.5f);
+    rtVertex3f(0.0f, 24.0f, -0.5f);
+    rtEnd();
+    rtPolygonMode(RT_FRONT, RT_FILL);
+    rtPolygonMode(RT_BACK, back_mode);
+    rtBegin(RT_QUADS); /* the occluder, its front towards the camera */
+    rtVertex3f(2.0f, 2.0f, 0.5f);
+    rtVertex3f(14.0f, 2.0f, 0.5f);
+    rtVertex3f(14.0f, 20.0f, 0.5f);
+    rtVertex3f(2.0f, 20.0f, 0.5f);
+    rtEnd();
+    rtPolygonMode(RT_FRONT_AND_BACK, RT_FILL);
+    rtEndObject();
+}
+
+static void unfilled_shadows(void)
+{
+    tu_section("Whitted: a face drawn as lines casts no shadow");
+    static const float light[4] = {-2.0f, 0.0f, 1.0f, 0.0f};
+    window_camera();
+    rtShadingMode(RT_WHITTED);
+    rtLightfv(RT_LIGHT0, RT_POSITION, light);
+    rtEnable(RT_LIGHT0);
+    unfilled_shadow_floor(RT_FILL);
+    render_object();
+    CHECKF(px(15, 10)[0] < px(20, 10)[0] - 0.1f, "filled: %g against %g", (double)px(15, 10)[0],
+           (double)px(20, 10)[0]);
+    unfilled_shadow_floor(RT_LINE);
+    render_object();
+    CHECKF(fabsf(px(15, 10)[0] - px(20, 10)[0]) < 1e-4f && px(20, 10)[0] > 0.1f,
+           "outlined: %g against %g", (double)px(15, 10)[0], (double)px(20, 10)[0]);
+    rtDisable(RT_LIGHT0);
+    rtShadingMode(RT_EYE_LIGHT);
+    CHECK_NO_ERR();
+}
+
 static void strips_loops_arrays(void)
 {
     tu_section("strips, loops, colours, vertex arrays, widths recorded in objects");
@@ -688,6 +739,7 @@ int main(void)
     coplanar_filled();
     polygon_modes_call_culling();
     unfilled_queries();
+    unfilled_shadows();
     strips_loops_arrays();
     state_and_errors();
     tu_destroy_context(ctx);
