@@ -580,7 +580,10 @@ static void texgen_q(void)
     rtDisable(RT_TEXTURE_GEN_Q);
     render_obj();
     CHECK_RGB(pixel(1, 1), 1, 0, 0);
-    /* The attribute stack keeps q's enable and mode. */
+    /* The attribute stack keeps q's enable and mode (the object plane
+     * q = 1 would draw red). */
+    static const float q_one[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+    rtTexGenfv(RT_Q, RT_OBJECT_PLANE, q_one);
     rtEnable(RT_TEXTURE_GEN_Q);
     rtPushAttrib(RT_ENABLE_BIT | RT_TEXTURE_BIT);
     rtDisable(RT_TEXTURE_GEN_Q);
