@@ -529,6 +529,81 @@ static void texgen(void)
     CHECK_ERR(RT_INVALID_VALUE);
 }
 
+/* rtTexGen(RT_Q): GL divides the generated (or recorded) s and t by the
+ * interpolated q per fragment.  s = 0.375 everywhere (red texel) becomes
+ * s / q = 0.75 (green) with q generated as 0.5, object- or eye-linear;
+ * the sphere map is refused for q, as Mesa refuses it. */
+static void texgen_q(void)
+{
+    tu_section("rtTexGen(RT_Q): object- and eye-linear q divide s and t");
+    static const unsigned char texels[8] = {255, 0, 0, 255, 0, 255, 0, 255}; /* red, green */
+    static const float s_plane[4] = {0.0f, 0.0f, 0.0f, 0.375f};
+    static const float q_plane[4] = {0.0f, 0.0f, 0.0f, 0.5f};
+    RTuint tex = 0;
+    reset();
+    rtGenTextures(1, &tex);
+    rtBindTexture(RT_TEXTURE_2D, tex);
+    rtTexParameteri(RT_TEXTURE_2D, RT_TEXTURE_MIN_FILTER, RT_NEAREST);
+    rtTexParameteri(RT_TEXTURE_2D, RT_TEXTURE_MAG_FILTER, RT_NEAREST);
+    rtTexImage2D(RT_TEXTURE_2D, 0, RT_RGBA, 2, 1, 0, RT_RGBA, RT_UNSIGNED_BYTE, texels);
+    rtEnable(RT_TEXTURE_2D);
+    rtTexGeni(RT_S, RT_TEXTURE_GEN_MODE, RT_OBJECT_LINEAR);
+    rtTexGenfv(RT_S, RT_OBJECT_PLANE, s_plane);
+    rtEnable(RT_TEXTURE_GEN_S);
+    rtNewObject(OBJ);
+    square(-5, 1);
+    rtEndObject();
+    render_obj();
+    CHECK_RGB(pixel(1, 1), 1, 0, 0); /* q = 1 */
+    CHECK(!rtIsEnabled(RT_TEXTURE_GEN_Q));
+    rtTexGeni(RT_Q, RT_TEXTURE_GEN_MODE, RT_OBJECT_LINEAR);
+    rtTexGenfv(RT_Q, RT_OBJECT_PLANE, q_plane);
+    rtEnable(RT_TEXTURE_GEN_Q);
+    CHECK_NO_ERR();
+    CHECK(rtIsEnabled(RT_TEXTURE_GEN_Q));
+    render_obj(); /* the object takes the generation at the call */
+    CHECK_RGB(pixel(1, 1), 0, 1, 0);
+    CHECK_RGB(pixel(3, 3), 0, 1, 0);
+    /* Eye-linear: the plane through the modelview's inverse at the call
+     * (a translation leaves the constant term). */
+    rtTexGeni(RT_Q, RT_TEXTURE_GEN_MODE, RT_EYE_LINEAR);
+    rtTranslatef(0.0f, 0.0f, -3.0f);
+    rtTexGenfv(RT_Q, RT_EYE_PLANE, q_plane);
+    rtLoadIdentity();
+    render_obj();
+    CHECK_RGB(pixel(1, 1), 0, 1, 0);
+    /* q from the z of the eye position: -z / 10 = 0.5 at z = -5. */
+    static const float q_depth[4] = {0.0f, 0.0f, -0.1f, 0.0f};
+    rtTexGenfv(RT_Q, RT_EYE_PLANE, q_depth);
+    render_obj();
+    CHECK_RGB(pixel(2, 2), 0, 1, 0);
+    rtDisable(RT_TEXTURE_GEN_Q);
+    render_obj();
+    CHECK_RGB(pixel(1, 1), 1, 0, 0);
+    /* The attribute stack keeps q's enable and mode (the object plane
+     * q = 1 would draw red). */
+    static const float q_one[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+    rtTexGenfv(RT_Q, RT_OBJECT_PLANE, q_one);
+    rtEnable(RT_TEXTURE_GEN_Q);
+    rtPushAttrib(RT_ENABLE_BIT | RT_TEXTURE_BIT);
+    rtDisable(RT_TEXTURE_GEN_Q);
+    rtTexGeni(RT_Q, RT_TEXTURE_GEN_MODE, RT_OBJECT_LINEAR);
+    rtPopAttrib();
+    CHECK(rtIsEnabled(RT_TEXTURE_GEN_Q));
+    render_obj(); /* eye-linear q again */
+    CHECK_RGB(pixel(2, 2), 0, 1, 0);
+    rtDisable(RT_TEXTURE_GEN_Q);
+    rtDisable(RT_TEXTURE_GEN_S);
+    rtDisable(RT_TEXTURE_2D);
+    rtDeleteTextures(1, &tex);
+    CHECK_NO_ERR();
+    rtTexGeni(RT_Q, RT_TEXTURE_GEN_MODE, RT_SPHERE_MAP);
+    CHECK_ERR(RT_INVALID_ENUM);
+    CHECK(message_has("RT_Q"));
+    rtTexGeni(RT_R, RT_TEXTURE_GEN_MODE, RT_EYE_LINEAR);
+    CHECK_ERR(RT_INVALID_ENUM);
+}
+
 static void whitted_spot(void)
 {
     tu_section("Whitted: spot lights cut the light's terms outside the cone");
@@ -620,6 +695,7 @@ int main(void)
     interleaved();
     texcoord4();
     texgen();
+    texgen_q();
     whitted_spot();
     tu_destroy_context(ctx);
     return test_summary("fixed_function");

@@ -220,6 +220,62 @@ static void color_material_at_call(void)
     CHECK_NO_ERR();
 }
 
+/* A list that sets its own colour and the RT_COLOR_MATERIAL enable, then
+ * disables it (writing the colour into the material) and draws: the
+ * properties written are those rtColorMaterial names at the call (GL
+ * 2.1 sec. 2.14.3 writes with the mode current then), not at the
+ * recording.  Each call writes the properties its caller names, so one
+ * list gives an unlit square (ambient and diffuse written, no light) and
+ * a red one (emission written). */
+static void color_material_list_own_colour(void)
+{
+    tu_section("rtColorMaterial: a list with its own colour and enable writes the call's mode");
+    static const float zero[4] = {0, 0, 0, 1};
+    reset();
+    rtEnable(RT_LIGHTING);
+    rtDisable(RT_LIGHT0);
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_AMBIENT, zero);
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_DIFFUSE, zero);
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_EMISSION, zero);
+    rtNewList(L3, RT_COMPILE); /* recorded under AMBIENT_AND_DIFFUSE */
+    rtColor3f(1, 0, 0);
+    rtEnable(RT_COLOR_MATERIAL);
+    rtDisable(RT_COLOR_MATERIAL);
+    square(0, -5, 1);
+    rtEndList();
+    rtBeginFrame();
+    rtColorMaterial(RT_FRONT_AND_BACK, RT_EMISSION);
+    rtCallList(L3); /* red emission */
+    CHECK(rtIsEnabled(RT_COLOR_MATERIAL) == RT_FALSE);
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_EMISSION, zero);
+    rtColorMaterial(RT_FRONT_AND_BACK, RT_AMBIENT_AND_DIFFUSE);
+    rtTranslatef(-1, 0, 0);
+    rtCallList(L3); /* red ambient and diffuse, no light: black */
+    rtLoadIdentity();
+    tu_render_float(W, H, px);
+    CHECK_RGB(pixel(3, 1), 1, 0, 0);
+    CHECK_RGB(pixel(0, 1), 0, 0, 0);
+    /* The same list naming rtColorMaterial itself writes its own mode. */
+    rtNewList(L3, RT_COMPILE);
+    rtColor3f(0, 1, 0);
+    rtColorMaterial(RT_FRONT_AND_BACK, RT_EMISSION);
+    rtEnable(RT_COLOR_MATERIAL);
+    rtDisable(RT_COLOR_MATERIAL);
+    square(0, -5, 1);
+    rtEndList();
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_EMISSION, zero);
+    rtColorMaterial(RT_FRONT_AND_BACK, RT_AMBIENT_AND_DIFFUSE);
+    rtBeginFrame();
+    rtCallList(L3);
+    tu_render_float(W, H, px);
+    CHECK_RGB(pixel(3, 1), 0, 1, 0);
+    rtColorMaterial(RT_FRONT_AND_BACK, RT_AMBIENT_AND_DIFFUSE);
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_EMISSION, zero);
+    rtEnable(RT_LIGHT0);
+    rtDisable(RT_LIGHTING);
+    CHECK_NO_ERR();
+}
+
 static RTint get_int(RTenum pname)
 {
     RTint v[4] = {0, 0, 0, 0};
@@ -459,6 +515,7 @@ int main(void)
     cull_between_objects();
     two_side_between_objects();
     color_material_at_call();
+    color_material_list_own_colour();
     lists_compile();
     lists_fog_render();
     lists_tex_env_render();

@@ -222,6 +222,11 @@ static void emit(const struct object_rec *o)
     rtMaterialf(RT_FRONT_AND_BACK, RT_SHININESS, o->shininess);
     rtMaterialf(RT_FRONT_AND_BACK, RT_REFLECTIVITY, o->reflectivity);
     rtShadeModel(o->flat_shaded ? RT_FLAT : RT_SMOOTH);
+    /* Named here, so that the rtDisable below writes the colour into
+     * properties known while recording: a list naming no mode writes
+     * those the call names (GL), which cuts the flat list into a segment
+     * per object (docs/lists.md). */
+    rtColorMaterial(RT_FRONT_AND_BACK, RT_AMBIENT_AND_DIFFUSE);
     if (o->color_material)
         rtEnable(RT_COLOR_MATERIAL);
     rtBegin(RT_TRIANGLES);

@@ -267,7 +267,9 @@ static void polygon_modes(void)
     CHECK(lit(2, 2) && lit(7, 2) && lit(12, 7) && lit(7, 12) && lit(2, 7));
     CHECK(!lit(7, 7) && !lit(5, 5));
     CHECK_INT(count_lit(), 40);
-    CHECK_INT(tu_object_triangles(OBJ), 0);
+    /* Triangles that keep the mode: the object leaves RT_CULL_FACE to its
+     * call (polygon_modes_call_culling). */
+    CHECK_INT(tu_object_triangles(OBJ), 2);
     /* The same two triangles as RT_TRIANGLES draw the diagonal too. */
     rtNewObject(OBJ);
     rtPolygonMode(RT_FRONT_AND_BACK, RT_LINE);
@@ -389,6 +391,200 @@ static void polygon_modes_per_face(void)
     rtPolygonMode(RT_FRONT_AND_BACK, RT_FILL);
     render_object();
     CHECK(lit(6, 6) && lit(17, 6));
+    CHECK_NO_ERR();
+}
+
+/* One quad drawn twice at the same place, first in a way GL rasterises
+ * no interior of (its shown face outlined, or culled), then filled: GL
+ * fills it.  The camera ray meets both at exactly one t; the one not
+ * drawn is skipped by identity (render/gl_shade.c), where stepping past
+ * its t lost the filled one too. */
+static void coplanar_unfilled_then_filled(RTenum how)
+{
+    rtNewObject(OBJ);
+    rtColor3f(1.0f, 1.0f, 1.0f);
+    if (how == RT_CULL_FACE) {
+        rtEnable(RT_CULL_FACE);
+        rtCullFace(RT_FRONT);
+    } else {
+        rtPolygonMode(RT_FRONT, how);  /* the face shown */
+        rtPolygonMode(RT_BACK, RT_FILL); /* stored as triangles */
+    }
+    two_windings();
+    rtDisable(RT_CULL_FACE);
+    rtCullFace(RT_BACK);
+    rtPolygonMode(RT_FRONT_AND_BACK, RT_FILL);
+    two_windings();
+    rtEndObject();
+}
+
+static void coplanar_filled(void)
+{
+    tu_section("a filled surface in the plane of an outlined or culled one is drawn");
+    window_camera();
+    rtLineWidth(1.0f);
+    const RTenum hows[3] = {RT_LINE, RT_POINT, RT_CULL_FACE};
+    for (int i = 0; i < 3; i++) {
+        coplanar_unfilled_then_filled(hows[i]);
+        render_object();
+        CHECKF(lit(6, 6) && lit(4, 8) && lit(17, 6) && lit(15, 8), "case %d", i);
+    }
+    CHECK_NO_ERR();
+}
+
+/* An object that sets its own line (point) mode but not RT_CULL_FACE:
+ * GL culls its polygons by the culling current at the call, before the
+ * mode applies, so the caller's culling removes the outline of a face it
+ * culls.  Until o-limits such objects kept their polygons as lines only,
+ * which no culling reached.  An object that disables culling itself is
+ * still stored as lines (no triangles). */
+static void polygon_modes_call_culling(void)
+{
+    tu_section("rtPolygonMode in an object: the caller's culling removes its outlines");
+    window_camera();
+    rtLineWidth(1.0f);
+    const RTenum modes[2] = {RT_LINE, RT_POINT};
+    for (int i = 0; i < 2; i++) {
+        outline_quad(modes[i]); /* counter-clockwise: its front shows */
+        render_object();
+        CHECKF(count_lit() > 0, "mode %d, no culling", i);
+        rtEnable(RT_CULL_FACE);
+        render_object(); /* back faces culled: the front stays */
+        CHECKF(count_lit() > 0, "mode %d, back culled", i);
+        rtCullFace(RT_FRONT);
+        render_object();
+        CHECKF(count_lit() == 0, "mode %d, front culled: %d pixels", i, count_lit());
+        rtCullFace(RT_BACK);
+        rtDisable(RT_CULL_FACE);
+    }
+    rtNewObject(OBJ);
+    rtDisable(RT_CULL_FACE);
+    rtPolygonMode(RT_FRONT_AND_BACK, RT_LINE);
+    rtBegin(RT_QUADS);
+    rtVertex2f(2.5f, 2.5f);
+    rtVertex2f(12.5f, 2.5f);
+    rtVertex2f(12.5f, 12.5f);
+    rtVertex2f(2.5f, 12.5f);
+    rtEnd();
+    rtEndObject();
+    rtPolygonMode(RT_FRONT_AND_BACK, RT_FILL);
+    CHECK_INT(tu_object_triangles(OBJ), 0);
+    rtEnable(RT_CULL_FACE);
+    rtCullFace(RT_FRONT);
+    render_object(); /* its own RT_CULL_FACE (off) wins */
+    CHECK_INT(count_lit(), 40);
+    rtCullFace(RT_BACK);
+    rtDisable(RT_CULL_FACE);
+    CHECK_NO_ERR();
+}
+
+/* Faces drawn as lines or points are no surface for rtTraceRays and
+ * rtOccludedRays either, whichever way the polygons were stored (lines
+ * only, or triangles for a per-face mode or culling), at the face the ray
+ * meets; a culled face that is filled is met (culling is for camera rays
+ * only).  Until o-limits the triangles kept for a per-face mode answered
+ * queries on both faces. */
+static void unfilled_queries(void)
+{
+    tu_section("rtTraceRays, rtOccludedRays: faces drawn as lines or points are passed");
+    window_camera();
+    per_face_object(0); /* front filled, back outlined */
+    rtBeginFrame();
+    rtInstantiateObject(OBJ);
+    rtFinish();
+    /* From +z: the left quad shows its front, the right one its back. */
+    CHECK_NEAR(tu_trace(6.0f, 6.0f, 5.0f, 0, 0, -1).t, 5.0f, 1e-6);
+    CHECK_INT(tu_occluded(6.0f, 6.0f, 5.0f, 0, 0, -1), RT_TRUE);
+    CHECK(tu_trace(17.0f, 6.0f, 5.0f, 0, 0, -1).t == tu_inf());
+    CHECK_INT(tu_occluded(17.0f, 6.0f, 5.0f, 0, 0, -1), RT_FALSE);
+    /* From -z the faces swap. */
+    CHECK(tu_trace(6.0f, 6.0f, -5.0f, 0, 0, 1).t == tu_inf());
+    CHECK_NEAR(tu_trace(17.0f, 6.0f, -5.0f, 0, 0, 1).t, 5.0f, 1e-6);
+    /* Both faces outlined, stored as triangles (culling on in the
+     * object): nothing answers. */
+    rtNewObject(OBJ);
+    rtEnable(RT_CULL_FACE);
+    rtPolygonMode(RT_FRONT_AND_BACK, RT_POINT);
+    two_windings();
+    rtPolygonMode(RT_FRONT_AND_BACK, RT_FILL);
+    rtDisable(RT_CULL_FACE);
+    rtEndObject();
+    CHECK_INT(tu_object_triangles(OBJ), 4);
+    rtBeginFrame();
+    rtInstantiateObject(OBJ);
+    rtFinish();
+    CHECK(tu_trace(6.0f, 6.0f, 5.0f, 0, 0, -1).t == tu_inf());
+    CHECK(tu_trace(17.0f, 6.0f, -5.0f, 0, 0, 1).t == tu_inf());
+    CHECK_INT(tu_occluded(17.0f, 6.0f, 5.0f, 0, 0, -1), RT_FALSE);
+    /* Culled but filled: met; culled and outlined: passed. */
+    per_face_object(RT_FRONT_AND_BACK);
+    rtBeginFrame();
+    rtInstantiateObject(OBJ);
+    rtFinish();
+    CHECK_NEAR(tu_trace(6.0f, 6.0f, 5.0f, 0, 0, -1).t, 5.0f, 1e-6);
+    CHECK(tu_trace(17.0f, 6.0f, 5.0f, 0, 0, -1).t == tu_inf());
+    rtPolygonMode(RT_FRONT_AND_BACK, RT_FILL);
+    rtNewObject(OBJ);
+    rtEnable(RT_CULL_FACE);
+    two_windings();
+    rtDisable(RT_CULL_FACE);
+    rtEndObject();
+    rtBeginFrame();
+    rtInstantiateObject(OBJ);
+    rtFinish();
+    CHECK_NEAR(tu_trace(6.0f, 6.0f, 5.0f, 0, 0, -1).t, 5.0f, 1e-6);
+    CHECK_NEAR(tu_trace(17.0f, 6.0f, 5.0f, 0, 0, -1).t, 5.0f, 1e-6);
+    CHECK_NO_ERR();
+}
+
+/* Whitted shadow rays pass a face drawn as lines: a floor at z = -0.5,
+ * a quad at z = 0.5 over its left part lit from (-2, 0, 1), which the
+ * camera sees filled (its front) while the shadow rays from the floor
+ * meet its back, outlined.  Pixel 15 shows floor the quad would shadow;
+ * pixel 20 floor no quad shadows: equal when the back face casts no
+ * shadow, as with the quad filled on both faces they are not. */
+static void unfilled_shadow_floor(RTenum back_mode)
+{
+    static const float white[4] = {1, 1, 1, 1}, black[4] = {0, 0, 0, 1};
+    rtNewObject(OBJ);
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_DIFFUSE, white);
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_EMISSION, black);
+    rtBegin(RT_QUADS); /* the floor */
+    rtVertex3f(0.0f, 0.0f, -0.5f);
+    rtVertex3f(24.0f, 0.0f, -0.5f);
+    rtVertex3f(24.0f, 24.0f, -0.5f);
+    rtVertex3f(0.0f, 24.0f, -0.5f);
+    rtEnd();
+    rtPolygonMode(RT_FRONT, RT_FILL);
+    rtPolygonMode(RT_BACK, back_mode);
+    rtBegin(RT_QUADS); /* the occluder, its front towards the camera */
+    rtVertex3f(2.0f, 2.0f, 0.5f);
+    rtVertex3f(14.0f, 2.0f, 0.5f);
+    rtVertex3f(14.0f, 20.0f, 0.5f);
+    rtVertex3f(2.0f, 20.0f, 0.5f);
+    rtEnd();
+    rtPolygonMode(RT_FRONT_AND_BACK, RT_FILL);
+    rtEndObject();
+}
+
+static void unfilled_shadows(void)
+{
+    tu_section("Whitted: a face drawn as lines casts no shadow");
+    static const float light[4] = {-2.0f, 0.0f, 1.0f, 0.0f};
+    window_camera();
+    rtShadingMode(RT_WHITTED);
+    rtLightfv(RT_LIGHT0, RT_POSITION, light);
+    rtEnable(RT_LIGHT0);
+    unfilled_shadow_floor(RT_FILL);
+    render_object();
+    CHECKF(px(15, 10)[0] < px(20, 10)[0] - 0.1f, "filled: %g against %g", (double)px(15, 10)[0],
+           (double)px(20, 10)[0]);
+    unfilled_shadow_floor(RT_LINE);
+    render_object();
+    CHECKF(fabsf(px(15, 10)[0] - px(20, 10)[0]) < 1e-4f && px(20, 10)[0] > 0.1f,
+           "outlined: %g against %g", (double)px(15, 10)[0], (double)px(20, 10)[0]);
+    rtDisable(RT_LIGHT0);
+    rtShadingMode(RT_EYE_LIGHT);
     CHECK_NO_ERR();
 }
 
@@ -540,6 +736,10 @@ int main(void)
     hidden();
     polygon_modes();
     polygon_modes_per_face();
+    coplanar_filled();
+    polygon_modes_call_culling();
+    unfilled_queries();
+    unfilled_shadows();
     strips_loops_arrays();
     state_and_errors();
     tu_destroy_context(ctx);

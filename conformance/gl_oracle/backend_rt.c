@@ -40,6 +40,7 @@ int oracle_rt_render(const struct oracle_scene *scene, unsigned char *rgba)
     rtColor4f(1.0f, 1.0f, 1.0f, 1.0f);
     rtMaterialfv(RT_FRONT_AND_BACK, RT_EMISSION, black);
     rtPolygonMode(RT_FRONT_AND_BACK, RT_FILL);
+    rtDisable(RT_CULL_FACE);
     rtLineWidth(1.0f);
     rtPointSize(1.0f);
     rtDisable(RT_BLEND);

@@ -53,7 +53,7 @@ static const struct {
     {"lines/polygon_mode_line", 1, 0.0},   {"lines/polygon_mode_point", 1, 0.0},
     {"lines/vertex_arrays", 1, 0.0},       {"clip/lines_and_points", 1, 0.0},
     {"lines/points_on_pixel_edges", 1, 0.0}, {"lines/widths_immediate", 1, 0.0},
-    {"polymode/culled_wire_and_points", 1, 0.0},
+    {"polymode/culled_wire_and_points", 1, 0.0}, {"polymode/own_line_list_call_culls", 1, 0.0},
 };
 
 static void limits_of(const char *label, int *sparse, double *min_match)

@@ -105,13 +105,14 @@ void rt_color_material_settle(struct rt_context *ctx, const char *caller)
         return;
     struct scene_recording *rec = &ctx->recording;
     rec->material_index = -1;
-    if (rec->color_set && rec->color_material_set) {
-        /* The list set the colour and the enable itself: what GL writes
-         * is known now, and the list's later triangles record it as the
-         * list's own material (the properties rtColorMaterial named while
-         * the list recorded; GL takes those named at the call, which
-         * differ only when the list sets none and the caller changes
-         * rtColorMaterial between recording and call). */
+    if (rec->color_set && rec->color_material_set &&
+        (rec->material_set & SCENE_MATERIAL_COLOR_MATERIAL_MODE)) {
+        /* The list set the colour, the enable and rtColorMaterial itself:
+         * what GL writes is known now, and the list's later triangles
+         * record it as the list's own material.  A list that names no
+         * rtColorMaterial writes the properties the caller's names at
+         * the call (GL 2.1 sec. 2.14.3 takes the mode current when the
+         * write happens), so it takes the path below. */
         const RTenum face = ctx->material.color_material_face;
         const RTenum mode = ctx->material.color_material_mode;
         uint32_t bits = 0;
@@ -453,7 +454,7 @@ void rt_sync_fixed_function(struct rt_context *ctx)
     m.normalize = ctx->normalize_enabled        ? SCENE_NORMALIZE_ON
                   : ctx->rescale_normal_enabled ? SCENE_NORMALIZE_RESCALE
                                                 : SCENE_NORMALIZE_OFF;
-    for (int i = 0; i < 2; i++) {
+    for (int i = 0; i < SCENE_TEXGEN_COORDS; i++) {
         /* Planes only while generating, so the disabled ones do not split
          * materials. */
         int on = ctx->texgen_enabled[i];
@@ -489,11 +490,24 @@ void rtColorMaterial(RTenum face, RTenum mode)
         return;
     }
     rt_list_state(ctx, LIST_COLOR_MATERIAL, face, mode, NULL, 0);
+    /* In a list that has named no mode yet the properties tracked so far
+     * are the caller's at the call, whatever they are while recording:
+     * the write is then left to the call (rt_color_material_settle), even
+     * for a mode equal to the recording's.  The list's later triangles
+     * record the mode as the list's own only after that. */
+    const int compiling = rt_list_compiling(ctx);
+    const int named =
+        compiling && (ctx->recording.material_set & SCENE_MATERIAL_COLOR_MATERIAL_MODE);
+    if (ctx->material.color_material_face != face || ctx->material.color_material_mode != mode ||
+        (compiling && !named)) {
+        /* The properties tracked so far keep the current colour; the new
+         * ones take it (by definition, rt_color_material_write). */
+        rt_color_material_settle(ctx, "rtColorMaterial");
+    }
+    if (compiling)
+        ctx->recording.material_set |= SCENE_MATERIAL_COLOR_MATERIAL_MODE;
     if (ctx->material.color_material_face == face && ctx->material.color_material_mode == mode)
         return;
-    /* The properties tracked so far keep the current colour; the new
-     * ones take it (by definition, rt_color_material_write). */
-    rt_color_material_settle(ctx, "rtColorMaterial");
     ctx->material.color_material_face = face;
     ctx->material.color_material_mode = mode;
     ctx->recording.material_index = -1;

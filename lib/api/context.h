@@ -68,10 +68,10 @@ struct attrib_entry {
     RTenum cull_face_mode;
     int normalize_enabled, rescale_normal_enabled;
     int depth_test, dither, polygon_offset_fill;
-    int texgen_enabled[2];
-    RTenum texgen_mode[2];
-    float texgen_object_plane[2][4];
-    float texgen_eye_plane[2][4];
+    int texgen_enabled[SCENE_TEXGEN_COORDS];
+    RTenum texgen_mode[SCENE_TEXGEN_COORDS];
+    float texgen_object_plane[SCENE_TEXGEN_COORDS][4];
+    float texgen_eye_plane[SCENE_TEXGEN_COORDS][4];
     struct scene_light lights[RENDER_MAX_LIGHTS];
     float global_ambient[4];
     int light_model_two_side, light_model_local_viewer;
@@ -106,10 +106,10 @@ struct list_saved_state {
     int cull_face_enabled;
     RTenum cull_face_mode;
     int normalize_enabled, rescale_normal_enabled;
-    int texgen_enabled[2];
-    RTenum texgen_mode[2];
-    float texgen_object_plane[2][4];
-    float texgen_eye_plane[2][4];
+    int texgen_enabled[SCENE_TEXGEN_COORDS];
+    RTenum texgen_mode[SCENE_TEXGEN_COORDS];
+    float texgen_object_plane[SCENE_TEXGEN_COORDS][4];
+    float texgen_eye_plane[SCENE_TEXGEN_COORDS][4];
     int light_model_two_side, light_model_local_viewer;
     struct scene_fog fog;
     /* Raster state a list can set (lines.c): RT_BLEND, rtBlendFunc,
@@ -240,12 +240,12 @@ struct rt_context {
     /* Accepted capabilities without a ray tracing meaning: remembered
      * for rtIsEnabled only. */
     int depth_test, dither, polygon_offset_fill;
-    /* rtTexGen for s (0) and t (1) (fixed_function.c); recorded through
+    /* rtTexGen for s (0), t (1) and q (2) (fixed_function.c); recorded through
      * ctx->material by rt_sync_fixed_function while enabled. */
-    int texgen_enabled[2];  /* RT_TEXTURE_GEN_S, RT_TEXTURE_GEN_T */
-    RTenum texgen_mode[2];  /* RT_EYE_LINEAR initially */
-    float texgen_object_plane[2][4];
-    float texgen_eye_plane[2][4]; /* in eye space */
+    int texgen_enabled[SCENE_TEXGEN_COORDS];  /* RT_TEXTURE_GEN_S, _T, _Q */
+    RTenum texgen_mode[SCENE_TEXGEN_COORDS];  /* RT_EYE_LINEAR initially */
+    float texgen_object_plane[SCENE_TEXGEN_COORDS][4];
+    float texgen_eye_plane[SCENE_TEXGEN_COORDS][4]; /* in eye space */
     /* rtPushAttrib / rtPushClientAttrib (attrib.c).  attrib_list_base:
      * the depth at rtNewList, below which an RT_COMPILE list's
      * rtPopAttrib does not reach while it is recorded; attrib_skipped:

@@ -204,10 +204,9 @@ static void tex_gen(const char *caller, RTenum coord, RTenum pname, const RTfloa
     if (!ctx || rt_check_outside_begin(ctx, caller))
         return;
     char b1[RT_ENUM_STRING_SIZE];
-    if (coord != RT_S && coord != RT_T) {
-        rt_error(ctx, RT_INVALID_ENUM, "%s(coord=%s): not RT_S or RT_T%s", caller,
-                 rt_enum_string(coord, b1),
-                 coord == RT_R || coord == RT_Q ? " (2D textures only)" : "");
+    if (coord != RT_S && coord != RT_T && coord != RT_Q) {
+        rt_error(ctx, RT_INVALID_ENUM, "%s(coord=%s): not RT_S, RT_T or RT_Q%s", caller,
+                 rt_enum_string(coord, b1), coord == RT_R ? " (2D textures only)" : "");
         return;
     }
     int plane = pname == RT_OBJECT_PLANE || pname == RT_EYE_PLANE;
@@ -220,7 +219,7 @@ static void tex_gen(const char *caller, RTenum coord, RTenum pname, const RTfloa
         rt_error(ctx, RT_INVALID_VALUE, "%s(params=NULL)", caller);
         return;
     }
-    const int i = coord == RT_S ? 0 : 1;
+    const int i = coord == RT_S ? SCENE_TEXGEN_S : coord == RT_T ? SCENE_TEXGEN_T : SCENE_TEXGEN_Q;
     if (pname != RT_TEXTURE_GEN_MODE && !rt_check_finite(ctx, caller, params, 4))
         return;
     if (pname == RT_TEXTURE_GEN_MODE) {
@@ -231,6 +230,14 @@ static void tex_gen(const char *caller, RTenum coord, RTenum pname, const RTfloa
                      "%s(RT_TEXTURE_GEN_MODE, %s): not RT_OBJECT_LINEAR, RT_EYE_LINEAR or "
                      "RT_SPHERE_MAP",
                      caller, rt_enum_string(mode, b1));
+            return;
+        }
+        /* GL 1.1 sec. 2.10.4: the sphere map generates s and t only
+         * (Mesa: GL_INVALID_ENUM for r and q). */
+        if (mode == RT_SPHERE_MAP && coord == RT_Q) {
+            rt_error(ctx, RT_INVALID_ENUM, "%s(coord=RT_Q, RT_TEXTURE_GEN_MODE, RT_SPHERE_MAP): "
+                     "the sphere map generates s and t only",
+                     caller);
             return;
         }
         rt_list_state(ctx, LIST_TEX_GEN, coord, pname, params, 1);

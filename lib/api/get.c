@@ -403,6 +403,8 @@ static int *capability(struct rt_context *ctx, RTenum cap)
         return &ctx->texgen_enabled[0];
     case RT_TEXTURE_GEN_T:
         return &ctx->texgen_enabled[1];
+    case RT_TEXTURE_GEN_Q:
+        return &ctx->texgen_enabled[SCENE_TEXGEN_Q];
     case RT_BLEND:
         return &ctx->render.vis.blend;
     /* No ray tracing meaning: accepted and remembered (docs/appearance.md). */
@@ -458,11 +460,12 @@ static void set_capability(const char *caller, RTenum cap, int value)
     if (cap == RT_BLEND || cap == RT_ALPHA_TEST || cap == RT_POLYGON_OFFSET_FILL)
         rt_list_state_changed(ctx, caller);
     if (cap == RT_CULL_FACE || cap == RT_NORMALIZE || cap == RT_RESCALE_NORMAL ||
-        cap == RT_TEXTURE_GEN_S || cap == RT_TEXTURE_GEN_T)
+        cap == RT_TEXTURE_GEN_S || cap == RT_TEXTURE_GEN_T || cap == RT_TEXTURE_GEN_Q)
         rt_sync_fixed_function(ctx);
     /* Fog and texture generation reach a list's geometry through its
      * instance (scene/gl_state.h, list.c): a segment of its own. */
-    if (cap == RT_FOG || cap == RT_TEXTURE_GEN_S || cap == RT_TEXTURE_GEN_T)
+    if (cap == RT_FOG || cap == RT_TEXTURE_GEN_S || cap == RT_TEXTURE_GEN_T ||
+        cap == RT_TEXTURE_GEN_Q)
         rt_list_state_changed(ctx, caller);
     /* So do the light enables (scene/gl_state.h, light_set). */
     if (cap >= RT_LIGHT0 && cap < RT_LIGHT0 + RENDER_MAX_LIGHTS)

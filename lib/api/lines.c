@@ -33,15 +33,14 @@ static struct scene_lines *lines_target(struct rt_context *ctx)
  * GL picks the mode per polygon by the face it shows in window space
  * (OpenGL 2.1 sec. 3.5.4, after culling, sec. 3.5.1), which only the
  * frame knows.  Recorded as lines or points here (invisible to rays, as
- * lines are) when both faces are in the same mode other than RT_FILL,
- * known now (not taken from the caller of a list), and no culling is
- * known to be on.  Otherwise the polygons are triangles that keep both
+ * lines are) when both faces are in the same mode other than RT_FILL
+ * and culling is known to be off, both known now (not taken from the
+ * caller of a list).  Otherwise the polygons are triangles that keep both
  * modes in their material, with their edge flags: camera rays pass the
  * faces not filled (render/gl_shade.c) and render/raster_polygons.c
  * draws the edges or vertices of the others, each polygon in the mode of
- * the face it shows, culled first.  (A list that sets its own mode but
- * takes RT_CULL_FACE from its caller so keeps lines that the caller's
- * culling does not remove; docs/lines.md.)
+ * the face it shows, culled first, by the culling current at the call
+ * for a list that leaves RT_CULL_FACE to its caller.
  */
 static RTenum polygon_mode(const struct rt_context *ctx)
 {
@@ -55,7 +54,7 @@ static RTenum polygon_mode(const struct rt_context *ctx)
     const uint32_t modes = SCENE_MATERIAL_POLYGON_MODE_FRONT | SCENE_MATERIAL_POLYGON_MODE_BACK;
     if ((set & modes) != modes)
         return RT_FILL;
-    if (ctx->cull_face_enabled && (set & SCENE_MATERIAL_CULL_ENABLE))
+    if (ctx->cull_face_enabled || !(set & SCENE_MATERIAL_CULL_ENABLE))
         return RT_FILL;
     return front;
 }

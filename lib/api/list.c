@@ -224,8 +224,8 @@ static uint32_t state_bit(enum list_state_call what, RTenum b)
         return SCENE_MATERIAL_CULL_MODE;
     case LIST_FRONT_FACE:
         return SCENE_MATERIAL_FRONT_FACE;
-    case LIST_COLOR_MATERIAL:
-        return SCENE_MATERIAL_COLOR_MATERIAL_MODE;
+    case LIST_COLOR_MATERIAL: /* set by rtColorMaterial after its write-back */
+        return 0;
     case LIST_TEX_ENV:
         return SCENE_MATERIAL_TEX_ENV;
     case LIST_BIND_TEXTURE:

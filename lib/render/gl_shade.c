@@ -31,6 +31,7 @@
 #include "base/mat4.h"
 #include "render/gl_light.h"
 #include "render/surface.h"
+#include "trace/scene_ties.h"
 
 #ifndef GL_SHADE_PER_PIXEL
 #define GL_SHADE_PER_PIXEL 0
@@ -124,6 +125,31 @@ static int culled(const struct gl_triangle *t, const float dir[3])
     return (t->mat->cull_face & face) != 0 || t->mat->polygon_mode[front ? 0 : 1] != 0;
 }
 
+/* Coincident hits fetched per walk of trace_scene_ties: GL scenes stack
+ * few surfaces in one plane; more take another walk. */
+#define GL_SHADE_TIES 8
+
+/* The first triangle after `hit` at exactly its t, in (instance, prim)
+ * order, that GL draws: 1 with it in *hit, else 0 (*hit unchanged). */
+static int drawn_tie(const struct shade_context *sc, const float org[3], const float dir[3],
+                     struct trace_scene_hit *hit)
+{
+    struct trace_scene_hit ties[GL_SHADE_TIES], after = *hit;
+    for (int walk = 0; walk * GL_SHADE_TIES < GL_SHADE_MAX_CULLED; walk++) {
+        const int n =
+            trace_scene_ties(sc->scene, org, dir, &after, ties, GL_SHADE_TIES, sc->counters);
+        for (int i = 0; i < n; i++)
+            if (gl_hit_drawn(sc, dir, &ties[i])) {
+                *hit = ties[i];
+                return 1;
+            }
+        if (n < GL_SHADE_TIES)
+            break;
+        after = ties[n - 1];
+    }
+    return 0;
+}
+
 int gl_closest_drawn(const struct shade_context *sc, const float org[3], const float dir[3],
                      float tmin, float tmax, struct trace_scene_hit *hit)
 {
@@ -136,6 +162,14 @@ int gl_closest_drawn(const struct shade_context *sc, const float org[3], const f
         } else if (!trace_scene_closest(sc->scene, org, dir, tmin, tmax, hit, sc->counters))
             return 0;
         if (gl_hit_drawn(sc, dir, hit))
+            return 1;
+        /* The hit is not drawn: another triangle at exactly its distance
+         * (a filled surface coplanar with a culled or outlined one, the
+         * same quad drawn twice) is GL's fragment there, so the triangles
+         * at that t are tried by identity, in draw order, before the ray
+         * moves past it (scene_ties.h gives exactly the t the closest-hit
+         * walk computes, so none is skipped or found twice). */
+        if (drawn_tie(sc, org, dir, hit))
             return 1;
         tmin = nextafterf(hit->t, INFINITY);
     }
@@ -197,17 +231,24 @@ static void lit_colour(const struct gl_triangle *t,
  * rtTexGen call), RT_SPHERE_MAP reflects the unit vector from the eye
  * about the eye normal, r = u - 2 n (n . u), and maps it with
  * m = 2 sqrt(rx^2 + ry^2 + (rz + 1)^2) to (rx / m + 1/2, ry / m + 1/2).
+ * q (*q) is generated the same way by the two linear modes (eye-linear
+ * s, t and q from a projector's matrix project a texture onto the scene),
+ * else it is rtTexCoord4's, else 1; s and t are divided by its
+ * interpolated value per fragment (surface_texel).
  */
-static void texture_coordinates(const struct gl_triangle *t, uint32_t vertex, float st[2])
+static void texture_coordinates(const struct gl_triangle *t, uint32_t vertex, float st[2],
+                                float *q)
 {
     const struct scene_material *m = t->mat;
     const float *tc = &t->mesh->texcoords[2 * vertex];
     st[0] = tc[0];
     st[1] = tc[1];
-    if (!m->texgen_mode[0] && !m->texgen_mode[1])
+    *q = t->mesh->texcoord_q ? t->mesh->texcoord_q[vertex] : 1.0f;
+    if (!m->texgen_mode[SCENE_TEXGEN_S] && !m->texgen_mode[SCENE_TEXGEN_T] &&
+        !m->texgen_mode[SCENE_TEXGEN_Q])
         return;
     const float *po = &t->mesh->positions[3 * vertex];
-    float pe[3], sphere[2] = {0.0f, 0.0f};
+    float pe[3], sphere[SCENE_TEXGEN_COORDS] = {0.0f, 0.0f, 1.0f};
     eye_position(t->inst, t->mesh, vertex, pe);
     if (m->texgen_mode[0] == RT_SPHERE_MAP || m->texgen_mode[1] == RT_SPHERE_MAP) {
         float u[3] = {pe[0], pe[1], pe[2]}, n[3], r[3];
@@ -222,19 +263,20 @@ static void texture_coordinates(const struct gl_triangle *t, uint32_t vertex, fl
             sphere[1] = r[1] / mm + 0.5f;
         }
     }
-    for (int i = 0; i < 2; i++) {
+    float *const out[SCENE_TEXGEN_COORDS] = {&st[0], &st[1], q};
+    for (int i = 0; i < SCENE_TEXGEN_COORDS; i++) {
         const float *p;
         switch (m->texgen_mode[i]) {
         case RT_OBJECT_LINEAR:
             p = m->texgen_object_plane[i];
-            st[i] = p[0] * po[0] + p[1] * po[1] + p[2] * po[2] + p[3];
+            *out[i] = p[0] * po[0] + p[1] * po[1] + p[2] * po[2] + p[3];
             break;
         case RT_EYE_LINEAR:
             p = m->texgen_eye_plane[i];
-            st[i] = p[0] * pe[0] + p[1] * pe[1] + p[2] * pe[2] + p[3];
+            *out[i] = p[0] * pe[0] + p[1] * pe[1] + p[2] * pe[2] + p[3];
             break;
-        case RT_SPHERE_MAP:
-            st[i] = sphere[i];
+        case RT_SPHERE_MAP: /* s and t only (rtTexGen refuses it for q) */
+            *out[i] = sphere[i];
             break;
         default:
             break;
@@ -319,15 +361,14 @@ void gl_shade_hit(const struct shade_context *sc, const struct trace_scene_hit *
     if (t.mat->texture) {
         float ng[3] = {t.ng[0], t.ng[1], t.ng[2]}, tex[4], coords[3][2];
         vec3_normalize(ng);
-        for (int i = 0; i < 3; i++)
-            texture_coordinates(&t, t.v[i], coords[i]);
-        /* rtTexCoord4's q, which rtTexGen of s and t leaves as it is. */
+        /* q: rtTexCoord4's, which rtTexGen of s and t leaves as it is, or
+         * generated; none (1 at every vertex) takes the affine path. */
         float q[3];
-        if (mesh->texcoord_q)
-            for (int i = 0; i < 3; i++)
-                q[i] = mesh->texcoord_q[t.v[i]];
-        if (surface_texel(sc, hit, t.mat->texture, coords, mesh->texcoord_q ? q : NULL, ng,
-                            dir, width, tex))
+        for (int i = 0; i < 3; i++)
+            texture_coordinates(&t, t.v[i], coords[i], &q[i]);
+        const int projective = mesh->texcoord_q || t.mat->texgen_mode[SCENE_TEXGEN_Q];
+        if (surface_texel(sc, hit, t.mat->texture, coords, projective ? q : NULL, ng, dir, width,
+                          tex))
             texture_environment(t.mat, tex, c);
     }
     /* Fog as current when the primitive was drawn (scene/gl_state.h). */

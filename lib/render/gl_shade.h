@@ -12,10 +12,13 @@
 
 /*
  * The closest hit of a camera ray along dir (0 <= t < tmax) that GL would
- * draw: triangles whose face RT_CULL_FACE removed when they were drawn
- * are passed through, as GL does not rasterise them.  Only camera rays
- * cull; shadow, reflected and refracted rays and rtTraceRays see every
- * triangle.  The search covers (tmin, tmax]; returns 0 on a miss.
+ * draw: triangles whose face RT_CULL_FACE removed when they were drawn,
+ * or whose face is drawn as lines or points, are passed through, as GL
+ * rasterises no inside of them; another triangle at exactly the passed
+ * one's t (a coplanar filled surface) is tried before the ray moves on.
+ * Only camera rays cull; shadow, reflected and refracted rays and
+ * rtTraceRays see every filled face (render/filled.h).  The search covers
+ * [tmin, tmax); returns 0 on a miss.
  */
 int gl_closest_drawn(const struct shade_context *sc, const float org[3], const float dir[3],
                      float tmin, float tmax, struct trace_scene_hit *hit);

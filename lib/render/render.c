@@ -12,6 +12,7 @@
 #include "base/mat4.h"
 #include "base/timer.h"
 #include "render/blend.h"
+#include "render/filled.h"
 #include "render/raster.h"
 #include "render/shade.h"
 #include "render/surface.h"
@@ -386,6 +387,7 @@ int render_pass_begin(struct render_pass *pass, const struct render_job *job, in
     }
     pass->clipping = frame_has_clip(job->frame);
     pass->see_through = frame_has_see_through(job->frame);
+    pass->unfilled = filled_frame_has_unfilled(job->frame);
     if (frame_has_lines(job->frame)) {
         pass->depth = rt_malloc((pixels ? pixels : 1) * sizeof(*pass->depth));
         if (!pass->depth) {
@@ -507,7 +509,8 @@ void render_tile(struct render_pass *pass, uint32_t tile, int worker)
                                pass->clipping,
                                pass->see_through,
                                NULL,
-                               &cache_entry};
+                               &cache_entry,
+                               pass->unfilled};
     const int *vp = st->viewport;
     int x0 = (int)(tile % (uint32_t)pass->tiles_x) * RENDER_TILE_SIZE;
     int y0 = (int)(tile / (uint32_t)pass->tiles_x) * RENDER_TILE_SIZE;
@@ -670,7 +673,10 @@ static void query_task(void *arg, int worker)
 {
     struct render_pass *sh = arg;
     struct trace_scene_counters *counters = &sh->counters[worker].c;
-    const int packets = sh->scene.kernels && sh->scene.kernels->closest_packet;
+    /* Faces drawn as lines or points are passed (render/filled.h) by the
+     * single-ray walks; packets only when the frame has none. */
+    const int packets = sh->scene.kernels && sh->scene.kernels->closest_packet && !sh->unfilled;
+    const struct scene_frame *frame = sh->job->frame;
     for (;;) {
         uint32_t item = rt_atomic_fetch_add_relaxed(&sh->next_item, 1);
         size_t first = (size_t)item * RENDER_QUERY_CHUNK;
@@ -688,14 +694,20 @@ static void query_task(void *arg, int worker)
                 continue;
             }
             if (sh->occluded) {
-                sh->occluded[i] = (RTboolean)trace_scene_any(&sh->scene, r->org, r->dir, r->tmin,
-                                                             r->tmax, counters);
+                sh->occluded[i] =
+                    (RTboolean)(sh->unfilled ? filled_any(frame, &sh->scene, r->org, r->dir,
+                                                          r->tmin, r->tmax, counters)
+                                             : trace_scene_any(&sh->scene, r->org, r->dir,
+                                                               r->tmin, r->tmax, counters));
                 continue;
             }
             struct trace_scene_hit h;
             RThit *out = &sh->hits[i];
-            if (!trace_scene_closest(&sh->scene, r->org, r->dir, r->tmin, r->tmax, &h,
-                                     counters)) {
+            const int found = sh->unfilled ? filled_closest(frame, &sh->scene, r->org, r->dir,
+                                                            r->tmin, r->tmax, &h, counters)
+                                           : trace_scene_closest(&sh->scene, r->org, r->dir,
+                                                                 r->tmin, r->tmax, &h, counters);
+            if (!found) {
                 miss(out);
                 continue;
             }
@@ -714,6 +726,7 @@ static int run_queries(const struct render_job *job, int count, const RTray *ray
     sh.rays = rays;
     sh.hits = hits;
     sh.occluded = occluded;
+    sh.unfilled = filled_frame_has_unfilled(job->frame);
     /* One chunk needs no helpers: avoid waking the pool for tiny batches. */
     rt_pool_run(count > RENDER_QUERY_CHUNK ? job->pool : NULL, query_task, &sh);
     int failed = sh.failed;

@@ -29,6 +29,10 @@ struct shade_context {
      * triangle alone (surface.h, surface_cache): writable through a
      * const context, as it only remembers results. */
     struct surface_cache *cache;
+    /* Some instance may show a face drawn as lines or points
+     * (filled_frame_has_unfilled): only then do shadow, reflected and
+     * refracted rays take render/filled.c's walks, which pass them. */
+    int unfilled;
 };
 
 struct shade_primed {

@@ -350,7 +350,8 @@ void surface_resolve_material(const struct scene_appearance *call, struct scene_
         /* Planes are zero while generation is off (rt_sync_fixed_function):
          * nothing to copy when neither side generates, the common case. */
         if ((k & SCENE_MATERIAL_TEXGEN) &&
-            (c->texgen_mode[0] | c->texgen_mode[1] | m->texgen_mode[0] | m->texgen_mode[1])) {
+            (c->texgen_mode[0] | c->texgen_mode[1] | c->texgen_mode[2] | m->texgen_mode[0] |
+             m->texgen_mode[1] | m->texgen_mode[2])) {
             memcpy(m->texgen_mode, c->texgen_mode, sizeof(m->texgen_mode));
             memcpy(m->texgen_object_plane, c->texgen_object_plane, sizeof(m->texgen_object_plane));
             memcpy(m->texgen_eye_plane, c->texgen_eye_plane, sizeof(m->texgen_eye_plane));

@@ -20,6 +20,13 @@
 #include "base/aabb.h"
 #include "scene/lines.h"
 
+/* The texture coordinates rtTexGen generates: s, t and q (GL's r has no
+ * meaning for 2D textures).  GL divides s and t by q per fragment. */
+#define SCENE_TEXGEN_S 0
+#define SCENE_TEXGEN_T 1
+#define SCENE_TEXGEN_Q 2
+#define SCENE_TEXGEN_COORDS 3
+
 /* Material as set by rtMaterialfv; colours RGBA. */
 struct scene_material {
     float ambient[4];
@@ -53,12 +60,13 @@ struct scene_material {
     uint8_t cull_face;            /* SCENE_CULL_* of RT_CULL_FACE and rtCullFace */
     uint8_t front_cw;             /* rtFrontFace(RT_CW) */
     uint8_t normalize;            /* SCENE_NORMALIZE_* */
-    /* rtTexGen for s and t: the mode while RT_TEXTURE_GEN_S / _T was
-     * enabled (RT_OBJECT_LINEAR, RT_EYE_LINEAR, RT_SPHERE_MAP), else 0;
-     * the planes (the eye planes already in eye space). */
-    uint32_t texgen_mode[2];
-    float texgen_object_plane[2][4];
-    float texgen_eye_plane[2][4];
+    /* rtTexGen for s, t and q (SCENE_TEXGEN_S, _T, _Q): the mode while
+     * RT_TEXTURE_GEN_S / _T / _Q was enabled (RT_OBJECT_LINEAR,
+     * RT_EYE_LINEAR, RT_SPHERE_MAP but not for q), else 0; the planes
+     * (the eye planes already in eye space). */
+    uint32_t texgen_mode[SCENE_TEXGEN_COORDS];
+    float texgen_object_plane[SCENE_TEXGEN_COORDS][4];
+    float texgen_eye_plane[SCENE_TEXGEN_COORDS][4];
     /* Properties (SCENE_MATERIAL_* bits) recorded in a display list before
      * the list set them: taken from the material current at rtCallList,
      * which the instance keeps (struct scene_appearance, frame.h), as GL's

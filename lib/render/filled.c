@@ -1,0 +1,116 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * filled.c - secondary rays and queries pass the faces drawn as lines or
+ * points (filled.h).
+ *
+ * The walks are those of the camera rays (gl_shade.c's gl_closest_drawn):
+ * a hit on a face not filled is replaced by the next triangle at exactly
+ * its t in draw order (trace_scene_ties: a filled surface in the plane of
+ * an outlined one is met), then by the closest hit past it, tmin moved to
+ * the next float above t (the same triangle, whose t for this ray is
+ * computed by the same operations every time, is never found again).
+ */
+#include "render/filled.h"
+
+#include <math.h>
+
+#include "base/mat4.h"
+#include "render/raster.h"
+#include "trace/scene_ties.h"
+
+/* Faces passed before a ray gives up (a miss): as gl_shade.c. */
+#define FILLED_MAX_PASSED 256
+/* Coincident hits fetched per walk of trace_scene_ties. */
+#define FILLED_TIES 8
+
+int filled_frame_has_unfilled(const struct scene_frame *frame)
+{
+    for (uint32_t i = 0; i < frame->committed.count; i++)
+        if (raster_polygons_present(&frame->committed.items[i]))
+            return 1;
+    return 0;
+}
+
+int filled_face(const struct scene_frame *frame, const struct trace_scene *scene,
+                const float dir[3], const struct trace_scene_hit *hit)
+{
+    const struct scene_instance *inst =
+        &frame->committed.items[scene->instances[hit->instance].instance_id];
+    const struct scene_mesh *mesh = &inst->object->mesh;
+    const struct scene_material *m = &mesh->materials[mesh->tri_material[hit->prim]];
+    const struct scene_material *c = &inst->appearance.material;
+    /* The modes as surface_resolve_material resolves them: a list's
+     * triangles that set none take the call's. */
+    const unsigned front_mode =
+        (m->inherit & SCENE_MATERIAL_POLYGON_MODE_FRONT) ? c->polygon_mode[0] : m->polygon_mode[0];
+    const unsigned back_mode =
+        (m->inherit & SCENE_MATERIAL_POLYGON_MODE_BACK) ? c->polygon_mode[1] : m->polygon_mode[1];
+    if ((front_mode | back_mode) == 0)
+        return 1;
+    const int front_cw = (m->inherit & SCENE_MATERIAL_FRONT_FACE) ? c->front_cw : m->front_cw;
+    /* The side the ray comes from, in world (eye) space as gl_shade.c's
+     * is_front decides it for camera rays. */
+    const uint32_t *v = &mesh->indices[3 * (size_t)hit->prim];
+    double p[3][3];
+    for (int i = 0; i < 3; i++) {
+        const float *po = &mesh->positions[3 * (size_t)v[i]];
+        const double pd[3] = {po[0], po[1], po[2]};
+        mat4_transform_point(inst->object_to_world, pd, p[i]);
+    }
+    double e1[3], e2[3];
+    for (int k = 0; k < 3; k++) {
+        e1[k] = p[1][k] - p[0][k];
+        e2[k] = p[2][k] - p[0][k];
+    }
+    const double ng[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                          e1[0] * e2[1] - e1[1] * e2[0]};
+    const int counter_clockwise = ng[0] * dir[0] + ng[1] * dir[1] + ng[2] * dir[2] < 0.0;
+    const int front = front_cw ? !counter_clockwise : counter_clockwise;
+    return (front ? front_mode : back_mode) == 0;
+}
+
+/* The first triangle after `hit` at exactly its t, in (instance, prim)
+ * order, whose face is filled: 1 with it in *hit, else 0. */
+static int filled_tie(const struct scene_frame *frame, const struct trace_scene *scene,
+                      const float org[3], const float dir[3], struct trace_scene_hit *hit,
+                      struct trace_scene_counters *counters)
+{
+    struct trace_scene_hit ties[FILLED_TIES], after = *hit;
+    for (int walk = 0; walk * FILLED_TIES < FILLED_MAX_PASSED; walk++) {
+        const int n = trace_scene_ties(scene, org, dir, &after, ties, FILLED_TIES, counters);
+        for (int i = 0; i < n; i++)
+            if (filled_face(frame, scene, dir, &ties[i])) {
+                *hit = ties[i];
+                return 1;
+            }
+        if (n < FILLED_TIES)
+            break;
+        after = ties[n - 1];
+    }
+    return 0;
+}
+
+int filled_closest(const struct scene_frame *frame, const struct trace_scene *scene,
+                   const float org[3], const float dir[3], float tmin, float tmax,
+                   struct trace_scene_hit *hit, struct trace_scene_counters *counters)
+{
+    for (int i = 0; i <= FILLED_MAX_PASSED; i++) {
+        if (!trace_scene_closest(scene, org, dir, tmin, tmax, hit, counters))
+            return 0;
+        if (filled_face(frame, scene, dir, hit) ||
+            filled_tie(frame, scene, org, dir, hit, counters))
+            return 1;
+        tmin = nextafterf(hit->t, INFINITY);
+    }
+    return 0;
+}
+
+int filled_any(const struct scene_frame *frame, const struct trace_scene *scene,
+               const float org[3], const float dir[3], float tmin, float tmax,
+               struct trace_scene_counters *counters)
+{
+    /* Any filled hit: the closest filled one is one, and a frame without
+     * unfilled faces never comes here (trace_scene_any then). */
+    struct trace_scene_hit hit;
+    return filled_closest(frame, scene, org, dir, tmin, tmax, &hit, counters);
+}
