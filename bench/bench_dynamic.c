@@ -1291,21 +1291,24 @@ static int dynamic_cpu_table(const struct bench_options *opts)
             report_metric(key, mc[si], 0);
         }
 #ifdef RT_HAVE_EMBREE
-        if (embree_done && best >= 0) {
+        if (embree_done) {
             double e = bench_median(embree_cpu, embree_done);
-            /* Our best of all, RT_AUTOMATIC included, against it. */
-            int ours = best;
-            if (done[AUTOMATIC_INDEX] && mc[AUTOMATIC_INDEX] < mc[ours])
-                ours = AUTOMATIC_INDEX;
-            report_row("%s|Embree rebuild (trace only)|%.1f|%+.1f%%|n/a|n/a|n/a|%d|%d",
-                       anims[k].title, e, 100.0 * (e / mc[best] - 1.0), a.frames, embree_done);
-            report_printf("\n%s: our best (%s, eye-light frames) / Embree rebuild every frame "
-                          "(bare primary rays), CPU time: %.2fx\n\n",
-                          anims[k].title, strategies[ours].label, mc[ours] / e);
             char key[96];
-            snprintf(key, sizeof(key), "dynamic_cpu.%s.ours_best_over_embree_rebuild",
-                     anims[k].title);
-            report_metric(key, mc[ours] / e, 0);
+            if (best >= 0) {
+                /* Our best of all, RT_AUTOMATIC included, against it. */
+                int ours = best;
+                if (done[AUTOMATIC_INDEX] && mc[AUTOMATIC_INDEX] < mc[ours])
+                    ours = AUTOMATIC_INDEX;
+                report_row("%s|Embree rebuild (trace only)|%.1f|%+.1f%%|n/a|n/a|n/a|%d|%d",
+                           anims[k].title, e, 100.0 * (e / mc[best] - 1.0), a.frames,
+                           embree_done);
+                report_printf("\n%s: our best (%s, eye-light frames) / Embree rebuild every "
+                              "frame (bare primary rays), CPU time: %.2fx\n\n",
+                              anims[k].title, strategies[ours].label, mc[ours] / e);
+                snprintf(key, sizeof(key), "dynamic_cpu.%s.ours_best_over_embree_rebuild",
+                         anims[k].title);
+                report_metric(key, mc[ours] / e, 0);
+            }
             for (int b = 0; b < 2; b++) {
                 if (!bare_done[b])
                     continue;
