@@ -1031,6 +1031,97 @@ out:
 
 #define DYN_CPU_CONFIG "threads=1 build_threads=1"
 
+#ifdef RT_HAVE_EMBREE
+/* Embree's rebuild-every-frame policy by CPU time, for dynamic-cpu: a
+ * device of one thread, geometry quality LOW (rebuilt every commit), a
+ * frame = vertex copy + commit + rtcIntersect1 of the w x h primary rays
+ * on this thread (tracing only, no shading: ours includes the eye-light
+ * frame).  Process CPU ms over the frames, or < 0 on failure. */
+static double embree_rebuild_cpu(RTCDevice device, struct bench_anim *a,
+                                 const struct bench_rays *primary, struct bench_hit *hits,
+                                 uint64_t *hit_count)
+{
+    RTCScene scene = rtcNewScene(device);
+    RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    double cpu = -1.0;
+    if (!scene || !geom)
+        goto out;
+    rtcSetSceneFlags(scene, RTC_SCENE_FLAG_DYNAMIC);
+    rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_LOW);
+    rtcSetGeometryBuildQuality(geom, RTC_BUILD_QUALITY_LOW);
+    /* One spare vertex: Embree reads vertices with 16-byte loads. */
+    float *v = rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                       3 * sizeof(float), a->vertex_count + 1);
+    unsigned *idx = rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                            3 * sizeof(unsigned), a->tri_count);
+    if (!v || !idx)
+        goto out;
+    memcpy(idx, a->indices, (size_t)a->tri_count * 3 * sizeof(unsigned));
+    rtcAttachGeometry(scene, geom);
+    cpu = 0.0;
+    for (int f = 0; f < a->frames; f++) {
+        bench_anim_frame(a, f);
+        double cpu0 = bench_cpu_ms();
+        memcpy(v, a->positions, (size_t)a->vertex_count * 3 * sizeof(float));
+        rtcUpdateGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0);
+        rtcCommitGeometry(geom);
+        rtcCommitScene(scene);
+        dyn_embree_closest(scene, primary->rays, 0, primary->count, hits);
+        cpu += bench_cpu_ms() - cpu0;
+    }
+    if (rtcGetDeviceError(device) != RTC_ERROR_NONE)
+        cpu = -1.0;
+    *hit_count = 0;
+    for (uint32_t i = 0; i < primary->count; i++)
+        *hit_count += hits[i].prim != BENCH_MISS;
+out:
+    if (geom)
+        rtcReleaseGeometry(geom);
+    if (scene)
+        rtcReleaseScene(scene);
+    return cpu;
+}
+
+/* The same bare frames through our API, for the comparison with Embree
+ * on equal terms: a fixed strategy (its decisions do not depend on the
+ * frame), a frame = rtUpdateVertices + rtTraceRays of the same primary
+ * rays on a context `threads=1` (no shading, no framebuffer).  Process
+ * CPU ms over the frames; *hit_count: hits of the last frame. */
+static double ours_rays_cpu(RTenum strategy, struct bench_anim *a, const struct bench_rays *primary,
+                            RThit *hits, uint64_t *hit_count)
+{
+    RTcontext ctx = rtCreateContext(DYN_CPU_CONFIG);
+    if (!ctx || !rtMakeCurrent(ctx))
+        return -1.0;
+    RTuint obj;
+    rtGenObjects(1, &obj);
+    bench_anim_frame(a, 0);
+    define_object(obj, a);
+    rtObjectParameteri(obj, RT_UPDATE_STRATEGY, (RTint)strategy);
+    dyn_camera(primary->width, primary->height);
+    rtInstantiateObject(obj);
+    double cpu = 0.0;
+    for (int f = 0; f < a->frames; f++) {
+        if (f > 0)
+            bench_anim_frame(a, f);
+        double cpu0 = bench_cpu_ms();
+        if (f > 0)
+            rtUpdateVertices(obj, RT_VERTEX_ARRAY, 0, (RTsizei)a->vertex_count, RT_FLOAT, 0,
+                             a->positions);
+        rtTraceRays((RTsizei)primary->count, primary->rays, hits);
+        cpu += bench_cpu_ms() - cpu0;
+    }
+    *hit_count = 0;
+    for (uint32_t i = 0; i < primary->count; i++)
+        *hit_count += hits[i].t < INFINITY;
+    if (rtGetError() != RT_NO_ERROR)
+        cpu = -1.0;
+    rtMakeCurrent(NULL);
+    rtDestroyContext(ctx);
+    return cpu;
+}
+#endif
+
 /*
  * `rtbench dynamic-cpu`: the strategy table's animations, measured by
  * what does not depend on the machine's load: the process's CPU time
@@ -1066,6 +1157,33 @@ static int dynamic_cpu_table(const struct bench_options *opts)
                   "RT_OBJECT_REBUILDS at the end. \"vs best fixed\": CPU time against the "
                   "fixed strategy with the least.\n\n",
                   frames, w, h, DYN_CPU_CONFIG, runs, runs == 1 ? "" : "s");
+#ifdef RT_HAVE_EMBREE
+    report_printf("Embree rebuild: Embree 3's rebuild-every-frame policy on a device of one "
+                  "thread (geometry quality LOW), a frame = vertex copy + rtcCommitScene + "
+                  "rtcIntersect1 of the same %ux%u primary rays on one thread (tracing only: "
+                  "ours is the whole eye-light frame), process CPU time, interleaved with "
+                  "ours run by run.\n\n",
+                  w, h);
+    struct bench_rays primary;
+    struct bench_hit *hits = NULL;
+    RThit *rt_hits = NULL;
+    RTCDevice device = NULL;
+    const int with_embree = !opts->only || bench_strategy_selected(opts->only, "embree_rebuild");
+    if (dyn_rays(&primary, w, h))
+        return -1;
+    hits = malloc((size_t)primary.count * sizeof(*hits));
+    rt_hits = malloc((size_t)primary.count * sizeof(*rt_hits));
+    if (with_embree)
+        device = rtcNewDevice("threads=1");
+    if (!hits || !rt_hits || (with_embree && !device)) {
+        free(hits);
+        free(rt_hits);
+        free(primary.rays);
+        if (device)
+            rtcReleaseDevice(device);
+        return -1;
+    }
+#endif
     report_table_header("animation|strategy|CPU ms|vs best fixed|Mtests|tests vs best "
                         "fixed|mean SAH|rebuilds|runs");
     for (int k = 0; k < 3; k++) {
@@ -1077,7 +1195,32 @@ static int dynamic_cpu_table(const struct bench_options *opts)
         double sah[STRATEGIES];
         int rebuilds[STRATEGIES], done[STRATEGIES];
         memset(done, 0, sizeof(done));
-        for (int run = 0; run < runs; run++)
+#ifdef RT_HAVE_EMBREE
+        /* Embree's rebuild, then ours bare (rtTraceRays) under the two
+         * fixed strategies that rebuild: the comparison on equal terms. */
+        static const RTenum bare_strategy[2] = {RT_REBUILD_HEURISTIC, RT_REBUILD};
+        static const char *const bare_label[2] = {"RT_REBUILD_HEURISTIC", "RT_REBUILD"};
+        double embree_cpu[DYN_MAX_RUNS], bare_cpu[2][DYN_MAX_RUNS];
+        int embree_done = 0, bare_done[2] = {0, 0};
+        uint64_t embree_hits = 0, bare_hits[2] = {0, 0};
+#endif
+        for (int run = 0; run < runs; run++) {
+#ifdef RT_HAVE_EMBREE
+            if (with_embree) {
+                report_progress("dynamic-cpu: %s: Embree rebuild, run %d of %d\n",
+                                anims[k].title, run + 1, runs);
+                double c = embree_rebuild_cpu(device, &a, &primary, hits, &embree_hits);
+                if (c >= 0.0)
+                    embree_cpu[embree_done++] = c;
+                for (int b = 0; b < 2; b++) {
+                    report_progress("dynamic-cpu: %s: %s bare rays, run %d of %d\n",
+                                    anims[k].title, bare_label[b], run + 1, runs);
+                    c = ours_rays_cpu(bare_strategy[b], &a, &primary, rt_hits, &bare_hits[b]);
+                    if (c >= 0.0)
+                        bare_cpu[b][bare_done[b]++] = c;
+                }
+            }
+#endif
             for (int si = 0; si < STRATEGIES; si++) {
                 if (strategies[si].backend != BACKEND_OURS)
                     continue;
@@ -1124,6 +1267,7 @@ static int dynamic_cpu_table(const struct bench_options *opts)
                 rebuilds[si] = rb;
                 done[si] = run + 1;
             }
+        }
         double mc[STRATEGIES], mt[STRATEGIES];
         int best = -1;
         for (int si = 0; si < STRATEGIES; si++) {
@@ -1146,8 +1290,49 @@ static int dynamic_cpu_table(const struct bench_options *opts)
                      strategies[si].key);
             report_metric(key, mc[si], 0);
         }
+#ifdef RT_HAVE_EMBREE
+        if (embree_done) {
+            double e = bench_median(embree_cpu, embree_done);
+            char key[96];
+            if (best >= 0) {
+                /* Our best of all, RT_AUTOMATIC included, against it. */
+                int ours = best;
+                if (done[AUTOMATIC_INDEX] && mc[AUTOMATIC_INDEX] < mc[ours])
+                    ours = AUTOMATIC_INDEX;
+                report_row("%s|Embree rebuild (trace only)|%.1f|%+.1f%%|n/a|n/a|n/a|%d|%d",
+                           anims[k].title, e, 100.0 * (e / mc[best] - 1.0), a.frames,
+                           embree_done);
+                report_printf("\n%s: our best (%s, eye-light frames) / Embree rebuild every "
+                              "frame (bare primary rays), CPU time: %.2fx\n\n",
+                              anims[k].title, strategies[ours].label, mc[ours] / e);
+                snprintf(key, sizeof(key), "dynamic_cpu.%s.ours_best_over_embree_rebuild",
+                         anims[k].title);
+                report_metric(key, mc[ours] / e, 0);
+            }
+            for (int b = 0; b < 2; b++) {
+                if (!bare_done[b])
+                    continue;
+                double o = bench_median(bare_cpu[b], bare_done[b]);
+                report_printf("%s: %s bare (rtUpdateVertices + rtTraceRays of the same rays, "
+                              "%llu hits in the last frame) / Embree rebuild every frame (%llu "
+                              "hits), CPU time: %.1f / %.1f ms = %.2fx\n\n",
+                              anims[k].title, bare_label[b], (unsigned long long)bare_hits[b],
+                              (unsigned long long)embree_hits, o, e, o / e);
+                snprintf(key, sizeof(key), "dynamic_cpu.%s.%s_bare_over_embree_rebuild",
+                         anims[k].title, b ? "rebuild" : "heuristic");
+                report_metric(key, o / e, 0);
+            }
+        }
+#endif
         bench_anim_release(&a);
     }
+#ifdef RT_HAVE_EMBREE
+    free(hits);
+    free(rt_hits);
+    free(primary.rays);
+    if (device)
+        rtcReleaseDevice(device);
+#endif
     return 0;
 }
 

@@ -18,6 +18,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include <time.h>
 
 #include "api/context.h"
 #include "check.h"
@@ -272,10 +273,165 @@ static void check_rays_counted(void)
     CHECK_INT(again_pixels, pixels);
 }
 
+/* ------------------------------------------------ preempted by another process */
+
+/* The test hook of struct scene_preempt_hook: the calling thread sleeps,
+ * as it waits while another process holds its core on a loaded machine
+ * (wall time passes, the thread's CPU time does not). */
+struct preempt {
+    double ms;
+    int calls;
+};
+
+static void preempt_sleep(void *user)
+{
+    struct preempt *p = user;
+    p->calls++;
+    struct timespec ts;
+    ts.tv_sec = (time_t)(p->ms / 1000.0);
+    ts.tv_nsec = (long)((p->ms - 1000.0 * (double)ts.tv_sec) * 1e6);
+    while (nanosleep(&ts, &ts) != 0)
+        ;
+}
+
+/* check_rays_counted's context with the first build preempted for
+ * `preempt_ms` (0: not at all).  Returns the rebuilds of the degrading
+ * update; *cost_ms is the first build's cost as the rule weighs it
+ * (build_cost_ms), *wall_ms its RT_OBJECT_BUILD_TIME. */
+static int preempted_case(double rate, double preempt_ms, double *delta_sah, double *cost_ms,
+                          double *wall_ms, int *pixels)
+{
+    RTcontext c = rtCreateContext("threads=1");
+    CHECK(c != NULL && rtMakeCurrent(c));
+    struct rt_context *ctx = rt_current_context();
+    struct preempt p = {preempt_ms, 0};
+    rtViewport(0, 0, SIZE, SIZE);
+    rtMatrixMode(RT_PROJECTION);
+    rtLoadIdentity();
+    rtFrustum(-0.5, 0.5, -0.5, 0.5, 1.0, 100.0);
+    grid(0.0f, 0);
+    define(1);
+    define_far_triangle();
+    rtObjectParameteri(1, RT_UPDATE_STRATEGY, RT_AUTOMATIC);
+    /* The grid's first build (and the far triangle's: the hook runs in
+     * every build and in the frame's tracing) lose preempt_ms each. */
+    if (preempt_ms > 0.0) {
+        ctx->scene.preempt.fn = preempt_sleep;
+        ctx->scene.preempt.user = &p;
+    }
+    frame_with_far();
+    memset(&ctx->scene.preempt, 0, sizeof(ctx->scene.preempt));
+    CHECK(preempt_ms == 0.0 || p.calls >= 2);
+    const struct scene_object *o = scene_objects_lookup(&ctx->scene.objects, 1);
+    CHECK(o != NULL && o->accel != NULL);
+    *cost_ms = o->accel->build_cost_ms;
+    *wall_ms = o->accel->build_ms;
+    rtUpdateVertices(1, RT_VERTEX_ARRAY, 0, (GRID + 1) * (GRID + 1), RT_FLOAT, 0, positions);
+    ctx->scene.ms_per_test = 0.0;
+    frame_with_far();
+    *pixels = grid_pixels();
+    RTint rebuilds = object_int(RT_OBJECT_REBUILDS);
+    grid(0.2f, 1);
+    rtUpdateVertices(1, RT_VERTEX_ARRAY, 0, (GRID + 1) * (GRID + 1), RT_FLOAT, 0, positions);
+    ctx->scene.ms_per_test = rate;
+    frame_with_far();
+    int rebuilt = object_int(RT_OBJECT_REBUILDS) - rebuilds;
+    *delta_sah = o->accel->sah_cost - o->accel->built_sah_cost;
+    CHECK_INT(rtGetError(), RT_NO_ERROR);
+    rtMakeCurrent(NULL);
+    rtDestroyContext(c);
+    return rebuilt;
+}
+
+/* A build that lost time slices to another process costs the rule what
+ * it cost in work, not what the wall clock saw: the degrading update
+ * whose counted rays lose 20 unpreempted builds' worth of traversal must
+ * rebuild even when the last build was preempted for several times that
+ * loss.  (Weighed by the wall clock, that build looked dearer than the
+ * loss and the rule refit: on a loaded machine every preempted build
+ * held back the next rebuild.)  Nothing here asserts a speed: the rate
+ * comes from the probe's own build cost, and the preemption is sized
+ * from it. */
+static void check_preempted_build(void)
+{
+    tu_section("a preempted build costs its work, not the wall clock");
+    double delta_sah = 0.0, cost_ms = 0.0, wall_ms = 0.0;
+    int pixels = 0;
+    CHECK_INT(preempted_case(0.0, 0.0, &delta_sah, &cost_ms, &wall_ms, &pixels), 0);
+    CHECKF(delta_sah > 1.0 && pixels > SIZE * SIZE / 8 && cost_ms > 0.0,
+           "SAH loss %g, %d grid pixels, build cost %g ms", delta_sah, pixels, cost_ms);
+    if (delta_sah <= 1.0 || pixels <= 0 || cost_ms <= 0.0)
+        return;
+    double rate = 20.0 * cost_ms / ((double)pixels * delta_sah);
+    /* At most every ray of the view reaches the grid: the loss is at most
+     * 20 x cost x SIZE^2 / pixels; the preemption is twice that. */
+    double loss_max = 20.0 * cost_ms * (double)(SIZE * SIZE) / (double)pixels;
+    double preempt_ms = fmax(50.0, 2.0 * loss_max);
+    double again_sah = 0.0, again_cost = 0.0, again_wall = 0.0;
+    int again_pixels = 0;
+    int rebuilt = preempted_case(rate, preempt_ms, &again_sah, &again_cost, &again_wall,
+                                 &again_pixels);
+    /* The wall clock saw the preemption (it cannot be shorter than the
+     * sleep); the rule's cost must not have. */
+    CHECKF(again_wall >= preempt_ms, "build %g ms wall, preempted %g ms", again_wall, preempt_ms);
+    /* No escape for a dearer build here (check_rays_counted has one): the
+     * wall clock's cost is exactly what would make one. */
+    CHECKF(rebuilt == 1,
+           "rate %g ms/step, %d grid pixels, SAH loss %g, build cost %g ms (unpreempted %g, "
+           "wall %g, preempted %g ms): %d rebuilds (expected 1)",
+           rate, pixels, delta_sah, again_cost, cost_ms, again_wall, preempt_ms, rebuilt);
+    CHECK_INT(again_pixels, pixels);
+}
+
+/* The time per traversal step is the frame's tracing work, not its wall
+ * time: a frame whose tracing lost `preempt` ms to another process
+ * hands the rule a rate with steps x rate at most its wall time less the
+ * preemption (thread CPU time does not advance while the thread waits). */
+static void check_preempted_frame(void)
+{
+    tu_section("a preempted frame does not raise the time per step");
+    RTcontext c = rtCreateContext("threads=1");
+    CHECK(c != NULL && rtMakeCurrent(c));
+    struct rt_context *ctx = rt_current_context();
+    rtViewport(0, 0, SIZE, SIZE);
+    rtMatrixMode(RT_PROJECTION);
+    rtLoadIdentity();
+    rtFrustum(-0.5, 0.5, -0.5, 0.5, 1.0, 100.0);
+    grid(0.0f, 0);
+    define(1);
+    frame(); /* the lazy build */
+    struct preempt p = {50.0, 0};
+    ctx->scene.preempt.fn = preempt_sleep;
+    ctx->scene.preempt.user = &p;
+    frame(); /* nothing to build: the hook runs once, in the tracing */
+    memset(&ctx->scene.preempt, 0, sizeof(ctx->scene.preempt));
+    CHECK_INT(p.calls, 1);
+    RTint nodes = 0, tris = 0;
+    RTfloat render_ms = 0.0f, update_ms = 0.0f, toplevel_ms = 0.0f;
+    rtGetIntegerv(RT_STAT_NODE_TESTS, &nodes);
+    rtGetIntegerv(RT_STAT_TRIANGLE_TESTS, &tris);
+    rtGetFloatv(RT_STAT_RENDER_TIME, &render_ms);
+    rtGetFloatv(RT_STAT_UPDATE_TIME, &update_ms);
+    rtGetFloatv(RT_STAT_TOPLEVEL_TIME, &toplevel_ms);
+    double tests = (double)nodes + (double)tris;
+    double traced = tests * ctx->scene.ms_per_test;
+    CHECKF(render_ms >= 50.0f, "render %g ms, preempted 50 ms", (double)render_ms);
+    CHECKF(traced > 0.0 && traced <= (double)render_ms - (double)update_ms -
+                                          (double)toplevel_ms - p.ms + 1e-3,
+           "%.0f steps x %g ms = %g ms > render %g - update %g - top level %g - preempted %g ms",
+           tests, ctx->scene.ms_per_test, traced, (double)render_ms, (double)update_ms,
+           (double)toplevel_ms, p.ms);
+    CHECK_INT(rtGetError(), RT_NO_ERROR);
+    rtMakeCurrent(NULL);
+    rtDestroyContext(c);
+}
+
 int main(void)
 {
     check_rate_is_measured();
     check_rate_decides();
     check_rays_counted();
+    check_preempted_build();
+    check_preempted_frame();
     return test_summary("internal/automatic_cost");
 }

@@ -56,9 +56,9 @@ static void check_wide_layout_only_when_walked(void)
     bvh_build_params_default(&params);
     params.max_leaf_size = 1;
     CHECK(params.wide_layout == 1);
-    struct scene_accel *with = scene_accel_build(&g, &params, SCENE_ACCEL_SERIAL, NULL);
+    struct scene_accel *with = scene_accel_build(&g, &params, SCENE_ACCEL_SERIAL, NULL, NULL);
     params.wide_layout = 0;
-    struct scene_accel *without = scene_accel_build(&g, &params, SCENE_ACCEL_SERIAL, NULL);
+    struct scene_accel *without = scene_accel_build(&g, &params, SCENE_ACCEL_SERIAL, NULL, NULL);
     CHECK(with && without);
     if (with && without) {
         CHECK(with->wide.node_count > 0 && with->wide.nodes != NULL);
@@ -73,7 +73,7 @@ static void check_wide_layout_only_when_walked(void)
         CHECK(with->wide.packet_count > 0 && with->wide.packets != NULL);
     }
     params.wide_layout = 8;
-    struct scene_accel *eight = scene_accel_build(&g, &params, SCENE_ACCEL_SERIAL, NULL);
+    struct scene_accel *eight = scene_accel_build(&g, &params, SCENE_ACCEL_SERIAL, NULL, NULL);
     CHECK(eight != NULL);
     if (eight) {
         CHECK(eight->wide.width == 8 && eight->wide.nodes8 != NULL && eight->wide.nodes == NULL);

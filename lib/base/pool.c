@@ -15,6 +15,9 @@
 #include <stdint.h>
 
 #include "base/alloc.h"
+#include "base/timer.h"
+
+#include <unistd.h>
 
 struct rt_pool {
     int threads;
@@ -27,6 +30,11 @@ struct rt_pool {
     int quit;
     rt_task_fn fn;
     void *arg;
+    /* rt_pool_work_ms: CPU ms all threads have spent in tasks (workers
+     * add theirs under lock), the caller's part of it, and the divisor. */
+    double task_cpu_ms;
+    double caller_task_cpu_ms;
+    int parallel;
 };
 
 struct worker_start {
@@ -51,8 +59,11 @@ static void *worker_main(void *p)
         rt_task_fn fn = pool->fn;
         void *arg = pool->arg;
         pthread_mutex_unlock(&pool->lock);
+        double cpu = rt_thread_cpu_ms();
         fn(arg, index);
+        cpu = rt_thread_cpu_ms() - cpu;
         pthread_mutex_lock(&pool->lock);
+        pool->task_cpu_ms += cpu;
         if (--pool->pending == 0)
             pthread_cond_signal(&pool->done);
     }
@@ -89,6 +100,8 @@ struct rt_pool *rt_pool_create(int threads)
         pool->threads++;
     }
     /* Fewer threads than asked (resource limits) still render correctly. */
+    long online = sysconf(_SC_NPROCESSORS_ONLN);
+    pool->parallel = online > 0 && online < pool->threads ? (int)online : pool->threads;
     return pool;
 }
 
@@ -106,12 +119,26 @@ void rt_pool_run(struct rt_pool *pool, rt_task_fn fn, void *arg)
     pthread_cond_broadcast(&pool->wake);
     pthread_mutex_unlock(&pool->lock);
 
+    double cpu = rt_thread_cpu_ms();
     fn(arg, 0);
+    cpu = rt_thread_cpu_ms() - cpu;
 
     pthread_mutex_lock(&pool->lock);
     while (pool->pending > 0)
         pthread_cond_wait(&pool->done, &pool->lock);
+    pool->task_cpu_ms += cpu;
+    pool->caller_task_cpu_ms += cpu;
     pthread_mutex_unlock(&pool->lock);
+}
+
+double rt_pool_work_ms(const struct rt_pool *pool)
+{
+    double own = rt_thread_cpu_ms();
+    if (!pool || pool->threads < 2)
+        return own;
+    /* Written under the lock by tasks that have all finished: the caller
+     * took the lock after them in rt_pool_run. */
+    return own - pool->caller_task_cpu_ms + pool->task_cpu_ms / (double)pool->parallel;
 }
 
 int rt_pool_threads(const struct rt_pool *pool)

@@ -27,6 +27,22 @@ void rt_pool_run(struct rt_pool *pool, rt_task_fn fn, void *arg);
 /* Threads a task runs on, the caller included; 1 for NULL. */
 int rt_pool_threads(const struct rt_pool *pool);
 
+/*
+ * A clock of the work the calling thread and the pool do, for costs that
+ * must not depend on the machine's load (RT_AUTOMATIC's build cost and
+ * time per traversal step, lib/scene/update.c).  It advances by the
+ * calling thread's CPU time outside pool tasks plus 1/P of the CPU time
+ * all the pool's threads spend in tasks, P the threads that can run at
+ * once (the pool's threads, at most the online processors): the time the
+ * work would take on an otherwise idle machine, tasks shared evenly, which
+ * is what it costs a frame.  Thread CPU time does not advance while
+ * another process holds the core, so a time slice lost to another process
+ * costs nothing here where the wall clock charges all of it.  Only
+ * differences taken on the thread that calls rt_pool_run mean anything;
+ * pool may be NULL (the calling thread's CPU time alone).
+ */
+double rt_pool_work_ms(const struct rt_pool *pool);
+
 /* Joins the workers and frees the pool; NULL is ignored. */
 void rt_pool_destroy(struct rt_pool *pool);
 

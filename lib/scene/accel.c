@@ -58,9 +58,12 @@ static int finish_layout(struct scene_accel *accel, const struct scene_accel_geo
 
 struct scene_accel *scene_accel_build(const struct scene_accel_geometry *geom,
                                       const struct bvh_build_params *params,
-                                      enum scene_accel_builder builder, struct rt_pool *pool)
+                                      enum scene_accel_builder builder, struct rt_pool *pool,
+                                      const struct scene_preempt_hook *hook)
 {
-    double start = rt_now_ms();
+    double start = rt_now_ms(), work = rt_pool_work_ms(pool);
+    if (hook && hook->fn)
+        hook->fn(hook->user);
     struct scene_accel *accel = rt_calloc(1, sizeof(*accel));
     struct aabb *boxes = triangle_boxes(geom);
     if (!accel || !boxes)
@@ -77,6 +80,7 @@ struct scene_accel *scene_accel_build(const struct scene_accel_geometry *geom,
     rt_free(boxes);
     accel->built_sah_cost = accel->sah_cost;
     accel->build_ms = rt_now_ms() - start;
+    accel->build_cost_ms = rt_pool_work_ms(pool) - work;
     return accel;
 fail:
     rt_free(boxes);

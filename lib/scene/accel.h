@@ -33,7 +33,11 @@ struct scene_accel {
     uint32_t topology; /* the object's topology serial it was built for */
     double sah_cost;       /* of the tree as it is now */
     double built_sah_cost; /* right after the last full build (rebuild heuristic) */
-    double build_ms;       /* the last full build */
+    double build_ms;       /* the last full build, wall clock (RT_OBJECT_BUILD_TIME) */
+    /* The same build by rt_pool_work_ms (base/pool.h): CPU time, the
+     * pool's tasks counted as the share of a frame they take; what
+     * RT_AUTOMATIC weighs, since it does not grow with the load. */
+    double build_cost_ms;
     /* The wide layout's share of the work (rtbench dynamic reports them):
      * the last collapse (full build or restructure, included in build_ms
      * for a build; 0 when no wide layout is made) and the last refit of
@@ -61,13 +65,24 @@ struct scene_accel_geometry {
     uint32_t tri_count;
 };
 
+/* A test hook (internal/automatic_cost): fn(user) is called once inside
+ * every region whose time the automatic strategy weighs (each full build
+ * here, the frame's tracing in lib/api/frame.c), where a preemption by
+ * another process could land.  NULL in normal use. */
+struct scene_preempt_hook {
+    void (*fn)(void *user);
+    void *user;
+};
+
 /*
  * A fresh structure over geom (serial and topology left 0 for the caller
- * to stamp).  Times itself into build_ms.  NULL on allocation failure.
+ * to stamp).  Times itself into build_ms (wall) and build_cost_ms
+ * (rt_pool_work_ms); hook may be NULL.  NULL on allocation failure.
  */
 struct scene_accel *scene_accel_build(const struct scene_accel_geometry *geom,
                                       const struct bvh_build_params *params,
-                                      enum scene_accel_builder builder, struct rt_pool *pool);
+                                      enum scene_accel_builder builder, struct rt_pool *pool,
+                                      const struct scene_preempt_hook *hook);
 
 /* Refits boxes and leaf-ordered triangles in place to geom's current
  * positions (same connectivity).  Allocates nothing, cannot fail. */

@@ -49,7 +49,7 @@ static struct scene_accel *build_snapshot(struct scene_async_builder *b,
                                           const struct scene_async_job *job)
 {
     struct scene_accel_geometry g = {job->positions, job->indices, job->tri_count};
-    struct scene_accel *accel = scene_accel_build(&g, &b->params, SCENE_ACCEL_PARALLEL, b->pool);
+    struct scene_accel *accel = scene_accel_build(&g, &b->params, SCENE_ACCEL_PARALLEL, b->pool, NULL);
     if (accel) {
         accel->serial = job->serial;
         accel->topology = job->topology;

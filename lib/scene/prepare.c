@@ -78,6 +78,7 @@ enum scene_status scene_prepare_objects(struct scene *scene, struct rt_pool *poo
     config->restructure = &scene->restructure_params;
     config->async = &scene->async;
     config->ms_per_test = scene->ms_per_test;
+    config->preempt = scene->preempt.fn ? &scene->preempt : NULL;
 
     uint64_t stamp = ++scene->prepare_count;
     const struct scene_instance_list *list = &scene->frame.committed;
@@ -143,7 +144,8 @@ void scene_end_frame(struct scene *scene, uint64_t rays, uint64_t tests, double 
     scene->frame_number++;
     scene->last_frame_rays = rays;
     /* The exchange rate of the automatic strategy: time per traversal
-     * step, measured over the frame's tracing (updates excluded). */
+     * step, measured over the frame's tracing (updates excluded) on the
+     * build costs' clock, rt_pool_work_ms (lib/api/frame.c). */
     if (tests > 10000 && trace_ms > 0.0)
         scene->ms_per_test = trace_ms / (double)tests;
 }

@@ -69,6 +69,7 @@ struct scene {
     int restructure_measured;
     uint64_t last_frame_rays; /* rays of the last frame */
     double ms_per_test;       /* traversal step time, measured per frame */
+    struct scene_preempt_hook preempt; /* test hook (accel.h); fn NULL normally */
 
     struct scene_changes changes; /* since the last preparation */
     struct scene_stats stats;     /* of the last preparation */

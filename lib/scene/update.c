@@ -41,7 +41,7 @@ static struct scene_accel_geometry geometry(const struct scene_object *object)
 /* Replaces the object's structure by a fresh build (median or, with a
  * pool worth waking, the parallel binned build); 0 or -1. */
 static int rebuild(struct scene_object *object, const struct bvh_build_params *params,
-                   int median, struct rt_pool *pool)
+                   int median, struct rt_pool *pool, const struct scene_preempt_hook *hook)
 {
     enum scene_accel_builder builder = SCENE_ACCEL_SERIAL;
     if (median)
@@ -49,7 +49,7 @@ static int rebuild(struct scene_object *object, const struct bvh_build_params *p
     else if (pool_for(&object->mesh, pool) && params->builder == BVH_BUILDER_BINNED_SAH)
         builder = SCENE_ACCEL_PARALLEL;
     struct scene_accel_geometry g = geometry(object);
-    struct scene_accel *fresh = scene_accel_build(&g, params, builder, pool);
+    struct scene_accel *fresh = scene_accel_build(&g, params, builder, pool, hook);
     if (!fresh)
         return -1;
     fresh->serial = object->serial;
@@ -83,11 +83,11 @@ static int restructure(struct scene_object *object, const struct bvh_build_param
  * and rebuild once the refit tree's SAH cost has grown past the
  * threshold.  0 or -1. */
 static int refit_or_rebuild(struct scene_object *object, const struct bvh_build_params *params,
-                            struct rt_pool *pool)
+                            const struct scene_update_config *config)
 {
-    refit(object, params, pool);
+    refit(object, params, config->pool);
     if (object->accel->sah_cost > REBUILD_HEURISTIC_THRESHOLD * object->accel->built_sah_cost)
-        return rebuild(object, params, 0, pool);
+        return rebuild(object, params, 0, config->pool, config->preempt);
     return 0;
 }
 
@@ -103,7 +103,7 @@ static int async_rebuild(struct scene_object *object, const struct bvh_build_par
     struct scene_async_builder *async = config->async;
     if (!async || async->threads == 0) {
         object->last_strategy = RT_REBUILD_HEURISTIC;
-        return refit_or_rebuild(object, params, config->pool);
+        return refit_or_rebuild(object, params, config);
     }
     struct scene_accel *landed = scene_async_collect(async, object);
     if (landed && landed->topology == object->topology_serial) {
@@ -127,7 +127,7 @@ static int async_rebuild(struct scene_object *object, const struct bvh_build_par
  * costs:
  *
  *   sum over frames since the last build of
- *       expected_rays * time_per_test * (SAH_refit - SAH_fresh)  >  build_ms
+ *       expected_rays * time_per_test * (SAH_refit - SAH_fresh)  >  build_cost
  *
  * This is the rent-or-buy rule: it never spends more than twice what the
  * best offline schedule of rebuilds would, whatever the animation, where a
@@ -138,8 +138,17 @@ static int async_rebuild(struct scene_object *object, const struct bvh_build_par
  * SAH costs are in traversal steps per ray reaching the object (our SAH
  * is normalised by the root area, so a fresh build's cost after the last
  * rebuild estimates the next one's); time_per_test is measured from the
- * last frame (render time over node and triangle tests); build_ms is the
- * object's last build.  A mildly deforming object (cloth) never pays for
+ * last frame (tracing time over node and triangle tests); build_cost is
+ * the object's last build.  Both are times on the same clock,
+ * rt_pool_work_ms (base/pool.h): CPU time, what ran on the pool's threads
+ * counted as the share of the frame it takes.  Yoon, Curtis and Manocha
+ * (2007) sec. 4.1 and Wald, Ize and Parker (2008) sec. 7.5 weigh work
+ * (traversal cost against rebuild cost), not the wall clock: a build that
+ * lost time slices to another process measured by the wall clock looked
+ * many times dearer than it is and held back the next rebuilds for as
+ * many frames, so the same animation was handled differently on a loaded
+ * machine (docs/performance.md, "Issue 11: dynamic strategies and
+ * RT_AUTOMATIC").  A mildly deforming object (cloth) never pays for
  * a rebuild and stays refit-only; an exploding one rebuilds as soon as
  * its rays make the rebuild worth it.  Restructuring and asynchronous
  * rebuilds stay explicit choices: their cost depends on the K threads the
@@ -153,10 +162,10 @@ static int automatic(struct scene_object *object, const struct bvh_build_params 
     double lost_ms = object->expected_rays * config->ms_per_test *
                      (accel->sah_cost - accel->built_sah_cost);
     object->automatic_lost_ms += lost_ms > 0.0 ? lost_ms : 0.0;
-    if (object->automatic_lost_ms > accel->build_ms) {
+    if (object->automatic_lost_ms > accel->build_cost_ms) {
         object->last_strategy = RT_REBUILD;
         object->automatic_lost_ms = 0.0;
-        return rebuild(object, params, 0, config->pool);
+        return rebuild(object, params, 0, config->pool, config->preempt);
     }
     object->last_strategy = RT_REFIT;
     return 0;
@@ -178,14 +187,15 @@ const struct scene_accel *scene_object_update(struct scene_object *object,
          * sec. 3), unless the object is known to be unstructured. */
         int unstructured = object->class_hint == RT_UNSTRUCTURED;
         status = rebuild(object, unstructured ? &dynamic : quality, 0,
-                         unstructured ? config->pool : NULL);
+                         unstructured ? config->pool : NULL, config->preempt);
         object->last_strategy = 0;
     } else if (accel->topology != object->topology_serial || object->class_hint == RT_STATIC ||
                object->class_hint == RT_AFFINE) {
         /* New connectivity, or hinted rigid: a full build, with the fast
          * builder for what changes every frame. */
         int unstructured = object->current_class == RT_UNSTRUCTURED;
-        status = rebuild(object, unstructured ? &dynamic : quality, 0, config->pool);
+        status = rebuild(object, unstructured ? &dynamic : quality, 0, config->pool,
+                         config->preempt);
         object->last_strategy = RT_REBUILD;
     } else {
         unsigned strategy = scene_object_strategy(object, config->default_strategy);
@@ -196,10 +206,10 @@ const struct scene_accel *scene_object_update(struct scene_object *object,
             status = 0;
             break;
         case RT_REBUILD_MEDIAN:
-            status = rebuild(object, &dynamic, 1, config->pool);
+            status = rebuild(object, &dynamic, 1, config->pool, config->preempt);
             break;
         case RT_REBUILD_HEURISTIC:
-            status = refit_or_rebuild(object, &dynamic, config->pool);
+            status = refit_or_rebuild(object, &dynamic, config);
             break;
         case RT_RESTRUCTURE:
             status = restructure(object, &dynamic, config->restructure);
@@ -211,7 +221,7 @@ const struct scene_accel *scene_object_update(struct scene_object *object,
             status = automatic(object, &dynamic, config);
             break;
         default: /* RT_REBUILD */
-            status = rebuild(object, &dynamic, 0, config->pool);
+            status = rebuild(object, &dynamic, 0, config->pool, config->preempt);
             break;
         }
         if (status == 0)

@@ -43,10 +43,11 @@ struct scene_update_config {
     /* Asynchronous rebuilds (Wald, Ize and Parker (2008) sec. 6); threads == 0 disables
      * them and RT_ASYNC_REBUILD then behaves as RT_REBUILD_HEURISTIC. */
     struct scene_async_builder *async;
-    /* Measured time of one traversal step (node or triangle test), ms:
-     * the automatic strategy's exchange rate between tree quality and
-     * time. */
+    /* Measured time of one traversal step (node or triangle test), ms of
+     * rt_pool_work_ms (CPU time as a share of the frame): the automatic
+     * strategy's exchange rate between tree quality and time. */
     double ms_per_test;
+    const struct scene_preempt_hook *preempt; /* test hook, NULL (accel.h) */
 };
 
 /*
