@@ -64,6 +64,16 @@ static void add_scene_stats(struct render_stats *stats, const struct scene_stats
 int rt_prepare_scene(struct rt_context *ctx, const char *caller)
 {
     struct scene *scene = &ctx->scene;
+    /* The frame is traced through the projection and viewport current
+     * now (render_frame_now): in a GL frame, what was drawn under others
+     * (a heads-up display under a pushed rtuOrtho2D, an inset viewport)
+     * is rasterised as GL draws it instead (render/raster.h). */
+    struct scene_frame *frame = &scene->frame;
+    frame->overlay_enabled = ctx->gl_frames;
+    memcpy(frame->trace_projection, ctx->projection.m[ctx->projection.depth - 1],
+           sizeof(frame->trace_projection));
+    for (int i = 0; i < 4; i++)
+        frame->trace_viewport[i] = ctx->render.viewport[i];
     if (scene_prepare_toplevel(scene) != SCENE_OK) {
         rt_error(ctx, RT_OUT_OF_MEMORY, "%s: out of memory building the top level", caller);
         return -1;
