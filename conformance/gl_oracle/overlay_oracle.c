@@ -29,7 +29,7 @@
 #define ROW_W (3 * ORACLE_W + 2 * GAP)
 #define TOLERANCE 3
 /* Matching pixels per scene the test asks for. */
-#define MIN_MATCH 99.0
+#define MIN_MATCH 99.9
 
 struct overlay_scene {
     const char *name;

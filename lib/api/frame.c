@@ -99,6 +99,7 @@ void rt_render_job(struct rt_context *ctx, struct render_job *job)
     job->pool = rt_context_pool(ctx);
     job->threads = rt_pool_threads(job->pool);
     job->kernels = ctx->kernels;
+    job->overlay = NULL;
 }
 
 void rt_frame_described(struct rt_context *ctx)
@@ -178,6 +179,11 @@ static void render_frame_now(struct rt_context *ctx)
            sizeof(ctx->render.projection));
     struct render_job job;
     rt_render_job(ctx, &job);
+    /* The frame's bitmaps go over its image, as GL's glBitmap over the
+     * scene drawn before it (render/overlay.h), in draw order among the
+     * geometry rasterised over it (a HUD panel drawn after the text covers
+     * it); they end with the frame. */
+    job.overlay = &ctx->overlay;
     if (render_frame(&job, fb_width, fb_height, &ctx->render.fb, &ctx->stats)) {
         rt_error(ctx, RT_OUT_OF_MEMORY, "rtRenderFrame: out of memory");
         return;
@@ -187,12 +193,10 @@ static void render_frame_now(struct rt_context *ctx)
      * time: the time so far less the updates before tracing, taken here
      * because render_ms is only set below (internal/automatic_cost). */
     double frame_ms = rt_now_ms() - start;
-    /* The frame's bitmaps go over its image, as GL's glBitmap over the
-     * scene drawn before it (render/overlay.h); they end with the frame.
-     * A GL frame ends at the next rtClear instead: GL's framebuffer keeps
-     * the text until it is cleared, so a frame rendered again (glFlush,
-     * then the buffer swap that renders once more) shows it again. */
-    render_overlay_apply(&ctx->overlay, &ctx->render.fb);
+    /* The bitmaps end with the frame.  A GL frame ends at the next rtClear
+     * instead: GL's framebuffer keeps the text until it is cleared, so a
+     * frame rendered again (glFlush, then the buffer swap that renders
+     * once more) shows it again. */
     if (!ctx->gl_frames)
         render_overlay_clear(&ctx->overlay);
     scene_end_frame(&ctx->scene, ctx->stats.rays, ctx->stats.node_tests + ctx->stats.triangle_tests,

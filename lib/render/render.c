@@ -12,6 +12,7 @@
 #include "base/mat4.h"
 #include "base/timer.h"
 #include "render/blend.h"
+#include "render/overlay.h"
 #include "render/raster.h"
 #include "render/shade.h"
 #include "trace/packet_scene.h"
@@ -556,8 +557,14 @@ static int raster_under(struct render_pass *pass, uint32_t first_traced)
 
 void render_pass_raster(struct render_pass *pass)
 {
-    if (!pass->depth)
+    const struct render_overlay *bitmaps = pass->job->overlay;
+    if (!pass->depth) {
+        if (bitmaps)
+            render_overlay_draw(bitmaps, 0, UINT32_MAX, pass->fb, pass->fb_width,
+                                pass->fb_height);
         return;
+    }
+    size_t next_bitmap = 0;
     const struct scene_instance_list *list = &pass->job->frame->committed;
     /* The first instance the frame traces: rasterised ones before it are
      * under the scene (raster_under). */
@@ -580,6 +587,10 @@ void render_pass_raster(struct render_pass *pass)
         if (inst->overlay) {
             if (i < first_traced)
                 continue; /* drawn under the scene */
+            /* The bitmaps drawn before it go under it, as in GL. */
+            if (bitmaps)
+                next_bitmap = render_overlay_draw(bitmaps, next_bitmap, i, pass->fb,
+                                                  pass->fb_width, pass->fb_height);
             struct raster_target own = target;
             overlay_target(&own, inst);
             raster_instance(&own, inst, instance_lights(pass, inst));
@@ -592,6 +603,9 @@ void render_pass_raster(struct render_pass *pass)
         raster_polygons(&target, inst);
         raster_lines(&target, &inst->object->mesh.lines, inst->object_to_world);
     }
+    if (bitmaps)
+        render_overlay_draw(bitmaps, next_bitmap, UINT32_MAX, pass->fb, pass->fb_width,
+                            pass->fb_height);
 }
 
 int render_pass_end(struct render_pass *pass, struct render_framebuffer *fb,

@@ -191,6 +191,8 @@ struct scene_recording *scene_immediate_segment(struct scene_frame *frame,
                                                 const struct scene_gl_state *gl,
                                                 const struct scene_raster *raster);
 void scene_immediate_commit(struct scene_frame *frame, uint64_t frame_number);
+/* Ends the open segment (the next block starts a new one). */
+void scene_immediate_close(struct scene_frame *frame);
 /* Drops the segments recorded and not committed (a new frame). */
 void scene_immediate_restart(struct scene_immediate *im);
 void scene_immediate_release(struct scene_immediate *im);
