@@ -255,7 +255,10 @@ void raster_instance(const struct raster_target *target, const struct scene_inst
         gl_triangle_colors(inst, t, lights, front, colors);
         for (int i = 0; i < 3; i++)
             memcpy(v[i].color, colors[i], sizeof(colors[i]));
-        const int n = clip_polygon(target->clip, v, 3);
+        int n = clip_polygon(target->clip, v, 3);
+        for (int i = 0; i < n; i++)
+            if (!(v[i].clip[3] > 0.0))
+                n = 0; /* only a degenerate polygon reaches w = 0 inside the volume */
         if (n < 3)
             continue;
         struct window_vertex w[CLIP_MAX_VERTICES];
