@@ -76,8 +76,8 @@ static void object(int i, GLfloat x, GLfloat z)
     glPopMatrix();
 }
 
-/* The fog mode in the top left corner, as text over the scene: a window
- * projection pushed for the raster position, popped again. */
+/* The fog mode in the top left corner, as text on a panel over the scene,
+ * and a crosshair: a window projection pushed, popped again. */
 static void show_mode(void)
 {
     const char *text = fog_mode == GL_EXP ? "GL_EXP" : fog_mode == GL_EXP2 ? "GL_EXP2" : "GL_LINEAR";
@@ -93,6 +93,25 @@ static void show_mode(void)
     glMatrixMode(GL_MODELVIEW);
     glPushMatrix();
     glLoadIdentity();
+    /* A heads-up display drawn as geometry: a translucent panel under the
+     * text, a crosshair in the middle. */
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glColor4f(0.0f, 0.0f, 0.0f, 0.6f);
+    glBegin(GL_QUADS);
+    glVertex2i(4, viewport[3] - 26);
+    glVertex2i(112, viewport[3] - 26);
+    glVertex2i(112, viewport[3] - 2);
+    glVertex2i(4, viewport[3] - 2);
+    glEnd();
+    glDisable(GL_BLEND);
+    glColor3f(1.0f, 1.0f, 1.0f);
+    glBegin(GL_LINES);
+    glVertex2i(viewport[2] / 2 - 8, viewport[3] / 2);
+    glVertex2i(viewport[2] / 2 + 8, viewport[3] / 2);
+    glVertex2i(viewport[2] / 2, viewport[3] / 2 - 8);
+    glVertex2i(viewport[2] / 2, viewport[3] / 2 + 8);
+    glEnd();
     glColor3f(1.0f, 1.0f, 0.3f);
     glRasterPos2i(8, viewport[3] - 20);
     while (*text)

@@ -64,6 +64,16 @@ static void add_scene_stats(struct render_stats *stats, const struct scene_stats
 int rt_prepare_scene(struct rt_context *ctx, const char *caller)
 {
     struct scene *scene = &ctx->scene;
+    /* The frame is traced through the projection and viewport current
+     * now (render_frame_now): in a GL frame, what was drawn under others
+     * (a heads-up display under a pushed rtuOrtho2D, an inset viewport)
+     * is rasterised as GL draws it instead (render/raster.h). */
+    struct scene_frame *frame = &scene->frame;
+    frame->overlay_enabled = ctx->gl_frames;
+    memcpy(frame->trace_projection, ctx->projection.m[ctx->projection.depth - 1],
+           sizeof(frame->trace_projection));
+    for (int i = 0; i < 4; i++)
+        frame->trace_viewport[i] = ctx->render.viewport[i];
     if (scene_prepare_toplevel(scene) != SCENE_OK) {
         rt_error(ctx, RT_OUT_OF_MEMORY, "%s: out of memory building the top level", caller);
         return -1;
@@ -89,6 +99,7 @@ void rt_render_job(struct rt_context *ctx, struct render_job *job)
     job->pool = rt_context_pool(ctx);
     job->threads = rt_pool_threads(job->pool);
     job->kernels = ctx->kernels;
+    job->overlay = NULL;
 }
 
 void rt_frame_described(struct rt_context *ctx)
@@ -176,18 +187,21 @@ static void render_frame_now(struct rt_context *ctx)
     double trace_work = rt_pool_work_ms(job.pool);
     if (ctx->scene.preempt.fn)
         ctx->scene.preempt.fn(ctx->scene.preempt.user);
+    /* The frame's bitmaps go over its image, as GL's glBitmap over the
+     * scene drawn before it (render/overlay.h), in draw order among the
+     * geometry rasterised over it (a HUD panel drawn after the text covers
+     * it); they end with the frame. */
+    job.overlay = &ctx->overlay;
     if (render_frame(&job, fb_width, fb_height, &ctx->render.fb, &ctx->stats)) {
         rt_error(ctx, RT_OUT_OF_MEMORY, "rtRenderFrame: out of memory");
         return;
     }
     trace_work = rt_pool_work_ms(job.pool) - trace_work;
     ctx->frames_traced++;
-    /* The frame's bitmaps go over its image, as GL's glBitmap over the
-     * scene drawn before it (render/overlay.h); they end with the frame.
-     * A GL frame ends at the next rtClear instead: GL's framebuffer keeps
-     * the text until it is cleared, so a frame rendered again (glFlush,
-     * then the buffer swap that renders once more) shows it again. */
-    render_overlay_apply(&ctx->overlay, &ctx->render.fb);
+    /* The bitmaps end with the frame.  A GL frame ends at the next rtClear
+     * instead: GL's framebuffer keeps the text until it is cleared, so a
+     * frame rendered again (glFlush, then the buffer swap that renders
+     * once more) shows it again. */
     if (!ctx->gl_frames)
         render_overlay_clear(&ctx->overlay);
     scene_end_frame(&ctx->scene, ctx->stats.rays, ctx->stats.node_tests + ctx->stats.triangle_tests,

@@ -390,6 +390,11 @@ void rt_raster_now(const struct rt_context *ctx, struct scene_raster *raster)
     raster->offset_units = vis->offset_units;
     raster->line_width = vis->line_width;
     raster->point_size = vis->point_size;
+    raster->depth_test = ctx->depth_test != 0;
+    for (int i = 0; i < 4; i++)
+        raster->viewport[i] = ctx->render.viewport[i];
+    memcpy(raster->projection, ctx->projection.m[ctx->projection.depth - 1],
+           sizeof(raster->projection));
 }
 
 void rtGetClipPlane(RTenum plane, RTdouble *equation)

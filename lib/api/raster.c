@@ -192,7 +192,14 @@ static void draw_bitmap(struct rt_context *ctx, int width, int height, const flo
     if (rows && width > 0 && height > 0) {
         const int x = (int)floor((double)ctx->raster_pos[0] + RASTER_EPSILON - f[0]);
         const int y = (int)floor((double)ctx->raster_pos[1] + RASTER_EPSILON - f[1]);
-        if (render_overlay_add(&ctx->overlay, x, y, width, height, stride, rows,
+        /* Its place in the draw order: after the instances drawn so far.
+         * The open immediate segment ends here, so that geometry drawn
+         * after the bitmap is a later instance (render.c draws the bitmap
+         * under rasterised instances from `order` on). */
+        struct scene_frame *frame = &ctx->scene.frame;
+        scene_immediate_close(frame);
+        const uint32_t order = frame->open ? frame->pending.count : 0;
+        if (render_overlay_add(&ctx->overlay, order, x, y, width, height, stride, rows,
                                ctx->raster_color)) {
             rt_error(ctx, RT_OUT_OF_MEMORY, "rtBitmap: out of memory");
             return;

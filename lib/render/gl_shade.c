@@ -67,15 +67,15 @@ static void eye_position(const struct scene_instance *inst, const struct scene_m
         out[k] = (float)pw[k];
 }
 
-static void fetch_triangle(const struct shade_context *sc, const struct trace_scene_hit *hit,
-                           struct gl_triangle *t)
+static void fetch_triangle_of(const struct scene_instance *inst, uint32_t prim,
+                              struct gl_triangle *t)
 {
-    t->inst = shade_hit_instance(sc, hit);
+    t->inst = inst;
     t->mesh = &t->inst->object->mesh;
-    t->v = &t->mesh->indices[3 * hit->prim];
+    t->v = &t->mesh->indices[3 * prim];
     /* A material that inherits nothing is used where it is recorded: the
      * copy (some 260 bytes a hit) only for one completed from the call. */
-    const struct scene_material *recorded = &t->mesh->materials[t->mesh->tri_material[hit->prim]];
+    const struct scene_material *recorded = &t->mesh->materials[t->mesh->tri_material[prim]];
     if (recorded->inherit) {
         t->resolved = *recorded;
         surface_resolve_material(&t->inst->appearance, &t->resolved);
@@ -83,7 +83,7 @@ static void fetch_triangle(const struct shade_context *sc, const struct trace_sc
     } else {
         t->mat = recorded;
     }
-    t->flags = t->mesh->tri_flags[hit->prim];
+    t->flags = t->mesh->tri_flags[prim];
     /* Recorded in a list before it set a colour or the RT_COLOR_MATERIAL
      * enable: the caller's (the instance keeps them), as GL. */
     if (t->flags & TRI_INHERIT_COLOR_MATERIAL)
@@ -92,13 +92,19 @@ static void fetch_triangle(const struct shade_context *sc, const struct trace_sc
     if (t->flags & TRI_INHERIT_SHADE) /* rtShadeModel at the call */
         t->flags = (uint8_t)((t->flags & ~TRI_FLAT) | (t->inst->appearance.flat ? TRI_FLAT : 0u));
     t->call_color = (t->flags & TRI_INHERIT_COLOR) ? t->inst->appearance.color : NULL;
-    t->provoking = t->mesh->tri_provoking[hit->prim];
+    t->provoking = t->mesh->tri_provoking[prim];
     float p[3][3], e1[3], e2[3];
     for (int i = 0; i < 3; i++)
         eye_position(t->inst, t->mesh, t->v[i], p[i]);
     vec3_sub(e1, p[1], p[0]);
     vec3_sub(e2, p[2], p[0]);
     vec3_cross(t->ng, e1, e2);
+}
+
+static void fetch_triangle(const struct shade_context *sc, const struct trace_scene_hit *hit,
+                           struct gl_triangle *t)
+{
+    fetch_triangle_of(shade_hit_instance(sc, hit), hit->prim, t);
 }
 
 /* The colour of a vertex of the triangle: recorded, or the call's. */
@@ -381,4 +387,27 @@ void gl_shade_hit(const struct shade_context *sc, const struct trace_scene_hit *
     }
     for (int k = 0; k < 4; k++)
         rgba[k] = c[k] < 0.0f ? 0.0f : (c[k] > 1.0f ? 1.0f : c[k]);
+}
+
+void gl_triangle_colors(const struct scene_instance *inst, uint32_t prim,
+                        const struct scene_light *lights, int front, float rgba[3][4])
+{
+    struct gl_triangle t;
+    fetch_triangle_of(inst, prim, &t);
+    t.lights = lights;
+    const int flat = (t.flags & TRI_FLAT) != 0;
+    const int back = !front && inst->appearance.gl.light_model.two_side;
+    for (int i = 0; i < 3; i++) {
+        const uint32_t v = flat ? t.provoking : t.v[i];
+        float c[4];
+        if (!t.mat->lighting) {
+            memcpy(c, vertex_color(&t, v), sizeof(c));
+        } else {
+            float p[3];
+            eye_position(inst, t.mesh, v, p);
+            lit_colour(&t, p, &t.mesh->normals[3 * v], vertex_color(&t, v), back, c);
+        }
+        for (int k = 0; k < 4; k++)
+            rgba[i][k] = c[k] < 0.0f ? 0.0f : (c[k] > 1.0f ? 1.0f : c[k]);
+    }
 }

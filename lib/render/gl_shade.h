@@ -33,4 +33,13 @@ int gl_hit_drawn(const struct shade_context *sc, const float dir[3],
 void gl_shade_hit(const struct shade_context *sc, const struct trace_scene_hit *hit,
                   const float org[3], const float dir[3], float width, float rgba[4]);
 
+/* The colours GL's pipeline gives the three vertices of triangle `prim`
+ * of `inst` before rasterisation (render/raster_triangles.c): lit per
+ * vertex with `lights` when lighting is on, with the back material and
+ * the reversed normal when `front` is 0 under RT_LIGHT_MODEL_TWO_SIDE,
+ * else the vertex colours; under RT_FLAT all three the provoking
+ * vertex's (OpenGL 2.1 sec. 2.14.7).  Clamped to [0, 1]. */
+void gl_triangle_colors(const struct scene_instance *inst, uint32_t prim,
+                        const struct scene_light *lights, int front, float rgba[3][4]);
+
 #endif

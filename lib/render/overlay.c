@@ -29,8 +29,9 @@ static int reserve(void **buffer, size_t *capacity, size_t needed, size_t size)
     return 0;
 }
 
-int render_overlay_add(struct render_overlay *overlay, int x, int y, int width, int height,
-                       size_t stride, const unsigned char *rows, const float color[4])
+int render_overlay_add(struct render_overlay *overlay, uint32_t order, int x, int y, int width,
+                       int height, size_t stride, const unsigned char *rows,
+                       const float color[4])
 {
     const size_t bytes = stride * (size_t)height;
     if (height > 0 && bytes / (size_t)height != stride)
@@ -42,6 +43,7 @@ int render_overlay_add(struct render_overlay *overlay, int x, int y, int width, 
         reserve((void **)&overlay->bits, &overlay->bits_capacity, overlay->bits_used + bytes, 1))
         return -1;
     struct render_bitmap *b = &overlay->items[overlay->count++];
+    b->order = order;
     b->x = x;
     b->y = y;
     b->width = width;
@@ -56,32 +58,39 @@ int render_overlay_add(struct render_overlay *overlay, int x, int y, int width, 
 }
 
 static void draw_bitmap(const struct render_bitmap *b, const unsigned char *bits,
-                        struct render_framebuffer *fb)
+                        float *rgba, int width, int height)
 {
     /* Clip to the framebuffer in 64-bit arithmetic: x + width may
      * overflow an int for positions far outside the window. */
     long long i0 = b->x < 0 ? -(long long)b->x : 0;
     long long j0 = b->y < 0 ? -(long long)b->y : 0;
     long long i1 = b->width, j1 = b->height;
-    if ((long long)b->x + i1 > fb->width)
-        i1 = (long long)fb->width - b->x;
-    if ((long long)b->y + j1 > fb->height)
-        j1 = (long long)fb->height - b->y;
+    if ((long long)b->x + i1 > width)
+        i1 = (long long)width - b->x;
+    if ((long long)b->y + j1 > height)
+        j1 = (long long)height - b->y;
     for (long long j = j0; j < j1; j++) {
         const unsigned char *row = bits + b->offset + (size_t)j * b->stride;
-        const size_t line = (size_t)(b->y + j) * (size_t)fb->width;
+        const size_t line = (size_t)(b->y + j) * (size_t)width;
         for (long long i = i0; i < i1; i++)
             if (row[i >> 3] & (0x80u >> (i & 7)))
-                memcpy(&fb->rgba[4 * (line + (size_t)(b->x + i))], b->color, sizeof(b->color));
+                memcpy(&rgba[4 * (line + (size_t)(b->x + i))], b->color, sizeof(b->color));
     }
 }
 
 void render_overlay_apply(const struct render_overlay *overlay, struct render_framebuffer *fb)
 {
-    if (!fb->rgba)
-        return;
-    for (size_t k = 0; k < overlay->count; k++)
-        draw_bitmap(&overlay->items[k], overlay->bits, fb);
+    if (fb->rgba)
+        render_overlay_draw(overlay, 0, UINT32_MAX, fb->rgba, fb->width, fb->height);
+}
+
+size_t render_overlay_draw(const struct render_overlay *overlay, size_t from, uint32_t before,
+                           float *rgba, int width, int height)
+{
+    size_t k = from;
+    for (; k < overlay->count && overlay->items[k].order <= before; k++)
+        draw_bitmap(&overlay->items[k], overlay->bits, rgba, width, height);
+    return k;
 }
 
 void render_overlay_clear(struct render_overlay *overlay)

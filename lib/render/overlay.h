@@ -14,12 +14,16 @@
 #define RT_RENDER_OVERLAY_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #include "render/render.h"
 
 /* One bitmap: its lower-left pixel, size, colour, and its rows (bottom to
  * top, MSB first, `stride` bytes apart) at `offset` in the overlay's bits. */
 struct render_bitmap {
+    /* The number of the frame's instances drawn before it: it goes under
+     * rasterised instances from that index on (render.c, docs/text.md). */
+    uint32_t order;
     int x, y;
     int width, height;
     size_t stride;
@@ -36,8 +40,14 @@ struct render_overlay {
 
 /* Appends a bitmap (copying height rows of `stride` bytes from `rows`).
  * Returns 0, or -1 when out of memory (the overlay unchanged). */
-int render_overlay_add(struct render_overlay *overlay, int x, int y, int width, int height,
-                       size_t stride, const unsigned char *rows, const float color[4]);
+int render_overlay_add(struct render_overlay *overlay, uint32_t order, int x, int y, int width,
+                       int height, size_t stride, const unsigned char *rows,
+                       const float color[4]);
+/* Draws the bitmaps from index `from` on whose order is at most `before`
+ * into the width x height RGBA image rgba; returns the index of the first
+ * one not drawn. */
+size_t render_overlay_draw(const struct render_overlay *overlay, size_t from, uint32_t before,
+                           float *rgba, int width, int height);
 /* Draws every bitmap, in order, into fb: a pixel whose bit is 1 takes
  * the bitmap's colour; pixels outside fb are clipped. */
 void render_overlay_apply(const struct render_overlay *overlay, struct render_framebuffer *fb);

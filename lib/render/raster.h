@@ -41,6 +41,9 @@ struct raster_target {
     /* Its blend state, and the width and size its lines and points
      * without their own take (scene/raster_state.h). */
     const struct scene_raster *raster;
+    /* 1: GL's RT_LESS test against `depth` and writes under rtDepthMask;
+     * 0: RT_DEPTH_TEST disabled, no test and no write (GL). */
+    int depth_test;
 };
 
 /* The window depth (GL's depth range [0, 1]) of the eye-space point
@@ -89,6 +92,19 @@ int raster_polygons_present(const struct scene_instance *inst);
  * mapped to eye space by object_to_eye. */
 void raster_lines(const struct raster_target *target, const struct scene_lines *lines,
                   const double object_to_eye[16]);
+
+struct scene_light;
+
+/*
+ * Draws an instance drawn under a projection or viewport other than the
+ * frame's (scene_instance.overlay) as GL draws it, through target's
+ * projection and viewport (the instance's): its filled triangles by
+ * raster_triangles.c, its unfilled faces, lines and points as
+ * raster_polygons and raster_lines draw them.  `lights`: the light set
+ * it was drawn under.
+ */
+void raster_instance(const struct raster_target *target, const struct scene_instance *inst,
+                     const struct scene_light *lights);
 
 /* ---- shared by raster_lines.c and raster_points.c ---------------------- */
 

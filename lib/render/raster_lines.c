@@ -93,7 +93,7 @@ void raster_fragment(const struct raster_target *target, long x, long y, double 
     if (x < 0 || y < 0 || x >= target->width || y >= target->height)
         return;
     size_t i = (size_t)y * (size_t)target->width + (size_t)x;
-    if (!(z < target->depth[i]))
+    if (target->depth_test && !(z < target->depth[i]))
         return; /* GL's default depth function, RT_LESS */
     float *px = &target->rgba[4 * i];
     const struct render_visibility *vis = target->vis;
@@ -106,7 +106,7 @@ void raster_fragment(const struct raster_target *target, long x, long y, double 
         blend_combine(r->blend_src, r->blend_dst, color, px, px);
     else
         memcpy(px, color, 4 * sizeof(float));
-    if (vis->depth_mask)
+    if (target->depth_test && vis->depth_mask)
         target->depth[i] = z;
 }
 
@@ -246,8 +246,10 @@ static double l1_distance(const double p[2], const double d[2], double cx, doubl
  * GL's diamond-exit rule (sec. 3.4.1): fragment f is produced when the
  * segment meets the open diamond |x - xf - 1/2| + |y - yf - 1/2| < 1/2
  * and its end point is not inside it.  The ends are perturbed by
- * (eps, eps^2) so a segment along a diamond's edge decides as the spec's
- * perturbed one.  Wide segments are shifted by (width - 1) / 2 across
+ * -(eps, eps^2), as the spec perturbs them, so a segment along a
+ * diamond's edge decides as the spec's perturbed one: a horizontal line
+ * at y = 80 exactly lights row 79, as Mesa's does (the overlay oracle's
+ * crosshair).  Wide segments are shifted by (width - 1) / 2 across
  * their major axis first, and each fragment then starts a column or row.
  */
 static void rasterise_segment(const struct raster_target *target, struct window_segment *seg)
@@ -256,8 +258,8 @@ static void rasterise_segment(const struct raster_target *target, struct window_
     double dx = seg->b[0] - seg->a[0], dy = seg->b[1] - seg->a[1];
     seg->x_major = fabs(dx) >= fabs(dy);
     double shift = (double)(seg->width - 1) / 2.0;
-    double p[2] = {seg->a[0] + eps, seg->a[1] + eps * eps};
-    double e[2] = {seg->b[0] + eps, seg->b[1] + eps * eps};
+    double p[2] = {seg->a[0] - eps, seg->a[1] - eps * eps};
+    double e[2] = {seg->b[0] - eps, seg->b[1] - eps * eps};
     if (seg->x_major) {
         p[1] -= shift;
         e[1] -= shift;

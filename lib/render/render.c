@@ -13,6 +13,7 @@
 #include "base/timer.h"
 #include "render/blend.h"
 #include "render/filled.h"
+#include "render/overlay.h"
 #include "render/raster.h"
 #include "render/shade.h"
 #include "render/surface.h"
@@ -331,12 +332,14 @@ void render_framebuffer_release(struct render_framebuffer *fb)
 }
 
 /* 1 when an instance of the committed frame has lines or points, or
- * triangles that may be drawn as either (rtPolygonMode). */
+ * triangles that may be drawn as either (rtPolygonMode), or is
+ * rasterised (scene_instance.overlay): the depth buffer is needed. */
 static int frame_has_lines(const struct scene_frame *frame)
 {
     for (uint32_t i = 0; i < frame->committed.count; i++)
         if (scene_lines_nonempty(&frame->committed.items[i].object->mesh.lines) ||
-            raster_polygons_present(&frame->committed.items[i]))
+            raster_polygons_present(&frame->committed.items[i]) ||
+            frame->committed.items[i].overlay)
             return 1;
     return 0;
 }
@@ -543,24 +546,128 @@ void render_tile(struct render_pass *pass, uint32_t tile, int worker)
     }
 }
 
+/* The light set an instance was drawn under (the frame's when it has
+ * none, as gl_shade_hit). */
+static const struct scene_light *instance_lights(const struct render_pass *pass,
+                                                 const struct scene_instance *inst)
+{
+    const struct scene_frame *frame = pass->job->frame;
+    const uint32_t set = inst->appearance.gl.light_set;
+    return set < frame->committed_lights.count ? frame->committed_lights.items[set].light
+                                               : pass->job->state->lights;
+}
+
+/* A target for the rasterised instance inst: its projection, viewport,
+ * clip planes, raster state and depth test. */
+static void overlay_target(struct raster_target *target, const struct scene_instance *inst)
+{
+    const struct scene_raster *r = &inst->appearance.raster;
+    target->projection = r->projection;
+    target->viewport = r->viewport;
+    target->clip = &inst->appearance.clip;
+    target->raster = r;
+    target->depth_test = r->depth_test;
+}
+
+/*
+ * GL's draw order for what was drawn under another projection before the
+ * first traced instance (a background quad drawn first): drawn into a
+ * layer of its own, on the clear colour and a cleared depth buffer, and
+ * the traced image goes over it where GL's depth test would have let the
+ * scene's fragments through, its window depth less than the layer's (a
+ * layer drawn with RT_DEPTH_TEST disabled writes no depth, so the scene
+ * covers it wherever the scene is).  Elsewhere the layer shows, its depth
+ * what the later primitives are tested against.  Returns -1 when out of
+ * memory (the layer is then drawn after the scene).
+ */
+static int raster_under(struct render_pass *pass, uint32_t first_traced)
+{
+    const size_t pixels = (size_t)pass->fb_width * (size_t)pass->fb_height;
+    const struct render_state *st = pass->job->state;
+    float *rgba = rt_malloc((pixels ? pixels : 1) * 4 * sizeof(float));
+    double *depth = rt_malloc((pixels ? pixels : 1) * sizeof(double));
+    if (!rgba || !depth) {
+        rt_free(rgba);
+        rt_free(depth);
+        return -1;
+    }
+    for (size_t i = 0; i < pixels; i++) {
+        memcpy(&rgba[4 * i], st->clear_color, 4 * sizeof(float));
+        depth[i] = 1.0;
+    }
+    struct raster_target target = {rgba, depth, pass->fb_width, pass->fb_height, NULL, NULL,
+                                   &st->vis, NULL, NULL, 1};
+    const struct scene_instance_list *list = &pass->job->frame->committed;
+    for (uint32_t i = 0; i < first_traced; i++) {
+        const struct scene_instance *inst = &list->items[i];
+        if (!inst->overlay)
+            continue;
+        overlay_target(&target, inst);
+        raster_instance(&target, inst, instance_lights(pass, inst));
+    }
+    for (size_t i = 0; i < pixels; i++)
+        if (!(pass->depth[i] < depth[i])) {
+            memcpy(&pass->fb[4 * i], &rgba[4 * i], 4 * sizeof(float));
+            pass->depth[i] = depth[i];
+            if (pass->depth_state)
+                pass->depth_state[i] = NULL;
+        }
+    rt_free(rgba);
+    rt_free(depth);
+    return 0;
+}
+
 void render_pass_raster(struct render_pass *pass)
 {
-    if (!pass->depth || !pass->projectable)
+    const struct render_overlay *bitmaps = pass->job->overlay;
+    if (!pass->depth) {
+        if (bitmaps)
+            render_overlay_draw(bitmaps, 0, UINT32_MAX, pass->fb, pass->fb_width,
+                                pass->fb_height);
         return;
+    }
+    size_t next_bitmap = 0;
+    const struct scene_instance_list *list = &pass->job->frame->committed;
+    /* The first instance the frame traces: rasterised ones before it are
+     * under the scene (raster_under). */
+    uint32_t first_traced = 0;
+    while (first_traced < list->count && (list->items[first_traced].overlay ||
+                                          list->items[first_traced].object->mesh.tri_count == 0))
+        first_traced++;
+    if (first_traced == list->count)
+        first_traced = 0; /* nothing traced: all in order over the clear colour */
+    if (first_traced && raster_under(pass, first_traced))
+        first_traced = 0;
     if (pass->depth_state)
         raster_depth_offset(pass->depth, pass->depth_state, pass->fb_width, pass->fb_height);
     raster_depth_prepare(pass->depth, pass->fb_width, pass->fb_height);
     const struct render_state *st = pass->job->state;
     struct raster_target target = {pass->fb, pass->depth, pass->fb_width, pass->fb_height,
-                                   st->viewport, st->projection, &st->vis, NULL, NULL};
-    const struct scene_instance_list *list = &pass->job->frame->committed;
+                                   st->viewport, st->projection, &st->vis, NULL, NULL, 1};
     for (uint32_t i = 0; i < list->count; i++) {
         const struct scene_instance *inst = &list->items[i];
+        if (inst->overlay) {
+            if (i < first_traced)
+                continue; /* drawn under the scene */
+            /* The bitmaps drawn before it go under it, as in GL. */
+            if (bitmaps)
+                next_bitmap = render_overlay_draw(bitmaps, next_bitmap, i, pass->fb,
+                                                  pass->fb_width, pass->fb_height);
+            struct raster_target own = target;
+            overlay_target(&own, inst);
+            raster_instance(&own, inst, instance_lights(pass, inst));
+            continue;
+        }
+        if (!pass->projectable)
+            continue; /* a singular projection: nothing of the frame's is drawn */
         target.clip = &inst->appearance.clip; /* GL clips per primitive */
         target.raster = &inst->appearance.raster; /* and blends, sizes */
         raster_polygons(&target, inst);
         raster_lines(&target, &inst->object->mesh.lines, inst->object_to_world);
     }
+    if (bitmaps)
+        render_overlay_draw(bitmaps, next_bitmap, UINT32_MAX, pass->fb, pass->fb_width,
+                            pass->fb_height);
 }
 
 int render_pass_end(struct render_pass *pass, struct render_framebuffer *fb,

@@ -90,6 +90,8 @@ struct render_stats {
 };
 
 /* What a frame or query needs; built by the API layer. */
+struct render_overlay;
+
 struct render_job {
     const struct render_state *state;
     const struct scene_frame *frame; /* prepared: top level valid */
@@ -100,6 +102,9 @@ struct render_job {
     struct rt_pool *pool;
     int threads;
     const struct trace_kernels *kernels; /* the context's ISA table; NULL: scalar */
+    /* The frame's bitmaps (render/overlay.h), drawn after the trace in
+     * draw order among the rasterised instances; NULL: none. */
+    const struct render_overlay *overlay;
 };
 
 /* Per-worker counters on their own cache lines. */

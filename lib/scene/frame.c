@@ -234,8 +234,8 @@ static void set_rows(struct trace_instance *ti, const double m[16])
 static int instance_box(const struct scene_instance *inst, struct aabb *box)
 {
     const struct scene_mesh *mesh = &inst->object->mesh;
-    if (mesh->tri_count == 0 || aabb_is_empty(&mesh->bounds))
-        return 0; /* empty objects are never hit: keep them out */
+    if (mesh->tri_count == 0 || aabb_is_empty(&mesh->bounds) || inst->overlay)
+        return 0; /* empty objects are never hit, rasterised ones not traced */
     *box = transformed_box(&mesh->bounds, inst->object_to_world);
     return box_is_finite(box); /* else cannot be bounded in float: unreachable */
 }
@@ -424,6 +424,22 @@ static void mark_moved(const struct scene_instance_list *old, const struct scene
     }
 }
 
+/*
+ * 1 when the viewport an instance was drawn under is an inset of the
+ * frame's: not empty, not the frame's, and inside it (a minimap, a rear
+ * view).  A viewport that is larger or elsewhere is taken as the program
+ * setting the frame's viewport after drawing, which Tracelist's own
+ * frames allow (the viewport current at rtRenderFrame is the image's).
+ */
+static int is_inset(const int32_t vp[4], const int32_t frame[4])
+{
+    if (vp[2] <= 0 || vp[3] <= 0 || memcmp(vp, frame, 4 * sizeof(*vp)) == 0)
+        return 0;
+    return vp[0] >= frame[0] && vp[1] >= frame[1] &&
+           (int64_t)vp[0] + vp[2] <= (int64_t)frame[0] + frame[2] &&
+           (int64_t)vp[1] + vp[3] <= (int64_t)frame[1] + frame[3];
+}
+
 int scene_frame_prepare(struct scene_frame *frame, const struct bvh_build_params *params,
                         uint64_t frame_number, int *toplevel_built)
 {
@@ -453,6 +469,20 @@ int scene_frame_prepare(struct scene_frame *frame, const struct bvh_build_params
         struct scene_instance *inst = &frame->committed.items[i];
         if (inst->object_serial != inst->object->serial) {
             inst->object_serial = inst->object->serial;
+            frame->top_valid = 0;
+        }
+    }
+    /* Drawn under another projection or viewport than the frame's: out of
+     * the top level (rasterised), which changes with the classification. */
+    for (uint32_t i = 0; i < frame->committed.count; i++) {
+        struct scene_instance *inst = &frame->committed.items[i];
+        const struct scene_raster *r = &inst->appearance.raster;
+        const uint8_t overlay =
+            frame->overlay_enabled &&
+            (memcmp(r->projection, frame->trace_projection, sizeof(r->projection)) != 0 ||
+             is_inset(r->viewport, frame->trace_viewport));
+        if (inst->overlay != overlay) {
+            inst->overlay = overlay;
             frame->top_valid = 0;
         }
     }

@@ -65,6 +65,10 @@ struct scene_instance {
     struct scene_object *root;
     double root_to_world[16];
     double world_to_root[16];
+    /* 1 when it was drawn under a projection or viewport other than the
+     * frame's (scene_frame.trace_projection): not traced, rasterised as GL
+     * draws it (render/raster.h).  Set by scene_frame_prepare. */
+    uint8_t overlay;
 };
 
 struct scene_instance_list {
@@ -145,6 +149,16 @@ struct scene_frame {
     uint32_t group_next, group_current, group_depth;
     struct scene_object *group_root;
     double group_m[16], group_inv[16];
+
+    /* The viewport and projection the frame is traced through, set before
+     * scene_frame_prepare; with overlay_enabled (GL frames, started by
+     * rtClear), instances drawn under another one are not traced
+     * (scene_instance.overlay).  The comparison happens here, at
+     * preparation, because only then is the frame's projection known; an
+     * instance drawn under the frame's costs a memcmp. */
+    int overlay_enabled;
+    int32_t trace_viewport[4];
+    double trace_projection[16];
 };
 
 void scene_frame_init(struct scene_frame *frame);
@@ -177,6 +191,8 @@ struct scene_recording *scene_immediate_segment(struct scene_frame *frame,
                                                 const struct scene_gl_state *gl,
                                                 const struct scene_raster *raster);
 void scene_immediate_commit(struct scene_frame *frame, uint64_t frame_number);
+/* Ends the open segment (the next block starts a new one). */
+void scene_immediate_close(struct scene_frame *frame);
 /* Drops the segments recorded and not committed (a new frame). */
 void scene_immediate_restart(struct scene_immediate *im);
 void scene_immediate_release(struct scene_immediate *im);

@@ -63,6 +63,11 @@ static void stage_open(struct scene_immediate *im)
     im->is_staged[i] = 1;
 }
 
+void scene_immediate_close(struct scene_frame *frame)
+{
+    stage_open(&frame->immediate);
+}
+
 void scene_immediate_commit(struct scene_frame *frame, uint64_t frame_number)
 {
     struct scene_immediate *im = &frame->immediate;
