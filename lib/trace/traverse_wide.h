@@ -380,10 +380,12 @@ static inline int walk_wide8_impl(const struct bvh4 *wide, struct wide_state *s,
                         _mm256_set1_epi32(7));
                     const unsigned pm = (unsigned)_mm256_movemask_ps(
                         _mm256_permutevar8x32_ps(hit, lanes));
-                    const __m256i gather = _mm256_permutevar8x32_epi32(
-                        lanes, _mm256_cvtepu8_epi32(
-                                   _mm_loadl_epi64((const __m128i *)(const void *)&wide8_compress[pm])));
-                    const __m256i child = _mm256_load_si256((const __m256i *)(const void *)n->child);
+                    const __m128i packed =
+                        _mm_loadl_epi64((const __m128i *)(const void *)&wide8_compress[pm]);
+                    const __m256i gather =
+                        _mm256_permutevar8x32_epi32(lanes, _mm256_cvtepu8_epi32(packed));
+                    const __m256i child =
+                        _mm256_load_si256((const __m256i *)(const void *)n->child);
                     const __m256i count = _mm256_cvtepu8_epi32(
                         _mm_loadl_epi64((const __m128i *)(const void *)n->count));
                     _mm256_storeu_si256((__m256i *)(void *)&st_child[sp],
