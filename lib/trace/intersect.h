@@ -322,15 +322,23 @@ static inline float isect_clamp_to_box(float t_lo, float t_hi, float t)
  * computes the same floats four lanes at a time and calls this for the
  * lanes it keeps, so that a candidate costs no second float pass.
  */
-static inline int isect_triangle_finish(const struct trace_ray *ray, const float v0[3],
-                                        const float v1[3], const float v2[3], float U, float V,
-                                        float W, float det, float Az, float Bz, float Cz,
-                                        float size, float t_lo, float t_hi, float t_max,
-                                        float *t_out, float *u_out, float *v_out)
+static inline int isect_triangle_finish9(const struct trace_ray *ray, float x0, float y0,
+                                         float z0, float x1, float y1, float z1, float x2,
+                                         float y2, float z2, float U, float V, float W,
+                                         float det, float Az, float Bz, float Cz, float size,
+                                         float t_lo, float t_hi, float t_max, float *t_out,
+                                         float *u_out, float *v_out)
 {
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
 #endif
+    /* The vertices by value (isect_triangle_finish below takes them by
+     * pointer): the packet leaf (intersect_tri4.h) passes a lane's
+     * coordinates straight from the packet, without copying them to
+     * three arrays first. */
+    const float v0[3] = {x0, y0, z0};
+    const float v1[3] = {x1, y1, z1};
+    const float v2[3] = {x2, y2, z2};
     const float rcp_det = 1.0f / det;
 
     /* A triangle whose vertices are collinear can still project to a tiny
@@ -397,13 +405,12 @@ static inline int isect_triangle_finish(const struct trace_ray *ray, const float
                 tp = num / den;
         } else {
             /* e1 and e2 start at v0, e3 at v1. */
-            const float *p = longest == 3 ? v1 : v0;
             const double ex = longest == 1 ? e1x : (longest == 2 ? e2x : e3x);
             const double ey = longest == 1 ? e1y : (longest == 2 ? e2y : e3y);
             const double ez = longest == 1 ? e1z : (longest == 2 ? e2z : e3z);
-            const double wx = (double)p[0] - ray->org[0];
-            const double wy = (double)p[1] - ray->org[1];
-            const double wz = (double)p[2] - ray->org[2];
+            const double wx = (double)(longest == 3 ? v1[0] : v0[0]) - ray->org[0];
+            const double wy = (double)(longest == 3 ? v1[1] : v0[1]) - ray->org[1];
+            const double wz = (double)(longest == 3 ? v1[2] : v0[2]) - ray->org[2];
             const double dd = dx * dx + dy * dy + dz * dz;
             const double de = dx * ex + dy * ey + dz * ez;
             const double ee = ex * ex + ey * ey + ez * ez;
@@ -426,6 +433,17 @@ static inline int isect_triangle_finish(const struct trace_ray *ray, const float
     return 1;
 }
 
+static inline int isect_triangle_finish(const struct trace_ray *ray, const float v0[3],
+                                        const float v1[3], const float v2[3], float U, float V,
+                                        float W, float det, float Az, float Bz, float Cz,
+                                        float size, float t_lo, float t_hi, float t_max,
+                                        float *t_out, float *u_out, float *v_out)
+{
+    return isect_triangle_finish9(ray, v0[0], v0[1], v0[2], v1[0], v1[1], v1[2], v2[0], v2[1],
+                                  v2[2], U, V, W, det, Az, Bz, Cz, size, t_lo, t_hi, t_max,
+                                  t_out, u_out, v_out);
+}
+
 /*
  * isect_triangle_finish's answer without t, for any-hit queries.  The
  * final t is clamped into [t_lo, t_hi] (isect_clamp_to_box: a NaN or
@@ -436,12 +454,15 @@ static inline int isect_triangle_finish(const struct trace_ray *ray, const float
  * isect_triangle_finish decides.  Shadow rays, whose t_max is the light's
  * distance, nearly always take the short way.
  */
-static inline int isect_triangle_occludes(const struct trace_ray *ray, const float v0[3],
-                                          const float v1[3], const float v2[3], float U,
-                                          float V, float W, float det, float Az, float Bz,
-                                          float Cz, float size, float t_lo, float t_hi,
-                                          float t_max)
+static inline int isect_triangle_occludes9(const struct trace_ray *ray, float x0, float y0,
+                                           float z0, float x1, float y1, float z1, float x2,
+                                           float y2, float z2, float U, float V, float W,
+                                           float det, float Az, float Bz, float Cz, float size,
+                                           float t_lo, float t_hi, float t_max)
 {
+    const float v0[3] = {x0, y0, z0};
+    const float v1[3] = {x1, y1, z1};
+    const float v2[3] = {x2, y2, z2};
     if (t_lo >= ray->tmin && t_lo <= t_hi && t_hi < t_max && isfinite(t_lo) &&
         isfinite(t_hi)) {
         /* isect_triangle_finish's zero-area test, the same doubles. */
@@ -457,8 +478,8 @@ static inline int isect_triangle_occludes(const struct trace_ray *ray, const flo
         return !(nx == 0.0 && ny == 0.0 && nz == 0.0);
     }
     float t, u, v;
-    return isect_triangle_finish(ray, v0, v1, v2, U, V, W, det, Az, Bz, Cz, size, t_lo, t_hi,
-                                 t_max, &t, &u, &v);
+    return isect_triangle_finish9(ray, x0, y0, z0, x1, y1, z1, x2, y2, z2, U, V, W, det, Az, Bz,
+                                  Cz, size, t_lo, t_hi, t_max, &t, &u, &v);
 }
 
 /*

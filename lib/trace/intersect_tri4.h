@@ -186,40 +186,6 @@ static inline unsigned tri4_candidates(const struct tri4_ray *r, const struct tr
     return tri4_candidates_lanes(r, p, valid, t_max, NULL);
 }
 
-/*
- * isect_triangle on lane l of p, which tri4_candidates_lanes kept (with
- * a limit at least t_max) and whose floats it wrote to `lanes`: a
- * deferred lane goes to isect_triangle itself; any other gets the
- * rejections on t_max again with this t_max (z_lo < t_max, t_lo <
- * t_max: the limit may have shrunk since the filter ran) and then
- * isect_triangle_finish, or isect_triangle_occludes for any_hit.  Each
- * step is isect_triangle's on the same floats, so the answer is its
- * answer bit for bit.  v receives the lane's vertices.
- */
-static inline int tri4_lane_test(const struct trace_ray *ray, const struct tri4_packet *p,
-                                 const struct tri4_lanes *lanes, unsigned l, int any_hit,
-                                 float t_max, float *t, float *u, float *w)
-{
-    float v[9];
-    for (int j = 0; j < 3; j++) {
-        for (int k = 0; k < 3; k++)
-            v[3 * j + k] = p->v[j][k][l];
-    }
-    if (lanes->deferred >> l & 1u)
-        return isect_triangle(ray, v, v + 3, v + 6, t_max, t, u, w);
-    const float Az = lanes->Az[l], Bz = lanes->Bz[l], Cz = lanes->Cz[l];
-    const float z_lo = isect_min(Az, isect_min(Bz, Cz));
-    if (!(z_lo < t_max) || !(lanes->t_lo[l] < t_max))
-        return 0;
-    if (any_hit)
-        return isect_triangle_occludes(ray, v, v + 3, v + 6, lanes->U[l], lanes->V[l],
-                                       lanes->W[l], lanes->det[l], Az, Bz, Cz, lanes->size[l],
-                                       lanes->t_lo[l], lanes->t_hi[l], t_max);
-    return isect_triangle_finish(ray, v, v + 3, v + 6, lanes->U[l], lanes->V[l], lanes->W[l],
-                                 lanes->det[l], Az, Bz, Cz, lanes->size[l], lanes->t_lo[l],
-                                 lanes->t_hi[l], t_max, t, u, w);
-}
-
 /* Lane l of p as the three vertices isect_triangle takes. */
 static inline void tri4_lane(const struct tri4_packet *p, unsigned l, float v[9])
 {
@@ -227,6 +193,43 @@ static inline void tri4_lane(const struct tri4_packet *p, unsigned l, float v[9]
         for (int k = 0; k < 3; k++)
             v[3 * j + k] = p->v[j][k][l];
     }
+}
+
+/*
+ * isect_triangle on lane l of p, which tri4_candidates_lanes kept (with
+ * a limit at least t_max) and whose floats it wrote to `lanes`: a
+ * deferred lane goes to isect_triangle itself; any other gets the
+ * rejections on t_max again with this t_max (z_lo < t_max, t_lo <
+ * t_max: the limit may have shrunk since the filter ran) and then
+ * isect_triangle_finish9, or isect_triangle_occludes9 for any_hit.  Each
+ * step is isect_triangle's on the same floats, so the answer is its
+ * answer bit for bit.
+ */
+static inline int tri4_lane_test(const struct trace_ray *ray, const struct tri4_packet *p,
+                                 const struct tri4_lanes *lanes, unsigned l, int any_hit,
+                                 float t_max, float *t, float *u, float *w)
+{
+    if (lanes->deferred >> l & 1u) {
+        float v[9];
+        tri4_lane(p, l, v);
+        return isect_triangle(ray, v, v + 3, v + 6, t_max, t, u, w);
+    }
+    const float Az = lanes->Az[l], Bz = lanes->Bz[l], Cz = lanes->Cz[l];
+    const float z_lo = isect_min(Az, isect_min(Bz, Cz));
+    if (!(z_lo < t_max) || !(lanes->t_lo[l] < t_max))
+        return 0;
+    /* The lane's coordinates straight from the packet (no copy). */
+    if (any_hit)
+        return isect_triangle_occludes9(
+            ray, p->v[0][0][l], p->v[0][1][l], p->v[0][2][l], p->v[1][0][l], p->v[1][1][l],
+            p->v[1][2][l], p->v[2][0][l], p->v[2][1][l], p->v[2][2][l], lanes->U[l], lanes->V[l],
+            lanes->W[l], lanes->det[l], Az, Bz, Cz, lanes->size[l], lanes->t_lo[l],
+            lanes->t_hi[l], t_max);
+    return isect_triangle_finish9(
+        ray, p->v[0][0][l], p->v[0][1][l], p->v[0][2][l], p->v[1][0][l], p->v[1][1][l],
+        p->v[1][2][l], p->v[2][0][l], p->v[2][1][l], p->v[2][2][l], lanes->U[l], lanes->V[l],
+        lanes->W[l], lanes->det[l], Az, Bz, Cz, lanes->size[l], lanes->t_lo[l], lanes->t_hi[l],
+        t_max, t, u, w);
 }
 
 #endif

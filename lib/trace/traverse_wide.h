@@ -233,6 +233,76 @@ static inline int walk_wide4(const struct bvh4 *wide, struct wide_state *s, uint
 }
 
 #if defined(__AVX__)
+/* wide8_compress[m]: the bit positions set in m, highest first, one per
+ * byte from the low byte (the rest 0): the left-packing permutation of
+ * walk_wide8_impl's push, one 8-byte load instead of a loop. */
+static const uint64_t wide8_compress[256] = {
+    0x0000000000000000u, 0x0000000000000000u, 0x0000000000000001u, 0x0000000000000001u,
+    0x0000000000000002u, 0x0000000000000002u, 0x0000000000000102u, 0x0000000000000102u,
+    0x0000000000000003u, 0x0000000000000003u, 0x0000000000000103u, 0x0000000000000103u,
+    0x0000000000000203u, 0x0000000000000203u, 0x0000000000010203u, 0x0000000000010203u,
+    0x0000000000000004u, 0x0000000000000004u, 0x0000000000000104u, 0x0000000000000104u,
+    0x0000000000000204u, 0x0000000000000204u, 0x0000000000010204u, 0x0000000000010204u,
+    0x0000000000000304u, 0x0000000000000304u, 0x0000000000010304u, 0x0000000000010304u,
+    0x0000000000020304u, 0x0000000000020304u, 0x0000000001020304u, 0x0000000001020304u,
+    0x0000000000000005u, 0x0000000000000005u, 0x0000000000000105u, 0x0000000000000105u,
+    0x0000000000000205u, 0x0000000000000205u, 0x0000000000010205u, 0x0000000000010205u,
+    0x0000000000000305u, 0x0000000000000305u, 0x0000000000010305u, 0x0000000000010305u,
+    0x0000000000020305u, 0x0000000000020305u, 0x0000000001020305u, 0x0000000001020305u,
+    0x0000000000000405u, 0x0000000000000405u, 0x0000000000010405u, 0x0000000000010405u,
+    0x0000000000020405u, 0x0000000000020405u, 0x0000000001020405u, 0x0000000001020405u,
+    0x0000000000030405u, 0x0000000000030405u, 0x0000000001030405u, 0x0000000001030405u,
+    0x0000000002030405u, 0x0000000002030405u, 0x0000000102030405u, 0x0000000102030405u,
+    0x0000000000000006u, 0x0000000000000006u, 0x0000000000000106u, 0x0000000000000106u,
+    0x0000000000000206u, 0x0000000000000206u, 0x0000000000010206u, 0x0000000000010206u,
+    0x0000000000000306u, 0x0000000000000306u, 0x0000000000010306u, 0x0000000000010306u,
+    0x0000000000020306u, 0x0000000000020306u, 0x0000000001020306u, 0x0000000001020306u,
+    0x0000000000000406u, 0x0000000000000406u, 0x0000000000010406u, 0x0000000000010406u,
+    0x0000000000020406u, 0x0000000000020406u, 0x0000000001020406u, 0x0000000001020406u,
+    0x0000000000030406u, 0x0000000000030406u, 0x0000000001030406u, 0x0000000001030406u,
+    0x0000000002030406u, 0x0000000002030406u, 0x0000000102030406u, 0x0000000102030406u,
+    0x0000000000000506u, 0x0000000000000506u, 0x0000000000010506u, 0x0000000000010506u,
+    0x0000000000020506u, 0x0000000000020506u, 0x0000000001020506u, 0x0000000001020506u,
+    0x0000000000030506u, 0x0000000000030506u, 0x0000000001030506u, 0x0000000001030506u,
+    0x0000000002030506u, 0x0000000002030506u, 0x0000000102030506u, 0x0000000102030506u,
+    0x0000000000040506u, 0x0000000000040506u, 0x0000000001040506u, 0x0000000001040506u,
+    0x0000000002040506u, 0x0000000002040506u, 0x0000000102040506u, 0x0000000102040506u,
+    0x0000000003040506u, 0x0000000003040506u, 0x0000000103040506u, 0x0000000103040506u,
+    0x0000000203040506u, 0x0000000203040506u, 0x0000010203040506u, 0x0000010203040506u,
+    0x0000000000000007u, 0x0000000000000007u, 0x0000000000000107u, 0x0000000000000107u,
+    0x0000000000000207u, 0x0000000000000207u, 0x0000000000010207u, 0x0000000000010207u,
+    0x0000000000000307u, 0x0000000000000307u, 0x0000000000010307u, 0x0000000000010307u,
+    0x0000000000020307u, 0x0000000000020307u, 0x0000000001020307u, 0x0000000001020307u,
+    0x0000000000000407u, 0x0000000000000407u, 0x0000000000010407u, 0x0000000000010407u,
+    0x0000000000020407u, 0x0000000000020407u, 0x0000000001020407u, 0x0000000001020407u,
+    0x0000000000030407u, 0x0000000000030407u, 0x0000000001030407u, 0x0000000001030407u,
+    0x0000000002030407u, 0x0000000002030407u, 0x0000000102030407u, 0x0000000102030407u,
+    0x0000000000000507u, 0x0000000000000507u, 0x0000000000010507u, 0x0000000000010507u,
+    0x0000000000020507u, 0x0000000000020507u, 0x0000000001020507u, 0x0000000001020507u,
+    0x0000000000030507u, 0x0000000000030507u, 0x0000000001030507u, 0x0000000001030507u,
+    0x0000000002030507u, 0x0000000002030507u, 0x0000000102030507u, 0x0000000102030507u,
+    0x0000000000040507u, 0x0000000000040507u, 0x0000000001040507u, 0x0000000001040507u,
+    0x0000000002040507u, 0x0000000002040507u, 0x0000000102040507u, 0x0000000102040507u,
+    0x0000000003040507u, 0x0000000003040507u, 0x0000000103040507u, 0x0000000103040507u,
+    0x0000000203040507u, 0x0000000203040507u, 0x0000010203040507u, 0x0000010203040507u,
+    0x0000000000000607u, 0x0000000000000607u, 0x0000000000010607u, 0x0000000000010607u,
+    0x0000000000020607u, 0x0000000000020607u, 0x0000000001020607u, 0x0000000001020607u,
+    0x0000000000030607u, 0x0000000000030607u, 0x0000000001030607u, 0x0000000001030607u,
+    0x0000000002030607u, 0x0000000002030607u, 0x0000000102030607u, 0x0000000102030607u,
+    0x0000000000040607u, 0x0000000000040607u, 0x0000000001040607u, 0x0000000001040607u,
+    0x0000000002040607u, 0x0000000002040607u, 0x0000000102040607u, 0x0000000102040607u,
+    0x0000000003040607u, 0x0000000003040607u, 0x0000000103040607u, 0x0000000103040607u,
+    0x0000000203040607u, 0x0000000203040607u, 0x0000010203040607u, 0x0000010203040607u,
+    0x0000000000050607u, 0x0000000000050607u, 0x0000000001050607u, 0x0000000001050607u,
+    0x0000000002050607u, 0x0000000002050607u, 0x0000000102050607u, 0x0000000102050607u,
+    0x0000000003050607u, 0x0000000003050607u, 0x0000000103050607u, 0x0000000103050607u,
+    0x0000000203050607u, 0x0000000203050607u, 0x0000010203050607u, 0x0000010203050607u,
+    0x0000000004050607u, 0x0000000004050607u, 0x0000000104050607u, 0x0000000104050607u,
+    0x0000000204050607u, 0x0000000204050607u, 0x0000010204050607u, 0x0000010204050607u,
+    0x0000000304050607u, 0x0000000304050607u, 0x0000010304050607u, 0x0000010304050607u,
+    0x0000020304050607u, 0x0000020304050607u, 0x0001020304050607u, 0x0001020304050607u,
+};
+
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
@@ -255,7 +325,12 @@ static inline int walk_wide8_impl(const struct bvh4 *wide, struct wide_state *s,
     const __m256 tmin8 = _mm256_set1_ps(ray->tmin);
     const __m256 inf8 = _mm256_set1_ps(INFINITY);
     const __m256 scale8 = _mm256_set1_ps(ISECT_BOX_FAR_SCALE);
-    struct wide_entry stack[WIDE_STACK];
+    const __m256i order_shift = _mm256_setr_epi32(0, 3, 6, 9, 12, 15, 18, 21);
+    /* The stack as three arrays, so that one node's hit children are
+     * pushed with one vector store per field (wide8_push). */
+    uint32_t st_child[WIDE_STACK];
+    uint32_t st_count[WIDE_STACK];
+    float st_t[WIDE_STACK];
     uint32_t sp = 0;
     uint32_t cur = root;
     uint32_t cur_count = root_count;
@@ -279,28 +354,49 @@ static inline int walk_wide8_impl(const struct bvh4 *wide, struct wide_state *s,
             }
             t1 = _mm256_mul_ps(t1, scale8);
             t1 = _mm256_min_ps(t1, _mm256_set1_ps(s->box_limit));
-            unsigned mask = (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(t0, t1, _CMP_LE_OQ));
+            const __m256 hit = _mm256_cmp_ps(t0, t1, _CMP_LE_OQ);
+            unsigned mask = (unsigned)_mm256_movemask_ps(hit);
             if (mask) {
                 if (!(mask & (mask - 1u))) {
                     const unsigned l = (unsigned)__builtin_ctz(mask);
                     cur = n->child[l];
                     cur_count = n->count[l];
                 } else {
-                    float te[8];
-                    _mm256_storeu_ps(te, t0);
+                    /* Two or more hit children: push all but the front
+                     * one back to front in the octant's order and go to
+                     * the front one, without a loop over the lanes.
+                     * lanes[p]: the lane at position p of the order
+                     * (position 0 the front); pm: the positions hit;
+                     * wide8_compress[pm]: those positions back to front,
+                     * one byte each, which gather the children's words
+                     * and entry distances into consecutive stack slots
+                     * (the slots beyond them are written too, and
+                     * overwritten later: the stack has room). */
                     const uint32_t order = (uint32_t)n->order[octant][0] |
                                            (uint32_t)n->order[octant][1] << 8 |
                                            (uint32_t)n->order[octant][2] << 16;
-                    for (int p = 7; p >= 0; p--) {
-                        const unsigned l = order >> (3 * p) & 7u;
-                        stack[sp].child = n->child[l];
-                        stack[sp].count = n->count[l];
-                        stack[sp].t_entry = te[l];
-                        sp += mask >> l & 1u;
-                    }
-                    sp--;
-                    cur = stack[sp].child;
-                    cur_count = stack[sp].count;
+                    const __m256i lanes = _mm256_and_si256(
+                        _mm256_srlv_epi32(_mm256_set1_epi32((int)order), order_shift),
+                        _mm256_set1_epi32(7));
+                    const unsigned pm = (unsigned)_mm256_movemask_ps(
+                        _mm256_permutevar8x32_ps(hit, lanes));
+                    const __m128i packed =
+                        _mm_loadl_epi64((const __m128i *)(const void *)&wide8_compress[pm]);
+                    const __m256i gather =
+                        _mm256_permutevar8x32_epi32(lanes, _mm256_cvtepu8_epi32(packed));
+                    const __m256i child =
+                        _mm256_load_si256((const __m256i *)(const void *)n->child);
+                    const __m256i count = _mm256_cvtepu8_epi32(
+                        _mm_loadl_epi64((const __m128i *)(const void *)n->count));
+                    _mm256_storeu_si256((__m256i *)(void *)&st_child[sp],
+                                        _mm256_permutevar8x32_epi32(child, gather));
+                    _mm256_storeu_si256((__m256i *)(void *)&st_count[sp],
+                                        _mm256_permutevar8x32_epi32(count, gather));
+                    _mm256_storeu_ps(&st_t[sp], _mm256_permutevar8x32_ps(t0, gather));
+                    sp += (uint32_t)__builtin_popcount(pm) - 1u;
+                    const unsigned l = order >> (3 * (unsigned)__builtin_ctz(pm)) & 7u;
+                    cur = n->child[l];
+                    cur_count = n->count[l];
                 }
                 if (!cur_count)
                     wide_prefetch(&nodes[cur], sizeof(struct bvh8_node));
@@ -311,11 +407,11 @@ static inline int walk_wide8_impl(const struct bvh4 *wide, struct wide_state *s,
             if (sp == 0)
                 return 0;
             sp--;
-            if (stack[sp].t_entry <= s->box_limit)
+            if (st_t[sp] <= s->box_limit)
                 break;
         }
-        cur = stack[sp].child;
-        cur_count = stack[sp].count;
+        cur = st_child[sp];
+        cur_count = st_count[sp];
     }
 }
 
