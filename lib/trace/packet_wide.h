@@ -50,6 +50,8 @@ struct packet_state {
 #if defined(__AVX__)
     struct tri8_rays t8;
     unsigned lanes8; /* the rays t8 holds: those with the first ray's kx, ky, kz */
+    int t8_ready;    /* t8 set up (at the first leaf that uses it) */
+    const struct trace_ray *lane_ray[TRACE_PACKET];
     /* The interval-arithmetic node test (packet_box8_ia): set when every
      * active ray has the first ray's origin (finite) and octant and
      * finite, non-zero inverse directions (camera rays).  Per axis the
@@ -96,6 +98,10 @@ static inline int packet_take_hit(struct wide_state *s, float *limit, uint32_t p
 static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_packet *packets,
                                     uint32_t first, uint32_t count, unsigned rays)
 {
+    if (!p->t8_ready) {
+        tri8_rays_init(&p->t8, p->lane_ray, p->lanes8);
+        p->t8_ready = 1;
+    }
     float limit[8] = {0};
     for (unsigned m = rays; m; m &= m - 1u) {
         const unsigned r = (unsigned)__builtin_ctz(m);
@@ -438,19 +444,17 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
     unsigned done;
 #if defined(__AVX__)
     {
-        const struct trace_ray *lane_ray[TRACE_PACKET];
         const struct trace_ray *r0 = &rays[__builtin_ctz(active)];
         p.lanes8 = 0;
         for (unsigned m = active; m; m &= m - 1u) {
             const unsigned r = (unsigned)__builtin_ctz(m);
-            lane_ray[r] = &rays[r];
+            p.lane_ray[r] = &rays[r];
             if (rays[r].kx == r0->kx && rays[r].ky == r0->ky && rays[r].kz == r0->kz)
                 p.lanes8 |= 1u << r;
         }
-        if ((unsigned)__builtin_popcount(p.lanes8) >= PACKET_TRI8_MIN)
-            tri8_rays_init(&p.t8, lane_ray, p.lanes8);
-        else
+        if ((unsigned)__builtin_popcount(p.lanes8) < PACKET_TRI8_MIN)
             p.lanes8 = 0;
+        p.t8_ready = 0;
         /* The interval-arithmetic node test's ranges (packet_box8_ia). */
         p.ia = 1;
         float i_lo[3], i_hi[3], tmin_lo = r0->tmin;
