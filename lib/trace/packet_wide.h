@@ -18,7 +18,10 @@
  * children per ray), and the results are transposed into a mask of rays
  * per child with one AND and OR per ray; a pushed child keeps the
  * smallest entry distance of its rays, and is skipped on pop for the
- * rays whose closest hit so far lies in front of it.
+ * rays whose closest hit so far lies in front of it.  With AVX, a
+ * leaf's triangles are tested against the rays that share the first
+ * ray's kx, ky, kz eight at a time (packet_tri8.h), which gives each ray
+ * isect_triangle's answer (see there).
  */
 #include "trace/packet.h"
 #if defined(__AVX__)
@@ -29,9 +32,6 @@
  * at least this many of its rays share the first ray's kx, ky, kz;
  * otherwise, and for the other rays, ray by ray (wide_leaf). */
 #define PACKET_TRI8_MIN 3
-/* A wide node is tested by interval arithmetic over the packet
- * (packet_box8_ia) when at least this many of its rays are active. */
-#define PACKET_IA_MIN 3
 
 struct packet_entry {
     uint32_t child;
@@ -52,14 +52,6 @@ struct packet_state {
     unsigned lanes8; /* the rays t8 holds: those with the first ray's kx, ky, kz */
     int t8_ready;    /* t8 set up (at the first leaf that uses it) */
     const struct trace_ray *lane_ray[TRACE_PACKET];
-    /* The interval-arithmetic node test (packet_box8_ia): set when every
-     * active ray has the first ray's origin (finite) and octant and
-     * finite, non-zero inverse directions (camera rays).  Per axis the
-     * origin and the range of inv_dir over the active rays, and the
-     * smallest tmin. */
-    int ia;
-    __m256 o[3], i_lo[3], i_hi[3];
-    __m256 tmin_lo;
 #endif
 };
 
@@ -205,67 +197,6 @@ static inline void packet_box8(const struct bvh8_node *n, struct packet_state *p
 }
 #endif
 
-#if defined(__AVX__)
-/*
- * The eight children of n against the whole packet at once, by interval
- * arithmetic on the rays' inverse directions (Wald, Boulos and Shirley
- * 2007, "Ray tracing deformable scenes using dynamic bounding volume
- * hierarchies", sec. 4.2; Reshetov, Soupikov and Hurley 2005 for the
- * frustum view), for packets from one origin: lane l of the result is
- * clear only when every active ray's own box test (packet_box8,
- * walk_wide8) rejects child l, and *t_min gets a lower bound of their
- * entry distances.  Exact, not approximate, because the bound is taken
- * over the same rounded operations: fl(b - o) is the rays' own, fl(d * i)
- * is monotone in i (the rays' inverses are finite and non-zero, so no
- * 0 * inf appears), so the smallest and the largest of the rays' rounded
- * slab distances are the products with the ends of the range; max,
- * min and fl(x * ISECT_BOX_FAR_SCALE) are monotone, so the packet's entry
- * bound is at most each ray's entry and its exit bound at least each
- * ray's exit, and a box a ray enters passes.  A NaN bound gives NaN
- * corners, skipped by maxps/minps as a ray's own test skips that slab.
- * Visiting a child some of the rays would have rejected changes the
- * node and triangle counts, never a hit (traverse_wide.h: every box
- * holding a hit at or below a ray's best is entered either way, and the
- * hit rule does not depend on the order of visits).
- */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline unsigned packet_box8_ia(const struct bvh8_node *n, const struct packet_state *p,
-                                      unsigned rays, __m256 *t_min)
-{
-    const unsigned r0 = (unsigned)__builtin_ctz(rays);
-    float box_limit = p->s[r0].box_limit;
-    for (unsigned m = rays & (rays - 1u); m; m &= m - 1u) {
-        const float b = p->s[__builtin_ctz(m)].box_limit;
-        box_limit = b > box_limit ? b : box_limit;
-    }
-    __m256 t0 = p->tmin_lo;
-    __m256 t1 = _mm256_set1_ps(INFINITY);
-    for (int k = 0; k < 3; k++) {
-        const __m256 bn = _mm256_load_ps(n->bounds[p->near_row[r0][k]]);
-        const __m256 bf = _mm256_load_ps(n->bounds[p->far_row[r0][k]]);
-        /* One origin: fl(b - o) is every ray's own. */
-        const __m256 dn = _mm256_sub_ps(bn, p->o[k]);
-        const __m256 df = _mm256_sub_ps(bf, p->o[k]);
-        const __m256 n1 = _mm256_mul_ps(dn, p->i_lo[k]);
-        const __m256 n2 = _mm256_mul_ps(dn, p->i_hi[k]);
-        const __m256 f1 = _mm256_mul_ps(df, p->i_lo[k]);
-        const __m256 f2 = _mm256_mul_ps(df, p->i_hi[k]);
-        const __m256 tn = _mm256_min_ps(n1, n2);
-        const __m256 tf = _mm256_max_ps(f1, f2);
-        t0 = _mm256_max_ps(tn, t0);
-        t1 = _mm256_min_ps(tf, t1);
-    }
-    t1 = _mm256_mul_ps(t1, _mm256_set1_ps(ISECT_BOX_FAR_SCALE));
-    t1 = _mm256_min_ps(t1, _mm256_set1_ps(box_limit));
-    /* Not greater (unordered counts as inside): conservative. */
-    const __m256 in = _mm256_cmp_ps(t0, t1, _CMP_NGT_UQ);
-    *t_min = t0;
-    return (unsigned)_mm256_movemask_ps(in);
-}
-#endif
-
 /* The packet walk of a `width`-wide layout (4, or 8 with AVX); returns
  * the rays an any-hit walk found a hit for (0 for closest hit, whose
  * hits are in the states). */
@@ -320,17 +251,10 @@ static inline unsigned packet_walk(const struct bvh4 *wide, struct packet_state 
             if (width == 8) {
                 const struct bvh8_node *n = &wide->nodes8[cur];
                 __m256 tm = _mm256_set1_ps(INFINITY);
-                if (p->ia && (unsigned)__builtin_popcount(rays) >= PACKET_IA_MIN) {
-                    const unsigned hit = packet_box8_ia(n, p, rays, &tm);
-                    p->s[__builtin_ctz(rays)].node_tests += 8;
-                    for (int l = 0; l < 8; l++)
-                        lane_rays[l] = hit >> l & 1u ? rays : 0u;
-                } else {
-                    __m256 in = _mm256_setzero_ps();
-                    for (unsigned m = rays; m; m &= m - 1u)
-                        packet_box8(n, p, (unsigned)__builtin_ctz(m), &in, &tm);
-                    _mm256_storeu_ps((float *)lane_rays, in);
-                }
+                __m256 in = _mm256_setzero_ps();
+                for (unsigned m = rays; m; m &= m - 1u)
+                    packet_box8(n, p, (unsigned)__builtin_ctz(m), &in, &tm);
+                _mm256_storeu_ps((float *)lane_rays, in);
                 _mm256_storeu_ps(t_min, tm);
                 child = n->child;
                 count = n->count;
@@ -455,33 +379,6 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
         if ((unsigned)__builtin_popcount(p.lanes8) < PACKET_TRI8_MIN)
             p.lanes8 = 0;
         p.t8_ready = 0;
-        /* The interval-arithmetic node test's ranges (packet_box8_ia). */
-        p.ia = 1;
-        float i_lo[3], i_hi[3], tmin_lo = r0->tmin;
-        for (int k = 0; k < 3; k++)
-            i_lo[k] = i_hi[k] = r0->inv_dir[k];
-        for (unsigned m = active; m; m &= m - 1u) {
-            const unsigned r = (unsigned)__builtin_ctz(m);
-            const struct trace_ray *ray = &rays[r];
-            p.ia &= p.octant[r] == p.octant[__builtin_ctz(active)];
-            tmin_lo = ray->tmin < tmin_lo ? ray->tmin : tmin_lo;
-            for (int k = 0; k < 3; k++) {
-                const float o = ray->org[k], i = ray->inv_dir[k];
-                /* One origin (== takes -0 for 0: the differences b - o
-                 * then differ at most in the sign of a zero, equal as
-                 * numbers, which is all the comparisons see). */
-                p.ia &= o == r0->org[k] && fabsf(o) < INFINITY && fabsf(i) < INFINITY &&
-                        i != 0.0f;
-                i_lo[k] = i < i_lo[k] ? i : i_lo[k];
-                i_hi[k] = i > i_hi[k] ? i : i_hi[k];
-            }
-        }
-        for (int k = 0; k < 3; k++) {
-            p.o[k] = _mm256_set1_ps(r0->org[k]);
-            p.i_lo[k] = _mm256_set1_ps(i_lo[k]);
-            p.i_hi[k] = _mm256_set1_ps(i_hi[k]);
-        }
-        p.tmin_lo = _mm256_set1_ps(tmin_lo);
     }
     if (wide->width == 8)
         done = packet_walk(wide, &p, active, hybrid, 8);
