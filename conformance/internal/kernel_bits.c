@@ -117,7 +117,11 @@ static void make_ray(const struct tg_mesh *m, struct tg_rng *r, int kind, float 
  * and any hit), on packets of TRACE_PACKET rays: incoherent ones (eight
  * consecutive rays of make_ray, any mix of octants, tmin and t_max),
  * coherent ones (one origin, directions turned by up to 1e-3 around one
- * aimed at a vertex or an edge, the first exactly at it), with random
+ * aimed at a vertex or an edge, the first exactly at it), divergent ones
+ * (one origin, one octant, directions up to 60% apart per component:
+ * the interval-arithmetic node test), one-origin ones with degenerate
+ * lanes (a direction component 0, -0, denormal, NaN, infinite or huge),
+ * the last two with t ranges that differ per lane, with random
  * inactive lanes, and with the hybrid fallback off (0: the packet walk
  * to the leaves, TRACE_PACKET_HYBRID's value), at 3 and always (9: every
  * ray alone).
@@ -136,12 +140,30 @@ static int compare_packets(const char *name, const struct trace_kernels *k, cons
     for (int g = 0; g + TRACE_PACKET <= rays; g += TRACE_PACKET) {
         struct trace_ray ray[TRACE_PACKET];
         float t_max[TRACE_PACKET];
-        const int coherent = (g / TRACE_PACKET) % 2;
+        /* Packet kinds by group: 0 incoherent, 1 coherent, 2 divergent
+         * from one origin in one octant (the interval node test's case,
+         * packet_box8_ia), 3 one origin with degenerate lanes. */
+        const int kind = (g / TRACE_PACKET) % 6 < 4 ? (g / TRACE_PACKET) % 2
+                                                     : 2 + (g / TRACE_PACKET) % 2;
+        const int coherent = kind == 1;
         float org0[3], dir0[3];
         make_ray(m, &r, (g / TRACE_PACKET / 2) % 3 == 0 ? 1 : 0, org0, dir0);
         for (int i = 0; i < TRACE_PACKET; i++) {
             float org[3], dir[3];
-            if (coherent) {
+            if (kind >= 2) {
+                for (int a = 0; a < 3; a++) {
+                    org[a] = org0[a];
+                    /* Up to +-60% per component, keeping its sign. */
+                    dir[a] = dir0[a] * (1.0f + (i ? tg_range(&r, -0.6f, 0.6f) : 0.0f));
+                }
+                if (kind == 3) {
+                    const int a = (int)tg_below(&r, 3);
+                    static const float odd[8] = {0.0f, -0.0f, 1e-40f, -1e-42f, NAN,
+                                                 INFINITY, -INFINITY, 1e30f};
+                    if (i % 2)
+                        dir[a] = odd[tg_below(&r, 8)];
+                }
+            } else if (coherent) {
                 for (int a = 0; a < 3; a++) {
                     org[a] = org0[a];
                     dir[a] = dir0[a] * (1.0f + (i ? tg_range(&r, -1e-3f, 1e-3f) : 0.0f));
@@ -149,8 +171,13 @@ static int compare_packets(const char *name, const struct trace_kernels *k, cons
             } else {
                 make_ray(m, &r, (g + i) % 6, org, dir);
             }
-            const float tmin = (g + i) % 7 == 0 ? 0.5f : 0.0f;
+            float tmin = (g + i) % 7 == 0 ? 0.5f : 0.0f;
             t_max[i] = (g + i) % 11 == 0 ? 1.0f : INFINITY;
+            if (kind >= 2) {
+                /* t ranges that differ per lane. */
+                tmin = tg_below(&r, 2) ? tg_range(&r, 0.0f, 0.8f) : 0.0f;
+                t_max[i] = tg_below(&r, 2) ? tmin + tg_range(&r, 0.0f, 1.5f) : INFINITY;
+            }
             trace_ray_init(&ray[i], org, dir, tmin);
         }
         const unsigned active = (g / TRACE_PACKET) % 5 == 0

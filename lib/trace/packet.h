@@ -7,14 +7,16 @@
  *
  * A packet visits a node once for all its active rays: the node is
  * fetched once, the stack is pushed and popped once, and each child
- * carries the mask of the rays whose box test it passed.  Every box and
- * triangle test is the single-ray walk's own, ray by ray (each ray with
- * its own near/far planes, so rays of one packet need not share the
- * octant of their directions: after an instance transform they may not,
- * Wald, Benthin and Slusallek 2003 sec. 4.4), and the closest-hit rule
- * (smallest t, ties to the lower primitive, traverse_walk.h) does not
- * depend on the order of visits; so a ray of a packet gets exactly the
- * hit it gets alone, only the node and triangle counts differ.
+ * carries the mask of the rays whose box test it passed.  A box test is
+ * the single-ray walk's own, ray by ray (each ray with its own near/far
+ * planes, so rays of one packet need not share the octant of their
+ * directions: after an instance transform they may not, Wald, Benthin
+ * and Slusallek 2003 sec. 4.4); a triangle test is
+ * isect_triangle's answer for each ray, eight rays at a time
+ * (packet_tri8.h) or ray by ray; and the closest-hit rule (smallest t,
+ * ties to the lower primitive, traverse_walk.h) does not depend on the
+ * order of visits; so a ray of a packet gets exactly the hit it gets
+ * alone, only the node and triangle counts differ.
  *
  * Hybrid fallback (Benthin, Wald, Woop, Ernst and Mark 2012, Embree's
  * hybrid traversal): when fewer than TRACE_PACKET_HYBRID rays of a

@@ -18,9 +18,20 @@
  * children per ray), and the results are transposed into a mask of rays
  * per child with one AND and OR per ray; a pushed child keeps the
  * smallest entry distance of its rays, and is skipped on pop for the
- * rays whose closest hit so far lies in front of it.
+ * rays whose closest hit so far lies in front of it.  With AVX, a
+ * leaf's triangles are tested against the rays that share the first
+ * ray's kx, ky, kz eight at a time (packet_tri8.h), which gives each ray
+ * isect_triangle's answer (see there).
  */
 #include "trace/packet.h"
+#if defined(__AVX__)
+#include "trace/packet_tri8.h"
+#endif
+
+/* A leaf is tested with the eight-ray triangle test (packet_tri8.h) when
+ * at least this many of its rays share the first ray's kx, ky, kz;
+ * otherwise, and for the other rays, ray by ray (wide_leaf). */
+#define PACKET_TRI8_MIN 3
 
 struct packet_entry {
     uint32_t child;
@@ -36,7 +47,96 @@ struct packet_state {
     int near_row[TRACE_PACKET][3];
     int far_row[TRACE_PACKET][3];
     int octant[TRACE_PACKET];
+#if defined(__AVX__)
+    struct tri8_rays t8;
+    unsigned lanes8; /* the rays t8 holds: those with the first ray's kx, ky, kz */
+    int t8_ready;    /* t8 set up (at the first leaf that uses it) */
+    const struct trace_ray *lane_ray[TRACE_PACKET];
+#endif
 };
+
+#if defined(__AVX__)
+/* A packet hits a triangle: walk_leaf's limit and hit rule for ray r
+ * (wide_leaf_impl), t, u, v the triangle test's.  Returns 1 when an
+ * any-hit ray has its hit. */
+static inline int packet_take_hit(struct wide_state *s, float *limit, uint32_t prim, float t,
+                                  float u, float w)
+{
+    if (s->any_hit) {
+        s->found = 1;
+        return 1;
+    }
+    if (s->found && !(t < s->best || prim < s->hit->prim))
+        return 0;
+    s->found = 1;
+    s->best = t;
+    s->box_limit = t * ISECT_BOX_FAR_SCALE;
+    s->hit->t = t;
+    s->hit->u = u;
+    s->hit->v = w;
+    s->hit->prim = prim;
+    *limit = isect_next_up(t);
+    return 0;
+}
+
+/* A leaf lane (count triangles in packets from `first`) for the rays of
+ * `rays`, all in p->lanes8: each triangle against all of them at once
+ * (tri8_test), in wide_leaf's order of triangles, each ray with
+ * wide_leaf's limit (the next float above its best once it has a hit)
+ * and hit rule, and the triangle counts wide_leaf keeps.  The hit a ray
+ * keeps does not depend on the order of its tests (traverse_walk.h), and
+ * each test is isect_triangle's answer for that ray and limit.  Returns
+ * the any-hit rays that found their hit. */
+static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_packet *packets,
+                                    uint32_t first, uint32_t count, unsigned rays)
+{
+    if (!p->t8_ready) {
+        tri8_rays_init(&p->t8, p->lane_ray, p->lanes8);
+        p->t8_ready = 1;
+    }
+    float limit[8] = {0};
+    for (unsigned m = rays; m; m &= m - 1u) {
+        const unsigned r = (unsigned)__builtin_ctz(m);
+        limit[r] = p->s[r].found ? isect_next_up(p->s[r].best) : p->s[r].best;
+    }
+    const int any_hit = p->s[__builtin_ctz(rays)].any_hit;
+    unsigned done = 0;
+    for (uint32_t j = 0; j < count && rays; j += 4) {
+        const struct tri4_packet *q = &packets[first + j / 4];
+        const uint32_t n = count - j < 4 ? count - j : 4;
+        for (unsigned m = rays; m; m &= m - 1u)
+            p->s[__builtin_ctz(m)].triangle_tests += n;
+        for (uint32_t l = 0; l < n && rays; l++) {
+            float v[3][3];
+            for (int a = 0; a < 3; a++) {
+                for (int k = 0; k < 3; k++)
+                    v[a][k] = q->v[a][k][l];
+            }
+            struct tri8_result res;
+            if (!tri8_test(&p->t8, (const float(*)[3])v, rays, _mm256_loadu_ps(limit), any_hit,
+                           &res))
+                continue;
+            for (unsigned m = res.hit | res.scalar; m; m &= m - 1u) {
+                const unsigned r = (unsigned)__builtin_ctz(m);
+                struct wide_state *s = &p->s[r];
+                float t, u, w;
+                if (res.hit >> r & 1u) {
+                    t = res.t[r];
+                    u = res.u[r];
+                    w = res.v[r];
+                } else if (!isect_triangle(s->ray, v[0], v[1], v[2], limit[r], &t, &u, &w)) {
+                    continue;
+                }
+                if (packet_take_hit(s, &limit[r], q->prim[l], t, u, w)) {
+                    done |= 1u << r;
+                    rays &= ~(1u << r);
+                }
+            }
+        }
+    }
+    return done;
+}
+#endif
 
 /* Ray r against the four children of n: walk_wide4's operations.  Adds
  * r's bit to rays[l] for each child l it enters and folds its entry
@@ -127,7 +227,15 @@ static inline unsigned packet_walk(const struct bvh4 *wide, struct packet_state 
                     done |= 1u << r;
             }
         } else if (cur_count) {
-            for (unsigned m = rays; m; m &= m - 1u) {
+            unsigned single = rays;
+#if defined(__AVX__)
+            const unsigned r8 = rays & p->lanes8;
+            if ((unsigned)__builtin_popcount(r8) >= PACKET_TRI8_MIN) {
+                done |= packet_leaf8(p, wide->packets, cur, cur_count, r8);
+                single &= ~r8;
+            }
+#endif
+            for (unsigned m = single; m; m &= m - 1u) {
                 const unsigned r = (unsigned)__builtin_ctz(m);
                 if (wide_leaf(&p->s[r], wide->packets, cur, cur_count))
                     done |= 1u << r;
@@ -142,8 +250,8 @@ static inline unsigned packet_walk(const struct bvh4 *wide, struct packet_state 
 #if defined(__AVX__)
             if (width == 8) {
                 const struct bvh8_node *n = &wide->nodes8[cur];
-                __m256 in = _mm256_setzero_ps();
                 __m256 tm = _mm256_set1_ps(INFINITY);
+                __m256 in = _mm256_setzero_ps();
                 for (unsigned m = rays; m; m &= m - 1u)
                     packet_box8(n, p, (unsigned)__builtin_ctz(m), &in, &tm);
                 _mm256_storeu_ps((float *)lane_rays, in);
@@ -259,6 +367,19 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
     }
     unsigned done;
 #if defined(__AVX__)
+    {
+        const struct trace_ray *r0 = &rays[__builtin_ctz(active)];
+        p.lanes8 = 0;
+        for (unsigned m = active; m; m &= m - 1u) {
+            const unsigned r = (unsigned)__builtin_ctz(m);
+            p.lane_ray[r] = &rays[r];
+            if (rays[r].kx == r0->kx && rays[r].ky == r0->ky && rays[r].kz == r0->kz)
+                p.lanes8 |= 1u << r;
+        }
+        if ((unsigned)__builtin_popcount(p.lanes8) < PACKET_TRI8_MIN)
+            p.lanes8 = 0;
+        p.t8_ready = 0;
+    }
     if (wide->width == 8)
         done = packet_walk(wide, &p, active, hybrid, 8);
     else

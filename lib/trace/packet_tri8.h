@@ -1,0 +1,290 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * packet_tri8.h - the watertight triangle test (intersect.h's
+ * isect_triangle) of one triangle against the eight rays of a packet,
+ * ray r in AVX lane r (Wald, Slusallek, Benthin and Wagner 2001 sec. 4;
+ * Benthin, Wald, Woop, Ernst and Mark 2012), for the packet walk's
+ * leaves (packet_wide.h); included by the AVX translation units only.
+ *
+ * Same answers as isect_triangle ray by ray, bit for bit.  The float part
+ * is intersect_tri4.h's filter with the lanes over rays instead of over
+ * triangles: per lane the same IEEE single operations in the same order
+ * (-ffp-contract=off, separate multiplies and adds), minps/maxps where
+ * isect_triangle has isect_min/isect_max, and isect_slab's choice of the
+ * near end by `inv < 0` as a blend on that comparison per lane.  A lane
+ * it rejects is one isect_triangle rejects.  The rest of
+ * isect_triangle_finish is carried on in the lanes too for the common
+ * case, in double where it is double: the zero-area test and the squared
+ * normal and longest edge depend on the triangle only (computed once per
+ * triangle, with finish's own expressions); per lane, the sliver test,
+ * the plane distance num / den (two halves of four doubles, the same
+ * operations in the same order; a correctly rounded division and
+ * conversion to float are the same in a lane as in a scalar register),
+ * the clamp into the box interval, the range test and the barycentrics.
+ * A lane that needs anything else goes to the scalar isect_triangle with
+ * the same limit, which decides it itself: an edge function of exactly 0
+ * (the paper's sec. 4 double fallback), a sliver (closest approach to an
+ * edge), a plane parallel to the ray or a NaN distance (the float t).
+ *
+ * The rays of a packet share the triangle's vertex permutation only when
+ * they share kx, ky, kz (the dominant axis of the direction and its
+ * sign); the packet walk gives this test the rays that share the first
+ * ray's, and tests the others with the single walk's leaf.
+ */
+#ifndef RT_TRACE_PACKET_TRI8_H
+#define RT_TRACE_PACKET_TRI8_H
+
+#include <immintrin.h>
+
+#include "trace/bvh4_layout.h"
+#include "trace/intersect.h"
+
+/* The per-lane ray constants of the eight-ray test; a lane without a
+ * ray holds a copy of another lane's ray (never read into an answer). */
+struct tri8_rays {
+    __m256 org_x, org_y, org_z; /* org[kx], org[ky], org[kz] */
+    __m256 sx, sy, sz;
+    __m256 inv_x, inv_y;        /* inv_dir[kx], inv_dir[ky] */
+    __m256 neg_x, neg_y;        /* all ones where inv_x < 0, inv_y < 0 (isect_slab) */
+    __m256 tmin;
+    __m256d org_d[3][2];        /* org[0..2] in double, lanes 0-3 and 4-7 */
+    __m256d dir_d[3][2];        /* dir[0..2] in double */
+    int kx, ky, kz;
+};
+
+/* Sets up lanes `lanes` (bit r: rays[r], all with the same kx, ky, kz);
+ * the other lanes copy the lowest set one. */
+static inline void tri8_rays_init(struct tri8_rays *t, const struct trace_ray *const rays[8],
+                                  unsigned lanes)
+{
+    const struct trace_ray *first = rays[__builtin_ctz(lanes)];
+    float ox[8], oy[8], oz[8], sx[8], sy[8], sz[8], ix[8], iy[8], tm[8];
+    double od[3][8], dd[3][8];
+    t->kx = first->kx;
+    t->ky = first->ky;
+    t->kz = first->kz;
+    for (int r = 0; r < 8; r++) {
+        const struct trace_ray *ray = lanes >> r & 1u ? rays[r] : first;
+        ox[r] = ray->org[t->kx];
+        oy[r] = ray->org[t->ky];
+        oz[r] = ray->org[t->kz];
+        sx[r] = ray->sx;
+        sy[r] = ray->sy;
+        sz[r] = ray->sz;
+        ix[r] = ray->inv_dir[t->kx];
+        iy[r] = ray->inv_dir[t->ky];
+        tm[r] = ray->tmin;
+        for (int k = 0; k < 3; k++) {
+            od[k][r] = ray->org[k];
+            dd[k][r] = ray->dir[k];
+        }
+    }
+    t->org_x = _mm256_loadu_ps(ox);
+    t->org_y = _mm256_loadu_ps(oy);
+    t->org_z = _mm256_loadu_ps(oz);
+    t->sx = _mm256_loadu_ps(sx);
+    t->sy = _mm256_loadu_ps(sy);
+    t->sz = _mm256_loadu_ps(sz);
+    t->inv_x = _mm256_loadu_ps(ix);
+    t->inv_y = _mm256_loadu_ps(iy);
+    t->neg_x = _mm256_cmp_ps(t->inv_x, _mm256_setzero_ps(), _CMP_LT_OQ);
+    t->neg_y = _mm256_cmp_ps(t->inv_y, _mm256_setzero_ps(), _CMP_LT_OQ);
+    t->tmin = _mm256_loadu_ps(tm);
+    for (int k = 0; k < 3; k++) {
+        for (int h = 0; h < 2; h++) {
+            t->org_d[k][h] = _mm256_loadu_pd(&od[k][4 * h]);
+            t->dir_d[k][h] = _mm256_loadu_pd(&dd[k][4 * h]);
+        }
+    }
+}
+
+/* isect_slab in the lanes: `neg` selects the near end as `inv < 0 ? hi :
+ * lo` does. */
+static inline void tri8_slab(__m256 d0, __m256 d1, __m256 d2, __m256 inv, __m256 neg,
+                             __m256 *t_lo, __m256 *t_hi)
+{
+    __m256 lo = _mm256_min_ps(d0, d1);
+    __m256 hi = _mm256_max_ps(d1, d0);
+    lo = _mm256_min_ps(lo, d2);
+    hi = _mm256_max_ps(hi, d2);
+    const __m256 t_near = _mm256_mul_ps(_mm256_blendv_ps(lo, hi, neg), inv);
+    const __m256 t_far = _mm256_mul_ps(_mm256_blendv_ps(hi, lo, neg), inv);
+    *t_lo = _mm256_max_ps(t_near, *t_lo);
+    *t_hi = _mm256_min_ps(t_far, *t_hi);
+}
+
+/* The lanes' answers for one triangle: `hit` the lanes decided here with
+ * a hit (t, u, v filled for them), `scalar` the lanes isect_triangle
+ * must decide itself. */
+struct tri8_result {
+    unsigned hit;
+    unsigned scalar;
+    float t[8], u[8], v[8];
+};
+
+/*
+ * Triangle v (v[0..2], each xyz) against the rays of `lanes`, ray r below
+ * limit[r] (isect_triangle's t_max).  any_hit: t, u, v are not needed
+ * (isect_triangle_occludes' short way where it applies).  Returns the
+ * lanes with a hit or sent to the scalar test (res->hit | res->scalar).
+ */
+static inline unsigned tri8_test(const struct tri8_rays *r, const float v[3][3], unsigned lanes,
+                                 __m256 limit, int any_hit, struct tri8_result *res)
+{
+    const __m256 ax = _mm256_sub_ps(_mm256_set1_ps(v[0][r->kx]), r->org_x);
+    const __m256 ay = _mm256_sub_ps(_mm256_set1_ps(v[0][r->ky]), r->org_y);
+    const __m256 az = _mm256_sub_ps(_mm256_set1_ps(v[0][r->kz]), r->org_z);
+    const __m256 bx = _mm256_sub_ps(_mm256_set1_ps(v[1][r->kx]), r->org_x);
+    const __m256 by = _mm256_sub_ps(_mm256_set1_ps(v[1][r->ky]), r->org_y);
+    const __m256 bz = _mm256_sub_ps(_mm256_set1_ps(v[1][r->kz]), r->org_z);
+    const __m256 cx = _mm256_sub_ps(_mm256_set1_ps(v[2][r->kx]), r->org_x);
+    const __m256 cy = _mm256_sub_ps(_mm256_set1_ps(v[2][r->ky]), r->org_y);
+    const __m256 cz = _mm256_sub_ps(_mm256_set1_ps(v[2][r->kz]), r->org_z);
+
+    const __m256 Ax = _mm256_add_ps(ax, _mm256_mul_ps(r->sx, az));
+    const __m256 Ay = _mm256_add_ps(ay, _mm256_mul_ps(r->sy, az));
+    const __m256 Bx = _mm256_add_ps(bx, _mm256_mul_ps(r->sx, bz));
+    const __m256 By = _mm256_add_ps(by, _mm256_mul_ps(r->sy, bz));
+    const __m256 Cx = _mm256_add_ps(cx, _mm256_mul_ps(r->sx, cz));
+    const __m256 Cy = _mm256_add_ps(cy, _mm256_mul_ps(r->sy, cz));
+
+    const __m256 U = _mm256_sub_ps(_mm256_mul_ps(Cx, By), _mm256_mul_ps(Cy, Bx));
+    const __m256 V = _mm256_sub_ps(_mm256_mul_ps(Ax, Cy), _mm256_mul_ps(Ay, Cx));
+    const __m256 W = _mm256_sub_ps(_mm256_mul_ps(Bx, Ay), _mm256_mul_ps(By, Ax));
+
+    const __m256 zero = _mm256_setzero_ps();
+    const __m256 on_edge = _mm256_or_ps(
+        _mm256_or_ps(_mm256_cmp_ps(U, zero, _CMP_EQ_OQ), _mm256_cmp_ps(V, zero, _CMP_EQ_OQ)),
+        _mm256_cmp_ps(W, zero, _CMP_EQ_OQ));
+    const unsigned deferred = (unsigned)_mm256_movemask_ps(on_edge) & lanes;
+    const __m256 any_neg = _mm256_or_ps(
+        _mm256_or_ps(_mm256_cmp_ps(U, zero, _CMP_LT_OQ), _mm256_cmp_ps(V, zero, _CMP_LT_OQ)),
+        _mm256_cmp_ps(W, zero, _CMP_LT_OQ));
+    const __m256 any_pos = _mm256_or_ps(
+        _mm256_or_ps(_mm256_cmp_ps(U, zero, _CMP_GT_OQ), _mm256_cmp_ps(V, zero, _CMP_GT_OQ)),
+        _mm256_cmp_ps(W, zero, _CMP_GT_OQ));
+    __m256 keep = _mm256_andnot_ps(_mm256_and_ps(any_neg, any_pos),
+                                   _mm256_castsi256_ps(_mm256_set1_epi32(-1)));
+    const __m256 det = _mm256_add_ps(_mm256_add_ps(U, V), W);
+    const __m256 abs_det = _mm256_andnot_ps(_mm256_set1_ps(-0.0f), det);
+    keep = _mm256_and_ps(keep, _mm256_cmp_ps(det, zero, _CMP_NEQ_UQ));
+    keep = _mm256_and_ps(keep, _mm256_cmp_ps(abs_det, _mm256_set1_ps(INFINITY), _CMP_LT_OQ));
+
+    const __m256 Az = _mm256_mul_ps(r->sz, az);
+    const __m256 Bz = _mm256_mul_ps(r->sz, bz);
+    const __m256 Cz = _mm256_mul_ps(r->sz, cz);
+    const __m256 z_lo = _mm256_min_ps(Az, _mm256_min_ps(Bz, Cz));
+    const __m256 z_hi = _mm256_max_ps(Az, _mm256_max_ps(Bz, Cz));
+    keep = _mm256_and_ps(keep, _mm256_cmp_ps(z_hi, r->tmin, _CMP_GE_OQ));
+    keep = _mm256_and_ps(keep, _mm256_cmp_ps(z_lo, limit, _CMP_LT_OQ));
+
+    __m256 t_lo = z_lo;
+    __m256 t_hi = z_hi;
+    tri8_slab(ax, bx, cx, r->inv_x, r->neg_x, &t_lo, &t_hi);
+    tri8_slab(ay, by, cy, r->inv_y, r->neg_y, &t_lo, &t_hi);
+    keep = _mm256_and_ps(keep, _mm256_cmp_ps(t_lo, limit, _CMP_LT_OQ));
+    unsigned cand = (unsigned)_mm256_movemask_ps(keep) & lanes & ~deferred;
+    res->hit = 0;
+    res->scalar = deferred;
+    if (!cand)
+        return deferred;
+
+    /* isect_triangle_finish's zero-area test: the triangle's own. */
+    const double e1x = (double)v[1][0] - v[0][0];
+    const double e1y = (double)v[1][1] - v[0][1];
+    const double e1z = (double)v[1][2] - v[0][2];
+    const double e2x = (double)v[2][0] - v[0][0];
+    const double e2y = (double)v[2][1] - v[0][1];
+    const double e2z = (double)v[2][2] - v[0][2];
+    const double nx = e1y * e2z - e1z * e2y;
+    const double ny = e1z * e2x - e1x * e2z;
+    const double nz = e1x * e2y - e1y * e2x;
+    if (nx == 0.0 && ny == 0.0 && nz == 0.0)
+        return deferred; /* finish refuses every lane */
+
+    if (any_hit) {
+        /* isect_triangle_occludes' short way: the clamped t lies in
+         * [tmin, t_max) whatever it is. */
+        const __m256 inf = _mm256_set1_ps(INFINITY);
+        const __m256 sign = _mm256_set1_ps(-0.0f);
+        __m256 s = _mm256_cmp_ps(t_lo, r->tmin, _CMP_GE_OQ);
+        s = _mm256_and_ps(s, _mm256_cmp_ps(t_lo, t_hi, _CMP_LE_OQ));
+        s = _mm256_and_ps(s, _mm256_cmp_ps(t_hi, limit, _CMP_LT_OQ));
+        s = _mm256_and_ps(s, _mm256_cmp_ps(_mm256_andnot_ps(sign, t_lo), inf, _CMP_LT_OQ));
+        s = _mm256_and_ps(s, _mm256_cmp_ps(_mm256_andnot_ps(sign, t_hi), inf, _CMP_LT_OQ));
+        const unsigned short_way = (unsigned)_mm256_movemask_ps(s) & cand;
+        res->hit = short_way;
+        cand &= ~short_way;
+        if (!cand)
+            return res->hit | deferred;
+    }
+
+    const double n2 = nx * nx + ny * ny + nz * nz;
+    const double e3x = e2x - e1x;
+    const double e3y = e2y - e1y;
+    const double e3z = e2z - e1z;
+    const double l1 = e1x * e1x + e1y * e1y + e1z * e1z;
+    const double l2 = e2x * e2x + e2y * e2y + e2z * e2z;
+    const double l3 = e3x * e3x + e3y * e3y + e3z * e3z;
+    const double lmax = l1 >= l2 && l1 >= l3 ? l1 : (l2 >= l3 ? l2 : l3);
+
+    /* isect_triangle's size: max(max(|Ax|, |Ay|), max(|Bx|, |By|)), then
+     * max with max(|Cx|, |Cy|). */
+    const __m256 sign = _mm256_set1_ps(-0.0f);
+    __m256 size =
+        _mm256_max_ps(_mm256_max_ps(_mm256_andnot_ps(sign, Ax), _mm256_andnot_ps(sign, Ay)),
+                      _mm256_max_ps(_mm256_andnot_ps(sign, Bx), _mm256_andnot_ps(sign, By)));
+    size = _mm256_max_ps(size,
+                         _mm256_max_ps(_mm256_andnot_ps(sign, Cx), _mm256_andnot_ps(sign, Cy)));
+
+    const __m256d n_x = _mm256_set1_pd(nx), n_y = _mm256_set1_pd(ny), n_z = _mm256_set1_pd(nz);
+    const __m256d p_x = _mm256_set1_pd((double)v[0][0]);
+    const __m256d p_y = _mm256_set1_pd((double)v[0][1]);
+    const __m256d p_z = _mm256_set1_pd((double)v[0][2]);
+    const __m256d rounding_scale = _mm256_set1_pd(ISECT_SLIVER_ROUNDINGS * 0x1p-24);
+    const __m256d lmax_d = _mm256_set1_pd(lmax);
+    const __m256d n2_d = _mm256_set1_pd(n2);
+    __m128 t_half[2];
+    unsigned ok = 0;
+    for (int h = 0; h < 2; h++) {
+        const __m128 size_h = h ? _mm256_extractf128_ps(size, 1) : _mm256_castps256_ps128(size);
+        const __m256d rounding = _mm256_mul_pd(rounding_scale, _mm256_cvtps_pd(size_h));
+        const __m256d proper = _mm256_cmp_pd(
+            n2_d, _mm256_mul_pd(_mm256_mul_pd(rounding, rounding), lmax_d), _CMP_GE_OQ);
+        const __m256d den = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(n_x, r->dir_d[0][h]),
+                                                        _mm256_mul_pd(n_y, r->dir_d[1][h])),
+                                          _mm256_mul_pd(n_z, r->dir_d[2][h]));
+        const __m256d num = _mm256_add_pd(
+            _mm256_add_pd(_mm256_mul_pd(n_x, _mm256_sub_pd(p_x, r->org_d[0][h])),
+                          _mm256_mul_pd(n_y, _mm256_sub_pd(p_y, r->org_d[1][h]))),
+            _mm256_mul_pd(n_z, _mm256_sub_pd(p_z, r->org_d[2][h])));
+        const __m256d tp = _mm256_div_pd(num, den);
+        __m256d good = _mm256_and_pd(proper, _mm256_cmp_pd(den, _mm256_setzero_pd(), _CMP_NEQ_UQ));
+        good = _mm256_and_pd(good, _mm256_cmp_pd(tp, tp, _CMP_ORD_Q));
+        ok |= (unsigned)_mm256_movemask_pd(good) << (4 * h);
+        t_half[h] = _mm256_cvtpd_ps(tp);
+    }
+    res->scalar |= cand & ~ok;
+    cand &= ok;
+    if (!cand)
+        return res->hit | res->scalar;
+
+    __m256 t = _mm256_set_m128(t_half[1], t_half[0]);
+    t = _mm256_min_ps(t, t_hi);
+    t = _mm256_max_ps(t, t_lo);
+    __m256 acc = _mm256_cmp_ps(t, r->tmin, _CMP_GE_OQ);
+    acc = _mm256_and_ps(acc, _mm256_cmp_ps(t, limit, _CMP_LT_OQ));
+    acc = _mm256_and_ps(
+        acc, _mm256_cmp_ps(_mm256_andnot_ps(sign, t), _mm256_set1_ps(INFINITY), _CMP_LT_OQ));
+    const unsigned hit = (unsigned)_mm256_movemask_ps(acc) & cand;
+    res->hit |= hit;
+    if (hit && !any_hit) {
+        const __m256 rcp_det = _mm256_div_ps(_mm256_set1_ps(1.0f), det);
+        _mm256_storeu_ps(res->t, t);
+        _mm256_storeu_ps(res->u, _mm256_mul_ps(V, rcp_det));
+        _mm256_storeu_ps(res->v, _mm256_mul_ps(W, rcp_det));
+    }
+    return res->hit | res->scalar;
+}
+
+#endif
