@@ -12,6 +12,7 @@
 #include "base/mat4.h"
 #include "base/timer.h"
 #include "render/blend.h"
+#include "render/secondary.h"
 #include "render/raster.h"
 #include "render/shade.h"
 #include "trace/packet_scene.h"
@@ -113,6 +114,8 @@ static void shared_finish(struct render_pass *sh, struct render_stats *stats)
     stats->object_builds += sh->builds;
     stats->build_ms += (double)sh->build_us / 1000.0;
     rt_free(sh->counters);
+    rt_free(sh->secondary);
+    sh->secondary = NULL;
 }
 
 /* The near- and far-plane points under viewport position (x, y), in
@@ -329,6 +332,14 @@ int render_pass_begin(struct render_pass *pass, const struct render_job *job, in
     }
     pass->clipping = frame_has_clip(job->frame);
     pass->see_through = frame_has_see_through(job->frame);
+    /* Only Whitted shading traces shadow, reflected and refracted rays. */
+    if ((pass->clipping || pass->see_through) && st->shading == RENDER_WHITTED &&
+        secondary_marks(job->frame, SECONDARY_CLIP | SECONDARY_ALPHA | SECONDARY_BLEND,
+                        &pass->secondary)) {
+        rt_free(fb);
+        rt_free(pass->counters);
+        return -1;
+    }
     if (frame_has_lines(job->frame)) {
         pass->depth = rt_malloc((pixels ? pixels : 1) * sizeof(*pass->depth));
         if (!pass->depth) {
@@ -448,7 +459,11 @@ void render_tile(struct render_pass *pass, uint32_t tile, int worker)
                                pass->job->textures,
                                pass->clipping,
                                pass->see_through,
+                               NULL,
+                               NULL,
                                NULL};
+    struct secondary_scenes secondary;
+    secondary_scenes_init(&secondary, &sc, &pass->scene, pass->secondary);
     const int *vp = st->viewport;
     int x0 = (int)(tile % (uint32_t)pass->tiles_x) * RENDER_TILE_SIZE;
     int y0 = (int)(tile / (uint32_t)pass->tiles_x) * RENDER_TILE_SIZE;
@@ -611,7 +626,9 @@ static void query_task(void *arg, int worker)
 {
     struct render_pass *sh = arg;
     struct trace_scene_counters *counters = &sh->counters[worker].c;
-    const int packets = sh->scene.kernels && sh->scene.kernels->closest_packet;
+    /* Packets walk without the hit filter: a frame with clip planes
+     * traces its queries ray by ray. */
+    const int packets = sh->scene.kernels && sh->scene.kernels->closest_packet && !sh->secondary;
     for (;;) {
         uint32_t item = rt_atomic_fetch_add_relaxed(&sh->next_item, 1);
         size_t first = (size_t)item * RENDER_QUERY_CHUNK;
@@ -655,6 +672,18 @@ static int run_queries(const struct render_job *job, int count, const RTray *ray
     sh.rays = rays;
     sh.hits = hits;
     sh.occluded = occluded;
+    /* What the user clip planes remove is not there for a query either
+     * (render/secondary.h). */
+    if (frame_has_clip(job->frame)) {
+        if (secondary_marks(job->frame, SECONDARY_CLIP, &sh.secondary)) {
+            rt_free(sh.counters);
+            return -1;
+        }
+        sh.scene.filtered = sh.secondary;
+        sh.scene.filter_mask = SECONDARY_CLIP;
+        sh.scene.accept = secondary_accept_query;
+        sh.scene.accept_user = &sh;
+    }
     /* One chunk needs no helpers: avoid waking the pool for tiny batches. */
     rt_pool_run(count > RENDER_QUERY_CHUNK ? job->pool : NULL, query_task, &sh);
     int failed = sh.failed;

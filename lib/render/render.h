@@ -139,6 +139,9 @@ struct render_pass {
      * raster state of each pixel's primary hit (NULL for none), whose
      * offset raster_depth_offset applies; else NULL. */
     const struct scene_raster **depth_state;
+    /* NULL, or the instances whose hits secondary rays (frames) or
+     * queries check (render/secondary.h). */
+    uint8_t *secondary;
     /* Queries. */
     int count;
     const RTray *rays;

@@ -95,7 +95,7 @@ static void local_whitted(const struct shade_context *sc, const struct surface *
         float n_dot_l = vec3_dot(s->n, to_light);
         if (n_dot_l <= 0.0f || vec3_dot(s->ng, to_light) <= 0.0f)
             continue;
-        if (trace_scene_any(sc->scene, origin, shadow_dir, 0.0f, shadow_tmax, sc->counters))
+        if (trace_scene_any(sc->shadows, origin, shadow_dir, 0.0f, shadow_tmax, sc->counters))
             continue;
         add_scaled(c, light->diffuse, s->mat.diffuse, attenuation * n_dot_l);
         float h[3] = {to_light[0] + view[0], to_light[1] + view[1], to_light[2] + view[2]};
@@ -135,8 +135,10 @@ void shade_ray(const struct shade_context *sc, const float org[3], const float d
 {
     struct trace_scene_hit hit;
     /* Reflected and refracted rays see every face; camera rays, which
-     * skip the faces RT_CULL_FACE removes, go through render/blend.c. */
-    if (!trace_scene_closest(sc->scene, org, dir, 0.0f, tmax, &hit, sc->counters)) {
+     * skip the faces RT_CULL_FACE removes, go through render/blend.c.
+     * Surfaces clipped away or failing their alpha test are not there
+     * (sc->rays, render/secondary.h). */
+    if (!trace_scene_closest(sc->rays, org, dir, 0.0f, tmax, &hit, sc->counters)) {
         memcpy(rgba, sc->state->clear_color, 4 * sizeof(float));
         return;
     }

@@ -25,6 +25,11 @@ struct shade_context {
      * instead of tracing again.  The same hit bit for bit
      * (trace/packet_scene.h). */
     const struct shade_primed *primed;
+    /* What shadow rays and reflected or refracted rays trace: `scene`
+     * with the filter of render/secondary.h when the frame has clip
+     * planes, alpha test or blending, else `scene` itself. */
+    const struct trace_scene *shadows;
+    const struct trace_scene *rays;
 };
 
 struct shade_primed {
