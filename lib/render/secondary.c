@@ -16,29 +16,86 @@ static float clamp01(float x)
     return fminf(fmaxf(x, 0.0f), 1.0f);
 }
 
+/* 1 when every enabled plane keeps the whole box (world = eye space),
+ * with a margin of 2^-16 of the box's size and of its distance from the
+ * origin on every side: a hit point computed from the ray (org + t dir,
+ * rounded) lies in the box to far less than that, so no hit of the
+ * instance can be clipped and its hits need no test. */
+static int keeps_box(const struct scene_clip *c, const struct aabb *b)
+{
+    double lo[3], hi[3];
+    for (int k = 0; k < 3; k++) {
+        const double size = (double)b->max[k] - (double)b->min[k];
+        const double far = fmax(fabs((double)b->min[k]), fabs((double)b->max[k]));
+        const double margin = (size + far) * 0x1p-16;
+        lo[k] = (double)b->min[k] - margin;
+        hi[k] = (double)b->max[k] + margin;
+    }
+    for (int i = 0; i < SCENE_MAX_CLIP_PLANES; i++) {
+        if (!(c->enabled >> i & 1u))
+            continue;
+        const double *e = c->plane[i];
+        /* The box's corner where the plane's value is least. */
+        double v = e[3];
+        for (int k = 0; k < 3; k++)
+            v += e[k] * (e[k] < 0.0 ? hi[k] : lo[k]);
+        if (!(v >= 0.0))
+            return 0;
+    }
+    return 1;
+}
+
+/* 1 when the factors can show what lies behind (blend_needs_destination
+ * can say yes for some source colour). */
+static int may_see_through(unsigned src, unsigned dst)
+{
+    const int src_reads_dst = src == RT_DST_COLOR || src == RT_ONE_MINUS_DST_COLOR ||
+                              src == RT_DST_ALPHA || src == RT_ONE_MINUS_DST_ALPHA ||
+                              src == RT_SRC_ALPHA_SATURATE;
+    return src_reads_dst || dst != RT_ZERO;
+}
+
+/* What the hits of an instance must be checked for: a clip plane that may
+ * cut it, an alpha test that may fail (not RT_ALWAYS), a blend that may
+ * show what lies behind. */
+static unsigned instance_marks(const struct scene_instance *inst, unsigned kinds)
+{
+    const struct scene_appearance *a = &inst->appearance;
+    unsigned m = 0;
+    if ((kinds & SECONDARY_CLIP) && a->clip.enabled) {
+        const struct aabb box = scene_instance_box(inst);
+        if (!keeps_box(&a->clip, &box))
+            m |= SECONDARY_CLIP;
+    }
+    if ((kinds & SECONDARY_ALPHA) && a->raster.alpha_test && a->raster.alpha_func != RT_ALWAYS)
+        m |= SECONDARY_ALPHA;
+    if ((kinds & SECONDARY_BLEND) && a->raster.blend &&
+        may_see_through(a->raster.blend_src, a->raster.blend_dst))
+        m |= SECONDARY_BLEND;
+    return m;
+}
+
 int secondary_marks(const struct scene_frame *frame, unsigned kinds, uint8_t **out)
 {
     const uint32_t n = frame->committed.count;
-    int any = 0;
+    uint32_t first = n;
+    unsigned m0 = 0;
     *out = NULL;
-    for (uint32_t i = 0; i < n && !any; i++) {
-        const struct scene_appearance *a = &frame->committed.items[i].appearance;
-        any = ((kinds & SECONDARY_CLIP) && a->clip.enabled) ||
-              ((kinds & SECONDARY_ALPHA) && a->raster.alpha_test) ||
-              ((kinds & SECONDARY_BLEND) && a->raster.blend);
+    for (uint32_t i = 0; i < n; i++) {
+        m0 = instance_marks(&frame->committed.items[i], kinds);
+        if (m0) {
+            first = i;
+            break;
+        }
     }
-    if (!any)
+    if (first == n)
         return 0;
-    uint8_t *marks = rt_malloc(n);
+    uint8_t *marks = rt_calloc(n, 1);
     if (!marks)
         return -1;
-    for (uint32_t i = 0; i < n; i++) {
-        const struct scene_appearance *a = &frame->committed.items[i].appearance;
-        marks[i] = (uint8_t)(((kinds & SECONDARY_CLIP) && a->clip.enabled ? SECONDARY_CLIP : 0u) |
-                             ((kinds & SECONDARY_ALPHA) && a->raster.alpha_test ? SECONDARY_ALPHA
-                                                                                : 0u) |
-                             ((kinds & SECONDARY_BLEND) && a->raster.blend ? SECONDARY_BLEND : 0u));
-    }
+    marks[first] = (uint8_t)m0;
+    for (uint32_t i = first + 1; i < n; i++)
+        marks[i] = (uint8_t)instance_marks(&frame->committed.items[i], kinds);
     *out = marks;
     return 0;
 }

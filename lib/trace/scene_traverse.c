@@ -125,19 +125,27 @@ static void keep_hit(struct top_state *s, uint32_t index, const struct trace_hit
     }
 }
 
-/* A filtered instance (trace_scene.filtered): the closest accepted hit,
- * or an accepted one for an any-hit walk. */
-static int visit_filtered(struct top_state *s, uint32_t index,
-                          const struct trace_object_view *view, const struct trace_ray *o_ray)
+/*
+ * The hit filter's part of an instance it marks (trace_scene.filtered),
+ * after the kernel's walk found `got` (h: its closest hit): without a
+ * hit there is nothing to filter; the kernel's closest hit, when
+ * accepted, is the closest accepted (the same triangle test, the same tie
+ * rule, scene_filter.h); else, and for an any-hit walk (whose kernel hit
+ * is any one), the triangles one by one.  So a marked instance costs the
+ * kernel's walk alone for the rays that miss it or whose nearest hit
+ * stays.
+ */
+static int filter_hits(struct top_state *s, uint32_t index, const struct trace_object_view *view,
+                       const struct trace_ray *o_ray, float limit, struct trace_hit *h)
 {
-    const float limit = s->any_hit ? s->best : s->found ? isect_next_up(s->best) : s->best;
-    const struct trace_filter_ray fr = {s->scene, s->org, s->dir, index, s->any_hit};
-    struct trace_hit h;
-    const int got = trace_filter_object(view, o_ray, limit, &fr, &h, &s->counters->object);
-    if (s->any_hit || !got)
-        return got && s->any_hit;
-    keep_hit(s, index, &h);
-    return 0;
+    const struct trace_scene *scene = s->scene;
+    if (!s->any_hit) {
+        const struct trace_scene_hit cand = {h->t, h->u, h->v, h->prim, index};
+        if (scene->accept(scene->accept_user, s->org, s->dir, &cand))
+            return 1;
+    }
+    const struct trace_filter_ray fr = {scene, s->org, s->dir, index, s->any_hit};
+    return trace_filter_object(view, o_ray, limit, &fr, h, &s->counters->object);
 }
 
 /* The instance in slot `index` of scene->instances.  Returns 1 when an
@@ -157,10 +165,10 @@ static int visit_instance(struct top_state *s, uint32_t index)
     struct trace_ray o_ray;
     if (!trace_scene_object_ray(inst, s->org, s->dir, s->tmin, &s->ray, &o_ray))
         return 0;
-    /* An instance the scene's hit filter applies to: its triangles one
-     * by one (scene_filter.h).  A frame without one pays this test only. */
-    if (scene->filtered && (scene->filtered[inst->instance_id] & scene->filter_mask))
-        return visit_filtered(s, index, &view, &o_ray);
+    /* An instance the scene's hit filter applies to (filter_hits); a
+     * frame without one pays this test only. */
+    const int filtered =
+        scene->filtered && (scene->filtered[inst->instance_id] & scene->filter_mask);
     /* The wide walk where the table has one and the object a wide
      * layout: the same answers (kernels.h). */
     const int wide = view.wide && view.wide->node_count && kernels->closest4;
@@ -175,6 +183,10 @@ static int visit_instance(struct top_state *s, uint32_t index)
         if (view.ray_count)
             trace_scene_count_rays(counters, view.ray_count, tests_before,
                                    wide ? view.wide->width : 1, 1);
+        if (got && filtered) {
+            struct trace_hit unused;
+            got = filter_hits(s, index, &view, &o_ray, s->best, &unused);
+        }
         return got;
     }
     /* The tie rule is keep_hit's. */
@@ -186,6 +198,8 @@ static int visit_instance(struct top_state *s, uint32_t index)
     if (view.ray_count)
         trace_scene_count_rays(counters, view.ray_count, tests_before,
                                    wide ? view.wide->width : 1, 1);
+    if (got && filtered)
+        got = filter_hits(s, index, &view, &o_ray, limit, &h);
     if (got)
         keep_hit(s, index, &h);
     return 0;
