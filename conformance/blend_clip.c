@@ -257,6 +257,19 @@ static void clip_planes(void)
     rtEnable(RT_CLIP_PLANE0);
     render_both();
     CHECK(near3(px(5, 5), 1.0, 0.0, 0.0) && near3(px(14, 14), 1.0, 0.0, 0.0));
+    /* A coincident copy of the front quad drawn after the plane is
+     * disabled is there: the ray does not step past the clipped copy's
+     * distance and lose it. */
+    rtBeginFrame();
+    rtInstantiateObject(BACK);
+    rtInstantiateObject(FRONT);
+    rtDisable(RT_CLIP_PLANE0);
+    rtInstantiateObject(FRONT);
+    rtEnable(RT_CLIP_PLANE0);
+    rtClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    tu_render_float(N, N, img);
+    CHECK(near3(px(5, 5), 0.0, 0.0, 1.0) && near3(px(14, 14), 0.0, 0.0, 1.0));
+    render_both();
     /* Ray queries are clipped too (docs/clip_planes.md): the front quad,
      * drawn under the plane, is not there. */
     RTray ray = {{5.5f, 5.5f, 1.0f}, 0.0f, {0.0f, 0.0f, -1.0f}, INFINITY};

@@ -8,7 +8,9 @@
  * the same triangle, whose t for this ray is computed by the same
  * operations every time, can never be found again, and the watertight
  * test and its hit rule are untouched.  Behind an opaque first hit, a
- * triangle at exactly the same t is skipped with it.  At a see-through
+ * triangle at exactly the same t is skipped with it; a clipped one is
+ * replaced by the first unclipped triangle at its distance, if any
+ * (unclipped_tie), which stepping past it would lose.  At a see-through
  * hit every triangle at that t is a fragment (trace_scene_ties), composited
  * in GL's draw order, instance then primitive, as GL blends coplanar
  * translucent triangles one over the other; of the neighbours of one
@@ -302,14 +304,16 @@ static void shade_fragment(const struct shade_context *sc, const float org[3],
     f->boundary = 0;
     if (i > 0 && !gl_hit_drawn(sc, dir, hit))
         return;
+    /* A clipped fragment does not take the pixel of an edge it shares
+     * with a neighbour of another instance drawn without the plane. */
+    if (sc->clipping && clipped(sc, org, dir, hit))
+        return;
     if (on_boundary(hit)) {
         for (int j = 0; j < i; j++)
             if (g->f[j].boundary && neighbours(sc, &g->hit[j], hit))
                 return;
         f->boundary = 1;
     }
-    if (sc->clipping && clipped(sc, org, dir, hit))
-        return;
     shade_hit(sc, org, dir, hit, cone, 0, f->rgba);
     const struct scene_raster *r = hit_raster(sc, hit);
     f->raster = r;
@@ -343,6 +347,29 @@ static void group_ties(const struct shade_context *sc, const float org[3], const
     g->count = 1 + n;
 }
 
+/*
+ * A clipped hit: the first other triangle at exactly its distance, in
+ * draw order, that is drawn (its face) and not clipped replaces it (a
+ * coincident copy drawn without the plane, which stepping past the
+ * distance would lose); 0 when there is none.
+ */
+static int unclipped_tie(const struct shade_context *sc, const float org[3], const float dir[3],
+                         struct trace_scene_hit *hit)
+{
+    struct trace_scene_hit after = *hit, next[8];
+    for (;;) {
+        const int n = trace_scene_ties(sc->scene, org, dir, &after, next, 8, NULL, sc->counters);
+        for (int i = 0; i < n; i++)
+            if (gl_hit_drawn(sc, dir, &next[i]) && !clipped(sc, org, dir, &next[i])) {
+                *hit = next[i];
+                return 1;
+            }
+        if (n < 8)
+            return 0;
+        after = next[7];
+    }
+}
+
 void blend_trace_primary_state(const struct shade_context *sc, const float org[3],
                                const float dir[3], float tmax, struct shade_cone cone,
                                float rgba[4], float *t_first,
@@ -368,13 +395,13 @@ void blend_trace_primary_state(const struct shade_context *sc, const float org[3
         if (!gl_closest_drawn(sc, org, dir, tmin, tmax, hit))
             break;
         tmin = nextafterf(hit->t, INFINITY);
+        if (clipping && clipped(sc, org, dir, hit) && !unclipped_tie(sc, org, dir, hit))
+            continue;
         const struct scene_raster *r = see_through ? hit_raster(sc, hit) : NULL;
         /* A frame with neither blending nor the alpha test anywhere, or a
          * surface that neither blends nor tests alpha in front: the
          * nearest kept hit, with no look-up per hit. */
         if (!r || !scene_raster_see_through(r)) {
-            if (clipping && clipped(sc, org, dir, hit))
-                continue;
             if (ls.n == 0) {
                 shade_hit(sc, org, dir, hit, cone, 0, rgba);
                 *t_first = hit->t;
