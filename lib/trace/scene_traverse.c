@@ -127,23 +127,20 @@ static void keep_hit(struct top_state *s, uint32_t index, const struct trace_hit
 
 /*
  * The hit filter's part of an instance it marks (trace_scene.filtered),
- * after the kernel's walk found `got` (h: its closest hit): without a
- * hit there is nothing to filter; the kernel's closest hit, when
- * accepted, is the closest accepted (the same triangle test, the same tie
- * rule, scene_filter.h); else, and for an any-hit walk (whose kernel hit
- * is any one), the triangles one by one.  So a marked instance costs the
- * kernel's walk alone for the rays that miss it or whose nearest hit
- * stays.
+ * after the kernel's closest-hit walk found h (for an any-hit walk too):
+ * the kernel's closest hit, when accepted, is the closest accepted (the
+ * same triangle test, the same tie rule, scene_filter.h), and an
+ * accepted hit ends an any-hit walk; else the triangles one by one.  So a
+ * marked instance costs the kernel's walk alone for the rays that miss it
+ * or whose nearest hit stays.
  */
 static int filter_hits(struct top_state *s, uint32_t index, const struct trace_object_view *view,
                        const struct trace_ray *o_ray, float limit, struct trace_hit *h)
 {
     const struct trace_scene *scene = s->scene;
-    if (!s->any_hit) {
-        const struct trace_scene_hit cand = {h->t, h->u, h->v, h->prim, index};
-        if (scene->accept(scene->accept_user, s->org, s->dir, &cand))
-            return 1;
-    }
+    const struct trace_scene_hit cand = {h->t, h->u, h->v, h->prim, index};
+    if (scene->accept(scene->accept_user, s->org, s->dir, &cand))
+        return 1;
     const struct trace_filter_ray fr = {scene, s->org, s->dir, index, s->any_hit};
     return trace_filter_object(view, o_ray, limit, &fr, h, &s->counters->object);
 }
@@ -176,17 +173,13 @@ static int visit_instance(struct top_state *s, uint32_t index)
      * the root's (the root box for the binary walk, the root's children
      * for a wide one). */
     const uint64_t tests_before = counters->object.node_tests;
-    if (s->any_hit) {
+    if (s->any_hit && !filtered) {
         int got = wide ? kernels->any4(view.wide, view.bvh, view.tri, &o_ray, s->best,
                                        &counters->object)
                        : kernels->any(view.bvh, view.tri, &o_ray, s->best, &counters->object);
         if (view.ray_count)
             trace_scene_count_rays(counters, view.ray_count, tests_before,
                                    wide ? view.wide->width : 1, 1);
-        if (got && filtered) {
-            struct trace_hit unused;
-            got = filter_hits(s, index, &view, &o_ray, s->best, &unused);
-        }
         return got;
     }
     /* The tie rule is keep_hit's. */
@@ -200,6 +193,8 @@ static int visit_instance(struct top_state *s, uint32_t index)
                                    wide ? view.wide->width : 1, 1);
     if (got && filtered)
         got = filter_hits(s, index, &view, &o_ray, limit, &h);
+    if (s->any_hit)
+        return got;
     if (got)
         keep_hit(s, index, &h);
     return 0;
