@@ -280,7 +280,7 @@ static void invariance(void)
     tu_section("bit-identical across ISAs and threads");
     static float ref[4 * N * N], other[4 * N * N];
     static const char *configs[] = {"threads=2 isa=sse4", "threads=3 isa=avx2",
-                                    "threads=1 isa=avx2 packets=off"};
+                                    "threads=1 isa=avx2 packets=off", "threads=2 isa=avx512"};
     render_all("threads=1 isa=scalar", ref);
     for (size_t i = 0; i < sizeof(configs) / sizeof(configs[0]); i++) {
         render_all(configs[i], other);
