@@ -290,6 +290,52 @@ static void invariance(void)
     }
 }
 
+/* A nested group (a list calling OCC twice) drawn under the plane, as
+ * one flattened top-level entry and as instances: the same image, no
+ * shadow from the clipped occluders, and queries pass them. */
+static void nested(const char *config, float *out, int *band, RTuint *hit_object)
+{
+    RTcontext ctx = tu_make_context(config);
+    setup();
+    rtNewObject(OCC + 20);
+    rtInstantiateObject(OCC);
+    rtPushMatrix();
+    rtTranslatef(0.0f, 0.0f, 1.0f);
+    rtInstantiateObject(OCC);
+    rtPopMatrix();
+    rtEndObject();
+    rtClipPlane(RT_CLIP_PLANE0, keep_below_2);
+    rtBeginFrame();
+    rtInstantiateObject(FLOOR);
+    rtEnable(RT_CLIP_PLANE0);
+    rtInstantiateObject(OCC + 20);
+    rtDisable(RT_CLIP_PLANE0);
+    tu_render_float(N, N, out);
+    memcpy(img, out, sizeof(img));
+    *band = shadow_band();
+    RTray r = {{9.5f, 5.0f, 8.0f}, 0.0f, {0.0f, 0.0f, -1.0f}, INFINITY};
+    RThit h;
+    rtTraceRays(1, &r, &h);
+    *hit_object = h.object;
+    CHECK_NO_ERR();
+    tu_destroy_context(ctx);
+}
+
+static void nested_groups(void)
+{
+    tu_section("a flattened nested group is clipped for shadow rays and queries");
+    static float flat[4 * N * N], inst[4 * N * N];
+    int band_flat, band_inst;
+    RTuint obj_flat, obj_inst;
+    nested("threads=2 flatten=on", flat, &band_flat, &obj_flat);
+    nested("threads=2 flatten=off", inst, &band_inst, &obj_inst);
+    CHECK_INT(band_flat, 1);
+    CHECK_INT(band_inst, 1);
+    CHECK_INT((int)obj_flat, (int)FLOOR);
+    CHECK_INT((int)obj_inst, (int)FLOOR);
+    CHECK(memcmp(flat, inst, sizeof(flat)) == 0);
+}
+
 int main(void)
 {
     RTcontext ctx = tu_make_context("threads=2");
@@ -299,5 +345,6 @@ int main(void)
     blending();
     tu_destroy_context(ctx);
     invariance();
+    nested_groups();
     return test_summary("secondary_rays");
 }
