@@ -5,7 +5,7 @@
  * rtDepthMask, and the user clip planes rtClipPlane / rtGetClipPlane
  * (the plane transformed by the modelview at the call; primary rays
  * continue past a clipped hit; lines clipped too; ray queries
- * unchanged).  State queries and errors.
+ * skip clipped hits).  State queries and errors.
  *
  * Camera: rtOrtho(0, N, 0, N, -1, 1) on N x N pixels, eye looking down
  * -z; surfaces are emissive (the eye light then shows the emission
@@ -154,11 +154,42 @@ static void coplanar(void)
     rtInstantiateObject(BACK);
     tu_render_float(N, N, img);
     CHECK(near3(px(8, 8), 0.5 * 0.9 + 0.25 * 0.1, 0.5 * 0.2 + 0.25 * 0.8, 0.5 * 0.1 + 0.25 * 0.3));
-    /* Thousands of coincident quads in one object (a stability case):
-     * bounded work, the first BLEND_MAX_LAYERS (32) drawn composited,
-     * alternating red and green at alpha 1/2: the last of them (green)
-     * on top. */
+    /* Two instances meeting along an edge (x = 8.5, through the centres
+     * of the pixels of column 8): GL gives each such pixel to one of the
+     * two triangles, so it is blended once, as inside one mesh. */
+    square(BACK, 0.0f, 8.5f, 0.0f, red, 0.5f);
+    square(FRONT, 8.5f, 16.0f, 0.0f, red, 0.5f);
+    render_both();
+    CHECK(near3(px(8, 5), 0.45, 0.1, 0.05) && near3(px(8, 12), 0.45, 0.1, 0.05));
+    CHECK(near3(px(3, 5), 0.45, 0.1, 0.05) && near3(px(12, 5), 0.45, 0.1, 0.05));
+    /* More than 32 coincident surfaces: every one is blended (no fixed
+     * cap), 32 red ones drawn first, 8 green ones over them. */
     const float black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+    rtNewObject(BACK);
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_AMBIENT, black);
+    for (int k = 0; k < 40; k++) {
+        const float *c = k < 32 ? red : green;
+        const float diffuse[4] = {0.0f, 0.0f, 0.0f, 0.5f}, emission[4] = {c[0], c[1], c[2], 1};
+        rtMaterialfv(RT_FRONT_AND_BACK, RT_DIFFUSE, diffuse);
+        rtMaterialfv(RT_FRONT_AND_BACK, RT_EMISSION, emission);
+        rtBegin(RT_QUADS);
+        rtVertex3f(0.0f, 0.0f, 0.0f);
+        rtVertex3f(16.0f, 0.0f, 0.0f);
+        rtVertex3f(16.0f, 16.0f, 0.0f);
+        rtVertex3f(0.0f, 16.0f, 0.0f);
+        rtEnd();
+    }
+    rtEndObject();
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_EMISSION, black);
+    rtBeginFrame();
+    rtInstantiateObject(BACK);
+    tu_render_float(N, N, img);
+    /* Red (to 2^-32) under 8 halvings towards green. */
+    const double w8 = 1.0 / 256.0;
+    CHECK(near3(px(5, 9), 0.1 + 0.8 * w8, 0.8 - 0.6 * w8, 0.3 - 0.2 * w8));
+    /* Thousands of coincident quads in one object (a stability case):
+     * all composited, alternating red and green at alpha 1/2: the last
+     * of them (green) on top. */
     rtNewObject(BACK);
     rtMaterialfv(RT_FRONT_AND_BACK, RT_AMBIENT, black);
     for (int k = 0; k < 3000; k++) {
@@ -184,7 +215,7 @@ static void coplanar(void)
     CHECK(near3(px(5, 9), r, g, b));
     CHECK(near3(px(12, 3), r, g, b));
     /* On the quads' diagonal each copy counts once (its two triangles
-     * share the edge), so 16 copies fill the 32 hits taken. */
+     * share the edge). */
     CHECK(fabs(px(8, 8)[0] - r) < 1e-4 && fabs(px(8, 8)[1] - g) < 1e-4 &&
           fabs(px(8, 8)[2] - b) < 1e-4);
     rtDisable(RT_BLEND);
@@ -226,11 +257,25 @@ static void clip_planes(void)
     rtEnable(RT_CLIP_PLANE0);
     render_both();
     CHECK(near3(px(5, 5), 1.0, 0.0, 0.0) && near3(px(14, 14), 1.0, 0.0, 0.0));
-    /* Ray queries are not clipped. */
+    /* A coincident copy of the front quad drawn after the plane is
+     * disabled is there: the ray does not step past the clipped copy's
+     * distance and lose it. */
+    rtBeginFrame();
+    rtInstantiateObject(BACK);
+    rtInstantiateObject(FRONT);
+    rtDisable(RT_CLIP_PLANE0);
+    rtInstantiateObject(FRONT);
+    rtEnable(RT_CLIP_PLANE0);
+    rtClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    tu_render_float(N, N, img);
+    CHECK(near3(px(5, 5), 0.0, 0.0, 1.0) && near3(px(14, 14), 0.0, 0.0, 1.0));
+    render_both();
+    /* Ray queries are clipped too (docs/clip_planes.md): the front quad,
+     * drawn under the plane, is not there. */
     RTray ray = {{5.5f, 5.5f, 1.0f}, 0.0f, {0.0f, 0.0f, -1.0f}, INFINITY};
     RThit hit;
     rtTraceRays(1, &ray, &hit);
-    CHECK(hit.object == FRONT && hit.t == 0.5f);
+    CHECK(hit.object == BACK && hit.t == 1.5f);
     /* Lines: a segment crossing z = 0 is cut there. */
     rtNewObject(LINES);
     rtColor3f(0.0f, 1.0f, 0.0f);

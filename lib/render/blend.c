@@ -8,7 +8,9 @@
  * the same triangle, whose t for this ray is computed by the same
  * operations every time, can never be found again, and the watertight
  * test and its hit rule are untouched.  Behind an opaque first hit, a
- * triangle at exactly the same t is skipped with it.  At a see-through
+ * triangle at exactly the same t is skipped with it; a clipped one is
+ * replaced by the first unclipped triangle at its distance, if any
+ * (unclipped_tie), which stepping past it would lose.  At a see-through
  * hit every triangle at that t is a fragment (trace_scene_ties), composited
  * in GL's draw order, instance then primitive, as GL blends coplanar
  * translucent triangles one over the other; of the neighbours of one
@@ -18,7 +20,11 @@
 #include "render/blend.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
+
+#include "base/alloc.h"
+#include "base/mat4.h"
 
 #include "render/gl_shade.h"
 #include "render/surface.h"
@@ -131,15 +137,51 @@ static int on_boundary(const struct trace_scene_hit *h)
     return h->u <= eps || h->v <= eps || h->u + h->v >= 1.0f - eps;
 }
 
-/* 1 when the triangles of two hits of one instance are neighbours: they
- * share one or two vertex positions (an edge or a vertex of a mesh, drawn
- * with shared or with repeated vertices), and are not the same triangle
- * drawn twice (a coincident copy, which GL draws again). */
+/* The eye-space positions of a hit triangle's vertices (its instance's
+ * matrix, in double: instances with equal matrices give equal points). */
+static void world_triangle(const struct shade_context *sc, const struct trace_scene_hit *h,
+                           double p[3][3])
+{
+    const struct scene_instance *inst = shade_hit_instance(sc, h);
+    const struct scene_mesh *mesh = &inst->object->mesh;
+    for (int i = 0; i < 3; i++) {
+        const float *f = &mesh->positions[3 * mesh->indices[3 * h->prim + (uint32_t)i]];
+        const double q[3] = {f[0], f[1], f[2]};
+        mat4_transform_point(inst->object_to_world, q, p[i]);
+    }
+}
+
+/* Neighbours in two instances: the shared vertices compared in eye space.
+ * GL's rasterisation gives a pixel on an edge to one of the triangles
+ * sharing it whatever draw call each came from, so two instances that
+ * meet along an edge (a model issued in two segments, two tiles of a
+ * floor) count once there too. */
+static int neighbours_across(const struct shade_context *sc, const struct trace_scene_hit *a,
+                             const struct trace_scene_hit *b)
+{
+    double pa[3][3], pb[3][3];
+    world_triangle(sc, a, pa);
+    world_triangle(sc, b, pb);
+    int shared = 0;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            if (pa[i][0] == pb[j][0] && pa[i][1] == pb[j][1] && pa[i][2] == pb[j][2]) {
+                shared++;
+                break;
+            }
+    return shared >= 1 && shared <= 2;
+}
+
+/* 1 when the triangles of two hits are neighbours: they share one or two
+ * vertex positions (an edge or a vertex of a mesh, drawn with shared or
+ * with repeated vertices, or of two instances that meet there), and are
+ * not the same triangle drawn twice (a coincident copy, which GL draws
+ * again). */
 static int neighbours(const struct shade_context *sc, const struct trace_scene_hit *a,
                       const struct trace_scene_hit *b)
 {
     if (a->instance != b->instance)
-        return 0;
+        return neighbours_across(sc, a, b);
     const struct scene_mesh *mesh = &shade_hit_instance(sc, a)->object->mesh;
     const uint32_t *va = &mesh->indices[3 * a->prim], *vb = &mesh->indices[3 * b->prim];
     int shared = 0;
@@ -166,16 +208,84 @@ static int clipped(const struct shade_context *sc, const float org[3], const flo
     return scene_clip_removes(&shade_hit_instance(sc, hit)->appearance.clip, p);
 }
 
-/* The fragments of one distance, in GL's draw order. */
-struct fragment_group {
-    struct trace_scene_hit hit[BLEND_MAX_LAYERS];
-    float rgba[BLEND_MAX_LAYERS][4];
-    const struct scene_raster *raster[BLEND_MAX_LAYERS]; /* the instance's */
-    const struct scene_raster *state[BLEND_MAX_LAYERS];  /* blends by; NULL: copied */
-    unsigned char kept[BLEND_MAX_LAYERS], stops[BLEND_MAX_LAYERS];
-    unsigned char boundary[BLEND_MAX_LAYERS]; /* an edge or vertex hit that counts */
-    int count;
+/* One fragment of a group: its colour and what GL does with it. */
+struct fragment {
+    float rgba[4];
+    const struct scene_raster *raster; /* the instance's */
+    const struct scene_raster *state;  /* blends by; NULL: copied */
+    unsigned char kept, stops;
+    unsigned char boundary; /* an edge or vertex hit that counts */
 };
+
+/*
+ * The fragments of one distance, in GL's draw order: BLEND_MAX_LAYERS in
+ * arrays of the caller's (no allocation for the pixels of real scenes),
+ * more on the heap when a pixel has more coincident surfaces; a failed
+ * allocation keeps the first drawn, as many as there is room for.
+ */
+struct fragment_group {
+    struct trace_scene_hit *hit;
+    struct fragment *f;
+    int count, cap;
+    int heap; /* hit and f were allocated here */
+};
+
+/* The layers a ray composites, likewise growable. */
+struct layer {
+    float rgba[4];
+    const struct scene_raster *state; /* NULL or blend off: opaque */
+};
+
+struct layer_stack {
+    struct layer *l;
+    int n, cap;
+    int heap;
+};
+
+/* Room for at least `want` fragments (hit[0] kept); 0 when there is none
+ * and the group stays as it was. */
+static int group_grow(struct fragment_group *g, int want)
+{
+    int cap = g->cap;
+    while (cap < want) {
+        if (cap > INT32_MAX / 2)
+            return 0;
+        cap *= 2;
+    }
+    struct trace_scene_hit *hit = rt_realloc_array(NULL, (size_t)cap, sizeof(*hit));
+    struct fragment *f = rt_realloc_array(NULL, (size_t)cap, sizeof(*f));
+    if (!hit || !f) {
+        rt_free(hit);
+        rt_free(f);
+        return 0;
+    }
+    hit[0] = g->hit[0];
+    if (g->heap) {
+        rt_free(g->hit);
+        rt_free(g->f);
+    }
+    g->hit = hit;
+    g->f = f;
+    g->cap = cap;
+    g->heap = 1;
+    return 1;
+}
+
+static int layers_grow(struct layer_stack *s)
+{
+    if (s->cap > INT32_MAX / 2)
+        return 0;
+    struct layer *l = rt_realloc_array(NULL, (size_t)s->cap * 2, sizeof(*l));
+    if (!l)
+        return 0;
+    memcpy(l, s->l, (size_t)s->n * sizeof(*l));
+    if (s->heap)
+        rt_free(s->l);
+    s->l = l;
+    s->cap *= 2;
+    s->heap = 1;
+    return 1;
+}
 
 /*
  * Shades fragment i of the group: whether GL draws it (its face, its
@@ -189,34 +299,75 @@ static void shade_fragment(const struct shade_context *sc, const float org[3],
                            struct fragment_group *g, int i)
 {
     const struct trace_scene_hit *hit = &g->hit[i];
-    g->kept[i] = 0;
-    g->boundary[i] = 0;
+    struct fragment *f = &g->f[i];
+    f->kept = 0;
+    f->boundary = 0;
     if (i > 0 && !gl_hit_drawn(sc, dir, hit))
+        return;
+    /* A clipped fragment does not take the pixel of an edge it shares
+     * with a neighbour of another instance drawn without the plane. */
+    if (sc->clipping && clipped(sc, org, dir, hit))
         return;
     if (on_boundary(hit)) {
         for (int j = 0; j < i; j++)
-            if (g->boundary[j] && neighbours(sc, &g->hit[j], hit))
+            if (g->f[j].boundary && neighbours(sc, &g->hit[j], hit))
                 return;
-        g->boundary[i] = 1;
+        f->boundary = 1;
     }
-    if (sc->clipping && clipped(sc, org, dir, hit))
-        return;
-    shade_hit(sc, org, dir, hit, cone, 0, g->rgba[i]);
+    shade_hit(sc, org, dir, hit, cone, 0, f->rgba);
     const struct scene_raster *r = hit_raster(sc, hit);
-    g->raster[i] = r;
+    f->raster = r;
     if (!sc->see_through || !scene_raster_see_through(r)) {
-        g->state[i] = NULL;
-        g->stops[i] = 1;
-        g->kept[i] = 1;
+        f->state = NULL;
+        f->stops = 1;
+        f->kept = 1;
         return;
     }
     if (sc->state->shading != RENDER_FIXED_FUNCTION)
-        g->rgba[i][3] = surface_alpha(sc, hit, dir, cone);
-    if (r->alpha_test && !scene_alpha_passes(r->alpha_func, clamp01(g->rgba[i][3]), r->alpha_ref))
+        f->rgba[3] = surface_alpha(sc, hit, dir, cone);
+    if (r->alpha_test && !scene_alpha_passes(r->alpha_func, clamp01(f->rgba[3]), r->alpha_ref))
         return;
-    g->state[i] = r->blend ? r : NULL;
-    g->stops[i] = !r->blend || !blend_needs_destination(r->blend_src, r->blend_dst, g->rgba[i]);
-    g->kept[i] = 1;
+    f->state = r->blend ? r : NULL;
+    f->stops = !r->blend || !blend_needs_destination(r->blend_src, r->blend_dst, f->rgba);
+    f->kept = 1;
+}
+
+/* Every hit at the group's distance after hit[0], in draw order: as many
+ * as memory allows (trace_scene_ties gives the first `room` and says how
+ * many there are; with more, asked once again with room for all). */
+static void group_ties(const struct shade_context *sc, const float org[3], const float dir[3],
+                       struct fragment_group *g)
+{
+    int total;
+    int n = trace_scene_ties(sc->scene, org, dir, &g->hit[0], &g->hit[1], g->cap - 1, &total,
+                             sc->counters);
+    if (total > n && total < INT32_MAX && group_grow(g, total + 1))
+        n = trace_scene_ties(sc->scene, org, dir, &g->hit[0], &g->hit[1], g->cap - 1, NULL,
+                             sc->counters);
+    g->count = 1 + n;
+}
+
+/*
+ * A clipped hit: the first other triangle at exactly its distance, in
+ * draw order, that is drawn (its face) and not clipped replaces it (a
+ * coincident copy drawn without the plane, which stepping past the
+ * distance would lose); 0 when there is none.
+ */
+static int unclipped_tie(const struct shade_context *sc, const float org[3], const float dir[3],
+                         struct trace_scene_hit *hit)
+{
+    struct trace_scene_hit after = *hit, next[8];
+    for (;;) {
+        const int n = trace_scene_ties(sc->scene, org, dir, &after, next, 8, NULL, sc->counters);
+        for (int i = 0; i < n; i++)
+            if (gl_hit_drawn(sc, dir, &next[i]) && !clipped(sc, org, dir, &next[i])) {
+                *hit = next[i];
+                return 1;
+            }
+        if (n < 8)
+            return 0;
+        after = next[7];
+    }
 }
 
 void blend_trace_primary_state(const struct shade_context *sc, const float org[3],
@@ -224,15 +375,17 @@ void blend_trace_primary_state(const struct shade_context *sc, const float org[3
                                float rgba[4], float *t_first,
                                const struct scene_raster **first_state)
 {
-    float layers[BLEND_MAX_LAYERS][4];
+    struct layer local_layers[BLEND_MAX_LAYERS];
+    struct trace_scene_hit local_hits[BLEND_MAX_LAYERS];
+    struct fragment local_fragments[BLEND_MAX_LAYERS];
     /* Each layer's blend state: GL blends a fragment by the state current
      * when its primitive was drawn; NULL or blend off: opaque. */
-    const struct scene_raster *layer_state[BLEND_MAX_LAYERS];
-    int n = 0, done = 0;
+    struct layer_stack ls = {local_layers, 0, BLEND_MAX_LAYERS, 0};
+    struct fragment_group g = {local_hits, local_fragments, 0, BLEND_MAX_LAYERS, 0};
+    int done = 0;
     float tmin = 0.0f;
     const int clipping = sc->clipping;
     const int see_through = sc->see_through;
-    struct fragment_group g;
     *t_first = INFINITY;
     if (first_state)
         *first_state = NULL;
@@ -242,47 +395,51 @@ void blend_trace_primary_state(const struct shade_context *sc, const float org[3
         if (!gl_closest_drawn(sc, org, dir, tmin, tmax, hit))
             break;
         tmin = nextafterf(hit->t, INFINITY);
+        if (clipping && clipped(sc, org, dir, hit) && !unclipped_tie(sc, org, dir, hit))
+            continue;
         const struct scene_raster *r = see_through ? hit_raster(sc, hit) : NULL;
         /* A frame with neither blending nor the alpha test anywhere, or a
          * surface that neither blends nor tests alpha in front: the
          * nearest kept hit, with no look-up per hit. */
         if (!r || !scene_raster_see_through(r)) {
-            if (clipping && clipped(sc, org, dir, hit))
-                continue;
-            shade_hit(sc, org, dir, hit, cone, 0, layers[n]);
-            if (n == 0) {
+            if (ls.n == 0) {
+                shade_hit(sc, org, dir, hit, cone, 0, rgba);
                 *t_first = hit->t;
                 if (first_state)
                     *first_state = hit_raster(sc, hit);
-                memcpy(rgba, layers[0], 4 * sizeof(float));
                 return;
             }
-            layer_state[n++] = NULL; /* opaque: what lies behind is hidden */
+            if (ls.n == ls.cap && !layers_grow(&ls))
+                break;
+            shade_hit(sc, org, dir, hit, cone, 0, ls.l[ls.n].rgba);
+            ls.l[ls.n++].state = NULL; /* opaque: what lies behind is hidden */
             break;
         }
         /* A see-through surface: every other triangle at exactly its
          * distance (coplanar translucent surfaces) is a fragment of its
          * own, which GL blends in the order the triangles were drawn;
-         * trace_scene_closest gave the first of them in that order.  The
-         * group is bounded: a pixel covered by more coincident triangles
-         * than a ray composites keeps the first drawn. */
-        g.count = 1 + trace_scene_ties(sc->scene, org, dir, hit, &g.hit[1],
-                                       BLEND_MAX_LAYERS - 1, sc->counters);
+         * trace_scene_closest gave the first of them in that order. */
+        group_ties(sc, org, dir, &g);
         for (int i = 0; i < g.count; i++)
             shade_fragment(sc, org, dir, cone, &g, i);
         /* Front to back: the last drawn lies over the others; a fragment
          * that hides what lies behind it ends the ray. */
         for (int i = g.count - 1; i >= 0; i--) {
-            if (!g.kept[i])
+            const struct fragment *f = &g.f[i];
+            if (!f->kept)
                 continue;
-            if (n == 0) {
+            if (ls.n == ls.cap && !layers_grow(&ls)) {
+                done = 1;
+                break;
+            }
+            if (ls.n == 0) {
                 *t_first = g.hit[i].t;
                 if (first_state)
-                    *first_state = g.raster[i];
+                    *first_state = f->raster;
             }
-            memcpy(layers[n], g.rgba[i], sizeof(layers[n]));
-            layer_state[n++] = g.state[i];
-            if (g.stops[i] || n == BLEND_MAX_LAYERS) {
+            memcpy(ls.l[ls.n].rgba, f->rgba, sizeof(ls.l[ls.n].rgba));
+            ls.l[ls.n++].state = f->state;
+            if (f->stops) {
                 done = 1;
                 break;
             }
@@ -292,13 +449,19 @@ void blend_trace_primary_state(const struct shade_context *sc, const float org[3
      * blends surfaces drawn from the back to the front. */
     float c[4];
     memcpy(c, sc->state->clear_color, sizeof(c));
-    for (int i = n - 1; i >= 0; i--) {
-        const struct scene_raster *r = layer_state[i];
+    for (int i = ls.n - 1; i >= 0; i--) {
+        const struct scene_raster *r = ls.l[i].state;
         if (!r) {
-            memcpy(c, layers[i], sizeof(c));
+            memcpy(c, ls.l[i].rgba, sizeof(c));
             continue;
         }
-        blend_combine(r->blend_src, r->blend_dst, layers[i], c, c);
+        blend_combine(r->blend_src, r->blend_dst, ls.l[i].rgba, c, c);
     }
     memcpy(rgba, c, sizeof(c));
+    if (ls.heap)
+        rt_free(ls.l);
+    if (g.heap) {
+        rt_free(g.hit);
+        rt_free(g.f);
+    }
 }

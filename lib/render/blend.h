@@ -16,8 +16,9 @@
 
 #include "render/shade.h"
 
-/* Layers a primary ray composites at most; the deepest one found is
- * composited over the clear colour as if it were the last. */
+/* Layers and coincident fragments a primary ray keeps without
+ * allocating; a pixel with more takes heap arrays, grown as needed (no
+ * fixed cap: bounded by memory, the first drawn kept when it runs out). */
 #define BLEND_MAX_LAYERS 32
 
 /* out = src * F_src + dst * F_dst per channel with GL's factors (OpenGL

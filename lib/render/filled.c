@@ -1,27 +1,15 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * filled.c - secondary rays and queries pass the faces drawn as lines or
- * points (filled.h).
- *
- * The walks are those of the camera rays (gl_shade.c's gl_closest_drawn):
- * a hit on a face not filled is replaced by the next triangle at exactly
- * its t in draw order (trace_scene_ties: a filled surface in the plane of
- * an outlined one is met), then by the closest hit past it, tmin moved to
- * the next float above t (the same triangle, whose t for this ray is
- * computed by the same operations every time, is never found again).
+ * filled.c - which face of a hit a ray meets, and whether it is filled
+ * (filled.h).  The walk that passes the faces not filled is the hit
+ * filter of the trace layer (render/secondary.c, trace/scene_filter.h):
+ * it skips a rejected triangle inside the walk, so a filled surface in
+ * the plane of an outlined one is met.
  */
 #include "render/filled.h"
 
-#include <math.h>
-
 #include "base/mat4.h"
 #include "render/raster.h"
-#include "trace/scene_ties.h"
-
-/* Faces passed before a ray gives up (a miss): as gl_shade.c. */
-#define FILLED_MAX_PASSED 256
-/* Coincident hits fetched per walk of trace_scene_ties. */
-#define FILLED_TIES 8
 
 int filled_frame_has_unfilled(const struct scene_frame *frame)
 {
@@ -71,46 +59,3 @@ int filled_face(const struct scene_frame *frame, const struct trace_scene *scene
 
 /* The first triangle after `hit` at exactly its t, in (instance, prim)
  * order, whose face is filled: 1 with it in *hit, else 0. */
-static int filled_tie(const struct scene_frame *frame, const struct trace_scene *scene,
-                      const float org[3], const float dir[3], struct trace_scene_hit *hit,
-                      struct trace_scene_counters *counters)
-{
-    struct trace_scene_hit ties[FILLED_TIES], after = *hit;
-    for (int walk = 0; walk * FILLED_TIES < FILLED_MAX_PASSED; walk++) {
-        const int n = trace_scene_ties(scene, org, dir, &after, ties, FILLED_TIES, counters);
-        for (int i = 0; i < n; i++)
-            if (filled_face(frame, scene, dir, &ties[i])) {
-                *hit = ties[i];
-                return 1;
-            }
-        if (n < FILLED_TIES)
-            break;
-        after = ties[n - 1];
-    }
-    return 0;
-}
-
-int filled_closest(const struct scene_frame *frame, const struct trace_scene *scene,
-                   const float org[3], const float dir[3], float tmin, float tmax,
-                   struct trace_scene_hit *hit, struct trace_scene_counters *counters)
-{
-    for (int i = 0; i <= FILLED_MAX_PASSED; i++) {
-        if (!trace_scene_closest(scene, org, dir, tmin, tmax, hit, counters))
-            return 0;
-        if (filled_face(frame, scene, dir, hit) ||
-            filled_tie(frame, scene, org, dir, hit, counters))
-            return 1;
-        tmin = nextafterf(hit->t, INFINITY);
-    }
-    return 0;
-}
-
-int filled_any(const struct scene_frame *frame, const struct trace_scene *scene,
-               const float org[3], const float dir[3], float tmin, float tmax,
-               struct trace_scene_counters *counters)
-{
-    /* Any filled hit: the closest filled one is one, and a frame without
-     * unfilled faces never comes here (trace_scene_any then). */
-    struct trace_scene_hit hit;
-    return filled_closest(frame, scene, org, dir, tmin, tmax, &hit, counters);
-}

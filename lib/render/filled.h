@@ -7,9 +7,9 @@
  * its inside is no surface.  Camera rays pass such faces (gl_shade.c) and
  * polygons with both faces so are stored as lines only, which no ray
  * meets; the triangles kept for a per-face mode are passed here too by
- * every other ray at the face it meets, so that a polygon drawn as lines
- * casts no shadow, reflects nothing and answers no query whichever way it
- * was stored.  Culling is not applied: RT_CULL_FACE is for camera rays only
+ * every other ray at the face it meets (render/secondary.h's hit filter,
+ * SECONDARY_UNFILLED), so that a polygon drawn as lines casts no shadow,
+ * reflects nothing and answers no query whichever way it was stored.  Culling is not applied: RT_CULL_FACE is for camera rays only
  * (docs/appearance.md), so a culled face that is filled is seen.
  */
 #ifndef RT_RENDER_FILLED_H
@@ -27,15 +27,5 @@ int filled_frame_has_unfilled(const struct scene_frame *frame);
  * filled, with the modes the triangle records or takes from its call. */
 int filled_face(const struct scene_frame *frame, const struct trace_scene *scene,
                 const float dir[3], const struct trace_scene_hit *hit);
-
-/* trace_scene_closest and trace_scene_any (tmin <= t < tmax) that pass
- * the faces not filled: the hits, bit for bit, of the unfiltered walks
- * when every face met is filled. */
-int filled_closest(const struct scene_frame *frame, const struct trace_scene *scene,
-                   const float org[3], const float dir[3], float tmin, float tmax,
-                   struct trace_scene_hit *hit, struct trace_scene_counters *counters);
-int filled_any(const struct scene_frame *frame, const struct trace_scene *scene,
-               const float org[3], const float dir[3], float tmin, float tmax,
-               struct trace_scene_counters *counters);
 
 #endif

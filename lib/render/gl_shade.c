@@ -143,7 +143,7 @@ static int drawn_tie(const struct shade_context *sc, const float org[3], const f
     struct trace_scene_hit ties[GL_SHADE_TIES], after = *hit;
     for (int walk = 0; walk * GL_SHADE_TIES < GL_SHADE_MAX_CULLED; walk++) {
         const int n =
-            trace_scene_ties(sc->scene, org, dir, &after, ties, GL_SHADE_TIES, sc->counters);
+            trace_scene_ties(sc->scene, org, dir, &after, ties, GL_SHADE_TIES, NULL, sc->counters);
         for (int i = 0; i < n; i++)
             if (gl_hit_drawn(sc, dir, &ties[i])) {
                 *hit = ties[i];

@@ -14,6 +14,7 @@
 #include "render/blend.h"
 #include "render/filled.h"
 #include "render/overlay.h"
+#include "render/secondary.h"
 #include "render/raster.h"
 #include "render/shade.h"
 #include "render/surface.h"
@@ -126,6 +127,8 @@ static void shared_finish(struct render_pass *sh, struct render_stats *stats)
     stats->object_builds += sh->builds;
     stats->build_ms += (double)sh->build_us / 1000.0;
     rt_free(sh->counters);
+    rt_free(sh->secondary);
+    sh->secondary = NULL;
 }
 
 /* The near- and far-plane points under viewport position (x, y), in
@@ -390,7 +393,18 @@ int render_pass_begin(struct render_pass *pass, const struct render_job *job, in
     }
     pass->clipping = frame_has_clip(job->frame);
     pass->see_through = frame_has_see_through(job->frame);
-    pass->unfilled = filled_frame_has_unfilled(job->frame);
+    /* Only Whitted shading traces shadow, reflected and refracted rays;
+     * they pass what clip planes, the alpha test, see-through blending and
+     * faces drawn as lines or points take out of the picture. */
+    if (st->shading == RENDER_WHITTED &&
+        (pass->clipping || pass->see_through || filled_frame_has_unfilled(job->frame)) &&
+        secondary_marks(job->frame,
+                        SECONDARY_CLIP | SECONDARY_ALPHA | SECONDARY_BLEND | SECONDARY_UNFILLED,
+                        &pass->secondary)) {
+        rt_free(fb);
+        rt_free(pass->counters);
+        return -1;
+    }
     if (frame_has_lines(job->frame)) {
         pass->depth = rt_malloc((pixels ? pixels : 1) * sizeof(*pass->depth));
         if (!pass->depth) {
@@ -513,7 +527,10 @@ void render_tile(struct render_pass *pass, uint32_t tile, int worker)
                                pass->see_through,
                                NULL,
                                &cache_entry,
-                               pass->unfilled};
+                               NULL,
+                               NULL};
+    struct secondary_scenes secondary;
+    secondary_scenes_init(&secondary, &sc, &pass->scene, pass->secondary);
     const int *vp = st->viewport;
     int x0 = (int)(tile % (uint32_t)pass->tiles_x) * RENDER_TILE_SIZE;
     int y0 = (int)(tile / (uint32_t)pass->tiles_x) * RENDER_TILE_SIZE;
@@ -780,10 +797,9 @@ static void query_task(void *arg, int worker)
 {
     struct render_pass *sh = arg;
     struct trace_scene_counters *counters = &sh->counters[worker].c;
-    /* Faces drawn as lines or points are passed (render/filled.h) by the
-     * single-ray walks; packets only when the frame has none. */
-    const int packets = sh->scene.kernels && sh->scene.kernels->closest_packet && !sh->unfilled;
-    const struct scene_frame *frame = sh->job->frame;
+    /* Packets walk without the hit filter: a frame with clip planes
+     * traces its queries ray by ray. */
+    const int packets = sh->scene.kernels && sh->scene.kernels->closest_packet && !sh->secondary;
     for (;;) {
         uint32_t item = rt_atomic_fetch_add_relaxed(&sh->next_item, 1);
         size_t first = (size_t)item * RENDER_QUERY_CHUNK;
@@ -802,19 +818,14 @@ static void query_task(void *arg, int worker)
             }
             if (sh->occluded) {
                 sh->occluded[i] =
-                    (RTboolean)(sh->unfilled ? filled_any(frame, &sh->scene, r->org, r->dir,
-                                                          r->tmin, r->tmax, counters)
-                                             : trace_scene_any(&sh->scene, r->org, r->dir,
-                                                               r->tmin, r->tmax, counters));
+                    (RTboolean)trace_scene_any(&sh->scene, r->org, r->dir, r->tmin, r->tmax,
+                                               counters);
                 continue;
             }
             struct trace_scene_hit h;
             RThit *out = &sh->hits[i];
-            const int found = sh->unfilled ? filled_closest(frame, &sh->scene, r->org, r->dir,
-                                                            r->tmin, r->tmax, &h, counters)
-                                           : trace_scene_closest(&sh->scene, r->org, r->dir,
-                                                                 r->tmin, r->tmax, &h, counters);
-            if (!found) {
+            if (!trace_scene_closest(&sh->scene, r->org, r->dir, r->tmin, r->tmax, &h,
+                                     counters)) {
                 miss(out);
                 continue;
             }
@@ -833,7 +844,19 @@ static int run_queries(const struct render_job *job, int count, const RTray *ray
     sh.rays = rays;
     sh.hits = hits;
     sh.occluded = occluded;
-    sh.unfilled = filled_frame_has_unfilled(job->frame);
+    /* What the user clip planes remove is not there for a query either,
+     * nor the inside of a face drawn as lines or points
+     * (render/secondary.h). */
+    if (frame_has_clip(job->frame) || filled_frame_has_unfilled(job->frame)) {
+        if (secondary_marks(job->frame, SECONDARY_CLIP | SECONDARY_UNFILLED, &sh.secondary)) {
+            rt_free(sh.counters);
+            return -1;
+        }
+        sh.scene.filtered = sh.secondary;
+        sh.scene.filter_mask = SECONDARY_CLIP | SECONDARY_UNFILLED;
+        sh.scene.accept = secondary_accept_query;
+        sh.scene.accept_user = &sh;
+    }
     /* One chunk needs no helpers: avoid waking the pool for tiny batches. */
     rt_pool_run(count > RENDER_QUERY_CHUNK ? job->pool : NULL, query_task, &sh);
     int failed = sh.failed;

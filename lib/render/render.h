@@ -132,7 +132,6 @@ struct render_pass {
     int projectable;     /* the projection could be inverted */
     int clipping;        /* some instance has clip planes (frame_has_clip) */
     int see_through;     /* some instance blends or alpha-tests (frame_has_see_through) */
-    int unfilled;        /* some face may be drawn as lines or points (render/filled.h) */
     double inv_projection[16];
     float *fb;           /* the image being rendered, fb_width x fb_height */
     int fb_width, fb_height;
@@ -145,6 +144,9 @@ struct render_pass {
      * raster state of each pixel's primary hit (NULL for none), whose
      * offset raster_depth_offset applies; else NULL. */
     const struct scene_raster **depth_state;
+    /* NULL, or the instances whose hits secondary rays (frames) or
+     * queries check (render/secondary.h). */
+    uint8_t *secondary;
     /* Queries. */
     int count;
     const RTray *rays;

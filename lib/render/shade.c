@@ -22,7 +22,6 @@
 #include <string.h>
 
 #include "base/mat4.h"
-#include "render/filled.h"
 #include "render/gl_light.h"
 #include "render/gl_shade.h"
 #include "render/surface.h"
@@ -96,11 +95,7 @@ static void local_whitted(const struct shade_context *sc, const struct surface *
         float n_dot_l = vec3_dot(s->n, to_light);
         if (n_dot_l <= 0.0f || vec3_dot(s->ng, to_light) <= 0.0f)
             continue;
-        /* Faces drawn as lines or points cast no shadow (filled.h). */
-        if (sc->unfilled ? filled_any(sc->frame, sc->scene, origin, shadow_dir, 0.0f, shadow_tmax,
-                                      sc->counters)
-                         : trace_scene_any(sc->scene, origin, shadow_dir, 0.0f, shadow_tmax,
-                                           sc->counters))
+        if (trace_scene_any(sc->shadows, origin, shadow_dir, 0.0f, shadow_tmax, sc->counters))
             continue;
         add_scaled(c, light->diffuse, s->diffuse, attenuation * n_dot_l);
         float h[3] = {to_light[0] + view[0], to_light[1] + view[1], to_light[2] + view[2]};
@@ -139,14 +134,11 @@ void shade_ray(const struct shade_context *sc, const float org[3], const float d
                float tmax, struct shade_cone cone, int depth, float rgba[4])
 {
     struct trace_scene_hit hit;
-    /* Reflected and refracted rays see every filled face, culled or not
-     * (filled.h); camera rays, which skip the faces RT_CULL_FACE removes,
-     * go through render/blend.c. */
-    const int found = sc->unfilled ? filled_closest(sc->frame, sc->scene, org, dir, 0.0f, tmax,
-                                                    &hit, sc->counters)
-                                   : trace_scene_closest(sc->scene, org, dir, 0.0f, tmax, &hit,
-                                                         sc->counters);
-    if (!found) {
+    /* Reflected and refracted rays see every face; camera rays, which
+     * skip the faces RT_CULL_FACE removes, go through render/blend.c.
+     * Surfaces clipped away or failing their alpha test are not there
+     * (sc->rays, render/secondary.h). */
+    if (!trace_scene_closest(sc->rays, org, dir, 0.0f, tmax, &hit, sc->counters)) {
         memcpy(rgba, sc->state->clear_color, 4 * sizeof(float));
         return;
     }

@@ -29,10 +29,11 @@ struct shade_context {
      * triangle alone (surface.h, surface_cache): writable through a
      * const context, as it only remembers results. */
     struct surface_cache *cache;
-    /* Some instance may show a face drawn as lines or points
-     * (filled_frame_has_unfilled): only then do shadow, reflected and
-     * refracted rays take render/filled.c's walks, which pass them. */
-    int unfilled;
+    /* What shadow rays and reflected or refracted rays trace: `scene`
+     * with the filter of render/secondary.h when the frame has clip
+     * planes, alpha test or blending, else `scene` itself. */
+    const struct trace_scene *shadows;
+    const struct trace_scene *rays;
 };
 
 struct shade_primed {

@@ -34,19 +34,26 @@ static int test_slot(const struct trace_flat *flat, const struct trace_instance 
     const float limit = *r->found ? isect_next_up(*r->best) : *r->best;
     if (!isect_triangle(o_ray, v, v + 3, v + 6, limit, &t, &u, &w))
         return 0;
-    if (!r->hit) {
-        *r->found = 1;
-        return 1;
-    }
     const uint32_t prim = flat->prim[slot];
     struct trace_scene_hit *hit = r->hit;
-    if (*r->found && !(t < *r->best)) {
+    if (hit && *r->found && !(t < *r->best)) {
         /* t equals the best (limit is one ulp above it): the lower
          * instance id, then the lower primitive wins, as in the instance
          * path (lexicographic (t, instance, primitive)). */
         const uint32_t best_id = instances[hit->instance].instance_id;
         if (!(mi->instance_id < best_id || (mi->instance_id == best_id && prim < hit->prim)))
             return 0;
+    }
+    /* The scene's hit filter, for the members it marks (scene_traverse.h). */
+    const struct trace_scene *f = r->filter;
+    if (f && (f->filtered[mi->instance_id] & f->filter_mask)) {
+        const struct trace_scene_hit cand = {t, u, w, prim, group->member_base + member};
+        if (!f->accept(f->accept_user, r->org, r->dir, &cand))
+            return 0;
+    }
+    if (!hit) {
+        *r->found = 1;
+        return 1;
     }
     *r->found = 1;
     *r->best = t;

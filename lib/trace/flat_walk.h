@@ -48,6 +48,9 @@ struct trace_flat_ray {
     float *box_limit;
     int *found;
     struct trace_scene_hit *hit; /* NULL for any hit */
+    /* NULL, or the scene whose hit filter (trace_scene.accept) applies to
+     * the members it marks. */
+    const struct trace_scene *filter;
 };
 
 /* Walks group (a top-level slot with member_count > 0) for one ray;

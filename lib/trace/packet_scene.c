@@ -62,7 +62,7 @@ static void visit_group(struct packet_top *s, const struct trace_instance *group
         int found = s->found >> r & 1u;
         struct trace_flat_ray fr = {s->p->org[r], s->p->dir[r], s->p->tmin[r], &s->ray[r],
                                     &s->best[r], &s->box_limit[r], &found,
-                                    s->any_hit ? NULL : &s->hits[r]};
+                                    s->any_hit ? NULL : &s->hits[r], NULL};
         if (trace_flat_walk(&flat, scene->instances, group, &fr, s->counters))
             s->done |= 1u << r;
         if (found)

@@ -8,17 +8,53 @@
  * trace_triangle finds it with t <= t' < next float above t, i.e. at t.
  * These are the tests the closest-hit walk makes (trace.h: every kernel
  * gives trace_triangle's answer), so the set of triangles at t is the
- * same for both.  No order of visits is needed: the hits are kept in a
- * small array sorted by (instance, prim).
+ * same for both.  No order of visits is needed: the hits are appended
+ * and sorted by (instance, prim) once at the end (n log n for thousands
+ * of coincident triangles); only when more than `max` come are they
+ * sorted early and the max smallest kept by insertion.
  */
 #include "trace/scene_ties.h"
 
 #include <math.h>
+#include <stdlib.h>
 
-/* The sorted insertion of one candidate into out[0..*n), keeping the max
- * smallest keys. */
-static void keep(struct trace_scene_hit *out, int *n, int max, const struct trace_scene_hit *h)
+/* The hits kept so far: out[0 .. n), sorted when `sorted`; total counts
+ * every candidate. */
+struct tie_set {
+    struct trace_scene_hit *out;
+    int n, max, sorted, total;
+};
+
+static int compare_hits(const void *pa, const void *pb)
 {
+    const struct trace_scene_hit *a = pa, *b = pb;
+    if (a->instance != b->instance)
+        return a->instance < b->instance ? -1 : 1;
+    return a->prim < b->prim ? -1 : a->prim > b->prim;
+}
+
+static void sort_set(struct tie_set *s)
+{
+    if (!s->sorted)
+        qsort(s->out, (size_t)s->n, sizeof(*s->out), compare_hits);
+    s->sorted = 1;
+}
+
+/* One candidate: appended while there is room, else (sorted first) the
+ * sorted insertion keeping the max smallest keys.  The keys are unique
+ * (a triangle is found once), so the result does not depend on the
+ * order of arrival. */
+static void keep(struct tie_set *s, const struct trace_scene_hit *h)
+{
+    s->total++;
+    if (s->n < s->max && !s->sorted) {
+        s->out[s->n++] = *h;
+        return;
+    }
+    sort_set(s);
+    struct trace_scene_hit *out = s->out;
+    int *n = &s->n;
+    const int max = s->max;
     int i = *n;
     if (i == max) {
         const struct trace_scene_hit *last = &out[max - 1];
@@ -40,8 +76,7 @@ static void keep(struct trace_scene_hit *out, int *n, int max, const struct trac
 /* Every triangle of one object the ray meets at exactly t. */
 static void object_ties(const struct trace_object_view *view, const struct trace_ray *o_ray,
                         float t, uint32_t index, const struct trace_scene_hit *after,
-                        struct trace_scene_hit *out, int *n, int max,
-                        struct trace_scene_counters *counters)
+                        struct tie_set *set, struct trace_scene_counters *counters)
 {
     const struct bvh *bvh = view->bvh;
     if (!bvh || bvh->node_count == 0)
@@ -72,22 +107,24 @@ static void object_ties(const struct trace_object_view *view, const struct trace
             h.instance = index;
             if (index == after->instance && h.prim <= after->prim)
                 continue;
-            keep(out, n, max, &h);
+            keep(set, &h);
         }
     }
 }
 
 int trace_scene_ties(const struct trace_scene *scene, const float org[3], const float dir[3],
                      const struct trace_scene_hit *after, struct trace_scene_hit *out, int max,
-                     struct trace_scene_counters *counters)
+                     int *total, struct trace_scene_counters *counters)
 {
     const struct bvh *top = scene->top;
     const float t = after->t;
+    if (total)
+        *total = 0;
     if (max <= 0 || !top || top->node_count == 0 || !isfinite(t))
         return 0;
     struct trace_ray world;
     trace_ray_init(&world, org, dir, t);
-    int n = 0;
+    struct tie_set set = {out, 0, max, 0, 0};
     uint32_t stack[BVH_MAX_DEPTH + 1];
     int sp = 0;
     stack[sp++] = 0;
@@ -114,8 +151,11 @@ int trace_scene_ties(const struct trace_scene *scene, const float org[3], const 
             if (!scene->acquire(scene->user, inst->object, &view) ||
                 !trace_scene_object_ray(inst, org, dir, t, &world, &o_ray))
                 continue;
-            object_ties(&view, &o_ray, t, index, after, out, &n, max, counters);
+            object_ties(&view, &o_ray, t, index, after, &set, counters);
         }
     }
-    return n;
+    sort_set(&set);
+    if (total)
+        *total = set.total;
+    return set.n;
 }

@@ -16,7 +16,9 @@
 /*
  * The hits at exactly `after->t` whose (instance, prim) comes after
  * after's, in increasing (instance, prim) order: the `max` first of them
- * go to out[], and the number stored is returned (0 to max).  Each t is
+ * go to out[], and the number stored is returned (0 to max); *total (when
+ * not NULL) receives how many there are, so that a caller that wants
+ * them all can make room and ask once more.  Each t is
  * the one trace_scene_closest computes for that triangle, bit for bit
  * (the same object ray, box and triangle tests), so a triangle is either
  * one of these ties or lies at another distance, never both.  One walk of
@@ -25,6 +27,6 @@
  */
 int trace_scene_ties(const struct trace_scene *scene, const float org[3], const float dir[3],
                      const struct trace_scene_hit *after, struct trace_scene_hit *out, int max,
-                     struct trace_scene_counters *counters);
+                     int *total, struct trace_scene_counters *counters);
 
 #endif

@@ -7,6 +7,7 @@
 #include "base/atomic.h"
 #include "trace/flat_walk.h"
 #include "trace/intersect.h"
+#include "trace/scene_filter.h"
 
 #include <math.h>
 #include <stddef.h>
@@ -95,8 +96,53 @@ static int visit_group(struct top_state *s, const struct trace_instance *group)
     if (!scene->acquire_flat || !scene->acquire_flat(scene->user, group->object, &flat))
         return 0;
     struct trace_flat_ray r = {s->org, s->dir, s->tmin, &s->ray, &s->best, &s->box_limit,
-                               &s->found, s->any_hit ? NULL : s->hit};
+                               &s->found, s->any_hit ? NULL : s->hit,
+                               scene->filtered ? scene : NULL};
     return trace_flat_walk(&flat, scene->instances, group, &r, s->counters);
+}
+
+/* Keeps an instance's closest hit h (slot `index`) when it comes before
+ * the best so far.  Ties between instances go to the lower instance, as
+ * ties inside an object go to the lower primitive: hits do not depend on
+ * the top-level tree nor on the order of visits (an instance's hit at the
+ * current best still comes back, with the limit one ulp above it, and
+ * then the lower index wins).  The index compared is the instance id (the
+ * order of the committed list), which slots follow except for a
+ * flattened hierarchy's members (flat_walk.h). */
+static void keep_hit(struct top_state *s, uint32_t index, const struct trace_hit *h)
+{
+    const struct trace_instance *inst = &s->scene->instances[index];
+    struct trace_scene_hit *hit = s->hit;
+    if (!s->found || h->t < s->best || inst->instance_id < trace_scene_hit_id(s->scene, hit)) {
+        s->best = h->t;
+        s->box_limit = s->best * ISECT_BOX_FAR_SCALE;
+        s->found = 1;
+        hit->t = h->t;
+        hit->u = h->u;
+        hit->v = h->v;
+        hit->prim = h->prim;
+        hit->instance = index;
+    }
+}
+
+/*
+ * The hit filter's part of an instance it marks (trace_scene.filtered),
+ * after the kernel's closest-hit walk found h (for an any-hit walk too):
+ * the kernel's closest hit, when accepted, is the closest accepted (the
+ * same triangle test, the same tie rule, scene_filter.h), and an
+ * accepted hit ends an any-hit walk; else the triangles one by one.  So a
+ * marked instance costs the kernel's walk alone for the rays that miss it
+ * or whose nearest hit stays.
+ */
+static int filter_hits(struct top_state *s, uint32_t index, const struct trace_object_view *view,
+                       const struct trace_ray *o_ray, float limit, struct trace_hit *h)
+{
+    const struct trace_scene *scene = s->scene;
+    const struct trace_scene_hit cand = {h->t, h->u, h->v, h->prim, index};
+    if (scene->accept(scene->accept_user, s->org, s->dir, &cand))
+        return 1;
+    const struct trace_filter_ray fr = {scene, s->org, s->dir, index, s->any_hit};
+    return trace_filter_object(view, o_ray, limit, &fr, h, &s->counters->object);
 }
 
 /* The instance in slot `index` of scene->instances.  Returns 1 when an
@@ -116,6 +162,10 @@ static int visit_instance(struct top_state *s, uint32_t index)
     struct trace_ray o_ray;
     if (!trace_scene_object_ray(inst, s->org, s->dir, s->tmin, &s->ray, &o_ray))
         return 0;
+    /* An instance the scene's hit filter applies to (filter_hits); a
+     * frame without one pays this test only. */
+    const int filtered =
+        scene->filtered && (scene->filtered[inst->instance_id] & scene->filter_mask);
     /* The wide walk where the table has one and the object a wide
      * layout: the same answers (kernels.h). */
     const int wide = view.wide && view.wide->node_count && kernels->closest4;
@@ -123,7 +173,7 @@ static int visit_instance(struct top_state *s, uint32_t index)
      * the root's (the root box for the binary walk, the root's children
      * for a wide one). */
     const uint64_t tests_before = counters->object.node_tests;
-    if (s->any_hit) {
+    if (s->any_hit && !filtered) {
         int got = wide ? kernels->any4(view.wide, view.bvh, view.tri, &o_ray, s->best,
                                        &counters->object)
                        : kernels->any(view.bvh, view.tri, &o_ray, s->best, &counters->object);
@@ -132,13 +182,7 @@ static int visit_instance(struct top_state *s, uint32_t index)
                                    wide ? view.wide->width : 1, 1);
         return got;
     }
-    /* Ties between instances go to the lower instance, as ties inside an
-     * object go to the lower primitive: hits do not depend on the
-     * top-level tree nor on the order of visits (an instance's hit at
-     * the current best still comes back, with the limit one ulp above
-     * it, and then the lower index wins).  The index compared is the
-     * instance id (the order of the committed list), which slots follow
-     * except for a flattened hierarchy's members (flat_walk.h). */
+    /* The tie rule is keep_hit's. */
     float limit = s->found ? isect_next_up(s->best) : s->best;
     struct trace_hit h;
     int got = wide ? kernels->closest4(view.wide, view.bvh, view.tri, &o_ray, limit, &h,
@@ -147,18 +191,12 @@ static int visit_instance(struct top_state *s, uint32_t index)
     if (view.ray_count)
         trace_scene_count_rays(counters, view.ray_count, tests_before,
                                    wide ? view.wide->width : 1, 1);
-    struct trace_scene_hit *hit = s->hit;
-    if (got && (!s->found || h.t < s->best ||
-                inst->instance_id < trace_scene_hit_id(scene, hit))) {
-        s->best = h.t;
-        s->box_limit = s->best * ISECT_BOX_FAR_SCALE;
-        s->found = 1;
-        hit->t = h.t;
-        hit->u = h.u;
-        hit->v = h.v;
-        hit->prim = h.prim;
-        hit->instance = index;
-    }
+    if (got && filtered)
+        got = filter_hits(s, index, &view, &o_ray, limit, &h);
+    if (s->any_hit)
+        return got;
+    if (got)
+        keep_hit(s, index, &h);
     return 0;
 }
 

@@ -40,6 +40,18 @@ struct trace_instance {
 };
 
 struct trace_flat;
+struct trace_scene_hit;
+
+/*
+ * An optional filter of hits: called, with the world ray, for each hit
+ * of a filtered instance (trace_scene.filtered) that the walk would keep
+ * (the closest so far, or an any-hit walk's hit); 0 rejects it and the
+ * walk goes on as if that triangle were not there.  The renderer removes
+ * so what GL's per-primitive state removed from the picture (clip planes,
+ * alpha test) from secondary rays and queries (render/secondary.h).
+ */
+typedef int (*trace_accept_fn)(void *user, const float org[3], const float dir[3],
+                               const struct trace_scene_hit *hit);
 
 struct trace_object_view {
     const struct bvh *bvh;
@@ -72,6 +84,15 @@ struct trace_scene {
     /* Fills *flat for a flattened hierarchy's object (trace_instance);
      * 0 when it cannot be had (the group is skipped). */
     int (*acquire_flat)(void *user, void *object, struct trace_flat *flat);
+    /* NULL: every hit counts (no cost).  Else an instance whose
+     * filtered[instance_id] & filter_mask is not 0 has its triangles
+     * tested one by one against accept (trace/scene_filter.h), giving
+     * the closest accepted hit with the walk's tie rule; the others are
+     * walked as without a filter. */
+    const uint8_t *filtered;
+    uint8_t filter_mask;
+    trace_accept_fn accept;
+    void *accept_user;
 };
 
 struct trace_scene_hit {
