@@ -518,9 +518,6 @@ static void texgen(void)
     rtDisable(RT_TEXTURE_2D);
     rtDeleteTextures(1, &tex);
     CHECK_NO_ERR();
-    rtTexGeni(RT_R, RT_TEXTURE_GEN_MODE, RT_OBJECT_LINEAR);
-    CHECK_ERR(RT_INVALID_ENUM);
-    CHECK(message_has("RT_R"));
     rtTexGenf(RT_S, RT_OBJECT_PLANE, 1.0f);
     CHECK_ERR(RT_INVALID_ENUM);
     rtTexGeni(RT_T, RT_TEXTURE_GEN_MODE, RT_LINEAR);
@@ -600,7 +597,66 @@ static void texgen_q(void)
     rtTexGeni(RT_Q, RT_TEXTURE_GEN_MODE, RT_SPHERE_MAP);
     CHECK_ERR(RT_INVALID_ENUM);
     CHECK(message_has("RT_Q"));
+}
+
+/* rtTexGen(RT_R): GL keeps r's generation (mode, planes, enable) as it
+ * keeps s's, and a 2D texture never reads r (GL 1.1 sec. 3.8), so a
+ * program that sets it up (for a 3D or cube-map texture GL 1.x programs
+ * fall back from) draws as without it; the sphere map is refused for r,
+ * as Mesa refuses it. */
+static void texgen_r(void)
+{
+    tu_section("rtTexGen(RT_R): kept, enabled, stacked; a 2D texture does not read r");
+    static const unsigned char texels[8] = {255, 0, 0, 255, 0, 255, 0, 255}; /* red, green */
+    static const float s_plane[4] = {0.0f, 0.0f, 0.0f, 0.75f};
+    static const float r_plane[4] = {0.3f, -0.2f, 0.1f, 0.5f};
+    RTuint tex = 0;
+    reset();
+    rtGenTextures(1, &tex);
+    rtBindTexture(RT_TEXTURE_2D, tex);
+    rtTexParameteri(RT_TEXTURE_2D, RT_TEXTURE_MIN_FILTER, RT_NEAREST);
+    rtTexParameteri(RT_TEXTURE_2D, RT_TEXTURE_MAG_FILTER, RT_NEAREST);
+    rtTexImage2D(RT_TEXTURE_2D, 0, RT_RGBA, 2, 1, 0, RT_RGBA, RT_UNSIGNED_BYTE, texels);
+    rtEnable(RT_TEXTURE_2D);
+    rtTexGeni(RT_S, RT_TEXTURE_GEN_MODE, RT_OBJECT_LINEAR);
+    rtTexGenfv(RT_S, RT_OBJECT_PLANE, s_plane);
+    rtEnable(RT_TEXTURE_GEN_S);
+    rtNewObject(OBJ);
+    square(-5, 1);
+    rtEndObject();
+    render_obj();
+    CHECK_RGB(pixel(1, 1), 0, 1, 0);
+    CHECK(!rtIsEnabled(RT_TEXTURE_GEN_R));
+    rtTexGeni(RT_R, RT_TEXTURE_GEN_MODE, RT_OBJECT_LINEAR);
+    rtTexGenfv(RT_R, RT_OBJECT_PLANE, r_plane);
     rtTexGeni(RT_R, RT_TEXTURE_GEN_MODE, RT_EYE_LINEAR);
+    rtTexGenfv(RT_R, RT_EYE_PLANE, r_plane);
+    rtEnable(RT_TEXTURE_GEN_R);
+    CHECK_NO_ERR();
+    CHECK(rtIsEnabled(RT_TEXTURE_GEN_R));
+    render_obj();
+    CHECK_RGB(pixel(1, 1), 0, 1, 0);
+    CHECK_RGB(pixel(3, 3), 0, 1, 0);
+    /* Recorded in a list, and kept by the attribute stack. */
+    rtDisable(RT_TEXTURE_GEN_R);
+    rtNewObject(OBJ + 1);
+    rtEnable(RT_TEXTURE_GEN_R);
+    rtEndObject();
+    CHECK(!rtIsEnabled(RT_TEXTURE_GEN_R));
+    rtPushAttrib(RT_ENABLE_BIT);
+    rtInstantiateObject(OBJ + 1);
+    CHECK(rtIsEnabled(RT_TEXTURE_GEN_R));
+    rtPopAttrib();
+    CHECK(!rtIsEnabled(RT_TEXTURE_GEN_R));
+    rtDeleteObjects(1, &(RTuint){OBJ + 1});
+    rtDisable(RT_TEXTURE_GEN_S);
+    rtDisable(RT_TEXTURE_2D);
+    rtDeleteTextures(1, &tex);
+    CHECK_NO_ERR();
+    rtTexGeni(RT_R, RT_TEXTURE_GEN_MODE, RT_SPHERE_MAP);
+    CHECK_ERR(RT_INVALID_ENUM);
+    CHECK(message_has("RT_R"));
+    rtTexGeni(RT_TEXTURE_GEN_R, RT_TEXTURE_GEN_MODE, RT_EYE_LINEAR);
     CHECK_ERR(RT_INVALID_ENUM);
 }
 
@@ -696,6 +752,7 @@ int main(void)
     texcoord4();
     texgen();
     texgen_q();
+    texgen_r();
     whitted_spot();
     tu_destroy_context(ctx);
     return test_summary("fixed_function");

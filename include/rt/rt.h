@@ -301,7 +301,7 @@ typedef struct rt_context *RTcontext;
 /* rtTexGen (docs/textures.md). */
 #define RT_S 0x2000
 #define RT_T 0x2001
-#define RT_R 0x2002 /* refused: 2D textures only */
+#define RT_R 0x2002 /* kept; 2D textures do not read r */
 #define RT_Q 0x2003
 #define RT_EYE_LINEAR 0x2400
 #define RT_OBJECT_LINEAR 0x2401
@@ -311,6 +311,7 @@ typedef struct rt_context *RTcontext;
 #define RT_EYE_PLANE 0x2502
 #define RT_TEXTURE_GEN_S 0x0C60
 #define RT_TEXTURE_GEN_T 0x0C61
+#define RT_TEXTURE_GEN_R 0x0C62
 #define RT_TEXTURE_GEN_Q 0x0C63
 /* rtInterleavedArrays formats (GL 1.1 table 2.5). */
 #define RT_V2F 0x2A20

@@ -335,8 +335,8 @@ RTcontext rtCreateContextWithReason(const char *configuration, RTsizei bufSize, 
     render_state_init(&ctx->render);
     ctx->cull_face_mode = RT_BACK;
     ctx->dither = 1; /* GL's default */
-    /* GL's initial planes: s (1, 0, 0, 0), t (0, 1, 0, 0), q zero. */
-    for (int i = 0; i < SCENE_TEXGEN_COORDS; i++) {
+    /* GL's initial planes: s (1, 0, 0, 0), t (0, 1, 0, 0), q and r zero. */
+    for (int i = 0; i < RT_TEXGEN_COORDS; i++) {
         ctx->texgen_mode[i] = RT_EYE_LINEAR;
         if (i < 2)
             ctx->texgen_object_plane[i][i] = ctx->texgen_eye_plane[i][i] = 1.0f;

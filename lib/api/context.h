@@ -20,6 +20,13 @@
 #include "scene/scene.h"
 #include "trace/kernels.h"
 
+/* The context's texture coordinate generation: the scene's s, t and q
+ * (scene/mesh.h, SCENE_TEXGEN_*), then r, which GL keeps and a 2D
+ * texture never reads (GL 1.1 sec. 3.8: a 2D lookup uses s and t), so it
+ * stays context state and reaches no geometry. */
+#define RT_TEXGEN_R SCENE_TEXGEN_COORDS
+#define RT_TEXGEN_COORDS (SCENE_TEXGEN_COORDS + 1)
+
 #define API_MAX_MODELVIEW_DEPTH 32 /* OpenGL's minimum, DESIGN.md */
 #define API_MAX_PROJECTION_DEPTH 4 /* >= 2 required */
 #define API_MAX_THREADS 256
@@ -68,10 +75,10 @@ struct attrib_entry {
     RTenum cull_face_mode;
     int normalize_enabled, rescale_normal_enabled;
     int depth_test, dither, polygon_offset_fill;
-    int texgen_enabled[SCENE_TEXGEN_COORDS];
-    RTenum texgen_mode[SCENE_TEXGEN_COORDS];
-    float texgen_object_plane[SCENE_TEXGEN_COORDS][4];
-    float texgen_eye_plane[SCENE_TEXGEN_COORDS][4];
+    int texgen_enabled[RT_TEXGEN_COORDS];
+    RTenum texgen_mode[RT_TEXGEN_COORDS];
+    float texgen_object_plane[RT_TEXGEN_COORDS][4];
+    float texgen_eye_plane[RT_TEXGEN_COORDS][4];
     struct scene_light lights[RENDER_MAX_LIGHTS];
     float global_ambient[4];
     int light_model_two_side, light_model_local_viewer;
@@ -106,10 +113,10 @@ struct list_saved_state {
     int cull_face_enabled;
     RTenum cull_face_mode;
     int normalize_enabled, rescale_normal_enabled;
-    int texgen_enabled[SCENE_TEXGEN_COORDS];
-    RTenum texgen_mode[SCENE_TEXGEN_COORDS];
-    float texgen_object_plane[SCENE_TEXGEN_COORDS][4];
-    float texgen_eye_plane[SCENE_TEXGEN_COORDS][4];
+    int texgen_enabled[RT_TEXGEN_COORDS];
+    RTenum texgen_mode[RT_TEXGEN_COORDS];
+    float texgen_object_plane[RT_TEXGEN_COORDS][4];
+    float texgen_eye_plane[RT_TEXGEN_COORDS][4];
     int light_model_two_side, light_model_local_viewer;
     struct scene_fog fog;
     /* Raster state a list can set (lines.c): RT_BLEND, rtBlendFunc,
@@ -240,12 +247,13 @@ struct rt_context {
     /* Accepted capabilities without a ray tracing meaning: remembered
      * for rtIsEnabled only. */
     int depth_test, dither, polygon_offset_fill;
-    /* rtTexGen for s (0), t (1) and q (2) (fixed_function.c); recorded through
-     * ctx->material by rt_sync_fixed_function while enabled. */
-    int texgen_enabled[SCENE_TEXGEN_COORDS];  /* RT_TEXTURE_GEN_S, _T, _Q */
-    RTenum texgen_mode[SCENE_TEXGEN_COORDS];  /* RT_EYE_LINEAR initially */
-    float texgen_object_plane[SCENE_TEXGEN_COORDS][4];
-    float texgen_eye_plane[SCENE_TEXGEN_COORDS][4]; /* in eye space */
+    /* rtTexGen for s (0), t (1), q (2) and r (RT_TEXGEN_R) (fixed_function.c);
+     * s, t and q are recorded through ctx->material by
+     * rt_sync_fixed_function while enabled, r is state only. */
+    int texgen_enabled[RT_TEXGEN_COORDS];  /* RT_TEXTURE_GEN_S, _T, _Q, _R */
+    RTenum texgen_mode[RT_TEXGEN_COORDS];  /* RT_EYE_LINEAR initially */
+    float texgen_object_plane[RT_TEXGEN_COORDS][4];
+    float texgen_eye_plane[RT_TEXGEN_COORDS][4]; /* in eye space */
     /* rtPushAttrib / rtPushClientAttrib (attrib.c).  attrib_list_base:
      * the depth at rtNewList, below which an RT_COMPILE list's
      * rtPopAttrib does not reach while it is recorded; attrib_skipped:

@@ -123,6 +123,7 @@ static const struct enum_name names[] = {
     {0x0C54, "RT_FOG_HINT"},
     {0x0C60, "RT_TEXTURE_GEN_S"},
     {0x0C61, "RT_TEXTURE_GEN_T"},
+    {0x0C62, "RT_TEXTURE_GEN_R"},
     {0x0C63, "RT_TEXTURE_GEN_Q"},
     {0x0CF0, "RT_UNPACK_SWAP_BYTES"},
     {0x0CF1, "RT_UNPACK_LSB_FIRST"},

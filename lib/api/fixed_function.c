@@ -204,9 +204,9 @@ static void tex_gen(const char *caller, RTenum coord, RTenum pname, const RTfloa
     if (!ctx || rt_check_outside_begin(ctx, caller))
         return;
     char b1[RT_ENUM_STRING_SIZE];
-    if (coord != RT_S && coord != RT_T && coord != RT_Q) {
-        rt_error(ctx, RT_INVALID_ENUM, "%s(coord=%s): not RT_S, RT_T or RT_Q%s", caller,
-                 rt_enum_string(coord, b1), coord == RT_R ? " (2D textures only)" : "");
+    if (coord != RT_S && coord != RT_T && coord != RT_R && coord != RT_Q) {
+        rt_error(ctx, RT_INVALID_ENUM, "%s(coord=%s): not RT_S, RT_T, RT_R or RT_Q", caller,
+                 rt_enum_string(coord, b1));
         return;
     }
     int plane = pname == RT_OBJECT_PLANE || pname == RT_EYE_PLANE;
@@ -219,7 +219,10 @@ static void tex_gen(const char *caller, RTenum coord, RTenum pname, const RTfloa
         rt_error(ctx, RT_INVALID_VALUE, "%s(params=NULL)", caller);
         return;
     }
-    const int i = coord == RT_S ? SCENE_TEXGEN_S : coord == RT_T ? SCENE_TEXGEN_T : SCENE_TEXGEN_Q;
+    const int i = coord == RT_S   ? SCENE_TEXGEN_S
+                  : coord == RT_T ? SCENE_TEXGEN_T
+                  : coord == RT_Q ? SCENE_TEXGEN_Q
+                                  : RT_TEXGEN_R;
     if (pname != RT_TEXTURE_GEN_MODE && !rt_check_finite(ctx, caller, params, 4))
         return;
     if (pname == RT_TEXTURE_GEN_MODE) {
@@ -234,10 +237,10 @@ static void tex_gen(const char *caller, RTenum coord, RTenum pname, const RTfloa
         }
         /* GL 1.1 sec. 2.10.4: the sphere map generates s and t only
          * (Mesa: GL_INVALID_ENUM for r and q). */
-        if (mode == RT_SPHERE_MAP && coord == RT_Q) {
-            rt_error(ctx, RT_INVALID_ENUM, "%s(coord=RT_Q, RT_TEXTURE_GEN_MODE, RT_SPHERE_MAP): "
+        if (mode == RT_SPHERE_MAP && (coord == RT_Q || coord == RT_R)) {
+            rt_error(ctx, RT_INVALID_ENUM, "%s(coord=%s, RT_TEXTURE_GEN_MODE, RT_SPHERE_MAP): "
                      "the sphere map generates s and t only",
-                     caller);
+                     caller, rt_enum_string(coord, b1));
             return;
         }
         rt_list_state(ctx, LIST_TEX_GEN, coord, pname, params, 1);
@@ -266,6 +269,9 @@ static void tex_gen(const char *caller, RTenum coord, RTenum pname, const RTfloa
             memcpy(ctx->texgen_eye_plane[i], f, sizeof(f));
         }
     }
+    /* r is kept, not used (context.h, RT_TEXGEN_R): no geometry changes. */
+    if (i == RT_TEXGEN_R)
+        return;
     rt_sync_fixed_function(ctx);
     /* A list's triangles take texture generation from their instance (an
      * eye plane recorded in a list is transformed by the modelview of its

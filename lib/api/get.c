@@ -405,6 +405,10 @@ static int *capability(struct rt_context *ctx, RTenum cap)
         return &ctx->texgen_enabled[1];
     case RT_TEXTURE_GEN_Q:
         return &ctx->texgen_enabled[SCENE_TEXGEN_Q];
+    /* Kept for rtIsEnabled and the attribute stack; a 2D texture does not
+     * read r, so it changes no geometry (context.h, RT_TEXGEN_R). */
+    case RT_TEXTURE_GEN_R:
+        return &ctx->texgen_enabled[RT_TEXGEN_R];
     case RT_BLEND:
         return &ctx->render.vis.blend;
     /* No ray tracing meaning: accepted and remembered (docs/appearance.md). */
