@@ -26,8 +26,10 @@
  * floor, and rays from 1e4 away; packets=on must do different node work
  * than packets=off on them (the packet path ran) with the same answers.
  * A third image, Whitted with a point light besides the sun (shadow rays
- * converging on a point as well as parallel ones), is compared the same
- * way, with its RT_STAT_RAYS.
+ * converging on a point as well as parallel ones), and a fourth with four
+ * lights, two behind surfaces, are compared the same way, with their
+ * RT_STAT_RAYS: with packets on, Whitted's shadow rays of each block go
+ * as a packet per light (render/shade.h, shade_prime_shadows).
  */
 #include <rt/rt.h>
 #include <math.h>
@@ -136,14 +138,14 @@ static void define_scene(void)
 }
 
 struct answers {
-    float image[3][WIDTH * HEIGHT * 4];
+    float image[4][WIDTH * HEIGHT * 4];
     RThit hits[RAYS];
     RTboolean occluded[RAYS];
     /* RT_STAT_RAYS and RT_STAT_NODE_TESTS of the two frames, the trace
      * and the occlusion query, and of the Whitted frame with a point
-     * light besides the sun. */
-    RTint rays[5];
-    RTint nodes[5];
+     * light besides the sun, and with four lights. */
+    RTint rays[6];
+    RTint nodes[6];
 };
 
 static void stats(struct answers *out, int i)
@@ -257,6 +259,24 @@ static int run(const char *config, const RTray *rays, struct answers *out)
     rtRenderFrame();
     stats(out, 4);
     rtReadPixels(0, 0, WIDTH, HEIGHT, RT_RGBA, RT_FLOAT, out->image[2]);
+    /* Four lights, two of them behind surfaces: one under the floor
+     * (the floor faces away from it: no shadow ray there) and one inside
+     * the left sphere (its outside faces away, everything else is
+     * shadowed by it), a third given with w = 2 (a divided position).
+     * Whitted's shadow rays of a block go as one packet per light
+     * (shade_prime_shadows), with lanes left out where the surface faces
+     * away or the hit is unlit. */
+    const float under[4] = {0.5f, -6.0f, -8.0f, 1.0f};
+    const float inside[4] = {-2.0f, 0.1f, -8.0f, 1.0f};
+    const float halved[4] = {-6.0f, 8.0f, -4.0f, 2.0f};
+    rtLightfv(RT_LIGHT2, RT_POSITION, under);
+    rtEnable(RT_LIGHT2);
+    rtLightfv(RT_LIGHT3, RT_POSITION, inside);
+    rtEnable(RT_LIGHT3);
+    rtLightfv(RT_LIGHT1, RT_POSITION, halved);
+    rtRenderFrame();
+    stats(out, 5);
+    rtReadPixels(0, 0, WIDTH, HEIGHT, RT_RGBA, RT_FLOAT, out->image[3]);
     CHECK_NO_ERR();
     rtMakeCurrent(NULL);
     rtDestroyContext(ctx);
@@ -306,7 +326,7 @@ int main(void)
         "threads=1 isa=avx512 packets=off"};
     /* Node tests of the packets=on run of each ISA, threads=1 (the
      * entry before its packets=off one). */
-    RTint packet_nodes[8][4];
+    RTint packet_nodes[8][6];
     int have_packet_nodes[8] = {0};
     for (size_t c = 0; c < sizeof(configs) / sizeof(configs[0]); c++) {
         if (!run(configs[c], rays, got)) {
@@ -314,9 +334,10 @@ int main(void)
             continue;
         }
         CHECKF(memcmp(ref->rays, got->rays, sizeof(ref->rays)) == 0,
-               "%s: RT_STAT_RAYS %d %d %d %d %d, reference %d %d %d %d %d", configs[c],
+               "%s: RT_STAT_RAYS %d %d %d %d %d %d, reference %d %d %d %d %d %d", configs[c],
                got->rays[0], got->rays[1], got->rays[2], got->rays[3], got->rays[4],
-               ref->rays[0], ref->rays[1], ref->rays[2], ref->rays[3], ref->rays[4]);
+               got->rays[5], ref->rays[0], ref->rays[1], ref->rays[2], ref->rays[3],
+               ref->rays[4], ref->rays[5]);
         const int isa = strstr(configs[c], "sse4") ? 1 : strstr(configs[c], "avx2") ? 2 : 3;
         if (strstr(configs[c], "threads=1") && !strstr(configs[c], "packets=")) {
             memcpy(packet_nodes[isa], got->nodes, sizeof(got->nodes));

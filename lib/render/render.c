@@ -482,6 +482,19 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                 }
             }
             const unsigned found = trace_scene_closest_packet(sc->scene, &pk, hits, sc->counters);
+            /* Whitted shading's shadow rays of the block's first hits,
+             * one packet per light, and the surfaces they start on. */
+            struct shade_primed primed[TRACE_PACKET];
+            struct surface surf[TRACE_PACKET];
+            for (int i = 0; i < TRACE_PACKET; i++) {
+                primed[i].found = (int)(found >> i & 1u);
+                if (primed[i].found)
+                    primed[i].hit = hits[i];
+                primed[i].surface = NULL;
+                primed[i].shadow_known = 0;
+                primed[i].shadow_occluded = 0;
+            }
+            shade_prime_shadows(sc, found, hits, (const float(*)[3])pk.dir, cone, surf, primed);
             for (int i = 0; i < TRACE_PACKET; i++) {
                 const int x = bx + i % RENDER_BLOCK_W, y = by + i / RENDER_BLOCK_W;
                 if (!(x < x0 + RENDER_TILE_SIZE && x < vp[2] && y < y0 + RENDER_TILE_SIZE &&
@@ -492,11 +505,7 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                     memcpy(px, st->clear_color, 4 * sizeof(float));
                     continue;
                 }
-                struct shade_primed primed;
-                primed.found = (int)(found >> i & 1u);
-                if (primed.found)
-                    primed.hit = hits[i];
-                sc->primed = &primed;
+                sc->primed = &primed[i];
                 float t_first;
                 const size_t at = (size_t)(vp[1] + y) * pass->fb_width + vp[0] + x;
                 if (pass->depth_state) /* polygon offset in the frame (lines.c) */

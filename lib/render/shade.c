@@ -51,8 +51,38 @@ static void add_scaled(float acc[3], const float a[4], const float b[4], float s
         acc[k] += a[k] * b[k] * scale;
 }
 
+/* The shadow ray from `origin` to a light (tmin 0), and the direction
+ * to it, not yet normalised: local_whitted's and shade_prime_shadows'
+ * one computation, so both trace the same ray bit for bit. */
+static void light_ray(const struct scene_light *light, const float origin[3], float to_light[3],
+                      float shadow_dir[3], float *shadow_tmax)
+{
+    if (light->position[3] != 0.0f) {
+        float lp[3];
+        for (int k = 0; k < 3; k++)
+            lp[k] = light->position[k] / light->position[3];
+        vec3_sub(shadow_dir, lp, origin);
+        *shadow_tmax = 1.0f;
+    } else {
+        memcpy(shadow_dir, light->position, 3 * sizeof(float));
+        *shadow_tmax = INFINITY;
+    }
+    memcpy(to_light, shadow_dir, 3 * sizeof(float));
+}
+
+/* Whether a surface faces the light along the normalised to_light: only
+ * then is a shadow ray traced (local_whitted). */
+static int faces_light(const struct surface *s, const float to_light[3], float *n_dot_l)
+{
+    *n_dot_l = vec3_dot(s->n, to_light);
+    return !(*n_dot_l <= 0.0f || vec3_dot(s->ng, to_light) <= 0.0f);
+}
+
+/* known / occluded: the answers shade_prime_shadows traced ahead, bit l
+ * for light l (0, 0 when none). */
 static void local_whitted(const struct shade_context *sc, const struct surface *s,
-                          const float global_ambient[4], const float dir[3], float c[3])
+                          const float global_ambient[4], const float dir[3], unsigned known,
+                          unsigned occluded, float c[3])
 {
     const struct render_state *st = sc->state;
     for (int k = 0; k < 3; k++)
@@ -66,13 +96,8 @@ static void local_whitted(const struct shade_context *sc, const struct surface *
         if (!light->enabled)
             continue;
         float to_light[3], shadow_dir[3], shadow_tmax, attenuation = 1.0f;
+        light_ray(light, origin, to_light, shadow_dir, &shadow_tmax);
         if (light->position[3] != 0.0f) {
-            float lp[3];
-            for (int k = 0; k < 3; k++)
-                lp[k] = light->position[k] / light->position[3];
-            vec3_sub(shadow_dir, lp, origin);
-            shadow_tmax = 1.0f;
-            memcpy(to_light, shadow_dir, sizeof(to_light));
             float d = sqrtf(vec3_dot(to_light, to_light));
             float att = light->attenuation[0] + light->attenuation[1] * d +
                         light->attenuation[2] * d * d;
@@ -84,18 +109,16 @@ static void local_whitted(const struct shade_context *sc, const struct surface *
                 float u[3] = {to_light[0] / d, to_light[1] / d, to_light[2] / d};
                 attenuation *= gl_spot_factor(light, u);
             }
-        } else {
-            memcpy(to_light, light->position, sizeof(to_light));
-            memcpy(shadow_dir, to_light, sizeof(shadow_dir));
-            shadow_tmax = INFINITY;
         }
         add_scaled(c, light->ambient, s->ambient, attenuation);
         if (!vec3_normalize(to_light))
             continue;
-        float n_dot_l = vec3_dot(s->n, to_light);
-        if (n_dot_l <= 0.0f || vec3_dot(s->ng, to_light) <= 0.0f)
+        float n_dot_l;
+        if (!faces_light(s, to_light, &n_dot_l))
             continue;
-        if (trace_scene_any(sc->shadows, origin, shadow_dir, 0.0f, shadow_tmax, sc->counters))
+        if (known >> i & 1u ? (int)(occluded >> i & 1u)
+                            : trace_scene_any(sc->shadows, origin, shadow_dir, 0.0f, shadow_tmax,
+                                              sc->counters))
             continue;
         add_scaled(c, light->diffuse, s->diffuse, attenuation * n_dot_l);
         float h[3] = {to_light[0] + view[0], to_light[1] + view[1], to_light[2] + view[2]};
@@ -130,6 +153,22 @@ static int refract_dir(const float d[3], const float n[3], float eta, float t[3]
     return 1;
 }
 
+/* A cone after distance t along dir (shade_hit). */
+static struct shade_cone cone_at(struct shade_cone cone, const float dir[3], float t)
+{
+    const float distance = t * sqrtf(vec3_dot(dir, dir));
+    const struct shade_cone at = {fabsf(cone.width + cone.spread * distance), cone.spread};
+    return at;
+}
+
+/* The same hit bit for bit (t by its bits: -0 and NaN are no hits). */
+static int same_hit(const struct trace_scene_hit *a, const struct trace_scene_hit *b)
+{
+    return memcmp(&a->t, &b->t, sizeof(float)) == 0 && memcmp(&a->u, &b->u, sizeof(float)) == 0 &&
+           memcmp(&a->v, &b->v, sizeof(float)) == 0 && a->prim == b->prim &&
+           a->instance == b->instance;
+}
+
 void shade_ray(const struct shade_context *sc, const float org[3], const float dir[3],
                float tmax, struct shade_cone cone, int depth, float rgba[4])
 {
@@ -156,8 +195,7 @@ void shade_hit(const struct shade_context *sc, const float org[3], const float d
      * the same spread: the paper's curvature term (sec. 20.3.4), which
      * widens cones off convex surfaces and narrows them off concave ones,
      * is left out, so secondary rays filter as if every mirror were flat. */
-    const float distance = hit.t * sqrtf(vec3_dot(dir, dir));
-    const struct shade_cone at_hit = {fabsf(cone.width + cone.spread * distance), cone.spread};
+    const struct shade_cone at_hit = cone_at(cone, dir, hit.t);
     if (st->shading == RENDER_FIXED_FUNCTION) {
         gl_shade_hit(sc, &hit, org, dir, at_hit.width, rgba);
         return;
@@ -185,38 +223,46 @@ void shade_hit(const struct shade_context *sc, const float org[3], const float d
         rgba[3] = 1.0f;
         return;
     }
-    struct surface s;
-    surface_fetch(sc, &hit, dir, at_hit.width, &s);
+    /* The camera ray's first hit: shade_prime_shadows may have fetched
+     * its surface and traced its shadow rays already. */
+    const struct shade_primed *pr = depth == 0 ? sc->primed : NULL;
+    if (pr && !(pr->surface && same_hit(&pr->hit, &hit)))
+        pr = NULL;
+    struct surface fetched;
+    if (!pr)
+        surface_fetch(sc, &hit, dir, at_hit.width, &fetched);
+    const struct surface *sp = pr ? pr->surface : &fetched;
 
-    const int unlit = st->lighting_used && !s.mat->lighting;
+    const int unlit = st->lighting_used && !sp->mat->lighting;
     if (unlit)
-        memcpy(c, s.diffuse, sizeof(c));
+        memcpy(c, sp->diffuse, sizeof(c));
     else
-        local_whitted(sc, &s, global_ambient, unit_dir, c);
-    float kr = s.mat->reflectivity, kt = s.mat->transparency;
+        local_whitted(sc, sp, global_ambient, unit_dir, pr ? pr->shadow_known : 0u,
+                      pr ? pr->shadow_occluded : 0u, c);
+    float kr = sp->mat->reflectivity, kt = sp->mat->transparency;
     if (depth < st->max_depth && (kr > 0.0f || kt > 0.0f)) {
         float out[4], next_org[3], next_dir[3];
         float local_weight = 1.0f - kt;
         for (int k = 0; k < 3; k++)
             c[k] *= local_weight;
         if (kr > 0.0f) {
-            reflect_dir(unit_dir, s.n, next_dir);
-            if (vec3_dot(next_dir, s.ng) <= 0.0f)
-                reflect_dir(unit_dir, s.ng, next_dir);
-            shade_offset_point(s.p, s.ng, s.p_error, next_org);
+            reflect_dir(unit_dir, sp->n, next_dir);
+            if (vec3_dot(next_dir, sp->ng) <= 0.0f)
+                reflect_dir(unit_dir, sp->ng, next_dir);
+            shade_offset_point(sp->p, sp->ng, sp->p_error, next_org);
             shade_ray(sc, next_org, next_dir, INFINITY, at_hit, depth + 1, out);
             for (int k = 0; k < 3; k++)
                 c[k] += kr * out[k];
         }
         if (kt > 0.0f) {
-            float eta = s.front ? 1.0f / s.mat->ior : s.mat->ior;
-            float below[3] = {-s.ng[0], -s.ng[1], -s.ng[2]};
-            if (refract_dir(unit_dir, s.n, eta, next_dir) && vec3_dot(next_dir, s.ng) < 0.0f) {
-                shade_offset_point(s.p, below, s.p_error, next_org);
+            float eta = sp->front ? 1.0f / sp->mat->ior : sp->mat->ior;
+            float below[3] = {-sp->ng[0], -sp->ng[1], -sp->ng[2]};
+            if (refract_dir(unit_dir, sp->n, eta, next_dir) && vec3_dot(next_dir, sp->ng) < 0.0f) {
+                shade_offset_point(sp->p, below, sp->p_error, next_org);
             } else {
                 /* Total internal reflection. */
-                reflect_dir(unit_dir, s.ng, next_dir);
-                shade_offset_point(s.p, s.ng, s.p_error, next_org);
+                reflect_dir(unit_dir, sp->ng, next_dir);
+                shade_offset_point(sp->p, sp->ng, sp->p_error, next_org);
             }
             shade_ray(sc, next_org, next_dir, INFINITY, at_hit, depth + 1, out);
             for (int k = 0; k < 3; k++)
@@ -225,4 +271,70 @@ void shade_hit(const struct shade_context *sc, const float org[3], const float d
     }
     memcpy(rgba, c, sizeof(c));
     rgba[3] = 1.0f;
+}
+
+void shade_prime_shadows(const struct shade_context *sc, unsigned found,
+                         const struct trace_scene_hit hits[TRACE_PACKET],
+                         const float dir[TRACE_PACKET][3],
+                         const struct shade_cone cone[TRACE_PACKET],
+                         struct surface *surf,
+                         struct shade_primed primed[TRACE_PACKET])
+{
+    const struct render_state *st = sc->state;
+    /* Packets walk without the hit filter (render/secondary.h), and a
+     * clipped first hit is not the one shaded. */
+    if (st->shading != RENDER_WHITTED || sc->shadows != sc->scene || sc->scene->filtered ||
+        sc->clipping)
+        return;
+    float origin[TRACE_PACKET][3];
+    unsigned lit = 0;
+    for (int i = 0; i < TRACE_PACKET; i++) {
+        if (!(found >> i & 1u))
+            continue;
+        /* A first hit GL does not draw (culled, outlined) gives the pixel
+         * to a hit behind it: not primed, so no ray the shading does not
+         * ask for is traced. */
+        if (!gl_hit_drawn(sc, dir[i], &hits[i]))
+            continue;
+        surface_fetch(sc, &hits[i], dir[i], cone_at(cone[i], dir[i], hits[i].t).width, &surf[i]);
+        primed[i].surface = &surf[i];
+        primed[i].shadow_known = 0;
+        primed[i].shadow_occluded = 0;
+        if (st->lighting_used && !surf[i].mat->lighting)
+            continue; /* unlit: no shadow rays */
+        shade_offset_point(surf[i].p, surf[i].ng, surf[i].p_error, origin[i]);
+        lit |= 1u << i;
+    }
+    if (!lit)
+        return;
+    for (int l = 0; l < RENDER_MAX_LIGHTS; l++) {
+        const struct scene_light *light = &st->lights[l];
+        if (!light->enabled)
+            continue;
+        struct trace_packet pk;
+        const float *dirs[TRACE_PACKET];
+        int n = 0;
+        pk.active = 0;
+        for (int i = 0; i < TRACE_PACKET; i++) {
+            if (!(lit >> i & 1u))
+                continue;
+            float to_light[3], n_dot_l;
+            light_ray(light, origin[i], to_light, pk.dir[i], &pk.tmax[i]);
+            if (!vec3_normalize(to_light) || !faces_light(&surf[i], to_light, &n_dot_l))
+                continue;
+            memcpy(pk.org[i], origin[i], sizeof(origin[i]));
+            pk.tmin[i] = 0.0f;
+            pk.active |= 1u << i;
+            dirs[n++] = pk.dir[i];
+        }
+        if (n < 2 || !trace_packet_coherent(dirs, n))
+            continue;
+        const unsigned occluded = trace_scene_any_packet(sc->shadows, &pk, sc->counters);
+        for (int i = 0; i < TRACE_PACKET; i++) {
+            if (!(pk.active >> i & 1u))
+                continue;
+            primed[i].shadow_known |= 1u << l;
+            primed[i].shadow_occluded |= (occluded >> i & 1u) << l;
+        }
+    }
 }

@@ -6,6 +6,7 @@
 #define RT_RENDER_SHADE_H
 
 #include "render/render.h"
+#include "trace/packet_scene.h"
 
 /* Per-thread context for shading one ray tree. */
 struct shade_context {
@@ -36,9 +37,20 @@ struct shade_context {
     const struct trace_scene *rays;
 };
 
+struct surface;
+
 struct shade_primed {
     int found;
     struct trace_scene_hit hit;
+    /* NULL, or Whitted shading's surface of `hit` for this camera ray
+     * (surface_fetch with shade_hit's arguments at depth 0), fetched by
+     * shade_prime_shadows; shade_hit takes it for the same hit at depth
+     * 0 instead of fetching again.  Then bit l of shadow_known says light
+     * l's shadow ray from it was traced in a packet, bit l of
+     * shadow_occluded its answer. */
+    const struct surface *surface;
+    unsigned shadow_known;
+    unsigned shadow_occluded;
 };
 
 /* The frame's instance a hit belongs to: its appearance, clip planes and
@@ -83,6 +95,30 @@ void shade_ray(const struct shade_context *sc, const float org[3], const float d
 void shade_hit(const struct shade_context *sc, const float org[3], const float dir[3],
                const struct trace_scene_hit *found, struct shade_cone cone, int depth,
                float rgba[4]);
+
+/*
+ * Whitted shading's shadow rays of a 4 x 2 block's camera rays, one
+ * packet per light (Wald, Slusallek, Benthin and Wagner 2001 sec. 4:
+ * shadow rays of neighbouring pixels to one light share their end point,
+ * so they are as coherent as the camera rays).  For each ray i with a
+ * first hit (bit i of found, hits[i], ray along dir[i] with cone[i]) that
+ * the shading certainly shades as it is (drawn, lit; no clip planes and
+ * no hit filter in the frame: sc->shadows is sc->scene), surf[i] gets its
+ * surface and primed[i] points at it with the answers of the shadow rays
+ * traced in a packet (surf has TRACE_PACKET entries); primed[i]'s other
+ * fields are left alone.  A light
+ * whose rays are fewer than two or not coherent (trace_packet_coherent)
+ * leaves them to the shading, ray by ray.  The rays are computed by
+ * local_whitted's own operations and a packet's answers are the single
+ * rays' (trace/packet_scene.h), so the image and the ray count are those
+ * of single rays.
+ */
+void shade_prime_shadows(const struct shade_context *sc, unsigned found,
+                         const struct trace_scene_hit hits[TRACE_PACKET],
+                         const float dir[TRACE_PACKET][3],
+                         const struct shade_cone cone[TRACE_PACKET],
+                         struct surface *surf,
+                         struct shade_primed primed[TRACE_PACKET]);
 
 /*
  * Moves a point off a surface along the unit normal n by
