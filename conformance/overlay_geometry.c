@@ -5,7 +5,9 @@
  * display under a pushed rtuOrtho2D, blended, with the depth test off,
  * shows over the traced scene; a background drawn first goes under it; a
  * HUD with the depth test on is hidden where the scene is nearer in
- * window depth; a minimap in an inset viewport; and frames that never
+ * window depth; a minimap in an inset viewport; a HUD projection loaded
+ * without a push (the scene still traced, o-proj); an object only
+ * rasterised gets no structure work (o-proj); and frames that never
  * called rtClear keep tracing everything through the projection current
  * at rtRenderFrame.  Every section but the last fails against main before
  * o-overlay, which traced the HUD through the frame's perspective.
