@@ -41,6 +41,7 @@ struct overlay_scene {
 static const struct overlay_scene scenes[] = {
     SCENE(panel), SCENE(crosshair), SCENE(depth_on),
     SCENE(background), SCENE(lit), SCENE(text_panel), SCENE(unpushed),
+    SCENE(textured),
 };
 #define SCENE_COUNT ((int)(sizeof scenes / sizeof scenes[0]))
 
