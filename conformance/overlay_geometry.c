@@ -7,7 +7,8 @@
  * HUD with the depth test on is hidden where the scene is nearer in
  * window depth; a minimap in an inset viewport; a HUD projection loaded
  * without a push (the scene still traced, o-proj); an object only
- * rasterised gets no structure work (o-proj); and frames that never
+ * rasterised gets no structure work (o-proj); a textured HUD (o-proj);
+ * and frames that never
  * called rtClear keep tracing everything through the projection current
  * at rtRenderFrame.  Every section but the last fails against main before
  * o-overlay, which traced the HUD through the frame's perspective.
@@ -320,6 +321,54 @@ static void rasterised_not_built(void)
     rtDeleteObjects(1, &panel);
 }
 
+/* A HUD quad textured with a 2 x 2 texture (NEAREST, magnified 8 times):
+ * each quarter of the view takes its texel, modulated by the colour. */
+static void textured_hud(void)
+{
+    tu_section("a textured HUD quad: texels, MODULATE, then REPLACE");
+    static const unsigned char texels[16] = {255, 0,   0,   255, 0,   255, 0,   255,
+                                             0,   0,   255, 255, 255, 255, 255, 255};
+    RTuint tex;
+    rtGenTextures(1, &tex);
+    rtBindTexture(RT_TEXTURE_2D, tex);
+    rtTexParameteri(RT_TEXTURE_2D, RT_TEXTURE_MIN_FILTER, RT_NEAREST);
+    rtTexParameteri(RT_TEXTURE_2D, RT_TEXTURE_MAG_FILTER, RT_NEAREST);
+    rtTexImage2D(RT_TEXTURE_2D, 0, RT_RGBA, 2, 2, 0, RT_RGBA, RT_UNSIGNED_BYTE, texels);
+    for (int replace = 0; replace < 2; replace++) {
+        rtViewport(0, 0, W, H);
+        rtClearColor(0, 0, 0, 1);
+        rtClear(RT_COLOR_BUFFER_BIT | RT_DEPTH_BUFFER_BIT);
+        perspective();
+        red_wall();
+        hud_begin();
+        rtDisable(RT_DEPTH_TEST);
+        rtEnable(RT_TEXTURE_2D);
+        rtTexEnvi(RT_TEXTURE_ENV, RT_TEXTURE_ENV_MODE, replace ? RT_REPLACE : RT_MODULATE);
+        rtColor3f(0.5f, 0.5f, 0.5f);
+        rtBegin(RT_QUADS);
+        rtTexCoord2f(0, 0);
+        rtVertex2f(0, 0);
+        rtTexCoord2f(1, 0);
+        rtVertex2f(W, 0);
+        rtTexCoord2f(1, 1);
+        rtVertex2f(W, H);
+        rtTexCoord2f(0, 1);
+        rtVertex2f(0, H);
+        rtEnd();
+        rtDisable(RT_TEXTURE_2D);
+        hud_end();
+        render();
+        const float k = replace ? 1.0f : 0.5f;
+        CHECK_RGB(pixel(3, 3), k, 0, 0);
+        CHECK_RGB(pixel(12, 3), 0, k, 0);
+        CHECK_RGB(pixel(3, 12), 0, 0, k);
+        CHECK_RGB(pixel(12, 12), k, k, k);
+    }
+    rtTexEnvi(RT_TEXTURE_ENV, RT_TEXTURE_ENV_MODE, RT_MODULATE);
+    rtDeleteTextures(1, &tex);
+    CHECK_NO_ERR();
+}
+
 static void own_frames_unchanged(void)
 {
     tu_section("rtBeginFrame / rtRenderFrame: the projection at the render");
@@ -353,6 +402,7 @@ int main(void)
     minimap();
     unpushed_hud();
     rasterised_not_built();
+    textured_hud();
     tu_destroy_context(ctx);
     own_frames_unchanged();
     return test_summary("overlay_geometry");
