@@ -5,7 +5,10 @@
  * display under a pushed rtuOrtho2D, blended, with the depth test off,
  * shows over the traced scene; a background drawn first goes under it; a
  * HUD with the depth test on is hidden where the scene is nearer in
- * window depth; a minimap in an inset viewport; and frames that never
+ * window depth; a minimap in an inset viewport; a HUD projection loaded
+ * without a push (the scene still traced, o-proj); an object only
+ * rasterised gets no structure work (o-proj); a textured HUD (o-proj);
+ * and frames that never
  * called rtClear keep tracing everything through the projection current
  * at rtRenderFrame.  Every section but the last fails against main before
  * o-overlay, which traced the HUD through the frame's perspective.
@@ -194,6 +197,178 @@ static void minimap(void)
     CHECK_NO_ERR();
 }
 
+/* The closest hit along -z from (x, y, z) in eye space (the modelview
+ * was the identity at every draw). */
+static float trace_down_z(float x, float y, float z)
+{
+    RTray ray = {{x, y, z}, 0.0f, {0.0f, 0.0f, -1.0f}, INFINITY};
+    RThit hit;
+    rtTraceRays(1, &ray, &hit);
+    return hit.t;
+}
+
+/* The display callback of many GLUT programs: the HUD's gluOrtho2D loaded
+ * over the scene's perspective without a push, left current at the
+ * swap.  The frame is traced through the perspective the depth-tested
+ * scene was drawn under, and the HUD rasterised. */
+static void unpushed_hud(void)
+{
+    tu_section("a HUD projection loaded without a push: the scene is still traced");
+    rtViewport(0, 0, W, H);
+    rtClearColor(0, 0, 1, 1);
+    rtClear(RT_COLOR_BUFFER_BIT | RT_DEPTH_BUFFER_BIT);
+    perspective();
+    red_wall();
+    rtMatrixMode(RT_PROJECTION);
+    rtLoadIdentity();
+    rtuOrtho2D(0.0, W, 0.0, H);
+    rtMatrixMode(RT_MODELVIEW);
+    rtLoadIdentity();
+    rtDisable(RT_DEPTH_TEST);
+    rtEnable(RT_BLEND);
+    rtBlendFunc(RT_SRC_ALPHA, RT_ONE_MINUS_SRC_ALPHA);
+    rtColor4f(0, 0, 0, 0.5f);
+    quad(0, 0, 8, 16, 0); /* the left half, blended over the wall */
+    rtDisable(RT_BLEND);
+    render();
+    CHECK_RGB(pixel(2, 4), 0.5f, 0, 0);
+    CHECK_RGB(pixel(7, 12), 0.5f, 0, 0);
+    CHECK_RGB(pixel(8, 4), 1, 0, 0);
+    CHECK_RGB(pixel(15, 15), 1, 0, 0);
+    /* Rays see the traced wall, not the rasterised HUD (which lies at
+     * eye z = 0 over x in [0, 8]); before, the wall was rasterised and
+     * the HUD traced. */
+    CHECK_NEAR(trace_down_z(-3.0f, -3.0f, 0.0f), 5.0f, 0.0);
+    CHECK_NEAR(trace_down_z(4.0f, 8.0f, 1.0f), 6.0f, 0.0);
+    /* The HUD's projection stays current, as in GL. */
+    RTfloat p[16];
+    rtGetFloatv(RT_PROJECTION_MATRIX, p);
+    CHECK(p[11] == 0.0f && p[15] == 1.0f);
+    CHECK_NO_ERR();
+}
+
+static RTint geti(RTenum pname)
+{
+    RTint v = -1;
+    rtGetIntegerv(pname, &v);
+    return v;
+}
+
+/* An object whose instances are all rasterised gets no structure built
+ * or updated: no ray reaches it. */
+static void rasterised_not_built(void)
+{
+    tu_section("objects only rasterised get no acceleration structure work");
+    static const float z0[12] = {0, 0, 0, 8, 0, 0, 8, 8, 0, 0, 8, 0};
+    static const float z1[12] = {0, 0, 0, 6, 0, 0, 6, 6, 0, 0, 6, 0};
+    RTuint hud, panel;
+    rtGenObjects(1, &hud);
+    rtGenObjects(1, &panel);
+    rtNewObject(hud);
+    rtColor3f(0, 1, 0);
+    quad(0, 0, 4, 4, 0);
+    rtEndObject();
+    rtNewObject(panel);
+    rtBegin(RT_QUADS);
+    for (int k = 0; k < 4; k++)
+        rtVertex3fv(&z0[3 * k]);
+    rtEnd();
+    rtEndObject();
+    RTint n;
+    /* Frame 1: the panel drawn under the scene's projection, traced and
+     * built; the HUD under a pushed rtuOrtho2D, rasterised. */
+    rtViewport(0, 0, W, H);
+    rtClearColor(0, 0, 1, 1);
+    rtClear(RT_COLOR_BUFFER_BIT | RT_DEPTH_BUFFER_BIT);
+    perspective();
+    red_wall();
+    rtTranslatef(-8, -8, -4);
+    rtInstantiateObject(panel);
+    rtLoadIdentity();
+    hud_begin();
+    rtDisable(RT_DEPTH_TEST);
+    rtInstantiateObject(hud);
+    hud_end();
+    render();
+    CHECK_RGB(pixel(1, 1), 0, 1, 0);
+    rtGetObjectiv(hud, RT_OBJECT_BVH_NODES, &n);
+    CHECK_INT(n, 0);
+    rtGetObjectiv(panel, RT_OBJECT_BVH_NODES, &n);
+    CHECK(n > 0);
+    /* Frame 2: the panel's vertices change (its structure goes stale) and
+     * it is drawn under the HUD's projection only: rasterised, so the
+     * preparation leaves its structure stale instead of updating it. */
+    rtUpdateVertices(panel, RT_VERTEX_ARRAY, 0, 4, RT_FLOAT, 0, z1);
+    rtClear(RT_COLOR_BUFFER_BIT | RT_DEPTH_BUFFER_BIT);
+    perspective();
+    red_wall();
+    hud_begin();
+    rtDisable(RT_DEPTH_TEST);
+    rtColor3f(1, 1, 1);
+    rtInstantiateObject(panel);
+    rtInstantiateObject(hud);
+    hud_end();
+    render();
+    CHECK_RGB(pixel(5, 5), 1, 1, 1);
+    CHECK_RGB(pixel(1, 1), 0, 1, 0);
+    CHECK_RGB(pixel(7, 7), 1, 0, 0);
+    CHECK_INT(geti(RT_STAT_OBJECT_UPDATES), 0);
+    CHECK_INT(geti(RT_STAT_OBJECT_BUILDS), 0);
+    rtGetObjectiv(hud, RT_OBJECT_BVH_NODES, &n);
+    CHECK_INT(n, 0);
+    CHECK_NO_ERR();
+    rtDeleteObjects(1, &hud);
+    rtDeleteObjects(1, &panel);
+}
+
+/* A HUD quad textured with a 2 x 2 texture (NEAREST, magnified 8 times):
+ * each quarter of the view takes its texel, modulated by the colour. */
+static void textured_hud(void)
+{
+    tu_section("a textured HUD quad: texels, MODULATE, then REPLACE");
+    static const unsigned char texels[16] = {255, 0,   0,   255, 0,   255, 0,   255,
+                                             0,   0,   255, 255, 255, 255, 255, 255};
+    RTuint tex;
+    rtGenTextures(1, &tex);
+    rtBindTexture(RT_TEXTURE_2D, tex);
+    rtTexParameteri(RT_TEXTURE_2D, RT_TEXTURE_MIN_FILTER, RT_NEAREST);
+    rtTexParameteri(RT_TEXTURE_2D, RT_TEXTURE_MAG_FILTER, RT_NEAREST);
+    rtTexImage2D(RT_TEXTURE_2D, 0, RT_RGBA, 2, 2, 0, RT_RGBA, RT_UNSIGNED_BYTE, texels);
+    for (int replace = 0; replace < 2; replace++) {
+        rtViewport(0, 0, W, H);
+        rtClearColor(0, 0, 0, 1);
+        rtClear(RT_COLOR_BUFFER_BIT | RT_DEPTH_BUFFER_BIT);
+        perspective();
+        red_wall();
+        hud_begin();
+        rtDisable(RT_DEPTH_TEST);
+        rtEnable(RT_TEXTURE_2D);
+        rtTexEnvi(RT_TEXTURE_ENV, RT_TEXTURE_ENV_MODE, replace ? RT_REPLACE : RT_MODULATE);
+        rtColor3f(0.5f, 0.5f, 0.5f);
+        rtBegin(RT_QUADS);
+        rtTexCoord2f(0, 0);
+        rtVertex2f(0, 0);
+        rtTexCoord2f(1, 0);
+        rtVertex2f(W, 0);
+        rtTexCoord2f(1, 1);
+        rtVertex2f(W, H);
+        rtTexCoord2f(0, 1);
+        rtVertex2f(0, H);
+        rtEnd();
+        rtDisable(RT_TEXTURE_2D);
+        hud_end();
+        render();
+        const float k = replace ? 1.0f : 0.5f;
+        CHECK_RGB(pixel(3, 3), k, 0, 0);
+        CHECK_RGB(pixel(12, 3), 0, k, 0);
+        CHECK_RGB(pixel(3, 12), 0, 0, k);
+        CHECK_RGB(pixel(12, 12), k, k, k);
+    }
+    rtTexEnvi(RT_TEXTURE_ENV, RT_TEXTURE_ENV_MODE, RT_MODULATE);
+    rtDeleteTextures(1, &tex);
+    CHECK_NO_ERR();
+}
+
 static void own_frames_unchanged(void)
 {
     tu_section("rtBeginFrame / rtRenderFrame: the projection at the render");
@@ -225,6 +400,9 @@ int main(void)
     background_first();
     hud_depth_tested();
     minimap();
+    unpushed_hud();
+    rasterised_not_built();
+    textured_hud();
     tu_destroy_context(ctx);
     own_frames_unchanged();
     return test_summary("overlay_geometry");

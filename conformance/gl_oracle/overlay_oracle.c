@@ -40,7 +40,8 @@ struct overlay_scene {
 #define SCENE(n) {#n, overlay_##n##_gl, overlay_##n##_rt}
 static const struct overlay_scene scenes[] = {
     SCENE(panel), SCENE(crosshair), SCENE(depth_on),
-    SCENE(background), SCENE(lit), SCENE(text_panel),
+    SCENE(background), SCENE(lit), SCENE(text_panel), SCENE(unpushed),
+    SCENE(textured),
 };
 #define SCENE_COUNT ((int)(sizeof scenes / sizeof scenes[0]))
 

@@ -18,7 +18,9 @@ void overlay_pattern(unsigned char *bits, int width, int height, unsigned seed);
     void overlay_depth_on_##suffix(void);                                                          \
     void overlay_background_##suffix(void);                                                        \
     void overlay_lit_##suffix(void);                                                               \
-    void overlay_text_panel_##suffix(void);
+    void overlay_text_panel_##suffix(void);                                                        \
+    void overlay_unpushed_##suffix(void);                                                          \
+    void overlay_textured_##suffix(void);
 OVERLAY_DECLARE(gl)
 OVERLAY_DECLARE(rt)
 

@@ -64,9 +64,12 @@ static void add_scene_stats(struct render_stats *stats, const struct scene_stats
 int rt_prepare_scene(struct rt_context *ctx, const char *caller)
 {
     struct scene *scene = &ctx->scene;
-    /* The frame is traced through the projection and viewport current
-     * now (render_frame_now): in a GL frame, what was drawn under others
-     * (a heads-up display under a pushed rtuOrtho2D, an inset viewport)
+    /* The frame is traced through the viewport current now and, outside
+     * GL frames, the projection current now (render_frame_now).  A GL
+     * frame's projection is chosen from what was drawn, the projection of
+     * most depth-tested triangles (scene_frame_prepare: a HUD whose
+     * gluOrtho2D was loaded without a push is still current at the swap);
+     * what was drawn under others (a heads-up display, an inset viewport)
      * is rasterised as GL draws it instead (render/raster.h). */
     struct scene_frame *frame = &scene->frame;
     frame->overlay_enabled = ctx->gl_frames;
@@ -175,7 +178,10 @@ static void render_frame_now(struct rt_context *ctx)
         return;
     const int *vp = ctx->render.viewport;
     int fb_width = vp[0] + vp[2], fb_height = vp[1] + vp[3];
-    memcpy(ctx->render.projection, ctx->projection.m[ctx->projection.depth - 1],
+    /* The projection the frame's rays and traced depths use: the one
+     * rt_prepare_scene chose, so that the traced instances are exactly
+     * those drawn under it. */
+    memcpy(ctx->render.projection, ctx->scene.frame.trace_projection,
            sizeof(ctx->render.projection));
     struct render_job job;
     rt_render_job(ctx, &job);

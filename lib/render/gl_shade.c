@@ -293,7 +293,12 @@ static void texture_coordinates(const struct gl_triangle *t, uint32_t vertex, fl
 static void texture_environment(const struct scene_material *mat, const float tex[4],
                                 float c[4])
 {
-    switch (mat->tex_env_mode) {
+    gl_texture_env_apply(mat->tex_env_mode, mat->tex_env_color, tex, c);
+}
+
+void gl_texture_env_apply(uint32_t mode, const float env_color[4], const float tex[4], float c[4])
+{
+    switch (mode) {
     case RT_REPLACE:
         memcpy(c, tex, 4 * sizeof(float));
         break;
@@ -303,7 +308,7 @@ static void texture_environment(const struct scene_material *mat, const float te
         break;
     case RT_BLEND:
         for (int k = 0; k < 3; k++)
-            c[k] = c[k] * (1.0f - tex[k]) + mat->tex_env_color[k] * tex[k];
+            c[k] = c[k] * (1.0f - tex[k]) + env_color[k] * tex[k];
         c[3] *= tex[3];
         break;
     default: /* RT_MODULATE */
@@ -410,4 +415,18 @@ void gl_triangle_colors(const struct scene_instance *inst, uint32_t prim,
         for (int k = 0; k < 4; k++)
             rgba[i][k] = c[k] < 0.0f ? 0.0f : (c[k] > 1.0f ? 1.0f : c[k]);
     }
+}
+
+uint32_t gl_triangle_texture(const struct scene_instance *inst, uint32_t prim, float st[3][2],
+                             float q[3], uint32_t *env_mode, float env_color[4])
+{
+    struct gl_triangle t;
+    fetch_triangle_of(inst, prim, &t);
+    if (!t.mat->texture)
+        return 0;
+    for (int i = 0; i < 3; i++)
+        texture_coordinates(&t, t.v[i], st[i], &q[i]);
+    *env_mode = t.mat->tex_env_mode;
+    memcpy(env_color, t.mat->tex_env_color, 4 * sizeof(float));
+    return t.mat->texture;
 }

@@ -42,4 +42,17 @@ void gl_shade_hit(const struct shade_context *sc, const struct trace_scene_hit *
 void gl_triangle_colors(const struct scene_instance *inst, uint32_t prim,
                         const struct scene_light *lights, int front, float rgba[3][4]);
 
+/* The texture GL applies to triangle `prim` of `inst` (render/
+ * raster_triangles.c): its name, 0 when none is enabled and bound; then
+ * the texture coordinates of its vertices, recorded or generated
+ * (rtTexGen), their q (1 unless rtTexCoord4 or RT_Q's generation gave
+ * one), and the texture environment. */
+uint32_t gl_triangle_texture(const struct scene_instance *inst, uint32_t prim, float st[3][2],
+                             float q[3], uint32_t *env_mode, float env_color[4]);
+
+/* GL's texture environment `mode` (OpenGL 1.1 sec. 3.8.6, table 3.19:
+ * RT_MODULATE, RT_REPLACE, RT_DECAL, RT_BLEND with env_color) applied by
+ * the texel tex to the fragment colour c. */
+void gl_texture_env_apply(uint32_t mode, const float env_color[4], const float tex[4], float c[4]);
+
 #endif

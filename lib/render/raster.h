@@ -44,6 +44,8 @@ struct raster_target {
     /* 1: GL's RT_LESS test against `depth` and writes under rtDepthMask;
      * 0: RT_DEPTH_TEST disabled, no test and no write (GL). */
     int depth_test;
+    /* The context's textures, for textured triangles (NULL: untextured). */
+    const struct scene_textures *textures;
 };
 
 /* The window depth (GL's depth range [0, 1]) of the eye-space point

@@ -35,8 +35,12 @@
  *    written under rtDepthMask; disabled: neither), alpha test and
  *    blending by raster_fragment.
  *
- * Textures are not applied to rasterised triangles (docs/overlay_geometry.md
- * lists it as a limit).
+ *  - the bound texture (when enabled at the call): s, t and q, recorded or
+ *    generated per vertex (gl_shade.c), interpolated perspective-correctly
+ *    as the colours and divided per fragment (s / q, t / q), sampled with
+ *    the texture's filters at GL's level of detail lambda (fragment_texel:
+ *    the derivatives per 2 x 2 pixel quad, as GPUs take them); then the
+ *    texture environment, before fog (sec. 3.8.13).
  */
 #include "render/raster.h"
 
@@ -48,6 +52,7 @@
 #include "render/gl_shade.h"
 #include "render/surface.h"
 #include "scene/frame.h"
+#include "scene/texture.h"
 
 /* Vertices a triangle can have after clipping by the six planes of the
  * view volume and the user clip planes: one more per plane. */
@@ -57,6 +62,7 @@ struct clip_vertex {
     double clip[4];
     double eye[3];
     float color[4];
+    double tex[3]; /* s, t, q */
 };
 
 /* Signed distance of v from clipping plane k: 0..5 the view volume's
@@ -80,6 +86,8 @@ static void lerp_vertex(const struct clip_vertex *a, const struct clip_vertex *b
         out->eye[k] = a->eye[k] + t * (b->eye[k] - a->eye[k]);
     for (int k = 0; k < 4; k++)
         out->color[k] = (float)(a->color[k] + t * (b->color[k] - a->color[k]));
+    for (int k = 0; k < 3; k++)
+        out->tex[k] = a->tex[k] + t * (b->tex[k] - a->tex[k]);
 }
 
 /* Clips the polygon v[0..n) in place by every plane; returns its new
@@ -113,7 +121,61 @@ struct window_vertex {
     double inv_w;
     double color[4]; /* pre-divided by w */
     double fog_z;    /* |eye z| / w */
+    double tex[3];   /* s, t, q pre-divided by w */
 };
+
+/* The triangle's texture, when it has one with an image. */
+struct raster_texture {
+    const struct scene_texture *tex;
+    uint32_t env_mode;
+    float env_color[4];
+};
+
+/*
+ * The texel at fragment (x, y) whose barycentric weights (window space)
+ * are l and change by dl_dx, dl_dy per pixel: s / q and t / q from the
+ * interpolated s / w, t / w and q / w, which are linear in window space.
+ * The level of detail is GL's lambda = log2(rho), rho the larger of the
+ * lengths of the texel-space derivatives along x and along y (OpenGL 1.5
+ * sec. 3.8.8, eq. 3.18), with the derivatives taken as GPUs and Mesa's
+ * llvmpipe (the oracle's OSMesa) take them: differences of s / q and
+ * t / q, in texels, between the centres of the 2 x 2 pixel quad the
+ * fragment belongs to (horizontal along its upper row, vertical along
+ * its left column), the same for the four fragments.
+ */
+static void fragment_texel(const struct raster_texture *rt, const struct window_vertex *const v[3],
+                           const double l[3], const double dl_dx[3], const double dl_dy[3],
+                           long x, long y, float texel[4])
+{
+    double a[3] = {0.0, 0.0, 0.0}, ax[3] = {0.0, 0.0, 0.0}, ay[3] = {0.0, 0.0, 0.0};
+    for (int k = 0; k < 3; k++)
+        for (int i = 0; i < 3; i++) {
+            a[k] += l[i] * v[i]->tex[k];
+            ax[k] += dl_dx[i] * v[i]->tex[k];
+            ay[k] += dl_dy[i] * v[i]->tex[k];
+        }
+    /* s / q and t / q at the quad's upper-left, upper-right and lower-left
+     * centres, offsets from this fragment's. */
+    const double ox = (double)(x & ~1L) - (double)x, oy = (double)(y | 1L) - (double)y;
+    const double corner[3][2] = {{ox, oy}, {ox + 1.0, oy}, {ox, oy - 1.0}};
+    const double size[2] = {rt->tex->width, rt->tex->height};
+    double uv[3][2];
+    for (int c = 0; c < 3; c++) {
+        const double q = a[2] + ax[2] * corner[c][0] + ay[2] * corner[c][1];
+        for (int k = 0; k < 2; k++)
+            uv[c][k] = (a[k] + ax[k] * corner[c][0] + ay[k] * corner[c][1]) / q * size[k];
+    }
+    const double rho = sqrt(fmax(pow(uv[1][0] - uv[0][0], 2) + pow(uv[1][1] - uv[0][1], 2),
+                                 pow(uv[2][0] - uv[0][0], 2) + pow(uv[2][1] - uv[0][1], 2)));
+    /* A fragment with q = 0 (s / q undefined) samples (0, 0), as traced
+     * surfaces do (surface.c). */
+    const double s = a[0] / a[2], t = a[1] / a[2];
+    float lambda = -INFINITY; /* a magnification (rho <= 1 or NaN) */
+    if (rho > 1.0)
+        lambda = isfinite(rho) ? (float)log2(rho) : INFINITY;
+    scene_texture_sample_lod(rt->tex, lambda, isfinite(s) ? (float)s : 0.0f,
+                             isfinite(t) ? (float)t : 0.0f, texel);
+}
 
 /* 1 when a pixel centre exactly on the edge a -> b of a counter-clockwise
  * triangle belongs to it: left edges (going down) and bottom edges
@@ -132,7 +194,7 @@ static double edge(const struct window_vertex *a, const struct window_vertex *b,
 
 static void fill_triangle(const struct raster_target *target, const struct window_vertex *v0,
                           const struct window_vertex *v1, const struct window_vertex *v2,
-                          const struct scene_fog *fog)
+                          const struct scene_fog *fog, const struct raster_texture *texture)
 {
     double area = edge(v0, v1, v2->x, v2->y);
     if (!(area != 0.0))
@@ -158,8 +220,13 @@ static void fill_triangle(const struct raster_target *target, const struct windo
     x1 = x1 > vx1 ? vx1 : x1;
     y1 = y1 > vy1 ? vy1 : y1;
     int tie[3];
-    for (int i = 0; i < 3; i++)
-        tie[i] = owns_tie(v[(i + 1) % 3], v[(i + 2) % 3]);
+    double dl_dx[3], dl_dy[3]; /* the weights' change per pixel */
+    for (int i = 0; i < 3; i++) {
+        const struct window_vertex *a = v[(i + 1) % 3], *b = v[(i + 2) % 3];
+        tie[i] = owns_tie(a, b);
+        dl_dx[i] = -(b->y - a->y) / area;
+        dl_dy[i] = (b->x - a->x) / area;
+    }
     for (long y = y0; y <= y1; y++) {
         const double py = (double)y + 0.5;
         for (long x = x0; x <= x1; x++) {
@@ -185,6 +252,11 @@ static void fill_triangle(const struct raster_target *target, const struct windo
                             l[2] * v[2]->color[k]) / q;
                 c[k] = (float)(a < 0.0 ? 0.0 : a > 1.0 ? 1.0 : a);
             }
+            if (texture->tex) {
+                float texel[4];
+                fragment_texel(texture, v, l, dl_dx, dl_dy, x, y, texel);
+                gl_texture_env_apply(texture->env_mode, texture->env_color, texel, c);
+            }
             if (fog->enabled) {
                 const double fz = (l[0] * v[0]->fog_z + l[1] * v[1]->fog_z +
                                    l[2] * v[2]->fog_z) / q;
@@ -209,6 +281,8 @@ static void to_window(const struct raster_target *target, const struct clip_vert
     for (int k = 0; k < 4; k++)
         w->color[k] = (double)c->color[k] * w->inv_w;
     w->fog_z = fabs(c->eye[2]) * w->inv_w;
+    for (int k = 0; k < 3; k++)
+        w->tex[k] = c->tex[k] * w->inv_w;
 }
 
 /* 1 when the triangle is counter-clockwise in window coordinates, from
@@ -255,6 +329,22 @@ void raster_instance(const struct raster_target *target, const struct scene_inst
         gl_triangle_colors(inst, t, lights, front, colors);
         for (int i = 0; i < 3; i++)
             memcpy(v[i].color, colors[i], sizeof(colors[i]));
+        struct raster_texture texture = {NULL, 0, {0.0f, 0.0f, 0.0f, 0.0f}};
+        float st[3][2], q[3];
+        const uint32_t name = target->textures ? gl_triangle_texture(inst, t, st, q,
+                                                                     &texture.env_mode,
+                                                                     texture.env_color)
+                                               : 0;
+        if (name) {
+            texture.tex = scene_textures_lookup(target->textures, name);
+            if (texture.tex && !texture.tex->texels)
+                texture.tex = NULL; /* no image: untextured, as traced */
+        }
+        for (int i = 0; i < 3; i++) {
+            v[i].tex[0] = texture.tex ? st[i][0] : 0.0;
+            v[i].tex[1] = texture.tex ? st[i][1] : 0.0;
+            v[i].tex[2] = texture.tex ? q[i] : 1.0;
+        }
         int n = clip_polygon(target->clip, v, 3);
         for (int i = 0; i < n; i++)
             if (!(v[i].clip[3] > 0.0))
@@ -265,7 +355,7 @@ void raster_instance(const struct raster_target *target, const struct scene_inst
         for (int i = 0; i < n; i++)
             to_window(target, &v[i], &w[i]);
         for (int i = 1; i + 1 < n; i++)
-            fill_triangle(target, &w[0], &w[i], &w[i + 1], &call->gl.fog);
+            fill_triangle(target, &w[0], &w[i], &w[i + 1], &call->gl.fog, &texture);
     }
     raster_polygons(target, inst);
     raster_lines(target, &mesh->lines, inst->object_to_world);

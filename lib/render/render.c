@@ -622,7 +622,7 @@ static int raster_under(struct render_pass *pass, uint32_t first_traced)
         depth[i] = 1.0;
     }
     struct raster_target target = {rgba, depth, pass->fb_width, pass->fb_height, NULL, NULL,
-                                   &st->vis, NULL, NULL, 1};
+                                   &st->vis, NULL, NULL, 1, pass->job->textures};
     const struct scene_instance_list *list = &pass->job->frame->committed;
     for (uint32_t i = 0; i < first_traced; i++) {
         const struct scene_instance *inst = &list->items[i];
@@ -669,7 +669,8 @@ void render_pass_raster(struct render_pass *pass)
     raster_depth_prepare(pass->depth, pass->fb_width, pass->fb_height);
     const struct render_state *st = pass->job->state;
     struct raster_target target = {pass->fb, pass->depth, pass->fb_width, pass->fb_height,
-                                   st->viewport, st->projection, &st->vis, NULL, NULL, 1};
+                                   st->viewport, st->projection, &st->vis, NULL, NULL, 1,
+                                   pass->job->textures};
     for (uint32_t i = 0; i < list->count; i++) {
         const struct scene_instance *inst = &list->items[i];
         if (inst->overlay) {

@@ -440,6 +440,68 @@ static int is_inset(const int32_t vp[4], const int32_t frame[4])
            (int64_t)vp[1] + vp[3] <= (int64_t)frame[1] + frame[3];
 }
 
+/* Distinct projections weighed by choose_trace_projection; instances
+ * under further ones do not vote (they are rasterised). */
+#define FRAME_PROJECTION_CANDIDATES 8
+
+/*
+ * A GL frame's traced projection: the draw-time projection (among the
+ * instances drawn in the frame's viewport, not an inset) of the most
+ * triangles drawn with the depth test on, then of the most triangles,
+ * then the earliest drawn; the caller's (the projection current at the
+ * render) when no triangle was drawn.
+ *
+ * GL programs often set a HUD's projection without pushing it (the scene
+ * under gluPerspective, then glLoadIdentity and gluOrtho2D for the HUD,
+ * then the swap), which leaves the HUD's current when the frame is
+ * rendered.  Ray casting gives each pixel its nearest surface, which is
+ * GL's image only for geometry drawn with the depth test on; geometry
+ * drawn without it (HUDs, backgrounds) gets its visibility from the
+ * draw order, which only rasterising it reproduces.  So the depth-tested
+ * triangles choose the camera, and the rest is rasterised as GL draws it:
+ * the image is GL's whichever projection wins, the choice only decides
+ * what gets the ray tracer's effects.
+ */
+static void choose_trace_projection(struct scene_frame *frame)
+{
+    struct {
+        uint32_t first;
+        uint64_t depth_tris, tris;
+    } cand[FRAME_PROJECTION_CANDIDATES];
+    uint32_t n = 0;
+    const struct scene_instance_list *list = &frame->committed;
+    for (uint32_t i = 0; i < list->count; i++) {
+        const struct scene_instance *inst = &list->items[i];
+        const struct scene_raster *r = &inst->appearance.raster;
+        const uint64_t tris = inst->object->mesh.tri_count;
+        if (tris == 0 || is_inset(r->viewport, frame->trace_viewport))
+            continue;
+        uint32_t k = 0;
+        while (k < n && memcmp(list->items[cand[k].first].appearance.raster.projection,
+                               r->projection, sizeof(r->projection)) != 0)
+            k++;
+        if (k == n) {
+            if (n == FRAME_PROJECTION_CANDIDATES)
+                continue;
+            cand[n].first = i;
+            cand[n].depth_tris = cand[n].tris = 0;
+            n++;
+        }
+        cand[k].tris += tris;
+        if (r->depth_test)
+            cand[k].depth_tris += tris;
+    }
+    if (n == 0)
+        return;
+    uint32_t best = 0; /* candidates are in draw order: ties keep the earliest */
+    for (uint32_t k = 1; k < n; k++)
+        if (cand[k].depth_tris > cand[best].depth_tris ||
+            (cand[k].depth_tris == cand[best].depth_tris && cand[k].tris > cand[best].tris))
+            best = k;
+    memcpy(frame->trace_projection, list->items[cand[best].first].appearance.raster.projection,
+           sizeof(frame->trace_projection));
+}
+
 int scene_frame_prepare(struct scene_frame *frame, const struct bvh_build_params *params,
                         uint64_t frame_number, int *toplevel_built)
 {
@@ -472,6 +534,8 @@ int scene_frame_prepare(struct scene_frame *frame, const struct bvh_build_params
             frame->top_valid = 0;
         }
     }
+    if (frame->overlay_enabled)
+        choose_trace_projection(frame);
     /* Drawn under another projection or viewport than the frame's: out of
      * the top level (rasterised), which changes with the classification. */
     for (uint32_t i = 0; i < frame->committed.count; i++) {

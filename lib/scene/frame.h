@@ -152,7 +152,9 @@ struct scene_frame {
 
     /* The viewport and projection the frame is traced through, set before
      * scene_frame_prepare; with overlay_enabled (GL frames, started by
-     * rtClear), instances drawn under another one are not traced
+     * rtClear), scene_frame_prepare replaces the projection by the
+     * draw-time projection of the most depth-tested triangles (frame.c),
+     * and instances drawn under another one are not traced
      * (scene_instance.overlay).  The comparison happens here, at
      * preparation, because only then is the frame's projection known; an
      * instance drawn under the frame's costs a memcmp. */

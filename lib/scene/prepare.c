@@ -83,54 +83,63 @@ enum scene_status scene_prepare_objects(struct scene *scene, struct rt_pool *poo
     uint64_t stamp = ++scene->prepare_count;
     const struct scene_instance_list *list = &scene->frame.committed;
     int failed = 0;
-    for (uint32_t i = 0; i < list->count; i++) {
-        struct scene_object *object = list->items[i].object;
-        if (object->visit_stamp == stamp)
-            continue;
-        object->visit_stamp = stamp;
-        object->current_class = classify(object, scene->frame_number);
-        if (object->moved_frame == scene->frame_number)
-            scene->changes.moved++;
-        /* Rays are counted for the objects whose geometry has changed
-         * since their definition (serial > 1, as classify) and whose
-         * updates the automatic strategy decides: from its first update
-         * on, every later one has the measured rays.  No render runs
-         * now: plain reads and writes. */
-        int automatic = scene_object_strategy(object, scene->default_strategy) == RT_AUTOMATIC;
-        int counted = object->count_rays;
-        object->count_rays = automatic && object->serial > 1;
-        if (!object->accel || object->accel->serial == object->serial)
-            continue;
-        uint64_t visits = object->ray_visits; /* since its last update */
-        object->ray_visits = 0;
-        /* Yoon, Curtis and Manocha (2007) sec. 4.1.1: the rays that will
-         * reach the object are those that reached it in the previous
-         * frame, counted; the SAH estimate (the area of its instance box
-         * over the scene's) is only the fallback before any were counted.
-         * For the rays of a camera inside the scene that estimate is far
-         * off: on the BART museum, 0.4-2% of the primary rays against the
-         * 40-75% that actually reach the animated object, so that the
-         * rule of update.c saw a thirtieth of the traversal it lost and
-         * rebuilt late (docs/performance.md). */
-        object->expected_rays =
-            counted ? (double)visits : expected_rays(scene, object, default_rays);
-        if (scene_object_strategy(object, scene->default_strategy) == RT_RESTRUCTURE &&
-            !scene->restructure_measured) {
-            /* Yoon, Curtis and Manocha (2007) sec. 6.1 measures its constants at start-up; we
-             * do it when the first object needs them. */
-            accel_restructure_measure_constants(&scene->restructure_params);
-            scene->restructure_measured = 1;
+    /* The objects of traced instances first (pass 0), then those only
+     * rasterised this frame (scene_instance.overlay, pass 1): classified,
+     * but their stale structures are left for the first ray that needs
+     * them, as a structure never built is, since no ray reaches them now
+     * (the rasteriser reads the mesh). */
+    for (uint32_t pass = 0; pass < 2; pass++) {
+        for (uint32_t i = 0; i < list->count; i++) {
+            struct scene_object *object = list->items[i].object;
+            if (object->visit_stamp == stamp || list->items[i].overlay != pass)
+                continue;
+            object->visit_stamp = stamp;
+            object->current_class = classify(object, scene->frame_number);
+            if (object->moved_frame == scene->frame_number)
+                scene->changes.moved++;
+            /* Rays are counted for the objects whose geometry has changed
+             * since their definition (serial > 1, as classify) and whose
+             * updates the automatic strategy decides: from its first update
+             * on, every later one has the measured rays.  No render runs
+             * now: plain reads and writes. */
+            int automatic =
+                scene_object_strategy(object, scene->default_strategy) == RT_AUTOMATIC;
+            int counted = object->count_rays;
+            object->count_rays = automatic && object->serial > 1;
+            if (!object->accel || object->accel->serial == object->serial || pass)
+                continue;
+            uint64_t visits = object->ray_visits; /* since its last update */
+            object->ray_visits = 0;
+            /* Yoon, Curtis and Manocha (2007) sec. 4.1.1: the rays that will
+             * reach the object are those that reached it in the previous
+             * frame, counted; the SAH estimate (the area of its instance box
+             * over the scene's) is only the fallback before any were counted.
+             * For the rays of a camera inside the scene that estimate is far
+             * off: on the BART museum, 0.4-2% of the primary rays against the
+             * 40-75% that actually reach the animated object, so that the
+             * rule of update.c saw a thirtieth of the traversal it lost and
+             * rebuilt late (docs/performance.md). */
+            object->expected_rays =
+                counted ? (double)visits : expected_rays(scene, object, default_rays);
+            if (scene_object_strategy(object, scene->default_strategy) == RT_RESTRUCTURE &&
+                !scene->restructure_measured) {
+                /* Yoon, Curtis and Manocha (2007) sec. 6.1 measures its
+                 * constants at start-up; we do it when the first object
+                 * needs them. */
+                accel_restructure_measure_constants(&scene->restructure_params);
+                scene->restructure_measured = 1;
+            }
+            /* Only real updates are timed: a static scene's frames report
+             * exactly 0 ms of update time. */
+            double start = rt_now_ms();
+            if (scene_object_update(object, config)) {
+                scene->stats.object_updates++;
+                scene->changes.updated++;
+            } else {
+                failed = 1;
+            }
+            scene->stats.update_ms += rt_now_ms() - start;
         }
-        /* Only real updates are timed: a static scene's frames report
-         * exactly 0 ms of update time. */
-        double start = rt_now_ms();
-        if (scene_object_update(object, config)) {
-            scene->stats.object_updates++;
-            scene->changes.updated++;
-        } else {
-            failed = 1;
-        }
-        scene->stats.update_ms += rt_now_ms() - start;
     }
     if (changes)
         *changes = scene->changes;
