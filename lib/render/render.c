@@ -131,29 +131,43 @@ static void shared_finish(struct render_pass *sh, struct render_stats *stats)
     sh->secondary = NULL;
 }
 
-/* The near- and far-plane points under viewport position (x, y), in
- * pixels from the viewport's corner, through the inverse projection. */
-static int unproject(const struct render_pass *sh, double x, double y, double near_pt[3],
-                     double far_pt[3])
+/* The products of the inverse projection's first sum that depend on one
+ * viewport coordinate only: m[r] nx for a column (nx = 2 x / w - 1),
+ * m[4 + r] ny for a row, r = 0..3.  A tile computes each column's and
+ * each row's once (struct unproject_cache) instead of per point: the
+ * same expressions, so the same doubles. */
+static void unproject_axis(const struct render_pass *sh, int axis, double c, double out[4])
 {
     const int *vp = sh->job->state->viewport;
-    double ndc_near[3] = {2.0 * x / vp[2] - 1.0, 2.0 * y / vp[3] - 1.0, -1.0};
+    const double n = 2.0 * c / vp[2 + axis] - 1.0;
+    const double *m = sh->inv_projection;
+    for (int r = 0; r < 4; r++)
+        out[r] = m[4 * axis + r] * n;
+}
+
+/* The near- and far-plane points under viewport position (x, y), in
+ * pixels from the viewport's corner, through the inverse projection;
+ * col and row are unproject_axis of x and y. */
+static int unproject(const struct render_pass *sh, double x, double y, const double col[4],
+                     const double row[4], double near_pt[3], double far_pt[3])
+{
 #if RENDER_PAIRS
     /* mat4_project of the near (lane 0, z = -1) and far (lane 1, z = 1)
      * points together: each sum in mat4_project's order, ((m0 x + m1 y) +
      * m2 z) + m3, the shared first sum once. */
+    (void)x;
+    (void)y;
     const double *m = sh->inv_projection;
-    const double nx = ndc_near[0], ny = ndc_near[1];
     const __m128d z = _mm_set_pd(1.0, -1.0);
     const __m128d w = _mm_add_pd(
-        _mm_add_pd(_mm_set1_pd(m[3] * nx + m[7] * ny), _mm_mul_pd(_mm_set1_pd(m[11]), z)),
+        _mm_add_pd(_mm_set1_pd(col[3] + row[3]), _mm_mul_pd(_mm_set1_pd(m[11]), z)),
         _mm_set1_pd(m[15]));
     double wl[2], out[3][2];
     _mm_storeu_pd(wl, w);
     if (wl[0] == 0.0 || wl[1] == 0.0)
         return 0;
     for (int r = 0; r < 3; r++) {
-        __m128d v = _mm_add_pd(_mm_set1_pd(m[r] * nx + m[4 + r] * ny),
+        __m128d v = _mm_add_pd(_mm_set1_pd(col[r] + row[r]),
                                _mm_mul_pd(_mm_set1_pd(m[8 + r]), z));
         _mm_storeu_pd(out[r], _mm_div_pd(_mm_add_pd(v, _mm_set1_pd(m[12 + r])), w));
     }
@@ -164,6 +178,10 @@ static int unproject(const struct render_pass *sh, double x, double y, double ne
     return isfinite(near_pt[0]) && isfinite(near_pt[1]) && isfinite(near_pt[2]) &&
            isfinite(far_pt[0]) && isfinite(far_pt[1]) && isfinite(far_pt[2]);
 #else
+    (void)col;
+    (void)row;
+    const int *vp = sh->job->state->viewport;
+    double ndc_near[3] = {2.0 * x / vp[2] - 1.0, 2.0 * y / vp[3] - 1.0, -1.0};
     double ndc_far[3] = {ndc_near[0], ndc_near[1], 1.0};
     return mat4_project(sh->inv_projection, ndc_near, near_pt) &&
            mat4_project(sh->inv_projection, ndc_far, far_pt);
@@ -240,33 +258,46 @@ struct unproject_point {
 struct unproject_cache {
     int x0, y; /* viewport pixel of row[0][0] */
     struct unproject_point rows[UNPROJECT_ROWS][RENDER_TILE_SIZE + 1];
+    double col[RENDER_TILE_SIZE + 1][4]; /* unproject_axis of each column */
+    double row[UNPROJECT_ROWS][4];       /* and of each row */
 };
 
-static void unproject_cache_init(struct unproject_cache *c, int x0, int y)
+static void unproject_cache_rows(const struct render_pass *sh, struct unproject_cache *c,
+                                 int first)
+{
+    for (int r = first; r < UNPROJECT_ROWS; r++) {
+        for (int i = 0; i <= RENDER_TILE_SIZE; i++)
+            c->rows[r][i].state = 0;
+        unproject_axis(sh, 1, c->y + r + 0.5, c->row[r]);
+    }
+}
+
+static void unproject_cache_init(const struct render_pass *sh, struct unproject_cache *c,
+                                 int x0, int y)
 {
     c->x0 = x0;
     c->y = y;
-    for (int r = 0; r < UNPROJECT_ROWS; r++)
-        for (int i = 0; i <= RENDER_TILE_SIZE; i++)
-            c->rows[r][i].state = 0;
+    for (int i = 0; i <= RENDER_TILE_SIZE; i++)
+        unproject_axis(sh, 0, x0 + i + 0.5, c->col[i]);
+    unproject_cache_rows(sh, c, 0);
 }
 
 /* Moves the cache's first row to y, keeping the rows it already has from
  * y on. */
-static void unproject_cache_row(struct unproject_cache *c, int y)
+static void unproject_cache_row(const struct render_pass *sh, struct unproject_cache *c, int y)
 {
     const int shift = y - c->y;
     if (shift == 0)
         return;
     if (shift < 0 || shift >= UNPROJECT_ROWS) {
-        unproject_cache_init(c, c->x0, y);
+        c->y = y;
+        unproject_cache_rows(sh, c, 0);
         return;
     }
     memmove(c->rows[0], c->rows[shift], (size_t)(UNPROJECT_ROWS - shift) * sizeof(c->rows[0]));
-    for (int r = UNPROJECT_ROWS - shift; r < UNPROJECT_ROWS; r++)
-        for (int i = 0; i <= RENDER_TILE_SIZE; i++)
-            c->rows[r][i].state = 0;
+    memmove(c->row[0], c->row[shift], (size_t)(UNPROJECT_ROWS - shift) * sizeof(c->row[0]));
     c->y = y;
+    unproject_cache_rows(sh, c, UNPROJECT_ROWS - shift);
 }
 
 /* The unprojected centre of pixel (x, y), with x - x0 in
@@ -278,7 +309,10 @@ static const struct unproject_point *unproject_cached(const struct render_pass *
 {
     struct unproject_point *p = &c->rows[y - c->y][x - c->x0];
     if (p->state == 0)
-        p->state = unproject(sh, x + 0.5, y + 0.5, p->near_pt, p->far_pt) ? 1 : -1;
+        p->state = unproject(sh, x + 0.5, y + 0.5, c->col[x - c->x0], c->row[y - c->y],
+                             p->near_pt, p->far_pt)
+                       ? 1
+                       : -1;
     return p->state > 0 ? p : NULL;
 }
 
@@ -464,9 +498,9 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
      * once, where a cache per block made the blocks' right and lower
      * neighbours a second time. */
     struct unproject_cache cache;
-    unproject_cache_init(&cache, x0, y0);
+    unproject_cache_init(pass, &cache, x0, y0);
     for (int by = y0; by < y0 + RENDER_TILE_SIZE && by < vp[3]; by += RENDER_BLOCK_H) {
-        unproject_cache_row(&cache, by);
+        unproject_cache_row(pass, &cache, by);
         for (int bx = x0; bx < x0 + RENDER_TILE_SIZE && bx < vp[2]; bx += RENDER_BLOCK_W) {
             struct trace_packet pk;
             struct shade_cone cone[TRACE_PACKET];
@@ -539,9 +573,9 @@ void render_tile(struct render_pass *pass, uint32_t tile, int worker)
         return;
     }
     struct unproject_cache cache;
-    unproject_cache_init(&cache, x0, y0);
+    unproject_cache_init(pass, &cache, x0, y0);
     for (int y = y0; y < y0 + RENDER_TILE_SIZE && y < vp[3]; y++) {
-        unproject_cache_row(&cache, y);
+        unproject_cache_row(pass, &cache, y);
         for (int x = x0; x < x0 + RENDER_TILE_SIZE && x < vp[2]; x++) {
             float *px = &pass->fb[4 * ((size_t)(vp[1] + y) * pass->fb_width + vp[0] + x)];
             float org[3], dir[3], tmax;
