@@ -241,13 +241,16 @@ static void distances_to_line(const double q0[3], const double q1[3], const doub
  * Every pixel's ray needs the unprojection of its own centre and of its
  * right and lower neighbours' (the cone), which are other pixels' centres:
  * a tile keeps the unprojected centres of the row it is on and the next
- * one, so that each is computed once instead of three times.  The cached
+ * one, so that each is computed once instead of three times, the whole
+ * row as it enters the cache (a tile reads every point of its rows: its
+ * pixels' and their right neighbours' column), the column's and row's
+ * products once (unproject_axis).  The cached
  * point is the one the direct call gives, bit for bit: unproject at
  * (X + 0.5, Y + 0.5) for whole X, Y, and px + 0.5 + 1 is exactly
  * (px + 1) + 0.5 in double.
  */
 struct unproject_point {
-    signed char state; /* 0 not computed, 1 unprojected, -1 cannot be */
+    signed char state; /* 1 unprojected, -1 cannot be */
     double near_pt[3], far_pt[3];
 };
 
@@ -266,9 +269,14 @@ static void unproject_cache_rows(const struct render_pass *sh, struct unproject_
                                  int first)
 {
     for (int r = first; r < UNPROJECT_ROWS; r++) {
-        for (int i = 0; i <= RENDER_TILE_SIZE; i++)
-            c->rows[r][i].state = 0;
         unproject_axis(sh, 1, c->y + r + 0.5, c->row[r]);
+        for (int i = 0; i <= RENDER_TILE_SIZE; i++) {
+            struct unproject_point *p = &c->rows[r][i];
+            p->state = unproject(sh, c->x0 + i + 0.5, c->y + r + 0.5, c->col[i], c->row[r],
+                                 p->near_pt, p->far_pt)
+                           ? 1
+                           : -1;
+        }
     }
 }
 
@@ -304,15 +312,10 @@ static void unproject_cache_row(const struct render_pass *sh, struct unproject_c
  * [0, RENDER_TILE_SIZE] and y - (the cache's row) in [0, UNPROJECT_ROWS);
  * NULL when it cannot be unprojected.  The point stays in the cache (no
  * copy: a pixel reads three of them). */
-static const struct unproject_point *unproject_cached(const struct render_pass *sh,
-                                                      struct unproject_cache *c, int x, int y)
+static const struct unproject_point *unproject_cached(const struct unproject_cache *c, int x,
+                                                      int y)
 {
-    struct unproject_point *p = &c->rows[y - c->y][x - c->x0];
-    if (p->state == 0)
-        p->state = unproject(sh, x + 0.5, y + 0.5, c->col[x - c->x0], c->row[y - c->y],
-                             p->near_pt, p->far_pt)
-                       ? 1
-                       : -1;
+    const struct unproject_point *p = &c->rows[y - c->y][x - c->x0];
     return p->state > 0 ? p : NULL;
 }
 
@@ -323,10 +326,10 @@ static double max_left(double x, double y)
     return y > x ? y : x;
 }
 
-static int primary_ray(const struct render_pass *sh, struct unproject_cache *cache, int px,
-                       int py, float org[3], float dir[3], float *tmax, struct shade_cone *cone)
+static int primary_ray(const struct unproject_cache *cache, int px, int py, float org[3],
+                       float dir[3], float *tmax, struct shade_cone *cone)
 {
-    const struct unproject_point *centre = unproject_cached(sh, cache, px, py);
+    const struct unproject_point *centre = unproject_cached(cache, px, py);
     if (!centre)
         return 0;
     const double *near_pt = centre->near_pt, *far_pt = centre->far_pt;
@@ -344,8 +347,8 @@ static int primary_ray(const struct render_pass *sh, struct unproject_cache *cac
      * larger of the two quotients is the quotient of the larger (a
      * correctly rounded division by len > 0 keeps the order). */
     double width = 0.0, growth = 0.0, spread = 0.0;
-    const struct unproject_point *right = unproject_cached(sh, cache, px + 1, py);
-    const struct unproject_point *below = right ? unproject_cached(sh, cache, px, py + 1) : NULL;
+    const struct unproject_point *right = unproject_cached(cache, px + 1, py);
+    const struct unproject_point *below = right ? unproject_cached(cache, px, py + 1) : NULL;
     if (right && below) {
         /* The neighbours' near distances, then their far ones, x first. */
         double w_near[2], w_far[2];
@@ -509,7 +512,7 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
             for (int i = 0; i < TRACE_PACKET; i++) {
                 const int x = bx + i % RENDER_BLOCK_W, y = by + i / RENDER_BLOCK_W;
                 if (x < x0 + RENDER_TILE_SIZE && x < vp[2] && y < y0 + RENDER_TILE_SIZE &&
-                    y < vp[3] && primary_ray(pass, &cache, x, y, pk.org[i], pk.dir[i],
+                    y < vp[3] && primary_ray(&cache, x, y, pk.org[i], pk.dir[i],
                                              &pk.tmax[i], &cone[i])) {
                     pk.tmin[i] = 0.0f;
                     pk.active |= 1u << i;
@@ -580,7 +583,7 @@ void render_tile(struct render_pass *pass, uint32_t tile, int worker)
             float *px = &pass->fb[4 * ((size_t)(vp[1] + y) * pass->fb_width + vp[0] + x)];
             float org[3], dir[3], tmax;
             struct shade_cone cone;
-            if (!primary_ray(pass, &cache, x, y, org, dir, &tmax, &cone)) {
+            if (!primary_ray(&cache, x, y, org, dir, &tmax, &cone)) {
                 memcpy(px, st->clear_color, 4 * sizeof(float));
                 continue;
             }
