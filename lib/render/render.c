@@ -337,8 +337,15 @@ static int primary_ray(const struct unproject_cache *cache, int px, int py, floa
     double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     if (!(len > 0.0) || !isfinite(len))
         return 0;
-    for (int k = 0; k < 3; k++) {
+#if RENDER_PAIRS
+    /* x and y divided in one pair: the same quotients. */
+    _mm_storeu_pd(d, _mm_div_pd(_mm_loadu_pd(d), _mm_set1_pd(len)));
+    d[2] /= len;
+#else
+    for (int k = 0; k < 3; k++)
         d[k] /= len;
+#endif
+    for (int k = 0; k < 3; k++) {
         org[k] = (float)near_pt[k];
         dir[k] = (float)d[k];
     }
