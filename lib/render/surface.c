@@ -235,17 +235,34 @@ static float texture_lod(const struct shade_context *sc, const struct scene_text
     /* The footprint's axes: e1 along the ray's projection into the plane
      * (any in-plane direction when the ray meets the plane head-on). */
     double along[3], across[3];
+#if SURFACE_PAIRS
+    /* The four quotients by dir_len in two pairs, the three by along_len
+     * in a pair and one: the same quotients. */
+    double q[4];
+    const __m128d len_v = _mm_set1_pd(dir_len);
+    _mm_storeu_pd(q, _mm_div_pd(_mm_set_pd(d[0], dot3d(d, n)), len_v));
+    _mm_storeu_pd(q + 2, _mm_div_pd(_mm_set_pd(d[2], d[1]), len_v));
+    const double dn = q[0];
+    for (int k = 0; k < 3; k++)
+        along[k] = q[1 + k] - dn * n[k];
+#else
     const double dn = dot3d(d, n) / dir_len;
     for (int k = 0; k < 3; k++)
         along[k] = d[k] / dir_len - dn * n[k];
+#endif
     double along_len = sqrt(dot3d(along, along));
     if (!(along_len > 1e-9)) {
         for (int k = 0; k < 3; k++)
             along[k] = w1[k];
         along_len = sqrt(dot3d(along, along));
     }
+#if SURFACE_PAIRS
+    _mm_storeu_pd(along, _mm_div_pd(_mm_loadu_pd(along), _mm_set1_pd(along_len)));
+    along[2] /= along_len;
+#else
     for (int k = 0; k < 3; k++)
         along[k] /= along_len;
+#endif
     cross3d(n, along, across);
     double j[2][2];
     texel_vectors(along, across, w1, w2, nn, nn2, a1, a2, j);
