@@ -188,27 +188,32 @@ static int unproject(const struct render_pass *sh, double x, double y, const dou
 #endif
 }
 
-/* Distances from q0 and q1 to the line through p along the unit vector
+/* Distances from q[0..3] to the line through p along the unit vector
  * d: the same operations for each, in this order. */
-static void distances_to_line(const double q0[3], const double q1[3], const double p[3],
-                              const double d[3], double out[2])
+static void distances_to_line(const double *const q[4], const double p[3], const double d[3],
+                              double out[4])
 {
 #if RENDER_PAIRS
-    __m128d a[3];
-    for (int k = 0; k < 3; k++)
-        a[k] = _mm_sub_pd(_mm_set_pd(q1[k], q0[k]), _mm_set1_pd(p[k]));
-    const __m128d along = _mm_add_pd(_mm_add_pd(_mm_mul_pd(a[0], _mm_set1_pd(d[0])),
-                                                _mm_mul_pd(a[1], _mm_set1_pd(d[1]))),
-                                     _mm_mul_pd(a[2], _mm_set1_pd(d[2])));
-    __m128d r2 = _mm_setzero_pd();
+    __m128d pv[3], dv[3];
     for (int k = 0; k < 3; k++) {
-        const __m128d perp = _mm_sub_pd(a[k], _mm_mul_pd(along, _mm_set1_pd(d[k])));
-        r2 = _mm_add_pd(r2, _mm_mul_pd(perp, perp));
+        pv[k] = _mm_set1_pd(p[k]);
+        dv[k] = _mm_set1_pd(d[k]);
     }
-    _mm_storeu_pd(out, _mm_sqrt_pd(r2));
+    for (int h = 0; h < 4; h += 2) {
+        __m128d a[3];
+        for (int k = 0; k < 3; k++)
+            a[k] = _mm_sub_pd(_mm_set_pd(q[h + 1][k], q[h][k]), pv[k]);
+        const __m128d along = _mm_add_pd(
+            _mm_add_pd(_mm_mul_pd(a[0], dv[0]), _mm_mul_pd(a[1], dv[1])), _mm_mul_pd(a[2], dv[2]));
+        __m128d r2 = _mm_setzero_pd();
+        for (int k = 0; k < 3; k++) {
+            const __m128d perp = _mm_sub_pd(a[k], _mm_mul_pd(along, dv[k]));
+            r2 = _mm_add_pd(r2, _mm_mul_pd(perp, perp));
+        }
+        _mm_storeu_pd(out + h, _mm_sqrt_pd(r2));
+    }
 #else
-    const double *q[2] = {q0, q1};
-    for (int i = 0; i < 2; i++) {
+    for (int i = 0; i < 4; i++) {
         double a[3] = {q[i][0] - p[0], q[i][1] - p[1], q[i][2] - p[2]};
         double along = a[0] * d[0] + a[1] * d[1] + a[2] * d[2];
         double r2 = 0.0;
@@ -358,12 +363,13 @@ static int primary_ray(const struct unproject_cache *cache, int px, int py, floa
     const struct unproject_point *below = right ? unproject_cached(cache, px, py + 1) : NULL;
     if (right && below) {
         /* The neighbours' near distances, then their far ones, x first. */
-        double w_near[2], w_far[2];
-        distances_to_line(right->near_pt, below->near_pt, near_pt, d, w_near);
-        distances_to_line(right->far_pt, below->far_pt, near_pt, d, w_far);
+        const double *const q[4] = {right->near_pt, below->near_pt, right->far_pt,
+                                    below->far_pt};
+        double dist[4]; /* near x, near y, far x, far y */
+        distances_to_line(q, near_pt, d, dist);
         for (int axis = 0; axis < 2; axis++) {
-            width = max_left(width, w_near[axis]);
-            growth = max_left(growth, w_far[axis] - w_near[axis]);
+            width = max_left(width, dist[axis]);
+            growth = max_left(growth, dist[2 + axis] - dist[axis]);
         }
         spread = growth / len;
     }
