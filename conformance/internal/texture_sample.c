@@ -554,8 +554,9 @@ static void ref_sample_level(const struct scene_texture *tex, int level, int lin
 }
 
 /* Every byte value in a 7 x 37 image (odd sizes, all 256 values in each
- * channel), every level, both filters and wraps, at coordinates on and
- * beside texel edges and centres, negative, large and not finite. */
+ * channel), every level, both filters and wraps, trilinear between
+ * levels, at coordinates on and beside texel edges and centres,
+ * negative, large and not finite. */
 static void reference_bits(void)
 {
     struct scene_textures tab;
@@ -605,6 +606,24 @@ static void reference_bits(void)
                                level, linear ? "linear" : "nearest", wrap, st[0], st[1], got[0],
                                got[1], got[2], got[3], want[0], want[1], want[2], want[3]);
                 }
+            /* Trilinear between each pair of levels (the sampler reduces
+             * the coordinates once for both): fine + f (coarse - fine). */
+            tex->min_filter = SCENE_FILTER_LINEAR_MIPMAP_LINEAR;
+            tex->mag_filter = SCENE_FILTER_LINEAR;
+            for (int level = 0; level + 1 < tex->level_count; level++) {
+                const float lambda = (float)level + (float)(n % 7 + 1) / 8.0f;
+                float got[4], want[4], fine[4], coarse[4];
+                scene_texture_sample_lod(tex, lambda, st[0], st[1], got);
+                ref_sample_level(tex, level, 1, st[0], st[1], fine);
+                ref_sample_level(tex, level + 1, 1, st[0], st[1], coarse);
+                const float f = lambda - (float)level;
+                for (int k = 0; k < 4; k++)
+                    want[k] = fine[k] + f * (coarse[k] - fine[k]);
+                if (memcmp(got, want, sizeof(got)) != 0 && bad++ < 5)
+                    CHECKF(0, "lambda %a wrap %d at (%a, %a): %a %a %a %a, want %a %a %a %a",
+                           lambda, wrap, st[0], st[1], got[0], got[1], got[2], got[3], want[0],
+                           want[1], want[2], want[3]);
+            }
         }
     }
     failures += bad;

@@ -131,29 +131,43 @@ static void shared_finish(struct render_pass *sh, struct render_stats *stats)
     sh->secondary = NULL;
 }
 
-/* The near- and far-plane points under viewport position (x, y), in
- * pixels from the viewport's corner, through the inverse projection. */
-static int unproject(const struct render_pass *sh, double x, double y, double near_pt[3],
-                     double far_pt[3])
+/* The products of the inverse projection's first sum that depend on one
+ * viewport coordinate only: m[r] nx for a column (nx = 2 x / w - 1),
+ * m[4 + r] ny for a row, r = 0..3.  A tile computes each column's and
+ * each row's once (struct unproject_cache) instead of per point: the
+ * same expressions, so the same doubles. */
+static void unproject_axis(const struct render_pass *sh, int axis, double c, double out[4])
 {
     const int *vp = sh->job->state->viewport;
-    double ndc_near[3] = {2.0 * x / vp[2] - 1.0, 2.0 * y / vp[3] - 1.0, -1.0};
+    const double n = 2.0 * c / vp[2 + axis] - 1.0;
+    const double *m = sh->inv_projection;
+    for (int r = 0; r < 4; r++)
+        out[r] = m[4 * axis + r] * n;
+}
+
+/* The near- and far-plane points under viewport position (x, y), in
+ * pixels from the viewport's corner, through the inverse projection;
+ * col and row are unproject_axis of x and y. */
+static int unproject(const struct render_pass *sh, double x, double y, const double col[4],
+                     const double row[4], double near_pt[3], double far_pt[3])
+{
 #if RENDER_PAIRS
     /* mat4_project of the near (lane 0, z = -1) and far (lane 1, z = 1)
      * points together: each sum in mat4_project's order, ((m0 x + m1 y) +
      * m2 z) + m3, the shared first sum once. */
+    (void)x;
+    (void)y;
     const double *m = sh->inv_projection;
-    const double nx = ndc_near[0], ny = ndc_near[1];
     const __m128d z = _mm_set_pd(1.0, -1.0);
     const __m128d w = _mm_add_pd(
-        _mm_add_pd(_mm_set1_pd(m[3] * nx + m[7] * ny), _mm_mul_pd(_mm_set1_pd(m[11]), z)),
+        _mm_add_pd(_mm_set1_pd(col[3] + row[3]), _mm_mul_pd(_mm_set1_pd(m[11]), z)),
         _mm_set1_pd(m[15]));
     double wl[2], out[3][2];
     _mm_storeu_pd(wl, w);
     if (wl[0] == 0.0 || wl[1] == 0.0)
         return 0;
     for (int r = 0; r < 3; r++) {
-        __m128d v = _mm_add_pd(_mm_set1_pd(m[r] * nx + m[4 + r] * ny),
+        __m128d v = _mm_add_pd(_mm_set1_pd(col[r] + row[r]),
                                _mm_mul_pd(_mm_set1_pd(m[8 + r]), z));
         _mm_storeu_pd(out[r], _mm_div_pd(_mm_add_pd(v, _mm_set1_pd(m[12 + r])), w));
     }
@@ -164,33 +178,42 @@ static int unproject(const struct render_pass *sh, double x, double y, double ne
     return isfinite(near_pt[0]) && isfinite(near_pt[1]) && isfinite(near_pt[2]) &&
            isfinite(far_pt[0]) && isfinite(far_pt[1]) && isfinite(far_pt[2]);
 #else
+    (void)col;
+    (void)row;
+    const int *vp = sh->job->state->viewport;
+    double ndc_near[3] = {2.0 * x / vp[2] - 1.0, 2.0 * y / vp[3] - 1.0, -1.0};
     double ndc_far[3] = {ndc_near[0], ndc_near[1], 1.0};
     return mat4_project(sh->inv_projection, ndc_near, near_pt) &&
            mat4_project(sh->inv_projection, ndc_far, far_pt);
 #endif
 }
 
-/* Distances from q0 and q1 to the line through p along the unit vector
+/* Distances from q[0..3] to the line through p along the unit vector
  * d: the same operations for each, in this order. */
-static void distances_to_line(const double q0[3], const double q1[3], const double p[3],
-                              const double d[3], double out[2])
+static void distances_to_line(const double *const q[4], const double p[3], const double d[3],
+                              double out[4])
 {
 #if RENDER_PAIRS
-    __m128d a[3];
-    for (int k = 0; k < 3; k++)
-        a[k] = _mm_sub_pd(_mm_set_pd(q1[k], q0[k]), _mm_set1_pd(p[k]));
-    const __m128d along = _mm_add_pd(_mm_add_pd(_mm_mul_pd(a[0], _mm_set1_pd(d[0])),
-                                                _mm_mul_pd(a[1], _mm_set1_pd(d[1]))),
-                                     _mm_mul_pd(a[2], _mm_set1_pd(d[2])));
-    __m128d r2 = _mm_setzero_pd();
+    __m128d pv[3], dv[3];
     for (int k = 0; k < 3; k++) {
-        const __m128d perp = _mm_sub_pd(a[k], _mm_mul_pd(along, _mm_set1_pd(d[k])));
-        r2 = _mm_add_pd(r2, _mm_mul_pd(perp, perp));
+        pv[k] = _mm_set1_pd(p[k]);
+        dv[k] = _mm_set1_pd(d[k]);
     }
-    _mm_storeu_pd(out, _mm_sqrt_pd(r2));
+    for (int h = 0; h < 4; h += 2) {
+        __m128d a[3];
+        for (int k = 0; k < 3; k++)
+            a[k] = _mm_sub_pd(_mm_set_pd(q[h + 1][k], q[h][k]), pv[k]);
+        const __m128d along = _mm_add_pd(
+            _mm_add_pd(_mm_mul_pd(a[0], dv[0]), _mm_mul_pd(a[1], dv[1])), _mm_mul_pd(a[2], dv[2]));
+        __m128d r2 = _mm_setzero_pd();
+        for (int k = 0; k < 3; k++) {
+            const __m128d perp = _mm_sub_pd(a[k], _mm_mul_pd(along, dv[k]));
+            r2 = _mm_add_pd(r2, _mm_mul_pd(perp, perp));
+        }
+        _mm_storeu_pd(out + h, _mm_sqrt_pd(r2));
+    }
 #else
-    const double *q[2] = {q0, q1};
-    for (int i = 0; i < 2; i++) {
+    for (int i = 0; i < 4; i++) {
         double a[3] = {q[i][0] - p[0], q[i][1] - p[1], q[i][2] - p[2]};
         double along = a[0] * d[0] + a[1] * d[1] + a[2] * d[2];
         double r2 = 0.0;
@@ -223,13 +246,16 @@ static void distances_to_line(const double q0[3], const double q1[3], const doub
  * Every pixel's ray needs the unprojection of its own centre and of its
  * right and lower neighbours' (the cone), which are other pixels' centres:
  * a tile keeps the unprojected centres of the row it is on and the next
- * one, so that each is computed once instead of three times.  The cached
+ * one, so that each is computed once instead of three times, the whole
+ * row as it enters the cache (a tile reads every point of its rows: its
+ * pixels' and their right neighbours' column), the column's and row's
+ * products once (unproject_axis).  The cached
  * point is the one the direct call gives, bit for bit: unproject at
  * (X + 0.5, Y + 0.5) for whole X, Y, and px + 0.5 + 1 is exactly
  * (px + 1) + 0.5 in double.
  */
 struct unproject_point {
-    signed char state; /* 0 not computed, 1 unprojected, -1 cannot be */
+    signed char state; /* 1 unprojected, -1 cannot be */
     double near_pt[3], far_pt[3];
 };
 
@@ -240,45 +266,61 @@ struct unproject_point {
 struct unproject_cache {
     int x0, y; /* viewport pixel of row[0][0] */
     struct unproject_point rows[UNPROJECT_ROWS][RENDER_TILE_SIZE + 1];
+    double col[RENDER_TILE_SIZE + 1][4]; /* unproject_axis of each column */
+    double row[UNPROJECT_ROWS][4];       /* and of each row */
 };
 
-static void unproject_cache_init(struct unproject_cache *c, int x0, int y)
+static void unproject_cache_rows(const struct render_pass *sh, struct unproject_cache *c,
+                                 int first)
+{
+    for (int r = first; r < UNPROJECT_ROWS; r++) {
+        unproject_axis(sh, 1, c->y + r + 0.5, c->row[r]);
+        for (int i = 0; i <= RENDER_TILE_SIZE; i++) {
+            struct unproject_point *p = &c->rows[r][i];
+            p->state = unproject(sh, c->x0 + i + 0.5, c->y + r + 0.5, c->col[i], c->row[r],
+                                 p->near_pt, p->far_pt)
+                           ? 1
+                           : -1;
+        }
+    }
+}
+
+static void unproject_cache_init(const struct render_pass *sh, struct unproject_cache *c,
+                                 int x0, int y)
 {
     c->x0 = x0;
     c->y = y;
-    for (int r = 0; r < UNPROJECT_ROWS; r++)
-        for (int i = 0; i <= RENDER_TILE_SIZE; i++)
-            c->rows[r][i].state = 0;
+    for (int i = 0; i <= RENDER_TILE_SIZE; i++)
+        unproject_axis(sh, 0, x0 + i + 0.5, c->col[i]);
+    unproject_cache_rows(sh, c, 0);
 }
 
 /* Moves the cache's first row to y, keeping the rows it already has from
  * y on. */
-static void unproject_cache_row(struct unproject_cache *c, int y)
+static void unproject_cache_row(const struct render_pass *sh, struct unproject_cache *c, int y)
 {
     const int shift = y - c->y;
     if (shift == 0)
         return;
     if (shift < 0 || shift >= UNPROJECT_ROWS) {
-        unproject_cache_init(c, c->x0, y);
+        c->y = y;
+        unproject_cache_rows(sh, c, 0);
         return;
     }
     memmove(c->rows[0], c->rows[shift], (size_t)(UNPROJECT_ROWS - shift) * sizeof(c->rows[0]));
-    for (int r = UNPROJECT_ROWS - shift; r < UNPROJECT_ROWS; r++)
-        for (int i = 0; i <= RENDER_TILE_SIZE; i++)
-            c->rows[r][i].state = 0;
+    memmove(c->row[0], c->row[shift], (size_t)(UNPROJECT_ROWS - shift) * sizeof(c->row[0]));
     c->y = y;
+    unproject_cache_rows(sh, c, UNPROJECT_ROWS - shift);
 }
 
 /* The unprojected centre of pixel (x, y), with x - x0 in
  * [0, RENDER_TILE_SIZE] and y - (the cache's row) in [0, UNPROJECT_ROWS);
  * NULL when it cannot be unprojected.  The point stays in the cache (no
  * copy: a pixel reads three of them). */
-static const struct unproject_point *unproject_cached(const struct render_pass *sh,
-                                                      struct unproject_cache *c, int x, int y)
+static const struct unproject_point *unproject_cached(const struct unproject_cache *c, int x,
+                                                      int y)
 {
-    struct unproject_point *p = &c->rows[y - c->y][x - c->x0];
-    if (p->state == 0)
-        p->state = unproject(sh, x + 0.5, y + 0.5, p->near_pt, p->far_pt) ? 1 : -1;
+    const struct unproject_point *p = &c->rows[y - c->y][x - c->x0];
     return p->state > 0 ? p : NULL;
 }
 
@@ -289,10 +331,10 @@ static double max_left(double x, double y)
     return y > x ? y : x;
 }
 
-static int primary_ray(const struct render_pass *sh, struct unproject_cache *cache, int px,
-                       int py, float org[3], float dir[3], float *tmax, struct shade_cone *cone)
+static int primary_ray(const struct unproject_cache *cache, int px, int py, float org[3],
+                       float dir[3], float *tmax, struct shade_cone *cone)
 {
-    const struct unproject_point *centre = unproject_cached(sh, cache, px, py);
+    const struct unproject_point *centre = unproject_cached(cache, px, py);
     if (!centre)
         return 0;
     const double *near_pt = centre->near_pt, *far_pt = centre->far_pt;
@@ -300,8 +342,15 @@ static int primary_ray(const struct render_pass *sh, struct unproject_cache *cac
     double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     if (!(len > 0.0) || !isfinite(len))
         return 0;
-    for (int k = 0; k < 3; k++) {
+#if RENDER_PAIRS
+    /* x and y divided in one pair: the same quotients. */
+    _mm_storeu_pd(d, _mm_div_pd(_mm_loadu_pd(d), _mm_set1_pd(len)));
+    d[2] /= len;
+#else
+    for (int k = 0; k < 3; k++)
         d[k] /= len;
+#endif
+    for (int k = 0; k < 3; k++) {
         org[k] = (float)near_pt[k];
         dir[k] = (float)d[k];
     }
@@ -310,16 +359,17 @@ static int primary_ray(const struct render_pass *sh, struct unproject_cache *cac
      * larger of the two quotients is the quotient of the larger (a
      * correctly rounded division by len > 0 keeps the order). */
     double width = 0.0, growth = 0.0, spread = 0.0;
-    const struct unproject_point *right = unproject_cached(sh, cache, px + 1, py);
-    const struct unproject_point *below = right ? unproject_cached(sh, cache, px, py + 1) : NULL;
+    const struct unproject_point *right = unproject_cached(cache, px + 1, py);
+    const struct unproject_point *below = right ? unproject_cached(cache, px, py + 1) : NULL;
     if (right && below) {
         /* The neighbours' near distances, then their far ones, x first. */
-        double w_near[2], w_far[2];
-        distances_to_line(right->near_pt, below->near_pt, near_pt, d, w_near);
-        distances_to_line(right->far_pt, below->far_pt, near_pt, d, w_far);
+        const double *const q[4] = {right->near_pt, below->near_pt, right->far_pt,
+                                    below->far_pt};
+        double dist[4]; /* near x, near y, far x, far y */
+        distances_to_line(q, near_pt, d, dist);
         for (int axis = 0; axis < 2; axis++) {
-            width = max_left(width, w_near[axis]);
-            growth = max_left(growth, w_far[axis] - w_near[axis]);
+            width = max_left(width, dist[axis]);
+            growth = max_left(growth, dist[2 + axis] - dist[axis]);
         }
         spread = growth / len;
     }
@@ -464,9 +514,9 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
      * once, where a cache per block made the blocks' right and lower
      * neighbours a second time. */
     struct unproject_cache cache;
-    unproject_cache_init(&cache, x0, y0);
+    unproject_cache_init(pass, &cache, x0, y0);
     for (int by = y0; by < y0 + RENDER_TILE_SIZE && by < vp[3]; by += RENDER_BLOCK_H) {
-        unproject_cache_row(&cache, by);
+        unproject_cache_row(pass, &cache, by);
         for (int bx = x0; bx < x0 + RENDER_TILE_SIZE && bx < vp[2]; bx += RENDER_BLOCK_W) {
             struct trace_packet pk;
             struct shade_cone cone[TRACE_PACKET];
@@ -475,7 +525,7 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
             for (int i = 0; i < TRACE_PACKET; i++) {
                 const int x = bx + i % RENDER_BLOCK_W, y = by + i / RENDER_BLOCK_W;
                 if (x < x0 + RENDER_TILE_SIZE && x < vp[2] && y < y0 + RENDER_TILE_SIZE &&
-                    y < vp[3] && primary_ray(pass, &cache, x, y, pk.org[i], pk.dir[i],
+                    y < vp[3] && primary_ray(&cache, x, y, pk.org[i], pk.dir[i],
                                              &pk.tmax[i], &cone[i])) {
                     pk.tmin[i] = 0.0f;
                     pk.active |= 1u << i;
@@ -548,14 +598,14 @@ void render_tile(struct render_pass *pass, uint32_t tile, int worker)
         return;
     }
     struct unproject_cache cache;
-    unproject_cache_init(&cache, x0, y0);
+    unproject_cache_init(pass, &cache, x0, y0);
     for (int y = y0; y < y0 + RENDER_TILE_SIZE && y < vp[3]; y++) {
-        unproject_cache_row(&cache, y);
+        unproject_cache_row(pass, &cache, y);
         for (int x = x0; x < x0 + RENDER_TILE_SIZE && x < vp[2]; x++) {
             float *px = &pass->fb[4 * ((size_t)(vp[1] + y) * pass->fb_width + vp[0] + x)];
             float org[3], dir[3], tmax;
             struct shade_cone cone;
-            if (!primary_ray(pass, &cache, x, y, org, dir, &tmax, &cone)) {
+            if (!primary_ray(&cache, x, y, org, dir, &tmax, &cone)) {
                 memcpy(px, st->clear_color, 4 * sizeof(float));
                 continue;
             }

@@ -12,6 +12,16 @@
 
 #include "base/mat4.h"
 
+/* The level of detail maps its footprint's two axes to texels in the two
+ * SSE2 lanes: IEEE operations lane by lane, the same doubles as one axis
+ * at a time (a scalar path under RT_NO_SIMD or without SSE2). */
+#if defined(__SSE2__) && !defined(RT_NO_SIMD)
+#include <emmintrin.h>
+#define SURFACE_PAIRS 1
+#else
+#define SURFACE_PAIRS 0
+#endif
+
 static void transform_normal(const double m[16], const float in[3], float out[3])
 {
     for (int r = 0; r < 3; r++)
@@ -44,6 +54,7 @@ static void cross3d(const double a[3], const double b[3], double out[3])
     out[2] = a[0] * b[1] - a[1] * b[0];
 }
 
+#if !SURFACE_PAIRS
 /* The level-0 texel vector of the in-plane vector e of the triangle
  * with world edges w1, w2 (normal nn = w1 x w2, |nn|^2 = nn2) and texel
  * edges a1, a2: e = alpha w1 + beta w2 maps to alpha a1 + beta a2. */
@@ -57,6 +68,56 @@ static void texel_vector(const double e[3], const double w1[3], const double w2[
     const double alpha = dot3d(ew2, nn) / nn2, beta = dot3d(w1e, nn) / nn2;
     out[0] = alpha * a1[0] + beta * a2[0];
     out[1] = alpha * a1[1] + beta * a2[1];
+}
+#endif
+
+/* texel_vector of e (out[0]) and of f (out[1]) together: lane 0 e,
+ * lane 1 f, each lane texel_vector's operations in its order. */
+static void texel_vectors(const double e[3], const double f[3], const double w1[3],
+                          const double w2[3], const double nn[3], double nn2, const double a1[2],
+                          const double a2[2], double out[2][2])
+{
+#if SURFACE_PAIRS
+    __m128d x[3], w1v[3], w2v[3];
+    for (int k = 0; k < 3; k++) {
+        x[k] = _mm_set_pd(f[k], e[k]);
+        w1v[k] = _mm_set1_pd(w1[k]);
+        w2v[k] = _mm_set1_pd(w2[k]);
+    }
+    /* ew2 = x cross w2, w1e = w1 cross x (cross3d's order). */
+    const __m128d ew2[3] = {
+        _mm_sub_pd(_mm_mul_pd(x[1], w2v[2]), _mm_mul_pd(x[2], w2v[1])),
+        _mm_sub_pd(_mm_mul_pd(x[2], w2v[0]), _mm_mul_pd(x[0], w2v[2])),
+        _mm_sub_pd(_mm_mul_pd(x[0], w2v[1]), _mm_mul_pd(x[1], w2v[0]))};
+    const __m128d w1e[3] = {
+        _mm_sub_pd(_mm_mul_pd(w1v[1], x[2]), _mm_mul_pd(w1v[2], x[1])),
+        _mm_sub_pd(_mm_mul_pd(w1v[2], x[0]), _mm_mul_pd(w1v[0], x[2])),
+        _mm_sub_pd(_mm_mul_pd(w1v[0], x[1]), _mm_mul_pd(w1v[1], x[0]))};
+    const __m128d n0 = _mm_set1_pd(nn[0]), n1 = _mm_set1_pd(nn[1]), n2 = _mm_set1_pd(nn[2]);
+    const __m128d q = _mm_set1_pd(nn2);
+    const __m128d alpha = _mm_div_pd(
+        _mm_add_pd(_mm_add_pd(_mm_mul_pd(ew2[0], n0), _mm_mul_pd(ew2[1], n1)),
+                   _mm_mul_pd(ew2[2], n2)),
+        q);
+    const __m128d beta = _mm_div_pd(
+        _mm_add_pd(_mm_add_pd(_mm_mul_pd(w1e[0], n0), _mm_mul_pd(w1e[1], n1)),
+                   _mm_mul_pd(w1e[2], n2)),
+        q);
+    const __m128d o0 = _mm_add_pd(_mm_mul_pd(alpha, _mm_set1_pd(a1[0])),
+                                  _mm_mul_pd(beta, _mm_set1_pd(a2[0])));
+    const __m128d o1 = _mm_add_pd(_mm_mul_pd(alpha, _mm_set1_pd(a1[1])),
+                                  _mm_mul_pd(beta, _mm_set1_pd(a2[1])));
+    double l0[2], l1[2];
+    _mm_storeu_pd(l0, o0);
+    _mm_storeu_pd(l1, o1);
+    out[0][0] = l0[0];
+    out[0][1] = l1[0];
+    out[1][0] = l0[1];
+    out[1][1] = l1[1];
+#else
+    texel_vector(e, w1, w2, nn, nn2, a1, a2, out[0]);
+    texel_vector(f, w1, w2, nn, nn2, a1, a2, out[1]);
+#endif
 }
 
 /* The cache entry of the hit's triangle (surface_cache), emptied when it
@@ -174,21 +235,38 @@ static float texture_lod(const struct shade_context *sc, const struct scene_text
     /* The footprint's axes: e1 along the ray's projection into the plane
      * (any in-plane direction when the ray meets the plane head-on). */
     double along[3], across[3];
+#if SURFACE_PAIRS
+    /* The four quotients by dir_len in two pairs, the three by along_len
+     * in a pair and one: the same quotients. */
+    double q[4];
+    const __m128d len_v = _mm_set1_pd(dir_len);
+    _mm_storeu_pd(q, _mm_div_pd(_mm_set_pd(d[0], dot3d(d, n)), len_v));
+    _mm_storeu_pd(q + 2, _mm_div_pd(_mm_set_pd(d[2], d[1]), len_v));
+    const double dn = q[0];
+    for (int k = 0; k < 3; k++)
+        along[k] = q[1 + k] - dn * n[k];
+#else
     const double dn = dot3d(d, n) / dir_len;
     for (int k = 0; k < 3; k++)
         along[k] = d[k] / dir_len - dn * n[k];
+#endif
     double along_len = sqrt(dot3d(along, along));
     if (!(along_len > 1e-9)) {
         for (int k = 0; k < 3; k++)
             along[k] = w1[k];
         along_len = sqrt(dot3d(along, along));
     }
+#if SURFACE_PAIRS
+    _mm_storeu_pd(along, _mm_div_pd(_mm_loadu_pd(along), _mm_set1_pd(along_len)));
+    along[2] /= along_len;
+#else
     for (int k = 0; k < 3; k++)
         along[k] /= along_len;
+#endif
     cross3d(n, along, across);
-    double ja[2], jb[2];
-    texel_vector(along, w1, w2, nn, nn2, a1, a2, ja);
-    texel_vector(across, w1, w2, nn, nn2, a1, a2, jb);
+    double j[2][2];
+    texel_vectors(along, across, w1, w2, nn, nn2, a1, a2, j);
+    const double *ja = j[0], *jb = j[1];
     /* major = hypot(ja) width / cosine, minor = hypot(jb) width: major
      * wins when |ja|^2 > |jb|^2 cosine^2 by the margin, minor when the
      * reverse holds; NaNs fail both tests and take the full max. */

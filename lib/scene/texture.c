@@ -13,6 +13,16 @@
 #include "base/alloc.h"
 #include "base/name_table.h"
 
+/* The bilinear filter converts and blends a texel's four channels in the
+ * SSE lanes: IEEE operations lane by lane, the same floats as one channel
+ * at a time (a scalar path under RT_NO_SIMD or without SSE2). */
+#if defined(__SSE2__) && !defined(RT_NO_SIMD)
+#include <emmintrin.h>
+#define TEXTURE_LANES 1
+#else
+#define TEXTURE_LANES 0
+#endif
+
 /* First table size: a scene has far fewer textures than objects, so
  * smaller than the object table's 64 (object.c). */
 #define TEXTURE_TABLE_MIN_CAPACITY 16u
@@ -332,14 +342,30 @@ static void fetch_texel(const struct scene_texture_level *lv, int i, int j, floa
         rgba[k] = unit8[p[k]];
 }
 
-void scene_texture_sample_level(const struct scene_texture *tex, int level,
-                                enum scene_texture_filter filter, float s, float t,
-                                float rgba[4])
+#if TEXTURE_LANES
+/* The texel's channels b / 255 in four lanes: each the correctly rounded
+ * quotient of the byte (exact in float) by 255, the value unit8 holds. */
+static __m128 texel_lanes(const struct scene_texture_level *lv, int i, int j)
+{
+    const uint8_t *p = &lv->texels[4 * ((size_t)j * (size_t)lv->width + (size_t)i)];
+    int32_t bits;
+    memcpy(&bits, p, sizeof(bits));
+    const __m128i zero = _mm_setzero_si128();
+    const __m128i b = _mm_unpacklo_epi16(_mm_unpacklo_epi8(_mm_cvtsi32_si128(bits), zero), zero);
+    return _mm_div_ps(_mm_cvtepi32_ps(b), _mm_set1_ps(255.0f));
+}
+#endif
+
+/* scene_texture_sample_level with the coordinates already reduced
+ * (reduce_coord), which do not depend on the level. */
+static void sample_level_reduced(const struct scene_texture *tex, int level,
+                                 enum scene_texture_filter filter, double rs, double rt,
+                                 float rgba[4])
 {
     const struct scene_texture_level *lv = &tex->levels[level];
     const int w = lv->width, h = lv->height;
-    const double u = reduce_coord(s, tex->wrap_s) * w;
-    const double v = reduce_coord(t, tex->wrap_t) * h;
+    const double u = rs * w;
+    const double v = rt * h;
     if (filter == SCENE_FILTER_NEAREST || filter == SCENE_FILTER_NEAREST_MIPMAP_NEAREST ||
         filter == SCENE_FILTER_NEAREST_MIPMAP_LINEAR) {
         /* GL 1.1 eq. 3.16: the texel whose square contains (u, v). */
@@ -357,18 +383,35 @@ void scene_texture_sample_level(const struct scene_texture *tex, int level,
     const int i1 = wrap_index((long)fi + 1, w, tex->wrap_s);
     const int j0 = wrap_index((long)fj, h, tex->wrap_t);
     const int j1 = wrap_index((long)fj + 1, h, tex->wrap_t);
+    /* The same weights as nested interpolations: where the four texels
+     * agree the result is exactly their value (an opaque alpha stays 1). */
+#if TEXTURE_LANES
+    const __m128 c00 = texel_lanes(lv, i0, j0), c10 = texel_lanes(lv, i1, j0);
+    const __m128 c01 = texel_lanes(lv, i0, j1), c11 = texel_lanes(lv, i1, j1);
+    const __m128 va = _mm_set1_ps(a);
+    const __m128 bottom = _mm_add_ps(c00, _mm_mul_ps(va, _mm_sub_ps(c10, c00)));
+    const __m128 top = _mm_add_ps(c01, _mm_mul_ps(va, _mm_sub_ps(c11, c01)));
+    _mm_storeu_ps(rgba, _mm_add_ps(bottom, _mm_mul_ps(_mm_set1_ps(b), _mm_sub_ps(top, bottom))));
+#else
     float c00[4], c10[4], c01[4], c11[4];
     fetch_texel(lv, i0, j0, c00);
     fetch_texel(lv, i1, j0, c10);
     fetch_texel(lv, i0, j1, c01);
     fetch_texel(lv, i1, j1, c11);
-    /* The same weights as nested interpolations: where the four texels
-     * agree the result is exactly their value (an opaque alpha stays 1). */
     for (int k = 0; k < 4; k++) {
         float bottom = c00[k] + a * (c10[k] - c00[k]);
         float top = c01[k] + a * (c11[k] - c01[k]);
         rgba[k] = bottom + b * (top - bottom);
     }
+#endif
+}
+
+void scene_texture_sample_level(const struct scene_texture *tex, int level,
+                                enum scene_texture_filter filter, float s, float t,
+                                float rgba[4])
+{
+    sample_level_reduced(tex, level, filter, reduce_coord(s, tex->wrap_s),
+                         reduce_coord(t, tex->wrap_t), rgba);
 }
 
 void scene_texture_sample(const struct scene_texture *tex, enum scene_texture_filter filter,
@@ -419,8 +462,9 @@ void scene_texture_sample_lod(const struct scene_texture *tex, float lambda, flo
     }
     const float d1 = floorf(lambda), f = lambda - d1;
     float fine[4], coarse[4];
-    scene_texture_sample_level(tex, (int)d1, min, s, t, fine);
-    scene_texture_sample_level(tex, (int)d1 + 1, min, s, t, coarse);
+    const double rs = reduce_coord(s, tex->wrap_s), rt = reduce_coord(t, tex->wrap_t);
+    sample_level_reduced(tex, (int)d1, min, rs, rt, fine);
+    sample_level_reduced(tex, (int)d1 + 1, min, rs, rt, coarse);
     /* As the bilinear weights: equal levels give exactly their value. */
     for (int k = 0; k < 4; k++)
         rgba[k] = fine[k] + f * (coarse[k] - fine[k]);
