@@ -102,13 +102,9 @@ struct tri4_lanes {
  * with this t_max might accept; every other lane it rejects.  With out
  * not NULL, also the lanes' float values for isect_triangle_finish.
  */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline unsigned tri4_candidates_lanes_inline(const struct tri4_ray *r,
-                                                    const struct tri4_packet *p,
-                                                    unsigned valid, float t_max,
-                                                    struct tri4_lanes *out)
+static inline unsigned tri4_candidates_lanes(const struct tri4_ray *r,
+                                             const struct tri4_packet *p, unsigned valid,
+                                             float t_max, struct tri4_lanes *out)
 {
     /* Unaligned loads: a layout's packets are 32-byte aligned, but a
      * packet elsewhere (a test's, on the stack) need not be; on aligned
@@ -205,17 +201,6 @@ static inline unsigned tri4_candidates_lanes_inline(const struct tri4_ray *r,
         }
     }
     return mask;
-}
-
-/* tri4_candidates_lanes_inline where the compiler chooses whether to
- * inline: the closest-hit walk is faster with the filter out of line
- * (GCC's register allocation around the finish), the any-hit walk with
- * it inline (traverse_wide.h). */
-static inline unsigned tri4_candidates_lanes(const struct tri4_ray *r,
-                                             const struct tri4_packet *p, unsigned valid,
-                                             float t_max, struct tri4_lanes *out)
-{
-    return tri4_candidates_lanes_inline(r, p, valid, t_max, out);
 }
 
 static inline unsigned tri4_candidates(const struct tri4_ray *r, const struct tri4_packet *p,

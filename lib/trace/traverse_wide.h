@@ -74,13 +74,7 @@ static inline int wide_leaf_impl(struct wide_state *s, const struct tri4_packet 
         /* An any-hit walk returns at its first hit: found stays 0. */
         float limit = !s->any_hit && s->found ? isect_next_up(s->best) : s->best;
         struct tri4_lanes lanes;
-        /* The filter inline in the any-hit walk only: out of line it
-         * costs a call and its argument set-up per packet; inline in the
-         * closest-hit walk it costs more spills around the finish than
-         * it saves (measured, docs/performance.md). */
-        unsigned mask =
-            s->any_hit ? tri4_candidates_lanes_inline(&s->r4, p, (1u << n) - 1u, limit, &lanes)
-                       : tri4_candidates_lanes(&s->r4, p, (1u << n) - 1u, limit, &lanes);
+        unsigned mask = tri4_candidates_lanes(&s->r4, p, (1u << n) - 1u, limit, &lanes);
         while (mask) {
             const unsigned l = (unsigned)__builtin_ctz(mask);
             mask &= mask - 1u;
