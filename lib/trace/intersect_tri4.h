@@ -12,12 +12,13 @@
  * vertices minus the origin, the shear, the three edge functions, the
  * sign test, det, the sheared depths and their range, the ray's
  * interval through the triangle's box), and rejects a lane exactly where
- * isect_triangle returns 0 on those values.  Every other lane goes to
- * isect_triangle itself, which decides it with its own double-precision
- * fallback, t, clamp and tie rule: a lane with an edge function of
- * exactly 0 (the paper's sec. 4 fallback case) always does.  So a lane
- * the filter keeps costs one scalar test more, and one it rejects is one
- * isect_triangle rejects.  Bit for bit because
+ * isect_triangle returns 0 on those values.  Every other lane is decided
+ * by the rest of isect_triangle on the filter's floats (tri4_lane_test):
+ * its double-precision fallback, t, clamp and tie rule.  A lane with an
+ * edge function of exactly 0 (the paper's sec. 4 fallback case) is kept
+ * unless its signs differ strictly or its depth range or box interval
+ * rejects it, which decide it whatever the double step gives.  So a lane
+ * the filter rejects is one isect_triangle rejects.  Bit for bit because
  * - addition, subtraction and multiplication are IEEE single operations
  *   lane by lane, never fused (-ffp-contract=off, and the intrinsics are
  *   separate multiplies and adds);
@@ -89,6 +90,10 @@ struct tri4_lanes {
     float U[4], V[4], W[4], det[4];
     float Az[4], Bz[4], Cz[4];
     float size[4], t_lo[4], t_hi[4];
+    /* The sheared x, y of the vertices, written only when a lane is
+     * deferred: its double-precision edge functions are computed from
+     * them (tri4_lane_test). */
+    float Ax[4], Ay[4], Bx[4], By[4], Cx[4], Cy[4];
     unsigned deferred;
 };
 
@@ -127,36 +132,46 @@ static inline unsigned tri4_candidates_lanes(const struct tri4_ray *r,
 
     const __m128 zero = _mm_setzero_ps();
     /* Lanes with an edge function of exactly 0: the scalar test's
-     * double-precision fallback decides them. */
+     * double-precision fallback decides their signs. */
     const __m128 on_edge =
         _mm_or_ps(_mm_or_ps(_mm_cmpeq_ps(U, zero), _mm_cmpeq_ps(V, zero)), _mm_cmpeq_ps(W, zero));
-    const unsigned deferred = (unsigned)_mm_movemask_ps(on_edge) & valid;
 
     const __m128 any_neg =
         _mm_or_ps(_mm_or_ps(_mm_cmplt_ps(U, zero), _mm_cmplt_ps(V, zero)), _mm_cmplt_ps(W, zero));
     const __m128 any_pos =
         _mm_or_ps(_mm_or_ps(_mm_cmpgt_ps(U, zero), _mm_cmpgt_ps(V, zero)), _mm_cmpgt_ps(W, zero));
-    __m128 keep = _mm_andnot_ps(_mm_and_ps(any_neg, any_pos), _mm_cmpeq_ps(zero, zero));
+    /* Signs that differ strictly: outside, deferred lanes too.  A
+     * non-zero float edge function has the sign of its double
+     * recomputation: fl(fl(a) - fl(b)) > 0 needs fl(a) > fl(b), hence
+     * a > b (rounding is monotone), and the double difference of the
+     * exact products a - b > 0 rounds to a positive double (a
+     * subtraction that underflows is exact).  So the scalar test's
+     * double signs differ as well and it returns 0. */
+    const __m128 mixed = _mm_and_ps(any_neg, any_pos);
 
-    const __m128 det = _mm_add_ps(_mm_add_ps(U, V), W);
-    const __m128 abs_det = _mm_andnot_ps(_mm_set1_ps(-0.0f), det);
-    keep = _mm_and_ps(keep, _mm_cmpneq_ps(det, zero));
-    keep = _mm_and_ps(keep, _mm_cmplt_ps(abs_det, _mm_set1_ps(INFINITY)));
-
+    /* The rejections that do not depend on U, V, W: the sheared depths'
+     * range and the ray's interval through the triangle's box.  They
+     * hold for deferred lanes too (the scalar test rejects on them after
+     * its double step, and every rejection returns the same 0). */
     const __m128 Az = _mm_mul_ps(r->sz, az);
     const __m128 Bz = _mm_mul_ps(r->sz, bz);
     const __m128 Cz = _mm_mul_ps(r->sz, cz);
     const __m128 z_lo = _mm_min_ps(Az, _mm_min_ps(Bz, Cz));
     const __m128 z_hi = _mm_max_ps(Az, _mm_max_ps(Bz, Cz));
     const __m128 limit = _mm_set1_ps(t_max);
-    keep = _mm_and_ps(keep, _mm_cmpge_ps(z_hi, r->tmin));
-    keep = _mm_and_ps(keep, _mm_cmplt_ps(z_lo, limit));
-
     __m128 t_lo = z_lo;
     __m128 t_hi = z_hi;
     tri4_slab(ax, bx, cx, r->inv_x, r->neg_x, &t_lo, &t_hi);
     tri4_slab(ay, by, cy, r->inv_y, r->neg_y, &t_lo, &t_hi);
-    keep = _mm_and_ps(keep, _mm_cmplt_ps(t_lo, limit));
+    const __m128 geom = _mm_andnot_ps(
+        mixed, _mm_and_ps(_mm_and_ps(_mm_cmpge_ps(z_hi, r->tmin), _mm_cmplt_ps(z_lo, limit)),
+                          _mm_cmplt_ps(t_lo, limit)));
+    const unsigned deferred = (unsigned)_mm_movemask_ps(_mm_and_ps(on_edge, geom)) & valid;
+
+    const __m128 det = _mm_add_ps(_mm_add_ps(U, V), W);
+    const __m128 abs_det = _mm_andnot_ps(_mm_set1_ps(-0.0f), det);
+    __m128 keep = _mm_and_ps(geom, _mm_cmpneq_ps(det, zero));
+    keep = _mm_and_ps(keep, _mm_cmplt_ps(abs_det, _mm_set1_ps(INFINITY)));
     const unsigned mask = ((unsigned)_mm_movemask_ps(keep) & valid) | deferred;
     if (out && mask) {
         /* isect_triangle's size: max(max(|Ax|, |Ay|), max(|Bx|, |By|)),
@@ -176,6 +191,14 @@ static inline unsigned tri4_candidates_lanes(const struct tri4_ray *r,
         _mm_storeu_ps(out->t_lo, t_lo);
         _mm_storeu_ps(out->t_hi, t_hi);
         out->deferred = deferred;
+        if (deferred) {
+            _mm_storeu_ps(out->Ax, Ax);
+            _mm_storeu_ps(out->Ay, Ay);
+            _mm_storeu_ps(out->Bx, Bx);
+            _mm_storeu_ps(out->By, By);
+            _mm_storeu_ps(out->Cx, Cx);
+            _mm_storeu_ps(out->Cy, Cy);
+        }
     }
     return mask;
 }
@@ -186,19 +209,11 @@ static inline unsigned tri4_candidates(const struct tri4_ray *r, const struct tr
     return tri4_candidates_lanes(r, p, valid, t_max, NULL);
 }
 
-/* Lane l of p as the three vertices isect_triangle takes. */
-static inline void tri4_lane(const struct tri4_packet *p, unsigned l, float v[9])
-{
-    for (int j = 0; j < 3; j++) {
-        for (int k = 0; k < 3; k++)
-            v[3 * j + k] = p->v[j][k][l];
-    }
-}
-
 /*
  * isect_triangle on lane l of p, which tri4_candidates_lanes kept (with
  * a limit at least t_max) and whose floats it wrote to `lanes`: a
- * deferred lane goes to isect_triangle itself; any other gets the
+ * deferred lane first gets isect_triangle's double-precision edge
+ * functions on those floats (no second float pass); every lane gets the
  * rejections on t_max again with this t_max (z_lo < t_max, t_lo <
  * t_max: the limit may have shrunk since the filter ran) and then
  * isect_triangle_finish9, or isect_triangle_occludes9 for any_hit.  Each
@@ -209,10 +224,29 @@ static inline int tri4_lane_test(const struct trace_ray *ray, const struct tri4_
                                  const struct tri4_lanes *lanes, unsigned l, int any_hit,
                                  float t_max, float *t, float *u, float *w)
 {
+    float U = lanes->U[l], V = lanes->V[l], W = lanes->W[l], det = lanes->det[l];
     if (lanes->deferred >> l & 1u) {
-        float v[9];
-        tri4_lane(p, l, v);
-        return isect_triangle(ray, v, v + 3, v + 6, t_max, t, u, w);
+        /* isect_triangle's sec. 4 step on the filter's sheared floats
+         * (the same floats it computes): the edge functions in double,
+         * their signs, then its float sign and det tests on the values
+         * rounded back.  Its depth-range and box-interval rejections
+         * follow below as for any lane. */
+        const double Ax = lanes->Ax[l], Ay = lanes->Ay[l];
+        const double Bx = lanes->Bx[l], By = lanes->By[l];
+        const double Cx = lanes->Cx[l], Cy = lanes->Cy[l];
+        const double dU = Cx * By - Cy * Bx;
+        const double dV = Ax * Cy - Ay * Cx;
+        const double dW = Bx * Ay - By * Ax;
+        if ((dU < 0.0 || dV < 0.0 || dW < 0.0) && (dU > 0.0 || dV > 0.0 || dW > 0.0))
+            return 0;
+        U = (float)dU;
+        V = (float)dV;
+        W = (float)dW;
+        if ((U < 0.0f || V < 0.0f || W < 0.0f) && (U > 0.0f || V > 0.0f || W > 0.0f))
+            return 0;
+        det = U + V + W;
+        if (det == 0.0f || !isfinite(det))
+            return 0;
     }
     const float Az = lanes->Az[l], Bz = lanes->Bz[l], Cz = lanes->Cz[l];
     const float z_lo = isect_min(Az, isect_min(Bz, Cz));
@@ -222,14 +256,13 @@ static inline int tri4_lane_test(const struct trace_ray *ray, const struct tri4_
     if (any_hit)
         return isect_triangle_occludes9(
             ray, p->v[0][0][l], p->v[0][1][l], p->v[0][2][l], p->v[1][0][l], p->v[1][1][l],
-            p->v[1][2][l], p->v[2][0][l], p->v[2][1][l], p->v[2][2][l], lanes->U[l], lanes->V[l],
-            lanes->W[l], lanes->det[l], Az, Bz, Cz, lanes->size[l], lanes->t_lo[l],
-            lanes->t_hi[l], t_max);
-    return isect_triangle_finish9(
-        ray, p->v[0][0][l], p->v[0][1][l], p->v[0][2][l], p->v[1][0][l], p->v[1][1][l],
-        p->v[1][2][l], p->v[2][0][l], p->v[2][1][l], p->v[2][2][l], lanes->U[l], lanes->V[l],
-        lanes->W[l], lanes->det[l], Az, Bz, Cz, lanes->size[l], lanes->t_lo[l], lanes->t_hi[l],
-        t_max, t, u, w);
+            p->v[1][2][l], p->v[2][0][l], p->v[2][1][l], p->v[2][2][l], U, V, W, det, Az, Bz,
+            Cz, lanes->size[l], lanes->t_lo[l], lanes->t_hi[l], t_max);
+    return isect_triangle_finish9(ray, p->v[0][0][l], p->v[0][1][l], p->v[0][2][l],
+                                  p->v[1][0][l], p->v[1][1][l], p->v[1][2][l], p->v[2][0][l],
+                                  p->v[2][1][l], p->v[2][2][l], U, V, W, det, Az, Bz, Cz,
+                                  lanes->size[l], lanes->t_lo[l], lanes->t_hi[l], t_max, t, u,
+                                  w);
 }
 
 #endif

@@ -71,14 +71,15 @@ static inline int wide_leaf_impl(struct wide_state *s, const struct tri4_packet 
         const uint32_t n = count - j < 4 ? count - j : 4;
         if (stats)
             s->triangle_tests += n;
-        float limit = s->found ? isect_next_up(s->best) : s->best;
+        /* An any-hit walk returns at its first hit: found stays 0. */
+        float limit = !s->any_hit && s->found ? isect_next_up(s->best) : s->best;
         struct tri4_lanes lanes;
         unsigned mask = tri4_candidates_lanes(&s->r4, p, (1u << n) - 1u, limit, &lanes);
         while (mask) {
             const unsigned l = (unsigned)__builtin_ctz(mask);
             mask &= mask - 1u;
             float t, u, w;
-            limit = s->found ? isect_next_up(s->best) : s->best;
+            limit = !s->any_hit && s->found ? isect_next_up(s->best) : s->best;
             if (!tri4_lane_test(s->ray, p, &lanes, l, s->any_hit, limit, &t, &u, &w))
                 continue;
             if (s->any_hit) {
@@ -213,7 +214,9 @@ static inline int walk_wide4_impl(const struct bvh4 *wide, struct wide_state *s,
             if (sp == 0)
                 return 0;
             sp--;
-            if (stack[sp].t_entry <= s->box_limit)
+            /* As in walk_wide8_impl: an any-hit walk's box_limit never
+             * shrinks. */
+            if (s->any_hit || stack[sp].t_entry <= s->box_limit)
                 break;
         }
         cur = stack[sp].child;
@@ -392,7 +395,8 @@ static inline int walk_wide8_impl(const struct bvh4 *wide, struct wide_state *s,
                                         _mm256_permutevar8x32_epi32(child, gather));
                     _mm256_storeu_si256((__m256i *)(void *)&st_count[sp],
                                         _mm256_permutevar8x32_epi32(count, gather));
-                    _mm256_storeu_ps(&st_t[sp], _mm256_permutevar8x32_ps(t0, gather));
+                    if (!s->any_hit)
+                        _mm256_storeu_ps(&st_t[sp], _mm256_permutevar8x32_ps(t0, gather));
                     sp += (uint32_t)__builtin_popcount(pm) - 1u;
                     const unsigned l = order >> (3 * (unsigned)__builtin_ctz(pm)) & 7u;
                     cur = n->child[l];
@@ -407,7 +411,11 @@ static inline int walk_wide8_impl(const struct bvh4 *wide, struct wide_state *s,
             if (sp == 0)
                 return 0;
             sp--;
-            if (st_t[sp] <= s->box_limit)
+            /* An any-hit walk ends at its first hit, so its box_limit
+             * never shrinks and every pushed child (entry <= exit <=
+             * box_limit) passes: neither the entry distance nor the
+             * test is needed. */
+            if (s->any_hit || st_t[sp] <= s->box_limit)
                 break;
         }
         cur = st_child[sp];
