@@ -526,16 +526,13 @@ static void texgen(void)
     CHECK_ERR(RT_INVALID_VALUE);
 }
 
-/* rtTexGen(RT_Q): GL divides the generated (or recorded) s and t by the
- * interpolated q per fragment.  s = 0.375 everywhere (red texel) becomes
- * s / q = 0.75 (green) with q generated as 0.5, object- or eye-linear;
- * the sphere map is refused for q, as Mesa refuses it. */
-static void texgen_q(void)
+/* After reset(): a 2 x 1 texture, red then green (nearest), bound and
+ * enabled; object-linear s = `s` everywhere; OBJ the square at z = -5.
+ * Returns the texture for rtDeleteTextures. */
+static RTuint red_green_square(float s)
 {
-    tu_section("rtTexGen(RT_Q): object- and eye-linear q divide s and t");
-    static const unsigned char texels[8] = {255, 0, 0, 255, 0, 255, 0, 255}; /* red, green */
-    static const float s_plane[4] = {0.0f, 0.0f, 0.0f, 0.375f};
-    static const float q_plane[4] = {0.0f, 0.0f, 0.0f, 0.5f};
+    static const unsigned char texels[8] = {255, 0, 0, 255, 0, 255, 0, 255};
+    const float s_plane[4] = {0.0f, 0.0f, 0.0f, s};
     RTuint tex = 0;
     reset();
     rtGenTextures(1, &tex);
@@ -550,6 +547,18 @@ static void texgen_q(void)
     rtNewObject(OBJ);
     square(-5, 1);
     rtEndObject();
+    return tex;
+}
+
+/* rtTexGen(RT_Q): GL divides the generated (or recorded) s and t by the
+ * interpolated q per fragment.  s = 0.375 everywhere (red texel) becomes
+ * s / q = 0.75 (green) with q generated as 0.5, object- or eye-linear;
+ * the sphere map is refused for q, as Mesa refuses it. */
+static void texgen_q(void)
+{
+    tu_section("rtTexGen(RT_Q): object- and eye-linear q divide s and t");
+    static const float q_plane[4] = {0.0f, 0.0f, 0.0f, 0.5f};
+    const RTuint tex = red_green_square(0.375f);
     render_obj();
     CHECK_RGB(pixel(1, 1), 1, 0, 0); /* q = 1 */
     CHECK(!rtIsEnabled(RT_TEXTURE_GEN_Q));
@@ -607,23 +616,8 @@ static void texgen_q(void)
 static void texgen_r(void)
 {
     tu_section("rtTexGen(RT_R): kept, enabled, stacked; a 2D texture does not read r");
-    static const unsigned char texels[8] = {255, 0, 0, 255, 0, 255, 0, 255}; /* red, green */
-    static const float s_plane[4] = {0.0f, 0.0f, 0.0f, 0.75f};
     static const float r_plane[4] = {0.3f, -0.2f, 0.1f, 0.5f};
-    RTuint tex = 0;
-    reset();
-    rtGenTextures(1, &tex);
-    rtBindTexture(RT_TEXTURE_2D, tex);
-    rtTexParameteri(RT_TEXTURE_2D, RT_TEXTURE_MIN_FILTER, RT_NEAREST);
-    rtTexParameteri(RT_TEXTURE_2D, RT_TEXTURE_MAG_FILTER, RT_NEAREST);
-    rtTexImage2D(RT_TEXTURE_2D, 0, RT_RGBA, 2, 1, 0, RT_RGBA, RT_UNSIGNED_BYTE, texels);
-    rtEnable(RT_TEXTURE_2D);
-    rtTexGeni(RT_S, RT_TEXTURE_GEN_MODE, RT_OBJECT_LINEAR);
-    rtTexGenfv(RT_S, RT_OBJECT_PLANE, s_plane);
-    rtEnable(RT_TEXTURE_GEN_S);
-    rtNewObject(OBJ);
-    square(-5, 1);
-    rtEndObject();
+    const RTuint tex = red_green_square(0.75f);
     render_obj();
     CHECK_RGB(pixel(1, 1), 0, 1, 0);
     CHECK(!rtIsEnabled(RT_TEXTURE_GEN_R));
