@@ -395,8 +395,11 @@ static inline int walk_wide8_impl(const struct bvh4 *wide, struct wide_state *s,
                                         _mm256_permutevar8x32_epi32(child, gather));
                     _mm256_storeu_si256((__m256i *)(void *)&st_count[sp],
                                         _mm256_permutevar8x32_epi32(count, gather));
-                    if (!s->any_hit)
-                        _mm256_storeu_ps(&st_t[sp], _mm256_permutevar8x32_ps(t0, gather));
+                    /* Stored for any-hit walks too, which never read it
+                     * (the pop below): one store, and GCC's flow analysis
+                     * then sees every entry written (-Wmaybe-uninitialized
+                     * at -O2 with -fsanitize=thread). */
+                    _mm256_storeu_ps(&st_t[sp], _mm256_permutevar8x32_ps(t0, gather));
                     sp += (uint32_t)__builtin_popcount(pm) - 1u;
                     const unsigned l = order >> (3 * (unsigned)__builtin_ctz(pm)) & 7u;
                     cur = n->child[l];
