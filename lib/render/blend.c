@@ -24,7 +24,6 @@
 #include <string.h>
 
 #include "base/alloc.h"
-#include "base/mat4.h"
 
 #include "render/gl_shade.h"
 #include "render/surface.h"
@@ -137,20 +136,6 @@ static int on_boundary(const struct trace_scene_hit *h)
     return h->u <= eps || h->v <= eps || h->u + h->v >= 1.0f - eps;
 }
 
-/* The eye-space positions of a hit triangle's vertices (its instance's
- * matrix, in double: instances with equal matrices give equal points). */
-static void world_triangle(const struct shade_context *sc, const struct trace_scene_hit *h,
-                           double p[3][3])
-{
-    const struct scene_instance *inst = shade_hit_instance(sc, h);
-    const struct scene_mesh *mesh = &inst->object->mesh;
-    for (int i = 0; i < 3; i++) {
-        const float *f = &mesh->positions[3 * mesh->indices[3 * h->prim + (uint32_t)i]];
-        const double q[3] = {f[0], f[1], f[2]};
-        mat4_transform_point(inst->object_to_world, q, p[i]);
-    }
-}
-
 /* Neighbours in two instances: the shared vertices compared in eye space.
  * GL's rasterisation gives a pixel on an edge to one of the triangles
  * sharing it whatever draw call each came from, so two instances that
@@ -160,8 +145,8 @@ static int neighbours_across(const struct shade_context *sc, const struct trace_
                              const struct trace_scene_hit *b)
 {
     double pa[3][3], pb[3][3];
-    world_triangle(sc, a, pa);
-    world_triangle(sc, b, pb);
+    scene_instance_world_triangle(shade_hit_instance(sc, a), a->prim, pa);
+    scene_instance_world_triangle(shade_hit_instance(sc, b), b->prim, pb);
     int shared = 0;
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)

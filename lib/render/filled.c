@@ -8,7 +8,6 @@
  */
 #include "render/filled.h"
 
-#include "base/mat4.h"
 #include "render/raster.h"
 
 int filled_frame_has_unfilled(const struct scene_frame *frame)
@@ -38,13 +37,8 @@ int filled_face(const struct scene_frame *frame, const struct trace_scene *scene
     const int front_cw = (m->inherit & SCENE_MATERIAL_FRONT_FACE) ? c->front_cw : m->front_cw;
     /* The side the ray comes from, in world (eye) space as gl_shade.c's
      * is_front decides it for camera rays. */
-    const uint32_t *v = &mesh->indices[3 * (size_t)hit->prim];
     double p[3][3];
-    for (int i = 0; i < 3; i++) {
-        const float *po = &mesh->positions[3 * (size_t)v[i]];
-        const double pd[3] = {po[0], po[1], po[2]};
-        mat4_transform_point(inst->object_to_world, pd, p[i]);
-    }
+    scene_instance_world_triangle(inst, hit->prim, p);
     double e1[3], e2[3];
     for (int k = 0; k < 3; k++) {
         e1[k] = p[1][k] - p[0][k];

@@ -187,6 +187,18 @@ struct aabb scene_instance_box(const struct scene_instance *instance)
     return transformed_box(&instance->object->mesh.bounds, instance->object_to_world);
 }
 
+void scene_instance_world_triangle(const struct scene_instance *instance, uint32_t prim,
+                                   double p[3][3])
+{
+    const struct scene_mesh *mesh = &instance->object->mesh;
+    const uint32_t *v = &mesh->indices[3 * (size_t)prim];
+    for (int i = 0; i < 3; i++) {
+        const float *f = &mesh->positions[3 * (size_t)v[i]];
+        const double q[3] = {f[0], f[1], f[2]};
+        mat4_transform_point(instance->object_to_world, q, p[i]);
+    }
+}
+
 static int box_is_finite(const struct aabb *b)
 {
     for (int k = 0; k < 3; k++)

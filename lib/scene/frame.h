@@ -236,6 +236,12 @@ void scene_frame_continue(struct scene_frame *frame);
  * matrix, rounded outwards). */
 struct aabb scene_instance_box(const struct scene_instance *instance);
 
+/* The world-space (eye-space) vertices of triangle `prim` of an
+ * instance, in double under its matrix: instances with equal matrices
+ * give equal points, which the face and shared-edge tests rely on. */
+void scene_instance_world_triangle(const struct scene_instance *instance, uint32_t prim,
+                                   double p[3][3]);
+
 /* Drops every instance of the object from both lists (rtDeleteObjects). */
 void scene_frame_forget_object(struct scene_frame *frame, const struct scene_object *object);
 
