@@ -47,6 +47,10 @@ struct bench_options {
     const char *only; /* --only KEYS: bart-strategies runs only these strategies;
                        * embree: `ours` or `embree` runs only that path */
     int bart_frame_overhead_only; /* `frame-overhead`: only the kitchen frame against bare rays */
+    /* Why the BART kitchen is not among the meshes of `embree` and
+     * `packets` (no data, a load error); NULL when it is there or was not
+     * asked for (--mesh names another mesh).  Those sections print it. */
+    const char *kitchen_skipped;
     int argc;
     char **argv;
 };
@@ -65,7 +69,7 @@ struct bench_camera {
 };
 
 struct bench_mesh {
-    const char *name;        /* "bumpy", "gears", "soup": table and csv key */
+    const char *name;        /* "bumpy", "gears", "soup", "kitchen": table and csv key */
     const char *description; /* one line for the report */
     float *positions;        /* 3 floats per vertex */
     uint32_t *indices;       /* 3 per triangle */
@@ -85,6 +89,14 @@ enum bench_mesh_kind { BENCH_MESH_BUMPY, BENCH_MESH_GEARS, BENCH_MESH_SOUP, BENC
  * zeroed. */
 int bench_mesh_generate(struct bench_mesh *mesh, enum bench_mesh_kind kind, int quick);
 void bench_mesh_release(struct bench_mesh *mesh);
+
+/* The BART kitchen, frame 0, flattened into one mesh (kitchen_mesh.c):
+ * every visible instance's triangles in world space, 3 vertices each, the
+ * file's camera and first light at frame 0.  The fourth mesh of `rtbench
+ * embree` and `rtbench packets`, when the data is found.  Returns 0, or
+ * -1 with *mesh zeroed and a one-line reason in why (no path in it). */
+int bench_kitchen_mesh(const struct bench_options *opts, struct bench_mesh *mesh, char *why,
+                       size_t why_size);
 
 /* The triangles' boxes, as a builder takes them; NULL on failure
  * (free()). */
@@ -257,6 +269,8 @@ int bench_select_layout(const char *name);
 /* The width bench_accel_build collapses to: --layout's, else the
  * table's wide_width (4 for the scalar table, which walks none). */
 uint32_t bench_layout_width(void);
+/* The layout the kernels of "ours" walk: "binary", "bvh4" or "bvh8". */
+const char *bench_layout_name(void);
 
 void bench_kernel_closest(void *ctx, const RTray *rays, uint32_t begin, uint32_t end,
                           struct bench_hit *hits);
@@ -272,6 +286,12 @@ void bench_count_tests(const struct bench_accel *acc, const struct bench_rays *s
 void bench_count_tests_wide(const struct bench_accel *acc, const struct bench_rays *set,
                             double *nodes_per_ray, double *tris_per_ray);
 void bench_accel_release_wide(struct bench_accel *acc);
+/* Node and triangle tests per ray of the walk "ours" runs
+ * (bench_kernel_closest, or bench_kernel_any when any_hit), single-threaded;
+ * *answered_percent: rays that hit (closest) or are occluded (any). */
+void bench_count_tests_ours(const struct bench_accel *acc, const struct bench_rays *set,
+                            int any_hit, double *nodes_per_ray, double *tris_per_ray,
+                            double *answered_percent);
 
 /* ------------------------------------------------------------ statistics */
 
@@ -402,6 +422,10 @@ int bench_error_section(const struct bench_options *opts);
  * the data folder opts selects (--bart-dir, $TRACELIST_BART_DIR, the build's
  * RT_BART_DIR), else -1 with the reason in why (no path in it). */
 int bench_bart_find_data(const struct bench_options *opts, char *why, size_t why_size);
+/* The BART data folder opts selects ("" when none is given) and in *source
+ * what named it ("--bart-dir", "$TRACELIST_BART_DIR", "the build's
+ * RT_BART_DIR"), for messages that must not print the path. */
+const char *bench_bart_data_dir(const struct bench_options *opts, const char **source);
 int bench_bart_section(const struct bench_options *opts);
 int bench_immediate_section(const struct bench_options *opts);
 /* `rtbench nested` (bench_nested.c): flattened against instanced nested

@@ -173,7 +173,7 @@ static const struct strategy robot_strategies[] = {
 
 /* ------------------------------------------------------------ data */
 
-static const char *data_dir(const struct bench_options *opts, const char **source)
+const char *bench_bart_data_dir(const struct bench_options *opts, const char **source)
 {
     const char *env = getenv("TRACELIST_BART_DIR");
     if (opts->bart_dir) {
@@ -191,7 +191,7 @@ static const char *data_dir(const struct bench_options *opts, const char **sourc
 int bench_bart_find_data(const struct bench_options *opts, char *why, size_t why_size)
 {
     const char *source;
-    const char *dir = data_dir(opts, &source);
+    const char *dir = bench_bart_data_dir(opts, &source);
     if (!dir[0]) {
         snprintf(why, why_size,
                  "no BART data folder given: set TRACELIST_BART_DIR to the folder holding "
@@ -1546,7 +1546,7 @@ int bench_bart_section(const struct bench_options *opts)
 {
     char why[512];
     const char *source;
-    const char *dir = data_dir(opts, &source);
+    const char *dir = bench_bart_data_dir(opts, &source);
     report_printf("\n## BART (Wald, Benthin and Slusallek (2003) sec. 5)\n\n");
     if (bench_bart_find_data(opts, why, sizeof(why))) {
         report_printf("Skipped: %s.\n", why);

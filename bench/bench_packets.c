@@ -489,6 +489,12 @@ int bench_packets_section(const struct bench_options *opts, struct bench_mesh *m
 {
     const struct trace_kernels *k = bench_kernels();
     report_printf("\n## Packets\n\n");
+    if (mesh_count == 0) {
+        /* --mesh kitchen without the BART data (see bench_embree.c). */
+        report_printf("The BART kitchen is skipped: %s.\n",
+                      opts->kitchen_skipped ? opts->kitchen_skipped : "no mesh selected");
+        return 0;
+    }
     if (!k->closest_packet || bench_layout_width() == 0) {
         report_printf("The kernels (%s) or the layout have no packet walk: nothing to "
                       "compare.\n",
@@ -512,6 +518,9 @@ int bench_packets_section(const struct bench_options *opts, struct bench_mesh *m
     for (int m = 0; m < mesh_count; m++)
         failed |= packets_mesh(opts, &meshes[m]) != 0;
     bench_share_report();
+    if (opts->kitchen_skipped)
+        report_printf("\nThe BART kitchen (the fourth mesh) is skipped: %s.\n",
+                      opts->kitchen_skipped);
     report_printf("\nHybrid threshold (packet.h): Mrays per CPU second, one thread, median "
                   "of %d runs; "
                   "packets continue ray by ray below the threshold's number of active rays (0: "

@@ -48,6 +48,13 @@ uint32_t bench_layout_width(void)
     return w ? w : 4;
 }
 
+const char *bench_layout_name(void)
+{
+    if (binary_layout || !bench_kernels()->closest4)
+        return "binary";
+    return bench_layout_width() == 8 ? "bvh8" : "bvh4";
+}
+
 const struct trace_kernels *bench_kernels(void)
 {
     return chosen_kernels ? chosen_kernels : trace_kernels_best();
@@ -306,6 +313,35 @@ void bench_count_tests_wide(const struct bench_accel *acc, const struct bench_ra
     double n = set->count ? (double)set->count : 1.0;
     *nodes_per_ray = (double)c.node_tests / n;
     *tris_per_ray = (double)c.triangle_tests / n;
+}
+
+void bench_count_tests_ours(const struct bench_accel *acc, const struct bench_rays *set,
+                            int any_hit, double *nodes_per_ray, double *tris_per_ray,
+                            double *answered_percent)
+{
+    /* The same walk as bench_kernel_closest / bench_kernel_any pick. */
+    const struct trace_kernels *k = bench_kernels();
+    const int wide = (any_hit ? k->any4 != NULL : k->closest4 != NULL) && !binary_layout &&
+                     acc->wide.node_count;
+    struct trace_counters c = {0, 0};
+    uint64_t answered = 0;
+    for (uint32_t i = 0; i < set->count; i++) {
+        const RTray *r = &set->rays[i];
+        struct trace_ray ray;
+        struct trace_hit h;
+        trace_ray_init(&ray, r->org, r->dir, r->tmin);
+        if (any_hit)
+            answered += (wide ? k->any4(&acc->wide, &acc->bvh, acc->tri, &ray, r->tmax, &c)
+                              : k->any(&acc->bvh, acc->tri, &ray, r->tmax, &c)) != 0;
+        else
+            answered += (wide ? k->closest4(&acc->wide, &acc->bvh, acc->tri, &ray, r->tmax, &h,
+                                            &c)
+                              : k->closest(&acc->bvh, acc->tri, &ray, r->tmax, &h, &c)) != 0;
+    }
+    double n = set->count ? (double)set->count : 1.0;
+    *nodes_per_ray = (double)c.node_tests / n;
+    *tris_per_ray = (double)c.triangle_tests / n;
+    *answered_percent = 100.0 * (double)answered / n;
 }
 
 void bench_accel_release_wide(struct bench_accel *acc)

@@ -19,9 +19,11 @@
  *
  * Options: --quick (toy sizes, for the smoke test), --runs N (median of N,
  * default 5), --out DIR (results.md, results.csv, PNG plots), --mesh NAME
- * (bumpy, gears or soup only), --baseline FILE (an earlier results.csv;
- * metrics that got worse by more than --tolerance PCT, default 10, are
- * flagged and the exit status is 2), --bart-dir DIR (the BART scenes;
+ * (bumpy, gears, soup or kitchen only; the BART kitchen, frame 0
+ * flattened, is a fourth mesh of embree and packets only, when its data is
+ * found), --baseline FILE (an earlier results.csv; metrics that got worse
+ * by more than --tolerance PCT, default 10, are flagged and the exit
+ * status is 2), --bart-dir DIR (the BART scenes;
  * else $TRACELIST_BART_DIR, else the build's RT_BART_DIR).
  *
  * Exit status: 0 done, 1 usage error or a section failed, 2 regressions
@@ -64,14 +66,17 @@ static void usage(FILE *f)
             "usage: rtbench [build|trace|embree|packets|dynamic|immediate|nested|error|bart|\n"
             "                bart-strategies|frame-overhead|dynamic-cpu|all]\n"
             "               [--quick] [--runs N]"
-            " [--out DIR] [--mesh bumpy|gears|soup] [--baseline FILE]\n"
-            "               [--tolerance PCT] [--bart-dir DIR] [--isa NAME] [--layout L]\n"
+            " [--out DIR] [--mesh bumpy|gears|soup|kitchen]\n"
+            "               [--baseline FILE] [--tolerance PCT] [--bart-dir DIR]\n"
+            "               [--isa NAME] [--layout L]\n"
             "\n"
             "  build      BVH quality against build time per builder and bin count\n"
             "  trace      Mrays/s, trace_closest/trace_any directly and through rtTraceRays\n"
-            "  embree     the same meshes and rays through Embree 3%s\n"
+            "  embree     the same meshes and rays through Embree 3%s;\n"
+            "             plus the BART kitchen (frame 0 flattened) when its data is found\n"
             "  packets    8-ray packets against single rays (and Embree's rtcIntersect8)\n"
-            "             on the trace section's coherent sets; the hybrid threshold\n"
+            "             on the trace section's coherent sets (and the kitchen's); the\n"
+            "             hybrid threshold\n"
             "  dynamic    dynamic scenes: update strategies over animations (error\n"
             "             against time), soup rebuild, top level, parallel build\n"
             "  error      intersection error against ns per ray per kernel, layout and\n"
@@ -100,6 +105,8 @@ static void usage(FILE *f)
             "  --layout L  our object walk's layout: bvh8 (AVX2, AVX-512), bvh4 (SSE4.2\n"
             "             up), binary (the walk before the collapse); default the\n"
             "             widest the ISA table walks\n"
+            "  --mesh NAME  only this mesh: bumpy, gears, soup, or kitchen (embree and\n"
+            "             packets only)\n"
             "  --bart-dir DIR  the BART folder (kitchen/, robots/, museum/); default\n"
             "             $TRACELIST_BART_DIR, else the build's RT_BART_DIR\n",
 #ifdef RT_HAVE_EMBREE
@@ -243,9 +250,13 @@ int main(int argc, char **argv)
         }
     }
 
-    struct bench_mesh meshes[BENCH_MESH_COUNT];
-    int mesh_count = 0;
-    if (sections & SECTION_MESHES) {
+    /* meshes[0..mesh_count) are the generated meshes every mesh section
+     * runs; the kitchen, when loaded, follows them in the same array and
+     * only embree and packets get it (kitchen_count). */
+    struct bench_mesh meshes[BENCH_MESH_COUNT + 1];
+    int mesh_count = 0, kitchen_count = 0;
+    const int kitchen_only = opts.mesh && !strcmp(opts.mesh, "kitchen");
+    if ((sections & SECTION_MESHES) && !kitchen_only) {
         for (int k = 0; k < BENCH_MESH_COUNT; k++) {
             struct bench_mesh *m = &meshes[mesh_count];
             if (bench_mesh_generate(m, (enum bench_mesh_kind)k, opts.quick)) {
@@ -259,24 +270,40 @@ int main(int argc, char **argv)
             mesh_count++;
         }
         if (mesh_count == 0) {
-            fprintf(stderr, "rtbench: no workload named '%s' (bumpy, gears, soup)\n", opts.mesh);
+            fprintf(stderr, "rtbench: no workload named '%s' (bumpy, gears, soup, kitchen)\n",
+                    opts.mesh);
             return 1;
+        }
+    }
+    /* The BART kitchen: a fourth mesh of embree and packets when its data
+     * is found; without it those sections say why in one line and run the
+     * other meshes (no failure: the data is third-party and optional). */
+    char kitchen_why[512];
+    if ((sections & (SECTION_EMBREE | SECTION_PACKETS)) && (!opts.mesh || kitchen_only)) {
+        if (bench_kitchen_mesh(&opts, &meshes[mesh_count], kitchen_why, sizeof(kitchen_why))) {
+            opts.kitchen_skipped = kitchen_why;
+            report_progress("rtbench: kitchen skipped: %s\n", kitchen_why);
+        } else {
+            kitchen_count = 1;
         }
     }
 
     if (report_open(&opts))
         return 1;
-    if (mesh_count > 0) {
+    if (mesh_count + kitchen_count > 0) {
         report_printf("\n## Workloads\n\n");
         report_table_header("mesh|triangles|vertices|bounds (min .. max)|what");
     }
-    for (int m = 0; m < mesh_count; m++) {
+    for (int m = 0; m < mesh_count + kitchen_count; m++) {
         const struct bench_mesh *b = &meshes[m];
         report_row("%s|%u|%u|(%.2f, %.2f, %.2f) .. (%.2f, %.2f, %.2f)|%s", b->name, b->tri_count,
                    b->vertex_count, (double)b->bounds.min[0], (double)b->bounds.min[1],
                    (double)b->bounds.min[2], (double)b->bounds.max[0], (double)b->bounds.max[1],
                    (double)b->bounds.max[2], b->description);
     }
+    if (kitchen_only && (sections & (SECTION_BUILD | SECTION_TRACE | SECTION_DYNAMIC)))
+        report_printf("\n--mesh kitchen: the build, trace and dynamic sections have no "
+                      "kitchen; they run no mesh.\n");
 
     int failed = 0;
     if (sections & SECTION_BUILD)
@@ -285,14 +312,14 @@ int main(int argc, char **argv)
         failed |= bench_trace_section(&opts, meshes, mesh_count) != 0;
     if (sections & SECTION_EMBREE) {
 #ifdef RT_HAVE_EMBREE
-        failed |= bench_embree_section(&opts, meshes, mesh_count) != 0;
+        failed |= bench_embree_section(&opts, meshes, mesh_count + kitchen_count) != 0;
 #else
         report_printf("\n## Against Embree\n\nSkipped: rtbench was built without Embree "
                       "(CMake did not find embree 3, or RT_WITH_EMBREE=OFF).\n");
 #endif
     }
     if (sections & SECTION_PACKETS)
-        failed |= bench_packets_section(&opts, meshes, mesh_count) != 0;
+        failed |= bench_packets_section(&opts, meshes, mesh_count + kitchen_count) != 0;
     if (sections & SECTION_DYNAMIC)
         failed |= bench_dynamic_section(&opts, meshes, mesh_count) != 0;
     if (dynamic_cpu)
@@ -306,7 +333,7 @@ int main(int argc, char **argv)
     if (sections & SECTION_BART)
         failed |= bench_bart_section(&opts) != 0;
     int flagged = report_close();
-    for (int m = 0; m < mesh_count; m++)
+    for (int m = 0; m < mesh_count + kitchen_count; m++)
         bench_mesh_release(&meshes[m]);
     if (failed) {
         fprintf(stderr, "rtbench: a section failed; see the messages above\n");
