@@ -311,11 +311,14 @@ static int embree_trace_mesh(const struct bench_options *opts, RTCDevice device,
             const double *m = row.mrays[t];
             if (opts->threads && opts->threads != t + 1)
                 continue;
-            report_row("%s|%s%s|%d|%.3f|%.3f|%.3f|%.2f|%.2f|%.2f%%|%.2f%%|%.2f%%", mesh->name,
+            report_row("%s|%s%s|%d|%.3f|%.3f|%.3f|%.2f|%.2f|%.2f%% (%llu)|%.2f%% (%llu)|%.2f%%",
+                       mesh->name,
                        sets[s].name, any_hit ? " (any hit)" : "", t + 1, m[0], m[1], m[2],
                        m[1] > 0 ? m[0] / m[1] : 0.0, m[2] > 0 ? m[0] / m[2] : 0.0,
                        bench_agreement_percent(&row.agree[0]),
+                       (unsigned long long)(row.agree[0].compared - row.agree[0].agree),
                        bench_agreement_percent(&row.agree[1]),
+                       (unsigned long long)(row.agree[1].compared - row.agree[1].agree),
                        row.agree[0].compared
                            ? 100.0 * (double)row.agree[0].same_prim / row.agree[0].compared
                            : 100.0);
@@ -463,8 +466,9 @@ int bench_embree_section(const struct bench_options *opts, struct bench_mesh *me
                   "through rtcIntersect1 / rtcOccluded1 in a scalar loop, both driven by the "
                   "same thread split. \"ours/Embree\" is a throughput ratio: below 1 means we "
                   "are slower. \"agree\": rays where Embree's answer equals ours (hit/miss and "
-                  "t within %g relative) over all rays of the set; \"same prim\": of those, "
-                  "the same triangle (MEDIUM).\n\n",
+                  "t within %g relative) over all rays of the set, in brackets the number of "
+                  "rays that differ (the percentage rounds one ray in a million to 100.00%%); "
+                  "\"same prim\": of those, the same triangle (MEDIUM).\n\n",
                   opts->runs, (double)BENCH_T_TOLERANCE);
     report_table_header("mesh|rays|threads|ours|Embree MEDIUM|Embree HIGH|ours/MEDIUM|"
                         "ours/HIGH|agree MEDIUM|agree HIGH|same prim");
