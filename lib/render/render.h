@@ -44,8 +44,8 @@ struct render_framebuffer {
     /* The image before rgba, kept for the next frame of the same size to
      * render into, as GL's back buffer is drawn while the front one is
      * shown: a frame then allocates nothing and takes no page faults
-     * (12.6 MB, 3,072 pages, at 1024 x 768 were 3-4 % of a kitchen
-     * frame's time); NULL when there is none. */
+     * (12.6 MB, 3,072 pages, at 1024 x 768: their faults were 3-4 % of
+     * a kitchen eye-light frame's samples); NULL when there is none. */
     float *spare;
     size_t spare_pixels;
 };
