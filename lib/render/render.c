@@ -13,6 +13,7 @@
 #include "base/timer.h"
 #include "render/blend.h"
 #include "render/filled.h"
+#include "render/gl_shade.h"
 #include "render/overlay.h"
 #include "render/secondary.h"
 #include "render/raster.h"
@@ -381,6 +382,7 @@ static int primary_ray(const struct unproject_cache *cache, int px, int py, floa
 void render_framebuffer_release(struct render_framebuffer *fb)
 {
     rt_free(fb->rgba);
+    rt_free(fb->spare);
     memset(fb, 0, sizeof(*fb));
 }
 
@@ -427,16 +429,42 @@ static int frame_has_offset(const struct scene_frame *frame)
     return 0;
 }
 
-int render_pass_begin(struct render_pass *pass, const struct render_job *job, int fb_width,
-                      int fb_height)
+/* The clear colour into every pixel of fb, or with `all_tiles` (every
+ * tile will be rendered, as render_frame does) into those the tiles do
+ * not write: all of them when there are no tiles, else those left of and
+ * below the viewport (its origin is never negative, api/frame.c), since
+ * a tile writes each of its pixels, the clear colour where no ray is
+ * made. */
+static void clear_outside_tiles(const struct render_pass *pass, float *fb, size_t pixels,
+                                int all_tiles)
+{
+    const struct render_state *st = pass->job->state;
+    const int *vp = st->viewport;
+    if (!all_tiles || render_pass_tiles(pass) == 0) {
+        for (size_t i = 0; i < pixels; i++)
+            memcpy(&fb[4 * i], st->clear_color, 4 * sizeof(float));
+        return;
+    }
+    const size_t w = (size_t)pass->fb_width;
+    for (size_t i = 0; i < (size_t)vp[1] * w; i++)
+        memcpy(&fb[4 * i], st->clear_color, 4 * sizeof(float));
+    for (size_t y = (size_t)vp[1]; y < (size_t)pass->fb_height; y++)
+        for (size_t x = 0; x < (size_t)vp[0]; x++)
+            memcpy(&fb[4 * (y * w + x)], st->clear_color, 4 * sizeof(float));
+}
+
+/* render_pass_begin into `storage` (fb_width x fb_height pixels, owned
+ * by the pass from here on) when not NULL: a spare image, whose pixels
+ * are all overwritten, so it needs no zeroing; all_tiles as
+ * clear_outside_tiles. */
+static int pass_begin(struct render_pass *pass, const struct render_job *job, int fb_width,
+                      int fb_height, float *storage, int all_tiles)
 {
     const struct render_state *st = job->state;
     size_t pixels = (size_t)fb_width * (size_t)fb_height;
-    float *fb = rt_calloc(pixels ? pixels : 1, 4 * sizeof(float));
+    float *fb = storage ? storage : rt_malloc((pixels ? pixels : 1) * 4 * sizeof(float));
     if (!fb)
         return -1;
-    for (size_t i = 0; i < pixels; i++)
-        memcpy(&fb[4 * i], st->clear_color, 4 * sizeof(float));
     if (shared_init(pass, job)) {
         rt_free(fb);
         return -1;
@@ -482,7 +510,14 @@ int render_pass_begin(struct render_pass *pass, const struct render_job *job, in
     pass->tiles_y = (st->viewport[3] + RENDER_TILE_SIZE - 1) / RENDER_TILE_SIZE;
     /* A singular projection leaves every pixel at the clear colour. */
     pass->projectable = mat4_invert(pass->inv_projection, st->projection);
+    clear_outside_tiles(pass, fb, pixels, all_tiles);
     return 0;
+}
+
+int render_pass_begin(struct render_pass *pass, const struct render_job *job, int fb_width,
+                      int fb_height)
+{
+    return pass_begin(pass, job, fb_width, fb_height, NULL, 0);
 }
 
 uint32_t render_pass_tiles(const struct render_pass *pass)
@@ -515,6 +550,13 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
      * neighbours a second time. */
     struct unproject_cache cache;
     unproject_cache_init(pass, &cache, x0, y0);
+    /* Without clip planes, blending, the alpha test and polygon offset a
+     * pixel is its camera ray's first hit, shaded, when GL draws that
+     * hit (not culled, not outlined), or the clear colour when there is
+     * none: what blend_trace_primary gives then, without its layer stack,
+     * the second look at the primed hit and the next distance it steps
+     * to (some 130 instructions a pixel). */
+    const int direct = !pass->depth_state && !sc->clipping && !sc->see_through;
     for (int by = y0; by < y0 + RENDER_TILE_SIZE && by < vp[3]; by += RENDER_BLOCK_H) {
         unproject_cache_row(pass, &cache, by);
         for (int bx = x0; bx < x0 + RENDER_TILE_SIZE && bx < vp[2]; bx += RENDER_BLOCK_W) {
@@ -558,7 +600,15 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                 sc->primed = &primed[i];
                 float t_first;
                 const size_t at = (size_t)(vp[1] + y) * pass->fb_width + vp[0] + x;
-                if (pass->depth_state) /* polygon offset in the frame (lines.c) */
+                if (direct && !primed[i].found) {
+                    /* blend_trace_primary without a hit: the clear colour. */
+                    memcpy(px, st->clear_color, 4 * sizeof(float));
+                    t_first = INFINITY;
+                } else if (direct && gl_hit_drawn(sc, pk.dir[i], &primed[i].hit)) {
+                    /* blend_trace_primary's first, opaque, drawn hit. */
+                    shade_hit(sc, pk.org[i], pk.dir[i], &primed[i].hit, cone[i], 0, px);
+                    t_first = primed[i].hit.t;
+                } else if (pass->depth_state) /* polygon offset in the frame (lines.c) */
                     blend_trace_primary_state(sc, pk.org[i], pk.dir[i], pk.tmax[i], cone[i], px,
                                               &t_first, &pass->depth_state[at]);
                 else
@@ -762,7 +812,17 @@ int render_pass_end(struct render_pass *pass, struct render_framebuffer *fb,
     }
     if (fb->width != pass->fb_width || fb->height != pass->fb_height)
         fb->frames = 0;
-    rt_free(fb->rgba);
+    /* The image shown until now is the next frame's to render into when
+     * it has the same size (render_framebuffer.spare). */
+    const size_t old_pixels = (size_t)fb->width * (size_t)fb->height;
+    if (fb->rgba && old_pixels > 0 &&
+        old_pixels == (size_t)pass->fb_width * (size_t)pass->fb_height) {
+        rt_free(fb->spare);
+        fb->spare = fb->rgba;
+        fb->spare_pixels = old_pixels;
+    } else {
+        rt_free(fb->rgba);
+    }
     fb->rgba = pass->fb;
     fb->width = pass->fb_width;
     fb->height = pass->fb_height;
@@ -787,7 +847,14 @@ int render_frame(const struct render_job *job, int fb_width, int fb_height,
                  struct render_framebuffer *fb, struct render_stats *stats)
 {
     struct render_pass pass;
-    if (render_pass_begin(&pass, job, fb_width, fb_height))
+    const size_t pixels = (size_t)fb_width * (size_t)fb_height;
+    float *storage = NULL;
+    if (fb->spare && pixels > 0 && fb->spare_pixels == pixels) {
+        storage = fb->spare;
+        fb->spare = NULL;
+        fb->spare_pixels = 0;
+    }
+    if (pass_begin(&pass, job, fb_width, fb_height, storage, 1))
         return -1;
     if (render_pass_tiles(&pass) > 0)
         rt_pool_run(job->pool, frame_task, &pass);

@@ -141,6 +141,52 @@ static struct surface_cache *triangle_cache(const struct shade_context *sc,
  * roundings (some 1e-16 each) between the squares and the hypots. */
 #define LOD_AXIS_MARGIN 1e-6
 
+/* Bounds of lod_near (see there): the relative distance between its
+ * footprint and texture_lod's, at most 2^-49, and between their log2s,
+ * at most 2^-45, taken 16 and 8 times larger. */
+#define LOD_NEAR_RELATIVE 0x1p-45
+#define LOD_NEAR_ABSOLUTE 0x1p-42
+
+/*
+ * texture_lod's result from the footprint xs = sqrt(s2) width [/ cosine]
+ * instead of x = hypot(a, b) width [/ cosine] (s2 = a a + b b), when that
+ * provably gives the same float: returns 1 with it in *lambda, or 0 when
+ * the caller must take the hypot.  A sqrt for the hypot, the library's
+ * slowest step here.  Why it is the same: with s2 a normal number far
+ * from overflow, sqrt(s2) is within 2^-52 (relative) of a b's exact
+ * length, hypot within 1 ulp (glibc's documented bound), so with the same
+ * two roundings after them xs is within 2^-49 of x.  Then xs beyond 1 or
+ * `top` by more than that puts x on the same side (-inf, +inf, as
+ * texture_lod); between them, log2 (within 2 ulps of the exact value,
+ * again the library's bound; lambda < 32, so 2^-47) gives log2(xs) and
+ * log2(x) within 2^-45 of each other, and when every value within
+ * LOD_NEAR_ABSOLUTE of log2(xs) rounds to the same float, float(log2(x))
+ * is that float (rounding is monotonic).  Otherwise (close to a rounding
+ * boundary: about one call in 2^15 for lambda near 1, every one for
+ * lambda near 0) the caller computes x exactly as before.
+ */
+static int lod_near(double s2, double xs, double top, float *lambda)
+{
+    if (!(s2 >= 0x1p-960 && s2 <= 0x1p960))
+        return 0;
+    if (xs < 1.0 - LOD_NEAR_RELATIVE) {
+        *lambda = -INFINITY; /* x < 1: a magnification */
+        return 1;
+    }
+    if (xs > top * (1.0 + LOD_NEAR_RELATIVE)) {
+        *lambda = INFINITY; /* x > top: the last level */
+        return 1;
+    }
+    if (!(xs > 1.0 + LOD_NEAR_RELATIVE && xs < top * (1.0 - LOD_NEAR_RELATIVE)))
+        return 0;
+    const double l = log2(xs);
+    const float f = (float)l;
+    if ((float)(l - LOD_NEAR_ABSOLUTE) != f || (float)(l + LOD_NEAR_ABSOLUTE) != f)
+        return 0;
+    *lambda = f;
+    return 1;
+}
+
 /*
  * The texture level of detail at a hit by ray cones (Akenine-Möller et
  * al. 2019, "Texture Level of Detail Strategies for Real-Time Ray
@@ -272,16 +318,22 @@ static float texture_lod(const struct shade_context *sc, const struct scene_text
      * reverse holds; NaNs fail both tests and take the full max. */
     const double sa = ja[0] * ja[0] + ja[1] * ja[1], sb = jb[0] * jb[0] + jb[1] * jb[1];
     const double sbc = sb * (cosine * cosine);
+    const double top = (double)(1u << (tex->level_count + 1));
     double x;
-    if (sa > sbc * (1.0 + LOD_AXIS_MARGIN))
+    float near_lambda;
+    if (sa > sbc * (1.0 + LOD_AXIS_MARGIN)) {
+        if (lod_near(sa, sqrt(sa) * (double)width / cosine, top, &near_lambda))
+            return near_lambda;
         x = hypot(ja[0], ja[1]) * (double)width / cosine;
-    else if (sbc > sa * (1.0 + LOD_AXIS_MARGIN))
+    } else if (sbc > sa * (1.0 + LOD_AXIS_MARGIN)) {
+        if (lod_near(sb, sqrt(sb) * (double)width, top, &near_lambda))
+            return near_lambda;
         x = hypot(jb[0], jb[1]) * (double)width;
-    else
+    } else
         x = fmax(hypot(ja[0], ja[1]) * (double)width / cosine, hypot(jb[0], jb[1]) * (double)width);
     if (!(x > 1.0))
         return -INFINITY; /* log2(x) <= 0 or NaN: a magnification */
-    if (x >= (double)(1u << (tex->level_count + 1)))
+    if (x >= top)
         return INFINITY; /* log2(x) >= q + 2: level q (or a non-mipmapped minification) */
     return (float)log2(x);
 }
