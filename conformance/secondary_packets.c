@@ -25,6 +25,15 @@
  *   alpha 0.3): floor pixels 26 .. 29 lit;
  * - opaque occluder over [40, 44]: floor pixels 36 .. 39 dark.
  *
+ * A second frame adds a glass plate at z = 0.25 over the whole floor,
+ * blended (see-through, so shadow rays pass it), transparent (index of
+ * refraction 1: the refracted camera ray goes on straight down) and a
+ * little reflective: the floor is then seen through refracted rays at
+ * depth 1, whose hits' shadow rays go as packets too (shade.h,
+ * shade_prime_shadows), through the same filter.  The bands of the row
+ * must be as in the first frame: equal where lit, equal and darker where
+ * shadowed.
+ *
  * Queries: rows of eight parallel rays from the floor towards the light
  * (rtOccludedRays and rtTraceRays) under the clip plane's occluder and
  * under the opaque one, packets on and off: the same answers, and the
@@ -45,6 +54,7 @@
 #define CLIPPED 902u
 #define BLENDED 903u
 #define OPAQUE 904u
+#define GLASS 905u
 #define QUERY_RAYS 32
 
 static void quad(float x0, float x1, float z)
@@ -72,7 +82,6 @@ static void define_scene(void)
     static const float black[4] = {0, 0, 0, 1}, white[4] = {1, 1, 1, 1};
     static const float clear[4] = {1, 1, 1, 0};
     static const float light_dir[4] = {1, 0, 1, 0};
-    static const double keep_below_2[4] = {0.0, 0.0, -1.0, 2.0};
     rtMatrixMode(RT_PROJECTION);
     rtLoadIdentity();
     rtOrtho(0.0, N, 0.0, N, -10.0, 10.0);
@@ -98,7 +107,20 @@ static void define_scene(void)
     object(CLIPPED, 20.0f, 28.0f, 1.0f);
     object(BLENDED, 30.0f, 34.0f, 0.3f);
     object(OPAQUE, 40.0f, 44.0f, 1.0f);
+    const float glass[4] = {0.5f, 0.5f, 1.0f, 0.5f};
+    rtNewObject(GLASS);
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_DIFFUSE, glass);
+    rtMaterialf(RT_FRONT_AND_BACK, RT_TRANSPARENCY, 0.5f);
+    rtMaterialf(RT_FRONT_AND_BACK, RT_REFLECTIVITY, 0.25f);
+    rtMaterialf(RT_FRONT_AND_BACK, RT_INDEX_OF_REFRACTION, 1.0f);
+    quad(-16.0f, 64.0f, 0.25f);
+    rtEndObject();
+}
 
+/* The frame: floor and occluders, and the glass plate when `glass`. */
+static void draw_frame(int glass)
+{
+    static const double keep_below_2[4] = {0.0, 0.0, -1.0, 2.0};
     rtBeginFrame();
     rtInstantiateObject(FLOOR);
     rtEnable(RT_ALPHA_TEST);
@@ -115,6 +137,12 @@ static void define_scene(void)
     rtInstantiateObject(BLENDED);
     rtDisable(RT_BLEND);
     rtInstantiateObject(OPAQUE);
+    if (glass) {
+        rtEnable(RT_BLEND);
+        rtBlendFunc(RT_SRC_ALPHA, RT_ONE_MINUS_SRC_ALPHA);
+        rtInstantiateObject(GLASS);
+        rtDisable(RT_BLEND);
+    }
     CHECK_NO_ERR();
 }
 
@@ -138,9 +166,11 @@ static void query_rays(RTray *rays)
 
 struct result {
     float image[4 * N * N];
+    float glass[4 * N * N]; /* the frame with the glass plate */
     RThit hits[QUERY_RAYS];
     RTboolean occluded[QUERY_RAYS];
     RTint rays;
+    RTint glass_rays;
 };
 
 /* 0 when the configuration cannot run here (an ISA the CPU lacks). */
@@ -151,12 +181,16 @@ static int run(const char *config, struct result *out)
         return 0;
     rtMakeCurrent(ctx);
     define_scene();
+    draw_frame(0);
     tu_render_float(N, N, out->image);
     rtGetIntegerv(RT_STAT_RAYS, &out->rays);
     RTray rays[QUERY_RAYS];
     query_rays(rays);
     rtTraceRays(QUERY_RAYS, rays, out->hits);
     rtOccludedRays(QUERY_RAYS, rays, out->occluded);
+    draw_frame(1);
+    tu_render_float(N, N, out->glass);
+    rtGetIntegerv(RT_STAT_RAYS, &out->glass_rays);
     CHECK_NO_ERR();
     tu_destroy_context(ctx);
     return 1;
@@ -186,6 +220,22 @@ static int band(const struct result *r, int x0, int x1, int want)
     return 1;
 }
 
+static float glass_red(const struct result *r, int x)
+{
+    return r->glass[4 * ((N / 2) * N + x)];
+}
+
+/* Pixels x0 .. x1 of the glass frame's middle row all equal to pixel 0
+ * (want 1, lit) or to pixel 8 (want 0, shadowed). */
+static int glass_band(const struct result *r, int x0, int x1, int want)
+{
+    const float v = glass_red(r, want ? 0 : 8);
+    for (int x = x0; x <= x1; x++)
+        if (glass_red(r, x) != v)
+            return 0;
+    return 1;
+}
+
 static void check_shadows(const char *config, const struct result *r)
 {
     CHECKF(band(r, 0, 3, 1), "%s: open floor lit", config);
@@ -195,6 +245,14 @@ static void check_shadows(const char *config, const struct result *r)
     CHECKF(band(r, 26, 29, 1), "%s: floor under the see-through blended occluder lit",
            config);
     CHECKF(band(r, 36, 39, 0), "%s: floor under the opaque occluder dark", config);
+    CHECKF(glass_red(r, 8) < glass_red(r, 0), "%s: glass frame: shadow darker (%g, %g)", config,
+           glass_red(r, 8), glass_red(r, 0));
+    CHECKF(glass_band(r, 0, 7, 1), "%s: glass frame: open floor and cutout's transparent half",
+           config);
+    CHECKF(glass_band(r, 8, 11, 0), "%s: glass frame: cutout's opaque half", config);
+    CHECKF(glass_band(r, 16, 19, 1), "%s: glass frame: clipped-away occluder", config);
+    CHECKF(glass_band(r, 26, 29, 1), "%s: glass frame: see-through blended occluder", config);
+    CHECKF(glass_band(r, 36, 39, 0), "%s: glass frame: opaque occluder", config);
     /* Queries: the clip plane removes CLIPPED (rays 0 .. 15 pass it);
      * OPAQUE stops rays 16 .. 23; the alpha test does not apply to
      * queries, so the cutout stops rays 24 .. 31. */
@@ -234,6 +292,10 @@ int main(void)
                "%s: occlusion answers differ", configs[c]);
         CHECKF(ref.rays == got.rays, "%s: RT_STAT_RAYS %d, reference %d", configs[c],
                (int)got.rays, (int)ref.rays);
+        CHECKF(memcmp(ref.glass, got.glass, sizeof(ref.glass)) == 0,
+               "%s: glass frame's image differs", configs[c]);
+        CHECKF(ref.glass_rays == got.glass_rays, "%s: glass frame: RT_STAT_RAYS %d, reference %d",
+               configs[c], (int)got.glass_rays, (int)ref.glass_rays);
     }
     CHECK(ran > 0);
     return test_summary("secondary_packets");
