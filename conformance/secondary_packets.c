@@ -29,10 +29,11 @@
  * blended (see-through, so shadow rays pass it), transparent (index of
  * refraction 1: the refracted camera ray goes on straight down) and a
  * little reflective: the floor is then seen through refracted rays at
- * depth 1, whose hits' shadow rays go as packets too (shade.h,
- * shade_prime_shadows), through the same filter.  The bands of the row
- * must be as in the first frame: equal where lit, equal and darker where
- * shadowed.
+ * depth 1 (and behind the blended plate, hits that are not a camera
+ * packet's first), whose shadow rays go ray by ray through the same
+ * filter, while the plate's own shadow rays go as packets.  The bands of
+ * the row must be as in the first frame: equal where lit, equal and
+ * darker where shadowed.
  *
  * Queries: rows of eight parallel rays from the floor towards the light
  * (rtOccludedRays and rtTraceRays) under the clip plane's occluder and

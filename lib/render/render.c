@@ -534,8 +534,8 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
             const unsigned found = trace_scene_closest_packet(sc->scene, &pk, hits, sc->counters);
             /* Whitted shading's shadow rays of the block's first hits,
              * one packet per light, and the surfaces they start on. */
-            struct shade_primed primed[TRACE_PACKET], next[2 * TRACE_PACKET];
-            struct surface surf[3 * TRACE_PACKET];
+            struct shade_primed primed[TRACE_PACKET];
+            struct surface surf[TRACE_PACKET];
             for (int i = 0; i < TRACE_PACKET; i++) {
                 primed[i].found = (int)(found >> i & 1u);
                 if (primed[i].found)
@@ -543,11 +543,9 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                 primed[i].surface = NULL;
                 primed[i].shadow_known = 0;
                 primed[i].shadow_occluded = 0;
-                primed[i].next[0] = NULL;
-                primed[i].next[1] = NULL;
             }
             shade_prime_shadows(sc, found, hits, (const float(*)[3])pk.org,
-                                (const float(*)[3])pk.dir, cone, surf, primed, next);
+                                (const float(*)[3])pk.dir, cone, surf, primed);
             for (int i = 0; i < TRACE_PACKET; i++) {
                 const int x = bx + i % RENDER_BLOCK_W, y = by + i / RENDER_BLOCK_W;
                 if (!(x < x0 + RENDER_TILE_SIZE && x < vp[2] && y < y0 + RENDER_TILE_SIZE &&

@@ -154,31 +154,6 @@ static int refract_dir(const float d[3], const float n[3], float eta, float t[3]
     return 1;
 }
 
-/* The reflected (kind 0) or refracted (kind 1) ray of surface sp hit
- * along unit_dir: shade_hit's and shade_prime_shadows' one computation,
- * so both trace the same ray bit for bit.  A refraction that Snell's law
- * refuses, or that would not leave below the surface, reflects (total
- * internal reflection). */
-static void next_ray(const struct surface *sp, const float unit_dir[3], int kind, float org[3],
-                     float dir[3])
-{
-    if (kind == 0) {
-        reflect_dir(unit_dir, sp->n, dir);
-        if (vec3_dot(dir, sp->ng) <= 0.0f)
-            reflect_dir(unit_dir, sp->ng, dir);
-        shade_offset_point(sp->p, sp->ng, sp->p_error, org);
-        return;
-    }
-    const float eta = sp->front ? 1.0f / sp->mat->ior : sp->mat->ior;
-    const float below[3] = {-sp->ng[0], -sp->ng[1], -sp->ng[2]};
-    if (refract_dir(unit_dir, sp->n, eta, dir) && vec3_dot(dir, sp->ng) < 0.0f) {
-        shade_offset_point(sp->p, below, sp->p_error, org);
-    } else {
-        reflect_dir(unit_dir, sp->ng, dir);
-        shade_offset_point(sp->p, sp->ng, sp->p_error, org);
-    }
-}
-
 /* A cone after distance t along dir (shade_hit). */
 static struct shade_cone cone_at(struct shade_cone cone, const float dir[3], float t)
 {
@@ -195,50 +170,24 @@ static int same_hit(const struct trace_scene_hit *a, const struct trace_scene_hi
            a->instance == b->instance;
 }
 
-static void hit_colour(const struct shade_context *sc, const float org[3], const float dir[3],
-                       const struct trace_scene_hit *found, struct shade_cone cone, int depth,
-                       const struct shade_primed *given, float rgba[4]);
-
-/* shade_ray, with `given` NULL or the ray traced ahead
- * (shade_primed.next): the same ray, so its answer is taken. */
-static void ray_colour(const struct shade_context *sc, const float org[3], const float dir[3],
-                       float tmax, struct shade_cone cone, int depth,
-                       const struct shade_primed *given, float rgba[4])
+void shade_ray(const struct shade_context *sc, const float org[3], const float dir[3],
+               float tmax, struct shade_cone cone, int depth, float rgba[4])
 {
     struct trace_scene_hit hit;
-    if (given && !(tmax == INFINITY && memcmp(given->org, org, sizeof(given->org)) == 0 &&
-                   memcmp(given->dir, dir, sizeof(given->dir)) == 0))
-        given = NULL;
     /* Reflected and refracted rays see every face; camera rays, which
      * skip the faces RT_CULL_FACE removes, go through render/blend.c.
      * Surfaces clipped away or failing their alpha test are not there
      * (sc->rays, render/secondary.h). */
-    if (given ? !given->found
-              : !trace_scene_closest(sc->rays, org, dir, 0.0f, tmax, &hit, sc->counters)) {
+    if (!trace_scene_closest(sc->rays, org, dir, 0.0f, tmax, &hit, sc->counters)) {
         memcpy(rgba, sc->state->clear_color, 4 * sizeof(float));
         return;
     }
-    hit_colour(sc, org, dir, given ? &given->hit : &hit, cone, depth, given, rgba);
-}
-
-void shade_ray(const struct shade_context *sc, const float org[3], const float dir[3],
-               float tmax, struct shade_cone cone, int depth, float rgba[4])
-{
-    ray_colour(sc, org, dir, tmax, cone, depth, NULL, rgba);
+    shade_hit(sc, org, dir, &hit, cone, depth, rgba);
 }
 
 void shade_hit(const struct shade_context *sc, const float org[3], const float dir[3],
                const struct trace_scene_hit *found, struct shade_cone cone, int depth,
                float rgba[4])
-{
-    hit_colour(sc, org, dir, found, cone, depth, NULL, rgba);
-}
-
-/* shade_hit, with `given` NULL or what shade_prime_shadows traced ahead
- * for this hit at depth > 0 (at depth 0, sc->primed). */
-static void hit_colour(const struct shade_context *sc, const float org[3], const float dir[3],
-                       const struct trace_scene_hit *found, struct shade_cone cone, int depth,
-                       const struct shade_primed *given, float rgba[4])
 {
     const struct render_state *st = sc->state;
     const struct trace_scene_hit hit = *found;
@@ -275,10 +224,9 @@ static void hit_colour(const struct shade_context *sc, const float org[3], const
         rgba[3] = 1.0f;
         return;
     }
-    /* The camera ray's first hit, or its reflected or refracted ray's:
-     * shade_prime_shadows may have fetched its surface and traced its
-     * shadow rays already. */
-    const struct shade_primed *pr = depth == 0 ? sc->primed : given;
+    /* The camera ray's first hit: shade_prime_shadows may have fetched
+     * its surface and traced its shadow rays already. */
+    const struct shade_primed *pr = depth == 0 ? sc->primed : NULL;
     if (pr && !(pr->surface && same_hit(&pr->hit, &hit)))
         pr = NULL;
     struct surface fetched;
@@ -299,16 +247,25 @@ static void hit_colour(const struct shade_context *sc, const float org[3], const
         for (int k = 0; k < 3; k++)
             c[k] *= local_weight;
         if (kr > 0.0f) {
-            next_ray(sp, unit_dir, 0, next_org, next_dir);
-            ray_colour(sc, next_org, next_dir, INFINITY, at_hit, depth + 1,
-                       pr ? pr->next[0] : NULL, out);
+            reflect_dir(unit_dir, sp->n, next_dir);
+            if (vec3_dot(next_dir, sp->ng) <= 0.0f)
+                reflect_dir(unit_dir, sp->ng, next_dir);
+            shade_offset_point(sp->p, sp->ng, sp->p_error, next_org);
+            shade_ray(sc, next_org, next_dir, INFINITY, at_hit, depth + 1, out);
             for (int k = 0; k < 3; k++)
                 c[k] += kr * out[k];
         }
         if (kt > 0.0f) {
-            next_ray(sp, unit_dir, 1, next_org, next_dir);
-            ray_colour(sc, next_org, next_dir, INFINITY, at_hit, depth + 1,
-                       pr ? pr->next[1] : NULL, out);
+            float eta = sp->front ? 1.0f / sp->mat->ior : sp->mat->ior;
+            float below[3] = {-sp->ng[0], -sp->ng[1], -sp->ng[2]};
+            if (refract_dir(unit_dir, sp->n, eta, next_dir) && vec3_dot(next_dir, sp->ng) < 0.0f) {
+                shade_offset_point(sp->p, below, sp->p_error, next_org);
+            } else {
+                /* Total internal reflection. */
+                reflect_dir(unit_dir, sp->ng, next_dir);
+                shade_offset_point(sp->p, sp->ng, sp->p_error, next_org);
+            }
+            shade_ray(sc, next_org, next_dir, INFINITY, at_hit, depth + 1, out);
             for (int k = 0; k < 3; k++)
                 c[k] += kt * out[k];
         }
@@ -317,14 +274,44 @@ static void hit_colour(const struct shade_context *sc, const float org[3], const
     rgba[3] = 1.0f;
 }
 
-/* The shadow rays from origin[i] of the lanes of `lit` (surfaces surf[i])
- * to each light, one packet per light when at least two are coherent;
- * their answers go to primed[i]'s shadow bits. */
-static void shadow_packets(const struct shade_context *sc, unsigned lit,
-                           const float origin[TRACE_PACKET][3], const struct surface *surf,
-                           struct shade_primed *primed)
+void shade_prime_shadows(const struct shade_context *sc, unsigned found,
+                         const struct trace_scene_hit hits[TRACE_PACKET],
+                         const float org[TRACE_PACKET][3], const float dir[TRACE_PACKET][3],
+                         const struct shade_cone cone[TRACE_PACKET],
+                         struct surface *surf,
+                         struct shade_primed primed[TRACE_PACKET])
 {
     const struct render_state *st = sc->state;
+    /* A frame with a hit filter (sc->shadows, render/secondary.h) traces
+     * its packets with the filter, which packet_scene.c applies ray by
+     * ray as the single walk does. */
+    if (st->shading != RENDER_WHITTED)
+        return;
+    float origin[TRACE_PACKET][3];
+    unsigned lit = 0;
+    for (int i = 0; i < TRACE_PACKET; i++) {
+        if (!(found >> i & 1u))
+            continue;
+        /* A first hit GL does not draw (culled, outlined) gives the pixel
+         * to a hit behind it: not primed, so no ray the shading does not
+         * ask for is traced. */
+        if (!gl_hit_drawn(sc, dir[i], &hits[i]))
+            continue;
+        /* Nor does a first hit a clip plane removes: blend.c shades
+         * another hit behind it or at its distance. */
+        if (sc->clipping && blend_hit_clipped(sc, org[i], dir[i], &hits[i]))
+            continue;
+        surface_fetch(sc, &hits[i], dir[i], cone_at(cone[i], dir[i], hits[i].t).width, &surf[i]);
+        primed[i].surface = &surf[i];
+        primed[i].shadow_known = 0;
+        primed[i].shadow_occluded = 0;
+        if (st->lighting_used && !surf[i].mat->lighting)
+            continue; /* unlit: no shadow rays */
+        shade_offset_point(surf[i].p, surf[i].ng, surf[i].p_error, origin[i]);
+        lit |= 1u << i;
+    }
+    if (!lit)
+        return;
     for (int l = 0; l < RENDER_MAX_LIGHTS; l++) {
         const struct scene_light *light = &st->lights[l];
         if (!light->enabled)
@@ -355,131 +342,4 @@ static void shadow_packets(const struct shade_context *sc, unsigned lit,
             primed[i].shadow_occluded |= (occluded >> i & 1u) << l;
         }
     }
-}
-
-/*
- * The reflected and refracted rays of the primed first hits (lanes of
- * `drawn`, surfaces surf[i], camera rays along dir[i] with cone[i] to
- * hits[i]), which shade_hit traces at depth 0: traced here, a packet
- * per kind when coherent, and their hits' surfaces and shadow rays
- * primed as the first hits' are (shade.h).  Neighbouring pixels' mirror
- * rays off a flat or gently curved surface stay coherent, and their
- * hits' shadow rays share the light's position as the first hits' do:
- * on BART's kitchen 84 % of the shadow rays of depth-1 hits fall in
- * coherent groups of two or more (98 % for first hits).
- */
-static void prime_next(const struct shade_context *sc, unsigned drawn,
-                       const struct trace_scene_hit hits[TRACE_PACKET],
-                       const float dir[TRACE_PACKET][3], const struct shade_cone cone[TRACE_PACKET],
-                       struct surface *surf, struct shade_primed primed[TRACE_PACKET],
-                       struct shade_primed next[2 * TRACE_PACKET])
-{
-    const struct render_state *st = sc->state;
-    for (int kind = 0; kind < 2; kind++) {
-        struct trace_packet pk;
-        const float *dirs[TRACE_PACKET];
-        int n = 0;
-        pk.active = 0;
-        for (int i = 0; i < TRACE_PACKET; i++) {
-            if (!(drawn >> i & 1u))
-                continue;
-            const struct scene_material *m = surf[i].mat;
-            if (!((kind == 0 ? m->reflectivity : m->transparency) > 0.0f))
-                continue;
-            float unit_dir[3] = {dir[i][0], dir[i][1], dir[i][2]};
-            vec3_normalize(unit_dir);
-            next_ray(&surf[i], unit_dir, kind, pk.org[i], pk.dir[i]);
-            pk.tmin[i] = 0.0f;
-            pk.tmax[i] = INFINITY;
-            pk.active |= 1u << i;
-            dirs[n++] = pk.dir[i];
-        }
-        if (!pk.active)
-            continue;
-        struct trace_scene_hit h[TRACE_PACKET];
-        unsigned got = 0;
-        if (n >= 2 && trace_packet_coherent(dirs, n)) {
-            got = trace_scene_closest_packet(sc->rays, &pk, h, sc->counters);
-        } else {
-            for (int i = 0; i < TRACE_PACKET; i++)
-                if (pk.active >> i & 1u &&
-                    trace_scene_closest(sc->rays, pk.org[i], pk.dir[i], 0.0f, INFINITY, &h[i],
-                                        sc->counters))
-                    got |= 1u << i;
-        }
-        struct shade_primed *nx = &next[kind * TRACE_PACKET];
-        struct surface *ns = &surf[(1 + kind) * TRACE_PACKET];
-        float origin[TRACE_PACKET][3];
-        unsigned lit = 0;
-        for (int i = 0; i < TRACE_PACKET; i++) {
-            if (!(pk.active >> i & 1u))
-                continue;
-            nx[i].found = (int)(got >> i & 1u);
-            memcpy(nx[i].org, pk.org[i], sizeof(nx[i].org));
-            memcpy(nx[i].dir, pk.dir[i], sizeof(nx[i].dir));
-            nx[i].surface = NULL;
-            nx[i].shadow_known = 0;
-            nx[i].shadow_occluded = 0;
-            nx[i].next[0] = NULL;
-            nx[i].next[1] = NULL;
-            primed[i].next[kind] = &nx[i];
-            if (!nx[i].found)
-                continue;
-            nx[i].hit = h[i];
-            /* shade_hit's cones: at the first hit, then along this ray. */
-            const struct shade_cone first = cone_at(cone[i], dir[i], hits[i].t);
-            surface_fetch(sc, &h[i], pk.dir[i], cone_at(first, pk.dir[i], h[i].t).width, &ns[i]);
-            nx[i].surface = &ns[i];
-            if (st->lighting_used && !ns[i].mat->lighting)
-                continue;
-            shade_offset_point(ns[i].p, ns[i].ng, ns[i].p_error, origin[i]);
-            lit |= 1u << i;
-        }
-        if (lit)
-            shadow_packets(sc, lit, (const float(*)[3])origin, ns, nx);
-    }
-}
-
-void shade_prime_shadows(const struct shade_context *sc, unsigned found,
-                         const struct trace_scene_hit hits[TRACE_PACKET],
-                         const float org[TRACE_PACKET][3], const float dir[TRACE_PACKET][3],
-                         const struct shade_cone cone[TRACE_PACKET], struct surface *surf,
-                         struct shade_primed primed[TRACE_PACKET],
-                         struct shade_primed next[2 * TRACE_PACKET])
-{
-    const struct render_state *st = sc->state;
-    /* A frame with a hit filter (sc->shadows, render/secondary.h) traces
-     * its packets with the filter, which packet_scene.c applies ray by
-     * ray as the single walk does. */
-    if (st->shading != RENDER_WHITTED)
-        return;
-    float origin[TRACE_PACKET][3];
-    unsigned lit = 0, drawn = 0;
-    for (int i = 0; i < TRACE_PACKET; i++) {
-        if (!(found >> i & 1u))
-            continue;
-        /* A first hit GL does not draw (culled, outlined) gives the pixel
-         * to a hit behind it: not primed, so no ray the shading does not
-         * ask for is traced. */
-        if (!gl_hit_drawn(sc, dir[i], &hits[i]))
-            continue;
-        /* Nor does a first hit a clip plane removes: blend.c shades
-         * another hit behind it or at its distance. */
-        if (sc->clipping && blend_hit_clipped(sc, org[i], dir[i], &hits[i]))
-            continue;
-        surface_fetch(sc, &hits[i], dir[i], cone_at(cone[i], dir[i], hits[i].t).width, &surf[i]);
-        primed[i].surface = &surf[i];
-        primed[i].shadow_known = 0;
-        primed[i].shadow_occluded = 0;
-        drawn |= 1u << i;
-        if (st->lighting_used && !surf[i].mat->lighting)
-            continue; /* unlit: no shadow rays */
-        shade_offset_point(surf[i].p, surf[i].ng, surf[i].p_error, origin[i]);
-        lit |= 1u << i;
-    }
-    if (lit)
-        shadow_packets(sc, lit, (const float(*)[3])origin, surf, primed);
-    /* shade_hit's reflected and refracted rays at depth 0. */
-    if (drawn && st->max_depth > 0)
-        prime_next(sc, drawn, hits, dir, cone, surf, primed, next);
 }

@@ -51,16 +51,7 @@ struct shade_primed {
     const struct surface *surface;
     unsigned shadow_known;
     unsigned shadow_occluded;
-    /* NULL, or the reflected (0) and refracted (1) ray of `surface` at
-     * depth 1, traced ahead by shade_prime_shadows: found and hit are its
-     * answer (tmin 0, tmax infinity), org and dir the ray, surface its
-     * hit's surface and the shadow bits its shadow rays'; next is NULL
-     * there. */
-    const struct shade_primed *next[2];
-    float org[3];
-    float dir[3];
 };
-
 
 /* The frame's instance a hit belongs to: its appearance, clip planes and
  * raster state, and its object's mesh. */
@@ -112,33 +103,22 @@ void shade_hit(const struct shade_context *sc, const float org[3], const float d
  * so they are as coherent as the camera rays).  For each ray i with a
  * first hit (bit i of found, hits[i], ray from org[i] along dir[i] with
  * cone[i]) that the shading certainly shades as it is (drawn, not
- * clipped), surf[i] gets its surface and primed[i] points at it, with
- * the answers of its shadow rays traced in a packet when it is lit,
- * through the frame's shadow filter (sc->shadows, render/secondary.h)
- * when it has one; primed[i]'s other fields are left alone.
- *
- * The same for the hits of the block's reflected and refracted rays at
- * depth 1 (when max_depth allows them): each such ray is traced ahead,
- * as a closest-hit packet (through sc->rays) when at least two are
- * coherent, and primed[i].next[kind] points at next[kind * TRACE_PACKET
- * + i] with its answer, its hit's surface in surf[(1 + kind) *
- * TRACE_PACKET + i] and its shadow rays' answers, their packets formed
- * per light over the block's reflected (refracted) hits as above.
- * surf has 3 x TRACE_PACKET entries, next 2 x TRACE_PACKET.
- *
- * A light whose rays are fewer than two or not coherent
- * (trace_packet_coherent) leaves them to the shading, ray by ray.  The
- * rays are computed by shade_hit's and local_whitted's own operations
- * and a packet's answers are the single rays' (trace/packet_scene.h),
- * and every ray traced ahead is one the shading asks for, so the image
- * and the ray count are those of single rays.
+ * clipped, lit), surf[i] gets its surface and primed[i] points at it
+ * with the answers of the shadow rays traced in a packet, through the
+ * frame's shadow filter (sc->shadows, render/secondary.h) when it has
+ * one (surf has TRACE_PACKET entries); primed[i]'s other fields are left
+ * alone.  A light whose rays are fewer than two or not coherent
+ * (trace_packet_coherent) leaves them to the shading, ray by ray.  The rays are computed by
+ * local_whitted's own operations and a packet's answers are the single
+ * rays' (trace/packet_scene.h), so the image and the ray count are those
+ * of single rays.
  */
 void shade_prime_shadows(const struct shade_context *sc, unsigned found,
                          const struct trace_scene_hit hits[TRACE_PACKET],
                          const float org[TRACE_PACKET][3], const float dir[TRACE_PACKET][3],
-                         const struct shade_cone cone[TRACE_PACKET], struct surface *surf,
-                         struct shade_primed primed[TRACE_PACKET],
-                         struct shade_primed next[2 * TRACE_PACKET]);
+                         const struct shade_cone cone[TRACE_PACKET],
+                         struct surface *surf,
+                         struct shade_primed primed[TRACE_PACKET]);
 
 /*
  * Moves a point off a surface along the unit normal n by
