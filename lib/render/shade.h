@@ -108,10 +108,10 @@ void shade_hit(const struct shade_context *sc, const float org[3], const float d
  * frame's shadow filter (sc->shadows, render/secondary.h) when it has
  * one (surf has TRACE_PACKET entries); primed[i]'s other fields are left
  * alone.  A light whose rays are fewer than two or not coherent
- * (trace_packet_coherent) leaves them to the shading, ray by ray.  The rays are computed by
- * local_whitted's own operations and a packet's answers are the single
- * rays' (trace/packet_scene.h), so the image and the ray count are those
- * of single rays.
+ * (trace_packet_coherent) leaves them to the shading, ray by ray.  The
+ * rays are computed by local_whitted's own operations and a packet's
+ * answers are the single rays' (trace/packet_scene.h), so the image and
+ * the ray count are those of single rays.
  */
 void shade_prime_shadows(const struct shade_context *sc, unsigned found,
                          const struct trace_scene_hit hits[TRACE_PACKET],
