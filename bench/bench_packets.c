@@ -19,8 +19,10 @@
  * primary rays, rtOccludedRays on the shadow rays and whole frames
  * (rtRenderFrame, eye light: camera rays only; Whitted: plus a shadow ray
  * per hit to a point light, traced one at a time from inside shading) of
- * the mesh from its camera, on contexts with packets=on and packets=off
- * (the answers and images must be equal, memcmp).
+ * the mesh from its camera, and a Whitted frame of the mesh cut in two by
+ * a clip plane (its shadow rays through the hit filter), on contexts with
+ * packets=on and packets=off (the answers and images must be equal,
+ * memcmp).
  *
  * The second table is the hybrid threshold: packets of the same rays
  * with every threshold from 0 (packets to the leaves) to 9 (each ray
@@ -281,7 +283,11 @@ out:
     return rc;
 }
 
-/* The API table: a context over the mesh, one instance, its camera. */
+static void api_frame(const struct bench_mesh *mesh, const float *flat, RTuint object,
+                      int clipped);
+
+/* The API table: a context over the mesh, one instance (name 1), its
+ * camera. */
 static RTcontext api_context(const struct bench_mesh *mesh, const float *flat, int threads,
                              int packets)
 {
@@ -290,8 +296,7 @@ static RTcontext api_context(const struct bench_mesh *mesh, const float *flat, i
     RTcontext ctx = rtCreateContext(config);
     if (!ctx || !rtMakeCurrent(ctx))
         return NULL;
-    RTuint object;
-    rtGenObjects(1, &object);
+    const RTuint object = 1;
     rtNewObject(object);
     rtEnableClientState(RT_VERTEX_ARRAY);
     rtVertexPointer(3, RT_FLOAT, 0, flat);
@@ -312,15 +317,40 @@ static RTcontext api_context(const struct bench_mesh *mesh, const float *flat, i
     rtLightfv(RT_LIGHT0, RT_POSITION, light); /* through the modelview, as GL */
     rtEnable(RT_LIGHT0);
     rtLoadIdentity();
-    rtBeginFrame();
-    rtuLookAt(c->eye[0], c->eye[1], c->eye[2], c->eye[0] + c->forward[0],
-              c->eye[1] + c->forward[1], c->eye[2] + c->forward[2], c->up[0], c->up[1], c->up[2]);
-    rtInstantiateObject(object);
-    rtLoadIdentity();
+    api_frame(mesh, flat, object, 0);
     return ctx;
 }
 
-#define API_WORK 4 /* rtTraceRays, rtOccludedRays, eye-light frame, Whitted frame */
+/* The frame of api_context's instance `object`; with `clipped`, drawn
+ * under a clip plane x <= the middle of the mesh's box (mesh space),
+ * which cuts it in two: Whitted's shadow rays then go through the hit
+ * filter (render/secondary.h). */
+static void api_frame(const struct bench_mesh *mesh, const float *flat, RTuint object,
+                      int clipped)
+{
+    const struct bench_camera *c = &mesh->camera;
+    rtLoadIdentity();
+    rtBeginFrame();
+    rtuLookAt(c->eye[0], c->eye[1], c->eye[2], c->eye[0] + c->forward[0],
+              c->eye[1] + c->forward[1], c->eye[2] + c->forward[2], c->up[0], c->up[1], c->up[2]);
+    if (clipped) {
+        float lo = INFINITY, hi = -INFINITY;
+        for (size_t j = 0; j < 3 * (size_t)mesh->tri_count; j++) {
+            lo = flat[3 * j] < lo ? flat[3 * j] : lo;
+            hi = flat[3 * j] > hi ? flat[3 * j] : hi;
+        }
+        const double plane[4] = {-1.0, 0.0, 0.0, 0.5 * ((double)lo + (double)hi)};
+        rtClipPlane(RT_CLIP_PLANE0, plane);
+        rtEnable(RT_CLIP_PLANE0);
+    }
+    rtInstantiateObject(object);
+    rtDisable(RT_CLIP_PLANE0);
+    rtLoadIdentity();
+}
+
+/* rtTraceRays, rtOccludedRays, eye-light frame, Whitted frame, Whitted
+ * frame with the mesh cut in two by a clip plane (api_frame) */
+#define API_WORK 5
 
 /* The rays of set in the camera's eye space (rtuLookAt's matrix, in
  * double): api_context puts the mesh there, as a GL program draws under
@@ -412,6 +442,14 @@ static int api_mesh(const struct bench_options *opts, const struct bench_mesh *m
             for (int w = 0; w < API_WORK; w++)
                 for (int p = 0; p < 2; p++) {
                     rtMakeCurrent(ctx[p]);
+                    /* The clipped frame for its row only, recorded
+                     * outside the timed call (its first frame builds the
+                     * small top level of one instance). */
+                    if (w == 4 || (w == 0 && run > 0)) {
+                        api_frame(mesh, flat, 1, w == 4);
+                        rtShadingMode(RT_EYE_LIGHT);
+                        rtRenderFrame();
+                    }
                     double cpu = bench_cpu_ms();
                     double start = rt_now_ms();
                     if (w == 0)
@@ -453,7 +491,8 @@ static int api_mesh(const struct bench_options *opts, const struct bench_mesh *m
     report_progress("packets: %s: API primary rays hitting: %u of %u\n", mesh->name, hit_count,
                     sets[0].count);
     static const char *const work[API_WORK] = {"rtTraceRays primary", "rtOccludedRays shadow",
-                                               "frame, eye light", "frame, Whitted"};
+                                               "frame, eye light", "frame, Whitted",
+                                               "frame, Whitted, clip plane"};
     for (int w = 0; w < API_WORK; w++)
         for (int t = 0; t < 2; t++) {
             double ms[2];

@@ -193,6 +193,12 @@ static int clipped(const struct shade_context *sc, const float org[3], const flo
     return scene_clip_removes(&shade_hit_instance(sc, hit)->appearance.clip, p);
 }
 
+int blend_hit_clipped(const struct shade_context *sc, const float org[3], const float dir[3],
+                      const struct trace_scene_hit *hit)
+{
+    return clipped(sc, org, dir, hit);
+}
+
 /* One fragment of a group: its colour and what GL does with it. */
 struct fragment {
     float rgba[4];

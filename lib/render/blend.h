@@ -30,6 +30,12 @@ void blend_combine(unsigned src_factor, unsigned dst_factor, const float src[4],
 /* 1 when blend_combine's result for this source depends on dst. */
 int blend_needs_destination(unsigned src_factor, unsigned dst_factor, const float src[4]);
 
+/* 1 when a clip plane the camera ray's hit `hit` was drawn under removes
+ * it (the point org + t dir as the primary path computes it): such a hit
+ * is not the one blend_trace_primary shades. */
+int blend_hit_clipped(const struct shade_context *sc, const float org[3], const float dir[3],
+                      const struct trace_scene_hit *hit);
+
 /*
  * The colour of primary ray (org, dir, tmax) with the pass's clip planes
  * and blend state; *t_first is the distance of the nearest kept hit

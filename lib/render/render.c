@@ -586,7 +586,8 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                 primed[i].shadow_known = 0;
                 primed[i].shadow_occluded = 0;
             }
-            shade_prime_shadows(sc, found, hits, (const float(*)[3])pk.dir, cone, surf, primed);
+            shade_prime_shadows(sc, found, hits, (const float(*)[3])pk.org,
+                                (const float(*)[3])pk.dir, cone, surf, primed);
             for (int i = 0; i < TRACE_PACKET; i++) {
                 const int x = bx + i % RENDER_BLOCK_W, y = by + i / RENDER_BLOCK_W;
                 if (!(x < x0 + RENDER_TILE_SIZE && x < vp[2] && y < y0 + RENDER_TILE_SIZE &&
@@ -924,9 +925,9 @@ static void query_task(void *arg, int worker)
 {
     struct render_pass *sh = arg;
     struct trace_scene_counters *counters = &sh->counters[worker].c;
-    /* Packets walk without the hit filter: a frame with clip planes
-     * traces its queries ray by ray. */
-    const int packets = sh->scene.kernels && sh->scene.kernels->closest_packet && !sh->secondary;
+    /* Packets walk with the hit filter of a frame with clip planes, ray
+     * by ray as single rays (trace/packet_scene.h). */
+    const int packets = sh->scene.kernels && sh->scene.kernels->closest_packet;
     for (;;) {
         uint32_t item = rt_atomic_fetch_add_relaxed(&sh->next_item, 1);
         size_t first = (size_t)item * RENDER_QUERY_CHUNK;

@@ -22,6 +22,7 @@
 #include <string.h>
 
 #include "base/mat4.h"
+#include "render/blend.h"
 #include "render/gl_light.h"
 #include "render/gl_shade.h"
 #include "render/surface.h"
@@ -275,16 +276,16 @@ void shade_hit(const struct shade_context *sc, const float org[3], const float d
 
 void shade_prime_shadows(const struct shade_context *sc, unsigned found,
                          const struct trace_scene_hit hits[TRACE_PACKET],
-                         const float dir[TRACE_PACKET][3],
+                         const float org[TRACE_PACKET][3], const float dir[TRACE_PACKET][3],
                          const struct shade_cone cone[TRACE_PACKET],
                          struct surface *surf,
                          struct shade_primed primed[TRACE_PACKET])
 {
     const struct render_state *st = sc->state;
-    /* Packets walk without the hit filter (render/secondary.h), and a
-     * clipped first hit is not the one shaded. */
-    if (st->shading != RENDER_WHITTED || sc->shadows != sc->scene || sc->scene->filtered ||
-        sc->clipping)
+    /* A frame with a hit filter (sc->shadows, render/secondary.h) traces
+     * its packets with the filter, which packet_scene.c applies ray by
+     * ray as the single walk does. */
+    if (st->shading != RENDER_WHITTED)
         return;
     float origin[TRACE_PACKET][3];
     unsigned lit = 0;
@@ -295,6 +296,10 @@ void shade_prime_shadows(const struct shade_context *sc, unsigned found,
          * to a hit behind it: not primed, so no ray the shading does not
          * ask for is traced. */
         if (!gl_hit_drawn(sc, dir[i], &hits[i]))
+            continue;
+        /* Nor does a first hit a clip plane removes: blend.c shades
+         * another hit behind it or at its distance. */
+        if (sc->clipping && blend_hit_clipped(sc, org[i], dir[i], &hits[i]))
             continue;
         surface_fetch(sc, &hits[i], dir[i], cone_at(cone[i], dir[i], hits[i].t).width, &surf[i]);
         primed[i].surface = &surf[i];

@@ -101,21 +101,21 @@ void shade_hit(const struct shade_context *sc, const float org[3], const float d
  * packet per light (Wald, Slusallek, Benthin and Wagner 2001 sec. 4:
  * shadow rays of neighbouring pixels to one light share their end point,
  * so they are as coherent as the camera rays).  For each ray i with a
- * first hit (bit i of found, hits[i], ray along dir[i] with cone[i]) that
- * the shading certainly shades as it is (drawn, lit; no clip planes and
- * no hit filter in the frame: sc->shadows is sc->scene), surf[i] gets its
- * surface and primed[i] points at it with the answers of the shadow rays
- * traced in a packet (surf has TRACE_PACKET entries); primed[i]'s other
- * fields are left alone.  A light
- * whose rays are fewer than two or not coherent (trace_packet_coherent)
- * leaves them to the shading, ray by ray.  The rays are computed by
- * local_whitted's own operations and a packet's answers are the single
- * rays' (trace/packet_scene.h), so the image and the ray count are those
- * of single rays.
+ * first hit (bit i of found, hits[i], ray from org[i] along dir[i] with
+ * cone[i]) that the shading certainly shades as it is (drawn, not
+ * clipped, lit), surf[i] gets its surface and primed[i] points at it
+ * with the answers of the shadow rays traced in a packet, through the
+ * frame's shadow filter (sc->shadows, render/secondary.h) when it has
+ * one (surf has TRACE_PACKET entries); primed[i]'s other fields are left
+ * alone.  A light whose rays are fewer than two or not coherent
+ * (trace_packet_coherent) leaves them to the shading, ray by ray.  The
+ * rays are computed by local_whitted's own operations and a packet's
+ * answers are the single rays' (trace/packet_scene.h), so the image and
+ * the ray count are those of single rays.
  */
 void shade_prime_shadows(const struct shade_context *sc, unsigned found,
                          const struct trace_scene_hit hits[TRACE_PACKET],
-                         const float dir[TRACE_PACKET][3],
+                         const float org[TRACE_PACKET][3], const float dir[TRACE_PACKET][3],
                          const struct shade_cone cone[TRACE_PACKET],
                          struct surface *surf,
                          struct shade_primed primed[TRACE_PACKET]);

@@ -12,9 +12,15 @@
  * directions (Wald, Benthin and Slusallek 2003 sec. 4.4): every box test
  * is a ray's own, with its own near and far planes, and only the order
  * in which a node's children are visited follows the packet's first ray,
- * which no answer depends on.  When the scene's kernels have no packet
- * walk (isa=scalar, packets=off) or no wide top level, each ray is
- * traced alone.
+ * which no answer depends on.  A scene with a hit filter
+ * (trace_scene.filtered) is filtered as the single walk filters it: the
+ * instances the filter marks are walked for every ray's closest hit,
+ * which the filter is asked about ray by ray, and a ray whose hit it
+ * rejects finishes that instance alone (scene_filter.h); the filter sees
+ * the single walk's candidates, in another order between rays (an
+ * accept function must not depend on the order of its calls).  When
+ * the scene's kernels have no packet walk (isa=scalar, packets=off) or
+ * no wide top level, each ray is traced alone.
  */
 #ifndef RT_TRACE_PACKET_SCENE_H
 #define RT_TRACE_PACKET_SCENE_H
