@@ -194,32 +194,6 @@ static void one_case(struct tg_rng *r, uint64_t *cases, uint64_t *kept_rejected,
         accel_set_packet_lane(&p, (uint32_t)l, tri[l]);
         p.prim[l] = prim[l];
     }
-    /* Check 0: each lane's proper_size is the largest size that passes
-     * the finish's sliver test (isect_proper_at on the finish's n2 and
-     * lmax): one float too large would give some ray the plane's t where
-     * the scalar test takes the edge's. */
-    for (int l = 0; l < 4; l++) {
-        const float *v = tri[l];
-        if (isect_triangle_zero_area(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8]))
-            continue;
-        const double e1x = (double)v[3] - v[0], e1y = (double)v[4] - v[1];
-        const double e1z = (double)v[5] - v[2], e2x = (double)v[6] - v[0];
-        const double e2y = (double)v[7] - v[1], e2z = (double)v[8] - v[2];
-        const double n2 = isect_norm2(e1y * e2z - e1z * e2y, e1z * e2x - e1x * e2z,
-                                      e1x * e2y - e1y * e2x);
-        double e3[3], lmax;
-        (void)isect_longest_edge(e1x, e1y, e1z, e2x, e2y, e2z, e3, &lmax);
-        const float ps = p.proper_size[l];
-        const int sound = ps < 0.0f || isect_proper_at(n2, lmax, ps);
-        const float above = ps < 0.0f ? 0.0f : nextafterf(ps, INFINITY);
-        const int largest = ps == INFINITY || !isect_proper_at(n2, lmax, above);
-        if (!sound || !largest) {
-            if (failures < 10)
-                printf("  FAIL: lane %d proper_size %a (%s)\n", l, ps,
-                       sound ? "not the largest" : "too large");
-            failures++;
-        }
-    }
     /* Check 1: no lane the scalar test accepts is dropped. */
     struct tri4_ray r4;
     tri4_ray_init(&r4, &ray);

@@ -222,9 +222,6 @@ void accel_set_packet_lane(struct tri4_packet *p, uint32_t lane, const float v[9
         for (int k = 0; k < 3; k++)
             p->v[j][k][lane] = zero ? NAN : v[3 * j + k];
     }
-    p->proper_size[lane] =
-        zero ? -1.0f
-             : isect_triangle_proper_size(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8]);
 }
 
 /* Packet p's lanes from leaf slots [slot, slot + n), n <= 4; lanes past n

@@ -340,119 +340,6 @@ static inline int isect_triangle_zero_area(float x0, float y0, float z0, float x
     return nx == 0.0 && ny == 0.0 && nz == 0.0;
 }
 
-/* isect_triangle_finish's |n|^2 of the normal n = e1 x e2. */
-static inline double isect_norm2(double nx, double ny, double nz)
-{
-#if defined(__clang__)
-#pragma STDC FP_CONTRACT OFF
-#endif
-    return nx * nx + ny * ny + nz * nz;
-}
-
-/* isect_triangle_finish's longest edge: e3 = e2 - e1 (the edge v1 v2),
- * the squared lengths of e1, e2, e3, and which is the longest (1, 2 or 3,
- * a tie to the lower); *lmax its squared length. */
-static inline int isect_longest_edge(double e1x, double e1y, double e1z, double e2x, double e2y,
-                                     double e2z, double e3[3], double *lmax)
-{
-#if defined(__clang__)
-#pragma STDC FP_CONTRACT OFF
-#endif
-    e3[0] = e2x - e1x;
-    e3[1] = e2y - e1y;
-    e3[2] = e2z - e1z;
-    const double l1 = e1x * e1x + e1y * e1y + e1z * e1z;
-    const double l2 = e2x * e2x + e2y * e2y + e2z * e2z;
-    const double l3 = e3[0] * e3[0] + e3[1] * e3[1] + e3[2] * e3[2];
-    const int longest = l1 >= l2 && l1 >= l3 ? 1 : (l2 >= l3 ? 2 : 3);
-    *lmax = longest == 1 ? l1 : (longest == 2 ? l2 : l3);
-    return longest;
-}
-
-/* isect_triangle_finish's sliver test: a triangle with |n|^2 = n2 and
- * longest squared edge lmax is proper (its height^2 = n2 / lmax is at
- * least ISECT_SLIVER_ROUNDINGS roundings of the sheared coordinates,
- * one rounding being 2^-24 of their size) for a ray whose sheared
- * vertices have this size. */
-static inline int isect_proper_at(double n2, double lmax, float size)
-{
-#if defined(__clang__)
-#pragma STDC FP_CONTRACT OFF
-#endif
-    const double rounding = ISECT_SLIVER_ROUNDINGS * 0x1p-24 * (double)size;
-    return n2 >= rounding * rounding * lmax;
-}
-
-/*
- * The largest float size >= 0 at which isect_proper_at passes for the
- * triangle (x0..z2), with isect_triangle_finish's own n2 and lmax (the
- * same expressions on the same floats, so the same doubles): the wide
- * layout stores it per packet lane (bvh4_layout.h), and the packet
- * finish skips n2, the edge lengths and the test when size <= it.
- * -1 when no size passes (a NaN n2), +inf when every finite one does.
- *
- * Why a bound on size decides the test exactly: for a float size >= 0,
- * (double)size is exact and rounding = 2^-18 * size is exact (a power of
- * two, far from double's under- and overflow); rounding * rounding and
- * its product with lmax >= 0 are each rounded once, and rounding is
- * monotone, so the right-hand side is non-decreasing in size and the
- * test, n2 >= it, holds for every size up to some largest one and for
- * none above.  The search below only relies on that monotonicity: it
- * keeps a size known to pass and one known to fail and halves the
- * float bit patterns between them (for floats >= 0 the order of the
- * bits is the order of the values), starting near sqrt(n2 / lmax) *
- * 2^18, the exact answer up to a few roundings.  The answer is checked
- * by tri4_differential (a bound one step too large fails it).
- */
-static inline float isect_triangle_proper_size(float x0, float y0, float z0, float x1, float y1,
-                                               float z1, float x2, float y2, float z2)
-{
-#if defined(__clang__)
-#pragma STDC FP_CONTRACT OFF
-#endif
-    const double e1x = (double)x1 - x0;
-    const double e1y = (double)y1 - y0;
-    const double e1z = (double)z1 - z0;
-    const double e2x = (double)x2 - x0;
-    const double e2y = (double)y2 - y0;
-    const double e2z = (double)z2 - z0;
-    const double nx = e1y * e2z - e1z * e2y;
-    const double ny = e1z * e2x - e1x * e2z;
-    const double nz = e1x * e2y - e1y * e2x;
-    const double n2 = isect_norm2(nx, ny, nz);
-    double e3[3], lmax;
-    (void)isect_longest_edge(e1x, e1y, e1z, e2x, e2y, e2z, e3, &lmax);
-    const float big = 0x1.fffffep127f; /* FLT_MAX */
-    if (!isect_proper_at(n2, lmax, 0.0f))
-        return -1.0f;
-    if (isect_proper_at(n2, lmax, big))
-        return INFINITY;
-    /* pass: a size that passes; fail: one that fails (bit patterns). */
-    uint32_t pass = 0, fail;
-    memcpy(&fail, &big, sizeof(fail));
-    const double guess = sqrt(n2 / lmax) / (ISECT_SLIVER_ROUNDINGS * 0x1p-24);
-    if (guess > 0.0 && guess < 0x1p127) {
-        const float lo = (float)(guess * (1.0 - 0x1p-16));
-        const float hi = (float)(guess * (1.0 + 0x1p-16));
-        if (isect_proper_at(n2, lmax, lo))
-            memcpy(&pass, &lo, sizeof(pass));
-        if (!isect_proper_at(n2, lmax, hi))
-            memcpy(&fail, &hi, sizeof(fail));
-    }
-    while (fail - pass > 1u) {
-        const uint32_t mid_bits = pass + (fail - pass) / 2u;
-        float mid;
-        memcpy(&mid, &mid_bits, sizeof(mid));
-        if (isect_proper_at(n2, lmax, mid))
-            pass = mid_bits;
-        else
-            fail = mid_bits;
-    }
-    float size;
-    memcpy(&size, &pass, sizeof(size));
-    return size;
-}
-
 /*
  * The rest of isect_triangle once its float part has accepted the
  * triangle as a candidate below t_max: the zero-area test, t and its
@@ -475,8 +362,8 @@ static inline int isect_triangle_finish_impl(const struct trace_ray *ray, float 
                                              float y2, float z2, float U, float V, float W,
                                              float det, float Az, float Bz, float Cz,
                                              float size, float t_lo, float t_hi, float t_max,
-                                             int area_known, float proper_size, float *t_out,
-                                             float *u_out, float *v_out)
+                                             int area_known, float *t_out, float *u_out,
+                                             float *v_out)
 {
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
@@ -531,18 +418,20 @@ static inline int isect_triangle_finish_impl(const struct trace_ray *ray, float 
         const double dx = ray->dir[0];
         const double dy = ray->dir[1];
         const double dz = ray->dir[2];
-        /* The sliver test (isect_proper_at).  A packet lane knows the
-         * largest size at which its triangle passes it (proper_size,
-         * isect_triangle_proper_size); the test is monotone in size, so
-         * at or below that size it passes without its doubles. */
-        int proper = size <= proper_size;
-        if (!proper) {
-            double e3[3], lmax;
-            (void)isect_longest_edge(e1x, e1y, e1z, e2x, e2y, e2z, e3, &lmax);
-            proper = isect_proper_at(isect_norm2(nx, ny, nz), lmax, size);
-        }
+        const double n2 = nx * nx + ny * ny + nz * nz;
+        /* The longest edge (p, p + e). */
+        const double e3x = e2x - e1x;
+        const double e3y = e2y - e1y;
+        const double e3z = e2z - e1z;
+        const double l1 = e1x * e1x + e1y * e1y + e1z * e1z;
+        const double l2 = e2x * e2x + e2y * e2y + e2z * e2z;
+        const double l3 = e3x * e3x + e3y * e3y + e3z * e3z;
+        const int longest = l1 >= l2 && l1 >= l3 ? 1 : (l2 >= l3 ? 2 : 3);
+        const double lmax = longest == 1 ? l1 : (longest == 2 ? l2 : l3);
+        /* One rounding of the sheared coordinates: 2^-24 of their size. */
+        const double rounding = ISECT_SLIVER_ROUNDINGS * 0x1p-24 * (double)size;
         double tp = NAN;
-        if (proper) {
+        if (n2 >= rounding * rounding * lmax) {
             /* height^2 = n2 / lmax: a proper triangle. */
             const double den = nx * dx + ny * dy + nz * dz;
             const double num = nx * ((double)v0[0] - ray->org[0]) +
@@ -551,13 +440,7 @@ static inline int isect_triangle_finish_impl(const struct trace_ray *ray, float 
             if (den != 0.0)
                 tp = num / den;
         } else {
-            /* The longest edge (p, p + e); e1 and e2 start at v0, e3 at
-             * v1. */
-            double e3[3], lmax;
-            const int longest = isect_longest_edge(e1x, e1y, e1z, e2x, e2y, e2z, e3, &lmax);
-            const double e3x = e3[0];
-            const double e3y = e3[1];
-            const double e3z = e3[2];
+            /* e1 and e2 start at v0, e3 at v1. */
             const double ex = longest == 1 ? e1x : (longest == 2 ? e2x : e3x);
             const double ey = longest == 1 ? e1y : (longest == 2 ? e2y : e3y);
             const double ez = longest == 1 ? e1z : (longest == 2 ? e2z : e3z);
@@ -594,8 +477,7 @@ static inline int isect_triangle_finish9(const struct trace_ray *ray, float x0, 
                                          float *u_out, float *v_out)
 {
     return isect_triangle_finish_impl(ray, x0, y0, z0, x1, y1, z1, x2, y2, z2, U, V, W, det, Az,
-                                      Bz, Cz, size, t_lo, t_hi, t_max, 0, -INFINITY, t_out,
-                                      u_out, v_out);
+                                      Bz, Cz, size, t_lo, t_hi, t_max, 0, t_out, u_out, v_out);
 }
 
 static inline int isect_triangle_finish(const struct trace_ray *ray, const float v0[3],
@@ -639,14 +521,13 @@ static inline int isect_triangle_occludes_impl(const struct trace_ray *ray, floa
                                                float y2, float z2, float U, float V, float W,
                                                float det, float Az, float Bz, float Cz,
                                                float size, float t_lo, float t_hi, float t_max,
-                                               int area_known, float proper_size)
+                                               int area_known)
 {
     if (isect_occludes_short(ray, t_lo, t_hi, t_max))
         return area_known || !isect_triangle_zero_area(x0, y0, z0, x1, y1, z1, x2, y2, z2);
     float t, u, v;
     return isect_triangle_finish_impl(ray, x0, y0, z0, x1, y1, z1, x2, y2, z2, U, V, W, det, Az,
-                                      Bz, Cz, size, t_lo, t_hi, t_max, area_known, proper_size,
-                                      &t, &u, &v);
+                                      Bz, Cz, size, t_lo, t_hi, t_max, area_known, &t, &u, &v);
 }
 
 static inline int isect_triangle_occludes9(const struct trace_ray *ray, float x0, float y0,
@@ -656,7 +537,7 @@ static inline int isect_triangle_occludes9(const struct trace_ray *ray, float x0
                                            float t_lo, float t_hi, float t_max)
 {
     return isect_triangle_occludes_impl(ray, x0, y0, z0, x1, y1, z1, x2, y2, z2, U, V, W, det,
-                                        Az, Bz, Cz, size, t_lo, t_hi, t_max, 0, -INFINITY);
+                                        Az, Bz, Cz, size, t_lo, t_hi, t_max, 0);
 }
 
 /*

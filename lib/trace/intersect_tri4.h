@@ -264,12 +264,12 @@ static inline int tri4_lane_test(const struct trace_ray *ray, const struct tri4_
         return isect_triangle_occludes_impl(
             ray, p->v[0][0][l], p->v[0][1][l], p->v[0][2][l], p->v[1][0][l], p->v[1][1][l],
             p->v[1][2][l], p->v[2][0][l], p->v[2][1][l], p->v[2][2][l], U, V, W, det, Az, Bz,
-            Cz, lanes->size[l], lanes->t_lo[l], lanes->t_hi[l], t_max, 1, p->proper_size[l]);
+            Cz, lanes->size[l], lanes->t_lo[l], lanes->t_hi[l], t_max, 1);
     return isect_triangle_finish_impl(ray, p->v[0][0][l], p->v[0][1][l], p->v[0][2][l],
                                       p->v[1][0][l], p->v[1][1][l], p->v[1][2][l],
                                       p->v[2][0][l], p->v[2][1][l], p->v[2][2][l], U, V, W, det,
                                       Az, Bz, Cz, lanes->size[l], lanes->t_lo[l],
-                                      lanes->t_hi[l], t_max, 1, p->proper_size[l], t, u, w);
+                                      lanes->t_hi[l], t_max, 1, t, u, w);
 }
 
 #endif
