@@ -18,7 +18,11 @@
  * at their insides, and past them; the triangles are random, grid
  * snapped (shared planes, exact zeros), collinear or with repeated
  * vertices, slivers, far from the origin (1e5), and the rays have zero
- * direction components, tmin > 0 and finite limits.  It also counts the
+ * direction components, tmin > 0 and finite limits.  The packets are
+ * filled as the collapse fills them (accel_set_packet_lane: a zero-area
+ * lane holds NaN, and the packet finish leaves out its zero-area test):
+ * a zero-area lane left unmarked is accepted by the packet finish and
+ * fails check 2, a proper lane marked fails check 1.  It also counts the
  * lanes the filter kept that the scalar test then rejected: those are
  * the candidate hits the scalar test needs its double precision for
  * (edge-function zeros included), and must be a small share.
@@ -186,10 +190,8 @@ static void one_case(struct tg_rng *r, uint64_t *cases, uint64_t *kept_rejected,
     trace_ray_init(&ray, org, dir, tmin);
     struct tri4_packet p;
     for (int l = 0; l < 4; l++) {
-        for (int j = 0; j < 3; j++) {
-            for (int k = 0; k < 3; k++)
-                p.v[j][k][l] = tri[l][3 * j + k];
-        }
+        /* As the collapse fills packets: a zero-area lane is marked. */
+        accel_set_packet_lane(&p, (uint32_t)l, tri[l]);
         p.prim[l] = prim[l];
     }
     /* Check 1: no lane the scalar test accepts is dropped. */

@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "base/alloc.h"
+#include "trace/intersect.h"
 
 #define MAX_WIDTH 8
 
@@ -210,6 +211,19 @@ static void write_node8(struct bvh8_node *w, const struct bvh *bvh, const struct
     }
 }
 
+void accel_set_packet_lane(struct tri4_packet *p, uint32_t lane, const float v[9])
+{
+    /* A zero-area triangle (isect_triangle_zero_area: the finish's own
+     * doubles) is never hit by any ray, so its lane holds NaN, which the
+     * packet filter always rejects. */
+    const int zero = isect_triangle_zero_area(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7],
+                                              v[8]);
+    for (int j = 0; j < 3; j++) {
+        for (int k = 0; k < 3; k++)
+            p->v[j][k][lane] = zero ? NAN : v[3 * j + k];
+    }
+}
+
 /* Packet p's lanes from leaf slots [slot, slot + n), n <= 4; lanes past n
  * repeat the last triangle. */
 static void fill_packet(struct tri4_packet *p, const float *tri, const uint32_t *prim_index,
@@ -217,11 +231,7 @@ static void fill_packet(struct tri4_packet *p, const float *tri, const uint32_t 
 {
     for (uint32_t l = 0; l < 4; l++) {
         uint32_t s = slot + (l < n ? l : n - 1);
-        const float *v = &tri[9 * (size_t)s];
-        for (int j = 0; j < 3; j++) {
-            for (int k = 0; k < 3; k++)
-                p->v[j][k][l] = v[3 * j + k];
-        }
+        accel_set_packet_lane(p, l, &tri[9 * (size_t)s]);
         if (prim_index)
             p->prim[l] = prim_index[s];
     }

@@ -47,7 +47,12 @@
  * the SIMD leaf test must compute its floats exactly as the scalar one
  * (intersect_tri4.h):
  *
- *   byte   0..143  v[3][3][4]  vertex 0..2, axis x..z, lane (float)
+ *   byte   0..143  v[3][3][4]  vertex 0..2, axis x..z, lane (float);
+ *                  all nine NaN for a zero-area triangle
+ *                  (isect_triangle_zero_area, intersect.h), which no
+ *                  ray hits: the packet filter rejects a NaN lane, so a
+ *                  lane it keeps is known to have an area and the
+ *                  finish skips that test (accel_set_packet_lane)
  *   byte 144..159  prim[4]     the caller's primitive index per lane
  *
  * A leaf of n triangles is ceil(n / 4) consecutive packets; the lanes of
@@ -136,6 +141,11 @@ int accel_collapse4(struct bvh4 *out, const struct bvh *bvh, const float *tri);
  * triangles tri into the wide layout (same topology: accel_refit keeps
  * it); no allocation.  Safe on a zeroed layout. */
 void accel_refit4(struct bvh4 *wide, const struct bvh *bvh, const float *tri);
+
+/* Lane `lane` of p: the triangle v (v0, v1, v2, each xyz), or NaN in all
+ * nine coordinates when it has zero area (the layout above).  Every
+ * packet lane is written by this; implemented in lib/accel. */
+void accel_set_packet_lane(struct tri4_packet *p, uint32_t lane, const float v[9]);
 
 /* Node and packet bytes of a layout (the memory table). */
 uint64_t bvh4_node_bytes(const struct bvh4 *wide);

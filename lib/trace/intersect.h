@@ -314,6 +314,33 @@ static inline float isect_clamp_to_box(float t_lo, float t_hi, float t)
 }
 
 /*
+ * isect_triangle_zero_area: 1 when the cross product of the triangle's
+ * edge vectors, computed in double as isect_triangle_finish computes it
+ * (the same expressions in the same order, so the same doubles), is
+ * exactly zero: the triangles isect_triangle never hits, whatever the
+ * ray.  The wide layout's packets (bvh4_layout.h) mark such a lane when
+ * they are filled, so that the packet test never keeps it and its finish
+ * (area_known below) skips this test.
+ */
+static inline int isect_triangle_zero_area(float x0, float y0, float z0, float x1, float y1,
+                                           float z1, float x2, float y2, float z2)
+{
+#if defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#endif
+    const double e1x = (double)x1 - x0;
+    const double e1y = (double)y1 - y0;
+    const double e1z = (double)z1 - z0;
+    const double e2x = (double)x2 - x0;
+    const double e2y = (double)y2 - y0;
+    const double e2z = (double)z2 - z0;
+    const double nx = e1y * e2z - e1z * e2y;
+    const double ny = e1z * e2x - e1x * e2z;
+    const double nz = e1x * e2y - e1y * e2x;
+    return nx == 0.0 && ny == 0.0 && nz == 0.0;
+}
+
+/*
  * The rest of isect_triangle once its float part has accepted the
  * triangle as a candidate below t_max: the zero-area test, t and its
  * clamp, the barycentrics.  U, V, W, det, Az, Bz, Cz, t_lo, t_hi and
@@ -321,13 +348,22 @@ static inline float isect_clamp_to_box(float t_lo, float t_hi, float t)
  * values isect_triangle computed; the SIMD leaf test (intersect_tri4.h)
  * computes the same floats four lanes at a time and calls this for the
  * lanes it keeps, so that a candidate costs no second float pass.
+ * isect_triangle_finish9 is this with area_known 0.  area_known 1 (a
+ * constant where it is inlined): the caller knows the triangle is not
+ * isect_triangle_zero_area (a packet lane the filter kept: such a lane
+ * is marked NaN when the packet is filled), so the zero-area test, which
+ * would pass, is left out; every other step is the same.
  */
-static inline int isect_triangle_finish9(const struct trace_ray *ray, float x0, float y0,
-                                         float z0, float x1, float y1, float z1, float x2,
-                                         float y2, float z2, float U, float V, float W,
-                                         float det, float Az, float Bz, float Cz, float size,
-                                         float t_lo, float t_hi, float t_max, float *t_out,
-                                         float *u_out, float *v_out)
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline int isect_triangle_finish_impl(const struct trace_ray *ray, float x0, float y0,
+                                             float z0, float x1, float y1, float z1, float x2,
+                                             float y2, float z2, float U, float V, float W,
+                                             float det, float Az, float Bz, float Cz,
+                                             float size, float t_lo, float t_hi, float t_max,
+                                             int area_known, float *t_out, float *u_out,
+                                             float *v_out)
 {
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
@@ -360,7 +396,7 @@ static inline int isect_triangle_finish9(const struct trace_ray *ray, float x0, 
     const double nx = e1y * e2z - e1z * e2y;
     const double ny = e1z * e2x - e1x * e2z;
     const double nz = e1x * e2y - e1y * e2x;
-    if (nx == 0.0 && ny == 0.0 && nz == 0.0)
+    if (!area_known && nx == 0.0 && ny == 0.0 && nz == 0.0)
         return 0;
 
     /* t.  The paper's T / det is only as good as U, V, W: fine for a
@@ -433,6 +469,17 @@ static inline int isect_triangle_finish9(const struct trace_ray *ray, float x0, 
     return 1;
 }
 
+static inline int isect_triangle_finish9(const struct trace_ray *ray, float x0, float y0,
+                                         float z0, float x1, float y1, float z1, float x2,
+                                         float y2, float z2, float U, float V, float W,
+                                         float det, float Az, float Bz, float Cz, float size,
+                                         float t_lo, float t_hi, float t_max, float *t_out,
+                                         float *u_out, float *v_out)
+{
+    return isect_triangle_finish_impl(ray, x0, y0, z0, x1, y1, z1, x2, y2, z2, U, V, W, det, Az,
+                                      Bz, Cz, size, t_lo, t_hi, t_max, 0, t_out, u_out, v_out);
+}
+
 static inline int isect_triangle_finish(const struct trace_ray *ray, const float v0[3],
                                         const float v1[3], const float v2[3], float U, float V,
                                         float W, float det, float Az, float Bz, float Cz,
@@ -444,6 +491,16 @@ static inline int isect_triangle_finish(const struct trace_ray *ray, const float
                                   t_out, u_out, v_out);
 }
 
+/* isect_triangle_occludes9's short way (see there): every t the finish
+ * can compute is clamped into [t_lo, t_hi], which lies inside [tmin,
+ * t_max) and is finite. */
+static inline int isect_occludes_short(const struct trace_ray *ray, float t_lo, float t_hi,
+                                       float t_max)
+{
+    return t_lo >= ray->tmin && t_lo <= t_hi && t_hi < t_max && isfinite(t_lo) &&
+           isfinite(t_hi);
+}
+
 /*
  * isect_triangle_finish's answer without t, for any-hit queries.  The
  * final t is clamped into [t_lo, t_hi] (isect_clamp_to_box: a NaN or
@@ -452,34 +509,35 @@ static inline int isect_triangle_finish(const struct trace_ray *ray, const float
  * only the zero-area test can refuse the triangle: the division and the
  * double-precision distance are skipped.  Otherwise
  * isect_triangle_finish decides.  Shadow rays, whose t_max is the light's
- * distance, nearly always take the short way.
+ * distance, nearly always take the short way.  area_known (a packet
+ * lane, as for isect_triangle_finish_impl): the short way needs no
+ * double at all.
  */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline int isect_triangle_occludes_impl(const struct trace_ray *ray, float x0, float y0,
+                                               float z0, float x1, float y1, float z1, float x2,
+                                               float y2, float z2, float U, float V, float W,
+                                               float det, float Az, float Bz, float Cz,
+                                               float size, float t_lo, float t_hi, float t_max,
+                                               int area_known)
+{
+    if (isect_occludes_short(ray, t_lo, t_hi, t_max))
+        return area_known || !isect_triangle_zero_area(x0, y0, z0, x1, y1, z1, x2, y2, z2);
+    float t, u, v;
+    return isect_triangle_finish_impl(ray, x0, y0, z0, x1, y1, z1, x2, y2, z2, U, V, W, det, Az,
+                                      Bz, Cz, size, t_lo, t_hi, t_max, area_known, &t, &u, &v);
+}
+
 static inline int isect_triangle_occludes9(const struct trace_ray *ray, float x0, float y0,
                                            float z0, float x1, float y1, float z1, float x2,
                                            float y2, float z2, float U, float V, float W,
                                            float det, float Az, float Bz, float Cz, float size,
                                            float t_lo, float t_hi, float t_max)
 {
-    const float v0[3] = {x0, y0, z0};
-    const float v1[3] = {x1, y1, z1};
-    const float v2[3] = {x2, y2, z2};
-    if (t_lo >= ray->tmin && t_lo <= t_hi && t_hi < t_max && isfinite(t_lo) &&
-        isfinite(t_hi)) {
-        /* isect_triangle_finish's zero-area test, the same doubles. */
-        const double e1x = (double)v1[0] - v0[0];
-        const double e1y = (double)v1[1] - v0[1];
-        const double e1z = (double)v1[2] - v0[2];
-        const double e2x = (double)v2[0] - v0[0];
-        const double e2y = (double)v2[1] - v0[1];
-        const double e2z = (double)v2[2] - v0[2];
-        const double nx = e1y * e2z - e1z * e2y;
-        const double ny = e1z * e2x - e1x * e2z;
-        const double nz = e1x * e2y - e1y * e2x;
-        return !(nx == 0.0 && ny == 0.0 && nz == 0.0);
-    }
-    float t, u, v;
-    return isect_triangle_finish9(ray, x0, y0, z0, x1, y1, z1, x2, y2, z2, U, V, W, det, Az, Bz,
-                                  Cz, size, t_lo, t_hi, t_max, &t, &u, &v);
+    return isect_triangle_occludes_impl(ray, x0, y0, z0, x1, y1, z1, x2, y2, z2, U, V, W, det,
+                                        Az, Bz, Cz, size, t_lo, t_hi, t_max, 0);
 }
 
 /*

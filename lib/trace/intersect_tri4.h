@@ -26,6 +26,10 @@
  *   isect_max(a, b) = a > b ? a : b is maxps(a, b), NaN rule included;
  *   isect_slab's `d0 < d1 ? d1 : d0` is maxps(d1, d0);
  * - isfinite(det) is |det| < inf, false for NaN as for the infinities.
+ * A zero-area triangle's lane holds NaN (bvh4_layout.h,
+ * accel_set_packet_lane): its det is NaN, so the filter rejects it, as
+ * isect_triangle rejects every zero-area triangle; a kept lane therefore
+ * has an area, and tri4_lane_test's finish leaves that test out.
  * The rejections on t_max (z_lo < t_max, t_lo < t_max) are monotone in
  * t_max, so a packet filtered once with the limit at its start rejects
  * only lanes that the scalar test, run later with a limit no larger,
@@ -252,17 +256,20 @@ static inline int tri4_lane_test(const struct trace_ray *ray, const struct tri4_
     const float z_lo = isect_min(Az, isect_min(Bz, Cz));
     if (!(z_lo < t_max) || !(lanes->t_lo[l] < t_max))
         return 0;
-    /* The lane's coordinates straight from the packet (no copy). */
+    /* The lane's coordinates straight from the packet (no copy).  The
+     * filter kept the lane, so its coordinates are not NaN: the packet
+     * holds a triangle with an area (accel_set_packet_lane), and the
+     * finish's zero-area test, which would pass, is left out. */
     if (any_hit)
-        return isect_triangle_occludes9(
+        return isect_triangle_occludes_impl(
             ray, p->v[0][0][l], p->v[0][1][l], p->v[0][2][l], p->v[1][0][l], p->v[1][1][l],
             p->v[1][2][l], p->v[2][0][l], p->v[2][1][l], p->v[2][2][l], U, V, W, det, Az, Bz,
-            Cz, lanes->size[l], lanes->t_lo[l], lanes->t_hi[l], t_max);
-    return isect_triangle_finish9(ray, p->v[0][0][l], p->v[0][1][l], p->v[0][2][l],
-                                  p->v[1][0][l], p->v[1][1][l], p->v[1][2][l], p->v[2][0][l],
-                                  p->v[2][1][l], p->v[2][2][l], U, V, W, det, Az, Bz, Cz,
-                                  lanes->size[l], lanes->t_lo[l], lanes->t_hi[l], t_max, t, u,
-                                  w);
+            Cz, lanes->size[l], lanes->t_lo[l], lanes->t_hi[l], t_max, 1);
+    return isect_triangle_finish_impl(ray, p->v[0][0][l], p->v[0][1][l], p->v[0][2][l],
+                                      p->v[1][0][l], p->v[1][1][l], p->v[1][2][l],
+                                      p->v[2][0][l], p->v[2][1][l], p->v[2][2][l], U, V, W, det,
+                                      Az, Bz, Cz, lanes->size[l], lanes->t_lo[l],
+                                      lanes->t_hi[l], t_max, 1, t, u, w);
 }
 
 #endif
