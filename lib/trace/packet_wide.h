@@ -52,6 +52,11 @@ struct packet_state {
     unsigned lanes8; /* the rays t8 holds: those with the first ray's kx, ky, kz */
     int t8_ready;    /* t8 set up (at the first leaf that uses it) */
     const struct trace_ray *lane_ray[TRACE_PACKET];
+    /* The interval walk (packet_walk8_ia): the packet's bounds per axis
+     * (broadcast), and the rays in the lanes for the leaf boxes. */
+    __m256 ia_o_near[3], ia_o_far[3], ia_i_lo[3], ia_i_hi[3], ia_tmin;
+    __m256 lane_org[3], lane_inv[3], lane_tmin;
+    int ia_masks; /* rays from more than one origin: see packet_walk8_ia */
 #endif
 };
 
@@ -316,6 +321,283 @@ static inline unsigned packet_walk(const struct bvh4 *wide, struct packet_state 
     }
 }
 
+#if defined(__AVX__)
+static inline float packet_hmin(__m256 v)
+{
+    __m128 m = _mm_min_ps(_mm256_castps256_ps128(v), _mm256_extractf128_ps(v, 1));
+    m = _mm_min_ps(m, _mm_movehl_ps(m, m));
+    m = _mm_min_ss(m, _mm_shuffle_ps(m, m, 1));
+    return _mm_cvtss_f32(m);
+}
+
+static inline float packet_hmax(__m256 v)
+{
+    __m128 m = _mm_max_ps(_mm256_castps256_ps128(v), _mm256_extractf128_ps(v, 1));
+    m = _mm_max_ps(m, _mm_movehl_ps(m, m));
+    m = _mm_max_ss(m, _mm_shuffle_ps(m, m, 1));
+    return _mm_cvtss_f32(m);
+}
+
+/*
+ * Sets up the interval walk when it applies: every active ray in one
+ * octant, with finite non-zero inverse directions, finite origins and
+ * tmin not NaN.  Returns 0 otherwise (the packet takes packet_walk).
+ *
+ * Per axis k, with the octant's near and far rows shared by all rays,
+ * the interval test bounds every ray's own slab distances
+ * fl(fl(b - o) * inv) (Wald, Boulos and Shirley 2007 sec. 4.2; Boulos et
+ * al.'s interval arithmetic; Reshetov, Soupikov and Hurley 2005): in
+ * round-to-nearest, fl(b - o) does not increase with o, and fl(d * i),
+ * for i of one sign, is monotone in d and, for fixed d, in i; so over
+ * the packet's ranges o in [o_lo, o_hi], i in [i_lo, i_hi] the least near
+ * distance is min(fl(d * i_lo), fl(d * i_hi)) with d = fl(b - o_hi) (inv >
+ * 0) or fl(b - o_lo) (inv < 0), and the greatest far distance the max of
+ * the same two products with the other end of the origin range.  No
+ * value is NaN (finite origins and inverses; the empty box of an unused
+ * child gives +-inf), and max, min and the far scale are monotone, so the
+ * packet's entry bound is at most each ray's entry, its exit bound at
+ * least each ray's exit: a child that one ray's own test enters passes.
+ */
+static inline int packet_ia_init(struct packet_state *p, const struct trace_ray *rays,
+                                 unsigned active)
+{
+    const unsigned first = (unsigned)__builtin_ctz(active);
+    const int octant = p->octant[first];
+    float o_lo[3], o_hi[3], i_lo[3], i_hi[3];
+    float tmin_lo = rays[first].tmin;
+    for (int k = 0; k < 3; k++) {
+        o_lo[k] = o_hi[k] = rays[first].org[k];
+        i_lo[k] = i_hi[k] = rays[first].inv_dir[k];
+    }
+    for (unsigned m = active; m; m &= m - 1u) {
+        const unsigned r = (unsigned)__builtin_ctz(m);
+        const struct trace_ray *ray = &rays[r];
+        if (p->octant[r] != octant || ray->tmin != ray->tmin)
+            return 0;
+        tmin_lo = ray->tmin < tmin_lo ? ray->tmin : tmin_lo;
+        for (int k = 0; k < 3; k++) {
+            const float o = ray->org[k], i = ray->inv_dir[k];
+            if (!isfinite(o) || !isfinite(i) || i == 0.0f)
+                return 0;
+            o_lo[k] = o < o_lo[k] ? o : o_lo[k];
+            o_hi[k] = o > o_hi[k] ? o : o_hi[k];
+            i_lo[k] = i < i_lo[k] ? i : i_lo[k];
+            i_hi[k] = i > i_hi[k] ? i : i_hi[k];
+        }
+    }
+    for (int k = 0; k < 3; k++) {
+        const int neg = octant >> k & 1;
+        p->ia_o_near[k] = _mm256_set1_ps(neg ? o_lo[k] : o_hi[k]);
+        p->ia_o_far[k] = _mm256_set1_ps(neg ? o_hi[k] : o_lo[k]);
+        p->ia_i_lo[k] = _mm256_set1_ps(i_lo[k]);
+        p->ia_i_hi[k] = _mm256_set1_ps(i_hi[k]);
+    }
+    p->ia_tmin = _mm256_set1_ps(tmin_lo);
+    p->ia_masks = o_lo[0] != o_hi[0] || o_lo[1] != o_hi[1] || o_lo[2] != o_hi[2];
+    /* The rays in the lanes; a lane without a ray copies the first ray
+     * (never read into an answer: masked by the packet's rays). */
+    float org[3][8], inv[3][8], tmin[8];
+    for (unsigned r = 0; r < 8; r++) {
+        const struct trace_ray *ray = &rays[active >> r & 1u ? r : first];
+        for (int k = 0; k < 3; k++) {
+            org[k][r] = ray->org[k];
+            inv[k][r] = ray->inv_dir[k];
+        }
+        tmin[r] = ray->tmin;
+    }
+    for (int k = 0; k < 3; k++) {
+        p->lane_org[k] = _mm256_loadu_ps(org[k]);
+        p->lane_inv[k] = _mm256_loadu_ps(inv[k]);
+    }
+    p->lane_tmin = _mm256_loadu_ps(tmin);
+    return 1;
+}
+
+/*
+ * The packet walk of the 8-wide layout by interval tests (Wald, Boulos
+ * and Shirley 2007 sec. 4.2; Embree's coherent packet traversal does the
+ * same with a packet frustum): an inner node's eight children are tested
+ * once for the whole packet (packet_ia_init), and a child that passes is
+ * entered by all the rays still in the walk; a leaf child that passes is
+ * then tested ray by ray, the rays in the lanes, with walk_wide8's float
+ * operations on each ray's own near and far planes, origin, inverse,
+ * tmin and box_limit, so a leaf's triangles meet exactly the rays whose
+ * own test enters its box, as in packet_walk.  An inner node a ray's own
+ * test would not enter is visited with it anyway: that changes the node
+ * counts, never a hit (traverse_wide.h: the hit rule does not depend on
+ * which inner nodes are skipped or the order of visits, and every box
+ * holding a hit at or below a ray's best passes its test).  A pushed
+ * child keeps a lower bound of its rays' entry distances (the interval
+ * test's, or the least of the rays' own for a leaf); on pop, the rays
+ * whose box_limit lies before it leave it, as the single walk's pop
+ * skips it.
+ */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_state *p,
+                                       unsigned active, int any_hit)
+{
+    struct packet_entry stack[WIDE_STACK];
+    const struct bvh8_node *nodes = wide->nodes8;
+    const unsigned first = (unsigned)__builtin_ctz(active);
+    const int octant = p->octant[first];
+    int near_row[3], far_row[3];
+    for (int k = 0; k < 3; k++) {
+        near_row[k] = p->near_row[first][k] * (int)sizeof(nodes[0].bounds[0]);
+        far_row[k] = p->far_row[first][k] * (int)sizeof(nodes[0].bounds[0]);
+    }
+    const __m256 inf8 = _mm256_set1_ps(INFINITY);
+    const __m256 scale8 = _mm256_set1_ps(ISECT_BOX_FAR_SCALE);
+    /* The rays' box_limit in the lanes (unused lanes -inf) and their
+     * greatest, refreshed after each leaf (only hits shrink them). */
+    float bl_lane[8];
+    for (unsigned r = 0; r < 8; r++)
+        bl_lane[r] = active >> r & 1u ? p->s[r].box_limit : -INFINITY;
+    __m256 bl = _mm256_loadu_ps(bl_lane);
+    __m256 limit_hi = _mm256_set1_ps(packet_hmax(bl));
+    uint32_t sp = 0;
+    uint32_t cur = 0, cur_count = 0;
+    unsigned rays = active;
+    unsigned done = 0;
+    for (;;) {
+        if (cur_count) {
+            unsigned single = rays;
+            const unsigned r8 = rays & p->lanes8;
+            if ((unsigned)__builtin_popcount(r8) >= PACKET_TRI8_MIN) {
+                done |= packet_leaf8(p, wide->packets, cur, cur_count, r8);
+                single &= ~r8;
+            }
+            for (unsigned m = single; m; m &= m - 1u) {
+                const unsigned r = (unsigned)__builtin_ctz(m);
+                if (wide_leaf(&p->s[r], wide->packets, cur, cur_count))
+                    done |= 1u << r;
+            }
+            if (!any_hit) {
+                /* An any-hit ray's box_limit never shrinks: it ends at
+                 * its first hit. */
+                for (unsigned m = rays; m; m &= m - 1u) {
+                    const unsigned r = (unsigned)__builtin_ctz(m);
+                    bl_lane[r] = p->s[r].box_limit;
+                }
+                bl = _mm256_loadu_ps(bl_lane);
+                limit_hi = _mm256_set1_ps(packet_hmax(bl));
+            }
+        } else {
+            const struct bvh8_node *n = &nodes[cur];
+            unsigned lane_rays[8];
+            float t_min[8];
+            p->s[first].node_tests += 8;
+            __m256 t0 = p->ia_tmin;
+            __m256 t1 = inf8;
+            for (int k = 0; k < 3; k++) {
+                const __m256 dn = _mm256_sub_ps(_mm256_load_ps(wide_row(n->bounds, near_row[k])),
+                                                p->ia_o_near[k]);
+                const __m256 df = _mm256_sub_ps(_mm256_load_ps(wide_row(n->bounds, far_row[k])),
+                                                p->ia_o_far[k]);
+                const __m256 tn = _mm256_min_ps(_mm256_mul_ps(dn, p->ia_i_lo[k]),
+                                                _mm256_mul_ps(dn, p->ia_i_hi[k]));
+                const __m256 tf = _mm256_max_ps(_mm256_mul_ps(df, p->ia_i_lo[k]),
+                                                _mm256_mul_ps(df, p->ia_i_hi[k]));
+                t0 = _mm256_max_ps(tn, t0);
+                t1 = _mm256_min_ps(tf, t1);
+            }
+            t1 = _mm256_mul_ps(t1, scale8);
+            t1 = _mm256_min_ps(t1, limit_hi);
+            unsigned pass = (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(t0, t1, _CMP_LE_OQ));
+            if (p->ia_masks &&
+                (unsigned)__builtin_popcount(pass) >= (unsigned)__builtin_popcount(rays)) {
+                /* Rays from several origins, and more children pass
+                 * than there are rays: the rays' own tests (one over
+                 * the eight children per ray) cost less than one per
+                 * child. */
+                __m256 in = _mm256_setzero_ps();
+                __m256 tm = inf8;
+                for (unsigned m = rays; m; m &= m - 1u)
+                    packet_box8(n, p, (unsigned)__builtin_ctz(m), &in, &tm);
+                _mm256_storeu_ps((float *)lane_rays, in);
+                _mm256_storeu_ps(t_min, tm);
+                pass = 0;
+                for (unsigned l = 0; l < 8; l++)
+                    pass |= (unsigned)(lane_rays[l] != 0) << l;
+            } else if (pass) {
+                _mm256_storeu_ps(t_min, t0);
+                for (unsigned m = pass; m; m &= m - 1u) {
+                    const unsigned l = (unsigned)__builtin_ctz(m);
+                    if (!n->count[l] && !p->ia_masks) {
+                        /* One origin: the interval test is tight, and
+                         * an inner child is entered by every ray. */
+                        lane_rays[l] = rays;
+                        continue;
+                    }
+                    /* The child's box against each ray, walk_wide8's
+                     * operations with the ray in the lanes. */
+                    __m256 u0 = p->lane_tmin;
+                    __m256 u1 = inf8;
+                    for (int k = 0; k < 3; k++) {
+                        const __m256 tn = _mm256_mul_ps(
+                            _mm256_sub_ps(_mm256_broadcast_ss(&wide_row(n->bounds, near_row[k])[l]),
+                                          p->lane_org[k]),
+                            p->lane_inv[k]);
+                        const __m256 tf = _mm256_mul_ps(
+                            _mm256_sub_ps(_mm256_broadcast_ss(&wide_row(n->bounds, far_row[k])[l]),
+                                          p->lane_org[k]),
+                            p->lane_inv[k]);
+                        u0 = _mm256_max_ps(tn, u0);
+                        u1 = _mm256_min_ps(tf, u1);
+                    }
+                    u1 = _mm256_mul_ps(u1, scale8);
+                    u1 = _mm256_min_ps(u1, bl);
+                    const __m256 in = _mm256_cmp_ps(u0, u1, _CMP_LE_OQ);
+                    lane_rays[l] = (unsigned)_mm256_movemask_ps(in) & rays;
+                    p->s[first].node_tests += (unsigned)__builtin_popcount(rays);
+                    t_min[l] = packet_hmin(_mm256_blendv_ps(inf8, u0, in));
+                }
+            }
+            if (pass) {
+                const uint32_t order = (uint32_t)n->order[octant][0] |
+                                       (uint32_t)n->order[octant][1] << 8 |
+                                       (uint32_t)n->order[octant][2] << 16;
+                const uint32_t sp0 = sp;
+                for (int q = 7; q >= 0; q--) {
+                    const unsigned l = order >> (3 * q) & 7u;
+                    if (!(pass >> l & 1u) || !lane_rays[l])
+                        continue;
+                    stack[sp].child = n->child[l];
+                    stack[sp].count = n->count[l];
+                    stack[sp].rays = lane_rays[l];
+                    stack[sp].t_entry = t_min[l];
+                    sp++;
+                }
+                if (sp != sp0) {
+                    sp--;
+                    cur = stack[sp].child;
+                    cur_count = stack[sp].count;
+                    rays = stack[sp].rays;
+                    if (!cur_count)
+                        wide_prefetch(&nodes[cur], sizeof(struct bvh8_node));
+                    continue;
+                }
+            }
+        }
+        for (;;) {
+            if (sp == 0)
+                return done;
+            sp--;
+            /* The rays whose box_limit lies before the subtree's entry
+             * bound leave it, as the single walk's pop skips it. */
+            rays = stack[sp].rays & ~done &
+                   (unsigned)_mm256_movemask_ps(
+                       _mm256_cmp_ps(_mm256_set1_ps(stack[sp].t_entry), bl, _CMP_LE_OQ));
+            if (rays)
+                break;
+        }
+        cur = stack[sp].child;
+        cur_count = stack[sp].count;
+    }
+}
+#endif
+
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
@@ -380,7 +662,9 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
             p.lanes8 = 0;
         p.t8_ready = 0;
     }
-    if (wide->width == 8)
+    if (wide->width == 8 && hybrid == 0 && packet_ia_init(&p, rays, active))
+        done = packet_walk8_ia(wide, &p, active, any_hit);
+    else if (wide->width == 8)
         done = packet_walk(wide, &p, active, hybrid, 8);
     else
 #endif
