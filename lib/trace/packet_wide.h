@@ -57,6 +57,9 @@ struct packet_state {
     __m256 ia_o_near[3], ia_o_far[3], ia_i_lo[3], ia_i_hi[3], ia_tmin;
     __m256 lane_org[3], lane_inv[3], lane_tmin;
     int ia_masks; /* rays from more than one origin: see packet_walk8_ia */
+    int ia_octant;                  /* the rays' common octant */
+    int ia_row_near[3], ia_row_far[3]; /* its near and far rows, byte offsets */
+    unsigned r4_ready;              /* packet_walk8_ia: the rays whose s[r].r4 is set up */
 #endif
 };
 
@@ -176,8 +179,9 @@ static inline void packet_box4(const struct bvh4_node *n, struct packet_state *p
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline void packet_box8(const struct bvh8_node *n, struct packet_state *p, unsigned r,
-                               __m256 *rays, __m256 *t_min)
+static inline void packet_box8_rows(const struct bvh8_node *n, struct packet_state *p,
+                                    unsigned r, const int near_row[3], const int far_row[3],
+                                    __m256 *rays, __m256 *t_min)
 {
     const struct trace_ray *ray = p->s[r].ray;
     __m256 t0 = _mm256_set1_ps(ray->tmin);
@@ -186,9 +190,9 @@ static inline void packet_box8(const struct bvh8_node *n, struct packet_state *p
         const __m256 o = _mm256_set1_ps(ray->org[k]);
         const __m256 inv = _mm256_set1_ps(ray->inv_dir[k]);
         const __m256 tn =
-            _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(n->bounds[p->near_row[r][k]]), o), inv);
+            _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(wide_row(n->bounds, near_row[k])), o), inv);
         const __m256 tf =
-            _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(n->bounds[p->far_row[r][k]]), o), inv);
+            _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(wide_row(n->bounds, far_row[k])), o), inv);
         t0 = _mm256_max_ps(tn, t0);
         t1 = _mm256_min_ps(tf, t1);
     }
@@ -199,6 +203,22 @@ static inline void packet_box8(const struct bvh8_node *n, struct packet_state *p
     *rays = _mm256_or_ps(*rays,
                          _mm256_and_ps(in, _mm256_castsi256_ps(_mm256_set1_epi32((int)(1u << r)))));
     *t_min = _mm256_min_ps(*t_min, _mm256_blendv_ps(_mm256_set1_ps(INFINITY), t0, in));
+}
+
+/* Ray r against the eight children of n: walk_wide8's operations on its
+ * own near and far rows. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void packet_box8(const struct bvh8_node *n, struct packet_state *p, unsigned r,
+                               __m256 *rays, __m256 *t_min)
+{
+    const int size = (int)sizeof(n->bounds[0]);
+    const int near_row[3] = {p->near_row[r][0] * size, p->near_row[r][1] * size,
+                             p->near_row[r][2] * size};
+    const int far_row[3] = {p->far_row[r][0] * size, p->far_row[r][1] * size,
+                            p->far_row[r][2] * size};
+    packet_box8_rows(n, p, r, near_row, far_row, rays, t_min);
 }
 #endif
 
@@ -361,55 +381,58 @@ static inline float packet_hmax(__m256 v)
 static inline int packet_ia_init(struct packet_state *p, const struct trace_ray *rays,
                                  unsigned active)
 {
+    /* The rays' fields in the lanes, one masked gather each; a lane
+     * without a ray copies the first ray (never read into an answer:
+     * masked by the packet's rays). */
     const unsigned first = (unsigned)__builtin_ctz(active);
-    const int octant = p->octant[first];
-    float o_lo[3], o_hi[3], i_lo[3], i_hi[3];
-    float tmin_lo = rays[first].tmin;
+    const struct trace_ray *r0 = &rays[first];
+    const int stride = (int)(sizeof(struct trace_ray) / sizeof(float));
+    const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+    const __m256i idx = _mm256_mullo_epi32(lane, _mm256_set1_epi32(stride));
+    const __m256 act = _mm256_castsi256_ps(_mm256_cmpgt_epi32(
+        _mm256_and_si256(_mm256_set1_epi32((int)active),
+                         _mm256_sllv_epi32(_mm256_set1_epi32(1), lane)),
+        _mm256_setzero_si256()));
+    const __m256 sign = _mm256_set1_ps(-0.0f);
+    const __m256 inf = _mm256_set1_ps(INFINITY);
+    __m256 ok = _mm256_cmp_ps(_mm256_setzero_ps(), _mm256_setzero_ps(), _CMP_EQ_OQ);
+    int octant = 0;
+    p->ia_masks = 0;
     for (int k = 0; k < 3; k++) {
-        o_lo[k] = o_hi[k] = rays[first].org[k];
-        i_lo[k] = i_hi[k] = rays[first].inv_dir[k];
-    }
-    for (unsigned m = active; m; m &= m - 1u) {
-        const unsigned r = (unsigned)__builtin_ctz(m);
-        const struct trace_ray *ray = &rays[r];
-        if (p->octant[r] != octant || ray->tmin != ray->tmin)
+        const __m256 o = _mm256_mask_i32gather_ps(_mm256_set1_ps(r0->org[k]), &rays[0].org[k],
+                                                  idx, act, 4);
+        const __m256 i = _mm256_mask_i32gather_ps(_mm256_set1_ps(r0->inv_dir[k]),
+                                                  &rays[0].inv_dir[k], idx, act, 4);
+        const __m256 abs_i = _mm256_andnot_ps(sign, i);
+        ok = _mm256_and_ps(ok, _mm256_cmp_ps(_mm256_andnot_ps(sign, o), inf, _CMP_LT_OQ));
+        ok = _mm256_and_ps(ok, _mm256_cmp_ps(abs_i, inf, _CMP_LT_OQ));
+        ok = _mm256_and_ps(ok, _mm256_cmp_ps(abs_i, _mm256_setzero_ps(), _CMP_GT_OQ));
+        /* One octant: every lane's sign bit as the first ray's (the bit
+         * signbit() reads, as the single walk's near/far choice). */
+        const int neg = signbit(r0->inv_dir[k]) != 0;
+        if ((unsigned)_mm256_movemask_ps(i) != (neg ? 0xffu : 0u))
             return 0;
-        tmin_lo = ray->tmin < tmin_lo ? ray->tmin : tmin_lo;
-        for (int k = 0; k < 3; k++) {
-            const float o = ray->org[k], i = ray->inv_dir[k];
-            if (!isfinite(o) || !isfinite(i) || i == 0.0f)
-                return 0;
-            o_lo[k] = o < o_lo[k] ? o : o_lo[k];
-            o_hi[k] = o > o_hi[k] ? o : o_hi[k];
-            i_lo[k] = i < i_lo[k] ? i : i_lo[k];
-            i_hi[k] = i > i_hi[k] ? i : i_hi[k];
-        }
+        octant |= neg << k;
+        const float o_lo = packet_hmin(o), o_hi = packet_hmax(o);
+        const float i_lo = packet_hmin(i), i_hi = packet_hmax(i);
+        p->ia_o_near[k] = _mm256_set1_ps(neg ? o_lo : o_hi);
+        p->ia_o_far[k] = _mm256_set1_ps(neg ? o_hi : o_lo);
+        p->ia_i_lo[k] = _mm256_set1_ps(i_lo);
+        p->ia_i_hi[k] = _mm256_set1_ps(i_hi);
+        p->lane_org[k] = o;
+        p->lane_inv[k] = i;
+        p->ia_row_near[k] = (neg ? 3 + k : k) * (int)sizeof(((struct bvh8_node *)0)->bounds[0]);
+        p->ia_row_far[k] = (neg ? k : 3 + k) * (int)sizeof(((struct bvh8_node *)0)->bounds[0]);
+        p->ia_masks |= o_lo != o_hi;
     }
-    for (int k = 0; k < 3; k++) {
-        const int neg = octant >> k & 1;
-        p->ia_o_near[k] = _mm256_set1_ps(neg ? o_lo[k] : o_hi[k]);
-        p->ia_o_far[k] = _mm256_set1_ps(neg ? o_hi[k] : o_lo[k]);
-        p->ia_i_lo[k] = _mm256_set1_ps(i_lo[k]);
-        p->ia_i_hi[k] = _mm256_set1_ps(i_hi[k]);
-    }
-    p->ia_tmin = _mm256_set1_ps(tmin_lo);
-    p->ia_masks = o_lo[0] != o_hi[0] || o_lo[1] != o_hi[1] || o_lo[2] != o_hi[2];
-    /* The rays in the lanes; a lane without a ray copies the first ray
-     * (never read into an answer: masked by the packet's rays). */
-    float org[3][8], inv[3][8], tmin[8];
-    for (unsigned r = 0; r < 8; r++) {
-        const struct trace_ray *ray = &rays[active >> r & 1u ? r : first];
-        for (int k = 0; k < 3; k++) {
-            org[k][r] = ray->org[k];
-            inv[k][r] = ray->inv_dir[k];
-        }
-        tmin[r] = ray->tmin;
-    }
-    for (int k = 0; k < 3; k++) {
-        p->lane_org[k] = _mm256_loadu_ps(org[k]);
-        p->lane_inv[k] = _mm256_loadu_ps(inv[k]);
-    }
-    p->lane_tmin = _mm256_loadu_ps(tmin);
+    const __m256 tmin =
+        _mm256_mask_i32gather_ps(_mm256_set1_ps(r0->tmin), &rays[0].tmin, idx, act, 4);
+    ok = _mm256_and_ps(ok, _mm256_cmp_ps(tmin, tmin, _CMP_ORD_Q));
+    if ((unsigned)_mm256_movemask_ps(ok) != 0xffu)
+        return 0;
+    p->ia_octant = octant;
+    p->ia_tmin = _mm256_set1_ps(packet_hmin(tmin));
+    p->lane_tmin = tmin;
     return 1;
 }
 
@@ -441,12 +464,8 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
     struct packet_entry stack[WIDE_STACK];
     const struct bvh8_node *nodes = wide->nodes8;
     const unsigned first = (unsigned)__builtin_ctz(active);
-    const int octant = p->octant[first];
-    int near_row[3], far_row[3];
-    for (int k = 0; k < 3; k++) {
-        near_row[k] = p->near_row[first][k] * (int)sizeof(nodes[0].bounds[0]);
-        far_row[k] = p->far_row[first][k] * (int)sizeof(nodes[0].bounds[0]);
-    }
+    const int octant = p->ia_octant;
+    const int *near_row = p->ia_row_near, *far_row = p->ia_row_far;
     const __m256 inf8 = _mm256_set1_ps(INFINITY);
     const __m256 scale8 = _mm256_set1_ps(ISECT_BOX_FAR_SCALE);
     /* The rays' box_limit in the lanes (unused lanes -inf) and their
@@ -470,6 +489,10 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
             }
             for (unsigned m = single; m; m &= m - 1u) {
                 const unsigned r = (unsigned)__builtin_ctz(m);
+                if (!(p->r4_ready >> r & 1u)) {
+                    tri4_ray_init(&p->s[r].r4, p->s[r].ray);
+                    p->r4_ready |= 1u << r;
+                }
                 if (wide_leaf(&p->s[r], wide->packets, cur, cur_count))
                     done |= 1u << r;
             }
@@ -514,7 +537,8 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                 __m256 in = _mm256_setzero_ps();
                 __m256 tm = inf8;
                 for (unsigned m = rays; m; m &= m - 1u)
-                    packet_box8(n, p, (unsigned)__builtin_ctz(m), &in, &tm);
+                    packet_box8_rows(n, p, (unsigned)__builtin_ctz(m), near_row, far_row, &in,
+                                     &tm);
                 _mm256_storeu_ps((float *)lane_rays, in);
                 _mm256_storeu_ps(t_min, tm);
                 pass = 0;
@@ -628,9 +652,7 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
     for (unsigned m = active; m; m &= m - 1u) {
         const unsigned r = (unsigned)__builtin_ctz(m);
         struct wide_state *s = &p.s[r];
-        const struct trace_ray *ray = &rays[r];
-        s->ray = ray;
-        tri4_ray_init(&s->r4, ray);
+        s->ray = &rays[r];
         s->any_hit = any_hit;
         s->hit = any_hit ? NULL : &hits[r];
         s->found = 0;
@@ -638,16 +660,9 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
         s->box_limit = t_max[r] * ISECT_BOX_FAR_SCALE; /* as walk_wide */
         s->node_tests = 0;
         s->triangle_tests = 0;
-        int octant = 0;
-        for (int k = 0; k < 3; k++) {
-            const int neg = signbit(ray->inv_dir[k]) != 0;
-            p.near_row[r][k] = neg ? 3 + k : k;
-            p.far_row[r][k] = neg ? k : 3 + k;
-            octant |= neg << k;
-        }
-        p.octant[r] = octant;
     }
     unsigned done;
+    int ia = 0;
 #if defined(__AVX__)
     {
         const struct trace_ray *r0 = &rays[__builtin_ctz(active)];
@@ -661,8 +676,29 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
         if ((unsigned)__builtin_popcount(p.lanes8) < PACKET_TRI8_MIN)
             p.lanes8 = 0;
         p.t8_ready = 0;
+        /* The interval walk sets up a ray's leaf constants (r4) at its
+         * first leaf outside the eight-ray test. */
+        p.r4_ready = 0;
+        ia = wide->width == 8 && hybrid == 0 && packet_ia_init(&p, rays, active);
     }
-    if (wide->width == 8 && hybrid == 0 && packet_ia_init(&p, rays, active))
+#endif
+    if (!ia) {
+        for (unsigned m = active; m; m &= m - 1u) {
+            const unsigned r = (unsigned)__builtin_ctz(m);
+            const struct trace_ray *ray = &rays[r];
+            tri4_ray_init(&p.s[r].r4, ray);
+            int octant = 0;
+            for (int k = 0; k < 3; k++) {
+                const int neg = signbit(ray->inv_dir[k]) != 0;
+                p.near_row[r][k] = neg ? 3 + k : k;
+                p.far_row[r][k] = neg ? k : 3 + k;
+                octant |= neg << k;
+            }
+            p.octant[r] = octant;
+        }
+    }
+#if defined(__AVX__)
+    if (ia)
         done = packet_walk8_ia(wide, &p, active, any_hit);
     else if (wide->width == 8)
         done = packet_walk(wide, &p, active, hybrid, 8);
