@@ -51,7 +51,11 @@ struct packet_state {
     struct tri8_rays t8;
     unsigned lanes8; /* the rays t8 holds: those with the first ray's kx, ky, kz */
     int t8_ready;    /* t8 set up (at the first leaf that uses it) */
-    const struct trace_ray *lane_ray[TRACE_PACKET];
+    /* Each ray's limit for the eight-ray test (wide_leaf's: the next
+     * float above its best once it has a hit); kept up to date wherever
+     * a ray's best changes (packet_take_hit, packet_sync). */
+    float limit[TRACE_PACKET];
+    uint64_t triangle_tests; /* those of packet_leaf8, for all its rays */
     /* The interval walk (packet_walk8_ia): the packet's bounds per axis
      * (broadcast), and the rays in the lanes for the leaf boxes. */
     __m256 ia_o_near[3], ia_o_far[3], ia_i_lo[3], ia_i_hi[3], ia_tmin;
@@ -87,6 +91,13 @@ static inline int packet_take_hit(struct wide_state *s, float *limit, uint32_t p
     return 0;
 }
 
+/* Ray r's limit after its best changed outside packet_leaf8 (a per-ray
+ * leaf or walk). */
+static inline void packet_sync(struct packet_state *p, unsigned r)
+{
+    p->limit[r] = p->s[r].found ? isect_next_up(p->s[r].best) : p->s[r].best;
+}
+
 /* A leaf lane (count triangles in packets from `first`) for the rays of
  * `rays`, all in p->lanes8: each triangle against all of them at once
  * (tri8_test), in wide_leaf's order of triangles, each ray with
@@ -99,30 +110,22 @@ static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_pa
                                     uint32_t first, uint32_t count, unsigned rays)
 {
     if (!p->t8_ready) {
-        tri8_rays_init(&p->t8, p->lane_ray, p->lanes8);
+        const struct trace_ray *lane_ray[8];
+        for (unsigned r = 0; r < 8; r++)
+            lane_ray[r] = p->lanes8 >> r & 1u ? p->s[r].ray : NULL;
+        tri8_rays_init(&p->t8, lane_ray, p->lanes8);
         p->t8_ready = 1;
     }
-    float limit[8] = {0};
-    for (unsigned m = rays; m; m &= m - 1u) {
-        const unsigned r = (unsigned)__builtin_ctz(m);
-        limit[r] = p->s[r].found ? isect_next_up(p->s[r].best) : p->s[r].best;
-    }
+    float *limit = p->limit;
     const int any_hit = p->s[__builtin_ctz(rays)].any_hit;
     unsigned done = 0;
     for (uint32_t j = 0; j < count && rays; j += 4) {
         const struct tri4_packet *q = &packets[first + j / 4];
         const uint32_t n = count - j < 4 ? count - j : 4;
-        for (unsigned m = rays; m; m &= m - 1u)
-            p->s[__builtin_ctz(m)].triangle_tests += n;
+        p->triangle_tests += n * (unsigned)__builtin_popcount(rays);
         for (uint32_t l = 0; l < n && rays; l++) {
-            float v[3][3];
-            for (int a = 0; a < 3; a++) {
-                for (int k = 0; k < 3; k++)
-                    v[a][k] = q->v[a][k][l];
-            }
             struct tri8_result res;
-            if (!tri8_test(&p->t8, (const float(*)[3])v, rays, _mm256_loadu_ps(limit), any_hit,
-                           &res))
+            if (!tri8_test(&p->t8, q, l, rays, _mm256_loadu_ps(limit), any_hit, &res))
                 continue;
             for (unsigned m = res.hit | res.scalar; m; m &= m - 1u) {
                 const unsigned r = (unsigned)__builtin_ctz(m);
@@ -132,8 +135,14 @@ static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_pa
                     t = res.t[r];
                     u = res.u[r];
                     w = res.v[r];
-                } else if (!isect_triangle(s->ray, v[0], v[1], v[2], limit[r], &t, &u, &w)) {
-                    continue;
+                } else {
+                    float v[3][3];
+                    for (int a = 0; a < 3; a++) {
+                        for (int k = 0; k < 3; k++)
+                            v[a][k] = q->v[a][k][l];
+                    }
+                    if (!isect_triangle(s->ray, v[0], v[1], v[2], limit[r], &t, &u, &w))
+                        continue;
                 }
                 if (packet_take_hit(s, &limit[r], q->prim[l], t, u, w)) {
                     done |= 1u << r;
@@ -248,6 +257,9 @@ static inline unsigned packet_walk(const struct bvh4 *wide, struct packet_state 
                 else
 #endif
                     found = walk_wide4(wide, &p->s[r], cur, cur_count);
+#if defined(__AVX__)
+                packet_sync(p, r);
+#endif
                 if (found)
                     done |= 1u << r;
             }
@@ -264,6 +276,9 @@ static inline unsigned packet_walk(const struct bvh4 *wide, struct packet_state 
                 const unsigned r = (unsigned)__builtin_ctz(m);
                 if (wide_leaf(&p->s[r], wide->packets, cur, cur_count))
                     done |= 1u << r;
+#if defined(__AVX__)
+                packet_sync(p, r);
+#endif
             }
         } else {
             uint32_t lane_rays[8];
@@ -495,6 +510,7 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                 }
                 if (wide_leaf(&p->s[r], wide->packets, cur, cur_count))
                     done |= 1u << r;
+                packet_sync(p, r);
             }
             if (!any_hit) {
                 /* An any-hit ray's box_limit never shrinks: it ends at
@@ -660,6 +676,9 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
         s->box_limit = t_max[r] * ISECT_BOX_FAR_SCALE; /* as walk_wide */
         s->node_tests = 0;
         s->triangle_tests = 0;
+#if defined(__AVX__)
+        p.limit[r] = t_max[r];
+#endif
     }
     unsigned done;
     int ia = 0;
@@ -669,13 +688,13 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
         p.lanes8 = 0;
         for (unsigned m = active; m; m &= m - 1u) {
             const unsigned r = (unsigned)__builtin_ctz(m);
-            p.lane_ray[r] = &rays[r];
             if (rays[r].kx == r0->kx && rays[r].ky == r0->ky && rays[r].kz == r0->kz)
                 p.lanes8 |= 1u << r;
         }
         if ((unsigned)__builtin_popcount(p.lanes8) < PACKET_TRI8_MIN)
             p.lanes8 = 0;
         p.t8_ready = 0;
+        p.triangle_tests = 0;
         /* The interval walk sets up a ray's leaf constants (r4) at its
          * first leaf outside the eight-ray test. */
         p.r4_ready = 0;
@@ -705,6 +724,10 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
     else
 #endif
         done = packet_walk(wide, &p, active, hybrid, 4);
+#if defined(__AVX__)
+    if (counters)
+        counters->triangle_tests += p.triangle_tests;
+#endif
     for (unsigned m = active; m; m &= m - 1u) {
         const unsigned r = (unsigned)__builtin_ctz(m);
         if (counters) {
