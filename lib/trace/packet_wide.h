@@ -684,13 +684,25 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
     int ia = 0;
 #if defined(__AVX__)
     {
+        /* The rays with the first ray's kx, ky, kz: three masked
+         * gathers and compares (inactive lanes compare unequal). */
         const struct trace_ray *r0 = &rays[__builtin_ctz(active)];
-        p.lanes8 = 0;
-        for (unsigned m = active; m; m &= m - 1u) {
-            const unsigned r = (unsigned)__builtin_ctz(m);
-            if (rays[r].kx == r0->kx && rays[r].ky == r0->ky && rays[r].kz == r0->kz)
-                p.lanes8 |= 1u << r;
-        }
+        const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+        const __m256i idx =
+            _mm256_mullo_epi32(lane, _mm256_set1_epi32((int)(sizeof(struct trace_ray) / sizeof(int))));
+        const __m256i act = _mm256_cmpgt_epi32(
+            _mm256_and_si256(_mm256_set1_epi32((int)active),
+                             _mm256_sllv_epi32(_mm256_set1_epi32(1), lane)),
+            _mm256_setzero_si256());
+        const __m256i none = _mm256_set1_epi32(-1);
+        const __m256i kx = _mm256_mask_i32gather_epi32(none, &rays[0].kx, idx, act, 4);
+        const __m256i ky = _mm256_mask_i32gather_epi32(none, &rays[0].ky, idx, act, 4);
+        const __m256i kz = _mm256_mask_i32gather_epi32(none, &rays[0].kz, idx, act, 4);
+        const __m256i same = _mm256_and_si256(
+            _mm256_and_si256(_mm256_cmpeq_epi32(kx, _mm256_set1_epi32(r0->kx)),
+                             _mm256_cmpeq_epi32(ky, _mm256_set1_epi32(r0->ky))),
+            _mm256_cmpeq_epi32(kz, _mm256_set1_epi32(r0->kz)));
+        p.lanes8 = (unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(same)) & active;
         if ((unsigned)__builtin_popcount(p.lanes8) < PACKET_TRI8_MIN)
             p.lanes8 = 0;
         p.t8_ready = 0;
