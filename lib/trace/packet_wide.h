@@ -22,6 +22,10 @@
  * leaf's triangles are tested against the rays that share the first
  * ray's kx, ky, kz eight at a time (packet_tri8.h), which gives each ray
  * isect_triangle's answer (see there).
+ *
+ * Over the 8-wide layout a packet in one octant takes packet_walk8_ia
+ * instead: one interval test of a node's children for the whole packet,
+ * leaf boxes still tested ray by ray (see there).
  */
 #include "trace/packet.h"
 #if defined(__AVX__)
@@ -469,6 +473,17 @@ static inline int packet_ia_init(struct packet_state *p, const struct trace_ray 
  * test's, or the least of the rays' own for a leaf); on pop, the rays
  * whose box_limit lies before it leave it, as the single walk's pop
  * skips it.
+ *
+ * Rays from several origins (shadow rays from a row of hit points) make
+ * the interval wide, and entering inner nodes with every ray then costs
+ * more than it saves (measured: 3-6x the node tests per ray of the
+ * per-ray walk on the soup and bumpy shadow rays), so such a packet
+ * keeps exact ray masks (ia_masks): the interval test only culls, every
+ * child that passes is
+ * tested ray by ray in the lanes like a leaf, and where more children
+ * pass than there are rays, the rays' own tests over the eight children
+ * (packet_box8_rows) take the node instead.  Measured in
+ * docs/performance.md (k-packet).
  */
 #if defined(__GNUC__)
 __attribute__((always_inline))
