@@ -11,7 +11,10 @@
  * the single-ray walk's own, ray by ray (each ray with its own near/far
  * planes, so rays of one packet need not share the octant of their
  * directions: after an instance transform they may not, Wald, Benthin
- * and Slusallek 2003 sec. 4.4); a triangle test is
+ * and Slusallek 2003 sec. 4.4), or, for a packet in one octant over the
+ * 8-wide layout, an interval test for the whole packet that passes every
+ * child one of its rays' own tests passes (packet_wide.h,
+ * packet_walk8_ia; leaves still per ray); a triangle test is
  * isect_triangle's answer for each ray, eight rays at a time
  * (packet_tri8.h) or ray by ray; and the closest-hit rule (smallest t,
  * ties to the lower primitive, traverse_walk.h) does not depend on the

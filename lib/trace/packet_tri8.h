@@ -123,23 +123,25 @@ struct tri8_result {
 };
 
 /*
- * Triangle v (v[0..2], each xyz) against the rays of `lanes`, ray r below
+ * Triangle l of packet q (vertex a's coordinate k at q->v[a][k][l], read
+ * in place) against the rays of `lanes`, ray r below
  * limit[r] (isect_triangle's t_max).  any_hit: t, u, v are not needed
  * (isect_triangle_occludes' short way where it applies).  Returns the
  * lanes with a hit or sent to the scalar test (res->hit | res->scalar).
  */
-static inline unsigned tri8_test(const struct tri8_rays *r, const float v[3][3], unsigned lanes,
-                                 __m256 limit, int any_hit, struct tri8_result *res)
+static inline unsigned tri8_test(const struct tri8_rays *r, const struct tri4_packet *q,
+                                 unsigned l, unsigned lanes, __m256 limit, int any_hit,
+                                 struct tri8_result *res)
 {
-    const __m256 ax = _mm256_sub_ps(_mm256_set1_ps(v[0][r->kx]), r->org_x);
-    const __m256 ay = _mm256_sub_ps(_mm256_set1_ps(v[0][r->ky]), r->org_y);
-    const __m256 az = _mm256_sub_ps(_mm256_set1_ps(v[0][r->kz]), r->org_z);
-    const __m256 bx = _mm256_sub_ps(_mm256_set1_ps(v[1][r->kx]), r->org_x);
-    const __m256 by = _mm256_sub_ps(_mm256_set1_ps(v[1][r->ky]), r->org_y);
-    const __m256 bz = _mm256_sub_ps(_mm256_set1_ps(v[1][r->kz]), r->org_z);
-    const __m256 cx = _mm256_sub_ps(_mm256_set1_ps(v[2][r->kx]), r->org_x);
-    const __m256 cy = _mm256_sub_ps(_mm256_set1_ps(v[2][r->ky]), r->org_y);
-    const __m256 cz = _mm256_sub_ps(_mm256_set1_ps(v[2][r->kz]), r->org_z);
+    const __m256 ax = _mm256_sub_ps(_mm256_set1_ps(q->v[0][r->kx][l]), r->org_x);
+    const __m256 ay = _mm256_sub_ps(_mm256_set1_ps(q->v[0][r->ky][l]), r->org_y);
+    const __m256 az = _mm256_sub_ps(_mm256_set1_ps(q->v[0][r->kz][l]), r->org_z);
+    const __m256 bx = _mm256_sub_ps(_mm256_set1_ps(q->v[1][r->kx][l]), r->org_x);
+    const __m256 by = _mm256_sub_ps(_mm256_set1_ps(q->v[1][r->ky][l]), r->org_y);
+    const __m256 bz = _mm256_sub_ps(_mm256_set1_ps(q->v[1][r->kz][l]), r->org_z);
+    const __m256 cx = _mm256_sub_ps(_mm256_set1_ps(q->v[2][r->kx][l]), r->org_x);
+    const __m256 cy = _mm256_sub_ps(_mm256_set1_ps(q->v[2][r->ky][l]), r->org_y);
+    const __m256 cz = _mm256_sub_ps(_mm256_set1_ps(q->v[2][r->kz][l]), r->org_z);
 
     const __m256 Ax = _mm256_add_ps(ax, _mm256_mul_ps(r->sx, az));
     const __m256 Ay = _mm256_add_ps(ay, _mm256_mul_ps(r->sy, az));
@@ -185,22 +187,31 @@ static inline unsigned tri8_test(const struct tri8_rays *r, const float v[3][3],
     keep = _mm256_and_ps(keep, _mm256_cmp_ps(t_lo, limit, _CMP_LT_OQ));
     unsigned cand = (unsigned)_mm256_movemask_ps(keep) & lanes & ~deferred;
     res->hit = 0;
-    res->scalar = deferred;
-    if (!cand)
-        return deferred;
+    res->scalar = 0;
+    if (!(cand | deferred))
+        return 0;
 
-    /* isect_triangle_finish's zero-area test: the triangle's own. */
-    const double e1x = (double)v[1][0] - v[0][0];
-    const double e1y = (double)v[1][1] - v[0][1];
-    const double e1z = (double)v[1][2] - v[0][2];
-    const double e2x = (double)v[2][0] - v[0][0];
-    const double e2y = (double)v[2][1] - v[0][1];
-    const double e2z = (double)v[2][2] - v[0][2];
+    /* isect_triangle_finish's zero-area test: the triangle's own, and
+     * isect_triangle accepts a ray only through it, so a zero-area
+     * triangle is refused here for every lane, the deferred ones too
+     * (their double edge test would end there).  A mesh with collinear
+     * triangles (9 % of the gears benchmark's) otherwise sends every ray
+     * that meets one to the scalar test: the edge functions of a
+     * zero-area triangle are often exactly 0. */
+    const double e1x = (double)q->v[1][0][l] - q->v[0][0][l];
+    const double e1y = (double)q->v[1][1][l] - q->v[0][1][l];
+    const double e1z = (double)q->v[1][2][l] - q->v[0][2][l];
+    const double e2x = (double)q->v[2][0][l] - q->v[0][0][l];
+    const double e2y = (double)q->v[2][1][l] - q->v[0][1][l];
+    const double e2z = (double)q->v[2][2][l] - q->v[0][2][l];
     const double nx = e1y * e2z - e1z * e2y;
     const double ny = e1z * e2x - e1x * e2z;
     const double nz = e1x * e2y - e1y * e2x;
     if (nx == 0.0 && ny == 0.0 && nz == 0.0)
-        return deferred; /* finish refuses every lane */
+        return 0; /* finish refuses every lane */
+    res->scalar = deferred;
+    if (!cand)
+        return deferred;
 
     if (any_hit) {
         /* isect_triangle_occludes' short way: the clamped t lies in
@@ -238,9 +249,9 @@ static inline unsigned tri8_test(const struct tri8_rays *r, const float v[3][3],
                          _mm256_max_ps(_mm256_andnot_ps(sign, Cx), _mm256_andnot_ps(sign, Cy)));
 
     const __m256d n_x = _mm256_set1_pd(nx), n_y = _mm256_set1_pd(ny), n_z = _mm256_set1_pd(nz);
-    const __m256d p_x = _mm256_set1_pd((double)v[0][0]);
-    const __m256d p_y = _mm256_set1_pd((double)v[0][1]);
-    const __m256d p_z = _mm256_set1_pd((double)v[0][2]);
+    const __m256d p_x = _mm256_set1_pd((double)q->v[0][0][l]);
+    const __m256d p_y = _mm256_set1_pd((double)q->v[0][1][l]);
+    const __m256d p_z = _mm256_set1_pd((double)q->v[0][2][l]);
     const __m256d rounding_scale = _mm256_set1_pd(ISECT_SLIVER_ROUNDINGS * 0x1p-24);
     const __m256d lmax_d = _mm256_set1_pd(lmax);
     const __m256d n2_d = _mm256_set1_pd(n2);

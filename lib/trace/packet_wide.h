@@ -22,6 +22,10 @@
  * leaf's triangles are tested against the rays that share the first
  * ray's kx, ky, kz eight at a time (packet_tri8.h), which gives each ray
  * isect_triangle's answer (see there).
+ *
+ * Over the 8-wide layout a packet in one octant takes packet_walk8_ia
+ * instead: one interval test of a node's children for the whole packet,
+ * leaf boxes still tested ray by ray (see there).
  */
 #include "trace/packet.h"
 #if defined(__AVX__)
@@ -51,7 +55,19 @@ struct packet_state {
     struct tri8_rays t8;
     unsigned lanes8; /* the rays t8 holds: those with the first ray's kx, ky, kz */
     int t8_ready;    /* t8 set up (at the first leaf that uses it) */
-    const struct trace_ray *lane_ray[TRACE_PACKET];
+    /* Each ray's limit for the eight-ray test (wide_leaf's: the next
+     * float above its best once it has a hit); kept up to date wherever
+     * a ray's best changes (packet_take_hit, packet_sync). */
+    float limit[TRACE_PACKET];
+    uint64_t triangle_tests; /* those of packet_leaf8, for all its rays */
+    /* The interval walk (packet_walk8_ia): the packet's bounds per axis
+     * (broadcast), and the rays in the lanes for the leaf boxes. */
+    __m256 ia_o_near[3], ia_o_far[3], ia_i_lo[3], ia_i_hi[3], ia_tmin;
+    __m256 lane_org[3], lane_inv[3], lane_tmin;
+    int ia_masks; /* rays from more than one origin: see packet_walk8_ia */
+    int ia_octant;                  /* the rays' common octant */
+    int ia_row_near[3], ia_row_far[3]; /* its near and far rows, byte offsets */
+    unsigned r4_ready;              /* packet_walk8_ia: the rays whose s[r].r4 is set up */
 #endif
 };
 
@@ -79,6 +95,13 @@ static inline int packet_take_hit(struct wide_state *s, float *limit, uint32_t p
     return 0;
 }
 
+/* Ray r's limit after its best changed outside packet_leaf8 (a per-ray
+ * leaf or walk). */
+static inline void packet_sync(struct packet_state *p, unsigned r)
+{
+    p->limit[r] = p->s[r].found ? isect_next_up(p->s[r].best) : p->s[r].best;
+}
+
 /* A leaf lane (count triangles in packets from `first`) for the rays of
  * `rays`, all in p->lanes8: each triangle against all of them at once
  * (tri8_test), in wide_leaf's order of triangles, each ray with
@@ -91,30 +114,22 @@ static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_pa
                                     uint32_t first, uint32_t count, unsigned rays)
 {
     if (!p->t8_ready) {
-        tri8_rays_init(&p->t8, p->lane_ray, p->lanes8);
+        const struct trace_ray *lane_ray[8];
+        for (unsigned r = 0; r < 8; r++)
+            lane_ray[r] = p->lanes8 >> r & 1u ? p->s[r].ray : NULL;
+        tri8_rays_init(&p->t8, lane_ray, p->lanes8);
         p->t8_ready = 1;
     }
-    float limit[8] = {0};
-    for (unsigned m = rays; m; m &= m - 1u) {
-        const unsigned r = (unsigned)__builtin_ctz(m);
-        limit[r] = p->s[r].found ? isect_next_up(p->s[r].best) : p->s[r].best;
-    }
+    float *limit = p->limit;
     const int any_hit = p->s[__builtin_ctz(rays)].any_hit;
     unsigned done = 0;
     for (uint32_t j = 0; j < count && rays; j += 4) {
         const struct tri4_packet *q = &packets[first + j / 4];
         const uint32_t n = count - j < 4 ? count - j : 4;
-        for (unsigned m = rays; m; m &= m - 1u)
-            p->s[__builtin_ctz(m)].triangle_tests += n;
+        p->triangle_tests += n * (unsigned)__builtin_popcount(rays);
         for (uint32_t l = 0; l < n && rays; l++) {
-            float v[3][3];
-            for (int a = 0; a < 3; a++) {
-                for (int k = 0; k < 3; k++)
-                    v[a][k] = q->v[a][k][l];
-            }
             struct tri8_result res;
-            if (!tri8_test(&p->t8, (const float(*)[3])v, rays, _mm256_loadu_ps(limit), any_hit,
-                           &res))
+            if (!tri8_test(&p->t8, q, l, rays, _mm256_loadu_ps(limit), any_hit, &res))
                 continue;
             for (unsigned m = res.hit | res.scalar; m; m &= m - 1u) {
                 const unsigned r = (unsigned)__builtin_ctz(m);
@@ -124,8 +139,14 @@ static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_pa
                     t = res.t[r];
                     u = res.u[r];
                     w = res.v[r];
-                } else if (!isect_triangle(s->ray, v[0], v[1], v[2], limit[r], &t, &u, &w)) {
-                    continue;
+                } else {
+                    float v[3][3];
+                    for (int a = 0; a < 3; a++) {
+                        for (int k = 0; k < 3; k++)
+                            v[a][k] = q->v[a][k][l];
+                    }
+                    if (!isect_triangle(s->ray, v[0], v[1], v[2], limit[r], &t, &u, &w))
+                        continue;
                 }
                 if (packet_take_hit(s, &limit[r], q->prim[l], t, u, w)) {
                     done |= 1u << r;
@@ -171,8 +192,9 @@ static inline void packet_box4(const struct bvh4_node *n, struct packet_state *p
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline void packet_box8(const struct bvh8_node *n, struct packet_state *p, unsigned r,
-                               __m256 *rays, __m256 *t_min)
+static inline void packet_box8_rows(const struct bvh8_node *n, struct packet_state *p,
+                                    unsigned r, const int near_row[3], const int far_row[3],
+                                    __m256 *rays, __m256 *t_min)
 {
     const struct trace_ray *ray = p->s[r].ray;
     __m256 t0 = _mm256_set1_ps(ray->tmin);
@@ -181,9 +203,9 @@ static inline void packet_box8(const struct bvh8_node *n, struct packet_state *p
         const __m256 o = _mm256_set1_ps(ray->org[k]);
         const __m256 inv = _mm256_set1_ps(ray->inv_dir[k]);
         const __m256 tn =
-            _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(n->bounds[p->near_row[r][k]]), o), inv);
+            _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(wide_row(n->bounds, near_row[k])), o), inv);
         const __m256 tf =
-            _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(n->bounds[p->far_row[r][k]]), o), inv);
+            _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(wide_row(n->bounds, far_row[k])), o), inv);
         t0 = _mm256_max_ps(tn, t0);
         t1 = _mm256_min_ps(tf, t1);
     }
@@ -194,6 +216,22 @@ static inline void packet_box8(const struct bvh8_node *n, struct packet_state *p
     *rays = _mm256_or_ps(*rays,
                          _mm256_and_ps(in, _mm256_castsi256_ps(_mm256_set1_epi32((int)(1u << r)))));
     *t_min = _mm256_min_ps(*t_min, _mm256_blendv_ps(_mm256_set1_ps(INFINITY), t0, in));
+}
+
+/* Ray r against the eight children of n: walk_wide8's operations on its
+ * own near and far rows. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void packet_box8(const struct bvh8_node *n, struct packet_state *p, unsigned r,
+                               __m256 *rays, __m256 *t_min)
+{
+    const int size = (int)sizeof(n->bounds[0]);
+    const int near_row[3] = {p->near_row[r][0] * size, p->near_row[r][1] * size,
+                             p->near_row[r][2] * size};
+    const int far_row[3] = {p->far_row[r][0] * size, p->far_row[r][1] * size,
+                            p->far_row[r][2] * size};
+    packet_box8_rows(n, p, r, near_row, far_row, rays, t_min);
 }
 #endif
 
@@ -223,6 +261,9 @@ static inline unsigned packet_walk(const struct bvh4 *wide, struct packet_state 
                 else
 #endif
                     found = walk_wide4(wide, &p->s[r], cur, cur_count);
+#if defined(__AVX__)
+                packet_sync(p, r);
+#endif
                 if (found)
                     done |= 1u << r;
             }
@@ -239,6 +280,9 @@ static inline unsigned packet_walk(const struct bvh4 *wide, struct packet_state 
                 const unsigned r = (unsigned)__builtin_ctz(m);
                 if (wide_leaf(&p->s[r], wide->packets, cur, cur_count))
                     done |= 1u << r;
+#if defined(__AVX__)
+                packet_sync(p, r);
+#endif
             }
         } else {
             uint32_t lane_rays[8];
@@ -316,6 +360,299 @@ static inline unsigned packet_walk(const struct bvh4 *wide, struct packet_state 
     }
 }
 
+#if defined(__AVX__)
+static inline float packet_hmin(__m256 v)
+{
+    __m128 m = _mm_min_ps(_mm256_castps256_ps128(v), _mm256_extractf128_ps(v, 1));
+    m = _mm_min_ps(m, _mm_movehl_ps(m, m));
+    m = _mm_min_ss(m, _mm_shuffle_ps(m, m, 1));
+    return _mm_cvtss_f32(m);
+}
+
+static inline float packet_hmax(__m256 v)
+{
+    __m128 m = _mm_max_ps(_mm256_castps256_ps128(v), _mm256_extractf128_ps(v, 1));
+    m = _mm_max_ps(m, _mm_movehl_ps(m, m));
+    m = _mm_max_ss(m, _mm_shuffle_ps(m, m, 1));
+    return _mm_cvtss_f32(m);
+}
+
+/*
+ * Sets up the interval walk when it applies: every active ray in one
+ * octant, with finite non-zero inverse directions, finite origins and
+ * tmin not NaN.  Returns 0 otherwise (the packet takes packet_walk).
+ *
+ * Per axis k, with the octant's near and far rows shared by all rays,
+ * the interval test bounds every ray's own slab distances
+ * fl(fl(b - o) * inv) (Wald, Boulos and Shirley 2007 sec. 4.2; Boulos et
+ * al.'s interval arithmetic; Reshetov, Soupikov and Hurley 2005): in
+ * round-to-nearest, fl(b - o) does not increase with o, and fl(d * i),
+ * for i of one sign, is monotone in d and, for fixed d, in i; so over
+ * the packet's ranges o in [o_lo, o_hi], i in [i_lo, i_hi] the least near
+ * distance is min(fl(d * i_lo), fl(d * i_hi)) with d = fl(b - o_hi) (inv >
+ * 0) or fl(b - o_lo) (inv < 0), and the greatest far distance the max of
+ * the same two products with the other end of the origin range.  No
+ * value is NaN (finite origins and inverses; the empty box of an unused
+ * child gives +-inf), and max, min and the far scale are monotone, so the
+ * packet's entry bound is at most each ray's entry, its exit bound at
+ * least each ray's exit: a child that one ray's own test enters passes.
+ */
+static inline int packet_ia_init(struct packet_state *p, const struct trace_ray *rays,
+                                 unsigned active)
+{
+    /* The rays' fields in the lanes, one masked gather each; a lane
+     * without a ray copies the first ray (never read into an answer:
+     * masked by the packet's rays). */
+    const unsigned first = (unsigned)__builtin_ctz(active);
+    const struct trace_ray *r0 = &rays[first];
+    const int stride = (int)(sizeof(struct trace_ray) / sizeof(float));
+    const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+    const __m256i idx = _mm256_mullo_epi32(lane, _mm256_set1_epi32(stride));
+    const __m256 act = _mm256_castsi256_ps(_mm256_cmpgt_epi32(
+        _mm256_and_si256(_mm256_set1_epi32((int)active),
+                         _mm256_sllv_epi32(_mm256_set1_epi32(1), lane)),
+        _mm256_setzero_si256()));
+    const __m256 sign = _mm256_set1_ps(-0.0f);
+    const __m256 inf = _mm256_set1_ps(INFINITY);
+    __m256 ok = _mm256_cmp_ps(_mm256_setzero_ps(), _mm256_setzero_ps(), _CMP_EQ_OQ);
+    int octant = 0;
+    p->ia_masks = 0;
+    for (int k = 0; k < 3; k++) {
+        const __m256 o = _mm256_mask_i32gather_ps(_mm256_set1_ps(r0->org[k]), &rays[0].org[k],
+                                                  idx, act, 4);
+        const __m256 i = _mm256_mask_i32gather_ps(_mm256_set1_ps(r0->inv_dir[k]),
+                                                  &rays[0].inv_dir[k], idx, act, 4);
+        const __m256 abs_i = _mm256_andnot_ps(sign, i);
+        ok = _mm256_and_ps(ok, _mm256_cmp_ps(_mm256_andnot_ps(sign, o), inf, _CMP_LT_OQ));
+        ok = _mm256_and_ps(ok, _mm256_cmp_ps(abs_i, inf, _CMP_LT_OQ));
+        ok = _mm256_and_ps(ok, _mm256_cmp_ps(abs_i, _mm256_setzero_ps(), _CMP_GT_OQ));
+        /* One octant: every lane's sign bit as the first ray's (the bit
+         * signbit() reads, as the single walk's near/far choice). */
+        const int neg = signbit(r0->inv_dir[k]) != 0;
+        if ((unsigned)_mm256_movemask_ps(i) != (neg ? 0xffu : 0u))
+            return 0;
+        octant |= neg << k;
+        const float o_lo = packet_hmin(o), o_hi = packet_hmax(o);
+        const float i_lo = packet_hmin(i), i_hi = packet_hmax(i);
+        p->ia_o_near[k] = _mm256_set1_ps(neg ? o_lo : o_hi);
+        p->ia_o_far[k] = _mm256_set1_ps(neg ? o_hi : o_lo);
+        p->ia_i_lo[k] = _mm256_set1_ps(i_lo);
+        p->ia_i_hi[k] = _mm256_set1_ps(i_hi);
+        p->lane_org[k] = o;
+        p->lane_inv[k] = i;
+        p->ia_row_near[k] = (neg ? 3 + k : k) * (int)sizeof(((struct bvh8_node *)0)->bounds[0]);
+        p->ia_row_far[k] = (neg ? k : 3 + k) * (int)sizeof(((struct bvh8_node *)0)->bounds[0]);
+        p->ia_masks |= o_lo != o_hi;
+    }
+    const __m256 tmin =
+        _mm256_mask_i32gather_ps(_mm256_set1_ps(r0->tmin), &rays[0].tmin, idx, act, 4);
+    ok = _mm256_and_ps(ok, _mm256_cmp_ps(tmin, tmin, _CMP_ORD_Q));
+    if ((unsigned)_mm256_movemask_ps(ok) != 0xffu)
+        return 0;
+    p->ia_octant = octant;
+    p->ia_tmin = _mm256_set1_ps(packet_hmin(tmin));
+    p->lane_tmin = tmin;
+    return 1;
+}
+
+/*
+ * The packet walk of the 8-wide layout by interval tests (Wald, Boulos
+ * and Shirley 2007 sec. 4.2; Embree's coherent packet traversal does the
+ * same with a packet frustum): an inner node's eight children are tested
+ * once for the whole packet (packet_ia_init), and a child that passes is
+ * entered by all the rays still in the walk; a leaf child that passes is
+ * then tested ray by ray, the rays in the lanes, with walk_wide8's float
+ * operations on each ray's own near and far planes, origin, inverse,
+ * tmin and box_limit, so a leaf's triangles meet exactly the rays whose
+ * own test enters its box, as in packet_walk.  An inner node a ray's own
+ * test would not enter is visited with it anyway: that changes the node
+ * counts, never a hit (traverse_wide.h: the hit rule does not depend on
+ * which inner nodes are skipped or the order of visits, and every box
+ * holding a hit at or below a ray's best passes its test).  A pushed
+ * child keeps a lower bound of its rays' entry distances (the interval
+ * test's, or the least of the rays' own for a leaf); on pop, the rays
+ * whose box_limit lies before it leave it, as the single walk's pop
+ * skips it.
+ *
+ * Rays from several origins (shadow rays from a row of hit points) make
+ * the interval wide, and entering inner nodes with every ray then costs
+ * more than it saves (measured: 3-6x the node tests per ray of the
+ * per-ray walk on the soup and bumpy shadow rays), so such a packet
+ * keeps exact ray masks (ia_masks): the interval test only culls, every
+ * child that passes is
+ * tested ray by ray in the lanes like a leaf, and where more children
+ * pass than there are rays, the rays' own tests over the eight children
+ * (packet_box8_rows) take the node instead.  Measured in
+ * docs/performance.md (k-packet).
+ */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_state *p,
+                                       unsigned active, int any_hit)
+{
+    struct packet_entry stack[WIDE_STACK];
+    const struct bvh8_node *nodes = wide->nodes8;
+    const unsigned first = (unsigned)__builtin_ctz(active);
+    const int octant = p->ia_octant;
+    const int *near_row = p->ia_row_near, *far_row = p->ia_row_far;
+    const __m256 inf8 = _mm256_set1_ps(INFINITY);
+    const __m256 scale8 = _mm256_set1_ps(ISECT_BOX_FAR_SCALE);
+    /* The rays' box_limit in the lanes (unused lanes -inf) and their
+     * greatest, refreshed after each leaf (only hits shrink them). */
+    float bl_lane[8];
+    for (unsigned r = 0; r < 8; r++)
+        bl_lane[r] = active >> r & 1u ? p->s[r].box_limit : -INFINITY;
+    __m256 bl = _mm256_loadu_ps(bl_lane);
+    __m256 limit_hi = _mm256_set1_ps(packet_hmax(bl));
+    uint32_t sp = 0;
+    uint32_t cur = 0, cur_count = 0;
+    unsigned rays = active;
+    unsigned done = 0;
+    for (;;) {
+        if (cur_count) {
+            unsigned single = rays;
+            const unsigned r8 = rays & p->lanes8;
+            if ((unsigned)__builtin_popcount(r8) >= PACKET_TRI8_MIN) {
+                done |= packet_leaf8(p, wide->packets, cur, cur_count, r8);
+                single &= ~r8;
+            }
+            for (unsigned m = single; m; m &= m - 1u) {
+                const unsigned r = (unsigned)__builtin_ctz(m);
+                if (!(p->r4_ready >> r & 1u)) {
+                    tri4_ray_init(&p->s[r].r4, p->s[r].ray);
+                    p->r4_ready |= 1u << r;
+                }
+                if (wide_leaf(&p->s[r], wide->packets, cur, cur_count))
+                    done |= 1u << r;
+                packet_sync(p, r);
+            }
+            if (!any_hit) {
+                /* An any-hit ray's box_limit never shrinks: it ends at
+                 * its first hit. */
+                for (unsigned m = rays; m; m &= m - 1u) {
+                    const unsigned r = (unsigned)__builtin_ctz(m);
+                    bl_lane[r] = p->s[r].box_limit;
+                }
+                bl = _mm256_loadu_ps(bl_lane);
+                limit_hi = _mm256_set1_ps(packet_hmax(bl));
+            }
+        } else {
+            const struct bvh8_node *n = &nodes[cur];
+            unsigned lane_rays[8];
+            float t_min[8];
+            p->s[first].node_tests += 8;
+            __m256 t0 = p->ia_tmin;
+            __m256 t1 = inf8;
+            for (int k = 0; k < 3; k++) {
+                const __m256 dn = _mm256_sub_ps(_mm256_load_ps(wide_row(n->bounds, near_row[k])),
+                                                p->ia_o_near[k]);
+                const __m256 df = _mm256_sub_ps(_mm256_load_ps(wide_row(n->bounds, far_row[k])),
+                                                p->ia_o_far[k]);
+                const __m256 tn = _mm256_min_ps(_mm256_mul_ps(dn, p->ia_i_lo[k]),
+                                                _mm256_mul_ps(dn, p->ia_i_hi[k]));
+                const __m256 tf = _mm256_max_ps(_mm256_mul_ps(df, p->ia_i_lo[k]),
+                                                _mm256_mul_ps(df, p->ia_i_hi[k]));
+                t0 = _mm256_max_ps(tn, t0);
+                t1 = _mm256_min_ps(tf, t1);
+            }
+            t1 = _mm256_mul_ps(t1, scale8);
+            t1 = _mm256_min_ps(t1, limit_hi);
+            unsigned pass = (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(t0, t1, _CMP_LE_OQ));
+            if (p->ia_masks &&
+                (unsigned)__builtin_popcount(pass) >= (unsigned)__builtin_popcount(rays)) {
+                /* Rays from several origins, and more children pass
+                 * than there are rays: the rays' own tests (one over
+                 * the eight children per ray) cost less than one per
+                 * child. */
+                __m256 in = _mm256_setzero_ps();
+                __m256 tm = inf8;
+                for (unsigned m = rays; m; m &= m - 1u)
+                    packet_box8_rows(n, p, (unsigned)__builtin_ctz(m), near_row, far_row, &in,
+                                     &tm);
+                _mm256_storeu_ps((float *)lane_rays, in);
+                _mm256_storeu_ps(t_min, tm);
+                pass = 0;
+                for (unsigned l = 0; l < 8; l++)
+                    pass |= (unsigned)(lane_rays[l] != 0) << l;
+            } else if (pass) {
+                _mm256_storeu_ps(t_min, t0);
+                for (unsigned m = pass; m; m &= m - 1u) {
+                    const unsigned l = (unsigned)__builtin_ctz(m);
+                    if (!n->count[l] && !p->ia_masks) {
+                        /* One origin: the interval test is tight, and
+                         * an inner child is entered by every ray. */
+                        lane_rays[l] = rays;
+                        continue;
+                    }
+                    /* The child's box against each ray, walk_wide8's
+                     * operations with the ray in the lanes. */
+                    __m256 u0 = p->lane_tmin;
+                    __m256 u1 = inf8;
+                    for (int k = 0; k < 3; k++) {
+                        const __m256 tn = _mm256_mul_ps(
+                            _mm256_sub_ps(_mm256_broadcast_ss(&wide_row(n->bounds, near_row[k])[l]),
+                                          p->lane_org[k]),
+                            p->lane_inv[k]);
+                        const __m256 tf = _mm256_mul_ps(
+                            _mm256_sub_ps(_mm256_broadcast_ss(&wide_row(n->bounds, far_row[k])[l]),
+                                          p->lane_org[k]),
+                            p->lane_inv[k]);
+                        u0 = _mm256_max_ps(tn, u0);
+                        u1 = _mm256_min_ps(tf, u1);
+                    }
+                    u1 = _mm256_mul_ps(u1, scale8);
+                    u1 = _mm256_min_ps(u1, bl);
+                    const __m256 in = _mm256_cmp_ps(u0, u1, _CMP_LE_OQ);
+                    lane_rays[l] = (unsigned)_mm256_movemask_ps(in) & rays;
+                    p->s[first].node_tests += (unsigned)__builtin_popcount(rays);
+                    t_min[l] = packet_hmin(_mm256_blendv_ps(inf8, u0, in));
+                }
+            }
+            if (pass) {
+                const uint32_t order = (uint32_t)n->order[octant][0] |
+                                       (uint32_t)n->order[octant][1] << 8 |
+                                       (uint32_t)n->order[octant][2] << 16;
+                const uint32_t sp0 = sp;
+                for (int q = 7; q >= 0; q--) {
+                    const unsigned l = order >> (3 * q) & 7u;
+                    if (!(pass >> l & 1u) || !lane_rays[l])
+                        continue;
+                    stack[sp].child = n->child[l];
+                    stack[sp].count = n->count[l];
+                    stack[sp].rays = lane_rays[l];
+                    stack[sp].t_entry = t_min[l];
+                    sp++;
+                }
+                if (sp != sp0) {
+                    sp--;
+                    cur = stack[sp].child;
+                    cur_count = stack[sp].count;
+                    rays = stack[sp].rays;
+                    if (!cur_count)
+                        wide_prefetch(&nodes[cur], sizeof(struct bvh8_node));
+                    continue;
+                }
+            }
+        }
+        for (;;) {
+            if (sp == 0)
+                return done;
+            sp--;
+            /* The rays whose box_limit lies before the subtree's entry
+             * bound leave it, as the single walk's pop skips it. */
+            rays = stack[sp].rays & ~done &
+                   (unsigned)_mm256_movemask_ps(
+                       _mm256_cmp_ps(_mm256_set1_ps(stack[sp].t_entry), bl, _CMP_LE_OQ));
+            if (rays)
+                break;
+        }
+        cur = stack[sp].child;
+        cur_count = stack[sp].count;
+    }
+}
+#endif
+
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
@@ -346,9 +683,7 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
     for (unsigned m = active; m; m &= m - 1u) {
         const unsigned r = (unsigned)__builtin_ctz(m);
         struct wide_state *s = &p.s[r];
-        const struct trace_ray *ray = &rays[r];
-        s->ray = ray;
-        tri4_ray_init(&s->r4, ray);
+        s->ray = &rays[r];
         s->any_hit = any_hit;
         s->hit = any_hit ? NULL : &hits[r];
         s->found = 0;
@@ -356,35 +691,70 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
         s->box_limit = t_max[r] * ISECT_BOX_FAR_SCALE; /* as walk_wide */
         s->node_tests = 0;
         s->triangle_tests = 0;
-        int octant = 0;
-        for (int k = 0; k < 3; k++) {
-            const int neg = signbit(ray->inv_dir[k]) != 0;
-            p.near_row[r][k] = neg ? 3 + k : k;
-            p.far_row[r][k] = neg ? k : 3 + k;
-            octant |= neg << k;
-        }
-        p.octant[r] = octant;
+#if defined(__AVX__)
+        p.limit[r] = t_max[r];
+#endif
     }
     unsigned done;
+    int ia = 0;
 #if defined(__AVX__)
     {
+        /* The rays with the first ray's kx, ky, kz: three masked
+         * gathers and compares (inactive lanes compare unequal). */
         const struct trace_ray *r0 = &rays[__builtin_ctz(active)];
-        p.lanes8 = 0;
-        for (unsigned m = active; m; m &= m - 1u) {
-            const unsigned r = (unsigned)__builtin_ctz(m);
-            p.lane_ray[r] = &rays[r];
-            if (rays[r].kx == r0->kx && rays[r].ky == r0->ky && rays[r].kz == r0->kz)
-                p.lanes8 |= 1u << r;
-        }
+        const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+        const __m256i idx =
+            _mm256_mullo_epi32(lane, _mm256_set1_epi32((int)(sizeof(struct trace_ray) / sizeof(int))));
+        const __m256i act = _mm256_cmpgt_epi32(
+            _mm256_and_si256(_mm256_set1_epi32((int)active),
+                             _mm256_sllv_epi32(_mm256_set1_epi32(1), lane)),
+            _mm256_setzero_si256());
+        const __m256i none = _mm256_set1_epi32(-1);
+        const __m256i kx = _mm256_mask_i32gather_epi32(none, &rays[0].kx, idx, act, 4);
+        const __m256i ky = _mm256_mask_i32gather_epi32(none, &rays[0].ky, idx, act, 4);
+        const __m256i kz = _mm256_mask_i32gather_epi32(none, &rays[0].kz, idx, act, 4);
+        const __m256i same = _mm256_and_si256(
+            _mm256_and_si256(_mm256_cmpeq_epi32(kx, _mm256_set1_epi32(r0->kx)),
+                             _mm256_cmpeq_epi32(ky, _mm256_set1_epi32(r0->ky))),
+            _mm256_cmpeq_epi32(kz, _mm256_set1_epi32(r0->kz)));
+        p.lanes8 = (unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(same)) & active;
         if ((unsigned)__builtin_popcount(p.lanes8) < PACKET_TRI8_MIN)
             p.lanes8 = 0;
         p.t8_ready = 0;
+        p.triangle_tests = 0;
+        /* The interval walk sets up a ray's leaf constants (r4) at its
+         * first leaf outside the eight-ray test. */
+        p.r4_ready = 0;
+        ia = wide->width == 8 && hybrid == 0 && packet_ia_init(&p, rays, active);
     }
-    if (wide->width == 8)
+#endif
+    if (!ia) {
+        for (unsigned m = active; m; m &= m - 1u) {
+            const unsigned r = (unsigned)__builtin_ctz(m);
+            const struct trace_ray *ray = &rays[r];
+            tri4_ray_init(&p.s[r].r4, ray);
+            int octant = 0;
+            for (int k = 0; k < 3; k++) {
+                const int neg = signbit(ray->inv_dir[k]) != 0;
+                p.near_row[r][k] = neg ? 3 + k : k;
+                p.far_row[r][k] = neg ? k : 3 + k;
+                octant |= neg << k;
+            }
+            p.octant[r] = octant;
+        }
+    }
+#if defined(__AVX__)
+    if (ia)
+        done = packet_walk8_ia(wide, &p, active, any_hit);
+    else if (wide->width == 8)
         done = packet_walk(wide, &p, active, hybrid, 8);
     else
 #endif
         done = packet_walk(wide, &p, active, hybrid, 4);
+#if defined(__AVX__)
+    if (counters)
+        counters->triangle_tests += p.triangle_tests;
+#endif
     for (unsigned m = active; m; m &= m - 1u) {
         const unsigned r = (unsigned)__builtin_ctz(m);
         if (counters) {
