@@ -490,6 +490,16 @@ static inline int walk_wide8(const struct bvh4 *wide, struct wide_state *s, uint
  *   copy is its own function with its own stack (walk_wide's set-up no
  *   longer pays for four inlined walks' frames).
  */
+#ifndef WIDE8_SORT
+#define WIDE8_SORT 1
+#endif
+
+/* One step of the sorting network: lane i keeps max(v[i], p[i]) where
+ * bit i of `take_max` is set, else the min (p: v with the step's
+ * partners swapped in). */
+#define wide8_sort_step(v, p, take_max)                                                         \
+    _mm256_blend_epi32(_mm256_min_epi32((v), (p)), _mm256_max_epi32((v), (p)), (take_max))
+
 #define WIDE8_PACKET(name, any_hit)                                                              \
     static int name(struct wide_state *s, const struct tri4_packet *p, uint32_t n) WIDE_NOINLINE; \
     static int name(struct wide_state *s, const struct tri4_packet *p, uint32_t n)                \
@@ -512,26 +522,22 @@ static inline int walk_wide8_ray(const struct bvh4 *wide, struct wide_state *s, 
     size_t near_x, near_y, near_z, far_x, far_y, far_z;
     int octant = 0;
     {
+        /* Row k is min k, row 3 + k max k; a negative direction (-0
+         * too) has its near plane at the max.  By arithmetic on the sign
+         * bits: near + far = 2k + 3 rows. */
         const size_t row = sizeof(nodes[0].bounds[0]);
-        const int nx = signbit(ray->inv_dir[0]) != 0;
-        const int ny = signbit(ray->inv_dir[1]) != 0;
-        const int nz = signbit(ray->inv_dir[2]) != 0;
-        near_x = (nx ? 3 : 0) * row;
-        far_x = (nx ? 0 : 3) * row;
-        near_y = (ny ? 4 : 1) * row;
-        far_y = (ny ? 1 : 4) * row;
-        near_z = (nz ? 5 : 2) * row;
-        far_z = (nz ? 2 : 5) * row;
-        octant = nx | ny << 1 | nz << 2;
+        uint32_t bits[3];
+        memcpy(bits, ray->inv_dir, sizeof(bits));
+        const size_t nx = bits[0] >> 31, ny = bits[1] >> 31, nz = bits[2] >> 31;
+        near_x = nx * 3 * row;
+        far_x = 3 * row - near_x;
+        near_y = (1 + ny * 3) * row;
+        far_y = 5 * row - near_y;
+        near_z = (2 + nz * 3) * row;
+        far_z = 7 * row - near_z;
+        octant = (int)(nx | ny << 1 | nz << 2);
     }
-    const __m256 org_x = _mm256_set1_ps(ray->org[0]);
-    const __m256 org_y = _mm256_set1_ps(ray->org[1]);
-    const __m256 org_z = _mm256_set1_ps(ray->org[2]);
-    const __m256 inv_x = _mm256_set1_ps(ray->inv_dir[0]);
-    const __m256 inv_y = _mm256_set1_ps(ray->inv_dir[1]);
-    const __m256 inv_z = _mm256_set1_ps(ray->inv_dir[2]);
-    const __m256 tmin8 = _mm256_set1_ps(ray->tmin);
-    const __m256 order_shift = _mm256_castsi256_ps(_mm256_setr_epi32(0, 3, 6, 9, 12, 15, 18, 21));
+    const __m256i order_shift = _mm256_setr_epi32(0, 3, 6, 9, 12, 15, 18, 21);
     uint32_t st_child[WIDE_STACK];
     uint32_t st_count[WIDE_STACK];
     float st_t[WIDE_STACK];
@@ -542,6 +548,17 @@ static inline int walk_wide8_ray(const struct bvh4 *wide, struct wide_state *s, 
     uint64_t node_tests = 0;
     uint64_t tri_tests = 0;
     for (;;) {
+        /* The ray's vectors, broadcast again after each leaf call from
+         * the ray (which the call may in principle have changed, so the
+         * compiler reloads it anyway) instead of spilled and reloaded
+         * around it. */
+        const __m256 org_x = _mm256_set1_ps(ray->org[0]);
+        const __m256 org_y = _mm256_set1_ps(ray->org[1]);
+        const __m256 org_z = _mm256_set1_ps(ray->org[2]);
+        const __m256 inv_x = _mm256_set1_ps(ray->inv_dir[0]);
+        const __m256 inv_y = _mm256_set1_ps(ray->inv_dir[1]);
+        const __m256 inv_z = _mm256_set1_ps(ray->inv_dir[2]);
+        const __m256 tmin8 = _mm256_set1_ps(ray->tmin);
         /* Inner nodes until a leaf lane comes up (or the stack empties). */
         while (!cur_count) {
             const struct bvh8_node *n = &nodes[cur];
@@ -580,14 +597,52 @@ static inline int walk_wide8_ray(const struct bvh4 *wide, struct wide_state *s, 
                     const unsigned l = (unsigned)__builtin_ctz(mask);
                     cur = n->child[l];
                     cur_count = n->count[l];
+                } else if (!any_hit && WIDE8_SORT) {
+                    /* Closest hit: the hit children by entry distance,
+                     * nearest first (as Embree's BVH8 traversal orders
+                     * them), so that the first hits found are near and
+                     * the box limit shrinks early.  Keys: the entry
+                     * distance's bits with the lane in the low three (and
+                     * bit 3 set, so that no hit's key is INT32_MIN, the
+                     * key of the missed lanes); for entries >= 0 (tmin
+                     * >= 0) the integer order is the float order up to
+                     * the low bits.  Sorted descending by a bitonic
+                     * network (Batcher 1968) of six min/max steps; the
+                     * order changes the work, not the hit (see the head
+                     * of this file); the exact entry distances are
+                     * gathered by lane, so the pop test is unchanged. */
+                    const __m256i bits = _mm256_castps_si256(t0);
+                    __m256i key = _mm256_or_si256(
+                        _mm256_and_si256(bits, _mm256_set1_epi32(~0xf)),
+                        _mm256_setr_epi32(8, 9, 10, 11, 12, 13, 14, 15));
+                    key = _mm256_blendv_epi8(_mm256_set1_epi32(INT32_MIN), key,
+                                             _mm256_castps_si256(hit));
+                    key = wide8_sort_step(key, _mm256_shuffle_epi32(key, 0xb1), 0x99);
+                    key = wide8_sort_step(key, _mm256_shuffle_epi32(key, 0x4e), 0xc3);
+                    key = wide8_sort_step(key, _mm256_shuffle_epi32(key, 0xb1), 0xa5);
+                    key = wide8_sort_step(key, _mm256_permute4x64_epi64(key, 0x4e), 0x0f);
+                    key = wide8_sort_step(key, _mm256_shuffle_epi32(key, 0x4e), 0x33);
+                    key = wide8_sort_step(key, _mm256_shuffle_epi32(key, 0xb1), 0x55);
+                    const __m256i gather = _mm256_and_si256(key, _mm256_set1_epi32(7));
+                    const __m256i child =
+                        _mm256_load_si256((const __m256i *)(const void *)n->child);
+                    const __m256i count = _mm256_cvtepu8_epi32(
+                        _mm_loadl_epi64((const __m128i *)(const void *)n->count));
+                    _mm256_storeu_si256((__m256i *)(void *)&st_child[sp],
+                                        _mm256_permutevar8x32_epi32(child, gather));
+                    _mm256_storeu_si256((__m256i *)(void *)&st_count[sp],
+                                        _mm256_permutevar8x32_epi32(count, gather));
+                    _mm256_storeu_ps(&st_t[sp], _mm256_permutevar8x32_ps(t0, gather));
+                    sp += (uint32_t)__builtin_popcount(mask) - 1u;
+                    cur = st_child[sp];
+                    cur_count = st_count[sp];
                 } else {
                     /* walk_wide8_impl's push (see there). */
                     const uint32_t order = (uint32_t)n->order[octant][0] |
                                            (uint32_t)n->order[octant][1] << 8 |
                                            (uint32_t)n->order[octant][2] << 16;
                     const __m256i lanes = _mm256_and_si256(
-                        _mm256_srlv_epi32(_mm256_set1_epi32((int)order),
-                                          _mm256_castps_si256(order_shift)),
+                        _mm256_srlv_epi32(_mm256_set1_epi32((int)order), order_shift),
                         _mm256_set1_epi32(7));
                     const unsigned pm = (unsigned)_mm256_movemask_ps(
                         _mm256_permutevar8x32_ps(hit, lanes));
