@@ -66,6 +66,24 @@ struct wide_state {
     uint64_t triangle_tests;
 };
 
+/* walk_wide's state for a ray: no hit yet, the limits of t_max. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void wide_state_init(struct wide_state *s, const struct trace_ray *ray, float t_max,
+                                   int any_hit, struct trace_hit *hit)
+{
+    s->ray = ray;
+    tri4_ray_init(&s->r4, ray);
+    s->any_hit = any_hit;
+    s->hit = hit;
+    s->found = 0;
+    s->best = t_max;
+    s->box_limit = t_max * ISECT_BOX_FAR_SCALE; /* as traverse_walk.h */
+    s->node_tests = 0;
+    s->triangle_tests = 0;
+}
+
 /* The n triangles of packet p: walk_leaf's limit and hit rule; returns
  * 1 when an any-hit walk has its hit. */
 #if defined(__GNUC__)
@@ -490,16 +508,6 @@ static inline int walk_wide8(const struct bvh4 *wide, struct wide_state *s, uint
  *   copy is its own function with its own stack (walk_wide's set-up no
  *   longer pays for four inlined walks' frames).
  */
-#ifndef WIDE8_SORT
-#define WIDE8_SORT 1
-#endif
-
-/* One step of the sorting network: lane i keeps max(v[i], p[i]) where
- * bit i of `take_max` is set, else the min (p: v with the step's
- * partners swapped in). */
-#define wide8_sort_step(v, p, take_max)                                                         \
-    _mm256_blend_epi32(_mm256_min_epi32((v), (p)), _mm256_max_epi32((v), (p)), (take_max))
-
 #define WIDE8_PACKET(name, any_hit)                                                              \
     static int name(struct wide_state *s, const struct tri4_packet *p, uint32_t n) WIDE_NOINLINE; \
     static int name(struct wide_state *s, const struct tri4_packet *p, uint32_t n)                \
@@ -597,45 +605,6 @@ static inline int walk_wide8_ray(const struct bvh4 *wide, struct wide_state *s, 
                     const unsigned l = (unsigned)__builtin_ctz(mask);
                     cur = n->child[l];
                     cur_count = n->count[l];
-                } else if (!any_hit && WIDE8_SORT) {
-                    /* Closest hit: the hit children by entry distance,
-                     * nearest first (as Embree's BVH8 traversal orders
-                     * them), so that the first hits found are near and
-                     * the box limit shrinks early.  Keys: the entry
-                     * distance's bits with the lane in the low three (and
-                     * bit 3 set, so that no hit's key is INT32_MIN, the
-                     * key of the missed lanes); for entries >= 0 (tmin
-                     * >= 0) the integer order is the float order up to
-                     * the low bits.  Sorted descending by a bitonic
-                     * network (Batcher 1968) of six min/max steps; the
-                     * order changes the work, not the hit (see the head
-                     * of this file); the exact entry distances are
-                     * gathered by lane, so the pop test is unchanged. */
-                    const __m256i bits = _mm256_castps_si256(t0);
-                    __m256i key = _mm256_or_si256(
-                        _mm256_and_si256(bits, _mm256_set1_epi32(~0xf)),
-                        _mm256_setr_epi32(8, 9, 10, 11, 12, 13, 14, 15));
-                    key = _mm256_blendv_epi8(_mm256_set1_epi32(INT32_MIN), key,
-                                             _mm256_castps_si256(hit));
-                    key = wide8_sort_step(key, _mm256_shuffle_epi32(key, 0xb1), 0x99);
-                    key = wide8_sort_step(key, _mm256_shuffle_epi32(key, 0x4e), 0xc3);
-                    key = wide8_sort_step(key, _mm256_shuffle_epi32(key, 0xb1), 0xa5);
-                    key = wide8_sort_step(key, _mm256_permute4x64_epi64(key, 0x4e), 0x0f);
-                    key = wide8_sort_step(key, _mm256_shuffle_epi32(key, 0x4e), 0x33);
-                    key = wide8_sort_step(key, _mm256_shuffle_epi32(key, 0xb1), 0x55);
-                    const __m256i gather = _mm256_and_si256(key, _mm256_set1_epi32(7));
-                    const __m256i child =
-                        _mm256_load_si256((const __m256i *)(const void *)n->child);
-                    const __m256i count = _mm256_cvtepu8_epi32(
-                        _mm_loadl_epi64((const __m128i *)(const void *)n->count));
-                    _mm256_storeu_si256((__m256i *)(void *)&st_child[sp],
-                                        _mm256_permutevar8x32_epi32(child, gather));
-                    _mm256_storeu_si256((__m256i *)(void *)&st_count[sp],
-                                        _mm256_permutevar8x32_epi32(count, gather));
-                    _mm256_storeu_ps(&st_t[sp], _mm256_permutevar8x32_ps(t0, gather));
-                    sp += (uint32_t)__builtin_popcount(mask) - 1u;
-                    cur = st_child[sp];
-                    cur_count = st_count[sp];
                 } else {
                     /* walk_wide8_impl's push (see there). */
                     const uint32_t order = (uint32_t)n->order[octant][0] |
@@ -722,11 +691,23 @@ done:
     return 0;
 }
 
+/* The whole single-ray trace over an 8-wide layout, the state set up
+ * here: the entry (walk_wide) is then a dispatch and a jump. */
 #define WIDE8_WALK(name, any_hit, stats)                                                        \
-    static int name(const struct bvh4 *wide, struct wide_state *s) WIDE_NOINLINE;              \
-    static int name(const struct bvh4 *wide, struct wide_state *s)                             \
+    static int name(const struct bvh4 *wide, const struct trace_ray *ray, float t_max,         \
+                    struct trace_hit *hit, struct trace_counters *counters) WIDE_NOINLINE;      \
+    static int name(const struct bvh4 *wide, const struct trace_ray *ray, float t_max,         \
+                    struct trace_hit *hit, struct trace_counters *counters)                     \
     {                                                                                           \
-        return walk_wide8_ray(wide, s, any_hit, stats);                                         \
+        struct wide_state s;                                                                    \
+        wide_state_init(&s, ray, t_max, any_hit, hit);                                          \
+        const int done = walk_wide8_ray(wide, &s, any_hit, stats);                              \
+        if (stats) {                                                                            \
+            counters->node_tests += s.node_tests;                                               \
+            counters->triangle_tests += s.triangle_tests;                                       \
+        }                                                                                       \
+        (void)counters;                                                                         \
+        return any_hit ? done : s.found;                                                        \
     }
 
 WIDE8_WALK(wide8_walk_closest, 0, 0)
@@ -759,16 +740,17 @@ static inline int walk_wide(const struct bvh4 *wide, const struct bvh *bvh, cons
 {
     if (wide->node_count == 0)
         return walk(bvh, tri, ray, t_max, any_hit, hit, counters);
+#if defined(__AVX__)
+    if (wide->width == 8) {
+        if (any_hit)
+            return counters ? wide8_walk_any_stats(wide, ray, t_max, hit, counters)
+                            : wide8_walk_any(wide, ray, t_max, hit, counters);
+        return counters ? wide8_walk_closest_stats(wide, ray, t_max, hit, counters)
+                        : wide8_walk_closest(wide, ray, t_max, hit, counters);
+    }
+#endif
     struct wide_state s;
-    s.ray = ray;
-    tri4_ray_init(&s.r4, ray);
-    s.any_hit = any_hit;
-    s.hit = hit;
-    s.found = 0;
-    s.best = t_max;
-    s.box_limit = t_max * ISECT_BOX_FAR_SCALE; /* as traverse_walk.h */
-    s.node_tests = 0;
-    s.triangle_tests = 0;
+    wide_state_init(&s, ray, t_max, any_hit, hit);
     /* Two copies of each walk: without counters (the caller passed
      * none, the common case) the hot loop does not count. */
     int done;
@@ -777,17 +759,9 @@ static inline int walk_wide(const struct bvh4 *wide, const struct bvh *bvh, cons
             done = counters ? wide4_walk_any_stats(wide, &s) : wide4_walk_any(wide, &s);
         else
             done = counters ? wide4_walk_closest_stats(wide, &s) : wide4_walk_closest(wide, &s);
-    }
-#if defined(__AVX__)
-    else if (wide->width == 8) {
-        if (any_hit)
-            done = counters ? wide8_walk_any_stats(wide, &s) : wide8_walk_any(wide, &s);
-        else
-            done = counters ? wide8_walk_closest_stats(wide, &s) : wide8_walk_closest(wide, &s);
-    }
-#endif
-    else
+    } else {
         return walk(bvh, tri, ray, t_max, any_hit, hit, counters);
+    }
     if (counters) {
         counters->node_tests += s.node_tests;
         counters->triangle_tests += s.triangle_tests;
