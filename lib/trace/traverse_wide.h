@@ -495,18 +495,23 @@ static inline int walk_wide8(const struct bvh4 *wide, struct wide_state *s, uint
 }
 
 /*
- * The single-ray 8-wide walk (walk_wide's), the same visits and answers
- * as walk_wide8_impl from the root, arranged for the register allocator:
- * - the leaf is a call (wide8_leaf_*), not inlined: every vector
- *   register is the callee's to clobber across a call (System V x86-64
- *   ABI), so the walk's ray constants are reloaded once per leaf visit,
- *   not kept through the leaf's own register-hungry code;
+ * The single-ray 8-wide walk (walk_wide's): the same box tests, visit
+ * order, pushes and pops as walk_wide8_impl from the root (so the same
+ * answers and the same node and triangle counts), arranged for the
+ * register allocator, which inlined into one loop with the leaf kept
+ * the row offsets and the ray's vectors on the stack and reloaded them
+ * at every node:
+ * - each leaf packet is a call (wide8_packet_*), not inlined; every
+ *   vector register is the callee's to clobber across a call (System V
+ *   x86-64 ABI), so the walk broadcasts the ray's vectors again after
+ *   the leaf, once per leaf visit;
  * - the node test runs in an inner loop without calls, which leaves it
- *   all sixteen registers for the rows, origin and inverse;
+ *   the registers for the six row offsets, origin and inverse;
  * - the row offsets are pointer-sized (no sign extension per load);
  * - any_hit and stats are compile-time constants of each copy, and each
- *   copy is its own function with its own stack (walk_wide's set-up no
- *   longer pays for four inlined walks' frames).
+ *   copy is its own function with its own stack, which also sets up the
+ *   ray's state (walk_wide no longer pays for four inlined walks'
+ *   frames and a second copy of the packet test's constants).
  */
 #define WIDE8_PACKET(name, any_hit)                                                              \
     static int name(struct wide_state *s, const struct tri4_packet *p, uint32_t n) WIDE_NOINLINE; \
