@@ -721,12 +721,24 @@ WIDE8_WALK(wide8_walk_any, 1, 0)
 WIDE8_WALK(wide8_walk_any_stats, 1, 1)
 #endif
 
-/* walk_wide's 4-wide walks, each its own function (as WIDE8_WALK). */
+/* walk_wide's 4-wide walks, each its own function with the ray's state
+ * set up inside (as WIDE8_WALK); the state does not escape (the leaf is
+ * inlined), so it can live in registers. */
 #define WIDE4_WALK(name, any_hit, stats)                                                        \
-    static int name(const struct bvh4 *wide, struct wide_state *s) WIDE_NOINLINE;              \
-    static int name(const struct bvh4 *wide, struct wide_state *s)                             \
+    static int name(const struct bvh4 *wide, const struct trace_ray *ray, float t_max,         \
+                    struct trace_hit *hit, struct trace_counters *counters) WIDE_NOINLINE;      \
+    static int name(const struct bvh4 *wide, const struct trace_ray *ray, float t_max,         \
+                    struct trace_hit *hit, struct trace_counters *counters)                     \
     {                                                                                           \
-        return walk_wide4_body(wide, s, 0, 0, any_hit, stats);                                  \
+        struct wide_state s;                                                                    \
+        wide_state_init(&s, ray, t_max, any_hit, hit);                                          \
+        const int done = walk_wide4_body(wide, &s, 0, 0, any_hit, stats);                      \
+        if (stats) {                                                                            \
+            counters->node_tests += s.node_tests;                                               \
+            counters->triangle_tests += s.triangle_tests;                                       \
+        }                                                                                       \
+        (void)counters;                                                                         \
+        return any_hit ? done : s.found;                                                        \
     }
 
 WIDE4_WALK(wide4_walk_closest, 0, 0)
@@ -754,24 +766,16 @@ static inline int walk_wide(const struct bvh4 *wide, const struct bvh *bvh, cons
                         : wide8_walk_closest(wide, ray, t_max, hit, counters);
     }
 #endif
-    struct wide_state s;
-    wide_state_init(&s, ray, t_max, any_hit, hit);
     /* Two copies of each walk: without counters (the caller passed
      * none, the common case) the hot loop does not count. */
-    int done;
     if (wide->width == 4) {
         if (any_hit)
-            done = counters ? wide4_walk_any_stats(wide, &s) : wide4_walk_any(wide, &s);
-        else
-            done = counters ? wide4_walk_closest_stats(wide, &s) : wide4_walk_closest(wide, &s);
-    } else {
-        return walk(bvh, tri, ray, t_max, any_hit, hit, counters);
+            return counters ? wide4_walk_any_stats(wide, ray, t_max, hit, counters)
+                            : wide4_walk_any(wide, ray, t_max, hit, counters);
+        return counters ? wide4_walk_closest_stats(wide, ray, t_max, hit, counters)
+                        : wide4_walk_closest(wide, ray, t_max, hit, counters);
     }
-    if (counters) {
-        counters->node_tests += s.node_tests;
-        counters->triangle_tests += s.triangle_tests;
-    }
-    return any_hit ? done : s.found;
+    return walk(bvh, tri, ray, t_max, any_hit, hit, counters);
 }
 
 int TRACE_WIDE_CLOSEST(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,
