@@ -45,6 +45,14 @@ struct wide_entry {
  * for the writes of missed lanes beyond the last entry (the push). */
 #define WIDE_STACK (7 * BVH_MAX_DEPTH + 16)
 
+/* The single-ray walks and their packet calls are functions of their
+ * own (walk_wide8_ray says why). */
+#if defined(__GNUC__)
+#define WIDE_NOINLINE __attribute__((noinline))
+#else
+#define WIDE_NOINLINE
+#endif
+
 /* The per-ray state every wide walk keeps. */
 struct wide_state {
     const struct trace_ray *ray;
@@ -58,47 +66,88 @@ struct wide_state {
     uint64_t triangle_tests;
 };
 
-/* A leaf lane: count triangles in packets from `first`.  walk_leaf's
- * limit and hit rule; returns 1 when an any-hit walk has its hit. */
+/* walk_wide's state for a ray: no hit yet, the limits of t_max. */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline int wide_leaf_impl(struct wide_state *s, const struct tri4_packet *packets,
-                                 uint32_t first, uint32_t count, int stats)
+static inline void wide_state_init(struct wide_state *s, const struct trace_ray *ray, float t_max,
+                                   int any_hit, struct trace_hit *hit)
+{
+    s->ray = ray;
+    tri4_ray_init(&s->r4, ray);
+    s->any_hit = any_hit;
+    s->hit = hit;
+    s->found = 0;
+    s->best = t_max;
+    s->box_limit = t_max * ISECT_BOX_FAR_SCALE; /* as traverse_walk.h */
+    s->node_tests = 0;
+    s->triangle_tests = 0;
+}
+
+/* The n triangles of packet p: walk_leaf's limit and hit rule; returns
+ * 1 when an any-hit walk has its hit. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline int wide_packet_body(struct wide_state *s, const struct tri4_packet *p, uint32_t n,
+                                   int any_hit)
+{
+    /* An any-hit walk returns at its first hit: found stays 0. */
+    float limit = !any_hit && s->found ? isect_next_up(s->best) : s->best;
+    struct tri4_lanes lanes;
+    unsigned mask = tri4_candidates_lanes(&s->r4, p, (1u << n) - 1u, limit, &lanes);
+    while (mask) {
+        const unsigned l = (unsigned)__builtin_ctz(mask);
+        mask &= mask - 1u;
+        float t, u, w;
+        limit = !any_hit && s->found ? isect_next_up(s->best) : s->best;
+        if (!tri4_lane_test(s->ray, p, &lanes, l, any_hit, limit, &t, &u, &w))
+            continue;
+        if (any_hit) {
+            s->found = 1;
+            return 1;
+        }
+        const uint32_t prim = p->prim[l];
+        if (s->found && !(t < s->best || prim < s->hit->prim))
+            continue;
+        s->found = 1;
+        s->best = t;
+        s->box_limit = t * ISECT_BOX_FAR_SCALE;
+        s->hit->t = t;
+        s->hit->u = u;
+        s->hit->v = w;
+        s->hit->prim = prim;
+    }
+    return 0;
+}
+
+/* A leaf lane: count triangles in packets from `first` (wide_packet_body
+ * on each); returns 1 when an any-hit walk has its hit. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline int wide_leaf_body(struct wide_state *s, const struct tri4_packet *packets,
+                                 uint32_t first, uint32_t count, int any_hit, int stats)
 {
     for (uint32_t j = 0; j < count; j += 4) {
         const struct tri4_packet *p = &packets[first + j / 4];
         const uint32_t n = count - j < 4 ? count - j : 4;
         if (stats)
             s->triangle_tests += n;
-        /* An any-hit walk returns at its first hit: found stays 0. */
-        float limit = !s->any_hit && s->found ? isect_next_up(s->best) : s->best;
-        struct tri4_lanes lanes;
-        unsigned mask = tri4_candidates_lanes(&s->r4, p, (1u << n) - 1u, limit, &lanes);
-        while (mask) {
-            const unsigned l = (unsigned)__builtin_ctz(mask);
-            mask &= mask - 1u;
-            float t, u, w;
-            limit = !s->any_hit && s->found ? isect_next_up(s->best) : s->best;
-            if (!tri4_lane_test(s->ray, p, &lanes, l, s->any_hit, limit, &t, &u, &w))
-                continue;
-            if (s->any_hit) {
-                s->found = 1;
-                return 1;
-            }
-            const uint32_t prim = p->prim[l];
-            if (s->found && !(t < s->best || prim < s->hit->prim))
-                continue;
-            s->found = 1;
-            s->best = t;
-            s->box_limit = t * ISECT_BOX_FAR_SCALE;
-            s->hit->t = t;
-            s->hit->u = u;
-            s->hit->v = w;
-            s->hit->prim = prim;
-        }
+        if (wide_packet_body(s, p, n, any_hit))
+            return 1;
     }
     return 0;
+}
+
+/* wide_leaf_body with the walk's any_hit from the state. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline int wide_leaf_impl(struct wide_state *s, const struct tri4_packet *packets,
+                                 uint32_t first, uint32_t count, int stats)
+{
+    return wide_leaf_body(s, packets, first, count, s->any_hit, stats);
 }
 
 /* wide_leaf_impl with the counters (the packet walk's entry). */
@@ -133,8 +182,8 @@ static inline void wide_prefetch(const void *node, size_t bytes)
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline int walk_wide4_impl(const struct bvh4 *wide, struct wide_state *s, uint32_t root,
-                                  uint32_t root_count, int stats)
+static inline int walk_wide4_body(const struct bvh4 *wide, struct wide_state *s, uint32_t root,
+                                  uint32_t root_count, int any_hit, int stats)
 {
     const struct trace_ray *ray = s->ray;
     const struct bvh4_node *nodes = wide->nodes;
@@ -161,7 +210,7 @@ static inline int walk_wide4_impl(const struct bvh4 *wide, struct wide_state *s,
     uint32_t cur_count = root_count;
     for (;;) {
         if (cur_count) {
-            if (wide_leaf_impl(s, wide->packets, cur, cur_count, stats))
+            if (wide_leaf_body(s, wide->packets, cur, cur_count, any_hit, stats))
                 return 1;
         } else {
             const struct bvh4_node *n = &nodes[cur];
@@ -216,12 +265,22 @@ static inline int walk_wide4_impl(const struct bvh4 *wide, struct wide_state *s,
             sp--;
             /* As in walk_wide8_impl: an any-hit walk's box_limit never
              * shrinks. */
-            if (s->any_hit || stack[sp].t_entry <= s->box_limit)
+            if (any_hit || stack[sp].t_entry <= s->box_limit)
                 break;
         }
         cur = stack[sp].child;
         cur_count = stack[sp].count;
     }
+}
+
+/* walk_wide4_body with the walk's any_hit from the state. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline int walk_wide4_impl(const struct bvh4 *wide, struct wide_state *s, uint32_t root,
+                                  uint32_t root_count, int stats)
+{
+    return walk_wide4_body(wide, s, root, root_count, s->any_hit, stats);
 }
 
 /* walk_wide4_impl counting node and triangle tests (the packet walk's
@@ -434,7 +493,258 @@ static inline int walk_wide8(const struct bvh4 *wide, struct wide_state *s, uint
 {
     return walk_wide8_impl(wide, s, root, root_count, 1);
 }
+
+/*
+ * The single-ray 8-wide walk (walk_wide's): the same box tests, visit
+ * order, pushes and pops as walk_wide8_impl from the root (so the same
+ * answers and the same node and triangle counts), arranged for the
+ * register allocator, which inlined into one loop with the leaf kept
+ * the row offsets and the ray's vectors on the stack and reloaded them
+ * at every node:
+ * - each leaf packet is a call (wide8_packet_*), not inlined; every
+ *   vector register is the callee's to clobber across a call (System V
+ *   x86-64 ABI), so the walk broadcasts the ray's vectors again after
+ *   the leaf, once per leaf visit;
+ * - the node test runs in an inner loop without calls, which leaves it
+ *   the registers for the six row offsets, origin and inverse;
+ * - the row offsets are pointer-sized (no sign extension per load);
+ * - any_hit and stats are compile-time constants of each copy, and each
+ *   copy is its own function with its own stack, which also sets up the
+ *   ray's state (walk_wide no longer pays for four inlined walks'
+ *   frames and a second copy of the packet test's constants).
+ */
+#define WIDE8_PACKET(name, any_hit)                                                              \
+    static int name(struct wide_state *s, const struct tri4_packet *p, uint32_t n) WIDE_NOINLINE; \
+    static int name(struct wide_state *s, const struct tri4_packet *p, uint32_t n)                \
+    {                                                                                              \
+        return wide_packet_body(s, p, n, any_hit);                                                 \
+    }
+
+WIDE8_PACKET(wide8_packet_closest, 0)
+WIDE8_PACKET(wide8_packet_any, 1)
+
+#if defined(__GNUC__)
+__attribute__((always_inline))
 #endif
+static inline int walk_wide8_ray(const struct bvh4 *wide, struct wide_state *s, int any_hit,
+                                 int stats)
+{
+    const struct trace_ray *ray = s->ray;
+    const struct bvh8_node *nodes = wide->nodes8;
+    const struct tri4_packet *packets = wide->packets;
+    size_t near_x, near_y, near_z, far_x, far_y, far_z;
+    int octant = 0;
+    {
+        /* Row k is min k, row 3 + k max k; a negative direction (-0
+         * too) has its near plane at the max.  By arithmetic on the sign
+         * bits: near + far = 2k + 3 rows. */
+        const size_t row = sizeof(nodes[0].bounds[0]);
+        uint32_t bits[3];
+        memcpy(bits, ray->inv_dir, sizeof(bits));
+        const size_t nx = bits[0] >> 31, ny = bits[1] >> 31, nz = bits[2] >> 31;
+        near_x = nx * 3 * row;
+        far_x = 3 * row - near_x;
+        near_y = (1 + ny * 3) * row;
+        far_y = 5 * row - near_y;
+        near_z = (2 + nz * 3) * row;
+        far_z = 7 * row - near_z;
+        octant = (int)(nx | ny << 1 | nz << 2);
+    }
+    const __m256i order_shift = _mm256_setr_epi32(0, 3, 6, 9, 12, 15, 18, 21);
+    uint32_t st_child[WIDE_STACK];
+    uint32_t st_count[WIDE_STACK];
+    float st_t[WIDE_STACK];
+    uint32_t sp = 0;
+    uint32_t cur = 0;
+    uint32_t cur_count = 0;
+    float box_limit = s->box_limit;
+    uint64_t node_tests = 0;
+    uint64_t tri_tests = 0;
+    for (;;) {
+        /* The ray's vectors, broadcast again after each leaf call from
+         * the ray (which the call may in principle have changed, so the
+         * compiler reloads it anyway) instead of spilled and reloaded
+         * around it. */
+        const __m256 org_x = _mm256_set1_ps(ray->org[0]);
+        const __m256 org_y = _mm256_set1_ps(ray->org[1]);
+        const __m256 org_z = _mm256_set1_ps(ray->org[2]);
+        const __m256 inv_x = _mm256_set1_ps(ray->inv_dir[0]);
+        const __m256 inv_y = _mm256_set1_ps(ray->inv_dir[1]);
+        const __m256 inv_z = _mm256_set1_ps(ray->inv_dir[2]);
+        const __m256 tmin8 = _mm256_set1_ps(ray->tmin);
+        /* Inner nodes until a leaf lane comes up (or the stack empties). */
+        while (!cur_count) {
+            const struct bvh8_node *n = &nodes[cur];
+            const char *b = (const char *)(const void *)n->bounds;
+            if (stats)
+                node_tests += 8;
+            /* isect_box's order: entry max(z, max(y, max(x, tmin))),
+             * exit min(z, min(y, min(x, inf))) (see the file's head). */
+            const __m256 tnx = _mm256_mul_ps(
+                _mm256_sub_ps(_mm256_load_ps((const float *)(const void *)(b + near_x)), org_x),
+                inv_x);
+            const __m256 tfx = _mm256_mul_ps(
+                _mm256_sub_ps(_mm256_load_ps((const float *)(const void *)(b + far_x)), org_x),
+                inv_x);
+            const __m256 tny = _mm256_mul_ps(
+                _mm256_sub_ps(_mm256_load_ps((const float *)(const void *)(b + near_y)), org_y),
+                inv_y);
+            const __m256 tfy = _mm256_mul_ps(
+                _mm256_sub_ps(_mm256_load_ps((const float *)(const void *)(b + far_y)), org_y),
+                inv_y);
+            const __m256 tnz = _mm256_mul_ps(
+                _mm256_sub_ps(_mm256_load_ps((const float *)(const void *)(b + near_z)), org_z),
+                inv_z);
+            const __m256 tfz = _mm256_mul_ps(
+                _mm256_sub_ps(_mm256_load_ps((const float *)(const void *)(b + far_z)), org_z),
+                inv_z);
+            const __m256 t0 = _mm256_max_ps(tnz, _mm256_max_ps(tny, _mm256_max_ps(tnx, tmin8)));
+            __m256 t1 = _mm256_min_ps(
+                tfz, _mm256_min_ps(tfy, _mm256_min_ps(tfx, _mm256_set1_ps(INFINITY))));
+            t1 = _mm256_mul_ps(t1, _mm256_set1_ps(ISECT_BOX_FAR_SCALE));
+            t1 = _mm256_min_ps(t1, _mm256_set1_ps(box_limit));
+            const __m256 hit = _mm256_cmp_ps(t0, t1, _CMP_LE_OQ);
+            const unsigned mask = (unsigned)_mm256_movemask_ps(hit);
+            if (mask) {
+                if (!(mask & (mask - 1u))) {
+                    const unsigned l = (unsigned)__builtin_ctz(mask);
+                    cur = n->child[l];
+                    cur_count = n->count[l];
+                } else {
+                    /* walk_wide8_impl's push (see there). */
+                    const uint32_t order = (uint32_t)n->order[octant][0] |
+                                           (uint32_t)n->order[octant][1] << 8 |
+                                           (uint32_t)n->order[octant][2] << 16;
+                    const __m256i lanes = _mm256_and_si256(
+                        _mm256_srlv_epi32(_mm256_set1_epi32((int)order), order_shift),
+                        _mm256_set1_epi32(7));
+                    const unsigned pm = (unsigned)_mm256_movemask_ps(
+                        _mm256_permutevar8x32_ps(hit, lanes));
+                    const __m128i packed =
+                        _mm_loadl_epi64((const __m128i *)(const void *)&wide8_compress[pm]);
+                    const __m256i gather =
+                        _mm256_permutevar8x32_epi32(lanes, _mm256_cvtepu8_epi32(packed));
+                    const __m256i child =
+                        _mm256_load_si256((const __m256i *)(const void *)n->child);
+                    const __m256i count = _mm256_cvtepu8_epi32(
+                        _mm_loadl_epi64((const __m128i *)(const void *)n->count));
+                    _mm256_storeu_si256((__m256i *)(void *)&st_child[sp],
+                                        _mm256_permutevar8x32_epi32(child, gather));
+                    _mm256_storeu_si256((__m256i *)(void *)&st_count[sp],
+                                        _mm256_permutevar8x32_epi32(count, gather));
+                    _mm256_storeu_ps(&st_t[sp], _mm256_permutevar8x32_ps(t0, gather));
+                    sp += (uint32_t)__builtin_popcount(pm) - 1u;
+                    const unsigned l = order >> (3 * (unsigned)__builtin_ctz(pm)) & 7u;
+                    cur = n->child[l];
+                    cur_count = n->count[l];
+                }
+                if (!cur_count)
+                    wide_prefetch(&nodes[cur], sizeof(struct bvh8_node));
+                continue;
+            }
+            /* Pop (as below). */
+            for (;;) {
+                if (sp == 0)
+                    goto done;
+                sp--;
+                if (any_hit || st_t[sp] <= box_limit)
+                    break;
+            }
+            cur = st_child[sp];
+            cur_count = st_count[sp];
+        }
+        {
+            int stop = 0;
+            const struct tri4_packet *p = &packets[cur];
+            if (stats)
+                tri_tests += cur_count;
+            for (;;) {
+                const uint32_t n = cur_count < 4 ? cur_count : 4;
+                stop = any_hit ? wide8_packet_any(s, p, n) : wide8_packet_closest(s, p, n);
+                if (stop || cur_count <= 4)
+                    break;
+                cur_count -= 4;
+                p++;
+            }
+            if (stop) {
+                if (stats) {
+                    s->node_tests += node_tests;
+                    s->triangle_tests += tri_tests;
+                }
+                return 1;
+            }
+        }
+        box_limit = s->box_limit;
+        /* An any-hit walk ends at its first hit, so its box_limit never
+         * shrinks and every pushed child passes: the entry distance is
+         * not compared. */
+        for (;;) {
+            if (sp == 0)
+                goto done;
+            sp--;
+            if (any_hit || st_t[sp] <= box_limit)
+                break;
+        }
+        cur = st_child[sp];
+        cur_count = st_count[sp];
+    }
+done:
+    if (stats) {
+        s->node_tests += node_tests;
+        s->triangle_tests += tri_tests;
+    }
+    return 0;
+}
+
+/* The whole single-ray trace over an 8-wide layout, the state set up
+ * here: the entry (walk_wide) is then a dispatch and a jump. */
+#define WIDE8_WALK(name, any_hit, stats)                                                        \
+    static int name(const struct bvh4 *wide, const struct trace_ray *ray, float t_max,         \
+                    struct trace_hit *hit, struct trace_counters *counters) WIDE_NOINLINE;      \
+    static int name(const struct bvh4 *wide, const struct trace_ray *ray, float t_max,         \
+                    struct trace_hit *hit, struct trace_counters *counters)                     \
+    {                                                                                           \
+        struct wide_state s;                                                                    \
+        wide_state_init(&s, ray, t_max, any_hit, hit);                                          \
+        const int done = walk_wide8_ray(wide, &s, any_hit, stats);                              \
+        if (stats) {                                                                            \
+            counters->node_tests += s.node_tests;                                               \
+            counters->triangle_tests += s.triangle_tests;                                       \
+        }                                                                                       \
+        (void)counters;                                                                         \
+        return any_hit ? done : s.found;                                                        \
+    }
+
+WIDE8_WALK(wide8_walk_closest, 0, 0)
+WIDE8_WALK(wide8_walk_closest_stats, 0, 1)
+WIDE8_WALK(wide8_walk_any, 1, 0)
+WIDE8_WALK(wide8_walk_any_stats, 1, 1)
+#endif
+
+/* walk_wide's 4-wide walks, each its own function with the ray's state
+ * set up inside (as WIDE8_WALK); the state does not escape (the leaf is
+ * inlined), so it can live in registers. */
+#define WIDE4_WALK(name, any_hit, stats)                                                        \
+    static int name(const struct bvh4 *wide, const struct trace_ray *ray, float t_max,         \
+                    struct trace_hit *hit, struct trace_counters *counters) WIDE_NOINLINE;      \
+    static int name(const struct bvh4 *wide, const struct trace_ray *ray, float t_max,         \
+                    struct trace_hit *hit, struct trace_counters *counters)                     \
+    {                                                                                           \
+        struct wide_state s;                                                                    \
+        wide_state_init(&s, ray, t_max, any_hit, hit);                                          \
+        const int done = walk_wide4_body(wide, &s, 0, 0, any_hit, stats);                      \
+        if (stats) {                                                                            \
+            counters->node_tests += s.node_tests;                                               \
+            counters->triangle_tests += s.triangle_tests;                                       \
+        }                                                                                       \
+        (void)counters;                                                                         \
+        return any_hit ? done : s.found;                                                        \
+    }
+
+WIDE4_WALK(wide4_walk_closest, 0, 0)
+WIDE4_WALK(wide4_walk_closest_stats, 0, 1)
+WIDE4_WALK(wide4_walk_any, 1, 0)
+WIDE4_WALK(wide4_walk_any_stats, 1, 1)
 
 /* The walk of the layout's width; a width this table does not walk
  * (8 without AVX) takes the binary walk, which gives the same answers. */
@@ -447,32 +757,25 @@ static inline int walk_wide(const struct bvh4 *wide, const struct bvh *bvh, cons
 {
     if (wide->node_count == 0)
         return walk(bvh, tri, ray, t_max, any_hit, hit, counters);
-    struct wide_state s;
-    s.ray = ray;
-    tri4_ray_init(&s.r4, ray);
-    s.any_hit = any_hit;
-    s.hit = hit;
-    s.found = 0;
-    s.best = t_max;
-    s.box_limit = t_max * ISECT_BOX_FAR_SCALE; /* as traverse_walk.h */
-    s.node_tests = 0;
-    s.triangle_tests = 0;
+#if defined(__AVX__)
+    if (wide->width == 8) {
+        if (any_hit)
+            return counters ? wide8_walk_any_stats(wide, ray, t_max, hit, counters)
+                            : wide8_walk_any(wide, ray, t_max, hit, counters);
+        return counters ? wide8_walk_closest_stats(wide, ray, t_max, hit, counters)
+                        : wide8_walk_closest(wide, ray, t_max, hit, counters);
+    }
+#endif
     /* Two copies of each walk: without counters (the caller passed
      * none, the common case) the hot loop does not count. */
-    int done;
-    if (wide->width == 4)
-        done = counters ? walk_wide4_impl(wide, &s, 0, 0, 1) : walk_wide4_impl(wide, &s, 0, 0, 0);
-#if defined(__AVX__)
-    else if (wide->width == 8)
-        done = counters ? walk_wide8_impl(wide, &s, 0, 0, 1) : walk_wide8_impl(wide, &s, 0, 0, 0);
-#endif
-    else
-        return walk(bvh, tri, ray, t_max, any_hit, hit, counters);
-    if (counters) {
-        counters->node_tests += s.node_tests;
-        counters->triangle_tests += s.triangle_tests;
+    if (wide->width == 4) {
+        if (any_hit)
+            return counters ? wide4_walk_any_stats(wide, ray, t_max, hit, counters)
+                            : wide4_walk_any(wide, ray, t_max, hit, counters);
+        return counters ? wide4_walk_closest_stats(wide, ray, t_max, hit, counters)
+                        : wide4_walk_closest(wide, ray, t_max, hit, counters);
     }
-    return any_hit ? done : s.found;
+    return walk(bvh, tri, ray, t_max, any_hit, hit, counters);
 }
 
 int TRACE_WIDE_CLOSEST(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,
