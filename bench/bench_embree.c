@@ -205,10 +205,57 @@ static int embree_build_row(const struct bench_options *opts, RTCDevice device,
 struct trace_row {
     double mrays[2][1 + QUALITIES]; /* [threads - 1][ours, MEDIUM, HIGH] */
     struct bench_agreement agree[QUALITIES];
+    /* Of the rays where Embree's answer is not ours: how many the
+     * brute-force reference (trace_closest_brute_force, the exact test
+     * over every triangle) was asked about, at most REFEREE_MAX, and on
+     * how many of those its answer is ours. */
+    uint32_t refereed[QUALITIES];
+    uint32_t ours_right[QUALITIES];
 };
 
-static int embree_trace_set(const struct bench_options *opts, struct bench_accel *acc,
-                            RTCScene scenes[QUALITIES], const struct bench_rays *set, int any_hit,
+/* Rays a disagreement is refereed on, per set and quality: each costs a
+ * pass over every triangle (a million on bumpy). */
+#define REFEREE_MAX 64
+
+/* Where ours and theirs differ, which one the brute-force reference
+ * agrees with: ours (counted in *right) or not.  An any-hit record says
+ * only occluded or not, so the reference's closest hit within the ray's
+ * interval decides it. */
+static void referee(const struct bench_mesh *mesh, const struct bench_rays *set, int any_hit,
+                    const struct bench_hit *ours, const struct bench_hit *theirs,
+                    uint32_t *refereed, uint32_t *right)
+{
+    *refereed = *right = 0;
+    for (uint32_t i = 0; i < set->count && *refereed < REFEREE_MAX; i++) {
+        struct bench_agreement a;
+        memset(&a, 0, sizeof(a));
+        bench_compare_hits(&a, &ours[i], &theirs[i], 1, 1);
+        if (a.agree)
+            continue;
+        const RTray *r = &set->rays[i];
+        struct trace_ray ray;
+        struct trace_hit h;
+        struct bench_hit ref = {INFINITY, BENCH_MISS};
+        trace_ray_init(&ray, r->org, r->dir, r->tmin);
+        if (trace_closest_brute_force(mesh->positions, mesh->indices, mesh->tri_count, &ray,
+                                      r->tmax, &h)) {
+            ref.t = h.t;
+            ref.prim = h.prim;
+        }
+        (*refereed)++;
+        if (any_hit) {
+            *right += (ours[i].prim != BENCH_MISS) == (ref.prim != BENCH_MISS);
+        } else {
+            memset(&a, 0, sizeof(a));
+            bench_compare_hits(&a, &ours[i], &ref, 1, 1);
+            *right += a.agree == 1;
+        }
+    }
+}
+
+static int embree_trace_set(const struct bench_options *opts, const struct bench_mesh *mesh,
+                            struct bench_accel *acc, RTCScene scenes[QUALITIES],
+                            const struct bench_rays *set, int any_hit,
                             struct bench_hit *ours, struct bench_hit *theirs, struct trace_row *row)
 {
     const int paths = 2 * (1 + QUALITIES);
@@ -246,8 +293,11 @@ static int embree_trace_set(const struct bench_options *opts, struct bench_accel
                 times[(t * (1 + QUALITIES) + p) * opts->runs + run] = ms;
                 /* Compare once per quality: the answers do not change
                  * from run to run. */
-                if (p > 0 && run == 0 && t == (opts->threads == 2) && run_path[0])
+                if (p > 0 && run == 0 && t == (opts->threads == 2) && run_path[0]) {
                     bench_compare_hits(&row->agree[p - 1], ours, theirs, set->count, 1);
+                    referee(mesh, set, any_hit, ours, theirs, &row->refereed[p - 1],
+                            &row->ours_right[p - 1]);
+                }
             }
         }
     }
@@ -305,20 +355,22 @@ static int embree_trace_mesh(const struct bench_options *opts, RTCDevice device,
         tests[s].rays = sets[s].count;
         bench_count_tests_ours(&acc, &sets[s], any_hit, &tests[s].nodes, &tests[s].tris,
                                &tests[s].answered);
-        if (embree_trace_set(opts, &acc, scenes, &sets[s], any_hit, ours, theirs, &row))
+        if (embree_trace_set(opts, mesh, &acc, scenes, &sets[s], any_hit, ours, theirs, &row))
             goto out;
         for (int t = 0; t < 2; t++) {
             const double *m = row.mrays[t];
             if (opts->threads && opts->threads != t + 1)
                 continue;
-            report_row("%s|%s%s|%d|%.3f|%.3f|%.3f|%.2f|%.2f|%.2f%% (%llu)|%.2f%% (%llu)|%.2f%%",
+            report_row("%s|%s%s|%d|%.3f|%.3f|%.3f|%.2f|%.2f|%.2f%% (%llu, %u/%u)|%.2f%% (%llu, "
+                       "%u/%u)|%.2f%%",
                        mesh->name,
                        sets[s].name, any_hit ? " (any hit)" : "", t + 1, m[0], m[1], m[2],
                        m[1] > 0 ? m[0] / m[1] : 0.0, m[2] > 0 ? m[0] / m[2] : 0.0,
                        bench_agreement_percent(&row.agree[0]),
                        (unsigned long long)(row.agree[0].compared - row.agree[0].agree),
-                       bench_agreement_percent(&row.agree[1]),
+                       row.ours_right[0], row.refereed[0], bench_agreement_percent(&row.agree[1]),
                        (unsigned long long)(row.agree[1].compared - row.agree[1].agree),
+                       row.ours_right[1], row.refereed[1],
                        row.agree[0].compared
                            ? 100.0 * (double)row.agree[0].same_prim / row.agree[0].compared
                            : 100.0);
@@ -347,6 +399,14 @@ static int embree_trace_mesh(const struct bench_options *opts, RTCDevice device,
                                 mesh->name, sets[s].name, quality_names[q],
                                 bench_agreement_percent(&row.agree[q]),
                                 (unsigned long long)row.agree[q].hit_miss_diff);
+            }
+            /* Where the two differ, ours must be the reference's answer. */
+            if (row.ours_right[q] != row.refereed[q]) {
+                report_check_failed();
+                report_progress("embree: WARNING: %s/%s: of %u rays where Embree %s differs, "
+                                "the brute-force reference gives our answer on only %u\n",
+                                mesh->name, sets[s].name, row.refereed[q], quality_names[q],
+                                row.ours_right[q]);
             }
         }
     }
@@ -467,9 +527,11 @@ int bench_embree_section(const struct bench_options *opts, struct bench_mesh *me
                   "same thread split. \"ours/Embree\" is a throughput ratio: below 1 means we "
                   "are slower. \"agree\": rays where Embree's answer equals ours (hit/miss and "
                   "t within %g relative) over all rays of the set, in brackets the number of "
-                  "rays that differ (the percentage rounds one ray in a million to 100.00%%); "
+                  "rays that differ (the percentage rounds one ray in a million to 100.00%%) "
+                  "and, of up to %d of them, on how many the brute-force reference (every "
+                  "triangle, the exact watertight test) gives our answer; "
                   "\"same prim\": of those, the same triangle (MEDIUM).\n\n",
-                  opts->runs, (double)BENCH_T_TOLERANCE);
+                  opts->runs, (double)BENCH_T_TOLERANCE, REFEREE_MAX);
     report_table_header("mesh|rays|threads|ours|Embree MEDIUM|Embree HIGH|ours/MEDIUM|"
                         "ours/HIGH|agree MEDIUM|agree HIGH|same prim");
     FILE *plot_data = report_data_file("embree.dat");
