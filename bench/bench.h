@@ -210,6 +210,9 @@ struct bench_agreement {
 void bench_compare_hits(struct bench_agreement *a, const struct bench_hit *x,
                         const struct bench_hit *y, uint32_t count, uint32_t stride);
 double bench_agreement_percent(const struct bench_agreement *a);
+/* The brute-force reference's answer (trace_closest_brute_force: every
+ * triangle of the mesh, the exact test) for one ray of a set. */
+struct bench_hit bench_brute_force_hit(const struct bench_mesh *mesh, const RTray *r);
 
 /* ------------------------------------------------------------ our BVH */
 

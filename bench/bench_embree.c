@@ -232,16 +232,7 @@ static void referee(const struct bench_mesh *mesh, const struct bench_rays *set,
         bench_compare_hits(&a, &ours[i], &theirs[i], 1, 1);
         if (a.agree)
             continue;
-        const RTray *r = &set->rays[i];
-        struct trace_ray ray;
-        struct trace_hit h;
-        struct bench_hit ref = {INFINITY, BENCH_MISS};
-        trace_ray_init(&ray, r->org, r->dir, r->tmin);
-        if (trace_closest_brute_force(mesh->positions, mesh->indices, mesh->tri_count, &ray,
-                                      r->tmax, &h)) {
-            ref.t = h.t;
-            ref.prim = h.prim;
-        }
+        const struct bench_hit ref = bench_brute_force_hit(mesh, &set->rays[i]);
         (*refereed)++;
         if (any_hit) {
             *right += (ours[i].prim != BENCH_MISS) == (ref.prim != BENCH_MISS);

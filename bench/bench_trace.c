@@ -158,6 +158,20 @@ static double api_run(struct api_scene *s, const struct bench_rays *set, int any
     return ms;
 }
 
+struct bench_hit bench_brute_force_hit(const struct bench_mesh *mesh, const RTray *r)
+{
+    struct trace_ray ray;
+    struct trace_hit h;
+    struct bench_hit ref = {INFINITY, BENCH_MISS};
+    trace_ray_init(&ray, r->org, r->dir, r->tmin);
+    if (trace_closest_brute_force(mesh->positions, mesh->indices, mesh->tri_count, &ray, r->tmax,
+                                  &h)) {
+        ref.t = h.t;
+        ref.prim = h.prim;
+    }
+    return ref;
+}
+
 /* Our closest hits on a sample of the set against the brute-force
  * reference; returns the agreement in percent and the sample size. */
 static double brute_force_check(const struct bench_mesh *mesh, const struct bench_rays *set,
@@ -174,16 +188,7 @@ static double brute_force_check(const struct bench_mesh *mesh, const struct benc
     memset(&a, 0, sizeof(a));
     for (uint32_t k = 0; k < n; k++) {
         uint32_t i = k * stride;
-        const RTray *r = &set->rays[i];
-        struct trace_ray ray;
-        struct trace_hit h;
-        struct bench_hit ref = {INFINITY, BENCH_MISS};
-        trace_ray_init(&ray, r->org, r->dir, r->tmin);
-        if (trace_closest_brute_force(mesh->positions, mesh->indices, mesh->tri_count, &ray,
-                                      r->tmax, &h)) {
-            ref.t = h.t;
-            ref.prim = h.prim;
-        }
+        const struct bench_hit ref = bench_brute_force_hit(mesh, &set->rays[i]);
         bench_compare_hits(&a, &hits[i], &ref, 1, 1);
     }
     *sampled = n;
