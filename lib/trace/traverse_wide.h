@@ -365,6 +365,48 @@ static const uint64_t wide8_compress[256] = {
     0x0000020304050607u, 0x0000020304050607u, 0x0001020304050607u, 0x0001020304050607u,
 };
 
+/*
+ * A node with two or more hit children: push all but the front one back
+ * to front in the octant's order and return the front one (its child
+ * word in *cur, its count in *cur_count), without a loop over the lanes.
+ * lanes[p]: the lane at position p of the order (position 0 the front);
+ * pm: the positions hit; wide8_compress[pm]: those positions back to
+ * front, one byte each, which gather the children's words and entry
+ * distances into consecutive stack slots (the slots beyond them are
+ * written too, and overwritten later: the stack has room).  The entry
+ * distances are stored for any-hit walks too, which never read them: one
+ * store, and GCC's flow analysis then sees every entry written
+ * (-Wmaybe-uninitialized at -O2 with -fsanitize=thread).  Inlined: the
+ * walks keep their state in registers around it.
+ */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void wide8_push(const struct bvh8_node *n, int octant, __m256 hit, __m256 t0,
+                              __m256i order_shift, uint32_t *st_child, uint32_t *st_count,
+                              float *st_t, uint32_t *sp, uint32_t *cur, uint32_t *cur_count)
+{
+    const uint32_t order = (uint32_t)n->order[octant][0] | (uint32_t)n->order[octant][1] << 8 |
+                           (uint32_t)n->order[octant][2] << 16;
+    const __m256i lanes = _mm256_and_si256(
+        _mm256_srlv_epi32(_mm256_set1_epi32((int)order), order_shift), _mm256_set1_epi32(7));
+    const unsigned pm = (unsigned)_mm256_movemask_ps(_mm256_permutevar8x32_ps(hit, lanes));
+    const __m128i packed = _mm_loadl_epi64((const __m128i *)(const void *)&wide8_compress[pm]);
+    const __m256i gather = _mm256_permutevar8x32_epi32(lanes, _mm256_cvtepu8_epi32(packed));
+    const __m256i child = _mm256_load_si256((const __m256i *)(const void *)n->child);
+    const __m256i count =
+        _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)n->count));
+    _mm256_storeu_si256((__m256i *)(void *)&st_child[*sp],
+                        _mm256_permutevar8x32_epi32(child, gather));
+    _mm256_storeu_si256((__m256i *)(void *)&st_count[*sp],
+                        _mm256_permutevar8x32_epi32(count, gather));
+    _mm256_storeu_ps(&st_t[*sp], _mm256_permutevar8x32_ps(t0, gather));
+    *sp += (uint32_t)__builtin_popcount(pm) - 1u;
+    const unsigned l = order >> (3 * (unsigned)__builtin_ctz(pm)) & 7u;
+    *cur = n->child[l];
+    *cur_count = n->count[l];
+}
+
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
@@ -424,45 +466,8 @@ static inline int walk_wide8_impl(const struct bvh4 *wide, struct wide_state *s,
                     cur = n->child[l];
                     cur_count = n->count[l];
                 } else {
-                    /* Two or more hit children: push all but the front
-                     * one back to front in the octant's order and go to
-                     * the front one, without a loop over the lanes.
-                     * lanes[p]: the lane at position p of the order
-                     * (position 0 the front); pm: the positions hit;
-                     * wide8_compress[pm]: those positions back to front,
-                     * one byte each, which gather the children's words
-                     * and entry distances into consecutive stack slots
-                     * (the slots beyond them are written too, and
-                     * overwritten later: the stack has room). */
-                    const uint32_t order = (uint32_t)n->order[octant][0] |
-                                           (uint32_t)n->order[octant][1] << 8 |
-                                           (uint32_t)n->order[octant][2] << 16;
-                    const __m256i lanes = _mm256_and_si256(
-                        _mm256_srlv_epi32(_mm256_set1_epi32((int)order), order_shift),
-                        _mm256_set1_epi32(7));
-                    const unsigned pm = (unsigned)_mm256_movemask_ps(
-                        _mm256_permutevar8x32_ps(hit, lanes));
-                    const __m128i packed =
-                        _mm_loadl_epi64((const __m128i *)(const void *)&wide8_compress[pm]);
-                    const __m256i gather =
-                        _mm256_permutevar8x32_epi32(lanes, _mm256_cvtepu8_epi32(packed));
-                    const __m256i child =
-                        _mm256_load_si256((const __m256i *)(const void *)n->child);
-                    const __m256i count = _mm256_cvtepu8_epi32(
-                        _mm_loadl_epi64((const __m128i *)(const void *)n->count));
-                    _mm256_storeu_si256((__m256i *)(void *)&st_child[sp],
-                                        _mm256_permutevar8x32_epi32(child, gather));
-                    _mm256_storeu_si256((__m256i *)(void *)&st_count[sp],
-                                        _mm256_permutevar8x32_epi32(count, gather));
-                    /* Stored for any-hit walks too, which never read it
-                     * (the pop below): one store, and GCC's flow analysis
-                     * then sees every entry written (-Wmaybe-uninitialized
-                     * at -O2 with -fsanitize=thread). */
-                    _mm256_storeu_ps(&st_t[sp], _mm256_permutevar8x32_ps(t0, gather));
-                    sp += (uint32_t)__builtin_popcount(pm) - 1u;
-                    const unsigned l = order >> (3 * (unsigned)__builtin_ctz(pm)) & 7u;
-                    cur = n->child[l];
-                    cur_count = n->count[l];
+                    wide8_push(n, octant, hit, t0, order_shift, st_child, st_count, st_t,
+                               &sp, &cur, &cur_count);
                 }
                 if (!cur_count)
                     wide_prefetch(&nodes[cur], sizeof(struct bvh8_node));
@@ -611,32 +616,8 @@ static inline int walk_wide8_ray(const struct bvh4 *wide, struct wide_state *s, 
                     cur = n->child[l];
                     cur_count = n->count[l];
                 } else {
-                    /* walk_wide8_impl's push (see there). */
-                    const uint32_t order = (uint32_t)n->order[octant][0] |
-                                           (uint32_t)n->order[octant][1] << 8 |
-                                           (uint32_t)n->order[octant][2] << 16;
-                    const __m256i lanes = _mm256_and_si256(
-                        _mm256_srlv_epi32(_mm256_set1_epi32((int)order), order_shift),
-                        _mm256_set1_epi32(7));
-                    const unsigned pm = (unsigned)_mm256_movemask_ps(
-                        _mm256_permutevar8x32_ps(hit, lanes));
-                    const __m128i packed =
-                        _mm_loadl_epi64((const __m128i *)(const void *)&wide8_compress[pm]);
-                    const __m256i gather =
-                        _mm256_permutevar8x32_epi32(lanes, _mm256_cvtepu8_epi32(packed));
-                    const __m256i child =
-                        _mm256_load_si256((const __m256i *)(const void *)n->child);
-                    const __m256i count = _mm256_cvtepu8_epi32(
-                        _mm_loadl_epi64((const __m128i *)(const void *)n->count));
-                    _mm256_storeu_si256((__m256i *)(void *)&st_child[sp],
-                                        _mm256_permutevar8x32_epi32(child, gather));
-                    _mm256_storeu_si256((__m256i *)(void *)&st_count[sp],
-                                        _mm256_permutevar8x32_epi32(count, gather));
-                    _mm256_storeu_ps(&st_t[sp], _mm256_permutevar8x32_ps(t0, gather));
-                    sp += (uint32_t)__builtin_popcount(pm) - 1u;
-                    const unsigned l = order >> (3 * (unsigned)__builtin_ctz(pm)) & 7u;
-                    cur = n->child[l];
-                    cur_count = n->count[l];
+                    wide8_push(n, octant, hit, t0, order_shift, st_child, st_count, st_t,
+                               &sp, &cur, &cur_count);
                 }
                 if (!cur_count)
                     wide_prefetch(&nodes[cur], sizeof(struct bvh8_node));
