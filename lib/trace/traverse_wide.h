@@ -73,8 +73,9 @@ __attribute__((always_inline))
 static inline void wide_state_init(struct wide_state *s, const struct trace_ray *ray, float t_max,
                                    int any_hit, struct trace_hit *hit)
 {
+    /* s->r4, which only the leaves read, is the caller's to set:
+     * walk_wide8_ray sets it at the ray's first leaf. */
     s->ray = ray;
-    tri4_ray_init(&s->r4, ray);
     s->any_hit = any_hit;
     s->hit = hit;
     s->found = 0;
@@ -565,6 +566,7 @@ static inline int walk_wide8_ray(const struct bvh4 *wide, struct wide_state *s, 
     float box_limit = s->box_limit;
     uint64_t node_tests = 0;
     uint64_t tri_tests = 0;
+    int r4_ready = 0;
     for (;;) {
         /* The ray's vectors, broadcast again after each leaf call from
          * the ray (which the call may in principle have changed, so the
@@ -637,6 +639,16 @@ static inline int walk_wide8_ray(const struct bvh4 *wide, struct wide_state *s, 
         {
             int stop = 0;
             const struct tri4_packet *p = &packets[cur];
+            /* A closest-hit ray sets the packet test's constants at its
+             * first leaf, not at its start: a ray that misses every leaf
+             * box never pays for them.  An any-hit ray (a shadow ray,
+             * which starts on a surface and nearly always reaches a leaf)
+             * has them set by WIDE8_WALK: the lazy set-up cost it more
+             * instructions than it saved (callgrind, gears). */
+            if (!any_hit && !r4_ready) {
+                tri4_ray_init(&s->r4, ray);
+                r4_ready = 1;
+            }
             if (stats)
                 tri_tests += cur_count;
             for (;;) {
@@ -687,6 +699,8 @@ done:
     {                                                                                           \
         struct wide_state s;                                                                    \
         wide_state_init(&s, ray, t_max, any_hit, hit);                                          \
+        if (any_hit)                                                                            \
+            tri4_ray_init(&s.r4, ray);                                                          \
         const int done = walk_wide8_ray(wide, &s, any_hit, stats);                              \
         if (stats) {                                                                            \
             counters->node_tests += s.node_tests;                                               \
@@ -713,6 +727,7 @@ WIDE8_WALK(wide8_walk_any_stats, 1, 1)
     {                                                                                           \
         struct wide_state s;                                                                    \
         wide_state_init(&s, ray, t_max, any_hit, hit);                                          \
+        tri4_ray_init(&s.r4, ray);                                                              \
         const int done = walk_wide4_body(wide, &s, 0, 0, any_hit, stats);                      \
         if (stats) {                                                                            \
             counters->node_tests += s.node_tests;                                               \
