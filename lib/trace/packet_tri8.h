@@ -129,8 +129,7 @@ struct tri8_result {
  * in place) against the rays of `lanes`, ray r below
  * limit[r] (isect_triangle's t_max).  any_hit: t, u, v are not needed
  * (isect_triangle_occludes' short way where it applies).  Returns the
- * lanes with a hit or sent to the scalar test (res->hit | res->scalar);
- * *res is filled only when that is not 0.
+ * lanes with a hit or sent to the scalar test (res->hit | res->scalar).
  */
 static inline unsigned tri8_test(const struct tri8_rays *r, const struct tri4_packet *q,
                                  unsigned l, unsigned lanes, __m256 limit, int any_hit,
@@ -174,11 +173,6 @@ static inline unsigned tri8_test(const struct tri8_rays *r, const struct tri4_pa
     const __m256 abs_det = _mm256_andnot_ps(_mm256_set1_ps(-0.0f), det);
     keep = _mm256_and_ps(keep, _mm256_cmp_ps(det, zero, _CMP_NEQ_UQ));
     keep = _mm256_and_ps(keep, _mm256_cmp_ps(abs_det, _mm256_set1_ps(INFINITY), _CMP_LT_OQ));
-    /* Most triangles of a leaf miss every ray of the packet on the edge
-     * test alone: out before the depth and slab tests (the result is
-     * not read when 0 is returned). */
-    if (!(((unsigned)_mm256_movemask_ps(keep) | deferred) & lanes))
-        return 0;
 
     const __m256 Az = _mm256_mul_ps(r->sz, az);
     const __m256 Bz = _mm256_mul_ps(r->sz, bz);
