@@ -14,10 +14,12 @@
  * near end by `inv < 0` as a blend on that comparison per lane.  A lane
  * it rejects is one isect_triangle rejects.  The rest of
  * isect_triangle_finish is carried on in the lanes too for the common
- * case, in double where it is double: the zero-area test and the squared
- * normal and longest edge depend on the triangle only (computed once per
- * triangle, with finish's own expressions); per lane, the sliver test,
- * the plane distance num / den (two halves of four doubles, the same
+ * case, in double where it is double: the squared normal and longest
+ * edge depend on the triangle only (computed once per triangle, with
+ * finish's own expressions, and only when a lane needs them; the
+ * zero-area test is the packet's NaN lane, bvh4_layout.h); per lane, the
+ * sliver test, the plane distance num / den (two halves of four doubles,
+ * only those with a candidate lane; the same
  * operations in the same order; a correctly rounded division and
  * conversion to float are the same in a lane as in a scalar register),
  * the clamp into the box interval, the range test and the barycentrics.
@@ -191,24 +193,13 @@ static inline unsigned tri8_test(const struct tri8_rays *r, const struct tri4_pa
     if (!(cand | deferred))
         return 0;
 
-    /* isect_triangle_finish's zero-area test: the triangle's own, and
-     * isect_triangle accepts a ray only through it, so a zero-area
-     * triangle is refused here for every lane, the deferred ones too
-     * (their double edge test would end there).  A mesh with collinear
-     * triangles (9 % of the gears benchmark's) otherwise sends every ray
-     * that meets one to the scalar test: the edge functions of a
-     * zero-area triangle are often exactly 0. */
-    const double e1x = (double)q->v[1][0][l] - q->v[0][0][l];
-    const double e1y = (double)q->v[1][1][l] - q->v[0][1][l];
-    const double e1z = (double)q->v[1][2][l] - q->v[0][2][l];
-    const double e2x = (double)q->v[2][0][l] - q->v[0][0][l];
-    const double e2y = (double)q->v[2][1][l] - q->v[0][1][l];
-    const double e2z = (double)q->v[2][2][l] - q->v[0][2][l];
-    const double nx = e1y * e2z - e1z * e2y;
-    const double ny = e1z * e2x - e1x * e2z;
-    const double nz = e1x * e2y - e1y * e2x;
-    if (nx == 0.0 && ny == 0.0 && nz == 0.0)
-        return 0; /* finish refuses every lane */
+    /* A triangle of zero area (edge vectors' cross product exactly 0 in
+     * double, isect_triangle_finish's refusal) is held as NaNs in its
+     * packet lane (accel_set_packet_lane), which the filter above
+     * rejects for every lane, the deferred ones too: no double test of
+     * the area here.  A lane of a zero-area triangle the filter keeps
+     * anyway reaches the plane distance with den == 0 and goes to the
+     * scalar test, which refuses it itself. */
     res->scalar = deferred;
     if (!cand)
         return deferred;
@@ -230,6 +221,15 @@ static inline unsigned tri8_test(const struct tri8_rays *r, const struct tri4_pa
             return res->hit | deferred;
     }
 
+    const double e1x = (double)q->v[1][0][l] - q->v[0][0][l];
+    const double e1y = (double)q->v[1][1][l] - q->v[0][1][l];
+    const double e1z = (double)q->v[1][2][l] - q->v[0][2][l];
+    const double e2x = (double)q->v[2][0][l] - q->v[0][0][l];
+    const double e2y = (double)q->v[2][1][l] - q->v[0][1][l];
+    const double e2z = (double)q->v[2][2][l] - q->v[0][2][l];
+    const double nx = e1y * e2z - e1z * e2y;
+    const double ny = e1z * e2x - e1x * e2z;
+    const double nz = e1x * e2y - e1y * e2x;
     const double n2 = nx * nx + ny * ny + nz * nz;
     const double e3x = e2x - e1x;
     const double e3y = e2y - e1y;
@@ -255,9 +255,13 @@ static inline unsigned tri8_test(const struct tri8_rays *r, const struct tri4_pa
     const __m256d rounding_scale = _mm256_set1_pd(ISECT_SLIVER_ROUNDINGS * 0x1p-24);
     const __m256d lmax_d = _mm256_set1_pd(lmax);
     const __m256d n2_d = _mm256_set1_pd(n2);
-    __m128 t_half[2];
+    /* Only the halves (four lanes each) with a candidate: a packet's
+     * candidates are often all among four neighbouring rays. */
+    __m128 t_half[2] = {_mm_setzero_ps(), _mm_setzero_ps()};
     unsigned ok = 0;
     for (int h = 0; h < 2; h++) {
+        if (!(cand >> (4 * h) & 0xfu))
+            continue;
         const __m128 size_h = h ? _mm256_extractf128_ps(size, 1) : _mm256_castps256_ps128(size);
         const __m256d rounding = _mm256_mul_pd(rounding_scale, _mm256_cvtps_pd(size_h));
         const __m256d proper = _mm256_cmp_pd(
