@@ -82,16 +82,8 @@ static inline int packet_take_hit(struct wide_state *s, float *limit, uint32_t p
         s->found = 1;
         return 1;
     }
-    if (s->found && !(t < s->best || prim < s->hit->prim))
-        return 0;
-    s->found = 1;
-    s->best = t;
-    s->box_limit = t * ISECT_BOX_FAR_SCALE;
-    s->hit->t = t;
-    s->hit->u = u;
-    s->hit->v = w;
-    s->hit->prim = prim;
-    *limit = isect_next_up(t);
+    if (wide_take_closest(s, prim, t, u, w))
+        *limit = isect_next_up(t);
     return 0;
 }
 

@@ -87,6 +87,29 @@ static inline void wide_state_init(struct wide_state *s, const struct trace_ray 
 
 /* The n triangles of packet p: walk_leaf's limit and hit rule; returns
  * 1 when an any-hit walk has its hit. */
+/* A closest-hit walk's candidate (t, u, w of triangle prim): taken, and
+ * the box limit shrunk to it, when it is the first hit or beats the best
+ * by the hit rule of trace.h (closer, or as close with a lower index).
+ * Returns 1 when taken.  Shared by the single-ray leaf and the packet
+ * walk's (packet_take_hit). */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline int wide_take_closest(struct wide_state *s, uint32_t prim, float t, float u,
+                                    float w)
+{
+    if (s->found && !(t < s->best || prim < s->hit->prim))
+        return 0;
+    s->found = 1;
+    s->best = t;
+    s->box_limit = t * ISECT_BOX_FAR_SCALE;
+    s->hit->t = t;
+    s->hit->u = u;
+    s->hit->v = w;
+    s->hit->prim = prim;
+    return 1;
+}
+
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
@@ -108,16 +131,7 @@ static inline int wide_packet_body(struct wide_state *s, const struct tri4_packe
             s->found = 1;
             return 1;
         }
-        const uint32_t prim = p->prim[l];
-        if (s->found && !(t < s->best || prim < s->hit->prim))
-            continue;
-        s->found = 1;
-        s->best = t;
-        s->box_limit = t * ISECT_BOX_FAR_SCALE;
-        s->hit->t = t;
-        s->hit->u = u;
-        s->hit->v = w;
-        s->hit->prim = prim;
+        wide_take_closest(s, p->prim[l], t, u, w);
     }
     return 0;
 }
