@@ -47,6 +47,7 @@ struct bench_options {
     const char *only; /* --only KEYS: bart-strategies runs only these strategies;
                        * embree: `ours` or `embree` runs only that path */
     int bart_frame_overhead_only; /* `frame-overhead`: only the kitchen frame against bare rays */
+    int bart_fps_only; /* `bart-fps`: only the frames-per-second tables of the three scenes */
     /* Why the BART kitchen is not among the meshes of `embree` and
      * `packets` (no data, a load error); NULL when it is there or was not
      * asked for (--mesh names another mesh).  Those sections print it. */

@@ -1280,6 +1280,16 @@ static void print_tables(const struct bench_options *opts, struct scene_result *
         report_metric(key, mu[k].median, 0);
     }
 
+}
+
+/* The frames-per-second tables (4): the whole section prints them after
+ * the scenes, top level and museum update; `rtbench bart-fps` alone. */
+static void print_fps(const struct bench_options *opts, const struct scene_result *res)
+{
+    const int w = opts->quick ? BART_QUICK_WIDTH : BART_WIDTH;
+    const int h = opts->quick ? BART_QUICK_HEIGHT : BART_HEIGHT;
+    char key[96];
+
     report_printf("\n### Frames per second (Wald, Benthin and Slusallek (2003) tables 1, 2 and 4)\n\n");
     report_printf(
         "%d frames spread evenly through each animation (frame round(i (N-1) / %d), "
@@ -1409,8 +1419,10 @@ static int scene_measure(const struct bench_options *opts, const char *dir, int 
     rtuGetAFFiv(aff, RTU_AFF_LIGHTS, &r->lights);
     rtuGetAFFiv(aff, RTU_AFF_TEXTURES, &r->textures);
     r->load_ms = c[1].load_ms;
-    if (fps_measure(opts, c, r) || toplevel_measure(opts, &c[1], r) ||
-        overhead_measure(opts, &c[1], r))
+    if (fps_measure(opts, c, r))
+        goto out;
+    if (!opts->bart_fps_only &&
+        (toplevel_measure(opts, &c[1], r) || overhead_measure(opts, &c[1], r)))
         goto out;
     rc = 0;
 out:
@@ -1586,9 +1598,18 @@ int bench_bart_section(const struct bench_options *opts)
     for (int i = 0; i < SCENES; i++)
         if (scene_measure(opts, dir, i, &res[i]))
             return -1;
+    if (opts->bart_fps_only) {
+        /* `rtbench bart-fps`: the frames per second alone, for before and
+         * after comparisons (the whole section takes about 15 minutes). */
+        print_fps(opts, res);
+        bench_share_report();
+        report_printf("\nThe BART fps took %.0f s.\n", (rt_now_ms() - start) / 1e3);
+        return 0;
+    }
     if (museum_update_measure(opts, dir, mu))
         return -1;
     print_tables(opts, res, mu);
+    print_fps(opts, res);
     if (museum_strategies_table(opts, dir) || robots_strategies_table(opts, dir))
         return -1;
     print_overhead(opts, res);

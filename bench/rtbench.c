@@ -64,7 +64,7 @@ static void usage(FILE *f)
 {
     fprintf(f,
             "usage: rtbench [build|trace|embree|packets|dynamic|immediate|nested|error|bart|\n"
-            "                bart-strategies|frame-overhead|dynamic-cpu|all]\n"
+            "                bart-strategies|bart-fps|frame-overhead|dynamic-cpu|all]\n"
             "               [--quick] [--runs N]"
             " [--out DIR] [--mesh bumpy|gears|soup|kitchen]\n"
             "               [--baseline FILE] [--tolerance PCT] [--bart-dir DIR]\n"
@@ -86,6 +86,7 @@ static void usage(FILE *f)
             "  immediate  immediate-mode re-send against objects (bench_immediate.c)\n"
             "  nested     nested static hierarchies flattened against instanced\n"
             "  bart-strategies  only the BART section's update strategies over the museum\n"
+            "  bart-fps         only the BART section's frames per second (three scenes)\n"
             "  frame-overhead   only a kitchen eye-light frame against its bare primary rays\n"
             "  dynamic-cpu      the dynamic strategies by CPU time and tests (threads=1)\n"
             "             (RT_AUTOMATIC against the fixed strategies, about a third of bart)\n"
@@ -168,6 +169,10 @@ int main(int argc, char **argv)
             opts.bart_strategies_only = 1;
         } else if (!strcmp(a, "dynamic-cpu")) {
             dynamic_cpu = 1;
+        } else if (!strcmp(a, "bart-fps")) {
+            sections |= SECTION_BART;
+            bart_required = 1;
+            opts.bart_fps_only = 1;
         } else if (!strcmp(a, "frame-overhead")) {
             sections |= SECTION_BART;
             bart_required = 1;
