@@ -196,85 +196,6 @@ static int grid_pixels(void)
     return n;
 }
 
-/* One context of check_rays_counted: the first build, an unchanged
- * update (counting starts), then the degrading update at `rate` ms per
- * step (rate 0: whatever the rule's inputs, refit).  Returns the rebuilds
- * of the last update; *delta_sah, *build_ms and *pixels describe it. */
-static int counted_case(double rate, double *delta_sah, double *build_ms, int *pixels)
-{
-    RTcontext c = rtCreateContext("threads=1");
-    CHECK(c != NULL && rtMakeCurrent(c));
-    struct rt_context *ctx = rt_current_context();
-    rtViewport(0, 0, SIZE, SIZE);
-    rtMatrixMode(RT_PROJECTION);
-    rtLoadIdentity();
-    rtFrustum(-0.5, 0.5, -0.5, 0.5, 1.0, 100.0);
-    grid(0.0f, 0);
-    define(1);
-    define_far_triangle();
-    rtObjectParameteri(1, RT_UPDATE_STRATEGY, RT_AUTOMATIC);
-    frame_with_far(); /* the first build */
-    const struct scene_object *o = scene_objects_lookup(&ctx->scene.objects, 1);
-    CHECK(o != NULL && o->accel != NULL);
-    *build_ms = o->accel->build_ms;
-    /* Unchanged vertices: a refit that loses nothing, after which the
-     * rays reaching the grid are counted. */
-    rtUpdateVertices(1, RT_VERTEX_ARRAY, 0, (GRID + 1) * (GRID + 1), RT_FLOAT, 0, positions);
-    ctx->scene.ms_per_test = 0.0;
-    frame_with_far();
-    *pixels = grid_pixels();
-    RTint rebuilds = object_int(RT_OBJECT_REBUILDS);
-    grid(0.2f, 1);
-    rtUpdateVertices(1, RT_VERTEX_ARRAY, 0, (GRID + 1) * (GRID + 1), RT_FLOAT, 0, positions);
-    ctx->scene.ms_per_test = rate;
-    frame_with_far();
-    int rebuilt = object_int(RT_OBJECT_REBUILDS) - rebuilds;
-    *delta_sah = o->accel->sah_cost - o->accel->built_sah_cost;
-    CHECK_INT(rtGetError(), RT_NO_ERROR);
-    rtMakeCurrent(NULL);
-    rtDestroyContext(c);
-    return rebuilt;
-}
-
-/* The rays the rule expects to reach the object are the rays that
- * reached it in the last frame (Yoon, Curtis and Manocha (2007) sec.
- * 4.1.1), not the SAH's share of the frame's rays by area: with the grid
- * filling a large part of the view but a ten-thousandth of the scene's
- * box, a time per step at which the counted rays lose 20 builds' worth of
- * traversal must rebuild.  (The area estimate saw 1/200 of a build and
- * refit; on the BART museum it undercounted the animated object's rays
- * thirtyfold, docs/performance.md.)  Not a timing test: the rate is set
- * from the build time this very context measured. */
-static void check_rays_counted(void)
-{
-    tu_section("rays reaching the object counted");
-    double delta_sah = 0.0, build_ms = 0.0;
-    int pixels = 0;
-    /* A probe: the same updates, refit, give the SAH loss and the grid's
-     * pixels (both deterministic). */
-    CHECK_INT(counted_case(0.0, &delta_sah, &build_ms, &pixels), 0);
-    CHECKF(delta_sah > 1.0 && pixels > SIZE * SIZE / 8, "SAH loss %g, %d grid pixels",
-           delta_sah, pixels);
-    if (delta_sah <= 1.0 || pixels <= 0)
-        return;
-    /* The rate is taken from the second context's own first build time,
-     * read inside counted_case before the update: set it afterwards. */
-    double probe_build_ms = build_ms;
-    int again_pixels = 0;
-    double again_delta = 0.0;
-    double rate = 20.0 * probe_build_ms / ((double)pixels * delta_sah);
-    int rebuilt = counted_case(rate, &again_delta, &build_ms, &again_pixels);
-    /* The build time of this context may differ from the probe's; the
-     * factor 20 covers a 20-fold difference. */
-    CHECKF(rebuilt == 1 || build_ms > 20.0 * probe_build_ms,
-           "rate %g ms/step, %d grid pixels, SAH loss %g, build %g ms (probe %g): %d rebuilds "
-           "(expected 1)",
-           rate, pixels, delta_sah, build_ms, probe_build_ms, rebuilt);
-    CHECK_INT(again_pixels, pixels);
-}
-
-/* ------------------------------------------------ preempted by another process */
-
 /* The test hook of struct scene_preempt_hook: the calling thread sleeps,
  * as it waits while another process holds its core on a loaded machine
  * (wall time passes, the thread's CPU time does not). */
@@ -294,12 +215,15 @@ static void preempt_sleep(void *user)
         ;
 }
 
-/* check_rays_counted's context with the first build preempted for
- * `preempt_ms` (0: not at all).  Returns the rebuilds of the degrading
- * update; *cost_ms is the first build's cost as the rule weighs it
- * (build_cost_ms), *wall_ms its RT_OBJECT_BUILD_TIME. */
-static int preempted_case(double rate, double preempt_ms, double *delta_sah, double *cost_ms,
-                          double *wall_ms, int *pixels)
+/* One context of the rule's cases: the first build, preempted for
+ * `preempt_ms` (0: not at all), an unchanged update (counting starts),
+ * then the degrading update at `rate` ms per step (rate 0: whatever the
+ * rule's inputs, refit).  Returns the rebuilds of that last update;
+ * *delta_sah and *pixels describe it, *cost_ms is the first build's cost
+ * as the rule weighs it (build_cost_ms), *wall_ms its
+ * RT_OBJECT_BUILD_TIME. */
+static int update_case(double rate, double preempt_ms, double *delta_sah, double *cost_ms,
+                       double *wall_ms, int *pixels)
 {
     RTcontext c = rtCreateContext("threads=1");
     CHECK(c != NULL && rtMakeCurrent(c));
@@ -343,6 +267,45 @@ static int preempted_case(double rate, double preempt_ms, double *delta_sah, dou
     return rebuilt;
 }
 
+/* The rays the rule expects to reach the object are the rays that
+ * reached it in the last frame (Yoon, Curtis and Manocha (2007) sec.
+ * 4.1.1), not the SAH's share of the frame's rays by area: with the grid
+ * filling a large part of the view but a ten-thousandth of the scene's
+ * box, a time per step at which the counted rays lose 20 builds' worth of
+ * traversal must rebuild.  (The area estimate saw 1/200 of a build and
+ * refit; on the BART museum it undercounted the animated object's rays
+ * thirtyfold, docs/performance.md.)  Not a timing test: the rate is set
+ * from the build time this very context measured. */
+static void check_rays_counted(void)
+{
+    tu_section("rays reaching the object counted");
+    double delta_sah = 0.0, build_ms = 0.0, cost_ms = 0.0; /* cost_ms: not used here */
+    int pixels = 0;
+    /* A probe: the same updates, refit, give the SAH loss and the grid's
+     * pixels (both deterministic). */
+    CHECK_INT(update_case(0.0, 0.0, &delta_sah, &cost_ms, &build_ms, &pixels), 0);
+    CHECKF(delta_sah > 1.0 && pixels > SIZE * SIZE / 8, "SAH loss %g, %d grid pixels",
+           delta_sah, pixels);
+    if (delta_sah <= 1.0 || pixels <= 0)
+        return;
+    /* The rate is taken from the second context's own first build time,
+     * read inside update_case before the update: set it afterwards. */
+    double probe_build_ms = build_ms;
+    int again_pixels = 0;
+    double again_delta = 0.0;
+    double rate = 20.0 * probe_build_ms / ((double)pixels * delta_sah);
+    int rebuilt = update_case(rate, 0.0, &again_delta, &cost_ms, &build_ms, &again_pixels);
+    /* The build time of this context may differ from the probe's; the
+     * factor 20 covers a 20-fold difference. */
+    CHECKF(rebuilt == 1 || build_ms > 20.0 * probe_build_ms,
+           "rate %g ms/step, %d grid pixels, SAH loss %g, build %g ms (probe %g): %d rebuilds "
+           "(expected 1)",
+           rate, pixels, delta_sah, build_ms, probe_build_ms, rebuilt);
+    CHECK_INT(again_pixels, pixels);
+}
+
+/* ------------------------------------------------ preempted by another process */
+
 /* A build that lost time slices to another process costs the rule what
  * it cost in work, not what the wall clock saw: the degrading update
  * whose counted rays lose 20 unpreempted builds' worth of traversal must
@@ -357,7 +320,7 @@ static void check_preempted_build(void)
     tu_section("a preempted build costs its work, not the wall clock");
     double delta_sah = 0.0, cost_ms = 0.0, wall_ms = 0.0;
     int pixels = 0;
-    CHECK_INT(preempted_case(0.0, 0.0, &delta_sah, &cost_ms, &wall_ms, &pixels), 0);
+    CHECK_INT(update_case(0.0, 0.0, &delta_sah, &cost_ms, &wall_ms, &pixels), 0);
     CHECKF(delta_sah > 1.0 && pixels > SIZE * SIZE / 8 && cost_ms > 0.0,
            "SAH loss %g, %d grid pixels, build cost %g ms", delta_sah, pixels, cost_ms);
     if (delta_sah <= 1.0 || pixels <= 0 || cost_ms <= 0.0)
@@ -369,7 +332,7 @@ static void check_preempted_build(void)
     double preempt_ms = fmax(50.0, 2.0 * loss_max);
     double again_sah = 0.0, again_cost = 0.0, again_wall = 0.0;
     int again_pixels = 0;
-    int rebuilt = preempted_case(rate, preempt_ms, &again_sah, &again_cost, &again_wall,
+    int rebuilt = update_case(rate, preempt_ms, &again_sah, &again_cost, &again_wall,
                                  &again_pixels);
     /* The wall clock saw the preemption (it cannot be shorter than the
      * sleep); the rule's cost must not have. */
