@@ -79,20 +79,48 @@ static RTint object_int(RTenum pname)
     return v;
 }
 
-/* rtRenderFrame measures the time per traversal step of the frame it
- * traced, from that frame's own tracing time. */
-static void check_rate_is_measured(void)
+/* A context of one thread made current (into *c), the camera of every
+ * check and the flat grid defined as object 1.  Returns its state. */
+static struct rt_context *open_grid_context(RTcontext *c)
 {
-    tu_section("rate measured by rtRenderFrame");
-    RTcontext c = rtCreateContext("threads=1");
-    CHECK(c != NULL && rtMakeCurrent(c));
-    struct rt_context *ctx = rt_current_context();
+    *c = rtCreateContext("threads=1");
+    CHECK(*c != NULL && rtMakeCurrent(*c));
     rtViewport(0, 0, SIZE, SIZE);
     rtMatrixMode(RT_PROJECTION);
     rtLoadIdentity();
     rtFrustum(-0.5, 0.5, -0.5, 0.5, 1.0, 100.0);
     grid(0.0f, 0);
     define(1);
+    return rt_current_context();
+}
+
+/* Ends a check's context: no error pending, then destroyed. */
+static void close_context(RTcontext c)
+{
+    CHECK_INT(rtGetError(), RT_NO_ERROR);
+    rtMakeCurrent(NULL);
+    rtDestroyContext(c);
+}
+
+/* The last frame's statistics the rate is checked against (each left as
+ * it was when its query fails). */
+static void frame_stats(RTint *nodes, RTint *tris, RTfloat *render_ms, RTfloat *update_ms,
+                        RTfloat *toplevel_ms)
+{
+    rtGetIntegerv(RT_STAT_NODE_TESTS, nodes);
+    rtGetIntegerv(RT_STAT_TRIANGLE_TESTS, tris);
+    rtGetFloatv(RT_STAT_RENDER_TIME, render_ms);
+    rtGetFloatv(RT_STAT_UPDATE_TIME, update_ms);
+    rtGetFloatv(RT_STAT_TOPLEVEL_TIME, toplevel_ms);
+}
+
+/* rtRenderFrame measures the time per traversal step of the frame it
+ * traced, from that frame's own tracing time. */
+static void check_rate_is_measured(void)
+{
+    tu_section("rate measured by rtRenderFrame");
+    RTcontext c;
+    struct rt_context *ctx = open_grid_context(&c);
     frame(); /* the lazy build */
     const double default_rate = 1.0 / 64.0; /* unusable as a measured rate: 16 us per test */
     ctx->scene.ms_per_test = default_rate;
@@ -100,11 +128,7 @@ static void check_rate_is_measured(void)
         frame();
         RTint nodes = 0, tris = 0;
         RTfloat render_ms = 0.0f, update_ms = 1.0f, toplevel_ms = 1.0f;
-        rtGetIntegerv(RT_STAT_NODE_TESTS, &nodes);
-        rtGetIntegerv(RT_STAT_TRIANGLE_TESTS, &tris);
-        rtGetFloatv(RT_STAT_RENDER_TIME, &render_ms);
-        rtGetFloatv(RT_STAT_UPDATE_TIME, &update_ms);
-        rtGetFloatv(RT_STAT_TOPLEVEL_TIME, &toplevel_ms);
+        frame_stats(&nodes, &tris, &render_ms, &update_ms, &toplevel_ms);
         double tests = (double)nodes + (double)tris;
         double rate = ctx->scene.ms_per_test;
         CHECKF(tests > 10000.0, "frame %d: %.0f traversal steps", f, tests);
@@ -119,9 +143,7 @@ static void check_rate_is_measured(void)
                tests, rate, (double)render_ms, (double)update_ms, (double)toplevel_ms);
         ctx->scene.ms_per_test = default_rate;
     }
-    CHECK_INT(rtGetError(), RT_NO_ERROR);
-    rtMakeCurrent(NULL);
-    rtDestroyContext(c);
+    close_context(c);
 }
 
 /* The rate decides: the same degrading update rebuilds when a traversal
@@ -132,15 +154,8 @@ static void check_rate_decides(void)
     const double rates[2] = {1e-12, 1.0};
     const RTint expect_rebuild[2] = {0, 1};
     for (int k = 0; k < 2; k++) {
-        RTcontext c = rtCreateContext("threads=1");
-        CHECK(c != NULL && rtMakeCurrent(c));
-        struct rt_context *ctx = rt_current_context();
-        rtViewport(0, 0, SIZE, SIZE);
-        rtMatrixMode(RT_PROJECTION);
-        rtLoadIdentity();
-        rtFrustum(-0.5, 0.5, -0.5, 0.5, 1.0, 100.0);
-        grid(0.0f, 0);
-        define(1);
+        RTcontext c;
+        struct rt_context *ctx = open_grid_context(&c);
         rtObjectParameteri(1, RT_UPDATE_STRATEGY, RT_AUTOMATIC);
         frame(); /* the first build */
         RTint rebuilds = object_int(RT_OBJECT_REBUILDS);
@@ -154,9 +169,7 @@ static void check_rate_decides(void)
                "ms_per_test %g: %d rebuilds (expected %d)", rates[k],
                object_int(RT_OBJECT_REBUILDS) - rebuilds, expect_rebuild[k]);
         CHECK_INT(object_int(RT_UPDATE_STRATEGY), expect_rebuild[k] ? RT_REBUILD : RT_REFIT);
-        CHECK_INT(rtGetError(), RT_NO_ERROR);
-        rtMakeCurrent(NULL);
-        rtDestroyContext(c);
+        close_context(c);
     }
 }
 
@@ -225,16 +238,9 @@ static void preempt_sleep(void *user)
 static int update_case(double rate, double preempt_ms, double *delta_sah, double *cost_ms,
                        double *wall_ms, int *pixels)
 {
-    RTcontext c = rtCreateContext("threads=1");
-    CHECK(c != NULL && rtMakeCurrent(c));
-    struct rt_context *ctx = rt_current_context();
+    RTcontext c;
+    struct rt_context *ctx = open_grid_context(&c);
     struct preempt p = {preempt_ms, 0};
-    rtViewport(0, 0, SIZE, SIZE);
-    rtMatrixMode(RT_PROJECTION);
-    rtLoadIdentity();
-    rtFrustum(-0.5, 0.5, -0.5, 0.5, 1.0, 100.0);
-    grid(0.0f, 0);
-    define(1);
     define_far_triangle();
     rtObjectParameteri(1, RT_UPDATE_STRATEGY, RT_AUTOMATIC);
     /* The grid's first build (and the far triangle's: the hook runs in
@@ -261,9 +267,7 @@ static int update_case(double rate, double preempt_ms, double *delta_sah, double
     frame_with_far();
     int rebuilt = object_int(RT_OBJECT_REBUILDS) - rebuilds;
     *delta_sah = o->accel->sah_cost - o->accel->built_sah_cost;
-    CHECK_INT(rtGetError(), RT_NO_ERROR);
-    rtMakeCurrent(NULL);
-    rtDestroyContext(c);
+    close_context(c);
     return rebuilt;
 }
 
@@ -353,15 +357,8 @@ static void check_preempted_build(void)
 static void check_preempted_frame(void)
 {
     tu_section("a preempted frame does not raise the time per step");
-    RTcontext c = rtCreateContext("threads=1");
-    CHECK(c != NULL && rtMakeCurrent(c));
-    struct rt_context *ctx = rt_current_context();
-    rtViewport(0, 0, SIZE, SIZE);
-    rtMatrixMode(RT_PROJECTION);
-    rtLoadIdentity();
-    rtFrustum(-0.5, 0.5, -0.5, 0.5, 1.0, 100.0);
-    grid(0.0f, 0);
-    define(1);
+    RTcontext c;
+    struct rt_context *ctx = open_grid_context(&c);
     frame(); /* the lazy build */
     struct preempt p = {50.0, 0};
     ctx->scene.preempt.fn = preempt_sleep;
@@ -371,11 +368,7 @@ static void check_preempted_frame(void)
     CHECK_INT(p.calls, 1);
     RTint nodes = 0, tris = 0;
     RTfloat render_ms = 0.0f, update_ms = 0.0f, toplevel_ms = 0.0f;
-    rtGetIntegerv(RT_STAT_NODE_TESTS, &nodes);
-    rtGetIntegerv(RT_STAT_TRIANGLE_TESTS, &tris);
-    rtGetFloatv(RT_STAT_RENDER_TIME, &render_ms);
-    rtGetFloatv(RT_STAT_UPDATE_TIME, &update_ms);
-    rtGetFloatv(RT_STAT_TOPLEVEL_TIME, &toplevel_ms);
+    frame_stats(&nodes, &tris, &render_ms, &update_ms, &toplevel_ms);
     double tests = (double)nodes + (double)tris;
     double traced = tests * ctx->scene.ms_per_test;
     CHECKF(render_ms >= 50.0f, "render %g ms, preempted 50 ms", (double)render_ms);
@@ -384,9 +377,7 @@ static void check_preempted_frame(void)
            "%.0f steps x %g ms = %g ms > render %g - update %g - top level %g - preempted %g ms",
            tests, ctx->scene.ms_per_test, traced, (double)render_ms, (double)update_ms,
            (double)toplevel_ms, p.ms);
-    CHECK_INT(rtGetError(), RT_NO_ERROR);
-    rtMakeCurrent(NULL);
-    rtDestroyContext(c);
+    close_context(c);
 }
 
 int main(void)
