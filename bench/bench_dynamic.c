@@ -51,7 +51,7 @@
 #include "bench.h"
 
 #ifdef RT_HAVE_EMBREE
-#include <embree3/rtcore.h>
+#include "bench_embree.h"
 #endif
 
 #define DYN_CONFIG "threads=2 build_threads=1"
@@ -623,21 +623,7 @@ static void dyn_embree_closest(void *ctx, const RTray *rays, uint32_t begin, uin
     for (uint32_t i = begin; i < end; i++) {
         const RTray *r = &rays[i];
         struct RTCRayHit rh;
-        rh.ray.org_x = r->org[0];
-        rh.ray.org_y = r->org[1];
-        rh.ray.org_z = r->org[2];
-        rh.ray.tnear = r->tmin;
-        rh.ray.dir_x = r->dir[0];
-        rh.ray.dir_y = r->dir[1];
-        rh.ray.dir_z = r->dir[2];
-        rh.ray.time = 0.0f;
-        rh.ray.tfar = r->tmax;
-        rh.ray.mask = 0xFFFFFFFFu;
-        rh.ray.id = 0;
-        rh.ray.flags = 0;
-        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-        rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
-        rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+        bench_embree_ray_hit(r, &rh);
         rtcIntersect1(scene, &ic, &rh);
         hits[i].t = rh.hit.geomID != RTC_INVALID_GEOMETRY_ID ? rh.ray.tfar : INFINITY;
         hits[i].prim = rh.hit.geomID != RTC_INVALID_GEOMETRY_ID ? rh.hit.primID : BENCH_MISS;
@@ -702,12 +688,6 @@ out:
         rtcReleaseScene(scene);
     free(mine);
     return rc;
-}
-
-static void dyn_embree_error(void *user, enum RTCError code, const char *message)
-{
-    (void)user;
-    report_progress("rtbench: Embree error %d: %s\n", (int)code, message ? message : "");
 }
 #endif
 
@@ -957,7 +937,7 @@ static int strategies_table(const struct bench_options *opts)
     s.device = rtcNewDevice("threads=2");
     if (!s.device)
         goto out;
-    rtcSetDeviceErrorFunction(s.device, dyn_embree_error, NULL);
+    rtcSetDeviceErrorFunction(s.device, bench_embree_error, NULL);
 #endif
     report_printf("\n### Update strategies over animations (Wald, Ize and Parker (2008) fig. 3, Yoon, Curtis and Manocha (2007) "
                   "table 2)\n\n");

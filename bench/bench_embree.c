@@ -21,13 +21,13 @@
  * (hit/miss and t within BENCH_T_TOLERANCE): a comparison of speeds is
  * only meaningful when the answers agree.
  */
-#include <embree3/rtcore.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "base/timer.h"
 #include "bench.h"
+#include "bench_embree.h"
 
 /* Embree's default (non-robust) triangle test may legitimately miss or
  * hit a ray that grazes a shared edge where our watertight test does the
@@ -42,12 +42,6 @@ static const char *const quality_names[QUALITIES] = {"MEDIUM", "HIGH"};
 const char *bench_embree_version(void)
 {
     return RTC_VERSION_STRING;
-}
-
-static void embree_error(void *user, enum RTCError code, const char *message)
-{
-    (void)user;
-    report_progress("rtbench: Embree error %d: %s\n", (int)code, message ? message : "");
 }
 
 /* A committed scene over the mesh; *commit_ms gets rtcCommitScene's time.
@@ -101,21 +95,7 @@ static void embree_kernel_closest(void *ctx, const RTray *rays, uint32_t begin, 
     for (uint32_t i = begin; i < end; i++) {
         const RTray *r = &rays[i];
         struct RTCRayHit rh;
-        rh.ray.org_x = r->org[0];
-        rh.ray.org_y = r->org[1];
-        rh.ray.org_z = r->org[2];
-        rh.ray.tnear = r->tmin;
-        rh.ray.dir_x = r->dir[0];
-        rh.ray.dir_y = r->dir[1];
-        rh.ray.dir_z = r->dir[2];
-        rh.ray.time = 0.0f;
-        rh.ray.tfar = r->tmax;
-        rh.ray.mask = 0xFFFFFFFFu;
-        rh.ray.id = 0;
-        rh.ray.flags = 0;
-        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-        rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
-        rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+        bench_embree_ray_hit(r, &rh);
         rtcIntersect1(scene, &ic, &rh);
         if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
             hits[i].t = rh.ray.tfar;
@@ -136,18 +116,7 @@ static void embree_kernel_any(void *ctx, const RTray *rays, uint32_t begin, uint
     for (uint32_t i = begin; i < end; i++) {
         const RTray *r = &rays[i];
         struct RTCRay ray;
-        ray.org_x = r->org[0];
-        ray.org_y = r->org[1];
-        ray.org_z = r->org[2];
-        ray.tnear = r->tmin;
-        ray.dir_x = r->dir[0];
-        ray.dir_y = r->dir[1];
-        ray.dir_z = r->dir[2];
-        ray.time = 0.0f;
-        ray.tfar = r->tmax;
-        ray.mask = 0xFFFFFFFFu;
-        ray.id = 0;
-        ray.flags = 0;
+        bench_embree_ray(r, &ray);
         rtcOccluded1(scene, &ic, &ray);
         /* Embree marks an occluded ray by setting tfar to -inf. */
         int occluded = ray.tfar == -INFINITY;
@@ -482,7 +451,7 @@ int bench_embree_section(const struct bench_options *opts, struct bench_mesh *me
                       (int)rtcGetDeviceError(NULL));
         return -1;
     }
-    rtcSetDeviceErrorFunction(device, embree_error, NULL);
+    rtcSetDeviceErrorFunction(device, bench_embree_error, NULL);
     int failed = 0;
 
     report_printf("\n## Against Embree %s\n\n", RTC_VERSION_STRING);
@@ -601,7 +570,7 @@ void *bench_embree_packets_new(const struct bench_mesh *mesh)
         free(e);
         return NULL;
     }
-    rtcSetDeviceErrorFunction(e->device, embree_error, NULL);
+    rtcSetDeviceErrorFunction(e->device, bench_embree_error, NULL);
     e->scene = embree_scene(e->device, mesh, RTC_BUILD_QUALITY_MEDIUM, &ms);
     if (!e->scene) {
         rtcReleaseDevice(e->device);

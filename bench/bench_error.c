@@ -40,7 +40,7 @@
 #include "bench.h"
 
 #ifdef RT_HAVE_EMBREE
-#include <embree3/rtcore.h>
+#include "bench_embree.h"
 #endif
 
 #ifndef M_PI
@@ -447,21 +447,7 @@ static int err_trace(const struct err_target *g, const RTray *r, struct trace_hi
         struct RTCIntersectContext ic;
         rtcInitIntersectContext(&ic);
         struct RTCRayHit rh;
-        rh.ray.org_x = r->org[0];
-        rh.ray.org_y = r->org[1];
-        rh.ray.org_z = r->org[2];
-        rh.ray.tnear = r->tmin;
-        rh.ray.dir_x = r->dir[0];
-        rh.ray.dir_y = r->dir[1];
-        rh.ray.dir_z = r->dir[2];
-        rh.ray.time = 0.0f;
-        rh.ray.tfar = r->tmax;
-        rh.ray.mask = 0xFFFFFFFFu;
-        rh.ray.id = 0;
-        rh.ray.flags = 0;
-        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-        rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
-        rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+        bench_embree_ray_hit(r, &rh);
         rtcIntersect1(g->embree, &ic, &rh);
         if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID)
             return 0;
@@ -540,12 +526,6 @@ static int kernel_list(struct err_kernel *list, const struct bench_accel *probe)
 }
 
 #ifdef RT_HAVE_EMBREE
-static void err_embree_error(void *user, enum RTCError code, const char *message)
-{
-    (void)user;
-    report_progress("rtbench: Embree error %d: %s\n", (int)code, message ? message : "");
-}
-
 static RTCScene err_embree_scene(RTCDevice device, const struct bench_mesh *m, int robust)
 {
     RTCScene scene = rtcNewScene(device);
@@ -660,7 +640,7 @@ int bench_error_section(const struct bench_options *opts)
     RTCDevice device = rtcNewDevice("threads=1");
     if (!device)
         return -1;
-    rtcSetDeviceErrorFunction(device, err_embree_error, NULL);
+    rtcSetDeviceErrorFunction(device, bench_embree_error, NULL);
 #endif
     struct err_workload w[WORKLOADS];
     memset(w, 0, sizeof(w));

@@ -382,6 +382,27 @@ static void every_mode(void)
     rtDisableClientState(RT_VERTEX_ARRAY);
 }
 
+/* ARR as one rtDrawArrays(RT_TRIANGLE_FAN, 0, NV) of the vertex array
+ * (size, type, stride, ptr), under a scale of 1/2 inside the list when
+ * `halve` (integer positions stored doubled), compared with REF. */
+static void check_fan(RTint size, RTenum type, RTsizei stride, const void *ptr, int halve,
+                      const char *what)
+{
+    rtVertexPointer(size, type, stride, ptr);
+    rtNewObject(ARR);
+    if (halve) {
+        rtPushMatrix();
+        rtScalef(0.5f, 0.5f, 0.5f);
+    }
+    rtDrawArrays(RT_TRIANGLE_FAN, 0, NV);
+    if (halve)
+        rtPopMatrix();
+    rtEndObject();
+    if (!CHECK_NO_ERR())
+        fprintf(stderr, "    in: %s\n", what);
+    compare_with_reference(what);
+}
+
 static void types_sizes_strides(void)
 {
     int k;
@@ -402,18 +423,8 @@ static void types_sizes_strides(void)
             i4[k][2] = (RTint)(2 * ring[k][2]);
             i4[k][3] = 2;
         }
-        rtVertexPointer(4, RT_SHORT, 0, s4);
-        rtNewObject(ARR);
-        rtDrawArrays(RT_TRIANGLE_FAN, 0, NV);
-        rtEndObject();
-        CHECK_NO_ERR();
-        compare_with_reference("RT_SHORT size 4, w = 2");
-        rtVertexPointer(4, RT_INT, 0, i4);
-        rtNewObject(ARR);
-        rtDrawArrays(RT_TRIANGLE_FAN, 0, NV);
-        rtEndObject();
-        CHECK_NO_ERR();
-        compare_with_reference("RT_INT size 4, w = 2");
+        check_fan(4, RT_SHORT, 0, s4, 0, "RT_SHORT size 4, w = 2");
+        check_fan(4, RT_INT, 0, i4, 0, "RT_INT size 4, w = 2");
     }
     /* RT_FLOAT and RT_DOUBLE, size 2 (z = 0), tightly packed. */
     {
@@ -425,18 +436,8 @@ static void types_sizes_strides(void)
             d2[k][0] = ring[k][0];
             d2[k][1] = ring[k][1];
         }
-        rtVertexPointer(2, RT_FLOAT, 0, f2);
-        rtNewObject(ARR);
-        rtDrawArrays(RT_TRIANGLE_FAN, 0, NV);
-        rtEndObject();
-        CHECK_NO_ERR();
-        compare_with_reference("RT_FLOAT size 2");
-        rtVertexPointer(2, RT_DOUBLE, 0, d2);
-        rtNewObject(ARR);
-        rtDrawArrays(RT_TRIANGLE_FAN, 0, NV);
-        rtEndObject();
-        CHECK_NO_ERR();
-        compare_with_reference("RT_DOUBLE size 2");
+        check_fan(2, RT_FLOAT, 0, f2, 0, "RT_FLOAT size 2");
+        check_fan(2, RT_DOUBLE, 0, d2, 0, "RT_DOUBLE size 2");
     }
     /* Interleaved records: stride in bytes, position not at offset 0. */
     {
@@ -477,38 +478,15 @@ static void types_sizes_strides(void)
             ri[k].xyz[2] = 0;
             ri[k].junk = -999;
         }
-        rtVertexPointer(3, RT_FLOAT, (RTsizei)sizeof rf[0], rf[0].xyz);
-        rtNewObject(ARR);
-        rtDrawArrays(RT_TRIANGLE_FAN, 0, NV);
-        rtEndObject();
-        CHECK_NO_ERR();
-        compare_with_reference("RT_FLOAT size 3, interleaved stride");
-        rtVertexPointer(3, RT_DOUBLE, (RTsizei)sizeof rd[0], rd);
-        rtNewObject(ARR);
-        rtDrawArrays(RT_TRIANGLE_FAN, 0, NV);
-        rtEndObject();
-        CHECK_NO_ERR();
-        compare_with_reference("RT_DOUBLE size 3, stride 32");
+        check_fan(3, RT_FLOAT, (RTsizei)sizeof rf[0], rf[0].xyz, 0,
+                  "RT_FLOAT size 3, interleaved stride");
+        check_fan(3, RT_DOUBLE, (RTsizei)sizeof rd[0], rd, 0, "RT_DOUBLE size 3, stride 32");
         /* Integer positions are not normalised: scale by 1/2 to compare
          * (inside the list, whose vertices its own matrix transforms). */
-        rtVertexPointer(3, RT_SHORT, (RTsizei)sizeof rs[0], rs[0].xyz);
-        rtNewObject(ARR);
-        rtPushMatrix();
-        rtScalef(0.5f, 0.5f, 0.5f);
-        rtDrawArrays(RT_TRIANGLE_FAN, 0, NV);
-        rtPopMatrix();
-        rtEndObject();
-        CHECK_NO_ERR();
-        compare_with_reference("RT_SHORT size 3, interleaved stride, under scale 1/2");
-        rtVertexPointer(3, RT_INT, (RTsizei)sizeof ri[0], ri);
-        rtNewObject(ARR);
-        rtPushMatrix();
-        rtScalef(0.5f, 0.5f, 0.5f);
-        rtDrawArrays(RT_TRIANGLE_FAN, 0, NV);
-        rtPopMatrix();
-        rtEndObject();
-        CHECK_NO_ERR();
-        compare_with_reference("RT_INT size 3, stride 16, under scale 1/2");
+        check_fan(3, RT_SHORT, (RTsizei)sizeof rs[0], rs[0].xyz, 1,
+                  "RT_SHORT size 3, interleaved stride, under scale 1/2");
+        check_fan(3, RT_INT, (RTsizei)sizeof ri[0], ri, 1,
+                  "RT_INT size 3, stride 16, under scale 1/2");
     }
     /* The modelview at the call transforms array vertices. */
     {

@@ -335,6 +335,52 @@ static void render_object(RTuint name)
     CHECK_NO_ERR();
 }
 
+/* A vertex of the shade-model cases: its colour, then its position in
+ * the plane z = -5. */
+struct coloured_vertex {
+    float rgb[3];
+    float x, y;
+};
+
+/* The big triangle and the square of the cases: red, green, blue (and
+ * yellow) counter-clockwise from the lower left corner. */
+static const struct coloured_vertex triangle[3] = {
+    {{1, 0, 0}, -0.9f, -0.9f}, {{0, 1, 0}, 0.9f, -0.9f}, {{0, 0, 1}, -0.9f, 0.9f}};
+static const struct coloured_vertex quad[4] = {{{1, 0, 0}, -0.9f, -0.9f},
+                                               {{0, 1, 0}, 0.9f, -0.9f},
+                                               {{0, 0, 1}, 0.9f, 0.9f},
+                                               {{1, 1, 0}, -0.9f, 0.9f}};
+/* The square as a strip: blue provokes triangle 0, white triangle 1. */
+static const struct coloured_vertex strip[4] = {{{1, 0, 0}, -0.9f, -0.9f},
+                                                {{0, 1, 0}, -0.9f, 0.9f},
+                                                {{0, 0, 1}, 0.9f, -0.9f},
+                                                {{1, 1, 1}, 0.9f, 0.9f}};
+
+/* The square's corners at depth z, counter-clockwise from the lower
+ * left, without attributes: inside an rtBegin(RT_QUADS). */
+static void square_vertices(float z)
+{
+    rtVertex3f(-0.9f, -0.9f, z);
+    rtVertex3f(0.9f, -0.9f, z);
+    rtVertex3f(0.9f, 0.9f, z);
+    rtVertex3f(-0.9f, 0.9f, z);
+}
+
+/* OBJ as one rtBegin(mode) .. rtEnd() of v[0 .. n), each vertex after its
+ * rtColor3f, rendered into px. */
+static void render_coloured(RTenum mode, const struct coloured_vertex *v, int n)
+{
+    rtNewObject(OBJ);
+    rtBegin(mode);
+    for (int i = 0; i < n; i++) {
+        rtColor3f(v[i].rgb[0], v[i].rgb[1], v[i].rgb[2]);
+        rtVertex3f(v[i].x, v[i].y, -5);
+    }
+    rtEnd();
+    rtEndObject();
+    render_object(OBJ);
+}
+
 static void shade_model(void)
 {
     RTint v = -1;
@@ -365,32 +411,12 @@ static void shade_model(void)
     setup_render();
     /* Smooth: colours interpolated with the barycentrics. */
     rtShadeModel(RT_SMOOTH);
-    rtNewObject(OBJ);
-    rtBegin(RT_TRIANGLES);
-    rtColor3f(1, 0, 0);
-    rtVertex3f(-0.9f, -0.9f, -5);
-    rtColor3f(0, 1, 0);
-    rtVertex3f(0.9f, -0.9f, -5);
-    rtColor3f(0, 0, 1);
-    rtVertex3f(-0.9f, 0.9f, -5);
-    rtEnd();
-    rtEndObject();
-    render_object(OBJ);
+    render_coloured(RT_TRIANGLES, triangle, 3);
     CHECK_RGB(pixel_at(x, y), w0, w1, w2, 0.01f);
 
     /* Flat, RT_TRIANGLES: the last vertex provokes. */
     rtShadeModel(RT_FLAT);
-    rtNewObject(OBJ);
-    rtBegin(RT_TRIANGLES);
-    rtColor3f(1, 0, 0);
-    rtVertex3f(-0.9f, -0.9f, -5);
-    rtColor3f(0, 1, 0);
-    rtVertex3f(0.9f, -0.9f, -5);
-    rtColor3f(0, 0, 1);
-    rtVertex3f(-0.9f, 0.9f, -5);
-    rtEnd();
-    rtEndObject();
-    render_object(OBJ);
+    render_coloured(RT_TRIANGLES, triangle, 3);
     CHECK_RGB(pixel_at(x, y), 0, 0, 1, 0.01f);
     /* The object sets no shade model of its own: as a GL list's geometry,
      * it takes the one current at the call (until 25814ff the one at the
@@ -401,53 +427,17 @@ static void shade_model(void)
     rtShadeModel(RT_FLAT);
 
     /* Flat, RT_POLYGON: the first vertex provokes. */
-    rtNewObject(OBJ);
-    rtBegin(RT_POLYGON);
-    rtColor3f(1, 0, 0);
-    rtVertex3f(-0.9f, -0.9f, -5);
-    rtColor3f(0, 1, 0);
-    rtVertex3f(0.9f, -0.9f, -5);
-    rtColor3f(0, 0, 1);
-    rtVertex3f(0.9f, 0.9f, -5);
-    rtColor3f(1, 1, 0);
-    rtVertex3f(-0.9f, 0.9f, -5);
-    rtEnd();
-    rtEndObject();
-    render_object(OBJ);
+    render_coloured(RT_POLYGON, quad, 4);
     CHECK_RGB(pixel_at(0.5f, -0.6f), 1, 0, 0, 0.01f);
     CHECK_RGB(pixel_at(-0.6f, 0.5f), 1, 0, 0, 0.01f);
 
     /* Flat, RT_QUADS: the quad's last vertex, for both triangles. */
-    rtNewObject(OBJ);
-    rtBegin(RT_QUADS);
-    rtColor3f(1, 0, 0);
-    rtVertex3f(-0.9f, -0.9f, -5);
-    rtColor3f(0, 1, 0);
-    rtVertex3f(0.9f, -0.9f, -5);
-    rtColor3f(0, 0, 1);
-    rtVertex3f(0.9f, 0.9f, -5);
-    rtColor3f(1, 1, 0);
-    rtVertex3f(-0.9f, 0.9f, -5);
-    rtEnd();
-    rtEndObject();
-    render_object(OBJ);
+    render_coloured(RT_QUADS, quad, 4);
     CHECK_RGB(pixel_at(0.5f, -0.6f), 1, 1, 0, 0.01f);
     CHECK_RGB(pixel_at(-0.6f, 0.5f), 1, 1, 0, 0.01f);
 
     /* Flat, RT_TRIANGLE_STRIP: the last vertex of each triangle. */
-    rtNewObject(OBJ);
-    rtBegin(RT_TRIANGLE_STRIP);
-    rtColor3f(1, 0, 0);
-    rtVertex3f(-0.9f, -0.9f, -5);
-    rtColor3f(0, 1, 0);
-    rtVertex3f(-0.9f, 0.9f, -5);
-    rtColor3f(0, 0, 1);
-    rtVertex3f(0.9f, -0.9f, -5); /* provokes triangle 0 */
-    rtColor3f(1, 1, 1);
-    rtVertex3f(0.9f, 0.9f, -5); /* provokes triangle 1 */
-    rtEnd();
-    rtEndObject();
-    render_object(OBJ);
+    render_coloured(RT_TRIANGLE_STRIP, strip, 4);
     CHECK_RGB(pixel_at(-0.6f, -0.6f), 0, 0, 1, 0.01f);
     CHECK_RGB(pixel_at(0.6f, 0.6f), 1, 1, 1, 0.01f);
     rtShadeModel(RT_SMOOTH);
@@ -499,10 +489,7 @@ static void attributes(void)
     CHECK_ERR(RT_INVALID_VALUE);
     rtNewObject(OBJ);
     rtBegin(RT_QUADS);
-    rtVertex3f(-0.9f, -0.9f, -5);
-    rtVertex3f(0.9f, -0.9f, -5);
-    rtVertex3f(0.9f, 0.9f, -5);
-    rtVertex3f(-0.9f, 0.9f, -5);
+    square_vertices(-5.0f);
     rtEnd();
     rtEndObject();
     render_object(OBJ);
@@ -514,10 +501,7 @@ static void attributes(void)
     rtNewObject(OBJ);
     rtNormal3fv(n45);
     rtBegin(RT_QUADS);
-    rtVertex3f(-0.9f, -0.9f, -5);
-    rtVertex3f(0.9f, -0.9f, -5);
-    rtVertex3f(0.9f, 0.9f, -5);
-    rtVertex3f(-0.9f, 0.9f, -5);
+    square_vertices(-5.0f);
     rtEnd();
     rtEndObject();
     render_object(OBJ);
@@ -529,10 +513,7 @@ static void attributes(void)
     rtScalef(1, 1, 4);
     rtNormal3fv(n45);
     rtBegin(RT_QUADS);
-    rtVertex3f(-0.9f, -0.9f, -1.25f);
-    rtVertex3f(0.9f, -0.9f, -1.25f);
-    rtVertex3f(0.9f, 0.9f, -1.25f);
-    rtVertex3f(-0.9f, 0.9f, -1.25f);
+    square_vertices(-1.25f);
     rtEnd();
     rtPopMatrix();
     rtEndObject();
@@ -559,10 +540,7 @@ static void attributes(void)
     rtBegin(RT_QUADS);
     rtNormal3fv(NULL);
     CHECK_ERR(RT_INVALID_VALUE);
-    rtVertex3f(-0.9f, -0.9f, -5);
-    rtVertex3f(0.9f, -0.9f, -5);
-    rtVertex3f(0.9f, 0.9f, -5);
-    rtVertex3f(-0.9f, 0.9f, -5);
+    square_vertices(-5.0f);
     rtEnd();
     rtEndObject();
     render_object(OBJ);

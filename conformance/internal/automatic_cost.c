@@ -79,20 +79,48 @@ static RTint object_int(RTenum pname)
     return v;
 }
 
-/* rtRenderFrame measures the time per traversal step of the frame it
- * traced, from that frame's own tracing time. */
-static void check_rate_is_measured(void)
+/* A context of one thread made current (into *c), the camera of every
+ * check and the flat grid defined as object 1.  Returns its state. */
+static struct rt_context *open_grid_context(RTcontext *c)
 {
-    tu_section("rate measured by rtRenderFrame");
-    RTcontext c = rtCreateContext("threads=1");
-    CHECK(c != NULL && rtMakeCurrent(c));
-    struct rt_context *ctx = rt_current_context();
+    *c = rtCreateContext("threads=1");
+    CHECK(*c != NULL && rtMakeCurrent(*c));
     rtViewport(0, 0, SIZE, SIZE);
     rtMatrixMode(RT_PROJECTION);
     rtLoadIdentity();
     rtFrustum(-0.5, 0.5, -0.5, 0.5, 1.0, 100.0);
     grid(0.0f, 0);
     define(1);
+    return rt_current_context();
+}
+
+/* Ends a check's context: no error pending, then destroyed. */
+static void close_context(RTcontext c)
+{
+    CHECK_INT(rtGetError(), RT_NO_ERROR);
+    rtMakeCurrent(NULL);
+    rtDestroyContext(c);
+}
+
+/* The last frame's statistics the rate is checked against (each left as
+ * it was when its query fails). */
+static void frame_stats(RTint *nodes, RTint *tris, RTfloat *render_ms, RTfloat *update_ms,
+                        RTfloat *toplevel_ms)
+{
+    rtGetIntegerv(RT_STAT_NODE_TESTS, nodes);
+    rtGetIntegerv(RT_STAT_TRIANGLE_TESTS, tris);
+    rtGetFloatv(RT_STAT_RENDER_TIME, render_ms);
+    rtGetFloatv(RT_STAT_UPDATE_TIME, update_ms);
+    rtGetFloatv(RT_STAT_TOPLEVEL_TIME, toplevel_ms);
+}
+
+/* rtRenderFrame measures the time per traversal step of the frame it
+ * traced, from that frame's own tracing time. */
+static void check_rate_is_measured(void)
+{
+    tu_section("rate measured by rtRenderFrame");
+    RTcontext c;
+    struct rt_context *ctx = open_grid_context(&c);
     frame(); /* the lazy build */
     const double default_rate = 1.0 / 64.0; /* unusable as a measured rate: 16 us per test */
     ctx->scene.ms_per_test = default_rate;
@@ -100,11 +128,7 @@ static void check_rate_is_measured(void)
         frame();
         RTint nodes = 0, tris = 0;
         RTfloat render_ms = 0.0f, update_ms = 1.0f, toplevel_ms = 1.0f;
-        rtGetIntegerv(RT_STAT_NODE_TESTS, &nodes);
-        rtGetIntegerv(RT_STAT_TRIANGLE_TESTS, &tris);
-        rtGetFloatv(RT_STAT_RENDER_TIME, &render_ms);
-        rtGetFloatv(RT_STAT_UPDATE_TIME, &update_ms);
-        rtGetFloatv(RT_STAT_TOPLEVEL_TIME, &toplevel_ms);
+        frame_stats(&nodes, &tris, &render_ms, &update_ms, &toplevel_ms);
         double tests = (double)nodes + (double)tris;
         double rate = ctx->scene.ms_per_test;
         CHECKF(tests > 10000.0, "frame %d: %.0f traversal steps", f, tests);
@@ -119,9 +143,7 @@ static void check_rate_is_measured(void)
                tests, rate, (double)render_ms, (double)update_ms, (double)toplevel_ms);
         ctx->scene.ms_per_test = default_rate;
     }
-    CHECK_INT(rtGetError(), RT_NO_ERROR);
-    rtMakeCurrent(NULL);
-    rtDestroyContext(c);
+    close_context(c);
 }
 
 /* The rate decides: the same degrading update rebuilds when a traversal
@@ -132,15 +154,8 @@ static void check_rate_decides(void)
     const double rates[2] = {1e-12, 1.0};
     const RTint expect_rebuild[2] = {0, 1};
     for (int k = 0; k < 2; k++) {
-        RTcontext c = rtCreateContext("threads=1");
-        CHECK(c != NULL && rtMakeCurrent(c));
-        struct rt_context *ctx = rt_current_context();
-        rtViewport(0, 0, SIZE, SIZE);
-        rtMatrixMode(RT_PROJECTION);
-        rtLoadIdentity();
-        rtFrustum(-0.5, 0.5, -0.5, 0.5, 1.0, 100.0);
-        grid(0.0f, 0);
-        define(1);
+        RTcontext c;
+        struct rt_context *ctx = open_grid_context(&c);
         rtObjectParameteri(1, RT_UPDATE_STRATEGY, RT_AUTOMATIC);
         frame(); /* the first build */
         RTint rebuilds = object_int(RT_OBJECT_REBUILDS);
@@ -154,9 +169,7 @@ static void check_rate_decides(void)
                "ms_per_test %g: %d rebuilds (expected %d)", rates[k],
                object_int(RT_OBJECT_REBUILDS) - rebuilds, expect_rebuild[k]);
         CHECK_INT(object_int(RT_UPDATE_STRATEGY), expect_rebuild[k] ? RT_REBUILD : RT_REFIT);
-        CHECK_INT(rtGetError(), RT_NO_ERROR);
-        rtMakeCurrent(NULL);
-        rtDestroyContext(c);
+        close_context(c);
     }
 }
 
@@ -196,85 +209,6 @@ static int grid_pixels(void)
     return n;
 }
 
-/* One context of check_rays_counted: the first build, an unchanged
- * update (counting starts), then the degrading update at `rate` ms per
- * step (rate 0: whatever the rule's inputs, refit).  Returns the rebuilds
- * of the last update; *delta_sah, *build_ms and *pixels describe it. */
-static int counted_case(double rate, double *delta_sah, double *build_ms, int *pixels)
-{
-    RTcontext c = rtCreateContext("threads=1");
-    CHECK(c != NULL && rtMakeCurrent(c));
-    struct rt_context *ctx = rt_current_context();
-    rtViewport(0, 0, SIZE, SIZE);
-    rtMatrixMode(RT_PROJECTION);
-    rtLoadIdentity();
-    rtFrustum(-0.5, 0.5, -0.5, 0.5, 1.0, 100.0);
-    grid(0.0f, 0);
-    define(1);
-    define_far_triangle();
-    rtObjectParameteri(1, RT_UPDATE_STRATEGY, RT_AUTOMATIC);
-    frame_with_far(); /* the first build */
-    const struct scene_object *o = scene_objects_lookup(&ctx->scene.objects, 1);
-    CHECK(o != NULL && o->accel != NULL);
-    *build_ms = o->accel->build_ms;
-    /* Unchanged vertices: a refit that loses nothing, after which the
-     * rays reaching the grid are counted. */
-    rtUpdateVertices(1, RT_VERTEX_ARRAY, 0, (GRID + 1) * (GRID + 1), RT_FLOAT, 0, positions);
-    ctx->scene.ms_per_test = 0.0;
-    frame_with_far();
-    *pixels = grid_pixels();
-    RTint rebuilds = object_int(RT_OBJECT_REBUILDS);
-    grid(0.2f, 1);
-    rtUpdateVertices(1, RT_VERTEX_ARRAY, 0, (GRID + 1) * (GRID + 1), RT_FLOAT, 0, positions);
-    ctx->scene.ms_per_test = rate;
-    frame_with_far();
-    int rebuilt = object_int(RT_OBJECT_REBUILDS) - rebuilds;
-    *delta_sah = o->accel->sah_cost - o->accel->built_sah_cost;
-    CHECK_INT(rtGetError(), RT_NO_ERROR);
-    rtMakeCurrent(NULL);
-    rtDestroyContext(c);
-    return rebuilt;
-}
-
-/* The rays the rule expects to reach the object are the rays that
- * reached it in the last frame (Yoon, Curtis and Manocha (2007) sec.
- * 4.1.1), not the SAH's share of the frame's rays by area: with the grid
- * filling a large part of the view but a ten-thousandth of the scene's
- * box, a time per step at which the counted rays lose 20 builds' worth of
- * traversal must rebuild.  (The area estimate saw 1/200 of a build and
- * refit; on the BART museum it undercounted the animated object's rays
- * thirtyfold, docs/performance.md.)  Not a timing test: the rate is set
- * from the build time this very context measured. */
-static void check_rays_counted(void)
-{
-    tu_section("rays reaching the object counted");
-    double delta_sah = 0.0, build_ms = 0.0;
-    int pixels = 0;
-    /* A probe: the same updates, refit, give the SAH loss and the grid's
-     * pixels (both deterministic). */
-    CHECK_INT(counted_case(0.0, &delta_sah, &build_ms, &pixels), 0);
-    CHECKF(delta_sah > 1.0 && pixels > SIZE * SIZE / 8, "SAH loss %g, %d grid pixels",
-           delta_sah, pixels);
-    if (delta_sah <= 1.0 || pixels <= 0)
-        return;
-    /* The rate is taken from the second context's own first build time,
-     * read inside counted_case before the update: set it afterwards. */
-    double probe_build_ms = build_ms;
-    int again_pixels = 0;
-    double again_delta = 0.0;
-    double rate = 20.0 * probe_build_ms / ((double)pixels * delta_sah);
-    int rebuilt = counted_case(rate, &again_delta, &build_ms, &again_pixels);
-    /* The build time of this context may differ from the probe's; the
-     * factor 20 covers a 20-fold difference. */
-    CHECKF(rebuilt == 1 || build_ms > 20.0 * probe_build_ms,
-           "rate %g ms/step, %d grid pixels, SAH loss %g, build %g ms (probe %g): %d rebuilds "
-           "(expected 1)",
-           rate, pixels, delta_sah, build_ms, probe_build_ms, rebuilt);
-    CHECK_INT(again_pixels, pixels);
-}
-
-/* ------------------------------------------------ preempted by another process */
-
 /* The test hook of struct scene_preempt_hook: the calling thread sleeps,
  * as it waits while another process holds its core on a loaded machine
  * (wall time passes, the thread's CPU time does not). */
@@ -294,23 +228,19 @@ static void preempt_sleep(void *user)
         ;
 }
 
-/* check_rays_counted's context with the first build preempted for
- * `preempt_ms` (0: not at all).  Returns the rebuilds of the degrading
- * update; *cost_ms is the first build's cost as the rule weighs it
- * (build_cost_ms), *wall_ms its RT_OBJECT_BUILD_TIME. */
-static int preempted_case(double rate, double preempt_ms, double *delta_sah, double *cost_ms,
-                          double *wall_ms, int *pixels)
+/* One context of the rule's cases: the first build, preempted for
+ * `preempt_ms` (0: not at all), an unchanged update (counting starts),
+ * then the degrading update at `rate` ms per step (rate 0: whatever the
+ * rule's inputs, refit).  Returns the rebuilds of that last update;
+ * *delta_sah and *pixels describe it, *cost_ms is the first build's cost
+ * as the rule weighs it (build_cost_ms), *wall_ms its
+ * RT_OBJECT_BUILD_TIME. */
+static int update_case(double rate, double preempt_ms, double *delta_sah, double *cost_ms,
+                       double *wall_ms, int *pixels)
 {
-    RTcontext c = rtCreateContext("threads=1");
-    CHECK(c != NULL && rtMakeCurrent(c));
-    struct rt_context *ctx = rt_current_context();
+    RTcontext c;
+    struct rt_context *ctx = open_grid_context(&c);
     struct preempt p = {preempt_ms, 0};
-    rtViewport(0, 0, SIZE, SIZE);
-    rtMatrixMode(RT_PROJECTION);
-    rtLoadIdentity();
-    rtFrustum(-0.5, 0.5, -0.5, 0.5, 1.0, 100.0);
-    grid(0.0f, 0);
-    define(1);
     define_far_triangle();
     rtObjectParameteri(1, RT_UPDATE_STRATEGY, RT_AUTOMATIC);
     /* The grid's first build (and the far triangle's: the hook runs in
@@ -337,11 +267,48 @@ static int preempted_case(double rate, double preempt_ms, double *delta_sah, dou
     frame_with_far();
     int rebuilt = object_int(RT_OBJECT_REBUILDS) - rebuilds;
     *delta_sah = o->accel->sah_cost - o->accel->built_sah_cost;
-    CHECK_INT(rtGetError(), RT_NO_ERROR);
-    rtMakeCurrent(NULL);
-    rtDestroyContext(c);
+    close_context(c);
     return rebuilt;
 }
+
+/* The rays the rule expects to reach the object are the rays that
+ * reached it in the last frame (Yoon, Curtis and Manocha (2007) sec.
+ * 4.1.1), not the SAH's share of the frame's rays by area: with the grid
+ * filling a large part of the view but a ten-thousandth of the scene's
+ * box, a time per step at which the counted rays lose 20 builds' worth of
+ * traversal must rebuild.  (The area estimate saw 1/200 of a build and
+ * refit; on the BART museum it undercounted the animated object's rays
+ * thirtyfold, docs/performance.md.)  Not a timing test: the rate is set
+ * from the build time this very context measured. */
+static void check_rays_counted(void)
+{
+    tu_section("rays reaching the object counted");
+    double delta_sah = 0.0, build_ms = 0.0, cost_ms = 0.0; /* cost_ms: not used here */
+    int pixels = 0;
+    /* A probe: the same updates, refit, give the SAH loss and the grid's
+     * pixels (both deterministic). */
+    CHECK_INT(update_case(0.0, 0.0, &delta_sah, &cost_ms, &build_ms, &pixels), 0);
+    CHECKF(delta_sah > 1.0 && pixels > SIZE * SIZE / 8, "SAH loss %g, %d grid pixels",
+           delta_sah, pixels);
+    if (delta_sah <= 1.0 || pixels <= 0)
+        return;
+    /* The rate is taken from the second context's own first build time,
+     * read inside update_case before the update: set it afterwards. */
+    double probe_build_ms = build_ms;
+    int again_pixels = 0;
+    double again_delta = 0.0;
+    double rate = 20.0 * probe_build_ms / ((double)pixels * delta_sah);
+    int rebuilt = update_case(rate, 0.0, &again_delta, &cost_ms, &build_ms, &again_pixels);
+    /* The build time of this context may differ from the probe's; the
+     * factor 20 covers a 20-fold difference. */
+    CHECKF(rebuilt == 1 || build_ms > 20.0 * probe_build_ms,
+           "rate %g ms/step, %d grid pixels, SAH loss %g, build %g ms (probe %g): %d rebuilds "
+           "(expected 1)",
+           rate, pixels, delta_sah, build_ms, probe_build_ms, rebuilt);
+    CHECK_INT(again_pixels, pixels);
+}
+
+/* ------------------------------------------------ preempted by another process */
 
 /* A build that lost time slices to another process costs the rule what
  * it cost in work, not what the wall clock saw: the degrading update
@@ -357,7 +324,7 @@ static void check_preempted_build(void)
     tu_section("a preempted build costs its work, not the wall clock");
     double delta_sah = 0.0, cost_ms = 0.0, wall_ms = 0.0;
     int pixels = 0;
-    CHECK_INT(preempted_case(0.0, 0.0, &delta_sah, &cost_ms, &wall_ms, &pixels), 0);
+    CHECK_INT(update_case(0.0, 0.0, &delta_sah, &cost_ms, &wall_ms, &pixels), 0);
     CHECKF(delta_sah > 1.0 && pixels > SIZE * SIZE / 8 && cost_ms > 0.0,
            "SAH loss %g, %d grid pixels, build cost %g ms", delta_sah, pixels, cost_ms);
     if (delta_sah <= 1.0 || pixels <= 0 || cost_ms <= 0.0)
@@ -369,7 +336,7 @@ static void check_preempted_build(void)
     double preempt_ms = fmax(50.0, 2.0 * loss_max);
     double again_sah = 0.0, again_cost = 0.0, again_wall = 0.0;
     int again_pixels = 0;
-    int rebuilt = preempted_case(rate, preempt_ms, &again_sah, &again_cost, &again_wall,
+    int rebuilt = update_case(rate, preempt_ms, &again_sah, &again_cost, &again_wall,
                                  &again_pixels);
     /* The wall clock saw the preemption (it cannot be shorter than the
      * sleep); the rule's cost must not have. */
@@ -390,15 +357,8 @@ static void check_preempted_build(void)
 static void check_preempted_frame(void)
 {
     tu_section("a preempted frame does not raise the time per step");
-    RTcontext c = rtCreateContext("threads=1");
-    CHECK(c != NULL && rtMakeCurrent(c));
-    struct rt_context *ctx = rt_current_context();
-    rtViewport(0, 0, SIZE, SIZE);
-    rtMatrixMode(RT_PROJECTION);
-    rtLoadIdentity();
-    rtFrustum(-0.5, 0.5, -0.5, 0.5, 1.0, 100.0);
-    grid(0.0f, 0);
-    define(1);
+    RTcontext c;
+    struct rt_context *ctx = open_grid_context(&c);
     frame(); /* the lazy build */
     struct preempt p = {50.0, 0};
     ctx->scene.preempt.fn = preempt_sleep;
@@ -408,11 +368,7 @@ static void check_preempted_frame(void)
     CHECK_INT(p.calls, 1);
     RTint nodes = 0, tris = 0;
     RTfloat render_ms = 0.0f, update_ms = 0.0f, toplevel_ms = 0.0f;
-    rtGetIntegerv(RT_STAT_NODE_TESTS, &nodes);
-    rtGetIntegerv(RT_STAT_TRIANGLE_TESTS, &tris);
-    rtGetFloatv(RT_STAT_RENDER_TIME, &render_ms);
-    rtGetFloatv(RT_STAT_UPDATE_TIME, &update_ms);
-    rtGetFloatv(RT_STAT_TOPLEVEL_TIME, &toplevel_ms);
+    frame_stats(&nodes, &tris, &render_ms, &update_ms, &toplevel_ms);
     double tests = (double)nodes + (double)tris;
     double traced = tests * ctx->scene.ms_per_test;
     CHECKF(render_ms >= 50.0f, "render %g ms, preempted 50 ms", (double)render_ms);
@@ -421,9 +377,7 @@ static void check_preempted_frame(void)
            "%.0f steps x %g ms = %g ms > render %g - update %g - top level %g - preempted %g ms",
            tests, ctx->scene.ms_per_test, traced, (double)render_ms, (double)update_ms,
            (double)toplevel_ms, p.ms);
-    CHECK_INT(rtGetError(), RT_NO_ERROR);
-    rtMakeCurrent(NULL);
-    rtDestroyContext(c);
+    close_context(c);
 }
 
 int main(void)

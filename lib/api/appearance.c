@@ -38,12 +38,175 @@ static int material_size(RTenum pname)
     }
 }
 
-static void set_colour(float *front, float *back, RTenum face, const RTfloat *params)
+/* Where pname is kept in m for one side (back non-zero: the back).  The
+ * ray tracing parameters have no back: both sides give the one field.
+ * pname is one material_size() knows other than RT_AMBIENT_AND_DIFFUSE. */
+static float *material_field(struct scene_material *m, RTenum pname, int back)
+{
+    switch (pname) {
+    case RT_AMBIENT:
+        return back ? m->back_ambient : m->ambient;
+    case RT_DIFFUSE:
+        return back ? m->back_diffuse : m->diffuse;
+    case RT_SPECULAR:
+        return back ? m->back_specular : m->specular;
+    case RT_EMISSION:
+        return back ? m->back_emission : m->emission;
+    case RT_SHININESS:
+        return back ? &m->back_shininess : &m->shininess;
+    case RT_REFLECTIVITY:
+        return &m->reflectivity;
+    case RT_TRANSPARENCY:
+        return &m->transparency;
+    default:
+        return &m->ior;
+    }
+}
+
+/* Writes the n values of pname to the sides of m that face names. */
+static void set_material(struct scene_material *m, RTenum face, RTenum pname,
+                         const RTfloat *params, int n)
 {
     if (face != RT_BACK)
-        memcpy(front, params, 4 * sizeof(float));
+        memcpy(material_field(m, pname, 0), params, (size_t)n * sizeof(float));
     if (face != RT_FRONT)
-        memcpy(back, params, 4 * sizeof(float));
+        memcpy(material_field(m, pname, 1), params, (size_t)n * sizeof(float));
+}
+
+/* Number of values a light pname takes; 0 for an unknown pname. */
+static int light_size(RTenum pname)
+{
+    switch (pname) {
+    case RT_AMBIENT:
+    case RT_DIFFUSE:
+    case RT_SPECULAR:
+    case RT_POSITION:
+        return 4;
+    case RT_CONSTANT_ATTENUATION:
+    case RT_LINEAR_ATTENUATION:
+    case RT_QUADRATIC_ATTENUATION:
+    case RT_SPOT_EXPONENT:
+    case RT_SPOT_CUTOFF:
+        return 1;
+    case RT_SPOT_DIRECTION:
+        return 3;
+    default:
+        return 0;
+    }
+}
+
+/* Where pname is kept in l; pname is one light_size() knows.  Positions
+ * and directions are kept in eye coordinates, as GL reports them. */
+static float *light_field(struct scene_light *l, RTenum pname)
+{
+    switch (pname) {
+    case RT_AMBIENT:
+        return l->ambient;
+    case RT_DIFFUSE:
+        return l->diffuse;
+    case RT_SPECULAR:
+        return l->specular;
+    case RT_POSITION:
+        return l->position;
+    case RT_SPOT_DIRECTION:
+        return l->spot_direction;
+    case RT_SPOT_EXPONENT:
+        return &l->spot_exponent;
+    case RT_SPOT_CUTOFF:
+        return &l->spot_cutoff;
+    case RT_CONSTANT_ATTENUATION:
+        return &l->attenuation[0];
+    case RT_LINEAR_ATTENUATION:
+        return &l->attenuation[1];
+    default:
+        return &l->attenuation[2];
+    }
+}
+
+/*
+ * The checks the material and light calls share, each recording its error
+ * under caller's name and returning 0 when the argument is bad, 1 when it
+ * is good.  A call runs them in GL's order (mode, enums, values).
+ */
+
+/* face (named arg in the message) is RT_FRONT, RT_BACK or RT_FRONT_AND_BACK. */
+static int check_face(struct rt_context *ctx, const char *caller, const char *arg, RTenum face)
+{
+    if (face == RT_FRONT || face == RT_BACK || face == RT_FRONT_AND_BACK)
+        return 1;
+    char b1[RT_ENUM_STRING_SIZE];
+    rt_error(ctx, RT_INVALID_ENUM, "%s(%s=%s): not a face", caller, arg, rt_enum_string(face, b1));
+    return 0;
+}
+
+/* which is RT_LIGHT0 .. RT_LIGHT0 + RENDER_MAX_LIGHTS - 1. */
+static int check_light(struct rt_context *ctx, const char *caller, RTenum which)
+{
+    if (which >= RT_LIGHT0 && which < RT_LIGHT0 + RENDER_MAX_LIGHTS)
+        return 1;
+    char b1[RT_ENUM_STRING_SIZE];
+    rt_error(ctx, RT_INVALID_ENUM, "%s(light=%s): not RT_LIGHT0 .. RT_LIGHT7", caller,
+             rt_enum_string(which, b1));
+    return 0;
+}
+
+/* pname is a kind ("material", "light") parameter this call takes (known
+ * non-zero), then params is not NULL. */
+static int check_pname(struct rt_context *ctx, const char *caller, RTenum pname, int known,
+                       const char *kind, const void *params)
+{
+    char b1[RT_ENUM_STRING_SIZE];
+    if (!known) {
+        rt_error(ctx, RT_INVALID_ENUM, "%s(pname=%s): not a %s parameter", caller,
+                 rt_enum_string(pname, b1), kind);
+        return 0;
+    }
+    if (!params) {
+        rt_error(ctx, RT_INVALID_VALUE, "%s(params=NULL)", caller);
+        return 0;
+    }
+    return 1;
+}
+
+/* GL's ranges of the scalar material and light parameters: shininess and
+ * the spot exponent in [0, 128], reflectivity and transparency in [0, 1],
+ * the index of refraction > 0, the spot cutoff in [0, 90] or 180, the
+ * attenuations >= 0.  Vector parameters take any finite value. */
+static int out_of_range(RTenum pname, float v)
+{
+    switch (pname) {
+    case RT_SHININESS:
+    case RT_SPOT_EXPONENT:
+        return v < 0.0f || v > 128.0f;
+    case RT_REFLECTIVITY:
+    case RT_TRANSPARENCY:
+        return v < 0.0f || v > 1.0f;
+    case RT_INDEX_OF_REFRACTION:
+        return !(v > 0.0f);
+    case RT_SPOT_CUTOFF:
+        return (v < 0.0f || v > 90.0f) && v != 180.0f;
+    case RT_CONSTANT_ATTENUATION:
+    case RT_LINEAR_ATTENUATION:
+    case RT_QUADRATIC_ATTENUATION:
+        return v < 0.0f;
+    default:
+        return 0;
+    }
+}
+
+/* params[0 .. n) are finite and, for a scalar pname, in GL's range. */
+static int check_values(struct rt_context *ctx, const char *caller, RTenum pname,
+                        const RTfloat *params, int n)
+{
+    if (!rt_check_finite(ctx, caller, params, n))
+        return 0;
+    if (n == 1 && out_of_range(pname, params[0])) {
+        char b1[RT_ENUM_STRING_SIZE];
+        rt_error(ctx, RT_INVALID_VALUE, "%s(pname=%s, value=%g): out of range", caller,
+                 rt_enum_string(pname, b1), (double)params[0]);
+        return 0;
+    }
+    return 1;
 }
 
 /* The colours of m that rtColorMaterial(face, mode) names: up to four
@@ -146,67 +309,19 @@ static void material(const char *caller, RTenum face, RTenum pname, const RTfloa
     GET_CURRENT_CONTEXT(ctx);
     if (!ctx)
         return;
-    char b1[RT_ENUM_STRING_SIZE];
-    if (face != RT_FRONT && face != RT_BACK && face != RT_FRONT_AND_BACK) {
-        rt_error(ctx, RT_INVALID_ENUM, "%s(face=%s): not a face", caller,
-                 rt_enum_string(face, b1));
-        return;
-    }
     int n = material_size(pname);
-    if (n == 0 || (scalar_only && n != 1)) {
-        rt_error(ctx, RT_INVALID_ENUM, "%s(pname=%s): not a material parameter", caller,
-                 rt_enum_string(pname, b1));
+    if (!check_face(ctx, caller, "face", face) ||
+        !check_pname(ctx, caller, pname, n != 0 && (!scalar_only || n == 1), "material",
+                     params) ||
+        !check_values(ctx, caller, pname, params, n))
         return;
-    }
-    if (!params) {
-        rt_error(ctx, RT_INVALID_VALUE, "%s(params=NULL)", caller);
-        return;
-    }
-    if (!rt_check_finite(ctx, caller, params, n))
-        return;
-    float v = params[0];
-    int bad = (pname == RT_SHININESS && (v < 0.0f || v > 128.0f)) ||
-              ((pname == RT_REFLECTIVITY || pname == RT_TRANSPARENCY) && (v < 0.0f || v > 1.0f)) ||
-              (pname == RT_INDEX_OF_REFRACTION && !(v > 0.0f));
-    if (bad) {
-        rt_error(ctx, RT_INVALID_VALUE, "%s(pname=%s, value=%g): out of range", caller,
-                 rt_enum_string(pname, b1), (double)v);
-        return;
-    }
     rt_list_state(ctx, LIST_MATERIAL, face, pname, params, n);
     struct scene_material m = ctx->material;
-    switch (pname) {
-    case RT_AMBIENT:
-        set_colour(m.ambient, m.back_ambient, face, params);
-        break;
-    case RT_DIFFUSE:
-        set_colour(m.diffuse, m.back_diffuse, face, params);
-        break;
-    case RT_AMBIENT_AND_DIFFUSE:
-        set_colour(m.ambient, m.back_ambient, face, params);
-        set_colour(m.diffuse, m.back_diffuse, face, params);
-        break;
-    case RT_SPECULAR:
-        set_colour(m.specular, m.back_specular, face, params);
-        break;
-    case RT_EMISSION:
-        set_colour(m.emission, m.back_emission, face, params);
-        break;
-    case RT_SHININESS:
-        if (face != RT_BACK)
-            m.shininess = v;
-        if (face != RT_FRONT)
-            m.back_shininess = v;
-        break;
-    case RT_REFLECTIVITY:
-        m.reflectivity = v;
-        break;
-    case RT_TRANSPARENCY:
-        m.transparency = v;
-        break;
-    default:
-        m.ior = v;
-        break;
+    if (pname == RT_AMBIENT_AND_DIFFUSE) {
+        set_material(&m, face, RT_AMBIENT, params, n);
+        set_material(&m, face, RT_DIFFUSE, params, n);
+    } else {
+        set_material(&m, face, pname, params, n);
     }
     /* GL ignores a material call for the properties RT_COLOR_MATERIAL
      * tracks while it is enabled (they keep the current colour). */
@@ -236,118 +351,37 @@ void rtMaterialfv(RTenum face, RTenum pname, const RTfloat *params)
     material("rtMaterialfv", face, pname, params, 0);
 }
 
-static int light_size(RTenum pname)
-{
-    switch (pname) {
-    case RT_AMBIENT:
-    case RT_DIFFUSE:
-    case RT_SPECULAR:
-    case RT_POSITION:
-        return 4;
-    case RT_CONSTANT_ATTENUATION:
-    case RT_LINEAR_ATTENUATION:
-    case RT_QUADRATIC_ATTENUATION:
-    case RT_SPOT_EXPONENT:
-    case RT_SPOT_CUTOFF:
-        return 1;
-    case RT_SPOT_DIRECTION:
-        return 3;
-    default:
-        return 0;
-    }
-}
-
 static void light(const char *caller, RTenum which, RTenum pname, const RTfloat *params,
                   int scalar_only)
 {
     GET_CURRENT_CONTEXT(ctx);
     if (!ctx || rt_check_outside_begin(ctx, caller))
         return;
-    char b1[RT_ENUM_STRING_SIZE];
-    if (which < RT_LIGHT0 || which >= RT_LIGHT0 + RENDER_MAX_LIGHTS) {
-        rt_error(ctx, RT_INVALID_ENUM, "%s(light=%s): not RT_LIGHT0 .. RT_LIGHT7", caller,
-                 rt_enum_string(which, b1));
-        return;
-    }
     int n = light_size(pname);
-    if (n == 0 || (scalar_only && n != 1)) {
-        rt_error(ctx, RT_INVALID_ENUM, "%s(pname=%s): not a light parameter", caller,
-                 rt_enum_string(pname, b1));
+    if (!check_light(ctx, caller, which) ||
+        !check_pname(ctx, caller, pname, n != 0 && (!scalar_only || n == 1), "light", params) ||
+        !check_values(ctx, caller, pname, params, n))
         return;
-    }
-    if (!params) {
-        rt_error(ctx, RT_INVALID_VALUE, "%s(params=NULL)", caller);
-        return;
-    }
-    if (!rt_check_finite(ctx, caller, params, n))
-        return;
-    /* GL's ranges: attenuations and the exponent >= 0 (exponent <= 128),
-     * the cutoff in [0, 90] or 180. */
-    int bad = 0;
-    if (pname == RT_SPOT_EXPONENT)
-        bad = params[0] < 0.0f || params[0] > 128.0f;
-    else if (pname == RT_SPOT_CUTOFF)
-        bad = (params[0] < 0.0f || params[0] > 90.0f) && params[0] != 180.0f;
-    else if (n == 1)
-        bad = params[0] < 0.0f;
-    if (bad) {
-        rt_error(ctx, RT_INVALID_VALUE, "%s(pname=%s, value=%g): out of range", caller,
-                 rt_enum_string(pname, b1), (double)params[0]);
-        return;
-    }
     rt_list_state(ctx, LIST_LIGHT, which, pname, params, n);
-    struct scene_light *l = &ctx->render.lights[which - RT_LIGHT0];
-    switch (pname) {
-    case RT_AMBIENT:
-        memcpy(l->ambient, params, sizeof(l->ambient));
-        break;
-    case RT_DIFFUSE:
-        memcpy(l->diffuse, params, sizeof(l->diffuse));
-        break;
-    case RT_SPECULAR:
-        memcpy(l->specular, params, sizeof(l->specular));
-        break;
-    case RT_POSITION: {
-        /* Transformed by the modelview at the call (GL), in double. */
+    float f[4];
+    memcpy(f, params, (size_t)n * sizeof(float));
+    if (pname == RT_POSITION || pname == RT_SPOT_DIRECTION) {
+        /* Transformed by the modelview at the call (GL), in double: a
+         * position by the whole matrix, a direction by its upper 3x3. */
         const double *m = ctx->modelview.m[ctx->modelview.depth - 1];
-        double p[4] = {params[0], params[1], params[2], params[3]}, out[4];
-        for (int r = 0; r < 4; r++)
-            out[r] = m[r] * p[0] + m[4 + r] * p[1] + m[8 + r] * p[2] + m[12 + r] * p[3];
-        float f[4];
-        for (int r = 0; r < 4; r++)
-            f[r] = (float)out[r];
-        if (!rt_check_finite(ctx, caller, f, 4))
+        if (pname == RT_POSITION) {
+            double p[4] = {params[0], params[1], params[2], params[3]};
+            for (int r = 0; r < 4; r++)
+                f[r] = (float)(m[r] * p[0] + m[4 + r] * p[1] + m[8 + r] * p[2] + m[12 + r] * p[3]);
+        } else {
+            for (int r = 0; r < 3; r++)
+                f[r] = (float)(m[r] * params[0] + m[4 + r] * params[1] + m[8 + r] * params[2]);
+        }
+        if (!rt_check_finite(ctx, caller, f, n))
             return;
-        memcpy(l->position, f, sizeof(f));
-        break;
     }
-    case RT_SPOT_DIRECTION: {
-        /* A direction: the modelview's upper 3x3 at the call (GL). */
-        const double *m = ctx->modelview.m[ctx->modelview.depth - 1];
-        float f[3];
-        for (int r = 0; r < 3; r++)
-            f[r] = (float)(m[r] * params[0] + m[4 + r] * params[1] + m[8 + r] * params[2]);
-        if (!rt_check_finite(ctx, caller, f, 3))
-            return;
-        memcpy(l->spot_direction, f, sizeof(f));
-        break;
-    }
-    case RT_SPOT_EXPONENT:
-        l->spot_exponent = params[0];
-        break;
-    case RT_SPOT_CUTOFF:
-        l->spot_cutoff = params[0];
-        break;
-    case RT_CONSTANT_ATTENUATION:
-        l->attenuation[0] = params[0];
-        break;
-    case RT_LINEAR_ATTENUATION:
-        l->attenuation[1] = params[0];
-        break;
-    default:
-        l->attenuation[2] = params[0];
-        break;
-    }
+    memcpy(light_field(&ctx->render.lights[which - RT_LIGHT0], pname), f,
+           (size_t)n * sizeof(float));
     /* Per primitive (scene/gl_state.h): a list's later geometry gets a
      * segment whose instance carries the lights as they are there. */
     rt_list_state_changed(ctx, caller);
@@ -477,12 +511,9 @@ void rtColorMaterial(RTenum face, RTenum mode)
     GET_CURRENT_CONTEXT(ctx);
     if (!ctx || rt_check_outside_begin(ctx, "rtColorMaterial"))
         return;
-    char b1[RT_ENUM_STRING_SIZE];
-    if (face != RT_FRONT && face != RT_BACK && face != RT_FRONT_AND_BACK) {
-        rt_error(ctx, RT_INVALID_ENUM, "rtColorMaterial(face=%s): not a face",
-                 rt_enum_string(face, b1));
+    if (!check_face(ctx, "rtColorMaterial", "face", face))
         return;
-    }
+    char b1[RT_ENUM_STRING_SIZE];
     if (mode != RT_AMBIENT && mode != RT_DIFFUSE && mode != RT_SPECULAR && mode != RT_EMISSION &&
         mode != RT_AMBIENT_AND_DIFFUSE) {
         rt_error(ctx, RT_INVALID_ENUM, "rtColorMaterial(mode=%s): not a material colour",
@@ -518,12 +549,8 @@ void rtCullFace(RTenum mode)
     GET_CURRENT_CONTEXT(ctx);
     if (!ctx || rt_check_outside_begin(ctx, "rtCullFace"))
         return;
-    char b1[RT_ENUM_STRING_SIZE];
-    if (mode != RT_FRONT && mode != RT_BACK && mode != RT_FRONT_AND_BACK) {
-        rt_error(ctx, RT_INVALID_ENUM, "rtCullFace(mode=%s): not a face",
-                 rt_enum_string(mode, b1));
+    if (!check_face(ctx, "rtCullFace", "mode", mode))
         return;
-    }
     rt_list_state(ctx, LIST_CULL_FACE, mode, 0, NULL, 0);
     ctx->cull_face_mode = mode;
     rt_sync_fixed_function(ctx);
@@ -560,49 +587,14 @@ void rtGetMaterialfv(RTenum face, RTenum pname, RTfloat *params)
         return;
     }
     int n = material_size(pname);
-    if (n == 0 || pname == RT_AMBIENT_AND_DIFFUSE) {
-        rt_error(ctx, RT_INVALID_ENUM, "rtGetMaterialfv(pname=%s): not a material parameter",
-                 rt_enum_string(pname, b1));
+    if (!check_pname(ctx, "rtGetMaterialfv", pname, n != 0 && pname != RT_AMBIENT_AND_DIFFUSE,
+                     "material", params))
         return;
-    }
-    if (!params) {
-        rt_error(ctx, RT_INVALID_VALUE, "rtGetMaterialfv(params=NULL)");
-        return;
-    }
     /* The tracked properties hold the current colour while
      * RT_COLOR_MATERIAL is enabled (rt_color_material_write). */
     struct scene_material settled = ctx->material;
     rt_color_material_write(ctx, &settled);
-    const struct scene_material *m = &settled;
-    const int back = face == RT_BACK;
-    const float *src;
-    switch (pname) {
-    case RT_AMBIENT:
-        src = back ? m->back_ambient : m->ambient;
-        break;
-    case RT_DIFFUSE:
-        src = back ? m->back_diffuse : m->diffuse;
-        break;
-    case RT_SPECULAR:
-        src = back ? m->back_specular : m->specular;
-        break;
-    case RT_EMISSION:
-        src = back ? m->back_emission : m->emission;
-        break;
-    case RT_SHININESS:
-        src = back ? &m->back_shininess : &m->shininess;
-        break;
-    case RT_REFLECTIVITY:
-        src = &m->reflectivity;
-        break;
-    case RT_TRANSPARENCY:
-        src = &m->transparency;
-        break;
-    default:
-        src = &m->ior;
-        break;
-    }
-    memcpy(params, src, (size_t)n * sizeof(float));
+    memcpy(params, material_field(&settled, pname, face == RT_BACK), (size_t)n * sizeof(float));
 }
 
 void rtGetLightfv(RTenum which, RTenum pname, RTfloat *params)
@@ -610,58 +602,12 @@ void rtGetLightfv(RTenum which, RTenum pname, RTfloat *params)
     GET_CURRENT_CONTEXT(ctx);
     if (!ctx || rt_check_outside_begin(ctx, "rtGetLightfv"))
         return;
-    char b1[RT_ENUM_STRING_SIZE];
-    if (which < RT_LIGHT0 || which >= RT_LIGHT0 + RENDER_MAX_LIGHTS) {
-        rt_error(ctx, RT_INVALID_ENUM, "rtGetLightfv(light=%s): not RT_LIGHT0 .. RT_LIGHT7",
-                 rt_enum_string(which, b1));
-        return;
-    }
     int n = light_size(pname);
-    if (n == 0) {
-        rt_error(ctx, RT_INVALID_ENUM, "rtGetLightfv(pname=%s): not a light parameter",
-                 rt_enum_string(pname, b1));
+    if (!check_light(ctx, "rtGetLightfv", which) ||
+        !check_pname(ctx, "rtGetLightfv", pname, n != 0, "light", params))
         return;
-    }
-    if (!params) {
-        rt_error(ctx, RT_INVALID_VALUE, "rtGetLightfv(params=NULL)");
-        return;
-    }
-    /* As GL: positions and directions in eye coordinates. */
-    const struct scene_light *l = &ctx->render.lights[which - RT_LIGHT0];
-    const float *src;
-    switch (pname) {
-    case RT_AMBIENT:
-        src = l->ambient;
-        break;
-    case RT_DIFFUSE:
-        src = l->diffuse;
-        break;
-    case RT_SPECULAR:
-        src = l->specular;
-        break;
-    case RT_POSITION:
-        src = l->position;
-        break;
-    case RT_SPOT_DIRECTION:
-        src = l->spot_direction;
-        break;
-    case RT_SPOT_EXPONENT:
-        src = &l->spot_exponent;
-        break;
-    case RT_SPOT_CUTOFF:
-        src = &l->spot_cutoff;
-        break;
-    case RT_CONSTANT_ATTENUATION:
-        src = &l->attenuation[0];
-        break;
-    case RT_LINEAR_ATTENUATION:
-        src = &l->attenuation[1];
-        break;
-    default:
-        src = &l->attenuation[2];
-        break;
-    }
-    memcpy(params, src, (size_t)n * sizeof(float));
+    memcpy(params, light_field(&ctx->render.lights[which - RT_LIGHT0], pname),
+           (size_t)n * sizeof(float));
 }
 
 void rtRenderParameteri(RTenum pname, RTint param)

@@ -15,6 +15,7 @@
 
 #include <math.h>
 
+#include "trace/binary_walk.h"
 #include "trace/intersect.h"
 
 int trace_filter_object(const struct trace_object_view *view, const struct trace_ray *o_ray,
@@ -27,22 +28,12 @@ int trace_filter_object(const struct trace_object_view *view, const struct trace
     const struct trace_scene *scene = r->scene;
     int found = 0;
     float best = t_max;
-    uint32_t stack[BVH_MAX_DEPTH + 1];
-    int sp = 0;
-    stack[sp++] = 0;
-    while (sp > 0) {
-        const struct bvh_node *node = &bvh->nodes[stack[--sp]];
-        float t_entry;
-        counters->node_tests++;
-        if (!trace_box(o_ray, node->aabb_min, node->aabb_max, best, &t_entry))
-            continue;
-        if (!node->count) {
-            stack[sp++] = node->first;
-            stack[sp++] = node->first + 1;
-            continue;
-        }
-        for (uint32_t i = 0; i < node->count; i++) {
-            const uint32_t slot = node->first + i;
+    struct trace_binary_walk walk;
+    trace_binary_walk_init(&walk, bvh);
+    const struct bvh_node *leaf;
+    while ((leaf = trace_binary_walk_next(&walk, o_ray, best, &counters->node_tests))) {
+        for (uint32_t i = 0; i < leaf->count; i++) {
+            const uint32_t slot = leaf->first + i;
             const float *v = &view->tri[9 * (size_t)slot];
             const float limit = found ? isect_next_up(best) : best;
             struct trace_scene_hit h;

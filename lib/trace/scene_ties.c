@@ -18,6 +18,8 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "trace/binary_walk.h"
+
 /* The hits kept so far: out[0 .. n), sorted when `sorted`; total counts
  * every candidate. */
 struct tie_set {
@@ -82,22 +84,12 @@ static void object_ties(const struct trace_object_view *view, const struct trace
     if (!bvh || bvh->node_count == 0)
         return;
     const float limit = nextafterf(t, INFINITY);
-    uint32_t stack[BVH_MAX_DEPTH + 1];
-    int sp = 0;
-    stack[sp++] = 0;
-    while (sp > 0) {
-        const struct bvh_node *node = &bvh->nodes[stack[--sp]];
-        float t_entry;
-        counters->object.node_tests++;
-        if (!trace_box(o_ray, node->aabb_min, node->aabb_max, t, &t_entry))
-            continue;
-        if (!node->count) {
-            stack[sp++] = node->first;
-            stack[sp++] = node->first + 1;
-            continue;
-        }
-        for (uint32_t i = 0; i < node->count; i++) {
-            const uint32_t slot = node->first + i;
+    struct trace_binary_walk walk;
+    trace_binary_walk_init(&walk, bvh);
+    const struct bvh_node *leaf;
+    while ((leaf = trace_binary_walk_next(&walk, o_ray, t, &counters->object.node_tests))) {
+        for (uint32_t i = 0; i < leaf->count; i++) {
+            const uint32_t slot = leaf->first + i;
             const float *v = &view->tri[9 * (size_t)slot];
             struct trace_scene_hit h;
             counters->object.triangle_tests++;
@@ -125,22 +117,12 @@ int trace_scene_ties(const struct trace_scene *scene, const float org[3], const 
     struct trace_ray world;
     trace_ray_init(&world, org, dir, t);
     struct tie_set set = {out, 0, max, 0, 0};
-    uint32_t stack[BVH_MAX_DEPTH + 1];
-    int sp = 0;
-    stack[sp++] = 0;
-    while (sp > 0) {
-        const struct bvh_node *node = &top->nodes[stack[--sp]];
-        float t_entry;
-        counters->top_node_tests++;
-        if (!trace_box(&world, node->aabb_min, node->aabb_max, t, &t_entry))
-            continue;
-        if (!node->count) {
-            stack[sp++] = node->first;
-            stack[sp++] = node->first + 1;
-            continue;
-        }
-        for (uint32_t i = 0; i < node->count; i++) {
-            const uint32_t index = top->prim_index[node->first + i];
+    struct trace_binary_walk walk;
+    trace_binary_walk_init(&walk, top);
+    const struct bvh_node *leaf;
+    while ((leaf = trace_binary_walk_next(&walk, &world, t, &counters->top_node_tests))) {
+        for (uint32_t i = 0; i < leaf->count; i++) {
+            const uint32_t index = top->prim_index[leaf->first + i];
             /* Instances before the one of `after` hold nothing after it. */
             if (index < after->instance)
                 continue;
