@@ -120,6 +120,16 @@ static inline int wide_packet_body(struct wide_state *s, const struct tri4_packe
     float limit = !any_hit && s->found ? isect_next_up(s->best) : s->best;
     struct tri4_lanes lanes;
     unsigned mask = tri4_candidates_lanes(&s->r4, p, (1u << n) - 1u, limit, &lanes);
+    if (any_hit && mask) {
+        /* A lane the ray starts on (a shadow ray from a surface: t_lo <
+         * tmin) fails only on t, which the finish computes in double;
+         * tri4_before_tmin refuses it in float when that is sure. */
+        const unsigned near = (unsigned)_mm_movemask_ps(
+                                  _mm_cmplt_ps(_mm_loadu_ps(lanes.t_lo), s->r4.tmin)) &
+                              mask;
+        if (near)
+            mask &= ~tri4_before_tmin(s->ray, p, near);
+    }
     while (mask) {
         const unsigned l = (unsigned)__builtin_ctz(mask);
         mask &= mask - 1u;
