@@ -106,9 +106,13 @@ struct tri4_lanes {
  * with this t_max might accept; every other lane it rejects.  With out
  * not NULL, also the lanes' float values for isect_triangle_finish.
  */
-static inline unsigned tri4_candidates_lanes(const struct tri4_ray *r,
-                                             const struct tri4_packet *p, unsigned valid,
-                                             float t_max, struct tri4_lanes *out)
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline unsigned tri4_candidates_lanes_impl(const struct tri4_ray *r,
+                                                  const struct tri4_packet *p, unsigned valid,
+                                                  float t_max, struct tri4_lanes *out,
+                                                  int early_out)
 {
     /* Unaligned loads: a layout's packets are 32-byte aligned, but a
      * packet elsewhere (a test's, on the stack) need not be; on aligned
@@ -152,6 +156,13 @@ static inline unsigned tri4_candidates_lanes(const struct tri4_ray *r,
      * subtraction that underflows is exact).  So the scalar test's
      * double signs differ as well and it returns 0. */
     const __m128 mixed = _mm_and_ps(any_neg, any_pos);
+    /* early_out (the any-hit walk's leaf): when every lane's signs
+     * differ, every lane is refused (a mixed lane is neither kept nor
+     * deferred below), and the rest is not computed.  Most packets a
+     * shadow ray tests are such misses; the closest-hit walk keeps the
+     * branch-free filter. */
+    if (early_out && ((unsigned)_mm_movemask_ps(mixed) & valid) == valid)
+        return 0;
 
     /* The rejections that do not depend on U, V, W: the sheared depths'
      * range and the ray's interval through the triangle's box.  They
@@ -205,6 +216,13 @@ static inline unsigned tri4_candidates_lanes(const struct tri4_ray *r,
         }
     }
     return mask;
+}
+
+static inline unsigned tri4_candidates_lanes(const struct tri4_ray *r,
+                                             const struct tri4_packet *p, unsigned valid,
+                                             float t_max, struct tri4_lanes *out)
+{
+    return tri4_candidates_lanes_impl(r, p, valid, t_max, out, 0);
 }
 
 static inline unsigned tri4_candidates(const struct tri4_ray *r, const struct tri4_packet *p,

@@ -119,7 +119,7 @@ static inline int wide_packet_body(struct wide_state *s, const struct tri4_packe
     /* An any-hit walk returns at its first hit: found stays 0. */
     float limit = !any_hit && s->found ? isect_next_up(s->best) : s->best;
     struct tri4_lanes lanes;
-    unsigned mask = tri4_candidates_lanes(&s->r4, p, (1u << n) - 1u, limit, &lanes);
+    unsigned mask = tri4_candidates_lanes_impl(&s->r4, p, (1u << n) - 1u, limit, &lanes, any_hit);
     if (any_hit && mask) {
         /* A lane the ray starts on (a shadow ray from a surface: t_lo <
          * tmin) fails only on t, which the finish computes in double;
