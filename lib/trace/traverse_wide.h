@@ -596,6 +596,15 @@ static inline int walk_wide8_ray(const struct bvh4 *wide, struct wide_state *s, 
          * the ray (which the call may in principle have changed, so the
          * compiler reloads it anyway) instead of spilled and reloaded
          * around it. */
+#if defined(__GNUC__)
+        /* GCC sees that the packet call leaves the ray alone and keeps
+         * these vectors across it, spilling and reloading eight of them
+         * around every leaf; an any-hit walk (about three leaf visits per
+         * shadow ray) loads them again instead.  The empty asm hides
+         * nothing but the pointer's provenance. */
+        if (any_hit)
+            __asm__("" : "+r"(ray));
+#endif
         const __m256 org_x = _mm256_set1_ps(ray->org[0]);
         const __m256 org_y = _mm256_set1_ps(ray->org[1]);
         const __m256 org_z = _mm256_set1_ps(ray->org[2]);
