@@ -82,9 +82,11 @@ static struct leaf_answer packet_leaf(const struct trace_ray *ray, const struct 
     tri4_ray_init(&r4, ray);
     float best = t_max;
     struct tri4_lanes lanes;
-    unsigned mask = tri4_candidates_lanes(&r4, p, 15u, t_max, &lanes);
+    /* Any hit: the filter with its early returns, as wide_packet_body
+     * calls it. */
+    unsigned mask = tri4_candidates_lanes_impl(&r4, p, 15u, t_max, &lanes, any_hit);
     *kept = mask;
-    if (any_hit) {
+    if (any_hit && mask) {
         /* As wide_packet_body: the lanes the ray starts on, refused in
          * float when that is sure. */
         unsigned near = 0;
@@ -245,6 +247,17 @@ static void one_case(struct tg_rng *r, uint64_t *cases, uint64_t *kept_rejected,
     struct tri4_ray r4;
     tri4_ray_init(&r4, &ray);
     const unsigned mask = tri4_candidates(&r4, &p, 15u, t_max);
+    {
+        /* The any-hit filter's early returns refuse only what the filter
+         * refuses: the same mask. */
+        struct tri4_lanes early;
+        const unsigned mask_early = tri4_candidates_lanes_impl(&r4, &p, 15u, t_max, &early, 1);
+        if (mask_early != mask) {
+            if (failures < 10)
+                printf("  FAIL: early-out filter mask %x, filter %x\n", mask_early, mask);
+            failures++;
+        }
+    }
     for (int l = 0; l < 4; l++) {
         float t, u, w;
         int accepted = isect_triangle(&ray, tri[l], tri[l] + 3, tri[l] + 6, t_max, &t, &u, &w);
