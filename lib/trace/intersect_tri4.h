@@ -174,16 +174,6 @@ static inline unsigned tri4_candidates_lanes_impl(const struct tri4_ray *r,
     const __m128 z_lo = _mm_min_ps(Az, _mm_min_ps(Bz, Cz));
     const __m128 z_hi = _mm_max_ps(Az, _mm_max_ps(Bz, Cz));
     const __m128 limit = _mm_set1_ps(t_max);
-    /* early_out: likewise when every lane is mixed or its depth range
-     * misses [tmin, t_max) (both refuse it below), before the box
-     * interval. */
-    if (early_out) {
-        const __m128 out_z = _mm_or_ps(
-            mixed, _mm_andnot_ps(_mm_and_ps(_mm_cmpge_ps(z_hi, r->tmin), _mm_cmplt_ps(z_lo, limit)),
-                                 _mm_castsi128_ps(_mm_set1_epi32(-1))));
-        if (((unsigned)_mm_movemask_ps(out_z) & valid) == valid)
-            return 0;
-    }
     __m128 t_lo = z_lo;
     __m128 t_hi = z_hi;
     tri4_slab(ax, bx, cx, r->inv_x, r->neg_x, &t_lo, &t_hi);
