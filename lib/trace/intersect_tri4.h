@@ -237,8 +237,9 @@ static inline unsigned tri4_candidates(const struct tri4_ray *r, const struct tr
  * ray->org, ray->dir) surely computes a t below ray->tmin before its
  * clamp, so that with t_lo < tmin (the clamp then keeps the result below
  * tmin, NaN included: see isect_clamp_to_box) it surely returns 0; a
- * lane where that is not sure is not in the result.  For any-hit rays that start on a surface (shadow
- * rays, whose tmin steps off it): their own triangle passes the float
+ * lane where that is not sure is not in the result.  For any-hit rays
+ * that start on a surface (shadow rays, whose tmin steps off it): their
+ * own triangle passes the float
  * filter (the ray goes through it at t about 0) and fails only on t, and
  * the finish's double-precision plane distance was most of a shadow
  * ray's leaf work.  Here in float, with error bounds; a proof, not an
@@ -249,10 +250,11 @@ static inline unsigned tri4_candidates(const struct tri4_ray *r, const struct tr
  *   component of the exact one (two products of three roundings each and
  *   a subtraction), which the finish's double n matches to 2^-50 S^2;
  *   so n2 >= 2^-20 S^4 in float makes the double n2 at least 0.99 of it,
- *   far above the finish's sliver threshold (ISECT_SLIVER_ROUNDINGS
- *   2^-24 size)^2 lmax <= 2^-36 (4S)^2 12 S^2 < 2^-28 S^4 (size, the
- *   largest sheared |x|, |y|, is at most 4S as |sx|, |sy| <= 1; every
- *   edge component at most 2S): the finish takes the plane distance
+ *   far above the finish's sliver threshold r^2 lmax, with
+ *   r = ISECT_SLIVER_ROUNDINGS 2^-24 size: r^2 lmax <= 2^-36 (4S)^2 12 S^2
+ *   < 2^-28 S^4 (size, the largest sheared |x|, |y|, is at most 4S as
+ *   |sx|, |sy| <= 1; every edge component is at most 2S), so the finish
+ *   takes the plane distance
  *   num / den (this holds while ISECT_SLIVER_ROUNDINGS is below 2^9);
  * - num = n . a and den = n . dir in float are within 46.3 u S^3 and
  *   40.3 u S^2 D of the finish's doubles (below 2^-18.4 S^3, 2^-18.6 S^2 D);
@@ -272,7 +274,8 @@ static inline unsigned tri4_before_tmin(const struct trace_ray *ray, const struc
                                         unsigned lanes)
 {
     const float tmin = ray->tmin;
-    const float d = isect_max(fabsf(ray->dir[0]), isect_max(fabsf(ray->dir[1]), fabsf(ray->dir[2])));
+    const float d =
+        isect_max(fabsf(ray->dir[0]), isect_max(fabsf(ray->dir[1]), fabsf(ray->dir[2])));
     if (!(d >= 0x1p-20f && d <= 0x1p20f && tmin >= 0x1p-40f && tmin <= 0x1p40f))
         return 0;
     const __m128 x0 = _mm_loadu_ps(p->v[0][0]);
