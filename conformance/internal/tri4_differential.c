@@ -82,8 +82,18 @@ static struct leaf_answer packet_leaf(const struct trace_ray *ray, const struct 
     tri4_ray_init(&r4, ray);
     float best = t_max;
     struct tri4_lanes lanes;
-    unsigned mask = tri4_candidates_lanes(&r4, p, 15u, t_max, &lanes);
+    /* Any hit: the filter with its early returns, as wide_packet_body
+     * calls it. */
+    unsigned mask = tri4_candidates_lanes_impl(&r4, p, 15u, t_max, &lanes, any_hit);
     *kept = mask;
+    if (any_hit && mask) {
+        /* As wide_packet_body: the lanes the ray starts on, refused in
+         * float when that is sure. */
+        unsigned near = 0;
+        for (unsigned l = 0; l < 4; l++)
+            near |= (unsigned)(lanes.t_lo[l] < ray->tmin) << l;
+        mask &= ~tri4_before_tmin(ray, p, mask & near);
+    }
     while (mask) {
         unsigned l = (unsigned)__builtin_ctz(mask);
         mask &= mask - 1u;
@@ -129,7 +139,21 @@ static void random_triangle(struct tg_rng *r, int kind, const float centre[3], f
     }
 }
 
-static void one_case(struct tg_rng *r, uint64_t *cases, uint64_t *kept_rejected, uint64_t *hits)
+/* A random power of ten in [10^lo, 10^hi]. */
+static float pow10_range(struct tg_rng *r, float lo, float hi)
+{
+    return powf(10.0f, tg_range(r, lo, hi));
+}
+
+/*
+ * shadow: the ray starts on (or, by a random distance, beside) a point
+ * of one of the triangles, towards a random light, with a small tmin, as
+ * a shadow ray does: the lane it starts on is kept by the filter and
+ * refused on t (tri4_before_tmin).  Each lane that test refuses
+ * must be one isect_triangle refuses (*refused counts them).
+ */
+static void one_case(struct tg_rng *r, uint64_t *cases, uint64_t *kept_rejected, uint64_t *hits,
+                     int shadow, uint64_t *refused)
 {
     float centre[3] = {0.0f, 0.0f, 0.0f};
     if (tg_below(r, 4) == 0) {
@@ -182,9 +206,34 @@ static void one_case(struct tg_rng *r, uint64_t *cases, uint64_t *kept_rejected,
         dir[tg_below(r, 3)] = tg_below(r, 2) ? 0.0f : -0.0f;
     if (dir[0] == 0.0f && dir[1] == 0.0f && dir[2] == 0.0f)
         dir[2] = 1.0f;
-    const float tmin = tg_below(r, 6) == 0 ? tg_range(r, 0.0f, 1.0f) : 0.0f;
+    float tmin = tg_below(r, 6) == 0 ? tg_range(r, 0.0f, 1.0f) : 0.0f;
     const int limit_kind = (int)tg_below(r, 4);
-    const float t_max = limit_kind == 0 ? tg_range(r, 0.5f, 1.5f) : INFINITY;
+    float t_max = limit_kind == 0 ? tg_range(r, 0.5f, 1.5f) : INFINITY;
+    if (shadow) {
+        /* From a point of t0 (an inside point, on an edge or at a vertex
+         * as aimed above, or inside), moved off it now and then, to a
+         * light; tmin a random small step, t_max 1 (at the light) or
+         * unbounded. */
+        const float *s0 = t0;
+        const float sa = tg_unit(r), sb = tg_unit(r);
+        const float off = tg_below(r, 2) ? pow10_range(r, -9.0f, -1.0f) : 0.0f;
+        float len2 = 0.0f;
+        for (int k = 0; k < 3; k++) {
+            org[k] = aim == 3 ? s0[k] + sa * (s0[3 + k] - s0[k]) * (1.0f - sb) +
+                                    sb * (s0[6 + k] - s0[k]) * (1.0f - sa)
+                              : target[k];
+            org[k] += off * tg_range(r, -1.0f, 1.0f);
+            const float light = centre[k] + tg_range(r, -4.0f, 4.0f) * pow10_range(r, 0.0f, 1.0f);
+            dir[k] = light - org[k];
+            len2 += dir[k] * dir[k];
+        }
+        if (dir[0] == 0.0f && dir[1] == 0.0f && dir[2] == 0.0f)
+            dir[2] = 1.0f;
+        if (len2 == 0.0f)
+            len2 = 1.0f;
+        tmin = pow10_range(r, -9.0f, -1.0f) / sqrtf(len2);
+        t_max = tg_below(r, 2) ? 1.0f : INFINITY;
+    }
 
     struct trace_ray ray;
     trace_ray_init(&ray, org, dir, tmin);
@@ -198,6 +247,17 @@ static void one_case(struct tg_rng *r, uint64_t *cases, uint64_t *kept_rejected,
     struct tri4_ray r4;
     tri4_ray_init(&r4, &ray);
     const unsigned mask = tri4_candidates(&r4, &p, 15u, t_max);
+    {
+        /* The any-hit filter's early returns refuse only what the filter
+         * refuses: the same mask. */
+        struct tri4_lanes early;
+        const unsigned mask_early = tri4_candidates_lanes_impl(&r4, &p, 15u, t_max, &early, 1);
+        if (mask_early != mask) {
+            if (failures < 10)
+                printf("  FAIL: early-out filter mask %x, filter %x\n", mask_early, mask);
+            failures++;
+        }
+    }
     for (int l = 0; l < 4; l++) {
         float t, u, w;
         int accepted = isect_triangle(&ray, tri[l], tri[l] + 3, tri[l] + 6, t_max, &t, &u, &w);
@@ -210,6 +270,29 @@ static void one_case(struct tg_rng *r, uint64_t *cases, uint64_t *kept_rejected,
         }
         if (!accepted && (mask >> l & 1u))
             (*kept_rejected)++;
+    }
+    /* Check 3: every kept lane tri4_before_tmin refuses (with
+     * t_lo < tmin, as tri4_lane_test asks it) the scalar test refuses,
+     * whatever the limit. */
+    {
+        struct tri4_lanes lanes;
+        const unsigned kept = tri4_candidates_lanes(&r4, &p, 15u, INFINITY, &lanes);
+        unsigned near = 0;
+        for (unsigned l = 0; l < 4; l++)
+            near |= (unsigned)(lanes.t_lo[l] < ray.tmin) << l;
+        const unsigned before = tri4_before_tmin(&ray, &p, kept & near);
+        for (unsigned l = 0; l < 4; l++) {
+            if (!(before >> l & 1u))
+                continue;
+            (*refused)++;
+            float t, u, w;
+            if (isect_triangle(&ray, tri[l], tri[l] + 3, tri[l] + 6, INFINITY, &t, &u, &w)) {
+                if (failures < 10)
+                    printf("  FAIL: lane %u refused before tmin %a but hit at t %a\n", l,
+                           ray.tmin, t);
+                failures++;
+            }
+        }
     }
     /* Check 2: the leaf's answer, closest and any. */
     for (int any = 0; any < 2; any++) {
@@ -232,13 +315,21 @@ int main(void)
 {
     struct tg_rng r;
     tg_seed(&r, 2017);
-    uint64_t cases = 0, kept_rejected = 0, hits = 0;
+    uint64_t cases = 0, kept_rejected = 0, hits = 0, refused = 0, refused_shadow = 0;
     for (int i = 0; i < 400000; i++)
-        one_case(&r, &cases, &kept_rejected, &hits);
+        one_case(&r, &cases, &kept_rejected, &hits, 0, &refused);
+    /* Shadow rays (a separate generator, so the cases above are the
+     * same as before). */
+    struct tg_rng rs;
+    tg_seed(&rs, 2013);
+    for (int i = 0; i < 200000; i++)
+        one_case(&rs, &cases, &kept_rejected, &hits, 1, &refused_shadow);
     printf("tri4_differential: %llu packets x 4 lanes, %llu scalar hits, %llu lanes kept by the "
-           "filter and rejected by the scalar test, %d failures\n",
+           "filter and rejected by the scalar test, %llu + %llu kept lanes refused before tmin "
+           "in float (ordinary, shadow rays), %d failures\n",
            (unsigned long long)cases, (unsigned long long)hits,
-           (unsigned long long)kept_rejected, failures);
+           (unsigned long long)kept_rejected, (unsigned long long)refused,
+           (unsigned long long)refused_shadow, failures);
     CHECKF(failures == 0, "the packet test differs from the scalar test on %d checks", failures);
     return failures ? 1 : 0;
 }

@@ -106,9 +106,13 @@ struct tri4_lanes {
  * with this t_max might accept; every other lane it rejects.  With out
  * not NULL, also the lanes' float values for isect_triangle_finish.
  */
-static inline unsigned tri4_candidates_lanes(const struct tri4_ray *r,
-                                             const struct tri4_packet *p, unsigned valid,
-                                             float t_max, struct tri4_lanes *out)
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline unsigned tri4_candidates_lanes_impl(const struct tri4_ray *r,
+                                                  const struct tri4_packet *p, unsigned valid,
+                                                  float t_max, struct tri4_lanes *out,
+                                                  int early_out)
 {
     /* Unaligned loads: a layout's packets are 32-byte aligned, but a
      * packet elsewhere (a test's, on the stack) need not be; on aligned
@@ -152,6 +156,13 @@ static inline unsigned tri4_candidates_lanes(const struct tri4_ray *r,
      * subtraction that underflows is exact).  So the scalar test's
      * double signs differ as well and it returns 0. */
     const __m128 mixed = _mm_and_ps(any_neg, any_pos);
+    /* early_out (the any-hit walk's leaf): when every lane's signs
+     * differ, every lane is refused (a mixed lane is neither kept nor
+     * deferred below), and the rest is not computed.  Most packets a
+     * shadow ray tests are such misses; the closest-hit walk keeps the
+     * branch-free filter. */
+    if (early_out && ((unsigned)_mm_movemask_ps(mixed) & valid) == valid)
+        return 0;
 
     /* The rejections that do not depend on U, V, W: the sheared depths'
      * range and the ray's interval through the triangle's box.  They
@@ -207,10 +218,107 @@ static inline unsigned tri4_candidates_lanes(const struct tri4_ray *r,
     return mask;
 }
 
+static inline unsigned tri4_candidates_lanes(const struct tri4_ray *r,
+                                             const struct tri4_packet *p, unsigned valid,
+                                             float t_max, struct tri4_lanes *out)
+{
+    return tri4_candidates_lanes_impl(r, p, valid, t_max, out, 0);
+}
+
 static inline unsigned tri4_candidates(const struct tri4_ray *r, const struct tri4_packet *p,
                                        unsigned valid, float t_max)
 {
     return tri4_candidates_lanes(r, p, valid, t_max, NULL);
+}
+
+/*
+ * The lanes of p among `lanes` on which isect_triangle_finish (a lane
+ * the filter kept, with the finish's own floats: the packet's vertices,
+ * ray->org, ray->dir) surely computes a t below ray->tmin before its
+ * clamp, so that with t_lo < tmin (the clamp then keeps the result below
+ * tmin, NaN included: see isect_clamp_to_box) it surely returns 0; a
+ * lane where that is not sure is not in the result.  For any-hit rays
+ * that start on a surface (shadow rays, whose tmin steps off it): their
+ * own triangle passes the float
+ * filter (the ray goes through it at t about 0) and fails only on t, and
+ * the finish's double-precision plane distance was most of a shadow
+ * ray's leaf work.  Here in float, with error bounds; a proof, not an
+ * estimate (u = 2^-24; S the largest |component| of a = v0 - org,
+ * e1 = v1 - v0, e2 = v2 - v0 in float, which are within (1 + u) of the
+ * exact differences; D the largest |dir| component):
+ * - the float cross product n of e1, e2 is within 8.1 u S^2 per
+ *   component of the exact one (two products of three roundings each and
+ *   a subtraction), which the finish's double n matches to 2^-50 S^2;
+ *   so n2 >= 2^-20 S^4 in float makes the double n2 at least 0.99 of it,
+ *   far above the finish's sliver threshold r^2 lmax, with
+ *   r = ISECT_SLIVER_ROUNDINGS 2^-24 size: r^2 lmax <= 2^-36 (4S)^2 12 S^2
+ *   < 2^-28 S^4 (size, the largest sheared |x|, |y|, is at most 4S as
+ *   |sx|, |sy| <= 1; every edge component is at most 2S), so the finish
+ *   takes the plane distance
+ *   num / den (this holds while ISECT_SLIVER_ROUNDINGS is below 2^9);
+ * - num = n . a and den = n . dir in float are within 46.3 u S^3 and
+ *   40.3 u S^2 D of the finish's doubles (below 2^-18.4 S^3, 2^-18.6 S^2 D);
+ *   the bounds used are 2^-16 S^3 and 2^-16 S^2 D, which also cover the
+ *   few roundings of the bounds and of the test itself;
+ * - so |num| + 2^-16 S^3 <= tmin / 4 (|den| - 2^-16 S^2 D) makes the
+ *   double den non-zero and |num / den| <= tmin / 4 (1 + 4u): its double
+ *   and then float rounding stay below tmin, and it is not NaN.
+ * S, D and tmin are held to ranges (2^-20 .. 2^20, 2^-40 .. 2^40 for
+ * tmin) where none of these products overflows and an underflow's
+ * absolute error (2^-149 per operation) is far below the bounds; NaN
+ * fails every test.  conformance/internal/tri4_differential checks each
+ * lane this refuses against isect_triangle.  Four lanes at once, in
+ * world coordinates (the bounds do not depend on the axes' order).
+ */
+static inline unsigned tri4_before_tmin(const struct trace_ray *ray, const struct tri4_packet *p,
+                                        unsigned lanes)
+{
+    const float tmin = ray->tmin;
+    const float d =
+        isect_max(fabsf(ray->dir[0]), isect_max(fabsf(ray->dir[1]), fabsf(ray->dir[2])));
+    if (!(d >= 0x1p-20f && d <= 0x1p20f && tmin >= 0x1p-40f && tmin <= 0x1p40f))
+        return 0;
+    const __m128 x0 = _mm_loadu_ps(p->v[0][0]);
+    const __m128 y0 = _mm_loadu_ps(p->v[0][1]);
+    const __m128 z0 = _mm_loadu_ps(p->v[0][2]);
+    const __m128 ax = _mm_sub_ps(x0, _mm_set1_ps(ray->org[0]));
+    const __m128 ay = _mm_sub_ps(y0, _mm_set1_ps(ray->org[1]));
+    const __m128 az = _mm_sub_ps(z0, _mm_set1_ps(ray->org[2]));
+    const __m128 e1x = _mm_sub_ps(_mm_loadu_ps(p->v[1][0]), x0);
+    const __m128 e1y = _mm_sub_ps(_mm_loadu_ps(p->v[1][1]), y0);
+    const __m128 e1z = _mm_sub_ps(_mm_loadu_ps(p->v[1][2]), z0);
+    const __m128 e2x = _mm_sub_ps(_mm_loadu_ps(p->v[2][0]), x0);
+    const __m128 e2y = _mm_sub_ps(_mm_loadu_ps(p->v[2][1]), y0);
+    const __m128 e2z = _mm_sub_ps(_mm_loadu_ps(p->v[2][2]), z0);
+    const __m128 sign = _mm_set1_ps(-0.0f);
+    __m128 sc = _mm_max_ps(_mm_andnot_ps(sign, ax),
+                           _mm_max_ps(_mm_andnot_ps(sign, ay), _mm_andnot_ps(sign, az)));
+    sc = _mm_max_ps(sc, _mm_max_ps(_mm_andnot_ps(sign, e1x),
+                                   _mm_max_ps(_mm_andnot_ps(sign, e1y), _mm_andnot_ps(sign, e1z))));
+    sc = _mm_max_ps(sc, _mm_max_ps(_mm_andnot_ps(sign, e2x),
+                                   _mm_max_ps(_mm_andnot_ps(sign, e2y), _mm_andnot_ps(sign, e2z))));
+    const __m128 nx = _mm_sub_ps(_mm_mul_ps(e1y, e2z), _mm_mul_ps(e1z, e2y));
+    const __m128 ny = _mm_sub_ps(_mm_mul_ps(e1z, e2x), _mm_mul_ps(e1x, e2z));
+    const __m128 nz = _mm_sub_ps(_mm_mul_ps(e1x, e2y), _mm_mul_ps(e1y, e2x));
+    const __m128 n2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(nx, nx), _mm_mul_ps(ny, ny)),
+                                 _mm_mul_ps(nz, nz));
+    const __m128 num = _mm_add_ps(_mm_add_ps(_mm_mul_ps(nx, ax), _mm_mul_ps(ny, ay)),
+                                  _mm_mul_ps(nz, az));
+    const __m128 den =
+        _mm_add_ps(_mm_add_ps(_mm_mul_ps(nx, _mm_set1_ps(ray->dir[0])),
+                              _mm_mul_ps(ny, _mm_set1_ps(ray->dir[1]))),
+                   _mm_mul_ps(nz, _mm_set1_ps(ray->dir[2])));
+    const __m128 s2 = _mm_mul_ps(sc, sc);
+    const __m128 err2 = _mm_mul_ps(_mm_set1_ps(0x1p-16f), s2); /* 2^-16 S^2, exact */
+    __m128 ok = _mm_and_ps(_mm_cmpge_ps(sc, _mm_set1_ps(0x1p-20f)),
+                           _mm_cmple_ps(sc, _mm_set1_ps(0x1p20f)));
+    ok = _mm_and_ps(ok, _mm_cmpge_ps(n2, _mm_mul_ps(_mm_mul_ps(_mm_set1_ps(0x1p-20f), s2), s2)));
+    const __m128 lhs = _mm_add_ps(_mm_andnot_ps(sign, num), _mm_mul_ps(err2, sc));
+    const __m128 rhs =
+        _mm_mul_ps(_mm_set1_ps(0.25f * tmin),
+                   _mm_sub_ps(_mm_andnot_ps(sign, den), _mm_mul_ps(err2, _mm_set1_ps(d))));
+    ok = _mm_and_ps(ok, _mm_cmple_ps(lhs, rhs));
+    return (unsigned)_mm_movemask_ps(ok) & lanes;
 }
 
 /*

@@ -119,7 +119,17 @@ static inline int wide_packet_body(struct wide_state *s, const struct tri4_packe
     /* An any-hit walk returns at its first hit: found stays 0. */
     float limit = !any_hit && s->found ? isect_next_up(s->best) : s->best;
     struct tri4_lanes lanes;
-    unsigned mask = tri4_candidates_lanes(&s->r4, p, (1u << n) - 1u, limit, &lanes);
+    unsigned mask = tri4_candidates_lanes_impl(&s->r4, p, (1u << n) - 1u, limit, &lanes, any_hit);
+    if (any_hit && mask) {
+        /* A lane the ray starts on (a shadow ray from a surface: t_lo <
+         * tmin) fails only on t, which the finish computes in double;
+         * tri4_before_tmin refuses it in float when that is sure. */
+        const unsigned near = (unsigned)_mm_movemask_ps(
+                                  _mm_cmplt_ps(_mm_loadu_ps(lanes.t_lo), s->r4.tmin)) &
+                              mask;
+        if (near)
+            mask &= ~tri4_before_tmin(s->ray, p, near);
+    }
     while (mask) {
         const unsigned l = (unsigned)__builtin_ctz(mask);
         mask &= mask - 1u;
@@ -586,6 +596,15 @@ static inline int walk_wide8_ray(const struct bvh4 *wide, struct wide_state *s, 
          * the ray (which the call may in principle have changed, so the
          * compiler reloads it anyway) instead of spilled and reloaded
          * around it. */
+#if defined(__GNUC__)
+        /* GCC sees that the packet call leaves the ray alone and keeps
+         * these vectors across it, spilling and reloading eight of them
+         * around every leaf; an any-hit walk (about three leaf visits per
+         * shadow ray) loads them again instead.  The empty asm hides
+         * nothing but the pointer's provenance. */
+        if (any_hit)
+            __asm__("" : "+r"(ray));
+#endif
         const __m256 org_x = _mm256_set1_ps(ray->org[0]);
         const __m256 org_y = _mm256_set1_ps(ray->org[1]);
         const __m256 org_z = _mm256_set1_ps(ray->org[2]);
