@@ -69,6 +69,7 @@
 
 #include <stdint.h>
 
+#include "base/alloc.h"
 #include "trace/bvh_layout.h"
 
 /* A binary subtree of at most this many triangles in consecutive slots
@@ -110,7 +111,9 @@ struct bvh4 {
     uint32_t packet_count;
     uint32_t *source;        /* width per node: the binary node of each lane (refit) */
     uint32_t *packet_slot;   /* per packet: its first leaf slot (refit) */
-    void *raw;
+    /* The nodes and packets in one block (rt_malloc_large: 2 MB huge
+     * pages where the OS offers them). */
+    struct rt_large_block raw;
 };
 
 /*
