@@ -336,6 +336,8 @@ int accel_collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *tr
     out->nodes8 = width == 8 ? (struct bvh8_node *)(void *)base : NULL;
     out->packets = pk;
     out->packet_count = packets;
+    out->prefetch_top =
+        bvh4_node_bytes(out) + bvh4_leaf_bytes(out) >= BVH_WIDE_PREFETCH_BYTES ? 1u : 0u;
     out->source = source;
     out->packet_slot = packet_slot;
     out->raw = raw;

@@ -45,6 +45,7 @@ struct wide_entry {
  * for the writes of missed lanes beyond the last entry (the push). */
 #define WIDE_STACK (7 * BVH_MAX_DEPTH + 16)
 
+
 /* The single-ray walks and their packet calls are functions of their
  * own (walk_wide8_ray says why). */
 #if defined(__GNUC__)
@@ -581,6 +582,9 @@ static inline int walk_wide8_ray(const struct bvh4 *wide, struct wide_state *s, 
     uint64_t node_tests = 0;
     uint64_t tri_tests = 0;
     int r4_ready = 0;
+    /* Per layout: only a layout beyond the caches pays for the stack
+     * top's prefetch (bvh4_layout.h). */
+    const int prefetch_top = wide->prefetch_top != 0;
     for (;;) {
         /* The ray's vectors, broadcast again after each leaf call from
          * the ray (which the call may in principle have changed, so the
@@ -634,6 +638,20 @@ static inline int walk_wide8_ray(const struct bvh4 *wide, struct wide_state *s, 
                 } else {
                     wide8_push(n, octant, hit, t0, order_shift, st_child, st_count, st_t,
                                &sp, &cur, &cur_count);
+                    if (prefetch_top) {
+                        /* The new stack top, whose subtree comes after
+                         * cur's: prefetched now (its bounds, or the
+                         * first three lines of its leaf's packet), so
+                         * that its load overlaps cur's subtree instead
+                         * of following it (Embree prefetches the nodes
+                         * it will visit the same way, at the visit). */
+                        const uint32_t top = st_child[sp - 1];
+                        const char *a = st_count[sp - 1] ? (const char *)&packets[top]
+                                                         : (const char *)&nodes[top];
+                        _mm_prefetch(a, _MM_HINT_T0);
+                        _mm_prefetch(a + 64, _MM_HINT_T0);
+                        _mm_prefetch(a + 128, _MM_HINT_T0);
+                    }
                 }
                 if (!cur_count)
                     wide_prefetch(&nodes[cur], sizeof(struct bvh8_node));
