@@ -643,8 +643,7 @@ static inline int walk_wide8_ray(const struct bvh4 *wide, struct wide_state *s, 
                          * cur's: prefetched now (its bounds, or the
                          * first three lines of its leaf's packet), so
                          * that its load overlaps cur's subtree instead
-                         * of following it (Embree prefetches the nodes
-                         * it will visit the same way, at the visit). */
+                         * of following it. */
                         const uint32_t top = st_child[sp - 1];
                         const char *a = st_count[sp - 1] ? (const char *)&packets[top]
                                                          : (const char *)&nodes[top];
