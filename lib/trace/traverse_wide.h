@@ -45,7 +45,6 @@ struct wide_entry {
  * for the writes of missed lanes beyond the last entry (the push). */
 #define WIDE_STACK (7 * BVH_MAX_DEPTH + 16)
 
-
 /* The single-ray walks and their packet calls are functions of their
  * own (walk_wide8_ray says why). */
 #if defined(__GNUC__)
