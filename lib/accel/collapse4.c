@@ -252,7 +252,8 @@ int accel_collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *tr
     uint32_t *span = rt_calloc(bvh->node_count, sizeof(uint32_t));
     struct scratch_node *scratch = rt_calloc(cap, sizeof(*scratch));
     uint32_t *todo = rt_calloc(cap, sizeof(uint32_t));
-    void *raw = NULL;
+    struct rt_large_block raw = {NULL, 0};
+    char *base = NULL;
     uint32_t *source = NULL;
     uint32_t *packet_slot = NULL;
     if (!first || !span || !scratch || !todo || subtree_spans(bvh, first, span))
@@ -299,12 +300,11 @@ int accel_collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *tr
     }
     size_t node_size = width == 4 ? sizeof(struct bvh4_node) : sizeof(struct bvh8_node);
     size_t node_bytes = (size_t)count * node_size;
-    raw = rt_malloc(node_bytes + (size_t)packets * sizeof(struct tri4_packet) + 63);
+    base = rt_malloc_large(node_bytes + (size_t)packets * sizeof(struct tri4_packet), &raw);
     source = rt_calloc((size_t)count * width, sizeof(uint32_t));
     packet_slot = rt_calloc(packets ? packets : 1, sizeof(uint32_t));
-    if (!raw || !source || !packet_slot)
+    if (!base || !source || !packet_slot)
         goto fail;
-    char *base = (char *)(((uintptr_t)raw + 63) & ~(uintptr_t)63);
     struct tri4_packet *pk = (struct tri4_packet *)(void *)(base + node_bytes);
     for (uint32_t w = 0; w < count; w++) {
         struct scratch_node *s = &scratch[w];
@@ -336,6 +336,8 @@ int accel_collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *tr
     out->nodes8 = width == 8 ? (struct bvh8_node *)(void *)base : NULL;
     out->packets = pk;
     out->packet_count = packets;
+    out->prefetch_top =
+        bvh4_node_bytes(out) + bvh4_leaf_bytes(out) >= BVH_WIDE_PREFETCH_BYTES ? 1u : 0u;
     out->source = source;
     out->packet_slot = packet_slot;
     out->raw = raw;
@@ -345,7 +347,7 @@ fail:
     rt_free(span);
     rt_free(scratch);
     rt_free(todo);
-    rt_free(raw);
+    rt_free_large(&raw);
     rt_free(source);
     rt_free(packet_slot);
     return -1;
@@ -404,7 +406,7 @@ uint64_t bvh4_leaf_bytes(const struct bvh4 *wide)
 
 void bvh4_release(struct bvh4 *wide)
 {
-    rt_free(wide->raw);
+    rt_free_large(&wide->raw);
     rt_free(wide->source);
     rt_free(wide->packet_slot);
     memset(wide, 0, sizeof(*wide));

@@ -2,11 +2,22 @@
 /*
  * alloc.c - allocation wrapper with fault injection (see alloc.h).
  */
+/* madvise and MAP_ANONYMOUS are not POSIX 2008: the build's
+ * _POSIX_C_SOURCE alone does not declare them. */
+#if defined(__linux__)
+#define _DEFAULT_SOURCE
+#endif
+
 #include "base/alloc.h"
 #include "base/atomic.h"
 
 #include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 /* Remaining successful allocations before injected failures start; < 0
  * means never.  Accessed atomically: builds and renders allocate from
@@ -62,6 +73,54 @@ void *rt_realloc_array(void *ptr, size_t count, size_t size)
 void rt_free(void *ptr)
 {
     free(ptr);
+}
+
+/* 2 MB: the x86-64 huge page, and the smallest block worth advising. */
+#define LARGE_PAGE ((size_t)2 << 20)
+
+void *rt_malloc_large(size_t size, struct rt_large_block *handle)
+{
+    memset(handle, 0, sizeof(*handle));
+#if defined(__linux__) && defined(MADV_HUGEPAGE) && defined(MAP_ANONYMOUS)
+    if (size >= LARGE_PAGE && size <= SIZE_MAX - 2 * LARGE_PAGE) {
+        if (injected_failure())
+            return NULL;
+        /* Room to align the start to 2 MB and to end on a 2 MB boundary:
+         * the kernel backs only whole, aligned 2 MB ranges with huge
+         * pages. */
+        const size_t bytes = (size + 2 * LARGE_PAGE - 1) & ~(LARGE_PAGE - 1);
+        void *map = mmap(NULL, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+        if (map == MAP_FAILED)
+            return NULL;
+        char *p = (char *)(((uintptr_t)map + LARGE_PAGE - 1) & ~(uintptr_t)(LARGE_PAGE - 1));
+        /* Advice only: on failure (THP disabled) the block is still good. */
+        (void)madvise(p, bytes - (size_t)(p - (char *)map), MADV_HUGEPAGE);
+        handle->base = map;
+        handle->bytes = bytes;
+        return p;
+    }
+#endif
+    /* 64-byte alignment by hand: C99 has no aligned_alloc. */
+    if (size > SIZE_MAX - 63)
+        return NULL;
+    void *raw = rt_malloc(size + 63);
+    if (!raw)
+        return NULL;
+    handle->base = raw;
+    return (void *)(((uintptr_t)raw + 63) & ~(uintptr_t)63);
+}
+
+void rt_free_large(struct rt_large_block *handle)
+{
+#if defined(__linux__) && defined(MADV_HUGEPAGE) && defined(MAP_ANONYMOUS)
+    if (handle->bytes) {
+        (void)munmap(handle->base, handle->bytes);
+        memset(handle, 0, sizeof(*handle));
+        return;
+    }
+#endif
+    rt_free(handle->base);
+    memset(handle, 0, sizeof(*handle));
 }
 
 void rt_alloc_fail_after(long n)

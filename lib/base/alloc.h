@@ -20,6 +20,22 @@ void *rt_calloc(size_t count, size_t size);
 void *rt_realloc_array(void *ptr, size_t count, size_t size);
 void rt_free(void *ptr);
 
+/* A large, long-lived, read-mostly block (an object's wide traversal
+ * layout): `size` bytes aligned to 64, which on Linux come from a fresh
+ * anonymous mapping aligned to 2 MB and advised for transparent huge pages
+ * (madvise MADV_HUGEPAGE) before any byte of it is touched, so that a
+ * random ray's node and leaf loads miss the TLB less (Embree advises its
+ * blocks the same way); elsewhere, or for a block under 2 MB, rt_malloc.
+ * Fails like rt_malloc (and counts for the fault-injection hooks below).
+ * *handle receives what rt_free_large needs; the block is not zeroed. */
+struct rt_large_block {
+    void *base;   /* what was allocated */
+    size_t bytes; /* the mapping's length, 0 for an rt_malloc block */
+};
+void *rt_malloc_large(size_t size, struct rt_large_block *handle);
+/* Frees a block of rt_malloc_large; safe on a zeroed handle. */
+void rt_free_large(struct rt_large_block *handle);
+
 /* Test hook: after `n` more successful allocations every allocation fails
  * until rt_alloc_fail_reset() (n < 0 disables).  Process-wide: this is the
  * single piece of global mutable state outside a context, and only the

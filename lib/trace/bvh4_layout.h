@@ -69,6 +69,7 @@
 
 #include <stdint.h>
 
+#include "base/alloc.h"
 #include "trace/bvh_layout.h"
 
 /* A binary subtree of at most this many triangles in consecutive slots
@@ -77,6 +78,11 @@
 #define BVH_WIDE_MERGE 4
 /* A leaf lane's triangles: a binary leaf holds up to BVH_MAX_LEAF_SIZE. */
 #define BVH_WIDE_MAX_LEAF (BVH_MAX_LEAF_SIZE > BVH_WIDE_MERGE ? BVH_MAX_LEAF_SIZE : BVH_WIDE_MERGE)
+
+/* The layout size from which the walk prefetches the stack top: about
+ * one core's L2 cache (0.5-2 MB on current x86 cores).  A heuristic
+ * only: the answers do not depend on it. */
+#define BVH_WIDE_PREFETCH_BYTES ((uint64_t)1 << 20)
 
 struct bvh4_node {
     float bounds[6][4];
@@ -110,7 +116,14 @@ struct bvh4 {
     uint32_t packet_count;
     uint32_t *source;        /* width per node: the binary node of each lane (refit) */
     uint32_t *packet_slot;   /* per packet: its first leaf slot (refit) */
-    void *raw;
+    /* 1 when nodes and packets take BVH_WIDE_PREFETCH_BYTES or more: the
+     * 8-wide single-ray walk then prefetches the stack top after each
+     * push (traverse_wide.h); a smaller layout stays in the caches and
+     * the prefetch would only cost instructions. */
+    uint32_t prefetch_top;
+    /* The nodes and packets in one block (rt_malloc_large: 2 MB huge
+     * pages where the OS offers them). */
+    struct rt_large_block raw;
 };
 
 /*

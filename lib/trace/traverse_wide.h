@@ -591,6 +591,9 @@ static inline int walk_wide8_ray(const struct bvh4 *wide, struct wide_state *s, 
     uint64_t node_tests = 0;
     uint64_t tri_tests = 0;
     int r4_ready = 0;
+    /* Per layout: only a layout beyond the caches pays for the stack
+     * top's prefetch (bvh4_layout.h). */
+    const int prefetch_top = wide->prefetch_top != 0;
     for (;;) {
         /* The ray's vectors, broadcast again after each leaf call from
          * the ray (which the call may in principle have changed, so the
@@ -653,6 +656,19 @@ static inline int walk_wide8_ray(const struct bvh4 *wide, struct wide_state *s, 
                 } else {
                     wide8_push(n, octant, hit, t0, order_shift, st_child, st_count, st_t,
                                &sp, &cur, &cur_count);
+                    if (prefetch_top) {
+                        /* The new stack top, whose subtree comes after
+                         * cur's: prefetched now (its bounds, or the
+                         * first three lines of its leaf's packet), so
+                         * that its load overlaps cur's subtree instead
+                         * of following it. */
+                        const uint32_t top = st_child[sp - 1];
+                        const char *a = st_count[sp - 1] ? (const char *)&packets[top]
+                                                         : (const char *)&nodes[top];
+                        _mm_prefetch(a, _MM_HINT_T0);
+                        _mm_prefetch(a + 64, _MM_HINT_T0);
+                        _mm_prefetch(a + 128, _MM_HINT_T0);
+                    }
                 }
                 if (!cur_count)
                     wide_prefetch(&nodes[cur], sizeof(struct bvh8_node));
