@@ -102,25 +102,37 @@ static int is_leaf_lane(const struct bvh *bvh, const uint32_t *span, uint32_t i)
 static int gather(const struct bvh *bvh, const uint32_t *span, uint32_t inner, uint32_t width,
                   uint32_t out[MAX_WIDTH])
 {
+    /* Each lane's area and openness, computed once when the lane is
+     * added rather than at every step (the same values, so the same
+     * picks). */
+    float area[MAX_WIDTH];
+    int openable[MAX_WIDTH];
     uint32_t n = 2;
     out[0] = bvh->nodes[inner].first;
     out[1] = out[0] + 1;
+    for (uint32_t i = 0; i < 2; i++) {
+        area[i] = node_area(&bvh->nodes[out[i]]);
+        openable[i] = !is_leaf_lane(bvh, span, out[i]);
+    }
     while (n < width) {
         int pick = -1;
         float best = -1.0f;
         for (uint32_t i = 0; i < n; i++) {
-            const struct bvh_node *c = &bvh->nodes[out[i]];
-            float a = node_area(c);
-            if (!is_leaf_lane(bvh, span, out[i]) && (pick < 0 || a > best)) {
+            if (openable[i] && (pick < 0 || area[i] > best)) {
                 pick = (int)i;
-                best = a;
+                best = area[i];
             }
         }
         if (pick < 0)
             break;
         uint32_t first = bvh->nodes[out[pick]].first;
         out[pick] = first;
-        out[n++] = first + 1;
+        out[n] = first + 1;
+        area[pick] = node_area(&bvh->nodes[first]);
+        openable[pick] = !is_leaf_lane(bvh, span, first);
+        area[n] = node_area(&bvh->nodes[first + 1]);
+        openable[n] = !is_leaf_lane(bvh, span, first + 1);
+        n++;
     }
     return (int)n;
 }
