@@ -567,6 +567,13 @@ int bench_embree_section(const struct bench_options *opts, struct bench_mesh *me
         rtcReleaseDevice(device2);
     rt_pool_destroy(pool2);
 
+    /* --only ...,build: the build table alone (A/B runs of a builder). */
+    if (opts->only && bench_strategy_selected(opts->only, "build")) {
+        bench_share_report();
+        rtcReleaseDevice(device);
+        return failed ? -1 : 0;
+    }
+
     int64_t embree_bytes = 0;
     rtcSetDeviceMemoryMonitorFunction(device, embree_memory, &embree_bytes);
     report_printf("\nMemory, bytes per triangle of the acceleration structure: ours, nodes "

@@ -96,7 +96,7 @@ static void usage(FILE *f)
             "  --only KEYS  bart-strategies: only these strategies (refit,rebuild,median,\n"
             "             heuristic,restructure,async,automatic); embree: only these\n"
             "             paths (ours,medium,high; the build table also low), with\n"
-            "             --threads 1|2 one thread count\n"
+            "             --threads 1|2 one thread count; `build`: the build table only\n"
             "  --thread-clock  one-thread trace runs and builds timed by the thread's CPU\n"
             "             clock\n"
             "  --out DIR  write results.md, results.csv and PNG plots (gnuplot) to DIR\n"
