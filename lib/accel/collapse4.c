@@ -38,14 +38,48 @@ static float node_area(const struct bvh_node *n)
     return dx * dy + dy * dz + dz * dx;
 }
 
+/* span[i], first[i] from the children's (visited before i). */
+static void span_step(const struct bvh *bvh, uint32_t i, uint32_t *first, uint32_t *span)
+{
+    const struct bvh_node *node = &bvh->nodes[i];
+    if (node->count) {
+        first[i] = node->first;
+        span[i] = node->count;
+        return;
+    }
+    uint32_t l = node->first;
+    uint32_t r = l + 1;
+    span[i] = 0;
+    if (span[l] && span[r] && first[l] + span[l] == first[r]) {
+        first[i] = first[l];
+        span[i] = span[l] + span[r];
+    } else if (span[l] && span[r] && first[r] + span[r] == first[l]) {
+        first[i] = first[r];
+        span[i] = span[l] + span[r];
+    }
+}
+
 /* Per binary node, the triangles of its subtree when they occupy
  * consecutive leaf slots (span[n] of them from first[n]), else span 0.
  * Builders partition slots in place, so a subtree's slots are normally
  * consecutive; restructuring can break that, and such a subtree is then
- * simply never merged.  Children are visited before parents: reverse
- * preorder.  Returns 0 or -1 on allocation failure. */
+ * simply never merged.  Children are visited before parents: in
+ * decreasing index order when every inner node's children come after it
+ * (what the builders write, checked here in one sequential pass),
+ * otherwise in reverse preorder.  Returns 0 or -1 on allocation failure. */
 static int subtree_spans(const struct bvh *bvh, uint32_t *first, uint32_t *span)
 {
+    int children_after = 1;
+    for (uint32_t i = 0; i < bvh->node_count && children_after; i++) {
+        const struct bvh_node *node = &bvh->nodes[i];
+        children_after = node->count != 0 ||
+                         (node->first > i && node->first < bvh->node_count - 1);
+    }
+    if (children_after) {
+        for (uint32_t i = bvh->node_count; i-- > 0;)
+            span_step(bvh, i, first, span);
+        return 0;
+    }
     uint32_t *pre = rt_calloc(bvh->node_count, sizeof(uint32_t));
     uint32_t *stack = rt_calloc(BVH_MAX_DEPTH + 2, sizeof(uint32_t));
     if (!pre || !stack) {
@@ -64,25 +98,8 @@ static int subtree_spans(const struct bvh *bvh, uint32_t *first, uint32_t *span)
             stack[sp++] = bvh->nodes[i].first + 1;
         }
     }
-    while (n) {
-        uint32_t i = pre[--n];
-        const struct bvh_node *node = &bvh->nodes[i];
-        if (node->count) {
-            first[i] = node->first;
-            span[i] = node->count;
-            continue;
-        }
-        uint32_t l = node->first;
-        uint32_t r = l + 1;
-        span[i] = 0;
-        if (span[l] && span[r] && first[l] + span[l] == first[r]) {
-            first[i] = first[l];
-            span[i] = span[l] + span[r];
-        } else if (span[l] && span[r] && first[r] + span[r] == first[l]) {
-            first[i] = first[r];
-            span[i] = span[l] + span[r];
-        }
-    }
+    while (n)
+        span_step(bvh, pre[--n], first, span);
     rt_free(pre);
     rt_free(stack);
     return 0;
