@@ -288,11 +288,20 @@ void accel_set_packet_lane(struct tri4_packet *p, uint32_t lane, const float v[9
 static void fill_packet(struct tri4_packet *p, const float *tri, const uint32_t *prim_index,
                         uint32_t slot, uint32_t n)
 {
-    for (uint32_t l = 0; l < 4; l++) {
-        uint32_t s = slot + (l < n ? l : n - 1);
-        accel_set_packet_lane(p, l, &tri[9 * (size_t)s]);
+    for (uint32_t l = 0; l < n; l++) {
+        accel_set_packet_lane(p, l, &tri[9 * (size_t)(slot + l)]);
         if (prim_index)
-            p->prim[l] = prim_index[s];
+            p->prim[l] = prim_index[slot + l];
+    }
+    /* The repeats are copies of lane n - 1 (its zero-area test is not
+     * redone). */
+    for (uint32_t l = n; l < 4; l++) {
+        for (int j = 0; j < 3; j++) {
+            for (int k = 0; k < 3; k++)
+                p->v[j][k][l] = p->v[j][k][n - 1];
+        }
+        if (prim_index)
+            p->prim[l] = p->prim[n - 1];
     }
 }
 
