@@ -263,23 +263,9 @@ static int find_best_split(const struct bins *bins, int bin_count, const struct 
  * effectively random, so a branch per element would mispredict about half
  * the time (the observation behind Edelkamp and Weiss 2016,
  * "BlockQuicksort"); measured 4x faster than Hoare's scheme on 1M refs.
- * The side bounds are kept without a select either: the centroid plus -0
- * (itself, bit for bit, for any finite value) joins its own side's
- * bounds, the centroid plus +inf or -inf (the identity of min or max)
- * the other side's, so the bounds are those of selecting the centroid or
- * the identity, in four additions instead of twelve mask operations.
+ * The side bounds are kept without a select either (build_side_offset,
+ * build_internal.h).
  */
-#define KEEP -0.0f, -0.0f, -0.0f, -0.0f
-#define DROP_LO INFINITY, INFINITY, INFINITY, INFINITY
-#define DROP_HI -INFINITY, -INFINITY, -INFINITY, -INFINITY
-/* [left][left lo, left hi, right lo, right hi]: what a centroid on that
- * side adds before joining each of the four bounds. */
-static const float side_offset[2][4][4] = {{{DROP_LO}, {DROP_HI}, {KEEP}, {KEEP}},
-                                           {{KEEP}, {KEEP}, {DROP_LO}, {DROP_HI}}};
-#undef KEEP
-#undef DROP_LO
-#undef DROP_HI
-
 static uint32_t partition_refs(struct build_ref *refs, uint32_t begin, uint32_t end,
                                const struct binning *bn, const struct split *s,
                                struct cbounds *left_cb, struct cbounds *right_cb)
@@ -297,7 +283,7 @@ static uint32_t partition_refs(struct build_ref *refs, uint32_t begin, uint32_t 
         int32_t bin[4];
         bins_of(bn, c, bin);
         const uint32_t left = bin[axis] < plane;
-        const float(*off)[4] = side_offset[left];
+        const float(*off)[4] = build_side_offset[left];
         llo = vec4_min(llo, vec4_add(c, vec4_load(off[0])));
         lhi = vec4_max(lhi, vec4_add(c, vec4_load(off[1])));
         rlo = vec4_min(rlo, vec4_add(c, vec4_load(off[2])));
