@@ -227,6 +227,12 @@ struct bench_accel {
  * or -1 on allocation failure. */
 int bench_accel_build(struct bench_accel *acc, const struct bench_mesh *mesh,
                       const struct bvh_build_params *params);
+/* The same with the tree built by accel_build_parallel (binned SAH at the
+ * top, binned SAH subtrees) on the threads of pool (base/pool.h), as a
+ * context builds large objects; pool NULL: bench_accel_build. */
+struct rt_pool;
+int bench_accel_build_pool(struct bench_accel *acc, const struct bench_mesh *mesh,
+                           const struct bvh_build_params *params, struct rt_pool *pool);
 void bench_accel_release(struct bench_accel *acc);
 
 /*
@@ -258,6 +264,12 @@ typedef void (*bench_kernel_fn)(void *ctx, const RTray *rays, uint32_t begin, ui
 /* --thread-clock: bench_run_parallel times one-thread runs by the
  * thread's CPU clock instead of the wall clock. */
 void bench_use_thread_clock(void);
+/* The clock a timed step of `threads` threads that runs on the calling
+ * thread reads: the calling thread's CPU clock (ms) under --thread-clock
+ * when threads is 1, else rt_now_ms. */
+double bench_clock_ms(int threads);
+/* 1 under --thread-clock. */
+int bench_thread_clock(void);
 double bench_run_parallel(bench_kernel_fn kernel, void *ctx, const struct bench_rays *set,
                           struct bench_hit *hits, int threads);
 

@@ -6,12 +6,17 @@
  *
  * Build: ours is the library default (binned SAH, BVH_DEFAULT_BINS bins),
  * timed from triangles to a traceable structure (boxes + accel_build +
- * accel_gather_triangles), one thread.  Embree: one triangle geometry in
- * one scene, rtcCommitScene timed alone (the buffers are filled before
- * the clock starts), at RTC_BUILD_QUALITY_MEDIUM (Embree's default) and
- * RTC_BUILD_QUALITY_HIGH (spatial splits), on a device created with
- * "threads=1" so that both builders use one thread.  A fresh scene per
- * run: committing an unchanged scene does no work.
+ * accel_gather_triangles + accel_collapse_wide), on one thread and on
+ * two (accel_build_parallel on a 2-thread pool, the rest serial).
+ * Embree: one triangle geometry in one scene, rtcCommitScene timed alone
+ * (the buffers are filled before the clock starts), at
+ * RTC_BUILD_QUALITY_LOW (Morton builder), RTC_BUILD_QUALITY_MEDIUM
+ * (Embree's default) and RTC_BUILD_QUALITY_HIGH (spatial splits), on a
+ * device created with "threads=1" or "threads=2" so that both builders
+ * use the same number of threads.  A fresh scene per run: committing an
+ * unchanged scene does no work.  Under --thread-clock the one-thread
+ * builds are timed by the calling thread's CPU clock (Embree's
+ * one-thread device builds on the calling thread).
  *
  * Trace: rtcIntersect1 / rtcOccluded1 in a scalar loop, driven by the same
  * bench_run_parallel as our kernels on 1 and 2 threads, over the same ray
@@ -25,6 +30,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/pool.h"
 #include "base/timer.h"
 #include "bench.h"
 #include "bench_embree.h"
@@ -44,10 +50,11 @@ const char *bench_embree_version(void)
     return RTC_VERSION_STRING;
 }
 
-/* A committed scene over the mesh; *commit_ms gets rtcCommitScene's time.
- * NULL on failure. */
+/* A committed scene over the mesh; *commit_ms gets rtcCommitScene's time
+ * on bench_clock_ms(threads), `threads` being the device's.  NULL on
+ * failure. */
 static RTCScene embree_scene(RTCDevice device, const struct bench_mesh *mesh,
-                             enum RTCBuildQuality quality, double *commit_ms)
+                             enum RTCBuildQuality quality, int threads, double *commit_ms)
 {
     RTCScene scene = rtcNewScene(device);
     RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
@@ -72,9 +79,10 @@ static RTCScene embree_scene(RTCDevice device, const struct bench_mesh *mesh,
     geom = NULL;
     double cpu_start = bench_cpu_ms();
     double start = rt_now_ms();
+    double clock_start = bench_clock_ms(threads);
     rtcCommitScene(scene);
-    *commit_ms = rt_now_ms() - start;
-    bench_share_add(1, *commit_ms, bench_cpu_ms() - cpu_start);
+    *commit_ms = bench_clock_ms(threads) - clock_start;
+    bench_share_add(threads, rt_now_ms() - start, bench_cpu_ms() - cpu_start);
     if (rtcGetDeviceError(device) != RTC_ERROR_NONE)
         goto fail;
     return scene;
@@ -125,28 +133,49 @@ static void embree_kernel_any(void *ctx, const RTray *rays, uint32_t begin, uint
     }
 }
 
-/* Build times: ours and Embree's two qualities, interleaved runs. */
-static int embree_build_row(const struct bench_options *opts, RTCDevice device,
-                            const struct bench_mesh *mesh)
+/* The build table's Embree qualities: LOW (Embree's fastest builder,
+ * Morton codes), MEDIUM (its default, binned SAH) and HIGH (binned SAH
+ * with spatial splits). */
+#define BUILD_QUALITIES 3
+static const enum RTCBuildQuality build_qualities[BUILD_QUALITIES] = {
+    RTC_BUILD_QUALITY_LOW, RTC_BUILD_QUALITY_MEDIUM, RTC_BUILD_QUALITY_HIGH};
+static const char *const build_quality_names[BUILD_QUALITIES] = {"LOW", "MEDIUM", "HIGH"};
+static const char *const build_quality_keys[BUILD_QUALITIES] = {"low", "medium", "high"};
+
+/* Build times on `threads` threads: ours (serial binned SAH on one
+ * thread, accel_build_parallel on pool otherwise) and Embree's qualities
+ * on a device of that many threads, interleaved runs; --only picks the
+ * paths (ours, low, medium, high). */
+static int embree_build_row(const struct bench_options *opts, RTCDevice device, int threads,
+                            struct rt_pool *pool, const struct bench_mesh *mesh)
 {
-    double *times = malloc((size_t)(1 + QUALITIES) * opts->runs * sizeof(*times));
+    double *times = calloc((size_t)(1 + BUILD_QUALITIES) * opts->runs, sizeof(*times));
     if (!times)
         return -1;
+    int run_path[1 + BUILD_QUALITIES];
+    for (int p = 0; p < 1 + BUILD_QUALITIES; p++)
+        run_path[p] = !opts->only ||
+                      bench_strategy_selected(opts->only, p ? build_quality_keys[p - 1] : "ours");
     for (int run = 0; run < opts->runs; run++) {
-        struct bench_accel acc;
-        double cpu_start = bench_cpu_ms();
-        double start = rt_now_ms();
-        int rc = bench_accel_build(&acc, mesh, NULL);
-        times[run] = rt_now_ms() - start;
-        bench_share_add(1, times[run], bench_cpu_ms() - cpu_start);
-        if (rc) {
-            free(times);
-            return -1;
+        if (run_path[0]) {
+            struct bench_accel acc;
+            double cpu_start = bench_cpu_ms();
+            double start = rt_now_ms();
+            double clock_start = bench_clock_ms(threads);
+            int rc = bench_accel_build_pool(&acc, mesh, NULL, threads > 1 ? pool : NULL);
+            times[run] = bench_clock_ms(threads) - clock_start;
+            bench_share_add(threads, rt_now_ms() - start, bench_cpu_ms() - cpu_start);
+            if (rc) {
+                free(times);
+                return -1;
+            }
+            bench_accel_release(&acc);
         }
-        bench_accel_release(&acc);
-        for (int q = 0; q < QUALITIES; q++) {
+        for (int q = 0; q < BUILD_QUALITIES; q++) {
             double ms;
-            RTCScene scene = embree_scene(device, mesh, qualities[q], &ms);
+            if (!run_path[1 + q])
+                continue;
+            RTCScene scene = embree_scene(device, mesh, build_qualities[q], threads, &ms);
             if (!scene) {
                 free(times);
                 return -1;
@@ -155,16 +184,30 @@ static int embree_build_row(const struct bench_options *opts, RTCDevice device,
             times[(1 + q) * opts->runs + run] = ms;
         }
     }
-    double med[1 + QUALITIES];
-    for (int i = 0; i < 1 + QUALITIES; i++)
-        med[i] = bench_median(&times[i * opts->runs], opts->runs);
-    report_row("%s|%u|%.2f|%.2f|%.2f|%.2f|%.2f", mesh->name, mesh->tri_count, med[0], med[1],
-               med[2], med[1] > 0 ? med[0] / med[1] : 0.0, med[2] > 0 ? med[0] / med[2] : 0.0);
+    double med[1 + BUILD_QUALITIES];
+    char cell[1 + BUILD_QUALITIES][24];
+    char ratio[BUILD_QUALITIES][24];
+    for (int i = 0; i < 1 + BUILD_QUALITIES; i++) {
+        med[i] = run_path[i] ? bench_median(&times[i * opts->runs], opts->runs) : 0.0;
+        snprintf(cell[i], sizeof(cell[i]), run_path[i] ? "%.2f" : "-", med[i]);
+    }
+    for (int q = 0; q < BUILD_QUALITIES; q++)
+        snprintf(ratio[q], sizeof(ratio[q]), run_path[0] && med[1 + q] > 0 ? "%.2f" : "-",
+                 med[1 + q] > 0 ? med[0] / med[1 + q] : 0.0);
+    report_row("%s|%u|%d|%s|%s|%s|%s|%s|%s|%s", mesh->name, mesh->tri_count, threads, cell[0],
+               cell[1], cell[2], cell[3], ratio[0], ratio[1], ratio[2]);
+    /* One thread keeps the keys earlier results.csv files have. */
+    const char *suffix = threads == 1 ? "" : "_2t";
     char key[96];
-    snprintf(key, sizeof(key), "embree.%s.build.ours_ms", mesh->name);
-    report_metric(key, med[0], 0);
-    for (int q = 0; q < QUALITIES; q++) {
-        snprintf(key, sizeof(key), "embree.%s.build.embree_%s_ms", mesh->name, quality_names[q]);
+    if (run_path[0]) {
+        snprintf(key, sizeof(key), "embree.%s.build%s.ours_ms", mesh->name, suffix);
+        report_metric(key, med[0], 0);
+    }
+    for (int q = 0; q < BUILD_QUALITIES; q++) {
+        if (!run_path[1 + q])
+            continue;
+        snprintf(key, sizeof(key), "embree.%s.build%s.embree_%s_ms", mesh->name, suffix,
+                 build_quality_names[q]);
         report_metric(key, med[1 + q], -1);
     }
     free(times);
@@ -295,7 +338,7 @@ static int embree_trace_mesh(const struct bench_options *opts, RTCDevice device,
         goto out;
     for (int q = 0; q < QUALITIES; q++) {
         double ms;
-        if (!(scenes[q] = embree_scene(device, mesh, qualities[q], &ms)))
+        if (!(scenes[q] = embree_scene(device, mesh, qualities[q], 1, &ms)))
             goto out;
     }
     uint32_t max_rays = sets[0].count > sets[1].count ? sets[0].count : sets[1].count;
@@ -408,7 +451,7 @@ static int embree_memory_row(RTCDevice device, int64_t *counter, const struct be
     for (int q = 0; q < QUALITIES; q++) {
         double ms;
         int64_t before = *counter;
-        RTCScene scene = embree_scene(device, mesh, qualities[q], &ms);
+        RTCScene scene = embree_scene(device, mesh, qualities[q], 1, &ms);
         if (!scene)
             return -1;
         int64_t buffers = (int64_t)mesh->vertex_count * 12 + (int64_t)mesh->tri_count * 12;
@@ -455,17 +498,49 @@ int bench_embree_section(const struct bench_options *opts, struct bench_mesh *me
     int failed = 0;
 
     report_printf("\n## Against Embree %s\n\n", RTC_VERSION_STRING);
-    report_printf("Build, one thread (Embree device \"threads=1\"), median of %d runs, ms. "
-                  "Ours: binned SAH %d bins, boxes + build + gather into leaf order (everything "
-                  "before the first ray). Embree: rtcCommitScene alone. \"ours/Embree\" is a "
-                  "time ratio: above 1 means we build slower.\n\n",
-                  opts->runs, BVH_DEFAULT_BINS);
-    report_table_header("mesh|triangles|ours ms|Embree MEDIUM ms|Embree HIGH ms|"
-                        "ours/MEDIUM|ours/HIGH");
+    report_printf("Build, median of %d runs, ms, on 1 and 2 threads (Embree: a device created "
+                  "with \"threads=1\" or \"threads=2\"). Ours: binned SAH %d bins, boxes + "
+                  "build + gather into leaf order + the %s collapse (everything before the "
+                  "first ray); on 2 threads the build is accel_build_parallel (binned SAH at "
+                  "the top, binned SAH subtrees), the rest serial. Embree: rtcCommitScene alone "
+                  "at build quality LOW (Morton), MEDIUM (binned SAH, its default) and HIGH "
+                  "(spatial splits). %s \"ours/Embree\" is a time ratio: above 1 means we "
+                  "build slower.\n\n",
+                  opts->runs, BVH_DEFAULT_BINS, bench_layout_name(),
+                  bench_thread_clock() ? "One thread: the calling thread's CPU clock "
+                                         "(--thread-clock); 2 threads: wall clock."
+                                       : "Wall clock.");
+    report_table_header("mesh|triangles|threads|ours ms|Embree LOW ms|Embree MEDIUM ms|"
+                        "Embree HIGH ms|ours/LOW|ours/MEDIUM|ours/HIGH");
     bench_share_reset();
+    RTCDevice device2 = NULL;
+    struct rt_pool *pool2 = NULL;
+    if (opts->threads != 1) {
+        device2 = rtcNewDevice("threads=2");
+        pool2 = rt_pool_create(2);
+        if (device2)
+            rtcSetDeviceErrorFunction(device2, bench_embree_error, NULL);
+        else
+            failed = 1;
+    }
     for (int m = 0; m < mesh_count; m++) {
         report_progress("embree: %s: builds\n", meshes[m].name);
-        failed |= embree_build_row(opts, device, &meshes[m]) != 0;
+        for (int t = 1; t <= 2; t++) {
+            if ((opts->threads && opts->threads != t) || (t == 2 && !device2))
+                continue;
+            failed |= embree_build_row(opts, t == 1 ? device : device2, t, pool2,
+                                       &meshes[m]) != 0;
+        }
+    }
+    if (device2)
+        rtcReleaseDevice(device2);
+    rt_pool_destroy(pool2);
+
+    /* --only ...,build: the build table alone (A/B runs of a builder). */
+    if (opts->only && bench_strategy_selected(opts->only, "build")) {
+        bench_share_report();
+        rtcReleaseDevice(device);
+        return failed ? -1 : 0;
     }
 
     int64_t embree_bytes = 0;
@@ -571,7 +646,7 @@ void *bench_embree_packets_new(const struct bench_mesh *mesh)
         return NULL;
     }
     rtcSetDeviceErrorFunction(e->device, bench_embree_error, NULL);
-    e->scene = embree_scene(e->device, mesh, RTC_BUILD_QUALITY_MEDIUM, &ms);
+    e->scene = embree_scene(e->device, mesh, RTC_BUILD_QUALITY_MEDIUM, 1, &ms);
     if (!e->scene) {
         rtcReleaseDevice(e->device);
         free(e);

@@ -16,6 +16,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "accel/build_parallel.h"
 #include "base/alloc.h"
 #include "base/timer.h"
 #include "bench.h"
@@ -72,11 +73,18 @@ int bench_select_isa(const char *name)
 int bench_accel_build(struct bench_accel *acc, const struct bench_mesh *mesh,
                       const struct bvh_build_params *params)
 {
+    return bench_accel_build_pool(acc, mesh, params, NULL);
+}
+
+int bench_accel_build_pool(struct bench_accel *acc, const struct bench_mesh *mesh,
+                           const struct bvh_build_params *params, struct rt_pool *pool)
+{
     memset(acc, 0, sizeof(*acc));
     struct aabb *boxes = bench_mesh_boxes(mesh);
     if (!boxes)
         return -1;
-    int rc = accel_build(&acc->bvh, boxes, mesh->tri_count, params);
+    int rc = pool ? accel_build_parallel(&acc->bvh, boxes, mesh->tri_count, params, pool)
+                  : accel_build(&acc->bvh, boxes, mesh->tri_count, params);
     free(boxes);
     if (rc)
         return -1;
@@ -244,6 +252,16 @@ static double thread_cpu_ms(void)
     if (clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts) != 0)
         return 0.0;
     return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
+}
+
+int bench_thread_clock(void)
+{
+    return thread_clock;
+}
+
+double bench_clock_ms(int threads)
+{
+    return threads <= 1 && thread_clock ? thread_cpu_ms() : rt_now_ms();
 }
 
 double bench_run_parallel(bench_kernel_fn kernel, void *ctx, const struct bench_rays *set,

@@ -19,6 +19,7 @@
 #ifndef RT_ACCEL_BUILD_INTERNAL_H
 #define RT_ACCEL_BUILD_INTERNAL_H
 
+#include <math.h>
 #include <stdint.h>
 #include <string.h>
 
@@ -59,6 +60,25 @@ static inline void build_store_box(struct aabb *box, vec4 lo, vec4 hi)
         box->max[k] = h[k];
     }
 }
+
+/*
+ * The partitions' side bounds without a select: a centroid on side
+ * `left` (1 left, 0 right) is added build_side_offset[left][j] before it
+ * joins bound j (0 left lo, 1 left hi, 2 right lo, 3 right hi, by min for
+ * lo and max for hi).  -0 keeps any finite value bit for bit, +inf and
+ * -inf are the identities of min and max, so for finite centroids the
+ * bounds are those of selecting the centroid or the identity, in four
+ * additions instead of twelve mask operations.
+ */
+#define BUILD_KEEP -0.0f, -0.0f, -0.0f, -0.0f
+#define BUILD_DROP_LO INFINITY, INFINITY, INFINITY, INFINITY
+#define BUILD_DROP_HI -INFINITY, -INFINITY, -INFINITY, -INFINITY
+static const float build_side_offset[2][4][4] = {
+    {{BUILD_DROP_LO}, {BUILD_DROP_HI}, {BUILD_KEEP}, {BUILD_KEEP}},
+    {{BUILD_KEEP}, {BUILD_KEEP}, {BUILD_DROP_LO}, {BUILD_DROP_HI}}};
+#undef BUILD_KEEP
+#undef BUILD_DROP_LO
+#undef BUILD_DROP_HI
 
 /* Smallest k with 2^k >= n: the depth an object-median subtree over n
  * primitives needs to reach single-primitive leaves.  0 for n <= 1. */

@@ -312,16 +312,31 @@ static void setup_task(void *arg, int worker)
 
 /* ------------------------------------------------------------ binning */
 
-static inline int bin_of(const struct open_node *o, float c, int k, int last)
+/* The bins of a ref's centroid on the three axes, in one vector: per lane
+ * the operations of a scalar bin = clamp((c - origin) * scale, 0, last)
+ * with one rounding each (build_binned_sah.c's bins_of), so the histogram
+ * and the partition, which both use it, classify every ref alike; the
+ * clamp (max with 0 first) sends NaN to bin 0. */
+struct bin_map {
+    vec4 origin;
+    vec4 scale;
+    vec4 last;
+};
+
+static struct bin_map bin_map_of(const struct open_node *o, int last)
 {
-    /* One rounding per operation, the same in the histogram and the
-     * partition, so both classify every ref alike (C99 5.1.2.3: every
-     * assignment to a float rounds). */
-    float d = c - o->origin[k];
-    float f = d * o->scale[k];
-    f = f > 0.0f ? f : 0.0f;
-    f = f < (float)last ? f : (float)last;
-    return (int)f;
+    struct bin_map m;
+    m.origin = vec4_set(o->origin[0], o->origin[1], o->origin[2], 0.0f);
+    m.scale = vec4_set(o->scale[0], o->scale[1], o->scale[2], 0.0f);
+    m.last = vec4_splat((float)last);
+    return m;
+}
+
+static inline void bins_of_ref(const struct bin_map *m, vec4 centroid, int32_t bin[4])
+{
+    vec4 f = vec4_mul(vec4_sub(centroid, m->origin), m->scale);
+    f = vec4_min(vec4_max(f, vec4_splat(0.0f)), m->last);
+    vec4_trunc(bin, f);
 }
 
 static void init_binning(struct open_node *o, int bins)
@@ -347,7 +362,7 @@ static void bin_task(void *arg, int worker)
     uint32_t c;
     while ((c = chunk_of(b)) < b->chunk_count) {
         const struct chunk *ch = &b->chunks[c];
-        const struct open_node *o = &b->open[ch->node];
+        const struct bin_map map = bin_map_of(&b->open[ch->node], bins - 1);
         float(*box)[8] = &b->hist_box[(size_t)c * 3 * bins];
         uint32_t *count = &b->hist_count[(size_t)c * 3 * bins];
         for (int i = 0; i < 3 * bins; i++) {
@@ -359,8 +374,10 @@ static void bin_task(void *arg, int worker)
             const struct build_ref *r = &refs[i];
             vec4 lo = vec4_xyz0(vec4_load(r->lo));
             vec4 hi = vec4_load(r->hi);
+            int32_t bins_k[4];
+            bins_of_ref(&map, vec4_add(lo, hi), bins_k);
             for (int k = 0; k < 3; k++) {
-                int bin = k * bins + bin_of(o, r->lo[k] + r->hi[k], k, bins - 1);
+                int bin = k * bins + bins_k[k];
                 vec4_store(&box[bin][0], vec4_min(vec4_load(&box[bin][0]), lo));
                 vec4_store(&box[bin][4], vec4_max(vec4_load(&box[bin][4]), hi));
                 count[bin]++;
@@ -470,30 +487,35 @@ static void partition_task(void *arg, int worker)
     const int last = b->bins - 1;
     const struct build_ref *src = b->refs[b->src];
     struct build_ref *dst = b->refs[!b->src];
-    const vec4 inf = vec4_splat(INFINITY);
-    const vec4 neg_inf = vec4_splat(-INFINITY);
     uint32_t c;
     while ((c = chunk_of(b)) < b->chunk_count) {
         struct chunk *ch = &b->chunks[c];
         const struct open_node *o = &b->open[ch->node];
         if (o->axis < 0)
             continue;
+        const struct bin_map map = bin_map_of(o, last);
         const int axis = o->axis;
-        const int plane = o->plane;
+        const int32_t plane = o->plane;
         uint32_t li = ch->left_dst;
         uint32_t ri = ch->right_dst;
-        vec4 llo = inf, lhi = neg_inf, rlo = inf, rhi = neg_inf;
+        vec4 llo = vec4_splat(INFINITY);
+        vec4 lhi = vec4_splat(-INFINITY);
+        vec4 rlo = llo;
+        vec4 rhi = lhi;
         for (uint32_t i = ch->begin; i < ch->end; i++) {
             const struct build_ref *r = &src[i];
-            int left = bin_of(o, r->lo[axis] + r->hi[axis], axis, last) < plane;
             vec4 cen = vec4_add(vec4_xyz0(vec4_load(r->lo)), vec4_load(r->hi));
-            llo = vec4_min(llo, vec4_select(left, cen, inf));
-            lhi = vec4_max(lhi, vec4_select(left, cen, neg_inf));
-            rlo = vec4_min(rlo, vec4_select(left, inf, cen));
-            rhi = vec4_max(rhi, vec4_select(left, neg_inf, cen));
+            int32_t bin[4];
+            bins_of_ref(&map, cen, bin);
+            const uint32_t left = bin[axis] < plane;
+            const float(*off)[4] = build_side_offset[left];
+            llo = vec4_min(llo, vec4_add(cen, vec4_load(off[0])));
+            lhi = vec4_max(lhi, vec4_add(cen, vec4_load(off[1])));
+            rlo = vec4_min(rlo, vec4_add(cen, vec4_load(off[2])));
+            rhi = vec4_max(rhi, vec4_add(cen, vec4_load(off[3])));
             dst[left ? li : ri] = *r;
-            li += (uint32_t)left;
-            ri += (uint32_t)!left;
+            li += left;
+            ri += 1 - left;
         }
         vec4_store(ch->lclo, llo);
         vec4_store(ch->lchi, lhi);

@@ -38,14 +38,48 @@ static float node_area(const struct bvh_node *n)
     return dx * dy + dy * dz + dz * dx;
 }
 
+/* span[i], first[i] from the children's (visited before i). */
+static void span_step(const struct bvh *bvh, uint32_t i, uint32_t *first, uint32_t *span)
+{
+    const struct bvh_node *node = &bvh->nodes[i];
+    if (node->count) {
+        first[i] = node->first;
+        span[i] = node->count;
+        return;
+    }
+    uint32_t l = node->first;
+    uint32_t r = l + 1;
+    span[i] = 0;
+    if (span[l] && span[r] && first[l] + span[l] == first[r]) {
+        first[i] = first[l];
+        span[i] = span[l] + span[r];
+    } else if (span[l] && span[r] && first[r] + span[r] == first[l]) {
+        first[i] = first[r];
+        span[i] = span[l] + span[r];
+    }
+}
+
 /* Per binary node, the triangles of its subtree when they occupy
  * consecutive leaf slots (span[n] of them from first[n]), else span 0.
  * Builders partition slots in place, so a subtree's slots are normally
  * consecutive; restructuring can break that, and such a subtree is then
- * simply never merged.  Children are visited before parents: reverse
- * preorder.  Returns 0 or -1 on allocation failure. */
+ * simply never merged.  Children are visited before parents: in
+ * decreasing index order when every inner node's children come after it
+ * (what the builders write, checked here in one sequential pass),
+ * otherwise in reverse preorder.  Returns 0 or -1 on allocation failure. */
 static int subtree_spans(const struct bvh *bvh, uint32_t *first, uint32_t *span)
 {
+    int children_after = 1;
+    for (uint32_t i = 0; i < bvh->node_count && children_after; i++) {
+        const struct bvh_node *node = &bvh->nodes[i];
+        children_after = node->count != 0 ||
+                         (node->first > i && node->first < bvh->node_count - 1);
+    }
+    if (children_after) {
+        for (uint32_t i = bvh->node_count; i-- > 0;)
+            span_step(bvh, i, first, span);
+        return 0;
+    }
     uint32_t *pre = rt_calloc(bvh->node_count, sizeof(uint32_t));
     uint32_t *stack = rt_calloc(BVH_MAX_DEPTH + 2, sizeof(uint32_t));
     if (!pre || !stack) {
@@ -64,25 +98,8 @@ static int subtree_spans(const struct bvh *bvh, uint32_t *first, uint32_t *span)
             stack[sp++] = bvh->nodes[i].first + 1;
         }
     }
-    while (n) {
-        uint32_t i = pre[--n];
-        const struct bvh_node *node = &bvh->nodes[i];
-        if (node->count) {
-            first[i] = node->first;
-            span[i] = node->count;
-            continue;
-        }
-        uint32_t l = node->first;
-        uint32_t r = l + 1;
-        span[i] = 0;
-        if (span[l] && span[r] && first[l] + span[l] == first[r]) {
-            first[i] = first[l];
-            span[i] = span[l] + span[r];
-        } else if (span[l] && span[r] && first[r] + span[r] == first[l]) {
-            first[i] = first[r];
-            span[i] = span[l] + span[r];
-        }
-    }
+    while (n)
+        span_step(bvh, pre[--n], first, span);
     rt_free(pre);
     rt_free(stack);
     return 0;
@@ -102,25 +119,37 @@ static int is_leaf_lane(const struct bvh *bvh, const uint32_t *span, uint32_t i)
 static int gather(const struct bvh *bvh, const uint32_t *span, uint32_t inner, uint32_t width,
                   uint32_t out[MAX_WIDTH])
 {
+    /* Each lane's area and openness, computed once when the lane is
+     * added rather than at every step (the same values, so the same
+     * picks). */
+    float area[MAX_WIDTH];
+    int openable[MAX_WIDTH];
     uint32_t n = 2;
     out[0] = bvh->nodes[inner].first;
     out[1] = out[0] + 1;
+    for (uint32_t i = 0; i < 2; i++) {
+        area[i] = node_area(&bvh->nodes[out[i]]);
+        openable[i] = !is_leaf_lane(bvh, span, out[i]);
+    }
     while (n < width) {
         int pick = -1;
         float best = -1.0f;
         for (uint32_t i = 0; i < n; i++) {
-            const struct bvh_node *c = &bvh->nodes[out[i]];
-            float a = node_area(c);
-            if (!is_leaf_lane(bvh, span, out[i]) && (pick < 0 || a > best)) {
+            if (openable[i] && (pick < 0 || area[i] > best)) {
                 pick = (int)i;
-                best = a;
+                best = area[i];
             }
         }
         if (pick < 0)
             break;
         uint32_t first = bvh->nodes[out[pick]].first;
         out[pick] = first;
-        out[n++] = first + 1;
+        out[n] = first + 1;
+        area[pick] = node_area(&bvh->nodes[first]);
+        openable[pick] = !is_leaf_lane(bvh, span, first);
+        area[n] = node_area(&bvh->nodes[first + 1]);
+        openable[n] = !is_leaf_lane(bvh, span, first + 1);
+        n++;
     }
     return (int)n;
 }
@@ -128,27 +157,54 @@ static int gather(const struct bvh *bvh, const uint32_t *span, uint32_t inner, u
 /* Per octant, the used lanes sorted front to back by the projection of
  * their box centres on the octant's diagonal (ties: lower lane first),
  * unused lanes last.  A heuristic only: the walk's answers do not
- * depend on the order of visits (traverse_wide.h). */
-static void octant_order(const double centre[MAX_WIDTH][3], int lanes, int oct,
-                         int order[MAX_WIDTH])
+ * depend on the order of visits (traverse_wide.h).
+ *
+ * By rank counting, without a data-dependent branch (the insertion sort
+ * this replaces spent most of its time in mispredictions), and for two
+ * octants at once: octant 7 - oct negates every term of oct's projection,
+ * so its key is exactly -key (IEEE negation commutes with rounding), and
+ * for j < l lane j goes first in oct when key[j] <= key[l] and in 7 - oct
+ * when key[j] >= key[l].  The keys are compared as ordered integers, a
+ * total order (after -0 is made +0, which compares equal to it), so the
+ * ranks are a permutation for any input, NaN included. */
+static uint64_t order_key(double k)
 {
-    double key[MAX_WIDTH];
-    int m = 0;
+    k += 0.0; /* -0 -> +0 */
+    uint64_t u;
+    memcpy(&u, &k, sizeof(u));
+    return u ^ ((u >> 63) ? ~(uint64_t)0 : (uint64_t)1 << 63);
+}
+
+static void octant_orders(const double centre[MAX_WIDTH][3], int lanes, int oct,
+                          int order[MAX_WIDTH], int order_opposite[MAX_WIDTH])
+{
+    uint64_t key[MAX_WIDTH];
+    int rank[MAX_WIDTH] = {0};
+    int rank_opposite[MAX_WIDTH] = {0};
     for (int l = 0; l < lanes; l++) {
         double k = 0.0;
         for (int a = 0; a < 3; a++)
             k += (oct >> a & 1) ? -centre[l][a] : centre[l][a];
-        int j = m++;
-        while (j > 0 && key[j - 1] > k) {
-            key[j] = key[j - 1];
-            order[j] = order[j - 1];
-            j--;
-        }
-        key[j] = k;
-        order[j] = l;
+        key[l] = order_key(k);
     }
-    for (int l = lanes; l < MAX_WIDTH; l++)
+    for (int l = 1; l < lanes; l++) {
+        for (int j = 0; j < l; j++) {
+            int j_first = key[j] <= key[l];
+            int j_first_opposite = key[j] >= key[l];
+            rank[l] += j_first;
+            rank[j] += 1 - j_first;
+            rank_opposite[l] += j_first_opposite;
+            rank_opposite[j] += 1 - j_first_opposite;
+        }
+    }
+    for (int l = 0; l < lanes; l++) {
+        order[rank[l]] = l;
+        order_opposite[rank_opposite[l]] = l;
+    }
+    for (int l = lanes; l < MAX_WIDTH; l++) {
         order[l] = l;
+        order_opposite[l] = l;
+    }
 }
 
 /* Twice the lanes' box centres (the order only compares them). */
@@ -181,12 +237,15 @@ static void write_lanes(const struct bvh *bvh, const struct scratch_node *s, int
     const int bits_per_lane = width == 4 ? 2 : 3;
     double centre[MAX_WIDTH][3];
     lane_centres(bvh, s, centre);
-    for (int oct = 0; oct < 8; oct++) {
-        int order[MAX_WIDTH];
-        octant_order(centre, s->lanes, oct, order);
+    for (int oct = 0; oct < 4; oct++) {
+        int order[2][MAX_WIDTH];
+        octant_orders(centre, s->lanes, oct, order[0], order[1]);
         order_bits[oct] = 0;
-        for (int p = 0; p < width; p++)
-            order_bits[oct] |= (uint32_t)order[p] << (bits_per_lane * p);
+        order_bits[7 - oct] = 0;
+        for (int p = 0; p < width; p++) {
+            order_bits[oct] |= (uint32_t)order[0][p] << (bits_per_lane * p);
+            order_bits[7 - oct] |= (uint32_t)order[1][p] << (bits_per_lane * p);
+        }
     }
 }
 
@@ -229,11 +288,20 @@ void accel_set_packet_lane(struct tri4_packet *p, uint32_t lane, const float v[9
 static void fill_packet(struct tri4_packet *p, const float *tri, const uint32_t *prim_index,
                         uint32_t slot, uint32_t n)
 {
-    for (uint32_t l = 0; l < 4; l++) {
-        uint32_t s = slot + (l < n ? l : n - 1);
-        accel_set_packet_lane(p, l, &tri[9 * (size_t)s]);
+    for (uint32_t l = 0; l < n; l++) {
+        accel_set_packet_lane(p, l, &tri[9 * (size_t)(slot + l)]);
         if (prim_index)
-            p->prim[l] = prim_index[s];
+            p->prim[l] = prim_index[slot + l];
+    }
+    /* The repeats are copies of lane n - 1 (its zero-area test is not
+     * redone). */
+    for (uint32_t l = n; l < 4; l++) {
+        for (int j = 0; j < 3; j++) {
+            for (int k = 0; k < 3; k++)
+                p->v[j][k][l] = p->v[j][k][n - 1];
+        }
+        if (prim_index)
+            p->prim[l] = p->prim[n - 1];
     }
 }
 

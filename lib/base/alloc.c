@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * alloc.c - allocation wrapper with fault injection (see alloc.h).
+ * alloc.c - allocation wrapper with fault injection (see alloc.h), and
+ * the transparent-huge-page hint for large blocks.
  */
 /* madvise and MAP_ANONYMOUS are not POSIX 2008: the build's
  * _POSIX_C_SOURCE alone does not declare them. */
@@ -18,6 +19,36 @@
 #if defined(__linux__)
 #include <sys/mman.h>
 #endif
+
+/*
+ * Blocks of at least this many bytes are offered transparent huge pages
+ * (Linux madvise(MADV_HUGEPAGE); nothing elsewhere).  A BVH build over a
+ * million triangles writes about 200 MB of fresh blocks (build refs,
+ * nodes, leaf-ordered triangles, the wide layout); with 4 KB pages that is
+ * some 50000 page faults, a fifth of the build's time measured on the
+ * development machine (kernel "madvise" mode), and with 2 MB pages a few
+ * hundred.  Smaller blocks are left alone: they come from the malloc heap
+ * and would gain little.  Only a hint: the allocation never fails because
+ * of it, and the kernel may ignore it.
+ */
+#define RT_ALLOC_HUGE_MIN ((size_t)4 << 20)
+#define RT_ALLOC_HUGE_PAGE ((uintptr_t)2 << 20)
+
+static void *advise_huge(void *block, size_t bytes)
+{
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    if (block && bytes >= RT_ALLOC_HUGE_MIN) {
+        /* Only whole huge pages inside the block can be backed by one. */
+        uintptr_t begin = ((uintptr_t)block + RT_ALLOC_HUGE_PAGE - 1) & ~(RT_ALLOC_HUGE_PAGE - 1);
+        uintptr_t end = ((uintptr_t)block + bytes) & ~(RT_ALLOC_HUGE_PAGE - 1);
+        if (end > begin)
+            (void)madvise((void *)begin, (size_t)(end - begin), MADV_HUGEPAGE);
+    }
+#else
+    (void)bytes;
+#endif
+    return block;
+}
 
 /* Remaining successful allocations before injected failures start; < 0
  * means never.  Accessed atomically: builds and renders allocate from
@@ -48,7 +79,7 @@ void *rt_malloc(size_t size)
 {
     if (injected_failure())
         return NULL;
-    return malloc(size ? size : 1);
+    return advise_huge(malloc(size ? size : 1), size);
 }
 
 void *rt_calloc(size_t count, size_t size)
@@ -57,7 +88,7 @@ void *rt_calloc(size_t count, size_t size)
         return NULL;
     if (injected_failure())
         return NULL;
-    return calloc(count ? count : 1, size ? size : 1);
+    return advise_huge(calloc(count ? count : 1, size ? size : 1), count * size);
 }
 
 void *rt_realloc_array(void *ptr, size_t count, size_t size)
@@ -67,7 +98,7 @@ void *rt_realloc_array(void *ptr, size_t count, size_t size)
     if (injected_failure())
         return NULL;
     size_t bytes = count * size;
-    return realloc(ptr, bytes ? bytes : 1);
+    return advise_huge(realloc(ptr, bytes ? bytes : 1), bytes);
 }
 
 void rt_free(void *ptr)
