@@ -557,6 +557,9 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
      * the second look at the primed hit and the next distance it steps
      * to (some 130 instructions a pixel). */
     const int direct = !pass->depth_state && !sc->clipping && !sc->see_through;
+    /* The eye light's direct hits of a block are shaded together, their
+     * texture levels of detail two at a time (shade_eye_hits). */
+    const int eye = st->shading == RENDER_EYE_LIGHT;
     for (int by = y0; by < y0 + RENDER_TILE_SIZE && by < vp[3]; by += RENDER_BLOCK_H) {
         unproject_cache_row(pass, &cache, by);
         for (int bx = x0; bx < x0 + RENDER_TILE_SIZE && bx < vp[2]; bx += RENDER_BLOCK_W) {
@@ -588,6 +591,11 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
             }
             shade_prime_shadows(sc, found, hits, (const float(*)[3])pk.org,
                                 (const float(*)[3])pk.dir, cone, surf, primed);
+            const float *eye_dir[TRACE_PACKET];
+            const struct trace_scene_hit *eye_hit[TRACE_PACKET];
+            struct shade_cone eye_cone[TRACE_PACKET];
+            float *eye_px[TRACE_PACKET];
+            int eyes = 0;
             for (int i = 0; i < TRACE_PACKET; i++) {
                 const int x = bx + i % RENDER_BLOCK_W, y = by + i / RENDER_BLOCK_W;
                 if (!(x < x0 + RENDER_TILE_SIZE && x < vp[2] && y < y0 + RENDER_TILE_SIZE &&
@@ -607,7 +615,14 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                     t_first = INFINITY;
                 } else if (direct && gl_hit_drawn(sc, pk.dir[i], &primed[i].hit)) {
                     /* blend_trace_primary's first, opaque, drawn hit. */
-                    shade_hit(sc, pk.org[i], pk.dir[i], &primed[i].hit, cone[i], 0, px);
+                    if (eye) {
+                        /* Shaded with the block's others below. */
+                        eye_dir[eyes] = pk.dir[i];
+                        eye_hit[eyes] = &primed[i].hit;
+                        eye_cone[eyes] = cone[i];
+                        eye_px[eyes++] = px;
+                    } else
+                        shade_hit(sc, pk.org[i], pk.dir[i], &primed[i].hit, cone[i], 0, px);
                     t_first = primed[i].hit.t;
                 } else if (pass->depth_state) /* polygon offset in the frame (lines.c) */
                     blend_trace_primary_state(sc, pk.org[i], pk.dir[i], pk.tmax[i], cone[i], px,
@@ -620,6 +635,8 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                     pass->depth[at] =
                         raster_window_depth(st->projection, pk.org[i], pk.dir[i], t_first);
             }
+            if (eyes)
+                shade_eye_hits(sc, eyes, eye_dir, eye_hit, eye_cone, eye_px);
         }
     }
 }
