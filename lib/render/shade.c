@@ -358,10 +358,11 @@ void shade_eye_hits(const struct shade_context *sc, int n, const float *const di
                     const struct shade_cone cone[], float *const rgba[])
 {
     struct surface_colour e[TRACE_PACKET];
-    struct surface_texture tex[TRACE_PACKET];
-    struct surface_texture *lod[TRACE_PACKET] = {NULL};
+    struct surface_pending tex[TRACE_PACKET];
+    struct surface_pending *lod[TRACE_PACKET] = {NULL}, *normal[TRACE_PACKET] = {NULL};
+    struct surface_colour *normal_of[TRACE_PACKET] = {NULL};
     float unit_dir[TRACE_PACKET][3];
-    int lods = 0;
+    int lods = 0, normals = 0;
     /* shade_hit's steps up to the level of detail for every hit, ... */
     for (int i = 0; i < n; i++) {
         const struct shade_cone at_hit = cone_at(cone[i], dir[i], hits[i]->t);
@@ -370,8 +371,13 @@ void shade_eye_hits(const struct shade_context *sc, int n, const float *const di
         surface_fetch_colour_begin(sc, hits[i], dir[i], at_hit.width, &e[i], &tex[i]);
         if (tex[i].lod)
             lod[lods++] = &tex[i];
+        if (tex[i].shading) {
+            normal[normals] = &tex[i];
+            normal_of[normals++] = &e[i];
+        }
     }
-    /* ... the levels of detail two at a time, ... */
+    /* ... the shading normals and levels of detail four at a time, ... */
+    surface_shading_normals(normal, normal_of, normals);
     surface_texture_lods(lod, lods);
     /* ... and the rest. */
     for (int i = 0; i < n; i++) {

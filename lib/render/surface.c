@@ -420,13 +420,13 @@ static void pair_texel_vector(const __m128d e[3], const __m128d w1[3], const __m
  * computed again by lod_ray itself, and one whose footprint lod_near
  * cannot settle by lod_axes.  The same entry may be given more than once
  * (the same lambda is written). */
-static void lod_ray_lanes(struct surface_texture *const t[LOD_LANES])
+static void lod_ray_lanes(struct surface_pending *const t[LOD_LANES])
 {
     __m128d sel_s[2], xs[2], sa[2], sb[2], sbc[2], cosine[2], dir_len[2], along_len[2];
     __m128d ja[2][2], jb[2][2];
     __m128i major[2], minor[2];
     for (int h = 0; h < 2; h++) {
-        const struct surface_texture *a = t[2 * h], *b = t[2 * h + 1];
+        const struct surface_pending *a = t[2 * h], *b = t[2 * h + 1];
         const struct surface_lod *la = &a->tri, *lb = &b->tri;
         __m128d d[3], g[3], n[3];
         for (int k = 0; k < 3; k++) {
@@ -498,7 +498,7 @@ static void lod_ray_lanes(struct surface_texture *const t[LOD_LANES])
         _mm_storeu_si128((__m128i *)v_major, major[h]);
         _mm_storeu_si128((__m128i *)v_minor, minor[h]);
         for (int i = 0; i < 2; i++) {
-            struct surface_texture *x = t[2 * h + i];
+            struct surface_pending *x = t[2 * h + i];
             const struct surface_lod *l = &x->tri;
             if (!(l->p_a > 0.0) || !(l->t_a > 0.0) || !(v_len[i] > 0.0) || !isfinite(l->nn2) ||
                 !(v_along[i] > 1e-9)) {
@@ -518,13 +518,13 @@ static void lod_ray_lanes(struct surface_texture *const t[LOD_LANES])
 }
 #endif
 
-void surface_texture_lods(struct surface_texture *const *t, int n)
+void surface_texture_lods(struct surface_pending *const *t, int n)
 {
     int i = 0;
 #if SURFACE_PAIRS
     /* Four at a time, the last group filled up with its last hit. */
     for (; i < n; i += LOD_LANES) {
-        struct surface_texture *g[LOD_LANES];
+        struct surface_pending *g[LOD_LANES];
         for (int j = 0; j < LOD_LANES; j++)
             g[j] = t[i + j < n ? i + j : n - 1];
         lod_ray_lanes(g);
@@ -579,7 +579,7 @@ static void projective_st(const float *const vst[3], const float q[3], float b0,
 static void texture_begin(const struct shade_context *sc, const struct scene_instance *inst,
                           const struct scene_mesh *mesh, uint32_t prim, const uint32_t v[3],
                           float b0, float b1, float b2, const float ng[3], const float dir[3],
-                          float width, uint32_t name, struct surface_texture *t)
+                          float width, uint32_t name, struct surface_pending *t)
 {
     const struct scene_texture *tex = scene_textures_lookup(sc->textures, name);
     t->tex = NULL;
@@ -612,7 +612,7 @@ static void texture_begin(const struct shade_context *sc, const struct scene_ins
     }
 }
 
-static void texture_end(const struct surface_texture *t, float ambient[4], float diffuse[4])
+static void texture_end(const struct surface_pending *t, float ambient[4], float diffuse[4])
 {
     if (!t->tex)
         return;
@@ -629,7 +629,7 @@ static void apply_texture(const struct shade_context *sc, const struct scene_ins
                           float b0, float b1, float b2, const float ng[3], const float dir[3],
                           float width, uint32_t name, float ambient[4], float diffuse[4])
 {
-    struct surface_texture t;
+    struct surface_pending t;
     texture_begin(sc, inst, mesh, prim, v, b0, b1, b2, ng, dir, width, name, &t);
     if (t.lod)
         t.lambda = lod_ray(&t.tri, t.tex->level_count, t.ng, t.dir, t.width);
@@ -745,10 +745,13 @@ static void hit_triangle(const struct shade_context *sc, const struct trace_scen
     t->provoking = t->mesh->tri_provoking[hit->prim];
 }
 
-/* The unit geometric normal facing the ray along dir, whether the ray
- * hit the front face, and the shading normal on the same side. */
-static void hit_normals(const struct shade_context *sc, const struct hit_triangle *t,
-                        uint32_t prim, const float dir[3], float ng[3], float n[3], int *front)
+/* The unit geometric normal facing the ray along dir and whether the ray
+ * hit the front face (hit_normals' first part); n gets ng, and *object
+ * the interpolated object-space shading normal when the mesh has normals
+ * (returns 1 then, 0 without). */
+static int hit_geometric_normal(const struct shade_context *sc, const struct hit_triangle *t,
+                                uint32_t prim, const float dir[3], float ng[3], float n[3],
+                                int *front, float object[3])
 {
     const struct scene_mesh *mesh = t->mesh;
     const uint32_t *v = t->v;
@@ -787,21 +790,39 @@ static void hit_normals(const struct shade_context *sc, const struct hit_triangl
             ng[k] = -ng[k];
 
     memcpy(n, ng, 3 * sizeof(float));
-    if (mesh->has_normals) {
-        float no[3];
-        if (t->flags & TRI_FLAT)
-            memcpy(no, &mesh->normals[3 * t->provoking], sizeof(no));
-        else
-            interpolate(mesh->normals, 3, v, t->b0, t->b1, t->b2, 3, no);
-        float nw[3];
-        transform_normal(t->inst->normal_to_world, no, nw);
-        if (vec3_normalize(nw)) {
-            if (vec3_dot(nw, ng) < 0.0f)
-                for (int k = 0; k < 3; k++)
-                    nw[k] = -nw[k];
-            memcpy(n, nw, 3 * sizeof(float));
-        }
+    if (!mesh->has_normals)
+        return 0;
+    if (t->flags & TRI_FLAT)
+        memcpy(object, &mesh->normals[3 * t->provoking], 3 * sizeof(float));
+    else
+        interpolate(mesh->normals, 3, v, t->b0, t->b1, t->b2, 3, object);
+    return 1;
+}
+
+/* hit_normals' second part: the object-space shading normal through the
+ * normal matrix m, normalised and turned to ng's side, into n (left at
+ * ng when it cannot be normalised). */
+static void shading_normal(const double m[16], const float object[3], const float ng[3],
+                           float n[3])
+{
+    float nw[3];
+    transform_normal(m, object, nw);
+    if (vec3_normalize(nw)) {
+        if (vec3_dot(nw, ng) < 0.0f)
+            for (int k = 0; k < 3; k++)
+                nw[k] = -nw[k];
+        memcpy(n, nw, 3 * sizeof(float));
     }
+}
+
+/* The unit geometric normal facing the ray along dir, whether the ray
+ * hit the front face, and the shading normal on the same side. */
+static void hit_normals(const struct shade_context *sc, const struct hit_triangle *t,
+                        uint32_t prim, const float dir[3], float ng[3], float n[3], int *front)
+{
+    float object[3];
+    if (hit_geometric_normal(sc, t, prim, dir, ng, n, front, object))
+        shading_normal(t->inst->normal_to_world, object, ng, n);
 }
 
 /* The vertex colour RT_COLOR_MATERIAL puts into the ambient and diffuse
@@ -898,11 +919,13 @@ void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit 
  */
 void surface_fetch_colour_begin(const struct shade_context *sc, const struct trace_scene_hit *hit,
                                 const float dir[3], float width, struct surface_colour *s,
-                                struct surface_texture *tx)
+                                struct surface_pending *tx)
 {
     struct hit_triangle t;
     hit_triangle(sc, hit, &t);
-    hit_normals(sc, &t, hit->prim, dir, s->ng, s->n, &s->front);
+    tx->shading = hit_geometric_normal(sc, &t, hit->prim, dir, s->ng, s->n, &s->front,
+                                       tx->object);
+    tx->normal_to_world = t.inst->normal_to_world;
     const struct scene_material *m = &t.mesh->materials[t.mesh->tri_material[hit->prim]];
     const struct scene_material *call = &t.inst->appearance.material;
     const uint32_t k = m->inherit;
@@ -933,7 +956,7 @@ void surface_fetch_colour_begin(const struct shade_context *sc, const struct tra
                       texture, tx);
 }
 
-void surface_fetch_colour_end(struct surface_colour *s, const struct surface_texture *t)
+void surface_fetch_colour_end(struct surface_colour *s, const struct surface_pending *t)
 {
     texture_end(t, s->ambient, s->diffuse);
 }
@@ -941,11 +964,77 @@ void surface_fetch_colour_end(struct surface_colour *s, const struct surface_tex
 void surface_fetch_colour(const struct shade_context *sc, const struct trace_scene_hit *hit,
                           const float dir[3], float width, struct surface_colour *s)
 {
-    struct surface_texture t;
+    struct surface_pending t;
     surface_fetch_colour_begin(sc, hit, dir, width, s, &t);
+    if (t.shading)
+        shading_normal(t.normal_to_world, t.object, s->ng, s->n);
     if (t.lod)
         t.lambda = lod_ray(&t.tri, t.tex->level_count, t.ng, t.dir, t.width);
     surface_fetch_colour_end(s, &t);
+}
+
+/* Shading normals four at a time: shading_normal's float operations in
+ * four lanes (the transform in double one hit at a time), so the same
+ * floats. */
+static void shading_normals4(struct surface_pending *const t[4], struct surface_colour *const s[4])
+{
+#if SURFACE_PAIRS
+    float x[4], y[4], z[4], gx[4], gy[4], gz[4];
+    for (int i = 0; i < 4; i++) {
+        float nw[3];
+        transform_normal(t[i]->normal_to_world, t[i]->object, nw);
+        x[i] = nw[0];
+        y[i] = nw[1];
+        z[i] = nw[2];
+        gx[i] = s[i]->ng[0];
+        gy[i] = s[i]->ng[1];
+        gz[i] = s[i]->ng[2];
+    }
+    __m128 vx = _mm_loadu_ps(x), vy = _mm_loadu_ps(y), vz = _mm_loadu_ps(z);
+    /* vec3_normalize: the length, then a multiplication by its reciprocal. */
+    const __m128 len = _mm_sqrt_ps(
+        _mm_add_ps(_mm_add_ps(_mm_mul_ps(vx, vx), _mm_mul_ps(vy, vy)), _mm_mul_ps(vz, vz)));
+    const __m128 ok = _mm_and_ps(_mm_cmpgt_ps(len, _mm_setzero_ps()),
+                                 _mm_cmplt_ps(len, _mm_set1_ps(INFINITY)));
+    const __m128 inv = _mm_div_ps(_mm_set1_ps(1.0f), len);
+    vx = _mm_mul_ps(vx, inv);
+    vy = _mm_mul_ps(vy, inv);
+    vz = _mm_mul_ps(vz, inv);
+    /* Turned to ng's side. */
+    const __m128 side = _mm_add_ps(
+        _mm_add_ps(_mm_mul_ps(vx, _mm_loadu_ps(gx)), _mm_mul_ps(vy, _mm_loadu_ps(gy))),
+        _mm_mul_ps(vz, _mm_loadu_ps(gz)));
+    const __m128 flip = _mm_and_ps(_mm_cmplt_ps(side, _mm_setzero_ps()), _mm_set1_ps(-0.0f));
+    _mm_storeu_ps(x, _mm_xor_ps(vx, flip));
+    _mm_storeu_ps(y, _mm_xor_ps(vy, flip));
+    _mm_storeu_ps(z, _mm_xor_ps(vz, flip));
+    const int keep = _mm_movemask_ps(ok);
+    for (int i = 0; i < 4; i++)
+        if (keep >> i & 1) {
+            s[i]->n[0] = x[i];
+            s[i]->n[1] = y[i];
+            s[i]->n[2] = z[i];
+        }
+#else
+    for (int i = 0; i < 4; i++)
+        shading_normal(t[i]->normal_to_world, t[i]->object, s[i]->ng, s[i]->n);
+#endif
+}
+
+void surface_shading_normals(struct surface_pending *const *t, struct surface_colour *const *s,
+                             int n)
+{
+    /* Four at a time, the last group filled up with its last hit (which
+     * gets the same normal again). */
+    for (int i = 0; i < n; i += 4) {
+        struct surface_pending *g[4];
+        struct surface_colour *c[4];
+        for (int j = 0; j < 4; j++) {
+            g[j] = t[i + j < n ? i + j : n - 1];
+            c[j] = s[i + j < n ? i + j : n - 1];
+        }
+        shading_normals4(g, c);
+    }
 }
 
 int surface_texel(const struct shade_context *sc, const struct trace_scene_hit *hit,
