@@ -27,15 +27,6 @@
 #include "render/gl_shade.h"
 #include "render/surface.h"
 
-/* The eye light's cones and view directions four hits at a time in SSE
- * lanes (eye_cones): IEEE operations lane by lane, the same floats. */
-#if defined(__SSE2__) && !defined(RT_NO_SIMD)
-#include <emmintrin.h>
-#define SHADE_LANES 1
-#else
-#define SHADE_LANES 0
-#endif
-
 /* Safety factor on the error bound of the hit point (see surface_fetch in surface.c). */
 #define OFFSET_ERROR_SCALE 2.0
 
@@ -362,84 +353,25 @@ void shade_prime_shadows(const struct shade_context *sc, unsigned found,
     }
 }
 
-/* shade_hit's cone_at(cone[i], dir[i], hits[i]->t).width into width[i]
- * and its unit view direction (dir[i] through vec3_normalize) into
- * unit_dir[i], for i < n <= TRACE_PACKET: both start from the same
- * |dir|^2, whose square root and the rest are taken in four lanes, the
- * last group filled up with its last hit. */
-static void eye_cones(int n, const float *const dir[], const struct trace_scene_hit *const hits[],
-                      const struct shade_cone cone[], float width[], float unit_dir[][3])
-{
-#if SHADE_LANES
-    for (int i = 0; i < n; i += 4) {
-        float x[4], y[4], z[4], t[4], w[4], s[4];
-        for (int j = 0; j < 4; j++) {
-            const int h = i + j < n ? i + j : n - 1;
-            x[j] = dir[h][0];
-            y[j] = dir[h][1];
-            z[j] = dir[h][2];
-            t[j] = hits[h]->t;
-            w[j] = cone[h].width;
-            s[j] = cone[h].spread;
-        }
-        const __m128 vx = _mm_loadu_ps(x), vy = _mm_loadu_ps(y), vz = _mm_loadu_ps(z);
-        const __m128 len = _mm_sqrt_ps(
-            _mm_add_ps(_mm_add_ps(_mm_mul_ps(vx, vx), _mm_mul_ps(vy, vy)), _mm_mul_ps(vz, vz)));
-        /* cone_at: |width + spread (t |dir|)|. */
-        const __m128 distance = _mm_mul_ps(_mm_loadu_ps(t), len);
-        const __m128 at = _mm_add_ps(_mm_loadu_ps(w), _mm_mul_ps(_mm_loadu_ps(s), distance));
-        _mm_storeu_ps(w, _mm_andnot_ps(_mm_set1_ps(-0.0f), at));
-        /* vec3_normalize: unchanged unless 0 < |dir| < inf. */
-        const __m128 ok = _mm_and_ps(_mm_cmpgt_ps(len, _mm_setzero_ps()),
-                                     _mm_cmplt_ps(len, _mm_set1_ps(INFINITY)));
-        const __m128 inv = _mm_div_ps(_mm_set1_ps(1.0f), len);
-        _mm_storeu_ps(x, _mm_mul_ps(vx, inv));
-        _mm_storeu_ps(y, _mm_mul_ps(vy, inv));
-        _mm_storeu_ps(z, _mm_mul_ps(vz, inv));
-        const int keep = _mm_movemask_ps(ok);
-        for (int j = 0; j < 4 && i + j < n; j++) {
-            width[i + j] = w[j];
-            if (keep >> j & 1) {
-                unit_dir[i + j][0] = x[j];
-                unit_dir[i + j][1] = y[j];
-                unit_dir[i + j][2] = z[j];
-            } else
-                memcpy(unit_dir[i + j], dir[i + j], sizeof(unit_dir[i + j]));
-        }
-    }
-#else
-    for (int i = 0; i < n; i++) {
-        width[i] = cone_at(cone[i], dir[i], hits[i]->t).width;
-        memcpy(unit_dir[i], dir[i], sizeof(unit_dir[i]));
-        vec3_normalize(unit_dir[i]);
-    }
-#endif
-}
-
 void shade_eye_hits(const struct shade_context *sc, int n, const float *const dir[],
                     const struct trace_scene_hit *const hits[],
                     const struct shade_cone cone[], float *const rgba[])
 {
     struct surface_colour e[TRACE_PACKET];
-    struct surface_pending tex[TRACE_PACKET];
-    struct surface_pending *lod[TRACE_PACKET] = {NULL}, *normal[TRACE_PACKET] = {NULL};
-    struct surface_colour *normal_of[TRACE_PACKET] = {NULL};
+    struct surface_texture tex[TRACE_PACKET];
+    struct surface_texture *lod[TRACE_PACKET] = {NULL};
     float unit_dir[TRACE_PACKET][3];
-    int lods = 0, normals = 0;
-    float width[TRACE_PACKET];
-    eye_cones(n, dir, hits, cone, width, unit_dir);
+    int lods = 0;
     /* shade_hit's steps up to the level of detail for every hit, ... */
     for (int i = 0; i < n; i++) {
-        surface_fetch_colour_begin(sc, hits[i], dir[i], width[i], &e[i], &tex[i]);
+        const struct shade_cone at_hit = cone_at(cone[i], dir[i], hits[i]->t);
+        memcpy(unit_dir[i], dir[i], sizeof(unit_dir[i]));
+        vec3_normalize(unit_dir[i]);
+        surface_fetch_colour_begin(sc, hits[i], dir[i], at_hit.width, &e[i], &tex[i]);
         if (tex[i].lod)
             lod[lods++] = &tex[i];
-        if (tex[i].shading) {
-            normal[normals] = &tex[i];
-            normal_of[normals++] = &e[i];
-        }
     }
-    /* ... the shading normals and levels of detail four at a time, ... */
-    surface_shading_normals(normal, normal_of, normals);
+    /* ... the levels of detail two at a time, ... */
     surface_texture_lods(lod, lods);
     /* ... and the rest. */
     for (int i = 0; i < n; i++) {

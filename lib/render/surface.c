@@ -409,126 +409,84 @@ static void pair_texel_vector(const __m128d e[3], const __m128d w1[3], const __m
     out[1] = _mm_add_pd(_mm_mul_pd(alpha, a1[1]), _mm_mul_pd(beta, a2[1]));
 }
 
-/* Hits whose level of detail lod_ray_lanes computes together: two pairs,
- * whose chains of divisions and square roots interleave. */
-#define LOD_LANES 4
-
-/* lod_ray of four textures' hits, t[2 h] and t[2 h + 1] in the two lanes
- * of pair h: each lane lod_ray's operations on its values in its order,
- * so the same doubles; a lane that leaves lod_ray's common path (a
- * degenerate triangle or direction, a ray meeting the plane head-on) is
- * computed again by lod_ray itself, and one whose footprint lod_near
- * cannot settle by lod_axes.  The same entry may be given more than once
- * (the same lambda is written). */
-static void lod_ray_lanes(struct surface_pending *const t[LOD_LANES])
+/* lod_ray of two textures' hits in the two lanes (lane 0 a, lane 1 b):
+ * each lane lod_ray's operations on its values in its order, so the same
+ * doubles; a lane that leaves lod_ray's common path (a degenerate
+ * triangle or direction, a ray meeting the plane head-on) is computed
+ * again by lod_ray itself. */
+static void lod_ray_pair(struct surface_texture *a, struct surface_texture *b)
 {
-    __m128d sel_s[2], xs[2], sa[2], sb[2], sbc[2], cosine[2], dir_len[2], along_len[2];
-    __m128d ja[2][2], jb[2][2];
-    __m128i major[2], minor[2];
-    for (int h = 0; h < 2; h++) {
-        const struct surface_pending *a = t[2 * h], *b = t[2 * h + 1];
-        const struct surface_lod *la = &a->tri, *lb = &b->tri;
-        __m128d d[3], g[3], n[3];
-        for (int k = 0; k < 3; k++) {
-            d[k] = _mm_set_pd((double)b->dir[k], (double)a->dir[k]);
-            g[k] = _mm_set_pd((double)b->ng[k], (double)a->ng[k]);
-            n[k] = _mm_set_pd(lb->n[k], la->n[k]);
-        }
-        dir_len[h] = _mm_sqrt_pd(pair_dot(d, d));
-        const __m128d sign = _mm_set1_pd(-0.0);
-        __m128d c = _mm_div_pd(_mm_andnot_pd(sign, pair_dot(g, d)), dir_len[h]);
-        const __m128d min_cos = _mm_set1_pd(LOD_MIN_COSINE);
-        const __m128d keep = _mm_cmpge_pd(c, min_cos);
-        cosine[h] = _mm_or_pd(_mm_and_pd(keep, c), _mm_andnot_pd(keep, min_cos));
-        const __m128d dn = _mm_div_pd(pair_dot(d, n), dir_len[h]);
-        __m128d along[3];
-        for (int k = 0; k < 3; k++)
-            along[k] = _mm_sub_pd(_mm_div_pd(d[k], dir_len[h]), _mm_mul_pd(dn, n[k]));
-        along_len[h] = _mm_sqrt_pd(pair_dot(along, along));
-        for (int k = 0; k < 3; k++)
-            along[k] = _mm_div_pd(along[k], along_len[h]);
-        __m128d across[3];
-        pair_cross(n, along, across);
-        __m128d w1[3], w2[3], nn[3], a1[2], a2[2];
-        for (int k = 0; k < 3; k++) {
-            w1[k] = _mm_set_pd(lb->w1[k], la->w1[k]);
-            w2[k] = _mm_set_pd(lb->w2[k], la->w2[k]);
-            nn[k] = _mm_set_pd(lb->nn[k], la->nn[k]);
-        }
-        for (int k = 0; k < 2; k++) {
-            a1[k] = _mm_set_pd(lb->a1[k], la->a1[k]);
-            a2[k] = _mm_set_pd(lb->a2[k], la->a2[k]);
-        }
-        const __m128d nn2 = _mm_set_pd(lb->nn2, la->nn2);
-        pair_texel_vector(along, w1, w2, nn, nn2, a1, a2, ja[h]);
-        pair_texel_vector(across, w1, w2, nn, nn2, a1, a2, jb[h]);
-        sa[h] = _mm_add_pd(_mm_mul_pd(ja[h][0], ja[h][0]), _mm_mul_pd(ja[h][1], ja[h][1]));
-        sb[h] = _mm_add_pd(_mm_mul_pd(jb[h][0], jb[h][0]), _mm_mul_pd(jb[h][1], jb[h][1]));
-        sbc[h] = _mm_mul_pd(sb[h], _mm_mul_pd(cosine[h], cosine[h]));
-        /* lod_axes' choice of axis and lod_near's footprint in the lanes:
-         * sqrt(sa) width / cosine for the major axis, sqrt(sb) width / 1
-         * (exactly sqrt(sb) width) for the minor one. */
-        const __m128d margin = _mm_set1_pd(1.0 + LOD_AXIS_MARGIN);
-        const __m128d is_major = _mm_cmpgt_pd(sa[h], _mm_mul_pd(sbc[h], margin));
-        const __m128d is_minor = _mm_cmpgt_pd(sbc[h], _mm_mul_pd(sa[h], margin));
-        major[h] = _mm_castpd_si128(is_major);
-        minor[h] = _mm_castpd_si128(is_minor);
-        sel_s[h] = _mm_or_pd(_mm_and_pd(is_major, sa[h]), _mm_andnot_pd(is_major, sb[h]));
-        const __m128d div = _mm_or_pd(_mm_and_pd(is_major, cosine[h]),
-                                      _mm_andnot_pd(is_major, _mm_set1_pd(1.0)));
-        const __m128d width = _mm_set_pd((double)b->width, (double)a->width);
-        xs[h] = _mm_div_pd(_mm_mul_pd(_mm_sqrt_pd(sel_s[h]), width), div);
+    const struct surface_lod *la = &a->tri, *lb = &b->tri;
+    __m128d d[3], g[3], n[3];
+    for (int k = 0; k < 3; k++) {
+        d[k] = _mm_set_pd((double)b->dir[k], (double)a->dir[k]);
+        g[k] = _mm_set_pd((double)b->ng[k], (double)a->ng[k]);
+        n[k] = _mm_set_pd(lb->n[k], la->n[k]);
     }
-    for (int h = 0; h < 2; h++) {
-        double v_len[2], v_cos[2], v_along[2], v_ja[2][2], v_jb[2][2], v_sa[2], v_sb[2],
-            v_sbc[2], v_s[2], v_xs[2];
-        int64_t v_major[2], v_minor[2];
-        _mm_storeu_pd(v_len, dir_len[h]);
-        _mm_storeu_pd(v_cos, cosine[h]);
-        _mm_storeu_pd(v_along, along_len[h]);
-        _mm_storeu_pd(v_ja[0], ja[h][0]);
-        _mm_storeu_pd(v_ja[1], ja[h][1]);
-        _mm_storeu_pd(v_jb[0], jb[h][0]);
-        _mm_storeu_pd(v_jb[1], jb[h][1]);
-        _mm_storeu_pd(v_sa, sa[h]);
-        _mm_storeu_pd(v_sb, sb[h]);
-        _mm_storeu_pd(v_sbc, sbc[h]);
-        _mm_storeu_pd(v_s, sel_s[h]);
-        _mm_storeu_pd(v_xs, xs[h]);
-        _mm_storeu_si128((__m128i *)v_major, major[h]);
-        _mm_storeu_si128((__m128i *)v_minor, minor[h]);
-        for (int i = 0; i < 2; i++) {
-            struct surface_pending *x = t[2 * h + i];
-            const struct surface_lod *l = &x->tri;
-            if (!(l->p_a > 0.0) || !(l->t_a > 0.0) || !(v_len[i] > 0.0) || !isfinite(l->nn2) ||
-                !(v_along[i] > 1e-9)) {
-                x->lambda = lod_ray(l, x->tex->level_count, x->ng, x->dir, x->width);
-                continue;
-            }
-            const double top = lod_top(x->tex->level_count);
-            float near_lambda;
-            if ((v_major[i] || v_minor[i]) && lod_near(v_s[i], v_xs[i], top, &near_lambda)) {
-                x->lambda = near_lambda;
-                continue;
-            }
-            const double ja_i[2] = {v_ja[0][i], v_ja[1][i]}, jb_i[2] = {v_jb[0][i], v_jb[1][i]};
-            x->lambda = lod_axes(ja_i, jb_i, v_sa[i], v_sb[i], v_sbc[i], v_cos[i], x->width, top);
+    const __m128d dir_len = _mm_sqrt_pd(pair_dot(d, d));
+    const __m128d sign = _mm_set1_pd(-0.0);
+    __m128d cosine = _mm_div_pd(_mm_andnot_pd(sign, pair_dot(g, d)), dir_len);
+    const __m128d min_cos = _mm_set1_pd(LOD_MIN_COSINE);
+    const __m128d keep = _mm_cmpge_pd(cosine, min_cos);
+    cosine = _mm_or_pd(_mm_and_pd(keep, cosine), _mm_andnot_pd(keep, min_cos));
+    const __m128d dn = _mm_div_pd(pair_dot(d, n), dir_len);
+    __m128d along[3];
+    for (int k = 0; k < 3; k++)
+        along[k] = _mm_sub_pd(_mm_div_pd(d[k], dir_len), _mm_mul_pd(dn, n[k]));
+    const __m128d along_len = _mm_sqrt_pd(pair_dot(along, along));
+    for (int k = 0; k < 3; k++)
+        along[k] = _mm_div_pd(along[k], along_len);
+    __m128d across[3];
+    pair_cross(n, along, across);
+    __m128d w1[3], w2[3], nn[3], a1[2], a2[2];
+    for (int k = 0; k < 3; k++) {
+        w1[k] = _mm_set_pd(lb->w1[k], la->w1[k]);
+        w2[k] = _mm_set_pd(lb->w2[k], la->w2[k]);
+        nn[k] = _mm_set_pd(lb->nn[k], la->nn[k]);
+    }
+    for (int k = 0; k < 2; k++) {
+        a1[k] = _mm_set_pd(lb->a1[k], la->a1[k]);
+        a2[k] = _mm_set_pd(lb->a2[k], la->a2[k]);
+    }
+    const __m128d nn2 = _mm_set_pd(lb->nn2, la->nn2);
+    __m128d ja[2], jb[2];
+    pair_texel_vector(along, w1, w2, nn, nn2, a1, a2, ja);
+    pair_texel_vector(across, w1, w2, nn, nn2, a1, a2, jb);
+    const __m128d sa = _mm_add_pd(_mm_mul_pd(ja[0], ja[0]), _mm_mul_pd(ja[1], ja[1]));
+    const __m128d sb = _mm_add_pd(_mm_mul_pd(jb[0], jb[0]), _mm_mul_pd(jb[1], jb[1]));
+    const __m128d sbc = _mm_mul_pd(sb, _mm_mul_pd(cosine, cosine));
+    double v_len[2], v_cos[2], v_along[2], v_ja[2][2], v_jb[2][2], v_sa[2], v_sb[2], v_sbc[2];
+    _mm_storeu_pd(v_len, dir_len);
+    _mm_storeu_pd(v_cos, cosine);
+    _mm_storeu_pd(v_along, along_len);
+    _mm_storeu_pd(v_ja[0], ja[0]);
+    _mm_storeu_pd(v_ja[1], ja[1]);
+    _mm_storeu_pd(v_jb[0], jb[0]);
+    _mm_storeu_pd(v_jb[1], jb[1]);
+    _mm_storeu_pd(v_sa, sa);
+    _mm_storeu_pd(v_sb, sb);
+    _mm_storeu_pd(v_sbc, sbc);
+    struct surface_texture *t[2] = {a, b};
+    for (int i = 0; i < 2; i++) {
+        const struct surface_lod *l = &t[i]->tri;
+        if (!(l->p_a > 0.0) || !(l->t_a > 0.0) || !(v_len[i] > 0.0) || !isfinite(l->nn2) ||
+            !(v_along[i] > 1e-9)) {
+            t[i]->lambda = lod_ray(l, t[i]->tex->level_count, t[i]->ng, t[i]->dir, t[i]->width);
+            continue;
         }
+        const double ja_i[2] = {v_ja[0][i], v_ja[1][i]}, jb_i[2] = {v_jb[0][i], v_jb[1][i]};
+        t[i]->lambda = lod_axes(ja_i, jb_i, v_sa[i], v_sb[i], v_sbc[i], v_cos[i], t[i]->width,
+                                lod_top(t[i]->tex->level_count));
     }
 }
 #endif
 
-void surface_texture_lods(struct surface_pending *const *t, int n)
+void surface_texture_lods(struct surface_texture *const *t, int n)
 {
     int i = 0;
 #if SURFACE_PAIRS
-    /* Four at a time, the last group filled up with its last hit. */
-    for (; i < n; i += LOD_LANES) {
-        struct surface_pending *g[LOD_LANES];
-        for (int j = 0; j < LOD_LANES; j++)
-            g[j] = t[i + j < n ? i + j : n - 1];
-        lod_ray_lanes(g);
-    }
+    for (; i + 1 < n; i += 2)
+        lod_ray_pair(t[i], t[i + 1]);
 #endif
     for (; i < n; i++)
         t[i]->lambda = lod_ray(&t[i]->tri, t[i]->tex->level_count, t[i]->ng, t[i]->dir,
@@ -579,7 +537,7 @@ static void projective_st(const float *const vst[3], const float q[3], float b0,
 static void texture_begin(const struct shade_context *sc, const struct scene_instance *inst,
                           const struct scene_mesh *mesh, uint32_t prim, const uint32_t v[3],
                           float b0, float b1, float b2, const float ng[3], const float dir[3],
-                          float width, uint32_t name, struct surface_pending *t)
+                          float width, uint32_t name, struct surface_texture *t)
 {
     const struct scene_texture *tex = scene_textures_lookup(sc->textures, name);
     t->tex = NULL;
@@ -612,7 +570,7 @@ static void texture_begin(const struct shade_context *sc, const struct scene_ins
     }
 }
 
-static void texture_end(const struct surface_pending *t, float ambient[4], float diffuse[4])
+static void texture_end(const struct surface_texture *t, float ambient[4], float diffuse[4])
 {
     if (!t->tex)
         return;
@@ -629,7 +587,7 @@ static void apply_texture(const struct shade_context *sc, const struct scene_ins
                           float b0, float b1, float b2, const float ng[3], const float dir[3],
                           float width, uint32_t name, float ambient[4], float diffuse[4])
 {
-    struct surface_pending t;
+    struct surface_texture t;
     texture_begin(sc, inst, mesh, prim, v, b0, b1, b2, ng, dir, width, name, &t);
     if (t.lod)
         t.lambda = lod_ray(&t.tri, t.tex->level_count, t.ng, t.dir, t.width);
@@ -745,13 +703,10 @@ static void hit_triangle(const struct shade_context *sc, const struct trace_scen
     t->provoking = t->mesh->tri_provoking[hit->prim];
 }
 
-/* The unit geometric normal facing the ray along dir and whether the ray
- * hit the front face (hit_normals' first part); n gets ng, and *object
- * the interpolated object-space shading normal when the mesh has normals
- * (returns 1 then, 0 without). */
-static int hit_geometric_normal(const struct shade_context *sc, const struct hit_triangle *t,
-                                uint32_t prim, const float dir[3], float ng[3], float n[3],
-                                int *front, float object[3])
+/* The unit geometric normal facing the ray along dir, whether the ray
+ * hit the front face, and the shading normal on the same side. */
+static void hit_normals(const struct shade_context *sc, const struct hit_triangle *t,
+                        uint32_t prim, const float dir[3], float ng[3], float n[3], int *front)
 {
     const struct scene_mesh *mesh = t->mesh;
     const uint32_t *v = t->v;
@@ -790,39 +745,21 @@ static int hit_geometric_normal(const struct shade_context *sc, const struct hit
             ng[k] = -ng[k];
 
     memcpy(n, ng, 3 * sizeof(float));
-    if (!mesh->has_normals)
-        return 0;
-    if (t->flags & TRI_FLAT)
-        memcpy(object, &mesh->normals[3 * t->provoking], 3 * sizeof(float));
-    else
-        interpolate(mesh->normals, 3, v, t->b0, t->b1, t->b2, 3, object);
-    return 1;
-}
-
-/* hit_normals' second part: the object-space shading normal through the
- * normal matrix m, normalised and turned to ng's side, into n (left at
- * ng when it cannot be normalised). */
-static void shading_normal(const double m[16], const float object[3], const float ng[3],
-                           float n[3])
-{
-    float nw[3];
-    transform_normal(m, object, nw);
-    if (vec3_normalize(nw)) {
-        if (vec3_dot(nw, ng) < 0.0f)
-            for (int k = 0; k < 3; k++)
-                nw[k] = -nw[k];
-        memcpy(n, nw, 3 * sizeof(float));
+    if (mesh->has_normals) {
+        float no[3];
+        if (t->flags & TRI_FLAT)
+            memcpy(no, &mesh->normals[3 * t->provoking], sizeof(no));
+        else
+            interpolate(mesh->normals, 3, v, t->b0, t->b1, t->b2, 3, no);
+        float nw[3];
+        transform_normal(t->inst->normal_to_world, no, nw);
+        if (vec3_normalize(nw)) {
+            if (vec3_dot(nw, ng) < 0.0f)
+                for (int k = 0; k < 3; k++)
+                    nw[k] = -nw[k];
+            memcpy(n, nw, 3 * sizeof(float));
+        }
     }
-}
-
-/* The unit geometric normal facing the ray along dir, whether the ray
- * hit the front face, and the shading normal on the same side. */
-static void hit_normals(const struct shade_context *sc, const struct hit_triangle *t,
-                        uint32_t prim, const float dir[3], float ng[3], float n[3], int *front)
-{
-    float object[3];
-    if (hit_geometric_normal(sc, t, prim, dir, ng, n, front, object))
-        shading_normal(t->inst->normal_to_world, object, ng, n);
 }
 
 /* The vertex colour RT_COLOR_MATERIAL puts into the ambient and diffuse
@@ -919,13 +856,11 @@ void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit 
  */
 void surface_fetch_colour_begin(const struct shade_context *sc, const struct trace_scene_hit *hit,
                                 const float dir[3], float width, struct surface_colour *s,
-                                struct surface_pending *tx)
+                                struct surface_texture *tx)
 {
     struct hit_triangle t;
     hit_triangle(sc, hit, &t);
-    tx->shading = hit_geometric_normal(sc, &t, hit->prim, dir, s->ng, s->n, &s->front,
-                                       tx->object);
-    tx->normal_to_world = t.inst->normal_to_world;
+    hit_normals(sc, &t, hit->prim, dir, s->ng, s->n, &s->front);
     const struct scene_material *m = &t.mesh->materials[t.mesh->tri_material[hit->prim]];
     const struct scene_material *call = &t.inst->appearance.material;
     const uint32_t k = m->inherit;
@@ -956,7 +891,7 @@ void surface_fetch_colour_begin(const struct shade_context *sc, const struct tra
                       texture, tx);
 }
 
-void surface_fetch_colour_end(struct surface_colour *s, const struct surface_pending *t)
+void surface_fetch_colour_end(struct surface_colour *s, const struct surface_texture *t)
 {
     texture_end(t, s->ambient, s->diffuse);
 }
@@ -964,77 +899,11 @@ void surface_fetch_colour_end(struct surface_colour *s, const struct surface_pen
 void surface_fetch_colour(const struct shade_context *sc, const struct trace_scene_hit *hit,
                           const float dir[3], float width, struct surface_colour *s)
 {
-    struct surface_pending t;
+    struct surface_texture t;
     surface_fetch_colour_begin(sc, hit, dir, width, s, &t);
-    if (t.shading)
-        shading_normal(t.normal_to_world, t.object, s->ng, s->n);
     if (t.lod)
         t.lambda = lod_ray(&t.tri, t.tex->level_count, t.ng, t.dir, t.width);
     surface_fetch_colour_end(s, &t);
-}
-
-/* Shading normals four at a time: shading_normal's float operations in
- * four lanes (the transform in double one hit at a time), so the same
- * floats. */
-static void shading_normals4(struct surface_pending *const t[4], struct surface_colour *const s[4])
-{
-#if SURFACE_PAIRS
-    float x[4], y[4], z[4], gx[4], gy[4], gz[4];
-    for (int i = 0; i < 4; i++) {
-        float nw[3];
-        transform_normal(t[i]->normal_to_world, t[i]->object, nw);
-        x[i] = nw[0];
-        y[i] = nw[1];
-        z[i] = nw[2];
-        gx[i] = s[i]->ng[0];
-        gy[i] = s[i]->ng[1];
-        gz[i] = s[i]->ng[2];
-    }
-    __m128 vx = _mm_loadu_ps(x), vy = _mm_loadu_ps(y), vz = _mm_loadu_ps(z);
-    /* vec3_normalize: the length, then a multiplication by its reciprocal. */
-    const __m128 len = _mm_sqrt_ps(
-        _mm_add_ps(_mm_add_ps(_mm_mul_ps(vx, vx), _mm_mul_ps(vy, vy)), _mm_mul_ps(vz, vz)));
-    const __m128 ok = _mm_and_ps(_mm_cmpgt_ps(len, _mm_setzero_ps()),
-                                 _mm_cmplt_ps(len, _mm_set1_ps(INFINITY)));
-    const __m128 inv = _mm_div_ps(_mm_set1_ps(1.0f), len);
-    vx = _mm_mul_ps(vx, inv);
-    vy = _mm_mul_ps(vy, inv);
-    vz = _mm_mul_ps(vz, inv);
-    /* Turned to ng's side. */
-    const __m128 side = _mm_add_ps(
-        _mm_add_ps(_mm_mul_ps(vx, _mm_loadu_ps(gx)), _mm_mul_ps(vy, _mm_loadu_ps(gy))),
-        _mm_mul_ps(vz, _mm_loadu_ps(gz)));
-    const __m128 flip = _mm_and_ps(_mm_cmplt_ps(side, _mm_setzero_ps()), _mm_set1_ps(-0.0f));
-    _mm_storeu_ps(x, _mm_xor_ps(vx, flip));
-    _mm_storeu_ps(y, _mm_xor_ps(vy, flip));
-    _mm_storeu_ps(z, _mm_xor_ps(vz, flip));
-    const int keep = _mm_movemask_ps(ok);
-    for (int i = 0; i < 4; i++)
-        if (keep >> i & 1) {
-            s[i]->n[0] = x[i];
-            s[i]->n[1] = y[i];
-            s[i]->n[2] = z[i];
-        }
-#else
-    for (int i = 0; i < 4; i++)
-        shading_normal(t[i]->normal_to_world, t[i]->object, s[i]->ng, s[i]->n);
-#endif
-}
-
-void surface_shading_normals(struct surface_pending *const *t, struct surface_colour *const *s,
-                             int n)
-{
-    /* Four at a time, the last group filled up with its last hit (which
-     * gets the same normal again). */
-    for (int i = 0; i < n; i += 4) {
-        struct surface_pending *g[4];
-        struct surface_colour *c[4];
-        for (int j = 0; j < 4; j++) {
-            g[j] = t[i + j < n ? i + j : n - 1];
-            c[j] = s[i + j < n ? i + j : n - 1];
-        }
-        shading_normals4(g, c);
-    }
 }
 
 int surface_texel(const struct shade_context *sc, const struct trace_scene_hit *hit,

@@ -91,44 +91,33 @@ void surface_fetch_colour(const struct shade_context *sc, const struct trace_sce
                           const float dir[3], float width, struct surface_colour *s);
 
 /*
- * surface_fetch_colour in steps, so that the level of detail and the
- * shading normal of several hits can be computed together
- * (surface_texture_lods, surface_shading_normals): each is a chain of
- * dependent divisions and square roots, whose latency hits in SSE lanes
- * share.  Begin fetches the colours without the texture and the shading
- * normal and leaves in `t` what they need; end samples the texture and
- * applies it.  The same operations
+ * surface_fetch_colour in three steps, so that the level of detail of
+ * several hits can be computed together (surface_texture_lods): the
+ * level of detail is a chain of dependent double divisions and square
+ * roots, whose latency two hits in the two SSE2 lanes share.  Begin
+ * fetches the colours without the texture and leaves in `t` what the
+ * texture lookup needs; end samples and applies it.  The same operations
  * on the same values as surface_fetch_colour, so the same colours bit
  * for bit.
  */
-struct surface_pending {
+struct surface_texture {
     const struct scene_texture *tex; /* NULL: nothing to apply */
     float st[2];                     /* the interpolated coordinates */
     float lambda;                    /* the level of detail, once known */
     int lod;                         /* 1: lambda still to compute from the rest */
     float ng[3], dir[3], width;
     struct surface_lod tri;
-    /* 1: the shading normal (surface_colour.n, ng until then) is still to
-     * compute from the object-space one through the normal matrix. */
-    int shading;
-    float object[3];
-    const double *normal_to_world;
 };
 
 void surface_fetch_colour_begin(const struct shade_context *sc, const struct trace_scene_hit *hit,
                                 const float dir[3], float width, struct surface_colour *s,
-                                struct surface_pending *t);
+                                struct surface_texture *t);
 
-/* The level of detail of the n hits t[i] with lod set, four at a time
- * (two interleaved pairs of lanes). */
-void surface_texture_lods(struct surface_pending *const *t, int n);
+/* The level of detail of the n textures t[i] with lod set, two at a
+ * time. */
+void surface_texture_lods(struct surface_texture *const *t, int n);
 
-/* The shading normal s[i]->n of the n hits t[i] with shading set, four
- * at a time in SSE lanes. */
-void surface_shading_normals(struct surface_pending *const *t, struct surface_colour *const *s,
-                             int n);
-
-void surface_fetch_colour_end(struct surface_colour *s, const struct surface_pending *t);
+void surface_fetch_colour_end(struct surface_colour *s, const struct surface_texture *t);
 
 /* The texel of texture `name` at a hit, for the RT_FIXED_FUNCTION mode,
  * which applies it after lighting through the texture environment
