@@ -226,7 +226,12 @@ static int lod_near(double s2, double xs, double top, float *lambda)
  * decide); and a footprint of at most one texel (log2 <= 0, a
  * magnification whatever the filters) or of at least 2^(q + 2) texels
  * (beyond the last level q) returns -inf or +inf without the log2.
+ *
+ * texture_lod (below) is lod_triangle, the part of the triangle, then
+ * lod_ray, the part of the ray; lod_ray_pair computes the latter for two
+ * hits at once (surface_texture_lods).
  */
+
 /* The triangle-only part of texture_lod: from the tile's cache when the
  * last hit was on the same triangle (and, for the texel edges, the same
  * texture and coordinates), else computed into it (or into `scratch`
