@@ -379,6 +379,85 @@ static int primary_ray(const struct unproject_cache *cache, int px, int py, floa
     return 1;
 }
 
+#if RENDER_PAIRS
+/* primary_ray of pixels (px, py) and (px + 1, py) in the two lanes (lane
+ * 0 the left one): each lane primary_ray's operations on its points in
+ * its order, so the same floats; returns 0, having written nothing, when
+ * a lane would leave primary_ray's common path (a point that cannot be
+ * unprojected, a length that is not positive and finite), for the caller
+ * to make both rays with primary_ray itself. */
+static int primary_ray_pair(const struct unproject_cache *cache, int px, int py,
+                            float org[][3], float dir[][3], float tmax[2],
+                            struct shade_cone cone[2])
+{
+    const struct unproject_point *c[2], *r[2], *b[2];
+    for (int i = 0; i < 2; i++) {
+        c[i] = unproject_cached(cache, px + i, py);
+        r[i] = unproject_cached(cache, px + i + 1, py);
+        b[i] = unproject_cached(cache, px + i, py + 1);
+        if (!c[i] || !r[i] || !b[i])
+            return 0;
+    }
+    __m128d p[3], d[3];
+    for (int k = 0; k < 3; k++) {
+        p[k] = _mm_set_pd(c[1]->near_pt[k], c[0]->near_pt[k]);
+        d[k] = _mm_sub_pd(_mm_set_pd(c[1]->far_pt[k], c[0]->far_pt[k]), p[k]);
+    }
+    const __m128d len = _mm_sqrt_pd(_mm_add_pd(
+        _mm_add_pd(_mm_mul_pd(d[0], d[0]), _mm_mul_pd(d[1], d[1])), _mm_mul_pd(d[2], d[2])));
+    double l[2];
+    _mm_storeu_pd(l, len);
+    for (int i = 0; i < 2; i++)
+        if (!(l[i] > 0.0) || !isfinite(l[i]))
+            return 0;
+    for (int k = 0; k < 3; k++)
+        d[k] = _mm_div_pd(d[k], len);
+    /* distances_to_line of the neighbours' near points (h = 0: right, 1:
+     * below), then of their far points (h = 2, 3), a lane per pixel. */
+    __m128d dist[4];
+    for (int h = 0; h < 4; h++) {
+        const struct unproject_point *const *q = h % 2 ? b : r;
+        __m128d a[3];
+        for (int k = 0; k < 3; k++)
+            a[k] = h < 2 ? _mm_sub_pd(_mm_set_pd(q[1]->near_pt[k], q[0]->near_pt[k]), p[k])
+                         : _mm_sub_pd(_mm_set_pd(q[1]->far_pt[k], q[0]->far_pt[k]), p[k]);
+        const __m128d along = _mm_add_pd(
+            _mm_add_pd(_mm_mul_pd(a[0], d[0]), _mm_mul_pd(a[1], d[1])), _mm_mul_pd(a[2], d[2]));
+        __m128d r2 = _mm_setzero_pd();
+        for (int k = 0; k < 3; k++) {
+            const __m128d perp = _mm_sub_pd(a[k], _mm_mul_pd(along, d[k]));
+            r2 = _mm_add_pd(r2, _mm_mul_pd(perp, perp));
+        }
+        dist[h] = _mm_sqrt_pd(r2);
+    }
+    /* max_left(x, y) = y > x ? y : x, from 0, x before y. */
+    __m128d width = _mm_setzero_pd(), growth = _mm_setzero_pd();
+    for (int axis = 0; axis < 2; axis++) {
+        const __m128d w_gt = _mm_cmpgt_pd(dist[axis], width);
+        width = _mm_or_pd(_mm_and_pd(w_gt, dist[axis]), _mm_andnot_pd(w_gt, width));
+        const __m128d g = _mm_sub_pd(dist[2 + axis], dist[axis]);
+        const __m128d g_gt = _mm_cmpgt_pd(g, growth);
+        growth = _mm_or_pd(_mm_and_pd(g_gt, g), _mm_andnot_pd(g_gt, growth));
+    }
+    const __m128d spread = _mm_div_pd(growth, len);
+    double dv[3][2], wv[2], sv[2];
+    for (int k = 0; k < 3; k++)
+        _mm_storeu_pd(dv[k], d[k]);
+    _mm_storeu_pd(wv, width);
+    _mm_storeu_pd(sv, spread);
+    for (int i = 0; i < 2; i++) {
+        for (int k = 0; k < 3; k++) {
+            org[i][k] = (float)c[i]->near_pt[k];
+            dir[i][k] = (float)dv[k][i];
+        }
+        tmax[i] = (float)l[i];
+        cone[i].width = (float)wv[i];
+        cone[i].spread = (float)sv[i];
+    }
+    return 1;
+}
+#endif
+
 void render_framebuffer_release(struct render_framebuffer *fb)
 {
     rt_free(fb->rgba);
@@ -557,6 +636,9 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
      * the second look at the primed hit and the next distance it steps
      * to (some 130 instructions a pixel). */
     const int direct = !pass->depth_state && !sc->clipping && !sc->see_through;
+    /* The eye light's direct hits of a block are shaded together, their
+     * texture levels of detail two at a time (shade_eye_hits). */
+    const int eye = st->shading == RENDER_EYE_LIGHT;
     for (int by = y0; by < y0 + RENDER_TILE_SIZE && by < vp[3]; by += RENDER_BLOCK_H) {
         unproject_cache_row(pass, &cache, by);
         for (int bx = x0; bx < x0 + RENDER_TILE_SIZE && bx < vp[2]; bx += RENDER_BLOCK_W) {
@@ -566,6 +648,18 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
             pk.active = 0;
             for (int i = 0; i < TRACE_PACKET; i++) {
                 const int x = bx + i % RENDER_BLOCK_W, y = by + i / RENDER_BLOCK_W;
+#if RENDER_PAIRS
+                /* Two neighbours in a row at once when both are inside. */
+                if (i % 2 == 0 && x + 1 < x0 + RENDER_TILE_SIZE && x + 1 < vp[2] &&
+                    y < y0 + RENDER_TILE_SIZE && y < vp[3] &&
+                    primary_ray_pair(&cache, x, y, &pk.org[i], &pk.dir[i], &pk.tmax[i],
+                                     &cone[i])) {
+                    pk.tmin[i] = pk.tmin[i + 1] = 0.0f;
+                    pk.active |= 3u << i;
+                    i++;
+                    continue;
+                }
+#endif
                 if (x < x0 + RENDER_TILE_SIZE && x < vp[2] && y < y0 + RENDER_TILE_SIZE &&
                     y < vp[3] && primary_ray(&cache, x, y, pk.org[i], pk.dir[i],
                                              &pk.tmax[i], &cone[i])) {
@@ -588,6 +682,11 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
             }
             shade_prime_shadows(sc, found, hits, (const float(*)[3])pk.org,
                                 (const float(*)[3])pk.dir, cone, surf, primed);
+            const float *eye_dir[TRACE_PACKET];
+            const struct trace_scene_hit *eye_hit[TRACE_PACKET];
+            struct shade_cone eye_cone[TRACE_PACKET];
+            float *eye_px[TRACE_PACKET];
+            int eyes = 0;
             for (int i = 0; i < TRACE_PACKET; i++) {
                 const int x = bx + i % RENDER_BLOCK_W, y = by + i / RENDER_BLOCK_W;
                 if (!(x < x0 + RENDER_TILE_SIZE && x < vp[2] && y < y0 + RENDER_TILE_SIZE &&
@@ -607,7 +706,14 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                     t_first = INFINITY;
                 } else if (direct && gl_hit_drawn(sc, pk.dir[i], &primed[i].hit)) {
                     /* blend_trace_primary's first, opaque, drawn hit. */
-                    shade_hit(sc, pk.org[i], pk.dir[i], &primed[i].hit, cone[i], 0, px);
+                    if (eye) {
+                        /* Shaded with the block's others below. */
+                        eye_dir[eyes] = pk.dir[i];
+                        eye_hit[eyes] = &primed[i].hit;
+                        eye_cone[eyes] = cone[i];
+                        eye_px[eyes++] = px;
+                    } else
+                        shade_hit(sc, pk.org[i], pk.dir[i], &primed[i].hit, cone[i], 0, px);
                     t_first = primed[i].hit.t;
                 } else if (pass->depth_state) /* polygon offset in the frame (lines.c) */
                     blend_trace_primary_state(sc, pk.org[i], pk.dir[i], pk.tmax[i], cone[i], px,
@@ -620,6 +726,8 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                     pass->depth[at] =
                         raster_window_depth(st->projection, pk.org[i], pk.dir[i], t_first);
             }
+            if (eyes)
+                shade_eye_hits(sc, eyes, eye_dir, eye_hit, eye_cone, eye_px);
         }
     }
 }

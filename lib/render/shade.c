@@ -170,6 +170,21 @@ static int same_hit(const struct trace_scene_hit *a, const struct trace_scene_hi
            a->instance == b->instance;
 }
 
+/* The eye light's colour of a hit whose surface colours are e, seen
+ * along the unit unit_dir. */
+static void eye_light(const struct render_state *st, const struct surface_colour *e,
+                      const float global_ambient[4], const float unit_dir[3], float rgba[4])
+{
+    float c[3];
+    float cosine = fabsf(vec3_dot(e->n, unit_dir));
+    for (int k = 0; k < 3; k++)
+        c[k] = !e->lighting && st->lighting_used
+                   ? e->diffuse[k]
+                   : e->emission[k] + global_ambient[k] * e->ambient[k] + e->diffuse[k] * cosine;
+    memcpy(rgba, c, sizeof(c));
+    rgba[3] = 1.0f;
+}
+
 void shade_ray(const struct shade_context *sc, const float org[3], const float dir[3],
                float tmax, struct shade_cone cone, int depth, float rgba[4])
 {
@@ -215,13 +230,7 @@ void shade_hit(const struct shade_context *sc, const float org[3], const float d
          * ray casting".  Only the colours it reads are fetched. */
         struct surface_colour e;
         surface_fetch_colour(sc, &hit, dir, at_hit.width, &e);
-        float cosine = fabsf(vec3_dot(e.n, unit_dir));
-        for (int k = 0; k < 3; k++)
-            c[k] = !e.lighting && st->lighting_used
-                       ? e.diffuse[k]
-                       : e.emission[k] + global_ambient[k] * e.ambient[k] + e.diffuse[k] * cosine;
-        memcpy(rgba, c, sizeof(c));
-        rgba[3] = 1.0f;
+        eye_light(st, &e, global_ambient, unit_dir, rgba);
         return;
     }
     /* The camera ray's first hit: shade_prime_shadows may have fetched
@@ -341,5 +350,34 @@ void shade_prime_shadows(const struct shade_context *sc, unsigned found,
             primed[i].shadow_known |= 1u << l;
             primed[i].shadow_occluded |= (occluded >> i & 1u) << l;
         }
+    }
+}
+
+void shade_eye_hits(const struct shade_context *sc, int n, const float *const dir[],
+                    const struct trace_scene_hit *const hits[],
+                    const struct shade_cone cone[], float *const rgba[])
+{
+    struct surface_colour e[TRACE_PACKET];
+    struct surface_texture tex[TRACE_PACKET];
+    struct surface_texture *lod[TRACE_PACKET] = {NULL};
+    float unit_dir[TRACE_PACKET][3];
+    int lods = 0;
+    /* shade_hit's steps up to the level of detail for every hit, ... */
+    for (int i = 0; i < n; i++) {
+        const struct shade_cone at_hit = cone_at(cone[i], dir[i], hits[i]->t);
+        memcpy(unit_dir[i], dir[i], sizeof(unit_dir[i]));
+        vec3_normalize(unit_dir[i]);
+        surface_fetch_colour_begin(sc, hits[i], dir[i], at_hit.width, &e[i], &tex[i]);
+        if (tex[i].lod)
+            lod[lods++] = &tex[i];
+    }
+    /* ... the levels of detail two at a time, ... */
+    surface_texture_lods(lod, lods);
+    /* ... and the rest. */
+    for (int i = 0; i < n; i++) {
+        surface_fetch_colour_end(&e[i], &tex[i]);
+        const float *global_ambient =
+            shade_hit_instance(sc, hits[i])->appearance.gl.light_model.ambient;
+        eye_light(sc->state, &e[i], global_ambient, unit_dir[i], rgba[i]);
     }
 }

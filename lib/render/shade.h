@@ -97,6 +97,18 @@ void shade_hit(const struct shade_context *sc, const float org[3], const float d
                float rgba[4]);
 
 /*
+ * shade_hit at depth 0 in the eye-light mode for n <= TRACE_PACKET hits
+ * at once (hits[i] of the ray along dir[i] with cone[i],
+ * colour into rgba[i]): the texture level of detail of two hits is
+ * computed together in SSE2 lanes (surface.h, surface_texture_lods).
+ * The same operations on the same values as shade_hit, so the same
+ * colours bit for bit.
+ */
+void shade_eye_hits(const struct shade_context *sc, int n, const float *const dir[],
+                    const struct trace_scene_hit *const hits[],
+                    const struct shade_cone cone[], float *const rgba[]);
+
+/*
  * Whitted shading's shadow rays of a 4 x 2 block's camera rays, one
  * packet per light (Wald, Slusallek, Benthin and Wagner 2001 sec. 4:
  * shadow rays of neighbouring pixels to one light share their end point,

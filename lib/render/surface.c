@@ -226,18 +226,30 @@ static int lod_near(double s2, double xs, double top, float *lambda)
  * decide); and a footprint of at most one texel (log2 <= 0, a
  * magnification whatever the filters) or of at least 2^(q + 2) texels
  * (beyond the last level q) returns -inf or +inf without the log2.
+ *
+ * texture_lod (below) is lod_triangle, the part of the triangle, then
+ * lod_ray, the part of the ray; lod_ray_pair computes the latter for two
+ * hits at once (surface_texture_lods).
  */
-static float texture_lod(const struct shade_context *sc, const struct scene_texture *tex,
-                         const struct scene_instance *inst, const struct scene_mesh *mesh,
-                         uint32_t prim, const uint32_t v[3], const float *const st[3],
-                         const float ng[3], const float dir[3], float width)
+
+/* The triangle-only part of texture_lod: from the tile's cache when the
+ * last hit was on the same triangle (and, for the texel edges, the same
+ * texture and coordinates), else computed into it (or into `scratch`
+ * without a cache). */
+static const struct surface_lod *lod_triangle(const struct shade_context *sc,
+                                              const struct scene_texture *tex,
+                                              const struct scene_instance *inst,
+                                              const struct scene_mesh *mesh, uint32_t prim,
+                                              const uint32_t v[3], const float *const st[3],
+                                              struct surface_cache *scratch)
 {
-    struct surface_cache scratch, *c = triangle_cache(sc, inst, prim);
+    struct surface_cache *c = triangle_cache(sc, inst, prim);
     if (!c) {
-        c = &scratch;
+        c = scratch;
         c->geometry = 0;
         c->tex = NULL;
     }
+    struct surface_lod *l = &c->lod;
     if (!c->geometry) {
         const float *p0 = &mesh->positions[3 * v[0]];
         const float *p1 = &mesh->positions[3 * v[1]];
@@ -247,29 +259,72 @@ static float texture_lod(const struct shade_context *sc, const struct scene_text
             e1[k] = (double)p1[k] - (double)p0[k];
             e2[k] = (double)p2[k] - (double)p0[k];
         }
-        mat4_transform_vector(inst->object_to_world, e1, c->w1);
-        mat4_transform_vector(inst->object_to_world, e2, c->w2);
-        cross3d(c->w1, c->w2, c->nn);
-        c->nn2 = dot3d(c->nn, c->nn);
-        c->p_a = sqrt(c->nn2);
+        mat4_transform_vector(inst->object_to_world, e1, l->w1);
+        mat4_transform_vector(inst->object_to_world, e2, l->w2);
+        cross3d(l->w1, l->w2, l->nn);
+        l->nn2 = dot3d(l->nn, l->nn);
+        l->p_a = sqrt(l->nn2);
         for (int k = 0; k < 3; k++)
-            c->n[k] = c->nn[k] / c->p_a;
+            l->n[k] = l->nn[k] / l->p_a;
         c->geometry = 1;
     }
     if (c->tex != tex || memcmp(c->st[0], st[0], sizeof(c->st[0])) ||
         memcmp(c->st[1], st[1], sizeof(c->st[1])) || memcmp(c->st[2], st[2], sizeof(c->st[2]))) {
         const float *t0 = st[0], *t1 = st[1], *t2 = st[2];
-        c->a1[0] = ((double)t1[0] - (double)t0[0]) * tex->width;
-        c->a1[1] = ((double)t1[1] - (double)t0[1]) * tex->height;
-        c->a2[0] = ((double)t2[0] - (double)t0[0]) * tex->width;
-        c->a2[1] = ((double)t2[1] - (double)t0[1]) * tex->height;
-        c->t_a = fabs(c->a1[0] * c->a2[1] - c->a2[0] * c->a1[1]);
+        l->a1[0] = ((double)t1[0] - (double)t0[0]) * tex->width;
+        l->a1[1] = ((double)t1[1] - (double)t0[1]) * tex->height;
+        l->a2[0] = ((double)t2[0] - (double)t0[0]) * tex->width;
+        l->a2[1] = ((double)t2[1] - (double)t0[1]) * tex->height;
+        l->t_a = fabs(l->a1[0] * l->a2[1] - l->a2[0] * l->a1[1]);
         for (int i = 0; i < 3; i++)
             memcpy(c->st[i], st[i], sizeof(c->st[i]));
         c->tex = tex;
     }
-    const double *w1 = c->w1, *w2 = c->w2, *nn = c->nn, *n = c->n, *a1 = c->a1, *a2 = c->a2;
-    const double nn2 = c->nn2, p_a = c->p_a, t_a = c->t_a;
+    return l;
+}
+
+/* The last level's threshold of texture_lod: a footprint of 2^(q + 2)
+ * texels or more is beyond the last level q. */
+static double lod_top(int level_count)
+{
+    return (double)(1u << (level_count + 1));
+}
+
+/* The end of texture_lod, from the footprint's two texel vectors ja
+ * (the long axis, along) and jb (across), their squared lengths sa, sb
+ * and sbc = sb cosine^2. */
+static float lod_axes(const double ja[2], const double jb[2], double sa, double sb, double sbc,
+                      double cosine, float width, double top)
+{
+    /* major = hypot(ja) width / cosine, minor = hypot(jb) width: major
+     * wins when |ja|^2 > |jb|^2 cosine^2 by the margin, minor when the
+     * reverse holds; NaNs fail both tests and take the full max. */
+    double x;
+    float near_lambda;
+    if (sa > sbc * (1.0 + LOD_AXIS_MARGIN)) {
+        if (lod_near(sa, sqrt(sa) * (double)width / cosine, top, &near_lambda))
+            return near_lambda;
+        x = hypot(ja[0], ja[1]) * (double)width / cosine;
+    } else if (sbc > sa * (1.0 + LOD_AXIS_MARGIN)) {
+        if (lod_near(sb, sqrt(sb) * (double)width, top, &near_lambda))
+            return near_lambda;
+        x = hypot(jb[0], jb[1]) * (double)width;
+    } else
+        x = fmax(hypot(ja[0], ja[1]) * (double)width / cosine, hypot(jb[0], jb[1]) * (double)width);
+    if (!(x > 1.0))
+        return -INFINITY; /* log2(x) <= 0 or NaN: a magnification */
+    if (x >= top)
+        return INFINITY; /* log2(x) >= q + 2: level q (or a non-mipmapped minification) */
+    return (float)log2(x);
+}
+
+/* texture_lod's part that depends on the ray, for the triangle part l
+ * (lod_triangle) of a texture with level_count levels. */
+static float lod_ray(const struct surface_lod *l, int level_count, const float ng[3],
+                     const float dir[3], float width)
+{
+    const double *w1 = l->w1, *w2 = l->w2, *nn = l->nn, *n = l->n, *a1 = l->a1, *a2 = l->a2;
+    const double nn2 = l->nn2, p_a = l->p_a, t_a = l->t_a;
     const double d[3] = {dir[0], dir[1], dir[2]};
     const double dir_len = sqrt(dot3d(d, d));
     double cosine = fabs((double)ng[0] * d[0] + (double)ng[1] * d[1] + (double)ng[2] * d[2]) /
@@ -313,29 +368,134 @@ static float texture_lod(const struct shade_context *sc, const struct scene_text
     double j[2][2];
     texel_vectors(along, across, w1, w2, nn, nn2, a1, a2, j);
     const double *ja = j[0], *jb = j[1];
-    /* major = hypot(ja) width / cosine, minor = hypot(jb) width: major
-     * wins when |ja|^2 > |jb|^2 cosine^2 by the margin, minor when the
-     * reverse holds; NaNs fail both tests and take the full max. */
     const double sa = ja[0] * ja[0] + ja[1] * ja[1], sb = jb[0] * jb[0] + jb[1] * jb[1];
     const double sbc = sb * (cosine * cosine);
-    const double top = (double)(1u << (tex->level_count + 1));
-    double x;
-    float near_lambda;
-    if (sa > sbc * (1.0 + LOD_AXIS_MARGIN)) {
-        if (lod_near(sa, sqrt(sa) * (double)width / cosine, top, &near_lambda))
-            return near_lambda;
-        x = hypot(ja[0], ja[1]) * (double)width / cosine;
-    } else if (sbc > sa * (1.0 + LOD_AXIS_MARGIN)) {
-        if (lod_near(sb, sqrt(sb) * (double)width, top, &near_lambda))
-            return near_lambda;
-        x = hypot(jb[0], jb[1]) * (double)width;
-    } else
-        x = fmax(hypot(ja[0], ja[1]) * (double)width / cosine, hypot(jb[0], jb[1]) * (double)width);
-    if (!(x > 1.0))
-        return -INFINITY; /* log2(x) <= 0 or NaN: a magnification */
-    if (x >= top)
-        return INFINITY; /* log2(x) >= q + 2: level q (or a non-mipmapped minification) */
-    return (float)log2(x);
+    return lod_axes(ja, jb, sa, sb, sbc, cosine, width, lod_top(level_count));
+}
+
+static float texture_lod(const struct shade_context *sc, const struct scene_texture *tex,
+                         const struct scene_instance *inst, const struct scene_mesh *mesh,
+                         uint32_t prim, const uint32_t v[3], const float *const st[3],
+                         const float ng[3], const float dir[3], float width)
+{
+    struct surface_cache scratch;
+    return lod_ray(lod_triangle(sc, tex, inst, mesh, prim, v, st, &scratch), tex->level_count, ng,
+                   dir, width);
+}
+
+#if SURFACE_PAIRS
+static __m128d pair_dot(const __m128d a[3], const __m128d b[3])
+{
+    return _mm_add_pd(_mm_add_pd(_mm_mul_pd(a[0], b[0]), _mm_mul_pd(a[1], b[1])),
+                      _mm_mul_pd(a[2], b[2]));
+}
+
+/* cross3d in lanes. */
+static void pair_cross(const __m128d a[3], const __m128d b[3], __m128d out[3])
+{
+    out[0] = _mm_sub_pd(_mm_mul_pd(a[1], b[2]), _mm_mul_pd(a[2], b[1]));
+    out[1] = _mm_sub_pd(_mm_mul_pd(a[2], b[0]), _mm_mul_pd(a[0], b[2]));
+    out[2] = _mm_sub_pd(_mm_mul_pd(a[0], b[1]), _mm_mul_pd(a[1], b[0]));
+}
+
+/* texel_vector of the in-plane vectors e in lanes (lane i: triangle
+ * lane i's w1, w2, nn, nn2, a1, a2), each lane texel_vector's operations
+ * in its order. */
+static void pair_texel_vector(const __m128d e[3], const __m128d w1[3], const __m128d w2[3],
+                              const __m128d nn[3], __m128d nn2, const __m128d a1[2],
+                              const __m128d a2[2], __m128d out[2])
+{
+    __m128d ew2[3], w1e[3];
+    pair_cross(e, w2, ew2);
+    pair_cross(w1, e, w1e);
+    const __m128d alpha = _mm_div_pd(pair_dot(ew2, nn), nn2);
+    const __m128d beta = _mm_div_pd(pair_dot(w1e, nn), nn2);
+    out[0] = _mm_add_pd(_mm_mul_pd(alpha, a1[0]), _mm_mul_pd(beta, a2[0]));
+    out[1] = _mm_add_pd(_mm_mul_pd(alpha, a1[1]), _mm_mul_pd(beta, a2[1]));
+}
+
+/* lod_ray of two textures' hits in the two lanes (lane 0 a, lane 1 b):
+ * each lane lod_ray's operations on its values in its order, so the same
+ * doubles; a lane that leaves lod_ray's common path (a degenerate
+ * triangle or direction, a ray meeting the plane head-on) is computed
+ * again by lod_ray itself. */
+static void lod_ray_pair(struct surface_texture *a, struct surface_texture *b)
+{
+    const struct surface_lod *la = &a->tri, *lb = &b->tri;
+    __m128d d[3], g[3], n[3];
+    for (int k = 0; k < 3; k++) {
+        d[k] = _mm_set_pd((double)b->dir[k], (double)a->dir[k]);
+        g[k] = _mm_set_pd((double)b->ng[k], (double)a->ng[k]);
+        n[k] = _mm_set_pd(lb->n[k], la->n[k]);
+    }
+    const __m128d dir_len = _mm_sqrt_pd(pair_dot(d, d));
+    const __m128d sign = _mm_set1_pd(-0.0);
+    __m128d cosine = _mm_div_pd(_mm_andnot_pd(sign, pair_dot(g, d)), dir_len);
+    const __m128d min_cos = _mm_set1_pd(LOD_MIN_COSINE);
+    const __m128d keep = _mm_cmpge_pd(cosine, min_cos);
+    cosine = _mm_or_pd(_mm_and_pd(keep, cosine), _mm_andnot_pd(keep, min_cos));
+    const __m128d dn = _mm_div_pd(pair_dot(d, n), dir_len);
+    __m128d along[3];
+    for (int k = 0; k < 3; k++)
+        along[k] = _mm_sub_pd(_mm_div_pd(d[k], dir_len), _mm_mul_pd(dn, n[k]));
+    const __m128d along_len = _mm_sqrt_pd(pair_dot(along, along));
+    for (int k = 0; k < 3; k++)
+        along[k] = _mm_div_pd(along[k], along_len);
+    __m128d across[3];
+    pair_cross(n, along, across);
+    __m128d w1[3], w2[3], nn[3], a1[2], a2[2];
+    for (int k = 0; k < 3; k++) {
+        w1[k] = _mm_set_pd(lb->w1[k], la->w1[k]);
+        w2[k] = _mm_set_pd(lb->w2[k], la->w2[k]);
+        nn[k] = _mm_set_pd(lb->nn[k], la->nn[k]);
+    }
+    for (int k = 0; k < 2; k++) {
+        a1[k] = _mm_set_pd(lb->a1[k], la->a1[k]);
+        a2[k] = _mm_set_pd(lb->a2[k], la->a2[k]);
+    }
+    const __m128d nn2 = _mm_set_pd(lb->nn2, la->nn2);
+    __m128d ja[2], jb[2];
+    pair_texel_vector(along, w1, w2, nn, nn2, a1, a2, ja);
+    pair_texel_vector(across, w1, w2, nn, nn2, a1, a2, jb);
+    const __m128d sa = _mm_add_pd(_mm_mul_pd(ja[0], ja[0]), _mm_mul_pd(ja[1], ja[1]));
+    const __m128d sb = _mm_add_pd(_mm_mul_pd(jb[0], jb[0]), _mm_mul_pd(jb[1], jb[1]));
+    const __m128d sbc = _mm_mul_pd(sb, _mm_mul_pd(cosine, cosine));
+    double v_len[2], v_cos[2], v_along[2], v_ja[2][2], v_jb[2][2], v_sa[2], v_sb[2], v_sbc[2];
+    _mm_storeu_pd(v_len, dir_len);
+    _mm_storeu_pd(v_cos, cosine);
+    _mm_storeu_pd(v_along, along_len);
+    _mm_storeu_pd(v_ja[0], ja[0]);
+    _mm_storeu_pd(v_ja[1], ja[1]);
+    _mm_storeu_pd(v_jb[0], jb[0]);
+    _mm_storeu_pd(v_jb[1], jb[1]);
+    _mm_storeu_pd(v_sa, sa);
+    _mm_storeu_pd(v_sb, sb);
+    _mm_storeu_pd(v_sbc, sbc);
+    struct surface_texture *t[2] = {a, b};
+    for (int i = 0; i < 2; i++) {
+        const struct surface_lod *l = &t[i]->tri;
+        if (!(l->p_a > 0.0) || !(l->t_a > 0.0) || !(v_len[i] > 0.0) || !isfinite(l->nn2) ||
+            !(v_along[i] > 1e-9)) {
+            t[i]->lambda = lod_ray(l, t[i]->tex->level_count, t[i]->ng, t[i]->dir, t[i]->width);
+            continue;
+        }
+        const double ja_i[2] = {v_ja[0][i], v_ja[1][i]}, jb_i[2] = {v_jb[0][i], v_jb[1][i]};
+        t[i]->lambda = lod_axes(ja_i, jb_i, v_sa[i], v_sb[i], v_sbc[i], v_cos[i], t[i]->width,
+                                lod_top(t[i]->tex->level_count));
+    }
+}
+#endif
+
+void surface_texture_lods(struct surface_texture *const *t, int n)
+{
+    int i = 0;
+#if SURFACE_PAIRS
+    for (; i + 1 < n; i += 2)
+        lod_ray_pair(t[i], t[i + 1]);
+#endif
+    for (; i < n; i++)
+        t[i]->lambda = lod_ray(&t[i]->tri, t[i]->tex->level_count, t[i]->ng, t[i]->dir,
+                               t[i]->width);
 }
 
 /*
@@ -379,38 +539,64 @@ static void projective_st(const float *const vst[3], const float q[3], float b0,
  * when both filters are the same non-mipmapped one every level of detail
  * gives the same lookup, and none is computed.
  */
-static void apply_texture(const struct shade_context *sc, const struct scene_instance *inst,
+static void texture_begin(const struct shade_context *sc, const struct scene_instance *inst,
                           const struct scene_mesh *mesh, uint32_t prim, const uint32_t v[3],
-                          float b0,
-                          float b1, float b2, const float ng[3], const float dir[3],
-                          float width, uint32_t name, float ambient[4], float diffuse[4])
+                          float b0, float b1, float b2, const float ng[3], const float dir[3],
+                          float width, uint32_t name, struct surface_texture *t)
 {
     const struct scene_texture *tex = scene_textures_lookup(sc->textures, name);
+    t->tex = NULL;
+    t->lod = 0;
     if (!tex || !tex->texels)
         return;
-    float st[2], texel[4];
-    float lambda = -INFINITY; /* a magnification */
+    t->tex = tex;
+    t->lambda = -INFINITY; /* a magnification */
     const float *const vst[3] = {&mesh->texcoords[2 * v[0]], &mesh->texcoords[2 * v[1]],
                                  &mesh->texcoords[2 * v[2]]};
+    float lod_st[3][2];
+    const float *lst[3] = {vst[0], vst[1], vst[2]};
     if (mesh->texcoord_q) {
         /* rtTexCoord4: s / q, t / q (q = 1 everywhere else, unchanged). */
         const float q[3] = {mesh->texcoord_q[v[0]], mesh->texcoord_q[v[1]],
                             mesh->texcoord_q[v[2]]};
-        float lod_st[3][2];
-        projective_st(vst, q, b0, b1, b2, st, lod_st);
-        const float *const lst[3] = {lod_st[0], lod_st[1], lod_st[2]};
-        if (tex->min_filter != tex->mag_filter)
-            lambda = texture_lod(sc, tex, inst, mesh, prim, v, lst, ng, dir, width);
+        projective_st(vst, q, b0, b1, b2, t->st, lod_st);
+        for (int i = 0; i < 3; i++)
+            lst[i] = lod_st[i];
     } else {
-        interpolate(mesh->texcoords, 2, v, b0, b1, b2, 2, st);
-        if (tex->min_filter != tex->mag_filter)
-            lambda = texture_lod(sc, tex, inst, mesh, prim, v, vst, ng, dir, width);
+        interpolate(mesh->texcoords, 2, v, b0, b1, b2, 2, t->st);
     }
-    scene_texture_sample_lod(tex, lambda, st[0], st[1], texel);
+    if (tex->min_filter != tex->mag_filter) {
+        struct surface_cache scratch;
+        t->tri = *lod_triangle(sc, tex, inst, mesh, prim, v, lst, &scratch);
+        memcpy(t->ng, ng, sizeof(t->ng));
+        memcpy(t->dir, dir, sizeof(t->dir));
+        t->width = width;
+        t->lod = 1;
+    }
+}
+
+static void texture_end(const struct surface_texture *t, float ambient[4], float diffuse[4])
+{
+    if (!t->tex)
+        return;
+    float texel[4];
+    scene_texture_sample_lod(t->tex, t->lambda, t->st[0], t->st[1], texel);
     for (int k = 0; k < 3; k++) {
         ambient[k] *= texel[k];
         diffuse[k] *= texel[k];
     }
+}
+
+static void apply_texture(const struct shade_context *sc, const struct scene_instance *inst,
+                          const struct scene_mesh *mesh, uint32_t prim, const uint32_t v[3],
+                          float b0, float b1, float b2, const float ng[3], const float dir[3],
+                          float width, uint32_t name, float ambient[4], float diffuse[4])
+{
+    struct surface_texture t;
+    texture_begin(sc, inst, mesh, prim, v, b0, b1, b2, ng, dir, width, name, &t);
+    if (t.lod)
+        t.lambda = lod_ray(&t.tri, t.tex->level_count, t.ng, t.dir, t.width);
+    texture_end(&t, ambient, diffuse);
 }
 
 void surface_resolve_material(const struct scene_appearance *call, struct scene_material *m)
@@ -673,8 +859,9 @@ void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit 
  * The same operations on the same values as surface_fetch and
  * surface_resolve_material, so the same colours bit for bit.
  */
-void surface_fetch_colour(const struct shade_context *sc, const struct trace_scene_hit *hit,
-                          const float dir[3], float width, struct surface_colour *s)
+void surface_fetch_colour_begin(const struct shade_context *sc, const struct trace_scene_hit *hit,
+                                const float dir[3], float width, struct surface_colour *s,
+                                struct surface_texture *tx)
 {
     struct hit_triangle t;
     hit_triangle(sc, hit, &t);
@@ -702,9 +889,26 @@ void surface_fetch_colour(const struct shade_context *sc, const struct trace_sce
         memcpy(s->diffuse, (k & SCENE_MATERIAL_DIFFUSE) ? call->diffuse : m->diffuse,
                sizeof(s->diffuse));
     }
+    tx->tex = NULL;
+    tx->lod = 0;
     if (texture)
-        apply_texture(sc, t.inst, t.mesh, hit->prim, t.v, t.b0, t.b1, t.b2, s->ng, dir, width, texture,
-                      s->ambient, s->diffuse);
+        texture_begin(sc, t.inst, t.mesh, hit->prim, t.v, t.b0, t.b1, t.b2, s->ng, dir, width,
+                      texture, tx);
+}
+
+void surface_fetch_colour_end(struct surface_colour *s, const struct surface_texture *t)
+{
+    texture_end(t, s->ambient, s->diffuse);
+}
+
+void surface_fetch_colour(const struct shade_context *sc, const struct trace_scene_hit *hit,
+                          const float dir[3], float width, struct surface_colour *s)
+{
+    struct surface_texture t;
+    surface_fetch_colour_begin(sc, hit, dir, width, s, &t);
+    if (t.lod)
+        t.lambda = lod_ray(&t.tri, t.tex->level_count, t.ng, t.dir, t.width);
+    surface_fetch_colour_end(s, &t);
 }
 
 int surface_texel(const struct shade_context *sc, const struct trace_scene_hit *hit,

@@ -22,17 +22,27 @@
  * order pixels are shaded in.
  */
 struct scene_texture;
+
+/* The triangle-only part of the texture level of detail (surface.c,
+ * texture_lod): the triangle's world edges w1, w2, their cross product nn
+ * (|nn|^2 = nn2, |nn| = p_a, nn / p_a = n) and its texel edges a1, a2
+ * (texel area t_a). */
+struct surface_lod {
+    double w1[3], w2[3], nn[3], nn2, p_a, n[3];
+    double a1[2], a2[2], t_a;
+};
+
 struct surface_cache {
     const struct scene_instance *inst; /* NULL: empty */
     uint32_t prim;
     int normal;   /* 0 not computed, 1 ng is the unit normal, -1 degenerate */
     float ng[3];  /* unit geometric normal, world space, recorded winding */
-    int geometry; /* the level of detail's world edges below are set */
-    double w1[3], w2[3], nn[3], nn2, p_a, n[3];
-    /* The level of detail's texel edges of texture `tex` at coordinates st. */
+    int geometry; /* the level of detail's world edges (lod.w1 ... lod.n) are set */
+    /* lod.a1, lod.a2, lod.t_a: the texel edges of texture `tex` at
+     * coordinates st. */
     const struct scene_texture *tex;
     float st[3][2];
-    double a1[2], a2[2], t_a;
+    struct surface_lod lod;
 };
 
 /* Surface data at a hit, in world space. */
@@ -79,6 +89,35 @@ struct surface_colour {
 
 void surface_fetch_colour(const struct shade_context *sc, const struct trace_scene_hit *hit,
                           const float dir[3], float width, struct surface_colour *s);
+
+/*
+ * surface_fetch_colour in three steps, so that the level of detail of
+ * several hits can be computed together (surface_texture_lods): the
+ * level of detail is a chain of dependent double divisions and square
+ * roots, whose latency two hits in the two SSE2 lanes share.  Begin
+ * fetches the colours without the texture and leaves in `t` what the
+ * texture lookup needs; end samples and applies it.  The same operations
+ * on the same values as surface_fetch_colour, so the same colours bit
+ * for bit.
+ */
+struct surface_texture {
+    const struct scene_texture *tex; /* NULL: nothing to apply */
+    float st[2];                     /* the interpolated coordinates */
+    float lambda;                    /* the level of detail, once known */
+    int lod;                         /* 1: lambda still to compute from the rest */
+    float ng[3], dir[3], width;
+    struct surface_lod tri;
+};
+
+void surface_fetch_colour_begin(const struct shade_context *sc, const struct trace_scene_hit *hit,
+                                const float dir[3], float width, struct surface_colour *s,
+                                struct surface_texture *t);
+
+/* The level of detail of the n textures t[i] with lod set, two at a
+ * time. */
+void surface_texture_lods(struct surface_texture *const *t, int n);
+
+void surface_fetch_colour_end(struct surface_colour *s, const struct surface_texture *t);
 
 /* The texel of texture `name` at a hit, for the RT_FIXED_FUNCTION mode,
  * which applies it after lighting through the texture environment
