@@ -59,6 +59,10 @@ struct packet_state {
      * float above its best once it has a hit); kept up to date wherever
      * a ray's best changes (packet_take_hit, packet_sync). */
     float limit[TRACE_PACKET];
+    /* Each ray's box_limit beside its state's (-inf for a lane without
+     * a ray), kept up to date with limit, so that packet_walk8_ia reads
+     * the rays' limits as one vector after a leaf. */
+    float box_limit[TRACE_PACKET];
     uint64_t triangle_tests; /* those of packet_leaf8, for all its rays */
     /* The interval walk (packet_walk8_ia): the packet's bounds per axis
      * (broadcast), and the rays in the lanes for the leaf boxes. */
@@ -75,15 +79,18 @@ struct packet_state {
 /* A packet hits a triangle: walk_leaf's limit and hit rule for ray r
  * (wide_leaf_impl), t, u, v the triangle test's.  Returns 1 when an
  * any-hit ray has its hit. */
-static inline int packet_take_hit(struct wide_state *s, float *limit, uint32_t prim, float t,
+static inline int packet_take_hit(struct packet_state *p, unsigned r, uint32_t prim, float t,
                                   float u, float w)
 {
+    struct wide_state *s = &p->s[r];
     if (s->any_hit) {
         s->found = 1;
         return 1;
     }
-    if (wide_take_closest(s, prim, t, u, w))
-        *limit = isect_next_up(t);
+    if (wide_take_closest(s, prim, t, u, w)) {
+        p->limit[r] = isect_next_up(t);
+        p->box_limit[r] = s->box_limit;
+    }
     return 0;
 }
 
@@ -92,6 +99,7 @@ static inline int packet_take_hit(struct wide_state *s, float *limit, uint32_t p
 static inline void packet_sync(struct packet_state *p, unsigned r)
 {
     p->limit[r] = p->s[r].found ? isect_next_up(p->s[r].best) : p->s[r].best;
+    p->box_limit[r] = p->s[r].box_limit;
 }
 
 /* A leaf lane (count triangles in packets from `first`) for the rays of
@@ -140,7 +148,7 @@ static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_pa
                     if (!isect_triangle(s->ray, v[0], v[1], v[2], limit[r], &t, &u, &w))
                         continue;
                 }
-                if (packet_take_hit(s, &limit[r], q->prim[l], t, u, w)) {
+                if (packet_take_hit(p, r, q->prim[l], t, u, w)) {
                     done |= 1u << r;
                     rays &= ~(1u << r);
                 }
@@ -490,12 +498,10 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
     const int *near_row = p->ia_row_near, *far_row = p->ia_row_far;
     const __m256 inf8 = _mm256_set1_ps(INFINITY);
     const __m256 scale8 = _mm256_set1_ps(ISECT_BOX_FAR_SCALE);
-    /* The rays' box_limit in the lanes (unused lanes -inf) and their
-     * greatest, refreshed after each leaf (only hits shrink them). */
-    float bl_lane[8];
-    for (unsigned r = 0; r < 8; r++)
-        bl_lane[r] = active >> r & 1u ? p->s[r].box_limit : -INFINITY;
-    __m256 bl = _mm256_loadu_ps(bl_lane);
+    /* The rays' box_limit in the lanes (unused lanes -inf, packet_run)
+     * and their greatest, refreshed after each leaf (only hits shrink
+     * them). */
+    __m256 bl = _mm256_loadu_ps(p->box_limit);
     __m256 limit_hi = _mm256_set1_ps(packet_hmax(bl));
     uint32_t sp = 0;
     uint32_t cur = 0, cur_count = 0;
@@ -522,11 +528,7 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
             if (!any_hit) {
                 /* An any-hit ray's box_limit never shrinks: it ends at
                  * its first hit. */
-                for (unsigned m = rays; m; m &= m - 1u) {
-                    const unsigned r = (unsigned)__builtin_ctz(m);
-                    bl_lane[r] = p->s[r].box_limit;
-                }
-                bl = _mm256_loadu_ps(bl_lane);
+                bl = _mm256_loadu_ps(p->box_limit);
                 limit_hi = _mm256_set1_ps(packet_hmax(bl));
             }
         } else {
@@ -672,6 +674,9 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
         return result;
     }
     struct packet_state p;
+#if defined(__AVX__)
+    _mm256_storeu_ps(p.box_limit, _mm256_set1_ps(-INFINITY));
+#endif
     for (unsigned m = active; m; m &= m - 1u) {
         const unsigned r = (unsigned)__builtin_ctz(m);
         struct wide_state *s = &p.s[r];
@@ -685,8 +690,10 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
         s->triangle_tests = 0;
 #if defined(__AVX__)
         p.limit[r] = t_max[r];
+        p.box_limit[r] = s->box_limit;
 #endif
     }
+
     unsigned done;
     int ia = 0;
 #if defined(__AVX__)
