@@ -67,7 +67,7 @@ struct packet_state {
     /* The interval walk (packet_walk8_ia): the packet's bounds per axis
      * (broadcast), and the rays in the lanes for the leaf boxes. */
     __m256 ia_o_near[3], ia_o_far[3], ia_i_lo[3], ia_i_hi[3], ia_tmin;
-    __m256 lane_org[3], lane_inv[3], lane_tmin;
+    __m256 lane_f[TRI8_F_COUNT]; /* the rays' fields in the lanes (tri8_lanes_load) */
     int ia_masks; /* rays from more than one origin: see packet_walk8_ia */
     int ia_octant;                  /* the rays' common octant */
     int ia_row_near[3], ia_row_far[3]; /* its near and far rows, byte offsets */
@@ -114,10 +114,8 @@ static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_pa
                                     uint32_t first, uint32_t count, unsigned rays)
 {
     if (!p->t8_ready) {
-        const struct trace_ray *lane_ray[8];
-        for (unsigned r = 0; r < 8; r++)
-            lane_ray[r] = p->lanes8 >> r & 1u ? p->s[r].ray : NULL;
-        tri8_rays_init(&p->t8, lane_ray, p->lanes8);
+        const struct trace_ray *r0 = p->s[__builtin_ctz(p->lanes8)].ray;
+        tri8_rays_init(&p->t8, p->lane_f, r0->kx, r0->ky, r0->kz);
         p->t8_ready = 1;
     }
     float *limit = p->limit;
@@ -400,28 +398,18 @@ static inline float packet_hmax(__m256 v)
 static inline int packet_ia_init(struct packet_state *p, const struct trace_ray *rays,
                                  unsigned active)
 {
-    /* The rays' fields in the lanes, one masked gather each; a lane
-     * without a ray copies the first ray (never read into an answer:
-     * masked by the packet's rays). */
-    const unsigned first = (unsigned)__builtin_ctz(active);
-    const struct trace_ray *r0 = &rays[first];
-    const int stride = (int)(sizeof(struct trace_ray) / sizeof(float));
-    const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
-    const __m256i idx = _mm256_mullo_epi32(lane, _mm256_set1_epi32(stride));
-    const __m256 act = _mm256_castsi256_ps(_mm256_cmpgt_epi32(
-        _mm256_and_si256(_mm256_set1_epi32((int)active),
-                         _mm256_sllv_epi32(_mm256_set1_epi32(1), lane)),
-        _mm256_setzero_si256()));
+    /* The rays' fields in the lanes (packet_run: a lane without a ray
+     * holds the first ray's, never read into an answer: masked by the
+     * packet's rays). */
+    const struct trace_ray *r0 = &rays[__builtin_ctz(active)];
     const __m256 sign = _mm256_set1_ps(-0.0f);
     const __m256 inf = _mm256_set1_ps(INFINITY);
     __m256 ok = _mm256_cmp_ps(_mm256_setzero_ps(), _mm256_setzero_ps(), _CMP_EQ_OQ);
     int octant = 0;
     p->ia_masks = 0;
     for (int k = 0; k < 3; k++) {
-        const __m256 o = _mm256_mask_i32gather_ps(_mm256_set1_ps(r0->org[k]), &rays[0].org[k],
-                                                  idx, act, 4);
-        const __m256 i = _mm256_mask_i32gather_ps(_mm256_set1_ps(r0->inv_dir[k]),
-                                                  &rays[0].inv_dir[k], idx, act, 4);
+        const __m256 o = p->lane_f[TRI8_F_ORG + k];
+        const __m256 i = p->lane_f[TRI8_F_INV + k];
         const __m256 abs_i = _mm256_andnot_ps(sign, i);
         ok = _mm256_and_ps(ok, _mm256_cmp_ps(_mm256_andnot_ps(sign, o), inf, _CMP_LT_OQ));
         ok = _mm256_and_ps(ok, _mm256_cmp_ps(abs_i, inf, _CMP_LT_OQ));
@@ -438,20 +426,16 @@ static inline int packet_ia_init(struct packet_state *p, const struct trace_ray 
         p->ia_o_far[k] = _mm256_set1_ps(neg ? o_hi : o_lo);
         p->ia_i_lo[k] = _mm256_set1_ps(i_lo);
         p->ia_i_hi[k] = _mm256_set1_ps(i_hi);
-        p->lane_org[k] = o;
-        p->lane_inv[k] = i;
         p->ia_row_near[k] = (neg ? 3 + k : k) * (int)sizeof(((struct bvh8_node *)0)->bounds[0]);
         p->ia_row_far[k] = (neg ? k : 3 + k) * (int)sizeof(((struct bvh8_node *)0)->bounds[0]);
         p->ia_masks |= o_lo != o_hi;
     }
-    const __m256 tmin =
-        _mm256_mask_i32gather_ps(_mm256_set1_ps(r0->tmin), &rays[0].tmin, idx, act, 4);
+    const __m256 tmin = p->lane_f[TRI8_F_TMIN];
     ok = _mm256_and_ps(ok, _mm256_cmp_ps(tmin, tmin, _CMP_ORD_Q));
     if ((unsigned)_mm256_movemask_ps(ok) != 0xffu)
         return 0;
     p->ia_octant = octant;
     p->ia_tmin = _mm256_set1_ps(packet_hmin(tmin));
-    p->lane_tmin = tmin;
     return 1;
 }
 
@@ -581,17 +565,17 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                     }
                     /* The child's box against each ray, walk_wide8's
                      * operations with the ray in the lanes. */
-                    __m256 u0 = p->lane_tmin;
+                    __m256 u0 = p->lane_f[TRI8_F_TMIN];
                     __m256 u1 = inf8;
                     for (int k = 0; k < 3; k++) {
                         const __m256 tn = _mm256_mul_ps(
                             _mm256_sub_ps(_mm256_broadcast_ss(&wide_row(n->bounds, near_row[k])[l]),
-                                          p->lane_org[k]),
-                            p->lane_inv[k]);
+                                          p->lane_f[TRI8_F_ORG + k]),
+                            p->lane_f[TRI8_F_INV + k]);
                         const __m256 tf = _mm256_mul_ps(
                             _mm256_sub_ps(_mm256_broadcast_ss(&wide_row(n->bounds, far_row[k])[l]),
-                                          p->lane_org[k]),
-                            p->lane_inv[k]);
+                                          p->lane_f[TRI8_F_ORG + k]),
+                            p->lane_f[TRI8_F_INV + k]);
                         u0 = _mm256_max_ps(tn, u0);
                         u1 = _mm256_min_ps(tf, u1);
                     }
@@ -698,24 +682,19 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
     int ia = 0;
 #if defined(__AVX__)
     {
-        /* The rays with the first ray's kx, ky, kz: three masked
-         * gathers and compares (inactive lanes compare unequal). */
+        /* The rays' fields in the lanes, and those with the first
+         * ray's kx, ky, kz (a lane without a ray copies the first ray:
+         * masked by active). */
+        tri8_lanes_load(rays, active, p.lane_f);
         const struct trace_ray *r0 = &rays[__builtin_ctz(active)];
-        const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
-        const __m256i idx =
-            _mm256_mullo_epi32(lane, _mm256_set1_epi32((int)(sizeof(struct trace_ray) / sizeof(int))));
-        const __m256i act = _mm256_cmpgt_epi32(
-            _mm256_and_si256(_mm256_set1_epi32((int)active),
-                             _mm256_sllv_epi32(_mm256_set1_epi32(1), lane)),
-            _mm256_setzero_si256());
-        const __m256i none = _mm256_set1_epi32(-1);
-        const __m256i kx = _mm256_mask_i32gather_epi32(none, &rays[0].kx, idx, act, 4);
-        const __m256i ky = _mm256_mask_i32gather_epi32(none, &rays[0].ky, idx, act, 4);
-        const __m256i kz = _mm256_mask_i32gather_epi32(none, &rays[0].kz, idx, act, 4);
         const __m256i same = _mm256_and_si256(
-            _mm256_and_si256(_mm256_cmpeq_epi32(kx, _mm256_set1_epi32(r0->kx)),
-                             _mm256_cmpeq_epi32(ky, _mm256_set1_epi32(r0->ky))),
-            _mm256_cmpeq_epi32(kz, _mm256_set1_epi32(r0->kz)));
+            _mm256_and_si256(
+                _mm256_cmpeq_epi32(_mm256_castps_si256(p.lane_f[TRI8_F_K]),
+                                   _mm256_set1_epi32(r0->kx)),
+                _mm256_cmpeq_epi32(_mm256_castps_si256(p.lane_f[TRI8_F_K + 1]),
+                                   _mm256_set1_epi32(r0->ky))),
+            _mm256_cmpeq_epi32(_mm256_castps_si256(p.lane_f[TRI8_F_K + 2]),
+                               _mm256_set1_epi32(r0->kz)));
         p.lanes8 = (unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(same)) & active;
         if ((unsigned)__builtin_popcount(p.lanes8) < PACKET_TRI8_MIN)
             p.lanes8 = 0;
