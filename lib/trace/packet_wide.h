@@ -487,6 +487,7 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
      * them). */
     __m256 bl = _mm256_loadu_ps(p->box_limit);
     __m256 limit_hi = _mm256_set1_ps(packet_hmax(bl));
+    uint64_t node_tests = 0; /* the interval and lane tests, counted for the first ray */
     uint32_t sp = 0;
     uint32_t cur = 0, cur_count = 0;
     unsigned rays = active;
@@ -519,7 +520,7 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
             const struct bvh8_node *n = &nodes[cur];
             unsigned lane_rays[8];
             float t_min[8];
-            p->s[first].node_tests += 8;
+            node_tests += 8;
             __m256 t0 = p->ia_tmin;
             __m256 t1 = inf8;
             for (int k = 0; k < 3; k++) {
@@ -536,7 +537,9 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
             }
             t1 = _mm256_mul_ps(t1, scale8);
             t1 = _mm256_min_ps(t1, limit_hi);
-            unsigned pass = (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(t0, t1, _CMP_LE_OQ));
+            const unsigned pass =
+                (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(t0, t1, _CMP_LE_OQ));
+            unsigned push = 0; /* the children entered by at least one ray */
             if (p->ia_masks &&
                 (unsigned)__builtin_popcount(pass) >= (unsigned)__builtin_popcount(rays)) {
                 /* Rays from several origins, and more children pass
@@ -550,9 +553,8 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                                      &tm);
                 _mm256_storeu_ps((float *)lane_rays, in);
                 _mm256_storeu_ps(t_min, tm);
-                pass = 0;
-                for (unsigned l = 0; l < 8; l++)
-                    pass |= (unsigned)(lane_rays[l] != 0) << l;
+                push = (unsigned)_mm256_movemask_ps(
+                    _mm256_cmp_ps(in, _mm256_setzero_ps(), _CMP_NEQ_UQ));
             } else if (pass) {
                 _mm256_storeu_ps(t_min, t0);
                 for (unsigned m = pass; m; m &= m - 1u) {
@@ -561,6 +563,7 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                         /* One origin: the interval test is tight, and
                          * an inner child is entered by every ray. */
                         lane_rays[l] = rays;
+                        push |= 1u << l;
                         continue;
                     }
                     /* The child's box against each ray, walk_wide8's
@@ -583,39 +586,55 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                     u1 = _mm256_min_ps(u1, bl);
                     const __m256 in = _mm256_cmp_ps(u0, u1, _CMP_LE_OQ);
                     lane_rays[l] = (unsigned)_mm256_movemask_ps(in) & rays;
-                    p->s[first].node_tests += (unsigned)__builtin_popcount(rays);
+                    push |= (unsigned)(lane_rays[l] != 0) << l;
+                    node_tests += (unsigned)__builtin_popcount(rays);
                     t_min[l] = packet_hmin(_mm256_blendv_ps(inf8, u0, in));
                 }
             }
-            if (pass) {
+            if (push) {
+                /* The children to push by their position in the
+                 * octant's order (3 bits per position): bit q of pos is
+                 * set when the child at position q is pushed, so the
+                 * loop runs once per pushed child, the last position
+                 * first (the nearest ends on top of the stack, as
+                 * packet_walk's scan of all eight). */
                 const uint32_t order = (uint32_t)n->order[octant][0] |
                                        (uint32_t)n->order[octant][1] << 8 |
                                        (uint32_t)n->order[octant][2] << 16;
-                const uint32_t sp0 = sp;
-                for (int q = 7; q >= 0; q--) {
+                const __m256i slot = _mm256_and_si256(
+                    _mm256_srlv_epi32(_mm256_set1_epi32((int)order),
+                                      _mm256_setr_epi32(0, 3, 6, 9, 12, 15, 18, 21)),
+                    _mm256_set1_epi32(7));
+                const __m256i bit = _mm256_srlv_epi32(_mm256_set1_epi32((int)push), slot);
+                unsigned pos = (unsigned)_mm256_movemask_ps(
+                    _mm256_castsi256_ps(_mm256_slli_epi32(bit, 31)));
+                for (;;) {
+                    const unsigned q = 31u - (unsigned)__builtin_clz(pos);
                     const unsigned l = order >> (3 * q) & 7u;
-                    if (!(pass >> l & 1u) || !lane_rays[l])
-                        continue;
+                    pos &= ~(1u << q);
+                    if (!pos) {
+                        /* The nearest: walked next, not stacked. */
+                        cur = n->child[l];
+                        cur_count = n->count[l];
+                        rays = lane_rays[l];
+                        break;
+                    }
                     stack[sp].child = n->child[l];
                     stack[sp].count = n->count[l];
                     stack[sp].rays = lane_rays[l];
                     stack[sp].t_entry = t_min[l];
                     sp++;
                 }
-                if (sp != sp0) {
-                    sp--;
-                    cur = stack[sp].child;
-                    cur_count = stack[sp].count;
-                    rays = stack[sp].rays;
-                    if (!cur_count)
-                        wide_prefetch(&nodes[cur], sizeof(struct bvh8_node));
-                    continue;
-                }
+                if (!cur_count)
+                    wide_prefetch(&nodes[cur], sizeof(struct bvh8_node));
+                continue;
             }
         }
         for (;;) {
-            if (sp == 0)
+            if (sp == 0) {
+                p->s[first].node_tests += node_tests;
                 return done;
+            }
             sp--;
             /* The rays whose box_limit lies before the subtree's entry
              * bound leave it, as the single walk's pop skips it. */
