@@ -178,6 +178,9 @@ struct tri8_result {
  * (isect_triangle_occludes' short way where it applies).  Returns the
  * lanes with a hit or sent to the scalar test (res->hit | res->scalar).
  */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
 static inline unsigned tri8_test(const struct tri8_rays *r, const struct tri4_packet *q,
                                  unsigned l, unsigned lanes, __m256 limit, int any_hit,
                                  struct tri8_result *res)
