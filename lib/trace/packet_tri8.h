@@ -223,6 +223,13 @@ static inline unsigned tri8_test(const struct tri8_rays *r, const struct tri4_pa
     const __m256 abs_det = _mm256_andnot_ps(_mm256_set1_ps(-0.0f), det);
     keep = _mm256_and_ps(keep, _mm256_cmp_ps(det, zero, _CMP_NEQ_UQ));
     keep = _mm256_and_ps(keep, _mm256_cmp_ps(abs_det, _mm256_set1_ps(INFINITY), _CMP_LT_OQ));
+    if (!(((unsigned)_mm256_movemask_ps(keep) | deferred) & lanes)) {
+        /* No ray passes the edge test, none is deferred: the depth
+         * range and the slabs can only reject more. */
+        res->hit = 0;
+        res->scalar = 0;
+        return 0;
+    }
 
     const __m256 Az = _mm256_mul_ps(r->sz, az);
     const __m256 Bz = _mm256_mul_ps(r->sz, bz);
