@@ -63,6 +63,7 @@ struct packet_state {
      * a ray), kept up to date with limit, so that packet_walk8_ia reads
      * the rays' limits as one vector after a leaf. */
     float box_limit[TRACE_PACKET];
+    unsigned found;          /* the closest-hit rays with a hit (s[r].found) */
     uint64_t triangle_tests; /* those of packet_leaf8, for all its rays */
     /* The interval walk (packet_walk8_ia): the packet's bounds per axis
      * (broadcast), and the rays in the lanes for the leaf boxes. */
@@ -90,6 +91,7 @@ static inline int packet_take_hit(struct packet_state *p, unsigned r, uint32_t p
     if (wide_take_closest(s, prim, t, u, w)) {
         p->limit[r] = isect_next_up(t);
         p->box_limit[r] = s->box_limit;
+        p->found |= 1u << r;
     }
     return 0;
 }
@@ -100,6 +102,7 @@ static inline void packet_sync(struct packet_state *p, unsigned r)
 {
     p->limit[r] = p->s[r].found ? isect_next_up(p->s[r].best) : p->s[r].best;
     p->box_limit[r] = p->s[r].box_limit;
+    p->found |= (unsigned)(p->s[r].found != 0) << r;
 }
 
 /* A leaf lane (count triangles in packets from `first`) for the rays of
@@ -679,9 +682,13 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
     struct packet_state p;
 #if defined(__AVX__)
     _mm256_storeu_ps(p.box_limit, _mm256_set1_ps(-INFINITY));
+    p.found = 0;
 #endif
-    for (unsigned m = active; m; m &= m - 1u) {
-        const unsigned r = (unsigned)__builtin_ctz(m);
+    /* Lane by lane with a constant count (unrolled: each state's fields
+     * at fixed offsets) rather than over the bits of active. */
+    for (unsigned r = 0; r < TRACE_PACKET; r++) {
+        if (!(active >> r & 1u))
+            continue;
         struct wide_state *s = &p.s[r];
         s->ray = &rays[r];
         s->any_hit = any_hit;
@@ -752,16 +759,25 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
     if (counters)
         counters->triangle_tests += p.triangle_tests;
 #endif
-    for (unsigned m = active; m; m &= m - 1u) {
-        const unsigned r = (unsigned)__builtin_ctz(m);
-        if (counters) {
+    if (counters) {
+        for (unsigned m = active; m; m &= m - 1u) {
+            const unsigned r = (unsigned)__builtin_ctz(m);
             counters->node_tests += p.s[r].node_tests;
             counters->triangle_tests += p.s[r].triangle_tests;
         }
-        if (!any_hit && p.s[r].found)
+    }
+    if (any_hit)
+        return done;
+#if defined(__AVX__)
+    return p.found;
+#else
+    for (unsigned m = active; m; m &= m - 1u) {
+        const unsigned r = (unsigned)__builtin_ctz(m);
+        if (p.s[r].found)
             result |= 1u << r;
     }
-    return any_hit ? done : result;
+    return result;
+#endif
 }
 
 unsigned TRACE_PACKET_CLOSEST(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,
