@@ -64,6 +64,13 @@ struct packet_state {
      * the rays' limits as one vector after a leaf. */
     float box_limit[TRACE_PACKET];
     unsigned found;          /* the closest-hit rays with a hit (s[r].found) */
+    /* packet_leaf8 takes a closest hit in the lanes: each ray's best t
+     * (s[r].best), and for the rays of `dirty` the hit it took there,
+     * not yet written to s[r] (packet_flush). */
+    float best[TRACE_PACKET];
+    float hit_u[TRACE_PACKET], hit_v[TRACE_PACKET];
+    uint32_t hit_prim[TRACE_PACKET];
+    unsigned dirty;
     uint64_t triangle_tests; /* those of packet_leaf8, for all its rays */
     /* The interval walk (packet_walk8_ia): the packet's bounds per axis
      * (broadcast), and the rays in the lanes for the leaf boxes. */
@@ -91,9 +98,31 @@ static inline int packet_take_hit(struct packet_state *p, unsigned r, uint32_t p
     if (wide_take_closest(s, prim, t, u, w)) {
         p->limit[r] = isect_next_up(t);
         p->box_limit[r] = s->box_limit;
+        p->best[r] = t;
         p->found |= 1u << r;
     }
     return 0;
+}
+
+/* Writes ray r's hit taken in the lanes (packet_leaf8) to its state, as
+ * wide_take_closest would have: found, best, box_limit and the hit. */
+static inline void packet_flush(struct packet_state *p, unsigned r)
+{
+    struct wide_state *s = &p->s[r];
+    s->found = 1;
+    s->best = p->best[r];
+    s->box_limit = p->box_limit[r];
+    s->hit->t = p->best[r];
+    s->hit->u = p->hit_u[r];
+    s->hit->v = p->hit_v[r];
+    s->hit->prim = p->hit_prim[r];
+    p->dirty &= ~(1u << r);
+}
+
+static inline void packet_flush_all(struct packet_state *p)
+{
+    for (unsigned m = p->dirty; m; m &= m - 1u)
+        packet_flush(p, (unsigned)__builtin_ctz(m));
 }
 
 /* Ray r's limit after its best changed outside packet_leaf8 (a per-ray
@@ -102,6 +131,7 @@ static inline void packet_sync(struct packet_state *p, unsigned r)
 {
     p->limit[r] = p->s[r].found ? isect_next_up(p->s[r].best) : p->s[r].best;
     p->box_limit[r] = p->s[r].box_limit;
+    p->best[r] = p->s[r].best;
     p->found |= (unsigned)(p->s[r].found != 0) << r;
 }
 
@@ -113,8 +143,11 @@ static inline void packet_sync(struct packet_state *p, unsigned r)
  * keeps does not depend on the order of its tests (traverse_walk.h), and
  * each test is isect_triangle's answer for that ray and limit.  Returns
  * the any-hit rays that found their hit. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
 static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_packet *packets,
-                                    uint32_t first, uint32_t count, unsigned rays)
+                                    uint32_t first, uint32_t count, unsigned rays, int any_hit)
 {
     if (!p->t8_ready) {
         const struct trace_ray *r0 = p->s[__builtin_ctz(p->lanes8)].ray;
@@ -122,7 +155,6 @@ static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_pa
         p->t8_ready = 1;
     }
     float *limit = p->limit;
-    const int any_hit = p->s[__builtin_ctz(rays)].any_hit;
     unsigned done = 0;
     for (uint32_t j = 0; j < count && rays; j += 4) {
         const struct tri4_packet *q = &packets[first + j / 4];
@@ -132,7 +164,50 @@ static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_pa
             struct tri8_result res;
             if (!tri8_test(&p->t8, q, l, rays, _mm256_loadu_ps(limit), any_hit, &res))
                 continue;
-            for (unsigned m = res.hit | res.scalar; m; m &= m - 1u) {
+            unsigned lanes = res.hit | res.scalar;
+            if (!any_hit && res.hit) {
+                /* wide_take_closest in the lanes for the rays without a
+                 * hit or with t < best (t <= best, as t < limit, the
+                 * next float above best); a tie t == best, decided by
+                 * the primitive, takes the scalar rule below. */
+                const __m256 t = _mm256_loadu_ps(res.t);
+                const __m256 best = _mm256_loadu_ps(p->best);
+                const unsigned below =
+                    (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(t, best, _CMP_NEQ_UQ));
+                const unsigned take = res.hit & (~p->found | below);
+                if (take) {
+                    const __m256i bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+                    const __m256 m8 = _mm256_castsi256_ps(_mm256_cmpeq_epi32(
+                        _mm256_and_si256(_mm256_set1_epi32((int)take), bit), bit));
+                    /* isect_next_up: the bits + 1, or the least
+                     * denormal for t == 0. */
+                    const __m256 up = _mm256_blendv_ps(
+                        _mm256_castsi256_ps(
+                            _mm256_add_epi32(_mm256_castps_si256(t), _mm256_set1_epi32(1))),
+                        _mm256_set1_ps(0x1p-149f),
+                        _mm256_cmp_ps(t, _mm256_setzero_ps(), _CMP_EQ_OQ));
+                    _mm256_storeu_ps(p->best, _mm256_blendv_ps(best, t, m8));
+                    _mm256_storeu_ps(limit, _mm256_blendv_ps(_mm256_loadu_ps(limit), up, m8));
+                    _mm256_storeu_ps(
+                        p->box_limit,
+                        _mm256_blendv_ps(_mm256_loadu_ps(p->box_limit),
+                                         _mm256_mul_ps(t, _mm256_set1_ps(ISECT_BOX_FAR_SCALE)),
+                                         m8));
+                    _mm256_storeu_ps(p->hit_u, _mm256_blendv_ps(_mm256_loadu_ps(p->hit_u),
+                                                                _mm256_loadu_ps(res.u), m8));
+                    _mm256_storeu_ps(p->hit_v, _mm256_blendv_ps(_mm256_loadu_ps(p->hit_v),
+                                                                _mm256_loadu_ps(res.v), m8));
+                    _mm256_storeu_ps((float *)p->hit_prim,
+                                     _mm256_blendv_ps(_mm256_loadu_ps((const float *)p->hit_prim),
+                                                      _mm256_castsi256_ps(_mm256_set1_epi32(
+                                                          (int)q->prim[l])),
+                                                      m8));
+                    p->found |= take;
+                    p->dirty |= take;
+                    lanes &= ~take;
+                }
+            }
+            for (unsigned m = lanes; m; m &= m - 1u) {
                 const unsigned r = (unsigned)__builtin_ctz(m);
                 struct wide_state *s = &p->s[r];
                 float t, u, w;
@@ -149,6 +224,8 @@ static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_pa
                     if (!isect_triangle(s->ray, v[0], v[1], v[2], limit[r], &t, &u, &w))
                         continue;
                 }
+                if (p->dirty >> r & 1u)
+                    packet_flush(p, r);
                 if (packet_take_hit(p, r, q->prim[l], t, u, w)) {
                     done |= 1u << r;
                     rays &= ~(1u << r);
@@ -211,7 +288,7 @@ static inline void packet_box8_rows(const struct bvh8_node *n, struct packet_sta
         t1 = _mm256_min_ps(tf, t1);
     }
     t1 = _mm256_mul_ps(t1, _mm256_set1_ps(ISECT_BOX_FAR_SCALE));
-    t1 = _mm256_min_ps(t1, _mm256_set1_ps(p->s[r].box_limit));
+    t1 = _mm256_min_ps(t1, _mm256_set1_ps(p->box_limit[r]));
     const __m256 in = _mm256_cmp_ps(t0, t1, _CMP_LE_OQ);
     p->s[r].node_tests += 8;
     *rays = _mm256_or_ps(*rays,
@@ -273,7 +350,9 @@ static inline unsigned packet_walk(const struct bvh4 *wide, struct packet_state 
 #if defined(__AVX__)
             const unsigned r8 = rays & p->lanes8;
             if ((unsigned)__builtin_popcount(r8) >= PACKET_TRI8_MIN) {
-                done |= packet_leaf8(p, wide->packets, cur, cur_count, r8);
+                done |= packet_leaf8(p, wide->packets, cur, cur_count, r8,
+                                     p->s[__builtin_ctz(r8)].any_hit);
+                packet_flush_all(p);
                 single &= ~r8;
             }
 #endif
@@ -500,11 +579,13 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
             unsigned single = rays;
             const unsigned r8 = rays & p->lanes8;
             if ((unsigned)__builtin_popcount(r8) >= PACKET_TRI8_MIN) {
-                done |= packet_leaf8(p, wide->packets, cur, cur_count, r8);
+                done |= packet_leaf8(p, wide->packets, cur, cur_count, r8, any_hit);
                 single &= ~r8;
             }
             for (unsigned m = single; m; m &= m - 1u) {
                 const unsigned r = (unsigned)__builtin_ctz(m);
+                if (p->dirty >> r & 1u)
+                    packet_flush(p, r);
                 if (!(p->r4_ready >> r & 1u)) {
                     tri4_ray_init(&p->s[r].r4, p->s[r].ray);
                     p->r4_ready |= 1u << r;
@@ -636,6 +717,7 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
         for (;;) {
             if (sp == 0) {
                 p->s[first].node_tests += node_tests;
+                packet_flush_all(p);
                 return done;
             }
             sp--;
@@ -682,7 +764,12 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
     struct packet_state p;
 #if defined(__AVX__)
     _mm256_storeu_ps(p.box_limit, _mm256_set1_ps(-INFINITY));
+    _mm256_storeu_ps(p.best, _mm256_set1_ps(INFINITY));
+    _mm256_storeu_ps(p.hit_u, _mm256_setzero_ps());
+    _mm256_storeu_ps(p.hit_v, _mm256_setzero_ps());
+    _mm256_storeu_ps((float *)p.hit_prim, _mm256_setzero_ps());
     p.found = 0;
+    p.dirty = 0;
 #endif
     /* Lane by lane with a constant count (unrolled: each state's fields
      * at fixed offsets) rather than over the bits of active. */
@@ -701,6 +788,7 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
 #if defined(__AVX__)
         p.limit[r] = t_max[r];
         p.box_limit[r] = s->box_limit;
+        p.best[r] = t_max[r];
 #endif
     }
 
