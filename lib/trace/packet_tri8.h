@@ -168,7 +168,7 @@ static inline void tri8_slab(__m256 d0, __m256 d1, __m256 d2, __m256 inv, __m256
 struct tri8_result {
     unsigned hit;
     unsigned scalar;
-    float t[8], u[8], v[8];
+    __m256 t, u, v; /* read in the lanes of hit only */
 };
 
 /*
@@ -185,6 +185,7 @@ static inline unsigned tri8_test(const struct tri8_rays *r, const struct tri4_pa
                                  unsigned l, unsigned lanes, __m256 limit, int any_hit,
                                  struct tri8_result *res)
 {
+    res->t = res->u = res->v = _mm256_setzero_ps();
     const __m256 ax = _mm256_sub_ps(_mm256_set1_ps(q->v[0][r->kx][l]), r->org_x);
     const __m256 ay = _mm256_sub_ps(_mm256_set1_ps(q->v[0][r->ky][l]), r->org_y);
     const __m256 az = _mm256_sub_ps(_mm256_set1_ps(q->v[0][r->kz][l]), r->org_z);
@@ -352,9 +353,9 @@ static inline unsigned tri8_test(const struct tri8_rays *r, const struct tri4_pa
     res->hit |= hit;
     if (hit && !any_hit) {
         const __m256 rcp_det = _mm256_div_ps(_mm256_set1_ps(1.0f), det);
-        _mm256_storeu_ps(res->t, t);
-        _mm256_storeu_ps(res->u, _mm256_mul_ps(V, rcp_det));
-        _mm256_storeu_ps(res->v, _mm256_mul_ps(W, rcp_det));
+        res->t = t;
+        res->u = _mm256_mul_ps(V, rcp_det);
+        res->v = _mm256_mul_ps(W, rcp_det);
     }
     return res->hit | res->scalar;
 }

@@ -170,7 +170,7 @@ static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_pa
                  * hit or with t < best (t <= best, as t < limit, the
                  * next float above best); a tie t == best, decided by
                  * the primitive, takes the scalar rule below. */
-                const __m256 t = _mm256_loadu_ps(res.t);
+                const __m256 t = res.t;
                 const __m256 best = _mm256_loadu_ps(p->best);
                 const unsigned below =
                     (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(t, best, _CMP_NEQ_UQ));
@@ -194,9 +194,9 @@ static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_pa
                                          _mm256_mul_ps(t, _mm256_set1_ps(ISECT_BOX_FAR_SCALE)),
                                          m8));
                     _mm256_storeu_ps(p->hit_u, _mm256_blendv_ps(_mm256_loadu_ps(p->hit_u),
-                                                                _mm256_loadu_ps(res.u), m8));
+                                                                res.u, m8));
                     _mm256_storeu_ps(p->hit_v, _mm256_blendv_ps(_mm256_loadu_ps(p->hit_v),
-                                                                _mm256_loadu_ps(res.v), m8));
+                                                                res.v, m8));
                     _mm256_storeu_ps((float *)p->hit_prim,
                                      _mm256_blendv_ps(_mm256_loadu_ps((const float *)p->hit_prim),
                                                       _mm256_castsi256_ps(_mm256_set1_epi32(
@@ -207,14 +207,20 @@ static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_pa
                     lanes &= ~take;
                 }
             }
+            float res_t[8], res_u[8], res_v[8];
+            if (lanes & res.hit) {
+                _mm256_storeu_ps(res_t, res.t);
+                _mm256_storeu_ps(res_u, res.u);
+                _mm256_storeu_ps(res_v, res.v);
+            }
             for (unsigned m = lanes; m; m &= m - 1u) {
                 const unsigned r = (unsigned)__builtin_ctz(m);
                 struct wide_state *s = &p->s[r];
                 float t, u, w;
                 if (res.hit >> r & 1u) {
-                    t = res.t[r];
-                    u = res.u[r];
-                    w = res.v[r];
+                    t = res_t[r];
+                    u = res_u[r];
+                    w = res_v[r];
                 } else {
                     float v[3][3];
                     for (int a = 0; a < 3; a++) {
