@@ -678,7 +678,13 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                     lane_rays[l] = (unsigned)_mm256_movemask_ps(in) & rays;
                     push |= (unsigned)(lane_rays[l] != 0) << l;
                     node_tests += (unsigned)__builtin_popcount(rays);
-                    t_min[l] = packet_hmin(_mm256_blendv_ps(inf8, u0, in));
+                    /* The least entry of its rays, for the cull on pop
+                     * by a ray's box_limit; an any-hit ray's never
+                     * shrinks, so the rays here, which passed it
+                     * already, would all stay: the interval test's
+                     * bound (t_min, stored above) does as well. */
+                    if (!any_hit)
+                        t_min[l] = packet_hmin(_mm256_blendv_ps(inf8, u0, in));
                 }
             }
             if (push) {
