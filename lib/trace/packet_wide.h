@@ -542,9 +542,11 @@ static inline int packet_ia_init(struct packet_state *p, const struct trace_ray 
  * which inner nodes are skipped or the order of visits, and every box
  * holding a hit at or below a ray's best passes its test).  A pushed
  * child keeps a lower bound of its rays' entry distances (the interval
- * test's, or the least of the rays' own for a leaf); on pop, the rays
- * whose box_limit lies before it leave it, as the single walk's pop
- * skips it.
+ * test's, or the least of the rays' own for a lane-tested child of a
+ * closest-hit packet); on pop, the rays whose box_limit lies before it
+ * leave it, as the single walk's pop skips it.  A leaf's closest hits
+ * are taken in the lanes (packet_leaf8) and written to a ray's state
+ * only where a per-ray step or the end reads it (packet_flush).
  *
  * Rays from several origins (shadow rays from a row of hit points) make
  * the interval wide, and entering inner nodes with every ray then costs
