@@ -37,12 +37,13 @@
 #define RT_TRACE_PACKET_TRI8_H
 
 #include <immintrin.h>
+#include <stddef.h>
 
 #include "trace/bvh4_layout.h"
 #include "trace/intersect.h"
 
-/* The per-lane ray constants of the eight-ray test; a lane without a
- * ray holds a copy of another lane's ray (never read into an answer). */
+/* The per-lane ray constants of the eight-ray test; a lane outside the
+ * test's rays holds values never read into an answer. */
 struct tri8_rays {
     __m256 org_x, org_y, org_z; /* org[kx], org[ky], org[kz] */
     __m256 sx, sy, sz;
@@ -54,49 +55,95 @@ struct tri8_rays {
     int kx, ky, kz;
 };
 
-/* Sets up lanes `lanes` (bit r: rays[r], all with the same kx, ky, kz);
- * the other lanes copy the lowest set one. */
-static inline void tri8_rays_init(struct tri8_rays *t, const struct trace_ray *const rays[8],
-                                  unsigned lanes)
+/* A struct trace_ray is 16 floats (kx, ky, kz as int bits): the index of
+ * each field among them, for the rays' fields in the lanes
+ * (tri8_lanes_load). */
+enum {
+    TRI8_F_ORG = 0,  /* org[0..2] */
+    TRI8_F_DIR = 3,  /* dir[0..2] */
+    TRI8_F_INV = 6,  /* inv_dir[0..2] */
+    TRI8_F_TMIN = 9,
+    TRI8_F_K = 10,   /* kx, ky, kz */
+    TRI8_F_S = 13,   /* sx, sy, sz */
+    TRI8_F_COUNT = 16
+};
+typedef char tri8_ray_is_16_floats[sizeof(struct trace_ray) == TRI8_F_COUNT * sizeof(float) &&
+                                           offsetof(struct trace_ray, dir) == TRI8_F_DIR * 4 &&
+                                           offsetof(struct trace_ray, inv_dir) == TRI8_F_INV * 4 &&
+                                           offsetof(struct trace_ray, tmin) == TRI8_F_TMIN * 4 &&
+                                           offsetof(struct trace_ray, kx) == TRI8_F_K * 4 &&
+                                           offsetof(struct trace_ray, kz) == (TRI8_F_K + 2) * 4 &&
+                                           offsetof(struct trace_ray, sx) == TRI8_F_S * 4 &&
+                                           offsetof(struct trace_ray, sz) == (TRI8_F_S + 2) * 4
+                                       ? 1
+                                       : -1];
+
+/* An 8 x 8 transpose of floats: row r of in becomes lane r of every out
+ * (unpack, shuffle and 128-bit permute, three rounds of eight). */
+static inline void tri8_transpose8(const __m256 in[8], __m256 out[8])
 {
-    const struct trace_ray *first = rays[__builtin_ctz(lanes)];
-    float ox[8], oy[8], oz[8], sx[8], sy[8], sz[8], ix[8], iy[8], tm[8];
-    double od[3][8], dd[3][8];
-    t->kx = first->kx;
-    t->ky = first->ky;
-    t->kz = first->kz;
+    const __m256 t0 = _mm256_unpacklo_ps(in[0], in[1]), t1 = _mm256_unpackhi_ps(in[0], in[1]);
+    const __m256 t2 = _mm256_unpacklo_ps(in[2], in[3]), t3 = _mm256_unpackhi_ps(in[2], in[3]);
+    const __m256 t4 = _mm256_unpacklo_ps(in[4], in[5]), t5 = _mm256_unpackhi_ps(in[4], in[5]);
+    const __m256 t6 = _mm256_unpacklo_ps(in[6], in[7]), t7 = _mm256_unpackhi_ps(in[6], in[7]);
+    const __m256 s0 = _mm256_shuffle_ps(t0, t2, 0x44), s1 = _mm256_shuffle_ps(t0, t2, 0xee);
+    const __m256 s2 = _mm256_shuffle_ps(t1, t3, 0x44), s3 = _mm256_shuffle_ps(t1, t3, 0xee);
+    const __m256 s4 = _mm256_shuffle_ps(t4, t6, 0x44), s5 = _mm256_shuffle_ps(t4, t6, 0xee);
+    const __m256 s6 = _mm256_shuffle_ps(t5, t7, 0x44), s7 = _mm256_shuffle_ps(t5, t7, 0xee);
+    out[0] = _mm256_permute2f128_ps(s0, s4, 0x20);
+    out[1] = _mm256_permute2f128_ps(s1, s5, 0x20);
+    out[2] = _mm256_permute2f128_ps(s2, s6, 0x20);
+    out[3] = _mm256_permute2f128_ps(s3, s7, 0x20);
+    out[4] = _mm256_permute2f128_ps(s0, s4, 0x31);
+    out[5] = _mm256_permute2f128_ps(s1, s5, 0x31);
+    out[6] = _mm256_permute2f128_ps(s2, s6, 0x31);
+    out[7] = _mm256_permute2f128_ps(s3, s7, 0x31);
+}
+
+/* The fields of the rays of `active` in the lanes: f[TRI8_F_...][r] is
+ * rays[r]'s field, copied bit for bit (two loads per ray and a
+ * transpose instead of one gather per field); a lane without a ray holds
+ * the lowest active ray's fields. */
+static inline void tri8_lanes_load(const struct trace_ray *rays, unsigned active,
+                                   __m256 f[TRI8_F_COUNT])
+{
+    const struct trace_ray *first = &rays[__builtin_ctz(active)];
+    __m256 lo[8], hi[8];
     for (int r = 0; r < 8; r++) {
-        const struct trace_ray *ray = lanes >> r & 1u ? rays[r] : first;
-        ox[r] = ray->org[t->kx];
-        oy[r] = ray->org[t->ky];
-        oz[r] = ray->org[t->kz];
-        sx[r] = ray->sx;
-        sy[r] = ray->sy;
-        sz[r] = ray->sz;
-        ix[r] = ray->inv_dir[t->kx];
-        iy[r] = ray->inv_dir[t->ky];
-        tm[r] = ray->tmin;
-        for (int k = 0; k < 3; k++) {
-            od[k][r] = ray->org[k];
-            dd[k][r] = ray->dir[k];
-        }
+        const float *ray = (const float *)(const void *)(active >> r & 1u ? &rays[r] : first);
+        lo[r] = _mm256_loadu_ps(ray);
+        hi[r] = _mm256_loadu_ps(ray + 8);
     }
-    t->org_x = _mm256_loadu_ps(ox);
-    t->org_y = _mm256_loadu_ps(oy);
-    t->org_z = _mm256_loadu_ps(oz);
-    t->sx = _mm256_loadu_ps(sx);
-    t->sy = _mm256_loadu_ps(sy);
-    t->sz = _mm256_loadu_ps(sz);
-    t->inv_x = _mm256_loadu_ps(ix);
-    t->inv_y = _mm256_loadu_ps(iy);
+    tri8_transpose8(lo, f);
+    tri8_transpose8(hi, f + 8);
+}
+
+/* Sets up the lanes from the rays' fields in the lanes (tri8_lanes_load)
+ * for the rays sharing kx, ky, kz; the other lanes hold their own rays'
+ * values under that permutation, never read into an answer (every
+ * result of tri8_test is masked by its lanes). */
+static inline void tri8_rays_init(struct tri8_rays *t, const __m256 f[TRI8_F_COUNT], int kx,
+                                  int ky, int kz)
+{
+    t->kx = kx;
+    t->ky = ky;
+    t->kz = kz;
+    t->org_x = f[TRI8_F_ORG + kx];
+    t->org_y = f[TRI8_F_ORG + ky];
+    t->org_z = f[TRI8_F_ORG + kz];
+    t->sx = f[TRI8_F_S];
+    t->sy = f[TRI8_F_S + 1];
+    t->sz = f[TRI8_F_S + 2];
+    t->inv_x = f[TRI8_F_INV + kx];
+    t->inv_y = f[TRI8_F_INV + ky];
     t->neg_x = _mm256_cmp_ps(t->inv_x, _mm256_setzero_ps(), _CMP_LT_OQ);
     t->neg_y = _mm256_cmp_ps(t->inv_y, _mm256_setzero_ps(), _CMP_LT_OQ);
-    t->tmin = _mm256_loadu_ps(tm);
+    t->tmin = f[TRI8_F_TMIN];
     for (int k = 0; k < 3; k++) {
-        for (int h = 0; h < 2; h++) {
-            t->org_d[k][h] = _mm256_loadu_pd(&od[k][4 * h]);
-            t->dir_d[k][h] = _mm256_loadu_pd(&dd[k][4 * h]);
-        }
+        t->org_d[k][0] = _mm256_cvtps_pd(_mm256_castps256_ps128(f[TRI8_F_ORG + k]));
+        t->org_d[k][1] = _mm256_cvtps_pd(_mm256_extractf128_ps(f[TRI8_F_ORG + k], 1));
+        t->dir_d[k][0] = _mm256_cvtps_pd(_mm256_castps256_ps128(f[TRI8_F_DIR + k]));
+        t->dir_d[k][1] = _mm256_cvtps_pd(_mm256_extractf128_ps(f[TRI8_F_DIR + k], 1));
     }
 }
 
@@ -121,7 +168,7 @@ static inline void tri8_slab(__m256 d0, __m256 d1, __m256 d2, __m256 inv, __m256
 struct tri8_result {
     unsigned hit;
     unsigned scalar;
-    float t[8], u[8], v[8];
+    __m256 t, u, v; /* read in the lanes of hit only */
 };
 
 /*
@@ -131,10 +178,14 @@ struct tri8_result {
  * (isect_triangle_occludes' short way where it applies).  Returns the
  * lanes with a hit or sent to the scalar test (res->hit | res->scalar).
  */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
 static inline unsigned tri8_test(const struct tri8_rays *r, const struct tri4_packet *q,
                                  unsigned l, unsigned lanes, __m256 limit, int any_hit,
                                  struct tri8_result *res)
 {
+    res->t = res->u = res->v = _mm256_setzero_ps();
     const __m256 ax = _mm256_sub_ps(_mm256_set1_ps(q->v[0][r->kx][l]), r->org_x);
     const __m256 ay = _mm256_sub_ps(_mm256_set1_ps(q->v[0][r->ky][l]), r->org_y);
     const __m256 az = _mm256_sub_ps(_mm256_set1_ps(q->v[0][r->kz][l]), r->org_z);
@@ -173,6 +224,13 @@ static inline unsigned tri8_test(const struct tri8_rays *r, const struct tri4_pa
     const __m256 abs_det = _mm256_andnot_ps(_mm256_set1_ps(-0.0f), det);
     keep = _mm256_and_ps(keep, _mm256_cmp_ps(det, zero, _CMP_NEQ_UQ));
     keep = _mm256_and_ps(keep, _mm256_cmp_ps(abs_det, _mm256_set1_ps(INFINITY), _CMP_LT_OQ));
+    if (!(((unsigned)_mm256_movemask_ps(keep) | deferred) & lanes)) {
+        /* No ray passes the edge test, none is deferred: the depth
+         * range and the slabs can only reject more. */
+        res->hit = 0;
+        res->scalar = 0;
+        return 0;
+    }
 
     const __m256 Az = _mm256_mul_ps(r->sz, az);
     const __m256 Bz = _mm256_mul_ps(r->sz, bz);
@@ -295,9 +353,9 @@ static inline unsigned tri8_test(const struct tri8_rays *r, const struct tri4_pa
     res->hit |= hit;
     if (hit && !any_hit) {
         const __m256 rcp_det = _mm256_div_ps(_mm256_set1_ps(1.0f), det);
-        _mm256_storeu_ps(res->t, t);
-        _mm256_storeu_ps(res->u, _mm256_mul_ps(V, rcp_det));
-        _mm256_storeu_ps(res->v, _mm256_mul_ps(W, rcp_det));
+        res->t = t;
+        res->u = _mm256_mul_ps(V, rcp_det);
+        res->v = _mm256_mul_ps(W, rcp_det);
     }
     return res->hit | res->scalar;
 }

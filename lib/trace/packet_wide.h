@@ -59,11 +59,23 @@ struct packet_state {
      * float above its best once it has a hit); kept up to date wherever
      * a ray's best changes (packet_take_hit, packet_sync). */
     float limit[TRACE_PACKET];
+    /* Each ray's box_limit beside its state's (-inf for a lane without
+     * a ray), kept up to date with limit, so that packet_walk8_ia reads
+     * the rays' limits as one vector after a leaf. */
+    float box_limit[TRACE_PACKET];
+    unsigned found;          /* the closest-hit rays with a hit (s[r].found) */
+    /* packet_leaf8 takes a closest hit in the lanes: each ray's best t
+     * (s[r].best), and for the rays of `dirty` the hit it took there,
+     * not yet written to s[r] (packet_flush). */
+    float best[TRACE_PACKET];
+    float hit_u[TRACE_PACKET], hit_v[TRACE_PACKET];
+    uint32_t hit_prim[TRACE_PACKET];
+    unsigned dirty;
     uint64_t triangle_tests; /* those of packet_leaf8, for all its rays */
     /* The interval walk (packet_walk8_ia): the packet's bounds per axis
      * (broadcast), and the rays in the lanes for the leaf boxes. */
     __m256 ia_o_near[3], ia_o_far[3], ia_i_lo[3], ia_i_hi[3], ia_tmin;
-    __m256 lane_org[3], lane_inv[3], lane_tmin;
+    __m256 lane_f[TRI8_F_COUNT]; /* the rays' fields in the lanes (tri8_lanes_load) */
     int ia_masks; /* rays from more than one origin: see packet_walk8_ia */
     int ia_octant;                  /* the rays' common octant */
     int ia_row_near[3], ia_row_far[3]; /* its near and far rows, byte offsets */
@@ -75,16 +87,42 @@ struct packet_state {
 /* A packet hits a triangle: walk_leaf's limit and hit rule for ray r
  * (wide_leaf_impl), t, u, v the triangle test's.  Returns 1 when an
  * any-hit ray has its hit. */
-static inline int packet_take_hit(struct wide_state *s, float *limit, uint32_t prim, float t,
+static inline int packet_take_hit(struct packet_state *p, unsigned r, uint32_t prim, float t,
                                   float u, float w)
 {
+    struct wide_state *s = &p->s[r];
     if (s->any_hit) {
         s->found = 1;
         return 1;
     }
-    if (wide_take_closest(s, prim, t, u, w))
-        *limit = isect_next_up(t);
+    if (wide_take_closest(s, prim, t, u, w)) {
+        p->limit[r] = isect_next_up(t);
+        p->box_limit[r] = s->box_limit;
+        p->best[r] = t;
+        p->found |= 1u << r;
+    }
     return 0;
+}
+
+/* Writes ray r's hit taken in the lanes (packet_leaf8) to its state, as
+ * wide_take_closest would have: found, best, box_limit and the hit. */
+static inline void packet_flush(struct packet_state *p, unsigned r)
+{
+    struct wide_state *s = &p->s[r];
+    s->found = 1;
+    s->best = p->best[r];
+    s->box_limit = p->box_limit[r];
+    s->hit->t = p->best[r];
+    s->hit->u = p->hit_u[r];
+    s->hit->v = p->hit_v[r];
+    s->hit->prim = p->hit_prim[r];
+    p->dirty &= ~(1u << r);
+}
+
+static inline void packet_flush_all(struct packet_state *p)
+{
+    for (unsigned m = p->dirty; m; m &= m - 1u)
+        packet_flush(p, (unsigned)__builtin_ctz(m));
 }
 
 /* Ray r's limit after its best changed outside packet_leaf8 (a per-ray
@@ -92,6 +130,9 @@ static inline int packet_take_hit(struct wide_state *s, float *limit, uint32_t p
 static inline void packet_sync(struct packet_state *p, unsigned r)
 {
     p->limit[r] = p->s[r].found ? isect_next_up(p->s[r].best) : p->s[r].best;
+    p->box_limit[r] = p->s[r].box_limit;
+    p->best[r] = p->s[r].best;
+    p->found |= (unsigned)(p->s[r].found != 0) << r;
 }
 
 /* A leaf lane (count triangles in packets from `first`) for the rays of
@@ -102,18 +143,18 @@ static inline void packet_sync(struct packet_state *p, unsigned r)
  * keeps does not depend on the order of its tests (traverse_walk.h), and
  * each test is isect_triangle's answer for that ray and limit.  Returns
  * the any-hit rays that found their hit. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
 static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_packet *packets,
-                                    uint32_t first, uint32_t count, unsigned rays)
+                                    uint32_t first, uint32_t count, unsigned rays, int any_hit)
 {
     if (!p->t8_ready) {
-        const struct trace_ray *lane_ray[8];
-        for (unsigned r = 0; r < 8; r++)
-            lane_ray[r] = p->lanes8 >> r & 1u ? p->s[r].ray : NULL;
-        tri8_rays_init(&p->t8, lane_ray, p->lanes8);
+        const struct trace_ray *r0 = p->s[__builtin_ctz(p->lanes8)].ray;
+        tri8_rays_init(&p->t8, p->lane_f, r0->kx, r0->ky, r0->kz);
         p->t8_ready = 1;
     }
     float *limit = p->limit;
-    const int any_hit = p->s[__builtin_ctz(rays)].any_hit;
     unsigned done = 0;
     for (uint32_t j = 0; j < count && rays; j += 4) {
         const struct tri4_packet *q = &packets[first + j / 4];
@@ -123,14 +164,63 @@ static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_pa
             struct tri8_result res;
             if (!tri8_test(&p->t8, q, l, rays, _mm256_loadu_ps(limit), any_hit, &res))
                 continue;
-            for (unsigned m = res.hit | res.scalar; m; m &= m - 1u) {
+            unsigned lanes = res.hit | res.scalar;
+            if (!any_hit && res.hit) {
+                /* wide_take_closest in the lanes for the rays without a
+                 * hit or with t < best (t <= best, as t < limit, the
+                 * next float above best); a tie t == best, decided by
+                 * the primitive, takes the scalar rule below. */
+                const __m256 t = res.t;
+                const __m256 best = _mm256_loadu_ps(p->best);
+                const unsigned below =
+                    (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(t, best, _CMP_NEQ_UQ));
+                const unsigned take = res.hit & (~p->found | below);
+                if (take) {
+                    const __m256i bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+                    const __m256 m8 = _mm256_castsi256_ps(_mm256_cmpeq_epi32(
+                        _mm256_and_si256(_mm256_set1_epi32((int)take), bit), bit));
+                    /* isect_next_up: the bits + 1, or the least
+                     * denormal for t == 0. */
+                    const __m256 up = _mm256_blendv_ps(
+                        _mm256_castsi256_ps(
+                            _mm256_add_epi32(_mm256_castps_si256(t), _mm256_set1_epi32(1))),
+                        _mm256_set1_ps(0x1p-149f),
+                        _mm256_cmp_ps(t, _mm256_setzero_ps(), _CMP_EQ_OQ));
+                    _mm256_storeu_ps(p->best, _mm256_blendv_ps(best, t, m8));
+                    _mm256_storeu_ps(limit, _mm256_blendv_ps(_mm256_loadu_ps(limit), up, m8));
+                    _mm256_storeu_ps(
+                        p->box_limit,
+                        _mm256_blendv_ps(_mm256_loadu_ps(p->box_limit),
+                                         _mm256_mul_ps(t, _mm256_set1_ps(ISECT_BOX_FAR_SCALE)),
+                                         m8));
+                    _mm256_storeu_ps(p->hit_u, _mm256_blendv_ps(_mm256_loadu_ps(p->hit_u),
+                                                                res.u, m8));
+                    _mm256_storeu_ps(p->hit_v, _mm256_blendv_ps(_mm256_loadu_ps(p->hit_v),
+                                                                res.v, m8));
+                    _mm256_storeu_ps((float *)p->hit_prim,
+                                     _mm256_blendv_ps(_mm256_loadu_ps((const float *)p->hit_prim),
+                                                      _mm256_castsi256_ps(_mm256_set1_epi32(
+                                                          (int)q->prim[l])),
+                                                      m8));
+                    p->found |= take;
+                    p->dirty |= take;
+                    lanes &= ~take;
+                }
+            }
+            float res_t[8], res_u[8], res_v[8];
+            if (lanes & res.hit) {
+                _mm256_storeu_ps(res_t, res.t);
+                _mm256_storeu_ps(res_u, res.u);
+                _mm256_storeu_ps(res_v, res.v);
+            }
+            for (unsigned m = lanes; m; m &= m - 1u) {
                 const unsigned r = (unsigned)__builtin_ctz(m);
                 struct wide_state *s = &p->s[r];
                 float t, u, w;
                 if (res.hit >> r & 1u) {
-                    t = res.t[r];
-                    u = res.u[r];
-                    w = res.v[r];
+                    t = res_t[r];
+                    u = res_u[r];
+                    w = res_v[r];
                 } else {
                     float v[3][3];
                     for (int a = 0; a < 3; a++) {
@@ -140,7 +230,9 @@ static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_pa
                     if (!isect_triangle(s->ray, v[0], v[1], v[2], limit[r], &t, &u, &w))
                         continue;
                 }
-                if (packet_take_hit(s, &limit[r], q->prim[l], t, u, w)) {
+                if (p->dirty >> r & 1u)
+                    packet_flush(p, r);
+                if (packet_take_hit(p, r, q->prim[l], t, u, w)) {
                     done |= 1u << r;
                     rays &= ~(1u << r);
                 }
@@ -202,7 +294,7 @@ static inline void packet_box8_rows(const struct bvh8_node *n, struct packet_sta
         t1 = _mm256_min_ps(tf, t1);
     }
     t1 = _mm256_mul_ps(t1, _mm256_set1_ps(ISECT_BOX_FAR_SCALE));
-    t1 = _mm256_min_ps(t1, _mm256_set1_ps(p->s[r].box_limit));
+    t1 = _mm256_min_ps(t1, _mm256_set1_ps(p->box_limit[r]));
     const __m256 in = _mm256_cmp_ps(t0, t1, _CMP_LE_OQ);
     p->s[r].node_tests += 8;
     *rays = _mm256_or_ps(*rays,
@@ -264,7 +356,9 @@ static inline unsigned packet_walk(const struct bvh4 *wide, struct packet_state 
 #if defined(__AVX__)
             const unsigned r8 = rays & p->lanes8;
             if ((unsigned)__builtin_popcount(r8) >= PACKET_TRI8_MIN) {
-                done |= packet_leaf8(p, wide->packets, cur, cur_count, r8);
+                done |= packet_leaf8(p, wide->packets, cur, cur_count, r8,
+                                     p->s[__builtin_ctz(r8)].any_hit);
+                packet_flush_all(p);
                 single &= ~r8;
             }
 #endif
@@ -392,28 +486,18 @@ static inline float packet_hmax(__m256 v)
 static inline int packet_ia_init(struct packet_state *p, const struct trace_ray *rays,
                                  unsigned active)
 {
-    /* The rays' fields in the lanes, one masked gather each; a lane
-     * without a ray copies the first ray (never read into an answer:
-     * masked by the packet's rays). */
-    const unsigned first = (unsigned)__builtin_ctz(active);
-    const struct trace_ray *r0 = &rays[first];
-    const int stride = (int)(sizeof(struct trace_ray) / sizeof(float));
-    const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
-    const __m256i idx = _mm256_mullo_epi32(lane, _mm256_set1_epi32(stride));
-    const __m256 act = _mm256_castsi256_ps(_mm256_cmpgt_epi32(
-        _mm256_and_si256(_mm256_set1_epi32((int)active),
-                         _mm256_sllv_epi32(_mm256_set1_epi32(1), lane)),
-        _mm256_setzero_si256()));
+    /* The rays' fields in the lanes (packet_run: a lane without a ray
+     * holds the first ray's, never read into an answer: masked by the
+     * packet's rays). */
+    const struct trace_ray *r0 = &rays[__builtin_ctz(active)];
     const __m256 sign = _mm256_set1_ps(-0.0f);
     const __m256 inf = _mm256_set1_ps(INFINITY);
     __m256 ok = _mm256_cmp_ps(_mm256_setzero_ps(), _mm256_setzero_ps(), _CMP_EQ_OQ);
     int octant = 0;
     p->ia_masks = 0;
     for (int k = 0; k < 3; k++) {
-        const __m256 o = _mm256_mask_i32gather_ps(_mm256_set1_ps(r0->org[k]), &rays[0].org[k],
-                                                  idx, act, 4);
-        const __m256 i = _mm256_mask_i32gather_ps(_mm256_set1_ps(r0->inv_dir[k]),
-                                                  &rays[0].inv_dir[k], idx, act, 4);
+        const __m256 o = p->lane_f[TRI8_F_ORG + k];
+        const __m256 i = p->lane_f[TRI8_F_INV + k];
         const __m256 abs_i = _mm256_andnot_ps(sign, i);
         ok = _mm256_and_ps(ok, _mm256_cmp_ps(_mm256_andnot_ps(sign, o), inf, _CMP_LT_OQ));
         ok = _mm256_and_ps(ok, _mm256_cmp_ps(abs_i, inf, _CMP_LT_OQ));
@@ -430,20 +514,16 @@ static inline int packet_ia_init(struct packet_state *p, const struct trace_ray 
         p->ia_o_far[k] = _mm256_set1_ps(neg ? o_hi : o_lo);
         p->ia_i_lo[k] = _mm256_set1_ps(i_lo);
         p->ia_i_hi[k] = _mm256_set1_ps(i_hi);
-        p->lane_org[k] = o;
-        p->lane_inv[k] = i;
         p->ia_row_near[k] = (neg ? 3 + k : k) * (int)sizeof(((struct bvh8_node *)0)->bounds[0]);
         p->ia_row_far[k] = (neg ? k : 3 + k) * (int)sizeof(((struct bvh8_node *)0)->bounds[0]);
         p->ia_masks |= o_lo != o_hi;
     }
-    const __m256 tmin =
-        _mm256_mask_i32gather_ps(_mm256_set1_ps(r0->tmin), &rays[0].tmin, idx, act, 4);
+    const __m256 tmin = p->lane_f[TRI8_F_TMIN];
     ok = _mm256_and_ps(ok, _mm256_cmp_ps(tmin, tmin, _CMP_ORD_Q));
     if ((unsigned)_mm256_movemask_ps(ok) != 0xffu)
         return 0;
     p->ia_octant = octant;
     p->ia_tmin = _mm256_set1_ps(packet_hmin(tmin));
-    p->lane_tmin = tmin;
     return 1;
 }
 
@@ -462,9 +542,11 @@ static inline int packet_ia_init(struct packet_state *p, const struct trace_ray 
  * which inner nodes are skipped or the order of visits, and every box
  * holding a hit at or below a ray's best passes its test).  A pushed
  * child keeps a lower bound of its rays' entry distances (the interval
- * test's, or the least of the rays' own for a leaf); on pop, the rays
- * whose box_limit lies before it leave it, as the single walk's pop
- * skips it.
+ * test's, or the least of the rays' own for a lane-tested child of a
+ * closest-hit packet); on pop, the rays whose box_limit lies before it
+ * leave it, as the single walk's pop skips it.  A leaf's closest hits
+ * are taken in the lanes (packet_leaf8) and written to a ray's state
+ * only where a per-ray step or the end reads it (packet_flush).
  *
  * Rays from several origins (shadow rays from a row of hit points) make
  * the interval wide, and entering inner nodes with every ray then costs
@@ -490,13 +572,12 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
     const int *near_row = p->ia_row_near, *far_row = p->ia_row_far;
     const __m256 inf8 = _mm256_set1_ps(INFINITY);
     const __m256 scale8 = _mm256_set1_ps(ISECT_BOX_FAR_SCALE);
-    /* The rays' box_limit in the lanes (unused lanes -inf) and their
-     * greatest, refreshed after each leaf (only hits shrink them). */
-    float bl_lane[8];
-    for (unsigned r = 0; r < 8; r++)
-        bl_lane[r] = active >> r & 1u ? p->s[r].box_limit : -INFINITY;
-    __m256 bl = _mm256_loadu_ps(bl_lane);
+    /* The rays' box_limit in the lanes (unused lanes -inf, packet_run)
+     * and their greatest, refreshed after each leaf (only hits shrink
+     * them). */
+    __m256 bl = _mm256_loadu_ps(p->box_limit);
     __m256 limit_hi = _mm256_set1_ps(packet_hmax(bl));
+    uint64_t node_tests = 0; /* the interval and lane tests, counted for the first ray */
     uint32_t sp = 0;
     uint32_t cur = 0, cur_count = 0;
     unsigned rays = active;
@@ -506,11 +587,13 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
             unsigned single = rays;
             const unsigned r8 = rays & p->lanes8;
             if ((unsigned)__builtin_popcount(r8) >= PACKET_TRI8_MIN) {
-                done |= packet_leaf8(p, wide->packets, cur, cur_count, r8);
+                done |= packet_leaf8(p, wide->packets, cur, cur_count, r8, any_hit);
                 single &= ~r8;
             }
             for (unsigned m = single; m; m &= m - 1u) {
                 const unsigned r = (unsigned)__builtin_ctz(m);
+                if (p->dirty >> r & 1u)
+                    packet_flush(p, r);
                 if (!(p->r4_ready >> r & 1u)) {
                     tri4_ray_init(&p->s[r].r4, p->s[r].ray);
                     p->r4_ready |= 1u << r;
@@ -522,18 +605,14 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
             if (!any_hit) {
                 /* An any-hit ray's box_limit never shrinks: it ends at
                  * its first hit. */
-                for (unsigned m = rays; m; m &= m - 1u) {
-                    const unsigned r = (unsigned)__builtin_ctz(m);
-                    bl_lane[r] = p->s[r].box_limit;
-                }
-                bl = _mm256_loadu_ps(bl_lane);
+                bl = _mm256_loadu_ps(p->box_limit);
                 limit_hi = _mm256_set1_ps(packet_hmax(bl));
             }
         } else {
             const struct bvh8_node *n = &nodes[cur];
             unsigned lane_rays[8];
             float t_min[8];
-            p->s[first].node_tests += 8;
+            node_tests += 8;
             __m256 t0 = p->ia_tmin;
             __m256 t1 = inf8;
             for (int k = 0; k < 3; k++) {
@@ -550,7 +629,9 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
             }
             t1 = _mm256_mul_ps(t1, scale8);
             t1 = _mm256_min_ps(t1, limit_hi);
-            unsigned pass = (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(t0, t1, _CMP_LE_OQ));
+            const unsigned pass =
+                (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(t0, t1, _CMP_LE_OQ));
+            unsigned push = 0; /* the children entered by at least one ray */
             if (p->ia_masks &&
                 (unsigned)__builtin_popcount(pass) >= (unsigned)__builtin_popcount(rays)) {
                 /* Rays from several origins, and more children pass
@@ -564,9 +645,8 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                                      &tm);
                 _mm256_storeu_ps((float *)lane_rays, in);
                 _mm256_storeu_ps(t_min, tm);
-                pass = 0;
-                for (unsigned l = 0; l < 8; l++)
-                    pass |= (unsigned)(lane_rays[l] != 0) << l;
+                push = (unsigned)_mm256_movemask_ps(
+                    _mm256_cmp_ps(in, _mm256_setzero_ps(), _CMP_NEQ_UQ));
             } else if (pass) {
                 _mm256_storeu_ps(t_min, t0);
                 for (unsigned m = pass; m; m &= m - 1u) {
@@ -575,21 +655,22 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                         /* One origin: the interval test is tight, and
                          * an inner child is entered by every ray. */
                         lane_rays[l] = rays;
+                        push |= 1u << l;
                         continue;
                     }
                     /* The child's box against each ray, walk_wide8's
                      * operations with the ray in the lanes. */
-                    __m256 u0 = p->lane_tmin;
+                    __m256 u0 = p->lane_f[TRI8_F_TMIN];
                     __m256 u1 = inf8;
                     for (int k = 0; k < 3; k++) {
                         const __m256 tn = _mm256_mul_ps(
                             _mm256_sub_ps(_mm256_broadcast_ss(&wide_row(n->bounds, near_row[k])[l]),
-                                          p->lane_org[k]),
-                            p->lane_inv[k]);
+                                          p->lane_f[TRI8_F_ORG + k]),
+                            p->lane_f[TRI8_F_INV + k]);
                         const __m256 tf = _mm256_mul_ps(
                             _mm256_sub_ps(_mm256_broadcast_ss(&wide_row(n->bounds, far_row[k])[l]),
-                                          p->lane_org[k]),
-                            p->lane_inv[k]);
+                                          p->lane_f[TRI8_F_ORG + k]),
+                            p->lane_f[TRI8_F_INV + k]);
                         u0 = _mm256_max_ps(tn, u0);
                         u1 = _mm256_min_ps(tf, u1);
                     }
@@ -597,39 +678,62 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                     u1 = _mm256_min_ps(u1, bl);
                     const __m256 in = _mm256_cmp_ps(u0, u1, _CMP_LE_OQ);
                     lane_rays[l] = (unsigned)_mm256_movemask_ps(in) & rays;
-                    p->s[first].node_tests += (unsigned)__builtin_popcount(rays);
-                    t_min[l] = packet_hmin(_mm256_blendv_ps(inf8, u0, in));
+                    push |= (unsigned)(lane_rays[l] != 0) << l;
+                    node_tests += (unsigned)__builtin_popcount(rays);
+                    /* The least entry of its rays, for the cull on pop
+                     * by a ray's box_limit; an any-hit ray's never
+                     * shrinks, so the rays here, which passed it
+                     * already, would all stay: the interval test's
+                     * bound (t_min, stored above) does as well. */
+                    if (!any_hit)
+                        t_min[l] = packet_hmin(_mm256_blendv_ps(inf8, u0, in));
                 }
             }
-            if (pass) {
+            if (push) {
+                /* The children to push by their position in the
+                 * octant's order (3 bits per position): bit q of pos is
+                 * set when the child at position q is pushed, so the
+                 * loop runs once per pushed child, the last position
+                 * first (the nearest ends on top of the stack, as
+                 * packet_walk's scan of all eight). */
                 const uint32_t order = (uint32_t)n->order[octant][0] |
                                        (uint32_t)n->order[octant][1] << 8 |
                                        (uint32_t)n->order[octant][2] << 16;
-                const uint32_t sp0 = sp;
-                for (int q = 7; q >= 0; q--) {
+                const __m256i slot = _mm256_and_si256(
+                    _mm256_srlv_epi32(_mm256_set1_epi32((int)order),
+                                      _mm256_setr_epi32(0, 3, 6, 9, 12, 15, 18, 21)),
+                    _mm256_set1_epi32(7));
+                const __m256i bit = _mm256_srlv_epi32(_mm256_set1_epi32((int)push), slot);
+                unsigned pos = (unsigned)_mm256_movemask_ps(
+                    _mm256_castsi256_ps(_mm256_slli_epi32(bit, 31)));
+                for (;;) {
+                    const unsigned q = 31u - (unsigned)__builtin_clz(pos);
                     const unsigned l = order >> (3 * q) & 7u;
-                    if (!(pass >> l & 1u) || !lane_rays[l])
-                        continue;
+                    pos &= ~(1u << q);
+                    if (!pos) {
+                        /* The nearest: walked next, not stacked. */
+                        cur = n->child[l];
+                        cur_count = n->count[l];
+                        rays = lane_rays[l];
+                        break;
+                    }
                     stack[sp].child = n->child[l];
                     stack[sp].count = n->count[l];
                     stack[sp].rays = lane_rays[l];
                     stack[sp].t_entry = t_min[l];
                     sp++;
                 }
-                if (sp != sp0) {
-                    sp--;
-                    cur = stack[sp].child;
-                    cur_count = stack[sp].count;
-                    rays = stack[sp].rays;
-                    if (!cur_count)
-                        wide_prefetch(&nodes[cur], sizeof(struct bvh8_node));
-                    continue;
-                }
+                if (!cur_count)
+                    wide_prefetch(&nodes[cur], sizeof(struct bvh8_node));
+                continue;
             }
         }
         for (;;) {
-            if (sp == 0)
+            if (sp == 0) {
+                p->s[first].node_tests += node_tests;
+                packet_flush_all(p);
                 return done;
+            }
             sp--;
             /* The rays whose box_limit lies before the subtree's entry
              * bound leave it, as the single walk's pop skips it. */
@@ -672,8 +776,20 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
         return result;
     }
     struct packet_state p;
-    for (unsigned m = active; m; m &= m - 1u) {
-        const unsigned r = (unsigned)__builtin_ctz(m);
+#if defined(__AVX__)
+    _mm256_storeu_ps(p.box_limit, _mm256_set1_ps(-INFINITY));
+    _mm256_storeu_ps(p.best, _mm256_set1_ps(INFINITY));
+    _mm256_storeu_ps(p.hit_u, _mm256_setzero_ps());
+    _mm256_storeu_ps(p.hit_v, _mm256_setzero_ps());
+    _mm256_storeu_ps((float *)p.hit_prim, _mm256_setzero_ps());
+    p.found = 0;
+    p.dirty = 0;
+#endif
+    /* Lane by lane with a constant count (unrolled: each state's fields
+     * at fixed offsets) rather than over the bits of active. */
+    for (unsigned r = 0; r < TRACE_PACKET; r++) {
+        if (!(active >> r & 1u))
+            continue;
         struct wide_state *s = &p.s[r];
         s->ray = &rays[r];
         s->any_hit = any_hit;
@@ -685,30 +801,28 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
         s->triangle_tests = 0;
 #if defined(__AVX__)
         p.limit[r] = t_max[r];
+        p.box_limit[r] = s->box_limit;
+        p.best[r] = t_max[r];
 #endif
     }
+
     unsigned done;
     int ia = 0;
 #if defined(__AVX__)
     {
-        /* The rays with the first ray's kx, ky, kz: three masked
-         * gathers and compares (inactive lanes compare unequal). */
+        /* The rays' fields in the lanes, and those with the first
+         * ray's kx, ky, kz (a lane without a ray copies the first ray:
+         * masked by active). */
+        tri8_lanes_load(rays, active, p.lane_f);
         const struct trace_ray *r0 = &rays[__builtin_ctz(active)];
-        const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
-        const __m256i idx =
-            _mm256_mullo_epi32(lane, _mm256_set1_epi32((int)(sizeof(struct trace_ray) / sizeof(int))));
-        const __m256i act = _mm256_cmpgt_epi32(
-            _mm256_and_si256(_mm256_set1_epi32((int)active),
-                             _mm256_sllv_epi32(_mm256_set1_epi32(1), lane)),
-            _mm256_setzero_si256());
-        const __m256i none = _mm256_set1_epi32(-1);
-        const __m256i kx = _mm256_mask_i32gather_epi32(none, &rays[0].kx, idx, act, 4);
-        const __m256i ky = _mm256_mask_i32gather_epi32(none, &rays[0].ky, idx, act, 4);
-        const __m256i kz = _mm256_mask_i32gather_epi32(none, &rays[0].kz, idx, act, 4);
         const __m256i same = _mm256_and_si256(
-            _mm256_and_si256(_mm256_cmpeq_epi32(kx, _mm256_set1_epi32(r0->kx)),
-                             _mm256_cmpeq_epi32(ky, _mm256_set1_epi32(r0->ky))),
-            _mm256_cmpeq_epi32(kz, _mm256_set1_epi32(r0->kz)));
+            _mm256_and_si256(
+                _mm256_cmpeq_epi32(_mm256_castps_si256(p.lane_f[TRI8_F_K]),
+                                   _mm256_set1_epi32(r0->kx)),
+                _mm256_cmpeq_epi32(_mm256_castps_si256(p.lane_f[TRI8_F_K + 1]),
+                                   _mm256_set1_epi32(r0->ky))),
+            _mm256_cmpeq_epi32(_mm256_castps_si256(p.lane_f[TRI8_F_K + 2]),
+                               _mm256_set1_epi32(r0->kz)));
         p.lanes8 = (unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(same)) & active;
         if ((unsigned)__builtin_popcount(p.lanes8) < PACKET_TRI8_MIN)
             p.lanes8 = 0;
@@ -747,16 +861,25 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
     if (counters)
         counters->triangle_tests += p.triangle_tests;
 #endif
-    for (unsigned m = active; m; m &= m - 1u) {
-        const unsigned r = (unsigned)__builtin_ctz(m);
-        if (counters) {
+    if (counters) {
+        for (unsigned m = active; m; m &= m - 1u) {
+            const unsigned r = (unsigned)__builtin_ctz(m);
             counters->node_tests += p.s[r].node_tests;
             counters->triangle_tests += p.s[r].triangle_tests;
         }
-        if (!any_hit && p.s[r].found)
+    }
+    if (any_hit)
+        return done;
+#if defined(__AVX__)
+    return p.found;
+#else
+    for (unsigned m = active; m; m &= m - 1u) {
+        const unsigned r = (unsigned)__builtin_ctz(m);
+        if (p.s[r].found)
             result |= 1u << r;
     }
-    return any_hit ? done : result;
+    return result;
+#endif
 }
 
 unsigned TRACE_PACKET_CLOSEST(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,
