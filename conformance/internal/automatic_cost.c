@@ -278,7 +278,7 @@ static int update_case(double rate, double preempt_ms, double *delta_sah, double
  * box, a time per step at which the counted rays lose 20 builds' worth of
  * traversal must rebuild.  (The area estimate saw 1/200 of a build and
  * refit; on the BART museum it undercounted the animated object's rays
- * thirtyfold, docs/performance.md.)  Not a timing test: the rate is set
+ * thirtyfold, docs/performance-log.md.)  Not a timing test: the rate is set
  * from the build time this very context measured. */
 static void check_rays_counted(void)
 {

@@ -118,7 +118,7 @@ enum scene_status scene_prepare_objects(struct scene *scene, struct rt_pool *poo
              * off: on the BART museum, 0.4-2% of the primary rays against the
              * 40-75% that actually reach the animated object, so that the
              * rule of update.c saw a thirtieth of the traversal it lost and
-             * rebuilt late (docs/performance.md). */
+             * rebuilt late (docs/performance-log.md). */
             object->expected_rays =
                 counted ? (double)visits : expected_rays(scene, object, default_rays);
             if (scene_object_strategy(object, scene->default_strategy) == RT_RESTRUCTURE &&

@@ -147,7 +147,7 @@ static int async_rebuild(struct scene_object *object, const struct bvh_build_par
  * lost time slices to another process measured by the wall clock looked
  * many times dearer than it is and held back the next rebuilds for as
  * many frames, so the same animation was handled differently on a loaded
- * machine (docs/performance.md, "Issue 11: dynamic strategies and
+ * machine (docs/performance-log.md, "Issue 11: dynamic strategies and
  * RT_AUTOMATIC").  A mildly deforming object (cloth) never pays for
  * a rebuild and stays refit-only; an exploding one rebuilds as soon as
  * its rays make the rebuild worth it.  Restructuring and asynchronous

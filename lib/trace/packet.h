@@ -24,7 +24,7 @@
  * Hybrid fallback (Benthin, Wald, Woop, Ernst and Mark 2012, Embree's
  * hybrid traversal): when fewer than TRACE_PACKET_HYBRID rays of a
  * packet are left in a subtree, each continues alone through the
- * single-ray walk from that subtree's root (docs/performance.md has the
+ * single-ray walk from that subtree's root (docs/performance-log.md has the
  * measurement behind the threshold).
  */
 #ifndef RT_TRACE_PACKET_H
@@ -38,7 +38,7 @@
 /* Rays per packet: 8, one ray per bit of an active mask. */
 #define TRACE_PACKET 8
 /* Below this many active rays a subtree is walked ray by ray.  0: never.
- * Measured (rtbench packets, docs/performance.md): with every box test
+ * Measured (rtbench packets, docs/performance-log.md): with every box test
  * a ray's own, a packet of few rays wastes no SIMD lanes, only its
  * bookkeeping, and falling back at 2, 3, 4 or 6 rays was up to 10%
  * slower than never on the coherent sets (within noise on two of six). */

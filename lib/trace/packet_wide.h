@@ -557,7 +557,7 @@ static inline int packet_ia_init(struct packet_state *p, const struct trace_ray 
  * tested ray by ray in the lanes like a leaf, and where more children
  * pass than there are rays, the rays' own tests over the eight children
  * (packet_box8_rows) take the node instead.  Measured in
- * docs/performance.md (k-packet).
+ * docs/performance-log.md (k-packet).
  */
 #if defined(__GNUC__)
 __attribute__((always_inline))
