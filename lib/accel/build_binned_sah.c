@@ -283,11 +283,7 @@ static uint32_t partition_refs(struct build_ref *refs, uint32_t begin, uint32_t 
         int32_t bin[4];
         bins_of(bn, c, bin);
         const uint32_t left = bin[axis] < plane;
-        const float(*off)[4] = build_side_offset[left];
-        llo = vec4_min(llo, vec4_add(c, vec4_load(off[0])));
-        lhi = vec4_max(lhi, vec4_add(c, vec4_load(off[1])));
-        rlo = vec4_min(rlo, vec4_add(c, vec4_load(off[2])));
-        rhi = vec4_max(rhi, vec4_add(c, vec4_load(off[3])));
+        build_side_grow(c, left, &llo, &lhi, &rlo, &rhi);
         refs[i] = refs[first_right];
         refs[first_right] = x;
         first_right += left;

@@ -80,6 +80,18 @@ static const float build_side_offset[2][4][4] = {
 #undef BUILD_DROP_LO
 #undef BUILD_DROP_HI
 
+/* Grows the side bounds of a partition by centroid c on side `left`
+ * (build_side_offset's four additions). */
+static inline void build_side_grow(vec4 c, uint32_t left, vec4 *llo, vec4 *lhi, vec4 *rlo,
+                                   vec4 *rhi)
+{
+    const float(*off)[4] = build_side_offset[left];
+    *llo = vec4_min(*llo, vec4_add(c, vec4_load(off[0])));
+    *lhi = vec4_max(*lhi, vec4_add(c, vec4_load(off[1])));
+    *rlo = vec4_min(*rlo, vec4_add(c, vec4_load(off[2])));
+    *rhi = vec4_max(*rhi, vec4_add(c, vec4_load(off[3])));
+}
+
 /* Smallest k with 2^k >= n: the depth an object-median subtree over n
  * primitives needs to reach single-primitive leaves.  0 for n <= 1. */
 static inline uint32_t build_ceil_log2(uint32_t n)

@@ -508,11 +508,7 @@ static void partition_task(void *arg, int worker)
             int32_t bin[4];
             bins_of_ref(&map, cen, bin);
             const uint32_t left = bin[axis] < plane;
-            const float(*off)[4] = build_side_offset[left];
-            llo = vec4_min(llo, vec4_add(cen, vec4_load(off[0])));
-            lhi = vec4_max(lhi, vec4_add(cen, vec4_load(off[1])));
-            rlo = vec4_min(rlo, vec4_add(cen, vec4_load(off[2])));
-            rhi = vec4_max(rhi, vec4_add(cen, vec4_load(off[3])));
+            build_side_grow(cen, left, &llo, &lhi, &rlo, &rhi);
             dst[left ? li : ri] = *r;
             li += left;
             ri += 1 - left;

@@ -189,6 +189,24 @@ static int unproject(const struct render_pass *sh, double x, double y, const dou
 #endif
 }
 
+#if RENDER_PAIRS
+/* Two lanes' distances to a line along the unit vector d, a[k] being each
+ * point less a point of the line: the component along d removed, then the
+ * length of the rest (distances_to_line's operations in its order, so the
+ * same bits). */
+static inline __m128d pair_distance_to_line(const __m128d a[3], const __m128d d[3])
+{
+    const __m128d along = _mm_add_pd(_mm_add_pd(_mm_mul_pd(a[0], d[0]), _mm_mul_pd(a[1], d[1])),
+                                     _mm_mul_pd(a[2], d[2]));
+    __m128d r2 = _mm_setzero_pd();
+    for (int k = 0; k < 3; k++) {
+        const __m128d perp = _mm_sub_pd(a[k], _mm_mul_pd(along, d[k]));
+        r2 = _mm_add_pd(r2, _mm_mul_pd(perp, perp));
+    }
+    return _mm_sqrt_pd(r2);
+}
+#endif
+
 /* Distances from q[0..3] to the line through p along the unit vector
  * d: the same operations for each, in this order. */
 static void distances_to_line(const double *const q[4], const double p[3], const double d[3],
@@ -204,14 +222,7 @@ static void distances_to_line(const double *const q[4], const double p[3], const
         __m128d a[3];
         for (int k = 0; k < 3; k++)
             a[k] = _mm_sub_pd(_mm_set_pd(q[h + 1][k], q[h][k]), pv[k]);
-        const __m128d along = _mm_add_pd(
-            _mm_add_pd(_mm_mul_pd(a[0], dv[0]), _mm_mul_pd(a[1], dv[1])), _mm_mul_pd(a[2], dv[2]));
-        __m128d r2 = _mm_setzero_pd();
-        for (int k = 0; k < 3; k++) {
-            const __m128d perp = _mm_sub_pd(a[k], _mm_mul_pd(along, dv[k]));
-            r2 = _mm_add_pd(r2, _mm_mul_pd(perp, perp));
-        }
-        _mm_storeu_pd(out + h, _mm_sqrt_pd(r2));
+        _mm_storeu_pd(out + h, pair_distance_to_line(a, dv));
     }
 #else
     for (int i = 0; i < 4; i++) {
@@ -421,14 +432,7 @@ static int primary_ray_pair(const struct unproject_cache *cache, int px, int py,
         for (int k = 0; k < 3; k++)
             a[k] = h < 2 ? _mm_sub_pd(_mm_set_pd(q[1]->near_pt[k], q[0]->near_pt[k]), p[k])
                          : _mm_sub_pd(_mm_set_pd(q[1]->far_pt[k], q[0]->far_pt[k]), p[k]);
-        const __m128d along = _mm_add_pd(
-            _mm_add_pd(_mm_mul_pd(a[0], d[0]), _mm_mul_pd(a[1], d[1])), _mm_mul_pd(a[2], d[2]));
-        __m128d r2 = _mm_setzero_pd();
-        for (int k = 0; k < 3; k++) {
-            const __m128d perp = _mm_sub_pd(a[k], _mm_mul_pd(along, d[k]));
-            r2 = _mm_add_pd(r2, _mm_mul_pd(perp, perp));
-        }
-        dist[h] = _mm_sqrt_pd(r2);
+        dist[h] = pair_distance_to_line(a, d);
     }
     /* max_left(x, y) = y > x ? y : x, from 0, x before y. */
     __m128d width = _mm_setzero_pd(), growth = _mm_setzero_pd();
