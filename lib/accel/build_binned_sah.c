@@ -70,9 +70,7 @@ struct task {
  * scale overflows) is not binned: scale 0 marks it, and maps every
  * centroid to bin 0. */
 struct binning {
-    vec4 origin;
-    vec4 scale;
-    vec4 last; /* bins - 1 in every lane, for the clamp */
+    struct build_bin_map map;
     int binnable[3];
 };
 
@@ -104,26 +102,11 @@ static void init_binning(struct binning *bn, const struct cbounds *cb, int bin_c
         bn->binnable[k] = extent > 0.0f && s > 0.0f && isfinite(s);
         scale[k] = bn->binnable[k] ? s : 0.0f;
     }
-    bn->origin = vec4_set(cb->lo[0], cb->lo[1], cb->lo[2], 0.0f);
-    bn->scale = vec4_set(scale[0], scale[1], scale[2], 0.0f);
-    bn->last = vec4_splat((float)(bin_count - 1));
+    bn->map.origin = vec4_set(cb->lo[0], cb->lo[1], cb->lo[2], 0.0f);
+    bn->map.scale = vec4_set(scale[0], scale[1], scale[2], 0.0f);
+    bn->map.last = vec4_splat((float)(bin_count - 1));
 }
 
-/* The doubled centroid of a ref, lane 3 zero. */
-static inline vec4 ref_centroid(const struct build_ref *r)
-{
-    return vec4_add(vec4_xyz0(vec4_load(r->lo)), vec4_load(r->hi));
-}
-
-/* Bins of a centroid on the three axes.  Clamped in float before the
- * conversion, so that no input (not even a NaN from a non-finite box) can
- * index outside the bins: max(NaN, 0) is 0. */
-static inline void bins_of(const struct binning *bn, vec4 centroid, int32_t bin[4])
-{
-    vec4 f = vec4_mul(vec4_sub(centroid, bn->origin), bn->scale);
-    f = vec4_min(vec4_max(f, vec4_splat(0.0f)), bn->last);
-    vec4_trunc(bin, f);
-}
 
 
 /* Box and centroid bounds of refs[begin, end). */
@@ -137,7 +120,7 @@ static void range_bounds(const struct build_ref *refs, uint32_t begin, uint32_t 
     for (uint32_t i = begin; i < end; i++) {
         lo = vec4_min(lo, vec4_xyz0(vec4_load(refs[i].lo)));
         hi = vec4_max(hi, vec4_load(refs[i].hi));
-        vec4 c = ref_centroid(&refs[i]);
+        vec4 c = build_ref_centroid(&refs[i]);
         clo = vec4_min(clo, c);
         chi = vec4_max(chi, c);
     }
@@ -167,7 +150,7 @@ static void fill_bins(struct bins *bins, int bin_count, const struct binning *bn
         vec4 lo = vec4_xyz0(vec4_load(r->lo));
         vec4 hi = vec4_load(r->hi);
         int32_t bin[4];
-        bins_of(bn, vec4_add(lo, hi), bin);
+        build_bins_of(&bn->map, vec4_add(lo, hi), bin);
         for (int k = 0; k < 3; k++) {
             float *box = bins->box[k][bin[k]];
             vec4_store(&box[0], vec4_min(vec4_load(&box[0]), lo));
@@ -254,7 +237,7 @@ static int find_best_split(const struct bins *bins, int bin_count, const struct 
 /*
  * Step 3: moves the primitives left of the chosen plane to the front of
  * [begin, end) and returns the first right slot.  Each primitive is
- * classified by bins_of, the very computation fill_bins counted it with,
+ * classified by build_bins_of, the very computation fill_bins counted it with,
  * so the sides match the bin counts.  Computes each side's centroid
  * bounds on the way, for the children's binning.
  *
@@ -279,9 +262,9 @@ static uint32_t partition_refs(struct build_ref *refs, uint32_t begin, uint32_t 
     uint32_t first_right = begin;
     for (uint32_t i = begin; i < end; i++) {
         struct build_ref x = refs[i];
-        vec4 c = ref_centroid(&x);
+        vec4 c = build_ref_centroid(&x);
         int32_t bin[4];
-        bins_of(bn, c, bin);
+        build_bins_of(&bn->map, c, bin);
         const uint32_t left = bin[axis] < plane;
         build_side_grow(c, left, &llo, &lhi, &rlo, &rhi);
         refs[i] = refs[first_right];

@@ -24,6 +24,7 @@
 #include <string.h>
 
 #include "accel/vec4.h"
+#include "accel/build_median.h" /* struct build_ref */
 #include "accel/bvh_build.h"
 
 /* Half the surface area of a node's box (the SAH's A). */
@@ -59,6 +60,35 @@ static inline void build_store_box(struct aabb *box, vec4 lo, vec4 hi)
         box->min[k] = l[k];
         box->max[k] = h[k];
     }
+}
+
+/* A node's mapping from doubled centroids to bins on the three axes
+ * (Wald 2007: bin = k1 (c - min)), shared by the serial and parallel
+ * binned builders so that their histograms and partitions classify alike:
+ * origin and scale per axis (scale 0 on an axis that is not binned maps
+ * every centroid to bin 0), last = bins - 1 in every lane. */
+struct build_bin_map {
+    vec4 origin;
+    vec4 scale;
+    vec4 last;
+};
+
+/* The doubled centroid of a ref, lane 3 zero. */
+static inline vec4 build_ref_centroid(const struct build_ref *r)
+{
+    return vec4_add(vec4_xyz0(vec4_load(r->lo)), vec4_load(r->hi));
+}
+
+/* Bins of a doubled centroid on the three axes: per lane
+ * clamp((c - origin) * scale, 0, last), one rounding per operation, then
+ * truncated.  Clamped in float before the conversion, so that no input
+ * (not even a NaN from a non-finite box) can index outside the bins:
+ * max(NaN, 0) is 0. */
+static inline void build_bins_of(const struct build_bin_map *m, vec4 centroid, int32_t bin[4])
+{
+    vec4 f = vec4_mul(vec4_sub(centroid, m->origin), m->scale);
+    f = vec4_min(vec4_max(f, vec4_splat(0.0f)), m->last);
+    vec4_trunc(bin, f);
 }
 
 /*

@@ -312,31 +312,15 @@ static void setup_task(void *arg, int worker)
 
 /* ------------------------------------------------------------ binning */
 
-/* The bins of a ref's centroid on the three axes, in one vector: per lane
- * the operations of a scalar bin = clamp((c - origin) * scale, 0, last)
- * with one rounding each (build_binned_sah.c's bins_of), so the histogram
- * and the partition, which both use it, classify every ref alike; the
- * clamp (max with 0 first) sends NaN to bin 0. */
-struct bin_map {
-    vec4 origin;
-    vec4 scale;
-    vec4 last;
-};
-
-static struct bin_map bin_map_of(const struct open_node *o, int last)
+/* The node's bin mapping (build_internal.h), the one the histogram and
+ * the partition both classify with. */
+static struct build_bin_map bin_map_of(const struct open_node *o, int last)
 {
-    struct bin_map m;
+    struct build_bin_map m;
     m.origin = vec4_set(o->origin[0], o->origin[1], o->origin[2], 0.0f);
     m.scale = vec4_set(o->scale[0], o->scale[1], o->scale[2], 0.0f);
     m.last = vec4_splat((float)last);
     return m;
-}
-
-static inline void bins_of_ref(const struct bin_map *m, vec4 centroid, int32_t bin[4])
-{
-    vec4 f = vec4_mul(vec4_sub(centroid, m->origin), m->scale);
-    f = vec4_min(vec4_max(f, vec4_splat(0.0f)), m->last);
-    vec4_trunc(bin, f);
 }
 
 static void init_binning(struct open_node *o, int bins)
@@ -362,7 +346,7 @@ static void bin_task(void *arg, int worker)
     uint32_t c;
     while ((c = chunk_of(b)) < b->chunk_count) {
         const struct chunk *ch = &b->chunks[c];
-        const struct bin_map map = bin_map_of(&b->open[ch->node], bins - 1);
+        const struct build_bin_map map = bin_map_of(&b->open[ch->node], bins - 1);
         float(*box)[8] = &b->hist_box[(size_t)c * 3 * bins];
         uint32_t *count = &b->hist_count[(size_t)c * 3 * bins];
         for (int i = 0; i < 3 * bins; i++) {
@@ -375,7 +359,7 @@ static void bin_task(void *arg, int worker)
             vec4 lo = vec4_xyz0(vec4_load(r->lo));
             vec4 hi = vec4_load(r->hi);
             int32_t bins_k[4];
-            bins_of_ref(&map, vec4_add(lo, hi), bins_k);
+            build_bins_of(&map, vec4_add(lo, hi), bins_k);
             for (int k = 0; k < 3; k++) {
                 int bin = k * bins + bins_k[k];
                 vec4_store(&box[bin][0], vec4_min(vec4_load(&box[bin][0]), lo));
@@ -493,7 +477,7 @@ static void partition_task(void *arg, int worker)
         const struct open_node *o = &b->open[ch->node];
         if (o->axis < 0)
             continue;
-        const struct bin_map map = bin_map_of(o, last);
+        const struct build_bin_map map = bin_map_of(o, last);
         const int axis = o->axis;
         const int32_t plane = o->plane;
         uint32_t li = ch->left_dst;
@@ -504,9 +488,9 @@ static void partition_task(void *arg, int worker)
         vec4 rhi = lhi;
         for (uint32_t i = ch->begin; i < ch->end; i++) {
             const struct build_ref *r = &src[i];
-            vec4 cen = vec4_add(vec4_xyz0(vec4_load(r->lo)), vec4_load(r->hi));
+            vec4 cen = build_ref_centroid(r);
             int32_t bin[4];
-            bins_of_ref(&map, cen, bin);
+            build_bins_of(&map, cen, bin);
             const uint32_t left = bin[axis] < plane;
             build_side_grow(cen, left, &llo, &lhi, &rlo, &rhi);
             dst[left ? li : ri] = *r;

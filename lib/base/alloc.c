@@ -32,15 +32,17 @@
  * of it, and the kernel may ignore it.
  */
 #define RT_ALLOC_HUGE_MIN ((size_t)4 << 20)
-#define RT_ALLOC_HUGE_PAGE ((uintptr_t)2 << 20)
+/* 2 MB: the x86-64 huge page (rt_malloc_large maps whole ones). */
+#define RT_ALLOC_HUGE_PAGE ((size_t)2 << 20)
 
 static void *advise_huge(void *block, size_t bytes)
 {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
     if (block && bytes >= RT_ALLOC_HUGE_MIN) {
         /* Only whole huge pages inside the block can be backed by one. */
-        uintptr_t begin = ((uintptr_t)block + RT_ALLOC_HUGE_PAGE - 1) & ~(RT_ALLOC_HUGE_PAGE - 1);
-        uintptr_t end = ((uintptr_t)block + bytes) & ~(RT_ALLOC_HUGE_PAGE - 1);
+        const uintptr_t page = RT_ALLOC_HUGE_PAGE;
+        uintptr_t begin = ((uintptr_t)block + page - 1) & ~(page - 1);
+        uintptr_t end = ((uintptr_t)block + bytes) & ~(page - 1);
         if (end > begin)
             (void)madvise((void *)begin, (size_t)(end - begin), MADV_HUGEPAGE);
     }
@@ -106,24 +108,22 @@ void rt_free(void *ptr)
     free(ptr);
 }
 
-/* 2 MB: the x86-64 huge page, and the smallest block worth advising. */
-#define LARGE_PAGE ((size_t)2 << 20)
-
 void *rt_malloc_large(size_t size, struct rt_large_block *handle)
 {
     memset(handle, 0, sizeof(*handle));
 #if defined(__linux__) && defined(MADV_HUGEPAGE) && defined(MAP_ANONYMOUS)
-    if (size >= LARGE_PAGE && size <= SIZE_MAX - 2 * LARGE_PAGE) {
+    if (size >= RT_ALLOC_HUGE_PAGE && size <= SIZE_MAX - 2 * RT_ALLOC_HUGE_PAGE) {
         if (injected_failure())
             return NULL;
         /* Room to align the start to 2 MB and to end on a 2 MB boundary:
          * the kernel backs only whole, aligned 2 MB ranges with huge
          * pages. */
-        const size_t bytes = (size + 2 * LARGE_PAGE - 1) & ~(LARGE_PAGE - 1);
+        const size_t bytes = (size + 2 * RT_ALLOC_HUGE_PAGE - 1) & ~(RT_ALLOC_HUGE_PAGE - 1);
         void *map = mmap(NULL, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
         if (map == MAP_FAILED)
             return NULL;
-        char *p = (char *)(((uintptr_t)map + LARGE_PAGE - 1) & ~(uintptr_t)(LARGE_PAGE - 1));
+        const uintptr_t page = RT_ALLOC_HUGE_PAGE;
+        char *p = (char *)(((uintptr_t)map + page - 1) & ~(page - 1));
         /* Advice only: on failure (THP disabled) the block is still good. */
         (void)madvise(p, bytes - (size_t)(p - (char *)map), MADV_HUGEPAGE);
         handle->base = map;

@@ -383,6 +383,12 @@ static float texture_lod(const struct shade_context *sc, const struct scene_text
                    dir, width);
 }
 
+/* t's level of detail from its triangle part alone (lod_ray). */
+static void texture_lambda(struct surface_texture *t)
+{
+    t->lambda = lod_ray(&t->tri, t->tex->level_count, t->ng, t->dir, t->width);
+}
+
 #if SURFACE_PAIRS
 static __m128d pair_dot(const __m128d a[3], const __m128d b[3])
 {
@@ -476,7 +482,7 @@ static void lod_ray_pair(struct surface_texture *a, struct surface_texture *b)
         const struct surface_lod *l = &t[i]->tri;
         if (!(l->p_a > 0.0) || !(l->t_a > 0.0) || !(v_len[i] > 0.0) || !isfinite(l->nn2) ||
             !(v_along[i] > 1e-9)) {
-            t[i]->lambda = lod_ray(l, t[i]->tex->level_count, t[i]->ng, t[i]->dir, t[i]->width);
+            texture_lambda(t[i]);
             continue;
         }
         const double ja_i[2] = {v_ja[0][i], v_ja[1][i]}, jb_i[2] = {v_jb[0][i], v_jb[1][i]};
@@ -494,8 +500,7 @@ void surface_texture_lods(struct surface_texture *const *t, int n)
         lod_ray_pair(t[i], t[i + 1]);
 #endif
     for (; i < n; i++)
-        t[i]->lambda = lod_ray(&t[i]->tri, t[i]->tex->level_count, t[i]->ng, t[i]->dir,
-                               t[i]->width);
+        texture_lambda(t[i]);
 }
 
 /*
@@ -595,7 +600,7 @@ static void apply_texture(const struct shade_context *sc, const struct scene_ins
     struct surface_texture t;
     texture_begin(sc, inst, mesh, prim, v, b0, b1, b2, ng, dir, width, name, &t);
     if (t.lod)
-        t.lambda = lod_ray(&t.tri, t.tex->level_count, t.ng, t.dir, t.width);
+        texture_lambda(&t);
     texture_end(&t, ambient, diffuse);
 }
 
@@ -907,7 +912,7 @@ void surface_fetch_colour(const struct shade_context *sc, const struct trace_sce
     struct surface_texture t;
     surface_fetch_colour_begin(sc, hit, dir, width, s, &t);
     if (t.lod)
-        t.lambda = lod_ray(&t.tri, t.tex->level_count, t.ng, t.dir, t.width);
+        texture_lambda(&t);
     surface_fetch_colour_end(s, &t);
 }
 
