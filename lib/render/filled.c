@@ -50,6 +50,3 @@ int filled_face(const struct scene_frame *frame, const struct trace_scene *scene
     const int front = front_cw ? !counter_clockwise : counter_clockwise;
     return (front ? front_mode : back_mode) == 0;
 }
-
-/* The first triangle after `hit` at exactly its t, in (instance, prim)
- * order, whose face is filled: 1 with it in *hit, else 0. */

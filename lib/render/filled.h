@@ -9,7 +9,8 @@
  * meets; the triangles kept for a per-face mode are passed here too by
  * every other ray at the face it meets (render/secondary.h's hit filter,
  * SECONDARY_UNFILLED), so that a polygon drawn as lines casts no shadow,
- * reflects nothing and answers no query whichever way it was stored.  Culling is not applied: RT_CULL_FACE is for camera rays only
+ * reflects nothing and answers no query whichever way it was stored.
+ * Culling is not applied: RT_CULL_FACE is for camera rays only
  * (docs/appearance.md), so a culled face that is filled is seen.
  */
 #ifndef RT_RENDER_FILLED_H
