@@ -10,7 +10,7 @@
  * test and its hit rule are untouched.  Behind an opaque first hit, a
  * triangle at exactly the same t is skipped with it; a clipped one is
  * replaced by the first unclipped triangle at its distance, if any
- * (unclipped_tie), which stepping past it would lose.  At a see-through
+ * (gl_drawn_tie), which stepping past it would lose.  At a see-through
  * hit every triangle at that t is a fragment (trace_scene_ties), composited
  * in GL's draw order, instance then primitive, as GL blends coplanar
  * translucent triangles one over the other; of the neighbours of one
@@ -338,29 +338,6 @@ static void group_ties(const struct shade_context *sc, const float org[3], const
     g->count = 1 + n;
 }
 
-/*
- * A clipped hit: the first other triangle at exactly its distance, in
- * draw order, that is drawn (its face) and not clipped replaces it (a
- * coincident copy drawn without the plane, which stepping past the
- * distance would lose); 0 when there is none.
- */
-static int unclipped_tie(const struct shade_context *sc, const float org[3], const float dir[3],
-                         struct trace_scene_hit *hit)
-{
-    struct trace_scene_hit after = *hit, next[8];
-    for (;;) {
-        const int n = trace_scene_ties(sc->scene, org, dir, &after, next, 8, NULL, sc->counters);
-        for (int i = 0; i < n; i++)
-            if (gl_hit_drawn(sc, dir, &next[i]) && !clipped(sc, org, dir, &next[i])) {
-                *hit = next[i];
-                return 1;
-            }
-        if (n < 8)
-            return 0;
-        after = next[7];
-    }
-}
-
 void blend_trace_primary_state(const struct shade_context *sc, const float org[3],
                                const float dir[3], float tmax, struct shade_cone cone,
                                float rgba[4], float *t_first,
@@ -386,7 +363,12 @@ void blend_trace_primary_state(const struct shade_context *sc, const float org[3
         if (!gl_closest_drawn(sc, org, dir, tmin, tmax, hit))
             break;
         tmin = nextafterf(hit->t, INFINITY);
-        if (clipping && clipped(sc, org, dir, hit) && !unclipped_tie(sc, org, dir, hit))
+        /* A clipped hit: the first other triangle at exactly its
+         * distance, in draw order, that is drawn (its face) and not
+         * clipped replaces it (a coincident copy drawn without the plane,
+         * which stepping past the distance would lose).  Clipped layers
+         * are passed without limit, and so are their ties. */
+        if (clipping && clipped(sc, org, dir, hit) && !gl_drawn_tie(sc, org, dir, -1, clipped, hit))
             continue;
         const struct scene_raster *r = see_through ? hit_raster(sc, hit) : NULL;
         /* A frame with neither blending nor the alpha test anywhere, or a

@@ -135,17 +135,18 @@ static int culled(const struct gl_triangle *t, const float dir[3])
  * few surfaces in one plane; more take another walk. */
 #define GL_SHADE_TIES 8
 
-/* The first triangle after `hit` at exactly its t, in (instance, prim)
- * order, that GL draws: 1 with it in *hit, else 0 (*hit unchanged). */
-static int drawn_tie(const struct shade_context *sc, const float org[3], const float dir[3],
-                     struct trace_scene_hit *hit)
+int gl_drawn_tie(const struct shade_context *sc, const float org[3], const float dir[3],
+                 int max_walks,
+                 int (*reject)(const struct shade_context *sc, const float org[3],
+                               const float dir[3], const struct trace_scene_hit *tie),
+                 struct trace_scene_hit *hit)
 {
     struct trace_scene_hit ties[GL_SHADE_TIES], after = *hit;
-    for (int walk = 0; walk * GL_SHADE_TIES < GL_SHADE_MAX_CULLED; walk++) {
+    for (int walk = 0; max_walks < 0 || walk < max_walks; walk++) {
         const int n =
             trace_scene_ties(sc->scene, org, dir, &after, ties, GL_SHADE_TIES, NULL, sc->counters);
         for (int i = 0; i < n; i++)
-            if (gl_hit_drawn(sc, dir, &ties[i])) {
+            if (gl_hit_drawn(sc, dir, &ties[i]) && !(reject && reject(sc, org, dir, &ties[i]))) {
                 *hit = ties[i];
                 return 1;
             }
@@ -175,7 +176,7 @@ int gl_closest_drawn(const struct shade_context *sc, const float org[3], const f
          * at that t are tried by identity, in draw order, before the ray
          * moves past it (scene_ties.h gives exactly the t the closest-hit
          * walk computes, so none is skipped or found twice). */
-        if (drawn_tie(sc, org, dir, hit))
+        if (gl_drawn_tie(sc, org, dir, GL_SHADE_MAX_CULLED / GL_SHADE_TIES, NULL, hit))
             return 1;
         tmin = nextafterf(hit->t, INFINITY);
     }

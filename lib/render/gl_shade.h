@@ -23,6 +23,22 @@
 int gl_closest_drawn(const struct shade_context *sc, const float org[3], const float dir[3],
                      float tmin, float tmax, struct trace_scene_hit *hit);
 
+/*
+ * The first triangle after `hit` at exactly its t, in (instance, prim)
+ * order, that GL draws (gl_hit_drawn) and that `reject`, when not NULL,
+ * does not turn down: 1 with it in *hit, else 0 (*hit unchanged).  The
+ * ties are fetched GL_SHADE_TIES at a time (trace_scene_ties gives
+ * exactly the t the closest-hit walk computes); at most `max_walks`
+ * fetches, or no limit when max_walks < 0.  Both callers take it:
+ * gl_closest_drawn for a hit GL does not draw (limited as its own search
+ * is) and blend.c for a clipped one (unlimited, as its search is).
+ */
+int gl_drawn_tie(const struct shade_context *sc, const float org[3], const float dir[3],
+                 int max_walks,
+                 int (*reject)(const struct shade_context *sc, const float org[3],
+                               const float dir[3], const struct trace_scene_hit *tie),
+                 struct trace_scene_hit *hit);
+
 /* 1 when GL draws the camera ray's hit `hit` (travelling along dir):
  * RT_CULL_FACE, as its triangle was drawn, does not remove its face. */
 int gl_hit_drawn(const struct shade_context *sc, const float dir[3],
