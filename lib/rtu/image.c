@@ -344,6 +344,29 @@ static int check_dimensions(long width, long height)
     return 1;
 }
 
+/* The buffers of a body of h rows of row_bytes each in the file (format:
+ * "PPM" or "PFM", for the messages): 1 with a row and the RGBA image
+ * allocated, else 0 with the error set and nothing allocated.  A file
+ * shorter than the header promises fails here, before the image is
+ * allocated. */
+static int body_buffers(FILE *f, const char *format, long w, long h, size_t row_bytes,
+                        int is_float, unsigned char **row, unsigned char **out)
+{
+    if (!enough_data(f, (double)row_bytes * (double)h)) {
+        set_error("truncated %s data (%ld x %ld pixels promised)", format, w, h);
+        return 0;
+    }
+    *row = malloc(row_bytes);
+    *out = malloc(image_bytes(w, h, is_float));
+    if (*row == NULL || *out == NULL) {
+        free(*row);
+        free(*out);
+        set_error("out of memory");
+        return 0;
+    }
+    return 1;
+}
+
 /* Reads a P6 body after the magic; returns the RGBA image or NULL. */
 static void *read_ppm(FILE *f, long *width, long *height, int is_float)
 {
@@ -362,18 +385,8 @@ static void *read_ppm(FILE *f, long *width, long *height, int is_float)
         return NULL;
     sample_bytes = maxval > 255 ? 2 : 1;
     row_bytes = (size_t)w * 3 * sample_bytes;
-    if (!enough_data(f, (double)row_bytes * (double)h)) {
-        set_error("truncated PPM data (%ld x %ld pixels promised)", w, h);
+    if (!body_buffers(f, "PPM", w, h, row_bytes, is_float, &row, &out))
         return NULL;
-    }
-    row = malloc(row_bytes);
-    out = malloc(image_bytes(w, h, is_float));
-    if (row == NULL || out == NULL) {
-        free(row);
-        free(out);
-        set_error("out of memory");
-        return NULL;
-    }
     for (y = 0; y < h; y++) {
         /* File rows run top to bottom; memory rows bottom to top. */
         size_t first = (size_t)(h - 1 - y) * (size_t)w * 4;
@@ -437,18 +450,8 @@ static void *read_pfm(FILE *f, int channels, long *width, long *height, int is_f
     if (!check_dimensions(w, h))
         return NULL;
     row_bytes = (size_t)w * (size_t)channels * 4;
-    if (!enough_data(f, (double)row_bytes * (double)h)) {
-        set_error("truncated PFM data (%ld x %ld pixels promised)", w, h);
+    if (!body_buffers(f, "PFM", w, h, row_bytes, is_float, &row, &out))
         return NULL;
-    }
-    row = malloc(row_bytes);
-    out = malloc(image_bytes(w, h, is_float));
-    if (row == NULL || out == NULL) {
-        free(row);
-        free(out);
-        set_error("out of memory");
-        return NULL;
-    }
     for (y = 0; y < h; y++) {
         /* PFM rows run bottom to top, like memory. */
         size_t first = (size_t)y * (size_t)w * 4;

@@ -371,15 +371,11 @@ int scene_list_call(struct scene_recording *rec, uint32_t name, int add_base)
 int scene_list_state(struct scene_recording *rec, uint32_t what, uint32_t b, uint32_t c,
                      const float *v, int n)
 {
-    struct scene_list_op op;
-    memset(&op, 0, sizeof(op));
-    op.kind = SCENE_OP_STATE;
-    op.a = what;
-    op.b = b;
-    op.c = c;
+    /* The op keeps doubles: every float converts exactly. */
+    double d[16];
     for (int i = 0; i < n && i < 16; i++)
-        op.v[i] = v[i];
-    return push_op(rec, &op);
+        d[i] = v[i];
+    return scene_list_state_d(rec, what, b, c, d, n);
 }
 
 int scene_list_state_d(struct scene_recording *rec, uint32_t what, uint32_t b, uint32_t c,
