@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * alloc.c - allocation wrapper with fault injection (see alloc.h), and
- * the transparent-huge-page hint for large blocks: the one huge-page
- * mechanism, which rt_malloc_large uses too.
+ * alloc.c - allocation wrapper (see alloc.h), with fault injection in
+ * its test-only build, and the transparent-huge-page hint for large
+ * blocks: the one huge-page mechanism, which rt_malloc_large uses too.
  */
 /* madvise is not POSIX 2008: the build's _POSIX_C_SOURCE alone does not
  * declare it. */
@@ -11,7 +11,9 @@
 #endif
 
 #include "base/alloc.h"
+#if defined(RT_ALLOC_FAULT_INJECTION)
 #include "base/atomic.h"
+#endif
 
 #include <stdint.h>
 #include <stdlib.h>
@@ -52,7 +54,11 @@ static void *advise_huge(void *block, size_t bytes)
     return block;
 }
 
-/* Remaining successful allocations before injected failures start; < 0
+#if defined(RT_ALLOC_FAULT_INJECTION)
+/* The test-only build of this file (tracelist_fault, see alloc.h): the
+ * one place the library keeps state outside a context, and no shipped
+ * library or tool links it.
+ * Remaining successful allocations before injected failures start; < 0
  * means never.  Accessed atomically: builds and renders allocate from
  * worker threads. */
 static long fail_countdown = -1;
@@ -76,6 +82,13 @@ static int injected_failure(void)
     rt_atomic_sub_fetch_relaxed(&fail_countdown, 1);
     return 0;
 }
+#else
+/* The library proper: no hook, no state. */
+static int injected_failure(void)
+{
+    return 0;
+}
+#endif
 
 void *rt_malloc(size_t size)
 {
@@ -135,6 +148,7 @@ void rt_free_large(struct rt_large_block *handle)
     handle->base = NULL;
 }
 
+#if defined(RT_ALLOC_FAULT_INJECTION)
 void rt_alloc_fail_after(long n)
 {
     rt_atomic_store_relaxed(&fail_once, 0);
@@ -158,3 +172,4 @@ long rt_alloc_failures(void)
 {
     return rt_atomic_load_relaxed(&failures);
 }
+#endif

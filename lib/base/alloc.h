@@ -4,7 +4,8 @@
  *
  * Every allocation in lib/ goes through these functions so that a test can
  * make the Nth allocation fail and walk every RT_OUT_OF_MEMORY path (the
- * idea of SQLite's sqlite3FaultSim).  They behave like malloc/calloc/
+ * idea of SQLite's sqlite3FaultSim; the hooks, at the end, exist in a
+ * test-only build of the library).  They behave like malloc/calloc/
  * realloc/free; rt_realloc_array leaves the old block untouched on failure.
  * A request whose size computation would overflow returns NULL.
  * Thread-safe.
@@ -41,16 +42,28 @@ void *rt_malloc_large(size_t size, struct rt_large_block *handle);
 /* Frees a block of rt_malloc_large; safe on a zeroed handle. */
 void rt_free_large(struct rt_large_block *handle);
 
-/* Test hook: after `n` more successful allocations every allocation fails
- * until rt_alloc_fail_reset() (n < 0 disables).  Process-wide: this is the
- * single piece of global mutable state outside a context, and only the
- * fault-injection tests touch it. */
+#if defined(RT_ALLOC_FAULT_INJECTION)
+/*
+ * Fault injection, in the test-only build of this file only: the CMake
+ * target tracelist_fault (the internal objects with alloc.c compiled with
+ * RT_ALLOC_FAULT_INJECTION, which it also defines for whatever links it),
+ * linked by the conformance tests that call these hooks.  Its counters
+ * are process-wide, the one piece of mutable state outside a context:
+ * allocations come from worker threads (a per-thread hook would miss
+ * them) and from layers (accel, trace) that never see a context (a
+ * per-context hook would have to be passed down every call that
+ * allocates).  The libraries, rtbench and the other tests have neither
+ * the counters nor the hooks; there every allocation is plain.
+ */
+/* After `n` more successful allocations every allocation fails until
+ * rt_alloc_fail_reset() (n < 0 disables). */
 void rt_alloc_fail_after(long n);
-/* Test hook: only the allocation after `n` more successful ones fails; the
- * ones after it succeed again (a single allocation failure). */
+/* Only the allocation after `n` more successful ones fails; the ones
+ * after it succeed again (a single allocation failure). */
 void rt_alloc_fail_once(long n);
 void rt_alloc_fail_reset(void);
 /* Allocations that failed on purpose since the last reset. */
 long rt_alloc_failures(void);
+#endif
 
 #endif
