@@ -320,7 +320,7 @@ int accel_collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *tr
     uint32_t *span = rt_calloc(bvh->node_count, sizeof(uint32_t));
     struct scratch_node *scratch = rt_calloc(cap, sizeof(*scratch));
     uint32_t *todo = rt_calloc(cap, sizeof(uint32_t));
-    struct rt_large_block raw = {NULL};
+    struct rt_large_block raw = {NULL, 0};
     char *base = NULL;
     uint32_t *source = NULL;
     uint32_t *packet_slot = NULL;

@@ -1,11 +1,11 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * alloc.c - allocation wrapper (see alloc.h), with fault injection in
- * its test-only build, and the transparent-huge-page hint for large
- * blocks: the one huge-page mechanism, which rt_malloc_large uses too.
+ * its test-only build, and the two huge-page paths for large blocks
+ * (why two: alloc.h).
  */
-/* madvise is not POSIX 2008: the build's _POSIX_C_SOURCE alone does not
- * declare it. */
+/* madvise and MAP_ANONYMOUS are not POSIX 2008: the build's
+ * _POSIX_C_SOURCE alone does not declare them. */
 #if defined(__linux__)
 #define _DEFAULT_SOURCE
 #endif
@@ -17,6 +17,7 @@
 
 #include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -34,7 +35,7 @@
  * of it, and the kernel may ignore it.
  */
 #define RT_ALLOC_HUGE_MIN ((size_t)4 << 20)
-/* 2 MB: the x86-64 huge page (rt_malloc_large aligns to it). */
+/* 2 MB: the x86-64 huge page (rt_malloc_large maps whole ones). */
 #define RT_ALLOC_HUGE_PAGE ((size_t)2 << 20)
 
 static void *advise_huge(void *block, size_t bytes)
@@ -123,29 +124,48 @@ void rt_free(void *ptr)
 
 void *rt_malloc_large(size_t size, struct rt_large_block *handle)
 {
-    handle->base = NULL;
-    /* A block rt_malloc offers huge pages (advise_huge) starts on a huge
-     * page and ends on one: rt_malloc is asked for the size rounded up to
-     * whole huge pages plus the most the start can move, so the hint
-     * covers every page of the block, not only the whole pages that
-     * happen to lie inside it.  Nothing touches the slack (for a block
-     * glibc maps, it costs address space only).  A smaller block is
-     * aligned to 64 only: C99 has no aligned_alloc. */
-    const size_t align = size >= RT_ALLOC_HUGE_MIN ? RT_ALLOC_HUGE_PAGE : 64;
-    if (size > SIZE_MAX - 2 * align)
+    memset(handle, 0, sizeof(*handle));
+#if defined(__linux__) && defined(MADV_HUGEPAGE) && defined(MAP_ANONYMOUS)
+    if (size >= RT_ALLOC_HUGE_PAGE && size <= SIZE_MAX - 2 * RT_ALLOC_HUGE_PAGE) {
+        if (injected_failure())
+            return NULL;
+        /* Room to align the start to 2 MB and to end on a 2 MB boundary:
+         * the kernel backs only whole, aligned 2 MB ranges with huge
+         * pages. */
+        const size_t bytes = (size + 2 * RT_ALLOC_HUGE_PAGE - 1) & ~(RT_ALLOC_HUGE_PAGE - 1);
+        void *map = mmap(NULL, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+        if (map == MAP_FAILED)
+            return NULL;
+        const uintptr_t page = RT_ALLOC_HUGE_PAGE;
+        char *p = (char *)(((uintptr_t)map + page - 1) & ~(page - 1));
+        /* Advice only: on failure (THP disabled) the block is still good. */
+        (void)madvise(p, bytes - (size_t)(p - (char *)map), MADV_HUGEPAGE);
+        handle->base = map;
+        handle->bytes = bytes;
+        return p;
+    }
+#endif
+    /* 64-byte alignment by hand: C99 has no aligned_alloc. */
+    if (size > SIZE_MAX - 63)
         return NULL;
-    const size_t bytes = ((size + align - 1) & ~(align - 1)) + align - 1;
-    void *raw = rt_malloc(bytes);
+    void *raw = rt_malloc(size + 63);
     if (!raw)
         return NULL;
     handle->base = raw;
-    return (void *)(((uintptr_t)raw + align - 1) & ~(uintptr_t)(align - 1));
+    return (void *)(((uintptr_t)raw + 63) & ~(uintptr_t)63);
 }
 
 void rt_free_large(struct rt_large_block *handle)
 {
+#if defined(__linux__) && defined(MADV_HUGEPAGE) && defined(MAP_ANONYMOUS)
+    if (handle->bytes) {
+        (void)munmap(handle->base, handle->bytes);
+        memset(handle, 0, sizeof(*handle));
+        return;
+    }
+#endif
     rt_free(handle->base);
-    handle->base = NULL;
+    memset(handle, 0, sizeof(*handle));
 }
 
 #if defined(RT_ALLOC_FAULT_INJECTION)

@@ -22,21 +22,33 @@ void *rt_realloc_array(void *ptr, size_t count, size_t size);
 void rt_free(void *ptr);
 
 /* A large, long-lived, read-mostly block (an object's wide traversal
- * layout): `size` bytes aligned to 64 from rt_malloc.  A block of 4 MB
- * or more (the size from which every rt_malloc block gets the
- * transparent-huge-page hint, madvise MADV_HUGEPAGE on Linux) is also
- * aligned to 2 MB and padded to whole 2 MB pages, so that the hint covers
- * all of it: a random ray's node and leaf loads then miss the TLB less
- * (Embree advises its BVH blocks the same way).  A fault in advised
- * memory not yet touched gets a huge page at once; memory touched before
- * keeps its 4 KB pages until the kernel's khugepaged collapses them.
- * glibc maps every block above its mmap threshold (at most 32 MB) fresh,
- * but may serve a smaller one from freed heap memory.
- * Fails like rt_malloc (one allocation for the fault-injection hooks
- * below).  *handle receives what rt_free_large needs; the block is not
- * zeroed. */
+ * layout): `size` bytes aligned to 64, which on Linux come from a fresh
+ * anonymous mapping aligned to 2 MB and advised for transparent huge pages
+ * (madvise MADV_HUGEPAGE) before any byte of it is touched, so that a
+ * random ray's node and leaf loads miss the TLB less (Embree advises its
+ * blocks the same way); elsewhere, or for a block under 2 MB, rt_malloc.
+ * Fails like rt_malloc (and counts for the fault-injection hooks below).
+ * *handle receives what rt_free_large needs; the block is not zeroed.
+ *
+ * Why two huge-page paths.  rt_malloc, rt_calloc and rt_realloc_array
+ * also offer huge pages, to every block of 4 MB or more, but only as a
+ * hint on what malloc returns (the build's blocks: fewer page faults).
+ * That hint cannot stand in for this function: glibc serves a block below
+ * its mmap threshold from its heap, and the threshold rises to the size of
+ * every mapped block freed (up to 32 MB), so after the first rebuild a
+ * layout of 2 to 32 MB can come from heap memory that the advice does not
+ * turn into huge pages.  Measured (AnonHugePages of /proc/self/smaps_rollup
+ * after writing the block): a 3 MB block asked of rt_malloc padded and
+ * aligned to 2 MB gets 0 kB of huge pages once a 20 MB block was freed,
+ * from here 4096 kB; a 74 MB one (bumpy's layout) gets all of it either
+ * way.  Nor can the malloc family use a mapping of its own: rt_free and
+ * rt_realloc_array receive no size and cannot tell a mapping from a heap
+ * block, and the build's arrays grow by realloc.  So the blocks that are
+ * walked by random rays for a whole frame take this path, and the
+ * short-lived ones the hint. */
 struct rt_large_block {
-    void *base; /* what rt_malloc returned */
+    void *base;   /* what was allocated */
+    size_t bytes; /* the mapping's length, 0 for an rt_malloc block */
 };
 void *rt_malloc_large(size_t size, struct rt_large_block *handle);
 /* Frees a block of rt_malloc_large; safe on a zeroed handle. */

@@ -122,7 +122,7 @@ struct bvh4 {
      * the prefetch would only cost instructions. */
     uint32_t prefetch_top;
     /* The nodes and packets in one block (rt_malloc_large: 2 MB huge
-     * pages where the OS offers them, for a block of 4 MB or more). */
+     * pages where the OS offers them). */
     struct rt_large_block raw;
 };
 
