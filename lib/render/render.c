@@ -554,6 +554,7 @@ static int pass_begin(struct render_pass *pass, const struct render_job *job, in
     }
     pass->clipping = frame_has_clip(job->frame);
     pass->see_through = frame_has_see_through(job->frame);
+    pass->all_drawn = gl_frame_all_drawn(job->frame);
     /* Only Whitted shading traces shadow, reflected and refracted rays;
      * they pass what clip planes, the alpha test, see-through blending and
      * faces drawn as lines or points take out of the picture. */
@@ -708,7 +709,8 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                     /* blend_trace_primary without a hit: the clear colour. */
                     memcpy(px, st->clear_color, 4 * sizeof(float));
                     t_first = INFINITY;
-                } else if (direct && gl_hit_drawn(sc, pk.dir[i], &primed[i].hit)) {
+                } else if (direct &&
+                           (pass->all_drawn || gl_hit_drawn(sc, pk.dir[i], &primed[i].hit))) {
                     /* blend_trace_primary's first, opaque, drawn hit. */
                     if (eye) {
                         /* Shaded with the block's others below. */
