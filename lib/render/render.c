@@ -167,17 +167,21 @@ static int unproject(const struct render_pass *sh, double x, double y, const dou
     _mm_storeu_pd(wl, w);
     if (wl[0] == 0.0 || wl[1] == 0.0)
         return 0;
+    /* isfinite of the six coordinates: x - x is 0 for a finite x, NaN
+     * for an infinity or a NaN. */
+    __m128d finite = _mm_castsi128_pd(_mm_set1_epi32(-1));
     for (int r = 0; r < 3; r++) {
         __m128d v = _mm_add_pd(_mm_set1_pd(col[r] + row[r]),
                                _mm_mul_pd(_mm_set1_pd(m[8 + r]), z));
-        _mm_storeu_pd(out[r], _mm_div_pd(_mm_add_pd(v, _mm_set1_pd(m[12 + r])), w));
+        v = _mm_div_pd(_mm_add_pd(v, _mm_set1_pd(m[12 + r])), w);
+        finite = _mm_and_pd(finite, _mm_cmpeq_pd(_mm_sub_pd(v, v), _mm_setzero_pd()));
+        _mm_storeu_pd(out[r], v);
     }
     for (int r = 0; r < 3; r++) {
         near_pt[r] = out[r][0];
         far_pt[r] = out[r][1];
     }
-    return isfinite(near_pt[0]) && isfinite(near_pt[1]) && isfinite(near_pt[2]) &&
-           isfinite(far_pt[0]) && isfinite(far_pt[1]) && isfinite(far_pt[2]);
+    return _mm_movemask_pd(finite) == 3;
 #else
     (void)col;
     (void)row;
