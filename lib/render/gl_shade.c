@@ -183,21 +183,40 @@ int gl_closest_drawn(const struct shade_context *sc, const float org[3], const f
     return 0;
 }
 
+/* 1 when a triangle of material m, in an instance called with material
+ * c, has both faces drawn filled: no culling recorded, and none taken
+ * from the call (a list's triangles that did not set the enable inherit
+ * it, mesh.h), and no face drawn as lines or points.  0 says nothing:
+ * the face the ray sees decides (culled). */
+static int material_always_drawn(const struct scene_material *m, const struct scene_material *c)
+{
+    const uint32_t poly = SCENE_MATERIAL_POLYGON_MODE_FRONT | SCENE_MATERIAL_POLYGON_MODE_BACK;
+    return m->cull_face == SCENE_CULL_NONE &&
+           (!(m->inherit & SCENE_MATERIAL_CULL_ENABLE) || c->cull_face == SCENE_CULL_NONE) &&
+           (m->polygon_mode[0] | m->polygon_mode[1]) == 0 &&
+           (!(m->inherit & poly) || (c->polygon_mode[0] | c->polygon_mode[1]) == 0);
+}
+
+int gl_frame_all_drawn(const struct scene_frame *frame)
+{
+    for (uint32_t i = 0; i < frame->committed.count; i++) {
+        const struct scene_instance *inst = &frame->committed.items[i];
+        const struct scene_mesh *mesh = &inst->object->mesh;
+        for (uint32_t k = 0; k < mesh->material_count; k++)
+            if (!material_always_drawn(&mesh->materials[k], &inst->appearance.material))
+                return 0;
+    }
+    return 1;
+}
+
 int gl_hit_drawn(const struct shade_context *sc, const float dir[3],
                  const struct trace_scene_hit *hit)
 {
     const struct scene_instance *inst = shade_hit_instance(sc, hit);
     const struct scene_mesh *mesh = &inst->object->mesh;
     const struct scene_material *m = &mesh->materials[mesh->tri_material[hit->prim]];
-    /* No culling recorded, and none taken from the call (a list's
-     * triangles that did not set the enable inherit it, mesh.h), and
-     * both faces filled: drawn, with no more work than before. */
-    const struct scene_material *c = &inst->appearance.material;
-    const uint32_t poly = SCENE_MATERIAL_POLYGON_MODE_FRONT | SCENE_MATERIAL_POLYGON_MODE_BACK;
-    if (m->cull_face == SCENE_CULL_NONE &&
-        (!(m->inherit & SCENE_MATERIAL_CULL_ENABLE) || c->cull_face == SCENE_CULL_NONE) &&
-        (m->polygon_mode[0] | m->polygon_mode[1]) == 0 &&
-        (!(m->inherit & poly) || (c->polygon_mode[0] | c->polygon_mode[1]) == 0))
+    /* Both faces filled: drawn, with no more work than before. */
+    if (material_always_drawn(m, &inst->appearance.material))
         return 1;
     struct gl_triangle t;
     fetch_triangle(sc, hit, &t);

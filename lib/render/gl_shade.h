@@ -39,6 +39,13 @@ int gl_drawn_tie(const struct shade_context *sc, const float org[3], const float
                                const float dir[3], const struct trace_scene_hit *tie),
                  struct trace_scene_hit *hit);
 
+/* 1 when every triangle of the frame's committed instances is drawn
+ * whatever side a ray sees (no RT_CULL_FACE, no face drawn as lines or
+ * points): gl_hit_drawn is then 1 for every hit of the frame, and a
+ * frame checks this once instead of per pixel.  Reads every instance's
+ * materials; 0 when some triangle may not be drawn. */
+int gl_frame_all_drawn(const struct scene_frame *frame);
+
 /* 1 when GL draws the camera ray's hit `hit` (travelling along dir):
  * RT_CULL_FACE, as its triangle was drawn, does not remove its face. */
 int gl_hit_drawn(const struct shade_context *sc, const float dir[3],

@@ -167,17 +167,21 @@ static int unproject(const struct render_pass *sh, double x, double y, const dou
     _mm_storeu_pd(wl, w);
     if (wl[0] == 0.0 || wl[1] == 0.0)
         return 0;
+    /* isfinite of the six coordinates: x - x is 0 for a finite x, NaN
+     * for an infinity or a NaN. */
+    __m128d finite = _mm_castsi128_pd(_mm_set1_epi32(-1));
     for (int r = 0; r < 3; r++) {
         __m128d v = _mm_add_pd(_mm_set1_pd(col[r] + row[r]),
                                _mm_mul_pd(_mm_set1_pd(m[8 + r]), z));
-        _mm_storeu_pd(out[r], _mm_div_pd(_mm_add_pd(v, _mm_set1_pd(m[12 + r])), w));
+        v = _mm_div_pd(_mm_add_pd(v, _mm_set1_pd(m[12 + r])), w);
+        finite = _mm_and_pd(finite, _mm_cmpeq_pd(_mm_sub_pd(v, v), _mm_setzero_pd()));
+        _mm_storeu_pd(out[r], v);
     }
     for (int r = 0; r < 3; r++) {
         near_pt[r] = out[r][0];
         far_pt[r] = out[r][1];
     }
-    return isfinite(near_pt[0]) && isfinite(near_pt[1]) && isfinite(near_pt[2]) &&
-           isfinite(far_pt[0]) && isfinite(far_pt[1]) && isfinite(far_pt[2]);
+    return _mm_movemask_pd(finite) == 3;
 #else
     (void)col;
     (void)row;
@@ -554,6 +558,7 @@ static int pass_begin(struct render_pass *pass, const struct render_job *job, in
     }
     pass->clipping = frame_has_clip(job->frame);
     pass->see_through = frame_has_see_through(job->frame);
+    pass->all_drawn = gl_frame_all_drawn(job->frame);
     /* Only Whitted shading traces shadow, reflected and refracted rays;
      * they pass what clip planes, the alpha test, see-through blending and
      * faces drawn as lines or points take out of the picture. */
@@ -615,6 +620,59 @@ uint32_t render_pass_tiles(const struct render_pass *pass)
 #define RENDER_BLOCK_W 4
 #define RENDER_BLOCK_H 2
 
+/* Pixel i of the 4 x 2 block at (bx, by) of the tile at (x0, y0): 1 when
+ * it is inside the tile and the viewport. */
+static int block_pixel_inside(const int *vp, int x0, int y0, int bx, int by, int i)
+{
+    const int x = bx + i % RENDER_BLOCK_W, y = by + i / RENDER_BLOCK_W;
+    return x < x0 + RENDER_TILE_SIZE && x < vp[2] && y < y0 + RENDER_TILE_SIZE && y < vp[3];
+}
+
+/* The pixels of a traced block (render_tile_packets) in the eye light's
+ * direct case with every hit drawn: the block's hits shaded together
+ * (shade_eye_hits), the clear colour where a ray hit nothing or none was
+ * made, and the window depth where the frame keeps one, as the general
+ * loop writes them. */
+static void eye_block(struct render_pass *pass, struct shade_context *sc, int x0, int y0,
+                      int bx, int by, const struct trace_packet *pk, unsigned found,
+                      const struct trace_scene_hit hits[TRACE_PACKET],
+                      const struct shade_cone cone[TRACE_PACKET])
+{
+    const struct render_state *st = pass->job->state;
+    const int *vp = st->viewport;
+    const float *eye_dir[TRACE_PACKET];
+    const struct trace_scene_hit *eye_hit[TRACE_PACKET];
+    struct shade_cone eye_cone[TRACE_PACKET];
+    float *eye_px[TRACE_PACKET];
+    int eyes = 0;
+    for (int i = 0; i < TRACE_PACKET; i++) {
+        if (!block_pixel_inside(vp, x0, y0, bx, by, i))
+            continue;
+        const int x = bx + i % RENDER_BLOCK_W, y = by + i / RENDER_BLOCK_W;
+        const size_t at = (size_t)(vp[1] + y) * pass->fb_width + vp[0] + x;
+        float *px = &pass->fb[4 * at];
+        if (!(pk->active >> i & 1u)) {
+            memcpy(px, st->clear_color, 4 * sizeof(float));
+            continue;
+        }
+        float t_first;
+        if (!(found >> i & 1u)) {
+            memcpy(px, st->clear_color, 4 * sizeof(float));
+            t_first = INFINITY;
+        } else {
+            eye_dir[eyes] = pk->dir[i];
+            eye_hit[eyes] = &hits[i];
+            eye_cone[eyes] = cone[i];
+            eye_px[eyes++] = px;
+            t_first = hits[i].t;
+        }
+        if (pass->depth)
+            pass->depth[at] = raster_window_depth(st->projection, pk->org[i], pk->dir[i], t_first);
+    }
+    if (eyes)
+        shade_eye_hits(sc, eyes, eye_dir, eye_hit, eye_cone, eye_px);
+}
+
 /*
  * The tile with packets (packets=on, trace/packet_scene.h): the camera
  * rays of each 4 x 2 block of pixels are traced together to their first
@@ -672,6 +730,15 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                 }
             }
             const unsigned found = trace_scene_closest_packet(sc->scene, &pk, hits, sc->counters);
+            if (eye && direct && pass->all_drawn) {
+                /* The loop below when every hit is drawn and shaded by the
+                 * eye light: a pixel is its ray's hit, shaded with the
+                 * block's others, or the clear colour, without the primed
+                 * hits (only Whitted's shading reads them) or the other
+                 * branches' tests. */
+                eye_block(pass, sc, x0, y0, bx, by, &pk, found, hits, cone);
+                continue;
+            }
             /* Whitted shading's shadow rays of the block's first hits,
              * one packet per light, and the surfaces they start on. */
             struct shade_primed primed[TRACE_PACKET];
@@ -708,7 +775,8 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                     /* blend_trace_primary without a hit: the clear colour. */
                     memcpy(px, st->clear_color, 4 * sizeof(float));
                     t_first = INFINITY;
-                } else if (direct && gl_hit_drawn(sc, pk.dir[i], &primed[i].hit)) {
+                } else if (direct &&
+                           (pass->all_drawn || gl_hit_drawn(sc, pk.dir[i], &primed[i].hit))) {
                     /* blend_trace_primary's first, opaque, drawn hit. */
                     if (eye) {
                         /* Shaded with the block's others below. */

@@ -139,6 +139,7 @@ struct render_pass {
     int projectable;     /* the projection could be inverted */
     int clipping;        /* some instance has clip planes (frame_has_clip) */
     int see_through;     /* some instance blends or alpha-tests (frame_has_see_through) */
+    int all_drawn;       /* every hit is drawn, gl_hit_drawn needs no call (gl_frame_all_drawn) */
     double inv_projection[16];
     float *fb;           /* the image being rendered, fb_width x fb_height */
     int fb_width, fb_height;

@@ -544,12 +544,27 @@ static void projective_st(const float *const vst[3], const float q[3], float b0,
  * when both filters are the same non-mipmapped one every level of detail
  * gives the same lookup, and none is computed.
  */
+/* The texture named `name` (not 0), through the tile's cache when the
+ * last textured hit had the same name. */
+static const struct scene_texture *texture_named(const struct shade_context *sc, uint32_t name)
+{
+    struct surface_cache *c = sc->cache;
+    if (c && c->named == name)
+        return c->named_tex;
+    const struct scene_texture *tex = scene_textures_lookup(sc->textures, name);
+    if (c) {
+        c->named = name;
+        c->named_tex = tex;
+    }
+    return tex;
+}
+
 static void texture_begin(const struct shade_context *sc, const struct scene_instance *inst,
                           const struct scene_mesh *mesh, uint32_t prim, const uint32_t v[3],
                           float b0, float b1, float b2, const float ng[3], const float dir[3],
                           float width, uint32_t name, struct surface_texture *t)
 {
-    const struct scene_texture *tex = scene_textures_lookup(sc->textures, name);
+    const struct scene_texture *tex = texture_named(sc, name);
     t->tex = NULL;
     t->lod = 0;
     if (!tex || !tex->texels)

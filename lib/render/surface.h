@@ -43,6 +43,11 @@ struct surface_cache {
     const struct scene_texture *tex;
     float st[3][2];
     struct surface_lod lod;
+    /* The texture table's answer for name `named` (0: none yet; names
+     * are never 0), kept whatever triangle is hit: the table does not
+     * change while a frame renders. */
+    uint32_t named;
+    const struct scene_texture *named_tex;
 };
 
 /* Surface data at a hit, in world space. */

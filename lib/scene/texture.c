@@ -406,6 +406,66 @@ static void sample_level_reduced(const struct scene_texture *tex, int level,
 #endif
 }
 
+#if TEXTURE_LANES
+/* floor_small of both lanes, for |x| < 2^31: the truncation (cvttpd2dq
+ * truncates as the conversion to long long does there), one lower where
+ * it is above x.  The integers in the low two int32 lanes of *index. */
+static __m128d pair_floor(__m128d x, __m128i *index)
+{
+    const __m128i i = _mm_cvttpd_epi32(x);
+    const __m128d t = _mm_cvtepi32_pd(i);
+    const __m128d above = _mm_cmpgt_pd(t, x);
+    /* above is all ones (-1 as int64) in the lanes to lower: as int32
+     * pairs, lane k's low word is -1 too after the shuffle. */
+    *index = _mm_add_epi32(i, _mm_shuffle_epi32(_mm_castpd_si128(above), _MM_SHUFFLE(3, 3, 2, 0)));
+    return _mm_sub_pd(t, _mm_and_pd(above, _mm_set1_pd(1.0)));
+}
+
+/* The bilinear filter of sample_level_reduced (LINEAR) of levels `level`
+ * and level + 1 blended by f, scene_texture_sample_lod's *_MIPMAP_LINEAR
+ * step: the two levels' u, v, their floors and weights in the two
+ * double lanes (lane 0 the finer level), each lane sample_level_reduced's
+ * operations in its order, and the blend fine + f (coarse - fine) in the
+ * four float lanes as the scalar loop does per channel: the same floats.
+ * rs and rt are reduced (reduce_coord: within [-1, 2]), so with at most
+ * SCENE_TEXTURE_MAX_SIZE texels a side u and v are far inside int32. */
+static void sample_trilinear(const struct scene_texture *tex, int level, double rs, double rt,
+                             float f, float rgba[4])
+{
+    const struct scene_texture_level *lv[2] = {&tex->levels[level], &tex->levels[level + 1]};
+    const __m128d half = _mm_set1_pd(0.5);
+    const __m128d uc = _mm_sub_pd(
+        _mm_mul_pd(_mm_set1_pd(rs), _mm_set_pd((double)lv[1]->width, (double)lv[0]->width)),
+        half);
+    const __m128d vc = _mm_sub_pd(
+        _mm_mul_pd(_mm_set1_pd(rt), _mm_set_pd((double)lv[1]->height, (double)lv[0]->height)),
+        half);
+    __m128i ii, ji;
+    const __m128d fi = pair_floor(uc, &ii), fj = pair_floor(vc, &ji);
+    float a[4], b[4];
+    _mm_storeu_ps(a, _mm_cvtpd_ps(_mm_sub_pd(uc, fi)));
+    _mm_storeu_ps(b, _mm_cvtpd_ps(_mm_sub_pd(vc, fj)));
+    int32_t i[4], j[4];
+    _mm_storeu_si128((__m128i *)i, ii);
+    _mm_storeu_si128((__m128i *)j, ji);
+    __m128 c[2];
+    for (int l = 0; l < 2; l++) {
+        const int w = lv[l]->width, h = lv[l]->height;
+        const int i0 = wrap_index(i[l], w, tex->wrap_s);
+        const int i1 = wrap_index((long)i[l] + 1, w, tex->wrap_s);
+        const int j0 = wrap_index(j[l], h, tex->wrap_t);
+        const int j1 = wrap_index((long)j[l] + 1, h, tex->wrap_t);
+        const __m128 c00 = texel_lanes(lv[l], i0, j0), c10 = texel_lanes(lv[l], i1, j0);
+        const __m128 c01 = texel_lanes(lv[l], i0, j1), c11 = texel_lanes(lv[l], i1, j1);
+        const __m128 va = _mm_set1_ps(a[l]);
+        const __m128 bottom = _mm_add_ps(c00, _mm_mul_ps(va, _mm_sub_ps(c10, c00)));
+        const __m128 top = _mm_add_ps(c01, _mm_mul_ps(va, _mm_sub_ps(c11, c01)));
+        c[l] = _mm_add_ps(bottom, _mm_mul_ps(_mm_set1_ps(b[l]), _mm_sub_ps(top, bottom)));
+    }
+    _mm_storeu_ps(rgba, _mm_add_ps(c[0], _mm_mul_ps(_mm_set1_ps(f), _mm_sub_ps(c[1], c[0]))));
+}
+#endif
+
 void scene_texture_sample_level(const struct scene_texture *tex, int level,
                                 enum scene_texture_filter filter, float s, float t,
                                 float rgba[4])
@@ -460,9 +520,17 @@ void scene_texture_sample_lod(const struct scene_texture *tex, float lambda, flo
         scene_texture_sample_level(tex, q, min, s, t, rgba);
         return;
     }
-    const float d1 = floorf(lambda), f = lambda - d1;
+    /* floorf(lambda) for c < lambda < q: the truncation of a positive
+     * float below 2^31 is its floor, without the library call. */
+    const float d1 = (float)(int)lambda, f = lambda - d1;
     float fine[4], coarse[4];
     const double rs = reduce_coord(s, tex->wrap_s), rt = reduce_coord(t, tex->wrap_t);
+#if TEXTURE_LANES
+    if (min == SCENE_FILTER_LINEAR_MIPMAP_LINEAR) {
+        sample_trilinear(tex, (int)d1, rs, rt, f, rgba);
+        return;
+    }
+#endif
     sample_level_reduced(tex, (int)d1, min, rs, rt, fine);
     sample_level_reduced(tex, (int)d1 + 1, min, rs, rt, coarse);
     /* As the bilinear weights: equal levels give exactly their value. */
