@@ -44,24 +44,31 @@
 #include "trace/bvh4_layout.h"
 #include "trace/intersect.h"
 
-/* The per-ray constants of the packet test, set once per ray. */
+/* The per-ray constants of the packet test, set once per ray.  The
+ * origin is held negated: v + (-org) is v - org bit for bit (IEEE 754
+ * defines x - y as x + (-y), zeros and NaN included), and an addition
+ * takes the packet's coordinates as its memory operand, which a
+ * subtraction can only do for the subtrahend: nine loads fewer per
+ * packet in the VEX encoding.  kx, ky, kz are also kept as byte offsets
+ * of the rows of struct tri4_packet's v[i]. */
 struct tri4_ray {
-    __m128 org_x, org_y, org_z; /* org[kx], org[ky], org[kz] */
+    __m128 neg_org_x, neg_org_y, neg_org_z; /* -org[kx], -org[ky], -org[kz] */
     __m128 sx, sy, sz;
     __m128 inv_x, inv_y;        /* inv_dir[kx], inv_dir[ky] */
     __m128 tmin;
-    int kx, ky, kz;
+    size_t off_x, off_y, off_z; /* kx, ky, kz times sizeof p->v[0][0] */
     int neg_x, neg_y;           /* inv_dir[kx] < 0, inv_dir[ky] < 0 (isect_slab) */
 };
 
 static inline void tri4_ray_init(struct tri4_ray *r, const struct trace_ray *ray)
 {
-    r->kx = ray->kx;
-    r->ky = ray->ky;
-    r->kz = ray->kz;
-    r->org_x = _mm_set1_ps(ray->org[ray->kx]);
-    r->org_y = _mm_set1_ps(ray->org[ray->ky]);
-    r->org_z = _mm_set1_ps(ray->org[ray->kz]);
+    const size_t row = sizeof(((const struct tri4_packet *)NULL)->v[0][0]);
+    r->off_x = (size_t)ray->kx * row;
+    r->off_y = (size_t)ray->ky * row;
+    r->off_z = (size_t)ray->kz * row;
+    r->neg_org_x = _mm_set1_ps(-ray->org[ray->kx]);
+    r->neg_org_y = _mm_set1_ps(-ray->org[ray->ky]);
+    r->neg_org_z = _mm_set1_ps(-ray->org[ray->kz]);
     r->sx = _mm_set1_ps(ray->sx);
     r->sy = _mm_set1_ps(ray->sy);
     r->sz = _mm_set1_ps(ray->sz);
@@ -70,6 +77,13 @@ static inline void tri4_ray_init(struct tri4_ray *r, const struct trace_ray *ray
     r->tmin = _mm_set1_ps(ray->tmin);
     r->neg_x = ray->inv_dir[ray->kx] < 0.0f;
     r->neg_y = ray->inv_dir[ray->ky] < 0.0f;
+}
+
+/* Row `off` bytes into vertex i's coordinates of p (tri4_ray's off_x..):
+ * the four lanes' coordinate on one axis. */
+static inline __m128 tri4_row(const struct tri4_packet *p, int i, size_t off)
+{
+    return _mm_loadu_ps((const float *)(const void *)((const char *)p->v[i] + off));
 }
 
 /* isect_slab on four lanes: the near and far ends of one slab, folded
@@ -117,15 +131,15 @@ static inline unsigned tri4_candidates_lanes_impl(const struct tri4_ray *r,
     /* Unaligned loads: a layout's packets are 32-byte aligned, but a
      * packet elsewhere (a test's, on the stack) need not be; on aligned
      * data they cost what aligned loads do. */
-    const __m128 ax = _mm_sub_ps(_mm_loadu_ps(p->v[0][r->kx]), r->org_x);
-    const __m128 ay = _mm_sub_ps(_mm_loadu_ps(p->v[0][r->ky]), r->org_y);
-    const __m128 az = _mm_sub_ps(_mm_loadu_ps(p->v[0][r->kz]), r->org_z);
-    const __m128 bx = _mm_sub_ps(_mm_loadu_ps(p->v[1][r->kx]), r->org_x);
-    const __m128 by = _mm_sub_ps(_mm_loadu_ps(p->v[1][r->ky]), r->org_y);
-    const __m128 bz = _mm_sub_ps(_mm_loadu_ps(p->v[1][r->kz]), r->org_z);
-    const __m128 cx = _mm_sub_ps(_mm_loadu_ps(p->v[2][r->kx]), r->org_x);
-    const __m128 cy = _mm_sub_ps(_mm_loadu_ps(p->v[2][r->ky]), r->org_y);
-    const __m128 cz = _mm_sub_ps(_mm_loadu_ps(p->v[2][r->kz]), r->org_z);
+    const __m128 ax = _mm_add_ps(r->neg_org_x, tri4_row(p, 0, r->off_x));
+    const __m128 ay = _mm_add_ps(r->neg_org_y, tri4_row(p, 0, r->off_y));
+    const __m128 az = _mm_add_ps(r->neg_org_z, tri4_row(p, 0, r->off_z));
+    const __m128 bx = _mm_add_ps(r->neg_org_x, tri4_row(p, 1, r->off_x));
+    const __m128 by = _mm_add_ps(r->neg_org_y, tri4_row(p, 1, r->off_y));
+    const __m128 bz = _mm_add_ps(r->neg_org_z, tri4_row(p, 1, r->off_z));
+    const __m128 cx = _mm_add_ps(r->neg_org_x, tri4_row(p, 2, r->off_x));
+    const __m128 cy = _mm_add_ps(r->neg_org_y, tri4_row(p, 2, r->off_y));
+    const __m128 cz = _mm_add_ps(r->neg_org_z, tri4_row(p, 2, r->off_z));
 
     const __m128 Ax = _mm_add_ps(ax, _mm_mul_ps(r->sx, az));
     const __m128 Ay = _mm_add_ps(ay, _mm_mul_ps(r->sy, az));
@@ -139,15 +153,17 @@ static inline unsigned tri4_candidates_lanes_impl(const struct tri4_ray *r,
     const __m128 W = _mm_sub_ps(_mm_mul_ps(Bx, Ay), _mm_mul_ps(By, Ax));
 
     const __m128 zero = _mm_setzero_ps();
-    /* Lanes with an edge function of exactly 0: the scalar test's
-     * double-precision fallback decides their signs. */
-    const __m128 on_edge =
-        _mm_or_ps(_mm_or_ps(_mm_cmpeq_ps(U, zero), _mm_cmpeq_ps(V, zero)), _mm_cmpeq_ps(W, zero));
-
-    const __m128 any_neg =
-        _mm_or_ps(_mm_or_ps(_mm_cmplt_ps(U, zero), _mm_cmplt_ps(V, zero)), _mm_cmplt_ps(W, zero));
-    const __m128 any_pos =
-        _mm_or_ps(_mm_or_ps(_mm_cmpgt_ps(U, zero), _mm_cmpgt_ps(V, zero)), _mm_cmpgt_ps(W, zero));
+    /* Some edge function below 0, some above: min(U, V, W) < 0 and
+     * max(U, V, W) > 0, two folds and two compares instead of six
+     * compares and four ors.  minps/maxps return one of their operands,
+     * so a min below 0 is an operand below 0 and a max above 0 one above
+     * 0: a lane found mixed is mixed, NaN operands or not.  Without NaN
+     * the folds are exact, so a lane not found mixed is not mixed; a
+     * lane with a NaN edge function has a NaN det and is kept only when
+     * deferred (below), where tri4_lane_test redoes the signs in double
+     * as isect_triangle does. */
+    const __m128 any_neg = _mm_cmplt_ps(_mm_min_ps(U, _mm_min_ps(V, W)), zero);
+    const __m128 any_pos = _mm_cmpgt_ps(_mm_max_ps(U, _mm_max_ps(V, W)), zero);
     /* Signs that differ strictly: outside, deferred lanes too.  A
      * non-zero float edge function has the sign of its double
      * recomputation: fl(fl(a) - fl(b)) > 0 needs fl(a) > fl(b), hence
@@ -163,6 +179,11 @@ static inline unsigned tri4_candidates_lanes_impl(const struct tri4_ray *r,
      * branch-free filter. */
     if (early_out && ((unsigned)_mm_movemask_ps(mixed) & valid) == valid)
         return 0;
+
+    /* Lanes with an edge function of exactly 0: the scalar test's
+     * double-precision fallback decides their signs. */
+    const __m128 on_edge =
+        _mm_or_ps(_mm_or_ps(_mm_cmpeq_ps(U, zero), _mm_cmpeq_ps(V, zero)), _mm_cmpeq_ps(W, zero));
 
     /* The rejections that do not depend on U, V, W: the sheared depths'
      * range and the ray's interval through the triangle's box.  They

@@ -608,9 +608,13 @@ static inline int walk_wide8_ray(const struct bvh4 *wide, struct wide_state *s, 
         if (any_hit)
             __asm__("" : "+r"(ray));
 #endif
-        const __m256 org_x = _mm256_set1_ps(ray->org[0]);
-        const __m256 org_y = _mm256_set1_ps(ray->org[1]);
-        const __m256 org_z = _mm256_set1_ps(ray->org[2]);
+        /* The origin negated: bound + (-org) is bound - org bit for bit
+         * (IEEE 754's x - y is x + (-y)), and the addition takes the
+         * bound as its memory operand (the subtraction cannot, the bound
+         * being its minuend): six loads fewer per node. */
+        const __m256 neg_org_x = _mm256_set1_ps(-ray->org[0]);
+        const __m256 neg_org_y = _mm256_set1_ps(-ray->org[1]);
+        const __m256 neg_org_z = _mm256_set1_ps(-ray->org[2]);
         const __m256 inv_x = _mm256_set1_ps(ray->inv_dir[0]);
         const __m256 inv_y = _mm256_set1_ps(ray->inv_dir[1]);
         const __m256 inv_z = _mm256_set1_ps(ray->inv_dir[2]);
@@ -624,22 +628,22 @@ static inline int walk_wide8_ray(const struct bvh4 *wide, struct wide_state *s, 
             /* isect_box's order: entry max(z, max(y, max(x, tmin))),
              * exit min(z, min(y, min(x, inf))) (see the file's head). */
             const __m256 tnx = _mm256_mul_ps(
-                _mm256_sub_ps(_mm256_load_ps((const float *)(const void *)(b + near_x)), org_x),
+                _mm256_add_ps(neg_org_x, _mm256_load_ps((const float *)(const void *)(b + near_x))),
                 inv_x);
             const __m256 tfx = _mm256_mul_ps(
-                _mm256_sub_ps(_mm256_load_ps((const float *)(const void *)(b + far_x)), org_x),
+                _mm256_add_ps(neg_org_x, _mm256_load_ps((const float *)(const void *)(b + far_x))),
                 inv_x);
             const __m256 tny = _mm256_mul_ps(
-                _mm256_sub_ps(_mm256_load_ps((const float *)(const void *)(b + near_y)), org_y),
+                _mm256_add_ps(neg_org_y, _mm256_load_ps((const float *)(const void *)(b + near_y))),
                 inv_y);
             const __m256 tfy = _mm256_mul_ps(
-                _mm256_sub_ps(_mm256_load_ps((const float *)(const void *)(b + far_y)), org_y),
+                _mm256_add_ps(neg_org_y, _mm256_load_ps((const float *)(const void *)(b + far_y))),
                 inv_y);
             const __m256 tnz = _mm256_mul_ps(
-                _mm256_sub_ps(_mm256_load_ps((const float *)(const void *)(b + near_z)), org_z),
+                _mm256_add_ps(neg_org_z, _mm256_load_ps((const float *)(const void *)(b + near_z))),
                 inv_z);
             const __m256 tfz = _mm256_mul_ps(
-                _mm256_sub_ps(_mm256_load_ps((const float *)(const void *)(b + far_z)), org_z),
+                _mm256_add_ps(neg_org_z, _mm256_load_ps((const float *)(const void *)(b + far_z))),
                 inv_z);
             const __m256 t0 = _mm256_max_ps(tnz, _mm256_max_ps(tny, _mm256_max_ps(tnx, tmin8)));
             __m256 t1 = _mm256_min_ps(
