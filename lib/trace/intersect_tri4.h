@@ -119,6 +119,12 @@ struct tri4_lanes {
  * The lanes of p (among `valid`, bit l for lane l) that isect_triangle
  * with this t_max might accept; every other lane it rejects.  With out
  * not NULL, also the lanes' float values for isect_triangle_finish.
+ * any_hit (the any-hit walk's leaf, with tri4_lane_test's any_hit): the
+ * early return below, and size, Ax..Cy are not written: the any-hit
+ * lane test computes them for the lane that needs them
+ * (tri4_lane_sheared), so the six sheared vectors die at the edge
+ * functions instead of being spilled around the early return (measured:
+ * six stores per packet) for the rare lane that reaches the finish.
  */
 #if defined(__GNUC__)
 __attribute__((always_inline))
@@ -126,7 +132,7 @@ __attribute__((always_inline))
 static inline unsigned tri4_candidates_lanes_impl(const struct tri4_ray *r,
                                                   const struct tri4_packet *p, unsigned valid,
                                                   float t_max, struct tri4_lanes *out,
-                                                  int early_out)
+                                                  int any_hit)
 {
     /* Unaligned loads: a layout's packets are 32-byte aligned, but a
      * packet elsewhere (a test's, on the stack) need not be; on aligned
@@ -172,12 +178,12 @@ static inline unsigned tri4_candidates_lanes_impl(const struct tri4_ray *r,
      * subtraction that underflows is exact).  So the scalar test's
      * double signs differ as well and it returns 0. */
     const __m128 mixed = _mm_and_ps(any_neg, any_pos);
-    /* early_out (the any-hit walk's leaf): when every lane's signs
+    /* The any-hit walk's leaf: when every lane's signs
      * differ, every lane is refused (a mixed lane is neither kept nor
      * deferred below), and the rest is not computed.  Most packets a
      * shadow ray tests are such misses; the closest-hit walk keeps the
      * branch-free filter. */
-    if (early_out && ((unsigned)_mm_movemask_ps(mixed) & valid) == valid)
+    if (any_hit && ((unsigned)_mm_movemask_ps(mixed) & valid) == valid)
         return 0;
 
     /* Lanes with an edge function of exactly 0: the scalar test's
@@ -210,12 +216,6 @@ static inline unsigned tri4_candidates_lanes_impl(const struct tri4_ray *r,
     keep = _mm_and_ps(keep, _mm_cmplt_ps(abs_det, _mm_set1_ps(INFINITY)));
     const unsigned mask = ((unsigned)_mm_movemask_ps(keep) & valid) | deferred;
     if (out && mask) {
-        /* isect_triangle's size: max(max(|Ax|, |Ay|), max(|Bx|, |By|)),
-         * then max with max(|Cx|, |Cy|); maxps(a, b) is a > b ? a : b. */
-        const __m128 sign = _mm_set1_ps(-0.0f);
-        __m128 size = _mm_max_ps(_mm_max_ps(_mm_andnot_ps(sign, Ax), _mm_andnot_ps(sign, Ay)),
-                                 _mm_max_ps(_mm_andnot_ps(sign, Bx), _mm_andnot_ps(sign, By)));
-        size = _mm_max_ps(size, _mm_max_ps(_mm_andnot_ps(sign, Cx), _mm_andnot_ps(sign, Cy)));
         _mm_storeu_ps(out->U, U);
         _mm_storeu_ps(out->V, V);
         _mm_storeu_ps(out->W, W);
@@ -223,17 +223,27 @@ static inline unsigned tri4_candidates_lanes_impl(const struct tri4_ray *r,
         _mm_storeu_ps(out->Az, Az);
         _mm_storeu_ps(out->Bz, Bz);
         _mm_storeu_ps(out->Cz, Cz);
-        _mm_storeu_ps(out->size, size);
         _mm_storeu_ps(out->t_lo, t_lo);
         _mm_storeu_ps(out->t_hi, t_hi);
         out->deferred = deferred;
-        if (deferred) {
-            _mm_storeu_ps(out->Ax, Ax);
-            _mm_storeu_ps(out->Ay, Ay);
-            _mm_storeu_ps(out->Bx, Bx);
-            _mm_storeu_ps(out->By, By);
-            _mm_storeu_ps(out->Cx, Cx);
-            _mm_storeu_ps(out->Cy, Cy);
+        if (!any_hit) {
+            /* isect_triangle's size: max(max(|Ax|, |Ay|), max(|Bx|,
+             * |By|)), then max with max(|Cx|, |Cy|); maxps(a, b) is a > b
+             * ? a : b. */
+            const __m128 sign = _mm_set1_ps(-0.0f);
+            __m128 size =
+                _mm_max_ps(_mm_max_ps(_mm_andnot_ps(sign, Ax), _mm_andnot_ps(sign, Ay)),
+                           _mm_max_ps(_mm_andnot_ps(sign, Bx), _mm_andnot_ps(sign, By)));
+            size = _mm_max_ps(size, _mm_max_ps(_mm_andnot_ps(sign, Cx), _mm_andnot_ps(sign, Cy)));
+            _mm_storeu_ps(out->size, size);
+            if (deferred) {
+                _mm_storeu_ps(out->Ax, Ax);
+                _mm_storeu_ps(out->Ay, Ay);
+                _mm_storeu_ps(out->Bx, Bx);
+                _mm_storeu_ps(out->By, By);
+                _mm_storeu_ps(out->Cx, Cx);
+                _mm_storeu_ps(out->Cy, Cy);
+            }
         }
     }
     return mask;
@@ -343,6 +353,32 @@ static inline unsigned tri4_before_tmin(const struct trace_ray *ray, const struc
 }
 
 /*
+ * The sheared x, y of lane l's vertices (A[0..5] = Ax, Ay, Bx, By, Cx,
+ * Cy) and isect_triangle's size of them, for the any-hit lane test, whose
+ * filter did not keep them (tri4_candidates_lanes_impl with any_hit).
+ * isect_triangle's float operations on the packet's coordinates: v - org,
+ * then a + s * a_z, each rounded once (no contraction), so the values
+ * the filter had in its lane bit for bit.
+ */
+static inline float tri4_lane_sheared(const struct trace_ray *ray, const struct tri4_packet *p,
+                                      unsigned l, float A[6])
+{
+#if defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#endif
+    for (int i = 0; i < 3; i++) {
+        const float x = p->v[i][ray->kx][l] - ray->org[ray->kx];
+        const float y = p->v[i][ray->ky][l] - ray->org[ray->ky];
+        const float z = p->v[i][ray->kz][l] - ray->org[ray->kz];
+        A[2 * i] = x + ray->sx * z;
+        A[2 * i + 1] = y + ray->sy * z;
+    }
+    const float size = isect_max(isect_max(fabsf(A[0]), fabsf(A[1])),
+                                 isect_max(fabsf(A[2]), fabsf(A[3])));
+    return isect_max(size, isect_max(fabsf(A[4]), fabsf(A[5])));
+}
+
+/*
  * isect_triangle on lane l of p, which tri4_candidates_lanes kept (with
  * a limit at least t_max) and whose floats it wrote to `lanes`: a
  * deferred lane first gets isect_triangle's double-precision edge
@@ -358,15 +394,31 @@ static inline int tri4_lane_test(const struct trace_ray *ray, const struct tri4_
                                  float t_max, float *t, float *u, float *w)
 {
     float U = lanes->U[l], V = lanes->V[l], W = lanes->W[l], det = lanes->det[l];
+    /* The any-hit filter leaves size and the sheared x, y to this lane
+     * (tri4_candidates_lanes_impl); computed when first needed. */
+    float sheared[6];
+    float size = any_hit ? 0.0f : lanes->size[l];
+    int have_size = !any_hit;
     if (lanes->deferred >> l & 1u) {
         /* isect_triangle's sec. 4 step on the filter's sheared floats
          * (the same floats it computes): the edge functions in double,
          * their signs, then its float sign and det tests on the values
          * rounded back.  Its depth-range and box-interval rejections
          * follow below as for any lane. */
-        const double Ax = lanes->Ax[l], Ay = lanes->Ay[l];
-        const double Bx = lanes->Bx[l], By = lanes->By[l];
-        const double Cx = lanes->Cx[l], Cy = lanes->Cy[l];
+        if (any_hit) {
+            size = tri4_lane_sheared(ray, p, l, sheared);
+            have_size = 1;
+        } else {
+            sheared[0] = lanes->Ax[l];
+            sheared[1] = lanes->Ay[l];
+            sheared[2] = lanes->Bx[l];
+            sheared[3] = lanes->By[l];
+            sheared[4] = lanes->Cx[l];
+            sheared[5] = lanes->Cy[l];
+        }
+        const double Ax = sheared[0], Ay = sheared[1];
+        const double Bx = sheared[2], By = sheared[3];
+        const double Cx = sheared[4], Cy = sheared[5];
         const double dU = Cx * By - Cy * Bx;
         const double dV = Ax * Cy - Ay * Cx;
         const double dW = Bx * Ay - By * Ax;
@@ -389,15 +441,23 @@ static inline int tri4_lane_test(const struct trace_ray *ray, const struct tri4_
      * filter kept the lane, so its coordinates are not NaN: the packet
      * holds a triangle with an area (accel_set_packet_lane), and the
      * finish's zero-area test, which would pass, is left out. */
-    if (any_hit)
-        return isect_triangle_occludes_impl(
+    if (any_hit) {
+        /* isect_triangle_occludes_impl with area_known, its short way
+         * first: that needs no size. */
+        if (isect_occludes_short(ray, lanes->t_lo[l], lanes->t_hi[l], t_max))
+            return 1;
+        if (!have_size)
+            size = tri4_lane_sheared(ray, p, l, sheared);
+        float tt, uu, ww;
+        return isect_triangle_finish_impl(
             ray, p->v[0][0][l], p->v[0][1][l], p->v[0][2][l], p->v[1][0][l], p->v[1][1][l],
             p->v[1][2][l], p->v[2][0][l], p->v[2][1][l], p->v[2][2][l], U, V, W, det, Az, Bz,
-            Cz, lanes->size[l], lanes->t_lo[l], lanes->t_hi[l], t_max, 1);
+            Cz, size, lanes->t_lo[l], lanes->t_hi[l], t_max, 1, &tt, &uu, &ww);
+    }
     return isect_triangle_finish_impl(ray, p->v[0][0][l], p->v[0][1][l], p->v[0][2][l],
                                       p->v[1][0][l], p->v[1][1][l], p->v[1][2][l],
                                       p->v[2][0][l], p->v[2][1][l], p->v[2][2][l], U, V, W, det,
-                                      Az, Bz, Cz, lanes->size[l], lanes->t_lo[l],
+                                      Az, Bz, Cz, size, lanes->t_lo[l],
                                       lanes->t_hi[l], t_max, 1, t, u, w);
 }
 
