@@ -432,6 +432,40 @@ static inline void wide8_push(const struct bvh8_node *n, int octant, __m256 hit,
     *cur_count = n->count[l];
 }
 
+/*
+ * wide8_push for an any-hit walk: the hit children in the node's stored
+ * order (lowest lane first), not the octant's.  An any-hit walk ends at
+ * its first hit and, until then, visits every box its interval reaches
+ * whatever the order (its box limit never shrinks), so the order changes
+ * only how soon an occluded ray stops, never the answer; nearest-first
+ * buys little there (SATO, Nah and Manocha 2014, orders any-hit
+ * children by surface area instead), and the stored order saves the
+ * octant's permutation (about a dozen instructions per push).
+ */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void wide8_push_stored(const struct bvh8_node *n, __m256 hit, __m256 t0,
+                                     uint32_t *st_child, uint32_t *st_count, float *st_t,
+                                     uint32_t *sp, uint32_t *cur, uint32_t *cur_count)
+{
+    const unsigned pm = (unsigned)_mm256_movemask_ps(hit);
+    const __m256i gather = _mm256_cvtepu8_epi32(
+        _mm_loadl_epi64((const __m128i *)(const void *)&wide8_compress[pm]));
+    const __m256i child = _mm256_load_si256((const __m256i *)(const void *)n->child);
+    const __m256i count =
+        _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)n->count));
+    _mm256_storeu_si256((__m256i *)(void *)&st_child[*sp],
+                        _mm256_permutevar8x32_epi32(child, gather));
+    _mm256_storeu_si256((__m256i *)(void *)&st_count[*sp],
+                        _mm256_permutevar8x32_epi32(count, gather));
+    _mm256_storeu_ps(&st_t[*sp], _mm256_permutevar8x32_ps(t0, gather));
+    *sp += (uint32_t)__builtin_popcount(pm) - 1u;
+    const unsigned l = (unsigned)__builtin_ctz(pm);
+    *cur = n->child[l];
+    *cur_count = n->count[l];
+}
+
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
@@ -658,8 +692,12 @@ static inline int walk_wide8_ray(const struct bvh4 *wide, struct wide_state *s, 
                     cur = n->child[l];
                     cur_count = n->count[l];
                 } else {
-                    wide8_push(n, octant, hit, t0, order_shift, st_child, st_count, st_t,
-                               &sp, &cur, &cur_count);
+                    if (any_hit)
+                        wide8_push_stored(n, hit, t0, st_child, st_count, st_t, &sp, &cur,
+                                          &cur_count);
+                    else
+                        wide8_push(n, octant, hit, t0, order_shift, st_child, st_count, st_t,
+                                   &sp, &cur, &cur_count);
                     if (prefetch_top) {
                         /* The new stack top, whose subtree comes after
                          * cur's: prefetched now (its bounds, or the
