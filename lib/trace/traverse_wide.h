@@ -217,13 +217,15 @@ static inline int walk_wide4_body(const struct bvh4 *wide, struct wide_state *s,
      * octant that picks the child order. */
     int near_row[3], far_row[3];
     int octant = 0;
-    __m128 org[3], inv[3];
+    /* The origin negated, as in walk_wide8_ray: bound + (-org) is bound
+     * - org bit for bit, with the bound as the addition's memory operand. */
+    __m128 neg_org[3], inv[3];
     for (int k = 0; k < 3; k++) {
         int neg = signbit(ray->inv_dir[k]) != 0;
         near_row[k] = (neg ? 3 + k : k) * (int)sizeof(nodes[0].bounds[0]);
         far_row[k] = (neg ? k : 3 + k) * (int)sizeof(nodes[0].bounds[0]);
         octant |= neg << k;
-        org[k] = _mm_set1_ps(ray->org[k]);
+        neg_org[k] = _mm_set1_ps(-ray->org[k]);
         inv[k] = _mm_set1_ps(ray->inv_dir[k]);
     }
     const __m128 tmin4 = _mm_set1_ps(ray->tmin);
@@ -245,9 +247,9 @@ static inline int walk_wide4_body(const struct bvh4 *wide, struct wide_state *s,
             __m128 t1 = inf4;
             for (int k = 0; k < 3; k++) {
                 const __m128 tn = _mm_mul_ps(
-                    _mm_sub_ps(_mm_load_ps(wide_row(n->bounds, near_row[k])), org[k]), inv[k]);
+                    _mm_add_ps(neg_org[k], _mm_load_ps(wide_row(n->bounds, near_row[k]))), inv[k]);
                 const __m128 tf = _mm_mul_ps(
-                    _mm_sub_ps(_mm_load_ps(wide_row(n->bounds, far_row[k])), org[k]), inv[k]);
+                    _mm_add_ps(neg_org[k], _mm_load_ps(wide_row(n->bounds, far_row[k]))), inv[k]);
                 t0 = _mm_max_ps(tn, t0);
                 t1 = _mm_min_ps(tf, t1);
             }
@@ -476,13 +478,13 @@ static inline int walk_wide8_impl(const struct bvh4 *wide, struct wide_state *s,
     const struct bvh8_node *nodes = wide->nodes8;
     int near_row[3], far_row[3];
     int octant = 0;
-    __m256 org[3], inv[3];
+    __m256 neg_org[3], inv[3]; /* -org: as in walk_wide8_ray */
     for (int k = 0; k < 3; k++) {
         int neg = signbit(ray->inv_dir[k]) != 0;
         near_row[k] = (neg ? 3 + k : k) * (int)sizeof(nodes[0].bounds[0]);
         far_row[k] = (neg ? k : 3 + k) * (int)sizeof(nodes[0].bounds[0]);
         octant |= neg << k;
-        org[k] = _mm256_set1_ps(ray->org[k]);
+        neg_org[k] = _mm256_set1_ps(-ray->org[k]);
         inv[k] = _mm256_set1_ps(ray->inv_dir[k]);
     }
     const __m256 tmin8 = _mm256_set1_ps(ray->tmin);
@@ -509,9 +511,11 @@ static inline int walk_wide8_impl(const struct bvh4 *wide, struct wide_state *s,
             __m256 t1 = inf8;
             for (int k = 0; k < 3; k++) {
                 const __m256 tn = _mm256_mul_ps(
-                    _mm256_sub_ps(_mm256_load_ps(wide_row(n->bounds, near_row[k])), org[k]), inv[k]);
+                    _mm256_add_ps(neg_org[k], _mm256_load_ps(wide_row(n->bounds, near_row[k]))),
+                    inv[k]);
                 const __m256 tf = _mm256_mul_ps(
-                    _mm256_sub_ps(_mm256_load_ps(wide_row(n->bounds, far_row[k])), org[k]), inv[k]);
+                    _mm256_add_ps(neg_org[k], _mm256_load_ps(wide_row(n->bounds, far_row[k]))),
+                    inv[k]);
                 t0 = _mm256_max_ps(tn, t0);
                 t1 = _mm256_min_ps(tf, t1);
             }
