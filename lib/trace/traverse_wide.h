@@ -29,6 +29,8 @@
  * order for the ray's octant (Fuetterling, Lojewski, Pfreundt and Ebert
  * 2017), with no sort; each pushed child keeps its entry distance, so
  * a subtree behind the closest hit so far is still skipped when popped.
+ * The 8-wide single-ray any-hit walk pushes them in stored order instead
+ * (wide8_push_stored says why).
  */
 #include <immintrin.h>
 
