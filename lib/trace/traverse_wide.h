@@ -29,8 +29,8 @@
  * order for the ray's octant (Fuetterling, Lojewski, Pfreundt and Ebert
  * 2017), with no sort; each pushed child keeps its entry distance, so
  * a subtree behind the closest hit so far is still skipped when popped.
- * The 8-wide single-ray any-hit walk pushes them in stored order instead
- * (wide8_push_stored says why).
+ * An any-hit walk (walk_wide8_ray's, walk_wide4_body's) pushes them in
+ * stored order instead (wide8_push_stored says why).
  */
 #include <immintrin.h>
 
@@ -268,7 +268,9 @@ static inline int walk_wide4_body(const struct bvh4 *wide, struct wide_state *s,
                     _mm_storeu_ps(te, t0);
                     /* Push the hit children back to front in the
                      * octant's order, then take the front one. */
-                    const unsigned order = n->order[octant];
+                    /* An any-hit walk: the stored order, lane 0 first
+                     * (wide8_push_stored says why). */
+                    const unsigned order = any_hit ? 0xE4u : n->order[octant];
                     /* Every lane is written, a missed one where the
                      * next hit one will overwrite it: no branch on the
                      * mask (the stack has room for the last writes). */
