@@ -44,24 +44,31 @@
 #include "trace/bvh4_layout.h"
 #include "trace/intersect.h"
 
-/* The per-ray constants of the packet test, set once per ray. */
+/* The per-ray constants of the packet test, set once per ray.  The
+ * origin is held negated: v + (-org) is v - org bit for bit (IEEE 754
+ * defines x - y as x + (-y), zeros and NaN included), and an addition
+ * takes the packet's coordinates as its memory operand, which a
+ * subtraction can only do for the subtrahend: nine loads fewer per
+ * packet in the VEX encoding.  kx, ky, kz are also kept as byte offsets
+ * of the rows of struct tri4_packet's v[i]. */
 struct tri4_ray {
-    __m128 org_x, org_y, org_z; /* org[kx], org[ky], org[kz] */
+    __m128 neg_org_x, neg_org_y, neg_org_z; /* -org[kx], -org[ky], -org[kz] */
     __m128 sx, sy, sz;
     __m128 inv_x, inv_y;        /* inv_dir[kx], inv_dir[ky] */
     __m128 tmin;
-    int kx, ky, kz;
+    size_t off_x, off_y, off_z; /* kx, ky, kz times sizeof p->v[0][0] */
     int neg_x, neg_y;           /* inv_dir[kx] < 0, inv_dir[ky] < 0 (isect_slab) */
 };
 
 static inline void tri4_ray_init(struct tri4_ray *r, const struct trace_ray *ray)
 {
-    r->kx = ray->kx;
-    r->ky = ray->ky;
-    r->kz = ray->kz;
-    r->org_x = _mm_set1_ps(ray->org[ray->kx]);
-    r->org_y = _mm_set1_ps(ray->org[ray->ky]);
-    r->org_z = _mm_set1_ps(ray->org[ray->kz]);
+    const size_t row = sizeof(((const struct tri4_packet *)NULL)->v[0][0]);
+    r->off_x = (size_t)ray->kx * row;
+    r->off_y = (size_t)ray->ky * row;
+    r->off_z = (size_t)ray->kz * row;
+    r->neg_org_x = _mm_set1_ps(-ray->org[ray->kx]);
+    r->neg_org_y = _mm_set1_ps(-ray->org[ray->ky]);
+    r->neg_org_z = _mm_set1_ps(-ray->org[ray->kz]);
     r->sx = _mm_set1_ps(ray->sx);
     r->sy = _mm_set1_ps(ray->sy);
     r->sz = _mm_set1_ps(ray->sz);
@@ -70,6 +77,13 @@ static inline void tri4_ray_init(struct tri4_ray *r, const struct trace_ray *ray
     r->tmin = _mm_set1_ps(ray->tmin);
     r->neg_x = ray->inv_dir[ray->kx] < 0.0f;
     r->neg_y = ray->inv_dir[ray->ky] < 0.0f;
+}
+
+/* Row `off` bytes into vertex i's coordinates of p (tri4_ray's off_x..):
+ * the four lanes' coordinate on one axis. */
+static inline __m128 tri4_row(const struct tri4_packet *p, int i, size_t off)
+{
+    return _mm_loadu_ps((const float *)(const void *)((const char *)p->v[i] + off));
 }
 
 /* isect_slab on four lanes: the near and far ends of one slab, folded
@@ -105,6 +119,12 @@ struct tri4_lanes {
  * The lanes of p (among `valid`, bit l for lane l) that isect_triangle
  * with this t_max might accept; every other lane it rejects.  With out
  * not NULL, also the lanes' float values for isect_triangle_finish.
+ * any_hit (the any-hit walk's leaf, with tri4_lane_test's any_hit): the
+ * early return below, and size, Ax..Cy are not written: the any-hit
+ * lane test computes them for the lane that needs them
+ * (tri4_lane_sheared), so the six sheared vectors die at the edge
+ * functions instead of being spilled around the early return (measured:
+ * six stores per packet) for the rare lane that reaches the finish.
  */
 #if defined(__GNUC__)
 __attribute__((always_inline))
@@ -112,20 +132,20 @@ __attribute__((always_inline))
 static inline unsigned tri4_candidates_lanes_impl(const struct tri4_ray *r,
                                                   const struct tri4_packet *p, unsigned valid,
                                                   float t_max, struct tri4_lanes *out,
-                                                  int early_out)
+                                                  int any_hit)
 {
     /* Unaligned loads: a layout's packets are 32-byte aligned, but a
      * packet elsewhere (a test's, on the stack) need not be; on aligned
      * data they cost what aligned loads do. */
-    const __m128 ax = _mm_sub_ps(_mm_loadu_ps(p->v[0][r->kx]), r->org_x);
-    const __m128 ay = _mm_sub_ps(_mm_loadu_ps(p->v[0][r->ky]), r->org_y);
-    const __m128 az = _mm_sub_ps(_mm_loadu_ps(p->v[0][r->kz]), r->org_z);
-    const __m128 bx = _mm_sub_ps(_mm_loadu_ps(p->v[1][r->kx]), r->org_x);
-    const __m128 by = _mm_sub_ps(_mm_loadu_ps(p->v[1][r->ky]), r->org_y);
-    const __m128 bz = _mm_sub_ps(_mm_loadu_ps(p->v[1][r->kz]), r->org_z);
-    const __m128 cx = _mm_sub_ps(_mm_loadu_ps(p->v[2][r->kx]), r->org_x);
-    const __m128 cy = _mm_sub_ps(_mm_loadu_ps(p->v[2][r->ky]), r->org_y);
-    const __m128 cz = _mm_sub_ps(_mm_loadu_ps(p->v[2][r->kz]), r->org_z);
+    const __m128 ax = _mm_add_ps(r->neg_org_x, tri4_row(p, 0, r->off_x));
+    const __m128 ay = _mm_add_ps(r->neg_org_y, tri4_row(p, 0, r->off_y));
+    const __m128 az = _mm_add_ps(r->neg_org_z, tri4_row(p, 0, r->off_z));
+    const __m128 bx = _mm_add_ps(r->neg_org_x, tri4_row(p, 1, r->off_x));
+    const __m128 by = _mm_add_ps(r->neg_org_y, tri4_row(p, 1, r->off_y));
+    const __m128 bz = _mm_add_ps(r->neg_org_z, tri4_row(p, 1, r->off_z));
+    const __m128 cx = _mm_add_ps(r->neg_org_x, tri4_row(p, 2, r->off_x));
+    const __m128 cy = _mm_add_ps(r->neg_org_y, tri4_row(p, 2, r->off_y));
+    const __m128 cz = _mm_add_ps(r->neg_org_z, tri4_row(p, 2, r->off_z));
 
     const __m128 Ax = _mm_add_ps(ax, _mm_mul_ps(r->sx, az));
     const __m128 Ay = _mm_add_ps(ay, _mm_mul_ps(r->sy, az));
@@ -139,15 +159,17 @@ static inline unsigned tri4_candidates_lanes_impl(const struct tri4_ray *r,
     const __m128 W = _mm_sub_ps(_mm_mul_ps(Bx, Ay), _mm_mul_ps(By, Ax));
 
     const __m128 zero = _mm_setzero_ps();
-    /* Lanes with an edge function of exactly 0: the scalar test's
-     * double-precision fallback decides their signs. */
-    const __m128 on_edge =
-        _mm_or_ps(_mm_or_ps(_mm_cmpeq_ps(U, zero), _mm_cmpeq_ps(V, zero)), _mm_cmpeq_ps(W, zero));
-
-    const __m128 any_neg =
-        _mm_or_ps(_mm_or_ps(_mm_cmplt_ps(U, zero), _mm_cmplt_ps(V, zero)), _mm_cmplt_ps(W, zero));
-    const __m128 any_pos =
-        _mm_or_ps(_mm_or_ps(_mm_cmpgt_ps(U, zero), _mm_cmpgt_ps(V, zero)), _mm_cmpgt_ps(W, zero));
+    /* Some edge function below 0, some above: min(U, V, W) < 0 and
+     * max(U, V, W) > 0, two folds and two compares instead of six
+     * compares and four ors.  minps/maxps return one of their operands,
+     * so a min below 0 is an operand below 0 and a max above 0 one above
+     * 0: a lane found mixed is mixed, NaN operands or not.  Without NaN
+     * the folds are exact, so a lane not found mixed is not mixed; a
+     * lane with a NaN edge function has a NaN det and is kept only when
+     * deferred (below), where tri4_lane_test redoes the signs in double
+     * as isect_triangle does. */
+    const __m128 any_neg = _mm_cmplt_ps(_mm_min_ps(U, _mm_min_ps(V, W)), zero);
+    const __m128 any_pos = _mm_cmpgt_ps(_mm_max_ps(U, _mm_max_ps(V, W)), zero);
     /* Signs that differ strictly: outside, deferred lanes too.  A
      * non-zero float edge function has the sign of its double
      * recomputation: fl(fl(a) - fl(b)) > 0 needs fl(a) > fl(b), hence
@@ -156,13 +178,18 @@ static inline unsigned tri4_candidates_lanes_impl(const struct tri4_ray *r,
      * subtraction that underflows is exact).  So the scalar test's
      * double signs differ as well and it returns 0. */
     const __m128 mixed = _mm_and_ps(any_neg, any_pos);
-    /* early_out (the any-hit walk's leaf): when every lane's signs
+    /* The any-hit walk's leaf: when every lane's signs
      * differ, every lane is refused (a mixed lane is neither kept nor
      * deferred below), and the rest is not computed.  Most packets a
      * shadow ray tests are such misses; the closest-hit walk keeps the
      * branch-free filter. */
-    if (early_out && ((unsigned)_mm_movemask_ps(mixed) & valid) == valid)
+    if (any_hit && ((unsigned)_mm_movemask_ps(mixed) & valid) == valid)
         return 0;
+
+    /* Lanes with an edge function of exactly 0: the scalar test's
+     * double-precision fallback decides their signs. */
+    const __m128 on_edge =
+        _mm_or_ps(_mm_or_ps(_mm_cmpeq_ps(U, zero), _mm_cmpeq_ps(V, zero)), _mm_cmpeq_ps(W, zero));
 
     /* The rejections that do not depend on U, V, W: the sheared depths'
      * range and the ray's interval through the triangle's box.  They
@@ -189,12 +216,6 @@ static inline unsigned tri4_candidates_lanes_impl(const struct tri4_ray *r,
     keep = _mm_and_ps(keep, _mm_cmplt_ps(abs_det, _mm_set1_ps(INFINITY)));
     const unsigned mask = ((unsigned)_mm_movemask_ps(keep) & valid) | deferred;
     if (out && mask) {
-        /* isect_triangle's size: max(max(|Ax|, |Ay|), max(|Bx|, |By|)),
-         * then max with max(|Cx|, |Cy|); maxps(a, b) is a > b ? a : b. */
-        const __m128 sign = _mm_set1_ps(-0.0f);
-        __m128 size = _mm_max_ps(_mm_max_ps(_mm_andnot_ps(sign, Ax), _mm_andnot_ps(sign, Ay)),
-                                 _mm_max_ps(_mm_andnot_ps(sign, Bx), _mm_andnot_ps(sign, By)));
-        size = _mm_max_ps(size, _mm_max_ps(_mm_andnot_ps(sign, Cx), _mm_andnot_ps(sign, Cy)));
         _mm_storeu_ps(out->U, U);
         _mm_storeu_ps(out->V, V);
         _mm_storeu_ps(out->W, W);
@@ -202,17 +223,27 @@ static inline unsigned tri4_candidates_lanes_impl(const struct tri4_ray *r,
         _mm_storeu_ps(out->Az, Az);
         _mm_storeu_ps(out->Bz, Bz);
         _mm_storeu_ps(out->Cz, Cz);
-        _mm_storeu_ps(out->size, size);
         _mm_storeu_ps(out->t_lo, t_lo);
         _mm_storeu_ps(out->t_hi, t_hi);
         out->deferred = deferred;
-        if (deferred) {
-            _mm_storeu_ps(out->Ax, Ax);
-            _mm_storeu_ps(out->Ay, Ay);
-            _mm_storeu_ps(out->Bx, Bx);
-            _mm_storeu_ps(out->By, By);
-            _mm_storeu_ps(out->Cx, Cx);
-            _mm_storeu_ps(out->Cy, Cy);
+        if (!any_hit) {
+            /* isect_triangle's size: max(max(|Ax|, |Ay|), max(|Bx|,
+             * |By|)), then max with max(|Cx|, |Cy|); maxps(a, b) is a > b
+             * ? a : b. */
+            const __m128 sign = _mm_set1_ps(-0.0f);
+            __m128 size =
+                _mm_max_ps(_mm_max_ps(_mm_andnot_ps(sign, Ax), _mm_andnot_ps(sign, Ay)),
+                           _mm_max_ps(_mm_andnot_ps(sign, Bx), _mm_andnot_ps(sign, By)));
+            size = _mm_max_ps(size, _mm_max_ps(_mm_andnot_ps(sign, Cx), _mm_andnot_ps(sign, Cy)));
+            _mm_storeu_ps(out->size, size);
+            if (deferred) {
+                _mm_storeu_ps(out->Ax, Ax);
+                _mm_storeu_ps(out->Ay, Ay);
+                _mm_storeu_ps(out->Bx, Bx);
+                _mm_storeu_ps(out->By, By);
+                _mm_storeu_ps(out->Cx, Cx);
+                _mm_storeu_ps(out->Cy, Cy);
+            }
         }
     }
     return mask;
@@ -322,6 +353,32 @@ static inline unsigned tri4_before_tmin(const struct trace_ray *ray, const struc
 }
 
 /*
+ * The sheared x, y of lane l's vertices (A[0..5] = Ax, Ay, Bx, By, Cx,
+ * Cy) and isect_triangle's size of them, for the any-hit lane test, whose
+ * filter did not keep them (tri4_candidates_lanes_impl with any_hit).
+ * isect_triangle's float operations on the packet's coordinates: v - org,
+ * then a + s * a_z, each rounded once (no contraction), so the values
+ * the filter had in its lane bit for bit.
+ */
+static inline float tri4_lane_sheared(const struct trace_ray *ray, const struct tri4_packet *p,
+                                      unsigned l, float A[6])
+{
+#if defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#endif
+    for (int i = 0; i < 3; i++) {
+        const float x = p->v[i][ray->kx][l] - ray->org[ray->kx];
+        const float y = p->v[i][ray->ky][l] - ray->org[ray->ky];
+        const float z = p->v[i][ray->kz][l] - ray->org[ray->kz];
+        A[2 * i] = x + ray->sx * z;
+        A[2 * i + 1] = y + ray->sy * z;
+    }
+    const float size = isect_max(isect_max(fabsf(A[0]), fabsf(A[1])),
+                                 isect_max(fabsf(A[2]), fabsf(A[3])));
+    return isect_max(size, isect_max(fabsf(A[4]), fabsf(A[5])));
+}
+
+/*
  * isect_triangle on lane l of p, which tri4_candidates_lanes kept (with
  * a limit at least t_max) and whose floats it wrote to `lanes`: a
  * deferred lane first gets isect_triangle's double-precision edge
@@ -337,15 +394,31 @@ static inline int tri4_lane_test(const struct trace_ray *ray, const struct tri4_
                                  float t_max, float *t, float *u, float *w)
 {
     float U = lanes->U[l], V = lanes->V[l], W = lanes->W[l], det = lanes->det[l];
+    /* The any-hit filter leaves size and the sheared x, y to this lane
+     * (tri4_candidates_lanes_impl); computed when first needed. */
+    float sheared[6];
+    float size = any_hit ? 0.0f : lanes->size[l];
+    int have_size = !any_hit;
     if (lanes->deferred >> l & 1u) {
         /* isect_triangle's sec. 4 step on the filter's sheared floats
          * (the same floats it computes): the edge functions in double,
          * their signs, then its float sign and det tests on the values
          * rounded back.  Its depth-range and box-interval rejections
          * follow below as for any lane. */
-        const double Ax = lanes->Ax[l], Ay = lanes->Ay[l];
-        const double Bx = lanes->Bx[l], By = lanes->By[l];
-        const double Cx = lanes->Cx[l], Cy = lanes->Cy[l];
+        if (any_hit) {
+            size = tri4_lane_sheared(ray, p, l, sheared);
+            have_size = 1;
+        } else {
+            sheared[0] = lanes->Ax[l];
+            sheared[1] = lanes->Ay[l];
+            sheared[2] = lanes->Bx[l];
+            sheared[3] = lanes->By[l];
+            sheared[4] = lanes->Cx[l];
+            sheared[5] = lanes->Cy[l];
+        }
+        const double Ax = sheared[0], Ay = sheared[1];
+        const double Bx = sheared[2], By = sheared[3];
+        const double Cx = sheared[4], Cy = sheared[5];
         const double dU = Cx * By - Cy * Bx;
         const double dV = Ax * Cy - Ay * Cx;
         const double dW = Bx * Ay - By * Ax;
@@ -368,15 +441,23 @@ static inline int tri4_lane_test(const struct trace_ray *ray, const struct tri4_
      * filter kept the lane, so its coordinates are not NaN: the packet
      * holds a triangle with an area (accel_set_packet_lane), and the
      * finish's zero-area test, which would pass, is left out. */
-    if (any_hit)
-        return isect_triangle_occludes_impl(
+    if (any_hit) {
+        /* isect_triangle_occludes_impl with area_known, its short way
+         * first: that needs no size. */
+        if (isect_occludes_short(ray, lanes->t_lo[l], lanes->t_hi[l], t_max))
+            return 1;
+        if (!have_size)
+            size = tri4_lane_sheared(ray, p, l, sheared);
+        float tt, uu, ww;
+        return isect_triangle_finish_impl(
             ray, p->v[0][0][l], p->v[0][1][l], p->v[0][2][l], p->v[1][0][l], p->v[1][1][l],
             p->v[1][2][l], p->v[2][0][l], p->v[2][1][l], p->v[2][2][l], U, V, W, det, Az, Bz,
-            Cz, lanes->size[l], lanes->t_lo[l], lanes->t_hi[l], t_max, 1);
+            Cz, size, lanes->t_lo[l], lanes->t_hi[l], t_max, 1, &tt, &uu, &ww);
+    }
     return isect_triangle_finish_impl(ray, p->v[0][0][l], p->v[0][1][l], p->v[0][2][l],
                                       p->v[1][0][l], p->v[1][1][l], p->v[1][2][l],
                                       p->v[2][0][l], p->v[2][1][l], p->v[2][2][l], U, V, W, det,
-                                      Az, Bz, Cz, lanes->size[l], lanes->t_lo[l],
+                                      Az, Bz, Cz, size, lanes->t_lo[l],
                                       lanes->t_hi[l], t_max, 1, t, u, w);
 }
 

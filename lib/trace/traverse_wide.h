@@ -29,6 +29,8 @@
  * order for the ray's octant (Fuetterling, Lojewski, Pfreundt and Ebert
  * 2017), with no sort; each pushed child keeps its entry distance, so
  * a subtree behind the closest hit so far is still skipped when popped.
+ * An any-hit walk (walk_wide8_ray's, walk_wide4_body's) pushes them in
+ * stored order instead (wide8_push_stored says why).
  */
 #include <immintrin.h>
 
@@ -217,13 +219,15 @@ static inline int walk_wide4_body(const struct bvh4 *wide, struct wide_state *s,
      * octant that picks the child order. */
     int near_row[3], far_row[3];
     int octant = 0;
-    __m128 org[3], inv[3];
+    /* The origin negated, as in walk_wide8_ray: bound + (-org) is bound
+     * - org bit for bit, with the bound as the addition's memory operand. */
+    __m128 neg_org[3], inv[3];
     for (int k = 0; k < 3; k++) {
         int neg = signbit(ray->inv_dir[k]) != 0;
         near_row[k] = (neg ? 3 + k : k) * (int)sizeof(nodes[0].bounds[0]);
         far_row[k] = (neg ? k : 3 + k) * (int)sizeof(nodes[0].bounds[0]);
         octant |= neg << k;
-        org[k] = _mm_set1_ps(ray->org[k]);
+        neg_org[k] = _mm_set1_ps(-ray->org[k]);
         inv[k] = _mm_set1_ps(ray->inv_dir[k]);
     }
     const __m128 tmin4 = _mm_set1_ps(ray->tmin);
@@ -245,9 +249,9 @@ static inline int walk_wide4_body(const struct bvh4 *wide, struct wide_state *s,
             __m128 t1 = inf4;
             for (int k = 0; k < 3; k++) {
                 const __m128 tn = _mm_mul_ps(
-                    _mm_sub_ps(_mm_load_ps(wide_row(n->bounds, near_row[k])), org[k]), inv[k]);
+                    _mm_add_ps(neg_org[k], _mm_load_ps(wide_row(n->bounds, near_row[k]))), inv[k]);
                 const __m128 tf = _mm_mul_ps(
-                    _mm_sub_ps(_mm_load_ps(wide_row(n->bounds, far_row[k])), org[k]), inv[k]);
+                    _mm_add_ps(neg_org[k], _mm_load_ps(wide_row(n->bounds, far_row[k]))), inv[k]);
                 t0 = _mm_max_ps(tn, t0);
                 t1 = _mm_min_ps(tf, t1);
             }
@@ -264,7 +268,9 @@ static inline int walk_wide4_body(const struct bvh4 *wide, struct wide_state *s,
                     _mm_storeu_ps(te, t0);
                     /* Push the hit children back to front in the
                      * octant's order, then take the front one. */
-                    const unsigned order = n->order[octant];
+                    /* An any-hit walk: the stored order, lane 0 first
+                     * (wide8_push_stored says why). */
+                    const unsigned order = any_hit ? 0xE4u : n->order[octant];
                     /* Every lane is written, a missed one where the
                      * next hit one will overwrite it: no branch on the
                      * mask (the stack has room for the last writes). */
@@ -432,6 +438,40 @@ static inline void wide8_push(const struct bvh8_node *n, int octant, __m256 hit,
     *cur_count = n->count[l];
 }
 
+/*
+ * wide8_push for an any-hit walk: the hit children in the node's stored
+ * order (lowest lane first), not the octant's.  An any-hit walk ends at
+ * its first hit and, until then, visits every box its interval reaches
+ * whatever the order (its box limit never shrinks), so the order changes
+ * only how soon an occluded ray stops, never the answer; nearest-first
+ * buys little there (SATO, Nah and Manocha 2014, orders any-hit
+ * children by surface area instead), and the stored order saves the
+ * octant's permutation (about a dozen instructions per push).
+ */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void wide8_push_stored(const struct bvh8_node *n, __m256 hit, __m256 t0,
+                                     uint32_t *st_child, uint32_t *st_count, float *st_t,
+                                     uint32_t *sp, uint32_t *cur, uint32_t *cur_count)
+{
+    const unsigned pm = (unsigned)_mm256_movemask_ps(hit);
+    const __m256i gather = _mm256_cvtepu8_epi32(
+        _mm_loadl_epi64((const __m128i *)(const void *)&wide8_compress[pm]));
+    const __m256i child = _mm256_load_si256((const __m256i *)(const void *)n->child);
+    const __m256i count =
+        _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)n->count));
+    _mm256_storeu_si256((__m256i *)(void *)&st_child[*sp],
+                        _mm256_permutevar8x32_epi32(child, gather));
+    _mm256_storeu_si256((__m256i *)(void *)&st_count[*sp],
+                        _mm256_permutevar8x32_epi32(count, gather));
+    _mm256_storeu_ps(&st_t[*sp], _mm256_permutevar8x32_ps(t0, gather));
+    *sp += (uint32_t)__builtin_popcount(pm) - 1u;
+    const unsigned l = (unsigned)__builtin_ctz(pm);
+    *cur = n->child[l];
+    *cur_count = n->count[l];
+}
+
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
@@ -442,13 +482,13 @@ static inline int walk_wide8_impl(const struct bvh4 *wide, struct wide_state *s,
     const struct bvh8_node *nodes = wide->nodes8;
     int near_row[3], far_row[3];
     int octant = 0;
-    __m256 org[3], inv[3];
+    __m256 neg_org[3], inv[3]; /* -org: as in walk_wide8_ray */
     for (int k = 0; k < 3; k++) {
         int neg = signbit(ray->inv_dir[k]) != 0;
         near_row[k] = (neg ? 3 + k : k) * (int)sizeof(nodes[0].bounds[0]);
         far_row[k] = (neg ? k : 3 + k) * (int)sizeof(nodes[0].bounds[0]);
         octant |= neg << k;
-        org[k] = _mm256_set1_ps(ray->org[k]);
+        neg_org[k] = _mm256_set1_ps(-ray->org[k]);
         inv[k] = _mm256_set1_ps(ray->inv_dir[k]);
     }
     const __m256 tmin8 = _mm256_set1_ps(ray->tmin);
@@ -475,9 +515,11 @@ static inline int walk_wide8_impl(const struct bvh4 *wide, struct wide_state *s,
             __m256 t1 = inf8;
             for (int k = 0; k < 3; k++) {
                 const __m256 tn = _mm256_mul_ps(
-                    _mm256_sub_ps(_mm256_load_ps(wide_row(n->bounds, near_row[k])), org[k]), inv[k]);
+                    _mm256_add_ps(neg_org[k], _mm256_load_ps(wide_row(n->bounds, near_row[k]))),
+                    inv[k]);
                 const __m256 tf = _mm256_mul_ps(
-                    _mm256_sub_ps(_mm256_load_ps(wide_row(n->bounds, far_row[k])), org[k]), inv[k]);
+                    _mm256_add_ps(neg_org[k], _mm256_load_ps(wide_row(n->bounds, far_row[k]))),
+                    inv[k]);
                 t0 = _mm256_max_ps(tn, t0);
                 t1 = _mm256_min_ps(tf, t1);
             }
@@ -608,9 +650,13 @@ static inline int walk_wide8_ray(const struct bvh4 *wide, struct wide_state *s, 
         if (any_hit)
             __asm__("" : "+r"(ray));
 #endif
-        const __m256 org_x = _mm256_set1_ps(ray->org[0]);
-        const __m256 org_y = _mm256_set1_ps(ray->org[1]);
-        const __m256 org_z = _mm256_set1_ps(ray->org[2]);
+        /* The origin negated: bound + (-org) is bound - org bit for bit
+         * (IEEE 754's x - y is x + (-y)), and the addition takes the
+         * bound as its memory operand (the subtraction cannot, the bound
+         * being its minuend): six loads fewer per node. */
+        const __m256 neg_org_x = _mm256_set1_ps(-ray->org[0]);
+        const __m256 neg_org_y = _mm256_set1_ps(-ray->org[1]);
+        const __m256 neg_org_z = _mm256_set1_ps(-ray->org[2]);
         const __m256 inv_x = _mm256_set1_ps(ray->inv_dir[0]);
         const __m256 inv_y = _mm256_set1_ps(ray->inv_dir[1]);
         const __m256 inv_z = _mm256_set1_ps(ray->inv_dir[2]);
@@ -624,22 +670,22 @@ static inline int walk_wide8_ray(const struct bvh4 *wide, struct wide_state *s, 
             /* isect_box's order: entry max(z, max(y, max(x, tmin))),
              * exit min(z, min(y, min(x, inf))) (see the file's head). */
             const __m256 tnx = _mm256_mul_ps(
-                _mm256_sub_ps(_mm256_load_ps((const float *)(const void *)(b + near_x)), org_x),
+                _mm256_add_ps(neg_org_x, _mm256_load_ps((const float *)(const void *)(b + near_x))),
                 inv_x);
             const __m256 tfx = _mm256_mul_ps(
-                _mm256_sub_ps(_mm256_load_ps((const float *)(const void *)(b + far_x)), org_x),
+                _mm256_add_ps(neg_org_x, _mm256_load_ps((const float *)(const void *)(b + far_x))),
                 inv_x);
             const __m256 tny = _mm256_mul_ps(
-                _mm256_sub_ps(_mm256_load_ps((const float *)(const void *)(b + near_y)), org_y),
+                _mm256_add_ps(neg_org_y, _mm256_load_ps((const float *)(const void *)(b + near_y))),
                 inv_y);
             const __m256 tfy = _mm256_mul_ps(
-                _mm256_sub_ps(_mm256_load_ps((const float *)(const void *)(b + far_y)), org_y),
+                _mm256_add_ps(neg_org_y, _mm256_load_ps((const float *)(const void *)(b + far_y))),
                 inv_y);
             const __m256 tnz = _mm256_mul_ps(
-                _mm256_sub_ps(_mm256_load_ps((const float *)(const void *)(b + near_z)), org_z),
+                _mm256_add_ps(neg_org_z, _mm256_load_ps((const float *)(const void *)(b + near_z))),
                 inv_z);
             const __m256 tfz = _mm256_mul_ps(
-                _mm256_sub_ps(_mm256_load_ps((const float *)(const void *)(b + far_z)), org_z),
+                _mm256_add_ps(neg_org_z, _mm256_load_ps((const float *)(const void *)(b + far_z))),
                 inv_z);
             const __m256 t0 = _mm256_max_ps(tnz, _mm256_max_ps(tny, _mm256_max_ps(tnx, tmin8)));
             __m256 t1 = _mm256_min_ps(
@@ -654,8 +700,12 @@ static inline int walk_wide8_ray(const struct bvh4 *wide, struct wide_state *s, 
                     cur = n->child[l];
                     cur_count = n->count[l];
                 } else {
-                    wide8_push(n, octant, hit, t0, order_shift, st_child, st_count, st_t,
-                               &sp, &cur, &cur_count);
+                    if (any_hit)
+                        wide8_push_stored(n, hit, t0, st_child, st_count, st_t, &sp, &cur,
+                                          &cur_count);
+                    else
+                        wide8_push(n, octant, hit, t0, order_shift, st_child, st_count, st_t,
+                                   &sp, &cur, &cur_count);
                     if (prefetch_top) {
                         /* The new stack top, whose subtree comes after
                          * cur's: prefetched now (its bounds, or the
