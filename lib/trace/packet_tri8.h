@@ -110,12 +110,22 @@ static inline void tri8_transpose8(const __m256 in[8], __m256 out[8])
 static inline void tri8_lanes_load(const struct trace_ray *rays, unsigned active,
                                    __m256 f[TRI8_F_COUNT], __m256 f_min[2], __m256 f_max[2])
 {
-    const struct trace_ray *first = &rays[__builtin_ctz(active)];
     __m256 lo[8], hi[8];
-    for (int r = 0; r < 8; r++) {
-        const float *ray = (const float *)(const void *)(active >> r & 1u ? &rays[r] : first);
-        lo[r] = _mm256_loadu_ps(ray);
-        hi[r] = _mm256_loadu_ps(ray + 8);
+    if (active == 0xffu) {
+        /* A full packet (the common case): no choice per ray. */
+        for (int r = 0; r < 8; r++) {
+            const float *ray = (const float *)(const void *)&rays[r];
+            lo[r] = _mm256_loadu_ps(ray);
+            hi[r] = _mm256_loadu_ps(ray + 8);
+        }
+    } else {
+        const struct trace_ray *first = &rays[__builtin_ctz(active)];
+        for (int r = 0; r < 8; r++) {
+            const float *ray =
+                (const float *)(const void *)(active >> r & 1u ? &rays[r] : first);
+            lo[r] = _mm256_loadu_ps(ray);
+            hi[r] = _mm256_loadu_ps(ray + 8);
+        }
     }
     f_min[0] = f_max[0] = lo[0];
     f_min[1] = f_max[1] = hi[0];
