@@ -589,7 +589,9 @@ static inline int packet_ia_init(struct packet_state *p, const struct trace_ray 
  * closest-hit packet); on pop, the rays whose box_limit lies before it
  * leave it, as the single walk's pop skips it.  A leaf's closest hits
  * are taken in the lanes (packet_leaf8) and written to a ray's state
- * only where a per-ray step or the end reads it (packet_flush).
+ * only where a per-ray step reads it (packet_flush), and to the caller's
+ * hits at the end.  A ray's state itself is set up only at its first
+ * per-ray step (packet_ready): until then p->s[r] is not read.
  *
  * Rays from several origins (shadow rays from a row of hit points) make
  * the interval wide, and entering inner nodes with every ray then costs
