@@ -103,16 +103,37 @@ static inline void tri8_transpose8(const __m256 in[8], __m256 out[8])
 /* The fields of the rays of `active` in the lanes: f[TRI8_F_...][r] is
  * rays[r]'s field, copied bit for bit (two loads per ray and a
  * transpose instead of one gather per field); a lane without a ray holds
- * the lowest active ray's fields. */
+ * the lowest active ray's fields.  f_min[h] and f_max[h]: lane j holds
+ * minps / maxps over the rays of field 8h + j, from the rays as loaded
+ * (a field's least and greatest over the rays when none is NaN; the
+ * integer fields kx, ky, kz are meaningless there). */
 static inline void tri8_lanes_load(const struct trace_ray *rays, unsigned active,
-                                   __m256 f[TRI8_F_COUNT])
+                                   __m256 f[TRI8_F_COUNT], __m256 f_min[2], __m256 f_max[2])
 {
-    const struct trace_ray *first = &rays[__builtin_ctz(active)];
     __m256 lo[8], hi[8];
-    for (int r = 0; r < 8; r++) {
-        const float *ray = (const float *)(const void *)(active >> r & 1u ? &rays[r] : first);
-        lo[r] = _mm256_loadu_ps(ray);
-        hi[r] = _mm256_loadu_ps(ray + 8);
+    if (active == 0xffu) {
+        /* A full packet (the common case): no choice per ray. */
+        for (int r = 0; r < 8; r++) {
+            const float *ray = (const float *)(const void *)&rays[r];
+            lo[r] = _mm256_loadu_ps(ray);
+            hi[r] = _mm256_loadu_ps(ray + 8);
+        }
+    } else {
+        const struct trace_ray *first = &rays[__builtin_ctz(active)];
+        for (int r = 0; r < 8; r++) {
+            const float *ray =
+                (const float *)(const void *)(active >> r & 1u ? &rays[r] : first);
+            lo[r] = _mm256_loadu_ps(ray);
+            hi[r] = _mm256_loadu_ps(ray + 8);
+        }
+    }
+    f_min[0] = f_max[0] = lo[0];
+    f_min[1] = f_max[1] = hi[0];
+    for (int r = 1; r < 8; r++) {
+        f_min[0] = _mm256_min_ps(f_min[0], lo[r]);
+        f_max[0] = _mm256_max_ps(f_max[0], lo[r]);
+        f_min[1] = _mm256_min_ps(f_min[1], hi[r]);
+        f_max[1] = _mm256_max_ps(f_max[1], hi[r]);
     }
     tri8_transpose8(lo, f);
     tri8_transpose8(hi, f + 8);

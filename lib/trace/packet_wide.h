@@ -80,10 +80,42 @@ struct packet_state {
     int ia_octant;                  /* the rays' common octant */
     int ia_row_near[3], ia_row_far[3]; /* its near and far rows, byte offsets */
     unsigned r4_ready;              /* packet_walk8_ia: the rays whose s[r].r4 is set up */
+    /* The packet's arguments, for a ray's state set up at its first use
+     * (packet_ready): the interval walk keeps most rays in the lanes
+     * from start to end, and never needs their states. */
+    const struct trace_ray *rays;
+    const float *t_max;
+    struct trace_hit *hits;
+    int any_hit;
+    unsigned s_ready;    /* the rays whose s[r] is set up */
+    uint64_t node_tests; /* tests not counted in a ray's state (packet_walk8_ia) */
 #endif
 };
 
 #if defined(__AVX__)
+/* Ray r's state, set up as walk_wide sets it (no hit, the limits of its
+ * t_max) at its first use; a hit taken in the lanes before that is in
+ * the lanes only (dirty: packet_flush writes it). */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline struct wide_state *packet_ready(struct packet_state *p, unsigned r)
+{
+    struct wide_state *s = &p->s[r];
+    if (!(p->s_ready >> r & 1u)) {
+        p->s_ready |= 1u << r;
+        s->ray = &p->rays[r];
+        s->any_hit = p->any_hit;
+        s->hit = p->any_hit ? NULL : &p->hits[r];
+        s->found = 0;
+        s->best = p->t_max[r];
+        s->box_limit = p->t_max[r] * ISECT_BOX_FAR_SCALE; /* as walk_wide */
+        s->node_tests = 0;
+        s->triangle_tests = 0;
+    }
+    return s;
+}
+
 /* A packet hits a triangle: walk_leaf's limit and hit rule for ray r
  * (wide_leaf_impl), t, u, v the triangle test's.  Returns 1 when an
  * any-hit ray has its hit. */
@@ -150,7 +182,7 @@ static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_pa
                                     uint32_t first, uint32_t count, unsigned rays, int any_hit)
 {
     if (!p->t8_ready) {
-        const struct trace_ray *r0 = p->s[__builtin_ctz(p->lanes8)].ray;
+        const struct trace_ray *r0 = &p->rays[__builtin_ctz(p->lanes8)];
         tri8_rays_init(&p->t8, p->lane_f, r0->kx, r0->ky, r0->kz);
         p->t8_ready = 1;
     }
@@ -215,7 +247,7 @@ static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_pa
             }
             for (unsigned m = lanes; m; m &= m - 1u) {
                 const unsigned r = (unsigned)__builtin_ctz(m);
-                struct wide_state *s = &p->s[r];
+                struct wide_state *s = packet_ready(p, r);
                 float t, u, w;
                 if (res.hit >> r & 1u) {
                     t = res_t[r];
@@ -272,7 +304,8 @@ static inline void packet_box4(const struct bvh4_node *n, struct packet_state *p
 }
 
 #if defined(__AVX__)
-/* Ray r against the eight children of n: walk_wide8's operations. */
+/* Ray r against the eight children of n: walk_wide8's operations (the
+ * caller counts the tests). */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
@@ -280,7 +313,7 @@ static inline void packet_box8_rows(const struct bvh8_node *n, struct packet_sta
                                     unsigned r, const int near_row[3], const int far_row[3],
                                     __m256 *rays, __m256 *t_min)
 {
-    const struct trace_ray *ray = p->s[r].ray;
+    const struct trace_ray *ray = &p->rays[r];
     __m256 t0 = _mm256_set1_ps(ray->tmin);
     __m256 t1 = _mm256_set1_ps(INFINITY);
     for (int k = 0; k < 3; k++) {
@@ -296,7 +329,6 @@ static inline void packet_box8_rows(const struct bvh8_node *n, struct packet_sta
     t1 = _mm256_mul_ps(t1, _mm256_set1_ps(ISECT_BOX_FAR_SCALE));
     t1 = _mm256_min_ps(t1, _mm256_set1_ps(p->box_limit[r]));
     const __m256 in = _mm256_cmp_ps(t0, t1, _CMP_LE_OQ);
-    p->s[r].node_tests += 8;
     *rays = _mm256_or_ps(*rays,
                          _mm256_and_ps(in, _mm256_castsi256_ps(_mm256_set1_epi32((int)(1u << r)))));
     *t_min = _mm256_min_ps(*t_min, _mm256_blendv_ps(_mm256_set1_ps(INFINITY), t0, in));
@@ -315,6 +347,7 @@ static inline void packet_box8(const struct bvh8_node *n, struct packet_state *p
                              p->near_row[r][2] * size};
     const int far_row[3] = {p->far_row[r][0] * size, p->far_row[r][1] * size,
                             p->far_row[r][2] * size};
+    p->s[r].node_tests += 8;
     packet_box8_rows(n, p, r, near_row, far_row, rays, t_min);
 }
 #endif
@@ -484,7 +517,7 @@ static inline float packet_hmax(__m256 v)
  * least each ray's exit: a child that one ray's own test enters passes.
  */
 static inline int packet_ia_init(struct packet_state *p, const struct trace_ray *rays,
-                                 unsigned active)
+                                 unsigned active, const __m256 f_min[2], const __m256 f_max[2])
 {
     /* The rays' fields in the lanes (packet_run: a lane without a ray
      * holds the first ray's, never read into an answer: masked by the
@@ -494,7 +527,6 @@ static inline int packet_ia_init(struct packet_state *p, const struct trace_ray 
     const __m256 inf = _mm256_set1_ps(INFINITY);
     __m256 ok = _mm256_cmp_ps(_mm256_setzero_ps(), _mm256_setzero_ps(), _CMP_EQ_OQ);
     int octant = 0;
-    p->ia_masks = 0;
     for (int k = 0; k < 3; k++) {
         const __m256 o = p->lane_f[TRI8_F_ORG + k];
         const __m256 i = p->lane_f[TRI8_F_INV + k];
@@ -508,22 +540,33 @@ static inline int packet_ia_init(struct packet_state *p, const struct trace_ray 
         if ((unsigned)_mm256_movemask_ps(i) != (neg ? 0xffu : 0u))
             return 0;
         octant |= neg << k;
-        const float o_lo = packet_hmin(o), o_hi = packet_hmax(o);
-        const float i_lo = packet_hmin(i), i_hi = packet_hmax(i);
-        p->ia_o_near[k] = _mm256_set1_ps(neg ? o_lo : o_hi);
-        p->ia_o_far[k] = _mm256_set1_ps(neg ? o_hi : o_lo);
-        p->ia_i_lo[k] = _mm256_set1_ps(i_lo);
-        p->ia_i_hi[k] = _mm256_set1_ps(i_hi);
+        /* The least and greatest over the rays, broadcast
+         * (tri8_lanes_load's f_min, f_max: field F in lane F % 8 of
+         * half F / 8).  Only read when every value is finite (ok), where
+         * min and max do not depend on the order of the rays but for
+         * the sign of a zero, which no comparison sees. */
+        const int fi = TRI8_F_INV + k;
+        const __m256i at_o = _mm256_set1_epi32(TRI8_F_ORG + k);
+        const __m256i at_i = _mm256_set1_epi32(fi % 8);
+        const __m256 o_lo = _mm256_permutevar8x32_ps(f_min[0], at_o);
+        const __m256 o_hi = _mm256_permutevar8x32_ps(f_max[0], at_o);
+        p->ia_o_near[k] = neg ? o_lo : o_hi;
+        p->ia_o_far[k] = neg ? o_hi : o_lo;
+        p->ia_i_lo[k] = _mm256_permutevar8x32_ps(f_min[fi / 8], at_i);
+        p->ia_i_hi[k] = _mm256_permutevar8x32_ps(f_max[fi / 8], at_i);
         p->ia_row_near[k] = (neg ? 3 + k : k) * (int)sizeof(((struct bvh8_node *)0)->bounds[0]);
         p->ia_row_far[k] = (neg ? k : 3 + k) * (int)sizeof(((struct bvh8_node *)0)->bounds[0]);
-        p->ia_masks |= o_lo != o_hi;
     }
     const __m256 tmin = p->lane_f[TRI8_F_TMIN];
     ok = _mm256_and_ps(ok, _mm256_cmp_ps(tmin, tmin, _CMP_ORD_Q));
     if ((unsigned)_mm256_movemask_ps(ok) != 0xffu)
         return 0;
+    /* Rays from more than one origin: o_lo != o_hi on an axis. */
+    p->ia_masks =
+        (_mm256_movemask_ps(_mm256_cmp_ps(f_min[0], f_max[0], _CMP_NEQ_UQ)) & 7) != 0;
     p->ia_octant = octant;
-    p->ia_tmin = _mm256_set1_ps(packet_hmin(tmin));
+    p->ia_tmin = _mm256_permutevar8x32_ps(f_min[TRI8_F_TMIN / 8],
+                                          _mm256_set1_epi32(TRI8_F_TMIN % 8));
     return 1;
 }
 
@@ -546,7 +589,9 @@ static inline int packet_ia_init(struct packet_state *p, const struct trace_ray 
  * closest-hit packet); on pop, the rays whose box_limit lies before it
  * leave it, as the single walk's pop skips it.  A leaf's closest hits
  * are taken in the lanes (packet_leaf8) and written to a ray's state
- * only where a per-ray step or the end reads it (packet_flush).
+ * only where a per-ray step reads it (packet_flush), and to the caller's
+ * hits at the end.  A ray's state itself is set up only at its first
+ * per-ray step (packet_ready): until then p->s[r] is not read.
  *
  * Rays from several origins (shadow rays from a row of hit points) make
  * the interval wide, and entering inner nodes with every ray then costs
@@ -567,7 +612,6 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
 {
     struct packet_entry stack[WIDE_STACK];
     const struct bvh8_node *nodes = wide->nodes8;
-    const unsigned first = (unsigned)__builtin_ctz(active);
     const int octant = p->ia_octant;
     const int *near_row = p->ia_row_near, *far_row = p->ia_row_far;
     const __m256 inf8 = _mm256_set1_ps(INFINITY);
@@ -577,7 +621,7 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
      * them). */
     __m256 bl = _mm256_loadu_ps(p->box_limit);
     __m256 limit_hi = _mm256_set1_ps(packet_hmax(bl));
-    uint64_t node_tests = 0; /* the interval and lane tests, counted for the first ray */
+    uint64_t node_tests = 0; /* the interval and lane tests and the rays' own */
     uint32_t sp = 0;
     uint32_t cur = 0, cur_count = 0;
     unsigned rays = active;
@@ -592,6 +636,7 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
             }
             for (unsigned m = single; m; m &= m - 1u) {
                 const unsigned r = (unsigned)__builtin_ctz(m);
+                packet_ready(p, r);
                 if (p->dirty >> r & 1u)
                     packet_flush(p, r);
                 if (!(p->r4_ready >> r & 1u)) {
@@ -643,6 +688,7 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                 for (unsigned m = rays; m; m &= m - 1u)
                     packet_box8_rows(n, p, (unsigned)__builtin_ctz(m), near_row, far_row, &in,
                                      &tm);
+                node_tests += 8u * (unsigned)__builtin_popcount(rays);
                 _mm256_storeu_ps((float *)lane_rays, in);
                 _mm256_storeu_ps(t_min, tm);
                 push = (unsigned)_mm256_movemask_ps(
@@ -730,8 +776,17 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
         }
         for (;;) {
             if (sp == 0) {
-                p->s[first].node_tests += node_tests;
-                packet_flush_all(p);
+                p->node_tests += node_tests;
+                /* The hits taken in the lanes, straight to the caller's
+                 * hits: no state reads them after the walk. */
+                for (unsigned m = p->dirty; m; m &= m - 1u) {
+                    const unsigned r = (unsigned)__builtin_ctz(m);
+                    struct trace_hit *h = &p->hits[r];
+                    h->t = p->best[r];
+                    h->u = p->hit_u[r];
+                    h->v = p->hit_v[r];
+                    h->prim = p->hit_prim[r];
+                }
                 return done;
             }
             sp--;
@@ -776,44 +831,41 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
         return result;
     }
     struct packet_state p;
-#if defined(__AVX__)
-    _mm256_storeu_ps(p.box_limit, _mm256_set1_ps(-INFINITY));
-    _mm256_storeu_ps(p.best, _mm256_set1_ps(INFINITY));
-    _mm256_storeu_ps(p.hit_u, _mm256_setzero_ps());
-    _mm256_storeu_ps(p.hit_v, _mm256_setzero_ps());
-    _mm256_storeu_ps((float *)p.hit_prim, _mm256_setzero_ps());
-    p.found = 0;
-    p.dirty = 0;
-#endif
-    /* Lane by lane with a constant count (unrolled: each state's fields
-     * at fixed offsets) rather than over the bits of active. */
-    for (unsigned r = 0; r < TRACE_PACKET; r++) {
-        if (!(active >> r & 1u))
-            continue;
-        struct wide_state *s = &p.s[r];
-        s->ray = &rays[r];
-        s->any_hit = any_hit;
-        s->hit = any_hit ? NULL : &hits[r];
-        s->found = 0;
-        s->best = t_max[r];
-        s->box_limit = t_max[r] * ISECT_BOX_FAR_SCALE; /* as walk_wide */
-        s->node_tests = 0;
-        s->triangle_tests = 0;
-#if defined(__AVX__)
-        p.limit[r] = t_max[r];
-        p.box_limit[r] = s->box_limit;
-        p.best[r] = t_max[r];
-#endif
-    }
-
     unsigned done;
     int ia = 0;
 #if defined(__AVX__)
     {
+        /* Each ray's limit, best and box_limit in the lanes, as
+         * packet_ready sets its state (a lane without a ray: best +inf,
+         * box_limit -inf, limit 0). */
+        const __m256i bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+        const __m256i lanes =
+            _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32((int)active), bit), bit);
+        const __m256 t = _mm256_maskload_ps(t_max, lanes);
+        const __m256 in = _mm256_castsi256_ps(lanes);
+        _mm256_storeu_ps(p.limit, t);
+        _mm256_storeu_ps(p.best, _mm256_blendv_ps(_mm256_set1_ps(INFINITY), t, in));
+        _mm256_storeu_ps(p.box_limit,
+                         _mm256_blendv_ps(_mm256_set1_ps(-INFINITY),
+                                          _mm256_mul_ps(t, _mm256_set1_ps(ISECT_BOX_FAR_SCALE)),
+                                          in));
+        _mm256_storeu_ps(p.hit_u, _mm256_setzero_ps());
+        _mm256_storeu_ps(p.hit_v, _mm256_setzero_ps());
+        _mm256_storeu_ps((float *)p.hit_prim, _mm256_setzero_ps());
+        p.found = 0;
+        p.dirty = 0;
+        p.rays = rays;
+        p.t_max = t_max;
+        p.hits = hits;
+        p.any_hit = any_hit;
+        p.s_ready = 0;
+        p.node_tests = 0;
+
         /* The rays' fields in the lanes, and those with the first
          * ray's kx, ky, kz (a lane without a ray copies the first ray:
          * masked by active). */
-        tri8_lanes_load(rays, active, p.lane_f);
+        __m256 f_min[2], f_max[2];
+        tri8_lanes_load(rays, active, p.lane_f, f_min, f_max);
         const struct trace_ray *r0 = &rays[__builtin_ctz(active)];
         const __m256i same = _mm256_and_si256(
             _mm256_and_si256(
@@ -831,10 +883,28 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
         /* The interval walk sets up a ray's leaf constants (r4) at its
          * first leaf outside the eight-ray test. */
         p.r4_ready = 0;
-        ia = wide->width == 8 && hybrid == 0 && packet_ia_init(&p, rays, active);
+        ia = wide->width == 8 && hybrid == 0 && packet_ia_init(&p, rays, active, f_min, f_max);
     }
 #endif
     if (!ia) {
+        /* Lane by lane with a constant count (unrolled: each state's
+         * fields at fixed offsets) rather than over the bits of active. */
+        for (unsigned r = 0; r < TRACE_PACKET; r++) {
+            if (!(active >> r & 1u))
+                continue;
+            struct wide_state *s = &p.s[r];
+            s->ray = &rays[r];
+            s->any_hit = any_hit;
+            s->hit = any_hit ? NULL : &hits[r];
+            s->found = 0;
+            s->best = t_max[r];
+            s->box_limit = t_max[r] * ISECT_BOX_FAR_SCALE; /* as walk_wide */
+            s->node_tests = 0;
+            s->triangle_tests = 0;
+        }
+#if defined(__AVX__)
+        p.s_ready = active;
+#endif
         for (unsigned m = active; m; m &= m - 1u) {
             const unsigned r = (unsigned)__builtin_ctz(m);
             const struct trace_ray *ray = &rays[r];
@@ -857,12 +927,16 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
     else
 #endif
         done = packet_walk(wide, &p, active, hybrid, 4);
+    unsigned counted = active;
 #if defined(__AVX__)
-    if (counters)
+    counted = p.s_ready;
+    if (counters) {
         counters->triangle_tests += p.triangle_tests;
+        counters->node_tests += p.node_tests;
+    }
 #endif
     if (counters) {
-        for (unsigned m = active; m; m &= m - 1u) {
+        for (unsigned m = counted; m; m &= m - 1u) {
             const unsigned r = (unsigned)__builtin_ctz(m);
             counters->node_tests += p.s[r].node_tests;
             counters->triangle_tests += p.s[r].triangle_tests;
