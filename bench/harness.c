@@ -88,9 +88,9 @@ int bench_accel_build_pool(struct bench_accel *acc, const struct bench_mesh *mes
     free(boxes);
     if (rc)
         return -1;
-    acc->tri = accel_gather_triangles(&acc->bvh, mesh->positions, mesh->indices);
+    acc->tri = accel_gather_triangles_pool(&acc->bvh, mesh->positions, mesh->indices, pool);
     if (!acc->tri ||
-        accel_collapse_wide(&acc->wide, &acc->bvh, acc->tri, bench_layout_width())) {
+        accel_collapse_wide_pool(&acc->wide, &acc->bvh, acc->tri, bench_layout_width(), pool)) {
         rt_free(acc->tri);
         bvh_release(&acc->bvh);
         memset(acc, 0, sizeof(*acc));

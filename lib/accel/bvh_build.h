@@ -121,4 +121,12 @@ double accel_sah_cost(const struct bvh *bvh, float c_trav, float c_isect);
 float *accel_gather_triangles(const struct bvh *bvh, const float *positions,
                               const uint32_t *indices);
 
+/* accel_gather_triangles with the slots shared between the threads of
+ * pool (base/pool.h; NULL or a one-thread pool: the calling thread
+ * alone); the same floats on any pool.  Uses the pool for the duration
+ * of the call. */
+struct rt_pool;
+float *accel_gather_triangles_pool(const struct bvh *bvh, const float *positions,
+                                   const uint32_t *indices, struct rt_pool *pool);
+
 #endif

@@ -6,8 +6,11 @@
  *
  * Three steps: per binary node, the leaf slots its subtree covers (to
  * find subtrees small enough to become one packet leaf); the greedy
- * collapse into a width-generic scratch node; the final nodes (with the
- * per-octant child order) and packets in one 64-byte aligned block.
+ * collapse into a width-generic scratch node, level by level; the final
+ * nodes (with the per-octant child order) and packets in one 64-byte
+ * aligned block.  Given a pool, the last two steps share their per-node
+ * work between its threads, with the same bytes as on one thread
+ * (struct collapse).
  */
 #include "trace/bvh4_layout.h"
 
@@ -16,6 +19,8 @@
 #include <string.h>
 
 #include "base/alloc.h"
+#include "base/atomic.h"
+#include "base/pool.h"
 #include "trace/intersect.h"
 
 #define MAX_WIDTH 8
@@ -28,6 +33,7 @@ struct scratch_node {
     uint32_t child[MAX_WIDTH];
     uint32_t count[MAX_WIDTH];
     int lanes;
+    uint32_t inner; /* bit l: lane l is an inner child */
 };
 
 static float node_area(const struct bvh_node *n)
@@ -305,14 +311,159 @@ static void fill_packet(struct tri4_packet *p, const float *tri, const uint32_t 
     }
 }
 
-int accel_collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *tri,
-                        uint32_t width)
+/* The collapse's shared state.  The wide nodes are numbered breadth
+ * first (a node's inner lanes get the next numbers, in lane order) and
+ * the packets in node order, then lane order: the serial queue's order.
+ * Both numberings are made level by level on the calling thread; the work
+ * per node around them (the greedy gather before, the node and its
+ * packets after) depends on nothing but the node, so the pool shares it
+ * out in chunks of consecutive nodes and the bytes written are the same
+ * on any number of threads. */
+struct collapse {
+    const struct bvh *bvh;
+    const float *tri;
+    uint32_t width;
+    const uint32_t *first;
+    const uint32_t *span;
+    struct scratch_node *scratch;
+    const uint32_t *todo;
+    /* The nodes of the task the pool runs, [begin, end), in chunks. */
+    uint32_t begin;
+    uint32_t end;
+    uint32_t chunk;
+    uint32_t next; /* atomic: the next chunk */
+    char *base;
+    struct tri4_packet *packets;
+    uint32_t *source;
+    uint32_t *packet_slot;
+};
+
+/* A level of at least this many wide nodes has its gather run on the
+ * pool; smaller levels (the top of the tree) cost less than waking the
+ * workers.  The write of nodes and packets takes the pool from the same
+ * count of nodes. */
+#define COLLAPSE_PARALLEL_MIN 512u
+/* Nodes per chunk handed out: large enough that the atomic counter is
+ * not contended, small enough that the chunks balance between threads. */
+#define COLLAPSE_CHUNK 256u
+
+/* Scratch node w's lanes from binary inner node todo[w], each lane's
+ * triangle count (0 for an inner lane) and the mask of inner lanes. */
+static void gather_node(const struct collapse *c, uint32_t w)
+{
+    struct scratch_node *s = &c->scratch[w];
+    s->lanes = gather(c->bvh, c->span, c->todo[w], c->width, s->source);
+    s->inner = 0;
+    for (int l = 0; l < s->lanes; l++) {
+        uint32_t i = s->source[l];
+        if (!is_leaf_lane(c->bvh, c->span, i)) {
+            s->inner |= 1u << l;
+            s->count[l] = 0;
+            continue;
+        }
+        s->count[l] = c->bvh->nodes[i].count ? c->bvh->nodes[i].count : c->span[i];
+    }
+}
+
+/* Numbers the children of level [begin, end): inner lanes get the next
+ * wide nodes (appended to todo), leaf lanes the next packets (or, for
+ * range leaves, their first leaf slot). */
+static void number_level(const struct collapse *c, uint32_t begin, uint32_t end,
+                         uint32_t *todo, uint32_t *count, uint32_t *packets)
+{
+    for (uint32_t w = begin; w < end; w++) {
+        struct scratch_node *s = &c->scratch[w];
+        for (int l = 0; l < s->lanes; l++) {
+            if (s->inner >> l & 1u) {
+                todo[*count] = s->source[l];
+                s->child[l] = (*count)++;
+            } else if (!c->tri) {
+                s->child[l] = c->first[s->source[l]];
+            } else {
+                s->child[l] = *packets; /* first packet; slots from first[i] */
+                *packets += (s->count[l] + 3) / 4;
+            }
+        }
+    }
+}
+
+/* Wide node w in its layout, its packets and its binary sources. */
+static void write_node(const struct collapse *c, uint32_t w)
+{
+    const struct scratch_node *s = &c->scratch[w];
+    const uint32_t width = c->width;
+    for (uint32_t l = 0; l < width; l++)
+        c->source[width * w + l] = (int)l < s->lanes ? s->source[l] : UINT32_MAX;
+    for (int l = 0; l < s->lanes && c->tri; l++) {
+        if (s->inner >> l & 1u)
+            continue;
+        uint32_t slot = c->first[s->source[l]];
+        for (uint32_t j = 0; j < s->count[l]; j += 4) {
+            uint32_t p = s->child[l] + j / 4;
+            uint32_t n = s->count[l] - j < 4 ? s->count[l] - j : 4;
+            c->packet_slot[p] = slot + j;
+            fill_packet(&c->packets[p], c->tri, c->bvh->prim_index, slot + j, n);
+        }
+    }
+    if (width == 4)
+        write_node4((struct bvh4_node *)(void *)c->base + w, c->bvh, s);
+    else
+        write_node8((struct bvh8_node *)(void *)c->base + w, c->bvh, s);
+}
+
+/* Runs step(c, w) for w in [c->begin, c->end), chunks taken in turn
+ * from the shared counter. */
+static void run_chunks(struct collapse *c, void (*step)(const struct collapse *, uint32_t))
+{
+    for (;;) {
+        uint32_t k = rt_atomic_fetch_add_relaxed(&c->next, 1u);
+        uint64_t lo = (uint64_t)c->begin + (uint64_t)k * c->chunk;
+        if (lo >= c->end)
+            return;
+        uint32_t hi = lo + c->chunk < c->end ? (uint32_t)(lo + c->chunk) : c->end;
+        for (uint32_t w = (uint32_t)lo; w < hi; w++)
+            step(c, w);
+    }
+}
+
+static void level_task(void *arg, int worker)
+{
+    (void)worker;
+    run_chunks(arg, gather_node);
+}
+
+static void write_task(void *arg, int worker)
+{
+    (void)worker;
+    run_chunks(arg, write_node);
+}
+
+/* step over [begin, end): on the pool when the range is large enough. */
+static void for_nodes(struct collapse *c, struct rt_pool *pool, uint32_t begin, uint32_t end,
+                      rt_task_fn task, void (*step)(const struct collapse *, uint32_t))
+{
+    if (!pool || end - begin < COLLAPSE_PARALLEL_MIN) {
+        for (uint32_t w = begin; w < end; w++)
+            step(c, w);
+        return;
+    }
+    c->begin = begin;
+    c->end = end;
+    c->chunk = COLLAPSE_CHUNK;
+    c->next = 0;
+    rt_pool_run(pool, task, c);
+}
+
+int accel_collapse_wide_pool(struct bvh4 *out, const struct bvh *bvh, const float *tri,
+                             uint32_t width, struct rt_pool *pool)
 {
     memset(out, 0, sizeof(*out));
     if (width != 4 && width != 8)
         return -1;
     if (bvh->node_count == 0)
         return 0;
+    if (rt_pool_threads(pool) < 2)
+        pool = NULL;
     /* Every wide node but the root consumes a binary inner node, so
      * there are at most (node_count - 1) / 2 + 1 of them. */
     uint32_t cap = (bvh->node_count - 1) / 2 + 1;
@@ -331,39 +482,31 @@ int accel_collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *tr
      * the binary subtree's boxes cull most of them. */
     if (!tri)
         memset(span, 0, bvh->node_count * sizeof(uint32_t));
+    struct collapse c;
+    memset(&c, 0, sizeof(c));
+    c.bvh = bvh;
+    c.tri = tri;
+    c.width = width;
+    c.first = first;
+    c.span = span;
+    c.scratch = scratch;
+    c.todo = todo;
     uint32_t count = 1;
     uint32_t packets = 0;
     if (is_leaf_lane(bvh, span, 0)) {
         /* One leaf under the root: the root's one lane. */
         scratch[0].lanes = 1;
         scratch[0].source[0] = 0;
+        scratch[0].inner = 0;
+        scratch[0].count[0] = bvh->nodes[0].count ? bvh->nodes[0].count : span[0];
+        number_level(&c, 0, 1, todo, &count, &packets);
     } else {
         todo[0] = 0;
-        for (uint32_t w = 0; w < count; w++) {
-            struct scratch_node *s = &scratch[w];
-            s->lanes = gather(bvh, span, todo[w], width, s->source);
-            for (int l = 0; l < s->lanes; l++) {
-                if (!is_leaf_lane(bvh, span, s->source[l])) {
-                    todo[count] = s->source[l];
-                    s->child[l] = count++;
-                }
-            }
-        }
-    }
-    for (uint32_t w = 0; w < count; w++) {
-        struct scratch_node *s = &scratch[w];
-        for (int l = 0; l < s->lanes; l++) {
-            uint32_t i = s->source[l];
-            if (!is_leaf_lane(bvh, span, i))
-                continue;
-            s->count[l] = bvh->nodes[i].count ? bvh->nodes[i].count : span[i];
-            if (!tri) {
-                /* Range leaves (the top level): the first leaf slot. */
-                s->child[l] = first[i];
-                continue;
-            }
-            s->child[l] = packets; /* first packet; slots from first[i] */
-            packets += (s->count[l] + 3) / 4;
+        for (uint32_t begin = 0; begin < count;) {
+            uint32_t end = count;
+            for_nodes(&c, pool, begin, end, level_task, gather_node);
+            number_level(&c, begin, end, todo, &count, &packets);
+            begin = end;
         }
     }
     size_t node_size = width == 4 ? sizeof(struct bvh4_node) : sizeof(struct bvh8_node);
@@ -374,26 +517,11 @@ int accel_collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *tr
     if (!base || !source || !packet_slot)
         goto fail;
     struct tri4_packet *pk = (struct tri4_packet *)(void *)(base + node_bytes);
-    for (uint32_t w = 0; w < count; w++) {
-        struct scratch_node *s = &scratch[w];
-        for (uint32_t l = 0; l < width; l++)
-            source[width * w + l] = (int)l < s->lanes ? s->source[l] : UINT32_MAX;
-        for (int l = 0; l < s->lanes; l++) {
-            if (!s->count[l] || !tri)
-                continue;
-            uint32_t slot = first[s->source[l]];
-            for (uint32_t j = 0; j < s->count[l]; j += 4) {
-                uint32_t p = s->child[l] + j / 4;
-                uint32_t n = s->count[l] - j < 4 ? s->count[l] - j : 4;
-                packet_slot[p] = slot + j;
-                fill_packet(&pk[p], tri, bvh->prim_index, slot + j, n);
-            }
-        }
-        if (width == 4)
-            write_node4((struct bvh4_node *)(void *)base + w, bvh, s);
-        else
-            write_node8((struct bvh8_node *)(void *)base + w, bvh, s);
-    }
+    c.base = base;
+    c.packets = pk;
+    c.source = source;
+    c.packet_slot = packet_slot;
+    for_nodes(&c, pool, 0, count, write_task, write_node);
     rt_free(first);
     rt_free(span);
     rt_free(scratch);
@@ -419,6 +547,12 @@ fail:
     rt_free(source);
     rt_free(packet_slot);
     return -1;
+}
+
+int accel_collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *tri,
+                        uint32_t width)
+{
+    return accel_collapse_wide_pool(out, bvh, tri, width, NULL);
 }
 
 int accel_collapse4(struct bvh4 *out, const struct bvh *bvh, const float *tri)

@@ -32,15 +32,15 @@ static struct aabb *triangle_boxes(const struct scene_accel_geometry *geom)
  * (accel->tri unchanged; accel->wide unchanged, or released when the
  * collapse itself failed).  Times the collapse into accel->collapse_ms. */
 static int finish_layout(struct scene_accel *accel, const struct scene_accel_geometry *geom,
-                         const struct bvh_build_params *params)
+                         const struct bvh_build_params *params, struct rt_pool *pool)
 {
-    float *tri = accel_gather_triangles(&accel->bvh, geom->positions, geom->indices);
+    float *tri = accel_gather_triangles_pool(&accel->bvh, geom->positions, geom->indices, pool);
     if (!tri)
         return -1;
     struct bvh4 wide = {0};
     const uint32_t width = params->wide_layout == 8 ? 8u : 4u;
     double start = rt_now_ms();
-    if (params->wide_layout && accel_collapse_wide(&wide, &accel->bvh, tri, width)) {
+    if (params->wide_layout && accel_collapse_wide_pool(&wide, &accel->bvh, tri, width, pool)) {
         /* The tree may have changed under the old wide layout
          * (restructuring): drop it, so traversal takes the binary walk. */
         bvh4_release(&accel->wide);
@@ -75,7 +75,7 @@ struct scene_accel *scene_accel_build(const struct scene_accel_geometry *geom,
         status = accel_build_parallel(&accel->bvh, boxes, geom->tri_count, params, pool);
     else
         status = accel_build(&accel->bvh, boxes, geom->tri_count, params);
-    if (status || finish_layout(accel, geom, params))
+    if (status || finish_layout(accel, geom, params, pool))
         goto fail;
     rt_free(boxes);
     accel->built_sah_cost = accel->sah_cost;
@@ -125,7 +125,7 @@ int scene_accel_restructure(struct scene_accel *accel, const struct scene_accel_
     if (status)
         return -1;
     /* Restructuring moves primitives between leaves: regather. */
-    return finish_layout(accel, geom, params);
+    return finish_layout(accel, geom, params, NULL);
 }
 
 void scene_accel_install(struct scene_object *object, struct scene_accel *fresh)
