@@ -4,13 +4,12 @@
  * 4- or 8-wide, with triangle packets for leaves (trace/bvh4_layout.h),
  * and its refit.
  *
- * Three steps: per binary node, the leaf slots its subtree covers (to
- * find subtrees small enough to become one packet leaf); the greedy
- * collapse into a width-generic scratch node, level by level; the final
- * nodes (with the per-octant child order) and packets in one 64-byte
- * aligned block.  Given a pool, the last two steps share their per-node
- * work between its threads, with the same bytes as on one thread
- * (struct collapse).
+ * Two steps: the greedy collapse into width-generic scratch nodes, level
+ * by level (a lane whose binary subtree is small enough, in consecutive
+ * leaf slots, becomes a packet leaf: small_span); then the final nodes
+ * (with the per-octant child order) and packets in one 64-byte aligned
+ * block.  Given a pool, both share their per-node work between its
+ * threads, with the same bytes as on one thread (struct collapse).
  */
 #include "trace/bvh4_layout.h"
 
@@ -25,13 +24,14 @@
 
 #define MAX_WIDTH 8
 
-/* A wide node before it is written in its width's layout.  count is the
- * leaf's triangles (0: inner child or unused lane); a leaf's child is its
- * first leaf slot until the packets are made. */
+/* A wide node before it is written in its width's layout: per lane the
+ * binary node, the child (wide node or first packet, once numbered), and
+ * for a leaf lane its triangles (or slots) from leaf slot first. */
 struct scratch_node {
     uint32_t source[MAX_WIDTH];
     uint32_t child[MAX_WIDTH];
     uint32_t count[MAX_WIDTH];
+    uint32_t first[MAX_WIDTH];
     int lanes;
     uint32_t inner; /* bit l: lane l is an inner child */
 };
@@ -44,120 +44,114 @@ static float node_area(const struct bvh_node *n)
     return dx * dy + dy * dz + dz * dx;
 }
 
-/* span[i], first[i] from the children's (visited before i). */
-static void span_step(const struct bvh *bvh, uint32_t i, uint32_t *first, uint32_t *span)
+/* The triangles of binary subtree i when they are at most `budget` and
+ * occupy consecutive leaf slots (returned, the first in *first), else 0.
+ * Consecutive means: a leaf's slots, or the children's runs adjacent in
+ * either order.  Builders partition slots in place, so a subtree's slots
+ * are normally consecutive; restructuring can break that, and such a
+ * subtree is then simply never merged.  The budget cuts the walk short:
+ * the left child gets what the right one leaves at least (an inner node
+ * holds at least two triangles, a leaf its count), the right child what
+ * the left one left, so a large subtree is rejected after a few nodes
+ * near its root.  Called with budget BVH_WIDE_MERGE this is the per-node
+ * span of a bottom-up pass over every binary node, where that span is
+ * at most BVH_WIDE_MERGE, and 0 where it is larger (same answers, but
+ * only for the nodes the collapse looks at, and on any thread). */
+static uint32_t small_span(const struct bvh *bvh, uint32_t i, uint32_t budget, uint32_t *first)
 {
     const struct bvh_node *node = &bvh->nodes[i];
     if (node->count) {
-        first[i] = node->first;
-        span[i] = node->count;
-        return;
+        *first = node->first;
+        return node->count <= budget ? node->count : 0;
     }
-    uint32_t l = node->first;
-    uint32_t r = l + 1;
-    span[i] = 0;
-    if (span[l] && span[r] && first[l] + span[l] == first[r]) {
-        first[i] = first[l];
-        span[i] = span[l] + span[r];
-    } else if (span[l] && span[r] && first[r] + span[r] == first[l]) {
-        first[i] = first[r];
-        span[i] = span[l] + span[r];
-    }
-}
-
-/* Per binary node, the triangles of its subtree when they occupy
- * consecutive leaf slots (span[n] of them from first[n]), else span 0.
- * Builders partition slots in place, so a subtree's slots are normally
- * consecutive; restructuring can break that, and such a subtree is then
- * simply never merged.  Children are visited before parents: in
- * decreasing index order when every inner node's children come after it
- * (what the builders write, checked here in one sequential pass),
- * otherwise in reverse preorder.  Returns 0 or -1 on allocation failure. */
-static int subtree_spans(const struct bvh *bvh, uint32_t *first, uint32_t *span)
-{
-    int children_after = 1;
-    for (uint32_t i = 0; i < bvh->node_count && children_after; i++) {
-        const struct bvh_node *node = &bvh->nodes[i];
-        children_after = node->count != 0 ||
-                         (node->first > i && node->first < bvh->node_count - 1);
-    }
-    if (children_after) {
-        for (uint32_t i = bvh->node_count; i-- > 0;)
-            span_step(bvh, i, first, span);
+    if (budget < 2)
         return 0;
+    const struct bvh_node *right = &bvh->nodes[node->first + 1];
+    uint32_t right_least = right->count ? right->count : 2;
+    if (right_least >= budget)
+        return 0;
+    uint32_t first_l, first_r;
+    uint32_t span_l = small_span(bvh, node->first, budget - right_least, &first_l);
+    if (!span_l)
+        return 0;
+    uint32_t span_r = small_span(bvh, node->first + 1, budget - span_l, &first_r);
+    if (!span_r)
+        return 0;
+    if (first_l + span_l == first_r) {
+        *first = first_l;
+        return span_l + span_r;
     }
-    uint32_t *pre = rt_calloc(bvh->node_count, sizeof(uint32_t));
-    uint32_t *stack = rt_calloc(BVH_MAX_DEPTH + 2, sizeof(uint32_t));
-    if (!pre || !stack) {
-        rt_free(pre);
-        rt_free(stack);
-        return -1;
+    if (first_r + span_r == first_l) {
+        *first = first_r;
+        return span_l + span_r;
     }
-    uint32_t n = 0;
-    uint32_t sp = 0;
-    stack[sp++] = 0;
-    while (sp) {
-        uint32_t i = stack[--sp];
-        pre[n++] = i;
-        if (bvh->nodes[i].count == 0) {
-            stack[sp++] = bvh->nodes[i].first;
-            stack[sp++] = bvh->nodes[i].first + 1;
-        }
-    }
-    while (n)
-        span_step(bvh, pre[--n], first, span);
-    rt_free(pre);
-    rt_free(stack);
     return 0;
 }
 
-/* A lane that is a leaf of the wide layout: a binary leaf, or a small
- * subtree in consecutive slots. */
-static int is_leaf_lane(const struct bvh *bvh, const uint32_t *span, uint32_t i)
+/* Whether binary node i is a leaf of the wide layout (a binary leaf, or,
+ * with triangles, a small subtree in consecutive slots), and then its
+ * triangles or slots (*count) from *first.  Range leaves (no triangles)
+ * are the binary leaves only: a merged subtree would visit (transform,
+ * set up and enter) every instance under it, where the binary subtree's
+ * boxes cull most of them. */
+static int leaf_lane(const struct bvh *bvh, const float *tri, uint32_t i, uint32_t *first,
+                     uint32_t *count)
 {
-    return bvh->nodes[i].count != 0 || (span[i] != 0 && span[i] <= BVH_WIDE_MERGE);
+    const struct bvh_node *node = &bvh->nodes[i];
+    if (node->count) {
+        *first = node->first;
+        *count = node->count;
+        return 1;
+    }
+    *count = tri ? small_span(bvh, i, BVH_WIDE_MERGE, first) : 0;
+    return *count != 0;
 }
 
-/* The binary nodes a wide node over binary inner node `inner` holds:
+/* Lane l of s is binary node i: its area, and whether it is inner (then
+ * count 0) or a leaf (count and first its slots). */
+static void set_lane(const struct bvh *bvh, const float *tri, struct scratch_node *s, int l,
+                     uint32_t i, float *area)
+{
+    s->source[l] = i;
+    *area = node_area(&bvh->nodes[i]);
+    if (leaf_lane(bvh, tri, i, &s->first[l], &s->count[l]))
+        s->inner &= ~(1u << l);
+    else
+        s->inner |= 1u << l;
+}
+
+/* The binary nodes wide node s over binary inner node `inner` holds:
  * starting from its two children, the openable (inner, not merged) one
  * of largest area is replaced by its children until there are `width`
  * (ties: the first). */
-static int gather(const struct bvh *bvh, const uint32_t *span, uint32_t inner, uint32_t width,
-                  uint32_t out[MAX_WIDTH])
+static void gather(const struct bvh *bvh, const float *tri, uint32_t inner, uint32_t width,
+                   struct scratch_node *s)
 {
     /* Each lane's area and openness, computed once when the lane is
      * added rather than at every step (the same values, so the same
      * picks). */
     float area[MAX_WIDTH];
-    int openable[MAX_WIDTH];
+    s->inner = 0;
+    set_lane(bvh, tri, s, 0, bvh->nodes[inner].first, &area[0]);
+    set_lane(bvh, tri, s, 1, bvh->nodes[inner].first + 1, &area[1]);
     uint32_t n = 2;
-    out[0] = bvh->nodes[inner].first;
-    out[1] = out[0] + 1;
-    for (uint32_t i = 0; i < 2; i++) {
-        area[i] = node_area(&bvh->nodes[out[i]]);
-        openable[i] = !is_leaf_lane(bvh, span, out[i]);
-    }
     while (n < width) {
         int pick = -1;
         float best = -1.0f;
         for (uint32_t i = 0; i < n; i++) {
-            if (openable[i] && (pick < 0 || area[i] > best)) {
+            if ((s->inner >> i & 1u) && (pick < 0 || area[i] > best)) {
                 pick = (int)i;
                 best = area[i];
             }
         }
         if (pick < 0)
             break;
-        uint32_t first = bvh->nodes[out[pick]].first;
-        out[pick] = first;
-        out[n] = first + 1;
-        area[pick] = node_area(&bvh->nodes[first]);
-        openable[pick] = !is_leaf_lane(bvh, span, first);
-        area[n] = node_area(&bvh->nodes[first + 1]);
-        openable[n] = !is_leaf_lane(bvh, span, first + 1);
+        uint32_t first = bvh->nodes[s->source[pick]].first;
+        set_lane(bvh, tri, s, pick, first, &area[pick]);
+        set_lane(bvh, tri, s, (int)n, first + 1, &area[n]);
         n++;
     }
-    return (int)n;
+    s->lanes = (int)n;
 }
 
 /* Per octant, the used lanes sorted front to back by the projection of
@@ -323,8 +317,6 @@ struct collapse {
     const struct bvh *bvh;
     const float *tri;
     uint32_t width;
-    const uint32_t *first;
-    const uint32_t *span;
     struct scratch_node *scratch;
     const uint32_t *todo;
     /* The nodes of the task the pool runs, [begin, end), in chunks. */
@@ -347,22 +339,10 @@ struct collapse {
  * not contended, small enough that the chunks balance between threads. */
 #define COLLAPSE_CHUNK 256u
 
-/* Scratch node w's lanes from binary inner node todo[w], each lane's
- * triangle count (0 for an inner lane) and the mask of inner lanes. */
+/* Scratch node w's lanes from binary inner node todo[w]. */
 static void gather_node(const struct collapse *c, uint32_t w)
 {
-    struct scratch_node *s = &c->scratch[w];
-    s->lanes = gather(c->bvh, c->span, c->todo[w], c->width, s->source);
-    s->inner = 0;
-    for (int l = 0; l < s->lanes; l++) {
-        uint32_t i = s->source[l];
-        if (!is_leaf_lane(c->bvh, c->span, i)) {
-            s->inner |= 1u << l;
-            s->count[l] = 0;
-            continue;
-        }
-        s->count[l] = c->bvh->nodes[i].count ? c->bvh->nodes[i].count : c->span[i];
-    }
+    gather(c->bvh, c->tri, c->todo[w], c->width, &c->scratch[w]);
 }
 
 /* Numbers the children of level [begin, end): inner lanes get the next
@@ -378,9 +358,9 @@ static void number_level(const struct collapse *c, uint32_t begin, uint32_t end,
                 todo[*count] = s->source[l];
                 s->child[l] = (*count)++;
             } else if (!c->tri) {
-                s->child[l] = c->first[s->source[l]];
+                s->child[l] = s->first[l];
             } else {
-                s->child[l] = *packets; /* first packet; slots from first[i] */
+                s->child[l] = *packets; /* first packet; slots from first[l] */
                 *packets += (s->count[l] + 3) / 4;
             }
         }
@@ -397,7 +377,7 @@ static void write_node(const struct collapse *c, uint32_t w)
     for (int l = 0; l < s->lanes && c->tri; l++) {
         if (s->inner >> l & 1u)
             continue;
-        uint32_t slot = c->first[s->source[l]];
+        uint32_t slot = s->first[l];
         for (uint32_t j = 0; j < s->count[l]; j += 4) {
             uint32_t p = s->child[l] + j / 4;
             uint32_t n = s->count[l] - j < 4 ? s->count[l] - j : 4;
@@ -467,38 +447,28 @@ int accel_collapse_wide_pool(struct bvh4 *out, const struct bvh *bvh, const floa
     /* Every wide node but the root consumes a binary inner node, so
      * there are at most (node_count - 1) / 2 + 1 of them. */
     uint32_t cap = (bvh->node_count - 1) / 2 + 1;
-    uint32_t *first = rt_calloc(bvh->node_count, sizeof(uint32_t));
-    uint32_t *span = rt_calloc(bvh->node_count, sizeof(uint32_t));
     struct scratch_node *scratch = rt_calloc(cap, sizeof(*scratch));
     uint32_t *todo = rt_calloc(cap, sizeof(uint32_t));
     struct rt_large_block raw = {NULL, 0};
     char *base = NULL;
     uint32_t *source = NULL;
     uint32_t *packet_slot = NULL;
-    if (!first || !span || !scratch || !todo || subtree_spans(bvh, first, span))
+    if (!scratch || !todo)
         goto fail;
-    /* Range leaves are the binary leaves only: a merged subtree would
-     * visit (transform, set up and enter) every instance under it, where
-     * the binary subtree's boxes cull most of them. */
-    if (!tri)
-        memset(span, 0, bvh->node_count * sizeof(uint32_t));
     struct collapse c;
     memset(&c, 0, sizeof(c));
     c.bvh = bvh;
     c.tri = tri;
     c.width = width;
-    c.first = first;
-    c.span = span;
     c.scratch = scratch;
     c.todo = todo;
     uint32_t count = 1;
     uint32_t packets = 0;
-    if (is_leaf_lane(bvh, span, 0)) {
+    if (leaf_lane(bvh, tri, 0, &scratch[0].first[0], &scratch[0].count[0])) {
         /* One leaf under the root: the root's one lane. */
         scratch[0].lanes = 1;
         scratch[0].source[0] = 0;
         scratch[0].inner = 0;
-        scratch[0].count[0] = bvh->nodes[0].count ? bvh->nodes[0].count : span[0];
         number_level(&c, 0, 1, todo, &count, &packets);
     } else {
         todo[0] = 0;
@@ -522,8 +492,6 @@ int accel_collapse_wide_pool(struct bvh4 *out, const struct bvh *bvh, const floa
     c.source = source;
     c.packet_slot = packet_slot;
     for_nodes(&c, pool, 0, count, write_task, write_node);
-    rt_free(first);
-    rt_free(span);
     rt_free(scratch);
     rt_free(todo);
     out->width = width;
@@ -539,8 +507,6 @@ int accel_collapse_wide_pool(struct bvh4 *out, const struct bvh *bvh, const floa
     out->raw = raw;
     return 0;
 fail:
-    rt_free(first);
-    rt_free(span);
     rt_free(scratch);
     rt_free(todo);
     rt_free_large(&raw);
