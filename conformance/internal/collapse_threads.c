@@ -1,16 +1,18 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * collapse_threads.c - the gather into leaf order (bvh_build.h) and the
- * collapse to the wide layout (trace/bvh4_layout.h) on worker pools of 1
- * to 4 threads, repeated, for ThreadSanitizer (the "threads" label).
+ * collapse_threads.c - the triangle boxes and the gather into leaf order
+ * (bvh_build.h) and the collapse to the wide layout (trace/bvh4_layout.h)
+ * on worker pools of 1 to 4 threads, repeated, for ThreadSanitizer (the
+ * "threads" label).
  *
- * Both promise the bytes they give on the calling thread alone: the
- * leaf-ordered triangles, and the wide nodes (order bits included),
+ * All three promise the bytes they give on the calling thread alone: the
+ * boxes, the leaf-ordered triangles, and the wide nodes (order bits included),
  * packets, binary sources and packet slots, for widths 4 and 8, with
  * triangles and with range leaves (the top level's).  Byte identity is
  * stronger than equal answers: traversal reads nothing else.  The meshes
  * are large enough that the pooled paths run (levels of more than
- * COLLAPSE_PARALLEL_MIN wide nodes, more than GATHER_PARALLEL_MIN slots);
+ * COLLAPSE_PARALLEL_MIN wide nodes, more than GATHER_PARALLEL_MIN slots
+ * and triangles);
  * the test prints the node counts to show it.
  */
 #include <stdint.h>
@@ -52,6 +54,17 @@ static int same_wide(const struct bvh4 *a, const struct bvh4 *b)
 static void check_mesh(const char *scene, const struct tg_mesh *m, struct rt_pool **pools)
 {
     struct aabb *boxes = tg_boxes(m);
+    struct aabb *own = accel_triangle_boxes_pool(m->pos, m->idx, m->tri_count, NULL);
+    failures += !CHECKF(own != NULL, "%s: boxes failed", scene);
+    for (int t = 1; t <= MAX_THREADS && own; t++) {
+        for (int rep = 0; rep < REPEATS; rep++) {
+            struct aabb *other = accel_triangle_boxes_pool(m->pos, m->idx, m->tri_count, pools[t]);
+            failures += !CHECKF(other && memcmp(other, own, m->tri_count * sizeof(*own)) == 0,
+                                "%s: boxes on %d threads (repetition %d) differ", scene, t, rep);
+            rt_free(other);
+        }
+    }
+    rt_free(own);
     struct bvh b;
     if (accel_build_parallel(&b, boxes, m->tri_count, NULL, pools[2])) {
         failures += !CHECKF(0, "%s: build failed", scene);

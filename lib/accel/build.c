@@ -172,6 +172,51 @@ float *accel_gather_triangles_pool(const struct bvh *bvh, const float *positions
     return tri;
 }
 
+/* The triangle boxes' shared state on a pool, as the gather's. */
+struct boxes_job {
+    const float *positions;
+    const uint32_t *indices;
+    uint32_t count;
+    struct aabb *boxes;
+    uint32_t next; /* atomic: the next chunk */
+};
+
+static void triangle_boxes(const struct boxes_job *b, uint32_t begin, uint32_t end)
+{
+    for (uint32_t j = begin; j < end; j++) {
+        b->boxes[j] = aabb_empty();
+        for (int k = 0; k < 3; k++)
+            aabb_grow_point(&b->boxes[j], &b->positions[3 * (size_t)b->indices[3 * (size_t)j + k]]);
+    }
+}
+
+static void boxes_task(void *arg, int worker)
+{
+    struct boxes_job *b = arg;
+    (void)worker;
+    for (;;) {
+        uint64_t begin = (uint64_t)rt_atomic_fetch_add_relaxed(&b->next, 1u) * GATHER_CHUNK;
+        if (begin >= b->count)
+            return;
+        uint64_t end = begin + GATHER_CHUNK;
+        triangle_boxes(b, (uint32_t)begin, end < b->count ? (uint32_t)end : b->count);
+    }
+}
+
+struct aabb *accel_triangle_boxes_pool(const float *positions, const uint32_t *indices,
+                                       uint32_t count, struct rt_pool *pool)
+{
+    struct aabb *boxes = rt_realloc_array(NULL, count ? count : 1, sizeof(*boxes));
+    if (!boxes)
+        return NULL;
+    struct boxes_job b = {positions, indices, count, boxes, 0};
+    if (rt_pool_threads(pool) < 2 || count < GATHER_PARALLEL_MIN)
+        triangle_boxes(&b, 0, count);
+    else
+        rt_pool_run(pool, boxes_task, &b);
+    return boxes;
+}
+
 float *accel_gather_triangles(const struct bvh *bvh, const float *positions,
                               const uint32_t *indices)
 {

@@ -13,19 +13,6 @@
 #include "base/timer.h"
 #include "scene/object.h"
 
-static struct aabb *triangle_boxes(const struct scene_accel_geometry *geom)
-{
-    struct aabb *boxes = rt_calloc(geom->tri_count, sizeof(*boxes));
-    if (!boxes)
-        return NULL;
-    for (uint32_t j = 0; j < geom->tri_count; j++) {
-        boxes[j] = aabb_empty();
-        for (int k = 0; k < 3; k++)
-            aabb_grow_point(&boxes[j], &geom->positions[3 * geom->indices[3 * j + k]]);
-    }
-    return boxes;
-}
-
 /* The step after every change of the tree's topology: the leaf-ordered
  * triangles and the 4-wide layout traversal reads, and the cost the
  * update strategies compare.  Returns 0, or -1 on allocation failure
@@ -65,7 +52,8 @@ struct scene_accel *scene_accel_build(const struct scene_accel_geometry *geom,
     if (hook && hook->fn)
         hook->fn(hook->user);
     struct scene_accel *accel = rt_calloc(1, sizeof(*accel));
-    struct aabb *boxes = triangle_boxes(geom);
+    struct aabb *boxes =
+        accel_triangle_boxes_pool(geom->positions, geom->indices, geom->tri_count, pool);
     if (!accel || !boxes)
         goto fail;
     int status;
@@ -109,7 +97,8 @@ int scene_accel_restructure(struct scene_accel *accel, const struct scene_accel_
                             const struct accel_restructure_params *measured,
                             double rays_per_frame)
 {
-    struct aabb *boxes = triangle_boxes(geom);
+    struct aabb *boxes =
+        accel_triangle_boxes_pool(geom->positions, geom->indices, geom->tri_count, NULL);
     if (!boxes)
         return -1;
     if (!accel->restructure_state_ready) {
