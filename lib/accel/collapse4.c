@@ -175,35 +175,44 @@ static uint64_t order_key(double k)
     return u ^ ((u >> 63) ? ~(uint64_t)0 : (uint64_t)1 << 63);
 }
 
-static void octant_orders(const double centre[MAX_WIDTH][3], int lanes, int oct,
-                          int order[MAX_WIDTH], int order_opposite[MAX_WIDTH])
+/* The eight octants' orders packed at bits_per_lane bits per position:
+ * the four octants 0..3 and their opposites in one pass over the lane
+ * pairs, each lane's keys computed once (the same keys and comparisons
+ * as one octant at a time).  A lane of rank r goes to position r, so its
+ * index is shifted by bits_per_lane * r; unused lanes keep their place. */
+static void octant_orders(const double centre[MAX_WIDTH][3], int lanes, int width,
+                          int bits_per_lane, uint32_t order_bits[8])
 {
-    uint64_t key[MAX_WIDTH];
-    int rank[MAX_WIDTH] = {0};
-    int rank_opposite[MAX_WIDTH] = {0};
+    uint64_t key[MAX_WIDTH][4];
+    int rank[MAX_WIDTH][8];
+    memset(rank, 0, sizeof(rank));
     for (int l = 0; l < lanes; l++) {
-        double k = 0.0;
-        for (int a = 0; a < 3; a++)
-            k += (oct >> a & 1) ? -centre[l][a] : centre[l][a];
-        key[l] = order_key(k);
+        for (int oct = 0; oct < 4; oct++) {
+            double k = 0.0;
+            for (int a = 0; a < 3; a++)
+                k += (oct >> a & 1) ? -centre[l][a] : centre[l][a];
+            key[l][oct] = order_key(k);
+        }
     }
     for (int l = 1; l < lanes; l++) {
         for (int j = 0; j < l; j++) {
-            int j_first = key[j] <= key[l];
-            int j_first_opposite = key[j] >= key[l];
-            rank[l] += j_first;
-            rank[j] += 1 - j_first;
-            rank_opposite[l] += j_first_opposite;
-            rank_opposite[j] += 1 - j_first_opposite;
+            for (int oct = 0; oct < 4; oct++) {
+                int j_first = key[j][oct] <= key[l][oct];
+                int j_first_opposite = key[j][oct] >= key[l][oct];
+                rank[l][oct] += j_first;
+                rank[j][oct] += 1 - j_first;
+                rank[l][7 - oct] += j_first_opposite;
+                rank[j][7 - oct] += 1 - j_first_opposite;
+            }
         }
     }
-    for (int l = 0; l < lanes; l++) {
-        order[rank[l]] = l;
-        order_opposite[rank_opposite[l]] = l;
-    }
-    for (int l = lanes; l < MAX_WIDTH; l++) {
-        order[l] = l;
-        order_opposite[l] = l;
+    for (int oct = 0; oct < 8; oct++) {
+        uint32_t bits = 0;
+        for (int l = 0; l < lanes; l++)
+            bits |= (uint32_t)l << (bits_per_lane * rank[l][oct]);
+        for (int l = lanes; l < width; l++)
+            bits |= (uint32_t)l << (bits_per_lane * l);
+        order_bits[oct] = bits;
     }
 }
 
@@ -237,16 +246,7 @@ static void write_lanes(const struct bvh *bvh, const struct scratch_node *s, int
     const int bits_per_lane = width == 4 ? 2 : 3;
     double centre[MAX_WIDTH][3];
     lane_centres(bvh, s, centre);
-    for (int oct = 0; oct < 4; oct++) {
-        int order[2][MAX_WIDTH];
-        octant_orders(centre, s->lanes, oct, order[0], order[1]);
-        order_bits[oct] = 0;
-        order_bits[7 - oct] = 0;
-        for (int p = 0; p < width; p++) {
-            order_bits[oct] |= (uint32_t)order[0][p] << (bits_per_lane * p);
-            order_bits[7 - oct] |= (uint32_t)order[1][p] << (bits_per_lane * p);
-        }
-    }
+    octant_orders(centre, s->lanes, width, bits_per_lane, order_bits);
 }
 
 static void write_node4(struct bvh4_node *w, const struct bvh *bvh, const struct scratch_node *s)
