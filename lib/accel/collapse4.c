@@ -447,8 +447,12 @@ int accel_collapse_wide_pool(struct bvh4 *out, const struct bvh *bvh, const floa
     /* Every wide node but the root consumes a binary inner node, so
      * there are at most (node_count - 1) / 2 + 1 of them. */
     uint32_t cap = (bvh->node_count - 1) / 2 + 1;
-    struct scratch_node *scratch = rt_calloc(cap, sizeof(*scratch));
-    uint32_t *todo = rt_calloc(cap, sizeof(uint32_t));
+    /* Not zeroed: only the first `count` entries are used, and each is
+     * written in full (gather, number_level) before it is read, while cap
+     * is an upper bound several times the usual count (zeroing it was
+     * most of the cost of the allocation). */
+    struct scratch_node *scratch = rt_realloc_array(NULL, cap, sizeof(*scratch));
+    uint32_t *todo = rt_realloc_array(NULL, cap, sizeof(uint32_t));
     struct rt_large_block raw = {NULL, 0};
     char *base = NULL;
     uint32_t *source = NULL;
@@ -482,8 +486,9 @@ int accel_collapse_wide_pool(struct bvh4 *out, const struct bvh *bvh, const floa
     size_t node_size = width == 4 ? sizeof(struct bvh4_node) : sizeof(struct bvh8_node);
     size_t node_bytes = (size_t)count * node_size;
     base = rt_malloc_large(node_bytes + (size_t)packets * sizeof(struct tri4_packet), &raw);
-    source = rt_calloc((size_t)count * width, sizeof(uint32_t));
-    packet_slot = rt_calloc(packets ? packets : 1, sizeof(uint32_t));
+    /* Both written in full by write_node. */
+    source = rt_realloc_array(NULL, (size_t)count * width, sizeof(uint32_t));
+    packet_slot = rt_realloc_array(NULL, packets ? packets : 1, sizeof(uint32_t));
     if (!base || !source || !packet_slot)
         goto fail;
     struct tri4_packet *pk = (struct tri4_packet *)(void *)(base + node_bytes);
