@@ -7,7 +7,8 @@
  * Build: ours is the library default (binned SAH, BVH_DEFAULT_BINS bins),
  * timed from triangles to a traceable structure (boxes + accel_build +
  * accel_gather_triangles + accel_collapse_wide), on one thread and on
- * two (accel_build_parallel on a 2-thread pool, the rest serial).
+ * two (the boxes, accel_build_parallel, the gather and the collapse on
+ * a 2-thread pool).
  * Embree: one triangle geometry in one scene, rtcCommitScene timed alone
  * (the buffers are filled before the clock starts), at
  * RTC_BUILD_QUALITY_LOW (Morton builder), RTC_BUILD_QUALITY_MEDIUM
@@ -502,7 +503,8 @@ int bench_embree_section(const struct bench_options *opts, struct bench_mesh *me
                   "with \"threads=1\" or \"threads=2\"). Ours: binned SAH %d bins, boxes + "
                   "build + gather into leaf order + the %s collapse (everything before the "
                   "first ray); on 2 threads the build is accel_build_parallel (binned SAH at "
-                  "the top, binned SAH subtrees), the rest serial. Embree: rtcCommitScene alone "
+                  "the top, binned SAH subtrees), boxes, gather and collapse on the same "
+                  "pool. Embree: rtcCommitScene alone "
                   "at build quality LOW (Morton), MEDIUM (binned SAH, its default) and HIGH "
                   "(spatial splits). %s \"ours/Embree\" is a time ratio: above 1 means we "
                   "build slower.\n\n",

@@ -80,17 +80,18 @@ int bench_accel_build_pool(struct bench_accel *acc, const struct bench_mesh *mes
                            const struct bvh_build_params *params, struct rt_pool *pool)
 {
     memset(acc, 0, sizeof(*acc));
-    struct aabb *boxes = bench_mesh_boxes(mesh);
+    struct aabb *boxes =
+        accel_triangle_boxes_pool(mesh->positions, mesh->indices, mesh->tri_count, pool);
     if (!boxes)
         return -1;
     int rc = pool ? accel_build_parallel(&acc->bvh, boxes, mesh->tri_count, params, pool)
                   : accel_build(&acc->bvh, boxes, mesh->tri_count, params);
-    free(boxes);
+    rt_free(boxes);
     if (rc)
         return -1;
-    acc->tri = accel_gather_triangles(&acc->bvh, mesh->positions, mesh->indices);
+    acc->tri = accel_gather_triangles_pool(&acc->bvh, mesh->positions, mesh->indices, pool);
     if (!acc->tri ||
-        accel_collapse_wide(&acc->wide, &acc->bvh, acc->tri, bench_layout_width())) {
+        accel_collapse_wide_pool(&acc->wide, &acc->bvh, acc->tri, bench_layout_width(), pool)) {
         rt_free(acc->tri);
         bvh_release(&acc->bvh);
         memset(acc, 0, sizeof(*acc));

@@ -121,4 +121,22 @@ double accel_sah_cost(const struct bvh *bvh, float c_trav, float c_isect);
 float *accel_gather_triangles(const struct bvh *bvh, const float *positions,
                               const uint32_t *indices);
 
+/* accel_gather_triangles with the slots shared between the threads of
+ * pool (base/pool.h; NULL or a one-thread pool: the calling thread
+ * alone); the same floats on any pool.  Uses the pool for the duration
+ * of the call. */
+struct rt_pool;
+float *accel_gather_triangles_pool(const struct bvh *bvh, const float *positions,
+                                   const uint32_t *indices, struct rt_pool *pool);
+
+/* The bounds of triangles 0..count-1 (vertex indices indices[3j..3j+2]
+ * into positions, xyz per vertex; not checked), each grown from an empty
+ * box by its three vertices in order, with the triangles shared between
+ * the threads of pool (NULL or a one-thread pool: the calling thread
+ * alone; the same bits on any pool).  Returns an array of count boxes
+ * (a valid pointer for count 0), NULL on allocation failure; the caller
+ * frees it with rt_free. */
+struct aabb *accel_triangle_boxes_pool(const float *positions, const uint32_t *indices,
+                                       uint32_t count, struct rt_pool *pool);
+
 #endif

@@ -4,10 +4,12 @@
  * 4- or 8-wide, with triangle packets for leaves (trace/bvh4_layout.h),
  * and its refit.
  *
- * Three steps: per binary node, the leaf slots its subtree covers (to
- * find subtrees small enough to become one packet leaf); the greedy
- * collapse into a width-generic scratch node; the final nodes (with the
- * per-octant child order) and packets in one 64-byte aligned block.
+ * Two steps: the greedy collapse into width-generic scratch nodes, level
+ * by level (a lane whose binary subtree is small enough, in consecutive
+ * leaf slots, becomes a packet leaf: small_span); then the final nodes
+ * (with the per-octant child order) and packets in one 64-byte aligned
+ * block.  Given a pool, both share their per-node work between its
+ * threads, with the same bytes as on one thread (struct collapse).
  */
 #include "trace/bvh4_layout.h"
 
@@ -16,18 +18,22 @@
 #include <string.h>
 
 #include "base/alloc.h"
+#include "base/atomic.h"
+#include "base/pool.h"
 #include "trace/intersect.h"
 
 #define MAX_WIDTH 8
 
-/* A wide node before it is written in its width's layout.  count is the
- * leaf's triangles (0: inner child or unused lane); a leaf's child is its
- * first leaf slot until the packets are made. */
+/* A wide node before it is written in its width's layout: per lane the
+ * binary node, the child (wide node or first packet, once numbered), and
+ * for a leaf lane its triangles (or slots) from leaf slot first. */
 struct scratch_node {
     uint32_t source[MAX_WIDTH];
     uint32_t child[MAX_WIDTH];
     uint32_t count[MAX_WIDTH];
+    uint32_t first[MAX_WIDTH];
     int lanes;
+    uint32_t inner; /* bit l: lane l is an inner child */
 };
 
 static float node_area(const struct bvh_node *n)
@@ -38,120 +44,114 @@ static float node_area(const struct bvh_node *n)
     return dx * dy + dy * dz + dz * dx;
 }
 
-/* span[i], first[i] from the children's (visited before i). */
-static void span_step(const struct bvh *bvh, uint32_t i, uint32_t *first, uint32_t *span)
+/* The triangles of binary subtree i when they are at most `budget` and
+ * occupy consecutive leaf slots (returned, the first in *first), else 0.
+ * Consecutive means: a leaf's slots, or the children's runs adjacent in
+ * either order.  Builders partition slots in place, so a subtree's slots
+ * are normally consecutive; restructuring can break that, and such a
+ * subtree is then simply never merged.  The budget cuts the walk short:
+ * the left child gets what the right one leaves at least (an inner node
+ * holds at least two triangles, a leaf its count), the right child what
+ * the left one left, so a large subtree is rejected after a few nodes
+ * near its root.  Called with budget BVH_WIDE_MERGE this is the per-node
+ * span of a bottom-up pass over every binary node, where that span is
+ * at most BVH_WIDE_MERGE, and 0 where it is larger (same answers, but
+ * only for the nodes the collapse looks at, and on any thread). */
+static uint32_t small_span(const struct bvh *bvh, uint32_t i, uint32_t budget, uint32_t *first)
 {
     const struct bvh_node *node = &bvh->nodes[i];
     if (node->count) {
-        first[i] = node->first;
-        span[i] = node->count;
-        return;
+        *first = node->first;
+        return node->count <= budget ? node->count : 0;
     }
-    uint32_t l = node->first;
-    uint32_t r = l + 1;
-    span[i] = 0;
-    if (span[l] && span[r] && first[l] + span[l] == first[r]) {
-        first[i] = first[l];
-        span[i] = span[l] + span[r];
-    } else if (span[l] && span[r] && first[r] + span[r] == first[l]) {
-        first[i] = first[r];
-        span[i] = span[l] + span[r];
-    }
-}
-
-/* Per binary node, the triangles of its subtree when they occupy
- * consecutive leaf slots (span[n] of them from first[n]), else span 0.
- * Builders partition slots in place, so a subtree's slots are normally
- * consecutive; restructuring can break that, and such a subtree is then
- * simply never merged.  Children are visited before parents: in
- * decreasing index order when every inner node's children come after it
- * (what the builders write, checked here in one sequential pass),
- * otherwise in reverse preorder.  Returns 0 or -1 on allocation failure. */
-static int subtree_spans(const struct bvh *bvh, uint32_t *first, uint32_t *span)
-{
-    int children_after = 1;
-    for (uint32_t i = 0; i < bvh->node_count && children_after; i++) {
-        const struct bvh_node *node = &bvh->nodes[i];
-        children_after = node->count != 0 ||
-                         (node->first > i && node->first < bvh->node_count - 1);
-    }
-    if (children_after) {
-        for (uint32_t i = bvh->node_count; i-- > 0;)
-            span_step(bvh, i, first, span);
+    if (budget < 2)
         return 0;
+    const struct bvh_node *right = &bvh->nodes[node->first + 1];
+    uint32_t right_least = right->count ? right->count : 2;
+    if (right_least >= budget)
+        return 0;
+    uint32_t first_l, first_r;
+    uint32_t span_l = small_span(bvh, node->first, budget - right_least, &first_l);
+    if (!span_l)
+        return 0;
+    uint32_t span_r = small_span(bvh, node->first + 1, budget - span_l, &first_r);
+    if (!span_r)
+        return 0;
+    if (first_l + span_l == first_r) {
+        *first = first_l;
+        return span_l + span_r;
     }
-    uint32_t *pre = rt_calloc(bvh->node_count, sizeof(uint32_t));
-    uint32_t *stack = rt_calloc(BVH_MAX_DEPTH + 2, sizeof(uint32_t));
-    if (!pre || !stack) {
-        rt_free(pre);
-        rt_free(stack);
-        return -1;
+    if (first_r + span_r == first_l) {
+        *first = first_r;
+        return span_l + span_r;
     }
-    uint32_t n = 0;
-    uint32_t sp = 0;
-    stack[sp++] = 0;
-    while (sp) {
-        uint32_t i = stack[--sp];
-        pre[n++] = i;
-        if (bvh->nodes[i].count == 0) {
-            stack[sp++] = bvh->nodes[i].first;
-            stack[sp++] = bvh->nodes[i].first + 1;
-        }
-    }
-    while (n)
-        span_step(bvh, pre[--n], first, span);
-    rt_free(pre);
-    rt_free(stack);
     return 0;
 }
 
-/* A lane that is a leaf of the wide layout: a binary leaf, or a small
- * subtree in consecutive slots. */
-static int is_leaf_lane(const struct bvh *bvh, const uint32_t *span, uint32_t i)
+/* Whether binary node i is a leaf of the wide layout (a binary leaf, or,
+ * with triangles, a small subtree in consecutive slots), and then its
+ * triangles or slots (*count) from *first.  Range leaves (no triangles)
+ * are the binary leaves only: a merged subtree would visit (transform,
+ * set up and enter) every instance under it, where the binary subtree's
+ * boxes cull most of them. */
+static int leaf_lane(const struct bvh *bvh, const float *tri, uint32_t i, uint32_t *first,
+                     uint32_t *count)
 {
-    return bvh->nodes[i].count != 0 || (span[i] != 0 && span[i] <= BVH_WIDE_MERGE);
+    const struct bvh_node *node = &bvh->nodes[i];
+    if (node->count) {
+        *first = node->first;
+        *count = node->count;
+        return 1;
+    }
+    *count = tri ? small_span(bvh, i, BVH_WIDE_MERGE, first) : 0;
+    return *count != 0;
 }
 
-/* The binary nodes a wide node over binary inner node `inner` holds:
+/* Lane l of s is binary node i: its area, and whether it is inner (then
+ * count 0) or a leaf (count and first its slots). */
+static void set_lane(const struct bvh *bvh, const float *tri, struct scratch_node *s, int l,
+                     uint32_t i, float *area)
+{
+    s->source[l] = i;
+    *area = node_area(&bvh->nodes[i]);
+    if (leaf_lane(bvh, tri, i, &s->first[l], &s->count[l]))
+        s->inner &= ~(1u << l);
+    else
+        s->inner |= 1u << l;
+}
+
+/* The binary nodes wide node s over binary inner node `inner` holds:
  * starting from its two children, the openable (inner, not merged) one
  * of largest area is replaced by its children until there are `width`
  * (ties: the first). */
-static int gather(const struct bvh *bvh, const uint32_t *span, uint32_t inner, uint32_t width,
-                  uint32_t out[MAX_WIDTH])
+static void gather(const struct bvh *bvh, const float *tri, uint32_t inner, uint32_t width,
+                   struct scratch_node *s)
 {
     /* Each lane's area and openness, computed once when the lane is
      * added rather than at every step (the same values, so the same
      * picks). */
     float area[MAX_WIDTH];
-    int openable[MAX_WIDTH];
+    s->inner = 0;
+    set_lane(bvh, tri, s, 0, bvh->nodes[inner].first, &area[0]);
+    set_lane(bvh, tri, s, 1, bvh->nodes[inner].first + 1, &area[1]);
     uint32_t n = 2;
-    out[0] = bvh->nodes[inner].first;
-    out[1] = out[0] + 1;
-    for (uint32_t i = 0; i < 2; i++) {
-        area[i] = node_area(&bvh->nodes[out[i]]);
-        openable[i] = !is_leaf_lane(bvh, span, out[i]);
-    }
     while (n < width) {
         int pick = -1;
         float best = -1.0f;
         for (uint32_t i = 0; i < n; i++) {
-            if (openable[i] && (pick < 0 || area[i] > best)) {
+            if ((s->inner >> i & 1u) && (pick < 0 || area[i] > best)) {
                 pick = (int)i;
                 best = area[i];
             }
         }
         if (pick < 0)
             break;
-        uint32_t first = bvh->nodes[out[pick]].first;
-        out[pick] = first;
-        out[n] = first + 1;
-        area[pick] = node_area(&bvh->nodes[first]);
-        openable[pick] = !is_leaf_lane(bvh, span, first);
-        area[n] = node_area(&bvh->nodes[first + 1]);
-        openable[n] = !is_leaf_lane(bvh, span, first + 1);
+        uint32_t first = bvh->nodes[s->source[pick]].first;
+        set_lane(bvh, tri, s, pick, first, &area[pick]);
+        set_lane(bvh, tri, s, (int)n, first + 1, &area[n]);
         n++;
     }
-    return (int)n;
+    s->lanes = (int)n;
 }
 
 /* Per octant, the used lanes sorted front to back by the projection of
@@ -175,35 +175,44 @@ static uint64_t order_key(double k)
     return u ^ ((u >> 63) ? ~(uint64_t)0 : (uint64_t)1 << 63);
 }
 
-static void octant_orders(const double centre[MAX_WIDTH][3], int lanes, int oct,
-                          int order[MAX_WIDTH], int order_opposite[MAX_WIDTH])
+/* The eight octants' orders packed at bits_per_lane bits per position:
+ * the four octants 0..3 and their opposites in one pass over the lane
+ * pairs, each lane's keys computed once (the same keys and comparisons
+ * as one octant at a time).  A lane of rank r goes to position r, so its
+ * index is shifted by bits_per_lane * r; unused lanes keep their place. */
+static void octant_orders(const double centre[MAX_WIDTH][3], int lanes, int width,
+                          int bits_per_lane, uint32_t order_bits[8])
 {
-    uint64_t key[MAX_WIDTH];
-    int rank[MAX_WIDTH] = {0};
-    int rank_opposite[MAX_WIDTH] = {0};
+    uint64_t key[MAX_WIDTH][4];
+    int rank[MAX_WIDTH][8];
+    memset(rank, 0, sizeof(rank));
     for (int l = 0; l < lanes; l++) {
-        double k = 0.0;
-        for (int a = 0; a < 3; a++)
-            k += (oct >> a & 1) ? -centre[l][a] : centre[l][a];
-        key[l] = order_key(k);
+        for (int oct = 0; oct < 4; oct++) {
+            double k = 0.0;
+            for (int a = 0; a < 3; a++)
+                k += (oct >> a & 1) ? -centre[l][a] : centre[l][a];
+            key[l][oct] = order_key(k);
+        }
     }
     for (int l = 1; l < lanes; l++) {
         for (int j = 0; j < l; j++) {
-            int j_first = key[j] <= key[l];
-            int j_first_opposite = key[j] >= key[l];
-            rank[l] += j_first;
-            rank[j] += 1 - j_first;
-            rank_opposite[l] += j_first_opposite;
-            rank_opposite[j] += 1 - j_first_opposite;
+            for (int oct = 0; oct < 4; oct++) {
+                int j_first = key[j][oct] <= key[l][oct];
+                int j_first_opposite = key[j][oct] >= key[l][oct];
+                rank[l][oct] += j_first;
+                rank[j][oct] += 1 - j_first;
+                rank[l][7 - oct] += j_first_opposite;
+                rank[j][7 - oct] += 1 - j_first_opposite;
+            }
         }
     }
-    for (int l = 0; l < lanes; l++) {
-        order[rank[l]] = l;
-        order_opposite[rank_opposite[l]] = l;
-    }
-    for (int l = lanes; l < MAX_WIDTH; l++) {
-        order[l] = l;
-        order_opposite[l] = l;
+    for (int oct = 0; oct < 8; oct++) {
+        uint32_t bits = 0;
+        for (int l = 0; l < lanes; l++)
+            bits |= (uint32_t)l << (bits_per_lane * rank[l][oct]);
+        for (int l = lanes; l < width; l++)
+            bits |= (uint32_t)l << (bits_per_lane * l);
+        order_bits[oct] = bits;
     }
 }
 
@@ -237,16 +246,7 @@ static void write_lanes(const struct bvh *bvh, const struct scratch_node *s, int
     const int bits_per_lane = width == 4 ? 2 : 3;
     double centre[MAX_WIDTH][3];
     lane_centres(bvh, s, centre);
-    for (int oct = 0; oct < 4; oct++) {
-        int order[2][MAX_WIDTH];
-        octant_orders(centre, s->lanes, oct, order[0], order[1]);
-        order_bits[oct] = 0;
-        order_bits[7 - oct] = 0;
-        for (int p = 0; p < width; p++) {
-            order_bits[oct] |= (uint32_t)order[0][p] << (bits_per_lane * p);
-            order_bits[7 - oct] |= (uint32_t)order[1][p] << (bits_per_lane * p);
-        }
-    }
+    octant_orders(centre, s->lanes, width, bits_per_lane, order_bits);
 }
 
 static void write_node4(struct bvh4_node *w, const struct bvh *bvh, const struct scratch_node *s)
@@ -305,97 +305,198 @@ static void fill_packet(struct tri4_packet *p, const float *tri, const uint32_t 
     }
 }
 
-int accel_collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *tri,
-                        uint32_t width)
+/* The collapse's shared state.  The wide nodes are numbered breadth
+ * first (a node's inner lanes get the next numbers, in lane order) and
+ * the packets in node order, then lane order: the serial queue's order.
+ * Both numberings are made level by level on the calling thread; the work
+ * per node around them (the greedy gather before, the node and its
+ * packets after) depends on nothing but the node, so the pool shares it
+ * out in chunks of consecutive nodes and the bytes written are the same
+ * on any number of threads. */
+struct collapse {
+    const struct bvh *bvh;
+    const float *tri;
+    uint32_t width;
+    struct scratch_node *scratch;
+    const uint32_t *todo;
+    /* The nodes of the task the pool runs, [begin, end), in chunks. */
+    uint32_t begin;
+    uint32_t end;
+    uint32_t chunk;
+    uint32_t next; /* atomic: the next chunk */
+    char *base;
+    struct tri4_packet *packets;
+    uint32_t *source;
+    uint32_t *packet_slot;
+};
+
+/* A level of at least this many wide nodes has its gather run on the
+ * pool; smaller levels (the top of the tree) cost less than waking the
+ * workers.  The write of nodes and packets takes the pool from the same
+ * count of nodes. */
+#define COLLAPSE_PARALLEL_MIN 512u
+/* Nodes per chunk handed out: large enough that the atomic counter is
+ * not contended, small enough that the chunks balance between threads. */
+#define COLLAPSE_CHUNK 256u
+
+/* Scratch node w's lanes from binary inner node todo[w]. */
+static void gather_node(const struct collapse *c, uint32_t w)
+{
+    gather(c->bvh, c->tri, c->todo[w], c->width, &c->scratch[w]);
+}
+
+/* Numbers the children of level [begin, end): inner lanes get the next
+ * wide nodes (appended to todo), leaf lanes the next packets (or, for
+ * range leaves, their first leaf slot). */
+static void number_level(const struct collapse *c, uint32_t begin, uint32_t end,
+                         uint32_t *todo, uint32_t *count, uint32_t *packets)
+{
+    for (uint32_t w = begin; w < end; w++) {
+        struct scratch_node *s = &c->scratch[w];
+        for (int l = 0; l < s->lanes; l++) {
+            if (s->inner >> l & 1u) {
+                todo[*count] = s->source[l];
+                s->child[l] = (*count)++;
+            } else if (!c->tri) {
+                s->child[l] = s->first[l];
+            } else {
+                s->child[l] = *packets; /* first packet; slots from first[l] */
+                *packets += (s->count[l] + 3) / 4;
+            }
+        }
+    }
+}
+
+/* Wide node w in its layout, its packets and its binary sources. */
+static void write_node(const struct collapse *c, uint32_t w)
+{
+    const struct scratch_node *s = &c->scratch[w];
+    const uint32_t width = c->width;
+    for (uint32_t l = 0; l < width; l++)
+        c->source[width * w + l] = (int)l < s->lanes ? s->source[l] : UINT32_MAX;
+    for (int l = 0; l < s->lanes && c->tri; l++) {
+        if (s->inner >> l & 1u)
+            continue;
+        uint32_t slot = s->first[l];
+        for (uint32_t j = 0; j < s->count[l]; j += 4) {
+            uint32_t p = s->child[l] + j / 4;
+            uint32_t n = s->count[l] - j < 4 ? s->count[l] - j : 4;
+            c->packet_slot[p] = slot + j;
+            fill_packet(&c->packets[p], c->tri, c->bvh->prim_index, slot + j, n);
+        }
+    }
+    if (width == 4)
+        write_node4((struct bvh4_node *)(void *)c->base + w, c->bvh, s);
+    else
+        write_node8((struct bvh8_node *)(void *)c->base + w, c->bvh, s);
+}
+
+/* Runs step(c, w) for w in [c->begin, c->end), chunks taken in turn
+ * from the shared counter. */
+static void run_chunks(struct collapse *c, void (*step)(const struct collapse *, uint32_t))
+{
+    for (;;) {
+        uint32_t k = rt_atomic_fetch_add_relaxed(&c->next, 1u);
+        uint64_t lo = (uint64_t)c->begin + (uint64_t)k * c->chunk;
+        if (lo >= c->end)
+            return;
+        uint32_t hi = lo + c->chunk < c->end ? (uint32_t)(lo + c->chunk) : c->end;
+        for (uint32_t w = (uint32_t)lo; w < hi; w++)
+            step(c, w);
+    }
+}
+
+static void level_task(void *arg, int worker)
+{
+    (void)worker;
+    run_chunks(arg, gather_node);
+}
+
+static void write_task(void *arg, int worker)
+{
+    (void)worker;
+    run_chunks(arg, write_node);
+}
+
+/* step over [begin, end): on the pool when the range is large enough. */
+static void for_nodes(struct collapse *c, struct rt_pool *pool, uint32_t begin, uint32_t end,
+                      rt_task_fn task, void (*step)(const struct collapse *, uint32_t))
+{
+    if (!pool || end - begin < COLLAPSE_PARALLEL_MIN) {
+        for (uint32_t w = begin; w < end; w++)
+            step(c, w);
+        return;
+    }
+    c->begin = begin;
+    c->end = end;
+    c->chunk = COLLAPSE_CHUNK;
+    c->next = 0;
+    rt_pool_run(pool, task, c);
+}
+
+int accel_collapse_wide_pool(struct bvh4 *out, const struct bvh *bvh, const float *tri,
+                             uint32_t width, struct rt_pool *pool)
 {
     memset(out, 0, sizeof(*out));
     if (width != 4 && width != 8)
         return -1;
     if (bvh->node_count == 0)
         return 0;
+    if (rt_pool_threads(pool) < 2)
+        pool = NULL;
     /* Every wide node but the root consumes a binary inner node, so
      * there are at most (node_count - 1) / 2 + 1 of them. */
     uint32_t cap = (bvh->node_count - 1) / 2 + 1;
-    uint32_t *first = rt_calloc(bvh->node_count, sizeof(uint32_t));
-    uint32_t *span = rt_calloc(bvh->node_count, sizeof(uint32_t));
-    struct scratch_node *scratch = rt_calloc(cap, sizeof(*scratch));
-    uint32_t *todo = rt_calloc(cap, sizeof(uint32_t));
+    /* Not zeroed: only the first `count` entries are used, and each is
+     * written in full (gather, number_level) before it is read, while cap
+     * is an upper bound several times the usual count (zeroing it was
+     * most of the cost of the allocation). */
+    struct scratch_node *scratch = rt_realloc_array(NULL, cap, sizeof(*scratch));
+    uint32_t *todo = rt_realloc_array(NULL, cap, sizeof(uint32_t));
     struct rt_large_block raw = {NULL, 0};
     char *base = NULL;
     uint32_t *source = NULL;
     uint32_t *packet_slot = NULL;
-    if (!first || !span || !scratch || !todo || subtree_spans(bvh, first, span))
+    if (!scratch || !todo)
         goto fail;
-    /* Range leaves are the binary leaves only: a merged subtree would
-     * visit (transform, set up and enter) every instance under it, where
-     * the binary subtree's boxes cull most of them. */
-    if (!tri)
-        memset(span, 0, bvh->node_count * sizeof(uint32_t));
+    struct collapse c;
+    memset(&c, 0, sizeof(c));
+    c.bvh = bvh;
+    c.tri = tri;
+    c.width = width;
+    c.scratch = scratch;
+    c.todo = todo;
     uint32_t count = 1;
     uint32_t packets = 0;
-    if (is_leaf_lane(bvh, span, 0)) {
+    if (leaf_lane(bvh, tri, 0, &scratch[0].first[0], &scratch[0].count[0])) {
         /* One leaf under the root: the root's one lane. */
         scratch[0].lanes = 1;
         scratch[0].source[0] = 0;
+        scratch[0].inner = 0;
+        number_level(&c, 0, 1, todo, &count, &packets);
     } else {
         todo[0] = 0;
-        for (uint32_t w = 0; w < count; w++) {
-            struct scratch_node *s = &scratch[w];
-            s->lanes = gather(bvh, span, todo[w], width, s->source);
-            for (int l = 0; l < s->lanes; l++) {
-                if (!is_leaf_lane(bvh, span, s->source[l])) {
-                    todo[count] = s->source[l];
-                    s->child[l] = count++;
-                }
-            }
-        }
-    }
-    for (uint32_t w = 0; w < count; w++) {
-        struct scratch_node *s = &scratch[w];
-        for (int l = 0; l < s->lanes; l++) {
-            uint32_t i = s->source[l];
-            if (!is_leaf_lane(bvh, span, i))
-                continue;
-            s->count[l] = bvh->nodes[i].count ? bvh->nodes[i].count : span[i];
-            if (!tri) {
-                /* Range leaves (the top level): the first leaf slot. */
-                s->child[l] = first[i];
-                continue;
-            }
-            s->child[l] = packets; /* first packet; slots from first[i] */
-            packets += (s->count[l] + 3) / 4;
+        for (uint32_t begin = 0; begin < count;) {
+            uint32_t end = count;
+            for_nodes(&c, pool, begin, end, level_task, gather_node);
+            number_level(&c, begin, end, todo, &count, &packets);
+            begin = end;
         }
     }
     size_t node_size = width == 4 ? sizeof(struct bvh4_node) : sizeof(struct bvh8_node);
     size_t node_bytes = (size_t)count * node_size;
     base = rt_malloc_large(node_bytes + (size_t)packets * sizeof(struct tri4_packet), &raw);
-    source = rt_calloc((size_t)count * width, sizeof(uint32_t));
-    packet_slot = rt_calloc(packets ? packets : 1, sizeof(uint32_t));
+    /* Both written in full by write_node. */
+    source = rt_realloc_array(NULL, (size_t)count * width, sizeof(uint32_t));
+    packet_slot = rt_realloc_array(NULL, packets ? packets : 1, sizeof(uint32_t));
     if (!base || !source || !packet_slot)
         goto fail;
     struct tri4_packet *pk = (struct tri4_packet *)(void *)(base + node_bytes);
-    for (uint32_t w = 0; w < count; w++) {
-        struct scratch_node *s = &scratch[w];
-        for (uint32_t l = 0; l < width; l++)
-            source[width * w + l] = (int)l < s->lanes ? s->source[l] : UINT32_MAX;
-        for (int l = 0; l < s->lanes; l++) {
-            if (!s->count[l] || !tri)
-                continue;
-            uint32_t slot = first[s->source[l]];
-            for (uint32_t j = 0; j < s->count[l]; j += 4) {
-                uint32_t p = s->child[l] + j / 4;
-                uint32_t n = s->count[l] - j < 4 ? s->count[l] - j : 4;
-                packet_slot[p] = slot + j;
-                fill_packet(&pk[p], tri, bvh->prim_index, slot + j, n);
-            }
-        }
-        if (width == 4)
-            write_node4((struct bvh4_node *)(void *)base + w, bvh, s);
-        else
-            write_node8((struct bvh8_node *)(void *)base + w, bvh, s);
-    }
-    rt_free(first);
-    rt_free(span);
+    c.base = base;
+    c.packets = pk;
+    c.source = source;
+    c.packet_slot = packet_slot;
+    for_nodes(&c, pool, 0, count, write_task, write_node);
     rt_free(scratch);
     rt_free(todo);
     out->width = width;
@@ -411,14 +512,18 @@ int accel_collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *tr
     out->raw = raw;
     return 0;
 fail:
-    rt_free(first);
-    rt_free(span);
     rt_free(scratch);
     rt_free(todo);
     rt_free_large(&raw);
     rt_free(source);
     rt_free(packet_slot);
     return -1;
+}
+
+int accel_collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *tri,
+                        uint32_t width)
+{
+    return accel_collapse_wide_pool(out, bvh, tri, width, NULL);
 }
 
 int accel_collapse4(struct bvh4 *out, const struct bvh *bvh, const float *tri)

@@ -13,34 +13,21 @@
 #include "base/timer.h"
 #include "scene/object.h"
 
-static struct aabb *triangle_boxes(const struct scene_accel_geometry *geom)
-{
-    struct aabb *boxes = rt_calloc(geom->tri_count, sizeof(*boxes));
-    if (!boxes)
-        return NULL;
-    for (uint32_t j = 0; j < geom->tri_count; j++) {
-        boxes[j] = aabb_empty();
-        for (int k = 0; k < 3; k++)
-            aabb_grow_point(&boxes[j], &geom->positions[3 * geom->indices[3 * j + k]]);
-    }
-    return boxes;
-}
-
 /* The step after every change of the tree's topology: the leaf-ordered
  * triangles and the 4-wide layout traversal reads, and the cost the
  * update strategies compare.  Returns 0, or -1 on allocation failure
  * (accel->tri unchanged; accel->wide unchanged, or released when the
  * collapse itself failed).  Times the collapse into accel->collapse_ms. */
 static int finish_layout(struct scene_accel *accel, const struct scene_accel_geometry *geom,
-                         const struct bvh_build_params *params)
+                         const struct bvh_build_params *params, struct rt_pool *pool)
 {
-    float *tri = accel_gather_triangles(&accel->bvh, geom->positions, geom->indices);
+    float *tri = accel_gather_triangles_pool(&accel->bvh, geom->positions, geom->indices, pool);
     if (!tri)
         return -1;
     struct bvh4 wide = {0};
     const uint32_t width = params->wide_layout == 8 ? 8u : 4u;
     double start = rt_now_ms();
-    if (params->wide_layout && accel_collapse_wide(&wide, &accel->bvh, tri, width)) {
+    if (params->wide_layout && accel_collapse_wide_pool(&wide, &accel->bvh, tri, width, pool)) {
         /* The tree may have changed under the old wide layout
          * (restructuring): drop it, so traversal takes the binary walk. */
         bvh4_release(&accel->wide);
@@ -65,7 +52,8 @@ struct scene_accel *scene_accel_build(const struct scene_accel_geometry *geom,
     if (hook && hook->fn)
         hook->fn(hook->user);
     struct scene_accel *accel = rt_calloc(1, sizeof(*accel));
-    struct aabb *boxes = triangle_boxes(geom);
+    struct aabb *boxes =
+        accel_triangle_boxes_pool(geom->positions, geom->indices, geom->tri_count, pool);
     if (!accel || !boxes)
         goto fail;
     int status;
@@ -75,7 +63,7 @@ struct scene_accel *scene_accel_build(const struct scene_accel_geometry *geom,
         status = accel_build_parallel(&accel->bvh, boxes, geom->tri_count, params, pool);
     else
         status = accel_build(&accel->bvh, boxes, geom->tri_count, params);
-    if (status || finish_layout(accel, geom, params))
+    if (status || finish_layout(accel, geom, params, pool))
         goto fail;
     rt_free(boxes);
     accel->built_sah_cost = accel->sah_cost;
@@ -109,7 +97,8 @@ int scene_accel_restructure(struct scene_accel *accel, const struct scene_accel_
                             const struct accel_restructure_params *measured,
                             double rays_per_frame)
 {
-    struct aabb *boxes = triangle_boxes(geom);
+    struct aabb *boxes =
+        accel_triangle_boxes_pool(geom->positions, geom->indices, geom->tri_count, NULL);
     if (!boxes)
         return -1;
     if (!accel->restructure_state_ready) {
@@ -125,7 +114,7 @@ int scene_accel_restructure(struct scene_accel *accel, const struct scene_accel_
     if (status)
         return -1;
     /* Restructuring moves primitives between leaves: regather. */
-    return finish_layout(accel, geom, params);
+    return finish_layout(accel, geom, params, NULL);
 }
 
 void scene_accel_install(struct scene_object *object, struct scene_accel *fresh)

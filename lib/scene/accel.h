@@ -76,7 +76,9 @@ struct scene_preempt_hook {
 
 /*
  * A fresh structure over geom (serial and topology left 0 for the caller
- * to stamp).  Times itself into build_ms (wall) and build_cost_ms
+ * to stamp).  pool (may be NULL) also shares the gather into leaf order
+ * and the collapse to the wide layout, for any builder: the same bytes
+ * as without it.  Times itself into build_ms (wall) and build_cost_ms
  * (rt_pool_work_ms); hook may be NULL.  NULL on allocation failure.
  */
 struct scene_accel *scene_accel_build(const struct scene_accel_geometry *geom,

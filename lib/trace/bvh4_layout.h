@@ -147,6 +147,18 @@ int accel_collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *tr
  * bvh->prim_index[child .. child + count).  The caller keeps the binary
  * leaves at most UINT8_MAX primitives (count is a byte).
  */
+/*
+ * accel_collapse_wide with the per-node work (the greedy gather of each
+ * level of wide nodes, and the nodes and packets written) shared between
+ * the threads of pool (base/pool.h; NULL or a one-thread pool: the
+ * calling thread alone).  The result is byte for byte the one of
+ * accel_collapse_wide on any pool.  Uses the pool for the duration of
+ * the call (one task at a time per pool).
+ */
+struct rt_pool;
+int accel_collapse_wide_pool(struct bvh4 *out, const struct bvh *bvh, const float *tri,
+                             uint32_t width, struct rt_pool *pool);
+
 /* accel_collapse_wide with width 4. */
 int accel_collapse4(struct bvh4 *out, const struct bvh *bvh, const float *tri);
 

@@ -1,0 +1,251 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * collapse_threads.c - the triangle boxes and the gather into leaf order
+ * (bvh_build.h) and the collapse to the wide layout (trace/bvh4_layout.h)
+ * on worker pools of 1 to 4 threads, repeated, for ThreadSanitizer (the
+ * "threads" label).
+ *
+ * All three promise the bytes they give on the calling thread alone: the
+ * boxes, the leaf-ordered triangles, and the wide nodes (order bits included),
+ * packets, binary sources and packet slots, for widths 4 and 8, with
+ * triangles and with range leaves (the top level's).  Byte identity is
+ * stronger than equal answers: traversal reads nothing else.  The meshes
+ * The collapse merges a binary subtree into one leaf when its triangles
+ * are at most BVH_WIDE_MERGE in consecutive leaf slots; each lane's
+ * decision is checked against that definition computed bottom-up over
+ * every node (reference_span), also on trees whose node order puts
+ * children before parents and whose leaf slots are no longer consecutive
+ * (what restructuring can leave).  The meshes
+ * are large enough that the pooled paths run (levels of more than
+ * COLLAPSE_PARALLEL_MIN wide nodes, more than GATHER_PARALLEL_MIN slots
+ * and triangles);
+ * the test prints the node counts to show it.
+ */
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static int failures;
+
+#include "accel/build_parallel.h"
+#include "accel/bvh_build.h"
+#include "accel_testgeo.h"
+#include "base/alloc.h"
+#include "base/pool.h"
+#include "base/timer.h"
+#include "trace/bvh4_layout.h"
+#include "check.h"
+
+#define MAX_THREADS 4
+#define REPEATS 2
+
+static int same_wide(const struct bvh4 *a, const struct bvh4 *b)
+{
+    if (a->width != b->width || a->node_count != b->node_count ||
+        a->packet_count != b->packet_count || a->prefetch_top != b->prefetch_top)
+        return 0;
+    const void *na = a->width == 8 ? (const void *)a->nodes8 : (const void *)a->nodes;
+    const void *nb = b->width == 8 ? (const void *)b->nodes8 : (const void *)b->nodes;
+    if (a->node_count && memcmp(na, nb, bvh4_node_bytes(a)) != 0)
+        return 0;
+    if (a->packet_count && (memcmp(a->packets, b->packets, bvh4_leaf_bytes(a)) != 0 ||
+                            memcmp(a->packet_slot, b->packet_slot,
+                                   a->packet_count * sizeof(uint32_t)) != 0))
+        return 0;
+    return a->node_count == 0 ||
+           memcmp(a->source, b->source, (size_t)a->node_count * a->width * sizeof(uint32_t)) == 0;
+}
+
+/* The span of binary subtree i, by definition: a leaf's count; an inner
+ * node's children's sum when their slot runs are adjacent (either
+ * order), else 0.  *first is the first slot when the span is not 0. */
+static uint32_t reference_span(const struct bvh *b, uint32_t i, uint32_t *first)
+{
+    const struct bvh_node *n = &b->nodes[i];
+    if (n->count) {
+        *first = n->first;
+        return n->count;
+    }
+    uint32_t fl = 0, fr = 0;
+    uint32_t sl = reference_span(b, n->first, &fl);
+    uint32_t sr = reference_span(b, n->first + 1, &fr);
+    if (!sl || !sr)
+        return 0;
+    if (fl + sl == fr || fr + sr == fl) {
+        *first = fl + sl == fr ? fl : fr;
+        return sl + sr;
+    }
+    return 0;
+}
+
+/* Every lane of w (with packets) against reference_span: a leaf lane is a
+ * binary leaf or a subtree of span 1..BVH_WIDE_MERGE with those slots, an
+ * inner lane neither. */
+static void check_lanes(const char *what, const struct bvh4 *w, const struct bvh *b)
+{
+    int bad = 0;
+    for (uint32_t n = 0; n < w->node_count && !bad; n++) {
+        for (uint32_t l = 0; l < w->width; l++) {
+            uint32_t i = w->source[n * w->width + l];
+            if (i == UINT32_MAX)
+                continue;
+            uint32_t count = w->width == 8 ? w->nodes8[n].count[l] : w->nodes[n].count[l];
+            uint32_t child = w->width == 8 ? w->nodes8[n].child[l] : w->nodes[n].child[l];
+            uint32_t first = 0;
+            uint32_t span = reference_span(b, i, &first);
+            int leaf = b->nodes[i].count != 0 || (span != 0 && span <= BVH_WIDE_MERGE);
+            if (leaf != (count != 0))
+                bad = 1;
+            else if (leaf && (count != span || w->packet_slot[child] != first))
+                bad = 1;
+        }
+    }
+    failures += !CHECKF(!bad, "%s: a lane's leaf decision differs from the span definition", what);
+}
+
+/* Child pairs moved to mirrored positions (children before parents). */
+static void mirror_nodes(struct bvh *b)
+{
+    uint32_t n = b->node_count;
+    if (n < 3)
+        return;
+    uint32_t pairs = (n - 1) / 2;
+    struct bvh_node *old = tg_alloc(n * sizeof(*old));
+    memcpy(old, b->nodes, n * sizeof(*old));
+    for (uint32_t i = 0; i < n; i++) {
+        struct bvh_node node = old[i];
+        if (!node.count)
+            node.first = 1 + 2 * (pairs - 1 - (node.first - 1) / 2);
+        uint32_t j = i == 0 ? 0 : 1 + 2 * (pairs - 1 - (i - 1) / 2) + (i - 1) % 2;
+        b->nodes[j] = node;
+    }
+    free(old);
+}
+
+/* Exchanges the slots of some pairs of leaves of equal count, so some
+ * subtrees no longer cover consecutive slots. */
+static void scramble_slots(struct bvh *b)
+{
+    uint32_t last = UINT32_MAX;
+    uint32_t k = 0;
+    for (uint32_t i = 0; i < b->node_count; i++) {
+        if (!b->nodes[i].count)
+            continue;
+        if (last != UINT32_MAX && b->nodes[last].count == b->nodes[i].count && k++ % 3 == 0) {
+            uint32_t t = b->nodes[last].first;
+            b->nodes[last].first = b->nodes[i].first;
+            b->nodes[i].first = t;
+            last = UINT32_MAX;
+            continue;
+        }
+        last = i;
+    }
+}
+
+static void check_mesh(const char *scene, const struct tg_mesh *m, struct rt_pool **pools,
+                       int variant)
+{
+    struct aabb *boxes = tg_boxes(m);
+    struct aabb *own = accel_triangle_boxes_pool(m->pos, m->idx, m->tri_count, NULL);
+    failures += !CHECKF(own != NULL, "%s: boxes failed", scene);
+    for (int t = 1; t <= MAX_THREADS && own; t++) {
+        for (int rep = 0; rep < REPEATS; rep++) {
+            struct aabb *other = accel_triangle_boxes_pool(m->pos, m->idx, m->tri_count, pools[t]);
+            failures += !CHECKF(other && memcmp(other, own, m->tri_count * sizeof(*own)) == 0,
+                                "%s: boxes on %d threads (repetition %d) differ", scene, t, rep);
+            rt_free(other);
+        }
+    }
+    rt_free(own);
+    struct bvh b;
+    if (accel_build_parallel(&b, boxes, m->tri_count, NULL, pools[2])) {
+        failures += !CHECKF(0, "%s: build failed", scene);
+        free(boxes);
+        return;
+    }
+    free(boxes);
+    if (variant == 1)
+        mirror_nodes(&b);
+    if (variant == 2)
+        scramble_slots(&b);
+    float *tri = accel_gather_triangles(&b, m->pos, m->idx);
+    failures += !CHECKF(tri != NULL, "%s: gather failed", scene);
+    for (int t = 1; t <= MAX_THREADS && tri; t++) {
+        for (int rep = 0; rep < REPEATS; rep++) {
+            float *other = accel_gather_triangles_pool(&b, m->pos, m->idx, pools[t]);
+            failures += !CHECKF(other && memcmp(other, tri, 9 * sizeof(float) * b.prim_count) == 0,
+                                "%s: gather on %d threads (repetition %d) differs", scene, t,
+                                rep);
+            rt_free(other);
+        }
+    }
+    for (uint32_t width = 4; width <= 8 && tri; width += 4) {
+        for (int ranges = 0; ranges < 2; ranges++) {
+            const float *leaves = ranges ? NULL : tri;
+            struct bvh4 ref;
+            if (accel_collapse_wide(&ref, &b, leaves, width)) {
+                failures += !CHECKF(0, "%s: collapse failed", scene);
+                continue;
+            }
+            if (!ranges)
+                check_lanes(scene, &ref, &b);
+            double ms[MAX_THREADS + 1] = {0};
+            for (int t = 1; t <= MAX_THREADS; t++) {
+                for (int rep = 0; rep < REPEATS; rep++) {
+                    struct bvh4 w;
+                    double t0 = rt_now_ms();
+                    if (accel_collapse_wide_pool(&w, &b, leaves, width, pools[t])) {
+                        failures += !CHECKF(0, "%s: collapse on %d threads failed", scene, t);
+                        continue;
+                    }
+                    ms[t] += rt_now_ms() - t0;
+                    failures += !CHECKF(same_wide(&w, &ref),
+                                        "%s: %u-wide%s on %d threads (repetition %d) differs",
+                                        scene, width, ranges ? " (range leaves)" : "", t, rep);
+                    bvh4_release(&w);
+                }
+            }
+            printf("  %-7s %-9s %u-wide %-7s binary nodes %u, wide nodes %u, packets %u: ms on "
+                   "1..%d threads:",
+                   scene, variant == 0 ? "built" : variant == 1 ? "mirrored" : "scrambled", width, ranges ? "ranges" : "packets", b.node_count, ref.node_count,
+                   ref.packet_count, MAX_THREADS);
+            for (int t = 1; t <= MAX_THREADS; t++)
+                printf(" %.1f", ms[t] / REPEATS);
+            printf("\n");
+            bvh4_release(&ref);
+        }
+    }
+    rt_free(tri);
+    bvh_release(&b);
+}
+
+int main(void)
+{
+    double t0 = rt_now_ms();
+    printf("collapse_threads:\n");
+    struct rt_pool *pools[MAX_THREADS + 1];
+    pools[0] = NULL;
+    for (int t = 1; t <= MAX_THREADS; t++)
+        pools[t] = rt_pool_create(t);
+    struct tg_rng r;
+    tg_seed(&r, 11);
+    struct tg_mesh soup, sphere, tiny;
+    tg_soup(&soup, 60000, 1.0f, 0.02f, &r);
+    const double origin[3] = {0.0, 0.0, 0.0};
+    tg_cube_sphere(&sphere, 60, 1, 1.0, origin);
+    /* Below every threshold: the pool is asked and not used. */
+    tg_soup(&tiny, 300, 1.0f, 0.05f, &r);
+    for (int variant = 0; variant < 3; variant++)
+        check_mesh("soup", &soup, pools, variant);
+    check_mesh("sphere", &sphere, pools, 0);
+    check_mesh("tiny", &tiny, pools, 0);
+    tg_mesh_free(&soup);
+    tg_mesh_free(&sphere);
+    tg_mesh_free(&tiny);
+    for (int t = 1; t <= MAX_THREADS; t++)
+        rt_pool_destroy(pools[t]);
+    printf("collapse_threads: %s (%d failures, %.0f ms)\n", failures ? "FAIL" : "ok", failures,
+           rt_now_ms() - t0);
+    return failures ? 1 : 0;
+}
