@@ -112,6 +112,14 @@ static int is_leaf_lane(const struct bvh *bvh, const uint32_t *span, uint32_t i)
     return bvh->nodes[i].count != 0 || (span[i] != 0 && span[i] <= BVH_WIDE_MERGE);
 }
 
+/* A lane that gather left closed becomes a leaf when its subtree fits
+ * BVH_WIDE_MERGE_LEFT triangles in consecutive slots, instead of a wide
+ * node of its own. */
+static int is_final_leaf(const struct bvh *bvh, const uint32_t *span, uint32_t i)
+{
+    return is_leaf_lane(bvh, span, i) || (span[i] != 0 && span[i] <= BVH_WIDE_MERGE_LEFT);
+}
+
 /* The binary nodes a wide node over binary inner node `inner` holds:
  * starting from its two children, the openable (inner, not merged) one
  * of largest area is replaced by its children until there are `width`
@@ -343,7 +351,7 @@ int accel_collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *tr
             struct scratch_node *s = &scratch[w];
             s->lanes = gather(bvh, span, todo[w], width, s->source);
             for (int l = 0; l < s->lanes; l++) {
-                if (!is_leaf_lane(bvh, span, s->source[l])) {
+                if (!is_final_leaf(bvh, span, s->source[l])) {
                     todo[count] = s->source[l];
                     s->child[l] = count++;
                 }
@@ -354,7 +362,7 @@ int accel_collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *tr
         struct scratch_node *s = &scratch[w];
         for (int l = 0; l < s->lanes; l++) {
             uint32_t i = s->source[l];
-            if (!is_leaf_lane(bvh, span, i))
+            if (!is_final_leaf(bvh, span, i))
                 continue;
             s->count[l] = bvh->nodes[i].count ? bvh->nodes[i].count : span[i];
             if (!tri) {

@@ -76,8 +76,9 @@
  * becomes one leaf lane: one packet (Embree's builders make leaves of
  * Triangle4 blocks the same way). */
 #define BVH_WIDE_MERGE 4
+#define BVH_WIDE_MERGE_LEFT 8
 /* A leaf lane's triangles: a binary leaf holds up to BVH_MAX_LEAF_SIZE. */
-#define BVH_WIDE_MAX_LEAF (BVH_MAX_LEAF_SIZE > BVH_WIDE_MERGE ? BVH_MAX_LEAF_SIZE : BVH_WIDE_MERGE)
+#define BVH_WIDE_MAX_LEAF (BVH_MAX_LEAF_SIZE > BVH_WIDE_MERGE_LEFT ? BVH_MAX_LEAF_SIZE : BVH_WIDE_MERGE_LEFT)
 
 /* The layout size from which the walk prefetches the stack top: about
  * one core's L2 cache (0.5-2 MB on current x86 cores).  A heuristic
