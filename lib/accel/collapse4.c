@@ -20,6 +20,11 @@
 
 #define MAX_WIDTH 8
 
+/* About what a wide layout takes per triangle with merged leaves (the
+ * memory table of rtbench embree: 60-67 bytes on bumpy, soup and the
+ * kitchen); only the choice of merging depends on it. */
+#define BVH_WIDE_BYTES_PER_TRIANGLE 64
+
 /* A wide node before it is written in its width's layout.  count is the
  * leaf's triangles (0: inner child or unused lane); a leaf's child is its
  * first leaf slot until the packets are made. */
@@ -148,11 +153,12 @@ static double lane_cost(const struct bvh *bvh, const uint32_t *span, uint32_t i,
  * is 12-16 % smaller (the memory table) and a random ray visits fewer
  * nodes and tests more triangles.  The lane's box is the subtree root's,
  * a binary node's box bit for bit, so the answers are the same. */
-static int is_final_leaf(const struct bvh *bvh, const uint32_t *span, uint32_t i, uint32_t width)
+static int is_final_leaf(const struct bvh *bvh, const uint32_t *span, uint32_t i, uint32_t width,
+                         int merge_left)
 {
     if (is_leaf_lane(bvh, span, i))
         return 1;
-    if (span[i] == 0 || span[i] > BVH_WIDE_MERGE_LEFT)
+    if (!merge_left || span[i] == 0 || span[i] > BVH_WIDE_MERGE_LEFT)
         return 0;
     return (double)((span[i] + 3) / 4) <= lane_cost(bvh, span, i, width);
 }
@@ -376,6 +382,14 @@ int accel_collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *tr
      * the binary subtree's boxes cull most of them. */
     if (!tri)
         memset(span, 0, bvh->node_count * sizeof(uint32_t));
+    /* Only a layout beyond the caches gains from the smaller layout of
+     * the merged leaves (fewer cache lines per ray); a small one, which
+     * stays in the caches, would only pay their extra triangle tests
+     * (gears: +1.4 % instructions per ray).  The layout's size is
+     * estimated before it is made at BVH_WIDE_BYTES_PER_TRIANGLE; the
+     * walk's prefetch (prefetch_top below) has the same threshold. */
+    const int merge_left =
+        tri && (uint64_t)bvh->prim_count * BVH_WIDE_BYTES_PER_TRIANGLE >= BVH_WIDE_PREFETCH_BYTES;
     uint32_t count = 1;
     uint32_t packets = 0;
     if (is_leaf_lane(bvh, span, 0)) {
@@ -388,7 +402,7 @@ int accel_collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *tr
             struct scratch_node *s = &scratch[w];
             s->lanes = gather(bvh, span, todo[w], width, s->source);
             for (int l = 0; l < s->lanes; l++) {
-                if (!is_final_leaf(bvh, span, s->source[l], width)) {
+                if (!is_final_leaf(bvh, span, s->source[l], width, merge_left)) {
                     todo[count] = s->source[l];
                     s->child[l] = count++;
                 }
@@ -399,7 +413,7 @@ int accel_collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *tr
         struct scratch_node *s = &scratch[w];
         for (int l = 0; l < s->lanes; l++) {
             uint32_t i = s->source[l];
-            if (!is_final_leaf(bvh, span, i, width))
+            if (!is_final_leaf(bvh, span, i, width, merge_left))
                 continue;
             s->count[l] = bvh->nodes[i].count ? bvh->nodes[i].count : span[i];
             if (!tri) {
