@@ -147,11 +147,12 @@ static double lane_cost(const struct bvh *bvh, const uint32_t *span, uint32_t i,
  * that is no leaf lane would become a wide node of its own.  When its
  * subtree holds at most BVH_WIDE_MERGE_LEFT triangles in consecutive
  * slots (two packets) it becomes one leaf instead if that costs no more
- * by the area heuristic.  Most such nodes had two or three leaf lanes
+ * by the area heuristic.  Such a node holds only leaf lanes, often two
  * (soup: 3235 of 8190 8-wide nodes had two), a 256-byte node and a
- * visit spent on what a second packet holds; without them the layout
- * is 12-16 % smaller (the memory table) and a random ray visits fewer
- * nodes and tests more triangles.  The lane's box is the subtree root's,
+ * visit spent on what a second packet holds; without them the 8-wide
+ * layout is 10-11 % smaller (soup, kitchen, bumpy: the memory table of
+ * rtbench embree) and a ray visits fewer nodes and tests more
+ * triangles.  The lane's box is the subtree root's,
  * a binary node's box bit for bit, so the answers are the same. */
 static int is_final_leaf(const struct bvh *bvh, const uint32_t *span, uint32_t i, uint32_t width,
                          int merge_left)
