@@ -6,7 +6,9 @@
  *
  * Two steps: the greedy collapse into width-generic scratch nodes, level
  * by level (a lane whose binary subtree is small enough, in consecutive
- * leaf slots, becomes a packet leaf: small_span); then the final nodes
+ * leaf slots, becomes a packet leaf: small_span; in a large layout, so
+ * does a somewhat larger one left closed under a full node when the area
+ * heuristic prefers it: close_small_lanes); then the final nodes
  * (with the per-octant child order) and packets in one 64-byte aligned
  * block.  Given a pool, both share their per-node work between its
  * threads, with the same bytes as on one thread (struct collapse).
@@ -23,6 +25,11 @@
 #include "trace/intersect.h"
 
 #define MAX_WIDTH 8
+
+/* About what a wide layout takes per triangle with merged leaves (the
+ * memory table of rtbench embree: 60-67 bytes on bumpy, soup and the
+ * kitchen); only the choice of merging depends on it. */
+#define BVH_WIDE_BYTES_PER_TRIANGLE 64
 
 /* A wide node before it is written in its width's layout: per lane the
  * binary node, the child (wide node or first packet, once numbered), and
@@ -152,6 +159,56 @@ static void gather(const struct bvh *bvh, const float *tri, uint32_t inner, uint
         n++;
     }
     s->lanes = (int)n;
+}
+
+/* The expected cost, in packet tests, of inner binary node i as a wide
+ * node of its own, by the surface area heuristic (MacDonald and Booth
+ * 1990): one node test (BVH_WIDE_NODE_COST) plus each lane's cost
+ * weighted by the lane's share of the node's area (the chance that a ray
+ * through the node's box enters the lane's); a leaf lane costs its
+ * packets, an inner one its own wide node.  Called on subtrees of at
+ * most BVH_WIDE_MERGE_LEFT triangles only, so the recursion is shallow. */
+static double wide_node_cost(const struct bvh *bvh, const float *tri, uint32_t i,
+                             uint32_t width)
+{
+    struct scratch_node t;
+    gather(bvh, tri, i, width, &t);
+    const double area = node_area(&bvh->nodes[i]);
+    double cost = BVH_WIDE_NODE_COST;
+    for (int l = 0; l < t.lanes; l++) {
+        const double share = area > 0.0 ? node_area(&bvh->nodes[t.source[l]]) / area : 1.0;
+        const double lane = (t.inner >> l & 1u) ? wide_node_cost(bvh, tri, t.source[l], width)
+                                                : (double)((t.count[l] + 3) / 4);
+        cost += share * lane;
+    }
+    return cost;
+}
+
+/* A lane that gather left closed (the wide node is full) and that is no
+ * leaf lane would become a wide node of its own.  When its subtree holds
+ * at most BVH_WIDE_MERGE_LEFT triangles in consecutive slots (two
+ * packets) it becomes one leaf instead if that costs no more by the area
+ * heuristic.  Such a node holds only leaf lanes, often two (soup: 3235
+ * of 8190 8-wide nodes had two), a 256-byte node and a visit spent on
+ * what a second packet holds; without them the 8-wide layout is 10-11 %
+ * smaller (soup, kitchen, bumpy: the memory table of rtbench embree) and
+ * a ray visits fewer nodes and tests more triangles.  The lane's box is
+ * the subtree root's, a binary node's box bit for bit, so the answers
+ * are the same.  Depends on nothing but the node, as gather. */
+static void close_small_lanes(const struct bvh *bvh, const float *tri, uint32_t width,
+                              struct scratch_node *s)
+{
+    for (int l = 0; l < s->lanes; l++) {
+        if (!(s->inner >> l & 1u))
+            continue;
+        uint32_t first;
+        const uint32_t n = small_span(bvh, s->source[l], BVH_WIDE_MERGE_LEFT, &first);
+        if (n && (double)((n + 3) / 4) <= wide_node_cost(bvh, tri, s->source[l], width)) {
+            s->inner &= ~(1u << l);
+            s->first[l] = first;
+            s->count[l] = n;
+        }
+    }
 }
 
 /* Per octant, the used lanes sorted front to back by the projection of
@@ -317,6 +374,7 @@ struct collapse {
     const struct bvh *bvh;
     const float *tri;
     uint32_t width;
+    int merge_left; /* close_small_lanes applies */
     struct scratch_node *scratch;
     const uint32_t *todo;
     /* The nodes of the task the pool runs, [begin, end), in chunks. */
@@ -343,6 +401,8 @@ struct collapse {
 static void gather_node(const struct collapse *c, uint32_t w)
 {
     gather(c->bvh, c->tri, c->todo[w], c->width, &c->scratch[w]);
+    if (c->merge_left)
+        close_small_lanes(c->bvh, c->tri, c->width, &c->scratch[w]);
 }
 
 /* Numbers the children of level [begin, end): inner lanes get the next
@@ -466,6 +526,14 @@ int accel_collapse_wide_pool(struct bvh4 *out, const struct bvh *bvh, const floa
     c.width = width;
     c.scratch = scratch;
     c.todo = todo;
+    /* Only a layout beyond the caches gains from the smaller layout of
+     * the merged leaves (fewer cache lines per ray); a small one, which
+     * stays in the caches, would only pay their extra triangle tests
+     * (gears: +1.4 % instructions per ray).  The layout's size is
+     * estimated before it is made at BVH_WIDE_BYTES_PER_TRIANGLE; the
+     * walk's prefetch (prefetch_top below) has the same threshold. */
+    c.merge_left =
+        tri && (uint64_t)bvh->prim_count * BVH_WIDE_BYTES_PER_TRIANGLE >= BVH_WIDE_PREFETCH_BYTES;
     uint32_t count = 1;
     uint32_t packets = 0;
     if (leaf_lane(bvh, tri, 0, &scratch[0].first[0], &scratch[0].count[0])) {

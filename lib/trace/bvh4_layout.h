@@ -58,8 +58,10 @@
  * A leaf of n triangles is ceil(n / 4) consecutive packets; the lanes of
  * the last one beyond n repeat its last triangle and are never tested.
  * A leaf lane is a binary leaf, or a binary subtree of at most
- * BVH_WIDE_MERGE triangles in consecutive leaf slots (its box is the
- * subtree root's box, again a binary node's box bit for bit).
+ * BVH_WIDE_MERGE triangles in consecutive leaf slots, or one of at most
+ * BVH_WIDE_MERGE_LEFT under a full wide node where the area heuristic
+ * prefers its packets to a wide node of its own (its box is the subtree
+ * root's box, again a binary node's box bit for bit).
  *
  * Wide node 0 is the root; it covers the binary root's children (or the
  * binary root itself when that is a leaf).
@@ -76,8 +78,19 @@
  * becomes one leaf lane: one packet (Embree's builders make leaves of
  * Triangle4 blocks the same way). */
 #define BVH_WIDE_MERGE 4
+/* A subtree the collapse leaves closed under a full wide node becomes
+ * one leaf lane of up to this many triangles (two packets) instead of a
+ * wide node, when the area heuristic says the packets cost no more than
+ * the node (collapse4.c, is_final_leaf). */
+#define BVH_WIDE_MERGE_LEFT 8
+/* A wide node's test against one packet's, the ratio of the collapse's
+ * area heuristic: 1, as Embree's SAH builders weigh a node's traversal
+ * and a 4-triangle block's intersection alike (traversal and
+ * intersection cost 1.0).  A heuristic only: the answers do not depend
+ * on it. */
+#define BVH_WIDE_NODE_COST 1.0
 /* A leaf lane's triangles: a binary leaf holds up to BVH_MAX_LEAF_SIZE. */
-#define BVH_WIDE_MAX_LEAF (BVH_MAX_LEAF_SIZE > BVH_WIDE_MERGE ? BVH_MAX_LEAF_SIZE : BVH_WIDE_MERGE)
+#define BVH_WIDE_MAX_LEAF (BVH_MAX_LEAF_SIZE > BVH_WIDE_MERGE_LEFT ? BVH_MAX_LEAF_SIZE : BVH_WIDE_MERGE_LEFT)
 
 /* The layout size from which the walk prefetches the stack top: about
  * one core's L2 cache (0.5-2 MB on current x86 cores).  A heuristic
@@ -132,7 +145,9 @@ struct bvh4 {
  * repeatedly replaces the inner child of largest surface area by its two
  * children until it has `width`, as in Wald, Benthin and Boulos 2008 and
  * the MBVH conversion of tinybvh; subtrees of at most BVH_WIDE_MERGE
- * triangles stay closed and become leaves), and copies the triangles of
+ * triangles stay closed and become leaves, and so do those of at most
+ * BVH_WIDE_MERGE_LEFT left closed under a full node when their packets
+ * cost no more than a node by the area heuristic), and copies the triangles of
  * tri (accel_gather_triangles' leaf order) into packets.  *out is output
  * only.  Returns 0, or -1 on allocation failure (or another width) with
  * *out zeroed.  Implemented in lib/accel.
