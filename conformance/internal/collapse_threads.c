@@ -11,7 +11,9 @@
  * triangles and with range leaves (the top level's).  Byte identity is
  * stronger than equal answers: traversal reads nothing else.  The meshes
  * The collapse merges a binary subtree into one leaf when its triangles
- * are at most BVH_WIDE_MERGE in consecutive leaf slots; each lane's
+ * are at most BVH_WIDE_MERGE in consecutive leaf slots (and, in a large
+ * layout, a closed one of at most BVH_WIDE_MERGE_LEFT when the area
+ * heuristic prefers it); each lane's
  * decision is checked against that definition computed bottom-up over
  * every node (reference_span), also on trees whose node order puts
  * children before parents and whose leaf slots are no longer consecutive
@@ -80,11 +82,15 @@ static uint32_t reference_span(const struct bvh *b, uint32_t i, uint32_t *first)
 }
 
 /* Every lane of w (with packets) against reference_span: a leaf lane is a
- * binary leaf or a subtree of span 1..BVH_WIDE_MERGE with those slots, an
- * inner lane neither. */
-static void check_lanes(const char *what, const struct bvh4 *w, const struct bvh *b)
+ * binary leaf or a subtree of span 1..BVH_WIDE_MERGE with those slots, or
+ * one of span up to BVH_WIDE_MERGE_LEFT (a closed lane the area heuristic
+ * made a leaf: counted in *merged_left); an inner lane none of these
+ * (spans above BVH_WIDE_MERGE may be either). */
+static void check_lanes(const char *what, const struct bvh4 *w, const struct bvh *b,
+                        uint32_t *merged_left)
 {
     int bad = 0;
+    *merged_left = 0;
     for (uint32_t n = 0; n < w->node_count && !bad; n++) {
         for (uint32_t l = 0; l < w->width; l++) {
             uint32_t i = w->source[n * w->width + l];
@@ -94,11 +100,15 @@ static void check_lanes(const char *what, const struct bvh4 *w, const struct bvh
             uint32_t child = w->width == 8 ? w->nodes8[n].child[l] : w->nodes[n].child[l];
             uint32_t first = 0;
             uint32_t span = reference_span(b, i, &first);
-            int leaf = b->nodes[i].count != 0 || (span != 0 && span <= BVH_WIDE_MERGE);
-            if (leaf != (count != 0))
+            int binary_leaf = b->nodes[i].count != 0;
+            int must_leaf = binary_leaf || (span != 0 && span <= BVH_WIDE_MERGE);
+            int may_leaf = must_leaf || (span != 0 && span <= BVH_WIDE_MERGE_LEFT);
+            if (count == 0)
+                bad |= must_leaf;
+            else if (!may_leaf || count != span || w->packet_slot[child] != first)
                 bad = 1;
-            else if (leaf && (count != span || w->packet_slot[child] != first))
-                bad = 1;
+            else if (!must_leaf)
+                (*merged_left)++;
         }
     }
     failures += !CHECKF(!bad, "%s: a lane's leaf decision differs from the span definition", what);
@@ -188,8 +198,17 @@ static void check_mesh(const char *scene, const struct tg_mesh *m, struct rt_poo
                 failures += !CHECKF(0, "%s: collapse failed", scene);
                 continue;
             }
-            if (!ranges)
-                check_lanes(scene, &ref, &b);
+            uint32_t merged_left = 0;
+            if (!ranges) {
+                check_lanes(scene, &ref, &b, &merged_left);
+                /* The two-packet leaves are made in large layouts only:
+                 * on the soup as built (its 8-wide layout is about 4 MB)
+                 * and never on the tiny mesh. */
+                if (variant == 0 && !strcmp(scene, "soup") && width == 8)
+                    failures += !CHECKF(merged_left > 0, "soup: no two-packet leaf");
+                if (!strcmp(scene, "tiny"))
+                    failures += !CHECKF(merged_left == 0, "tiny: a two-packet leaf");
+            }
             double ms[MAX_THREADS + 1] = {0};
             for (int t = 1; t <= MAX_THREADS; t++) {
                 for (int rep = 0; rep < REPEATS; rep++) {
@@ -206,10 +225,11 @@ static void check_mesh(const char *scene, const struct tg_mesh *m, struct rt_poo
                     bvh4_release(&w);
                 }
             }
-            printf("  %-7s %-9s %u-wide %-7s binary nodes %u, wide nodes %u, packets %u: ms on "
-                   "1..%d threads:",
-                   scene, variant == 0 ? "built" : variant == 1 ? "mirrored" : "scrambled", width, ranges ? "ranges" : "packets", b.node_count, ref.node_count,
-                   ref.packet_count, MAX_THREADS);
+            printf("  %-7s %-9s %u-wide %-7s binary nodes %u, wide nodes %u, packets %u "
+                   "(two-packet leaves %u): ms on 1..%d threads:",
+                   scene, variant == 0 ? "built" : variant == 1 ? "mirrored" : "scrambled",
+                   width, ranges ? "ranges" : "packets", b.node_count, ref.node_count,
+                   ref.packet_count, merged_left, MAX_THREADS);
             for (int t = 1; t <= MAX_THREADS; t++)
                 printf(" %.1f", ms[t] / REPEATS);
             printf("\n");
