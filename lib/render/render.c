@@ -628,6 +628,32 @@ static int block_pixel_inside(const int *vp, int x0, int y0, int bx, int by, int
     return x < x0 + RENDER_TILE_SIZE && x < vp[2] && y < y0 + RENDER_TILE_SIZE && y < vp[3];
 }
 
+
+/* The eye light's direct hits of a block, shaded together
+ * (shade_eye_hits: their texture levels of detail two at a time). */
+struct eye_batch {
+    const float *dir[TRACE_PACKET];
+    const struct trace_scene_hit *hit[TRACE_PACKET];
+    struct shade_cone cone[TRACE_PACKET];
+    float *px[TRACE_PACKET];
+    int n;
+};
+
+static void eye_batch_add(struct eye_batch *b, const float *dir,
+                          const struct trace_scene_hit *hit, struct shade_cone cone, float *px)
+{
+    b->dir[b->n] = dir;
+    b->hit[b->n] = hit;
+    b->cone[b->n] = cone;
+    b->px[b->n++] = px;
+}
+
+static void eye_batch_shade(const struct shade_context *sc, const struct eye_batch *b)
+{
+    if (b->n)
+        shade_eye_hits(sc, b->n, b->dir, b->hit, b->cone, b->px);
+}
+
 /* The pixels of a traced block (render_tile_packets) in the eye light's
  * direct case with every hit drawn: the block's hits shaded together
  * (shade_eye_hits), the clear colour where a ray hit nothing or none was
@@ -640,11 +666,7 @@ static void eye_block(struct render_pass *pass, struct shade_context *sc, int x0
 {
     const struct render_state *st = pass->job->state;
     const int *vp = st->viewport;
-    const float *eye_dir[TRACE_PACKET];
-    const struct trace_scene_hit *eye_hit[TRACE_PACKET];
-    struct shade_cone eye_cone[TRACE_PACKET];
-    float *eye_px[TRACE_PACKET];
-    int eyes = 0;
+    struct eye_batch eyes = {.n = 0};
     for (int i = 0; i < TRACE_PACKET; i++) {
         if (!block_pixel_inside(vp, x0, y0, bx, by, i))
             continue;
@@ -660,17 +682,13 @@ static void eye_block(struct render_pass *pass, struct shade_context *sc, int x0
             memcpy(px, st->clear_color, 4 * sizeof(float));
             t_first = INFINITY;
         } else {
-            eye_dir[eyes] = pk->dir[i];
-            eye_hit[eyes] = &hits[i];
-            eye_cone[eyes] = cone[i];
-            eye_px[eyes++] = px;
+            eye_batch_add(&eyes, pk->dir[i], &hits[i], cone[i], px);
             t_first = hits[i].t;
         }
         if (pass->depth)
             pass->depth[at] = raster_window_depth(st->projection, pk->org[i], pk->dir[i], t_first);
     }
-    if (eyes)
-        shade_eye_hits(sc, eyes, eye_dir, eye_hit, eye_cone, eye_px);
+    eye_batch_shade(sc, &eyes);
 }
 
 /*
@@ -753,11 +771,7 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
             }
             shade_prime_shadows(sc, found, hits, (const float(*)[3])pk.org,
                                 (const float(*)[3])pk.dir, cone, surf, primed);
-            const float *eye_dir[TRACE_PACKET];
-            const struct trace_scene_hit *eye_hit[TRACE_PACKET];
-            struct shade_cone eye_cone[TRACE_PACKET];
-            float *eye_px[TRACE_PACKET];
-            int eyes = 0;
+            struct eye_batch eyes = {.n = 0};
             for (int i = 0; i < TRACE_PACKET; i++) {
                 const int x = bx + i % RENDER_BLOCK_W, y = by + i / RENDER_BLOCK_W;
                 if (!(x < x0 + RENDER_TILE_SIZE && x < vp[2] && y < y0 + RENDER_TILE_SIZE &&
@@ -780,10 +794,7 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                     /* blend_trace_primary's first, opaque, drawn hit. */
                     if (eye) {
                         /* Shaded with the block's others below. */
-                        eye_dir[eyes] = pk.dir[i];
-                        eye_hit[eyes] = &primed[i].hit;
-                        eye_cone[eyes] = cone[i];
-                        eye_px[eyes++] = px;
+                        eye_batch_add(&eyes, pk.dir[i], &primed[i].hit, cone[i], px);
                     } else
                         shade_hit(sc, pk.org[i], pk.dir[i], &primed[i].hit, cone[i], 0, px);
                     t_first = primed[i].hit.t;
@@ -798,8 +809,7 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                     pass->depth[at] =
                         raster_window_depth(st->projection, pk.org[i], pk.dir[i], t_first);
             }
-            if (eyes)
-                shade_eye_hits(sc, eyes, eye_dir, eye_hit, eye_cone, eye_px);
+            eye_batch_shade(sc, &eyes);
         }
     }
 }

@@ -396,6 +396,28 @@ static const uint64_t wide8_compress[256] = {
     0x0000020304050607u, 0x0000020304050607u, 0x0001020304050607u, 0x0001020304050607u,
 };
 
+/* The stack write of wide8_push and wide8_push_stored: the lanes
+ * `gather` picks (children's words, counts and entry distances) into
+ * consecutive slots from *sp, all hit lanes but the front one, which the
+ * caller continues with. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void wide8_store(const struct bvh8_node *n, __m256i gather, __m256 t0,
+                               unsigned pm, uint32_t *st_child, uint32_t *st_count, float *st_t,
+                               uint32_t *sp)
+{
+    const __m256i child = _mm256_load_si256((const __m256i *)(const void *)n->child);
+    const __m256i count =
+        _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)n->count));
+    _mm256_storeu_si256((__m256i *)(void *)&st_child[*sp],
+                        _mm256_permutevar8x32_epi32(child, gather));
+    _mm256_storeu_si256((__m256i *)(void *)&st_count[*sp],
+                        _mm256_permutevar8x32_epi32(count, gather));
+    _mm256_storeu_ps(&st_t[*sp], _mm256_permutevar8x32_ps(t0, gather));
+    *sp += (uint32_t)__builtin_popcount(pm) - 1u;
+}
+
 /*
  * A node with two or more hit children: push all but the front one back
  * to front in the octant's order and return the front one (its child
@@ -424,15 +446,7 @@ static inline void wide8_push(const struct bvh8_node *n, int octant, __m256 hit,
     const unsigned pm = (unsigned)_mm256_movemask_ps(_mm256_permutevar8x32_ps(hit, lanes));
     const __m128i packed = _mm_loadl_epi64((const __m128i *)(const void *)&wide8_compress[pm]);
     const __m256i gather = _mm256_permutevar8x32_epi32(lanes, _mm256_cvtepu8_epi32(packed));
-    const __m256i child = _mm256_load_si256((const __m256i *)(const void *)n->child);
-    const __m256i count =
-        _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)n->count));
-    _mm256_storeu_si256((__m256i *)(void *)&st_child[*sp],
-                        _mm256_permutevar8x32_epi32(child, gather));
-    _mm256_storeu_si256((__m256i *)(void *)&st_count[*sp],
-                        _mm256_permutevar8x32_epi32(count, gather));
-    _mm256_storeu_ps(&st_t[*sp], _mm256_permutevar8x32_ps(t0, gather));
-    *sp += (uint32_t)__builtin_popcount(pm) - 1u;
+    wide8_store(n, gather, t0, pm, st_child, st_count, st_t, sp);
     const unsigned l = order >> (3 * (unsigned)__builtin_ctz(pm)) & 7u;
     *cur = n->child[l];
     *cur_count = n->count[l];
@@ -458,15 +472,7 @@ static inline void wide8_push_stored(const struct bvh8_node *n, __m256 hit, __m2
     const unsigned pm = (unsigned)_mm256_movemask_ps(hit);
     const __m256i gather = _mm256_cvtepu8_epi32(
         _mm_loadl_epi64((const __m128i *)(const void *)&wide8_compress[pm]));
-    const __m256i child = _mm256_load_si256((const __m256i *)(const void *)n->child);
-    const __m256i count =
-        _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)n->count));
-    _mm256_storeu_si256((__m256i *)(void *)&st_child[*sp],
-                        _mm256_permutevar8x32_epi32(child, gather));
-    _mm256_storeu_si256((__m256i *)(void *)&st_count[*sp],
-                        _mm256_permutevar8x32_epi32(count, gather));
-    _mm256_storeu_ps(&st_t[*sp], _mm256_permutevar8x32_ps(t0, gather));
-    *sp += (uint32_t)__builtin_popcount(pm) - 1u;
+    wide8_store(n, gather, t0, pm, st_child, st_count, st_t, sp);
     const unsigned l = (unsigned)__builtin_ctz(pm);
     *cur = n->child[l];
     *cur_count = n->count[l];
