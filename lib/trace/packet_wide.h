@@ -603,6 +603,11 @@ static inline int packet_ia_init(struct packet_state *p, const struct trace_ray 
  * pass than there are rays, the rays' own tests over the eight children
  * (packet_box8_rows) take the node instead.  Measured in
  * docs/performance-log.md (k-packet).
+ *
+ * An inner node that only one ray enters (several-origin packets after
+ * the lane tests, any packet after the pop cull) is left to that ray's
+ * single walk (walk_wide8), as packet_walk does below its hybrid
+ * threshold.
  */
 #if defined(__GNUC__)
 __attribute__((always_inline))
@@ -627,7 +632,31 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
     unsigned rays = active;
     unsigned done = 0;
     for (;;) {
-        if (cur_count) {
+        if (!cur_count && !(rays & (rays - 1u))) {
+            /* One ray left at an inner node: the single walk from here
+             * with the ray's own state, as packet_walk's hybrid step
+             * (traverse_wide.h: the same hit).  Its own test of the
+             * eight children costs less than the interval test over the
+             * whole packet's ranges plus a lane test per passing child,
+             * and its stack holds only its own entries.  A leaf with one
+             * ray stays with the per-ray leaf below (the single walk's
+             * set-up costs more there: bumpy, 2 rays per leaf). */
+            const unsigned r = (unsigned)__builtin_ctz(rays);
+            packet_ready(p, r);
+            if (p->dirty >> r & 1u)
+                packet_flush(p, r);
+            if (!(p->r4_ready >> r & 1u)) {
+                tri4_ray_init(&p->s[r].r4, p->s[r].ray);
+                p->r4_ready |= 1u << r;
+            }
+            if (walk_wide8(wide, &p->s[r], cur, cur_count))
+                done |= rays;
+            packet_sync(p, r);
+            if (!any_hit) {
+                bl = _mm256_loadu_ps(p->box_limit);
+                limit_hi = _mm256_set1_ps(packet_hmax(bl));
+            }
+        } else if (cur_count) {
             unsigned single = rays;
             const unsigned r8 = rays & p->lanes8;
             if ((unsigned)__builtin_popcount(r8) >= PACKET_TRI8_MIN) {
