@@ -183,7 +183,7 @@ static inline unsigned tri4_candidates_lanes_impl(const struct tri4_ray *r,
      * deferred below), and the rest is not computed.  Most packets a
      * shadow ray tests are such misses; the closest-hit walk keeps the
      * branch-free filter. */
-    if (any_hit && ((unsigned)_mm_movemask_ps(mixed) & valid) == valid)
+    if (((unsigned)_mm_movemask_ps(mixed) & valid) == valid)
         return 0;
 
     /* Lanes with an edge function of exactly 0: the scalar test's
