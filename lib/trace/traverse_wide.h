@@ -326,6 +326,12 @@ static inline int walk_wide4(const struct bvh4 *wide, struct wide_state *s, uint
 }
 
 #if defined(__AVX__)
+/* The 8 floats `off` bytes into a node (walk_wide8_ray's row offsets). */
+static inline __m256 wide8_bound(const char *b, size_t off)
+{
+    return _mm256_load_ps((const float *)(const void *)(b + off));
+}
+
 /* wide8_compress[m]: the bit positions set in m, highest first, one per
  * byte from the low byte (the rest 0): the left-packing permutation of
  * walk_wide8_impl's push, one 8-byte load instead of a loop. */
@@ -643,103 +649,102 @@ static inline int walk_wide8_ray(const struct bvh4 *wide, struct wide_state *s, 
      * top's prefetch (bvh4_layout.h). */
     const int prefetch_top = wide->prefetch_top != 0;
     for (;;) {
-        /* The ray's vectors, broadcast again after each leaf call from
-         * the ray (which the call may in principle have changed, so the
-         * compiler reloads it anyway) instead of spilled and reloaded
-         * around it. */
+        /* A leaf popped after a leaf goes straight to the leaf test: the
+         * node test's vectors are broadcast only when an inner node comes
+         * next. */
+        if (!cur_count) {
+            /* The ray's vectors, broadcast again after each leaf call from
+             * the ray (which the call may in principle have changed, so the
+             * compiler reloads it anyway) instead of spilled and reloaded
+             * around it. */
 #if defined(__GNUC__)
-        /* GCC sees that the packet call leaves the ray alone and keeps
-         * these vectors across it, spilling and reloading eight of them
-         * around every leaf; an any-hit walk (about three leaf visits per
-         * shadow ray) loads them again instead.  The empty asm hides
-         * nothing but the pointer's provenance. */
-        if (any_hit)
-            __asm__("" : "+r"(ray));
+            /* GCC sees that the packet call leaves the ray alone and keeps
+             * these vectors across it, spilling and reloading eight of them
+             * around every leaf; an any-hit walk (about three leaf visits per
+             * shadow ray) loads them again instead.  The empty asm hides
+             * nothing but the pointer's provenance. */
+            if (any_hit)
+                __asm__("" : "+r"(ray));
 #endif
-        /* The origin negated: bound + (-org) is bound - org bit for bit
-         * (IEEE 754's x - y is x + (-y)), and the addition takes the
-         * bound as its memory operand (the subtraction cannot, the bound
-         * being its minuend): six loads fewer per node. */
-        const __m256 neg_org_x = _mm256_set1_ps(-ray->org[0]);
-        const __m256 neg_org_y = _mm256_set1_ps(-ray->org[1]);
-        const __m256 neg_org_z = _mm256_set1_ps(-ray->org[2]);
-        const __m256 inv_x = _mm256_set1_ps(ray->inv_dir[0]);
-        const __m256 inv_y = _mm256_set1_ps(ray->inv_dir[1]);
-        const __m256 inv_z = _mm256_set1_ps(ray->inv_dir[2]);
-        const __m256 tmin8 = _mm256_set1_ps(ray->tmin);
-        /* Inner nodes until a leaf lane comes up (or the stack empties). */
-        while (!cur_count) {
-            const struct bvh8_node *n = &nodes[cur];
-            const char *b = (const char *)(const void *)n->bounds;
-            if (stats)
-                node_tests += 8;
-            /* isect_box's order: entry max(z, max(y, max(x, tmin))),
-             * exit min(z, min(y, min(x, inf))) (see the file's head). */
-            const __m256 tnx = _mm256_mul_ps(
-                _mm256_add_ps(neg_org_x, _mm256_load_ps((const float *)(const void *)(b + near_x))),
-                inv_x);
-            const __m256 tfx = _mm256_mul_ps(
-                _mm256_add_ps(neg_org_x, _mm256_load_ps((const float *)(const void *)(b + far_x))),
-                inv_x);
-            const __m256 tny = _mm256_mul_ps(
-                _mm256_add_ps(neg_org_y, _mm256_load_ps((const float *)(const void *)(b + near_y))),
-                inv_y);
-            const __m256 tfy = _mm256_mul_ps(
-                _mm256_add_ps(neg_org_y, _mm256_load_ps((const float *)(const void *)(b + far_y))),
-                inv_y);
-            const __m256 tnz = _mm256_mul_ps(
-                _mm256_add_ps(neg_org_z, _mm256_load_ps((const float *)(const void *)(b + near_z))),
-                inv_z);
-            const __m256 tfz = _mm256_mul_ps(
-                _mm256_add_ps(neg_org_z, _mm256_load_ps((const float *)(const void *)(b + far_z))),
-                inv_z);
-            const __m256 t0 = _mm256_max_ps(tnz, _mm256_max_ps(tny, _mm256_max_ps(tnx, tmin8)));
-            __m256 t1 = _mm256_min_ps(
-                tfz, _mm256_min_ps(tfy, _mm256_min_ps(tfx, _mm256_set1_ps(INFINITY))));
-            t1 = _mm256_mul_ps(t1, _mm256_set1_ps(ISECT_BOX_FAR_SCALE));
-            t1 = _mm256_min_ps(t1, _mm256_set1_ps(box_limit));
-            const __m256 hit = _mm256_cmp_ps(t0, t1, _CMP_LE_OQ);
-            const unsigned mask = (unsigned)_mm256_movemask_ps(hit);
-            if (mask) {
-                if (!(mask & (mask - 1u))) {
-                    const unsigned l = (unsigned)__builtin_ctz(mask);
-                    cur = n->child[l];
-                    cur_count = n->count[l];
-                } else {
-                    if (any_hit)
-                        wide8_push_stored(n, hit, t0, st_child, st_count, st_t, &sp, &cur,
-                                          &cur_count);
-                    else
-                        wide8_push(n, octant, hit, t0, order_shift, st_child, st_count, st_t,
-                                   &sp, &cur, &cur_count);
-                    if (prefetch_top) {
-                        /* The new stack top, whose subtree comes after
-                         * cur's: prefetched now (its bounds, or the
-                         * first three lines of its leaf's packet), so
-                         * that its load overlaps cur's subtree instead
-                         * of following it. */
-                        const uint32_t top = st_child[sp - 1];
-                        const char *a = st_count[sp - 1] ? (const char *)&packets[top]
-                                                         : (const char *)&nodes[top];
-                        _mm_prefetch(a, _MM_HINT_T0);
-                        _mm_prefetch(a + 64, _MM_HINT_T0);
-                        _mm_prefetch(a + 128, _MM_HINT_T0);
+            /* The origin negated: bound + (-org) is bound - org bit for bit
+             * (IEEE 754's x - y is x + (-y)), and the addition takes the
+             * bound as its memory operand (the subtraction cannot, the bound
+             * being its minuend): six loads fewer per node. */
+            const __m256 neg_org_x = _mm256_set1_ps(-ray->org[0]);
+            const __m256 neg_org_y = _mm256_set1_ps(-ray->org[1]);
+            const __m256 neg_org_z = _mm256_set1_ps(-ray->org[2]);
+            const __m256 inv_x = _mm256_set1_ps(ray->inv_dir[0]);
+            const __m256 inv_y = _mm256_set1_ps(ray->inv_dir[1]);
+            const __m256 inv_z = _mm256_set1_ps(ray->inv_dir[2]);
+            const __m256 tmin8 = _mm256_set1_ps(ray->tmin);
+            /* Inner nodes until a leaf lane comes up (or the stack empties). */
+            while (!cur_count) {
+                const struct bvh8_node *n = &nodes[cur];
+                const char *b = (const char *)(const void *)n->bounds;
+                if (stats)
+                    node_tests += 8;
+                /* isect_box's order: entry max(z, max(y, max(x, tmin))),
+                 * exit min(z, min(y, min(x, inf))) (see the file's head). */
+                const __m256 tnx =
+                    _mm256_mul_ps(_mm256_add_ps(neg_org_x, wide8_bound(b, near_x)), inv_x);
+                const __m256 tfx =
+                    _mm256_mul_ps(_mm256_add_ps(neg_org_x, wide8_bound(b, far_x)), inv_x);
+                const __m256 tny =
+                    _mm256_mul_ps(_mm256_add_ps(neg_org_y, wide8_bound(b, near_y)), inv_y);
+                const __m256 tfy =
+                    _mm256_mul_ps(_mm256_add_ps(neg_org_y, wide8_bound(b, far_y)), inv_y);
+                const __m256 tnz =
+                    _mm256_mul_ps(_mm256_add_ps(neg_org_z, wide8_bound(b, near_z)), inv_z);
+                const __m256 tfz =
+                    _mm256_mul_ps(_mm256_add_ps(neg_org_z, wide8_bound(b, far_z)), inv_z);
+                const __m256 t0 = _mm256_max_ps(tnz, _mm256_max_ps(tny, _mm256_max_ps(tnx, tmin8)));
+                __m256 t1 = _mm256_min_ps(
+                    tfz, _mm256_min_ps(tfy, _mm256_min_ps(tfx, _mm256_set1_ps(INFINITY))));
+                t1 = _mm256_mul_ps(t1, _mm256_set1_ps(ISECT_BOX_FAR_SCALE));
+                t1 = _mm256_min_ps(t1, _mm256_set1_ps(box_limit));
+                const __m256 hit = _mm256_cmp_ps(t0, t1, _CMP_LE_OQ);
+                const unsigned mask = (unsigned)_mm256_movemask_ps(hit);
+                if (mask) {
+                    if (!(mask & (mask - 1u))) {
+                        const unsigned l = (unsigned)__builtin_ctz(mask);
+                        cur = n->child[l];
+                        cur_count = n->count[l];
+                    } else {
+                        if (any_hit)
+                            wide8_push_stored(n, hit, t0, st_child, st_count, st_t, &sp, &cur,
+                                              &cur_count);
+                        else
+                            wide8_push(n, octant, hit, t0, order_shift, st_child, st_count, st_t,
+                                       &sp, &cur, &cur_count);
+                        if (prefetch_top) {
+                            /* The new stack top, whose subtree comes after
+                             * cur's: prefetched now (its bounds, or the
+                             * first three lines of its leaf's packet), so
+                             * that its load overlaps cur's subtree instead
+                             * of following it. */
+                            const uint32_t top = st_child[sp - 1];
+                            const char *a = st_count[sp - 1] ? (const char *)&packets[top]
+                                                             : (const char *)&nodes[top];
+                            _mm_prefetch(a, _MM_HINT_T0);
+                            _mm_prefetch(a + 64, _MM_HINT_T0);
+                            _mm_prefetch(a + 128, _MM_HINT_T0);
+                        }
                     }
+                    if (!cur_count)
+                        wide_prefetch(&nodes[cur], sizeof(struct bvh8_node));
+                    continue;
                 }
-                if (!cur_count)
-                    wide_prefetch(&nodes[cur], sizeof(struct bvh8_node));
-                continue;
+                /* Pop (as below). */
+                for (;;) {
+                    if (sp == 0)
+                        goto done;
+                    sp--;
+                    if (any_hit || st_t[sp] <= box_limit)
+                        break;
+                }
+                cur = st_child[sp];
+                cur_count = st_count[sp];
             }
-            /* Pop (as below). */
-            for (;;) {
-                if (sp == 0)
-                    goto done;
-                sp--;
-                if (any_hit || st_t[sp] <= box_limit)
-                    break;
-            }
-            cur = st_child[sp];
-            cur_count = st_count[sp];
         }
         {
             int stop = 0;
