@@ -628,7 +628,7 @@ WIDE8_PACKET(wide8_packet_any, 1, 1)
 __attribute__((always_inline))
 #endif
 static inline int walk_wide8_ray(const struct bvh4 *wide, struct wide_state *s, int any_hit,
-                                 int stats)
+                                 int stats, int leave_early)
 {
     const struct trace_ray *ray = s->ray;
     const struct bvh8_node *nodes = wide->nodes8;
@@ -665,13 +665,6 @@ static inline int walk_wide8_ray(const struct bvh4 *wide, struct wide_state *s, 
     /* Per layout: only a layout beyond the caches pays for the stack
      * top's prefetch (bvh4_layout.h). */
     const int prefetch_top = wide->prefetch_top != 0;
-    /* The closest-hit packet filter's early return (tri4_filter_lanes)
-     * on the same threshold: on a large layout most packets a ray tests
-     * are misses that the sign test alone refuses (soup, random rays: 84
-     * %), on a small one (gears: 40 %) the branch costs more in
-     * mispredictions than it saves (measured: gears random rays 0.81 ->
-     * 0.76 of Embree with it, primary rays 1.02 -> 1.07). */
-    const int packet_leave_early = prefetch_top;
     for (;;) {
         /* A leaf popped after a leaf goes straight to the leaf test: the
          * node test's vectors are broadcast only when an inner node comes
@@ -788,7 +781,7 @@ static inline int walk_wide8_ray(const struct bvh4 *wide, struct wide_state *s, 
             for (;;) {
                 const uint32_t n = cur_count < 4 ? cur_count : 4;
                 stop = any_hit         ? wide8_packet_any(s, p, n)
-                       : packet_leave_early ? wide8_packet_closest(s, p, n)
+                       : leave_early ? wide8_packet_closest(s, p, n)
                                             : wide8_packet_full(s, p, n);
                 if (stop || cur_count <= 4)
                     break;
@@ -827,7 +820,7 @@ done:
 
 /* The whole single-ray trace over an 8-wide layout, the state set up
  * here: the entry (walk_wide) is then a dispatch and a jump. */
-#define WIDE8_WALK(name, any_hit, stats)                                                        \
+#define WIDE8_WALK(name, any_hit, stats, leave_early)                                           \
     static int name(const struct bvh4 *wide, const struct trace_ray *ray, float t_max,         \
                     struct trace_hit *hit, struct trace_counters *counters) WIDE_NOINLINE;      \
     static int name(const struct bvh4 *wide, const struct trace_ray *ray, float t_max,         \
@@ -837,7 +830,7 @@ done:
         wide_state_init(&s, ray, t_max, any_hit, hit);                                          \
         if (any_hit)                                                                            \
             tri4_ray_init(&s.r4, ray);                                                          \
-        const int done = walk_wide8_ray(wide, &s, any_hit, stats);                              \
+        const int done = walk_wide8_ray(wide, &s, any_hit, stats, leave_early);                 \
         if (stats) {                                                                            \
             counters->node_tests += s.node_tests;                                               \
             counters->triangle_tests += s.triangle_tests;                                       \
@@ -846,10 +839,20 @@ done:
         return any_hit ? done : s.found;                                                        \
     }
 
-WIDE8_WALK(wide8_walk_closest, 0, 0)
-WIDE8_WALK(wide8_walk_closest_stats, 0, 1)
-WIDE8_WALK(wide8_walk_any, 1, 0)
-WIDE8_WALK(wide8_walk_any_stats, 1, 1)
+/* The closest-hit walk in two copies: with the packet filter's early
+ * return (tri4_filter_lanes) on a layout beyond the caches, without it on
+ * a smaller one (the same threshold as the stack top's prefetch).  On a
+ * large layout most packets a random ray tests are misses that the sign
+ * test alone refuses (soup: 84 %); on a small one (gears: 40 %) the
+ * branch cost more in mispredictions than it saved (gears random rays
+ * 0.81 -> 0.75 of Embree with it, primary rays 1.02 -> 1.07).  A copy per
+ * choice, not a test per packet. */
+WIDE8_WALK(wide8_walk_closest, 0, 0, 0)
+WIDE8_WALK(wide8_walk_closest_stats, 0, 1, 0)
+WIDE8_WALK(wide8_walk_closest_early, 0, 0, 1)
+WIDE8_WALK(wide8_walk_closest_early_stats, 0, 1, 1)
+WIDE8_WALK(wide8_walk_any, 1, 0, 1)
+WIDE8_WALK(wide8_walk_any_stats, 1, 1, 1)
 #endif
 
 /* walk_wide's 4-wide walks, each its own function with the ray's state
@@ -894,6 +897,9 @@ static inline int walk_wide(const struct bvh4 *wide, const struct bvh *bvh, cons
         if (any_hit)
             return counters ? wide8_walk_any_stats(wide, ray, t_max, hit, counters)
                             : wide8_walk_any(wide, ray, t_max, hit, counters);
+        if (wide->prefetch_top)
+            return counters ? wide8_walk_closest_early_stats(wide, ray, t_max, hit, counters)
+                            : wide8_walk_closest_early(wide, ray, t_max, hit, counters);
         return counters ? wide8_walk_closest_stats(wide, ray, t_max, hit, counters)
                         : wide8_walk_closest(wide, ray, t_max, hit, counters);
     }
