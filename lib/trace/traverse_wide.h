@@ -608,10 +608,12 @@ static inline int walk_wide8(const struct bvh4 *wide, struct wide_state *s, uint
  * - the node test runs in an inner loop without calls, which leaves it
  *   the registers for the six row offsets, origin and inverse;
  * - the row offsets are pointer-sized (no sign extension per load);
- * - any_hit and stats are compile-time constants of each copy, and each
- *   copy is its own function with its own stack, which also sets up the
- *   ray's state (walk_wide no longer pays for four inlined walks'
- *   frames and a second copy of the packet test's constants).
+ * - any_hit, stats and leave_early (the packet filter's early return,
+ *   WIDE8_WALK's copies say when) are compile-time constants of each
+ *   copy, and each copy is its own function with its own stack, which
+ *   also sets up the ray's state (walk_wide no longer pays for four
+ *   inlined walks' frames and a second copy of the packet test's
+ *   constants).
  */
 #define WIDE8_PACKET(name, any_hit, early_out)                                                   \
     static int name(struct wide_state *s, const struct tri4_packet *p, uint32_t n) WIDE_NOINLINE; \
