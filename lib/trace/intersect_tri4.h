@@ -129,10 +129,9 @@ struct tri4_lanes {
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline unsigned tri4_candidates_lanes_impl(const struct tri4_ray *r,
-                                                  const struct tri4_packet *p, unsigned valid,
-                                                  float t_max, struct tri4_lanes *out,
-                                                  int any_hit)
+static inline unsigned tri4_filter_lanes(const struct tri4_ray *r, const struct tri4_packet *p,
+                                         unsigned valid, float t_max, struct tri4_lanes *out,
+                                         int any_hit, int early_out)
 {
     /* Unaligned loads: a layout's packets are 32-byte aligned, but a
      * packet elsewhere (a test's, on the stack) need not be; on aligned
@@ -178,12 +177,14 @@ static inline unsigned tri4_candidates_lanes_impl(const struct tri4_ray *r,
      * subtraction that underflows is exact).  So the scalar test's
      * double signs differ as well and it returns 0. */
     const __m128 mixed = _mm_and_ps(any_neg, any_pos);
-    /* The any-hit walk's leaf: when every lane's signs
-     * differ, every lane is refused (a mixed lane is neither kept nor
-     * deferred below), and the rest is not computed.  Most packets a
-     * shadow ray tests are such misses; the closest-hit walk keeps the
-     * branch-free filter. */
-    if (any_hit && ((unsigned)_mm_movemask_ps(mixed) & valid) == valid)
+    /* With early_out: when every lane's signs differ, every lane is
+     * refused (a mixed lane is neither kept nor deferred below), and the
+     * rest is not computed.  Most packets a shadow ray tests are such
+     * misses, and most a random ray tests on a large mesh (soup: 84 %);
+     * where fewer are (gears' random rays: 40 %) the branch is hard to
+     * predict, and the 8-wide closest-hit walk on a small layout keeps
+     * the branch-free filter (traverse_wide.h, wide8_packet_full). */
+    if (early_out && ((unsigned)_mm_movemask_ps(mixed) & valid) == valid)
         return 0;
 
     /* Lanes with an edge function of exactly 0: the scalar test's
@@ -247,6 +248,18 @@ static inline unsigned tri4_candidates_lanes_impl(const struct tri4_ray *r,
         }
     }
     return mask;
+}
+
+/* tri4_filter_lanes with the early return. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline unsigned tri4_candidates_lanes_impl(const struct tri4_ray *r,
+                                                  const struct tri4_packet *p, unsigned valid,
+                                                  float t_max, struct tri4_lanes *out,
+                                                  int any_hit)
+{
+    return tri4_filter_lanes(r, p, valid, t_max, out, any_hit, 1);
 }
 
 static inline unsigned tri4_candidates_lanes(const struct tri4_ray *r,
