@@ -3,8 +3,8 @@
 # run_compare.sh KIND OUTDIR NAME GL_EXE RT_EXE COMPARE_EXE [compare arguments]
 #
 # Runs a program's GL build and its Tracelist build (RT_EXE "-": the GL
-# build alone, compared with itself) and compares the two images with
-# compare_images.  KIND "offscreen": the image path is the program's
+# build alone, compared with itself, its image <name>-gl-alone.ppm) and
+# compares the two images with compare_images.  KIND "offscreen": the image path is the program's
 # argument; "glut": it is TRACELIST_OUT (the headless GLUT rules; the
 # other TRACELIST_* variables come from the test's environment).  Fails
 # when a build exits non-zero (an error was recorded), prints anything
@@ -25,9 +25,13 @@ run() { # run EXE IMAGE
         return 1
     fi
 }
-run "$gl_exe" "$outdir/$name-gl.ppm" || exit 1
+# The GL build alone writes its own file: ctest runs a program's two
+# tests at once under -j, and one shared GL image was rewritten by one
+# test while the other read it ("cannot read <name>-gl.ppm").
 if [ "$rt_exe" = - ]; then
-    exec "$compare" "$outdir/$name-gl.ppm" "$outdir/$name-gl.ppm" "$@"
+    run "$gl_exe" "$outdir/$name-gl-alone.ppm" || exit 1
+    exec "$compare" "$outdir/$name-gl-alone.ppm" "$outdir/$name-gl-alone.ppm" "$@"
 fi
+run "$gl_exe" "$outdir/$name-gl.ppm" || exit 1
 run "$rt_exe" "$outdir/$name-rt.ppm" || exit 1
 exec "$compare" "$outdir/$name-gl.ppm" "$outdir/$name-rt.ppm" --diff "$outdir/$name-diff.ppm" "$@"
