@@ -15,7 +15,6 @@
 
 #include "accel/build_internal.h"
 #include "base/alloc.h"
-#include "base/atomic.h"
 #include "base/pool.h"
 
 void bvh_build_params_default(struct bvh_build_params *params)
@@ -112,24 +111,25 @@ void bvh_release(struct bvh *bvh)
     memset(bvh, 0, sizeof(*bvh));
 }
 
-/* The gather's shared state on a pool: slots in chunks of GATHER_CHUNK. */
+/* The gather's inputs and output. */
 struct gather_job {
     const struct bvh *bvh;
     const float *positions;
     const uint32_t *indices;
     float *tri;
-    uint32_t next; /* atomic: the next chunk */
 };
 
-/* Slots per chunk: 64 KB of leaf-ordered triangles written per chunk,
- * few enough chunks that the shared counter costs nothing. */
+/* Slots (and triangles, for the boxes) per chunk: 64 KB of leaf-ordered
+ * triangles written per chunk, few enough chunks that the shared counter
+ * costs nothing. */
 #define GATHER_CHUNK 2048u
 /* Below this many slots the gather stays on the calling thread: it is
  * shorter than waking the pool. */
 #define GATHER_PARALLEL_MIN 16384u
 
-static void gather_slots(const struct gather_job *g, uint32_t begin, uint32_t end)
+static void gather_slots(void *arg, uint32_t begin, uint32_t end)
 {
+    const struct gather_job *g = arg;
     for (uint32_t slot = begin; slot < end; slot++) {
         const uint32_t *vi = &g->indices[3 * (size_t)g->bvh->prim_index[slot]];
         float *dst = &g->tri[9 * (size_t)slot];
@@ -142,20 +142,6 @@ static void gather_slots(const struct gather_job *g, uint32_t begin, uint32_t en
     }
 }
 
-static void gather_task(void *arg, int worker)
-{
-    struct gather_job *g = arg;
-    (void)worker;
-    for (;;) {
-        uint64_t begin = (uint64_t)rt_atomic_fetch_add_relaxed(&g->next, 1u) * GATHER_CHUNK;
-        if (begin >= g->bvh->prim_count)
-            return;
-        uint64_t end = begin + GATHER_CHUNK;
-        gather_slots(g, (uint32_t)begin,
-                     end < g->bvh->prim_count ? (uint32_t)end : g->bvh->prim_count);
-    }
-}
-
 float *accel_gather_triangles_pool(const struct bvh *bvh, const float *positions,
                                    const uint32_t *indices, struct rt_pool *pool)
 {
@@ -164,42 +150,26 @@ float *accel_gather_triangles_pool(const struct bvh *bvh, const float *positions
                                   sizeof(*tri));
     if (!tri)
         return NULL;
-    struct gather_job g = {bvh, positions, indices, tri, 0};
-    if (rt_pool_threads(pool) < 2 || bvh->prim_count < GATHER_PARALLEL_MIN)
-        gather_slots(&g, 0, bvh->prim_count);
-    else
-        rt_pool_run(pool, gather_task, &g);
+    struct gather_job g = {bvh, positions, indices, tri};
+    rt_pool_run_range(pool, 0, bvh->prim_count, GATHER_CHUNK, GATHER_PARALLEL_MIN, gather_slots,
+                      &g);
     return tri;
 }
 
-/* The triangle boxes' shared state on a pool, as the gather's. */
+/* The triangle boxes' inputs and output. */
 struct boxes_job {
     const float *positions;
     const uint32_t *indices;
-    uint32_t count;
     struct aabb *boxes;
-    uint32_t next; /* atomic: the next chunk */
 };
 
-static void triangle_boxes(const struct boxes_job *b, uint32_t begin, uint32_t end)
+static void triangle_boxes(void *arg, uint32_t begin, uint32_t end)
 {
+    const struct boxes_job *b = arg;
     for (uint32_t j = begin; j < end; j++) {
         b->boxes[j] = aabb_empty();
         for (int k = 0; k < 3; k++)
             aabb_grow_point(&b->boxes[j], &b->positions[3 * (size_t)b->indices[3 * (size_t)j + k]]);
-    }
-}
-
-static void boxes_task(void *arg, int worker)
-{
-    struct boxes_job *b = arg;
-    (void)worker;
-    for (;;) {
-        uint64_t begin = (uint64_t)rt_atomic_fetch_add_relaxed(&b->next, 1u) * GATHER_CHUNK;
-        if (begin >= b->count)
-            return;
-        uint64_t end = begin + GATHER_CHUNK;
-        triangle_boxes(b, (uint32_t)begin, end < b->count ? (uint32_t)end : b->count);
     }
 }
 
@@ -209,11 +179,8 @@ struct aabb *accel_triangle_boxes_pool(const float *positions, const uint32_t *i
     struct aabb *boxes = rt_realloc_array(NULL, count ? count : 1, sizeof(*boxes));
     if (!boxes)
         return NULL;
-    struct boxes_job b = {positions, indices, count, boxes, 0};
-    if (rt_pool_threads(pool) < 2 || count < GATHER_PARALLEL_MIN)
-        triangle_boxes(&b, 0, count);
-    else
-        rt_pool_run(pool, boxes_task, &b);
+    struct boxes_job b = {positions, indices, boxes};
+    rt_pool_run_range(pool, 0, count, GATHER_CHUNK, GATHER_PARALLEL_MIN, triangle_boxes, &b);
     return boxes;
 }
 

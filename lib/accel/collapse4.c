@@ -20,7 +20,6 @@
 #include <string.h>
 
 #include "base/alloc.h"
-#include "base/atomic.h"
 #include "base/pool.h"
 #include "trace/intersect.h"
 
@@ -377,11 +376,6 @@ struct collapse {
     int merge_left; /* close_small_lanes applies */
     struct scratch_node *scratch;
     const uint32_t *todo;
-    /* The nodes of the task the pool runs, [begin, end), in chunks. */
-    uint32_t begin;
-    uint32_t end;
-    uint32_t chunk;
-    uint32_t next; /* atomic: the next chunk */
     char *base;
     struct tri4_packet *packets;
     uint32_t *source;
@@ -397,12 +391,15 @@ struct collapse {
  * not contended, small enough that the chunks balance between threads. */
 #define COLLAPSE_CHUNK 256u
 
-/* Scratch node w's lanes from binary inner node todo[w]. */
-static void gather_node(const struct collapse *c, uint32_t w)
+/* Scratch nodes [lo, hi)'s lanes from binary inner nodes todo[w]. */
+static void gather_nodes(void *arg, uint32_t lo, uint32_t hi)
 {
-    gather(c->bvh, c->tri, c->todo[w], c->width, &c->scratch[w]);
-    if (c->merge_left)
-        close_small_lanes(c->bvh, c->tri, c->width, &c->scratch[w]);
+    const struct collapse *c = arg;
+    for (uint32_t w = lo; w < hi; w++) {
+        gather(c->bvh, c->tri, c->todo[w], c->width, &c->scratch[w]);
+        if (c->merge_left)
+            close_small_lanes(c->bvh, c->tri, c->width, &c->scratch[w]);
+    }
 }
 
 /* Numbers the children of level [begin, end): inner lanes get the next
@@ -451,47 +448,11 @@ static void write_node(const struct collapse *c, uint32_t w)
         write_node8((struct bvh8_node *)(void *)c->base + w, c->bvh, s);
 }
 
-/* Runs step(c, w) for w in [c->begin, c->end), chunks taken in turn
- * from the shared counter. */
-static void run_chunks(struct collapse *c, void (*step)(const struct collapse *, uint32_t))
+/* Wide nodes [lo, hi) with write_node. */
+static void write_nodes(void *arg, uint32_t lo, uint32_t hi)
 {
-    for (;;) {
-        uint32_t k = rt_atomic_fetch_add_relaxed(&c->next, 1u);
-        uint64_t lo = (uint64_t)c->begin + (uint64_t)k * c->chunk;
-        if (lo >= c->end)
-            return;
-        uint32_t hi = lo + c->chunk < c->end ? (uint32_t)(lo + c->chunk) : c->end;
-        for (uint32_t w = (uint32_t)lo; w < hi; w++)
-            step(c, w);
-    }
-}
-
-static void level_task(void *arg, int worker)
-{
-    (void)worker;
-    run_chunks(arg, gather_node);
-}
-
-static void write_task(void *arg, int worker)
-{
-    (void)worker;
-    run_chunks(arg, write_node);
-}
-
-/* step over [begin, end): on the pool when the range is large enough. */
-static void for_nodes(struct collapse *c, struct rt_pool *pool, uint32_t begin, uint32_t end,
-                      rt_task_fn task, void (*step)(const struct collapse *, uint32_t))
-{
-    if (!pool || end - begin < COLLAPSE_PARALLEL_MIN) {
-        for (uint32_t w = begin; w < end; w++)
-            step(c, w);
-        return;
-    }
-    c->begin = begin;
-    c->end = end;
-    c->chunk = COLLAPSE_CHUNK;
-    c->next = 0;
-    rt_pool_run(pool, task, c);
+    for (uint32_t w = lo; w < hi; w++)
+        write_node(arg, w);
 }
 
 int accel_collapse_wide_pool(struct bvh4 *out, const struct bvh *bvh, const float *tri,
@@ -502,8 +463,6 @@ int accel_collapse_wide_pool(struct bvh4 *out, const struct bvh *bvh, const floa
         return -1;
     if (bvh->node_count == 0)
         return 0;
-    if (rt_pool_threads(pool) < 2)
-        pool = NULL;
     /* Every wide node but the root consumes a binary inner node, so
      * there are at most (node_count - 1) / 2 + 1 of them. */
     uint32_t cap = (bvh->node_count - 1) / 2 + 1;
@@ -546,7 +505,8 @@ int accel_collapse_wide_pool(struct bvh4 *out, const struct bvh *bvh, const floa
         todo[0] = 0;
         for (uint32_t begin = 0; begin < count;) {
             uint32_t end = count;
-            for_nodes(&c, pool, begin, end, level_task, gather_node);
+            rt_pool_run_range(pool, begin, end, COLLAPSE_CHUNK, COLLAPSE_PARALLEL_MIN,
+                              gather_nodes, &c);
             number_level(&c, begin, end, todo, &count, &packets);
             begin = end;
         }
@@ -564,7 +524,7 @@ int accel_collapse_wide_pool(struct bvh4 *out, const struct bvh *bvh, const floa
     c.packets = pk;
     c.source = source;
     c.packet_slot = packet_slot;
-    for_nodes(&c, pool, 0, count, write_task, write_node);
+    rt_pool_run_range(pool, 0, count, COLLAPSE_CHUNK, COLLAPSE_PARALLEL_MIN, write_nodes, &c);
     rt_free(scratch);
     rt_free(todo);
     out->width = width;

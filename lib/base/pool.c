@@ -15,6 +15,7 @@
 #include <stdint.h>
 
 #include "base/alloc.h"
+#include "base/atomic.h"
 #include "base/timer.h"
 
 #include <unistd.h>
@@ -129,6 +130,43 @@ void rt_pool_run(struct rt_pool *pool, rt_task_fn fn, void *arg)
     pool->task_cpu_ms += cpu;
     pool->caller_task_cpu_ms += cpu;
     pthread_mutex_unlock(&pool->lock);
+}
+
+/* rt_pool_run_range's shared state. */
+struct range_job {
+    rt_range_fn fn;
+    void *arg;
+    uint32_t begin;
+    uint32_t end;
+    uint32_t chunk;
+    uint32_t next; /* atomic: the next chunk */
+};
+
+static void range_task(void *arg, int worker)
+{
+    struct range_job *job = arg;
+    (void)worker;
+    for (;;) {
+        const uint64_t k = rt_atomic_fetch_add_relaxed(&job->next, 1u);
+        const uint64_t lo = (uint64_t)job->begin + k * job->chunk;
+        if (lo >= job->end)
+            return;
+        const uint64_t hi = lo + job->chunk < job->end ? lo + job->chunk : job->end;
+        job->fn(job->arg, (uint32_t)lo, (uint32_t)hi);
+    }
+}
+
+void rt_pool_run_range(struct rt_pool *pool, uint32_t begin, uint32_t end, uint32_t chunk,
+                       uint32_t min_parallel, rt_range_fn fn, void *arg)
+{
+    if (begin >= end)
+        return;
+    if (rt_pool_threads(pool) < 2 || end - begin < min_parallel) {
+        fn(arg, begin, end);
+        return;
+    }
+    struct range_job job = {fn, arg, begin, end, chunk, 0};
+    rt_pool_run(pool, range_task, &job);
 }
 
 double rt_pool_work_ms(const struct rt_pool *pool)

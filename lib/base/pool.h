@@ -5,11 +5,14 @@
  *
  * A pool of `threads` runs a task as threads - 1 workers plus the calling
  * thread; the task shares its work out itself (atomic counters), so the
- * pool does no scheduling.  Pools are created when first needed: a
+ * pool does no scheduling (rt_pool_run_range is that sharing for a range
+ * of independent items).  Pools are created when first needed: a
  * context that never renders or builds in parallel starts no thread.
  */
 #ifndef RT_BASE_POOL_H
 #define RT_BASE_POOL_H
+
+#include <stdint.h>
 
 struct rt_pool;
 typedef void (*rt_task_fn)(void *arg, int worker);
@@ -23,6 +26,17 @@ struct rt_pool *rt_pool_create(int threads);
  * when all have finished.  pool may be NULL: then fn(arg, 0) runs alone.
  * Not reentrant: one task at a time per pool. */
 void rt_pool_run(struct rt_pool *pool, rt_task_fn fn, void *arg);
+
+/* Runs fn(arg, lo, hi) over the items [begin, end) in chunks of `chunk`
+ * (> 0) that the pool's threads take in turn from a shared counter, or
+ * once over the whole range on the calling thread when the pool has
+ * fewer than two threads or the range holds fewer than min_parallel
+ * items (shorter than waking the workers).  When fn's work on an item
+ * depends on nothing but the item, what it writes is the same on any
+ * pool.  Uses the pool for the duration of the call. */
+typedef void (*rt_range_fn)(void *arg, uint32_t lo, uint32_t hi);
+void rt_pool_run_range(struct rt_pool *pool, uint32_t begin, uint32_t end, uint32_t chunk,
+                       uint32_t min_parallel, rt_range_fn fn, void *arg);
 
 /* Threads a task runs on, the caller included; 1 for NULL. */
 int rt_pool_threads(const struct rt_pool *pool);

@@ -354,6 +354,29 @@ static __m128 texel_lanes(const struct scene_texture_level *lv, int i, int j)
     const __m128i b = _mm_unpacklo_epi16(_mm_unpacklo_epi8(_mm_cvtsi32_si128(bits), zero), zero);
     return _mm_div_ps(_mm_cvtepi32_ps(b), _mm_set1_ps(255.0f));
 }
+
+/* GL 1.1 eq. 3.17's four texels from (i, j) (before wrapping) weighted
+ * by a and b as nested interpolations, in four lanes: where the four
+ * texels agree the result is exactly their value (an opaque alpha stays
+ * 1). */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline __m128 bilinear_lanes(const struct scene_texture *tex,
+                                    const struct scene_texture_level *lv, long i, long j,
+                                    float a, float b)
+{
+    const int i0 = wrap_index(i, lv->width, tex->wrap_s);
+    const int i1 = wrap_index(i + 1, lv->width, tex->wrap_s);
+    const int j0 = wrap_index(j, lv->height, tex->wrap_t);
+    const int j1 = wrap_index(j + 1, lv->height, tex->wrap_t);
+    const __m128 c00 = texel_lanes(lv, i0, j0), c10 = texel_lanes(lv, i1, j0);
+    const __m128 c01 = texel_lanes(lv, i0, j1), c11 = texel_lanes(lv, i1, j1);
+    const __m128 va = _mm_set1_ps(a);
+    const __m128 bottom = _mm_add_ps(c00, _mm_mul_ps(va, _mm_sub_ps(c10, c00)));
+    const __m128 top = _mm_add_ps(c01, _mm_mul_ps(va, _mm_sub_ps(c11, c01)));
+    return _mm_add_ps(bottom, _mm_mul_ps(_mm_set1_ps(b), _mm_sub_ps(top, bottom)));
+}
 #endif
 
 /* scene_texture_sample_level with the coordinates already reduced
@@ -379,20 +402,15 @@ static void sample_level_reduced(const struct scene_texture *tex, int level,
     const double uc = u - 0.5, vc = v - 0.5;
     const double fi = floor_small(uc), fj = floor_small(vc);
     const float a = (float)(uc - fi), b = (float)(vc - fj);
+#if TEXTURE_LANES
+    _mm_storeu_ps(rgba, bilinear_lanes(tex, lv, (long)fi, (long)fj, a, b));
+#else
+    /* The same weights as nested interpolations: where the four texels
+     * agree the result is exactly their value (an opaque alpha stays 1). */
     const int i0 = wrap_index((long)fi, w, tex->wrap_s);
     const int i1 = wrap_index((long)fi + 1, w, tex->wrap_s);
     const int j0 = wrap_index((long)fj, h, tex->wrap_t);
     const int j1 = wrap_index((long)fj + 1, h, tex->wrap_t);
-    /* The same weights as nested interpolations: where the four texels
-     * agree the result is exactly their value (an opaque alpha stays 1). */
-#if TEXTURE_LANES
-    const __m128 c00 = texel_lanes(lv, i0, j0), c10 = texel_lanes(lv, i1, j0);
-    const __m128 c01 = texel_lanes(lv, i0, j1), c11 = texel_lanes(lv, i1, j1);
-    const __m128 va = _mm_set1_ps(a);
-    const __m128 bottom = _mm_add_ps(c00, _mm_mul_ps(va, _mm_sub_ps(c10, c00)));
-    const __m128 top = _mm_add_ps(c01, _mm_mul_ps(va, _mm_sub_ps(c11, c01)));
-    _mm_storeu_ps(rgba, _mm_add_ps(bottom, _mm_mul_ps(_mm_set1_ps(b), _mm_sub_ps(top, bottom))));
-#else
     float c00[4], c10[4], c01[4], c11[4];
     fetch_texel(lv, i0, j0, c00);
     fetch_texel(lv, i1, j0, c10);
@@ -449,19 +467,8 @@ static void sample_trilinear(const struct scene_texture *tex, int level, double 
     _mm_storeu_si128((__m128i *)i, ii);
     _mm_storeu_si128((__m128i *)j, ji);
     __m128 c[2];
-    for (int l = 0; l < 2; l++) {
-        const int w = lv[l]->width, h = lv[l]->height;
-        const int i0 = wrap_index(i[l], w, tex->wrap_s);
-        const int i1 = wrap_index((long)i[l] + 1, w, tex->wrap_s);
-        const int j0 = wrap_index(j[l], h, tex->wrap_t);
-        const int j1 = wrap_index((long)j[l] + 1, h, tex->wrap_t);
-        const __m128 c00 = texel_lanes(lv[l], i0, j0), c10 = texel_lanes(lv[l], i1, j0);
-        const __m128 c01 = texel_lanes(lv[l], i0, j1), c11 = texel_lanes(lv[l], i1, j1);
-        const __m128 va = _mm_set1_ps(a[l]);
-        const __m128 bottom = _mm_add_ps(c00, _mm_mul_ps(va, _mm_sub_ps(c10, c00)));
-        const __m128 top = _mm_add_ps(c01, _mm_mul_ps(va, _mm_sub_ps(c11, c01)));
-        c[l] = _mm_add_ps(bottom, _mm_mul_ps(_mm_set1_ps(b[l]), _mm_sub_ps(top, bottom)));
-    }
+    for (int l = 0; l < 2; l++)
+        c[l] = bilinear_lanes(tex, lv[l], i[l], j[l], a[l], b[l]);
     _mm_storeu_ps(rgba, _mm_add_ps(c[0], _mm_mul_ps(_mm_set1_ps(f), _mm_sub_ps(c[1], c[0]))));
 }
 #endif

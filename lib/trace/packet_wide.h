@@ -104,14 +104,8 @@ static inline struct wide_state *packet_ready(struct packet_state *p, unsigned r
     struct wide_state *s = &p->s[r];
     if (!(p->s_ready >> r & 1u)) {
         p->s_ready |= 1u << r;
-        s->ray = &p->rays[r];
-        s->any_hit = p->any_hit;
-        s->hit = p->any_hit ? NULL : &p->hits[r];
-        s->found = 0;
-        s->best = p->t_max[r];
-        s->box_limit = p->t_max[r] * ISECT_BOX_FAR_SCALE; /* as walk_wide */
-        s->node_tests = 0;
-        s->triangle_tests = 0;
+        wide_state_init(s, &p->rays[r], p->t_max[r], p->any_hit,
+                        p->any_hit ? NULL : &p->hits[r]);
     }
     return s;
 }
@@ -921,15 +915,7 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
         for (unsigned r = 0; r < TRACE_PACKET; r++) {
             if (!(active >> r & 1u))
                 continue;
-            struct wide_state *s = &p.s[r];
-            s->ray = &rays[r];
-            s->any_hit = any_hit;
-            s->hit = any_hit ? NULL : &hits[r];
-            s->found = 0;
-            s->best = t_max[r];
-            s->box_limit = t_max[r] * ISECT_BOX_FAR_SCALE; /* as walk_wide */
-            s->node_tests = 0;
-            s->triangle_tests = 0;
+            wide_state_init(&p.s[r], &rays[r], t_max[r], any_hit, any_hit ? NULL : &hits[r]);
         }
 #if defined(__AVX__)
         p.s_ready = active;

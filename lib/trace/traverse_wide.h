@@ -782,9 +782,12 @@ static inline int walk_wide8_ray(const struct bvh4 *wide, struct wide_state *s, 
                 tri_tests += cur_count;
             for (;;) {
                 const uint32_t n = cur_count < 4 ? cur_count : 4;
-                stop = any_hit         ? wide8_packet_any(s, p, n)
-                       : leave_early ? wide8_packet_closest(s, p, n)
-                                            : wide8_packet_full(s, p, n);
+                if (any_hit)
+                    stop = wide8_packet_any(s, p, n);
+                else if (leave_early)
+                    stop = wide8_packet_closest(s, p, n);
+                else
+                    stop = wide8_packet_full(s, p, n);
                 if (stop || cur_count <= 4)
                     break;
                 cur_count -= 4;
