@@ -628,7 +628,6 @@ static int block_pixel_inside(const int *vp, int x0, int y0, int bx, int by, int
     return x < x0 + RENDER_TILE_SIZE && x < vp[2] && y < y0 + RENDER_TILE_SIZE && y < vp[3];
 }
 
-
 /* The eye light's direct hits of a block, shaded together
  * (shade_eye_hits: their texture levels of detail two at a time). */
 struct eye_batch {
@@ -740,9 +739,8 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                     continue;
                 }
 #endif
-                if (x < x0 + RENDER_TILE_SIZE && x < vp[2] && y < y0 + RENDER_TILE_SIZE &&
-                    y < vp[3] && primary_ray(&cache, x, y, pk.org[i], pk.dir[i],
-                                             &pk.tmax[i], &cone[i])) {
+                if (block_pixel_inside(vp, x0, y0, bx, by, i) &&
+                    primary_ray(&cache, x, y, pk.org[i], pk.dir[i], &pk.tmax[i], &cone[i])) {
                     pk.tmin[i] = 0.0f;
                     pk.active |= 1u << i;
                 }
@@ -773,10 +771,9 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                                 (const float(*)[3])pk.dir, cone, surf, primed);
             struct eye_batch eyes = {.n = 0};
             for (int i = 0; i < TRACE_PACKET; i++) {
-                const int x = bx + i % RENDER_BLOCK_W, y = by + i / RENDER_BLOCK_W;
-                if (!(x < x0 + RENDER_TILE_SIZE && x < vp[2] && y < y0 + RENDER_TILE_SIZE &&
-                      y < vp[3]))
+                if (!block_pixel_inside(vp, x0, y0, bx, by, i))
                     continue;
+                const int x = bx + i % RENDER_BLOCK_W, y = by + i / RENDER_BLOCK_W;
                 float *px = &pass->fb[4 * ((size_t)(vp[1] + y) * pass->fb_width + vp[0] + x)];
                 if (!(pk.active >> i & 1u)) {
                     memcpy(px, st->clear_color, 4 * sizeof(float));
