@@ -424,6 +424,18 @@ static double mean_of(const double *x, int n)
     return n ? s / n : 0.0;
 }
 
+/* The largest of n positive values over the smallest: 1 when the runs
+ * agree; 0 when a value is not positive. */
+static double spread_of(const double *x, int n)
+{
+    double lo = x[0], hi = x[0];
+    for (int i = 1; i < n; i++) {
+        lo = x[i] < lo ? x[i] : lo;
+        hi = x[i] > hi ? x[i] : hi;
+    }
+    return lo > 0.0 ? hi / lo : 0.0;
+}
+
 /* ------------------------------------------------------------ results */
 
 struct scene_result {
@@ -443,6 +455,11 @@ struct scene_result {
         render_ms[SHADINGS][THREAD_COUNTS];
     double rays[SHADINGS];
     int image_mismatches[SHADINGS];
+    /* 4, by the CPU clock: process CPU ms per frame (median over runs),
+     * and each run's wall and CPU ms per frame, in run order */
+    double cpu_ms[SHADINGS][THREAD_COUNTS];
+    double run_wall_ms[SHADINGS][THREAD_COUNTS][BART_MAX_RUNS];
+    double run_cpu_ms[SHADINGS][THREAD_COUNTS][BART_MAX_RUNS];
     /* 6. overhead: [shading][0 dynamic, 1 flat] */
     int overhead_frames, overhead_runs, unsettled;
     double overhead_ms[SHADINGS][2];
@@ -470,6 +487,7 @@ static int fps_measure(const struct bench_options *opts, struct bart_ctx c[THREA
     double describe[SHADINGS][THREAD_COUNTS][BART_MAX_RUNS];
     double update[SHADINGS][THREAD_COUNTS][BART_MAX_RUNS];
     double render[SHADINGS][THREAD_COUNTS][BART_MAX_RUNS];
+    double cpu[SHADINGS][THREAD_COUNTS][BART_MAX_RUNS];
     unsigned char *pixels = malloc((size_t)w * (size_t)h * 4);
     struct frame fr;
     if (!pixels)
@@ -506,13 +524,14 @@ static int fps_measure(const struct bench_options *opts, struct bart_ctx c[THREA
                 render_frame(&c[k], 0, w, h, 0, &fr);
                 set_shading(s);
                 total[s][k][run] = describe[s][k][run] = update[s][k][run] = render[s][k][run] =
-                    0.0;
+                    cpu[s][k][run] = 0.0;
                 for (int i = 0; i < n; i++) {
                     render_frame(&c[k], frames[i], w, h, 0, &fr);
                     total[s][k][run] += fr.total_ms;
                     describe[s][k][run] += fr.describe_ms;
                     update[s][k][run] += fr.update_ms;
                     render[s][k][run] += fr.render_ms;
+                    cpu[s][k][run] += fr.cpu_ms;
                     if (run == 0 && k == 0)
                         r->rays[s] += fr.rays / n;
                     uint64_t hash = image_hash(w, h, pixels);
@@ -527,6 +546,12 @@ static int fps_measure(const struct bench_options *opts, struct bart_ctx c[THREA
         }
     for (int s = 0; s < SHADINGS; s++)
         for (int k = 0; k < THREAD_COUNTS; k++) {
+            /* per run, before bench_median reorders the sums */
+            for (int run = 0; run < runs; run++) {
+                r->run_wall_ms[s][k][run] = total[s][k][run] / n;
+                r->run_cpu_ms[s][k][run] = cpu[s][k][run] / n;
+            }
+            r->cpu_ms[s][k] = bench_median(cpu[s][k], runs) / n;
             double med = bench_median(total[s][k], runs);
             r->fps[s][k] = med > 0.0 ? 1e3 * n / med : 0.0;
             r->describe_ms[s][k] = bench_median(describe[s][k], runs) / n;
@@ -1282,6 +1307,84 @@ static void print_tables(const struct bench_options *opts, struct scene_result *
 
 }
 
+/*
+ * The frames-per-second runs by the CPU clock, as `rtbench dynamic-cpu`
+ * measures the update strategies: the process's CPU time
+ * (CLOCK_PROCESS_CPUTIME_ID, every thread of the process summed) over the
+ * same timed calls as the wall clock.  Time slices that other processes
+ * take from our cores do not count, so on a shared machine it varies far
+ * less between runs than the wall clock; what is left is the slowdown
+ * contention causes in our own instructions (shared caches, a sibling
+ * hyperthread).  The render pool's idle threads sleep on a condition
+ * variable, so waiting costs no CPU time: at threads=2 the figure is the
+ * work of both threads, not a speedup, and its ratio to threads=1 is the
+ * work the second thread adds.  With --out, every run's figures go to
+ * bart_fps_runs.dat for comparisons run by run.
+ */
+static void print_fps_cpu(const struct scene_result *res)
+{
+    const int runs = res[0].fps_runs;
+    char key[96];
+    FILE *data = report_data_file("bart_fps_runs.dat");
+    report_printf("\nThe same runs by the CPU clock (as `rtbench dynamic-cpu` measures): CPU ms "
+                  "= process CPU time per frame, every thread summed, over the same calls as "
+                  "the wall clock (describe + update + render), median of %d run%s; frames per "
+                  "CPU-s = 1000 / CPU ms, the fps the frames would reach with all their work on "
+                  "one core that nothing else used; time slices other processes take are not "
+                  "counted, so this figure is the one to compare between builds on a shared "
+                  "machine. At threads=2 it counts both threads' work (idle render threads "
+                  "sleep), so it is not a speedup: \"CPU vs threads=1\" is the work the second "
+                  "thread adds. CPU share of each run (in run order) = CPU time / (wall time x "
+                  "threads): below 100%% when other processes took our cores, or at threads=2 "
+                  "when a thread waited (describe and update run on the calling thread alone). "
+                  "Spread = the slowest run's ms per frame / the fastest's, wall and CPU.\n\n",
+                  runs, runs == 1 ? "" : "s");
+    report_table_header("scene|shading|threads|fps (wall)|CPU ms/frame|frames per CPU-s|"
+                        "CPU vs threads=1|CPU share of each run|spread wall|spread CPU");
+    if (data)
+        fprintf(data, "# scene shading threads run wall_ms_per_frame cpu_ms_per_frame "
+                      "share_percent\n");
+    for (int i = 0; i < SCENES; i++)
+        for (int s = 0; s < SHADINGS; s++)
+            for (int k = 0; k < THREAD_COUNTS; k++) {
+                const struct scene_result *r = &res[i];
+                const double *wall = r->run_wall_ms[s][k], *cpu = r->run_cpu_ms[s][k];
+                char shares[16 * BART_MAX_RUNS], vs1[16], spread_wall[16], spread_cpu[16];
+                size_t used = 0;
+                shares[0] = '\0';
+                for (int run = 0; run < runs; run++) {
+                    double share = wall[run] > 0.0 ? 100.0 * cpu[run] / (wall[run] * (k + 1)) : 0.0;
+                    used += (size_t)snprintf(shares + used, sizeof(shares) - used, "%s%.0f%%",
+                                             run ? ", " : "", share);
+                    if (used >= sizeof(shares))
+                        used = sizeof(shares) - 1;
+                    if (data)
+                        fprintf(data, "%s %s %d %d %.3f %.3f %.1f\n", scene_info[i].name,
+                                shading_key[s], k + 1, run + 1, wall[run], cpu[run], share);
+                }
+                if (k > 0 && r->cpu_ms[s][0] > 0.0)
+                    snprintf(vs1, sizeof(vs1), "%.2fx", r->cpu_ms[s][k] / r->cpu_ms[s][0]);
+                else
+                    snprintf(vs1, sizeof(vs1), "-");
+                if (runs > 1) {
+                    snprintf(spread_wall, sizeof(spread_wall), "%.2fx", spread_of(wall, runs));
+                    snprintf(spread_cpu, sizeof(spread_cpu), "%.2fx", spread_of(cpu, runs));
+                } else {
+                    snprintf(spread_wall, sizeof(spread_wall), "-");
+                    snprintf(spread_cpu, sizeof(spread_cpu), "-");
+                }
+                double cpu_fps = r->cpu_ms[s][k] > 0.0 ? 1e3 / r->cpu_ms[s][k] : 0.0;
+                report_row("%s|%s|%d|%.2f|%.1f|%.2f|%s|%s|%s|%s", scene_info[i].name,
+                           shading_label[s], k + 1, r->fps[s][k], r->cpu_ms[s][k], cpu_fps, vs1,
+                           shares, spread_wall, spread_cpu);
+                snprintf(key, sizeof(key), "bart.%s.%s.t%d.cpu_fps", scene_info[i].name,
+                         shading_key[s], k + 1);
+                report_metric(key, cpu_fps, 1);
+            }
+    if (data)
+        fclose(data);
+}
+
 /* The frames-per-second tables (4): the whole section prints them after
  * the scenes, top level and museum update; `rtbench bart-fps` alone. */
 static void print_fps(const struct bench_options *opts, const struct scene_result *res)
@@ -1349,6 +1452,7 @@ static void print_fps(const struct bench_options *opts, const struct scene_resul
                        r->fps[s][1] > 0.0 ? 1e3 / r->fps[s][1] : 0.0,
                        r->fps[s][0] > 0.0 ? 1e3 / r->fps[s][0] : 0.0);
         }
+    print_fps_cpu(res);
 }
 
 static void print_overhead(const struct bench_options *opts, const struct scene_result *res)
