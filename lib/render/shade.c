@@ -364,10 +364,17 @@ void shade_eye_hits(const struct shade_context *sc, int n, const float *const di
     int lods = 0;
     /* shade_hit's steps up to the level of detail for every hit, ... */
     for (int i = 0; i < n; i++) {
-        const struct shade_cone at_hit = cone_at(cone[i], dir[i], hits[i]->t);
+        /* cone_at's |dir| and vec3_normalize's are the same sqrtf of the
+         * same dot product: taken once, then each one's operations. */
+        const float len = sqrtf(vec3_dot(dir[i], dir[i]));
+        const float width = fabsf(cone[i].width + cone[i].spread * (hits[i]->t * len));
         memcpy(unit_dir[i], dir[i], sizeof(unit_dir[i]));
-        vec3_normalize(unit_dir[i]);
-        surface_fetch_colour_begin(sc, hits[i], dir[i], at_hit.width, &e[i], &tex[i]);
+        if (len > 0.0f && isfinite(len)) {
+            const float inv = 1.0f / len;
+            for (int k = 0; k < 3; k++)
+                unit_dir[i][k] *= inv;
+        }
+        surface_fetch_colour_begin(sc, hits[i], dir[i], width, &e[i], &tex[i]);
         if (tex[i].lod)
             lod[lods++] = &tex[i];
     }
