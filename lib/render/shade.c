@@ -172,7 +172,10 @@ static int same_hit(const struct trace_scene_hit *a, const struct trace_scene_hi
 
 /* The eye light's colour of a hit whose surface colours are e, seen
  * along the unit unit_dir. */
-static void eye_light(const struct render_state *st, const struct surface_colour *e,
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void eye_light(const struct render_state *st, const struct surface_colour *e,
                       const float global_ambient[4], const float unit_dir[3], float rgba[4])
 {
     float c[3];

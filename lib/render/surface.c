@@ -22,6 +22,14 @@
 #define SURFACE_PAIRS 0
 #endif
 
+/* Small steps of the per-hit path inlined into their callers: their
+ * calls' spills and argument set-up cost a tenth or more of their work. */
+#if defined(__GNUC__)
+#define SURFACE_INLINE static inline __attribute__((always_inline))
+#else
+#define SURFACE_INLINE static inline
+#endif
+
 static void transform_normal(const double m[16], const float in[3], float out[3])
 {
     for (int r = 0; r < 3; r++)
@@ -236,7 +244,7 @@ static int lod_near(double s2, double xs, double top, float *lambda)
  * last hit was on the same triangle (and, for the texel edges, the same
  * texture and coordinates), else computed into it (or into `scratch`
  * without a cache). */
-static const struct surface_lod *lod_triangle(const struct shade_context *sc,
+SURFACE_INLINE const struct surface_lod *lod_triangle(const struct shade_context *sc,
                                               const struct scene_texture *tex,
                                               const struct scene_instance *inst,
                                               const struct scene_mesh *mesh, uint32_t prim,
@@ -293,7 +301,7 @@ static double lod_top(int level_count)
 /* The end of texture_lod, from the footprint's two texel vectors ja
  * (the long axis, along) and jb (across), their squared lengths sa, sb
  * and sbc = sb cosine^2. */
-static float lod_axes(const double ja[2], const double jb[2], double sa, double sb, double sbc,
+SURFACE_INLINE float lod_axes(const double ja[2], const double jb[2], double sa, double sb, double sbc,
                       double cosine, float width, double top)
 {
     /* major = hypot(ja) width / cosine, minor = hypot(jb) width: major
@@ -407,7 +415,7 @@ static void pair_cross(const __m128d a[3], const __m128d b[3], __m128d out[3])
 /* texel_vector of the in-plane vectors e in lanes (lane i: triangle
  * lane i's w1, w2, nn, nn2, a1, a2), each lane texel_vector's operations
  * in its order. */
-static void pair_texel_vector(const __m128d e[3], const __m128d w1[3], const __m128d w2[3],
+SURFACE_INLINE void pair_texel_vector(const __m128d e[3], const __m128d w1[3], const __m128d w2[3],
                               const __m128d nn[3], __m128d nn2, const __m128d a1[2],
                               const __m128d a2[2], __m128d out[2])
 {
@@ -559,7 +567,7 @@ static const struct scene_texture *texture_named(const struct shade_context *sc,
     return tex;
 }
 
-static void texture_begin(const struct shade_context *sc, const struct scene_instance *inst,
+SURFACE_INLINE void texture_begin(const struct shade_context *sc, const struct scene_instance *inst,
                           const struct scene_mesh *mesh, uint32_t prim, const uint32_t v[3],
                           float b0, float b1, float b2, const float ng[3], const float dir[3],
                           float width, uint32_t name, struct surface_texture *t)
@@ -712,7 +720,7 @@ struct hit_triangle {
     uint32_t provoking;
 };
 
-static void hit_triangle(const struct shade_context *sc, const struct trace_scene_hit *hit,
+SURFACE_INLINE void hit_triangle(const struct shade_context *sc, const struct trace_scene_hit *hit,
                          struct hit_triangle *t)
 {
     t->inst = shade_hit_instance(sc, hit);
@@ -731,10 +739,7 @@ static void hit_triangle(const struct shade_context *sc, const struct trace_scen
 /* The unit geometric normal facing the ray along dir, whether the ray
  * hit the front face, and the shading normal on the same side.  Inlined:
  * the call's spills and argument set-up were a tenth of its cost. */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline void hit_normals(const struct shade_context *sc, const struct hit_triangle *t,
+SURFACE_INLINE void hit_normals(const struct shade_context *sc, const struct hit_triangle *t,
                         uint32_t prim, const float dir[3], float ng[3], float n[3], int *front)
 {
     const struct scene_mesh *mesh = t->mesh;
@@ -795,7 +800,7 @@ static inline void hit_normals(const struct shade_context *sc, const struct hit_
  * material, when it is on for the triangle (as recorded or as at the
  * call) or the primitive is unlit (`unlit`, see surface_fetch); 0 when
  * neither. */
-static int hit_color_material(const struct hit_triangle *t, int unlit, float c[4])
+SURFACE_INLINE int hit_color_material(const struct hit_triangle *t, int unlit, float c[4])
 {
     const uint8_t flags = t->flags;
     int color_material = (flags & TRI_INHERIT_COLOR_MATERIAL)
