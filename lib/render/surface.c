@@ -30,6 +30,18 @@
 #define SURFACE_INLINE static inline
 #endif
 
+/* What a hit's texture lookup needs (surface_fetch_colours): the
+ * colours come first, then the level of detail from the rest, then the
+ * lookup. */
+struct surface_texture {
+    const struct scene_texture *tex; /* NULL: nothing to apply */
+    float st[2];                     /* the interpolated coordinates */
+    float lambda;                    /* the level of detail, once known */
+    int lod;                         /* 1: lambda still to compute from the rest */
+    float ng[3], dir[3], width;
+    struct surface_lod tri;
+};
+
 static void transform_normal(const double m[16], const float in[3], float out[3])
 {
     for (int r = 0; r < 3; r++)
@@ -237,7 +249,7 @@ static int lod_near(double s2, double xs, double top, float *lambda)
  *
  * texture_lod (below) is lod_triangle, the part of the triangle, then
  * lod_ray, the part of the ray; lod_ray_pair computes the latter for two
- * hits at once (surface_texture_lods).
+ * hits at once (texture_lods).
  */
 
 /* The triangle-only part of texture_lod: from the tile's cache when the
@@ -433,7 +445,7 @@ SURFACE_INLINE void pair_texel_vector(const __m128d e[3], const __m128d w1[3], c
  * doubles; a lane that leaves lod_ray's common path (a degenerate
  * triangle or direction, a ray meeting the plane head-on) is computed
  * again by lod_ray itself. */
-static void lod_ray_pair(struct surface_texture *a, struct surface_texture *b)
+SURFACE_INLINE void lod_ray_pair(struct surface_texture *a, struct surface_texture *b)
 {
     const struct surface_lod *la = &a->tri, *lb = &b->tri;
     __m128d d[3], g[3], n[3];
@@ -500,7 +512,9 @@ static void lod_ray_pair(struct surface_texture *a, struct surface_texture *b)
 }
 #endif
 
-void surface_texture_lods(struct surface_texture *const *t, int n)
+/* The level of detail of the n textures t[i] with lod set, two at a
+ * time. */
+static void texture_lods(struct surface_texture *const *t, int n)
 {
     int i = 0;
 #if SURFACE_PAIRS
@@ -888,9 +902,10 @@ void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit 
  * The same operations on the same values as surface_fetch and
  * surface_resolve_material, so the same colours bit for bit.
  */
-void surface_fetch_colour_begin(const struct shade_context *sc, const struct trace_scene_hit *hit,
-                                const float dir[3], float width, struct surface_colour *s,
-                                struct surface_texture *tx)
+SURFACE_INLINE void fetch_colour_begin(const struct shade_context *sc,
+                                       const struct trace_scene_hit *hit, const float dir[3],
+                                       float width, struct surface_colour *s,
+                                       struct surface_texture *tx)
 {
     struct hit_triangle t;
     hit_triangle(sc, hit, &t);
@@ -925,19 +940,31 @@ void surface_fetch_colour_begin(const struct shade_context *sc, const struct tra
                       texture, tx);
 }
 
-void surface_fetch_colour_end(struct surface_colour *s, const struct surface_texture *t)
-{
-    texture_end(t, s->ambient, s->diffuse);
-}
-
 void surface_fetch_colour(const struct shade_context *sc, const struct trace_scene_hit *hit,
                           const float dir[3], float width, struct surface_colour *s)
 {
     struct surface_texture t;
-    surface_fetch_colour_begin(sc, hit, dir, width, s, &t);
+    fetch_colour_begin(sc, hit, dir, width, s, &t);
     if (t.lod)
         texture_lambda(&t);
-    surface_fetch_colour_end(s, &t);
+    texture_end(&t, s->ambient, s->diffuse);
+}
+
+void surface_fetch_colours(const struct shade_context *sc, int n,
+                           const struct trace_scene_hit *const hits[], const float *const dir[],
+                           const float width[], struct surface_colour s[])
+{
+    struct surface_texture tex[TRACE_PACKET];
+    struct surface_texture *lod[TRACE_PACKET];
+    int lods = 0;
+    for (int i = 0; i < n; i++) {
+        fetch_colour_begin(sc, hits[i], dir[i], width[i], &s[i], &tex[i]);
+        if (tex[i].lod)
+            lod[lods++] = &tex[i];
+    }
+    texture_lods(lod, lods);
+    for (int i = 0; i < n; i++)
+        texture_end(&tex[i], s[i].ambient, s[i].diffuse);
 }
 
 int surface_texel(const struct shade_context *sc, const struct trace_scene_hit *hit,
