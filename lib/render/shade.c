@@ -176,7 +176,8 @@ static int same_hit(const struct trace_scene_hit *a, const struct trace_scene_hi
 __attribute__((always_inline))
 #endif
 static inline void eye_light(const struct render_state *st, const struct surface_colour *e,
-                      const float global_ambient[4], const float unit_dir[3], float rgba[4])
+                             const float global_ambient[4], const float unit_dir[3],
+                             float rgba[4])
 {
     float c[3];
     float cosine = fabsf(vec3_dot(e->n, unit_dir));

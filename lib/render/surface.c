@@ -257,11 +257,12 @@ static int lod_near(double s2, double xs, double top, float *lambda)
  * texture and coordinates), else computed into it (or into `scratch`
  * without a cache). */
 SURFACE_INLINE const struct surface_lod *lod_triangle(const struct shade_context *sc,
-                                              const struct scene_texture *tex,
-                                              const struct scene_instance *inst,
-                                              const struct scene_mesh *mesh, uint32_t prim,
-                                              const uint32_t v[3], const float *const st[3],
-                                              struct surface_cache *scratch)
+                                                      const struct scene_texture *tex,
+                                                      const struct scene_instance *inst,
+                                                      const struct scene_mesh *mesh,
+                                                      uint32_t prim, const uint32_t v[3],
+                                                      const float *const st[3],
+                                                      struct surface_cache *scratch)
 {
     struct surface_cache *c = triangle_cache(sc, inst, prim);
     if (!c) {
@@ -313,8 +314,8 @@ static double lod_top(int level_count)
 /* The end of texture_lod, from the footprint's two texel vectors ja
  * (the long axis, along) and jb (across), their squared lengths sa, sb
  * and sbc = sb cosine^2. */
-SURFACE_INLINE float lod_axes(const double ja[2], const double jb[2], double sa, double sb, double sbc,
-                      double cosine, float width, double top)
+SURFACE_INLINE float lod_axes(const double ja[2], const double jb[2], double sa, double sb,
+                              double sbc, double cosine, float width, double top)
 {
     /* major = hypot(ja) width / cosine, minor = hypot(jb) width: major
      * wins when |ja|^2 > |jb|^2 cosine^2 by the margin, minor when the
@@ -427,9 +428,9 @@ static void pair_cross(const __m128d a[3], const __m128d b[3], __m128d out[3])
 /* texel_vector of the in-plane vectors e in lanes (lane i: triangle
  * lane i's w1, w2, nn, nn2, a1, a2), each lane texel_vector's operations
  * in its order. */
-SURFACE_INLINE void pair_texel_vector(const __m128d e[3], const __m128d w1[3], const __m128d w2[3],
-                              const __m128d nn[3], __m128d nn2, const __m128d a1[2],
-                              const __m128d a2[2], __m128d out[2])
+SURFACE_INLINE void pair_texel_vector(const __m128d e[3], const __m128d w1[3],
+                                      const __m128d w2[3], const __m128d nn[3], __m128d nn2,
+                                      const __m128d a1[2], const __m128d a2[2], __m128d out[2])
 {
     __m128d ew2[3], w1e[3];
     pair_cross(e, w2, ew2);
@@ -581,10 +582,11 @@ static const struct scene_texture *texture_named(const struct shade_context *sc,
     return tex;
 }
 
-SURFACE_INLINE void texture_begin(const struct shade_context *sc, const struct scene_instance *inst,
-                          const struct scene_mesh *mesh, uint32_t prim, const uint32_t v[3],
-                          float b0, float b1, float b2, const float ng[3], const float dir[3],
-                          float width, uint32_t name, struct surface_texture *t)
+SURFACE_INLINE void texture_begin(const struct shade_context *sc,
+                                  const struct scene_instance *inst, const struct scene_mesh *mesh,
+                                  uint32_t prim, const uint32_t v[3], float b0, float b1, float b2,
+                                  const float ng[3], const float dir[3], float width,
+                                  uint32_t name, struct surface_texture *t)
 {
     const struct scene_texture *tex = texture_named(sc, name);
     t->tex = NULL;
@@ -734,8 +736,8 @@ struct hit_triangle {
     uint32_t provoking;
 };
 
-SURFACE_INLINE void hit_triangle(const struct shade_context *sc, const struct trace_scene_hit *hit,
-                         struct hit_triangle *t)
+SURFACE_INLINE void hit_triangle(const struct shade_context *sc,
+                                 const struct trace_scene_hit *hit, struct hit_triangle *t)
 {
     t->inst = shade_hit_instance(sc, hit);
     t->mesh = &t->inst->object->mesh;
@@ -754,7 +756,8 @@ SURFACE_INLINE void hit_triangle(const struct shade_context *sc, const struct tr
  * hit the front face, and the shading normal on the same side.  Inlined:
  * the call's spills and argument set-up were a tenth of its cost. */
 SURFACE_INLINE void hit_normals(const struct shade_context *sc, const struct hit_triangle *t,
-                        uint32_t prim, const float dir[3], float ng[3], float n[3], int *front)
+                                uint32_t prim, const float dir[3], float ng[3], float n[3],
+                                int *front)
 {
     const struct scene_mesh *mesh = t->mesh;
     const uint32_t *v = t->v;

@@ -101,12 +101,11 @@ void surface_fetch_colour(const struct shade_context *sc, const struct trace_sce
  * of detail of several hits can be computed together: it is a chain of
  * dependent double divisions and square roots, whose latency two hits
  * in the two SSE2 lanes share.  Every hit's colours without the texture
- * first (and what its lookup needs), then the
- * levels of detail two at a time, then the lookups.  One call for the
- * batch, with the per-hit steps inlined, where three calls a hit across
- * files passed their arguments through memory.  The same operations on
- * the same values as surface_fetch_colour, so the same colours bit for
- * bit.
+ * first (and what its lookup needs), then the levels of detail two at a
+ * time, then the lookups.  One call for the batch, with the per-hit
+ * steps inlined, where three calls a hit across files passed their
+ * arguments through memory.  The same operations on the same values as
+ * surface_fetch_colour, so the same colours bit for bit.
  */
 void surface_fetch_colours(const struct shade_context *sc, int n,
                            const struct trace_scene_hit *const hits[], const float *const dir[],
