@@ -172,8 +172,12 @@ static int same_hit(const struct trace_scene_hit *a, const struct trace_scene_hi
 
 /* The eye light's colour of a hit whose surface colours are e, seen
  * along the unit unit_dir. */
-static void eye_light(const struct render_state *st, const struct surface_colour *e,
-                      const float global_ambient[4], const float unit_dir[3], float rgba[4])
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void eye_light(const struct render_state *st, const struct surface_colour *e,
+                             const float global_ambient[4], const float unit_dir[3],
+                             float rgba[4])
 {
     float c[3];
     float cosine = fabsf(vec3_dot(e->n, unit_dir));
@@ -358,24 +362,25 @@ void shade_eye_hits(const struct shade_context *sc, int n, const float *const di
                     const struct shade_cone cone[], float *const rgba[])
 {
     struct surface_colour e[TRACE_PACKET];
-    struct surface_texture tex[TRACE_PACKET];
-    struct surface_texture *lod[TRACE_PACKET] = {NULL};
+    float width[TRACE_PACKET] = {0}; /* n of them set (zeros for the compiler's warning) */
     float unit_dir[TRACE_PACKET][3];
-    int lods = 0;
-    /* shade_hit's steps up to the level of detail for every hit, ... */
+    /* shade_hit's steps up to the surface's colours for every hit, ... */
     for (int i = 0; i < n; i++) {
-        const struct shade_cone at_hit = cone_at(cone[i], dir[i], hits[i]->t);
+        /* cone_at's |dir| and vec3_normalize's are the same sqrtf of the
+         * same dot product: taken once, then each one's operations. */
+        const float len = sqrtf(vec3_dot(dir[i], dir[i]));
+        width[i] = fabsf(cone[i].width + cone[i].spread * (hits[i]->t * len));
         memcpy(unit_dir[i], dir[i], sizeof(unit_dir[i]));
-        vec3_normalize(unit_dir[i]);
-        surface_fetch_colour_begin(sc, hits[i], dir[i], at_hit.width, &e[i], &tex[i]);
-        if (tex[i].lod)
-            lod[lods++] = &tex[i];
+        if (len > 0.0f && isfinite(len)) {
+            const float inv = 1.0f / len;
+            for (int k = 0; k < 3; k++)
+                unit_dir[i][k] *= inv;
+        }
     }
-    /* ... the levels of detail two at a time, ... */
-    surface_texture_lods(lod, lods);
-    /* ... and the rest. */
+    /* ... the colours, their levels of detail two at a time, ... */
+    surface_fetch_colours(sc, n, hits, dir, width, e);
+    /* ... and the eye light. */
     for (int i = 0; i < n; i++) {
-        surface_fetch_colour_end(&e[i], &tex[i]);
         const float *global_ambient =
             shade_hit_instance(sc, hits[i])->appearance.gl.light_model.ambient;
         eye_light(sc->state, &e[i], global_ambient, unit_dir[i], rgba[i]);

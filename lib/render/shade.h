@@ -100,7 +100,7 @@ void shade_hit(const struct shade_context *sc, const float org[3], const float d
  * shade_hit at depth 0 in the eye-light mode for n <= TRACE_PACKET hits
  * at once (hits[i] of the ray along dir[i] with cone[i],
  * colour into rgba[i]): the texture level of detail of two hits is
- * computed together in SSE2 lanes (surface.h, surface_texture_lods).
+ * computed together in SSE2 lanes (surface.h, surface_fetch_colours).
  * The same operations on the same values as shade_hit, so the same
  * colours bit for bit.
  */

@@ -22,6 +22,26 @@
 #define SURFACE_PAIRS 0
 #endif
 
+/* Small steps of the per-hit path inlined into their callers: their
+ * calls' spills and argument set-up cost a tenth or more of their work. */
+#if defined(__GNUC__)
+#define SURFACE_INLINE static inline __attribute__((always_inline))
+#else
+#define SURFACE_INLINE static inline
+#endif
+
+/* What a hit's texture lookup needs (surface_fetch_colours): the
+ * colours come first, then the level of detail from the rest, then the
+ * lookup. */
+struct surface_texture {
+    const struct scene_texture *tex; /* NULL: nothing to apply */
+    float st[2];                     /* the interpolated coordinates */
+    float lambda;                    /* the level of detail, once known */
+    int lod;                         /* 1: lambda still to compute from the rest */
+    float ng[3], dir[3], width;
+    struct surface_lod tri;
+};
+
 static void transform_normal(const double m[16], const float in[3], float out[3])
 {
     for (int r = 0; r < 3; r++)
@@ -229,19 +249,20 @@ static int lod_near(double s2, double xs, double top, float *lambda)
  *
  * texture_lod (below) is lod_triangle, the part of the triangle, then
  * lod_ray, the part of the ray; lod_ray_pair computes the latter for two
- * hits at once (surface_texture_lods).
+ * hits at once (texture_lods).
  */
 
 /* The triangle-only part of texture_lod: from the tile's cache when the
  * last hit was on the same triangle (and, for the texel edges, the same
  * texture and coordinates), else computed into it (or into `scratch`
  * without a cache). */
-static const struct surface_lod *lod_triangle(const struct shade_context *sc,
-                                              const struct scene_texture *tex,
-                                              const struct scene_instance *inst,
-                                              const struct scene_mesh *mesh, uint32_t prim,
-                                              const uint32_t v[3], const float *const st[3],
-                                              struct surface_cache *scratch)
+SURFACE_INLINE const struct surface_lod *lod_triangle(const struct shade_context *sc,
+                                                      const struct scene_texture *tex,
+                                                      const struct scene_instance *inst,
+                                                      const struct scene_mesh *mesh,
+                                                      uint32_t prim, const uint32_t v[3],
+                                                      const float *const st[3],
+                                                      struct surface_cache *scratch)
 {
     struct surface_cache *c = triangle_cache(sc, inst, prim);
     if (!c) {
@@ -293,8 +314,8 @@ static double lod_top(int level_count)
 /* The end of texture_lod, from the footprint's two texel vectors ja
  * (the long axis, along) and jb (across), their squared lengths sa, sb
  * and sbc = sb cosine^2. */
-static float lod_axes(const double ja[2], const double jb[2], double sa, double sb, double sbc,
-                      double cosine, float width, double top)
+SURFACE_INLINE float lod_axes(const double ja[2], const double jb[2], double sa, double sb,
+                              double sbc, double cosine, float width, double top)
 {
     /* major = hypot(ja) width / cosine, minor = hypot(jb) width: major
      * wins when |ja|^2 > |jb|^2 cosine^2 by the margin, minor when the
@@ -407,9 +428,9 @@ static void pair_cross(const __m128d a[3], const __m128d b[3], __m128d out[3])
 /* texel_vector of the in-plane vectors e in lanes (lane i: triangle
  * lane i's w1, w2, nn, nn2, a1, a2), each lane texel_vector's operations
  * in its order. */
-static void pair_texel_vector(const __m128d e[3], const __m128d w1[3], const __m128d w2[3],
-                              const __m128d nn[3], __m128d nn2, const __m128d a1[2],
-                              const __m128d a2[2], __m128d out[2])
+SURFACE_INLINE void pair_texel_vector(const __m128d e[3], const __m128d w1[3],
+                                      const __m128d w2[3], const __m128d nn[3], __m128d nn2,
+                                      const __m128d a1[2], const __m128d a2[2], __m128d out[2])
 {
     __m128d ew2[3], w1e[3];
     pair_cross(e, w2, ew2);
@@ -425,7 +446,7 @@ static void pair_texel_vector(const __m128d e[3], const __m128d w1[3], const __m
  * doubles; a lane that leaves lod_ray's common path (a degenerate
  * triangle or direction, a ray meeting the plane head-on) is computed
  * again by lod_ray itself. */
-static void lod_ray_pair(struct surface_texture *a, struct surface_texture *b)
+SURFACE_INLINE void lod_ray_pair(struct surface_texture *a, struct surface_texture *b)
 {
     const struct surface_lod *la = &a->tri, *lb = &b->tri;
     __m128d d[3], g[3], n[3];
@@ -492,7 +513,9 @@ static void lod_ray_pair(struct surface_texture *a, struct surface_texture *b)
 }
 #endif
 
-void surface_texture_lods(struct surface_texture *const *t, int n)
+/* The level of detail of the n textures t[i] with lod set, two at a
+ * time. */
+static void texture_lods(struct surface_texture *const *t, int n)
 {
     int i = 0;
 #if SURFACE_PAIRS
@@ -559,10 +582,11 @@ static const struct scene_texture *texture_named(const struct shade_context *sc,
     return tex;
 }
 
-static void texture_begin(const struct shade_context *sc, const struct scene_instance *inst,
-                          const struct scene_mesh *mesh, uint32_t prim, const uint32_t v[3],
-                          float b0, float b1, float b2, const float ng[3], const float dir[3],
-                          float width, uint32_t name, struct surface_texture *t)
+SURFACE_INLINE void texture_begin(const struct shade_context *sc,
+                                  const struct scene_instance *inst, const struct scene_mesh *mesh,
+                                  uint32_t prim, const uint32_t v[3], float b0, float b1, float b2,
+                                  const float ng[3], const float dir[3], float width,
+                                  uint32_t name, struct surface_texture *t)
 {
     const struct scene_texture *tex = texture_named(sc, name);
     t->tex = NULL;
@@ -712,8 +736,8 @@ struct hit_triangle {
     uint32_t provoking;
 };
 
-static void hit_triangle(const struct shade_context *sc, const struct trace_scene_hit *hit,
-                         struct hit_triangle *t)
+SURFACE_INLINE void hit_triangle(const struct shade_context *sc,
+                                 const struct trace_scene_hit *hit, struct hit_triangle *t)
 {
     t->inst = shade_hit_instance(sc, hit);
     t->mesh = &t->inst->object->mesh;
@@ -729,9 +753,11 @@ static void hit_triangle(const struct shade_context *sc, const struct trace_scen
 }
 
 /* The unit geometric normal facing the ray along dir, whether the ray
- * hit the front face, and the shading normal on the same side. */
-static void hit_normals(const struct shade_context *sc, const struct hit_triangle *t,
-                        uint32_t prim, const float dir[3], float ng[3], float n[3], int *front)
+ * hit the front face, and the shading normal on the same side.  Inlined:
+ * the call's spills and argument set-up were a tenth of its cost. */
+SURFACE_INLINE void hit_normals(const struct shade_context *sc, const struct hit_triangle *t,
+                                uint32_t prim, const float dir[3], float ng[3], float n[3],
+                                int *front)
 {
     const struct scene_mesh *mesh = t->mesh;
     const uint32_t *v = t->v;
@@ -791,7 +817,7 @@ static void hit_normals(const struct shade_context *sc, const struct hit_triangl
  * material, when it is on for the triangle (as recorded or as at the
  * call) or the primitive is unlit (`unlit`, see surface_fetch); 0 when
  * neither. */
-static int hit_color_material(const struct hit_triangle *t, int unlit, float c[4])
+SURFACE_INLINE int hit_color_material(const struct hit_triangle *t, int unlit, float c[4])
 {
     const uint8_t flags = t->flags;
     int color_material = (flags & TRI_INHERIT_COLOR_MATERIAL)
@@ -879,9 +905,10 @@ void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit 
  * The same operations on the same values as surface_fetch and
  * surface_resolve_material, so the same colours bit for bit.
  */
-void surface_fetch_colour_begin(const struct shade_context *sc, const struct trace_scene_hit *hit,
-                                const float dir[3], float width, struct surface_colour *s,
-                                struct surface_texture *tx)
+SURFACE_INLINE void fetch_colour_begin(const struct shade_context *sc,
+                                       const struct trace_scene_hit *hit, const float dir[3],
+                                       float width, struct surface_colour *s,
+                                       struct surface_texture *tx)
 {
     struct hit_triangle t;
     hit_triangle(sc, hit, &t);
@@ -916,19 +943,31 @@ void surface_fetch_colour_begin(const struct shade_context *sc, const struct tra
                       texture, tx);
 }
 
-void surface_fetch_colour_end(struct surface_colour *s, const struct surface_texture *t)
-{
-    texture_end(t, s->ambient, s->diffuse);
-}
-
 void surface_fetch_colour(const struct shade_context *sc, const struct trace_scene_hit *hit,
                           const float dir[3], float width, struct surface_colour *s)
 {
     struct surface_texture t;
-    surface_fetch_colour_begin(sc, hit, dir, width, s, &t);
+    fetch_colour_begin(sc, hit, dir, width, s, &t);
     if (t.lod)
         texture_lambda(&t);
-    surface_fetch_colour_end(s, &t);
+    texture_end(&t, s->ambient, s->diffuse);
+}
+
+void surface_fetch_colours(const struct shade_context *sc, int n,
+                           const struct trace_scene_hit *const hits[], const float *const dir[],
+                           const float width[], struct surface_colour s[])
+{
+    struct surface_texture tex[TRACE_PACKET];
+    struct surface_texture *lod[TRACE_PACKET];
+    int lods = 0;
+    for (int i = 0; i < n; i++) {
+        fetch_colour_begin(sc, hits[i], dir[i], width[i], &s[i], &tex[i]);
+        if (tex[i].lod)
+            lod[lods++] = &tex[i];
+    }
+    texture_lods(lod, lods);
+    for (int i = 0; i < n; i++)
+        texture_end(&tex[i], s[i].ambient, s[i].diffuse);
 }
 
 int surface_texel(const struct shade_context *sc, const struct trace_scene_hit *hit,

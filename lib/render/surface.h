@@ -96,33 +96,20 @@ void surface_fetch_colour(const struct shade_context *sc, const struct trace_sce
                           const float dir[3], float width, struct surface_colour *s);
 
 /*
- * surface_fetch_colour in three steps, so that the level of detail of
- * several hits can be computed together (surface_texture_lods): the
- * level of detail is a chain of dependent double divisions and square
- * roots, whose latency two hits in the two SSE2 lanes share.  Begin
- * fetches the colours without the texture and leaves in `t` what the
- * texture lookup needs; end samples and applies it.  The same operations
- * on the same values as surface_fetch_colour, so the same colours bit
- * for bit.
+ * surface_fetch_colour of n <= TRACE_PACKET hits (hits[i] along dir[i],
+ * the cone `width[i]` wide there, colours into s[i]), so that the level
+ * of detail of several hits can be computed together: it is a chain of
+ * dependent double divisions and square roots, whose latency two hits
+ * in the two SSE2 lanes share.  Every hit's colours without the texture
+ * first (and what its lookup needs), then the levels of detail two at a
+ * time, then the lookups.  One call for the batch, with the per-hit
+ * steps inlined, where three calls a hit across files passed their
+ * arguments through memory.  The same operations on the same values as
+ * surface_fetch_colour, so the same colours bit for bit.
  */
-struct surface_texture {
-    const struct scene_texture *tex; /* NULL: nothing to apply */
-    float st[2];                     /* the interpolated coordinates */
-    float lambda;                    /* the level of detail, once known */
-    int lod;                         /* 1: lambda still to compute from the rest */
-    float ng[3], dir[3], width;
-    struct surface_lod tri;
-};
-
-void surface_fetch_colour_begin(const struct shade_context *sc, const struct trace_scene_hit *hit,
-                                const float dir[3], float width, struct surface_colour *s,
-                                struct surface_texture *t);
-
-/* The level of detail of the n textures t[i] with lod set, two at a
- * time. */
-void surface_texture_lods(struct surface_texture *const *t, int n);
-
-void surface_fetch_colour_end(struct surface_colour *s, const struct surface_texture *t);
+void surface_fetch_colours(const struct shade_context *sc, int n,
+                           const struct trace_scene_hit *const hits[], const float *const dir[],
+                           const float width[], struct surface_colour s[]);
 
 /* The texel of texture `name` at a hit, for the RT_FIXED_FUNCTION mode,
  * which applies it after lighting through the texture environment
