@@ -36,8 +36,13 @@
  * projecting to this bin"): box[axis][bin] = min xyz -, max xyz -. */
 struct bins {
     float box[3][BVH_MAX_BINS][8];
-    uint32_t count[3][BVH_MAX_BINS];
+    /* count[k][b][0]; the stride of a box, so that fill_bins reaches both
+     * with one byte offset (build_bin_offsets). */
+    uint32_t count[3][BVH_MAX_BINS][8];
 };
+
+/* Byte offset of axis k's first bin in bins.box and bins.count. */
+static const uint32_t bins_axis_base[4] = {0, BVH_MAX_BINS * 32, 2 * BVH_MAX_BINS * 32, 0};
 
 /* Centroid bounds (of the doubled centroids, see the header comment);
  * lane 3 unused. */
@@ -140,22 +145,24 @@ static void fill_bins(struct bins *bins, int bin_count, const struct binning *bn
         for (int b = 0; b < bin_count; b++) {
             vec4_store(&bins->box[k][b][0], empty_lo);
             vec4_store(&bins->box[k][b][4], empty_hi);
-            bins->count[k][b] = 0;
+            bins->count[k][b][0] = 0;
         }
     }
+    char *box_base = (char *)bins->box;
+    char *count_base = (char *)bins->count;
     for (uint32_t i = begin; i < end; i++) {
         const struct build_ref *r = &refs[i];
         /* Lane 3 masked: the index's bits would be denormal floats, and
          * arithmetic on denormals can cost a microcode assist each. */
         vec4 lo = vec4_xyz0(vec4_load(r->lo));
         vec4 hi = vec4_load(r->hi);
-        int32_t bin[4];
-        build_bins_of(&bn->map, vec4_add(lo, hi), bin);
+        uint32_t off[4];
+        build_bin_offsets(&bn->map, vec4_add(lo, hi), bins_axis_base, off);
         for (int k = 0; k < 3; k++) {
-            float *box = bins->box[k][bin[k]];
+            float *box = (float *)(void *)(box_base + off[k]);
             vec4_store(&box[0], vec4_min(vec4_load(&box[0]), lo));
             vec4_store(&box[4], vec4_max(vec4_load(&box[4]), hi));
-            bins->count[k][bin[k]]++;
+            (*(uint32_t *)(void *)(count_base + off[k]))++;
         }
     }
 }
@@ -182,14 +189,14 @@ static int find_best_split(const struct bins *bins, int bin_count, const struct 
     for (int k = 0; k < 3; k++) {
         if (!bn->binnable[k])
             continue;
-        const uint32_t *cnt = bins->count[k];
+        const uint32_t(*cnt)[8] = bins->count[k];
         vec4 lo = vec4_splat(INFINITY);
         vec4 hi = vec4_splat(-INFINITY);
         uint32_t count = 0;
         for (int i = bin_count - 1; i > 0; i--) {
             lo = vec4_min(lo, vec4_load(&bins->box[k][i][0]));
             hi = vec4_max(hi, vec4_load(&bins->box[k][i][4]));
-            count += cnt[i];
+            count += cnt[i][0];
             right_count[i] = count;
             right_sah[i] = vec4_half_area(lo, hi) * (float)count;
         }
@@ -199,7 +206,7 @@ static int find_best_split(const struct bins *bins, int bin_count, const struct 
         for (int i = 0; i < bin_count - 1; i++) {
             lo = vec4_min(lo, vec4_load(&bins->box[k][i][0]));
             hi = vec4_max(hi, vec4_load(&bins->box[k][i][4]));
-            count += cnt[i];
+            count += cnt[i][0];
             float sah = vec4_half_area(lo, hi) * (float)count + right_sah[i + 1];
             /* An empty side gives inf * 0 = NaN or a meaningless value. */
             sah = count != 0 && right_count[i + 1] != 0 ? sah : INFINITY;

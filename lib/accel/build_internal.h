@@ -91,6 +91,20 @@ static inline void build_bins_of(const struct build_bin_map *m, vec4 centroid, i
     vec4_trunc(bin, f);
 }
 
+/* The histograms' form of build_bins_of: the same bins, as byte offsets
+ * of 32-byte bin records, axis k's bins starting at byte axis_base[k].
+ * One shift and one add for the three axes together instead of an index
+ * extension, shift and add per axis in the histogram loops, and the
+ * offset addresses a bin's box and, in a parallel array of 32-byte
+ * stride, its count. */
+static inline void build_bin_offsets(const struct build_bin_map *m, vec4 centroid,
+                                     const uint32_t axis_base[4], uint32_t off[4])
+{
+    vec4 f = vec4_mul(vec4_sub(centroid, m->origin), m->scale);
+    f = vec4_min(vec4_max(f, vec4_splat(0.0f)), m->last);
+    vec4_trunc_offset32(off, f, axis_base);
+}
+
 /*
  * The partitions' side bounds without a select: a centroid on side
  * `left` (1 left, 0 right) is added build_side_offset[left][j] before it

@@ -88,6 +88,16 @@ static inline void vec4_trunc(int32_t out[4], vec4 a)
     _mm_storeu_si128((__m128i *)(void *)out, _mm_cvttps_epi32(a));
 }
 
+/* Per lane trunc(a) * 32 + base: the byte offset of entry trunc(a) of an
+ * array of 32-byte records starting at byte base (the builders' bins).
+ * Lanes must be in [0, 2^26) after truncation, base small. */
+static inline void vec4_trunc_offset32(uint32_t out[4], vec4 a, const uint32_t base[4])
+{
+    __m128i i = _mm_slli_epi32(_mm_cvttps_epi32(a), 5);
+    i = _mm_add_epi32(i, _mm_loadu_si128((const __m128i *)(const void *)base));
+    _mm_storeu_si128((__m128i *)(void *)out, i);
+}
+
 /* Half the surface area of the box [lo, hi] (lanes 0..2), summed in the
  * order of aabb_half_area: (dx dy + dy dz) + dz dx. */
 static inline float vec4_half_area(vec4 lo, vec4 hi)
@@ -180,6 +190,12 @@ static inline void vec4_trunc(int32_t out[4], vec4 a)
 {
     for (int i = 0; i < 4; i++)
         out[i] = (int32_t)a.v[i];
+}
+
+static inline void vec4_trunc_offset32(uint32_t out[4], vec4 a, const uint32_t base[4])
+{
+    for (int i = 0; i < 4; i++)
+        out[i] = (uint32_t)(int32_t)a.v[i] * 32u + base[i];
 }
 
 static inline float vec4_half_area(vec4 lo, vec4 hi)
