@@ -244,8 +244,10 @@ static int find_best_split(const struct bins *bins, int bin_count, const struct 
 /*
  * Step 3: moves the primitives left of the chosen plane to the front of
  * [begin, end) and returns the first right slot.  Each primitive is
- * classified by build_bins_of, the very computation fill_bins counted it with,
- * so the sides match the bin counts.  Computes each side's centroid
+ * classified by one comparison with the least coordinate binned at or
+ * above the plane (build_split_threshold), found with build_bins_of, the
+ * very computation fill_bins counted it with, so the sides match the bin
+ * counts.  Computes each side's centroid
  * bounds on the way, for the children's binning.
  *
  * Lomuto's scheme without branches: every element is swapped with the
@@ -261,7 +263,12 @@ static uint32_t partition_refs(struct build_ref *refs, uint32_t begin, uint32_t 
                                struct cbounds *left_cb, struct cbounds *right_cb)
 {
     const int axis = s->axis;
-    const int32_t plane = s->plane;
+    float origin[4];
+    float scale[4];
+    vec4_store(origin, bn->map.origin);
+    vec4_store(scale, bn->map.scale);
+    const vec4 threshold = vec4_splat(
+        build_split_threshold(&bn->map, axis, s->plane, origin[axis], scale[axis]));
     vec4 llo = vec4_splat(INFINITY);
     vec4 lhi = vec4_splat(-INFINITY);
     vec4 rlo = llo;
@@ -270,9 +277,7 @@ static uint32_t partition_refs(struct build_ref *refs, uint32_t begin, uint32_t 
     for (uint32_t i = begin; i < end; i++) {
         struct build_ref x = refs[i];
         vec4 c = build_ref_centroid(&x);
-        int32_t bin[4];
-        build_bins_of(&bn->map, c, bin);
-        const uint32_t left = bin[axis] < plane;
+        const uint32_t left = ((vec4_ge_bits(c, threshold) >> axis) & 1u) ^ 1u;
         build_side_grow(c, left, &llo, &lhi, &rlo, &rhi);
         refs[i] = refs[first_right];
         refs[first_right] = x;

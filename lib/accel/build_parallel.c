@@ -120,6 +120,7 @@ struct open_node {
     /* The split picked (axis < 0: none). */
     int axis;
     int plane;
+    float threshold; /* the plane as build_split_threshold's coordinate */
     uint32_t left_count;
     struct aabb left_box;
     struct aabb right_box;
@@ -465,6 +466,9 @@ static void pick_split(struct pbuild *b, struct open_node *o)
         hi = vec4_max(hi, vec4_load(&kb[i][4]));
     }
     build_store_box(&o->right_box, lo, hi);
+    const struct build_bin_map map = bin_map_of(o, bins - 1);
+    o->threshold =
+        build_split_threshold(&map, o->axis, o->plane, o->origin[o->axis], o->scale[o->axis]);
 }
 
 /* Phase C: every chunk of a splitting node copies its left refs to its
@@ -475,7 +479,6 @@ static void partition_task(void *arg, int worker)
 {
     (void)worker;
     struct pbuild *b = arg;
-    const int last = b->bins - 1;
     const struct build_ref *src = b->refs[b->src];
     struct build_ref *dst = b->refs[!b->src];
     uint32_t c;
@@ -484,9 +487,8 @@ static void partition_task(void *arg, int worker)
         const struct open_node *o = &b->open[ch->node];
         if (o->axis < 0)
             continue;
-        const struct build_bin_map map = bin_map_of(o, last);
         const int axis = o->axis;
-        const int32_t plane = o->plane;
+        const vec4 threshold = vec4_splat(o->threshold);
         uint32_t li = ch->left_dst;
         uint32_t ri = ch->right_dst;
         vec4 llo = vec4_splat(INFINITY);
@@ -496,9 +498,8 @@ static void partition_task(void *arg, int worker)
         for (uint32_t i = ch->begin; i < ch->end; i++) {
             const struct build_ref *r = &src[i];
             vec4 cen = build_ref_centroid(r);
-            int32_t bin[4];
-            build_bins_of(&map, cen, bin);
-            const uint32_t left = bin[axis] < plane;
+            /* !(c >= threshold): bin below the plane (build_split_threshold). */
+            const uint32_t left = ((vec4_ge_bits(cen, threshold) >> axis) & 1u) ^ 1u;
             build_side_grow(cen, left, &llo, &lhi, &rlo, &rhi);
             dst[left ? li : ri] = *r;
             li += left;

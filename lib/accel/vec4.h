@@ -88,6 +88,12 @@ static inline void vec4_trunc(int32_t out[4], vec4 a)
     _mm_storeu_si128((__m128i *)(void *)out, _mm_cvttps_epi32(a));
 }
 
+/* Bit i set when lane i of a >= lane i of b (clear when either is NaN). */
+static inline uint32_t vec4_ge_bits(vec4 a, vec4 b)
+{
+    return (uint32_t)_mm_movemask_ps(_mm_cmpge_ps(a, b));
+}
+
 /* Per lane trunc(a) * 32 + base: the byte offset of entry trunc(a) of an
  * array of 32-byte records starting at byte base (the builders' bins).
  * Lanes must be in [0, 2^26) after truncation, base small. */
@@ -190,6 +196,14 @@ static inline void vec4_trunc(int32_t out[4], vec4 a)
 {
     for (int i = 0; i < 4; i++)
         out[i] = (int32_t)a.v[i];
+}
+
+static inline uint32_t vec4_ge_bits(vec4 a, vec4 b)
+{
+    uint32_t bits = 0;
+    for (int i = 0; i < 4; i++)
+        bits |= (uint32_t)(a.v[i] >= b.v[i]) << i;
+    return bits;
 }
 
 static inline void vec4_trunc_offset32(uint32_t out[4], vec4 a, const uint32_t base[4])
