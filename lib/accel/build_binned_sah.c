@@ -180,42 +180,106 @@ static void fill_bins(struct bins *bins, int bin_count, const struct binning *bn
 static int find_best_split(const struct bins *bins, int bin_count, const struct binning *bn,
                            struct split *best)
 {
-    float right_sah[BVH_MAX_BINS];
-    uint32_t right_count[BVH_MAX_BINS];
+    /* The three axes side by side, one per lane (lane 3 unused): per
+     * bin, the axes' boxes transposed to x, y, z columns (vec4_transpose3),
+     * so one min/max per coordinate and one half-area computation serve
+     * all three.  Per lane the operations are find_best_split's scalar
+     * ones: d = hi - lo, (dx dy + dy dz) + dz dx (vec4_half_area's order),
+     * times the count converted to float (counts stay exact integers in
+     * scalars), plus the right side's; strict < keeps each axis's first
+     * best plane, and the axes are then compared in order, so ties still
+     * go to the lower axis and plane. */
+    float right_sah[BVH_MAX_BINS][4];
+    float right_count[BVH_MAX_BINS][4]; /* as floats: only compared with 0 */
+    const vec4 zero = vec4_splat(0.0f);
+    vec4 lox = vec4_splat(INFINITY);
+    vec4 loy = lox;
+    vec4 loz = lox;
+    vec4 hix = vec4_splat(-INFINITY);
+    vec4 hiy = hix;
+    vec4 hiz = hix;
+    uint32_t c0 = 0;
+    uint32_t c1 = 0;
+    uint32_t c2 = 0;
+    for (int i = bin_count - 1; i > 0; i--) {
+        vec4 x, y, z;
+        vec4_transpose3(vec4_load(&bins->box[0][i][0]), vec4_load(&bins->box[1][i][0]),
+                        vec4_load(&bins->box[2][i][0]), &x, &y, &z);
+        lox = vec4_min(lox, x);
+        loy = vec4_min(loy, y);
+        loz = vec4_min(loz, z);
+        vec4_transpose3(vec4_load(&bins->box[0][i][4]), vec4_load(&bins->box[1][i][4]),
+                        vec4_load(&bins->box[2][i][4]), &x, &y, &z);
+        hix = vec4_max(hix, x);
+        hiy = vec4_max(hiy, y);
+        hiz = vec4_max(hiz, z);
+        c0 += bins->count[0][i][0];
+        c1 += bins->count[1][i][0];
+        c2 += bins->count[2][i][0];
+        vec4 count = vec4_set((float)c0, (float)c1, (float)c2, 0.0f);
+        vec4_store(right_count[i], count);
+        vec4_store(right_sah[i],
+                   vec4_mul(vec4_half_area3(lox, loy, loz, hix, hiy, hiz), count));
+    }
+    lox = vec4_splat(INFINITY);
+    loy = lox;
+    loz = lox;
+    hix = vec4_splat(-INFINITY);
+    hiy = hix;
+    hiz = hix;
+    c0 = c1 = c2 = 0;
+    vec4 lane_best = vec4_splat(INFINITY);
+    float lane_sah[4];
+    int lane_plane[3] = {0, 0, 0};
+    uint32_t lane_left[3] = {0, 0, 0};
+    for (int i = 0; i < bin_count - 1; i++) {
+        vec4 x, y, z;
+        vec4_transpose3(vec4_load(&bins->box[0][i][0]), vec4_load(&bins->box[1][i][0]),
+                        vec4_load(&bins->box[2][i][0]), &x, &y, &z);
+        lox = vec4_min(lox, x);
+        loy = vec4_min(loy, y);
+        loz = vec4_min(loz, z);
+        vec4_transpose3(vec4_load(&bins->box[0][i][4]), vec4_load(&bins->box[1][i][4]),
+                        vec4_load(&bins->box[2][i][4]), &x, &y, &z);
+        hix = vec4_max(hix, x);
+        hiy = vec4_max(hiy, y);
+        hiz = vec4_max(hiz, z);
+        c0 += bins->count[0][i][0];
+        c1 += bins->count[1][i][0];
+        c2 += bins->count[2][i][0];
+        vec4 count = vec4_set((float)c0, (float)c1, (float)c2, 0.0f);
+        vec4 sah = vec4_add(vec4_mul(vec4_half_area3(lox, loy, loz, hix, hiy, hiz), count),
+                            vec4_load(right_sah[i + 1]));
+        /* An empty side gives inf * 0 = NaN or a meaningless value: such
+         * a plane never wins (as if its cost were +inf). */
+        uint32_t better = vec4_lt_bits(sah, lane_best) & vec4_ne_bits(count, zero) &
+                          vec4_ne_bits(vec4_load(right_count[i + 1]), zero) & 7u;
+        if (better) {
+            float s[4];
+            vec4_store(s, sah);
+            vec4_store(lane_sah, lane_best);
+            const uint32_t c[3] = {c0, c1, c2};
+            for (int k = 0; k < 3; k++) {
+                if (better >> k & 1u) {
+                    lane_sah[k] = s[k];
+                    lane_plane[k] = i + 1;
+                    lane_left[k] = c[k];
+                }
+            }
+            lane_best = vec4_load(lane_sah);
+        }
+    }
+    vec4_store(lane_sah, lane_best);
     float best_sah = INFINITY;
     int best_axis = -1;
     int best_plane = 0;
     uint32_t best_left_count = 0;
     for (int k = 0; k < 3; k++) {
-        if (!bn->binnable[k])
-            continue;
-        const uint32_t(*cnt)[8] = bins->count[k];
-        vec4 lo = vec4_splat(INFINITY);
-        vec4 hi = vec4_splat(-INFINITY);
-        uint32_t count = 0;
-        for (int i = bin_count - 1; i > 0; i--) {
-            lo = vec4_min(lo, vec4_load(&bins->box[k][i][0]));
-            hi = vec4_max(hi, vec4_load(&bins->box[k][i][4]));
-            count += cnt[i][0];
-            right_count[i] = count;
-            right_sah[i] = vec4_half_area(lo, hi) * (float)count;
-        }
-        lo = vec4_splat(INFINITY);
-        hi = vec4_splat(-INFINITY);
-        count = 0;
-        for (int i = 0; i < bin_count - 1; i++) {
-            lo = vec4_min(lo, vec4_load(&bins->box[k][i][0]));
-            hi = vec4_max(hi, vec4_load(&bins->box[k][i][4]));
-            count += cnt[i][0];
-            float sah = vec4_half_area(lo, hi) * (float)count + right_sah[i + 1];
-            /* An empty side gives inf * 0 = NaN or a meaningless value. */
-            sah = count != 0 && right_count[i + 1] != 0 ? sah : INFINITY;
-            if (sah < best_sah) {
-                best_sah = sah;
-                best_axis = k;
-                best_plane = i + 1;
-                best_left_count = count;
-            }
+        if (bn->binnable[k] && lane_sah[k] < best_sah) {
+            best_sah = lane_sah[k];
+            best_axis = k;
+            best_plane = lane_plane[k];
+            best_left_count = lane_left[k];
         }
     }
     if (best_axis < 0)

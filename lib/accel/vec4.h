@@ -94,6 +94,29 @@ static inline uint32_t vec4_ge_bits(vec4 a, vec4 b)
     return (uint32_t)_mm_movemask_ps(_mm_cmpge_ps(a, b));
 }
 
+/* Bit i set when lane i of a < lane i of b (clear when either is NaN). */
+static inline uint32_t vec4_lt_bits(vec4 a, vec4 b)
+{
+    return (uint32_t)_mm_movemask_ps(_mm_cmplt_ps(a, b));
+}
+
+/* Bit i set when lane i of a != lane i of b (set when either is NaN). */
+static inline uint32_t vec4_ne_bits(vec4 a, vec4 b)
+{
+    return (uint32_t)_mm_movemask_ps(_mm_cmpneq_ps(a, b));
+}
+
+/* Lanes 0..2 of a, b, c as columns: *x = (a0, b0, c0, -), *y = (a1, b1,
+ * c1, -), *z = (a2, b2, c2, -); lane 3 unspecified. */
+static inline void vec4_transpose3(vec4 a, vec4 b, vec4 c, vec4 *x, vec4 *y, vec4 *z)
+{
+    __m128 ab_lo = _mm_unpacklo_ps(a, b); /* a0 b0 a1 b1 */
+    __m128 ab_hi = _mm_unpackhi_ps(a, b); /* a2 b2 a3 b3 */
+    *x = _mm_movelh_ps(ab_lo, c);         /* a0 b0 c0 c1 */
+    *y = _mm_shuffle_ps(ab_lo, c, _MM_SHUFFLE(3, 1, 3, 2));
+    *z = _mm_shuffle_ps(ab_hi, c, _MM_SHUFFLE(3, 2, 1, 0));
+}
+
 /* Per lane trunc(a) * 32 + base: the byte offset of entry trunc(a) of an
  * array of 32-byte records starting at byte base (the builders' bins).
  * Lanes must be in [0, 2^26) after truncation, base small. */
@@ -198,6 +221,36 @@ static inline void vec4_trunc(int32_t out[4], vec4 a)
         out[i] = (int32_t)a.v[i];
 }
 
+static inline uint32_t vec4_lt_bits(vec4 a, vec4 b)
+{
+    uint32_t bits = 0;
+    for (int i = 0; i < 4; i++)
+        bits |= (uint32_t)(a.v[i] < b.v[i]) << i;
+    return bits;
+}
+
+static inline uint32_t vec4_ne_bits(vec4 a, vec4 b)
+{
+    uint32_t bits = 0;
+    for (int i = 0; i < 4; i++)
+        bits |= (uint32_t)(a.v[i] != b.v[i]) << i;
+    return bits;
+}
+
+static inline void vec4_transpose3(vec4 a, vec4 b, vec4 c, vec4 *x, vec4 *y, vec4 *z)
+{
+    vec4 r[3];
+    for (int i = 0; i < 3; i++) {
+        r[i].v[0] = a.v[i];
+        r[i].v[1] = b.v[i];
+        r[i].v[2] = c.v[i];
+        r[i].v[3] = 0.0f;
+    }
+    *x = r[0];
+    *y = r[1];
+    *z = r[2];
+}
+
 static inline uint32_t vec4_ge_bits(vec4 a, vec4 b)
 {
     uint32_t bits = 0;
@@ -221,5 +274,16 @@ static inline float vec4_half_area(vec4 lo, vec4 hi)
 }
 
 #endif
+
+/* Half the surface areas of three boxes at once, box j in lane j of the
+ * coordinate columns: (dx dy + dy dz) + dz dx per lane, vec4_half_area's
+ * operations in its order. */
+static inline vec4 vec4_half_area3(vec4 lox, vec4 loy, vec4 loz, vec4 hix, vec4 hiy, vec4 hiz)
+{
+    vec4 dx = vec4_sub(hix, lox);
+    vec4 dy = vec4_sub(hiy, loy);
+    vec4 dz = vec4_sub(hiz, loz);
+    return vec4_add(vec4_add(vec4_mul(dx, dy), vec4_mul(dy, dz)), vec4_mul(dz, dx));
+}
 
 #endif
