@@ -171,8 +171,9 @@ static void fill_bins(struct bins *bins, int bin_count, const struct binning *bn
  * Step 2: the SAH at every plane between bins, on every binnable axis.
  * A sweep from the right stores the right side's area * count for each
  * plane, a sweep from the left completes the cost (Wald 2007).  Planes
- * with an empty side do not split the node and are skipped.  Both sweeps
- * run without data-dependent branches: an empty bin's box (+inf, -inf) is
+ * with an empty side do not split the node and are skipped.  The sweeps
+ * accumulate without data-dependent branches (the left one branches only
+ * when an axis finds a better plane): an empty bin's box (+inf, -inf) is
  * the identity of min/max, and a plane that follows an empty bin splits
  * exactly like the plane before it, which was seen first and wins the tie.
  * Returns 0 when no plane splits the node, else 1 with *best filled.
@@ -183,12 +184,14 @@ static int find_best_split(const struct bins *bins, int bin_count, const struct 
     /* The three axes side by side, one per lane (lane 3 unused): per
      * bin, the axes' boxes transposed to x, y, z columns (vec4_transpose3),
      * so one min/max per coordinate and one half-area computation serve
-     * all three.  Per lane the operations are find_best_split's scalar
-     * ones: d = hi - lo, (dx dy + dy dz) + dz dx (vec4_half_area's order),
-     * times the count converted to float (counts stay exact integers in
-     * scalars), plus the right side's; strict < keeps each axis's first
-     * best plane, and the axes are then compared in order, so ties still
-     * go to the lower axis and plane. */
+     * all three.  Per lane the operations are those of a sweep over one
+     * axis at a time (the form this function had before, and the
+     * parallel builder's pick_split still has): d = hi - lo,
+     * (dx dy + dy dz) + dz dx (vec4_half_area's order), times the count
+     * converted to float (counts stay exact integers in scalars), plus
+     * the right side's; strict < keeps each axis's first best plane, and
+     * the axes are then compared in order, so ties still go to the lower
+     * axis and plane, and the same plane wins as axis by axis. */
     float right_sah[BVH_MAX_BINS][4];
     float right_count[BVH_MAX_BINS][4]; /* as floats: only compared with 0 */
     const vec4 zero = vec4_splat(0.0f);
