@@ -17,6 +17,7 @@
 #define RT_ACCEL_VEC4_H
 
 #include <stdint.h>
+#include <string.h>
 
 #if defined(__SSE2__) && !defined(RT_NO_SIMD)
 
@@ -115,6 +116,46 @@ static inline void vec4_transpose3(vec4 a, vec4 b, vec4 c, vec4 *x, vec4 *y, vec
     *x = _mm_movelh_ps(ab_lo, c);         /* a0 b0 c0 c1 */
     *y = _mm_shuffle_ps(ab_lo, c, _MM_SHUFFLE(3, 1, 3, 2));
     *z = _mm_shuffle_ps(ab_hi, c, _MM_SHUFFLE(3, 2, 1, 0));
+}
+
+/* Four 32-bit integers (the sorting keys of the small-node sweeps). */
+typedef __m128i vec4i;
+
+/* Per lane an integer whose signed order is the order of the floats
+ * (build_float_order's key with its top bit flipped, so that signed
+ * comparisons order it): u ^ 0x7fffffff for a negative float's bits u,
+ * u otherwise. */
+static inline vec4i vec4_order_key(vec4 a)
+{
+    __m128i u = _mm_castps_si128(a);
+    __m128i neg = _mm_srai_epi32(u, 31);
+    return _mm_xor_si128(u, _mm_and_si128(neg, _mm_set1_epi32(0x7fffffff)));
+}
+
+/* -1 in the lanes where a > b (signed), else 0. */
+static inline vec4i vec4i_gt(vec4i a, vec4i b)
+{
+    return _mm_cmpgt_epi32(a, b);
+}
+
+static inline vec4i vec4i_add(vec4i a, vec4i b)
+{
+    return _mm_add_epi32(a, b);
+}
+
+static inline vec4i vec4i_sub(vec4i a, vec4i b)
+{
+    return _mm_sub_epi32(a, b);
+}
+
+static inline vec4i vec4i_splat(int32_t x)
+{
+    return _mm_set1_epi32(x);
+}
+
+static inline void vec4i_store(int32_t out[4], vec4i a)
+{
+    _mm_storeu_si128((__m128i *)(void *)out, a);
 }
 
 /* Per lane trunc(a) * 32 + base: the byte offset of entry trunc(a) of an
@@ -219,6 +260,55 @@ static inline void vec4_trunc(int32_t out[4], vec4 a)
 {
     for (int i = 0; i < 4; i++)
         out[i] = (int32_t)a.v[i];
+}
+
+typedef struct {
+    int32_t v[4];
+} vec4i;
+
+static inline vec4i vec4_order_key(vec4 a)
+{
+    vec4i r;
+    for (int i = 0; i < 4; i++) {
+        uint32_t u;
+        memcpy(&u, &a.v[i], sizeof(u));
+        u ^= (u >> 31) ? 0x7fffffffu : 0u;
+        memcpy(&r.v[i], &u, sizeof(u));
+    }
+    return r;
+}
+
+static inline vec4i vec4i_gt(vec4i a, vec4i b)
+{
+    for (int i = 0; i < 4; i++)
+        a.v[i] = a.v[i] > b.v[i] ? -1 : 0;
+    return a;
+}
+
+static inline vec4i vec4i_add(vec4i a, vec4i b)
+{
+    for (int i = 0; i < 4; i++)
+        a.v[i] = (int32_t)((uint32_t)a.v[i] + (uint32_t)b.v[i]);
+    return a;
+}
+
+static inline vec4i vec4i_sub(vec4i a, vec4i b)
+{
+    for (int i = 0; i < 4; i++)
+        a.v[i] = (int32_t)((uint32_t)a.v[i] - (uint32_t)b.v[i]);
+    return a;
+}
+
+static inline vec4i vec4i_splat(int32_t x)
+{
+    vec4i r = {{x, x, x, x}};
+    return r;
+}
+
+static inline void vec4i_store(int32_t out[4], vec4i a)
+{
+    for (int i = 0; i < 4; i++)
+        out[i] = a.v[i];
 }
 
 static inline uint32_t vec4_lt_bits(vec4 a, vec4 b)
