@@ -532,6 +532,67 @@ static void check_alloc_failures(const struct aabb *boxes, uint32_t n)
     tg_mesh_free(&m);
 }
 
+/* build_split_threshold (build_internal.h), the partitions' one-comparison
+ * side test: over random bin mappings (origins and extents over many
+ * magnitudes, 2 to BVH_MAX_BINS bins) and every plane, t is the least float
+ * binned at or above the plane, and for random coordinates, the float
+ * neighbours of t, +-0, +-inf and NaN, "bin below the plane" is exactly
+ * !(x >= t). */
+static void check_split_threshold(void)
+{
+    struct tg_rng r;
+    tg_seed(&r, 77);
+    int bad = 0;
+    for (int trial = 0; trial < 400 && bad < 5; trial++) {
+        int bins = 2 + (int)(tg_unit(&r) * (float)(BVH_MAX_BINS - 1));
+        if (bins > BVH_MAX_BINS)
+            bins = BVH_MAX_BINS;
+        float mag = powf(10.0f, -6.0f + 12.0f * tg_unit(&r));
+        float lo = (tg_unit(&r) - 0.5f) * mag * (trial % 3 == 0 ? 1000.0f : 1.0f);
+        float extent = mag * powf(10.0f, -5.0f * tg_unit(&r));
+        if (trial % 7 == 0)
+            lo = 0.0f;
+        float scale = (float)bins / extent;
+        if (!(extent > 0.0f) || !isfinite(scale) || !(scale > 0.0f))
+            continue;
+        struct build_bin_map m;
+        int axis = trial % 3;
+        float o[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+        float sc[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+        o[axis] = lo;
+        sc[axis] = scale;
+        m.origin = vec4_set(o[0], o[1], o[2], 0.0f);
+        m.scale = vec4_set(sc[0], sc[1], sc[2], 0.0f);
+        m.last = vec4_splat((float)(bins - 1));
+        for (int plane = 1; plane < bins; plane++) {
+            float t = build_split_threshold(&m, axis, plane, lo, scale);
+            uint32_t k = build_float_order(t);
+            int ok = t == t && build_bin_at(&m, axis, t) >= plane;
+            if (ok && t != -INFINITY)
+                ok = build_bin_at(&m, axis, build_float_of_order(k - 1)) < plane;
+            float xs[16];
+            int nx = 0;
+            xs[nx++] = 0.0f;
+            xs[nx++] = -0.0f;
+            xs[nx++] = INFINITY;
+            xs[nx++] = -INFINITY;
+            xs[nx++] = NAN;
+            xs[nx++] = t;
+            if (t != INFINITY)
+                xs[nx++] = build_float_of_order(k + 1);
+            if (t != -INFINITY)
+                xs[nx++] = build_float_of_order(k - 1);
+            while (nx < 16)
+                xs[nx++] = lo + extent * (1.4f * tg_unit(&r) - 0.2f);
+            for (int i = 0; i < nx && ok; i++)
+                ok = (build_bin_at(&m, axis, xs[i]) < plane) == !(xs[i] >= t);
+            if (!ok && bad++ < 5)
+                failures += !CHECKF(0, "split threshold: bins %d plane %d origin %a scale %a t %a",
+                                    bins, plane, (double)lo, (double)scale, (double)t);
+        }
+    }
+}
+
 int main(void)
 {
     double t0 = rt_now_ms();
@@ -539,6 +600,7 @@ int main(void)
     printf("builders:\n");
     check_depth_guard();
     check_tiny();
+    check_split_threshold();
 
     /* Structure over every parameter combination, on small scenes of
      * every kind (sizes around the small-node and bin-count thresholds). */

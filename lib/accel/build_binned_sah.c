@@ -36,8 +36,13 @@
  * projecting to this bin"): box[axis][bin] = min xyz -, max xyz -. */
 struct bins {
     float box[3][BVH_MAX_BINS][8];
-    uint32_t count[3][BVH_MAX_BINS];
+    /* count[k][b][0]; the stride of a box, so that fill_bins reaches both
+     * with one byte offset (build_bin_offsets). */
+    uint32_t count[3][BVH_MAX_BINS][8];
 };
+
+/* Byte offset of axis k's first bin in bins.box and bins.count. */
+static const uint32_t bins_axis_base[4] = {0, BVH_MAX_BINS * 32, 2 * BVH_MAX_BINS * 32, 0};
 
 /* Centroid bounds (of the doubled centroids, see the header comment);
  * lane 3 unused. */
@@ -140,22 +145,24 @@ static void fill_bins(struct bins *bins, int bin_count, const struct binning *bn
         for (int b = 0; b < bin_count; b++) {
             vec4_store(&bins->box[k][b][0], empty_lo);
             vec4_store(&bins->box[k][b][4], empty_hi);
-            bins->count[k][b] = 0;
+            bins->count[k][b][0] = 0;
         }
     }
+    char *box_base = (char *)bins->box;
+    char *count_base = (char *)bins->count;
     for (uint32_t i = begin; i < end; i++) {
         const struct build_ref *r = &refs[i];
         /* Lane 3 masked: the index's bits would be denormal floats, and
          * arithmetic on denormals can cost a microcode assist each. */
         vec4 lo = vec4_xyz0(vec4_load(r->lo));
         vec4 hi = vec4_load(r->hi);
-        int32_t bin[4];
-        build_bins_of(&bn->map, vec4_add(lo, hi), bin);
+        uint32_t off[4];
+        build_bin_offsets(&bn->map, vec4_add(lo, hi), bins_axis_base, off);
         for (int k = 0; k < 3; k++) {
-            float *box = bins->box[k][bin[k]];
+            float *box = (float *)(void *)(box_base + off[k]);
             vec4_store(&box[0], vec4_min(vec4_load(&box[0]), lo));
             vec4_store(&box[4], vec4_max(vec4_load(&box[4]), hi));
-            bins->count[k][bin[k]]++;
+            (*(uint32_t *)(void *)(count_base + off[k]))++;
         }
     }
 }
@@ -164,8 +171,9 @@ static void fill_bins(struct bins *bins, int bin_count, const struct binning *bn
  * Step 2: the SAH at every plane between bins, on every binnable axis.
  * A sweep from the right stores the right side's area * count for each
  * plane, a sweep from the left completes the cost (Wald 2007).  Planes
- * with an empty side do not split the node and are skipped.  Both sweeps
- * run without data-dependent branches: an empty bin's box (+inf, -inf) is
+ * with an empty side do not split the node and are skipped.  The sweeps
+ * accumulate without data-dependent branches (the left one branches only
+ * when an axis finds a better plane): an empty bin's box (+inf, -inf) is
  * the identity of min/max, and a plane that follows an empty bin splits
  * exactly like the plane before it, which was seen first and wins the tie.
  * Returns 0 when no plane splits the node, else 1 with *best filled.
@@ -173,42 +181,108 @@ static void fill_bins(struct bins *bins, int bin_count, const struct binning *bn
 static int find_best_split(const struct bins *bins, int bin_count, const struct binning *bn,
                            struct split *best)
 {
-    float right_sah[BVH_MAX_BINS];
-    uint32_t right_count[BVH_MAX_BINS];
+    /* The three axes side by side, one per lane (lane 3 unused): per
+     * bin, the axes' boxes transposed to x, y, z columns (vec4_transpose3),
+     * so one min/max per coordinate and one half-area computation serve
+     * all three.  Per lane the operations are those of a sweep over one
+     * axis at a time (the form this function had before, and the
+     * parallel builder's pick_split still has): d = hi - lo,
+     * (dx dy + dy dz) + dz dx (vec4_half_area's order), times the count
+     * converted to float (counts stay exact integers in scalars), plus
+     * the right side's; strict < keeps each axis's first best plane, and
+     * the axes are then compared in order, so ties still go to the lower
+     * axis and plane, and the same plane wins as axis by axis. */
+    float right_sah[BVH_MAX_BINS][4];
+    float right_count[BVH_MAX_BINS][4]; /* as floats: only compared with 0 */
+    const vec4 zero = vec4_splat(0.0f);
+    vec4 lox = vec4_splat(INFINITY);
+    vec4 loy = lox;
+    vec4 loz = lox;
+    vec4 hix = vec4_splat(-INFINITY);
+    vec4 hiy = hix;
+    vec4 hiz = hix;
+    uint32_t c0 = 0;
+    uint32_t c1 = 0;
+    uint32_t c2 = 0;
+    for (int i = bin_count - 1; i > 0; i--) {
+        vec4 x, y, z;
+        vec4_transpose3(vec4_load(&bins->box[0][i][0]), vec4_load(&bins->box[1][i][0]),
+                        vec4_load(&bins->box[2][i][0]), &x, &y, &z);
+        lox = vec4_min(lox, x);
+        loy = vec4_min(loy, y);
+        loz = vec4_min(loz, z);
+        vec4_transpose3(vec4_load(&bins->box[0][i][4]), vec4_load(&bins->box[1][i][4]),
+                        vec4_load(&bins->box[2][i][4]), &x, &y, &z);
+        hix = vec4_max(hix, x);
+        hiy = vec4_max(hiy, y);
+        hiz = vec4_max(hiz, z);
+        c0 += bins->count[0][i][0];
+        c1 += bins->count[1][i][0];
+        c2 += bins->count[2][i][0];
+        vec4 count = vec4_set((float)c0, (float)c1, (float)c2, 0.0f);
+        vec4_store(right_count[i], count);
+        vec4_store(right_sah[i],
+                   vec4_mul(vec4_half_area3(lox, loy, loz, hix, hiy, hiz), count));
+    }
+    lox = vec4_splat(INFINITY);
+    loy = lox;
+    loz = lox;
+    hix = vec4_splat(-INFINITY);
+    hiy = hix;
+    hiz = hix;
+    c0 = c1 = c2 = 0;
+    vec4 lane_best = vec4_splat(INFINITY);
+    float lane_sah[4];
+    int lane_plane[3] = {0, 0, 0};
+    uint32_t lane_left[3] = {0, 0, 0};
+    for (int i = 0; i < bin_count - 1; i++) {
+        vec4 x, y, z;
+        vec4_transpose3(vec4_load(&bins->box[0][i][0]), vec4_load(&bins->box[1][i][0]),
+                        vec4_load(&bins->box[2][i][0]), &x, &y, &z);
+        lox = vec4_min(lox, x);
+        loy = vec4_min(loy, y);
+        loz = vec4_min(loz, z);
+        vec4_transpose3(vec4_load(&bins->box[0][i][4]), vec4_load(&bins->box[1][i][4]),
+                        vec4_load(&bins->box[2][i][4]), &x, &y, &z);
+        hix = vec4_max(hix, x);
+        hiy = vec4_max(hiy, y);
+        hiz = vec4_max(hiz, z);
+        c0 += bins->count[0][i][0];
+        c1 += bins->count[1][i][0];
+        c2 += bins->count[2][i][0];
+        vec4 count = vec4_set((float)c0, (float)c1, (float)c2, 0.0f);
+        vec4 sah = vec4_add(vec4_mul(vec4_half_area3(lox, loy, loz, hix, hiy, hiz), count),
+                            vec4_load(right_sah[i + 1]));
+        /* An empty side gives inf * 0 = NaN or a meaningless value: such
+         * a plane never wins (as if its cost were +inf). */
+        uint32_t better = vec4_lt_bits(sah, lane_best) & vec4_ne_bits(count, zero) &
+                          vec4_ne_bits(vec4_load(right_count[i + 1]), zero) & 7u;
+        if (better) {
+            float s[4];
+            vec4_store(s, sah);
+            vec4_store(lane_sah, lane_best);
+            const uint32_t c[3] = {c0, c1, c2};
+            for (int k = 0; k < 3; k++) {
+                if (better >> k & 1u) {
+                    lane_sah[k] = s[k];
+                    lane_plane[k] = i + 1;
+                    lane_left[k] = c[k];
+                }
+            }
+            lane_best = vec4_load(lane_sah);
+        }
+    }
+    vec4_store(lane_sah, lane_best);
     float best_sah = INFINITY;
     int best_axis = -1;
     int best_plane = 0;
     uint32_t best_left_count = 0;
     for (int k = 0; k < 3; k++) {
-        if (!bn->binnable[k])
-            continue;
-        const uint32_t *cnt = bins->count[k];
-        vec4 lo = vec4_splat(INFINITY);
-        vec4 hi = vec4_splat(-INFINITY);
-        uint32_t count = 0;
-        for (int i = bin_count - 1; i > 0; i--) {
-            lo = vec4_min(lo, vec4_load(&bins->box[k][i][0]));
-            hi = vec4_max(hi, vec4_load(&bins->box[k][i][4]));
-            count += cnt[i];
-            right_count[i] = count;
-            right_sah[i] = vec4_half_area(lo, hi) * (float)count;
-        }
-        lo = vec4_splat(INFINITY);
-        hi = vec4_splat(-INFINITY);
-        count = 0;
-        for (int i = 0; i < bin_count - 1; i++) {
-            lo = vec4_min(lo, vec4_load(&bins->box[k][i][0]));
-            hi = vec4_max(hi, vec4_load(&bins->box[k][i][4]));
-            count += cnt[i];
-            float sah = vec4_half_area(lo, hi) * (float)count + right_sah[i + 1];
-            /* An empty side gives inf * 0 = NaN or a meaningless value. */
-            sah = count != 0 && right_count[i + 1] != 0 ? sah : INFINITY;
-            if (sah < best_sah) {
-                best_sah = sah;
-                best_axis = k;
-                best_plane = i + 1;
-                best_left_count = count;
-            }
+        if (bn->binnable[k] && lane_sah[k] < best_sah) {
+            best_sah = lane_sah[k];
+            best_axis = k;
+            best_plane = lane_plane[k];
+            best_left_count = lane_left[k];
         }
     }
     if (best_axis < 0)
@@ -237,8 +311,10 @@ static int find_best_split(const struct bins *bins, int bin_count, const struct 
 /*
  * Step 3: moves the primitives left of the chosen plane to the front of
  * [begin, end) and returns the first right slot.  Each primitive is
- * classified by build_bins_of, the very computation fill_bins counted it with,
- * so the sides match the bin counts.  Computes each side's centroid
+ * classified by one comparison with the least coordinate binned at or
+ * above the plane (build_split_threshold), found with build_bins_of, the
+ * very computation fill_bins counted it with, so the sides match the bin
+ * counts.  Computes each side's centroid
  * bounds on the way, for the children's binning.
  *
  * Lomuto's scheme without branches: every element is swapped with the
@@ -254,7 +330,12 @@ static uint32_t partition_refs(struct build_ref *refs, uint32_t begin, uint32_t 
                                struct cbounds *left_cb, struct cbounds *right_cb)
 {
     const int axis = s->axis;
-    const int32_t plane = s->plane;
+    float origin[4];
+    float scale[4];
+    vec4_store(origin, bn->map.origin);
+    vec4_store(scale, bn->map.scale);
+    const vec4 threshold = vec4_splat(
+        build_split_threshold(&bn->map, axis, s->plane, origin[axis], scale[axis]));
     vec4 llo = vec4_splat(INFINITY);
     vec4 lhi = vec4_splat(-INFINITY);
     vec4 rlo = llo;
@@ -263,9 +344,7 @@ static uint32_t partition_refs(struct build_ref *refs, uint32_t begin, uint32_t 
     for (uint32_t i = begin; i < end; i++) {
         struct build_ref x = refs[i];
         vec4 c = build_ref_centroid(&x);
-        int32_t bin[4];
-        build_bins_of(&bn->map, c, bin);
-        const uint32_t left = bin[axis] < plane;
+        const uint32_t left = ((vec4_ge_bits(c, threshold) >> axis) & 1u) ^ 1u;
         build_side_grow(c, left, &llo, &lhi, &rlo, &rhi);
         refs[i] = refs[first_right];
         refs[first_right] = x;
@@ -296,25 +375,42 @@ struct small_split {
     uint8_t order[BINNED_EXACT_MAX];
 };
 
-/* Fills order[0, n) with 0..n-1 sorted by key, ties in slot order.  By
+/* Fills order[k][0, n) with 0..n-1 sorted by the refs' centroids on axis
+ * k (build_float_order of lo[k] + hi[k]), ties in slot order.  By
  * rank counting: O(n^2) comparisons but no data-dependent branch, which
  * for n <= 8 beats any comparison sort (an insertion sort here measured
  * three times slower, from mispredicted branches).  Each pair is compared
  * once: for j < i, j comes first exactly when key[j] <= key[i].  The
  * keys are build_float_order values, a total order, so the ranks are a
  * permutation whatever the input. */
-static void sort_small(const uint32_t *key, uint32_t n, uint8_t *order)
+static void sort_small3(const struct build_ref *refs, uint32_t n,
+                        uint8_t order[3][BINNED_EXACT_MAX])
 {
-    uint32_t rank[BINNED_EXACT_MAX] = {0};
+    /* The three axes at once, one per lane: key of ref i = its doubled
+     * centroid (lo + hi, the scalar sum per lane) as an ordered integer
+     * (vec4_order_key: the signed form of build_float_order).  For j < i,
+     * gt = -1 when key[j] > key[i], i.e. when j does not come first, so
+     * rank[i] += 1 + gt and rank[j] -= gt; the 1s are rank[i]'s start
+     * value i. */
+    vec4i key[BINNED_EXACT_MAX];
+    vec4i rank[BINNED_EXACT_MAX];
+    for (uint32_t i = 0; i < n; i++) {
+        key[i] = vec4_order_key(build_ref_centroid(&refs[i]));
+        rank[i] = vec4i_splat((int32_t)i);
+    }
     for (uint32_t i = 1; i < n; i++) {
         for (uint32_t j = 0; j < i; j++) {
-            uint32_t j_first = key[j] <= key[i];
-            rank[i] += j_first;
-            rank[j] += 1 - j_first;
+            vec4i gt = vec4i_gt(key[j], key[i]);
+            rank[i] = vec4i_add(rank[i], gt);
+            rank[j] = vec4i_sub(rank[j], gt);
         }
     }
-    for (uint32_t i = 0; i < n; i++)
-        order[rank[i]] = (uint8_t)i;
+    for (uint32_t i = 0; i < n; i++) {
+        int32_t r[4];
+        vec4i_store(r, rank[i]);
+        for (int k = 0; k < 3; k++)
+            order[k][r[k]] = (uint8_t)i;
+    }
 }
 
 static int find_small_split(const struct build_ref *refs, uint32_t n, struct small_split *best)
@@ -335,11 +431,8 @@ static int find_small_split(const struct build_ref *refs, uint32_t n, struct sma
     float best_sah = INFINITY;
     int best_axis = -1;
     uint32_t best_pos = 0;
+    sort_small3(refs, n, order);
     for (int k = 0; k < 3; k++) {
-        uint32_t key[BINNED_EXACT_MAX];
-        for (uint32_t i = 0; i < n; i++)
-            key[i] = build_float_order(refs[i].lo[k] + refs[i].hi[k]);
-        sort_small(key, n, order[k]);
         const uint8_t *o = order[k];
         vec4 lo = vec4_splat(INFINITY);
         vec4 hi = vec4_splat(-INFINITY);

@@ -91,6 +91,104 @@ static inline void build_bins_of(const struct build_bin_map *m, vec4 centroid, i
     vec4_trunc(bin, f);
 }
 
+/* The histograms' form of build_bins_of: the same bins, as byte offsets
+ * of 32-byte bin records, axis k's bins starting at byte axis_base[k].
+ * One shift and one add for the three axes together instead of an index
+ * extension, shift and add per axis in the histogram loops, and the
+ * offset addresses a bin's box and, in a parallel array of 32-byte
+ * stride, its count. */
+static inline void build_bin_offsets(const struct build_bin_map *m, vec4 centroid,
+                                     const uint32_t axis_base[4], uint32_t off[4])
+{
+    vec4 f = vec4_mul(vec4_sub(centroid, m->origin), m->scale);
+    f = vec4_min(vec4_max(f, vec4_splat(0.0f)), m->last);
+    vec4_trunc_offset32(off, f, axis_base);
+}
+
+/* Maps a float to an unsigned integer with the same order (negatives
+ * reversed), and every NaN to a fixed place: a total order even for input
+ * that breaks the contract, so sorts and selections built on it cannot
+ * run out of their range.  -0 sorts just below +0. */
+static inline uint32_t build_float_order(float f)
+{
+    uint32_t u;
+    memcpy(&u, &f, sizeof(u));
+    return u ^ ((u >> 31) ? 0xffffffffu : 0x80000000u);
+}
+
+/* The float whose build_float_order key is k (k the key of a non-NaN). */
+static inline float build_float_of_order(uint32_t k)
+{
+    uint32_t u = (k & 0x80000000u) ? k ^ 0x80000000u : ~k;
+    float f;
+    memcpy(&f, &u, sizeof(f));
+    return f;
+}
+
+/* build_bins_of's bin on `axis` of a centroid whose coordinate on that
+ * axis is x. */
+static inline int32_t build_bin_at(const struct build_bin_map *m, int axis, float x)
+{
+    int32_t bin[4];
+    build_bins_of(m, vec4_splat(x), bin);
+    return bin[axis];
+}
+
+/*
+ * The partitions' side test as one comparison: for a split at `plane`
+ * (1 <= plane <= bins - 1) on a binned axis (origin finite, scale finite
+ * and positive), the least non-NaN float t with build_bin_at(t) >= plane,
+ * so that a centroid coordinate c lies in a bin below the plane exactly
+ * when !(c >= t).  That holds because the bin is a non-decreasing function
+ * of c (a subtraction, a multiplication by a positive scale, a clamp and
+ * a truncation, each monotone under IEEE rounding; -0 and +0 give the
+ * same bin), -inf is in bin 0 and +inf in the last; a NaN is in bin 0 and
+ * fails c >= t, so it stays left too.  Found by searching the float order
+ * (build_float_order) with the very bin computation: from the estimate
+ * origin + plane / scale outwards in doubling steps, then by bisection;
+ * a few evaluations per node, as the estimate is off by a few ulps.
+ */
+static inline float build_split_threshold(const struct build_bin_map *m, int axis,
+                                          int32_t plane, float origin, float scale)
+{
+    uint32_t lo = build_float_order(-INFINITY); /* bin below the plane */
+    uint32_t hi = build_float_order(INFINITY);  /* bin at or above it */
+    float guess = origin + (float)plane / scale;
+    if (guess == guess) {
+        uint32_t k = build_float_order(guess);
+        k = k <= lo ? lo + 1 : k > hi ? hi : k;
+        if (build_bin_at(m, axis, build_float_of_order(k)) >= plane) {
+            hi = k;
+            for (uint64_t step = 1; hi - lo > 1; step *= 2) {
+                uint32_t p = hi - lo > step ? hi - (uint32_t)step : lo + 1;
+                if (build_bin_at(m, axis, build_float_of_order(p)) < plane) {
+                    lo = p;
+                    break;
+                }
+                hi = p;
+            }
+        } else {
+            lo = k;
+            for (uint64_t step = 1; hi - lo > 1; step *= 2) {
+                uint32_t p = hi - lo > step ? lo + (uint32_t)step : hi - 1;
+                if (build_bin_at(m, axis, build_float_of_order(p)) >= plane) {
+                    hi = p;
+                    break;
+                }
+                lo = p;
+            }
+        }
+    }
+    while (hi - lo > 1) {
+        uint32_t mid = lo + (hi - lo) / 2;
+        if (build_bin_at(m, axis, build_float_of_order(mid)) >= plane)
+            hi = mid;
+        else
+            lo = mid;
+    }
+    return build_float_of_order(hi);
+}
+
 /*
  * The partitions' side bounds without a select: a centroid on side
  * `left` (1 left, 0 right) is added build_side_offset[left][j] before it
@@ -203,17 +301,6 @@ static inline void build_set_inner(struct bvh_node *node, uint32_t left_child)
 {
     node->first = left_child;
     node->count = 0;
-}
-
-/* Maps a float to an unsigned integer with the same order (negatives
- * reversed), and every NaN to a fixed place: a total order even for input
- * that breaks the contract, so sorts and selections built on it cannot
- * run out of their range.  -0 sorts just below +0. */
-static inline uint32_t build_float_order(float f)
-{
-    uint32_t u;
-    memcpy(&u, &f, sizeof(u));
-    return u ^ ((u >> 31) ? 0xffffffffu : 0x80000000u);
 }
 
 /* min/max written as the comparison the x86 minps/maxps instructions

@@ -120,6 +120,7 @@ struct open_node {
     /* The split picked (axis < 0: none). */
     int axis;
     int plane;
+    float threshold; /* the plane as build_split_threshold's coordinate */
     uint32_t left_count;
     struct aabb left_box;
     struct aabb right_box;
@@ -177,7 +178,10 @@ struct pbuild {
     uint32_t open_count;
     int src; /* buffer the open nodes' refs are in */
     float (*hist_box)[8];  /* per chunk: 3 * bins boxes (min xyz -, max xyz -) */
-    uint32_t *hist_count;  /* per chunk: 3 * bins counts */
+    /* per chunk: 3 * bins counts, [0] of each: the stride of hist_box,
+     * so that bin_task reaches both with one byte offset
+     * (build_bin_offsets) */
+    uint32_t (*hist_count)[8];
 
     /* grid */
     uint32_t res[3];
@@ -343,28 +347,32 @@ static void bin_task(void *arg, int worker)
     struct pbuild *b = arg;
     const int bins = b->bins;
     const struct build_ref *refs = b->refs[b->src];
+    /* Byte offset of axis k's first bin in a chunk's histogram. */
+    const uint32_t axis_base[4] = {0, (uint32_t)bins * 32u, 2u * (uint32_t)bins * 32u, 0};
     uint32_t c;
     while ((c = chunk_of(b)) < b->chunk_count) {
         const struct chunk *ch = &b->chunks[c];
         const struct build_bin_map map = bin_map_of(&b->open[ch->node], bins - 1);
         float(*box)[8] = &b->hist_box[(size_t)c * 3 * bins];
-        uint32_t *count = &b->hist_count[(size_t)c * 3 * bins];
+        uint32_t(*count)[8] = &b->hist_count[(size_t)c * 3 * bins];
         for (int i = 0; i < 3 * bins; i++) {
             vec4_store(&box[i][0], vec4_splat(INFINITY));
             vec4_store(&box[i][4], vec4_splat(-INFINITY));
-            count[i] = 0;
+            count[i][0] = 0;
         }
+        char *box_base = (char *)box;
+        char *count_base = (char *)count;
         for (uint32_t i = ch->begin; i < ch->end; i++) {
             const struct build_ref *r = &refs[i];
             vec4 lo = vec4_xyz0(vec4_load(r->lo));
             vec4 hi = vec4_load(r->hi);
-            int32_t bins_k[4];
-            build_bins_of(&map, vec4_add(lo, hi), bins_k);
+            uint32_t off[4];
+            build_bin_offsets(&map, vec4_add(lo, hi), axis_base, off);
             for (int k = 0; k < 3; k++) {
-                int bin = k * bins + bins_k[k];
-                vec4_store(&box[bin][0], vec4_min(vec4_load(&box[bin][0]), lo));
-                vec4_store(&box[bin][4], vec4_max(vec4_load(&box[bin][4]), hi));
-                count[bin]++;
+                float *bin = (float *)(void *)(box_base + off[k]);
+                vec4_store(&bin[0], vec4_min(vec4_load(&bin[0]), lo));
+                vec4_store(&bin[4], vec4_max(vec4_load(&bin[4]), hi));
+                (*(uint32_t *)(void *)(count_base + off[k]))++;
             }
         }
     }
@@ -389,7 +397,7 @@ static void pick_split(struct pbuild *b, struct open_node *o)
             const float *cb = b->hist_box[(size_t)c * 3 * bins + i];
             lo = vec4_min(lo, vec4_load(&cb[0]));
             hi = vec4_max(hi, vec4_load(&cb[4]));
-            cnt += b->hist_count[(size_t)c * 3 * bins + i];
+            cnt += b->hist_count[(size_t)c * 3 * bins + i][0];
         }
         vec4_store(&box[i][0], lo);
         vec4_store(&box[i][4], hi);
@@ -458,6 +466,9 @@ static void pick_split(struct pbuild *b, struct open_node *o)
         hi = vec4_max(hi, vec4_load(&kb[i][4]));
     }
     build_store_box(&o->right_box, lo, hi);
+    const struct build_bin_map map = bin_map_of(o, bins - 1);
+    o->threshold =
+        build_split_threshold(&map, o->axis, o->plane, o->origin[o->axis], o->scale[o->axis]);
 }
 
 /* Phase C: every chunk of a splitting node copies its left refs to its
@@ -468,7 +479,6 @@ static void partition_task(void *arg, int worker)
 {
     (void)worker;
     struct pbuild *b = arg;
-    const int last = b->bins - 1;
     const struct build_ref *src = b->refs[b->src];
     struct build_ref *dst = b->refs[!b->src];
     uint32_t c;
@@ -477,9 +487,8 @@ static void partition_task(void *arg, int worker)
         const struct open_node *o = &b->open[ch->node];
         if (o->axis < 0)
             continue;
-        const struct build_bin_map map = bin_map_of(o, last);
         const int axis = o->axis;
-        const int32_t plane = o->plane;
+        const vec4 threshold = vec4_splat(o->threshold);
         uint32_t li = ch->left_dst;
         uint32_t ri = ch->right_dst;
         vec4 llo = vec4_splat(INFINITY);
@@ -489,9 +498,8 @@ static void partition_task(void *arg, int worker)
         for (uint32_t i = ch->begin; i < ch->end; i++) {
             const struct build_ref *r = &src[i];
             vec4 cen = build_ref_centroid(r);
-            int32_t bin[4];
-            build_bins_of(&map, cen, bin);
-            const uint32_t left = bin[axis] < plane;
+            /* !(c >= threshold): bin below the plane (build_split_threshold). */
+            const uint32_t left = ((vec4_ge_bits(cen, threshold) >> axis) & 1u) ^ 1u;
             build_side_grow(cen, left, &llo, &lhi, &rlo, &rhi);
             dst[left ? li : ri] = *r;
             li += left;
@@ -556,7 +564,7 @@ static int stage1_binning(struct pbuild *b, const struct open_node *root)
             float(*hb)[8] = rt_realloc_array(b->hist_box, hist_need, sizeof(*hb));
             if (hb)
                 b->hist_box = hb;
-            uint32_t *hc = rt_realloc_array(b->hist_count, hist_need, sizeof(*hc));
+            uint32_t(*hc)[8] = rt_realloc_array(b->hist_count, hist_need, sizeof(*hc));
             if (hc)
                 b->hist_count = hc;
             if (!hb || !hc)
@@ -588,10 +596,11 @@ static int stage1_binning(struct pbuild *b, const struct open_node *root)
             uint32_t left_dst = o->begin;
             uint32_t right_dst = o->begin + o->left_count;
             for (uint32_t k = o->first_chunk; k < o->first_chunk + o->chunk_count; k++) {
-                const uint32_t *cnt = &b->hist_count[(size_t)k * 3 * b->bins + o->axis * b->bins];
+                const uint32_t(*cnt)[8] =
+                    &b->hist_count[(size_t)k * 3 * b->bins + o->axis * b->bins];
                 uint32_t left = 0;
                 for (int bin = 0; bin < o->plane; bin++)
-                    left += cnt[bin];
+                    left += cnt[bin][0];
                 b->chunks[k].left_dst = left_dst;
                 b->chunks[k].right_dst = right_dst;
                 left_dst += left;
