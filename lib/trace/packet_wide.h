@@ -832,18 +832,17 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
  * spread over more than PACKET_SPREAD_MAX triangle spacings of the
  * object goes ray by ray (the table's any4): its rays soon part into different
  * subtrees near their origins, and the interval walk's lane tests then
- * cost more than the rays' own walks (the hybrid step of Benthin, Wald,
- * Woop, Ernst and Mark 2012, "Combining single and packet-ray tracing
- * for arbitrary ray distributions on the Intel MIC architecture",
- * decided per packet and up front).  The spread is the largest extent of the origins' box over
+ * cost more than the rays' own walks (the hybrid step of Benthin et al.
+ * 2012, "Combining single and packet-ray tracing for arbitrary ray
+ * distributions on the Intel MIC architecture", decided per packet and
+ * up front).  The spread is the largest extent of the origins' box over
  * the axes; the triangle spacing is the object's box diagonal over the
  * square root of its triangle count (the edge of a triangle of a
  * surface that fills the box).  Measured (docs/performance-log.md,
- * pnode): soup's and bumpy's shadow packets break even at 6-8 spacings
- * and beyond run at 0.81-0.98 of the single walk's speed; the kitchen's
- * break even there too (its few wider packets scatter, 0.81-1.24);
- * gears' gain at every spread, but beyond 8 spacings are 1 % of its
- * shadow packets.  Only a choice of walk: every ray's answer is the
+ * pnode): on soup, bumpy and the BART kitchen the packets gain up to
+ * 6-8 spacings and lose beyond (0.81-0.94 of the single walk's speed);
+ * gears' packets gain at every spread but beyond 8 spacings are 1 % of
+ * its shadow packets.  Only a choice of walk: every ray's answer is the
  * single walk's either way.
  */
 #define PACKET_SPREAD_MAX 8.0f
