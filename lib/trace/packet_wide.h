@@ -827,52 +827,6 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
 }
 #endif
 
-/*
- * A shadow packet (any hit, rays from several origins) whose origins
- * spread over more than PACKET_SPREAD_MAX triangle spacings of the
- * object goes ray by ray (the table's any4): its rays soon part into different
- * subtrees near their origins, and the interval walk's lane tests then
- * cost more than the rays' own walks (the hybrid step of Benthin et al.
- * 2012, "Combining single and packet-ray tracing for arbitrary ray
- * distributions on the Intel MIC architecture", decided per packet and
- * up front).  The spread is the largest extent of the origins' box over
- * the axes; the triangle spacing is the object's box diagonal over the
- * square root of its triangle count (the edge of a triangle of a
- * surface that fills the box).  Measured (docs/performance-log.md,
- * pnode): on soup, bumpy and the BART kitchen the packets gain up to
- * 6-8 spacings and lose beyond (0.81-0.94 of the single walk's speed);
- * gears' packets gain at every spread but beyond 8 spacings are 1 % of
- * its shadow packets.  Only a choice of walk: every ray's answer is the
- * single walk's either way.
- */
-#define PACKET_SPREAD_MAX 8.0f
-
-#if defined(__AVX__)
-static inline int packet_spread_wide(const struct bvh *bvh, const __m256 f_min[2],
-                                     const __m256 f_max[2])
-{
-    if (!bvh || !bvh->node_count)
-        return 0;
-    /* Lanes 0-2 of f_min[0], f_max[0]: the least and greatest origin
-     * (TRI8_F_ORG + k); lane 3 (a direction) and the root's fourth
-     * lanes (first, count) are not read. */
-    const __m128 e =
-        _mm_sub_ps(_mm256_castps256_ps128(f_max[0]), _mm256_castps256_ps128(f_min[0]));
-    __m128 spread = _mm_max_ss(e, _mm_shuffle_ps(e, e, 1));
-    spread = _mm_max_ss(spread, _mm_movehl_ps(e, e));
-    const struct bvh_node *root = &bvh->nodes[0];
-    const __m128 d = _mm_sub_ps(_mm_loadu_ps(root->aabb_max), _mm_loadu_ps(root->aabb_min));
-    const __m128 d2 = _mm_mul_ps(d, d);
-    const __m128 diag2 =
-        _mm_add_ss(_mm_add_ss(d2, _mm_shuffle_ps(d2, d2, 1)), _mm_movehl_ps(d2, d2));
-    /* spread > PACKET_SPREAD_MAX * diag / sqrt(n), squared; a NaN or an
-     * infinity only picks one of two walks with the same answers. */
-    const float s = _mm_cvtss_f32(spread);
-    return s * s * (float)bvh->prim_count >
-           PACKET_SPREAD_MAX * PACKET_SPREAD_MAX * _mm_cvtss_f32(diag2);
-}
-#endif
-
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
@@ -953,14 +907,6 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
          * first leaf outside the eight-ray test. */
         p.r4_ready = 0;
         ia = wide->width == 8 && hybrid == 0 && packet_ia_init(&p, rays, active, f_min, f_max);
-        if (ia && any_hit && p.ia_masks && packet_spread_wide(bvh, f_min, f_max)) {
-            for (unsigned m = active; m; m &= m - 1u) {
-                const unsigned r = (unsigned)__builtin_ctz(m);
-                if (TRACE_WIDE_ANY(wide, bvh, tri, &rays[r], t_max[r], counters))
-                    result |= 1u << r;
-            }
-            return result;
-        }
     }
 #endif
     if (!ia) {
