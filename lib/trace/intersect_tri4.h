@@ -555,9 +555,6 @@ static inline float tri4_lane_sheared(const struct trace_ray *ray, const struct 
  * step is isect_triangle's on the same floats, so the answer is its
  * answer bit for bit.
  */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
 static inline int tri_lane_test(const struct trace_ray *ray, const struct tri4_packet *p,
                                 unsigned pl, const struct tri4_lanes *lanes, unsigned l,
                                 int any_hit, float t_max, float *t, float *u, float *w)
