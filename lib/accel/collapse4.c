@@ -19,16 +19,11 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "accel/bvh_build.h"
 #include "base/alloc.h"
 #include "base/pool.h"
 #include "trace/intersect.h"
 
 #define MAX_WIDTH 8
-
-/* A leaf lane of triangles is one or two packets: the 8-wide single-ray
- * walk tests two as one 8-lane call (traverse_wide.h, wide_leaf8_test). */
-typedef char wide_leaf_is_two_packets[BVH_WIDE_MAX_LEAF <= 8 ? 1 : -1];
 
 /* About what a wide layout takes per triangle with merged leaves (the
  * memory table of rtbench embree: 60-67 bytes on bumpy, soup and the

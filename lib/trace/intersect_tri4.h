@@ -101,21 +101,17 @@ static inline void tri4_slab(__m128 d0, __m128 d1, __m128 d2, __m128 inv, int ne
     *t_hi = _mm_min_ps(t_far, *t_hi);
 }
 
-/* The float values of the lanes that isect_triangle_finish takes
+/* The float values of the four lanes that isect_triangle_finish takes
  * (tri4_candidates_lanes), and the lanes with an edge function of
- * exactly 0, which only isect_triangle itself may decide.  Room for
- * eight lanes: the 8-lane test of a leaf of two packets (tri4_pair_filter_lanes)
- * writes them all, the 4-lane filter the first four. */
-#define TRI_LANES_MAX 8
+ * exactly 0, which only isect_triangle itself may decide. */
 struct tri4_lanes {
-    float U[TRI_LANES_MAX], V[TRI_LANES_MAX], W[TRI_LANES_MAX], det[TRI_LANES_MAX];
-    float Az[TRI_LANES_MAX], Bz[TRI_LANES_MAX], Cz[TRI_LANES_MAX];
-    float size[TRI_LANES_MAX], t_lo[TRI_LANES_MAX], t_hi[TRI_LANES_MAX];
+    float U[4], V[4], W[4], det[4];
+    float Az[4], Bz[4], Cz[4];
+    float size[4], t_lo[4], t_hi[4];
     /* The sheared x, y of the vertices, written only when a lane is
      * deferred: its double-precision edge functions are computed from
      * them (tri4_lane_test). */
-    float Ax[TRI_LANES_MAX], Ay[TRI_LANES_MAX], Bx[TRI_LANES_MAX], By[TRI_LANES_MAX];
-    float Cx[TRI_LANES_MAX], Cy[TRI_LANES_MAX];
+    float Ax[4], Ay[4], Bx[4], By[4], Cx[4], Cy[4];
     unsigned deferred;
 };
 
@@ -253,153 +249,6 @@ static inline unsigned tri4_filter_lanes(const struct tri4_ray *r, const struct 
     }
     return mask;
 }
-
-#if defined(__AVX__)
-/* Row `off` bytes into vertex i's coordinates of p[0] (lanes 0-3) and of
- * p[1] (lanes 4-7): two 128-bit loads into one 256-bit vector. */
-static inline __m256 tri4_pair_row(const struct tri4_packet *p, int i, size_t off)
-{
-    const char *lo = (const char *)p[0].v[i] + off;
-    const char *hi = (const char *)p[1].v[i] + off;
-    return _mm256_insertf128_ps(
-        _mm256_castps128_ps256(_mm_loadu_ps((const float *)(const void *)lo)),
-        _mm_loadu_ps((const float *)(const void *)hi), 1);
-}
-
-/* tri4_slab on the eight lanes of two packets. */
-static inline void tri4_pair_slab(__m256 d0, __m256 d1, __m256 d2, __m256 inv, int neg,
-                                  __m256 *t_lo, __m256 *t_hi)
-{
-    __m256 lo = _mm256_min_ps(d0, d1);
-    __m256 hi = _mm256_max_ps(d1, d0);
-    lo = _mm256_min_ps(lo, d2);
-    hi = _mm256_max_ps(hi, d2);
-    const __m256 t_near = _mm256_mul_ps(neg ? hi : lo, inv);
-    const __m256 t_far = _mm256_mul_ps(neg ? lo : hi, inv);
-    *t_lo = _mm256_max_ps(t_near, *t_lo);
-    *t_hi = _mm256_min_ps(t_far, *t_hi);
-}
-
-/*
- * tri4_filter_lanes on the two consecutive packets p[0], p[1] of a leaf
- * of 5-8 triangles at once (lanes 0-3: p[0]'s, lanes 4-7: p[1]'s), with
- * AVX's 256-bit vectors: the same float operations lane by lane, in the
- * same order, so each lane's values and verdict are those of the 4-lane
- * filter on its own packet with the same t_max.  The leaf's second
- * packet is filtered with the limit at the leaf's start instead of the
- * limit after the first packet's lanes; the rejections on t_max are
- * monotone in it and tri_lane_test applies them again with the current
- * limit (see the file's head), so the lanes accepted and their t, u, v
- * are the same as two 4-lane calls'.  One call, one set of broadcasts
- * and half the vector operations for the leaves the collapse merges
- * (collapse4.c: two packets under one lane).  The early return leaves
- * only when all eight lanes are refused by their signs.
- */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline unsigned tri4_pair_filter_lanes(const struct tri4_ray *r,
-                                              const struct tri4_packet *p, unsigned valid,
-                                              float t_max, struct tri4_lanes *out, int any_hit,
-                                              int early_out)
-{
-    const __m256 neg_org_x = _mm256_broadcast_ps(&r->neg_org_x);
-    const __m256 neg_org_y = _mm256_broadcast_ps(&r->neg_org_y);
-    const __m256 neg_org_z = _mm256_broadcast_ps(&r->neg_org_z);
-    const __m256 ax = _mm256_add_ps(neg_org_x, tri4_pair_row(p, 0, r->off_x));
-    const __m256 ay = _mm256_add_ps(neg_org_y, tri4_pair_row(p, 0, r->off_y));
-    const __m256 az = _mm256_add_ps(neg_org_z, tri4_pair_row(p, 0, r->off_z));
-    const __m256 bx = _mm256_add_ps(neg_org_x, tri4_pair_row(p, 1, r->off_x));
-    const __m256 by = _mm256_add_ps(neg_org_y, tri4_pair_row(p, 1, r->off_y));
-    const __m256 bz = _mm256_add_ps(neg_org_z, tri4_pair_row(p, 1, r->off_z));
-    const __m256 cx = _mm256_add_ps(neg_org_x, tri4_pair_row(p, 2, r->off_x));
-    const __m256 cy = _mm256_add_ps(neg_org_y, tri4_pair_row(p, 2, r->off_y));
-    const __m256 cz = _mm256_add_ps(neg_org_z, tri4_pair_row(p, 2, r->off_z));
-
-    const __m256 sx = _mm256_broadcast_ps(&r->sx);
-    const __m256 sy = _mm256_broadcast_ps(&r->sy);
-    const __m256 Ax = _mm256_add_ps(ax, _mm256_mul_ps(sx, az));
-    const __m256 Ay = _mm256_add_ps(ay, _mm256_mul_ps(sy, az));
-    const __m256 Bx = _mm256_add_ps(bx, _mm256_mul_ps(sx, bz));
-    const __m256 By = _mm256_add_ps(by, _mm256_mul_ps(sy, bz));
-    const __m256 Cx = _mm256_add_ps(cx, _mm256_mul_ps(sx, cz));
-    const __m256 Cy = _mm256_add_ps(cy, _mm256_mul_ps(sy, cz));
-
-    const __m256 U = _mm256_sub_ps(_mm256_mul_ps(Cx, By), _mm256_mul_ps(Cy, Bx));
-    const __m256 V = _mm256_sub_ps(_mm256_mul_ps(Ax, Cy), _mm256_mul_ps(Ay, Cx));
-    const __m256 W = _mm256_sub_ps(_mm256_mul_ps(Bx, Ay), _mm256_mul_ps(By, Ax));
-
-    /* The sign test, early return, edge zeros, depth range, box
-     * interval and det exactly as tri4_filter_lanes (its comments say
-     * why each is the scalar test's). */
-    const __m256 zero = _mm256_setzero_ps();
-    const __m256 any_neg =
-        _mm256_cmp_ps(_mm256_min_ps(U, _mm256_min_ps(V, W)), zero, _CMP_LT_OQ);
-    const __m256 any_pos =
-        _mm256_cmp_ps(_mm256_max_ps(U, _mm256_max_ps(V, W)), zero, _CMP_GT_OQ);
-    const __m256 mixed = _mm256_and_ps(any_neg, any_pos);
-    if (early_out && ((unsigned)_mm256_movemask_ps(mixed) & valid) == valid)
-        return 0;
-
-    const __m256 on_edge = _mm256_or_ps(
-        _mm256_or_ps(_mm256_cmp_ps(U, zero, _CMP_EQ_OQ), _mm256_cmp_ps(V, zero, _CMP_EQ_OQ)),
-        _mm256_cmp_ps(W, zero, _CMP_EQ_OQ));
-
-    const __m256 sz = _mm256_broadcast_ps(&r->sz);
-    const __m256 Az = _mm256_mul_ps(sz, az);
-    const __m256 Bz = _mm256_mul_ps(sz, bz);
-    const __m256 Cz = _mm256_mul_ps(sz, cz);
-    const __m256 z_lo = _mm256_min_ps(Az, _mm256_min_ps(Bz, Cz));
-    const __m256 z_hi = _mm256_max_ps(Az, _mm256_max_ps(Bz, Cz));
-    const __m256 limit = _mm256_set1_ps(t_max);
-    __m256 t_lo = z_lo;
-    __m256 t_hi = z_hi;
-    tri4_pair_slab(ax, bx, cx, _mm256_broadcast_ps(&r->inv_x), r->neg_x, &t_lo, &t_hi);
-    tri4_pair_slab(ay, by, cy, _mm256_broadcast_ps(&r->inv_y), r->neg_y, &t_lo, &t_hi);
-    const __m256 geom = _mm256_andnot_ps(
-        mixed,
-        _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(z_hi, _mm256_broadcast_ps(&r->tmin), _CMP_GE_OQ),
-                                    _mm256_cmp_ps(z_lo, limit, _CMP_LT_OQ)),
-                      _mm256_cmp_ps(t_lo, limit, _CMP_LT_OQ)));
-    const unsigned deferred = (unsigned)_mm256_movemask_ps(_mm256_and_ps(on_edge, geom)) & valid;
-
-    const __m256 det = _mm256_add_ps(_mm256_add_ps(U, V), W);
-    const __m256 abs_det = _mm256_andnot_ps(_mm256_set1_ps(-0.0f), det);
-    __m256 keep = _mm256_and_ps(geom, _mm256_cmp_ps(det, zero, _CMP_NEQ_UQ));
-    keep = _mm256_and_ps(keep, _mm256_cmp_ps(abs_det, _mm256_set1_ps(INFINITY), _CMP_LT_OQ));
-    const unsigned mask = ((unsigned)_mm256_movemask_ps(keep) & valid) | deferred;
-    if (out && mask) {
-        _mm256_storeu_ps(out->U, U);
-        _mm256_storeu_ps(out->V, V);
-        _mm256_storeu_ps(out->W, W);
-        _mm256_storeu_ps(out->det, det);
-        _mm256_storeu_ps(out->Az, Az);
-        _mm256_storeu_ps(out->Bz, Bz);
-        _mm256_storeu_ps(out->Cz, Cz);
-        _mm256_storeu_ps(out->t_lo, t_lo);
-        _mm256_storeu_ps(out->t_hi, t_hi);
-        out->deferred = deferred;
-        if (!any_hit) {
-            const __m256 sign = _mm256_set1_ps(-0.0f);
-            __m256 size = _mm256_max_ps(
-                _mm256_max_ps(_mm256_andnot_ps(sign, Ax), _mm256_andnot_ps(sign, Ay)),
-                _mm256_max_ps(_mm256_andnot_ps(sign, Bx), _mm256_andnot_ps(sign, By)));
-            size = _mm256_max_ps(
-                size, _mm256_max_ps(_mm256_andnot_ps(sign, Cx), _mm256_andnot_ps(sign, Cy)));
-            _mm256_storeu_ps(out->size, size);
-            if (deferred) {
-                _mm256_storeu_ps(out->Ax, Ax);
-                _mm256_storeu_ps(out->Ay, Ay);
-                _mm256_storeu_ps(out->Bx, Bx);
-                _mm256_storeu_ps(out->By, By);
-                _mm256_storeu_ps(out->Cx, Cx);
-                _mm256_storeu_ps(out->Cy, Cy);
-            }
-        }
-    }
-    return mask;
-}
-#endif
 
 /* tri4_filter_lanes with the early return. */
 #if defined(__GNUC__)
@@ -543,10 +392,8 @@ static inline float tri4_lane_sheared(const struct trace_ray *ray, const struct 
 }
 
 /*
- * isect_triangle on lane pl of p, which tri4_candidates_lanes (or
- * tri4_pair_filter_lanes) kept (with a limit at least t_max) and whose floats
- * it wrote to lane l of `lanes` (l = pl for a 4-lane filter; for the
- * 8-lane one p is the lane's own packet of the two): a
+ * isect_triangle on lane l of p, which tri4_candidates_lanes kept (with
+ * a limit at least t_max) and whose floats it wrote to `lanes`: a
  * deferred lane first gets isect_triangle's double-precision edge
  * functions on those floats (no second float pass); every lane gets the
  * rejections on t_max again with this t_max (z_lo < t_max, t_lo <
@@ -555,9 +402,9 @@ static inline float tri4_lane_sheared(const struct trace_ray *ray, const struct 
  * step is isect_triangle's on the same floats, so the answer is its
  * answer bit for bit.
  */
-static inline int tri_lane_test(const struct trace_ray *ray, const struct tri4_packet *p,
-                                unsigned pl, const struct tri4_lanes *lanes, unsigned l,
-                                int any_hit, float t_max, float *t, float *u, float *w)
+static inline int tri4_lane_test(const struct trace_ray *ray, const struct tri4_packet *p,
+                                 const struct tri4_lanes *lanes, unsigned l, int any_hit,
+                                 float t_max, float *t, float *u, float *w)
 {
     float U = lanes->U[l], V = lanes->V[l], W = lanes->W[l], det = lanes->det[l];
     /* The any-hit filter leaves size and the sheared x, y to this lane
@@ -572,7 +419,7 @@ static inline int tri_lane_test(const struct trace_ray *ray, const struct tri4_p
          * rounded back.  Its depth-range and box-interval rejections
          * follow below as for any lane. */
         if (any_hit) {
-            size = tri4_lane_sheared(ray, p, pl, sheared);
+            size = tri4_lane_sheared(ray, p, l, sheared);
             have_size = 1;
         } else {
             sheared[0] = lanes->Ax[l];
@@ -613,27 +460,18 @@ static inline int tri_lane_test(const struct trace_ray *ray, const struct tri4_p
         if (isect_occludes_short(ray, lanes->t_lo[l], lanes->t_hi[l], t_max))
             return 1;
         if (!have_size)
-            size = tri4_lane_sheared(ray, p, pl, sheared);
+            size = tri4_lane_sheared(ray, p, l, sheared);
         float tt, uu, ww;
         return isect_triangle_finish_impl(
-            ray, p->v[0][0][pl], p->v[0][1][pl], p->v[0][2][pl], p->v[1][0][pl], p->v[1][1][pl],
-            p->v[1][2][pl], p->v[2][0][pl], p->v[2][1][pl], p->v[2][2][pl], U, V, W, det, Az, Bz,
+            ray, p->v[0][0][l], p->v[0][1][l], p->v[0][2][l], p->v[1][0][l], p->v[1][1][l],
+            p->v[1][2][l], p->v[2][0][l], p->v[2][1][l], p->v[2][2][l], U, V, W, det, Az, Bz,
             Cz, size, lanes->t_lo[l], lanes->t_hi[l], t_max, 1, &tt, &uu, &ww);
     }
-    return isect_triangle_finish_impl(ray, p->v[0][0][pl], p->v[0][1][pl], p->v[0][2][pl],
-                                      p->v[1][0][pl], p->v[1][1][pl], p->v[1][2][pl],
-                                      p->v[2][0][pl], p->v[2][1][pl], p->v[2][2][pl], U, V, W, det,
+    return isect_triangle_finish_impl(ray, p->v[0][0][l], p->v[0][1][l], p->v[0][2][l],
+                                      p->v[1][0][l], p->v[1][1][l], p->v[1][2][l],
+                                      p->v[2][0][l], p->v[2][1][l], p->v[2][2][l], U, V, W, det,
                                       Az, Bz, Cz, size, lanes->t_lo[l],
                                       lanes->t_hi[l], t_max, 1, t, u, w);
-}
-
-/* tri_lane_test on lane l of p, written to lane l of `lanes` (the
- * 4-lane filter's). */
-static inline int tri4_lane_test(const struct trace_ray *ray, const struct tri4_packet *p,
-                                 const struct tri4_lanes *lanes, unsigned l, int any_hit,
-                                 float t_max, float *t, float *u, float *w)
-{
-    return tri_lane_test(ray, p, l, lanes, l, any_hit, t_max, t, u, w);
 }
 
 #endif

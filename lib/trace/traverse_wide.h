@@ -626,64 +626,6 @@ WIDE8_PACKET(wide8_packet_closest, 0, 1)
 WIDE8_PACKET(wide8_packet_full, 0, 0)
 WIDE8_PACKET(wide8_packet_any, 1, 1)
 
-/*
- * A leaf of n = 5..8 triangles (two packets, p[0] and p[1]) with one
- * 8-lane filter (tri4_pair_filter_lanes) instead of two wide_packet_test
- * calls; the kept lanes in order, lane l of p[l / 4], each with the
- * limit of the moment (walk_leaf's rule), so the hit is that of the two
- * calls bit for bit (tri4_pair_filter_lanes says why).
- */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline int wide_leaf8_test(struct wide_state *s, const struct tri4_packet *p, uint32_t n,
-                                  int any_hit, int early_out)
-{
-    float limit = !any_hit && s->found ? isect_next_up(s->best) : s->best;
-    struct tri4_lanes lanes;
-    unsigned mask =
-        tri4_pair_filter_lanes(&s->r4, p, (1u << n) - 1u, limit, &lanes, any_hit, early_out);
-    if (any_hit && mask) {
-        /* As wide_packet_test, per packet. */
-        const unsigned near =
-            (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(_mm256_loadu_ps(lanes.t_lo),
-                                                       _mm256_broadcast_ps(&s->r4.tmin),
-                                                       _CMP_LT_OQ)) &
-            mask;
-        if (near & 15u)
-            mask &= ~tri4_before_tmin(s->ray, p, near & 15u);
-        if (near >> 4)
-            mask &= ~(tri4_before_tmin(s->ray, p + 1, near >> 4) << 4);
-    }
-    while (mask) {
-        const unsigned l = (unsigned)__builtin_ctz(mask);
-        mask &= mask - 1u;
-        const struct tri4_packet *q = p + (l >> 2);
-        const unsigned ql = l & 3u;
-        float t, u, w;
-        limit = !any_hit && s->found ? isect_next_up(s->best) : s->best;
-        if (!tri_lane_test(s->ray, q, ql, &lanes, l, any_hit, limit, &t, &u, &w))
-            continue;
-        if (any_hit) {
-            s->found = 1;
-            return 1;
-        }
-        wide_take_closest(s, q->prim[ql], t, u, w);
-    }
-    return 0;
-}
-
-#define WIDE8_LEAF8(name, any_hit, early_out)                                                    \
-    static int name(struct wide_state *s, const struct tri4_packet *p, uint32_t n) WIDE_NOINLINE; \
-    static int name(struct wide_state *s, const struct tri4_packet *p, uint32_t n)                \
-    {                                                                                              \
-        return wide_leaf8_test(s, p, n, any_hit, early_out);                                       \
-    }
-
-WIDE8_LEAF8(wide8_leaf8_closest, 0, 1)
-WIDE8_LEAF8(wide8_leaf8_full, 0, 0)
-WIDE8_LEAF8(wide8_leaf8_any, 1, 1)
-
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
@@ -838,21 +780,18 @@ static inline int walk_wide8_ray(const struct bvh4 *wide, struct wide_state *s, 
             }
             if (stats)
                 tri_tests += cur_count;
-            /* One packet, or two (5-8 triangles) in one 8-lane call. */
-            if (cur_count <= 4) {
+            for (;;) {
+                const uint32_t n = cur_count < 4 ? cur_count : 4;
                 if (any_hit)
-                    stop = wide8_packet_any(s, p, cur_count);
+                    stop = wide8_packet_any(s, p, n);
                 else if (leave_early)
-                    stop = wide8_packet_closest(s, p, cur_count);
+                    stop = wide8_packet_closest(s, p, n);
                 else
-                    stop = wide8_packet_full(s, p, cur_count);
-            } else {
-                if (any_hit)
-                    stop = wide8_leaf8_any(s, p, cur_count);
-                else if (leave_early)
-                    stop = wide8_leaf8_closest(s, p, cur_count);
-                else
-                    stop = wide8_leaf8_full(s, p, cur_count);
+                    stop = wide8_packet_full(s, p, n);
+                if (stop || cur_count <= 4)
+                    break;
+                cur_count -= 4;
+                p++;
             }
             if (stop) {
                 if (stats) {
@@ -919,52 +858,6 @@ WIDE8_WALK(wide8_walk_closest_early, 0, 0, 1)
 WIDE8_WALK(wide8_walk_closest_early_stats, 0, 1, 1)
 WIDE8_WALK(wide8_walk_any, 1, 0, 1)
 WIDE8_WALK(wide8_walk_any_stats, 1, 1, 1)
-
-/*
- * The leaf of walk_wide8_ray on its own, for
- * conformance/internal/tri4_differential: the n triangles of p[0], p[1]
- * (n up to 8), eight 1 with the 8-lane call walk_wide8_ray makes for
- * 5-8 triangles, 0 with the 4-lane calls on each packet in turn; early_out
- * picks the closest-hit copy (wide8_leaf8_closest or _full).  found 1:
- * *hit is an earlier leaf's hit, whose t is the limit (walk_leaf's rule).
- * Returns found (closest) or occluded (any hit).
- */
-int TRACE_WIDE_LEAF8(const struct trace_ray *ray, const struct tri4_packet *p, uint32_t n,
-                     float t_max, int any_hit, int early_out, int eight, int found,
-                     struct trace_hit *hit);
-int TRACE_WIDE_LEAF8(const struct trace_ray *ray, const struct tri4_packet *p, uint32_t n,
-                     float t_max, int any_hit, int early_out, int eight, int found,
-                     struct trace_hit *hit)
-{
-    struct wide_state s;
-    wide_state_init(&s, ray, t_max, any_hit, hit);
-    if (!any_hit && found) {
-        s.found = 1;
-        s.best = hit->t;
-        s.box_limit = hit->t * ISECT_BOX_FAR_SCALE;
-    }
-    tri4_ray_init(&s.r4, ray);
-    int stop = 0;
-    if (eight) {
-        if (any_hit)
-            stop = wide8_leaf8_any(&s, p, n);
-        else if (early_out)
-            stop = wide8_leaf8_closest(&s, p, n);
-        else
-            stop = wide8_leaf8_full(&s, p, n);
-    } else {
-        for (uint32_t j = 0; j < n && !stop; j += 4) {
-            const uint32_t m = n - j < 4 ? n - j : 4;
-            if (any_hit)
-                stop = wide8_packet_any(&s, p + j / 4, m);
-            else if (early_out)
-                stop = wide8_packet_closest(&s, p + j / 4, m);
-            else
-                stop = wide8_packet_full(&s, p + j / 4, m);
-        }
-    }
-    return any_hit ? stop : s.found;
-}
 #endif
 
 /* walk_wide's 4-wide walks, each its own function with the ray's state
