@@ -167,6 +167,46 @@ static void fill_bins(struct bins *bins, int bin_count, const struct binning *bn
     }
 }
 
+/* One side of find_best_split's sweep, the three axes one per lane: the
+ * side's box as x, y, z columns (lo and hi) and its triangle counts. */
+struct sweep3 {
+    vec4 lox, loy, loz, hix, hiy, hiz;
+    uint32_t count[3];
+};
+
+static inline void sweep3_reset(struct sweep3 *s)
+{
+    s->lox = s->loy = s->loz = vec4_splat(INFINITY);
+    s->hix = s->hiy = s->hiz = vec4_splat(-INFINITY);
+    s->count[0] = s->count[1] = s->count[2] = 0;
+}
+
+/* Grows the side by bin i of every axis (the boxes transposed to x, y, z
+ * columns, vec4_transpose3) and returns its counts as floats, lane k for
+ * axis k. */
+static inline vec4 sweep3_add_bin(struct sweep3 *s, const struct bins *bins, int i)
+{
+    vec4 x, y, z;
+    vec4_transpose3(vec4_load(&bins->box[0][i][0]), vec4_load(&bins->box[1][i][0]),
+                    vec4_load(&bins->box[2][i][0]), &x, &y, &z);
+    s->lox = vec4_min(s->lox, x);
+    s->loy = vec4_min(s->loy, y);
+    s->loz = vec4_min(s->loz, z);
+    vec4_transpose3(vec4_load(&bins->box[0][i][4]), vec4_load(&bins->box[1][i][4]),
+                    vec4_load(&bins->box[2][i][4]), &x, &y, &z);
+    s->hix = vec4_max(s->hix, x);
+    s->hiy = vec4_max(s->hiy, y);
+    s->hiz = vec4_max(s->hiz, z);
+    for (int k = 0; k < 3; k++)
+        s->count[k] += bins->count[k][i][0];
+    return vec4_set((float)s->count[0], (float)s->count[1], (float)s->count[2], 0.0f);
+}
+
+static inline vec4 sweep3_half_area(const struct sweep3 *s)
+{
+    return vec4_half_area3(s->lox, s->loy, s->loz, s->hix, s->hiy, s->hiz);
+}
+
 /*
  * Step 2: the SAH at every plane between bins, on every binnable axis.
  * A sweep from the right stores the right side's area * count for each
@@ -195,64 +235,21 @@ static int find_best_split(const struct bins *bins, int bin_count, const struct 
     float right_sah[BVH_MAX_BINS][4];
     float right_count[BVH_MAX_BINS][4]; /* as floats: only compared with 0 */
     const vec4 zero = vec4_splat(0.0f);
-    vec4 lox = vec4_splat(INFINITY);
-    vec4 loy = lox;
-    vec4 loz = lox;
-    vec4 hix = vec4_splat(-INFINITY);
-    vec4 hiy = hix;
-    vec4 hiz = hix;
-    uint32_t c0 = 0;
-    uint32_t c1 = 0;
-    uint32_t c2 = 0;
+    struct sweep3 acc;
+    sweep3_reset(&acc);
     for (int i = bin_count - 1; i > 0; i--) {
-        vec4 x, y, z;
-        vec4_transpose3(vec4_load(&bins->box[0][i][0]), vec4_load(&bins->box[1][i][0]),
-                        vec4_load(&bins->box[2][i][0]), &x, &y, &z);
-        lox = vec4_min(lox, x);
-        loy = vec4_min(loy, y);
-        loz = vec4_min(loz, z);
-        vec4_transpose3(vec4_load(&bins->box[0][i][4]), vec4_load(&bins->box[1][i][4]),
-                        vec4_load(&bins->box[2][i][4]), &x, &y, &z);
-        hix = vec4_max(hix, x);
-        hiy = vec4_max(hiy, y);
-        hiz = vec4_max(hiz, z);
-        c0 += bins->count[0][i][0];
-        c1 += bins->count[1][i][0];
-        c2 += bins->count[2][i][0];
-        vec4 count = vec4_set((float)c0, (float)c1, (float)c2, 0.0f);
+        vec4 count = sweep3_add_bin(&acc, bins, i);
         vec4_store(right_count[i], count);
-        vec4_store(right_sah[i],
-                   vec4_mul(vec4_half_area3(lox, loy, loz, hix, hiy, hiz), count));
+        vec4_store(right_sah[i], vec4_mul(sweep3_half_area(&acc), count));
     }
-    lox = vec4_splat(INFINITY);
-    loy = lox;
-    loz = lox;
-    hix = vec4_splat(-INFINITY);
-    hiy = hix;
-    hiz = hix;
-    c0 = c1 = c2 = 0;
+    sweep3_reset(&acc);
     vec4 lane_best = vec4_splat(INFINITY);
     float lane_sah[4];
     int lane_plane[3] = {0, 0, 0};
     uint32_t lane_left[3] = {0, 0, 0};
     for (int i = 0; i < bin_count - 1; i++) {
-        vec4 x, y, z;
-        vec4_transpose3(vec4_load(&bins->box[0][i][0]), vec4_load(&bins->box[1][i][0]),
-                        vec4_load(&bins->box[2][i][0]), &x, &y, &z);
-        lox = vec4_min(lox, x);
-        loy = vec4_min(loy, y);
-        loz = vec4_min(loz, z);
-        vec4_transpose3(vec4_load(&bins->box[0][i][4]), vec4_load(&bins->box[1][i][4]),
-                        vec4_load(&bins->box[2][i][4]), &x, &y, &z);
-        hix = vec4_max(hix, x);
-        hiy = vec4_max(hiy, y);
-        hiz = vec4_max(hiz, z);
-        c0 += bins->count[0][i][0];
-        c1 += bins->count[1][i][0];
-        c2 += bins->count[2][i][0];
-        vec4 count = vec4_set((float)c0, (float)c1, (float)c2, 0.0f);
-        vec4 sah = vec4_add(vec4_mul(vec4_half_area3(lox, loy, loz, hix, hiy, hiz), count),
-                            vec4_load(right_sah[i + 1]));
+        vec4 count = sweep3_add_bin(&acc, bins, i);
+        vec4 sah = vec4_add(vec4_mul(sweep3_half_area(&acc), count), vec4_load(right_sah[i + 1]));
         /* An empty side gives inf * 0 = NaN or a meaningless value: such
          * a plane never wins (as if its cost were +inf). */
         uint32_t better = vec4_lt_bits(sah, lane_best) & vec4_ne_bits(count, zero) &
@@ -261,7 +258,7 @@ static int find_best_split(const struct bins *bins, int bin_count, const struct 
             float s[4];
             vec4_store(s, sah);
             vec4_store(lane_sah, lane_best);
-            const uint32_t c[3] = {c0, c1, c2};
+            const uint32_t *c = acc.count;
             for (int k = 0; k < 3; k++) {
                 if (better >> k & 1u) {
                     lane_sah[k] = s[k];
