@@ -45,7 +45,8 @@ static int failures;
 static int same_wide(const struct bvh4 *a, const struct bvh4 *b)
 {
     if (a->width != b->width || a->node_count != b->node_count ||
-        a->packet_count != b->packet_count || a->prefetch_top != b->prefetch_top)
+        a->packet_count != b->packet_count || a->prefetch_top != b->prefetch_top ||
+        a->leaf8 != b->leaf8)
         return 0;
     const void *na = a->width == 8 ? (const void *)a->nodes8 : (const void *)a->nodes;
     const void *nb = b->width == 8 ? (const void *)b->nodes8 : (const void *)b->nodes;

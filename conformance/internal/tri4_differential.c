@@ -13,6 +13,14 @@
  *    walk_leaf's shrinking limit and tie rule) gives bit for bit the
  *    answer of walk_leaf's plain loop over the four triangles: found, t,
  *    u, v and primitive, closest and any.
+ * 3. a leaf of 5-8 triangles in two packets as walk_wide8_ray_leaf8 of the AVX2
+ *    and AVX-512 tables tests it, one 8-lane call (tri4_pair_filter_lanes),
+ *    against the same leaf as two 4-lane calls and against walk_leaf's
+ *    loop over its triangles: found, t, u, v and primitive bit for bit,
+ *    closest (with and without the filter's early return, with and
+ *    without an earlier leaf's hit to beat) and any; duplicates across
+ *    the two packets make ties between them, and shared edges and the
+ *    aims below on-edge hits.
  * The rays are aimed at the triangles' vertices and edge points (where
  * the edge functions are 0 and the double-precision fallback decides),
  * at their insides, and past them; the triangles are random, grid
@@ -36,6 +44,7 @@
 
 #if defined(__SSE2__)
 #include "trace/intersect_tri4.h"
+#include "trace/kernels.h"
 
 static int failures;
 
@@ -44,14 +53,15 @@ struct leaf_answer {
     struct trace_hit hit;
 };
 
-/* walk_leaf's loop (traverse_walk.h) over four triangles. */
-static struct leaf_answer scalar_leaf(const struct trace_ray *ray, const float tri[4][9],
-                                      const uint32_t prim[4], float t_max, int any_hit)
+/* walk_leaf's loop (traverse_walk.h) over n triangles, after an
+ * earlier leaf's answer *before (found or not; its t the limit). */
+static struct leaf_answer scalar_leaf_n(const struct trace_ray *ray, const float (*tri)[9],
+                                        const uint32_t *prim, int n, float t_max, int any_hit,
+                                        const struct leaf_answer *before)
 {
-    struct leaf_answer a;
-    memset(&a, 0, sizeof(a));
-    float best = t_max;
-    for (int l = 0; l < 4; l++) {
+    struct leaf_answer a = *before;
+    float best = a.found ? a.hit.t : t_max;
+    for (int l = 0; l < n; l++) {
         float t, u, w;
         float limit = a.found ? isect_next_up(best) : best;
         if (!isect_triangle(ray, tri[l], tri[l] + 3, tri[l] + 6, limit, &t, &u, &w))
@@ -70,6 +80,15 @@ static struct leaf_answer scalar_leaf(const struct trace_ray *ray, const float t
         a.hit.prim = prim[l];
     }
     return a;
+}
+
+/* walk_leaf's loop over four triangles. */
+static struct leaf_answer scalar_leaf(const struct trace_ray *ray, const float tri[4][9],
+                                      const uint32_t prim[4], float t_max, int any_hit)
+{
+    struct leaf_answer none;
+    memset(&none, 0, sizeof(none));
+    return scalar_leaf_n(ray, tri, prim, 4, t_max, any_hit, &none);
 }
 
 /* The same leaf as traverse_wide.h's wide_leaf tests it. */
@@ -314,6 +333,160 @@ static void one_case(struct tg_rng *r, uint64_t *cases, uint64_t *kept_rejected,
     (*cases)++;
 }
 
+/* The leaf tests of the 8-wide single-ray walk in the tables this CPU
+ * runs (trace_leaf8_avx2, trace_leaf8_avx512). */
+typedef int (*leaf8_fn)(const struct trace_ray *ray, const struct tri4_packet *p, uint32_t n,
+                        float t_max, int any_hit, int early_out, int eight, int found,
+                        struct trace_hit *hit);
+
+/*
+ * Check 3: a leaf of n = 5..8 triangles in two packets.  The triangles
+ * are drawn as one_case draws a packet's (the same kinds, a shared
+ * centre), with edges shared across the two packets, duplicates of a
+ * first-packet triangle in the second packet under a lower or higher
+ * primitive (ties the 8-lane test must break as the two calls do), and
+ * now and then an earlier leaf's hit to beat, at a triangle's own t
+ * (another tie) or elsewhere.
+ */
+static void pair_case(struct tg_rng *r, const leaf8_fn *fns, int fn_count, uint64_t *cases,
+                      uint64_t *hits, uint64_t *second, uint64_t *ties, uint64_t *edges)
+{
+    float centre[3] = {0.0f, 0.0f, 0.0f};
+    if (tg_below(r, 4) == 0) {
+        centre[0] = -3e4f;
+        centre[1] = 1e5f;
+        centre[2] = 2e3f;
+    }
+    const int n = 5 + (int)tg_below(r, 4);
+    float tri[8][9];
+    uint32_t prim[8];
+    for (int l = 0; l < 8; l++) {
+        random_triangle(r, (int)tg_below(r, 4), centre, tri[l]);
+        prim[l] = (uint32_t)tg_below(r, 1000);
+    }
+    if (tg_below(r, 2)) {
+        /* Neighbours across the packets share an edge. */
+        const int a = (int)tg_below(r, 4), b = 4 + (int)tg_below(r, (uint32_t)n - 4);
+        memcpy(tri[b], tri[a] + 3, 6 * sizeof(float));
+    }
+    if (tg_below(r, 3) == 0) {
+        /* A duplicate of a first-packet triangle in the second packet. */
+        const int a = (int)tg_below(r, 4), b = 4 + (int)tg_below(r, (uint32_t)n - 4);
+        memcpy(tri[b], tri[a], sizeof(tri[a]));
+        prim[b] = tg_below(r, 2) ? prim[a] + 1u + tg_below(r, 5)
+                                 : (prim[a] > 0 ? prim[a] - 1u - tg_below(r, prim[a]) : 1000u);
+    }
+    const float *t0 = tri[tg_below(r, (uint32_t)n)];
+    const int aim = (int)tg_below(r, 4);
+    const float a = tg_unit(r), b = tg_unit(r);
+    float target[3], org[3], dir[3];
+    for (int k = 0; k < 3; k++) {
+        if (aim == 0)
+            target[k] = t0[3 * (int)(a * 3.0f) + k];
+        else if (aim == 1)
+            target[k] = t0[k] + a * (t0[3 + k] - t0[k]);
+        else if (aim == 2)
+            target[k] = t0[k] + a * (t0[3 + k] - t0[k]) * (1.0f - b) +
+                        b * (t0[6 + k] - t0[k]) * (1.0f - a);
+        else
+            target[k] = centre[k] + tg_range(r, -1.5f, 1.5f);
+        org[k] = centre[k] + tg_range(r, -4.0f, 4.0f);
+    }
+    if (tg_below(r, 8) == 0) {
+        const int axis = (int)tg_below(r, 3);
+        for (int k = 0; k < 3; k++)
+            org[k] = k == axis ? target[k] - 3.0f : target[k];
+    }
+    for (int k = 0; k < 3; k++)
+        dir[k] = target[k] - org[k];
+    if (tg_below(r, 8) == 0)
+        dir[tg_below(r, 3)] = tg_below(r, 2) ? 0.0f : -0.0f;
+    if (dir[0] == 0.0f && dir[1] == 0.0f && dir[2] == 0.0f)
+        dir[2] = 1.0f;
+    const float tmin = tg_below(r, 6) == 0 ? tg_range(r, 0.0f, 1.0f) : 0.0f;
+    const float t_max = tg_below(r, 4) == 0 ? tg_range(r, 0.5f, 1.5f) : INFINITY;
+    struct trace_ray ray;
+    trace_ray_init(&ray, org, dir, tmin);
+
+    struct tri4_packet p[2];
+    for (int l = 0; l < 8; l++) {
+        /* The lanes beyond n repeat the last triangle, as the collapse
+         * fills them; they are never tested. */
+        const int src = l < n ? l : n - 1;
+        accel_set_packet_lane(&p[l / 4], (uint32_t)(l % 4), tri[src]);
+        p[l / 4].prim[l % 4] = prim[src];
+    }
+
+    /* An earlier leaf's hit now and then: at a triangle's own t (a tie
+     * the primitive index breaks) or at a random distance. */
+    struct leaf_answer before;
+    memset(&before, 0, sizeof(before));
+    if (tg_below(r, 4) == 0) {
+        float t, u, w;
+        const float *q = tri[tg_below(r, (uint32_t)n)];
+        before.found = 1;
+        before.hit.t = isect_triangle(&ray, q, q + 3, q + 6, t_max, &t, &u, &w)
+                           ? t
+                           : tg_range(r, 0.5f, 3.0f);
+        before.hit.u = 0.25f;
+        before.hit.v = 0.5f;
+        before.hit.prim = (uint32_t)tg_below(r, 1000);
+    }
+
+    for (int any = 0; any < 2; any++) {
+        struct leaf_answer none;
+        memset(&none, 0, sizeof(none));
+        const struct leaf_answer *start = any ? &none : &before;
+        const struct leaf_answer s0 = scalar_leaf_n(&ray, tri, prim, n, t_max, any, start);
+        *hits += (uint64_t)s0.found;
+        if (!any && s0.found) {
+            /* The winner's packet, and a hit at the same t in the other
+             * packet (a tie across the two). */
+            int winner = -1;
+            for (int l = 0; l < n && winner < 0; l++) {
+                float t, u, w;
+                if (prim[l] == s0.hit.prim &&
+                    isect_triangle(&ray, tri[l], tri[l] + 3, tri[l] + 6, t_max, &t, &u, &w) &&
+                    t == s0.hit.t)
+                    winner = l;
+            }
+            *second += (uint64_t)(winner >= 4);
+            for (int l = 0; l < n && winner >= 0; l++) {
+                float t, u, w;
+                if ((l < 4) != (winner < 4) &&
+                    isect_triangle(&ray, tri[l], tri[l] + 3, tri[l] + 6, t_max, &t, &u, &w) &&
+                    t == s0.hit.t) {
+                    (*ties)++;
+                    break;
+                }
+            }
+            /* An edge function exactly 0 at the hit: u or v is 0, or
+             * their sum 1. */
+            *edges += (uint64_t)(s0.hit.u == 0.0f || s0.hit.v == 0.0f ||
+                                 s0.hit.u + s0.hit.v == 1.0f);
+        }
+        for (int f = 0; f < fn_count; f++) {
+            for (int early = 0; early < 2; early++) {
+                for (int eight = 0; eight < 2; eight++) {
+                    struct trace_hit h = start->hit;
+                    const int found = fns[f](&ray, p, (uint32_t)n, t_max, any, early, eight,
+                                             start->found, &h);
+                    if (found != s0.found ||
+                        (!any && found && memcmp(&h, &s0.hit, sizeof(h)) != 0)) {
+                        if (failures < 10)
+                            printf("  FAIL: two-packet leaf (table %d, %s, early %d, eight %d, "
+                                   "n %d): found %d/%d t %a/%a prim %u/%u\n",
+                                   f, any ? "any" : "closest", early, eight, n, s0.found, found,
+                                   s0.hit.t, h.t, s0.hit.prim, h.prim);
+                        failures++;
+                    }
+                }
+            }
+        }
+    }
+    (*cases)++;
+}
+
 int main(void)
 {
     struct tg_rng r;
@@ -327,6 +500,31 @@ int main(void)
     tg_seed(&rs, 2013);
     for (int i = 0; i < 200000; i++)
         one_case(&rs, &cases, &kept_rejected, &hits, 1, &refused_shadow);
+    /* Leaves of two packets, in each table with the 8-wide walk this
+     * CPU runs (none: nothing to compare). */
+    leaf8_fn fns[2];
+    int fn_count = 0;
+    if (trace_kernels_get(TRACE_ISA_AVX2))
+        fns[fn_count++] = trace_leaf8_avx2;
+    if (trace_kernels_get(TRACE_ISA_AVX512))
+        fns[fn_count++] = trace_leaf8_avx512;
+    uint64_t pair_cases = 0, pair_hits = 0, pair_second = 0, pair_ties = 0, pair_edges = 0;
+    if (fn_count) {
+        struct tg_rng rp;
+        tg_seed(&rp, 2008);
+        for (int i = 0; i < 200000; i++)
+            pair_case(&rp, fns, fn_count, &pair_cases, &pair_hits, &pair_second, &pair_ties,
+                      &pair_edges);
+    }
+    printf("tri4_differential: %llu two-packet leaves in %d table(s), %llu scalar hits (closest "
+           "and any); of the closest hits %llu in the second packet, %llu tied with the other "
+           "packet, %llu on an edge\n",
+           (unsigned long long)pair_cases, fn_count, (unsigned long long)pair_hits,
+           (unsigned long long)pair_second, (unsigned long long)pair_ties,
+           (unsigned long long)pair_edges);
+    failures += !CHECKF(fn_count == 0 || (pair_ties > 100 && pair_edges > 100),
+                        "too few ties (%llu) or on-edge hits (%llu) across two-packet leaves",
+                        (unsigned long long)pair_ties, (unsigned long long)pair_edges);
     printf("tri4_differential: %llu packets x 4 lanes, %llu scalar hits, %llu lanes kept by the "
            "filter and rejected by the scalar test, %llu + %llu kept lanes refused before tmin "
            "in float (ordinary, shadow rays), %d failures\n",

@@ -134,6 +134,12 @@ struct bvh4 {
      * push (traverse_wide.h); a smaller layout stays in the caches and
      * the prefetch would only cost instructions. */
     uint32_t prefetch_top;
+    /* 1 when the 8-wide single-ray walks test a leaf of two packets with
+     * one 8-lane call (traverse_wide.h, wide8_walk_*_leaf8): set by the
+     * collapse when its estimate of the share of packet tests that the
+     * sign test alone refuses is below 1/4 (collapse4.c,
+     * leaf_miss_share); the answers are the same either way. */
+    uint32_t leaf8;
     /* The nodes and packets in one block (rt_malloc_large: 2 MB huge
      * pages where the OS offers them). */
     struct rt_large_block raw;

@@ -250,6 +250,163 @@ static inline unsigned tri4_filter_lanes(const struct tri4_ray *r, const struct 
     return mask;
 }
 
+#if defined(__AVX__)
+/* Row `off` bytes into vertex i's coordinates of p[0] (lanes 0-3) and of
+ * p[1] (lanes 4-7): two 128-bit loads into one 256-bit vector. */
+static inline __m256 tri4_pair_row(const struct tri4_packet *p, int i, size_t off)
+{
+    const char *lo = (const char *)p[0].v[i] + off;
+    const char *hi = (const char *)p[1].v[i] + off;
+    return _mm256_insertf128_ps(
+        _mm256_castps128_ps256(_mm_loadu_ps((const float *)(const void *)lo)),
+        _mm_loadu_ps((const float *)(const void *)hi), 1);
+}
+
+/* tri4_slab on the eight lanes of two packets. */
+static inline void tri4_pair_slab(__m256 d0, __m256 d1, __m256 d2, __m256 inv, int neg,
+                                  __m256 *t_lo, __m256 *t_hi)
+{
+    __m256 lo = _mm256_min_ps(d0, d1);
+    __m256 hi = _mm256_max_ps(d1, d0);
+    lo = _mm256_min_ps(lo, d2);
+    hi = _mm256_max_ps(hi, d2);
+    const __m256 t_near = _mm256_mul_ps(neg ? hi : lo, inv);
+    const __m256 t_far = _mm256_mul_ps(neg ? lo : hi, inv);
+    *t_lo = _mm256_max_ps(t_near, *t_lo);
+    *t_hi = _mm256_min_ps(t_far, *t_hi);
+}
+
+/* Lanes 0-3 of v to lo, lanes 4-7 to hi: each packet's lanes go to its
+ * own 4-lane struct, which tri4_lane_test reads as the 4-lane filter's. */
+static inline void tri4_pair_store(float *lo, float *hi, __m256 v)
+{
+    _mm_storeu_ps(lo, _mm256_castps256_ps128(v));
+    _mm_storeu_ps(hi, _mm256_extractf128_ps(v, 1));
+}
+
+/*
+ * tri4_filter_lanes on the two consecutive packets p[0], p[1] of a leaf
+ * of 5-8 triangles at once (lanes 0-3: p[0]'s, lanes 4-7: p[1]'s), with
+ * AVX's 256-bit vectors: the same float operations lane by lane, in the
+ * same order, so each lane's values and verdict are those of the 4-lane
+ * filter on its own packet with the same t_max.  The leaf's second
+ * packet is filtered with the limit at the leaf's start instead of the
+ * limit after the first packet's lanes; the rejections on t_max are
+ * monotone in it and tri4_lane_test applies them again with the current
+ * limit (see the file's head), so the lanes accepted and their t, u, v
+ * are the same as two 4-lane calls'.  Packet k's lanes are written to
+ * out[k] exactly as the 4-lane filter writes them (bit k of the mask's
+ * upper half is lane k of p[1]), so the lane test is the 4-lane one.
+ * The early return leaves only when all eight lanes are refused by their
+ * signs.
+ */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline unsigned tri4_pair_filter_lanes(const struct tri4_ray *r,
+                                              const struct tri4_packet *p, unsigned valid,
+                                              float t_max, struct tri4_lanes out[2],
+                                              int any_hit, int early_out)
+{
+    const __m256 neg_org_x = _mm256_broadcast_ps(&r->neg_org_x);
+    const __m256 neg_org_y = _mm256_broadcast_ps(&r->neg_org_y);
+    const __m256 neg_org_z = _mm256_broadcast_ps(&r->neg_org_z);
+    const __m256 ax = _mm256_add_ps(neg_org_x, tri4_pair_row(p, 0, r->off_x));
+    const __m256 ay = _mm256_add_ps(neg_org_y, tri4_pair_row(p, 0, r->off_y));
+    const __m256 az = _mm256_add_ps(neg_org_z, tri4_pair_row(p, 0, r->off_z));
+    const __m256 bx = _mm256_add_ps(neg_org_x, tri4_pair_row(p, 1, r->off_x));
+    const __m256 by = _mm256_add_ps(neg_org_y, tri4_pair_row(p, 1, r->off_y));
+    const __m256 bz = _mm256_add_ps(neg_org_z, tri4_pair_row(p, 1, r->off_z));
+    const __m256 cx = _mm256_add_ps(neg_org_x, tri4_pair_row(p, 2, r->off_x));
+    const __m256 cy = _mm256_add_ps(neg_org_y, tri4_pair_row(p, 2, r->off_y));
+    const __m256 cz = _mm256_add_ps(neg_org_z, tri4_pair_row(p, 2, r->off_z));
+
+    const __m256 sx = _mm256_broadcast_ps(&r->sx);
+    const __m256 sy = _mm256_broadcast_ps(&r->sy);
+    const __m256 Ax = _mm256_add_ps(ax, _mm256_mul_ps(sx, az));
+    const __m256 Ay = _mm256_add_ps(ay, _mm256_mul_ps(sy, az));
+    const __m256 Bx = _mm256_add_ps(bx, _mm256_mul_ps(sx, bz));
+    const __m256 By = _mm256_add_ps(by, _mm256_mul_ps(sy, bz));
+    const __m256 Cx = _mm256_add_ps(cx, _mm256_mul_ps(sx, cz));
+    const __m256 Cy = _mm256_add_ps(cy, _mm256_mul_ps(sy, cz));
+
+    const __m256 U = _mm256_sub_ps(_mm256_mul_ps(Cx, By), _mm256_mul_ps(Cy, Bx));
+    const __m256 V = _mm256_sub_ps(_mm256_mul_ps(Ax, Cy), _mm256_mul_ps(Ay, Cx));
+    const __m256 W = _mm256_sub_ps(_mm256_mul_ps(Bx, Ay), _mm256_mul_ps(By, Ax));
+
+    /* The sign test, early return, edge zeros, depth range, box
+     * interval and det exactly as tri4_filter_lanes (its comments say
+     * why each is the scalar test's). */
+    const __m256 zero = _mm256_setzero_ps();
+    const __m256 any_neg =
+        _mm256_cmp_ps(_mm256_min_ps(U, _mm256_min_ps(V, W)), zero, _CMP_LT_OQ);
+    const __m256 any_pos =
+        _mm256_cmp_ps(_mm256_max_ps(U, _mm256_max_ps(V, W)), zero, _CMP_GT_OQ);
+    const __m256 mixed = _mm256_and_ps(any_neg, any_pos);
+    if (early_out && ((unsigned)_mm256_movemask_ps(mixed) & valid) == valid)
+        return 0;
+
+    const __m256 on_edge = _mm256_or_ps(
+        _mm256_or_ps(_mm256_cmp_ps(U, zero, _CMP_EQ_OQ), _mm256_cmp_ps(V, zero, _CMP_EQ_OQ)),
+        _mm256_cmp_ps(W, zero, _CMP_EQ_OQ));
+
+    const __m256 sz = _mm256_broadcast_ps(&r->sz);
+    const __m256 Az = _mm256_mul_ps(sz, az);
+    const __m256 Bz = _mm256_mul_ps(sz, bz);
+    const __m256 Cz = _mm256_mul_ps(sz, cz);
+    const __m256 z_lo = _mm256_min_ps(Az, _mm256_min_ps(Bz, Cz));
+    const __m256 z_hi = _mm256_max_ps(Az, _mm256_max_ps(Bz, Cz));
+    const __m256 limit = _mm256_set1_ps(t_max);
+    __m256 t_lo = z_lo;
+    __m256 t_hi = z_hi;
+    tri4_pair_slab(ax, bx, cx, _mm256_broadcast_ps(&r->inv_x), r->neg_x, &t_lo, &t_hi);
+    tri4_pair_slab(ay, by, cy, _mm256_broadcast_ps(&r->inv_y), r->neg_y, &t_lo, &t_hi);
+    const __m256 geom = _mm256_andnot_ps(
+        mixed,
+        _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(z_hi, _mm256_broadcast_ps(&r->tmin), _CMP_GE_OQ),
+                                    _mm256_cmp_ps(z_lo, limit, _CMP_LT_OQ)),
+                      _mm256_cmp_ps(t_lo, limit, _CMP_LT_OQ)));
+    const unsigned deferred = (unsigned)_mm256_movemask_ps(_mm256_and_ps(on_edge, geom)) & valid;
+
+    const __m256 det = _mm256_add_ps(_mm256_add_ps(U, V), W);
+    const __m256 abs_det = _mm256_andnot_ps(_mm256_set1_ps(-0.0f), det);
+    __m256 keep = _mm256_and_ps(geom, _mm256_cmp_ps(det, zero, _CMP_NEQ_UQ));
+    keep = _mm256_and_ps(keep, _mm256_cmp_ps(abs_det, _mm256_set1_ps(INFINITY), _CMP_LT_OQ));
+    const unsigned mask = ((unsigned)_mm256_movemask_ps(keep) & valid) | deferred;
+    if (mask) {
+        tri4_pair_store(out[0].U, out[1].U, U);
+        tri4_pair_store(out[0].V, out[1].V, V);
+        tri4_pair_store(out[0].W, out[1].W, W);
+        tri4_pair_store(out[0].det, out[1].det, det);
+        tri4_pair_store(out[0].Az, out[1].Az, Az);
+        tri4_pair_store(out[0].Bz, out[1].Bz, Bz);
+        tri4_pair_store(out[0].Cz, out[1].Cz, Cz);
+        tri4_pair_store(out[0].t_lo, out[1].t_lo, t_lo);
+        tri4_pair_store(out[0].t_hi, out[1].t_hi, t_hi);
+        out[0].deferred = deferred & 15u;
+        out[1].deferred = deferred >> 4;
+        if (!any_hit) {
+            const __m256 sign = _mm256_set1_ps(-0.0f);
+            __m256 size = _mm256_max_ps(
+                _mm256_max_ps(_mm256_andnot_ps(sign, Ax), _mm256_andnot_ps(sign, Ay)),
+                _mm256_max_ps(_mm256_andnot_ps(sign, Bx), _mm256_andnot_ps(sign, By)));
+            size = _mm256_max_ps(
+                size, _mm256_max_ps(_mm256_andnot_ps(sign, Cx), _mm256_andnot_ps(sign, Cy)));
+            tri4_pair_store(out[0].size, out[1].size, size);
+            if (deferred) {
+                tri4_pair_store(out[0].Ax, out[1].Ax, Ax);
+                tri4_pair_store(out[0].Ay, out[1].Ay, Ay);
+                tri4_pair_store(out[0].Bx, out[1].Bx, Bx);
+                tri4_pair_store(out[0].By, out[1].By, By);
+                tri4_pair_store(out[0].Cx, out[1].Cx, Cx);
+                tri4_pair_store(out[0].Cy, out[1].Cy, Cy);
+            }
+        }
+    }
+    return mask;
+}
+#endif
+
 /* tri4_filter_lanes with the early return. */
 #if defined(__GNUC__)
 __attribute__((always_inline))

@@ -77,4 +77,16 @@ const struct trace_kernels *trace_kernels_sse4(void);
 const struct trace_kernels *trace_kernels_avx2(void);
 const struct trace_kernels *trace_kernels_avx512(void);
 
+/* The 8-wide walks' leaf test of the AVX2 and AVX-512 tables on its own
+ * (traverse_wide.h, TRACE_WIDE_LEAF8), for
+ * conformance/internal/tri4_differential; -1 when the table was compiled
+ * without its instruction set.  Call only when trace_kernels_get gives
+ * the table (the CPU runs it). */
+int trace_leaf8_avx2(const struct trace_ray *ray, const struct tri4_packet *p, uint32_t n,
+                     float t_max, int any_hit, int early_out, int eight, int found,
+                     struct trace_hit *hit);
+int trace_leaf8_avx512(const struct trace_ray *ray, const struct tri4_packet *p, uint32_t n,
+                       float t_max, int any_hit, int early_out, int eight, int found,
+                       struct trace_hit *hit);
+
 #endif

@@ -13,6 +13,7 @@
 #include "trace/traverse_walk.h"
 #define TRACE_WIDE_CLOSEST trace_closest4_avx2
 #define TRACE_WIDE_ANY trace_any4_avx2
+#define TRACE_WIDE_LEAF8 trace_leaf8_avx2
 #include "trace/traverse_wide.h"
 #define TRACE_PACKET_CLOSEST trace_closest_packet_avx2
 #define TRACE_PACKET_ANY trace_any_packet_avx2
@@ -31,5 +32,21 @@ const struct trace_kernels *trace_kernels_avx2(void)
 const struct trace_kernels *trace_kernels_avx2(void)
 {
     return NULL;
+}
+
+int trace_leaf8_avx2(const struct trace_ray *ray, const struct tri4_packet *p, uint32_t n,
+                     float t_max, int any_hit, int early_out, int eight, int found,
+                     struct trace_hit *hit)
+{
+    (void)ray;
+    (void)p;
+    (void)n;
+    (void)t_max;
+    (void)any_hit;
+    (void)early_out;
+    (void)eight;
+    (void)found;
+    (void)hit;
+    return -1;
 }
 #endif

@@ -626,202 +626,11 @@ WIDE8_PACKET(wide8_packet_closest, 0, 1)
 WIDE8_PACKET(wide8_packet_full, 0, 0)
 WIDE8_PACKET(wide8_packet_any, 1, 1)
 
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline int walk_wide8_ray(const struct bvh4 *wide, struct wide_state *s, int any_hit,
-                                 int stats, int leave_early)
-{
-    const struct trace_ray *ray = s->ray;
-    const struct bvh8_node *nodes = wide->nodes8;
-    const struct tri4_packet *packets = wide->packets;
-    size_t near_x, near_y, near_z, far_x, far_y, far_z;
-    int octant = 0;
-    {
-        /* Row k is min k, row 3 + k max k; a negative direction (-0
-         * too) has its near plane at the max.  By arithmetic on the sign
-         * bits: near + far = 2k + 3 rows. */
-        const size_t row = sizeof(nodes[0].bounds[0]);
-        uint32_t bits[3];
-        memcpy(bits, ray->inv_dir, sizeof(bits));
-        const size_t nx = bits[0] >> 31, ny = bits[1] >> 31, nz = bits[2] >> 31;
-        near_x = nx * 3 * row;
-        far_x = 3 * row - near_x;
-        near_y = (1 + ny * 3) * row;
-        far_y = 5 * row - near_y;
-        near_z = (2 + nz * 3) * row;
-        far_z = 7 * row - near_z;
-        octant = (int)(nx | ny << 1 | nz << 2);
-    }
-    const __m256i order_shift = _mm256_setr_epi32(0, 3, 6, 9, 12, 15, 18, 21);
-    uint32_t st_child[WIDE_STACK];
-    uint32_t st_count[WIDE_STACK];
-    float st_t[WIDE_STACK];
-    uint32_t sp = 0;
-    uint32_t cur = 0;
-    uint32_t cur_count = 0;
-    float box_limit = s->box_limit;
-    uint64_t node_tests = 0;
-    uint64_t tri_tests = 0;
-    int r4_ready = 0;
-    /* Per layout: only a layout beyond the caches pays for the stack
-     * top's prefetch (bvh4_layout.h). */
-    const int prefetch_top = wide->prefetch_top != 0;
-    for (;;) {
-        /* A leaf popped after a leaf goes straight to the leaf test: the
-         * node test's vectors are broadcast only when an inner node comes
-         * next. */
-        if (!cur_count) {
-            /* The ray's vectors, broadcast again after each leaf call from
-             * the ray (which the call may in principle have changed, so the
-             * compiler reloads it anyway) instead of spilled and reloaded
-             * around it. */
-#if defined(__GNUC__)
-            /* GCC sees that the packet call leaves the ray alone and keeps
-             * these vectors across it, spilling and reloading eight of them
-             * around every leaf; an any-hit walk (about three leaf visits per
-             * shadow ray) loads them again instead.  The empty asm hides
-             * nothing but the pointer's provenance. */
-            if (any_hit)
-                __asm__("" : "+r"(ray));
-#endif
-            /* The origin negated: bound + (-org) is bound - org bit for bit
-             * (IEEE 754's x - y is x + (-y)), and the addition takes the
-             * bound as its memory operand (the subtraction cannot, the bound
-             * being its minuend): six loads fewer per node. */
-            const __m256 neg_org_x = _mm256_set1_ps(-ray->org[0]);
-            const __m256 neg_org_y = _mm256_set1_ps(-ray->org[1]);
-            const __m256 neg_org_z = _mm256_set1_ps(-ray->org[2]);
-            const __m256 inv_x = _mm256_set1_ps(ray->inv_dir[0]);
-            const __m256 inv_y = _mm256_set1_ps(ray->inv_dir[1]);
-            const __m256 inv_z = _mm256_set1_ps(ray->inv_dir[2]);
-            const __m256 tmin8 = _mm256_set1_ps(ray->tmin);
-            /* Inner nodes until a leaf lane comes up (or the stack empties). */
-            while (!cur_count) {
-                const struct bvh8_node *n = &nodes[cur];
-                const char *b = (const char *)(const void *)n->bounds;
-                if (stats)
-                    node_tests += 8;
-                /* isect_box's order: entry max(z, max(y, max(x, tmin))),
-                 * exit min(z, min(y, min(x, inf))) (see the file's head). */
-                const __m256 tnx =
-                    _mm256_mul_ps(_mm256_add_ps(neg_org_x, wide8_bound(b, near_x)), inv_x);
-                const __m256 tfx =
-                    _mm256_mul_ps(_mm256_add_ps(neg_org_x, wide8_bound(b, far_x)), inv_x);
-                const __m256 tny =
-                    _mm256_mul_ps(_mm256_add_ps(neg_org_y, wide8_bound(b, near_y)), inv_y);
-                const __m256 tfy =
-                    _mm256_mul_ps(_mm256_add_ps(neg_org_y, wide8_bound(b, far_y)), inv_y);
-                const __m256 tnz =
-                    _mm256_mul_ps(_mm256_add_ps(neg_org_z, wide8_bound(b, near_z)), inv_z);
-                const __m256 tfz =
-                    _mm256_mul_ps(_mm256_add_ps(neg_org_z, wide8_bound(b, far_z)), inv_z);
-                const __m256 t0 = _mm256_max_ps(tnz, _mm256_max_ps(tny, _mm256_max_ps(tnx, tmin8)));
-                __m256 t1 = _mm256_min_ps(
-                    tfz, _mm256_min_ps(tfy, _mm256_min_ps(tfx, _mm256_set1_ps(INFINITY))));
-                t1 = _mm256_mul_ps(t1, _mm256_set1_ps(ISECT_BOX_FAR_SCALE));
-                t1 = _mm256_min_ps(t1, _mm256_set1_ps(box_limit));
-                const __m256 hit = _mm256_cmp_ps(t0, t1, _CMP_LE_OQ);
-                const unsigned mask = (unsigned)_mm256_movemask_ps(hit);
-                if (mask) {
-                    if (!(mask & (mask - 1u))) {
-                        const unsigned l = (unsigned)__builtin_ctz(mask);
-                        cur = n->child[l];
-                        cur_count = n->count[l];
-                    } else {
-                        if (any_hit)
-                            wide8_push_stored(n, hit, t0, st_child, st_count, st_t, &sp, &cur,
-                                              &cur_count);
-                        else
-                            wide8_push(n, octant, hit, t0, order_shift, st_child, st_count, st_t,
-                                       &sp, &cur, &cur_count);
-                        if (prefetch_top) {
-                            /* The new stack top, whose subtree comes after
-                             * cur's: prefetched now (its bounds, or the
-                             * first three lines of its leaf's packet), so
-                             * that its load overlaps cur's subtree instead
-                             * of following it. */
-                            const uint32_t top = st_child[sp - 1];
-                            const char *a = st_count[sp - 1] ? (const char *)&packets[top]
-                                                             : (const char *)&nodes[top];
-                            _mm_prefetch(a, _MM_HINT_T0);
-                            _mm_prefetch(a + 64, _MM_HINT_T0);
-                            _mm_prefetch(a + 128, _MM_HINT_T0);
-                        }
-                    }
-                    if (!cur_count)
-                        wide_prefetch(&nodes[cur], sizeof(struct bvh8_node));
-                    continue;
-                }
-                /* Pop (as below). */
-                for (;;) {
-                    if (sp == 0)
-                        goto done;
-                    sp--;
-                    if (any_hit || st_t[sp] <= box_limit)
-                        break;
-                }
-                cur = st_child[sp];
-                cur_count = st_count[sp];
-            }
-        }
-        {
-            int stop = 0;
-            const struct tri4_packet *p = &packets[cur];
-            /* A closest-hit ray sets the packet test's constants at its
-             * first leaf, not at its start: a ray that misses every leaf
-             * box never pays for them.  An any-hit ray (a shadow ray,
-             * which starts on a surface and nearly always reaches a leaf)
-             * has them set by WIDE8_WALK: the lazy set-up cost it more
-             * instructions than it saved (callgrind, gears). */
-            if (!any_hit && !r4_ready) {
-                tri4_ray_init(&s->r4, ray);
-                r4_ready = 1;
-            }
-            if (stats)
-                tri_tests += cur_count;
-            for (;;) {
-                const uint32_t n = cur_count < 4 ? cur_count : 4;
-                if (any_hit)
-                    stop = wide8_packet_any(s, p, n);
-                else if (leave_early)
-                    stop = wide8_packet_closest(s, p, n);
-                else
-                    stop = wide8_packet_full(s, p, n);
-                if (stop || cur_count <= 4)
-                    break;
-                cur_count -= 4;
-                p++;
-            }
-            if (stop) {
-                if (stats) {
-                    s->node_tests += node_tests;
-                    s->triangle_tests += tri_tests;
-                }
-                return 1;
-            }
-        }
-        box_limit = s->box_limit;
-        /* An any-hit walk ends at its first hit, so its box_limit never
-         * shrinks and every pushed child passes: the entry distance is
-         * not compared. */
-        for (;;) {
-            if (sp == 0)
-                goto done;
-            sp--;
-            if (any_hit || st_t[sp] <= box_limit)
-                break;
-        }
-        cur = st_child[sp];
-        cur_count = st_count[sp];
-    }
-done:
-    if (stats) {
-        s->node_tests += node_tests;
-        s->triangle_tests += tri_tests;
-    }
-    return 0;
-}
+#define WIDE8_RAY walk_wide8_ray
+#define WIDE8_RAY_LEAF8 0
+#include "trace/traverse_wide8_ray.h"
+#undef WIDE8_RAY
+#undef WIDE8_RAY_LEAF8
 
 /* The whole single-ray trace over an 8-wide layout, the state set up
  * here: the entry (walk_wide) is then a dispatch and a jump. */
@@ -858,6 +667,143 @@ WIDE8_WALK(wide8_walk_closest_early, 0, 0, 1)
 WIDE8_WALK(wide8_walk_closest_early_stats, 0, 1, 1)
 WIDE8_WALK(wide8_walk_any, 1, 0, 1)
 WIDE8_WALK(wide8_walk_any_stats, 1, 1, 1)
+
+/*
+ * A leaf of n = 5..8 triangles (two packets, p[0] and p[1]) with one
+ * 8-lane filter (tri4_pair_filter_lanes) instead of two wide_packet_test
+ * calls; the kept lanes in order, lane l of the mask being lane l % 4 of
+ * p[l / 4], each with the limit of the moment (walk_leaf's rule), so the
+ * hit is that of the two calls bit for bit (tri4_pair_filter_lanes says
+ * why).  Only the walk copies with leaf8 (WIDE8_WALK_LEAF) call it.
+ */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline int wide_leaf8_test(struct wide_state *s, const struct tri4_packet *p, uint32_t n,
+                                  int any_hit, int early_out)
+{
+    float limit = !any_hit && s->found ? isect_next_up(s->best) : s->best;
+    struct tri4_lanes lanes[2];
+    unsigned mask =
+        tri4_pair_filter_lanes(&s->r4, p, (1u << n) - 1u, limit, lanes, any_hit, early_out);
+    if (any_hit && mask) {
+        /* As wide_packet_test, per packet. */
+        const unsigned near =
+            ((unsigned)_mm_movemask_ps(_mm_cmplt_ps(_mm_loadu_ps(lanes[0].t_lo), s->r4.tmin)) |
+             (unsigned)_mm_movemask_ps(_mm_cmplt_ps(_mm_loadu_ps(lanes[1].t_lo), s->r4.tmin))
+                 << 4) &
+            mask;
+        if (near & 15u)
+            mask &= ~tri4_before_tmin(s->ray, p, near & 15u);
+        if (near >> 4)
+            mask &= ~(tri4_before_tmin(s->ray, p + 1, near >> 4) << 4);
+    }
+    while (mask) {
+        const unsigned l = (unsigned)__builtin_ctz(mask);
+        mask &= mask - 1u;
+        const unsigned k = l >> 2;
+        const struct tri4_packet *q = p + k;
+        float t, u, w;
+        limit = !any_hit && s->found ? isect_next_up(s->best) : s->best;
+        if (!tri4_lane_test(s->ray, q, &lanes[k], l & 3u, any_hit, limit, &t, &u, &w))
+            continue;
+        if (any_hit) {
+            s->found = 1;
+            return 1;
+        }
+        wide_take_closest(s, q->prim[l & 3u], t, u, w);
+    }
+    return 0;
+}
+
+#define WIDE8_LEAF8(name, any_hit, early_out)                                                    \
+    static int name(struct wide_state *s, const struct tri4_packet *p, uint32_t n) WIDE_NOINLINE; \
+    static int name(struct wide_state *s, const struct tri4_packet *p, uint32_t n)                \
+    {                                                                                              \
+        return wide_leaf8_test(s, p, n, any_hit, early_out);                                       \
+    }
+
+WIDE8_LEAF8(wide8_leaf8_closest, 0, 1)
+WIDE8_LEAF8(wide8_leaf8_full, 0, 0)
+WIDE8_LEAF8(wide8_leaf8_any, 1, 1)
+
+#define WIDE8_RAY walk_wide8_ray_leaf8
+#define WIDE8_RAY_LEAF8 1
+#include "trace/traverse_wide8_ray.h"
+#undef WIDE8_RAY
+#undef WIDE8_RAY_LEAF8
+
+/* The walks with one 8-lane test for a leaf of two packets
+ * (walk_wide8_ray_leaf8), on a layout whose flag leaf8 the collapse set:
+ * where few packet tests leave at the sign test (the kitchen), one 8-lane
+ * pass replaces two full 4-lane passes; where most leave there (soup,
+ * bumpy, gears), two early returns were cheaper than one that waits for
+ * all eight lanes (bvh4_layout.h).  No copies with counters: the walks
+ * above count the same nodes and triangles. */
+#define WIDE8_WALK_LEAF8(name, any_hit, leave_early)                                            \
+    static int name(const struct bvh4 *wide, const struct trace_ray *ray, float t_max,         \
+                    struct trace_hit *hit, struct trace_counters *counters) WIDE_NOINLINE;      \
+    static int name(const struct bvh4 *wide, const struct trace_ray *ray, float t_max,         \
+                    struct trace_hit *hit, struct trace_counters *counters)                     \
+    {                                                                                           \
+        struct wide_state s;                                                                    \
+        wide_state_init(&s, ray, t_max, any_hit, hit);                                          \
+        if (any_hit)                                                                            \
+            tri4_ray_init(&s.r4, ray);                                                          \
+        const int done = walk_wide8_ray_leaf8(wide, &s, any_hit, 0, leave_early);               \
+        (void)counters;                                                                         \
+        return any_hit ? done : s.found;                                                        \
+    }
+
+WIDE8_WALK_LEAF8(wide8_walk_closest_leaf8, 0, 0)
+WIDE8_WALK_LEAF8(wide8_walk_closest_early_leaf8, 0, 1)
+WIDE8_WALK_LEAF8(wide8_walk_any_leaf8, 1, 1)
+
+/*
+ * The leaf of the 8-wide walks on its own, for
+ * conformance/internal/tri4_differential: the n triangles of p[0], p[1]
+ * (n up to 8), eight 1 with the 8-lane call of the leaf8 walks for
+ * 5-8 triangles, 0 with the 4-lane calls on each packet in turn; early_out
+ * picks the closest-hit copy (wide8_leaf8_closest or _full).  found 1:
+ * *hit is an earlier leaf's hit, whose t is the limit (walk_leaf's rule).
+ * Returns found (closest) or occluded (any hit).
+ */
+int TRACE_WIDE_LEAF8(const struct trace_ray *ray, const struct tri4_packet *p, uint32_t n,
+                     float t_max, int any_hit, int early_out, int eight, int found,
+                     struct trace_hit *hit);
+int TRACE_WIDE_LEAF8(const struct trace_ray *ray, const struct tri4_packet *p, uint32_t n,
+                     float t_max, int any_hit, int early_out, int eight, int found,
+                     struct trace_hit *hit)
+{
+    struct wide_state s;
+    wide_state_init(&s, ray, t_max, any_hit, hit);
+    if (!any_hit && found) {
+        s.found = 1;
+        s.best = hit->t;
+        s.box_limit = hit->t * ISECT_BOX_FAR_SCALE;
+    }
+    tri4_ray_init(&s.r4, ray);
+    int stop = 0;
+    if (eight) {
+        if (any_hit)
+            stop = wide8_leaf8_any(&s, p, n);
+        else if (early_out)
+            stop = wide8_leaf8_closest(&s, p, n);
+        else
+            stop = wide8_leaf8_full(&s, p, n);
+    } else {
+        for (uint32_t j = 0; j < n && !stop; j += 4) {
+            const uint32_t m = n - j < 4 ? n - j : 4;
+            if (any_hit)
+                stop = wide8_packet_any(&s, p + j / 4, m);
+            else if (early_out)
+                stop = wide8_packet_closest(&s, p + j / 4, m);
+            else
+                stop = wide8_packet_full(&s, p + j / 4, m);
+        }
+    }
+    return any_hit ? stop : s.found;
+}
 #endif
 
 /* walk_wide's 4-wide walks, each its own function with the ray's state
@@ -921,6 +867,47 @@ static inline int walk_wide(const struct bvh4 *wide, const struct bvh *bvh, cons
     return walk(bvh, tri, ray, t_max, any_hit, hit, counters);
 }
 
+/* walk_wide for the single-ray entries below, which also choose the
+ * 8-wide walks with the 8-lane leaf (wide->leaf8).  walk_wide above, as
+ * it was, stays the packet kernels' fallback (packet_wide.h): with the
+ * choice inlined there, their code changed too. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline int walk_wide_single(const struct bvh4 *wide, const struct bvh *bvh,
+                                   const float *tri, const struct trace_ray *ray, float t_max,
+                                   int any_hit, struct trace_hit *hit,
+                                   struct trace_counters *counters)
+{
+    if (wide->node_count == 0)
+        return walk(bvh, tri, ray, t_max, any_hit, hit, counters);
+#if defined(__AVX__)
+    if (wide->width == 8) {
+        if (any_hit)
+            return counters ? wide8_walk_any_stats(wide, ray, t_max, hit, counters)
+                   : wide->leaf8 ? wide8_walk_any_leaf8(wide, ray, t_max, hit, counters)
+                                 : wide8_walk_any(wide, ray, t_max, hit, counters);
+        if (wide->prefetch_top)
+            return counters ? wide8_walk_closest_early_stats(wide, ray, t_max, hit, counters)
+                   : wide->leaf8 ? wide8_walk_closest_early_leaf8(wide, ray, t_max, hit, counters)
+                                 : wide8_walk_closest_early(wide, ray, t_max, hit, counters);
+        return counters ? wide8_walk_closest_stats(wide, ray, t_max, hit, counters)
+               : wide->leaf8 ? wide8_walk_closest_leaf8(wide, ray, t_max, hit, counters)
+                             : wide8_walk_closest(wide, ray, t_max, hit, counters);
+    }
+#endif
+    /* Two copies of each walk: without counters (the caller passed
+     * none, the common case) the hot loop does not count. */
+    if (wide->width == 4) {
+        if (any_hit)
+            return counters ? wide4_walk_any_stats(wide, ray, t_max, hit, counters)
+                            : wide4_walk_any(wide, ray, t_max, hit, counters);
+        return counters ? wide4_walk_closest_stats(wide, ray, t_max, hit, counters)
+                        : wide4_walk_closest(wide, ray, t_max, hit, counters);
+    }
+    return walk(bvh, tri, ray, t_max, any_hit, hit, counters);
+}
+
 int TRACE_WIDE_CLOSEST(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,
                        const struct trace_ray *ray, float t_max, struct trace_hit *hit,
                        struct trace_counters *counters);
@@ -928,7 +915,7 @@ int TRACE_WIDE_CLOSEST(const struct bvh4 *wide, const struct bvh *bvh, const flo
                        const struct trace_ray *ray, float t_max, struct trace_hit *hit,
                        struct trace_counters *counters)
 {
-    return walk_wide(wide, bvh, tri, ray, t_max, 0, hit, counters);
+    return walk_wide_single(wide, bvh, tri, ray, t_max, 0, hit, counters);
 }
 
 int TRACE_WIDE_ANY(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,
@@ -936,5 +923,5 @@ int TRACE_WIDE_ANY(const struct bvh4 *wide, const struct bvh *bvh, const float *
 int TRACE_WIDE_ANY(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,
                    const struct trace_ray *ray, float t_max, struct trace_counters *counters)
 {
-    return walk_wide(wide, bvh, tri, ray, t_max, 1, NULL, counters);
+    return walk_wide_single(wide, bvh, tri, ray, t_max, 1, NULL, counters);
 }

@@ -1,0 +1,220 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * traverse_wide8_ray.h - the single-ray 8-wide walk's body (traverse_wide.h,
+ * before WIDE8_PACKET, says how it is arranged), included twice by
+ * traverse_wide.h: as walk_wide8_ray with WIDE8_RAY_LEAF8 0 (a leaf of
+ * two packets is two 4-lane calls) and as walk_wide8_ray_leaf8 with
+ * WIDE8_RAY_LEAF8 1 (one 8-lane call, wide8_leaf8_*).  Two copies of the
+ * text rather than a flag of one inline function: with a flag, the walks
+ * without the 8-lane call compiled to different code (register allocation
+ * and block order; the soup's primary rays were 0.05 of Embree slower),
+ * although the flag was a constant 0 in them.  Define WIDE8_RAY and
+ * WIDE8_RAY_LEAF8 before including; no include guard.
+ */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int any_hit, int stats,
+                            int leave_early)
+{
+    const struct trace_ray *ray = s->ray;
+    const struct bvh8_node *nodes = wide->nodes8;
+    const struct tri4_packet *packets = wide->packets;
+    size_t near_x, near_y, near_z, far_x, far_y, far_z;
+    int octant = 0;
+    {
+        /* Row k is min k, row 3 + k max k; a negative direction (-0
+         * too) has its near plane at the max.  By arithmetic on the sign
+         * bits: near + far = 2k + 3 rows. */
+        const size_t row = sizeof(nodes[0].bounds[0]);
+        uint32_t bits[3];
+        memcpy(bits, ray->inv_dir, sizeof(bits));
+        const size_t nx = bits[0] >> 31, ny = bits[1] >> 31, nz = bits[2] >> 31;
+        near_x = nx * 3 * row;
+        far_x = 3 * row - near_x;
+        near_y = (1 + ny * 3) * row;
+        far_y = 5 * row - near_y;
+        near_z = (2 + nz * 3) * row;
+        far_z = 7 * row - near_z;
+        octant = (int)(nx | ny << 1 | nz << 2);
+    }
+    const __m256i order_shift = _mm256_setr_epi32(0, 3, 6, 9, 12, 15, 18, 21);
+    uint32_t st_child[WIDE_STACK];
+    uint32_t st_count[WIDE_STACK];
+    float st_t[WIDE_STACK];
+    uint32_t sp = 0;
+    uint32_t cur = 0;
+    uint32_t cur_count = 0;
+    float box_limit = s->box_limit;
+    uint64_t node_tests = 0;
+    uint64_t tri_tests = 0;
+    int r4_ready = 0;
+    /* Per layout: only a layout beyond the caches pays for the stack
+     * top's prefetch (bvh4_layout.h). */
+    const int prefetch_top = wide->prefetch_top != 0;
+    for (;;) {
+        /* A leaf popped after a leaf goes straight to the leaf test: the
+         * node test's vectors are broadcast only when an inner node comes
+         * next. */
+        if (!cur_count) {
+            /* The ray's vectors, broadcast again after each leaf call from
+             * the ray (which the call may in principle have changed, so the
+             * compiler reloads it anyway) instead of spilled and reloaded
+             * around it. */
+#if defined(__GNUC__)
+            /* GCC sees that the packet call leaves the ray alone and keeps
+             * these vectors across it, spilling and reloading eight of them
+             * around every leaf; an any-hit walk (about three leaf visits per
+             * shadow ray) loads them again instead.  The empty asm hides
+             * nothing but the pointer's provenance. */
+            if (any_hit)
+                __asm__("" : "+r"(ray));
+#endif
+            /* The origin negated: bound + (-org) is bound - org bit for bit
+             * (IEEE 754's x - y is x + (-y)), and the addition takes the
+             * bound as its memory operand (the subtraction cannot, the bound
+             * being its minuend): six loads fewer per node. */
+            const __m256 neg_org_x = _mm256_set1_ps(-ray->org[0]);
+            const __m256 neg_org_y = _mm256_set1_ps(-ray->org[1]);
+            const __m256 neg_org_z = _mm256_set1_ps(-ray->org[2]);
+            const __m256 inv_x = _mm256_set1_ps(ray->inv_dir[0]);
+            const __m256 inv_y = _mm256_set1_ps(ray->inv_dir[1]);
+            const __m256 inv_z = _mm256_set1_ps(ray->inv_dir[2]);
+            const __m256 tmin8 = _mm256_set1_ps(ray->tmin);
+            /* Inner nodes until a leaf lane comes up (or the stack empties). */
+            while (!cur_count) {
+                const struct bvh8_node *n = &nodes[cur];
+                const char *b = (const char *)(const void *)n->bounds;
+                if (stats)
+                    node_tests += 8;
+                /* isect_box's order: entry max(z, max(y, max(x, tmin))),
+                 * exit min(z, min(y, min(x, inf))) (see the file's head). */
+                const __m256 tnx =
+                    _mm256_mul_ps(_mm256_add_ps(neg_org_x, wide8_bound(b, near_x)), inv_x);
+                const __m256 tfx =
+                    _mm256_mul_ps(_mm256_add_ps(neg_org_x, wide8_bound(b, far_x)), inv_x);
+                const __m256 tny =
+                    _mm256_mul_ps(_mm256_add_ps(neg_org_y, wide8_bound(b, near_y)), inv_y);
+                const __m256 tfy =
+                    _mm256_mul_ps(_mm256_add_ps(neg_org_y, wide8_bound(b, far_y)), inv_y);
+                const __m256 tnz =
+                    _mm256_mul_ps(_mm256_add_ps(neg_org_z, wide8_bound(b, near_z)), inv_z);
+                const __m256 tfz =
+                    _mm256_mul_ps(_mm256_add_ps(neg_org_z, wide8_bound(b, far_z)), inv_z);
+                const __m256 t0 = _mm256_max_ps(tnz, _mm256_max_ps(tny, _mm256_max_ps(tnx, tmin8)));
+                __m256 t1 = _mm256_min_ps(
+                    tfz, _mm256_min_ps(tfy, _mm256_min_ps(tfx, _mm256_set1_ps(INFINITY))));
+                t1 = _mm256_mul_ps(t1, _mm256_set1_ps(ISECT_BOX_FAR_SCALE));
+                t1 = _mm256_min_ps(t1, _mm256_set1_ps(box_limit));
+                const __m256 hit = _mm256_cmp_ps(t0, t1, _CMP_LE_OQ);
+                const unsigned mask = (unsigned)_mm256_movemask_ps(hit);
+                if (mask) {
+                    if (!(mask & (mask - 1u))) {
+                        const unsigned l = (unsigned)__builtin_ctz(mask);
+                        cur = n->child[l];
+                        cur_count = n->count[l];
+                    } else {
+                        if (any_hit)
+                            wide8_push_stored(n, hit, t0, st_child, st_count, st_t, &sp, &cur,
+                                              &cur_count);
+                        else
+                            wide8_push(n, octant, hit, t0, order_shift, st_child, st_count, st_t,
+                                       &sp, &cur, &cur_count);
+                        if (prefetch_top) {
+                            /* The new stack top, whose subtree comes after
+                             * cur's: prefetched now (its bounds, or the
+                             * first three lines of its leaf's packet), so
+                             * that its load overlaps cur's subtree instead
+                             * of following it. */
+                            const uint32_t top = st_child[sp - 1];
+                            const char *a = st_count[sp - 1] ? (const char *)&packets[top]
+                                                             : (const char *)&nodes[top];
+                            _mm_prefetch(a, _MM_HINT_T0);
+                            _mm_prefetch(a + 64, _MM_HINT_T0);
+                            _mm_prefetch(a + 128, _MM_HINT_T0);
+                        }
+                    }
+                    if (!cur_count)
+                        wide_prefetch(&nodes[cur], sizeof(struct bvh8_node));
+                    continue;
+                }
+                /* Pop (as below). */
+                for (;;) {
+                    if (sp == 0)
+                        goto done;
+                    sp--;
+                    if (any_hit || st_t[sp] <= box_limit)
+                        break;
+                }
+                cur = st_child[sp];
+                cur_count = st_count[sp];
+            }
+        }
+        {
+            int stop = 0;
+            const struct tri4_packet *p = &packets[cur];
+            /* A closest-hit ray sets the packet test's constants at its
+             * first leaf, not at its start: a ray that misses every leaf
+             * box never pays for them.  An any-hit ray (a shadow ray,
+             * which starts on a surface and nearly always reaches a leaf)
+             * has them set by WIDE8_WALK: the lazy set-up cost it more
+             * instructions than it saved (callgrind, gears). */
+            if (!any_hit && !r4_ready) {
+                tri4_ray_init(&s->r4, ray);
+                r4_ready = 1;
+            }
+            if (stats)
+                tri_tests += cur_count;
+#if WIDE8_RAY_LEAF8
+            /* Two packets (5-8 triangles) in one 8-lane call. */
+            if (cur_count > 4) {
+                if (any_hit)
+                    stop = wide8_leaf8_any(s, p, cur_count);
+                else if (leave_early)
+                    stop = wide8_leaf8_closest(s, p, cur_count);
+                else
+                    stop = wide8_leaf8_full(s, p, cur_count);
+            } else
+#endif
+            for (;;) {
+                const uint32_t n = cur_count < 4 ? cur_count : 4;
+                if (any_hit)
+                    stop = wide8_packet_any(s, p, n);
+                else if (leave_early)
+                    stop = wide8_packet_closest(s, p, n);
+                else
+                    stop = wide8_packet_full(s, p, n);
+                if (stop || cur_count <= 4)
+                    break;
+                cur_count -= 4;
+                p++;
+            }
+            if (stop) {
+                if (stats) {
+                    s->node_tests += node_tests;
+                    s->triangle_tests += tri_tests;
+                }
+                return 1;
+            }
+        }
+        box_limit = s->box_limit;
+        /* An any-hit walk ends at its first hit, so its box_limit never
+         * shrinks and every pushed child passes: the entry distance is
+         * not compared. */
+        for (;;) {
+            if (sp == 0)
+                goto done;
+            sp--;
+            if (any_hit || st_t[sp] <= box_limit)
+                break;
+        }
+        cur = st_child[sp];
+        cur_count = st_count[sp];
+    }
+done:
+    if (stats) {
+        s->node_tests += node_tests;
+        s->triangle_tests += tri_tests;
+    }
+    return 0;
+}
