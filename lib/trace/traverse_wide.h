@@ -615,16 +615,16 @@ static inline int walk_wide8(const struct bvh4 *wide, struct wide_state *s, uint
  *   inlined walks' frames and a second copy of the packet test's
  *   constants).
  */
-#define WIDE8_PACKET(name, any_hit, early_out)                                                   \
+#define WIDE8_LEAF_TEST(name, test, any_hit, early_out)                                          \
     static int name(struct wide_state *s, const struct tri4_packet *p, uint32_t n) WIDE_NOINLINE; \
     static int name(struct wide_state *s, const struct tri4_packet *p, uint32_t n)                \
     {                                                                                              \
-        return wide_packet_test(s, p, n, any_hit, early_out);                                      \
+        return test(s, p, n, any_hit, early_out);                                                  \
     }
 
-WIDE8_PACKET(wide8_packet_closest, 0, 1)
-WIDE8_PACKET(wide8_packet_full, 0, 0)
-WIDE8_PACKET(wide8_packet_any, 1, 1)
+WIDE8_LEAF_TEST(wide8_packet_closest, wide_packet_test, 0, 1)
+WIDE8_LEAF_TEST(wide8_packet_full, wide_packet_test, 0, 0)
+WIDE8_LEAF_TEST(wide8_packet_any, wide_packet_test, 1, 1)
 
 #define WIDE8_RAY walk_wide8_ray
 #define WIDE8_RAY_LEAF8 0
@@ -634,7 +634,7 @@ WIDE8_PACKET(wide8_packet_any, 1, 1)
 
 /* The whole single-ray trace over an 8-wide layout, the state set up
  * here: the entry (walk_wide) is then a dispatch and a jump. */
-#define WIDE8_WALK(name, any_hit, stats, leave_early)                                           \
+#define WIDE8_WALK(name, walk, any_hit, stats, leave_early)                                     \
     static int name(const struct bvh4 *wide, const struct trace_ray *ray, float t_max,         \
                     struct trace_hit *hit, struct trace_counters *counters) WIDE_NOINLINE;      \
     static int name(const struct bvh4 *wide, const struct trace_ray *ray, float t_max,         \
@@ -644,7 +644,7 @@ WIDE8_PACKET(wide8_packet_any, 1, 1)
         wide_state_init(&s, ray, t_max, any_hit, hit);                                          \
         if (any_hit)                                                                            \
             tri4_ray_init(&s.r4, ray);                                                          \
-        const int done = walk_wide8_ray(wide, &s, any_hit, stats, leave_early);                 \
+        const int done = walk(wide, &s, any_hit, stats, leave_early);                           \
         if (stats) {                                                                            \
             counters->node_tests += s.node_tests;                                               \
             counters->triangle_tests += s.triangle_tests;                                       \
@@ -661,12 +661,12 @@ WIDE8_PACKET(wide8_packet_any, 1, 1)
  * branch cost more in mispredictions than it saved (gears random rays
  * 0.81 -> 0.75 of Embree with it, primary rays 1.02 -> 1.07).  A copy per
  * choice, not a test per packet. */
-WIDE8_WALK(wide8_walk_closest, 0, 0, 0)
-WIDE8_WALK(wide8_walk_closest_stats, 0, 1, 0)
-WIDE8_WALK(wide8_walk_closest_early, 0, 0, 1)
-WIDE8_WALK(wide8_walk_closest_early_stats, 0, 1, 1)
-WIDE8_WALK(wide8_walk_any, 1, 0, 1)
-WIDE8_WALK(wide8_walk_any_stats, 1, 1, 1)
+WIDE8_WALK(wide8_walk_closest, walk_wide8_ray, 0, 0, 0)
+WIDE8_WALK(wide8_walk_closest_stats, walk_wide8_ray, 0, 1, 0)
+WIDE8_WALK(wide8_walk_closest_early, walk_wide8_ray, 0, 0, 1)
+WIDE8_WALK(wide8_walk_closest_early_stats, walk_wide8_ray, 0, 1, 1)
+WIDE8_WALK(wide8_walk_any, walk_wide8_ray, 1, 0, 1)
+WIDE8_WALK(wide8_walk_any_stats, walk_wide8_ray, 1, 1, 1)
 
 /*
  * A leaf of n = 5..8 triangles (two packets, p[0] and p[1]) with one
@@ -674,7 +674,7 @@ WIDE8_WALK(wide8_walk_any_stats, 1, 1, 1)
  * calls; the kept lanes in order, lane l of the mask being lane l % 4 of
  * p[l / 4], each with the limit of the moment (walk_leaf's rule), so the
  * hit is that of the two calls bit for bit (tri4_pair_filter_lanes says
- * why).  Only the walk copies with leaf8 (WIDE8_WALK_LEAF) call it.
+ * why).  Only the walk copies over walk_wide8_ray_leaf8 call it.
  */
 #if defined(__GNUC__)
 __attribute__((always_inline))
@@ -716,16 +716,9 @@ static inline int wide_leaf8_test(struct wide_state *s, const struct tri4_packet
     return 0;
 }
 
-#define WIDE8_LEAF8(name, any_hit, early_out)                                                    \
-    static int name(struct wide_state *s, const struct tri4_packet *p, uint32_t n) WIDE_NOINLINE; \
-    static int name(struct wide_state *s, const struct tri4_packet *p, uint32_t n)                \
-    {                                                                                              \
-        return wide_leaf8_test(s, p, n, any_hit, early_out);                                       \
-    }
-
-WIDE8_LEAF8(wide8_leaf8_closest, 0, 1)
-WIDE8_LEAF8(wide8_leaf8_full, 0, 0)
-WIDE8_LEAF8(wide8_leaf8_any, 1, 1)
+WIDE8_LEAF_TEST(wide8_leaf8_closest, wide_leaf8_test, 0, 1)
+WIDE8_LEAF_TEST(wide8_leaf8_full, wide_leaf8_test, 0, 0)
+WIDE8_LEAF_TEST(wide8_leaf8_any, wide_leaf8_test, 1, 1)
 
 #define WIDE8_RAY walk_wide8_ray_leaf8
 #define WIDE8_RAY_LEAF8 1
@@ -740,24 +733,9 @@ WIDE8_LEAF8(wide8_leaf8_any, 1, 1)
  * bumpy, gears), two early returns were cheaper than one that waits for
  * all eight lanes (bvh4_layout.h).  No copies with counters: the walks
  * above count the same nodes and triangles. */
-#define WIDE8_WALK_LEAF8(name, any_hit, leave_early)                                            \
-    static int name(const struct bvh4 *wide, const struct trace_ray *ray, float t_max,         \
-                    struct trace_hit *hit, struct trace_counters *counters) WIDE_NOINLINE;      \
-    static int name(const struct bvh4 *wide, const struct trace_ray *ray, float t_max,         \
-                    struct trace_hit *hit, struct trace_counters *counters)                     \
-    {                                                                                           \
-        struct wide_state s;                                                                    \
-        wide_state_init(&s, ray, t_max, any_hit, hit);                                          \
-        if (any_hit)                                                                            \
-            tri4_ray_init(&s.r4, ray);                                                          \
-        const int done = walk_wide8_ray_leaf8(wide, &s, any_hit, 0, leave_early);               \
-        (void)counters;                                                                         \
-        return any_hit ? done : s.found;                                                        \
-    }
-
-WIDE8_WALK_LEAF8(wide8_walk_closest_leaf8, 0, 0)
-WIDE8_WALK_LEAF8(wide8_walk_closest_early_leaf8, 0, 1)
-WIDE8_WALK_LEAF8(wide8_walk_any_leaf8, 1, 1)
+WIDE8_WALK(wide8_walk_closest_leaf8, walk_wide8_ray_leaf8, 0, 0, 0)
+WIDE8_WALK(wide8_walk_closest_early_leaf8, walk_wide8_ray_leaf8, 0, 0, 1)
+WIDE8_WALK(wide8_walk_any_leaf8, walk_wide8_ray_leaf8, 1, 0, 1)
 
 /*
  * The leaf of the 8-wide walks on its own, for

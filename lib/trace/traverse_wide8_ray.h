@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * traverse_wide8_ray.h - the single-ray 8-wide walk's body (traverse_wide.h,
- * before WIDE8_PACKET, says how it is arranged), included twice by
+ * before WIDE8_LEAF_TEST, says how it is arranged), included twice by
  * traverse_wide.h: as walk_wide8_ray with WIDE8_RAY_LEAF8 0 (a leaf of
  * two packets is two 4-lane calls) and as walk_wide8_ray_leaf8 with
  * WIDE8_RAY_LEAF8 1 (one 8-lane call, wide8_leaf8_*).  Two copies of the
