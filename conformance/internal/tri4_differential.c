@@ -334,7 +334,7 @@ static void one_case(struct tg_rng *r, uint64_t *cases, uint64_t *kept_rejected,
 }
 
 /* The leaf tests of the 8-wide single-ray walk in the tables this CPU
- * runs (trace_leaf8_avx2, trace_leaf8_avx512). */
+ * runs (the tables' leaf8). */
 typedef int (*leaf8_fn)(const struct trace_ray *ray, const struct tri4_packet *p, uint32_t n,
                         float t_max, int any_hit, int early_out, int eight, int found,
                         struct trace_hit *hit);
@@ -504,10 +504,11 @@ int main(void)
      * CPU runs (none: nothing to compare). */
     leaf8_fn fns[2];
     int fn_count = 0;
-    if (trace_kernels_get(TRACE_ISA_AVX2))
-        fns[fn_count++] = trace_leaf8_avx2;
-    if (trace_kernels_get(TRACE_ISA_AVX512))
-        fns[fn_count++] = trace_leaf8_avx512;
+    for (int isa = TRACE_ISA_AVX2; isa <= TRACE_ISA_AVX512; isa++) {
+        const struct trace_kernels *k = trace_kernels_get((enum trace_isa)isa);
+        if (k && k->leaf8)
+            fns[fn_count++] = k->leaf8;
+    }
     uint64_t pair_cases = 0, pair_hits = 0, pair_second = 0, pair_ties = 0, pair_edges = 0;
     if (fn_count) {
         struct tg_rng rp;

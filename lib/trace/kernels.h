@@ -57,6 +57,14 @@ struct trace_kernels {
      * traces ray by ray, which is how packets on and off are compared. */
     trace_packet_closest_fn closest_packet;
     trace_packet_any_fn any_packet;
+    /* The 8-wide walks' leaf test on its own (traverse_wide.h,
+     * TRACE_WIDE_LEAF8), for conformance/internal/tri4_differential:
+     * the n triangles of p[0], p[1] with the 8-lane call (eight 1) or
+     * the 4-lane calls (eight 0).  NULL in the tables without the
+     * 8-wide walk (scalar, SSE4.2). */
+    int (*leaf8)(const struct trace_ray *ray, const struct tri4_packet *p, uint32_t n,
+                 float t_max, int any_hit, int early_out, int eight, int found,
+                 struct trace_hit *hit);
 };
 
 /* The table of an ISA, or NULL when this build has no such table or this
@@ -76,17 +84,5 @@ int trace_isa_parse(const char *name, size_t len, enum trace_isa *isa);
 const struct trace_kernels *trace_kernels_sse4(void);
 const struct trace_kernels *trace_kernels_avx2(void);
 const struct trace_kernels *trace_kernels_avx512(void);
-
-/* The 8-wide walks' leaf test of the AVX2 and AVX-512 tables on its own
- * (traverse_wide.h, TRACE_WIDE_LEAF8), for
- * conformance/internal/tri4_differential; -1 when the table was compiled
- * without its instruction set.  Call only when trace_kernels_get gives
- * the table (the CPU runs it). */
-int trace_leaf8_avx2(const struct trace_ray *ray, const struct tri4_packet *p, uint32_t n,
-                     float t_max, int any_hit, int early_out, int eight, int found,
-                     struct trace_hit *hit);
-int trace_leaf8_avx512(const struct trace_ray *ray, const struct tri4_packet *p, uint32_t n,
-                       float t_max, int any_hit, int early_out, int eight, int found,
-                       struct trace_hit *hit);
 
 #endif

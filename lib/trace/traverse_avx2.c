@@ -22,7 +22,7 @@
 static const struct trace_kernels table = {
     TRACE_ISA_AVX2, "avx2", trace_closest_avx2, trace_any_avx2,
     trace_closest4_avx2, trace_any4_avx2, 8,
-    trace_closest_packet_avx2, trace_any_packet_avx2};
+    trace_closest_packet_avx2, trace_any_packet_avx2, trace_leaf8_avx2};
 
 const struct trace_kernels *trace_kernels_avx2(void)
 {
@@ -32,21 +32,5 @@ const struct trace_kernels *trace_kernels_avx2(void)
 const struct trace_kernels *trace_kernels_avx2(void)
 {
     return NULL;
-}
-
-int trace_leaf8_avx2(const struct trace_ray *ray, const struct tri4_packet *p, uint32_t n,
-                     float t_max, int any_hit, int early_out, int eight, int found,
-                     struct trace_hit *hit)
-{
-    (void)ray;
-    (void)p;
-    (void)n;
-    (void)t_max;
-    (void)any_hit;
-    (void)early_out;
-    (void)eight;
-    (void)found;
-    (void)hit;
-    return -1;
 }
 #endif

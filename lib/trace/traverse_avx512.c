@@ -22,7 +22,7 @@
 static const struct trace_kernels table = {
     TRACE_ISA_AVX512, "avx512", trace_closest_avx512, trace_any_avx512,
     trace_closest4_avx512, trace_any4_avx512, 8,
-    trace_closest_packet_avx512, trace_any_packet_avx512};
+    trace_closest_packet_avx512, trace_any_packet_avx512, trace_leaf8_avx512};
 
 const struct trace_kernels *trace_kernels_avx512(void)
 {
@@ -32,21 +32,5 @@ const struct trace_kernels *trace_kernels_avx512(void)
 const struct trace_kernels *trace_kernels_avx512(void)
 {
     return NULL;
-}
-
-int trace_leaf8_avx512(const struct trace_ray *ray, const struct tri4_packet *p, uint32_t n,
-                       float t_max, int any_hit, int early_out, int eight, int found,
-                       struct trace_hit *hit)
-{
-    (void)ray;
-    (void)p;
-    (void)n;
-    (void)t_max;
-    (void)any_hit;
-    (void)early_out;
-    (void)eight;
-    (void)found;
-    (void)hit;
-    return -1;
 }
 #endif

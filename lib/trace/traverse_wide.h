@@ -746,10 +746,7 @@ WIDE8_WALK(wide8_walk_any_leaf8, walk_wide8_ray_leaf8, 1, 0, 1)
  * *hit is an earlier leaf's hit, whose t is the limit (walk_leaf's rule).
  * Returns found (closest) or occluded (any hit).
  */
-int TRACE_WIDE_LEAF8(const struct trace_ray *ray, const struct tri4_packet *p, uint32_t n,
-                     float t_max, int any_hit, int early_out, int eight, int found,
-                     struct trace_hit *hit);
-int TRACE_WIDE_LEAF8(const struct trace_ray *ray, const struct tri4_packet *p, uint32_t n,
+static int TRACE_WIDE_LEAF8(const struct trace_ray *ray, const struct tri4_packet *p, uint32_t n,
                      float t_max, int any_hit, int early_out, int eight, int found,
                      struct trace_hit *hit)
 {
