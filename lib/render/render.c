@@ -146,52 +146,19 @@ static void unproject_axis(const struct render_pass *sh, int axis, double c, dou
         out[r] = m[4 * axis + r] * n;
 }
 
+#if !RENDER_PAIRS
 /* The near- and far-plane points under viewport position (x, y), in
- * pixels from the viewport's corner, through the inverse projection;
- * col and row are unproject_axis of x and y. */
-static int unproject(const struct render_pass *sh, double x, double y, const double col[4],
-                     const double row[4], double near_pt[3], double far_pt[3])
+ * pixels from the viewport's corner, through the inverse projection. */
+static int unproject(const struct render_pass *sh, double x, double y, double near_pt[3],
+                     double far_pt[3])
 {
-#if RENDER_PAIRS
-    /* mat4_project of the near (lane 0, z = -1) and far (lane 1, z = 1)
-     * points together: each sum in mat4_project's order, ((m0 x + m1 y) +
-     * m2 z) + m3, the shared first sum once. */
-    (void)x;
-    (void)y;
-    const double *m = sh->inv_projection;
-    const __m128d z = _mm_set_pd(1.0, -1.0);
-    const __m128d w = _mm_add_pd(
-        _mm_add_pd(_mm_set1_pd(col[3] + row[3]), _mm_mul_pd(_mm_set1_pd(m[11]), z)),
-        _mm_set1_pd(m[15]));
-    double wl[2], out[3][2];
-    _mm_storeu_pd(wl, w);
-    if (wl[0] == 0.0 || wl[1] == 0.0)
-        return 0;
-    /* isfinite of the six coordinates: x - x is 0 for a finite x, NaN
-     * for an infinity or a NaN. */
-    __m128d finite = _mm_castsi128_pd(_mm_set1_epi32(-1));
-    for (int r = 0; r < 3; r++) {
-        __m128d v = _mm_add_pd(_mm_set1_pd(col[r] + row[r]),
-                               _mm_mul_pd(_mm_set1_pd(m[8 + r]), z));
-        v = _mm_div_pd(_mm_add_pd(v, _mm_set1_pd(m[12 + r])), w);
-        finite = _mm_and_pd(finite, _mm_cmpeq_pd(_mm_sub_pd(v, v), _mm_setzero_pd()));
-        _mm_storeu_pd(out[r], v);
-    }
-    for (int r = 0; r < 3; r++) {
-        near_pt[r] = out[r][0];
-        far_pt[r] = out[r][1];
-    }
-    return _mm_movemask_pd(finite) == 3;
-#else
-    (void)col;
-    (void)row;
     const int *vp = sh->job->state->viewport;
     double ndc_near[3] = {2.0 * x / vp[2] - 1.0, 2.0 * y / vp[3] - 1.0, -1.0};
     double ndc_far[3] = {ndc_near[0], ndc_near[1], 1.0};
     return mat4_project(sh->inv_projection, ndc_near, near_pt) &&
            mat4_project(sh->inv_projection, ndc_far, far_pt);
-#endif
 }
+#endif
 
 #if RENDER_PAIRS
 /* Two lanes' distances to a line along the unit vector d, a[k] being each
@@ -202,8 +169,12 @@ static inline __m128d pair_distance_to_line(const __m128d a[3], const __m128d d[
 {
     const __m128d along = _mm_add_pd(_mm_add_pd(_mm_mul_pd(a[0], d[0]), _mm_mul_pd(a[1], d[1])),
                                      _mm_mul_pd(a[2], d[2]));
-    __m128d r2 = _mm_setzero_pd();
-    for (int k = 0; k < 3; k++) {
+    /* The sum from 0 as distances_to_line's: 0 + perp0 perp0 is perp0
+     * perp0 itself (a square is +0, positive or NaN, and +0 + +0 is +0),
+     * so the first term needs no addition. */
+    const __m128d perp0 = _mm_sub_pd(a[0], _mm_mul_pd(along, d[0]));
+    __m128d r2 = _mm_mul_pd(perp0, perp0);
+    for (int k = 1; k < 3; k++) {
         const __m128d perp = _mm_sub_pd(a[k], _mm_mul_pd(along, d[k]));
         r2 = _mm_add_pd(r2, _mm_mul_pd(perp, perp));
     }
@@ -265,13 +236,15 @@ static void distances_to_line(const double *const q[4], const double p[3], const
  * one, so that each is computed once instead of three times, the whole
  * row as it enters the cache (a tile reads every point of its rows: its
  * pixels' and their right neighbours' column), the column's and row's
- * products once (unproject_axis).  The cached
- * point is the one the direct call gives, bit for bit: unproject at
- * (X + 0.5, Y + 0.5) for whole X, Y, and px + 0.5 + 1 is exactly
- * (px + 1) + 0.5 in double.
+ * products once (unproject_axis).  A row is kept coordinate by
+ * coordinate (struct unproject_row), so that two neighbouring points'
+ * coordinate is one SSE2 pair: the row is unprojected two points at a
+ * time and the rays of a 4 x 2 block are made two at a time from pairs
+ * loaded whole (block_rays).  The cached point is the one a direct
+ * mat4_project gives, bit for bit: unprojected at (X + 0.5, Y + 0.5) for
+ * whole X, Y, and px + 0.5 + 1 is exactly (px + 1) + 0.5 in double.
  */
 struct unproject_point {
-    signed char state; /* 1 unprojected, -1 cannot be */
     double near_pt[3], far_pt[3];
 };
 
@@ -279,26 +252,86 @@ struct unproject_point {
  * loop's 4 x 2 blocks step two rows at a time and share the row between
  * two steps, the scalar loop steps one. */
 #define UNPROJECT_ROWS 3
-struct unproject_cache {
-    int x0, y; /* viewport pixel of row[0][0] */
-    struct unproject_point rows[UNPROJECT_ROWS][RENDER_TILE_SIZE + 1];
-    double col[RENDER_TILE_SIZE + 1][4]; /* unproject_axis of each column */
-    double row[UNPROJECT_ROWS][4];       /* and of each row */
+/* Points of a row: the tile's columns, the next one (the last column's
+ * right neighbours) and one more to make whole pairs. */
+#define UNPROJECT_COLS (RENDER_TILE_SIZE + 2)
+
+struct unproject_row {
+    double near_pt[3][UNPROJECT_COLS], far_pt[3][UNPROJECT_COLS];
+    double axis[4];                    /* unproject_axis of the row */
+    signed char state[UNPROJECT_COLS]; /* 1 unprojected, -1 cannot be */
+    int whole; /* 1 when all of the first RENDER_TILE_SIZE + 1 are unprojected */
 };
 
-static void unproject_cache_rows(const struct render_pass *sh, struct unproject_cache *c,
-                                 int first)
+struct unproject_cache {
+    int x0, y;                                  /* viewport pixel of rows[0]'s first point */
+    struct unproject_row *rows[UNPROJECT_ROWS]; /* row y + r: a ring over store */
+    struct unproject_row store[UNPROJECT_ROWS];
+    double col[4][UNPROJECT_COLS]; /* unproject_axis of each column, by product */
+};
+
+/* Row y of the cache's columns into u. */
+static void unproject_row_fill(const struct render_pass *sh, const struct unproject_cache *c,
+                               struct unproject_row *u, int y)
 {
-    for (int r = first; r < UNPROJECT_ROWS; r++) {
-        unproject_axis(sh, 1, c->y + r + 0.5, c->row[r]);
-        for (int i = 0; i <= RENDER_TILE_SIZE; i++) {
-            struct unproject_point *p = &c->rows[r][i];
-            p->state = unproject(sh, c->x0 + i + 0.5, c->y + r + 0.5, c->col[i], c->row[r],
-                                 p->near_pt, p->far_pt)
-                           ? 1
-                           : -1;
+    unproject_axis(sh, 1, y + 0.5, u->axis);
+#if RENDER_PAIRS
+    /* mat4_project of two neighbours' near (z = -1) and far (z = 1)
+     * points, a lane each: each sum in mat4_project's order, ((m0 x + m1
+     * y) + m2 z) + m3, the shared first sum once; m2 z is the same
+     * product for every point (multiplying by -1 or 1 is exact).  w = 0
+     * needs no test of its own: a division by zero gives an infinity or a
+     * NaN, which the finiteness test refuses as mat4_project's w test
+     * does. */
+    const double *m = sh->inv_projection;
+    __m128d axis[4], zn[4], zf[4], last[4];
+    for (int r = 0; r < 4; r++) {
+        axis[r] = _mm_set1_pd(u->axis[r]);
+        zn[r] = _mm_set1_pd(m[8 + r] * -1.0);
+        zf[r] = _mm_set1_pd(m[8 + r] * 1.0);
+        last[r] = _mm_set1_pd(m[12 + r]);
+    }
+    /* x - x is 0 for a finite x, NaN for an infinity or a NaN, and a NaN
+     * stays in the sum: the sum is 0 when every coordinate is finite. */
+    __m128d finite = _mm_setzero_pd();
+    for (int i = 0; i < UNPROJECT_COLS; i += 2) {
+        const __m128d s3 = _mm_add_pd(_mm_loadu_pd(&c->col[3][i]), axis[3]);
+        const __m128d wn = _mm_add_pd(_mm_add_pd(s3, zn[3]), last[3]);
+        const __m128d wf = _mm_add_pd(_mm_add_pd(s3, zf[3]), last[3]);
+        for (int r = 0; r < 3; r++) {
+            const __m128d s = _mm_add_pd(_mm_loadu_pd(&c->col[r][i]), axis[r]);
+            const __m128d n = _mm_div_pd(_mm_add_pd(_mm_add_pd(s, zn[r]), last[r]), wn);
+            const __m128d f = _mm_div_pd(_mm_add_pd(_mm_add_pd(s, zf[r]), last[r]), wf);
+            _mm_storeu_pd(&u->near_pt[r][i], n);
+            _mm_storeu_pd(&u->far_pt[r][i], f);
+            finite = _mm_add_pd(finite, _mm_add_pd(_mm_sub_pd(n, n), _mm_sub_pd(f, f)));
         }
     }
+    if (_mm_movemask_pd(_mm_cmpeq_pd(finite, _mm_setzero_pd())) == 3) {
+        memset(u->state, 1, sizeof(u->state));
+        u->whole = 1;
+        return;
+    }
+    for (int i = 0; i < UNPROJECT_COLS; i++) {
+        int ok = 1;
+        for (int r = 0; r < 3; r++)
+            ok &= isfinite(u->near_pt[r][i]) && isfinite(u->far_pt[r][i]);
+        u->state[i] = ok ? 1 : -1;
+    }
+#else
+    for (int i = 0; i < UNPROJECT_COLS; i++) {
+        double near_pt[3], far_pt[3];
+        const int ok = unproject(sh, c->x0 + i + 0.5, y + 0.5, near_pt, far_pt);
+        for (int r = 0; r < 3; r++) {
+            u->near_pt[r][i] = near_pt[r];
+            u->far_pt[r][i] = far_pt[r];
+        }
+        u->state[i] = ok ? 1 : -1;
+    }
+#endif
+    u->whole = 1;
+    for (int i = 0; i <= RENDER_TILE_SIZE; i++)
+        u->whole &= u->state[i] > 0;
 }
 
 static void unproject_cache_init(const struct render_pass *sh, struct unproject_cache *c,
@@ -306,38 +339,53 @@ static void unproject_cache_init(const struct render_pass *sh, struct unproject_
 {
     c->x0 = x0;
     c->y = y;
-    for (int i = 0; i <= RENDER_TILE_SIZE; i++)
-        unproject_axis(sh, 0, x0 + i + 0.5, c->col[i]);
-    unproject_cache_rows(sh, c, 0);
+    double col[4];
+    for (int i = 0; i < UNPROJECT_COLS; i++) {
+        unproject_axis(sh, 0, x0 + i + 0.5, col);
+        for (int r = 0; r < 4; r++)
+            c->col[r][i] = col[r];
+    }
+    for (int r = 0; r < UNPROJECT_ROWS; r++) {
+        c->rows[r] = &c->store[r];
+        unproject_row_fill(sh, c, c->rows[r], y + r);
+    }
 }
 
 /* Moves the cache's first row to y, keeping the rows it already has from
- * y on. */
+ * y on (the ring turns; the rows it frees take the new ones). */
 static void unproject_cache_row(const struct render_pass *sh, struct unproject_cache *c, int y)
 {
     const int shift = y - c->y;
     if (shift == 0)
         return;
-    if (shift < 0 || shift >= UNPROJECT_ROWS) {
-        c->y = y;
-        unproject_cache_rows(sh, c, 0);
-        return;
+    int keep = 0;
+    if (shift > 0 && shift < UNPROJECT_ROWS) {
+        struct unproject_row *old[UNPROJECT_ROWS];
+        memcpy(old, c->rows, sizeof(old));
+        for (int r = 0; r < UNPROJECT_ROWS; r++)
+            c->rows[r] = old[(r + shift) % UNPROJECT_ROWS];
+        keep = UNPROJECT_ROWS - shift;
     }
-    memmove(c->rows[0], c->rows[shift], (size_t)(UNPROJECT_ROWS - shift) * sizeof(c->rows[0]));
-    memmove(c->row[0], c->row[shift], (size_t)(UNPROJECT_ROWS - shift) * sizeof(c->row[0]));
     c->y = y;
-    unproject_cache_rows(sh, c, UNPROJECT_ROWS - shift);
+    for (int r = keep; r < UNPROJECT_ROWS; r++)
+        unproject_row_fill(sh, c, c->rows[r], y + r);
 }
 
-/* The unprojected centre of pixel (x, y), with x - x0 in
+/* The unprojected centre of pixel (x, y) into p, with x - x0 in
  * [0, RENDER_TILE_SIZE] and y - (the cache's row) in [0, UNPROJECT_ROWS);
- * NULL when it cannot be unprojected.  The point stays in the cache (no
- * copy: a pixel reads three of them). */
-static const struct unproject_point *unproject_cached(const struct unproject_cache *c, int x,
-                                                      int y)
+ * 0 when it cannot be unprojected. */
+static int unproject_cached(const struct unproject_cache *c, int x, int y,
+                            struct unproject_point *p)
 {
-    const struct unproject_point *p = &c->rows[y - c->y][x - c->x0];
-    return p->state > 0 ? p : NULL;
+    const struct unproject_row *u = c->rows[y - c->y];
+    const int i = x - c->x0;
+    if (u->state[i] < 0)
+        return 0;
+    for (int r = 0; r < 3; r++) {
+        p->near_pt[r] = u->near_pt[r][i];
+        p->far_pt[r] = u->far_pt[r][i];
+    }
+    return 1;
 }
 
 /* fmax without the library call, for values that are never NaN on the
@@ -350,10 +398,10 @@ static double max_left(double x, double y)
 static int primary_ray(const struct unproject_cache *cache, int px, int py, float org[3],
                        float dir[3], float *tmax, struct shade_cone *cone)
 {
-    const struct unproject_point *centre = unproject_cached(cache, px, py);
-    if (!centre)
+    struct unproject_point centre, right, below;
+    if (!unproject_cached(cache, px, py, &centre))
         return 0;
-    const double *near_pt = centre->near_pt, *far_pt = centre->far_pt;
+    const double *near_pt = centre.near_pt, *far_pt = centre.far_pt;
     double d[3] = {far_pt[0] - near_pt[0], far_pt[1] - near_pt[1], far_pt[2] - near_pt[2]};
     double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     if (!(len > 0.0) || !isfinite(len))
@@ -375,12 +423,10 @@ static int primary_ray(const struct unproject_cache *cache, int px, int py, floa
      * larger of the two quotients is the quotient of the larger (a
      * correctly rounded division by len > 0 keeps the order). */
     double width = 0.0, growth = 0.0, spread = 0.0;
-    const struct unproject_point *right = unproject_cached(cache, px + 1, py);
-    const struct unproject_point *below = right ? unproject_cached(cache, px, py + 1) : NULL;
-    if (right && below) {
+    if (unproject_cached(cache, px + 1, py, &right) &&
+        unproject_cached(cache, px, py + 1, &below)) {
         /* The neighbours' near distances, then their far ones, x first. */
-        const double *const q[4] = {right->near_pt, below->near_pt, right->far_pt,
-                                    below->far_pt};
+        const double *const q[4] = {right.near_pt, below.near_pt, right.far_pt, below.far_pt};
         double dist[4]; /* near x, near y, far x, far y */
         distances_to_line(q, near_pt, d, dist);
         for (int axis = 0; axis < 2; axis++) {
@@ -395,73 +441,102 @@ static int primary_ray(const struct unproject_cache *cache, int px, int py, floa
 }
 
 #if RENDER_PAIRS
-/* primary_ray of pixels (px, py) and (px + 1, py) in the two lanes (lane
- * 0 the left one): each lane primary_ray's operations on its points in
- * its order, so the same floats; returns 0, having written nothing, when
- * a lane would leave primary_ray's common path (a point that cannot be
- * unprojected, a length that is not positive and finite), for the caller
- * to make both rays with primary_ray itself. */
-static int primary_ray_pair(const struct unproject_cache *cache, int px, int py,
-                            float org[][3], float dir[][3], float tmax[2],
-                            struct shade_cone cone[2])
+/* primary_ray of the pixels at points i and i + 1 of cache row a (b the
+ * row below) in the two lanes, lane 0 the left one: each lane
+ * primary_ray's operations on its points in its order, so the same
+ * doubles.  Returns the mask of the lanes whose length is positive and
+ * finite (the others leave primary_ray's common path); every point it
+ * reads must be unprojected. */
+struct ray_pair {
+    __m128d org[3], dir[3], len, width, spread;
+};
+
+static inline int ray_pair(const struct unproject_row *a, const struct unproject_row *b, int i,
+                           struct ray_pair *out)
 {
-    const struct unproject_point *c[2], *r[2], *b[2];
-    for (int i = 0; i < 2; i++) {
-        c[i] = unproject_cached(cache, px + i, py);
-        r[i] = unproject_cached(cache, px + i + 1, py);
-        b[i] = unproject_cached(cache, px + i, py + 1);
-        if (!c[i] || !r[i] || !b[i])
-            return 0;
-    }
-    __m128d p[3], d[3];
+    __m128d d[3];
     for (int k = 0; k < 3; k++) {
-        p[k] = _mm_set_pd(c[1]->near_pt[k], c[0]->near_pt[k]);
-        d[k] = _mm_sub_pd(_mm_set_pd(c[1]->far_pt[k], c[0]->far_pt[k]), p[k]);
+        out->org[k] = _mm_loadu_pd(&a->near_pt[k][i]);
+        d[k] = _mm_sub_pd(_mm_loadu_pd(&a->far_pt[k][i]), out->org[k]);
     }
     const __m128d len = _mm_sqrt_pd(_mm_add_pd(
         _mm_add_pd(_mm_mul_pd(d[0], d[0]), _mm_mul_pd(d[1], d[1])), _mm_mul_pd(d[2], d[2])));
-    double l[2];
-    _mm_storeu_pd(l, len);
-    for (int i = 0; i < 2; i++)
-        if (!(l[i] > 0.0) || !isfinite(l[i]))
-            return 0;
+    /* len > 0 and finite: 0 < len < infinity, false for a NaN. */
+    const int ok = _mm_movemask_pd(_mm_and_pd(_mm_cmpgt_pd(len, _mm_setzero_pd()),
+                                              _mm_cmplt_pd(len, _mm_set1_pd(INFINITY))));
     for (int k = 0; k < 3; k++)
         d[k] = _mm_div_pd(d[k], len);
     /* distances_to_line of the neighbours' near points (h = 0: right, 1:
-     * below), then of their far points (h = 2, 3), a lane per pixel. */
+     * below), then of their far points (h = 2, 3). */
     __m128d dist[4];
     for (int h = 0; h < 4; h++) {
-        const struct unproject_point *const *q = h % 2 ? b : r;
-        __m128d a[3];
+        const struct unproject_row *q = h % 2 ? b : a;
+        const int at = h % 2 ? i : i + 1;
+        __m128d v[3];
         for (int k = 0; k < 3; k++)
-            a[k] = h < 2 ? _mm_sub_pd(_mm_set_pd(q[1]->near_pt[k], q[0]->near_pt[k]), p[k])
-                         : _mm_sub_pd(_mm_set_pd(q[1]->far_pt[k], q[0]->far_pt[k]), p[k]);
-        dist[h] = pair_distance_to_line(a, d);
+            v[k] = _mm_sub_pd(_mm_loadu_pd(h < 2 ? &q->near_pt[k][at] : &q->far_pt[k][at]),
+                              out->org[k]);
+        dist[h] = pair_distance_to_line(v, d);
     }
-    /* max_left(x, y) = y > x ? y : x, from 0, x before y. */
-    __m128d width = _mm_setzero_pd(), growth = _mm_setzero_pd();
-    for (int axis = 0; axis < 2; axis++) {
-        const __m128d w_gt = _mm_cmpgt_pd(dist[axis], width);
-        width = _mm_or_pd(_mm_and_pd(w_gt, dist[axis]), _mm_andnot_pd(w_gt, width));
-        const __m128d g = _mm_sub_pd(dist[2 + axis], dist[axis]);
-        const __m128d g_gt = _mm_cmpgt_pd(g, growth);
-        growth = _mm_or_pd(_mm_and_pd(g_gt, g), _mm_andnot_pd(g_gt, growth));
-    }
-    const __m128d spread = _mm_div_pd(growth, len);
-    double dv[3][2], wv[2], sv[2];
+    /* max_left(x, y) = y > x ? y : x is maxpd with y first (it gives its
+     * first operand when greater, else its second, also for NaNs and
+     * zeros: Intel SDM, MAXPD), from 0, x before y. */
+    const __m128d zero = _mm_setzero_pd();
+    const __m128d width = _mm_max_pd(dist[1], _mm_max_pd(dist[0], zero));
+    const __m128d growth = _mm_max_pd(_mm_sub_pd(dist[3], dist[1]),
+                                      _mm_max_pd(_mm_sub_pd(dist[2], dist[0]), zero));
     for (int k = 0; k < 3; k++)
-        _mm_storeu_pd(dv[k], d[k]);
-    _mm_storeu_pd(wv, width);
-    _mm_storeu_pd(sv, spread);
-    for (int i = 0; i < 2; i++) {
-        for (int k = 0; k < 3; k++) {
-            org[i][k] = (float)c[i]->near_pt[k];
-            dir[i][k] = (float)dv[k][i];
-        }
-        tmax[i] = (float)l[i];
-        cone[i].width = (float)wv[i];
-        cone[i].spread = (float)sv[i];
-    }
+        out->dir[k] = d[k];
+    out->len = len;
+    out->width = width;
+    out->spread = _mm_div_pd(growth, len);
+    return ok;
+}
+
+/* Two pairs of doubles as four floats, each rounded as a cast does. */
+static inline __m128 floats4(__m128d lo, __m128d hi)
+{
+    return _mm_movelh_ps(_mm_cvtpd_ps(lo), _mm_cvtpd_ps(hi));
+}
+
+/* Four points given coordinate by coordinate into out[4][3]. */
+static inline void store_points4(float *out, __m128 x, __m128 y, __m128 z)
+{
+    const __m128 xy01 = _mm_unpacklo_ps(x, y); /* x0 y0 x1 y1 */
+    const __m128 xy23 = _mm_unpackhi_ps(x, y); /* x2 y2 x3 y3 */
+    const __m128 z0x1 = _mm_shuffle_ps(z, xy01, _MM_SHUFFLE(2, 2, 0, 0));
+    const __m128 y1z1 = _mm_shuffle_ps(xy01, z, _MM_SHUFFLE(1, 1, 3, 3));
+    const __m128 z2x3 = _mm_shuffle_ps(z, xy23, _MM_SHUFFLE(2, 2, 2, 2));
+    const __m128 y3z3 = _mm_shuffle_ps(xy23, z, _MM_SHUFFLE(3, 3, 3, 3));
+    _mm_storeu_ps(out, _mm_shuffle_ps(xy01, z0x1, _MM_SHUFFLE(2, 0, 1, 0)));     /* x0 y0 z0 x1 */
+    _mm_storeu_ps(out + 4, _mm_shuffle_ps(y1z1, xy23, _MM_SHUFFLE(1, 0, 2, 0))); /* y1 z1 x2 y2 */
+    _mm_storeu_ps(out + 8, _mm_shuffle_ps(z2x3, y3z3, _MM_SHUFFLE(2, 0, 2, 0))); /* z2 x3 y3 z3 */
+}
+
+/* The cone's two floats are stored as a pair of lanes (block_row_rays). */
+typedef char render_cone_is_two_floats[sizeof(struct shade_cone) == 2 * sizeof(float) ? 1 : -1];
+
+/* The rays of the four pixels at points i .. i + 3 of cache row a (b the
+ * row below, both whole) straight into a packet's rays first .. first +
+ * 3 and their cones: primary_ray's rays and cones.  Returns 0, having
+ * written nothing of the packet's mask, when one would leave
+ * primary_ray's common path. */
+static inline int block_row_rays(const struct unproject_row *a, const struct unproject_row *b,
+                                 int i, struct trace_packet *pk, int first,
+                                 struct shade_cone cone[])
+{
+    struct ray_pair l, r;
+    if ((ray_pair(a, b, i, &l) & ray_pair(a, b, i + 2, &r)) != 3)
+        return 0;
+    store_points4(&pk->org[first][0], floats4(l.org[0], r.org[0]), floats4(l.org[1], r.org[1]),
+                  floats4(l.org[2], r.org[2]));
+    store_points4(&pk->dir[first][0], floats4(l.dir[0], r.dir[0]), floats4(l.dir[1], r.dir[1]),
+                  floats4(l.dir[2], r.dir[2]));
+    _mm_storeu_ps(&pk->tmax[first], floats4(l.len, r.len));
+    _mm_storeu_ps(&pk->tmin[first], _mm_setzero_ps());
+    const __m128 w = floats4(l.width, r.width), sp = floats4(l.spread, r.spread);
+    _mm_storeu_ps((float *)&cone[first], _mm_unpacklo_ps(w, sp));
+    _mm_storeu_ps((float *)&cone[first + 2], _mm_unpackhi_ps(w, sp));
     return 1;
 }
 #endif
@@ -718,31 +793,49 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
     /* The eye light's direct hits of a block are shaded together, their
      * texture levels of detail two at a time (shade_eye_hits). */
     const int eye = st->shading == RENDER_EYE_LIGHT;
+    struct trace_packet pk;
+    struct shade_cone cone[TRACE_PACKET];
+    struct trace_scene_hit hits[TRACE_PACKET];
+    /* A whole block's eye-light hits, every ray made and every one a hit
+     * (eye_block's common case): its rays' directions and hits are the
+     * same arrays for every block of the tile. */
+    const float *block_dirs[TRACE_PACKET];
+    const struct trace_scene_hit *block_hits[TRACE_PACKET];
+    for (int i = 0; i < TRACE_PACKET; i++) {
+        block_dirs[i] = pk.dir[i];
+        block_hits[i] = &hits[i];
+    }
     for (int by = y0; by < y0 + RENDER_TILE_SIZE && by < vp[3]; by += RENDER_BLOCK_H) {
         unproject_cache_row(pass, &cache, by);
-        for (int bx = x0; bx < x0 + RENDER_TILE_SIZE && bx < vp[2]; bx += RENDER_BLOCK_W) {
-            struct trace_packet pk;
-            struct shade_cone cone[TRACE_PACKET];
-            struct trace_scene_hit hits[TRACE_PACKET];
-            pk.active = 0;
-            for (int i = 0; i < TRACE_PACKET; i++) {
-                const int x = bx + i % RENDER_BLOCK_W, y = by + i / RENDER_BLOCK_W;
 #if RENDER_PAIRS
-                /* Two neighbours in a row at once when both are inside. */
-                if (i % 2 == 0 && x + 1 < x0 + RENDER_TILE_SIZE && x + 1 < vp[2] &&
-                    y < y0 + RENDER_TILE_SIZE && y < vp[3] &&
-                    primary_ray_pair(&cache, x, y, &pk.org[i], &pk.dir[i], &pk.tmax[i],
-                                     &cone[i])) {
-                    pk.tmin[i] = pk.tmin[i + 1] = 0.0f;
-                    pk.active |= 3u << i;
-                    i++;
-                    continue;
-                }
+        /* Both rows inside and every point of the rows and the next one
+         * unprojected: the blocks' rays in pairs of lanes. */
+        const int lanes = by + RENDER_BLOCK_H <= y0 + RENDER_TILE_SIZE &&
+                          by + RENDER_BLOCK_H <= vp[3] && cache.rows[0]->whole &&
+                          cache.rows[1]->whole && cache.rows[2]->whole;
 #endif
-                if (block_pixel_inside(vp, x0, y0, bx, by, i) &&
-                    primary_ray(&cache, x, y, pk.org[i], pk.dir[i], &pk.tmax[i], &cone[i])) {
-                    pk.tmin[i] = 0.0f;
-                    pk.active |= 1u << i;
+        for (int bx = x0; bx < x0 + RENDER_TILE_SIZE && bx < vp[2]; bx += RENDER_BLOCK_W) {
+            int whole = 0; /* every pixel of the block inside and its ray made */
+#if RENDER_PAIRS
+            if (lanes && bx + RENDER_BLOCK_W <= x0 + RENDER_TILE_SIZE &&
+                bx + RENDER_BLOCK_W <= vp[2] &&
+                block_row_rays(cache.rows[0], cache.rows[1], bx - x0, &pk, 0, cone) &&
+                block_row_rays(cache.rows[1], cache.rows[2], bx - x0, &pk, RENDER_BLOCK_W,
+                               cone)) {
+                pk.active = (1u << TRACE_PACKET) - 1u;
+                whole = 1;
+            }
+#endif
+            if (!whole) {
+                pk.active = 0;
+                for (int i = 0; i < TRACE_PACKET; i++) {
+                    const int x = bx + i % RENDER_BLOCK_W, y = by + i / RENDER_BLOCK_W;
+                    if (block_pixel_inside(vp, x0, y0, bx, by, i) &&
+                        primary_ray(&cache, x, y, pk.org[i], pk.dir[i], &pk.tmax[i],
+                                    &cone[i])) {
+                        pk.tmin[i] = 0.0f;
+                        pk.active |= 1u << i;
+                    }
                 }
             }
             const unsigned found = trace_scene_closest_packet(sc->scene, &pk, hits, sc->counters);
@@ -752,7 +845,18 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                  * block's others, or the clear colour, without the primed
                  * hits (only Whitted's shading reads them) or the other
                  * branches' tests. */
-                eye_block(pass, sc, x0, y0, bx, by, &pk, found, hits, cone);
+                if (whole && found == pk.active && !pass->depth) {
+                    /* eye_block's batch when all eight are hits. */
+                    float *px[TRACE_PACKET];
+                    float *row = &pass->fb[4 * ((size_t)(vp[1] + by) * pass->fb_width +
+                                                (size_t)(vp[0] + bx))];
+                    for (int i = 0; i < RENDER_BLOCK_W; i++) {
+                        px[i] = row + 4 * i;
+                        px[RENDER_BLOCK_W + i] = row + 4 * ((size_t)pass->fb_width + (size_t)i);
+                    }
+                    shade_eye_hits(sc, TRACE_PACKET, block_dirs, block_hits, cone, px);
+                } else
+                    eye_block(pass, sc, x0, y0, bx, by, &pk, found, hits, cone);
                 continue;
             }
             /* Whitted shading's shadow rays of the block's first hits,
