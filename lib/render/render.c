@@ -31,6 +31,11 @@
 #define RENDER_PAIRS 0
 #endif
 
+/* Packet blocks of the tile loop: 4 x 2 pixels, one packet of
+ * TRACE_PACKET camera rays. */
+#define RENDER_BLOCK_W 4
+#define RENDER_BLOCK_H 2
+
 /* Rays per work item of a query batch. */
 #define RENDER_QUERY_CHUNK 1024
 
@@ -291,9 +296,11 @@ static void unproject_row_fill(const struct render_pass *sh, const struct unproj
         zf[r] = _mm_set1_pd(m[8 + r] * 1.0);
         last[r] = _mm_set1_pd(m[12 + r]);
     }
-    /* x - x is 0 for a finite x, NaN for an infinity or a NaN, and a NaN
-     * stays in the sum: the sum is 0 when every coordinate is finite. */
-    __m128d finite = _mm_setzero_pd();
+    /* The sum of every coordinate: an infinity or a NaN makes it an
+     * infinity or a NaN for good, so a finite sum means every coordinate
+     * is finite (a sum that overflows only sends the row to the test
+     * point by point below). */
+    __m128d sum = _mm_setzero_pd();
     for (int i = 0; i < UNPROJECT_COLS; i += 2) {
         const __m128d s3 = _mm_add_pd(_mm_loadu_pd(&c->col[3][i]), axis[3]);
         const __m128d wn = _mm_add_pd(_mm_add_pd(s3, zn[3]), last[3]);
@@ -304,10 +311,11 @@ static void unproject_row_fill(const struct render_pass *sh, const struct unproj
             const __m128d f = _mm_div_pd(_mm_add_pd(_mm_add_pd(s, zf[r]), last[r]), wf);
             _mm_storeu_pd(&u->near_pt[r][i], n);
             _mm_storeu_pd(&u->far_pt[r][i], f);
-            finite = _mm_add_pd(finite, _mm_add_pd(_mm_sub_pd(n, n), _mm_sub_pd(f, f)));
+            sum = _mm_add_pd(_mm_add_pd(sum, n), f);
         }
     }
-    if (_mm_movemask_pd(_mm_cmpeq_pd(finite, _mm_setzero_pd())) == 3) {
+    /* x - x is 0 for a finite x, NaN for an infinity or a NaN. */
+    if (_mm_movemask_pd(_mm_cmpeq_pd(_mm_sub_pd(sum, sum), _mm_setzero_pd())) == 3) {
         memset(u->state, 1, sizeof(u->state));
         u->whole = 1;
         return;
@@ -441,31 +449,52 @@ static int primary_ray(const struct unproject_cache *cache, int px, int py, floa
 }
 
 #if RENDER_PAIRS
-/* primary_ray of the pixels at points i and i + 1 of cache row a (b the
- * row below) in the two lanes, lane 0 the left one: each lane
- * primary_ray's operations on its points in its order, so the same
- * doubles.  Returns the mask of the lanes whose length is positive and
- * finite (the others leave primary_ray's common path); every point it
- * reads must be unprojected. */
-struct ray_pair {
-    __m128d org[3], dir[3], len, width, spread;
-};
-
-static inline int ray_pair(const struct unproject_row *a, const struct unproject_row *b, int i,
-                           struct ray_pair *out)
+/* Two doubles as two floats (the low half), each rounded as a cast
+ * does. */
+static inline __m128 floats2(__m128d v)
 {
-    __m128d d[3];
+    return _mm_cvtpd_ps(v);
+}
+
+/* Two points given coordinate by coordinate (the low halves of x, y, z)
+ * into out[2][3]. */
+static inline void store_points2(float *out, __m128 x, __m128 y, __m128 z)
+{
+    const __m128 yz = _mm_unpacklo_ps(y, z);                          /* y0 z0 y1 z1 */
+    const __m128 xxyz = _mm_shuffle_ps(x, yz, _MM_SHUFFLE(1, 0, 1, 0)); /* x0 x1 y0 z0 */
+    _mm_storeu_ps(out, _mm_shuffle_ps(xxyz, xxyz, _MM_SHUFFLE(1, 3, 2, 0))); /* x0 y0 z0 x1 */
+    _mm_storeh_pi((__m64 *)(out + 4), yz);                                /* y1 z1 */
+}
+
+/* The cone's two floats are stored as a pair of lanes (ray_pair). */
+typedef char render_cone_is_two_floats[sizeof(struct shade_cone) == 2 * sizeof(float) ? 1 : -1];
+
+/* primary_ray of the pixels at points i and i + 1 of cache row a (b the
+ * row below) in the two lanes, lane 0 the left one, written straight
+ * into the packet's rays first and first + 1 and their cones: each lane
+ * primary_ray's operations on its points in its order, so the same
+ * floats.  Every point it reads must be unprojected.  Returns the mask of
+ * the lanes whose length is positive and finite; the others leave
+ * primary_ray's common path, and what was written for them is to be
+ * made again by primary_ray. */
+static inline int ray_pair(const struct unproject_row *a, const struct unproject_row *b, int i,
+                           struct trace_packet *pk, int first, struct shade_cone cone[])
+{
+    __m128d p[3], d[3];
     for (int k = 0; k < 3; k++) {
-        out->org[k] = _mm_loadu_pd(&a->near_pt[k][i]);
-        d[k] = _mm_sub_pd(_mm_loadu_pd(&a->far_pt[k][i]), out->org[k]);
+        p[k] = _mm_loadu_pd(&a->near_pt[k][i]);
+        d[k] = _mm_sub_pd(_mm_loadu_pd(&a->far_pt[k][i]), p[k]);
     }
+    store_points2(&pk->org[first][0], floats2(p[0]), floats2(p[1]), floats2(p[2]));
     const __m128d len = _mm_sqrt_pd(_mm_add_pd(
         _mm_add_pd(_mm_mul_pd(d[0], d[0]), _mm_mul_pd(d[1], d[1])), _mm_mul_pd(d[2], d[2])));
     /* len > 0 and finite: 0 < len < infinity, false for a NaN. */
     const int ok = _mm_movemask_pd(_mm_and_pd(_mm_cmpgt_pd(len, _mm_setzero_pd()),
                                               _mm_cmplt_pd(len, _mm_set1_pd(INFINITY))));
+    _mm_storel_pi((__m64 *)&pk->tmax[first], floats2(len));
     for (int k = 0; k < 3; k++)
         d[k] = _mm_div_pd(d[k], len);
+    store_points2(&pk->dir[first][0], floats2(d[0]), floats2(d[1]), floats2(d[2]));
     /* distances_to_line of the neighbours' near points (h = 0: right, 1:
      * below), then of their far points (h = 2, 3). */
     __m128d dist[4];
@@ -475,7 +504,7 @@ static inline int ray_pair(const struct unproject_row *a, const struct unproject
         __m128d v[3];
         for (int k = 0; k < 3; k++)
             v[k] = _mm_sub_pd(_mm_loadu_pd(h < 2 ? &q->near_pt[k][at] : &q->far_pt[k][at]),
-                              out->org[k]);
+                              p[k]);
         dist[h] = pair_distance_to_line(v, d);
     }
     /* max_left(x, y) = y > x ? y : x is maxpd with y first (it gives its
@@ -485,59 +514,26 @@ static inline int ray_pair(const struct unproject_row *a, const struct unproject
     const __m128d width = _mm_max_pd(dist[1], _mm_max_pd(dist[0], zero));
     const __m128d growth = _mm_max_pd(_mm_sub_pd(dist[3], dist[1]),
                                       _mm_max_pd(_mm_sub_pd(dist[2], dist[0]), zero));
-    for (int k = 0; k < 3; k++)
-        out->dir[k] = d[k];
-    out->len = len;
-    out->width = width;
-    out->spread = _mm_div_pd(growth, len);
+    const __m128d spread = _mm_div_pd(growth, len);
+    _mm_storeu_ps((float *)&cone[first], _mm_unpacklo_ps(floats2(width), floats2(spread)));
     return ok;
 }
 
-/* Two pairs of doubles as four floats, each rounded as a cast does. */
-static inline __m128 floats4(__m128d lo, __m128d hi)
+/* The rays of the 4 x 2 block whose first pixel is point i of the
+ * cache's first row (rows 0 to 2 whole) straight into the packet and the
+ * cones: primary_ray's rays and cones.  Returns 0 when one would leave
+ * primary_ray's common path (the packet then holds some rays of this
+ * block, some not, and its mask is not set). */
+static inline int block_rays(const struct unproject_cache *c, int i, struct trace_packet *pk,
+                             struct shade_cone cone[])
 {
-    return _mm_movelh_ps(_mm_cvtpd_ps(lo), _mm_cvtpd_ps(hi));
-}
-
-/* Four points given coordinate by coordinate into out[4][3]. */
-static inline void store_points4(float *out, __m128 x, __m128 y, __m128 z)
-{
-    const __m128 xy01 = _mm_unpacklo_ps(x, y); /* x0 y0 x1 y1 */
-    const __m128 xy23 = _mm_unpackhi_ps(x, y); /* x2 y2 x3 y3 */
-    const __m128 z0x1 = _mm_shuffle_ps(z, xy01, _MM_SHUFFLE(2, 2, 0, 0));
-    const __m128 y1z1 = _mm_shuffle_ps(xy01, z, _MM_SHUFFLE(1, 1, 3, 3));
-    const __m128 z2x3 = _mm_shuffle_ps(z, xy23, _MM_SHUFFLE(2, 2, 2, 2));
-    const __m128 y3z3 = _mm_shuffle_ps(xy23, z, _MM_SHUFFLE(3, 3, 3, 3));
-    _mm_storeu_ps(out, _mm_shuffle_ps(xy01, z0x1, _MM_SHUFFLE(2, 0, 1, 0)));     /* x0 y0 z0 x1 */
-    _mm_storeu_ps(out + 4, _mm_shuffle_ps(y1z1, xy23, _MM_SHUFFLE(1, 0, 2, 0))); /* y1 z1 x2 y2 */
-    _mm_storeu_ps(out + 8, _mm_shuffle_ps(z2x3, y3z3, _MM_SHUFFLE(2, 0, 2, 0))); /* z2 x3 y3 z3 */
-}
-
-/* The cone's two floats are stored as a pair of lanes (block_row_rays). */
-typedef char render_cone_is_two_floats[sizeof(struct shade_cone) == 2 * sizeof(float) ? 1 : -1];
-
-/* The rays of the four pixels at points i .. i + 3 of cache row a (b the
- * row below, both whole) straight into a packet's rays first .. first +
- * 3 and their cones: primary_ray's rays and cones.  Returns 0, having
- * written nothing of the packet's mask, when one would leave
- * primary_ray's common path. */
-static inline int block_row_rays(const struct unproject_row *a, const struct unproject_row *b,
-                                 int i, struct trace_packet *pk, int first,
-                                 struct shade_cone cone[])
-{
-    struct ray_pair l, r;
-    if ((ray_pair(a, b, i, &l) & ray_pair(a, b, i + 2, &r)) != 3)
-        return 0;
-    store_points4(&pk->org[first][0], floats4(l.org[0], r.org[0]), floats4(l.org[1], r.org[1]),
-                  floats4(l.org[2], r.org[2]));
-    store_points4(&pk->dir[first][0], floats4(l.dir[0], r.dir[0]), floats4(l.dir[1], r.dir[1]),
-                  floats4(l.dir[2], r.dir[2]));
-    _mm_storeu_ps(&pk->tmax[first], floats4(l.len, r.len));
-    _mm_storeu_ps(&pk->tmin[first], _mm_setzero_ps());
-    const __m128 w = floats4(l.width, r.width), sp = floats4(l.spread, r.spread);
-    _mm_storeu_ps((float *)&cone[first], _mm_unpacklo_ps(w, sp));
-    _mm_storeu_ps((float *)&cone[first + 2], _mm_unpackhi_ps(w, sp));
-    return 1;
+    int ok = 3;
+    for (int r = 0; r < RENDER_BLOCK_H; r++)
+        for (int h = 0; h < RENDER_BLOCK_W; h += 2)
+            ok &= ray_pair(c->rows[r], c->rows[r + 1], i + h, pk, r * RENDER_BLOCK_W + h, cone);
+    for (int k = 0; k < TRACE_PACKET; k += 4)
+        _mm_storeu_ps(&pk->tmin[k], _mm_setzero_ps());
+    return ok == 3;
 }
 #endif
 
@@ -690,10 +686,6 @@ uint32_t render_pass_tiles(const struct render_pass *pass)
     return (uint32_t)pass->tiles_x * (uint32_t)pass->tiles_y;
 }
 
-/* Packet blocks of the tile loop: 4 x 2 pixels, one packet of
- * TRACE_PACKET camera rays. */
-#define RENDER_BLOCK_W 4
-#define RENDER_BLOCK_H 2
 
 /* Pixel i of the 4 x 2 block at (bx, by) of the tile at (x0, y0): 1 when
  * it is inside the tile and the viewport. */
@@ -818,10 +810,7 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
             int whole = 0; /* every pixel of the block inside and its ray made */
 #if RENDER_PAIRS
             if (lanes && bx + RENDER_BLOCK_W <= x0 + RENDER_TILE_SIZE &&
-                bx + RENDER_BLOCK_W <= vp[2] &&
-                block_row_rays(cache.rows[0], cache.rows[1], bx - x0, &pk, 0, cone) &&
-                block_row_rays(cache.rows[1], cache.rows[2], bx - x0, &pk, RENDER_BLOCK_W,
-                               cone)) {
+                bx + RENDER_BLOCK_W <= vp[2] && block_rays(&cache, bx - x0, &pk, cone)) {
                 pk.active = (1u << TRACE_PACKET) - 1u;
                 whole = 1;
             }
