@@ -527,10 +527,11 @@ static inline int ray_pair(const struct unproject_row *a, const struct unproject
 static inline int block_rays(const struct unproject_cache *c, int i, struct trace_packet *pk,
                              struct shade_cone cone[])
 {
-    int ok = 3;
-    for (int r = 0; r < RENDER_BLOCK_H; r++)
-        for (int h = 0; h < RENDER_BLOCK_W; h += 2)
-            ok &= ray_pair(c->rows[r], c->rows[r + 1], i + h, pk, r * RENDER_BLOCK_W + h, cone);
+    /* Written out pair by pair: constant offsets into the packet. */
+    const int ok = ray_pair(c->rows[0], c->rows[1], i, pk, 0, cone) &
+                   ray_pair(c->rows[0], c->rows[1], i + 2, pk, 2, cone) &
+                   ray_pair(c->rows[1], c->rows[2], i, pk, 4, cone) &
+                   ray_pair(c->rows[1], c->rows[2], i + 2, pk, 6, cone);
     for (int k = 0; k < TRACE_PACKET; k += 4)
         _mm_storeu_ps(&pk->tmin[k], _mm_setzero_ps());
     return ok == 3;
