@@ -328,7 +328,8 @@ static void unproject_row_fill(const struct render_pass *sh, const struct unproj
     }
 #else
     for (int i = 0; i < UNPROJECT_COLS; i++) {
-        double near_pt[3], far_pt[3];
+        /* Zero where mat4_project writes nothing (w = 0): never read. */
+        double near_pt[3] = {0.0, 0.0, 0.0}, far_pt[3] = {0.0, 0.0, 0.0};
         const int ok = unproject(sh, c->x0 + i + 0.5, y + 0.5, near_pt, far_pt);
         for (int r = 0; r < 3; r++) {
             u->near_pt[r][i] = near_pt[r];
