@@ -479,6 +479,34 @@ static inline __m128 bilinear_at(const uint8_t *texels, const int32_t off[4], fl
     return _mm_add_ps(bottom, _mm_mul_ps(_mm_set1_ps(b), _mm_sub_ps(top, bottom)));
 }
 
+/* reduce_coord of s (lane 0) and t (lane 1) in the double lanes, each
+ * lane its operations in their order (pair_floor for floor_small: the
+ * same value, the same zero); 0 when a finite coordinate is 2^31 or more
+ * in magnitude, left to reduce_coord. */
+static int pair_reduce(float s, float t, enum scene_texture_wrap wrap_s,
+                       enum scene_texture_wrap wrap_t, __m128d *out)
+{
+    __m128d d = _mm_cvtps_pd(_mm_unpacklo_ps(_mm_set_ss(s), _mm_set_ss(t)));
+    /* isfinite(s) ? s : 0: d - d is 0 only for a finite d. */
+    d = _mm_and_pd(_mm_cmpeq_pd(_mm_sub_pd(d, d), _mm_setzero_pd()), d);
+    const __m128d magnitude = _mm_andnot_pd(_mm_set1_pd(-0.0), d);
+    if (_mm_movemask_pd(_mm_cmplt_pd(magnitude, _mm_set1_pd(0x1p31))) != 3)
+        return 0;
+    __m128i index;
+    const __m128d f = _mm_sub_pd(d, pair_floor(d, &index));
+    const __m128d below_one = _mm_cmplt_pd(f, _mm_set1_pd(1.0));
+    const __m128d repeat = _mm_or_pd(_mm_andnot_pd(below_one, _mm_set1_pd(0x1.fffffffffffffp-1)),
+                                     _mm_and_pd(below_one, f));
+    /* fmin(fmax(d, -1), 2): d is finite here, where maxpd and minpd are
+     * fmax and fmin. */
+    const __m128d clamp = _mm_min_pd(_mm_max_pd(d, _mm_set1_pd(-1.0)), _mm_set1_pd(2.0));
+    const __m128d is_repeat = _mm_castsi128_pd(
+        _mm_set_epi32(-(wrap_t == SCENE_WRAP_REPEAT), -(wrap_t == SCENE_WRAP_REPEAT),
+                      -(wrap_s == SCENE_WRAP_REPEAT), -(wrap_s == SCENE_WRAP_REPEAT)));
+    *out = _mm_or_pd(_mm_and_pd(is_repeat, repeat), _mm_andnot_pd(is_repeat, clamp));
+    return 1;
+}
+
 /* The bilinear filter of sample_level_reduced (LINEAR) of levels `level`
  * and level + 1 blended by f, scene_texture_sample_lod's *_MIPMAP_LINEAR
  * step: the two levels' u, v, their floors and weights in the two
@@ -487,16 +515,17 @@ static inline __m128 bilinear_at(const uint8_t *texels, const int32_t off[4], fl
  * four float lanes as the scalar loop does per channel: the same floats.
  * rs and rt are reduced (reduce_coord: within [-1, 2]), so with at most
  * SCENE_TEXTURE_MAX_SIZE texels a side u and v are far inside int32. */
-static void sample_trilinear(const struct scene_texture *tex, int level, double rs, double rt,
-                             float f, float rgba[4])
+static void sample_trilinear(const struct scene_texture *tex, int level, __m128d rst, float f,
+                             float rgba[4])
 {
     const struct scene_texture_level *lv[2] = {&tex->levels[level], &tex->levels[level + 1]};
     const __m128d half = _mm_set1_pd(0.5);
-    const __m128d uc = _mm_sub_pd(
-        _mm_mul_pd(_mm_set1_pd(rs), _mm_set_pd((double)lv[1]->width, (double)lv[0]->width)),
-        half);
+    const __m128d uc = _mm_sub_pd(_mm_mul_pd(_mm_unpacklo_pd(rst, rst),
+                                             _mm_set_pd((double)lv[1]->width, (double)lv[0]->width)),
+                                  half);
     const __m128d vc = _mm_sub_pd(
-        _mm_mul_pd(_mm_set1_pd(rt), _mm_set_pd((double)lv[1]->height, (double)lv[0]->height)),
+        _mm_mul_pd(_mm_unpackhi_pd(rst, rst),
+                   _mm_set_pd((double)lv[1]->height, (double)lv[0]->height)),
         half);
     __m128i ii, ji;
     const __m128d fi = pair_floor(uc, &ii), fj = pair_floor(vc, &ji);
@@ -594,13 +623,16 @@ void scene_texture_sample_lod(const struct scene_texture *tex, float lambda, flo
      * float below 2^31 is its floor, without the library call. */
     const float d1 = (float)(int)lambda, f = lambda - d1;
     float fine[4], coarse[4];
-    const double rs = reduce_coord(s, tex->wrap_s), rt = reduce_coord(t, tex->wrap_t);
 #if TEXTURE_LANES
     if (min == SCENE_FILTER_LINEAR_MIPMAP_LINEAR) {
-        sample_trilinear(tex, (int)d1, rs, rt, f, rgba);
+        __m128d rst;
+        if (!pair_reduce(s, t, tex->wrap_s, tex->wrap_t, &rst))
+            rst = _mm_set_pd(reduce_coord(t, tex->wrap_t), reduce_coord(s, tex->wrap_s));
+        sample_trilinear(tex, (int)d1, rst, f, rgba);
         return;
     }
 #endif
+    const double rs = reduce_coord(s, tex->wrap_s), rt = reduce_coord(t, tex->wrap_t);
     sample_level_reduced(tex, (int)d1, min, rs, rt, fine);
     sample_level_reduced(tex, (int)d1 + 1, min, rs, rt, coarse);
     /* As the bilinear weights: equal levels give exactly their value. */
