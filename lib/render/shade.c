@@ -26,6 +26,7 @@
 #include "render/gl_light.h"
 #include "render/gl_shade.h"
 #include "render/surface.h"
+#include "trace/kernels.h"
 
 /* The eye light's colour in the four float lanes, one colour channel a
  * lane: IEEE operations lane by lane, the same floats as one channel at
@@ -382,9 +383,9 @@ void shade_prime_shadows(const struct shade_context *sc, unsigned found,
     }
 }
 
-void shade_eye_hits(const struct shade_context *sc, int n, const float *const dir[],
-                    const struct trace_scene_hit *const hits[],
-                    const struct shade_cone cone[], float *const rgba[])
+static void eye_hits(const struct shade_context *sc, int n, const float *const dir[],
+                     const struct trace_scene_hit *const hits[], const struct shade_cone cone[],
+                     float *const rgba[])
 {
     struct surface_colour e[TRACE_PACKET];
     float width[TRACE_PACKET] = {0}; /* n of them set (zeros for the compiler's warning) */
@@ -410,4 +411,24 @@ void shade_eye_hits(const struct shade_context *sc, int n, const float *const di
             shade_hit_instance(sc, hits[i])->appearance.gl.light_model.ambient;
         eye_light(sc->state, &e[i], global_ambient, unit_dir[i], rgba[i]);
     }
+}
+
+void shade_eye_hits(const struct shade_context *sc, int n, const float *const dir[],
+                    const struct trace_scene_hit *const hits[],
+                    const struct shade_cone cone[], float *const rgba[])
+{
+#if !defined(SHADE_UNIT_AVX2)
+    /* The AVX2 copy of this function when the context traces with AVX2
+     * or AVX-512 (shade_eye_avx2.c); the test before the batch's frame
+     * is set up. */
+    const struct trace_kernels *table = sc->scene->kernels;
+    if (table && table->isa >= TRACE_ISA_AVX2) {
+        const shade_eye_hits_fn avx2 = shade_eye_hits_avx2_unit();
+        if (avx2) {
+            avx2(sc, n, dir, hits, cone, rgba);
+            return;
+        }
+    }
+#endif
+    eye_hits(sc, n, dir, hits, cone, rgba);
 }
