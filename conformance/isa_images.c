@@ -6,7 +6,8 @@
  * across thread counts.
  *
  * One scene (a sphere with smooth normals, a grid-snapped triangle soup
- * with shared planes and slivers, a floor, under four instance matrices)
+ * with shared planes and slivers, a floor with a mipmapped texture, under
+ * four instance matrices)
  * is rendered with eye light and Whitted shading (RGBA float) and
  * queried with 20,000 rays (rtTraceRays and rtOccludedRays) in a context
  * per configuration: "threads=1 isa=scalar" is the reference, every other
@@ -96,16 +97,41 @@ static void define_scene(void)
     }
     rtEnd();
     rtEndObject();
-    /* 3: a floor. */
+    /* 3: a floor with a mipmapped noise texture, trilinear, repeated
+     * along s and clamped to its edges along t: the eye light's levels of
+     * detail and lookups, which the AVX2 shading copy computes in other
+     * lanes (render/shade_eye_avx2.c), over the floor's whole range of
+     * angles and distances. */
+    static unsigned char noise[64 * 64 * 3];
+    uint32_t bits = 2463534242u;
+    for (int i = 0; i < 64 * 64 * 3; i++) {
+        bits ^= bits << 13;
+        bits ^= bits >> 17;
+        bits ^= bits << 5;
+        noise[i] = (unsigned char)(bits >> 24);
+    }
+    rtBindTexture(RT_TEXTURE_2D, 1);
+    rtTexImage2D(RT_TEXTURE_2D, 0, RT_RGB, 64, 64, 0, RT_RGB, RT_UNSIGNED_BYTE, noise);
+    rtTexParameteri(RT_TEXTURE_2D, RT_TEXTURE_MIN_FILTER, RT_LINEAR_MIPMAP_LINEAR);
+    rtTexParameteri(RT_TEXTURE_2D, RT_TEXTURE_MAG_FILTER, RT_LINEAR);
+    rtTexParameteri(RT_TEXTURE_2D, RT_TEXTURE_WRAP_T, RT_CLAMP_TO_EDGE);
     rtNewObject(3);
+    rtEnable(RT_TEXTURE_2D);
     rtBegin(RT_TRIANGLES);
+    rtTexCoord2f(0, -2);
     rtVertex3f(-20, -2, -20);
+    rtTexCoord2f(40, 6);
     rtVertex3f(20, -2, 20);
+    rtTexCoord2f(40, -2);
     rtVertex3f(20, -2, -20);
+    rtTexCoord2f(0, -2);
     rtVertex3f(-20, -2, -20);
+    rtTexCoord2f(0, 6);
     rtVertex3f(-20, -2, 20);
+    rtTexCoord2f(40, 6);
     rtVertex3f(20, -2, 20);
     rtEnd();
+    rtDisable(RT_TEXTURE_2D);
     rtEndObject();
 
     rtMatrixMode(RT_PROJECTION);

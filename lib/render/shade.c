@@ -26,6 +26,17 @@
 #include "render/gl_light.h"
 #include "render/gl_shade.h"
 #include "render/surface.h"
+#include "trace/kernels.h"
+
+/* The eye light's colour in the four float lanes, one colour channel a
+ * lane: IEEE operations lane by lane, the same floats as one channel at
+ * a time (the scalar loop under RT_NO_SIMD or without SSE2). */
+#if defined(__SSE2__) && !defined(RT_NO_SIMD)
+#include <emmintrin.h>
+#define SHADE_LANES 1
+#else
+#define SHADE_LANES 0
+#endif
 
 /* Safety factor on the error bound of the hit point (see surface_fetch in surface.c). */
 #define OFFSET_ERROR_SCALE 2.0
@@ -179,14 +190,29 @@ static inline void eye_light(const struct render_state *st, const struct surface
                              const float global_ambient[4], const float unit_dir[3],
                              float rgba[4])
 {
-    float c[3];
     float cosine = fabsf(vec3_dot(e->n, unit_dir));
+#if SHADE_LANES
+    /* Channel k in lane k: (emission + ambient_g ambient) + diffuse cosine
+     * as the scalar loop evaluates it; lane 3 (whatever the alphas give)
+     * is replaced by the opaque 1. */
+    __m128 c = _mm_loadu_ps(e->diffuse);
+    if (e->lighting || !st->lighting_used)
+        c = _mm_add_ps(_mm_add_ps(_mm_loadu_ps(e->emission),
+                                  _mm_mul_ps(_mm_loadu_ps(global_ambient),
+                                             _mm_loadu_ps(e->ambient))),
+                       _mm_mul_ps(c, _mm_set1_ps(cosine)));
+    /* (c2, 1, c3, 1), then (c0, c1, c2, 1). */
+    const __m128 high = _mm_unpackhi_ps(c, _mm_set1_ps(1.0f));
+    _mm_storeu_ps(rgba, _mm_shuffle_ps(c, high, _MM_SHUFFLE(1, 0, 1, 0)));
+#else
+    float c[3];
     for (int k = 0; k < 3; k++)
         c[k] = !e->lighting && st->lighting_used
                    ? e->diffuse[k]
                    : e->emission[k] + global_ambient[k] * e->ambient[k] + e->diffuse[k] * cosine;
     memcpy(rgba, c, sizeof(c));
     rgba[3] = 1.0f;
+#endif
 }
 
 void shade_ray(const struct shade_context *sc, const float org[3], const float dir[3],
@@ -357,9 +383,9 @@ void shade_prime_shadows(const struct shade_context *sc, unsigned found,
     }
 }
 
-void shade_eye_hits(const struct shade_context *sc, int n, const float *const dir[],
-                    const struct trace_scene_hit *const hits[],
-                    const struct shade_cone cone[], float *const rgba[])
+static void eye_hits(const struct shade_context *sc, int n, const float *const dir[],
+                     const struct trace_scene_hit *const hits[], const struct shade_cone cone[],
+                     float *const rgba[])
 {
     struct surface_colour e[TRACE_PACKET];
     float width[TRACE_PACKET] = {0}; /* n of them set (zeros for the compiler's warning) */
@@ -385,4 +411,24 @@ void shade_eye_hits(const struct shade_context *sc, int n, const float *const di
             shade_hit_instance(sc, hits[i])->appearance.gl.light_model.ambient;
         eye_light(sc->state, &e[i], global_ambient, unit_dir[i], rgba[i]);
     }
+}
+
+void shade_eye_hits(const struct shade_context *sc, int n, const float *const dir[],
+                    const struct trace_scene_hit *const hits[],
+                    const struct shade_cone cone[], float *const rgba[])
+{
+#if !defined(SHADE_UNIT_AVX2)
+    /* The AVX2 copy of this function when the context traces with AVX2
+     * or AVX-512 (shade_eye_avx2.c); the test before the batch's frame
+     * is set up. */
+    const struct trace_kernels *table = sc->scene->kernels;
+    if (table && table->isa >= TRACE_ISA_AVX2) {
+        const shade_eye_hits_fn avx2 = shade_eye_hits_avx2_unit();
+        if (avx2) {
+            avx2(sc, n, dir, hits, cone, rgba);
+            return;
+        }
+    }
+#endif
+    eye_hits(sc, n, dir, hits, cone, rgba);
 }

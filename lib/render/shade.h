@@ -108,6 +108,15 @@ void shade_eye_hits(const struct shade_context *sc, int n, const float *const di
                     const struct trace_scene_hit *const hits[],
                     const struct shade_cone cone[], float *const rgba[]);
 
+/* shade_eye_hits compiled for AVX2 (shade_eye_avx2.c: the same source,
+ * so the same colours bit for bit), which shade_eye_hits calls when the
+ * context's traversal table is AVX2 or AVX-512; NULL where that unit is
+ * absent (no AVX2 compiler target, RT_NO_SIMD). */
+typedef void (*shade_eye_hits_fn)(const struct shade_context *sc, int n, const float *const dir[],
+                                  const struct trace_scene_hit *const hits[],
+                                  const struct shade_cone cone[], float *const rgba[]);
+shade_eye_hits_fn shade_eye_hits_avx2_unit(void);
+
 /*
  * Whitted shading's shadow rays of a 4 x 2 block's camera rays, one
  * packet per light (Wald, Slusallek, Benthin and Wagner 2001 sec. 4:

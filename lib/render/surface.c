@@ -18,6 +18,10 @@
 #if defined(__SSE2__) && !defined(RT_NO_SIMD)
 #include <emmintrin.h>
 #define SURFACE_PAIRS 1
+#if defined(__AVX__)
+#include <immintrin.h>
+#define SURFACE_QUADS 1 /* the AVX2 copy (render/shade_eye_avx2.c) */
+#endif
 #else
 #define SURFACE_PAIRS 0
 #endif
@@ -513,11 +517,130 @@ SURFACE_INLINE void lod_ray_pair(struct surface_texture *a, struct surface_textu
 }
 #endif
 
-/* The level of detail of the n textures t[i] with lod set, two at a
- * time. */
+#if defined(SURFACE_QUADS)
+static __m256d quad_dot(const __m256d a[3], const __m256d b[3])
+{
+    return _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(a[0], b[0]), _mm256_mul_pd(a[1], b[1])),
+                         _mm256_mul_pd(a[2], b[2]));
+}
+
+static void quad_cross(const __m256d a[3], const __m256d b[3], __m256d out[3])
+{
+    out[0] = _mm256_sub_pd(_mm256_mul_pd(a[1], b[2]), _mm256_mul_pd(a[2], b[1]));
+    out[1] = _mm256_sub_pd(_mm256_mul_pd(a[2], b[0]), _mm256_mul_pd(a[0], b[2]));
+    out[2] = _mm256_sub_pd(_mm256_mul_pd(a[0], b[1]), _mm256_mul_pd(a[1], b[0]));
+}
+
+/* pair_texel_vector in four double lanes. */
+SURFACE_INLINE void quad_texel_vector(const __m256d e[3], const __m256d w1[3],
+                                      const __m256d w2[3], const __m256d nn[3], __m256d nn2,
+                                      const __m256d a1[2], const __m256d a2[2], __m256d out[2])
+{
+    __m256d ew2[3], w1e[3];
+    quad_cross(e, w2, ew2);
+    quad_cross(w1, e, w1e);
+    const __m256d alpha = _mm256_div_pd(quad_dot(ew2, nn), nn2);
+    const __m256d beta = _mm256_div_pd(quad_dot(w1e, nn), nn2);
+    out[0] = _mm256_add_pd(_mm256_mul_pd(alpha, a1[0]), _mm256_mul_pd(beta, a2[0]));
+    out[1] = _mm256_add_pd(_mm256_mul_pd(alpha, a1[1]), _mm256_mul_pd(beta, a2[1]));
+}
+
+/* lod_ray_pair of four textures' hits in the four double lanes of the
+ * AVX copy: lane i hit t[i], each lane lod_ray's operations in its order
+ * (the comparisons ordered, as cmpge and cmpgt in the pair), so the same
+ * doubles; a lane off lod_ray's common path is computed by lod_ray. */
+SURFACE_INLINE void lod_ray_quad(struct surface_texture *const t[4])
+{
+    const struct surface_lod *l[4] = {&t[0]->tri, &t[1]->tri, &t[2]->tri, &t[3]->tri};
+#define QUAD(f) _mm256_set_pd(f(3), f(2), f(1), f(0))
+    __m256d d[3], g[3], n[3], w1[3], w2[3], nn[3], a1[2], a2[2];
+    for (int k = 0; k < 3; k++) {
+#define DIR(i) (double)t[i]->dir[k]
+#define NG(i) (double)t[i]->ng[k]
+#define N(i) l[i]->n[k]
+#define W1(i) l[i]->w1[k]
+#define W2(i) l[i]->w2[k]
+#define NN(i) l[i]->nn[k]
+        d[k] = QUAD(DIR);
+        g[k] = QUAD(NG);
+        n[k] = QUAD(N);
+        w1[k] = QUAD(W1);
+        w2[k] = QUAD(W2);
+        nn[k] = QUAD(NN);
+    }
+    for (int k = 0; k < 2; k++) {
+#define A1(i) l[i]->a1[k]
+#define A2(i) l[i]->a2[k]
+        a1[k] = QUAD(A1);
+        a2[k] = QUAD(A2);
+    }
+#define NN2(i) l[i]->nn2
+    const __m256d nn2 = QUAD(NN2);
+#undef QUAD
+#undef DIR
+#undef NG
+#undef N
+#undef W1
+#undef W2
+#undef NN
+#undef A1
+#undef A2
+#undef NN2
+    const __m256d dir_len = _mm256_sqrt_pd(quad_dot(d, d));
+    const __m256d sign = _mm256_set1_pd(-0.0);
+    __m256d cosine = _mm256_div_pd(_mm256_andnot_pd(sign, quad_dot(g, d)), dir_len);
+    const __m256d min_cos = _mm256_set1_pd(LOD_MIN_COSINE);
+    const __m256d keep = _mm256_cmp_pd(cosine, min_cos, _CMP_GE_OQ);
+    cosine = _mm256_blendv_pd(min_cos, cosine, keep);
+    const __m256d dn = _mm256_div_pd(quad_dot(d, n), dir_len);
+    __m256d along[3];
+    for (int k = 0; k < 3; k++)
+        along[k] = _mm256_sub_pd(_mm256_div_pd(d[k], dir_len), _mm256_mul_pd(dn, n[k]));
+    const __m256d along_len = _mm256_sqrt_pd(quad_dot(along, along));
+    for (int k = 0; k < 3; k++)
+        along[k] = _mm256_div_pd(along[k], along_len);
+    __m256d across[3];
+    quad_cross(n, along, across);
+    __m256d ja[2], jb[2];
+    quad_texel_vector(along, w1, w2, nn, nn2, a1, a2, ja);
+    quad_texel_vector(across, w1, w2, nn, nn2, a1, a2, jb);
+    const __m256d sa = _mm256_add_pd(_mm256_mul_pd(ja[0], ja[0]), _mm256_mul_pd(ja[1], ja[1]));
+    const __m256d sb = _mm256_add_pd(_mm256_mul_pd(jb[0], jb[0]), _mm256_mul_pd(jb[1], jb[1]));
+    const __m256d sbc = _mm256_mul_pd(sb, _mm256_mul_pd(cosine, cosine));
+    double v_len[4], v_cos[4], v_along[4], v_ja[2][4], v_jb[2][4], v_sa[4], v_sb[4], v_sbc[4];
+    _mm256_storeu_pd(v_len, dir_len);
+    _mm256_storeu_pd(v_cos, cosine);
+    _mm256_storeu_pd(v_along, along_len);
+    _mm256_storeu_pd(v_ja[0], ja[0]);
+    _mm256_storeu_pd(v_ja[1], ja[1]);
+    _mm256_storeu_pd(v_jb[0], jb[0]);
+    _mm256_storeu_pd(v_jb[1], jb[1]);
+    _mm256_storeu_pd(v_sa, sa);
+    _mm256_storeu_pd(v_sb, sb);
+    _mm256_storeu_pd(v_sbc, sbc);
+    for (int i = 0; i < 4; i++) {
+        const struct surface_lod *li = l[i];
+        if (!(li->p_a > 0.0) || !(li->t_a > 0.0) || !(v_len[i] > 0.0) || !isfinite(li->nn2) ||
+            !(v_along[i] > 1e-9)) {
+            texture_lambda(t[i]);
+            continue;
+        }
+        const double ja_i[2] = {v_ja[0][i], v_ja[1][i]}, jb_i[2] = {v_jb[0][i], v_jb[1][i]};
+        t[i]->lambda = lod_axes(ja_i, jb_i, v_sa[i], v_sb[i], v_sbc[i], v_cos[i], t[i]->width,
+                                lod_top(t[i]->tex->level_count));
+    }
+}
+#endif
+
+/* The level of detail of the n textures t[i] with lod set, four (in the
+ * AVX copy) or two at a time. */
 static void texture_lods(struct surface_texture *const *t, int n)
 {
     int i = 0;
+#if defined(SURFACE_QUADS)
+    for (; i + 3 < n; i += 4)
+        lod_ray_quad(&t[i]);
+#endif
 #if SURFACE_PAIRS
     for (; i + 1 < n; i += 2)
         lod_ray_pair(t[i], t[i + 1]);

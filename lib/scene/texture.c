@@ -439,6 +439,74 @@ static __m128d pair_floor(__m128d x, __m128i *index)
     return _mm_sub_pd(t, _mm_and_pd(above, _mm_set1_pd(1.0)));
 }
 
+/* wrap_index of the four int32 lanes of i, lane k wrapped into [0, n_k)
+ * by REPEAT where `repeat` is all ones, else by CLAMP_TO_EDGE.  For
+ * REPEAT, wrap_index's first three cases (i in [-n, 2n)): the lookups'
+ * indices are there, since a reduced coordinate lies in [0, 1) and its
+ * index i in [-1, n - 1] (i + 1 in [0, n]). */
+static __m128i wrap_lanes(__m128i i, __m128i n, __m128i repeat)
+{
+    const __m128i last = _mm_sub_epi32(n, _mm_set1_epi32(1));
+    const __m128i below = _mm_cmplt_epi32(i, _mm_setzero_si128());
+    const __m128i above = _mm_cmpgt_epi32(i, last);
+    const __m128i wrapped =
+        _mm_sub_epi32(_mm_add_epi32(i, _mm_and_si128(below, n)), _mm_and_si128(above, n));
+    const __m128i clamped = _mm_or_si128(_mm_andnot_si128(_mm_or_si128(below, above), i),
+                                         _mm_and_si128(above, last));
+    return _mm_or_si128(_mm_and_si128(repeat, wrapped), _mm_andnot_si128(repeat, clamped));
+}
+
+/* The channels of the texel at byte offset `off` of `texels`, as
+ * texel_lanes. */
+static __m128 texel_at(const uint8_t *texels, int32_t off)
+{
+    int32_t bits;
+    memcpy(&bits, texels + off, sizeof(bits));
+    const __m128i zero = _mm_setzero_si128();
+    const __m128i b = _mm_unpacklo_epi16(_mm_unpacklo_epi8(_mm_cvtsi32_si128(bits), zero), zero);
+    return _mm_div_ps(_mm_cvtepi32_ps(b), _mm_set1_ps(255.0f));
+}
+
+/* bilinear_lanes from the four texels' byte offsets (c00, c10, c01,
+ * c11), already wrapped: the same blend. */
+static inline __m128 bilinear_at(const uint8_t *texels, const int32_t off[4], float a, float b)
+{
+    const __m128 c00 = texel_at(texels, off[0]), c10 = texel_at(texels, off[1]);
+    const __m128 c01 = texel_at(texels, off[2]), c11 = texel_at(texels, off[3]);
+    const __m128 va = _mm_set1_ps(a);
+    const __m128 bottom = _mm_add_ps(c00, _mm_mul_ps(va, _mm_sub_ps(c10, c00)));
+    const __m128 top = _mm_add_ps(c01, _mm_mul_ps(va, _mm_sub_ps(c11, c01)));
+    return _mm_add_ps(bottom, _mm_mul_ps(_mm_set1_ps(b), _mm_sub_ps(top, bottom)));
+}
+
+/* reduce_coord of s (lane 0) and t (lane 1) in the double lanes, each
+ * lane its operations in their order (pair_floor for floor_small: the
+ * same value, the same zero); 0 when a finite coordinate is 2^31 or more
+ * in magnitude, left to reduce_coord. */
+static int pair_reduce(float s, float t, enum scene_texture_wrap wrap_s,
+                       enum scene_texture_wrap wrap_t, __m128d *out)
+{
+    __m128d d = _mm_cvtps_pd(_mm_unpacklo_ps(_mm_set_ss(s), _mm_set_ss(t)));
+    /* isfinite(s) ? s : 0: d - d is 0 only for a finite d. */
+    d = _mm_and_pd(_mm_cmpeq_pd(_mm_sub_pd(d, d), _mm_setzero_pd()), d);
+    const __m128d magnitude = _mm_andnot_pd(_mm_set1_pd(-0.0), d);
+    if (_mm_movemask_pd(_mm_cmplt_pd(magnitude, _mm_set1_pd(0x1p31))) != 3)
+        return 0;
+    __m128i index;
+    const __m128d f = _mm_sub_pd(d, pair_floor(d, &index));
+    const __m128d below_one = _mm_cmplt_pd(f, _mm_set1_pd(1.0));
+    const __m128d repeat = _mm_or_pd(_mm_andnot_pd(below_one, _mm_set1_pd(0x1.fffffffffffffp-1)),
+                                     _mm_and_pd(below_one, f));
+    /* fmin(fmax(d, -1), 2): d is finite here, where maxpd and minpd are
+     * fmax and fmin. */
+    const __m128d clamp = _mm_min_pd(_mm_max_pd(d, _mm_set1_pd(-1.0)), _mm_set1_pd(2.0));
+    const __m128d is_repeat = _mm_castsi128_pd(
+        _mm_set_epi32(-(wrap_t == SCENE_WRAP_REPEAT), -(wrap_t == SCENE_WRAP_REPEAT),
+                      -(wrap_s == SCENE_WRAP_REPEAT), -(wrap_s == SCENE_WRAP_REPEAT)));
+    *out = _mm_or_pd(_mm_and_pd(is_repeat, repeat), _mm_andnot_pd(is_repeat, clamp));
+    return 1;
+}
+
 /* The bilinear filter of sample_level_reduced (LINEAR) of levels `level`
  * and level + 1 blended by f, scene_texture_sample_lod's *_MIPMAP_LINEAR
  * step: the two levels' u, v, their floors and weights in the two
@@ -447,28 +515,52 @@ static __m128d pair_floor(__m128d x, __m128i *index)
  * four float lanes as the scalar loop does per channel: the same floats.
  * rs and rt are reduced (reduce_coord: within [-1, 2]), so with at most
  * SCENE_TEXTURE_MAX_SIZE texels a side u and v are far inside int32. */
-static void sample_trilinear(const struct scene_texture *tex, int level, double rs, double rt,
-                             float f, float rgba[4])
+static void sample_trilinear(const struct scene_texture *tex, int level, __m128d rst, float f,
+                             float rgba[4])
 {
     const struct scene_texture_level *lv[2] = {&tex->levels[level], &tex->levels[level + 1]};
     const __m128d half = _mm_set1_pd(0.5);
-    const __m128d uc = _mm_sub_pd(
-        _mm_mul_pd(_mm_set1_pd(rs), _mm_set_pd((double)lv[1]->width, (double)lv[0]->width)),
-        half);
+    const __m128d uc = _mm_sub_pd(_mm_mul_pd(_mm_unpacklo_pd(rst, rst),
+                                             _mm_set_pd((double)lv[1]->width, (double)lv[0]->width)),
+                                  half);
     const __m128d vc = _mm_sub_pd(
-        _mm_mul_pd(_mm_set1_pd(rt), _mm_set_pd((double)lv[1]->height, (double)lv[0]->height)),
+        _mm_mul_pd(_mm_unpackhi_pd(rst, rst),
+                   _mm_set_pd((double)lv[1]->height, (double)lv[0]->height)),
         half);
     __m128i ii, ji;
     const __m128d fi = pair_floor(uc, &ii), fj = pair_floor(vc, &ji);
     float a[4], b[4];
     _mm_storeu_ps(a, _mm_cvtpd_ps(_mm_sub_pd(uc, fi)));
     _mm_storeu_ps(b, _mm_cvtpd_ps(_mm_sub_pd(vc, fj)));
-    int32_t i[4], j[4];
-    _mm_storeu_si128((__m128i *)i, ii);
-    _mm_storeu_si128((__m128i *)j, ji);
+    /* The eight texels' byte offsets in int32 lanes: lanes (i fine,
+     * i coarse, j fine, j coarse) and the sizes (w, w', h, h'). */
+    const __m128i n = _mm_set_epi32(lv[1]->height, lv[0]->height, lv[1]->width, lv[0]->width);
+    const __m128i repeat =
+        _mm_set_epi32(-(tex->wrap_t == SCENE_WRAP_REPEAT), -(tex->wrap_t == SCENE_WRAP_REPEAT),
+                      -(tex->wrap_s == SCENE_WRAP_REPEAT), -(tex->wrap_s == SCENE_WRAP_REPEAT));
+    const __m128i lo = _mm_unpacklo_epi64(ii, ji);
+    const __m128i w0 = wrap_lanes(lo, n, repeat);
+    const __m128i w1 = wrap_lanes(_mm_add_epi32(lo, _mm_set1_epi32(1)), n, repeat);
+    /* The rows j0 w, j1 w of both levels, (fine j0, coarse j0, fine j1,
+     * coarse j1): every factor is in [0, 2^14], so the 16-bit products
+     * madd forms are the exact 32-bit ones (the high halves are 0). */
+    const __m128i rows = _mm_madd_epi16(_mm_unpackhi_epi64(w0, w1),
+                                        _mm_shuffle_epi32(n, _MM_SHUFFLE(1, 0, 1, 0)));
+    /* (i0, i1) of the fine level twice plus (row j0, row j0, row j1, row
+     * j1) of it; the same for the coarse level: c00, c10, c01, c11. */
+    const __m128i cols = _mm_unpacklo_epi32(w0, w1); /* i0 f, i1 f, i0 c, i1 c */
+    int32_t off[2][4];
+    _mm_storeu_si128((__m128i *)off[0],
+                     _mm_slli_epi32(_mm_add_epi32(_mm_shuffle_epi32(cols, _MM_SHUFFLE(1, 0, 1, 0)),
+                                                  _mm_shuffle_epi32(rows, _MM_SHUFFLE(2, 2, 0, 0))),
+                                    2));
+    _mm_storeu_si128((__m128i *)off[1],
+                     _mm_slli_epi32(_mm_add_epi32(_mm_shuffle_epi32(cols, _MM_SHUFFLE(3, 2, 3, 2)),
+                                                  _mm_shuffle_epi32(rows, _MM_SHUFFLE(3, 3, 1, 1))),
+                                    2));
     __m128 c[2];
     for (int l = 0; l < 2; l++)
-        c[l] = bilinear_lanes(tex, lv[l], i[l], j[l], a[l], b[l]);
+        c[l] = bilinear_at(lv[l]->texels, off[l], a[l], b[l]);
     _mm_storeu_ps(rgba, _mm_add_ps(c[0], _mm_mul_ps(_mm_set1_ps(f), _mm_sub_ps(c[1], c[0]))));
 }
 #endif
@@ -531,13 +623,16 @@ void scene_texture_sample_lod(const struct scene_texture *tex, float lambda, flo
      * float below 2^31 is its floor, without the library call. */
     const float d1 = (float)(int)lambda, f = lambda - d1;
     float fine[4], coarse[4];
-    const double rs = reduce_coord(s, tex->wrap_s), rt = reduce_coord(t, tex->wrap_t);
 #if TEXTURE_LANES
     if (min == SCENE_FILTER_LINEAR_MIPMAP_LINEAR) {
-        sample_trilinear(tex, (int)d1, rs, rt, f, rgba);
+        __m128d rst;
+        if (!pair_reduce(s, t, tex->wrap_s, tex->wrap_t, &rst))
+            rst = _mm_set_pd(reduce_coord(t, tex->wrap_t), reduce_coord(s, tex->wrap_s));
+        sample_trilinear(tex, (int)d1, rst, f, rgba);
         return;
     }
 #endif
+    const double rs = reduce_coord(s, tex->wrap_s), rt = reduce_coord(t, tex->wrap_t);
     sample_level_reduced(tex, (int)d1, min, rs, rt, fine);
     sample_level_reduced(tex, (int)d1 + 1, min, rs, rt, coarse);
     /* As the bilinear weights: equal levels give exactly their value. */
