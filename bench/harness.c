@@ -134,7 +134,7 @@ void bench_kernel_closest(void *ctx, const RTray *rays, uint32_t begin, uint32_t
         const RTray *r = &rays[i];
         struct trace_ray ray;
         struct trace_hit h;
-        trace_ray_init(&ray, r->org, r->dir, r->tmin);
+        trace_ray_init_single(&ray, r->org, r->dir, r->tmin);
         if (wide ? k->closest4(&acc->wide, &acc->bvh, acc->tri, &ray, r->tmax, &h, NULL)
                  : k->closest(&acc->bvh, acc->tri, &ray, r->tmax, &h, NULL)) {
             hits[i].t = h.t;
@@ -155,7 +155,7 @@ void bench_kernel_any(void *ctx, const RTray *rays, uint32_t begin, uint32_t end
     for (uint32_t i = begin; i < end; i++) {
         const RTray *r = &rays[i];
         struct trace_ray ray;
-        trace_ray_init(&ray, r->org, r->dir, r->tmin);
+        trace_ray_init_single(&ray, r->org, r->dir, r->tmin);
         int occluded = wide ? k->any4(&acc->wide, &acc->bvh, acc->tri, &ray, r->tmax, NULL)
                             : k->any(&acc->bvh, acc->tri, &ray, r->tmax, NULL);
         hits[i].t = occluded ? 0.0f : INFINITY;

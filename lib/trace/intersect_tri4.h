@@ -461,9 +461,16 @@ static inline unsigned tri4_candidates(const struct tri4_ray *r, const struct tr
  *   40.3 u S^2 D of the finish's doubles (below 2^-18.4 S^3, 2^-18.6 S^2 D);
  *   the bounds used are 2^-16 S^3 and 2^-16 S^2 D, which also cover the
  *   few roundings of the bounds and of the test itself;
- * - so |num| + 2^-16 S^3 <= tmin / 4 (|den| - 2^-16 S^2 D) makes the
- *   double den non-zero and |num / den| <= tmin / 4 (1 + 4u): its double
- *   and then float rounding stay below tmin, and it is not NaN.
+ * - so |den| - 2^-16 S^2 D > 0 makes the double den non-zero and of
+ *   the float den's sign, and then s num + 2^-16 S^3 <= tmin / 4 (|den| -
+ *   2^-16 S^2 D), with s that sign, makes num / den <= tmin / 4 (1 + 4u)
+ *   (at most 0 when the left side is): its double and then float
+ *   rounding stay below tmin, and it is not NaN.  Signed, not |num / den|:
+ *   a triangle the ray's line crosses well behind its origin (a
+ *   neighbour of the one a shadow ray starts on, across a convex edge)
+ *   is refused here too, not only the one the ray starts on (t about 0);
+ *   a t below 0 of any size is below tmin, and |t| stays far below
+ *   float's range (|num| <= 24 S^3, |den| > 2^-17 S^2 D).
  * S, D and tmin are held to ranges (2^-20 .. 2^20, 2^-40 .. 2^40 for
  * tmin) where none of these products overflows and an underflow's
  * absolute error (2^-149 per operation) is far below the bounds; NaN
@@ -514,11 +521,14 @@ static inline unsigned tri4_before_tmin(const struct trace_ray *ray, const struc
     __m128 ok = _mm_and_ps(_mm_cmpge_ps(sc, _mm_set1_ps(0x1p-20f)),
                            _mm_cmple_ps(sc, _mm_set1_ps(0x1p20f)));
     ok = _mm_and_ps(ok, _mm_cmpge_ps(n2, _mm_mul_ps(_mm_mul_ps(_mm_set1_ps(0x1p-20f), s2), s2)));
-    const __m128 lhs = _mm_add_ps(_mm_andnot_ps(sign, num), _mm_mul_ps(err2, sc));
+    /* num with den's sign flipped in (exact): num / den = snum / |den|. */
+    const __m128 snum = _mm_xor_ps(num, _mm_and_ps(sign, den));
+    const __m128 lhs = _mm_add_ps(snum, _mm_mul_ps(err2, sc));
     const __m128 rhs =
         _mm_mul_ps(_mm_set1_ps(0.25f * tmin),
                    _mm_sub_ps(_mm_andnot_ps(sign, den), _mm_mul_ps(err2, _mm_set1_ps(d))));
     ok = _mm_and_ps(ok, _mm_cmple_ps(lhs, rhs));
+    ok = _mm_and_ps(ok, _mm_cmpgt_ps(rhs, _mm_setzero_ps()));
     return (unsigned)_mm_movemask_ps(ok) & lanes;
 }
 

@@ -408,8 +408,9 @@ static int walk(const struct trace_scene *scene, const float org[3], const float
     s.org = org;
     s.dir = dir;
     s.tmin = tmin;
-    /* One set-up per ray; instances with the identity matrix reuse it. */
-    trace_ray_init(&s.ray, org, dir, tmin);
+    /* One set-up per ray; instances with the identity matrix reuse it.
+     * A single ray: the set-up without branches (ray.c). */
+    trace_ray_init_single(&s.ray, org, dir, tmin);
     s.any_hit = any_hit;
     s.hit = hit;
     s.counters = counters;

@@ -47,6 +47,10 @@ struct trace_counters {
 
 /* Prepares a ray.  dir must be finite and non-zero. */
 void trace_ray_init(struct trace_ray *ray, const float org[3], const float dir[3], float tmin);
+/* The same ray, bit for bit, set up without branches: for a ray traced
+ * alone (ray.c says why the packet kernels keep trace_ray_init). */
+void trace_ray_init_single(struct trace_ray *ray, const float org[3], const float dir[3],
+                           float tmin);
 
 /*
  * Watertight ray/triangle test (Woop, Benthin and Wald, JCGT 2013).
