@@ -511,29 +511,6 @@ static double leaf_miss_share(const struct bvh4 *w)
     return weight > 0.0 ? sum / weight : 1.0;
 }
 
-/* Room for `need` entries in the collapse's scratch nodes and todo list
- * (capacity *cap), by doubling up to need; 0, or -1 on allocation failure
- * with both arrays still valid (the caller frees them). */
-static int reserve_level(struct scratch_node **scratch, uint32_t **todo, uint32_t *cap,
-                         uint32_t need)
-{
-    if (need <= *cap)
-        return 0;
-    uint32_t c = *cap;
-    while (c < need)
-        c = c > need / 2 ? need : 2 * c;
-    struct scratch_node *s = rt_realloc_array(*scratch, c, sizeof(**scratch));
-    if (!s)
-        return -1;
-    *scratch = s;
-    uint32_t *t = rt_realloc_array(*todo, c, sizeof(**todo));
-    if (!t)
-        return -1;
-    *todo = t;
-    *cap = c;
-    return 0;
-}
-
 int accel_collapse_wide_reuse(struct bvh4 *out, const struct bvh *bvh, const float *tri,
                               uint32_t width, struct rt_pool *pool, struct rt_large_block *spare)
 {
@@ -544,18 +521,11 @@ int accel_collapse_wide_reuse(struct bvh4 *out, const struct bvh *bvh, const flo
         return 0;
     /* Every wide node but the root consumes a binary inner node, so
      * there are at most (node_count - 1) / 2 + 1 of them. */
-    const uint32_t bound = (bvh->node_count - 1) / 2 + 1;
-    /* The arrays start at a guess and grow level by level (reserve_level)
-     * up to the bound, which is several times the usual count (bumpy's
-     * 8-wide layout: about prim_count / 16 nodes, the bound prim_count /
-     * 2, 75 MB of scratch nodes).  Sized at the bound, the scratch was a
-     * fresh mapping of the C library's every time, whose pages the kernel
-     * zeroes as they are first written; at the guess (up to 17 MB on
-     * bumpy) it comes back from the heap blocks an earlier build, or this
-     * one's binary build, freed.  Not zeroed: only the first `count`
-     * entries are used, and each is written in full (gather, number_level)
-     * before it is read. */
-    uint32_t cap = bvh->prim_count / 8 + 64 < bound ? bvh->prim_count / 8 + 64 : bound;
+    uint32_t cap = (bvh->node_count - 1) / 2 + 1;
+    /* Not zeroed: only the first `count` entries are used, and each is
+     * written in full (gather, number_level) before it is read, while cap
+     * is an upper bound several times the usual count (zeroing it was
+     * most of the cost of the allocation). */
     struct scratch_node *scratch = rt_realloc_array(NULL, cap, sizeof(*scratch));
     uint32_t *todo = rt_realloc_array(NULL, cap, sizeof(uint32_t));
     struct rt_large_block raw = {NULL, 0};
@@ -594,14 +564,6 @@ int accel_collapse_wide_reuse(struct bvh4 *out, const struct bvh *bvh, const flo
             uint32_t end = count;
             rt_pool_run_range(pool, begin, end, COLLAPSE_CHUNK, COLLAPSE_PARALLEL_MIN,
                               gather_nodes, &c);
-            /* The level's inner lanes are the next level's nodes. */
-            uint32_t need = end;
-            for (uint32_t w = begin; w < end; w++)
-                need += (uint32_t)__builtin_popcount(scratch[w].inner);
-            if (reserve_level(&scratch, &todo, &cap, need))
-                goto fail;
-            c.scratch = scratch;
-            c.todo = todo;
             number_level(&c, begin, end, todo, &count, &packets);
             begin = end;
         }
