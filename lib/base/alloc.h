@@ -60,11 +60,12 @@ void rt_free_large(struct rt_large_block *handle);
  * zeroed, and the same aligned address is returned, its old bytes left
  * as they were.  A rebuilt object's new layout so reuses the pages of its
  * old one, which are already in memory: a fresh mapping's pages are
- * zeroed by the kernel at their first write, 11-18 % of a one-thread
- * build of a million triangles on the development machine (perf, the
- * layout's writes).  Otherwise (no spare, an rt_malloc block, too small
- * or too large) *spare is left alone and this is rt_malloc_large; spare
- * may be NULL.  Taking the spare allocates nothing and never fails. */
+ * zeroed by the kernel at their first write (11-18 % of the samples of
+ * a one-thread benchmark of builds of a million triangles, all under the
+ * layout's writes: perf on the development machine).  Otherwise (no
+ * spare, an rt_malloc block, too small or too large) *spare is left
+ * alone and this is rt_malloc_large; spare may be NULL.  Taking the
+ * spare allocates nothing and never fails. */
 void *rt_malloc_large_reuse(size_t size, struct rt_large_block *handle,
                             struct rt_large_block *spare);
 
