@@ -261,10 +261,12 @@ static void plan_flat_chunks(struct pbuild *b, uint32_t total)
     b->chunk_count = (uint32_t)(((uint64_t)total + b->chunk_size - 1) / b->chunk_size);
 }
 
+/* Every task run here takes its chunks from b->next, so the caller may
+ * do all of it: a worker that wakes late is not waited for (pool.h). */
 static void run(struct pbuild *b, rt_task_fn fn)
 {
     b->next = 0;
-    rt_pool_run(b->pool, fn, b);
+    rt_pool_run_shared(b->pool, fn, b);
 }
 
 static void box_grow_ref(vec4 *lo, vec4 *hi, vec4 *clo, vec4 *chi, const struct build_ref *r)

@@ -511,8 +511,8 @@ static double leaf_miss_share(const struct bvh4 *w)
     return weight > 0.0 ? sum / weight : 1.0;
 }
 
-int accel_collapse_wide_pool(struct bvh4 *out, const struct bvh *bvh, const float *tri,
-                             uint32_t width, struct rt_pool *pool)
+int accel_collapse_wide_reuse(struct bvh4 *out, const struct bvh *bvh, const float *tri,
+                              uint32_t width, struct rt_pool *pool, struct rt_large_block *spare)
 {
     memset(out, 0, sizeof(*out));
     if (width != 4 && width != 8)
@@ -529,6 +529,7 @@ int accel_collapse_wide_pool(struct bvh4 *out, const struct bvh *bvh, const floa
     struct scratch_node *scratch = rt_realloc_array(NULL, cap, sizeof(*scratch));
     uint32_t *todo = rt_realloc_array(NULL, cap, sizeof(uint32_t));
     struct rt_large_block raw = {NULL, 0};
+    int taken = 0; /* raw is *spare's block */
     char *base = NULL;
     uint32_t *source = NULL;
     uint32_t *packet_slot = NULL;
@@ -569,7 +570,13 @@ int accel_collapse_wide_pool(struct bvh4 *out, const struct bvh *bvh, const floa
     }
     size_t node_size = width == 4 ? sizeof(struct bvh4_node) : sizeof(struct bvh8_node);
     size_t node_bytes = (size_t)count * node_size;
-    base = rt_malloc_large(node_bytes + (size_t)packets * sizeof(struct tri4_packet), &raw);
+    /* Every byte of the block's used part is written by write_node
+     * (nodes in full, packets' every lane and primitive), so a reused
+     * block holds the same bytes as a fresh one. */
+    const size_t spare_bytes = spare ? spare->bytes : 0;
+    base = rt_malloc_large_reuse(node_bytes + (size_t)packets * sizeof(struct tri4_packet), &raw,
+                                 spare);
+    taken = base && spare_bytes && !spare->bytes;
     /* Both written in full by write_node. */
     source = rt_realloc_array(NULL, (size_t)count * width, sizeof(uint32_t));
     packet_slot = rt_realloc_array(NULL, packets ? packets : 1, sizeof(uint32_t));
@@ -604,10 +611,21 @@ int accel_collapse_wide_pool(struct bvh4 *out, const struct bvh *bvh, const floa
 fail:
     rt_free(scratch);
     rt_free(todo);
-    rt_free_large(&raw);
+    /* A spare taken goes back untouched: nothing is written before every
+     * allocation has succeeded. */
+    if (taken)
+        *spare = raw;
+    else
+        rt_free_large(&raw);
     rt_free(source);
     rt_free(packet_slot);
     return -1;
+}
+
+int accel_collapse_wide_pool(struct bvh4 *out, const struct bvh *bvh, const float *tri,
+                             uint32_t width, struct rt_pool *pool)
+{
+    return accel_collapse_wide_reuse(out, bvh, tri, width, pool, NULL);
 }
 
 int accel_collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *tri,

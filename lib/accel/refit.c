@@ -248,7 +248,7 @@ static void refit_parallel(struct bvh *bvh, const struct refit_source *src, stru
     sh.next_task = 0;
     sh.finished = 0;
     seed(bvh, levels, tasks, &sh.task_count, top, &sh.top_count);
-    rt_pool_run(pool, refit_task, &sh);
+    rt_pool_run_shared(pool, refit_task, &sh);
 }
 
 void accel_refit(struct bvh *bvh, const struct aabb *prim_boxes)
@@ -312,7 +312,7 @@ void accel_refit_triangles_parallel(const struct bvh *bvh, float *tri, const flo
         return;
     }
     struct triangle_shared sh = {bvh, tri, positions, indices, 0};
-    rt_pool_run(pool, triangle_task, &sh);
+    rt_pool_run_shared(pool, triangle_task, &sh);
 }
 
 void accel_refit_mesh(struct bvh *bvh, float *tri, const float *positions,

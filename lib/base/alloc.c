@@ -168,6 +168,26 @@ void rt_free_large(struct rt_large_block *handle)
     memset(handle, 0, sizeof(*handle));
 }
 
+void *rt_malloc_large_reuse(size_t size, struct rt_large_block *handle,
+                            struct rt_large_block *spare)
+{
+#if defined(__linux__) && defined(MADV_HUGEPAGE) && defined(MAP_ANONYMOUS)
+    if (spare && spare->bytes && size <= SIZE_MAX / 4 &&
+        spare->bytes <= 2 * size + 2 * RT_ALLOC_HUGE_PAGE) {
+        const uintptr_t page = RT_ALLOC_HUGE_PAGE;
+        char *p = (char *)(((uintptr_t)spare->base + page - 1) & ~(page - 1));
+        if ((size_t)((char *)spare->base + spare->bytes - p) >= size) {
+            *handle = *spare;
+            memset(spare, 0, sizeof(*spare));
+            return p;
+        }
+    }
+#else
+    (void)spare;
+#endif
+    return rt_malloc_large(size, handle);
+}
+
 #if defined(RT_ALLOC_FAULT_INJECTION)
 void rt_alloc_fail_after(long n)
 {

@@ -27,13 +27,24 @@ struct rt_pool *rt_pool_create(int threads);
  * Not reentrant: one task at a time per pool. */
 void rt_pool_run(struct rt_pool *pool, rt_task_fn fn, void *arg);
 
+/* As rt_pool_run for a task whose threads share its work through a
+ * counter of its own, so that any thread may do all of it: fn(arg, 0)
+ * runs on the caller, and fn(arg, w) for w > 0 on the workers that start
+ * before the caller's fn has returned; the call returns when those have
+ * finished, without waiting for a worker to wake up to find nothing
+ * left.  fn must not depend on w running (no per-worker share or
+ * scratch that is not optional). */
+void rt_pool_run_shared(struct rt_pool *pool, rt_task_fn fn, void *arg);
+
 /* Runs fn(arg, lo, hi) over the items [begin, end) in chunks of `chunk`
  * (> 0) that the pool's threads take in turn from a shared counter, or
  * once over the whole range on the calling thread when the pool has
  * fewer than two threads or the range holds fewer than min_parallel
  * items (shorter than waking the workers).  When fn's work on an item
  * depends on nothing but the item, what it writes is the same on any
- * pool.  Uses the pool for the duration of the call. */
+ * pool.  A shared task (rt_pool_run_shared): a worker that wakes after
+ * the last chunk was taken is not waited for.  Uses the pool for the
+ * duration of the call. */
 typedef void (*rt_range_fn)(void *arg, uint32_t lo, uint32_t hi);
 void rt_pool_run_range(struct rt_pool *pool, uint32_t begin, uint32_t end, uint32_t chunk,
                        uint32_t min_parallel, rt_range_fn fn, void *arg);

@@ -17,9 +17,13 @@
  * triangles and the 4-wide layout traversal reads, and the cost the
  * update strategies compare.  Returns 0, or -1 on allocation failure
  * (accel->tri unchanged; accel->wide unchanged, or released when the
- * collapse itself failed).  Times the collapse into accel->collapse_ms. */
+ * collapse itself failed).  Times the collapse into accel->collapse_ms.
+ * The new layout reuses the block of the one it replaces when it fits:
+ * accel's own, or old's (may be NULL), whose wide layout is then
+ * released (accel_collapse_wide_reuse). */
 static int finish_layout(struct scene_accel *accel, const struct scene_accel_geometry *geom,
-                         const struct bvh_build_params *params, struct rt_pool *pool)
+                         const struct bvh_build_params *params, struct rt_pool *pool,
+                         struct scene_accel *old)
 {
     float *tri = accel_gather_triangles_pool(&accel->bvh, geom->positions, geom->indices, pool);
     if (!tri)
@@ -27,13 +31,17 @@ static int finish_layout(struct scene_accel *accel, const struct scene_accel_geo
     struct bvh4 wide = {0};
     const uint32_t width = params->wide_layout == 8 ? 8u : 4u;
     double start = rt_now_ms();
-    if (params->wide_layout && accel_collapse_wide_pool(&wide, &accel->bvh, tri, width, pool)) {
+    struct rt_large_block *spare = old ? &old->wide.raw : &accel->wide.raw;
+    if (params->wide_layout &&
+        accel_collapse_wide_reuse(&wide, &accel->bvh, tri, width, pool, spare)) {
         /* The tree may have changed under the old wide layout
          * (restructuring): drop it, so traversal takes the binary walk. */
         bvh4_release(&accel->wide);
         rt_free(tri);
         return -1;
     }
+    if (old)
+        bvh4_release(&old->wide); /* its block may be the new layout's */
     rt_free(accel->tri);
     accel->tri = tri;
     bvh4_release(&accel->wide);
@@ -47,6 +55,15 @@ struct scene_accel *scene_accel_build(const struct scene_accel_geometry *geom,
                                       const struct bvh_build_params *params,
                                       enum scene_accel_builder builder, struct rt_pool *pool,
                                       const struct scene_preempt_hook *hook)
+{
+    return scene_accel_rebuild(geom, params, builder, pool, hook, NULL);
+}
+
+struct scene_accel *scene_accel_rebuild(const struct scene_accel_geometry *geom,
+                                        const struct bvh_build_params *params,
+                                        enum scene_accel_builder builder, struct rt_pool *pool,
+                                        const struct scene_preempt_hook *hook,
+                                        struct scene_accel *old)
 {
     double start = rt_now_ms(), work = rt_pool_work_ms(pool);
     if (hook && hook->fn)
@@ -63,7 +80,7 @@ struct scene_accel *scene_accel_build(const struct scene_accel_geometry *geom,
         status = accel_build_parallel(&accel->bvh, boxes, geom->tri_count, params, pool);
     else
         status = accel_build(&accel->bvh, boxes, geom->tri_count, params);
-    if (status || finish_layout(accel, geom, params, pool))
+    if (status || finish_layout(accel, geom, params, pool, old))
         goto fail;
     rt_free(boxes);
     accel->built_sah_cost = accel->sah_cost;
@@ -114,7 +131,7 @@ int scene_accel_restructure(struct scene_accel *accel, const struct scene_accel_
     if (status)
         return -1;
     /* Restructuring moves primitives between leaves: regather. */
-    return finish_layout(accel, geom, params, NULL);
+    return finish_layout(accel, geom, params, NULL, NULL);
 }
 
 void scene_accel_install(struct scene_object *object, struct scene_accel *fresh)

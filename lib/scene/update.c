@@ -49,7 +49,12 @@ static int rebuild(struct scene_object *object, const struct bvh_build_params *p
     else if (pool_for(&object->mesh, pool) && params->builder == BVH_BUILDER_BINNED_SAH)
         builder = SCENE_ACCEL_PARALLEL;
     struct scene_accel_geometry g = geometry(object);
-    struct scene_accel *fresh = scene_accel_build(&g, params, builder, pool, hook);
+    /* The old structure is replaced and freed below, and nothing walks it
+     * meanwhile (scene_object_acquire: only a structure of the object's
+     * current serial is used, and this one is not): its layout's block
+     * may hold the new one. */
+    struct scene_accel *fresh =
+        scene_accel_rebuild(&g, params, builder, pool, hook, object->accel);
     if (!fresh)
         return -1;
     fresh->serial = object->serial;

@@ -179,6 +179,15 @@ int accel_collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *tr
 struct rt_pool;
 int accel_collapse_wide_pool(struct bvh4 *out, const struct bvh *bvh, const float *tri,
                              uint32_t width, struct rt_pool *pool);
+/* accel_collapse_wide_pool writing the layout into *spare's block (a
+ * layout's raw, base/alloc.h rt_malloc_large_reuse) when it fits: then
+ * out->raw takes it over and *spare is zeroed, so that the layout the new
+ * one replaces must not be walked after this call (release it; its
+ * source and packet_slot are still its own).  On failure, or when the
+ * block does not fit, *spare is as it was (its bytes too); spare may be
+ * NULL.  Same bytes as a fresh block. */
+int accel_collapse_wide_reuse(struct bvh4 *out, const struct bvh *bvh, const float *tri,
+                              uint32_t width, struct rt_pool *pool, struct rt_large_block *spare);
 
 /* accel_collapse_wide with width 4. */
 int accel_collapse4(struct bvh4 *out, const struct bvh *bvh, const float *tri);
