@@ -11,13 +11,17 @@
 #include <emmintrin.h>
 #endif
 
-void trace_ray_init(struct trace_ray *ray, const float org[3], const float dir[3], float tmin)
+/* The ray's inputs into ray, dir into d.  They are read into locals
+ * before anything is stored: ray may in principle overlap org or dir, so
+ * otherwise the compiler checks for the overlap at run time and reloads
+ * dir after every store. */
+static inline void ray_store_inputs(struct trace_ray *ray, const float org[3],
+                                    const float dir[3], float tmin, float d[3])
 {
-    /* The inputs are read into locals before anything is stored: ray may
-     * in principle overlap org or dir, so otherwise the compiler checks
-     * for the overlap at run time and reloads dir after every store. */
     const float o0 = org[0], o1 = org[1], o2 = org[2];
-    const float d[3] = {dir[0], dir[1], dir[2]};
+    d[0] = dir[0];
+    d[1] = dir[1];
+    d[2] = dir[2];
     ray->org[0] = o0;
     ray->org[1] = o1;
     ray->org[2] = o2;
@@ -25,6 +29,28 @@ void trace_ray_init(struct trace_ray *ray, const float org[3], const float dir[3
     ray->dir[1] = d[1];
     ray->dir[2] = d[2];
     ray->tmin = tmin;
+}
+
+#if !defined(__SSE2__) || defined(RT_NO_SIMD)
+/* The five divisions one by one (without SSE): 1 / dir and the shear. */
+static inline void ray_divisions(struct trace_ray *ray, const float d[3], int kx, int ky, int kz)
+{
+    const float dz = d[kz];
+    float q[3];
+    for (int k = 0; k < 3; k++) {
+        q[k] = 1.0f / d[k];
+        ray->inv_dir[k] = q[k];
+    }
+    ray->sx = -d[kx] / dz;
+    ray->sz = q[kz]; /* 1 / dir[kz], already computed */
+    ray->sy = -d[ky] / dz;
+}
+#endif
+
+void trace_ray_init(struct trace_ray *ray, const float org[3], const float dir[3], float tmin)
+{
+    float d[3];
+    ray_store_inputs(ray, org, dir, tmin, d);
 
     /* Woop, Benthin and Wald 2013: z is the dimension where the direction
      * is largest in magnitude (first one on ties), x and y follow
@@ -49,8 +75,8 @@ void trace_ray_init(struct trace_ray *ray, const float org[3], const float dir[3
      * intersect.h) and the shear, stored negated (trace.h).  Four of them
      * in one divps where SSE is there: the same correctly rounded
      * quotients, without waiting for five scalar divisions in turn. */
-    const float dz = d[kz];
 #if defined(__SSE2__) && !defined(RT_NO_SIMD)
+    const float dz = d[kz];
     float q[4];
     _mm_storeu_ps(q, _mm_div_ps(_mm_setr_ps(1.0f, 1.0f, 1.0f, -d[kx]),
                                 _mm_setr_ps(d[0], d[1], d[2], dz)));
@@ -59,16 +85,10 @@ void trace_ray_init(struct trace_ray *ray, const float org[3], const float dir[3
     ray->inv_dir[2] = q[2];
     ray->sx = q[3];
     ray->sz = q[kz]; /* 1 / dir[kz], already computed */
-#else
-    float q[3];
-    for (int k = 0; k < 3; k++) {
-        q[k] = 1.0f / d[k];
-        ray->inv_dir[k] = q[k];
-    }
-    ray->sx = -d[kx] / dz;
-    ray->sz = q[kz]; /* 1 / dir[kz], already computed */
-#endif
     ray->sy = -d[ky] / dz;
+#else
+    ray_divisions(ray, d, kx, ky, kz);
+#endif
 }
 
 /*
@@ -85,18 +105,8 @@ void trace_ray_init(struct trace_ray *ray, const float org[3], const float dir[3
 void trace_ray_init_single(struct trace_ray *ray, const float org[3], const float dir[3],
                            float tmin)
 {
-    /* The inputs are read into locals before anything is stored: ray may
-     * in principle overlap org or dir, so otherwise the compiler checks
-     * for the overlap at run time and reloads dir after every store. */
-    const float o0 = org[0], o1 = org[1], o2 = org[2];
-    const float d[3] = {dir[0], dir[1], dir[2]};
-    ray->org[0] = o0;
-    ray->org[1] = o1;
-    ray->org[2] = o2;
-    ray->dir[0] = d[0];
-    ray->dir[1] = d[1];
-    ray->dir[2] = d[2];
-    ray->tmin = tmin;
+    float d[3];
+    ray_store_inputs(ray, org, dir, tmin, d);
 
     /* Woop, Benthin and Wald 2013: z is the dimension where the direction
      * is largest in magnitude (first one on ties), x and y follow
@@ -120,13 +130,10 @@ void trace_ray_init_single(struct trace_ray *ray, const float org[3], const floa
     ray->kx = kx;
     ray->ky = ky;
     ray->kz = (int)kz;
-    /* The five divisions: 1 / dir (IEEE division: a zero component gives
-     * an infinity of the zero's sign, which the slab test handles,
-     * intersect.h) and the shear, stored negated (trace.h).  Four of them
-     * in one divps where SSE is there: the same correctly rounded
-     * quotients, without waiting for five scalar divisions in turn. */
-    const float dz = d[kz];
+    /* The five divisions as trace_ray_init's, in two divps where SSE is
+     * there. */
 #if defined(__SSE2__) && !defined(RT_NO_SIMD)
+    const float dz = d[kz];
     /* 1 / dir apart from the shear's two quotients: the node test's
      * inverse then does not wait for the choice of the axes. */
     float q[4], sh[4];
@@ -140,13 +147,6 @@ void trace_ray_init_single(struct trace_ray *ray, const float org[3], const floa
     ray->sy = sh[1];
     ray->sz = q[kz]; /* 1 / dir[kz], already computed */
 #else
-    float q[3];
-    for (int k = 0; k < 3; k++) {
-        q[k] = 1.0f / d[k];
-        ray->inv_dir[k] = q[k];
-    }
-    ray->sx = -d[kx] / dz;
-    ray->sz = q[kz]; /* 1 / dir[kz], already computed */
-    ray->sy = -d[ky] / dz;
+    ray_divisions(ray, d, kx, ky, kz);
 #endif
 }
