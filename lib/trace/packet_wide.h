@@ -810,38 +810,47 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                 }
             }
             if (push) {
-                /* The children to push by their position in the
-                 * octant's order (3 bits per position): bit q of pos is
-                 * set when the child at position q is pushed, so the
-                 * loop runs once per pushed child, the last position
-                 * first (the nearest ends on top of the stack, as
-                 * packet_walk's scan of all eight). */
-                const uint32_t order = (uint32_t)n->order[octant][0] |
-                                       (uint32_t)n->order[octant][1] << 8 |
-                                       (uint32_t)n->order[octant][2] << 16;
-                const __m256i slot = _mm256_and_si256(
-                    _mm256_srlv_epi32(_mm256_set1_epi32((int)order),
-                                      _mm256_setr_epi32(0, 3, 6, 9, 12, 15, 18, 21)),
-                    _mm256_set1_epi32(7));
-                const __m256i bit = _mm256_srlv_epi32(_mm256_set1_epi32((int)push), slot);
-                unsigned pos = (unsigned)_mm256_movemask_ps(
-                    _mm256_castsi256_ps(_mm256_slli_epi32(bit, 31)));
-                for (;;) {
-                    const unsigned q = 31u - (unsigned)__builtin_clz(pos);
-                    const unsigned l = order >> (3 * q) & 7u;
-                    pos &= ~(1u << q);
-                    if (!pos) {
-                        /* The nearest: walked next, not stacked. */
-                        cur = n->child[l];
-                        cur_count = n->count[l];
-                        rays = lane_rays[l];
-                        break;
+                if (!(push & (push - 1u))) {
+                    /* One child (most nodes of a camera packet): walked
+                     * next, with no order to follow. */
+                    const unsigned l = (unsigned)__builtin_ctz(push);
+                    cur = n->child[l];
+                    cur_count = n->count[l];
+                    rays = lane_rays[l];
+                } else {
+                    /* The children to push by their position in the
+                     * octant's order (3 bits per position): bit q of pos is
+                     * set when the child at position q is pushed, so the
+                     * loop runs once per pushed child, the last position
+                     * first (the nearest ends on top of the stack, as
+                     * packet_walk's scan of all eight). */
+                    const uint32_t order = (uint32_t)n->order[octant][0] |
+                                           (uint32_t)n->order[octant][1] << 8 |
+                                           (uint32_t)n->order[octant][2] << 16;
+                    const __m256i slot = _mm256_and_si256(
+                        _mm256_srlv_epi32(_mm256_set1_epi32((int)order),
+                                          _mm256_setr_epi32(0, 3, 6, 9, 12, 15, 18, 21)),
+                        _mm256_set1_epi32(7));
+                    const __m256i bit = _mm256_srlv_epi32(_mm256_set1_epi32((int)push), slot);
+                    unsigned pos = (unsigned)_mm256_movemask_ps(
+                        _mm256_castsi256_ps(_mm256_slli_epi32(bit, 31)));
+                    for (;;) {
+                        const unsigned q = 31u - (unsigned)__builtin_clz(pos);
+                        const unsigned l = order >> (3 * q) & 7u;
+                        pos &= ~(1u << q);
+                        if (!pos) {
+                            /* The nearest: walked next, not stacked. */
+                            cur = n->child[l];
+                            cur_count = n->count[l];
+                            rays = lane_rays[l];
+                            break;
+                        }
+                        stack[sp].child = n->child[l];
+                        stack[sp].count = n->count[l];
+                        stack[sp].rays = lane_rays[l];
+                        stack[sp].t_entry = t_min[l];
+                        sp++;
                     }
-                    stack[sp].child = n->child[l];
-                    stack[sp].count = n->count[l];
-                    stack[sp].rays = lane_rays[l];
-                    stack[sp].t_entry = t_min[l];
-                    sp++;
                 }
                 if (!cur_count)
                     wide_prefetch(&nodes[cur], sizeof(struct bvh8_node));
