@@ -45,6 +45,13 @@
  * gears and 5.3 on the soup, whose camera packets gain without the
  * test, and 1.5 on the kitchen and 0.6 on bumpy, which need it. */
 #define PACKET_LEAF_GATE 3.0f
+/* An inner child of a packet from several origins is entered by all its
+ * rays, without a test per ray, where its box's largest extent is at
+ * least this many times the packet's width there (the origins' spread
+ * plus the directions' spread times the entry bound).  Measured
+ * (docs/performance-log.md, pgate): shadow packets' instructions per ray
+ * were lowest at 2 on all four meshes (0.5, 1, 2 and 4 tried). */
+#define PACKET_INNER_GATE 2.0f
 
 struct packet_entry {
     uint32_t child;
@@ -87,6 +94,9 @@ struct packet_state {
     __m256 lane_f[TRI8_F_COUNT]; /* the rays' fields in the lanes (tri8_lanes_load) */
     int ia_masks; /* rays from more than one origin: see packet_walk8_ia */
     float ia_leaf_t; /* a leaf child entered before this takes no lane test (packet_ia_init) */
+    /* Several origins: the largest spread of the origins and of the
+     * directions over the axes, times PACKET_INNER_GATE, broadcast. */
+    __m256 ia_sp_o, ia_sp_d;
     int ia_octant;                  /* the rays' common octant */
     int ia_row_near[3], ia_row_far[3]; /* its near and far rows, byte offsets */
     unsigned r4_ready;              /* packet_walk8_ia: the rays whose s[r].r4 is set up */
@@ -592,6 +602,21 @@ static inline int packet_ia_init(struct packet_state *p, const struct trace_ray 
         const float m = _mm_cvtss_f32(s) * PACKET_LEAF_GATE;
         p->ia_leaf_t = m > 0.0f ? leaf_extent / m : INFINITY;
     }
+    if (p->ia_masks) {
+        /* The directions' ranges in lanes 0-3 and the origins' in lanes
+         * 4-7 (the first of each twice). */
+        const __m256i dir = _mm256_setr_epi32(TRI8_F_DIR, TRI8_F_DIR + 1, TRI8_F_DIR + 2,
+                                              TRI8_F_DIR, TRI8_F_ORG, TRI8_F_ORG + 1,
+                                              TRI8_F_ORG + 2, TRI8_F_ORG);
+        __m256 sp = _mm256_permutevar8x32_ps(_mm256_sub_ps(f_max[0], f_min[0]), dir);
+        __m128 a = _mm256_castps256_ps128(sp), b = _mm256_extractf128_ps(sp, 1);
+        a = _mm_max_ps(a, _mm_movehl_ps(a, a));
+        a = _mm_max_ss(a, _mm_shuffle_ps(a, a, 1));
+        b = _mm_max_ps(b, _mm_movehl_ps(b, b));
+        b = _mm_max_ss(b, _mm_shuffle_ps(b, b, 1));
+        p->ia_sp_d = _mm256_set1_ps(_mm_cvtss_f32(a) * PACKET_INNER_GATE);
+        p->ia_sp_o = _mm256_set1_ps(_mm_cvtss_f32(b) * PACKET_INNER_GATE);
+    }
     p->ia_octant = octant;
     p->ia_tmin = _mm256_permutevar8x32_ps(f_min[TRI8_F_TMIN / 8],
                                           _mm256_set1_epi32(TRI8_F_TMIN % 8));
@@ -773,6 +798,36 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                         (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(t0, leaf_t, _CMP_LE_OQ));
                     test = pass & ~inner & ~near & 0xffu;
                     push = pass & ~test;
+                    _mm256_storeu_si256((__m256i *)(void *)lane_rays,
+                                        _mm256_set1_epi32((int)rays));
+                } else {
+                    /* Several origins: an inner child whose box is wide
+                     * against the packet's width where the interval
+                     * meets it (the origins' spread plus the
+                     * directions' spread times its entry bound, times
+                     * PACKET_INNER_GATE) is entered by every ray, as a
+                     * one-origin packet's: a ray whose own test would
+                     * not enter it finds no hit in it at or below its
+                     * best, and most rays enter such a box anyway.  Leaf children keep the
+                     * test per ray (their triangles cost more than a
+                     * node). */
+                    const unsigned inner = (unsigned)_mm_movemask_epi8(_mm_cmpeq_epi8(
+                        _mm_loadl_epi64((const __m128i *)(const void *)n->count),
+                        _mm_setzero_si128()));
+                    __m256 ext = _mm256_sub_ps(_mm256_load_ps(n->bounds[3]),
+                                               _mm256_load_ps(n->bounds[0]));
+                    ext = _mm256_max_ps(ext, _mm256_sub_ps(_mm256_load_ps(n->bounds[4]),
+                                                           _mm256_load_ps(n->bounds[1])));
+                    ext = _mm256_max_ps(ext, _mm256_sub_ps(_mm256_load_ps(n->bounds[5]),
+                                                           _mm256_load_ps(n->bounds[2])));
+                    const __m256 beam = _mm256_add_ps(
+                        p->ia_sp_o,
+                        _mm256_mul_ps(_mm256_max_ps(t0, _mm256_setzero_ps()), p->ia_sp_d));
+                    const unsigned big =
+                        (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(beam, ext, _CMP_LE_OQ));
+                    const unsigned all = pass & inner & big;
+                    test = pass & ~all;
+                    push = all;
                     _mm256_storeu_si256((__m256i *)(void *)lane_rays,
                                         _mm256_set1_epi32((int)rays));
                 }
