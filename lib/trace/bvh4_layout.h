@@ -140,6 +140,13 @@ struct bvh4 {
      * sign test alone refuses is below 1/4 (collapse4.c,
      * leaf_miss_share); the answers are the same either way. */
     uint32_t leaf8;
+    /* The leaves' size: the mean over the leaf lanes of the largest
+     * extent of a lane's box (collapse4.c, leaf_extent_mean; a sample);
+     * 0 without leaves.  The 8-wide packet walk compares it with its
+     * beam's width to choose whether a leaf child takes a test per ray
+     * (packet_wide.h, packet_ia_init); the answers are the same either
+     * way. */
+    float leaf_extent;
     /* The nodes and packets in one block (rt_malloc_large: 2 MB huge
      * pages where the OS offers them). */
     struct rt_large_block raw;

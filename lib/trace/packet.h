@@ -14,8 +14,9 @@
  * and Slusallek 2003 sec. 4.4), or, for a packet in one octant over the
  * 8-wide layout, an interval test for the whole packet that passes every
  * child one of its rays' own tests passes (packet_wide.h,
- * packet_walk8_ia; leaves still per ray); a triangle test is
- * isect_triangle's answer for each ray, eight rays at a time
+ * packet_walk8_ia; leaf boxes per ray where the beam is wide against
+ * them); a triangle test is isect_triangle's answer for each ray, eight
+ * rays at a time
  * (packet_tri8.h) or ray by ray; and the closest-hit rule (smallest t,
  * ties to the lower primitive, traverse_walk.h) does not depend on the
  * order of visits; so a ray of a packet gets exactly the hit it gets

@@ -25,7 +25,8 @@
  *
  * Over the 8-wide layout a packet in one octant takes packet_walk8_ia
  * instead: one interval test of a node's children for the whole packet,
- * leaf boxes still tested ray by ray (see there).
+ * leaf boxes tested ray by ray unless the beam is narrow against the
+ * leaves (see there).
  */
 #include "trace/packet.h"
 #if defined(__AVX__)
@@ -36,6 +37,21 @@
  * at least this many of its rays share the first ray's kx, ky, kz;
  * otherwise, and for the other rays, ray by ray (wide_leaf). */
 #define PACKET_TRI8_MIN 3
+
+/* A one-origin packet's leaf child takes no test per ray where the beam,
+ * this many times over, is narrower than the leaves' mean size
+ * (packet_ia_init).  Measured (docs/performance-log.md, pgate): the
+ * leaves' mean size over the beam's width at the hit is about 13 on
+ * gears and 5.3 on the soup, whose camera packets gain without the
+ * test, and 1.5 on the kitchen and 0.6 on bumpy, which need it. */
+#define PACKET_LEAF_GATE 3.0f
+/* An inner child of a packet from several origins is entered by all its
+ * rays, without a test per ray, where its box's largest extent is at
+ * least this many times the packet's width there (the origins' spread
+ * plus the directions' spread times the entry bound).  Measured
+ * (docs/performance-log.md, pgate): shadow packets' instructions per ray
+ * were lowest at 2 on all four meshes (0.5, 1, 2 and 4 tried). */
+#define PACKET_INNER_GATE 2.0f
 
 struct packet_entry {
     uint32_t child;
@@ -77,6 +93,10 @@ struct packet_state {
     __m256 ia_o_near[3], ia_o_far[3], ia_i_lo[3], ia_i_hi[3], ia_tmin;
     __m256 lane_f[TRI8_F_COUNT]; /* the rays' fields in the lanes (tri8_lanes_load) */
     int ia_masks; /* rays from more than one origin: see packet_walk8_ia */
+    float ia_leaf_t; /* a leaf child entered before this takes no lane test (packet_ia_init) */
+    /* Several origins: the largest spread of the origins and of the
+     * directions over the axes, times PACKET_INNER_GATE, broadcast. */
+    __m256 ia_sp_o, ia_sp_d;
     int ia_octant;                  /* the rays' common octant */
     int ia_row_near[3], ia_row_far[3]; /* its near and far rows, byte offsets */
     unsigned r4_ready;              /* packet_walk8_ia: the rays whose s[r].r4 is set up */
@@ -511,7 +531,8 @@ static inline float packet_hmax(__m256 v)
  * least each ray's exit: a child that one ray's own test enters passes.
  */
 static inline int packet_ia_init(struct packet_state *p, const struct trace_ray *rays,
-                                 unsigned active, const __m256 f_min[2], const __m256 f_max[2])
+                                 unsigned active, const __m256 f_min[2], const __m256 f_max[2],
+                                 float leaf_extent)
 {
     /* The rays' fields in the lanes (packet_run: a lane without a ray
      * holds the first ray's, never read into an answer: masked by the
@@ -558,6 +579,44 @@ static inline int packet_ia_init(struct packet_state *p, const struct trace_ray 
     /* Rays from more than one origin: o_lo != o_hi on an axis. */
     p->ia_masks =
         (_mm256_movemask_ps(_mm256_cmp_ps(f_min[0], f_max[0], _CMP_NEQ_UQ)) & 7) != 0;
+    /* One origin: the distance up to which the beam is narrow against
+     * the leaves, by the largest spread s of the rays' directions over
+     * the axes (the beam's width grows by s per unit of t) and the
+     * leaves' mean size L (bvh4_layout.h, leaf_extent): t * s *
+     * PACKET_LEAF_GATE <= L.  Where the leaves are small against the
+     * beam, the interval test passes leaf children between the rays that
+     * no ray enters (bumpy), and testing each ray costs less than the
+     * leaf's triangles; where they are wide, the rays enter every leaf
+     * the interval passes, and the test only costs.  It chooses work,
+     * never an answer (packet_walk8_ia). */
+    p->ia_leaf_t = -INFINITY;
+    if (!p->ia_masks && leaf_extent > 0.0f) {
+        /* The directions' ranges (fields TRI8_F_DIR + 0..2 of f_min[0]
+         * and f_max[0]) in lanes 0-3 (the first twice). */
+        const __m256i dir = _mm256_setr_epi32(TRI8_F_DIR, TRI8_F_DIR + 1, TRI8_F_DIR + 2,
+                                              TRI8_F_DIR, 0, 0, 0, 0);
+        __m128 s = _mm256_castps256_ps128(
+            _mm256_permutevar8x32_ps(_mm256_sub_ps(f_max[0], f_min[0]), dir));
+        s = _mm_max_ps(s, _mm_movehl_ps(s, s));
+        s = _mm_max_ss(s, _mm_shuffle_ps(s, s, 1));
+        const float m = _mm_cvtss_f32(s) * PACKET_LEAF_GATE;
+        p->ia_leaf_t = m > 0.0f ? leaf_extent / m : INFINITY;
+    }
+    if (p->ia_masks) {
+        /* The directions' ranges in lanes 0-3 and the origins' in lanes
+         * 4-7 (the first of each twice). */
+        const __m256i dir = _mm256_setr_epi32(TRI8_F_DIR, TRI8_F_DIR + 1, TRI8_F_DIR + 2,
+                                              TRI8_F_DIR, TRI8_F_ORG, TRI8_F_ORG + 1,
+                                              TRI8_F_ORG + 2, TRI8_F_ORG);
+        __m256 sp = _mm256_permutevar8x32_ps(_mm256_sub_ps(f_max[0], f_min[0]), dir);
+        __m128 a = _mm256_castps256_ps128(sp), b = _mm256_extractf128_ps(sp, 1);
+        a = _mm_max_ps(a, _mm_movehl_ps(a, a));
+        a = _mm_max_ss(a, _mm_shuffle_ps(a, a, 1));
+        b = _mm_max_ps(b, _mm_movehl_ps(b, b));
+        b = _mm_max_ss(b, _mm_shuffle_ps(b, b, 1));
+        p->ia_sp_d = _mm256_set1_ps(_mm_cvtss_f32(a) * PACKET_INNER_GATE);
+        p->ia_sp_o = _mm256_set1_ps(_mm_cvtss_f32(b) * PACKET_INNER_GATE);
+    }
     p->ia_octant = octant;
     p->ia_tmin = _mm256_permutevar8x32_ps(f_min[TRI8_F_TMIN / 8],
                                           _mm256_set1_epi32(TRI8_F_TMIN % 8));
@@ -577,7 +636,13 @@ static inline int packet_ia_init(struct packet_state *p, const struct trace_ray 
  * test would not enter is visited with it anyway: that changes the node
  * counts, never a hit (traverse_wide.h: the hit rule does not depend on
  * which inner nodes are skipped or the order of visits, and every box
- * holding a hit at or below a ray's best passes its test).  A pushed
+ * holding a hit at or below a ray's best passes its test).  By the same
+ * argument a leaf may meet rays whose own test would not enter it: such
+ * a ray finds no hit at or below its best there, so its triangle tests
+ * change the counts only.  A one-origin packet uses this for the leaf
+ * children the beam meets while it is narrow against the leaves
+ * (packet_ia_init, ia_leaf_t): every ray enters them without a lane
+ * test, as Embree's coherent walk has no test per ray of a leaf box.  A pushed
  * child keeps a lower bound of its rays' entry distances (the interval
  * test's, or the least of the rays' own for a lane-tested child of a
  * closest-hit packet); on pop, the rays whose box_limit lies before it
@@ -592,11 +657,12 @@ static inline int packet_ia_init(struct packet_state *p, const struct trace_ray 
  * more than it saves (measured: 3-6x the node tests per ray of the
  * per-ray walk on the soup and bumpy shadow rays), so such a packet
  * keeps exact ray masks (ia_masks): the interval test only culls, every
- * child that passes is
- * tested ray by ray in the lanes like a leaf, and where more children
+ * child that passes is tested ray by ray in the lanes like a leaf (but
+ * an inner child whose box is wide against the packet's width there,
+ * PACKET_INNER_GATE, which all the rays enter), and where more children
  * pass than there are rays, the rays' own tests over the eight children
  * (packet_box8_rows) take the node instead.  Measured in
- * docs/performance-log.md (k-packet).
+ * docs/performance-log.md (k-packet, pgate).
  *
  * An inner node that only one ray enters (several-origin packets after
  * the lane tests, any packet after the pop cull) is left to that ray's
@@ -618,6 +684,7 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
     /* The rays' box_limit in the lanes (unused lanes -inf, packet_run)
      * and their greatest, refreshed after each leaf (only hits shrink
      * them). */
+    const __m256 leaf_t = _mm256_set1_ps(p->ia_leaf_t);
     __m256 bl = _mm256_loadu_ps(p->box_limit);
     __m256 limit_hi = _mm256_set1_ps(packet_hmax(bl));
     uint64_t node_tests = 0; /* the interval and lane tests and the rays' own */
@@ -718,15 +785,55 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                     _mm256_cmp_ps(in, _mm256_setzero_ps(), _CMP_NEQ_UQ));
             } else if (pass) {
                 _mm256_storeu_ps(t_min, t0);
-                for (unsigned m = pass; m; m &= m - 1u) {
+                unsigned test = pass; /* the children tested ray by ray */
+                if (!p->ia_masks) {
+                    /* One origin: the interval test is tight, and an
+                     * inner child is entered by every ray; so is a leaf
+                     * child the beam meets before ia_leaf_t, where the
+                     * leaves are wide against the beam (packet_ia_init),
+                     * without a test per ray. */
+                    const unsigned inner = (unsigned)_mm_movemask_epi8(_mm_cmpeq_epi8(
+                        _mm_loadl_epi64((const __m128i *)(const void *)n->count),
+                        _mm_setzero_si128()));
+                    const unsigned near =
+                        (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(t0, leaf_t, _CMP_LE_OQ));
+                    test = pass & ~inner & ~near & 0xffu;
+                    push = pass & ~test;
+                    _mm256_storeu_si256((__m256i *)(void *)lane_rays,
+                                        _mm256_set1_epi32((int)rays));
+                } else {
+                    /* Several origins: an inner child whose box is wide
+                     * against the packet's width where the interval
+                     * meets it (the origins' spread plus the
+                     * directions' spread times its entry bound, times
+                     * PACKET_INNER_GATE) is entered by every ray, as a
+                     * one-origin packet's: a ray whose own test would
+                     * not enter it finds no hit in it at or below its
+                     * best, and most rays enter such a box anyway.  Leaf children keep the
+                     * test per ray (their triangles cost more than a
+                     * node). */
+                    const unsigned inner = (unsigned)_mm_movemask_epi8(_mm_cmpeq_epi8(
+                        _mm_loadl_epi64((const __m128i *)(const void *)n->count),
+                        _mm_setzero_si128()));
+                    __m256 ext = _mm256_sub_ps(_mm256_load_ps(n->bounds[3]),
+                                               _mm256_load_ps(n->bounds[0]));
+                    ext = _mm256_max_ps(ext, _mm256_sub_ps(_mm256_load_ps(n->bounds[4]),
+                                                           _mm256_load_ps(n->bounds[1])));
+                    ext = _mm256_max_ps(ext, _mm256_sub_ps(_mm256_load_ps(n->bounds[5]),
+                                                           _mm256_load_ps(n->bounds[2])));
+                    const __m256 beam = _mm256_add_ps(
+                        p->ia_sp_o,
+                        _mm256_mul_ps(_mm256_max_ps(t0, _mm256_setzero_ps()), p->ia_sp_d));
+                    const unsigned big =
+                        (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(beam, ext, _CMP_LE_OQ));
+                    const unsigned all = pass & inner & big;
+                    test = pass & ~all;
+                    push = all;
+                    _mm256_storeu_si256((__m256i *)(void *)lane_rays,
+                                        _mm256_set1_epi32((int)rays));
+                }
+                for (unsigned m = test; m; m &= m - 1u) {
                     const unsigned l = (unsigned)__builtin_ctz(m);
-                    if (!n->count[l] && !p->ia_masks) {
-                        /* One origin: the interval test is tight, and
-                         * an inner child is entered by every ray. */
-                        lane_rays[l] = rays;
-                        push |= 1u << l;
-                        continue;
-                    }
                     /* The child's box against each ray, walk_wide8's
                      * operations with the ray in the lanes. */
                     __m256 u0 = p->lane_f[TRI8_F_TMIN];
@@ -759,38 +866,47 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                 }
             }
             if (push) {
-                /* The children to push by their position in the
-                 * octant's order (3 bits per position): bit q of pos is
-                 * set when the child at position q is pushed, so the
-                 * loop runs once per pushed child, the last position
-                 * first (the nearest ends on top of the stack, as
-                 * packet_walk's scan of all eight). */
-                const uint32_t order = (uint32_t)n->order[octant][0] |
-                                       (uint32_t)n->order[octant][1] << 8 |
-                                       (uint32_t)n->order[octant][2] << 16;
-                const __m256i slot = _mm256_and_si256(
-                    _mm256_srlv_epi32(_mm256_set1_epi32((int)order),
-                                      _mm256_setr_epi32(0, 3, 6, 9, 12, 15, 18, 21)),
-                    _mm256_set1_epi32(7));
-                const __m256i bit = _mm256_srlv_epi32(_mm256_set1_epi32((int)push), slot);
-                unsigned pos = (unsigned)_mm256_movemask_ps(
-                    _mm256_castsi256_ps(_mm256_slli_epi32(bit, 31)));
-                for (;;) {
-                    const unsigned q = 31u - (unsigned)__builtin_clz(pos);
-                    const unsigned l = order >> (3 * q) & 7u;
-                    pos &= ~(1u << q);
-                    if (!pos) {
-                        /* The nearest: walked next, not stacked. */
-                        cur = n->child[l];
-                        cur_count = n->count[l];
-                        rays = lane_rays[l];
-                        break;
+                if (!(push & (push - 1u))) {
+                    /* One child (most nodes of a camera packet): walked
+                     * next, with no order to follow. */
+                    const unsigned l = (unsigned)__builtin_ctz(push);
+                    cur = n->child[l];
+                    cur_count = n->count[l];
+                    rays = lane_rays[l];
+                } else {
+                    /* The children to push by their position in the
+                     * octant's order (3 bits per position): bit q of pos is
+                     * set when the child at position q is pushed, so the
+                     * loop runs once per pushed child, the last position
+                     * first (the nearest ends on top of the stack, as
+                     * packet_walk's scan of all eight). */
+                    const uint32_t order = (uint32_t)n->order[octant][0] |
+                                           (uint32_t)n->order[octant][1] << 8 |
+                                           (uint32_t)n->order[octant][2] << 16;
+                    const __m256i slot = _mm256_and_si256(
+                        _mm256_srlv_epi32(_mm256_set1_epi32((int)order),
+                                          _mm256_setr_epi32(0, 3, 6, 9, 12, 15, 18, 21)),
+                        _mm256_set1_epi32(7));
+                    const __m256i bit = _mm256_srlv_epi32(_mm256_set1_epi32((int)push), slot);
+                    unsigned pos = (unsigned)_mm256_movemask_ps(
+                        _mm256_castsi256_ps(_mm256_slli_epi32(bit, 31)));
+                    for (;;) {
+                        const unsigned q = 31u - (unsigned)__builtin_clz(pos);
+                        const unsigned l = order >> (3 * q) & 7u;
+                        pos &= ~(1u << q);
+                        if (!pos) {
+                            /* The nearest: walked next, not stacked. */
+                            cur = n->child[l];
+                            cur_count = n->count[l];
+                            rays = lane_rays[l];
+                            break;
+                        }
+                        stack[sp].child = n->child[l];
+                        stack[sp].count = n->count[l];
+                        stack[sp].rays = lane_rays[l];
+                        stack[sp].t_entry = t_min[l];
+                        sp++;
                     }
-                    stack[sp].child = n->child[l];
-                    stack[sp].count = n->count[l];
-                    stack[sp].rays = lane_rays[l];
-                    stack[sp].t_entry = t_min[l];
-                    sp++;
                 }
                 if (!cur_count)
                     wide_prefetch(&nodes[cur], sizeof(struct bvh8_node));
@@ -906,7 +1022,8 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
         /* The interval walk sets up a ray's leaf constants (r4) at its
          * first leaf outside the eight-ray test. */
         p.r4_ready = 0;
-        ia = wide->width == 8 && hybrid == 0 && packet_ia_init(&p, rays, active, f_min, f_max);
+        ia = wide->width == 8 && hybrid == 0 && packet_ia_init(&p, rays, active, f_min, f_max,
+                                                                     wide->leaf_extent);
     }
 #endif
     if (!ia) {
