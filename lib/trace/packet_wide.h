@@ -661,11 +661,11 @@ static inline int packet_ia_init(struct packet_state *p, const struct trace_ray 
  * per-ray walk on the soup and bumpy shadow rays), so such a packet
  * keeps exact ray masks (ia_masks): the interval test only culls, every
  * child that passes is tested ray by ray in the lanes like a leaf (but
- * an inner child whose box is wide against the packet's width there,
- * PACKET_INNER_GATE, which all the rays enter), and where more children
- * pass than there are rays, the rays' own tests over the eight children
- * (packet_box8_rows) take the node instead.  Measured in
- * docs/performance-log.md (k-packet, pgate).
+ * a child, inner node or leaf, whose box is wide against the packet's
+ * width there, PACKET_INNER_GATE, which all the rays enter), and where
+ * more children pass than there are rays, the rays' own tests over the
+ * eight children (packet_box8_rows) take the node instead.  Measured in
+ * docs/performance-log.md (k-packet, pgate, sgate).
  *
  * An inner node that only one ray enters (several-origin packets after
  * the lane tests, any packet after the pop cull) is left to that ray's
