@@ -45,12 +45,15 @@
  * gears and 5.3 on the soup, whose camera packets gain without the
  * test, and 1.5 on the kitchen and 0.6 on bumpy, which need it. */
 #define PACKET_LEAF_GATE 3.0f
-/* An inner child of a packet from several origins is entered by all its
- * rays, without a test per ray, where its box's largest extent is at
- * least this many times the packet's width there (the origins' spread
- * plus the directions' spread times the entry bound).  Measured
- * (docs/performance-log.md, pgate): shadow packets' instructions per ray
- * were lowest at 2 on all four meshes (0.5, 1, 2 and 4 tried). */
+/* A child of a packet from several origins, inner node or leaf, is
+ * entered by all its rays, without a test per ray, where its box's
+ * largest extent is at least this many times the packet's width there
+ * (the origins' spread plus the directions' spread times the entry
+ * bound).  Measured (docs/performance-log.md): for inner children alone
+ * (pgate), shadow packets' instructions per ray were lowest at 2 on all
+ * four meshes (0.5, 1, 2 and 4 tried); for leaf children too (sgate),
+ * a separate factor for leaves of 1, 2, 4, 8 and 16 was tried, and 2
+ * was lowest on gears and bumpy. */
 #define PACKET_INNER_GATE 2.0f
 
 struct packet_entry {
@@ -658,11 +661,11 @@ static inline int packet_ia_init(struct packet_state *p, const struct trace_ray 
  * per-ray walk on the soup and bumpy shadow rays), so such a packet
  * keeps exact ray masks (ia_masks): the interval test only culls, every
  * child that passes is tested ray by ray in the lanes like a leaf (but
- * an inner child whose box is wide against the packet's width there,
- * PACKET_INNER_GATE, which all the rays enter), and where more children
- * pass than there are rays, the rays' own tests over the eight children
- * (packet_box8_rows) take the node instead.  Measured in
- * docs/performance-log.md (k-packet, pgate).
+ * a child, inner node or leaf, whose box is wide against the packet's
+ * width there, PACKET_INNER_GATE, which all the rays enter), and where
+ * more children pass than there are rays, the rays' own tests over the
+ * eight children (packet_box8_rows) take the node instead.  Measured in
+ * docs/performance-log.md (k-packet, pgate, sgate).
  *
  * An inner node that only one ray enters (several-origin packets after
  * the lane tests, any packet after the pop cull) is left to that ray's
@@ -802,19 +805,17 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                     _mm256_storeu_si256((__m256i *)(void *)lane_rays,
                                         _mm256_set1_epi32((int)rays));
                 } else {
-                    /* Several origins: an inner child whose box is wide
-                     * against the packet's width where the interval
-                     * meets it (the origins' spread plus the
-                     * directions' spread times its entry bound, times
-                     * PACKET_INNER_GATE) is entered by every ray, as a
-                     * one-origin packet's: a ray whose own test would
-                     * not enter it finds no hit in it at or below its
-                     * best, and most rays enter such a box anyway.  Leaf children keep the
-                     * test per ray (their triangles cost more than a
-                     * node). */
-                    const unsigned inner = (unsigned)_mm_movemask_epi8(_mm_cmpeq_epi8(
-                        _mm_loadl_epi64((const __m128i *)(const void *)n->count),
-                        _mm_setzero_si128()));
+                    /* Several origins: a child, inner node or leaf,
+                     * whose box is wide against the packet's width
+                     * where the interval meets it (the origins' spread
+                     * plus the directions' spread times its entry
+                     * bound, times PACKET_INNER_GATE) is entered by
+                     * every ray, as a one-origin packet's inner
+                     * children: a ray whose own test would not enter
+                     * it finds no hit in it at or below its best, and
+                     * most rays enter such a box anyway.  For a leaf
+                     * this trades the lane test for the triangle tests
+                     * of the rays that miss its box. */
                     __m256 ext = _mm256_sub_ps(_mm256_load_ps(n->bounds[3]),
                                                _mm256_load_ps(n->bounds[0]));
                     ext = _mm256_max_ps(ext, _mm256_sub_ps(_mm256_load_ps(n->bounds[4]),
@@ -826,7 +827,7 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                         _mm256_mul_ps(_mm256_max_ps(t0, _mm256_setzero_ps()), p->ia_sp_d));
                     const unsigned big =
                         (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(beam, ext, _CMP_LE_OQ));
-                    const unsigned all = pass & inner & big;
+                    const unsigned all = pass & big;
                     test = pass & ~all;
                     push = all;
                     _mm256_storeu_si256((__m256i *)(void *)lane_rays,
