@@ -54,7 +54,7 @@
  * four meshes (0.5, 1, 2 and 4 tried); for leaf children too (sgate),
  * a separate factor for leaves of 1, 2, 4, 8 and 16 was tried, and 2
  * was lowest on gears and bumpy. */
-#define PACKET_INNER_GATE 2.0f
+#define PACKET_WIDE_BOX_GATE 2.0f
 
 struct packet_entry {
     uint32_t child;
@@ -98,7 +98,7 @@ struct packet_state {
     int ia_masks; /* rays from more than one origin: see packet_walk8_ia */
     float ia_leaf_t; /* a leaf child entered before this takes no lane test (packet_ia_init) */
     /* Several origins: the largest spread of the origins and of the
-     * directions over the axes, times PACKET_INNER_GATE, broadcast. */
+     * directions over the axes, times PACKET_WIDE_BOX_GATE, broadcast. */
     __m256 ia_sp_o, ia_sp_d;
     int ia_octant;                  /* the rays' common octant */
     int ia_row_near[3], ia_row_far[3]; /* its near and far rows, byte offsets */
@@ -617,8 +617,8 @@ static inline int packet_ia_init(struct packet_state *p, const struct trace_ray 
         a = _mm_max_ss(a, _mm_shuffle_ps(a, a, 1));
         b = _mm_max_ps(b, _mm_movehl_ps(b, b));
         b = _mm_max_ss(b, _mm_shuffle_ps(b, b, 1));
-        p->ia_sp_d = _mm256_set1_ps(_mm_cvtss_f32(a) * PACKET_INNER_GATE);
-        p->ia_sp_o = _mm256_set1_ps(_mm_cvtss_f32(b) * PACKET_INNER_GATE);
+        p->ia_sp_d = _mm256_set1_ps(_mm_cvtss_f32(a) * PACKET_WIDE_BOX_GATE);
+        p->ia_sp_o = _mm256_set1_ps(_mm_cvtss_f32(b) * PACKET_WIDE_BOX_GATE);
     }
     p->ia_octant = octant;
     p->ia_tmin = _mm256_permutevar8x32_ps(f_min[TRI8_F_TMIN / 8],
@@ -662,7 +662,7 @@ static inline int packet_ia_init(struct packet_state *p, const struct trace_ray 
  * keeps exact ray masks (ia_masks): the interval test only culls, every
  * child that passes is tested ray by ray in the lanes like a leaf (but
  * a child, inner node or leaf, whose box is wide against the packet's
- * width there, PACKET_INNER_GATE, which all the rays enter), and where
+ * width there, PACKET_WIDE_BOX_GATE, which all the rays enter), and where
  * more children pass than there are rays, the rays' own tests over the
  * eight children (packet_box8_rows) take the node instead.  Measured in
  * docs/performance-log.md (k-packet, pgate, sgate).
@@ -809,7 +809,7 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                      * whose box is wide against the packet's width
                      * where the interval meets it (the origins' spread
                      * plus the directions' spread times its entry
-                     * bound, times PACKET_INNER_GATE) is entered by
+                     * bound, times PACKET_WIDE_BOX_GATE) is entered by
                      * every ray, as a one-origin packet's inner
                      * children: a ray whose own test would not enter
                      * it finds no hit in it at or below its best, and
