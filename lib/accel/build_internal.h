@@ -224,10 +224,16 @@ static inline void build_side_grow(vec4 c, uint32_t left, vec4 *llo, vec4 *lhi, 
  * primitives needs to reach single-primitive leaves.  0 for n <= 1. */
 static inline uint32_t build_ceil_log2(uint32_t n)
 {
+    /* The bit length of n - 1; a loop over k cost up to 80 instructions
+     * a call, twice a node (1 % of a build of 880 triangles). */
+#if defined(__GNUC__)
+    return n <= 1 ? 0u : 32u - (uint32_t)__builtin_clz(n - 1);
+#else
     uint32_t k = 0;
     while (k < 32 && ((uint64_t)1 << k) < n)
         k++;
     return k;
+#endif
 }
 
 /*
