@@ -293,8 +293,8 @@ static void octant_orders(const double centre[MAX_WIDTH][3], int lanes, int widt
  * rank counts are 64-bit lanes, a comparison's mask (-1 when true)
  * subtracted for the later lane and added for the earlier, whose "1 -"
  * is added once at the end (lane j is the earlier of lanes - 1 - j
- * pairs).  About a third of the portable form's instructions (that form
- * was 7.5 % of a build of 880 triangles).
+ * pairs).  882 instructions a wide node against the portable form's
+ * 1,924 (that form was 7.5 % of a build of 880 triangles).
  */
 static int octant_orders_sse2(const double centre[MAX_WIDTH][3], int lanes, int width,
                               int bits_per_lane, uint32_t order_bits[8])
