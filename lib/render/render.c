@@ -35,10 +35,11 @@
 /* The AVX2 copy of this file (render_avx2.c) unprojects a row and makes
  * a block row's rays four at a time in the 256-bit double lanes: the
  * same IEEE operations lane by lane, half the divider instructions of
- * the pairs (each sqrtpd and divpd is one instruction of the divider,
- * which bounds this code: 128-bit and 256-bit ones take it about as
- * long on the cores that run AVX2; Fog, "Instruction tables", AMD Zen
- * 2-4). */
+ * the pairs.  The divider's throughput bounds this code (llvm-mca of the
+ * block: its pipe is the bottleneck), and a 256-bit vsqrtpd or vdivpd
+ * occupies it about as long as a 128-bit one on AMD Zen 2 to 4 (Fog,
+ * "Instruction tables"); where it takes twice as long (older Intel
+ * cores) nothing is lost. */
 #if RENDER_PAIRS && defined(__AVX2__)
 #include <immintrin.h>
 #define RENDER_QUADS 1
