@@ -37,9 +37,9 @@
  * same IEEE operations lane by lane, half the divider instructions of
  * the pairs.  The divider's throughput bounds this code (llvm-mca of the
  * block: its pipe is the bottleneck), and a 256-bit vsqrtpd or vdivpd
- * occupies it about as long as a 128-bit one on AMD Zen 2 to 4 (Fog,
- * "Instruction tables"); where it takes twice as long (older Intel
- * cores) nothing is lost. */
+ * occupies it about as long as a 128-bit one on AMD's recent cores (Fog,
+ * "Instruction tables": Zen 2 to 4; Zen 5 by the frame's time); where it
+ * takes twice as long (older Intel cores) nothing is lost. */
 #if RENDER_PAIRS && defined(__AVX2__)
 #include <immintrin.h>
 #define RENDER_QUADS 1
