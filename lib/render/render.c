@@ -19,6 +19,7 @@
 #include "render/raster.h"
 #include "render/shade.h"
 #include "render/surface.h"
+#include "trace/kernels.h"
 #include "trace/packet_scene.h"
 
 /* Primary rays pair their double arithmetic in SSE2 lanes (near and far
@@ -29,6 +30,21 @@
 #define RENDER_PAIRS 1
 #else
 #define RENDER_PAIRS 0
+#endif
+
+/* The AVX2 copy of this file (render_avx2.c) unprojects a row and makes
+ * a block row's rays four at a time in the 256-bit double lanes: the
+ * same IEEE operations lane by lane, half the divider instructions of
+ * the pairs.  The divider's throughput bounds this code (llvm-mca of the
+ * block: its pipe is the bottleneck), and a 256-bit vsqrtpd or vdivpd
+ * occupies it about as long as a 128-bit one on AMD's recent cores (Fog,
+ * "Instruction tables": Zen 2 to 4; Zen 5 by the frame's time); where it
+ * takes twice as long (older Intel cores) nothing is lost. */
+#if RENDER_PAIRS && defined(__AVX2__)
+#include <immintrin.h>
+#define RENDER_QUADS 1
+#else
+#define RENDER_QUADS 0
 #endif
 
 /* Packet blocks of the tile loop: 4 x 2 pixels, one packet of
@@ -187,6 +203,23 @@ static inline __m128d pair_distance_to_line(const __m128d a[3], const __m128d d[
 }
 #endif
 
+#if RENDER_QUADS
+/* pair_distance_to_line in four lanes. */
+static inline __m256d quad_distance_to_line(const __m256d a[3], const __m256d d[3])
+{
+    const __m256d along = _mm256_add_pd(
+        _mm256_add_pd(_mm256_mul_pd(a[0], d[0]), _mm256_mul_pd(a[1], d[1])),
+        _mm256_mul_pd(a[2], d[2]));
+    const __m256d perp0 = _mm256_sub_pd(a[0], _mm256_mul_pd(along, d[0]));
+    __m256d r2 = _mm256_mul_pd(perp0, perp0);
+    for (int k = 1; k < 3; k++) {
+        const __m256d perp = _mm256_sub_pd(a[k], _mm256_mul_pd(along, d[k]));
+        r2 = _mm256_add_pd(r2, _mm256_mul_pd(perp, perp));
+    }
+    return _mm256_sqrt_pd(r2);
+}
+#endif
+
 /* Distances from q[0..3] to the line through p along the unit vector
  * d: the same operations for each, in this order. */
 static void distances_to_line(const double *const q[4], const double p[3], const double d[3],
@@ -301,7 +334,37 @@ static void unproject_row_fill(const struct render_pass *sh, const struct unproj
      * is finite (a sum that overflows only sends the row to the test
      * point by point below). */
     __m128d sum = _mm_setzero_pd();
-    for (int i = 0; i < UNPROJECT_COLS; i += 2) {
+    int first_pair = 0;
+#if RENDER_QUADS
+    /* Four points a lane each, the same sums in the same order; the
+     * row's last pair below. */
+    __m256d axis4[4], zn4[4], zf4[4], last4[4];
+    for (int r = 0; r < 4; r++) {
+        axis4[r] = _mm256_set1_pd(u->axis[r]);
+        zn4[r] = _mm256_set1_pd(m[8 + r] * -1.0);
+        zf4[r] = _mm256_set1_pd(m[8 + r] * 1.0);
+        last4[r] = _mm256_set1_pd(m[12 + r]);
+    }
+    __m256d sum4 = _mm256_setzero_pd();
+    for (; first_pair + 3 < UNPROJECT_COLS; first_pair += 4) {
+        const int i = first_pair;
+        const __m256d s3 = _mm256_add_pd(_mm256_loadu_pd(&c->col[3][i]), axis4[3]);
+        const __m256d wn = _mm256_add_pd(_mm256_add_pd(s3, zn4[3]), last4[3]);
+        const __m256d wf = _mm256_add_pd(_mm256_add_pd(s3, zf4[3]), last4[3]);
+        for (int r = 0; r < 3; r++) {
+            const __m256d s = _mm256_add_pd(_mm256_loadu_pd(&c->col[r][i]), axis4[r]);
+            const __m256d n = _mm256_div_pd(_mm256_add_pd(_mm256_add_pd(s, zn4[r]), last4[r]), wn);
+            const __m256d f = _mm256_div_pd(_mm256_add_pd(_mm256_add_pd(s, zf4[r]), last4[r]), wf);
+            _mm256_storeu_pd(&u->near_pt[r][i], n);
+            _mm256_storeu_pd(&u->far_pt[r][i], f);
+            sum4 = _mm256_add_pd(_mm256_add_pd(sum4, n), f);
+        }
+    }
+    /* The four lanes' sums into the pair's (any order: only whether the
+     * sum is finite counts). */
+    sum = _mm_add_pd(_mm256_castpd256_pd128(sum4), _mm256_extractf128_pd(sum4, 1));
+#endif
+    for (int i = first_pair; i < UNPROJECT_COLS; i += 2) {
         const __m128d s3 = _mm_add_pd(_mm_loadu_pd(&c->col[3][i]), axis[3]);
         const __m128d wn = _mm_add_pd(_mm_add_pd(s3, zn[3]), last[3]);
         const __m128d wf = _mm_add_pd(_mm_add_pd(s3, zf[3]), last[3]);
@@ -520,6 +583,68 @@ static inline int ray_pair(const struct unproject_row *a, const struct unproject
     return ok;
 }
 
+#if RENDER_QUADS
+/* Four points given coordinate by coordinate (x, y, z) into out[4][3]. */
+static inline void store_points4(float *out, __m128 x, __m128 y, __m128 z)
+{
+    const __m128 xy_lo = _mm_unpacklo_ps(x, y);                        /* x0 y0 x1 y1 */
+    const __m128 xy_hi = _mm_unpackhi_ps(x, y);                        /* x2 y2 x3 y3 */
+    const __m128 yz_lo = _mm_unpacklo_ps(y, z);                        /* y0 z0 y1 z1 */
+    const __m128 zx = _mm_shuffle_ps(z, x, _MM_SHUFFLE(1, 1, 0, 0));  /* z0 z0 x1 x1 */
+    const __m128 zz = _mm_shuffle_ps(z, xy_hi, _MM_SHUFFLE(3, 2, 3, 2)); /* z2 z3 x3 y3 */
+    _mm_storeu_ps(out, _mm_shuffle_ps(xy_lo, zx, _MM_SHUFFLE(2, 0, 1, 0)));     /* x0 y0 z0 x1 */
+    _mm_storeu_ps(out + 4, _mm_shuffle_ps(yz_lo, xy_hi, _MM_SHUFFLE(1, 0, 3, 2))); /* y1 z1 x2 y2 */
+    _mm_storeu_ps(out + 8, _mm_shuffle_ps(zz, zz, _MM_SHUFFLE(1, 3, 2, 0)));    /* z2 x3 y3 z3 */
+}
+
+/* ray_pair of the four pixels at points i to i + 3 of row a in the four
+ * lanes, lane 0 the leftmost: each lane primary_ray's operations in its
+ * order.  Returns the mask of the lanes whose length is positive and
+ * finite. */
+static inline int ray_quad(const struct unproject_row *a, const struct unproject_row *b, int i,
+                           struct trace_packet *pk, int first, struct shade_cone cone[])
+{
+    __m256d p[3], d[3];
+    for (int k = 0; k < 3; k++) {
+        p[k] = _mm256_loadu_pd(&a->near_pt[k][i]);
+        d[k] = _mm256_sub_pd(_mm256_loadu_pd(&a->far_pt[k][i]), p[k]);
+    }
+    store_points4(&pk->org[first][0], _mm256_cvtpd_ps(p[0]), _mm256_cvtpd_ps(p[1]),
+                  _mm256_cvtpd_ps(p[2]));
+    const __m256d len = _mm256_sqrt_pd(
+        _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(d[0], d[0]), _mm256_mul_pd(d[1], d[1])),
+                      _mm256_mul_pd(d[2], d[2])));
+    const int ok = _mm256_movemask_pd(
+        _mm256_and_pd(_mm256_cmp_pd(len, _mm256_setzero_pd(), _CMP_GT_OQ),
+                      _mm256_cmp_pd(len, _mm256_set1_pd(INFINITY), _CMP_LT_OQ)));
+    _mm_storeu_ps(&pk->tmax[first], _mm256_cvtpd_ps(len));
+    for (int k = 0; k < 3; k++)
+        d[k] = _mm256_div_pd(d[k], len);
+    store_points4(&pk->dir[first][0], _mm256_cvtpd_ps(d[0]), _mm256_cvtpd_ps(d[1]),
+                  _mm256_cvtpd_ps(d[2]));
+    __m256d dist[4];
+    for (int h = 0; h < 4; h++) {
+        const struct unproject_row *q = h % 2 ? b : a;
+        const int at = h % 2 ? i : i + 1;
+        __m256d v[3];
+        for (int k = 0; k < 3; k++)
+            v[k] = _mm256_sub_pd(
+                _mm256_loadu_pd(h < 2 ? &q->near_pt[k][at] : &q->far_pt[k][at]), p[k]);
+        dist[h] = quad_distance_to_line(v, d);
+    }
+    /* max_left as vmaxpd with y first, as maxpd in ray_pair. */
+    const __m256d zero = _mm256_setzero_pd();
+    const __m256d width = _mm256_max_pd(dist[1], _mm256_max_pd(dist[0], zero));
+    const __m256d growth = _mm256_max_pd(_mm256_sub_pd(dist[3], dist[1]),
+                                         _mm256_max_pd(_mm256_sub_pd(dist[2], dist[0]), zero));
+    const __m256d spread = _mm256_div_pd(growth, len);
+    const __m128 w = _mm256_cvtpd_ps(width), sp = _mm256_cvtpd_ps(spread);
+    _mm_storeu_ps((float *)&cone[first], _mm_unpacklo_ps(w, sp));
+    _mm_storeu_ps((float *)&cone[first + 2], _mm_unpackhi_ps(w, sp));
+    return ok;
+}
+#endif
+
 /* The rays of the 4 x 2 block whose first pixel is point i of the
  * cache's first row (rows 0 to 2 whole) straight into the packet and the
  * cones: primary_ray's rays and cones.  Returns 0 when one would leave
@@ -528,6 +653,14 @@ static inline int ray_pair(const struct unproject_row *a, const struct unproject
 static inline int block_rays(const struct unproject_cache *c, int i, struct trace_packet *pk,
                              struct shade_cone cone[])
 {
+#if RENDER_QUADS
+    /* A block row a quad. */
+    const int ok = ray_quad(c->rows[0], c->rows[1], i, pk, 0, cone) &
+                   ray_quad(c->rows[1], c->rows[2], i, pk, 4, cone);
+    for (int k = 0; k < TRACE_PACKET; k += 4)
+        _mm_storeu_ps(&pk->tmin[k], _mm_setzero_ps());
+    return ok == 15;
+#else
     /* Written out pair by pair: constant offsets into the packet. */
     const int ok = ray_pair(c->rows[0], c->rows[1], i, pk, 0, cone) &
                    ray_pair(c->rows[0], c->rows[1], i + 2, pk, 2, cone) &
@@ -536,6 +669,7 @@ static inline int block_rays(const struct unproject_cache *c, int i, struct trac
     for (int k = 0; k < TRACE_PACKET; k += 4)
         _mm_storeu_ps(&pk->tmin[k], _mm_setzero_ps());
     return ok == 3;
+#endif
 }
 #endif
 
@@ -927,6 +1061,18 @@ void render_tile(struct render_pass *pass, uint32_t tile, int worker)
     int x0 = (int)(tile % (uint32_t)pass->tiles_x) * RENDER_TILE_SIZE;
     int y0 = (int)(tile / (uint32_t)pass->tiles_x) * RENDER_TILE_SIZE;
     if (pass->scene.kernels && pass->scene.kernels->closest_packet) {
+#if !defined(RENDER_UNIT_AVX2)
+        /* The AVX2 copy of the packet loop (render_avx2.c) when the
+         * context traces with AVX2 or AVX-512 (trace/kernels.c has then
+         * checked that the CPU and the OS run AVX2). */
+        if (pass->scene.kernels->isa >= TRACE_ISA_AVX2) {
+            const render_tile_packets_fn avx2 = render_tile_packets_avx2_unit();
+            if (avx2) {
+                avx2(pass, &sc, x0, y0);
+                return;
+            }
+        }
+#endif
         render_tile_packets(pass, &sc, x0, y0);
         return;
     }

@@ -172,6 +172,15 @@ uint32_t render_pass_tiles(const struct render_pass *pass);
 /* Renders tile `tile` into the pass's image on behalf of worker `worker`
  * (0 .. threads - 1, the index of its counters). */
 void render_tile(struct render_pass *pass, uint32_t tile, int worker);
+/* render_tile's packet loop compiled for AVX2 (render_avx2.c: the same
+ * source, so the same pixels bit for bit, with a row's unprojection and
+ * a block row's camera rays four at a time), which render_tile calls
+ * when the scene's traversal table is AVX2 or AVX-512; NULL where that
+ * unit is absent (no AVX2 compiler target, RT_NO_SIMD). */
+struct shade_context;
+typedef void (*render_tile_packets_fn)(struct render_pass *pass, struct shade_context *sc,
+                                       int x0, int y0);
+render_tile_packets_fn render_tile_packets_avx2_unit(void);
 /* After every tile: rasterises the lines and points of the committed
  * instances over the image (raster.h), on the calling thread. */
 void render_pass_raster(struct render_pass *pass);

@@ -1,0 +1,46 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * render_avx2.c - the frame's tile loop with packets (render_tile_packets)
+ * and everything it calls in render.c, compiled again with AVX2 enabled
+ * (CMakeLists.txt gives this file -mavx2 and -ffp-contract=off, no FMA).
+ * render.c is included with its external functions renamed (suffix
+ * _avx2); under __AVX2__ it unprojects a row of pixel centres and makes
+ * a block row's four camera rays in the 256-bit double lanes
+ * (RENDER_QUADS), each lane the operations of the pairs in their order,
+ * so the same rays, cones and pixels bit for bit.  What the change buys
+ * is half the divider instructions (sqrtpd, divpd) of the camera rays,
+ * which bound that code.  render_tile calls this copy's packet loop when
+ * the scene's traversal table is AVX2 or AVX-512 (trace/kernels.c has
+ * checked that the CPU and the operating system run AVX2 then).  Under
+ * RT_NO_SIMD, or where the compiler does not target AVX2, the unit is
+ * absent (render_tile_packets_avx2_unit returns NULL).
+ */
+#include <stddef.h>
+
+#if defined(__AVX2__) && !defined(RT_NO_SIMD)
+#define RENDER_UNIT_AVX2 1
+
+#define render_framebuffer_release render_framebuffer_release_avx2
+#define render_pass_begin render_pass_begin_avx2
+#define render_pass_tiles render_pass_tiles_avx2
+#define render_tile render_tile_avx2
+#define render_pass_raster render_pass_raster_avx2
+#define render_pass_end render_pass_end_avx2
+#define render_frame render_frame_avx2
+#define render_trace_rays render_trace_rays_avx2
+#define render_occluded_rays render_occluded_rays_avx2
+
+#include "render/render.c"
+
+render_tile_packets_fn render_tile_packets_avx2_unit(void)
+{
+    return render_tile_packets;
+}
+#else
+#include "render/render.h"
+
+render_tile_packets_fn render_tile_packets_avx2_unit(void)
+{
+    return NULL;
+}
+#endif
