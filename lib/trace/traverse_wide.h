@@ -33,7 +33,6 @@
  * stored order instead (wide8_push_stored says why).
  */
 #include <immintrin.h>
-#include <stddef.h>
 
 #include "trace/intersect_tri4.h"
 
@@ -626,29 +625,6 @@ static inline int walk_wide8(const struct bvh4 *wide, struct wide_state *s, uint
 WIDE8_LEAF_TEST(wide8_packet_closest, wide_packet_test, 0, 1)
 WIDE8_LEAF_TEST(wide8_packet_full, wide_packet_test, 0, 0)
 WIDE8_LEAF_TEST(wide8_packet_any, wide_packet_test, 1, 1)
-
-/* Per ray octant (bit k: inv_dir[k] negative, -0 included), the byte
- * offsets into a node's bounds of the near and far plane of x, y, z:
- * row k is min k, row 3 + k max k, and a negative direction has its
- * near plane at the max (walk_wide8_ray). */
-#define WIDE8_ROW ((size_t)sizeof(((const struct bvh8_node *)0)->bounds[0]))
-#define WIDE8_ROWS(nx, ny, nz)                                                                   \
-    {(nx) ? 3 * WIDE8_ROW : 0, (nx) ? 0 : 3 * WIDE8_ROW, (ny) ? 4 * WIDE8_ROW : WIDE8_ROW,     \
-     (ny) ? WIDE8_ROW : 4 * WIDE8_ROW, (nz) ? 5 * WIDE8_ROW : 2 * WIDE8_ROW,                   \
-     (nz) ? 2 * WIDE8_ROW : 5 * WIDE8_ROW}
-static const size_t wide8_rows[8][6] = {
-    WIDE8_ROWS(0, 0, 0), WIDE8_ROWS(1, 0, 0), WIDE8_ROWS(0, 1, 0), WIDE8_ROWS(1, 1, 0),
-    WIDE8_ROWS(0, 0, 1), WIDE8_ROWS(1, 0, 1), WIDE8_ROWS(0, 1, 1), WIDE8_ROWS(1, 1, 1)};
-#undef WIDE8_ROWS
-#undef WIDE8_ROW
-
-/* walk_wide8_ray reads the three signs of inv_dir with one 16-byte load,
- * whose fourth lane is tmin. */
-typedef char trace_ray_tmin_follows_inv_dir[offsetof(struct trace_ray, tmin) ==
-                                                    offsetof(struct trace_ray, inv_dir) +
-                                                        3 * sizeof(float)
-                                                ? 1
-                                                : -1];
 
 #define WIDE8_RAY walk_wide8_ray
 #define WIDE8_RAY_LEAF8 0

@@ -20,12 +20,24 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
     const struct trace_ray *ray = s->ray;
     const struct bvh8_node *nodes = wide->nodes8;
     const struct tri4_packet *packets = wide->packets;
-    /* The three sign bits of inv_dir in one movemask (lanes 0-2; lane 3
-     * is tmin, struct trace_ray, whose bit is dropped): the octant, and
-     * the row of its near and far planes per axis (wide8_rows), read
-     * where the node test's vectors are set, not computed and kept. */
-    const int octant = _mm_movemask_ps(_mm_loadu_ps(ray->inv_dir)) & 7;
-    const size_t *const rows = wide8_rows[octant];
+    size_t near_x, near_y, near_z, far_x, far_y, far_z;
+    int octant = 0;
+    {
+        /* Row k is min k, row 3 + k max k; a negative direction (-0
+         * too) has its near plane at the max.  By arithmetic on the sign
+         * bits: near + far = 2k + 3 rows. */
+        const size_t row = sizeof(nodes[0].bounds[0]);
+        uint32_t bits[3];
+        memcpy(bits, ray->inv_dir, sizeof(bits));
+        const size_t nx = bits[0] >> 31, ny = bits[1] >> 31, nz = bits[2] >> 31;
+        near_x = nx * 3 * row;
+        far_x = 3 * row - near_x;
+        near_y = (1 + ny * 3) * row;
+        far_y = 5 * row - near_y;
+        near_z = (2 + nz * 3) * row;
+        far_z = 7 * row - near_z;
+        octant = (int)(nx | ny << 1 | nz << 2);
+    }
     const __m256i order_shift = _mm256_setr_epi32(0, 3, 6, 9, 12, 15, 18, 21);
     uint32_t st_child[WIDE_STACK];
     uint32_t st_count[WIDE_STACK];
@@ -69,9 +81,6 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
             const __m256 inv_y = _mm256_set1_ps(ray->inv_dir[1]);
             const __m256 inv_z = _mm256_set1_ps(ray->inv_dir[2]);
             const __m256 tmin8 = _mm256_set1_ps(ray->tmin);
-            const size_t near_x = rows[0], far_x = rows[1];
-            const size_t near_y = rows[2], far_y = rows[3];
-            const size_t near_z = rows[4], far_z = rows[5];
             /* Inner nodes until a leaf lane comes up (or the stack empties). */
             while (!cur_count) {
                 const struct bvh8_node *n = &nodes[cur];
