@@ -718,6 +718,12 @@ int accel_collapse_wide_reuse(struct bvh4 *out, const struct bvh *bvh, const flo
      * rays 0.05 slower).  The threshold 1/4 lies in the gap between the
      * kitchen (0.02) and the other meshes (0.42 and more). */
     out->leaf8 = width == 8 && tri && packets && leaf_miss_share(out) < 0.25 ? 1u : 0u;
+#if defined(TRACELIST_FORCE_LEAF8)
+    /* For timing the two leaves against each other on one mesh (the
+     * walks' code is the same either way): -DTRACELIST_FORCE_LEAF8=1 takes
+     * the 8-lane leaf on every 8-wide layout, =0 on none. */
+    out->leaf8 = width == 8 && tri && packets ? (uint32_t)(TRACELIST_FORCE_LEAF8 != 0) : 0u;
+#endif
     out->leaf_extent = width == 8 && tri && packets ? leaf_extent_mean(out) : 0.0f;
     out->source = source;
     out->packet_slot = packet_slot;
