@@ -233,18 +233,18 @@ static inline unsigned tri8_test(const struct tri8_rays *r, const struct tri4_pa
         _mm256_or_ps(_mm256_cmp_ps(U, zero, _CMP_EQ_OQ), _mm256_cmp_ps(V, zero, _CMP_EQ_OQ)),
         _mm256_cmp_ps(W, zero, _CMP_EQ_OQ));
     const unsigned deferred = (unsigned)_mm256_movemask_ps(on_edge) & lanes;
-    const __m256 any_neg = _mm256_or_ps(
-        _mm256_or_ps(_mm256_cmp_ps(U, zero, _CMP_LT_OQ), _mm256_cmp_ps(V, zero, _CMP_LT_OQ)),
-        _mm256_cmp_ps(W, zero, _CMP_LT_OQ));
-    const __m256 any_pos = _mm256_or_ps(
-        _mm256_or_ps(_mm256_cmp_ps(U, zero, _CMP_GT_OQ), _mm256_cmp_ps(V, zero, _CMP_GT_OQ)),
-        _mm256_cmp_ps(W, zero, _CMP_GT_OQ));
-    __m256 keep = _mm256_andnot_ps(_mm256_and_ps(any_neg, any_pos),
-                                   _mm256_castsi256_ps(_mm256_set1_epi32(-1)));
+    /* isect_triangle's sign test for the lanes not deferred, where U, V
+     * and W are all non-zero: "outside when the signs differ" is a sign
+     * bit of U ^ V or U ^ W.  There, the signs being equal, det = U + V
+     * + W is not 0 (a sum of non-zero values of one sign rounds away from
+     * 0), so det == 0 needs no test; a NaN among them makes det NaN,
+     * which |det| < inf refuses as isfinite(det) does.  Only the sign
+     * bit of keep is meaningful (every use ends in a movemask). */
+    const __m256 mixed = _mm256_or_ps(_mm256_xor_ps(U, V), _mm256_xor_ps(U, W));
     const __m256 det = _mm256_add_ps(_mm256_add_ps(U, V), W);
     const __m256 abs_det = _mm256_andnot_ps(_mm256_set1_ps(-0.0f), det);
-    keep = _mm256_and_ps(keep, _mm256_cmp_ps(det, zero, _CMP_NEQ_UQ));
-    keep = _mm256_and_ps(keep, _mm256_cmp_ps(abs_det, _mm256_set1_ps(INFINITY), _CMP_LT_OQ));
+    __m256 keep =
+        _mm256_andnot_ps(mixed, _mm256_cmp_ps(abs_det, _mm256_set1_ps(INFINITY), _CMP_LT_OQ));
     if (!(((unsigned)_mm256_movemask_ps(keep) | deferred) & lanes)) {
         /* No ray passes the edge test, none is deferred: the depth
          * range and the slabs can only reject more. */
