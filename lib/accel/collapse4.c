@@ -544,57 +544,6 @@ static void write_nodes(void *arg, uint32_t lo, uint32_t hi)
 }
 
 /*
- * The share of leaf packet tests that the sign test alone refuses, as
- * the collapse can estimate it: by Cauchy's formula a random line that
- * meets a convex box meets a convex body inside it with probability the
- * ratio of their surfaces (Santalo 1976, ch. 13; a triangle's surface is
- * twice its area), so a leaf lane is missed by a line through its box
- * with probability about 1 - min(1, its triangles' area / half the box's
- * surface), and a lane's box is met in proportion to its surface.  The
- * mean over the leaf lanes of every fourth node (a quarter of the
- * triangles' areas to compute), weighted so: soup 0.80, bumpy 0.63,
- * gears 0.42, the kitchen 0.02 (large triangles filling flat boxes; over
- * every node 0.80, 0.63, 0.47, 0.06).  Only a choice of walk depends on
- * it (bvh4_layout.h, leaf8), so the sample need not be exact.
- */
-static double leaf_miss_share(const struct bvh4 *w)
-{
-    double sum = 0.0, weight = 0.0;
-    for (uint32_t i = 0; i < w->node_count; i += 4) {
-        const struct bvh8_node *n = &w->nodes8[i];
-        for (uint32_t l = 0; l < 8; l++) {
-            const uint32_t count = n->count[l];
-            if (!count)
-                continue;
-            const double dx = (double)n->bounds[3][l] - n->bounds[0][l];
-            const double dy = (double)n->bounds[4][l] - n->bounds[1][l];
-            const double dz = (double)n->bounds[5][l] - n->bounds[2][l];
-            const double half_surface = dx * dy + dy * dz + dz * dx;
-            if (!(half_surface > 0.0))
-                continue;
-            double area = 0.0;
-            for (uint32_t j = 0; j < count; j++) {
-                const struct tri4_packet *p = &w->packets[n->child[l] + j / 4];
-                const uint32_t q = j % 4;
-                double e1[3], e2[3];
-                for (int k = 0; k < 3; k++) {
-                    e1[k] = (double)p->v[1][k][q] - p->v[0][k][q];
-                    e2[k] = (double)p->v[2][k][q] - p->v[0][k][q];
-                }
-                const double cx = e1[1] * e2[2] - e1[2] * e2[1];
-                const double cy = e1[2] * e2[0] - e1[0] * e2[2];
-                const double cz = e1[0] * e2[1] - e1[1] * e2[0];
-                area += 0.5 * sqrt(cx * cx + cy * cy + cz * cz);
-            }
-            const double hit = area / half_surface;
-            sum += 2.0 * half_surface * (hit < 1.0 ? 1.0 - hit : 0.0);
-            weight += 2.0 * half_surface;
-        }
-    }
-    return weight > 0.0 ? sum / weight : 1.0;
-}
-
-/*
  * The leaves' size (bvh4_layout.h, leaf_extent): the mean over the leaf
  * lanes of every fourth node of the largest extent of a lane's box.  An
  * unweighted mean: weighted by surface (as a ray meets the boxes) the
@@ -712,18 +661,16 @@ int accel_collapse_wide_reuse(struct bvh4 *out, const struct bvh *bvh, const flo
     out->packet_count = packets;
     out->prefetch_top =
         bvh4_node_bytes(out) + bvh4_leaf_bytes(out) >= BVH_WIDE_PREFETCH_BYTES ? 1u : 0u;
-    /* One 8-lane test for a leaf of two packets pays where few packet
-     * tests leave at the sign test (the kitchen's random rays 0.74 ->
-     * 0.80 of Embree), two 4-lane tests where most do (the soup: primary
-     * rays 0.05 slower).  The threshold 1/4 lies in the gap between the
-     * kitchen (0.02) and the other meshes (0.42 and more). */
-    out->leaf8 = width == 8 && tri && packets && leaf_miss_share(out) < 0.25 ? 1u : 0u;
-#if defined(TRACELIST_FORCE_LEAF8)
-    /* For timing the two leaves against each other on one mesh (the
-     * walks' code is the same either way): -DTRACELIST_FORCE_LEAF8=1 takes
-     * the 8-lane leaf on every 8-wide layout, =0 on none. */
-    out->leaf8 = width == 8 && tri && packets ? (uint32_t)(TRACELIST_FORCE_LEAF8 != 0) : 0u;
-#endif
+    /* A leaf of two packets is one 8-lane test on every 8-wide layout.
+     * l8gate took it only where the collapse estimated that few packet
+     * tests stop at the sign test (the kitchen), after l8two's soup lost
+     * 0.05 of Embree with it; sleaf timed it forced on against that gate
+     * on a quiet machine and found no mesh or ray set slower (the loss
+     * had been l8two's change to every walk's code, which its own
+     * gate-off build lost as well), with 2-3 % fewer instructions a ray
+     * on gears (performance-log.md, sleaf).  The estimate cost about
+     * 3.5 % of a collapse. */
+    out->leaf8 = width == 8 && tri && packets ? 1u : 0u;
     out->leaf_extent = width == 8 && tri && packets ? leaf_extent_mean(out) : 0.0f;
     out->source = source;
     out->packet_slot = packet_slot;

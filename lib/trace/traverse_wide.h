@@ -727,11 +727,10 @@ WIDE8_LEAF_TEST(wide8_leaf8_any, wide_leaf8_test, 1, 1)
 #undef WIDE8_RAY_LEAF8
 
 /* The walks with one 8-lane test for a leaf of two packets
- * (walk_wide8_ray_leaf8), on a layout whose flag leaf8 the collapse set:
- * where few packet tests leave at the sign test (the kitchen), one 8-lane
- * pass replaces two full 4-lane passes; where most leave there (soup,
- * bumpy, gears), two early returns were cheaper than one that waits for
- * all eight lanes (bvh4_layout.h).  No copies with counters: the walks
+ * (walk_wide8_ray_leaf8), on a layout whose flag leaf8 the collapse set
+ * (every 8-wide layout with packets): one 8-lane pass instead of two
+ * 4-lane passes with their own early returns (bvh4_layout.h).  No copies
+ * with counters: the walks
  * above count the same nodes and triangles. */
 WIDE8_WALK(wide8_walk_closest_leaf8, walk_wide8_ray_leaf8, 0, 0, 0)
 WIDE8_WALK(wide8_walk_closest_early_leaf8, walk_wide8_ray_leaf8, 0, 0, 1)
