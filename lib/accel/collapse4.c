@@ -661,16 +661,6 @@ int accel_collapse_wide_reuse(struct bvh4 *out, const struct bvh *bvh, const flo
     out->packet_count = packets;
     out->prefetch_top =
         bvh4_node_bytes(out) + bvh4_leaf_bytes(out) >= BVH_WIDE_PREFETCH_BYTES ? 1u : 0u;
-    /* A leaf of two packets is one 8-lane test on every 8-wide layout.
-     * l8gate took it only where the collapse estimated that few packet
-     * tests stop at the sign test (the kitchen), after l8two's soup lost
-     * 0.05 of Embree with it; sleaf timed it forced on against that gate
-     * on a quiet machine and found no mesh or ray set slower (the loss
-     * had been l8two's change to every walk's code, which its own
-     * gate-off build lost as well), with 2-3 % fewer instructions a ray
-     * on gears (performance-log.md, sleaf).  The estimate cost about
-     * 3.5 % of a collapse. */
-    out->leaf8 = width == 8 && tri && packets ? 1u : 0u;
     out->leaf_extent = width == 8 && tri && packets ? leaf_extent_mean(out) : 0.0f;
     out->source = source;
     out->packet_slot = packet_slot;

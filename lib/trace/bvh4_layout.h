@@ -134,12 +134,6 @@ struct bvh4 {
      * push (traverse_wide.h); a smaller layout stays in the caches and
      * the prefetch would only cost instructions. */
     uint32_t prefetch_top;
-    /* 1 when the 8-wide single-ray walks test a leaf of two packets with
-     * one 8-lane call (traverse_wide.h, wide8_walk_*_leaf8): the collapse
-     * sets it on every 8-wide layout with triangle packets (collapse4.c);
-     * the walks without it remain for counters and the packet kernels'
-     * fallback.  The answers are the same either way. */
-    uint32_t leaf8;
     /* The leaves' size: the mean over the leaf lanes of the largest
      * extent of a lane's box (collapse4.c, leaf_extent_mean; a sample);
      * 0 without leaves.  The 8-wide packet walk compares it with its

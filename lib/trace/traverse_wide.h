@@ -726,11 +726,9 @@ WIDE8_LEAF_TEST(wide8_leaf8_any, wide_leaf8_test, 1, 1)
 #undef WIDE8_RAY
 #undef WIDE8_RAY_LEAF8
 
-/* The walks with one 8-lane test for a leaf of two packets
- * (walk_wide8_ray_leaf8), on a layout whose flag leaf8 the collapse set
- * (every 8-wide layout with packets): one 8-lane pass instead of two
- * 4-lane passes with their own early returns (bvh4_layout.h).  No copies
- * with counters: the walks
+/* The single-ray walks with one 8-lane test for a leaf of two packets
+ * (walk_wide8_ray_leaf8): one 8-lane pass instead of two 4-lane passes
+ * with their own early returns.  No copies with counters: the walks
  * above count the same nodes and triangles. */
 WIDE8_WALK(wide8_walk_closest_leaf8, walk_wide8_ray_leaf8, 0, 0, 0)
 WIDE8_WALK(wide8_walk_closest_early_leaf8, walk_wide8_ray_leaf8, 0, 0, 1)
@@ -841,8 +839,9 @@ static inline int walk_wide(const struct bvh4 *wide, const struct bvh *bvh, cons
     return walk(bvh, tri, ray, t_max, any_hit, hit, counters);
 }
 
-/* walk_wide for the single-ray entries below, which also choose the
- * 8-wide walks with the 8-lane leaf (wide->leaf8).  walk_wide above, as
+/* walk_wide for the single-ray entries below, whose 8-wide walks test a
+ * leaf of two packets with one 8-lane call (walk_wide8_ray_leaf8; sleaf
+ * found it nowhere slower than two 4-lane calls).  walk_wide above, as
  * it was, stays the packet kernels' fallback (packet_wide.h): with the
  * choice inlined there, their code changed too. */
 #if defined(__GNUC__)
@@ -859,15 +858,12 @@ static inline int walk_wide_single(const struct bvh4 *wide, const struct bvh *bv
     if (wide->width == 8) {
         if (any_hit)
             return counters ? wide8_walk_any_stats(wide, ray, t_max, hit, counters)
-                   : wide->leaf8 ? wide8_walk_any_leaf8(wide, ray, t_max, hit, counters)
-                                 : wide8_walk_any(wide, ray, t_max, hit, counters);
+                            : wide8_walk_any_leaf8(wide, ray, t_max, hit, counters);
         if (wide->prefetch_top)
             return counters ? wide8_walk_closest_early_stats(wide, ray, t_max, hit, counters)
-                   : wide->leaf8 ? wide8_walk_closest_early_leaf8(wide, ray, t_max, hit, counters)
-                                 : wide8_walk_closest_early(wide, ray, t_max, hit, counters);
+                            : wide8_walk_closest_early_leaf8(wide, ray, t_max, hit, counters);
         return counters ? wide8_walk_closest_stats(wide, ray, t_max, hit, counters)
-               : wide->leaf8 ? wide8_walk_closest_leaf8(wide, ray, t_max, hit, counters)
-                             : wide8_walk_closest(wide, ray, t_max, hit, counters);
+                        : wide8_walk_closest_leaf8(wide, ray, t_max, hit, counters);
     }
 #endif
     /* Two copies of each walk: without counters (the caller passed
