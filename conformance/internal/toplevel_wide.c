@@ -11,16 +11,27 @@
  * of many instances whose boxes coincide and overlap, with equal-t hits
  * between instances (duplicated instances, coplanar overlapping quads),
  * whose winner is the lower instance whatever the order of visits.
+ *
+ * Some instances have the identity matrix, whose rays the walks take
+ * as the world rays without transforming them (trace_instance.identity):
+ * the same scene with that flag cleared (every ray transformed) gives
+ * the same answers, for rays with zero, negative-zero and tiny
+ * components too; and 8-ray packets (trace_scene_closest_packet and
+ * trace_scene_any_packet: one octant and finite origins test the top
+ * level box by box, mixed octants ray by ray) give each ray the single
+ * walk's answer.
  */
 #include <rt/rt.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "check.h"
 #include "scene/scene.h"
 #include "scene/update.h"
 #include "trace/kernels.h"
+#include "trace/packet_scene.h"
 #include "trace/scene_traverse.h"
 
 static uint32_t rng_state = 12345u;
@@ -187,6 +198,12 @@ int main(void)
             p->t[k] = floor((double)rnd() * 16.0) * 0.5;
         if (i % 5 == 1)
             p->t[2] = 2.0; /* coplanar quads in z = 2, overlapping */
+        if (i % 7 == 3) {
+            /* The identity: object space is world space. */
+            p->s = 1.0;
+            p->quarter = 0;
+            p->t[0] = p->t[1] = p->t[2] = 0.0;
+        }
     }
 
     struct bvh_build_params params;
@@ -212,6 +229,21 @@ int main(void)
                          scenes[0].frame.top.node_count * sizeof(struct bvh_node)) == 0);
         }
         CHECK(scenes[0].frame.trace_instance_count == INSTANCES);
+        /* The best scene's instances with the identity flag cleared: the
+         * reference for the flag's shortcut. */
+        uint32_t identities = 0;
+        const uint32_t n_inst = scenes[2].frame.trace_instance_count;
+        struct trace_instance *plain = malloc(n_inst * sizeof(*plain));
+        CHECK(plain != NULL);
+        if (!plain)
+            return test_summary("toplevel_wide");
+        memcpy(plain, scenes[2].frame.trace_instances, n_inst * sizeof(*plain));
+        for (uint32_t i = 0; i < n_inst; i++) {
+            identities += plain[i].identity;
+            plain[i].identity = 0;
+        }
+        CHECK(identities > 0 && identities < n_inst);
+        long flag_mismatches = 0;
 
         long mismatches = 0, hits = 0, ties = 0;
         uint64_t top_tests[3] = {0, 0, 0};
@@ -236,6 +268,14 @@ int main(void)
                     for (int k = 0; k < 3; k++)
                         dir[k] = (float)p->t[k] + 0.25f - org[k];
                 }
+                if (r % 16 == 2) {
+                    /* Zero, negative-zero and tiny components, which the
+                     * identity's shortcut leaves to the transform. */
+                    const int k = (int)(rnd() * 3.0f) % 3;
+                    const float z[4] = {0.0f, -0.0f, 1e-30f, -1e-38f};
+                    dir[k] = z[(int)(rnd() * 4.0f) % 4];
+                    org[(k + 1) % 3] = z[(int)(rnd() * 4.0f) % 4];
+                }
             }
             struct trace_scene_hit ref, h;
             struct trace_scene_counters c;
@@ -258,6 +298,13 @@ int main(void)
                         mismatches++;
                 }
             }
+            memset(&c, 0, sizeof(c));
+            ts = view_of(&scenes[2], best, 1);
+            ts.instances = plain;
+            int got = trace_scene_closest(&ts, org, dir, 0.0f, INFINITY, &h, &c);
+            int any = trace_scene_any(&ts, org, dir, 0.0f, INFINITY, &c);
+            if (!same_hit(got_ref, &ref, got, &h) || any != any_ref)
+                flag_mismatches++;
             /* An equal-t hit of a duplicated instance: the lower wins. */
             if (got_ref) {
                 const struct placement *p = &places[ref.instance];
@@ -271,6 +318,59 @@ int main(void)
                (double)top_tests[1] / 20000.0, (double)top_tests[2] / 20000.0);
         CHECK(hits > 5000);
         CHECK(mismatches == 0);
+        CHECK(flag_mismatches == 0);
+        /* Packets of 8 rays against the single walk, ray by ray: from one
+         * origin in one octant (the top level box by box), or mixed. */
+        long packet_mismatches = 0, packet_hits = 0;
+        for (int q = 0; q < 3000; q++) {
+            struct trace_packet pk;
+            memset(&pk, 0, sizeof(pk));
+            const int coherent = q % 3 != 0;
+            const float o[3] = {rnd() * 14.0f - 2.0f, rnd() * 14.0f - 2.0f, 12.0f + rnd() * 4.0f};
+            const float d[3] = {rnd() - 0.5f, rnd() - 0.5f, -1.0f};
+            for (int i = 0; i < TRACE_PACKET; i++) {
+                for (int k = 0; k < 3; k++) {
+                    pk.org[i][k] = coherent ? o[k] : rnd() * 14.0f - 2.0f;
+                    pk.dir[i][k] = coherent ? d[k] + (rnd() - 0.5f) * 0.05f : rnd() * 2.0f - 1.0f;
+                }
+                if (q % 5 == 4 && i == 3)
+                    pk.dir[i][0] = -0.0f; /* a zero component in one ray */
+                pk.tmin[i] = 0.0f;
+                pk.tmax[i] = q % 7 == 6 && i % 2 ? 9.0f : INFINITY;
+            }
+            pk.active = q % 11 == 10 ? 0xB5u : 0xFFu;
+            const struct trace_instance *sets[2] = {scenes[2].frame.trace_instances, plain};
+            for (int f = 0; f < 2; f++) {
+                struct trace_scene_counters c;
+                memset(&c, 0, sizeof(c));
+                struct trace_scene ts = view_of(&scenes[2], best, 1);
+                ts.instances = sets[f];
+                struct trace_scene_hit hs[TRACE_PACKET];
+                const unsigned got = trace_scene_closest_packet(&ts, &pk, hs, &c);
+                const unsigned any = trace_scene_any_packet(&ts, &pk, &c);
+                struct trace_scene rs = view_of(&scenes[0], scalar, 0);
+                for (int i = 0; i < TRACE_PACKET; i++) {
+                    if (!(pk.active >> i & 1u)) {
+                        packet_mismatches += (got >> i & 1u) || (any >> i & 1u);
+                        continue;
+                    }
+                    struct trace_scene_hit ref1;
+                    const int g = trace_scene_closest(&rs, pk.org[i], pk.dir[i], pk.tmin[i],
+                                                      pk.tmax[i], &ref1, &c);
+                    const int a = trace_scene_any(&rs, pk.org[i], pk.dir[i], pk.tmin[i],
+                                                  pk.tmax[i], &c);
+                    packet_hits += g;
+                    if (!same_hit(g, &ref1, (int)(got >> i & 1u), &hs[i]) ||
+                        a != (int)(any >> i & 1u))
+                        packet_mismatches++;
+                }
+            }
+        }
+        printf("packets: %ld hits, %ld mismatches; identity instances %u of %u\n", packet_hits,
+               packet_mismatches, identities, n_inst);
+        CHECK(packet_hits > 10000);
+        CHECK(packet_mismatches == 0);
+        free(plain);
         /* A winner never has an identical lower-indexed twin. */
         CHECK(ties == 0);
         /* The wide walk ran (tests counted per lane, a multiple of the

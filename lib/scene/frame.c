@@ -235,13 +235,6 @@ static int top_fits_wide(const struct bvh *top)
     return 1;
 }
 
-static void set_rows(struct trace_instance *ti, const double m[16])
-{
-    for (int r = 0; r < 3; r++)
-        for (int c = 0; c < 4; c++)
-            ti->world_to_object[4 * r + c] = m[4 * c + r];
-}
-
 /* 1 when the instance can be hit (its box, rounded outwards, in *box). */
 static int instance_box(const struct scene_instance *inst, struct aabb *box)
 {
@@ -315,7 +308,7 @@ static int place_group(struct scene_frame *frame, const struct bvh_build_params 
     frame->flats.flattened++;
     struct trace_instance *top = &tops[*n];
     memset(top, 0, sizeof(*top));
-    set_rows(top, list->items[begin].world_to_root);
+    trace_instance_set_rows(top, list->items[begin].world_to_root);
     top->object = flat;
     top->member_base = *m; /* relative to the members; build_top adds the tops */
     top->member_count = count;
@@ -328,7 +321,7 @@ static int place_group(struct scene_frame *frame, const struct bvh_build_params 
             continue;
         struct trace_instance *ti = &members[(*m)++];
         memset(ti, 0, sizeof(*ti));
-        set_rows(ti, inst->world_to_object);
+        trace_instance_set_rows(ti, inst->world_to_object);
         ti->instance_id = i;
         ti->object = inst->object;
     }
@@ -369,7 +362,7 @@ static int build_top(struct scene_frame *frame, const struct bvh_build_params *p
                 if (!instance_box(&list->items[i], &box))
                     continue;
                 boxes[n] = box;
-                set_rows(&tis[n], list->items[i].world_to_object);
+                trace_instance_set_rows(&tis[n], list->items[i].world_to_object);
                 tis[n].instance_id = i;
                 tis[n].object = list->items[i].object;
                 n++;
@@ -379,7 +372,7 @@ static int build_top(struct scene_frame *frame, const struct bvh_build_params *p
         struct aabb box;
         if (instance_box(inst, &box)) {
             boxes[n] = box;
-            set_rows(&tis[n], inst->world_to_object);
+            trace_instance_set_rows(&tis[n], inst->world_to_object);
             tis[n].instance_id = i;
             tis[n].object = inst->object;
             n++;

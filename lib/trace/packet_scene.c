@@ -38,7 +38,16 @@ struct packet_top {
     int far_row[TRACE_PACKET][3];
     int octant[TRACE_PACKET];
     unsigned found;
-    unsigned done; /* any hit: the rays with their hit */
+    unsigned done;  /* any hit: the rays with their hit */
+    unsigned plain; /* the rays whose origin and direction trace_scene_plain */
+    /* The rays' set-ups across lanes (lanes_by_box), when `across` is 1:
+     * every live ray has one octant and a finite origin. */
+    int across;
+#if ISECT_PAIR_SSE
+    float tmin_x[TRACE_PACKET] __attribute__((aligned(16)));
+    float org_x[3][TRACE_PACKET] __attribute__((aligned(16)));
+    float inv_x[3][TRACE_PACKET] __attribute__((aligned(16)));
+#endif
 };
 
 /* The number of rays in a mask of at most TRACE_PACKET bits.  Not
@@ -136,17 +145,26 @@ static void visit_instance(struct packet_top *s, uint32_t index, unsigned rays)
     counters->instance_tests += (uint64_t)popcount(rays);
     if (!scene->acquire(scene->user, inst->object, &view))
         return;
-    struct trace_ray o_ray[TRACE_PACKET];
+    struct trace_ray rays_o[TRACE_PACKET];
+    const struct trace_ray *o_ray = rays_o;
     float limit[TRACE_PACKET];
     unsigned live = 0;
-    for (unsigned m = rays; m; m &= m - 1u) {
+    if (inst->identity && !(rays & ~s->plain)) {
+        /* trace_scene_object_ray would copy each world ray as it is. */
+        o_ray = s->ray;
+        live = rays;
+    } else {
+        for (unsigned m = rays; m; m &= m - 1u) {
+            const int r = first(m);
+            if (trace_scene_object_ray(inst, s->p->org[r], s->p->dir[r], s->p->tmin[r],
+                                       &s->ray[r], &rays_o[r]))
+                live |= 1u << r;
+        }
+    }
+    /* visit_instance's limits: an equal t at a lower instance still comes
+     * back, one ulp above the best. */
+    for (unsigned m = live; m; m &= m - 1u) {
         const int r = first(m);
-        if (!trace_scene_object_ray(inst, s->p->org[r], s->p->dir[r], s->p->tmin[r], &s->ray[r],
-                                    &o_ray[r]))
-            continue;
-        live |= 1u << r;
-        /* visit_instance's limits: an equal t at a lower instance still
-         * comes back, one ulp above the best. */
         limit[r] = !s->any_hit && (s->found >> r & 1u) ? isect_next_up(s->best[r]) : s->best[r];
     }
     if (!live)
@@ -223,8 +241,68 @@ static void visit_instance(struct packet_top *s, uint32_t index, unsigned rays)
     }
 }
 
+#if ISECT_PAIR_SSE
+/*
+ * A wide top-level node's test for the rays of mask `rays`, box by box
+ * with four rays a register, when they share one octant (so one pair of
+ * rows per axis) and have finite origins: for each ray and lane the same
+ * operations in the same order as trace_scene_wide_lanes, so the same
+ * bits, but the work of a lane no child uses is left out.  An unused
+ * lane holds the empty box (bvh4_layout.h), which a finite origin always
+ * misses: its near distance is +inf (or its far one -inf) on every axis
+ * whatever the direction, so the lane's test fails for every such ray.
+ * Ray by ray, a node whose instance boxes are one or two of its eight
+ * lanes (a scene of one object) paid the test of all eight, and a call
+ * per ray: about 150 instructions a ray against under 10.
+ */
+static void lanes_by_box(const struct packet_top *s, const float *bounds, uint32_t width,
+                         unsigned rays, unsigned lane_rays[8], float t_min[8])
+{
+    const int *near_row = s->near_row[first(rays)], *far_row = s->far_row[first(rays)];
+    unsigned used = 0;
+    for (uint32_t h = 0; h < width; h += 4)
+        used |= (unsigned)_mm_movemask_ps(_mm_cmple_ps(_mm_load_ps(bounds + h),
+                                                       _mm_load_ps(bounds + 3 * width + h)))
+                << h;
+    const __m128 scale4 = _mm_set1_ps(ISECT_BOX_FAR_SCALE);
+    for (; used; used &= used - 1u) {
+        const int l = first(used);
+        const float bn[3] = {bounds[near_row[0] * width + l], bounds[near_row[1] * width + l],
+                             bounds[near_row[2] * width + l]};
+        const float bf[3] = {bounds[far_row[0] * width + l], bounds[far_row[1] * width + l],
+                             bounds[far_row[2] * width + l]};
+        for (int g = 0; g < TRACE_PACKET; g += 4) {
+            const unsigned group = rays >> g & 15u;
+            if (!group)
+                continue;
+            __m128 t0 = _mm_load_ps(s->tmin_x + g);
+            __m128 t1 = _mm_set1_ps(INFINITY);
+            for (int k = 0; k < 3; k++) {
+                const __m128 o = _mm_load_ps(s->org_x[k] + g);
+                const __m128 inv = _mm_load_ps(s->inv_x[k] + g);
+                const __m128 tn = _mm_mul_ps(_mm_sub_ps(_mm_set1_ps(bn[k]), o), inv);
+                const __m128 tf = _mm_mul_ps(_mm_sub_ps(_mm_set1_ps(bf[k]), o), inv);
+                t0 = _mm_max_ps(tn, t0);
+                t1 = _mm_min_ps(tf, t1);
+            }
+            t1 = _mm_min_ps(_mm_mul_ps(t1, scale4), _mm_loadu_ps(s->box_limit + g));
+            unsigned in = (unsigned)_mm_movemask_ps(_mm_cmple_ps(t0, t1)) & group;
+            if (!in)
+                continue;
+            float te[4];
+            _mm_storeu_ps(te, t0);
+            lane_rays[l] |= in << g;
+            for (; in; in &= in - 1u) {
+                const float t = te[first(in)];
+                t_min[l] = t < t_min[l] ? t : t_min[l];
+            }
+        }
+    }
+}
+#endif
+
 /* The packet walk of the wide top level (scene_traverse.c's walk_wide,
- * ray by ray inside each node). */
+ * ray by ray inside each node, or box by box: lanes_by_box). */
 static void walk_top(struct packet_top *s, const struct bvh4 *wide, unsigned active)
 {
     const struct bvh *top = s->scene->top;
@@ -256,6 +334,12 @@ static void walk_top(struct packet_top *s, const struct bvh4 *wide, unsigned act
             float t_min[8];
             for (uint32_t l = 0; l < width; l++)
                 t_min[l] = INFINITY;
+#if ISECT_PAIR_SSE
+            if (s->across) {
+                counters->top_node_tests += width * (uint64_t)popcount(rays);
+                lanes_by_box(s, bounds, width, rays, lane_rays, t_min);
+            } else
+#endif
             for (unsigned m = rays; m; m &= m - 1u) {
                 const int r = first(m);
                 float te[8];
@@ -306,6 +390,16 @@ static void walk_top(struct packet_top *s, const struct bvh4 *wide, unsigned act
     }
 }
 
+#if ISECT_PAIR_SSE
+/* A float that is infinite or a NaN, by its exponent bits. */
+static unsigned not_finite(float x)
+{
+    uint32_t b;
+    memcpy(&b, &x, sizeof(b));
+    return (b & 0x7f800000u) == 0x7f800000u;
+}
+#endif
+
 static unsigned walk(const struct trace_scene *scene, const struct trace_packet *p, int any_hit,
                      struct trace_scene_hit *hits, struct trace_scene_counters *counters)
 {
@@ -336,7 +430,11 @@ static unsigned walk(const struct trace_scene *scene, const struct trace_packet 
     s.counters = counters;
     s.found = 0;
     s.done = 0;
+    s.plain = 0;
     unsigned live = 0;
+#if ISECT_PAIR_SSE
+    unsigned odd = 0, octants = 0; /* lanes_by_box's condition */
+#endif
     for (unsigned m = active; m; m &= m - 1u) {
         const int r = first(m);
         counters->rays++;
@@ -346,15 +444,31 @@ static unsigned walk(const struct trace_scene *scene, const struct trace_packet 
         trace_ray_init(&s.ray[r], p->org[r], p->dir[r], p->tmin[r]);
         s.best[r] = p->tmax[r];
         s.box_limit[r] = p->tmax[r];
-        int octant = 0;
+        s.octant[r] = trace_scene_box_rows(&s.ray[r], s.near_row[r], s.far_row[r]);
+        s.plain |= (unsigned)(trace_scene_plain(p->org[r]) & trace_scene_plain(p->dir[r])) << r;
+#if ISECT_PAIR_SSE
+        /* lanes_by_box's rays across lanes, and its condition. */
+        s.tmin_x[r] = s.ray[r].tmin;
         for (int a = 0; a < 3; a++) {
-            const int neg = signbit(s.ray[r].inv_dir[a]) != 0;
-            s.near_row[r][a] = neg ? 3 + a : a;
-            s.far_row[r][a] = neg ? a : 3 + a;
-            octant |= neg << a;
+            s.org_x[a][r] = s.ray[r].org[a];
+            s.inv_x[a][r] = s.ray[r].inv_dir[a];
+            odd |= not_finite(s.ray[r].org[a]);
         }
-        s.octant[r] = octant;
+        octants |= 1u << s.octant[r];
+#endif
     }
+#if ISECT_PAIR_SSE
+    /* The lanes of the rays left out hold zeros, which it masks out. */
+    for (unsigned m = ~live & ((1u << TRACE_PACKET) - 1u); m; m &= m - 1u) {
+        const int r = first(m);
+        s.tmin_x[r] = s.box_limit[r] = 0.0f;
+        for (int a = 0; a < 3; a++)
+            s.org_x[a][r] = s.inv_x[a][r] = 0.0f;
+    }
+    s.across = !odd && !(octants & (octants - 1u));
+#else
+    s.across = 0;
+#endif
     if (live)
         walk_top(&s, wide, live);
     return any_hit ? s.done : s.found;

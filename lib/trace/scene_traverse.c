@@ -32,10 +32,33 @@ static int usable_direction(const float d[3])
            (d[0] != 0.0f || d[1] != 0.0f || d[2] != 0.0f);
 }
 
+void trace_instance_set_rows(struct trace_instance *inst, const double world_to_object[16])
+{
+    int identity = 1;
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 4; c++) {
+            const double v = world_to_object[4 * c + r];
+            inst->world_to_object[4 * r + c] = v;
+            identity &= v == (r == c ? 1.0 : 0.0);
+        }
+    inst->identity = (uint32_t)identity;
+}
+
 int trace_scene_object_ray(const struct trace_instance *inst, const float org[3],
                            const float dir[3], float tmin, const struct trace_ray *world,
                            struct trace_ray *o_ray)
 {
+    /* The identity's rows give back every finite, non-zero component as
+     * it is: to_object_space sums x * 1 with products 0 * y that are +-0
+     * for finite y, in double, and rounds to the float x again; and such
+     * a direction is usable.  So the ray is the world ray, set up, as the
+     * comparison below would find it, without the twelve products.  A
+     * zero (whose sign the sum may change) or an infinity (0 * inf is a
+     * NaN) takes the general path. */
+    if (inst->identity && trace_scene_plain(org) && trace_scene_plain(dir)) {
+        *o_ray = *world;
+        return 1;
+    }
     float o_org[3], o_dir[3];
     to_object_space(inst->world_to_object, org, dir, o_org, o_dir);
     if (!usable_direction(o_dir))
@@ -335,13 +358,7 @@ static int walk_wide(struct top_state *s, const struct bvh4 *wide)
     const struct trace_ray *ray = &s->ray;
     const uint32_t width = wide->width;
     int near_row[3], far_row[3];
-    int octant = 0;
-    for (int k = 0; k < 3; k++) {
-        int neg = signbit(ray->inv_dir[k]) != 0;
-        near_row[k] = neg ? 3 + k : k;
-        far_row[k] = neg ? k : 3 + k;
-        octant |= neg << k;
-    }
+    const int octant = trace_scene_box_rows(ray, near_row, far_row);
     struct {
         uint32_t child;
         uint32_t count; /* 0: wide node, else a leaf of `count` slots */

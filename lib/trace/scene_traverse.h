@@ -18,6 +18,7 @@
 #define RT_TRACE_SCENE_TRAVERSE_H
 
 #include <stdint.h>
+#include <string.h>
 
 #include "trace/kernels.h"
 #include "trace/trace.h"
@@ -37,7 +38,15 @@ struct trace_instance {
      * array, which no top-level leaf names (hits report them). */
     uint32_t member_base;
     uint32_t member_count;
+    /* 1 when world_to_object is exactly the identity (set by
+     * trace_instance_set_rows): trace_scene_object_ray then hands the
+     * world ray's set-up on without transforming it.  0 is always safe. */
+    uint32_t identity;
 };
+
+/* world_to_object's rows from a column-major 4x4 inverse instance matrix
+ * (OpenGL's order), and the identity flag. */
+void trace_instance_set_rows(struct trace_instance *inst, const double world_to_object[16]);
 
 struct trace_flat;
 struct trace_scene_hit;
@@ -148,10 +157,42 @@ static inline uint32_t trace_scene_hit_id(const struct trace_scene *scene,
  * trace_scene_object_ray: the world ray (org, dir, tmin; `world` its
  * set-up) in the instance's object space, set up; 0 when the transformed
  * direction cannot be traced (the instance is skipped).
+ * trace_scene_box_rows: the rows of a wide node's bounds that hold the
+ * ray's near and far planes per axis (by the signs of inv_dir), and its
+ * octant (bit k set for a negative axis k).
  * trace_scene_wide_lanes: the lanes of a wide top-level node
  * (bounds[row * width + lane]) whose boxes the ray's [tmin, t_max]
  * meets, with their entry distances.
  */
+static inline int trace_scene_box_rows(const struct trace_ray *ray, int near_row[3], int far_row[3])
+{
+    /* The sign bits, read as bits: the compilers turned signbit() and the
+     * selects into branches and flag moves, about fifty instructions a
+     * ray for what is three shifts. */
+    uint32_t bits[3];
+    memcpy(bits, ray->inv_dir, sizeof(bits));
+    int octant = 0;
+    for (int k = 0; k < 3; k++) {
+        const int neg = (int)(bits[k] >> 31);
+        near_row[k] = k + 3 * neg;
+        far_row[k] = k + 3 - 3 * neg;
+        octant |= neg << k;
+    }
+    return octant;
+}
+
+/* 1 when each of the three components is finite and not zero (a float
+ * whose magnitude's bits, less one, are below those of FLT_MAX): for
+ * such an origin and direction, an instance with the identity flag
+ * gives trace_scene_object_ray the world ray itself. */
+static inline int trace_scene_plain(const float v[3])
+{
+    uint32_t a[3];
+    memcpy(a, v, sizeof(a));
+    return ((a[0] & 0x7fffffffu) - 1u < 0x7f7fffffu) & ((a[1] & 0x7fffffffu) - 1u < 0x7f7fffffu) &
+           ((a[2] & 0x7fffffffu) - 1u < 0x7f7fffffu);
+}
+
 int trace_scene_object_ray(const struct trace_instance *inst, const float org[3],
                            const float dir[3], float tmin, const struct trace_ray *world,
                            struct trace_ray *o_ray);
