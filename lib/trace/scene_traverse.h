@@ -164,7 +164,8 @@ static inline uint32_t trace_scene_hit_id(const struct trace_scene *scene,
  * (bounds[row * width + lane]) whose boxes the ray's [tmin, t_max]
  * meets, with their entry distances.
  */
-static inline int trace_scene_box_rows(const struct trace_ray *ray, int near_row[3], int far_row[3])
+static inline int trace_scene_box_rows(const struct trace_ray *ray, int near_row[3],
+                                       int far_row[3])
 {
     /* The sign bits, read as bits: the compilers turned signbit() and the
      * selects into branches and flag moves, about fifty instructions a
