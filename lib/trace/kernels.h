@@ -65,6 +65,15 @@ struct trace_kernels {
     int (*leaf8)(const struct trace_ray *ray, const struct tri4_packet *p, uint32_t n,
                  float t_max, int any_hit, int early_out, int eight, int found,
                  struct trace_hit *hit);
+    /* The top level's node tests (top_lanes.h): a packet's, eight rays a
+     * register, and a single ray's (trace_scene_wide_lanes' contract),
+     * eight lanes a register.  NULL in the tables without 256-bit lanes,
+     * where packet_scene.c tests four rays a register itself and
+     * scene_traverse.c four lanes. */
+    trace_top_lanes_fn top_lanes;
+    unsigned (*top_lanes1)(const float *bounds, uint32_t width, const int near_row[3],
+                           const int far_row[3], const struct trace_ray *ray, float t_max,
+                           float t_entry[8]);
 };
 
 /* The table of an ISA, or NULL when this build has no such table or this

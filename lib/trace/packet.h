@@ -46,6 +46,34 @@
 #define TRACE_PACKET_HYBRID 0
 
 /*
+ * A packet's rays as a wide top-level node test wants them (packet_scene.c,
+ * kernels.h top_lanes): ray r in lane r of each array, the live rays
+ * sharing one octant, whose rows near_row/far_row name (bounds rows per
+ * axis, as trace_scene_box_rows gives them), and having finite origins;
+ * box_limit is each ray's current t_max for boxes.  The lanes of rays not
+ * in the walk hold zeros.
+ */
+struct trace_top_rays {
+    float tmin[TRACE_PACKET] __attribute__((aligned(32)));
+    float box_limit[TRACE_PACKET] __attribute__((aligned(32)));
+    float org[3][TRACE_PACKET] __attribute__((aligned(32)));
+    float inv_dir[3][TRACE_PACKET] __attribute__((aligned(32)));
+    int near_row[3];
+    int far_row[3];
+};
+
+/* The lanes of a wide top-level node (bounds[row * width + lane], width
+ * 4 or 8) that the rays of mask `rays` enter: each such ray's bit is or'ed
+ * into lane_rays[lane], and t_min[lane] lowered to its entry distance
+ * where smaller, in the order of the rays.  Each ray and lane computes
+ * what trace_scene_wide_lanes computes, operation for operation; a lane
+ * whose box is empty (an unused lane, bvh4_layout.h), which a finite
+ * origin always misses, is left out. */
+typedef void (*trace_top_lanes_fn)(const struct trace_top_rays *q, const float *bounds,
+                                   uint32_t width, unsigned rays, unsigned lane_rays[8],
+                                   float t_min[8]);
+
+/*
  * The packet walks of a kernels table (kernels.h): rays[i] with
  * t_max[i] for every bit i of `active`.  Closest: returns the mask of
  * rays with a hit and fills hits[i] for them (others left alone), each

@@ -33,21 +33,19 @@ struct packet_top {
     struct trace_scene_counters *counters;
     struct trace_ray ray[TRACE_PACKET];
     float best[TRACE_PACKET];
-    float box_limit[TRACE_PACKET];
     int near_row[TRACE_PACKET][3];
     int far_row[TRACE_PACKET][3];
     int octant[TRACE_PACKET];
     unsigned found;
     unsigned done;  /* any hit: the rays with their hit */
     unsigned plain; /* the rays whose origin and direction trace_scene_plain */
-    /* The rays' set-ups across lanes (lanes_by_box), when `across` is 1:
-     * every live ray has one octant and a finite origin. */
+    /* 1 when every live ray has one octant and a finite origin: the top
+     * level's nodes are then tested box by box (lanes_by_box, or the
+     * table's top_lanes). */
     int across;
-#if ISECT_PAIR_SSE
-    float tmin_x[TRACE_PACKET] __attribute__((aligned(16)));
-    float org_x[3][TRACE_PACKET] __attribute__((aligned(16)));
-    float inv_x[3][TRACE_PACKET] __attribute__((aligned(16)));
-#endif
+    /* The rays across lanes for that test, and every ray's box limit
+     * (the best t so far, widened: as in traverse.c). */
+    struct trace_top_rays top;
 };
 
 /* The number of rays in a mask of at most TRACE_PACKET bits.  Not
@@ -89,7 +87,7 @@ static void visit_group(struct packet_top *s, const struct trace_instance *group
         const int r = first(m);
         int found = s->found >> r & 1u;
         struct trace_flat_ray fr = {s->p->org[r], s->p->dir[r], s->p->tmin[r], &s->ray[r],
-                                    &s->best[r], &s->box_limit[r], &found,
+                                    &s->best[r], &s->top.box_limit[r], &found,
                                     s->any_hit ? NULL : &s->hits[r],
                                     scene->filtered ? scene : NULL};
         if (trace_flat_walk(&flat, scene->instances, group, &fr, s->counters))
@@ -231,7 +229,7 @@ static void visit_instance(struct packet_top *s, uint32_t index, unsigned rays)
                        inst->instance_id < trace_scene_hit_id(scene, hit)))
             continue;
         s->best[r] = h[r].t;
-        s->box_limit[r] = h[r].t * ISECT_BOX_FAR_SCALE;
+        s->top.box_limit[r] = h[r].t * ISECT_BOX_FAR_SCALE;
         s->found |= 1u << r;
         hit->t = h[r].t;
         hit->u = h[r].u;
@@ -255,10 +253,9 @@ static void visit_instance(struct packet_top *s, uint32_t index, unsigned rays)
  * lanes (a scene of one object) paid the test of all eight, and a call
  * per ray: about 150 instructions a ray against under 10.
  */
-static void lanes_by_box(const struct packet_top *s, const float *bounds, uint32_t width,
+static void lanes_by_box(const struct trace_top_rays *q, const float *bounds, uint32_t width,
                          unsigned rays, unsigned lane_rays[8], float t_min[8])
 {
-    const int *near_row = s->near_row[first(rays)], *far_row = s->far_row[first(rays)];
     unsigned used = 0;
     for (uint32_t h = 0; h < width; h += 4)
         used |= (unsigned)_mm_movemask_ps(_mm_cmple_ps(_mm_load_ps(bounds + h),
@@ -267,25 +264,25 @@ static void lanes_by_box(const struct packet_top *s, const float *bounds, uint32
     const __m128 scale4 = _mm_set1_ps(ISECT_BOX_FAR_SCALE);
     for (; used; used &= used - 1u) {
         const int l = first(used);
-        const float bn[3] = {bounds[near_row[0] * width + l], bounds[near_row[1] * width + l],
-                             bounds[near_row[2] * width + l]};
-        const float bf[3] = {bounds[far_row[0] * width + l], bounds[far_row[1] * width + l],
-                             bounds[far_row[2] * width + l]};
+        const float bn[3] = {bounds[q->near_row[0] * width + l], bounds[q->near_row[1] * width + l],
+                             bounds[q->near_row[2] * width + l]};
+        const float bf[3] = {bounds[q->far_row[0] * width + l], bounds[q->far_row[1] * width + l],
+                             bounds[q->far_row[2] * width + l]};
         for (int g = 0; g < TRACE_PACKET; g += 4) {
             const unsigned group = rays >> g & 15u;
             if (!group)
                 continue;
-            __m128 t0 = _mm_load_ps(s->tmin_x + g);
+            __m128 t0 = _mm_load_ps(q->tmin + g);
             __m128 t1 = _mm_set1_ps(INFINITY);
             for (int k = 0; k < 3; k++) {
-                const __m128 o = _mm_load_ps(s->org_x[k] + g);
-                const __m128 inv = _mm_load_ps(s->inv_x[k] + g);
+                const __m128 o = _mm_load_ps(q->org[k] + g);
+                const __m128 inv = _mm_load_ps(q->inv_dir[k] + g);
                 const __m128 tn = _mm_mul_ps(_mm_sub_ps(_mm_set1_ps(bn[k]), o), inv);
                 const __m128 tf = _mm_mul_ps(_mm_sub_ps(_mm_set1_ps(bf[k]), o), inv);
                 t0 = _mm_max_ps(tn, t0);
                 t1 = _mm_min_ps(tf, t1);
             }
-            t1 = _mm_min_ps(_mm_mul_ps(t1, scale4), _mm_loadu_ps(s->box_limit + g));
+            t1 = _mm_min_ps(_mm_mul_ps(t1, scale4), _mm_load_ps(q->box_limit + g));
             unsigned in = (unsigned)_mm_movemask_ps(_mm_cmple_ps(t0, t1)) & group;
             if (!in)
                 continue;
@@ -337,16 +334,22 @@ static void walk_top(struct packet_top *s, const struct bvh4 *wide, unsigned act
 #if ISECT_PAIR_SSE
             if (s->across) {
                 counters->top_node_tests += width * (uint64_t)popcount(rays);
-                lanes_by_box(s, bounds, width, rays, lane_rays, t_min);
+                if (s->kernels->top_lanes)
+                    s->kernels->top_lanes(&s->top, bounds, width, rays, lane_rays, t_min);
+                else
+                    lanes_by_box(&s->top, bounds, width, rays, lane_rays, t_min);
             } else
 #endif
             for (unsigned m = rays; m; m &= m - 1u) {
                 const int r = first(m);
                 float te[8];
                 counters->top_node_tests += width;
-                unsigned in = trace_scene_wide_lanes(bounds, width, s->near_row[r],
-                                                     s->far_row[r], &s->ray[r],
-                                                     s->box_limit[r], te);
+                unsigned in =
+                    s->kernels->top_lanes1
+                        ? s->kernels->top_lanes1(bounds, width, s->near_row[r], s->far_row[r],
+                                                 &s->ray[r], s->top.box_limit[r], te)
+                        : trace_scene_wide_lanes(bounds, width, s->near_row[r], s->far_row[r],
+                                                 &s->ray[r], s->top.box_limit[r], te);
                 for (; in; in &= in - 1u) {
                     const int l = first(in);
                     lane_rays[l] |= 1u << r;
@@ -379,7 +382,7 @@ static void walk_top(struct packet_top *s, const struct bvh4 *wide, unsigned act
             rays = stack[sp].rays & ~s->done;
             for (unsigned m = rays; m; m &= m - 1u) {
                 const int r = first(m);
-                if (!(stack[sp].t_entry <= s->box_limit[r]))
+                if (!(stack[sp].t_entry <= s->top.box_limit[r]))
                     rays &= ~(1u << r);
             }
             if (rays)
@@ -443,15 +446,15 @@ static unsigned walk(const struct trace_scene *scene, const struct trace_packet 
         live |= 1u << r;
         trace_ray_init(&s.ray[r], p->org[r], p->dir[r], p->tmin[r]);
         s.best[r] = p->tmax[r];
-        s.box_limit[r] = p->tmax[r];
+        s.top.box_limit[r] = p->tmax[r];
         s.octant[r] = trace_scene_box_rows(&s.ray[r], s.near_row[r], s.far_row[r]);
         s.plain |= (unsigned)(trace_scene_plain(p->org[r]) & trace_scene_plain(p->dir[r])) << r;
 #if ISECT_PAIR_SSE
         /* lanes_by_box's rays across lanes, and its condition. */
-        s.tmin_x[r] = s.ray[r].tmin;
+        s.top.tmin[r] = s.ray[r].tmin;
         for (int a = 0; a < 3; a++) {
-            s.org_x[a][r] = s.ray[r].org[a];
-            s.inv_x[a][r] = s.ray[r].inv_dir[a];
+            s.top.org[a][r] = s.ray[r].org[a];
+            s.top.inv_dir[a][r] = s.ray[r].inv_dir[a];
             odd |= not_finite(s.ray[r].org[a]);
         }
         octants |= 1u << s.octant[r];
@@ -461,11 +464,13 @@ static unsigned walk(const struct trace_scene *scene, const struct trace_packet 
     /* The lanes of the rays left out hold zeros, which it masks out. */
     for (unsigned m = ~live & ((1u << TRACE_PACKET) - 1u); m; m &= m - 1u) {
         const int r = first(m);
-        s.tmin_x[r] = s.box_limit[r] = 0.0f;
+        s.top.tmin[r] = s.top.box_limit[r] = 0.0f;
         for (int a = 0; a < 3; a++)
-            s.org_x[a][r] = s.inv_x[a][r] = 0.0f;
+            s.top.org[a][r] = s.top.inv_dir[a][r] = 0.0f;
     }
     s.across = !odd && !(octants & (octants - 1u));
+    if (s.across && live)
+        trace_scene_box_rows(&s.ray[first(live)], s.top.near_row, s.top.far_row);
 #else
     s.across = 0;
 #endif
