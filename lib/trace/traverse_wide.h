@@ -3,7 +3,8 @@
  * traverse_wide.h - the walk over the wide layout (bvh4_layout.h), 4-wide
  * in every SIMD table and 8-wide where the table has AVX (AVX2,
  * AVX-512), included by the SIMD translation units (kernels.h) after
- * traverse_walk.h.  Define TRACE_WIDE_CLOSEST and TRACE_WIDE_ANY.
+ * traverse_walk.h.  Define TRACE_WIDE_CLOSEST, TRACE_WIDE_ANY,
+ * TRACE_WIDE_CLOSEST1 and TRACE_WIDE_ANY1.
  *
  * Same answers as the binary walk of traverse_walk.h, bit for bit:
  * - the child boxes are tested with isect_box's float operations lane by
@@ -35,6 +36,7 @@
 #include <immintrin.h>
 
 #include "trace/intersect_tri4.h"
+#include "trace/ray_setup.h"
 
 struct wide_entry {
     uint32_t child;
@@ -734,6 +736,59 @@ WIDE8_WALK(wide8_walk_closest_leaf8, walk_wide8_ray_leaf8, 0, 0, 0)
 WIDE8_WALK(wide8_walk_closest_early_leaf8, walk_wide8_ray_leaf8, 0, 0, 1)
 WIDE8_WALK(wide8_walk_any_leaf8, walk_wide8_ray_leaf8, 1, 0, 1)
 
+/* The same three walks for the entries that take the ray's origin and
+ * direction (TRACE_WIDE_CLOSEST1, TRACE_WIDE_ANY1): the ray is set up
+ * here, in the walk's own frame (ray_setup.h), so the walk's first
+ * vectors and the leaf's constants come from the set-up's registers, not
+ * from a struct another function has just stored; one call and its
+ * stores and loads fewer a ray. */
+/* tri4_ray_init's constants from the set-up's lanes (ray_setup.h): the
+ * same values, broadcast from registers instead of loaded by index. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void tri4_ray_init_lanes(struct tri4_ray *r, const struct ray_lanes *l, float tmin)
+{
+    const size_t row = sizeof(((const struct tri4_packet *)NULL)->v[0][0]);
+    const __m128 neg_org = _mm_xor_ps(l->org_k, _mm_set1_ps(-0.0f));
+    const unsigned neg = (unsigned)_mm_movemask_ps(_mm_cmplt_ps(l->inv_k, _mm_setzero_ps()));
+    r->off_x = (size_t)l->kx * row;
+    r->off_y = (size_t)l->ky * row;
+    r->off_z = (size_t)l->kz * row;
+    r->neg_org_x = _mm_permute_ps(neg_org, 0x00);
+    r->neg_org_y = _mm_permute_ps(neg_org, 0x55);
+    r->neg_org_z = _mm_permute_ps(neg_org, 0xAA);
+    r->sx = _mm_permute_ps(l->shear, 0x00);
+    r->sy = _mm_permute_ps(l->shear, 0x55);
+    r->sz = _mm_permute_ps(l->inv_k, 0xAA);
+    r->inv_x = _mm_permute_ps(l->inv_k, 0x00);
+    r->inv_y = _mm_permute_ps(l->inv_k, 0x55);
+    r->tmin = _mm_set1_ps(tmin);
+    r->neg_x = (int)(neg & 1u);
+    r->neg_y = (int)(neg >> 1 & 1u);
+}
+
+#define WIDE8_WALK1(name, walk, any_hit, leave_early)                                           \
+    static int name(const struct bvh4 *wide, const float org[3], const float dir[3],           \
+                    float tmin, float t_max, struct trace_hit *hit) WIDE_NOINLINE;              \
+    static int name(const struct bvh4 *wide, const float org[3], const float dir[3],           \
+                    float tmin, float t_max, struct trace_hit *hit)                             \
+    {                                                                                           \
+        struct trace_ray ray;                                                                   \
+        struct ray_lanes lanes;                                                                 \
+        trace_ray_setup_lanes(&ray, &lanes, org, dir, tmin);                                    \
+        struct wide_state s;                                                                    \
+        wide_state_init(&s, &ray, t_max, any_hit, hit);                                         \
+        if (any_hit)                                                                            \
+            tri4_ray_init_lanes(&s.r4, &lanes, tmin);                                           \
+        const int done = walk(wide, &s, any_hit, 0, leave_early);                               \
+        return any_hit ? done : s.found;                                                        \
+    }
+
+WIDE8_WALK1(wide8_walk1_closest_leaf8, walk_wide8_ray_leaf8, 0, 0)
+WIDE8_WALK1(wide8_walk1_closest_early_leaf8, walk_wide8_ray_leaf8, 0, 1)
+WIDE8_WALK1(wide8_walk1_any_leaf8, walk_wide8_ray_leaf8, 1, 1)
+
 /*
  * The leaf of the 8-wide walks on its own, for
  * conformance/internal/tri4_differential: the n triangles of p[0], p[1]
@@ -894,4 +949,51 @@ int TRACE_WIDE_ANY(const struct bvh4 *wide, const struct bvh *bvh, const float *
                    const struct trace_ray *ray, float t_max, struct trace_counters *counters)
 {
     return walk_wide_single(wide, bvh, tri, ray, t_max, 1, NULL, counters);
+}
+
+/* closest4/any4 from the ray's origin, direction and tmin (kernels.h's
+ * closest1/any1): trace_ray_init_single's ray, set up inside the 8-wide
+ * walk where the layout has one (WIDE8_WALK1), else here before the walk
+ * of walk_wide_single.  Same answers as trace_ray_init_single followed by
+ * closest4/any4, bit for bit (the same set-up text, ray_setup.h). */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline int walk_wide_single1(const struct bvh4 *wide, const struct bvh *bvh,
+                                    const float *tri, const float org[3], const float dir[3],
+                                    float tmin, float t_max, int any_hit, struct trace_hit *hit,
+                                    struct trace_counters *counters)
+{
+#if defined(__AVX__)
+    if (!counters && wide->width == 8 && wide->node_count) {
+        if (any_hit)
+            return wide8_walk1_any_leaf8(wide, org, dir, tmin, t_max, hit);
+        if (wide->prefetch_top)
+            return wide8_walk1_closest_early_leaf8(wide, org, dir, tmin, t_max, hit);
+        return wide8_walk1_closest_leaf8(wide, org, dir, tmin, t_max, hit);
+    }
+#endif
+    struct trace_ray ray;
+    trace_ray_setup_single(&ray, org, dir, tmin);
+    return walk_wide_single(wide, bvh, tri, &ray, t_max, any_hit, hit, counters);
+}
+
+int TRACE_WIDE_CLOSEST1(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,
+                        const float org[3], const float dir[3], float tmin, float t_max,
+                        struct trace_hit *hit, struct trace_counters *counters);
+int TRACE_WIDE_CLOSEST1(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,
+                        const float org[3], const float dir[3], float tmin, float t_max,
+                        struct trace_hit *hit, struct trace_counters *counters)
+{
+    return walk_wide_single1(wide, bvh, tri, org, dir, tmin, t_max, 0, hit, counters);
+}
+
+int TRACE_WIDE_ANY1(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,
+                    const float org[3], const float dir[3], float tmin, float t_max,
+                    struct trace_counters *counters);
+int TRACE_WIDE_ANY1(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,
+                    const float org[3], const float dir[3], float tmin, float t_max,
+                    struct trace_counters *counters)
+{
+    return walk_wide_single1(wide, bvh, tri, org, dir, tmin, t_max, 1, NULL, counters);
 }
