@@ -956,6 +956,26 @@ int TRACE_WIDE_ANY(const struct bvh4 *wide, const struct bvh *bvh, const float *
  * walk where the layout has one (WIDE8_WALK1), else here before the walk
  * of walk_wide_single.  Same answers as trace_ray_init_single followed by
  * closest4/any4, bit for bit (the same set-up text, ray_setup.h). */
+static int walk_wide_single1_other(const struct bvh4 *wide, const struct bvh *bvh,
+                                   const float *tri, const float org[3], const float dir[3],
+                                   float tmin, float t_max, int any_hit, struct trace_hit *hit,
+                                   struct trace_counters *counters) WIDE_NOINLINE;
+static int walk_wide_single1_other(const struct bvh4 *wide, const struct bvh *bvh,
+                                   const float *tri, const float org[3], const float dir[3],
+                                   float tmin, float t_max, int any_hit, struct trace_hit *hit,
+                                   struct trace_counters *counters)
+{
+    struct trace_ray ray;
+    trace_ray_setup_single(&ray, org, dir, tmin);
+    return walk_wide_single(wide, bvh, tri, &ray, t_max, any_hit, hit, counters);
+}
+
+/* The entries' choice of walk.  The cases without an 8-wide walk of
+ * their own (counters, a 4-wide or binary layout) are a function apart
+ * (walk_wide_single1_other): with their set-up inlined here, the entry
+ * had a frame of its own (its trace_ray, 32-byte aligned), 31
+ * instructions a ray before and after the walk's call instead of a
+ * jump. */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
@@ -973,9 +993,8 @@ static inline int walk_wide_single1(const struct bvh4 *wide, const struct bvh *b
         return wide8_walk1_closest_leaf8(wide, org, dir, tmin, t_max, hit);
     }
 #endif
-    struct trace_ray ray;
-    trace_ray_setup_single(&ray, org, dir, tmin);
-    return walk_wide_single(wide, bvh, tri, &ray, t_max, any_hit, hit, counters);
+    return walk_wide_single1_other(wide, bvh, tri, org, dir, tmin, t_max, any_hit, hit,
+                                   counters);
 }
 
 int TRACE_WIDE_CLOSEST1(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,
