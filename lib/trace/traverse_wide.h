@@ -646,7 +646,7 @@ WIDE8_LEAF_TEST(wide8_packet_any, wide_packet_test, 1, 1)
         wide_state_init(&s, ray, t_max, any_hit, hit);                                          \
         if (any_hit)                                                                            \
             tri4_ray_init(&s.r4, ray);                                                          \
-        const int done = walk(wide, &s, any_hit, stats, leave_early);                           \
+        const int done = walk(wide, &s, any_hit, stats, leave_early, NULL);                     \
         if (stats) {                                                                            \
             counters->node_tests += s.node_tests;                                               \
             counters->triangle_tests += s.triangle_tests;                                       \
@@ -781,7 +781,7 @@ static inline void tri4_ray_init_lanes(struct tri4_ray *r, const struct ray_lane
         wide_state_init(&s, &ray, t_max, any_hit, hit);                                         \
         if (any_hit)                                                                            \
             tri4_ray_init_lanes(&s.r4, &lanes, tmin);                                           \
-        const int done = walk(wide, &s, any_hit, 0, leave_early);                               \
+        const int done = walk(wide, &s, any_hit, 0, leave_early, &lanes);                       \
         return any_hit ? done : s.found;                                                        \
     }
 

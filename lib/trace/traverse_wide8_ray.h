@@ -9,13 +9,15 @@
  * without the 8-lane call compiled to different code (register allocation
  * and block order; the soup's primary rays were 0.05 of Embree slower),
  * although the flag was a constant 0 in them.  Define WIDE8_RAY and
- * WIDE8_RAY_LEAF8 before including; no include guard.
+ * WIDE8_RAY_LEAF8 before including; no include guard.  lanes: the ray's
+ * set-up in SSE lanes where the walk's caller made it (WIDE8_WALK1), else
+ * NULL (the walk reads the struct).
  */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
 static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int any_hit, int stats,
-                            int leave_early)
+                            int leave_early, const struct ray_lanes *lanes)
 {
     const struct trace_ray *ray = s->ray;
     const struct bvh8_node *nodes = wide->nodes8;
@@ -27,9 +29,23 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
          * too) has its near plane at the max.  By arithmetic on the sign
          * bits: near + far = 2k + 3 rows. */
         const size_t row = sizeof(nodes[0].bounds[0]);
-        uint32_t bits[3];
-        memcpy(bits, ray->inv_dir, sizeof(bits));
-        const size_t nx = bits[0] >> 31, ny = bits[1] >> 31, nz = bits[2] >> 31;
+        size_t nx, ny, nz;
+        if (lanes) {
+            /* The set-up's lanes (WIDE8_WALK1): the signs of dir, which
+             * are those of 1 / dir (-0 gives -inf), so the rows do not
+             * wait for the division and the first node's loads can
+             * start before it ends. */
+            const unsigned m = (unsigned)_mm_movemask_ps(lanes->dir);
+            nx = m & 1u;
+            ny = m >> 1 & 1u;
+            nz = m >> 2 & 1u;
+        } else {
+            uint32_t bits[3];
+            memcpy(bits, ray->inv_dir, sizeof(bits));
+            nx = bits[0] >> 31;
+            ny = bits[1] >> 31;
+            nz = bits[2] >> 31;
+        }
         near_x = nx * 3 * row;
         far_x = 3 * row - near_x;
         near_y = (1 + ny * 3) * row;
