@@ -628,6 +628,21 @@ WIDE8_LEAF_TEST(wide8_packet_closest, wide_packet_test, 0, 1)
 WIDE8_LEAF_TEST(wide8_packet_full, wide_packet_test, 0, 0)
 WIDE8_LEAF_TEST(wide8_packet_any, wide_packet_test, 1, 1)
 
+/* The byte offsets of the near x, y, z and far x, y, z rows of a
+ * bvh8_node's bounds per ray octant (bit k: dir[k] negative, whose near
+ * plane is then the max, row 3 + k): walk_wide8_ray's arithmetic on the
+ * sign bits, as a table for the walks from the set-up's lanes. */
+#define WIDE8_ROW (sizeof(((const struct bvh8_node *)NULL)->bounds[0]))
+#define WIDE8_ROWS(nx, ny, nz)                                                                   \
+    {(nx)*3 * WIDE8_ROW, (1 + (ny)*3) * WIDE8_ROW, (2 + (nz)*3) * WIDE8_ROW,                     \
+     (3 - (nx)*3) * WIDE8_ROW, (4 - (ny)*3) * WIDE8_ROW, (5 - (nz)*3) * WIDE8_ROW}
+static const uint8_t wide8_rows[8][6] = {WIDE8_ROWS(0, 0, 0), WIDE8_ROWS(1, 0, 0),
+                                         WIDE8_ROWS(0, 1, 0), WIDE8_ROWS(1, 1, 0),
+                                         WIDE8_ROWS(0, 0, 1), WIDE8_ROWS(1, 0, 1),
+                                         WIDE8_ROWS(0, 1, 1), WIDE8_ROWS(1, 1, 1)};
+#undef WIDE8_ROWS
+#undef WIDE8_ROW
+
 #define WIDE8_RAY walk_wide8_ray
 #define WIDE8_RAY_LEAF8 0
 #include "trace/traverse_wide8_ray.h"
