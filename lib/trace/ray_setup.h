@@ -124,18 +124,29 @@ static inline void trace_ray_setup_single(struct trace_ray *ray, const float org
 #if defined(__AVX__) && !defined(RT_NO_SIMD)
 #include <immintrin.h>
 
-/* The set-up's results in SSE lanes (trace_ray_setup_lanes), for a walk
- * that broadcasts them: lanes 0-2 the axes 0-2 (org, inv) or kx, ky, kz
+/* The set-up's results in SSE lanes (trace_ray_setup_lanes) that the
+ * walk reads from registers: lanes 0-2 the axes 0-2 (dir) or kx, ky, kz
  * (org_k, inv_k, the watertight test's order). */
 struct ray_lanes {
-    __m128 org;   /* org[0], org[1], org[2], 0 */
-    __m128 dir;   /* dir[0], dir[1], dir[2], 1 */
-    __m128 inv;   /* inv_dir[0], inv_dir[1], inv_dir[2], 1 */
+    __m128 dir;   /* dir[0], dir[1], dir[2], 1: the octant's signs */
     __m128 org_k; /* org[kx], org[ky], org[kz], 0 */
     __m128 inv_k; /* inv_dir[kx], inv_dir[ky], inv_dir[kz] (= sz), 1 */
     __m128 shear; /* sx, sy, -1, - */
     int kx, ky, kz;
 };
+
+/* trace_ray_setup_lanes stores org, dir and inv_dir 16 bytes at a time,
+ * each store's lane 3 overwritten by the next field: they must be
+ * consecutive, as must sx and sy. */
+typedef char ray_setup_lanes_layout
+    [offsetof(struct trace_ray, dir) == offsetof(struct trace_ray, org) + 3 * sizeof(float) &&
+             offsetof(struct trace_ray, inv_dir) ==
+                 offsetof(struct trace_ray, dir) + 3 * sizeof(float) &&
+             offsetof(struct trace_ray, tmin) ==
+                 offsetof(struct trace_ray, inv_dir) + 3 * sizeof(float) &&
+             offsetof(struct trace_ray, sy) == offsetof(struct trace_ray, sx) + sizeof(float)
+         ? 1
+         : -1];
 
 /* The lane order kx, ky, kz (and lane 3) per 2 kz + (d[kz] < 0):
  * trace_ray_setup_single's table of (kx, ky) with kz, as _mm_permutevar_ps
@@ -177,9 +188,7 @@ static inline void trace_ray_setup_lanes(struct trace_ray *ray, struct ray_lanes
     const __m128 inv = _mm_div_ps(_mm_set1_ps(1.0f), d);
     const __m128 d_k = _mm_permutevar_ps(d, idx);
     const __m128 shear = _mm_div_ps(_mm_xor_ps(d_k, sign), _mm_permute_ps(d_k, 0xAA));
-    l->org = o;
     l->dir = d;
-    l->inv = inv;
     l->org_k = _mm_permutevar_ps(o, idx);
     l->inv_k = _mm_permutevar_ps(inv, idx);
     l->shear = shear;
