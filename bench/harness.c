@@ -129,14 +129,21 @@ void bench_kernel_closest(void *ctx, const RTray *rays, uint32_t begin, uint32_t
 {
     const struct bench_accel *acc = ctx;
     const struct trace_kernels *k = bench_kernels();
-    const int wide = k->closest4 && !binary_layout && acc->wide.node_count;
+    const int wide = k->closest1 && !binary_layout && acc->wide.node_count;
     for (uint32_t i = begin; i < end; i++) {
         const RTray *r = &rays[i];
-        struct trace_ray ray;
         struct trace_hit h;
-        trace_ray_init_single(&ray, r->org, r->dir, r->tmin);
-        if (wide ? k->closest4(&acc->wide, &acc->bvh, acc->tri, &ray, r->tmax, &h, NULL)
-                 : k->closest(&acc->bvh, acc->tri, &ray, r->tmax, &h, NULL)) {
+        int got;
+        /* The wide walk sets the ray up itself (kernels.h, closest1). */
+        if (wide) {
+            got = k->closest1(&acc->wide, &acc->bvh, acc->tri, r->org, r->dir, r->tmin, r->tmax,
+                              &h, NULL);
+        } else {
+            struct trace_ray ray;
+            trace_ray_init_single(&ray, r->org, r->dir, r->tmin);
+            got = k->closest(&acc->bvh, acc->tri, &ray, r->tmax, &h, NULL);
+        }
+        if (got) {
             hits[i].t = h.t;
             hits[i].prim = h.prim;
         } else {
@@ -151,13 +158,18 @@ void bench_kernel_any(void *ctx, const RTray *rays, uint32_t begin, uint32_t end
 {
     const struct bench_accel *acc = ctx;
     const struct trace_kernels *k = bench_kernels();
-    const int wide = k->any4 && !binary_layout && acc->wide.node_count;
+    const int wide = k->any1 && !binary_layout && acc->wide.node_count;
     for (uint32_t i = begin; i < end; i++) {
         const RTray *r = &rays[i];
-        struct trace_ray ray;
-        trace_ray_init_single(&ray, r->org, r->dir, r->tmin);
-        int occluded = wide ? k->any4(&acc->wide, &acc->bvh, acc->tri, &ray, r->tmax, NULL)
-                            : k->any(&acc->bvh, acc->tri, &ray, r->tmax, NULL);
+        int occluded;
+        if (wide) {
+            occluded = k->any1(&acc->wide, &acc->bvh, acc->tri, r->org, r->dir, r->tmin, r->tmax,
+                               NULL);
+        } else {
+            struct trace_ray ray;
+            trace_ray_init_single(&ray, r->org, r->dir, r->tmin);
+            occluded = k->any(&acc->bvh, acc->tri, &ray, r->tmax, NULL);
+        }
         hits[i].t = occluded ? 0.0f : INFINITY;
         hits[i].prim = occluded ? 0 : BENCH_MISS;
     }

@@ -46,6 +46,19 @@ struct trace_kernels {
                     struct trace_counters *counters);
     int (*any4)(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,
                 const struct trace_ray *ray, float t_max, struct trace_counters *counters);
+    /* closest4/any4 from the ray's origin, direction and tmin, for a
+     * ray traced alone: trace_ray_init_single's ray, set up inside the
+     * walk (ray_setup.h), so the walk starts from the set-up's registers
+     * instead of a struct stored by another function and read back; the
+     * same answers as trace_ray_init_single followed by closest4/any4.
+     * org and dir as trace_ray_init's (finite, dir non-zero).  NULL in
+     * the scalar table, as closest4/any4. */
+    int (*closest1)(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,
+                    const float org[3], const float dir[3], float tmin, float t_max,
+                    struct trace_hit *hit, struct trace_counters *counters);
+    int (*any1)(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,
+                const float org[3], const float dir[3], float tmin, float t_max,
+                struct trace_counters *counters);
     /* The widest layout closest4/any4 walk: 0 (scalar), 4 (SSE4.2) or 8
      * (AVX2, AVX-512); the width a context's objects are collapsed to
      * (bvh_build_params.wide_layout). */

@@ -13,6 +13,8 @@
 #include "trace/traverse_walk.h"
 #define TRACE_WIDE_CLOSEST trace_closest4_avx512
 #define TRACE_WIDE_ANY trace_any4_avx512
+#define TRACE_WIDE_CLOSEST1 trace_closest1_avx512
+#define TRACE_WIDE_ANY1 trace_any1_avx512
 #define TRACE_WIDE_LEAF8 trace_leaf8_avx512
 #include "trace/traverse_wide.h"
 #define TRACE_PACKET_CLOSEST trace_closest_packet_avx512
@@ -24,7 +26,8 @@
 
 static const struct trace_kernels table = {
     TRACE_ISA_AVX512, "avx512", trace_closest_avx512, trace_any_avx512,
-    trace_closest4_avx512, trace_any4_avx512, 8,
+    trace_closest4_avx512, trace_any4_avx512, trace_closest1_avx512, trace_any1_avx512,
+    8,
     trace_closest_packet_avx512, trace_any_packet_avx512, trace_leaf8_avx512,
     trace_top_lanes_avx512, trace_top_lanes1_avx512};
 

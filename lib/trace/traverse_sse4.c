@@ -13,6 +13,8 @@
 #include "trace/traverse_walk.h"
 #define TRACE_WIDE_CLOSEST trace_closest4_sse4
 #define TRACE_WIDE_ANY trace_any4_sse4
+#define TRACE_WIDE_CLOSEST1 trace_closest1_sse4
+#define TRACE_WIDE_ANY1 trace_any1_sse4
 #include "trace/traverse_wide.h"
 #define TRACE_PACKET_CLOSEST trace_closest_packet_sse4
 #define TRACE_PACKET_ANY trace_any_packet_sse4
@@ -20,7 +22,8 @@
 
 static const struct trace_kernels table = {
     TRACE_ISA_SSE4, "sse4", trace_closest_sse4, trace_any_sse4,
-    trace_closest4_sse4, trace_any4_sse4, 4,
+    trace_closest4_sse4, trace_any4_sse4, trace_closest1_sse4, trace_any1_sse4,
+    4,
     trace_closest_packet_sse4, trace_any_packet_sse4, NULL, NULL, NULL};
 
 const struct trace_kernels *trace_kernels_sse4(void)

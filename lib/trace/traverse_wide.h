@@ -3,7 +3,8 @@
  * traverse_wide.h - the walk over the wide layout (bvh4_layout.h), 4-wide
  * in every SIMD table and 8-wide where the table has AVX (AVX2,
  * AVX-512), included by the SIMD translation units (kernels.h) after
- * traverse_walk.h.  Define TRACE_WIDE_CLOSEST and TRACE_WIDE_ANY.
+ * traverse_walk.h.  Define TRACE_WIDE_CLOSEST, TRACE_WIDE_ANY,
+ * TRACE_WIDE_CLOSEST1 and TRACE_WIDE_ANY1.
  *
  * Same answers as the binary walk of traverse_walk.h, bit for bit:
  * - the child boxes are tested with isect_box's float operations lane by
@@ -35,6 +36,7 @@
 #include <immintrin.h>
 
 #include "trace/intersect_tri4.h"
+#include "trace/ray_setup.h"
 
 struct wide_entry {
     uint32_t child;
@@ -626,6 +628,21 @@ WIDE8_LEAF_TEST(wide8_packet_closest, wide_packet_test, 0, 1)
 WIDE8_LEAF_TEST(wide8_packet_full, wide_packet_test, 0, 0)
 WIDE8_LEAF_TEST(wide8_packet_any, wide_packet_test, 1, 1)
 
+/* The byte offsets of the near x, y, z and far x, y, z rows of a
+ * bvh8_node's bounds per ray octant (bit k: dir[k] negative, whose near
+ * plane is then the max, row 3 + k): walk_wide8_ray's arithmetic on the
+ * sign bits, as a table for the walks from the set-up's lanes. */
+#define WIDE8_ROW (sizeof(((const struct bvh8_node *)NULL)->bounds[0]))
+#define WIDE8_ROWS(nx, ny, nz)                                                                   \
+    {(nx)*3 * WIDE8_ROW, (1 + (ny)*3) * WIDE8_ROW, (2 + (nz)*3) * WIDE8_ROW,                     \
+     (3 - (nx)*3) * WIDE8_ROW, (4 - (ny)*3) * WIDE8_ROW, (5 - (nz)*3) * WIDE8_ROW}
+static const uint8_t wide8_rows[8][6] = {WIDE8_ROWS(0, 0, 0), WIDE8_ROWS(1, 0, 0),
+                                         WIDE8_ROWS(0, 1, 0), WIDE8_ROWS(1, 1, 0),
+                                         WIDE8_ROWS(0, 0, 1), WIDE8_ROWS(1, 0, 1),
+                                         WIDE8_ROWS(0, 1, 1), WIDE8_ROWS(1, 1, 1)};
+#undef WIDE8_ROWS
+#undef WIDE8_ROW
+
 #define WIDE8_RAY walk_wide8_ray
 #define WIDE8_RAY_LEAF8 0
 #include "trace/traverse_wide8_ray.h"
@@ -644,7 +661,7 @@ WIDE8_LEAF_TEST(wide8_packet_any, wide_packet_test, 1, 1)
         wide_state_init(&s, ray, t_max, any_hit, hit);                                          \
         if (any_hit)                                                                            \
             tri4_ray_init(&s.r4, ray);                                                          \
-        const int done = walk(wide, &s, any_hit, stats, leave_early);                           \
+        const int done = walk(wide, &s, any_hit, stats, leave_early, NULL);                     \
         if (stats) {                                                                            \
             counters->node_tests += s.node_tests;                                               \
             counters->triangle_tests += s.triangle_tests;                                       \
@@ -733,6 +750,59 @@ WIDE8_LEAF_TEST(wide8_leaf8_any, wide_leaf8_test, 1, 1)
 WIDE8_WALK(wide8_walk_closest_leaf8, walk_wide8_ray_leaf8, 0, 0, 0)
 WIDE8_WALK(wide8_walk_closest_early_leaf8, walk_wide8_ray_leaf8, 0, 0, 1)
 WIDE8_WALK(wide8_walk_any_leaf8, walk_wide8_ray_leaf8, 1, 0, 1)
+
+/* The same three walks for the entries that take the ray's origin and
+ * direction (TRACE_WIDE_CLOSEST1, TRACE_WIDE_ANY1): the ray is set up
+ * here, in the walk's own frame (ray_setup.h), so the walk's first
+ * vectors and the leaf's constants come from the set-up's registers, not
+ * from a struct another function has just stored; one call and its
+ * stores and loads fewer a ray. */
+/* tri4_ray_init's constants from the set-up's lanes (ray_setup.h): the
+ * same values, broadcast from registers instead of loaded by index. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void tri4_ray_init_lanes(struct tri4_ray *r, const struct ray_lanes *l, float tmin)
+{
+    const size_t row = sizeof(((const struct tri4_packet *)NULL)->v[0][0]);
+    const __m128 neg_org = _mm_xor_ps(l->org_k, _mm_set1_ps(-0.0f));
+    const unsigned neg = (unsigned)_mm_movemask_ps(_mm_cmplt_ps(l->inv_k, _mm_setzero_ps()));
+    r->off_x = (size_t)l->kx * row;
+    r->off_y = (size_t)l->ky * row;
+    r->off_z = (size_t)l->kz * row;
+    r->neg_org_x = _mm_permute_ps(neg_org, 0x00);
+    r->neg_org_y = _mm_permute_ps(neg_org, 0x55);
+    r->neg_org_z = _mm_permute_ps(neg_org, 0xAA);
+    r->sx = _mm_permute_ps(l->shear, 0x00);
+    r->sy = _mm_permute_ps(l->shear, 0x55);
+    r->sz = _mm_permute_ps(l->inv_k, 0xAA);
+    r->inv_x = _mm_permute_ps(l->inv_k, 0x00);
+    r->inv_y = _mm_permute_ps(l->inv_k, 0x55);
+    r->tmin = _mm_set1_ps(tmin);
+    r->neg_x = (int)(neg & 1u);
+    r->neg_y = (int)(neg >> 1 & 1u);
+}
+
+#define WIDE8_WALK1(name, walk, any_hit, leave_early)                                           \
+    static int name(const struct bvh4 *wide, const float org[3], const float dir[3],           \
+                    float tmin, float t_max, struct trace_hit *hit) WIDE_NOINLINE;              \
+    static int name(const struct bvh4 *wide, const float org[3], const float dir[3],           \
+                    float tmin, float t_max, struct trace_hit *hit)                             \
+    {                                                                                           \
+        struct trace_ray ray;                                                                   \
+        struct ray_lanes lanes;                                                                 \
+        trace_ray_setup_lanes(&ray, &lanes, org, dir, tmin);                                    \
+        struct wide_state s;                                                                    \
+        wide_state_init(&s, &ray, t_max, any_hit, hit);                                         \
+        if (any_hit)                                                                            \
+            tri4_ray_init_lanes(&s.r4, &lanes, tmin);                                           \
+        const int done = walk(wide, &s, any_hit, 0, leave_early, &lanes);                       \
+        return any_hit ? done : s.found;                                                        \
+    }
+
+WIDE8_WALK1(wide8_walk1_closest_leaf8, walk_wide8_ray_leaf8, 0, 0)
+WIDE8_WALK1(wide8_walk1_closest_early_leaf8, walk_wide8_ray_leaf8, 0, 1)
+WIDE8_WALK1(wide8_walk1_any_leaf8, walk_wide8_ray_leaf8, 1, 1)
 
 /*
  * The leaf of the 8-wide walks on its own, for
@@ -894,4 +964,70 @@ int TRACE_WIDE_ANY(const struct bvh4 *wide, const struct bvh *bvh, const float *
                    const struct trace_ray *ray, float t_max, struct trace_counters *counters)
 {
     return walk_wide_single(wide, bvh, tri, ray, t_max, 1, NULL, counters);
+}
+
+/* closest4/any4 from the ray's origin, direction and tmin (kernels.h's
+ * closest1/any1): trace_ray_init_single's ray, set up inside the 8-wide
+ * walk where the layout has one (WIDE8_WALK1), else here before the walk
+ * of walk_wide_single.  Same answers as trace_ray_init_single followed by
+ * closest4/any4, bit for bit (the same set-up text, ray_setup.h). */
+static int walk_wide_single1_other(const struct bvh4 *wide, const struct bvh *bvh,
+                                   const float *tri, const float org[3], const float dir[3],
+                                   float tmin, float t_max, int any_hit, struct trace_hit *hit,
+                                   struct trace_counters *counters) WIDE_NOINLINE;
+static int walk_wide_single1_other(const struct bvh4 *wide, const struct bvh *bvh,
+                                   const float *tri, const float org[3], const float dir[3],
+                                   float tmin, float t_max, int any_hit, struct trace_hit *hit,
+                                   struct trace_counters *counters)
+{
+    struct trace_ray ray;
+    trace_ray_setup_single(&ray, org, dir, tmin);
+    return walk_wide_single(wide, bvh, tri, &ray, t_max, any_hit, hit, counters);
+}
+
+/* The entries' choice of walk.  The cases without an 8-wide walk of
+ * their own (counters, a 4-wide or binary layout) are a function apart
+ * (walk_wide_single1_other): with their set-up inlined here, the entry
+ * had a frame of its own (its trace_ray, 32-byte aligned), 31
+ * instructions a ray before and after the walk's call instead of a
+ * jump. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline int walk_wide_single1(const struct bvh4 *wide, const struct bvh *bvh,
+                                    const float *tri, const float org[3], const float dir[3],
+                                    float tmin, float t_max, int any_hit, struct trace_hit *hit,
+                                    struct trace_counters *counters)
+{
+#if defined(__AVX__)
+    if (!counters && wide->width == 8 && wide->node_count) {
+        if (any_hit)
+            return wide8_walk1_any_leaf8(wide, org, dir, tmin, t_max, hit);
+        if (wide->prefetch_top)
+            return wide8_walk1_closest_early_leaf8(wide, org, dir, tmin, t_max, hit);
+        return wide8_walk1_closest_leaf8(wide, org, dir, tmin, t_max, hit);
+    }
+#endif
+    return walk_wide_single1_other(wide, bvh, tri, org, dir, tmin, t_max, any_hit, hit,
+                                   counters);
+}
+
+int TRACE_WIDE_CLOSEST1(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,
+                        const float org[3], const float dir[3], float tmin, float t_max,
+                        struct trace_hit *hit, struct trace_counters *counters);
+int TRACE_WIDE_CLOSEST1(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,
+                        const float org[3], const float dir[3], float tmin, float t_max,
+                        struct trace_hit *hit, struct trace_counters *counters)
+{
+    return walk_wide_single1(wide, bvh, tri, org, dir, tmin, t_max, 0, hit, counters);
+}
+
+int TRACE_WIDE_ANY1(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,
+                    const float org[3], const float dir[3], float tmin, float t_max,
+                    struct trace_counters *counters);
+int TRACE_WIDE_ANY1(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,
+                    const float org[3], const float dir[3], float tmin, float t_max,
+                    struct trace_counters *counters)
+{
+    return walk_wide_single1(wide, bvh, tri, org, dir, tmin, t_max, 1, NULL, counters);
 }

@@ -9,20 +9,37 @@
  * without the 8-lane call compiled to different code (register allocation
  * and block order; the soup's primary rays were 0.05 of Embree slower),
  * although the flag was a constant 0 in them.  Define WIDE8_RAY and
- * WIDE8_RAY_LEAF8 before including; no include guard.
+ * WIDE8_RAY_LEAF8 before including; no include guard.  lanes: the ray's
+ * set-up in SSE lanes where the walk's caller made it (WIDE8_WALK1), else
+ * NULL (the walk reads the struct).
  */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
 static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int any_hit, int stats,
-                            int leave_early)
+                            int leave_early, const struct ray_lanes *lanes)
 {
     const struct trace_ray *ray = s->ray;
     const struct bvh8_node *nodes = wide->nodes8;
     const struct tri4_packet *packets = wide->packets;
     size_t near_x, near_y, near_z, far_x, far_y, far_z;
     int octant = 0;
-    {
+    if (lanes) {
+        /* The set-up's lanes (WIDE8_WALK1): the octant from the signs of
+         * dir, which are those of 1 / dir (-0 gives -inf), so the rows
+         * do not wait for the division and the first node's loads can
+         * start before it ends; the six row offsets from a table by
+         * octant (wide8_rows), six loads instead of about 30
+         * instructions of arithmetic and register moves. */
+        octant = _mm_movemask_ps(lanes->dir) & 7;
+        const uint8_t *r = wide8_rows[octant];
+        near_x = r[0];
+        near_y = r[1];
+        near_z = r[2];
+        far_x = r[3];
+        far_y = r[4];
+        far_z = r[5];
+    } else {
         /* Row k is min k, row 3 + k max k; a negative direction (-0
          * too) has its near plane at the max.  By arithmetic on the sign
          * bits: near + far = 2k + 3 rows. */
