@@ -107,6 +107,7 @@ struct top_state {
     float best;
     float box_limit; /* as in traverse.c: widened once a hit is found */
     int found;
+    int plain; /* trace_scene_plain of org and of dir */
 };
 
 /* A flattened hierarchy in slot `index` (flat_walk.h): the same answers
@@ -182,9 +183,16 @@ static int visit_instance(struct top_state *s, uint32_t index)
     counters->instance_tests++;
     if (!scene->acquire(scene->user, inst->object, &view))
         return 0;
-    struct trace_ray o_ray;
-    if (!trace_scene_object_ray(inst, s->org, s->dir, s->tmin, &s->ray, &o_ray))
-        return 0;
+    /* The object's ray: the world ray itself where the instance is the
+     * identity and the ray's components are finite and not zero (what
+     * trace_scene_object_ray would copy), without the copy. */
+    struct trace_ray o_copy;
+    const struct trace_ray *o_ray = &s->ray;
+    if (!(inst->identity && s->plain)) {
+        if (!trace_scene_object_ray(inst, s->org, s->dir, s->tmin, &s->ray, &o_copy))
+            return 0;
+        o_ray = &o_copy;
+    }
     /* An instance the scene's hit filter applies to (filter_hits); a
      * frame without one pays this test only. */
     const int filtered =
@@ -197,9 +205,9 @@ static int visit_instance(struct top_state *s, uint32_t index)
      * for a wide one). */
     const uint64_t tests_before = counters->object.node_tests;
     if (s->any_hit && !filtered) {
-        int got = wide ? kernels->any4(view.wide, view.bvh, view.tri, &o_ray, s->best,
+        int got = wide ? kernels->any4(view.wide, view.bvh, view.tri, o_ray, s->best,
                                        &counters->object)
-                       : kernels->any(view.bvh, view.tri, &o_ray, s->best, &counters->object);
+                       : kernels->any(view.bvh, view.tri, o_ray, s->best, &counters->object);
         if (view.ray_count)
             trace_scene_count_rays(counters, view.ray_count, tests_before,
                                    wide ? view.wide->width : 1, 1);
@@ -208,14 +216,14 @@ static int visit_instance(struct top_state *s, uint32_t index)
     /* The tie rule is keep_hit's. */
     float limit = s->found ? isect_next_up(s->best) : s->best;
     struct trace_hit h;
-    int got = wide ? kernels->closest4(view.wide, view.bvh, view.tri, &o_ray, limit, &h,
+    int got = wide ? kernels->closest4(view.wide, view.bvh, view.tri, o_ray, limit, &h,
                                        &counters->object)
-                   : kernels->closest(view.bvh, view.tri, &o_ray, limit, &h, &counters->object);
+                   : kernels->closest(view.bvh, view.tri, o_ray, limit, &h, &counters->object);
     if (view.ray_count)
         trace_scene_count_rays(counters, view.ray_count, tests_before,
                                    wide ? view.wide->width : 1, 1);
     if (got && filtered)
-        got = filter_hits(s, index, &view, &o_ray, limit, &h);
+        got = filter_hits(s, index, &view, o_ray, limit, &h);
     if (s->any_hit)
         return got;
     if (got)
@@ -434,6 +442,7 @@ static int walk(const struct trace_scene *scene, const float org[3], const float
     /* One set-up per ray; instances with the identity matrix reuse it.
      * A single ray: the set-up without branches (ray.c). */
     trace_ray_init_single(&s.ray, org, dir, tmin);
+    s.plain = trace_scene_plain(org) & trace_scene_plain(dir);
     s.any_hit = any_hit;
     s.hit = hit;
     s.counters = counters;
