@@ -448,14 +448,19 @@ static unsigned walk(const struct trace_scene *scene, const struct trace_packet 
         s.best[r] = p->tmax[r];
         s.top.box_limit[r] = p->tmax[r];
         s.octant[r] = trace_scene_box_rows(&s.ray[r], s.near_row[r], s.far_row[r]);
-        s.plain |= (unsigned)(trace_scene_plain(p->org[r]) & trace_scene_plain(p->dir[r])) << r;
+        const int plain_org = trace_scene_plain(p->org[r]);
+        s.plain |= (unsigned)(plain_org & trace_scene_plain(p->dir[r])) << r;
 #if ISECT_PAIR_SSE
+        /* A finite, non-zero origin is finite: the rare other one is read
+         * again. */
+        if (!plain_org)
+            odd |= not_finite(p->org[r][0]) | not_finite(p->org[r][1]) |
+                   not_finite(p->org[r][2]);
         /* lanes_by_box's rays across lanes, and its condition. */
         s.top.tmin[r] = s.ray[r].tmin;
         for (int a = 0; a < 3; a++) {
             s.top.org[a][r] = s.ray[r].org[a];
             s.top.inv_dir[a][r] = s.ray[r].inv_dir[a];
-            odd |= not_finite(s.ray[r].org[a]);
         }
         octants |= 1u << s.octant[r];
 #endif
