@@ -745,11 +745,18 @@ WIDE8_LEAF_TEST(wide8_leaf8_any, wide_leaf8_test, 1, 1)
 
 /* The single-ray walks with one 8-lane test for a leaf of two packets
  * (walk_wide8_ray_leaf8): one 8-lane pass instead of two 4-lane passes
- * with their own early returns.  No copies with counters: the walks
- * above count the same nodes and triangles. */
+ * with their own early returns; and their copies with counters, which
+ * count what the walks above count (a leaf's triangles before its test,
+ * whichever test it is).  The two-level walk (scene_traverse.c) always
+ * passes counters (rtGet's statistics and RT_AUTOMATIC's model read
+ * them): before the copies with counters its rays took the 4-lane
+ * leaves. */
 WIDE8_WALK(wide8_walk_closest_leaf8, walk_wide8_ray_leaf8, 0, 0, 0)
 WIDE8_WALK(wide8_walk_closest_early_leaf8, walk_wide8_ray_leaf8, 0, 0, 1)
 WIDE8_WALK(wide8_walk_any_leaf8, walk_wide8_ray_leaf8, 1, 0, 1)
+WIDE8_WALK(wide8_walk_closest_leaf8_stats, walk_wide8_ray_leaf8, 0, 1, 0)
+WIDE8_WALK(wide8_walk_closest_early_leaf8_stats, walk_wide8_ray_leaf8, 0, 1, 1)
+WIDE8_WALK(wide8_walk_any_leaf8_stats, walk_wide8_ray_leaf8, 1, 1, 1)
 
 /* The same three walks for the entries that take the ray's origin and
  * direction (TRACE_WIDE_CLOSEST1, TRACE_WIDE_ANY1): the ray is set up
@@ -927,12 +934,13 @@ static inline int walk_wide_single(const struct bvh4 *wide, const struct bvh *bv
 #if defined(__AVX__)
     if (wide->width == 8) {
         if (any_hit)
-            return counters ? wide8_walk_any_stats(wide, ray, t_max, hit, counters)
+            return counters ? wide8_walk_any_leaf8_stats(wide, ray, t_max, hit, counters)
                             : wide8_walk_any_leaf8(wide, ray, t_max, hit, counters);
         if (wide->prefetch_top)
-            return counters ? wide8_walk_closest_early_stats(wide, ray, t_max, hit, counters)
-                            : wide8_walk_closest_early_leaf8(wide, ray, t_max, hit, counters);
-        return counters ? wide8_walk_closest_stats(wide, ray, t_max, hit, counters)
+            return counters
+                       ? wide8_walk_closest_early_leaf8_stats(wide, ray, t_max, hit, counters)
+                       : wide8_walk_closest_early_leaf8(wide, ray, t_max, hit, counters);
+        return counters ? wide8_walk_closest_leaf8_stats(wide, ray, t_max, hit, counters)
                         : wide8_walk_closest_leaf8(wide, ray, t_max, hit, counters);
     }
 #endif
