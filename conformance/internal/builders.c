@@ -593,6 +593,84 @@ static void check_split_threshold(void)
     }
 }
 
+/*
+ * The histogram loop's forms (build_internal.h, build_fill_bins): the
+ * AVX2 one, where it runs, must give the portable one's bytes, boxes and
+ * counts, also for coordinates that are +-0, denormal, huge, infinite or
+ * NaN (where min and max depend on their operands' order), over bin
+ * counts from 2 to BVH_MAX_BINS and both histogram layouts (the serial
+ * builder's fixed axis stride, the parallel one's packed axes).
+ */
+static void check_fill_bins(void)
+{
+    build_fill_bins_fn avx2 = build_fill_bins_avx2_unit();
+    if (!avx2) {
+        printf("  fill_bins: no AVX2 form here, skipped\n");
+        return;
+    }
+    enum { N = 3000, RECORDS = 3 * BVH_MAX_BINS };
+    static const float special[] = {0.0f, -0.0f, 1e-40f, -1e-40f, 3e38f, -3e38f,
+                                    INFINITY, -INFINITY, NAN, 0.5f};
+    struct build_ref *refs = malloc(N * sizeof(*refs));
+    float(*box_a)[8] = malloc(RECORDS * sizeof(*box_a));
+    float(*box_b)[8] = malloc(RECORDS * sizeof(*box_b));
+    uint32_t(*count_a)[8] = calloc(RECORDS, sizeof(*count_a));
+    uint32_t(*count_b)[8] = calloc(RECORDS, sizeof(*count_b));
+    if (!refs || !box_a || !box_b || !count_a || !count_b) {
+        failures += !CHECKF(0, "fill_bins: out of memory");
+        goto out;
+    }
+    struct tg_rng r;
+    tg_seed(&r, 91);
+    int bad = 0;
+    for (int trial = 0; trial < 60 && bad < 5; trial++) {
+        const int bins = 2 + trial % (BVH_MAX_BINS - 1);
+        const int packed = trial & 1;
+        const uint32_t stride = 32u * (uint32_t)(packed ? bins : BVH_MAX_BINS);
+        const uint32_t axis_base[4] = {0, stride, 2 * stride, 0};
+        for (uint32_t i = 0; i < N; i++) {
+            struct aabb b;
+            for (int k = 0; k < 3; k++) {
+                b.min[k] = tg_unit(&r) - 0.5f;
+                b.max[k] = b.min[k] + 0.1f * tg_unit(&r);
+                if (trial % 3 == 0 && tg_unit(&r) < 0.2f)
+                    b.min[k] = special[(uint32_t)(tg_unit(&r) * 10.0f) % 10];
+                if (trial % 3 == 0 && tg_unit(&r) < 0.2f)
+                    b.max[k] = special[(uint32_t)(tg_unit(&r) * 10.0f) % 10];
+            }
+            build_ref_set(&refs[i], &b, i);
+        }
+        struct build_bin_map m;
+        m.origin = vec4_set(-0.6f, -0.5f, -0.7f, 0.0f);
+        m.scale = vec4_set((float)bins / 1.3f, trial % 5 == 0 ? 0.0f : (float)bins / 1.2f,
+                           (float)bins / 1.4f, 0.0f);
+        m.last = vec4_splat((float)(bins - 1));
+        memset(box_a, 0x5a, RECORDS * sizeof(*box_a));
+        memset(box_b, 0x5a, RECORDS * sizeof(*box_b));
+        const uint32_t begin = (uint32_t)trial;
+        const uint32_t end = N - (uint32_t)trial * 7;
+        build_fill_bins((char *)box_a, (char *)count_a, axis_base, bins, &m, refs, begin, end);
+        avx2((char *)box_b, (char *)count_b, axis_base, bins, &m, refs, begin, end);
+        int ok = 1;
+        for (int k = 0; k < 3 && ok; k++) {
+            for (int b = 0; b < bins && ok; b++) {
+                uint32_t rec = (axis_base[k] + 32u * (uint32_t)b) / 32u;
+                ok = memcmp(box_a[rec], box_b[rec], sizeof(box_a[rec])) == 0 &&
+                     count_a[rec][0] == count_b[rec][0];
+            }
+        }
+        if (!ok && bad++ < 5)
+            failures += !CHECKF(0, "fill_bins: AVX2 histogram differs (trial %d, %d bins)", trial,
+                                bins);
+    }
+out:
+    free(refs);
+    free(box_a);
+    free(box_b);
+    free(count_a);
+    free(count_b);
+}
+
 int main(void)
 {
     double t0 = rt_now_ms();
@@ -601,6 +679,7 @@ int main(void)
     check_depth_guard();
     check_tiny();
     check_split_threshold();
+    check_fill_bins();
 
     /* Structure over every parameter combination, on small scenes of
      * every kind (sizes around the small-node and bin-count thresholds). */

@@ -134,38 +134,9 @@ static void range_bounds(const struct build_ref *refs, uint32_t begin, uint32_t 
     vec4_store(cb->hi, chi);
 }
 
-/* Step 1: project every primitive of the node into the bins of each axis
- * (Wald, Ize and Parker (2008) sec. 4; Wald 2007). */
-static void fill_bins(struct bins *bins, int bin_count, const struct binning *bn,
-                      const struct build_ref *refs, uint32_t begin, uint32_t end)
-{
-    vec4 empty_lo = vec4_splat(INFINITY);
-    vec4 empty_hi = vec4_splat(-INFINITY);
-    for (int k = 0; k < 3; k++) {
-        for (int b = 0; b < bin_count; b++) {
-            vec4_store(&bins->box[k][b][0], empty_lo);
-            vec4_store(&bins->box[k][b][4], empty_hi);
-            bins->count[k][b][0] = 0;
-        }
-    }
-    char *box_base = (char *)bins->box;
-    char *count_base = (char *)bins->count;
-    for (uint32_t i = begin; i < end; i++) {
-        const struct build_ref *r = &refs[i];
-        /* Lane 3 masked: the index's bits would be denormal floats, and
-         * arithmetic on denormals can cost a microcode assist each. */
-        vec4 lo = vec4_xyz0(vec4_load(r->lo));
-        vec4 hi = vec4_load(r->hi);
-        uint32_t off[4];
-        build_bin_offsets(&bn->map, vec4_add(lo, hi), bins_axis_base, off);
-        for (int k = 0; k < 3; k++) {
-            float *box = (float *)(void *)(box_base + off[k]);
-            vec4_store(&box[0], vec4_min(vec4_load(&box[0]), lo));
-            vec4_store(&box[4], vec4_max(vec4_load(&box[4]), hi));
-            (*(uint32_t *)(void *)(count_base + off[k]))++;
-        }
-    }
-}
+/* Step 1, projecting every primitive of the node into the bins of each
+ * axis (Wald, Ize and Parker (2008) sec. 4; Wald 2007), is
+ * build_fill_bins (build_internal.h) or its AVX2 form. */
 
 /* One side of find_best_split's sweep, the three axes one per lane: the
  * side's box as x, y, z columns (lo and hi) and its triangle counts. */
@@ -520,6 +491,9 @@ int accel_build_binned_sah(struct bvh *out, const struct aabb *prim_boxes, uint3
         return -1;
     }
 
+    const build_fill_bins_fn fill = build_fill_bins_best();
+    char *bin_box = (char *)bins->box;
+    char *bin_count_base = (char *)bins->count;
     struct task stack[BUILD_STACK_SIZE];
     struct task *t = &stack[0];
     for (uint32_t i = 0; i < prim_count; i++)
@@ -566,7 +540,8 @@ int accel_build_binned_sah(struct bvh *out, const struct aabb *prim_boxes, uint3
             } else {
                 int bin_count = bins_for(p.bins, n);
                 init_binning(&bn, &task.cb, bin_count);
-                fill_bins(bins, bin_count, &bn, refs, task.r.begin, task.r.end);
+                fill(bin_box, bin_count_base, bins_axis_base, bin_count, &bn.map, refs,
+                     task.r.begin, task.r.end);
                 if (find_best_split(bins, bin_count, &bn, &s)) {
                     kind = SPLIT_BINNED;
                     sah = s.sah;

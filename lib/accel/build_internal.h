@@ -105,6 +105,31 @@ static inline void build_bin_offsets(const struct build_bin_map *m, vec4 centroi
     vec4_trunc_offset32(off, f, axis_base);
 }
 
+/*
+ * The histogram of one node's refs[begin, end) on the three axes (Wald
+ * 2007; Wald, Ize and Parker (2008) sec. 4), shared by the serial and the
+ * parallel binned builder: the bin_count bins of axis k are 32-byte
+ * records at box_base + axis_base[k] + 32 b (box: min xyz -, max xyz -)
+ * and, at the same offset from count_base, a record whose first word is
+ * the bin's count.  Clears those bins first, then per ref grows the box
+ * of its bin on each axis (build_bin_offsets) and counts it.  Every form
+ * gives the same bytes: per bin the min and max in ref order, each as
+ * minps(bin, ref) and maxps(bin, ref) would give it (NaN and equal zeros
+ * included).  build_bins.c has the portable form, build_bins_avx2.c an
+ * AVX2 one; build_fill_bins_best picks.
+ */
+typedef void (*build_fill_bins_fn)(char *box_base, char *count_base, const uint32_t axis_base[4],
+                                   int bin_count, const struct build_bin_map *map,
+                                   const struct build_ref *refs, uint32_t begin, uint32_t end);
+void build_fill_bins(char *box_base, char *count_base, const uint32_t axis_base[4],
+                     int bin_count, const struct build_bin_map *map,
+                     const struct build_ref *refs, uint32_t begin, uint32_t end);
+/* The AVX2 form, or NULL where that unit is absent (no AVX2 compiler
+ * target, RT_NO_SIMD) or the CPU does not run AVX2. */
+build_fill_bins_fn build_fill_bins_avx2_unit(void);
+/* The AVX2 form where it runs, else build_fill_bins. */
+build_fill_bins_fn build_fill_bins_best(void);
+
 /* Maps a float to an unsigned integer with the same order (negatives
  * reversed), and every NaN to a fixed place: a total order even for input
  * that breaks the contract, so sorts and selections built on it cannot

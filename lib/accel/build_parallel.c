@@ -174,6 +174,7 @@ struct pbuild {
 
     /* binning */
     int bins;
+    build_fill_bins_fn fill; /* the histogram loop (build_internal.h) */
     struct open_node *open;
     uint32_t open_count;
     int src; /* buffer the open nodes' refs are in */
@@ -355,28 +356,9 @@ static void bin_task(void *arg, int worker)
     while ((c = chunk_of(b)) < b->chunk_count) {
         const struct chunk *ch = &b->chunks[c];
         const struct build_bin_map map = bin_map_of(&b->open[ch->node], bins - 1);
-        float(*box)[8] = &b->hist_box[(size_t)c * 3 * bins];
-        uint32_t(*count)[8] = &b->hist_count[(size_t)c * 3 * bins];
-        for (int i = 0; i < 3 * bins; i++) {
-            vec4_store(&box[i][0], vec4_splat(INFINITY));
-            vec4_store(&box[i][4], vec4_splat(-INFINITY));
-            count[i][0] = 0;
-        }
-        char *box_base = (char *)box;
-        char *count_base = (char *)count;
-        for (uint32_t i = ch->begin; i < ch->end; i++) {
-            const struct build_ref *r = &refs[i];
-            vec4 lo = vec4_xyz0(vec4_load(r->lo));
-            vec4 hi = vec4_load(r->hi);
-            uint32_t off[4];
-            build_bin_offsets(&map, vec4_add(lo, hi), axis_base, off);
-            for (int k = 0; k < 3; k++) {
-                float *bin = (float *)(void *)(box_base + off[k]);
-                vec4_store(&bin[0], vec4_min(vec4_load(&bin[0]), lo));
-                vec4_store(&bin[4], vec4_max(vec4_load(&bin[4]), hi));
-                (*(uint32_t *)(void *)(count_base + off[k]))++;
-            }
-        }
+        b->fill((char *)&b->hist_box[(size_t)c * 3 * bins],
+                (char *)&b->hist_count[(size_t)c * 3 * bins], axis_base, bins, &map, refs,
+                ch->begin, ch->end);
     }
 }
 
@@ -531,6 +513,7 @@ static int queue_child(struct pbuild *b, struct open_node *next, uint32_t *next_
 static int stage1_binning(struct pbuild *b, const struct open_node *root)
 {
     b->bins = b->p.bins;
+    b->fill = build_fill_bins_best();
     b->src = 0;
     struct open_node *next = NULL;
     uint32_t open_cap = 0;
