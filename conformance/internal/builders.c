@@ -671,6 +671,112 @@ out:
     free(count_b);
 }
 
+/*
+ * The partition's AVX2 form (build_internal.h, build_partition_fn) against
+ * the portable loops it replaces (build_binned_sah.c's in-place Lomuto
+ * loop, build_parallel.c's stable copy), restated here: the same ref
+ * bytes in the same order and the same side bounds, bit for bit, also
+ * for refs whose coordinates are +-0, denormal, huge, infinite or NaN.
+ */
+static void check_partition(void)
+{
+    build_partition_fn avx2 = build_partition_avx2_unit();
+    if (!avx2) {
+        printf("  partition: no AVX2 form here, skipped\n");
+        return;
+    }
+    enum { N = 2000 };
+    static const float special[] = {0.0f, -0.0f, 1e-40f, -1e-40f, 3e38f, -3e38f,
+                                    INFINITY, -INFINITY, NAN, 0.5f};
+    struct build_ref *in = malloc(N * sizeof(*in));
+    struct build_ref *a = malloc(N * sizeof(*a));
+    struct build_ref *b = malloc(N * sizeof(*b));
+    if (!in || !a || !b) {
+        failures += !CHECKF(0, "partition: out of memory");
+        goto out;
+    }
+    struct tg_rng r;
+    tg_seed(&r, 92);
+    int bad = 0;
+    for (int trial = 0; trial < 60 && bad < 5; trial++) {
+        const int axis = trial % 3;
+        const float t = trial % 6 < 2 ? 0.0f : 1.6f * tg_unit(&r) - 0.8f;
+        for (uint32_t i = 0; i < N; i++) {
+            struct aabb box;
+            for (int k = 0; k < 3; k++) {
+                box.min[k] = tg_unit(&r) - 0.5f;
+                box.max[k] = box.min[k] + 0.1f * tg_unit(&r);
+                if (trial % 3 == 0 && tg_unit(&r) < 0.2f)
+                    box.min[k] = special[(uint32_t)(tg_unit(&r) * 10.0f) % 10];
+                if (trial % 3 == 0 && tg_unit(&r) < 0.2f)
+                    box.max[k] = special[(uint32_t)(tg_unit(&r) * 10.0f) % 10];
+            }
+            /* Centroids on the threshold itself: the comparison decides. */
+            if (tg_unit(&r) < 0.1f)
+                box.min[axis] = box.max[axis] = 0.5f * t;
+            build_ref_set(&in[i], &box, i);
+        }
+        const uint32_t begin = (uint32_t)trial;
+        const uint32_t end = N - (uint32_t)trial * 5;
+        const int stable = trial & 1;
+        float bounds_a[4][4];
+        float bounds_b[4][4];
+        memcpy(a, in, N * sizeof(*a));
+        memcpy(b, in, N * sizeof(*b));
+        /* The portable loop. */
+        vec4 llo = vec4_splat(INFINITY);
+        vec4 lhi = vec4_splat(-INFINITY);
+        vec4 rlo = llo;
+        vec4 rhi = lhi;
+        const vec4 threshold = vec4_splat(t);
+        uint32_t result_a = 0;
+        uint32_t left_count = 0;
+        for (uint32_t i = begin; i < end; i++)
+            left_count += !(vec4_ge_bits(build_ref_centroid(&in[i]), threshold) >> axis & 1u);
+        if (stable) {
+            uint32_t li = begin;
+            uint32_t ri = begin + left_count;
+            for (uint32_t i = begin; i < end; i++) {
+                vec4 c = build_ref_centroid(&in[i]);
+                const uint32_t left = ((vec4_ge_bits(c, threshold) >> axis) & 1u) ^ 1u;
+                build_side_grow(c, left, &llo, &lhi, &rlo, &rhi);
+                a[left ? li : ri] = in[i];
+                li += left;
+                ri += 1 - left;
+            }
+            result_a = li;
+        } else {
+            uint32_t first_right = begin;
+            for (uint32_t i = begin; i < end; i++) {
+                struct build_ref x = a[i];
+                vec4 c = build_ref_centroid(&x);
+                const uint32_t left = ((vec4_ge_bits(c, threshold) >> axis) & 1u) ^ 1u;
+                build_side_grow(c, left, &llo, &lhi, &rlo, &rhi);
+                a[i] = a[first_right];
+                a[first_right] = x;
+                first_right += left;
+            }
+            result_a = first_right;
+        }
+        vec4_store(bounds_a[0], llo);
+        vec4_store(bounds_a[1], lhi);
+        vec4_store(bounds_a[2], rlo);
+        vec4_store(bounds_a[3], rhi);
+        uint32_t result_b = stable ? avx2(in, b, begin, end, begin, begin + left_count, axis, t,
+                                          bounds_b)
+                                   : avx2(b, NULL, begin, end, 0, 0, axis, t, bounds_b);
+        int ok = result_a == result_b && memcmp(a, b, N * sizeof(*a)) == 0 &&
+                 memcmp(bounds_a, bounds_b, sizeof(bounds_a)) == 0;
+        if (!ok && bad++ < 5)
+            failures += !CHECKF(0, "partition: AVX2 form differs (trial %d, %s)", trial,
+                                stable ? "stable" : "in place");
+    }
+out:
+    free(in);
+    free(a);
+    free(b);
+}
+
 int main(void)
 {
     double t0 = rt_now_ms();
@@ -680,6 +786,7 @@ int main(void)
     check_tiny();
     check_split_threshold();
     check_fill_bins();
+    check_partition();
 
     /* Structure over every parameter combination, on small scenes of
      * every kind (sizes around the small-node and bin-count thresholds). */

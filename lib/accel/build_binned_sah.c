@@ -295,15 +295,26 @@ static int find_best_split(const struct bins *bins, int bin_count, const struct 
  */
 static uint32_t partition_refs(struct build_ref *refs, uint32_t begin, uint32_t end,
                                const struct binning *bn, const struct split *s,
-                               struct cbounds *left_cb, struct cbounds *right_cb)
+                               build_partition_fn avx2, struct cbounds *left_cb,
+                               struct cbounds *right_cb)
 {
     const int axis = s->axis;
     float origin[4];
     float scale[4];
     vec4_store(origin, bn->map.origin);
     vec4_store(scale, bn->map.scale);
-    const vec4 threshold = vec4_splat(
-        build_split_threshold(&bn->map, axis, s->plane, origin[axis], scale[axis]));
+    const float t = build_split_threshold(&bn->map, axis, s->plane, origin[axis], scale[axis]);
+    if (avx2) {
+        /* The same loop in AVX2 (build_internal.h, build_partition_fn). */
+        float bounds[4][4];
+        uint32_t first_right = avx2(refs, NULL, begin, end, 0, 0, axis, t, bounds);
+        memcpy(left_cb->lo, bounds[0], sizeof(left_cb->lo));
+        memcpy(left_cb->hi, bounds[1], sizeof(left_cb->hi));
+        memcpy(right_cb->lo, bounds[2], sizeof(right_cb->lo));
+        memcpy(right_cb->hi, bounds[3], sizeof(right_cb->hi));
+        return first_right;
+    }
+    const vec4 threshold = vec4_splat(t);
     vec4 llo = vec4_splat(INFINITY);
     vec4 lhi = vec4_splat(-INFINITY);
     vec4 rlo = llo;
@@ -492,6 +503,7 @@ int accel_build_binned_sah(struct bvh *out, const struct aabb *prim_boxes, uint3
     }
 
     const build_fill_bins_fn fill = build_fill_bins_best();
+    const build_partition_fn partition_avx2 = build_partition_avx2_unit();
     char *bin_box = (char *)bins->box;
     char *bin_count_base = (char *)bins->count;
     struct task stack[BUILD_STACK_SIZE];
@@ -565,7 +577,8 @@ int accel_build_binned_sah(struct bvh *out, const struct aabb *prim_boxes, uint3
         struct aabb left_box;
         struct aabb right_box;
         if (kind == SPLIT_BINNED) {
-            mid = partition_refs(refs, task.r.begin, task.r.end, &bn, &s, &left.cb, &right.cb);
+            mid = partition_refs(refs, task.r.begin, task.r.end, &bn, &s, partition_avx2,
+                                 &left.cb, &right.cb);
             left_box = s.left;
             right_box = s.right;
             /* partition_refs classifies exactly as fill_bins counted, so

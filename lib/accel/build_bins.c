@@ -6,7 +6,7 @@
  * The loop is the largest part of a binned build (a third of the
  * instructions of a one-thread build of a million triangles): per ref
  * and axis one box grown by a min and a max, and a count.
- * build_bins_avx2.c does the same with one 256-bit min per bin.
+ * build_binned_avx2.c does the same with one 256-bit min per bin.
  */
 #include "accel/build_internal.h"
 

@@ -115,7 +115,7 @@ static inline void build_bin_offsets(const struct build_bin_map *m, vec4 centroi
  * of its bin on each axis (build_bin_offsets) and counts it.  Every form
  * gives the same bytes: per bin the min and max in ref order, each as
  * minps(bin, ref) and maxps(bin, ref) would give it (NaN and equal zeros
- * included).  build_bins.c has the portable form, build_bins_avx2.c an
+ * included).  build_bins.c has the portable form, build_binned_avx2.c an
  * AVX2 one; build_fill_bins_best picks.
  */
 typedef void (*build_fill_bins_fn)(char *box_base, char *count_base, const uint32_t axis_base[4],
@@ -129,6 +129,25 @@ void build_fill_bins(char *box_base, char *count_base, const uint32_t axis_base[
 build_fill_bins_fn build_fill_bins_avx2_unit(void);
 /* The AVX2 form where it runs, else build_fill_bins. */
 build_fill_bins_fn build_fill_bins_best(void);
+
+/*
+ * The AVX2 form of the binned builders' partition of refs by a split's
+ * threshold (build_split_threshold: a ref goes left when !(c[axis] >=
+ * threshold), c its doubled centroid), or NULL where that unit is absent
+ * or the CPU does not run AVX2.  With dst NULL it partitions
+ * src[begin, end) in place exactly as build_binned_sah.c's Lomuto loop
+ * (the same permutation) and returns the first right slot; otherwise it
+ * copies the left refs, in order, to dst from left_dst and the right ones
+ * from right_dst, as build_parallel.c's partition_task, and returns the
+ * next left slot.  bounds gets the sides' centroid bounds (left lo, left
+ * hi, right lo, right hi; lane 3 as in the portable loops), bit for bit
+ * those of the portable loops (build_side_grow).
+ */
+typedef uint32_t (*build_partition_fn)(const struct build_ref *src, struct build_ref *dst,
+                                       uint32_t begin, uint32_t end, uint32_t left_dst,
+                                       uint32_t right_dst, int axis, float threshold,
+                                       float bounds[4][4]);
+build_partition_fn build_partition_avx2_unit(void);
 
 /* Maps a float to an unsigned integer with the same order (negatives
  * reversed), and every NaN to a fixed place: a total order even for input

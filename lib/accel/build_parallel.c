@@ -175,6 +175,7 @@ struct pbuild {
     /* binning */
     int bins;
     build_fill_bins_fn fill; /* the histogram loop (build_internal.h) */
+    build_partition_fn partition_avx2; /* NULL: the portable partition loop */
     struct open_node *open;
     uint32_t open_count;
     int src; /* buffer the open nodes' refs are in */
@@ -472,6 +473,17 @@ static void partition_task(void *arg, int worker)
         if (o->axis < 0)
             continue;
         const int axis = o->axis;
+        if (b->partition_avx2) {
+            /* The same loop in AVX2 (build_internal.h, build_partition_fn). */
+            float bounds[4][4];
+            b->partition_avx2(src, dst, ch->begin, ch->end, ch->left_dst, ch->right_dst, axis,
+                              o->threshold, bounds);
+            memcpy(ch->lclo, bounds[0], sizeof(ch->lclo));
+            memcpy(ch->lchi, bounds[1], sizeof(ch->lchi));
+            memcpy(ch->rclo, bounds[2], sizeof(ch->rclo));
+            memcpy(ch->rchi, bounds[3], sizeof(ch->rchi));
+            continue;
+        }
         const vec4 threshold = vec4_splat(o->threshold);
         uint32_t li = ch->left_dst;
         uint32_t ri = ch->right_dst;
@@ -514,6 +526,7 @@ static int stage1_binning(struct pbuild *b, const struct open_node *root)
 {
     b->bins = b->p.bins;
     b->fill = build_fill_bins_best();
+    b->partition_avx2 = build_partition_avx2_unit();
     b->src = 0;
     struct open_node *next = NULL;
     uint32_t open_cap = 0;
