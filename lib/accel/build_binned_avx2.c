@@ -154,22 +154,27 @@ static uint32_t partition_avx2(const struct build_ref *src, struct build_ref *ds
 
 /* The compiler's cpuid wrapper, as trace/kernels.c: it also checks that
  * the operating system saves the AVX registers. */
-static int cpu_runs_avx2(void)
+int build_cpu_runs_avx2(void)
 {
     __builtin_cpu_init();
-    return __builtin_cpu_supports("avx2");
+    return __builtin_cpu_supports("avx2") ? 1 : 0;
 }
 
 build_fill_bins_fn build_fill_bins_avx2_unit(void)
 {
-    return cpu_runs_avx2() ? fill_bins_avx2 : NULL;
+    return build_cpu_runs_avx2() ? fill_bins_avx2 : NULL;
 }
 
 build_partition_fn build_partition_avx2_unit(void)
 {
-    return cpu_runs_avx2() ? partition_avx2 : NULL;
+    return build_cpu_runs_avx2() ? partition_avx2 : NULL;
 }
 #else
+int build_cpu_runs_avx2(void)
+{
+    return 0;
+}
+
 build_fill_bins_fn build_fill_bins_avx2_unit(void)
 {
     return NULL;

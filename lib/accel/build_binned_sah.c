@@ -486,9 +486,16 @@ static int centroids_coincide(const struct cbounds *cb)
     return !(cb->hi[0] > cb->lo[0]) && !(cb->hi[1] > cb->lo[1]) && !(cb->hi[2] > cb->lo[2]);
 }
 
-int accel_build_binned_sah(struct bvh *out, const struct aabb *prim_boxes, uint32_t prim_count,
-                           const struct bvh_build_params *params)
+int build_binned_sah_forms(struct bvh *out, const struct aabb *prim_boxes, uint32_t prim_count,
+                           const struct bvh_build_params *params, int simd)
 {
+#if !defined(BUILD_BINNED_UNIT_AVX2)
+    /* The same source compiled for AVX2, where it runs
+     * (build_binned_sah_avx2.c): the same tree in fewer instructions. */
+    const build_binned_fn avx2 = simd ? accel_build_binned_sah_avx2_unit() : NULL;
+    if (avx2)
+        return avx2(out, prim_boxes, prim_count, params);
+#endif
     struct bvh_build_params p;
     int start = accel_build_begin(out, &p, params, prim_count);
     if (start <= 0)
@@ -502,8 +509,8 @@ int accel_build_binned_sah(struct bvh *out, const struct aabb *prim_boxes, uint3
         return -1;
     }
 
-    const build_fill_bins_fn fill = build_fill_bins_best();
-    const build_partition_fn partition_avx2 = build_partition_avx2_unit();
+    const build_fill_bins_fn fill = simd ? build_fill_bins_best() : build_fill_bins;
+    const build_partition_fn partition_avx2 = simd ? build_partition_avx2_unit() : NULL;
     char *bin_box = (char *)bins->box;
     char *bin_count_base = (char *)bins->count;
     struct task stack[BUILD_STACK_SIZE];
@@ -609,4 +616,10 @@ int accel_build_binned_sah(struct bvh *out, const struct aabb *prim_boxes, uint3
     rt_free(bins);
     accel_build_finish(out, node_count, max_depth);
     return 0;
+}
+
+int accel_build_binned_sah(struct bvh *out, const struct aabb *prim_boxes, uint32_t prim_count,
+                           const struct bvh_build_params *params)
+{
+    return build_binned_sah_forms(out, prim_boxes, prim_count, params, 1);
 }

@@ -149,6 +149,24 @@ typedef uint32_t (*build_partition_fn)(const struct build_ref *src, struct build
                                        float bounds[4][4]);
 build_partition_fn build_partition_avx2_unit(void);
 
+/* 1 when the CPU and the operating system run AVX2 (the compiler's cpuid
+ * wrapper, as trace/kernels.c), else 0; always 0 where the AVX2 unit is
+ * absent. */
+int build_cpu_runs_avx2(void);
+
+/* accel_build_binned_sah compiled for AVX2 (build_binned_sah_avx2.c: the
+ * same source, the same trees), or NULL where that unit is absent or the
+ * CPU does not run AVX2. */
+typedef int (*build_binned_fn)(struct bvh *out, const struct aabb *prim_boxes,
+                               uint32_t prim_count, const struct bvh_build_params *params);
+build_binned_fn accel_build_binned_sah_avx2_unit(void);
+/* accel_build_binned_sah with its AVX2 forms (the AVX2 copy of the
+ * builder, histogram and partition) where simd is non-zero and the CPU
+ * runs them, or with the portable ones (SSE2 encoding) where simd is 0:
+ * the same tree either way (tested by internal/builders). */
+int build_binned_sah_forms(struct bvh *out, const struct aabb *prim_boxes, uint32_t prim_count,
+                           const struct bvh_build_params *params, int simd);
+
 /* Maps a float to an unsigned integer with the same order (negatives
  * reversed), and every NaN to a fixed place: a total order even for input
  * that breaks the contract, so sorts and selections built on it cannot
