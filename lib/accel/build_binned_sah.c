@@ -8,8 +8,9 @@
  * the centroid bounds on each axis, keeps a count and a box per bin, and
  * evaluates the SAH only at the bins-1 planes between slices, from prefix
  * boxes swept in from both ends.  The steps are separate functions, named
- * as in madmann91/bvh's binned_sah_builder.h: fill_bins, find_best_split,
- * partition_refs, and the object-median fallback_split.
+ * as in madmann91/bvh's binned_sah_builder.h: fill_bins (here
+ * build_fill_bins, build_internal.h, shared with the parallel builder),
+ * find_best_split, partition_refs, and the object-median fallback_split.
  *
  * Conventions: primitives travel as `struct build_ref` (box + caller index, 32
  * bytes) in one array partitioned in place, so every pass over a node is a
@@ -36,8 +37,8 @@
  * projecting to this bin"): box[axis][bin] = min xyz -, max xyz -. */
 struct bins {
     float box[3][BVH_MAX_BINS][8];
-    /* count[k][b][0]; the stride of a box, so that fill_bins reaches both
-     * with one byte offset (build_bin_offsets). */
+    /* count[k][b][0]; the stride of a box, so that build_fill_bins
+     * reaches both with one byte offset (build_bin_offsets). */
     uint32_t count[3][BVH_MAX_BINS][8];
 };
 
@@ -281,9 +282,10 @@ static int find_best_split(const struct bins *bins, int bin_count, const struct 
  * [begin, end) and returns the first right slot.  Each primitive is
  * classified by one comparison with the least coordinate binned at or
  * above the plane (build_split_threshold), found with build_bins_of, the
- * very computation fill_bins counted it with, so the sides match the bin
- * counts.  Computes each side's centroid
- * bounds on the way, for the children's binning.
+ * very computation build_fill_bins counted it with, so the sides match
+ * the bin counts.  Computes each side's centroid bounds on the way, for
+ * the children's binning.  Where the CPU runs AVX2 the same loop runs as
+ * build_partition_fn's AVX2 form (build_binned_avx2.c).
  *
  * Lomuto's scheme without branches: every element is swapped with the
  * first right slot, which advances only past left ones.  The sides are
@@ -588,9 +590,10 @@ int build_binned_sah_forms(struct bvh *out, const struct aabb *prim_boxes, uint3
                                  &left.cb, &right.cb);
             left_box = s.left;
             right_box = s.right;
-            /* partition_refs classifies exactly as fill_bins counted, so
-             * this cannot fail; if it ever did, the boxes taken from the
-             * bins would be wrong, so split again from scratch. */
+            /* partition_refs classifies exactly as build_fill_bins
+             * counted, so this cannot fail; if it ever did, the boxes
+             * taken from the bins would be wrong, so split again from
+             * scratch. */
             if (mid - task.r.begin != s.left_count)
                 kind = SPLIT_MEDIAN;
         }
