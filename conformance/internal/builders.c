@@ -593,6 +593,215 @@ static void check_split_threshold(void)
     }
 }
 
+/*
+ * The histogram loop's forms (build_internal.h, build_fill_bins): the
+ * AVX2 one, where it runs, must give the portable one's bytes, boxes and
+ * counts, also for coordinates that are +-0, denormal, huge, infinite or
+ * NaN (where min and max depend on their operands' order), over bin
+ * counts from 2 to BVH_MAX_BINS and both histogram layouts (the serial
+ * builder's fixed axis stride, the parallel one's packed axes).
+ */
+static void check_fill_bins(void)
+{
+    build_fill_bins_fn avx2 = build_fill_bins_avx2_unit();
+    if (!avx2) {
+        printf("  fill_bins: no AVX2 form here, skipped\n");
+        return;
+    }
+    enum { N = 3000, RECORDS = 3 * BVH_MAX_BINS };
+    static const float special[] = {0.0f, -0.0f, 1e-40f, -1e-40f, 3e38f, -3e38f,
+                                    INFINITY, -INFINITY, NAN, 0.5f};
+    struct build_ref *refs = malloc(N * sizeof(*refs));
+    float(*box_a)[8] = malloc(RECORDS * sizeof(*box_a));
+    float(*box_b)[8] = malloc(RECORDS * sizeof(*box_b));
+    uint32_t(*count_a)[8] = calloc(RECORDS, sizeof(*count_a));
+    uint32_t(*count_b)[8] = calloc(RECORDS, sizeof(*count_b));
+    if (!refs || !box_a || !box_b || !count_a || !count_b) {
+        failures += !CHECKF(0, "fill_bins: out of memory");
+        goto out;
+    }
+    struct tg_rng r;
+    tg_seed(&r, 91);
+    int bad = 0;
+    for (int trial = 0; trial < 60 && bad < 5; trial++) {
+        const int bins = 2 + trial % (BVH_MAX_BINS - 1);
+        const int packed = trial & 1;
+        const uint32_t stride = 32u * (uint32_t)(packed ? bins : BVH_MAX_BINS);
+        const uint32_t axis_base[4] = {0, stride, 2 * stride, 0};
+        for (uint32_t i = 0; i < N; i++) {
+            struct aabb b;
+            for (int k = 0; k < 3; k++) {
+                b.min[k] = tg_unit(&r) - 0.5f;
+                b.max[k] = b.min[k] + 0.1f * tg_unit(&r);
+                if (trial % 3 == 0 && tg_unit(&r) < 0.2f)
+                    b.min[k] = special[(uint32_t)(tg_unit(&r) * 10.0f) % 10];
+                if (trial % 3 == 0 && tg_unit(&r) < 0.2f)
+                    b.max[k] = special[(uint32_t)(tg_unit(&r) * 10.0f) % 10];
+            }
+            build_ref_set(&refs[i], &b, i);
+        }
+        struct build_bin_map m;
+        m.origin = vec4_set(-0.6f, -0.5f, -0.7f, 0.0f);
+        m.scale = vec4_set((float)bins / 1.3f, trial % 5 == 0 ? 0.0f : (float)bins / 1.2f,
+                           (float)bins / 1.4f, 0.0f);
+        m.last = vec4_splat((float)(bins - 1));
+        memset(box_a, 0x5a, RECORDS * sizeof(*box_a));
+        memset(box_b, 0x5a, RECORDS * sizeof(*box_b));
+        const uint32_t begin = (uint32_t)trial;
+        const uint32_t end = N - (uint32_t)trial * 7;
+        build_fill_bins((char *)box_a, (char *)count_a, axis_base, bins, &m, refs, begin, end);
+        avx2((char *)box_b, (char *)count_b, axis_base, bins, &m, refs, begin, end);
+        int ok = 1;
+        for (int k = 0; k < 3 && ok; k++) {
+            for (int b = 0; b < bins && ok; b++) {
+                uint32_t rec = (axis_base[k] + 32u * (uint32_t)b) / 32u;
+                ok = memcmp(box_a[rec], box_b[rec], sizeof(box_a[rec])) == 0 &&
+                     count_a[rec][0] == count_b[rec][0];
+            }
+        }
+        if (!ok && bad++ < 5)
+            failures += !CHECKF(0, "fill_bins: AVX2 histogram differs (trial %d, %d bins)", trial,
+                                bins);
+    }
+out:
+    free(refs);
+    free(box_a);
+    free(box_b);
+    free(count_a);
+    free(count_b);
+}
+
+/*
+ * The partition's AVX2 form (build_internal.h, build_partition_fn) against
+ * the portable loops it replaces (build_binned_sah.c's in-place Lomuto
+ * loop, build_parallel.c's stable copy), restated here: the same ref
+ * bytes in the same order and the same side bounds, bit for bit, also
+ * for refs whose coordinates are +-0, denormal, huge, infinite or NaN.
+ */
+static void check_partition(void)
+{
+    build_partition_fn avx2 = build_partition_avx2_unit();
+    if (!avx2) {
+        printf("  partition: no AVX2 form here, skipped\n");
+        return;
+    }
+    enum { N = 2000 };
+    static const float special[] = {0.0f, -0.0f, 1e-40f, -1e-40f, 3e38f, -3e38f,
+                                    INFINITY, -INFINITY, NAN, 0.5f};
+    struct build_ref *in = malloc(N * sizeof(*in));
+    struct build_ref *a = malloc(N * sizeof(*a));
+    struct build_ref *b = malloc(N * sizeof(*b));
+    if (!in || !a || !b) {
+        failures += !CHECKF(0, "partition: out of memory");
+        goto out;
+    }
+    struct tg_rng r;
+    tg_seed(&r, 92);
+    int bad = 0;
+    for (int trial = 0; trial < 60 && bad < 5; trial++) {
+        const int axis = trial % 3;
+        const float t = trial % 6 < 2 ? 0.0f : 1.6f * tg_unit(&r) - 0.8f;
+        for (uint32_t i = 0; i < N; i++) {
+            struct aabb box;
+            for (int k = 0; k < 3; k++) {
+                box.min[k] = tg_unit(&r) - 0.5f;
+                box.max[k] = box.min[k] + 0.1f * tg_unit(&r);
+                if (trial % 3 == 0 && tg_unit(&r) < 0.2f)
+                    box.min[k] = special[(uint32_t)(tg_unit(&r) * 10.0f) % 10];
+                if (trial % 3 == 0 && tg_unit(&r) < 0.2f)
+                    box.max[k] = special[(uint32_t)(tg_unit(&r) * 10.0f) % 10];
+            }
+            /* Centroids on the threshold itself: the comparison decides. */
+            if (tg_unit(&r) < 0.1f)
+                box.min[axis] = box.max[axis] = 0.5f * t;
+            build_ref_set(&in[i], &box, i);
+        }
+        const uint32_t begin = (uint32_t)trial;
+        const uint32_t end = N - (uint32_t)trial * 5;
+        const int stable = trial & 1;
+        float bounds_a[4][4];
+        float bounds_b[4][4];
+        memcpy(a, in, N * sizeof(*a));
+        memcpy(b, in, N * sizeof(*b));
+        /* The portable loop. */
+        vec4 llo = vec4_splat(INFINITY);
+        vec4 lhi = vec4_splat(-INFINITY);
+        vec4 rlo = llo;
+        vec4 rhi = lhi;
+        const vec4 threshold = vec4_splat(t);
+        uint32_t result_a = 0;
+        uint32_t left_count = 0;
+        for (uint32_t i = begin; i < end; i++)
+            left_count += !(vec4_ge_bits(build_ref_centroid(&in[i]), threshold) >> axis & 1u);
+        if (stable) {
+            uint32_t li = begin;
+            uint32_t ri = begin + left_count;
+            for (uint32_t i = begin; i < end; i++) {
+                vec4 c = build_ref_centroid(&in[i]);
+                const uint32_t left = ((vec4_ge_bits(c, threshold) >> axis) & 1u) ^ 1u;
+                build_side_grow(c, left, &llo, &lhi, &rlo, &rhi);
+                a[left ? li : ri] = in[i];
+                li += left;
+                ri += 1 - left;
+            }
+            result_a = li;
+        } else {
+            uint32_t first_right = begin;
+            for (uint32_t i = begin; i < end; i++) {
+                struct build_ref x = a[i];
+                vec4 c = build_ref_centroid(&x);
+                const uint32_t left = ((vec4_ge_bits(c, threshold) >> axis) & 1u) ^ 1u;
+                build_side_grow(c, left, &llo, &lhi, &rlo, &rhi);
+                a[i] = a[first_right];
+                a[first_right] = x;
+                first_right += left;
+            }
+            result_a = first_right;
+        }
+        vec4_store(bounds_a[0], llo);
+        vec4_store(bounds_a[1], lhi);
+        vec4_store(bounds_a[2], rlo);
+        vec4_store(bounds_a[3], rhi);
+        uint32_t result_b = stable ? avx2(in, b, begin, end, begin, begin + left_count, axis, t,
+                                          bounds_b)
+                                   : avx2(b, NULL, begin, end, 0, 0, axis, t, bounds_b);
+        int ok = result_a == result_b && memcmp(a, b, N * sizeof(*a)) == 0 &&
+                 memcmp(bounds_a, bounds_b, sizeof(bounds_a)) == 0;
+        if (!ok && bad++ < 5)
+            failures += !CHECKF(0, "partition: AVX2 form differs (trial %d, %s)", trial,
+                                stable ? "stable" : "in place");
+    }
+out:
+    free(in);
+    free(a);
+    free(b);
+}
+
+/* The binned builder with its AVX2 forms (build_binned_sah_forms) gives
+ * the same tree, byte for byte, as with the portable ones. */
+static void check_forms(const char *name, const struct aabb *boxes, uint32_t n)
+{
+    struct bvh_build_params p;
+    bvh_build_params_default(&p);
+    for (int bins = 4; bins <= 32; bins *= 8) {
+        p.bins = bins;
+        struct bvh a;
+        struct bvh b;
+        if (build_binned_sah_forms(&a, boxes, n, &p, 0) ||
+            build_binned_sah_forms(&b, boxes, n, &p, 1)) {
+            failures += !CHECKF(0, "%s: forms: build failed", name);
+            return;
+        }
+        int same = a.node_count == b.node_count && a.depth == b.depth &&
+                   a.prim_count == b.prim_count &&
+                   memcmp(a.nodes, b.nodes, a.node_count * sizeof(*a.nodes)) == 0 &&
+                   memcmp(a.prim_index, b.prim_index, a.prim_count * sizeof(*a.prim_index)) == 0;
+        failures += !CHECKF(same, "%s: %d bins: the AVX2 forms build another tree", name, bins);
+        bvh_release(&a);
+        bvh_release(&b);
+    }
+}
+
 int main(void)
 {
     double t0 = rt_now_ms();
@@ -601,6 +810,8 @@ int main(void)
     check_depth_guard();
     check_tiny();
     check_split_threshold();
+    check_fill_bins();
+    check_partition();
 
     /* Structure over every parameter combination, on small scenes of
      * every kind (sizes around the small-node and bin-count thresholds). */
@@ -637,6 +848,7 @@ int main(void)
     for (int s = 0; s < 4; s++) {
         struct aabb *boxes = tg_boxes(scenes[s]);
         check_quality(names[s], boxes, scenes[s]->tri_count);
+        check_forms(names[s], boxes, scenes[s]->tri_count);
         if (s == 0)
             check_alloc_failures(boxes, 2000);
         free(boxes);

@@ -8,8 +8,9 @@
  * the centroid bounds on each axis, keeps a count and a box per bin, and
  * evaluates the SAH only at the bins-1 planes between slices, from prefix
  * boxes swept in from both ends.  The steps are separate functions, named
- * as in madmann91/bvh's binned_sah_builder.h: fill_bins, find_best_split,
- * partition_refs, and the object-median fallback_split.
+ * as in madmann91/bvh's binned_sah_builder.h: fill_bins (here
+ * build_fill_bins, build_internal.h, shared with the parallel builder),
+ * find_best_split, partition_refs, and the object-median fallback_split.
  *
  * Conventions: primitives travel as `struct build_ref` (box + caller index, 32
  * bytes) in one array partitioned in place, so every pass over a node is a
@@ -36,8 +37,8 @@
  * projecting to this bin"): box[axis][bin] = min xyz -, max xyz -. */
 struct bins {
     float box[3][BVH_MAX_BINS][8];
-    /* count[k][b][0]; the stride of a box, so that fill_bins reaches both
-     * with one byte offset (build_bin_offsets). */
+    /* count[k][b][0]; the stride of a box, so that build_fill_bins
+     * reaches both with one byte offset (build_bin_offsets). */
     uint32_t count[3][BVH_MAX_BINS][8];
 };
 
@@ -134,38 +135,9 @@ static void range_bounds(const struct build_ref *refs, uint32_t begin, uint32_t 
     vec4_store(cb->hi, chi);
 }
 
-/* Step 1: project every primitive of the node into the bins of each axis
- * (Wald, Ize and Parker (2008) sec. 4; Wald 2007). */
-static void fill_bins(struct bins *bins, int bin_count, const struct binning *bn,
-                      const struct build_ref *refs, uint32_t begin, uint32_t end)
-{
-    vec4 empty_lo = vec4_splat(INFINITY);
-    vec4 empty_hi = vec4_splat(-INFINITY);
-    for (int k = 0; k < 3; k++) {
-        for (int b = 0; b < bin_count; b++) {
-            vec4_store(&bins->box[k][b][0], empty_lo);
-            vec4_store(&bins->box[k][b][4], empty_hi);
-            bins->count[k][b][0] = 0;
-        }
-    }
-    char *box_base = (char *)bins->box;
-    char *count_base = (char *)bins->count;
-    for (uint32_t i = begin; i < end; i++) {
-        const struct build_ref *r = &refs[i];
-        /* Lane 3 masked: the index's bits would be denormal floats, and
-         * arithmetic on denormals can cost a microcode assist each. */
-        vec4 lo = vec4_xyz0(vec4_load(r->lo));
-        vec4 hi = vec4_load(r->hi);
-        uint32_t off[4];
-        build_bin_offsets(&bn->map, vec4_add(lo, hi), bins_axis_base, off);
-        for (int k = 0; k < 3; k++) {
-            float *box = (float *)(void *)(box_base + off[k]);
-            vec4_store(&box[0], vec4_min(vec4_load(&box[0]), lo));
-            vec4_store(&box[4], vec4_max(vec4_load(&box[4]), hi));
-            (*(uint32_t *)(void *)(count_base + off[k]))++;
-        }
-    }
-}
+/* Step 1, projecting every primitive of the node into the bins of each
+ * axis (Wald, Ize and Parker (2008) sec. 4; Wald 2007), is
+ * build_fill_bins (build_internal.h) or its AVX2 form. */
 
 /* One side of find_best_split's sweep, the three axes one per lane: the
  * side's box as x, y, z columns (lo and hi) and its triangle counts. */
@@ -310,9 +282,10 @@ static int find_best_split(const struct bins *bins, int bin_count, const struct 
  * [begin, end) and returns the first right slot.  Each primitive is
  * classified by one comparison with the least coordinate binned at or
  * above the plane (build_split_threshold), found with build_bins_of, the
- * very computation fill_bins counted it with, so the sides match the bin
- * counts.  Computes each side's centroid
- * bounds on the way, for the children's binning.
+ * very computation build_fill_bins counted it with, so the sides match
+ * the bin counts.  Computes each side's centroid bounds on the way, for
+ * the children's binning.  Where the CPU runs AVX2 the same loop runs as
+ * build_partition_fn's AVX2 form (build_binned_avx2.c).
  *
  * Lomuto's scheme without branches: every element is swapped with the
  * first right slot, which advances only past left ones.  The sides are
@@ -324,15 +297,26 @@ static int find_best_split(const struct bins *bins, int bin_count, const struct 
  */
 static uint32_t partition_refs(struct build_ref *refs, uint32_t begin, uint32_t end,
                                const struct binning *bn, const struct split *s,
-                               struct cbounds *left_cb, struct cbounds *right_cb)
+                               build_partition_fn avx2, struct cbounds *left_cb,
+                               struct cbounds *right_cb)
 {
     const int axis = s->axis;
     float origin[4];
     float scale[4];
     vec4_store(origin, bn->map.origin);
     vec4_store(scale, bn->map.scale);
-    const vec4 threshold = vec4_splat(
-        build_split_threshold(&bn->map, axis, s->plane, origin[axis], scale[axis]));
+    const float t = build_split_threshold(&bn->map, axis, s->plane, origin[axis], scale[axis]);
+    if (avx2) {
+        /* The same loop in AVX2 (build_internal.h, build_partition_fn). */
+        float bounds[4][4];
+        uint32_t first_right = avx2(refs, NULL, begin, end, 0, 0, axis, t, bounds);
+        memcpy(left_cb->lo, bounds[0], sizeof(left_cb->lo));
+        memcpy(left_cb->hi, bounds[1], sizeof(left_cb->hi));
+        memcpy(right_cb->lo, bounds[2], sizeof(right_cb->lo));
+        memcpy(right_cb->hi, bounds[3], sizeof(right_cb->hi));
+        return first_right;
+    }
+    const vec4 threshold = vec4_splat(t);
     vec4 llo = vec4_splat(INFINITY);
     vec4 lhi = vec4_splat(-INFINITY);
     vec4 rlo = llo;
@@ -504,9 +488,16 @@ static int centroids_coincide(const struct cbounds *cb)
     return !(cb->hi[0] > cb->lo[0]) && !(cb->hi[1] > cb->lo[1]) && !(cb->hi[2] > cb->lo[2]);
 }
 
-int accel_build_binned_sah(struct bvh *out, const struct aabb *prim_boxes, uint32_t prim_count,
-                           const struct bvh_build_params *params)
+int build_binned_sah_forms(struct bvh *out, const struct aabb *prim_boxes, uint32_t prim_count,
+                           const struct bvh_build_params *params, int simd)
 {
+#if !defined(BUILD_BINNED_UNIT_AVX2)
+    /* The same source compiled for AVX2, where it runs
+     * (build_binned_sah_avx2.c): the same tree in fewer instructions. */
+    const build_binned_fn avx2 = simd ? accel_build_binned_sah_avx2_unit() : NULL;
+    if (avx2)
+        return avx2(out, prim_boxes, prim_count, params);
+#endif
     struct bvh_build_params p;
     int start = accel_build_begin(out, &p, params, prim_count);
     if (start <= 0)
@@ -520,6 +511,10 @@ int accel_build_binned_sah(struct bvh *out, const struct aabb *prim_boxes, uint3
         return -1;
     }
 
+    const build_fill_bins_fn fill = simd ? build_fill_bins_best() : build_fill_bins;
+    const build_partition_fn partition_avx2 = simd ? build_partition_avx2_unit() : NULL;
+    char *bin_box = (char *)bins->box;
+    char *bin_count_base = (char *)bins->count;
     struct task stack[BUILD_STACK_SIZE];
     struct task *t = &stack[0];
     for (uint32_t i = 0; i < prim_count; i++)
@@ -566,7 +561,8 @@ int accel_build_binned_sah(struct bvh *out, const struct aabb *prim_boxes, uint3
             } else {
                 int bin_count = bins_for(p.bins, n);
                 init_binning(&bn, &task.cb, bin_count);
-                fill_bins(bins, bin_count, &bn, refs, task.r.begin, task.r.end);
+                fill(bin_box, bin_count_base, bins_axis_base, bin_count, &bn.map, refs,
+                     task.r.begin, task.r.end);
                 if (find_best_split(bins, bin_count, &bn, &s)) {
                     kind = SPLIT_BINNED;
                     sah = s.sah;
@@ -590,12 +586,14 @@ int accel_build_binned_sah(struct bvh *out, const struct aabb *prim_boxes, uint3
         struct aabb left_box;
         struct aabb right_box;
         if (kind == SPLIT_BINNED) {
-            mid = partition_refs(refs, task.r.begin, task.r.end, &bn, &s, &left.cb, &right.cb);
+            mid = partition_refs(refs, task.r.begin, task.r.end, &bn, &s, partition_avx2,
+                                 &left.cb, &right.cb);
             left_box = s.left;
             right_box = s.right;
-            /* partition_refs classifies exactly as fill_bins counted, so
-             * this cannot fail; if it ever did, the boxes taken from the
-             * bins would be wrong, so split again from scratch. */
+            /* partition_refs classifies exactly as build_fill_bins
+             * counted, so this cannot fail; if it ever did, the boxes
+             * taken from the bins would be wrong, so split again from
+             * scratch. */
             if (mid - task.r.begin != s.left_count)
                 kind = SPLIT_MEDIAN;
         }
@@ -621,4 +619,10 @@ int accel_build_binned_sah(struct bvh *out, const struct aabb *prim_boxes, uint3
     rt_free(bins);
     accel_build_finish(out, node_count, max_depth);
     return 0;
+}
+
+int accel_build_binned_sah(struct bvh *out, const struct aabb *prim_boxes, uint32_t prim_count,
+                           const struct bvh_build_params *params)
+{
+    return build_binned_sah_forms(out, prim_boxes, prim_count, params, 1);
 }

@@ -105,6 +105,68 @@ static inline void build_bin_offsets(const struct build_bin_map *m, vec4 centroi
     vec4_trunc_offset32(off, f, axis_base);
 }
 
+/*
+ * The histogram of one node's refs[begin, end) on the three axes (Wald
+ * 2007; Wald, Ize and Parker (2008) sec. 4), shared by the serial and the
+ * parallel binned builder: the bin_count bins of axis k are 32-byte
+ * records at box_base + axis_base[k] + 32 b (box: min xyz -, max xyz -)
+ * and, at the same offset from count_base, a record whose first word is
+ * the bin's count.  Clears those bins first, then per ref grows the box
+ * of its bin on each axis (build_bin_offsets) and counts it.  Every form
+ * gives the same bytes: per bin the min and max in ref order, each as
+ * minps(bin, ref) and maxps(bin, ref) would give it (NaN and equal zeros
+ * included).  build_bins.c has the portable form, build_binned_avx2.c an
+ * AVX2 one; build_fill_bins_best picks.
+ */
+typedef void (*build_fill_bins_fn)(char *box_base, char *count_base, const uint32_t axis_base[4],
+                                   int bin_count, const struct build_bin_map *map,
+                                   const struct build_ref *refs, uint32_t begin, uint32_t end);
+void build_fill_bins(char *box_base, char *count_base, const uint32_t axis_base[4],
+                     int bin_count, const struct build_bin_map *map,
+                     const struct build_ref *refs, uint32_t begin, uint32_t end);
+/* The AVX2 form, or NULL where that unit is absent (no AVX2 compiler
+ * target, RT_NO_SIMD) or the CPU does not run AVX2. */
+build_fill_bins_fn build_fill_bins_avx2_unit(void);
+/* The AVX2 form where it runs, else build_fill_bins. */
+build_fill_bins_fn build_fill_bins_best(void);
+
+/*
+ * The AVX2 form of the binned builders' partition of refs by a split's
+ * threshold (build_split_threshold: a ref goes left when !(c[axis] >=
+ * threshold), c its doubled centroid), or NULL where that unit is absent
+ * or the CPU does not run AVX2.  With dst NULL it partitions
+ * src[begin, end) in place exactly as build_binned_sah.c's Lomuto loop
+ * (the same permutation) and returns the first right slot; otherwise it
+ * copies the left refs, in order, to dst from left_dst and the right ones
+ * from right_dst, as build_parallel.c's partition_task, and returns the
+ * next left slot.  bounds gets the sides' centroid bounds (left lo, left
+ * hi, right lo, right hi; lane 3 as in the portable loops), bit for bit
+ * those of the portable loops (build_side_grow).
+ */
+typedef uint32_t (*build_partition_fn)(const struct build_ref *src, struct build_ref *dst,
+                                       uint32_t begin, uint32_t end, uint32_t left_dst,
+                                       uint32_t right_dst, int axis, float threshold,
+                                       float bounds[4][4]);
+build_partition_fn build_partition_avx2_unit(void);
+
+/* 1 when the CPU and the operating system run AVX2 (the compiler's cpuid
+ * wrapper, as trace/kernels.c), else 0; always 0 where the AVX2 unit is
+ * absent. */
+int build_cpu_runs_avx2(void);
+
+/* accel_build_binned_sah compiled for AVX2 (build_binned_sah_avx2.c: the
+ * same source, the same trees), or NULL where that unit is absent or the
+ * CPU does not run AVX2. */
+typedef int (*build_binned_fn)(struct bvh *out, const struct aabb *prim_boxes,
+                               uint32_t prim_count, const struct bvh_build_params *params);
+build_binned_fn accel_build_binned_sah_avx2_unit(void);
+/* accel_build_binned_sah with its AVX2 forms (the AVX2 copy of the
+ * builder, histogram and partition) where simd is non-zero and the CPU
+ * runs them, or with the portable ones (SSE2 encoding) where simd is 0:
+ * the same tree either way (tested by internal/builders). */
+int build_binned_sah_forms(struct bvh *out, const struct aabb *prim_boxes, uint32_t prim_count,
+                           const struct bvh_build_params *params, int simd);
+
 /* Maps a float to an unsigned integer with the same order (negatives
  * reversed), and every NaN to a fixed place: a total order even for input
  * that breaks the contract, so sorts and selections built on it cannot

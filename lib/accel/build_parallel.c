@@ -174,6 +174,8 @@ struct pbuild {
 
     /* binning */
     int bins;
+    build_fill_bins_fn fill; /* the histogram loop (build_internal.h) */
+    build_partition_fn partition_avx2; /* NULL: the portable partition loop */
     struct open_node *open;
     uint32_t open_count;
     int src; /* buffer the open nodes' refs are in */
@@ -355,28 +357,9 @@ static void bin_task(void *arg, int worker)
     while ((c = chunk_of(b)) < b->chunk_count) {
         const struct chunk *ch = &b->chunks[c];
         const struct build_bin_map map = bin_map_of(&b->open[ch->node], bins - 1);
-        float(*box)[8] = &b->hist_box[(size_t)c * 3 * bins];
-        uint32_t(*count)[8] = &b->hist_count[(size_t)c * 3 * bins];
-        for (int i = 0; i < 3 * bins; i++) {
-            vec4_store(&box[i][0], vec4_splat(INFINITY));
-            vec4_store(&box[i][4], vec4_splat(-INFINITY));
-            count[i][0] = 0;
-        }
-        char *box_base = (char *)box;
-        char *count_base = (char *)count;
-        for (uint32_t i = ch->begin; i < ch->end; i++) {
-            const struct build_ref *r = &refs[i];
-            vec4 lo = vec4_xyz0(vec4_load(r->lo));
-            vec4 hi = vec4_load(r->hi);
-            uint32_t off[4];
-            build_bin_offsets(&map, vec4_add(lo, hi), axis_base, off);
-            for (int k = 0; k < 3; k++) {
-                float *bin = (float *)(void *)(box_base + off[k]);
-                vec4_store(&bin[0], vec4_min(vec4_load(&bin[0]), lo));
-                vec4_store(&bin[4], vec4_max(vec4_load(&bin[4]), hi));
-                (*(uint32_t *)(void *)(count_base + off[k]))++;
-            }
-        }
+        b->fill((char *)&b->hist_box[(size_t)c * 3 * bins],
+                (char *)&b->hist_count[(size_t)c * 3 * bins], axis_base, bins, &map, refs,
+                ch->begin, ch->end);
     }
 }
 
@@ -490,6 +473,17 @@ static void partition_task(void *arg, int worker)
         if (o->axis < 0)
             continue;
         const int axis = o->axis;
+        if (b->partition_avx2) {
+            /* The same loop in AVX2 (build_internal.h, build_partition_fn). */
+            float bounds[4][4];
+            b->partition_avx2(src, dst, ch->begin, ch->end, ch->left_dst, ch->right_dst, axis,
+                              o->threshold, bounds);
+            memcpy(ch->lclo, bounds[0], sizeof(ch->lclo));
+            memcpy(ch->lchi, bounds[1], sizeof(ch->lchi));
+            memcpy(ch->rclo, bounds[2], sizeof(ch->rclo));
+            memcpy(ch->rchi, bounds[3], sizeof(ch->rchi));
+            continue;
+        }
         const vec4 threshold = vec4_splat(o->threshold);
         uint32_t li = ch->left_dst;
         uint32_t ri = ch->right_dst;
@@ -531,6 +525,8 @@ static int queue_child(struct pbuild *b, struct open_node *next, uint32_t *next_
 static int stage1_binning(struct pbuild *b, const struct open_node *root)
 {
     b->bins = b->p.bins;
+    b->fill = build_fill_bins_best();
+    b->partition_avx2 = build_partition_avx2_unit();
     b->src = 0;
     struct open_node *next = NULL;
     uint32_t open_cap = 0;
