@@ -62,6 +62,23 @@ struct trace_top_rays {
     int far_row[3];
 };
 
+#if defined(__SSE2__) && !defined(RT_NO_SIMD)
+#include <xmmintrin.h>
+
+/* The lanes of a wide node (bounds[row * width + lane], width 4 or 8,
+ * 16-byte aligned rows) whose box is not the empty box of an unused lane
+ * (min x <= max x; bvh4_layout.h). */
+static inline unsigned trace_top_used_lanes(const float *bounds, uint32_t width)
+{
+    unsigned used = 0;
+    for (uint32_t h = 0; h < width; h += 4)
+        used |= (unsigned)_mm_movemask_ps(_mm_cmple_ps(_mm_load_ps(bounds + h),
+                                                       _mm_load_ps(bounds + 3 * width + h)))
+                << h;
+    return used;
+}
+#endif
+
 /* The lanes of a wide top-level node (bounds[row * width + lane], width
  * 4 or 8) that the rays of mask `rays` enter: each such ray's bit is or'ed
  * into lane_rays[lane], and t_min[lane] lowered to its entry distance

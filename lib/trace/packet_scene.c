@@ -256,11 +256,7 @@ static void visit_instance(struct packet_top *s, uint32_t index, unsigned rays)
 static void lanes_by_box(const struct trace_top_rays *q, const float *bounds, uint32_t width,
                          unsigned rays, unsigned lane_rays[8], float t_min[8])
 {
-    unsigned used = 0;
-    for (uint32_t h = 0; h < width; h += 4)
-        used |= (unsigned)_mm_movemask_ps(_mm_cmple_ps(_mm_load_ps(bounds + h),
-                                                       _mm_load_ps(bounds + 3 * width + h)))
-                << h;
+    unsigned used = trace_top_used_lanes(bounds, width);
     const __m128 scale4 = _mm_set1_ps(ISECT_BOX_FAR_SCALE);
     for (; used; used &= used - 1u) {
         const int l = first(used);

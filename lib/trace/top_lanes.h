@@ -33,11 +33,7 @@
 static void TRACE_TOP_LANES(const struct trace_top_rays *q, const float *bounds, uint32_t width,
                             unsigned rays, unsigned lane_rays[8], float t_min[8])
 {
-    unsigned used = 0;
-    for (uint32_t h = 0; h < width; h += 4)
-        used |= (unsigned)_mm_movemask_ps(_mm_cmple_ps(_mm_load_ps(bounds + h),
-                                                       _mm_load_ps(bounds + 3 * width + h)))
-                << h;
+    unsigned used = trace_top_used_lanes(bounds, width);
     const __m256 tmin = _mm256_load_ps(q->tmin);
     const __m256 limit = _mm256_load_ps(q->box_limit);
     const __m256 scale = _mm256_set1_ps(ISECT_BOX_FAR_SCALE);
