@@ -100,6 +100,28 @@ static inline void tri8_transpose8(const __m256 in[8], __m256 out[8])
     out[7] = _mm256_permute2f128_ps(s3, s7, 0x31);
 }
 
+/* Half h of the rays' fields in the lanes (fields 8h to 8h + 7, ray r's
+ * in in[r], loaded by the caller): folded into f_min[h] and f_max[h] and
+ * transposed into f[8h..8h + 7].  Each branch of tri8_lanes_load loads
+ * and folds a half whole, so that no row is live across the branches
+ * (where the rows were loaded in two branches and used after them, GCC
+ * kept all sixteen rows on the stack: 32 vector moves a packet). */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void tri8_lanes_half(const __m256 in[8], int h, __m256 f[TRI8_F_COUNT],
+                                   __m256 f_min[2], __m256 f_max[2])
+{
+    __m256 lo = in[0], hi = in[0];
+    for (int r = 1; r < 8; r++) {
+        lo = _mm256_min_ps(lo, in[r]);
+        hi = _mm256_max_ps(hi, in[r]);
+    }
+    f_min[h] = lo;
+    f_max[h] = hi;
+    tri8_transpose8(in, f + 8 * h);
+}
+
 /* The fields of the rays of `active` in the lanes: f[TRI8_F_...][r] is
  * rays[r]'s field, copied bit for bit (two loads per ray and a
  * transpose instead of one gather per field); a lane without a ray holds
@@ -107,36 +129,32 @@ static inline void tri8_transpose8(const __m256 in[8], __m256 out[8])
  * minps / maxps over the rays of field 8h + j, from the rays as loaded
  * (a field's least and greatest over the rays when none is NaN; the
  * integer fields kx, ky, kz are meaningless there). */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
 static inline void tri8_lanes_load(const struct trace_ray *rays, unsigned active,
                                    __m256 f[TRI8_F_COUNT], __m256 f_min[2], __m256 f_max[2])
 {
-    __m256 lo[8], hi[8];
+    const float *base = (const float *)(const void *)rays;
+    __m256 in[8];
     if (active == 0xffu) {
-        /* A full packet (the common case): no choice per ray. */
-        for (int r = 0; r < 8; r++) {
-            const float *ray = (const float *)(const void *)&rays[r];
-            lo[r] = _mm256_loadu_ps(ray);
-            hi[r] = _mm256_loadu_ps(ray + 8);
+        /* A full packet (the common case): no choice per ray, each row
+         * at a constant offset. */
+        for (int h = 0; h < 2; h++) {
+            for (int r = 0; r < 8; r++)
+                in[r] = _mm256_loadu_ps(base + TRI8_F_COUNT * r + 8 * h);
+            tri8_lanes_half(in, h, f, f_min, f_max);
         }
     } else {
-        const struct trace_ray *first = &rays[__builtin_ctz(active)];
-        for (int r = 0; r < 8; r++) {
-            const float *ray =
-                (const float *)(const void *)(active >> r & 1u ? &rays[r] : first);
-            lo[r] = _mm256_loadu_ps(ray);
-            hi[r] = _mm256_loadu_ps(ray + 8);
+        const unsigned first = (unsigned)__builtin_ctz(active);
+        for (int h = 0; h < 2; h++) {
+            for (int r = 0; r < 8; r++) {
+                const unsigned src = active >> r & 1u ? (unsigned)r : first;
+                in[r] = _mm256_loadu_ps(base + TRI8_F_COUNT * src + 8 * h);
+            }
+            tri8_lanes_half(in, h, f, f_min, f_max);
         }
     }
-    f_min[0] = f_max[0] = lo[0];
-    f_min[1] = f_max[1] = hi[0];
-    for (int r = 1; r < 8; r++) {
-        f_min[0] = _mm256_min_ps(f_min[0], lo[r]);
-        f_max[0] = _mm256_max_ps(f_max[0], lo[r]);
-        f_min[1] = _mm256_min_ps(f_min[1], hi[r]);
-        f_max[1] = _mm256_max_ps(f_max[1], hi[r]);
-    }
-    tri8_transpose8(lo, f);
-    tri8_transpose8(hi, f + 8);
 }
 
 /* Sets up the lanes from the rays' fields in the lanes (tri8_lanes_load)
