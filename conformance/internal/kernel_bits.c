@@ -337,9 +337,71 @@ static void compare_tables(const char *name, struct tg_mesh *m, int rays, uint64
     free(boxes);
 }
 
+/* Each table's packet set-up (kernels.h packet_init) against
+ * trace_ray_init byte for byte, and its lanes and octants, on directions
+ * with ties between |components| (the axis choice), zeros of both signs
+ * and values of every magnitude; some rays left out. */
+static void compare_packet_init(void)
+{
+    static const float pick[] = {1.0f,   -1.0f, 0.0f,  -0.0f, 0.5f,   -0.5f,
+                                 3e-30f, 7e29f, 2.0f, -2.0f,  1e-40f, -0.75f};
+    const int npick = (int)(sizeof(pick) / sizeof(pick[0]));
+    uint32_t state = 99u;
+    for (int isa = 0; isa < TRACE_ISA_COUNT; isa++) {
+        const struct trace_kernels *k = trace_kernels_get((enum trace_isa)isa);
+        if (!k || !k->packet_init)
+            continue;
+        long bad = 0, rays = 0;
+        for (int q = 0; q < 20000; q++) {
+            float org[TRACE_PACKET][3], dir[TRACE_PACKET][3], tmin[TRACE_PACKET];
+            for (int i = 0; i < TRACE_PACKET; i++) {
+                for (int c = 0; c < 3; c++) {
+                    state = state * 1664525u + 1013904223u;
+                    org[i][c] = (float)(int)(state >> 12) * 0x1p-10f - 512.0f;
+                    state = state * 1664525u + 1013904223u;
+                    dir[i][c] = q % 2 ? pick[(state >> 8) % (uint32_t)npick]
+                                      : (float)(int)(state >> 8) * 0x1p-23f - 1.0f;
+                }
+                if (dir[i][0] == 0.0f && dir[i][1] == 0.0f && dir[i][2] == 0.0f)
+                    dir[i][q % 3] = -3.0f; /* trace_ray_init needs a direction */
+                tmin[i] = (float)(q % 3) * 0.25f;
+            }
+            state = state * 1664525u + 1013904223u;
+            const unsigned live = q % 4 ? 0xFFu : (state >> 16) & 0xFFu;
+            struct trace_ray got[TRACE_PACKET];
+            struct trace_top_rays top;
+            int octant[TRACE_PACKET];
+            k->packet_init((const float(*)[3])org, (const float(*)[3])dir, tmin, live, got, &top,
+                           octant);
+            for (int i = 0; i < TRACE_PACKET; i++) {
+                if (!(live >> i & 1u)) {
+                    bad += bits(top.tmin[i]) != 0 || bits(top.inv_dir[0][i]) != 0;
+                    continue;
+                }
+                struct trace_ray want;
+                memset(&want, 0, sizeof(want));
+                trace_ray_init(&want, org[i], dir[i], tmin[i]);
+                rays++;
+                int oct = 0;
+                for (int c = 0; c < 3; c++) {
+                    bad += bits(top.org[c][i]) != bits(org[i][c]) ||
+                           bits(top.inv_dir[c][i]) != bits(want.inv_dir[c]);
+                    oct |= (int)(bits(dir[i][c]) >> 31) << c;
+                }
+                bad += memcmp(&got[i], &want, sizeof(want)) != 0 ||
+                       bits(top.tmin[i]) != bits(tmin[i]) || octant[i] != oct;
+            }
+        }
+        printf("  packet_init %s: %ld rays, %ld differences\n", k->name, rays, bad);
+        if (bad || rays == 0)
+            failures++;
+    }
+}
+
 int main(void)
 {
     printf("kernel_bits:\n");
+    compare_packet_init();
     /* The origin is v2 of the first triangle and of the second. */
     const float a0[3] = {-0.375f, -0.125f, 0.5f};
     const float a1[3] = {-0.25f, -0.0f, 0.5f};

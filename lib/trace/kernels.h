@@ -87,6 +87,10 @@ struct trace_kernels {
     unsigned (*top_lanes1)(const float *bounds, uint32_t width, const int near_row[3],
                            const int far_row[3], const struct trace_ray *ray, float t_max,
                            float t_entry[8]);
+    /* A packet's rays set up eight at a time for the two-level packet walk
+     * (packet_init.h); NULL in the tables without 256-bit lanes, where
+     * packet_scene.c calls trace_ray_init ray by ray. */
+    trace_packet_init_fn packet_init;
 };
 
 /* The table of an ISA, or NULL when this build has no such table or this

@@ -437,10 +437,17 @@ static unsigned walk(const struct trace_scene *scene, const struct trace_packet 
     for (unsigned m = active; m; m &= m - 1u) {
         const int r = first(m);
         counters->rays++;
-        if (!(p->tmin[r] < p->tmax[r]))
-            continue; /* trace_scene_closest's early miss */
-        live |= 1u << r;
-        trace_ray_init(&s.ray[r], p->org[r], p->dir[r], p->tmin[r]);
+        if (p->tmin[r] < p->tmax[r])
+            live |= 1u << r; /* else trace_scene_closest's early miss */
+    }
+    /* The table's set-up of all the rays at once, where it has one. */
+    const int at_once = k->packet_init != NULL;
+    if (at_once)
+        k->packet_init(p->org, p->dir, p->tmin, live, s.ray, &s.top, s.octant);
+    for (unsigned m = live; m; m &= m - 1u) {
+        const int r = first(m);
+        if (!at_once)
+            trace_ray_init(&s.ray[r], p->org[r], p->dir[r], p->tmin[r]);
         s.best[r] = p->tmax[r];
         s.top.box_limit[r] = p->tmax[r];
         s.octant[r] = trace_scene_box_rows(&s.ray[r], s.near_row[r], s.far_row[r]);
@@ -452,11 +459,14 @@ static unsigned walk(const struct trace_scene *scene, const struct trace_packet 
         if (!plain_org)
             odd |= not_finite(p->org[r][0]) | not_finite(p->org[r][1]) |
                    not_finite(p->org[r][2]);
-        /* lanes_by_box's rays across lanes, and its condition. */
-        s.top.tmin[r] = s.ray[r].tmin;
-        for (int a = 0; a < 3; a++) {
-            s.top.org[a][r] = s.ray[r].org[a];
-            s.top.inv_dir[a][r] = s.ray[r].inv_dir[a];
+        /* lanes_by_box's rays across lanes (packet_init's already), and
+         * its condition. */
+        if (!at_once) {
+            s.top.tmin[r] = s.ray[r].tmin;
+            for (int a = 0; a < 3; a++) {
+                s.top.org[a][r] = s.ray[r].org[a];
+                s.top.inv_dir[a][r] = s.ray[r].inv_dir[a];
+            }
         }
         octants |= 1u << s.octant[r];
 #endif

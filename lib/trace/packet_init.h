@@ -1,0 +1,156 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * packet_init.h - a packet's rays set up eight at a time for the AVX2 and
+ * AVX-512 tables (kernels.h packet_init, packet.h trace_packet_init_fn),
+ * included by their translation units with TRACE_PACKET_INIT naming the
+ * function.
+ *
+ * Each ray is trace_ray_init's ray bit for bit: the same comparisons
+ * choose kz (the axis of the largest |dir|, the first on ties: |d1| >
+ * |d0|, then |d2| against the larger), kx and ky follow it cyclically
+ * and swap for a negative d[kz] (Woop, Benthin and Wald 2013, sec. 3);
+ * 1 / dir, -d[kx] / d[kz] and -d[ky] / d[kz] are the same IEEE divisions,
+ * eight lanes a divps instead of four and one divss a ray.  The two-level
+ * packet walk (packet_scene.c) set its rays up one by one, about 120
+ * instructions a ray with the arrays across lanes; here the fields are
+ * computed across the rays and turned into the rays' structs by two 8 x 8
+ * transposes.
+ */
+#if !defined(TRACE_PACKET_INIT)
+#error "define TRACE_PACKET_INIT before including packet_init.h"
+#endif
+
+#include <immintrin.h>
+#include <stddef.h>
+
+#include "trace/packet.h"
+
+/* The two transposes store fields 0-7 and 8-15 of struct trace_ray as
+ * two 32-byte halves: org, dir, inv_dir[0..1]; inv_dir[2], tmin, kx, ky,
+ * kz, sx, sy, sz. */
+typedef char trace_ray_is_two_halves[sizeof(struct trace_ray) == 64 &&
+                                             offsetof(struct trace_ray, inv_dir) == 24 &&
+                                             offsetof(struct trace_ray, tmin) == 36 &&
+                                             offsetof(struct trace_ray, kx) == 40 &&
+                                             offsetof(struct trace_ray, kz) == 48 &&
+                                             offsetof(struct trace_ray, sx) == 52 &&
+                                             offsetof(struct trace_ray, sz) == 60
+                                         ? 1
+                                         : -1];
+
+/* Rows r[0..7] (field i across the eight rays) into columns (ray j's
+ * eight fields in r[j]). */
+static inline void packet_init_transpose(__m256 r[8])
+{
+    const __m256 t0 = _mm256_unpacklo_ps(r[0], r[1]), t1 = _mm256_unpackhi_ps(r[0], r[1]);
+    const __m256 t2 = _mm256_unpacklo_ps(r[2], r[3]), t3 = _mm256_unpackhi_ps(r[2], r[3]);
+    const __m256 t4 = _mm256_unpacklo_ps(r[4], r[5]), t5 = _mm256_unpackhi_ps(r[4], r[5]);
+    const __m256 t6 = _mm256_unpacklo_ps(r[6], r[7]), t7 = _mm256_unpackhi_ps(r[6], r[7]);
+    const __m256 u0 = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(1, 0, 1, 0));
+    const __m256 u1 = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(3, 2, 3, 2));
+    const __m256 u2 = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(1, 0, 1, 0));
+    const __m256 u3 = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(3, 2, 3, 2));
+    const __m256 u4 = _mm256_shuffle_ps(t4, t6, _MM_SHUFFLE(1, 0, 1, 0));
+    const __m256 u5 = _mm256_shuffle_ps(t4, t6, _MM_SHUFFLE(3, 2, 3, 2));
+    const __m256 u6 = _mm256_shuffle_ps(t5, t7, _MM_SHUFFLE(1, 0, 1, 0));
+    const __m256 u7 = _mm256_shuffle_ps(t5, t7, _MM_SHUFFLE(3, 2, 3, 2));
+    r[0] = _mm256_permute2f128_ps(u0, u4, 0x20);
+    r[1] = _mm256_permute2f128_ps(u1, u5, 0x20);
+    r[2] = _mm256_permute2f128_ps(u2, u6, 0x20);
+    r[3] = _mm256_permute2f128_ps(u3, u7, 0x20);
+    r[4] = _mm256_permute2f128_ps(u0, u4, 0x31);
+    r[5] = _mm256_permute2f128_ps(u1, u5, 0x31);
+    r[6] = _mm256_permute2f128_ps(u2, u6, 0x31);
+    r[7] = _mm256_permute2f128_ps(u3, u7, 0x31);
+}
+
+static void TRACE_PACKET_INIT(const float (*org)[3], const float (*dir)[3], const float *tmin,
+                              unsigned live, struct trace_ray rays[TRACE_PACKET],
+                              struct trace_top_rays *top, int octant[TRACE_PACKET])
+{
+    /* The live rays across lanes; the others hold an origin of zeros and
+     * a direction of ones, so that nothing below divides by zero. */
+    float o[3][8] __attribute__((aligned(32)));
+    float d[3][8] __attribute__((aligned(32)));
+    float t[8] __attribute__((aligned(32)));
+    for (int r = 0; r < 8; r++) {
+        const int in = live >> r & 1u;
+        for (int k = 0; k < 3; k++) {
+            o[k][r] = in ? org[r][k] : 0.0f;
+            d[k][r] = in ? dir[r][k] : 1.0f;
+        }
+        t[r] = in ? tmin[r] : 0.0f;
+    }
+    const __m256 one = _mm256_set1_ps(1.0f);
+    const __m256 sign = _mm256_set1_ps(-0.0f);
+    __m256 ov[3], dv[3], inv[3], a[3];
+    for (int k = 0; k < 3; k++) {
+        ov[k] = _mm256_load_ps(o[k]);
+        dv[k] = _mm256_load_ps(d[k]);
+        inv[k] = _mm256_div_ps(one, dv[k]);
+        a[k] = _mm256_andnot_ps(sign, dv[k]);
+    }
+    const __m256 tv = _mm256_load_ps(t);
+    /* kz as trace_ray_init chooses it: 1 when |d1| > |d0|, then 2 when
+     * |d2| exceeds the larger of those. */
+    const __m256 c1 = _mm256_cmp_ps(a[1], a[0], _CMP_GT_OQ);
+    const __m256 c2 = _mm256_cmp_ps(a[2], _mm256_blendv_ps(a[0], a[1], c1), _CMP_GT_OQ);
+    const __m256 z1 = _mm256_andnot_ps(c2, c1); /* kz == 1 */
+    const __m256 z0 = _mm256_andnot_ps(_mm256_or_ps(c1, c2), _mm256_castsi256_ps(
+                                                                  _mm256_set1_epi32(-1)));
+#define PACKET_INIT_SEL3(v0, v1, v2) _mm256_blendv_ps(_mm256_blendv_ps(v2, v1, z1), v0, z0)
+    const __m256 dz = PACKET_INIT_SEL3(dv[0], dv[1], dv[2]);
+    const __m256 next = PACKET_INIT_SEL3(dv[1], dv[2], dv[0]); /* d[(kz + 1) % 3] */
+    const __m256 after = PACKET_INIT_SEL3(dv[2], dv[0], dv[1]); /* d[(kz + 2) % 3] */
+    const __m256 sz = PACKET_INIT_SEL3(inv[0], inv[1], inv[2]);
+#undef PACKET_INIT_SEL3
+    const __m256 neg = _mm256_cmp_ps(dz, _mm256_setzero_ps(), _CMP_LT_OQ);
+    const __m256 dkx = _mm256_blendv_ps(next, after, neg);
+    const __m256 dky = _mm256_blendv_ps(after, next, neg);
+    const __m256 sx = _mm256_div_ps(_mm256_xor_ps(dkx, sign), dz);
+    const __m256 sy = _mm256_div_ps(_mm256_xor_ps(dky, sign), dz);
+    /* kx, ky, kz as integers: kz = 2 c2 + (c1 and not c2); kx, ky from
+     * trace_ray_init_single's tables, indexed by 2 (2 kz + negative). */
+    const __m256i kz = _mm256_sub_epi32(
+        _mm256_setzero_si256(),
+        _mm256_add_epi32(_mm256_add_epi32(_mm256_castps_si256(c2), _mm256_castps_si256(c2)),
+                         _mm256_castps_si256(z1)));
+    const __m256i i = _mm256_slli_epi32(
+        _mm256_sub_epi32(_mm256_slli_epi32(kz, 1), _mm256_castps_si256(neg)), 1);
+    const __m256i kx = _mm256_and_si256(_mm256_srlv_epi32(_mm256_set1_epi32(0x429), i),
+                                        _mm256_set1_epi32(3));
+    const __m256i ky = _mm256_and_si256(_mm256_srlv_epi32(_mm256_set1_epi32(0x186), i),
+                                        _mm256_set1_epi32(3));
+    /* The arrays across lanes for the top level's box tests (zeros in the
+     * lanes of the rays left out, as packet.h asks). */
+    const __m256 keep = _mm256_castsi256_ps(_mm256_cmpgt_epi32(
+        _mm256_and_si256(_mm256_set1_epi32((int)live), _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64,
+                                                                          128)),
+        _mm256_setzero_si256()));
+    _mm256_store_ps(top->tmin, tv);
+    for (int k = 0; k < 3; k++) {
+        _mm256_store_ps(top->org[k], ov[k]);
+        _mm256_store_ps(top->inv_dir[k], _mm256_and_ps(inv[k], keep));
+    }
+    const unsigned negx = (unsigned)_mm256_movemask_ps(dv[0]);
+    const unsigned negy = (unsigned)_mm256_movemask_ps(dv[1]);
+    const unsigned negz = (unsigned)_mm256_movemask_ps(dv[2]);
+    __m256 lo[8] = {ov[0], ov[1], ov[2], dv[0], dv[1], dv[2], inv[0], inv[1]};
+    __m256 hi[8] = {inv[2],
+                    tv,
+                    _mm256_castsi256_ps(kx),
+                    _mm256_castsi256_ps(ky),
+                    _mm256_castsi256_ps(kz),
+                    sx,
+                    sy,
+                    sz};
+    packet_init_transpose(lo);
+    packet_init_transpose(hi);
+    for (unsigned m = live; m; m &= m - 1u) {
+        const int r = __builtin_ctz(m);
+        float *f = (float *)(void *)&rays[r];
+        _mm256_storeu_ps(f, lo[r]);
+        _mm256_storeu_ps(f + 8, hi[r]);
+        octant[r] = (int)((negx >> r & 1u) | (negy >> r & 1u) << 1 | (negz >> r & 1u) << 2);
+    }
+}
