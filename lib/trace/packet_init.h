@@ -21,49 +21,14 @@
 #endif
 
 #include <immintrin.h>
-#include <stddef.h>
 
 #include "trace/packet.h"
+#include "trace/packet_tri8.h"
 
-/* The two transposes store fields 0-7 and 8-15 of struct trace_ray as
- * two 32-byte halves: org, dir, inv_dir[0..1]; inv_dir[2], tmin, kx, ky,
- * kz, sx, sy, sz. */
-typedef char trace_ray_is_two_halves[sizeof(struct trace_ray) == 64 &&
-                                             offsetof(struct trace_ray, inv_dir) == 24 &&
-                                             offsetof(struct trace_ray, tmin) == 36 &&
-                                             offsetof(struct trace_ray, kx) == 40 &&
-                                             offsetof(struct trace_ray, kz) == 48 &&
-                                             offsetof(struct trace_ray, sx) == 52 &&
-                                             offsetof(struct trace_ray, sz) == 60
-                                         ? 1
-                                         : -1];
-
-/* Rows r[0..7] (field i across the eight rays) into columns (ray j's
- * eight fields in r[j]). */
-static inline void packet_init_transpose(__m256 r[8])
-{
-    const __m256 t0 = _mm256_unpacklo_ps(r[0], r[1]), t1 = _mm256_unpackhi_ps(r[0], r[1]);
-    const __m256 t2 = _mm256_unpacklo_ps(r[2], r[3]), t3 = _mm256_unpackhi_ps(r[2], r[3]);
-    const __m256 t4 = _mm256_unpacklo_ps(r[4], r[5]), t5 = _mm256_unpackhi_ps(r[4], r[5]);
-    const __m256 t6 = _mm256_unpacklo_ps(r[6], r[7]), t7 = _mm256_unpackhi_ps(r[6], r[7]);
-    const __m256 u0 = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(1, 0, 1, 0));
-    const __m256 u1 = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(3, 2, 3, 2));
-    const __m256 u2 = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(1, 0, 1, 0));
-    const __m256 u3 = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(3, 2, 3, 2));
-    const __m256 u4 = _mm256_shuffle_ps(t4, t6, _MM_SHUFFLE(1, 0, 1, 0));
-    const __m256 u5 = _mm256_shuffle_ps(t4, t6, _MM_SHUFFLE(3, 2, 3, 2));
-    const __m256 u6 = _mm256_shuffle_ps(t5, t7, _MM_SHUFFLE(1, 0, 1, 0));
-    const __m256 u7 = _mm256_shuffle_ps(t5, t7, _MM_SHUFFLE(3, 2, 3, 2));
-    r[0] = _mm256_permute2f128_ps(u0, u4, 0x20);
-    r[1] = _mm256_permute2f128_ps(u1, u5, 0x20);
-    r[2] = _mm256_permute2f128_ps(u2, u6, 0x20);
-    r[3] = _mm256_permute2f128_ps(u3, u7, 0x20);
-    r[4] = _mm256_permute2f128_ps(u0, u4, 0x31);
-    r[5] = _mm256_permute2f128_ps(u1, u5, 0x31);
-    r[6] = _mm256_permute2f128_ps(u2, u6, 0x31);
-    r[7] = _mm256_permute2f128_ps(u3, u7, 0x31);
-}
-
+/* The two transposes (packet_tri8.h's tri8_transpose8, whose layout
+ * check is the struct's: sixteen floats, fields 0-7 org, dir,
+ * inv_dir[0..1], fields 8-15 inv_dir[2], tmin, kx, ky, kz, sx, sy, sz)
+ * store each ray as two 32-byte halves. */
 static void TRACE_PACKET_INIT(const float (*org)[3], const float (*dir)[3], const float *tmin,
                               unsigned live, struct trace_ray rays[TRACE_PACKET],
                               struct trace_top_rays *top, int octant[TRACE_PACKET])
@@ -135,8 +100,8 @@ static void TRACE_PACKET_INIT(const float (*org)[3], const float (*dir)[3], cons
     const unsigned negx = (unsigned)_mm256_movemask_ps(dv[0]);
     const unsigned negy = (unsigned)_mm256_movemask_ps(dv[1]);
     const unsigned negz = (unsigned)_mm256_movemask_ps(dv[2]);
-    __m256 lo[8] = {ov[0], ov[1], ov[2], dv[0], dv[1], dv[2], inv[0], inv[1]};
-    __m256 hi[8] = {inv[2],
+    const __m256 lo_rows[8] = {ov[0], ov[1], ov[2], dv[0], dv[1], dv[2], inv[0], inv[1]};
+    const __m256 hi_rows[8] = {inv[2],
                     tv,
                     _mm256_castsi256_ps(kx),
                     _mm256_castsi256_ps(ky),
@@ -144,8 +109,9 @@ static void TRACE_PACKET_INIT(const float (*org)[3], const float (*dir)[3], cons
                     sx,
                     sy,
                     sz};
-    packet_init_transpose(lo);
-    packet_init_transpose(hi);
+    __m256 lo[8], hi[8];
+    tri8_transpose8(lo_rows, lo);
+    tri8_transpose8(hi_rows, hi);
     for (unsigned m = live; m; m &= m - 1u) {
         const int r = __builtin_ctz(m);
         float *f = (float *)(void *)&rays[r];
