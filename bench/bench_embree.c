@@ -21,7 +21,10 @@
  *
  * Trace: rtcIntersect1 / rtcOccluded1 in a scalar loop, driven by the same
  * bench_run_parallel as our kernels on 1 and 2 threads, over the same ray
- * sets (RTray with tnear = tmin, tfar = tmax).  Runs are interleaved
+ * sets (RTray with tnear = tmin, tfar = tmax).  Ours are the kernels'
+ * single-ray entries (bench_kernel_closest / bench_kernel_any): no top
+ * level and no counters, which API rays have (bench_trace.c's "API"
+ * columns measure those).  Runs are interleaved
  * (ours, Embree MEDIUM, Embree HIGH, for each thread count) and each
  * figure is a median.  Every answer is compared with ours ray by ray
  * (hit/miss and t within BENCH_T_TOLERANCE): a comparison of speeds is
@@ -565,7 +568,11 @@ int bench_embree_section(const struct bench_options *opts, struct bench_mesh *me
 
     report_printf("\nTrace, Mrays/s (median of %d runs), the trace section's ray sets; Embree "
                   "through rtcIntersect1 / rtcOccluded1 in a scalar loop, both driven by the "
-                  "same thread split. \"ours/Embree\" is a throughput ratio: below 1 means we "
+                  "same thread split. Ours: the object kernels' single-ray entries "
+                  "(closest1 / any1 on a wide layout: the ray set up inside the walk), without "
+                  "the top level and without counting, as Embree's one-geometry scene; API rays "
+                  "(rtTraceRays, through the top level, counted) are the trace section's "
+                  "\"API\" columns. \"ours/Embree\" is a throughput ratio: below 1 means we "
                   "are slower. \"agree\": rays where Embree's answer equals ours (hit/miss and "
                   "t within %g relative) over all rays of the set, in brackets the number of "
                   "rays that differ (the percentage rounds one ray in a million to 100.00%%) "
