@@ -8,12 +8,14 @@
  * state: a context asks once, at creation.
  */
 #include "trace/kernels.h"
+#include "trace/scene_traverse.h"
 
 #include <string.h>
 
 static const struct trace_kernels scalar_table = {TRACE_ISA_SCALAR, "scalar", trace_closest,
                                                   trace_any, NULL, NULL, NULL, NULL, 0, NULL,
-                                                  NULL, NULL, NULL, NULL, NULL};
+                                                  NULL, NULL, NULL, trace_scene_wide_lanes,
+                                                  NULL};
 
 static const char *const isa_names[TRACE_ISA_COUNT] = {"scalar", "sse4", "avx2", "avx512"};
 

@@ -79,10 +79,10 @@ struct trace_kernels {
                  float t_max, int any_hit, int early_out, int eight, int found,
                  struct trace_hit *hit);
     /* The top level's node tests (top_lanes.h): a packet's, eight rays a
-     * register, and a single ray's (trace_scene_wide_lanes' contract),
-     * eight lanes a register.  NULL in the tables without 256-bit lanes,
-     * where packet_scene.c tests four rays a register itself and
-     * scene_traverse.c four lanes. */
+     * register, NULL in the tables without 256-bit lanes (packet_scene.c
+     * then tests four rays a register itself); and a single ray's, eight
+     * lanes a register, in the tables without 256-bit lanes
+     * trace_scene_wide_lanes itself (four lanes a register). */
     trace_top_lanes_fn top_lanes;
     unsigned (*top_lanes1)(const float *bounds, uint32_t width, const int near_row[3],
                            const int far_row[3], const struct trace_ray *ray, float t_max,

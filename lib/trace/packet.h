@@ -92,12 +92,12 @@ typedef void (*trace_top_lanes_fn)(const struct trace_top_rays *q, const float *
 
 /* Sets up the rays of mask `live` (org[r], dir[r], tmin[r]) into rays[r]
  * as trace_ray_init does, bit for bit, fills top's tmin, org and inv_dir
- * lanes (zeros for the others; box_limit and the rows are the caller's)
- * and octant[r] (bit k: dir[r][k] has its sign bit set). */
+ * lanes (zeros for the others; box_limit, the rows and the octant are
+ * the caller's, trace_scene_box_rows). */
 typedef void (*trace_packet_init_fn)(const float (*org)[3], const float (*dir)[3],
                                      const float *tmin, unsigned live,
                                      struct trace_ray rays[TRACE_PACKET],
-                                     struct trace_top_rays *top, int octant[TRACE_PACKET]);
+                                     struct trace_top_rays *top);
 
 /*
  * The packet walks of a kernels table (kernels.h): rays[i] with

@@ -31,7 +31,7 @@
  * store each ray as two 32-byte halves. */
 static void TRACE_PACKET_INIT(const float (*org)[3], const float (*dir)[3], const float *tmin,
                               unsigned live, struct trace_ray rays[TRACE_PACKET],
-                              struct trace_top_rays *top, int octant[TRACE_PACKET])
+                              struct trace_top_rays *top)
 {
     /* The live rays across lanes; the others hold an origin of zeros and
      * a direction of ones, so that nothing below divides by zero. */
@@ -97,9 +97,6 @@ static void TRACE_PACKET_INIT(const float (*org)[3], const float (*dir)[3], cons
         _mm256_store_ps(top->org[k], ov[k]);
         _mm256_store_ps(top->inv_dir[k], _mm256_and_ps(inv[k], keep));
     }
-    const unsigned negx = (unsigned)_mm256_movemask_ps(dv[0]);
-    const unsigned negy = (unsigned)_mm256_movemask_ps(dv[1]);
-    const unsigned negz = (unsigned)_mm256_movemask_ps(dv[2]);
     const __m256 lo_rows[8] = {ov[0], ov[1], ov[2], dv[0], dv[1], dv[2], inv[0], inv[1]};
     const __m256 hi_rows[8] = {inv[2],
                     tv,
@@ -117,6 +114,5 @@ static void TRACE_PACKET_INIT(const float (*org)[3], const float (*dir)[3], cons
         float *f = (float *)(void *)&rays[r];
         _mm256_storeu_ps(f, lo[r]);
         _mm256_storeu_ps(f + 8, hi[r]);
-        octant[r] = (int)((negx >> r & 1u) | (negy >> r & 1u) << 1 | (negz >> r & 1u) << 2);
     }
 }

@@ -340,12 +340,9 @@ static void walk_top(struct packet_top *s, const struct bvh4 *wide, unsigned act
                 const int r = first(m);
                 float te[8];
                 counters->top_node_tests += width;
-                unsigned in =
-                    s->kernels->top_lanes1
-                        ? s->kernels->top_lanes1(bounds, width, s->near_row[r], s->far_row[r],
-                                                 &s->ray[r], s->top.box_limit[r], te)
-                        : trace_scene_wide_lanes(bounds, width, s->near_row[r], s->far_row[r],
-                                                 &s->ray[r], s->top.box_limit[r], te);
+                unsigned in = s->kernels->top_lanes1(bounds, width, s->near_row[r],
+                                                     s->far_row[r], &s->ray[r],
+                                                     s->top.box_limit[r], te);
                 for (; in; in &= in - 1u) {
                     const int l = first(in);
                     lane_rays[l] |= 1u << r;
@@ -443,7 +440,7 @@ static unsigned walk(const struct trace_scene *scene, const struct trace_packet 
     /* The table's set-up of all the rays at once, where it has one. */
     const int at_once = k->packet_init != NULL;
     if (at_once)
-        k->packet_init(p->org, p->dir, p->tmin, live, s.ray, &s.top, s.octant);
+        k->packet_init(p->org, p->dir, p->tmin, live, s.ray, &s.top);
     for (unsigned m = live; m; m &= m - 1u) {
         const int r = first(m);
         if (!at_once)

@@ -367,9 +367,6 @@ static int walk_wide(struct top_state *s, const struct bvh4 *wide)
     const uint32_t width = wide->width;
     int near_row[3], far_row[3];
     const int octant = trace_scene_box_rows(ray, near_row, far_row);
-    /* The table's test of eight lanes in one register, where it has one. */
-    unsigned (*const lanes1)(const float *, uint32_t, const int *, const int *,
-                             const struct trace_ray *, float, float *) = s->kernels->top_lanes1;
     struct {
         uint32_t child;
         uint32_t count; /* 0: wide node, else a leaf of `count` slots */
@@ -391,9 +388,7 @@ static int walk_wide(struct top_state *s, const struct bvh4 *wide)
             counters->top_node_tests += width;
             float te[8];
             const unsigned mask =
-                lanes1 ? lanes1(bounds, width, near_row, far_row, ray, s->box_limit, te)
-                       : trace_scene_wide_lanes(bounds, width, near_row, far_row, ray,
-                                                s->box_limit, te);
+                s->kernels->top_lanes1(bounds, width, near_row, far_row, ray, s->box_limit, te);
             if (mask && !(mask & (mask - 1u))) {
                 /* One lane entered (most nodes of a top level over a few
                  * instances): it is the front one, which the push and pop

@@ -6,6 +6,7 @@
  * and trace_kernels_sse4 returns NULL.
  */
 #include "trace/kernels.h"
+#include "trace/scene_traverse.h"
 
 #if defined(__SSE4_2__)
 #define TRACE_WALK_CLOSEST trace_closest_sse4
@@ -24,8 +25,8 @@ static const struct trace_kernels table = {
     TRACE_ISA_SSE4, "sse4", trace_closest_sse4, trace_any_sse4,
     trace_closest4_sse4, trace_any4_sse4, trace_closest1_sse4, trace_any1_sse4,
     4,
-    trace_closest_packet_sse4, trace_any_packet_sse4, NULL, NULL, NULL,
-    NULL};
+    trace_closest_packet_sse4, trace_any_packet_sse4, NULL, NULL,
+    trace_scene_wide_lanes, NULL};
 
 const struct trace_kernels *trace_kernels_sse4(void)
 {
