@@ -20,6 +20,15 @@
  * trace_scene_any_packet: one octant and finite origins test the top
  * level box by box, mixed octants ray by ray) give each ray the single
  * walk's answer.
+ *
+ * The tables' transform of a packet's rays into an instance's object
+ * space (kernels.h packet_xform) gives trace_scene_object_ray's ray bit
+ * for bit, and its refusals, on random matrices (inexact sums, scales
+ * that overflow a direction to infinity or underflow it to zero) and
+ * random rays (zero, negative-zero and subnormal components); and
+ * packets over instances whose scales underflow or overflow some rays'
+ * directions (such a ray skips that instance) give the single walk's
+ * answers, with each table.
  */
 #include <rt/rt.h>
 #include <math.h>
@@ -178,10 +187,216 @@ static int same_hit(int got_a, const struct trace_scene_hit *a, int got_b,
            a->instance == b->instance;
 }
 
+/* A random double with 48 random mantissa bits, sign and a binary
+ * exponent in [lo, hi]. */
+static double rnd_double(int lo, int hi)
+{
+    const double m = 1.0 + (double)rnd() + (double)rnd() * 0x1p-24;
+    const int e = lo + (int)(rnd() * (float)(hi - lo + 1));
+    return (rnd() < 0.5f ? -1.0 : 1.0) * ldexp(m, e < hi ? e : hi);
+}
+
+/* A random float component: mostly ordinary, sometimes zero, negative
+ * zero, subnormal, or of an extreme exponent. */
+static float rnd_component(void)
+{
+    const float pick = rnd();
+    if (pick < 0.05f)
+        return 0.0f;
+    if (pick < 0.10f)
+        return -0.0f;
+    if (pick < 0.15f)
+        return (rnd() - 0.5f) * 0x1p-130f; /* subnormal */
+    if (pick < 0.25f)
+        return (float)rnd_double(-149, 127);
+    return rnd() * 4.0f - 2.0f;
+}
+
+/* Each table's packet_xform against trace_scene_object_ray, ray by ray:
+ * the same mask of usable rays and, for each, the same struct bit for
+ * bit. */
+static void check_packet_xform(void)
+{
+    const enum trace_isa isas[2] = {TRACE_ISA_AVX2, TRACE_ISA_AVX512};
+    for (int t = 0; t < 2; t++) {
+        const struct trace_kernels *k = trace_kernels_get(isas[t]);
+        if (!k || !k->packet_xform)
+            continue;
+        long mismatches = 0, refused = 0, usable = 0, equal_world = 0;
+        for (int it = 0; it < 20000; it++) {
+            /* The matrix, column-major as trace_instance_set_rows takes
+             * it: random inexact entries, the identity, a rotation and
+             * scale by powers of two, or extreme scales. */
+            double w2o[16];
+            memset(w2o, 0, sizeof(w2o));
+            w2o[15] = 1.0;
+            const int kind = it % 8;
+            for (int r = 0; r < 3; r++)
+                for (int c = 0; c < 4; c++) {
+                    double v;
+                    if (kind == 0)
+                        v = r == c ? 1.0 : 0.0;
+                    else if (kind == 1)
+                        v = r == c ? ldexp(1.0, (int)(rnd() * 5.0f) - 2) : 0.0;
+                    else if (kind == 2)
+                        v = rnd() < 0.3f ? 0.0 : rnd_double(-150, 150);
+                    else if (kind == 3)
+                        v = c == 3 ? rnd_double(-4, 4) : (r == c ? rnd_double(-160, -100) : 0.0);
+                    else if (kind == 4)
+                        v = c == 3 ? rnd_double(-4, 4) : (r == c ? rnd_double(100, 160) : 0.0);
+                    else
+                        v = rnd_double(-3, 3);
+                    w2o[4 * c + r] = v;
+                }
+            struct trace_instance inst;
+            memset(&inst, 0, sizeof(inst));
+            trace_instance_set_rows(&inst, w2o);
+            float org[TRACE_PACKET][3], dir[TRACE_PACKET][3], tmin[TRACE_PACKET];
+            struct trace_ray world[TRACE_PACKET], ref[TRACE_PACKET], got[TRACE_PACKET];
+            unsigned want = 0;
+            const unsigned rays = it % 3 ? 0xFFu : (unsigned)(rnd() * 256.0f) & 0xFFu;
+            for (int i = 0; i < TRACE_PACKET; i++) {
+                for (int c = 0; c < 3; c++) {
+                    org[i][c] = rnd() < 0.8f ? rnd() * 20.0f - 10.0f : rnd_component();
+                    dir[i][c] = rnd_component();
+                }
+                if (dir[i][0] == 0.0f && dir[i][1] == 0.0f && dir[i][2] == 0.0f)
+                    dir[i][2] = 1.0f; /* a traced world ray has a direction */
+                tmin[i] = rnd() < 0.5f ? 0.0f : rnd();
+                trace_ray_init(&world[i], org[i], dir[i], tmin[i]);
+                if (rays >> i & 1u && trace_scene_object_ray(&inst, org[i], dir[i], tmin[i],
+                                                             &world[i], &ref[i]))
+                    want |= 1u << i;
+            }
+            memset(got, 0xA5, sizeof(got));
+            const unsigned live = k->packet_xform(inst.world_to_object, (const float(*)[3])org,
+                                                  (const float(*)[3])dir, tmin, rays, got);
+            if (live != want)
+                mismatches++;
+            for (int i = 0; i < TRACE_PACKET; i++) {
+                if (!(rays >> i & 1u))
+                    continue;
+                if (!(want >> i & 1u)) {
+                    refused++;
+                    continue;
+                }
+                usable++;
+                equal_world += memcmp(&ref[i], &world[i], sizeof(ref[i])) == 0;
+                if (live >> i & 1u && memcmp(&got[i], &ref[i], sizeof(ref[i])) != 0)
+                    mismatches++;
+            }
+        }
+        printf("packet_xform %s: %ld usable rays (%ld the world ray), %ld refused, "
+               "%ld mismatches\n",
+               k->name, usable, equal_world, refused, mismatches);
+        CHECK(mismatches == 0);
+        CHECK(refused > 1000 && usable > 50000 && equal_world > 1000);
+    }
+}
+
+/* Packets over instances whose scales underflow or overflow some rays'
+ * transformed directions: a floor scaled by 2^60 (world-to-object 2^-60:
+ * a direction of magnitude 2^-100 becomes zero) among instances scaled
+ * by 1/2 (world-to-object 2: a direction of 2^127 overflows to
+ * infinity).  Such a ray skips that instance (trace_scene_object_ray
+ * refuses it) and each packet's rays, through every table with a packet
+ * walk, get the scalar single walk's answers. */
+static void check_extreme_packets(void)
+{
+    enum { EXTREME = 48 };
+    struct placement places[EXTREME];
+    for (int i = 0; i < EXTREME; i++) {
+        struct placement *p = &places[i];
+        p->object = i % 6 == 0 ? 0 : (int)(rnd() * OBJECTS) % OBJECTS;
+        p->s = i % 6 == 0 ? 0x1p60 : ldexp(1.0, (int)(rnd() * 3.0f) - 1);
+        p->quarter = (int)(rnd() * 4.0f) % 4;
+        for (int k = 0; k < 3; k++)
+            p->t[k] = floor((double)rnd() * 16.0) * 0.5;
+        if (i % 6 == 0) {
+            /* The floor's corner far off, so that it lies under every
+             * packet whatever its quarter turn. */
+            p->t[0] = p->quarter == 1 || p->quarter == 2 ? 0x1p59 : -0x1p59;
+            p->t[1] = p->quarter >= 2 ? 0x1p59 : -0x1p59;
+            p->t[2] = -(double)i;
+        }
+    }
+    struct bvh_build_params params;
+    bvh_build_params_default(&params);
+    struct scene ref_scene, wide_scene;
+    params.wide_layout = 0;
+    build_scene(&ref_scene, &params, 0, places, EXTREME);
+    params.wide_layout = 8;
+    build_scene(&wide_scene, &params, 0, places, EXTREME);
+    const struct trace_kernels *tables[2] = {trace_kernels_best(),
+                                             trace_kernels_get(TRACE_ISA_AVX2)};
+    long mismatches = 0, hits = 0, underflow = 0, overflow = 0, packets = 0;
+    for (int q = 0; q < 600; q++) {
+        struct trace_packet pk;
+        memset(&pk, 0, sizeof(pk));
+        const int scale = q % 3 == 0 ? -100 : (q % 3 == 1 ? 127 : 0);
+        const float o[3] = {rnd() * 14.0f - 2.0f, rnd() * 14.0f - 2.0f, 12.0f + rnd() * 4.0f};
+        const float d[3] = {rnd() - 0.5f, rnd() - 0.5f, -1.0f};
+        for (int i = 0; i < TRACE_PACKET; i++) {
+            for (int k = 0; k < 3; k++) {
+                pk.org[i][k] = o[k];
+                pk.dir[i][k] = ldexpf(d[k] + (rnd() - 0.5f) * 0.05f, scale);
+            }
+            pk.tmin[i] = 0.0f;
+            pk.tmax[i] = INFINITY;
+            /* The (ray, instance) pairs whose direction cannot be traced. */
+            struct trace_ray world, o_ray;
+            trace_ray_init(&world, pk.org[i], pk.dir[i], 0.0f);
+            for (uint32_t j = 0; j < wide_scene.frame.trace_instance_count; j++)
+                if (!trace_scene_object_ray(&wide_scene.frame.trace_instances[j], pk.org[i],
+                                            pk.dir[i], 0.0f, &world, &o_ray)) {
+                    underflow += scale < 0;
+                    overflow += scale > 0;
+                }
+        }
+        pk.active = q % 5 == 4 ? 0x6Du : 0xFFu;
+        for (int t = 0; t < 2; t++) {
+            const struct trace_kernels *k = tables[t];
+            if (!k || !k->closest_packet || (t == 1 && k == tables[0]))
+                continue;
+            packets++;
+            struct trace_scene_counters c;
+            memset(&c, 0, sizeof(c));
+            struct trace_scene ts = view_of(&wide_scene, k, 1);
+            struct trace_scene rs = view_of(&ref_scene, trace_kernels_get(TRACE_ISA_SCALAR), 0);
+            struct trace_scene_hit hs[TRACE_PACKET];
+            const unsigned got = trace_scene_closest_packet(&ts, &pk, hs, &c);
+            const unsigned any = trace_scene_any_packet(&ts, &pk, &c);
+            for (int i = 0; i < TRACE_PACKET; i++) {
+                if (!(pk.active >> i & 1u)) {
+                    mismatches += (got >> i & 1u) || (any >> i & 1u);
+                    continue;
+                }
+                struct trace_scene_hit ref1;
+                const int g = trace_scene_closest(&rs, pk.org[i], pk.dir[i], 0.0f, INFINITY,
+                                                  &ref1, &c);
+                const int a = trace_scene_any(&rs, pk.org[i], pk.dir[i], 0.0f, INFINITY, &c);
+                hits += g;
+                if (!same_hit(g, &ref1, (int)(got >> i & 1u), &hs[i]) ||
+                    a != (int)(any >> i & 1u))
+                    mismatches++;
+            }
+        }
+    }
+    printf("extreme scales: %ld packets, %ld hits, %ld mismatches; (ray, instance) pairs "
+           "refused: %ld underflowing, %ld overflowing\n",
+           packets, hits, mismatches, underflow, overflow);
+    CHECK(mismatches == 0);
+    CHECK(underflow > 0 && overflow > 0);
+    CHECK(packets == 0 || hits > 1000);
+    scene_release(&ref_scene);
+    scene_release(&wide_scene);
+}
+
 int main(void)
 {
     const struct trace_kernels *best = trace_kernels_best();
     const struct trace_kernels *scalar = trace_kernels_get(TRACE_ISA_SCALAR);
+    check_packet_xform();
     struct placement places[INSTANCES];
     for (int i = 0; i < INSTANCES; i++) {
         struct placement *p = &places[i];
@@ -391,5 +606,6 @@ int main(void)
         for (int w = 0; w < 3; w++)
             scene_release(&scenes[w]);
     }
+    check_extreme_packets();
     return test_summary("toplevel_wide");
 }

@@ -91,6 +91,16 @@ struct trace_kernels {
      * (packet_init.h); NULL in the tables without 256-bit lanes, where
      * packet_scene.c calls trace_ray_init ray by ray. */
     trace_packet_init_fn packet_init;
+    /* trace_scene_object_ray (scene_traverse.h) for the rays of mask
+     * `rays` of a packet at once (packet_xform.h): o_ray[r] for each ray
+     * whose transformed direction can be traced, bit for bit that
+     * function's ray, and the mask of those rays returned.  org, dir and
+     * tmin are a packet's arrays, all TRACE_PACKET entries read; m is
+     * trace_instance.world_to_object.  NULL in the tables without 256-bit
+     * lanes, where packet_scene.c transforms ray by ray. */
+    unsigned (*packet_xform)(const double m[12], const float (*org)[3], const float (*dir)[3],
+                             const float *tmin, unsigned rays,
+                             struct trace_ray o_ray[TRACE_PACKET]);
 };
 
 /* The table of an ISA, or NULL when this build has no such table or this

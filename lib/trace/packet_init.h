@@ -25,37 +25,35 @@
 #include "trace/packet.h"
 #include "trace/packet_tri8.h"
 
-/* The two transposes (packet_tri8.h's tri8_transpose8, whose layout
- * check is the struct's: sixteen floats, fields 0-7 org, dir,
+/* The set-up from the rays across lanes (o0-o2 the origins' x, y, z,
+ * d0-d2 the directions', tv the tmins: ray r in lane r), for TRACE_PACKET_INIT and the object-space rays of packet_xform.h:
+ * rays[r] for each ray of `live`, and, when top is not NULL, top's tmin,
+ * org and inv_dir lanes.  A lane of a ray left out may hold any
+ * direction (a zero or a NaN divides without trapping: the lane is not
+ * stored).  The two transposes (packet_tri8.h's tri8_transpose8, whose
+ * layout check is the struct's: sixteen floats, fields 0-7 org, dir,
  * inv_dir[0..1], fields 8-15 inv_dir[2], tmin, kx, ky, kz, sx, sy, sz)
  * store each ray as two 32-byte halves. */
-static void TRACE_PACKET_INIT(const float (*org)[3], const float (*dir)[3], const float *tmin,
-                              unsigned live, struct trace_ray rays[TRACE_PACKET],
-                              struct trace_top_rays *top)
+#if !defined(RT_TRACE_PACKET_INIT_LANES)
+#define RT_TRACE_PACKET_INIT_LANES
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void packet_init_lanes(__m256 o0, __m256 o1, __m256 o2, __m256 d0, __m256 d1,
+                                     __m256 d2, __m256 tv, unsigned live,
+                                     struct trace_ray rays[TRACE_PACKET],
+                                     struct trace_top_rays *top)
 {
-    /* The live rays across lanes; the others hold an origin of zeros and
-     * a direction of ones, so that nothing below divides by zero. */
-    float o[3][8] __attribute__((aligned(32)));
-    float d[3][8] __attribute__((aligned(32)));
-    float t[8] __attribute__((aligned(32)));
-    for (int r = 0; r < 8; r++) {
-        const int in = live >> r & 1u;
-        for (int k = 0; k < 3; k++) {
-            o[k][r] = in ? org[r][k] : 0.0f;
-            d[k][r] = in ? dir[r][k] : 1.0f;
-        }
-        t[r] = in ? tmin[r] : 0.0f;
-    }
+    /* The rows by value, not as arrays: GCC copied arrays passed to this
+     * function through the stack, 21 instructions more a packet. */
+    const __m256 ov[3] = {o0, o1, o2}, dv[3] = {d0, d1, d2};
     const __m256 one = _mm256_set1_ps(1.0f);
     const __m256 sign = _mm256_set1_ps(-0.0f);
-    __m256 ov[3], dv[3], inv[3], a[3];
+    __m256 inv[3], a[3];
     for (int k = 0; k < 3; k++) {
-        ov[k] = _mm256_load_ps(o[k]);
-        dv[k] = _mm256_load_ps(d[k]);
         inv[k] = _mm256_div_ps(one, dv[k]);
         a[k] = _mm256_andnot_ps(sign, dv[k]);
     }
-    const __m256 tv = _mm256_load_ps(t);
     /* kz as trace_ray_init chooses it: 1 when |d1| > |d0|, then 2 when
      * |d2| exceeds the larger of those. */
     const __m256 c1 = _mm256_cmp_ps(a[1], a[0], _CMP_GT_OQ);
@@ -88,14 +86,16 @@ static void TRACE_PACKET_INIT(const float (*org)[3], const float (*dir)[3], cons
                                         _mm256_set1_epi32(3));
     /* The arrays across lanes for the top level's box tests (zeros in the
      * lanes of the rays left out, as packet.h asks). */
-    const __m256 keep = _mm256_castsi256_ps(_mm256_cmpgt_epi32(
-        _mm256_and_si256(_mm256_set1_epi32((int)live), _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64,
-                                                                          128)),
-        _mm256_setzero_si256()));
-    _mm256_store_ps(top->tmin, tv);
-    for (int k = 0; k < 3; k++) {
-        _mm256_store_ps(top->org[k], ov[k]);
-        _mm256_store_ps(top->inv_dir[k], _mm256_and_ps(inv[k], keep));
+    if (top) {
+        const __m256 keep = _mm256_castsi256_ps(_mm256_cmpgt_epi32(
+            _mm256_and_si256(_mm256_set1_epi32((int)live),
+                             _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128)),
+            _mm256_setzero_si256()));
+        _mm256_store_ps(top->tmin, tv);
+        for (int k = 0; k < 3; k++) {
+            _mm256_store_ps(top->org[k], ov[k]);
+            _mm256_store_ps(top->inv_dir[k], _mm256_and_ps(inv[k], keep));
+        }
     }
     const __m256 lo_rows[8] = {ov[0], ov[1], ov[2], dv[0], dv[1], dv[2], inv[0], inv[1]};
     const __m256 hi_rows[8] = {inv[2],
@@ -115,4 +115,27 @@ static void TRACE_PACKET_INIT(const float (*org)[3], const float (*dir)[3], cons
         _mm256_storeu_ps(f, lo[r]);
         _mm256_storeu_ps(f + 8, hi[r]);
     }
+}
+#endif
+
+static void TRACE_PACKET_INIT(const float (*org)[3], const float (*dir)[3], const float *tmin,
+                              unsigned live, struct trace_ray rays[TRACE_PACKET],
+                              struct trace_top_rays *top)
+{
+    /* The live rays across lanes; the others hold an origin of zeros and
+     * a direction of ones, so that nothing below divides by zero. */
+    float o[3][8] __attribute__((aligned(32)));
+    float d[3][8] __attribute__((aligned(32)));
+    float t[8] __attribute__((aligned(32)));
+    for (int r = 0; r < 8; r++) {
+        const int in = live >> r & 1u;
+        for (int k = 0; k < 3; k++) {
+            o[k][r] = in ? org[r][k] : 0.0f;
+            d[k][r] = in ? dir[r][k] : 1.0f;
+        }
+        t[r] = in ? tmin[r] : 0.0f;
+    }
+    packet_init_lanes(_mm256_load_ps(o[0]), _mm256_load_ps(o[1]), _mm256_load_ps(o[2]),
+                      _mm256_load_ps(d[0]), _mm256_load_ps(d[1]), _mm256_load_ps(d[2]),
+                      _mm256_load_ps(t), live, rays, top);
 }

@@ -151,6 +151,10 @@ static void visit_instance(struct packet_top *s, uint32_t index, unsigned rays)
         /* trace_scene_object_ray would copy each world ray as it is. */
         o_ray = s->ray;
         live = rays;
+    } else if (k->packet_xform && several(rays)) {
+        /* The same rays, transformed several at a time (packet_xform.h). */
+        live = k->packet_xform(inst->world_to_object, s->p->org, s->p->dir, s->p->tmin, rays,
+                               rays_o);
     } else {
         for (unsigned m = rays; m; m &= m - 1u) {
             const int r = first(m);

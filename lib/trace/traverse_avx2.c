@@ -25,13 +25,16 @@
 #include "trace/top_lanes.h"
 #define TRACE_PACKET_INIT trace_packet_init_avx2
 #include "trace/packet_init.h"
+#define TRACE_PACKET_XFORM trace_packet_xform_avx2
+#include "trace/packet_xform.h"
 
 static const struct trace_kernels table = {
     TRACE_ISA_AVX2, "avx2", trace_closest_avx2, trace_any_avx2,
     trace_closest4_avx2, trace_any4_avx2, trace_closest1_avx2, trace_any1_avx2,
     8,
     trace_closest_packet_avx2, trace_any_packet_avx2, trace_leaf8_avx2,
-    trace_top_lanes_avx2, trace_top_lanes1_avx2, trace_packet_init_avx2};
+    trace_top_lanes_avx2, trace_top_lanes1_avx2, trace_packet_init_avx2,
+    trace_packet_xform_avx2};
 
 const struct trace_kernels *trace_kernels_avx2(void)
 {

@@ -25,13 +25,16 @@
 #include "trace/top_lanes.h"
 #define TRACE_PACKET_INIT trace_packet_init_avx512
 #include "trace/packet_init.h"
+#define TRACE_PACKET_XFORM trace_packet_xform_avx512
+#include "trace/packet_xform.h"
 
 static const struct trace_kernels table = {
     TRACE_ISA_AVX512, "avx512", trace_closest_avx512, trace_any_avx512,
     trace_closest4_avx512, trace_any4_avx512, trace_closest1_avx512, trace_any1_avx512,
     8,
     trace_closest_packet_avx512, trace_any_packet_avx512, trace_leaf8_avx512,
-    trace_top_lanes_avx512, trace_top_lanes1_avx512, trace_packet_init_avx512};
+    trace_top_lanes_avx512, trace_top_lanes1_avx512, trace_packet_init_avx512,
+    trace_packet_xform_avx512};
 
 const struct trace_kernels *trace_kernels_avx512(void)
 {
