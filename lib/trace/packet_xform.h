@@ -20,9 +20,16 @@
  * of the same origin, direction and tmin: the same struct.
  *
  * The twelve products and nine sums are done four rays a 256-bit
- * register (eight a 512-bit one with AVX-512F) instead of ray by ray:
- * on the BART robots, whose every moving part is a transformed instance,
- * trace_scene_object_ray was about 180 instructions a ray and instance.
+ * register instead of ray by ray: on the BART robots, whose every moving
+ * part is a transformed instance, trace_scene_object_ray was about 180
+ * instructions a ray and instance, this about 50.  The AVX-512 table
+ * runs the same 256-bit code (with its 32 registers, fewer spills): no
+ * other kernel uses 512-bit registers, and on Intel's AVX-512 cores
+ * 512-bit floating-point work lowers the core's clock for a while after
+ * it (Intel 64 and IA-32 Architectures Optimization Reference Manual,
+ * on the AVX-512 frequency licences), which could cost more than the
+ * few instructions a packet 512-bit lanes would save (not measured here;
+ * the first version of this file took eight rays a 512-bit register).
  */
 #if !defined(TRACE_PACKET_XFORM)
 #error "define TRACE_PACKET_XFORM before including packet_xform.h"
@@ -74,23 +81,6 @@ static unsigned TRACE_PACKET_XFORM(const double m[12], const float (*org)[3],
     __m256 o[3], d[3], ov[3], dv[3];
     packet_xform_soa(org, o);
     packet_xform_soa(dir, d);
-#if defined(__AVX512F__)
-    /* Eight rays a register. */
-    __m512d ox = _mm512_cvtps_pd(o[0]), oy = _mm512_cvtps_pd(o[1]), oz = _mm512_cvtps_pd(o[2]);
-    __m512d dx = _mm512_cvtps_pd(d[0]), dy = _mm512_cvtps_pd(d[1]), dz = _mm512_cvtps_pd(d[2]);
-    for (int r = 0; r < 3; r++) {
-        const __m512d m0 = _mm512_set1_pd(m[4 * r]), m1 = _mm512_set1_pd(m[4 * r + 1]);
-        const __m512d m2 = _mm512_set1_pd(m[4 * r + 2]), m3 = _mm512_set1_pd(m[4 * r + 3]);
-        const __m512d po = _mm512_add_pd(
-            _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(m0, ox), _mm512_mul_pd(m1, oy)),
-                          _mm512_mul_pd(m2, oz)),
-            m3);
-        const __m512d pd = _mm512_add_pd(
-            _mm512_add_pd(_mm512_mul_pd(m0, dx), _mm512_mul_pd(m1, dy)), _mm512_mul_pd(m2, dz));
-        ov[r] = _mm512_cvtpd_ps(po);
-        dv[r] = _mm512_cvtpd_ps(pd);
-    }
-#else
     /* Four rays a register, the low and high halves in turn. */
     __m128 oh[2][3], dh[2][3];
     for (int h = 0; h < 2; h++) {
@@ -117,7 +107,6 @@ static unsigned TRACE_PACKET_XFORM(const double m[12], const float (*org)[3],
         ov[r] = _mm256_insertf128_ps(_mm256_castps128_ps256(oh[0][r]), oh[1][r], 1);
         dv[r] = _mm256_insertf128_ps(_mm256_castps128_ps256(dh[0][r]), dh[1][r], 1);
     }
-#endif
     /* usable_direction: every component finite (|d| < inf, which a NaN
      * fails) and one of them not zero. */
     const __m256 sign = _mm256_set1_ps(-0.0f);
