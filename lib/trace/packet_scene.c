@@ -8,7 +8,8 @@
  * and the smallest of their entry distances, and a popped lane is left
  * by the rays whose closest hit lies in front of it.  An instance leaf
  * transforms each ray with trace_scene_object_ray, as visit_instance
- * does, and walks the object with the kernels' packet walk (or ray by
+ * does (or the table's packet_xform, the same rays several at a time),
+ * and walks the object with the kernels' packet walk (or ray by
  * ray when one ray is left); each ray's hit is then merged with
  * visit_instance's rule (ties to the lower instance), which does not
  * depend on the order of visits.  An instance the scene's hit filter
