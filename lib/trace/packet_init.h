@@ -26,7 +26,8 @@
 #include "trace/packet_tri8.h"
 
 /* The set-up from the rays across lanes (o0-o2 the origins' x, y, z,
- * d0-d2 the directions', tv the tmins: ray r in lane r), for TRACE_PACKET_INIT and the object-space rays of packet_xform.h:
+ * d0-d2 the directions', tv the tmins: ray r in lane r), for
+ * TRACE_PACKET_INIT and the object-space rays of packet_xform.h:
  * rays[r] for each ray of `live`, and, when top is not NULL, top's tmin,
  * org and inv_dir lanes.  A lane of a ray left out may hold any
  * direction (a zero or a NaN divides without trapping: the lane is not

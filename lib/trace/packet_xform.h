@@ -86,8 +86,10 @@ static unsigned TRACE_PACKET_XFORM(const double m[12], const float (*org)[3],
     for (int h = 0; h < 2; h++) {
         __m256d ok[3], dk[3];
         for (int k = 0; k < 3; k++) {
-            ok[k] = _mm256_cvtps_pd(h ? _mm256_extractf128_ps(o[k], 1) : _mm256_castps256_ps128(o[k]));
-            dk[k] = _mm256_cvtps_pd(h ? _mm256_extractf128_ps(d[k], 1) : _mm256_castps256_ps128(d[k]));
+            ok[k] = _mm256_cvtps_pd(h ? _mm256_extractf128_ps(o[k], 1)
+                                      : _mm256_castps256_ps128(o[k]));
+            dk[k] = _mm256_cvtps_pd(h ? _mm256_extractf128_ps(d[k], 1)
+                                      : _mm256_castps256_ps128(d[k]));
         }
         for (int r = 0; r < 3; r++) {
             const __m256d m0 = _mm256_set1_pd(m[4 * r]), m1 = _mm256_set1_pd(m[4 * r + 1]);
