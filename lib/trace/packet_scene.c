@@ -38,7 +38,10 @@ struct packet_top {
     int octant[TRACE_PACKET];
     unsigned found;
     unsigned done;  /* any hit: the rays with their hit */
-    unsigned plain; /* the rays whose origin and direction trace_scene_plain */
+    /* The rays trace_scene_plain_class puts in the class of the identity
+     * kind TRACE_IDENTITY_ZEROS (plain[0]) and TRACE_IDENTITY_EXACT
+     * (plain[1]). */
+    unsigned plain[2];
     /* 1 when every live ray has one octant and a finite origin: the top
      * level's nodes are then tested box by box (lanes_by_box, or the
      * table's top_lanes). */
@@ -147,7 +150,7 @@ static void visit_instance(struct packet_top *s, uint32_t index, unsigned rays)
     const struct trace_ray *o_ray = rays_o;
     float limit[TRACE_PACKET];
     unsigned live = 0;
-    if (inst->identity && !(rays & ~s->plain)) {
+    if (inst->identity && !(rays & ~s->plain[inst->identity - 1u])) {
         /* trace_scene_object_ray would copy each world ray as it is. */
         o_ray = s->ray;
         live = rays;
@@ -426,7 +429,7 @@ static unsigned walk(const struct trace_scene *scene, const struct trace_packet 
     s.counters = counters;
     s.found = 0;
     s.done = 0;
-    s.plain = 0;
+    s.plain[0] = s.plain[1] = 0;
     unsigned live = 0;
 #if ISECT_PAIR_SSE
     unsigned odd = 0, octants = 0; /* lanes_by_box's condition */
@@ -448,12 +451,13 @@ static unsigned walk(const struct trace_scene *scene, const struct trace_packet 
         s.best[r] = p->tmax[r];
         s.top.box_limit[r] = p->tmax[r];
         s.octant[r] = trace_scene_box_rows(&s.ray[r], s.near_row[r], s.far_row[r]);
-        const int plain_org = trace_scene_plain(p->org[r]);
-        s.plain |= (unsigned)(plain_org & trace_scene_plain(p->dir[r])) << r;
+        const unsigned plain = trace_scene_plain_class(p->org[r], p->dir[r]);
+        s.plain[0] |= (plain & TRACE_IDENTITY_ZEROS) << r;
+        s.plain[1] |= (plain >> 1 & 1u) << r;
 #if ISECT_PAIR_SSE
-        /* A finite, non-zero origin is finite: the rare other one is read
+        /* A plain ray's origin is finite: the rare other one is read
          * again. */
-        if (!plain_org)
+        if (!(plain & TRACE_IDENTITY_EXACT))
             odd |= not_finite(p->org[r][0]) | not_finite(p->org[r][1]) |
                    not_finite(p->org[r][2]);
         /* lanes_by_box's rays across lanes (packet_init's already), and
