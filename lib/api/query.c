@@ -3,13 +3,39 @@
  * query.c - rtTraceRays and rtOccludedRays: batches of rays against the
  * current scene, through the same traversal that renders frames.
  */
-#include <math.h>
+#include <stddef.h>
+#include <stdint.h>
 #include <string.h>
 
 #include "api/context.h"
 #include "base/timer.h"
 
 /* Validates a batch; returns 1 when every ray is usable. */
+/* 1 when org and dir are finite, dir is not zero, tmin is not NaN and
+ * not below 0 (-0.0 is not), and tmax is not NaN; read as bits: a float
+ * is finite when its magnitude's bits are below the infinity's, NaN when
+ * above, and a tmin of at most the bits of +infinity or exactly those of
+ * -0.0 is a number >= 0. */
+static unsigned ray_valid(const RTray *r)
+{
+    uint32_t w[8];
+    memcpy(w, r, sizeof(w)); /* org[3], tmin, dir[3], tmax (rt.h) */
+    const uint32_t magnitude = 0x7fffffffu, inf = 0x7f800000u;
+    unsigned ok = ((w[0] & magnitude) < inf) & ((w[1] & magnitude) < inf) &
+                  ((w[2] & magnitude) < inf) & ((w[4] & magnitude) < inf) &
+                  ((w[5] & magnitude) < inf) & ((w[6] & magnitude) < inf);
+    ok &= ((w[4] | w[5] | w[6]) & magnitude) != 0u;
+    ok &= (w[3] <= inf) | (w[3] == 0x80000000u);
+    ok &= (w[7] & magnitude) <= inf;
+    return ok;
+}
+
+typedef char ray_valid_layout[sizeof(RTray) == 8 * sizeof(uint32_t) &&
+                                      offsetof(RTray, tmin) == 3 * sizeof(float) &&
+                                      offsetof(RTray, dir) == 4 * sizeof(float)
+                                  ? 1
+                                  : -1];
+
 static int rays_valid(struct rt_context *ctx, const char *caller, RTsizei count,
                       const RTray *rays, const void *out)
 {
@@ -18,13 +44,17 @@ static int rays_valid(struct rt_context *ctx, const char *caller, RTsizei count,
                  (const void *)rays, out);
         return 0;
     }
+    /* A pass over every ray before any is traced (an invalid ray anywhere
+     * leaves every result as it was), on the calling thread alone: the
+     * tests on the bits, without branches, the first failing ray looked
+     * for only when there is one. */
+    unsigned all_valid = 1;
+    for (RTsizei i = 0; i < count; i++)
+        all_valid &= ray_valid(&rays[i]);
+    if (all_valid)
+        return 1;
     for (RTsizei i = 0; i < count; i++) {
-        const RTray *r = &rays[i];
-        int finite = 1;
-        for (int k = 0; k < 3; k++)
-            finite &= isfinite(r->org[k]) && isfinite(r->dir[k]);
-        int zero = r->dir[0] == 0.0f && r->dir[1] == 0.0f && r->dir[2] == 0.0f;
-        if (!finite || zero || isnan(r->tmin) || isnan(r->tmax) || r->tmin < 0.0f) {
+        if (!ray_valid(&rays[i])) {
             rt_error(ctx, RT_INVALID_VALUE,
                      "%s: ray %d is invalid (org and dir must be finite, dir non-zero, "
                      "0 <= tmin, tmax not NaN)",
