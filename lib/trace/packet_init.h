@@ -31,7 +31,7 @@
  * store each ray as two 32-byte halves. */
 static void TRACE_PACKET_INIT(const float (*org)[3], const float (*dir)[3], const float *tmin,
                               unsigned live, struct trace_ray rays[TRACE_PACKET],
-                              struct trace_top_rays *top)
+                              struct trace_top_rays *top, struct trace_packet_plain *plain)
 {
     /* The live rays across lanes; the others hold an origin of zeros and
      * a direction of ones, so that nothing below divides by zero. */
@@ -96,6 +96,39 @@ static void TRACE_PACKET_INIT(const float (*org)[3], const float (*dir)[3], cons
     for (int k = 0; k < 3; k++) {
         _mm256_store_ps(top->org[k], ov[k]);
         _mm256_store_ps(top->inv_dir[k], _mm256_and_ps(inv[k], keep));
+    }
+    /* trace_scene_plain_class's tests on the bits, eight rays a
+     * register: a magnitude m is finite when below the infinity's bits
+     * and also not zero when m - 1 is below FLT_MAX's, unsigned (the
+     * sign bit flipped for the signed compare). */
+    {
+        const __m256i magnitude = _mm256_set1_epi32(0x7fffffff);
+        const __m256i sign_bit = _mm256_set1_epi32((int)0x80000000u);
+        const __m256i inf = _mm256_set1_epi32(0x7f800000);
+        const __m256i below = _mm256_set1_epi32((int)(0x7f7fffffu ^ 0x80000000u));
+        const __m256i ones = _mm256_set1_epi32(1);
+        __m256i finite_org = _mm256_set1_epi32(-1), finite = finite_org, nonzero = finite_org;
+        __m256i neg_zero = _mm256_setzero_si256(), dir_zero = finite_org;
+        for (int k = 0; k < 6; k++) {
+            const __m256i v = _mm256_castps_si256(k < 3 ? ov[k] : dv[k - 3]);
+            const __m256i m = _mm256_and_si256(v, magnitude);
+            const __m256i fin = _mm256_cmpgt_epi32(inf, m);
+            if (k < 3)
+                finite_org = _mm256_and_si256(finite_org, fin);
+            else
+                dir_zero = _mm256_and_si256(dir_zero,
+                                            _mm256_cmpeq_epi32(m, _mm256_setzero_si256()));
+            finite = _mm256_and_si256(finite, fin);
+            nonzero = _mm256_and_si256(
+                nonzero, _mm256_cmpgt_epi32(
+                             below, _mm256_xor_si256(_mm256_sub_epi32(m, ones), sign_bit)));
+            neg_zero = _mm256_or_si256(neg_zero, _mm256_cmpeq_epi32(v, sign_bit));
+        }
+        const __m256i exact = _mm256_andnot_si256(_mm256_or_si256(neg_zero, dir_zero), finite);
+        plain->zeros = (unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(nonzero)) & live;
+        plain->exact = (unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(exact)) & live;
+        plain->finite_org =
+            (unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(finite_org)) & live;
     }
     const __m256 lo_rows[8] = {ov[0], ov[1], ov[2], dv[0], dv[1], dv[2], inv[0], inv[1]};
     const __m256 hi_rows[8] = {inv[2],

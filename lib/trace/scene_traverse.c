@@ -58,7 +58,7 @@ int trace_scene_object_ray(const struct trace_instance *inst, const float org[3]
      * comparison below would find it, without the twelve products.  A
      * zero whose sign the sum may change or an infinity (0 * inf is a
      * NaN) takes the general path. */
-    if (inst->identity & trace_scene_plain_class(org, dir)) {
+    if (inst->identity && (inst->identity & trace_scene_plain_class(org, dir))) {
         *o_ray = *world;
         return 1;
     }
