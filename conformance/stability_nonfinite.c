@@ -494,6 +494,15 @@ static void poison_rays(const RTray *rays)
         rtTraceRays(1000, batch, hits);
         CHECK_NO_ERR();
         CHECK(hits[500].t == INFINITY && hits[500].primitive == RT_INVALID_ID);
+        /* tmin = -0.0 is not below 0: no error, the ray of tmin 0. */
+        batch[500].tmin = -0.0f;
+        rtTraceRays(1000, batch, hits);
+        CHECK_NO_ERR();
+        batch[500].tmin = 0.0f;
+        RThit ref;
+        rtTraceRays(1, &batch[500], &ref);
+        CHECK_NO_ERR();
+        CHECK(memcmp(&ref, &hits[500], sizeof(ref)) == 0);
     }
 }
 

@@ -46,6 +46,7 @@
 #include "accel_testgeo.h"
 #include "base/alloc.h"
 #include "trace/kernels.h"
+#include "trace/scene_traverse.h"
 #include "trace/trace.h"
 
 static int failures;
@@ -340,11 +341,16 @@ static void compare_tables(const char *name, struct tg_mesh *m, int rays, uint64
 /* Each table's packet set-up (kernels.h packet_init) against
  * trace_ray_init byte for byte, and its lanes, on directions
  * with ties between |components| (the axis choice), zeros of both signs
- * and values of every magnitude; some rays left out. */
+ * and values of every magnitude; some rays left out; and its masks
+ * against trace_scene_plain_class, with origins of every kind (zeros of
+ * both signs, infinities, NaN) too. */
 static void compare_packet_init(void)
 {
     static const float pick[] = {1.0f,   -1.0f, 0.0f,  -0.0f, 0.5f,   -0.5f,
                                  3e-30f, 7e29f, 2.0f, -2.0f,  1e-40f, -0.75f};
+    /* Origins of every kind for the masks (a set-up copies the origin). */
+    static const float pick_org[] = {0.0f, -0.0f, 1e-40f, -3.4e38f, INFINITY, -INFINITY, NAN, 5.0f};
+    const int npick_org = (int)(sizeof(pick_org) / sizeof(pick_org[0]));
     const int npick = (int)(sizeof(pick) / sizeof(pick[0]));
     uint32_t state = 99u;
     for (int isa = 0; isa < TRACE_ISA_COUNT; isa++) {
@@ -357,7 +363,8 @@ static void compare_packet_init(void)
             for (int i = 0; i < TRACE_PACKET; i++) {
                 for (int c = 0; c < 3; c++) {
                     state = state * 1664525u + 1013904223u;
-                    org[i][c] = (float)(int)(state >> 12) * 0x1p-10f - 512.0f;
+                    org[i][c] = q % 5 == 3 ? pick_org[(state >> 12) % (uint32_t)npick_org]
+                                           : (float)(int)(state >> 12) * 0x1p-10f - 512.0f;
                     state = state * 1664525u + 1013904223u;
                     dir[i][c] = q % 2 ? pick[(state >> 8) % (uint32_t)npick]
                                       : (float)(int)(state >> 8) * 0x1p-23f - 1.0f;
@@ -370,8 +377,19 @@ static void compare_packet_init(void)
             const unsigned live = q % 4 ? 0xFFu : (state >> 16) & 0xFFu;
             struct trace_ray got[TRACE_PACKET];
             struct trace_top_rays top;
-            k->packet_init((const float(*)[3])org, (const float(*)[3])dir, tmin, live, got, &top);
+            struct trace_packet_plain plain;
+            k->packet_init((const float(*)[3])org, (const float(*)[3])dir, tmin, live, got, &top,
+                           &plain);
             for (int i = 0; i < TRACE_PACKET; i++) {
+                /* The masks: trace_scene_plain_class's classes, finite
+                 * origins, nothing for the rays left out. */
+                const unsigned cls = trace_scene_plain_class(org[i], dir[i]);
+                const unsigned in = live >> i & 1u;
+                const int finite_org = isfinite(org[i][0]) && isfinite(org[i][1]) &&
+                                       isfinite(org[i][2]);
+                bad += (plain.zeros >> i & 1u) != (in & (cls & TRACE_IDENTITY_ZEROS ? 1u : 0u)) ||
+                       (plain.exact >> i & 1u) != (in & (cls & TRACE_IDENTITY_EXACT ? 1u : 0u)) ||
+                       (plain.finite_org >> i & 1u) != (in & (unsigned)finite_org);
                 if (!(live >> i & 1u)) {
                     bad += bits(top.tmin[i]) != 0 || bits(top.inv_dir[0][i]) != 0;
                     continue;

@@ -29,6 +29,14 @@
  * packets over instances whose scales underflow or overflow some rays'
  * directions (such a ray skips that instance) give the single walk's
  * answers, with each table.
+ *
+ * And trace_scene_object_ray's shortcut for the identity
+ * gives the bytes of its general path (the transform in double) for
+ * every origin and direction built from zeros of both signs, tiny,
+ * huge, infinite and NaN components: the shortcut takes only origins and
+ * directions the transform gives back bit for bit (trace_scene_plain_class:
+ * a -0.0 can come back +0.0), and only rows that are the identity's bit
+ * for bit (a -0.0 in the rows can keep a -0.0).
  */
 #include <rt/rt.h>
 #include <math.h>
@@ -87,6 +95,7 @@ struct placement {
     double s;
     int quarter;
     double t[3];
+    int positive_zeros; /* the inverse's zeros all +0.0 */
 };
 
 static void matrices(const struct placement *p, double o2w[16], double w2o[16])
@@ -116,6 +125,12 @@ static void matrices(const struct placement *p, double o2w[16], double w2o[16])
     w2o[13] = -(w2o[1] * p->t[0] + w2o[5] * p->t[1]);
     w2o[14] = -is * p->t[2];
     w2o[15] = 1.0;
+    /* The identity's rows bit for bit (TRACE_IDENTITY_EXACT) rather than
+     * with the -0.0 of -(0 + 0) (TRACE_IDENTITY_ZEROS). */
+    if (p->positive_zeros)
+        for (int k = 0; k < 16; k++)
+            if (w2o[k] == 0.0)
+                w2o[k] = 0.0;
 }
 
 enum { OBJECTS = 3, INSTANCES = 400 };
@@ -392,12 +407,60 @@ static void check_extreme_packets(void)
     scene_release(&wide_scene);
 }
 
+/* trace_scene_object_ray with the identity flag against the same rows
+ * without it, every combination of the components below. */
+static long object_ray_mismatches(const double w2o[16], uint32_t *flagged)
+{
+    static const float z[] = {0.0f, -0.0f, 1.5f, -2.0f, 1e-30f, -1e-38f, 3.0e38f, INFINITY,
+                              -INFINITY, NAN};
+    enum { NZ = sizeof(z) / sizeof(z[0]) };
+    struct trace_instance fast, slow;
+    memset(&fast, 0, sizeof(fast));
+    trace_instance_set_rows(&fast, w2o);
+    slow = fast;
+    slow.identity = 0;
+    *flagged = fast.identity;
+    long bad = 0;
+    for (int i = 0; i < NZ * NZ * NZ; i++) {
+        const float org[3] = {z[i % NZ], z[i / NZ % NZ], z[i / (NZ * NZ)]};
+        for (int j = 0; j < NZ * NZ * NZ; j += 1 + j % 3) {
+            const float dir[3] = {z[j / (NZ * NZ)], z[j % NZ], z[j / NZ % NZ]};
+            struct trace_ray world, a, b;
+            memset(&world, 0, sizeof(world));
+            memset(&a, 0, sizeof(a));
+            memset(&b, 0, sizeof(b));
+            trace_ray_init_single(&world, org, dir, 0.25f);
+            const int ga = trace_scene_object_ray(&fast, org, dir, 0.25f, &world, &a);
+            const int gb = trace_scene_object_ray(&slow, org, dir, 0.25f, &world, &b);
+            bad += ga != gb || (ga && memcmp(&a, &b, sizeof(a)) != 0);
+        }
+    }
+    return bad;
+}
+
 int main(void)
 {
+    /* The identity shortcut's object rays, for the identity's rows and for
+     * rows with a -0.0 (a translation by -0.0, a -0.0 off the diagonal). */
+    double id[16];
+    memset(id, 0, sizeof(id));
+    id[0] = id[5] = id[10] = id[15] = 1.0;
+    uint32_t flagged = 0;
+    CHECK(object_ray_mismatches(id, &flagged) == 0);
+    CHECK(flagged == TRACE_IDENTITY_EXACT);
+    id[12] = -0.0;
+    CHECK(object_ray_mismatches(id, &flagged) == 0);
+    CHECK(flagged == TRACE_IDENTITY_ZEROS);
+    id[12] = 0.0;
+    id[1] = -0.0;
+    CHECK(object_ray_mismatches(id, &flagged) == 0);
+    CHECK(flagged == TRACE_IDENTITY_ZEROS);
+
     const struct trace_kernels *best = trace_kernels_best();
     const struct trace_kernels *scalar = trace_kernels_get(TRACE_ISA_SCALAR);
     check_packet_xform();
     struct placement places[INSTANCES];
+    memset(places, 0, sizeof(places));
     for (int i = 0; i < INSTANCES; i++) {
         struct placement *p = &places[i];
         if (i >= 8 && i % 8 == 0) {
@@ -418,6 +481,7 @@ int main(void)
             p->s = 1.0;
             p->quarter = 0;
             p->t[0] = p->t[1] = p->t[2] = 0.0;
+            p->positive_zeros = i % 14 == 3;
         }
     }
 
@@ -446,7 +510,7 @@ int main(void)
         CHECK(scenes[0].frame.trace_instance_count == INSTANCES);
         /* The best scene's instances with the identity flag cleared: the
          * reference for the flag's shortcut. */
-        uint32_t identities = 0;
+        uint32_t identities = 0, exact = 0;
         const uint32_t n_inst = scenes[2].frame.trace_instance_count;
         struct trace_instance *plain = malloc(n_inst * sizeof(*plain));
         CHECK(plain != NULL);
@@ -454,10 +518,11 @@ int main(void)
             return test_summary("toplevel_wide");
         memcpy(plain, scenes[2].frame.trace_instances, n_inst * sizeof(*plain));
         for (uint32_t i = 0; i < n_inst; i++) {
-            identities += plain[i].identity;
+            identities += plain[i].identity != 0;
+            exact += plain[i].identity == TRACE_IDENTITY_EXACT;
             plain[i].identity = 0;
         }
-        CHECK(identities > 0 && identities < n_inst);
+        CHECK(identities > exact && exact > 0 && identities < n_inst);
         long flag_mismatches = 0;
 
         long mismatches = 0, hits = 0, ties = 0;

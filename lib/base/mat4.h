@@ -13,6 +13,14 @@
 #include <math.h>
 #include <string.h>
 
+/* fmax without the library call (GCC calls libm's fmax, through the
+ * PLT, for its NaN rule), for a left operand that is never NaN: the same
+ * result as fmax, a NaN on the right giving the left. */
+static inline double mat4_fmax_left(double x, double y)
+{
+    return y > x ? y : x;
+}
+
 static inline void mat4_identity(double m[16])
 {
     memset(m, 0, 16 * sizeof(double));

@@ -460,13 +460,6 @@ static int unproject_cached(const struct unproject_cache *c, int x, int y,
     return 1;
 }
 
-/* fmax without the library call, for values that are never NaN on the
- * left: the same result as fmax (a NaN on the right gives the left). */
-static double max_left(double x, double y)
-{
-    return y > x ? y : x;
-}
-
 static int primary_ray(const struct unproject_cache *cache, int px, int py, float org[3],
                        float dir[3], float *tmax, struct shade_cone *cone)
 {
@@ -502,8 +495,8 @@ static int primary_ray(const struct unproject_cache *cache, int px, int py, floa
         double dist[4]; /* near x, near y, far x, far y */
         distances_to_line(q, near_pt, d, dist);
         for (int axis = 0; axis < 2; axis++) {
-            width = max_left(width, dist[axis]);
-            growth = max_left(growth, dist[2 + axis] - dist[axis]);
+            width = mat4_fmax_left(width, dist[axis]);
+            growth = mat4_fmax_left(growth, dist[2 + axis] - dist[axis]);
         }
         spread = growth / len;
     }
@@ -571,7 +564,7 @@ static inline int ray_pair(const struct unproject_row *a, const struct unproject
                               p[k]);
         dist[h] = pair_distance_to_line(v, d);
     }
-    /* max_left(x, y) = y > x ? y : x is maxpd with y first (it gives its
+    /* mat4_fmax_left(x, y) = y > x ? y : x is maxpd with y first (it gives its
      * first operand when greater, else its second, also for NaNs and
      * zeros: Intel SDM, MAXPD), from 0, x before y. */
     const __m128d zero = _mm_setzero_pd();

@@ -983,14 +983,14 @@ void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit 
     for (int k = 0; k < 3; k++) {
         po[k] = (double)p0[k] + (double)hit->u * ((double)p1[k] - (double)p0[k]) +
                 (double)hit->v * ((double)p2[k] - (double)p0[k]);
-        max_object = fmax(max_object, fabs(po[k]));
+        max_object = mat4_fmax_left(max_object, fabs(po[k]));
     }
     mat4_transform_point(inst->object_to_world, po, pw);
     for (int k = 0; k < 3; k++) {
         s->p[k] = (float)pw[k];
-        max_world = fmax(max_world, fabs(pw[k]));
+        max_world = mat4_fmax_left(max_world, fabs(pw[k]));
         const double *m = inst->object_to_world;
-        norm = fmax(norm, fabs(m[k]) + fabs(m[4 + k]) + fabs(m[8 + k]));
+        norm = mat4_fmax_left(norm, fabs(m[k]) + fabs(m[4 + k]) + fabs(m[8 + k]));
     }
     s->p_error = (float)(0.5 * FLT_EPSILON * (max_world + norm * max_object) + FLT_MIN);
     hit_normals(sc, &t, hit->prim, dir, s->ng, s->n, &s->front);

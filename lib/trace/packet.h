@@ -90,14 +90,27 @@ typedef void (*trace_top_lanes_fn)(const struct trace_top_rays *q, const float *
                                    uint32_t width, unsigned rays, unsigned lane_rays[8],
                                    float t_min[8]);
 
+/* What the two-level packet walk asks of its rays besides their set-up
+ * (packet_scene.c), as masks of the rays: the classes of
+ * trace_scene_plain_class (scene_traverse.h), zeros (every component
+ * finite and not zero) and exact (finite, none -0.0, the direction not
+ * zero), and the rays whose origin is finite. */
+struct trace_packet_plain {
+    unsigned zeros;
+    unsigned exact;
+    unsigned finite_org;
+};
+
 /* Sets up the rays of mask `live` (org[r], dir[r], tmin[r]) into rays[r]
  * as trace_ray_init does, bit for bit, fills top's tmin, org and inv_dir
  * lanes (zeros for the others; box_limit, the rows and the octant are
- * the caller's, trace_scene_box_rows). */
+ * the caller's, trace_scene_box_rows), and *plain for the live rays (no
+ * bits for the others). */
 typedef void (*trace_packet_init_fn)(const float (*org)[3], const float (*dir)[3],
                                      const float *tmin, unsigned live,
                                      struct trace_ray rays[TRACE_PACKET],
-                                     struct trace_top_rays *top);
+                                     struct trace_top_rays *top,
+                                     struct trace_packet_plain *plain);
 
 /*
  * The packet walks of a kernels table (kernels.h): rays[i] with

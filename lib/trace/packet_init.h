@@ -117,11 +117,49 @@ static inline void packet_init_lanes(__m256 o0, __m256 o1, __m256 o2, __m256 d0,
         _mm256_storeu_ps(f + 8, hi[r]);
     }
 }
+
+/* trace_scene_plain_class's tests on the bits for the rays of `live`,
+ * eight a register (packet.h, struct trace_packet_plain): a magnitude m
+ * is finite when below the infinity's bits and also not zero when m - 1
+ * is below FLT_MAX's, unsigned (the sign bit flipped for the signed
+ * compare). */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void packet_plain_masks(const __m256 ov[3], const __m256 dv[3], unsigned live,
+                                      struct trace_packet_plain *plain)
+{
+    const __m256i magnitude = _mm256_set1_epi32(0x7fffffff);
+    const __m256i sign_bit = _mm256_set1_epi32((int)0x80000000u);
+    const __m256i inf = _mm256_set1_epi32(0x7f800000);
+    const __m256i below = _mm256_set1_epi32((int)(0x7f7fffffu ^ 0x80000000u));
+    const __m256i ones = _mm256_set1_epi32(1);
+    __m256i finite_org = _mm256_set1_epi32(-1), finite = finite_org, nonzero = finite_org;
+    __m256i neg_zero = _mm256_setzero_si256(), dir_zero = finite_org;
+    for (int k = 0; k < 6; k++) {
+        const __m256i v = _mm256_castps_si256(k < 3 ? ov[k] : dv[k - 3]);
+        const __m256i m = _mm256_and_si256(v, magnitude);
+        const __m256i fin = _mm256_cmpgt_epi32(inf, m);
+        if (k < 3)
+            finite_org = _mm256_and_si256(finite_org, fin);
+        else
+            dir_zero = _mm256_and_si256(dir_zero, _mm256_cmpeq_epi32(m, _mm256_setzero_si256()));
+        finite = _mm256_and_si256(finite, fin);
+        nonzero = _mm256_and_si256(
+            nonzero,
+            _mm256_cmpgt_epi32(below, _mm256_xor_si256(_mm256_sub_epi32(m, ones), sign_bit)));
+        neg_zero = _mm256_or_si256(neg_zero, _mm256_cmpeq_epi32(v, sign_bit));
+    }
+    const __m256i exact = _mm256_andnot_si256(_mm256_or_si256(neg_zero, dir_zero), finite);
+    plain->zeros = (unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(nonzero)) & live;
+    plain->exact = (unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(exact)) & live;
+    plain->finite_org = (unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(finite_org)) & live;
+}
 #endif
 
 static void TRACE_PACKET_INIT(const float (*org)[3], const float (*dir)[3], const float *tmin,
                               unsigned live, struct trace_ray rays[TRACE_PACKET],
-                              struct trace_top_rays *top)
+                              struct trace_top_rays *top, struct trace_packet_plain *plain)
 {
     /* The live rays across lanes; the others hold an origin of zeros and
      * a direction of ones, so that nothing below divides by zero. */
@@ -136,7 +174,8 @@ static void TRACE_PACKET_INIT(const float (*org)[3], const float (*dir)[3], cons
         }
         t[r] = in ? tmin[r] : 0.0f;
     }
-    packet_init_lanes(_mm256_load_ps(o[0]), _mm256_load_ps(o[1]), _mm256_load_ps(o[2]),
-                      _mm256_load_ps(d[0]), _mm256_load_ps(d[1]), _mm256_load_ps(d[2]),
-                      _mm256_load_ps(t), live, rays, top);
+    const __m256 ov[3] = {_mm256_load_ps(o[0]), _mm256_load_ps(o[1]), _mm256_load_ps(o[2])};
+    const __m256 dv[3] = {_mm256_load_ps(d[0]), _mm256_load_ps(d[1]), _mm256_load_ps(d[2])};
+    packet_plain_masks(ov, dv, live, plain);
+    packet_init_lanes(ov[0], ov[1], ov[2], dv[0], dv[1], dv[2], _mm256_load_ps(t), live, rays, top);
 }

@@ -39,7 +39,13 @@ struct packet_top {
     int octant[TRACE_PACKET];
     unsigned found;
     unsigned done;  /* any hit: the rays with their hit */
-    unsigned plain; /* the rays whose origin and direction trace_scene_plain */
+    unsigned live; /* the rays traced (active, tmin < tmax) */
+    /* The rays trace_scene_plain_class puts in the class of the identity
+     * kind TRACE_IDENTITY_ZEROS (plain[0]) and TRACE_IDENTITY_EXACT
+     * (plain[1]), found when the first identity instance is visited
+     * (plain_ready): a scene without one does not pay for them. */
+    unsigned plain[2];
+    int plain_ready;
     /* 1 when every live ray has one octant and a finite origin: the top
      * level's nodes are then tested box by box (lanes_by_box, or the
      * table's top_lanes). */
@@ -129,6 +135,22 @@ static unsigned filter_lanes(struct packet_top *s, uint32_t index,
     return got;
 }
 
+/* The rays of s->live an identity instance of kind `identity` hands on
+ * without a transform (trace_scene_plain_class). */
+static unsigned plain_rays(struct packet_top *s, uint32_t identity)
+{
+    if (!s->plain_ready) {
+        for (unsigned m = s->live; m; m &= m - 1u) {
+            const int r = first(m);
+            const unsigned c = trace_scene_plain_class(s->p->org[r], s->p->dir[r]);
+            s->plain[0] |= (c & TRACE_IDENTITY_ZEROS) << r;
+            s->plain[1] |= (c >> 1 & 1u) << r;
+        }
+        s->plain_ready = 1;
+    }
+    return s->plain[identity - 1u];
+}
+
 /* Instance slot `index` for the rays of mask `rays`. */
 static void visit_instance(struct packet_top *s, uint32_t index, unsigned rays)
 {
@@ -148,7 +170,7 @@ static void visit_instance(struct packet_top *s, uint32_t index, unsigned rays)
     const struct trace_ray *o_ray = rays_o;
     float limit[TRACE_PACKET];
     unsigned live = 0;
-    if (inst->identity && !(rays & ~s->plain)) {
+    if (inst->identity && !(rays & ~plain_rays(s, inst->identity))) {
         /* trace_scene_object_ray would copy each world ray as it is. */
         o_ray = s->ray;
         live = rays;
@@ -391,16 +413,6 @@ static void walk_top(struct packet_top *s, const struct bvh4 *wide, unsigned act
     }
 }
 
-#if ISECT_PAIR_SSE
-/* A float that is infinite or a NaN, by its exponent bits. */
-static unsigned not_finite(float x)
-{
-    uint32_t b;
-    memcpy(&b, &x, sizeof(b));
-    return (b & 0x7f800000u) == 0x7f800000u;
-}
-#endif
-
 static unsigned walk(const struct trace_scene *scene, const struct trace_packet *p, int any_hit,
                      struct trace_scene_hit *hits, struct trace_scene_counters *counters)
 {
@@ -431,10 +443,12 @@ static unsigned walk(const struct trace_scene *scene, const struct trace_packet 
     s.counters = counters;
     s.found = 0;
     s.done = 0;
-    s.plain = 0;
+    s.plain[0] = s.plain[1] = 0;
+    s.plain_ready = 0;
     unsigned live = 0;
 #if ISECT_PAIR_SSE
-    unsigned odd = 0, octants = 0; /* lanes_by_box's condition */
+    unsigned octants = 0; /* lanes_by_box's condition, with origin_probe */
+    float origin_probe = 0.0f;
 #endif
     for (unsigned m = active; m; m &= m - 1u) {
         const int r = first(m);
@@ -442,10 +456,22 @@ static unsigned walk(const struct trace_scene *scene, const struct trace_packet 
         if (p->tmin[r] < p->tmax[r])
             live |= 1u << r; /* else trace_scene_closest's early miss */
     }
+    s.live = live;
     /* The table's set-up of all the rays at once, where it has one. */
     const int at_once = k->packet_init != NULL;
-    if (at_once)
-        k->packet_init(p->org, p->dir, p->tmin, live, s.ray, &s.top);
+#if ISECT_PAIR_SSE
+    unsigned finite_org = 0;
+#endif
+    if (at_once) {
+        struct trace_packet_plain plain;
+        k->packet_init(p->org, p->dir, p->tmin, live, s.ray, &s.top, &plain);
+        s.plain[0] = plain.zeros;
+        s.plain[1] = plain.exact;
+        s.plain_ready = 1;
+#if ISECT_PAIR_SSE
+        finite_org = plain.finite_org;
+#endif
+    }
     for (unsigned m = live; m; m &= m - 1u) {
         const int r = first(m);
         if (!at_once)
@@ -453,14 +479,13 @@ static unsigned walk(const struct trace_scene *scene, const struct trace_packet 
         s.best[r] = p->tmax[r];
         s.top.box_limit[r] = p->tmax[r];
         s.octant[r] = trace_scene_box_rows(&s.ray[r], s.near_row[r], s.far_row[r]);
-        const int plain_org = trace_scene_plain(p->org[r]);
-        s.plain |= (unsigned)(plain_org & trace_scene_plain(p->dir[r])) << r;
 #if ISECT_PAIR_SSE
-        /* A finite, non-zero origin is finite: the rare other one is read
-         * again. */
-        if (!plain_org)
-            odd |= not_finite(p->org[r][0]) | not_finite(p->org[r][1]) |
-                   not_finite(p->org[r][2]);
+        /* Without packet_init's masks: x - x is +0.0 for a finite x and a
+         * NaN for an infinity or a NaN, so the sum over the origins'
+         * components stays 0 when all are finite. */
+        if (!at_once)
+            origin_probe += (p->org[r][0] - p->org[r][0]) + (p->org[r][1] - p->org[r][1]) +
+                            (p->org[r][2] - p->org[r][2]);
         /* lanes_by_box's rays across lanes (packet_init's already), and
          * its condition. */
         if (!at_once) {
@@ -481,7 +506,8 @@ static unsigned walk(const struct trace_scene *scene, const struct trace_packet 
         for (int a = 0; a < 3; a++)
             s.top.org[a][r] = s.top.inv_dir[a][r] = 0.0f;
     }
-    s.across = !odd && !(octants & (octants - 1u));
+    const int finite_origins = at_once ? finite_org == live : origin_probe == 0.0f;
+    s.across = finite_origins && !(octants & (octants - 1u));
     if (s.across && live)
         trace_scene_box_rows(&s.ray[first(live)], s.top.near_row, s.top.far_row);
 #else

@@ -34,28 +34,31 @@ static int usable_direction(const float d[3])
 
 void trace_instance_set_rows(struct trace_instance *inst, const double world_to_object[16])
 {
-    int identity = 1;
+    /* The exact kind bit for bit: a -0.0 in the rows can keep a -0.0
+     * that the +0.0 rows turn into +0.0 (trace_scene_plain_class). */
+    static const double one = 1.0, zero = 0.0;
+    int identity = 1, exact = 1;
     for (int r = 0; r < 3; r++)
         for (int c = 0; c < 4; c++) {
             const double v = world_to_object[4 * c + r];
             inst->world_to_object[4 * r + c] = v;
             identity &= v == (r == c ? 1.0 : 0.0);
+            exact &= memcmp(&v, r == c ? &one : &zero, sizeof(v)) == 0;
         }
-    inst->identity = (uint32_t)identity;
+    inst->identity = exact ? TRACE_IDENTITY_EXACT : identity ? TRACE_IDENTITY_ZEROS : 0u;
 }
 
 int trace_scene_object_ray(const struct trace_instance *inst, const float org[3],
                            const float dir[3], float tmin, const struct trace_ray *world,
                            struct trace_ray *o_ray)
 {
-    /* The identity's rows give back every finite, non-zero component as
-     * it is: to_object_space sums x * 1 with products 0 * y that are +-0
-     * for finite y, in double, and rounds to the float x again; and such
-     * a direction is usable.  So the ray is the world ray, set up, as the
+    /* The identity's rows give back the origin and direction of the
+     * classes trace_scene_plain_class names bit for bit, and such a
+     * direction is usable.  So the ray is the world ray, set up, as the
      * comparison below would find it, without the twelve products.  A
-     * zero (whose sign the sum may change) or an infinity (0 * inf is a
+     * zero whose sign the sum may change or an infinity (0 * inf is a
      * NaN) takes the general path. */
-    if (inst->identity && trace_scene_plain(org) && trace_scene_plain(dir)) {
+    if (inst->identity && (inst->identity & trace_scene_plain_class(org, dir))) {
         *o_ray = *world;
         return 1;
     }
@@ -100,21 +103,34 @@ struct top_state {
     const float *org;
     const float *dir;
     float tmin;
-    struct trace_ray ray; /* the world ray's set-up */
+    struct trace_ray ray; /* the world ray's set-up, once ray_ready */
+    int ray_ready;
     int any_hit;
     struct trace_scene_hit *hit;
     struct trace_scene_counters *counters;
     float best;
     float box_limit; /* as in traverse.c: widened once a hit is found */
     int found;
-    int plain; /* trace_scene_plain of org and of dir */
+    unsigned plain; /* trace_scene_plain_class of org and dir */
 };
+
+/* The world ray's set-up, made when first needed: a top level of one
+ * leaf over identity instances never needs it (walk). */
+static void world_ray(struct top_state *s)
+{
+    if (!s->ray_ready) {
+        /* A single ray: the set-up without branches (ray.c). */
+        trace_ray_init_single(&s->ray, s->org, s->dir, s->tmin);
+        s->ray_ready = 1;
+    }
+}
 
 /* A flattened hierarchy in slot `index` (flat_walk.h): the same answers
  * as its members visited as instances. */
 static int visit_group(struct top_state *s, const struct trace_instance *group)
 {
     const struct trace_scene *scene = s->scene;
+    world_ray(s);
     struct trace_flat flat;
     s->counters->instance_tests++;
     if (!scene->acquire_flat || !scene->acquire_flat(scene->user, group->object, &flat))
@@ -184,11 +200,13 @@ static int visit_instance(struct top_state *s, uint32_t index)
     if (!scene->acquire(scene->user, inst->object, &view))
         return 0;
     /* The object's ray: the world ray itself where the instance is the
-     * identity and the ray's components are finite and not zero (what
-     * trace_scene_object_ray would copy), without the copy. */
+     * identity and the ray is plain (what trace_scene_object_ray would
+     * copy), without the copy. */
     struct trace_ray o_copy;
     const struct trace_ray *o_ray = &s->ray;
-    if (!(inst->identity && s->plain)) {
+    const int handed_on = (inst->identity & s->plain) != 0;
+    if (!handed_on) {
+        world_ray(s);
         if (!trace_scene_object_ray(inst, s->org, s->dir, s->tmin, &s->ray, &o_copy))
             return 0;
         o_ray = &o_copy;
@@ -200,14 +218,22 @@ static int visit_instance(struct top_state *s, uint32_t index)
     /* The wide walk where the table has one and the object a wide
      * layout: the same answers (kernels.h). */
     const int wide = view.wide && view.wide->node_count && kernels->closest4;
+    /* The world ray handed on before anything set it up (a top level of
+     * one leaf, walk): the table's single-ray entries set it up inside
+     * the object's walk, the same ray bit for bit (kernels.h). */
+    const int direct = handed_on && !s->ray_ready && wide && kernels->closest1 && !filtered;
+    if (!direct)
+        world_ray(s);
     /* A ray reaches inside the object when its walk tests more boxes than
      * the root's (the root box for the binary walk, the root's children
      * for a wide one). */
     const uint64_t tests_before = counters->object.node_tests;
     if (s->any_hit && !filtered) {
-        int got = wide ? kernels->any4(view.wide, view.bvh, view.tri, o_ray, s->best,
-                                       &counters->object)
-                       : kernels->any(view.bvh, view.tri, o_ray, s->best, &counters->object);
+        int got = direct ? kernels->any1(view.wide, view.bvh, view.tri, s->org, s->dir, s->tmin,
+                                         s->best, &counters->object)
+                  : wide ? kernels->any4(view.wide, view.bvh, view.tri, o_ray, s->best,
+                                         &counters->object)
+                         : kernels->any(view.bvh, view.tri, o_ray, s->best, &counters->object);
         if (view.ray_count)
             trace_scene_count_rays(counters, view.ray_count, tests_before,
                                    wide ? view.wide->width : 1, 1);
@@ -216,9 +242,11 @@ static int visit_instance(struct top_state *s, uint32_t index)
     /* The tie rule is keep_hit's. */
     float limit = s->found ? isect_next_up(s->best) : s->best;
     struct trace_hit h;
-    int got = wide ? kernels->closest4(view.wide, view.bvh, view.tri, o_ray, limit, &h,
-                                       &counters->object)
-                   : kernels->closest(view.bvh, view.tri, o_ray, limit, &h, &counters->object);
+    int got = direct ? kernels->closest1(view.wide, view.bvh, view.tri, s->org, s->dir, s->tmin,
+                                         limit, &h, &counters->object)
+              : wide ? kernels->closest4(view.wide, view.bvh, view.tri, o_ray, limit, &h,
+                                         &counters->object)
+                     : kernels->closest(view.bvh, view.tri, o_ray, limit, &h, &counters->object);
     if (view.ray_count)
         trace_scene_count_rays(counters, view.ray_count, tests_before,
                                    wide ? view.wide->width : 1, 1);
@@ -445,16 +473,30 @@ static int walk(const struct trace_scene *scene, const float org[3], const float
     s.org = org;
     s.dir = dir;
     s.tmin = tmin;
-    /* One set-up per ray; instances with the identity matrix reuse it.
-     * A single ray: the set-up without branches (ray.c). */
-    trace_ray_init_single(&s.ray, org, dir, tmin);
-    s.plain = trace_scene_plain(org) & trace_scene_plain(dir);
+    s.plain = trace_scene_plain_class(org, dir);
     s.any_hit = any_hit;
     s.hit = hit;
     s.counters = counters;
     s.best = tmax;
     s.box_limit = tmax;
     s.found = 0;
+    s.ray_ready = 0;
+    /* A top level of one leaf (a scene of one instance): its box test
+     * would only repeat what each instance's walk tests, so a finite ray
+     * visits the leaf's instances at once, and an identity instance's
+     * object walk sets the ray up itself (visit_instance).  The box test
+     * culls, it never decides a hit: the same answers, without the world
+     * set-up, the top-level walk and its box test (RT_STAT_NODE_TESTS
+     * counts the tests made). */
+    const struct bvh_node *root = &top->nodes[0];
+    if (root->count && (s.plain & TRACE_IDENTITY_EXACT)) {
+        for (uint32_t i = 0; i < root->count; i++)
+            if (visit_instance(&s, top->prim_index[root->first + i]))
+                return 1;
+        return s.found;
+    }
+    /* One set-up per ray; instances with the identity matrix reuse it. */
+    world_ray(&s);
     const struct bvh4 *wide = scene->top_wide;
     if (wide && wide->node_count && s.kernels->wide_width &&
         (wide->width == 4 || wide->width == 8))

@@ -20,6 +20,10 @@
 #include <stdint.h>
 #include <string.h>
 
+#if defined(__SSE2__) && !defined(RT_NO_SIMD)
+#include <emmintrin.h>
+#endif
+
 #include "trace/kernels.h"
 #include "trace/trace.h"
 
@@ -38,11 +42,16 @@ struct trace_instance {
      * array, which no top-level leaf names (hits report them). */
     uint32_t member_base;
     uint32_t member_count;
-    /* 1 when world_to_object is exactly the identity (set by
-     * trace_instance_set_rows): trace_scene_object_ray then hands the
-     * world ray's set-up on without transforming it.  0 is always safe. */
+    /* Whether world_to_object's rows are the identity's (set by
+     * trace_instance_set_rows): TRACE_IDENTITY_EXACT when they are bit
+     * for bit (ones on the diagonal, +0.0 elsewhere), TRACE_IDENTITY_ZEROS
+     * when some zeros are -0.0, else 0.  trace_scene_object_ray then
+     * hands a ray that trace_scene_plain_class accepts for that kind on
+     * without transforming it.  0 is always safe. */
     uint32_t identity;
 };
+
+enum { TRACE_IDENTITY_ZEROS = 1, TRACE_IDENTITY_EXACT = 2 };
 
 /* world_to_object's rows from a column-major 4x4 inverse instance matrix
  * (OpenGL's order), and the identity flag. */
@@ -182,16 +191,68 @@ static inline int trace_scene_box_rows(const struct trace_ray *ray, int near_row
     return octant;
 }
 
-/* 1 when each of the three components is finite and not zero (a float
- * whose magnitude's bits, less one, are below those of FLT_MAX): for
- * such an origin and direction, an instance with the identity flag
- * gives trace_scene_object_ray the world ray itself. */
-static inline int trace_scene_plain(const float v[3])
+/*
+ * The kinds of identity instance (TRACE_IDENTITY_*, a mask) whose
+ * transform gives the origin and direction back bit for bit, so that
+ * trace_scene_object_ray hands the world ray on.  The transform
+ * (to_object_space) sums ((r0 x + r1 y) + r2 z) + r3 per row in double
+ * and rounds to float.  A finite non-zero component is the exact product
+ * 1 x, and adding zeros keeps it: both kinds.  A zero is a sum of zeros,
+ * -0.0 only when every term is: with the exact rows a +0.0 stays +0.0
+ * (the +0.0 of 1 x is among the terms), but a -0.0 may come back +0.0
+ * (the origin's last term, r3, is +0.0); with -0.0 in the rows a zero of
+ * either sign may change.  An infinity gives 0 inf, a NaN.  So: every
+ * component finite and not zero, both kinds; finite and none -0.0 (the
+ * direction not all zero, which is not usable and makes the instance
+ * skipped), the exact kind; else neither.  Camera rays from an eye on an
+ * axis (gluLookAt from (0, 0, 40)) are of the second class.  Read as
+ * bits: a magnitude below the infinity's bits is finite.
+ */
+static inline unsigned trace_scene_plain_class(const float org[3], const float dir[3])
 {
-    uint32_t a[3];
-    memcpy(a, v, sizeof(a));
-    return ((a[0] & 0x7fffffffu) - 1u < 0x7f7fffffu) & ((a[1] & 0x7fffffffu) - 1u < 0x7f7fffffu) &
-           ((a[2] & 0x7fffffffu) - 1u < 0x7f7fffffu);
+#if defined(__SSE2__) && !defined(RT_NO_SIMD)
+    /* The six components in two registers (a plain 1.0 in lane 3), the
+     * magnitudes' bits compared as integers.  First the common case,
+     * every component finite and not zero: the magnitude less one below
+     * FLT_MAX's bits, unsigned (the sign bit flipped for SSE2's signed
+     * compare). */
+    const __m128i o = _mm_castps_si128(_mm_setr_ps(org[0], org[1], org[2], 1.0f));
+    const __m128i d = _mm_castps_si128(_mm_setr_ps(dir[0], dir[1], dir[2], 1.0f));
+    const __m128i magnitude = _mm_set1_epi32(0x7fffffff);
+    const __m128i sign = _mm_set1_epi32((int)0x80000000u);
+    const __m128i one = _mm_set1_epi32(1);
+    const __m128i below = _mm_set1_epi32((int)(0x7f7fffffu ^ 0x80000000u));
+    const __m128i mo = _mm_and_si128(o, magnitude), md = _mm_and_si128(d, magnitude);
+    const __m128i nz = _mm_and_si128(
+        _mm_cmplt_epi32(_mm_xor_si128(_mm_sub_epi32(mo, one), sign), below),
+        _mm_cmplt_epi32(_mm_xor_si128(_mm_sub_epi32(md, one), sign), below));
+    if (_mm_movemask_ps(_mm_castsi128_ps(nz)) == 15)
+        return TRACE_IDENTITY_ZEROS | TRACE_IDENTITY_EXACT;
+    /* Else finite (the magnitudes, whose sign bit is clear, below the
+     * infinity's as signed integers), none -0.0, the direction not zero. */
+    const __m128i inf = _mm_set1_epi32(0x7f800000);
+    const __m128i finite = _mm_and_si128(_mm_cmplt_epi32(mo, inf), _mm_cmplt_epi32(md, inf));
+    const __m128i neg = _mm_or_si128(_mm_cmpeq_epi32(o, sign), _mm_cmpeq_epi32(d, sign));
+    const __m128i zero_d = _mm_cmpeq_epi32(md, _mm_setzero_si128());
+    const unsigned no_neg_zero =
+        _mm_movemask_ps(_mm_castsi128_ps(_mm_andnot_si128(neg, finite))) == 15;
+    const unsigned dir_not_zero = _mm_movemask_ps(_mm_castsi128_ps(zero_d)) != 7;
+    return (no_neg_zero & dir_not_zero) * TRACE_IDENTITY_EXACT;
+#else
+    uint32_t a[6];
+    memcpy(a, org, 3 * sizeof(float));
+    memcpy(&a[3], dir, 3 * sizeof(float));
+    unsigned finite = 1, nonzero = 1, no_neg_zero = 1;
+    for (int k = 0; k < 6; k++) {
+        const uint32_t m = a[k] & 0x7fffffffu;
+        finite &= m < 0x7f800000u;
+        nonzero &= m - 1u < 0x7f7fffffu;
+        no_neg_zero &= a[k] != 0x80000000u;
+    }
+    const unsigned dir_not_zero = (a[3] | a[4] | a[5]) != 0u;
+    return nonzero * (TRACE_IDENTITY_ZEROS | TRACE_IDENTITY_EXACT) |
+           (finite & no_neg_zero & dir_not_zero) * TRACE_IDENTITY_EXACT;
+#endif
 }
 
 int trace_scene_object_ray(const struct trace_instance *inst, const float org[3],

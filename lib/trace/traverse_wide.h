@@ -790,11 +790,13 @@ static inline void tri4_ray_init_lanes(struct tri4_ray *r, const struct ray_lane
     r->neg_y = (int)(neg >> 1 & 1u);
 }
 
-#define WIDE8_WALK1(name, walk, any_hit, leave_early)                                           \
+#define WIDE8_WALK1(name, walk, any_hit, stats, leave_early)                                    \
     static int name(const struct bvh4 *wide, const float org[3], const float dir[3],           \
-                    float tmin, float t_max, struct trace_hit *hit) WIDE_NOINLINE;              \
+                    float tmin, float t_max, struct trace_hit *hit,                             \
+                    struct trace_counters *counters) WIDE_NOINLINE;                             \
     static int name(const struct bvh4 *wide, const float org[3], const float dir[3],           \
-                    float tmin, float t_max, struct trace_hit *hit)                             \
+                    float tmin, float t_max, struct trace_hit *hit,                             \
+                    struct trace_counters *counters)                                            \
     {                                                                                           \
         struct trace_ray ray;                                                                   \
         struct ray_lanes lanes;                                                                 \
@@ -803,13 +805,24 @@ static inline void tri4_ray_init_lanes(struct tri4_ray *r, const struct ray_lane
         wide_state_init(&s, &ray, t_max, any_hit, hit);                                         \
         if (any_hit)                                                                            \
             tri4_ray_init_lanes(&s.r4, &lanes, tmin);                                           \
-        const int done = walk(wide, &s, any_hit, 0, leave_early, &lanes);                       \
+        const int done = walk(wide, &s, any_hit, stats, leave_early, &lanes);                   \
+        if (stats) {                                                                            \
+            counters->node_tests += s.node_tests;                                               \
+            counters->triangle_tests += s.triangle_tests;                                       \
+        }                                                                                       \
+        (void)counters;                                                                         \
         return any_hit ? done : s.found;                                                        \
     }
 
-WIDE8_WALK1(wide8_walk1_closest_leaf8, walk_wide8_ray_leaf8, 0, 0)
-WIDE8_WALK1(wide8_walk1_closest_early_leaf8, walk_wide8_ray_leaf8, 0, 1)
-WIDE8_WALK1(wide8_walk1_any_leaf8, walk_wide8_ray_leaf8, 1, 1)
+WIDE8_WALK1(wide8_walk1_closest_leaf8, walk_wide8_ray_leaf8, 0, 0, 0)
+WIDE8_WALK1(wide8_walk1_closest_early_leaf8, walk_wide8_ray_leaf8, 0, 0, 1)
+WIDE8_WALK1(wide8_walk1_any_leaf8, walk_wide8_ray_leaf8, 1, 0, 1)
+/* With counters: the two-level walk's rays that reach an identity
+ * instance's object without a world set-up (scene_traverse.c, a top
+ * level of one leaf), counted as the walks above count. */
+WIDE8_WALK1(wide8_walk1_closest_leaf8_stats, walk_wide8_ray_leaf8, 0, 1, 0)
+WIDE8_WALK1(wide8_walk1_closest_early_leaf8_stats, walk_wide8_ray_leaf8, 0, 1, 1)
+WIDE8_WALK1(wide8_walk1_any_leaf8_stats, walk_wide8_ray_leaf8, 1, 1, 1)
 
 /*
  * The leaf of the 8-wide walks on its own, for
@@ -994,7 +1007,7 @@ static int walk_wide_single1_other(const struct bvh4 *wide, const struct bvh *bv
 }
 
 /* The entries' choice of walk.  The cases without an 8-wide walk of
- * their own (counters, a 4-wide or binary layout) are a function apart
+ * their own (a 4-wide or binary layout) are a function apart
  * (walk_wide_single1_other): with their set-up inlined here, the entry
  * had a frame of its own (its trace_ray, 32-byte aligned), 31
  * instructions a ray before and after the walk's call instead of a
@@ -1008,12 +1021,20 @@ static inline int walk_wide_single1(const struct bvh4 *wide, const struct bvh *b
                                     struct trace_counters *counters)
 {
 #if defined(__AVX__)
-    if (!counters && wide->width == 8 && wide->node_count) {
+    if (wide->width == 8 && wide->node_count) {
+        if (counters) {
+            if (any_hit)
+                return wide8_walk1_any_leaf8_stats(wide, org, dir, tmin, t_max, hit, counters);
+            if (wide->prefetch_top)
+                return wide8_walk1_closest_early_leaf8_stats(wide, org, dir, tmin, t_max, hit,
+                                                             counters);
+            return wide8_walk1_closest_leaf8_stats(wide, org, dir, tmin, t_max, hit, counters);
+        }
         if (any_hit)
-            return wide8_walk1_any_leaf8(wide, org, dir, tmin, t_max, hit);
+            return wide8_walk1_any_leaf8(wide, org, dir, tmin, t_max, hit, NULL);
         if (wide->prefetch_top)
-            return wide8_walk1_closest_early_leaf8(wide, org, dir, tmin, t_max, hit);
-        return wide8_walk1_closest_leaf8(wide, org, dir, tmin, t_max, hit);
+            return wide8_walk1_closest_early_leaf8(wide, org, dir, tmin, t_max, hit, NULL);
+        return wide8_walk1_closest_leaf8(wide, org, dir, tmin, t_max, hit, NULL);
     }
 #endif
     return walk_wide_single1_other(wide, bvh, tri, org, dir, tmin, t_max, any_hit, hit,
