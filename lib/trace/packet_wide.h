@@ -35,8 +35,13 @@
 
 /* A leaf is tested with the eight-ray triangle test (packet_tri8.h) when
  * at least this many of its rays share the first ray's kx, ky, kz;
- * otherwise, and for the other rays, ray by ray (wide_leaf). */
-#define PACKET_TRI8_MIN 3
+ * otherwise, and for the other rays, ray by ray (wide_leaf).  Measured
+ * (docs/performance-log.md, kpk): two rays take fewer instructions in
+ * the lanes than each through wide_leaf with its state's set-up and
+ * sync (bumpy's camera packets meet 1.1 two-ray leaves a packet; every
+ * packet set 0.5-2.8 % fewer instructions than at 3); one ray takes
+ * more (bumpy +1.5 %). */
+#define PACKET_TRI8_MIN 2
 
 /* A one-origin packet's leaf child takes no test per ray where the beam,
  * this many times over, is narrower than the leaves' mean size
