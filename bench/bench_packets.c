@@ -9,7 +9,8 @@
  * times); "packets": closest_packet/any_packet over groups of eight
  * consecutive rays (a row of eight pixels for primary rays; the shadow
  * rays of consecutive primary hits, sharing the point light), the hybrid
- * threshold at TRACE_PACKET_HYBRID.  Embree: rtcIntersect1/rtcOccluded1
+ * threshold at TRACE_PACKET_HYBRID, each group's rays set up by the
+ * table's packet_init as the library's packet path does.  Embree: rtcIntersect1/rtcOccluded1
  * and rtcIntersect8/rtcOccluded8 (coherent flag) over the same groups, a
  * MEDIUM scene.  Runs are interleaved (single, packets, Embree 1, Embree
  * 8, for each thread count) and each figure is the median; the packets'
@@ -43,9 +44,27 @@ struct packet_ctx {
     unsigned hybrid;
 };
 
-static void set_up(const RTray *rays, uint32_t g, uint32_t n, struct trace_ray *ray,
-                   float *t_max)
+/* The rays of a group set up as the library's packet path sets them up
+ * (packet_scene.c: the table's packet_init, eight rays at a time, the
+ * same bits as trace_ray_init's), or ray by ray in a table without it. */
+static void set_up(const struct trace_kernels *k, const RTray *rays, uint32_t g, uint32_t n,
+                   struct trace_ray *ray, float *t_max)
 {
+    if (k->packet_init) {
+        float org[TRACE_PACKET][3], dir[TRACE_PACKET][3], tmin[TRACE_PACKET];
+        struct trace_top_rays top;
+        for (uint32_t j = 0; j < n; j++) {
+            const RTray *r = &rays[g + j];
+            memcpy(org[j], r->org, sizeof(org[j]));
+            memcpy(dir[j], r->dir, sizeof(dir[j]));
+            tmin[j] = r->tmin;
+            t_max[j] = r->tmax;
+        }
+        struct trace_packet_plain plain; /* the two-level walk's; unused here */
+        k->packet_init((const float(*)[3])org, (const float(*)[3])dir, tmin, (1u << n) - 1u, ray,
+                       &top, &plain);
+        return;
+    }
     for (uint32_t j = 0; j < n; j++) {
         const RTray *r = &rays[g + j];
         trace_ray_init(&ray[j], r->org, r->dir, r->tmin);
@@ -64,7 +83,7 @@ static void kernel_closest_packets(void *ctx, const RTray *rays, uint32_t begin,
         struct trace_ray ray[TRACE_PACKET];
         float t_max[TRACE_PACKET];
         struct trace_hit h[TRACE_PACKET];
-        set_up(rays, g, n, ray, t_max);
+        set_up(k, rays, g, n, ray, t_max);
         const unsigned found = k->closest_packet(&acc->wide, &acc->bvh, acc->tri, ray, t_max,
                                                  (1u << n) - 1u, pc->hybrid, h, NULL);
         for (uint32_t j = 0; j < n; j++) {
@@ -84,7 +103,7 @@ static void kernel_any_packets(void *ctx, const RTray *rays, uint32_t begin, uin
         const uint32_t n = end - g < TRACE_PACKET ? end - g : TRACE_PACKET;
         struct trace_ray ray[TRACE_PACKET];
         float t_max[TRACE_PACKET];
-        set_up(rays, g, n, ray, t_max);
+        set_up(k, rays, g, n, ray, t_max);
         const unsigned occ = k->any_packet(&acc->wide, &acc->bvh, acc->tri, ray, t_max,
                                            (1u << n) - 1u, pc->hybrid, NULL);
         for (uint32_t j = 0; j < n; j++) {

@@ -25,6 +25,30 @@
 #include "trace/packet.h"
 #include "trace/packet_tri8.h"
 
+#if !defined(RT_TRACE_PACKET_INIT_SOA3)
+#define RT_TRACE_PACKET_INIT_SOA3
+/* Eight rays' 3-vectors (v[r][k], 24 consecutive floats) across lanes:
+ * out[k] lane r = v[r][k], bit for bit.  Float 3r + k lies in row
+ * (3r + k) / 8 at position (3r + k) % 8; for one k the three rows' sets
+ * of positions are disjoint, so two blends gather the eight values into
+ * one register and a lane permutation puts ray r in lane r. */
+static inline void packet_init_soa3(const float (*v)[3], __m256 out[3])
+{
+    const float *f = &v[0][0];
+    const __m256 r0 = _mm256_loadu_ps(f), r1 = _mm256_loadu_ps(f + 8),
+                 r2 = _mm256_loadu_ps(f + 16);
+    /* x: rows 0, 1, 2 at positions {0, 3, 6}, {1, 4, 7}, {2, 5}. */
+    const __m256 x = _mm256_blend_ps(_mm256_blend_ps(r0, r1, 0x92), r2, 0x24);
+    /* y: {1, 4, 7}, {2, 5}, {0, 3, 6}. */
+    const __m256 y = _mm256_blend_ps(_mm256_blend_ps(r0, r1, 0x24), r2, 0x49);
+    /* z: {2, 5}, {0, 3, 6}, {1, 4, 7}. */
+    const __m256 z = _mm256_blend_ps(_mm256_blend_ps(r0, r1, 0x49), r2, 0x92);
+    out[0] = _mm256_permutevar8x32_ps(x, _mm256_setr_epi32(0, 3, 6, 1, 4, 7, 2, 5));
+    out[1] = _mm256_permutevar8x32_ps(y, _mm256_setr_epi32(1, 4, 7, 2, 5, 0, 3, 6));
+    out[2] = _mm256_permutevar8x32_ps(z, _mm256_setr_epi32(2, 5, 0, 3, 6, 1, 4, 7));
+}
+#endif
+
 /* The set-up from the rays across lanes (o0-o2 the origins' x, y, z,
  * d0-d2 the directions', tv the tmins: ray r in lane r), for
  * TRACE_PACKET_INIT and the object-space rays of packet_xform.h:
@@ -110,6 +134,16 @@ static inline void packet_init_lanes(__m256 o0, __m256 o1, __m256 o2, __m256 d0,
     __m256 lo[8], hi[8];
     tri8_transpose8(lo_rows, lo);
     tri8_transpose8(hi_rows, hi);
+    if (live == 0xffu) {
+        /* A full packet: each ray's two halves at constant offsets (no
+         * loop over the bits, no transposed rows through the stack). */
+        float *f = (float *)(void *)rays;
+        for (int r = 0; r < 8; r++) {
+            _mm256_storeu_ps(f + 16 * r, lo[r]);
+            _mm256_storeu_ps(f + 16 * r + 8, hi[r]);
+        }
+        return;
+    }
     for (unsigned m = live; m; m &= m - 1u) {
         const int r = __builtin_ctz(m);
         float *f = (float *)(void *)&rays[r];
@@ -163,19 +197,31 @@ static void TRACE_PACKET_INIT(const float (*org)[3], const float (*dir)[3], cons
 {
     /* The live rays across lanes; the others hold an origin of zeros and
      * a direction of ones, so that nothing below divides by zero. */
-    float o[3][8] __attribute__((aligned(32)));
-    float d[3][8] __attribute__((aligned(32)));
-    float t[8] __attribute__((aligned(32)));
-    for (int r = 0; r < 8; r++) {
-        const int in = live >> r & 1u;
-        for (int k = 0; k < 3; k++) {
-            o[k][r] = in ? org[r][k] : 0.0f;
-            d[k][r] = in ? dir[r][k] : 1.0f;
+    __m256 ov[3], dv[3], tv;
+    if (live == 0xffu) {
+        /* A full packet (every camera packet of a tile): the same bits
+         * by three loads and a 3 x 8 transpose per array. */
+        packet_init_soa3(org, ov);
+        packet_init_soa3(dir, dv);
+        tv = _mm256_loadu_ps(tmin);
+    } else {
+        float o[3][8] __attribute__((aligned(32)));
+        float d[3][8] __attribute__((aligned(32)));
+        float t[8] __attribute__((aligned(32)));
+        for (int r = 0; r < 8; r++) {
+            const int in = live >> r & 1u;
+            for (int k = 0; k < 3; k++) {
+                o[k][r] = in ? org[r][k] : 0.0f;
+                d[k][r] = in ? dir[r][k] : 1.0f;
+            }
+            t[r] = in ? tmin[r] : 0.0f;
         }
-        t[r] = in ? tmin[r] : 0.0f;
+        for (int k = 0; k < 3; k++) {
+            ov[k] = _mm256_load_ps(o[k]);
+            dv[k] = _mm256_load_ps(d[k]);
+        }
+        tv = _mm256_load_ps(t);
     }
-    const __m256 ov[3] = {_mm256_load_ps(o[0]), _mm256_load_ps(o[1]), _mm256_load_ps(o[2])};
-    const __m256 dv[3] = {_mm256_load_ps(d[0]), _mm256_load_ps(d[1]), _mm256_load_ps(d[2])};
     packet_plain_masks(ov, dv, live, plain);
-    packet_init_lanes(ov[0], ov[1], ov[2], dv[0], dv[1], dv[2], _mm256_load_ps(t), live, rays, top);
+    packet_init_lanes(ov[0], ov[1], ov[2], dv[0], dv[1], dv[2], tv, live, rays, top);
 }

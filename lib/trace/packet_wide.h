@@ -35,8 +35,13 @@
 
 /* A leaf is tested with the eight-ray triangle test (packet_tri8.h) when
  * at least this many of its rays share the first ray's kx, ky, kz;
- * otherwise, and for the other rays, ray by ray (wide_leaf). */
-#define PACKET_TRI8_MIN 3
+ * otherwise, and for the other rays, ray by ray (wide_leaf).  Measured
+ * (docs/performance-log.md, kpk): two rays take fewer instructions in
+ * the lanes than each through wide_leaf with its state's set-up and
+ * sync (bumpy's camera packets meet 1.1 two-ray leaves a packet; every
+ * packet set 0.5-2.8 % fewer instructions than at 3); one ray takes
+ * more (bumpy +1.5 %). */
+#define PACKET_TRI8_MIN 2
 
 /* A one-origin packet's leaf child takes no test per ray where the beam,
  * this many times over, is narrower than the leaves' mean size
@@ -94,6 +99,7 @@ struct packet_state {
     /* The interval walk (packet_walk8_ia): the packet's bounds per axis
      * (broadcast), and the rays in the lanes for the leaf boxes. */
     __m256 ia_o_near[3], ia_o_far[3], ia_i_lo[3], ia_i_hi[3], ia_tmin;
+    __m256 ia_i_near[3]; /* i_lo (inv > 0) or i_hi (inv < 0): packet_ia_init */
     __m256 lane_f[TRI8_F_COUNT]; /* the rays' fields in the lanes (tri8_lanes_load) */
     int ia_masks; /* rays from more than one origin: see packet_walk8_ia */
     float ia_leaf_t; /* a leaf child entered before this takes no lane test (packet_ia_init) */
@@ -253,11 +259,15 @@ static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_pa
     }
     float *limit = p->limit;
     unsigned done = 0;
-    for (uint32_t j = 0; j < count && rays; j += 4) {
+    /* Only an any-hit ray leaves `rays` (packet_take_hit returns 1 for
+     * it alone); a closest-hit leaf keeps all its rays, so its loops do
+     * not test for an empty packet (measured, docs/performance-log.md,
+     * kpk: -0.5 to -1.8 % of the kernel's instructions a ray). */
+    for (uint32_t j = 0; j < count && (!any_hit || rays); j += 4) {
         const struct tri4_packet *q = &packets[first + j / 4];
         const uint32_t n = count - j < 4 ? count - j : 4;
         p->triangle_tests += n * (unsigned)__builtin_popcount(rays);
-        for (uint32_t l = 0; l < n && rays; l++) {
+        for (uint32_t l = 0; l < n && (!any_hit || rays); l++) {
             struct tri8_result res;
             if (!tri8_test(&p->t8, q, l, rays, _mm256_loadu_ps(limit), any_hit, &res))
                 continue;
@@ -564,7 +574,8 @@ static inline float packet_hmax(__m256 v)
 /*
  * Sets up the interval walk when it applies: every active ray in one
  * octant, with finite non-zero inverse directions, finite origins and
- * tmin not NaN.  Returns 0 otherwise (the packet takes packet_walk).
+ * tmin >= 0 (not NaN).  Returns 0 otherwise (the packet takes
+ * packet_walk).
  *
  * Per axis k, with the octant's near and far rows shared by all rays,
  * the interval test bounds every ray's own slab distances
@@ -580,6 +591,18 @@ static inline float packet_hmax(__m256 v)
  * child gives +-inf), and max, min and the far scale are monotone, so the
  * packet's entry bound is at most each ray's entry, its exit bound at
  * least each ray's exit: a child that one ray's own test enters passes.
+ *
+ * The near distance takes one product, fl(d * i_lo) (inv > 0) or
+ * fl(d * i_hi) (inv < 0), instead of the smaller of the two: that is the
+ * smaller where d * inv >= 0, and where d * inv < 0 (the origins past
+ * the child's near plane) both products are <= 0 <= tmin <= the entry
+ * bound it is folded into by max, which returns that bound either way
+ * (maxps returns its second operand on equal values, so even the sign of
+ * a zero is kept).  So the entry bound is the same bits as with both
+ * products (the walk visits the same nodes), for one multiply and one
+ * min fewer per axis.  Measured (docs/performance-log.md, kpk): the
+ * packet kernel's instructions a ray -1.0 % on the kitchen's and bumpy's
+ * camera packets.
  */
 static inline int packet_ia_init(struct packet_state *p, const struct trace_ray *rays,
                                  unsigned active, const __m256 f_min[2], const __m256 f_max[2],
@@ -620,11 +643,12 @@ static inline int packet_ia_init(struct packet_state *p, const struct trace_ray 
         p->ia_o_far[k] = neg ? o_hi : o_lo;
         p->ia_i_lo[k] = _mm256_permutevar8x32_ps(f_min[fi / 8], at_i);
         p->ia_i_hi[k] = _mm256_permutevar8x32_ps(f_max[fi / 8], at_i);
+        p->ia_i_near[k] = neg ? p->ia_i_hi[k] : p->ia_i_lo[k];
         p->ia_row_near[k] = (neg ? 3 + k : k) * (int)sizeof(((struct bvh8_node *)0)->bounds[0]);
         p->ia_row_far[k] = (neg ? k : 3 + k) * (int)sizeof(((struct bvh8_node *)0)->bounds[0]);
     }
     const __m256 tmin = p->lane_f[TRI8_F_TMIN];
-    ok = _mm256_and_ps(ok, _mm256_cmp_ps(tmin, tmin, _CMP_ORD_Q));
+    ok = _mm256_and_ps(ok, _mm256_cmp_ps(tmin, _mm256_setzero_ps(), _CMP_GE_OQ));
     if ((unsigned)_mm256_movemask_ps(ok) != 0xffu)
         return 0;
     /* Rays from more than one origin: o_lo != o_hi on an axis. */
@@ -806,8 +830,8 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                                                 p->ia_o_near[k]);
                 const __m256 df = _mm256_sub_ps(_mm256_load_ps(wide_row(n->bounds, far_row[k])),
                                                 p->ia_o_far[k]);
-                const __m256 tn = _mm256_min_ps(_mm256_mul_ps(dn, p->ia_i_lo[k]),
-                                                _mm256_mul_ps(dn, p->ia_i_hi[k]));
+                /* One product for the near end (packet_ia_init). */
+                const __m256 tn = _mm256_mul_ps(dn, p->ia_i_near[k]);
                 const __m256 tf = _mm256_max_ps(_mm256_mul_ps(df, p->ia_i_lo[k]),
                                                 _mm256_mul_ps(df, p->ia_i_hi[k]));
                 t0 = _mm256_max_ps(tn, t0);

@@ -42,30 +42,6 @@
 
 #include "trace/packet.h"
 
-/* Eight consecutive float triples v[0..7][3] across lanes: x[r] = v[r][0]
- * and so on.  Per 128-bit half (rays 0-3 from the first 12 floats, 4-7
- * from the next 12) the chunks A = x0 y0 z0 x1, B = y1 z1 x2 y2,
- * C = z2 x3 y3 z3 give x = A0 A3 B2 C1, y = A1 B0 B3 C2, z = A2 B1 C0 C3,
- * which five two-source shuffles assemble. */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline void packet_xform_soa(const float (*v)[3], __m256 out[3])
-{
-    const float *f = &v[0][0];
-    const __m256 a = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(f)),
-                                          _mm_loadu_ps(f + 12), 1);
-    const __m256 b = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(f + 4)),
-                                          _mm_loadu_ps(f + 16), 1);
-    const __m256 c = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(f + 8)),
-                                          _mm_loadu_ps(f + 20), 1);
-    const __m256 bc = _mm256_shuffle_ps(b, c, _MM_SHUFFLE(2, 1, 3, 2)); /* x2 y2 x3 y3 */
-    const __m256 ab = _mm256_shuffle_ps(a, b, _MM_SHUFFLE(1, 0, 2, 1)); /* y0 z0 y1 z1 */
-    out[0] = _mm256_shuffle_ps(a, bc, _MM_SHUFFLE(2, 0, 3, 0));
-    out[1] = _mm256_shuffle_ps(ab, bc, _MM_SHUFFLE(3, 1, 2, 0));
-    out[2] = _mm256_shuffle_ps(ab, c, _MM_SHUFFLE(3, 0, 3, 1));
-}
-
 /*
  * The rays of mask `rays` (org[r], dir[r], tmin[r]; all TRACE_PACKET
  * entries of each array are read, those of the other rays ignored) in
@@ -79,8 +55,9 @@ static unsigned TRACE_PACKET_XFORM(const double m[12], const float (*org)[3],
                                    struct trace_ray o_ray[TRACE_PACKET])
 {
     __m256 o[3], d[3], ov[3], dv[3];
-    packet_xform_soa(org, o);
-    packet_xform_soa(dir, d);
+    /* Across lanes as packet_init_soa3 (packet_init.h) puts them. */
+    packet_init_soa3(org, o);
+    packet_init_soa3(dir, d);
     /* Four rays a register, the low and high halves in turn. */
     __m128 oh[2][3], dh[2][3];
     for (int h = 0; h < 2; h++) {
