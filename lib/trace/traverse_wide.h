@@ -649,6 +649,21 @@ static const uint8_t wide8_rows[8][6] = {WIDE8_ROWS(0, 0, 0), WIDE8_ROWS(1, 0, 0
 #undef WIDE8_RAY
 #undef WIDE8_RAY_LEAF8
 
+/* The end of a whole single-ray walk (WIDE8_WALK, WIDE8_WALK1): its
+ * counts added to the caller's when the copy counts, and its answer. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline int wide8_walk_end(const struct wide_state *s, int done, int any_hit, int stats,
+                                 struct trace_counters *counters)
+{
+    if (stats) {
+        counters->node_tests += s->node_tests;
+        counters->triangle_tests += s->triangle_tests;
+    }
+    return any_hit ? done : s->found;
+}
+
 /* The whole single-ray trace over an 8-wide layout, the state set up
  * here: the entry (walk_wide) is then a dispatch and a jump. */
 #define WIDE8_WALK(name, walk, any_hit, stats, leave_early)                                     \
@@ -662,12 +677,7 @@ static const uint8_t wide8_rows[8][6] = {WIDE8_ROWS(0, 0, 0), WIDE8_ROWS(1, 0, 0
         if (any_hit)                                                                            \
             tri4_ray_init(&s.r4, ray);                                                          \
         const int done = walk(wide, &s, any_hit, stats, leave_early, NULL);                     \
-        if (stats) {                                                                            \
-            counters->node_tests += s.node_tests;                                               \
-            counters->triangle_tests += s.triangle_tests;                                       \
-        }                                                                                       \
-        (void)counters;                                                                         \
-        return any_hit ? done : s.found;                                                        \
+        return wide8_walk_end(&s, done, any_hit, stats, counters);                              \
     }
 
 /* The closest-hit walk in two copies: with the packet filter's early
@@ -806,12 +816,7 @@ static inline void tri4_ray_init_lanes(struct tri4_ray *r, const struct ray_lane
         if (any_hit)                                                                            \
             tri4_ray_init_lanes(&s.r4, &lanes, tmin);                                           \
         const int done = walk(wide, &s, any_hit, stats, leave_early, &lanes);                   \
-        if (stats) {                                                                            \
-            counters->node_tests += s.node_tests;                                               \
-            counters->triangle_tests += s.triangle_tests;                                       \
-        }                                                                                       \
-        (void)counters;                                                                         \
-        return any_hit ? done : s.found;                                                        \
+        return wide8_walk_end(&s, done, any_hit, stats, counters);                              \
     }
 
 WIDE8_WALK1(wide8_walk1_closest_leaf8, walk_wide8_ray_leaf8, 0, 0, 0)
