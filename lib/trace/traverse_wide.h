@@ -135,9 +135,9 @@ static inline int wide_packet_test(struct wide_state *s, const struct tri4_packe
          * one the ray leaves behind at once) is refused without it: the
          * finish clamps its t into the box (isect_clamp_to_box returns a
          * value at most t_hi, or t_lo) and refuses a clamped t below
-         * tmin.  The kitchen's walls
-         * and boxes: 3 % of its shadow rays' instructions.  With
-         * depth_out only (the single-ray walks' leaves). */
+         * tmin.  The kitchen's walls and boxes: 3 % of its shadow rays'
+         * instructions.  With depth_out only (the single-ray walks'
+         * any-hit leaves, WIDE8_LEAF_TEST below). */
         const __m128 tmin = s->r4.tmin;
         unsigned near =
             (unsigned)_mm_movemask_ps(_mm_cmplt_ps(_mm_loadu_ps(lanes.t_lo), tmin)) & mask;
@@ -632,6 +632,11 @@ static inline int walk_wide8(const struct bvh4 *wide, struct wide_state *s, uint
  *   inlined walks' frames and a second copy of the packet test's
  *   constants).
  */
+/* depth_out: the any-hit leaves' extra refusals (the filter's second
+ * early return on depth, tri4_filter_lanes_depth, and the near lanes
+ * behind tmin, wide_packet_test); only the single-ray any-hit leaves
+ * take them, so that the closest-hit leaves, the packet kernels and the
+ * 4-wide walks compile as before. */
 #define WIDE8_LEAF_TEST(name, test, any_hit, early_out, depth_out)                               \
     static int name(struct wide_state *s, const struct tri4_packet *p, uint32_t n) WIDE_NOINLINE; \
     static int name(struct wide_state *s, const struct tri4_packet *p, uint32_t n)                \
