@@ -488,28 +488,21 @@ static int centroids_coincide(const struct cbounds *cb)
     return !(cb->hi[0] > cb->lo[0]) && !(cb->hi[1] > cb->lo[1]) && !(cb->hi[2] > cb->lo[2]);
 }
 
-int build_binned_sah_forms(struct bvh *out, const struct aabb *prim_boxes, uint32_t prim_count,
-                           const struct bvh_build_params *params, int simd)
+int build_binned_sah_refs(struct bvh_node *nodes, struct build_ref *refs, uint32_t prim_count,
+                          const struct bvh_build_params *params, int simd, uint32_t *node_count_out,
+                          uint32_t *depth_out)
 {
 #if !defined(BUILD_BINNED_UNIT_AVX2)
     /* The same source compiled for AVX2, where it runs
      * (build_binned_sah_avx2.c): the same tree in fewer instructions. */
-    const build_binned_fn avx2 = simd ? accel_build_binned_sah_avx2_unit() : NULL;
+    const build_binned_refs_fn avx2 = simd ? build_binned_sah_refs_avx2_unit() : NULL;
     if (avx2)
-        return avx2(out, prim_boxes, prim_count, params);
+        return avx2(nodes, refs, prim_count, params, simd, node_count_out, depth_out);
 #endif
-    struct bvh_build_params p;
-    int start = accel_build_begin(out, &p, params, prim_count);
-    if (start <= 0)
-        return start;
-    struct build_ref *refs = rt_realloc_array(NULL, prim_count, sizeof(*refs));
+    const struct bvh_build_params p = *params;
     struct bins *bins = rt_malloc(sizeof(*bins));
-    if (!refs || !bins) {
-        rt_free(refs);
-        rt_free(bins);
-        bvh_release(out);
+    if (!bins)
         return -1;
-    }
 
     const build_fill_bins_fn fill = simd ? build_fill_bins_best() : build_fill_bins;
     const build_partition_fn partition_avx2 = simd ? build_partition_avx2_unit() : NULL;
@@ -517,11 +510,9 @@ int build_binned_sah_forms(struct bvh *out, const struct aabb *prim_boxes, uint3
     char *bin_count_base = (char *)bins->count;
     struct task stack[BUILD_STACK_SIZE];
     struct task *t = &stack[0];
-    for (uint32_t i = 0; i < prim_count; i++)
-        build_ref_set(&refs[i], &prim_boxes[i], i);
     struct aabb root_box;
     range_bounds(refs, 0, prim_count, &root_box, &t->cb);
-    build_set_box(&out->nodes[0], &root_box);
+    build_set_box(&nodes[0], &root_box);
     t->r.begin = 0;
     t->r.end = prim_count;
     t->r.node = 0;
@@ -533,7 +524,7 @@ int build_binned_sah_forms(struct bvh *out, const struct aabb *prim_boxes, uint3
     const uint32_t max_leaf = (uint32_t)p.max_leaf_size;
     while (sp > 0) {
         struct task task = stack[--sp];
-        struct bvh_node *node = &out->nodes[task.r.node];
+        struct bvh_node *node = &nodes[task.r.node];
         uint32_t n = task.r.end - task.r.begin;
         if (task.r.depth > max_depth)
             max_depth = task.r.depth;
@@ -606,17 +597,50 @@ int build_binned_sah_forms(struct bvh *out, const struct aabb *prim_boxes, uint3
             range_bounds(refs, mid, task.r.end, &right_box, &right.cb);
         }
 
-        build_split(out->nodes, &task.r, mid, &left_box, &right_box, &node_count, &left.r,
+        build_split(nodes, &task.r, mid, &left_box, &right_box, &node_count, &left.r,
                     &right.r);
         /* Right first, so the left subtree is numbered (and built) first. */
         stack[sp++] = right;
         stack[sp++] = left;
     }
 
+    rt_free(bins);
+    *node_count_out = node_count;
+    *depth_out = max_depth;
+    return 0;
+}
+
+int build_binned_sah_forms(struct bvh *out, const struct aabb *prim_boxes, uint32_t prim_count,
+                           const struct bvh_build_params *params, int simd)
+{
+#if !defined(BUILD_BINNED_UNIT_AVX2)
+    /* The whole build in the AVX2 copy where it runs: the refs' set-up
+     * and prim_index loops too. */
+    const build_binned_fn avx2 = simd ? accel_build_binned_sah_avx2_unit() : NULL;
+    if (avx2)
+        return avx2(out, prim_boxes, prim_count, params);
+#endif
+    struct bvh_build_params p;
+    int start = accel_build_begin(out, &p, params, prim_count);
+    if (start <= 0)
+        return start;
+    struct build_ref *refs = rt_realloc_array(NULL, prim_count, sizeof(*refs));
+    if (!refs) {
+        bvh_release(out);
+        return -1;
+    }
+    for (uint32_t i = 0; i < prim_count; i++)
+        build_ref_set(&refs[i], &prim_boxes[i], i);
+    uint32_t node_count;
+    uint32_t max_depth;
+    if (build_binned_sah_refs(out->nodes, refs, prim_count, &p, simd, &node_count, &max_depth)) {
+        rt_free(refs);
+        bvh_release(out);
+        return -1;
+    }
     for (uint32_t i = 0; i < prim_count; i++)
         out->prim_index[i] = build_ref_id(&refs[i]);
     rt_free(refs);
-    rt_free(bins);
     accel_build_finish(out, node_count, max_depth);
     return 0;
 }

@@ -19,6 +19,7 @@
 #define BUILD_BINNED_UNIT_AVX2 1
 #define accel_build_binned_sah accel_build_binned_sah_avx2
 #define build_binned_sah_forms build_binned_sah_forms_avx2
+#define build_binned_sah_refs build_binned_sah_refs_avx2
 
 #include "accel/build_binned_sah.c"
 
@@ -26,8 +27,18 @@ build_binned_fn accel_build_binned_sah_avx2_unit(void)
 {
     return build_cpu_runs_avx2() ? accel_build_binned_sah_avx2 : NULL;
 }
+
+build_binned_refs_fn build_binned_sah_refs_avx2_unit(void)
+{
+    return build_cpu_runs_avx2() ? build_binned_sah_refs_avx2 : NULL;
+}
 #else
 build_binned_fn accel_build_binned_sah_avx2_unit(void)
+{
+    return NULL;
+}
+
+build_binned_refs_fn build_binned_sah_refs_avx2_unit(void)
 {
     return NULL;
 }

@@ -167,6 +167,31 @@ build_binned_fn accel_build_binned_sah_avx2_unit(void);
 int build_binned_sah_forms(struct bvh *out, const struct aabb *prim_boxes, uint32_t prim_count,
                            const struct bvh_build_params *params, int simd);
 
+/*
+ * The binned SAH build of refs[0, prim_count) (prim_count >= 1, refs set
+ * by build_ref_set) in place: the refs end in leaf order, the nodes are
+ * written from nodes[0] (the root) on, at most 2 prim_count - 1 of them,
+ * and *node_count and *depth (counted from the root) are set.  params
+ * must be normalized (accel_build_params_normalize).  The tree depends
+ * on the refs' boxes and order only, and on their ids only through the
+ * order of the ids (the median fallback's ties), so a range of refs with
+ * ascending ids builds the tree that the same boxes numbered 0 ..
+ * prim_count - 1 do.  This is build_binned_sah_forms after its set-up,
+ * and what the parallel builder's SAH subtrees run (build_parallel.c)
+ * without a copy of their boxes.  simd as there.  Returns 0, or -1 on
+ * allocation failure (the bins), with the nodes and refs' order then
+ * undefined.
+ */
+int build_binned_sah_refs(struct bvh_node *nodes, struct build_ref *refs, uint32_t prim_count,
+                          const struct bvh_build_params *params, int simd, uint32_t *node_count,
+                          uint32_t *depth);
+typedef int (*build_binned_refs_fn)(struct bvh_node *nodes, struct build_ref *refs,
+                                    uint32_t prim_count, const struct bvh_build_params *params,
+                                    int simd, uint32_t *node_count, uint32_t *depth);
+/* build_binned_sah_refs of the AVX2 copy, or NULL (as
+ * accel_build_binned_sah_avx2_unit). */
+build_binned_refs_fn build_binned_sah_refs_avx2_unit(void);
+
 /* Maps a float to an unsigned integer with the same order (negatives
  * reversed), and every NaN to a fixed place: a total order even for input
  * that breaks the contract, so sorts and selections built on it cannot

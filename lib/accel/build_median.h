@@ -96,6 +96,11 @@ static inline uint32_t build_ref_id(const struct build_ref *ref)
     return id;
 }
 
+static inline void build_ref_set_id(struct build_ref *ref, uint32_t id)
+{
+    memcpy(&ref->lo[3], &id, sizeof(id));
+}
+
 /*
  * The median builder's core, for build_parallel.c's subtrees: builds a
  * tree over refs[0, n) (n >= 1, reordered in place) into nodes[0, 2n - 1)
