@@ -98,7 +98,7 @@ static void local_whitted(const struct shade_context *sc, const struct surface *
 {
     const struct render_state *st = sc->state;
     for (int k = 0; k < 3; k++)
-        c[k] = s->mat->emission[k] + global_ambient[k] * s->ambient[k];
+        c[k] = s->emission[k] + global_ambient[k] * s->ambient[k];
     float view[3] = {-dir[0], -dir[1], -dir[2]};
     vec3_normalize(view);
     float origin[3];
@@ -137,8 +137,8 @@ static void local_whitted(const struct shade_context *sc, const struct surface *
         if (vec3_normalize(h)) {
             float n_dot_h = vec3_dot(s->n, h);
             if (n_dot_h > 0.0f) {
-                float spec = s->mat->shininess > 0.0f ? powf(n_dot_h, s->mat->shininess) : 1.0f;
-                add_scaled(c, light->specular, s->mat->specular, attenuation * spec);
+                float spec = s->shininess > 0.0f ? powf(n_dot_h, s->shininess) : 1.0f;
+                add_scaled(c, light->specular, s->specular, attenuation * spec);
             }
         }
     }
@@ -273,13 +273,13 @@ void shade_hit(const struct shade_context *sc, const float org[3], const float d
         surface_fetch(sc, &hit, dir, at_hit.width, &fetched);
     const struct surface *sp = pr ? pr->surface : &fetched;
 
-    const int unlit = st->lighting_used && !sp->mat->lighting;
+    const int unlit = st->lighting_used && !sp->lighting;
     if (unlit)
         memcpy(c, sp->diffuse, sizeof(c));
     else
         local_whitted(sc, sp, global_ambient, unit_dir, pr ? pr->shadow_known : 0u,
                       pr ? pr->shadow_occluded : 0u, c);
-    float kr = sp->mat->reflectivity, kt = sp->mat->transparency;
+    float kr = sp->reflectivity, kt = sp->transparency;
     if (depth < st->max_depth && (kr > 0.0f || kt > 0.0f)) {
         float out[4], next_org[3], next_dir[3];
         float local_weight = 1.0f - kt;
@@ -295,7 +295,7 @@ void shade_hit(const struct shade_context *sc, const float org[3], const float d
                 c[k] += kr * out[k];
         }
         if (kt > 0.0f) {
-            float eta = sp->front ? 1.0f / sp->mat->ior : sp->mat->ior;
+            float eta = sp->front ? 1.0f / sp->ior : sp->ior;
             float below[3] = {-sp->ng[0], -sp->ng[1], -sp->ng[2]};
             if (refract_dir(unit_dir, sp->n, eta, next_dir) && vec3_dot(next_dir, sp->ng) < 0.0f) {
                 shade_offset_point(sp->p, below, sp->p_error, next_org);
@@ -344,7 +344,7 @@ void shade_prime_shadows(const struct shade_context *sc, unsigned found,
         primed[i].surface = &surf[i];
         primed[i].shadow_known = 0;
         primed[i].shadow_occluded = 0;
-        if (st->lighting_used && !surf[i].mat->lighting)
+        if (st->lighting_used && !surf[i].lighting)
             continue; /* unlit: no shadow rays */
         shade_offset_point(surf[i].p, surf[i].ng, surf[i].p_error, origin[i]);
         lit |= 1u << i;

@@ -849,6 +849,21 @@ void surface_resolve_material(const struct scene_appearance *call, struct scene_
     m->inherit = 0;
 }
 
+/* The texture name of material m as resolved under the call's material
+ * (surface_resolve_material's rule: the bound name and the enable each
+ * from where the list takes it). */
+SURFACE_INLINE uint32_t material_texture(const struct scene_material *m,
+                                         const struct scene_material *call)
+{
+    const uint32_t k = m->inherit;
+    if (!(k & (SCENE_MATERIAL_TEXTURE | SCENE_MATERIAL_TEXTURE_ENABLE)))
+        return m->texture;
+    const uint32_t bound = (k & SCENE_MATERIAL_TEXTURE) ? call->texture_bound : m->texture_bound;
+    const uint32_t on =
+        (k & SCENE_MATERIAL_TEXTURE_ENABLE) ? call->texture_enabled : m->texture_enabled;
+    return on ? bound : 0;
+}
+
 /* The triangle of a hit and what its barycentrics and flags say. */
 struct hit_triangle {
     const struct scene_instance *inst;
@@ -995,29 +1010,39 @@ void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit 
     s->p_error = (float)(0.5 * FLT_EPSILON * (max_world + norm * max_object) + FLT_MIN);
     hit_normals(sc, &t, hit->prim, dir, s->ng, s->n, &s->front);
 
-    const struct scene_material *recorded = &mesh->materials[mesh->tri_material[hit->prim]];
-    if (recorded->inherit) {
-        s->resolved = *recorded;
-        surface_resolve_material(&inst->appearance, &s->resolved);
-        s->mat = &s->resolved;
-    } else {
-        s->mat = recorded;
-    }
+    /* The material's properties one by one, as surface_resolve_material
+     * resolves them: the call's (the instance's) where the list inherits
+     * them, else the recorded ones. */
+    const struct scene_material *m = &mesh->materials[mesh->tri_material[hit->prim]];
+    const struct scene_material *call = &inst->appearance.material;
+    const uint32_t k = m->inherit;
+    memcpy(s->emission, (k & SCENE_MATERIAL_EMISSION) ? call->emission : m->emission,
+           sizeof(s->emission));
+    memcpy(s->specular, (k & SCENE_MATERIAL_SPECULAR) ? call->specular : m->specular,
+           sizeof(s->specular));
+    s->shininess = (k & SCENE_MATERIAL_SHININESS) ? call->shininess : m->shininess;
+    s->reflectivity = (k & SCENE_MATERIAL_REFLECTIVITY) ? call->reflectivity : m->reflectivity;
+    s->transparency = (k & SCENE_MATERIAL_TRANSPARENCY) ? call->transparency : m->transparency;
+    s->ior = (k & SCENE_MATERIAL_IOR) ? call->ior : m->ior;
+    s->lighting = (k & SCENE_MATERIAL_LIGHTING) ? call->lighting : m->lighting;
+    const uint32_t texture = material_texture(m, call);
     /* Unlit in the eye-light and Whitted modes (render_state.lighting_used,
      * shade.c): the primitive shows its colour, which the ambient and
      * diffuse material carry from here on, as under RT_COLOR_MATERIAL, so
      * that the texture modulates it and blending takes its alpha. */
-    const int unlit = sc->state->lighting_used && !s->mat->lighting &&
+    const int unlit = sc->state->lighting_used && !s->lighting &&
                       sc->state->shading != RENDER_FIXED_FUNCTION;
     if (hit_color_material(&t, unlit, s->ambient)) {
         memcpy(s->diffuse, s->ambient, sizeof(s->diffuse));
     } else {
-        memcpy(s->ambient, s->mat->ambient, sizeof(s->ambient));
-        memcpy(s->diffuse, s->mat->diffuse, sizeof(s->diffuse));
+        memcpy(s->ambient, (k & SCENE_MATERIAL_AMBIENT) ? call->ambient : m->ambient,
+               sizeof(s->ambient));
+        memcpy(s->diffuse, (k & SCENE_MATERIAL_DIFFUSE) ? call->diffuse : m->diffuse,
+               sizeof(s->diffuse));
     }
-    if (s->mat->texture)
-        apply_texture(sc, inst, mesh, hit->prim, v, t.b0, t.b1, t.b2, s->ng, dir, width,
-                      s->mat->texture, s->ambient, s->diffuse);
+    if (texture)
+        apply_texture(sc, inst, mesh, hit->prim, v, t.b0, t.b1, t.b2, s->ng, dir, width, texture,
+                      s->ambient, s->diffuse);
 }
 
 /*
@@ -1041,13 +1066,7 @@ SURFACE_INLINE void fetch_colour_begin(const struct shade_context *sc,
     const uint32_t k = m->inherit;
     memcpy(s->emission, (k & SCENE_MATERIAL_EMISSION) ? call->emission : m->emission,
            sizeof(s->emission));
-    uint32_t texture = m->texture;
-    if (k & (SCENE_MATERIAL_TEXTURE | SCENE_MATERIAL_TEXTURE_ENABLE)) {
-        uint32_t bound = (k & SCENE_MATERIAL_TEXTURE) ? call->texture_bound : m->texture_bound;
-        uint32_t on = (k & SCENE_MATERIAL_TEXTURE_ENABLE) ? call->texture_enabled
-                                                          : m->texture_enabled;
-        texture = on ? bound : 0;
-    }
+    const uint32_t texture = material_texture(m, call);
     s->lighting = (k & SCENE_MATERIAL_LIGHTING) ? call->lighting : m->lighting;
     const int unlit = sc->state->lighting_used && !s->lighting &&
                       sc->state->shading != RENDER_FIXED_FUNCTION;

@@ -58,13 +58,20 @@ struct surface {
     float p_error; /* bound on |p - exact point on the surface| */
     int front;   /* the ray hit the front face (counter-clockwise side) */
     /* The ambient and diffuse colours with vertex colours and the texture
-     * applied; the rest of the material in mat: the recorded one, or
-     * `resolved` when it inherits from the call (the 260-byte copy only
-     * then). */
+     * applied, and of the rest of the material what the eye-light and
+     * Whitted shadings read, each property the recorded one or, when it
+     * inherits it (scene_material.inherit), the call's: what
+     * surface_resolve_material gives for it, without copying and
+     * resolving the whole material (some 260 bytes) at every hit. */
     float ambient[4];
     float diffuse[4];
-    const struct scene_material *mat;
-    struct scene_material resolved;
+    float emission[4];
+    float specular[4];
+    float shininess;
+    float reflectivity;
+    float transparency;
+    float ior;
+    int lighting; /* RT_LIGHTING as the primitive was drawn */
 };
 
 /* Completes a material recorded in a display list with the properties it
