@@ -1036,7 +1036,8 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
 void render_tile(struct render_pass *pass, uint32_t tile, int worker)
 {
     const struct render_state *st = pass->job->state;
-    struct surface_cache cache_entry = {0};
+    struct surface_cache cache_entry[SHADE_CACHES];
+    memset(cache_entry, 0, sizeof(cache_entry));
     struct shade_context sc = {st,
                                pass->job->frame,
                                &pass->scene,
@@ -1045,7 +1046,7 @@ void render_tile(struct render_pass *pass, uint32_t tile, int worker)
                                pass->clipping,
                                pass->see_through,
                                NULL,
-                               &cache_entry,
+                               cache_entry,
                                NULL,
                                NULL};
     struct secondary_scenes secondary;

@@ -299,7 +299,7 @@ void shade_hit(const struct shade_context *sc, const float org[3], const float d
         pr = NULL;
     struct surface fetched;
     if (!pr)
-        surface_fetch(sc, &hit, dir, at_hit.width, &fetched);
+        surface_fetch(sc, &hit, dir, at_hit.width, depth, &fetched);
     const struct surface *sp = pr ? pr->surface : &fetched;
 
     const int unlit = st->lighting_used && !sp->lighting;
@@ -369,7 +369,8 @@ void shade_prime_shadows(const struct shade_context *sc, unsigned found,
          * another hit behind it or at its distance. */
         if (sc->clipping && blend_hit_clipped(sc, org[i], dir[i], &hits[i]))
             continue;
-        surface_fetch(sc, &hits[i], dir[i], cone_at(cone[i], dir[i], hits[i].t).width, &surf[i]);
+        surface_fetch(sc, &hits[i], dir[i], cone_at(cone[i], dir[i], hits[i].t).width, 0,
+                      &surf[i]);
         primed[i].surface = &surf[i];
         primed[i].shadow_known = 0;
         primed[i].shadow_occluded = 0;

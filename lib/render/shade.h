@@ -8,6 +8,11 @@
 #include "render/render.h"
 #include "trace/packet_scene.h"
 
+/* The tile's surface caches (shade_context.cache): camera rays' hits and
+ * the reflection depths 1 to 3 (OpenRT's depth, bart's default) each
+ * have their own, deeper hits share the last. */
+#define SHADE_CACHES 4
+
 /* Per-thread context for shading one ray tree. */
 struct shade_context {
     const struct render_state *state;
@@ -26,9 +31,11 @@ struct shade_context {
      * instead of tracing again.  The same hit bit for bit
      * (trace/packet_scene.h). */
     const struct shade_primed *primed;
-    /* NULL, or the tile's cache of what surface.c derives from a hit's
-     * triangle alone (surface.h, surface_cache): writable through a
-     * const context, as it only remembers results. */
+    /* NULL, or the tile's SHADE_CACHES caches of what surface.c derives
+     * from a hit's triangle alone (surface.h, surface_cache): entry d for
+     * Whitted's hits at depth d (the last one for deeper hits), entry 0
+     * for the other shadings: writable through a const context, as they
+     * only remember results. */
     struct surface_cache *cache;
     /* What shadow rays and reflected or refracted rays trace: `scene`
      * with the filter of render/secondary.h when the frame has clip

@@ -146,10 +146,9 @@ static void texel_vectors(const double e[3], const double f[3], const double w1[
 
 /* The cache entry of the hit's triangle (surface_cache), emptied when it
  * held another one; NULL without a cache. */
-static struct surface_cache *triangle_cache(const struct shade_context *sc,
+static struct surface_cache *triangle_cache(struct surface_cache *c,
                                             const struct scene_instance *inst, uint32_t prim)
 {
-    struct surface_cache *c = sc->cache;
     if (c && (c->inst != inst || c->prim != prim)) {
         c->inst = inst;
         c->prim = prim;
@@ -260,7 +259,7 @@ static int lod_near(double s2, double xs, double top, float *lambda)
  * last hit was on the same triangle (and, for the texel edges, the same
  * texture and coordinates), else computed into it (or into `scratch`
  * without a cache). */
-SURFACE_INLINE const struct surface_lod *lod_triangle(const struct shade_context *sc,
+SURFACE_INLINE const struct surface_lod *lod_triangle(struct surface_cache *cache,
                                                       const struct scene_texture *tex,
                                                       const struct scene_instance *inst,
                                                       const struct scene_mesh *mesh,
@@ -268,7 +267,7 @@ SURFACE_INLINE const struct surface_lod *lod_triangle(const struct shade_context
                                                       const float *const st[3],
                                                       struct surface_cache *scratch)
 {
-    struct surface_cache *c = triangle_cache(sc, inst, prim);
+    struct surface_cache *c = triangle_cache(cache, inst, prim);
     if (!c) {
         c = scratch;
         c->geometry = 0;
@@ -404,8 +403,8 @@ static float texture_lod(const struct shade_context *sc, const struct scene_text
                          const float ng[3], const float dir[3], float width)
 {
     struct surface_cache scratch;
-    return lod_ray(lod_triangle(sc, tex, inst, mesh, prim, v, st, &scratch), tex->level_count, ng,
-                   dir, width);
+    return lod_ray(lod_triangle(sc->cache, tex, inst, mesh, prim, v, st, &scratch),
+                   tex->level_count, ng, dir, width);
 }
 
 /* t's level of detail from its triangle part alone (lod_ray). */
@@ -692,9 +691,9 @@ static void projective_st(const float *const vst[3], const float q[3], float b0,
  */
 /* The texture named `name` (not 0), through the tile's cache when the
  * last textured hit had the same name. */
-static const struct scene_texture *texture_named(const struct shade_context *sc, uint32_t name)
+static const struct scene_texture *texture_named(const struct shade_context *sc,
+                                                 struct surface_cache *c, uint32_t name)
 {
-    struct surface_cache *c = sc->cache;
     if (c && c->named == name)
         return c->named_tex;
     const struct scene_texture *tex = scene_textures_lookup(sc->textures, name);
@@ -705,13 +704,13 @@ static const struct scene_texture *texture_named(const struct shade_context *sc,
     return tex;
 }
 
-SURFACE_INLINE void texture_begin(const struct shade_context *sc,
+SURFACE_INLINE void texture_begin(const struct shade_context *sc, struct surface_cache *cache,
                                   const struct scene_instance *inst, const struct scene_mesh *mesh,
                                   uint32_t prim, const uint32_t v[3], float b0, float b1, float b2,
                                   const float ng[3], const float dir[3], float width,
                                   uint32_t name, struct surface_texture *t)
 {
-    const struct scene_texture *tex = texture_named(sc, name);
+    const struct scene_texture *tex = texture_named(sc, cache, name);
     t->tex = NULL;
     t->lod = 0;
     if (!tex || !tex->texels)
@@ -734,7 +733,7 @@ SURFACE_INLINE void texture_begin(const struct shade_context *sc,
     }
     if (tex->min_filter != tex->mag_filter) {
         struct surface_cache scratch;
-        t->tri = *lod_triangle(sc, tex, inst, mesh, prim, v, lst, &scratch);
+        t->tri = *lod_triangle(cache, tex, inst, mesh, prim, v, lst, &scratch);
         memcpy(t->ng, ng, sizeof(t->ng));
         memcpy(t->dir, dir, sizeof(t->dir));
         t->width = width;
@@ -754,13 +753,14 @@ static void texture_end(const struct surface_texture *t, float ambient[4], float
     }
 }
 
-static void apply_texture(const struct shade_context *sc, const struct scene_instance *inst,
+static void apply_texture(const struct shade_context *sc, struct surface_cache *cache,
+                          const struct scene_instance *inst,
                           const struct scene_mesh *mesh, uint32_t prim, const uint32_t v[3],
                           float b0, float b1, float b2, const float ng[3], const float dir[3],
                           float width, uint32_t name, float ambient[4], float diffuse[4])
 {
     struct surface_texture t;
-    texture_begin(sc, inst, mesh, prim, v, b0, b1, b2, ng, dir, width, name, &t);
+    texture_begin(sc, cache, inst, mesh, prim, v, b0, b1, b2, ng, dir, width, name, &t);
     if (t.lod)
         texture_lambda(&t);
     texture_end(&t, ambient, diffuse);
@@ -893,7 +893,7 @@ SURFACE_INLINE void hit_triangle(const struct shade_context *sc,
 /* The unit geometric normal facing the ray along dir, whether the ray
  * hit the front face, and the shading normal on the same side.  Inlined:
  * the call's spills and argument set-up were a tenth of its cost. */
-SURFACE_INLINE void hit_normals(const struct shade_context *sc, const struct hit_triangle *t,
+SURFACE_INLINE void hit_normals(struct surface_cache *cache, const struct hit_triangle *t,
                                 uint32_t prim, const float dir[3], float ng[3], float n[3],
                                 int *front)
 {
@@ -901,7 +901,7 @@ SURFACE_INLINE void hit_normals(const struct shade_context *sc, const struct hit
     const uint32_t *v = t->v;
     /* The triangle's unit normal, from the tile's cache when the last hit
      * was on the same triangle (surface_cache). */
-    struct surface_cache *c = triangle_cache(sc, t->inst, prim);
+    struct surface_cache *c = triangle_cache(cache, t->inst, prim);
     int unit;
     if (c && c->normal) {
         memcpy(ng, c->ng, sizeof(c->ng));
@@ -973,8 +973,12 @@ SURFACE_INLINE int hit_color_material(const struct hit_triangle *t, int unlit, f
 }
 
 void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit *hit,
-                   const float dir[3], float width, struct surface *s)
+                   const float dir[3], float width, int depth, struct surface *s)
 {
+    /* The cache of the hit's depth: a tile's pixels take turns at every
+     * depth, so one cache for all held the last pixel's deepest hit. */
+    struct surface_cache *cache =
+        sc->cache ? &sc->cache[depth < SHADE_CACHES ? depth : SHADE_CACHES - 1] : NULL;
     struct hit_triangle t;
     hit_triangle(sc, hit, &t);
     const struct scene_instance *inst = t.inst;
@@ -1008,7 +1012,7 @@ void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit 
         norm = mat4_fmax_left(norm, fabs(m[k]) + fabs(m[4 + k]) + fabs(m[8 + k]));
     }
     s->p_error = (float)(0.5 * FLT_EPSILON * (max_world + norm * max_object) + FLT_MIN);
-    hit_normals(sc, &t, hit->prim, dir, s->ng, s->n, &s->front);
+    hit_normals(cache, &t, hit->prim, dir, s->ng, s->n, &s->front);
 
     /* The material's properties one by one, as surface_resolve_material
      * resolves them: the call's (the instance's) where the list inherits
@@ -1041,8 +1045,8 @@ void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit 
                sizeof(s->diffuse));
     }
     if (texture)
-        apply_texture(sc, inst, mesh, hit->prim, v, t.b0, t.b1, t.b2, s->ng, dir, width, texture,
-                      s->ambient, s->diffuse);
+        apply_texture(sc, cache, inst, mesh, hit->prim, v, t.b0, t.b1, t.b2, s->ng, dir, width,
+                      texture, s->ambient, s->diffuse);
 }
 
 /*
@@ -1060,7 +1064,7 @@ SURFACE_INLINE void fetch_colour_begin(const struct shade_context *sc,
 {
     struct hit_triangle t;
     hit_triangle(sc, hit, &t);
-    hit_normals(sc, &t, hit->prim, dir, s->ng, s->n, &s->front);
+    hit_normals(sc->cache, &t, hit->prim, dir, s->ng, s->n, &s->front);
     const struct scene_material *m = &t.mesh->materials[t.mesh->tri_material[hit->prim]];
     const struct scene_material *call = &t.inst->appearance.material;
     const uint32_t k = m->inherit;
@@ -1081,8 +1085,8 @@ SURFACE_INLINE void fetch_colour_begin(const struct shade_context *sc,
     tx->tex = NULL;
     tx->lod = 0;
     if (texture)
-        texture_begin(sc, t.inst, t.mesh, hit->prim, t.v, t.b0, t.b1, t.b2, s->ng, dir, width,
-                      texture, tx);
+        texture_begin(sc, sc->cache, t.inst, t.mesh, hit->prim, t.v, t.b0, t.b1, t.b2, s->ng,
+                      dir, width, texture, tx);
 }
 
 void surface_fetch_colour(const struct shade_context *sc, const struct trace_scene_hit *hit,

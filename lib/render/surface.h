@@ -14,12 +14,15 @@
 /*
  * What surface.c computes from a hit's triangle (its instance and
  * primitive) and not from the ray: the unit geometric normal in world
- * space and the triangle-only part of the texture level of detail.  One
- * per render thread and tile (render.c, shade_context.cache), for the
- * last triangle shaded: neighbouring pixels mostly hit the same one, and
- * a hit of another triangle replaces it.  The cached values are the ones
- * the computation gives, bit for bit, so images do not depend on the
- * order pixels are shaded in.
+ * space and the triangle-only part of the texture level of detail.
+ * SHADE_CACHES per render thread and tile (render.c,
+ * shade_context.cache), one per Whitted depth, for the last triangle
+ * shaded at that depth: neighbouring pixels' rays of one depth mostly hit
+ * the same one, and a hit of another triangle replaces it.  (One entry
+ * for all depths held a pixel's deepest hit when the next pixel's
+ * reflection came: on a BART robots Whitted frame three fetches in four
+ * missed.)  The cached values are the ones the computation gives, bit
+ * for bit, so images do not depend on the order pixels are shaded in.
  */
 struct scene_texture;
 
@@ -81,9 +84,10 @@ struct scene_appearance;
 void surface_resolve_material(const struct scene_appearance *call, struct scene_material *m);
 
 /* The surface at a hit of a ray along dir whose cone is `width` wide
- * there (world units). */
+ * there (world units), `depth` the ray's Whitted depth (0 for camera
+ * rays): it picks the tile's cache entry (shade_context.cache). */
 void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit *hit,
-                   const float dir[3], float width, struct surface *s);
+                   const float dir[3], float width, int depth, struct surface *s);
 
 /* What the eye light and a see-through surface's alpha read of a hit:
  * surface_fetch's normals and its material's emission, ambient and diffuse
