@@ -1048,7 +1048,9 @@ void render_tile(struct render_pass *pass, uint32_t tile, int worker)
                                NULL,
                                cache_entry,
                                NULL,
-                               NULL};
+                               NULL,
+                               0};
+    shade_context_lights(&sc);
     struct secondary_scenes secondary;
     secondary_scenes_init(&secondary, &sc, &pass->scene, pass->secondary);
     const int *vp = st->viewport;

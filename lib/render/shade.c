@@ -81,6 +81,14 @@ static inline void offset_point(const float p[3], const float n[3], float error,
     }
 }
 
+void shade_context_lights(struct shade_context *sc)
+{
+    sc->light_end = 0;
+    for (int i = 0; i < RENDER_MAX_LIGHTS; i++)
+        if (sc->state->lights[i].enabled)
+            sc->light_end = i + 1;
+}
+
 void shade_offset_point(const float p[3], const float n[3], float error, float out[3])
 {
     offset_point(p, n, error, out);
@@ -132,7 +140,7 @@ static void local_whitted(const struct shade_context *sc, const struct surface *
     vec3_normalize(view);
     float origin[3];
     offset_point(s->p, s->ng, s->p_error, origin);
-    for (int i = 0; i < RENDER_MAX_LIGHTS; i++) {
+    for (int i = 0; i < sc->light_end; i++) {
         const struct scene_light *light = &st->lights[i];
         if (!light->enabled)
             continue;
@@ -381,7 +389,7 @@ void shade_prime_shadows(const struct shade_context *sc, unsigned found,
     }
     if (!lit)
         return;
-    for (int l = 0; l < RENDER_MAX_LIGHTS; l++) {
+    for (int l = 0; l < sc->light_end; l++) {
         const struct scene_light *light = &st->lights[l];
         if (!light->enabled)
             continue;

@@ -42,7 +42,13 @@ struct shade_context {
      * planes, alpha test or blending, else `scene` itself. */
     const struct trace_scene *shadows;
     const struct trace_scene *rays;
+    /* One past the last enabled light of state->lights: Whitted's loops
+     * over the lights stop there (shade_context_lights). */
+    int light_end;
 };
+
+/* Sets sc->light_end from sc->state's lights. */
+void shade_context_lights(struct shade_context *sc);
 
 struct surface;
 

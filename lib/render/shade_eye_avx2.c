@@ -22,6 +22,7 @@
 #if defined(__AVX2__) && !defined(RT_NO_SIMD)
 #define SHADE_UNIT_AVX2 1
 
+#define shade_context_lights shade_context_lights_avx2
 #define shade_eye_hits shade_eye_hits_avx2
 #define shade_hit shade_hit_avx2
 #define shade_offset_point shade_offset_point_avx2
