@@ -704,11 +704,14 @@ static const struct scene_texture *texture_named(const struct shade_context *sc,
     return tex;
 }
 
+/* What the lookup of texture `name` at a hit needs, into t; with `now`
+ * the level of detail too (t->lod stays 0), else t->lod says it is still
+ * to compute from t's copy of the triangle part (texture_lods). */
 SURFACE_INLINE void texture_begin(const struct shade_context *sc, struct surface_cache *cache,
                                   const struct scene_instance *inst, const struct scene_mesh *mesh,
                                   uint32_t prim, const uint32_t v[3], float b0, float b1, float b2,
                                   const float ng[3], const float dir[3], float width,
-                                  uint32_t name, struct surface_texture *t)
+                                  uint32_t name, int now, struct surface_texture *t)
 {
     const struct scene_texture *tex = texture_named(sc, cache, name);
     t->tex = NULL;
@@ -733,7 +736,15 @@ SURFACE_INLINE void texture_begin(const struct shade_context *sc, struct surface
     }
     if (tex->min_filter != tex->mag_filter) {
         struct surface_cache scratch;
-        t->tri = *lod_triangle(cache, tex, inst, mesh, prim, v, lst, &scratch);
+        const struct surface_lod *tri =
+            lod_triangle(cache, tex, inst, mesh, prim, v, lst, &scratch);
+        if (now) {
+            /* texture_lambda's operations on the same values, without
+             * the copy of the triangle part into t. */
+            t->lambda = lod_ray(tri, tex->level_count, ng, dir, width);
+            return;
+        }
+        t->tri = *tri;
         memcpy(t->ng, ng, sizeof(t->ng));
         memcpy(t->dir, dir, sizeof(t->dir));
         t->width = width;
@@ -760,7 +771,7 @@ static void apply_texture(const struct shade_context *sc, struct surface_cache *
                           float width, uint32_t name, float ambient[4], float diffuse[4])
 {
     struct surface_texture t;
-    texture_begin(sc, cache, inst, mesh, prim, v, b0, b1, b2, ng, dir, width, name, &t);
+    texture_begin(sc, cache, inst, mesh, prim, v, b0, b1, b2, ng, dir, width, name, 1, &t);
     if (t.lod)
         texture_lambda(&t);
     texture_end(&t, ambient, diffuse);
@@ -1086,7 +1097,7 @@ SURFACE_INLINE void fetch_colour_begin(const struct shade_context *sc,
     tx->lod = 0;
     if (texture)
         texture_begin(sc, sc->cache, t.inst, t.mesh, hit->prim, t.v, t.b0, t.b1, t.b2, s->ng,
-                      dir, width, texture, tx);
+                      dir, width, texture, 0, tx);
 }
 
 void surface_fetch_colour(const struct shade_context *sc, const struct trace_scene_hit *hit,
