@@ -988,6 +988,7 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                 primed[i].surface = NULL;
                 primed[i].shadow_known = 0;
                 primed[i].shadow_occluded = 0;
+                primed[i].reflect_known = 0;
             }
             shade_prime_shadows(sc, found, hits, (const float(*)[3])pk.org,
                                 (const float(*)[3])pk.dir, cone, surf, primed);

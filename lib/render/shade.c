@@ -327,7 +327,15 @@ void shade_hit(const struct shade_context *sc, const float org[3], const float d
             if (vec3_dot(next_dir, sp->ng) <= 0.0f)
                 reflect_dir(unit_dir, sp->ng, next_dir);
             offset_point(sp->p, sp->ng, sp->p_error, next_org);
-            shade_ray(sc, next_org, next_dir, INFINITY, at_hit, depth + 1, out);
+            if (pr && pr->reflect_known) {
+                /* Traced ahead in the block's packet (shade_prime_shadows):
+                 * the same ray, so the same hit. */
+                if (pr->reflect_found)
+                    shade_hit(sc, next_org, next_dir, &pr->reflect_hit, at_hit, depth + 1, out);
+                else
+                    memcpy(out, st->clear_color, 4 * sizeof(float));
+            } else
+                shade_ray(sc, next_org, next_dir, INFINITY, at_hit, depth + 1, out);
             for (int k = 0; k < 3; k++)
                 c[k] += kr * out[k];
         }
@@ -348,6 +356,55 @@ void shade_hit(const struct shade_context *sc, const float org[3], const float d
     }
     memcpy(rgba, c, sizeof(c));
     rgba[3] = 1.0f;
+}
+
+/*
+ * The reflected rays of a block's primed first hits (shade_hit's depth 0
+ * with a reflective surface), traced together when they are at least
+ * two and coherent (trace_packet_coherent): on a BART robots Whitted
+ * frame every camera ray's hit reflects and 82 % of the blocks' reflected
+ * rays pass the test.  Each ray is shade_hit's own (the same unit
+ * direction, reflection and offset operations), and a packet's hits are
+ * the single rays' (trace/packet_scene.h): shade_hit takes primed[i]'s
+ * answer for it instead of tracing it alone.
+ */
+static void prime_reflections(const struct shade_context *sc,
+                              const float dir[TRACE_PACKET][3], const struct surface *surf,
+                              struct shade_primed primed[TRACE_PACKET])
+{
+    if (sc->state->max_depth <= 0)
+        return;
+    struct trace_packet pk;
+    const float *dirs[TRACE_PACKET];
+    int n = 0;
+    pk.active = 0;
+    for (int i = 0; i < TRACE_PACKET; i++) {
+        if (primed[i].surface != &surf[i] || !(surf[i].reflectivity > 0.0f))
+            continue;
+        const struct surface *sp = &surf[i];
+        float unit_dir[3] = {dir[i][0], dir[i][1], dir[i][2]};
+        vec3_normalize(unit_dir);
+        reflect_dir(unit_dir, sp->n, pk.dir[i]);
+        if (vec3_dot(pk.dir[i], sp->ng) <= 0.0f)
+            reflect_dir(unit_dir, sp->ng, pk.dir[i]);
+        offset_point(sp->p, sp->ng, sp->p_error, pk.org[i]);
+        pk.tmin[i] = 0.0f;
+        pk.tmax[i] = INFINITY;
+        pk.active |= 1u << i;
+        dirs[n++] = pk.dir[i];
+    }
+    if (n < 2 || !trace_packet_coherent(dirs, n))
+        return;
+    struct trace_scene_hit hits[TRACE_PACKET];
+    const unsigned found = trace_scene_closest_packet(sc->rays, &pk, hits, sc->counters);
+    for (int i = 0; i < TRACE_PACKET; i++) {
+        if (!(pk.active >> i & 1u))
+            continue;
+        primed[i].reflect_known = 1;
+        primed[i].reflect_found = (int)(found >> i & 1u);
+        if (primed[i].reflect_found)
+            primed[i].reflect_hit = hits[i];
+    }
 }
 
 void shade_prime_shadows(const struct shade_context *sc, unsigned found,
@@ -382,11 +439,13 @@ void shade_prime_shadows(const struct shade_context *sc, unsigned found,
         primed[i].surface = &surf[i];
         primed[i].shadow_known = 0;
         primed[i].shadow_occluded = 0;
+        primed[i].reflect_known = 0;
         if (st->lighting_used && !surf[i].lighting)
             continue; /* unlit: no shadow rays */
         offset_point(surf[i].p, surf[i].ng, surf[i].p_error, origin[i]);
         lit |= 1u << i;
     }
+    prime_reflections(sc, dir, surf, primed);
     if (!lit)
         return;
     for (int l = 0; l < sc->light_end; l++) {

@@ -64,6 +64,11 @@ struct shade_primed {
     const struct surface *surface;
     unsigned shadow_known;
     unsigned shadow_occluded;
+    /* With `surface`: 1 when its reflected ray was traced in a packet
+     * (shade_prime_shadows), reflect_found and reflect_hit its answer. */
+    int reflect_known;
+    int reflect_found;
+    struct trace_scene_hit reflect_hit;
 };
 
 /* The frame's instance a hit belongs to: its appearance, clip planes and
