@@ -979,8 +979,8 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
             }
             /* Whitted shading's shadow rays of the block's first hits,
              * one packet per light, and the surfaces they start on. */
-            struct shade_primed primed[TRACE_PACKET];
-            struct surface surf[TRACE_PACKET];
+            struct shade_primed primed[TRACE_PACKET], reflected[TRACE_PACKET];
+            struct surface surf[2 * TRACE_PACKET];
             for (int i = 0; i < TRACE_PACKET; i++) {
                 primed[i].found = (int)(found >> i & 1u);
                 if (primed[i].found)
@@ -991,7 +991,7 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                 primed[i].reflect_known = 0;
             }
             shade_prime_shadows(sc, found, hits, (const float(*)[3])pk.org,
-                                (const float(*)[3])pk.dir, cone, surf, primed);
+                                (const float(*)[3])pk.dir, cone, surf, primed, reflected);
             struct eye_batch eyes = {.n = 0};
             for (int i = 0; i < TRACE_PACKET; i++) {
                 if (!block_pixel_inside(vp, x0, y0, bx, by, i))

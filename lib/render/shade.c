@@ -267,9 +267,12 @@ void shade_ray(const struct shade_context *sc, const float org[3], const float d
     shade_hit(sc, org, dir, &hit, cone, depth, rgba);
 }
 
-void shade_hit(const struct shade_context *sc, const float org[3], const float dir[3],
-               const struct trace_scene_hit *found, struct shade_cone cone, int depth,
-               float rgba[4])
+/* shade_hit with the primed hit `primed` (NULL: none): the camera ray's
+ * (shade_context.primed) at depth 0, its reflected ray's at depth 1. */
+static void shade_hit_primed(const struct shade_context *sc, const struct shade_primed *primed,
+                             const float org[3], const float dir[3],
+                             const struct trace_scene_hit *found, struct shade_cone cone,
+                             int depth, float rgba[4])
 {
     const struct render_state *st = sc->state;
     const struct trace_scene_hit hit = *found;
@@ -302,7 +305,7 @@ void shade_hit(const struct shade_context *sc, const float org[3], const float d
     }
     /* The camera ray's first hit: shade_prime_shadows may have fetched
      * its surface and traced its shadow rays already. */
-    const struct shade_primed *pr = depth == 0 ? sc->primed : NULL;
+    const struct shade_primed *pr = primed;
     if (pr && !(pr->surface && same_hit(&pr->hit, &hit)))
         pr = NULL;
     struct surface fetched;
@@ -331,7 +334,8 @@ void shade_hit(const struct shade_context *sc, const float org[3], const float d
                 /* Traced ahead in the block's packet (shade_prime_shadows):
                  * the same ray, so the same hit. */
                 if (pr->reflect_found)
-                    shade_hit(sc, next_org, next_dir, &pr->reflect_hit, at_hit, depth + 1, out);
+                    shade_hit_primed(sc, pr->reflected, next_org, next_dir, &pr->reflect_hit,
+                                     at_hit, depth + 1, out);
                 else
                     memcpy(out, st->clear_color, 4 * sizeof(float));
             } else
@@ -358,94 +362,21 @@ void shade_hit(const struct shade_context *sc, const float org[3], const float d
     rgba[3] = 1.0f;
 }
 
-/*
- * The reflected rays of a block's primed first hits (shade_hit's depth 0
- * with a reflective surface), traced together when they are at least
- * two and coherent (trace_packet_coherent): on a BART robots Whitted
- * frame every camera ray's hit reflects and 82 % of the blocks' reflected
- * rays pass the test.  Each ray is shade_hit's own (the same unit
- * direction, reflection and offset operations), and a packet's hits are
- * the single rays' (trace/packet_scene.h): shade_hit takes primed[i]'s
- * answer for it instead of tracing it alone.
- */
-static void prime_reflections(const struct shade_context *sc,
-                              const float dir[TRACE_PACKET][3], const struct surface *surf,
-                              struct shade_primed primed[TRACE_PACKET])
+void shade_hit(const struct shade_context *sc, const float org[3], const float dir[3],
+               const struct trace_scene_hit *found, struct shade_cone cone, int depth,
+               float rgba[4])
 {
-    if (sc->state->max_depth <= 0)
-        return;
-    struct trace_packet pk;
-    const float *dirs[TRACE_PACKET];
-    int n = 0;
-    pk.active = 0;
-    for (int i = 0; i < TRACE_PACKET; i++) {
-        if (primed[i].surface != &surf[i] || !(surf[i].reflectivity > 0.0f))
-            continue;
-        const struct surface *sp = &surf[i];
-        float unit_dir[3] = {dir[i][0], dir[i][1], dir[i][2]};
-        vec3_normalize(unit_dir);
-        reflect_dir(unit_dir, sp->n, pk.dir[i]);
-        if (vec3_dot(pk.dir[i], sp->ng) <= 0.0f)
-            reflect_dir(unit_dir, sp->ng, pk.dir[i]);
-        offset_point(sp->p, sp->ng, sp->p_error, pk.org[i]);
-        pk.tmin[i] = 0.0f;
-        pk.tmax[i] = INFINITY;
-        pk.active |= 1u << i;
-        dirs[n++] = pk.dir[i];
-    }
-    if (n < 2 || !trace_packet_coherent(dirs, n))
-        return;
-    struct trace_scene_hit hits[TRACE_PACKET];
-    const unsigned found = trace_scene_closest_packet(sc->rays, &pk, hits, sc->counters);
-    for (int i = 0; i < TRACE_PACKET; i++) {
-        if (!(pk.active >> i & 1u))
-            continue;
-        primed[i].reflect_known = 1;
-        primed[i].reflect_found = (int)(found >> i & 1u);
-        if (primed[i].reflect_found)
-            primed[i].reflect_hit = hits[i];
-    }
+    shade_hit_primed(sc, depth == 0 ? sc->primed : NULL, org, dir, found, cone, depth, rgba);
 }
 
-void shade_prime_shadows(const struct shade_context *sc, unsigned found,
-                         const struct trace_scene_hit hits[TRACE_PACKET],
-                         const float org[TRACE_PACKET][3], const float dir[TRACE_PACKET][3],
-                         const struct shade_cone cone[TRACE_PACKET],
-                         struct surface *surf,
-                         struct shade_primed primed[TRACE_PACKET])
+/* The shadow rays of the surfaces surf[i] (bit i of lit) from origin[i],
+ * one packet per light when at least two are coherent, their answers in
+ * primed[i] (shade_prime_shadows). */
+static void prime_light_packets(const struct shade_context *sc, const struct surface *surf,
+                                const float origin[TRACE_PACKET][3], unsigned lit,
+                                struct shade_primed primed[TRACE_PACKET])
 {
     const struct render_state *st = sc->state;
-    /* A frame with a hit filter (sc->shadows, render/secondary.h) traces
-     * its packets with the filter, which packet_scene.c applies ray by
-     * ray as the single walk does. */
-    if (st->shading != RENDER_WHITTED)
-        return;
-    float origin[TRACE_PACKET][3];
-    unsigned lit = 0;
-    for (int i = 0; i < TRACE_PACKET; i++) {
-        if (!(found >> i & 1u))
-            continue;
-        /* A first hit GL does not draw (culled, outlined) gives the pixel
-         * to a hit behind it: not primed, so no ray the shading does not
-         * ask for is traced. */
-        if (!gl_hit_drawn(sc, dir[i], &hits[i]))
-            continue;
-        /* Nor does a first hit a clip plane removes: blend.c shades
-         * another hit behind it or at its distance. */
-        if (sc->clipping && blend_hit_clipped(sc, org[i], dir[i], &hits[i]))
-            continue;
-        surface_fetch(sc, &hits[i], dir[i], cone_at(cone[i], dir[i], hits[i].t).width, 0,
-                      &surf[i]);
-        primed[i].surface = &surf[i];
-        primed[i].shadow_known = 0;
-        primed[i].shadow_occluded = 0;
-        primed[i].reflect_known = 0;
-        if (st->lighting_used && !surf[i].lighting)
-            continue; /* unlit: no shadow rays */
-        offset_point(surf[i].p, surf[i].ng, surf[i].p_error, origin[i]);
-        lit |= 1u << i;
-    }
-    prime_reflections(sc, dir, surf, primed);
     if (!lit)
         return;
     for (int l = 0; l < sc->light_end; l++) {
@@ -478,6 +409,126 @@ void shade_prime_shadows(const struct shade_context *sc, unsigned found,
             primed[i].shadow_occluded |= (occluded >> i & 1u) << l;
         }
     }
+}
+
+/*
+ * The reflected rays of a block's primed first hits (shade_hit's depth 0
+ * with a reflective surface), traced together when they are at least
+ * two and coherent (trace_packet_coherent): on a BART robots Whitted
+ * frame every camera ray's hit reflects and 82 % of the blocks' reflected
+ * rays pass the test.  Each ray is shade_hit's own (the same unit
+ * direction, reflection and offset operations), and a packet's hits are
+ * the single rays' (trace/packet_scene.h): shade_hit takes primed[i]'s
+ * answer for it instead of tracing it alone.
+ */
+static void prime_reflections(const struct shade_context *sc,
+                              const struct trace_scene_hit hits[TRACE_PACKET],
+                              const float dir[TRACE_PACKET][3],
+                              const struct shade_cone cone[TRACE_PACKET],
+                              const struct surface *surf, struct surface *reflected_surf,
+                              struct shade_primed primed[TRACE_PACKET],
+                              struct shade_primed reflected[TRACE_PACKET])
+{
+    if (sc->state->max_depth <= 0)
+        return;
+    struct trace_packet pk;
+    const float *dirs[TRACE_PACKET];
+    int n = 0;
+    pk.active = 0;
+    for (int i = 0; i < TRACE_PACKET; i++) {
+        if (primed[i].surface != &surf[i] || !(surf[i].reflectivity > 0.0f))
+            continue;
+        const struct surface *sp = &surf[i];
+        float unit_dir[3] = {dir[i][0], dir[i][1], dir[i][2]};
+        vec3_normalize(unit_dir);
+        reflect_dir(unit_dir, sp->n, pk.dir[i]);
+        if (vec3_dot(pk.dir[i], sp->ng) <= 0.0f)
+            reflect_dir(unit_dir, sp->ng, pk.dir[i]);
+        offset_point(sp->p, sp->ng, sp->p_error, pk.org[i]);
+        pk.tmin[i] = 0.0f;
+        pk.tmax[i] = INFINITY;
+        pk.active |= 1u << i;
+        dirs[n++] = pk.dir[i];
+    }
+    if (n < 2 || !trace_packet_coherent(dirs, n))
+        return;
+    struct trace_scene_hit rhits[TRACE_PACKET];
+    const unsigned found = trace_scene_closest_packet(sc->rays, &pk, rhits, sc->counters);
+    float origin[TRACE_PACKET][3];
+    unsigned lit = 0;
+    for (int i = 0; i < TRACE_PACKET; i++) {
+        if (!(pk.active >> i & 1u))
+            continue;
+        primed[i].reflect_known = 1;
+        primed[i].reflect_found = (int)(found >> i & 1u);
+        primed[i].reflected = NULL;
+        if (!primed[i].reflect_found)
+            continue;
+        primed[i].reflect_hit = rhits[i];
+        /* The reflected hit's surface as shade_hit fetches it at depth 1
+         * (its cone: the camera ray's at its hit, then along the
+         * reflected ray), and its shadow rays in packets too. */
+        const struct shade_cone at0 = cone_at(cone[i], dir[i], hits[i].t);
+        struct surface *rs = &reflected_surf[i];
+        surface_fetch(sc, &rhits[i], pk.dir[i], cone_at(at0, pk.dir[i], rhits[i].t).width, 1,
+                      rs);
+        reflected[i].found = 1;
+        reflected[i].hit = rhits[i];
+        reflected[i].surface = rs;
+        reflected[i].shadow_known = 0;
+        reflected[i].shadow_occluded = 0;
+        reflected[i].reflect_known = 0;
+        reflected[i].reflected = NULL;
+        primed[i].reflected = &reflected[i];
+        if (sc->state->lighting_used && !rs->lighting)
+            continue; /* unlit: no shadow rays */
+        offset_point(rs->p, rs->ng, rs->p_error, origin[i]);
+        lit |= 1u << i;
+    }
+    prime_light_packets(sc, reflected_surf, (const float(*)[3])origin, lit, reflected);
+}
+
+void shade_prime_shadows(const struct shade_context *sc, unsigned found,
+                         const struct trace_scene_hit hits[TRACE_PACKET],
+                         const float org[TRACE_PACKET][3], const float dir[TRACE_PACKET][3],
+                         const struct shade_cone cone[TRACE_PACKET],
+                         struct surface *surf,
+                         struct shade_primed primed[TRACE_PACKET],
+                         struct shade_primed reflected[TRACE_PACKET])
+{
+    const struct render_state *st = sc->state;
+    /* A frame with a hit filter (sc->shadows, render/secondary.h) traces
+     * its packets with the filter, which packet_scene.c applies ray by
+     * ray as the single walk does. */
+    if (st->shading != RENDER_WHITTED)
+        return;
+    float origin[TRACE_PACKET][3];
+    unsigned lit = 0;
+    for (int i = 0; i < TRACE_PACKET; i++) {
+        if (!(found >> i & 1u))
+            continue;
+        /* A first hit GL does not draw (culled, outlined) gives the pixel
+         * to a hit behind it: not primed, so no ray the shading does not
+         * ask for is traced. */
+        if (!gl_hit_drawn(sc, dir[i], &hits[i]))
+            continue;
+        /* Nor does a first hit a clip plane removes: blend.c shades
+         * another hit behind it or at its distance. */
+        if (sc->clipping && blend_hit_clipped(sc, org[i], dir[i], &hits[i]))
+            continue;
+        surface_fetch(sc, &hits[i], dir[i], cone_at(cone[i], dir[i], hits[i].t).width, 0,
+                      &surf[i]);
+        primed[i].surface = &surf[i];
+        primed[i].shadow_known = 0;
+        primed[i].shadow_occluded = 0;
+        primed[i].reflect_known = 0;
+        if (st->lighting_used && !surf[i].lighting)
+            continue; /* unlit: no shadow rays */
+        offset_point(surf[i].p, surf[i].ng, surf[i].p_error, origin[i]);
+        lit |= 1u << i;
+    }
+    prime_reflections(sc, hits, dir, cone, surf, surf + TRACE_PACKET, primed, reflected);
+    prime_light_packets(sc, surf, (const float(*)[3])origin, lit, primed);
 }
 
 static void eye_hits(const struct shade_context *sc, int n, const float *const dir[],

@@ -69,6 +69,9 @@ struct shade_primed {
     int reflect_known;
     int reflect_found;
     struct trace_scene_hit reflect_hit;
+    /* With reflect_found: that hit primed for shade_hit at depth 1 (its
+     * surface and shadow rays), or NULL. */
+    const struct shade_primed *reflected;
 };
 
 /* The frame's instance a hit belongs to: its appearance, clip planes and
@@ -157,7 +160,8 @@ void shade_prime_shadows(const struct shade_context *sc, unsigned found,
                          const float org[TRACE_PACKET][3], const float dir[TRACE_PACKET][3],
                          const struct shade_cone cone[TRACE_PACKET],
                          struct surface *surf,
-                         struct shade_primed primed[TRACE_PACKET]);
+                         struct shade_primed primed[TRACE_PACKET],
+                         struct shade_primed reflected[TRACE_PACKET]);
 
 /*
  * Moves a point off a surface along the unit normal n by
