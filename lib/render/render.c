@@ -979,8 +979,9 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
             }
             /* Whitted shading's shadow rays of the block's first hits,
              * one packet per light, and the surfaces they start on. */
-            struct shade_primed primed[TRACE_PACKET], reflected[TRACE_PACKET];
-            struct surface surf[2 * TRACE_PACKET];
+            struct shade_primed primed[TRACE_PACKET];
+            struct shade_primed reflected[SHADE_PRIME_DEPTHS * TRACE_PACKET];
+            struct surface surf[(1 + SHADE_PRIME_DEPTHS) * TRACE_PACKET];
             for (int i = 0; i < TRACE_PACKET; i++) {
                 primed[i].found = (int)(found >> i & 1u);
                 if (primed[i].found)

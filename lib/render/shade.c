@@ -412,30 +412,39 @@ static void prime_light_packets(const struct shade_context *sc, const struct sur
 }
 
 /*
- * The reflected rays of a block's primed first hits (shade_hit's depth 0
- * with a reflective surface), traced together when they are at least
- * two and coherent (trace_packet_coherent): on a BART robots Whitted
- * frame every camera ray's hit reflects and 82 % of the blocks' reflected
- * rays pass the test.  Each ray is shade_hit's own (the same unit
- * direction, reflection and offset operations), and a packet's hits are
- * the single rays' (trace/packet_scene.h): shade_hit takes primed[i]'s
- * answer for it instead of tracing it alone.
+ * The reflected rays of a block's primed hits at `depth` (hits[i] of the
+ * ray along dir[i] with cone[i], its surface surf[i], primed[i]; camera
+ * rays at depth 0) with a reflective surface, traced together when they
+ * are at least two and coherent (trace_packet_coherent): on a BART robots
+ * Whitted frame every camera ray's hit reflects and 82 % of the blocks'
+ * reflected rays pass the test.  Each ray is shade_hit's own (the same
+ * unit direction, reflection and offset operations), and a packet's hits
+ * are the single rays' (trace/packet_scene.h): shade_hit takes
+ * primed[i]'s answer instead of tracing it alone.  A reflected hit's
+ * surface is fetched as shade_hit fetches it at depth + 1 (its cone: the
+ * ray's at its hit, then along the reflected ray) into next_surf[i] and
+ * primed in next[i] (its direction and cone in next_dir[i] and
+ * next_cone[i]), its shadow rays traced in packets too.  Returns the
+ * mask of the rays primed in next.
  */
-static void prime_reflections(const struct shade_context *sc,
-                              const struct trace_scene_hit hits[TRACE_PACKET],
-                              const float dir[TRACE_PACKET][3],
-                              const struct shade_cone cone[TRACE_PACKET],
-                              const struct surface *surf, struct surface *reflected_surf,
-                              struct shade_primed primed[TRACE_PACKET],
-                              struct shade_primed reflected[TRACE_PACKET])
+static unsigned prime_reflections(const struct shade_context *sc, int depth,
+                                  const struct trace_scene_hit hits[TRACE_PACKET],
+                                  const float dir[TRACE_PACKET][3],
+                                  const struct shade_cone cone[TRACE_PACKET],
+                                  const struct surface *surf,
+                                  struct shade_primed primed[TRACE_PACKET],
+                                  struct surface *next_surf, struct shade_primed next[TRACE_PACKET],
+                                  float next_dir[TRACE_PACKET][3],
+                                  struct shade_cone next_cone[TRACE_PACKET])
 {
-    if (sc->state->max_depth <= 0)
-        return;
+    if (depth >= sc->state->max_depth)
+        return 0;
     struct trace_packet pk;
     const float *dirs[TRACE_PACKET];
     int n = 0;
     pk.active = 0;
     for (int i = 0; i < TRACE_PACKET; i++) {
+        next[i].surface = NULL;
         if (primed[i].surface != &surf[i] || !(surf[i].reflectivity > 0.0f))
             continue;
         const struct surface *sp = &surf[i];
@@ -451,7 +460,7 @@ static void prime_reflections(const struct shade_context *sc,
         dirs[n++] = pk.dir[i];
     }
     if (n < 2 || !trace_packet_coherent(dirs, n))
-        return;
+        return 0;
     struct trace_scene_hit rhits[TRACE_PACKET];
     const unsigned found = trace_scene_closest_packet(sc->rays, &pk, rhits, sc->counters);
     float origin[TRACE_PACKET][3];
@@ -465,27 +474,26 @@ static void prime_reflections(const struct shade_context *sc,
         if (!primed[i].reflect_found)
             continue;
         primed[i].reflect_hit = rhits[i];
-        /* The reflected hit's surface as shade_hit fetches it at depth 1
-         * (its cone: the camera ray's at its hit, then along the
-         * reflected ray), and its shadow rays in packets too. */
-        const struct shade_cone at0 = cone_at(cone[i], dir[i], hits[i].t);
-        struct surface *rs = &reflected_surf[i];
-        surface_fetch(sc, &rhits[i], pk.dir[i], cone_at(at0, pk.dir[i], rhits[i].t).width, 1,
-                      rs);
-        reflected[i].found = 1;
-        reflected[i].hit = rhits[i];
-        reflected[i].surface = rs;
-        reflected[i].shadow_known = 0;
-        reflected[i].shadow_occluded = 0;
-        reflected[i].reflect_known = 0;
-        reflected[i].reflected = NULL;
-        primed[i].reflected = &reflected[i];
+        next_cone[i] = cone_at(cone[i], dir[i], hits[i].t);
+        memcpy(next_dir[i], pk.dir[i], sizeof(next_dir[i]));
+        struct surface *rs = &next_surf[i];
+        surface_fetch(sc, &rhits[i], pk.dir[i], cone_at(next_cone[i], pk.dir[i], rhits[i].t).width,
+                      depth + 1, rs);
+        next[i].found = 1;
+        next[i].hit = rhits[i];
+        next[i].surface = rs;
+        next[i].shadow_known = 0;
+        next[i].shadow_occluded = 0;
+        next[i].reflect_known = 0;
+        next[i].reflected = NULL;
+        primed[i].reflected = &next[i];
         if (sc->state->lighting_used && !rs->lighting)
             continue; /* unlit: no shadow rays */
         offset_point(rs->p, rs->ng, rs->p_error, origin[i]);
         lit |= 1u << i;
     }
-    prime_light_packets(sc, reflected_surf, (const float(*)[3])origin, lit, reflected);
+    prime_light_packets(sc, next_surf, (const float(*)[3])origin, lit, next);
+    return found & pk.active;
 }
 
 void shade_prime_shadows(const struct shade_context *sc, unsigned found,
@@ -494,7 +502,7 @@ void shade_prime_shadows(const struct shade_context *sc, unsigned found,
                          const struct shade_cone cone[TRACE_PACKET],
                          struct surface *surf,
                          struct shade_primed primed[TRACE_PACKET],
-                         struct shade_primed reflected[TRACE_PACKET])
+                         struct shade_primed *reflected)
 {
     const struct render_state *st = sc->state;
     /* A frame with a hit filter (sc->shadows, render/secondary.h) traces
@@ -527,7 +535,29 @@ void shade_prime_shadows(const struct shade_context *sc, unsigned found,
         offset_point(surf[i].p, surf[i].ng, surf[i].p_error, origin[i]);
         lit |= 1u << i;
     }
-    prime_reflections(sc, hits, dir, cone, surf, surf + TRACE_PACKET, primed, reflected);
+    /* The reflected rays depth by depth, while some are primed. */
+    struct trace_scene_hit level_hits[SHADE_PRIME_DEPTHS][TRACE_PACKET];
+    float level_dir[SHADE_PRIME_DEPTHS][TRACE_PACKET][3];
+    struct shade_cone level_cone[SHADE_PRIME_DEPTHS][TRACE_PACKET];
+    const struct trace_scene_hit *at_hits = hits;
+    const float(*at_dir)[3] = dir;
+    const struct shade_cone *at_cone = cone;
+    struct shade_primed *at_primed = primed;
+    for (int d = 0; d < SHADE_PRIME_DEPTHS; d++) {
+        struct shade_primed *next = reflected + d * TRACE_PACKET;
+        const unsigned got = prime_reflections(
+            sc, d, at_hits, at_dir, at_cone, surf + d * TRACE_PACKET, at_primed,
+            surf + (d + 1) * TRACE_PACKET, next, level_dir[d], level_cone[d]);
+        if (!got)
+            break;
+        for (int i = 0; i < TRACE_PACKET; i++)
+            if (got >> i & 1u)
+                level_hits[d][i] = next[i].hit;
+        at_hits = level_hits[d];
+        at_dir = (const float(*)[3])level_dir[d];
+        at_cone = level_cone[d];
+        at_primed = next;
+    }
     prime_light_packets(sc, surf, (const float(*)[3])origin, lit, primed);
 }
 

@@ -13,6 +13,12 @@
  * have their own, deeper hits share the last. */
 #define SHADE_CACHES 4
 
+/* The reflection depths shade_prime_shadows traces ahead in packets:
+ * shade_prime_shadows' surf then has (1 + SHADE_PRIME_DEPTHS) *
+ * TRACE_PACKET entries, its `reflected` SHADE_PRIME_DEPTHS * TRACE_PACKET
+ * (depth d + 1 at d * TRACE_PACKET). */
+#define SHADE_PRIME_DEPTHS 3
+
 /* Per-thread context for shading one ray tree. */
 struct shade_context {
     const struct render_state *state;
@@ -148,12 +154,16 @@ shade_eye_hits_fn shade_eye_hits_avx2_unit(void);
  * clipped, lit), surf[i] gets its surface and primed[i] points at it
  * with the answers of the shadow rays traced in a packet, through the
  * frame's shadow filter (sc->shadows, render/secondary.h) when it has
- * one (surf has TRACE_PACKET entries); primed[i]'s other fields are left
+ * one (surf has (1 + SHADE_PRIME_DEPTHS) * TRACE_PACKET entries); primed[i]'s other fields are left
  * alone.  A light whose rays are fewer than two or not coherent
  * (trace_packet_coherent) leaves them to the shading, ray by ray.  The
  * rays are computed by local_whitted's own operations and a packet's
  * answers are the single rays' (trace/packet_scene.h), so the image and
- * the ray count are those of single rays.
+ * the ray count are those of single rays.  The reflected rays of the
+ * primed surfaces are traced ahead too, depth by depth up to
+ * SHADE_PRIME_DEPTHS, in a packet where at least two are coherent: their
+ * hits' surfaces go to surf[TRACE_PACKET...], primed in `reflected`
+ * (primed[i].reflected and on), with their shadow rays as above.
  */
 void shade_prime_shadows(const struct shade_context *sc, unsigned found,
                          const struct trace_scene_hit hits[TRACE_PACKET],
@@ -161,7 +171,7 @@ void shade_prime_shadows(const struct shade_context *sc, unsigned found,
                          const struct shade_cone cone[TRACE_PACKET],
                          struct surface *surf,
                          struct shade_primed primed[TRACE_PACKET],
-                         struct shade_primed reflected[TRACE_PACKET]);
+                         struct shade_primed *reflected);
 
 /*
  * Moves a point off a surface along the unit normal n by
