@@ -465,6 +465,11 @@ static unsigned prime_reflections(const struct shade_context *sc, int depth,
     const unsigned found = trace_scene_closest_packet(sc->rays, &pk, rhits, sc->counters);
     float origin[TRACE_PACKET][3];
     unsigned lit = 0;
+    const struct trace_scene_hit *fetch_hit[TRACE_PACKET];
+    const float *fetch_dir[TRACE_PACKET];
+    float fetch_width[TRACE_PACKET];
+    struct surface *fetch_surf[TRACE_PACKET];
+    int fetched[TRACE_PACKET], nf = 0;
     for (int i = 0; i < TRACE_PACKET; i++) {
         if (!(pk.active >> i & 1u))
             continue;
@@ -476,9 +481,16 @@ static unsigned prime_reflections(const struct shade_context *sc, int depth,
         primed[i].reflect_hit = rhits[i];
         next_cone[i] = cone_at(cone[i], dir[i], hits[i].t);
         memcpy(next_dir[i], pk.dir[i], sizeof(next_dir[i]));
-        struct surface *rs = &next_surf[i];
-        surface_fetch(sc, &rhits[i], pk.dir[i], cone_at(next_cone[i], pk.dir[i], rhits[i].t).width,
-                      depth + 1, rs);
+        fetch_hit[nf] = &rhits[i];
+        fetch_dir[nf] = next_dir[i];
+        fetch_width[nf] = cone_at(next_cone[i], pk.dir[i], rhits[i].t).width;
+        fetch_surf[nf] = &next_surf[i];
+        fetched[nf++] = i;
+    }
+    surface_fetches(sc, nf, fetch_hit, fetch_dir, fetch_width, depth + 1, fetch_surf);
+    for (int f = 0; f < nf; f++) {
+        const int i = fetched[f];
+        const struct surface *rs = &next_surf[i];
         next[i].found = 1;
         next[i].hit = rhits[i];
         next[i].surface = rs;
@@ -512,6 +524,11 @@ void shade_prime_shadows(const struct shade_context *sc, unsigned found,
         return;
     float origin[TRACE_PACKET][3];
     unsigned lit = 0;
+    const struct trace_scene_hit *fetch_hit[TRACE_PACKET];
+    const float *fetch_dir[TRACE_PACKET];
+    float fetch_width[TRACE_PACKET];
+    struct surface *fetch_surf[TRACE_PACKET];
+    int fetched[TRACE_PACKET], nf = 0;
     for (int i = 0; i < TRACE_PACKET; i++) {
         if (!(found >> i & 1u))
             continue;
@@ -524,8 +541,16 @@ void shade_prime_shadows(const struct shade_context *sc, unsigned found,
          * another hit behind it or at its distance. */
         if (sc->clipping && blend_hit_clipped(sc, org[i], dir[i], &hits[i]))
             continue;
-        surface_fetch(sc, &hits[i], dir[i], cone_at(cone[i], dir[i], hits[i].t).width, 0,
-                      &surf[i]);
+        fetch_hit[nf] = &hits[i];
+        fetch_dir[nf] = dir[i];
+        fetch_width[nf] = cone_at(cone[i], dir[i], hits[i].t).width;
+        fetch_surf[nf] = &surf[i];
+        fetched[nf++] = i;
+    }
+    /* The surfaces together: their levels of detail two at a time. */
+    surface_fetches(sc, nf, fetch_hit, fetch_dir, fetch_width, 0, fetch_surf);
+    for (int f = 0; f < nf; f++) {
+        const int i = fetched[f];
         primed[i].surface = &surf[i];
         primed[i].shadow_known = 0;
         primed[i].shadow_occluded = 0;

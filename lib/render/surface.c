@@ -983,8 +983,12 @@ SURFACE_INLINE int hit_color_material(const struct hit_triangle *t, int unlit, f
     return 1;
 }
 
-void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit *hit,
-                   const float dir[3], float width, int depth, struct surface *s)
+/* surface_fetch up to the texture: with `now` the texture applied, else
+ * what its lookup needs in tx (its level of detail still to compute when
+ * tx->lod) for texture_end. */
+SURFACE_INLINE void fetch_begin(const struct shade_context *sc, const struct trace_scene_hit *hit,
+                                const float dir[3], float width, int depth, struct surface *s,
+                                int now, struct surface_texture *tx)
 {
     /* The cache of the hit's depth: a tile's pixels take turns at every
      * depth, so one cache for all held the last pixel's deepest hit. */
@@ -1055,9 +1059,40 @@ void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit 
         memcpy(s->diffuse, (k & SCENE_MATERIAL_DIFFUSE) ? call->diffuse : m->diffuse,
                sizeof(s->diffuse));
     }
-    if (texture)
+    tx->tex = NULL;
+    tx->lod = 0;
+    if (!texture)
+        return;
+    if (now)
         apply_texture(sc, cache, inst, mesh, hit->prim, v, t.b0, t.b1, t.b2, s->ng, dir, width,
                       texture, s->ambient, s->diffuse);
+    else
+        texture_begin(sc, cache, inst, mesh, hit->prim, v, t.b0, t.b1, t.b2, s->ng, dir, width,
+                      texture, 0, tx);
+}
+
+void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit *hit,
+                   const float dir[3], float width, int depth, struct surface *s)
+{
+    struct surface_texture tx;
+    fetch_begin(sc, hit, dir, width, depth, s, 1, &tx);
+}
+
+void surface_fetches(const struct shade_context *sc, int n,
+                     const struct trace_scene_hit *const hits[], const float *const dir[],
+                     const float width[], int depth, struct surface *const s[])
+{
+    struct surface_texture tex[TRACE_PACKET];
+    struct surface_texture *lod[TRACE_PACKET] = {NULL}; /* lods of them set */
+    int lods = 0;
+    for (int i = 0; i < n; i++) {
+        fetch_begin(sc, hits[i], dir[i], width[i], depth, s[i], 0, &tex[i]);
+        if (tex[i].lod)
+            lod[lods++] = &tex[i];
+    }
+    texture_lods(lod, lods);
+    for (int i = 0; i < n; i++)
+        texture_end(&tex[i], s[i]->ambient, s[i]->diffuse);
 }
 
 /*
@@ -1115,7 +1150,7 @@ void surface_fetch_colours(const struct shade_context *sc, int n,
                            const float width[], struct surface_colour s[])
 {
     struct surface_texture tex[TRACE_PACKET];
-    struct surface_texture *lod[TRACE_PACKET];
+    struct surface_texture *lod[TRACE_PACKET] = {NULL}; /* lods of them set */
     int lods = 0;
     for (int i = 0; i < n; i++) {
         fetch_colour_begin(sc, hits[i], dir[i], width[i], &s[i], &tex[i]);

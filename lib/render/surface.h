@@ -89,6 +89,15 @@ void surface_resolve_material(const struct scene_appearance *call, struct scene_
 void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit *hit,
                    const float dir[3], float width, int depth, struct surface *s);
 
+/* surface_fetch of n <= TRACE_PACKET hits of one depth (hits[i] along
+ * dir[i], the cone width[i] wide there, into *s[i]), the levels of detail
+ * of their textures two (or, in the AVX2 copy, four) at a time, as
+ * surface_fetch_colours: the same operations on the same values, so the
+ * same surfaces bit for bit. */
+void surface_fetches(const struct shade_context *sc, int n,
+                     const struct trace_scene_hit *const hits[], const float *const dir[],
+                     const float width[], int depth, struct surface *const s[]);
+
 /* What the eye light and a see-through surface's alpha read of a hit:
  * surface_fetch's normals and its material's emission, ambient and diffuse
  * colours (vertex colours and texture applied), bit for bit, without the
