@@ -411,12 +411,24 @@ static void prime_light_packets(const struct shade_context *sc, const struct sur
     }
 }
 
+/* The fewest reflected rays prime_reflections traces as a packet: with
+ * two or three (or an octant's two or three of an incoherent block) the
+ * packet cost the BART robots and kitchen more than the single rays. */
+#define PRIME_MIN_RAYS 4
+
+/* The octant of a direction, one bit a sign. */
+static int dir_octant(const float d[3])
+{
+    return (d[0] < 0.0f) | (d[1] < 0.0f) << 1 | (d[2] < 0.0f) << 2;
+}
+
 /*
  * The reflected rays of a block's primed hits at `depth` (hits[i] of the
  * ray along dir[i] with cone[i], its surface surf[i], primed[i]; camera
  * rays at depth 0) with a reflective surface, traced together when they
- * are at least two and coherent (trace_packet_coherent): on a BART robots
- * Whitted frame every camera ray's hit reflects and 82 % of the blocks'
+ * are at least PRIME_MIN_RAYS and coherent (trace_packet_coherent), else
+ * each octant's rays together when they are: on a BART robots Whitted
+ * frame every camera ray's hit reflects and 82 % of the blocks'
  * reflected rays pass the test.  Each ray is shade_hit's own (the same
  * unit direction, reflection and offset operations), and a packet's hits
  * are the single rays' (trace/packet_scene.h): shade_hit takes
@@ -459,10 +471,40 @@ static unsigned prime_reflections(const struct shade_context *sc, int depth,
         pk.active |= 1u << i;
         dirs[n++] = pk.dir[i];
     }
-    if (n < 2 || !trace_packet_coherent(dirs, n))
+    if (n < PRIME_MIN_RAYS)
         return 0;
     struct trace_scene_hit rhits[TRACE_PACKET];
-    const unsigned found = trace_scene_closest_packet(sc->rays, &pk, rhits, sc->counters);
+    unsigned found = 0;
+    if (trace_packet_coherent(dirs, n)) {
+        found = trace_scene_closest_packet(sc->rays, &pk, rhits, sc->counters);
+    } else {
+        /* The rays of each octant alone, when PRIME_MIN_RAYS or more of
+         * them are coherent; the others are left to shade_hit. */
+        unsigned rest = pk.active, traced = 0;
+        while (rest) {
+            int first = 0;
+            while (!(rest >> first & 1u))
+                first++;
+            const int octant = dir_octant(pk.dir[first]);
+            unsigned group = 0;
+            int m = 0;
+            for (int i = first; i < TRACE_PACKET; i++) {
+                if (!(rest >> i & 1u) || dir_octant(pk.dir[i]) != octant)
+                    continue;
+                group |= 1u << i;
+                dirs[m++] = pk.dir[i];
+            }
+            rest &= ~group;
+            if (m < PRIME_MIN_RAYS || !trace_packet_coherent(dirs, m))
+                continue;
+            pk.active = group;
+            found |= trace_scene_closest_packet(sc->rays, &pk, rhits, sc->counters);
+            traced |= group;
+        }
+        pk.active = traced;
+        if (!traced)
+            return 0;
+    }
     float origin[TRACE_PACKET][3];
     unsigned lit = 0;
     const struct trace_scene_hit *fetch_hit[TRACE_PACKET];
