@@ -75,8 +75,8 @@ struct shade_primed {
     int reflect_known;
     int reflect_found;
     struct trace_scene_hit reflect_hit;
-    /* With reflect_found: that hit primed for shade_hit at depth 1 (its
-     * surface and shadow rays), or NULL. */
+    /* With reflect_found: that hit primed for shade_hit one depth
+     * further (its surface and shadow rays, and on), or NULL. */
     const struct shade_primed *reflected;
 };
 
