@@ -980,7 +980,8 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
             /* Whitted shading's shadow rays of the block's first hits,
              * one packet per light, and the surfaces they start on. */
             struct shade_primed primed[TRACE_PACKET];
-            struct surface surf[TRACE_PACKET];
+            struct shade_primed reflected[SHADE_PRIME_DEPTHS * TRACE_PACKET];
+            struct surface surf[(1 + SHADE_PRIME_DEPTHS) * TRACE_PACKET];
             for (int i = 0; i < TRACE_PACKET; i++) {
                 primed[i].found = (int)(found >> i & 1u);
                 if (primed[i].found)
@@ -988,9 +989,10 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                 primed[i].surface = NULL;
                 primed[i].shadow_known = 0;
                 primed[i].shadow_occluded = 0;
+                primed[i].reflect_known = 0;
             }
             shade_prime_shadows(sc, found, hits, (const float(*)[3])pk.org,
-                                (const float(*)[3])pk.dir, cone, surf, primed);
+                                (const float(*)[3])pk.dir, cone, surf, primed, reflected);
             struct eye_batch eyes = {.n = 0};
             for (int i = 0; i < TRACE_PACKET; i++) {
                 if (!block_pixel_inside(vp, x0, y0, bx, by, i))
@@ -1036,7 +1038,8 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
 void render_tile(struct render_pass *pass, uint32_t tile, int worker)
 {
     const struct render_state *st = pass->job->state;
-    struct surface_cache cache_entry = {0};
+    struct surface_cache cache_entry[SHADE_CACHES];
+    memset(cache_entry, 0, sizeof(cache_entry));
     struct shade_context sc = {st,
                                pass->job->frame,
                                &pass->scene,
@@ -1045,9 +1048,11 @@ void render_tile(struct render_pass *pass, uint32_t tile, int worker)
                                pass->clipping,
                                pass->see_through,
                                NULL,
-                               &cache_entry,
+                               cache_entry,
                                NULL,
-                               NULL};
+                               NULL,
+                               0};
+    shade_context_lights(&sc);
     struct secondary_scenes secondary;
     secondary_scenes_init(&secondary, &sc, &pass->scene, pass->secondary);
     const int *vp = st->viewport;

@@ -8,6 +8,17 @@
 #include "render/render.h"
 #include "trace/packet_scene.h"
 
+/* The tile's surface caches (shade_context.cache): camera rays' hits and
+ * the reflection depths 1 to 3 (OpenRT's depth, bart's default) each
+ * have their own, deeper hits share the last. */
+#define SHADE_CACHES 4
+
+/* The reflection depths shade_prime_shadows traces ahead in packets:
+ * shade_prime_shadows' surf then has (1 + SHADE_PRIME_DEPTHS) *
+ * TRACE_PACKET entries, its `reflected` SHADE_PRIME_DEPTHS * TRACE_PACKET
+ * (depth d + 1 at d * TRACE_PACKET). */
+#define SHADE_PRIME_DEPTHS 3
+
 /* Per-thread context for shading one ray tree. */
 struct shade_context {
     const struct render_state *state;
@@ -26,16 +37,24 @@ struct shade_context {
      * instead of tracing again.  The same hit bit for bit
      * (trace/packet_scene.h). */
     const struct shade_primed *primed;
-    /* NULL, or the tile's cache of what surface.c derives from a hit's
-     * triangle alone (surface.h, surface_cache): writable through a
-     * const context, as it only remembers results. */
+    /* NULL, or the tile's SHADE_CACHES caches of what surface.c derives
+     * from a hit's triangle alone (surface.h, surface_cache): entry d for
+     * Whitted's hits at depth d (the last one for deeper hits), entry 0
+     * for the other shadings: writable through a const context, as they
+     * only remember results. */
     struct surface_cache *cache;
     /* What shadow rays and reflected or refracted rays trace: `scene`
      * with the filter of render/secondary.h when the frame has clip
      * planes, alpha test or blending, else `scene` itself. */
     const struct trace_scene *shadows;
     const struct trace_scene *rays;
+    /* One past the last enabled light of state->lights: Whitted's loops
+     * over the lights stop there (shade_context_lights). */
+    int light_end;
 };
+
+/* Sets sc->light_end from sc->state's lights. */
+void shade_context_lights(struct shade_context *sc);
 
 struct surface;
 
@@ -51,6 +70,14 @@ struct shade_primed {
     const struct surface *surface;
     unsigned shadow_known;
     unsigned shadow_occluded;
+    /* With `surface`: 1 when its reflected ray was traced in a packet
+     * (shade_prime_shadows), reflect_found and reflect_hit its answer. */
+    int reflect_known;
+    int reflect_found;
+    struct trace_scene_hit reflect_hit;
+    /* With reflect_found: that hit primed for shade_hit one depth
+     * further (its surface and shadow rays, and on), or NULL. */
+    const struct shade_primed *reflected;
 };
 
 /* The frame's instance a hit belongs to: its appearance, clip planes and
@@ -127,19 +154,24 @@ shade_eye_hits_fn shade_eye_hits_avx2_unit(void);
  * clipped, lit), surf[i] gets its surface and primed[i] points at it
  * with the answers of the shadow rays traced in a packet, through the
  * frame's shadow filter (sc->shadows, render/secondary.h) when it has
- * one (surf has TRACE_PACKET entries); primed[i]'s other fields are left
+ * one (surf has (1 + SHADE_PRIME_DEPTHS) * TRACE_PACKET entries); primed[i]'s other fields are left
  * alone.  A light whose rays are fewer than two or not coherent
  * (trace_packet_coherent) leaves them to the shading, ray by ray.  The
  * rays are computed by local_whitted's own operations and a packet's
  * answers are the single rays' (trace/packet_scene.h), so the image and
- * the ray count are those of single rays.
+ * the ray count are those of single rays.  The reflected rays of the
+ * primed surfaces are traced ahead too, depth by depth up to
+ * SHADE_PRIME_DEPTHS, in a packet where at least two are coherent: their
+ * hits' surfaces go to surf[TRACE_PACKET...], primed in `reflected`
+ * (primed[i].reflected and on), with their shadow rays as above.
  */
 void shade_prime_shadows(const struct shade_context *sc, unsigned found,
                          const struct trace_scene_hit hits[TRACE_PACKET],
                          const float org[TRACE_PACKET][3], const float dir[TRACE_PACKET][3],
                          const struct shade_cone cone[TRACE_PACKET],
                          struct surface *surf,
-                         struct shade_primed primed[TRACE_PACKET]);
+                         struct shade_primed primed[TRACE_PACKET],
+                         struct shade_primed *reflected);
 
 /*
  * Moves a point off a surface along the unit normal n by

@@ -22,6 +22,7 @@
 #if defined(__AVX2__) && !defined(RT_NO_SIMD)
 #define SHADE_UNIT_AVX2 1
 
+#define shade_context_lights shade_context_lights_avx2
 #define shade_eye_hits shade_eye_hits_avx2
 #define shade_hit shade_hit_avx2
 #define shade_offset_point shade_offset_point_avx2
@@ -30,6 +31,7 @@
 #define surface_fetch surface_fetch_avx2
 #define surface_fetch_colour surface_fetch_colour_avx2
 #define surface_fetch_colours surface_fetch_colours_avx2
+#define surface_fetches surface_fetches_avx2
 #define surface_resolve_material surface_resolve_material_avx2
 #define surface_texel surface_texel_avx2
 #define scene_texture_build_mipmaps scene_texture_build_mipmaps_avx2

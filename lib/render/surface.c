@@ -146,10 +146,9 @@ static void texel_vectors(const double e[3], const double f[3], const double w1[
 
 /* The cache entry of the hit's triangle (surface_cache), emptied when it
  * held another one; NULL without a cache. */
-static struct surface_cache *triangle_cache(const struct shade_context *sc,
+static struct surface_cache *triangle_cache(struct surface_cache *c,
                                             const struct scene_instance *inst, uint32_t prim)
 {
-    struct surface_cache *c = sc->cache;
     if (c && (c->inst != inst || c->prim != prim)) {
         c->inst = inst;
         c->prim = prim;
@@ -260,7 +259,7 @@ static int lod_near(double s2, double xs, double top, float *lambda)
  * last hit was on the same triangle (and, for the texel edges, the same
  * texture and coordinates), else computed into it (or into `scratch`
  * without a cache). */
-SURFACE_INLINE const struct surface_lod *lod_triangle(const struct shade_context *sc,
+SURFACE_INLINE const struct surface_lod *lod_triangle(struct surface_cache *cache,
                                                       const struct scene_texture *tex,
                                                       const struct scene_instance *inst,
                                                       const struct scene_mesh *mesh,
@@ -268,7 +267,7 @@ SURFACE_INLINE const struct surface_lod *lod_triangle(const struct shade_context
                                                       const float *const st[3],
                                                       struct surface_cache *scratch)
 {
-    struct surface_cache *c = triangle_cache(sc, inst, prim);
+    struct surface_cache *c = triangle_cache(cache, inst, prim);
     if (!c) {
         c = scratch;
         c->geometry = 0;
@@ -404,8 +403,8 @@ static float texture_lod(const struct shade_context *sc, const struct scene_text
                          const float ng[3], const float dir[3], float width)
 {
     struct surface_cache scratch;
-    return lod_ray(lod_triangle(sc, tex, inst, mesh, prim, v, st, &scratch), tex->level_count, ng,
-                   dir, width);
+    return lod_ray(lod_triangle(sc->cache, tex, inst, mesh, prim, v, st, &scratch),
+                   tex->level_count, ng, dir, width);
 }
 
 /* t's level of detail from its triangle part alone (lod_ray). */
@@ -692,9 +691,9 @@ static void projective_st(const float *const vst[3], const float q[3], float b0,
  */
 /* The texture named `name` (not 0), through the tile's cache when the
  * last textured hit had the same name. */
-static const struct scene_texture *texture_named(const struct shade_context *sc, uint32_t name)
+static const struct scene_texture *texture_named(const struct shade_context *sc,
+                                                 struct surface_cache *c, uint32_t name)
 {
-    struct surface_cache *c = sc->cache;
     if (c && c->named == name)
         return c->named_tex;
     const struct scene_texture *tex = scene_textures_lookup(sc->textures, name);
@@ -705,13 +704,16 @@ static const struct scene_texture *texture_named(const struct shade_context *sc,
     return tex;
 }
 
-SURFACE_INLINE void texture_begin(const struct shade_context *sc,
+/* What the lookup of texture `name` at a hit needs, into t; with `now`
+ * the level of detail too (t->lod stays 0), else t->lod says it is still
+ * to compute from t's copy of the triangle part (texture_lods). */
+SURFACE_INLINE void texture_begin(const struct shade_context *sc, struct surface_cache *cache,
                                   const struct scene_instance *inst, const struct scene_mesh *mesh,
                                   uint32_t prim, const uint32_t v[3], float b0, float b1, float b2,
                                   const float ng[3], const float dir[3], float width,
-                                  uint32_t name, struct surface_texture *t)
+                                  uint32_t name, int now, struct surface_texture *t)
 {
-    const struct scene_texture *tex = texture_named(sc, name);
+    const struct scene_texture *tex = texture_named(sc, cache, name);
     t->tex = NULL;
     t->lod = 0;
     if (!tex || !tex->texels)
@@ -734,7 +736,15 @@ SURFACE_INLINE void texture_begin(const struct shade_context *sc,
     }
     if (tex->min_filter != tex->mag_filter) {
         struct surface_cache scratch;
-        t->tri = *lod_triangle(sc, tex, inst, mesh, prim, v, lst, &scratch);
+        const struct surface_lod *tri =
+            lod_triangle(cache, tex, inst, mesh, prim, v, lst, &scratch);
+        if (now) {
+            /* texture_lambda's operations on the same values, without
+             * the copy of the triangle part into t. */
+            t->lambda = lod_ray(tri, tex->level_count, ng, dir, width);
+            return;
+        }
+        t->tri = *tri;
         memcpy(t->ng, ng, sizeof(t->ng));
         memcpy(t->dir, dir, sizeof(t->dir));
         t->width = width;
@@ -754,13 +764,14 @@ static void texture_end(const struct surface_texture *t, float ambient[4], float
     }
 }
 
-static void apply_texture(const struct shade_context *sc, const struct scene_instance *inst,
+static void apply_texture(const struct shade_context *sc, struct surface_cache *cache,
+                          const struct scene_instance *inst,
                           const struct scene_mesh *mesh, uint32_t prim, const uint32_t v[3],
                           float b0, float b1, float b2, const float ng[3], const float dir[3],
                           float width, uint32_t name, float ambient[4], float diffuse[4])
 {
     struct surface_texture t;
-    texture_begin(sc, inst, mesh, prim, v, b0, b1, b2, ng, dir, width, name, &t);
+    texture_begin(sc, cache, inst, mesh, prim, v, b0, b1, b2, ng, dir, width, name, 1, &t);
     if (t.lod)
         texture_lambda(&t);
     texture_end(&t, ambient, diffuse);
@@ -849,6 +860,21 @@ void surface_resolve_material(const struct scene_appearance *call, struct scene_
     m->inherit = 0;
 }
 
+/* The texture name of material m as resolved under the call's material
+ * (surface_resolve_material's rule: the bound name and the enable each
+ * from where the list takes it). */
+SURFACE_INLINE uint32_t material_texture(const struct scene_material *m,
+                                         const struct scene_material *call)
+{
+    const uint32_t k = m->inherit;
+    if (!(k & (SCENE_MATERIAL_TEXTURE | SCENE_MATERIAL_TEXTURE_ENABLE)))
+        return m->texture;
+    const uint32_t bound = (k & SCENE_MATERIAL_TEXTURE) ? call->texture_bound : m->texture_bound;
+    const uint32_t on =
+        (k & SCENE_MATERIAL_TEXTURE_ENABLE) ? call->texture_enabled : m->texture_enabled;
+    return on ? bound : 0;
+}
+
 /* The triangle of a hit and what its barycentrics and flags say. */
 struct hit_triangle {
     const struct scene_instance *inst;
@@ -878,7 +904,7 @@ SURFACE_INLINE void hit_triangle(const struct shade_context *sc,
 /* The unit geometric normal facing the ray along dir, whether the ray
  * hit the front face, and the shading normal on the same side.  Inlined:
  * the call's spills and argument set-up were a tenth of its cost. */
-SURFACE_INLINE void hit_normals(const struct shade_context *sc, const struct hit_triangle *t,
+SURFACE_INLINE void hit_normals(struct surface_cache *cache, const struct hit_triangle *t,
                                 uint32_t prim, const float dir[3], float ng[3], float n[3],
                                 int *front)
 {
@@ -886,7 +912,7 @@ SURFACE_INLINE void hit_normals(const struct shade_context *sc, const struct hit
     const uint32_t *v = t->v;
     /* The triangle's unit normal, from the tile's cache when the last hit
      * was on the same triangle (surface_cache). */
-    struct surface_cache *c = triangle_cache(sc, t->inst, prim);
+    struct surface_cache *c = triangle_cache(cache, t->inst, prim);
     int unit;
     if (c && c->normal) {
         memcpy(ng, c->ng, sizeof(c->ng));
@@ -957,9 +983,17 @@ SURFACE_INLINE int hit_color_material(const struct hit_triangle *t, int unlit, f
     return 1;
 }
 
-void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit *hit,
-                   const float dir[3], float width, struct surface *s)
+/* surface_fetch up to the texture: with `now` the texture applied, else
+ * what its lookup needs in tx (its level of detail still to compute when
+ * tx->lod) for texture_end. */
+SURFACE_INLINE void fetch_begin(const struct shade_context *sc, const struct trace_scene_hit *hit,
+                                const float dir[3], float width, int depth, struct surface *s,
+                                int now, struct surface_texture *tx)
 {
+    /* The cache of the hit's depth: a tile's pixels take turns at every
+     * depth, so one cache for all held the last pixel's deepest hit. */
+    struct surface_cache *cache =
+        sc->cache ? &sc->cache[depth < SHADE_CACHES ? depth : SHADE_CACHES - 1] : NULL;
     struct hit_triangle t;
     hit_triangle(sc, hit, &t);
     const struct scene_instance *inst = t.inst;
@@ -993,31 +1027,72 @@ void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit 
         norm = mat4_fmax_left(norm, fabs(m[k]) + fabs(m[4 + k]) + fabs(m[8 + k]));
     }
     s->p_error = (float)(0.5 * FLT_EPSILON * (max_world + norm * max_object) + FLT_MIN);
-    hit_normals(sc, &t, hit->prim, dir, s->ng, s->n, &s->front);
+    hit_normals(cache, &t, hit->prim, dir, s->ng, s->n, &s->front);
 
-    const struct scene_material *recorded = &mesh->materials[mesh->tri_material[hit->prim]];
-    if (recorded->inherit) {
-        s->resolved = *recorded;
-        surface_resolve_material(&inst->appearance, &s->resolved);
-        s->mat = &s->resolved;
-    } else {
-        s->mat = recorded;
-    }
+    /* The material's properties one by one, as surface_resolve_material
+     * resolves them: the call's (the instance's) where the list inherits
+     * them, else the recorded ones. */
+    const struct scene_material *m = &mesh->materials[mesh->tri_material[hit->prim]];
+    const struct scene_material *call = &inst->appearance.material;
+    const uint32_t k = m->inherit;
+    memcpy(s->emission, (k & SCENE_MATERIAL_EMISSION) ? call->emission : m->emission,
+           sizeof(s->emission));
+    memcpy(s->specular, (k & SCENE_MATERIAL_SPECULAR) ? call->specular : m->specular,
+           sizeof(s->specular));
+    s->shininess = (k & SCENE_MATERIAL_SHININESS) ? call->shininess : m->shininess;
+    s->reflectivity = (k & SCENE_MATERIAL_REFLECTIVITY) ? call->reflectivity : m->reflectivity;
+    s->transparency = (k & SCENE_MATERIAL_TRANSPARENCY) ? call->transparency : m->transparency;
+    s->ior = (k & SCENE_MATERIAL_IOR) ? call->ior : m->ior;
+    s->lighting = (k & SCENE_MATERIAL_LIGHTING) ? call->lighting : m->lighting;
+    const uint32_t texture = material_texture(m, call);
     /* Unlit in the eye-light and Whitted modes (render_state.lighting_used,
      * shade.c): the primitive shows its colour, which the ambient and
      * diffuse material carry from here on, as under RT_COLOR_MATERIAL, so
      * that the texture modulates it and blending takes its alpha. */
-    const int unlit = sc->state->lighting_used && !s->mat->lighting &&
+    const int unlit = sc->state->lighting_used && !s->lighting &&
                       sc->state->shading != RENDER_FIXED_FUNCTION;
     if (hit_color_material(&t, unlit, s->ambient)) {
         memcpy(s->diffuse, s->ambient, sizeof(s->diffuse));
     } else {
-        memcpy(s->ambient, s->mat->ambient, sizeof(s->ambient));
-        memcpy(s->diffuse, s->mat->diffuse, sizeof(s->diffuse));
+        memcpy(s->ambient, (k & SCENE_MATERIAL_AMBIENT) ? call->ambient : m->ambient,
+               sizeof(s->ambient));
+        memcpy(s->diffuse, (k & SCENE_MATERIAL_DIFFUSE) ? call->diffuse : m->diffuse,
+               sizeof(s->diffuse));
     }
-    if (s->mat->texture)
-        apply_texture(sc, inst, mesh, hit->prim, v, t.b0, t.b1, t.b2, s->ng, dir, width,
-                      s->mat->texture, s->ambient, s->diffuse);
+    tx->tex = NULL;
+    tx->lod = 0;
+    if (!texture)
+        return;
+    if (now)
+        apply_texture(sc, cache, inst, mesh, hit->prim, v, t.b0, t.b1, t.b2, s->ng, dir, width,
+                      texture, s->ambient, s->diffuse);
+    else
+        texture_begin(sc, cache, inst, mesh, hit->prim, v, t.b0, t.b1, t.b2, s->ng, dir, width,
+                      texture, 0, tx);
+}
+
+void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit *hit,
+                   const float dir[3], float width, int depth, struct surface *s)
+{
+    struct surface_texture tx;
+    fetch_begin(sc, hit, dir, width, depth, s, 1, &tx);
+}
+
+void surface_fetches(const struct shade_context *sc, int n,
+                     const struct trace_scene_hit *const hits[], const float *const dir[],
+                     const float width[], int depth, struct surface *const s[])
+{
+    struct surface_texture tex[TRACE_PACKET];
+    struct surface_texture *lod[TRACE_PACKET] = {NULL}; /* lods of them set */
+    int lods = 0;
+    for (int i = 0; i < n; i++) {
+        fetch_begin(sc, hits[i], dir[i], width[i], depth, s[i], 0, &tex[i]);
+        if (tex[i].lod)
+            lod[lods++] = &tex[i];
+    }
+    texture_lods(lod, lods);
+    for (int i = 0; i < n; i++)
+        texture_end(&tex[i], s[i]->ambient, s[i]->diffuse);
 }
 
 /*
@@ -1035,19 +1110,13 @@ SURFACE_INLINE void fetch_colour_begin(const struct shade_context *sc,
 {
     struct hit_triangle t;
     hit_triangle(sc, hit, &t);
-    hit_normals(sc, &t, hit->prim, dir, s->ng, s->n, &s->front);
+    hit_normals(sc->cache, &t, hit->prim, dir, s->ng, s->n, &s->front);
     const struct scene_material *m = &t.mesh->materials[t.mesh->tri_material[hit->prim]];
     const struct scene_material *call = &t.inst->appearance.material;
     const uint32_t k = m->inherit;
     memcpy(s->emission, (k & SCENE_MATERIAL_EMISSION) ? call->emission : m->emission,
            sizeof(s->emission));
-    uint32_t texture = m->texture;
-    if (k & (SCENE_MATERIAL_TEXTURE | SCENE_MATERIAL_TEXTURE_ENABLE)) {
-        uint32_t bound = (k & SCENE_MATERIAL_TEXTURE) ? call->texture_bound : m->texture_bound;
-        uint32_t on = (k & SCENE_MATERIAL_TEXTURE_ENABLE) ? call->texture_enabled
-                                                          : m->texture_enabled;
-        texture = on ? bound : 0;
-    }
+    const uint32_t texture = material_texture(m, call);
     s->lighting = (k & SCENE_MATERIAL_LIGHTING) ? call->lighting : m->lighting;
     const int unlit = sc->state->lighting_used && !s->lighting &&
                       sc->state->shading != RENDER_FIXED_FUNCTION;
@@ -1062,8 +1131,8 @@ SURFACE_INLINE void fetch_colour_begin(const struct shade_context *sc,
     tx->tex = NULL;
     tx->lod = 0;
     if (texture)
-        texture_begin(sc, t.inst, t.mesh, hit->prim, t.v, t.b0, t.b1, t.b2, s->ng, dir, width,
-                      texture, tx);
+        texture_begin(sc, sc->cache, t.inst, t.mesh, hit->prim, t.v, t.b0, t.b1, t.b2, s->ng,
+                      dir, width, texture, 0, tx);
 }
 
 void surface_fetch_colour(const struct shade_context *sc, const struct trace_scene_hit *hit,
@@ -1081,7 +1150,7 @@ void surface_fetch_colours(const struct shade_context *sc, int n,
                            const float width[], struct surface_colour s[])
 {
     struct surface_texture tex[TRACE_PACKET];
-    struct surface_texture *lod[TRACE_PACKET];
+    struct surface_texture *lod[TRACE_PACKET] = {NULL}; /* lods of them set */
     int lods = 0;
     for (int i = 0; i < n; i++) {
         fetch_colour_begin(sc, hits[i], dir[i], width[i], &s[i], &tex[i]);

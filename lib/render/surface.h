@@ -14,12 +14,15 @@
 /*
  * What surface.c computes from a hit's triangle (its instance and
  * primitive) and not from the ray: the unit geometric normal in world
- * space and the triangle-only part of the texture level of detail.  One
- * per render thread and tile (render.c, shade_context.cache), for the
- * last triangle shaded: neighbouring pixels mostly hit the same one, and
- * a hit of another triangle replaces it.  The cached values are the ones
- * the computation gives, bit for bit, so images do not depend on the
- * order pixels are shaded in.
+ * space and the triangle-only part of the texture level of detail.
+ * SHADE_CACHES per render thread and tile (render.c,
+ * shade_context.cache), one per Whitted depth, for the last triangle
+ * shaded at that depth: neighbouring pixels' rays of one depth mostly hit
+ * the same one, and a hit of another triangle replaces it.  (One entry
+ * for all depths held a pixel's deepest hit when the next pixel's
+ * reflection came: on a BART robots Whitted frame three fetches in four
+ * missed.)  The cached values are the ones the computation gives, bit
+ * for bit, so images do not depend on the order pixels are shaded in.
  */
 struct scene_texture;
 
@@ -58,13 +61,20 @@ struct surface {
     float p_error; /* bound on |p - exact point on the surface| */
     int front;   /* the ray hit the front face (counter-clockwise side) */
     /* The ambient and diffuse colours with vertex colours and the texture
-     * applied; the rest of the material in mat: the recorded one, or
-     * `resolved` when it inherits from the call (the 260-byte copy only
-     * then). */
+     * applied, and of the rest of the material what the eye-light and
+     * Whitted shadings read, each property the recorded one or, when it
+     * inherits it (scene_material.inherit), the call's: what
+     * surface_resolve_material gives for it, without copying and
+     * resolving the whole material (some 260 bytes) at every hit. */
     float ambient[4];
     float diffuse[4];
-    const struct scene_material *mat;
-    struct scene_material resolved;
+    float emission[4];
+    float specular[4];
+    float shininess;
+    float reflectivity;
+    float transparency;
+    float ior;
+    int lighting; /* RT_LIGHTING as the primitive was drawn */
 };
 
 /* Completes a material recorded in a display list with the properties it
@@ -74,9 +84,19 @@ struct scene_appearance;
 void surface_resolve_material(const struct scene_appearance *call, struct scene_material *m);
 
 /* The surface at a hit of a ray along dir whose cone is `width` wide
- * there (world units). */
+ * there (world units), `depth` the ray's Whitted depth (0 for camera
+ * rays): it picks the tile's cache entry (shade_context.cache). */
 void surface_fetch(const struct shade_context *sc, const struct trace_scene_hit *hit,
-                   const float dir[3], float width, struct surface *s);
+                   const float dir[3], float width, int depth, struct surface *s);
+
+/* surface_fetch of n <= TRACE_PACKET hits of one depth (hits[i] along
+ * dir[i], the cone width[i] wide there, into *s[i]), the levels of detail
+ * of their textures two (or, in the AVX2 copy, four) at a time, as
+ * surface_fetch_colours: the same operations on the same values, so the
+ * same surfaces bit for bit. */
+void surface_fetches(const struct shade_context *sc, int n,
+                     const struct trace_scene_hit *const hits[], const float *const dir[],
+                     const float width[], int depth, struct surface *const s[]);
 
 /* What the eye light and a see-through surface's alpha read of a hit:
  * surface_fetch's normals and its material's emission, ambient and diffuse
