@@ -983,6 +983,31 @@ SURFACE_INLINE int hit_color_material(const struct hit_triangle *t, int unlit, f
     return 1;
 }
 
+/* A hit's ambient and diffuse colours: the vertex colour where
+ * hit_color_material gives it (the primitive unlit in the eye-light and
+ * Whitted modes, render_state.lighting_used, shade.c: it shows its
+ * colour, which the ambient and diffuse material carry from here on, as
+ * under RT_COLOR_MATERIAL, so that the texture modulates it and blending
+ * takes its alpha), else the material's, the call's where the list
+ * inherits them (as surface_resolve_material). */
+SURFACE_INLINE void hit_colours(const struct shade_context *sc, const struct hit_triangle *t,
+                                const struct scene_material *m,
+                                const struct scene_material *call, int lighting,
+                                float ambient[4], float diffuse[4])
+{
+    const uint32_t k = m->inherit;
+    const int unlit = sc->state->lighting_used && !lighting &&
+                      sc->state->shading != RENDER_FIXED_FUNCTION;
+    if (hit_color_material(t, unlit, ambient)) {
+        memcpy(diffuse, ambient, 4 * sizeof(float));
+    } else {
+        memcpy(ambient, (k & SCENE_MATERIAL_AMBIENT) ? call->ambient : m->ambient,
+               4 * sizeof(float));
+        memcpy(diffuse, (k & SCENE_MATERIAL_DIFFUSE) ? call->diffuse : m->diffuse,
+               4 * sizeof(float));
+    }
+}
+
 /* surface_fetch up to the texture: with `now` the texture applied, else
  * what its lookup needs in tx (its level of detail still to compute when
  * tx->lod) for texture_end. */
@@ -1045,20 +1070,7 @@ SURFACE_INLINE void fetch_begin(const struct shade_context *sc, const struct tra
     s->ior = (k & SCENE_MATERIAL_IOR) ? call->ior : m->ior;
     s->lighting = (k & SCENE_MATERIAL_LIGHTING) ? call->lighting : m->lighting;
     const uint32_t texture = material_texture(m, call);
-    /* Unlit in the eye-light and Whitted modes (render_state.lighting_used,
-     * shade.c): the primitive shows its colour, which the ambient and
-     * diffuse material carry from here on, as under RT_COLOR_MATERIAL, so
-     * that the texture modulates it and blending takes its alpha. */
-    const int unlit = sc->state->lighting_used && !s->lighting &&
-                      sc->state->shading != RENDER_FIXED_FUNCTION;
-    if (hit_color_material(&t, unlit, s->ambient)) {
-        memcpy(s->diffuse, s->ambient, sizeof(s->diffuse));
-    } else {
-        memcpy(s->ambient, (k & SCENE_MATERIAL_AMBIENT) ? call->ambient : m->ambient,
-               sizeof(s->ambient));
-        memcpy(s->diffuse, (k & SCENE_MATERIAL_DIFFUSE) ? call->diffuse : m->diffuse,
-               sizeof(s->diffuse));
-    }
+    hit_colours(sc, &t, m, call, s->lighting, s->ambient, s->diffuse);
     tx->tex = NULL;
     tx->lod = 0;
     if (!texture)
@@ -1118,16 +1130,7 @@ SURFACE_INLINE void fetch_colour_begin(const struct shade_context *sc,
            sizeof(s->emission));
     const uint32_t texture = material_texture(m, call);
     s->lighting = (k & SCENE_MATERIAL_LIGHTING) ? call->lighting : m->lighting;
-    const int unlit = sc->state->lighting_used && !s->lighting &&
-                      sc->state->shading != RENDER_FIXED_FUNCTION;
-    if (hit_color_material(&t, unlit, s->ambient)) {
-        memcpy(s->diffuse, s->ambient, sizeof(s->diffuse));
-    } else {
-        memcpy(s->ambient, (k & SCENE_MATERIAL_AMBIENT) ? call->ambient : m->ambient,
-               sizeof(s->ambient));
-        memcpy(s->diffuse, (k & SCENE_MATERIAL_DIFFUSE) ? call->diffuse : m->diffuse,
-               sizeof(s->diffuse));
-    }
+    hit_colours(sc, &t, m, call, s->lighting, s->ambient, s->diffuse);
     tx->tex = NULL;
     tx->lod = 0;
     if (texture)
