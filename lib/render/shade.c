@@ -369,6 +369,28 @@ void shade_hit(const struct shade_context *sc, const float org[3], const float d
     shade_hit_primed(sc, depth == 0 ? sc->primed : NULL, org, dir, found, cone, depth, rgba);
 }
 
+/* The surfaces a block fetches together (surface_fetches): packet lane
+ * index[f] is the f-th of n. */
+struct fetch_list {
+    const struct trace_scene_hit *hit[TRACE_PACKET];
+    const float *dir[TRACE_PACKET];
+    float width[TRACE_PACKET];
+    struct surface *surf[TRACE_PACKET];
+    int index[TRACE_PACKET];
+    int n;
+};
+
+static inline void fetch_list_add(struct fetch_list *fl, int lane,
+                                  const struct trace_scene_hit *hit, const float *dir,
+                                  float width, struct surface *surf)
+{
+    fl->hit[fl->n] = hit;
+    fl->dir[fl->n] = dir;
+    fl->width[fl->n] = width;
+    fl->surf[fl->n] = surf;
+    fl->index[fl->n++] = lane;
+}
+
 /* The shadow rays of the surfaces surf[i] (bit i of lit) from origin[i],
  * one packet per light when at least two are coherent, their answers in
  * primed[i] (shade_prime_shadows). */
@@ -507,11 +529,8 @@ static unsigned prime_reflections(const struct shade_context *sc, int depth,
     }
     float origin[TRACE_PACKET][3];
     unsigned lit = 0;
-    const struct trace_scene_hit *fetch_hit[TRACE_PACKET];
-    const float *fetch_dir[TRACE_PACKET];
-    float fetch_width[TRACE_PACKET];
-    struct surface *fetch_surf[TRACE_PACKET];
-    int fetched[TRACE_PACKET], nf = 0;
+    struct fetch_list fl;
+    fl.n = 0;
     for (int i = 0; i < TRACE_PACKET; i++) {
         if (!(pk.active >> i & 1u))
             continue;
@@ -523,15 +542,12 @@ static unsigned prime_reflections(const struct shade_context *sc, int depth,
         primed[i].reflect_hit = rhits[i];
         next_cone[i] = cone_at(cone[i], dir[i], hits[i].t);
         memcpy(next_dir[i], pk.dir[i], sizeof(next_dir[i]));
-        fetch_hit[nf] = &rhits[i];
-        fetch_dir[nf] = next_dir[i];
-        fetch_width[nf] = cone_at(next_cone[i], pk.dir[i], rhits[i].t).width;
-        fetch_surf[nf] = &next_surf[i];
-        fetched[nf++] = i;
+        fetch_list_add(&fl, i, &rhits[i], next_dir[i],
+                       cone_at(next_cone[i], pk.dir[i], rhits[i].t).width, &next_surf[i]);
     }
-    surface_fetches(sc, nf, fetch_hit, fetch_dir, fetch_width, depth + 1, fetch_surf);
-    for (int f = 0; f < nf; f++) {
-        const int i = fetched[f];
+    surface_fetches(sc, fl.n, fl.hit, fl.dir, fl.width, depth + 1, fl.surf);
+    for (int f = 0; f < fl.n; f++) {
+        const int i = fl.index[f];
         const struct surface *rs = &next_surf[i];
         next[i].found = 1;
         next[i].hit = rhits[i];
@@ -566,11 +582,8 @@ void shade_prime_shadows(const struct shade_context *sc, unsigned found,
         return;
     float origin[TRACE_PACKET][3];
     unsigned lit = 0;
-    const struct trace_scene_hit *fetch_hit[TRACE_PACKET];
-    const float *fetch_dir[TRACE_PACKET];
-    float fetch_width[TRACE_PACKET];
-    struct surface *fetch_surf[TRACE_PACKET];
-    int fetched[TRACE_PACKET], nf = 0;
+    struct fetch_list fl;
+    fl.n = 0;
     for (int i = 0; i < TRACE_PACKET; i++) {
         if (!(found >> i & 1u))
             continue;
@@ -583,16 +596,13 @@ void shade_prime_shadows(const struct shade_context *sc, unsigned found,
          * another hit behind it or at its distance. */
         if (sc->clipping && blend_hit_clipped(sc, org[i], dir[i], &hits[i]))
             continue;
-        fetch_hit[nf] = &hits[i];
-        fetch_dir[nf] = dir[i];
-        fetch_width[nf] = cone_at(cone[i], dir[i], hits[i].t).width;
-        fetch_surf[nf] = &surf[i];
-        fetched[nf++] = i;
+        fetch_list_add(&fl, i, &hits[i], dir[i], cone_at(cone[i], dir[i], hits[i].t).width,
+                       &surf[i]);
     }
     /* The surfaces together: their levels of detail two at a time. */
-    surface_fetches(sc, nf, fetch_hit, fetch_dir, fetch_width, 0, fetch_surf);
-    for (int f = 0; f < nf; f++) {
-        const int i = fetched[f];
+    surface_fetches(sc, fl.n, fl.hit, fl.dir, fl.width, 0, fl.surf);
+    for (int f = 0; f < fl.n; f++) {
+        const int i = fl.index[f];
         primed[i].surface = &surf[i];
         primed[i].shadow_known = 0;
         primed[i].shadow_occluded = 0;
