@@ -36,12 +36,22 @@
 /* A leaf is tested with the eight-ray triangle test (packet_tri8.h) when
  * at least this many of its rays share the first ray's kx, ky, kz;
  * otherwise, and for the other rays, ray by ray (wide_leaf).  Measured
- * (docs/performance-log.md, kpk): two rays take fewer instructions in
- * the lanes than each through wide_leaf with its state's set-up and
- * sync (bumpy's camera packets meet 1.1 two-ray leaves a packet; every
- * packet set 0.5-2.8 % fewer instructions than at 3); one ray takes
- * more (bumpy +1.5 %). */
-#define PACKET_TRI8_MIN 2
+ * (docs/performance-log.md): two rays took fewer instructions in the
+ * lanes than each through wide_leaf with its state's set-up and sync
+ * (kpk); one ray took more (bumpy +1.5 %) until the first exits by
+ * pairs of rays (PACKET_PAIR_MAX) made a one-ray leaf cost one
+ * eight-lane test of its four triangles (pk3: bumpy's camera packets
+ * -1.5 %, its shadow packets -0.9 % at 1 against 2). */
+#define PACKET_TRI8_MIN 1
+
+/* A leaf reached by at most this many rays of the eight-ray test takes
+ * its triangles' first exits by pairs of rays first (tri8_pair_filter:
+ * four triangles by two rays in the eight lanes), and tri8_test only for
+ * the triangles one of them passes.  Measured (docs/performance-log.md,
+ * pk3), instructions a ray of the packet kernel, AVX2: 4 lowest on
+ * bumpy's camera packets and level with 6 elsewhere; 8 (every leaf)
+ * costs the kitchen's camera packets +8 %. */
+#define PACKET_PAIR_MAX 4
 
 /* A one-origin packet's leaf child takes no test per ray where the beam,
  * this many times over, is narrower than the leaves' mean size
@@ -258,7 +268,13 @@ static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_pa
         p->t8_ready = 1;
     }
     float *limit = p->limit;
+    const int kx = p->t8.kx, ky = p->t8.ky, kz = p->t8.kz;
     unsigned done = 0;
+    /* Few rays: their triangles' first exits by pairs of rays first
+     * (tri8_pair_filter), and tri8_test only for the triangles that one
+     * of them passes (the others tri8_test would leave at its first exit
+     * without effects). */
+    const int pair = (unsigned)__builtin_popcount(rays) <= PACKET_PAIR_MAX;
     /* Only an any-hit ray leaves `rays` (packet_take_hit returns 1 for
      * it alone); a closest-hit leaf keeps all its rays, so its loops do
      * not test for an empty packet (measured, docs/performance-log.md,
@@ -267,9 +283,25 @@ static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_pa
         const struct tri4_packet *q = &packets[first + j / 4];
         const uint32_t n = count - j < 4 ? count - j : 4;
         p->triangle_tests += n * (unsigned)__builtin_popcount(rays);
-        for (uint32_t l = 0; l < n && (!any_hit || rays); l++) {
+        const float *const vk[3] = {q->v[0][kx], q->v[0][ky], q->v[0][kz]};
+        /* The triangles to test: all, or for few rays those whose
+         * first exit passes one of them (tri8_pair_filter). */
+        unsigned tris = (1u << n) - 1u;
+        if (pair) {
+            unsigned pass = 0;
+            for (unsigned m = rays; m;) {
+                const unsigned a = (unsigned)__builtin_ctz(m);
+                m &= m - 1u;
+                const unsigned b = m ? (unsigned)__builtin_ctz(m) : a;
+                m &= m - 1u;
+                pass |= tri8_pair_filter(&p->t8, vk, a, b);
+            }
+            tris &= (pass | pass >> 4);
+        }
+        for (; tris && (!any_hit || rays); tris &= tris - 1u) {
+            const unsigned l = (unsigned)__builtin_ctz(tris);
             struct tri8_result res;
-            if (!tri8_test(&p->t8, q, l, rays, _mm256_loadu_ps(limit), any_hit, &res))
+            if (!tri8_test(&p->t8, q, vk, l, rays, _mm256_loadu_ps(limit), any_hit, &res))
                 continue;
             unsigned lanes = res.hit | res.scalar;
             if (!any_hit && res.hit) {
