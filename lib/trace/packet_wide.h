@@ -259,8 +259,9 @@ static inline void packet_sync(struct packet_state *p, unsigned r)
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_packet *packets,
-                                    uint32_t first, uint32_t count, unsigned rays, int any_hit)
+static inline unsigned packet_leaf8_body(struct packet_state *p,
+                                         const struct tri4_packet *packets, uint32_t first,
+                                         uint32_t count, unsigned rays, int any_hit, int pair)
 {
     if (!p->t8_ready) {
         const struct trace_ray *r0 = &p->rays[__builtin_ctz(p->lanes8)];
@@ -270,11 +271,6 @@ static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_pa
     float *limit = p->limit;
     const int kx = p->t8.kx, ky = p->t8.ky, kz = p->t8.kz;
     unsigned done = 0;
-    /* Few rays: their triangles' first exits by pairs of rays first
-     * (tri8_pair_filter), and tri8_test only for the triangles that one
-     * of them passes (the others tri8_test would leave at its first exit
-     * without effects). */
-    const int pair = (unsigned)__builtin_popcount(rays) <= PACKET_PAIR_MAX;
     /* Only an any-hit ray leaves `rays` (packet_take_hit returns 1 for
      * it alone); a closest-hit leaf keeps all its rays, so its loops do
      * not test for an empty packet (measured, docs/performance-log.md,
@@ -298,8 +294,15 @@ static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_pa
             }
             tris &= (pass | pass >> 4);
         }
-        for (; tris && (!any_hit || rays); tris &= tris - 1u) {
-            const unsigned l = (unsigned)__builtin_ctz(tris);
+        for (uint32_t l = 0; l < n && (!any_hit || rays); l++) {
+            if (pair) {
+                /* The next triangle to test (pair is a constant: the
+                 * other copy keeps the plain loop). */
+                if (!tris)
+                    break;
+                l = (uint32_t)__builtin_ctz(tris);
+                tris &= tris - 1u;
+            }
             struct tri8_result res;
             if (!tri8_test(&p->t8, q, vk, l, rays, _mm256_loadu_ps(limit), any_hit, &res))
                 continue;
@@ -379,6 +382,22 @@ static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_pa
         }
     }
     return done;
+}
+
+/* packet_leaf8_body for `rays`: with few rays, their triangles' first
+ * exits by pairs of rays first (tri8_pair_filter), and tri8_test only for
+ * the triangles one of them passes (the others tri8_test would leave at
+ * its first exit without effects); otherwise each triangle against all
+ * of them.  Two copies, so that the common case keeps its plain loop. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_packet *packets,
+                                    uint32_t first, uint32_t count, unsigned rays, int any_hit)
+{
+    if ((unsigned)__builtin_popcount(rays) <= PACKET_PAIR_MAX)
+        return packet_leaf8_body(p, packets, first, count, rays, any_hit, 1);
+    return packet_leaf8_body(p, packets, first, count, rays, any_hit, 0);
 }
 #endif
 
