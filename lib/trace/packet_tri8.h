@@ -212,7 +212,9 @@ struct tri8_result {
 
 /*
  * Triangle l of packet q (vertex a's coordinate k at q->v[a][k][l], read
- * in place) against the rays of `lanes`, ray r below
+ * in place; the float part reads the rows of the packet's kx, ky, kz at
+ * vk[0], vk[1], vk[2], each &q->v[0][k][0], which the caller takes once
+ * per packet rather than once per triangle) against the rays of `lanes`, ray r below
  * limit[r] (isect_triangle's t_max).  any_hit: t, u, v are not needed
  * (isect_triangle_occludes' short way where it applies).  Returns the
  * lanes with a hit or sent to the scalar test (res->hit | res->scalar).
@@ -221,19 +223,20 @@ struct tri8_result {
 __attribute__((always_inline))
 #endif
 static inline unsigned tri8_test(const struct tri8_rays *r, const struct tri4_packet *q,
-                                 unsigned l, unsigned lanes, __m256 limit, int any_hit,
-                                 struct tri8_result *res)
+                                 const float *const vk[3], unsigned l, unsigned lanes,
+                                 __m256 limit, int any_hit, struct tri8_result *res)
 {
     res->t = res->u = res->v = _mm256_setzero_ps();
-    const __m256 ax = _mm256_sub_ps(_mm256_set1_ps(q->v[0][r->kx][l]), r->org_x);
-    const __m256 ay = _mm256_sub_ps(_mm256_set1_ps(q->v[0][r->ky][l]), r->org_y);
-    const __m256 az = _mm256_sub_ps(_mm256_set1_ps(q->v[0][r->kz][l]), r->org_z);
-    const __m256 bx = _mm256_sub_ps(_mm256_set1_ps(q->v[1][r->kx][l]), r->org_x);
-    const __m256 by = _mm256_sub_ps(_mm256_set1_ps(q->v[1][r->ky][l]), r->org_y);
-    const __m256 bz = _mm256_sub_ps(_mm256_set1_ps(q->v[1][r->kz][l]), r->org_z);
-    const __m256 cx = _mm256_sub_ps(_mm256_set1_ps(q->v[2][r->kx][l]), r->org_x);
-    const __m256 cy = _mm256_sub_ps(_mm256_set1_ps(q->v[2][r->ky][l]), r->org_y);
-    const __m256 cz = _mm256_sub_ps(_mm256_set1_ps(q->v[2][r->kz][l]), r->org_z);
+    /* Vertex a's coordinate kx, ky, kz: vk[.][12 a + l] (v[a][k][l]). */
+    const __m256 ax = _mm256_sub_ps(_mm256_broadcast_ss(&vk[0][0 + l]), r->org_x);
+    const __m256 ay = _mm256_sub_ps(_mm256_broadcast_ss(&vk[1][0 + l]), r->org_y);
+    const __m256 az = _mm256_sub_ps(_mm256_broadcast_ss(&vk[2][0 + l]), r->org_z);
+    const __m256 bx = _mm256_sub_ps(_mm256_broadcast_ss(&vk[0][12 + l]), r->org_x);
+    const __m256 by = _mm256_sub_ps(_mm256_broadcast_ss(&vk[1][12 + l]), r->org_y);
+    const __m256 bz = _mm256_sub_ps(_mm256_broadcast_ss(&vk[2][12 + l]), r->org_z);
+    const __m256 cx = _mm256_sub_ps(_mm256_broadcast_ss(&vk[0][24 + l]), r->org_x);
+    const __m256 cy = _mm256_sub_ps(_mm256_broadcast_ss(&vk[1][24 + l]), r->org_y);
+    const __m256 cz = _mm256_sub_ps(_mm256_broadcast_ss(&vk[2][24 + l]), r->org_z);
 
     const __m256 Ax = _mm256_add_ps(ax, _mm256_mul_ps(r->sx, az));
     const __m256 Ay = _mm256_add_ps(ay, _mm256_mul_ps(r->sy, az));
@@ -397,6 +400,67 @@ static inline unsigned tri8_test(const struct tri8_rays *r, const struct tri4_pa
         res->v = _mm256_mul_ps(W, rcp_det);
     }
     return res->hit | res->scalar;
+}
+
+/*
+ * The first exit of tri8_test for the four triangles of packet q against
+ * two rays a and b of the test's lanes (r: the rays' constants, lane r
+ * holding ray r), the triangles across the lanes instead of the rays:
+ * lane l (l < 4) is triangle l against ray a, lane 4 + l triangle l
+ * against ray b.  Every lane does tri8_test's float operations up to its
+ * first exit in the same order on the same operands (the vertex's
+ * coordinate minus the ray's origin, the shear, the three edge
+ * functions, the sign and determinant test), so a lane's decision there
+ * is bit for bit the one tri8_test takes for that triangle and ray.
+ * Returns the lanes that tri8_test's first exit keeps or defers: bit l
+ * (ray a) and bit 4 + l (ray b) for triangle l.  tri8_test returns 0
+ * without effects for a triangle none of whose rays passes its first
+ * exit, so such a triangle needs no tri8_test.  A leaf reached by few rays then takes one
+ * eight-lane test of its four triangles per two rays instead of one per
+ * triangle (kpk's "four triangles by two rays", docs/performance-log.md,
+ * pk3).
+ */
+static inline unsigned tri8_pair_filter(const struct tri8_rays *r, const float *const vk[3],
+                                        unsigned a, unsigned b)
+{
+    const __m256i at = _mm256_setr_epi32((int)a, (int)a, (int)a, (int)a, (int)b, (int)b,
+                                         (int)b, (int)b);
+    const __m256 ox = _mm256_permutevar8x32_ps(r->org_x, at);
+    const __m256 oy = _mm256_permutevar8x32_ps(r->org_y, at);
+    const __m256 oz = _mm256_permutevar8x32_ps(r->org_z, at);
+    const __m256 sx = _mm256_permutevar8x32_ps(r->sx, at);
+    const __m256 sy = _mm256_permutevar8x32_ps(r->sy, at);
+    /* Vertex a's coordinate k of the four triangles, in both halves. */
+#define TRI8_ROW4(k, v) _mm256_broadcast_ps((const __m128 *)(const void *)&vk[k][12 * (v)])
+    const __m256 ax = _mm256_sub_ps(TRI8_ROW4(0, 0), ox);
+    const __m256 ay = _mm256_sub_ps(TRI8_ROW4(1, 0), oy);
+    const __m256 az = _mm256_sub_ps(TRI8_ROW4(2, 0), oz);
+    const __m256 bx = _mm256_sub_ps(TRI8_ROW4(0, 1), ox);
+    const __m256 by = _mm256_sub_ps(TRI8_ROW4(1, 1), oy);
+    const __m256 bz = _mm256_sub_ps(TRI8_ROW4(2, 1), oz);
+    const __m256 cx = _mm256_sub_ps(TRI8_ROW4(0, 2), ox);
+    const __m256 cy = _mm256_sub_ps(TRI8_ROW4(1, 2), oy);
+    const __m256 cz = _mm256_sub_ps(TRI8_ROW4(2, 2), oz);
+#undef TRI8_ROW4
+    const __m256 Ax = _mm256_add_ps(ax, _mm256_mul_ps(sx, az));
+    const __m256 Ay = _mm256_add_ps(ay, _mm256_mul_ps(sy, az));
+    const __m256 Bx = _mm256_add_ps(bx, _mm256_mul_ps(sx, bz));
+    const __m256 By = _mm256_add_ps(by, _mm256_mul_ps(sy, bz));
+    const __m256 Cx = _mm256_add_ps(cx, _mm256_mul_ps(sx, cz));
+    const __m256 Cy = _mm256_add_ps(cy, _mm256_mul_ps(sy, cz));
+    const __m256 U = _mm256_sub_ps(_mm256_mul_ps(Cx, By), _mm256_mul_ps(Cy, Bx));
+    const __m256 V = _mm256_sub_ps(_mm256_mul_ps(Ax, Cy), _mm256_mul_ps(Ay, Cx));
+    const __m256 W = _mm256_sub_ps(_mm256_mul_ps(Bx, Ay), _mm256_mul_ps(By, Ax));
+    const __m256 zero = _mm256_setzero_ps();
+    const __m256 on_edge = _mm256_or_ps(
+        _mm256_or_ps(_mm256_cmp_ps(U, zero, _CMP_EQ_OQ), _mm256_cmp_ps(V, zero, _CMP_EQ_OQ)),
+        _mm256_cmp_ps(W, zero, _CMP_EQ_OQ));
+    const __m256 mixed = _mm256_or_ps(_mm256_xor_ps(U, V), _mm256_xor_ps(U, W));
+    const __m256 det = _mm256_add_ps(_mm256_add_ps(U, V), W);
+    const __m256 abs_det = _mm256_andnot_ps(_mm256_set1_ps(-0.0f), det);
+    const __m256 keep =
+        _mm256_andnot_ps(mixed, _mm256_cmp_ps(abs_det, _mm256_set1_ps(INFINITY), _CMP_LT_OQ));
+    return (unsigned)_mm256_movemask_ps(_mm256_or_ps(keep, on_edge));
 }
 
 #endif

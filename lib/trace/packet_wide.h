@@ -36,12 +36,22 @@
 /* A leaf is tested with the eight-ray triangle test (packet_tri8.h) when
  * at least this many of its rays share the first ray's kx, ky, kz;
  * otherwise, and for the other rays, ray by ray (wide_leaf).  Measured
- * (docs/performance-log.md, kpk): two rays take fewer instructions in
- * the lanes than each through wide_leaf with its state's set-up and
- * sync (bumpy's camera packets meet 1.1 two-ray leaves a packet; every
- * packet set 0.5-2.8 % fewer instructions than at 3); one ray takes
- * more (bumpy +1.5 %). */
-#define PACKET_TRI8_MIN 2
+ * (docs/performance-log.md): two rays took fewer instructions in the
+ * lanes than each through wide_leaf with its state's set-up and sync
+ * (kpk); one ray took more (bumpy +1.5 %) until the first exits by
+ * pairs of rays (PACKET_PAIR_MAX) made a one-ray leaf cost one
+ * eight-lane test of its four triangles (pk3: bumpy's camera packets
+ * -1.4 %, its shadow packets +0.7 %, at 1 against 2). */
+#define PACKET_TRI8_MIN 1
+
+/* A leaf reached by at most this many rays of the eight-ray test takes
+ * its triangles' first exits by pairs of rays first (tri8_pair_filter:
+ * four triangles by two rays in the eight lanes), and tri8_test only for
+ * the triangles one of them passes.  Measured (docs/performance-log.md,
+ * pk3), instructions a ray of the packet kernel, AVX2: 4 lowest on
+ * bumpy's camera packets and level with 6 elsewhere; 8 (every leaf)
+ * costs the kitchen's camera packets +8 %. */
+#define PACKET_PAIR_MAX 4
 
 /* A one-origin packet's leaf child takes no test per ray where the beam,
  * this many times over, is narrower than the leaves' mean size
@@ -249,8 +259,9 @@ static inline void packet_sync(struct packet_state *p, unsigned r)
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_packet *packets,
-                                    uint32_t first, uint32_t count, unsigned rays, int any_hit)
+static inline unsigned packet_leaf8_body(struct packet_state *p,
+                                         const struct tri4_packet *packets, uint32_t first,
+                                         uint32_t count, unsigned rays, int any_hit, int pair)
 {
     if (!p->t8_ready) {
         const struct trace_ray *r0 = &p->rays[__builtin_ctz(p->lanes8)];
@@ -258,6 +269,7 @@ static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_pa
         p->t8_ready = 1;
     }
     float *limit = p->limit;
+    const int kx = p->t8.kx, ky = p->t8.ky, kz = p->t8.kz;
     unsigned done = 0;
     /* Only an any-hit ray leaves `rays` (packet_take_hit returns 1 for
      * it alone); a closest-hit leaf keeps all its rays, so its loops do
@@ -267,9 +279,32 @@ static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_pa
         const struct tri4_packet *q = &packets[first + j / 4];
         const uint32_t n = count - j < 4 ? count - j : 4;
         p->triangle_tests += n * (unsigned)__builtin_popcount(rays);
+        const float *const vk[3] = {q->v[0][kx], q->v[0][ky], q->v[0][kz]};
+        /* The triangles to test: all, or for few rays those whose
+         * first exit passes one of them (tri8_pair_filter). */
+        unsigned tris = (1u << n) - 1u;
+        if (pair) {
+            unsigned pass = 0;
+            for (unsigned m = rays; m;) {
+                const unsigned a = (unsigned)__builtin_ctz(m);
+                m &= m - 1u;
+                const unsigned b = m ? (unsigned)__builtin_ctz(m) : a;
+                m &= m - 1u;
+                pass |= tri8_pair_filter(&p->t8, vk, a, b);
+            }
+            tris &= (pass | pass >> 4);
+        }
         for (uint32_t l = 0; l < n && (!any_hit || rays); l++) {
+            if (pair) {
+                /* The next triangle to test (pair is a constant: the
+                 * other copy keeps the plain loop). */
+                if (!tris)
+                    break;
+                l = (uint32_t)__builtin_ctz(tris);
+                tris &= tris - 1u;
+            }
             struct tri8_result res;
-            if (!tri8_test(&p->t8, q, l, rays, _mm256_loadu_ps(limit), any_hit, &res))
+            if (!tri8_test(&p->t8, q, vk, l, rays, _mm256_loadu_ps(limit), any_hit, &res))
                 continue;
             unsigned lanes = res.hit | res.scalar;
             if (!any_hit && res.hit) {
@@ -347,6 +382,22 @@ static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_pa
         }
     }
     return done;
+}
+
+/* packet_leaf8_body for `rays`: with few rays, their triangles' first
+ * exits by pairs of rays first (tri8_pair_filter), and tri8_test only for
+ * the triangles one of them passes (the others tri8_test would leave at
+ * its first exit without effects); otherwise each triangle against all
+ * of them.  Two copies, so that the common case keeps its plain loop. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_packet *packets,
+                                    uint32_t first, uint32_t count, unsigned rays, int any_hit)
+{
+    if ((unsigned)__builtin_popcount(rays) <= PACKET_PAIR_MAX)
+        return packet_leaf8_body(p, packets, first, count, rays, any_hit, 1);
+    return packet_leaf8_body(p, packets, first, count, rays, any_hit, 0);
 }
 #endif
 
