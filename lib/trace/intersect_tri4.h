@@ -43,6 +43,7 @@
 
 #include "trace/bvh4_layout.h"
 #include "trace/intersect.h"
+#include "trace/tri8_shear.h"
 
 /* The per-ray constants of the packet test, set once per ray.  The
  * origin is held negated: v + (-org) is v - org bit for bit (IEEE 754
@@ -351,32 +352,22 @@ static inline unsigned tri4_pair_filter_lanes(const struct tri4_ray *r,
 
     const __m256 sx = _mm256_broadcast_ps(&r->sx);
     const __m256 sy = _mm256_broadcast_ps(&r->sy);
-    const __m256 Ax = _mm256_add_ps(ax, _mm256_mul_ps(sx, az));
-    const __m256 Ay = _mm256_add_ps(ay, _mm256_mul_ps(sy, az));
-    const __m256 Bx = _mm256_add_ps(bx, _mm256_mul_ps(sx, bz));
-    const __m256 By = _mm256_add_ps(by, _mm256_mul_ps(sy, bz));
-    const __m256 Cx = _mm256_add_ps(cx, _mm256_mul_ps(sx, cz));
-    const __m256 Cy = _mm256_add_ps(cy, _mm256_mul_ps(sy, cz));
-
-    const __m256 U = _mm256_sub_ps(_mm256_mul_ps(Cx, By), _mm256_mul_ps(Cy, Bx));
-    const __m256 V = _mm256_sub_ps(_mm256_mul_ps(Ax, Cy), _mm256_mul_ps(Ay, Cx));
-    const __m256 W = _mm256_sub_ps(_mm256_mul_ps(Bx, Ay), _mm256_mul_ps(By, Ax));
+    struct tri8_sheared sh;
+    tri8_shear(ax, ay, az, bx, by, bz, cx, cy, cz, sx, sy, &sh);
 
     /* The sign test, early return, edge zeros, depth range, box
      * interval and det exactly as tri4_filter_lanes (its comments say
      * why each is the scalar test's). */
     const __m256 zero = _mm256_setzero_ps();
     const __m256 any_neg =
-        _mm256_cmp_ps(_mm256_min_ps(U, _mm256_min_ps(V, W)), zero, _CMP_LT_OQ);
+        _mm256_cmp_ps(_mm256_min_ps(sh.U, _mm256_min_ps(sh.V, sh.W)), zero, _CMP_LT_OQ);
     const __m256 any_pos =
-        _mm256_cmp_ps(_mm256_max_ps(U, _mm256_max_ps(V, W)), zero, _CMP_GT_OQ);
+        _mm256_cmp_ps(_mm256_max_ps(sh.U, _mm256_max_ps(sh.V, sh.W)), zero, _CMP_GT_OQ);
     const __m256 mixed = _mm256_and_ps(any_neg, any_pos);
     if (early_out && ((unsigned)_mm256_movemask_ps(mixed) & valid) == valid)
         return 0;
 
-    const __m256 on_edge = _mm256_or_ps(
-        _mm256_or_ps(_mm256_cmp_ps(U, zero, _CMP_EQ_OQ), _mm256_cmp_ps(V, zero, _CMP_EQ_OQ)),
-        _mm256_cmp_ps(W, zero, _CMP_EQ_OQ));
+    const __m256 on_edge = tri8_on_edge(&sh);
 
     const __m256 sz = _mm256_broadcast_ps(&r->sz);
     const __m256 Az = _mm256_mul_ps(sz, az);
@@ -404,15 +395,15 @@ static inline unsigned tri4_pair_filter_lanes(const struct tri4_ray *r,
                       _mm256_cmp_ps(t_lo, limit, _CMP_LT_OQ)));
     const unsigned deferred = (unsigned)_mm256_movemask_ps(_mm256_and_ps(on_edge, geom)) & valid;
 
-    const __m256 det = _mm256_add_ps(_mm256_add_ps(U, V), W);
+    const __m256 det = _mm256_add_ps(_mm256_add_ps(sh.U, sh.V), sh.W);
     const __m256 abs_det = _mm256_andnot_ps(_mm256_set1_ps(-0.0f), det);
     __m256 keep = _mm256_and_ps(geom, _mm256_cmp_ps(det, zero, _CMP_NEQ_UQ));
     keep = _mm256_and_ps(keep, _mm256_cmp_ps(abs_det, _mm256_set1_ps(INFINITY), _CMP_LT_OQ));
     const unsigned mask = ((unsigned)_mm256_movemask_ps(keep) & valid) | deferred;
     if (mask) {
-        tri4_pair_store(out[0].U, out[1].U, U);
-        tri4_pair_store(out[0].V, out[1].V, V);
-        tri4_pair_store(out[0].W, out[1].W, W);
+        tri4_pair_store(out[0].U, out[1].U, sh.U);
+        tri4_pair_store(out[0].V, out[1].V, sh.V);
+        tri4_pair_store(out[0].W, out[1].W, sh.W);
         tri4_pair_store(out[0].det, out[1].det, det);
         tri4_pair_store(out[0].Az, out[1].Az, Az);
         tri4_pair_store(out[0].Bz, out[1].Bz, Bz);
@@ -424,18 +415,18 @@ static inline unsigned tri4_pair_filter_lanes(const struct tri4_ray *r,
         if (!any_hit) {
             const __m256 sign = _mm256_set1_ps(-0.0f);
             __m256 size = _mm256_max_ps(
-                _mm256_max_ps(_mm256_andnot_ps(sign, Ax), _mm256_andnot_ps(sign, Ay)),
-                _mm256_max_ps(_mm256_andnot_ps(sign, Bx), _mm256_andnot_ps(sign, By)));
+                _mm256_max_ps(_mm256_andnot_ps(sign, sh.Ax), _mm256_andnot_ps(sign, sh.Ay)),
+                _mm256_max_ps(_mm256_andnot_ps(sign, sh.Bx), _mm256_andnot_ps(sign, sh.By)));
             size = _mm256_max_ps(
-                size, _mm256_max_ps(_mm256_andnot_ps(sign, Cx), _mm256_andnot_ps(sign, Cy)));
+                size, _mm256_max_ps(_mm256_andnot_ps(sign, sh.Cx), _mm256_andnot_ps(sign, sh.Cy)));
             tri4_pair_store(out[0].size, out[1].size, size);
             if (deferred) {
-                tri4_pair_store(out[0].Ax, out[1].Ax, Ax);
-                tri4_pair_store(out[0].Ay, out[1].Ay, Ay);
-                tri4_pair_store(out[0].Bx, out[1].Bx, Bx);
-                tri4_pair_store(out[0].By, out[1].By, By);
-                tri4_pair_store(out[0].Cx, out[1].Cx, Cx);
-                tri4_pair_store(out[0].Cy, out[1].Cy, Cy);
+                tri4_pair_store(out[0].Ax, out[1].Ax, sh.Ax);
+                tri4_pair_store(out[0].Ay, out[1].Ay, sh.Ay);
+                tri4_pair_store(out[0].Bx, out[1].Bx, sh.Bx);
+                tri4_pair_store(out[0].By, out[1].By, sh.By);
+                tri4_pair_store(out[0].Cx, out[1].Cx, sh.Cx);
+                tri4_pair_store(out[0].Cy, out[1].Cy, sh.Cy);
             }
         }
     }

@@ -41,6 +41,7 @@
 
 #include "trace/bvh4_layout.h"
 #include "trace/intersect.h"
+#include "trace/tri8_shear.h"
 
 /* The per-lane ray constants of the eight-ray test; a lane outside the
  * test's rays holds values never read into an answer. */
@@ -238,21 +239,10 @@ static inline unsigned tri8_test(const struct tri8_rays *r, const struct tri4_pa
     const __m256 cy = _mm256_sub_ps(_mm256_broadcast_ss(&vk[1][24 + l]), r->org_y);
     const __m256 cz = _mm256_sub_ps(_mm256_broadcast_ss(&vk[2][24 + l]), r->org_z);
 
-    const __m256 Ax = _mm256_add_ps(ax, _mm256_mul_ps(r->sx, az));
-    const __m256 Ay = _mm256_add_ps(ay, _mm256_mul_ps(r->sy, az));
-    const __m256 Bx = _mm256_add_ps(bx, _mm256_mul_ps(r->sx, bz));
-    const __m256 By = _mm256_add_ps(by, _mm256_mul_ps(r->sy, bz));
-    const __m256 Cx = _mm256_add_ps(cx, _mm256_mul_ps(r->sx, cz));
-    const __m256 Cy = _mm256_add_ps(cy, _mm256_mul_ps(r->sy, cz));
+    struct tri8_sheared sh;
+    tri8_shear(ax, ay, az, bx, by, bz, cx, cy, cz, r->sx, r->sy, &sh);
 
-    const __m256 U = _mm256_sub_ps(_mm256_mul_ps(Cx, By), _mm256_mul_ps(Cy, Bx));
-    const __m256 V = _mm256_sub_ps(_mm256_mul_ps(Ax, Cy), _mm256_mul_ps(Ay, Cx));
-    const __m256 W = _mm256_sub_ps(_mm256_mul_ps(Bx, Ay), _mm256_mul_ps(By, Ax));
-
-    const __m256 zero = _mm256_setzero_ps();
-    const __m256 on_edge = _mm256_or_ps(
-        _mm256_or_ps(_mm256_cmp_ps(U, zero, _CMP_EQ_OQ), _mm256_cmp_ps(V, zero, _CMP_EQ_OQ)),
-        _mm256_cmp_ps(W, zero, _CMP_EQ_OQ));
+    const __m256 on_edge = tri8_on_edge(&sh);
     const unsigned deferred = (unsigned)_mm256_movemask_ps(on_edge) & lanes;
     /* isect_triangle's sign test for the lanes not deferred, where U, V
      * and W are all non-zero: "outside when the signs differ" is a sign
@@ -261,8 +251,8 @@ static inline unsigned tri8_test(const struct tri8_rays *r, const struct tri4_pa
      * 0), so det == 0 needs no test; a NaN among them makes det NaN,
      * which |det| < inf refuses as isfinite(det) does.  Only the sign
      * bit of keep is meaningful (every use ends in a movemask). */
-    const __m256 mixed = _mm256_or_ps(_mm256_xor_ps(U, V), _mm256_xor_ps(U, W));
-    const __m256 det = _mm256_add_ps(_mm256_add_ps(U, V), W);
+    const __m256 mixed = _mm256_or_ps(_mm256_xor_ps(sh.U, sh.V), _mm256_xor_ps(sh.U, sh.W));
+    const __m256 det = _mm256_add_ps(_mm256_add_ps(sh.U, sh.V), sh.W);
     const __m256 abs_det = _mm256_andnot_ps(_mm256_set1_ps(-0.0f), det);
     __m256 keep =
         _mm256_andnot_ps(mixed, _mm256_cmp_ps(abs_det, _mm256_set1_ps(INFINITY), _CMP_LT_OQ));
@@ -342,11 +332,11 @@ static inline unsigned tri8_test(const struct tri8_rays *r, const struct tri4_pa
     /* isect_triangle's size: max(max(|Ax|, |Ay|), max(|Bx|, |By|)), then
      * max with max(|Cx|, |Cy|). */
     const __m256 sign = _mm256_set1_ps(-0.0f);
-    __m256 size =
-        _mm256_max_ps(_mm256_max_ps(_mm256_andnot_ps(sign, Ax), _mm256_andnot_ps(sign, Ay)),
-                      _mm256_max_ps(_mm256_andnot_ps(sign, Bx), _mm256_andnot_ps(sign, By)));
-    size = _mm256_max_ps(size,
-                         _mm256_max_ps(_mm256_andnot_ps(sign, Cx), _mm256_andnot_ps(sign, Cy)));
+    __m256 size = _mm256_max_ps(
+        _mm256_max_ps(_mm256_andnot_ps(sign, sh.Ax), _mm256_andnot_ps(sign, sh.Ay)),
+        _mm256_max_ps(_mm256_andnot_ps(sign, sh.Bx), _mm256_andnot_ps(sign, sh.By)));
+    size = _mm256_max_ps(
+        size, _mm256_max_ps(_mm256_andnot_ps(sign, sh.Cx), _mm256_andnot_ps(sign, sh.Cy)));
 
     const __m256d n_x = _mm256_set1_pd(nx), n_y = _mm256_set1_pd(ny), n_z = _mm256_set1_pd(nz);
     const __m256d p_x = _mm256_set1_pd((double)q->v[0][0][l]);
@@ -396,8 +386,8 @@ static inline unsigned tri8_test(const struct tri8_rays *r, const struct tri4_pa
     if (hit && !any_hit) {
         const __m256 rcp_det = _mm256_div_ps(_mm256_set1_ps(1.0f), det);
         res->t = t;
-        res->u = _mm256_mul_ps(V, rcp_det);
-        res->v = _mm256_mul_ps(W, rcp_det);
+        res->u = _mm256_mul_ps(sh.V, rcp_det);
+        res->v = _mm256_mul_ps(sh.W, rcp_det);
     }
     return res->hit | res->scalar;
 }
@@ -442,21 +432,11 @@ static inline unsigned tri8_pair_filter(const struct tri8_rays *r, const float *
     const __m256 cy = _mm256_sub_ps(TRI8_ROW4(1, 2), oy);
     const __m256 cz = _mm256_sub_ps(TRI8_ROW4(2, 2), oz);
 #undef TRI8_ROW4
-    const __m256 Ax = _mm256_add_ps(ax, _mm256_mul_ps(sx, az));
-    const __m256 Ay = _mm256_add_ps(ay, _mm256_mul_ps(sy, az));
-    const __m256 Bx = _mm256_add_ps(bx, _mm256_mul_ps(sx, bz));
-    const __m256 By = _mm256_add_ps(by, _mm256_mul_ps(sy, bz));
-    const __m256 Cx = _mm256_add_ps(cx, _mm256_mul_ps(sx, cz));
-    const __m256 Cy = _mm256_add_ps(cy, _mm256_mul_ps(sy, cz));
-    const __m256 U = _mm256_sub_ps(_mm256_mul_ps(Cx, By), _mm256_mul_ps(Cy, Bx));
-    const __m256 V = _mm256_sub_ps(_mm256_mul_ps(Ax, Cy), _mm256_mul_ps(Ay, Cx));
-    const __m256 W = _mm256_sub_ps(_mm256_mul_ps(Bx, Ay), _mm256_mul_ps(By, Ax));
-    const __m256 zero = _mm256_setzero_ps();
-    const __m256 on_edge = _mm256_or_ps(
-        _mm256_or_ps(_mm256_cmp_ps(U, zero, _CMP_EQ_OQ), _mm256_cmp_ps(V, zero, _CMP_EQ_OQ)),
-        _mm256_cmp_ps(W, zero, _CMP_EQ_OQ));
-    const __m256 mixed = _mm256_or_ps(_mm256_xor_ps(U, V), _mm256_xor_ps(U, W));
-    const __m256 det = _mm256_add_ps(_mm256_add_ps(U, V), W);
+    struct tri8_sheared sh;
+    tri8_shear(ax, ay, az, bx, by, bz, cx, cy, cz, sx, sy, &sh);
+    const __m256 on_edge = tri8_on_edge(&sh);
+    const __m256 mixed = _mm256_or_ps(_mm256_xor_ps(sh.U, sh.V), _mm256_xor_ps(sh.U, sh.W));
+    const __m256 det = _mm256_add_ps(_mm256_add_ps(sh.U, sh.V), sh.W);
     const __m256 abs_det = _mm256_andnot_ps(_mm256_set1_ps(-0.0f), det);
     const __m256 keep =
         _mm256_andnot_ps(mixed, _mm256_cmp_ps(abs_det, _mm256_set1_ps(INFINITY), _CMP_LT_OQ));
