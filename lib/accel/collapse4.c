@@ -20,11 +20,14 @@
 #include <string.h>
 
 #include "accel/bvh_build.h"
+#include "accel/collapse4_avx2.h"
 #include "base/alloc.h"
 #include "base/pool.h"
 #include "trace/intersect.h"
 
-#if defined(__SSE2__) && !defined(RT_NO_SIMD)
+#if defined(__AVX2__) && !defined(RT_NO_SIMD)
+#include <immintrin.h>
+#elif defined(__SSE2__) && !defined(RT_NO_SIMD)
 #include <emmintrin.h>
 #endif
 
@@ -281,7 +284,7 @@ static void octant_orders(const double centre[MAX_WIDTH][3], int lanes, int widt
     }
 }
 
-#if defined(__SSE2__) && !defined(RT_NO_SIMD)
+#if defined(__SSE2__) && !defined(__AVX2__) && !defined(RT_NO_SIMD)
 /*
  * octant_orders for the usual case, two octants per SSE2 register: the
  * same keys (the same sums, in the same order, of the same centres with
@@ -356,6 +359,64 @@ static int octant_orders_sse2(const double centre[MAX_WIDTH][3], int lanes, int 
 }
 #endif
 
+#if defined(__AVX2__) && !defined(RT_NO_SIMD)
+/*
+ * octant_orders_sse2 with the four octants 0..3 in one AVX register
+ * (collapse4_avx2.c): the same keys (the same sums in the same order of
+ * the same centres with the same signs), the same comparisons and counts,
+ * half the operations per lane pair.
+ */
+static int octant_orders_avx2(const double centre[MAX_WIDTH][3], int lanes, int width,
+                              int bits_per_lane, uint32_t order_bits[8])
+{
+    /* Octant bit a negates axis a; lane o of k[l] is octant o. */
+    __m256d k[MAX_WIDTH];
+    const __m256d flip_x = _mm256_set_pd(-0.0, 0.0, -0.0, 0.0);
+    const __m256d flip_y = _mm256_set_pd(-0.0, -0.0, 0.0, 0.0);
+    const __m256d zero = _mm256_setzero_pd();
+    int nan = 0;
+    for (int l = 0; l < lanes; l++) {
+        const __m256d x = _mm256_xor_pd(_mm256_set1_pd(centre[l][0]), flip_x);
+        const __m256d y = _mm256_xor_pd(_mm256_set1_pd(centre[l][1]), flip_y);
+        const __m256d z = _mm256_set1_pd(centre[l][2]);
+        k[l] = _mm256_add_pd(_mm256_add_pd(_mm256_add_pd(zero, x), y), z);
+        nan |= _mm256_movemask_pd(_mm256_cmp_pd(k[l], k[l], _CMP_UNORD_Q));
+    }
+    if (nan)
+        return 0;
+    __m256i up[MAX_WIDTH];   /* octants 0-3 */
+    __m256i down[MAX_WIDTH]; /* their opposites 7-4 */
+    for (int l = 0; l < lanes; l++)
+        up[l] = down[l] = _mm256_setzero_si256();
+    for (int l = 1; l < lanes; l++) {
+        for (int j = 0; j < l; j++) {
+            const __m256i le = _mm256_castpd_si256(_mm256_cmp_pd(k[j], k[l], _CMP_LE_OQ));
+            const __m256i ge = _mm256_castpd_si256(_mm256_cmp_pd(k[j], k[l], _CMP_GE_OQ));
+            up[l] = _mm256_sub_epi64(up[l], le);
+            up[j] = _mm256_add_epi64(up[j], le);
+            down[l] = _mm256_sub_epi64(down[l], ge);
+            down[j] = _mm256_add_epi64(down[j], ge);
+        }
+    }
+    uint32_t pad = 0;
+    for (int l = lanes; l < width; l++)
+        pad |= (uint32_t)l << (bits_per_lane * l);
+    for (int oct = 0; oct < 8; oct++)
+        order_bits[oct] = pad;
+    for (int l = 0; l < lanes; l++) {
+        int64_t u[4], d[4];
+        _mm256_storeu_si256((__m256i *)(void *)u, up[l]);
+        _mm256_storeu_si256((__m256i *)(void *)d, down[l]);
+        const int earlier = lanes - 1 - l;
+        for (int oct = 0; oct < 4; oct++) {
+            order_bits[oct] |= (uint32_t)l << (bits_per_lane * ((int)u[oct] + earlier));
+            order_bits[7 - oct] |= (uint32_t)l << (bits_per_lane * ((int)d[oct] + earlier));
+        }
+    }
+    return 1;
+}
+#endif
+
 /* Twice the lanes' box centres (the order only compares them). */
 static void lane_centres(const struct bvh *bvh, const struct scratch_node *s,
                          double centre[MAX_WIDTH][3])
@@ -386,7 +447,10 @@ static void write_lanes(const struct bvh *bvh, const struct scratch_node *s, int
     const int bits_per_lane = width == 4 ? 2 : 3;
     double centre[MAX_WIDTH][3];
     lane_centres(bvh, s, centre);
-#if defined(__SSE2__) && !defined(RT_NO_SIMD)
+#if defined(__AVX2__) && !defined(RT_NO_SIMD)
+    if (octant_orders_avx2(centre, s->lanes, width, bits_per_lane, order_bits))
+        return;
+#elif defined(__SSE2__) && !defined(RT_NO_SIMD)
     if (octant_orders_sse2(centre, s->lanes, width, bits_per_lane, order_bits))
         return;
 #endif
@@ -427,11 +491,105 @@ void accel_set_packet_lane(struct tri4_packet *p, uint32_t lane, const float v[9
     }
 }
 
+#if defined(__AVX2__) && !defined(RT_NO_SIMD)
+/* zero_area_pair below for four lanes in one AVX register
+ * (collapse4_avx2.c): the same operations on each lane. */
+static int zero_area_quad(__m128 x0, __m128 y0, __m128 z0, __m128 x1, __m128 y1, __m128 z1,
+                          __m128 x2, __m128 y2, __m128 z2)
+{
+    const __m256d e1x = _mm256_sub_pd(_mm256_cvtps_pd(x1), _mm256_cvtps_pd(x0));
+    const __m256d e1y = _mm256_sub_pd(_mm256_cvtps_pd(y1), _mm256_cvtps_pd(y0));
+    const __m256d e1z = _mm256_sub_pd(_mm256_cvtps_pd(z1), _mm256_cvtps_pd(z0));
+    const __m256d e2x = _mm256_sub_pd(_mm256_cvtps_pd(x2), _mm256_cvtps_pd(x0));
+    const __m256d e2y = _mm256_sub_pd(_mm256_cvtps_pd(y2), _mm256_cvtps_pd(y0));
+    const __m256d e2z = _mm256_sub_pd(_mm256_cvtps_pd(z2), _mm256_cvtps_pd(z0));
+    const __m256d nx = _mm256_sub_pd(_mm256_mul_pd(e1y, e2z), _mm256_mul_pd(e1z, e2y));
+    const __m256d ny = _mm256_sub_pd(_mm256_mul_pd(e1z, e2x), _mm256_mul_pd(e1x, e2z));
+    const __m256d nz = _mm256_sub_pd(_mm256_mul_pd(e1x, e2y), _mm256_mul_pd(e1y, e2x));
+    const __m256d zero = _mm256_setzero_pd();
+    return _mm256_movemask_pd(_mm256_and_pd(
+        _mm256_and_pd(_mm256_cmp_pd(nx, zero, _CMP_EQ_OQ), _mm256_cmp_pd(ny, zero, _CMP_EQ_OQ)),
+        _mm256_cmp_pd(nz, zero, _CMP_EQ_OQ)));
+}
+#elif defined(__SSE2__) && !defined(RT_NO_SIMD)
+/* The zero-area test of isect_triangle_zero_area for two lanes: the same
+ * conversions, differences, products and comparisons in doubles, in the
+ * same order, so the same answers; bit l of the result is lane l's. */
+static int zero_area_pair(__m128 x0, __m128 y0, __m128 z0, __m128 x1, __m128 y1, __m128 z1,
+                          __m128 x2, __m128 y2, __m128 z2)
+{
+    const __m128d e1x = _mm_sub_pd(_mm_cvtps_pd(x1), _mm_cvtps_pd(x0));
+    const __m128d e1y = _mm_sub_pd(_mm_cvtps_pd(y1), _mm_cvtps_pd(y0));
+    const __m128d e1z = _mm_sub_pd(_mm_cvtps_pd(z1), _mm_cvtps_pd(z0));
+    const __m128d e2x = _mm_sub_pd(_mm_cvtps_pd(x2), _mm_cvtps_pd(x0));
+    const __m128d e2y = _mm_sub_pd(_mm_cvtps_pd(y2), _mm_cvtps_pd(y0));
+    const __m128d e2z = _mm_sub_pd(_mm_cvtps_pd(z2), _mm_cvtps_pd(z0));
+    const __m128d nx = _mm_sub_pd(_mm_mul_pd(e1y, e2z), _mm_mul_pd(e1z, e2y));
+    const __m128d ny = _mm_sub_pd(_mm_mul_pd(e1z, e2x), _mm_mul_pd(e1x, e2z));
+    const __m128d nz = _mm_sub_pd(_mm_mul_pd(e1x, e2y), _mm_mul_pd(e1y, e2x));
+    const __m128d zero = _mm_setzero_pd();
+    return _mm_movemask_pd(_mm_and_pd(_mm_and_pd(_mm_cmpeq_pd(nx, zero), _mm_cmpeq_pd(ny, zero)),
+                                      _mm_cmpeq_pd(nz, zero)));
+}
+
+/* The upper two lanes of v in the lower two. */
+static __m128 upper_pair(__m128 v)
+{
+    return _mm_movehl_ps(v, v);
+}
+#endif
+
 /* Packet p's lanes from leaf slots [slot, slot + n), n <= 4; lanes past n
  * repeat the last triangle. */
 static void fill_packet(struct tri4_packet *p, const float *tri, const uint32_t *prim_index,
                         uint32_t slot, uint32_t n)
 {
+#if defined(__SSE2__) && !defined(RT_NO_SIMD)
+    /* The four lanes at once, the same values as accel_set_packet_lane
+     * and the repeats below: a repeated lane is lane n - 1's triangle
+     * loaded again, whose zero-area test gives the same answer.  Each
+     * triangle's nine floats are three overlapping rows of four (floats
+     * 0-3, 4-7, 5-8), transposed into the nine components' lanes.  (Up
+     * to 64 instructions a triangle in the scalar form, a fifth of the
+     * collapse's.) */
+    const float *row[4];
+    for (uint32_t l = 0; l < 4; l++)
+        row[l] = &tri[9 * (size_t)(slot + (l < n ? l : n - 1))];
+    __m128 a0 = _mm_loadu_ps(row[0]), a1 = _mm_loadu_ps(row[1]);
+    __m128 a2 = _mm_loadu_ps(row[2]), a3 = _mm_loadu_ps(row[3]);
+    _MM_TRANSPOSE4_PS(a0, a1, a2, a3);
+    __m128 b0 = _mm_loadu_ps(row[0] + 4), b1 = _mm_loadu_ps(row[1] + 4);
+    __m128 b2 = _mm_loadu_ps(row[2] + 4), b3 = _mm_loadu_ps(row[3] + 4);
+    _MM_TRANSPOSE4_PS(b0, b1, b2, b3);
+    __m128 c0 = _mm_loadu_ps(row[0] + 5), c1 = _mm_loadu_ps(row[1] + 5);
+    __m128 c2 = _mm_loadu_ps(row[2] + 5), c3 = _mm_loadu_ps(row[3] + 5);
+    _MM_TRANSPOSE4_PS(c0, c1, c2, c3);
+    /* Components x0 y0 z0 x1 y1 z1 x2 y2 z2 (floats 0-8). */
+    __m128 v[9] = {a0, a1, a2, a3, b0, b1, b2, b3, c3};
+#if defined(__AVX2__)
+    const int zero = zero_area_quad(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8]);
+#else
+    const int zero =
+        zero_area_pair(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8]) |
+        zero_area_pair(upper_pair(v[0]), upper_pair(v[1]), upper_pair(v[2]), upper_pair(v[3]),
+                       upper_pair(v[4]), upper_pair(v[5]), upper_pair(v[6]), upper_pair(v[7]),
+                       upper_pair(v[8]))
+            << 2;
+#endif
+    if (zero) {
+        const __m128 mask = _mm_castsi128_ps(_mm_set_epi32(-(zero >> 3 & 1), -(zero >> 2 & 1),
+                                                           -(zero >> 1 & 1), -(zero & 1)));
+        const __m128 nan = _mm_set1_ps(NAN);
+        for (int c = 0; c < 9; c++)
+            v[c] = _mm_or_ps(_mm_and_ps(mask, nan), _mm_andnot_ps(mask, v[c]));
+    }
+    for (int c = 0; c < 9; c++)
+        _mm_storeu_ps(p->v[c / 3][c % 3], v[c]);
+    if (prim_index) {
+        for (uint32_t l = 0; l < 4; l++)
+            p->prim[l] = prim_index[slot + (l < n ? l : n - 1)];
+    }
+#else
     for (uint32_t l = 0; l < n; l++) {
         accel_set_packet_lane(p, l, &tri[9 * (size_t)(slot + l)]);
         if (prim_index)
@@ -447,6 +605,7 @@ static void fill_packet(struct tri4_packet *p, const float *tri, const uint32_t 
         if (prim_index)
             p->prim[l] = p->prim[n - 1];
     }
+#endif
 }
 
 /* The collapse's shared state.  The wide nodes are numbered breadth
@@ -577,6 +736,13 @@ static float leaf_extent_mean(const struct bvh4 *w)
 int accel_collapse_wide_reuse(struct bvh4 *out, const struct bvh *bvh, const float *tri,
                               uint32_t width, struct rt_pool *pool, struct rt_large_block *spare)
 {
+#if !defined(COLLAPSE_UNIT_AVX2)
+    /* The same source compiled for AVX2, where it runs
+     * (collapse4_avx2.c): the same bytes in fewer instructions. */
+    const collapse_wide_fn avx2 = accel_collapse_wide_avx2_unit();
+    if (avx2)
+        return avx2(out, bvh, tri, width, pool, spare);
+#endif
     memset(out, 0, sizeof(*out));
     if (width != 4 && width != 8)
         return -1;
