@@ -733,16 +733,10 @@ static float leaf_extent_mean(const struct bvh4 *w)
     return lanes ? (float)(sum / lanes) : 0.0f;
 }
 
-int accel_collapse_wide_reuse(struct bvh4 *out, const struct bvh *bvh, const float *tri,
-                              uint32_t width, struct rt_pool *pool, struct rt_large_block *spare)
+/* accel_collapse_wide_reuse in this unit's instruction set. */
+static int collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *tri,
+                         uint32_t width, struct rt_pool *pool, struct rt_large_block *spare)
 {
-#if !defined(COLLAPSE_UNIT_AVX2)
-    /* The same source compiled for AVX2, where it runs
-     * (collapse4_avx2.c): the same bytes in fewer instructions. */
-    const collapse_wide_fn avx2 = accel_collapse_wide_avx2_unit();
-    if (avx2)
-        return avx2(out, bvh, tri, width, pool, spare);
-#endif
     memset(out, 0, sizeof(*out));
     if (width != 4 && width != 8)
         return -1;
@@ -844,6 +838,26 @@ fail:
     rt_free(source);
     rt_free(packet_slot);
     return -1;
+}
+
+int accel_collapse_wide_reuse(struct bvh4 *out, const struct bvh *bvh, const float *tri,
+                              uint32_t width, struct rt_pool *pool, struct rt_large_block *spare)
+{
+#if !defined(COLLAPSE_UNIT_AVX2)
+    /* The same source compiled for AVX2, where it runs
+     * (collapse4_avx2.c): the same bytes in fewer instructions. */
+    const collapse_wide_fn avx2 = accel_collapse_wide_avx2_unit();
+    if (avx2)
+        return avx2(out, bvh, tri, width, pool, spare);
+#endif
+    return collapse_wide(out, bvh, tri, width, pool, spare);
+}
+
+int accel_collapse_wide_portable(struct bvh4 *out, const struct bvh *bvh, const float *tri,
+                                 uint32_t width, struct rt_pool *pool,
+                                 struct rt_large_block *spare)
+{
+    return collapse_wide(out, bvh, tri, width, pool, spare);
 }
 
 int accel_collapse_wide_pool(struct bvh4 *out, const struct bvh *bvh, const float *tri,

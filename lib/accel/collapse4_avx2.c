@@ -20,6 +20,7 @@
 #if defined(__AVX2__) && !defined(RT_NO_SIMD)
 #define COLLAPSE_UNIT_AVX2 1
 #define accel_collapse_wide_reuse accel_collapse_wide_reuse_avx2
+#define accel_collapse_wide_portable accel_collapse_wide_portable_avx2
 #define accel_collapse_wide_pool accel_collapse_wide_pool_avx2
 #define accel_collapse_wide accel_collapse_wide_avx2
 #define accel_collapse4 accel_collapse4_avx2

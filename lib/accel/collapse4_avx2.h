@@ -23,4 +23,11 @@ typedef int (*collapse_wide_fn)(struct bvh4 *out, const struct bvh *bvh, const f
  * AVX2. */
 collapse_wide_fn accel_collapse_wide_avx2_unit(void);
 
+/* accel_collapse_wide_reuse without the AVX2 copy: the portable form (SSE2
+ * or plain C), for the test that compares the two byte for byte
+ * (internal/collapse_threads). */
+int accel_collapse_wide_portable(struct bvh4 *out, const struct bvh *bvh, const float *tri,
+                                 uint32_t width, struct rt_pool *pool,
+                                 struct rt_large_block *spare);
+
 #endif
