@@ -12,6 +12,10 @@
  * (with the per-octant child order) and packets in one 64-byte aligned
  * block.  Given a pool, both share their per-node work between its
  * threads, with the same bytes as on one thread (struct collapse).
+ * collapse4_avx2.c compiles this file again for AVX2 (the octant orders
+ * and the packets' zero-area test four lanes of doubles at a time), with
+ * the same bytes; accel_collapse_wide_reuse takes it where the CPU runs
+ * it.
  */
 #include "trace/bvh4_layout.h"
 
