@@ -883,6 +883,20 @@ WIDE8_WALK1(wide8_walk1_closest_leaf8_stats, walk_wide8_ray_leaf8, 0, 1, 0)
 WIDE8_WALK1(wide8_walk1_closest_early_leaf8_stats, walk_wide8_ray_leaf8, 0, 1, 1)
 WIDE8_WALK1(wide8_walk1_any_leaf8_stats, walk_wide8_ray_leaf8, 1, 1, 1)
 
+/* kernels.h's walk1: the walk walk_wide_single1 below takes without
+ * counters, chosen once for a layout.  A caller that traces many rays
+ * over one layout (rtbench's loops) calls it directly, without the
+ * entries' tests of the layout every ray (10-19 instructions a ray on
+ * AVX2, callgrind). */
+static trace_walk1_fn TRACE_WIDE_WALK1(const struct bvh4 *wide, int any_hit)
+{
+    if (wide->width != 8 || !wide->node_count)
+        return NULL;
+    if (any_hit)
+        return wide8_walk1_any_leaf8;
+    return wide->prefetch_top ? wide8_walk1_closest_early_leaf8 : wide8_walk1_closest_leaf8;
+}
+
 /*
  * The leaf of the 8-wide walks on its own, for
  * conformance/internal/tri4_differential: the n triangles of p[0], p[1]
