@@ -130,12 +130,17 @@ void bench_kernel_closest(void *ctx, const RTray *rays, uint32_t begin, uint32_t
     const struct bench_accel *acc = ctx;
     const struct trace_kernels *k = bench_kernels();
     const int wide = k->closest1 && !binary_layout && acc->wide.node_count;
+    /* The layout's walk, chosen once (kernels.h, walk1), as a caller
+     * tracing many rays over one layout would. */
+    const trace_walk1_fn walk1 = wide && k->walk1 ? k->walk1(&acc->wide, 0) : NULL;
     for (uint32_t i = begin; i < end; i++) {
         const RTray *r = &rays[i];
         struct trace_hit h;
         int got;
         /* The wide walk sets the ray up itself (kernels.h, closest1). */
-        if (wide) {
+        if (walk1) {
+            got = walk1(&acc->wide, r->org, r->dir, r->tmin, r->tmax, &h, NULL);
+        } else if (wide) {
             got = k->closest1(&acc->wide, &acc->bvh, acc->tri, r->org, r->dir, r->tmin, r->tmax,
                               &h, NULL);
         } else {
@@ -159,10 +164,13 @@ void bench_kernel_any(void *ctx, const RTray *rays, uint32_t begin, uint32_t end
     const struct bench_accel *acc = ctx;
     const struct trace_kernels *k = bench_kernels();
     const int wide = k->any1 && !binary_layout && acc->wide.node_count;
+    const trace_walk1_fn walk1 = wide && k->walk1 ? k->walk1(&acc->wide, 1) : NULL;
     for (uint32_t i = begin; i < end; i++) {
         const RTray *r = &rays[i];
         int occluded;
-        if (wide) {
+        if (walk1) {
+            occluded = walk1(&acc->wide, r->org, r->dir, r->tmin, r->tmax, NULL, NULL);
+        } else if (wide) {
             occluded = k->any1(&acc->wide, &acc->bvh, acc->tri, r->org, r->dir, r->tmin, r->tmax,
                                NULL);
         } else {

@@ -101,6 +101,7 @@ static struct leaf_answer packet_leaf(const struct trace_ray *ray, const struct 
     tri4_ray_init(&r4, ray);
     float best = t_max;
     struct tri4_lanes lanes;
+    memset(&lanes, 0, sizeof(lanes)); /* written only for kept lanes */
     /* Any hit: the filter with its early returns, as wide_packet_body
      * calls it. */
     unsigned mask = tri4_candidates_lanes_impl(&r4, p, 15u, t_max, &lanes, any_hit);
@@ -111,7 +112,13 @@ static struct leaf_answer packet_leaf(const struct trace_ray *ray, const struct 
         unsigned near = 0;
         for (unsigned l = 0; l < 4; l++)
             near |= (unsigned)(lanes.t_lo[l] < ray->tmin) << l;
-        mask &= ~tri4_before_tmin(ray, p, mask & near);
+        /* The single-ray walks' order (traverse_wide.h,
+         * wide_near_refused): the filter's floats first, then the
+         * world-space test. */
+        near &= mask;
+        const unsigned sure = tri4_before_tmin_lanes(&r4, p, &lanes, near);
+        mask &= ~sure;
+        mask &= ~tri4_before_tmin(ray, p, near & ~sure);
     }
     while (mask) {
         unsigned l = (unsigned)__builtin_ctz(mask);
@@ -298,20 +305,23 @@ static void one_case(struct tg_rng *r, uint64_t *cases, uint64_t *kept_rejected,
      * whatever the limit. */
     {
         struct tri4_lanes lanes;
+        memset(&lanes, 0, sizeof(lanes)); /* written only for kept lanes */
         const unsigned kept = tri4_candidates_lanes(&r4, &p, 15u, INFINITY, &lanes);
         unsigned near = 0;
         for (unsigned l = 0; l < 4; l++)
             near |= (unsigned)(lanes.t_lo[l] < ray.tmin) << l;
         const unsigned before = tri4_before_tmin(&ray, &p, kept & near);
+        const unsigned before_lanes = tri4_before_tmin_lanes(&r4, &p, &lanes, kept & near);
         for (unsigned l = 0; l < 4; l++) {
-            if (!(before >> l & 1u))
+            if (!((before | before_lanes) >> l & 1u))
                 continue;
             (*refused)++;
             float t, u, w;
             if (isect_triangle(&ray, tri[l], tri[l] + 3, tri[l] + 6, INFINITY, &t, &u, &w)) {
                 if (failures < 10)
-                    printf("  FAIL: lane %u refused before tmin %a but hit at t %a\n", l,
-                           ray.tmin, t);
+                    printf("  FAIL: lane %u refused before tmin %a (%s) but hit at t %a\n", l,
+                           ray.tmin, before_lanes >> l & 1u ? "filter's floats" : "world",
+                           t);
                 failures++;
             }
         }
@@ -327,6 +337,148 @@ static void one_case(struct tg_rng *r, uint64_t *cases, uint64_t *kept_rejected,
                 printf("  FAIL: leaf %s: found %d/%d t %a/%a prim %u/%u\n",
                        any ? "any" : "closest", s.found, q.found, s.hit.t, q.hit.t, s.hit.prim,
                        q.hit.prim);
+            failures++;
+        }
+    }
+    (*cases)++;
+}
+
+/*
+ * Check 4: tri4_before_tmin_lanes (the near lanes' refusal from the
+ * filter's floats) where it is tightest.  A ray starts on a triangle or
+ * beside it (along its normal, 10^-9 .. 1 of its size), towards a light
+ * at a random distance or at a grazing angle; the triangle's size is
+ * 2^-18 .. 2^18 and now and then it lies far from the origin (2^17 of
+ * its size away); tmin is set around the triangle's own t: just above or
+ * below the double-precision plane distance, at the float t the scalar
+ * test computes (where it accepts, t >= tmin) or the next float above
+ * it, far above, or a shadow ray's small step.  Every lane refused must
+ * be one isect_triangle refuses; a bound too tight by a factor of a few
+ * refuses lanes the scalar test accepts at tmin just below their t.
+ * *accepted counts the near lanes the scalar test accepts (those a too
+ * tight bound would refuse), *refused the lanes refused, *close those
+ * refused with tmin within 2^-10 of the triangle's t.
+ */
+static void tmin_case(struct tg_rng *r, uint64_t *cases, uint64_t *accepted, uint64_t *refused,
+                      uint64_t *close)
+{
+    const float scale = ldexpf(1.0f, (int)tg_below(r, 37) - 18);
+    float centre[3] = {0.0f, 0.0f, 0.0f};
+    if (tg_below(r, 3) == 0)
+        for (int k = 0; k < 3; k++)
+            centre[k] = scale * 0x1p17f * tg_range(r, -1.0f, 1.0f);
+    float tri[4][9];
+    uint32_t prim[4];
+    for (int l = 0; l < 4; l++) {
+        for (int i = 0; i < 9; i++)
+            tri[l][i] = centre[i % 3] + scale * tg_range(r, -1.0f, 1.0f);
+        prim[l] = (uint32_t)l;
+    }
+    /* The ray's triangle is lane 0; a neighbour sharing its edge now and
+     * then. */
+    if (tg_below(r, 2))
+        memcpy(tri[1], tri[0] + 3, 6 * sizeof(float));
+    const float *t0 = tri[0];
+    double e1[3], e2[3], n[3];
+    for (int k = 0; k < 3; k++) {
+        e1[k] = (double)t0[3 + k] - t0[k];
+        e2[k] = (double)t0[6 + k] - t0[k];
+    }
+    n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+    n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+    n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+    const double nn = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (!(nn > 0.0))
+        return;
+    /* The origin: a point inside the triangle, moved along the normal
+     * now and then. */
+    float a = tg_unit(r), b = tg_unit(r);
+    if (a + b > 1.0f) {
+        a = 1.0f - a;
+        b = 1.0f - b;
+    }
+    const double off = tg_below(r, 2) ? 0.0
+                                      : (tg_below(r, 2) ? 1.0 : -1.0) * scale *
+                                            pow(10.0, -9.0 * tg_unit(r));
+    float org[3], dir[3];
+    for (int k = 0; k < 3; k++)
+        org[k] = (float)(t0[k] + a * e1[k] + b * e2[k] + off * n[k] / nn);
+    /* The direction: to a light 1 .. 100 sizes away, or nearly in the
+     * plane (grazing, 10^-6 .. 1 of the normal in it). */
+    if (tg_below(r, 4) == 0) {
+        const double g = pow(10.0, -6.0 * tg_unit(r)) * (tg_below(r, 2) ? 1.0 : -1.0);
+        const double s = tg_range(r, -1.0f, 1.0f);
+        for (int k = 0; k < 3; k++)
+            dir[k] = (float)(scale * (e1[k] + s * e2[k]) / nn * scale + g * scale * n[k] / nn);
+    } else {
+        const float dist = scale * powf(10.0f, 2.0f * tg_unit(r));
+        for (int k = 0; k < 3; k++)
+            dir[k] = dist * tg_range(r, -1.0f, 1.0f);
+    }
+    if (dir[0] == 0.0f && dir[1] == 0.0f && dir[2] == 0.0f)
+        return;
+    /* The triangle's t: the plane distance in double, and the float t
+     * of the scalar test where it hits with a tmin far below. */
+    double num = 0.0, den = 0.0;
+    for (int k = 0; k < 3; k++) {
+        num += n[k] * ((double)t0[k] - org[k]);
+        den += n[k] * dir[k];
+    }
+    if (den == 0.0)
+        return;
+    const double t_plane = num / den;
+    struct trace_ray ray;
+    trace_ray_init(&ray, org, dir, 0x1p-126f);
+    float t_hit, uu, ww;
+    const int hit = isect_triangle(&ray, t0, t0 + 3, t0 + 6, INFINITY, &t_hit, &uu, &ww);
+    const double ta = fabs(t_plane);
+    double tmin;
+    const int kind = (int)tg_below(r, 6);
+    if (kind == 0)
+        tmin = ta * (1.0 + ldexp(1.0, -2 - (int)tg_below(r, 21)));
+    else if (kind == 1)
+        tmin = ta * (1.0 - ldexp(1.0, -2 - (int)tg_below(r, 21)));
+    else if (kind == 2)
+        tmin = ta * ldexp(1.0, 1 + (int)tg_below(r, 20));
+    else if (kind == 3 && hit)
+        tmin = tg_below(r, 2) ? t_hit : isect_next_up(t_hit);
+    else
+        tmin = pow(10.0, -9.0 * tg_unit(r)) * scale /
+               sqrt((double)dir[0] * dir[0] + (double)dir[1] * dir[1] + (double)dir[2] * dir[2]);
+    const float tmin_f = (float)tmin;
+    if (!(tmin_f >= 0x1p-126f) || !isfinite(tmin_f))
+        return;
+    trace_ray_init(&ray, org, dir, tmin_f);
+    struct tri4_packet p;
+    for (int l = 0; l < 4; l++) {
+        accel_set_packet_lane(&p, (uint32_t)l, tri[l]);
+        p.prim[l] = prim[l];
+    }
+    struct tri4_ray r4;
+    tri4_ray_init(&r4, &ray);
+    struct tri4_lanes lanes;
+    memset(&lanes, 0, sizeof(lanes)); /* written only for kept lanes */
+    const unsigned kept = tri4_candidates_lanes(&r4, &p, 15u, INFINITY, &lanes);
+    unsigned near = 0;
+    for (unsigned l = 0; l < 4; l++)
+        near |= (unsigned)(lanes.t_lo[l] < tmin_f) << l;
+    near &= kept;
+    const unsigned sure = tri4_before_tmin_lanes(&r4, &p, &lanes, near);
+    for (unsigned l = 0; l < 4; l++) {
+        if (!(near >> l & 1u))
+            continue;
+        float t, u, w;
+        const int acc = isect_triangle(&ray, tri[l], tri[l] + 3, tri[l] + 6, INFINITY, &t, &u, &w);
+        *accepted += (uint64_t)acc;
+        if (!(sure >> l & 1u))
+            continue;
+        (*refused)++;
+        *close += (uint64_t)(l == 0 && fabs(tmin - ta) <= ldexp(ta, -10));
+        if (acc) {
+            if (failures < 10)
+                printf("  FAIL: lane %u refused from the filter's floats, tmin %a, but hit at "
+                       "t %a (scale %a)\n",
+                       l, tmin_f, t, scale);
             failures++;
         }
     }
@@ -500,6 +652,22 @@ int main(void)
     tg_seed(&rs, 2013);
     for (int i = 0; i < 200000; i++)
         one_case(&rs, &cases, &kept_rejected, &hits, 1, &refused_shadow);
+    /* Check 4: the near lanes' refusal where it is tightest. */
+    uint64_t tmin_cases = 0, tmin_accepted = 0, tmin_refused = 0, tmin_close = 0;
+    {
+        struct tg_rng rt;
+        tg_seed(&rt, 2024);
+        for (int i = 0; i < 400000; i++)
+            tmin_case(&rt, &tmin_cases, &tmin_accepted, &tmin_refused, &tmin_close);
+    }
+    printf("tri4_differential: %llu rays from or beside a triangle with tmin about its t: "
+           "%llu near lanes the scalar test accepts, %llu refused from the filter's floats "
+           "(%llu with tmin within 2^-10 of the triangle's t)\n",
+           (unsigned long long)tmin_cases, (unsigned long long)tmin_accepted,
+           (unsigned long long)tmin_refused, (unsigned long long)tmin_close);
+    failures += !CHECKF(tmin_accepted > 1000 && tmin_close > 1000,
+                        "too few near lanes accepted (%llu) or refused close to tmin (%llu)",
+                        (unsigned long long)tmin_accepted, (unsigned long long)tmin_close);
     /* Leaves of two packets, in each table with the 8-wide walk this
      * CPU runs (none: nothing to compare). */
     leaf8_fn fns[2];

@@ -560,6 +560,118 @@ static inline unsigned tri4_before_tmin(const struct trace_ray *ray, const struc
 }
 
 /*
+ * tri4_before_tmin's refusal from the filter's own floats (those it
+ * wrote to `lanes`: U, V, W, det, Az, Bz, Cz) and the vertices minus the
+ * origin: for most lanes a ray starts on (a shadow ray's own triangle)
+ * this decides in 85 instructions a call where tri4_before_tmin took
+ * 122 (gears, AVX2), and tri4_before_tmin stays the fallback for a lane
+ * this cannot decide (2.8 % of the calls there).  The lanes of `lanes_mask`
+ * (kept or deferred by the filter, with t_lo < tmin) on which
+ * isect_triangle_finish surely returns 0, because the t it computes is
+ * below tmin; a proof, not an estimate.
+ *
+ * The identity.  With the exact shear (sx = -d_kx / d_kz, sy likewise,
+ * sz = 1 / d_kz) and the exact vertices minus origin a_i, the ray is the
+ * sheared z axis, and the paper's T / det of the exact edge functions
+ * (Woop, Benthin and Wald 2013, sec. 3) is the distance along the ray
+ * to the triangle's plane: t_p = T* / det*, det* = U* + V* + W*,
+ * T* = U* Az* + V* Bz* + W* Cz*, for any det* != 0 (the barycentrics of
+ * the plane's point on the axis, of any sign).  The finish's
+ * proper-triangle t is the same t_p, computed in double as num / den =
+ * (n . a_0) / (n . dir); and det* = +-(n . dir) / d_kz, so
+ * |den| = |det*| D exactly, D = |d_kz|, the largest |dir| component.
+ *
+ * The errors (u = 2^-24; S the largest |component| of the a_i as the
+ * filter computed them in float, each within u of the exact one):
+ * - a sheared x or y float (x + sx z, rounded; sx = fl(-d_kx / d_kz),
+ *   |sx| <= 1) is within 6.02 u S of the exact value, and both are below
+ *   X = 2 S (1 + 4 u);
+ * - so each float edge function is within E1 = 4 X 6.02 u S + 4.01 u X^2
+ *   <= 64.2 u S^2 of the exact one (the two products' operands, their
+ *   roundings, the subtraction's);
+ * - a kept lane's U, V, W have one sign (mixed signs are refused), so
+ *   |U| + |V| + |W| <= |det| (1 + 2.01 u) and |det - det*| <= 3 E1 +
+ *   2.02 u |det|;
+ * - a sheared depth Az = fl(sz a_z), sz = fl(1 / d_kz), is within
+ *   3.02 u Z of the exact one, with Z = S |sz| (1 + 7.1 u) above both and
+ *   above S / D;
+ * - so T, computed here as fl(fl(fl(U Az) + fl(V Bz)) + fl(W Cz)), is
+ *   within E_T = Z (192.7 u S^2 + 6.04 u |det|) of T*;
+ * - the finish's double num and den are within 240 2^-53 S^3 and
+ *   240 2^-53 S^2 D of n . a_0 and n . dir (edge components below
+ *   2 S (1 + u), exact or once rounded in double).
+ * The checks, whose constants exceed these bounds 2.6 times:
+ * 1. |det| >= 2^-13 S^2.  Then |det*| >= 0.905 |det| > 0, of det's sign
+ *    s, and |n|^2 >= den^2 / |dir|^2 >= det*^2 / 3 exceeds the finish's
+ *    sliver threshold (ISECT_SLIVER_ROUNDINGS 2^-24 size)^2 lmax <=
+ *    2^-36 X^2 12 S^2 more than 5 times (while ISECT_SLIVER_ROUNDINGS is
+ *    below 140): the finish takes num / den, with den != 0 of the exact
+ *    den's sign.
+ * 2. s T + fl(S |sz|) (2^-15 S^2 + 2^-20 |det|) < tmin (7/8) |det|, in
+ *    float.  The left side, with its roundings, bounds s T* + 240 2^-53
+ *    S^3 / D (the bound on T / det's error is built as in PBRT 3rd ed.,
+ *    sec. 3.9.6, there for t > 0); the right side, with its roundings, is
+ *    below tmin (1 - 2^-20) (|det*| - 240 2^-53 S^2), which check 1 makes
+ *    at least 0.905 tmin |det| (1 - 2^-20).  Multiplied by D: s num + its
+ *    error <= tmin (1 - 2^-20) (|den| - its error), so num / den <= tmin
+ *    (1 - 2^-20) in double, its float t (at most 0 when the quotient is)
+ *    is below tmin (the float below a normal tmin is at least tmin
+ *    (1 - 2^-23)), and so is the clamp of t into [t_lo, t_hi] with
+ *    t_lo < tmin: the finish returns 0.  (With 1.0625 in place of 7/8,
+ *    tri4_differential's check 4 finds lanes refused that the finish
+ *    accepts.)
+ * Ranges: S in [2^-20, 2^20], fl(S |sz|) in [2^-60, 2^40], tmin >=
+ * 2^-100 (normal), where nothing overflows and underflow's absolute
+ * error (2^-150 an operation) is far below the bounds (the error term is at least 2^-115).  NaN fails the
+ * comparisons (a NaN coordinate makes det NaN; maxps may drop it from S,
+ * not from det).  A deferred lane is decided the same way: the finish's
+ * t does not use the filter's U, V, W, which the deferral recomputes,
+ * and a deferred lane with det 0 or NaN fails check 1.
+ * conformance/internal/tri4_differential checks each lane refused here
+ * against isect_triangle, with tmin near the triangle's own t.
+ */
+static inline unsigned tri4_before_tmin_lanes(const struct tri4_ray *r,
+                                              const struct tri4_packet *p,
+                                              const struct tri4_lanes *lanes,
+                                              unsigned lanes_mask)
+{
+    const __m128 sign = _mm_set1_ps(-0.0f);
+    /* S from the a_i as the filter computes them: v_i + (-org). */
+    __m128 sc = _mm_andnot_ps(sign, _mm_add_ps(r->neg_org_x, tri4_row(p, 0, r->off_x)));
+    sc = _mm_max_ps(sc, _mm_andnot_ps(sign, _mm_add_ps(r->neg_org_y, tri4_row(p, 0, r->off_y))));
+    sc = _mm_max_ps(sc, _mm_andnot_ps(sign, _mm_add_ps(r->neg_org_z, tri4_row(p, 0, r->off_z))));
+    sc = _mm_max_ps(sc, _mm_andnot_ps(sign, _mm_add_ps(r->neg_org_x, tri4_row(p, 1, r->off_x))));
+    sc = _mm_max_ps(sc, _mm_andnot_ps(sign, _mm_add_ps(r->neg_org_y, tri4_row(p, 1, r->off_y))));
+    sc = _mm_max_ps(sc, _mm_andnot_ps(sign, _mm_add_ps(r->neg_org_z, tri4_row(p, 1, r->off_z))));
+    sc = _mm_max_ps(sc, _mm_andnot_ps(sign, _mm_add_ps(r->neg_org_x, tri4_row(p, 2, r->off_x))));
+    sc = _mm_max_ps(sc, _mm_andnot_ps(sign, _mm_add_ps(r->neg_org_y, tri4_row(p, 2, r->off_y))));
+    sc = _mm_max_ps(sc, _mm_andnot_ps(sign, _mm_add_ps(r->neg_org_z, tri4_row(p, 2, r->off_z))));
+    const __m128 s2 = _mm_mul_ps(sc, sc);
+    const __m128 zb = _mm_mul_ps(sc, _mm_andnot_ps(sign, r->sz));
+    const __m128 det = _mm_loadu_ps(lanes->det);
+    const __m128 abs_det = _mm_andnot_ps(sign, det);
+    const __m128 T =
+        _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_loadu_ps(lanes->U), _mm_loadu_ps(lanes->Az)),
+                              _mm_mul_ps(_mm_loadu_ps(lanes->V), _mm_loadu_ps(lanes->Bz))),
+                   _mm_mul_ps(_mm_loadu_ps(lanes->W), _mm_loadu_ps(lanes->Cz)));
+    /* Check 2: s T (T with det's sign flipped in, exact) + the error
+     * term < tmin (7/8) |det|. */
+    const __m128 sT = _mm_xor_ps(T, _mm_and_ps(sign, det));
+    const __m128 err = _mm_mul_ps(zb, _mm_add_ps(_mm_mul_ps(_mm_set1_ps(0x1p-15f), s2),
+                                                 _mm_mul_ps(_mm_set1_ps(0x1p-20f), abs_det)));
+    const __m128 rhs = _mm_mul_ps(r->tmin, _mm_mul_ps(_mm_set1_ps(0.875f), abs_det));
+    __m128 ok = _mm_cmplt_ps(_mm_add_ps(sT, err), rhs);
+    /* Check 1. */
+    ok = _mm_and_ps(ok, _mm_cmpge_ps(abs_det, _mm_mul_ps(_mm_set1_ps(0x1p-13f), s2)));
+    ok = _mm_and_ps(ok, _mm_and_ps(_mm_cmpge_ps(sc, _mm_set1_ps(0x1p-20f)),
+                                   _mm_cmple_ps(sc, _mm_set1_ps(0x1p20f))));
+    ok = _mm_and_ps(ok, _mm_and_ps(_mm_cmpge_ps(zb, _mm_set1_ps(0x1p-60f)),
+                                   _mm_cmple_ps(zb, _mm_set1_ps(0x1p40f))));
+    ok = _mm_and_ps(ok, _mm_cmpge_ps(r->tmin, _mm_set1_ps(0x1p-100f)));
+    return (unsigned)_mm_movemask_ps(ok) & lanes_mask;
+}
+
+/*
  * The sheared x, y of lane l's vertices (A[0..5] = Ax, Ay, Bx, By, Cx,
  * Cy) and isect_triangle's size of them, for the any-hit lane test, whose
  * filter did not keep them (tri4_candidates_lanes_impl with any_hit).

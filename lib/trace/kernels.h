@@ -28,6 +28,14 @@ enum trace_isa {
     TRACE_ISA_COUNT
 };
 
+/* A single-ray walk over one wide layout, from the ray's origin,
+ * direction and tmin, without counters: closest1's (hit) or any1's
+ * answer (hit unused, NULL allowed), as struct trace_kernels' walk1
+ * chooses it for the layout. */
+typedef int (*trace_walk1_fn)(const struct bvh4 *wide, const float org[3], const float dir[3],
+                              float tmin, float t_max, struct trace_hit *hit,
+                              struct trace_counters *counters);
+
 struct trace_kernels {
     enum trace_isa isa;
     const char *name; /* "scalar", "sse4", "avx2", "avx512": the isa= value */
@@ -101,6 +109,15 @@ struct trace_kernels {
     unsigned (*packet_xform)(const double m[12], const float (*org)[3], const float (*dir)[3],
                              const float *tmin, unsigned rays,
                              struct trace_ray o_ray[TRACE_PACKET]);
+    /* The walk closest1 (any_hit 0) or any1 (any_hit 1) takes on this
+     * layout without counters, chosen once for the layout instead of
+     * once a ray (the entries test width, node count and, closest hit,
+     * prefetch_top every ray): called with counters NULL it gives
+     * closest1's / any1's answer bit for bit.  NULL where those entries
+     * take no walk of their own (a layout without an 8-wide walk in this
+     * table: call closest1 / any1), and in the tables without the 8-wide
+     * walk. */
+    trace_walk1_fn (*walk1)(const struct bvh4 *wide, int any_hit);
 };
 
 /* The table of an ISA, or NULL when this build has no such table or this

@@ -114,6 +114,24 @@ static inline int wide_take_closest(struct wide_state *s, uint32_t prim, float t
     return 1;
 }
 
+/* The kept lanes of packet p, among `near` (t_lo < tmin), that the
+ * finish surely refuses on t: tri4_before_tmin_lanes from the filter's
+ * floats, then tri4_before_tmin for the lanes it cannot decide.  A
+ * function of its own, called for the near lanes only: inlined, its
+ * vectors changed GCC's register allocation of the filter before it
+ * (measured: 4 to 7 more instructions, spills, on every any-hit leaf
+ * call, more than its call costs). */
+static unsigned wide_near_refused(const struct wide_state *s, const struct tri4_packet *p,
+                                  const struct tri4_lanes *lanes, unsigned near) WIDE_NOINLINE;
+static unsigned wide_near_refused(const struct wide_state *s, const struct tri4_packet *p,
+                                  const struct tri4_lanes *lanes, unsigned near)
+{
+    const unsigned sure = tri4_before_tmin_lanes(&s->r4, p, lanes, near);
+    if (near & ~sure)
+        return sure | tri4_before_tmin(s->ray, p, near & ~sure);
+    return sure;
+}
+
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
@@ -145,10 +163,11 @@ static inline int wide_packet_test(struct wide_state *s, const struct tri4_packe
             const unsigned behind =
                 (unsigned)_mm_movemask_ps(_mm_cmplt_ps(_mm_loadu_ps(lanes.t_hi), tmin)) & near;
             mask &= ~behind;
-            near &= ~behind;
-        }
-        if (near)
+            if (near & ~behind)
+                mask &= ~wide_near_refused(s, p, &lanes, near & ~behind);
+        } else if (near) {
             mask &= ~tri4_before_tmin(s->ray, p, near);
+        }
     }
     while (mask) {
         const unsigned l = (unsigned)__builtin_ctz(mask);
@@ -749,11 +768,16 @@ static inline int wide_leaf8_test(struct wide_state *s, const struct tri4_packet
         if (depth_out) {
             mask &= ~behind;
             near &= ~behind;
+            if (near & 15u)
+                mask &= ~wide_near_refused(s, p, &lanes[0], near & 15u);
+            if (near >> 4)
+                mask &= ~(wide_near_refused(s, p + 1, &lanes[1], near >> 4) << 4);
+        } else {
+            if (near & 15u)
+                mask &= ~tri4_before_tmin(s->ray, p, near & 15u);
+            if (near >> 4)
+                mask &= ~(tri4_before_tmin(s->ray, p + 1, near >> 4) << 4);
         }
-        if (near & 15u)
-            mask &= ~tri4_before_tmin(s->ray, p, near & 15u);
-        if (near >> 4)
-            mask &= ~(tri4_before_tmin(s->ray, p + 1, near >> 4) << 4);
     }
     while (mask) {
         const unsigned l = (unsigned)__builtin_ctz(mask);
@@ -858,6 +882,20 @@ WIDE8_WALK1(wide8_walk1_any_leaf8, walk_wide8_ray_leaf8, 1, 0, 1)
 WIDE8_WALK1(wide8_walk1_closest_leaf8_stats, walk_wide8_ray_leaf8, 0, 1, 0)
 WIDE8_WALK1(wide8_walk1_closest_early_leaf8_stats, walk_wide8_ray_leaf8, 0, 1, 1)
 WIDE8_WALK1(wide8_walk1_any_leaf8_stats, walk_wide8_ray_leaf8, 1, 1, 1)
+
+/* kernels.h's walk1: the walk walk_wide_single1 below takes without
+ * counters, chosen once for a layout.  A caller that traces many rays
+ * over one layout (rtbench's loops) calls it directly, without the
+ * entries' tests of the layout every ray (10-19 instructions a ray on
+ * AVX2, callgrind). */
+static trace_walk1_fn TRACE_WIDE_WALK1(const struct bvh4 *wide, int any_hit)
+{
+    if (wide->width != 8 || !wide->node_count)
+        return NULL;
+    if (any_hit)
+        return wide8_walk1_any_leaf8;
+    return wide->prefetch_top ? wide8_walk1_closest_early_leaf8 : wide8_walk1_closest_leaf8;
+}
 
 /*
  * The leaf of the 8-wide walks on its own, for
