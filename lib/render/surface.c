@@ -631,10 +631,62 @@ SURFACE_INLINE void lod_ray_quad(struct surface_texture *const t[4])
     const __m256d sa = _mm256_add_pd(_mm256_mul_pd(ja[0], ja[0]), _mm256_mul_pd(ja[1], ja[1]));
     const __m256d sb = _mm256_add_pd(_mm256_mul_pd(jb[0], jb[0]), _mm256_mul_pd(jb[1], jb[1]));
     const __m256d sbc = _mm256_mul_pd(sb, _mm256_mul_pd(cosine, cosine));
-    double v_len[4], v_cos[4], v_along[4], v_ja[2][4], v_jb[2][4], v_sa[4], v_sb[4], v_sbc[4];
-    _mm256_storeu_pd(v_len, dir_len);
+    /* lod_ray's common path (the triangle and direction not degenerate,
+     * the ray not meeting the plane head-on) and, there, lod_axes's first
+     * steps in the lanes: which axis wins by the margin, and lod_near's
+     * footprint xs and its tests against 1 and the last level (`top`), each
+     * lane the scalar operations in their order.  What is left hit by hit
+     * is lod_near's log2 and its rounding test; a lane whose answer is not
+     * decided so (no axis wins, a footprint close to a bound or the log2
+     * close to a float's rounding boundary) takes lod_axes whole, as before,
+     * and a lane off the common path lod_ray. */
+    const __m256d zero = _mm256_setzero_pd();
+#define QUAD(f) _mm256_set_pd(f(3), f(2), f(1), f(0))
+#define P_A(i) l[i]->p_a
+#define T_A(i) l[i]->t_a
+#define WIDTH(i) (double)t[i]->width
+#define TOP(i) lod_top(t[i]->tex->level_count)
+    const __m256d p_a = QUAD(P_A), t_a = QUAD(T_A), width = QUAD(WIDTH), top = QUAD(TOP);
+#undef QUAD
+#undef P_A
+#undef T_A
+#undef WIDTH
+#undef TOP
+    /* isfinite(nn2): |nn2| <= DBL_MAX, which a NaN fails. */
+    const __m256d finite = _mm256_cmp_pd(_mm256_andnot_pd(sign, nn2), _mm256_set1_pd(DBL_MAX),
+                                         _CMP_LE_OQ);
+    const __m256d common = _mm256_and_pd(
+        _mm256_and_pd(_mm256_and_pd(_mm256_cmp_pd(p_a, zero, _CMP_GT_OQ),
+                                    _mm256_cmp_pd(t_a, zero, _CMP_GT_OQ)),
+                      _mm256_and_pd(_mm256_cmp_pd(dir_len, zero, _CMP_GT_OQ), finite)),
+        _mm256_cmp_pd(along_len, _mm256_set1_pd(1e-9), _CMP_GT_OQ));
+    const __m256d margin = _mm256_set1_pd(1.0 + LOD_AXIS_MARGIN);
+    const __m256d major = _mm256_cmp_pd(sa, _mm256_mul_pd(sbc, margin), _CMP_GT_OQ);
+    const __m256d minor =
+        _mm256_andnot_pd(major, _mm256_cmp_pd(sbc, _mm256_mul_pd(sa, margin), _CMP_GT_OQ));
+    /* lod_near(sa, sqrt(sa) width / cosine, ...) or lod_near(sb,
+     * sqrt(sb) width, ...). */
+    const __m256d s2 = _mm256_blendv_pd(sb, sa, major);
+    const __m256d root = _mm256_mul_pd(_mm256_sqrt_pd(s2), width);
+    const __m256d xs = _mm256_blendv_pd(root, _mm256_div_pd(root, cosine), major);
+    const __m256d usable = _mm256_and_pd(
+        _mm256_and_pd(common, _mm256_or_pd(major, minor)),
+        _mm256_and_pd(_mm256_cmp_pd(s2, _mm256_set1_pd(0x1p-960), _CMP_GE_OQ),
+                      _mm256_cmp_pd(s2, _mm256_set1_pd(0x1p960), _CMP_LE_OQ)));
+    const __m256d below = _mm256_cmp_pd(xs, _mm256_set1_pd(1.0 - LOD_NEAR_RELATIVE), _CMP_LT_OQ);
+    const __m256d beyond =
+        _mm256_cmp_pd(xs, _mm256_mul_pd(top, _mm256_set1_pd(1.0 + LOD_NEAR_RELATIVE)), _CMP_GT_OQ);
+    const __m256d inside = _mm256_and_pd(
+        _mm256_cmp_pd(xs, _mm256_set1_pd(1.0 + LOD_NEAR_RELATIVE), _CMP_GT_OQ),
+        _mm256_cmp_pd(xs, _mm256_mul_pd(top, _mm256_set1_pd(1.0 - LOD_NEAR_RELATIVE)),
+                      _CMP_LT_OQ));
+    const int common_bits = _mm256_movemask_pd(common);
+    const int usable_bits = _mm256_movemask_pd(usable);
+    const int below_bits = _mm256_movemask_pd(below);
+    const int beyond_bits = _mm256_movemask_pd(beyond);
+    const int inside_bits = _mm256_movemask_pd(inside);
+    double v_cos[4], v_ja[2][4], v_jb[2][4], v_sa[4], v_sb[4], v_sbc[4], v_xs[4];
     _mm256_storeu_pd(v_cos, cosine);
-    _mm256_storeu_pd(v_along, along_len);
     _mm256_storeu_pd(v_ja[0], ja[0]);
     _mm256_storeu_pd(v_ja[1], ja[1]);
     _mm256_storeu_pd(v_jb[0], jb[0]);
@@ -642,12 +694,29 @@ SURFACE_INLINE void lod_ray_quad(struct surface_texture *const t[4])
     _mm256_storeu_pd(v_sa, sa);
     _mm256_storeu_pd(v_sb, sb);
     _mm256_storeu_pd(v_sbc, sbc);
+    _mm256_storeu_pd(v_xs, xs);
     for (int i = 0; i < 4; i++) {
-        const struct surface_lod *li = l[i];
-        if (!(li->p_a > 0.0) || !(li->t_a > 0.0) || !(v_len[i] > 0.0) || !isfinite(li->nn2) ||
-            !(v_along[i] > 1e-9)) {
+        if (!(common_bits >> i & 1)) {
             texture_lambda(t[i]);
             continue;
+        }
+        if (usable_bits >> i & 1) {
+            if (below_bits >> i & 1) {
+                t[i]->lambda = -INFINITY; /* x < 1: a magnification */
+                continue;
+            }
+            if (beyond_bits >> i & 1) {
+                t[i]->lambda = INFINITY; /* x > top: the last level */
+                continue;
+            }
+            if (inside_bits >> i & 1) {
+                const double lg = log2(v_xs[i]);
+                const float f = (float)lg;
+                if ((float)(lg - LOD_NEAR_ABSOLUTE) == f && (float)(lg + LOD_NEAR_ABSOLUTE) == f) {
+                    t[i]->lambda = f;
+                    continue;
+                }
+            }
         }
         const double ja_i[2] = {v_ja[0][i], v_ja[1][i]}, jb_i[2] = {v_jb[0][i], v_jb[1][i]};
         t[i]->lambda = lod_axes(ja_i, jb_i, v_sa[i], v_sb[i], v_sbc[i], v_cos[i], t[i]->width,
