@@ -565,7 +565,8 @@ SURFACE_INLINE void lod_ray_quad(struct surface_texture *const t[4])
         d[k] = QUAD(DIR);
         g[k] = QUAD(NG);
     }
-    if (l[0] == l[1] && l[0] == l[2] && l[0] == l[3]) {
+    const int shared = l[0] == l[1] && l[0] == l[2] && l[0] == l[3];
+    if (shared) {
         /* One triangle part for the four (fetch_colours_one_triangle):
          * its values broadcast, the same doubles in every lane. */
         const struct surface_lod *o = l[0];
@@ -646,7 +647,19 @@ SURFACE_INLINE void lod_ray_quad(struct surface_texture *const t[4])
 #define T_A(i) l[i]->t_a
 #define WIDTH(i) (double)t[i]->width
 #define TOP(i) lod_top(t[i]->tex->level_count)
-    const __m256d p_a = QUAD(P_A), t_a = QUAD(T_A), width = QUAD(WIDTH), top = QUAD(TOP);
+    const __m256d width = QUAD(WIDTH);
+    __m256d p_a, t_a, top;
+    if (shared) {
+        /* One triangle part, so one block on one triangle and texture
+         * (fetch_colours_one_triangle). */
+        p_a = _mm256_set1_pd(l[0]->p_a);
+        t_a = _mm256_set1_pd(l[0]->t_a);
+        top = _mm256_set1_pd(TOP(0));
+    } else {
+        p_a = QUAD(P_A);
+        t_a = QUAD(T_A);
+        top = QUAD(TOP);
+    }
 #undef QUAD
 #undef P_A
 #undef T_A
