@@ -35,6 +35,9 @@
 #if defined(__SSE2__) && !defined(RT_NO_SIMD)
 #include <emmintrin.h>
 #define SHADE_LANES 1
+#if defined(__AVX__)
+#include <immintrin.h> /* the AVX2 copy (render/shade_eye_avx2.c) */
+#endif
 #else
 #define SHADE_LANES 0
 #endif
@@ -219,15 +222,13 @@ static int same_hit(const struct trace_scene_hit *a, const struct trace_scene_hi
 }
 
 /* The eye light's colour of a hit whose surface colours are e, seen
- * along the unit unit_dir. */
+ * along the unit vector u: `cosine` is |e->n . u| (vec3_dot). */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
 static inline void eye_light(const struct render_state *st, const struct surface_colour *e,
-                             const float global_ambient[4], const float unit_dir[3],
-                             float rgba[4])
+                             const float global_ambient[4], float cosine, float rgba[4])
 {
-    float cosine = fabsf(vec3_dot(e->n, unit_dir));
 #if SHADE_LANES
     /* Channel k in lane k: (emission + ambient_g ambient) + diffuse cosine
      * as the scalar loop evaluates it; lane 3 (whatever the alphas give)
@@ -300,7 +301,7 @@ static void shade_hit_primed(const struct shade_context *sc, const struct shade_
          * ray casting".  Only the colours it reads are fetched. */
         struct surface_colour e;
         surface_fetch_colour(sc, &hit, dir, at_hit.width, &e);
-        eye_light(st, &e, global_ambient, unit_dir, rgba);
+        eye_light(st, &e, global_ambient, fabsf(vec3_dot(e.n, unit_dir)), rgba);
         return;
     }
     /* The camera ray's first hit: shade_prime_shadows may have fetched
@@ -638,12 +639,91 @@ void shade_prime_shadows(const struct shade_context *sc, unsigned found,
     prime_light_packets(sc, surf, (const float(*)[3])origin, lit, primed);
 }
 
+#if SHADE_LANES && defined(__AVX__)
+/* vec3_dot of eight lanes: (a0 b0 + a1 b1) + a2 b2. */
+static inline __m256 eye_dot8(const __m256 a[3], const __m256 b[3])
+{
+    return _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(a[0], b[0]), _mm256_mul_ps(a[1], b[1])),
+                         _mm256_mul_ps(a[2], b[2]));
+}
+
+/* A block's TRACE_PACKET hits' cone widths and unit directions (eye_hits'
+ * first loop) in eight float lanes, lane i hit i, each lane the scalar
+ * operations in their order: the same floats.  unit[k][i] is component k
+ * of hit i's. */
+static void eye_widths8(const float *const dir[], const struct trace_scene_hit *const hits[],
+                        const struct shade_cone cone[], float width[],
+                        float unit[3][TRACE_PACKET])
+{
+    float lane_d[3][TRACE_PACKET], lane_t[TRACE_PACKET], lane_w[TRACE_PACKET],
+        lane_s[TRACE_PACKET];
+    for (int i = 0; i < TRACE_PACKET; i++) {
+        for (int k = 0; k < 3; k++)
+            lane_d[k][i] = dir[i][k];
+        lane_t[i] = hits[i]->t;
+        lane_w[i] = cone[i].width;
+        lane_s[i] = cone[i].spread;
+    }
+    __m256 d[3];
+    for (int k = 0; k < 3; k++)
+        d[k] = _mm256_loadu_ps(lane_d[k]);
+    const __m256 len = _mm256_sqrt_ps(eye_dot8(d, d));
+    const __m256 w = _mm256_add_ps(
+        _mm256_loadu_ps(lane_w),
+        _mm256_mul_ps(_mm256_loadu_ps(lane_s), _mm256_mul_ps(_mm256_loadu_ps(lane_t), len)));
+    _mm256_storeu_ps(width, _mm256_andnot_ps(_mm256_set1_ps(-0.0f), w));
+    /* len > 0 and finite (not above FLT_MAX; a NaN fails both): the
+     * direction times 1 / len, else the direction itself. */
+    const __m256 ok = _mm256_and_ps(_mm256_cmp_ps(len, _mm256_setzero_ps(), _CMP_GT_OQ),
+                                    _mm256_cmp_ps(len, _mm256_set1_ps(FLT_MAX), _CMP_LE_OQ));
+    const __m256 inv = _mm256_div_ps(_mm256_set1_ps(1.0f), len);
+    for (int k = 0; k < 3; k++)
+        _mm256_storeu_ps(unit[k], _mm256_blendv_ps(d[k], _mm256_mul_ps(d[k], inv), ok));
+}
+
+/* |e[i].n . unit_i| of the TRACE_PACKET hits in eight float lanes. */
+static void eye_cosines8(const struct surface_colour e[], float unit[3][TRACE_PACKET],
+                         float cosine[])
+{
+    float lane_n[3][TRACE_PACKET];
+    for (int i = 0; i < TRACE_PACKET; i++)
+        for (int k = 0; k < 3; k++)
+            lane_n[k][i] = e[i].n[k];
+    __m256 nv[3], u[3];
+    for (int k = 0; k < 3; k++) {
+        nv[k] = _mm256_loadu_ps(lane_n[k]);
+        u[k] = _mm256_loadu_ps(unit[k]);
+    }
+    _mm256_storeu_ps(cosine, _mm256_andnot_ps(_mm256_set1_ps(-0.0f), eye_dot8(nv, u)));
+}
+#endif
+
 static void eye_hits(const struct shade_context *sc, int n, const float *const dir[],
                      const struct trace_scene_hit *const hits[], const struct shade_cone cone[],
                      float *const rgba[])
 {
     struct surface_colour e[TRACE_PACKET];
     float width[TRACE_PACKET] = {0}; /* n of them set (zeros for the compiler's warning) */
+#if SHADE_LANES && defined(__AVX__)
+    if (n == TRACE_PACKET) {
+        /* A whole block: the per-hit steps below in eight lanes. */
+        float unit[3][TRACE_PACKET], cosine[TRACE_PACKET];
+        eye_widths8(dir, hits, cone, width, unit);
+        surface_fetch_colours(sc, n, hits, dir, width, e);
+        eye_cosines8(e, unit, cosine);
+        const struct scene_instance *inst = NULL;
+        uint32_t instance = 0;
+        for (int i = 0; i < n; i++) {
+            if (!inst || hits[i]->instance != instance) {
+                inst = shade_hit_instance(sc, hits[i]);
+                instance = hits[i]->instance;
+            }
+            eye_light(sc->state, &e[i], inst->appearance.gl.light_model.ambient, cosine[i],
+                      rgba[i]);
+        }
+        return;
+    }
+#endif
     float unit_dir[TRACE_PACKET][3];
     /* shade_hit's steps up to the surface's colours for every hit, ... */
     for (int i = 0; i < n; i++) {
@@ -664,7 +744,8 @@ static void eye_hits(const struct shade_context *sc, int n, const float *const d
     for (int i = 0; i < n; i++) {
         const float *global_ambient =
             shade_hit_instance(sc, hits[i])->appearance.gl.light_model.ambient;
-        eye_light(sc->state, &e[i], global_ambient, unit_dir[i], rgba[i]);
+        eye_light(sc->state, &e[i], global_ambient, fabsf(vec3_dot(e[i].n, unit_dir[i])),
+                  rgba[i]);
     }
 }
 

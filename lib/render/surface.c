@@ -43,6 +43,12 @@ struct surface_texture {
     float lambda;                    /* the level of detail, once known */
     int lod;                         /* 1: lambda still to compute from the rest */
     float ng[3], dir[3], width;
+    /* The triangle part the level of detail reads: &tri, a copy (the
+     * tile's cache entry may be taken by a later hit of the batch), or
+     * the cache entry itself when the whole batch is on one triangle
+     * (fetch_colours_one_triangle), which nothing changes before the
+     * levels of detail are computed. */
+    const struct surface_lod *lodp;
     struct surface_lod tri;
 };
 
@@ -410,7 +416,7 @@ static float texture_lod(const struct shade_context *sc, const struct scene_text
 /* t's level of detail from its triangle part alone (lod_ray). */
 static void texture_lambda(struct surface_texture *t)
 {
-    t->lambda = lod_ray(&t->tri, t->tex->level_count, t->ng, t->dir, t->width);
+    t->lambda = lod_ray(t->lodp, t->tex->level_count, t->ng, t->dir, t->width);
 }
 
 #if SURFACE_PAIRS
@@ -451,7 +457,7 @@ SURFACE_INLINE void pair_texel_vector(const __m128d e[3], const __m128d w1[3],
  * again by lod_ray itself. */
 SURFACE_INLINE void lod_ray_pair(struct surface_texture *a, struct surface_texture *b)
 {
-    const struct surface_lod *la = &a->tri, *lb = &b->tri;
+    const struct surface_lod *la = a->lodp, *lb = b->lodp;
     __m128d d[3], g[3], n[3];
     for (int k = 0; k < 3; k++) {
         d[k] = _mm_set_pd((double)b->dir[k], (double)a->dir[k]);
@@ -503,7 +509,7 @@ SURFACE_INLINE void lod_ray_pair(struct surface_texture *a, struct surface_textu
     _mm_storeu_pd(v_sbc, sbc);
     struct surface_texture *t[2] = {a, b};
     for (int i = 0; i < 2; i++) {
-        const struct surface_lod *l = &t[i]->tri;
+        const struct surface_lod *l = t[i]->lodp;
         if (!(l->p_a > 0.0) || !(l->t_a > 0.0) || !(v_len[i] > 0.0) || !isfinite(l->nn2) ||
             !(v_along[i] > 1e-9)) {
             texture_lambda(t[i]);
@@ -550,31 +556,51 @@ SURFACE_INLINE void quad_texel_vector(const __m256d e[3], const __m256d w1[3],
  * doubles; a lane off lod_ray's common path is computed by lod_ray. */
 SURFACE_INLINE void lod_ray_quad(struct surface_texture *const t[4])
 {
-    const struct surface_lod *l[4] = {&t[0]->tri, &t[1]->tri, &t[2]->tri, &t[3]->tri};
+    const struct surface_lod *l[4] = {t[0]->lodp, t[1]->lodp, t[2]->lodp, t[3]->lodp};
 #define QUAD(f) _mm256_set_pd(f(3), f(2), f(1), f(0))
-    __m256d d[3], g[3], n[3], w1[3], w2[3], nn[3], a1[2], a2[2];
+    __m256d d[3], g[3], n[3], w1[3], w2[3], nn[3], a1[2], a2[2], nn2;
     for (int k = 0; k < 3; k++) {
 #define DIR(i) (double)t[i]->dir[k]
 #define NG(i) (double)t[i]->ng[k]
+        d[k] = QUAD(DIR);
+        g[k] = QUAD(NG);
+    }
+    const int shared = l[0] == l[1] && l[0] == l[2] && l[0] == l[3];
+    if (shared) {
+        /* One triangle part for the four (fetch_colours_one_triangle):
+         * its values broadcast, the same doubles in every lane. */
+        const struct surface_lod *o = l[0];
+        for (int k = 0; k < 3; k++) {
+            n[k] = _mm256_set1_pd(o->n[k]);
+            w1[k] = _mm256_set1_pd(o->w1[k]);
+            w2[k] = _mm256_set1_pd(o->w2[k]);
+            nn[k] = _mm256_set1_pd(o->nn[k]);
+        }
+        for (int k = 0; k < 2; k++) {
+            a1[k] = _mm256_set1_pd(o->a1[k]);
+            a2[k] = _mm256_set1_pd(o->a2[k]);
+        }
+        nn2 = _mm256_set1_pd(o->nn2);
+    } else {
+        for (int k = 0; k < 3; k++) {
 #define N(i) l[i]->n[k]
 #define W1(i) l[i]->w1[k]
 #define W2(i) l[i]->w2[k]
 #define NN(i) l[i]->nn[k]
-        d[k] = QUAD(DIR);
-        g[k] = QUAD(NG);
-        n[k] = QUAD(N);
-        w1[k] = QUAD(W1);
-        w2[k] = QUAD(W2);
-        nn[k] = QUAD(NN);
-    }
-    for (int k = 0; k < 2; k++) {
+            n[k] = QUAD(N);
+            w1[k] = QUAD(W1);
+            w2[k] = QUAD(W2);
+            nn[k] = QUAD(NN);
+        }
+        for (int k = 0; k < 2; k++) {
 #define A1(i) l[i]->a1[k]
 #define A2(i) l[i]->a2[k]
-        a1[k] = QUAD(A1);
-        a2[k] = QUAD(A2);
-    }
+            a1[k] = QUAD(A1);
+            a2[k] = QUAD(A2);
+        }
 #define NN2(i) l[i]->nn2
-    const __m256d nn2 = QUAD(NN2);
+        nn2 = QUAD(NN2);
+    }
 #undef QUAD
 #undef DIR
 #undef NG
@@ -606,10 +632,74 @@ SURFACE_INLINE void lod_ray_quad(struct surface_texture *const t[4])
     const __m256d sa = _mm256_add_pd(_mm256_mul_pd(ja[0], ja[0]), _mm256_mul_pd(ja[1], ja[1]));
     const __m256d sb = _mm256_add_pd(_mm256_mul_pd(jb[0], jb[0]), _mm256_mul_pd(jb[1], jb[1]));
     const __m256d sbc = _mm256_mul_pd(sb, _mm256_mul_pd(cosine, cosine));
-    double v_len[4], v_cos[4], v_along[4], v_ja[2][4], v_jb[2][4], v_sa[4], v_sb[4], v_sbc[4];
-    _mm256_storeu_pd(v_len, dir_len);
+    /* lod_ray's common path (the triangle and direction not degenerate,
+     * the ray not meeting the plane head-on) and, there, lod_axes's first
+     * steps in the lanes: which axis wins by the margin, and lod_near's
+     * footprint xs and its tests against 1 and the last level (`top`), each
+     * lane the scalar operations in their order.  What is left hit by hit
+     * is lod_near's log2 and its rounding test; a lane whose answer is not
+     * decided so (no axis wins, a footprint close to a bound or the log2
+     * close to a float's rounding boundary) takes lod_axes whole, as before,
+     * and a lane off the common path lod_ray. */
+    const __m256d zero = _mm256_setzero_pd();
+#define QUAD(f) _mm256_set_pd(f(3), f(2), f(1), f(0))
+#define P_A(i) l[i]->p_a
+#define T_A(i) l[i]->t_a
+#define WIDTH(i) (double)t[i]->width
+#define TOP(i) lod_top(t[i]->tex->level_count)
+    const __m256d width = QUAD(WIDTH);
+    __m256d p_a, t_a, top;
+    if (shared) {
+        /* One triangle part, so one block on one triangle and texture
+         * (fetch_colours_one_triangle). */
+        p_a = _mm256_set1_pd(l[0]->p_a);
+        t_a = _mm256_set1_pd(l[0]->t_a);
+        top = _mm256_set1_pd(TOP(0));
+    } else {
+        p_a = QUAD(P_A);
+        t_a = QUAD(T_A);
+        top = QUAD(TOP);
+    }
+#undef QUAD
+#undef P_A
+#undef T_A
+#undef WIDTH
+#undef TOP
+    /* isfinite(nn2): |nn2| <= DBL_MAX, which a NaN fails. */
+    const __m256d finite = _mm256_cmp_pd(_mm256_andnot_pd(sign, nn2), _mm256_set1_pd(DBL_MAX),
+                                         _CMP_LE_OQ);
+    const __m256d common = _mm256_and_pd(
+        _mm256_and_pd(_mm256_and_pd(_mm256_cmp_pd(p_a, zero, _CMP_GT_OQ),
+                                    _mm256_cmp_pd(t_a, zero, _CMP_GT_OQ)),
+                      _mm256_and_pd(_mm256_cmp_pd(dir_len, zero, _CMP_GT_OQ), finite)),
+        _mm256_cmp_pd(along_len, _mm256_set1_pd(1e-9), _CMP_GT_OQ));
+    const __m256d margin = _mm256_set1_pd(1.0 + LOD_AXIS_MARGIN);
+    const __m256d major = _mm256_cmp_pd(sa, _mm256_mul_pd(sbc, margin), _CMP_GT_OQ);
+    const __m256d minor =
+        _mm256_andnot_pd(major, _mm256_cmp_pd(sbc, _mm256_mul_pd(sa, margin), _CMP_GT_OQ));
+    /* lod_near(sa, sqrt(sa) width / cosine, ...) or lod_near(sb,
+     * sqrt(sb) width, ...). */
+    const __m256d s2 = _mm256_blendv_pd(sb, sa, major);
+    const __m256d root = _mm256_mul_pd(_mm256_sqrt_pd(s2), width);
+    const __m256d xs = _mm256_blendv_pd(root, _mm256_div_pd(root, cosine), major);
+    const __m256d usable = _mm256_and_pd(
+        _mm256_and_pd(common, _mm256_or_pd(major, minor)),
+        _mm256_and_pd(_mm256_cmp_pd(s2, _mm256_set1_pd(0x1p-960), _CMP_GE_OQ),
+                      _mm256_cmp_pd(s2, _mm256_set1_pd(0x1p960), _CMP_LE_OQ)));
+    const __m256d below = _mm256_cmp_pd(xs, _mm256_set1_pd(1.0 - LOD_NEAR_RELATIVE), _CMP_LT_OQ);
+    const __m256d beyond =
+        _mm256_cmp_pd(xs, _mm256_mul_pd(top, _mm256_set1_pd(1.0 + LOD_NEAR_RELATIVE)), _CMP_GT_OQ);
+    const __m256d inside = _mm256_and_pd(
+        _mm256_cmp_pd(xs, _mm256_set1_pd(1.0 + LOD_NEAR_RELATIVE), _CMP_GT_OQ),
+        _mm256_cmp_pd(xs, _mm256_mul_pd(top, _mm256_set1_pd(1.0 - LOD_NEAR_RELATIVE)),
+                      _CMP_LT_OQ));
+    const int common_bits = _mm256_movemask_pd(common);
+    const int usable_bits = _mm256_movemask_pd(usable);
+    const int below_bits = _mm256_movemask_pd(below);
+    const int beyond_bits = _mm256_movemask_pd(beyond);
+    const int inside_bits = _mm256_movemask_pd(inside);
+    double v_cos[4], v_ja[2][4], v_jb[2][4], v_sa[4], v_sb[4], v_sbc[4], v_xs[4];
     _mm256_storeu_pd(v_cos, cosine);
-    _mm256_storeu_pd(v_along, along_len);
     _mm256_storeu_pd(v_ja[0], ja[0]);
     _mm256_storeu_pd(v_ja[1], ja[1]);
     _mm256_storeu_pd(v_jb[0], jb[0]);
@@ -617,12 +707,29 @@ SURFACE_INLINE void lod_ray_quad(struct surface_texture *const t[4])
     _mm256_storeu_pd(v_sa, sa);
     _mm256_storeu_pd(v_sb, sb);
     _mm256_storeu_pd(v_sbc, sbc);
+    _mm256_storeu_pd(v_xs, xs);
     for (int i = 0; i < 4; i++) {
-        const struct surface_lod *li = l[i];
-        if (!(li->p_a > 0.0) || !(li->t_a > 0.0) || !(v_len[i] > 0.0) || !isfinite(li->nn2) ||
-            !(v_along[i] > 1e-9)) {
+        if (!(common_bits >> i & 1)) {
             texture_lambda(t[i]);
             continue;
+        }
+        if (usable_bits >> i & 1) {
+            if (below_bits >> i & 1) {
+                t[i]->lambda = -INFINITY; /* x < 1: a magnification */
+                continue;
+            }
+            if (beyond_bits >> i & 1) {
+                t[i]->lambda = INFINITY; /* x > top: the last level */
+                continue;
+            }
+            if (inside_bits >> i & 1) {
+                const double lg = log2(v_xs[i]);
+                const float f = (float)lg;
+                if ((float)(lg - LOD_NEAR_ABSOLUTE) == f && (float)(lg + LOD_NEAR_ABSOLUTE) == f) {
+                    t[i]->lambda = f;
+                    continue;
+                }
+            }
         }
         const double ja_i[2] = {v_ja[0][i], v_ja[1][i]}, jb_i[2] = {v_jb[0][i], v_jb[1][i]};
         t[i]->lambda = lod_axes(ja_i, jb_i, v_sa[i], v_sb[i], v_sbc[i], v_cos[i], t[i]->width,
@@ -745,6 +852,7 @@ SURFACE_INLINE void texture_begin(const struct shade_context *sc, struct surface
             return;
         }
         t->tri = *tri;
+        t->lodp = &t->tri;
         memcpy(t->ng, ng, sizeof(t->ng));
         memcpy(t->dir, dir, sizeof(t->dir));
         t->width = width;
@@ -901,56 +1009,48 @@ SURFACE_INLINE void hit_triangle(const struct shade_context *sc,
     t->provoking = t->mesh->tri_provoking[hit->prim];
 }
 
-/* The unit geometric normal facing the ray along dir, whether the ray
- * hit the front face, and the shading normal on the same side.  Inlined:
- * the call's spills and argument set-up were a tenth of its cost. */
-SURFACE_INLINE void hit_normals(struct surface_cache *cache, const struct hit_triangle *t,
-                                uint32_t prim, const float dir[3], float ng[3], float n[3],
-                                int *front)
+/* The triangle's unit geometric normal in world space (recorded
+ * winding) into ng, from the tile's cache when the last hit was on the
+ * same triangle (surface_cache; `c` is triangle_cache's entry or NULL);
+ * 0 when it is degenerate (a sliver too thin for float). */
+SURFACE_INLINE int triangle_normal(struct surface_cache *c, const struct hit_triangle *t,
+                                   float ng[3])
 {
-    const struct scene_mesh *mesh = t->mesh;
-    const uint32_t *v = t->v;
-    /* The triangle's unit normal, from the tile's cache when the last hit
-     * was on the same triangle (surface_cache). */
-    struct surface_cache *c = triangle_cache(cache, t->inst, prim);
-    int unit;
     if (c && c->normal) {
         memcpy(ng, c->ng, sizeof(c->ng));
-        unit = c->normal > 0;
-    } else {
-        const float *p0 = &mesh->positions[3 * v[0]];
-        const float *p1 = &mesh->positions[3 * v[1]];
-        const float *p2 = &mesh->positions[3 * v[2]];
-        float e1[3], e2[3], ngo[3];
-        vec3_sub(e1, p1, p0);
-        vec3_sub(e2, p2, p0);
-        vec3_cross(ngo, e1, e2);
-        transform_normal(t->inst->normal_to_world, ngo, ng);
-        unit = vec3_normalize(ng) != 0;
-        if (c) {
-            memcpy(c->ng, ng, sizeof(c->ng));
-            c->normal = unit ? 1 : -1;
-        }
+        return c->normal > 0;
     }
-    if (!unit) {
-        /* Sliver too thin for float: any unit vector facing the ray. */
-        ng[0] = -dir[0];
-        ng[1] = -dir[1];
-        ng[2] = -dir[2];
-        vec3_normalize(ng);
+    const struct scene_mesh *mesh = t->mesh;
+    const uint32_t *v = t->v;
+    const float *p0 = &mesh->positions[3 * v[0]];
+    const float *p1 = &mesh->positions[3 * v[1]];
+    const float *p2 = &mesh->positions[3 * v[2]];
+    float e1[3], e2[3], ngo[3];
+    vec3_sub(e1, p1, p0);
+    vec3_sub(e2, p2, p0);
+    vec3_cross(ngo, e1, e2);
+    transform_normal(t->inst->normal_to_world, ngo, ng);
+    const int unit = vec3_normalize(ng) != 0;
+    if (c) {
+        memcpy(c->ng, ng, sizeof(c->ng));
+        c->normal = unit ? 1 : -1;
     }
-    *front = vec3_dot(ng, dir) < 0.0f;
-    if (!*front)
-        for (int k = 0; k < 3; k++)
-            ng[k] = -ng[k];
+    return unit;
+}
 
+/* The shading normal n at the hit (t's barycentrics) on the side of the
+ * unit geometric normal ng (already facing the ray); ng itself without
+ * vertex normals or where the interpolated one does not normalise. */
+SURFACE_INLINE void shading_normal(const struct hit_triangle *t, const float ng[3], float n[3])
+{
+    const struct scene_mesh *mesh = t->mesh;
     memcpy(n, ng, 3 * sizeof(float));
     if (mesh->has_normals) {
         float no[3];
         if (t->flags & TRI_FLAT)
             memcpy(no, &mesh->normals[3 * t->provoking], sizeof(no));
         else
-            interpolate(mesh->normals, 3, v, t->b0, t->b1, t->b2, 3, no);
+            interpolate(mesh->normals, 3, t->v, t->b0, t->b1, t->b2, 3, no);
         float nw[3];
         transform_normal(t->inst->normal_to_world, no, nw);
         if (vec3_normalize(nw)) {
@@ -962,17 +1062,53 @@ SURFACE_INLINE void hit_normals(struct surface_cache *cache, const struct hit_tr
     }
 }
 
+/* The unit geometric normal ng (unit: whether triangle_normal gave one)
+ * turned to face the ray along dir, and whether the ray hit the front
+ * face. */
+SURFACE_INLINE void facing_normal(int unit, const float dir[3], float ng[3], int *front)
+{
+    if (!unit) {
+        /* Sliver too thin for float: any unit vector facing the ray. */
+        ng[0] = -dir[0];
+        ng[1] = -dir[1];
+        ng[2] = -dir[2];
+        vec3_normalize(ng);
+    }
+    *front = vec3_dot(ng, dir) < 0.0f;
+    if (!*front)
+        for (int k = 0; k < 3; k++)
+            ng[k] = -ng[k];
+}
+
+/* The unit geometric normal facing the ray along dir, whether the ray
+ * hit the front face, and the shading normal on the same side.  Inlined:
+ * the call's spills and argument set-up were a tenth of its cost. */
+SURFACE_INLINE void hit_normals(struct surface_cache *cache, const struct hit_triangle *t,
+                                uint32_t prim, const float dir[3], float ng[3], float n[3],
+                                int *front)
+{
+    const int unit = triangle_normal(triangle_cache(cache, t->inst, prim), t, ng);
+    facing_normal(unit, dir, ng, front);
+    shading_normal(t, ng, n);
+}
+
 /* The vertex colour RT_COLOR_MATERIAL puts into the ambient and diffuse
  * material, when it is on for the triangle (as recorded or as at the
  * call) or the primitive is unlit (`unlit`, see surface_fetch); 0 when
  * neither. */
-SURFACE_INLINE int hit_color_material(const struct hit_triangle *t, int unlit, float c[4])
+SURFACE_INLINE int color_material_on(const struct hit_triangle *t, int unlit)
 {
     const uint8_t flags = t->flags;
     int color_material = (flags & TRI_INHERIT_COLOR_MATERIAL)
                              ? t->inst->appearance.color_material
                              : (flags & TRI_COLOR_MATERIAL) != 0;
-    if (!color_material && !unlit)
+    return color_material || unlit;
+}
+
+SURFACE_INLINE int hit_color_material(const struct hit_triangle *t, int unlit, float c[4])
+{
+    const uint8_t flags = t->flags;
+    if (!color_material_on(t, unlit))
         return 0;
     if (flags & TRI_INHERIT_COLOR)
         memcpy(c, t->inst->appearance.color, 4 * sizeof(float)); /* the colour at the call */
@@ -981,6 +1117,13 @@ SURFACE_INLINE int hit_color_material(const struct hit_triangle *t, int unlit, f
     else
         interpolate(t->mesh->colors, 4, t->v, t->b0, t->b1, t->b2, 4, c);
     return 1;
+}
+
+/* Whether a primitive drawn with RT_LIGHTING `lighting` shows its own
+ * colour unlit (see hit_colours). */
+SURFACE_INLINE int hit_unlit(const struct shade_context *sc, int lighting)
+{
+    return sc->state->lighting_used && !lighting && sc->state->shading != RENDER_FIXED_FUNCTION;
 }
 
 /* A hit's ambient and diffuse colours: the vertex colour where
@@ -996,9 +1139,7 @@ SURFACE_INLINE void hit_colours(const struct shade_context *sc, const struct hit
                                 float ambient[4], float diffuse[4])
 {
     const uint32_t k = m->inherit;
-    const int unlit = sc->state->lighting_used && !lighting &&
-                      sc->state->shading != RENDER_FIXED_FUNCTION;
-    if (hit_color_material(t, unlit, ambient)) {
+    if (hit_color_material(t, hit_unlit(sc, lighting), ambient)) {
         memcpy(diffuse, ambient, 4 * sizeof(float));
     } else {
         memcpy(ambient, (k & SCENE_MATERIAL_AMBIENT) ? call->ambient : m->ambient,
@@ -1148,6 +1289,196 @@ void surface_fetch_colour(const struct shade_context *sc, const struct trace_sce
     texture_end(&t, s->ambient, s->diffuse);
 }
 
+#if defined(SURFACE_QUADS)
+/* vec3_dot of lanes: (a0 b0 + a1 b1) + a2 b2. */
+#define LANES_DOT(a, b)                                                                           \
+    _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps((a)[0], (b)[0]), _mm256_mul_ps((a)[1], (b)[1])),   \
+                  _mm256_mul_ps((a)[2], (b)[2]))
+/* interpolate's (b0 x0 + b1 x1) + b2 x2 of one component, x broadcast. */
+#define LANES_INTERPOLATE(x0, x1, x2)                                                             \
+    _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(b0, _mm256_set1_ps(x0)),                            \
+                                _mm256_mul_ps(b1, _mm256_set1_ps(x1))),                           \
+                  _mm256_mul_ps(b2, _mm256_set1_ps(x2)))
+
+/*
+ * fetch_colour_begin of a whole block's TRACE_PACKET hits when they are
+ * all on one triangle of one instance (three blocks in four of a BART
+ * kitchen frame at 1024x768): what depends on the triangle alone (its
+ * instance, vertices and flags, the cached unit normal, the material's
+ * emission, lighting and texture name, the texture, the triangle part of
+ * the level of detail) once, the rest hit by hit with
+ * fetch_colour_begin's operations; the levels of detail then read the
+ * one cached triangle part (lodp) instead of eight copies of it.  The
+ * same values, so the same colours bit for bit.  Returns 0, having
+ * written nothing the caller reads, when the hits are on more than one
+ * triangle or the block needs what this leaves to fetch_colour_begin (no
+ * cache, a degenerate triangle, projective texture coordinates).
+ */
+static int fetch_colours_one_triangle(const struct shade_context *sc,
+                                      const struct trace_scene_hit *const hits[],
+                                      const float *const dir[], const float width[],
+                                      struct surface_colour s[], struct surface_texture tex[])
+{
+    const struct trace_scene_hit *h0 = hits[0];
+    for (int i = 1; i < TRACE_PACKET; i++)
+        if (hits[i]->prim != h0->prim || hits[i]->instance != h0->instance)
+            return 0;
+    if (!sc->cache)
+        return 0;
+    struct hit_triangle t;
+    hit_triangle(sc, h0, &t);
+    const struct scene_mesh *mesh = t.mesh;
+    if (mesh->texcoord_q)
+        return 0;
+    struct surface_cache *c = triangle_cache(sc->cache, t.inst, h0->prim);
+    float ng[3];
+    if (!triangle_normal(c, &t, ng))
+        return 0;
+    const struct scene_material *m = &mesh->materials[mesh->tri_material[h0->prim]];
+    const struct scene_material *call = &t.inst->appearance.material;
+    const uint32_t inherit = m->inherit;
+    const float *emission =
+        (inherit & SCENE_MATERIAL_EMISSION) ? call->emission : m->emission;
+    const uint32_t texture = material_texture(m, call);
+    const int lighting = (inherit & SCENE_MATERIAL_LIGHTING) ? call->lighting : m->lighting;
+    const struct scene_texture *tx = NULL;
+    if (texture) {
+        tx = texture_named(sc, sc->cache, texture);
+        if (tx && !tx->texels)
+            tx = NULL;
+    }
+    const float *const vst[3] = {
+        tx ? &mesh->texcoords[2 * t.v[0]] : NULL, tx ? &mesh->texcoords[2 * t.v[1]] : NULL,
+        tx ? &mesh->texcoords[2 * t.v[2]] : NULL};
+    const struct surface_lod *tri = NULL;
+    if (tx && tx->min_filter != tx->mag_filter)
+        tri = lod_triangle(c, tx, t.inst, mesh, h0->prim, t.v, vst, NULL);
+    /* Hit by hit, lane i hit i: the barycentrics, the geometric normal
+     * facing the ray, the shading normal and the texture coordinates,
+     * each lane the scalar operations in their order (hit_triangle,
+     * facing_normal, shading_normal, interpolate; no FMA in this copy),
+     * so the same floats and doubles. */
+    float lane_b[3][TRACE_PACKET], lane_d[3][TRACE_PACKET];
+    for (int i = 0; i < TRACE_PACKET; i++) {
+        lane_b[1][i] = hits[i]->u;
+        lane_b[2][i] = hits[i]->v;
+        for (int k = 0; k < 3; k++)
+            lane_d[k][i] = dir[i][k];
+    }
+    const __m256 b1 = _mm256_loadu_ps(lane_b[1]), b2 = _mm256_loadu_ps(lane_b[2]);
+    const __m256 b0 = _mm256_sub_ps(_mm256_sub_ps(_mm256_set1_ps(1.0f), b1), b2);
+    const __m256 sign = _mm256_set1_ps(-0.0f);
+    __m256 g[3], dv[3];
+    for (int k = 0; k < 3; k++) {
+        g[k] = _mm256_set1_ps(ng[k]);
+        dv[k] = _mm256_loadu_ps(lane_d[k]);
+    }
+    /* front = ng . dir < 0; the back face's ng negated (a sign flip). */
+    const __m256 front = _mm256_cmp_ps(LANES_DOT(g, dv), _mm256_setzero_ps(), _CMP_LT_OQ);
+    const __m256 flip = _mm256_andnot_ps(front, sign);
+    for (int k = 0; k < 3; k++)
+        g[k] = _mm256_xor_ps(g[k], flip);
+    __m256 nv[3] = {g[0], g[1], g[2]};
+    if (mesh->has_normals) {
+        __m256 no[3];
+        if (t.flags & TRI_FLAT) {
+            for (int k = 0; k < 3; k++)
+                no[k] = _mm256_set1_ps(mesh->normals[3 * t.provoking + k]);
+        } else {
+            const float *n0 = &mesh->normals[3 * t.v[0]], *n1 = &mesh->normals[3 * t.v[1]],
+                        *n2 = &mesh->normals[3 * t.v[2]];
+            for (int k = 0; k < 3; k++)
+                no[k] = LANES_INTERPOLATE(n0[k], n1[k], n2[k]);
+        }
+        /* transform_normal in double, four lanes at a time. */
+        const double *mt = t.inst->normal_to_world;
+        __m256 nw[3];
+        for (int r = 0; r < 3; r++) {
+            __m128 half[2];
+            for (int h = 0; h < 2; h++) {
+                __m256d x[3];
+                for (int k = 0; k < 3; k++)
+                    x[k] = _mm256_cvtps_pd(h ? _mm256_extractf128_ps(no[k], 1)
+                                             : _mm256_castps256_ps128(no[k]));
+                half[h] = _mm256_cvtpd_ps(_mm256_add_pd(
+                    _mm256_add_pd(_mm256_mul_pd(_mm256_set1_pd(mt[r]), x[0]),
+                                  _mm256_mul_pd(_mm256_set1_pd(mt[4 + r]), x[1])),
+                    _mm256_mul_pd(_mm256_set1_pd(mt[8 + r]), x[2])));
+            }
+            nw[r] = _mm256_insertf128_ps(_mm256_castps128_ps256(half[0]), half[1], 1);
+        }
+        /* vec3_normalize: a length that is positive and finite (not
+         * above FLT_MAX; NaN fails both) scales by 1 / len, else the
+         * geometric normal stays. */
+        const __m256 len = _mm256_sqrt_ps(LANES_DOT(nw, nw));
+        const __m256 unit =
+            _mm256_and_ps(_mm256_cmp_ps(len, _mm256_setzero_ps(), _CMP_GT_OQ),
+                          _mm256_cmp_ps(len, _mm256_set1_ps(FLT_MAX), _CMP_LE_OQ));
+        const __m256 inv = _mm256_div_ps(_mm256_set1_ps(1.0f), len);
+        for (int k = 0; k < 3; k++)
+            nw[k] = _mm256_mul_ps(nw[k], inv);
+        const __m256 away = _mm256_and_ps(
+            _mm256_cmp_ps(LANES_DOT(nw, g), _mm256_setzero_ps(), _CMP_LT_OQ), sign);
+        for (int k = 0; k < 3; k++)
+            nv[k] = _mm256_blendv_ps(g[k], _mm256_xor_ps(nw[k], away), unit);
+    }
+    float lane_g[3][TRACE_PACKET], lane_n[3][TRACE_PACKET], lane_front[TRACE_PACKET];
+    for (int k = 0; k < 3; k++) {
+        _mm256_storeu_ps(lane_g[k], g[k]);
+        _mm256_storeu_ps(lane_n[k], nv[k]);
+    }
+    _mm256_storeu_ps(lane_front, front);
+    /* The colours: the material's or a vertex colour that is the same
+     * for the whole triangle once, interpolated vertex colours hit by
+     * hit. */
+    const int vary = color_material_on(&t, hit_unlit(sc, lighting)) &&
+                     !(t.flags & (TRI_INHERIT_COLOR | TRI_FLAT));
+    float ambient[4], diffuse[4];
+    if (!vary)
+        hit_colours(sc, &t, m, call, lighting, ambient, diffuse);
+    float lane_st[2][TRACE_PACKET];
+    if (tx) {
+        for (int k = 0; k < 2; k++)
+            _mm256_storeu_ps(lane_st[k], LANES_INTERPOLATE(vst[0][k], vst[1][k], vst[2][k]));
+    }
+    for (int i = 0; i < TRACE_PACKET; i++) {
+        struct surface_colour *si = &s[i];
+        for (int k = 0; k < 3; k++) {
+            si->ng[k] = lane_g[k][i];
+            si->n[k] = lane_n[k][i];
+        }
+        si->front = lane_front[i] != 0.0f; /* all ones is a NaN: unequal to 0 */
+        memcpy(si->emission, emission, sizeof(si->emission));
+        si->lighting = lighting;
+        if (vary) {
+            t.b1 = hits[i]->u;
+            t.b2 = hits[i]->v;
+            t.b0 = 1.0f - hits[i]->u - hits[i]->v;
+            hit_colours(sc, &t, m, call, lighting, si->ambient, si->diffuse);
+        } else {
+            memcpy(si->ambient, ambient, sizeof(ambient));
+            memcpy(si->diffuse, diffuse, sizeof(diffuse));
+        }
+        struct surface_texture *ti = &tex[i];
+        ti->tex = tx;
+        ti->lod = 0;
+        if (!tx)
+            continue;
+        ti->lambda = -INFINITY; /* a magnification */
+        ti->st[0] = lane_st[0][i];
+        ti->st[1] = lane_st[1][i];
+        if (tri) {
+            ti->lodp = tri;
+            memcpy(ti->ng, si->ng, sizeof(ti->ng));
+            memcpy(ti->dir, dir[i], sizeof(ti->dir));
+            ti->width = width[i];
+            ti->lod = 1;
+        }
+    }
+    return 1;
+}
+#endif
+
 void surface_fetch_colours(const struct shade_context *sc, int n,
                            const struct trace_scene_hit *const hits[], const float *const dir[],
                            const float width[], struct surface_colour s[])
@@ -1155,11 +1486,18 @@ void surface_fetch_colours(const struct shade_context *sc, int n,
     struct surface_texture tex[TRACE_PACKET];
     struct surface_texture *lod[TRACE_PACKET] = {NULL}; /* lods of them set */
     int lods = 0;
-    for (int i = 0; i < n; i++) {
-        fetch_colour_begin(sc, hits[i], dir[i], width[i], &s[i], &tex[i]);
-        if (tex[i].lod)
-            lod[lods++] = &tex[i];
-    }
+#if defined(SURFACE_QUADS)
+    if (n == TRACE_PACKET && fetch_colours_one_triangle(sc, hits, dir, width, s, tex)) {
+        for (int i = 0; i < n; i++)
+            if (tex[i].lod)
+                lod[lods++] = &tex[i];
+    } else
+#endif
+        for (int i = 0; i < n; i++) {
+            fetch_colour_begin(sc, hits[i], dir[i], width[i], &s[i], &tex[i]);
+            if (tex[i].lod)
+                lod[lods++] = &tex[i];
+        }
     texture_lods(lod, lods);
     for (int i = 0; i < n; i++)
         texture_end(&tex[i], s[i].ambient, s[i].diffuse);

@@ -18,6 +18,9 @@
  * at a time (a scalar path under RT_NO_SIMD or without SSE2). */
 #if defined(__SSE2__) && !defined(RT_NO_SIMD)
 #include <emmintrin.h>
+#if defined(__SSE4_1__)
+#include <smmintrin.h> /* the AVX2 copy (render/shade_eye_avx2.c) */
+#endif
 #define TEXTURE_LANES 1
 #else
 #define TEXTURE_LANES 0
@@ -462,8 +465,14 @@ static __m128 texel_at(const uint8_t *texels, int32_t off)
 {
     int32_t bits;
     memcpy(&bits, texels + off, sizeof(bits));
+#if defined(__SSE4_1__)
+    /* The four bytes zero-extended in one instruction (pmovzxbd, folded
+     * with the load): the same integers. */
+    const __m128i b = _mm_cvtepu8_epi32(_mm_cvtsi32_si128(bits));
+#else
     const __m128i zero = _mm_setzero_si128();
     const __m128i b = _mm_unpacklo_epi16(_mm_unpacklo_epi8(_mm_cvtsi32_si128(bits), zero), zero);
+#endif
     return _mm_div_ps(_mm_cvtepi32_ps(b), _mm_set1_ps(255.0f));
 }
 
