@@ -178,6 +178,16 @@ static float pow10_range(struct tg_rng *r, float lo, float hi)
  * refused on t (tri4_before_tmin).  Each lane that test refuses
  * must be one isect_triangle refuses (*refused counts them).
  */
+/* A leaf packet of the four triangles, as the collapse fills packets (a
+ * zero-area lane is marked). */
+static void fill_packet(struct tri4_packet *p, const float tri[4][9], const uint32_t prim[4])
+{
+    for (int l = 0; l < 4; l++) {
+        accel_set_packet_lane(p, (uint32_t)l, tri[l]);
+        p->prim[l] = prim[l];
+    }
+}
+
 static void one_case(struct tg_rng *r, uint64_t *cases, uint64_t *kept_rejected, uint64_t *hits,
                      int shadow, uint64_t *refused)
 {
@@ -264,11 +274,7 @@ static void one_case(struct tg_rng *r, uint64_t *cases, uint64_t *kept_rejected,
     struct trace_ray ray;
     trace_ray_init(&ray, org, dir, tmin);
     struct tri4_packet p;
-    for (int l = 0; l < 4; l++) {
-        /* As the collapse fills packets: a zero-area lane is marked. */
-        accel_set_packet_lane(&p, (uint32_t)l, tri[l]);
-        p.prim[l] = prim[l];
-    }
+    fill_packet(&p, (const float(*)[9])tri, prim);
     /* Check 1: no lane the scalar test accepts is dropped. */
     struct tri4_ray r4;
     tri4_ray_init(&r4, &ray);
@@ -450,10 +456,7 @@ static void tmin_case(struct tg_rng *r, uint64_t *cases, uint64_t *accepted, uin
         return;
     trace_ray_init(&ray, org, dir, tmin_f);
     struct tri4_packet p;
-    for (int l = 0; l < 4; l++) {
-        accel_set_packet_lane(&p, (uint32_t)l, tri[l]);
-        p.prim[l] = prim[l];
-    }
+    fill_packet(&p, (const float(*)[9])tri, prim);
     struct tri4_ray r4;
     tri4_ray_init(&r4, &ray);
     struct tri4_lanes lanes;
