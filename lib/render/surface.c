@@ -1486,18 +1486,16 @@ void surface_fetch_colours(const struct shade_context *sc, int n,
     struct surface_texture tex[TRACE_PACKET];
     struct surface_texture *lod[TRACE_PACKET] = {NULL}; /* lods of them set */
     int lods = 0;
+    int fetched = 0; /* by fetch_colours_one_triangle */
 #if defined(SURFACE_QUADS)
-    if (n == TRACE_PACKET && fetch_colours_one_triangle(sc, hits, dir, width, s, tex)) {
-        for (int i = 0; i < n; i++)
-            if (tex[i].lod)
-                lod[lods++] = &tex[i];
-    } else
+    fetched = n == TRACE_PACKET && fetch_colours_one_triangle(sc, hits, dir, width, s, tex);
 #endif
-        for (int i = 0; i < n; i++) {
+    for (int i = 0; i < n; i++) {
+        if (!fetched)
             fetch_colour_begin(sc, hits[i], dir[i], width[i], &s[i], &tex[i]);
-            if (tex[i].lod)
-                lod[lods++] = &tex[i];
-        }
+        if (tex[i].lod)
+            lod[lods++] = &tex[i];
+    }
     texture_lods(lod, lods);
     for (int i = 0; i < n; i++)
         texture_end(&tex[i], s[i].ambient, s[i].diffuse);
