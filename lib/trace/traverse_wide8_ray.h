@@ -62,7 +62,10 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
     uint32_t sp = 0;
     uint32_t cur = 0;
     uint32_t cur_count = 0;
-    float box_limit = s->box_limit;
+    /* An any-hit walk's box limit never shrinks (it ends at its first
+     * hit): kept here, from s->best = t_max as wide_state_init computes
+     * it, and not reloaded after each leaf (wide_state_init1). */
+    float box_limit = any_hit ? s->best * ISECT_BOX_FAR_SCALE : s->box_limit;
     uint64_t node_tests = 0;
     uint64_t tri_tests = 0;
     int r4_ready = 0;
@@ -83,21 +86,26 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
              * these vectors across it, spilling and reloading eight of them
              * around every leaf; an any-hit walk (about three leaf visits per
              * shadow ray) loads them again instead.  The empty asm hides
-             * nothing but the pointer's provenance. */
+             * nothing but the pointer's provenance, on a copy: on the
+             * pointer itself it made a new value of it at every leaf,
+             * which GCC stored to its stack slot again each time. */
+            const struct trace_ray *rv = ray;
             if (any_hit)
-                __asm__("" : "+r"(ray));
+                __asm__("" : "+r"(rv));
+#else
+            const struct trace_ray *rv = ray;
 #endif
             /* The origin negated: bound + (-org) is bound - org bit for bit
              * (IEEE 754's x - y is x + (-y)), and the addition takes the
              * bound as its memory operand (the subtraction cannot, the bound
              * being its minuend): six loads fewer per node. */
-            const __m256 neg_org_x = _mm256_set1_ps(-ray->org[0]);
-            const __m256 neg_org_y = _mm256_set1_ps(-ray->org[1]);
-            const __m256 neg_org_z = _mm256_set1_ps(-ray->org[2]);
-            const __m256 inv_x = _mm256_set1_ps(ray->inv_dir[0]);
-            const __m256 inv_y = _mm256_set1_ps(ray->inv_dir[1]);
-            const __m256 inv_z = _mm256_set1_ps(ray->inv_dir[2]);
-            const __m256 tmin8 = _mm256_set1_ps(ray->tmin);
+            const __m256 neg_org_x = _mm256_set1_ps(-rv->org[0]);
+            const __m256 neg_org_y = _mm256_set1_ps(-rv->org[1]);
+            const __m256 neg_org_z = _mm256_set1_ps(-rv->org[2]);
+            const __m256 inv_x = _mm256_set1_ps(rv->inv_dir[0]);
+            const __m256 inv_y = _mm256_set1_ps(rv->inv_dir[1]);
+            const __m256 inv_z = _mm256_set1_ps(rv->inv_dir[2]);
+            const __m256 tmin8 = _mm256_set1_ps(rv->tmin);
             /* Inner nodes until a leaf lane comes up (or the stack empties). */
             while (!cur_count) {
                 const struct bvh8_node *n = &nodes[cur];
@@ -229,7 +237,8 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                 return 1;
             }
         }
-        box_limit = s->box_limit;
+        if (!any_hit)
+            box_limit = s->box_limit;
         /* An any-hit walk ends at its first hit, so its box_limit never
          * shrinks and every pushed child passes: the entry distance is
          * not compared. */
