@@ -318,6 +318,36 @@ static void compare_tables(const char *name, struct tg_mesh *m, int rays, uint64
                     }
                     walk1_rays++;
                 }
+                /* The counting walks the two-level walk takes from
+                 * walk1_counted: closest1's / any1's answers and counts
+                 * with counters, on the layout with prefetch_top 0 and 1
+                 * (a shallow copy: the walks read the flag only). */
+                for (int pre = 0; pre < 2 && k->walk1_counted && wide->width == 8 &&
+                                  wide->node_count;
+                     pre++) {
+                    struct bvh4 wp = *wide;
+                    wp.prefetch_top = (uint32_t)pre;
+                    struct trace_hit h7, h8;
+                    memset(&h7, 0, sizeof(h7));
+                    memset(&h8, 0, sizeof(h8));
+                    struct trace_counters c7 = {0, 0}, c8 = {0, 0};
+                    const int f7 = k->walk1_counted[pre](&wp, org, dir, tmin, t_max, &h7, &c7);
+                    const int a7 =
+                        k->walk1_counted[2 + pre](&wp, org, dir, tmin, t_max, NULL, &c7);
+                    const int f8 = k->closest1(&wp, &bvh, tri, org, dir, tmin, t_max, &h8, &c8);
+                    const int a8 = k->any1(&wp, &bvh, tri, org, dir, tmin, t_max, &c8);
+                    if (f0 != f7 || a0 != a7 || f8 != f7 || a8 != a7 ||
+                        memcmp(&h0, &h7, sizeof(h0)) != 0 || memcmp(&h8, &h7, sizeof(h0)) != 0 ||
+                        c7.node_tests != c8.node_tests || c7.triangle_tests != c8.triangle_tests) {
+                        if (differ4 < 5)
+                            printf("    %s ray %d (walk1_counted): found %d/%d any %d/%d "
+                                   "nodes %llu/%llu\n",
+                                   layout, i, f0, f7, a0, a7,
+                                   (unsigned long long)c8.node_tests,
+                                   (unsigned long long)c7.node_tests);
+                        differ4++;
+                    }
+                }
                 if (f0 != f5 || a0 != a5 || memcmp(&h0, &h5, sizeof(h0)) != 0) {
                     if (differ4 < 5)
                         printf("    %s ray %d (closest1/any1): found %d/%d any %d/%d t %a/%a "

@@ -118,6 +118,16 @@ struct trace_kernels {
      * table: call closest1 / any1), and in the tables without the 8-wide
      * walk. */
     trace_walk1_fn (*walk1)(const struct bvh4 *wide, int any_hit);
+    /* The walks closest1 / any1 take with counters on an 8-wide layout
+     * with nodes (width 8, node_count > 0), by index 2 any_hit +
+     * (prefetch_top != 0), for a caller that has tested the layout
+     * already: the two-level walk's rays that reach an identity
+     * instance's object without a world set-up (scene_traverse.c), which
+     * then call the walk without the entries' per-ray tests of counters,
+     * width, node count and prefetch_top.  Called with counters (not
+     * NULL), the answers and counts of closest1 / any1 with counters, bit
+     * for bit.  NULL in the tables without the 8-wide walk. */
+    const trace_walk1_fn *walk1_counted;
 };
 
 /* The table of an ISA, or NULL when this build has no such table or this

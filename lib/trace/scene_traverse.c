@@ -224,13 +224,22 @@ static int visit_instance(struct top_state *s, uint32_t index)
     const int direct = handed_on && !s->ray_ready && wide && kernels->closest1 && !filtered;
     if (!direct)
         world_ray(s);
+    /* On an 8-wide layout the walk those entries would choose, taken
+     * from the table by the layout's fields (kernels.h, walk1_counted):
+     * the same walk without the entry's tests of what is known here. */
+    const trace_walk1_fn walk1 =
+        direct && kernels->walk1_counted && view.wide->width == 8
+            ? kernels->walk1_counted[2 * (s->any_hit != 0) + (view.wide->prefetch_top != 0)]
+            : NULL;
     /* A ray reaches inside the object when its walk tests more boxes than
      * the root's (the root box for the binary walk, the root's children
      * for a wide one). */
     const uint64_t tests_before = counters->object.node_tests;
     if (s->any_hit && !filtered) {
-        int got = direct ? kernels->any1(view.wide, view.bvh, view.tri, s->org, s->dir, s->tmin,
-                                         s->best, &counters->object)
+        int got = walk1 ? walk1(view.wide, s->org, s->dir, s->tmin, s->best, NULL,
+                                &counters->object)
+                  : direct ? kernels->any1(view.wide, view.bvh, view.tri, s->org, s->dir, s->tmin,
+                                           s->best, &counters->object)
                   : wide ? kernels->any4(view.wide, view.bvh, view.tri, o_ray, s->best,
                                          &counters->object)
                          : kernels->any(view.bvh, view.tri, o_ray, s->best, &counters->object);
@@ -242,8 +251,9 @@ static int visit_instance(struct top_state *s, uint32_t index)
     /* The tie rule is keep_hit's. */
     float limit = s->found ? isect_next_up(s->best) : s->best;
     struct trace_hit h;
-    int got = direct ? kernels->closest1(view.wide, view.bvh, view.tri, s->org, s->dir, s->tmin,
-                                         limit, &h, &counters->object)
+    int got = walk1 ? walk1(view.wide, s->org, s->dir, s->tmin, limit, &h, &counters->object)
+              : direct ? kernels->closest1(view.wide, view.bvh, view.tri, s->org, s->dir, s->tmin,
+                                           limit, &h, &counters->object)
               : wide ? kernels->closest4(view.wide, view.bvh, view.tri, o_ray, limit, &h,
                                          &counters->object)
                      : kernels->closest(view.bvh, view.tri, o_ray, limit, &h, &counters->object);

@@ -17,6 +17,7 @@
 #define TRACE_WIDE_ANY1 trace_any1_avx2
 #define TRACE_WIDE_LEAF8 trace_leaf8_avx2
 #define TRACE_WIDE_WALK1 trace_walk1_avx2
+#define TRACE_WIDE_WALK1_COUNTED trace_walk1_counted_avx2
 #include "trace/traverse_wide.h"
 #define TRACE_PACKET_CLOSEST trace_closest_packet_avx2
 #define TRACE_PACKET_ANY trace_any_packet_avx2
@@ -35,7 +36,8 @@ static const struct trace_kernels table = {
     8,
     trace_closest_packet_avx2, trace_any_packet_avx2, trace_leaf8_avx2,
     trace_top_lanes_avx2, trace_top_lanes1_avx2, trace_packet_init_avx2,
-    trace_packet_xform_avx2, trace_walk1_avx2};
+    trace_packet_xform_avx2, trace_walk1_avx2,
+    trace_walk1_counted_avx2};
 
 const struct trace_kernels *trace_kernels_avx2(void)
 {

@@ -923,6 +923,13 @@ static trace_walk1_fn TRACE_WIDE_WALK1(const struct bvh4 *wide, int any_hit)
     return wide->prefetch_top ? wide8_walk1_closest_early_leaf8 : wide8_walk1_closest_leaf8;
 }
 
+/* kernels.h's walk1_counted: walk_wide_single1's counting walks by index
+ * 2 any_hit + (prefetch_top != 0), the choice its entries make every ray
+ * (the any-hit walk does not depend on prefetch_top). */
+static const trace_walk1_fn TRACE_WIDE_WALK1_COUNTED[4] = {
+    wide8_walk1_closest_leaf8_stats, wide8_walk1_closest_early_leaf8_stats,
+    wide8_walk1_any_leaf8_stats, wide8_walk1_any_leaf8_stats};
+
 /*
  * The leaf of the 8-wide walks on its own, for
  * conformance/internal/tri4_differential: the n triangles of p[0], p[1]
