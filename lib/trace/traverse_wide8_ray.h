@@ -86,9 +86,11 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
              * these vectors across it, spilling and reloading eight of them
              * around every leaf; an any-hit walk (about three leaf visits per
              * shadow ray) loads them again instead.  The empty asm hides
-             * nothing but the pointer's provenance, on a copy: on the
-             * pointer itself it made a new value of it at every leaf,
-             * which GCC stored to its stack slot again each time. */
+             * nothing but the pointer's provenance, on a copy: with the
+             * asm on the pointer itself GCC also put a vzeroupper before
+             * every 4-lane leaf call (callgrind, AVX2: 3.1 instructions a
+             * gears shadow ray more); either way it stores the pointer to
+             * its stack slot again at every leaf. */
             const struct trace_ray *rv = ray;
             if (any_hit)
                 __asm__("" : "+r"(rv));
