@@ -95,7 +95,9 @@ static inline void wide_state_init(struct wide_state *s, const struct trace_ray 
  * leaves read the limit s->best and write found, and nothing reads hit,
  * found or box_limit (its box limit never shrinks, so walk_wide8_ray
  * keeps it in a register from s->best); a walk without counters never
- * reads the counts.  Five to seven stores fewer a ray. */
+ * reads the counts: four stores fewer a ray without counters (an any-hit
+ * walk: any_hit, hit, found, the counts), two (a closest-hit walk: any_hit,
+ * the counts). */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
