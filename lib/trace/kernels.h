@@ -118,6 +118,12 @@ struct trace_kernels {
      * table: call closest1 / any1), and in the tables without the 8-wide
      * walk. */
     trace_walk1_fn (*walk1)(const struct bvh4 *wide, int any_hit);
+    /* closest_packet / any_packet from the caller's arrays instead of
+     * set-up rays (packet.h): the set-up and the walk in one call, the
+     * rays kept in the lanes between them.  NULL where closest_packet is
+     * (and in the tables without AVX2). */
+    trace_packet_closest_arrays_fn closest_packet_arrays;
+    trace_packet_any_arrays_fn any_packet_arrays;
 };
 
 /* The table of an ISA, or NULL when this build has no such table or this
