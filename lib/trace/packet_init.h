@@ -242,8 +242,8 @@ static inline void packet_init_load(const float (*org)[3], const float (*dir)[3]
  * -0.0, the bits 0x80000000, is the least signed integer there is, so the
  * least of the components' own bits says whether one is -0.0; the
  * direction is zero when the greatest of its magnitudes is 0.  The same
- * classes as the tests one by one: 44 instructions a packet in the AVX2
- * object instead of 98. */
+ * classes as the tests one by one: about 49 instructions a packet
+ * instead of 96 (AVX2, callgrind: docs/performance-log.md, pk5). */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
