@@ -107,7 +107,7 @@ struct trace_packet_plain {
  * the caller's, trace_scene_box_rows), and, when plain is not NULL,
  * *plain for the live rays (no bits for the others).  Only the two-level
  * walk asks for *plain (its identity instances); a caller of the object
- * walk alone passes NULL and does not pay for it (12.3 instructions a
+ * walk alone passes NULL and does not pay for it (about 12 instructions a
  * ray of rtbench's kitchen shadow packets, docs/performance-log.md). */
 typedef void (*trace_packet_init_fn)(const float (*org)[3], const float (*dir)[3],
                                      const float *tmin, unsigned live,
