@@ -9,8 +9,10 @@
  * times); "packets": closest_packet/any_packet over groups of eight
  * consecutive rays (a row of eight pixels for primary rays; the shadow
  * rays of consecutive primary hits, sharing the point light), the hybrid
- * threshold at TRACE_PACKET_HYBRID, each group's rays set up by the
- * table's packet_init as the library's packet path does.  Embree: rtcIntersect1/rtcOccluded1
+ * threshold at TRACE_PACKET_HYBRID, each group's rays taken from their
+ * arrays by the table's closest_packet_arrays/any_packet_arrays (the
+ * set-up and the walk in one call), or set up by its packet_init as
+ * the library's packet path does and then walked.  Embree: rtcIntersect1/rtcOccluded1
  * and rtcIntersect8/rtcOccluded8 (coherent flag) over the same groups, a
  * MEDIUM scene.  Runs are interleaved (single, packets, Embree 1, Embree
  * 8, for each thread count) and each figure is the median; the packets'
@@ -44,34 +46,42 @@ struct packet_ctx {
     unsigned hybrid;
 };
 
-/* The rays of a group set up as the library's packet path sets them up
- * (packet_scene.c: the table's packet_init, eight rays at a time, the
- * same bits as trace_ray_init's), or ray by ray in a table without it. */
-static void set_up(const struct trace_kernels *k, const RTray *rays, uint32_t g, uint32_t n,
-                   struct trace_ray *ray, float *t_max)
+/* A group's rays in the arrays a packet entry takes (org, dir, tmin,
+ * t_max: the caller's layout, as packet_scene.c holds a packet). */
+struct packet_group {
+    float org[TRACE_PACKET][3], dir[TRACE_PACKET][3], tmin[TRACE_PACKET], t_max[TRACE_PACKET];
+};
+
+static void group_load(const RTray *rays, uint32_t g, uint32_t n, struct packet_group *q)
 {
-    if (k->packet_init) {
-        float org[TRACE_PACKET][3], dir[TRACE_PACKET][3], tmin[TRACE_PACKET];
-        struct trace_top_rays top;
-        for (uint32_t j = 0; j < n; j++) {
-            const RTray *r = &rays[g + j];
-            memcpy(org[j], r->org, sizeof(org[j]));
-            memcpy(dir[j], r->dir, sizeof(dir[j]));
-            tmin[j] = r->tmin;
-            t_max[j] = r->tmax;
-        }
-        struct trace_packet_plain plain; /* the two-level walk's; unused here */
-        k->packet_init((const float(*)[3])org, (const float(*)[3])dir, tmin, (1u << n) - 1u, ray,
-                       &top, &plain);
-        return;
-    }
     for (uint32_t j = 0; j < n; j++) {
         const RTray *r = &rays[g + j];
-        trace_ray_init(&ray[j], r->org, r->dir, r->tmin);
-        t_max[j] = r->tmax;
+        memcpy(q->org[j], r->org, sizeof(q->org[j]));
+        memcpy(q->dir[j], r->dir, sizeof(q->dir[j]));
+        q->tmin[j] = r->tmin;
+        q->t_max[j] = r->tmax;
     }
 }
 
+/* The rays of a group set up for closest_packet/any_packet: by the
+ * table's packet_init (packet_scene.c's set-up, the same bits as
+ * trace_ray_init's), or ray by ray in a table without it. */
+static void set_up(const struct trace_kernels *k, const struct packet_group *q, uint32_t n,
+                   struct trace_ray *ray)
+{
+    if (k->packet_init) {
+        struct trace_top_rays top;
+        /* No masks: only the two-level walk's identity instances use them. */
+        k->packet_init((const float(*)[3])q->org, (const float(*)[3])q->dir, q->tmin,
+                       (1u << n) - 1u, ray, &top, NULL);
+        return;
+    }
+    for (uint32_t j = 0; j < n; j++)
+        trace_ray_init(&ray[j], q->org[j], q->dir[j], q->tmin[j]);
+}
+
+/* The groups' packets: the table's entries from the arrays where it has
+ * them (the set-up and the walk in one call), else set_up and the walk. */
 static void kernel_closest_packets(void *ctx, const RTray *rays, uint32_t begin, uint32_t end,
                                    struct bench_hit *hits)
 {
@@ -80,12 +90,21 @@ static void kernel_closest_packets(void *ctx, const RTray *rays, uint32_t begin,
     const struct trace_kernels *k = bench_kernels();
     for (uint32_t g = begin; g < end; g += TRACE_PACKET) {
         const uint32_t n = end - g < TRACE_PACKET ? end - g : TRACE_PACKET;
-        struct trace_ray ray[TRACE_PACKET];
-        float t_max[TRACE_PACKET];
+        struct packet_group q;
         struct trace_hit h[TRACE_PACKET];
-        set_up(k, rays, g, n, ray, t_max);
-        const unsigned found = k->closest_packet(&acc->wide, &acc->bvh, acc->tri, ray, t_max,
-                                                 (1u << n) - 1u, pc->hybrid, h, NULL);
+        unsigned found;
+        group_load(rays, g, n, &q);
+        if (k->closest_packet_arrays) {
+            found = k->closest_packet_arrays(&acc->wide, &acc->bvh, acc->tri,
+                                             (const float(*)[3])q.org, (const float(*)[3])q.dir,
+                                             q.tmin, q.t_max, (1u << n) - 1u, pc->hybrid, h,
+                                             NULL);
+        } else {
+            struct trace_ray ray[TRACE_PACKET];
+            set_up(k, &q, n, ray);
+            found = k->closest_packet(&acc->wide, &acc->bvh, acc->tri, ray, q.t_max,
+                                      (1u << n) - 1u, pc->hybrid, h, NULL);
+        }
         for (uint32_t j = 0; j < n; j++) {
             hits[g + j].t = found >> j & 1u ? h[j].t : INFINITY;
             hits[g + j].prim = found >> j & 1u ? h[j].prim : BENCH_MISS;
@@ -101,11 +120,19 @@ static void kernel_any_packets(void *ctx, const RTray *rays, uint32_t begin, uin
     const struct trace_kernels *k = bench_kernels();
     for (uint32_t g = begin; g < end; g += TRACE_PACKET) {
         const uint32_t n = end - g < TRACE_PACKET ? end - g : TRACE_PACKET;
-        struct trace_ray ray[TRACE_PACKET];
-        float t_max[TRACE_PACKET];
-        set_up(k, rays, g, n, ray, t_max);
-        const unsigned occ = k->any_packet(&acc->wide, &acc->bvh, acc->tri, ray, t_max,
-                                           (1u << n) - 1u, pc->hybrid, NULL);
+        struct packet_group q;
+        unsigned occ;
+        group_load(rays, g, n, &q);
+        if (k->any_packet_arrays) {
+            occ = k->any_packet_arrays(&acc->wide, &acc->bvh, acc->tri, (const float(*)[3])q.org,
+                                       (const float(*)[3])q.dir, q.tmin, q.t_max,
+                                       (1u << n) - 1u, pc->hybrid, NULL);
+        } else {
+            struct trace_ray ray[TRACE_PACKET];
+            set_up(k, &q, n, ray);
+            occ = k->any_packet(&acc->wide, &acc->bvh, acc->tri, ray, q.t_max, (1u << n) - 1u,
+                                pc->hybrid, NULL);
+        }
         for (uint32_t j = 0; j < n; j++) {
             hits[g + j].t = occ >> j & 1u ? 0.0f : INFINITY;
             hits[g + j].prim = occ >> j & 1u ? 0 : BENCH_MISS;

@@ -141,6 +141,8 @@ static int compare_packets(const char *name, const struct trace_kernels *k, cons
     for (int g = 0; g + TRACE_PACKET <= rays; g += TRACE_PACKET) {
         struct trace_ray ray[TRACE_PACKET];
         float t_max[TRACE_PACKET];
+        /* The same rays as arrays, for the entries that take them. */
+        float orgs[TRACE_PACKET][3], dirs[TRACE_PACKET][3], tmins[TRACE_PACKET];
         /* Packet kinds by group: 0 incoherent, 1 coherent, 2 divergent
          * from one origin in one octant (the interval node test's case,
          * packet_box8_ia), 3 one origin with degenerate lanes. */
@@ -180,6 +182,9 @@ static int compare_packets(const char *name, const struct trace_kernels *k, cons
                 t_max[i] = tg_below(&r, 2) ? tmin + tg_range(&r, 0.0f, 1.5f) : INFINITY;
             }
             trace_ray_init(&ray[i], org, dir, tmin);
+            memcpy(orgs[i], org, sizeof(orgs[i]));
+            memcpy(dirs[i], dir, sizeof(dirs[i]));
+            tmins[i] = tmin;
         }
         const unsigned active = (g / TRACE_PACKET) % 5 == 0
                                     ? (unsigned)tg_below(&r, 1u << TRACE_PACKET)
@@ -189,6 +194,36 @@ static int compare_packets(const char *name, const struct trace_kernels *k, cons
         memset(hp, 0, sizeof(hp));
         const unsigned fp = k->closest_packet(wide, bvh, tri, ray, t_max, active, hybrid, hp, &cp);
         const unsigned ap = k->any_packet(wide, bvh, tri, ray, t_max, active, hybrid, NULL);
+        if (k->closest_packet_arrays && k->packet_init) {
+            /* The entries from the arrays: the packet walks' answers for
+             * the rays packet_init sets up from them, bit for bit. */
+            struct trace_ray set[TRACE_PACKET];
+            struct trace_top_rays top;
+            struct trace_hit hq[TRACE_PACKET], hr[TRACE_PACKET];
+            memset(hq, 0, sizeof(hq));
+            memset(hr, 0, sizeof(hr));
+            k->packet_init((const float(*)[3])orgs, (const float(*)[3])dirs, tmins, active, set,
+                           &top, NULL);
+            const unsigned fq = k->closest_packet(wide, bvh, tri, set, t_max, active, hybrid, hq,
+                                                  NULL);
+            const unsigned aq = k->any_packet(wide, bvh, tri, set, t_max, active, hybrid, NULL);
+            const unsigned fr = k->closest_packet_arrays(
+                wide, bvh, tri, (const float(*)[3])orgs, (const float(*)[3])dirs, tmins, t_max,
+                active, hybrid, hr, NULL);
+            const unsigned ar = k->any_packet_arrays(wide, bvh, tri, (const float(*)[3])orgs,
+                                                     (const float(*)[3])dirs, tmins, t_max,
+                                                     active, hybrid, NULL);
+            int bad = fq != fr || aq != ar;
+            for (int i = 0; i < TRACE_PACKET; i++)
+                bad |= (fq >> i & 1u) && memcmp(&hq[i], &hr[i], sizeof(hq[i])) != 0;
+            if (bad) {
+                if (differ < 5)
+                    printf("    packet %s group %d (hybrid %u): the arrays entries differ "
+                           "(closest %02x/%02x any %02x/%02x)\n",
+                           layout, g / TRACE_PACKET, hybrid, fq, fr, aq, ar);
+                differ++;
+            }
+        }
         for (int i = 0; i < TRACE_PACKET; i++) {
             struct trace_hit h0;
             memset(&h0, 0, sizeof(h0));
@@ -427,6 +462,13 @@ static void compare_packet_init(void)
             struct trace_packet_plain plain;
             k->packet_init((const float(*)[3])org, (const float(*)[3])dir, tmin, live, got, &top,
                            &plain);
+            /* Without the masks (plain NULL): the same rays. */
+            struct trace_ray again[TRACE_PACKET];
+            struct trace_top_rays top_again;
+            memcpy(again, got, sizeof(again));
+            k->packet_init((const float(*)[3])org, (const float(*)[3])dir, tmin, live, again,
+                           &top_again, NULL);
+            bad += memcmp(again, got, sizeof(again)) != 0;
             for (int i = 0; i < TRACE_PACKET; i++) {
                 /* The masks: trace_scene_plain_class's classes, finite
                  * origins, nothing for the rays left out. */

@@ -299,6 +299,8 @@ RTcontext rtCreateContextWithReason(const char *configuration, RTsizei bufSize, 
     if (ctx->packets_off) {
         ctx->kernel_table.closest_packet = NULL;
         ctx->kernel_table.any_packet = NULL;
+        ctx->kernel_table.closest_packet_arrays = NULL;
+        ctx->kernel_table.any_packet_arrays = NULL;
     }
     ctx->kernels = &ctx->kernel_table;
     snprintf(ctx->configuration, sizeof(ctx->configuration),

@@ -128,6 +128,12 @@ struct trace_kernels {
      * NULL), the answers and counts of closest1 / any1 with counters, bit
      * for bit.  NULL in the tables without the 8-wide walk. */
     const trace_walk1_fn *walk1_counted;
+    /* closest_packet / any_packet from the caller's arrays instead of
+     * set-up rays (packet.h): the set-up and the walk in one call, the
+     * rays kept in the lanes between them.  NULL where closest_packet is
+     * (and in the tables without AVX2). */
+    trace_packet_closest_arrays_fn closest_packet_arrays;
+    trace_packet_any_arrays_fn any_packet_arrays;
 };
 
 /* The table of an ISA, or NULL when this build has no such table or this

@@ -104,8 +104,11 @@ struct trace_packet_plain {
 /* Sets up the rays of mask `live` (org[r], dir[r], tmin[r]) into rays[r]
  * as trace_ray_init does, bit for bit, fills top's tmin, org and inv_dir
  * lanes (zeros for the others; box_limit, the rows and the octant are
- * the caller's, trace_scene_box_rows), and *plain for the live rays (no
- * bits for the others). */
+ * the caller's, trace_scene_box_rows), and, when plain is not NULL,
+ * *plain for the live rays (no bits for the others).  Only the two-level
+ * walk asks for *plain (its identity instances); a caller of the object
+ * walk alone passes NULL and does not pay for it (about 12 instructions a
+ * ray of rtbench's kitchen shadow packets, docs/performance-log.md). */
 typedef void (*trace_packet_init_fn)(const float (*org)[3], const float (*dir)[3],
                                      const float *tmin, unsigned live,
                                      struct trace_ray rays[TRACE_PACKET],
@@ -130,5 +133,27 @@ typedef unsigned (*trace_packet_any_fn)(const struct bvh4 *wide, const struct bv
                                         const float *tri, const struct trace_ray *rays,
                                         const float *t_max, unsigned active, unsigned hybrid,
                                         struct trace_counters *counters);
+
+/*
+ * The same walks from the caller's arrays of a packet (org[r], dir[r],
+ * tmin[r] as trace_packet_init_fn reads them; t_max[r]) instead of set-up
+ * rays: each ray's answer is the closest (any) packet walk's for the ray
+ * the table's packet_init sets up from them, bit for bit.  The rays stay
+ * in the lanes from the arrays to the walk: no rays' structs are stored
+ * and loaded back unless a per-ray step of the walk needs them
+ * (packet_wide.h, packet_run).  NULL in the tables without AVX2.
+ */
+typedef unsigned (*trace_packet_closest_arrays_fn)(const struct bvh4 *wide,
+                                                   const struct bvh *bvh, const float *tri,
+                                                   const float (*org)[3], const float (*dir)[3],
+                                                   const float *tmin, const float *t_max,
+                                                   unsigned active, unsigned hybrid,
+                                                   struct trace_hit *hits,
+                                                   struct trace_counters *counters);
+typedef unsigned (*trace_packet_any_arrays_fn)(const struct bvh4 *wide, const struct bvh *bvh,
+                                               const float *tri, const float (*org)[3],
+                                               const float (*dir)[3], const float *tmin,
+                                               const float *t_max, unsigned active,
+                                               unsigned hybrid, struct trace_counters *counters);
 
 #endif

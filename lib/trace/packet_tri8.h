@@ -161,7 +161,13 @@ static inline void tri8_lanes_load(const struct trace_ray *rays, unsigned active
 /* Sets up the lanes from the rays' fields in the lanes (tri8_lanes_load)
  * for the rays sharing kx, ky, kz; the other lanes hold their own rays'
  * values under that permutation, never read into an answer (every
- * result of tri8_test is masked by its lanes). */
+ * result of tri8_test is masked by its lanes).  Always inlined: called
+ * out of line (GCC's choice once the table held the packet walk's
+ * arrays entries too) it cost the kitchen's shadow packets about 5
+ * instructions a ray. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
 static inline void tri8_rays_init(struct tri8_rays *t, const __m256 f[TRI8_F_COUNT], int kx,
                                   int ky, int kz)
 {

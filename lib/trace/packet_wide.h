@@ -124,6 +124,14 @@ struct packet_state {
      * from start to end, and never needs their states. */
     const struct trace_ray *rays;
     const float *t_max;
+    /* The first ray's kx, ky, kz (the eight-ray test's permutation). */
+    int k0[3];
+    /* rays points at the caller's structs, or (the entries from the
+     * caller's arrays, packet_run) at ray_buf, which holds the rays only
+     * once rays_ready is set (packet_rays_ready): the interval walk of a
+     * coherent packet mostly never reads them. */
+    int rays_ready;
+    struct trace_ray ray_buf[TRACE_PACKET];
     struct trace_hit *hits;
     int any_hit;
     unsigned s_ready;    /* the rays whose s[r] is set up */
@@ -132,6 +140,36 @@ struct packet_state {
 };
 
 #if defined(__AVX__)
+/* The rays' structs, for the per-ray steps that read them (a ray's state,
+ * packet_box8_rows): already there (rays_ready), or stored from the
+ * lanes into ray_buf once a packet (the entries from the caller's arrays;
+ * the lanes of rays left out hold a live ray's fields, stored too). */
+#if defined(RT_TRACE_PACKET_INIT_LANES)
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static void packet_rays_store(struct packet_state *p)
+{
+    packet_init_store(p->lane_f, 0xffu, p->ray_buf);
+    p->rays_ready = 1;
+}
+#endif
+
+/* The test inline, the stores out of line (an out-of-line test cost the
+ * soup's shadow packets about 5 instructions a ray). */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void packet_rays_ready(struct packet_state *p)
+{
+#if defined(RT_TRACE_PACKET_INIT_LANES)
+    if (!p->rays_ready)
+        packet_rays_store(p);
+#else
+    (void)p;
+#endif
+}
+
 /* Ray r's state, set up as walk_wide sets it (no hit, the limits of its
  * t_max) at its first use; a hit taken in the lanes before that is in
  * the lanes only (dirty: packet_flush writes it). */
@@ -142,6 +180,7 @@ static inline struct wide_state *packet_ready(struct packet_state *p, unsigned r
 {
     struct wide_state *s = &p->s[r];
     if (!(p->s_ready >> r & 1u)) {
+        packet_rays_ready(p);
         p->s_ready |= 1u << r;
         wide_state_init(s, &p->rays[r], p->t_max[r], p->any_hit,
                         p->any_hit ? NULL : &p->hits[r]);
@@ -264,8 +303,8 @@ static inline unsigned packet_leaf8_body(struct packet_state *p,
                                          uint32_t count, unsigned rays, int any_hit, int pair)
 {
     if (!p->t8_ready) {
-        const struct trace_ray *r0 = &p->rays[__builtin_ctz(p->lanes8)];
-        tri8_rays_init(&p->t8, p->lane_f, r0->kx, r0->ky, r0->kz);
+        /* lanes8 holds the first ray: its kx, ky, kz. */
+        tri8_rays_init(&p->t8, p->lane_f, p->k0[0], p->k0[1], p->k0[2]);
         p->t8_ready = 1;
     }
     float *limit = p->limit;
@@ -307,7 +346,18 @@ static inline unsigned packet_leaf8_body(struct packet_state *p,
             if (!tri8_test(&p->t8, q, vk, l, rays, _mm256_loadu_ps(limit), any_hit, &res))
                 continue;
             unsigned lanes = res.hit | res.scalar;
-            if (!any_hit && res.hit) {
+            if (any_hit) {
+                /* An any-hit ray with a hit in the lanes is done, as
+                 * packet_take_hit would return it, without the per-ray
+                 * step: its state is never read again (the walk drops
+                 * done rays; the answer is the mask).  Measured
+                 * (docs/performance-log.md, pk5): kitchen shadow
+                 * packets -22.7 instructions a ray, gears -9.7, bumpy
+                 * -16.3 (AVX2). */
+                done |= res.hit;
+                rays &= ~res.hit;
+                lanes &= ~res.hit;
+            } else if (res.hit) {
                 /* wide_take_closest in the lanes for the rays without a
                  * hit or with t < best (t <= best, as t < limit, the
                  * next float above best); a tie t == best, decided by
@@ -655,14 +705,14 @@ static inline float packet_hmax(__m256 v)
  * packet kernel's instructions a ray -1.0 % on the kitchen's and bumpy's
  * camera packets.
  */
-static inline int packet_ia_init(struct packet_state *p, const struct trace_ray *rays,
-                                 unsigned active, const __m256 f_min[2], const __m256 f_max[2],
+static inline int packet_ia_init(struct packet_state *p, unsigned active,
+                                 const __m256 f_min[2], const __m256 f_max[2],
                                  float leaf_extent)
 {
     /* The rays' fields in the lanes (packet_run: a lane without a ray
      * holds the first ray's, never read into an answer: masked by the
      * packet's rays). */
-    const struct trace_ray *r0 = &rays[__builtin_ctz(active)];
+    const unsigned first = (unsigned)__builtin_ctz(active);
     const __m256 sign = _mm256_set1_ps(-0.0f);
     const __m256 inf = _mm256_set1_ps(INFINITY);
     __m256 ok = _mm256_cmp_ps(_mm256_setzero_ps(), _mm256_setzero_ps(), _CMP_EQ_OQ);
@@ -676,8 +726,9 @@ static inline int packet_ia_init(struct packet_state *p, const struct trace_ray 
         ok = _mm256_and_ps(ok, _mm256_cmp_ps(abs_i, _mm256_setzero_ps(), _CMP_GT_OQ));
         /* One octant: every lane's sign bit as the first ray's (the bit
          * signbit() reads, as the single walk's near/far choice). */
-        const int neg = signbit(r0->inv_dir[k]) != 0;
-        if ((unsigned)_mm256_movemask_ps(i) != (neg ? 0xffu : 0u))
+        const unsigned signs = (unsigned)_mm256_movemask_ps(i);
+        const int neg = (int)(signs >> first & 1u);
+        if (signs != (neg ? 0xffu : 0u))
             return 0;
         octant |= neg << k;
         /* The least and greatest over the rays, broadcast
@@ -901,6 +952,7 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                  * child. */
                 __m256 in = _mm256_setzero_ps();
                 __m256 tm = inf8;
+                packet_rays_ready(p);
                 for (unsigned m = rays; m; m &= m - 1u)
                     packet_box8_rows(n, p, (unsigned)__builtin_ctz(m), near_row, far_row, &in,
                                      &tm);
@@ -1060,15 +1112,74 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
 }
 #endif
 
+/* The caller's arrays of a packet for the entries that take them
+ * (TRACE_PACKET_CLOSEST_ARRAYS): org[r], dir[r], tmin[r] as packet_init
+ * reads them (packet.h). */
+struct packet_arrays {
+    const float (*org)[3];
+    const float (*dir)[3];
+    const float *tmin;
+};
+
+#if defined(__AVX2__) && defined(RT_TRACE_PACKET_INIT_LANES)
+/* The least (f_min[0]) and greatest (f_max[0]) of fields 0-7 over the
+ * eight lanes, field j in lane j, as tri8_lanes_load gives them, without
+ * the transpose: pairs of fields are reduced together (unpack, then
+ * 64-bit shuffles, then the 128-bit halves), 20 shuffles and 14 min/max
+ * for both.  Fields 8 (inv_dir[2]) and 9 (tmin), the other two that
+ * packet_ia_init reads, in lanes 0 and 1 of f_min[1] and f_max[1] (the
+ * other lanes hold copies of them; the kx, ky, kz, sx, sy, sz ranges
+ * are not read).  The order of the operations differs from
+ * tri8_lanes_half's, which changes at most the sign of a zero where both
+ * signs occur; packet_ia_init reads the ranges only when all are finite,
+ * and only through comparisons and the interval bounds, where the sign
+ * of a zero decides nothing (see there). */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void packet_lanes_bounds(const __m256 f[TRI8_F_COUNT], __m256 f_min[2],
+                                       __m256 f_max[2])
+{
+    __m256 lo[4], hi[4];
+    for (int j = 0; j < 4; j++) {
+        /* Fields 2j and 2j + 1: lanes (0, 2), (1, 3) of each half. */
+        const __m256 a = _mm256_unpacklo_ps(f[2 * j], f[2 * j + 1]);
+        const __m256 b = _mm256_unpackhi_ps(f[2 * j], f[2 * j + 1]);
+        lo[j] = _mm256_min_ps(a, b);
+        hi[j] = _mm256_max_ps(a, b);
+    }
+    __m256 lo2[2], hi2[2];
+    for (int j = 0; j < 2; j++) {
+        /* Fields 4j .. 4j + 3, one a lane of each half. */
+        lo2[j] = _mm256_min_ps(_mm256_shuffle_ps(lo[2 * j], lo[2 * j + 1], 0x44),
+                               _mm256_shuffle_ps(lo[2 * j], lo[2 * j + 1], 0xee));
+        hi2[j] = _mm256_max_ps(_mm256_shuffle_ps(hi[2 * j], hi[2 * j + 1], 0x44),
+                               _mm256_shuffle_ps(hi[2 * j], hi[2 * j + 1], 0xee));
+    }
+    f_min[0] = _mm256_min_ps(_mm256_permute2f128_ps(lo2[0], lo2[1], 0x20),
+                             _mm256_permute2f128_ps(lo2[0], lo2[1], 0x31));
+    f_max[0] = _mm256_max_ps(_mm256_permute2f128_ps(hi2[0], hi2[1], 0x20),
+                             _mm256_permute2f128_ps(hi2[0], hi2[1], 0x31));
+    /* Fields 8 and 9 the same way, in lanes 0 and 1 (and 2, 3). */
+    const __m256 a = _mm256_unpacklo_ps(f[8], f[9]), b = _mm256_unpackhi_ps(f[8], f[9]);
+    __m256 l = _mm256_min_ps(a, b), h = _mm256_max_ps(a, b);
+    l = _mm256_min_ps(l, _mm256_shuffle_ps(l, l, 0x4e));
+    h = _mm256_max_ps(h, _mm256_shuffle_ps(h, h, 0x4e));
+    f_min[1] = _mm256_min_ps(l, _mm256_permute2f128_ps(l, l, 0x01));
+    f_max[1] = _mm256_max_ps(h, _mm256_permute2f128_ps(h, h, 0x01));
+}
+#endif
+
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
 static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh,
                                   const float *tri, const struct trace_ray *rays,
-                                  const float *t_max, unsigned active, unsigned hybrid,
-                                  int any_hit, struct trace_hit *hits,
-                                  struct trace_counters *counters)
+                                  const struct packet_arrays *arr, const float *t_max,
+                                  unsigned active, unsigned hybrid, int any_hit,
+                                  struct trace_hit *hits, struct trace_counters *counters)
 {
+    (void)arr; /* read only with AVX2 (and packet_init.h) */
     active &= (1u << TRACE_PACKET) - 1u;
     unsigned result = 0;
     int packet = active && wide->node_count && wide->width == 4;
@@ -1121,16 +1232,39 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
          * ray's kx, ky, kz (a lane without a ray copies the first ray:
          * masked by active). */
         __m256 f_min[2], f_max[2];
-        tri8_lanes_load(rays, active, p.lane_f, f_min, f_max);
-        const struct trace_ray *r0 = &rays[__builtin_ctz(active)];
+        const unsigned first = (unsigned)__builtin_ctz(active);
+#if defined(__AVX2__) && defined(RT_TRACE_PACKET_INIT_LANES)
+        if (arr) {
+            /* From the caller's arrays straight into the lanes: the
+             * set-up in the lanes (packet_init.h), no rays' structs
+             * until a per-ray step asks for them (packet_rays_ready). */
+            __m256 ov[3], dv[3], tv;
+            packet_init_load(arr->org, arr->dir, arr->tmin, active, 1, ov, dv, &tv);
+            packet_init_fields(ov[0], ov[1], ov[2], dv[0], dv[1], dv[2], tv, p.lane_f);
+            packet_lanes_bounds(p.lane_f, f_min, f_max);
+            p.rays = p.ray_buf;
+            p.rays_ready = 0;
+            const __m256i at = _mm256_set1_epi32((int)first);
+            for (int k = 0; k < 3; k++)
+                p.k0[k] = _mm256_cvtsi256_si32(_mm256_permutevar8x32_epi32(
+                    _mm256_castps_si256(p.lane_f[TRI8_F_K + k]), at));
+        } else
+#endif
+        {
+            tri8_lanes_load(rays, active, p.lane_f, f_min, f_max);
+            p.rays_ready = 1;
+            p.k0[0] = rays[first].kx;
+            p.k0[1] = rays[first].ky;
+            p.k0[2] = rays[first].kz;
+        }
         const __m256i same = _mm256_and_si256(
             _mm256_and_si256(
                 _mm256_cmpeq_epi32(_mm256_castps_si256(p.lane_f[TRI8_F_K]),
-                                   _mm256_set1_epi32(r0->kx)),
+                                   _mm256_set1_epi32(p.k0[0])),
                 _mm256_cmpeq_epi32(_mm256_castps_si256(p.lane_f[TRI8_F_K + 1]),
-                                   _mm256_set1_epi32(r0->ky))),
+                                   _mm256_set1_epi32(p.k0[1]))),
             _mm256_cmpeq_epi32(_mm256_castps_si256(p.lane_f[TRI8_F_K + 2]),
-                               _mm256_set1_epi32(r0->kz)));
+                               _mm256_set1_epi32(p.k0[2])));
         p.lanes8 = (unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(same)) & active;
         if ((unsigned)__builtin_popcount(p.lanes8) < PACKET_TRI8_MIN)
             p.lanes8 = 0;
@@ -1139,8 +1273,13 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
         /* The interval walk sets up a ray's leaf constants (r4) at its
          * first leaf outside the eight-ray test. */
         p.r4_ready = 0;
-        ia = wide->width == 8 && hybrid == 0 && packet_ia_init(&p, rays, active, f_min, f_max,
+        ia = wide->width == 8 && hybrid == 0 && packet_ia_init(&p, active, f_min, f_max,
                                                                      wide->leaf_extent);
+        if (!ia) {
+            /* packet_walk reads the rays' structs. */
+            packet_rays_ready(&p);
+            rays = p.rays;
+        }
     }
 #endif
     if (!ia) {
@@ -1214,7 +1353,7 @@ unsigned TRACE_PACKET_CLOSEST(const struct bvh4 *wide, const struct bvh *bvh, co
                               unsigned hybrid, struct trace_hit *hits,
                               struct trace_counters *counters)
 {
-    return packet_run(wide, bvh, tri, rays, t_max, active, hybrid, 0, hits, counters);
+    return packet_run(wide, bvh, tri, rays, NULL, t_max, active, hybrid, 0, hits, counters);
 }
 
 unsigned TRACE_PACKET_ANY(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,
@@ -1224,5 +1363,73 @@ unsigned TRACE_PACKET_ANY(const struct bvh4 *wide, const struct bvh *bvh, const 
                           const struct trace_ray *rays, const float *t_max, unsigned active,
                           unsigned hybrid, struct trace_counters *counters)
 {
-    return packet_run(wide, bvh, tri, rays, t_max, active, hybrid, 1, NULL, counters);
+    return packet_run(wide, bvh, tri, rays, NULL, t_max, active, hybrid, 1, NULL, counters);
 }
+
+#if defined(TRACE_PACKET_CLOSEST_ARRAYS)
+#if !defined(__AVX2__) || !defined(RT_TRACE_PACKET_INIT_LANES)
+#error "the arrays entries need AVX2 and packet_init.h included before packet_wide.h"
+#endif
+/* The entries from the caller's arrays (packet.h, trace_packet_closest_arrays_fn):
+ * over the 8-wide layout without the hybrid fallback, packet_run from
+ * the lanes; otherwise the rays' structs set up here (packet_init.h, as
+ * the table's packet_init) and packet_run from them. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline unsigned packet_run_arrays(const struct bvh4 *wide, const struct bvh *bvh,
+                                         const float *tri, const float (*org)[3],
+                                         const float (*dir)[3], const float *tmin,
+                                         const float *t_max, unsigned active, unsigned hybrid,
+                                         int any_hit, struct trace_hit *hits,
+                                         struct trace_counters *counters)
+{
+    active &= (1u << TRACE_PACKET) - 1u;
+    if (active && wide->node_count && wide->width == 8 && hybrid == 0) {
+        const struct packet_arrays arr = {org, dir, tmin};
+        return packet_run(wide, bvh, tri, NULL, &arr, t_max, active, hybrid, any_hit, hits,
+                          counters);
+    }
+    /* The entries from the rays' structs, called rather than inlined: a
+     * second copy of the walk here made GCC stop inlining the leaf's
+     * set-up into the first (kitchen shadow packets +5 instructions a
+     * ray). */
+    struct trace_ray rays[TRACE_PACKET];
+    if (active) {
+        __m256 ov[3], dv[3], tv;
+        packet_init_load(org, dir, tmin, active, 0, ov, dv, &tv);
+        packet_init_lanes(ov[0], ov[1], ov[2], dv[0], dv[1], dv[2], tv, active, rays, NULL);
+    }
+    if (any_hit)
+        return TRACE_PACKET_ANY(wide, bvh, tri, rays, t_max, active, hybrid, counters);
+    return TRACE_PACKET_CLOSEST(wide, bvh, tri, rays, t_max, active, hybrid, hits, counters);
+}
+
+unsigned TRACE_PACKET_CLOSEST_ARRAYS(const struct bvh4 *wide, const struct bvh *bvh,
+                                     const float *tri, const float (*org)[3],
+                                     const float (*dir)[3], const float *tmin,
+                                     const float *t_max, unsigned active, unsigned hybrid,
+                                     struct trace_hit *hits, struct trace_counters *counters);
+unsigned TRACE_PACKET_CLOSEST_ARRAYS(const struct bvh4 *wide, const struct bvh *bvh,
+                                     const float *tri, const float (*org)[3],
+                                     const float (*dir)[3], const float *tmin,
+                                     const float *t_max, unsigned active, unsigned hybrid,
+                                     struct trace_hit *hits, struct trace_counters *counters)
+{
+    return packet_run_arrays(wide, bvh, tri, org, dir, tmin, t_max, active, hybrid, 0, hits,
+                             counters);
+}
+
+unsigned TRACE_PACKET_ANY_ARRAYS(const struct bvh4 *wide, const struct bvh *bvh,
+                                 const float *tri, const float (*org)[3], const float (*dir)[3],
+                                 const float *tmin, const float *t_max, unsigned active,
+                                 unsigned hybrid, struct trace_counters *counters);
+unsigned TRACE_PACKET_ANY_ARRAYS(const struct bvh4 *wide, const struct bvh *bvh,
+                                 const float *tri, const float (*org)[3], const float (*dir)[3],
+                                 const float *tmin, const float *t_max, unsigned active,
+                                 unsigned hybrid, struct trace_counters *counters)
+{
+    return packet_run_arrays(wide, bvh, tri, org, dir, tmin, t_max, active, hybrid, 1, NULL,
+                             counters);
+}
+#endif

@@ -19,14 +19,18 @@
 #define TRACE_WIDE_WALK1 trace_walk1_avx2
 #define TRACE_WIDE_WALK1_COUNTED trace_walk1_counted_avx2
 #include "trace/traverse_wide.h"
+/* packet_init.h before packet_wide.h: the arrays entries set their rays
+ * up with its pieces. */
+#define TRACE_PACKET_INIT trace_packet_init_avx2
+#include "trace/packet_init.h"
 #define TRACE_PACKET_CLOSEST trace_closest_packet_avx2
 #define TRACE_PACKET_ANY trace_any_packet_avx2
+#define TRACE_PACKET_CLOSEST_ARRAYS trace_closest_packet_arrays_avx2
+#define TRACE_PACKET_ANY_ARRAYS trace_any_packet_arrays_avx2
 #include "trace/packet_wide.h"
 #define TRACE_TOP_LANES trace_top_lanes_avx2
 #define TRACE_TOP_LANES1 trace_top_lanes1_avx2
 #include "trace/top_lanes.h"
-#define TRACE_PACKET_INIT trace_packet_init_avx2
-#include "trace/packet_init.h"
 #define TRACE_PACKET_XFORM trace_packet_xform_avx2
 #include "trace/packet_xform.h"
 
@@ -36,8 +40,8 @@ static const struct trace_kernels table = {
     8,
     trace_closest_packet_avx2, trace_any_packet_avx2, trace_leaf8_avx2,
     trace_top_lanes_avx2, trace_top_lanes1_avx2, trace_packet_init_avx2,
-    trace_packet_xform_avx2, trace_walk1_avx2,
-    trace_walk1_counted_avx2};
+    trace_packet_xform_avx2, trace_walk1_avx2, trace_walk1_counted_avx2,
+    trace_closest_packet_arrays_avx2, trace_any_packet_arrays_avx2};
 
 const struct trace_kernels *trace_kernels_avx2(void)
 {
