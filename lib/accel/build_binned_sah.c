@@ -500,7 +500,7 @@ int build_binned_sah_refs(struct bvh_node *nodes, struct build_ref *refs, uint32
         return avx2(nodes, refs, prim_count, params, simd, node_count_out, depth_out);
 #endif
     const struct bvh_build_params p = *params;
-    struct bins *bins = rt_malloc(sizeof(*bins));
+    struct bins *bins = rt_malloc_array64(1, sizeof(*bins));
     if (!bins)
         return -1;
 
@@ -624,7 +624,7 @@ int build_binned_sah_forms(struct bvh *out, const struct aabb *prim_boxes, uint3
     int start = accel_build_begin(out, &p, params, prim_count);
     if (start <= 0)
         return start;
-    struct build_ref *refs = rt_realloc_array(NULL, prim_count, sizeof(*refs));
+    struct build_ref *refs = rt_malloc_array64(prim_count, sizeof(*refs));
     if (!refs) {
         bvh_release(out);
         return -1;

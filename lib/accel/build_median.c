@@ -268,7 +268,7 @@ int accel_build_median(struct bvh *out, const struct aabb *prim_boxes, uint32_t 
     int start = accel_build_begin(out, &p, params, prim_count);
     if (start <= 0)
         return start;
-    struct build_ref *refs = rt_realloc_array(NULL, prim_count, sizeof(*refs));
+    struct build_ref *refs = rt_malloc_array64(prim_count, sizeof(*refs));
     if (!refs) {
         bvh_release(out);
         return -1;

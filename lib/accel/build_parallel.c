@@ -679,13 +679,15 @@ static int stage1_binning(struct pbuild *b, const struct open_node *root)
         b->chunks = chunk_array;
         uint32_t hist_need = chunks * 3 * (uint32_t)b->bins;
         if (hist_need > hist_cap) {
-            float(*hb)[8] = rt_realloc_array(b->hist_box, hist_need, sizeof(*hb));
-            if (hb)
-                b->hist_box = hb;
-            uint32_t(*hc)[8] = rt_realloc_array(b->hist_count, hist_need, sizeof(*hc));
-            if (hc)
-                b->hist_count = hc;
-            if (!hb || !hc)
+            /* Fresh blocks, not realloc: every chunk's histogram is
+             * filled anew each level, and realloc would lose the
+             * 64-byte alignment of their 32-byte records
+             * (rt_malloc_array64). */
+            rt_free(b->hist_box);
+            rt_free(b->hist_count);
+            b->hist_box = rt_malloc_array64(hist_need, sizeof(*b->hist_box));
+            b->hist_count = rt_malloc_array64(hist_need, sizeof(*b->hist_count));
+            if (!b->hist_box || !b->hist_count)
                 goto out;
             hist_cap = hist_need;
         }
@@ -1129,8 +1131,8 @@ static int build_deferred(struct pbuild *b, struct deferred *d)
 {
     const int bins = b->bins;
     const uint32_t axis_base[4] = {0, (uint32_t)bins * 32u, 2u * (uint32_t)bins * 32u, 0};
-    float(*hist_box)[8] = rt_realloc_array(NULL, 3 * (size_t)bins, sizeof(*hist_box));
-    uint32_t(*hist_count)[8] = rt_realloc_array(NULL, 3 * (size_t)bins, sizeof(*hist_count));
+    float(*hist_box)[8] = rt_malloc_array64(3 * (size_t)bins, sizeof(*hist_box));
+    uint32_t(*hist_count)[8] = rt_malloc_array64(3 * (size_t)bins, sizeof(*hist_count));
     /* Depth first with the right child pushed: one entry per level below
      * the node plus one, as the serial builders' stacks. */
     struct {
@@ -1415,7 +1417,7 @@ static int build_subtrees(struct pbuild *b, struct bvh *out)
         b->order[i] = keys[i].index;
     rt_free(keys);
 
-    b->scratch = rt_realloc_array(NULL, 2 * (size_t)b->n - 1, sizeof(*b->scratch));
+    b->scratch = rt_malloc_array64(2 * (size_t)b->n - 1, sizeof(*b->scratch));
     if (!b->scratch)
         return -1;
     b->failed = 0;
@@ -1437,7 +1439,7 @@ static int build_subtrees(struct pbuild *b, struct bvh *out)
         if (s->max_depth > depth)
             depth = s->max_depth;
     }
-    b->final_nodes = rt_realloc_array(NULL, total, sizeof(*b->final_nodes));
+    b->final_nodes = rt_malloc_array64(total, sizeof(*b->final_nodes));
     if (!b->final_nodes)
         return -1;
     for (uint32_t i = 0; i < b->top_count; i++)
@@ -1499,8 +1501,8 @@ int accel_build_parallel_ex(struct bvh *out, const struct aabb *prim_boxes, uint
     int status = -1;
     out->prim_index = rt_realloc_array(NULL, prim_count, sizeof(*out->prim_index));
     b.prim_index = out->prim_index;
-    b.refs[0] = rt_realloc_array(NULL, prim_count, sizeof(*b.refs[0]));
-    b.refs[1] = rt_realloc_array(NULL, prim_count, sizeof(*b.refs[1]));
+    b.refs[0] = rt_malloc_array64(prim_count, sizeof(*b.refs[0]));
+    b.refs[1] = rt_malloc_array64(prim_count, sizeof(*b.refs[1]));
     plan_flat_chunks(&b, prim_count);
     b.chunk_box = rt_realloc_array(NULL, 2 * (size_t)b.chunk_count, sizeof(*b.chunk_box));
     b.top = reserve(NULL, &b.top_cap, 1, sizeof(*b.top));
