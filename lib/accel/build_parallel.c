@@ -30,8 +30,9 @@
  * Stage 2: subtrees and deferred nodes sorted by descending size are
  * handed out by an atomic counter; each subtree is built by a serial
  * builder on its refs in place,
- * directly into a preassigned range of 2m - 1 nodes of a scratch array (a
- * subtree of m primitives needs at most that many): the median builder
+ * directly into a block of 2m - 1 nodes of its own (a subtree of m
+ * primitives needs at most that many; build_subtree says why not a range
+ * of one scratch array, as in the paper): the median builder
  * or the binned SAH builder's build_binned_sah_refs (the sweep SAH
  * builder allocates its own arrays; see build_sah_subtree).  The deferred
  * nodes' top nodes are then merged into the top array and all top nodes
@@ -120,6 +121,7 @@ struct subtree {
     /* Set by stage 2: */
     const struct bvh_node *nodes; /* its nodes, root at [0], indices relative */
     struct bvh sah; /* a sweep SAH subtree's own arrays, to free */
+    struct bvh_node *block; /* its own node block (build_subtree), to free */
     uint32_t node_count;
     uint32_t max_depth; /* absolute */
     /* Set by stage 3: */
@@ -247,7 +249,6 @@ struct pbuild {
     uint32_t *prim_index; /* the output's */
     uint32_t *order;      /* stage 2's items by descending size: subtrees
                            * (index < subtree_count), then deferred nodes */
-    struct bvh_node *scratch;
     struct bvh_node *final_nodes;
 };
 
@@ -1022,8 +1023,8 @@ static int by_id(const void *pa, const void *pb)
 
 /*
  * An SAH subtree.  The binned builder runs on the subtree's refs in place
- * and writes its nodes into the subtree's preassigned range of 2m - 1
- * nodes of the scratch array, as a median subtree does
+ * and writes its nodes into the subtree's block of 2m - 1 nodes
+ * (build_subtree), as a median subtree does
  * (build_binned_sah_refs): no copy of the boxes, no arrays of its own.
  * The refs are renumbered 0 .. m - 1 in range order first (their ids kept
  * aside), so that the tree is the one accel_build makes from the
@@ -1094,10 +1095,10 @@ static int build_sah_subtree(struct pbuild *b, struct subtree *s, struct bvh_nod
     return 0;
 }
 
-/* A median subtree, in place, into its preassigned range of 2m - 1 nodes
- * of the scratch array (Wald, Ize and Parker (2008) sec. 5: "a subtree of N triangles can
- * use at most 2N - 1 nodes ... so we can simply assign each subtree to
- * one contiguous region of the node array"): no allocation at all. */
+/* A median subtree, in place, into its block of 2m - 1 nodes (Wald, Ize
+ * and Parker (2008) sec. 5: "a subtree of N triangles can use at most
+ * 2N - 1 nodes"; the paper assigns each subtree such a region of one node
+ * array, build_subtree a block of its own). */
 static void build_median_subtree(struct pbuild *b, struct subtree *s, struct bvh_node *range)
 {
     uint32_t m = s->end - s->begin;
@@ -1108,17 +1109,37 @@ static void build_median_subtree(struct pbuild *b, struct subtree *s, struct bvh
         b->prim_index[s->begin + i] = build_ref_id(&refs[i]);
 }
 
-/* Builds subtree s into its range of the scratch array: subtree s's
- * range is [2 begin, 2 begin + 2 m - 1), inside its refs' [2 begin, 2
- * end), so the ranges are disjoint whatever the other subtrees. */
+/* Builds subtree s into a block of its own of 2m - 1 nodes, which
+ * stage 3 copies from and release_build frees, shrunk to the nodes it
+ * used.  One scratch array of 2n - 1 nodes with a range per subtree (the
+ * paper's way, and this file's until 2026-12) is above the C library's
+ * largest mmap threshold from about 500,000 primitives on (32 MiB), so
+ * a fresh mapping every build, and the kernel zeroes every huge page
+ * a subtree touches although the subtrees use about half their ranges
+ * (rtbench's bumpy: 64 MB mapped for 35 MB of nodes; the zeroing under
+ * the subtree builds was 4 % of a two-thread build's samples).  A
+ * subtree's block (at most 2 subtree_max - 1 nodes, 1 MB for bumpy) is
+ * under that threshold once the build's larger blocks were freed, so
+ * the next build's blocks come back from the heap already in memory, and
+ * the shrink returns the unused tail to the heap for the next subtree. */
 static int build_subtree(struct pbuild *b, struct subtree *s)
 {
-    struct bvh_node *range = &b->scratch[2 * (size_t)s->begin];
-    if (b->pp.subtree == BVH_SUBTREE_MEDIAN) {
+    const uint32_t m = s->end - s->begin;
+    struct bvh_node *range = rt_malloc_array64(2 * (size_t)m - 1, sizeof(*range));
+    if (!range)
+        return -1;
+    s->block = range;
+    int rc = 0;
+    if (b->pp.subtree == BVH_SUBTREE_MEDIAN)
         build_median_subtree(b, s, range);
-        return 0;
+    else
+        rc = build_sah_subtree(b, s, range);
+    if (rc == 0 && s->nodes == range && s->node_count < 2 * m - 1) {
+        struct bvh_node *shrunk = rt_realloc_array(range, s->node_count, sizeof(*range));
+        if (shrunk)
+            s->nodes = s->block = shrunk;
     }
-    return build_sah_subtree(b, s, range);
+    return rc;
 }
 
 /* A deferred node (struct deferred), on one thread: stage 1's steps on a
@@ -1258,8 +1279,10 @@ static int merge_deferred(struct pbuild *b)
                 return -1;
             *st = *ds;
             st->slot = ds->slot == 0 ? slot : base + ds->slot - 1;
-            /* The pbuild's copy owns a sweep subtree's arrays now. */
+            /* The pbuild's copy owns a sweep subtree's arrays and its
+             * node block now. */
             memset(&ds->sah, 0, sizeof(ds->sah));
+            ds->block = NULL;
         }
         d->subtree_count = 0;
     }
@@ -1368,11 +1391,15 @@ void bvh_parallel_params_default(struct bvh_parallel_params *params)
 
 static void release_build(struct pbuild *b)
 {
-    for (uint32_t i = 0; i < b->subtree_count; i++)
+    for (uint32_t i = 0; i < b->subtree_count; i++) {
         bvh_release(&b->subtrees[i].sah);
+        rt_free(b->subtrees[i].block);
+    }
     for (uint32_t i = 0; i < b->deferred_count; i++) {
-        for (uint32_t k = 0; k < b->deferred[i].subtree_count; k++)
+        for (uint32_t k = 0; k < b->deferred[i].subtree_count; k++) {
             bvh_release(&b->deferred[i].subtrees[k].sah);
+            rt_free(b->deferred[i].subtrees[k].block);
+        }
         rt_free(b->deferred[i].top);
         rt_free(b->deferred[i].subtrees);
     }
@@ -1389,7 +1416,6 @@ static void release_build(struct pbuild *b)
     rt_free(b->cell_of);
     rt_free(b->counts);
     rt_free(b->order);
-    rt_free(b->scratch);
 }
 
 /* Stages 2 and 3 once stage 1 has left its subtrees; fills *out. */
@@ -1417,9 +1443,6 @@ static int build_subtrees(struct pbuild *b, struct bvh *out)
         b->order[i] = keys[i].index;
     rt_free(keys);
 
-    b->scratch = rt_malloc_array64(2 * (size_t)b->n - 1, sizeof(*b->scratch));
-    if (!b->scratch)
-        return -1;
     b->failed = 0;
     run(b, subtree_task);
     if (b->failed)
