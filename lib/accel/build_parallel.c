@@ -1117,7 +1117,7 @@ static void build_median_subtree(struct pbuild *b, struct subtree *s, struct bvh
  * a fresh mapping every build, and the kernel zeroes every huge page
  * a subtree touches although the subtrees use about half their ranges
  * (rtbench's bumpy: 64 MB mapped for 35 MB of nodes; the zeroing under
- * the subtree builds was 4 % of a two-thread build's samples).  A
+ * the subtree builds was 4-8 % of a two-thread build's samples).  A
  * subtree's block (at most 2 subtree_max - 1 nodes, 1 MB for bumpy) is
  * under that threshold once the build's larger blocks were freed, so
  * the next build's blocks come back from the heap already in memory, and
