@@ -68,7 +68,7 @@ int accel_build_alloc(struct bvh *out, uint32_t prim_count)
     if (prim_count == 0 || prim_count > (UINT32_MAX - 1) / 2 + 1)
         return -1;
     size_t max_nodes = 2 * (size_t)prim_count - 1;
-    out->nodes = rt_malloc_array64(max_nodes, sizeof(*out->nodes));
+    out->nodes = rt_realloc_array(NULL, max_nodes, sizeof(*out->nodes));
     out->prim_index = rt_realloc_array(NULL, prim_count, sizeof(*out->prim_index));
     if (!out->nodes || !out->prim_index) {
         bvh_release(out);

@@ -121,7 +121,7 @@ struct subtree {
     /* Set by stage 2: */
     const struct bvh_node *nodes; /* its nodes, root at [0], indices relative */
     struct bvh sah; /* a sweep SAH subtree's own arrays, to free */
-    struct bvh_node *block; /* its own node block (build_subtree), to free */
+    void *block; /* its own node block (build_subtree), to free */
     uint32_t node_count;
     uint32_t max_depth; /* absolute */
     /* Set by stage 3: */
@@ -200,6 +200,7 @@ struct pbuild {
     uint32_t defer_max;
 
     struct build_ref *refs[2];
+    void *refs_block[2]; /* what refs[] were allocated as (rt_align64) */
 
     /* Top nodes of stage 1: count 0 = inner (first = child pair), count
      * 1 = the root slot of a subtree. */
@@ -237,6 +238,8 @@ struct pbuild {
      * so that bin_task reaches both with one byte offset
      * (build_bin_offsets) */
     uint32_t (*hist_count)[8];
+    void *hist_box_block; /* what they were allocated as (rt_align64) */
+    void *hist_count_block;
 
     /* grid */
     uint32_t res[3];
@@ -680,14 +683,17 @@ static int stage1_binning(struct pbuild *b, const struct open_node *root)
         b->chunks = chunk_array;
         uint32_t hist_need = chunks * 3 * (uint32_t)b->bins;
         if (hist_need > hist_cap) {
-            /* Fresh blocks, not realloc: every chunk's histogram is
-             * filled anew each level, and realloc would lose the
-             * 64-byte alignment of their 32-byte records
-             * (rt_malloc_array64). */
-            rt_free(b->hist_box);
-            rt_free(b->hist_count);
-            b->hist_box = rt_malloc_array64(hist_need, sizeof(*b->hist_box));
-            b->hist_count = rt_malloc_array64(hist_need, sizeof(*b->hist_count));
+            /* Fresh blocks, not realloc (every chunk's histogram is
+             * filled anew each level), two records longer and aligned
+             * to 64: fill stores whole 32-byte records (rt_align64). */
+            rt_free(b->hist_box_block);
+            rt_free(b->hist_count_block);
+            b->hist_box_block =
+                rt_realloc_array(NULL, (size_t)hist_need + 2, sizeof(*b->hist_box));
+            b->hist_count_block =
+                rt_realloc_array(NULL, (size_t)hist_need + 2, sizeof(*b->hist_count));
+            b->hist_box = rt_align64(b->hist_box_block);
+            b->hist_count = rt_align64(b->hist_count_block);
             if (!b->hist_box || !b->hist_count)
                 goto out;
             hist_cap = hist_need;
@@ -1125,19 +1131,25 @@ static void build_median_subtree(struct pbuild *b, struct subtree *s, struct bvh
 static int build_subtree(struct pbuild *b, struct subtree *s)
 {
     const uint32_t m = s->end - s->begin;
-    struct bvh_node *range = rt_malloc_array64(2 * (size_t)m - 1, sizeof(*range));
+    /* Two nodes more, aligned to 64 (rt_align64). */
+    s->block = rt_realloc_array(NULL, 2 * (size_t)m + 1, sizeof(struct bvh_node));
+    struct bvh_node *range = rt_align64(s->block);
     if (!range)
         return -1;
-    s->block = range;
     int rc = 0;
     if (b->pp.subtree == BVH_SUBTREE_MEDIAN)
         build_median_subtree(b, s, range);
     else
         rc = build_sah_subtree(b, s, range);
     if (rc == 0 && s->nodes == range && s->node_count < 2 * m - 1) {
-        struct bvh_node *shrunk = rt_realloc_array(range, s->node_count, sizeof(*range));
-        if (shrunk)
-            s->nodes = s->block = shrunk;
+        /* The nodes keep their offset in the block if realloc moves it. */
+        const size_t offset = (size_t)((char *)range - (char *)s->block);
+        char *shrunk =
+            rt_realloc_array(s->block, offset + (size_t)s->node_count * sizeof(*range), 1);
+        if (shrunk) {
+            s->block = shrunk;
+            s->nodes = (const struct bvh_node *)(const void *)(shrunk + offset);
+        }
     }
     return rc;
 }
@@ -1152,8 +1164,11 @@ static int build_deferred(struct pbuild *b, struct deferred *d)
 {
     const int bins = b->bins;
     const uint32_t axis_base[4] = {0, (uint32_t)bins * 32u, 2u * (uint32_t)bins * 32u, 0};
-    float(*hist_box)[8] = rt_malloc_array64(3 * (size_t)bins, sizeof(*hist_box));
-    uint32_t(*hist_count)[8] = rt_malloc_array64(3 * (size_t)bins, sizeof(*hist_count));
+    /* Two records longer, aligned to 64 (rt_align64). */
+    void *hist_box_block = rt_realloc_array(NULL, 3 * (size_t)bins + 2, 32);
+    void *hist_count_block = rt_realloc_array(NULL, 3 * (size_t)bins + 2, 32);
+    float(*hist_box)[8] = rt_align64(hist_box_block);
+    uint32_t(*hist_count)[8] = rt_align64(hist_count_block);
     /* Depth first with the right child pushed: one entry per level below
      * the node plus one, as the serial builders' stacks. */
     struct {
@@ -1222,8 +1237,8 @@ static int build_deferred(struct pbuild *b, struct deferred *d)
     }
     status = 0;
 out:
-    rt_free(hist_box);
-    rt_free(hist_count);
+    rt_free(hist_box_block);
+    rt_free(hist_count_block);
     return status;
 }
 
@@ -1404,15 +1419,15 @@ static void release_build(struct pbuild *b)
         rt_free(b->deferred[i].subtrees);
     }
     rt_free(b->deferred);
-    rt_free(b->refs[0]);
-    rt_free(b->refs[1]);
+    rt_free(b->refs_block[0]);
+    rt_free(b->refs_block[1]);
     rt_free(b->top);
     rt_free(b->subtrees);
     rt_free(b->chunks);
     rt_free(b->chunk_box);
     rt_free(b->open);
-    rt_free(b->hist_box);
-    rt_free(b->hist_count);
+    rt_free(b->hist_box_block);
+    rt_free(b->hist_count_block);
     rt_free(b->cell_of);
     rt_free(b->counts);
     rt_free(b->order);
@@ -1462,7 +1477,7 @@ static int build_subtrees(struct pbuild *b, struct bvh *out)
         if (s->max_depth > depth)
             depth = s->max_depth;
     }
-    b->final_nodes = rt_malloc_array64(total, sizeof(*b->final_nodes));
+    b->final_nodes = rt_realloc_array(NULL, total, sizeof(*b->final_nodes));
     if (!b->final_nodes)
         return -1;
     for (uint32_t i = 0; i < b->top_count; i++)
@@ -1524,8 +1539,12 @@ int accel_build_parallel_ex(struct bvh *out, const struct aabb *prim_boxes, uint
     int status = -1;
     out->prim_index = rt_realloc_array(NULL, prim_count, sizeof(*out->prim_index));
     b.prim_index = out->prim_index;
-    b.refs[0] = rt_malloc_array64(prim_count, sizeof(*b.refs[0]));
-    b.refs[1] = rt_malloc_array64(prim_count, sizeof(*b.refs[1]));
+    /* Two refs more, aligned to 64 (rt_align64). */
+    for (int i = 0; i < 2; i++) {
+        b.refs_block[i] =
+            rt_realloc_array(NULL, (size_t)prim_count + 2, sizeof(struct build_ref));
+        b.refs[i] = rt_align64(b.refs_block[i]);
+    }
     plan_flat_chunks(&b, prim_count);
     b.chunk_box = rt_realloc_array(NULL, 2 * (size_t)b.chunk_count, sizeof(*b.chunk_box));
     b.top = reserve(NULL, &b.top_cap, 1, sizeof(*b.top));

@@ -117,21 +117,6 @@ void *rt_realloc_array(void *ptr, size_t count, size_t size)
     return advise_huge(realloc(ptr, bytes ? bytes : 1), bytes);
 }
 
-void *rt_malloc_array64(size_t count, size_t size)
-{
-    if (size && count > SIZE_MAX / size)
-        return NULL;
-    if (injected_failure())
-        return NULL;
-    size_t bytes = count * size;
-    void *block = NULL;
-    /* posix_memalign (POSIX 2001): C99 has no aligned allocation that
-     * free accepts. */
-    if (posix_memalign(&block, 64, bytes ? bytes : 1))
-        return NULL;
-    return advise_huge(block, bytes);
-}
-
 void rt_free(void *ptr)
 {
     free(ptr);
