@@ -500,7 +500,9 @@ int build_binned_sah_refs(struct bvh_node *nodes, struct build_ref *refs, uint32
         return avx2(nodes, refs, prim_count, params, simd, node_count_out, depth_out);
 #endif
     const struct bvh_build_params p = *params;
-    struct bins *bins = rt_malloc(sizeof(*bins));
+    /* Aligned to 64 (rt_align64): fill_bins stores whole 32-byte records. */
+    void *bins_block = rt_malloc(sizeof(struct bins) + 64);
+    struct bins *bins = rt_align64(bins_block);
     if (!bins)
         return -1;
 
@@ -604,7 +606,7 @@ int build_binned_sah_refs(struct bvh_node *nodes, struct build_ref *refs, uint32
         stack[sp++] = left;
     }
 
-    rt_free(bins);
+    rt_free(bins_block);
     *node_count_out = node_count;
     *depth_out = max_depth;
     return 0;
@@ -624,7 +626,10 @@ int build_binned_sah_forms(struct bvh *out, const struct aabb *prim_boxes, uint3
     int start = accel_build_begin(out, &p, params, prim_count);
     if (start <= 0)
         return start;
-    struct build_ref *refs = rt_realloc_array(NULL, prim_count, sizeof(*refs));
+    /* Two refs more, aligned to 64 (rt_align64). */
+    struct build_ref *refs_block =
+        rt_realloc_array(NULL, (size_t)prim_count + 2, sizeof(*refs_block));
+    struct build_ref *refs = rt_align64(refs_block);
     if (!refs) {
         bvh_release(out);
         return -1;
@@ -634,13 +639,13 @@ int build_binned_sah_forms(struct bvh *out, const struct aabb *prim_boxes, uint3
     uint32_t node_count;
     uint32_t max_depth;
     if (build_binned_sah_refs(out->nodes, refs, prim_count, &p, simd, &node_count, &max_depth)) {
-        rt_free(refs);
+        rt_free(refs_block);
         bvh_release(out);
         return -1;
     }
     for (uint32_t i = 0; i < prim_count; i++)
         out->prim_index[i] = build_ref_id(&refs[i]);
-    rt_free(refs);
+    rt_free(refs_block);
     accel_build_finish(out, node_count, max_depth);
     return 0;
 }

@@ -268,7 +268,10 @@ int accel_build_median(struct bvh *out, const struct aabb *prim_boxes, uint32_t 
     int start = accel_build_begin(out, &p, params, prim_count);
     if (start <= 0)
         return start;
-    struct build_ref *refs = rt_realloc_array(NULL, prim_count, sizeof(*refs));
+    /* Two refs more, aligned to 64 (rt_align64). */
+    struct build_ref *refs_block =
+        rt_realloc_array(NULL, (size_t)prim_count + 2, sizeof(*refs_block));
+    struct build_ref *refs = rt_align64(refs_block);
     if (!refs) {
         bvh_release(out);
         return -1;
@@ -280,7 +283,7 @@ int accel_build_median(struct bvh *out, const struct aabb *prim_boxes, uint32_t 
     build_median_refs(out->nodes, refs, prim_count, 0, &p, &node_count, &depth);
     for (uint32_t i = 0; i < prim_count; i++)
         out->prim_index[i] = build_ref_id(&refs[i]);
-    rt_free(refs);
+    rt_free(refs_block);
     accel_build_finish(out, node_count, depth);
     return 0;
 }

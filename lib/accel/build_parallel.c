@@ -30,8 +30,9 @@
  * Stage 2: subtrees and deferred nodes sorted by descending size are
  * handed out by an atomic counter; each subtree is built by a serial
  * builder on its refs in place,
- * directly into a preassigned range of 2m - 1 nodes of a scratch array (a
- * subtree of m primitives needs at most that many): the median builder
+ * directly into a block of 2m - 1 nodes of its own (a subtree of m
+ * primitives needs at most that many; build_subtree says why not a range
+ * of one scratch array, as in the paper): the median builder
  * or the binned SAH builder's build_binned_sah_refs (the sweep SAH
  * builder allocates its own arrays; see build_sah_subtree).  The deferred
  * nodes' top nodes are then merged into the top array and all top nodes
@@ -120,6 +121,7 @@ struct subtree {
     /* Set by stage 2: */
     const struct bvh_node *nodes; /* its nodes, root at [0], indices relative */
     struct bvh sah; /* a sweep SAH subtree's own arrays, to free */
+    void *block; /* its own node block (build_subtree), to free */
     uint32_t node_count;
     uint32_t max_depth; /* absolute */
     /* Set by stage 3: */
@@ -198,6 +200,7 @@ struct pbuild {
     uint32_t defer_max;
 
     struct build_ref *refs[2];
+    void *refs_block[2]; /* what refs[] were allocated as (rt_align64) */
 
     /* Top nodes of stage 1: count 0 = inner (first = child pair), count
      * 1 = the root slot of a subtree. */
@@ -235,6 +238,8 @@ struct pbuild {
      * so that bin_task reaches both with one byte offset
      * (build_bin_offsets) */
     uint32_t (*hist_count)[8];
+    void *hist_box_block; /* what they were allocated as (rt_align64) */
+    void *hist_count_block;
 
     /* grid */
     uint32_t res[3];
@@ -247,7 +252,6 @@ struct pbuild {
     uint32_t *prim_index; /* the output's */
     uint32_t *order;      /* stage 2's items by descending size: subtrees
                            * (index < subtree_count), then deferred nodes */
-    struct bvh_node *scratch;
     struct bvh_node *final_nodes;
 };
 
@@ -679,13 +683,18 @@ static int stage1_binning(struct pbuild *b, const struct open_node *root)
         b->chunks = chunk_array;
         uint32_t hist_need = chunks * 3 * (uint32_t)b->bins;
         if (hist_need > hist_cap) {
-            float(*hb)[8] = rt_realloc_array(b->hist_box, hist_need, sizeof(*hb));
-            if (hb)
-                b->hist_box = hb;
-            uint32_t(*hc)[8] = rt_realloc_array(b->hist_count, hist_need, sizeof(*hc));
-            if (hc)
-                b->hist_count = hc;
-            if (!hb || !hc)
+            /* Fresh blocks, not realloc (every chunk's histogram is
+             * filled anew each level), two records longer and aligned
+             * to 64: fill stores whole 32-byte records (rt_align64). */
+            rt_free(b->hist_box_block);
+            rt_free(b->hist_count_block);
+            b->hist_box_block =
+                rt_realloc_array(NULL, (size_t)hist_need + 2, sizeof(*b->hist_box));
+            b->hist_count_block =
+                rt_realloc_array(NULL, (size_t)hist_need + 2, sizeof(*b->hist_count));
+            b->hist_box = rt_align64(b->hist_box_block);
+            b->hist_count = rt_align64(b->hist_count_block);
+            if (!b->hist_box || !b->hist_count)
                 goto out;
             hist_cap = hist_need;
         }
@@ -1020,8 +1029,8 @@ static int by_id(const void *pa, const void *pb)
 
 /*
  * An SAH subtree.  The binned builder runs on the subtree's refs in place
- * and writes its nodes into the subtree's preassigned range of 2m - 1
- * nodes of the scratch array, as a median subtree does
+ * and writes its nodes into the subtree's block of 2m - 1 nodes
+ * (build_subtree), as a median subtree does
  * (build_binned_sah_refs): no copy of the boxes, no arrays of its own.
  * The refs are renumbered 0 .. m - 1 in range order first (their ids kept
  * aside), so that the tree is the one accel_build makes from the
@@ -1092,10 +1101,10 @@ static int build_sah_subtree(struct pbuild *b, struct subtree *s, struct bvh_nod
     return 0;
 }
 
-/* A median subtree, in place, into its preassigned range of 2m - 1 nodes
- * of the scratch array (Wald, Ize and Parker (2008) sec. 5: "a subtree of N triangles can
- * use at most 2N - 1 nodes ... so we can simply assign each subtree to
- * one contiguous region of the node array"): no allocation at all. */
+/* A median subtree, in place, into its block of 2m - 1 nodes (Wald, Ize
+ * and Parker (2008) sec. 5: "a subtree of N triangles can use at most
+ * 2N - 1 nodes"; the paper assigns each subtree such a region of one node
+ * array, build_subtree a block of its own). */
 static void build_median_subtree(struct pbuild *b, struct subtree *s, struct bvh_node *range)
 {
     uint32_t m = s->end - s->begin;
@@ -1106,17 +1115,43 @@ static void build_median_subtree(struct pbuild *b, struct subtree *s, struct bvh
         b->prim_index[s->begin + i] = build_ref_id(&refs[i]);
 }
 
-/* Builds subtree s into its range of the scratch array: subtree s's
- * range is [2 begin, 2 begin + 2 m - 1), inside its refs' [2 begin, 2
- * end), so the ranges are disjoint whatever the other subtrees. */
+/* Builds subtree s into a block of its own of 2m - 1 nodes, which
+ * stage 3 copies from and release_build frees, shrunk to the nodes it
+ * used.  One scratch array of 2n - 1 nodes with a range per subtree (the
+ * paper's way, and this file's until 2026-12) is above the C library's
+ * largest mmap threshold from about 500,000 primitives on (32 MiB), so
+ * a fresh mapping every build, and the kernel zeroes every huge page
+ * a subtree touches although the subtrees use about half their ranges
+ * (rtbench's bumpy: 64 MB mapped for 35 MB of nodes; the zeroing under
+ * the subtree builds was 4-8 % of a two-thread build's samples).  A
+ * subtree's block (at most 2 subtree_max - 1 nodes, 1 MB for bumpy) is
+ * under that threshold once the build's larger blocks were freed, so
+ * the next build's blocks come back from the heap already in memory, and
+ * the shrink returns the unused tail to the heap for the next subtree. */
 static int build_subtree(struct pbuild *b, struct subtree *s)
 {
-    struct bvh_node *range = &b->scratch[2 * (size_t)s->begin];
-    if (b->pp.subtree == BVH_SUBTREE_MEDIAN) {
+    const uint32_t m = s->end - s->begin;
+    /* Two nodes more, aligned to 64 (rt_align64). */
+    s->block = rt_realloc_array(NULL, 2 * (size_t)m + 1, sizeof(struct bvh_node));
+    struct bvh_node *range = rt_align64(s->block);
+    if (!range)
+        return -1;
+    int rc = 0;
+    if (b->pp.subtree == BVH_SUBTREE_MEDIAN)
         build_median_subtree(b, s, range);
-        return 0;
+    else
+        rc = build_sah_subtree(b, s, range);
+    if (rc == 0 && s->nodes == range && s->node_count < 2 * m - 1) {
+        /* The nodes keep their offset in the block if realloc moves it. */
+        const size_t offset = (size_t)((char *)range - (char *)s->block);
+        char *shrunk =
+            rt_realloc_array(s->block, offset + (size_t)s->node_count * sizeof(*range), 1);
+        if (shrunk) {
+            s->block = shrunk;
+            s->nodes = (const struct bvh_node *)(const void *)(shrunk + offset);
+        }
     }
-    return build_sah_subtree(b, s, range);
+    return rc;
 }
 
 /* A deferred node (struct deferred), on one thread: stage 1's steps on a
@@ -1129,8 +1164,11 @@ static int build_deferred(struct pbuild *b, struct deferred *d)
 {
     const int bins = b->bins;
     const uint32_t axis_base[4] = {0, (uint32_t)bins * 32u, 2u * (uint32_t)bins * 32u, 0};
-    float(*hist_box)[8] = rt_realloc_array(NULL, 3 * (size_t)bins, sizeof(*hist_box));
-    uint32_t(*hist_count)[8] = rt_realloc_array(NULL, 3 * (size_t)bins, sizeof(*hist_count));
+    /* Two records longer, aligned to 64 (rt_align64). */
+    void *hist_box_block = rt_realloc_array(NULL, 3 * (size_t)bins + 2, 32);
+    void *hist_count_block = rt_realloc_array(NULL, 3 * (size_t)bins + 2, 32);
+    float(*hist_box)[8] = rt_align64(hist_box_block);
+    uint32_t(*hist_count)[8] = rt_align64(hist_count_block);
     /* Depth first with the right child pushed: one entry per level below
      * the node plus one, as the serial builders' stacks. */
     struct {
@@ -1199,8 +1237,8 @@ static int build_deferred(struct pbuild *b, struct deferred *d)
     }
     status = 0;
 out:
-    rt_free(hist_box);
-    rt_free(hist_count);
+    rt_free(hist_box_block);
+    rt_free(hist_count_block);
     return status;
 }
 
@@ -1256,8 +1294,10 @@ static int merge_deferred(struct pbuild *b)
                 return -1;
             *st = *ds;
             st->slot = ds->slot == 0 ? slot : base + ds->slot - 1;
-            /* The pbuild's copy owns a sweep subtree's arrays now. */
+            /* The pbuild's copy owns a sweep subtree's arrays and its
+             * node block now. */
             memset(&ds->sah, 0, sizeof(ds->sah));
+            ds->block = NULL;
         }
         d->subtree_count = 0;
     }
@@ -1366,28 +1406,31 @@ void bvh_parallel_params_default(struct bvh_parallel_params *params)
 
 static void release_build(struct pbuild *b)
 {
-    for (uint32_t i = 0; i < b->subtree_count; i++)
+    for (uint32_t i = 0; i < b->subtree_count; i++) {
         bvh_release(&b->subtrees[i].sah);
+        rt_free(b->subtrees[i].block);
+    }
     for (uint32_t i = 0; i < b->deferred_count; i++) {
-        for (uint32_t k = 0; k < b->deferred[i].subtree_count; k++)
+        for (uint32_t k = 0; k < b->deferred[i].subtree_count; k++) {
             bvh_release(&b->deferred[i].subtrees[k].sah);
+            rt_free(b->deferred[i].subtrees[k].block);
+        }
         rt_free(b->deferred[i].top);
         rt_free(b->deferred[i].subtrees);
     }
     rt_free(b->deferred);
-    rt_free(b->refs[0]);
-    rt_free(b->refs[1]);
+    rt_free(b->refs_block[0]);
+    rt_free(b->refs_block[1]);
     rt_free(b->top);
     rt_free(b->subtrees);
     rt_free(b->chunks);
     rt_free(b->chunk_box);
     rt_free(b->open);
-    rt_free(b->hist_box);
-    rt_free(b->hist_count);
+    rt_free(b->hist_box_block);
+    rt_free(b->hist_count_block);
     rt_free(b->cell_of);
     rt_free(b->counts);
     rt_free(b->order);
-    rt_free(b->scratch);
 }
 
 /* Stages 2 and 3 once stage 1 has left its subtrees; fills *out. */
@@ -1415,9 +1458,6 @@ static int build_subtrees(struct pbuild *b, struct bvh *out)
         b->order[i] = keys[i].index;
     rt_free(keys);
 
-    b->scratch = rt_realloc_array(NULL, 2 * (size_t)b->n - 1, sizeof(*b->scratch));
-    if (!b->scratch)
-        return -1;
     b->failed = 0;
     run(b, subtree_task);
     if (b->failed)
@@ -1499,8 +1539,12 @@ int accel_build_parallel_ex(struct bvh *out, const struct aabb *prim_boxes, uint
     int status = -1;
     out->prim_index = rt_realloc_array(NULL, prim_count, sizeof(*out->prim_index));
     b.prim_index = out->prim_index;
-    b.refs[0] = rt_realloc_array(NULL, prim_count, sizeof(*b.refs[0]));
-    b.refs[1] = rt_realloc_array(NULL, prim_count, sizeof(*b.refs[1]));
+    /* Two refs more, aligned to 64 (rt_align64). */
+    for (int i = 0; i < 2; i++) {
+        b.refs_block[i] =
+            rt_realloc_array(NULL, (size_t)prim_count + 2, sizeof(struct build_ref));
+        b.refs[i] = rt_align64(b.refs_block[i]);
+    }
     plan_flat_chunks(&b, prim_count);
     b.chunk_box = rt_realloc_array(NULL, 2 * (size_t)b.chunk_count, sizeof(*b.chunk_box));
     b.top = reserve(NULL, &b.top_cap, 1, sizeof(*b.top));
