@@ -26,6 +26,7 @@
 #include "render/blend.h"
 #include "render/gl_light.h"
 #include "render/gl_shade.h"
+#include "render/lanes.h"
 #include "render/surface.h"
 #include "trace/kernels.h"
 
@@ -640,13 +641,6 @@ void shade_prime_shadows(const struct shade_context *sc, unsigned found,
 }
 
 #if SHADE_LANES && defined(__AVX__)
-/* vec3_dot of eight lanes: (a0 b0 + a1 b1) + a2 b2. */
-static inline __m256 eye_dot8(const __m256 a[3], const __m256 b[3])
-{
-    return _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(a[0], b[0]), _mm256_mul_ps(a[1], b[1])),
-                         _mm256_mul_ps(a[2], b[2]));
-}
-
 /* A block's TRACE_PACKET hits' cone widths and unit directions (eye_hits'
  * first loop) in eight float lanes, lane i hit i, each lane the scalar
  * operations in their order: the same floats.  unit[k][i] is component k
@@ -667,7 +661,7 @@ static void eye_widths8(const float *const dir[], const struct trace_scene_hit *
     __m256 d[3];
     for (int k = 0; k < 3; k++)
         d[k] = _mm256_loadu_ps(lane_d[k]);
-    const __m256 len = _mm256_sqrt_ps(eye_dot8(d, d));
+    const __m256 len = _mm256_sqrt_ps(lanes_dot8(d, d));
     const __m256 w = _mm256_add_ps(
         _mm256_loadu_ps(lane_w),
         _mm256_mul_ps(_mm256_loadu_ps(lane_s), _mm256_mul_ps(_mm256_loadu_ps(lane_t), len)));
@@ -694,7 +688,7 @@ static void eye_cosines8(const struct surface_colour e[], float unit[3][TRACE_PA
         nv[k] = _mm256_loadu_ps(lane_n[k]);
         u[k] = _mm256_loadu_ps(unit[k]);
     }
-    _mm256_storeu_ps(cosine, _mm256_andnot_ps(_mm256_set1_ps(-0.0f), eye_dot8(nv, u)));
+    _mm256_storeu_ps(cosine, _mm256_andnot_ps(_mm256_set1_ps(-0.0f), lanes_dot8(nv, u)));
 }
 #endif
 

@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "base/mat4.h"
+#include "render/lanes.h"
 
 /* The level of detail maps its footprint's two axes to texels in the two
  * SSE2 lanes: IEEE operations lane by lane, the same doubles as one axis
@@ -1290,10 +1291,6 @@ void surface_fetch_colour(const struct shade_context *sc, const struct trace_sce
 }
 
 #if defined(SURFACE_QUADS)
-/* vec3_dot of lanes: (a0 b0 + a1 b1) + a2 b2. */
-#define LANES_DOT(a, b)                                                                           \
-    _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps((a)[0], (b)[0]), _mm256_mul_ps((a)[1], (b)[1])),   \
-                  _mm256_mul_ps((a)[2], (b)[2]))
 /* interpolate's (b0 x0 + b1 x1) + b2 x2 of one component, x broadcast. */
 #define LANES_INTERPOLATE(x0, x1, x2)                                                             \
     _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(b0, _mm256_set1_ps(x0)),                            \
@@ -1374,7 +1371,7 @@ static int fetch_colours_one_triangle(const struct shade_context *sc,
         dv[k] = _mm256_loadu_ps(lane_d[k]);
     }
     /* front = ng . dir < 0; the back face's ng negated (a sign flip). */
-    const __m256 front = _mm256_cmp_ps(LANES_DOT(g, dv), _mm256_setzero_ps(), _CMP_LT_OQ);
+    const __m256 front = _mm256_cmp_ps(lanes_dot8(g, dv), _mm256_setzero_ps(), _CMP_LT_OQ);
     const __m256 flip = _mm256_andnot_ps(front, sign);
     for (int k = 0; k < 3; k++)
         g[k] = _mm256_xor_ps(g[k], flip);
@@ -1410,7 +1407,7 @@ static int fetch_colours_one_triangle(const struct shade_context *sc,
         /* vec3_normalize: a length that is positive and finite (not
          * above FLT_MAX; NaN fails both) scales by 1 / len, else the
          * geometric normal stays. */
-        const __m256 len = _mm256_sqrt_ps(LANES_DOT(nw, nw));
+        const __m256 len = _mm256_sqrt_ps(lanes_dot8(nw, nw));
         const __m256 unit =
             _mm256_and_ps(_mm256_cmp_ps(len, _mm256_setzero_ps(), _CMP_GT_OQ),
                           _mm256_cmp_ps(len, _mm256_set1_ps(FLT_MAX), _CMP_LE_OQ));
@@ -1418,7 +1415,7 @@ static int fetch_colours_one_triangle(const struct shade_context *sc,
         for (int k = 0; k < 3; k++)
             nw[k] = _mm256_mul_ps(nw[k], inv);
         const __m256 away = _mm256_and_ps(
-            _mm256_cmp_ps(LANES_DOT(nw, g), _mm256_setzero_ps(), _CMP_LT_OQ), sign);
+            _mm256_cmp_ps(lanes_dot8(nw, g), _mm256_setzero_ps(), _CMP_LT_OQ), sign);
         for (int k = 0; k < 3; k++)
             nv[k] = _mm256_blendv_ps(g[k], _mm256_xor_ps(nw[k], away), unit);
     }
