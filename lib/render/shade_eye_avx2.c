@@ -40,6 +40,7 @@
 #define scene_texture_sample scene_texture_sample_avx2
 #define scene_texture_sample_level scene_texture_sample_level_avx2
 #define scene_texture_sample_lod scene_texture_sample_lod_avx2
+#define scene_texture_sample_lod8 scene_texture_sample_lod8_avx2
 #define scene_texture_set_image scene_texture_set_image_avx2
 #define scene_textures_generate scene_textures_generate_avx2
 #define scene_textures_get_or_create scene_textures_get_or_create_avx2
@@ -56,10 +57,20 @@ shade_eye_hits_fn shade_eye_hits_avx2_unit(void)
 {
     return shade_eye_hits_avx2;
 }
+
+shade_texture_lod8_fn shade_texture_lod8_avx2_unit(void)
+{
+    return scene_texture_sample_lod8_avx2;
+}
 #else
 #include "render/shade.h"
 
 shade_eye_hits_fn shade_eye_hits_avx2_unit(void)
+{
+    return NULL;
+}
+
+shade_texture_lod8_fn shade_texture_lod8_avx2_unit(void)
 {
     return NULL;
 }

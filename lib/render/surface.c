@@ -873,6 +873,38 @@ static void texture_end(const struct surface_texture *t, float ambient[4], float
     }
 }
 
+#if defined(__AVX2__) && !defined(RT_NO_SIMD)
+/* texture_end of TRACE_PACKET hits on one texture, their lookups in the
+ * eight lanes (scene_texture_sample_lod8: the same texels) and the
+ * products as texture_end's; 0, having changed nothing, when the hits
+ * are not all on one texture or the sampler leaves the block to
+ * texture_end. */
+static int texture_end8(const struct surface_texture t[], float *const ambient[],
+                        float *const diffuse[])
+{
+    const struct scene_texture *tex = t[0].tex;
+    if (!tex)
+        return 0;
+    float lambda[TRACE_PACKET], s[TRACE_PACKET], tc[TRACE_PACKET];
+    for (int i = 0; i < TRACE_PACKET; i++) {
+        if (t[i].tex != tex)
+            return 0;
+        lambda[i] = t[i].lambda;
+        s[i] = t[i].st[0];
+        tc[i] = t[i].st[1];
+    }
+    float rgb[3][TRACE_PACKET];
+    if (!scene_texture_sample_lod8(tex, lambda, s, tc, rgb))
+        return 0;
+    for (int i = 0; i < TRACE_PACKET; i++)
+        for (int k = 0; k < 3; k++) {
+            ambient[i][k] *= rgb[k][i];
+            diffuse[i][k] *= rgb[k][i];
+        }
+    return 1;
+}
+#endif
+
 static void apply_texture(const struct shade_context *sc, struct surface_cache *cache,
                           const struct scene_instance *inst,
                           const struct scene_mesh *mesh, uint32_t prim, const uint32_t v[3],
@@ -1245,6 +1277,17 @@ void surface_fetches(const struct shade_context *sc, int n,
             lod[lods++] = &tex[i];
     }
     texture_lods(lod, lods);
+#if defined(__AVX2__) && !defined(RT_NO_SIMD)
+    if (n == TRACE_PACKET) {
+        float *ambient[TRACE_PACKET], *diffuse[TRACE_PACKET];
+        for (int i = 0; i < TRACE_PACKET; i++) {
+            ambient[i] = s[i]->ambient;
+            diffuse[i] = s[i]->diffuse;
+        }
+        if (texture_end8(tex, ambient, diffuse))
+            return;
+    }
+#endif
     for (int i = 0; i < n; i++)
         texture_end(&tex[i], s[i]->ambient, s[i]->diffuse);
 }
@@ -1494,6 +1537,17 @@ void surface_fetch_colours(const struct shade_context *sc, int n,
             lod[lods++] = &tex[i];
     }
     texture_lods(lod, lods);
+#if defined(__AVX2__) && !defined(RT_NO_SIMD)
+    if (n == TRACE_PACKET) {
+        float *ambient[TRACE_PACKET], *diffuse[TRACE_PACKET];
+        for (int i = 0; i < TRACE_PACKET; i++) {
+            ambient[i] = s[i].ambient;
+            diffuse[i] = s[i].diffuse;
+        }
+        if (texture_end8(tex, ambient, diffuse))
+            return;
+    }
+#endif
     for (int i = 0; i < n; i++)
         texture_end(&tex[i], s[i].ambient, s[i].diffuse);
 }
