@@ -62,6 +62,16 @@ shade_texture_lod8_fn shade_texture_lod8_avx2_unit(void)
 {
     return scene_texture_sample_lod8_avx2;
 }
+
+static void log2_quad(const double x[4], double out[4])
+{
+    _mm256_storeu_pd(out, lanes_log2_4(_mm256_loadu_pd(x)));
+}
+
+shade_log2_quad_fn shade_log2_quad_avx2_unit(void)
+{
+    return log2_quad;
+}
 #else
 #include "render/shade.h"
 
@@ -71,6 +81,11 @@ shade_eye_hits_fn shade_eye_hits_avx2_unit(void)
 }
 
 shade_texture_lod8_fn shade_texture_lod8_avx2_unit(void)
+{
+    return NULL;
+}
+
+shade_log2_quad_fn shade_log2_quad_avx2_unit(void)
 {
     return NULL;
 }

@@ -19,7 +19,7 @@
 #if defined(__SSE2__) && !defined(RT_NO_SIMD)
 #include <emmintrin.h>
 #define SURFACE_PAIRS 1
-#if defined(__AVX__)
+#if defined(__AVX2__)
 #include <immintrin.h>
 #define SURFACE_QUADS 1 /* the AVX2 copy (render/shade_eye_avx2.c) */
 #endif
@@ -637,11 +637,19 @@ SURFACE_INLINE void lod_ray_quad(struct surface_texture *const t[4])
      * the ray not meeting the plane head-on) and, there, lod_axes's first
      * steps in the lanes: which axis wins by the margin, and lod_near's
      * footprint xs and its tests against 1 and the last level (`top`), each
-     * lane the scalar operations in their order.  What is left hit by hit
-     * is lod_near's log2 and its rounding test; a lane whose answer is not
-     * decided so (no axis wins, a footprint close to a bound or the log2
-     * close to a float's rounding boundary) takes lod_axes whole, as before,
-     * and a lane off the common path lod_ray. */
+     * lane the scalar operations in their order, and lod_near's log2 and
+     * its rounding test.  That log2 is lanes_log2_4, not glibc's: lod_near
+     * needs log2(xs) within 2^-45 of log2(x) (x = hypot width [/ cosine],
+     * what lod_axes takes glibc's log2 of), and lanes_log2_4 is within
+     * 2^-47 of the exact log2(xs) (xs < top <= 2^16: its domain), the
+     * exact log2(xs) within 2^-48.4 of the exact log2(x) (xs within 2^-49
+     * of x, relative), and glibc's log2(x) within 2 ulps, 2^-47, of that:
+     * 2^-45.4 in all, so every value within LOD_NEAR_ABSOLUTE (2^-42) of
+     * lanes_log2_4(xs) rounding to one float f still makes f = float(glibc's
+     * log2(x)).  A lane whose answer is not decided so (no axis wins, a
+     * footprint close to a bound or the log2 close to a float's rounding
+     * boundary) takes lod_axes whole, as before, and a lane off the common
+     * path lod_ray. */
     const __m256d zero = _mm256_setzero_pd();
 #define QUAD(f) _mm256_set_pd(f(3), f(2), f(1), f(0))
 #define P_A(i) l[i]->p_a
@@ -698,8 +706,16 @@ SURFACE_INLINE void lod_ray_quad(struct surface_texture *const t[4])
     const int usable_bits = _mm256_movemask_pd(usable);
     const int below_bits = _mm256_movemask_pd(below);
     const int beyond_bits = _mm256_movemask_pd(beyond);
-    const int inside_bits = _mm256_movemask_pd(inside);
-    double v_cos[4], v_ja[2][4], v_jb[2][4], v_sa[4], v_sb[4], v_sbc[4], v_xs[4];
+    const __m256d lg = lanes_log2_4(xs);
+    const __m128 lg_f = _mm256_cvtpd_ps(lg);
+    const __m256d near_abs = _mm256_set1_pd(LOD_NEAR_ABSOLUTE);
+    const __m128 exact =
+        _mm_and_ps(_mm_cmpeq_ps(_mm256_cvtpd_ps(_mm256_sub_pd(lg, near_abs)), lg_f),
+                   _mm_cmpeq_ps(_mm256_cvtpd_ps(_mm256_add_pd(lg, near_abs)), lg_f));
+    const int inside_bits = _mm256_movemask_pd(inside) & _mm_movemask_ps(exact);
+    float v_lambda[4];
+    _mm_storeu_ps(v_lambda, lg_f);
+    double v_cos[4], v_ja[2][4], v_jb[2][4], v_sa[4], v_sb[4], v_sbc[4];
     _mm256_storeu_pd(v_cos, cosine);
     _mm256_storeu_pd(v_ja[0], ja[0]);
     _mm256_storeu_pd(v_ja[1], ja[1]);
@@ -708,7 +724,6 @@ SURFACE_INLINE void lod_ray_quad(struct surface_texture *const t[4])
     _mm256_storeu_pd(v_sa, sa);
     _mm256_storeu_pd(v_sb, sb);
     _mm256_storeu_pd(v_sbc, sbc);
-    _mm256_storeu_pd(v_xs, xs);
     for (int i = 0; i < 4; i++) {
         if (!(common_bits >> i & 1)) {
             texture_lambda(t[i]);
@@ -724,12 +739,8 @@ SURFACE_INLINE void lod_ray_quad(struct surface_texture *const t[4])
                 continue;
             }
             if (inside_bits >> i & 1) {
-                const double lg = log2(v_xs[i]);
-                const float f = (float)lg;
-                if ((float)(lg - LOD_NEAR_ABSOLUTE) == f && (float)(lg + LOD_NEAR_ABSOLUTE) == f) {
-                    t[i]->lambda = f;
-                    continue;
-                }
+                t[i]->lambda = v_lambda[i]; /* lod_near's float, decided in the lanes */
+                continue;
             }
         }
         const double ja_i[2] = {v_ja[0][i], v_ja[1][i]}, jb_i[2] = {v_jb[0][i], v_jb[1][i]};
@@ -873,7 +884,7 @@ static void texture_end(const struct surface_texture *t, float ambient[4], float
     }
 }
 
-#if defined(__AVX2__) && !defined(RT_NO_SIMD)
+#if defined(SURFACE_QUADS)
 /* texture_end of TRACE_PACKET hits on one texture, their lookups in the
  * eight lanes (scene_texture_sample_lod8: the same texels) and the
  * products as texture_end's; 0, having changed nothing, when the hits
@@ -1277,7 +1288,7 @@ void surface_fetches(const struct shade_context *sc, int n,
             lod[lods++] = &tex[i];
     }
     texture_lods(lod, lods);
-#if defined(__AVX2__) && !defined(RT_NO_SIMD)
+#if defined(SURFACE_QUADS)
     if (n == TRACE_PACKET) {
         float *ambient[TRACE_PACKET], *diffuse[TRACE_PACKET];
         for (int i = 0; i < TRACE_PACKET; i++) {
@@ -1537,7 +1548,7 @@ void surface_fetch_colours(const struct shade_context *sc, int n,
             lod[lods++] = &tex[i];
     }
     texture_lods(lod, lods);
-#if defined(__AVX2__) && !defined(RT_NO_SIMD)
+#if defined(SURFACE_QUADS)
     if (n == TRACE_PACKET) {
         float *ambient[TRACE_PACKET], *diffuse[TRACE_PACKET];
         for (int i = 0; i < TRACE_PACKET; i++) {

@@ -1,8 +1,16 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * texture_lanes.c - the eight-lane texture lookup of the shading's AVX2
- * copy (scene_texture_sample_lod8, through shade_texture_lod8_avx2_unit)
- * against scene_texture_sample_lod, bit for bit: textures of odd and
+ * shade_lanes.c - the lanes of the shading's AVX2 copy
+ * (render/shade_eye_avx2.c) against their scalar references.
+ *
+ * The four-lane log2 of the levels of detail (lanes_log2_4, through
+ * shade_log2_quad_avx2_unit) within 2^-48 of log2l over every 13th float
+ * of [1, 2^16] and a million random doubles there: a quarter of the
+ * bound (LANES_LOG2_BOUND, 2^-47) that lod_ray_quad's argument uses.
+ *
+ * The eight-lane texture lookup (scene_texture_sample_lod8, through
+ * shade_texture_lod8_avx2_unit) against scene_texture_sample_lod, bit
+ * for bit: textures of odd and
  * power-of-two sizes down to 1x1, REPEAT and CLAMP_TO_EDGE on each axis,
  * levels of detail at and around every level boundary, the last level,
  * magnifications, zeros, infinities and NaN, coordinates near texel
@@ -92,24 +100,74 @@ static float any_coord(int n)
     }
 }
 
+/* The largest |lanes_log2_4(x) - log2l(x)| over the grid and the random
+ * doubles; the failures counted against 2^-48. */
+static int log2_bound(shade_log2_quad_fn log2_quad)
+{
+    int failures = 0;
+    long double worst = 0.0L;
+    double xs[4], got[4];
+    int n = 0;
+    uint32_t bits = 0x3f800000u; /* 1.0f */
+    const uint32_t end = 0x47800000u; /* 65536.0f */
+    long count = 0;
+    for (;;) {
+        int done = bits > end;
+        if (!done) {
+            float f;
+            memcpy(&f, &bits, sizeof(f));
+            xs[n++] = (double)f;
+            bits += 13;
+        } else if (count < 1000000) {
+            /* A random double of [1, 2^16): 2^e times a random mantissa. */
+            const uint64_t m = ((uint64_t)next() << 32 | next()) & 0x000fffffffffffffull;
+            const uint64_t e = 1023u + next() % 16u;
+            const uint64_t b = e << 52 | m;
+            memcpy(&xs[n++], &b, sizeof(double));
+            count++;
+            done = 0;
+        }
+        if (n == 4 || (done && n > 0)) {
+            while (n < 4)
+                xs[n++] = 1.0;
+            log2_quad(xs, got);
+            for (int k = 0; k < 4; k++) {
+                const long double err = fabsl((long double)got[k] - log2l((long double)xs[k]));
+                if (err > worst)
+                    worst = err;
+                if (!(err <= 0x1p-48L))
+                    failures += !CHECKF(0, "log2(%a): %a, off by %Lg", xs[k], got[k], err);
+            }
+            n = 0;
+        }
+        if (done)
+            break;
+    }
+    printf("shade_lanes: log2's largest error %Lg (2^%.2f)\n", worst,
+           worst > 0.0L ? (double)log2l(worst) : -INFINITY);
+    return failures;
+}
+
 int main(void)
 {
+    const shade_log2_quad_fn log2_quad = shade_log2_quad_avx2_unit();
     const shade_texture_lod8_fn lod8 = shade_texture_lod8_avx2_unit();
 #if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
     const int cpu = __builtin_cpu_supports("avx2");
 #else
     const int cpu = 0;
 #endif
-    if (!lod8 || !cpu) {
-        printf("texture_lanes: skipped (no AVX2 unit or CPU)\n");
+    if (!lod8 || !log2_quad || !cpu) {
+        printf("shade_lanes: skipped (no AVX2 unit or CPU)\n");
         return 0;
     }
+    int failures = log2_bound(log2_quad);
     struct scene_textures tab;
     scene_textures_init(&tab);
     struct scene_texture *tex = scene_textures_get_or_create(&tab, 1);
     const int sizes[][2] = {{1, 1}, {1, 7}, {5, 3}, {4, 4}, {64, 16}, {37, 129}, {128, 128},
                             {300, 5}};
-    int failures = 0, lanes = 0, refused = 0;
+    int lanes = 0, refused = 0;
     for (size_t z = 0; z < sizeof(sizes) / sizeof(sizes[0]); z++) {
         if (!tex || !set_random_image(tex, sizes[z][0], sizes[z][1])) {
             fprintf(stderr, "no memory for a texture\n");
@@ -164,7 +222,7 @@ int main(void)
         }
     }
     scene_textures_release(&tab);
-    printf("texture_lanes: %d lanes compared, %d blocks refused\n", lanes, refused);
-    printf("texture_lanes: %s (%d failed checks)\n", failures ? "FAILED" : "passed", failures);
+    printf("shade_lanes: %d lanes compared, %d blocks refused\n", lanes, refused);
+    printf("shade_lanes: %s (%d failed checks)\n", failures ? "FAILED" : "passed", failures);
     return failures != 0;
 }
