@@ -551,22 +551,38 @@ SURFACE_INLINE void quad_texel_vector(const __m256d e[3], const __m256d w1[3],
     out[1] = _mm256_add_pd(_mm256_mul_pd(alpha, a1[1]), _mm256_mul_pd(beta, a2[1]));
 }
 
-/* lod_ray_pair of four textures' hits in the four double lanes of the
- * AVX copy: lane i hit t[i], each lane lod_ray's operations in its order
- * (the comparisons ordered, as cmpge and cmpgt in the pair), so the same
- * doubles; a lane off lod_ray's common path is computed by lod_ray. */
-SURFACE_INLINE void lod_ray_quad(struct surface_texture *const t[4])
+/* What lod_quad leaves to a lane it does not decide: lod_axes's
+ * arguments, and whether the lane is on lod_ray's common path. */
+struct lod_quad_rest {
+    double cos[4], ja[2][4], jb[2][4], sa[4], sb[4], sbc[4];
+    int common; /* mask of the lanes on the common path */
+};
+
+/* The low 32 bits of each double lane of a mask: the mask in four float
+ * lanes. */
+static inline __m128 quad_mask_ps(__m256d m)
 {
-    const struct surface_lod *l[4] = {t[0]->lodp, t[1]->lodp, t[2]->lodp, t[3]->lodp};
+    return _mm256_castps256_ps128(_mm256_castsi256_ps(_mm256_permutevar8x32_epi32(
+        _mm256_castpd_si256(m), _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6))));
+}
+
+/*
+ * lod_ray_pair in the four double lanes of the AVX2 copy: lane i a hit
+ * along d (its direction) on a surface with the facing normal g, its
+ * cone's width at the hit, the triangle part l[i] (one for all when
+ * `shared`: its values broadcast) and top its texture's lod_top, each
+ * lane lod_ray's operations in its order (the comparisons ordered, as
+ * cmpge and cmpgt in the pair), so the same doubles.  Writes lambda[i]
+ * of every lane and returns the mask of the lanes whose lambda is
+ * texture_lod's; a lane not in it takes lod_axes with rest's values when
+ * it is in rest->common, else lod_ray (lod_quad_finish).
+ */
+SURFACE_INLINE int lod_quad(const struct surface_lod *const l[4], int shared, const __m256d d[3],
+                            const __m256d g[3], __m256d width, __m256d top, float lambda[4],
+                            struct lod_quad_rest *rest)
+{
 #define QUAD(f) _mm256_set_pd(f(3), f(2), f(1), f(0))
-    __m256d d[3], g[3], n[3], w1[3], w2[3], nn[3], a1[2], a2[2], nn2;
-    for (int k = 0; k < 3; k++) {
-#define DIR(i) (double)t[i]->dir[k]
-#define NG(i) (double)t[i]->ng[k]
-        d[k] = QUAD(DIR);
-        g[k] = QUAD(NG);
-    }
-    const int shared = l[0] == l[1] && l[0] == l[2] && l[0] == l[3];
+    __m256d n[3], w1[3], w2[3], nn[3], a1[2], a2[2], nn2, p_a, t_a;
     if (shared) {
         /* One triangle part for the four (fetch_colours_one_triangle):
          * its values broadcast, the same doubles in every lane. */
@@ -582,6 +598,8 @@ SURFACE_INLINE void lod_ray_quad(struct surface_texture *const t[4])
             a2[k] = _mm256_set1_pd(o->a2[k]);
         }
         nn2 = _mm256_set1_pd(o->nn2);
+        p_a = _mm256_set1_pd(o->p_a);
+        t_a = _mm256_set1_pd(o->t_a);
     } else {
         for (int k = 0; k < 3; k++) {
 #define N(i) l[i]->n[k]
@@ -600,11 +618,13 @@ SURFACE_INLINE void lod_ray_quad(struct surface_texture *const t[4])
             a2[k] = QUAD(A2);
         }
 #define NN2(i) l[i]->nn2
+#define P_A(i) l[i]->p_a
+#define T_A(i) l[i]->t_a
         nn2 = QUAD(NN2);
+        p_a = QUAD(P_A);
+        t_a = QUAD(T_A);
     }
 #undef QUAD
-#undef DIR
-#undef NG
 #undef N
 #undef W1
 #undef W2
@@ -612,6 +632,8 @@ SURFACE_INLINE void lod_ray_quad(struct surface_texture *const t[4])
 #undef A1
 #undef A2
 #undef NN2
+#undef P_A
+#undef T_A
     const __m256d dir_len = _mm256_sqrt_pd(quad_dot(d, d));
     const __m256d sign = _mm256_set1_pd(-0.0);
     __m256d cosine = _mm256_div_pd(_mm256_andnot_pd(sign, quad_dot(g, d)), dir_len);
@@ -651,29 +673,6 @@ SURFACE_INLINE void lod_ray_quad(struct surface_texture *const t[4])
      * boundary) takes lod_axes whole, as before, and a lane off the common
      * path lod_ray. */
     const __m256d zero = _mm256_setzero_pd();
-#define QUAD(f) _mm256_set_pd(f(3), f(2), f(1), f(0))
-#define P_A(i) l[i]->p_a
-#define T_A(i) l[i]->t_a
-#define WIDTH(i) (double)t[i]->width
-#define TOP(i) lod_top(t[i]->tex->level_count)
-    const __m256d width = QUAD(WIDTH);
-    __m256d p_a, t_a, top;
-    if (shared) {
-        /* One triangle part, so one block on one triangle and texture
-         * (fetch_colours_one_triangle). */
-        p_a = _mm256_set1_pd(l[0]->p_a);
-        t_a = _mm256_set1_pd(l[0]->t_a);
-        top = _mm256_set1_pd(TOP(0));
-    } else {
-        p_a = QUAD(P_A);
-        t_a = QUAD(T_A);
-        top = QUAD(TOP);
-    }
-#undef QUAD
-#undef P_A
-#undef T_A
-#undef WIDTH
-#undef TOP
     /* isfinite(nn2): |nn2| <= DBL_MAX, which a NaN fails. */
     const __m256d finite = _mm256_cmp_pd(_mm256_andnot_pd(sign, nn2), _mm256_set1_pd(DBL_MAX),
                                          _CMP_LE_OQ);
@@ -702,50 +701,81 @@ SURFACE_INLINE void lod_ray_quad(struct surface_texture *const t[4])
         _mm256_cmp_pd(xs, _mm256_set1_pd(1.0 + LOD_NEAR_RELATIVE), _CMP_GT_OQ),
         _mm256_cmp_pd(xs, _mm256_mul_pd(top, _mm256_set1_pd(1.0 - LOD_NEAR_RELATIVE)),
                       _CMP_LT_OQ));
-    const int common_bits = _mm256_movemask_pd(common);
-    const int usable_bits = _mm256_movemask_pd(usable);
-    const int below_bits = _mm256_movemask_pd(below);
-    const int beyond_bits = _mm256_movemask_pd(beyond);
     const __m256d lg = lanes_log2_4(xs);
     const __m128 lg_f = _mm256_cvtpd_ps(lg);
     const __m256d near_abs = _mm256_set1_pd(LOD_NEAR_ABSOLUTE);
     const __m128 exact =
         _mm_and_ps(_mm_cmpeq_ps(_mm256_cvtpd_ps(_mm256_sub_pd(lg, near_abs)), lg_f),
                    _mm_cmpeq_ps(_mm256_cvtpd_ps(_mm256_add_pd(lg, near_abs)), lg_f));
-    const int inside_bits = _mm256_movemask_pd(inside) & _mm_movemask_ps(exact);
-    float v_lambda[4];
-    _mm_storeu_ps(v_lambda, lg_f);
-    double v_cos[4], v_ja[2][4], v_jb[2][4], v_sa[4], v_sb[4], v_sbc[4];
-    _mm256_storeu_pd(v_cos, cosine);
-    _mm256_storeu_pd(v_ja[0], ja[0]);
-    _mm256_storeu_pd(v_ja[1], ja[1]);
-    _mm256_storeu_pd(v_jb[0], jb[0]);
-    _mm256_storeu_pd(v_jb[1], jb[1]);
-    _mm256_storeu_pd(v_sa, sa);
-    _mm256_storeu_pd(v_sb, sb);
-    _mm256_storeu_pd(v_sbc, sbc);
+    /* Below 1: a magnification; beyond the last level; between: the
+     * log2's float where it is decided. */
+    const __m128 below_ps = quad_mask_ps(below), beyond_ps = quad_mask_ps(beyond);
+    _mm_storeu_ps(lambda,
+                  _mm_blendv_ps(_mm_blendv_ps(lg_f, _mm_set1_ps(INFINITY), beyond_ps),
+                                _mm_set1_ps(-INFINITY), below_ps));
+    const int decided =
+        _mm256_movemask_pd(usable) &
+        (_mm256_movemask_pd(_mm256_or_pd(below, beyond)) |
+         (_mm256_movemask_pd(inside) & _mm_movemask_ps(exact)));
+    rest->common = _mm256_movemask_pd(common);
+    if (decided != 15) {
+        _mm256_storeu_pd(rest->cos, cosine);
+        _mm256_storeu_pd(rest->ja[0], ja[0]);
+        _mm256_storeu_pd(rest->ja[1], ja[1]);
+        _mm256_storeu_pd(rest->jb[0], jb[0]);
+        _mm256_storeu_pd(rest->jb[1], jb[1]);
+        _mm256_storeu_pd(rest->sa, sa);
+        _mm256_storeu_pd(rest->sb, sb);
+        _mm256_storeu_pd(rest->sbc, sbc);
+    }
+    return decided;
+}
+
+/* Lane i's lambda that lod_quad did not decide, from rest (lod_axes) on
+ * the common path, else NaN: the caller takes lod_ray. */
+SURFACE_INLINE int lod_quad_axes(const struct lod_quad_rest *rest, int i, float width,
+                                 double top, float *lambda)
+{
+    if (!(rest->common >> i & 1))
+        return 0;
+    const double ja[2] = {rest->ja[0][i], rest->ja[1][i]}, jb[2] = {rest->jb[0][i], rest->jb[1][i]};
+    *lambda = lod_axes(ja, jb, rest->sa[i], rest->sb[i], rest->sbc[i], rest->cos[i], width, top);
+    return 1;
+}
+
+/* lod_quad of four textures' hits t[i] (their lodp, dir, ng, width and
+ * texture), each lambda into t[i]. */
+SURFACE_INLINE void lod_ray_quad(struct surface_texture *const t[4])
+{
+    const struct surface_lod *l[4] = {t[0]->lodp, t[1]->lodp, t[2]->lodp, t[3]->lodp};
+    const int shared = l[0] == l[1] && l[0] == l[2] && l[0] == l[3];
+#define QUAD(f) _mm256_set_pd(f(3), f(2), f(1), f(0))
+#define DIR(i) (double)t[i]->dir[k]
+#define NG(i) (double)t[i]->ng[k]
+#define WIDTH(i) (double)t[i]->width
+#define TOP(i) lod_top(t[i]->tex->level_count)
+    __m256d d[3], g[3];
+    for (int k = 0; k < 3; k++) {
+        d[k] = QUAD(DIR);
+        g[k] = QUAD(NG);
+    }
+    /* One triangle part, so one block on one triangle and texture
+     * (fetch_colours_one_triangle): one top. */
+    const __m256d top = shared ? _mm256_set1_pd(TOP(0)) : QUAD(TOP);
+    float lambda[4];
+    struct lod_quad_rest rest;
+    const int decided = lod_quad(l, shared, d, g, QUAD(WIDTH), top, lambda, &rest);
+#undef QUAD
+#undef DIR
+#undef NG
+#undef WIDTH
+#undef TOP
     for (int i = 0; i < 4; i++) {
-        if (!(common_bits >> i & 1)) {
+        if (decided >> i & 1)
+            t[i]->lambda = lambda[i];
+        else if (!lod_quad_axes(&rest, i, t[i]->width, lod_top(t[i]->tex->level_count),
+                                &t[i]->lambda))
             texture_lambda(t[i]);
-            continue;
-        }
-        if (usable_bits >> i & 1) {
-            if (below_bits >> i & 1) {
-                t[i]->lambda = -INFINITY; /* x < 1: a magnification */
-                continue;
-            }
-            if (beyond_bits >> i & 1) {
-                t[i]->lambda = INFINITY; /* x > top: the last level */
-                continue;
-            }
-            if (inside_bits >> i & 1) {
-                t[i]->lambda = v_lambda[i]; /* lod_near's float, decided in the lanes */
-                continue;
-            }
-        }
-        const double ja_i[2] = {v_ja[0][i], v_ja[1][i]}, jb_i[2] = {v_jb[0][i], v_jb[1][i]};
-        t[i]->lambda = lod_axes(ja_i, jb_i, v_sa[i], v_sb[i], v_sbc[i], v_cos[i], t[i]->width,
-                                lod_top(t[i]->tex->level_count));
     }
 }
 #endif
@@ -1357,13 +1387,16 @@ void surface_fetch_colour(const struct shade_context *sc, const struct trace_sce
  * kitchen frame at 1024x768): what depends on the triangle alone (its
  * instance, vertices and flags, the cached unit normal, the material's
  * emission, lighting and texture name, the texture, the triangle part of
- * the level of detail) once, the rest hit by hit with
- * fetch_colour_begin's operations; the levels of detail then read the
- * one cached triangle part (lodp) instead of eight copies of it.  The
- * same values, so the same colours bit for bit.  Returns 0, having
- * written nothing the caller reads, when the hits are on more than one
- * triangle or the block needs what this leaves to fetch_colour_begin (no
- * cache, a degenerate triangle, projective texture coordinates).
+ * the level of detail) once, the rest in eight lanes with
+ * fetch_colour_begin's operations; the levels of detail from the lanes
+ * and the one cached triangle part, and the lookups in the lanes when
+ * the sampler takes the block.  The same values, so the same colours bit
+ * for bit.  Returns 2 when the colours are whole (textured or not), 1
+ * when tex[] holds lookups still to make (texture_end, their levels of
+ * detail known), or 0, having written nothing the caller reads, when the
+ * hits are on more than one triangle or the block needs what this leaves
+ * to fetch_colour_begin (no cache, a degenerate triangle, projective
+ * texture coordinates).
  */
 static int fetch_colours_one_triangle(const struct shade_context *sc,
                                       const struct trace_scene_hit *const hits[],
@@ -1484,13 +1517,44 @@ static int fetch_colours_one_triangle(const struct shade_context *sc,
      * hit. */
     const int vary = color_material_on(&t, hit_unlit(sc, lighting)) &&
                      !(t.flags & (TRI_INHERIT_COLOR | TRI_FLAT));
-    float ambient[4], diffuse[4];
+    float ambient[4] = {0}, diffuse[4] = {0}; /* zeros for the compiler's warning */
     if (!vary)
         hit_colours(sc, &t, m, call, lighting, ambient, diffuse);
     float lane_st[2][TRACE_PACKET];
     if (tx) {
         for (int k = 0; k < 2; k++)
             _mm256_storeu_ps(lane_st[k], LANES_INTERPOLATE(vst[0][k], vst[1][k], vst[2][k]));
+    }
+    /* The levels of detail straight from the lanes (lod_quad, four hits
+     * a quad: the directions, facing normals and widths texture_lods
+     * would read back from tex[]), then the eight lookups in the lanes
+     * (scene_texture_sample_lod8) when the sampler takes the block. */
+    float lane_lambda[TRACE_PACKET], rgb[3][TRACE_PACKET];
+    int looked_up = 0;
+    if (tri) {
+        const struct surface_lod *const l4[4] = {tri, tri, tri, tri};
+        const double top = lod_top(tx->level_count);
+        const __m256 wv = _mm256_loadu_ps(width);
+        for (int h = 0; h < TRACE_PACKET / 4; h++) {
+#define HALF(v) _mm256_cvtps_pd(h ? _mm256_extractf128_ps(v, 1) : _mm256_castps256_ps128(v))
+            __m256d d[3], gd[3];
+            for (int k = 0; k < 3; k++) {
+                d[k] = HALF(dv[k]);
+                gd[k] = HALF(g[k]);
+            }
+            struct lod_quad_rest rest;
+            const int decided = lod_quad(l4, 1, d, gd, HALF(wv), _mm256_set1_pd(top),
+                                         &lane_lambda[4 * h], &rest);
+#undef HALF
+            for (int i = 0; i < 4; i++) {
+                const int j = 4 * h + i;
+                if (decided >> i & 1 || lod_quad_axes(&rest, i, width[j], top, &lane_lambda[j]))
+                    continue;
+                const float ngj[3] = {lane_g[0][j], lane_g[1][j], lane_g[2][j]};
+                lane_lambda[j] = lod_ray(tri, tx->level_count, ngj, dir[j], width[j]);
+            }
+        }
+        looked_up = scene_texture_sample_lod8(tx, lane_lambda, lane_st[0], lane_st[1], rgb);
     }
     for (int i = 0; i < TRACE_PACKET; i++) {
         struct surface_colour *si = &s[i];
@@ -1511,22 +1575,24 @@ static int fetch_colours_one_triangle(const struct shade_context *sc,
             memcpy(si->diffuse, diffuse, sizeof(diffuse));
         }
         struct surface_texture *ti = &tex[i];
-        ti->tex = tx;
+        ti->tex = NULL;
         ti->lod = 0;
         if (!tx)
             continue;
-        ti->lambda = -INFINITY; /* a magnification */
+        if (looked_up) {
+            /* texture_end's products. */
+            for (int k = 0; k < 3; k++) {
+                si->ambient[k] *= rgb[k][i];
+                si->diffuse[k] *= rgb[k][i];
+            }
+            continue;
+        }
+        ti->tex = tx;
+        ti->lambda = tri ? lane_lambda[i] : -INFINITY; /* without a level of detail: magnified */
         ti->st[0] = lane_st[0][i];
         ti->st[1] = lane_st[1][i];
-        if (tri) {
-            ti->lodp = tri;
-            memcpy(ti->ng, si->ng, sizeof(ti->ng));
-            memcpy(ti->dir, dir[i], sizeof(ti->dir));
-            ti->width = width[i];
-            ti->lod = 1;
-        }
     }
-    return 1;
+    return tx && !looked_up ? 1 : 2;
 }
 #endif
 
@@ -1539,7 +1605,11 @@ void surface_fetch_colours(const struct shade_context *sc, int n,
     int lods = 0;
     int fetched = 0; /* by fetch_colours_one_triangle */
 #if defined(SURFACE_QUADS)
-    fetched = n == TRACE_PACKET && fetch_colours_one_triangle(sc, hits, dir, width, s, tex);
+    if (n == TRACE_PACKET) {
+        fetched = fetch_colours_one_triangle(sc, hits, dir, width, s, tex);
+        if (fetched == 2)
+            return; /* textures applied, if any */
+    }
 #endif
     for (int i = 0; i < n; i++) {
         if (!fetched)
