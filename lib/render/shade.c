@@ -692,6 +692,47 @@ static void eye_cosines8(const struct surface_colour e[], float unit[3][TRACE_PA
 }
 #endif
 
+#if SHADE_LANES && defined(__AVX2__)
+/* eye_light of a block on one triangle (surface_fetch_lanes) in eight
+ * float lanes, lane i hit i: the cosine |n . unit| as eye_cosines8, then
+ * each channel (emission + ambient_g ambient) + diffuse cosine, or the
+ * diffuse colour where the primitive is unlit in a lit frame, as
+ * eye_light evaluates it, and alpha 1 (the pixels transposed out of the
+ * lanes). */
+static void eye_light8(const struct render_state *st, const struct surface_lanes *e,
+                       const float global_ambient[4], float unit[3][TRACE_PACKET],
+                       float *const rgba[])
+{
+    __m256 nv[3], u[3], c[3];
+    for (int k = 0; k < 3; k++) {
+        nv[k] = _mm256_loadu_ps(e->n[k]);
+        u[k] = _mm256_loadu_ps(unit[k]);
+    }
+    const __m256 cosine = _mm256_andnot_ps(_mm256_set1_ps(-0.0f), lanes_dot8(nv, u));
+    const int lit = e->lighting || !st->lighting_used;
+    for (int k = 0; k < 3; k++) {
+        c[k] = _mm256_loadu_ps(e->diffuse[k]);
+        if (lit)
+            c[k] = _mm256_add_ps(_mm256_add_ps(_mm256_set1_ps(e->emission[k]),
+                                               _mm256_mul_ps(_mm256_set1_ps(global_ambient[k]),
+                                                             _mm256_loadu_ps(e->ambient[k]))),
+                                 _mm256_mul_ps(c[k], cosine));
+    }
+    /* (r, g, b, 1) of each lane: lanes i and i + 4 share a 128-bit half. */
+    const __m256 one = _mm256_set1_ps(1.0f);
+    const __m256 rg_lo = _mm256_unpacklo_ps(c[0], c[1]), rg_hi = _mm256_unpackhi_ps(c[0], c[1]);
+    const __m256 b1_lo = _mm256_unpacklo_ps(c[2], one), b1_hi = _mm256_unpackhi_ps(c[2], one);
+    const __m256 p[4] = {_mm256_shuffle_ps(rg_lo, b1_lo, _MM_SHUFFLE(1, 0, 1, 0)),
+                         _mm256_shuffle_ps(rg_lo, b1_lo, _MM_SHUFFLE(3, 2, 3, 2)),
+                         _mm256_shuffle_ps(rg_hi, b1_hi, _MM_SHUFFLE(1, 0, 1, 0)),
+                         _mm256_shuffle_ps(rg_hi, b1_hi, _MM_SHUFFLE(3, 2, 3, 2))};
+    for (int i = 0; i < 4; i++) {
+        _mm_storeu_ps(rgba[i], _mm256_castps256_ps128(p[i]));
+        _mm_storeu_ps(rgba[i + 4], _mm256_extractf128_ps(p[i], 1));
+    }
+}
+#endif
+
 static void eye_hits(const struct shade_context *sc, int n, const float *const dir[],
                      const struct trace_scene_hit *const hits[], const struct shade_cone cone[],
                      float *const rgba[])
@@ -703,6 +744,16 @@ static void eye_hits(const struct shade_context *sc, int n, const float *const d
         /* A whole block: the per-hit steps below in eight lanes. */
         float unit[3][TRACE_PACKET], cosine[TRACE_PACKET];
         eye_widths8(dir, hits, cone, width, unit);
+#if defined(__AVX2__)
+        struct surface_lanes lanes;
+        if (surface_fetch_lanes(sc, hits, dir, width, &lanes)) {
+            /* One triangle, so one instance. */
+            eye_light8(sc->state, &lanes,
+                       shade_hit_instance(sc, hits[0])->appearance.gl.light_model.ambient, unit,
+                       rgba);
+            return;
+        }
+#endif
         surface_fetch_colours(sc, n, hits, dir, width, e);
         eye_cosines8(e, unit, cosine);
         const struct scene_instance *inst = NULL;

@@ -1382,26 +1382,20 @@ void surface_fetch_colour(const struct shade_context *sc, const struct trace_sce
                   _mm256_mul_ps(b2, _mm256_set1_ps(x2)))
 
 /*
- * fetch_colour_begin of a whole block's TRACE_PACKET hits when they are
- * all on one triangle of one instance (three blocks in four of a BART
- * kitchen frame at 1024x768): what depends on the triangle alone (its
- * instance, vertices and flags, the cached unit normal, the material's
- * emission, lighting and texture name, the texture, the triangle part of
- * the level of detail) once, the rest in eight lanes with
- * fetch_colour_begin's operations; the levels of detail from the lanes
- * and the one cached triangle part, and the lookups in the lanes when
- * the sampler takes the block.  The same values, so the same colours bit
- * for bit.  Returns 2 when the colours are whole (textured or not), 1
- * when tex[] holds lookups still to make (texture_end, their levels of
- * detail known), or 0, having written nothing the caller reads, when the
- * hits are on more than one triangle or the block needs what this leaves
- * to fetch_colour_begin (no cache, a degenerate triangle, projective
- * texture coordinates).
+ * surface_fetch_lanes (surface.h): fetch_colour_begin of a whole block's
+ * TRACE_PACKET hits on one triangle of one instance (three blocks in
+ * four of a BART kitchen frame at 1024x768).  What depends on the
+ * triangle alone (its instance, vertices and flags, the cached unit
+ * normal, the material's emission, lighting and texture name, the
+ * texture, the triangle part of the level of detail) once, the rest in
+ * eight lanes with fetch_colour_begin's operations; the levels of detail
+ * from the lanes and the one cached triangle part (lod_quad), the
+ * lookups in the lanes when the sampler takes the block (else hit by
+ * hit), and texture_end's products in the lanes (a product is the same
+ * in either order).  The same values, so the same colours bit for bit.
  */
-static int fetch_colours_one_triangle(const struct shade_context *sc,
-                                      const struct trace_scene_hit *const hits[],
-                                      const float *const dir[], const float width[],
-                                      struct surface_colour s[], struct surface_texture tex[])
+int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene_hit *const hits[],
+                        const float *const dir[], const float width[], struct surface_lanes *out)
 {
     const struct trace_scene_hit *h0 = hits[0];
     for (int i = 1; i < TRACE_PACKET; i++)
@@ -1506,93 +1500,99 @@ static int fetch_colours_one_triangle(const struct shade_context *sc,
         for (int k = 0; k < 3; k++)
             nv[k] = _mm256_blendv_ps(g[k], _mm256_xor_ps(nw[k], away), unit);
     }
-    float lane_g[3][TRACE_PACKET], lane_n[3][TRACE_PACKET], lane_front[TRACE_PACKET];
+    float lane_g[3][TRACE_PACKET];
     for (int k = 0; k < 3; k++) {
         _mm256_storeu_ps(lane_g[k], g[k]);
-        _mm256_storeu_ps(lane_n[k], nv[k]);
+        _mm256_storeu_ps(out->n[k], nv[k]);
     }
-    _mm256_storeu_ps(lane_front, front);
+    memcpy(out->emission, emission, sizeof(out->emission));
+    out->lighting = lighting;
     /* The colours: the material's or a vertex colour that is the same
      * for the whole triangle once, interpolated vertex colours hit by
      * hit. */
     const int vary = color_material_on(&t, hit_unlit(sc, lighting)) &&
                      !(t.flags & (TRI_INHERIT_COLOR | TRI_FLAT));
-    float ambient[4] = {0}, diffuse[4] = {0}; /* zeros for the compiler's warning */
-    if (!vary)
+    __m256 amb[3], dif[3];
+    if (!vary) {
+        float ambient[4], diffuse[4];
         hit_colours(sc, &t, m, call, lighting, ambient, diffuse);
-    float lane_st[2][TRACE_PACKET];
-    if (tx) {
-        for (int k = 0; k < 2; k++)
-            _mm256_storeu_ps(lane_st[k], LANES_INTERPOLATE(vst[0][k], vst[1][k], vst[2][k]));
-    }
-    /* The levels of detail straight from the lanes (lod_quad, four hits
-     * a quad: the directions, facing normals and widths texture_lods
-     * would read back from tex[]), then the eight lookups in the lanes
-     * (scene_texture_sample_lod8) when the sampler takes the block. */
-    float lane_lambda[TRACE_PACKET], rgb[3][TRACE_PACKET];
-    int looked_up = 0;
-    if (tri) {
-        const struct surface_lod *const l4[4] = {tri, tri, tri, tri};
-        const double top = lod_top(tx->level_count);
-        const __m256 wv = _mm256_loadu_ps(width);
-        for (int h = 0; h < TRACE_PACKET / 4; h++) {
-#define HALF(v) _mm256_cvtps_pd(h ? _mm256_extractf128_ps(v, 1) : _mm256_castps256_ps128(v))
-            __m256d d[3], gd[3];
-            for (int k = 0; k < 3; k++) {
-                d[k] = HALF(dv[k]);
-                gd[k] = HALF(g[k]);
-            }
-            struct lod_quad_rest rest;
-            const int decided = lod_quad(l4, 1, d, gd, HALF(wv), _mm256_set1_pd(top),
-                                         &lane_lambda[4 * h], &rest);
-#undef HALF
-            for (int i = 0; i < 4; i++) {
-                const int j = 4 * h + i;
-                if (decided >> i & 1 || lod_quad_axes(&rest, i, width[j], top, &lane_lambda[j]))
-                    continue;
-                const float ngj[3] = {lane_g[0][j], lane_g[1][j], lane_g[2][j]};
-                lane_lambda[j] = lod_ray(tri, tx->level_count, ngj, dir[j], width[j]);
-            }
-        }
-        looked_up = scene_texture_sample_lod8(tx, lane_lambda, lane_st[0], lane_st[1], rgb);
-    }
-    for (int i = 0; i < TRACE_PACKET; i++) {
-        struct surface_colour *si = &s[i];
         for (int k = 0; k < 3; k++) {
-            si->ng[k] = lane_g[k][i];
-            si->n[k] = lane_n[k][i];
+            amb[k] = _mm256_set1_ps(ambient[k]);
+            dif[k] = _mm256_set1_ps(diffuse[k]);
         }
-        si->front = lane_front[i] != 0.0f; /* all ones is a NaN: unequal to 0 */
-        memcpy(si->emission, emission, sizeof(si->emission));
-        si->lighting = lighting;
-        if (vary) {
+    } else {
+        for (int i = 0; i < TRACE_PACKET; i++) {
+            float ambient[4], diffuse[4];
             t.b1 = hits[i]->u;
             t.b2 = hits[i]->v;
             t.b0 = 1.0f - hits[i]->u - hits[i]->v;
-            hit_colours(sc, &t, m, call, lighting, si->ambient, si->diffuse);
-        } else {
-            memcpy(si->ambient, ambient, sizeof(ambient));
-            memcpy(si->diffuse, diffuse, sizeof(diffuse));
-        }
-        struct surface_texture *ti = &tex[i];
-        ti->tex = NULL;
-        ti->lod = 0;
-        if (!tx)
-            continue;
-        if (looked_up) {
-            /* texture_end's products. */
+            hit_colours(sc, &t, m, call, lighting, ambient, diffuse);
             for (int k = 0; k < 3; k++) {
-                si->ambient[k] *= rgb[k][i];
-                si->diffuse[k] *= rgb[k][i];
+                out->ambient[k][i] = ambient[k];
+                out->diffuse[k][i] = diffuse[k];
             }
-            continue;
         }
-        ti->tex = tx;
-        ti->lambda = tri ? lane_lambda[i] : -INFINITY; /* without a level of detail: magnified */
-        ti->st[0] = lane_st[0][i];
-        ti->st[1] = lane_st[1][i];
+        for (int k = 0; k < 3; k++) {
+            amb[k] = _mm256_loadu_ps(out->ambient[k]);
+            dif[k] = _mm256_loadu_ps(out->diffuse[k]);
+        }
     }
-    return tx && !looked_up ? 1 : 2;
+    if (tx) {
+        float lane_st[2][TRACE_PACKET];
+        for (int k = 0; k < 2; k++)
+            _mm256_storeu_ps(lane_st[k], LANES_INTERPOLATE(vst[0][k], vst[1][k], vst[2][k]));
+        /* The levels of detail straight from the lanes (lod_quad, four
+         * hits a quad: the directions, facing normals and widths that
+         * texture_lods reads from a surface_texture), a magnification
+         * without them (texture_begin), then the eight lookups in the
+         * lanes (scene_texture_sample_lod8) or, where the sampler does not
+         * take the block, hit by hit as texture_end. */
+        float lambda[TRACE_PACKET], rgb[3][TRACE_PACKET];
+        for (int i = 0; i < TRACE_PACKET; i++)
+            lambda[i] = -INFINITY;
+        if (tri) {
+            const struct surface_lod *const l4[4] = {tri, tri, tri, tri};
+            const double top = lod_top(tx->level_count);
+            const __m256 wv = _mm256_loadu_ps(width);
+            for (int h = 0; h < TRACE_PACKET / 4; h++) {
+#define HALF(v) _mm256_cvtps_pd(h ? _mm256_extractf128_ps(v, 1) : _mm256_castps256_ps128(v))
+                __m256d d[3], gd[3];
+                for (int k = 0; k < 3; k++) {
+                    d[k] = HALF(dv[k]);
+                    gd[k] = HALF(g[k]);
+                }
+                struct lod_quad_rest rest;
+                const int decided = lod_quad(l4, 1, d, gd, HALF(wv), _mm256_set1_pd(top),
+                                             &lambda[4 * h], &rest);
+#undef HALF
+                for (int i = 0; i < 4; i++) {
+                    const int j = 4 * h + i;
+                    if (decided >> i & 1 || lod_quad_axes(&rest, i, width[j], top, &lambda[j]))
+                        continue;
+                    const float ngj[3] = {lane_g[0][j], lane_g[1][j], lane_g[2][j]};
+                    lambda[j] = lod_ray(tri, tx->level_count, ngj, dir[j], width[j]);
+                }
+            }
+        }
+        if (!scene_texture_sample_lod8(tx, lambda, lane_st[0], lane_st[1], rgb)) {
+            for (int i = 0; i < TRACE_PACKET; i++) {
+                float texel[4];
+                scene_texture_sample_lod(tx, lambda[i], lane_st[0][i], lane_st[1][i], texel);
+                for (int k = 0; k < 3; k++)
+                    rgb[k][i] = texel[k];
+            }
+        }
+        for (int k = 0; k < 3; k++) {
+            const __m256 texel = _mm256_loadu_ps(rgb[k]);
+            amb[k] = _mm256_mul_ps(amb[k], texel);
+            dif[k] = _mm256_mul_ps(dif[k], texel);
+        }
+    }
+    for (int k = 0; k < 3; k++) {
+        _mm256_storeu_ps(out->ambient[k], amb[k]);
+        _mm256_storeu_ps(out->diffuse[k], dif[k]);
+    }
+    return 1;
 }
 #endif
 
@@ -1603,17 +1603,8 @@ void surface_fetch_colours(const struct shade_context *sc, int n,
     struct surface_texture tex[TRACE_PACKET];
     struct surface_texture *lod[TRACE_PACKET] = {NULL}; /* lods of them set */
     int lods = 0;
-    int fetched = 0; /* by fetch_colours_one_triangle */
-#if defined(SURFACE_QUADS)
-    if (n == TRACE_PACKET) {
-        fetched = fetch_colours_one_triangle(sc, hits, dir, width, s, tex);
-        if (fetched == 2)
-            return; /* textures applied, if any */
-    }
-#endif
     for (int i = 0; i < n; i++) {
-        if (!fetched)
-            fetch_colour_begin(sc, hits[i], dir[i], width[i], &s[i], &tex[i]);
+        fetch_colour_begin(sc, hits[i], dir[i], width[i], &s[i], &tex[i]);
         if (tex[i].lod)
             lod[lods++] = &tex[i];
     }
