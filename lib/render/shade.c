@@ -644,13 +644,13 @@ void shade_prime_shadows(const struct shade_context *sc, unsigned found,
 /* A block's TRACE_PACKET hits' cone widths and unit directions (eye_hits'
  * first loop) in eight float lanes, lane i hit i, each lane the scalar
  * operations in their order: the same floats.  unit[k][i] is component k
- * of hit i's. */
+ * of hit i's, lane_d[k][i] that of its direction as given (for
+ * surface_fetch_lanes). */
 static void eye_widths8(const float *const dir[], const struct trace_scene_hit *const hits[],
                         const struct shade_cone cone[], float width[],
-                        float unit[3][TRACE_PACKET])
+                        float unit[3][TRACE_PACKET], float lane_d[3][TRACE_PACKET])
 {
-    float lane_d[3][TRACE_PACKET], lane_t[TRACE_PACKET], lane_w[TRACE_PACKET],
-        lane_s[TRACE_PACKET];
+    float lane_t[TRACE_PACKET], lane_w[TRACE_PACKET], lane_s[TRACE_PACKET];
     for (int i = 0; i < TRACE_PACKET; i++) {
         for (int k = 0; k < 3; k++)
             lane_d[k][i] = dir[i][k];
@@ -742,11 +742,11 @@ static void eye_hits(const struct shade_context *sc, int n, const float *const d
 #if SHADE_LANES && defined(__AVX__)
     if (n == TRACE_PACKET) {
         /* A whole block: the per-hit steps below in eight lanes. */
-        float unit[3][TRACE_PACKET], cosine[TRACE_PACKET];
-        eye_widths8(dir, hits, cone, width, unit);
+        float unit[3][TRACE_PACKET], cosine[TRACE_PACKET], lane_d[3][TRACE_PACKET];
+        eye_widths8(dir, hits, cone, width, unit, lane_d);
 #if defined(__AVX2__)
         struct surface_lanes lanes;
-        if (surface_fetch_lanes(sc, hits, dir, width, &lanes)) {
+        if (surface_fetch_lanes(sc, hits, lane_d, width, &lanes)) {
             /* One triangle, so one instance. */
             eye_light8(sc->state, &lanes,
                        shade_hit_instance(sc, hits[0])->appearance.gl.light_model.ambient, unit,

@@ -1395,7 +1395,8 @@ void surface_fetch_colour(const struct shade_context *sc, const struct trace_sce
  * in either order).  The same values, so the same colours bit for bit.
  */
 int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene_hit *const hits[],
-                        const float *const dir[], const float width[], struct surface_lanes *out)
+                        const float dir[3][TRACE_PACKET], const float width[],
+                        struct surface_lanes *out)
 {
     const struct trace_scene_hit *h0 = hits[0];
     for (int i = 1; i < TRACE_PACKET; i++)
@@ -1436,12 +1437,10 @@ int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene
      * each lane the scalar operations in their order (hit_triangle,
      * facing_normal, shading_normal, interpolate; no FMA in this copy),
      * so the same floats and doubles. */
-    float lane_b[3][TRACE_PACKET], lane_d[3][TRACE_PACKET];
+    float lane_b[3][TRACE_PACKET];
     for (int i = 0; i < TRACE_PACKET; i++) {
         lane_b[1][i] = hits[i]->u;
         lane_b[2][i] = hits[i]->v;
-        for (int k = 0; k < 3; k++)
-            lane_d[k][i] = dir[i][k];
     }
     const __m256 b1 = _mm256_loadu_ps(lane_b[1]), b2 = _mm256_loadu_ps(lane_b[2]);
     const __m256 b0 = _mm256_sub_ps(_mm256_sub_ps(_mm256_set1_ps(1.0f), b1), b2);
@@ -1449,7 +1448,7 @@ int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene
     __m256 g[3], dv[3];
     for (int k = 0; k < 3; k++) {
         g[k] = _mm256_set1_ps(ng[k]);
-        dv[k] = _mm256_loadu_ps(lane_d[k]);
+        dv[k] = _mm256_loadu_ps(dir[k]);
     }
     /* front = ng . dir < 0; the back face's ng negated (a sign flip). */
     const __m256 front = _mm256_cmp_ps(lanes_dot8(g, dv), _mm256_setzero_ps(), _CMP_LT_OQ);
@@ -1570,7 +1569,8 @@ int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene
                     if (decided >> i & 1 || lod_quad_axes(&rest, i, width[j], top, &lambda[j]))
                         continue;
                     const float ngj[3] = {lane_g[0][j], lane_g[1][j], lane_g[2][j]};
-                    lambda[j] = lod_ray(tri, tx->level_count, ngj, dir[j], width[j]);
+                    const float dj[3] = {dir[0][j], dir[1][j], dir[2][j]};
+                    lambda[j] = lod_ray(tri, tx->level_count, ngj, dj, width[j]);
                 }
             }
         }

@@ -736,6 +736,12 @@ int scene_texture_sample_lod8(const struct scene_texture *tex, const float lambd
     const __m256i coarse = _mm256_sub_epi32(fine, two_i); /* + 1 where two levels */
     __m256 c0[3], c1[3];
     bilinear8(tex, fine, rs, rt, repeat_s, repeat_t, c0);
+    if (!_mm256_movemask_ps(two)) {
+        /* One level in every lane (magnified, or at the last level). */
+        for (int k = 0; k < 3; k++)
+            _mm256_storeu_ps(rgb[k], c0[k]);
+        return 1;
+    }
     bilinear8(tex, coarse, rs, rt, repeat_s, repeat_t, c1);
     for (int k = 0; k < 3; k++)
         _mm256_storeu_ps(
