@@ -26,6 +26,7 @@
 #include "render/blend.h"
 #include "render/gl_light.h"
 #include "render/gl_shade.h"
+#include "render/lanes.h"
 #include "render/surface.h"
 #include "trace/kernels.h"
 
@@ -640,23 +641,16 @@ void shade_prime_shadows(const struct shade_context *sc, unsigned found,
 }
 
 #if SHADE_LANES && defined(__AVX__)
-/* vec3_dot of eight lanes: (a0 b0 + a1 b1) + a2 b2. */
-static inline __m256 eye_dot8(const __m256 a[3], const __m256 b[3])
-{
-    return _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(a[0], b[0]), _mm256_mul_ps(a[1], b[1])),
-                         _mm256_mul_ps(a[2], b[2]));
-}
-
 /* A block's TRACE_PACKET hits' cone widths and unit directions (eye_hits'
  * first loop) in eight float lanes, lane i hit i, each lane the scalar
  * operations in their order: the same floats.  unit[k][i] is component k
- * of hit i's. */
+ * of hit i's, lane_d[k][i] that of its direction as given (for
+ * surface_fetch_lanes). */
 static void eye_widths8(const float *const dir[], const struct trace_scene_hit *const hits[],
                         const struct shade_cone cone[], float width[],
-                        float unit[3][TRACE_PACKET])
+                        float unit[3][TRACE_PACKET], float lane_d[3][TRACE_PACKET])
 {
-    float lane_d[3][TRACE_PACKET], lane_t[TRACE_PACKET], lane_w[TRACE_PACKET],
-        lane_s[TRACE_PACKET];
+    float lane_t[TRACE_PACKET], lane_w[TRACE_PACKET], lane_s[TRACE_PACKET];
     for (int i = 0; i < TRACE_PACKET; i++) {
         for (int k = 0; k < 3; k++)
             lane_d[k][i] = dir[i][k];
@@ -667,7 +661,7 @@ static void eye_widths8(const float *const dir[], const struct trace_scene_hit *
     __m256 d[3];
     for (int k = 0; k < 3; k++)
         d[k] = _mm256_loadu_ps(lane_d[k]);
-    const __m256 len = _mm256_sqrt_ps(eye_dot8(d, d));
+    const __m256 len = _mm256_sqrt_ps(lanes_dot8(d, d));
     const __m256 w = _mm256_add_ps(
         _mm256_loadu_ps(lane_w),
         _mm256_mul_ps(_mm256_loadu_ps(lane_s), _mm256_mul_ps(_mm256_loadu_ps(lane_t), len)));
@@ -694,7 +688,48 @@ static void eye_cosines8(const struct surface_colour e[], float unit[3][TRACE_PA
         nv[k] = _mm256_loadu_ps(lane_n[k]);
         u[k] = _mm256_loadu_ps(unit[k]);
     }
-    _mm256_storeu_ps(cosine, _mm256_andnot_ps(_mm256_set1_ps(-0.0f), eye_dot8(nv, u)));
+    _mm256_storeu_ps(cosine, _mm256_andnot_ps(_mm256_set1_ps(-0.0f), lanes_dot8(nv, u)));
+}
+#endif
+
+#if SHADE_LANES && defined(__AVX2__)
+/* eye_light of a block on one triangle (surface_fetch_lanes) in eight
+ * float lanes, lane i hit i: the cosine |n . unit| as eye_cosines8, then
+ * each channel (emission + ambient_g ambient) + diffuse cosine, or the
+ * diffuse colour where the primitive is unlit in a lit frame, as
+ * eye_light evaluates it, and alpha 1 (the pixels transposed out of the
+ * lanes). */
+static void eye_light8(const struct render_state *st, const struct surface_lanes *e,
+                       const float global_ambient[4], float unit[3][TRACE_PACKET],
+                       float *const rgba[])
+{
+    __m256 nv[3], u[3], c[3];
+    for (int k = 0; k < 3; k++) {
+        nv[k] = _mm256_loadu_ps(e->n[k]);
+        u[k] = _mm256_loadu_ps(unit[k]);
+    }
+    const __m256 cosine = _mm256_andnot_ps(_mm256_set1_ps(-0.0f), lanes_dot8(nv, u));
+    const int lit = e->lighting || !st->lighting_used;
+    for (int k = 0; k < 3; k++) {
+        c[k] = _mm256_loadu_ps(e->diffuse[k]);
+        if (lit)
+            c[k] = _mm256_add_ps(_mm256_add_ps(_mm256_set1_ps(e->emission[k]),
+                                               _mm256_mul_ps(_mm256_set1_ps(global_ambient[k]),
+                                                             _mm256_loadu_ps(e->ambient[k]))),
+                                 _mm256_mul_ps(c[k], cosine));
+    }
+    /* (r, g, b, 1) of each lane: lanes i and i + 4 share a 128-bit half. */
+    const __m256 one = _mm256_set1_ps(1.0f);
+    const __m256 rg_lo = _mm256_unpacklo_ps(c[0], c[1]), rg_hi = _mm256_unpackhi_ps(c[0], c[1]);
+    const __m256 b1_lo = _mm256_unpacklo_ps(c[2], one), b1_hi = _mm256_unpackhi_ps(c[2], one);
+    const __m256 p[4] = {_mm256_shuffle_ps(rg_lo, b1_lo, _MM_SHUFFLE(1, 0, 1, 0)),
+                         _mm256_shuffle_ps(rg_lo, b1_lo, _MM_SHUFFLE(3, 2, 3, 2)),
+                         _mm256_shuffle_ps(rg_hi, b1_hi, _MM_SHUFFLE(1, 0, 1, 0)),
+                         _mm256_shuffle_ps(rg_hi, b1_hi, _MM_SHUFFLE(3, 2, 3, 2))};
+    for (int i = 0; i < 4; i++) {
+        _mm_storeu_ps(rgba[i], _mm256_castps256_ps128(p[i]));
+        _mm_storeu_ps(rgba[i + 4], _mm256_extractf128_ps(p[i], 1));
+    }
 }
 #endif
 
@@ -707,8 +742,18 @@ static void eye_hits(const struct shade_context *sc, int n, const float *const d
 #if SHADE_LANES && defined(__AVX__)
     if (n == TRACE_PACKET) {
         /* A whole block: the per-hit steps below in eight lanes. */
-        float unit[3][TRACE_PACKET], cosine[TRACE_PACKET];
-        eye_widths8(dir, hits, cone, width, unit);
+        float unit[3][TRACE_PACKET], cosine[TRACE_PACKET], lane_d[3][TRACE_PACKET];
+        eye_widths8(dir, hits, cone, width, unit, lane_d);
+#if defined(__AVX2__)
+        struct surface_lanes lanes;
+        if (surface_fetch_lanes(sc, hits, lane_d, width, &lanes)) {
+            /* One triangle, so one instance. */
+            eye_light8(sc->state, &lanes,
+                       shade_hit_instance(sc, hits[0])->appearance.gl.light_model.ambient, unit,
+                       rgba);
+            return;
+        }
+#endif
         surface_fetch_colours(sc, n, hits, dir, width, e);
         eye_cosines8(e, unit, cosine);
         const struct scene_instance *inst = NULL;

@@ -144,6 +144,18 @@ typedef void (*shade_eye_hits_fn)(const struct shade_context *sc, int n, const f
                                   const struct shade_cone cone[], float *const rgba[]);
 shade_eye_hits_fn shade_eye_hits_avx2_unit(void);
 
+/* That unit's eight-lane texture lookup (scene_texture_sample_lod8,
+ * scene/texture.h), for the tests that compare it with
+ * scene_texture_sample_lod bit for bit; NULL where the unit is absent. */
+struct scene_texture;
+typedef int (*shade_texture_lod8_fn)(const struct scene_texture *tex, const float lambda[8],
+                                     const float s[8], const float t[8], float rgb[3][8]);
+shade_texture_lod8_fn shade_texture_lod8_avx2_unit(void);
+/* That unit's four-lane log2 of the levels of detail (render/lanes.h,
+ * lanes_log2_4), for the test of its bound; NULL where it is absent. */
+typedef void (*shade_log2_quad_fn)(const double x[4], double out[4]);
+shade_log2_quad_fn shade_log2_quad_avx2_unit(void);
+
 /*
  * Whitted shading's shadow rays of a 4 x 2 block's camera rays, one
  * packet per light (Wald, Slusallek, Benthin and Wagner 2001 sec. 4:

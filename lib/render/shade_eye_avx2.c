@@ -32,6 +32,7 @@
 #define surface_fetch_colour surface_fetch_colour_avx2
 #define surface_fetch_colours surface_fetch_colours_avx2
 #define surface_fetches surface_fetches_avx2
+#define surface_fetch_lanes surface_fetch_lanes_avx2
 #define surface_resolve_material surface_resolve_material_avx2
 #define surface_texel surface_texel_avx2
 #define scene_texture_build_mipmaps scene_texture_build_mipmaps_avx2
@@ -40,6 +41,7 @@
 #define scene_texture_sample scene_texture_sample_avx2
 #define scene_texture_sample_level scene_texture_sample_level_avx2
 #define scene_texture_sample_lod scene_texture_sample_lod_avx2
+#define scene_texture_sample_lod8 scene_texture_sample_lod8_avx2
 #define scene_texture_set_image scene_texture_set_image_avx2
 #define scene_textures_generate scene_textures_generate_avx2
 #define scene_textures_get_or_create scene_textures_get_or_create_avx2
@@ -56,10 +58,35 @@ shade_eye_hits_fn shade_eye_hits_avx2_unit(void)
 {
     return shade_eye_hits_avx2;
 }
+
+shade_texture_lod8_fn shade_texture_lod8_avx2_unit(void)
+{
+    return scene_texture_sample_lod8_avx2;
+}
+
+static void log2_quad(const double x[4], double out[4])
+{
+    _mm256_storeu_pd(out, lanes_log2_4(_mm256_loadu_pd(x)));
+}
+
+shade_log2_quad_fn shade_log2_quad_avx2_unit(void)
+{
+    return log2_quad;
+}
 #else
 #include "render/shade.h"
 
 shade_eye_hits_fn shade_eye_hits_avx2_unit(void)
+{
+    return NULL;
+}
+
+shade_texture_lod8_fn shade_texture_lod8_avx2_unit(void)
+{
+    return NULL;
+}
+
+shade_log2_quad_fn shade_log2_quad_avx2_unit(void)
 {
     return NULL;
 }

@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "base/mat4.h"
+#include "render/lanes.h"
 
 /* The level of detail maps its footprint's two axes to texels in the two
  * SSE2 lanes: IEEE operations lane by lane, the same doubles as one axis
@@ -18,7 +19,7 @@
 #if defined(__SSE2__) && !defined(RT_NO_SIMD)
 #include <emmintrin.h>
 #define SURFACE_PAIRS 1
-#if defined(__AVX__)
+#if defined(__AVX2__)
 #include <immintrin.h>
 #define SURFACE_QUADS 1 /* the AVX2 copy (render/shade_eye_avx2.c) */
 #endif
@@ -550,22 +551,38 @@ SURFACE_INLINE void quad_texel_vector(const __m256d e[3], const __m256d w1[3],
     out[1] = _mm256_add_pd(_mm256_mul_pd(alpha, a1[1]), _mm256_mul_pd(beta, a2[1]));
 }
 
-/* lod_ray_pair of four textures' hits in the four double lanes of the
- * AVX copy: lane i hit t[i], each lane lod_ray's operations in its order
- * (the comparisons ordered, as cmpge and cmpgt in the pair), so the same
- * doubles; a lane off lod_ray's common path is computed by lod_ray. */
-SURFACE_INLINE void lod_ray_quad(struct surface_texture *const t[4])
+/* What lod_quad leaves to a lane it does not decide: lod_axes's
+ * arguments, and whether the lane is on lod_ray's common path. */
+struct lod_quad_rest {
+    double cos[4], ja[2][4], jb[2][4], sa[4], sb[4], sbc[4];
+    int common; /* mask of the lanes on the common path */
+};
+
+/* The low 32 bits of each double lane of a mask: the mask in four float
+ * lanes. */
+static inline __m128 quad_mask_ps(__m256d m)
 {
-    const struct surface_lod *l[4] = {t[0]->lodp, t[1]->lodp, t[2]->lodp, t[3]->lodp};
+    return _mm256_castps256_ps128(_mm256_castsi256_ps(_mm256_permutevar8x32_epi32(
+        _mm256_castpd_si256(m), _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6))));
+}
+
+/*
+ * lod_ray_pair in the four double lanes of the AVX2 copy: lane i a hit
+ * along d (its direction) on a surface with the facing normal g, its
+ * cone's width at the hit, the triangle part l[i] (one for all when
+ * `shared`: its values broadcast) and top its texture's lod_top, each
+ * lane lod_ray's operations in its order (the comparisons ordered, as
+ * cmpge and cmpgt in the pair), so the same doubles.  Writes lambda[i]
+ * of every lane and returns the mask of the lanes whose lambda is
+ * texture_lod's; a lane not in it takes lod_axes with rest's values when
+ * it is in rest->common, else lod_ray (lod_quad_finish).
+ */
+SURFACE_INLINE int lod_quad(const struct surface_lod *const l[4], int shared, const __m256d d[3],
+                            const __m256d g[3], __m256d width, __m256d top, float lambda[4],
+                            struct lod_quad_rest *rest)
+{
 #define QUAD(f) _mm256_set_pd(f(3), f(2), f(1), f(0))
-    __m256d d[3], g[3], n[3], w1[3], w2[3], nn[3], a1[2], a2[2], nn2;
-    for (int k = 0; k < 3; k++) {
-#define DIR(i) (double)t[i]->dir[k]
-#define NG(i) (double)t[i]->ng[k]
-        d[k] = QUAD(DIR);
-        g[k] = QUAD(NG);
-    }
-    const int shared = l[0] == l[1] && l[0] == l[2] && l[0] == l[3];
+    __m256d n[3], w1[3], w2[3], nn[3], a1[2], a2[2], nn2, p_a, t_a;
     if (shared) {
         /* One triangle part for the four (fetch_colours_one_triangle):
          * its values broadcast, the same doubles in every lane. */
@@ -581,6 +598,8 @@ SURFACE_INLINE void lod_ray_quad(struct surface_texture *const t[4])
             a2[k] = _mm256_set1_pd(o->a2[k]);
         }
         nn2 = _mm256_set1_pd(o->nn2);
+        p_a = _mm256_set1_pd(o->p_a);
+        t_a = _mm256_set1_pd(o->t_a);
     } else {
         for (int k = 0; k < 3; k++) {
 #define N(i) l[i]->n[k]
@@ -599,11 +618,13 @@ SURFACE_INLINE void lod_ray_quad(struct surface_texture *const t[4])
             a2[k] = QUAD(A2);
         }
 #define NN2(i) l[i]->nn2
+#define P_A(i) l[i]->p_a
+#define T_A(i) l[i]->t_a
         nn2 = QUAD(NN2);
+        p_a = QUAD(P_A);
+        t_a = QUAD(T_A);
     }
 #undef QUAD
-#undef DIR
-#undef NG
 #undef N
 #undef W1
 #undef W2
@@ -611,6 +632,8 @@ SURFACE_INLINE void lod_ray_quad(struct surface_texture *const t[4])
 #undef A1
 #undef A2
 #undef NN2
+#undef P_A
+#undef T_A
     const __m256d dir_len = _mm256_sqrt_pd(quad_dot(d, d));
     const __m256d sign = _mm256_set1_pd(-0.0);
     __m256d cosine = _mm256_div_pd(_mm256_andnot_pd(sign, quad_dot(g, d)), dir_len);
@@ -636,35 +659,20 @@ SURFACE_INLINE void lod_ray_quad(struct surface_texture *const t[4])
      * the ray not meeting the plane head-on) and, there, lod_axes's first
      * steps in the lanes: which axis wins by the margin, and lod_near's
      * footprint xs and its tests against 1 and the last level (`top`), each
-     * lane the scalar operations in their order.  What is left hit by hit
-     * is lod_near's log2 and its rounding test; a lane whose answer is not
-     * decided so (no axis wins, a footprint close to a bound or the log2
-     * close to a float's rounding boundary) takes lod_axes whole, as before,
-     * and a lane off the common path lod_ray. */
+     * lane the scalar operations in their order, and lod_near's log2 and
+     * its rounding test.  That log2 is lanes_log2_4, not glibc's: lod_near
+     * needs log2(xs) within 2^-45 of log2(x) (x = hypot width [/ cosine],
+     * what lod_axes takes glibc's log2 of), and lanes_log2_4 is within
+     * 2^-47 of the exact log2(xs) (xs < top <= 2^16: its domain), the
+     * exact log2(xs) within 2^-48.4 of the exact log2(x) (xs within 2^-49
+     * of x, relative), and glibc's log2(x) within 2 ulps, 2^-47, of that:
+     * 2^-45.4 in all, so every value within LOD_NEAR_ABSOLUTE (2^-42) of
+     * lanes_log2_4(xs) rounding to one float f still makes f = float(glibc's
+     * log2(x)).  A lane whose answer is not decided so (no axis wins, a
+     * footprint close to a bound or the log2 close to a float's rounding
+     * boundary) takes lod_axes whole, as before, and a lane off the common
+     * path lod_ray. */
     const __m256d zero = _mm256_setzero_pd();
-#define QUAD(f) _mm256_set_pd(f(3), f(2), f(1), f(0))
-#define P_A(i) l[i]->p_a
-#define T_A(i) l[i]->t_a
-#define WIDTH(i) (double)t[i]->width
-#define TOP(i) lod_top(t[i]->tex->level_count)
-    const __m256d width = QUAD(WIDTH);
-    __m256d p_a, t_a, top;
-    if (shared) {
-        /* One triangle part, so one block on one triangle and texture
-         * (fetch_colours_one_triangle). */
-        p_a = _mm256_set1_pd(l[0]->p_a);
-        t_a = _mm256_set1_pd(l[0]->t_a);
-        top = _mm256_set1_pd(TOP(0));
-    } else {
-        p_a = QUAD(P_A);
-        t_a = QUAD(T_A);
-        top = QUAD(TOP);
-    }
-#undef QUAD
-#undef P_A
-#undef T_A
-#undef WIDTH
-#undef TOP
     /* isfinite(nn2): |nn2| <= DBL_MAX, which a NaN fails. */
     const __m256d finite = _mm256_cmp_pd(_mm256_andnot_pd(sign, nn2), _mm256_set1_pd(DBL_MAX),
                                          _CMP_LE_OQ);
@@ -693,47 +701,81 @@ SURFACE_INLINE void lod_ray_quad(struct surface_texture *const t[4])
         _mm256_cmp_pd(xs, _mm256_set1_pd(1.0 + LOD_NEAR_RELATIVE), _CMP_GT_OQ),
         _mm256_cmp_pd(xs, _mm256_mul_pd(top, _mm256_set1_pd(1.0 - LOD_NEAR_RELATIVE)),
                       _CMP_LT_OQ));
-    const int common_bits = _mm256_movemask_pd(common);
-    const int usable_bits = _mm256_movemask_pd(usable);
-    const int below_bits = _mm256_movemask_pd(below);
-    const int beyond_bits = _mm256_movemask_pd(beyond);
-    const int inside_bits = _mm256_movemask_pd(inside);
-    double v_cos[4], v_ja[2][4], v_jb[2][4], v_sa[4], v_sb[4], v_sbc[4], v_xs[4];
-    _mm256_storeu_pd(v_cos, cosine);
-    _mm256_storeu_pd(v_ja[0], ja[0]);
-    _mm256_storeu_pd(v_ja[1], ja[1]);
-    _mm256_storeu_pd(v_jb[0], jb[0]);
-    _mm256_storeu_pd(v_jb[1], jb[1]);
-    _mm256_storeu_pd(v_sa, sa);
-    _mm256_storeu_pd(v_sb, sb);
-    _mm256_storeu_pd(v_sbc, sbc);
-    _mm256_storeu_pd(v_xs, xs);
+    const __m256d lg = lanes_log2_4(xs);
+    const __m128 lg_f = _mm256_cvtpd_ps(lg);
+    const __m256d near_abs = _mm256_set1_pd(LOD_NEAR_ABSOLUTE);
+    const __m128 exact =
+        _mm_and_ps(_mm_cmpeq_ps(_mm256_cvtpd_ps(_mm256_sub_pd(lg, near_abs)), lg_f),
+                   _mm_cmpeq_ps(_mm256_cvtpd_ps(_mm256_add_pd(lg, near_abs)), lg_f));
+    /* Below 1: a magnification; beyond the last level; between: the
+     * log2's float where it is decided. */
+    const __m128 below_ps = quad_mask_ps(below), beyond_ps = quad_mask_ps(beyond);
+    _mm_storeu_ps(lambda,
+                  _mm_blendv_ps(_mm_blendv_ps(lg_f, _mm_set1_ps(INFINITY), beyond_ps),
+                                _mm_set1_ps(-INFINITY), below_ps));
+    const int decided =
+        _mm256_movemask_pd(usable) &
+        (_mm256_movemask_pd(_mm256_or_pd(below, beyond)) |
+         (_mm256_movemask_pd(inside) & _mm_movemask_ps(exact)));
+    rest->common = _mm256_movemask_pd(common);
+    if (decided != 15) {
+        _mm256_storeu_pd(rest->cos, cosine);
+        _mm256_storeu_pd(rest->ja[0], ja[0]);
+        _mm256_storeu_pd(rest->ja[1], ja[1]);
+        _mm256_storeu_pd(rest->jb[0], jb[0]);
+        _mm256_storeu_pd(rest->jb[1], jb[1]);
+        _mm256_storeu_pd(rest->sa, sa);
+        _mm256_storeu_pd(rest->sb, sb);
+        _mm256_storeu_pd(rest->sbc, sbc);
+    }
+    return decided;
+}
+
+/* Lane i's lambda that lod_quad did not decide, from rest (lod_axes) on
+ * the common path, else NaN: the caller takes lod_ray. */
+SURFACE_INLINE int lod_quad_axes(const struct lod_quad_rest *rest, int i, float width,
+                                 double top, float *lambda)
+{
+    if (!(rest->common >> i & 1))
+        return 0;
+    const double ja[2] = {rest->ja[0][i], rest->ja[1][i]}, jb[2] = {rest->jb[0][i], rest->jb[1][i]};
+    *lambda = lod_axes(ja, jb, rest->sa[i], rest->sb[i], rest->sbc[i], rest->cos[i], width, top);
+    return 1;
+}
+
+/* lod_quad of four textures' hits t[i] (their lodp, dir, ng, width and
+ * texture), each lambda into t[i]. */
+SURFACE_INLINE void lod_ray_quad(struct surface_texture *const t[4])
+{
+    const struct surface_lod *l[4] = {t[0]->lodp, t[1]->lodp, t[2]->lodp, t[3]->lodp};
+    const int shared = l[0] == l[1] && l[0] == l[2] && l[0] == l[3];
+#define QUAD(f) _mm256_set_pd(f(3), f(2), f(1), f(0))
+#define DIR(i) (double)t[i]->dir[k]
+#define NG(i) (double)t[i]->ng[k]
+#define WIDTH(i) (double)t[i]->width
+#define TOP(i) lod_top(t[i]->tex->level_count)
+    __m256d d[3], g[3];
+    for (int k = 0; k < 3; k++) {
+        d[k] = QUAD(DIR);
+        g[k] = QUAD(NG);
+    }
+    /* One triangle part, so one block on one triangle and texture
+     * (fetch_colours_one_triangle): one top. */
+    const __m256d top = shared ? _mm256_set1_pd(TOP(0)) : QUAD(TOP);
+    float lambda[4];
+    struct lod_quad_rest rest;
+    const int decided = lod_quad(l, shared, d, g, QUAD(WIDTH), top, lambda, &rest);
+#undef QUAD
+#undef DIR
+#undef NG
+#undef WIDTH
+#undef TOP
     for (int i = 0; i < 4; i++) {
-        if (!(common_bits >> i & 1)) {
+        if (decided >> i & 1)
+            t[i]->lambda = lambda[i];
+        else if (!lod_quad_axes(&rest, i, t[i]->width, lod_top(t[i]->tex->level_count),
+                                &t[i]->lambda))
             texture_lambda(t[i]);
-            continue;
-        }
-        if (usable_bits >> i & 1) {
-            if (below_bits >> i & 1) {
-                t[i]->lambda = -INFINITY; /* x < 1: a magnification */
-                continue;
-            }
-            if (beyond_bits >> i & 1) {
-                t[i]->lambda = INFINITY; /* x > top: the last level */
-                continue;
-            }
-            if (inside_bits >> i & 1) {
-                const double lg = log2(v_xs[i]);
-                const float f = (float)lg;
-                if ((float)(lg - LOD_NEAR_ABSOLUTE) == f && (float)(lg + LOD_NEAR_ABSOLUTE) == f) {
-                    t[i]->lambda = f;
-                    continue;
-                }
-            }
-        }
-        const double ja_i[2] = {v_ja[0][i], v_ja[1][i]}, jb_i[2] = {v_jb[0][i], v_jb[1][i]};
-        t[i]->lambda = lod_axes(ja_i, jb_i, v_sa[i], v_sb[i], v_sbc[i], v_cos[i], t[i]->width,
-                                lod_top(t[i]->tex->level_count));
     }
 }
 #endif
@@ -871,6 +913,38 @@ static void texture_end(const struct surface_texture *t, float ambient[4], float
         diffuse[k] *= texel[k];
     }
 }
+
+#if defined(SURFACE_QUADS)
+/* texture_end of TRACE_PACKET hits on one texture, their lookups in the
+ * eight lanes (scene_texture_sample_lod8: the same texels) and the
+ * products as texture_end's; 0, having changed nothing, when the hits
+ * are not all on one texture or the sampler leaves the block to
+ * texture_end. */
+static int texture_end8(const struct surface_texture t[], float *const ambient[],
+                        float *const diffuse[])
+{
+    const struct scene_texture *tex = t[0].tex;
+    if (!tex)
+        return 0;
+    float lambda[TRACE_PACKET], s[TRACE_PACKET], tc[TRACE_PACKET];
+    for (int i = 0; i < TRACE_PACKET; i++) {
+        if (t[i].tex != tex)
+            return 0;
+        lambda[i] = t[i].lambda;
+        s[i] = t[i].st[0];
+        tc[i] = t[i].st[1];
+    }
+    float rgb[3][TRACE_PACKET];
+    if (!scene_texture_sample_lod8(tex, lambda, s, tc, rgb))
+        return 0;
+    for (int i = 0; i < TRACE_PACKET; i++)
+        for (int k = 0; k < 3; k++) {
+            ambient[i][k] *= rgb[k][i];
+            diffuse[i][k] *= rgb[k][i];
+        }
+    return 1;
+}
+#endif
 
 static void apply_texture(const struct shade_context *sc, struct surface_cache *cache,
                           const struct scene_instance *inst,
@@ -1244,6 +1318,17 @@ void surface_fetches(const struct shade_context *sc, int n,
             lod[lods++] = &tex[i];
     }
     texture_lods(lod, lods);
+#if defined(SURFACE_QUADS)
+    if (n == TRACE_PACKET) {
+        float *ambient[TRACE_PACKET], *diffuse[TRACE_PACKET];
+        for (int i = 0; i < TRACE_PACKET; i++) {
+            ambient[i] = s[i]->ambient;
+            diffuse[i] = s[i]->diffuse;
+        }
+        if (texture_end8(tex, ambient, diffuse))
+            return;
+    }
+#endif
     for (int i = 0; i < n; i++)
         texture_end(&tex[i], s[i]->ambient, s[i]->diffuse);
 }
@@ -1290,10 +1375,6 @@ void surface_fetch_colour(const struct shade_context *sc, const struct trace_sce
 }
 
 #if defined(SURFACE_QUADS)
-/* vec3_dot of lanes: (a0 b0 + a1 b1) + a2 b2. */
-#define LANES_DOT(a, b)                                                                           \
-    _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps((a)[0], (b)[0]), _mm256_mul_ps((a)[1], (b)[1])),   \
-                  _mm256_mul_ps((a)[2], (b)[2]))
 /* interpolate's (b0 x0 + b1 x1) + b2 x2 of one component, x broadcast. */
 #define LANES_INTERPOLATE(x0, x1, x2)                                                             \
     _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(b0, _mm256_set1_ps(x0)),                            \
@@ -1301,23 +1382,21 @@ void surface_fetch_colour(const struct shade_context *sc, const struct trace_sce
                   _mm256_mul_ps(b2, _mm256_set1_ps(x2)))
 
 /*
- * fetch_colour_begin of a whole block's TRACE_PACKET hits when they are
- * all on one triangle of one instance (three blocks in four of a BART
- * kitchen frame at 1024x768): what depends on the triangle alone (its
- * instance, vertices and flags, the cached unit normal, the material's
- * emission, lighting and texture name, the texture, the triangle part of
- * the level of detail) once, the rest hit by hit with
- * fetch_colour_begin's operations; the levels of detail then read the
- * one cached triangle part (lodp) instead of eight copies of it.  The
- * same values, so the same colours bit for bit.  Returns 0, having
- * written nothing the caller reads, when the hits are on more than one
- * triangle or the block needs what this leaves to fetch_colour_begin (no
- * cache, a degenerate triangle, projective texture coordinates).
+ * surface_fetch_lanes (surface.h): fetch_colour_begin of a whole block's
+ * TRACE_PACKET hits on one triangle of one instance (three blocks in
+ * four of a BART kitchen frame at 1024x768).  What depends on the
+ * triangle alone (its instance, vertices and flags, the cached unit
+ * normal, the material's emission, lighting and texture name, the
+ * texture, the triangle part of the level of detail) once, the rest in
+ * eight lanes with fetch_colour_begin's operations; the levels of detail
+ * from the lanes and the one cached triangle part (lod_quad), the
+ * lookups in the lanes when the sampler takes the block (else hit by
+ * hit), and texture_end's products in the lanes (a product is the same
+ * in either order).  The same values, so the same colours bit for bit.
  */
-static int fetch_colours_one_triangle(const struct shade_context *sc,
-                                      const struct trace_scene_hit *const hits[],
-                                      const float *const dir[], const float width[],
-                                      struct surface_colour s[], struct surface_texture tex[])
+int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene_hit *const hits[],
+                        const float dir[3][TRACE_PACKET], const float width[],
+                        struct surface_lanes *out)
 {
     const struct trace_scene_hit *h0 = hits[0];
     for (int i = 1; i < TRACE_PACKET; i++)
@@ -1358,12 +1437,10 @@ static int fetch_colours_one_triangle(const struct shade_context *sc,
      * each lane the scalar operations in their order (hit_triangle,
      * facing_normal, shading_normal, interpolate; no FMA in this copy),
      * so the same floats and doubles. */
-    float lane_b[3][TRACE_PACKET], lane_d[3][TRACE_PACKET];
+    float lane_b[3][TRACE_PACKET];
     for (int i = 0; i < TRACE_PACKET; i++) {
         lane_b[1][i] = hits[i]->u;
         lane_b[2][i] = hits[i]->v;
-        for (int k = 0; k < 3; k++)
-            lane_d[k][i] = dir[i][k];
     }
     const __m256 b1 = _mm256_loadu_ps(lane_b[1]), b2 = _mm256_loadu_ps(lane_b[2]);
     const __m256 b0 = _mm256_sub_ps(_mm256_sub_ps(_mm256_set1_ps(1.0f), b1), b2);
@@ -1371,10 +1448,10 @@ static int fetch_colours_one_triangle(const struct shade_context *sc,
     __m256 g[3], dv[3];
     for (int k = 0; k < 3; k++) {
         g[k] = _mm256_set1_ps(ng[k]);
-        dv[k] = _mm256_loadu_ps(lane_d[k]);
+        dv[k] = _mm256_loadu_ps(dir[k]);
     }
     /* front = ng . dir < 0; the back face's ng negated (a sign flip). */
-    const __m256 front = _mm256_cmp_ps(LANES_DOT(g, dv), _mm256_setzero_ps(), _CMP_LT_OQ);
+    const __m256 front = _mm256_cmp_ps(lanes_dot8(g, dv), _mm256_setzero_ps(), _CMP_LT_OQ);
     const __m256 flip = _mm256_andnot_ps(front, sign);
     for (int k = 0; k < 3; k++)
         g[k] = _mm256_xor_ps(g[k], flip);
@@ -1410,7 +1487,7 @@ static int fetch_colours_one_triangle(const struct shade_context *sc,
         /* vec3_normalize: a length that is positive and finite (not
          * above FLT_MAX; NaN fails both) scales by 1 / len, else the
          * geometric normal stays. */
-        const __m256 len = _mm256_sqrt_ps(LANES_DOT(nw, nw));
+        const __m256 len = _mm256_sqrt_ps(lanes_dot8(nw, nw));
         const __m256 unit =
             _mm256_and_ps(_mm256_cmp_ps(len, _mm256_setzero_ps(), _CMP_GT_OQ),
                           _mm256_cmp_ps(len, _mm256_set1_ps(FLT_MAX), _CMP_LE_OQ));
@@ -1418,62 +1495,102 @@ static int fetch_colours_one_triangle(const struct shade_context *sc,
         for (int k = 0; k < 3; k++)
             nw[k] = _mm256_mul_ps(nw[k], inv);
         const __m256 away = _mm256_and_ps(
-            _mm256_cmp_ps(LANES_DOT(nw, g), _mm256_setzero_ps(), _CMP_LT_OQ), sign);
+            _mm256_cmp_ps(lanes_dot8(nw, g), _mm256_setzero_ps(), _CMP_LT_OQ), sign);
         for (int k = 0; k < 3; k++)
             nv[k] = _mm256_blendv_ps(g[k], _mm256_xor_ps(nw[k], away), unit);
     }
-    float lane_g[3][TRACE_PACKET], lane_n[3][TRACE_PACKET], lane_front[TRACE_PACKET];
+    float lane_g[3][TRACE_PACKET];
     for (int k = 0; k < 3; k++) {
         _mm256_storeu_ps(lane_g[k], g[k]);
-        _mm256_storeu_ps(lane_n[k], nv[k]);
+        _mm256_storeu_ps(out->n[k], nv[k]);
     }
-    _mm256_storeu_ps(lane_front, front);
+    memcpy(out->emission, emission, sizeof(out->emission));
+    out->lighting = lighting;
     /* The colours: the material's or a vertex colour that is the same
      * for the whole triangle once, interpolated vertex colours hit by
      * hit. */
     const int vary = color_material_on(&t, hit_unlit(sc, lighting)) &&
                      !(t.flags & (TRI_INHERIT_COLOR | TRI_FLAT));
-    float ambient[4], diffuse[4];
-    if (!vary)
+    __m256 amb[3], dif[3];
+    if (!vary) {
+        float ambient[4], diffuse[4];
         hit_colours(sc, &t, m, call, lighting, ambient, diffuse);
-    float lane_st[2][TRACE_PACKET];
-    if (tx) {
-        for (int k = 0; k < 2; k++)
-            _mm256_storeu_ps(lane_st[k], LANES_INTERPOLATE(vst[0][k], vst[1][k], vst[2][k]));
-    }
-    for (int i = 0; i < TRACE_PACKET; i++) {
-        struct surface_colour *si = &s[i];
         for (int k = 0; k < 3; k++) {
-            si->ng[k] = lane_g[k][i];
-            si->n[k] = lane_n[k][i];
+            amb[k] = _mm256_set1_ps(ambient[k]);
+            dif[k] = _mm256_set1_ps(diffuse[k]);
         }
-        si->front = lane_front[i] != 0.0f; /* all ones is a NaN: unequal to 0 */
-        memcpy(si->emission, emission, sizeof(si->emission));
-        si->lighting = lighting;
-        if (vary) {
+    } else {
+        for (int i = 0; i < TRACE_PACKET; i++) {
+            float ambient[4], diffuse[4];
             t.b1 = hits[i]->u;
             t.b2 = hits[i]->v;
             t.b0 = 1.0f - hits[i]->u - hits[i]->v;
-            hit_colours(sc, &t, m, call, lighting, si->ambient, si->diffuse);
-        } else {
-            memcpy(si->ambient, ambient, sizeof(ambient));
-            memcpy(si->diffuse, diffuse, sizeof(diffuse));
+            hit_colours(sc, &t, m, call, lighting, ambient, diffuse);
+            for (int k = 0; k < 3; k++) {
+                out->ambient[k][i] = ambient[k];
+                out->diffuse[k][i] = diffuse[k];
+            }
         }
-        struct surface_texture *ti = &tex[i];
-        ti->tex = tx;
-        ti->lod = 0;
-        if (!tx)
-            continue;
-        ti->lambda = -INFINITY; /* a magnification */
-        ti->st[0] = lane_st[0][i];
-        ti->st[1] = lane_st[1][i];
+        for (int k = 0; k < 3; k++) {
+            amb[k] = _mm256_loadu_ps(out->ambient[k]);
+            dif[k] = _mm256_loadu_ps(out->diffuse[k]);
+        }
+    }
+    if (tx) {
+        float lane_st[2][TRACE_PACKET];
+        for (int k = 0; k < 2; k++)
+            _mm256_storeu_ps(lane_st[k], LANES_INTERPOLATE(vst[0][k], vst[1][k], vst[2][k]));
+        /* The levels of detail straight from the lanes (lod_quad, four
+         * hits a quad: the directions, facing normals and widths that
+         * texture_lods reads from a surface_texture), a magnification
+         * without them (texture_begin), then the eight lookups in the
+         * lanes (scene_texture_sample_lod8) or, where the sampler does not
+         * take the block, hit by hit as texture_end. */
+        float lambda[TRACE_PACKET], rgb[3][TRACE_PACKET];
+        for (int i = 0; i < TRACE_PACKET; i++)
+            lambda[i] = -INFINITY;
         if (tri) {
-            ti->lodp = tri;
-            memcpy(ti->ng, si->ng, sizeof(ti->ng));
-            memcpy(ti->dir, dir[i], sizeof(ti->dir));
-            ti->width = width[i];
-            ti->lod = 1;
+            const struct surface_lod *const l4[4] = {tri, tri, tri, tri};
+            const double top = lod_top(tx->level_count);
+            const __m256 wv = _mm256_loadu_ps(width);
+            for (int h = 0; h < TRACE_PACKET / 4; h++) {
+#define HALF(v) _mm256_cvtps_pd(h ? _mm256_extractf128_ps(v, 1) : _mm256_castps256_ps128(v))
+                __m256d d[3], gd[3];
+                for (int k = 0; k < 3; k++) {
+                    d[k] = HALF(dv[k]);
+                    gd[k] = HALF(g[k]);
+                }
+                struct lod_quad_rest rest;
+                const int decided = lod_quad(l4, 1, d, gd, HALF(wv), _mm256_set1_pd(top),
+                                             &lambda[4 * h], &rest);
+#undef HALF
+                for (int i = 0; i < 4; i++) {
+                    const int j = 4 * h + i;
+                    if (decided >> i & 1 || lod_quad_axes(&rest, i, width[j], top, &lambda[j]))
+                        continue;
+                    const float ngj[3] = {lane_g[0][j], lane_g[1][j], lane_g[2][j]};
+                    const float dj[3] = {dir[0][j], dir[1][j], dir[2][j]};
+                    lambda[j] = lod_ray(tri, tx->level_count, ngj, dj, width[j]);
+                }
+            }
         }
+        if (!scene_texture_sample_lod8(tx, lambda, lane_st[0], lane_st[1], rgb)) {
+            for (int i = 0; i < TRACE_PACKET; i++) {
+                float texel[4];
+                scene_texture_sample_lod(tx, lambda[i], lane_st[0][i], lane_st[1][i], texel);
+                for (int k = 0; k < 3; k++)
+                    rgb[k][i] = texel[k];
+            }
+        }
+        for (int k = 0; k < 3; k++) {
+            const __m256 texel = _mm256_loadu_ps(rgb[k]);
+            amb[k] = _mm256_mul_ps(amb[k], texel);
+            dif[k] = _mm256_mul_ps(dif[k], texel);
+        }
+    }
+    for (int k = 0; k < 3; k++) {
+        _mm256_storeu_ps(out->ambient[k], amb[k]);
+        _mm256_storeu_ps(out->diffuse[k], dif[k]);
     }
     return 1;
 }
@@ -1486,17 +1603,23 @@ void surface_fetch_colours(const struct shade_context *sc, int n,
     struct surface_texture tex[TRACE_PACKET];
     struct surface_texture *lod[TRACE_PACKET] = {NULL}; /* lods of them set */
     int lods = 0;
-    int fetched = 0; /* by fetch_colours_one_triangle */
-#if defined(SURFACE_QUADS)
-    fetched = n == TRACE_PACKET && fetch_colours_one_triangle(sc, hits, dir, width, s, tex);
-#endif
     for (int i = 0; i < n; i++) {
-        if (!fetched)
-            fetch_colour_begin(sc, hits[i], dir[i], width[i], &s[i], &tex[i]);
+        fetch_colour_begin(sc, hits[i], dir[i], width[i], &s[i], &tex[i]);
         if (tex[i].lod)
             lod[lods++] = &tex[i];
     }
     texture_lods(lod, lods);
+#if defined(SURFACE_QUADS)
+    if (n == TRACE_PACKET) {
+        float *ambient[TRACE_PACKET], *diffuse[TRACE_PACKET];
+        for (int i = 0; i < TRACE_PACKET; i++) {
+            ambient[i] = s[i].ambient;
+            diffuse[i] = s[i].diffuse;
+        }
+        if (texture_end8(tex, ambient, diffuse))
+            return;
+    }
+#endif
     for (int i = 0; i < n; i++)
         texture_end(&tex[i], s[i].ambient, s[i].diffuse);
 }

@@ -131,6 +131,34 @@ void surface_fetch_colours(const struct shade_context *sc, int n,
                            const struct trace_scene_hit *const hits[], const float *const dir[],
                            const float width[], struct surface_colour s[]);
 
+#if defined(__AVX2__) && !defined(RT_NO_SIMD)
+/* What the eye light reads of a block of TRACE_PACKET hits on one
+ * triangle (surface_fetch_lanes), lane i hit i: surface_colour's shading
+ * normal and colours (vertex colours and texture applied), the emission
+ * and lighting being the triangle's. */
+struct surface_lanes {
+    float n[3][TRACE_PACKET];
+    float ambient[3][TRACE_PACKET];
+    float diffuse[3][TRACE_PACKET];
+    float emission[4];
+    int lighting;
+};
+
+/*
+ * surface_fetch_colours of a block of TRACE_PACKET hits when they are
+ * all on one triangle of one instance, in the lanes of the shading's
+ * AVX2 copy (render/shade_eye_avx2.c renames it), dir[k][i] component k
+ * of hit i's direction, into out: the same
+ * values bit for bit.  Returns 0, having written nothing the caller
+ * reads, when the hits are on more than one triangle or the block needs
+ * what this leaves to surface_fetch_colours (no cache, a degenerate
+ * triangle, projective texture coordinates).
+ */
+int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene_hit *const hits[],
+                        const float dir[3][TRACE_PACKET], const float width[],
+                        struct surface_lanes *out);
+#endif
+
 /* The texel of texture `name` at a hit, for the RT_FIXED_FUNCTION mode,
  * which applies it after lighting through the texture environment
  * (gl_shade.c): the triangle's vertex coordinates vertex_st (recorded or

@@ -21,6 +21,11 @@
 #if defined(__SSE4_1__)
 #include <smmintrin.h> /* the AVX2 copy (render/shade_eye_avx2.c) */
 #endif
+#if defined(__AVX2__)
+#include <immintrin.h>
+#include <stddef.h>
+#define TEXTURE_OCTS 1 /* scene_texture_sample_lod8 */
+#endif
 #define TEXTURE_LANES 1
 #else
 #define TEXTURE_LANES 0
@@ -571,6 +576,179 @@ static void sample_trilinear(const struct scene_texture *tex, int level, __m128d
     for (int l = 0; l < 2; l++)
         c[l] = bilinear_at(lv[l]->texels, off[l], a[l], b[l]);
     _mm_storeu_ps(rgba, _mm_add_ps(c[0], _mm_mul_ps(_mm_set1_ps(f), _mm_sub_ps(c[1], c[0]))));
+}
+#endif
+
+#if defined(TEXTURE_OCTS)
+/* wrap_lanes in eight int32 lanes: the same integers. */
+static inline __m256i wrap_lanes8(__m256i i, __m256i n, __m256i repeat)
+{
+    const __m256i last = _mm256_sub_epi32(n, _mm256_set1_epi32(1));
+    const __m256i below = _mm256_cmpgt_epi32(_mm256_setzero_si256(), i);
+    const __m256i above = _mm256_cmpgt_epi32(i, last);
+    const __m256i wrapped = _mm256_sub_epi32(_mm256_add_epi32(i, _mm256_and_si256(below, n)),
+                                             _mm256_and_si256(above, n));
+    const __m256i clamped = _mm256_or_si256(
+        _mm256_andnot_si256(_mm256_or_si256(below, above), i), _mm256_and_si256(above, last));
+    return _mm256_blendv_epi8(clamped, wrapped, repeat);
+}
+
+/* pair_reduce of four coordinates x along one axis (wrap) in the double
+ * lanes: reduce_coord's value in each, the floor taken by roundpd (exact,
+ * as floor_small; only the sign of a zero may differ, which the product
+ * by the level's size and the subtraction of 1/2 after it cannot show).
+ * 0 when a finite one is 2^31 or more in magnitude. */
+static inline int quad_reduce(__m128 x, enum scene_texture_wrap wrap, __m256d *out)
+{
+    __m256d d = _mm256_cvtps_pd(x);
+    d = _mm256_and_pd(_mm256_cmp_pd(_mm256_sub_pd(d, d), _mm256_setzero_pd(), _CMP_EQ_OQ), d);
+    const __m256d magnitude = _mm256_andnot_pd(_mm256_set1_pd(-0.0), d);
+    if (_mm256_movemask_pd(_mm256_cmp_pd(magnitude, _mm256_set1_pd(0x1p31), _CMP_LT_OQ)) != 15)
+        return 0;
+    if (wrap == SCENE_WRAP_REPEAT) {
+        const __m256d f = _mm256_sub_pd(d, _mm256_floor_pd(d));
+        *out = _mm256_blendv_pd(_mm256_set1_pd(0x1.fffffffffffffp-1), f,
+                                _mm256_cmp_pd(f, _mm256_set1_pd(1.0), _CMP_LT_OQ));
+    } else {
+        *out = _mm256_min_pd(_mm256_max_pd(d, _mm256_set1_pd(-1.0)), _mm256_set1_pd(2.0));
+    }
+    return 1;
+}
+
+/* The level entry's int32 fields as gather indices: the width, the
+ * height and the low half of the texel pointer (x86 is little-endian). */
+typedef char texture_level_ints[sizeof(struct scene_texture_level) % sizeof(int) == 0 &&
+                                        offsetof(struct scene_texture_level, texels) %
+                                                sizeof(int) ==
+                                            0
+                                    ? 1
+                                    : -1];
+#define LEVEL_INTS ((int)(sizeof(struct scene_texture_level) / sizeof(int)))
+
+/* The bilinear lookups (sample_level_reduced, LINEAR) of eight points
+ * (rs, rt reduced, four a register) on the levels `level` (one a lane),
+ * each lane sample_level_reduced's operations in their order: u = rs w,
+ * uc = u - 1/2, its floor, the weight (float)(uc - floor), the four
+ * texels wrapped as wrap_index, each channel b / 255, and the nested
+ * blends of bilinear_at.  The texels' byte offsets from level 0's
+ * first texel fit int32: a chain is at most 4/3 of 16384^2 texels of 4
+ * bytes, below 2^31 bytes, so one gather fetches a texel of each lane. */
+static inline void bilinear8(const struct scene_texture *tex, __m256i level, const __m256d rs[2],
+                             const __m256d rt[2], __m256i repeat_s, __m256i repeat_t,
+                             __m256 out[3])
+{
+    const int *entries = (const int *)tex->levels;
+    const __m256i at = _mm256_mullo_epi32(level, _mm256_set1_epi32(LEVEL_INTS));
+    const __m256i w = _mm256_i32gather_epi32(entries, at, 4);
+    const __m256i h = _mm256_i32gather_epi32(
+        entries, _mm256_add_epi32(at, _mm256_set1_epi32(1)), 4);
+    const __m256i first = _mm256_sub_epi32(
+        _mm256_i32gather_epi32(
+            entries,
+            _mm256_add_epi32(at, _mm256_set1_epi32((int)(offsetof(struct scene_texture_level,
+                                                                   texels) /
+                                                          sizeof(int)))),
+            4),
+        _mm256_set1_epi32((int)(uint32_t)(uintptr_t)tex->levels[0].texels));
+    const __m256d half = _mm256_set1_pd(0.5);
+    __m128 a[2], b[2];
+    __m128i i[2], j[2];
+    for (int k = 0; k < 2; k++) {
+        const __m256d wd = _mm256_cvtepi32_pd(k ? _mm256_extracti128_si256(w, 1)
+                                                : _mm256_castsi256_si128(w));
+        const __m256d hd = _mm256_cvtepi32_pd(k ? _mm256_extracti128_si256(h, 1)
+                                                : _mm256_castsi256_si128(h));
+        const __m256d uc = _mm256_sub_pd(_mm256_mul_pd(rs[k], wd), half);
+        const __m256d vc = _mm256_sub_pd(_mm256_mul_pd(rt[k], hd), half);
+        const __m256d fi = _mm256_floor_pd(uc), fj = _mm256_floor_pd(vc);
+        a[k] = _mm256_cvtpd_ps(_mm256_sub_pd(uc, fi));
+        b[k] = _mm256_cvtpd_ps(_mm256_sub_pd(vc, fj));
+        i[k] = _mm256_cvttpd_epi32(fi);
+        j[k] = _mm256_cvttpd_epi32(fj);
+    }
+    const __m256 va = _mm256_set_m128(a[1], a[0]), vb = _mm256_set_m128(b[1], b[0]);
+    const __m256i vi = _mm256_set_m128i(i[1], i[0]), vj = _mm256_set_m128i(j[1], j[0]);
+    const __m256i one = _mm256_set1_epi32(1);
+    const __m256i i0 = wrap_lanes8(vi, w, repeat_s);
+    const __m256i i1 = wrap_lanes8(_mm256_add_epi32(vi, one), w, repeat_s);
+    /* Rows j w: at most 2^14 by 2^14, exact in int32. */
+    const __m256i r0 = _mm256_mullo_epi32(wrap_lanes8(vj, h, repeat_t), w);
+    const __m256i r1 = _mm256_mullo_epi32(wrap_lanes8(_mm256_add_epi32(vj, one), h, repeat_t), w);
+    const int *texels = (const int *)(const void *)tex->levels[0].texels;
+#define TEXEL8(r, c)                                                                              \
+    _mm256_i32gather_epi32(texels,                                                                \
+                           _mm256_add_epi32(first, _mm256_slli_epi32(_mm256_add_epi32(r, c), 2)), \
+                           1)
+    const __m256i x00 = TEXEL8(r0, i0), x10 = TEXEL8(r0, i1);
+    const __m256i x01 = TEXEL8(r1, i0), x11 = TEXEL8(r1, i1);
+#undef TEXEL8
+    const __m256i byte = _mm256_set1_epi32(0xff);
+    const __m256 d255 = _mm256_set1_ps(255.0f);
+#define CHANNEL(x, k)                                                                             \
+    _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_and_si256(_mm256_srli_epi32(x, 8 * (k)), byte)), d255)
+    for (int k = 0; k < 3; k++) {
+        const __m256 c00 = CHANNEL(x00, k), c10 = CHANNEL(x10, k);
+        const __m256 c01 = CHANNEL(x01, k), c11 = CHANNEL(x11, k);
+        const __m256 bottom = _mm256_add_ps(c00, _mm256_mul_ps(va, _mm256_sub_ps(c10, c00)));
+        const __m256 top = _mm256_add_ps(c01, _mm256_mul_ps(va, _mm256_sub_ps(c11, c01)));
+        out[k] = _mm256_add_ps(bottom, _mm256_mul_ps(vb, _mm256_sub_ps(top, bottom)));
+    }
+#undef CHANNEL
+}
+#undef LEVEL_INTS
+
+/*
+ * scene_texture_sample_lod of eight lookups, LINEAR_MIPMAP_LINEAR and
+ * LINEAR only: each lane takes scene_texture_sample_lod's branch by its
+ * own lambda (a magnification: level 0; from the last level q on: level
+ * q; between: levels floor(lambda) and the next, blended by the
+ * fraction), all lanes through two bilinear lookups (bilinear8), a lane
+ * with one level looking it up twice and keeping the first; the blend
+ * fine + f (coarse - fine) as the scalar loop's.
+ */
+int scene_texture_sample_lod8(const struct scene_texture *tex, const float lambda[8],
+                              const float s[8], const float t[8], float rgb[3][8])
+{
+    if (tex->min_filter != SCENE_FILTER_LINEAR_MIPMAP_LINEAR ||
+        tex->mag_filter != SCENE_FILTER_LINEAR)
+        return 0;
+    __m256d rs[2], rt[2];
+    for (int k = 0; k < 2; k++)
+        if (!quad_reduce(_mm_loadu_ps(s + 4 * k), tex->wrap_s, &rs[k]) ||
+            !quad_reduce(_mm_loadu_ps(t + 4 * k), tex->wrap_t, &rt[k]))
+            return 0;
+    const __m256i repeat_s = _mm256_set1_epi32(-(tex->wrap_s == SCENE_WRAP_REPEAT));
+    const __m256i repeat_t = _mm256_set1_epi32(-(tex->wrap_t == SCENE_WRAP_REPEAT));
+    const __m256 lam = _mm256_loadu_ps(lambda);
+    const int q = tex->level_count - 1;
+    /* c = 0 for these filters: lambda > 0 minifies (a NaN does not). */
+    const __m256 minified = _mm256_cmp_ps(lam, _mm256_setzero_ps(), _CMP_GT_OQ);
+    const __m256 last =
+        _mm256_and_ps(minified, _mm256_cmp_ps(lam, _mm256_set1_ps((float)q), _CMP_GE_OQ));
+    const __m256 two = _mm256_andnot_ps(last, minified);
+    /* floorf(lambda) for 0 < lambda < q by the truncation, as the
+     * scalar path; the other lanes' values are not used. */
+    const __m256i d1 = _mm256_cvttps_epi32(lam);
+    const __m256 f = _mm256_sub_ps(lam, _mm256_cvtepi32_ps(d1));
+    const __m256i two_i = _mm256_castps_si256(two);
+    const __m256i fine = _mm256_blendv_epi8(
+        _mm256_and_si256(_mm256_castps_si256(last), _mm256_set1_epi32(q)), d1, two_i);
+    const __m256i coarse = _mm256_sub_epi32(fine, two_i); /* + 1 where two levels */
+    __m256 c0[3], c1[3];
+    bilinear8(tex, fine, rs, rt, repeat_s, repeat_t, c0);
+    if (!_mm256_movemask_ps(two)) {
+        /* One level in every lane (magnified, or at the last level). */
+        for (int k = 0; k < 3; k++)
+            _mm256_storeu_ps(rgb[k], c0[k]);
+        return 1;
+    }
+    bilinear8(tex, coarse, rs, rt, repeat_s, repeat_t, c1);
+    for (int k = 0; k < 3; k++)
+        _mm256_storeu_ps(
+            rgb[k], _mm256_blendv_ps(c0[k],
+                                     _mm256_add_ps(c0[k], _mm256_mul_ps(f, _mm256_sub_ps(c1[k], c0[k]))),
+                                     two));
+    return 1;
 }
 #endif
 

@@ -155,4 +155,18 @@ void scene_texture_sample(const struct scene_texture *tex, enum scene_texture_fi
 void scene_texture_sample_lod(const struct scene_texture *tex, float lambda, float s, float t,
                               float rgba[4]);
 
+#if defined(__AVX2__) && !defined(RT_NO_SIMD)
+/*
+ * scene_texture_sample_lod of eight lookups on one texture in the AVX2
+ * lanes (the shading's AVX2 copy, render/shade_eye_avx2.c, renames it):
+ * rgb[k][i] is channel k (red, green, blue; alpha is not computed) of
+ * lookup i at (s[i], t[i]) for lambda[i], the same floats bit for bit.
+ * Returns 0, having written nothing, when it does not take the block: a
+ * texture other than LINEAR_MIPMAP_LINEAR minified and LINEAR magnified,
+ * or a coordinate of 2^31 or more in magnitude.
+ */
+int scene_texture_sample_lod8(const struct scene_texture *tex, const float lambda[8],
+                              const float s[8], const float t[8], float rgb[3][8]);
+#endif
+
 #endif

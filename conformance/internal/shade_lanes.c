@@ -1,0 +1,228 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * shade_lanes.c - the lanes of the shading's AVX2 copy
+ * (render/shade_eye_avx2.c) against their scalar references.
+ *
+ * The four-lane log2 of the levels of detail (lanes_log2_4, through
+ * shade_log2_quad_avx2_unit) within 2^-48 of log2l over every 13th float
+ * of [1, 2^16] and a million random doubles there: a quarter of the
+ * bound (LANES_LOG2_BOUND, 2^-47) that lod_ray_quad's argument uses.
+ *
+ * The eight-lane texture lookup (scene_texture_sample_lod8, through
+ * shade_texture_lod8_avx2_unit) against scene_texture_sample_lod, bit
+ * for bit: textures of odd and
+ * power-of-two sizes down to 1x1, REPEAT and CLAMP_TO_EDGE on each axis,
+ * levels of detail at and around every level boundary, the last level,
+ * magnifications, zeros, infinities and NaN, coordinates near texel
+ * edges, negative, large and non-finite.  A block it refuses (a
+ * coordinate of 2^31 or more, other filters) must be refused whole.
+ * Skipped where the unit is absent or the CPU has no AVX2.
+ *
+ * Internal test (links the static library).  Non-zero exit on failure.
+ */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "base/alloc.h"
+#include "check.h"
+#include "render/shade.h"
+#include "scene/texture.h"
+
+static uint32_t rng = 2463534242u;
+
+static uint32_t next(void)
+{
+    rng ^= rng << 13;
+    rng ^= rng >> 17;
+    rng ^= rng << 5;
+    return rng;
+}
+
+static float uniform(float lo, float hi)
+{
+    return lo + (hi - lo) * (float)(next() >> 8) / 16777216.0f;
+}
+
+static int set_random_image(struct scene_texture *tex, int w, int h)
+{
+    uint8_t *chain = rt_malloc(4 * scene_texture_chain_texels(w, h));
+    if (!chain)
+        return 0;
+    for (size_t k = 0; k < 4 * (size_t)w * (size_t)h; k++)
+        chain[k] = (uint8_t)next();
+    if (scene_texture_build_mipmaps(chain, w, h) != 0) {
+        rt_free(chain);
+        return 0;
+    }
+    scene_texture_set_image(tex, w, h, chain);
+    return 1;
+}
+
+/* A level of detail: special values, level boundaries and their float
+ * neighbours, or anything in [-2, q + 3]. */
+static float any_lambda(int q)
+{
+    switch (next() % 8) {
+    case 0: {
+        const float special[] = {NAN, -INFINITY, INFINITY, 0.0f, -0.0f, 1e-30f, -1e-30f};
+        return special[next() % 7];
+    }
+    case 1:
+    case 2: {
+        const float b = (float)(int)(next() % (unsigned)(q + 2));
+        const int step = (int)(next() % 3) - 1;
+        return step < 0 ? nextafterf(b, -INFINITY) : step > 0 ? nextafterf(b, INFINITY) : b;
+    }
+    default:
+        return uniform(-2.0f, (float)q + 3.0f);
+    }
+}
+
+/* A coordinate: near texel edges of some level, in [-3, 3], large or
+ * special. */
+static float any_coord(int n)
+{
+    switch (next() % 10) {
+    case 0: {
+        const float special[] = {NAN, -INFINITY, INFINITY, 0.0f, -0.0f, 1.0f, -1.0f, 1e-30f,
+                                 -1e-30f, 2.0f, 1e7f, -1e9f};
+        return special[next() % 12];
+    }
+    case 1:
+    case 2: {
+        const float e = (float)(int)(next() % (unsigned)(2 * n + 1)) / (float)n;
+        return (next() & 1) ? nextafterf(e, -INFINITY) : e;
+    }
+    default:
+        return uniform(-3.0f, 3.0f);
+    }
+}
+
+/* The largest |lanes_log2_4(x) - log2l(x)| over the grid and the random
+ * doubles; the failures counted against 2^-48. */
+static int log2_bound(shade_log2_quad_fn log2_quad)
+{
+    int failures = 0;
+    long double worst = 0.0L;
+    double xs[4], got[4];
+    int n = 0;
+    uint32_t bits = 0x3f800000u; /* 1.0f */
+    const uint32_t end = 0x47800000u; /* 65536.0f */
+    long count = 0;
+    for (;;) {
+        int done = bits > end;
+        if (!done) {
+            float f;
+            memcpy(&f, &bits, sizeof(f));
+            xs[n++] = (double)f;
+            bits += 13;
+        } else if (count < 1000000) {
+            /* A random double of [1, 2^16): 2^e times a random mantissa. */
+            const uint64_t m = ((uint64_t)next() << 32 | next()) & 0x000fffffffffffffull;
+            const uint64_t e = 1023u + next() % 16u;
+            const uint64_t b = e << 52 | m;
+            memcpy(&xs[n++], &b, sizeof(double));
+            count++;
+            done = 0;
+        }
+        if (n == 4 || (done && n > 0)) {
+            while (n < 4)
+                xs[n++] = 1.0;
+            log2_quad(xs, got);
+            for (int k = 0; k < 4; k++) {
+                const long double err = fabsl((long double)got[k] - log2l((long double)xs[k]));
+                if (err > worst)
+                    worst = err;
+                if (!(err <= 0x1p-48L))
+                    failures += !CHECKF(0, "log2(%a): %a, off by %Lg", xs[k], got[k], err);
+            }
+            n = 0;
+        }
+        if (done)
+            break;
+    }
+    printf("shade_lanes: log2's largest error %Lg (2^%.2f)\n", worst,
+           worst > 0.0L ? (double)log2l(worst) : -INFINITY);
+    return failures;
+}
+
+int main(void)
+{
+    const shade_log2_quad_fn log2_quad = shade_log2_quad_avx2_unit();
+    const shade_texture_lod8_fn lod8 = shade_texture_lod8_avx2_unit();
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+    const int cpu = __builtin_cpu_supports("avx2");
+#else
+    const int cpu = 0;
+#endif
+    if (!lod8 || !log2_quad || !cpu) {
+        printf("shade_lanes: skipped (no AVX2 unit or CPU)\n");
+        return 0;
+    }
+    int failures = log2_bound(log2_quad);
+    struct scene_textures tab;
+    scene_textures_init(&tab);
+    struct scene_texture *tex = scene_textures_get_or_create(&tab, 1);
+    const int sizes[][2] = {{1, 1}, {1, 7}, {5, 3}, {4, 4}, {64, 16}, {37, 129}, {128, 128},
+                            {300, 5}};
+    int lanes = 0, refused = 0;
+    for (size_t z = 0; z < sizeof(sizes) / sizeof(sizes[0]); z++) {
+        if (!tex || !set_random_image(tex, sizes[z][0], sizes[z][1])) {
+            fprintf(stderr, "no memory for a texture\n");
+            return 1;
+        }
+        const int q = tex->level_count - 1;
+        const int n = sizes[z][0] > sizes[z][1] ? sizes[z][0] : sizes[z][1];
+        for (int block = 0; block < 20000; block++) {
+            tex->min_filter = SCENE_FILTER_LINEAR_MIPMAP_LINEAR;
+            tex->mag_filter = SCENE_FILTER_LINEAR;
+            if (block % 97 == 0)
+                tex->min_filter = SCENE_FILTER_NEAREST_MIPMAP_LINEAR; /* refused */
+            tex->wrap_s = (next() & 1) ? SCENE_WRAP_CLAMP_TO_EDGE : SCENE_WRAP_REPEAT;
+            tex->wrap_t = (next() & 1) ? SCENE_WRAP_CLAMP_TO_EDGE : SCENE_WRAP_REPEAT;
+            float lambda[8], s[8], t[8], rgb[3][8], want[8][4];
+            for (int i = 0; i < 8; i++) {
+                lambda[i] = any_lambda(q);
+                s[i] = any_coord(n);
+                t[i] = any_coord(n);
+            }
+            memset(rgb, 0x7f, sizeof(rgb));
+            const int took = lod8(tex, lambda, s, t, rgb);
+            int big = 0;
+            for (int i = 0; i < 8; i++)
+                big |= (isfinite(s[i]) && fabsf(s[i]) >= 0x1p31f) ||
+                       (isfinite(t[i]) && fabsf(t[i]) >= 0x1p31f);
+            const int should = !big && tex->min_filter == SCENE_FILTER_LINEAR_MIPMAP_LINEAR;
+            failures += !CHECKF(took == should, "size %dx%d block %d: took %d, expected %d",
+                                sizes[z][0], sizes[z][1], block, took, should);
+            if (!took) {
+                refused++;
+                continue;
+            }
+            for (int i = 0; i < 8; i++) {
+                scene_texture_sample_lod(tex, lambda[i], s[i], t[i], want[i]);
+                int same = 1;
+                for (int k = 0; k < 3; k++)
+                    same &= memcmp(&rgb[k][i], &want[i][k], sizeof(float)) == 0;
+                lanes++;
+                failures += !CHECKF(same,
+                                    "size %dx%d lane %d: lambda %a s %a t %a wrap %d %d: "
+                                    "(%a %a %a) against (%a %a %a)",
+                                    sizes[z][0], sizes[z][1], i, (double)lambda[i], (double)s[i],
+                                    (double)t[i], (int)tex->wrap_s, (int)tex->wrap_t,
+                                    (double)rgb[0][i], (double)rgb[1][i], (double)rgb[2][i],
+                                    (double)want[i][0], (double)want[i][1], (double)want[i][2]);
+                if (failures > 20)
+                    break;
+            }
+            if (failures > 20)
+                break;
+        }
+    }
+    scene_textures_release(&tab);
+    printf("shade_lanes: %d lanes compared, %d blocks refused\n", lanes, refused);
+    printf("shade_lanes: %s (%d failed checks)\n", failures ? "FAILED" : "passed", failures);
+    return failures != 0;
+}

@@ -1,0 +1,74 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * lanes.h - eight-lane float steps shared by the eye light's shading
+ * (shade.c) and the surface fetch (surface.c) in their AVX2 copy
+ * (shade_eye_avx2.c).  Each is the scalar operation of base/vec3.h in
+ * its order, lane by lane, so the same floats: one definition, so that
+ * the two files cannot drift apart in the order of their additions.
+ */
+#ifndef RT_RENDER_LANES_H
+#define RT_RENDER_LANES_H
+
+#if defined(__AVX__) && !defined(RT_NO_SIMD)
+#include <immintrin.h>
+
+/* vec3_dot of eight lanes: (a0 b0 + a1 b1) + a2 b2. */
+static inline __m256 lanes_dot8(const __m256 a[3], const __m256 b[3])
+{
+    return _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(a[0], b[0]), _mm256_mul_ps(a[1], b[1])),
+                         _mm256_mul_ps(a[2], b[2]));
+}
+#endif
+
+#if defined(__AVX2__) && !defined(RT_NO_SIMD)
+/* Bound of lanes_log2_4 on [1, 2^16] (see there), absolute. */
+#define LANES_LOG2_BOUND 0x1p-47
+
+/*
+ * log2 of four doubles x in [1, 2^16] (positive and normal), for the
+ * levels of detail's footprints: not glibc's log2 (a call a lane, the
+ * largest part of the levels of detail's tail), so not its bits, only
+ * within LANES_LOG2_BOUND of the exact value, which is all lod_ray_quad
+ * asks of it (it keeps a result only when every value that close rounds
+ * to the same float).  x = 2^e m with m in [sqrt(1/2), sqrt(2)] (the
+ * exponent and mantissa fields; m / 2 and e + 1 above sqrt(2), exact),
+ * and ln m = 2 atanh(z) = 2 (z + z^3 / 3 + ... + z^17 / 17 + ...) with
+ * z = (m - 1) / (m + 1), |z| <= 0.1716 (the series of Abramowitz and
+ * Stegun 1964, 4.1.27).  The error in log2 units: the terms left out,
+ * 2 |z|^19 / 19 / (1 - z^2) / ln 2 < 2^-50; z's two roundings (m - 1 is
+ * exact by Sterbenz's lemma), 2^-52 of |z| relative, and the series'
+ * other roundings, in all below 0.6 2^-52 of ln m, and the product by
+ * 1 / ln 2 (itself rounded), below 0.9 2^-52 together; the sum with e,
+ * half an ulp of a result below 16, 2^-50: below 2^-48 in all, a
+ * quarter of the bound.  conformance/internal/texture_lanes checks
+ * |lanes_log2_4(x) - log2(x)| <= 2^-48 against long double over every
+ * 61st float of [1, 2^16] and random doubles there.
+ */
+static inline __m256d lanes_log2_4(__m256d x)
+{
+    const __m256d one = _mm256_set1_pd(1.0);
+    const __m256i bits = _mm256_castpd_si256(x);
+    __m256d m = _mm256_or_pd(
+        _mm256_and_pd(x, _mm256_castsi256_pd(_mm256_set1_epi64x(0x000fffffffffffffLL))), one);
+    /* The biased exponent as the low bits of 2^52, less 2^52 + 1023:
+     * exactly e, as a double. */
+    __m256d e = _mm256_sub_pd(
+        _mm256_castsi256_pd(_mm256_or_si256(_mm256_srli_epi64(bits, 52),
+                                            _mm256_castpd_si256(_mm256_set1_pd(0x1p52)))),
+        _mm256_set1_pd(0x1p52 + 1023.0));
+    const __m256d big = _mm256_cmp_pd(m, _mm256_set1_pd(0x1.6a09e667f3bcdp+0), _CMP_GT_OQ);
+    m = _mm256_blendv_pd(m, _mm256_mul_pd(m, _mm256_set1_pd(0.5)), big);
+    e = _mm256_add_pd(e, _mm256_and_pd(big, one));
+    const __m256d z = _mm256_div_pd(_mm256_sub_pd(m, one), _mm256_add_pd(m, one));
+    const __m256d w = _mm256_mul_pd(z, z);
+    __m256d p = _mm256_set1_pd(1.0 / 17.0);
+    for (int k = 15; k >= 3; k -= 2)
+        p = _mm256_add_pd(_mm256_mul_pd(p, w), _mm256_set1_pd(1.0 / (double)k));
+    /* ln m = 2 (z + z w p); log2 = e + ln m / ln 2. */
+    const __m256d ln = _mm256_mul_pd(
+        _mm256_set1_pd(2.0), _mm256_add_pd(z, _mm256_mul_pd(_mm256_mul_pd(z, w), p)));
+    return _mm256_add_pd(e, _mm256_mul_pd(ln, _mm256_set1_pd(0x1.71547652b82fep+0)));
+}
+#endif
+
+#endif
