@@ -40,9 +40,9 @@ static inline __m256 lanes_dot8(const __m256 a[3], const __m256 b[3])
  * other roundings, in all below 0.6 2^-52 of ln m, and the product by
  * 1 / ln 2 (itself rounded), below 0.9 2^-52 together; the sum with e,
  * half an ulp of a result below 16, 2^-50: below 2^-48 in all, a
- * quarter of the bound.  conformance/internal/texture_lanes checks
+ * quarter of the bound.  conformance/internal/shade_lanes checks
  * |lanes_log2_4(x) - log2(x)| <= 2^-48 against long double over every
- * 61st float of [1, 2^16] and random doubles there.
+ * 13th float of [1, 2^16] and random doubles there.
  */
 static inline __m256d lanes_log2_4(__m256d x)
 {
