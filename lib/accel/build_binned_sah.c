@@ -501,8 +501,8 @@ int build_binned_sah_refs(struct bvh_node *nodes, struct build_ref *refs, uint32
 #endif
     const struct bvh_build_params p = *params;
     /* Aligned to 64 (rt_align64): fill_bins stores whole 32-byte records. */
-    void *bins_block = rt_malloc(sizeof(struct bins) + 64);
-    struct bins *bins = rt_align64(bins_block);
+    void *bins_block;
+    struct bins *bins = rt_alloc_array64(1, sizeof(struct bins), &bins_block);
     if (!bins)
         return -1;
 
@@ -626,10 +626,8 @@ int build_binned_sah_forms(struct bvh *out, const struct aabb *prim_boxes, uint3
     int start = accel_build_begin(out, &p, params, prim_count);
     if (start <= 0)
         return start;
-    /* Two refs more, aligned to 64 (rt_align64). */
-    struct build_ref *refs_block =
-        rt_realloc_array(NULL, (size_t)prim_count + 2, sizeof(*refs_block));
-    struct build_ref *refs = rt_align64(refs_block);
+    void *refs_block;
+    struct build_ref *refs = rt_alloc_array64(prim_count, sizeof(*refs), &refs_block);
     if (!refs) {
         bvh_release(out);
         return -1;

@@ -268,10 +268,8 @@ int accel_build_median(struct bvh *out, const struct aabb *prim_boxes, uint32_t 
     int start = accel_build_begin(out, &p, params, prim_count);
     if (start <= 0)
         return start;
-    /* Two refs more, aligned to 64 (rt_align64). */
-    struct build_ref *refs_block =
-        rt_realloc_array(NULL, (size_t)prim_count + 2, sizeof(*refs_block));
-    struct build_ref *refs = rt_align64(refs_block);
+    void *refs_block;
+    struct build_ref *refs = rt_alloc_array64(prim_count, sizeof(*refs), &refs_block);
     if (!refs) {
         bvh_release(out);
         return -1;

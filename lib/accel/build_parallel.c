@@ -684,16 +684,13 @@ static int stage1_binning(struct pbuild *b, const struct open_node *root)
         uint32_t hist_need = chunks * 3 * (uint32_t)b->bins;
         if (hist_need > hist_cap) {
             /* Fresh blocks, not realloc (every chunk's histogram is
-             * filled anew each level), two records longer and aligned
-             * to 64: fill stores whole 32-byte records (rt_align64). */
+             * filled anew each level), aligned to 64: fill stores whole
+             * 32-byte records (rt_align64). */
             rt_free(b->hist_box_block);
             rt_free(b->hist_count_block);
-            b->hist_box_block =
-                rt_realloc_array(NULL, (size_t)hist_need + 2, sizeof(*b->hist_box));
-            b->hist_count_block =
-                rt_realloc_array(NULL, (size_t)hist_need + 2, sizeof(*b->hist_count));
-            b->hist_box = rt_align64(b->hist_box_block);
-            b->hist_count = rt_align64(b->hist_count_block);
+            b->hist_box = rt_alloc_array64(hist_need, sizeof(*b->hist_box), &b->hist_box_block);
+            b->hist_count =
+                rt_alloc_array64(hist_need, sizeof(*b->hist_count), &b->hist_count_block);
             if (!b->hist_box || !b->hist_count)
                 goto out;
             hist_cap = hist_need;
@@ -1131,9 +1128,7 @@ static void build_median_subtree(struct pbuild *b, struct subtree *s, struct bvh
 static int build_subtree(struct pbuild *b, struct subtree *s)
 {
     const uint32_t m = s->end - s->begin;
-    /* Two nodes more, aligned to 64 (rt_align64). */
-    s->block = rt_realloc_array(NULL, 2 * (size_t)m + 1, sizeof(struct bvh_node));
-    struct bvh_node *range = rt_align64(s->block);
+    struct bvh_node *range = rt_alloc_array64(2 * (size_t)m - 1, sizeof(*range), &s->block);
     if (!range)
         return -1;
     int rc = 0;
@@ -1164,11 +1159,10 @@ static int build_deferred(struct pbuild *b, struct deferred *d)
 {
     const int bins = b->bins;
     const uint32_t axis_base[4] = {0, (uint32_t)bins * 32u, 2u * (uint32_t)bins * 32u, 0};
-    /* Two records longer, aligned to 64 (rt_align64). */
-    void *hist_box_block = rt_realloc_array(NULL, 3 * (size_t)bins + 2, 32);
-    void *hist_count_block = rt_realloc_array(NULL, 3 * (size_t)bins + 2, 32);
-    float(*hist_box)[8] = rt_align64(hist_box_block);
-    uint32_t(*hist_count)[8] = rt_align64(hist_count_block);
+    void *hist_box_block, *hist_count_block;
+    float(*hist_box)[8] = rt_alloc_array64(3 * (size_t)bins, sizeof(*hist_box), &hist_box_block);
+    uint32_t(*hist_count)[8] =
+        rt_alloc_array64(3 * (size_t)bins, sizeof(*hist_count), &hist_count_block);
     /* Depth first with the right child pushed: one entry per level below
      * the node plus one, as the serial builders' stacks. */
     struct {
@@ -1539,12 +1533,8 @@ int accel_build_parallel_ex(struct bvh *out, const struct aabb *prim_boxes, uint
     int status = -1;
     out->prim_index = rt_realloc_array(NULL, prim_count, sizeof(*out->prim_index));
     b.prim_index = out->prim_index;
-    /* Two refs more, aligned to 64 (rt_align64). */
-    for (int i = 0; i < 2; i++) {
-        b.refs_block[i] =
-            rt_realloc_array(NULL, (size_t)prim_count + 2, sizeof(struct build_ref));
-        b.refs[i] = rt_align64(b.refs_block[i]);
-    }
+    for (int i = 0; i < 2; i++)
+        b.refs[i] = rt_alloc_array64(prim_count, sizeof(struct build_ref), &b.refs_block[i]);
     plan_flat_chunks(&b, prim_count);
     b.chunk_box = rt_realloc_array(NULL, 2 * (size_t)b.chunk_count, sizeof(*b.chunk_box));
     b.top = reserve(NULL, &b.top_cap, 1, sizeof(*b.top));

@@ -40,6 +40,18 @@ static inline void *rt_align64(void *block)
     return block ? (void *)(((uintptr_t)block + 63) & ~(uintptr_t)63) : NULL;
 }
 
+/* count records of size bytes (size > 0) starting on a 64-byte boundary
+ * (rt_align64) in a block 64 bytes longer, which *block receives for
+ * rt_free; NULL (and *block NULL) on overflow or failure.  The block is
+ * rt_realloc_array's, so the heap sees the same requests as an
+ * unaligned array of count + 64 / size records. */
+static inline void *rt_alloc_array64(size_t count, size_t size, void **block)
+{
+    *block = count <= (SIZE_MAX - 64) / size ? rt_realloc_array(NULL, count * size + 64, 1)
+                                             : NULL;
+    return rt_align64(*block);
+}
+
 /* A large, long-lived, read-mostly block (an object's wide traversal
  * layout): `size` bytes aligned to 64, which on Linux come from a fresh
  * anonymous mapping aligned to 2 MB and advised for transparent huge pages
