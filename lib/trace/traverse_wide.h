@@ -716,6 +716,23 @@ static const uint8_t wide8_rows[8][6] = {WIDE8_ROWS(0, 0, 0), WIDE8_ROWS(1, 0, 0
 #undef WIDE8_RAY
 #undef WIDE8_RAY_LEAF8
 
+/* A whole single-ray walk for a ray whose tmin is not >= 0 (negative or
+ * NaN; rtTraceRays refuses both, query.c): walk_wide8_impl, whose node
+ * test folds the entry with tmin in floats.  walk_wide8_ray's integer
+ * maximum of the entry needs tmin >= +0.  The same answers and node and
+ * triangle counts as walk_wide8_ray (its comment says why); s as
+ * wide_state_init1 left it, r4 not yet set. */
+static int wide8_walk_tmin_other(const struct bvh4 *wide, struct wide_state *s, int any_hit,
+                                 int stats) WIDE_NOINLINE;
+static int wide8_walk_tmin_other(const struct bvh4 *wide, struct wide_state *s, int any_hit,
+                                 int stats)
+{
+    s->any_hit = any_hit;
+    s->box_limit = s->best * ISECT_BOX_FAR_SCALE;
+    tri4_ray_init(&s->r4, s->ray);
+    return stats ? walk_wide8_impl(wide, s, 0, 0, 1) : walk_wide8_impl(wide, s, 0, 0, 0);
+}
+
 /* The end of a whole single-ray walk (WIDE8_WALK, WIDE8_WALK1): its
  * counts added to the caller's when the copy counts, and its answer. */
 #if defined(__GNUC__)
@@ -741,6 +758,9 @@ static inline int wide8_walk_end(const struct wide_state *s, int done, int any_h
     {                                                                                           \
         struct wide_state s;                                                                    \
         wide_state_init1(&s, ray, t_max, any_hit, stats, hit);                                  \
+        if (!(ray->tmin >= 0.0f))                                                               \
+            return wide8_walk_end(&s, wide8_walk_tmin_other(wide, &s, any_hit, stats), any_hit, \
+                                  stats, counters);                                             \
         if (any_hit)                                                                            \
             tri4_ray_init(&s.r4, ray);                                                          \
         const int done = walk(wide, &s, any_hit, stats, leave_early, NULL);                     \
@@ -895,6 +915,9 @@ static inline void tri4_ray_init_lanes(struct tri4_ray *r, const struct ray_lane
         trace_ray_setup_lanes(&ray, &lanes, org, dir, tmin);                                    \
         struct wide_state s;                                                                    \
         wide_state_init1(&s, &ray, t_max, any_hit, stats, hit);                                 \
+        if (!(tmin >= 0.0f))                                                                    \
+            return wide8_walk_end(&s, wide8_walk_tmin_other(wide, &s, any_hit, stats), any_hit, \
+                                  stats, counters);                                             \
         if (any_hit)                                                                            \
             tri4_ray_init_lanes(&s.r4, &lanes, tmin);                                           \
         const int done = walk(wide, &s, any_hit, stats, leave_early, &lanes);                   \

@@ -107,15 +107,41 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
             const __m256 inv_x = _mm256_set1_ps(rv->inv_dir[0]);
             const __m256 inv_y = _mm256_set1_ps(rv->inv_dir[1]);
             const __m256 inv_z = _mm256_set1_ps(rv->inv_dir[2]);
-            const __m256 tmin8 = _mm256_set1_ps(rv->tmin);
+            /* tmin's bits for the entry's integer maximum (below): only
+             * rays with tmin >= 0 come here (the others take
+             * wide8_walk_tmin_other), and -0 becomes +0, the same number. */
+            const __m256i tmin8 = _mm256_max_epi32(
+                _mm256_castps_si256(_mm256_set1_ps(rv->tmin)), _mm256_setzero_si256());
             /* Inner nodes until a leaf lane comes up (or the stack empties). */
             while (!cur_count) {
                 const struct bvh8_node *n = &nodes[cur];
                 const char *b = (const char *)(const void *)n->bounds;
                 if (stats)
                     node_tests += 8;
-                /* isect_box's order: entry max(z, max(y, max(x, tmin))),
-                 * exit min(z, min(y, min(x, inf))) (see the file's head). */
+                /* isect_box's slabs, bit for bit: (bound - org) * inv per
+                 * plane.  Its entry max(z, max(y, max(x, tmin))) and exit
+                 * min(z, min(y, min(x, inf))) * scale, clamped to
+                 * box_limit, are four and five dependent operations of 4
+                 * cycles each, which every node's choice of child waits
+                 * for (perf, AVX-512: the samples sit on the movemask and
+                 * the branch after that chain).  The same decision in
+                 * fewer steps:
+                 * - the entry as a signed integer maximum (1 cycle):
+                 *   with tmin >= +0 the maximum is >= +0, where the
+                 *   integer order of the bits is the float order, and
+                 *   every negative float, and the NaN of 0 * inf (an
+                 *   origin on a plane of a zero direction; x86's default
+                 *   NaN has the sign bit set), is a negative integer that
+                 *   loses, as isect_box's `a > b ? a : b` skips a NaN.
+                 *   Bounds are never NaN (bvh_build.h's contract), so
+                 *   no other NaN arises; a -0 entry may come out +0, the
+                 *   same number for every comparison made with it;
+                 * - entry <= min(s * min(far x, y, z), limit) as four
+                 *   comparisons ANDed: rounding s * t is monotonic, so
+                 *   s * min(a, b) = min(s * a, s * b), and entry <= min
+                 *   holds when it holds against each; a far NaN (skipped
+                 *   by the exit's fold, the inf taking its place) passes
+                 *   its comparison as unordered (!(entry > far)). */
                 const __m256 tnx =
                     _mm256_mul_ps(_mm256_add_ps(neg_org_x, wide8_bound(b, near_x)), inv_x);
                 const __m256 tfx =
@@ -128,12 +154,15 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                     _mm256_mul_ps(_mm256_add_ps(neg_org_z, wide8_bound(b, near_z)), inv_z);
                 const __m256 tfz =
                     _mm256_mul_ps(_mm256_add_ps(neg_org_z, wide8_bound(b, far_z)), inv_z);
-                const __m256 t0 = _mm256_max_ps(tnz, _mm256_max_ps(tny, _mm256_max_ps(tnx, tmin8)));
-                __m256 t1 = _mm256_min_ps(
-                    tfz, _mm256_min_ps(tfy, _mm256_min_ps(tfx, _mm256_set1_ps(INFINITY))));
-                t1 = _mm256_mul_ps(t1, _mm256_set1_ps(ISECT_BOX_FAR_SCALE));
-                t1 = _mm256_min_ps(t1, _mm256_set1_ps(box_limit));
-                const __m256 hit = _mm256_cmp_ps(t0, t1, _CMP_LE_OQ);
+                const __m256 t0 = _mm256_castsi256_ps(_mm256_max_epi32(
+                    _mm256_max_epi32(_mm256_castps_si256(tnx), _mm256_castps_si256(tny)),
+                    _mm256_max_epi32(_mm256_castps_si256(tnz), tmin8)));
+                const __m256 scale = _mm256_set1_ps(ISECT_BOX_FAR_SCALE);
+                const __m256 hit = _mm256_and_ps(
+                    _mm256_and_ps(_mm256_cmp_ps(t0, _mm256_set1_ps(box_limit), _CMP_LE_OQ),
+                                  _mm256_cmp_ps(t0, _mm256_mul_ps(tfx, scale), _CMP_NGT_UQ)),
+                    _mm256_and_ps(_mm256_cmp_ps(t0, _mm256_mul_ps(tfy, scale), _CMP_NGT_UQ),
+                                  _mm256_cmp_ps(t0, _mm256_mul_ps(tfz, scale), _CMP_NGT_UQ)));
                 const unsigned mask = (unsigned)_mm256_movemask_ps(hit);
                 if (mask) {
                     if (!(mask & (mask - 1u))) {
