@@ -158,12 +158,32 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                     _mm256_max_epi32(_mm256_castps_si256(tnx), _mm256_castps_si256(tny)),
                     _mm256_max_epi32(_mm256_castps_si256(tnz), tmin8)));
                 const __m256 scale = _mm256_set1_ps(ISECT_BOX_FAR_SCALE);
+#if defined(__AVX512VL__) && defined(__AVX512DQ__)
+                /* AVX-512: the four comparisons into mask registers and
+                 * ANDed there as a tree (kandb), one kmovb; the lanes as a
+                 * vector only where a push needs them.  The empty asm
+                 * keeps the four masks apart: without it GCC chains the
+                 * compares as masked compares (vcmpps ... %k1{%k1}), four
+                 * dependent compares, which was no faster than the
+                 * vector form below. */
+                __mmask8 k0 = _mm256_cmp_ps_mask(t0, _mm256_set1_ps(box_limit), _CMP_LE_OQ);
+                __mmask8 k1 = _mm256_cmp_ps_mask(t0, _mm256_mul_ps(tfx, scale), _CMP_NGT_UQ);
+                __mmask8 k2 = _mm256_cmp_ps_mask(t0, _mm256_mul_ps(tfy, scale), _CMP_NGT_UQ);
+                __mmask8 k3 = _mm256_cmp_ps_mask(t0, _mm256_mul_ps(tfz, scale), _CMP_NGT_UQ);
+#if defined(__GNUC__)
+                __asm__("" : "+k"(k0), "+k"(k1), "+k"(k2), "+k"(k3));
+#endif
+                const unsigned mask =
+                    (unsigned)_kand_mask8(_kand_mask8(k0, k1), _kand_mask8(k2, k3));
+                const __m256 hit = _mm256_castsi256_ps(_mm256_movm_epi32((__mmask8)mask));
+#else
                 const __m256 hit = _mm256_and_ps(
                     _mm256_and_ps(_mm256_cmp_ps(t0, _mm256_set1_ps(box_limit), _CMP_LE_OQ),
                                   _mm256_cmp_ps(t0, _mm256_mul_ps(tfx, scale), _CMP_NGT_UQ)),
                     _mm256_and_ps(_mm256_cmp_ps(t0, _mm256_mul_ps(tfy, scale), _CMP_NGT_UQ),
                                   _mm256_cmp_ps(t0, _mm256_mul_ps(tfz, scale), _CMP_NGT_UQ)));
                 const unsigned mask = (unsigned)_mm256_movemask_ps(hit);
+#endif
                 if (mask) {
                     if (!(mask & (mask - 1u))) {
                         const unsigned l = (unsigned)__builtin_ctz(mask);
