@@ -540,22 +540,23 @@ static inline void wide8_push(const struct bvh8_node *n, int octant, __m256 hit,
 
 /*
  * wide8_push for an any-hit walk: the hit children in the node's stored
- * order (lowest lane first), not the octant's.  An any-hit walk ends at
- * its first hit and, until then, visits every box its interval reaches
- * whatever the order (its box limit never shrinks), so the order changes
- * only how soon an occluded ray stops, never the answer; nearest-first
- * buys little there (SATO, Nah and Manocha 2014, orders any-hit
- * children by surface area instead), and the stored order saves the
- * octant's permutation (about a dozen instructions per push).
+ * order (lowest lane first), not the octant's.  pm: the hit lanes' mask
+ * as the node test has it (on AVX-512 a mask register's: no round trip
+ * through a vector and a movemask before the next child is known).  An
+ * any-hit walk ends at its first hit and, until then, visits every box
+ * its interval reaches whatever the order (its box limit never shrinks),
+ * so the order changes only how soon an occluded ray stops, never the
+ * answer; nearest-first buys little there (SATO, Nah and Manocha 2014,
+ * orders any-hit children by surface area instead), and the stored order
+ * saves the octant's permutation (about a dozen instructions per push).
  */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline void wide8_push_stored(const struct bvh8_node *n, __m256 hit, __m256 t0,
+static inline void wide8_push_stored(const struct bvh8_node *n, unsigned pm, __m256 t0,
                                      uint32_t *st_child, uint32_t *st_count, float *st_t,
                                      uint32_t *sp, uint32_t *cur, uint32_t *cur_count)
 {
-    const unsigned pm = (unsigned)_mm256_movemask_ps(hit);
     const __m256i gather = _mm256_cvtepu8_epi32(
         _mm_loadl_epi64((const __m128i *)(const void *)&wide8_compress[pm]));
     wide8_store(n, gather, t0, pm, st_child, st_count, st_t, sp);
