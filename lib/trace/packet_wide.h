@@ -108,7 +108,7 @@ struct packet_state {
     uint64_t triangle_tests; /* those of packet_leaf8, for all its rays */
     /* The interval walk (packet_walk8_ia): the packet's bounds per axis
      * (broadcast), and the rays in the lanes for the leaf boxes. */
-    __m256 ia_o_lo[3], ia_o_hi[3], ia_i_lo[3], ia_i_hi[3], ia_tmin;
+    __m256 ia_o_near[3], ia_o_far[3], ia_i_lo[3], ia_i_hi[3], ia_tmin;
     __m256 ia_i_near[3]; /* i_lo (inv > 0) or i_hi (inv < 0): packet_ia_init */
     __m256 lane_f[TRI8_F_COUNT]; /* the rays' fields in the lanes (tri8_lanes_load) */
     int ia_masks; /* rays from more than one origin: see packet_walk8_ia */
@@ -741,8 +741,8 @@ static inline int packet_ia_init(struct packet_state *p, unsigned active,
         const __m256i at_i = _mm256_set1_epi32(fi % 8);
         const __m256 o_lo = _mm256_permutevar8x32_ps(f_min[0], at_o);
         const __m256 o_hi = _mm256_permutevar8x32_ps(f_max[0], at_o);
-        p->ia_o_lo[k] = o_lo;
-        p->ia_o_hi[k] = o_hi;
+        p->ia_o_near[k] = neg ? o_lo : o_hi;
+        p->ia_o_far[k] = neg ? o_hi : o_lo;
         p->ia_i_lo[k] = _mm256_permutevar8x32_ps(f_min[fi / 8], at_i);
         p->ia_i_hi[k] = _mm256_permutevar8x32_ps(f_max[fi / 8], at_i);
         p->ia_i_near[k] = neg ? p->ia_i_hi[k] : p->ia_i_lo[k];
@@ -928,24 +928,10 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
             __m256 t0 = p->ia_tmin;
             __m256 t1 = inf8;
             for (int k = 0; k < 3; k++) {
-                /* The near row minus the origins' near end, the far row
-                 * minus their far end: with inv > 0 the low row minus
-                 * o_hi and the high row minus o_lo, with inv < 0 the
-                 * other way round, which is the same two differences
-                 * swapped.  So both are taken from rows at fixed
-                 * offsets and swapped by the axis' sign (the sign bit
-                 * of ia_i_near, which is all blendv reads), the
-                 * same bits as from the octant's rows.  Loading those
-                 * through the row offsets took about 20 integer
-                 * instructions a node (the offsets reloaded, added and
-                 * spilled by GCC), the blends fewer: AVX2 instructions a
-                 * ray of rtbench's packets -0.5 % (gears' camera
-                 * packets) to -1.4 % (docs/performance-log.md, pk6). */
-                const __m256 d_lo = _mm256_sub_ps(_mm256_load_ps(n->bounds[k]), p->ia_o_hi[k]);
-                const __m256 d_hi =
-                    _mm256_sub_ps(_mm256_load_ps(n->bounds[3 + k]), p->ia_o_lo[k]);
-                const __m256 dn = _mm256_blendv_ps(d_lo, d_hi, p->ia_i_near[k]);
-                const __m256 df = _mm256_blendv_ps(d_hi, d_lo, p->ia_i_near[k]);
+                const __m256 dn = _mm256_sub_ps(_mm256_load_ps(wide_row(n->bounds, near_row[k])),
+                                                p->ia_o_near[k]);
+                const __m256 df = _mm256_sub_ps(_mm256_load_ps(wide_row(n->bounds, far_row[k])),
+                                                p->ia_o_far[k]);
                 /* One product for the near end (packet_ia_init). */
                 const __m256 tn = _mm256_mul_ps(dn, p->ia_i_near[k]);
                 const __m256 tf = _mm256_max_ps(_mm256_mul_ps(df, p->ia_i_lo[k]),
