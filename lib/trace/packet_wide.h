@@ -1058,8 +1058,9 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                      * answer (found or not).  Measured
                      * (docs/performance-log.md, pk6): AVX2 instructions
                      * a ray of rtbench's shadow packets -3.7 % (gears)
-                     * to -6.8 % (bumpy): the order's decoding gone, and
-                     * fewer inner nodes visited (kitchen -4.8 %). */
+                     * to -14.6 % (the soup): the order's decoding gone,
+                     * and fewer inner nodes visited (kitchen -4.8 %);
+                     * shadow packets 3-32 % faster on the clock. */
                     unsigned m = push;
                     for (;;) {
                         const unsigned l = (unsigned)__builtin_ctz(m);
