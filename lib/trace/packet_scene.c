@@ -46,6 +46,11 @@ struct packet_top {
      * (plain_ready): a scene without one does not pay for them. */
     unsigned plain[2];
     int plain_ready;
+    /* 1 once the world rays are set up (world_setup): ray, the rows, the
+     * octants, top's lanes.  A top level of one leaf visits its
+     * instances before that, and an identity instance's object walk then
+     * sets the rays up itself from the caller's arrays (visit_direct). */
+    int ready;
     /* 1 when every live ray has one octant and a finite origin: the top
      * level's nodes are then tested box by box (lanes_by_box, or the
      * table's top_lanes). */
@@ -151,11 +156,14 @@ static unsigned plain_rays(struct packet_top *s, uint32_t identity)
     return s->plain[identity - 1u];
 }
 
+static void world_setup(struct packet_top *s);
+
 /* Instance slot `index` for the rays of mask `rays`. */
 static void visit_instance(struct packet_top *s, uint32_t index, unsigned rays)
 {
     const struct trace_scene *scene = s->scene;
     if (scene->instances[index].member_count) {
+        world_setup(s);
         visit_group(s, &scene->instances[index], rays);
         return;
     }
@@ -166,11 +174,30 @@ static void visit_instance(struct packet_top *s, uint32_t index, unsigned rays)
     counters->instance_tests += (uint64_t)popcount(rays);
     if (!scene->acquire(scene->user, inst->object, &view))
         return;
+    /* An instance the scene's hit filter marks: every ray takes the
+     * closest-hit walk, any-hit rays too, and then filter_lanes, as the
+     * single walk's visit_instance does. */
+    const int filtered =
+        scene->filtered && (scene->filtered[inst->instance_id] & scene->filter_mask);
+    const int wide = view.wide && view.wide->node_count && k->closest4;
+    /* Before the world set-up (a top level of one leaf, walk: every live
+     * ray of trace_scene_plain_class's exact class), an identity instance
+     * of the exact kind would take each world ray as it is: the table's
+     * packet walk from the caller's arrays sets the rays up itself, the
+     * same rays bit for bit as packet_init's (packet.h), straight into
+     * its lanes (no rays' structs stored and loaded back). */
+    const int direct = !s->ready && inst->identity == TRACE_IDENTITY_EXACT && wide &&
+                       !filtered && several(rays);
+    if (!direct)
+        world_setup(s);
     struct trace_ray rays_o[TRACE_PACKET];
     const struct trace_ray *o_ray = rays_o;
     float limit[TRACE_PACKET];
     unsigned live = 0;
-    if (inst->identity && !(rays & ~plain_rays(s, inst->identity))) {
+    if (direct) {
+        o_ray = NULL;
+        live = rays;
+    } else if (inst->identity && !(rays & ~plain_rays(s, inst->identity))) {
         /* trace_scene_object_ray would copy each world ray as it is. */
         o_ray = s->ray;
         live = rays;
@@ -186,35 +213,38 @@ static void visit_instance(struct packet_top *s, uint32_t index, unsigned rays)
                 live |= 1u << r;
         }
     }
-    /* visit_instance's limits: an equal t at a lower instance still comes
-     * back, one ulp above the best. */
-    for (unsigned m = live; m; m &= m - 1u) {
-        const int r = first(m);
-        limit[r] = !s->any_hit && (s->found >> r & 1u) ? isect_next_up(s->best[r]) : s->best[r];
-    }
     if (!live)
         return;
-    /* An instance the scene's hit filter marks: every ray takes the
-     * closest-hit walk, any-hit rays too, and then filter_lanes, as the
-     * single walk's visit_instance does. */
-    const int filtered =
-        scene->filtered && (scene->filtered[inst->instance_id] & scene->filter_mask);
-    const int wide = view.wide && view.wide->node_count && k->closest4;
+    /* visit_instance's limits: an equal t at a lower instance still comes
+     * back, one ulp above the best.  Without a closest hit yet (any-hit
+     * walks, an instance visited first) they are the bests themselves. */
+    const float *lim = s->best;
+    if (!s->any_hit && (s->found & live)) {
+        for (unsigned m = live; m; m &= m - 1u) {
+            const int r = first(m);
+            limit[r] = s->found >> r & 1u ? isect_next_up(s->best[r]) : s->best[r];
+        }
+        lim = limit;
+    }
     /* RT_AUTOMATIC's count of the rays reaching inside the object, as the
      * single walk's visit_instance counts them. */
     const uint64_t tests_before = counters->object.node_tests;
     const uint32_t root_tests = wide ? view.wide->width : 1;
     if (s->any_hit && !filtered) {
         unsigned hit = 0;
-        if (wide && several(live)) {
-            hit = k->any_packet(view.wide, view.bvh, view.tri, o_ray, limit, live,
+        if (direct) {
+            hit = k->any_packet_arrays(view.wide, view.bvh, view.tri, s->p->org, s->p->dir,
+                                       s->p->tmin, lim, live, TRACE_PACKET_HYBRID,
+                                       &counters->object);
+        } else if (wide && several(live)) {
+            hit = k->any_packet(view.wide, view.bvh, view.tri, o_ray, lim, live,
                                 TRACE_PACKET_HYBRID, &counters->object);
         } else {
             for (unsigned m = live; m; m &= m - 1u) {
                 const int r = first(m);
-                if (wide ? k->any4(view.wide, view.bvh, view.tri, &o_ray[r], limit[r],
+                if (wide ? k->any4(view.wide, view.bvh, view.tri, &o_ray[r], lim[r],
                                    &counters->object)
-                         : k->any(view.bvh, view.tri, &o_ray[r], limit[r], &counters->object))
+                         : k->any(view.bvh, view.tri, &o_ray[r], lim[r], &counters->object))
                     hit |= 1u << r;
             }
         }
@@ -226,15 +256,19 @@ static void visit_instance(struct packet_top *s, uint32_t index, unsigned rays)
     }
     struct trace_hit h[TRACE_PACKET];
     unsigned got = 0;
-    if (wide && several(live)) {
-        got = k->closest_packet(view.wide, view.bvh, view.tri, o_ray, limit, live,
+    if (direct) {
+        got = k->closest_packet_arrays(view.wide, view.bvh, view.tri, s->p->org, s->p->dir,
+                                       s->p->tmin, lim, live, TRACE_PACKET_HYBRID, h,
+                                       &counters->object);
+    } else if (wide && several(live)) {
+        got = k->closest_packet(view.wide, view.bvh, view.tri, o_ray, lim, live,
                                 TRACE_PACKET_HYBRID, h, &counters->object);
     } else {
         for (unsigned m = live; m; m &= m - 1u) {
             const int r = first(m);
-            if (wide ? k->closest4(view.wide, view.bvh, view.tri, &o_ray[r], limit[r], &h[r],
+            if (wide ? k->closest4(view.wide, view.bvh, view.tri, &o_ray[r], lim[r], &h[r],
                                    &counters->object)
-                     : k->closest(view.bvh, view.tri, &o_ray[r], limit[r], &h[r],
+                     : k->closest(view.bvh, view.tri, &o_ray[r], lim[r], &h[r],
                                   &counters->object))
                 got |= 1u << r;
         }
@@ -243,7 +277,7 @@ static void visit_instance(struct packet_top *s, uint32_t index, unsigned rays)
         trace_scene_count_rays(counters, view.ray_count, tests_before, root_tests,
                                (uint32_t)popcount(live));
     if (filtered)
-        got = filter_lanes(s, index, &view, o_ray, limit, got, h);
+        got = filter_lanes(s, index, &view, o_ray, lim, got, h);
     if (s->any_hit) {
         s->done |= got;
         return;
@@ -413,6 +447,134 @@ static void walk_top(struct packet_top *s, const struct bvh4 *wide, unsigned act
     }
 }
 
+/* The world rays' set-up, once a packet and only when something needs it
+ * (the top level's walk, a transformed instance, a flattened group, a hit
+ * filter): rays[r] as trace_ray_init sets them up (the table's
+ * packet_init, eight at a time), the rows and octant of each ray, and
+ * the top level's lanes.  best and box_limit are not touched: a top level
+ * of one leaf may have merged hits into them before. */
+static void world_setup(struct packet_top *s)
+{
+    if (s->ready)
+        return;
+    s->ready = 1;
+    const struct trace_kernels *k = s->kernels;
+    const struct trace_packet *p = s->p;
+    const unsigned live = s->live;
+#if ISECT_PAIR_SSE
+    unsigned octants = 0; /* lanes_by_box's condition, with origin_probe */
+    float origin_probe = 0.0f;
+#endif
+    /* The table's set-up of all the rays at once, where it has one. */
+    const int at_once = k->packet_init != NULL;
+#if ISECT_PAIR_SSE
+    unsigned finite_org = 0;
+#endif
+    if (at_once) {
+        struct trace_packet_plain plain;
+        k->packet_init(p->org, p->dir, p->tmin, live, s->ray, &s->top, &plain);
+        s->plain[0] = plain.zeros;
+        s->plain[1] = plain.exact;
+        s->plain_ready = 1;
+#if ISECT_PAIR_SSE
+        finite_org = plain.finite_org;
+#endif
+    }
+    for (unsigned m = live; m; m &= m - 1u) {
+        const int r = first(m);
+        if (!at_once)
+            trace_ray_init(&s->ray[r], p->org[r], p->dir[r], p->tmin[r]);
+        s->octant[r] = trace_scene_box_rows(&s->ray[r], s->near_row[r], s->far_row[r]);
+#if ISECT_PAIR_SSE
+        /* Without packet_init's masks: x - x is +0.0 for a finite x and a
+         * NaN for an infinity or a NaN, so the sum over the origins'
+         * components stays 0 when all are finite. */
+        if (!at_once)
+            origin_probe += (p->org[r][0] - p->org[r][0]) + (p->org[r][1] - p->org[r][1]) +
+                            (p->org[r][2] - p->org[r][2]);
+        /* lanes_by_box's rays across lanes (packet_init's already), and
+         * its condition. */
+        if (!at_once) {
+            s->top.tmin[r] = s->ray[r].tmin;
+            for (int a = 0; a < 3; a++) {
+                s->top.org[a][r] = s->ray[r].org[a];
+                s->top.inv_dir[a][r] = s->ray[r].inv_dir[a];
+            }
+        }
+        octants |= 1u << s->octant[r];
+#endif
+    }
+#if ISECT_PAIR_SSE
+    /* The lanes of the rays left out hold zeros, which it masks out. */
+    for (unsigned m = ~live & ((1u << TRACE_PACKET) - 1u); m; m &= m - 1u) {
+        const int r = first(m);
+        s->top.tmin[r] = s->top.box_limit[r] = 0.0f;
+        for (int a = 0; a < 3; a++)
+            s->top.org[a][r] = s->top.inv_dir[a][r] = 0.0f;
+    }
+    const int finite_origins = at_once ? finite_org == live : origin_probe == 0.0f;
+    s->across = finite_origins && !(octants & (octants - 1u));
+    if (s->across && live)
+        trace_scene_box_rows(&s->ray[first(live)], s->top.near_row, s->top.far_row);
+#else
+    s->across = 0;
+#endif
+}
+
+/*
+ * The rays of `live` that trace_scene_plain_class puts in the class
+ * TRACE_IDENTITY_EXACT (every component finite, none -0.0, the direction
+ * not zero), from all eight rays' arrays at once: each float's bits
+ * tested as trace_scene_plain_class tests them (a magnitude below the
+ * infinity's bits is finite; -0.0 is the bits 0x80000000), the 24
+ * components of each array in six registers, float 3r + k in bit 3r + k
+ * of a mask; a ray is out when one of its three bits is set in the
+ * origins' or the directions' mask of bad components, or all three in
+ * the mask of the directions' zeros.  The lanes of rays not in `live`
+ * are read too (any bits) and masked out.  Ray by ray the class cost
+ * about 20 instructions a ray.
+ */
+static unsigned exact_rays(const struct trace_packet *p, unsigned live)
+{
+#if ISECT_PAIR_SSE
+    const __m128i magnitude = _mm_set1_epi32(0x7fffffff);
+    const __m128i inf = _mm_set1_epi32(0x7f800000);
+    const __m128i sign = _mm_set1_epi32((int)0x80000000u);
+    const __m128i zero = _mm_setzero_si128();
+    uint32_t bad = 0, dir_zero = 0;
+    const float *o = &p->org[0][0], *d = &p->dir[0][0];
+    for (int q = 0; q < 6; q++) {
+        const __m128i vo = _mm_castps_si128(_mm_loadu_ps(o + 4 * q));
+        const __m128i vd = _mm_castps_si128(_mm_loadu_ps(d + 4 * q));
+        const __m128i md = _mm_and_si128(vd, magnitude);
+        /* Not finite (the magnitude at or above the infinity's bits, as
+         * signed integers: the magnitude's sign bit is clear) or -0.0. */
+        const __m128i bo = _mm_or_si128(
+            _mm_cmpeq_epi32(_mm_cmplt_epi32(_mm_and_si128(vo, magnitude), inf), zero),
+            _mm_cmpeq_epi32(vo, sign));
+        const __m128i bd = _mm_or_si128(_mm_cmpeq_epi32(_mm_cmplt_epi32(md, inf), zero),
+                                        _mm_cmpeq_epi32(vd, sign));
+        bad |= (uint32_t)_mm_movemask_ps(_mm_castsi128_ps(_mm_or_si128(bo, bd))) << (4 * q);
+        dir_zero |= (uint32_t)_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(md, zero)))
+                    << (4 * q);
+    }
+    /* Bit 3r: ray r has a bad component, or a zero direction. */
+    const uint32_t out = ((bad | bad >> 1 | bad >> 2) | (dir_zero & dir_zero >> 1 & dir_zero >> 2));
+    unsigned exact = 0;
+    for (int r = 0; r < TRACE_PACKET; r++)
+        exact |= (~out >> (3 * r) & 1u) << r;
+    return exact & live;
+#else
+    unsigned exact = 0;
+    for (unsigned m = live; m; m &= m - 1u) {
+        const int r = first(m);
+        if (trace_scene_plain_class(p->org[r], p->dir[r]) & TRACE_IDENTITY_EXACT)
+            exact |= 1u << r;
+    }
+    return exact;
+#endif
+}
+
 static unsigned walk(const struct trace_scene *scene, const struct trace_packet *p, int any_hit,
                      struct trace_scene_hit *hits, struct trace_scene_counters *counters)
 {
@@ -445,76 +607,39 @@ static unsigned walk(const struct trace_scene *scene, const struct trace_packet 
     s.done = 0;
     s.plain[0] = s.plain[1] = 0;
     s.plain_ready = 0;
+    s.ready = 0;
+    counters->rays += (uint64_t)popcount(active);
     unsigned live = 0;
-#if ISECT_PAIR_SSE
-    unsigned octants = 0; /* lanes_by_box's condition, with origin_probe */
-    float origin_probe = 0.0f;
-#endif
     for (unsigned m = active; m; m &= m - 1u) {
         const int r = first(m);
-        counters->rays++;
         if (p->tmin[r] < p->tmax[r])
             live |= 1u << r; /* else trace_scene_closest's early miss */
-    }
-    s.live = live;
-    /* The table's set-up of all the rays at once, where it has one. */
-    const int at_once = k->packet_init != NULL;
-#if ISECT_PAIR_SSE
-    unsigned finite_org = 0;
-#endif
-    if (at_once) {
-        struct trace_packet_plain plain;
-        k->packet_init(p->org, p->dir, p->tmin, live, s.ray, &s.top, &plain);
-        s.plain[0] = plain.zeros;
-        s.plain[1] = plain.exact;
-        s.plain_ready = 1;
-#if ISECT_PAIR_SSE
-        finite_org = plain.finite_org;
-#endif
-    }
-    for (unsigned m = live; m; m &= m - 1u) {
-        const int r = first(m);
-        if (!at_once)
-            trace_ray_init(&s.ray[r], p->org[r], p->dir[r], p->tmin[r]);
         s.best[r] = p->tmax[r];
         s.top.box_limit[r] = p->tmax[r];
-        s.octant[r] = trace_scene_box_rows(&s.ray[r], s.near_row[r], s.far_row[r]);
-#if ISECT_PAIR_SSE
-        /* Without packet_init's masks: x - x is +0.0 for a finite x and a
-         * NaN for an infinity or a NaN, so the sum over the origins'
-         * components stays 0 when all are finite. */
-        if (!at_once)
-            origin_probe += (p->org[r][0] - p->org[r][0]) + (p->org[r][1] - p->org[r][1]) +
-                            (p->org[r][2] - p->org[r][2]);
-        /* lanes_by_box's rays across lanes (packet_init's already), and
-         * its condition. */
-        if (!at_once) {
-            s.top.tmin[r] = s.ray[r].tmin;
-            for (int a = 0; a < 3; a++) {
-                s.top.org[a][r] = s.ray[r].org[a];
-                s.top.inv_dir[a][r] = s.ray[r].inv_dir[a];
-            }
+    }
+    s.live = live;
+    if (!live)
+        return 0;
+    /* A top level of one leaf (a scene of one instance), as the single
+     * walk takes it (scene_traverse.c, walk): its box test would only
+     * repeat what each instance's walk tests (it culls, it never decides
+     * a hit), so when every ray is of the class the single walk asks for
+     * there, the leaf's instances are visited at once, and an identity
+     * instance's object walk sets the rays up itself from the caller's
+     * arrays (visit_instance); the world set-up is made only when
+     * something needs it.  RT_STAT_NODE_TESTS counts the tests made. */
+    const struct bvh_node *root = &top->nodes[0];
+    if (root->count && k->closest_packet_arrays && k->any_packet_arrays &&
+        exact_rays(p, live) == live) {
+        unsigned rays = live;
+        for (uint32_t i = 0; i < root->count && rays; i++) {
+            visit_instance(&s, top->prim_index[root->first + i], rays);
+            rays &= ~s.done;
         }
-        octants |= 1u << s.octant[r];
-#endif
+        return any_hit ? s.done : s.found;
     }
-#if ISECT_PAIR_SSE
-    /* The lanes of the rays left out hold zeros, which it masks out. */
-    for (unsigned m = ~live & ((1u << TRACE_PACKET) - 1u); m; m &= m - 1u) {
-        const int r = first(m);
-        s.top.tmin[r] = s.top.box_limit[r] = 0.0f;
-        for (int a = 0; a < 3; a++)
-            s.top.org[a][r] = s.top.inv_dir[a][r] = 0.0f;
-    }
-    const int finite_origins = at_once ? finite_org == live : origin_probe == 0.0f;
-    s.across = finite_origins && !(octants & (octants - 1u));
-    if (s.across && live)
-        trace_scene_box_rows(&s.ray[first(live)], s.top.near_row, s.top.far_row);
-#else
-    s.across = 0;
-#endif
-    if (live)
-        walk_top(&s, wide, live);
+    world_setup(&s);
+    walk_top(&s, wide, live);
     return any_hit ? s.done : s.found;
 }
 
