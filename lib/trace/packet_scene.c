@@ -34,9 +34,9 @@ struct packet_top {
     struct trace_scene_counters *counters;
     struct trace_ray ray[TRACE_PACKET];
     float best[TRACE_PACKET];
-    int near_row[TRACE_PACKET][3];
-    int far_row[TRACE_PACKET][3];
-    int octant[TRACE_PACKET];
+    /* The rays whose inv_dir[k] is negative (sign bit set), per axis k:
+     * a ray's octant (trace_scene_box_rows) is bit r of each. */
+    unsigned neg[3];
     unsigned found;
     unsigned done;  /* any hit: the rays with their hit */
     unsigned live; /* the rays traced (active, tmin < tmax) */
@@ -282,16 +282,20 @@ static void visit_instance(struct packet_top *s, uint32_t index, unsigned rays)
         s->done |= got;
         return;
     }
-    for (unsigned m = got; m; m &= m - 1u) {
+    /* visit_instance's rule: a ray's first hit is taken; a later one when
+     * nearer, or as near at a lower instance. */
+    unsigned take = got & ~s->found;
+    for (unsigned m = got & s->found; m; m &= m - 1u) {
+        const int r = first(m);
+        if (h[r].t < s->best[r] || inst->instance_id < trace_scene_hit_id(scene, &s->hits[r]))
+            take |= 1u << r;
+    }
+    s->found |= take;
+    for (unsigned m = take; m; m &= m - 1u) {
         const int r = first(m);
         struct trace_scene_hit *hit = &s->hits[r];
-        const int found = s->found >> r & 1u;
-        if (found && !(h[r].t < s->best[r] ||
-                       inst->instance_id < trace_scene_hit_id(scene, hit)))
-            continue;
         s->best[r] = h[r].t;
         s->top.box_limit[r] = h[r].t * ISECT_BOX_FAR_SCALE;
-        s->found |= 1u << r;
         hit->t = h[r].t;
         hit->u = h[r].u;
         hit->v = h[r].v;
@@ -355,6 +359,13 @@ static void lanes_by_box(const struct trace_top_rays *q, const float *bounds, ui
 }
 #endif
 
+/* Ray r's octant, as trace_scene_box_rows gives it (bit k: inv_dir[k]
+ * negative). */
+static int octant_of(const struct packet_top *s, int r)
+{
+    return (int)((s->neg[0] >> r & 1u) | (s->neg[1] >> r & 1u) << 1 | (s->neg[2] >> r & 1u) << 2);
+}
+
 /* The packet walk of the wide top level (scene_traverse.c's walk_wide,
  * ray by ray inside each node, or box by box: lanes_by_box). */
 static void walk_top(struct packet_top *s, const struct bvh4 *wide, unsigned active)
@@ -382,7 +393,7 @@ static void walk_top(struct packet_top *s, const struct bvh4 *wide, unsigned act
             const uint32_t *child;
             const uint8_t *count;
             uint32_t order;
-            const int octant = s->octant[first(rays)];
+            const int octant = octant_of(s, first(rays));
             order = trace_scene_wide_node(wide, width, cur, octant, &bounds, &child, &count);
             unsigned lane_rays[8] = {0, 0, 0, 0, 0, 0, 0, 0};
             float t_min[8];
@@ -400,9 +411,10 @@ static void walk_top(struct packet_top *s, const struct bvh4 *wide, unsigned act
             for (unsigned m = rays; m; m &= m - 1u) {
                 const int r = first(m);
                 float te[8];
+                int near_row[3], far_row[3];
+                trace_scene_box_rows(&s->ray[r], near_row, far_row);
                 counters->top_node_tests += width;
-                unsigned in = s->kernels->top_lanes1(bounds, width, s->near_row[r],
-                                                     s->far_row[r], &s->ray[r],
+                unsigned in = s->kernels->top_lanes1(bounds, width, near_row, far_row, &s->ray[r],
                                                      s->top.box_limit[r], te);
                 for (; in; in &= in - 1u) {
                     const int l = first(in);
@@ -462,14 +474,14 @@ static void world_setup(struct packet_top *s)
     const struct trace_packet *p = s->p;
     const unsigned live = s->live;
 #if ISECT_PAIR_SSE
-    unsigned octants = 0; /* lanes_by_box's condition, with origin_probe */
-    float origin_probe = 0.0f;
+    float origin_probe = 0.0f; /* lanes_by_box's condition without packet_init */
 #endif
     /* The table's set-up of all the rays at once, where it has one. */
     const int at_once = k->packet_init != NULL;
 #if ISECT_PAIR_SSE
     unsigned finite_org = 0;
 #endif
+    s->neg[0] = s->neg[1] = s->neg[2] = 0;
     if (at_once) {
         struct trace_packet_plain plain;
         k->packet_init(p->org, p->dir, p->tmin, live, s->ray, &s->top, &plain);
@@ -478,30 +490,36 @@ static void world_setup(struct packet_top *s)
         s->plain_ready = 1;
 #if ISECT_PAIR_SSE
         finite_org = plain.finite_org;
+        /* The octants from top's inv_dir lanes, which hold each live
+         * ray's inv_dir bit for bit (packet.h): their sign bits, eight
+         * rays in two movemasks an axis, where trace_scene_box_rows ray
+         * by ray cost about 36 instructions a ray. */
+        for (int a = 0; a < 3; a++)
+            s->neg[a] = ((unsigned)_mm_movemask_ps(_mm_load_ps(s->top.inv_dir[a])) |
+                         (unsigned)_mm_movemask_ps(_mm_load_ps(s->top.inv_dir[a] + 4)) << 4) &
+                        live;
 #endif
     }
-    for (unsigned m = live; m; m &= m - 1u) {
+    for (unsigned m = at_once && ISECT_PAIR_SSE ? 0u : live; m; m &= m - 1u) {
         const int r = first(m);
         if (!at_once)
             trace_ray_init(&s->ray[r], p->org[r], p->dir[r], p->tmin[r]);
-        s->octant[r] = trace_scene_box_rows(&s->ray[r], s->near_row[r], s->far_row[r]);
+        int near_row[3], far_row[3];
+        const int octant = trace_scene_box_rows(&s->ray[r], near_row, far_row);
+        for (int a = 0; a < 3; a++)
+            s->neg[a] |= (unsigned)(octant >> a & 1) << r;
 #if ISECT_PAIR_SSE
         /* Without packet_init's masks: x - x is +0.0 for a finite x and a
          * NaN for an infinity or a NaN, so the sum over the origins'
          * components stays 0 when all are finite. */
-        if (!at_once)
-            origin_probe += (p->org[r][0] - p->org[r][0]) + (p->org[r][1] - p->org[r][1]) +
-                            (p->org[r][2] - p->org[r][2]);
-        /* lanes_by_box's rays across lanes (packet_init's already), and
-         * its condition. */
-        if (!at_once) {
-            s->top.tmin[r] = s->ray[r].tmin;
-            for (int a = 0; a < 3; a++) {
-                s->top.org[a][r] = s->ray[r].org[a];
-                s->top.inv_dir[a][r] = s->ray[r].inv_dir[a];
-            }
+        origin_probe += (p->org[r][0] - p->org[r][0]) + (p->org[r][1] - p->org[r][1]) +
+                        (p->org[r][2] - p->org[r][2]);
+        /* lanes_by_box's rays across lanes (packet_init's already). */
+        s->top.tmin[r] = s->ray[r].tmin;
+        for (int a = 0; a < 3; a++) {
+            s->top.org[a][r] = s->ray[r].org[a];
+            s->top.inv_dir[a][r] = s->ray[r].inv_dir[a];
         }
-        octants |= 1u << s->octant[r];
 #endif
     }
 #if ISECT_PAIR_SSE
@@ -513,7 +531,11 @@ static void world_setup(struct packet_top *s)
             s->top.org[a][r] = s->top.inv_dir[a][r] = 0.0f;
     }
     const int finite_origins = at_once ? finite_org == live : origin_probe == 0.0f;
-    s->across = finite_origins && !(octants & (octants - 1u));
+    /* One octant: on each axis all the live rays negative or none. */
+    int one_octant = 1;
+    for (int a = 0; a < 3; a++)
+        one_octant &= s->neg[a] == 0 || s->neg[a] == live;
+    s->across = finite_origins && one_octant;
     if (s->across && live)
         trace_scene_box_rows(&s->ray[first(live)], s->top.near_row, s->top.far_row);
 #else
@@ -609,14 +631,26 @@ static unsigned walk(const struct trace_scene *scene, const struct trace_packet 
     s.plain_ready = 0;
     s.ready = 0;
     counters->rays += (uint64_t)popcount(active);
+    /* The rays with tmin < tmax (else trace_scene_closest's early miss),
+     * and every ray's best and box limit its tmax. */
     unsigned live = 0;
+#if ISECT_PAIR_SSE
+    for (int g = 0; g < TRACE_PACKET; g += 4) {
+        const __m128 tmax = _mm_loadu_ps(p->tmax + g);
+        live |= (unsigned)_mm_movemask_ps(_mm_cmplt_ps(_mm_loadu_ps(p->tmin + g), tmax)) << g;
+        _mm_storeu_ps(s.best + g, tmax);
+        _mm_store_ps(s.top.box_limit + g, tmax);
+    }
+    live &= active;
+#else
     for (unsigned m = active; m; m &= m - 1u) {
         const int r = first(m);
         if (p->tmin[r] < p->tmax[r])
-            live |= 1u << r; /* else trace_scene_closest's early miss */
+            live |= 1u << r;
         s.best[r] = p->tmax[r];
         s.top.box_limit[r] = p->tmax[r];
     }
+#endif
     s.live = live;
     if (!live)
         return 0;
