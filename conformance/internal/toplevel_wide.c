@@ -407,6 +407,57 @@ static void check_extreme_packets(void)
     scene_release(&wide_scene);
 }
 
+/* trace_packet_coherent's reference: its loop ray by ray. */
+static int coherent_ref(const float *const dir[], int n)
+{
+    if (n < 2)
+        return 0;
+    const float *d0 = dir[0];
+    const float l0 = d0[0] * d0[0] + d0[1] * d0[1] + d0[2] * d0[2];
+    for (int i = 1; i < n; i++) {
+        const float *d = dir[i];
+        for (int k = 0; k < 3; k++)
+            if (signbit(d[k]) != signbit(d0[k]))
+                return 0;
+        const float dot = d[0] * d0[0] + d[1] * d0[1] + d[2] * d0[2];
+        const float l = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        if (!(dot > 0.0f) || !(dot * dot > 0.81f * l * l0))
+            return 0;
+    }
+    return 1;
+}
+
+/* trace_packet_coherent (four rays a register) decides as its loop ray by
+ * ray does, on directions near the 25-degree bound, with zeros of both
+ * signs, tiny and huge components, for 1 to 8 rays. */
+static void check_coherent(void)
+{
+    static const float odd[] = {0.0f, -0.0f, 1e-30f, -1e-40f, 3.0e38f, 1e20f, NAN, INFINITY};
+    long differ = 0, yes = 0, total = 0;
+    for (int q = 0; q < 200000; q++) {
+        float d[TRACE_PACKET][3];
+        const float *dirs[TRACE_PACKET];
+        const float base[3] = {rnd() - 0.5f, rnd() - 0.5f, rnd() - 0.5f};
+        const float spread = q % 4 == 0 ? 0.9f : (q % 4 == 1 ? 0.5f : 0.35f);
+        for (int i = 0; i < TRACE_PACKET; i++) {
+            for (int k = 0; k < 3; k++)
+                d[i][k] = base[k] + (rnd() - 0.5f) * spread;
+            dirs[i] = d[i];
+        }
+        if (q % 5 == 0)
+            d[(int)(rnd() * TRACE_PACKET) % TRACE_PACKET][(int)(rnd() * 3.0f) % 3] =
+                odd[(int)(rnd() * 8.0f) % 8];
+        const int n = 1 + q % TRACE_PACKET;
+        const int want = coherent_ref(dirs, n), got = trace_packet_coherent(dirs, n);
+        differ += want != got;
+        yes += want;
+        total++;
+    }
+    printf("trace_packet_coherent: %ld sets, %ld coherent, %ld differ\n", total, yes, differ);
+    CHECK(differ == 0);
+    CHECK(yes > total / 20);
+}
+
 /* A top level of one leaf (a scene of one, two or three instances): the
  * packet walk visits the leaf's instances without the top level's box
  * test when every ray is of trace_scene_plain_class's exact class, and an
@@ -770,5 +821,6 @@ int main(void)
     }
     check_extreme_packets();
     check_one_leaf_packets();
+    check_coherent();
     return test_summary("toplevel_wide");
 }
