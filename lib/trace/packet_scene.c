@@ -15,6 +15,14 @@
  * depend on the order of visits.  An instance the scene's hit filter
  * marks is walked for closest hits (any-hit walks too) and filtered ray
  * by ray with the single walk's rule (filter_lanes).
+ *
+ * A top level of one leaf is not walked when every ray is plain (walk),
+ * as the single walk skips it, and its identity instances then take the
+ * caller's arrays straight into the table's walk from the arrays
+ * (kernels.h closest_packet_arrays): no world set-up at all.  Otherwise
+ * the world rays are set up once a packet (world_setup), and what the
+ * top level's walk needs of them per ray (octants, live rays, bests) is
+ * taken eight rays at a time from the lanes.
  */
 #include "trace/packet_scene.h"
 
@@ -49,7 +57,8 @@ struct packet_top {
     /* 1 once the world rays are set up (world_setup): ray, the rows, the
      * octants, top's lanes.  A top level of one leaf visits its
      * instances before that, and an identity instance's object walk then
-     * sets the rays up itself from the caller's arrays (visit_direct). */
+     * sets the rays up itself from the caller's arrays (visit_instance,
+     * direct). */
     int ready;
     /* 1 when every live ray has one octant and a finite origin: the top
      * level's nodes are then tested box by box (lanes_by_box, or the
