@@ -27,6 +27,7 @@
 #include "trace/packet_scene.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <string.h>
 
 #include "trace/flat_walk.h"
@@ -68,6 +69,19 @@ struct packet_top {
      * (the best t so far, widened: as in traverse.c). */
     struct trace_top_rays top;
 };
+
+/* struct trace_scene_hit begins with struct trace_hit's four fields, in
+ * its order (visit_instance copies a hit's t, u, v, prim as one block). */
+typedef char hit_prefix_is_trace_hit[sizeof(struct trace_hit) == 16 &&
+                                             offsetof(struct trace_scene_hit, t) == 0 &&
+                                             offsetof(struct trace_scene_hit, u) == 4 &&
+                                             offsetof(struct trace_scene_hit, v) == 8 &&
+                                             offsetof(struct trace_scene_hit, prim) == 12 &&
+                                             offsetof(struct trace_hit, u) == 4 &&
+                                             offsetof(struct trace_hit, v) == 8 &&
+                                             offsetof(struct trace_hit, prim) == 12
+                                         ? 1
+                                         : -1];
 
 /* The number of rays in a mask of at most TRACE_PACKET bits.  Not
  * __builtin_popcount: without -mpopcnt (this file is built for every
@@ -305,10 +319,8 @@ static void visit_instance(struct packet_top *s, uint32_t index, unsigned rays)
         struct trace_scene_hit *hit = &s->hits[r];
         s->best[r] = h[r].t;
         s->top.box_limit[r] = h[r].t * ISECT_BOX_FAR_SCALE;
-        hit->t = h[r].t;
-        hit->u = h[r].u;
-        hit->v = h[r].v;
-        hit->prim = h[r].prim;
+        /* t, u, v, prim in one 16-byte copy (hit_prefix_is_trace_hit). */
+        memcpy(hit, &h[r], sizeof(h[r]));
         hit->instance = index;
     }
 }
