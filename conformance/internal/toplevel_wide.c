@@ -407,6 +407,154 @@ static void check_extreme_packets(void)
     scene_release(&wide_scene);
 }
 
+/* trace_packet_coherent's reference: its loop ray by ray. */
+static int coherent_ref(const float *const dir[], int n)
+{
+    if (n < 2)
+        return 0;
+    const float *d0 = dir[0];
+    const float l0 = d0[0] * d0[0] + d0[1] * d0[1] + d0[2] * d0[2];
+    for (int i = 1; i < n; i++) {
+        const float *d = dir[i];
+        for (int k = 0; k < 3; k++)
+            if (signbit(d[k]) != signbit(d0[k]))
+                return 0;
+        const float dot = d[0] * d0[0] + d[1] * d0[1] + d[2] * d0[2];
+        const float l = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        if (!(dot > 0.0f) || !(dot * dot > 0.81f * l * l0))
+            return 0;
+    }
+    return 1;
+}
+
+/* trace_packet_coherent (four rays a register) decides as its loop ray by
+ * ray does, on directions near the 25-degree bound, with zeros of both
+ * signs, tiny and huge components, for 1 to 8 rays. */
+static void check_coherent(void)
+{
+    static const float odd[] = {0.0f, -0.0f, 1e-30f, -1e-40f, 3.0e38f, 1e20f, NAN, INFINITY};
+    long differ = 0, yes = 0, total = 0;
+    for (int q = 0; q < 200000; q++) {
+        float d[TRACE_PACKET][3];
+        const float *dirs[TRACE_PACKET];
+        const float base[3] = {rnd() - 0.5f, rnd() - 0.5f, rnd() - 0.5f};
+        const float spread = q % 4 == 0 ? 0.9f : (q % 4 == 1 ? 0.5f : 0.35f);
+        for (int i = 0; i < TRACE_PACKET; i++) {
+            for (int k = 0; k < 3; k++)
+                d[i][k] = base[k] + (rnd() - 0.5f) * spread;
+            dirs[i] = d[i];
+        }
+        if (q % 5 == 0)
+            d[(int)(rnd() * TRACE_PACKET) % TRACE_PACKET][(int)(rnd() * 3.0f) % 3] =
+                odd[(int)(rnd() * 8.0f) % 8];
+        const int n = 1 + q % TRACE_PACKET;
+        const int want = coherent_ref(dirs, n), got = trace_packet_coherent(dirs, n);
+        differ += want != got;
+        yes += want;
+        total++;
+    }
+    printf("trace_packet_coherent: %ld sets, %ld coherent, %ld differ\n", total, yes, differ);
+    CHECK(differ == 0);
+    CHECK(yes > total / 20);
+}
+
+/* A top level of one leaf (a scene of one, two or three instances): the
+ * packet walk visits the leaf's instances without the top level's box
+ * test when every ray is of trace_scene_plain_class's exact class, and an
+ * identity instance of the exact kind then walks its object from the
+ * packet's arrays (packet_scene.c); every ray must still get the single
+ * walk's answer, also in packets with a ray of zero, -0.0, tiny,
+ * subnormal or huge components (rtTraceRays lets every finite component
+ * through; a ray with a -0.0 takes the top level's walk), over
+ * identity instances of both kinds and a transformed one. */
+static void check_one_leaf_packets(void)
+{
+    static const float odd[] = {0.0f, -0.0f, 1e-30f, -1e-40f, 3.0e38f, -2.5e38f};
+    enum { NODD = sizeof(odd) / sizeof(odd[0]) };
+    struct placement places[3];
+    memset(places, 0, sizeof(places));
+    for (int i = 0; i < 3; i++) {
+        places[i].object = i == 1 ? 1 : 0;
+        places[i].s = 1.0;
+    }
+    places[0].positive_zeros = 1; /* TRACE_IDENTITY_EXACT */
+    places[2].t[2] = -0.5;        /* transformed */
+    /* Instance 1 keeps the -0.0 of -(0 + 0): TRACE_IDENTITY_ZEROS. */
+    const struct trace_kernels *k = trace_kernels_best();
+    const struct trace_kernels *scalar = trace_kernels_get(TRACE_ISA_SCALAR);
+    long mismatches = 0, hits = 0, skipped = 0, packets = 0, leaves = 0;
+    for (int count = 1; count <= 3; count++) {
+        struct bvh_build_params params;
+        bvh_build_params_default(&params);
+        struct scene ref_scene, wide_scene;
+        params.wide_layout = 0;
+        build_scene(&ref_scene, &params, 0, places, count);
+        params.wide_layout = 8;
+        build_scene(&wide_scene, &params, 0, places, count);
+        leaves += wide_scene.frame.top.nodes[0].count > 0;
+        for (int q = 0; q < 2000; q++) {
+            struct trace_packet pk;
+            memset(&pk, 0, sizeof(pk));
+            const float o[3] = {rnd() * 1.4f - 0.2f, rnd() * 1.4f - 0.2f, 3.0f + rnd()};
+            for (int i = 0; i < TRACE_PACKET; i++) {
+                for (int c = 0; c < 3; c++) {
+                    pk.org[i][c] = o[c] + (rnd() - 0.5f) * 0.1f;
+                    pk.dir[i][c] = c == 2 ? -1.0f : (rnd() - 0.5f) * 0.4f;
+                }
+                pk.tmin[i] = 0.0f;
+                pk.tmax[i] = q % 7 == 6 && i % 2 ? 3.2f : INFINITY;
+            }
+            /* One component of one ray of every third packet odd. */
+            if (q % 3 == 1) {
+                const int i = (int)(rnd() * TRACE_PACKET) % TRACE_PACKET;
+                const int c = (int)(rnd() * 6.0f) % 6;
+                const float v = odd[(int)(rnd() * NODD) % NODD];
+                if (c < 3)
+                    pk.org[i][c] = v;
+                else
+                    pk.dir[i][c - 3] = v;
+            }
+            pk.active = q % 11 == 10 ? 0xB5u : 0xFFu;
+            struct trace_scene_counters c;
+            memset(&c, 0, sizeof(c));
+            struct trace_scene ts = view_of(&wide_scene, k, 1);
+            struct trace_scene_hit hs[TRACE_PACKET];
+            const unsigned got = trace_scene_closest_packet(&ts, &pk, hs, &c);
+            const unsigned any = trace_scene_any_packet(&ts, &pk, &c);
+            packets++;
+            skipped += c.top_node_tests == 0;
+            struct trace_scene rs = view_of(&ref_scene, scalar, 0);
+            for (int i = 0; i < TRACE_PACKET; i++) {
+                if (!(pk.active >> i & 1u)) {
+                    mismatches += (got >> i & 1u) || (any >> i & 1u);
+                    continue;
+                }
+                struct trace_scene_hit ref1;
+                const int g = trace_scene_closest(&rs, pk.org[i], pk.dir[i], pk.tmin[i],
+                                                  pk.tmax[i], &ref1, &c);
+                const int a =
+                    trace_scene_any(&rs, pk.org[i], pk.dir[i], pk.tmin[i], pk.tmax[i], &c);
+                hits += g;
+                if (!same_hit(g, &ref1, (int)(got >> i & 1u), &hs[i]) ||
+                    a != (int)(any >> i & 1u))
+                    mismatches++;
+            }
+        }
+        scene_release(&ref_scene);
+        scene_release(&wide_scene);
+    }
+    printf("one-leaf top level: %ld packets (%ld without a top-level test), %ld hits, %ld "
+           "mismatches\n",
+           packets, skipped, hits, mismatches);
+    CHECK(mismatches == 0);
+    CHECK(hits > 10000);
+    CHECK(leaves == 2); /* one instance and two: a leaf; three: a node */
+    /* The tables with the arrays entries skip the leaf's test for the
+     * packets of plain rays (about two thirds). */
+    if (k && k->closest_packet_arrays)
+        CHECK(skipped > packets / 2);
+}
+
 /* trace_scene_object_ray with the identity flag against the same rows
  * without it, every combination of the components below. */
 static long object_ray_mismatches(const double w2o[16], uint32_t *flagged)
@@ -672,5 +820,7 @@ int main(void)
             scene_release(&scenes[w]);
     }
     check_extreme_packets();
+    check_one_leaf_packets();
+    check_coherent();
     return test_summary("toplevel_wide");
 }

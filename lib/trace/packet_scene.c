@@ -15,10 +15,19 @@
  * depend on the order of visits.  An instance the scene's hit filter
  * marks is walked for closest hits (any-hit walks too) and filtered ray
  * by ray with the single walk's rule (filter_lanes).
+ *
+ * A top level of one leaf is not walked when every ray is plain (walk),
+ * as the single walk skips it, and its identity instances then take the
+ * caller's arrays straight into the table's walk from the arrays
+ * (kernels.h closest_packet_arrays): no world set-up at all.  Otherwise
+ * the world rays are set up once a packet (world_setup), and what the
+ * top level's walk needs of them per ray (octants, live rays, bests) is
+ * taken eight rays at a time from the lanes.
  */
 #include "trace/packet_scene.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <string.h>
 
 #include "trace/flat_walk.h"
@@ -34,9 +43,9 @@ struct packet_top {
     struct trace_scene_counters *counters;
     struct trace_ray ray[TRACE_PACKET];
     float best[TRACE_PACKET];
-    int near_row[TRACE_PACKET][3];
-    int far_row[TRACE_PACKET][3];
-    int octant[TRACE_PACKET];
+    /* The rays whose inv_dir[k] is negative (sign bit set), per axis k:
+     * a ray's octant (trace_scene_box_rows) is bit r of each. */
+    unsigned neg[3];
     unsigned found;
     unsigned done;  /* any hit: the rays with their hit */
     unsigned live; /* the rays traced (active, tmin < tmax) */
@@ -46,6 +55,12 @@ struct packet_top {
      * (plain_ready): a scene without one does not pay for them. */
     unsigned plain[2];
     int plain_ready;
+    /* 1 once the world rays are set up (world_setup): ray, the rows, the
+     * octants, top's lanes.  A top level of one leaf visits its
+     * instances before that, and an identity instance's object walk then
+     * sets the rays up itself from the caller's arrays (visit_instance,
+     * direct). */
+    int ready;
     /* 1 when every live ray has one octant and a finite origin: the top
      * level's nodes are then tested box by box (lanes_by_box, or the
      * table's top_lanes). */
@@ -54,6 +69,19 @@ struct packet_top {
      * (the best t so far, widened: as in traverse.c). */
     struct trace_top_rays top;
 };
+
+/* struct trace_scene_hit begins with struct trace_hit's four fields, in
+ * its order (visit_instance copies a hit's t, u, v, prim as one block). */
+typedef char hit_prefix_is_trace_hit[sizeof(struct trace_hit) == 16 &&
+                                             offsetof(struct trace_scene_hit, t) == 0 &&
+                                             offsetof(struct trace_scene_hit, u) == 4 &&
+                                             offsetof(struct trace_scene_hit, v) == 8 &&
+                                             offsetof(struct trace_scene_hit, prim) == 12 &&
+                                             offsetof(struct trace_hit, u) == 4 &&
+                                             offsetof(struct trace_hit, v) == 8 &&
+                                             offsetof(struct trace_hit, prim) == 12
+                                         ? 1
+                                         : -1];
 
 /* The number of rays in a mask of at most TRACE_PACKET bits.  Not
  * __builtin_popcount: without -mpopcnt (this file is built for every
@@ -151,11 +179,14 @@ static unsigned plain_rays(struct packet_top *s, uint32_t identity)
     return s->plain[identity - 1u];
 }
 
+static void world_setup(struct packet_top *s);
+
 /* Instance slot `index` for the rays of mask `rays`. */
 static void visit_instance(struct packet_top *s, uint32_t index, unsigned rays)
 {
     const struct trace_scene *scene = s->scene;
     if (scene->instances[index].member_count) {
+        world_setup(s);
         visit_group(s, &scene->instances[index], rays);
         return;
     }
@@ -166,11 +197,30 @@ static void visit_instance(struct packet_top *s, uint32_t index, unsigned rays)
     counters->instance_tests += (uint64_t)popcount(rays);
     if (!scene->acquire(scene->user, inst->object, &view))
         return;
+    /* An instance the scene's hit filter marks: every ray takes the
+     * closest-hit walk, any-hit rays too, and then filter_lanes, as the
+     * single walk's visit_instance does. */
+    const int filtered =
+        scene->filtered && (scene->filtered[inst->instance_id] & scene->filter_mask);
+    const int wide = view.wide && view.wide->node_count && k->closest4;
+    /* Before the world set-up (a top level of one leaf, walk: every live
+     * ray of trace_scene_plain_class's exact class), an identity instance
+     * of the exact kind would take each world ray as it is: the table's
+     * packet walk from the caller's arrays sets the rays up itself, the
+     * same rays bit for bit as packet_init's (packet.h), straight into
+     * its lanes (no rays' structs stored and loaded back). */
+    const int direct = !s->ready && inst->identity == TRACE_IDENTITY_EXACT && wide &&
+                       !filtered && several(rays);
+    if (!direct)
+        world_setup(s);
     struct trace_ray rays_o[TRACE_PACKET];
     const struct trace_ray *o_ray = rays_o;
     float limit[TRACE_PACKET];
     unsigned live = 0;
-    if (inst->identity && !(rays & ~plain_rays(s, inst->identity))) {
+    if (direct) {
+        o_ray = NULL;
+        live = rays;
+    } else if (inst->identity && !(rays & ~plain_rays(s, inst->identity))) {
         /* trace_scene_object_ray would copy each world ray as it is. */
         o_ray = s->ray;
         live = rays;
@@ -186,35 +236,38 @@ static void visit_instance(struct packet_top *s, uint32_t index, unsigned rays)
                 live |= 1u << r;
         }
     }
-    /* visit_instance's limits: an equal t at a lower instance still comes
-     * back, one ulp above the best. */
-    for (unsigned m = live; m; m &= m - 1u) {
-        const int r = first(m);
-        limit[r] = !s->any_hit && (s->found >> r & 1u) ? isect_next_up(s->best[r]) : s->best[r];
-    }
     if (!live)
         return;
-    /* An instance the scene's hit filter marks: every ray takes the
-     * closest-hit walk, any-hit rays too, and then filter_lanes, as the
-     * single walk's visit_instance does. */
-    const int filtered =
-        scene->filtered && (scene->filtered[inst->instance_id] & scene->filter_mask);
-    const int wide = view.wide && view.wide->node_count && k->closest4;
+    /* visit_instance's limits: an equal t at a lower instance still comes
+     * back, one ulp above the best.  Without a closest hit yet (any-hit
+     * walks, an instance visited first) they are the bests themselves. */
+    const float *lim = s->best;
+    if (!s->any_hit && (s->found & live)) {
+        for (unsigned m = live; m; m &= m - 1u) {
+            const int r = first(m);
+            limit[r] = s->found >> r & 1u ? isect_next_up(s->best[r]) : s->best[r];
+        }
+        lim = limit;
+    }
     /* RT_AUTOMATIC's count of the rays reaching inside the object, as the
      * single walk's visit_instance counts them. */
     const uint64_t tests_before = counters->object.node_tests;
     const uint32_t root_tests = wide ? view.wide->width : 1;
     if (s->any_hit && !filtered) {
         unsigned hit = 0;
-        if (wide && several(live)) {
-            hit = k->any_packet(view.wide, view.bvh, view.tri, o_ray, limit, live,
+        if (direct) {
+            hit = k->any_packet_arrays(view.wide, view.bvh, view.tri, s->p->org, s->p->dir,
+                                       s->p->tmin, lim, live, TRACE_PACKET_HYBRID,
+                                       &counters->object);
+        } else if (wide && several(live)) {
+            hit = k->any_packet(view.wide, view.bvh, view.tri, o_ray, lim, live,
                                 TRACE_PACKET_HYBRID, &counters->object);
         } else {
             for (unsigned m = live; m; m &= m - 1u) {
                 const int r = first(m);
-                if (wide ? k->any4(view.wide, view.bvh, view.tri, &o_ray[r], limit[r],
+                if (wide ? k->any4(view.wide, view.bvh, view.tri, &o_ray[r], lim[r],
                                    &counters->object)
-                         : k->any(view.bvh, view.tri, &o_ray[r], limit[r], &counters->object))
+                         : k->any(view.bvh, view.tri, &o_ray[r], lim[r], &counters->object))
                     hit |= 1u << r;
             }
         }
@@ -226,15 +279,19 @@ static void visit_instance(struct packet_top *s, uint32_t index, unsigned rays)
     }
     struct trace_hit h[TRACE_PACKET];
     unsigned got = 0;
-    if (wide && several(live)) {
-        got = k->closest_packet(view.wide, view.bvh, view.tri, o_ray, limit, live,
+    if (direct) {
+        got = k->closest_packet_arrays(view.wide, view.bvh, view.tri, s->p->org, s->p->dir,
+                                       s->p->tmin, lim, live, TRACE_PACKET_HYBRID, h,
+                                       &counters->object);
+    } else if (wide && several(live)) {
+        got = k->closest_packet(view.wide, view.bvh, view.tri, o_ray, lim, live,
                                 TRACE_PACKET_HYBRID, h, &counters->object);
     } else {
         for (unsigned m = live; m; m &= m - 1u) {
             const int r = first(m);
-            if (wide ? k->closest4(view.wide, view.bvh, view.tri, &o_ray[r], limit[r], &h[r],
+            if (wide ? k->closest4(view.wide, view.bvh, view.tri, &o_ray[r], lim[r], &h[r],
                                    &counters->object)
-                     : k->closest(view.bvh, view.tri, &o_ray[r], limit[r], &h[r],
+                     : k->closest(view.bvh, view.tri, &o_ray[r], lim[r], &h[r],
                                   &counters->object))
                 got |= 1u << r;
         }
@@ -243,25 +300,27 @@ static void visit_instance(struct packet_top *s, uint32_t index, unsigned rays)
         trace_scene_count_rays(counters, view.ray_count, tests_before, root_tests,
                                (uint32_t)popcount(live));
     if (filtered)
-        got = filter_lanes(s, index, &view, o_ray, limit, got, h);
+        got = filter_lanes(s, index, &view, o_ray, lim, got, h);
     if (s->any_hit) {
         s->done |= got;
         return;
     }
-    for (unsigned m = got; m; m &= m - 1u) {
+    /* visit_instance's rule: a ray's first hit is taken; a later one when
+     * nearer, or as near at a lower instance. */
+    unsigned take = got & ~s->found;
+    for (unsigned m = got & s->found; m; m &= m - 1u) {
+        const int r = first(m);
+        if (h[r].t < s->best[r] || inst->instance_id < trace_scene_hit_id(scene, &s->hits[r]))
+            take |= 1u << r;
+    }
+    s->found |= take;
+    for (unsigned m = take; m; m &= m - 1u) {
         const int r = first(m);
         struct trace_scene_hit *hit = &s->hits[r];
-        const int found = s->found >> r & 1u;
-        if (found && !(h[r].t < s->best[r] ||
-                       inst->instance_id < trace_scene_hit_id(scene, hit)))
-            continue;
         s->best[r] = h[r].t;
         s->top.box_limit[r] = h[r].t * ISECT_BOX_FAR_SCALE;
-        s->found |= 1u << r;
-        hit->t = h[r].t;
-        hit->u = h[r].u;
-        hit->v = h[r].v;
-        hit->prim = h[r].prim;
+        /* t, u, v, prim in one 16-byte copy (hit_prefix_is_trace_hit). */
+        memcpy(hit, &h[r], sizeof(h[r]));
         hit->instance = index;
     }
 }
@@ -321,6 +380,13 @@ static void lanes_by_box(const struct trace_top_rays *q, const float *bounds, ui
 }
 #endif
 
+/* Ray r's octant, as trace_scene_box_rows gives it (bit k: inv_dir[k]
+ * negative). */
+static int octant_of(const struct packet_top *s, int r)
+{
+    return (int)((s->neg[0] >> r & 1u) | (s->neg[1] >> r & 1u) << 1 | (s->neg[2] >> r & 1u) << 2);
+}
+
 /* The packet walk of the wide top level (scene_traverse.c's walk_wide,
  * ray by ray inside each node, or box by box: lanes_by_box). */
 static void walk_top(struct packet_top *s, const struct bvh4 *wide, unsigned active)
@@ -348,7 +414,7 @@ static void walk_top(struct packet_top *s, const struct bvh4 *wide, unsigned act
             const uint32_t *child;
             const uint8_t *count;
             uint32_t order;
-            const int octant = s->octant[first(rays)];
+            const int octant = octant_of(s, first(rays));
             order = trace_scene_wide_node(wide, width, cur, octant, &bounds, &child, &count);
             unsigned lane_rays[8] = {0, 0, 0, 0, 0, 0, 0, 0};
             float t_min[8];
@@ -366,9 +432,10 @@ static void walk_top(struct packet_top *s, const struct bvh4 *wide, unsigned act
             for (unsigned m = rays; m; m &= m - 1u) {
                 const int r = first(m);
                 float te[8];
+                int near_row[3], far_row[3];
+                trace_scene_box_rows(&s->ray[r], near_row, far_row);
                 counters->top_node_tests += width;
-                unsigned in = s->kernels->top_lanes1(bounds, width, s->near_row[r],
-                                                     s->far_row[r], &s->ray[r],
+                unsigned in = s->kernels->top_lanes1(bounds, width, near_row, far_row, &s->ray[r],
                                                      s->top.box_limit[r], te);
                 for (; in; in &= in - 1u) {
                     const int l = first(in);
@@ -413,6 +480,144 @@ static void walk_top(struct packet_top *s, const struct bvh4 *wide, unsigned act
     }
 }
 
+/* The world rays' set-up, once a packet and only when something needs it
+ * (the top level's walk, a transformed instance, a flattened group, a hit
+ * filter): rays[r] as trace_ray_init sets them up (the table's
+ * packet_init, eight at a time), the rows and octant of each ray, and
+ * the top level's lanes.  best and box_limit are not touched: a top level
+ * of one leaf may have merged hits into them before. */
+static void world_setup(struct packet_top *s)
+{
+    if (s->ready)
+        return;
+    s->ready = 1;
+    const struct trace_kernels *k = s->kernels;
+    const struct trace_packet *p = s->p;
+    const unsigned live = s->live;
+#if ISECT_PAIR_SSE
+    float origin_probe = 0.0f; /* lanes_by_box's condition without packet_init */
+#endif
+    /* The table's set-up of all the rays at once, where it has one. */
+    const int at_once = k->packet_init != NULL;
+#if ISECT_PAIR_SSE
+    unsigned finite_org = 0;
+#endif
+    s->neg[0] = s->neg[1] = s->neg[2] = 0;
+    if (at_once) {
+        struct trace_packet_plain plain;
+        k->packet_init(p->org, p->dir, p->tmin, live, s->ray, &s->top, &plain);
+        s->plain[0] = plain.zeros;
+        s->plain[1] = plain.exact;
+        s->plain_ready = 1;
+#if ISECT_PAIR_SSE
+        finite_org = plain.finite_org;
+        /* The octants from top's inv_dir lanes, which hold each live
+         * ray's inv_dir bit for bit (packet.h): their sign bits, eight
+         * rays in two movemasks an axis, where trace_scene_box_rows ray
+         * by ray cost about 36 instructions a ray. */
+        for (int a = 0; a < 3; a++)
+            s->neg[a] = ((unsigned)_mm_movemask_ps(_mm_load_ps(s->top.inv_dir[a])) |
+                         (unsigned)_mm_movemask_ps(_mm_load_ps(s->top.inv_dir[a] + 4)) << 4) &
+                        live;
+#endif
+    }
+    for (unsigned m = at_once && ISECT_PAIR_SSE ? 0u : live; m; m &= m - 1u) {
+        const int r = first(m);
+        if (!at_once)
+            trace_ray_init(&s->ray[r], p->org[r], p->dir[r], p->tmin[r]);
+        int near_row[3], far_row[3];
+        const int octant = trace_scene_box_rows(&s->ray[r], near_row, far_row);
+        for (int a = 0; a < 3; a++)
+            s->neg[a] |= (unsigned)(octant >> a & 1) << r;
+#if ISECT_PAIR_SSE
+        /* Without packet_init's masks: x - x is +0.0 for a finite x and a
+         * NaN for an infinity or a NaN, so the sum over the origins'
+         * components stays 0 when all are finite. */
+        origin_probe += (p->org[r][0] - p->org[r][0]) + (p->org[r][1] - p->org[r][1]) +
+                        (p->org[r][2] - p->org[r][2]);
+        /* lanes_by_box's rays across lanes (packet_init's already). */
+        s->top.tmin[r] = s->ray[r].tmin;
+        for (int a = 0; a < 3; a++) {
+            s->top.org[a][r] = s->ray[r].org[a];
+            s->top.inv_dir[a][r] = s->ray[r].inv_dir[a];
+        }
+#endif
+    }
+#if ISECT_PAIR_SSE
+    /* The lanes of the rays left out hold zeros, which it masks out. */
+    for (unsigned m = ~live & ((1u << TRACE_PACKET) - 1u); m; m &= m - 1u) {
+        const int r = first(m);
+        s->top.tmin[r] = s->top.box_limit[r] = 0.0f;
+        for (int a = 0; a < 3; a++)
+            s->top.org[a][r] = s->top.inv_dir[a][r] = 0.0f;
+    }
+    const int finite_origins = at_once ? finite_org == live : origin_probe == 0.0f;
+    /* One octant: on each axis all the live rays negative or none. */
+    int one_octant = 1;
+    for (int a = 0; a < 3; a++)
+        one_octant &= s->neg[a] == 0 || s->neg[a] == live;
+    s->across = finite_origins && one_octant;
+    if (s->across && live)
+        trace_scene_box_rows(&s->ray[first(live)], s->top.near_row, s->top.far_row);
+#else
+    s->across = 0;
+#endif
+}
+
+/*
+ * The rays of `live` that trace_scene_plain_class puts in the class
+ * TRACE_IDENTITY_EXACT (every component finite, none -0.0, the direction
+ * not zero), from all eight rays' arrays at once: each float's bits
+ * tested as trace_scene_plain_class tests them (a magnitude below the
+ * infinity's bits is finite; -0.0 is the bits 0x80000000), the 24
+ * components of each array in six registers, float 3r + k in bit 3r + k
+ * of a mask; a ray is out when one of its three bits is set in the
+ * origins' or the directions' mask of bad components, or all three in
+ * the mask of the directions' zeros.  The lanes of rays not in `live`
+ * are read too (any bits) and masked out.  Ray by ray the class cost
+ * about 20 instructions a ray.
+ */
+static unsigned exact_rays(const struct trace_packet *p, unsigned live)
+{
+#if ISECT_PAIR_SSE
+    const __m128i magnitude = _mm_set1_epi32(0x7fffffff);
+    const __m128i inf = _mm_set1_epi32(0x7f800000);
+    const __m128i sign = _mm_set1_epi32((int)0x80000000u);
+    const __m128i zero = _mm_setzero_si128();
+    uint32_t bad = 0, dir_zero = 0;
+    const float *o = &p->org[0][0], *d = &p->dir[0][0];
+    for (int q = 0; q < 6; q++) {
+        const __m128i vo = _mm_castps_si128(_mm_loadu_ps(o + 4 * q));
+        const __m128i vd = _mm_castps_si128(_mm_loadu_ps(d + 4 * q));
+        const __m128i md = _mm_and_si128(vd, magnitude);
+        /* Not finite (the magnitude at or above the infinity's bits, as
+         * signed integers: the magnitude's sign bit is clear) or -0.0. */
+        const __m128i bo = _mm_or_si128(
+            _mm_cmpeq_epi32(_mm_cmplt_epi32(_mm_and_si128(vo, magnitude), inf), zero),
+            _mm_cmpeq_epi32(vo, sign));
+        const __m128i bd = _mm_or_si128(_mm_cmpeq_epi32(_mm_cmplt_epi32(md, inf), zero),
+                                        _mm_cmpeq_epi32(vd, sign));
+        bad |= (uint32_t)_mm_movemask_ps(_mm_castsi128_ps(_mm_or_si128(bo, bd))) << (4 * q);
+        dir_zero |= (uint32_t)_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(md, zero)))
+                    << (4 * q);
+    }
+    /* Bit 3r: ray r has a bad component, or a zero direction. */
+    const uint32_t out = ((bad | bad >> 1 | bad >> 2) | (dir_zero & dir_zero >> 1 & dir_zero >> 2));
+    unsigned exact = 0;
+    for (int r = 0; r < TRACE_PACKET; r++)
+        exact |= (~out >> (3 * r) & 1u) << r;
+    return exact & live;
+#else
+    unsigned exact = 0;
+    for (unsigned m = live; m; m &= m - 1u) {
+        const int r = first(m);
+        if (trace_scene_plain_class(p->org[r], p->dir[r]) & TRACE_IDENTITY_EXACT)
+            exact |= 1u << r;
+    }
+    return exact;
+#endif
+}
+
 static unsigned walk(const struct trace_scene *scene, const struct trace_packet *p, int any_hit,
                      struct trace_scene_hit *hits, struct trace_scene_counters *counters)
 {
@@ -445,76 +650,51 @@ static unsigned walk(const struct trace_scene *scene, const struct trace_packet 
     s.done = 0;
     s.plain[0] = s.plain[1] = 0;
     s.plain_ready = 0;
+    s.ready = 0;
+    counters->rays += (uint64_t)popcount(active);
+    /* The rays with tmin < tmax (else trace_scene_closest's early miss),
+     * and every ray's best and box limit its tmax. */
     unsigned live = 0;
 #if ISECT_PAIR_SSE
-    unsigned octants = 0; /* lanes_by_box's condition, with origin_probe */
-    float origin_probe = 0.0f;
-#endif
+    for (int g = 0; g < TRACE_PACKET; g += 4) {
+        const __m128 tmax = _mm_loadu_ps(p->tmax + g);
+        live |= (unsigned)_mm_movemask_ps(_mm_cmplt_ps(_mm_loadu_ps(p->tmin + g), tmax)) << g;
+        _mm_storeu_ps(s.best + g, tmax);
+        _mm_store_ps(s.top.box_limit + g, tmax);
+    }
+    live &= active;
+#else
     for (unsigned m = active; m; m &= m - 1u) {
         const int r = first(m);
-        counters->rays++;
         if (p->tmin[r] < p->tmax[r])
-            live |= 1u << r; /* else trace_scene_closest's early miss */
-    }
-    s.live = live;
-    /* The table's set-up of all the rays at once, where it has one. */
-    const int at_once = k->packet_init != NULL;
-#if ISECT_PAIR_SSE
-    unsigned finite_org = 0;
-#endif
-    if (at_once) {
-        struct trace_packet_plain plain;
-        k->packet_init(p->org, p->dir, p->tmin, live, s.ray, &s.top, &plain);
-        s.plain[0] = plain.zeros;
-        s.plain[1] = plain.exact;
-        s.plain_ready = 1;
-#if ISECT_PAIR_SSE
-        finite_org = plain.finite_org;
-#endif
-    }
-    for (unsigned m = live; m; m &= m - 1u) {
-        const int r = first(m);
-        if (!at_once)
-            trace_ray_init(&s.ray[r], p->org[r], p->dir[r], p->tmin[r]);
+            live |= 1u << r;
         s.best[r] = p->tmax[r];
         s.top.box_limit[r] = p->tmax[r];
-        s.octant[r] = trace_scene_box_rows(&s.ray[r], s.near_row[r], s.far_row[r]);
-#if ISECT_PAIR_SSE
-        /* Without packet_init's masks: x - x is +0.0 for a finite x and a
-         * NaN for an infinity or a NaN, so the sum over the origins'
-         * components stays 0 when all are finite. */
-        if (!at_once)
-            origin_probe += (p->org[r][0] - p->org[r][0]) + (p->org[r][1] - p->org[r][1]) +
-                            (p->org[r][2] - p->org[r][2]);
-        /* lanes_by_box's rays across lanes (packet_init's already), and
-         * its condition. */
-        if (!at_once) {
-            s.top.tmin[r] = s.ray[r].tmin;
-            for (int a = 0; a < 3; a++) {
-                s.top.org[a][r] = s.ray[r].org[a];
-                s.top.inv_dir[a][r] = s.ray[r].inv_dir[a];
-            }
+    }
+#endif
+    s.live = live;
+    if (!live)
+        return 0;
+    /* A top level of one leaf (a scene of one instance), as the single
+     * walk takes it (scene_traverse.c, walk): its box test would only
+     * repeat what each instance's walk tests (it culls, it never decides
+     * a hit), so when every ray is of the class the single walk asks for
+     * there, the leaf's instances are visited at once, and an identity
+     * instance's object walk sets the rays up itself from the caller's
+     * arrays (visit_instance); the world set-up is made only when
+     * something needs it.  RT_STAT_NODE_TESTS counts the tests made. */
+    const struct bvh_node *root = &top->nodes[0];
+    if (root->count && k->closest_packet_arrays && k->any_packet_arrays &&
+        exact_rays(p, live) == live) {
+        unsigned rays = live;
+        for (uint32_t i = 0; i < root->count && rays; i++) {
+            visit_instance(&s, top->prim_index[root->first + i], rays);
+            rays &= ~s.done;
         }
-        octants |= 1u << s.octant[r];
-#endif
+        return any_hit ? s.done : s.found;
     }
-#if ISECT_PAIR_SSE
-    /* The lanes of the rays left out hold zeros, which it masks out. */
-    for (unsigned m = ~live & ((1u << TRACE_PACKET) - 1u); m; m &= m - 1u) {
-        const int r = first(m);
-        s.top.tmin[r] = s.top.box_limit[r] = 0.0f;
-        for (int a = 0; a < 3; a++)
-            s.top.org[a][r] = s.top.inv_dir[a][r] = 0.0f;
-    }
-    const int finite_origins = at_once ? finite_org == live : origin_probe == 0.0f;
-    s.across = finite_origins && !(octants & (octants - 1u));
-    if (s.across && live)
-        trace_scene_box_rows(&s.ray[first(live)], s.top.near_row, s.top.far_row);
-#else
-    s.across = 0;
-#endif
-    if (live)
-        walk_top(&s, wide, live);
+    world_setup(&s);
+    walk_top(&s, wide, live);
     return any_hit ? s.done : s.found;
 }
 
@@ -537,6 +717,49 @@ int trace_packet_coherent(const float *const dir[], int n)
         return 0;
     const float *d0 = dir[0];
     const float l0 = d0[0] * d0[0] + d0[1] * d0[1] + d0[2] * d0[2];
+#if ISECT_PAIR_SSE
+    if (n <= TRACE_PACKET) {
+        /* Rays 1 .. n - 1 four a register (lanes past n - 1 hold ray 0,
+         * masked out), each lane the loop's operations below in its order,
+         * so the same decision: ray by ray it was about 40 instructions a
+         * ray of rtTraceRays' packets (trace_packet_coherent 29.5 M of a
+         * 604 M BART kitchen pass of 786,432 rays, callgrind). */
+        const __m128i sign = _mm_set1_epi32((int)0x80000000u);
+        __m128 e[3], s0[3];
+        for (int k = 0; k < 3; k++)
+            e[k] = _mm_set1_ps(d0[k]);
+        for (int k = 0; k < 3; k++)
+            s0[k] = _mm_and_ps(e[k], _mm_castsi128_ps(sign));
+        const __m128 bound0 = _mm_set1_ps(l0);
+        for (int g = 1; g < n; g += 4) {
+            float v[3][4];
+            for (int j = 0; j < 4; j++) {
+                const float *d = g + j < n ? dir[g + j] : d0;
+                v[0][j] = d[0];
+                v[1][j] = d[1];
+                v[2][j] = d[2];
+            }
+            const __m128 x = _mm_loadu_ps(v[0]), y = _mm_loadu_ps(v[1]), z = _mm_loadu_ps(v[2]);
+            /* A sign bit other than ray 0's on some axis. */
+            const __m128 flip =
+                _mm_or_ps(_mm_or_ps(_mm_xor_ps(_mm_and_ps(x, _mm_castsi128_ps(sign)), s0[0]),
+                                    _mm_xor_ps(_mm_and_ps(y, _mm_castsi128_ps(sign)), s0[1])),
+                          _mm_xor_ps(_mm_and_ps(z, _mm_castsi128_ps(sign)), s0[2]));
+            const __m128 dot = _mm_add_ps(_mm_add_ps(_mm_mul_ps(x, e[0]), _mm_mul_ps(y, e[1])),
+                                          _mm_mul_ps(z, e[2]));
+            const __m128 l = _mm_add_ps(_mm_add_ps(_mm_mul_ps(x, x), _mm_mul_ps(y, y)),
+                                        _mm_mul_ps(z, z));
+            const __m128 ok = _mm_and_ps(
+                _mm_cmpgt_ps(dot, _mm_setzero_ps()),
+                _mm_cmpgt_ps(_mm_mul_ps(dot, dot),
+                             _mm_mul_ps(_mm_mul_ps(_mm_set1_ps(0.81f), l), bound0)));
+            const int lanes = n - g < 4 ? (1 << (n - g)) - 1 : 15;
+            if ((_mm_movemask_ps(flip) | (~_mm_movemask_ps(ok) & 15)) & lanes)
+                return 0;
+        }
+        return 1;
+    }
+#endif
     for (int i = 1; i < n; i++) {
         const float *d = dir[i];
         for (int k = 0; k < 3; k++)
