@@ -5,13 +5,14 @@
  * and its refit.
  *
  * Two steps: the greedy collapse into width-generic scratch nodes, level
- * by level (a lane whose binary subtree is small enough, in consecutive
- * leaf slots, becomes a packet leaf: small_span; in a large layout, so
- * does a somewhat larger one left closed under a full node when the area
- * heuristic prefers it: close_small_lanes); then the final nodes
- * (with the per-octant child order) and packets in one 64-byte aligned
- * block.  Given a pool, both share their per-node work between its
- * threads, with the same bytes as on one thread (struct collapse).
+ * by level at the top and per wide subtree (an item) below (a lane whose
+ * binary subtree is small enough, in consecutive leaf slots, becomes a
+ * packet leaf: small_span; in a large layout, so does a somewhat larger
+ * one left closed under a full node when the area heuristic prefers it:
+ * close_small_lanes); then the final nodes (with the per-octant child
+ * order) and packets in one 64-byte aligned block.  Given a pool, both
+ * share the items between its threads, with the same bytes as on one
+ * thread (struct collapse).
  * collapse4_avx2.c compiles this file again for AVX2 (the octant orders
  * and the packets' zero-area test four lanes of doubles at a time), with
  * the same bytes; accel_collapse_wide_reuse takes it where the CPU runs
@@ -681,10 +682,9 @@ struct collapse {
     uint32_t *item_next;
 };
 
-/* A level of at least this many wide nodes has its gather run on the
- * pool; smaller levels (the top of the tree) cost less than waking the
- * workers.  The write of nodes and packets takes the pool from the same
- * count of nodes. */
+/* The write of the nodes above the cut (fewer than COLLAPSE_ITEM_LEVEL a
+ * level, so few but in a deep narrow tree) takes the pool from this
+ * many nodes; fewer cost less than waking the workers. */
 #define COLLAPSE_PARALLEL_MIN 512u
 /* Nodes per chunk handed out: large enough that the atomic counter is
  * not contended, small enough that the chunks balance between threads. */
@@ -699,7 +699,8 @@ struct collapse {
  * of nodes already gathered, and at most two chunks an item unused. */
 #define COLLAPSE_ITEM_CHUNK 64u
 
-/* Scratch nodes [lo, hi)'s lanes from binary inner nodes todo[w]. */
+/* Scratch nodes [lo, hi)'s lanes from binary inner nodes todo[w] (a
+ * level above the cut). */
 static void gather_nodes(void *arg, uint32_t lo, uint32_t hi)
 {
     const struct collapse *c = arg;
@@ -1022,8 +1023,8 @@ static int collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *t
             /* The level's nodes and their children's binary nodes. */
             if (top_reserve(&c, end + width * (end - begin), &top_cap))
                 goto fail;
-            rt_pool_run_range(pool, begin, end, COLLAPSE_CHUNK, COLLAPSE_PARALLEL_MIN,
-                              gather_nodes, &c);
+            /* Fewer than COLLAPSE_ITEM_LEVEL nodes: on this thread. */
+            gather_nodes(&c, begin, end);
             number_level(&c, begin, end, c.todo, &count, &packets);
             begin = end;
         }
