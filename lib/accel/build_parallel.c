@@ -187,6 +187,16 @@ struct deferred {
     uint32_t subtree_cap;
 };
 
+/* A thread's nodes of stage 2 (build_subtree): the subtrees it builds,
+ * one after the other, each in the nodes it used. */
+struct node_arena {
+    struct bvh_node *nodes;
+    void *block; /* what nodes were allocated as (rt_alloc_array64) */
+    size_t cap;  /* nodes */
+    size_t used;
+    int tried; /* the allocation was made (nodes NULL: it failed) */
+};
+
 struct pbuild {
     const struct aabb *boxes;
     uint32_t n;
@@ -252,6 +262,7 @@ struct pbuild {
     uint32_t *prim_index; /* the output's */
     uint32_t *order;      /* stage 2's items by descending size: subtrees
                            * (index < subtree_count), then deferred nodes */
+    struct node_arena *arenas; /* one per thread */
     struct bvh_node *final_nodes;
 };
 
@@ -1112,31 +1123,65 @@ static void build_median_subtree(struct pbuild *b, struct subtree *s, struct bvh
         b->prim_index[s->begin + i] = build_ref_id(&refs[i]);
 }
 
-/* Builds subtree s into a block of its own of 2m - 1 nodes, which
- * stage 3 copies from and release_build frees, shrunk to the nodes it
- * used.  One scratch array of 2n - 1 nodes with a range per subtree (the
- * paper's way, and this file's until 2026-12) is above the C library's
- * largest mmap threshold from about 500,000 primitives on (32 MiB), so
- * a fresh mapping every build, and the kernel zeroes every huge page
- * a subtree touches although the subtrees use about half their ranges
- * (rtbench's bumpy: 64 MB mapped for 35 MB of nodes; the zeroing under
- * the subtree builds was 4-8 % of a two-thread build's samples).  A
- * subtree's block (at most 2 subtree_max - 1 nodes, 1 MB for bumpy) is
- * under that threshold once the build's larger blocks were freed, so
- * the next build's blocks come back from the heap already in memory, and
- * the shrink returns the unused tail to the heap for the next subtree. */
-static int build_subtree(struct pbuild *b, struct subtree *s)
+/* Nodes per arena (struct node_arena): twice a thread's even share of
+ * the refs, plus two of the largest subtrees for the unevenness of the
+ * hand-out; a subtree that does not fit takes a block of its own. */
+static size_t arena_cap(const struct pbuild *b)
+{
+    return 2 * (((size_t)b->n + b->threads - 1) / b->threads) + 2 * (size_t)b->subtree_max;
+}
+
+/*
+ * Builds subtree s in 2m - 1 nodes at the end of the thread's arena (the
+ * arena then keeps the nodes used, rounded up to 64 bytes), or, when they
+ * do not fit, in a block of its own that release_build frees, shrunk to
+ * the nodes used; stage 3 copies from either.  One scratch array of
+ * 2n - 1 nodes with a range per subtree (the paper's way, and this
+ * file's until 2026-12) made the kernel zero every huge page a subtree
+ * touched although the subtrees use about half their ranges (rtbench's
+ * bumpy: 64 MB mapped for 35 MB of nodes).  A block per subtree (1 MB
+ * for bumpy) came back from the C library's heap when the heap kept the
+ * last build's memory, but a build of a million triangles frees more
+ * than its trim threshold (at most 64 MiB) at the top of the heap, so
+ * the next build's blocks were fresh 4 KB pages, 8,657 faults a bumpy
+ * build (one thread: 10-17 ms of stage 2's CPU time, measured with the
+ * trimming turned off).  An arena per thread is one block: on bumpy a
+ * mapping above the mmap threshold, advised for huge pages (alloc.c),
+ * of which a thread touches the nodes it keeps; on the kitchen a heap
+ * block that comes back warm as before.
+ */
+static int build_subtree(struct pbuild *b, struct subtree *s, struct node_arena *arena)
 {
     const uint32_t m = s->end - s->begin;
-    struct bvh_node *range = rt_alloc_array64(2 * (size_t)m - 1, sizeof(*range), &s->block);
-    if (!range)
-        return -1;
+    const size_t need = 2 * (size_t)m - 1;
+    if (arena && !arena->tried) {
+        arena->tried = 1;
+        arena->cap = arena_cap(b);
+        arena->nodes = rt_alloc_array64(arena->cap, sizeof(*arena->nodes), &arena->block);
+    }
+    struct bvh_node *range = NULL;
+    if (arena && arena->nodes && arena->cap - arena->used >= need) {
+        range = arena->nodes + arena->used;
+    } else {
+        range = rt_alloc_array64(need, sizeof(*range), &s->block);
+        if (!range)
+            return -1;
+        arena = NULL;
+    }
     int rc = 0;
     if (b->pp.subtree == BVH_SUBTREE_MEDIAN)
         build_median_subtree(b, s, range);
     else
         rc = build_sah_subtree(b, s, range);
-    if (rc == 0 && s->nodes == range && s->node_count < 2 * m - 1) {
+    if (rc)
+        return rc;
+    if (arena) {
+        /* A sweep subtree's nodes are its own arrays: nothing kept. */
+        if (s->nodes == range)
+            arena->used += ((size_t)s->node_count + 1) & ~(size_t)1;
+        return 0;
+    }
+    if (s->nodes == range && s->node_count < need) {
         /* The nodes keep their offset in the block if realloc moves it. */
         const size_t offset = (size_t)((char *)range - (char *)s->block);
         char *shrunk =
@@ -1146,7 +1191,7 @@ static int build_subtree(struct pbuild *b, struct subtree *s)
             s->nodes = (const struct bvh_node *)(const void *)(shrunk + offset);
         }
     }
-    return rc;
+    return 0;
 }
 
 /* A deferred node (struct deferred), on one thread: stage 1's steps on a
@@ -1155,7 +1200,7 @@ static int build_subtree(struct pbuild *b, struct subtree *s)
  * makes (pick_split and the stable partition give the same result for
  * any chunking), so the tree does not depend on which nodes are
  * deferred. */
-static int build_deferred(struct pbuild *b, struct deferred *d)
+static int build_deferred(struct pbuild *b, struct deferred *d, struct node_arena *arena)
 {
     const int bins = b->bins;
     const uint32_t axis_base[4] = {0, (uint32_t)bins * 32u, 2u * (uint32_t)bins * 32u, 0};
@@ -1195,7 +1240,7 @@ static int build_deferred(struct pbuild *b, struct deferred *d)
         if (o.axis < 0) {
             struct subtree *st = subtree_in(&d->subtrees, &d->subtree_count, &d->subtree_cap,
                                             o.begin, o.end, o.slot, o.depth, b->refs[src]);
-            if (!st || build_subtree(b, st))
+            if (!st || build_subtree(b, st, arena))
                 goto out;
             continue;
         }
@@ -1225,7 +1270,7 @@ static int build_deferred(struct pbuild *b, struct deferred *d)
             struct subtree *st =
                 subtree_in(&d->subtrees, &d->subtree_count, &d->subtree_cap, kid[k].begin,
                            kid[k].end, kid[k].slot, kid[k].depth, b->refs[!src]);
-            if (!st || build_subtree(b, st))
+            if (!st || build_subtree(b, st, arena))
                 goto out;
         }
     }
@@ -1242,16 +1287,18 @@ out:
  * too, all in one order of descending size. */
 static void subtree_task(void *arg, int worker)
 {
-    (void)worker;
     struct pbuild *b = arg;
+    struct node_arena *arena =
+        b->arenas && (uint32_t)worker < b->threads ? &b->arenas[worker] : NULL;
     const uint32_t items = b->subtree_count + b->deferred_count;
     uint32_t i;
     while ((i = chunk_of(b)) < items) {
         if (rt_atomic_load_relaxed(&b->failed))
             continue;
         uint32_t j = b->order[i];
-        int rc = j < b->subtree_count ? build_subtree(b, &b->subtrees[j])
-                                      : build_deferred(b, &b->deferred[j - b->subtree_count]);
+        int rc = j < b->subtree_count
+                     ? build_subtree(b, &b->subtrees[j], arena)
+                     : build_deferred(b, &b->deferred[j - b->subtree_count], arena);
         if (rc)
             rt_atomic_store_relaxed(&b->failed, 1);
     }
@@ -1413,6 +1460,9 @@ static void release_build(struct pbuild *b)
         rt_free(b->deferred[i].subtrees);
     }
     rt_free(b->deferred);
+    for (uint32_t i = 0; b->arenas && i < b->threads; i++)
+        rt_free(b->arenas[i].block);
+    rt_free(b->arenas);
     rt_free(b->refs_block[0]);
     rt_free(b->refs_block[1]);
     rt_free(b->top);
@@ -1452,6 +1502,11 @@ static int build_subtrees(struct pbuild *b, struct bvh *out)
         b->order[i] = keys[i].index;
     rt_free(keys);
 
+    /* Zeroed: a thread allocates its arena at its first subtree. */
+    b->arenas = rt_realloc_array(NULL, b->threads, sizeof(*b->arenas));
+    if (!b->arenas)
+        return -1;
+    memset(b->arenas, 0, (size_t)b->threads * sizeof(*b->arenas));
     b->failed = 0;
     run(b, subtree_task);
     if (b->failed)

@@ -5,13 +5,14 @@
  * and its refit.
  *
  * Two steps: the greedy collapse into width-generic scratch nodes, level
- * by level (a lane whose binary subtree is small enough, in consecutive
- * leaf slots, becomes a packet leaf: small_span; in a large layout, so
- * does a somewhat larger one left closed under a full node when the area
- * heuristic prefers it: close_small_lanes); then the final nodes
- * (with the per-octant child order) and packets in one 64-byte aligned
- * block.  Given a pool, both share their per-node work between its
- * threads, with the same bytes as on one thread (struct collapse).
+ * by level at the top and per wide subtree (an item) below (a lane whose
+ * binary subtree is small enough, in consecutive leaf slots, becomes a
+ * packet leaf: small_span; in a large layout, so does a somewhat larger
+ * one left closed under a full node when the area heuristic prefers it:
+ * close_small_lanes); then the final nodes (with the per-octant child
+ * order) and packets in one 64-byte aligned block.  Given a pool, both
+ * share the items between its threads, with the same bytes as on one
+ * thread (struct collapse).
  * collapse4_avx2.c compiles this file again for AVX2 (the octant orders
  * and the packets' zero-area test four lanes of doubles at a time), with
  * the same bytes; accel_collapse_wide_reuse takes it where the CPU runs
@@ -26,6 +27,7 @@
 #include "accel/bvh_build.h"
 #include "accel/collapse4_avx2.h"
 #include "base/alloc.h"
+#include "base/atomic.h"
 #include "base/pool.h"
 #include "trace/intersect.h"
 
@@ -437,7 +439,8 @@ static void lane_centres(const struct bvh *bvh, const struct scratch_node *s,
  * the lanes front to back packed at bits_per_lane bits each (2 for 4-wide,
  * 3 for 8-wide). */
 static void write_lanes(const struct bvh *bvh, const struct scratch_node *s, int width,
-                        float *bounds, uint32_t *child, uint8_t *count, uint32_t order_bits[8])
+                        const uint32_t child_base[2], float *bounds, uint32_t *child,
+                        uint8_t *count, uint32_t order_bits[8])
 {
     for (int l = 0; l < width; l++) {
         for (int k = 0; k < 3; k++) {
@@ -445,7 +448,7 @@ static void write_lanes(const struct bvh *bvh, const struct scratch_node *s, int
             bounds[(3 + k) * width + l] =
                 l < s->lanes ? bvh->nodes[s->source[l]].aabb_max[k] : -INFINITY;
         }
-        child[l] = l < s->lanes ? s->child[l] : 0;
+        child[l] = l < s->lanes ? s->child[l] + child_base[s->inner >> l & 1u] : 0;
         count[l] = (uint8_t)(l < s->lanes ? s->count[l] : 0);
     }
     const int bits_per_lane = width == 4 ? 2 : 3;
@@ -461,20 +464,22 @@ static void write_lanes(const struct bvh *bvh, const struct scratch_node *s, int
     octant_orders(centre, s->lanes, width, bits_per_lane, order_bits);
 }
 
-static void write_node4(struct bvh4_node *w, const struct bvh *bvh, const struct scratch_node *s)
+static void write_node4(struct bvh4_node *w, const struct bvh *bvh, const struct scratch_node *s,
+                        const uint32_t child_base[2])
 {
     uint32_t bits[8];
     memset(w, 0, sizeof(*w));
-    write_lanes(bvh, s, 4, &w->bounds[0][0], w->child, w->count, bits);
+    write_lanes(bvh, s, 4, child_base, &w->bounds[0][0], w->child, w->count, bits);
     for (int oct = 0; oct < 8; oct++)
         w->order[oct] = (uint8_t)bits[oct];
 }
 
-static void write_node8(struct bvh8_node *w, const struct bvh *bvh, const struct scratch_node *s)
+static void write_node8(struct bvh8_node *w, const struct bvh *bvh, const struct scratch_node *s,
+                        const uint32_t child_base[2])
 {
     uint32_t bits[8];
     memset(w, 0, sizeof(*w));
-    write_lanes(bvh, s, 8, &w->bounds[0][0], w->child, w->count, bits);
+    write_lanes(bvh, s, 8, child_base, &w->bounds[0][0], w->child, w->count, bits);
     for (int oct = 0; oct < 8; oct++) {
         w->order[oct][0] = (uint8_t)bits[oct];
         w->order[oct][1] = (uint8_t)(bits[oct] >> 8);
@@ -612,37 +617,90 @@ static void fill_packet(struct tri4_packet *p, const float *tri, const uint32_t 
 #endif
 }
 
+/*
+ * A wide subtree below the cut (struct collapse): its wide nodes in its
+ * own breadth-first order, gathered and numbered on one thread.  A node's
+ * child is, for an inner lane, its index in the next of the item's levels
+ * and, for a leaf lane with triangles, its first packet counted from the
+ * first packet of the node's level in the item; the global numbers are
+ * the levels' bases added (node_base, packet_base), which the calling
+ * thread sets once every item is gathered.
+ */
+struct item_level {
+    uint32_t begin;       /* the level's first node in nodes[] */
+    uint32_t packets;     /* packets of the level's nodes */
+    uint32_t node_base;   /* global number of the level's first node */
+    uint32_t packet_base; /* global number of the level's first packet */
+};
+
+struct collapse_item {
+    uint32_t root; /* binary inner node of the item's root */
+    /* Node w of the item is in the item pool at slot
+     * chunk[w / COLLAPSE_ITEM_CHUNK] + w % COLLAPSE_ITEM_CHUNK. */
+    uint32_t *chunk;
+    uint32_t chunks, chunk_cap;
+    uint32_t count;
+    struct item_level *level;
+    uint32_t levels, level_cap;
+    int failed;
+};
+
 /* The collapse's shared state.  The wide nodes are numbered breadth
  * first (a node's inner lanes get the next numbers, in lane order) and
  * the packets in node order, then lane order: the serial queue's order.
- * Both numberings are made level by level on the calling thread; the work
- * per node around them (the greedy gather before, the node and its
- * packets after) depends on nothing but the node, so the pool shares it
- * out in chunks of consecutive nodes and the bytes written are the same
- * on any number of threads. */
+ * The top levels are numbered level by level on the calling thread, down
+ * to the first level of at least COLLAPSE_ITEM_LEVEL nodes (the cut);
+ * each node of that level is the root of an item (struct
+ * collapse_item), which one thread gathers and numbers in its own
+ * breadth-first order, depth after depth, while its binary nodes are in
+ * that thread's caches.  Below the cut the global breadth-first order is,
+ * level by level, the items' same levels one after the other in item
+ * order (by induction: the roots are the cut level in that order, and
+ * the children of a run of nodes are a run of the next level, in the
+ * same order), so a node's global number is its level's base plus its
+ * index in the level, and likewise for packets (the top's packets first,
+ * then level by level).  The work per node (the greedy gather, the node
+ * and its packets) depends on nothing but the node, so the bytes written
+ * are the same on any number of threads and with or without the cut. */
 struct collapse {
     const struct bvh *bvh;
     const float *tri;
     uint32_t width;
     int merge_left; /* close_small_lanes applies */
     struct scratch_node *scratch;
-    const uint32_t *todo;
+    uint32_t *todo;
     char *base;
     struct tri4_packet *packets;
     uint32_t *source;
     uint32_t *packet_slot;
+    struct collapse_item *items;
+    /* The item pool: the items' nodes and their binary inner nodes, in
+     * chunks taken from *item_next, of item_cap slots in all. */
+    struct scratch_node *item_nodes;
+    uint32_t *item_todo;
+    uint32_t item_cap;
+    uint32_t *item_next;
 };
 
-/* A level of at least this many wide nodes has its gather run on the
- * pool; smaller levels (the top of the tree) cost less than waking the
- * workers.  The write of nodes and packets takes the pool from the same
- * count of nodes. */
+/* The write of the nodes above the cut (fewer than COLLAPSE_ITEM_LEVEL a
+ * level, so few but in a deep narrow tree) takes the pool from this
+ * many nodes; fewer cost less than waking the workers. */
 #define COLLAPSE_PARALLEL_MIN 512u
 /* Nodes per chunk handed out: large enough that the atomic counter is
  * not contended, small enough that the chunks balance between threads. */
 #define COLLAPSE_CHUNK 256u
+/* The cut (struct collapse): the first level of at least this many wide
+ * nodes makes the items, enough for the pool's threads to balance them
+ * (an 8-wide tree reaches it at its third or fourth level); a smaller
+ * tree is collapsed level by level only. */
+#define COLLAPSE_ITEM_LEVEL 64u
+/* An item's nodes are held in chunks of this many consecutive slots of
+ * the item pool, taken from a shared counter as the item grows: no copy
+ * of nodes already gathered, and at most two chunks an item unused. */
+#define COLLAPSE_ITEM_CHUNK 64u
 
-/* Scratch nodes [lo, hi)'s lanes from binary inner nodes todo[w]. */
+/* Scratch nodes [lo, hi)'s lanes from binary inner nodes todo[w] (a
+ * level above the cut). */
 static void gather_nodes(void *arg, uint32_t lo, uint32_t hi)
 {
     const struct collapse *c = arg;
@@ -675,10 +733,12 @@ static void number_level(const struct collapse *c, uint32_t begin, uint32_t end,
     }
 }
 
-/* Wide node w in its layout, its packets and its binary sources. */
-static void write_node(const struct collapse *c, uint32_t w)
+/* Wide node w (scratch s) in its layout, its packets and its binary
+ * sources; child_base[1] is added to its inner lanes' children,
+ * child_base[0] to its leaf lanes' (0 for range leaves). */
+static void write_scratch(const struct collapse *c, const struct scratch_node *s, uint32_t w,
+                          const uint32_t child_base[2])
 {
-    const struct scratch_node *s = &c->scratch[w];
     const uint32_t width = c->width;
     for (uint32_t l = 0; l < width; l++)
         c->source[width * w + l] = (int)l < s->lanes ? s->source[l] : UINT32_MAX;
@@ -687,23 +747,189 @@ static void write_node(const struct collapse *c, uint32_t w)
             continue;
         uint32_t slot = s->first[l];
         for (uint32_t j = 0; j < s->count[l]; j += 4) {
-            uint32_t p = s->child[l] + j / 4;
+            uint32_t p = s->child[l] + child_base[0] + j / 4;
             uint32_t n = s->count[l] - j < 4 ? s->count[l] - j : 4;
             c->packet_slot[p] = slot + j;
             fill_packet(&c->packets[p], c->tri, c->bvh->prim_index, slot + j, n);
         }
     }
     if (width == 4)
-        write_node4((struct bvh4_node *)(void *)c->base + w, c->bvh, s);
+        write_node4((struct bvh4_node *)(void *)c->base + w, c->bvh, s, child_base);
     else
-        write_node8((struct bvh8_node *)(void *)c->base + w, c->bvh, s);
+        write_node8((struct bvh8_node *)(void *)c->base + w, c->bvh, s, child_base);
 }
 
-/* Wide nodes [lo, hi) with write_node. */
+/* Wide nodes [lo, hi) above the cut with write_scratch (their children
+ * numbered globally). */
 static void write_nodes(void *arg, uint32_t lo, uint32_t hi)
 {
+    const struct collapse *c = arg;
+    const uint32_t none[2] = {0, 0};
     for (uint32_t w = lo; w < hi; w++)
-        write_node(arg, w);
+        write_scratch(c, &c->scratch[w], w, none);
+}
+
+/* The item pool's slot of item it's node w. */
+static inline uint32_t item_slot(const struct collapse_item *it, uint32_t w)
+{
+    return it->chunk[w / COLLAPSE_ITEM_CHUNK] + w % COLLAPSE_ITEM_CHUNK;
+}
+
+/* Slots in the item pool for item it's nodes [0, need); 0, or -1 on
+ * allocation failure. */
+static int item_reserve(const struct collapse *c, struct collapse_item *it, uint32_t need)
+{
+    while ((uint64_t)it->chunks * COLLAPSE_ITEM_CHUNK < need) {
+        if (it->chunks == it->chunk_cap) {
+            const uint32_t cap = it->chunk_cap ? 2 * it->chunk_cap : 8;
+            uint32_t *chunk = rt_realloc_array(it->chunk, cap, sizeof(*chunk));
+            if (!chunk)
+                return -1;
+            it->chunk = chunk;
+            it->chunk_cap = cap;
+        }
+        const uint32_t slot = rt_atomic_fetch_add_relaxed(c->item_next, COLLAPSE_ITEM_CHUNK);
+        /* Never taken: the pool is sized for every item's worst case
+         * (collapse_wide). */
+        if (slot > c->item_cap - COLLAPSE_ITEM_CHUNK)
+            return -1;
+        it->chunk[it->chunks++] = slot;
+    }
+    return 0;
+}
+
+/* Item it: its wide nodes gathered and numbered in its breadth-first
+ * order (struct collapse_item); 0, or -1 on allocation failure. */
+static int item_gather(const struct collapse *c, struct collapse_item *it)
+{
+    if (item_reserve(c, it, 1))
+        return -1;
+    c->item_todo[item_slot(it, 0)] = it->root;
+    it->count = 1;
+    for (uint32_t begin = 0; begin < it->count;) {
+        const uint32_t end = it->count;
+        if (it->levels == it->level_cap) {
+            const uint32_t cap = it->level_cap ? 2 * it->level_cap : 16;
+            struct item_level *level = rt_realloc_array(it->level, cap, sizeof(*level));
+            if (!level)
+                return -1;
+            it->level = level;
+            it->level_cap = cap;
+        }
+        struct item_level *lv = &it->level[it->levels++];
+        lv->begin = begin;
+        lv->packets = 0;
+        for (uint32_t w = begin; w < end; w++) {
+            /* Room for the node's children first (inner lanes append). */
+            if (item_reserve(c, it, it->count + c->width))
+                return -1;
+            struct scratch_node *s = &c->item_nodes[item_slot(it, w)];
+            gather(c->bvh, c->tri, c->item_todo[item_slot(it, w)], c->width, s);
+            if (c->merge_left)
+                close_small_lanes(c->bvh, c->tri, c->width, s);
+            for (int l = 0; l < s->lanes; l++) {
+                if (s->inner >> l & 1u) {
+                    c->item_todo[item_slot(it, it->count)] = s->source[l];
+                    s->child[l] = it->count++ - end;
+                } else if (!c->tri) {
+                    s->child[l] = s->first[l];
+                } else {
+                    s->child[l] = lv->packets;
+                    lv->packets += (s->count[l] + 3) / 4;
+                }
+            }
+        }
+        begin = end;
+    }
+    return 0;
+}
+
+/* Items [lo, hi) with item_gather. */
+static void gather_items(void *arg, uint32_t lo, uint32_t hi)
+{
+    const struct collapse *c = arg;
+    for (uint32_t f = lo; f < hi; f++)
+        c->items[f].failed = item_gather(c, &c->items[f]) != 0;
+}
+
+/* Items [lo, hi)'s nodes with write_scratch, their children numbered
+ * globally. */
+static void write_items(void *arg, uint32_t lo, uint32_t hi)
+{
+    const struct collapse *c = arg;
+    for (uint32_t f = lo; f < hi; f++) {
+        const struct collapse_item *it = &c->items[f];
+        for (uint32_t k = 0; k < it->levels; k++) {
+            const struct item_level *lv = &it->level[k];
+            const uint32_t end = k + 1 < it->levels ? it->level[k + 1].begin : it->count;
+            /* Inner lanes' children are in the item's next level; leaf
+             * lanes' packets are counted from the level's first. */
+            const uint32_t base[2] = {c->tri ? lv->packet_base : 0,
+                                      k + 1 < it->levels ? it->level[k + 1].node_base : 0};
+            for (uint32_t w = lv->begin; w < end; w++)
+                write_scratch(c, &c->item_nodes[item_slot(it, w)], lv->node_base + (w - lv->begin),
+                              base);
+        }
+    }
+}
+
+/* The items' levels' global numbers (struct collapse), level by level
+ * and in item order within a level, after the *count nodes and *packets
+ * packets above the cut; returns the totals in *count and *packets. */
+static void number_items(struct collapse_item *items, uint32_t n, uint32_t *count,
+                         uint32_t *packets)
+{
+    uint32_t node = *count;
+    uint32_t packet = *packets;
+    int more = 1;
+    for (uint32_t k = 0; more; k++) {
+        more = 0;
+        for (uint32_t f = 0; f < n; f++) {
+            struct collapse_item *it = &items[f];
+            if (k >= it->levels)
+                continue;
+            struct item_level *lv = &it->level[k];
+            const uint32_t end = k + 1 < it->levels ? it->level[k + 1].begin : it->count;
+            lv->node_base = node;
+            node += end - lv->begin;
+            lv->packet_base = packet;
+            packet += lv->packets;
+            more |= k + 1 < it->levels;
+        }
+    }
+    *count = node;
+    *packets = packet;
+}
+
+static void release_items(struct collapse_item *items, uint32_t n)
+{
+    for (uint32_t f = 0; items && f < n; f++) {
+        rt_free(items[f].chunk);
+        rt_free(items[f].level);
+    }
+    rt_free(items);
+}
+
+/* Room above the cut for `need` wide nodes and their binary nodes (the
+ * arrays grow as the top levels are numbered: a tree that reaches the
+ * cut keeps only its top in them); 0, or -1 on allocation failure. */
+static int top_reserve(struct collapse *c, uint32_t need, uint32_t *cap)
+{
+    if (need <= *cap)
+        return 0;
+    uint32_t n = *cap < 128 ? 256 : 2 * *cap;
+    if (n < need)
+        n = need;
+    struct scratch_node *scratch = rt_realloc_array(c->scratch, n, sizeof(*scratch));
+    if (!scratch)
+        return -1;
+    c->scratch = scratch;
+    uint32_t *todo = rt_realloc_array(c->todo, n, sizeof(*todo));
+    if (!todo)
+        return -1;
+    c->todo = todo;
+    *cap = n;
+    return 0;
 }
 
 /*
@@ -748,27 +974,26 @@ static int collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *t
         return 0;
     /* Every wide node but the root consumes a binary inner node, so
      * there are at most (node_count - 1) / 2 + 1 of them. */
-    uint32_t cap = (bvh->node_count - 1) / 2 + 1;
-    /* Not zeroed: only the first `count` entries are used, and each is
-     * written in full (gather, number_level) before it is read, while cap
-     * is an upper bound several times the usual count (zeroing it was
-     * most of the cost of the allocation). */
-    struct scratch_node *scratch = rt_realloc_array(NULL, cap, sizeof(*scratch));
-    uint32_t *todo = rt_realloc_array(NULL, cap, sizeof(uint32_t));
+    const uint32_t cap = (bvh->node_count - 1) / 2 + 1;
     struct rt_large_block raw = {NULL, 0};
     int taken = 0; /* raw is *spare's block */
     char *base = NULL;
     uint32_t *source = NULL;
     uint32_t *packet_slot = NULL;
-    if (!scratch || !todo)
-        goto fail;
+    struct collapse_item *items = NULL;
+    uint32_t item_count = 0;
+    uint32_t item_next = 0;
+    uint32_t top_cap = 0;
     struct collapse c;
     memset(&c, 0, sizeof(c));
     c.bvh = bvh;
     c.tri = tri;
     c.width = width;
-    c.scratch = scratch;
-    c.todo = todo;
+    c.item_next = &item_next;
+    /* Not zeroed: each entry is written in full (gather, number_level)
+     * before it is read. */
+    if (top_reserve(&c, 1, &top_cap))
+        goto fail;
     /* Only a layout beyond the caches gains from the smaller layout of
      * the merged leaves (fewer cache lines per ray); a small one, which
      * stays in the caches, would only pay their extra triangle tests
@@ -779,21 +1004,54 @@ static int collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *t
         tri && (uint64_t)bvh->prim_count * BVH_WIDE_BYTES_PER_TRIANGLE >= BVH_WIDE_PREFETCH_BYTES;
     uint32_t count = 1;
     uint32_t packets = 0;
-    if (leaf_lane(bvh, tri, 0, &scratch[0].first[0], &scratch[0].count[0])) {
+    if (leaf_lane(bvh, tri, 0, &c.scratch[0].first[0], &c.scratch[0].count[0])) {
         /* One leaf under the root: the root's one lane. */
-        scratch[0].lanes = 1;
-        scratch[0].source[0] = 0;
-        scratch[0].inner = 0;
-        number_level(&c, 0, 1, todo, &count, &packets);
+        c.scratch[0].lanes = 1;
+        c.scratch[0].source[0] = 0;
+        c.scratch[0].inner = 0;
+        number_level(&c, 0, 1, c.todo, &count, &packets);
     } else {
-        todo[0] = 0;
+        c.todo[0] = 0;
         for (uint32_t begin = 0; begin < count;) {
-            uint32_t end = count;
-            rt_pool_run_range(pool, begin, end, COLLAPSE_CHUNK, COLLAPSE_PARALLEL_MIN,
-                              gather_nodes, &c);
-            number_level(&c, begin, end, todo, &count, &packets);
+            const uint32_t end = count;
+            if (end - begin >= COLLAPSE_ITEM_LEVEL) {
+                /* The cut: every node of this level is an item. */
+                item_count = end - begin;
+                count = begin;
+                break;
+            }
+            /* The level's nodes and their children's binary nodes. */
+            if (top_reserve(&c, end + width * (end - begin), &top_cap))
+                goto fail;
+            /* Fewer than COLLAPSE_ITEM_LEVEL nodes: on this thread. */
+            gather_nodes(&c, begin, end);
+            number_level(&c, begin, end, c.todo, &count, &packets);
             begin = end;
         }
+    }
+    const uint32_t top = count; /* wide nodes above the cut */
+    if (item_count) {
+        items = rt_realloc_array(NULL, item_count, sizeof(*items));
+        if (!items)
+            goto fail;
+        memset(items, 0, (size_t)item_count * sizeof(*items));
+        for (uint32_t f = 0; f < item_count; f++)
+            items[f].root = c.todo[top + f];
+        /* The items' nodes are at most the cap less the top's; an item
+         * of n nodes takes at most n + 2 COLLAPSE_ITEM_CHUNK slots
+         * (item_reserve asks for its count plus a node's children). */
+        c.item_cap = (cap - top) + (2 * item_count + 1) * COLLAPSE_ITEM_CHUNK;
+        c.item_nodes = rt_realloc_array(NULL, c.item_cap, sizeof(*c.item_nodes));
+        c.item_todo = rt_realloc_array(NULL, c.item_cap, sizeof(*c.item_todo));
+        if (!c.item_nodes || !c.item_todo)
+            goto fail;
+        c.items = items;
+        rt_pool_run_range(pool, 0, item_count, 1, 2, gather_items, &c);
+        for (uint32_t f = 0; f < item_count; f++) {
+            if (items[f].failed)
+                goto fail;
+        }
+        number_items(items, item_count, &count, &packets);
     }
     size_t node_size = width == 4 ? sizeof(struct bvh4_node) : sizeof(struct bvh8_node);
     size_t node_bytes = (size_t)count * node_size;
@@ -814,9 +1072,14 @@ static int collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *t
     c.packets = pk;
     c.source = source;
     c.packet_slot = packet_slot;
-    rt_pool_run_range(pool, 0, count, COLLAPSE_CHUNK, COLLAPSE_PARALLEL_MIN, write_nodes, &c);
-    rt_free(scratch);
-    rt_free(todo);
+    rt_pool_run_range(pool, 0, top, COLLAPSE_CHUNK, COLLAPSE_PARALLEL_MIN, write_nodes, &c);
+    if (item_count)
+        rt_pool_run_range(pool, 0, item_count, 1, 2, write_items, &c);
+    release_items(items, item_count);
+    rt_free(c.item_nodes);
+    rt_free(c.item_todo);
+    rt_free(c.scratch);
+    rt_free(c.todo);
     out->width = width;
     out->node_count = count;
     out->nodes = width == 4 ? (struct bvh4_node *)(void *)base : NULL;
@@ -831,8 +1094,11 @@ static int collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *t
     out->raw = raw;
     return 0;
 fail:
-    rt_free(scratch);
-    rt_free(todo);
+    release_items(items, item_count);
+    rt_free(c.item_nodes);
+    rt_free(c.item_todo);
+    rt_free(c.scratch);
+    rt_free(c.todo);
     /* A spare taken goes back untouched: nothing is written before every
      * allocation has succeeded. */
     if (taken)
