@@ -202,6 +202,32 @@ static int same_hit(int got_a, const struct trace_scene_hit *a, int got_b,
            a->instance == b->instance;
 }
 
+/* The packet's answers (got, any: closest and any-hit masks, hs: the
+ * closest hits) against rs ray by ray: the mismatches, a lane outside
+ * pk->active counting as one when it reports a hit.  Adds the
+ * reference's hits to *hits. */
+static long packet_mismatches(const struct trace_scene *rs, const struct trace_packet *pk,
+                              unsigned got, unsigned any,
+                              const struct trace_scene_hit hs[TRACE_PACKET], long *hits,
+                              struct trace_scene_counters *c)
+{
+    long mismatches = 0;
+    for (int i = 0; i < TRACE_PACKET; i++) {
+        if (!(pk->active >> i & 1u)) {
+            mismatches += (got >> i & 1u) || (any >> i & 1u);
+            continue;
+        }
+        struct trace_scene_hit ref1;
+        const int g = trace_scene_closest(rs, pk->org[i], pk->dir[i], pk->tmin[i], pk->tmax[i],
+                                          &ref1, c);
+        const int a = trace_scene_any(rs, pk->org[i], pk->dir[i], pk->tmin[i], pk->tmax[i], c);
+        *hits += g;
+        if (!same_hit(g, &ref1, (int)(got >> i & 1u), &hs[i]) || a != (int)(any >> i & 1u))
+            mismatches++;
+    }
+    return mismatches;
+}
+
 /* A random double with 48 random mantissa bits, sign and a binary
  * exponent in [lo, hi]. */
 static double rnd_double(int lo, int hi)
@@ -381,20 +407,8 @@ static void check_extreme_packets(void)
             struct trace_scene_hit hs[TRACE_PACKET];
             const unsigned got = trace_scene_closest_packet(&ts, &pk, hs, &c);
             const unsigned any = trace_scene_any_packet(&ts, &pk, &c);
-            for (int i = 0; i < TRACE_PACKET; i++) {
-                if (!(pk.active >> i & 1u)) {
-                    mismatches += (got >> i & 1u) || (any >> i & 1u);
-                    continue;
-                }
-                struct trace_scene_hit ref1;
-                const int g = trace_scene_closest(&rs, pk.org[i], pk.dir[i], 0.0f, INFINITY,
-                                                  &ref1, &c);
-                const int a = trace_scene_any(&rs, pk.org[i], pk.dir[i], 0.0f, INFINITY, &c);
-                hits += g;
-                if (!same_hit(g, &ref1, (int)(got >> i & 1u), &hs[i]) ||
-                    a != (int)(any >> i & 1u))
-                    mismatches++;
-            }
+            /* pk.tmin 0, pk.tmax infinite on every ray here. */
+            mismatches += packet_mismatches(&rs, &pk, got, any, hs, &hits, &c);
         }
     }
     printf("extreme scales: %ld packets, %ld hits, %ld mismatches; (ray, instance) pairs "
@@ -524,21 +538,7 @@ static void check_one_leaf_packets(void)
             packets++;
             skipped += c.top_node_tests == 0;
             struct trace_scene rs = view_of(&ref_scene, scalar, 0);
-            for (int i = 0; i < TRACE_PACKET; i++) {
-                if (!(pk.active >> i & 1u)) {
-                    mismatches += (got >> i & 1u) || (any >> i & 1u);
-                    continue;
-                }
-                struct trace_scene_hit ref1;
-                const int g = trace_scene_closest(&rs, pk.org[i], pk.dir[i], pk.tmin[i],
-                                                  pk.tmax[i], &ref1, &c);
-                const int a =
-                    trace_scene_any(&rs, pk.org[i], pk.dir[i], pk.tmin[i], pk.tmax[i], &c);
-                hits += g;
-                if (!same_hit(g, &ref1, (int)(got >> i & 1u), &hs[i]) ||
-                    a != (int)(any >> i & 1u))
-                    mismatches++;
-            }
+            mismatches += packet_mismatches(&rs, &pk, got, any, hs, &hits, &c);
         }
         scene_release(&ref_scene);
         scene_release(&wide_scene);
@@ -749,7 +749,7 @@ int main(void)
         CHECK(flag_mismatches == 0);
         /* Packets of 8 rays against the single walk, ray by ray: from one
          * origin in one octant (the top level box by box), or mixed. */
-        long packet_mismatches = 0, packet_hits = 0;
+        long wrong_packets = 0, packet_hits = 0;
         for (int q = 0; q < 3000; q++) {
             struct trace_packet pk;
             memset(&pk, 0, sizeof(pk));
@@ -786,27 +786,13 @@ int main(void)
                 const unsigned got = trace_scene_closest_packet(&ts, &pk, hs, &c);
                 const unsigned any = trace_scene_any_packet(&ts, &pk, &c);
                 struct trace_scene rs = view_of(&scenes[0], scalar, 0);
-                for (int i = 0; i < TRACE_PACKET; i++) {
-                    if (!(pk.active >> i & 1u)) {
-                        packet_mismatches += (got >> i & 1u) || (any >> i & 1u);
-                        continue;
-                    }
-                    struct trace_scene_hit ref1;
-                    const int g = trace_scene_closest(&rs, pk.org[i], pk.dir[i], pk.tmin[i],
-                                                      pk.tmax[i], &ref1, &c);
-                    const int a = trace_scene_any(&rs, pk.org[i], pk.dir[i], pk.tmin[i],
-                                                  pk.tmax[i], &c);
-                    packet_hits += g;
-                    if (!same_hit(g, &ref1, (int)(got >> i & 1u), &hs[i]) ||
-                        a != (int)(any >> i & 1u))
-                        packet_mismatches++;
-                }
+                wrong_packets += packet_mismatches(&rs, &pk, got, any, hs, &packet_hits, &c);
             }
         }
         printf("packets: %ld hits, %ld mismatches; identity instances %u of %u\n", packet_hits,
-               packet_mismatches, identities, n_inst);
+               wrong_packets, identities, n_inst);
         CHECK(packet_hits > 20000);
-        CHECK(packet_mismatches == 0);
+        CHECK(wrong_packets == 0);
         free(plain);
         /* A winner never has an identical lower-indexed twin. */
         CHECK(ties == 0);
