@@ -285,7 +285,7 @@ static inline void wide_prefetch(const void *node, size_t bytes)
 __attribute__((always_inline))
 #endif
 static inline int walk_wide4_body(const struct bvh4 *wide, struct wide_state *s, uint32_t root,
-                                  uint32_t root_count, int any_hit, int stats)
+                                  uint32_t root_count, int any_hit, int stats, int int_entry)
 {
     const struct trace_ray *ray = s->ray;
     const struct bvh4_node *nodes = wide->nodes;
@@ -306,6 +306,9 @@ static inline int walk_wide4_body(const struct bvh4 *wide, struct wide_state *s,
         inv[k] = _mm_set1_ps(ray->inv_dir[k]);
     }
     const __m128 tmin4 = _mm_set1_ps(ray->tmin);
+    /* tmin's bits for int_entry's integer maximum (walk_wide8_ray's node
+     * test): only for tmin >= 0, and -0 becomes +0, the same number. */
+    const __m128i tmin4i = _mm_max_epi32(_mm_castps_si128(tmin4), _mm_setzero_si128());
     const __m128 inf4 = _mm_set1_ps(INFINITY);
     const __m128 scale4 = _mm_set1_ps(ISECT_BOX_FAR_SCALE);
     struct wide_entry stack[WIDE_STACK];
@@ -321,18 +324,48 @@ static inline int walk_wide4_body(const struct bvh4 *wide, struct wide_state *s,
             if (stats)
                 s->node_tests += 4;
             __m128 t0 = tmin4;
-            __m128 t1 = inf4;
-            for (int k = 0; k < 3; k++) {
-                const __m128 tn = _mm_mul_ps(
-                    _mm_add_ps(neg_org[k], _mm_load_ps(wide_row(n->bounds, near_row[k]))), inv[k]);
-                const __m128 tf = _mm_mul_ps(
-                    _mm_add_ps(neg_org[k], _mm_load_ps(wide_row(n->bounds, far_row[k]))), inv[k]);
-                t0 = _mm_max_ps(tn, t0);
-                t1 = _mm_min_ps(tf, t1);
+            unsigned mask;
+            if (int_entry) {
+                /* walk_wide8_ray's node test on four lanes (its comment
+                 * says why it is isect_box's decision bit for bit): the
+                 * entry as a signed integer maximum of the bits, in a
+                 * tree, and entry <= min(s * min(far x, y, z), limit) as
+                 * four comparisons ANDed, instead of three dependent
+                 * maxps, three minps, the scale and the clamp. */
+                __m128 tn[3], tf[3];
+                for (int k = 0; k < 3; k++) {
+                    tn[k] = _mm_mul_ps(
+                        _mm_add_ps(neg_org[k], _mm_load_ps(wide_row(n->bounds, near_row[k]))),
+                        inv[k]);
+                    tf[k] = _mm_mul_ps(
+                        _mm_add_ps(neg_org[k], _mm_load_ps(wide_row(n->bounds, far_row[k]))),
+                        inv[k]);
+                }
+                t0 = _mm_castsi128_ps(_mm_max_epi32(
+                    _mm_max_epi32(_mm_castps_si128(tn[0]), _mm_castps_si128(tn[1])),
+                    _mm_max_epi32(_mm_castps_si128(tn[2]), tmin4i)));
+                const __m128 hit = _mm_and_ps(
+                    _mm_and_ps(_mm_cmple_ps(t0, _mm_set1_ps(s->box_limit)),
+                               _mm_cmpngt_ps(t0, _mm_mul_ps(tf[0], scale4))),
+                    _mm_and_ps(_mm_cmpngt_ps(t0, _mm_mul_ps(tf[1], scale4)),
+                               _mm_cmpngt_ps(t0, _mm_mul_ps(tf[2], scale4))));
+                mask = (unsigned)_mm_movemask_ps(hit);
+            } else {
+                __m128 t1 = inf4;
+                for (int k = 0; k < 3; k++) {
+                    const __m128 tn = _mm_mul_ps(
+                        _mm_add_ps(neg_org[k], _mm_load_ps(wide_row(n->bounds, near_row[k]))),
+                        inv[k]);
+                    const __m128 tf = _mm_mul_ps(
+                        _mm_add_ps(neg_org[k], _mm_load_ps(wide_row(n->bounds, far_row[k]))),
+                        inv[k]);
+                    t0 = _mm_max_ps(tn, t0);
+                    t1 = _mm_min_ps(tf, t1);
+                }
+                t1 = _mm_mul_ps(t1, scale4);
+                t1 = _mm_min_ps(t1, _mm_set1_ps(s->box_limit));
+                mask = (unsigned)_mm_movemask_ps(_mm_cmple_ps(t0, t1));
             }
-            t1 = _mm_mul_ps(t1, scale4);
-            t1 = _mm_min_ps(t1, _mm_set1_ps(s->box_limit));
-            unsigned mask = (unsigned)_mm_movemask_ps(_mm_cmple_ps(t0, t1));
             if (mask) {
                 if (!(mask & (mask - 1u))) {
                     const unsigned l = (unsigned)__builtin_ctz(mask);
@@ -386,7 +419,7 @@ __attribute__((always_inline))
 static inline int walk_wide4_impl(const struct bvh4 *wide, struct wide_state *s, uint32_t root,
                                   uint32_t root_count, int stats)
 {
-    return walk_wide4_body(wide, s, root, root_count, s->any_hit, stats);
+    return walk_wide4_body(wide, s, root, root_count, s->any_hit, stats, 0);
 }
 
 /* walk_wide4_impl counting node and triangle tests (the packet walk's
@@ -1000,9 +1033,23 @@ static int TRACE_WIDE_LEAF8(const struct trace_ray *ray, const struct tri4_packe
 }
 #endif
 
+/* A whole 4-wide walk for a ray whose tmin is not >= 0 (negative or NaN;
+ * rtTraceRays refuses both, query.c): walk_wide4_body with the float
+ * fold of the entry, as wide8_walk_tmin_other.  s and r4 as WIDE4_WALK
+ * set them. */
+static int wide4_walk_tmin_other(const struct bvh4 *wide, struct wide_state *s, int any_hit,
+                                 int stats) WIDE_NOINLINE;
+static int wide4_walk_tmin_other(const struct bvh4 *wide, struct wide_state *s, int any_hit,
+                                 int stats)
+{
+    return stats ? walk_wide4_body(wide, s, 0, 0, any_hit, 1, 0)
+                 : walk_wide4_body(wide, s, 0, 0, any_hit, 0, 0);
+}
+
 /* walk_wide's 4-wide walks, each its own function with the ray's state
  * set up inside (as WIDE8_WALK); the state does not escape (the leaf is
- * inlined), so it can live in registers. */
+ * inlined), so it can live in registers.  Rays with tmin >= 0 (every
+ * ray rtTraceRays takes) get the integer entry (walk_wide4_body). */
 #define WIDE4_WALK(name, any_hit, stats)                                                        \
     static int name(const struct bvh4 *wide, const struct trace_ray *ray, float t_max,         \
                     struct trace_hit *hit, struct trace_counters *counters) WIDE_NOINLINE;      \
@@ -1012,7 +1059,9 @@ static int TRACE_WIDE_LEAF8(const struct trace_ray *ray, const struct tri4_packe
         struct wide_state s;                                                                    \
         wide_state_init(&s, ray, t_max, any_hit, hit);                                          \
         tri4_ray_init(&s.r4, ray);                                                              \
-        const int done = walk_wide4_body(wide, &s, 0, 0, any_hit, stats);                      \
+        const int done = ray->tmin >= 0.0f                                                      \
+                             ? walk_wide4_body(wide, &s, 0, 0, any_hit, stats, 1)               \
+                             : wide4_walk_tmin_other(wide, &s, any_hit, stats);                 \
         if (stats) {                                                                            \
             counters->node_tests += s.node_tests;                                               \
             counters->triangle_tests += s.triangle_tests;                                       \
