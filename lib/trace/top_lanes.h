@@ -46,10 +46,6 @@ static void TRACE_TOP_LANES(const struct trace_top_rays *q, const float *bounds,
         near[k] = bounds + q->near_row[k] * width;
         far[k] = bounds + q->far_row[k] * width;
     }
-    /* The rays of `rays` as a lane mask: lane r all ones when bit r is set. */
-    const __m256i ray_bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
-    const __m256 live = _mm256_castsi256_ps(_mm256_cmpeq_epi32(
-        _mm256_and_si256(_mm256_set1_epi32((int)rays), ray_bit), ray_bit));
     for (; used; used &= used - 1u) {
         const int l = __builtin_ctz(used);
         __m256 t0 = tmin, t1 = inf;
@@ -62,25 +58,18 @@ static void TRACE_TOP_LANES(const struct trace_top_rays *q, const float *bounds,
             t1 = _mm256_min_ps(tf, t1);
         }
         t1 = _mm256_min_ps(_mm256_mul_ps(t1, scale), limit);
-        const __m256 enter = _mm256_and_ps(_mm256_cmp_ps(t0, t1, _CMP_LE_OS), live);
-        const unsigned in = (unsigned)_mm256_movemask_ps(enter);
+        unsigned in = (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(t0, t1, _CMP_LE_OS)) & rays;
         if (!in)
             continue;
         lane_rays[l] |= in;
-        /* The entered rays' least entry in the lanes (the others +inf),
-         * where a scalar loop over the rays took about 40 instructions
-         * and a mispredicted exit a lane.  An entered ray's t0 passed an
-         * ordered compare, so it is not a NaN, and the minimum of floats
-         * that are not NaNs is the same value in any order; only the
-         * sign of a zero among equal zeros can differ, and the caller
-         * only compares t_min (the stack's t_entry against each ray's
-         * box limit), where -0 and +0 are equal. */
-        __m256 m8 = _mm256_blendv_ps(inf, t0, enter);
-        __m128 m4 = _mm_min_ps(_mm256_castps256_ps128(m8), _mm256_extractf128_ps(m8, 1));
-        m4 = _mm_min_ps(m4, _mm_shuffle_ps(m4, m4, _MM_SHUFFLE(1, 0, 3, 2)));
-        m4 = _mm_min_ps(m4, _mm_shuffle_ps(m4, m4, _MM_SHUFFLE(2, 3, 0, 1)));
-        const float m = _mm_cvtss_f32(m4);
-        t_min[l] = m < t_min[l] ? m : t_min[l];
+        float te[8];
+        _mm256_storeu_ps(te, t0);
+        float m = t_min[l];
+        for (; in; in &= in - 1u) {
+            const float t = te[__builtin_ctz(in)];
+            m = t < m ? t : m;
+        }
+        t_min[l] = m;
     }
 }
 
