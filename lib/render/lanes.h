@@ -61,12 +61,13 @@ static inline __m256d lanes_log2_4(__m256d x)
     e = _mm256_add_pd(e, _mm256_and_pd(big, one));
     const __m256d z = _mm256_div_pd(_mm256_sub_pd(m, one), _mm256_add_pd(m, one));
     const __m256d w = _mm256_mul_pd(z, z);
-    /* p = 1/3 + w / 5 + ... + w^7 / 17 by Estrin's scheme (pairs, then
-     * pairs of pairs by w^2 and w^4): four dependent steps after w where
-     * Horner's rule takes seven multiplications and additions, on the
-     * chain of divisions and square roots that bounds lod_quad.  p's
-     * roundings do not reach the bound: p is about 1/3 and enters ln m
-     * only through z w p, at most 0.0099 of z (|w| <= 0.0295). */
+    /* p = 1/3 + w / 5 + ... + w^7 / 17 by Estrin's scheme (Estrin 1960;
+     * pairs, then pairs of pairs by w^2 and w^4): four dependent steps
+     * after w where Horner's rule takes seven multiplications and
+     * additions, on the chain of divisions and square roots that bounds
+     * lod_quad.  p's roundings do not reach the bound in either order: p
+     * is about 1/3 and enters ln m only through z w p, at most 0.0099 of
+     * z (|w| <= 0.0295), so they stay below 2^-56 of ln m. */
 #define C(k) _mm256_set1_pd(1.0 / (double)(k))
     const __m256d w2 = _mm256_mul_pd(w, w);
     const __m256d w4 = _mm256_mul_pd(w2, w2);
