@@ -1481,14 +1481,16 @@ static void release_build(struct pbuild *b)
  * Stage 3's final array of `total` nodes.  Nothing reads the ref buffers
  * after stage 2 (prim_index is written there, and a sweep subtree's nodes
  * are its own arrays), so the final array takes over the block of
- * refs[0], which the set-up wrote whole, shrunk (or grown) by realloc to
- * the nodes: its pages are in memory already, where a fresh array of a
- * million-triangle build is a fresh mapping whose pages the kernel zeroes
- * as stage 3 first writes them (rtbench's bumpy, one thread: stage 3's
- * faults were about a tenth of the build's CPU time in perf's samples
- * under compact_task).  The old contents do not matter: stage 3 writes
- * every node.  If realloc fails, the block stays the pbuild's and a fresh
- * array is tried.
+ * refs[0], which the set-up wrote whole and which was allocated for the
+ * 2n - 1 nodes a tree can have, shrunk by realloc to the nodes: the
+ * first n refs' worth of its pages are in memory already, where a fresh
+ * array of a million-triangle build is a fresh mapping whose pages the
+ * kernel zeroes as stage 3 first writes them (rtbench's bumpy, one
+ * thread: the zeroing under compact_task was 4.7 % of a build
+ * pipeline's perf samples).  An n-ref block grown by realloc copied
+ * itself (the final array has more nodes than there are refs).  The old
+ * contents do not matter: stage 3 writes every node.  If realloc fails,
+ * the block stays the pbuild's and a fresh array is tried.
  */
 static struct bvh_node *final_array(struct pbuild *b, uint64_t total)
 {
