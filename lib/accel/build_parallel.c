@@ -1477,6 +1477,34 @@ static void release_build(struct pbuild *b)
     rt_free(b->order);
 }
 
+/*
+ * Stage 3's final array of `total` nodes.  Nothing reads the ref buffers
+ * after stage 2 (prim_index is written there, and a sweep subtree's nodes
+ * are its own arrays), so the final array takes over the block of
+ * refs[0], which the set-up wrote whole and which was allocated for the
+ * 2n - 1 nodes a tree can have, shrunk by realloc to the nodes: the
+ * first n refs' worth of its pages are in memory already, where a fresh
+ * array of a million-triangle build is a fresh mapping whose pages the
+ * kernel zeroes as stage 3 first writes them (rtbench's bumpy, one
+ * thread: the zeroing under compact_task was 4.7 % of a build
+ * pipeline's perf samples).  An n-ref block grown by realloc copied
+ * itself (the final array has more nodes than there are refs).  The old
+ * contents do not matter: stage 3 writes every node.  If realloc fails,
+ * the block stays the pbuild's and a fresh array is tried.
+ */
+static struct bvh_node *final_array(struct pbuild *b, uint64_t total)
+{
+    if (b->refs_block[0]) {
+        struct bvh_node *nodes = rt_realloc_array(b->refs_block[0], total, sizeof(*nodes));
+        if (nodes) {
+            b->refs_block[0] = NULL;
+            b->refs[0] = NULL;
+            return nodes;
+        }
+    }
+    return rt_realloc_array(NULL, total, sizeof(struct bvh_node));
+}
+
 /* Stages 2 and 3 once stage 1 has left its subtrees; fills *out. */
 static int build_subtrees(struct pbuild *b, struct bvh *out)
 {
@@ -1526,7 +1554,7 @@ static int build_subtrees(struct pbuild *b, struct bvh *out)
         if (s->max_depth > depth)
             depth = s->max_depth;
     }
-    b->final_nodes = rt_realloc_array(NULL, total, sizeof(*b->final_nodes));
+    b->final_nodes = final_array(b, total);
     if (!b->final_nodes)
         return -1;
     for (uint32_t i = 0; i < b->top_count; i++)
@@ -1588,8 +1616,15 @@ int accel_build_parallel_ex(struct bvh *out, const struct aabb *prim_boxes, uint
     int status = -1;
     out->prim_index = rt_realloc_array(NULL, prim_count, sizeof(*out->prim_index));
     b.prim_index = out->prim_index;
-    for (int i = 0; i < 2; i++)
-        b.refs[i] = rt_alloc_array64(prim_count, sizeof(struct build_ref), &b.refs_block[i]);
+    /* refs[0]'s block becomes the final array (final_array): room for
+     * 2n - 1 nodes, of which the pages past the refs are touched only by
+     * stage 3. */
+    const uint64_t ref_bytes = (uint64_t)prim_count * sizeof(struct build_ref);
+    const uint64_t node_bytes = (2 * (uint64_t)prim_count - 1) * sizeof(struct bvh_node);
+    const uint64_t refs0_bytes = ref_bytes > node_bytes ? ref_bytes : node_bytes;
+    if (refs0_bytes <= SIZE_MAX - 64)
+        b.refs[0] = rt_alloc_array64((size_t)refs0_bytes, 1, &b.refs_block[0]);
+    b.refs[1] = rt_alloc_array64(prim_count, sizeof(struct build_ref), &b.refs_block[1]);
     plan_flat_chunks(&b, prim_count);
     b.chunk_box = rt_realloc_array(NULL, 2 * (size_t)b.chunk_count, sizeof(*b.chunk_box));
     b.top = reserve(NULL, &b.top_cap, 1, sizeof(*b.top));
