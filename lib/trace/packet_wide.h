@@ -700,10 +700,11 @@ static inline float packet_hmax(__m256 v)
  * smaller where d * inv >= 0, and where d * inv < 0 (the origins past
  * the child's near plane) both products are <= 0 <= tmin <= the entry
  * bound it is folded into by max, which returns that bound either way
- * (maxps returns its second operand on equal values, so even the sign of
- * a zero is kept).  So the entry bound is the same bits as with both
- * products (the walk visits the same nodes), for one multiply and one
- * min fewer per axis.  Measured (docs/performance-log.md, kpk): the
+ * (the walk's maximum of the bits as integers, packet_walk8_ia: a
+ * product -0 or below is a negative integer and +0 is 0, neither above
+ * tmin's bits, made >= +0 here).  So the entry bound is the same number as with both products
+ * (the walk visits the same nodes), for one multiply and one min fewer
+ * per axis.  Measured (docs/performance-log.md, kpk): the
  * packet kernel's instructions a ray -1.0 % on the kitchen's and bumpy's
  * camera packets.
  */
