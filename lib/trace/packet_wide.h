@@ -28,8 +28,6 @@
  * leaf boxes tested ray by ray unless the beam is narrow against the
  * leaves (see there).
  */
-#include <string.h>
-
 #include "trace/packet.h"
 #if defined(__AVX__)
 #include "trace/packet_tri8.h"
@@ -1125,12 +1123,9 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                      * loop runs once per pushed child, the last position
                      * first (the nearest ends on top of the stack, as
                      * packet_walk's scan of all eight). */
-                    /* The octant's three order bytes as one word
-                     * (wide8_push's read: the four bytes ending with
-                     * them, inside the node, shifted down). */
-                    uint32_t word;
-                    memcpy(&word, (const char *)n->order[octant] - 1, sizeof(word));
-                    const uint32_t order = word >> 8;
+                    const uint32_t order = (uint32_t)n->order[octant][0] |
+                                           (uint32_t)n->order[octant][1] << 8 |
+                                           (uint32_t)n->order[octant][2] << 16;
                     const __m256i slot = _mm256_and_si256(
                         _mm256_srlv_epi32(_mm256_set1_epi32((int)order),
                                           _mm256_setr_epi32(0, 3, 6, 9, 12, 15, 18, 21)),
