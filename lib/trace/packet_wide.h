@@ -698,10 +698,11 @@ static inline float packet_hmax(__m256 v)
  * smaller where d * inv >= 0, and where d * inv < 0 (the origins past
  * the child's near plane) both products are <= 0 <= tmin <= the entry
  * bound it is folded into by max, which returns that bound either way
- * (maxps returns its second operand on equal values, so even the sign of
- * a zero is kept).  So the entry bound is the same bits as with both
- * products (the walk visits the same nodes), for one multiply and one
- * min fewer per axis.  Measured (docs/performance-log.md, kpk): the
+ * (the walk's maximum of the bits as integers, packet_walk8_ia: a
+ * product -0 or below is a negative integer and +0 is 0, neither above
+ * tmin's bits, made >= +0 here).  So the entry bound is the same number as with both products
+ * (the walk visits the same nodes), for one multiply and one min fewer
+ * per axis.  Measured (docs/performance-log.md, kpk): the
  * packet kernel's instructions a ray -1.0 % on the kitchen's and bumpy's
  * camera packets.
  */
@@ -795,8 +796,11 @@ static inline int packet_ia_init(struct packet_state *p, unsigned active,
         p->ia_sp_o = _mm256_set1_ps(_mm_cvtss_f32(b) * PACKET_WIDE_BOX_GATE);
     }
     p->ia_octant = octant;
-    p->ia_tmin = _mm256_permutevar8x32_ps(f_min[TRI8_F_TMIN / 8],
-                                          _mm256_set1_epi32(TRI8_F_TMIN % 8));
+    /* The least tmin, -0 made +0 (maxps returns its second operand on
+     * equal values) for the walk's integer maximum of the entry's bits. */
+    p->ia_tmin = _mm256_max_ps(_mm256_permutevar8x32_ps(f_min[TRI8_F_TMIN / 8],
+                                                        _mm256_set1_epi32(TRI8_F_TMIN % 8)),
+                               _mm256_setzero_ps());
     return 1;
 }
 
@@ -925,24 +929,64 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
             unsigned lane_rays[8];
             float t_min[8];
             node_tests += 8;
-            __m256 t0 = p->ia_tmin;
-            __m256 t1 = inf8;
+            /* The packet's entry bound max(z, max(y, max(x, tmin))) and
+             * exit bound min(s * min(z, min(y, min(x, inf))), limit) were
+             * four and five dependent operations of 4 cycles each between
+             * the rows' loads and the pass mask, which the choice of the
+             * next node waits for.  The same decision in fewer steps, as
+             * the single walk's node test (traverse_wide8_ray.h):
+             * - the entry as a signed integer maximum of the bits, a tree
+             *   of 1-cycle operations: no value here is NaN
+             *   (packet_ia_init) and ia_tmin >= +0, so the maximum is >=
+             *   +0, where the integer order of the bits is the float
+             *   order, and a negative product loses as it does to tmin
+             *   in the float fold; a -0 entry may come out +0, the same
+             *   number for every comparison made with it (the pass mask,
+             *   the leaf gate, the stacked entry's cull);
+             * - entry <= min(s * min(far x, y, z), limit) as four
+             *   comparisons ANDed: rounding s * t is monotonic, so
+             *   s * min(a, b) = min(s * a, s * b), and entry <= min holds
+             *   exactly when it holds against each operand.
+             * Measured (docs/performance-log.md, pk7): AVX2 instructions
+             * +0.1-0.2 %; the kitchen's camera and shadow packets up
+             * 0.2-7.3 % in every alternated pair, the camera packets of
+             * gears and bumpy up in all pairs but one, their shadow
+             * packets level. */
+            __m256 ne[3], fa[3];
             for (int k = 0; k < 3; k++) {
                 const __m256 dn = _mm256_sub_ps(_mm256_load_ps(wide_row(n->bounds, near_row[k])),
                                                 p->ia_o_near[k]);
                 const __m256 df = _mm256_sub_ps(_mm256_load_ps(wide_row(n->bounds, far_row[k])),
                                                 p->ia_o_far[k]);
                 /* One product for the near end (packet_ia_init). */
-                const __m256 tn = _mm256_mul_ps(dn, p->ia_i_near[k]);
-                const __m256 tf = _mm256_max_ps(_mm256_mul_ps(df, p->ia_i_lo[k]),
-                                                _mm256_mul_ps(df, p->ia_i_hi[k]));
-                t0 = _mm256_max_ps(tn, t0);
-                t1 = _mm256_min_ps(tf, t1);
+                ne[k] = _mm256_mul_ps(dn, p->ia_i_near[k]);
+                fa[k] = _mm256_mul_ps(_mm256_max_ps(_mm256_mul_ps(df, p->ia_i_lo[k]),
+                                                    _mm256_mul_ps(df, p->ia_i_hi[k])),
+                                      scale8);
             }
-            t1 = _mm256_mul_ps(t1, scale8);
-            t1 = _mm256_min_ps(t1, limit_hi);
+            const __m256 t0 = _mm256_castsi256_ps(_mm256_max_epi32(
+                _mm256_max_epi32(_mm256_castps_si256(ne[0]), _mm256_castps_si256(ne[1])),
+                _mm256_max_epi32(_mm256_castps_si256(ne[2]), _mm256_castps_si256(p->ia_tmin))));
+#if defined(__AVX512VL__) && defined(__AVX512DQ__)
+            /* AVX-512: the comparisons into mask registers, ANDed as a
+             * tree; the empty asm keeps GCC from chaining them as masked
+             * compares (traverse_wide8_ray.h's note). */
+            __mmask8 k0 = _mm256_cmp_ps_mask(t0, limit_hi, _CMP_LE_OQ);
+            __mmask8 k1 = _mm256_cmp_ps_mask(t0, fa[0], _CMP_LE_OQ);
+            __mmask8 k2 = _mm256_cmp_ps_mask(t0, fa[1], _CMP_LE_OQ);
+            __mmask8 k3 = _mm256_cmp_ps_mask(t0, fa[2], _CMP_LE_OQ);
+#if defined(__GNUC__)
+            __asm__("" : "+k"(k0), "+k"(k1), "+k"(k2), "+k"(k3));
+#endif
             const unsigned pass =
-                (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(t0, t1, _CMP_LE_OQ));
+                (unsigned)_kand_mask8(_kand_mask8(k0, k1), _kand_mask8(k2, k3));
+#else
+            const unsigned pass = (unsigned)_mm256_movemask_ps(
+                _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(t0, limit_hi, _CMP_LE_OQ),
+                                            _mm256_cmp_ps(t0, fa[0], _CMP_LE_OQ)),
+                              _mm256_and_ps(_mm256_cmp_ps(t0, fa[1], _CMP_LE_OQ),
+                                            _mm256_cmp_ps(t0, fa[2], _CMP_LE_OQ))));
+#endif
             unsigned push = 0; /* the children entered by at least one ray */
             if (p->ia_masks &&
                 (unsigned)__builtin_popcount(pass) >= (unsigned)__builtin_popcount(rays)) {
