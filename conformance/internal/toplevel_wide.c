@@ -163,6 +163,19 @@ static void build_scene(struct scene *scene, const struct bvh_build_params *para
     CHECK(scene_prepare_objects(scene, NULL, 100.0, &changes) == SCENE_OK);
 }
 
+/* The same `count` instances as a binary reference scene and a scene
+ * with the 8-wide layout, default build parameters otherwise. */
+static void build_binary_and_wide(struct scene *binary, struct scene *wide,
+                                  const struct placement *places, int count)
+{
+    struct bvh_build_params params;
+    bvh_build_params_default(&params);
+    params.wide_layout = 0;
+    build_scene(binary, &params, 0, places, count);
+    params.wide_layout = 8;
+    build_scene(wide, &params, 0, places, count);
+}
+
 static int acquire(void *user, void *object, struct trace_object_view *view)
 {
     struct scene *scene = user;
@@ -361,13 +374,8 @@ static void check_extreme_packets(void)
             p->t[2] = -(double)i;
         }
     }
-    struct bvh_build_params params;
-    bvh_build_params_default(&params);
     struct scene ref_scene, wide_scene;
-    params.wide_layout = 0;
-    build_scene(&ref_scene, &params, 0, places, EXTREME);
-    params.wide_layout = 8;
-    build_scene(&wide_scene, &params, 0, places, EXTREME);
+    build_binary_and_wide(&ref_scene, &wide_scene, places, EXTREME);
     const struct trace_kernels *tables[2] = {trace_kernels_best(),
                                              trace_kernels_get(TRACE_ISA_AVX2)};
     long mismatches = 0, hits = 0, underflow = 0, overflow = 0, packets = 0;
@@ -498,13 +506,8 @@ static void check_one_leaf_packets(void)
     const struct trace_kernels *scalar = trace_kernels_get(TRACE_ISA_SCALAR);
     long mismatches = 0, hits = 0, skipped = 0, packets = 0, leaves = 0;
     for (int count = 1; count <= 3; count++) {
-        struct bvh_build_params params;
-        bvh_build_params_default(&params);
         struct scene ref_scene, wide_scene;
-        params.wide_layout = 0;
-        build_scene(&ref_scene, &params, 0, places, count);
-        params.wide_layout = 8;
-        build_scene(&wide_scene, &params, 0, places, count);
+        build_binary_and_wide(&ref_scene, &wide_scene, places, count);
         leaves += wide_scene.frame.top.nodes[0].count > 0;
         for (int q = 0; q < 2000; q++) {
             struct trace_packet pk;
