@@ -164,7 +164,7 @@ static unsigned wide_near_refused(const struct wide_state *s, const struct tri4_
 __attribute__((always_inline))
 #endif
 static inline int wide_packet_test(struct wide_state *s, const struct tri4_packet *p, uint32_t n,
-                                   int any_hit, int early_out, int depth_out)
+                                   int any_hit, int early_out, int depth_out, int behind_out)
 {
     /* An any-hit walk returns at its first hit: found stays 0. */
     float limit = !any_hit && s->found ? isect_next_up(s->best) : s->best;
@@ -200,6 +200,26 @@ static inline int wide_packet_test(struct wide_state *s, const struct tri4_packe
     while (mask) {
         const unsigned l = (unsigned)__builtin_ctz(mask);
         mask &= mask - 1u;
+        /* behind_out (the single-ray closest-hit leaves): a kept lane
+         * whose box interval lies wholly before tmin (t_lo and t_hi <
+         * tmin) is refused without the finish.  The edge test is on the
+         * ray's line, so a triangle behind the origin that the line
+         * crosses passes it; when its depths straddle the origin (z_hi
+         * >= tmin, which the filter tests: a wall behind a camera inside
+         * a room) only the x and y slabs show that the crossing lies
+         * behind.  The finish would refuse it: isect_clamp_to_box takes
+         * t < t_hi ? t : t_hi, a value <= t_hi (t_hi for a NaN t), then
+         * u > t_lo ? u : t_lo, so t ends as one of two values below tmin
+         * and fails t >= tmin; a deferred lane's double edge step returns
+         * 0 or leads to that finish.  So the same answer without the
+         * finish's double-precision normal, plane distance and division:
+         * the BART kitchen's camera rays finished 0.94 such lanes a ray
+         * (of 2.29 finishes, 1.30 accepted); random rays 0.05.  Here, per
+         * kept lane, rather than in the filter's vectors: there (two more
+         * operations on the chain to the mask) gears', the soup's and
+         * bumpy's camera rays were 0.01-0.04 of Embree slower. */
+        if (behind_out && lanes.t_hi[l] < s->ray->tmin && lanes.t_lo[l] < s->ray->tmin)
+            continue;
         float t, u, w;
         limit = !any_hit && s->found ? isect_next_up(s->best) : s->best;
         if (!tri4_lane_test(s->ray, p, &lanes, l, any_hit, limit, &t, &u, &w))
@@ -220,7 +240,7 @@ __attribute__((always_inline))
 static inline int wide_packet_body(struct wide_state *s, const struct tri4_packet *p, uint32_t n,
                                    int any_hit)
 {
-    return wide_packet_test(s, p, n, any_hit, 1, 0);
+    return wide_packet_test(s, p, n, any_hit, 1, 0, 0);
 }
 
 /* A leaf lane: count triangles in packets from `first` (wide_packet_body
@@ -718,16 +738,20 @@ static inline int walk_wide8(const struct bvh4 *wide, struct wide_state *s, uint
  * behind tmin, wide_packet_test); only the single-ray any-hit leaves
  * take them, so that the closest-hit leaves, the packet kernels and the
  * 4-wide walks compile as before. */
-#define WIDE8_LEAF_TEST(name, test, any_hit, early_out, depth_out)                               \
+/* behind_out: the closest-hit leaves' refusal of the kept lanes wholly
+ * before tmin (wide_packet_test says why it is exact); only the
+ * single-ray closest-hit leaves take it.  The any-hit leaves refuse
+ * those lanes with depth_out (wide_packet_test's near lanes). */
+#define WIDE8_LEAF_TEST(name, test, any_hit, early_out, depth_out, behind_out)                   \
     static int name(struct wide_state *s, const struct tri4_packet *p, uint32_t n) WIDE_NOINLINE; \
     static int name(struct wide_state *s, const struct tri4_packet *p, uint32_t n)                \
     {                                                                                              \
-        return test(s, p, n, any_hit, early_out, depth_out);                                       \
+        return test(s, p, n, any_hit, early_out, depth_out, behind_out);                           \
     }
 
-WIDE8_LEAF_TEST(wide8_packet_closest, wide_packet_test, 0, 1, 0)
-WIDE8_LEAF_TEST(wide8_packet_full, wide_packet_test, 0, 0, 0)
-WIDE8_LEAF_TEST(wide8_packet_any, wide_packet_test, 1, 1, 1)
+WIDE8_LEAF_TEST(wide8_packet_closest, wide_packet_test, 0, 1, 0, 1)
+WIDE8_LEAF_TEST(wide8_packet_full, wide_packet_test, 0, 0, 0, 1)
+WIDE8_LEAF_TEST(wide8_packet_any, wide_packet_test, 1, 1, 1, 0)
 
 /* The byte offsets of the near x, y, z and far x, y, z rows of a
  * bvh8_node's bounds per ray octant (bit k: dir[k] negative, whose near
@@ -828,7 +852,7 @@ WIDE8_WALK(wide8_walk_any_stats, walk_wide8_ray, 1, 1, 1)
 __attribute__((always_inline))
 #endif
 static inline int wide_leaf8_test(struct wide_state *s, const struct tri4_packet *p, uint32_t n,
-                                  int any_hit, int early_out, int depth_out)
+                                  int any_hit, int early_out, int depth_out, int behind_out)
 {
     float limit = !any_hit && s->found ? isect_next_up(s->best) : s->best;
     struct tri4_lanes lanes[2];
@@ -866,6 +890,10 @@ static inline int wide_leaf8_test(struct wide_state *s, const struct tri4_packet
         mask &= mask - 1u;
         const unsigned k = l >> 2;
         const struct tri4_packet *q = p + k;
+        /* behind_out: as wide_packet_test. */
+        if (behind_out && lanes[k].t_hi[l & 3u] < s->ray->tmin &&
+            lanes[k].t_lo[l & 3u] < s->ray->tmin)
+            continue;
         float t, u, w;
         limit = !any_hit && s->found ? isect_next_up(s->best) : s->best;
         if (!tri4_lane_test(s->ray, q, &lanes[k], l & 3u, any_hit, limit, &t, &u, &w))
@@ -879,9 +907,9 @@ static inline int wide_leaf8_test(struct wide_state *s, const struct tri4_packet
     return 0;
 }
 
-WIDE8_LEAF_TEST(wide8_leaf8_closest, wide_leaf8_test, 0, 1, 0)
-WIDE8_LEAF_TEST(wide8_leaf8_full, wide_leaf8_test, 0, 0, 0)
-WIDE8_LEAF_TEST(wide8_leaf8_any, wide_leaf8_test, 1, 1, 1)
+WIDE8_LEAF_TEST(wide8_leaf8_closest, wide_leaf8_test, 0, 1, 0, 1)
+WIDE8_LEAF_TEST(wide8_leaf8_full, wide_leaf8_test, 0, 0, 0, 1)
+WIDE8_LEAF_TEST(wide8_leaf8_any, wide_leaf8_test, 1, 1, 1, 0)
 
 #define WIDE8_RAY walk_wide8_ray_leaf8
 #define WIDE8_RAY_LEAF8 1
