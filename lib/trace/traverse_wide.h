@@ -233,14 +233,15 @@ static inline int wide_packet_test(struct wide_state *s, const struct tri4_packe
     return 0;
 }
 
-/* wide_packet_test with the filter's early return. */
+/* wide_packet_test with the filter's early return (behind_out: the
+ * 4-wide single-ray walks' closest-hit leaves, walk_wide4_body). */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
 static inline int wide_packet_body(struct wide_state *s, const struct tri4_packet *p, uint32_t n,
-                                   int any_hit)
+                                   int any_hit, int behind_out)
 {
-    return wide_packet_test(s, p, n, any_hit, 1, 0, 0);
+    return wide_packet_test(s, p, n, any_hit, 1, 0, behind_out);
 }
 
 /* A leaf lane: count triangles in packets from `first` (wide_packet_body
@@ -249,14 +250,15 @@ static inline int wide_packet_body(struct wide_state *s, const struct tri4_packe
 __attribute__((always_inline))
 #endif
 static inline int wide_leaf_body(struct wide_state *s, const struct tri4_packet *packets,
-                                 uint32_t first, uint32_t count, int any_hit, int stats)
+                                 uint32_t first, uint32_t count, int any_hit, int stats,
+                                 int behind_out)
 {
     for (uint32_t j = 0; j < count; j += 4) {
         const struct tri4_packet *p = &packets[first + j / 4];
         const uint32_t n = count - j < 4 ? count - j : 4;
         if (stats)
             s->triangle_tests += n;
-        if (wide_packet_body(s, p, n, any_hit))
+        if (wide_packet_body(s, p, n, any_hit, behind_out))
             return 1;
     }
     return 0;
@@ -269,7 +271,7 @@ __attribute__((always_inline))
 static inline int wide_leaf_impl(struct wide_state *s, const struct tri4_packet *packets,
                                  uint32_t first, uint32_t count, int stats)
 {
-    return wide_leaf_body(s, packets, first, count, s->any_hit, stats);
+    return wide_leaf_body(s, packets, first, count, s->any_hit, stats, 0);
 }
 
 /* wide_leaf_impl with the counters (the packet walk's entry). */
@@ -337,7 +339,12 @@ static inline int walk_wide4_body(const struct bvh4 *wide, struct wide_state *s,
     uint32_t cur_count = root_count;
     for (;;) {
         if (cur_count) {
-            if (wide_leaf_body(s, wide->packets, cur, cur_count, any_hit, stats))
+            /* The closest-hit leaves refuse the lanes wholly before tmin
+             * (wide_packet_test's behind_out) in the single-ray walks
+             * (int_entry): the packet kernels' hybrid fallback
+             * (walk_wide4_impl) compiles as before. */
+            if (wide_leaf_body(s, wide->packets, cur, cur_count, any_hit, stats,
+                               int_entry && !any_hit))
                 return 1;
         } else {
             const struct bvh4_node *n = &nodes[cur];
