@@ -77,16 +77,17 @@ shade_log2_quad_fn shade_log2_quad_avx2_unit(void)
 static int lod_fast_lanes(const struct surface_lod *l, int level_count, const float dir[4][3],
                           const float ng[4][3], const float width[4], float fast[4], float ref[4])
 {
-    struct lod_fast f;
+    struct surface_lod_fast f;
+    lod_fast_init(l, &f);
     int mask = 0;
-    if (lod_fast_init(l, &f)) {
+    if (f.state > 0) {
         __m256d d[3], g[3];
         for (int k = 0; k < 3; k++) {
             d[k] = _mm256_set_pd(dir[3][k], dir[2][k], dir[1][k], dir[0][k]);
             g[k] = _mm256_set_pd(ng[3][k], ng[2][k], ng[1][k], ng[0][k]);
         }
         const __m256d w = _mm256_set_pd(width[3], width[2], width[1], width[0]);
-        mask = lod_fast_quad(&f, d, g, w, _mm256_set1_pd(lod_top(level_count)), fast);
+        mask = lod_fast_quad(&f, l->n, d, g, w, _mm256_set1_pd(lod_top(level_count)), fast);
     }
     for (int i = 0; i < 4; i++)
         ref[i] = lod_ray(l, level_count, ng[i], dir[i], width[i]);

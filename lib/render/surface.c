@@ -298,6 +298,7 @@ SURFACE_INLINE const struct surface_lod *lod_triangle(struct surface_cache *cach
         for (int k = 0; k < 3; k++)
             l->n[k] = l->nn[k] / l->p_a;
         c->geometry = 1;
+        c->fast.state = 0;
     }
     if (c->tex != tex || memcmp(c->st[0], st[0], sizeof(c->st[0])) ||
         memcmp(c->st[1], st[1], sizeof(c->st[1])) || memcmp(c->st[2], st[2], sizeof(c->st[2]))) {
@@ -310,6 +311,7 @@ SURFACE_INLINE const struct surface_lod *lod_triangle(struct surface_cache *cach
         for (int i = 0; i < 3; i++)
             memcpy(c->st[i], st[i], sizeof(c->st[i]));
         c->tex = tex;
+        c->fast.state = 0;
     }
     return l;
 }
@@ -767,7 +769,8 @@ SURFACE_INLINE int lod_quad_axes(const struct lod_quad_rest *rest, int i, float 
  * far above the roundings between the squares and the hypots), -inf for
  * x <= 1 and +inf from x >= top on.  Here x' = sqrt(w^2 max(|M d|^2 |d|^2,
  * |M (n x d)|^2 (g . d)^2) / (|n x d|^2 (g . d)^2)): one division and one
- * square root a lane, M once a block.
+ * square root a lane, M once a triangle part (lod_fast_init, kept in the
+ * tile's cache beside the triangle part).
  *
  * The margin.  Both x' and lod_ray's x are within delta x of the exact
  * value of these expressions (the same inputs: d, g, width and the
@@ -804,20 +807,15 @@ SURFACE_INLINE int lod_quad_axes(const struct lod_quad_rest *rest, int i, float 
 /* (kappa / (sin cos))^2 <= 64^2. */
 #define LOD_FAST_RATIO2 4096.0
 
-/* A triangle part's texel map and bounds for lod_fast_quad. */
-struct lod_fast {
-    double m[2][3]; /* M: an in-plane world vector to its level-0 texels */
-    double n[3];    /* the unit normal (surface_lod.n) */
-    /* The least sin^2 cos^2 = |n x d|^2 (g . d)^2 / |d|^4 a lane is taken
-     * with: (kappa / 64)^2, kappa at least 1, raised by 2^-20 for its own
-     * roundings. */
-    double sin2;
-};
-
-/* l's lod_fast into f; 0 when the triangle part leaves lod_ray's common
- * path or its values are too large or small for the bound's ranges. */
-static int lod_fast_init(const struct surface_lod *l, struct lod_fast *f)
+/* l's texel map and bound into f (surface_lod_fast; state 1), or state
+ * -1 when the triangle part leaves lod_ray's common path or its values
+ * are too large or small for the bound's ranges.  M's entries need not
+ * be any particular rounding, only within a few eps K of the exact ones
+ * (the product by 1 / nn2 adds one); kappa^2 = 4 K^2 / |M|^2 needs no
+ * square root of its own. */
+static void lod_fast_init(const struct surface_lod *l, struct surface_lod_fast *f)
 {
+    f->state = -1;
     const double lo = 0x1p-100, hi = 0x1p100;
     const double w1s = dot3d(l->w1, l->w1), w2s = dot3d(l->w2, l->w2);
     const double a1s = l->a1[0] * l->a1[0] + l->a1[1] * l->a1[1];
@@ -825,39 +823,42 @@ static int lod_fast_init(const struct surface_lod *l, struct lod_fast *f)
     if (!(l->p_a >= lo && l->p_a <= hi && l->t_a >= lo && l->t_a <= hi && w1s >= lo &&
           w1s <= hi && w2s >= lo && w2s <= hi && a1s >= lo && a1s <= hi && a2s >= lo &&
           a2s <= hi && isfinite(l->nn2)))
-        return 0;
+        return;
+    const double inv = 1.0 / l->nn2;
     double c2[3], c1[3];
     cross3d(l->w2, l->nn, c2);
     cross3d(l->nn, l->w1, c1);
     for (int k = 0; k < 3; k++) {
-        c2[k] /= l->nn2;
-        c1[k] /= l->nn2;
-        f->n[k] = l->n[k];
+        c2[k] *= inv;
+        c1[k] *= inv;
     }
-    for (int r = 0; r < 2; r++)
+    double m2 = 0.0;
+    for (int r = 0; r < 2; r++) {
         for (int k = 0; k < 3; k++)
             f->m[r][k] = l->a1[r] * c2[k] + l->a2[r] * c1[k];
-    const double k_abs = (sqrt(w2s) * sqrt(a1s) + sqrt(w1s) * sqrt(a2s)) / l->p_a;
-    double m2 = 0.0;
-    for (int r = 0; r < 2; r++)
         m2 += dot3d(f->m[r], f->m[r]);
+    }
     if (!(m2 >= 0x1p-200 && m2 <= 0x1p200))
-        return 0;
-    const double kappa = fmax(2.0 * k_abs / sqrt(m2), 1.0);
-    f->sin2 = kappa * kappa / LOD_FAST_RATIO2 * (1.0 + 0x1p-20);
-    return f->sin2 < 1.0;
+        return;
+    /* K^2 = (|w2| |a1| + |w1| |a2|)^2 / nn2. */
+    const double k_sum = sqrt(w2s * a1s) + sqrt(w1s * a2s);
+    const double kappa2 = fmax(4.0 * (k_sum * k_sum * inv) / m2, 1.0);
+    f->sin2 = kappa2 / LOD_FAST_RATIO2 * (1.0 + 0x1p-20);
+    if (f->sin2 < 1.0)
+        f->state = 1;
 }
 
 /* lod_quad's lambdas of four hits on f's triangle (d their directions,
  * g their facing normals, width their cones' widths at the hits, top the
  * texture's lod_top) where lod_fast's margin decides them: writes those
  * into lambda and returns their mask. */
-SURFACE_INLINE int lod_fast_quad(const struct lod_fast *f, const __m256d d[3], const __m256d g[3],
-                                 __m256d width, __m256d top, float lambda[4])
+SURFACE_INLINE int lod_fast_quad(const struct surface_lod_fast *f, const double unit[3],
+                                 const __m256d d[3], const __m256d g[3], __m256d width,
+                                 __m256d top, float lambda[4])
 {
     __m256d n[3], m0[3], m1[3], c[3];
     for (int k = 0; k < 3; k++) {
-        n[k] = _mm256_set1_pd(f->n[k]);
+        n[k] = _mm256_set1_pd(unit[k]);
         m0[k] = _mm256_set1_pd(f->m[0][k]);
         m1[k] = _mm256_set1_pd(f->m[1][k]);
     }
@@ -1719,8 +1720,10 @@ int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene
             const struct surface_lod *const l4[4] = {tri, tri, tri, tri};
             const double top = lod_top(tx->level_count);
             const __m256 wv = _mm256_loadu_ps(width);
-            struct lod_fast fast;
-            const int use_fast = lod_fast_init(tri, &fast);
+            /* The texel map once per triangle part (the tile's cache). */
+            if (!c->fast.state)
+                lod_fast_init(tri, &c->fast);
+            const int use_fast = c->fast.state > 0;
             for (int h = 0; h < TRACE_PACKET / 4; h++) {
 #define HALF(v) _mm256_cvtps_pd(h ? _mm256_extractf128_ps(v, 1) : _mm256_castps256_ps128(v))
                 __m256d d[3], gd[3];
@@ -1731,8 +1734,8 @@ int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene
                 /* lod_fast_quad where its margin decides all four, else
                  * lod_quad's chain for the quad (the same lambdas). */
                 if (use_fast &&
-                    lod_fast_quad(&fast, d, gd, HALF(wv), _mm256_set1_pd(top), &lambda[4 * h]) ==
-                        15)
+                    lod_fast_quad(&c->fast, tri->n, d, gd, HALF(wv), _mm256_set1_pd(top),
+                                  &lambda[4 * h]) == 15)
                     continue;
                 struct lod_quad_rest rest;
                 const int decided = lod_quad(l4, 1, d, gd, HALF(wv), _mm256_set1_pd(top),
