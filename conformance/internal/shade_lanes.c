@@ -16,6 +16,14 @@
  * magnifications, zeros, infinities and NaN, coordinates near texel
  * edges, negative, large and non-finite.  A block it refuses (a
  * coordinate of 2^31 or more, other filters) must be refused whole.
+ *
+ * The levels of detail of a block on one triangle by its texel map
+ * (surface.c's lod_fast_quad, through shade_lod_fast_avx2_unit) against
+ * lod_ray, bit for bit in every lane it decides: triangles of every shape
+ * from right to slivers, textures stretched up to 1000:1, directions
+ * from head-on to grazing, widths putting lambda on and next to every
+ * level boundary and anywhere in between; at least half the lanes must
+ * be decided (the frame's common case, not only its fallback).
  * Skipped where the unit is absent or the CPU has no AVX2.
  *
  * Internal test (links the static library).  Non-zero exit on failure.
@@ -28,6 +36,7 @@
 #include "base/alloc.h"
 #include "check.h"
 #include "render/shade.h"
+#include "render/surface.h"
 #include "scene/texture.h"
 
 static uint32_t rng = 2463534242u;
@@ -148,20 +157,127 @@ static int log2_bound(shade_log2_quad_fn log2_quad)
     return failures;
 }
 
+/* A random direction component of [-1, 1]. */
+static double any_unit(void)
+{
+    return (double)uniform(-1.0f, 1.0f);
+}
+
+/* lod_fast_quad's decided lanes against lod_ray over random triangles,
+ * directions and widths. */
+static int lod_fast_bound(shade_lod_fast_fn lod_fast)
+{
+    int failures = 0;
+    long lanes = 0, decided = 0;
+    for (int tri = 0; tri < 20000 && failures <= 20; tri++) {
+        /* World edges: a random pair, a long thin one, a sliver (w2
+         * nearly along w1), scaled by 2^-8 .. 2^8. */
+        double w1[3], w2[3];
+        const double scale = ldexp(1.0, (int)(next() % 17u) - 8);
+        for (int k = 0; k < 3; k++) {
+            w1[k] = any_unit() * scale;
+            w2[k] = any_unit() * scale;
+        }
+        if (tri % 5 == 1)
+            for (int k = 0; k < 3; k++)
+                w2[k] *= 1e-3;
+        if (tri % 5 == 2)
+            for (int k = 0; k < 3; k++)
+                w2[k] = w1[k] * 0.7 + w2[k] * 1e-3;
+        /* Texture coordinates, one axis stretched up to 1000 times. */
+        const float stretch = (tri % 3 == 0) ? uniform(1.0f, 1000.0f) : 1.0f;
+        float st[3][2];
+        for (int v = 0; v < 3; v++) {
+            st[v][0] = uniform(-2.0f, 2.0f) * stretch;
+            st[v][1] = uniform(-2.0f, 2.0f);
+        }
+        const int tw = 1 << (next() % 11u), th = 1 << (next() % 11u);
+        const int level_count = scene_texture_level_count(tw, th);
+        /* lod_triangle's operations. */
+        struct surface_lod l;
+        memcpy(l.w1, w1, sizeof(w1));
+        memcpy(l.w2, w2, sizeof(w2));
+        l.nn[0] = w1[1] * w2[2] - w1[2] * w2[1];
+        l.nn[1] = w1[2] * w2[0] - w1[0] * w2[2];
+        l.nn[2] = w1[0] * w2[1] - w1[1] * w2[0];
+        l.nn2 = l.nn[0] * l.nn[0] + l.nn[1] * l.nn[1] + l.nn[2] * l.nn[2];
+        l.p_a = sqrt(l.nn2);
+        for (int k = 0; k < 3; k++)
+            l.n[k] = l.nn[k] / l.p_a;
+        l.a1[0] = ((double)st[1][0] - (double)st[0][0]) * tw;
+        l.a1[1] = ((double)st[1][1] - (double)st[0][1]) * th;
+        l.a2[0] = ((double)st[2][0] - (double)st[0][0]) * tw;
+        l.a2[1] = ((double)st[2][1] - (double)st[0][1]) * th;
+        l.t_a = fabs(l.a1[0] * l.a2[1] - l.a2[0] * l.a1[1]);
+        float ng[4][3], dir[4][3], width[4], fast[4], ref[4];
+        for (int i = 0; i < 4; i++) {
+            /* Unit float directions: random, within a few degrees of the
+             * normal, or grazing. */
+            double d[3];
+            const int kind = (int)(next() % 4u);
+            for (int k = 0; k < 3; k++)
+                d[k] = any_unit();
+            const double along = l.n[0] * d[0] + l.n[1] * d[1] + l.n[2] * d[2];
+            for (int k = 0; k < 3; k++) {
+                if (kind == 1)
+                    d[k] = l.n[k] + 0.05 * d[k];
+                if (kind == 2)
+                    d[k] -= 0.999 * l.n[k] * along;
+            }
+            const double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+            const double side = l.n[0] * d[0] + l.n[1] * d[1] + l.n[2] * d[2] < 0.0 ? 1.0 : -1.0;
+            for (int k = 0; k < 3; k++) {
+                dir[i][k] = (float)(d[k] / len);
+                ng[i][k] = (float)(side * l.n[k]);
+            }
+            width[i] = 1.0f;
+        }
+        /* Widths putting lambda anywhere in [-3, q + 3], or on a level
+         * boundary, or 2^-k of a level from it. */
+        lod_fast(&l, level_count, dir, ng, width, fast, ref);
+        for (int i = 0; i < 4; i++) {
+            if (!isfinite(ref[i]))
+                continue;
+            float target = uniform(-3.0f, (float)level_count + 3.0f);
+            if (next() % 2u) {
+                target = (float)(int)(next() % (unsigned)(level_count + 2));
+                if (next() % 2u)
+                    target += ldexpf((next() & 1) ? 1.0f : -1.0f, -(int)(next() % 30u));
+            }
+            width[i] = (float)exp2((double)target - (double)ref[i]);
+        }
+        const int mask = lod_fast(&l, level_count, dir, ng, width, fast, ref);
+        for (int i = 0; i < 4; i++) {
+            lanes++;
+            if (!(mask >> i & 1))
+                continue;
+            decided++;
+            failures += !CHECKF(memcmp(&fast[i], &ref[i], sizeof(float)) == 0,
+                                "triangle %d lane %d: lod_fast %a, lod_ray %a", tri, i,
+                                (double)fast[i], (double)ref[i]);
+        }
+    }
+    printf("shade_lanes: lod_fast decided %ld of %ld lanes\n", decided, lanes);
+    failures += !CHECKF(2 * decided >= lanes, "lod_fast decided %ld of %ld lanes", decided, lanes);
+    return failures;
+}
+
 int main(void)
 {
     const shade_log2_quad_fn log2_quad = shade_log2_quad_avx2_unit();
+    const shade_lod_fast_fn lod_fast = shade_lod_fast_avx2_unit();
     const shade_texture_lod8_fn lod8 = shade_texture_lod8_avx2_unit();
 #if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
     const int cpu = __builtin_cpu_supports("avx2");
 #else
     const int cpu = 0;
 #endif
-    if (!lod8 || !log2_quad || !cpu) {
+    if (!lod8 || !log2_quad || !lod_fast || !cpu) {
         printf("shade_lanes: skipped (no AVX2 unit or CPU)\n");
         return 0;
     }
     int failures = log2_bound(log2_quad);
+    failures += lod_fast_bound(lod_fast);
     struct scene_textures tab;
     scene_textures_init(&tab);
     struct scene_texture *tex = scene_textures_get_or_create(&tab, 1);

@@ -155,6 +155,17 @@ shade_texture_lod8_fn shade_texture_lod8_avx2_unit(void);
  * lanes_log2_4), for the test of its bound; NULL where it is absent. */
 typedef void (*shade_log2_quad_fn)(const double x[4], double out[4]);
 shade_log2_quad_fn shade_log2_quad_avx2_unit(void);
+/* That unit's levels of detail of four hits on one triangle by the
+ * triangle's texel map (surface.c, lod_fast_quad) beside lod_ray's, for
+ * the test that the lanes it decides are lod_ray's bit for bit: l the
+ * triangle part, lane i a hit along dir[i] with the facing normal ng[i]
+ * and the cone's width[i]; fast[i] and ref[i] get the two lambdas; returns
+ * the mask of the lanes lod_fast_quad decided.  NULL where it is absent. */
+struct surface_lod;
+typedef int (*shade_lod_fast_fn)(const struct surface_lod *l, int level_count,
+                                 const float dir[4][3], const float ng[4][3],
+                                 const float width[4], float fast[4], float ref[4]);
+shade_lod_fast_fn shade_lod_fast_avx2_unit(void);
 
 /*
  * Whitted shading's shadow rays of a 4 x 2 block's camera rays, one

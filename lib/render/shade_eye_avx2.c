@@ -73,6 +73,31 @@ shade_log2_quad_fn shade_log2_quad_avx2_unit(void)
 {
     return log2_quad;
 }
+
+static int lod_fast_lanes(const struct surface_lod *l, int level_count, const float dir[4][3],
+                          const float ng[4][3], const float width[4], float fast[4], float ref[4])
+{
+    struct surface_lod_fast f;
+    lod_fast_init(l, &f);
+    int mask = 0;
+    if (f.state > 0) {
+        __m256d d[3], g[3];
+        for (int k = 0; k < 3; k++) {
+            d[k] = _mm256_set_pd(dir[3][k], dir[2][k], dir[1][k], dir[0][k]);
+            g[k] = _mm256_set_pd(ng[3][k], ng[2][k], ng[1][k], ng[0][k]);
+        }
+        const __m256d w = _mm256_set_pd(width[3], width[2], width[1], width[0]);
+        mask = lod_fast_quad(&f, l->n, d, g, w, _mm256_set1_pd(lod_top(level_count)), fast);
+    }
+    for (int i = 0; i < 4; i++)
+        ref[i] = lod_ray(l, level_count, ng[i], dir[i], width[i]);
+    return mask;
+}
+
+shade_lod_fast_fn shade_lod_fast_avx2_unit(void)
+{
+    return lod_fast_lanes;
+}
 #else
 #include "render/shade.h"
 
@@ -87,6 +112,11 @@ shade_texture_lod8_fn shade_texture_lod8_avx2_unit(void)
 }
 
 shade_log2_quad_fn shade_log2_quad_avx2_unit(void)
+{
+    return NULL;
+}
+
+shade_lod_fast_fn shade_lod_fast_avx2_unit(void)
 {
     return NULL;
 }

@@ -298,6 +298,7 @@ SURFACE_INLINE const struct surface_lod *lod_triangle(struct surface_cache *cach
         for (int k = 0; k < 3; k++)
             l->n[k] = l->nn[k] / l->p_a;
         c->geometry = 1;
+        c->fast.state = 0;
     }
     if (c->tex != tex || memcmp(c->st[0], st[0], sizeof(c->st[0])) ||
         memcmp(c->st[1], st[1], sizeof(c->st[1])) || memcmp(c->st[2], st[2], sizeof(c->st[2]))) {
@@ -310,6 +311,7 @@ SURFACE_INLINE const struct surface_lod *lod_triangle(struct surface_cache *cach
         for (int i = 0; i < 3; i++)
             memcpy(c->st[i], st[i], sizeof(c->st[i]));
         c->tex = tex;
+        c->fast.state = 0;
     }
     return l;
 }
@@ -741,6 +743,171 @@ SURFACE_INLINE int lod_quad_axes(const struct lod_quad_rest *rest, int i, float 
     const double ja[2] = {rest->ja[0][i], rest->ja[1][i]}, jb[2] = {rest->jb[0][i], rest->jb[1][i]};
     *lambda = lod_axes(ja, jb, rest->sa[i], rest->sb[i], rest->sbc[i], rest->cos[i], width, top);
     return 1;
+}
+
+/*
+ * The level of detail of a block of hits on one triangle
+ * (surface_fetch_lanes) from the triangle's texel map, with a proven
+ * margin instead of lod_quad's chain of thirteen divisions and three
+ * square roots a lane.
+ *
+ * lod_ray's texel vectors are linear in the in-plane vector e: alpha =
+ * (e x w2) . nn / nn2 = e . (w2 x nn) / nn2 and beta = (w1 x e) . nn /
+ * nn2 = e . (nn x w1) / nn2 (the scalar triple product's cyclic
+ * symmetry), so J e = M e with the 2 x 3 matrix M = (a1 (w2 x nn)^T + a2
+ * (nn x w1)^T) / nn2, and M nn = 0.  With along = P d / |P d| (P the
+ * projection off the unit normal, |P d| = |n x d|) and across = n x
+ * along, M along = M d / |n x d| and M across = M (n x d) / |n x d|; the
+ * cosine is |g . d| / |d|.  So lod_axes's two footprints, A = |J along|
+ * width / cosine and B = |J across| width, are
+ *
+ *     A^2 = |M d|^2 |d|^2 width^2 / (|n x d|^2 (g . d)^2),
+ *     B^2 = |M (n x d)|^2 width^2 / |n x d|^2,
+ *
+ * and texture_lod's lambda is float(log2(x)) for x its computed max(A,
+ * B) (lod_axes takes A or B alone only when it wins by LOD_AXIS_MARGIN,
+ * far above the roundings between the squares and the hypots), -inf for
+ * x <= 1 and +inf from x >= top on.  Here x' = sqrt(w^2 max(|M d|^2 |d|^2,
+ * |M (n x d)|^2 (g . d)^2) / (|n x d|^2 (g . d)^2)): one division and one
+ * square root a lane, M once a triangle part (lod_fast_init, kept in the
+ * tile's cache beside the triangle part).
+ *
+ * The margin.  Both x' and lod_ray's x are within delta x of the exact
+ * value of these expressions (the same inputs: d, g, width and the
+ * triangle part's doubles), delta = C eps (kappa / (sin cos) + 1 / cos +
+ * 1), eps = 2^-53, sin = |n x d| / |d|, cos = |g . d| / |d|, kappa = 2 K
+ * / |M| (|M| Frobenius') with K = (|w2| |a1| + |w1| |a2|) / |nn|: K
+ * bounds M's norm and the absolute error of a texel vector's
+ * computation, and since along and across are an orthonormal basis of
+ * the plane, |J along|^2 + |J across|^2 = |M|^2, so x >= width |M| / 2
+ * and an absolute error eps K |d| in M d, M (n x d), M along or M across
+ * is at most eps kappa / (sin cos) of x after the division by |n x d|
+ * and the cosine.  lod_ray's along carries absolute errors of some 35 eps
+ * before its normalisation (d / |d|, its dot with n, n's own from nn /
+ * p_a, the subtraction), so about 75 eps / sin after it, 160 eps / sin in
+ * across, and its texel vectors some 14 eps K of their own: about 175
+ * eps kappa / (sin cos) in all; the cosine's dot loses 5 eps / cos of
+ * x.  x' takes some 50 eps kappa / (sin cos) (M's entries, its two
+ * products, the cross product, the squares and the quotient).  C = 2^12
+ * covers these sums 18 times.  A lane is taken only with kappa / (sin
+ * cos) <= 64 and 1 / cos <= 64 (so lod_ray is on its common path:
+ * along_len > 1e-9, the cosine above LOD_MIN_COSINE), |d|^2 in [1/4, 4]
+ * and its squares in the normal range (an underflow's absolute error is
+ * then negligible): delta < 2^-41 129 < 2^-33.98, x' within 2^-32.97 of
+ * x, and log2(x') within 1.443 2^-32.97 + lanes_log2_4's 2^-47 + glibc's
+ * 2 ulps (2^-47) < 2^-32.4 of glibc's log2(x).  So x' beyond 1 or top by
+ * LOD_FAST_RELATIVE decides the side, and a log2 whose LOD_FAST_ABSOLUTE
+ * neighbourhood rounds to one float gives lod_ray's float (rounding is
+ * monotonic).  Undecided lanes (a footprint near 1 or the last level, a
+ * log2 within 2^-32 of a float's rounding boundary, a ray within a few
+ * degrees of the normal) take lod_quad, as before.
+ */
+#define LOD_FAST_RELATIVE 0x1p-32
+#define LOD_FAST_ABSOLUTE 0x1p-32
+/* (kappa / (sin cos))^2 <= 64^2. */
+#define LOD_FAST_RATIO2 4096.0
+
+/* l's texel map and bound into f (surface_lod_fast; state 1), or state
+ * -1 when the triangle part leaves lod_ray's common path or its values
+ * are too large or small for the bound's ranges.  M's entries need not
+ * be any particular rounding, only within a few eps K of the exact ones
+ * (the product by 1 / nn2 adds one); kappa^2 = 4 K^2 / |M|^2 needs no
+ * square root of its own. */
+static void lod_fast_init(const struct surface_lod *l, struct surface_lod_fast *f)
+{
+    f->state = -1;
+    const double lo = 0x1p-100, hi = 0x1p100;
+    const double w1s = dot3d(l->w1, l->w1), w2s = dot3d(l->w2, l->w2);
+    const double a1s = l->a1[0] * l->a1[0] + l->a1[1] * l->a1[1];
+    const double a2s = l->a2[0] * l->a2[0] + l->a2[1] * l->a2[1];
+    if (!(l->p_a >= lo && l->p_a <= hi && l->t_a >= lo && l->t_a <= hi && w1s >= lo &&
+          w1s <= hi && w2s >= lo && w2s <= hi && a1s >= lo && a1s <= hi && a2s >= lo &&
+          a2s <= hi && isfinite(l->nn2)))
+        return;
+    const double inv = 1.0 / l->nn2;
+    double c2[3], c1[3];
+    cross3d(l->w2, l->nn, c2);
+    cross3d(l->nn, l->w1, c1);
+    for (int k = 0; k < 3; k++) {
+        c2[k] *= inv;
+        c1[k] *= inv;
+    }
+    double m2 = 0.0;
+    for (int r = 0; r < 2; r++) {
+        for (int k = 0; k < 3; k++)
+            f->m[r][k] = l->a1[r] * c2[k] + l->a2[r] * c1[k];
+        m2 += dot3d(f->m[r], f->m[r]);
+    }
+    if (!(m2 >= 0x1p-200 && m2 <= 0x1p200))
+        return;
+    /* K^2 = (|w2| |a1| + |w1| |a2|)^2 / nn2. */
+    const double k_sum = sqrt(w2s * a1s) + sqrt(w1s * a2s);
+    const double kappa2 = fmax(4.0 * (k_sum * k_sum * inv) / m2, 1.0);
+    f->sin2 = kappa2 / LOD_FAST_RATIO2 * (1.0 + 0x1p-20);
+    if (f->sin2 < 1.0)
+        f->state = 1;
+}
+
+/* lod_quad's lambdas of four hits on f's triangle (d their directions,
+ * g their facing normals, width their cones' widths at the hits, top the
+ * texture's lod_top) where lod_fast's margin decides them: writes those
+ * into lambda and returns their mask. */
+SURFACE_INLINE int lod_fast_quad(const struct surface_lod_fast *f, const double unit[3],
+                                 const __m256d d[3], const __m256d g[3], __m256d width,
+                                 __m256d top, float lambda[4])
+{
+    __m256d n[3], m0[3], m1[3], c[3];
+    for (int k = 0; k < 3; k++) {
+        n[k] = _mm256_set1_pd(unit[k]);
+        m0[k] = _mm256_set1_pd(f->m[0][k]);
+        m1[k] = _mm256_set1_pd(f->m[1][k]);
+    }
+    quad_cross(n, d, c);
+    const __m256d dd = quad_dot(d, d), s = quad_dot(c, c);
+    const __m256d gd = quad_dot(g, d), gg = _mm256_mul_pd(gd, gd);
+    const __m256d u0 = quad_dot(m0, d), u1 = quad_dot(m1, d);
+    const __m256d v0 = quad_dot(m0, c), v1 = quad_dot(m1, c);
+    const __m256d p = _mm256_add_pd(_mm256_mul_pd(u0, u0), _mm256_mul_pd(u1, u1));
+    const __m256d q = _mm256_add_pd(_mm256_mul_pd(v0, v0), _mm256_mul_pd(v1, v1));
+    const __m256d ww = _mm256_mul_pd(width, width);
+    const __m256d num = _mm256_max_pd(_mm256_mul_pd(p, dd), _mm256_mul_pd(q, gg));
+    const __m256d x =
+        _mm256_sqrt_pd(_mm256_div_pd(_mm256_mul_pd(ww, num), _mm256_mul_pd(s, gg)));
+    /* The bound's conditions (NaNs fail every one); 1 / cos <= 64 follows
+     * from kappa / (sin cos) <= 64 with kappa >= 1 and sin <= 1. */
+    const __m256d tiny = _mm256_set1_pd(0x1p-500), huge = _mm256_set1_pd(0x1p500);
+    __m256d ok = _mm256_and_pd(_mm256_cmp_pd(dd, _mm256_set1_pd(0.25), _CMP_GE_OQ),
+                               _mm256_cmp_pd(dd, _mm256_set1_pd(4.0), _CMP_LE_OQ));
+    ok = _mm256_and_pd(ok, _mm256_cmp_pd(_mm256_mul_pd(s, gg),
+                                         _mm256_mul_pd(_mm256_set1_pd(f->sin2),
+                                                       _mm256_mul_pd(dd, dd)),
+                                         _CMP_GE_OQ));
+    ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(ww, _mm256_set1_pd(0x1p-200), _CMP_GE_OQ),
+                                         _mm256_cmp_pd(ww, _mm256_set1_pd(0x1p200), _CMP_LE_OQ)));
+    ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(p, tiny, _CMP_GE_OQ),
+                                         _mm256_cmp_pd(p, huge, _CMP_LE_OQ)));
+    ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(q, tiny, _CMP_GE_OQ),
+                                         _mm256_cmp_pd(q, huge, _CMP_LE_OQ)));
+    const __m256d below =
+        _mm256_cmp_pd(x, _mm256_set1_pd(1.0 - LOD_FAST_RELATIVE), _CMP_LT_OQ);
+    const __m256d beyond = _mm256_cmp_pd(
+        x, _mm256_mul_pd(top, _mm256_set1_pd(1.0 + LOD_FAST_RELATIVE)), _CMP_GT_OQ);
+    const __m256d inside = _mm256_and_pd(
+        _mm256_cmp_pd(x, _mm256_set1_pd(1.0 + LOD_FAST_RELATIVE), _CMP_GT_OQ),
+        _mm256_cmp_pd(x, _mm256_mul_pd(top, _mm256_set1_pd(1.0 - LOD_FAST_RELATIVE)),
+                      _CMP_LT_OQ));
+    const __m256d lg = lanes_log2_4(x);
+    const __m128 lg_f = _mm256_cvtpd_ps(lg);
+    const __m256d margin = _mm256_set1_pd(LOD_FAST_ABSOLUTE);
+    const __m128 exact =
+        _mm_and_ps(_mm_cmpeq_ps(_mm256_cvtpd_ps(_mm256_sub_pd(lg, margin)), lg_f),
+                   _mm_cmpeq_ps(_mm256_cvtpd_ps(_mm256_add_pd(lg, margin)), lg_f));
+    const __m128 below_ps = quad_mask_ps(below), beyond_ps = quad_mask_ps(beyond);
+    _mm_storeu_ps(lambda,
+                  _mm_blendv_ps(_mm_blendv_ps(lg_f, _mm_set1_ps(INFINITY), beyond_ps),
+                                _mm_set1_ps(-INFINITY), below_ps));
+    return _mm256_movemask_pd(ok) & (_mm256_movemask_pd(_mm256_or_pd(below, beyond)) |
+                                     (_mm256_movemask_pd(inside) & _mm_movemask_ps(exact)));
 }
 
 /* lod_quad of four textures' hits t[i] (their lodp, dir, ng, width and
@@ -1553,6 +1720,10 @@ int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene
             const struct surface_lod *const l4[4] = {tri, tri, tri, tri};
             const double top = lod_top(tx->level_count);
             const __m256 wv = _mm256_loadu_ps(width);
+            /* The texel map once per triangle part (the tile's cache). */
+            if (!c->fast.state)
+                lod_fast_init(tri, &c->fast);
+            const int use_fast = c->fast.state > 0;
             for (int h = 0; h < TRACE_PACKET / 4; h++) {
 #define HALF(v) _mm256_cvtps_pd(h ? _mm256_extractf128_ps(v, 1) : _mm256_castps256_ps128(v))
                 __m256d d[3], gd[3];
@@ -1560,6 +1731,12 @@ int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene
                     d[k] = HALF(dv[k]);
                     gd[k] = HALF(g[k]);
                 }
+                /* lod_fast_quad where its margin decides all four, else
+                 * lod_quad's chain for the quad (the same lambdas). */
+                if (use_fast &&
+                    lod_fast_quad(&c->fast, tri->n, d, gd, HALF(wv), _mm256_set1_pd(top),
+                                  &lambda[4 * h]) == 15)
+                    continue;
                 struct lod_quad_rest rest;
                 const int decided = lod_quad(l4, 1, d, gd, HALF(wv), _mm256_set1_pd(top),
                                              &lambda[4 * h], &rest);

@@ -35,6 +35,17 @@ struct surface_lod {
     double a1[2], a2[2], t_a;
 };
 
+/* The texel map M of a triangle part and the bound of the lanes the
+ * levels of detail take from it (surface.c, lod_fast_quad): sin2 the
+ * least sin^2 cos^2 of a lane's ray, (kappa / 64)^2 raised by 2^-20 for
+ * its own roundings; state 0 not computed for the cache's current
+ * triangle part, 1 usable, -1 not. */
+struct surface_lod_fast {
+    double m[2][3];
+    double sin2;
+    int state;
+};
+
 struct surface_cache {
     const struct scene_instance *inst; /* NULL: empty */
     uint32_t prim;
@@ -46,6 +57,7 @@ struct surface_cache {
     const struct scene_texture *tex;
     float st[3][2];
     struct surface_lod lod;
+    struct surface_lod_fast fast; /* of lod, reset whenever lod changes */
     /* The texture table's answer for name `named` (0: none yet; names
      * are never 0), kept whatever triangle is hit: the table does not
      * change while a frame renders. */
