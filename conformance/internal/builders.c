@@ -595,7 +595,8 @@ static void check_split_threshold(void)
 
 /*
  * The histogram loop's forms (build_internal.h, build_fill_bins): the
- * AVX2 one, where it runs, must give the portable one's bytes, boxes and
+ * AVX2 ones (one stream, and four for the parallel builder), where they
+ * run, must give the portable one's bytes, boxes and
  * counts, also for coordinates that are +-0, denormal, huge, infinite or
  * NaN (where min and max depend on their operands' order), over bin
  * counts from 2 to BVH_MAX_BINS and both histogram layouts (the serial
@@ -604,7 +605,8 @@ static void check_split_threshold(void)
 static void check_fill_bins(void)
 {
     build_fill_bins_fn avx2 = build_fill_bins_avx2_unit();
-    if (!avx2) {
+    build_fill_bins_fn ordered = build_fill_bins_ordered_avx2_unit();
+    if (!avx2 || !ordered) {
         printf("  fill_bins: no AVX2 form here, skipped\n");
         return;
     }
@@ -665,20 +667,23 @@ static void check_fill_bins(void)
                            (float)bins / 1.4f, 0.0f);
         m.last = vec4_splat((float)(bins - 1));
         memset(box_a, 0x5a, RECORDS * sizeof(*box_a));
-        memset(box_b, 0x5a, RECORDS * sizeof(*box_b));
         build_fill_bins((char *)box_a, (char *)count_a, axis_base, bins, &m, refs, begin, end);
-        avx2((char *)box_b, (char *)count_b, axis_base, bins, &m, refs, begin, end);
-        int ok = 1;
-        for (int k = 0; k < 3 && ok; k++) {
-            for (int b = 0; b < bins && ok; b++) {
-                uint32_t rec = (axis_base[k] + 32u * (uint32_t)b) / 32u;
-                ok = memcmp(box_a[rec], box_b[rec], sizeof(box_a[rec])) == 0 &&
-                     count_a[rec][0] == count_b[rec][0];
+        for (int form = 0; form < 2; form++) {
+            memset(box_b, 0x5a, RECORDS * sizeof(*box_b));
+            (form ? ordered : avx2)((char *)box_b, (char *)count_b, axis_base, bins, &m, refs,
+                                    begin, end);
+            int ok = 1;
+            for (int k = 0; k < 3 && ok; k++) {
+                for (int b = 0; b < bins && ok; b++) {
+                    uint32_t rec = (axis_base[k] + 32u * (uint32_t)b) / 32u;
+                    ok = memcmp(box_a[rec], box_b[rec], sizeof(box_a[rec])) == 0 &&
+                         count_a[rec][0] == count_b[rec][0];
+                }
             }
+            if (!ok && bad++ < 5)
+                failures += !CHECKF(0, "fill_bins: AVX2 %s histogram differs (trial %d, %d bins)",
+                                    form ? "four-stream" : "one-stream", trial, bins);
         }
-        if (!ok && bad++ < 5)
-            failures += !CHECKF(0, "fill_bins: AVX2 histogram differs (trial %d, %d bins)", trial,
-                                bins);
     }
 out:
     free(refs);

@@ -30,6 +30,46 @@
 #if defined(__AVX2__) && !defined(RT_NO_SIMD)
 #include <immintrin.h>
 
+static void fill_bins_avx2(char *box_base, char *count_base, const uint32_t axis_base[4],
+                           int bin_count, const struct build_bin_map *map,
+                           const struct build_ref *refs, uint32_t begin, uint32_t end)
+{
+    /* The axes' first records, read once: the stores through char
+     * pointers below could alias axis_base. */
+    const size_t first[3] = {axis_base[0], axis_base[1], axis_base[2]};
+    const size_t bytes = 32u * (size_t)bin_count;
+    const __m256 empty = _mm256_set1_ps(INFINITY);
+    for (int k = 0; k < 3; k++) {
+        for (size_t off = first[k]; off < first[k] + bytes; off += 32) {
+            _mm256_storeu_ps((float *)(void *)(box_base + off), empty);
+            *(uint32_t *)(void *)(count_base + off) = 0;
+        }
+    }
+    /* Lane 3 (the ref's index, whose bits would be denormal floats) to
+     * 0, as vec4_xyz0 in the portable form; lanes 4-7 (the max) negated. */
+    const __m256 keep = _mm256_castsi256_ps(_mm256_setr_epi32(-1, -1, -1, 0, -1, -1, -1, -1));
+    const __m256 negate_hi =
+        _mm256_setr_ps(0.0f, 0.0f, 0.0f, 0.0f, -0.0f, -0.0f, -0.0f, -0.0f);
+    for (uint32_t i = begin; i < end; i++) {
+        const __m256 r = _mm256_and_ps(_mm256_loadu_ps(refs[i].lo), keep);
+        uint32_t off[4];
+        build_bin_offsets(map, vec4_add(_mm256_castps256_ps128(r), _mm256_extractf128_ps(r, 1)),
+                          axis_base, off);
+        const __m256 key = _mm256_xor_ps(r, negate_hi);
+        for (int k = 0; k < 3; k++) {
+            float *box = (float *)(void *)(box_base + off[k]);
+            _mm256_storeu_ps(box, _mm256_min_ps(_mm256_loadu_ps(box), key));
+            (*(uint32_t *)(void *)(count_base + off[k]))++;
+        }
+    }
+    for (int k = 0; k < 3; k++) {
+        for (size_t off = first[k]; off < first[k] + bytes; off += 32) {
+            float *box = (float *)(void *)(box_base + off);
+            _mm256_storeu_ps(box, _mm256_xor_ps(_mm256_loadu_ps(box), negate_hi));
+        }
+    }
+}
+
 /* One ref into a histogram whose axis k starts at box[k] (boxes, max
  * half negated) and count[k] (counts, 32-byte stride): the bins of the
  * ref's doubled centroid (build_bin_offsets, from zero), each grown by
@@ -154,9 +194,12 @@ static int fill_four_streams(char *const box_a[3], char *const count_a[3], int b
     return 1;
 }
 
-static void fill_bins_avx2(char *box_base, char *count_base, const uint32_t axis_base[4],
-                           int bin_count, const struct build_bin_map *map,
-                           const struct build_ref *refs, uint32_t begin, uint32_t end)
+/* The parallel builder's form (build_fill_bins_ordered_best): a node of
+ * FILL_STREAM_MIN_REFS refs or more in four streams, else and after a NaN
+ * the one-stream loop of fill_bins_avx2 (the same steps, fill_one). */
+static void fill_bins_streams_avx2(char *box_base, char *count_base, const uint32_t axis_base[4],
+                                   int bin_count, const struct build_bin_map *map,
+                                   const struct build_ref *refs, uint32_t begin, uint32_t end)
 {
     /* The axes' first records, read once: the stores through char
      * pointers below could alias axis_base. */
@@ -291,6 +334,11 @@ build_fill_bins_fn build_fill_bins_avx2_unit(void)
     return build_cpu_runs_avx2() ? fill_bins_avx2 : NULL;
 }
 
+build_fill_bins_fn build_fill_bins_ordered_avx2_unit(void)
+{
+    return build_cpu_runs_avx2() ? fill_bins_streams_avx2 : NULL;
+}
+
 build_partition_fn build_partition_avx2_unit(void)
 {
     return build_cpu_runs_avx2() ? partition_avx2 : NULL;
@@ -302,6 +350,11 @@ int build_cpu_runs_avx2(void)
 }
 
 build_fill_bins_fn build_fill_bins_avx2_unit(void)
+{
+    return NULL;
+}
+
+build_fill_bins_fn build_fill_bins_ordered_avx2_unit(void)
 {
     return NULL;
 }

@@ -660,7 +660,7 @@ static int queue_child(struct pbuild *b, struct open_node *next, uint32_t *next_
 static int stage1_binning(struct pbuild *b, const struct open_node *root)
 {
     b->bins = b->p.bins;
-    b->fill = build_fill_bins_best();
+    b->fill = build_fill_bins_ordered_best();
     b->partition_avx2 = build_partition_avx2_unit();
     b->src = 0;
     struct open_node *next = NULL;
