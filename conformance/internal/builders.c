@@ -610,7 +610,9 @@ static void check_fill_bins(void)
         printf("  fill_bins: no AVX2 form here, skipped\n");
         return;
     }
-    enum { N = 3000, RECORDS = 3 * BVH_MAX_BINS };
+    /* N above twice build_binned_avx2.c's FILL_STREAM_MIN_REFS (16,384):
+     * the four-stream form takes its one-stream loop below that. */
+    enum { N = 34000, RECORDS = 3 * BVH_MAX_BINS };
     /* NaN last: the trials that must not have one take the first 9. */
     static const float special[] = {0.0f, -0.0f, 1e-40f, -1e-40f, 3e38f, -3e38f,
                                     INFINITY, -INFINITY, 0.5f, NAN};
