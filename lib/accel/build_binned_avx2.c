@@ -4,7 +4,9 @@
  * refs, the histogram (build_internal.h, build_fill_bins) and the
  * partition (build_partition_fn), in AVX2 forms (CMakeLists.txt gives
  * this file -mavx2 and -ffp-contract=off, no FMA) that give the portable
- * forms' bytes.
+ * forms' bytes; and the parallel builder's histogram, which fills a large
+ * node's refs in four streams (fill_four_streams says why and why the
+ * bytes are the same).
  *
  * The histogram.  A bin's 32-byte record is its box, min xyz - then max xyz -.  While
  * the loop runs, the max half is kept negated, so that a ref grows the
