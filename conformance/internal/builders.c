@@ -595,7 +595,8 @@ static void check_split_threshold(void)
 
 /*
  * The histogram loop's forms (build_internal.h, build_fill_bins): the
- * AVX2 one, where it runs, must give the portable one's bytes, boxes and
+ * AVX2 ones (one stream, and four for the parallel builder), where they
+ * run, must give the portable one's bytes, boxes and
  * counts, also for coordinates that are +-0, denormal, huge, infinite or
  * NaN (where min and max depend on their operands' order), over bin
  * counts from 2 to BVH_MAX_BINS and both histogram layouts (the serial
@@ -604,13 +605,17 @@ static void check_split_threshold(void)
 static void check_fill_bins(void)
 {
     build_fill_bins_fn avx2 = build_fill_bins_avx2_unit();
-    if (!avx2) {
+    build_fill_bins_fn ordered = build_fill_bins_ordered_avx2_unit();
+    if (!avx2 || !ordered) {
         printf("  fill_bins: no AVX2 form here, skipped\n");
         return;
     }
-    enum { N = 3000, RECORDS = 3 * BVH_MAX_BINS };
+    /* N above twice build_binned_avx2.c's FILL_STREAM_MIN_REFS (16,384):
+     * the four-stream form takes its one-stream loop below that. */
+    enum { N = 34000, RECORDS = 3 * BVH_MAX_BINS };
+    /* NaN last: the trials that must not have one take the first 9. */
     static const float special[] = {0.0f, -0.0f, 1e-40f, -1e-40f, 3e38f, -3e38f,
-                                    INFINITY, -INFINITY, NAN, 0.5f};
+                                    INFINITY, -INFINITY, 0.5f, NAN};
     struct build_ref *refs = malloc(N * sizeof(*refs));
     float(*box_a)[8] = malloc(RECORDS * sizeof(*box_a));
     float(*box_b)[8] = malloc(RECORDS * sizeof(*box_b));
@@ -628,15 +633,33 @@ static void check_fill_bins(void)
         const int packed = trial & 1;
         const uint32_t stride = 32u * (uint32_t)(packed ? bins : BVH_MAX_BINS);
         const uint32_t axis_base[4] = {0, stride, 2 * stride, 0};
+        /* The AVX2 form fills a large node's quarters side by side and
+         * merges them (build_binned_avx2.c), a node with a NaN after its
+         * first quarter again in one stream: specials with NaN anywhere
+         * (trial % 3 == 0), without NaN (ties of +-0 across quarters,
+         * trial % 3 == 1), and with NaN only in the first quarter
+         * (trial % 6 == 2; there the later quarters stay in the low x
+         * bins, so that the high ones keep the first quarter's NaN). */
+        const uint32_t begin = (uint32_t)trial;
+        const uint32_t end = N - (uint32_t)trial * 7;
         for (uint32_t i = 0; i < N; i++) {
+            const int with_nan =
+                trial % 3 == 0 || (trial % 6 == 2 && i < begin + (end - begin) / 4);
+            const uint32_t kinds = with_nan ? 10u : 9u;
             struct aabb b;
             for (int k = 0; k < 3; k++) {
                 b.min[k] = tg_unit(&r) - 0.5f;
                 b.max[k] = b.min[k] + 0.1f * tg_unit(&r);
-                if (trial % 3 == 0 && tg_unit(&r) < 0.2f)
-                    b.min[k] = special[(uint32_t)(tg_unit(&r) * 10.0f) % 10];
-                if (trial % 3 == 0 && tg_unit(&r) < 0.2f)
-                    b.max[k] = special[(uint32_t)(tg_unit(&r) * 10.0f) % 10];
+                if (k == 0 && trial % 6 == 2 && !with_nan) {
+                    b.min[k] = -0.6f + 0.2f * tg_unit(&r);
+                    b.max[k] = b.min[k] + 0.05f * tg_unit(&r);
+                }
+                if (trial % 3 != 2 || with_nan) {
+                    if (tg_unit(&r) < 0.2f)
+                        b.min[k] = special[(uint32_t)(tg_unit(&r) * (float)kinds) % kinds];
+                    if (tg_unit(&r) < 0.2f)
+                        b.max[k] = special[(uint32_t)(tg_unit(&r) * (float)kinds) % kinds];
+                }
             }
             build_ref_set(&refs[i], &b, i);
         }
@@ -646,22 +669,23 @@ static void check_fill_bins(void)
                            (float)bins / 1.4f, 0.0f);
         m.last = vec4_splat((float)(bins - 1));
         memset(box_a, 0x5a, RECORDS * sizeof(*box_a));
-        memset(box_b, 0x5a, RECORDS * sizeof(*box_b));
-        const uint32_t begin = (uint32_t)trial;
-        const uint32_t end = N - (uint32_t)trial * 7;
         build_fill_bins((char *)box_a, (char *)count_a, axis_base, bins, &m, refs, begin, end);
-        avx2((char *)box_b, (char *)count_b, axis_base, bins, &m, refs, begin, end);
-        int ok = 1;
-        for (int k = 0; k < 3 && ok; k++) {
-            for (int b = 0; b < bins && ok; b++) {
-                uint32_t rec = (axis_base[k] + 32u * (uint32_t)b) / 32u;
-                ok = memcmp(box_a[rec], box_b[rec], sizeof(box_a[rec])) == 0 &&
-                     count_a[rec][0] == count_b[rec][0];
+        for (int form = 0; form < 2; form++) {
+            memset(box_b, 0x5a, RECORDS * sizeof(*box_b));
+            (form ? ordered : avx2)((char *)box_b, (char *)count_b, axis_base, bins, &m, refs,
+                                    begin, end);
+            int ok = 1;
+            for (int k = 0; k < 3 && ok; k++) {
+                for (int b = 0; b < bins && ok; b++) {
+                    uint32_t rec = (axis_base[k] + 32u * (uint32_t)b) / 32u;
+                    ok = memcmp(box_a[rec], box_b[rec], sizeof(box_a[rec])) == 0 &&
+                         count_a[rec][0] == count_b[rec][0];
+                }
             }
+            if (!ok && bad++ < 5)
+                failures += !CHECKF(0, "fill_bins: AVX2 %s histogram differs (trial %d, %d bins)",
+                                    form ? "four-stream" : "one-stream", trial, bins);
         }
-        if (!ok && bad++ < 5)
-            failures += !CHECKF(0, "fill_bins: AVX2 histogram differs (trial %d, %d bins)", trial,
-                                bins);
     }
 out:
     free(refs);

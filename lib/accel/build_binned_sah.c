@@ -506,7 +506,10 @@ int build_binned_sah_refs(struct bvh_node *nodes, struct build_ref *refs, uint32
     if (!bins)
         return -1;
 
-    const build_fill_bins_fn fill = simd ? build_fill_bins_best() : build_fill_bins;
+    /* The top nodes' refs are in the input's order (the in-place
+     * partition keeps the left side's order): the form that fills a
+     * large node in four streams (build_internal.h). */
+    const build_fill_bins_fn fill = simd ? build_fill_bins_ordered_best() : build_fill_bins;
     const build_partition_fn partition_avx2 = simd ? build_partition_avx2_unit() : NULL;
     char *bin_box = (char *)bins->box;
     char *bin_count_base = (char *)bins->count;

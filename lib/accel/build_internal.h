@@ -129,6 +129,14 @@ void build_fill_bins(char *box_base, char *count_base, const uint32_t axis_base[
 build_fill_bins_fn build_fill_bins_avx2_unit(void);
 /* The AVX2 form where it runs, else build_fill_bins. */
 build_fill_bins_fn build_fill_bins_best(void);
+/* The same bytes, faster for large nodes whose refs are in the input's
+ * order (a build's top nodes; the parallel builder's stable partitions
+ * keep that order further down): an AVX2 form that fills a node of at
+ * least 16,384 refs in four streams (build_binned_avx2.c says why and
+ * proves the bytes equal), or NULL as build_fill_bins_avx2_unit;
+ * build_fill_bins_ordered_best picks.  The binned builders use it. */
+build_fill_bins_fn build_fill_bins_ordered_avx2_unit(void);
+build_fill_bins_fn build_fill_bins_ordered_best(void);
 
 /*
  * The AVX2 form of the binned builders' partition of refs by a split's

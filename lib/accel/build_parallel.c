@@ -660,7 +660,10 @@ static int queue_child(struct pbuild *b, struct open_node *next, uint32_t *next_
 static int stage1_binning(struct pbuild *b, const struct open_node *root)
 {
     b->bins = b->p.bins;
-    b->fill = build_fill_bins_best();
+    /* Stage 1's and the deferred nodes' partitions are stable, so a
+     * node's refs stay in mesh order: the histogram form for such refs
+     * (build_internal.h, build_fill_bins_ordered_best). */
+    b->fill = build_fill_bins_ordered_best();
     b->partition_avx2 = build_partition_avx2_unit();
     b->src = 0;
     struct open_node *next = NULL;
