@@ -298,6 +298,13 @@ int main(void)
         CHECKF(ref.glass_rays == got.glass_rays, "%s: glass frame: RT_STAT_RAYS %d, reference %d",
                configs[c], (int)got.glass_rays, (int)ref.glass_rays);
     }
-    CHECK(ran > 0);
+    /* Packets walk the wide layout of the SIMD tables: a build with the
+     * scalar table only (RT_NO_SIMD, another architecture) has none to
+     * compare; any other must have run at least one configuration. */
+    if (tu_config_available("isa=sse4") || tu_config_available("isa=avx2") ||
+        tu_config_available("isa=avx512"))
+        CHECK(ran > 0);
+    else
+        printf("  skipped: this build has the scalar table only (no packets)\n");
     return test_summary("secondary_packets");
 }

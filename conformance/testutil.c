@@ -95,6 +95,15 @@ void tu_destroy_context(RTcontext ctx)
     rtDestroyContext(ctx);
 }
 
+int tu_config_available(const char *config)
+{
+    RTcontext ctx = rtCreateContext(config);
+    if (!ctx)
+        return 0;
+    rtDestroyContext(ctx);
+    return 1;
+}
+
 /* ---- error capture -------------------------------------------------------- */
 
 static int captured_count;

@@ -54,6 +54,13 @@ const char *tu_error_name(RTenum code);
 RTcontext tu_make_context(const char *config);
 /* Unbinds and destroys `ctx` (rtDestroyContext). */
 void tu_destroy_context(RTcontext ctx);
+/*
+ * 1 when rtCreateContext(config) succeeds (the context is destroyed
+ * again), 0 when it returns NULL: an isa= this build lacks (RT_NO_SIMD,
+ * another architecture) or this CPU cannot run.  The current context is
+ * left as it was.
+ */
+int tu_config_available(const char *config);
 
 /* ---- error callback capture -------------------------------------------- */
 

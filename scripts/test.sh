@@ -1,17 +1,19 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
 # One command from a fresh Debian machine to a tested build: installs the
-# packages it can, then builds and runs five suites:
+# packages it can, then builds and runs six suites:
 #   1. Release build: every test under ctest (conformance, internal, demos,
 #      tutorials, install, bench smoke);
 #   2. AddressSanitizer + UndefinedBehaviorSanitizer build: every test but
 #      the isa=scalar re-runs (label "isa"), which Release runs;
 #   3. ThreadSanitizer build: the tests labelled "threads" (building only
 #      their targets);
-#   4. clang build with libFuzzer + ASan + UBSan: the test labelled "fuzz",
+#   4. Plain C build (RT_NO_SIMD): the tests labelled "plainc" (building
+#      only their targets);
+#   5. clang build with libFuzzer + ASan + UBSan: the test labelled "fuzz",
 #      which fuzzes the AFF loader for RT_FUZZ_SECONDS (60 s; builds only
 #      that target).  Suites 1 and 2 replay its corpus (fuzz/aff_replay);
-#   5. Python: `pip install ./python` into a virtual environment in the
+#   6. Python: `pip install ./python` into a virtual environment in the
 #      build folder, then pytest over python/tests against the Release build.
 #
 # The BART scenes (third-party data, not in the repository) are looked for
@@ -130,6 +132,12 @@ build_label=threads run_suite tsan -L threads -- -DCMAKE_BUILD_TYPE=RelWithDebIn
   -DRT_SANITIZE=thread -DRT_WITH_OIIO=OFF -DRT_WITH_GLFW=OFF -DRT_WITH_EMBREE=OFF
 record "tsan (label threads)" $?
 unset RT_TEST_WORKLOAD
+
+# The plain C library (RT_NO_SIMD: no per-ISA table, no SSE in the
+# builders): builds, and its answers pass the tests labelled "plainc".
+build_label=plainc run_suite plain-c -L plainc -- -DCMAKE_BUILD_TYPE=Release -DRT_NO_SIMD=ON \
+  -DRT_WITH_OIIO=OFF -DRT_WITH_GLFW=OFF -DRT_WITH_EMBREE=OFF
+record "plain-c (RT_NO_SIMD, label plainc)" $?
 
 if command -v clang >/dev/null; then
   CC=clang CXX=clang++ build_targets=aff_fuzz run_suite fuzz -L fuzz --no-tests=error -- \
