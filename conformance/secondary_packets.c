@@ -280,7 +280,7 @@ int main(void)
     int ran = 0;
     for (size_t c = 0; c < sizeof(configs) / sizeof(configs[0]); c++) {
         if (!run(configs[c], &got)) {
-            printf("  skipped (not on this CPU): %s\n", configs[c]);
+            printf("  skipped (not in this build or on this CPU): %s\n", configs[c]);
             continue;
         }
         ran++;
