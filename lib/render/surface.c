@@ -568,6 +568,37 @@ static inline __m128 quad_mask_ps(__m256d m)
         _mm256_castpd_si256(m), _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6))));
 }
 
+/* The levels of detail of four footprints x where they are decided
+ * (lod_quad, lod_fast_quad): -inf below 1 - relative, +inf beyond top (1
+ * + relative), and between 1 + relative and top (1 - relative) the float
+ * of lanes_log2_4(x) when every value within `absolute` of it rounds to
+ * that float.  Writes lambda[i] of every lane and returns the mask of the
+ * lanes so decided; the caller ANDs the lanes its bound covers. */
+SURFACE_INLINE int lod_decide_quad(__m256d x, __m256d top, double relative, double absolute,
+                                   float lambda[4])
+{
+    const __m256d below = _mm256_cmp_pd(x, _mm256_set1_pd(1.0 - relative), _CMP_LT_OQ);
+    const __m256d beyond =
+        _mm256_cmp_pd(x, _mm256_mul_pd(top, _mm256_set1_pd(1.0 + relative)), _CMP_GT_OQ);
+    const __m256d inside = _mm256_and_pd(
+        _mm256_cmp_pd(x, _mm256_set1_pd(1.0 + relative), _CMP_GT_OQ),
+        _mm256_cmp_pd(x, _mm256_mul_pd(top, _mm256_set1_pd(1.0 - relative)), _CMP_LT_OQ));
+    const __m256d lg = lanes_log2_4(x);
+    const __m128 lg_f = _mm256_cvtpd_ps(lg);
+    const __m256d margin = _mm256_set1_pd(absolute);
+    const __m128 exact =
+        _mm_and_ps(_mm_cmpeq_ps(_mm256_cvtpd_ps(_mm256_sub_pd(lg, margin)), lg_f),
+                   _mm_cmpeq_ps(_mm256_cvtpd_ps(_mm256_add_pd(lg, margin)), lg_f));
+    /* Below 1: a magnification; beyond the last level; between: the
+     * log2's float where it is decided. */
+    const __m128 below_ps = quad_mask_ps(below), beyond_ps = quad_mask_ps(beyond);
+    _mm_storeu_ps(lambda,
+                  _mm_blendv_ps(_mm_blendv_ps(lg_f, _mm_set1_ps(INFINITY), beyond_ps),
+                                _mm_set1_ps(-INFINITY), below_ps));
+    return _mm256_movemask_pd(_mm256_or_pd(below, beyond)) |
+           (_mm256_movemask_pd(inside) & _mm_movemask_ps(exact));
+}
+
 /*
  * lod_ray_pair in the four double lanes of the AVX2 copy: lane i a hit
  * along d (its direction) on a surface with the facing normal g, its
@@ -696,29 +727,9 @@ SURFACE_INLINE int lod_quad(const struct surface_lod *const l[4], int shared, co
         _mm256_and_pd(common, _mm256_or_pd(major, minor)),
         _mm256_and_pd(_mm256_cmp_pd(s2, _mm256_set1_pd(0x1p-960), _CMP_GE_OQ),
                       _mm256_cmp_pd(s2, _mm256_set1_pd(0x1p960), _CMP_LE_OQ)));
-    const __m256d below = _mm256_cmp_pd(xs, _mm256_set1_pd(1.0 - LOD_NEAR_RELATIVE), _CMP_LT_OQ);
-    const __m256d beyond =
-        _mm256_cmp_pd(xs, _mm256_mul_pd(top, _mm256_set1_pd(1.0 + LOD_NEAR_RELATIVE)), _CMP_GT_OQ);
-    const __m256d inside = _mm256_and_pd(
-        _mm256_cmp_pd(xs, _mm256_set1_pd(1.0 + LOD_NEAR_RELATIVE), _CMP_GT_OQ),
-        _mm256_cmp_pd(xs, _mm256_mul_pd(top, _mm256_set1_pd(1.0 - LOD_NEAR_RELATIVE)),
-                      _CMP_LT_OQ));
-    const __m256d lg = lanes_log2_4(xs);
-    const __m128 lg_f = _mm256_cvtpd_ps(lg);
-    const __m256d near_abs = _mm256_set1_pd(LOD_NEAR_ABSOLUTE);
-    const __m128 exact =
-        _mm_and_ps(_mm_cmpeq_ps(_mm256_cvtpd_ps(_mm256_sub_pd(lg, near_abs)), lg_f),
-                   _mm_cmpeq_ps(_mm256_cvtpd_ps(_mm256_add_pd(lg, near_abs)), lg_f));
-    /* Below 1: a magnification; beyond the last level; between: the
-     * log2's float where it is decided. */
-    const __m128 below_ps = quad_mask_ps(below), beyond_ps = quad_mask_ps(beyond);
-    _mm_storeu_ps(lambda,
-                  _mm_blendv_ps(_mm_blendv_ps(lg_f, _mm_set1_ps(INFINITY), beyond_ps),
-                                _mm_set1_ps(-INFINITY), below_ps));
     const int decided =
         _mm256_movemask_pd(usable) &
-        (_mm256_movemask_pd(_mm256_or_pd(below, beyond)) |
-         (_mm256_movemask_pd(inside) & _mm_movemask_ps(exact)));
+        lod_decide_quad(xs, top, LOD_NEAR_RELATIVE, LOD_NEAR_ABSOLUTE, lambda);
     rest->common = _mm256_movemask_pd(common);
     if (decided != 15) {
         _mm256_storeu_pd(rest->cos, cosine);
@@ -888,26 +899,8 @@ SURFACE_INLINE int lod_fast_quad(const struct surface_lod_fast *f, const double 
                                          _mm256_cmp_pd(p, huge, _CMP_LE_OQ)));
     ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(q, tiny, _CMP_GE_OQ),
                                          _mm256_cmp_pd(q, huge, _CMP_LE_OQ)));
-    const __m256d below =
-        _mm256_cmp_pd(x, _mm256_set1_pd(1.0 - LOD_FAST_RELATIVE), _CMP_LT_OQ);
-    const __m256d beyond = _mm256_cmp_pd(
-        x, _mm256_mul_pd(top, _mm256_set1_pd(1.0 + LOD_FAST_RELATIVE)), _CMP_GT_OQ);
-    const __m256d inside = _mm256_and_pd(
-        _mm256_cmp_pd(x, _mm256_set1_pd(1.0 + LOD_FAST_RELATIVE), _CMP_GT_OQ),
-        _mm256_cmp_pd(x, _mm256_mul_pd(top, _mm256_set1_pd(1.0 - LOD_FAST_RELATIVE)),
-                      _CMP_LT_OQ));
-    const __m256d lg = lanes_log2_4(x);
-    const __m128 lg_f = _mm256_cvtpd_ps(lg);
-    const __m256d margin = _mm256_set1_pd(LOD_FAST_ABSOLUTE);
-    const __m128 exact =
-        _mm_and_ps(_mm_cmpeq_ps(_mm256_cvtpd_ps(_mm256_sub_pd(lg, margin)), lg_f),
-                   _mm_cmpeq_ps(_mm256_cvtpd_ps(_mm256_add_pd(lg, margin)), lg_f));
-    const __m128 below_ps = quad_mask_ps(below), beyond_ps = quad_mask_ps(beyond);
-    _mm_storeu_ps(lambda,
-                  _mm_blendv_ps(_mm_blendv_ps(lg_f, _mm_set1_ps(INFINITY), beyond_ps),
-                                _mm_set1_ps(-INFINITY), below_ps));
-    return _mm256_movemask_pd(ok) & (_mm256_movemask_pd(_mm256_or_pd(below, beyond)) |
-                                     (_mm256_movemask_pd(inside) & _mm_movemask_ps(exact)));
+    return _mm256_movemask_pd(ok) &
+           lod_decide_quad(x, top, LOD_FAST_RELATIVE, LOD_FAST_ABSOLUTE, lambda);
 }
 
 /* lod_quad of four textures' hits t[i] (their lodp, dir, ng, width and
