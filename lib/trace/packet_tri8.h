@@ -317,36 +317,6 @@ static inline unsigned tri8_test(const struct tri8_rays *r, const struct tri4_pa
             return res->hit | deferred;
     }
 
-    if (!any_hit) {
-        /* The closest-hit lanes whose box interval lies wholly before
-         * tmin (t_lo < tmin and t_hi < tmin) are refused here, without
-         * the double step (traverse_wide.h's behind_out, the same
-         * argument for this test's own finish).  The edge test is on the
-         * ray's line, so a triangle behind the origin that the line
-         * crosses passes it; when its depths straddle the origin (z_hi
-         * >= tmin, tested above: a wall behind a camera inside a room)
-         * only the x and y slabs show that the crossing lies behind.
-         * This test's finish below would refuse such a lane: a lane it
-         * keeps has an ordered t (good), min_ps(t, t_hi) is <= t_hi,
-         * then max_ps(., t_lo) is that value or t_lo, both below tmin,
-         * and t >= tmin fails.  A lane that fails good goes to
-         * isect_triangle, which computes the same t_lo and t_hi (the
-         * float part bit for bit, see the top of this file) and ends
-         * every way to t (plane, sliver, the paper's T / det) in
-         * isect_clamp_to_box (t < t_hi ? t : t_hi, then u > t_lo ? u :
-         * t_lo: again one of two values below tmin) and the same t >=
-         * tmin test.  So the same answer for every lane.  Both
-         * comparisons are needed: an empty interval (t_lo > t_hi) with
-         * t_lo >= tmin clamps to t_lo and can be a hit.  The deferred
-         * lanes (res->scalar above) are left to isect_triangle. */
-        const __m256 before =
-            _mm256_and_ps(_mm256_cmp_ps(t_hi, r->tmin, _CMP_LT_OQ),
-                          _mm256_cmp_ps(t_lo, r->tmin, _CMP_LT_OQ));
-        cand &= ~(unsigned)_mm256_movemask_ps(before);
-        if (!cand)
-            return deferred;
-    }
-
     const double e1x = (double)q->v[1][0][l] - q->v[0][0][l];
     const double e1y = (double)q->v[1][1][l] - q->v[0][1][l];
     const double e1z = (double)q->v[1][2][l] - q->v[0][2][l];
