@@ -345,8 +345,7 @@ static inline int isect_triangle_zero_area(float x0, float y0, float z0, float x
  * v2 - v0 (starting at v0) or e3 = e2 - e1 (starting at v1), with their
  * squared lengths l1, l2, l3; the first of them that is >= the others.
  * NaN when the ray is parallel to that edge.  Apart from the finish
- * because only slivers reach it, and both of the finish's forms (scalar,
- * isect_finish_avx2) share it. */
+ * because only slivers reach it. */
 static inline double isect_sliver_t(const struct trace_ray *ray, const float v0[3],
                                     const float v1[3], const double e1[3], const double e2[3],
                                     const double e3[3], double l1, double l2, double l3)
@@ -371,103 +370,6 @@ static inline double isect_sliver_t(const struct trace_ray *ray, const float v0[
     const double den = dd * ee - de * de;
     return den > 0.0 ? (ee * dw - de * ew) / den : NAN;
 }
-
-#if defined(__AVX2__) && !defined(RT_NO_SIMD)
-#include <immintrin.h>
-#define ISECT_FINISH_AVX2 1
-
-/*
- * The double-precision part of isect_triangle_finish_impl (its comments
- * say what each value is) with the x, y, z components of a vector in
- * lanes 0-2 of an AVX register and 0 in lane 3: *tp the plane distance
- * num / den of a proper triangle, isect_sliver_t's for a sliver, NaN when
- * the scalar code leaves tp NaN.  Returns 0 for a zero-area triangle (the
- * edge vectors' cross product exactly 0) when !area_known, else 1.
- *
- * The same bits as the scalar code: every value is the same IEEE double
- * operation on the same operands, lane by lane (subtraction,
- * multiplication and addition; -ffp-contract=off, and the intrinsics are
- * separate operations), the float-to-double conversions are exact, and
- * every sum of three products keeps the scalar code's association, (a +
- * b) + c, by adding transposed rows: row 0 + row 1, then + row 2.  The
- * cross product's lanes are e1.yzx * e2.zxy - e1.zxy * e2.yzx: lane 0 is
- * e1y e2z - e1z e2y = nx, lane 1 e1z e2x - e1x e2z = ny, lane 2 e1x e2y -
- * e1y e2x = nz (multiplication commutes exactly).  lmax is the maximum of
- * l1, l2, l3 as in the scalar code.  About half the scalar form's
- * instructions (callgrind, AVX2, gears' camera rays: 140 a finish with
- * its register spills); the proper triangle's num and den are computed
- * whichever branch is taken (no side effects).
- */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline int isect_finish_avx2(const struct trace_ray *ray, const float v0[3],
-                                    const float v1[3], const float v2[3], float size,
-                                    int area_known, double *tp)
-{
-    const __m256d p0 = _mm256_cvtps_pd(_mm_setr_ps(v0[0], v0[1], v0[2], 0.0f));
-    const __m256d p1 = _mm256_cvtps_pd(_mm_setr_ps(v1[0], v1[1], v1[2], 0.0f));
-    const __m256d p2 = _mm256_cvtps_pd(_mm_setr_ps(v2[0], v2[1], v2[2], 0.0f));
-    const __m256d e1 = _mm256_sub_pd(p1, p0);
-    const __m256d e2 = _mm256_sub_pd(p2, p0);
-    /* (3, 0, 2, 1): lanes y, z, x, 3; (3, 1, 0, 2): lanes z, x, y, 3. */
-    const __m256d n = _mm256_sub_pd(
-        _mm256_mul_pd(_mm256_permute4x64_pd(e1, 0xC9), _mm256_permute4x64_pd(e2, 0xD2)),
-        _mm256_mul_pd(_mm256_permute4x64_pd(e1, 0xD2), _mm256_permute4x64_pd(e2, 0xC9)));
-    const __m256d zero = _mm256_setzero_pd();
-    if (!area_known && (_mm256_movemask_pd(_mm256_cmp_pd(n, zero, _CMP_EQ_OQ)) & 7) == 7)
-        return 0;
-    const __m256d e3 = _mm256_sub_pd(e2, e1);
-    /* n2, l1, l2, l3: the squares transposed, rows added in order. */
-    const __m256d nn = _mm256_mul_pd(n, n);
-    const __m256d a = _mm256_mul_pd(e1, e1);
-    const __m256d b = _mm256_mul_pd(e2, e2);
-    const __m256d c = _mm256_mul_pd(e3, e3);
-    const __m256d t0 = _mm256_unpacklo_pd(nn, a); /* nn0 a0 nn2 a2 */
-    const __m256d t1 = _mm256_unpackhi_pd(nn, a); /* nn1 a1 nn3 a3 */
-    const __m256d t2 = _mm256_unpacklo_pd(b, c);  /* b0 c0 b2 c2 */
-    const __m256d t3 = _mm256_unpackhi_pd(b, c);  /* b1 c1 b3 c3 */
-    const __m256d sums = _mm256_add_pd(
-        _mm256_add_pd(_mm256_permute2f128_pd(t0, t2, 0x20), _mm256_permute2f128_pd(t1, t3, 0x20)),
-        _mm256_permute2f128_pd(t0, t2, 0x31));
-    const __m128d n2_l1 = _mm256_castpd256_pd128(sums);
-    const __m128d l2_l3 = _mm256_extractf128_pd(sums, 1);
-    const double n2 = _mm_cvtsd_f64(n2_l1);
-    const double l1 = _mm_cvtsd_f64(_mm_unpackhi_pd(n2_l1, n2_l1));
-    const double l2 = _mm_cvtsd_f64(l2_l3);
-    const double l3 = _mm_cvtsd_f64(_mm_unpackhi_pd(l2_l3, l2_l3));
-    /* The maximum as the scalar code takes it (its comment says why it
-     * is the longest edge's value). */
-    const double l12 = l1 > l2 ? l1 : l2;
-    const double lmax = l12 > l3 ? l12 : l3;
-    const double rounding = ISECT_SLIVER_ROUNDINGS * 0x1p-24 * (double)size;
-    if (n2 >= rounding * rounding * lmax) {
-        /* den = n . dir, num = n . (v0 - org): the two products
-         * transposed, rows added in order. */
-        const __m256d d = _mm256_cvtps_pd(_mm_setr_ps(ray->dir[0], ray->dir[1], ray->dir[2], 0.0f));
-        const __m256d o = _mm256_cvtps_pd(_mm_setr_ps(ray->org[0], ray->org[1], ray->org[2], 0.0f));
-        const __m256d nd = _mm256_mul_pd(n, d);
-        const __m256d nw = _mm256_mul_pd(n, _mm256_sub_pd(p0, o));
-        const __m256d u0 = _mm256_unpacklo_pd(nd, nw); /* nd0 nw0 nd2 nw2 */
-        const __m256d u1 = _mm256_unpackhi_pd(nd, nw); /* nd1 nw1 nd3 nw3 */
-        const __m128d den_num = _mm_add_pd(
-            _mm_add_pd(_mm256_castpd256_pd128(u0), _mm256_castpd256_pd128(u1)),
-            _mm256_extractf128_pd(u0, 1));
-        const double den = _mm_cvtsd_f64(den_num);
-        const double num = _mm_cvtsd_f64(_mm_unpackhi_pd(den_num, den_num));
-        *tp = den != 0.0 ? num / den : NAN;
-        return 1;
-    }
-    double E1[4], E2[4], E3[4];
-    _mm256_storeu_pd(E1, e1);
-    _mm256_storeu_pd(E2, e2);
-    _mm256_storeu_pd(E3, e3);
-    *tp = isect_sliver_t(ray, v0, v1, E1, E2, E3, l1, l2, l3);
-    return 1;
-}
-#else
-#define ISECT_FINISH_AVX2 0
-#endif
 
 /*
  * The rest of isect_triangle once its float part has accepted the
@@ -516,6 +418,18 @@ static inline int isect_triangle_finish_impl(const struct trace_ray *ray, float 
      * for candidate hits.  A closed mesh that contains such a triangle
      * can leak through the sliver its rounded projection covers; meshes
      * without zero-area triangles keep the paper's guarantee. */
+    const double e1x = (double)v1[0] - v0[0];
+    const double e1y = (double)v1[1] - v0[1];
+    const double e1z = (double)v1[2] - v0[2];
+    const double e2x = (double)v2[0] - v0[0];
+    const double e2y = (double)v2[1] - v0[1];
+    const double e2z = (double)v2[2] - v0[2];
+    const double nx = e1y * e2z - e1z * e2y;
+    const double ny = e1z * e2x - e1x * e2z;
+    const double nz = e1x * e2y - e1y * e2x;
+    if (!area_known && nx == 0.0 && ny == 0.0 && nz == 0.0)
+        return 0;
+
     /* t.  The paper's T / det is only as good as U, V, W: fine for a
      * proper triangle, but for a sliver thinner than the rounding of the
      * sheared coordinates the weights are noise and T / det lands anywhere
@@ -530,29 +444,6 @@ static inline int isect_triangle_finish_impl(const struct trace_ray *ray, float 
      * The paper's t remains when the double computation is degenerate (a
      * ray parallel to the plane, or to the edge).  Whichever it is, t is
      * then clamped into the triangle's box (isect_clamp_to_box). */
-#if ISECT_FINISH_AVX2
-    /* The same double operations on the x, y, z lanes of AVX registers
-     * (lane 3 zero, never read into lanes 0-2): see isect_finish_avx2's
-     * comment for why every value is the scalar code's below. */
-    double tp;
-    if (!isect_finish_avx2(ray, v0, v1, v2, size, area_known, &tp))
-        return 0;
-    float t = (U * Az + V * Bz + W * Cz) * rcp_det;
-    if (!isnan(tp))
-        t = (float)tp;
-#else
-    const double e1x = (double)v1[0] - v0[0];
-    const double e1y = (double)v1[1] - v0[1];
-    const double e1z = (double)v1[2] - v0[2];
-    const double e2x = (double)v2[0] - v0[0];
-    const double e2y = (double)v2[1] - v0[1];
-    const double e2z = (double)v2[2] - v0[2];
-    const double nx = e1y * e2z - e1z * e2y;
-    const double ny = e1z * e2x - e1x * e2z;
-    const double nz = e1x * e2y - e1y * e2x;
-    if (!area_known && nx == 0.0 && ny == 0.0 && nz == 0.0)
-        return 0;
-
     float t = (U * Az + V * Bz + W * Cz) * rcp_det;
     {
         const double dx = ray->dir[0];
@@ -597,7 +488,6 @@ static inline int isect_triangle_finish_impl(const struct trace_ray *ray, float 
         if (!isnan(tp))
             t = (float)tp;
     }
-#endif
     t = isect_clamp_to_box(t_lo, t_hi, t);
     if (!(t >= ray->tmin && t < t_max) || !isfinite(t))
         return 0;
