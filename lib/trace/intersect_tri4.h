@@ -58,6 +58,7 @@ struct tri4_ray {
     __m128 inv_x, inv_y;        /* inv_dir[kx], inv_dir[ky] */
     __m128 tmin;
     size_t off_x, off_y, off_z; /* kx, ky, kz times sizeof p->v[0][0] */
+    int neg_x, neg_y;           /* inv_dir[kx] < 0, inv_dir[ky] < 0 (isect_slab) */
 };
 
 static inline void tri4_ray_init(struct tri4_ray *r, const struct trace_ray *ray)
@@ -75,6 +76,8 @@ static inline void tri4_ray_init(struct tri4_ray *r, const struct trace_ray *ray
     r->inv_x = _mm_set1_ps(ray->inv_dir[ray->kx]);
     r->inv_y = _mm_set1_ps(ray->inv_dir[ray->ky]);
     r->tmin = _mm_set1_ps(ray->tmin);
+    r->neg_x = ray->inv_dir[ray->kx] < 0.0f;
+    r->neg_y = ray->inv_dir[ray->ky] < 0.0f;
 }
 
 /* Row `off` bytes into vertex i's coordinates of p (tri4_ray's off_x..):
@@ -85,30 +88,16 @@ static inline __m128 tri4_row(const struct tri4_packet *p, int i, size_t off)
 }
 
 /* isect_slab on four lanes: the near and far ends of one slab, folded
- * into *t_lo, *t_hi.  inv is the ray's 1 / dir on this axis in every
- * lane; isect_slab's choice of the near end (the max where inv < 0) is a
- * select on the lanes of inv < 0, the same predicate lane by lane, not a
- * branch on a per-ray flag: for random directions that branch was a coin
- * toss for the predictor at a ray's first leaf (callgrind, gears: taken
- * at 66 % of the calls), and each leaf call had two of them. */
-static inline void tri4_slab(__m128 d0, __m128 d1, __m128 d2, __m128 inv, __m128 *t_lo,
+ * into *t_lo, *t_hi. */
+static inline void tri4_slab(__m128 d0, __m128 d1, __m128 d2, __m128 inv, int neg, __m128 *t_lo,
                              __m128 *t_hi)
 {
     __m128 lo = _mm_min_ps(d0, d1);
     __m128 hi = _mm_max_ps(d1, d0);
     lo = _mm_min_ps(lo, d2);
     hi = _mm_max_ps(hi, d2);
-    const __m128 neg = _mm_cmplt_ps(inv, _mm_setzero_ps());
-#if defined(__SSE4_1__)
-    const __m128 near = _mm_blendv_ps(lo, hi, neg);
-    const __m128 far = _mm_blendv_ps(hi, lo, neg);
-#else
-    /* SSE2 (the tests' units): the same select by bits. */
-    const __m128 near = _mm_or_ps(_mm_and_ps(neg, hi), _mm_andnot_ps(neg, lo));
-    const __m128 far = _mm_or_ps(_mm_and_ps(neg, lo), _mm_andnot_ps(neg, hi));
-#endif
-    const __m128 t_near = _mm_mul_ps(near, inv);
-    const __m128 t_far = _mm_mul_ps(far, inv);
+    const __m128 t_near = _mm_mul_ps(neg ? hi : lo, inv);
+    const __m128 t_far = _mm_mul_ps(neg ? lo : hi, inv);
     *t_lo = _mm_max_ps(t_near, *t_lo);
     *t_hi = _mm_min_ps(t_far, *t_hi);
 }
@@ -232,8 +221,8 @@ static inline unsigned tri4_filter_lanes_depth(const struct tri4_ray *r,
         return 0;
     __m128 t_lo = z_lo;
     __m128 t_hi = z_hi;
-    tri4_slab(ax, bx, cx, r->inv_x, &t_lo, &t_hi);
-    tri4_slab(ay, by, cy, r->inv_y, &t_lo, &t_hi);
+    tri4_slab(ax, bx, cx, r->inv_x, r->neg_x, &t_lo, &t_hi);
+    tri4_slab(ay, by, cy, r->inv_y, r->neg_y, &t_lo, &t_hi);
     const __m128 geom = _mm_andnot_ps(
         mixed, _mm_and_ps(_mm_and_ps(_mm_cmpge_ps(z_hi, r->tmin), _mm_cmplt_ps(z_lo, limit)),
                           _mm_cmplt_ps(t_lo, limit)));
@@ -302,17 +291,16 @@ static inline __m256 tri4_pair_row(const struct tri4_packet *p, int i, size_t of
         _mm_loadu_ps((const float *)(const void *)hi), 1);
 }
 
-/* tri4_slab on the eight lanes of two packets (its select too). */
-static inline void tri4_pair_slab(__m256 d0, __m256 d1, __m256 d2, __m256 inv, __m256 *t_lo,
-                                  __m256 *t_hi)
+/* tri4_slab on the eight lanes of two packets. */
+static inline void tri4_pair_slab(__m256 d0, __m256 d1, __m256 d2, __m256 inv, int neg,
+                                  __m256 *t_lo, __m256 *t_hi)
 {
     __m256 lo = _mm256_min_ps(d0, d1);
     __m256 hi = _mm256_max_ps(d1, d0);
     lo = _mm256_min_ps(lo, d2);
     hi = _mm256_max_ps(hi, d2);
-    const __m256 neg = _mm256_cmp_ps(inv, _mm256_setzero_ps(), _CMP_LT_OQ);
-    const __m256 t_near = _mm256_mul_ps(_mm256_blendv_ps(lo, hi, neg), inv);
-    const __m256 t_far = _mm256_mul_ps(_mm256_blendv_ps(hi, lo, neg), inv);
+    const __m256 t_near = _mm256_mul_ps(neg ? hi : lo, inv);
+    const __m256 t_far = _mm256_mul_ps(neg ? lo : hi, inv);
     *t_lo = _mm256_max_ps(t_near, *t_lo);
     *t_hi = _mm256_min_ps(t_far, *t_hi);
 }
@@ -398,8 +386,8 @@ static inline unsigned tri4_pair_filter_lanes(const struct tri4_ray *r,
         return 0;
     __m256 t_lo = z_lo;
     __m256 t_hi = z_hi;
-    tri4_pair_slab(ax, bx, cx, _mm256_broadcast_ps(&r->inv_x), &t_lo, &t_hi);
-    tri4_pair_slab(ay, by, cy, _mm256_broadcast_ps(&r->inv_y), &t_lo, &t_hi);
+    tri4_pair_slab(ax, bx, cx, _mm256_broadcast_ps(&r->inv_x), r->neg_x, &t_lo, &t_hi);
+    tri4_pair_slab(ay, by, cy, _mm256_broadcast_ps(&r->inv_y), r->neg_y, &t_lo, &t_hi);
     const __m256 geom = _mm256_andnot_ps(
         mixed,
         _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(z_hi, _mm256_broadcast_ps(&r->tmin), _CMP_GE_OQ),

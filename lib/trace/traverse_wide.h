@@ -954,6 +954,7 @@ static inline void tri4_ray_init_lanes(struct tri4_ray *r, const struct ray_lane
 {
     const size_t row = sizeof(((const struct tri4_packet *)NULL)->v[0][0]);
     const __m128 neg_org = _mm_xor_ps(l->org_k, _mm_set1_ps(-0.0f));
+    const unsigned neg = (unsigned)_mm_movemask_ps(_mm_cmplt_ps(l->inv_k, _mm_setzero_ps()));
     r->off_x = (size_t)l->kx * row;
     r->off_y = (size_t)l->ky * row;
     r->off_z = (size_t)l->kz * row;
@@ -966,6 +967,8 @@ static inline void tri4_ray_init_lanes(struct tri4_ray *r, const struct ray_lane
     r->inv_x = _mm_permute_ps(l->inv_k, 0x00);
     r->inv_y = _mm_permute_ps(l->inv_k, 0x55);
     r->tmin = _mm_set1_ps(tmin);
+    r->neg_x = (int)(neg & 1u);
+    r->neg_y = (int)(neg >> 1 & 1u);
 }
 
 #define WIDE8_WALK1(name, walk, any_hit, stats, leave_early)                                    \
