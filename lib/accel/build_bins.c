@@ -56,3 +56,9 @@ build_fill_bins_fn build_fill_bins_ordered_best(void)
     build_fill_bins_fn avx2 = build_fill_bins_ordered_avx2_unit();
     return avx2 ? avx2 : build_fill_bins;
 }
+
+build_fill_bins_fn build_fill_bins_ordered_finite_best(int finite)
+{
+    build_fill_bins_fn avx2 = finite ? build_fill_bins_ordered_finite_avx2_unit() : NULL;
+    return avx2 ? avx2 : build_fill_bins_ordered_best();
+}

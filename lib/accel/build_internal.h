@@ -137,6 +137,13 @@ build_fill_bins_fn build_fill_bins_best(void);
  * build_fill_bins_ordered_best picks.  The binned builders use it. */
 build_fill_bins_fn build_fill_bins_ordered_avx2_unit(void);
 build_fill_bins_fn build_fill_bins_ordered_best(void);
+/* The ordered form for refs whose boxes the caller has seen free of NaN
+ * (all six floats of every ref): the four streams without their NaN
+ * checks (build_binned_avx2.c), or NULL as build_fill_bins_avx2_unit.
+ * build_fill_bins_ordered_finite_best(finite) picks it when finite is
+ * nonzero and it runs, else build_fill_bins_ordered_best's form. */
+build_fill_bins_fn build_fill_bins_ordered_finite_avx2_unit(void);
+build_fill_bins_fn build_fill_bins_ordered_finite_best(int finite);
 
 /*
  * The AVX2 form of the binned builders' partition of refs by a split's

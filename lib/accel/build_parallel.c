@@ -235,6 +235,7 @@ struct pbuild {
     /* setup */
     struct chunk *chunks;
     struct aabb *chunk_box;
+    int nan_seen; /* atomic: a ref's box holds a NaN (setup_task) */
 
     /* binning */
     int bins;
@@ -355,7 +356,8 @@ static void run(struct pbuild *b, rt_task_fn fn)
     rt_pool_run_shared(b->pool, fn, b);
 }
 
-static void box_grow_ref(vec4 *lo, vec4 *hi, vec4 *clo, vec4 *chi, const struct build_ref *r)
+/* Grows the bounds by ref r; returns its doubled centroid lo + hi. */
+static vec4 box_grow_ref(vec4 *lo, vec4 *hi, vec4 *clo, vec4 *chi, const struct build_ref *r)
 {
     vec4 l = vec4_xyz0(vec4_load(r->lo));
     vec4 h = vec4_load(r->hi);
@@ -364,6 +366,7 @@ static void box_grow_ref(vec4 *lo, vec4 *hi, vec4 *clo, vec4 *chi, const struct 
     *hi = vec4_max(*hi, h);
     *clo = vec4_min(*clo, c);
     *chi = vec4_max(*chi, c);
+    return c;
 }
 
 /* ------------------------------------------------------------ setup */
@@ -383,11 +386,18 @@ static void setup_task(void *arg, int worker)
         vec4 hi = vec4_splat(-INFINITY);
         vec4 clo = lo;
         vec4 chi = hi;
+        /* Lanes 0-2 of lo + hi are NaN when the box's lo or hi is (or
+         * holds infinities of both signs: a false alarm, which only
+         * costs the NaN checks of the four-stream histogram). */
+        uint32_t nan = 0;
         for (uint32_t i = begin; i < end; i++) {
             struct build_ref *r = &b->refs[0][i];
             build_ref_set(r, &b->boxes[i], i);
-            box_grow_ref(&lo, &hi, &clo, &chi, r);
+            const vec4 cen = box_grow_ref(&lo, &hi, &clo, &chi, r);
+            nan |= vec4_ne_bits(cen, cen);
         }
+        if (nan & 7u)
+            rt_atomic_store_relaxed(&b->nan_seen, 1);
         float l[4], h[4], cl[4], ch[4];
         vec4_store(l, lo);
         vec4_store(h, hi);
@@ -662,8 +672,10 @@ static int stage1_binning(struct pbuild *b, const struct open_node *root)
     b->bins = b->p.bins;
     /* Stage 1's and the deferred nodes' partitions are stable, so a
      * node's refs stay in mesh order: the histogram form for such refs
-     * (build_internal.h, build_fill_bins_ordered_best). */
-    b->fill = build_fill_bins_ordered_best();
+     * (build_internal.h, build_fill_bins_ordered_finite_best), without the NaN
+     * checks when the set-up saw no NaN (stage 1 and the deferred nodes
+     * only move the set-up's refs). */
+    b->fill = build_fill_bins_ordered_finite_best(!rt_atomic_load_relaxed(&b->nan_seen));
     b->partition_avx2 = build_partition_avx2_unit();
     b->src = 0;
     struct open_node *next = NULL;
