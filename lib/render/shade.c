@@ -733,75 +733,6 @@ static void eye_light8(const struct render_state *st, const struct surface_lanes
 }
 #endif
 
-#if SHADE_LANES && defined(__AVX2__)
-/*
- * A whole block whose hits are on two triangles (a block on a triangle
- * edge: most of the blocks surface_fetch_lanes refuses in a BART kitchen
- * frame), as two blocks on one triangle each: for triangle j, the lanes
- * of the other triangle take a copy of the first hit on j (its hit,
- * direction, width and unit direction), so surface_fetch_lanes sees a
- * block on one triangle, and eye_light8 writes the pixels of j's lanes
- * only (the copies' colours go to a scratch pixel).  A lane of j is
- * computed from its own hit, direction and width with the operations of
- * the one-triangle block, which gives fetch_colour_begin's values bit for
- * bit (surface_fetch_lanes); the copies change nothing in it: each lane's
- * values depend on that lane's inputs and the triangle's alone, and a
- * choice made for the whole block (the sampler taking the eight lanes or
- * not, lod_quad for a quad with an undecided lane) gives the same values
- * either way.  Returns 0 when the hits are on more than two triangles or
- * surface_fetch_lanes refuses one of them (the caller then shades all
- * eight hit by hit, writing the same colours again).
- */
-static int eye_two_triangles(const struct shade_context *sc,
-                             const struct trace_scene_hit *const hits[],
-                             const float lane_d[3][TRACE_PACKET], const float width[],
-                             float unit[3][TRACE_PACKET], float *const rgba[])
-{
-    /* Lane masks of the two triangles (prim and instance). */
-    const struct trace_scene_hit *h0 = hits[0], *h1 = NULL;
-    unsigned on0 = 1u, on1 = 0u;
-    for (int i = 1; i < TRACE_PACKET; i++) {
-        const struct trace_scene_hit *h = hits[i];
-        if (h->prim == h0->prim && h->instance == h0->instance) {
-            on0 |= 1u << i;
-        } else if (!h1) {
-            h1 = h;
-            on1 |= 1u << i;
-        } else if (h->prim == h1->prim && h->instance == h1->instance) {
-            on1 |= 1u << i;
-        } else
-            return 0;
-    }
-    if (!h1)
-        return 0;
-    float scratch[4];
-    for (int j = 0; j < 2; j++) {
-        const unsigned on = j ? on1 : on0;
-        const int first = __builtin_ctz(on);
-        const struct trace_scene_hit *jh[TRACE_PACKET];
-        float jd[3][TRACE_PACKET], jw[TRACE_PACKET], ju[3][TRACE_PACKET];
-        float *jpx[TRACE_PACKET];
-        for (int i = 0; i < TRACE_PACKET; i++) {
-            const int from = on >> i & 1u ? i : first;
-            jh[i] = hits[from];
-            jw[i] = width[from];
-            for (int k = 0; k < 3; k++) {
-                jd[k][i] = lane_d[k][from];
-                ju[k][i] = unit[k][from];
-            }
-            jpx[i] = on >> i & 1u ? rgba[i] : scratch;
-        }
-        struct surface_lanes lanes;
-        if (!surface_fetch_lanes(sc, jh, (const float(*)[TRACE_PACKET])jd, jw, &lanes))
-            return 0;
-        eye_light8(sc->state, &lanes,
-                   shade_hit_instance(sc, hits[first])->appearance.gl.light_model.ambient, ju,
-                   jpx);
-    }
-    return 1;
-}
-#endif
-
 static void eye_hits(const struct shade_context *sc, int n, const float *const dir[],
                      const struct trace_scene_hit *const hits[], const struct shade_cone cone[],
                      float *const rgba[])
@@ -822,8 +753,6 @@ static void eye_hits(const struct shade_context *sc, int n, const float *const d
                        rgba);
             return;
         }
-        if (eye_two_triangles(sc, hits, lane_d, width, unit, rgba))
-            return;
 #endif
         surface_fetch_colours(sc, n, hits, dir, width, e);
         eye_cosines8(e, unit, cosine);
