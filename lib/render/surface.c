@@ -1827,6 +1827,7 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
  * lookups in the lanes when the sampler takes the block (else hit by
  * hit), and texture_end's products in the lanes (a product is the same
  * in either order).  The same values, so the same colours bit for bit.
+ * A block on several triangles goes to fetch_lanes_mixed.
  */
 int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene_hit *const hits[],
                         const float dir[3][TRACE_PACKET], const float width[],
