@@ -747,7 +747,7 @@ static void eye_hits(const struct shade_context *sc, int n, const float *const d
 #if defined(__AVX2__)
         struct surface_lanes lanes;
         if (surface_fetch_lanes(sc, hits, lane_d, width, &lanes)) {
-            /* One triangle, so one instance. */
+            /* One instance (surface_fetch_lanes refuses more). */
             eye_light8(sc->state, &lanes,
                        shade_hit_instance(sc, hits[0])->appearance.gl.light_model.ambient, unit,
                        rgba);

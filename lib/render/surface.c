@@ -1541,6 +1541,280 @@ void surface_fetch_colour(const struct shade_context *sc, const struct trace_sce
                                 _mm256_mul_ps(b1, _mm256_set1_ps(x1))),                           \
                   _mm256_mul_ps(b2, _mm256_set1_ps(x2)))
 
+/* shading_normal's end in the lanes: the object-space normals no
+ * through the matrix mt, normalised, turned to the side of the facing
+ * geometric normals g, into nv where they normalise (nv keeps g
+ * elsewhere), each lane the scalar operations in their order. */
+SURFACE_INLINE void lanes_shading_normal(const double *mt, const __m256 no[3], const __m256 g[3],
+                                         __m256 nv[3])
+{
+    const __m256 sign = _mm256_set1_ps(-0.0f);
+    /* transform_normal in double, four lanes at a time. */
+    __m256 nw[3];
+    for (int r = 0; r < 3; r++) {
+        __m128 half[2];
+        for (int h = 0; h < 2; h++) {
+            __m256d x[3];
+            for (int k = 0; k < 3; k++)
+                x[k] = _mm256_cvtps_pd(h ? _mm256_extractf128_ps(no[k], 1)
+                                         : _mm256_castps256_ps128(no[k]));
+            half[h] = _mm256_cvtpd_ps(_mm256_add_pd(
+                _mm256_add_pd(_mm256_mul_pd(_mm256_set1_pd(mt[r]), x[0]),
+                              _mm256_mul_pd(_mm256_set1_pd(mt[4 + r]), x[1])),
+                _mm256_mul_pd(_mm256_set1_pd(mt[8 + r]), x[2])));
+        }
+        nw[r] = _mm256_insertf128_ps(_mm256_castps128_ps256(half[0]), half[1], 1);
+    }
+    /* vec3_normalize: a length that is positive and finite (not
+     * above FLT_MAX; NaN fails both) scales by 1 / len, else the
+     * geometric normal stays. */
+    const __m256 len = _mm256_sqrt_ps(lanes_dot8(nw, nw));
+    const __m256 unit =
+        _mm256_and_ps(_mm256_cmp_ps(len, _mm256_setzero_ps(), _CMP_GT_OQ),
+                      _mm256_cmp_ps(len, _mm256_set1_ps(FLT_MAX), _CMP_LE_OQ));
+    const __m256 inv = _mm256_div_ps(_mm256_set1_ps(1.0f), len);
+    for (int k = 0; k < 3; k++)
+        nw[k] = _mm256_mul_ps(nw[k], inv);
+    const __m256 away = _mm256_and_ps(
+        _mm256_cmp_ps(lanes_dot8(nw, g), _mm256_setzero_ps(), _CMP_LT_OQ), sign);
+    for (int k = 0; k < 3; k++)
+        nv[k] = _mm256_blendv_ps(g[k], _mm256_xor_ps(nw[k], away), unit);
+}
+
+/* interpolate's (b0 x0 + b1 x1) + b2 x2 of one component, x gathered
+ * lane by lane (x[j][i]: vertex j of lane i's triangle). */
+SURFACE_INLINE __m256 lanes_interpolate_gathered(__m256 b0, __m256 b1, __m256 b2,
+                                                 const float x[3][TRACE_PACKET])
+{
+    return _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(b0, _mm256_loadu_ps(x[0])),
+                                       _mm256_mul_ps(b1, _mm256_loadu_ps(x[1]))),
+                         _mm256_mul_ps(b2, _mm256_loadu_ps(x[2])));
+}
+
+/*
+ * surface_fetch_lanes of a whole block whose hits are on two to eight
+ * triangles of one instance and mesh that share one material and one
+ * set of recorded flags (a quarter of a BART kitchen frame's blocks,
+ * most of them on the kitchen's small triangles).  What the per-hit
+ * path takes from the instance and the material (the emission, the
+ * lighting, the texture and its filters, the material's colours, the
+ * flags and what they select) is then the same for every hit, once;
+ * what it takes from the triangle (the cached unit normal, the vertex
+ * or flat normals, texture coordinates and vertex colours, the triangle
+ * part of the level of detail) once per distinct triangle, gathered
+ * into each lane from its own triangle.  Each lane then runs
+ * fetch_colour_begin's operations in their order on the same values
+ * (the cache only saves recomputing a triangle's values, which are the
+ * same whenever computed), and the levels of detail are lod_quad on the
+ * four lanes' own triangle parts, lod_quad_axes, then lod_ray: the same
+ * steps as texture_lods' lod_ray_quad on the per-hit path's copies.  So
+ * the same colours bit for bit.  Returns 0 as surface_fetch_lanes.
+ */
+static int fetch_lanes_mixed(const struct shade_context *sc,
+                             const struct trace_scene_hit *const hits[],
+                             const float dir[3][TRACE_PACKET], const float width[],
+                             struct surface_lanes *out)
+{
+    const struct trace_scene_hit *h0 = hits[0];
+    for (int i = 1; i < TRACE_PACKET; i++)
+        if (hits[i]->instance != h0->instance)
+            return 0;
+    struct hit_triangle t;
+    hit_triangle(sc, h0, &t);
+    const struct scene_mesh *mesh = t.mesh;
+    if (mesh->texcoord_q)
+        return 0;
+    const uint32_t material = mesh->tri_material[h0->prim];
+    const uint8_t recorded = mesh->tri_flags[h0->prim];
+    /* The distinct triangles in the order of their first hit; lane i is
+     * on triangle slot[i].  The same recorded flags give the same
+     * flags after hit_triangle's inheritance (one instance). */
+    uint32_t prim[TRACE_PACKET];
+    int slot[TRACE_PACKET], count = 0;
+    for (int i = 0; i < TRACE_PACKET; i++) {
+        const uint32_t p = hits[i]->prim;
+        int j = 0;
+        while (j < count && prim[j] != p)
+            j++;
+        if (j == count) {
+            if (mesh->tri_material[p] != material || mesh->tri_flags[p] != recorded)
+                return 0;
+            prim[count++] = p;
+        }
+        slot[i] = j;
+    }
+    const struct scene_material *m = &mesh->materials[material];
+    const struct scene_material *call = &t.inst->appearance.material;
+    const uint32_t inherit = m->inherit;
+    const float *emission =
+        (inherit & SCENE_MATERIAL_EMISSION) ? call->emission : m->emission;
+    const uint32_t texture = material_texture(m, call);
+    const int lighting = (inherit & SCENE_MATERIAL_LIGHTING) ? call->lighting : m->lighting;
+    const struct scene_texture *tx = NULL;
+    if (texture) {
+        tx = texture_named(sc, sc->cache, texture);
+        if (tx && !tx->texels)
+            tx = NULL;
+    }
+    const int lod = tx && tx->min_filter != tx->mag_filter;
+    /* Per triangle: its unit normal (triangle_normal; a degenerate one
+     * leaves the block to the per-hit path) and its level-of-detail
+     * part, copied out of the tile's one cache entry, which the next
+     * triangle takes. */
+    float tri_ng[TRACE_PACKET][3];
+    struct surface_lod tri_lod[TRACE_PACKET];
+    for (int j = 0; j < count; j++) {
+        struct hit_triangle tj = t;
+        tj.v = &mesh->indices[3 * prim[j]];
+        struct surface_cache *c = triangle_cache(sc->cache, t.inst, prim[j]);
+        if (!triangle_normal(c, &tj, tri_ng[j]))
+            return 0;
+        if (lod) {
+            const float *const vst[3] = {&mesh->texcoords[2 * tj.v[0]],
+                                         &mesh->texcoords[2 * tj.v[1]],
+                                         &mesh->texcoords[2 * tj.v[2]]};
+            tri_lod[j] = *lod_triangle(c, tx, t.inst, mesh, prim[j], tj.v, vst, NULL);
+        }
+    }
+    float lane_b[3][TRACE_PACKET], lane_x[3][3][TRACE_PACKET];
+    for (int i = 0; i < TRACE_PACKET; i++) {
+        lane_b[1][i] = hits[i]->u;
+        lane_b[2][i] = hits[i]->v;
+        for (int k = 0; k < 3; k++)
+            lane_x[0][k][i] = tri_ng[slot[i]][k];
+    }
+    const __m256 b1 = _mm256_loadu_ps(lane_b[1]), b2 = _mm256_loadu_ps(lane_b[2]);
+    const __m256 b0 = _mm256_sub_ps(_mm256_sub_ps(_mm256_set1_ps(1.0f), b1), b2);
+    const __m256 sign = _mm256_set1_ps(-0.0f);
+    __m256 g[3], dv[3];
+    for (int k = 0; k < 3; k++) {
+        g[k] = _mm256_loadu_ps(lane_x[0][k]);
+        dv[k] = _mm256_loadu_ps(dir[k]);
+    }
+    /* facing_normal as surface_fetch_lanes. */
+    const __m256 front = _mm256_cmp_ps(lanes_dot8(g, dv), _mm256_setzero_ps(), _CMP_LT_OQ);
+    const __m256 flip = _mm256_andnot_ps(front, sign);
+    for (int k = 0; k < 3; k++)
+        g[k] = _mm256_xor_ps(g[k], flip);
+    __m256 nv[3] = {g[0], g[1], g[2]};
+    if (mesh->has_normals) {
+        __m256 no[3];
+        if (t.flags & TRI_FLAT) {
+            float lane_n[3][TRACE_PACKET];
+            for (int i = 0; i < TRACE_PACKET; i++) {
+                const float *nf = &mesh->normals[3 * mesh->tri_provoking[hits[i]->prim]];
+                for (int k = 0; k < 3; k++)
+                    lane_n[k][i] = nf[k];
+            }
+            for (int k = 0; k < 3; k++)
+                no[k] = _mm256_loadu_ps(lane_n[k]);
+        } else {
+            for (int k = 0; k < 3; k++) {
+                for (int i = 0; i < TRACE_PACKET; i++) {
+                    const uint32_t *v = &mesh->indices[3 * hits[i]->prim];
+                    for (int j = 0; j < 3; j++)
+                        lane_x[k][j][i] = mesh->normals[3 * v[j] + k];
+                }
+                no[k] = lanes_interpolate_gathered(b0, b1, b2, lane_x[k]);
+            }
+        }
+        lanes_shading_normal(t.inst->normal_to_world, no, g, nv);
+    }
+    float lane_g[3][TRACE_PACKET];
+    for (int k = 0; k < 3; k++) {
+        _mm256_storeu_ps(lane_g[k], g[k]);
+        _mm256_storeu_ps(out->n[k], nv[k]);
+    }
+    memcpy(out->emission, emission, sizeof(out->emission));
+    out->lighting = lighting;
+    /* The colours: the material's once, or hit by hit whenever a vertex
+     * colour may stand in for them (it may differ by triangle). */
+    __m256 amb[3], dif[3];
+    if (!color_material_on(&t, hit_unlit(sc, lighting))) {
+        float ambient[4], diffuse[4];
+        hit_colours(sc, &t, m, call, lighting, ambient, diffuse);
+        for (int k = 0; k < 3; k++) {
+            amb[k] = _mm256_set1_ps(ambient[k]);
+            dif[k] = _mm256_set1_ps(diffuse[k]);
+        }
+    } else {
+        for (int i = 0; i < TRACE_PACKET; i++) {
+            float ambient[4], diffuse[4];
+            struct hit_triangle ti;
+            hit_triangle(sc, hits[i], &ti);
+            hit_colours(sc, &ti, m, call, lighting, ambient, diffuse);
+            for (int k = 0; k < 3; k++) {
+                out->ambient[k][i] = ambient[k];
+                out->diffuse[k][i] = diffuse[k];
+            }
+        }
+        for (int k = 0; k < 3; k++) {
+            amb[k] = _mm256_loadu_ps(out->ambient[k]);
+            dif[k] = _mm256_loadu_ps(out->diffuse[k]);
+        }
+    }
+    if (tx) {
+        float lane_st[2][TRACE_PACKET];
+        for (int k = 0; k < 2; k++) {
+            for (int i = 0; i < TRACE_PACKET; i++) {
+                const uint32_t *v = &mesh->indices[3 * hits[i]->prim];
+                for (int j = 0; j < 3; j++)
+                    lane_x[k][j][i] = mesh->texcoords[2 * v[j] + k];
+            }
+            _mm256_storeu_ps(lane_st[k], lanes_interpolate_gathered(b0, b1, b2, lane_x[k]));
+        }
+        float lambda[TRACE_PACKET], rgb[3][TRACE_PACKET];
+        for (int i = 0; i < TRACE_PACKET; i++)
+            lambda[i] = -INFINITY;
+        if (lod) {
+            const double top = lod_top(tx->level_count);
+            const __m256 wv = _mm256_loadu_ps(width);
+            for (int h = 0; h < TRACE_PACKET / 4; h++) {
+                const struct surface_lod *const l4[4] = {
+                    &tri_lod[slot[4 * h]], &tri_lod[slot[4 * h + 1]], &tri_lod[slot[4 * h + 2]],
+                    &tri_lod[slot[4 * h + 3]]};
+                const int shared = l4[0] == l4[1] && l4[0] == l4[2] && l4[0] == l4[3];
+#define HALF(v) _mm256_cvtps_pd(h ? _mm256_extractf128_ps(v, 1) : _mm256_castps256_ps128(v))
+                __m256d d[3], gd[3];
+                for (int k = 0; k < 3; k++) {
+                    d[k] = HALF(dv[k]);
+                    gd[k] = HALF(g[k]);
+                }
+                struct lod_quad_rest rest;
+                const int decided = lod_quad(l4, shared, d, gd, HALF(wv), _mm256_set1_pd(top),
+                                             &lambda[4 * h], &rest);
+#undef HALF
+                for (int i = 0; i < 4; i++) {
+                    const int j = 4 * h + i;
+                    if (decided >> i & 1 || lod_quad_axes(&rest, i, width[j], top, &lambda[j]))
+                        continue;
+                    const float ngj[3] = {lane_g[0][j], lane_g[1][j], lane_g[2][j]};
+                    const float dj[3] = {dir[0][j], dir[1][j], dir[2][j]};
+                    lambda[j] = lod_ray(l4[i], tx->level_count, ngj, dj, width[j]);
+                }
+            }
+        }
+        if (!scene_texture_sample_lod8(tx, lambda, lane_st[0], lane_st[1], rgb)) {
+            for (int i = 0; i < TRACE_PACKET; i++) {
+                float texel[4];
+                scene_texture_sample_lod(tx, lambda[i], lane_st[0][i], lane_st[1][i], texel);
+                for (int k = 0; k < 3; k++)
+                    rgb[k][i] = texel[k];
+            }
+        }
+        for (int k = 0; k < 3; k++) {
+            const __m256 texel = _mm256_loadu_ps(rgb[k]);
+            amb[k] = _mm256_mul_ps(amb[k], texel);
+            dif[k] = _mm256_mul_ps(dif[k], texel);
+        }
+    }
+    for (int k = 0; k < 3; k++) {
+        _mm256_storeu_ps(out->ambient[k], amb[k]);
+        _mm256_storeu_ps(out->diffuse[k], dif[k]);
+    }
+    return 1;
+}
+
 /*
  * surface_fetch_lanes (surface.h): fetch_colour_begin of a whole block's
  * TRACE_PACKET hits on one triangle of one instance (three blocks in
@@ -1553,17 +1827,18 @@ void surface_fetch_colour(const struct shade_context *sc, const struct trace_sce
  * lookups in the lanes when the sampler takes the block (else hit by
  * hit), and texture_end's products in the lanes (a product is the same
  * in either order).  The same values, so the same colours bit for bit.
+ * A block on several triangles goes to fetch_lanes_mixed.
  */
 int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene_hit *const hits[],
                         const float dir[3][TRACE_PACKET], const float width[],
                         struct surface_lanes *out)
 {
     const struct trace_scene_hit *h0 = hits[0];
-    for (int i = 1; i < TRACE_PACKET; i++)
-        if (hits[i]->prim != h0->prim || hits[i]->instance != h0->instance)
-            return 0;
     if (!sc->cache)
         return 0;
+    for (int i = 1; i < TRACE_PACKET; i++)
+        if (hits[i]->prim != h0->prim || hits[i]->instance != h0->instance)
+            return fetch_lanes_mixed(sc, hits, dir, width, out);
     struct hit_triangle t;
     hit_triangle(sc, h0, &t);
     const struct scene_mesh *mesh = t.mesh;
@@ -1627,37 +1902,7 @@ int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene
             for (int k = 0; k < 3; k++)
                 no[k] = LANES_INTERPOLATE(n0[k], n1[k], n2[k]);
         }
-        /* transform_normal in double, four lanes at a time. */
-        const double *mt = t.inst->normal_to_world;
-        __m256 nw[3];
-        for (int r = 0; r < 3; r++) {
-            __m128 half[2];
-            for (int h = 0; h < 2; h++) {
-                __m256d x[3];
-                for (int k = 0; k < 3; k++)
-                    x[k] = _mm256_cvtps_pd(h ? _mm256_extractf128_ps(no[k], 1)
-                                             : _mm256_castps256_ps128(no[k]));
-                half[h] = _mm256_cvtpd_ps(_mm256_add_pd(
-                    _mm256_add_pd(_mm256_mul_pd(_mm256_set1_pd(mt[r]), x[0]),
-                                  _mm256_mul_pd(_mm256_set1_pd(mt[4 + r]), x[1])),
-                    _mm256_mul_pd(_mm256_set1_pd(mt[8 + r]), x[2])));
-            }
-            nw[r] = _mm256_insertf128_ps(_mm256_castps128_ps256(half[0]), half[1], 1);
-        }
-        /* vec3_normalize: a length that is positive and finite (not
-         * above FLT_MAX; NaN fails both) scales by 1 / len, else the
-         * geometric normal stays. */
-        const __m256 len = _mm256_sqrt_ps(lanes_dot8(nw, nw));
-        const __m256 unit =
-            _mm256_and_ps(_mm256_cmp_ps(len, _mm256_setzero_ps(), _CMP_GT_OQ),
-                          _mm256_cmp_ps(len, _mm256_set1_ps(FLT_MAX), _CMP_LE_OQ));
-        const __m256 inv = _mm256_div_ps(_mm256_set1_ps(1.0f), len);
-        for (int k = 0; k < 3; k++)
-            nw[k] = _mm256_mul_ps(nw[k], inv);
-        const __m256 away = _mm256_and_ps(
-            _mm256_cmp_ps(lanes_dot8(nw, g), _mm256_setzero_ps(), _CMP_LT_OQ), sign);
-        for (int k = 0; k < 3; k++)
-            nv[k] = _mm256_blendv_ps(g[k], _mm256_xor_ps(nw[k], away), unit);
+        lanes_shading_normal(t.inst->normal_to_world, no, g, nv);
     }
     float lane_g[3][TRACE_PACKET];
     for (int k = 0; k < 3; k++) {

@@ -158,13 +158,14 @@ struct surface_lanes {
 
 /*
  * surface_fetch_colours of a block of TRACE_PACKET hits when they are
- * all on one triangle of one instance, in the lanes of the shading's
- * AVX2 copy (render/shade_eye_avx2.c renames it), dir[k][i] component k
- * of hit i's direction, into out: the same
- * values bit for bit.  Returns 0, having written nothing the caller
- * reads, when the hits are on more than one triangle or the block needs
- * what this leaves to surface_fetch_colours (no cache, a degenerate
- * triangle, projective texture coordinates).
+ * all on one instance, and on one triangle or on triangles of one
+ * material and one set of flags, in the lanes of the shading's AVX2
+ * copy (render/shade_eye_avx2.c renames it), dir[k][i] component k of
+ * hit i's direction, into out: the same values bit for bit.  Returns 0,
+ * having written nothing the caller reads, when the hits span instances,
+ * materials or flags, or the block needs what this leaves to
+ * surface_fetch_colours (no cache, a degenerate triangle, projective
+ * texture coordinates).
  */
 int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene_hit *const hits[],
                         const float dir[3][TRACE_PACKET], const float width[],
