@@ -1063,30 +1063,6 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                     _mm256_storeu_si256((__m256i *)(void *)lane_rays,
                                         _mm256_set1_epi32((int)rays));
                 }
-                /* One origin: each plane's distance from it, b - o, is
-                 * the same number in every lane, the interval test's
-                 * dn and df (ia_o_near and ia_o_far are that origin):
-                 * taken once for the eight children, the lane test
-                 * broadcasts it instead of subtracting per child.  The
-                 * rays' origins are equal as numbers (f_min == f_max,
-                 * packet_ia_init), but one may be -0 where another is
-                 * +0; b - o is then the same number, at most with the
-                 * other sign of a zero, and so is its product by the
-                 * ray's inverse, which only max, min and <= read below:
-                 * the same pass mask. */
-                float plane_d[6][8] __attribute__((aligned(32)));
-                const int one_origin = !p->ia_masks;
-                if (one_origin && test) {
-                    for (int k = 0; k < 3; k++) {
-                        _mm256_store_ps(plane_d[k], _mm256_sub_ps(_mm256_load_ps(wide_row(
-                                                                      n->bounds, near_row[k])),
-                                                                  p->ia_o_near[k]));
-                        _mm256_store_ps(plane_d[3 + k],
-                                        _mm256_sub_ps(_mm256_load_ps(
-                                                          wide_row(n->bounds, far_row[k])),
-                                                      p->ia_o_far[k]));
-                    }
-                }
                 for (unsigned m = test; m; m &= m - 1u) {
                     const unsigned l = (unsigned)__builtin_ctz(m);
                     /* The child's box against each ray, walk_wide8's
@@ -1094,20 +1070,14 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                     __m256 u0 = p->lane_f[TRI8_F_TMIN];
                     __m256 u1 = inf8;
                     for (int k = 0; k < 3; k++) {
-                        __m256 dn, df;
-                        if (one_origin) {
-                            dn = _mm256_broadcast_ss(&plane_d[k][l]);
-                            df = _mm256_broadcast_ss(&plane_d[3 + k][l]);
-                        } else {
-                            dn = _mm256_sub_ps(
-                                _mm256_broadcast_ss(&wide_row(n->bounds, near_row[k])[l]),
-                                p->lane_f[TRI8_F_ORG + k]);
-                            df = _mm256_sub_ps(
-                                _mm256_broadcast_ss(&wide_row(n->bounds, far_row[k])[l]),
-                                p->lane_f[TRI8_F_ORG + k]);
-                        }
-                        const __m256 tn = _mm256_mul_ps(dn, p->lane_f[TRI8_F_INV + k]);
-                        const __m256 tf = _mm256_mul_ps(df, p->lane_f[TRI8_F_INV + k]);
+                        const __m256 tn = _mm256_mul_ps(
+                            _mm256_sub_ps(_mm256_broadcast_ss(&wide_row(n->bounds, near_row[k])[l]),
+                                          p->lane_f[TRI8_F_ORG + k]),
+                            p->lane_f[TRI8_F_INV + k]);
+                        const __m256 tf = _mm256_mul_ps(
+                            _mm256_sub_ps(_mm256_broadcast_ss(&wide_row(n->bounds, far_row[k])[l]),
+                                          p->lane_f[TRI8_F_ORG + k]),
+                            p->lane_f[TRI8_F_INV + k]);
                         u0 = _mm256_max_ps(tn, u0);
                         u1 = _mm256_min_ps(tf, u1);
                     }
