@@ -1087,27 +1087,13 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                     lane_rays[l] = (unsigned)_mm256_movemask_ps(in) & rays;
                     push |= (unsigned)(lane_rays[l] != 0) << l;
                     node_tests += (unsigned)__builtin_popcount(rays);
-                    /* The cull on pop by a ray's box_limit reads the
-                     * interval test's entry bound (t_min, stored above),
-                     * not the least entry of the child's rays (a blend
-                     * and a horizontal minimum per tested child).  It
-                     * keeps the same rays or more, never fewer: t0 is
-                     * the interval's lower bound of every ray's entry.
-                     * A ray kept that its own entry would have culled
-                     * takes no hit there: its box_limit (its best times
-                     * ISECT_BOX_FAR_SCALE) lies before its entry into
-                     * the child's box, where a hit at or below its best
-                     * would pass its own box test (the single walk's
-                     * argument for that cull, traverse_wide.h), so each
-                     * triangle test refuses it or finds nothing the
-                     * single walk would not (the one-origin leaf
-                     * children before ia_leaf_t above are entered by
-                     * every ray on the same argument).  An any-hit ray's
-                     * box_limit never shrinks, so it always took this
-                     * bound.  Measured (docs/performance-log.md, pk10):
-                     * AVX2 instructions of the camera packets kitchen
-                     * -1.5 %, bumpy -1.4 %, gears -1.0 %. */
-                    (void)in;
+                    /* The least entry of its rays, for the cull on pop
+                     * by a ray's box_limit; an any-hit ray's never
+                     * shrinks, so the rays here, which passed it
+                     * already, would all stay: the interval test's
+                     * bound (t_min, stored above) does as well. */
+                    if (!any_hit)
+                        t_min[l] = packet_hmin(_mm256_blendv_ps(inf8, u0, in));
                 }
             }
             if (push) {
