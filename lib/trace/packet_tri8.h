@@ -317,6 +317,27 @@ static inline unsigned tri8_test(const struct tri8_rays *r, const struct tri4_pa
             return res->hit | deferred;
     }
 
+    if (!any_hit) {
+        /* The lanes whose box interval lies wholly before tmin (t_lo,
+         * t_hi < tmin; t_lo is ordered in a candidate, which passed
+         * t_lo < limit, and maxps returns t_hi where it is NaN, which
+         * then fails the comparison) take no hit: the finish clamps t
+         * into [t_lo, t_hi] by min then max, a value that is t_lo or at
+         * most t_hi, both below tmin, and refuses t < tmin.  A lane the
+         * finish would send to isect_triangle (a sliver, den == 0, a NaN
+         * distance) is refused there as well: its float part gives the
+         * same t_lo and t_hi, and every way to a hit ends in
+         * isect_clamp_to_box and the same t >= tmin test (pk9's
+         * argument).  Deferred lanes (an edge function of 0) are not
+         * candidates and still go to it.  A half of four lanes left
+         * without candidates skips its double step below
+         * (docs/performance-log.md, pk9 and pk10). */
+        cand &= ~(unsigned)_mm256_movemask_ps(
+            _mm256_cmp_ps(_mm256_max_ps(t_lo, t_hi), r->tmin, _CMP_LT_OQ));
+        if (!cand)
+            return deferred;
+    }
+
     const double e1x = (double)q->v[1][0][l] - q->v[0][0][l];
     const double e1y = (double)q->v[1][1][l] - q->v[0][1][l];
     const double e1z = (double)q->v[1][2][l] - q->v[0][2][l];
