@@ -1591,6 +1591,31 @@ SURFACE_INLINE __m256 lanes_interpolate_gathered(__m256 b0, __m256 b1, __m256 b2
                          _mm256_mul_ps(b2, _mm256_loadu_ps(x[2])));
 }
 
+/* texture_end of a block's lanes: the texels at the lanes' levels of
+ * detail (the 8-lane sampler when it takes the block, else lane by lane)
+ * times the ambient and diffuse colours; a product is the same in either
+ * order.  Shared by surface_fetch_lanes and fetch_lanes_mixed. */
+static inline void lanes_texture_end(const struct scene_texture *tx,
+                                     const float lambda[TRACE_PACKET],
+                                     const float lane_st[2][TRACE_PACKET], __m256 amb[3],
+                                     __m256 dif[3])
+{
+    float rgb[3][TRACE_PACKET];
+    if (!scene_texture_sample_lod8(tx, lambda, lane_st[0], lane_st[1], rgb)) {
+        for (int i = 0; i < TRACE_PACKET; i++) {
+            float texel[4];
+            scene_texture_sample_lod(tx, lambda[i], lane_st[0][i], lane_st[1][i], texel);
+            for (int k = 0; k < 3; k++)
+                rgb[k][i] = texel[k];
+        }
+    }
+    for (int k = 0; k < 3; k++) {
+        const __m256 texel = _mm256_loadu_ps(rgb[k]);
+        amb[k] = _mm256_mul_ps(amb[k], texel);
+        dif[k] = _mm256_mul_ps(dif[k], texel);
+    }
+}
+
 /*
  * surface_fetch_lanes of a whole block whose hits are on two to eight
  * triangles of one instance and mesh that share one material and one
@@ -1763,7 +1788,7 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
             }
             _mm256_storeu_ps(lane_st[k], lanes_interpolate_gathered(b0, b1, b2, lane_x[k]));
         }
-        float lambda[TRACE_PACKET], rgb[3][TRACE_PACKET];
+        float lambda[TRACE_PACKET];
         for (int i = 0; i < TRACE_PACKET; i++)
             lambda[i] = -INFINITY;
         if (lod) {
@@ -1794,19 +1819,7 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
                 }
             }
         }
-        if (!scene_texture_sample_lod8(tx, lambda, lane_st[0], lane_st[1], rgb)) {
-            for (int i = 0; i < TRACE_PACKET; i++) {
-                float texel[4];
-                scene_texture_sample_lod(tx, lambda[i], lane_st[0][i], lane_st[1][i], texel);
-                for (int k = 0; k < 3; k++)
-                    rgb[k][i] = texel[k];
-            }
-        }
-        for (int k = 0; k < 3; k++) {
-            const __m256 texel = _mm256_loadu_ps(rgb[k]);
-            amb[k] = _mm256_mul_ps(amb[k], texel);
-            dif[k] = _mm256_mul_ps(dif[k], texel);
-        }
+        lanes_texture_end(tx, lambda, lane_st, amb, dif);
     }
     for (int k = 0; k < 3; k++) {
         _mm256_storeu_ps(out->ambient[k], amb[k]);
@@ -1951,7 +1964,7 @@ int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene
          * without them (texture_begin), then the eight lookups in the
          * lanes (scene_texture_sample_lod8) or, where the sampler does not
          * take the block, hit by hit as texture_end. */
-        float lambda[TRACE_PACKET], rgb[3][TRACE_PACKET];
+        float lambda[TRACE_PACKET];
         for (int i = 0; i < TRACE_PACKET; i++)
             lambda[i] = -INFINITY;
         if (tri) {
@@ -1989,19 +2002,7 @@ int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene
                 }
             }
         }
-        if (!scene_texture_sample_lod8(tx, lambda, lane_st[0], lane_st[1], rgb)) {
-            for (int i = 0; i < TRACE_PACKET; i++) {
-                float texel[4];
-                scene_texture_sample_lod(tx, lambda[i], lane_st[0][i], lane_st[1][i], texel);
-                for (int k = 0; k < 3; k++)
-                    rgb[k][i] = texel[k];
-            }
-        }
-        for (int k = 0; k < 3; k++) {
-            const __m256 texel = _mm256_loadu_ps(rgb[k]);
-            amb[k] = _mm256_mul_ps(amb[k], texel);
-            dif[k] = _mm256_mul_ps(dif[k], texel);
-        }
+        lanes_texture_end(tx, lambda, lane_st, amb, dif);
     }
     for (int k = 0; k < 3; k++) {
         _mm256_storeu_ps(out->ambient[k], amb[k]);
