@@ -756,6 +756,30 @@ SURFACE_INLINE int lod_quad_axes(const struct lod_quad_rest *rest, int i, float 
     return 1;
 }
 
+/* The levels of detail of half h (lanes 4h..4h+3) of a block: lod_quad's
+ * chain on the quad, then lane by lane what it left, from its common
+ * rest (lod_quad_axes) or else lod_ray with the lane's own triangle part
+ * l[i], facing normal and direction: the per-hit path's lambdas.  For
+ * surface_fetch_lanes (one part, shared) and fetch_lanes_mixed. */
+SURFACE_INLINE void lod_quad_lanes(const struct surface_lod *const l[4], int shared,
+                                   const __m256d d[3], const __m256d g[3], __m256d width4,
+                                   double top, int level_count, int h, const float width[],
+                                   const float lane_g[3][TRACE_PACKET],
+                                   const float dir[3][TRACE_PACKET], float lambda[])
+{
+    struct lod_quad_rest rest;
+    const int decided =
+        lod_quad(l, shared, d, g, width4, _mm256_set1_pd(top), &lambda[4 * h], &rest);
+    for (int i = 0; i < 4; i++) {
+        const int j = 4 * h + i;
+        if (decided >> i & 1 || lod_quad_axes(&rest, i, width[j], top, &lambda[j]))
+            continue;
+        const float ngj[3] = {lane_g[0][j], lane_g[1][j], lane_g[2][j]};
+        const float dj[3] = {dir[0][j], dir[1][j], dir[2][j]};
+        lambda[j] = lod_ray(l[i], level_count, ngj, dj, width[j]);
+    }
+}
+
 /*
  * The level of detail of a block of hits on one triangle
  * (surface_fetch_lanes) from the triangle's texel map, with a proven
@@ -1591,6 +1615,77 @@ SURFACE_INLINE __m256 lanes_interpolate_gathered(__m256 b0, __m256 b1, __m256 b2
                          _mm256_mul_ps(b2, _mm256_loadu_ps(x[2])));
 }
 
+/* facing_normal in the lanes: front = ng . dir < 0, the back face's ng
+ * negated (a sign flip, the same floats). */
+static inline void lanes_facing(__m256 g[3], const __m256 dv[3])
+{
+    const __m256 front = _mm256_cmp_ps(lanes_dot8(g, dv), _mm256_setzero_ps(), _CMP_LT_OQ);
+    const __m256 flip = _mm256_andnot_ps(front, _mm256_set1_ps(-0.0f));
+    for (int k = 0; k < 3; k++)
+        g[k] = _mm256_xor_ps(g[k], flip);
+}
+
+/* The material properties a lane pass needs, as fetch_colour_begin
+ * resolves them (the call's where the list inherits them, else the
+ * recorded ones): the emission and lighting in *emission and *lighting;
+ * returns the texture with texels, or NULL for none. */
+static inline const struct scene_texture *lanes_material(const struct shade_context *sc,
+                                                         const struct scene_material *m,
+                                                         const struct scene_material *call,
+                                                         const float **emission, int *lighting)
+{
+    const uint32_t inherit = m->inherit;
+    *emission = (inherit & SCENE_MATERIAL_EMISSION) ? call->emission : m->emission;
+    *lighting = (inherit & SCENE_MATERIAL_LIGHTING) ? call->lighting : m->lighting;
+    const uint32_t texture = material_texture(m, call);
+    if (!texture)
+        return NULL;
+    const struct scene_texture *tx = texture_named(sc, sc->cache, texture);
+    return tx && tx->texels ? tx : NULL;
+}
+
+/* A block's ambient and diffuse colours in amb and dif: t's (the
+ * material's, hit_colours) broadcast when they cannot vary by hit, else
+ * hit by hit into out's arrays and loaded from there.  Hit i's triangle
+ * is t with hit i's barycentrics (hit_triangle's 1 - u - v), or with
+ * each_triangle hit_triangle of hit i itself (its own triangle). */
+static inline void lanes_colours(const struct shade_context *sc, const struct hit_triangle *t,
+                                 const struct trace_scene_hit *const hits[], int vary,
+                                 int each_triangle, const struct scene_material *m,
+                                 const struct scene_material *call, int lighting,
+                                 struct surface_lanes *out, __m256 amb[3], __m256 dif[3])
+{
+    if (!vary) {
+        float ambient[4], diffuse[4];
+        hit_colours(sc, t, m, call, lighting, ambient, diffuse);
+        for (int k = 0; k < 3; k++) {
+            amb[k] = _mm256_set1_ps(ambient[k]);
+            dif[k] = _mm256_set1_ps(diffuse[k]);
+        }
+        return;
+    }
+    for (int i = 0; i < TRACE_PACKET; i++) {
+        float ambient[4], diffuse[4];
+        struct hit_triangle ti = *t;
+        if (each_triangle) {
+            hit_triangle(sc, hits[i], &ti);
+        } else {
+            ti.b1 = hits[i]->u;
+            ti.b2 = hits[i]->v;
+            ti.b0 = 1.0f - hits[i]->u - hits[i]->v;
+        }
+        hit_colours(sc, &ti, m, call, lighting, ambient, diffuse);
+        for (int k = 0; k < 3; k++) {
+            out->ambient[k][i] = ambient[k];
+            out->diffuse[k][i] = diffuse[k];
+        }
+    }
+    for (int k = 0; k < 3; k++) {
+        amb[k] = _mm256_loadu_ps(out->ambient[k]);
+        dif[k] = _mm256_loadu_ps(out->diffuse[k]);
+    }
+}
+
 /* texture_end of a block's lanes: the texels at the lanes' levels of
  * detail (the 8-lane sampler when it takes the block, else lane by lane)
  * times the ambient and diffuse colours; a product is the same in either
@@ -1670,17 +1765,9 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
     }
     const struct scene_material *m = &mesh->materials[material];
     const struct scene_material *call = &t.inst->appearance.material;
-    const uint32_t inherit = m->inherit;
-    const float *emission =
-        (inherit & SCENE_MATERIAL_EMISSION) ? call->emission : m->emission;
-    const uint32_t texture = material_texture(m, call);
-    const int lighting = (inherit & SCENE_MATERIAL_LIGHTING) ? call->lighting : m->lighting;
-    const struct scene_texture *tx = NULL;
-    if (texture) {
-        tx = texture_named(sc, sc->cache, texture);
-        if (tx && !tx->texels)
-            tx = NULL;
-    }
+    const float *emission;
+    int lighting;
+    const struct scene_texture *tx = lanes_material(sc, m, call, &emission, &lighting);
     const int lod = tx && tx->min_filter != tx->mag_filter;
     /* Per triangle: its unit normal (triangle_normal; a degenerate one
      * leaves the block to the per-hit path) and its level-of-detail
@@ -1710,17 +1797,12 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
     }
     const __m256 b1 = _mm256_loadu_ps(lane_b[1]), b2 = _mm256_loadu_ps(lane_b[2]);
     const __m256 b0 = _mm256_sub_ps(_mm256_sub_ps(_mm256_set1_ps(1.0f), b1), b2);
-    const __m256 sign = _mm256_set1_ps(-0.0f);
     __m256 g[3], dv[3];
     for (int k = 0; k < 3; k++) {
         g[k] = _mm256_loadu_ps(lane_x[0][k]);
         dv[k] = _mm256_loadu_ps(dir[k]);
     }
-    /* facing_normal as surface_fetch_lanes. */
-    const __m256 front = _mm256_cmp_ps(lanes_dot8(g, dv), _mm256_setzero_ps(), _CMP_LT_OQ);
-    const __m256 flip = _mm256_andnot_ps(front, sign);
-    for (int k = 0; k < 3; k++)
-        g[k] = _mm256_xor_ps(g[k], flip);
+    lanes_facing(g, dv);
     __m256 nv[3] = {g[0], g[1], g[2]};
     if (mesh->has_normals) {
         __m256 no[3];
@@ -1755,29 +1837,8 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
     /* The colours: the material's once, or hit by hit whenever a vertex
      * colour may stand in for them (it may differ by triangle). */
     __m256 amb[3], dif[3];
-    if (!color_material_on(&t, hit_unlit(sc, lighting))) {
-        float ambient[4], diffuse[4];
-        hit_colours(sc, &t, m, call, lighting, ambient, diffuse);
-        for (int k = 0; k < 3; k++) {
-            amb[k] = _mm256_set1_ps(ambient[k]);
-            dif[k] = _mm256_set1_ps(diffuse[k]);
-        }
-    } else {
-        for (int i = 0; i < TRACE_PACKET; i++) {
-            float ambient[4], diffuse[4];
-            struct hit_triangle ti;
-            hit_triangle(sc, hits[i], &ti);
-            hit_colours(sc, &ti, m, call, lighting, ambient, diffuse);
-            for (int k = 0; k < 3; k++) {
-                out->ambient[k][i] = ambient[k];
-                out->diffuse[k][i] = diffuse[k];
-            }
-        }
-        for (int k = 0; k < 3; k++) {
-            amb[k] = _mm256_loadu_ps(out->ambient[k]);
-            dif[k] = _mm256_loadu_ps(out->diffuse[k]);
-        }
-    }
+    lanes_colours(sc, &t, hits, color_material_on(&t, hit_unlit(sc, lighting)), 1, m, call,
+                  lighting, out, amb, dif);
     if (tx) {
         float lane_st[2][TRACE_PACKET];
         for (int k = 0; k < 2; k++) {
@@ -1805,18 +1866,9 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
                     d[k] = HALF(dv[k]);
                     gd[k] = HALF(g[k]);
                 }
-                struct lod_quad_rest rest;
-                const int decided = lod_quad(l4, shared, d, gd, HALF(wv), _mm256_set1_pd(top),
-                                             &lambda[4 * h], &rest);
+                lod_quad_lanes(l4, shared, d, gd, HALF(wv), top, tx->level_count, h, width,
+                               lane_g, dir, lambda);
 #undef HALF
-                for (int i = 0; i < 4; i++) {
-                    const int j = 4 * h + i;
-                    if (decided >> i & 1 || lod_quad_axes(&rest, i, width[j], top, &lambda[j]))
-                        continue;
-                    const float ngj[3] = {lane_g[0][j], lane_g[1][j], lane_g[2][j]};
-                    const float dj[3] = {dir[0][j], dir[1][j], dir[2][j]};
-                    lambda[j] = lod_ray(l4[i], tx->level_count, ngj, dj, width[j]);
-                }
             }
         }
         lanes_texture_end(tx, lambda, lane_st, amb, dif);
@@ -1863,17 +1915,9 @@ int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene
         return 0;
     const struct scene_material *m = &mesh->materials[mesh->tri_material[h0->prim]];
     const struct scene_material *call = &t.inst->appearance.material;
-    const uint32_t inherit = m->inherit;
-    const float *emission =
-        (inherit & SCENE_MATERIAL_EMISSION) ? call->emission : m->emission;
-    const uint32_t texture = material_texture(m, call);
-    const int lighting = (inherit & SCENE_MATERIAL_LIGHTING) ? call->lighting : m->lighting;
-    const struct scene_texture *tx = NULL;
-    if (texture) {
-        tx = texture_named(sc, sc->cache, texture);
-        if (tx && !tx->texels)
-            tx = NULL;
-    }
+    const float *emission;
+    int lighting;
+    const struct scene_texture *tx = lanes_material(sc, m, call, &emission, &lighting);
     const float *const vst[3] = {
         tx ? &mesh->texcoords[2 * t.v[0]] : NULL, tx ? &mesh->texcoords[2 * t.v[1]] : NULL,
         tx ? &mesh->texcoords[2 * t.v[2]] : NULL};
@@ -1892,17 +1936,12 @@ int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene
     }
     const __m256 b1 = _mm256_loadu_ps(lane_b[1]), b2 = _mm256_loadu_ps(lane_b[2]);
     const __m256 b0 = _mm256_sub_ps(_mm256_sub_ps(_mm256_set1_ps(1.0f), b1), b2);
-    const __m256 sign = _mm256_set1_ps(-0.0f);
     __m256 g[3], dv[3];
     for (int k = 0; k < 3; k++) {
         g[k] = _mm256_set1_ps(ng[k]);
         dv[k] = _mm256_loadu_ps(dir[k]);
     }
-    /* front = ng . dir < 0; the back face's ng negated (a sign flip). */
-    const __m256 front = _mm256_cmp_ps(lanes_dot8(g, dv), _mm256_setzero_ps(), _CMP_LT_OQ);
-    const __m256 flip = _mm256_andnot_ps(front, sign);
-    for (int k = 0; k < 3; k++)
-        g[k] = _mm256_xor_ps(g[k], flip);
+    lanes_facing(g, dv);
     __m256 nv[3] = {g[0], g[1], g[2]};
     if (mesh->has_normals) {
         __m256 no[3];
@@ -1930,30 +1969,7 @@ int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene
     const int vary = color_material_on(&t, hit_unlit(sc, lighting)) &&
                      !(t.flags & (TRI_INHERIT_COLOR | TRI_FLAT));
     __m256 amb[3], dif[3];
-    if (!vary) {
-        float ambient[4], diffuse[4];
-        hit_colours(sc, &t, m, call, lighting, ambient, diffuse);
-        for (int k = 0; k < 3; k++) {
-            amb[k] = _mm256_set1_ps(ambient[k]);
-            dif[k] = _mm256_set1_ps(diffuse[k]);
-        }
-    } else {
-        for (int i = 0; i < TRACE_PACKET; i++) {
-            float ambient[4], diffuse[4];
-            t.b1 = hits[i]->u;
-            t.b2 = hits[i]->v;
-            t.b0 = 1.0f - hits[i]->u - hits[i]->v;
-            hit_colours(sc, &t, m, call, lighting, ambient, diffuse);
-            for (int k = 0; k < 3; k++) {
-                out->ambient[k][i] = ambient[k];
-                out->diffuse[k][i] = diffuse[k];
-            }
-        }
-        for (int k = 0; k < 3; k++) {
-            amb[k] = _mm256_loadu_ps(out->ambient[k]);
-            dif[k] = _mm256_loadu_ps(out->diffuse[k]);
-        }
-    }
+    lanes_colours(sc, &t, hits, vary, 0, m, call, lighting, out, amb, dif);
     if (tx) {
         float lane_st[2][TRACE_PACKET];
         for (int k = 0; k < 2; k++)
@@ -1988,18 +2004,9 @@ int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene
                     lod_fast_quad(&c->fast, tri->n, d, gd, HALF(wv), _mm256_set1_pd(top),
                                   &lambda[4 * h]) == 15)
                     continue;
-                struct lod_quad_rest rest;
-                const int decided = lod_quad(l4, 1, d, gd, HALF(wv), _mm256_set1_pd(top),
-                                             &lambda[4 * h], &rest);
+                lod_quad_lanes(l4, 1, d, gd, HALF(wv), top, tx->level_count, h, width, lane_g,
+                               dir, lambda);
 #undef HALF
-                for (int i = 0; i < 4; i++) {
-                    const int j = 4 * h + i;
-                    if (decided >> i & 1 || lod_quad_axes(&rest, i, width[j], top, &lambda[j]))
-                        continue;
-                    const float ngj[3] = {lane_g[0][j], lane_g[1][j], lane_g[2][j]};
-                    const float dj[3] = {dir[0][j], dir[1][j], dir[2][j]};
-                    lambda[j] = lod_ray(tri, tx->level_count, ngj, dj, width[j]);
-                }
             }
         }
         lanes_texture_end(tx, lambda, lane_st, amb, dif);
