@@ -679,38 +679,8 @@ static inline void bilinear8(const struct scene_texture *tex, __m256i level, con
     _mm256_i32gather_epi32(texels,                                                                \
                            _mm256_add_epi32(first, _mm256_slli_epi32(_mm256_add_epi32(r, c), 2)), \
                            1)
-    __m256i x00, x10, x01, x11;
-    if (_mm256_movemask_epi8(_mm256_cmpeq_epi32(i1, _mm256_add_epi32(i0, one))) == -1) {
-        /* Every lane's two columns side by side (i1 = i0 + 1: no wrap
-         * or clamp between them, both in [0, w - 1]): texel (row, i1) is
-         * the four bytes after (row, i0) in the same row of the same
-         * level, so one eight-byte load a lane and row fetches both, the
-         * same bytes, within the row.  Four gathers of four such pairs
-         * (lanes 0, 1, 4, 5 and 2, 3, 6, 7, so that taking the pairs'
-         * low and high halves puts the lanes back in order) load half as
-         * many elements as four gathers of eight texels. */
-        const __m256i order = _mm256_setr_epi32(0, 1, 4, 5, 2, 3, 6, 7);
-        const long long *pairs = (const long long *)(const void *)texels;
-#define PAIRS8(r, left, right)                                                                    \
-    do {                                                                                          \
-        const __m256i at_ = _mm256_permutevar8x32_epi32(                                          \
-            _mm256_add_epi32(first, _mm256_slli_epi32(_mm256_add_epi32(r, i0), 2)), order);       \
-        const __m256 p0_ = _mm256_castsi256_ps(                                                   \
-            _mm256_i32gather_epi64(pairs, _mm256_castsi256_si128(at_), 1));                       \
-        const __m256 p1_ = _mm256_castsi256_ps(                                                   \
-            _mm256_i32gather_epi64(pairs, _mm256_extracti128_si256(at_, 1), 1));                  \
-        left = _mm256_castps_si256(_mm256_shuffle_ps(p0_, p1_, _MM_SHUFFLE(2, 0, 2, 0)));         \
-        right = _mm256_castps_si256(_mm256_shuffle_ps(p0_, p1_, _MM_SHUFFLE(3, 1, 3, 1)));        \
-    } while (0)
-        PAIRS8(r0, x00, x10);
-        PAIRS8(r1, x01, x11);
-#undef PAIRS8
-    } else {
-        x00 = TEXEL8(r0, i0);
-        x10 = TEXEL8(r0, i1);
-        x01 = TEXEL8(r1, i0);
-        x11 = TEXEL8(r1, i1);
-    }
+    const __m256i x00 = TEXEL8(r0, i0), x10 = TEXEL8(r0, i1);
+    const __m256i x01 = TEXEL8(r1, i0), x11 = TEXEL8(r1, i1);
 #undef TEXEL8
     const __m256i byte = _mm256_set1_epi32(0xff);
     const __m256 d255 = _mm256_set1_ps(255.0f);
