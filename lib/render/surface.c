@@ -1763,23 +1763,6 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
         }
         slot[i] = j;
     }
-    /* The distinct triangles' vertex data, asked for all at once before
-     * the per-triangle work below: a block on several triangles mostly
-     * meets them here for the first time (the walk reads its leaves'
-     * own copies), and each triangle's normal waited on its index and
-     * position loads in turn (perf: the most sampled instruction of this
-     * function was a position load).  A prefetch reads nothing the
-     * computation sees, so the values are unchanged. */
-    for (int j = 0; j < count; j++) {
-        const uint32_t *v = &mesh->indices[3 * prim[j]];
-        for (int a = 0; a < 3; a++) {
-            _mm_prefetch((const char *)&mesh->positions[3 * v[a]], _MM_HINT_T0);
-            if (mesh->has_normals)
-                _mm_prefetch((const char *)&mesh->normals[3 * v[a]], _MM_HINT_T0);
-            if (mesh->texcoords)
-                _mm_prefetch((const char *)&mesh->texcoords[2 * v[a]], _MM_HINT_T0);
-        }
-    }
     const struct scene_material *m = &mesh->materials[material];
     const struct scene_material *call = &t.inst->appearance.material;
     const float *emission;
