@@ -54,6 +54,7 @@
 #include <string.h>
 
 #include "accel/build_internal.h"
+#include "accel/triangle_box.h"
 #include "accel/vec4.h"
 #include "base/alloc.h"
 #include "base/atomic.h"
@@ -198,7 +199,11 @@ struct node_arena {
 };
 
 struct pbuild {
+    /* The input: boxes, or (boxes NULL) the triangles whose boxes the
+     * set-up computes itself (accel_build_parallel_triangles). */
     const struct aabb *boxes;
+    const float *positions;
+    const uint32_t *indices;
     uint32_t n;
     struct bvh_build_params p;
     struct bvh_parallel_params pp;
@@ -390,11 +395,33 @@ static void setup_task(void *arg, int worker)
          * holds infinities of both signs: a false alarm, which only
          * costs the NaN checks of the four-stream histogram). */
         uint32_t nan = 0;
-        for (uint32_t i = begin; i < end; i++) {
-            struct build_ref *r = &b->refs[0][i];
-            build_ref_set(r, &b->boxes[i], i);
-            const vec4 cen = box_grow_ref(&lo, &hi, &clo, &chi, r);
-            nan |= vec4_ne_bits(cen, cen);
+        if (b->boxes) {
+            for (uint32_t i = begin; i < end; i++) {
+                struct build_ref *r = &b->refs[0][i];
+                build_ref_set(r, &b->boxes[i], i);
+                const vec4 cen = box_grow_ref(&lo, &hi, &clo, &chi, r);
+                nan |= vec4_ne_bits(cen, cen);
+            }
+        } else {
+            /* The box accel_triangle_boxes_pool would have stored
+             * (triangle_box.h), straight into the ref: the same floats,
+             * so the same refs and the same tree. */
+            for (uint32_t i = begin; i < end; i++) {
+                struct build_ref *r = &b->refs[0][i];
+#if defined(__SSE2__) && !defined(RT_NO_SIMD)
+                __m128 tlo, thi;
+                triangle_box4(b->positions, b->indices, i, &tlo, &thi);
+                float l4[4], h4[4];
+                _mm_storeu_ps(l4, tlo);
+                _mm_storeu_ps(h4, thi);
+                const struct aabb box = {{l4[0], l4[1], l4[2]}, {h4[0], h4[1], h4[2]}};
+#else
+                const struct aabb box = triangle_box(b->positions, b->indices, i);
+#endif
+                build_ref_set(r, &box, i);
+                const vec4 cen = box_grow_ref(&lo, &hi, &clo, &chi, r);
+                nan |= vec4_ne_bits(cen, cen);
+            }
         }
         if (nan & 7u)
             rt_atomic_store_relaxed(&b->nan_seen, 1);
@@ -1595,9 +1622,12 @@ static int build_subtrees(struct pbuild *b, struct bvh *out)
     return 0;
 }
 
-int accel_build_parallel_ex(struct bvh *out, const struct aabb *prim_boxes, uint32_t prim_count,
-                            const struct bvh_build_params *params,
-                            const struct bvh_parallel_params *parallel, struct rt_pool *pool)
+/* accel_build_parallel_ex on prim_boxes, or (prim_boxes NULL) on the
+ * triangles of positions and indices (accel_build_parallel_triangles). */
+static int build_parallel(struct bvh *out, const struct aabb *prim_boxes, const float *positions,
+                          const uint32_t *indices, uint32_t prim_count,
+                          const struct bvh_build_params *params,
+                          const struct bvh_parallel_params *parallel, struct rt_pool *pool)
 {
     struct pbuild b;
     memset(&b, 0, sizeof(b));
@@ -1614,15 +1644,28 @@ int accel_build_parallel_ex(struct bvh *out, const struct aabb *prim_boxes, uint
         b.subtree_max = PARALLEL_MIN_SUBTREE;
     /* One subtree: stage 2 alone, which is exactly the serial builder. */
     if (prim_count <= b.subtree_max) {
-        if (b.pp.subtree == BVH_SUBTREE_MEDIAN)
-            return accel_build_median(out, prim_boxes, prim_count, &b.p);
-        return accel_build(out, prim_boxes, prim_count, &b.p);
+        struct aabb *boxes = NULL;
+        if (!prim_boxes) {
+            boxes = accel_triangle_boxes_pool(positions, indices, prim_count, pool);
+            if (!boxes) {
+                memset(out, 0, sizeof(*out));
+                return -1;
+            }
+            prim_boxes = boxes;
+        }
+        const int rc = b.pp.subtree == BVH_SUBTREE_MEDIAN
+                           ? accel_build_median(out, prim_boxes, prim_count, &b.p)
+                           : accel_build(out, prim_boxes, prim_count, &b.p);
+        rt_free(boxes);
+        return rc;
     }
     memset(out, 0, sizeof(*out));
     /* 2n - 1 nodes must fit the 32-bit indices (as accel_build_alloc). */
     if (prim_count > (UINT32_MAX - 1) / 2 + 1)
         return -1;
     b.boxes = prim_boxes;
+    b.positions = positions;
+    b.indices = indices;
     b.n = prim_count;
     b.pool = pool;
     b.threads = (uint32_t)rt_pool_threads(pool);
@@ -1685,6 +1728,20 @@ out:
         rt_free(b.final_nodes);
     }
     return status;
+}
+
+int accel_build_parallel_ex(struct bvh *out, const struct aabb *prim_boxes, uint32_t prim_count,
+                            const struct bvh_build_params *params,
+                            const struct bvh_parallel_params *parallel, struct rt_pool *pool)
+{
+    return build_parallel(out, prim_boxes, NULL, NULL, prim_count, params, parallel, pool);
+}
+
+int accel_build_parallel_triangles(struct bvh *out, const float *positions,
+                                   const uint32_t *indices, uint32_t prim_count,
+                                   const struct bvh_build_params *params, struct rt_pool *pool)
+{
+    return build_parallel(out, NULL, positions, indices, prim_count, params, NULL, pool);
 }
 
 int accel_build_parallel(struct bvh *out, const struct aabb *prim_boxes, uint32_t prim_count,

@@ -69,15 +69,20 @@ struct scene_accel *scene_accel_rebuild(const struct scene_accel_geometry *geom,
     if (hook && hook->fn)
         hook->fn(hook->user);
     struct scene_accel *accel = rt_calloc(1, sizeof(*accel));
+    /* The parallel builder computes the triangles' boxes as it sets up
+     * its refs (no box array: fewer fresh pages a build). */
     struct aabb *boxes =
-        accel_triangle_boxes_pool(geom->positions, geom->indices, geom->tri_count, pool);
-    if (!accel || !boxes)
+        builder == SCENE_ACCEL_PARALLEL
+            ? NULL
+            : accel_triangle_boxes_pool(geom->positions, geom->indices, geom->tri_count, pool);
+    if (!accel || (builder != SCENE_ACCEL_PARALLEL && !boxes))
         goto fail;
     int status;
     if (builder == SCENE_ACCEL_MEDIAN)
         status = accel_build_median(&accel->bvh, boxes, geom->tri_count, params);
     else if (builder == SCENE_ACCEL_PARALLEL)
-        status = accel_build_parallel(&accel->bvh, boxes, geom->tri_count, params, pool);
+        status = accel_build_parallel_triangles(&accel->bvh, geom->positions, geom->indices,
+                                                geom->tri_count, params, pool);
     else
         status = accel_build(&accel->bvh, boxes, geom->tri_count, params);
     if (status || finish_layout(accel, geom, params, pool, old))
