@@ -102,7 +102,7 @@ static void check_triangles(const char *scene, const struct tg_mesh *m, uint32_t
     }
     for (int t = 0; t <= MAX_THREADS; t++) {
         struct bvh b;
-        if (accel_build_parallel_triangles(&b, m->pos, m->idx, count, NULL, pools[t])) {
+        if (accel_build_parallel_triangles(&b, m->pos, m->idx, count, NULL, pools[t], NULL)) {
             failures += !CHECKF(0, "%s: triangle build on %d threads failed", scene, t);
             continue;
         }

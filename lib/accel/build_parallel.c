@@ -216,6 +216,11 @@ struct pbuild {
 
     struct build_ref *refs[2];
     void *refs_block[2]; /* what refs[] were allocated as (rt_align64) */
+    /* With a spare asked for (accel_build_parallel_triangles) and a large
+     * build: refs[1] and the threads' arenas in one mapping (scratch),
+     * arena t at arena_base + t * arena_cap(b) nodes; NULL otherwise. */
+    struct rt_large_block scratch;
+    struct bvh_node *arena_base;
 
     /* Top nodes of stage 1: count 0 = inner (first = child pair), count
      * 1 = the root slot of a subtree. */
@@ -1175,6 +1180,20 @@ static void build_median_subtree(struct pbuild *b, struct subtree *s, struct bvh
         b->prim_index[s->begin + i] = build_ref_id(&refs[i]);
 }
 
+/*
+ * Bytes of refs[1] and the arenas from which they share one mapping that
+ * the caller's collapse takes over (accel_build_parallel_triangles'
+ * spare): 64 MiB, glibc's largest trim threshold.  A build that frees
+ * more than that at the top of the heap gets its next blocks as fresh
+ * pages anyway (build_subtree's comment; rtbench's bumpy: refs[1] and
+ * the arenas 30 and 21 MB zeroed by the kernel every build), and the
+ * wide layout is a fresh mapping every one-shot build (rt_malloc_large),
+ * so one mapping for both lets the layout's first pages be the ones the
+ * build already touched.  Smaller builds (the kitchen, the soup: 11 MB)
+ * keep their heap blocks, which come back warm from the last build.
+ */
+#define SCRATCH_SPARE_MIN ((uint64_t)64 << 20)
+
 /* Nodes per arena (struct node_arena): twice a thread's even share of
  * the refs, plus two of the largest subtrees for the unevenness of the
  * hand-out; a subtree that does not fit takes a block of its own. */
@@ -1209,7 +1228,10 @@ static int build_subtree(struct pbuild *b, struct subtree *s, struct node_arena 
     if (arena && !arena->tried) {
         arena->tried = 1;
         arena->cap = arena_cap(b);
-        arena->nodes = rt_alloc_array64(arena->cap, sizeof(*arena->nodes), &arena->block);
+        if (b->arena_base)
+            arena->nodes = b->arena_base + (size_t)(arena - b->arenas) * arena->cap;
+        else
+            arena->nodes = rt_alloc_array64(arena->cap, sizeof(*arena->nodes), &arena->block);
     }
     struct bvh_node *range = NULL;
     if (arena && arena->nodes && arena->cap - arena->used >= need) {
@@ -1637,8 +1659,11 @@ static int build_subtrees(struct pbuild *b, struct bvh *out)
 static int build_parallel(struct bvh *out, const struct aabb *prim_boxes, const float *positions,
                           const uint32_t *indices, uint32_t prim_count,
                           const struct bvh_build_params *params,
-                          const struct bvh_parallel_params *parallel, struct rt_pool *pool)
+                          const struct bvh_parallel_params *parallel, struct rt_pool *pool,
+                          struct rt_large_block *spare)
 {
+    if (spare)
+        memset(spare, 0, sizeof(*spare));
     struct pbuild b;
     memset(&b, 0, sizeof(b));
     accel_build_params_normalize(&b.p, params);
@@ -1692,7 +1717,22 @@ static int build_parallel(struct bvh *out, const struct aabb *prim_boxes, const 
     const uint64_t refs0_bytes = ref_bytes > node_bytes ? ref_bytes : node_bytes;
     if (refs0_bytes <= SIZE_MAX - 64)
         b.refs[0] = rt_alloc_array64((size_t)refs0_bytes, 1, &b.refs_block[0]);
-    b.refs[1] = rt_alloc_array64(prim_count, sizeof(struct build_ref), &b.refs_block[1]);
+    /* refs[1] and the arenas in one mapping for the caller's collapse
+     * (SCRATCH_SPARE_MIN); if the mapping fails, the usual blocks. */
+    const uint64_t refs1_bytes = (ref_bytes + 63) & ~(uint64_t)63;
+    const uint64_t scratch_bytes =
+        refs1_bytes + (uint64_t)b.threads * arena_cap(&b) * sizeof(struct bvh_node);
+    if (spare && scratch_bytes >= SCRATCH_SPARE_MIN && scratch_bytes <= SIZE_MAX / 4) {
+        char *map = rt_malloc_large((size_t)scratch_bytes, &b.scratch);
+        if (map && b.scratch.bytes) {
+            b.refs[1] = (struct build_ref *)(void *)map;
+            b.arena_base = (struct bvh_node *)(void *)(map + refs1_bytes);
+        } else if (map) {
+            rt_free_large(&b.scratch);
+        }
+    }
+    if (!b.refs[1])
+        b.refs[1] = rt_alloc_array64(prim_count, sizeof(struct build_ref), &b.refs_block[1]);
     plan_flat_chunks(&b, prim_count);
     b.chunk_box = rt_realloc_array(NULL, 2 * (size_t)b.chunk_count, sizeof(*b.chunk_box));
     b.top = reserve(NULL, &b.top_cap, 1, sizeof(*b.top));
@@ -1737,6 +1777,10 @@ out:
         bvh_release(out);
         rt_free(b.final_nodes);
     }
+    if (!status && spare)
+        *spare = b.scratch; /* nothing reads refs[1] or the arenas now */
+    else
+        rt_free_large(&b.scratch);
     return status;
 }
 
@@ -1744,14 +1788,15 @@ int accel_build_parallel_ex(struct bvh *out, const struct aabb *prim_boxes, uint
                             const struct bvh_build_params *params,
                             const struct bvh_parallel_params *parallel, struct rt_pool *pool)
 {
-    return build_parallel(out, prim_boxes, NULL, NULL, prim_count, params, parallel, pool);
+    return build_parallel(out, prim_boxes, NULL, NULL, prim_count, params, parallel, pool, NULL);
 }
 
 int accel_build_parallel_triangles(struct bvh *out, const float *positions,
                                    const uint32_t *indices, uint32_t prim_count,
-                                   const struct bvh_build_params *params, struct rt_pool *pool)
+                                   const struct bvh_build_params *params, struct rt_pool *pool,
+                                   struct rt_large_block *spare)
 {
-    return build_parallel(out, NULL, positions, indices, prim_count, params, NULL, pool);
+    return build_parallel(out, NULL, positions, indices, prim_count, params, NULL, pool, spare);
 }
 
 int accel_build_parallel(struct bvh *out, const struct aabb *prim_boxes, uint32_t prim_count,
