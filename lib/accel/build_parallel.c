@@ -217,10 +217,8 @@ struct pbuild {
     struct build_ref *refs[2];
     void *refs_block[2]; /* what refs[] were allocated as (rt_align64) */
     /* With a spare asked for (accel_build_parallel_triangles) and a large
-     * build: refs[1] and the threads' arenas in one mapping (scratch),
-     * arena t at arena_base + t * arena_cap(b) nodes; NULL otherwise. */
+     * build: refs[1]'s mapping (SCRATCH_SPARE_MIN), for the caller. */
     struct rt_large_block scratch;
-    struct bvh_node *arena_base;
 
     /* Top nodes of stage 1: count 0 = inner (first = child pair), count
      * 1 = the root slot of a subtree. */
@@ -1181,18 +1179,26 @@ static void build_median_subtree(struct pbuild *b, struct subtree *s, struct bvh
 }
 
 /*
- * Bytes of refs[1] and the arenas from which they share one mapping that
- * the caller's collapse takes over (accel_build_parallel_triangles'
- * spare): 64 MiB, glibc's largest trim threshold.  A build that frees
- * more than that at the top of the heap gets its next blocks as fresh
- * pages anyway (build_subtree's comment; rtbench's bumpy: refs[1] and
- * the arenas 30 and 21 MB zeroed by the kernel every build), and the
- * wide layout is a fresh mapping every one-shot build (rt_malloc_large),
- * so one mapping for both lets the layout's first pages be the ones the
- * build already touched.  Smaller builds (the kitchen, the soup: 11 MB)
- * keep their heap blocks, which come back warm from the last build.
+ * Bytes of refs[1] from which it is a mapping of three times its size
+ * (rt_malloc_large: 2 MB aligned, advised for huge pages) that the
+ * caller's collapse takes over (accel_build_parallel_triangles' spare),
+ * of which the partitions touch the first third.  A build that large
+ * (rtbench's bumpy, a million triangles: 32 MB) finds refs[1] fresh
+ * anyway (build_subtree's comment: it frees more than glibc's trim
+ * threshold; 7,800 faults of 4 KB in stage 1, measured), and the wide
+ * layout is a fresh mapping in every one-shot build (rt_malloc_large),
+ * so one mapping for both lets the layout's first 32 MB be pages the
+ * build already touched.  Three times: an 8-wide layout takes about 70
+ * bytes a triangle (bumpy's 66 MB) against refs[1]'s 32, and
+ * rt_malloc_large_reuse takes a spare of up to twice the layout; one that
+ * does not fit is freed by the caller and the layout maps its own, as
+ * before.  The arenas stay heap blocks: freed, they serve the gather's
+ * triangles warm (with them in the mapping too, the gather's 36 MB came
+ * fresh: 8,790 faults of 4 KB).  Smaller builds (the kitchen, the soup:
+ * 3.5 MB of refs) keep a heap block, which comes back warm from the last
+ * build.
  */
-#define SCRATCH_SPARE_MIN ((uint64_t)64 << 20)
+#define SCRATCH_SPARE_MIN ((uint64_t)16 << 20)
 
 /* Nodes per arena (struct node_arena): twice a thread's even share of
  * the refs, plus two of the largest subtrees for the unevenness of the
@@ -1228,10 +1234,7 @@ static int build_subtree(struct pbuild *b, struct subtree *s, struct node_arena 
     if (arena && !arena->tried) {
         arena->tried = 1;
         arena->cap = arena_cap(b);
-        if (b->arena_base)
-            arena->nodes = b->arena_base + (size_t)(arena - b->arenas) * arena->cap;
-        else
-            arena->nodes = rt_alloc_array64(arena->cap, sizeof(*arena->nodes), &arena->block);
+        arena->nodes = rt_alloc_array64(arena->cap, sizeof(*arena->nodes), &arena->block);
     }
     struct bvh_node *range = NULL;
     if (arena && arena->nodes && arena->cap - arena->used >= need) {
@@ -1717,16 +1720,14 @@ static int build_parallel(struct bvh *out, const struct aabb *prim_boxes, const 
     const uint64_t refs0_bytes = ref_bytes > node_bytes ? ref_bytes : node_bytes;
     if (refs0_bytes <= SIZE_MAX - 64)
         b.refs[0] = rt_alloc_array64((size_t)refs0_bytes, 1, &b.refs_block[0]);
-    /* refs[1] and the arenas in one mapping for the caller's collapse
-     * (SCRATCH_SPARE_MIN); if the mapping fails, the usual blocks. */
+    /* refs[1] in a mapping for the caller's collapse (SCRATCH_SPARE_MIN);
+     * if the mapping fails, the usual block. */
     const uint64_t refs1_bytes = (ref_bytes + 63) & ~(uint64_t)63;
-    const uint64_t scratch_bytes =
-        refs1_bytes + (uint64_t)b.threads * arena_cap(&b) * sizeof(struct bvh_node);
-    if (spare && scratch_bytes >= SCRATCH_SPARE_MIN && scratch_bytes <= SIZE_MAX / 4) {
+    const uint64_t scratch_bytes = 3 * refs1_bytes;
+    if (spare && refs1_bytes >= SCRATCH_SPARE_MIN && scratch_bytes <= SIZE_MAX / 4) {
         char *map = rt_malloc_large((size_t)scratch_bytes, &b.scratch);
         if (map && b.scratch.bytes) {
             b.refs[1] = (struct build_ref *)(void *)map;
-            b.arena_base = (struct bvh_node *)(void *)(map + refs1_bytes);
         } else if (map) {
             rt_free_large(&b.scratch);
         }
@@ -1778,7 +1779,7 @@ out:
         rt_free(b.final_nodes);
     }
     if (!status && spare)
-        *spare = b.scratch; /* nothing reads refs[1] or the arenas now */
+        *spare = b.scratch; /* nothing reads refs[1] now */
     else
         rt_free_large(&b.scratch);
     return status;
