@@ -33,6 +33,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 
 #include "base/pool.h"
 #include "base/timer.h"
@@ -54,11 +55,24 @@ const char *bench_embree_version(void)
     return RTC_VERSION_STRING;
 }
 
+/* Minor page faults of the whole process so far (every thread: ours and
+ * Embree's workers).  A build's difference counts the pages it touched
+ * for the first time, each one zeroed by the kernel: 4 KB each, or 2 MB
+ * where the kernel gave a transparent huge page (a process started with
+ * huge pages disabled, prctl PR_SET_THP_DISABLE, counts 4 KB pages only,
+ * so faults x 4 KB are then its fresh bytes). */
+static long minor_faults(void)
+{
+    struct rusage ru;
+    return getrusage(RUSAGE_SELF, &ru) == 0 ? ru.ru_minflt : 0;
+}
+
 /* A committed scene over the mesh; *commit_ms gets rtcCommitScene's time
  * on bench_clock_ms(threads), `threads` being the device's.  NULL on
  * failure. */
 static RTCScene embree_scene(RTCDevice device, const struct bench_mesh *mesh,
-                             enum RTCBuildQuality quality, int threads, double *commit_ms)
+                             enum RTCBuildQuality quality, int threads, double *commit_ms,
+                             long *commit_faults)
 {
     RTCScene scene = rtcNewScene(device);
     RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
@@ -83,9 +97,12 @@ static RTCScene embree_scene(RTCDevice device, const struct bench_mesh *mesh,
     geom = NULL;
     double cpu_start = bench_cpu_ms();
     double start = rt_now_ms();
+    long faults_start = minor_faults();
     double clock_start = bench_clock_ms(threads);
     rtcCommitScene(scene);
     *commit_ms = bench_clock_ms(threads) - clock_start;
+    if (commit_faults)
+        *commit_faults = minor_faults() - faults_start;
     bench_share_add(threads, rt_now_ms() - start, bench_cpu_ms() - cpu_start);
     if (rtcGetDeviceError(device) != RTC_ERROR_NONE)
         goto fail;
@@ -146,16 +163,31 @@ static const enum RTCBuildQuality build_qualities[BUILD_QUALITIES] = {
 static const char *const build_quality_names[BUILD_QUALITIES] = {"LOW", "MEDIUM", "HIGH"};
 static const char *const build_quality_keys[BUILD_QUALITIES] = {"low", "medium", "high"};
 
+/* One row of the build table's page-fault table: the medians of each
+ * path's minor faults per build (-1: path not run). */
+struct build_faults {
+    const char *mesh;
+    int threads;
+    double faults[1 + BUILD_QUALITIES];
+};
+
 /* Build times on `threads` threads: ours (serial binned SAH on one
  * thread, accel_build_parallel on pool otherwise) and Embree's qualities
  * on a device of that many threads, interleaved runs; --only picks the
- * paths (ours, low, medium, high). */
+ * paths (ours, low, medium, high).  *row_faults receives the medians of
+ * the minor page faults around the same timed calls. */
 static int embree_build_row(const struct bench_options *opts, RTCDevice device, int threads,
-                            struct rt_pool *pool, const struct bench_mesh *mesh)
+                            struct rt_pool *pool, const struct bench_mesh *mesh,
+                            struct build_faults *row_faults)
 {
-    double *times = calloc((size_t)(1 + BUILD_QUALITIES) * opts->runs, sizeof(*times));
+    row_faults->mesh = mesh->name;
+    row_faults->threads = threads;
+    for (int i = 0; i < 1 + BUILD_QUALITIES; i++)
+        row_faults->faults[i] = -1.0;
+    double *times = calloc((size_t)2 * (1 + BUILD_QUALITIES) * opts->runs, sizeof(*times));
     if (!times)
         return -1;
+    double *fault_runs = times + (size_t)(1 + BUILD_QUALITIES) * opts->runs;
     int run_path[1 + BUILD_QUALITIES];
     for (int p = 0; p < 1 + BUILD_QUALITIES; p++)
         run_path[p] = !opts->only ||
@@ -165,9 +197,11 @@ static int embree_build_row(const struct bench_options *opts, RTCDevice device, 
             struct bench_accel acc;
             double cpu_start = bench_cpu_ms();
             double start = rt_now_ms();
+            long faults_start = minor_faults();
             double clock_start = bench_clock_ms(threads);
             int rc = bench_accel_build_pool(&acc, mesh, NULL, threads > 1 ? pool : NULL);
             times[run] = bench_clock_ms(threads) - clock_start;
+            fault_runs[run] = (double)(minor_faults() - faults_start);
             bench_share_add(threads, rt_now_ms() - start, bench_cpu_ms() - cpu_start);
             if (rc) {
                 free(times);
@@ -179,19 +213,24 @@ static int embree_build_row(const struct bench_options *opts, RTCDevice device, 
             double ms;
             if (!run_path[1 + q])
                 continue;
-            RTCScene scene = embree_scene(device, mesh, build_qualities[q], threads, &ms);
+            long faults = 0;
+            RTCScene scene =
+                embree_scene(device, mesh, build_qualities[q], threads, &ms, &faults);
             if (!scene) {
                 free(times);
                 return -1;
             }
             rtcReleaseScene(scene);
             times[(1 + q) * opts->runs + run] = ms;
+            fault_runs[(1 + q) * opts->runs + run] = (double)faults;
         }
     }
     double med[1 + BUILD_QUALITIES];
     char cell[1 + BUILD_QUALITIES][24];
     char ratio[BUILD_QUALITIES][24];
     for (int i = 0; i < 1 + BUILD_QUALITIES; i++) {
+        row_faults->faults[i] =
+            run_path[i] ? bench_median(&fault_runs[i * opts->runs], opts->runs) : -1.0;
         med[i] = run_path[i] ? bench_median(&times[i * opts->runs], opts->runs) : 0.0;
         snprintf(cell[i], sizeof(cell[i]), run_path[i] ? "%.2f" : "-", med[i]);
     }
@@ -342,7 +381,7 @@ static int embree_trace_mesh(const struct bench_options *opts, RTCDevice device,
         goto out;
     for (int q = 0; q < QUALITIES; q++) {
         double ms;
-        if (!(scenes[q] = embree_scene(device, mesh, qualities[q], 1, &ms)))
+        if (!(scenes[q] = embree_scene(device, mesh, qualities[q], 1, &ms, NULL)))
             goto out;
     }
     uint32_t max_rays = sets[0].count > sets[1].count ? sets[0].count : sets[1].count;
@@ -455,7 +494,7 @@ static int embree_memory_row(RTCDevice device, int64_t *counter, const struct be
     for (int q = 0; q < QUALITIES; q++) {
         double ms;
         int64_t before = *counter;
-        RTCScene scene = embree_scene(device, mesh, qualities[q], 1, &ms);
+        RTCScene scene = embree_scene(device, mesh, qualities[q], 1, &ms, NULL);
         if (!scene)
             return -1;
         int64_t buffers = (int64_t)mesh->vertex_count * 12 + (int64_t)mesh->tri_count * 12;
@@ -518,6 +557,12 @@ int bench_embree_section(const struct bench_options *opts, struct bench_mesh *me
     report_table_header("mesh|triangles|threads|ours ms|Embree LOW ms|Embree MEDIUM ms|"
                         "Embree HIGH ms|ours/LOW|ours/MEDIUM|ours/HIGH");
     bench_share_reset();
+    struct build_faults *faults = calloc(2 * (size_t)mesh_count, sizeof(*faults));
+    int fault_rows = 0;
+    if (!faults) {
+        rtcReleaseDevice(device);
+        return -1;
+    }
     /* Every one-thread row before the "threads=2" device exists: Embree's
      * TBB thread limit is process-wide, so once a two-thread device is
      * created, a "threads=1" device's commits may run on two threads too
@@ -526,7 +571,7 @@ int bench_embree_section(const struct bench_options *opts, struct bench_mesh *me
     if (opts->threads != 2)
         for (int m = 0; m < mesh_count; m++) {
             report_progress("embree: %s: builds, 1 thread\n", meshes[m].name);
-            failed |= embree_build_row(opts, device, 1, NULL, &meshes[m]) != 0;
+            failed |= embree_build_row(opts, device, 1, NULL, &meshes[m], &faults[fault_rows++]) != 0;
         }
     if (opts->threads != 1) {
         RTCDevice device2 = rtcNewDevice("threads=2");
@@ -535,7 +580,9 @@ int bench_embree_section(const struct bench_options *opts, struct bench_mesh *me
             rtcSetDeviceErrorFunction(device2, bench_embree_error, NULL);
             for (int m = 0; m < mesh_count; m++) {
                 report_progress("embree: %s: builds, 2 threads\n", meshes[m].name);
-                failed |= embree_build_row(opts, device2, 2, pool2, &meshes[m]) != 0;
+                failed |=
+                    embree_build_row(opts, device2, 2, pool2, &meshes[m], &faults[fault_rows++]) !=
+                    0;
             }
         } else {
             failed = 1;
@@ -544,6 +591,22 @@ int bench_embree_section(const struct bench_options *opts, struct bench_mesh *me
             rtcReleaseDevice(device2);
         rt_pool_destroy(pool2);
     }
+    report_printf("\nMinor page faults per build (median of the runs above; getrusage "
+                  "ru_minflt of the process around the same timed call, every thread): each "
+                  "is a page the build touched for the first time and the kernel zeroed, 4 KB, "
+                  "or 2 MB where it gave a transparent huge page (run rtbench with huge pages "
+                  "disabled, prctl PR_SET_THP_DISABLE, to read faults x 4 KB as fresh "
+                  "bytes).\n\n");
+    report_table_header("mesh|threads|ours|Embree LOW|Embree MEDIUM|Embree HIGH");
+    for (int r = 0; r < fault_rows; r++) {
+        char cell[1 + BUILD_QUALITIES][24];
+        for (int i = 0; i < 1 + BUILD_QUALITIES; i++)
+            snprintf(cell[i], sizeof(cell[i]), faults[r].faults[i] >= 0 ? "%.0f" : "-",
+                     faults[r].faults[i]);
+        report_row("%s|%d|%s|%s|%s|%s", faults[r].mesh, faults[r].threads, cell[0], cell[1],
+                   cell[2], cell[3]);
+    }
+    free(faults);
 
     /* --only ...,build: the build table alone (A/B runs of a builder). */
     if (opts->only && bench_strategy_selected(opts->only, "build")) {
@@ -659,7 +722,7 @@ void *bench_embree_packets_new(const struct bench_mesh *mesh)
         return NULL;
     }
     rtcSetDeviceErrorFunction(e->device, bench_embree_error, NULL);
-    e->scene = embree_scene(e->device, mesh, RTC_BUILD_QUALITY_MEDIUM, 1, &ms);
+    e->scene = embree_scene(e->device, mesh, RTC_BUILD_QUALITY_MEDIUM, 1, &ms, NULL);
     if (!e->scene) {
         rtcReleaseDevice(e->device);
         free(e);

@@ -80,23 +80,34 @@ int bench_accel_build_pool(struct bench_accel *acc, const struct bench_mesh *mes
                            const struct bvh_build_params *params, struct rt_pool *pool)
 {
     memset(acc, 0, sizeof(*acc));
-    struct aabb *boxes =
-        accel_triangle_boxes_pool(mesh->positions, mesh->indices, mesh->tri_count, pool);
-    if (!boxes)
-        return -1;
-    int rc = pool ? accel_build_parallel(&acc->bvh, boxes, mesh->tri_count, params, pool)
-                  : accel_build(&acc->bvh, boxes, mesh->tri_count, params);
-    rt_free(boxes);
+    int rc;
+    /* A large parallel build's scratch mapping, for the collapse. */
+    struct rt_large_block spare = {0};
+    if (pool) {
+        /* The parallel builder takes the triangles (as the library's
+         * objects do, scene/accel.c): no box array. */
+        rc = accel_build_parallel_triangles(&acc->bvh, mesh->positions, mesh->indices,
+                                            mesh->tri_count, params, pool, &spare);
+    } else {
+        struct aabb *boxes =
+            accel_triangle_boxes_pool(mesh->positions, mesh->indices, mesh->tri_count, NULL);
+        if (!boxes)
+            return -1;
+        rc = accel_build(&acc->bvh, boxes, mesh->tri_count, params);
+        rt_free(boxes);
+    }
     if (rc)
         return -1;
     acc->tri = accel_gather_triangles_pool(&acc->bvh, mesh->positions, mesh->indices, pool);
-    if (!acc->tri ||
-        accel_collapse_wide_pool(&acc->wide, &acc->bvh, acc->tri, bench_layout_width(), pool)) {
+    if (!acc->tri || accel_collapse_wide_reuse(&acc->wide, &acc->bvh, acc->tri,
+                                               bench_layout_width(), pool, &spare)) {
+        rt_free_large(&spare);
         rt_free(acc->tri);
         bvh_release(&acc->bvh);
         memset(acc, 0, sizeof(*acc));
         return -1;
     }
+    rt_free_large(&spare); /* zeroed when the layout took it */
     return 0;
 }
 

@@ -87,6 +87,34 @@ static void check_builds(const char *scene, const struct tg_mesh *m, struct rt_p
     free(boxes);
 }
 
+/* accel_build_parallel_triangles must give accel_build_parallel's tree
+ * on accel_triangle_boxes_pool's boxes, bit for bit, on every pool (also
+ * for a mesh small enough for the serial fallback: `count` triangles). */
+static void check_triangles(const char *scene, const struct tg_mesh *m, uint32_t count,
+                            struct rt_pool **pools)
+{
+    struct aabb *boxes = accel_triangle_boxes_pool(m->pos, m->idx, count, NULL);
+    struct bvh ref;
+    if (!boxes || accel_build_parallel(&ref, boxes, count, NULL, NULL)) {
+        failures += !CHECKF(0, "%s: boxes or build failed", scene);
+        rt_free(boxes);
+        return;
+    }
+    for (int t = 0; t <= MAX_THREADS; t++) {
+        struct bvh b;
+        if (accel_build_parallel_triangles(&b, m->pos, m->idx, count, NULL, pools[t], NULL)) {
+            failures += !CHECKF(0, "%s: triangle build on %d threads failed", scene, t);
+            continue;
+        }
+        failures += !CHECKF(bvh_same_tree(&b, &ref),
+                            "%s (%u triangles): the triangle build on %d threads is another tree",
+                            scene, count, t);
+        bvh_release(&b);
+    }
+    bvh_release(&ref);
+    rt_free(boxes);
+}
+
 static void check_refits(const char *scene, struct tg_mesh *m, struct rt_pool **pools)
 {
     struct aabb *boxes = tg_boxes(m);
@@ -210,6 +238,9 @@ int main(void)
     tg_cube_sphere(&sphere, 50, 1, 1.0, origin);
     check_builds("soup", &soup, pools);
     check_builds("sphere", &sphere, pools);
+    check_triangles("soup", &soup, soup.tri_count, pools);
+    check_triangles("sphere", &sphere, sphere.tri_count, pools);
+    check_triangles("soup", &soup, 100, pools);
     check_refits("soup", &soup, pools);
     check_refits("sphere", &sphere, pools);
     check_concurrent(&sphere);

@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "accel/build_internal.h"
+#include "accel/triangle_box.h"
 #include "base/alloc.h"
 #include "base/pool.h"
 
@@ -167,38 +168,15 @@ struct boxes_job {
     struct aabb *boxes;
 };
 
-#if defined(__SSE2__) && !defined(RT_NO_SIMD)
-/* lo and hi grown by the point p (lane 3 unused) as aabb_grow_point grows
- * them, bit for bit: aabb_fminf(x, y) is x < y ? x : y unless y is NaN
- * (then x) or x is; x here never is (the box starts at +-inf, and
- * every step keeps a non-NaN x or takes a non-NaN y), so it is minps(x,
- * y) (x < y ? x : y, y on equal zeros, as aabb_fminf) with the lanes
- * where y is NaN kept, and likewise for the maximum. */
-static inline void grow_point4(__m128 *lo, __m128 *hi, const float p[3])
-{
-    const __m128 y = _mm_setr_ps(p[0], p[1], p[2], 0.0f);
-    const __m128 number = _mm_cmpord_ps(y, y);
-    *lo = _mm_or_ps(_mm_and_ps(number, _mm_min_ps(*lo, y)), _mm_andnot_ps(number, *lo));
-    *hi = _mm_or_ps(_mm_and_ps(number, _mm_max_ps(*hi, y)), _mm_andnot_ps(number, *hi));
-}
-#endif
-
-/* The boxes of triangles [begin, end): the same floats as aabb_empty grown
- * by the three corners with aabb_grow_point (the portable form below).
- * The SSE2 form does the three axes at once: 77 instructions a triangle
- * instead of 114 (the scalar compares and blends of six
- * aabb_fminf/aabb_fmaxf per corner; those were 5 % of a build of 880
- * triangles). */
+/* The boxes of triangles [begin, end) (triangle_box.h: the SSE2 form
+ * where there is one, the same floats as the portable form). */
 static void triangle_boxes(void *arg, uint32_t begin, uint32_t end)
 {
     const struct boxes_job *b = arg;
 #if defined(__SSE2__) && !defined(RT_NO_SIMD)
     for (uint32_t j = begin; j < end; j++) {
-        const uint32_t *vi = &b->indices[3 * (size_t)j];
-        __m128 lo = _mm_set1_ps(INFINITY);
-        __m128 hi = _mm_set1_ps(-INFINITY);
-        for (int k = 0; k < 3; k++)
-            grow_point4(&lo, &hi, &b->positions[3 * (size_t)vi[k]]);
+        __m128 lo, hi;
+        triangle_box4(b->positions, b->indices, j, &lo, &hi);
         /* min xyz and max x in one store, max yz in a second: the box is
          * 24 bytes, and a 16-byte store of max would reach the next. */
         const __m128 t = _mm_shuffle_ps(lo, hi, _MM_SHUFFLE(0, 0, 2, 2)); /* lo2 lo2 hi0 hi0 */
@@ -207,11 +185,8 @@ static void triangle_boxes(void *arg, uint32_t begin, uint32_t end)
         _mm_storel_pi((__m64 *)(void *)(dst + 4), _mm_shuffle_ps(hi, hi, _MM_SHUFFLE(3, 3, 2, 1)));
     }
 #else
-    for (uint32_t j = begin; j < end; j++) {
-        b->boxes[j] = aabb_empty();
-        for (int k = 0; k < 3; k++)
-            aabb_grow_point(&b->boxes[j], &b->positions[3 * (size_t)b->indices[3 * (size_t)j + k]]);
-    }
+    for (uint32_t j = begin; j < end; j++)
+        b->boxes[j] = triangle_box(b->positions, b->indices, j);
 #endif
 }
 

@@ -54,6 +54,7 @@
 #include <string.h>
 
 #include "accel/build_internal.h"
+#include "accel/triangle_box.h"
 #include "accel/vec4.h"
 #include "base/alloc.h"
 #include "base/atomic.h"
@@ -198,7 +199,11 @@ struct node_arena {
 };
 
 struct pbuild {
+    /* The input: boxes, or (boxes NULL) the triangles whose boxes the
+     * set-up computes itself (accel_build_parallel_triangles). */
     const struct aabb *boxes;
+    const float *positions;
+    const uint32_t *indices;
     uint32_t n;
     struct bvh_build_params p;
     struct bvh_parallel_params pp;
@@ -211,6 +216,9 @@ struct pbuild {
 
     struct build_ref *refs[2];
     void *refs_block[2]; /* what refs[] were allocated as (rt_align64) */
+    /* With a spare asked for (accel_build_parallel_triangles) and a large
+     * build: refs[1]'s mapping (SCRATCH_SPARE_MIN), for the caller. */
+    struct rt_large_block scratch;
 
     /* Top nodes of stage 1: count 0 = inner (first = child pair), count
      * 1 = the root slot of a subtree. */
@@ -390,11 +398,43 @@ static void setup_task(void *arg, int worker)
          * holds infinities of both signs: a false alarm, which only
          * costs the NaN checks of the four-stream histogram). */
         uint32_t nan = 0;
-        for (uint32_t i = begin; i < end; i++) {
-            struct build_ref *r = &b->refs[0][i];
-            build_ref_set(r, &b->boxes[i], i);
-            const vec4 cen = box_grow_ref(&lo, &hi, &clo, &chi, r);
-            nan |= vec4_ne_bits(cen, cen);
+        if (b->boxes) {
+            for (uint32_t i = begin; i < end; i++) {
+                struct build_ref *r = &b->refs[0][i];
+                build_ref_set(r, &b->boxes[i], i);
+                const vec4 cen = box_grow_ref(&lo, &hi, &clo, &chi, r);
+                nan |= vec4_ne_bits(cen, cen);
+            }
+        } else {
+            /* The box accel_triangle_boxes_pool would have stored
+             * (triangle_box.h), straight into the ref: the same floats,
+             * so the same refs and the same tree. */
+            for (uint32_t i = begin; i < end; i++) {
+                struct build_ref *r = &b->refs[0][i];
+#if defined(__SSE2__) && !defined(RT_NO_SIMD)
+                /* The ref build_ref_set writes (lo xyz and the id's bits,
+                 * hi xyz and +0), kept in registers for the bounds:
+                 * box_grow_ref's loads, right after the stores, would
+                 * read a 16-byte lane from a 16-byte and a 4-byte store. */
+                __m128 tlo, thi;
+                triangle_box4(b->positions, b->indices, i, &tlo, &thi);
+                const vec4 l = vec4_xyz0(tlo);
+                const vec4 h = vec4_xyz0(thi);
+                const __m128 id = _mm_castsi128_ps(_mm_slli_si128(_mm_cvtsi32_si128((int)i), 12));
+                _mm_storeu_ps(r->lo, _mm_or_ps(l, id));
+                _mm_storeu_ps(r->hi, h);
+                const vec4 cen = vec4_add(l, h);
+                lo = vec4_min(lo, l);
+                hi = vec4_max(hi, h);
+                clo = vec4_min(clo, cen);
+                chi = vec4_max(chi, cen);
+#else
+                const struct aabb box = triangle_box(b->positions, b->indices, i);
+                build_ref_set(r, &box, i);
+                const vec4 cen = box_grow_ref(&lo, &hi, &clo, &chi, r);
+#endif
+                nan |= vec4_ne_bits(cen, cen);
+            }
         }
         if (nan & 7u)
             rt_atomic_store_relaxed(&b->nan_seen, 1);
@@ -1138,6 +1178,28 @@ static void build_median_subtree(struct pbuild *b, struct subtree *s, struct bvh
         b->prim_index[s->begin + i] = build_ref_id(&refs[i]);
 }
 
+/*
+ * Bytes of refs[1] from which it is a mapping of three times its size
+ * (rt_malloc_large: 2 MB aligned, advised for huge pages) that the
+ * caller's collapse takes over (accel_build_parallel_triangles' spare),
+ * of which the partitions touch the first third.  A build that large
+ * (rtbench's bumpy, a million triangles: 32 MB) finds refs[1] fresh
+ * anyway (build_subtree's comment: it frees more than glibc's trim
+ * threshold; 7,800 faults of 4 KB in stage 1, measured), and the wide
+ * layout is a fresh mapping in every one-shot build (rt_malloc_large),
+ * so one mapping for both lets the layout's first 32 MB be pages the
+ * build already touched.  Three times: an 8-wide layout takes about 70
+ * bytes a triangle (bumpy's 66 MB) against refs[1]'s 32, and
+ * rt_malloc_large_reuse takes a spare of up to twice the layout; one that
+ * does not fit is freed by the caller and the layout maps its own, as
+ * before.  The arenas stay heap blocks: freed, they serve the gather's
+ * triangles warm (with them in the mapping too, the gather's 36 MB came
+ * fresh: 8,790 faults of 4 KB).  Smaller builds (the kitchen, the soup:
+ * 3.5 MB of refs) keep a heap block, which comes back warm from the last
+ * build.
+ */
+#define SCRATCH_SPARE_MIN ((uint64_t)16 << 20)
+
 /* Nodes per arena (struct node_arena): twice a thread's even share of
  * the refs, plus two of the largest subtrees for the unevenness of the
  * hand-out; a subtree that does not fit takes a block of its own. */
@@ -1595,10 +1657,16 @@ static int build_subtrees(struct pbuild *b, struct bvh *out)
     return 0;
 }
 
-int accel_build_parallel_ex(struct bvh *out, const struct aabb *prim_boxes, uint32_t prim_count,
-                            const struct bvh_build_params *params,
-                            const struct bvh_parallel_params *parallel, struct rt_pool *pool)
+/* accel_build_parallel_ex on prim_boxes, or (prim_boxes NULL) on the
+ * triangles of positions and indices (accel_build_parallel_triangles). */
+static int build_parallel(struct bvh *out, const struct aabb *prim_boxes, const float *positions,
+                          const uint32_t *indices, uint32_t prim_count,
+                          const struct bvh_build_params *params,
+                          const struct bvh_parallel_params *parallel, struct rt_pool *pool,
+                          struct rt_large_block *spare)
 {
+    if (spare)
+        memset(spare, 0, sizeof(*spare));
     struct pbuild b;
     memset(&b, 0, sizeof(b));
     accel_build_params_normalize(&b.p, params);
@@ -1614,15 +1682,28 @@ int accel_build_parallel_ex(struct bvh *out, const struct aabb *prim_boxes, uint
         b.subtree_max = PARALLEL_MIN_SUBTREE;
     /* One subtree: stage 2 alone, which is exactly the serial builder. */
     if (prim_count <= b.subtree_max) {
-        if (b.pp.subtree == BVH_SUBTREE_MEDIAN)
-            return accel_build_median(out, prim_boxes, prim_count, &b.p);
-        return accel_build(out, prim_boxes, prim_count, &b.p);
+        struct aabb *boxes = NULL;
+        if (!prim_boxes) {
+            boxes = accel_triangle_boxes_pool(positions, indices, prim_count, pool);
+            if (!boxes) {
+                memset(out, 0, sizeof(*out));
+                return -1;
+            }
+            prim_boxes = boxes;
+        }
+        const int rc = b.pp.subtree == BVH_SUBTREE_MEDIAN
+                           ? accel_build_median(out, prim_boxes, prim_count, &b.p)
+                           : accel_build(out, prim_boxes, prim_count, &b.p);
+        rt_free(boxes);
+        return rc;
     }
     memset(out, 0, sizeof(*out));
     /* 2n - 1 nodes must fit the 32-bit indices (as accel_build_alloc). */
     if (prim_count > (UINT32_MAX - 1) / 2 + 1)
         return -1;
     b.boxes = prim_boxes;
+    b.positions = positions;
+    b.indices = indices;
     b.n = prim_count;
     b.pool = pool;
     b.threads = (uint32_t)rt_pool_threads(pool);
@@ -1639,7 +1720,20 @@ int accel_build_parallel_ex(struct bvh *out, const struct aabb *prim_boxes, uint
     const uint64_t refs0_bytes = ref_bytes > node_bytes ? ref_bytes : node_bytes;
     if (refs0_bytes <= SIZE_MAX - 64)
         b.refs[0] = rt_alloc_array64((size_t)refs0_bytes, 1, &b.refs_block[0]);
-    b.refs[1] = rt_alloc_array64(prim_count, sizeof(struct build_ref), &b.refs_block[1]);
+    /* refs[1] in a mapping for the caller's collapse (SCRATCH_SPARE_MIN);
+     * if the mapping fails, the usual block. */
+    const uint64_t refs1_bytes = (ref_bytes + 63) & ~(uint64_t)63;
+    const uint64_t scratch_bytes = 3 * refs1_bytes;
+    if (spare && refs1_bytes >= SCRATCH_SPARE_MIN && scratch_bytes <= SIZE_MAX / 4) {
+        char *map = rt_malloc_large((size_t)scratch_bytes, &b.scratch);
+        if (map && b.scratch.bytes) {
+            b.refs[1] = (struct build_ref *)(void *)map;
+        } else if (map) {
+            rt_free_large(&b.scratch);
+        }
+    }
+    if (!b.refs[1])
+        b.refs[1] = rt_alloc_array64(prim_count, sizeof(struct build_ref), &b.refs_block[1]);
     plan_flat_chunks(&b, prim_count);
     b.chunk_box = rt_realloc_array(NULL, 2 * (size_t)b.chunk_count, sizeof(*b.chunk_box));
     b.top = reserve(NULL, &b.top_cap, 1, sizeof(*b.top));
@@ -1684,7 +1778,26 @@ out:
         bvh_release(out);
         rt_free(b.final_nodes);
     }
+    if (!status && spare)
+        *spare = b.scratch; /* nothing reads refs[1] now */
+    else
+        rt_free_large(&b.scratch);
     return status;
+}
+
+int accel_build_parallel_ex(struct bvh *out, const struct aabb *prim_boxes, uint32_t prim_count,
+                            const struct bvh_build_params *params,
+                            const struct bvh_parallel_params *parallel, struct rt_pool *pool)
+{
+    return build_parallel(out, prim_boxes, NULL, NULL, prim_count, params, parallel, pool, NULL);
+}
+
+int accel_build_parallel_triangles(struct bvh *out, const float *positions,
+                                   const uint32_t *indices, uint32_t prim_count,
+                                   const struct bvh_build_params *params, struct rt_pool *pool,
+                                   struct rt_large_block *spare)
+{
+    return build_parallel(out, NULL, positions, indices, prim_count, params, NULL, pool, spare);
 }
 
 int accel_build_parallel(struct bvh *out, const struct aabb *prim_boxes, uint32_t prim_count,

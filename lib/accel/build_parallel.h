@@ -21,6 +21,7 @@
 
 #include "accel/build_median.h"
 #include "accel/bvh_build.h"
+#include "base/alloc.h"
 #include "base/pool.h"
 
 /* Stage 1 (Wald, Ize and Parker (2008) sec. 5, "Coarse Scene Partitioning"). */
@@ -73,6 +74,23 @@ void bvh_parallel_params_default(struct bvh_parallel_params *params);
 int accel_build_parallel_ex(struct bvh *out, const struct aabb *prim_boxes, uint32_t prim_count,
                             const struct bvh_build_params *params,
                             const struct bvh_parallel_params *parallel, struct rt_pool *pool);
+
+/* accel_build_parallel_ex with the default combination, SAH+SAH, on the
+ * boxes of triangles 0..prim_count-1 (vertex indices indices[3j..3j+2]
+ * into positions, xyz per vertex; not checked), which the set-up computes
+ * as it writes its refs: the tree of accel_build_parallel on
+ * accel_triangle_boxes_pool's boxes, bit for bit, without the box array
+ * (a million triangles: 24 MB less written, read and, in a fresh block,
+ * zeroed by the kernel a build).  Same contract and return values.
+ * spare (may be NULL) receives, on success, the mapping in which a large
+ * build (build_parallel.c, SCRATCH_SPARE_MIN) kept its scratch, pages
+ * already in memory, for accel_collapse_wide_reuse to write the wide
+ * layout into; the caller frees it with rt_free_large whether taken or
+ * not (a zeroed handle otherwise, and on failure). */
+int accel_build_parallel_triangles(struct bvh *out, const float *positions,
+                                   const uint32_t *indices, uint32_t prim_count,
+                                   const struct bvh_build_params *params, struct rt_pool *pool,
+                                   struct rt_large_block *spare);
 
 /* accel_build_parallel_ex with the default combination, SAH+SAH. */
 int accel_build_parallel(struct bvh *out, const struct aabb *prim_boxes, uint32_t prim_count,

@@ -1092,6 +1092,11 @@ static int collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *t
     out->source = source;
     out->packet_slot = packet_slot;
     out->raw = raw;
+    /* A taken block may be larger than the layout and written past it
+     * (a parallel build's refs, accel_build_parallel_triangles): pages
+     * the layout would otherwise hold for its lifetime. */
+    if (taken)
+        rt_large_release_tail(&raw, base, node_bytes + (size_t)packets * sizeof(struct tri4_packet));
     return 0;
 fail:
     release_items(items, item_count);

@@ -188,6 +188,26 @@ void *rt_malloc_large_reuse(size_t size, struct rt_large_block *handle,
     return rt_malloc_large(size, handle);
 }
 
+void rt_large_release_tail(const struct rt_large_block *handle, const void *p, size_t used)
+{
+#if defined(__linux__) && defined(MADV_HUGEPAGE) && defined(MAP_ANONYMOUS)
+    if (!handle->bytes)
+        return;
+    const uintptr_t page = RT_ALLOC_HUGE_PAGE;
+    const uintptr_t end = (uintptr_t)handle->base + handle->bytes;
+    if ((uintptr_t)p < (uintptr_t)handle->base || (uintptr_t)p > end ||
+        used > end - (uintptr_t)p)
+        return;
+    const uintptr_t from = ((uintptr_t)p + used + page - 1) & ~(page - 1);
+    if (from < end)
+        (void)madvise((void *)from, (size_t)(end - from), MADV_DONTNEED);
+#else
+    (void)handle;
+    (void)p;
+    (void)used;
+#endif
+}
+
 #if defined(RT_ALLOC_FAULT_INJECTION)
 void rt_alloc_fail_after(long n)
 {

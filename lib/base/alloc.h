@@ -100,6 +100,16 @@ void rt_free_large(struct rt_large_block *handle);
 void *rt_malloc_large_reuse(size_t size, struct rt_large_block *handle,
                             struct rt_large_block *spare);
 
+/* Gives the pages of a block of rt_malloc_large back to the system past
+ * the first `used` bytes from p (the address rt_malloc_large or
+ * rt_malloc_large_reuse returned): the whole 2 MB pages after them, which
+ * read as zeros if touched again (Linux madvise MADV_DONTNEED; nothing
+ * for an rt_malloc block or elsewhere).  The mapping keeps its length.
+ * For a block taken over from a larger one whose tail was written (a
+ * parallel build's scratch, accel_build_parallel_triangles): the layout
+ * does not hold those pages for its lifetime. */
+void rt_large_release_tail(const struct rt_large_block *handle, const void *p, size_t used);
+
 #if defined(RT_ALLOC_FAULT_INJECTION)
 /*
  * Fault injection, in the test-only build of this file only: the CMake

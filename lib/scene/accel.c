@@ -23,7 +23,7 @@
  * released (accel_collapse_wide_reuse). */
 static int finish_layout(struct scene_accel *accel, const struct scene_accel_geometry *geom,
                          const struct bvh_build_params *params, struct rt_pool *pool,
-                         struct scene_accel *old)
+                         struct scene_accel *old, struct rt_large_block *scratch)
 {
     float *tri = accel_gather_triangles_pool(&accel->bvh, geom->positions, geom->indices, pool);
     if (!tri)
@@ -32,6 +32,11 @@ static int finish_layout(struct scene_accel *accel, const struct scene_accel_geo
     const uint32_t width = params->wide_layout == 8 ? 8u : 4u;
     double start = rt_now_ms();
     struct rt_large_block *spare = old ? &old->wide.raw : &accel->wide.raw;
+    /* No layout block to reuse (a first build): the build's scratch
+     * mapping, if it left one (accel_build_parallel_triangles), whose
+     * pages it touched already; the caller frees it if not taken. */
+    if (!spare->bytes && scratch && scratch->bytes)
+        spare = scratch;
     if (params->wide_layout &&
         accel_collapse_wide_reuse(&wide, &accel->bvh, tri, width, pool, spare)) {
         /* The tree may have changed under the old wide layout
@@ -69,25 +74,33 @@ struct scene_accel *scene_accel_rebuild(const struct scene_accel_geometry *geom,
     if (hook && hook->fn)
         hook->fn(hook->user);
     struct scene_accel *accel = rt_calloc(1, sizeof(*accel));
+    struct rt_large_block scratch = {0};
+    /* The parallel builder computes the triangles' boxes as it sets up
+     * its refs (no box array: fewer fresh pages a build). */
     struct aabb *boxes =
-        accel_triangle_boxes_pool(geom->positions, geom->indices, geom->tri_count, pool);
-    if (!accel || !boxes)
+        builder == SCENE_ACCEL_PARALLEL
+            ? NULL
+            : accel_triangle_boxes_pool(geom->positions, geom->indices, geom->tri_count, pool);
+    if (!accel || (builder != SCENE_ACCEL_PARALLEL && !boxes))
         goto fail;
     int status;
     if (builder == SCENE_ACCEL_MEDIAN)
         status = accel_build_median(&accel->bvh, boxes, geom->tri_count, params);
     else if (builder == SCENE_ACCEL_PARALLEL)
-        status = accel_build_parallel(&accel->bvh, boxes, geom->tri_count, params, pool);
+        status = accel_build_parallel_triangles(&accel->bvh, geom->positions, geom->indices,
+                                                geom->tri_count, params, pool, &scratch);
     else
         status = accel_build(&accel->bvh, boxes, geom->tri_count, params);
-    if (status || finish_layout(accel, geom, params, pool, old))
+    if (status || finish_layout(accel, geom, params, pool, old, &scratch))
         goto fail;
+    rt_free_large(&scratch);
     rt_free(boxes);
     accel->built_sah_cost = accel->sah_cost;
     accel->build_ms = rt_now_ms() - start;
     accel->build_cost_ms = rt_pool_work_ms(pool) - work;
     return accel;
 fail:
+    rt_free_large(&scratch);
     rt_free(boxes);
     scene_accel_release(accel);
     return NULL;
@@ -131,7 +144,7 @@ int scene_accel_restructure(struct scene_accel *accel, const struct scene_accel_
     if (status)
         return -1;
     /* Restructuring moves primitives between leaves: regather. */
-    return finish_layout(accel, geom, params, NULL, NULL);
+    return finish_layout(accel, geom, params, NULL, NULL, NULL);
 }
 
 void scene_accel_install(struct scene_object *object, struct scene_accel *fresh)
