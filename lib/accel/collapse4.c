@@ -487,22 +487,6 @@ static void write_node8(struct bvh8_node *w, const struct bvh *bvh, const struct
     }
 }
 
-/* Lane `lane`'s finish constants (bvh4_layout.h: n and proper_size)
- * from its coordinates as stored: isect_triangle_doubles, the finish's
- * own function, so the same doubles bit for bit; NaN and -inf for a
- * zero-area lane's NaNs, which no ray reaches the finish with. */
-static void set_lane_constants(struct tri4_packet *p, uint32_t lane)
-{
-    struct isect_tri_doubles g;
-    isect_triangle_doubles(p->v[0][0][lane], p->v[0][1][lane], p->v[0][2][lane],
-                           p->v[1][0][lane], p->v[1][1][lane], p->v[1][2][lane],
-                           p->v[2][0][lane], p->v[2][1][lane], p->v[2][2][lane], &g);
-    p->n[lane][0] = g.nx;
-    p->n[lane][1] = g.ny;
-    p->n[lane][2] = g.nz;
-    p->proper_size[lane] = isect_proper_size_bound(g.n2, g.lmax);
-}
-
 void accel_set_packet_lane(struct tri4_packet *p, uint32_t lane, const float v[9])
 {
     /* A zero-area triangle (isect_triangle_zero_area: the finish's own
@@ -514,7 +498,6 @@ void accel_set_packet_lane(struct tri4_packet *p, uint32_t lane, const float v[9
         for (int k = 0; k < 3; k++)
             p->v[j][k][lane] = zero ? NAN : v[3 * j + k];
     }
-    set_lane_constants(p, lane);
 }
 
 #if defined(__AVX2__) && !defined(RT_NO_SIMD)
@@ -615,10 +598,6 @@ static void fill_packet(struct tri4_packet *p, const float *tri, const uint32_t 
         for (uint32_t l = 0; l < 4; l++)
             p->prim[l] = prim_index[slot + (l < n ? l : n - 1)];
     }
-    /* The finish's constants from the lanes as stored (a repeated lane
-     * gets its triangle's again). */
-    for (uint32_t l = 0; l < 4; l++)
-        set_lane_constants(p, l);
 #else
     for (uint32_t l = 0; l < n; l++) {
         accel_set_packet_lane(p, l, &tri[9 * (size_t)(slot + l)]);
@@ -634,9 +613,6 @@ static void fill_packet(struct tri4_packet *p, const float *tri, const uint32_t 
         }
         if (prim_index)
             p->prim[l] = p->prim[n - 1];
-        p->proper_size[l] = p->proper_size[n - 1];
-        for (int k = 0; k < 3; k++)
-            p->n[l][k] = p->n[n - 1][k];
     }
 #endif
 }

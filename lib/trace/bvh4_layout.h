@@ -40,7 +40,7 @@
  *   byte 232..255  order[8][3]  per octant the lanes front to back,
  *                  3 bits each in 24 bits, little-endian
  *
- * Triangle packet (272 bytes, 16-byte aligned; Embree's Triangle4 is 176:
+ * Triangle packet (160 bytes, 32-byte aligned; Embree's Triangle4 is 176:
  * v0, e1, e2 and geometry and primitive ids of four triangles): the
  * vertices themselves rather than edges, because the watertight test of
  * Woop, Benthin and Wald 2013 subtracts the origin from each vertex, and
@@ -54,15 +54,6 @@
  *                  lane it keeps is known to have an area and the
  *                  finish skips that test (accel_set_packet_lane)
  *   byte 144..159  prim[4]     the caller's primitive index per lane
- *   byte 160..175  proper_size[4]  per lane, the largest sheared size
- *                  at which the finish's sliver test passes
- *                  (isect_proper_size_bound, intersect.h), -inf for a
- *                  NaN lane
- *   byte 176..271  n[4][3]     per lane, the double cross product of the
- *                  edge vectors (isect_triangle_doubles: the finish's
- *                  own doubles, bit for bit), so that the finish of a
- *                  kept lane computes none of the triangle's doubles
- *                  for a proper triangle
  *
  * A leaf of n triangles is ceil(n / 4) consecutive packets; the lanes of
  * the last one beyond n repeat its last triangle and are never tested.
@@ -126,10 +117,8 @@ typedef char bvh8_node_is_256_bytes[sizeof(struct bvh8_node) == 256 ? 1 : -1];
 struct tri4_packet {
     float v[3][3][4];
     uint32_t prim[4];
-    float proper_size[4];
-    double n[4][3];
 };
-typedef char tri4_packet_is_272_bytes[sizeof(struct tri4_packet) == 272 ? 1 : -1];
+typedef char tri4_packet_is_160_bytes[sizeof(struct tri4_packet) == 160 ? 1 : -1];
 
 struct bvh4 {
     uint32_t width;          /* 4 or 8; 0 when there is no layout */

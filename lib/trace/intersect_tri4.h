@@ -759,9 +759,7 @@ static inline int tri4_lane_test(const struct trace_ray *ray, const struct tri4_
     /* The lane's coordinates straight from the packet (no copy).  The
      * filter kept the lane, so its coordinates are not NaN: the packet
      * holds a triangle with an area (accel_set_packet_lane), and the
-     * finish's zero-area test, which would pass, is left out; the
-     * packet's stored normal and sliver bound spare a proper triangle's
-     * finish its own doubles (bvh4_layout.h). */
+     * finish's zero-area test, which would pass, is left out. */
     if (any_hit) {
         /* isect_triangle_occludes_impl with area_known, its short way
          * first: that needs no size. */
@@ -773,15 +771,13 @@ static inline int tri4_lane_test(const struct trace_ray *ray, const struct tri4_
         return isect_triangle_finish_impl(
             ray, p->v[0][0][l], p->v[0][1][l], p->v[0][2][l], p->v[1][0][l], p->v[1][1][l],
             p->v[1][2][l], p->v[2][0][l], p->v[2][1][l], p->v[2][2][l], U, V, W, det, Az, Bz,
-            Cz, size, lanes->t_lo[l], lanes->t_hi[l], t_max, 1, p->n[l], p->proper_size[l], &tt,
-            &uu, &ww);
+            Cz, size, lanes->t_lo[l], lanes->t_hi[l], t_max, 1, &tt, &uu, &ww);
     }
     return isect_triangle_finish_impl(ray, p->v[0][0][l], p->v[0][1][l], p->v[0][2][l],
                                       p->v[1][0][l], p->v[1][1][l], p->v[1][2][l],
                                       p->v[2][0][l], p->v[2][1][l], p->v[2][2][l], U, V, W, det,
                                       Az, Bz, Cz, size, lanes->t_lo[l],
-                                      lanes->t_hi[l], t_max, 1, p->n[l], p->proper_size[l], t,
-                                      u, w);
+                                      lanes->t_hi[l], t_max, 1, t, u, w);
 }
 
 #endif
