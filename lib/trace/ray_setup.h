@@ -133,7 +133,6 @@ struct ray_lanes {
     __m128 inv_k; /* inv_dir[kx], inv_dir[ky], inv_dir[kz] (= sz), 1 */
     __m128 shear; /* sx, sy, -1, - */
     int kx, ky, kz;
-    int perm; /* 2 kz + (dir[kz] < 0): the row of ray_lane_order */
 };
 
 /* trace_ray_setup_lanes stores org, dir and inv_dir 16 bytes at a time,
@@ -196,7 +195,6 @@ static inline void trace_ray_setup_lanes(struct trace_ray *ray, struct ray_lanes
     l->kx = order[0];
     l->ky = order[1];
     l->kz = (int)kz;
-    l->perm = (int)(2u * kz + neg);
     char *b = (char *)(void *)ray;
     _mm_storeu_ps((float *)(void *)(b + offsetof(struct trace_ray, org)), o);
     _mm_storeu_ps((float *)(void *)(b + offsetof(struct trace_ray, dir)), d);

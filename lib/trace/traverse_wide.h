@@ -760,67 +760,19 @@ WIDE8_LEAF_TEST(wide8_packet_closest, wide_packet_test, 0, 1, 0, 1)
 WIDE8_LEAF_TEST(wide8_packet_full, wide_packet_test, 0, 0, 0, 1)
 WIDE8_LEAF_TEST(wide8_packet_any, wide_packet_test, 1, 1, 1, 0)
 
-/* tri4_ray_init's constants from the set-up's lanes (ray_setup.h): the
- * same values, broadcast from registers instead of loaded by index, set
- * before the walk (WIDE8_WALK1) for closest-hit and any-hit rays alike:
- * the node test of walk_wide8_ray_leaf8 reads -org, the inverse and tmin
- * from them too. */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline void tri4_ray_init_lanes(struct tri4_ray *r, const struct ray_lanes *l, float tmin)
-{
-    const size_t row = sizeof(((const struct tri4_packet *)NULL)->v[0][0]);
-    const __m128 neg_org = _mm_xor_ps(l->org_k, _mm_set1_ps(-0.0f));
-    const unsigned neg = (unsigned)_mm_movemask_ps(_mm_cmplt_ps(l->inv_k, _mm_setzero_ps()));
-    r->off_x = (size_t)l->kx * row;
-    r->off_y = (size_t)l->ky * row;
-    r->off_z = (size_t)l->kz * row;
-    r->neg_org_x = _mm_permute_ps(neg_org, 0x00);
-    r->neg_org_y = _mm_permute_ps(neg_org, 0x55);
-    r->neg_org_z = _mm_permute_ps(neg_org, 0xAA);
-    r->sx = _mm_permute_ps(l->shear, 0x00);
-    r->sy = _mm_permute_ps(l->shear, 0x55);
-    r->sz = _mm_permute_ps(l->inv_k, 0xAA);
-    r->inv_x = _mm_permute_ps(l->inv_k, 0x00);
-    r->inv_y = _mm_permute_ps(l->inv_k, 0x55);
-    /* tmin >= 0 here (WIDE8_WALK1 takes the other rays elsewhere), with
-     * -0 made +0 by a signed integer maximum with 0: the node test's
-     * entry maximum needs those bits (walk_wide8_ray_leaf8), and every
-     * use in the leaves is a float comparison with tmin (z_hi >= tmin,
-     * t_lo < tmin, t_hi < tmin) or, in tri4_before_tmin_lanes, a
-     * product with tmin then compared (x < tmin * y: a zero of either
-     * sign, or the NaN of 0 * inf either way) or tmin >= 2^-100, where
-     * -0 and +0 decide alike. */
-    r->tmin = _mm_castsi128_ps(
-        _mm_max_epi32(_mm_castps_si128(_mm_set1_ps(tmin)), _mm_setzero_si128()));
-    r->neg_x = (int)(neg & 1u);
-    r->neg_y = (int)(neg >> 1 & 1u);
-}
-
-/* The byte offsets of the near and far rows of a bvh8_node's bounds in
- * the order kx, ky, kz, per 8 (2 kz + (dir[kz] < 0)) + octant (ray_lanes'
- * perm, ray_lane_order's rows; octant bit k: dir[k] negative, whose near
- * plane is then the max, row 3 + k): near kx, ky, kz, then far kx, ky,
- * kz.  walk_wide8_ray's arithmetic on the sign bits, permuted, as a
- * table for the walks from the set-up's lanes: one index a ray. */
+/* The byte offsets of the near x, y, z and far x, y, z rows of a
+ * bvh8_node's bounds per ray octant (bit k: dir[k] negative, whose near
+ * plane is then the max, row 3 + k): walk_wide8_ray's arithmetic on the
+ * sign bits, as a table for the walks from the set-up's lanes. */
 #define WIDE8_ROW (sizeof(((const struct bvh8_node *)NULL)->bounds[0]))
-#define WIDE8_NEAR(k, o) (((k) + 3 * ((o) >> (k)&1)) * WIDE8_ROW)
-#define WIDE8_FAR(k, o) (((k) + 3 - 3 * ((o) >> (k)&1)) * WIDE8_ROW)
-#define WIDE8_ROWS_K(a, b, c, o)                                                                \
-    {WIDE8_NEAR(a, o), WIDE8_NEAR(b, o), WIDE8_NEAR(c, o),                                      \
-     WIDE8_FAR(a, o),  WIDE8_FAR(b, o),  WIDE8_FAR(c, o)}
-#define WIDE8_ROWS_P(a, b, c)                                                                   \
-    WIDE8_ROWS_K(a, b, c, 0), WIDE8_ROWS_K(a, b, c, 1), WIDE8_ROWS_K(a, b, c, 2),               \
-        WIDE8_ROWS_K(a, b, c, 3), WIDE8_ROWS_K(a, b, c, 4), WIDE8_ROWS_K(a, b, c, 5),           \
-        WIDE8_ROWS_K(a, b, c, 6), WIDE8_ROWS_K(a, b, c, 7)
-static const uint8_t wide8_rows_k[48][6] = {WIDE8_ROWS_P(1, 2, 0), WIDE8_ROWS_P(2, 1, 0),
-                                            WIDE8_ROWS_P(2, 0, 1), WIDE8_ROWS_P(0, 2, 1),
-                                            WIDE8_ROWS_P(0, 1, 2), WIDE8_ROWS_P(1, 0, 2)};
-#undef WIDE8_ROWS_P
-#undef WIDE8_ROWS_K
-#undef WIDE8_FAR
-#undef WIDE8_NEAR
+#define WIDE8_ROWS(nx, ny, nz)                                                                   \
+    {(nx)*3 * WIDE8_ROW, (1 + (ny)*3) * WIDE8_ROW, (2 + (nz)*3) * WIDE8_ROW,                     \
+     (3 - (nx)*3) * WIDE8_ROW, (4 - (ny)*3) * WIDE8_ROW, (5 - (nz)*3) * WIDE8_ROW}
+static const uint8_t wide8_rows[8][6] = {WIDE8_ROWS(0, 0, 0), WIDE8_ROWS(1, 0, 0),
+                                         WIDE8_ROWS(0, 1, 0), WIDE8_ROWS(1, 1, 0),
+                                         WIDE8_ROWS(0, 0, 1), WIDE8_ROWS(1, 0, 1),
+                                         WIDE8_ROWS(0, 1, 1), WIDE8_ROWS(1, 1, 1)};
+#undef WIDE8_ROWS
 #undef WIDE8_ROW
 
 #define WIDE8_RAY walk_wide8_ray
@@ -993,6 +945,32 @@ WIDE8_WALK(wide8_walk_any_leaf8_stats, walk_wide8_ray_leaf8, 1, 1, 1)
  * vectors and the leaf's constants come from the set-up's registers, not
  * from a struct another function has just stored; one call and its
  * stores and loads fewer a ray. */
+/* tri4_ray_init's constants from the set-up's lanes (ray_setup.h): the
+ * same values, broadcast from registers instead of loaded by index. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void tri4_ray_init_lanes(struct tri4_ray *r, const struct ray_lanes *l, float tmin)
+{
+    const size_t row = sizeof(((const struct tri4_packet *)NULL)->v[0][0]);
+    const __m128 neg_org = _mm_xor_ps(l->org_k, _mm_set1_ps(-0.0f));
+    const unsigned neg = (unsigned)_mm_movemask_ps(_mm_cmplt_ps(l->inv_k, _mm_setzero_ps()));
+    r->off_x = (size_t)l->kx * row;
+    r->off_y = (size_t)l->ky * row;
+    r->off_z = (size_t)l->kz * row;
+    r->neg_org_x = _mm_permute_ps(neg_org, 0x00);
+    r->neg_org_y = _mm_permute_ps(neg_org, 0x55);
+    r->neg_org_z = _mm_permute_ps(neg_org, 0xAA);
+    r->sx = _mm_permute_ps(l->shear, 0x00);
+    r->sy = _mm_permute_ps(l->shear, 0x55);
+    r->sz = _mm_permute_ps(l->inv_k, 0xAA);
+    r->inv_x = _mm_permute_ps(l->inv_k, 0x00);
+    r->inv_y = _mm_permute_ps(l->inv_k, 0x55);
+    r->tmin = _mm_set1_ps(tmin);
+    r->neg_x = (int)(neg & 1u);
+    r->neg_y = (int)(neg >> 1 & 1u);
+}
+
 #define WIDE8_WALK1(name, walk, any_hit, stats, leave_early)                                    \
     static int name(const struct bvh4 *wide, const float org[3], const float dir[3],           \
                     float tmin, float t_max, struct trace_hit *hit,                             \
@@ -1009,7 +987,8 @@ WIDE8_WALK(wide8_walk_any_leaf8_stats, walk_wide8_ray_leaf8, 1, 1, 1)
         if (!(tmin >= 0.0f))                                                                    \
             return wide8_walk_end(&s, wide8_walk_tmin_other(wide, &s, any_hit, stats), any_hit, \
                                   stats, counters);                                             \
-        tri4_ray_init_lanes(&s.r4, &lanes, tmin);                                               \
+        if (any_hit)                                                                            \
+            tri4_ray_init_lanes(&s.r4, &lanes, tmin);                                           \
         const int done = walk(wide, &s, any_hit, stats, leave_early, &lanes);                   \
         return wide8_walk_end(&s, done, any_hit, stats, counters);                              \
     }

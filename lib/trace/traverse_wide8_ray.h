@@ -29,14 +29,10 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
          * dir, which are those of 1 / dir (-0 gives -inf), so the rows
          * do not wait for the division and the first node's loads can
          * start before it ends; the six row offsets from a table by
-         * octant and axis order (wide8_rows_k), six loads instead of
-         * about 30 instructions of arithmetic and register moves. */
+         * octant (wide8_rows), six loads instead of about 30
+         * instructions of arithmetic and register moves. */
         octant = _mm_movemask_ps(lanes->dir) & 7;
-        /* The node test's three slabs in the order kx, ky, kz, the
-         * order of the leaf's constants (s->r4), which it reads its
-         * vectors from (below): near_x, far_x are axis kx's rows here,
-         * near_y, far_y ky's, near_z, far_z kz's (wide8_rows_k). */
-        const uint8_t *r = wide8_rows_k[8 * lanes->perm + octant];
+        const uint8_t *r = wide8_rows[octant];
         near_x = r[0];
         near_y = r[1];
         near_z = r[2];
@@ -72,9 +68,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
     float box_limit = any_hit ? s->best * ISECT_BOX_FAR_SCALE : s->box_limit;
     uint64_t node_tests = 0;
     uint64_t tri_tests = 0;
-    /* With the set-up's lanes (WIDE8_WALK1) the leaf's constants are
-     * set before the walk: the node test reads its vectors from them. */
-    int r4_ready = lanes != NULL;
+    int r4_ready = 0;
     /* Per layout: only a layout beyond the caches pays for the stack
      * top's prefetch (bvh4_layout.h). */
     const int prefetch_top = wide->prefetch_top != 0;
@@ -83,71 +77,41 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
          * node test's vectors are broadcast only when an inner node comes
          * next. */
         if (!cur_count) {
-            __m256 neg_org_x, neg_org_y, neg_org_z, inv_x, inv_y, inv_z;
-            __m256i tmin8;
-            if (lanes) {
-                /* The leaf's constants (tri4_ray_init_lanes) hold the
-                 * node test's vectors too, as 16-byte broadcasts in the
-                 * order kx, ky, kz: -org[k], inv_dir[kx], inv_dir[ky],
-                 * and sz, which is inv_dir[kz] bit for bit (the set-up's
-                 * one quotient 1 / dir[kz], ray_setup.h), and tmin as
-                 * the entry's maximum needs it (-0 made +0 there).  One
-                 * 128-bit broadcast load each, after a leaf call as at
-                 * the start: the call takes s, so the compiler reloads
-                 * them rather than keeping them across it, and the walk
-                 * no longer loads, negates and broadcasts the ray's
-                 * fields (about 25 instructions a leaf visit on AVX2)
-                 * nor sets up the leaf's constants at its first leaf.
-                 * The decision is the one below, axes in another order:
-                 * each slab's (bound - org) * inv is the same IEEE
-                 * operation on the same floats, the entry's signed
-                 * integer maximum is exact, so associative and
-                 * commutative (the same bits in any order), and the
-                 * three exit comparisons are ANDed, which commutes. */
-                neg_org_x = _mm256_broadcast_ps(&s->r4.neg_org_x);
-                neg_org_y = _mm256_broadcast_ps(&s->r4.neg_org_y);
-                neg_org_z = _mm256_broadcast_ps(&s->r4.neg_org_z);
-                inv_x = _mm256_broadcast_ps(&s->r4.inv_x);
-                inv_y = _mm256_broadcast_ps(&s->r4.inv_y);
-                inv_z = _mm256_broadcast_ps(&s->r4.sz);
-                tmin8 = _mm256_castps_si256(_mm256_broadcast_ps(&s->r4.tmin));
-            } else {
-                /* The ray's vectors, broadcast again after each leaf call from
-                 * the ray (which the call may in principle have changed, so the
-                 * compiler reloads it anyway) instead of spilled and reloaded
-                 * around it. */
+            /* The ray's vectors, broadcast again after each leaf call from
+             * the ray (which the call may in principle have changed, so the
+             * compiler reloads it anyway) instead of spilled and reloaded
+             * around it. */
 #if defined(__GNUC__)
-                /* GCC sees that the packet call leaves the ray alone and keeps
-                 * these vectors across it, spilling and reloading eight of them
-                 * around every leaf; an any-hit walk (about three leaf visits per
-                 * shadow ray) loads them again instead.  The empty asm hides
-                 * nothing but the pointer's provenance, on a copy: with the
-                 * asm on the pointer itself GCC also put a vzeroupper before
-                 * every 4-lane leaf call (callgrind, AVX2: 3.1 instructions a
-                 * gears shadow ray more); either way it stores the pointer to
-                 * its stack slot again at every leaf. */
-                const struct trace_ray *rv = ray;
-                if (any_hit)
-                    __asm__("" : "+r"(rv));
+            /* GCC sees that the packet call leaves the ray alone and keeps
+             * these vectors across it, spilling and reloading eight of them
+             * around every leaf; an any-hit walk (about three leaf visits per
+             * shadow ray) loads them again instead.  The empty asm hides
+             * nothing but the pointer's provenance, on a copy: with the
+             * asm on the pointer itself GCC also put a vzeroupper before
+             * every 4-lane leaf call (callgrind, AVX2: 3.1 instructions a
+             * gears shadow ray more); either way it stores the pointer to
+             * its stack slot again at every leaf. */
+            const struct trace_ray *rv = ray;
+            if (any_hit)
+                __asm__("" : "+r"(rv));
 #else
-                const struct trace_ray *rv = ray;
+            const struct trace_ray *rv = ray;
 #endif
-                /* The origin negated: bound + (-org) is bound - org bit for bit
-                 * (IEEE 754's x - y is x + (-y)), and the addition takes the
-                 * bound as its memory operand (the subtraction cannot, the bound
-                 * being its minuend): six loads fewer per node. */
-                neg_org_x = _mm256_set1_ps(-rv->org[0]);
-                neg_org_y = _mm256_set1_ps(-rv->org[1]);
-                neg_org_z = _mm256_set1_ps(-rv->org[2]);
-                inv_x = _mm256_set1_ps(rv->inv_dir[0]);
-                inv_y = _mm256_set1_ps(rv->inv_dir[1]);
-                inv_z = _mm256_set1_ps(rv->inv_dir[2]);
-                /* tmin's bits for the entry's integer maximum (below): only
-                 * rays with tmin >= 0 come here (the others take
-                 * wide8_walk_tmin_other), and -0 becomes +0, the same number. */
-                tmin8 = _mm256_max_epi32(_mm256_castps_si256(_mm256_set1_ps(rv->tmin)),
-                                         _mm256_setzero_si256());
-            }
+            /* The origin negated: bound + (-org) is bound - org bit for bit
+             * (IEEE 754's x - y is x + (-y)), and the addition takes the
+             * bound as its memory operand (the subtraction cannot, the bound
+             * being its minuend): six loads fewer per node. */
+            const __m256 neg_org_x = _mm256_set1_ps(-rv->org[0]);
+            const __m256 neg_org_y = _mm256_set1_ps(-rv->org[1]);
+            const __m256 neg_org_z = _mm256_set1_ps(-rv->org[2]);
+            const __m256 inv_x = _mm256_set1_ps(rv->inv_dir[0]);
+            const __m256 inv_y = _mm256_set1_ps(rv->inv_dir[1]);
+            const __m256 inv_z = _mm256_set1_ps(rv->inv_dir[2]);
+            /* tmin's bits for the entry's integer maximum (below): only
+             * rays with tmin >= 0 come here (the others take
+             * wide8_walk_tmin_other), and -0 becomes +0, the same number. */
+            const __m256i tmin8 = _mm256_max_epi32(
+                _mm256_castps_si256(_mm256_set1_ps(rv->tmin)), _mm256_setzero_si256());
             /* Inner nodes until a leaf lane comes up (or the stack empties). */
             while (!cur_count) {
                 const struct bvh8_node *n = &nodes[cur];
@@ -280,18 +244,12 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
         {
             int stop = 0;
             const struct tri4_packet *p = &packets[cur];
-            /* Without the set-up's lanes (WIDE8_WALK) a closest-hit ray
-             * sets the packet test's constants at its first leaf, not at
-             * its start: a ray that misses every leaf box never pays for
-             * them.  An any-hit ray (a shadow ray, which starts on a
-             * surface and nearly always reaches a leaf) has them set by
-             * WIDE8_WALK: the lazy set-up cost it more instructions than
-             * it saved (callgrind, gears).  With the lanes (WIDE8_WALK1)
-             * both have them from the start (r4_ready); setting only the
-             * node test's part there and the rest here kept the set-up's
-             * axes alive in registers to the first leaf, and the node
-             * test reloaded five row offsets a node instead of one
-             * (gears closest-hit rays +3 and +5 instructions a ray). */
+            /* A closest-hit ray sets the packet test's constants at its
+             * first leaf, not at its start: a ray that misses every leaf
+             * box never pays for them.  An any-hit ray (a shadow ray,
+             * which starts on a surface and nearly always reaches a leaf)
+             * has them set by WIDE8_WALK: the lazy set-up cost it more
+             * instructions than it saved (callgrind, gears). */
             if (!any_hit && !r4_ready) {
                 tri4_ray_init(&s->r4, ray);
                 r4_ready = 1;
