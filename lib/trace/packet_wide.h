@@ -78,21 +78,6 @@ struct packet_entry {
     float t_entry;  /* the smallest of their entry distances */
 };
 
-/* A stacked child of packet_walk8_ia: packet_entry's fields, and for a
- * child whose rays are still to be tested one by one (`parent` not
- * PACKET_NO_TEST), the node holding its box and its slot there: its
- * lane test runs when it is popped (packet_lane_test), not when it is
- * pushed. */
-struct packet_entry8 {
-    uint32_t child;
-    uint32_t count;  /* 0: wide node, else a leaf lane */
-    unsigned rays;   /* the rays that enter it, or may (parent set) */
-    float t_entry;   /* a lower bound of their entry distances */
-    uint32_t parent; /* PACKET_NO_TEST, or the node index << 3 | slot */
-};
-
-#define PACKET_NO_TEST UINT32_MAX
-
 /* The rays of a packet: the single walk's state per ray, its near and
  * far bound rows per axis and its octant (traverse_wide.h). */
 struct packet_state {
@@ -820,38 +805,6 @@ static inline int packet_ia_init(struct packet_state *p, unsigned active,
 }
 
 /*
- * Child l of node n against each ray of `rays`, the rays in the lanes:
- * walk_wide8's float operations on each ray's own near and far planes,
- * origin, inverse, tmin and its box_limit in `bl` (packet_walk8_ia's
- * lane test).  Returns the rays that enter the box.
- */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline unsigned packet_lane_test(const struct bvh8_node *n, unsigned l,
-                                        const struct packet_state *p, const int *near_row,
-                                        const int *far_row, unsigned rays, __m256 bl)
-{
-    __m256 u0 = p->lane_f[TRI8_F_TMIN];
-    __m256 u1 = _mm256_set1_ps(INFINITY);
-    for (int k = 0; k < 3; k++) {
-        const __m256 tn =
-            _mm256_mul_ps(_mm256_sub_ps(_mm256_broadcast_ss(&wide_row(n->bounds, near_row[k])[l]),
-                                        p->lane_f[TRI8_F_ORG + k]),
-                          p->lane_f[TRI8_F_INV + k]);
-        const __m256 tf =
-            _mm256_mul_ps(_mm256_sub_ps(_mm256_broadcast_ss(&wide_row(n->bounds, far_row[k])[l]),
-                                        p->lane_f[TRI8_F_ORG + k]),
-                          p->lane_f[TRI8_F_INV + k]);
-        u0 = _mm256_max_ps(tn, u0);
-        u1 = _mm256_min_ps(tf, u1);
-    }
-    u1 = _mm256_mul_ps(u1, _mm256_set1_ps(ISECT_BOX_FAR_SCALE));
-    u1 = _mm256_min_ps(u1, bl);
-    return (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(u0, u1, _CMP_LE_OQ)) & rays;
-}
-
-/*
  * The packet walk of the 8-wide layout by interval tests (Wald, Boulos
  * and Shirley 2007 sec. 4.2; Embree's coherent packet traversal does the
  * same with a packet frustum): an inner node's eight children are tested
@@ -903,7 +856,7 @@ __attribute__((always_inline))
 static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_state *p,
                                        unsigned active, int any_hit)
 {
-    struct packet_entry8 stack[WIDE_STACK];
+    struct packet_entry stack[WIDE_STACK];
     const struct bvh8_node *nodes = wide->nodes8;
     const int octant = p->ia_octant;
     const int *near_row = p->ia_row_near, *far_row = p->ia_row_far;
@@ -1046,7 +999,6 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                                             _mm256_cmp_ps(t0, fa[2], _CMP_LE_OQ))));
 #endif
             unsigned push = 0; /* the children entered by at least one ray */
-            unsigned pend = 0; /* of them, those whose rays are tested when walked */
             if (p->ia_masks &&
                 (unsigned)__builtin_popcount(pass) >= (unsigned)__builtin_popcount(rays)) {
                 /* Rays from several origins, and more children pass
@@ -1079,6 +1031,7 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                     const unsigned near =
                         (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(t0, leaf_t, _CMP_LE_OQ));
                     test = pass & ~inner & ~near & 0xffu;
+                    push = pass & ~test;
                     _mm256_storeu_si256((__m256i *)(void *)lane_rays,
                                         _mm256_set1_epi32((int)rays));
                 } else {
@@ -1104,29 +1057,44 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                         _mm256_mul_ps(_mm256_max_ps(t0, _mm256_setzero_ps()), p->ia_sp_d));
                     const unsigned big =
                         (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(beam, ext, _CMP_LE_OQ));
-                    test = pass & ~big;
+                    const unsigned all = pass & big;
+                    test = pass & ~all;
+                    push = all;
                     _mm256_storeu_si256((__m256i *)(void *)lane_rays,
                                         _mm256_set1_epi32((int)rays));
                 }
-                /* Every child that passes is pushed; those of `test`
-                 * are tested ray by ray (packet_lane_test) only when
-                 * walked: the nearest below, a stacked one when popped,
-                 * against the rays' box_limit then.  A stacked child
-                 * keeps the interval test's entry bound t0, at most
-                 * each ray's entry, for the cheap cull on pop before
-                 * its lane test.  A child the rays' hits have put
-                 * behind them by then is not tested at all, and the
-                 * lane test with the later, smaller box_limit passes
-                 * fewer rays (as Embree's coherent packet walk, which
-                 * tests a leaf's rays when it reaches the leaf).  It
-                 * chooses work, never an answer: a ray the test drops
-                 * would not enter the box by its own test with its
-                 * current box_limit, so it has no hit there at or
-                 * below its best, which is the argument of the pop's
-                 * cull (traverse_wide.h: the hit does not depend on
-                 * the boxes skipped). */
-                push = pass;
-                pend = test;
+                for (unsigned m = test; m; m &= m - 1u) {
+                    const unsigned l = (unsigned)__builtin_ctz(m);
+                    /* The child's box against each ray, walk_wide8's
+                     * operations with the ray in the lanes. */
+                    __m256 u0 = p->lane_f[TRI8_F_TMIN];
+                    __m256 u1 = inf8;
+                    for (int k = 0; k < 3; k++) {
+                        const __m256 tn = _mm256_mul_ps(
+                            _mm256_sub_ps(_mm256_broadcast_ss(&wide_row(n->bounds, near_row[k])[l]),
+                                          p->lane_f[TRI8_F_ORG + k]),
+                            p->lane_f[TRI8_F_INV + k]);
+                        const __m256 tf = _mm256_mul_ps(
+                            _mm256_sub_ps(_mm256_broadcast_ss(&wide_row(n->bounds, far_row[k])[l]),
+                                          p->lane_f[TRI8_F_ORG + k]),
+                            p->lane_f[TRI8_F_INV + k]);
+                        u0 = _mm256_max_ps(tn, u0);
+                        u1 = _mm256_min_ps(tf, u1);
+                    }
+                    u1 = _mm256_mul_ps(u1, scale8);
+                    u1 = _mm256_min_ps(u1, bl);
+                    const __m256 in = _mm256_cmp_ps(u0, u1, _CMP_LE_OQ);
+                    lane_rays[l] = (unsigned)_mm256_movemask_ps(in) & rays;
+                    push |= (unsigned)(lane_rays[l] != 0) << l;
+                    node_tests += (unsigned)__builtin_popcount(rays);
+                    /* The least entry of its rays, for the cull on pop
+                     * by a ray's box_limit; an any-hit ray's never
+                     * shrinks, so the rays here, which passed it
+                     * already, would all stay: the interval test's
+                     * bound (t_min, stored above) does as well. */
+                    if (!any_hit)
+                        t_min[l] = packet_hmin(_mm256_blendv_ps(inf8, u0, in));
+                }
             }
             if (push) {
                 if (!(push & (push - 1u))) {
@@ -1136,10 +1104,6 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                     cur = n->child[l];
                     cur_count = n->count[l];
                     rays = lane_rays[l];
-                    if (pend) {
-                        rays = packet_lane_test(n, l, p, near_row, far_row, rays, bl);
-                        node_tests += (unsigned)__builtin_popcount(lane_rays[l]);
-                    }
                 } else if (any_hit) {
                     /* An any-hit packet: the children in the node's slot
                      * order, the last one walked next, without the
@@ -1160,17 +1124,12 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                             cur = n->child[l];
                             cur_count = n->count[l];
                             rays = lane_rays[l];
-                            if (pend >> l & 1u) {
-                                rays = packet_lane_test(n, l, p, near_row, far_row, rays, bl);
-                                node_tests += (unsigned)__builtin_popcount(lane_rays[l]);
-                            }
                             break;
                         }
                         stack[sp].child = n->child[l];
                         stack[sp].count = n->count[l];
                         stack[sp].rays = lane_rays[l];
                         stack[sp].t_entry = t_min[l];
-                        stack[sp].parent = pend >> l & 1u ? cur << 3 | l : PACKET_NO_TEST;
                         sp++;
                     }
                 } else {
@@ -1199,26 +1158,18 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                             cur = n->child[l];
                             cur_count = n->count[l];
                             rays = lane_rays[l];
-                            if (pend >> l & 1u) {
-                                rays = packet_lane_test(n, l, p, near_row, far_row, rays, bl);
-                                node_tests += (unsigned)__builtin_popcount(lane_rays[l]);
-                            }
                             break;
                         }
                         stack[sp].child = n->child[l];
                         stack[sp].count = n->count[l];
                         stack[sp].rays = lane_rays[l];
                         stack[sp].t_entry = t_min[l];
-                        stack[sp].parent = pend >> l & 1u ? cur << 3 | l : PACKET_NO_TEST;
                         sp++;
                     }
                 }
-                if (rays) {
-                    if (!cur_count)
-                        wide_prefetch(&nodes[cur], sizeof(struct bvh8_node));
-                    continue;
-                }
-                /* The nearest child's lane test passed no ray: pop. */
+                if (!cur_count)
+                    wide_prefetch(&nodes[cur], sizeof(struct bvh8_node));
+                continue;
             }
         }
         for (;;) {
@@ -1235,12 +1186,6 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
             rays = stack[sp].rays & ~done &
                    (unsigned)_mm256_movemask_ps(
                        _mm256_cmp_ps(_mm256_set1_ps(stack[sp].t_entry), bl, _CMP_LE_OQ));
-            if (rays && stack[sp].parent != PACKET_NO_TEST) {
-                /* A child tested ray by ray when walked (the push). */
-                const uint32_t at = stack[sp].parent;
-                node_tests += (unsigned)__builtin_popcount(rays);
-                rays = packet_lane_test(&nodes[at >> 3], at & 7u, p, near_row, far_row, rays, bl);
-            }
             if (rays)
                 break;
         }
