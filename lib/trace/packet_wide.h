@@ -74,12 +74,7 @@
  * without a test per ray, where its box's largest extent is at least
  * this many times the beam's width at its entry bound (the directions'
  * spread times the bound); a narrower inner child is tested ray by ray
- * like a leaf child (packet_walk8_ia).  Measured (docs/performance-log.md,
- * pk11), AVX2 instructions of the camera packets against no inner test:
- * 0.75: kitchen -11.6 %, bumpy +0.2 %; 1: kitchen -12.0 %, bumpy +0.4 %,
- * gears +1.8 %; 1.5: kitchen -12.5 %, bumpy +0.7 %, gears +1.9 %; 3:
- * kitchen -12.3 %, bumpy +2.0 %; every inner child tested: kitchen
- * -10.1 %, bumpy +3.1 %. */
+ * like a leaf child (packet_walk8_ia). */
 #ifndef PACKET_INNER_BEAM_GATE
 #define PACKET_INNER_BEAM_GATE 1.0f
 #endif
@@ -825,9 +820,7 @@ static inline int packet_ia_init(struct packet_state *p, unsigned active,
  * and Shirley 2007 sec. 4.2; Embree's coherent packet traversal does the
  * same with a packet frustum): an inner node's eight children are tested
  * once for the whole packet (packet_ia_init), and a child that passes is
- * entered by all the rays still in the walk (an inner child of a
- * one-origin packet narrow against the beam is tested ray by ray first,
- * PACKET_INNER_BEAM_GATE); a leaf child that passes is
+ * entered by all the rays still in the walk; a leaf child that passes is
  * then tested ray by ray, the rays in the lanes, with walk_wide8's float
  * operations on each ray's own near and far planes, origin, inverse,
  * tmin and box_limit, so a leaf's triangles meet exactly the rays whose
@@ -1040,8 +1033,8 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                 _mm256_storeu_ps(t_min, t0);
                 unsigned test = pass; /* the children tested ray by ray */
                 if (!p->ia_masks) {
-                    /* One origin: an inner child wide against the
-                     * beam is entered by every ray, and so is a leaf
+                    /* One origin: the interval test is tight, and an
+                     * inner child is entered by every ray; so is a leaf
                      * child the beam meets before ia_leaf_t, where the
                      * leaves are wide against the beam (packet_ia_init),
                      * without a test per ray. */
@@ -1053,30 +1046,9 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                     test = pass & ~inner & ~near & 0xffu;
                     if (pass & inner & ~near & 0xffu && leaf_t_set) {
                         /* An inner child narrow against the beam where
-                         * the interval meets it (its box's largest
-                         * extent below PACKET_INNER_BEAM_GATE times the
-                         * directions' spread times its entry bound) is
-                         * tested ray by ray as a leaf child: the
-                         * interval test bounds a row of eight rays by
-                         * the box of their directions, which passes
-                         * boxes between the rays.  Counted on the
-                         * kitchen's camera packets: 27 % of the inner
-                         * children that pass it are entered by no ray
-                         * (and 75 % of the lane-tested leaf children),
-                         * each a subtree walked for nothing.  The test
-                         * drops such a subtree, and walks the others
-                         * with the rays that enter them (a lower bound
-                         * of their entries for the pop's cull, as for a
-                         * leaf child).  It chooses work, never an
-                         * answer: a ray the test leaves out would not
-                         * enter the box by its own test, so it has no
-                         * hit in it at or below its best (the argument
-                         * above for the inner nodes a ray's own test
-                         * rejects).  Measured (docs/performance-log.md,
-                         * pk11): AVX2 instructions of the kitchen's
-                         * camera packets -12.0 %, bumpy +0.4 %, gears
-                         * +1.8 %; shadow packets (several origins) not
-                         * run. */
+                         * the interval meets it: tested ray by ray as a
+                         * leaf child (its rays' own tests), which drops
+                         * the subtree when no ray enters it. */
                         __m256 ext = _mm256_sub_ps(_mm256_load_ps(n->bounds[3]),
                                                    _mm256_load_ps(n->bounds[0]));
                         ext = _mm256_max_ps(ext, _mm256_sub_ps(_mm256_load_ps(n->bounds[4]),
