@@ -70,14 +70,6 @@
  * a separate factor for leaves of 1, 2, 4, 8 and 16 was tried, and 2
  * was lowest on gears and bumpy. */
 #define PACKET_WIDE_BOX_GATE 2.0f
-/* An inner child of a one-origin packet is entered by all its rays,
- * without a test per ray, where its box's largest extent is at least
- * this many times the beam's width at its entry bound (the directions'
- * spread times the bound); a narrower inner child is tested ray by ray
- * like a leaf child (packet_walk8_ia). */
-#ifndef PACKET_INNER_BEAM_GATE
-#define PACKET_INNER_BEAM_GATE 1.0f
-#endif
 
 struct packet_entry {
     uint32_t child;
@@ -122,9 +114,7 @@ struct packet_state {
     int ia_masks; /* rays from more than one origin: see packet_walk8_ia */
     float ia_leaf_t; /* a leaf child entered before this takes no lane test (packet_ia_init) */
     /* Several origins: the largest spread of the origins and of the
-     * directions over the axes, times PACKET_WIDE_BOX_GATE, broadcast.
-     * One origin: ia_sp_d is the directions' spread times
-     * PACKET_INNER_BEAM_GATE (ia_sp_o is not set). */
+     * directions over the axes, times PACKET_WIDE_BOX_GATE, broadcast. */
     __m256 ia_sp_o, ia_sp_d;
     int ia_octant;                  /* the rays' common octant */
     int ia_row_near[3], ia_row_far[3]; /* its near and far rows, byte offsets */
@@ -789,7 +779,6 @@ static inline int packet_ia_init(struct packet_state *p, unsigned active,
         s = _mm_max_ss(s, _mm_shuffle_ps(s, s, 1));
         const float m = _mm_cvtss_f32(s) * PACKET_LEAF_GATE;
         p->ia_leaf_t = m > 0.0f ? leaf_extent / m : INFINITY;
-        p->ia_sp_d = _mm256_set1_ps(_mm_cvtss_f32(s) * PACKET_INNER_BEAM_GATE);
     }
     if (p->ia_masks) {
         /* The directions' ranges in lanes 0-3 and the origins' in lanes
@@ -877,8 +866,6 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
      * and their greatest, refreshed after each leaf (only hits shrink
      * them). */
     const __m256 leaf_t = _mm256_set1_ps(p->ia_leaf_t);
-    /* packet_ia_init set ia_sp_d for the inner children's gate. */
-    const int leaf_t_set = p->ia_leaf_t != -INFINITY;
     __m256 bl = _mm256_loadu_ps(p->box_limit);
     __m256 limit_hi = _mm256_set1_ps(packet_hmax(bl));
     uint64_t node_tests = 0; /* the interval and lane tests and the rays' own */
@@ -1044,21 +1031,6 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                     const unsigned near =
                         (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(t0, leaf_t, _CMP_LE_OQ));
                     test = pass & ~inner & ~near & 0xffu;
-                    if (pass & inner & ~near & 0xffu && leaf_t_set) {
-                        /* An inner child narrow against the beam where
-                         * the interval meets it: tested ray by ray as a
-                         * leaf child (its rays' own tests), which drops
-                         * the subtree when no ray enters it. */
-                        __m256 ext = _mm256_sub_ps(_mm256_load_ps(n->bounds[3]),
-                                                   _mm256_load_ps(n->bounds[0]));
-                        ext = _mm256_max_ps(ext, _mm256_sub_ps(_mm256_load_ps(n->bounds[4]),
-                                                               _mm256_load_ps(n->bounds[1])));
-                        ext = _mm256_max_ps(ext, _mm256_sub_ps(_mm256_load_ps(n->bounds[5]),
-                                                               _mm256_load_ps(n->bounds[2])));
-                        const unsigned wide_box = (unsigned)_mm256_movemask_ps(
-                            _mm256_cmp_ps(_mm256_mul_ps(t0, p->ia_sp_d), ext, _CMP_LE_OQ));
-                        test |= pass & inner & ~near & ~wide_box & 0xffu;
-                    }
                     push = pass & ~test;
                     _mm256_storeu_si256((__m256i *)(void *)lane_rays,
                                         _mm256_set1_epi32((int)rays));
