@@ -259,6 +259,52 @@ static void check_mesh(const char *scene, const struct tg_mesh *m, struct rt_poo
     bvh_release(&b);
 }
 
+/* A build large enough that the parallel builder keeps its second ref
+ * buffer as a mapping for the collapse (accel_build_parallel_triangles'
+ * spare, build_parallel.c SCRATCH_SPARE_MIN: 16 MiB of refs): the layout
+ * written into that block, whose tail the build wrote and the collapse
+ * gives back (rt_large_release_tail), must be byte for byte the one of a
+ * fresh block, on two threads as on one.  Nothing else in the suite
+ * reaches that path (rtbench's bumpy does). */
+static void check_spare(const struct tg_mesh *m, struct rt_pool **pools)
+{
+    for (int t = 1; t <= 2; t++) {
+        struct bvh b;
+        struct rt_large_block spare;
+        if (accel_build_parallel_triangles(&b, m->pos, m->idx, m->tri_count, NULL, pools[t],
+                                           &spare)) {
+            failures += !CHECKF(0, "spare: build on %d threads failed", t);
+            continue;
+        }
+        failures += !CHECKF(spare.base != NULL, "spare: a %u-triangle build left no mapping",
+                            m->tri_count);
+        float *tri = accel_gather_triangles_pool(&b, m->pos, m->idx, pools[t]);
+        struct bvh4 fresh, reused;
+        if (!tri || accel_collapse_wide_pool(&fresh, &b, tri, 8, pools[t])) {
+            failures += !CHECKF(0, "spare: gather or collapse failed");
+        } else {
+            const size_t bytes = spare.bytes;
+            const void *block = spare.base;
+            if (accel_collapse_wide_reuse(&reused, &b, tri, 8, pools[t], &spare)) {
+                failures += !CHECKF(0, "spare: collapse into the spare failed");
+            } else {
+                failures += !CHECKF(spare.base == NULL && reused.raw.base == block,
+                                    "spare: the layout did not take the build's mapping");
+                failures += !CHECKF(same_wide(&reused, &fresh),
+                                    "spare: the layout in the build's mapping differs "
+                                    "(%d threads)", t);
+                printf("  spare (%d threads): %u triangles, a %zu MB mapping, %u nodes\n", t,
+                       m->tri_count, bytes >> 20, reused.node_count);
+                bvh4_release(&reused);
+            }
+            bvh4_release(&fresh);
+        }
+        rt_free_large(&spare);
+        rt_free(tri);
+        bvh_release(&b);
+    }
+}
+
 int main(void)
 {
     double t0 = rt_now_ms();
@@ -292,6 +338,10 @@ int main(void)
     tg_mesh_free(&degenerate);
     check_mesh("sphere", &sphere, pools, 0);
     check_mesh("tiny", &tiny, pools, 0);
+    struct tg_mesh large;
+    tg_soup(&large, 540000, 1.0f, 0.005f, &r);
+    check_spare(&large, pools);
+    tg_mesh_free(&large);
     tg_mesh_free(&soup);
     tg_mesh_free(&sphere);
     tg_mesh_free(&tiny);
