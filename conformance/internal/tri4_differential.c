@@ -102,6 +102,10 @@ static struct leaf_answer packet_leaf(const struct trace_ray *ray, const struct 
     float best = t_max;
     struct tri4_lanes lanes;
     memset(&lanes, 0, sizeof(lanes)); /* written only for kept lanes */
+    /* The packet's finish constants as the collapse writes them beside
+     * the packets (bvh4_layout.h, struct tri4_consts). */
+    struct tri4_consts consts;
+    accel_packet_consts(p, &consts);
     /* Any hit: the filter with its early returns, as wide_packet_body
      * calls it. */
     unsigned mask = tri4_candidates_lanes_impl(&r4, p, 15u, t_max, &lanes, any_hit);
@@ -127,7 +131,7 @@ static struct leaf_answer packet_leaf(const struct trace_ray *ray, const struct 
         float limit = a.found ? isect_next_up(best) : best;
         /* The filter's floats, the rest of isect_triangle on them (or,
          * any hit, its answer without t). */
-        if (!tri4_lane_test(ray, p, &lanes, l, any_hit, limit, &t, &u, &w))
+        if (!tri4_lane_test(ray, p, &consts, &lanes, l, any_hit, limit, &t, &u, &w))
             continue;
         if (any_hit) {
             a.found = 1;
@@ -490,9 +494,9 @@ static void tmin_case(struct tg_rng *r, uint64_t *cases, uint64_t *accepted, uin
 
 /* The leaf tests of the 8-wide single-ray walk in the tables this CPU
  * runs (the tables' leaf8). */
-typedef int (*leaf8_fn)(const struct trace_ray *ray, const struct tri4_packet *p, uint32_t n,
-                        float t_max, int any_hit, int early_out, int eight, int found,
-                        struct trace_hit *hit);
+typedef int (*leaf8_fn)(const struct trace_ray *ray, const struct tri4_packet *p,
+                        size_t consts_offset, uint32_t n, float t_max, int any_hit,
+                        int early_out, int eight, int found, struct trace_hit *hit);
 
 /*
  * Check 3: a leaf of n = 5..8 triangles in two packets.  The triangles
@@ -563,7 +567,14 @@ static void pair_case(struct tg_rng *r, const leaf8_fn *fns, int fn_count, uint6
     struct trace_ray ray;
     trace_ray_init(&ray, org, dir, tmin);
 
-    struct tri4_packet p[2];
+    /* The two packets and, after them, their finish constants, as the
+     * collapse lays them out (bvh4_layout.h, struct tri4_consts). */
+    struct {
+        struct tri4_packet p[2];
+        struct tri4_consts c[2];
+    } block;
+    struct tri4_packet *p = block.p;
+    const size_t consts_offset = (size_t)((char *)&block.c[0] - (char *)&block.p[0]);
     for (int l = 0; l < 8; l++) {
         /* The lanes beyond n repeat the last triangle, as the collapse
          * fills them; they are never tested. */
@@ -571,6 +582,8 @@ static void pair_case(struct tg_rng *r, const leaf8_fn *fns, int fn_count, uint6
         accel_set_packet_lane(&p[l / 4], (uint32_t)(l % 4), tri[src]);
         p[l / 4].prim[l % 4] = prim[src];
     }
+    for (int k = 0; k < 2; k++)
+        accel_packet_consts(&p[k], &block.c[k]);
 
     /* An earlier leaf's hit now and then: at a triangle's own t (a tie
      * the primitive index breaks) or at a random distance. */
@@ -624,8 +637,8 @@ static void pair_case(struct tg_rng *r, const leaf8_fn *fns, int fn_count, uint6
             for (int early = 0; early < 2; early++) {
                 for (int eight = 0; eight < 2; eight++) {
                     struct trace_hit h = start->hit;
-                    const int found = fns[f](&ray, p, (uint32_t)n, t_max, any, early, eight,
-                                             start->found, &h);
+                    const int found = fns[f](&ray, p, consts_offset, (uint32_t)n, t_max, any,
+                                             early, eight, start->found, &h);
                     if (found != s0.found ||
                         (!any && found && memcmp(&h, &s0.hit, sizeof(h)) != 0)) {
                         if (failures < 10)
