@@ -33,7 +33,11 @@
  * fails check 2, a proper lane marked fails check 1.  It also counts the
  * lanes the filter kept that the scalar test then rejected: those are
  * the candidate hits the scalar test needs its double precision for
- * (edge-function zeros included), and must be a small share.
+ * (edge-function zeros included), and must be a small share.  Each
+ * packet's finish constants (struct tri4_consts, bvh4_layout.h: the
+ * normal and the sliver bound, as the collapse writes them beside the
+ * packets) are checked against the finish's definitions on every lane
+ * filled (check_constants).
  */
 #include <math.h>
 #include <stdint.h>
@@ -184,12 +188,61 @@ static float pow10_range(struct tg_rng *r, float lo, float hi)
  */
 /* A leaf packet of the four triangles, as the collapse fills packets (a
  * zero-area lane is marked). */
+/* Lane l's finish constants c (struct tri4_consts) against the finish's
+ * definitions recomputed here: n the double cross product of the edge
+ * vectors, bit for bit, and proper_size the largest float size at which
+ * the sliver test n2 >= (2^-18 size)^2 lmax passes (it passes there and
+ * fails one float above); a zero-area lane (NaN) has no such size. */
+static int sliver_test(double n2, double lmax, float size)
+{
+    const double rounding = ISECT_SLIVER_ROUNDINGS * 0x1p-24 * (double)size;
+    return n2 >= rounding * rounding * lmax;
+}
+
+static void check_constants(const struct tri4_packet *p, const struct tri4_consts *c, int l,
+                            const float v[9])
+{
+    if (isnan(p->v[0][0][l])) {
+        if (!(c->proper_size[l] == -INFINITY)) {
+            if (failures < 10)
+                printf("  FAIL: zero-area lane %d with a sliver bound %a\n", l,
+                       (double)c->proper_size[l]);
+            failures++;
+        }
+        return;
+    }
+    const double e1[3] = {(double)v[3] - v[0], (double)v[4] - v[1], (double)v[5] - v[2]};
+    const double e2[3] = {(double)v[6] - v[0], (double)v[7] - v[1], (double)v[8] - v[2]};
+    const double e3[3] = {e2[0] - e1[0], e2[1] - e1[1], e2[2] - e1[2]};
+    const double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                         e1[0] * e2[1] - e1[1] * e2[0]};
+    const double n2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+    const double l1 = e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2];
+    const double l2 = e2[0] * e2[0] + e2[1] * e2[1] + e2[2] * e2[2];
+    const double l3 = e3[0] * e3[0] + e3[1] * e3[1] + e3[2] * e3[2];
+    const double lmax = l1 >= l2 && l1 >= l3 ? l1 : (l2 >= l3 ? l2 : l3);
+    const float ps = c->proper_size[l];
+    const int exact = memcmp(n, c->n[l], sizeof(n)) == 0;
+    const int largest = sliver_test(n2, lmax, ps) &&
+                        (ps == 0x1.fffffep127f || !sliver_test(n2, lmax, nextafterf(ps, INFINITY)));
+    if (!exact || !largest) {
+        if (failures < 10)
+            printf("  FAIL: lane %d's stored normal (%s) or sliver bound %a (%s)\n", l,
+                   exact ? "same" : "differs", (double)ps, largest ? "largest" : "not largest");
+        failures++;
+    }
+}
+
 static void fill_packet(struct tri4_packet *p, const float tri[4][9], const uint32_t prim[4])
 {
     for (int l = 0; l < 4; l++) {
         accel_set_packet_lane(p, (uint32_t)l, tri[l]);
         p->prim[l] = prim[l];
     }
+    struct tri4_consts c;
+    accel_packet_consts(p, &c);
+    for (int l = 0; l < 4; l++)
+        check_constants(p, &c, l, tri[l]);
 }
 
 static void one_case(struct tg_rng *r, uint64_t *cases, uint64_t *kept_rejected, uint64_t *hits,
@@ -584,6 +637,8 @@ static void pair_case(struct tg_rng *r, const leaf8_fn *fns, int fn_count, uint6
     }
     for (int k = 0; k < 2; k++)
         accel_packet_consts(&p[k], &block.c[k]);
+    for (int l = 0; l < 8; l++)
+        check_constants(&p[l / 4], &block.c[l / 4], l % 4, tri[l < n ? l : n - 1]);
 
     /* An earlier leaf's hit now and then: at a triangle's own t (a tie
      * the primitive index breaks) or at a random distance. */
