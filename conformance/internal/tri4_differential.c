@@ -33,11 +33,7 @@
  * fails check 2, a proper lane marked fails check 1.  It also counts the
  * lanes the filter kept that the scalar test then rejected: those are
  * the candidate hits the scalar test needs its double precision for
- * (edge-function zeros included), and must be a small share.  Each
- * packet's finish constants (struct tri4_consts, bvh4_layout.h: the
- * normal and the sliver bound, as the collapse writes them beside the
- * packets) are checked against the finish's definitions on every lane
- * filled (check_constants).
+ * (edge-function zeros included), and must be a small share.
  */
 #include <math.h>
 #include <stdint.h>
@@ -106,10 +102,6 @@ static struct leaf_answer packet_leaf(const struct trace_ray *ray, const struct 
     float best = t_max;
     struct tri4_lanes lanes;
     memset(&lanes, 0, sizeof(lanes)); /* written only for kept lanes */
-    /* The packet's finish constants as the collapse writes them beside
-     * the packets (bvh4_layout.h, struct tri4_consts). */
-    struct tri4_consts consts;
-    accel_packet_consts(p, &consts);
     /* Any hit: the filter with its early returns, as wide_packet_body
      * calls it. */
     unsigned mask = tri4_candidates_lanes_impl(&r4, p, 15u, t_max, &lanes, any_hit);
@@ -135,7 +127,7 @@ static struct leaf_answer packet_leaf(const struct trace_ray *ray, const struct 
         float limit = a.found ? isect_next_up(best) : best;
         /* The filter's floats, the rest of isect_triangle on them (or,
          * any hit, its answer without t). */
-        if (!tri4_lane_test(ray, p, &consts, &lanes, l, any_hit, limit, &t, &u, &w))
+        if (!tri4_lane_test(ray, p, &lanes, l, any_hit, limit, &t, &u, &w))
             continue;
         if (any_hit) {
             a.found = 1;
@@ -188,61 +180,12 @@ static float pow10_range(struct tg_rng *r, float lo, float hi)
  */
 /* A leaf packet of the four triangles, as the collapse fills packets (a
  * zero-area lane is marked). */
-/* Lane l's finish constants c (struct tri4_consts) against the finish's
- * definitions recomputed here: n the double cross product of the edge
- * vectors, bit for bit, and proper_size the largest float size at which
- * the sliver test n2 >= (2^-18 size)^2 lmax passes (it passes there and
- * fails one float above); a zero-area lane (NaN) has no such size. */
-static int sliver_test(double n2, double lmax, float size)
-{
-    const double rounding = ISECT_SLIVER_ROUNDINGS * 0x1p-24 * (double)size;
-    return n2 >= rounding * rounding * lmax;
-}
-
-static void check_constants(const struct tri4_packet *p, const struct tri4_consts *c, int l,
-                            const float v[9])
-{
-    if (isnan(p->v[0][0][l])) {
-        if (!(c->proper_size[l] == -INFINITY)) {
-            if (failures < 10)
-                printf("  FAIL: zero-area lane %d with a sliver bound %a\n", l,
-                       (double)c->proper_size[l]);
-            failures++;
-        }
-        return;
-    }
-    const double e1[3] = {(double)v[3] - v[0], (double)v[4] - v[1], (double)v[5] - v[2]};
-    const double e2[3] = {(double)v[6] - v[0], (double)v[7] - v[1], (double)v[8] - v[2]};
-    const double e3[3] = {e2[0] - e1[0], e2[1] - e1[1], e2[2] - e1[2]};
-    const double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-                         e1[0] * e2[1] - e1[1] * e2[0]};
-    const double n2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
-    const double l1 = e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2];
-    const double l2 = e2[0] * e2[0] + e2[1] * e2[1] + e2[2] * e2[2];
-    const double l3 = e3[0] * e3[0] + e3[1] * e3[1] + e3[2] * e3[2];
-    const double lmax = l1 >= l2 && l1 >= l3 ? l1 : (l2 >= l3 ? l2 : l3);
-    const float ps = c->proper_size[l];
-    const int exact = memcmp(n, c->n[l], sizeof(n)) == 0;
-    const int largest = sliver_test(n2, lmax, ps) &&
-                        (ps == 0x1.fffffep127f || !sliver_test(n2, lmax, nextafterf(ps, INFINITY)));
-    if (!exact || !largest) {
-        if (failures < 10)
-            printf("  FAIL: lane %d's stored normal (%s) or sliver bound %a (%s)\n", l,
-                   exact ? "same" : "differs", (double)ps, largest ? "largest" : "not largest");
-        failures++;
-    }
-}
-
 static void fill_packet(struct tri4_packet *p, const float tri[4][9], const uint32_t prim[4])
 {
     for (int l = 0; l < 4; l++) {
         accel_set_packet_lane(p, (uint32_t)l, tri[l]);
         p->prim[l] = prim[l];
     }
-    struct tri4_consts c;
-    accel_packet_consts(p, &c);
-    for (int l = 0; l < 4; l++)
-        check_constants(p, &c, l, tri[l]);
 }
 
 static void one_case(struct tg_rng *r, uint64_t *cases, uint64_t *kept_rejected, uint64_t *hits,
@@ -547,9 +490,9 @@ static void tmin_case(struct tg_rng *r, uint64_t *cases, uint64_t *accepted, uin
 
 /* The leaf tests of the 8-wide single-ray walk in the tables this CPU
  * runs (the tables' leaf8). */
-typedef int (*leaf8_fn)(const struct trace_ray *ray, const struct tri4_packet *p,
-                        size_t consts_offset, uint32_t n, float t_max, int any_hit,
-                        int early_out, int eight, int found, struct trace_hit *hit);
+typedef int (*leaf8_fn)(const struct trace_ray *ray, const struct tri4_packet *p, uint32_t n,
+                        float t_max, int any_hit, int early_out, int eight, int found,
+                        struct trace_hit *hit);
 
 /*
  * Check 3: a leaf of n = 5..8 triangles in two packets.  The triangles
@@ -620,14 +563,7 @@ static void pair_case(struct tg_rng *r, const leaf8_fn *fns, int fn_count, uint6
     struct trace_ray ray;
     trace_ray_init(&ray, org, dir, tmin);
 
-    /* The two packets and, after them, their finish constants, as the
-     * collapse lays them out (bvh4_layout.h, struct tri4_consts). */
-    struct {
-        struct tri4_packet p[2];
-        struct tri4_consts c[2];
-    } block;
-    struct tri4_packet *p = block.p;
-    const size_t consts_offset = (size_t)((char *)&block.c[0] - (char *)&block.p[0]);
+    struct tri4_packet p[2];
     for (int l = 0; l < 8; l++) {
         /* The lanes beyond n repeat the last triangle, as the collapse
          * fills them; they are never tested. */
@@ -635,10 +571,6 @@ static void pair_case(struct tg_rng *r, const leaf8_fn *fns, int fn_count, uint6
         accel_set_packet_lane(&p[l / 4], (uint32_t)(l % 4), tri[src]);
         p[l / 4].prim[l % 4] = prim[src];
     }
-    for (int k = 0; k < 2; k++)
-        accel_packet_consts(&p[k], &block.c[k]);
-    for (int l = 0; l < 8; l++)
-        check_constants(&p[l / 4], &block.c[l / 4], l % 4, tri[l < n ? l : n - 1]);
 
     /* An earlier leaf's hit now and then: at a triangle's own t (a tie
      * the primitive index breaks) or at a random distance. */
@@ -692,8 +624,8 @@ static void pair_case(struct tg_rng *r, const leaf8_fn *fns, int fn_count, uint6
             for (int early = 0; early < 2; early++) {
                 for (int eight = 0; eight < 2; eight++) {
                     struct trace_hit h = start->hit;
-                    const int found = fns[f](&ray, p, consts_offset, (uint32_t)n, t_max, any,
-                                             early, eight, start->found, &h);
+                    const int found = fns[f](&ray, p, (uint32_t)n, t_max, any, early, eight,
+                                             start->found, &h);
                     if (found != s0.found ||
                         (!any && found && memcmp(&h, &s0.hit, sizeof(h)) != 0)) {
                         if (failures < 10)

@@ -500,32 +500,6 @@ void accel_set_packet_lane(struct tri4_packet *p, uint32_t lane, const float v[9
     }
 }
 
-void accel_packet_consts(const struct tri4_packet *p, struct tri4_consts *c)
-{
-    /* isect_triangle_doubles, the finish's own function, on the lane's
-     * coordinates as stored: the same doubles bit for bit (NaN and a
-     * bound of -inf for a zero-area lane's NaNs, which no ray reaches
-     * the finish with). */
-    memset(c, 0, sizeof(*c));
-    for (int l = 0; l < 4; l++) {
-        struct isect_tri_doubles g;
-        isect_triangle_doubles(p->v[0][0][l], p->v[0][1][l], p->v[0][2][l], p->v[1][0][l],
-                               p->v[1][1][l], p->v[1][2][l], p->v[2][0][l], p->v[2][1][l],
-                               p->v[2][2][l], &g);
-        c->n[l][0] = g.nx;
-        c->n[l][1] = g.ny;
-        c->n[l][2] = g.nz;
-        c->proper_size[l] = isect_proper_size_bound(g.n2, g.lmax);
-    }
-}
-
-/* Packet i's record in the side array (struct tri4_consts), written. */
-static void fill_consts(struct tri4_packet *packets, size_t offset, uint32_t i)
-{
-    accel_packet_consts(&packets[i],
-                        (struct tri4_consts *)(void *)((char *)&packets[i] + offset));
-}
-
 #if defined(__AVX2__) && !defined(RT_NO_SIMD)
 /* zero_area_pair below for four lanes in one AVX register
  * (collapse4_avx2.c): the same operations on each lane. */
@@ -697,7 +671,6 @@ struct collapse {
     uint32_t *todo;
     char *base;
     struct tri4_packet *packets;
-    size_t consts_offset; /* struct bvh4's */
     uint32_t *source;
     uint32_t *packet_slot;
     struct collapse_item *items;
@@ -778,7 +751,6 @@ static void write_scratch(const struct collapse *c, const struct scratch_node *s
             uint32_t n = s->count[l] - j < 4 ? s->count[l] - j : 4;
             c->packet_slot[p] = slot + j;
             fill_packet(&c->packets[p], c->tri, c->bvh->prim_index, slot + j, n);
-            fill_consts(c->packets, c->consts_offset, p);
         }
     }
     if (width == 4)
@@ -1004,8 +976,6 @@ static int collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *t
      * there are at most (node_count - 1) / 2 + 1 of them. */
     const uint32_t cap = (bvh->node_count - 1) / 2 + 1;
     struct rt_large_block raw = {NULL, 0};
-    struct rt_large_block consts_raw = {NULL, 0};
-    struct tri4_consts *consts = NULL;
     int taken = 0; /* raw is *spare's block */
     char *base = NULL;
     uint32_t *source = NULL;
@@ -1089,31 +1059,17 @@ static int collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *t
      * (nodes in full, packets' every lane and primitive), so a reused
      * block holds the same bytes as a fresh one. */
     const size_t spare_bytes = spare ? spare->bytes : 0;
-    const size_t block_bytes = node_bytes + (size_t)packets * sizeof(struct tri4_packet);
-    base = rt_malloc_large_reuse(block_bytes, &raw, spare);
+    base = rt_malloc_large_reuse(node_bytes + (size_t)packets * sizeof(struct tri4_packet), &raw,
+                                 spare);
     taken = base && spare_bytes && !spare->bytes;
     /* Both written in full by write_node. */
     source = rt_realloc_array(NULL, (size_t)count * width, sizeof(uint32_t));
     packet_slot = rt_realloc_array(NULL, packets ? packets : 1, sizeof(uint32_t));
-    /* The packets' finish constants (struct tri4_consts), a block of
-     * their own: in the layout's block they would make it too large for
-     * the build's spare mapping on the large meshes (collapse_threads'
-     * check_spare), and they are read only by a lane's finish.  Written
-     * in full by write_scratch (accel_packet_consts). */
-    consts = rt_malloc_large(packets ? (size_t)packets * sizeof(struct tri4_consts)
-                                     : sizeof(struct tri4_consts),
-                             &consts_raw);
-    if (!base || !source || !packet_slot || !consts)
+    if (!base || !source || !packet_slot)
         goto fail;
     struct tri4_packet *pk = (struct tri4_packet *)(void *)(base + node_bytes);
-    /* Packet i's record at the same distance from it as record 0 from
-     * packet 0 (both arrays have a stride of 160 bytes): an unsigned
-     * difference of the addresses, added back modulo 2^N by
-     * tri4_packet_consts. */
-    const size_t consts_offset = (size_t)((uintptr_t)(void *)consts - (uintptr_t)(void *)pk);
     c.base = base;
     c.packets = pk;
-    c.consts_offset = consts_offset;
     c.source = source;
     c.packet_slot = packet_slot;
     rt_pool_run_range(pool, 0, top, COLLAPSE_CHUNK, COLLAPSE_PARALLEL_MIN, write_nodes, &c);
@@ -1130,22 +1086,19 @@ static int collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *t
     out->nodes8 = width == 8 ? (struct bvh8_node *)(void *)base : NULL;
     out->packets = pk;
     out->packet_count = packets;
-    out->consts_offset = consts_offset;
     out->prefetch_top =
         bvh4_node_bytes(out) + bvh4_leaf_bytes(out) >= BVH_WIDE_PREFETCH_BYTES ? 1u : 0u;
     out->leaf_extent = width == 8 && tri && packets ? leaf_extent_mean(out) : 0.0f;
     out->source = source;
     out->packet_slot = packet_slot;
     out->raw = raw;
-    out->consts_raw = consts_raw;
     /* A taken block may be larger than the layout and written past it
      * (a parallel build's refs, accel_build_parallel_triangles): pages
      * the layout would otherwise hold for its lifetime. */
     if (taken)
-        rt_large_release_tail(&raw, base, block_bytes);
+        rt_large_release_tail(&raw, base, node_bytes + (size_t)packets * sizeof(struct tri4_packet));
     return 0;
 fail:
-    rt_free_large(&consts_raw);
     release_items(items, item_count);
     rt_free(c.item_nodes);
     rt_free(c.item_todo);
@@ -1231,7 +1184,6 @@ void accel_refit4(struct bvh4 *wide, const struct bvh *bvh, const float *tri)
         while (n < 4 && (wide->packets[p].prim[n] != wide->packets[p].prim[n - 1]))
             n++;
         fill_packet(&wide->packets[p], tri, NULL, slot, n);
-        fill_consts(wide->packets, wide->consts_offset, p);
     }
 }
 
@@ -1249,7 +1201,6 @@ uint64_t bvh4_leaf_bytes(const struct bvh4 *wide)
 void bvh4_release(struct bvh4 *wide)
 {
     rt_free_large(&wide->raw);
-    rt_free_large(&wide->consts_raw);
     rt_free(wide->source);
     rt_free(wide->packet_slot);
     memset(wide, 0, sizeof(*wide));

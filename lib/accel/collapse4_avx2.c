@@ -26,7 +26,6 @@
 #define accel_collapse4 accel_collapse4_avx2
 #define accel_refit4 accel_refit4_avx2
 #define accel_set_packet_lane accel_set_packet_lane_avx2
-#define accel_packet_consts accel_packet_consts_avx2
 #define bvh4_node_bytes bvh4_node_bytes_avx2
 #define bvh4_leaf_bytes bvh4_leaf_bytes_avx2
 #define bvh4_release bvh4_release_avx2

@@ -120,38 +120,6 @@ struct tri4_packet {
 };
 typedef char tri4_packet_is_160_bytes[sizeof(struct tri4_packet) == 160 ? 1 : -1];
 
-/*
- * The finish's per-triangle constants of a packet, in a side array
- * beside the packets (one record per packet, in packet order, in a
- * block of its own, struct bvh4's consts_raw): per lane the double
- * cross product of the edge vectors n (isect_triangle_doubles, intersect.h: bit for
- * bit the finish's own) and the largest sheared size at which the
- * finish's sliver test passes (isect_proper_size_bound; -inf for a NaN
- * lane).  Read only when a lane reaches the finish, so the packets the
- * filter reads stay 160 bytes (dc1 stored them in the packet, 272
- * bytes, and the memory-bound rays lost a quarter, performance-log.md
- * round 34).  Padded to the packet's 160 bytes so that the record of
- * packet p is at the fixed byte offset `consts_offset` (struct bvh4)
- * from p itself: one addition in the leaf, no index.
- */
-struct tri4_consts {
-    double n[4][3];
-    float proper_size[4];
-    uint32_t pad[12];
-};
-typedef char tri4_consts_is_160_bytes[sizeof(struct tri4_consts) == 160 ? 1 : -1];
-
-/* Packet p's record (struct tri4_consts) at `offset` bytes from it,
- * modulo 2^N: the records are a block of their own (struct bvh4's
- * consts_raw), so the sum is formed on the addresses as integers
- * (uintptr_t, whose wrap-around is defined) rather than as a pointer
- * moved out of the packets' array. */
-static inline const struct tri4_consts *tri4_packet_consts(const struct tri4_packet *p,
-                                                           size_t offset)
-{
-    return (const struct tri4_consts *)(uintptr_t)((uintptr_t)(const void *)p + offset);
-}
-
 struct bvh4 {
     uint32_t width;          /* 4 or 8; 0 when there is no layout */
     uint32_t node_count;     /* 0: no wide layout (empty tree) */
@@ -159,9 +127,6 @@ struct bvh4 {
     struct bvh8_node *nodes8; /* width 8: likewise */
     struct tri4_packet *packets; /* 64-byte aligned inside raw */
     uint32_t packet_count;
-    /* Bytes from a packet to its struct tri4_consts, modulo 2^N
-     * (tri4_packet_consts); the records are in consts_raw. */
-    size_t consts_offset;
     uint32_t *source;        /* width per node: the binary node of each lane (refit) */
     uint32_t *packet_slot;   /* per packet: its first leaf slot (refit) */
     /* 1 when nodes and packets take BVH_WIDE_PREFETCH_BYTES or more: the
@@ -179,9 +144,6 @@ struct bvh4 {
     /* The nodes and packets in one block (rt_malloc_large: 2 MB huge
      * pages where the OS offers them). */
     struct rt_large_block raw;
-    /* The packets' finish constants (struct tri4_consts), packet_count
-     * records; outside raw so that the layout's block keeps its size. */
-    struct rt_large_block consts_raw;
 };
 
 /*
@@ -240,11 +202,6 @@ void accel_refit4(struct bvh4 *wide, const struct bvh *bvh, const float *tri);
  * nine coordinates when it has zero area (the layout above).  Every
  * packet lane is written by this; implemented in lib/accel. */
 void accel_set_packet_lane(struct tri4_packet *p, uint32_t lane, const float v[9]);
-
-/* Packet p's finish constants (struct tri4_consts) from its lanes as
- * stored, every byte of *c written (the padding zero); implemented in
- * lib/accel. */
-void accel_packet_consts(const struct tri4_packet *p, struct tri4_consts *c);
 
 /* Node and packet bytes of a layout (the memory table). */
 uint64_t bvh4_node_bytes(const struct bvh4 *wide);

@@ -340,107 +340,6 @@ static inline int isect_triangle_zero_area(float x0, float y0, float z0, float x
     return nx == 0.0 && ny == 0.0 && nz == 0.0;
 }
 
-/*
- * The ray-independent doubles of a triangle that isect_triangle_finish
- * uses: the edge vectors e1 = v1 - v0, e2 = v2 - v0, e3 = e2 - e1, the
- * cross product n = e1 x e2, n2 = |n|^2, the squared edge lengths l1,
- * l2, l3 and the longest one's, lmax.  One function for the finish and
- * for the wide layout's stored constants (bvh4_layout.h, struct
- * tri4_packet's n and proper_size, filled by accel_set_packet_lane and
- * the collapse's fill_packet), so that a stored double is bit for bit
- * the one the finish would compute: the same expressions in the same
- * order, never contracted (the pragma below; GCC does not contract in
- * ISO C mode).
- */
-struct isect_tri_doubles {
-    double e1x, e1y, e1z, e2x, e2y, e2z, e3x, e3y, e3z;
-    double nx, ny, nz, n2;
-    double l1, l2, l3, lmax;
-};
-
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline void isect_triangle_doubles(float x0, float y0, float z0, float x1, float y1,
-                                          float z1, float x2, float y2, float z2,
-                                          struct isect_tri_doubles *g)
-{
-#if defined(__clang__)
-#pragma STDC FP_CONTRACT OFF
-#endif
-    g->e1x = (double)x1 - x0;
-    g->e1y = (double)y1 - y0;
-    g->e1z = (double)z1 - z0;
-    g->e2x = (double)x2 - x0;
-    g->e2y = (double)y2 - y0;
-    g->e2z = (double)z2 - z0;
-    g->nx = g->e1y * g->e2z - g->e1z * g->e2y;
-    g->ny = g->e1z * g->e2x - g->e1x * g->e2z;
-    g->nz = g->e1x * g->e2y - g->e1y * g->e2x;
-    g->n2 = g->nx * g->nx + g->ny * g->ny + g->nz * g->nz;
-    /* The longest edge (p, p + e). */
-    g->e3x = g->e2x - g->e1x;
-    g->e3y = g->e2y - g->e1y;
-    g->e3z = g->e2z - g->e1z;
-    g->l1 = g->e1x * g->e1x + g->e1y * g->e1y + g->e1z * g->e1z;
-    g->l2 = g->e2x * g->e2x + g->e2y * g->e2y + g->e2z * g->e2z;
-    g->l3 = g->e3x * g->e3x + g->e3y * g->e3y + g->e3z * g->e3z;
-    /* The longest edge's squared length as a maximum (maxsd: `a > b ?
-     * a : b`), without a branch: which edge is longest is a coin toss
-     * for the branch predictor (callgrind, gears' camera rays: the
-     * first comparison went each way 60/40), and only the sliver case
-     * needs to know which edge it is.  The same value as choosing the
-     * first of l1, l2, l3 that is >= the others: the differences of
-     * float coordinates are exact in double and their squares and sums
-     * finite, so no NaN, and equal maxima are the same double (all >=
-     * +0). */
-    const double l12 = g->l1 > g->l2 ? g->l1 : g->l2;
-    g->lmax = l12 > g->l3 ? l12 : g->l3;
-}
-
-/* isect_triangle_finish's test for a proper triangle (not a sliver):
- * height^2 = n2 / lmax at least one rounding of the sheared coordinates
- * of this size, squared.  Monotone in size (size >= 0): 2^-18 size and
- * its square are exact in double for a float size (24-bit significand,
- * no overflow or underflow to zero for a float), and the product with
- * lmax is rounded once, which is monotone; so a triangle passes for
- * every size up to a largest one (isect_proper_size_bound). */
-static inline int isect_proper(double n2, double lmax, float size)
-{
-#if defined(__clang__)
-#pragma STDC FP_CONTRACT OFF
-#endif
-    /* One rounding of the sheared coordinates: 2^-24 of their size. */
-    const double rounding = ISECT_SLIVER_ROUNDINGS * 0x1p-24 * (double)size;
-    return n2 >= rounding * rounding * lmax;
-}
-
-/* The largest float size >= 0 for which isect_proper(n2, lmax, size)
- * holds, or -inf when none does (n2 NaN: a zero-area lane's NaNs) and
- * FLT_MAX when all finite ones do.  Found from sqrt(n2 / lmax) / (2^-18)
- * by stepping one float at a time with isect_proper itself, so it is
- * exact whatever that estimate's rounding: by monotonicity, size <= the
- * bound if and only if isect_proper(n2, lmax, size), for every float
- * size >= 0 (a NaN size fails both).  For the wide layout's packets
- * (struct tri4_packet's proper_size), computed once per triangle. */
-static inline float isect_proper_size_bound(double n2, double lmax)
-{
-    if (!isect_proper(n2, lmax, 0.0f))
-        return -INFINITY;
-    const float big = 0x1.fffffep127f;
-    double guess = sqrt(n2 / lmax) / (ISECT_SLIVER_ROUNDINGS * 0x1p-24);
-    float s = !(guess < (double)big) ? big : (float)guess;
-    while (s > 0.0f && !isect_proper(n2, lmax, s)) {
-        uint32_t bits;
-        memcpy(&bits, &s, sizeof(bits));
-        bits--;
-        memcpy(&s, &bits, sizeof(s));
-    }
-    while (s < big && isect_proper(n2, lmax, isect_next_up(s)))
-        s = isect_next_up(s);
-    return s;
-}
-
 /* isect_triangle_finish_impl's t for a sliver (see there): the ray's
  * closest approach to the longest edge (p, p + e), e1 = v1 - v0, e2 =
  * v2 - v0 (starting at v0) or e3 = e2 - e1 (starting at v1), with their
@@ -484,11 +383,7 @@ static inline double isect_sliver_t(const struct trace_ray *ray, const float v0[
  * constant where it is inlined): the caller knows the triangle is not
  * isect_triangle_zero_area (a packet lane the filter kept: such a lane
  * is marked NaN when the packet is filled), so the zero-area test, which
- * would pass, is left out; every other step is the same.  n_known (a
- * packet lane's stored normal, with proper_size its sliver bound,
- * struct tri4_packet; NULL elsewhere, a constant where it is inlined):
- * for a size at or below the bound the plane distance takes the stored
- * normal instead of computing the triangle's doubles.
+ * would pass, is left out; every other step is the same.
  */
 #if defined(__GNUC__)
 __attribute__((always_inline))
@@ -498,29 +393,48 @@ static inline int isect_triangle_finish_impl(const struct trace_ray *ray, float 
                                              float y2, float z2, float U, float V, float W,
                                              float det, float Az, float Bz, float Cz,
                                              float size, float t_lo, float t_hi, float t_max,
-                                             int area_known, const double *n_known,
-                                             float proper_size, float *t_out, float *u_out,
+                                             int area_known, float *t_out, float *u_out,
                                              float *v_out)
 {
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
 #endif
-    /* v0, v1 by value (isect_triangle_finish below takes them by
+    /* The vertices by value (isect_triangle_finish below takes them by
      * pointer): the packet leaf (intersect_tri4.h) passes a lane's
      * coordinates straight from the packet, without copying them to
      * three arrays first. */
     const float v0[3] = {x0, y0, z0};
     const float v1[3] = {x1, y1, z1};
+    const float v2[3] = {x2, y2, z2};
     const float rcp_det = 1.0f / det;
-    const double dx = ray->dir[0];
-    const double dy = ray->dir[1];
-    const double dz = ray->dir[2];
+
+    /* A triangle whose vertices are collinear can still project to a tiny
+     * non-zero area once the sheared coordinates are rounded (measured:
+     * about one ray in ten aimed at such a triangle hit it).  It has no
+     * area, so it is never hit: the edge vectors' cross product in double
+     * is exactly zero for collinear float vertices (the differences are
+     * exact when the coordinates are within 2^29 of each other, and equal
+     * products round equally).  Our addition to the paper; it runs only
+     * for candidate hits.  A closed mesh that contains such a triangle
+     * can leak through the sliver its rounded projection covers; meshes
+     * without zero-area triangles keep the paper's guarantee. */
+    const double e1x = (double)v1[0] - v0[0];
+    const double e1y = (double)v1[1] - v0[1];
+    const double e1z = (double)v1[2] - v0[2];
+    const double e2x = (double)v2[0] - v0[0];
+    const double e2y = (double)v2[1] - v0[1];
+    const double e2z = (double)v2[2] - v0[2];
+    const double nx = e1y * e2z - e1z * e2y;
+    const double ny = e1z * e2x - e1x * e2z;
+    const double nz = e1x * e2y - e1y * e2x;
+    if (!area_known && nx == 0.0 && ny == 0.0 && nz == 0.0)
+        return 0;
+
     /* t.  The paper's T / det is only as good as U, V, W: fine for a
      * proper triangle, but for a sliver thinner than the rounding of the
      * sheared coordinates the weights are noise and T / det lands anywhere
      * between the vertices' depths.  So (our addition too) t comes from
-     * geometry computed in double from the exact edge vectors
-     * (isect_triangle_doubles):
+     * geometry computed in double from the exact edge vectors above:
      * - a proper triangle: the distance to its plane;
      * - a sliver, whose height is below ISECT_SLIVER_ROUNDINGS roundings
      *   of the sheared coordinates: there the edge test itself cannot
@@ -531,55 +445,49 @@ static inline int isect_triangle_finish_impl(const struct trace_ray *ray, float 
      * ray parallel to the plane, or to the edge).  Whichever it is, t is
      * then clamped into the triangle's box (isect_clamp_to_box). */
     float t = (U * Az + V * Bz + W * Cz) * rcp_det;
-    double tp = NAN;
-    if (n_known && size <= proper_size) {
-        /* A packet lane with its stored constants (struct tri4_packet's
-         * n and proper_size, from isect_triangle_doubles and
-         * isect_proper_size_bound at fill time): n is bit for bit the
-         * cross product computed below, and size <= proper_size exactly
-         * when isect_proper(n2, lmax, size) holds, so this is the proper
-         * branch below on the same doubles, without the triangle's own
-         * set-up.  Otherwise (size above the bound: a sliver for this
-         * ray; or a NaN size) the general path decides. */
-        const double den = n_known[0] * dx + n_known[1] * dy + n_known[2] * dz;
-        const double num = n_known[0] * ((double)v0[0] - ray->org[0]) +
-                           n_known[1] * ((double)v0[1] - ray->org[1]) +
-                           n_known[2] * ((double)v0[2] - ray->org[2]);
-        if (den != 0.0)
-            tp = num / den;
-    } else {
-        /* A triangle whose vertices are collinear can still project to a
-         * tiny non-zero area once the sheared coordinates are rounded
-         * (measured: about one ray in ten aimed at such a triangle hit
-         * it).  It has no area, so it is never hit: the edge vectors'
-         * cross product in double is exactly zero for collinear float
-         * vertices (the differences are exact when the coordinates are
-         * within 2^29 of each other, and equal products round equally).
-         * Our addition to the paper; it runs only for candidate hits.  A
-         * closed mesh that contains such a triangle can leak through the
-         * sliver its rounded projection covers; meshes without zero-area
-         * triangles keep the paper's guarantee. */
-        struct isect_tri_doubles g;
-        isect_triangle_doubles(x0, y0, z0, x1, y1, z1, x2, y2, z2, &g);
-        if (!area_known && g.nx == 0.0 && g.ny == 0.0 && g.nz == 0.0)
-            return 0;
-        if (isect_proper(g.n2, g.lmax, size)) {
+    {
+        const double dx = ray->dir[0];
+        const double dy = ray->dir[1];
+        const double dz = ray->dir[2];
+        const double n2 = nx * nx + ny * ny + nz * nz;
+        /* The longest edge (p, p + e). */
+        const double e3x = e2x - e1x;
+        const double e3y = e2y - e1y;
+        const double e3z = e2z - e1z;
+        const double l1 = e1x * e1x + e1y * e1y + e1z * e1z;
+        const double l2 = e2x * e2x + e2y * e2y + e2z * e2z;
+        const double l3 = e3x * e3x + e3y * e3y + e3z * e3z;
+        /* The longest edge's squared length as a maximum (maxsd: `a > b ?
+         * a : b`), without a branch: which edge is longest is a coin toss
+         * for the branch predictor (callgrind, gears' camera rays: the
+         * first comparison went each way 60/40), and only the sliver
+         * case below needs to know which edge it is.  The same value as
+         * choosing the first of l1, l2, l3 that is >= the others: the
+         * differences of float coordinates are exact in double and their
+         * squares and sums finite, so no NaN, and equal maxima are the
+         * same double (all >= +0). */
+        const double l12 = l1 > l2 ? l1 : l2;
+        const double lmax = l12 > l3 ? l12 : l3;
+        /* One rounding of the sheared coordinates: 2^-24 of their size. */
+        const double rounding = ISECT_SLIVER_ROUNDINGS * 0x1p-24 * (double)size;
+        double tp = NAN;
+        if (n2 >= rounding * rounding * lmax) {
             /* height^2 = n2 / lmax: a proper triangle. */
-            const double den = g.nx * dx + g.ny * dy + g.nz * dz;
-            const double num = g.nx * ((double)v0[0] - ray->org[0]) +
-                               g.ny * ((double)v0[1] - ray->org[1]) +
-                               g.nz * ((double)v0[2] - ray->org[2]);
+            const double den = nx * dx + ny * dy + nz * dz;
+            const double num = nx * ((double)v0[0] - ray->org[0]) +
+                               ny * ((double)v0[1] - ray->org[1]) +
+                               nz * ((double)v0[2] - ray->org[2]);
             if (den != 0.0)
                 tp = num / den;
         } else {
-            const double e1[3] = {g.e1x, g.e1y, g.e1z};
-            const double e2[3] = {g.e2x, g.e2y, g.e2z};
-            const double e3[3] = {g.e3x, g.e3y, g.e3z};
-            tp = isect_sliver_t(ray, v0, v1, e1, e2, e3, g.l1, g.l2, g.l3);
+            const double e1[3] = {e1x, e1y, e1z};
+            const double e2[3] = {e2x, e2y, e2z};
+            const double e3[3] = {e3x, e3y, e3z};
+            tp = isect_sliver_t(ray, v0, v1, e1, e2, e3, l1, l2, l3);
         }
+        if (!isnan(tp))
+            t = (float)tp;
     }
-    if (!isnan(tp))
-        t = (float)tp;
     t = isect_clamp_to_box(t_lo, t_hi, t);
     if (!(t >= ray->tmin && t < t_max) || !isfinite(t))
         return 0;
@@ -598,8 +506,7 @@ static inline int isect_triangle_finish9(const struct trace_ray *ray, float x0, 
                                          float *u_out, float *v_out)
 {
     return isect_triangle_finish_impl(ray, x0, y0, z0, x1, y1, z1, x2, y2, z2, U, V, W, det, Az,
-                                      Bz, Cz, size, t_lo, t_hi, t_max, 0, NULL, 0.0f, t_out, u_out,
-                                      v_out);
+                                      Bz, Cz, size, t_lo, t_hi, t_max, 0, t_out, u_out, v_out);
 }
 
 static inline int isect_triangle_finish(const struct trace_ray *ray, const float v0[3],
@@ -649,8 +556,7 @@ static inline int isect_triangle_occludes_impl(const struct trace_ray *ray, floa
         return area_known || !isect_triangle_zero_area(x0, y0, z0, x1, y1, z1, x2, y2, z2);
     float t, u, v;
     return isect_triangle_finish_impl(ray, x0, y0, z0, x1, y1, z1, x2, y2, z2, U, V, W, det, Az,
-                                      Bz, Cz, size, t_lo, t_hi, t_max, area_known, NULL, 0.0f, &t,
-                                      &u, &v);
+                                      Bz, Cz, size, t_lo, t_hi, t_max, area_known, &t, &u, &v);
 }
 
 static inline int isect_triangle_occludes9(const struct trace_ray *ray, float x0, float y0,

@@ -709,9 +709,8 @@ static inline float tri4_lane_sheared(const struct trace_ray *ray, const struct 
  * answer bit for bit.
  */
 static inline int tri4_lane_test(const struct trace_ray *ray, const struct tri4_packet *p,
-                                 const struct tri4_consts *c, const struct tri4_lanes *lanes,
-                                 unsigned l, int any_hit, float t_max, float *t, float *u,
-                                 float *w)
+                                 const struct tri4_lanes *lanes, unsigned l, int any_hit,
+                                 float t_max, float *t, float *u, float *w)
 {
     float U = lanes->U[l], V = lanes->V[l], W = lanes->W[l], det = lanes->det[l];
     /* The any-hit filter leaves size and the sheared x, y to this lane
@@ -760,10 +759,7 @@ static inline int tri4_lane_test(const struct trace_ray *ray, const struct tri4_
     /* The lane's coordinates straight from the packet (no copy).  The
      * filter kept the lane, so its coordinates are not NaN: the packet
      * holds a triangle with an area (accel_set_packet_lane), and the
-     * finish's zero-area test, which would pass, is left out; the
-     * packet's record in the side array, c (struct tri4_consts: the
-     * stored normal and sliver bound), spares a proper triangle's
-     * finish its own doubles, and is read only here. */
+     * finish's zero-area test, which would pass, is left out. */
     if (any_hit) {
         /* isect_triangle_occludes_impl with area_known, its short way
          * first: that needs no size. */
@@ -775,15 +771,13 @@ static inline int tri4_lane_test(const struct trace_ray *ray, const struct tri4_
         return isect_triangle_finish_impl(
             ray, p->v[0][0][l], p->v[0][1][l], p->v[0][2][l], p->v[1][0][l], p->v[1][1][l],
             p->v[1][2][l], p->v[2][0][l], p->v[2][1][l], p->v[2][2][l], U, V, W, det, Az, Bz,
-            Cz, size, lanes->t_lo[l], lanes->t_hi[l], t_max, 1, c->n[l], c->proper_size[l], &tt,
-            &uu, &ww);
+            Cz, size, lanes->t_lo[l], lanes->t_hi[l], t_max, 1, &tt, &uu, &ww);
     }
     return isect_triangle_finish_impl(ray, p->v[0][0][l], p->v[0][1][l], p->v[0][2][l],
                                       p->v[1][0][l], p->v[1][1][l], p->v[1][2][l],
                                       p->v[2][0][l], p->v[2][1][l], p->v[2][2][l], U, V, W, det,
                                       Az, Bz, Cz, size, lanes->t_lo[l],
-                                      lanes->t_hi[l], t_max, 1, c->n[l], c->proper_size[l], t,
-                                      u, w);
+                                      lanes->t_hi[l], t_max, 1, t, u, w);
 }
 
 #endif

@@ -81,11 +81,10 @@ struct trace_kernels {
     /* The 8-wide walks' leaf test on its own (traverse_wide.h,
      * TRACE_WIDE_LEAF8), for conformance/internal/tri4_differential:
      * the n triangles of p[0], p[1] with the 8-lane call (eight 1) or
-     * the 4-lane calls (eight 0); their finish constants (struct
-     * tri4_consts) at consts_offset bytes from each packet.  NULL in the
-     * tables without the 8-wide walk (scalar, SSE4.2). */
-    int (*leaf8)(const struct trace_ray *ray, const struct tri4_packet *p, size_t consts_offset,
-                 uint32_t n, float t_max, int any_hit, int early_out, int eight, int found,
+     * the 4-lane calls (eight 0).  NULL in the tables without the
+     * 8-wide walk (scalar, SSE4.2). */
+    int (*leaf8)(const struct trace_ray *ray, const struct tri4_packet *p, uint32_t n,
+                 float t_max, int any_hit, int early_out, int eight, int found,
                  struct trace_hit *hit);
     /* The top level's node tests (top_lanes.h): a packet's, eight rays a
      * register, NULL in the tables without 256-bit lanes (packet_scene.c

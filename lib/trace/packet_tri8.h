@@ -14,12 +14,11 @@
  * near end by `inv < 0` as a blend on that comparison per lane.  A lane
  * it rejects is one isect_triangle rejects.  The rest of
  * isect_triangle_finish is carried on in the lanes too for the common
- * case, in double where it is double: the normal and the sliver test's
- * bound depend on the triangle only (stored in the packet, computed
- * with the finish's own function when it is filled; the zero-area test
- * is the packet's NaN lane, bvh4_layout.h); per lane, the sliver test
- * (the size against the bound), the plane distance num / den (two
- * halves of four doubles,
+ * case, in double where it is double: the squared normal and longest
+ * edge depend on the triangle only (computed once per triangle, with
+ * finish's own expressions, and only when a lane needs them; the
+ * zero-area test is the packet's NaN lane, bvh4_layout.h); per lane, the
+ * sliver test, the plane distance num / den (two halves of four doubles,
  * only those with a candidate lane; the same
  * operations in the same order; a correctly rounded division and
  * conversion to float are the same in a lane as in a scalar register),
@@ -231,8 +230,7 @@ struct tri8_result {
 __attribute__((always_inline))
 #endif
 static inline unsigned tri8_test(const struct tri8_rays *r, const struct tri4_packet *q,
-                                 const struct tri4_consts *c, const float *const vk[3],
-                                 unsigned l, unsigned lanes,
+                                 const float *const vk[3], unsigned l, unsigned lanes,
                                  __m256 limit, int any_hit, struct tri8_result *res)
 {
     res->t = res->u = res->v = _mm256_setzero_ps();
@@ -340,6 +338,24 @@ static inline unsigned tri8_test(const struct tri8_rays *r, const struct tri4_pa
             return deferred;
     }
 
+    const double e1x = (double)q->v[1][0][l] - q->v[0][0][l];
+    const double e1y = (double)q->v[1][1][l] - q->v[0][1][l];
+    const double e1z = (double)q->v[1][2][l] - q->v[0][2][l];
+    const double e2x = (double)q->v[2][0][l] - q->v[0][0][l];
+    const double e2y = (double)q->v[2][1][l] - q->v[0][1][l];
+    const double e2z = (double)q->v[2][2][l] - q->v[0][2][l];
+    const double nx = e1y * e2z - e1z * e2y;
+    const double ny = e1z * e2x - e1x * e2z;
+    const double nz = e1x * e2y - e1y * e2x;
+    const double n2 = nx * nx + ny * ny + nz * nz;
+    const double e3x = e2x - e1x;
+    const double e3y = e2y - e1y;
+    const double e3z = e2z - e1z;
+    const double l1 = e1x * e1x + e1y * e1y + e1z * e1z;
+    const double l2 = e2x * e2x + e2y * e2y + e2z * e2z;
+    const double l3 = e3x * e3x + e3y * e3y + e3z * e3z;
+    const double lmax = l1 >= l2 && l1 >= l3 ? l1 : (l2 >= l3 ? l2 : l3);
+
     /* isect_triangle's size: max(max(|Ax|, |Ay|), max(|Bx|, |By|)), then
      * max with max(|Cx|, |Cy|). */
     const __m256 sign = _mm256_set1_ps(-0.0f);
@@ -349,26 +365,13 @@ static inline unsigned tri8_test(const struct tri8_rays *r, const struct tri4_pa
     size = _mm256_max_ps(
         size, _mm256_max_ps(_mm256_andnot_ps(sign, sh.Cx), _mm256_andnot_ps(sign, sh.Cy)));
 
-    /* The triangle's normal and sliver bound as the packet's record c in
-     * the side array holds them (bvh4_layout.h, struct tri4_consts:
-     * isect_triangle_doubles' cross product, bit for bit
-     * the finish's, and isect_proper_size_bound): a lane is a proper
-     * triangle for isect_triangle_finish exactly when its size is at most
-     * the bound (isect_proper is monotone in the size; a NaN size fails
-     * both), so the lanes above it are the slivers, sent to the scalar
-     * test as before. */
-    const unsigned proper = (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(
-        size, _mm256_broadcast_ss(&c->proper_size[l]), _CMP_LE_OQ));
-    res->scalar |= cand & ~proper;
-    cand &= proper;
-    if (!cand)
-        return res->hit | res->scalar;
-    const __m256d n_x = _mm256_broadcast_sd(&c->n[l][0]);
-    const __m256d n_y = _mm256_broadcast_sd(&c->n[l][1]);
-    const __m256d n_z = _mm256_broadcast_sd(&c->n[l][2]);
+    const __m256d n_x = _mm256_set1_pd(nx), n_y = _mm256_set1_pd(ny), n_z = _mm256_set1_pd(nz);
     const __m256d p_x = _mm256_set1_pd((double)q->v[0][0][l]);
     const __m256d p_y = _mm256_set1_pd((double)q->v[0][1][l]);
     const __m256d p_z = _mm256_set1_pd((double)q->v[0][2][l]);
+    const __m256d rounding_scale = _mm256_set1_pd(ISECT_SLIVER_ROUNDINGS * 0x1p-24);
+    const __m256d lmax_d = _mm256_set1_pd(lmax);
+    const __m256d n2_d = _mm256_set1_pd(n2);
     /* Only the halves (four lanes each) with a candidate: a packet's
      * candidates are often all among four neighbouring rays. */
     __m128 t_half[2] = {_mm_setzero_ps(), _mm_setzero_ps()};
@@ -376,6 +379,10 @@ static inline unsigned tri8_test(const struct tri8_rays *r, const struct tri4_pa
     for (int h = 0; h < 2; h++) {
         if (!(cand >> (4 * h) & 0xfu))
             continue;
+        const __m128 size_h = h ? _mm256_extractf128_ps(size, 1) : _mm256_castps256_ps128(size);
+        const __m256d rounding = _mm256_mul_pd(rounding_scale, _mm256_cvtps_pd(size_h));
+        const __m256d proper = _mm256_cmp_pd(
+            n2_d, _mm256_mul_pd(_mm256_mul_pd(rounding, rounding), lmax_d), _CMP_GE_OQ);
         const __m256d den = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(n_x, r->dir_d[0][h]),
                                                         _mm256_mul_pd(n_y, r->dir_d[1][h])),
                                           _mm256_mul_pd(n_z, r->dir_d[2][h]));
@@ -384,9 +391,8 @@ static inline unsigned tri8_test(const struct tri8_rays *r, const struct tri4_pa
                           _mm256_mul_pd(n_y, _mm256_sub_pd(p_y, r->org_d[1][h]))),
             _mm256_mul_pd(n_z, _mm256_sub_pd(p_z, r->org_d[2][h])));
         const __m256d tp = _mm256_div_pd(num, den);
-        const __m256d good =
-            _mm256_and_pd(_mm256_cmp_pd(den, _mm256_setzero_pd(), _CMP_NEQ_UQ),
-                          _mm256_cmp_pd(tp, tp, _CMP_ORD_Q));
+        __m256d good = _mm256_and_pd(proper, _mm256_cmp_pd(den, _mm256_setzero_pd(), _CMP_NEQ_UQ));
+        good = _mm256_and_pd(good, _mm256_cmp_pd(tp, tp, _CMP_ORD_Q));
         ok |= (unsigned)_mm256_movemask_pd(good) << (4 * h);
         t_half[h] = _mm256_cvtpd_ps(tp);
     }

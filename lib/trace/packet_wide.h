@@ -82,7 +82,6 @@ struct packet_entry {
  * far bound rows per axis and its octant (traverse_wide.h). */
 struct packet_state {
     struct wide_state s[TRACE_PACKET];
-    size_t consts_offset; /* the layout's (struct bvh4): the finish's constants */
     int near_row[TRACE_PACKET][3];
     int far_row[TRACE_PACKET][3];
     int octant[TRACE_PACKET];
@@ -184,7 +183,7 @@ static inline struct wide_state *packet_ready(struct packet_state *p, unsigned r
         packet_rays_ready(p);
         p->s_ready |= 1u << r;
         wide_state_init(s, &p->rays[r], p->t_max[r], p->any_hit,
-                        p->any_hit ? NULL : &p->hits[r], p->consts_offset);
+                        p->any_hit ? NULL : &p->hits[r]);
     }
     return s;
 }
@@ -344,8 +343,7 @@ static inline unsigned packet_leaf8_body(struct packet_state *p,
                 tris &= tris - 1u;
             }
             struct tri8_result res;
-            if (!tri8_test(&p->t8, q, tri4_packet_consts(q, p->consts_offset), vk, l, rays,
-                           _mm256_loadu_ps(limit), any_hit, &res))
+            if (!tri8_test(&p->t8, q, vk, l, rays, _mm256_loadu_ps(limit), any_hit, &res))
                 continue;
             unsigned lanes = res.hit | res.scalar;
             if (any_hit) {
@@ -1310,7 +1308,6 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
         p.t_max = t_max;
         p.hits = hits;
         p.any_hit = any_hit;
-        p.consts_offset = wide->consts_offset;
         p.s_ready = 0;
         p.node_tests = 0;
 
@@ -1374,8 +1371,7 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
         for (unsigned r = 0; r < TRACE_PACKET; r++) {
             if (!(active >> r & 1u))
                 continue;
-            wide_state_init(&p.s[r], &rays[r], t_max[r], any_hit, any_hit ? NULL : &hits[r],
-                            wide->consts_offset);
+            wide_state_init(&p.s[r], &rays[r], t_max[r], any_hit, any_hit ? NULL : &hits[r]);
         }
 #if defined(__AVX__)
         p.s_ready = active;

@@ -68,9 +68,6 @@ struct wide_state {
     float box_limit;
     uint64_t node_tests;
     uint64_t triangle_tests;
-    /* The layout's consts_offset (struct bvh4): a packet's finish
-     * constants, struct tri4_consts, at this many bytes from it. */
-    size_t consts_offset;
 };
 
 /* walk_wide's state for a ray: no hit yet, the limits of t_max. */
@@ -78,9 +75,8 @@ struct wide_state {
 __attribute__((always_inline))
 #endif
 static inline void wide_state_init(struct wide_state *s, const struct trace_ray *ray, float t_max,
-                                   int any_hit, struct trace_hit *hit, size_t consts_offset)
+                                   int any_hit, struct trace_hit *hit)
 {
-    s->consts_offset = consts_offset;
     /* s->r4, which only the leaves read, is the caller's to set:
      * walk_wide8_ray sets it at the ray's first leaf. */
     s->ray = ray;
@@ -106,10 +102,8 @@ static inline void wide_state_init(struct wide_state *s, const struct trace_ray 
 __attribute__((always_inline))
 #endif
 static inline void wide_state_init1(struct wide_state *s, const struct trace_ray *ray,
-                                    float t_max, int any_hit, int stats, struct trace_hit *hit,
-                                    size_t consts_offset)
+                                    float t_max, int any_hit, int stats, struct trace_hit *hit)
 {
-    s->consts_offset = consts_offset;
     s->ray = ray;
     s->best = t_max;
     if (!any_hit) {
@@ -228,8 +222,7 @@ static inline int wide_packet_test(struct wide_state *s, const struct tri4_packe
             continue;
         float t, u, w;
         limit = !any_hit && s->found ? isect_next_up(s->best) : s->best;
-        if (!tri4_lane_test(s->ray, p, tri4_packet_consts(p, s->consts_offset), &lanes, l, any_hit,
-                            limit, &t, &u, &w))
+        if (!tri4_lane_test(s->ray, p, &lanes, l, any_hit, limit, &t, &u, &w))
             continue;
         if (any_hit) {
             s->found = 1;
@@ -829,7 +822,7 @@ static inline int wide8_walk_end(const struct wide_state *s, int done, int any_h
                     struct trace_hit *hit, struct trace_counters *counters)                     \
     {                                                                                           \
         struct wide_state s;                                                                    \
-        wide_state_init1(&s, ray, t_max, any_hit, stats, hit, wide->consts_offset);             \
+        wide_state_init1(&s, ray, t_max, any_hit, stats, hit);                                  \
         if (!(ray->tmin >= 0.0f))                                                               \
             return wide8_walk_end(&s, wide8_walk_tmin_other(wide, &s, any_hit, stats), any_hit, \
                                   stats, counters);                                             \
@@ -910,8 +903,7 @@ static inline int wide_leaf8_test(struct wide_state *s, const struct tri4_packet
             continue;
         float t, u, w;
         limit = !any_hit && s->found ? isect_next_up(s->best) : s->best;
-        if (!tri4_lane_test(s->ray, q, tri4_packet_consts(q, s->consts_offset), &lanes[k], l & 3u,
-                            any_hit, limit, &t, &u, &w))
+        if (!tri4_lane_test(s->ray, q, &lanes[k], l & 3u, any_hit, limit, &t, &u, &w))
             continue;
         if (any_hit) {
             s->found = 1;
@@ -991,7 +983,7 @@ static inline void tri4_ray_init_lanes(struct tri4_ray *r, const struct ray_lane
         struct ray_lanes lanes;                                                                 \
         trace_ray_setup_lanes(&ray, &lanes, org, dir, tmin);                                    \
         struct wide_state s;                                                                    \
-        wide_state_init1(&s, &ray, t_max, any_hit, stats, hit, wide->consts_offset);            \
+        wide_state_init1(&s, &ray, t_max, any_hit, stats, hit);                                 \
         if (!(tmin >= 0.0f))                                                                    \
             return wide8_walk_end(&s, wide8_walk_tmin_other(wide, &s, any_hit, stats), any_hit, \
                                   stats, counters);                                             \
@@ -1035,19 +1027,18 @@ static const trace_walk1_fn TRACE_WIDE_WALK1_COUNTED[4] = {
 /*
  * The leaf of the 8-wide walks on its own, for
  * conformance/internal/tri4_differential: the n triangles of p[0], p[1]
- * (n up to 8; their finish constants at consts_offset bytes from each
- * packet, struct tri4_consts), eight 1 with the 8-lane call of the leaf8 walks for
+ * (n up to 8), eight 1 with the 8-lane call of the leaf8 walks for
  * 5-8 triangles, 0 with the 4-lane calls on each packet in turn; early_out
  * picks the closest-hit copy (wide8_leaf8_closest or _full).  found 1:
  * *hit is an earlier leaf's hit, whose t is the limit (walk_leaf's rule).
  * Returns found (closest) or occluded (any hit).
  */
-static int TRACE_WIDE_LEAF8(const struct trace_ray *ray, const struct tri4_packet *p,
-                            size_t consts_offset, uint32_t n, float t_max, int any_hit,
-                            int early_out, int eight, int found, struct trace_hit *hit)
+static int TRACE_WIDE_LEAF8(const struct trace_ray *ray, const struct tri4_packet *p, uint32_t n,
+                     float t_max, int any_hit, int early_out, int eight, int found,
+                     struct trace_hit *hit)
 {
     struct wide_state s;
-    wide_state_init(&s, ray, t_max, any_hit, hit, consts_offset);
+    wide_state_init(&s, ray, t_max, any_hit, hit);
     if (!any_hit && found) {
         s.found = 1;
         s.best = hit->t;
@@ -1101,7 +1092,7 @@ static int wide4_walk_tmin_other(const struct bvh4 *wide, struct wide_state *s, 
                     struct trace_hit *hit, struct trace_counters *counters)                     \
     {                                                                                           \
         struct wide_state s;                                                                    \
-        wide_state_init(&s, ray, t_max, any_hit, hit, wide->consts_offset);                     \
+        wide_state_init(&s, ray, t_max, any_hit, hit);                                          \
         tri4_ray_init(&s.r4, ray);                                                              \
         const int done = ray->tmin >= 0.0f                                                      \
                              ? walk_wide4_body(wide, &s, 0, 0, any_hit, stats, 1)               \
