@@ -172,7 +172,8 @@ struct build_faults {
 };
 
 /* Build times on `threads` threads: ours (serial binned SAH on one
- * thread, accel_build_parallel on pool otherwise) and Embree's qualities
+ * thread, accel_build_parallel_triangles on pool otherwise, through
+ * bench_accel_build_pool) and Embree's qualities
  * on a device of that many threads, interleaved runs; --only picks the
  * paths (ours, low, medium, high).  *row_faults receives the medians of
  * the minor page faults around the same timed calls. */
