@@ -76,6 +76,7 @@ int bench_accel_build(struct bench_accel *acc, const struct bench_mesh *mesh,
     return bench_accel_build_pool(acc, mesh, params, NULL);
 }
 
+
 int bench_accel_build_pool(struct bench_accel *acc, const struct bench_mesh *mesh,
                            const struct bvh_build_params *params, struct rt_pool *pool)
 {
@@ -89,12 +90,10 @@ int bench_accel_build_pool(struct bench_accel *acc, const struct bench_mesh *mes
         rc = accel_build_parallel_triangles(&acc->bvh, mesh->positions, mesh->indices,
                                             mesh->tri_count, params, pool, &spare);
     } else {
-        struct aabb *boxes =
-            accel_triangle_boxes_pool(mesh->positions, mesh->indices, mesh->tri_count, NULL);
-        if (!boxes)
-            return -1;
-        rc = accel_build(&acc->bvh, boxes, mesh->tri_count, params);
-        rt_free(boxes);
+        /* The serial builder from the triangles too (no box array), its
+         * refs' mapping for the collapse when large. */
+        rc = accel_build_triangles(&acc->bvh, mesh->positions, mesh->indices, mesh->tri_count,
+                                   params, &spare);
     }
     if (rc)
         return -1;

@@ -862,6 +862,48 @@ static void check_triangle_entry(void)
             bvh_release(&tri);
             bvh_release(&ref);
         }
+        /* The serial entry (accel_build_triangles): the tree accel_build
+         * gives on the same boxes, for the binned builder (the boxes
+         * computed in its set-up, with the root's bounds) and the sweep
+         * builder (a box array), on the whole mesh and on prefixes
+         * around the small-node thresholds. */
+        static const uint32_t counts[] = {0, 1, 2, 9, 100, 40000};
+        for (int builder = 0; builder < 2 && boxes; builder++) {
+            struct bvh_build_params p;
+            bvh_build_params_default(&p);
+            p.builder = builder ? BVH_BUILDER_SWEEP_SAH : BVH_BUILDER_BINNED_SAH;
+            for (size_t c = 0; c < sizeof(counts) / sizeof(counts[0]); c++) {
+                const uint32_t n = counts[c] < m.tri_count ? counts[c] : m.tri_count;
+                if (builder && n > 1000)
+                    continue; /* the sweep is slow; its entry only takes boxes */
+                struct rt_large_block serial_spare = {(void *)1, 1};
+                ok = !accel_build(&ref, boxes, n, &p);
+                failures += !CHECKF(ok, "serial triangle entry: the reference build failed");
+                if (!ok)
+                    continue;
+                failures += !CHECKF(!accel_build_triangles(&tri, m.pos, m.idx, n, &p, &serial_spare),
+                                    "serial triangle entry (builder %d, NaN %d, %u): failed",
+                                    builder, nan, n);
+                failures += !CHECKF(bvh_same_tree(&tri, &ref),
+                                    "serial triangle entry (builder %d, NaN %d, %u): another tree",
+                                    builder, nan, n);
+                if (!builder) {
+                    /* The portable forms' set-up from the triangles too. */
+                    const struct build_source src = {NULL, m.pos, m.idx};
+                    struct bvh plain;
+                    failures += !CHECKF(!build_binned_sah_source(&plain, &src, n, &p, 0, NULL) &&
+                                            bvh_same_tree(&plain, &ref),
+                                        "serial triangle entry (portable forms, NaN %d, %u)",
+                                        nan, n);
+                    bvh_release(&plain);
+                }
+                /* Under BUILD_SPARE_MIN: no mapping, and the spare zeroed. */
+                failures += !CHECKF(!serial_spare.base && !serial_spare.bytes,
+                                    "serial triangle entry: a spare for %u triangles", n);
+                bvh_release(&tri);
+                bvh_release(&ref);
+            }
+        }
         rt_free(boxes);
     }
     tg_mesh_free(&m);

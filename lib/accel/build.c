@@ -98,6 +98,28 @@ int accel_build(struct bvh *out, const struct aabb *prim_boxes, uint32_t prim_co
     return accel_build_binned_sah(out, prim_boxes, prim_count, &p);
 }
 
+int accel_build_triangles(struct bvh *out, const float *positions, const uint32_t *indices,
+                          uint32_t prim_count, const struct bvh_build_params *params,
+                          struct rt_large_block *spare)
+{
+    struct bvh_build_params p;
+    accel_build_params_normalize(&p, params);
+    if (p.builder == BVH_BUILDER_BINNED_SAH) {
+        const struct build_source src = {NULL, positions, indices};
+        return build_binned_sah_source(out, &src, prim_count, &p, 1, spare);
+    }
+    if (spare)
+        memset(spare, 0, sizeof(*spare));
+    struct aabb *boxes = accel_triangle_boxes_pool(positions, indices, prim_count, NULL);
+    if (!boxes) {
+        memset(out, 0, sizeof(*out));
+        return -1;
+    }
+    const int rc = accel_build_sweep_sah(out, boxes, prim_count, &p);
+    rt_free(boxes);
+    return rc;
+}
+
 int accel_build_begin(struct bvh *out, struct bvh_build_params *p,
                       const struct bvh_build_params *params, uint32_t prim_count)
 {

@@ -26,6 +26,7 @@
 
 #include "accel/build_internal.h"
 #include "accel/build_median.h"
+#include "accel/triangle_box.h"
 #include "accel/vec4.h"
 #include "base/alloc.h"
 
@@ -488,17 +489,14 @@ static int centroids_coincide(const struct cbounds *cb)
     return !(cb->hi[0] > cb->lo[0]) && !(cb->hi[1] > cb->lo[1]) && !(cb->hi[2] > cb->lo[2]);
 }
 
-int build_binned_sah_refs(struct bvh_node *nodes, struct build_ref *refs, uint32_t prim_count,
-                          const struct bvh_build_params *params, int simd, uint32_t *node_count_out,
-                          uint32_t *depth_out)
+/* The build of refs[0, prim_count) whose bounds (range_bounds') are
+ * root_box and root_cb: build_binned_sah_refs after its bounds pass, or
+ * build_binned_sah_source after a set-up that computed them. */
+static int binned_build_refs(struct bvh_node *nodes, struct build_ref *refs, uint32_t prim_count,
+                             const struct bvh_build_params *params, int simd,
+                             const struct aabb *root_box, const struct cbounds *root_cb,
+                             uint32_t *node_count_out, uint32_t *depth_out)
 {
-#if !defined(BUILD_BINNED_UNIT_AVX2)
-    /* The same source compiled for AVX2, where it runs
-     * (build_binned_sah_avx2.c): the same tree in fewer instructions. */
-    const build_binned_refs_fn avx2 = simd ? build_binned_sah_refs_avx2_unit() : NULL;
-    if (avx2)
-        return avx2(nodes, refs, prim_count, params, simd, node_count_out, depth_out);
-#endif
     const struct bvh_build_params p = *params;
     /* Aligned to 64 (rt_align64): fill_bins stores whole 32-byte records. */
     void *bins_block;
@@ -515,9 +513,8 @@ int build_binned_sah_refs(struct bvh_node *nodes, struct build_ref *refs, uint32
     char *bin_count_base = (char *)bins->count;
     struct task stack[BUILD_STACK_SIZE];
     struct task *t = &stack[0];
-    struct aabb root_box;
-    range_bounds(refs, 0, prim_count, &root_box, &t->cb);
-    build_set_box(&nodes[0], &root_box);
+    t->cb = *root_cb;
+    build_set_box(&nodes[0], root_box);
     t->r.begin = 0;
     t->r.end = prim_count;
     t->r.node = 0;
@@ -615,40 +612,148 @@ int build_binned_sah_refs(struct bvh_node *nodes, struct build_ref *refs, uint32
     return 0;
 }
 
-int build_binned_sah_forms(struct bvh *out, const struct aabb *prim_boxes, uint32_t prim_count,
-                           const struct bvh_build_params *params, int simd)
+int build_binned_sah_refs(struct bvh_node *nodes, struct build_ref *refs, uint32_t prim_count,
+                          const struct bvh_build_params *params, int simd, uint32_t *node_count_out,
+                          uint32_t *depth_out)
+{
+#if !defined(BUILD_BINNED_UNIT_AVX2)
+    /* The same source compiled for AVX2, where it runs
+     * (build_binned_sah_avx2.c): the same tree in fewer instructions. */
+    const build_binned_refs_fn avx2 = simd ? build_binned_sah_refs_avx2_unit() : NULL;
+    if (avx2)
+        return avx2(nodes, refs, prim_count, params, simd, node_count_out, depth_out);
+#endif
+    struct aabb root_box;
+    struct cbounds root_cb;
+    range_bounds(refs, 0, prim_count, &root_box, &root_cb);
+    return binned_build_refs(nodes, refs, prim_count, params, simd, &root_box, &root_cb,
+                             node_count_out, depth_out);
+}
+
+/* A ref's box into the bounds as range_bounds grows them, from the ref's
+ * own lo (lane 3 cleared: it holds the id) and hi. */
+static inline void bounds_grow(vec4 l, vec4 h, vec4 *lo, vec4 *hi, vec4 *clo, vec4 *chi)
+{
+    const vec4 c = vec4_add(l, h);
+    *lo = vec4_min(*lo, l);
+    *hi = vec4_max(*hi, h);
+    *clo = vec4_min(*clo, c);
+    *chi = vec4_max(*chi, c);
+}
+
+/*
+ * The refs' set-up: refs[i] from box i of src (the caller's boxes, or
+ * the triangles' boxes computed here, triangle_box.h, the very floats
+ * accel_triangle_boxes_pool stores), and in the same pass the root's
+ * box and centroid bounds, the values range_bounds would compute over
+ * the refs just written (the same vec4 operations on the same lanes in
+ * the same order: min and max of the box's lo with lane 3 cleared and
+ * of its hi, whose lane 3 is +0, and of their sum), so the build that
+ * follows is the one build_binned_sah_refs makes, without a second pass
+ * over the refs (32 MB for a million triangles).
+ */
+static void setup_refs(struct build_ref *refs, const struct build_source *src, uint32_t n,
+                       struct aabb *root_box, struct cbounds *root_cb)
+{
+    vec4 lo = vec4_splat(INFINITY);
+    vec4 hi = vec4_splat(-INFINITY);
+    vec4 clo = lo;
+    vec4 chi = hi;
+    if (src->boxes) {
+        for (uint32_t i = 0; i < n; i++) {
+            build_ref_set(&refs[i], &src->boxes[i], i);
+            bounds_grow(vec4_xyz0(vec4_load(refs[i].lo)), vec4_load(refs[i].hi), &lo, &hi, &clo,
+                        &chi);
+        }
+    } else {
+        for (uint32_t i = 0; i < n; i++) {
+#if defined(__SSE2__) && !defined(RT_NO_SIMD)
+            /* The ref build_ref_set writes (lo xyz and the id's bits, hi
+             * xyz and +0), kept in registers for the bounds (as the
+             * parallel builder's set-up, build_parallel.c). */
+            __m128 tlo, thi;
+            triangle_box4(src->positions, src->indices, i, &tlo, &thi);
+            const vec4 l = vec4_xyz0(tlo);
+            const vec4 h = vec4_xyz0(thi);
+            const __m128 id = _mm_castsi128_ps(_mm_slli_si128(_mm_cvtsi32_si128((int)i), 12));
+            _mm_storeu_ps(refs[i].lo, _mm_or_ps(l, id));
+            _mm_storeu_ps(refs[i].hi, h);
+            bounds_grow(l, h, &lo, &hi, &clo, &chi);
+#else
+            const struct aabb box = triangle_box(src->positions, src->indices, i);
+            build_ref_set(&refs[i], &box, i);
+            bounds_grow(vec4_xyz0(vec4_load(refs[i].lo)), vec4_load(refs[i].hi), &lo, &hi, &clo,
+                        &chi);
+#endif
+        }
+    }
+    build_store_box(root_box, lo, hi);
+    vec4_store(root_cb->lo, clo);
+    vec4_store(root_cb->hi, chi);
+}
+
+int build_binned_sah_source(struct bvh *out, const struct build_source *src, uint32_t prim_count,
+                            const struct bvh_build_params *params, int simd,
+                            struct rt_large_block *spare)
 {
 #if !defined(BUILD_BINNED_UNIT_AVX2)
     /* The whole build in the AVX2 copy where it runs: the refs' set-up
      * and prim_index loops too. */
     const build_binned_fn avx2 = simd ? accel_build_binned_sah_avx2_unit() : NULL;
     if (avx2)
-        return avx2(out, prim_boxes, prim_count, params);
+        return avx2(out, src, prim_count, params, simd, spare);
 #endif
+    if (spare)
+        memset(spare, 0, sizeof(*spare));
     struct bvh_build_params p;
     int start = accel_build_begin(out, &p, params, prim_count);
     if (start <= 0)
         return start;
-    void *refs_block;
-    struct build_ref *refs = rt_alloc_array64(prim_count, sizeof(*refs), &refs_block);
+    /* The refs in a mapping for the caller's collapse when asked for and
+     * large (BUILD_SPARE_MIN), else a heap block. */
+    struct rt_large_block map = {0};
+    void *refs_block = NULL;
+    struct build_ref *refs = NULL;
+    const uint64_t ref_bytes = (uint64_t)prim_count * sizeof(*refs);
+    if (spare && ref_bytes >= BUILD_SPARE_MIN && ref_bytes <= SIZE_MAX / 4) {
+        refs = rt_malloc_large((size_t)(BUILD_SPARE_FACTOR * ref_bytes), &map);
+        if (refs && !map.bytes) {
+            rt_free_large(&map); /* not a mapping: the heap block below */
+            refs = NULL;
+        }
+    }
+    if (!refs)
+        refs = rt_alloc_array64(prim_count, sizeof(*refs), &refs_block);
     if (!refs) {
         bvh_release(out);
         return -1;
     }
-    for (uint32_t i = 0; i < prim_count; i++)
-        build_ref_set(&refs[i], &prim_boxes[i], i);
+    struct aabb root_box;
+    struct cbounds root_cb;
+    setup_refs(refs, src, prim_count, &root_box, &root_cb);
     uint32_t node_count;
     uint32_t max_depth;
-    if (build_binned_sah_refs(out->nodes, refs, prim_count, &p, simd, &node_count, &max_depth)) {
+    if (binned_build_refs(out->nodes, refs, prim_count, &p, simd, &root_box, &root_cb,
+                          &node_count, &max_depth)) {
         rt_free(refs_block);
+        rt_free_large(&map);
         bvh_release(out);
         return -1;
     }
     for (uint32_t i = 0; i < prim_count; i++)
         out->prim_index[i] = build_ref_id(&refs[i]);
     rt_free(refs_block);
+    if (spare)
+        *spare = map; /* nothing reads the refs now */
     accel_build_finish(out, node_count, max_depth);
     return 0;
+}
+
+int build_binned_sah_forms(struct bvh *out, const struct aabb *prim_boxes, uint32_t prim_count,
+                           const struct bvh_build_params *params, int simd)
+{
+    const struct build_source src = {prim_boxes, NULL, NULL};
+    return build_binned_sah_source(out, &src, prim_count, params, simd, NULL);
 }
 
 int accel_build_binned_sah(struct bvh *out, const struct aabb *prim_boxes, uint32_t prim_count,

@@ -169,11 +169,55 @@ build_partition_fn build_partition_avx2_unit(void);
  * absent. */
 int build_cpu_runs_avx2(void);
 
-/* accel_build_binned_sah compiled for AVX2 (build_binned_sah_avx2.c: the
+/* What the binned builder's set-up reads: the caller's boxes, or (boxes
+ * NULL) the triangles of positions and indices, whose boxes it computes
+ * itself (triangle_box.h; accel_build_triangles). */
+struct build_source {
+    const struct aabb *boxes;
+    const float *positions;
+    const uint32_t *indices;
+};
+
+/*
+ * Bytes of build refs from which a builder asked for a spare
+ * (accel_build_triangles, accel_build_parallel_triangles) keeps a ref
+ * buffer in a mapping of BUILD_SPARE_FACTOR times its size
+ * (rt_malloc_large: 2 MB aligned, advised for huge pages) that the
+ * caller's collapse then takes over for the wide layout
+ * (rt_malloc_large_reuse), so that the layout's first pages are pages
+ * the build already touched.  A build that large (a million triangles:
+ * 32 MB of refs) finds its refs fresh anyway (a heap block of that size
+ * is a mapping of its own, unmapped when freed), and the layout is a
+ * fresh mapping every one-shot build.  Three times: an 8-wide layout
+ * takes about 70 bytes a triangle against the refs' 32, and
+ * rt_malloc_large_reuse takes a spare of up to about twice the layout.
+ * Smaller builds (the kitchen, the soup: 3.5 MB of refs) keep a heap
+ * block, which comes back warm from the last build.  build_parallel.c
+ * (SCRATCH_SPARE_MIN's comment) has the measurements.
+ */
+#define BUILD_SPARE_MIN ((uint64_t)16 << 20)
+#define BUILD_SPARE_FACTOR 3u
+
+/*
+ * The binned SAH build (accel_build_binned_sah) of src's prim_count
+ * boxes: the refs' set-up reads the boxes or computes them from the
+ * triangles (the same floats either way, so the same tree), and also
+ * computes the root's bounds.  With spare non-NULL (zeroed first) and at
+ * least BUILD_SPARE_MIN bytes of refs, the refs are a mapping handed to
+ * the caller in *spare after the build, for accel_collapse_wide_reuse;
+ * the caller frees it with rt_free_large if the collapse does not take
+ * it.  simd as build_binned_sah_forms.  params need not be normalized.
+ */
+struct rt_large_block;
+int build_binned_sah_source(struct bvh *out, const struct build_source *src, uint32_t prim_count,
+                            const struct bvh_build_params *params, int simd,
+                            struct rt_large_block *spare);
+/* build_binned_sah_source compiled for AVX2 (build_binned_sah_avx2.c: the
  * same source, the same trees), or NULL where that unit is absent or the
  * CPU does not run AVX2. */
-typedef int (*build_binned_fn)(struct bvh *out, const struct aabb *prim_boxes,
-                               uint32_t prim_count, const struct bvh_build_params *params);
+typedef int (*build_binned_fn)(struct bvh *out, const struct build_source *src,
+                               uint32_t prim_count, const struct bvh_build_params *params,
+                               int simd, struct rt_large_block *spare);
 build_binned_fn accel_build_binned_sah_avx2_unit(void);
 /* accel_build_binned_sah with its AVX2 forms (the AVX2 copy of the
  * builder, histogram and partition) where simd is non-zero and the CPU

@@ -1198,7 +1198,7 @@ static void build_median_subtree(struct pbuild *b, struct subtree *s, struct bvh
  * 3.5 MB of refs) keep a heap block, which comes back warm from the last
  * build.
  */
-#define SCRATCH_SPARE_MIN ((uint64_t)16 << 20)
+#define SCRATCH_SPARE_MIN BUILD_SPARE_MIN
 
 /* Nodes per arena (struct node_arena): twice a thread's even share of
  * the refs, plus two of the largest subtrees for the unevenness of the
@@ -1682,6 +1682,9 @@ static int build_parallel(struct bvh *out, const struct aabb *prim_boxes, const 
         b.subtree_max = PARALLEL_MIN_SUBTREE;
     /* One subtree: stage 2 alone, which is exactly the serial builder. */
     if (prim_count <= b.subtree_max) {
+        /* From the triangles the binned builder needs no box array. */
+        if (!prim_boxes && b.pp.subtree != BVH_SUBTREE_MEDIAN)
+            return accel_build_triangles(out, positions, indices, prim_count, &b.p, NULL);
         struct aabb *boxes = NULL;
         if (!prim_boxes) {
             boxes = accel_triangle_boxes_pool(positions, indices, prim_count, pool);
@@ -1723,7 +1726,7 @@ static int build_parallel(struct bvh *out, const struct aabb *prim_boxes, const 
     /* refs[1] in a mapping for the caller's collapse (SCRATCH_SPARE_MIN);
      * if the mapping fails, the usual block. */
     const uint64_t refs1_bytes = (ref_bytes + 63) & ~(uint64_t)63;
-    const uint64_t scratch_bytes = 3 * refs1_bytes;
+    const uint64_t scratch_bytes = BUILD_SPARE_FACTOR * refs1_bytes;
     if (spare && refs1_bytes >= SCRATCH_SPARE_MIN && scratch_bytes <= SIZE_MAX / 4) {
         char *map = rt_malloc_large((size_t)scratch_bytes, &b.scratch);
         if (map && b.scratch.bytes) {

@@ -91,6 +91,23 @@ void bvh_build_params_default(struct bvh_build_params *params);
  */
 int accel_build(struct bvh *out, const struct aabb *prim_boxes, uint32_t prim_count,
                 const struct bvh_build_params *params);
+/*
+ * accel_build on the boxes of triangles 0..prim_count-1 (vertex indices
+ * indices[3j..3j+2] into positions, not checked), the boxes
+ * accel_triangle_boxes_pool would return, and the same tree bit for bit;
+ * the binned builder computes each box as it sets up its ref, without a
+ * box array (the sweep builder takes one).  With spare non-NULL it is
+ * zeroed, and a large binned build (build_internal.h, BUILD_SPARE_MIN)
+ * hands its refs' mapping over in it for the caller's collapse
+ * (accel_collapse_wide_reuse), as accel_build_parallel_triangles does;
+ * the caller frees it with rt_free_large when the collapse did not take
+ * it (also after a failure of the collapse).  On failure *spare stays
+ * zeroed.
+ */
+struct rt_large_block;
+int accel_build_triangles(struct bvh *out, const float *positions, const uint32_t *indices,
+                          uint32_t prim_count, const struct bvh_build_params *params,
+                          struct rt_large_block *spare);
 int accel_build_binned_sah(struct bvh *out, const struct aabb *prim_boxes,
                            uint32_t prim_count, const struct bvh_build_params *params);
 int accel_build_sweep_sah(struct bvh *out, const struct aabb *prim_boxes,

@@ -75,13 +75,14 @@ struct scene_accel *scene_accel_rebuild(const struct scene_accel_geometry *geom,
         hook->fn(hook->user);
     struct scene_accel *accel = rt_calloc(1, sizeof(*accel));
     struct rt_large_block scratch = {0};
-    /* The parallel builder computes the triangles' boxes as it sets up
-     * its refs (no box array: fewer fresh pages a build). */
+    /* The parallel and the serial SAH builders compute the triangles'
+     * boxes as they set up their refs (no box array: fewer fresh pages a
+     * build); the median builder takes boxes. */
     struct aabb *boxes =
-        builder == SCENE_ACCEL_PARALLEL
+        builder != SCENE_ACCEL_MEDIAN
             ? NULL
             : accel_triangle_boxes_pool(geom->positions, geom->indices, geom->tri_count, pool);
-    if (!accel || (builder != SCENE_ACCEL_PARALLEL && !boxes))
+    if (!accel || (builder == SCENE_ACCEL_MEDIAN && !boxes))
         goto fail;
     int status;
     if (builder == SCENE_ACCEL_MEDIAN)
@@ -90,7 +91,8 @@ struct scene_accel *scene_accel_rebuild(const struct scene_accel_geometry *geom,
         status = accel_build_parallel_triangles(&accel->bvh, geom->positions, geom->indices,
                                                 geom->tri_count, params, pool, &scratch);
     else
-        status = accel_build(&accel->bvh, boxes, geom->tri_count, params);
+        status = accel_build_triangles(&accel->bvh, geom->positions, geom->indices,
+                                       geom->tri_count, params, &scratch);
     if (status || finish_layout(accel, geom, params, pool, old, &scratch))
         goto fail;
     rt_free_large(&scratch);
