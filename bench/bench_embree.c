@@ -5,10 +5,11 @@
  * only when CMake found Embree; RT_HAVE_EMBREE).
  *
  * Build: ours is the library default (binned SAH, BVH_DEFAULT_BINS bins),
- * timed from triangles to a traceable structure (boxes + accel_build +
- * accel_gather_triangles + accel_collapse_wide), on one thread and on
- * two (the boxes, accel_build_parallel, the gather and the collapse on
- * a 2-thread pool).
+ * timed from triangles to a traceable structure (accel_build_triangles,
+ * whose set-up computes the boxes, + accel_gather_triangles +
+ * accel_collapse_wide), on one thread and on two
+ * (accel_build_parallel_triangles, the gather and the collapse on a
+ * 2-thread pool).
  * Embree: one triangle geometry in one scene, rtcCommitScene timed alone
  * (the buffers are filled before the clock starts), at
  * RTC_BUILD_QUALITY_LOW (Morton builder), RTC_BUILD_QUALITY_MEDIUM
@@ -172,7 +173,8 @@ struct build_faults {
 };
 
 /* Build times on `threads` threads: ours (serial binned SAH on one
- * thread, accel_build_parallel_triangles on pool otherwise, through
+ * thread, accel_build_triangles, accel_build_parallel_triangles on pool
+ * otherwise, through
  * bench_accel_build_pool) and Embree's qualities
  * on a device of that many threads, interleaved runs; --only picks the
  * paths (ours, low, medium, high).  *row_faults receives the medians of
@@ -544,10 +546,11 @@ int bench_embree_section(const struct bench_options *opts, struct bench_mesh *me
 
     report_printf("\n## Against Embree %s\n\n", RTC_VERSION_STRING);
     report_printf("Build, median of %d runs, ms, on 1 and 2 threads (Embree: a device created "
-                  "with \"threads=1\" or \"threads=2\"). Ours: binned SAH %d bins, boxes + "
-                  "build + gather into leaf order + the %s collapse (everything before the "
-                  "first ray); on 2 threads the build is accel_build_parallel (binned SAH at "
-                  "the top, binned SAH subtrees), boxes, gather and collapse on the same "
+                  "with \"threads=1\" or \"threads=2\"). Ours: binned SAH %d bins, the "
+                  "triangles' boxes + build + gather into leaf order + the %s collapse "
+                  "(everything before the first ray; the builders compute the boxes as they "
+                  "set up their refs); on 2 threads the build is accel_build_parallel (binned "
+                  "SAH at the top, binned SAH subtrees), gather and collapse on the same "
                   "pool. Embree: rtcCommitScene alone "
                   "at build quality LOW (Morton), MEDIUM (binned SAH, its default) and HIGH "
                   "(spatial splits). %s \"ours/Embree\" is a time ratio: above 1 means we "

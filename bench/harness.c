@@ -76,7 +76,6 @@ int bench_accel_build(struct bench_accel *acc, const struct bench_mesh *mesh,
     return bench_accel_build_pool(acc, mesh, params, NULL);
 }
 
-
 int bench_accel_build_pool(struct bench_accel *acc, const struct bench_mesh *mesh,
                            const struct bvh_build_params *params, struct rt_pool *pool)
 {
