@@ -91,8 +91,12 @@ struct scene_accel *scene_accel_rebuild(const struct scene_accel_geometry *geom,
         status = accel_build_parallel_triangles(&accel->bvh, geom->positions, geom->indices,
                                                 geom->tri_count, params, pool, &scratch);
     else
+        /* The refs' mapping only when no old layout's block will take the
+         * new layout (finish_layout): otherwise a heap block, which a
+         * rebuild finds warm from the last one. */
         status = accel_build_triangles(&accel->bvh, geom->positions, geom->indices,
-                                       geom->tri_count, params, &scratch);
+                                       geom->tri_count, params,
+                                       old && old->wide.raw.bytes ? NULL : &scratch);
     if (status || finish_layout(accel, geom, params, pool, old, &scratch))
         goto fail;
     rt_free_large(&scratch);
