@@ -37,6 +37,7 @@ static int failures;
 #include "accel/bvh_build.h"
 #include "accel/collapse4_avx2.h"
 #include "accel_testgeo.h"
+#include "bvh_contract.h"
 #include "base/alloc.h"
 #include "base/pool.h"
 #include "base/timer.h"
@@ -268,13 +269,26 @@ static void check_mesh(const char *scene, const struct tg_mesh *m, struct rt_poo
  * reaches that path (rtbench's bumpy does). */
 static void check_spare(const struct tg_mesh *m, struct rt_pool **pools)
 {
-    for (int t = 1; t <= 2; t++) {
+    /* t = 0: the serial builder's entry (accel_build_triangles), whose
+     * tree must also be accel_build's on the triangles' boxes. */
+    for (int t = 0; t <= 2; t++) {
         struct bvh b;
         struct rt_large_block spare;
-        if (accel_build_parallel_triangles(&b, m->pos, m->idx, m->tri_count, NULL, pools[t],
-                                           &spare)) {
+        if (t ? accel_build_parallel_triangles(&b, m->pos, m->idx, m->tri_count, NULL, pools[t],
+                                               &spare)
+              : accel_build_triangles(&b, m->pos, m->idx, m->tri_count, NULL, &spare)) {
             failures += !CHECKF(0, "spare: build on %d threads failed", t);
             continue;
+        }
+        if (!t) {
+            struct aabb *boxes = accel_triangle_boxes_pool(m->pos, m->idx, m->tri_count, NULL);
+            struct bvh ref;
+            const int built = boxes && !accel_build(&ref, boxes, m->tri_count, NULL);
+            failures += !CHECKF(built && bvh_same_tree(&b, &ref),
+                                "spare: the serial entry's tree is not accel_build's");
+            if (built)
+                bvh_release(&ref);
+            rt_free(boxes);
         }
         failures += !CHECKF(spare.base != NULL, "spare: a %u-triangle build left no mapping",
                             m->tri_count);
