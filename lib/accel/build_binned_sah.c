@@ -489,27 +489,13 @@ static int centroids_coincide(const struct cbounds *cb)
     return !(cb->hi[0] > cb->lo[0]) && !(cb->hi[1] > cb->lo[1]) && !(cb->hi[2] > cb->lo[2]);
 }
 
-/* A leaf's ids into prim_index (when not NULL) as the leaf is made: its
- * refs are final then (every later split works on other ranges) and in
- * the cache from its last split, so no pass over all the refs after the
- * build reads them back (32 MB for a million triangles). */
-static inline void leaf_ids(uint32_t *prim_index, const struct build_ref *refs, uint32_t begin,
-                            uint32_t n)
-{
-    if (!prim_index)
-        return;
-    for (uint32_t i = begin; i < begin + n; i++)
-        prim_index[i] = build_ref_id(&refs[i]);
-}
-
 /* The build of refs[0, prim_count) whose bounds (range_bounds') are
  * root_box and root_cb: build_binned_sah_refs after its bounds pass, or
- * build_binned_sah_source after a set-up that computed them, which also
- * takes the leaves' ids in prim_index (leaf_ids; NULL: not written). */
+ * build_binned_sah_source after a set-up that computed them. */
 static int binned_build_refs(struct bvh_node *nodes, struct build_ref *refs, uint32_t prim_count,
                              const struct bvh_build_params *params, int simd,
                              const struct aabb *root_box, const struct cbounds *root_cb,
-                             uint32_t *prim_index, uint32_t *node_count_out, uint32_t *depth_out)
+                             uint32_t *node_count_out, uint32_t *depth_out)
 {
     const struct bvh_build_params p = *params;
     /* Aligned to 64 (rt_align64): fill_bins stores whole 32-byte records. */
@@ -549,7 +535,6 @@ static int binned_build_refs(struct bvh_node *nodes, struct build_ref *refs, uin
          * (the order of madmann91/bvh's top_down_sah_builder.h). */
         if (n <= 1 || (n <= max_leaf && build_must_split_median(task.r.depth, n))) {
             build_set_leaf(node, task.r.begin, n);
-            leaf_ids(prim_index, refs, task.r.begin, n);
             continue;
         }
         enum { SPLIT_MEDIAN, SPLIT_BINNED, SPLIT_SMALL } kind = SPLIT_MEDIAN;
@@ -585,7 +570,6 @@ static int binned_build_refs(struct bvh_node *nodes, struct build_ref *refs, uin
         }
         if (kind == SPLIT_MEDIAN && n <= max_leaf) {
             build_set_leaf(node, task.r.begin, n);
-            leaf_ids(prim_index, refs, task.r.begin, n);
             continue;
         }
 
@@ -642,7 +626,7 @@ int build_binned_sah_refs(struct bvh_node *nodes, struct build_ref *refs, uint32
     struct aabb root_box;
     struct cbounds root_cb;
     range_bounds(refs, 0, prim_count, &root_box, &root_cb);
-    return binned_build_refs(nodes, refs, prim_count, params, simd, &root_box, &root_cb, NULL,
+    return binned_build_refs(nodes, refs, prim_count, params, simd, &root_box, &root_cb,
                              node_count_out, depth_out);
 }
 
@@ -750,12 +734,14 @@ int build_binned_sah_source(struct bvh *out, const struct build_source *src, uin
     uint32_t node_count;
     uint32_t max_depth;
     if (binned_build_refs(out->nodes, refs, prim_count, &p, simd, &root_box, &root_cb,
-                          out->prim_index, &node_count, &max_depth)) {
+                          &node_count, &max_depth)) {
         rt_free(refs_block);
         rt_free_large(&map);
         bvh_release(out);
         return -1;
     }
+    for (uint32_t i = 0; i < prim_count; i++)
+        out->prim_index[i] = build_ref_id(&refs[i]);
     rt_free(refs_block);
     if (spare)
         *spare = map; /* nothing reads the refs now */
