@@ -24,6 +24,8 @@
 
 #define shade_context_lights shade_context_lights_avx2
 #define shade_eye_hits shade_eye_hits_avx2
+#define shade_eye_block_begin shade_eye_block_begin_avx2
+#define shade_eye_block_end shade_eye_block_end_avx2
 #define shade_hit shade_hit_avx2
 #define shade_offset_point shade_offset_point_avx2
 #define shade_prime_shadows shade_prime_shadows_avx2
@@ -42,6 +44,8 @@
 #define scene_texture_sample_level scene_texture_sample_level_avx2
 #define scene_texture_sample_lod scene_texture_sample_lod_avx2
 #define scene_texture_sample_lod8 scene_texture_sample_lod8_avx2
+#define scene_texture_fetch_lod8 scene_texture_fetch_lod8_avx2
+#define scene_texture_blend_lod8 scene_texture_blend_lod8_avx2
 #define scene_texture_set_image scene_texture_set_image_avx2
 #define scene_textures_generate scene_textures_generate_avx2
 #define scene_textures_get_or_create scene_textures_get_or_create_avx2
