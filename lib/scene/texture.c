@@ -629,15 +629,15 @@ typedef char texture_level_ints[sizeof(struct scene_texture_level) % sizeof(int)
  * (rs, rt reduced, four a register) on the levels `level` (one a lane),
  * each lane sample_level_reduced's operations in their order: u = rs w,
  * uc = u - 1/2, its floor, the weight (float)(uc - floor), the four
- * texels wrapped as wrap_index (these loads: bilinear8_fetch, the
- * four texels in x and the weights in va, vb), each channel b / 255, and
+ * texels wrapped as wrap_index (bilinear8_offsets: their byte offsets
+ * and the weights va, vb; bilinear8_gather loads them), each channel b / 255, and
  * the nested blends of bilinear_at (bilinear8_blend).  The texels' byte
  * offsets from level 0's first texel fit int32: a chain is at most 4/3
  * of 16384^2 texels of 4 bytes, below 2^31 bytes, so one gather fetches
  * a texel of each lane. */
-static inline void bilinear8_fetch(const struct scene_texture *tex, __m256i level,
-                                   const __m256d rs[2], const __m256d rt[2], __m256i repeat_s,
-                                   __m256i repeat_t, __m256i x[4], __m256 *va, __m256 *vb)
+static inline void bilinear8_offsets(const struct scene_texture *tex, __m256i level,
+                                     const __m256d rs[2], const __m256d rt[2], __m256i repeat_s,
+                                     __m256i repeat_t, __m256i off[4], __m256 *va, __m256 *vb)
 {
     const int *entries = (const int *)tex->levels;
     const __m256i at = _mm256_mullo_epi32(level, _mm256_set1_epi32(LEVEL_INTS));
@@ -677,16 +677,30 @@ static inline void bilinear8_fetch(const struct scene_texture *tex, __m256i leve
     /* Rows j w: at most 2^14 by 2^14, exact in int32. */
     const __m256i r0 = _mm256_mullo_epi32(wrap_lanes8(vj, h, repeat_t), w);
     const __m256i r1 = _mm256_mullo_epi32(wrap_lanes8(_mm256_add_epi32(vj, one), h, repeat_t), w);
+#define OFFSET8(r, c) _mm256_add_epi32(first, _mm256_slli_epi32(_mm256_add_epi32(r, c), 2))
+    off[0] = OFFSET8(r0, i0);
+    off[1] = OFFSET8(r0, i1);
+    off[2] = OFFSET8(r1, i0);
+    off[3] = OFFSET8(r1, i1);
+#undef OFFSET8
+}
+
+/* The four texels at bilinear8_offsets' byte offsets off. */
+static inline void bilinear8_gather(const struct scene_texture *tex, const __m256i off[4],
+                                    __m256i x[4])
+{
     const int *texels = (const int *)(const void *)tex->levels[0].texels;
-#define TEXEL8(r, c)                                                                              \
-    _mm256_i32gather_epi32(texels,                                                                \
-                           _mm256_add_epi32(first, _mm256_slli_epi32(_mm256_add_epi32(r, c), 2)), \
-                           1)
-    x[0] = TEXEL8(r0, i0);
-    x[1] = TEXEL8(r0, i1);
-    x[2] = TEXEL8(r1, i0);
-    x[3] = TEXEL8(r1, i1);
-#undef TEXEL8
+    for (int c = 0; c < 4; c++)
+        x[c] = _mm256_i32gather_epi32(texels, off[c], 1);
+}
+
+static inline void bilinear8_fetch(const struct scene_texture *tex, __m256i level,
+                                   const __m256d rs[2], const __m256d rt[2], __m256i repeat_s,
+                                   __m256i repeat_t, __m256i x[4], __m256 *va, __m256 *vb)
+{
+    __m256i off[4];
+    bilinear8_offsets(tex, level, rs, rt, repeat_s, repeat_t, off, va, vb);
+    bilinear8_gather(tex, off, x);
 }
 
 /* The blends of bilinear8_fetch's texels x (corners 00, 10, 01, 11)
@@ -807,19 +821,28 @@ int scene_texture_fetch_lod8(const struct scene_texture *tex, const float lambda
     struct lod8_plan p;
     if (!lod8_plan(tex, lambda, s, t, &p))
         return 0;
-    /* The same levels and loads as sample_lod8; the texels and weights
-     * stored as computed (int32 and float: exact), the blends left to
-     * scene_texture_blend_lod8. */
+    /* The same levels and texels as sample_lod8: their byte offsets
+     * (int32) and the weights (float) stored as computed, exact; the
+     * loads and blends left to scene_texture_blend_lod8.  The lines of
+     * the block's corner lanes (0 and 7: a 4 x 2 block's texels lie
+     * between them) on both rows asked for now, a hint that reads no
+     * value, so that they are in the cache by then. */
+    const char *texels = (const char *)tex->levels[0].texels;
+    out->tex = tex;
     out->levels = _mm256_movemask_ps(p.two) ? 2 : 1;
     for (int l = 0; l < out->levels; l++) {
-        __m256i x[4];
+        __m256i off[4];
         __m256 va, vb;
-        bilinear8_fetch(tex, l ? p.coarse : p.fine, p.rs, p.rt, p.repeat_s, p.repeat_t, x, &va,
-                        &vb);
+        bilinear8_offsets(tex, l ? p.coarse : p.fine, p.rs, p.rt, p.repeat_s, p.repeat_t, off,
+                          &va, &vb);
         for (int c = 0; c < 4; c++)
-            _mm256_storeu_si256((__m256i *)(void *)out->texel[l][c], x[c]);
+            _mm256_storeu_si256((__m256i *)(void *)out->offset[l][c], off[c]);
         _mm256_storeu_ps(out->a[l], va);
         _mm256_storeu_ps(out->b[l], vb);
+        _mm_prefetch(texels + out->offset[l][0][0], _MM_HINT_T0);
+        _mm_prefetch(texels + out->offset[l][2][0], _MM_HINT_T0);
+        _mm_prefetch(texels + out->offset[l][0][7], _MM_HINT_T0);
+        _mm_prefetch(texels + out->offset[l][2][7], _MM_HINT_T0);
     }
     _mm256_storeu_ps(out->f, p.f);
     _mm256_storeu_ps(out->two, p.two);
@@ -830,9 +853,10 @@ void scene_texture_blend_lod8(const struct scene_texture_texels8 *in, float rgb[
 {
     __m256 c[2][3];
     for (int l = 0; l < in->levels; l++) {
-        __m256i x[4];
+        __m256i off[4], x[4];
         for (int k = 0; k < 4; k++)
-            x[k] = _mm256_loadu_si256((const __m256i *)(const void *)in->texel[l][k]);
+            off[k] = _mm256_loadu_si256((const __m256i *)(const void *)in->offset[l][k]);
+        bilinear8_gather(in->tex, off, x);
         bilinear8_blend(x, _mm256_loadu_ps(in->a[l]), _mm256_loadu_ps(in->b[l]), c[l]);
     }
     if (in->levels == 1) {

@@ -175,7 +175,8 @@ int scene_texture_sample_lod8(const struct scene_texture *tex, const float lambd
  * weights are kept as they were computed (int32 texels, float weights),
  * so the two give sample_lod8's floats bit for bit. */
 struct scene_texture_texels8 {
-    int32_t texel[2][4][8]; /* level (fine, coarse), corner (00, 10, 01, 11), lane */
+    const struct scene_texture *tex;
+    int32_t offset[2][4][8]; /* texel byte offsets: level (fine, coarse), corner (00, 10, 01, 11), lane */
     float a[2][8], b[2][8]; /* a level's horizontal and vertical weights */
     float f[8];             /* the coarse level's blend weight */
     float two[8];           /* all ones where a lane blends two levels */
