@@ -928,11 +928,12 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
     }
 #if defined(RENDER_UNIT_AVX2)
     /* A software pipeline of one block (Lam 1988, software pipelining;
-     * here across the loop's blocks): a whole block's texels are loaded
-     * when its hits are known (shade_eye_block_begin) and blended into
-     * its pixels after the next block's hits (shade_eye_block_end), so
-     * that the core traces the next block while the texels come instead
-     * of waiting for them at the end of the block's shading.  Two slots:
+     * here across the loop's blocks): a whole block's texel lines are
+     * asked for when its hits are known (shade_eye_block_begin: their
+     * addresses, a prefetch) and its texels loaded and blended into its
+     * pixels after the next block's trace (shade_eye_block_end), so that
+     * the core traces the next block while the texels come into the
+     * cache, instead of waiting for them in the block's shading.  Two slots:
      * the block begun and the one before it.  Only the order in which
      * pixels are written changes; each pixel's operations are the same. */
     struct shade_eye_pending pending[2];
@@ -986,7 +987,7 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                         px[RENDER_BLOCK_W + i] = row + 4 * ((size_t)pass->fb_width + (size_t)i);
                     }
 #if defined(RENDER_UNIT_AVX2)
-                    /* This block's loads, then the last block's blends. */
+                    /* This block's prefetches, then the last block's texels. */
                     const int begun = shade_eye_block_begin_avx2(
                         sc, block_dirs, block_hits, cone, px, &pending[pending_slot]);
                     if (pending_full)

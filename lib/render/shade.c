@@ -766,7 +766,7 @@ int shade_eye_block_begin(const struct shade_context *sc, const float *const dir
     float width[TRACE_PACKET], lane_d[3][TRACE_PACKET];
     eye_widths8(dir, hits, cone, width, pending->unit, lane_d);
     const int got = surface_fetch_lanes(sc, hits, lane_d, width, &pending->lanes,
-                                        &pending->texels);
+                                        &pending->lookup);
     if (!got) {
         eye_block_hits(sc, dir, hits, width, pending->unit, rgba);
         return 0;
@@ -788,7 +788,7 @@ void shade_eye_block_end(const struct shade_context *sc, struct shade_eye_pendin
     /* surface_fetch_lanes' last step (lanes_texture_end's products, the
      * colour times the texel as there), then eye_light8 as eye_hits. */
     float rgb[3][TRACE_PACKET];
-    scene_texture_blend_lod8(&pending->texels, rgb);
+    scene_texture_finish_lod8(&pending->lookup, rgb);
     struct surface_lanes *lanes = &pending->lanes;
     for (int k = 0; k < 3; k++) {
         const __m256 texel = _mm256_loadu_ps(rgb[k]);

@@ -150,12 +150,14 @@ shade_eye_hits_fn shade_eye_hits_avx2_unit(void);
  * in two steps, in the AVX2 copy only (shade_eye_avx2.c; the frame's
  * AVX2 packet loop, render_avx2.c, calls them, and runs only where that
  * copy is chosen): shade_eye_block_begin does everything up to the
- * eight-lane texture lookups and issues their loads, keeping the block
- * in *pending and returning 1, or shades the block completely and
+ * eight-lane texture lookups, their texels' addresses computed and
+ * their cache lines asked for, keeping the block in *pending and
+ * returning 1, or shades the block completely and
  * returns 0 (no texture, or a block the lanes or the sampler do not
- * take); shade_eye_block_end then blends the texels and writes the
- * pixels.  Between the two the caller does other work (the next
- * block's rays), which the core runs while the texels come.  The same
+ * take); shade_eye_block_end then loads and blends the texels and
+ * writes the pixels.  Between the two the caller does other work (the
+ * next block's rays), which the core runs while the texels come into
+ * the cache.  The same
  * operations on the same values as shade_eye_hits, so the same colours
  * bit for bit; pixels do not depend on the order they are written in.
  */
@@ -174,6 +176,11 @@ struct scene_texture;
 typedef int (*shade_texture_lod8_fn)(const struct scene_texture *tex, const float lambda[8],
                                      const float s[8], const float t[8], float rgb[3][8]);
 shade_texture_lod8_fn shade_texture_lod8_avx2_unit(void);
+/* The same lookup in the two steps the frame's pipeline takes
+ * (scene_texture_prefetch_lod8, then scene_texture_finish_lod8), for the
+ * test that they give sample_lod8's floats; NULL where the unit is
+ * absent. */
+shade_texture_lod8_fn shade_texture_lod8_steps_avx2_unit(void);
 /* That unit's four-lane log2 of the levels of detail (render/lanes.h,
  * lanes_log2_4), for the test of its bound; NULL where it is absent. */
 typedef void (*shade_log2_quad_fn)(const double x[4], double out[4]);

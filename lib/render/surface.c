@@ -1690,16 +1690,17 @@ static inline void lanes_colours(const struct shade_context *sc, const struct hi
  * detail (the 8-lane sampler when it takes the block, else lane by lane)
  * times the ambient and diffuse colours; a product is the same in either
  * order.  Shared by surface_fetch_lanes and fetch_lanes_mixed.  With
- * `defer` the 8-lane sampler's texels are only loaded into *defer and 1
- * returned, amb and dif left as they are: the caller multiplies them by
- * scene_texture_blend_lod8's colours later (the same products on the
- * same floats); 0 when the colours are done. */
+ * `defer` the 8-lane sampler's lookups are only prepared in *defer
+ * (scene_texture_prefetch_lod8) and 1 returned, amb and dif left as
+ * they are: the caller multiplies them by scene_texture_finish_lod8's
+ * colours later (the same products on the same floats); 0 when the
+ * colours are done. */
 static inline int lanes_texture_end(const struct scene_texture *tx,
                                     const float lambda[TRACE_PACKET],
                                     const float lane_st[2][TRACE_PACKET], __m256 amb[3],
-                                    __m256 dif[3], struct scene_texture_texels8 *defer)
+                                    __m256 dif[3], struct scene_texture_lookup8 *defer)
 {
-    if (defer && scene_texture_fetch_lod8(tx, lambda, lane_st[0], lane_st[1], defer))
+    if (defer && scene_texture_prefetch_lod8(tx, lambda, lane_st[0], lane_st[1], defer))
         return 1;
     float rgb[3][TRACE_PACKET];
     if (!scene_texture_sample_lod8(tx, lambda, lane_st[0], lane_st[1], rgb)) {
@@ -1740,7 +1741,7 @@ static inline int lanes_texture_end(const struct scene_texture *tx,
 static int fetch_lanes_mixed(const struct shade_context *sc,
                              const struct trace_scene_hit *const hits[],
                              const float dir[3][TRACE_PACKET], const float width[],
-                             struct surface_lanes *out, struct scene_texture_texels8 *defer)
+                             struct surface_lanes *out, struct scene_texture_lookup8 *defer)
 {
     const struct trace_scene_hit *h0 = hits[0];
     for (int i = 1; i < TRACE_PACKET; i++)
@@ -1904,7 +1905,7 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
  */
 int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene_hit *const hits[],
                         const float dir[3][TRACE_PACKET], const float width[],
-                        struct surface_lanes *out, struct scene_texture_texels8 *defer)
+                        struct surface_lanes *out, struct scene_texture_lookup8 *defer)
 {
     const struct trace_scene_hit *h0 = hits[0];
     if (!sc->cache)

@@ -814,16 +814,16 @@ int scene_texture_sample_lod8(const struct scene_texture *tex, const float lambd
     return 1;
 }
 
-int scene_texture_fetch_lod8(const struct scene_texture *tex, const float lambda[8],
+int scene_texture_prefetch_lod8(const struct scene_texture *tex, const float lambda[8],
                              const float s[8], const float t[8],
-                             struct scene_texture_texels8 *out)
+                             struct scene_texture_lookup8 *out)
 {
     struct lod8_plan p;
     if (!lod8_plan(tex, lambda, s, t, &p))
         return 0;
     /* The same levels and texels as sample_lod8: their byte offsets
      * (int32) and the weights (float) stored as computed, exact; the
-     * loads and blends left to scene_texture_blend_lod8.  The lines of
+     * loads and blends left to scene_texture_finish_lod8.  The lines of
      * the block's corner lanes (0 and 7: a 4 x 2 block's texels lie
      * between them) on both rows asked for now, a hint that reads no
      * value, so that they are in the cache by then. */
@@ -849,7 +849,7 @@ int scene_texture_fetch_lod8(const struct scene_texture *tex, const float lambda
     return 1;
 }
 
-void scene_texture_blend_lod8(const struct scene_texture_texels8 *in, float rgb[3][8])
+void scene_texture_finish_lod8(const struct scene_texture_lookup8 *in, float rgb[3][8])
 {
     __m256 c[2][3];
     for (int l = 0; l < in->levels; l++) {
