@@ -645,8 +645,13 @@ void shade_prime_shadows(const struct shade_context *sc, unsigned found,
  * first loop) in eight float lanes, lane i hit i, each lane the scalar
  * operations in their order: the same floats.  unit[k][i] is component k
  * of hit i's, lane_d[k][i] that of its direction as given (for
- * surface_fetch_lanes). */
-static void eye_widths8(const float *const dir[], const struct trace_scene_hit *const hits[],
+ * surface_fetch_lanes).  Inlined: called by eye_hits and
+ * shade_eye_block_begin, GCC kept it out of line, its arrays then passed
+ * through memory (16 M instructions a kitchen frame). */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void eye_widths8(const float *const dir[], const struct trace_scene_hit *const hits[],
                         const struct shade_cone cone[], float width[],
                         float unit[3][TRACE_PACKET], float lane_d[3][TRACE_PACKET])
 {
@@ -698,8 +703,12 @@ static void eye_cosines8(const struct surface_colour e[], float unit[3][TRACE_PA
  * each channel (emission + ambient_g ambient) + diffuse cosine, or the
  * diffuse colour where the primitive is unlit in a lit frame, as
  * eye_light evaluates it, and alpha 1 (the pixels transposed out of the
- * lanes). */
-static void eye_light8(const struct render_state *st, const struct surface_lanes *e,
+ * lanes).  Inlined into its callers (eye_hits, shade_eye_block_begin,
+ * shade_eye_block_end) as eye_widths8. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void eye_light8(const struct render_state *st, const struct surface_lanes *e,
                        const float global_ambient[4], float unit[3][TRACE_PACKET],
                        float *const rgba[])
 {
