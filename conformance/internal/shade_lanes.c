@@ -16,6 +16,10 @@
  * magnifications, zeros, infinities and NaN, coordinates near texel
  * edges, negative, large and non-finite.  A block it refuses (a
  * coordinate of 2^31 or more, other filters) must be refused whole.
+ * The same lookups in the frame pipeline's two steps
+ * (scene_texture_prefetch_lod8 and scene_texture_finish_lod8, through
+ * shade_texture_lod8_steps_avx2_unit): the same refusals and the same
+ * floats bit for bit.
  *
  * The levels of detail of a block on one triangle by its texel map
  * (surface.c's lod_fast_quad, through shade_lod_fast_avx2_unit) against
@@ -267,12 +271,13 @@ int main(void)
     const shade_log2_quad_fn log2_quad = shade_log2_quad_avx2_unit();
     const shade_lod_fast_fn lod_fast = shade_lod_fast_avx2_unit();
     const shade_texture_lod8_fn lod8 = shade_texture_lod8_avx2_unit();
+    const shade_texture_lod8_fn steps = shade_texture_lod8_steps_avx2_unit();
 #if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
     const int cpu = __builtin_cpu_supports("avx2");
 #else
     const int cpu = 0;
 #endif
-    if (!lod8 || !log2_quad || !lod_fast || !cpu) {
+    if (!lod8 || !steps || !log2_quad || !lod_fast || !cpu) {
         printf("shade_lanes: skipped (no AVX2 unit or CPU)\n");
         return 0;
     }
@@ -306,6 +311,14 @@ int main(void)
             }
             memset(rgb, 0x7f, sizeof(rgb));
             const int took = lod8(tex, lambda, s, t, rgb);
+            float rgb_steps[3][8];
+            memset(rgb_steps, 0x7f, sizeof(rgb_steps));
+            const int took_steps = steps(tex, lambda, s, t, rgb_steps);
+            failures += !CHECKF(took_steps == took &&
+                                    (!took || memcmp(rgb_steps, rgb, sizeof(rgb)) == 0),
+                                "size %dx%d block %d: the two steps took %d against %d or "
+                                "differ",
+                                sizes[z][0], sizes[z][1], block, took_steps, took);
             int big = 0;
             for (int i = 0; i < 8; i++)
                 big |= (isfinite(s[i]) && fabsf(s[i]) >= 0x1p31f) ||

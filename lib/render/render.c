@@ -926,6 +926,20 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
         block_dirs[i] = pk.dir[i];
         block_hits[i] = &hits[i];
     }
+#if defined(RENDER_UNIT_AVX2)
+    /* A software pipeline of one block (Lam 1988, software pipelining;
+     * here across the loop's blocks): a whole block's texel lines are
+     * asked for when its hits are known (shade_eye_block_begin: their
+     * addresses, a prefetch) and its texels loaded and blended into its
+     * pixels after the next block's trace (shade_eye_block_end), so that
+     * the core traces the next block while the texels come into the
+     * cache, instead of waiting for them in the block's shading.  Two slots:
+     * the block begun and the one before it.  Only the order in which
+     * pixels are written changes; each pixel's operations are the same. */
+    struct shade_eye_pending pending[2];
+    int pending_slot = 0; /* the slot the next block begins in */
+    int pending_full = 0; /* the other slot holds a block to end */
+#endif
     for (int by = y0; by < y0 + RENDER_TILE_SIZE && by < vp[3]; by += RENDER_BLOCK_H) {
         unproject_cache_row(pass, &cache, by);
 #if RENDER_PAIRS
@@ -972,7 +986,17 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                         px[i] = row + 4 * i;
                         px[RENDER_BLOCK_W + i] = row + 4 * ((size_t)pass->fb_width + (size_t)i);
                     }
+#if defined(RENDER_UNIT_AVX2)
+                    /* This block's prefetches, then the last block's texels. */
+                    const int begun = shade_eye_block_begin_avx2(
+                        sc, block_dirs, block_hits, cone, px, &pending[pending_slot]);
+                    if (pending_full)
+                        shade_eye_block_end_avx2(sc, &pending[pending_slot ^ 1]);
+                    pending_full = begun;
+                    pending_slot ^= begun;
+#else
                     shade_eye_hits(sc, TRACE_PACKET, block_dirs, block_hits, cone, px);
+#endif
                 } else
                     eye_block(pass, sc, x0, y0, bx, by, &pk, found, hits, cone);
                 continue;
@@ -1033,6 +1057,10 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
             eye_batch_shade(sc, &eyes);
         }
     }
+#if defined(RENDER_UNIT_AVX2)
+    if (pending_full)
+        shade_eye_block_end_avx2(sc, &pending[pending_slot ^ 1]);
+#endif
 }
 
 void render_tile(struct render_pass *pass, uint32_t tile, int worker)

@@ -645,8 +645,13 @@ void shade_prime_shadows(const struct shade_context *sc, unsigned found,
  * first loop) in eight float lanes, lane i hit i, each lane the scalar
  * operations in their order: the same floats.  unit[k][i] is component k
  * of hit i's, lane_d[k][i] that of its direction as given (for
- * surface_fetch_lanes). */
-static void eye_widths8(const float *const dir[], const struct trace_scene_hit *const hits[],
+ * surface_fetch_lanes).  Inlined: called by eye_hits and
+ * shade_eye_block_begin, GCC kept it out of line, its arrays then passed
+ * through memory (16 M instructions a kitchen frame). */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void eye_widths8(const float *const dir[], const struct trace_scene_hit *const hits[],
                         const struct shade_cone cone[], float width[],
                         float unit[3][TRACE_PACKET], float lane_d[3][TRACE_PACKET])
 {
@@ -698,8 +703,12 @@ static void eye_cosines8(const struct surface_colour e[], float unit[3][TRACE_PA
  * each channel (emission + ambient_g ambient) + diffuse cosine, or the
  * diffuse colour where the primitive is unlit in a lit frame, as
  * eye_light evaluates it, and alpha 1 (the pixels transposed out of the
- * lanes). */
-static void eye_light8(const struct render_state *st, const struct surface_lanes *e,
+ * lanes).  Inlined into its callers (eye_hits, shade_eye_block_begin,
+ * shade_eye_block_end) as eye_widths8. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void eye_light8(const struct render_state *st, const struct surface_lanes *e,
                        const float global_ambient[4], float unit[3][TRACE_PACKET],
                        float *const rgba[])
 {
@@ -733,20 +742,87 @@ static void eye_light8(const struct render_state *st, const struct surface_lanes
 }
 #endif
 
+#if SHADE_LANES && defined(__AVX__)
+/* eye_hits of a whole block that surface_fetch_lanes does not take: the
+ * colours hit by hit (surface_fetch_colours), the cosines in the lanes,
+ * then the eye light hit by hit. */
+static void eye_block_hits(const struct shade_context *sc, const float *const dir[],
+                           const struct trace_scene_hit *const hits[], const float width[],
+                           float unit[3][TRACE_PACKET], float *const rgba[])
+{
+    struct surface_colour e[TRACE_PACKET];
+    float cosine[TRACE_PACKET];
+    surface_fetch_colours(sc, TRACE_PACKET, hits, dir, width, e);
+    eye_cosines8(e, unit, cosine);
+    const struct scene_instance *inst = NULL;
+    uint32_t instance = 0;
+    for (int i = 0; i < TRACE_PACKET; i++) {
+        if (!inst || hits[i]->instance != instance) {
+            inst = shade_hit_instance(sc, hits[i]);
+            instance = hits[i]->instance;
+        }
+        eye_light(sc->state, &e[i], inst->appearance.gl.light_model.ambient, cosine[i], rgba[i]);
+    }
+}
+#endif
+
+#if defined(SHADE_UNIT_AVX2)
+int shade_eye_block_begin(const struct shade_context *sc, const float *const dir[],
+                          const struct trace_scene_hit *const hits[],
+                          const struct shade_cone cone[], float *const rgba[],
+                          struct shade_eye_pending *pending)
+{
+    float width[TRACE_PACKET], lane_d[3][TRACE_PACKET];
+    eye_widths8(dir, hits, cone, width, pending->unit, lane_d);
+    const int got = surface_fetch_lanes(sc, hits, lane_d, width, &pending->lanes,
+                                        &pending->lookup);
+    if (!got) {
+        eye_block_hits(sc, dir, hits, width, pending->unit, rgba);
+        return 0;
+    }
+    const float *global_ambient =
+        shade_hit_instance(sc, hits[0])->appearance.gl.light_model.ambient;
+    if (got == 1) {
+        eye_light8(sc->state, &pending->lanes, global_ambient, pending->unit, rgba);
+        return 0;
+    }
+    pending->global_ambient = global_ambient;
+    for (int i = 0; i < TRACE_PACKET; i++)
+        pending->rgba[i] = rgba[i];
+    return 1;
+}
+
+void shade_eye_block_end(const struct shade_context *sc, struct shade_eye_pending *pending)
+{
+    /* surface_fetch_lanes' last step (lanes_texture_end's products, the
+     * colour times the texel as there), then eye_light8 as eye_hits. */
+    float rgb[3][TRACE_PACKET];
+    scene_texture_finish_lod8(&pending->lookup, rgb);
+    struct surface_lanes *lanes = &pending->lanes;
+    for (int k = 0; k < 3; k++) {
+        const __m256 texel = _mm256_loadu_ps(rgb[k]);
+        _mm256_storeu_ps(lanes->ambient[k],
+                         _mm256_mul_ps(_mm256_loadu_ps(lanes->ambient[k]), texel));
+        _mm256_storeu_ps(lanes->diffuse[k],
+                         _mm256_mul_ps(_mm256_loadu_ps(lanes->diffuse[k]), texel));
+    }
+    eye_light8(sc->state, lanes, pending->global_ambient, pending->unit, pending->rgba);
+}
+#endif
+
 static void eye_hits(const struct shade_context *sc, int n, const float *const dir[],
                      const struct trace_scene_hit *const hits[], const struct shade_cone cone[],
                      float *const rgba[])
 {
-    struct surface_colour e[TRACE_PACKET];
     float width[TRACE_PACKET] = {0}; /* n of them set (zeros for the compiler's warning) */
 #if SHADE_LANES && defined(__AVX__)
     if (n == TRACE_PACKET) {
         /* A whole block: the per-hit steps below in eight lanes. */
-        float unit[3][TRACE_PACKET], cosine[TRACE_PACKET], lane_d[3][TRACE_PACKET];
+        float unit[3][TRACE_PACKET], lane_d[3][TRACE_PACKET];
         eye_widths8(dir, hits, cone, width, unit, lane_d);
 #if defined(__AVX2__)
         struct surface_lanes lanes;
-        if (surface_fetch_lanes(sc, hits, lane_d, width, &lanes)) {
+        if (surface_fetch_lanes(sc, hits, lane_d, width, &lanes, NULL)) {
             /* One instance (surface_fetch_lanes refuses more). */
             eye_light8(sc->state, &lanes,
                        shade_hit_instance(sc, hits[0])->appearance.gl.light_model.ambient, unit,
@@ -754,21 +830,11 @@ static void eye_hits(const struct shade_context *sc, int n, const float *const d
             return;
         }
 #endif
-        surface_fetch_colours(sc, n, hits, dir, width, e);
-        eye_cosines8(e, unit, cosine);
-        const struct scene_instance *inst = NULL;
-        uint32_t instance = 0;
-        for (int i = 0; i < n; i++) {
-            if (!inst || hits[i]->instance != instance) {
-                inst = shade_hit_instance(sc, hits[i]);
-                instance = hits[i]->instance;
-            }
-            eye_light(sc->state, &e[i], inst->appearance.gl.light_model.ambient, cosine[i],
-                      rgba[i]);
-        }
+        eye_block_hits(sc, dir, hits, width, unit, rgba);
         return;
     }
 #endif
+    struct surface_colour e[TRACE_PACKET];
     float unit_dir[TRACE_PACKET][3];
     /* shade_hit's steps up to the surface's colours for every hit, ... */
     for (int i = 0; i < n; i++) {

@@ -144,6 +144,31 @@ typedef void (*shade_eye_hits_fn)(const struct shade_context *sc, int n, const f
                                   const struct shade_cone cone[], float *const rgba[]);
 shade_eye_hits_fn shade_eye_hits_avx2_unit(void);
 
+#if defined(__AVX2__) && !defined(RT_NO_SIMD)
+/*
+ * shade_eye_hits of a whole block (TRACE_PACKET hits, every ray a hit)
+ * in two steps, in the AVX2 copy only (shade_eye_avx2.c; the frame's
+ * AVX2 packet loop, render_avx2.c, calls them, and runs only where that
+ * copy is chosen): shade_eye_block_begin does everything up to the
+ * eight-lane texture lookups, their texels' addresses computed and
+ * their cache lines asked for, keeping the block in *pending and
+ * returning 1, or shades the block completely and
+ * returns 0 (no texture, or a block the lanes or the sampler do not
+ * take); shade_eye_block_end then loads and blends the texels and
+ * writes the pixels.  Between the two the caller does other work (the
+ * next block's rays), which the core runs while the texels come into
+ * the cache.  The same
+ * operations on the same values as shade_eye_hits, so the same colours
+ * bit for bit; pixels do not depend on the order they are written in.
+ */
+struct shade_eye_pending;
+int shade_eye_block_begin_avx2(const struct shade_context *sc, const float *const dir[],
+                               const struct trace_scene_hit *const hits[],
+                               const struct shade_cone cone[], float *const rgba[],
+                               struct shade_eye_pending *pending);
+void shade_eye_block_end_avx2(const struct shade_context *sc, struct shade_eye_pending *pending);
+#endif
+
 /* That unit's eight-lane texture lookup (scene_texture_sample_lod8,
  * scene/texture.h), for the tests that compare it with
  * scene_texture_sample_lod bit for bit; NULL where the unit is absent. */
@@ -151,6 +176,11 @@ struct scene_texture;
 typedef int (*shade_texture_lod8_fn)(const struct scene_texture *tex, const float lambda[8],
                                      const float s[8], const float t[8], float rgb[3][8]);
 shade_texture_lod8_fn shade_texture_lod8_avx2_unit(void);
+/* The same lookup in the two steps the frame's pipeline takes
+ * (scene_texture_prefetch_lod8, then scene_texture_finish_lod8), for the
+ * test that they give sample_lod8's floats; NULL where the unit is
+ * absent. */
+shade_texture_lod8_fn shade_texture_lod8_steps_avx2_unit(void);
 /* That unit's four-lane log2 of the levels of detail (render/lanes.h,
  * lanes_log2_4), for the test of its bound; NULL where it is absent. */
 typedef void (*shade_log2_quad_fn)(const double x[4], double out[4]);

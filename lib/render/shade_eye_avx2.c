@@ -24,6 +24,8 @@
 
 #define shade_context_lights shade_context_lights_avx2
 #define shade_eye_hits shade_eye_hits_avx2
+#define shade_eye_block_begin shade_eye_block_begin_avx2
+#define shade_eye_block_end shade_eye_block_end_avx2
 #define shade_hit shade_hit_avx2
 #define shade_offset_point shade_offset_point_avx2
 #define shade_prime_shadows shade_prime_shadows_avx2
@@ -42,6 +44,8 @@
 #define scene_texture_sample_level scene_texture_sample_level_avx2
 #define scene_texture_sample_lod scene_texture_sample_lod_avx2
 #define scene_texture_sample_lod8 scene_texture_sample_lod8_avx2
+#define scene_texture_prefetch_lod8 scene_texture_prefetch_lod8_avx2
+#define scene_texture_finish_lod8 scene_texture_finish_lod8_avx2
 #define scene_texture_set_image scene_texture_set_image_avx2
 #define scene_textures_generate scene_textures_generate_avx2
 #define scene_textures_get_or_create scene_textures_get_or_create_avx2
@@ -62,6 +66,21 @@ shade_eye_hits_fn shade_eye_hits_avx2_unit(void)
 shade_texture_lod8_fn shade_texture_lod8_avx2_unit(void)
 {
     return scene_texture_sample_lod8_avx2;
+}
+
+static int lod8_steps(const struct scene_texture *tex, const float lambda[8], const float s[8],
+                      const float t[8], float rgb[3][8])
+{
+    struct scene_texture_lookup8 lookup;
+    if (!scene_texture_prefetch_lod8(tex, lambda, s, t, &lookup))
+        return 0;
+    scene_texture_finish_lod8(&lookup, rgb);
+    return 1;
+}
+
+shade_texture_lod8_fn shade_texture_lod8_steps_avx2_unit(void)
+{
+    return lod8_steps;
 }
 
 static void log2_quad(const double x[4], double out[4])
@@ -107,6 +126,11 @@ shade_eye_hits_fn shade_eye_hits_avx2_unit(void)
 }
 
 shade_texture_lod8_fn shade_texture_lod8_avx2_unit(void)
+{
+    return NULL;
+}
+
+shade_texture_lod8_fn shade_texture_lod8_steps_avx2_unit(void)
 {
     return NULL;
 }

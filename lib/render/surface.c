@@ -1689,12 +1689,19 @@ static inline void lanes_colours(const struct shade_context *sc, const struct hi
 /* texture_end of a block's lanes: the texels at the lanes' levels of
  * detail (the 8-lane sampler when it takes the block, else lane by lane)
  * times the ambient and diffuse colours; a product is the same in either
- * order.  Shared by surface_fetch_lanes and fetch_lanes_mixed. */
-static inline void lanes_texture_end(const struct scene_texture *tx,
-                                     const float lambda[TRACE_PACKET],
-                                     const float lane_st[2][TRACE_PACKET], __m256 amb[3],
-                                     __m256 dif[3])
+ * order.  Shared by surface_fetch_lanes and fetch_lanes_mixed.  With
+ * `defer` the 8-lane sampler's lookups are only prepared in *defer
+ * (scene_texture_prefetch_lod8) and 1 returned, amb and dif left as
+ * they are: the caller multiplies them by scene_texture_finish_lod8's
+ * colours later (the same products on the same floats); 0 when the
+ * colours are done. */
+static inline int lanes_texture_end(const struct scene_texture *tx,
+                                    const float lambda[TRACE_PACKET],
+                                    const float lane_st[2][TRACE_PACKET], __m256 amb[3],
+                                    __m256 dif[3], struct scene_texture_lookup8 *defer)
 {
+    if (defer && scene_texture_prefetch_lod8(tx, lambda, lane_st[0], lane_st[1], defer))
+        return 1;
     float rgb[3][TRACE_PACKET];
     if (!scene_texture_sample_lod8(tx, lambda, lane_st[0], lane_st[1], rgb)) {
         for (int i = 0; i < TRACE_PACKET; i++) {
@@ -1709,6 +1716,7 @@ static inline void lanes_texture_end(const struct scene_texture *tx,
         amb[k] = _mm256_mul_ps(amb[k], texel);
         dif[k] = _mm256_mul_ps(dif[k], texel);
     }
+    return 0;
 }
 
 /*
@@ -1733,7 +1741,7 @@ static inline void lanes_texture_end(const struct scene_texture *tx,
 static int fetch_lanes_mixed(const struct shade_context *sc,
                              const struct trace_scene_hit *const hits[],
                              const float dir[3][TRACE_PACKET], const float width[],
-                             struct surface_lanes *out)
+                             struct surface_lanes *out, struct scene_texture_lookup8 *defer)
 {
     const struct trace_scene_hit *h0 = hits[0];
     for (int i = 1; i < TRACE_PACKET; i++)
@@ -1837,6 +1845,7 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
     /* The colours: the material's once, or hit by hit whenever a vertex
      * colour may stand in for them (it may differ by triangle). */
     __m256 amb[3], dif[3];
+    int deferred = 0;
     lanes_colours(sc, &t, hits, color_material_on(&t, hit_unlit(sc, lighting)), 1, m, call,
                   lighting, out, amb, dif);
     if (tx) {
@@ -1871,13 +1880,13 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
 #undef HALF
             }
         }
-        lanes_texture_end(tx, lambda, lane_st, amb, dif);
+        deferred = lanes_texture_end(tx, lambda, lane_st, amb, dif, defer);
     }
     for (int k = 0; k < 3; k++) {
         _mm256_storeu_ps(out->ambient[k], amb[k]);
         _mm256_storeu_ps(out->diffuse[k], dif[k]);
     }
-    return 1;
+    return 1 + deferred;
 }
 
 /*
@@ -1896,14 +1905,14 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
  */
 int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene_hit *const hits[],
                         const float dir[3][TRACE_PACKET], const float width[],
-                        struct surface_lanes *out)
+                        struct surface_lanes *out, struct scene_texture_lookup8 *defer)
 {
     const struct trace_scene_hit *h0 = hits[0];
     if (!sc->cache)
         return 0;
     for (int i = 1; i < TRACE_PACKET; i++)
         if (hits[i]->prim != h0->prim || hits[i]->instance != h0->instance)
-            return fetch_lanes_mixed(sc, hits, dir, width, out);
+            return fetch_lanes_mixed(sc, hits, dir, width, out, defer);
     struct hit_triangle t;
     hit_triangle(sc, h0, &t);
     const struct scene_mesh *mesh = t.mesh;
@@ -1969,6 +1978,7 @@ int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene
     const int vary = color_material_on(&t, hit_unlit(sc, lighting)) &&
                      !(t.flags & (TRI_INHERIT_COLOR | TRI_FLAT));
     __m256 amb[3], dif[3];
+    int deferred = 0;
     lanes_colours(sc, &t, hits, vary, 0, m, call, lighting, out, amb, dif);
     if (tx) {
         float lane_st[2][TRACE_PACKET];
@@ -2009,13 +2019,13 @@ int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene
 #undef HALF
             }
         }
-        lanes_texture_end(tx, lambda, lane_st, amb, dif);
+        deferred = lanes_texture_end(tx, lambda, lane_st, amb, dif, defer);
     }
     for (int k = 0; k < 3; k++) {
         _mm256_storeu_ps(out->ambient[k], amb[k]);
         _mm256_storeu_ps(out->diffuse[k], dif[k]);
     }
-    return 1;
+    return 1 + deferred;
 }
 #endif
 

@@ -156,6 +156,18 @@ struct surface_lanes {
     int lighting;
 };
 
+/* A block of the eye light whose texels are on their way
+ * (shade_eye_block_begin, shade.h): its colours before the texture, its
+ * texture lookups up to the loads, and what eye_light8 reads besides (unit directions, the
+ * instance's global ambient, the pixels). */
+struct shade_eye_pending {
+    struct surface_lanes lanes;
+    struct scene_texture_lookup8 lookup;
+    float unit[3][TRACE_PACKET];
+    const float *global_ambient;
+    float *rgba[TRACE_PACKET];
+};
+
 /*
  * surface_fetch_colours of a block of TRACE_PACKET hits when they are
  * all on one instance, and on one triangle or on triangles of one
@@ -165,11 +177,17 @@ struct surface_lanes {
  * having written nothing the caller reads, when the hits span instances,
  * materials or flags, or the block needs what this leaves to
  * surface_fetch_colours (no cache, a degenerate triangle, projective
- * texture coordinates).
+ * texture coordinates).  Returns 1 when out holds the colours; with
+ * `defer` (else NULL) 2 when the eight-lane sampler took the block's
+ * lookups: they are then prepared in *defer (scene_texture_prefetch_lod8)
+ * and out's ambient
+ * and diffuse colours are those before the texture, each to be
+ * multiplied by its lane's channel of scene_texture_finish_lod8 (the
+ * products surface_fetch_lanes takes otherwise, on the same floats).
  */
 int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene_hit *const hits[],
                         const float dir[3][TRACE_PACKET], const float width[],
-                        struct surface_lanes *out);
+                        struct surface_lanes *out, struct scene_texture_lookup8 *defer);
 #endif
 
 /* The texel of texture `name` at a hit, for the RT_FIXED_FUNCTION mode,

@@ -629,13 +629,15 @@ typedef char texture_level_ints[sizeof(struct scene_texture_level) % sizeof(int)
  * (rs, rt reduced, four a register) on the levels `level` (one a lane),
  * each lane sample_level_reduced's operations in their order: u = rs w,
  * uc = u - 1/2, its floor, the weight (float)(uc - floor), the four
- * texels wrapped as wrap_index, each channel b / 255, and the nested
- * blends of bilinear_at.  The texels' byte offsets from level 0's
- * first texel fit int32: a chain is at most 4/3 of 16384^2 texels of 4
- * bytes, below 2^31 bytes, so one gather fetches a texel of each lane. */
-static inline void bilinear8(const struct scene_texture *tex, __m256i level, const __m256d rs[2],
-                             const __m256d rt[2], __m256i repeat_s, __m256i repeat_t,
-                             __m256 out[3])
+ * texels wrapped as wrap_index (bilinear8_offsets: their byte offsets
+ * and the weights va, vb; bilinear8_gather loads them), each channel b / 255, and
+ * the nested blends of bilinear_at (bilinear8_blend).  The texels' byte
+ * offsets from level 0's first texel fit int32: a chain is at most 4/3
+ * of 16384^2 texels of 4 bytes, below 2^31 bytes, so one gather fetches
+ * a texel of each lane. */
+static inline void bilinear8_offsets(const struct scene_texture *tex, __m256i level,
+                                     const __m256d rs[2], const __m256d rt[2], __m256i repeat_s,
+                                     __m256i repeat_t, __m256i off[4], __m256 *va, __m256 *vb)
 {
     const int *entries = (const int *)tex->levels;
     const __m256i at = _mm256_mullo_epi32(level, _mm256_set1_epi32(LEVEL_INTS));
@@ -666,7 +668,8 @@ static inline void bilinear8(const struct scene_texture *tex, __m256i level, con
         i[k] = _mm256_cvttpd_epi32(fi);
         j[k] = _mm256_cvttpd_epi32(fj);
     }
-    const __m256 va = _mm256_set_m128(a[1], a[0]), vb = _mm256_set_m128(b[1], b[0]);
+    *va = _mm256_set_m128(a[1], a[0]);
+    *vb = _mm256_set_m128(b[1], b[0]);
     const __m256i vi = _mm256_set_m128i(i[1], i[0]), vj = _mm256_set_m128i(j[1], j[0]);
     const __m256i one = _mm256_set1_epi32(1);
     const __m256i i0 = wrap_lanes8(vi, w, repeat_s);
@@ -674,28 +677,114 @@ static inline void bilinear8(const struct scene_texture *tex, __m256i level, con
     /* Rows j w: at most 2^14 by 2^14, exact in int32. */
     const __m256i r0 = _mm256_mullo_epi32(wrap_lanes8(vj, h, repeat_t), w);
     const __m256i r1 = _mm256_mullo_epi32(wrap_lanes8(_mm256_add_epi32(vj, one), h, repeat_t), w);
+#define OFFSET8(r, c) _mm256_add_epi32(first, _mm256_slli_epi32(_mm256_add_epi32(r, c), 2))
+    off[0] = OFFSET8(r0, i0);
+    off[1] = OFFSET8(r0, i1);
+    off[2] = OFFSET8(r1, i0);
+    off[3] = OFFSET8(r1, i1);
+#undef OFFSET8
+}
+
+/* The four texels at bilinear8_offsets' byte offsets off. */
+static inline void bilinear8_gather(const struct scene_texture *tex, const __m256i off[4],
+                                    __m256i x[4])
+{
     const int *texels = (const int *)(const void *)tex->levels[0].texels;
-#define TEXEL8(r, c)                                                                              \
-    _mm256_i32gather_epi32(texels,                                                                \
-                           _mm256_add_epi32(first, _mm256_slli_epi32(_mm256_add_epi32(r, c), 2)), \
-                           1)
-    const __m256i x00 = TEXEL8(r0, i0), x10 = TEXEL8(r0, i1);
-    const __m256i x01 = TEXEL8(r1, i0), x11 = TEXEL8(r1, i1);
-#undef TEXEL8
+    for (int c = 0; c < 4; c++)
+        x[c] = _mm256_i32gather_epi32(texels, off[c], 1);
+}
+
+static inline void bilinear8_fetch(const struct scene_texture *tex, __m256i level,
+                                   const __m256d rs[2], const __m256d rt[2], __m256i repeat_s,
+                                   __m256i repeat_t, __m256i x[4], __m256 *va, __m256 *vb)
+{
+    __m256i off[4];
+    bilinear8_offsets(tex, level, rs, rt, repeat_s, repeat_t, off, va, vb);
+    bilinear8_gather(tex, off, x);
+}
+
+/* The blends of bilinear8_fetch's texels x (corners 00, 10, 01, 11)
+ * with its weights va, vb: each channel b / 255, then bilinear_at's
+ * nested blends. */
+static inline void bilinear8_blend(const __m256i x[4], __m256 va, __m256 vb, __m256 out[3])
+{
     const __m256i byte = _mm256_set1_epi32(0xff);
     const __m256 d255 = _mm256_set1_ps(255.0f);
 #define CHANNEL(x, k)                                                                             \
     _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_and_si256(_mm256_srli_epi32(x, 8 * (k)), byte)), d255)
     for (int k = 0; k < 3; k++) {
-        const __m256 c00 = CHANNEL(x00, k), c10 = CHANNEL(x10, k);
-        const __m256 c01 = CHANNEL(x01, k), c11 = CHANNEL(x11, k);
+        const __m256 c00 = CHANNEL(x[0], k), c10 = CHANNEL(x[1], k);
+        const __m256 c01 = CHANNEL(x[2], k), c11 = CHANNEL(x[3], k);
         const __m256 bottom = _mm256_add_ps(c00, _mm256_mul_ps(va, _mm256_sub_ps(c10, c00)));
         const __m256 top = _mm256_add_ps(c01, _mm256_mul_ps(va, _mm256_sub_ps(c11, c01)));
         out[k] = _mm256_add_ps(bottom, _mm256_mul_ps(vb, _mm256_sub_ps(top, bottom)));
     }
 #undef CHANNEL
 }
+
+/* bilinear8_fetch, then bilinear8_blend. */
+static inline void bilinear8(const struct scene_texture *tex, __m256i level, const __m256d rs[2],
+                             const __m256d rt[2], __m256i repeat_s, __m256i repeat_t,
+                             __m256 out[3])
+{
+    __m256i x[4];
+    __m256 va, vb;
+    bilinear8_fetch(tex, level, rs, rt, repeat_s, repeat_t, x, &va, &vb);
+    bilinear8_blend(x, va, vb, out);
+}
 #undef LEVEL_INTS
+
+/* What scene_texture_sample_lod8 decides before its loads: the reduced
+ * coordinates (rs, rt), the wrap masks, each lane's fine and coarse
+ * level, the blend weight f and the mask `two` of the lanes that blend
+ * two levels.  Returns 0 where sample_lod8 does not take the block. */
+struct lod8_plan {
+    __m256d rs[2], rt[2];
+    __m256i repeat_s, repeat_t, fine, coarse;
+    __m256 f, two;
+};
+
+static inline int lod8_plan(const struct scene_texture *tex, const float lambda[8],
+                            const float s[8], const float t[8], struct lod8_plan *p)
+{
+    if (tex->min_filter != SCENE_FILTER_LINEAR_MIPMAP_LINEAR ||
+        tex->mag_filter != SCENE_FILTER_LINEAR)
+        return 0;
+    for (int k = 0; k < 2; k++)
+        if (!quad_reduce(_mm_loadu_ps(s + 4 * k), tex->wrap_s, &p->rs[k]) ||
+            !quad_reduce(_mm_loadu_ps(t + 4 * k), tex->wrap_t, &p->rt[k]))
+            return 0;
+    p->repeat_s = _mm256_set1_epi32(-(tex->wrap_s == SCENE_WRAP_REPEAT));
+    p->repeat_t = _mm256_set1_epi32(-(tex->wrap_t == SCENE_WRAP_REPEAT));
+    const __m256 lam = _mm256_loadu_ps(lambda);
+    const int q = tex->level_count - 1;
+    /* c = 0 for these filters: lambda > 0 minifies (a NaN does not). */
+    const __m256 minified = _mm256_cmp_ps(lam, _mm256_setzero_ps(), _CMP_GT_OQ);
+    const __m256 last =
+        _mm256_and_ps(minified, _mm256_cmp_ps(lam, _mm256_set1_ps((float)q), _CMP_GE_OQ));
+    p->two = _mm256_andnot_ps(last, minified);
+    /* floorf(lambda) for 0 < lambda < q by the truncation, as the
+     * scalar path; the other lanes' values are not used. */
+    const __m256i d1 = _mm256_cvttps_epi32(lam);
+    p->f = _mm256_sub_ps(lam, _mm256_cvtepi32_ps(d1));
+    const __m256i two_i = _mm256_castps_si256(p->two);
+    p->fine = _mm256_blendv_epi8(
+        _mm256_and_si256(_mm256_castps_si256(last), _mm256_set1_epi32(q)), d1, two_i);
+    p->coarse = _mm256_sub_epi32(p->fine, two_i); /* + 1 where two levels */
+    return 1;
+}
+
+/* sample_lod8's last step: a lane's fine colour c0, or where it blends
+ * two levels fine + f (coarse - fine), as the scalar loop. */
+static inline void lod8_store(const __m256 c0[3], const __m256 c1[3], __m256 f, __m256 two,
+                              float rgb[3][8])
+{
+    for (int k = 0; k < 3; k++)
+        _mm256_storeu_ps(
+            rgb[k], _mm256_blendv_ps(c0[k],
+                                     _mm256_add_ps(c0[k], _mm256_mul_ps(f, _mm256_sub_ps(c1[k], c0[k]))),
+                                     two));
+}
 
 /*
  * scene_texture_sample_lod of eight lookups, LINEAR_MIPMAP_LINEAR and
@@ -709,46 +798,73 @@ static inline void bilinear8(const struct scene_texture *tex, __m256i level, con
 int scene_texture_sample_lod8(const struct scene_texture *tex, const float lambda[8],
                               const float s[8], const float t[8], float rgb[3][8])
 {
-    if (tex->min_filter != SCENE_FILTER_LINEAR_MIPMAP_LINEAR ||
-        tex->mag_filter != SCENE_FILTER_LINEAR)
+    struct lod8_plan p;
+    if (!lod8_plan(tex, lambda, s, t, &p))
         return 0;
-    __m256d rs[2], rt[2];
-    for (int k = 0; k < 2; k++)
-        if (!quad_reduce(_mm_loadu_ps(s + 4 * k), tex->wrap_s, &rs[k]) ||
-            !quad_reduce(_mm_loadu_ps(t + 4 * k), tex->wrap_t, &rt[k]))
-            return 0;
-    const __m256i repeat_s = _mm256_set1_epi32(-(tex->wrap_s == SCENE_WRAP_REPEAT));
-    const __m256i repeat_t = _mm256_set1_epi32(-(tex->wrap_t == SCENE_WRAP_REPEAT));
-    const __m256 lam = _mm256_loadu_ps(lambda);
-    const int q = tex->level_count - 1;
-    /* c = 0 for these filters: lambda > 0 minifies (a NaN does not). */
-    const __m256 minified = _mm256_cmp_ps(lam, _mm256_setzero_ps(), _CMP_GT_OQ);
-    const __m256 last =
-        _mm256_and_ps(minified, _mm256_cmp_ps(lam, _mm256_set1_ps((float)q), _CMP_GE_OQ));
-    const __m256 two = _mm256_andnot_ps(last, minified);
-    /* floorf(lambda) for 0 < lambda < q by the truncation, as the
-     * scalar path; the other lanes' values are not used. */
-    const __m256i d1 = _mm256_cvttps_epi32(lam);
-    const __m256 f = _mm256_sub_ps(lam, _mm256_cvtepi32_ps(d1));
-    const __m256i two_i = _mm256_castps_si256(two);
-    const __m256i fine = _mm256_blendv_epi8(
-        _mm256_and_si256(_mm256_castps_si256(last), _mm256_set1_epi32(q)), d1, two_i);
-    const __m256i coarse = _mm256_sub_epi32(fine, two_i); /* + 1 where two levels */
     __m256 c0[3], c1[3];
-    bilinear8(tex, fine, rs, rt, repeat_s, repeat_t, c0);
-    if (!_mm256_movemask_ps(two)) {
+    bilinear8(tex, p.fine, p.rs, p.rt, p.repeat_s, p.repeat_t, c0);
+    if (!_mm256_movemask_ps(p.two)) {
         /* One level in every lane (magnified, or at the last level). */
         for (int k = 0; k < 3; k++)
             _mm256_storeu_ps(rgb[k], c0[k]);
         return 1;
     }
-    bilinear8(tex, coarse, rs, rt, repeat_s, repeat_t, c1);
-    for (int k = 0; k < 3; k++)
-        _mm256_storeu_ps(
-            rgb[k], _mm256_blendv_ps(c0[k],
-                                     _mm256_add_ps(c0[k], _mm256_mul_ps(f, _mm256_sub_ps(c1[k], c0[k]))),
-                                     two));
+    bilinear8(tex, p.coarse, p.rs, p.rt, p.repeat_s, p.repeat_t, c1);
+    lod8_store(c0, c1, p.f, p.two, rgb);
     return 1;
+}
+
+int scene_texture_prefetch_lod8(const struct scene_texture *tex, const float lambda[8],
+                             const float s[8], const float t[8],
+                             struct scene_texture_lookup8 *out)
+{
+    struct lod8_plan p;
+    if (!lod8_plan(tex, lambda, s, t, &p))
+        return 0;
+    /* The same levels and texels as sample_lod8: their byte offsets
+     * (int32) and the weights (float) stored as computed, exact; the
+     * loads and blends left to scene_texture_finish_lod8.  The lines of
+     * the block's corner lanes (0 and 7: a 4 x 2 block's texels lie
+     * between them) on both rows asked for now, a hint that reads no
+     * value, so that they are in the cache by then. */
+    const char *texels = (const char *)tex->levels[0].texels;
+    out->tex = tex;
+    out->levels = _mm256_movemask_ps(p.two) ? 2 : 1;
+    for (int l = 0; l < out->levels; l++) {
+        __m256i off[4];
+        __m256 va, vb;
+        bilinear8_offsets(tex, l ? p.coarse : p.fine, p.rs, p.rt, p.repeat_s, p.repeat_t, off,
+                          &va, &vb);
+        for (int c = 0; c < 4; c++)
+            _mm256_storeu_si256((__m256i *)(void *)out->offset[l][c], off[c]);
+        _mm256_storeu_ps(out->a[l], va);
+        _mm256_storeu_ps(out->b[l], vb);
+        _mm_prefetch(texels + out->offset[l][0][0], _MM_HINT_T0);
+        _mm_prefetch(texels + out->offset[l][2][0], _MM_HINT_T0);
+        _mm_prefetch(texels + out->offset[l][0][7], _MM_HINT_T0);
+        _mm_prefetch(texels + out->offset[l][2][7], _MM_HINT_T0);
+    }
+    _mm256_storeu_ps(out->f, p.f);
+    _mm256_storeu_ps(out->two, p.two);
+    return 1;
+}
+
+void scene_texture_finish_lod8(const struct scene_texture_lookup8 *in, float rgb[3][8])
+{
+    __m256 c[2][3];
+    for (int l = 0; l < in->levels; l++) {
+        __m256i off[4], x[4];
+        for (int k = 0; k < 4; k++)
+            off[k] = _mm256_loadu_si256((const __m256i *)(const void *)in->offset[l][k]);
+        bilinear8_gather(in->tex, off, x);
+        bilinear8_blend(x, _mm256_loadu_ps(in->a[l]), _mm256_loadu_ps(in->b[l]), c[l]);
+    }
+    if (in->levels == 1) {
+        for (int k = 0; k < 3; k++)
+            _mm256_storeu_ps(rgb[k], c[0][k]);
+        return;
+    }
+    lod8_store(c[0], c[1], _mm256_loadu_ps(in->f), _mm256_loadu_ps(in->two), rgb);
 }
 #endif
 

@@ -167,6 +167,36 @@ void scene_texture_sample_lod(const struct scene_texture *tex, float lambda, flo
  */
 int scene_texture_sample_lod8(const struct scene_texture *tex, const float lambda[8],
                               const float s[8], const float t[8], float rgb[3][8]);
+
+/* scene_texture_sample_lod8 in two steps, so that a caller can give the
+ * core other work while the texels come into the cache (render/render.c's
+ * pipeline of blocks): what decides the loads, their addresses kept and
+ * their cache lines asked for (scene_texture_prefetch_lod8), then the
+ * loads and the blends (scene_texture_finish_lod8).  The texels' offsets
+ * and the weights are kept as they were computed (int32 offsets, float
+ * weights), so the two give sample_lod8's floats bit for bit. */
+struct scene_texture_lookup8 {
+    const struct scene_texture *tex;
+    /* The texels' byte offsets from level 0's first texel: level (fine,
+     * coarse), corner (00, 10, 01, 11), lane. */
+    int32_t offset[2][4][8];
+    float a[2][8], b[2][8]; /* a level's horizontal and vertical weights */
+    float f[8];             /* the coarse level's blend weight */
+    float two[8];           /* all ones where a lane blends two levels */
+    int levels;             /* 2 when a lane blends two levels, else 1 */
+};
+
+/* scene_texture_sample_lod8 up to its texel loads into *out, the lines
+ * of the block's corner lanes prefetched (a hint: no value is read);
+ * returns 0, having written nothing, where sample_lod8 does not take the
+ * block. */
+int scene_texture_prefetch_lod8(const struct scene_texture *tex, const float lambda[8],
+                             const float s[8], const float t[8],
+                             struct scene_texture_lookup8 *out);
+
+/* The rest of scene_texture_sample_lod8 from *in: the texels' loads and
+ * the blends, sample_lod8's rgb. */
+void scene_texture_finish_lod8(const struct scene_texture_lookup8 *in, float rgb[3][8]);
 #endif
 
 #endif
