@@ -10,9 +10,11 @@
  * change to the packet walk alone moved the single walk's code (the
  * functions' starts by 32 bytes), and the single walk, its code
  * unchanged, ran up to 13 % slower in that binary on a quiet machine
- * (docs/performance-log.md, pk11).  The packet units are linked after
- * every other object of the library (CMakeLists.txt), so their size
- * moves no other code either.
+ * (docs/performance-log.md, pk11).  The packet units are the last of
+ * the library's sources (CMakeLists.txt): the shared library, linked in
+ * that order, has nothing after them; a static link places the archive's
+ * objects in the order the linker pulls them, and there the single walk
+ * stays before them while some other objects follow (pk12).
  */
 #ifndef RT_TRACE_PACKET_KERNELS_H
 #define RT_TRACE_PACKET_KERNELS_H
