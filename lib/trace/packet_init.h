@@ -279,9 +279,12 @@ static inline void packet_plain_masks(const __m256 ov[3], const __m256 dv[3], un
 }
 #endif
 
-static void TRACE_PACKET_INIT(const float (*org)[3], const float (*dir)[3], const float *tmin,
-                              unsigned live, struct trace_ray rays[TRACE_PACKET],
-                              struct trace_top_rays *top, struct trace_packet_plain *plain)
+void TRACE_PACKET_INIT(const float (*org)[3], const float (*dir)[3], const float *tmin,
+                       unsigned live, struct trace_ray rays[TRACE_PACKET],
+                       struct trace_top_rays *top, struct trace_packet_plain *plain);
+void TRACE_PACKET_INIT(const float (*org)[3], const float (*dir)[3], const float *tmin,
+                       unsigned live, struct trace_ray rays[TRACE_PACKET],
+                       struct trace_top_rays *top, struct trace_packet_plain *plain)
 {
     /* The live rays across lanes; the others hold an origin of zeros and
      * a direction of ones, so that nothing below divides by zero. */

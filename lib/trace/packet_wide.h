@@ -1,8 +1,9 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * packet_wide.h - the packet walk over the wide layout (packet.h),
- * included by the SIMD translation units (kernels.h) after
- * traverse_wide.h, whose per-ray pieces it reuses: each ray of a packet
+ * included by the packet walk's own translation units (packet_kernels.h:
+ * packet_sse4.c, packet_avx2.c, packet_avx512.c) after traverse_wide.h,
+ * whose per-ray pieces it reuses: each ray of a packet
  * keeps the single-ray walk's state (struct wide_state), every box test
  * of a ray is walk_wide4's or walk_wide8's float operations on that
  * ray's own near and far planes, every leaf is wide_leaf for that ray,

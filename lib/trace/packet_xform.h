@@ -50,9 +50,12 @@
  * whose transformed direction can be traced; returns the mask of those
  * rays, as trace_scene_object_ray's returns ray by ray.
  */
-static unsigned TRACE_PACKET_XFORM(const double m[12], const float (*org)[3],
-                                   const float (*dir)[3], const float *tmin, unsigned rays,
-                                   struct trace_ray o_ray[TRACE_PACKET])
+unsigned TRACE_PACKET_XFORM(const double m[12], const float (*org)[3], const float (*dir)[3],
+                            const float *tmin, unsigned rays,
+                            struct trace_ray o_ray[TRACE_PACKET]);
+unsigned TRACE_PACKET_XFORM(const double m[12], const float (*org)[3], const float (*dir)[3],
+                            const float *tmin, unsigned rays,
+                            struct trace_ray o_ray[TRACE_PACKET])
 {
     __m256 o[3], d[3], ov[3], dv[3];
     /* Across lanes as packet_init_soa3 (packet_init.h) puts them. */

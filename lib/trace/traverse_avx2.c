@@ -6,6 +6,7 @@
  * and trace_kernels_avx2 returns NULL.
  */
 #include "trace/kernels.h"
+#include "trace/packet_kernels.h"
 
 #if defined(__AVX2__)
 #define TRACE_WALK_CLOSEST trace_closest_avx2
@@ -19,20 +20,9 @@
 #define TRACE_WIDE_WALK1 trace_walk1_avx2
 #define TRACE_WIDE_WALK1_COUNTED trace_walk1_counted_avx2
 #include "trace/traverse_wide.h"
-/* packet_init.h before packet_wide.h: the arrays entries set their rays
- * up with its pieces. */
-#define TRACE_PACKET_INIT trace_packet_init_avx2
-#include "trace/packet_init.h"
-#define TRACE_PACKET_CLOSEST trace_closest_packet_avx2
-#define TRACE_PACKET_ANY trace_any_packet_avx2
-#define TRACE_PACKET_CLOSEST_ARRAYS trace_closest_packet_arrays_avx2
-#define TRACE_PACKET_ANY_ARRAYS trace_any_packet_arrays_avx2
-#include "trace/packet_wide.h"
 #define TRACE_TOP_LANES trace_top_lanes_avx2
 #define TRACE_TOP_LANES1 trace_top_lanes1_avx2
 #include "trace/top_lanes.h"
-#define TRACE_PACKET_XFORM trace_packet_xform_avx2
-#include "trace/packet_xform.h"
 
 static const struct trace_kernels table = {
     TRACE_ISA_AVX2, "avx2", trace_closest_avx2, trace_any_avx2,

@@ -6,6 +6,7 @@
  * and trace_kernels_sse4 returns NULL.
  */
 #include "trace/kernels.h"
+#include "trace/packet_kernels.h"
 #include "trace/scene_traverse.h"
 
 #if defined(__SSE4_2__)
@@ -17,9 +18,6 @@
 #define TRACE_WIDE_CLOSEST1 trace_closest1_sse4
 #define TRACE_WIDE_ANY1 trace_any1_sse4
 #include "trace/traverse_wide.h"
-#define TRACE_PACKET_CLOSEST trace_closest_packet_sse4
-#define TRACE_PACKET_ANY trace_any_packet_sse4
-#include "trace/packet_wide.h"
 
 static const struct trace_kernels table = {
     TRACE_ISA_SSE4, "sse4", trace_closest_sse4, trace_any_sse4,

@@ -13,7 +13,8 @@
  * table against the scalar one bit for bit.
  *
  * Define TRACE_WALK_CLOSEST and TRACE_WALK_ANY to the names of the two
- * functions to generate before including this file.
+ * functions to generate before including this file; without them (the
+ * packet walk's units, packet_wide.h's fallback) only the walk itself.
  */
 #include <math.h>
 #include <stddef.h>
@@ -160,6 +161,7 @@ done:
     return found;
 }
 
+#if defined(TRACE_WALK_CLOSEST)
 int TRACE_WALK_CLOSEST(const struct bvh *bvh, const float *tri, const struct trace_ray *ray,
                        float t_max, struct trace_hit *hit, struct trace_counters *counters);
 int TRACE_WALK_CLOSEST(const struct bvh *bvh, const float *tri, const struct trace_ray *ray,
@@ -175,3 +177,4 @@ int TRACE_WALK_ANY(const struct bvh *bvh, const float *tri, const struct trace_r
 {
     return walk(bvh, tri, ray, t_max, 1, NULL, counters);
 }
+#endif

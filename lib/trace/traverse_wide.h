@@ -6,6 +6,15 @@
  * traverse_walk.h.  Define TRACE_WIDE_CLOSEST, TRACE_WIDE_ANY,
  * TRACE_WIDE_CLOSEST1 and TRACE_WIDE_ANY1.
  *
+ * The packet walk (packet_wide.h) lives in translation units of its own
+ * (packet_sse4.c, packet_avx2.c, packet_avx512.c), so that its changes
+ * cannot move the single walk's code (docs/performance-log.md, pk11 and
+ * pk12).  Those units define TRACE_WIDE_PACKET_PIECES instead of the
+ * names above: they get the per-ray pieces the packet walk reuses and
+ * its fallback (walk_wide and the 8-wide walks over walk_wide8_ray), and
+ * none of the single-ray entries; the single walk's units get the
+ * entries and not the packet walk's fallback.
+ *
  * Same answers as the binary walk of traverse_walk.h, bit for bit:
  * - the child boxes are tested with isect_box's float operations lane by
  *   lane: (bound - org) * inv per slab with the same near/far choice, the
@@ -840,12 +849,14 @@ static inline int wide8_walk_end(const struct wide_state *s, int done, int any_h
  * branch cost more in mispredictions than it saved (gears random rays
  * 0.81 -> 0.75 of Embree with it, primary rays 1.02 -> 1.07).  A copy per
  * choice, not a test per packet. */
+#if defined(TRACE_WIDE_PACKET_PIECES)
 WIDE8_WALK(wide8_walk_closest, walk_wide8_ray, 0, 0, 0)
 WIDE8_WALK(wide8_walk_closest_stats, walk_wide8_ray, 0, 1, 0)
 WIDE8_WALK(wide8_walk_closest_early, walk_wide8_ray, 0, 0, 1)
 WIDE8_WALK(wide8_walk_closest_early_stats, walk_wide8_ray, 0, 1, 1)
 WIDE8_WALK(wide8_walk_any, walk_wide8_ray, 1, 0, 1)
 WIDE8_WALK(wide8_walk_any_stats, walk_wide8_ray, 1, 1, 1)
+#else
 
 /*
  * A leaf of n = 5..8 triangles (two packets, p[0] and p[1]) with one
@@ -1066,6 +1077,7 @@ static int TRACE_WIDE_LEAF8(const struct trace_ray *ray, const struct tri4_packe
     }
     return any_hit ? stop : s.found;
 }
+#endif /* TRACE_WIDE_PACKET_PIECES */
 #endif
 
 /* A whole 4-wide walk for a ray whose tmin is not >= 0 (negative or NaN;
@@ -1110,6 +1122,7 @@ WIDE4_WALK(wide4_walk_closest_stats, 0, 1)
 WIDE4_WALK(wide4_walk_any, 1, 0)
 WIDE4_WALK(wide4_walk_any_stats, 1, 1)
 
+#if defined(TRACE_WIDE_PACKET_PIECES)
 /* The walk of the layout's width; a width this table does not walk
  * (8 without AVX) takes the binary walk, which gives the same answers. */
 #if defined(__GNUC__)
@@ -1145,6 +1158,7 @@ static inline int walk_wide(const struct bvh4 *wide, const struct bvh *bvh, cons
     return walk(bvh, tri, ray, t_max, any_hit, hit, counters);
 }
 
+#else
 /* walk_wide for the single-ray entries below, whose 8-wide walks test a
  * leaf of two packets with one 8-lane call (walk_wide8_ray_leaf8; sleaf
  * found it nowhere slower than two 4-lane calls).  walk_wide above, as
@@ -1276,3 +1290,4 @@ int TRACE_WIDE_ANY1(const struct bvh4 *wide, const struct bvh *bvh, const float 
 {
     return walk_wide_single1(wide, bvh, tri, org, dir, tmin, t_max, 1, NULL, counters);
 }
+#endif /* TRACE_WIDE_PACKET_PIECES */
