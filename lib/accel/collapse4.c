@@ -232,6 +232,7 @@ struct dp_node {
     uint32_t first; /* the leaf lane's first slot (count > 0) */
     uint8_t count;  /* triangles as one leaf lane, 0: it cannot be one */
     uint8_t leaf;   /* C(n, 1) is the leaf's */
+    uint8_t lanes;  /* the fewest j with C(n, j) = C(n, width) */
 };
 
 struct dp {
@@ -240,16 +241,24 @@ struct dp {
     uint32_t width;
     uint32_t max_leaf; /* triangles a merged subtree may hold */
     float node_cost, packet_cost, leaf_cost; /* TEMPORARY */
+    uint32_t forced_leaf;
     const uint32_t *roots; /* the subtrees below the top, for the pool */
 };
 
-/* D(n, j) of inner node n from its children's costs; *split the k. */
+/* D(n, j) of inner node n from its children's costs; *split the k.
+ * Only k with k <= l->lanes and j - k <= r->lanes are tried: a child's
+ * cost does not fall beyond its lanes, and float addition is monotonic,
+ * so a larger k (or j - k) never sums lower than the bound's; the same
+ * minimum, in a fraction of the sums near the leaves (where most nodes
+ * are: two one-lane children take one sum). */
 static float dp_split(const struct dp_node *l, const struct dp_node *r, uint32_t j,
                       uint32_t *split)
 {
-    float best = l->cost[0] + r->cost[j - 2];
-    uint32_t k_best = 1;
-    for (uint32_t k = 2; k < j; k++) {
+    const uint32_t lo = j > r->lanes + 1u ? j - r->lanes : 1u;
+    const uint32_t hi = l->lanes < j - 1u ? l->lanes : j - 1u;
+    float best = l->cost[lo - 1] + r->cost[j - lo - 1];
+    uint32_t k_best = lo;
+    for (uint32_t k = lo + 1; k <= hi; k++) {
         const float c = l->cost[k - 1] + r->cost[j - k - 1];
         if (c < best) {
             best = c;
@@ -270,6 +279,7 @@ static void dp_one(const struct dp *d, uint32_t i)
         e->first = n->first;
         e->count = (uint8_t)n->count;
         e->leaf = 1;
+        e->lanes = 1;
         const float leaf = area * (d->leaf_cost + DP_PACKET_COST * (float)((n->count + 3) / 4));
         for (uint32_t j = 0; j < d->width; j++)
             e->cost[j] = leaf;
@@ -288,10 +298,24 @@ static void dp_one(const struct dp *d, uint32_t i)
             e->count = (uint8_t)(l->count + r->count);
         }
     }
+    if (e->count && e->count <= d->forced_leaf) {
+        /* One packet: a leaf lane, as a binary leaf (the layout's
+         * definition, bvh4_layout.h). */
+        e->leaf = 1;
+        e->lanes = 1;
+        const float leaf = area * (d->leaf_cost + DP_PACKET_COST);
+        for (uint32_t j = 0; j < d->width; j++)
+            e->cost[j] = leaf;
+        return;
+    }
     uint32_t k;
     float split[MAX_WIDTH + 1] = {0}; /* [2, width] written (width 4 or 8) */
-    for (uint32_t j = 2; j <= d->width; j++)
+    /* Beyond the children's lanes together D(n, j) stays (dp_split). */
+    const uint32_t most = l->lanes + r->lanes < d->width ? l->lanes + r->lanes : d->width;
+    for (uint32_t j = 2; j <= most; j++)
         split[j] = dp_split(l, r, j, &k);
+    for (uint32_t j = most + 1; j <= d->width; j++)
+        split[j] = split[most];
     const float inner = area * DP_NODE_COST + split[d->width];
     const float leaf = e->count ? area * (d->leaf_cost + DP_PACKET_COST * (float)((e->count + 3u) / 4u))
                                 : INFINITY;
@@ -299,6 +323,10 @@ static void dp_one(const struct dp *d, uint32_t i)
     e->cost[0] = e->leaf ? leaf : inner;
     for (uint32_t j = 2; j <= d->width; j++)
         e->cost[j - 1] = split[j] < e->cost[j - 2] ? split[j] : e->cost[j - 2];
+    uint32_t lanes = d->width;
+    while (lanes > 1 && e->cost[lanes - 2] == e->cost[d->width - 1])
+        lanes--;
+    e->lanes = (uint8_t)lanes;
 }
 
 /* The entries of binary subtree i, children first (depth at most
@@ -1218,6 +1246,7 @@ static int collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *t
         dp.node_cost = getenv("RT_DP_NODE") ? (float)atof(getenv("RT_DP_NODE")) : 1.0f;
         dp.packet_cost = getenv("RT_DP_PACKET") ? (float)atof(getenv("RT_DP_PACKET")) : 1.0f;
         dp.leaf_cost = getenv("RT_DP_LEAF") ? (float)atof(getenv("RT_DP_LEAF")) : 0.0f;
+        dp.forced_leaf = getenv("RT_DP_FORCED") ? (uint32_t)atoi(getenv("RT_DP_FORCED")) : BVH_WIDE_MERGE;
         if (getenv("RT_DP_MAXLEAF"))
             dp.max_leaf = (uint32_t)atoi(getenv("RT_DP_MAXLEAF"));
         dp.node = rt_realloc_array(NULL, bvh->node_count, sizeof(*dp.node));
