@@ -22,7 +22,6 @@
 
 #include <math.h>
 #include <stdint.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "accel/bvh_build.h"
@@ -214,8 +213,11 @@ static double wide_node_cost(const struct bvh *bvh, const float *tri, uint32_t i
  *   D(n, j) = min over 0 < k < j of C(left, k) + C(right, j - k)
  * where leaf(n) = A(n) c_packet ceil(t / 4) when n's t triangles may be
  * one leaf lane (a binary leaf, or a subtree of at most the merge limit
- * in consecutive slots, as small_span), else infinite; a binary leaf
- * cannot be opened, so C(leaf, j) = leaf(leaf).  The costs are absolute
+ * in consecutive slots, as small_span), else infinite; a binary leaf,
+ * and a subtree of one packet (BVH_WIDE_MERGE, the layout's definition
+ * of a leaf lane, bvh4_layout.h), is not opened: C(n, j) = leaf(n).
+ * (Opened, the soup of internal/collapse_threads took 52 % more bytes,
+ * its packets holding 1.8 triangles on average.)  The costs are absolute
  * (areas not divided by the parent's), as in the paper.  gather_dp reads
  * the choices back top-down; it recomputes each minimum with the same
  * float operations in the same order (-ffp-contract=off), so it finds
@@ -224,8 +226,25 @@ static double wide_node_cost(const struct bvh *bvh, const float *tri, uint32_t i
  * lane's box is still a binary node's box, and the walks' answers do not
  * depend on which nodes are lanes (traverse_wide.h).
  */
-#define DP_NODE_COST (d->node_cost)
-#define DP_PACKET_COST (d->packet_cost)
+/* A wide node's test against a packet's, the DP's cost ratio.  2 rather
+ * than the greedy merge's BVH_WIDE_NODE_COST of 1: with 1 the DP gives
+ * a ray 1-4 % more node tests than the greedy collapse on the soup, bumpy
+ * and the kitchen (for fewer triangle tests) and no faster rays there;
+ * with 2 it makes 18-41 % fewer wide nodes, 2-5 % fewer node tests per
+ * ray on the soup and bumpy, 7-10 % on the gears (docs/performance-log.md,
+ * round 35, cl1).  A heuristic only. */
+#define DP_NODE_COST 2.0f
+#define DP_PACKET_COST 1.0f
+
+/* The optimal collapse instead of the greedy one for triangle layouts
+ * (1) or not (0, the default): it costs 24-45 % more instructions in the
+ * collapse (a pass over every binary node) and the kitchen's camera rays
+ * were slower (cl1's section of docs/performance-log.md); a candidate
+ * for a build quality (Embree's RTC_BUILD_QUALITY_HIGH) for objects
+ * built once.  Compiled either way, so it stays checked. */
+#ifndef RT_COLLAPSE_OPTIMAL
+#define RT_COLLAPSE_OPTIMAL 0
+#endif
 
 struct dp_node {
     float cost[MAX_WIDTH];
@@ -240,8 +259,6 @@ struct dp {
     struct dp_node *node;
     uint32_t width;
     uint32_t max_leaf; /* triangles a merged subtree may hold */
-    float node_cost, packet_cost, leaf_cost; /* TEMPORARY */
-    uint32_t forced_leaf;
     const uint32_t *roots; /* the subtrees below the top, for the pool */
 };
 
@@ -280,7 +297,7 @@ static void dp_one(const struct dp *d, uint32_t i)
         e->count = (uint8_t)n->count;
         e->leaf = 1;
         e->lanes = 1;
-        const float leaf = area * (d->leaf_cost + DP_PACKET_COST * (float)((n->count + 3) / 4));
+        const float leaf = area * (DP_PACKET_COST * (float)((n->count + 3) / 4));
         for (uint32_t j = 0; j < d->width; j++)
             e->cost[j] = leaf;
         return;
@@ -298,12 +315,12 @@ static void dp_one(const struct dp *d, uint32_t i)
             e->count = (uint8_t)(l->count + r->count);
         }
     }
-    if (e->count && e->count <= d->forced_leaf) {
+    if (e->count && e->count <= BVH_WIDE_MERGE) {
         /* One packet: a leaf lane, as a binary leaf (the layout's
          * definition, bvh4_layout.h). */
         e->leaf = 1;
         e->lanes = 1;
-        const float leaf = area * (d->leaf_cost + DP_PACKET_COST);
+        const float leaf = area * DP_PACKET_COST;
         for (uint32_t j = 0; j < d->width; j++)
             e->cost[j] = leaf;
         return;
@@ -317,8 +334,8 @@ static void dp_one(const struct dp *d, uint32_t i)
     for (uint32_t j = most + 1; j <= d->width; j++)
         split[j] = split[most];
     const float inner = area * DP_NODE_COST + split[d->width];
-    const float leaf = e->count ? area * (d->leaf_cost + DP_PACKET_COST * (float)((e->count + 3u) / 4u))
-                                : INFINITY;
+    const float leaf =
+        e->count ? area * (DP_PACKET_COST * (float)((e->count + 3u) / 4u)) : INFINITY;
     e->leaf = e->count && leaf <= inner;
     e->cost[0] = e->leaf ? leaf : inner;
     for (uint32_t j = 2; j <= d->width; j++)
@@ -1239,16 +1256,10 @@ static int collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *t
      * walk's prefetch (prefetch_top below) has the same threshold. */
     c.merge_left =
         tri && (uint64_t)bvh->prim_count * BVH_WIDE_BYTES_PER_TRIANGLE >= BVH_WIDE_PREFETCH_BYTES;
-    if (tri && !getenv("RT_COLLAPSE_GREEDY")) { /* TEMPORARY: measurement toggle */
+    if (RT_COLLAPSE_OPTIMAL && tri) {
         dp.bvh = bvh;
         dp.width = width;
         dp.max_leaf = c.merge_left ? BVH_WIDE_MERGE_LEFT : BVH_WIDE_MERGE;
-        dp.node_cost = getenv("RT_DP_NODE") ? (float)atof(getenv("RT_DP_NODE")) : 1.0f;
-        dp.packet_cost = getenv("RT_DP_PACKET") ? (float)atof(getenv("RT_DP_PACKET")) : 1.0f;
-        dp.leaf_cost = getenv("RT_DP_LEAF") ? (float)atof(getenv("RT_DP_LEAF")) : 0.0f;
-        dp.forced_leaf = getenv("RT_DP_FORCED") ? (uint32_t)atoi(getenv("RT_DP_FORCED")) : BVH_WIDE_MERGE;
-        if (getenv("RT_DP_MAXLEAF"))
-            dp.max_leaf = (uint32_t)atoi(getenv("RT_DP_MAXLEAF"));
         dp.node = rt_realloc_array(NULL, bvh->node_count, sizeof(*dp.node));
         if (!dp.node || dp_run(&dp, pool))
             goto fail;
