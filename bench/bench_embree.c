@@ -367,6 +367,8 @@ struct tests_row {
     int any_hit;
     uint32_t rays;
     double nodes, tris, answered;
+    double wide_sah;
+    uint32_t wide_nodes, packets;
 };
 
 static int embree_trace_mesh(const struct bench_options *opts, RTCDevice device,
@@ -404,6 +406,11 @@ static int embree_trace_mesh(const struct bench_options *opts, RTCDevice device,
         tests[s].rays = sets[s].count;
         bench_count_tests_ours(&acc, &sets[s], any_hit, &tests[s].nodes, &tests[s].tris,
                                &tests[s].answered);
+        tests[s].wide_nodes = acc.wide.node_count;
+        tests[s].packets = acc.wide.packet_count;
+        tests[s].wide_sah = acc.wide.node_count
+                                ? accel_wide_sah_cost(&acc.wide, BVH_WIDE_NODE_COST, 1.0)
+                                : 0.0;
         if (embree_trace_set(opts, mesh, &acc, scenes, &sets[s], any_hit, ours, theirs, &row))
             goto out;
         for (int t = 0; t < 2; t++) {
@@ -667,13 +674,15 @@ int bench_embree_section(const struct bench_options *opts, struct bench_mesh *me
                       "counted once on one thread; \"answered\": rays that hit (closest hit) or "
                       "are occluded (any hit).\n\n",
                       bench_kernels()->name, bench_layout_name());
-        report_table_header("mesh|rays|count|node tests/ray|triangle tests/ray|answered");
+        report_table_header("mesh|rays|count|node tests/ray|triangle tests/ray|answered|wide "
+                            "nodes|packets|wide SAH");
         for (int i = 0; i < 3 * mesh_count; i++) {
             const struct tests_row *t = &tests[i];
             if (!t->mesh)
                 continue;
-            report_row("%s|%s%s|%u|%.2f|%.2f|%.1f%%", t->mesh, t->set,
-                       t->any_hit ? " (any hit)" : "", t->rays, t->nodes, t->tris, t->answered);
+            report_row("%s|%s%s|%u|%.2f|%.2f|%.1f%%|%u|%u|%.3f", t->mesh, t->set,
+                       t->any_hit ? " (any hit)" : "", t->rays, t->nodes, t->tris, t->answered,
+                       t->wide_nodes, t->packets, t->wide_sah);
             char key[96];
             snprintf(key, sizeof(key), "embree.%s.%s.ours_node_tests_per_ray", t->mesh, t->set);
             report_metric(key, t->nodes, -1);

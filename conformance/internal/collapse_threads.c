@@ -299,6 +299,8 @@ static void check_spare(const struct tg_mesh *m, struct rt_pool **pools)
         } else {
             const size_t bytes = spare.bytes;
             const void *block = spare.base;
+            printf("  spare: %zu bytes, layout %llu bytes\n", bytes,
+                   (unsigned long long)(bvh4_node_bytes(&fresh) + bvh4_leaf_bytes(&fresh)));
             if (accel_collapse_wide_reuse(&reused, &b, tri, 8, pools[t], &spare)) {
                 failures += !CHECKF(0, "spare: collapse into the spare failed");
             } else {

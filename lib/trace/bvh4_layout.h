@@ -190,6 +190,14 @@ int accel_collapse_wide_pool(struct bvh4 *out, const struct bvh *bvh, const floa
 int accel_collapse_wide_reuse(struct bvh4 *out, const struct bvh *bvh, const float *tri,
                               uint32_t width, struct rt_pool *pool, struct rt_large_block *spare);
 
+/* The wide layout's SAH cost (MacDonald and Booth 1990), the measure the
+ * optimal collapse minimises (Ylitie, Karras and Laine 2017, sec. 3.1):
+ * c_node times the area of every wide node's box (its lanes' union) plus
+ * c_packet times every leaf lane's area times its packets, over the
+ * root's area.  Triangle layouts only (a leaf lane's count its
+ * triangles).  Implemented in lib/accel/sah_cost.c. */
+double accel_wide_sah_cost(const struct bvh4 *wide, double c_node, double c_packet);
+
 /* accel_collapse_wide with width 4. */
 int accel_collapse4(struct bvh4 *out, const struct bvh *bvh, const float *tri);
 
