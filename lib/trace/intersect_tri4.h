@@ -731,7 +731,8 @@ static inline unsigned tri4_before_tmin_vectors(const struct tri4_ray *r, __m128
     const __m128 s2 = _mm_mul_ps(sc, sc);
     const __m128 zb = _mm_mul_ps(sc, _mm_andnot_ps(sign, r->sz));
     const __m128 abs_det = _mm_andnot_ps(sign, det);
-    const __m128 T = _mm_add_ps(_mm_add_ps(_mm_mul_ps(U, Az), _mm_mul_ps(V, Bz)), _mm_mul_ps(W, Cz));
+    const __m128 T =
+        _mm_add_ps(_mm_add_ps(_mm_mul_ps(U, Az), _mm_mul_ps(V, Bz)), _mm_mul_ps(W, Cz));
     /* Check 2: s T (T with det's sign flipped in, exact) + the error
      * term < tmin (7/8) |det|. */
     const __m128 sT = _mm_xor_ps(T, _mm_and_ps(sign, det));

@@ -142,7 +142,6 @@ static inline int wide_take_closest(struct wide_state *s, uint32_t prim, float t
     return 1;
 }
 
-
 /* tri4_before_tmin for the near lanes the any-hit filter's own checks
  * left (tri4_filter_lanes_depth with depth_out): rare (2.8 % of the
  * lanes those checks see on gears' shadow rays), so out of line. */
@@ -178,10 +177,11 @@ static inline int wide_packet_test(struct wide_state *s, const struct tri4_packe
          * tmin.  The kitchen's walls and boxes: 3 % of its shadow rays'
          * instructions.  With depth_out only (the single-ray walks'
          * any-hit leaves, WIDE8_LEAF_TEST below). */
-        /* With depth_out the filter has refused the near lanes behind
-         * tmin and those tri4_before_tmin_lanes' checks refuse, from its
-         * registers (tri4_filter_lanes_depth); the near lanes left are
-         * those checks could not decide, for tri4_before_tmin. */
+        /* With depth_out the filter has made both refusals above, from
+         * its registers (tri4_filter_lanes_depth: the near lanes behind
+         * tmin, then those tri4_before_tmin_lanes' checks decide); the
+         * near lanes left are those the checks could not decide, for
+         * tri4_before_tmin. */
         const __m128 tmin = s->r4.tmin;
         const unsigned near =
             (unsigned)_mm_movemask_ps(_mm_cmplt_ps(_mm_loadu_ps(lanes.t_lo), tmin)) & mask;
