@@ -116,15 +116,10 @@ struct tri4_lanes {
     unsigned deferred;
 };
 
-/* Defined with tri4_before_tmin_lanes below, whose proof they carry. */
+/* Defined with tri4_before_tmin_lanes below, whose proof it carries. */
 static inline unsigned tri4_before_tmin_vectors(const struct tri4_ray *r, __m128 sc, __m128 U,
                                                 __m128 V, __m128 W, __m128 det, __m128 Az,
                                                 __m128 Bz, __m128 Cz);
-#if defined(__AVX__)
-static inline unsigned tri4_pair_before_tmin_vectors(const struct tri4_ray *r, __m256 sc,
-                                                     __m256 U, __m256 V, __m256 W, __m256 det,
-                                                     __m256 Az, __m256 Bz, __m256 Cz);
-#endif
 
 /*
  * The lanes of p (among `valid`, bit l for lane l) that isect_triangle
@@ -451,39 +446,7 @@ static inline unsigned tri4_pair_filter_lanes(const struct tri4_ray *r,
     const __m256 abs_det = _mm256_andnot_ps(_mm256_set1_ps(-0.0f), det);
     __m256 keep = _mm256_and_ps(geom, _mm256_cmp_ps(det, zero, _CMP_NEQ_UQ));
     keep = _mm256_and_ps(keep, _mm256_cmp_ps(abs_det, _mm256_set1_ps(INFINITY), _CMP_LT_OQ));
-    unsigned mask = ((unsigned)_mm256_movemask_ps(keep) & valid) | deferred;
-    if (depth_out && mask) {
-        /* The near lanes refused from the registers, as
-         * tri4_filter_lanes_depth (its comment says why each refusal is
-         * exact), eight lanes at once; the lanes the checks cannot decide
-         * stay for the caller's tri4_before_tmin. */
-        const __m256 tmin = _mm256_broadcast_ps(&r->tmin);
-        const unsigned near =
-            (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(t_lo, tmin, _CMP_LT_OQ)) & mask;
-        if (near) {
-            const unsigned behind =
-                (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(t_hi, tmin, _CMP_LT_OQ)) & near;
-            mask &= ~behind;
-            if (near & ~behind) {
-                const __m256 sign = _mm256_set1_ps(-0.0f);
-                const __m256 sa = _mm256_max_ps(_mm256_max_ps(_mm256_andnot_ps(sign, ax),
-                                                              _mm256_andnot_ps(sign, ay)),
-                                                _mm256_andnot_ps(sign, az));
-                const __m256 sb = _mm256_max_ps(_mm256_max_ps(_mm256_andnot_ps(sign, bx),
-                                                              _mm256_andnot_ps(sign, by)),
-                                                _mm256_andnot_ps(sign, bz));
-                const __m256 scc = _mm256_max_ps(_mm256_max_ps(_mm256_andnot_ps(sign, cx),
-                                                               _mm256_andnot_ps(sign, cy)),
-                                                 _mm256_andnot_ps(sign, cz));
-                const __m256 sc = _mm256_max_ps(_mm256_max_ps(sa, sb), scc);
-                mask &= ~(tri4_pair_before_tmin_vectors(r, sc, sh.U, sh.V, sh.W, det, Az, Bz,
-                                                        Cz) &
-                          near & ~behind);
-            }
-            if (!mask)
-                return 0;
-        }
-    }
+    const unsigned mask = ((unsigned)_mm256_movemask_ps(keep) & valid) | deferred;
     if (mask) {
         tri4_pair_store(out[0].U, out[1].U, sh.U);
         tri4_pair_store(out[0].V, out[1].V, sh.V);
@@ -749,41 +712,6 @@ static inline unsigned tri4_before_tmin_vectors(const struct tri4_ray *r, __m128
     ok = _mm_and_ps(ok, _mm_cmpge_ps(r->tmin, _mm_set1_ps(0x1p-100f)));
     return (unsigned)_mm_movemask_ps(ok);
 }
-
-#if defined(__AVX__)
-/* tri4_before_tmin_vectors on the eight lanes of two packets (the
- * two-packet any-hit filter's, tri4_pair_filter_lanes): the same float
- * operations lane by lane, so the same verdicts; an 8-bit mask. */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline unsigned tri4_pair_before_tmin_vectors(const struct tri4_ray *r, __m256 sc,
-                                                     __m256 U, __m256 V, __m256 W, __m256 det,
-                                                     __m256 Az, __m256 Bz, __m256 Cz)
-{
-    const __m256 sign = _mm256_set1_ps(-0.0f);
-    const __m256 tmin = _mm256_broadcast_ps(&r->tmin);
-    const __m256 s2 = _mm256_mul_ps(sc, sc);
-    const __m256 zb = _mm256_mul_ps(sc, _mm256_andnot_ps(sign, _mm256_broadcast_ps(&r->sz)));
-    const __m256 abs_det = _mm256_andnot_ps(sign, det);
-    const __m256 T = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(U, Az), _mm256_mul_ps(V, Bz)),
-                                   _mm256_mul_ps(W, Cz));
-    const __m256 sT = _mm256_xor_ps(T, _mm256_and_ps(sign, det));
-    const __m256 err =
-        _mm256_mul_ps(zb, _mm256_add_ps(_mm256_mul_ps(_mm256_set1_ps(0x1p-15f), s2),
-                                        _mm256_mul_ps(_mm256_set1_ps(0x1p-20f), abs_det)));
-    const __m256 rhs = _mm256_mul_ps(tmin, _mm256_mul_ps(_mm256_set1_ps(0.875f), abs_det));
-    __m256 ok = _mm256_cmp_ps(_mm256_add_ps(sT, err), rhs, _CMP_LT_OQ);
-    ok = _mm256_and_ps(
-        ok, _mm256_cmp_ps(abs_det, _mm256_mul_ps(_mm256_set1_ps(0x1p-13f), s2), _CMP_GE_OQ));
-    ok = _mm256_and_ps(ok, _mm256_and_ps(_mm256_cmp_ps(sc, _mm256_set1_ps(0x1p-20f), _CMP_GE_OQ),
-                                         _mm256_cmp_ps(sc, _mm256_set1_ps(0x1p20f), _CMP_LE_OQ)));
-    ok = _mm256_and_ps(ok, _mm256_and_ps(_mm256_cmp_ps(zb, _mm256_set1_ps(0x1p-60f), _CMP_GE_OQ),
-                                         _mm256_cmp_ps(zb, _mm256_set1_ps(0x1p40f), _CMP_LE_OQ)));
-    ok = _mm256_and_ps(ok, _mm256_cmp_ps(tmin, _mm256_set1_ps(0x1p-100f), _CMP_GE_OQ));
-    return (unsigned)_mm256_movemask_ps(ok);
-}
-#endif
 
 static inline unsigned tri4_before_tmin_lanes(const struct tri4_ray *r,
                                               const struct tri4_packet *p,
