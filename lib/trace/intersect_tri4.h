@@ -116,6 +116,11 @@ struct tri4_lanes {
     unsigned deferred;
 };
 
+/* Defined with tri4_before_tmin_lanes below, whose proof it carries. */
+static inline unsigned tri4_before_tmin_vectors(const struct tri4_ray *r, __m128 sc, __m128 U,
+                                                __m128 V, __m128 W, __m128 det, __m128 Az,
+                                                __m128 Bz, __m128 Cz);
+
 /*
  * The lanes of p (among `valid`, bit l for lane l) that isect_triangle
  * with this t_max might accept; every other lane it rejects.  With out
@@ -232,7 +237,49 @@ static inline unsigned tri4_filter_lanes_depth(const struct tri4_ray *r,
     const __m128 abs_det = _mm_andnot_ps(_mm_set1_ps(-0.0f), det);
     __m128 keep = _mm_and_ps(geom, _mm_cmpneq_ps(det, zero));
     keep = _mm_and_ps(keep, _mm_cmplt_ps(abs_det, _mm_set1_ps(INFINITY)));
-    const unsigned mask = ((unsigned)_mm_movemask_ps(keep) & valid) | deferred;
+    unsigned mask = ((unsigned)_mm_movemask_ps(keep) & valid) | deferred;
+    if (depth_out && mask) {
+        /* depth_out (the single-ray any-hit leaves): the kept lanes the
+         * ray starts on (t_lo < tmin: a shadow ray's own triangle and
+         * its neighbours) refused here, from the filter's registers,
+         * before anything is stored: those wholly before tmin (t_hi <
+         * tmin, which the finish clamps below tmin: wide_packet_test
+         * says why) and those tri4_before_tmin_lanes' checks refuse
+         * (tri4_before_tmin_vectors, the same checks on the same
+         * floats: its a_i are this filter's ax..cz, v_i + (-org) in
+         * the same operand order).  A shadow ray's leaves mostly end
+         * here with no lane left, so the nine lane vectors are not
+         * stored and reloaded and no function is called.  The near lanes
+         * these checks cannot decide stay in the mask; the caller
+         * refuses them with tri4_before_tmin (their t_lo, stored below,
+         * is still below tmin).  S is folded as a tree here: without NaN
+         * the maximum of the nine magnitudes is the same float in any
+         * order; with a NaN coordinate det is NaN and check 1 fails
+         * whatever S is (tri4_before_tmin_lanes' comment). */
+        const unsigned near = (unsigned)_mm_movemask_ps(_mm_cmplt_ps(t_lo, r->tmin)) & mask;
+        if (near) {
+            const unsigned behind =
+                (unsigned)_mm_movemask_ps(_mm_cmplt_ps(t_hi, r->tmin)) & near;
+            mask &= ~behind;
+            if (near & ~behind) {
+                const __m128 sign = _mm_set1_ps(-0.0f);
+                const __m128 sa = _mm_max_ps(_mm_max_ps(_mm_andnot_ps(sign, ax),
+                                                        _mm_andnot_ps(sign, ay)),
+                                             _mm_andnot_ps(sign, az));
+                const __m128 sb = _mm_max_ps(_mm_max_ps(_mm_andnot_ps(sign, bx),
+                                                        _mm_andnot_ps(sign, by)),
+                                             _mm_andnot_ps(sign, bz));
+                const __m128 scc = _mm_max_ps(_mm_max_ps(_mm_andnot_ps(sign, cx),
+                                                         _mm_andnot_ps(sign, cy)),
+                                              _mm_andnot_ps(sign, cz));
+                const __m128 sc = _mm_max_ps(_mm_max_ps(sa, sb), scc);
+                mask &= ~(tri4_before_tmin_vectors(r, sc, U, V, W, det, Az, Bz, Cz) & near &
+                          ~behind);
+            }
+            if (!mask)
+                return 0;
+        }
+    }
     if (out && mask) {
         _mm_storeu_ps(out->U, U);
         _mm_storeu_ps(out->V, V);
@@ -630,6 +677,42 @@ static inline unsigned tri4_before_tmin(const struct trace_ray *ray, const struc
  * conformance/internal/tri4_differential checks each lane refused here
  * against isect_triangle, with tmin near the triangle's own t.
  */
+/* tri4_before_tmin_lanes's checks on the filter's vectors (sc: S, the
+ * largest |component| of the filter's a_i; U, V, W, det, Az, Bz, Cz as
+ * the filter computed them): the lanes the checks refuse, as a 4-bit
+ * mask.  Shared by tri4_before_tmin_lanes (the values from a struct
+ * tri4_lanes) and the any-hit filter's own refusal
+ * (tri4_filter_lanes_depth with depth_out, from its registers). */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline unsigned tri4_before_tmin_vectors(const struct tri4_ray *r, __m128 sc, __m128 U,
+                                                __m128 V, __m128 W, __m128 det, __m128 Az,
+                                                __m128 Bz, __m128 Cz)
+{
+    const __m128 sign = _mm_set1_ps(-0.0f);
+    const __m128 s2 = _mm_mul_ps(sc, sc);
+    const __m128 zb = _mm_mul_ps(sc, _mm_andnot_ps(sign, r->sz));
+    const __m128 abs_det = _mm_andnot_ps(sign, det);
+    const __m128 T =
+        _mm_add_ps(_mm_add_ps(_mm_mul_ps(U, Az), _mm_mul_ps(V, Bz)), _mm_mul_ps(W, Cz));
+    /* Check 2: s T (T with det's sign flipped in, exact) + the error
+     * term < tmin (7/8) |det|. */
+    const __m128 sT = _mm_xor_ps(T, _mm_and_ps(sign, det));
+    const __m128 err = _mm_mul_ps(zb, _mm_add_ps(_mm_mul_ps(_mm_set1_ps(0x1p-15f), s2),
+                                                 _mm_mul_ps(_mm_set1_ps(0x1p-20f), abs_det)));
+    const __m128 rhs = _mm_mul_ps(r->tmin, _mm_mul_ps(_mm_set1_ps(0.875f), abs_det));
+    __m128 ok = _mm_cmplt_ps(_mm_add_ps(sT, err), rhs);
+    /* Check 1. */
+    ok = _mm_and_ps(ok, _mm_cmpge_ps(abs_det, _mm_mul_ps(_mm_set1_ps(0x1p-13f), s2)));
+    ok = _mm_and_ps(ok, _mm_and_ps(_mm_cmpge_ps(sc, _mm_set1_ps(0x1p-20f)),
+                                   _mm_cmple_ps(sc, _mm_set1_ps(0x1p20f))));
+    ok = _mm_and_ps(ok, _mm_and_ps(_mm_cmpge_ps(zb, _mm_set1_ps(0x1p-60f)),
+                                   _mm_cmple_ps(zb, _mm_set1_ps(0x1p40f))));
+    ok = _mm_and_ps(ok, _mm_cmpge_ps(r->tmin, _mm_set1_ps(0x1p-100f)));
+    return (unsigned)_mm_movemask_ps(ok);
+}
+
 static inline unsigned tri4_before_tmin_lanes(const struct tri4_ray *r,
                                               const struct tri4_packet *p,
                                               const struct tri4_lanes *lanes,
@@ -646,29 +729,11 @@ static inline unsigned tri4_before_tmin_lanes(const struct tri4_ray *r,
     sc = _mm_max_ps(sc, _mm_andnot_ps(sign, _mm_add_ps(r->neg_org_x, tri4_row(p, 2, r->off_x))));
     sc = _mm_max_ps(sc, _mm_andnot_ps(sign, _mm_add_ps(r->neg_org_y, tri4_row(p, 2, r->off_y))));
     sc = _mm_max_ps(sc, _mm_andnot_ps(sign, _mm_add_ps(r->neg_org_z, tri4_row(p, 2, r->off_z))));
-    const __m128 s2 = _mm_mul_ps(sc, sc);
-    const __m128 zb = _mm_mul_ps(sc, _mm_andnot_ps(sign, r->sz));
-    const __m128 det = _mm_loadu_ps(lanes->det);
-    const __m128 abs_det = _mm_andnot_ps(sign, det);
-    const __m128 T =
-        _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_loadu_ps(lanes->U), _mm_loadu_ps(lanes->Az)),
-                              _mm_mul_ps(_mm_loadu_ps(lanes->V), _mm_loadu_ps(lanes->Bz))),
-                   _mm_mul_ps(_mm_loadu_ps(lanes->W), _mm_loadu_ps(lanes->Cz)));
-    /* Check 2: s T (T with det's sign flipped in, exact) + the error
-     * term < tmin (7/8) |det|. */
-    const __m128 sT = _mm_xor_ps(T, _mm_and_ps(sign, det));
-    const __m128 err = _mm_mul_ps(zb, _mm_add_ps(_mm_mul_ps(_mm_set1_ps(0x1p-15f), s2),
-                                                 _mm_mul_ps(_mm_set1_ps(0x1p-20f), abs_det)));
-    const __m128 rhs = _mm_mul_ps(r->tmin, _mm_mul_ps(_mm_set1_ps(0.875f), abs_det));
-    __m128 ok = _mm_cmplt_ps(_mm_add_ps(sT, err), rhs);
-    /* Check 1. */
-    ok = _mm_and_ps(ok, _mm_cmpge_ps(abs_det, _mm_mul_ps(_mm_set1_ps(0x1p-13f), s2)));
-    ok = _mm_and_ps(ok, _mm_and_ps(_mm_cmpge_ps(sc, _mm_set1_ps(0x1p-20f)),
-                                   _mm_cmple_ps(sc, _mm_set1_ps(0x1p20f))));
-    ok = _mm_and_ps(ok, _mm_and_ps(_mm_cmpge_ps(zb, _mm_set1_ps(0x1p-60f)),
-                                   _mm_cmple_ps(zb, _mm_set1_ps(0x1p40f))));
-    ok = _mm_and_ps(ok, _mm_cmpge_ps(r->tmin, _mm_set1_ps(0x1p-100f)));
-    return (unsigned)_mm_movemask_ps(ok) & lanes_mask;
+    return tri4_before_tmin_vectors(r, sc, _mm_loadu_ps(lanes->U), _mm_loadu_ps(lanes->V),
+                                    _mm_loadu_ps(lanes->W), _mm_loadu_ps(lanes->det),
+                                    _mm_loadu_ps(lanes->Az), _mm_loadu_ps(lanes->Bz),
+                                    _mm_loadu_ps(lanes->Cz)) &
+           lanes_mask;
 }
 
 /*

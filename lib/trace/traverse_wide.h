@@ -151,22 +151,18 @@ static inline int wide_take_closest(struct wide_state *s, uint32_t prim, float t
     return 1;
 }
 
-/* The kept lanes of packet p, among `near` (t_lo < tmin), that the
- * finish surely refuses on t: tri4_before_tmin_lanes from the filter's
- * floats, then tri4_before_tmin for the lanes it cannot decide.  A
- * function of its own, called for the near lanes only: inlined, its
- * vectors changed GCC's register allocation of the filter before it
- * (measured: 4 to 7 more instructions, spills, on every any-hit leaf
- * call, more than its call costs). */
-static unsigned wide_near_refused(const struct wide_state *s, const struct tri4_packet *p,
-                                  const struct tri4_lanes *lanes, unsigned near) WIDE_NOINLINE;
-static unsigned wide_near_refused(const struct wide_state *s, const struct tri4_packet *p,
-                                  const struct tri4_lanes *lanes, unsigned near)
+/* wide_near_refused (the two-packet leaf's refusal of its near lanes)
+ * is defined with that leaf, below. */
+
+/* tri4_before_tmin for the near lanes the any-hit filter's own checks
+ * left (tri4_filter_lanes_depth with depth_out): rare (2.8 % of the
+ * lanes those checks see on gears' shadow rays), so out of line. */
+static unsigned wide_near_fallback(const struct wide_state *s, const struct tri4_packet *p,
+                                   unsigned near) WIDE_NOINLINE;
+static unsigned wide_near_fallback(const struct wide_state *s, const struct tri4_packet *p,
+                                   unsigned near)
 {
-    const unsigned sure = tri4_before_tmin_lanes(&s->r4, p, lanes, near);
-    if (near & ~sure)
-        return sure | tri4_before_tmin(s->ray, p, near & ~sure);
-    return sure;
+    return tri4_before_tmin(s->ray, p, near);
 }
 
 #if defined(__GNUC__)
@@ -193,18 +189,18 @@ static inline int wide_packet_test(struct wide_state *s, const struct tri4_packe
          * tmin.  The kitchen's walls and boxes: 3 % of its shadow rays'
          * instructions.  With depth_out only (the single-ray walks'
          * any-hit leaves, WIDE8_LEAF_TEST below). */
+        /* With depth_out the filter has made both refusals above, from
+         * its registers (tri4_filter_lanes_depth: the near lanes behind
+         * tmin, then those tri4_before_tmin_lanes' checks decide); the
+         * near lanes left are those the checks could not decide, for
+         * tri4_before_tmin. */
         const __m128 tmin = s->r4.tmin;
-        unsigned near =
+        const unsigned near =
             (unsigned)_mm_movemask_ps(_mm_cmplt_ps(_mm_loadu_ps(lanes.t_lo), tmin)) & mask;
-        if (near && depth_out) {
-            const unsigned behind =
-                (unsigned)_mm_movemask_ps(_mm_cmplt_ps(_mm_loadu_ps(lanes.t_hi), tmin)) & near;
-            mask &= ~behind;
-            if (near & ~behind)
-                mask &= ~wide_near_refused(s, p, &lanes, near & ~behind);
-        } else if (near) {
+        if (near && depth_out)
+            mask &= ~wide_near_fallback(s, p, near);
+        else if (near)
             mask &= ~tri4_before_tmin(s->ray, p, near);
-        }
     }
     while (mask) {
         const unsigned l = (unsigned)__builtin_ctz(mask);
@@ -866,6 +862,25 @@ WIDE8_WALK(wide8_walk_any_stats, walk_wide8_ray, 1, 1, 1)
  * hit is that of the two calls bit for bit (tri4_pair_filter_lanes says
  * why).  Only the walk copies over walk_wide8_ray_leaf8 call it.
  */
+/* The kept lanes of packet p (the two-packet any-hit leaf,
+ * wide_leaf8_test), among `near` (t_lo < tmin), that the finish surely
+ * refuses on t: tri4_before_tmin_lanes from the filter's
+ * floats, then tri4_before_tmin for the lanes it cannot decide.  A
+ * function of its own, called for the near lanes only: inlined, its
+ * vectors changed GCC's register allocation of the filter before it
+ * (measured: 4 to 7 more instructions, spills, on every any-hit leaf
+ * call, more than its call costs). */
+static unsigned wide_near_refused(const struct wide_state *s, const struct tri4_packet *p,
+                                  const struct tri4_lanes *lanes, unsigned near) WIDE_NOINLINE;
+static unsigned wide_near_refused(const struct wide_state *s, const struct tri4_packet *p,
+                                  const struct tri4_lanes *lanes, unsigned near)
+{
+    const unsigned sure = tri4_before_tmin_lanes(&s->r4, p, lanes, near);
+    if (near & ~sure)
+        return sure | tri4_before_tmin(s->ray, p, near & ~sure);
+    return sure;
+}
+
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
