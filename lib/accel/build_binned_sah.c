@@ -667,24 +667,9 @@ static void setup_refs(struct build_ref *refs, const struct build_source *src, u
         }
     } else {
         for (uint32_t i = 0; i < n; i++) {
-#if defined(__SSE2__) && !defined(RT_NO_SIMD)
-            /* The ref build_ref_set writes (lo xyz and the id's bits, hi
-             * xyz and +0), kept in registers for the bounds (as the
-             * parallel builder's set-up, build_parallel.c). */
-            __m128 tlo, thi;
-            triangle_box4(src->positions, src->indices, i, &tlo, &thi);
-            const vec4 l = vec4_xyz0(tlo);
-            const vec4 h = vec4_xyz0(thi);
-            const __m128 id = _mm_castsi128_ps(_mm_slli_si128(_mm_cvtsi32_si128((int)i), 12));
-            _mm_storeu_ps(refs[i].lo, _mm_or_ps(l, id));
-            _mm_storeu_ps(refs[i].hi, h);
+            vec4 l, h;
+            triangle_ref_set(&refs[i], src->positions, src->indices, i, &l, &h);
             bounds_grow(l, h, &lo, &hi, &clo, &chi);
-#else
-            const struct aabb box = triangle_box(src->positions, src->indices, i);
-            build_ref_set(&refs[i], &box, i);
-            bounds_grow(vec4_xyz0(vec4_load(refs[i].lo)), vec4_load(refs[i].hi), &lo, &hi, &clo,
-                        &chi);
-#endif
         }
     }
     build_store_box(root_box, lo, hi);

@@ -411,28 +411,13 @@ static void setup_task(void *arg, int worker)
              * so the same refs and the same tree. */
             for (uint32_t i = begin; i < end; i++) {
                 struct build_ref *r = &b->refs[0][i];
-#if defined(__SSE2__) && !defined(RT_NO_SIMD)
-                /* The ref build_ref_set writes (lo xyz and the id's bits,
-                 * hi xyz and +0), kept in registers for the bounds:
-                 * box_grow_ref's loads, right after the stores, would
-                 * read a 16-byte lane from a 16-byte and a 4-byte store. */
-                __m128 tlo, thi;
-                triangle_box4(b->positions, b->indices, i, &tlo, &thi);
-                const vec4 l = vec4_xyz0(tlo);
-                const vec4 h = vec4_xyz0(thi);
-                const __m128 id = _mm_castsi128_ps(_mm_slli_si128(_mm_cvtsi32_si128((int)i), 12));
-                _mm_storeu_ps(r->lo, _mm_or_ps(l, id));
-                _mm_storeu_ps(r->hi, h);
+                vec4 l, h;
+                triangle_ref_set(r, b->positions, b->indices, i, &l, &h);
                 const vec4 cen = vec4_add(l, h);
                 lo = vec4_min(lo, l);
                 hi = vec4_max(hi, h);
                 clo = vec4_min(clo, cen);
                 chi = vec4_max(chi, cen);
-#else
-                const struct aabb box = triangle_box(b->positions, b->indices, i);
-                build_ref_set(r, &box, i);
-                const vec4 cen = box_grow_ref(&lo, &hi, &clo, &chi, r);
-#endif
                 nan |= vec4_ne_bits(cen, cen);
             }
         }

@@ -6,7 +6,8 @@
  * the triangles directly and writes them into its refs without the array
  * (fewer fresh pages a build: the boxes of a million triangles are 24 MB
  * written once and read once).  One function, so that both give the very
- * same floats and so the same trees.
+ * same floats and so the same trees; and a build ref from it
+ * (triangle_ref_set), for both builders' set-ups.
  */
 #ifndef RT_ACCEL_TRIANGLE_BOX_H
 #define RT_ACCEL_TRIANGLE_BOX_H
@@ -14,6 +15,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "accel/build_median.h"
+#include "accel/vec4.h"
 #include "base/aabb.h"
 
 #if defined(__SSE2__) && !defined(RT_NO_SIMD)
@@ -58,6 +61,35 @@ static inline struct aabb triangle_box(const float *positions, const uint32_t *i
     for (int k = 0; k < 3; k++)
         aabb_grow_point(&box, &positions[3 * (size_t)indices[3 * (size_t)j + k]]);
     return box;
+}
+
+/*
+ * triangle_ref_set: triangle i's build ref written to *r (its box, the
+ * id's bits in lo's lane 3, +0 in hi's), as build_ref_set of
+ * triangle_box writes it, and the box's lo and hi (lane 3 zero) returned
+ * for the caller's bounds.  Both builders' set-ups from the triangles
+ * (build_binned_sah.c serial, build_parallel.c per task) call it, so
+ * their refs are the same floats.  With SSE2 the two vectors stay in
+ * registers: loading them back right after the stores would read a
+ * 16-byte lane from a 16-byte and a 4-byte store (no store forwarding).
+ */
+static inline void triangle_ref_set(struct build_ref *r, const float *positions,
+                                    const uint32_t *indices, uint32_t i, vec4 *l, vec4 *h)
+{
+#if defined(__SSE2__) && !defined(RT_NO_SIMD)
+    __m128 tlo, thi;
+    triangle_box4(positions, indices, i, &tlo, &thi);
+    *l = vec4_xyz0(tlo);
+    *h = vec4_xyz0(thi);
+    const __m128 id = _mm_castsi128_ps(_mm_slli_si128(_mm_cvtsi32_si128((int)i), 12));
+    _mm_storeu_ps(r->lo, _mm_or_ps(*l, id));
+    _mm_storeu_ps(r->hi, *h);
+#else
+    const struct aabb box = triangle_box(positions, indices, i);
+    build_ref_set(r, &box, i);
+    *l = vec4_xyz0(vec4_load(r->lo));
+    *h = vec4_load(r->hi);
+#endif
 }
 
 #endif
