@@ -98,6 +98,19 @@ int accel_build(struct bvh *out, const struct aabb *prim_boxes, uint32_t prim_co
     return accel_build_binned_sah(out, prim_boxes, prim_count, &p);
 }
 
+void *build_spare_refs(uint64_t ref_bytes, struct rt_large_block *map)
+{
+    memset(map, 0, sizeof(*map));
+    if (ref_bytes < BUILD_SPARE_MIN || ref_bytes > SIZE_MAX / 4 / BUILD_SPARE_FACTOR)
+        return NULL;
+    void *p = rt_malloc_large((size_t)(BUILD_SPARE_FACTOR * ref_bytes), map);
+    if (p && !map->bytes) {
+        rt_free_large(map); /* an rt_malloc block, not a mapping */
+        p = NULL;
+    }
+    return p;
+}
+
 int accel_build_triangles(struct bvh *out, const float *positions, const uint32_t *indices,
                           uint32_t prim_count, const struct bvh_build_params *params,
                           struct rt_large_block *spare)

@@ -698,15 +698,8 @@ int build_binned_sah_source(struct bvh *out, const struct build_source *src, uin
      * large (BUILD_SPARE_MIN), else a heap block. */
     struct rt_large_block map = {0};
     void *refs_block = NULL;
-    struct build_ref *refs = NULL;
-    const uint64_t ref_bytes = (uint64_t)prim_count * sizeof(*refs);
-    if (spare && ref_bytes >= BUILD_SPARE_MIN && ref_bytes <= SIZE_MAX / 4) {
-        refs = rt_malloc_large((size_t)(BUILD_SPARE_FACTOR * ref_bytes), &map);
-        if (refs && !map.bytes) {
-            rt_free_large(&map); /* not a mapping: the heap block below */
-            refs = NULL;
-        }
-    }
+    struct build_ref *refs =
+        spare ? build_spare_refs((uint64_t)prim_count * sizeof(*refs), &map) : NULL;
     if (!refs)
         refs = rt_alloc_array64(prim_count, sizeof(*refs), &refs_block);
     if (!refs) {

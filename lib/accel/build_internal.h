@@ -193,10 +193,18 @@ struct build_source {
  * rt_malloc_large_reuse takes a spare of up to about twice the layout.
  * Smaller builds (the kitchen, the soup: 3.5 MB of refs) keep a heap
  * block, which comes back warm from the last build.  build_parallel.c
- * (SCRATCH_SPARE_MIN's comment) has the measurements.
+ * (the comment on refs[1]'s spare) has the measurements.
  */
 #define BUILD_SPARE_MIN ((uint64_t)16 << 20)
 #define BUILD_SPARE_FACTOR 3u
+
+/* A ref buffer of ref_bytes for a build asked for a spare: a mapping of
+ * BUILD_SPARE_FACTOR times its size in *map when ref_bytes is at least
+ * BUILD_SPARE_MIN, else NULL with *map zeroed (the caller takes a heap
+ * block, as it does when the mapping fails).  Both builders' spares
+ * (build_binned_sah_source, accel_build_parallel_triangles). */
+struct rt_large_block;
+void *build_spare_refs(uint64_t ref_bytes, struct rt_large_block *map);
 
 /*
  * The binned SAH build (accel_build_binned_sah) of src's prim_count

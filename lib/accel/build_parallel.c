@@ -217,7 +217,7 @@ struct pbuild {
     struct build_ref *refs[2];
     void *refs_block[2]; /* what refs[] were allocated as (rt_align64) */
     /* With a spare asked for (accel_build_parallel_triangles) and a large
-     * build: refs[1]'s mapping (SCRATCH_SPARE_MIN), for the caller. */
+     * build: refs[1]'s mapping (build_spare_refs), for the caller. */
     struct rt_large_block scratch;
 
     /* Top nodes of stage 1: count 0 = inner (first = child pair), count
@@ -1164,8 +1164,9 @@ static void build_median_subtree(struct pbuild *b, struct subtree *s, struct bvh
 }
 
 /*
- * Bytes of refs[1] from which it is a mapping of three times its size
- * (rt_malloc_large: 2 MB aligned, advised for huge pages) that the
+ * refs[1]'s spare: from BUILD_SPARE_MIN bytes of refs, refs[1] is a
+ * mapping of three times its size (build_spare_refs; rt_malloc_large:
+ * 2 MB aligned, advised for huge pages) that the
  * caller's collapse takes over (accel_build_parallel_triangles' spare),
  * of which the partitions touch the first third.  A build that large
  * (rtbench's bumpy, a million triangles: 32 MB) finds refs[1] fresh
@@ -1183,7 +1184,6 @@ static void build_median_subtree(struct pbuild *b, struct subtree *s, struct bvh
  * 3.5 MB of refs) keep a heap block, which comes back warm from the last
  * build.
  */
-#define SCRATCH_SPARE_MIN BUILD_SPARE_MIN
 
 /* Nodes per arena (struct node_arena): twice a thread's even share of
  * the refs, plus two of the largest subtrees for the unevenness of the
@@ -1708,18 +1708,10 @@ static int build_parallel(struct bvh *out, const struct aabb *prim_boxes, const 
     const uint64_t refs0_bytes = ref_bytes > node_bytes ? ref_bytes : node_bytes;
     if (refs0_bytes <= SIZE_MAX - 64)
         b.refs[0] = rt_alloc_array64((size_t)refs0_bytes, 1, &b.refs_block[0]);
-    /* refs[1] in a mapping for the caller's collapse (SCRATCH_SPARE_MIN);
+    /* refs[1] in a mapping for the caller's collapse (build_spare_refs);
      * if the mapping fails, the usual block. */
-    const uint64_t refs1_bytes = (ref_bytes + 63) & ~(uint64_t)63;
-    const uint64_t scratch_bytes = BUILD_SPARE_FACTOR * refs1_bytes;
-    if (spare && refs1_bytes >= SCRATCH_SPARE_MIN && scratch_bytes <= SIZE_MAX / 4) {
-        char *map = rt_malloc_large((size_t)scratch_bytes, &b.scratch);
-        if (map && b.scratch.bytes) {
-            b.refs[1] = (struct build_ref *)(void *)map;
-        } else if (map) {
-            rt_free_large(&b.scratch);
-        }
-    }
+    if (spare)
+        b.refs[1] = build_spare_refs((ref_bytes + 63) & ~(uint64_t)63, &b.scratch);
     if (!b.refs[1])
         b.refs[1] = rt_alloc_array64(prim_count, sizeof(struct build_ref), &b.refs_block[1]);
     plan_flat_chunks(&b, prim_count);

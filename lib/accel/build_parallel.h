@@ -83,7 +83,7 @@ int accel_build_parallel_ex(struct bvh *out, const struct aabb *prim_boxes, uint
  * (a million triangles: 24 MB less written, read and, in a fresh block,
  * zeroed by the kernel a build).  Same contract and return values.
  * spare (may be NULL) receives, on success, the mapping in which a large
- * build (build_parallel.c, SCRATCH_SPARE_MIN) kept its scratch, pages
+ * build (build_parallel.c, refs[1]'s spare) kept its scratch, pages
  * already in memory, for accel_collapse_wide_reuse to write the wide
  * layout into; the caller frees it with rt_free_large whether taken or
  * not (a zeroed handle otherwise, and on failure). */

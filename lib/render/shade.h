@@ -149,17 +149,16 @@ shade_eye_hits_fn shade_eye_hits_avx2_unit(void);
  * shade_eye_hits of a whole block (TRACE_PACKET hits, every ray a hit)
  * in two steps, in the AVX2 copy only (shade_eye_avx2.c; the frame's
  * AVX2 packet loop, render_avx2.c, calls them, and runs only where that
- * copy is chosen): shade_eye_block_begin does everything up to the
- * eight-lane texture lookups, their texels' addresses computed and
- * their cache lines asked for, keeping the block in *pending and
- * returning 1, or shades the block completely and
- * returns 0 (no texture, or a block the lanes or the sampler do not
- * take); shade_eye_block_end then loads and blends the texels and
- * writes the pixels.  Between the two the caller does other work (the
- * next block's rays), which the core runs while the texels come into
- * the cache.  The same
- * operations on the same values as shade_eye_hits, so the same colours
- * bit for bit; pixels do not depend on the order they are written in.
+ * copy is chosen).  shade_eye_block_begin does everything up to the
+ * eight-lane texture lookups, their texels' addresses computed and their
+ * cache lines asked for, keeping the block in *pending and returning 1;
+ * or it shades the block completely and returns 0 (no texture, or a
+ * block the lanes or the sampler do not take).  shade_eye_block_end then
+ * loads and blends the texels and writes the pixels.  Between the two
+ * the caller does other work (the next block's rays), which the core
+ * runs while the texels come into the cache.  The same operations on the
+ * same values as shade_eye_hits, so the same colours bit for bit; pixels
+ * do not depend on the order they are written in.
  */
 struct shade_eye_pending;
 int shade_eye_block_begin_avx2(const struct shade_context *sc, const float *const dir[],

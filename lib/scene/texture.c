@@ -694,17 +694,8 @@ static inline void bilinear8_gather(const struct scene_texture *tex, const __m25
         x[c] = _mm256_i32gather_epi32(texels, off[c], 1);
 }
 
-static inline void bilinear8_fetch(const struct scene_texture *tex, __m256i level,
-                                   const __m256d rs[2], const __m256d rt[2], __m256i repeat_s,
-                                   __m256i repeat_t, __m256i x[4], __m256 *va, __m256 *vb)
-{
-    __m256i off[4];
-    bilinear8_offsets(tex, level, rs, rt, repeat_s, repeat_t, off, va, vb);
-    bilinear8_gather(tex, off, x);
-}
-
-/* The blends of bilinear8_fetch's texels x (corners 00, 10, 01, 11)
- * with its weights va, vb: each channel b / 255, then bilinear_at's
+/* The blends of bilinear8_gather's texels x (corners 00, 10, 01, 11)
+ * with bilinear8_offsets' weights va, vb: each channel b / 255, then bilinear_at's
  * nested blends. */
 static inline void bilinear8_blend(const __m256i x[4], __m256 va, __m256 vb, __m256 out[3])
 {
@@ -722,14 +713,15 @@ static inline void bilinear8_blend(const __m256i x[4], __m256 va, __m256 vb, __m
 #undef CHANNEL
 }
 
-/* bilinear8_fetch, then bilinear8_blend. */
+/* bilinear8_offsets, bilinear8_gather, then bilinear8_blend. */
 static inline void bilinear8(const struct scene_texture *tex, __m256i level, const __m256d rs[2],
                              const __m256d rt[2], __m256i repeat_s, __m256i repeat_t,
                              __m256 out[3])
 {
-    __m256i x[4];
+    __m256i off[4], x[4];
     __m256 va, vb;
-    bilinear8_fetch(tex, level, rs, rt, repeat_s, repeat_t, x, &va, &vb);
+    bilinear8_offsets(tex, level, rs, rt, repeat_s, repeat_t, off, &va, &vb);
+    bilinear8_gather(tex, off, x);
     bilinear8_blend(x, va, vb, out);
 }
 #undef LEVEL_INTS
