@@ -244,22 +244,6 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                         _mm_prefetch(a + 64, _MM_HINT_T0);
                         _mm_prefetch(a + 128, _MM_HINT_T0);
                         _mm_prefetch(a + 192, _MM_HINT_T0);
-                    } else if (!any_hit && prefetch_top) {
-                        /* A leaf comes next: its packet's lines (one
-                         * packet, 160 bytes: at most three lines; two, 320
-                         * bytes: at most six) prefetched here, before the
-                         * pop's and the call's instructions, so that the
-                         * filter's loads find them on their way.  A hint
-                         * only (no value read). */
-                        const char *a = (const char *)&packets[cur];
-                        _mm_prefetch(a, _MM_HINT_T0);
-                        _mm_prefetch(a + 64, _MM_HINT_T0);
-                        _mm_prefetch(a + 128, _MM_HINT_T0);
-                        if (cur_count > 4) {
-                            _mm_prefetch(a + 192, _MM_HINT_T0);
-                            _mm_prefetch(a + 256, _MM_HINT_T0);
-                            _mm_prefetch(a + 319, _MM_HINT_T0);
-                        }
                     }
                     continue;
                 }
