@@ -560,7 +560,10 @@ static inline void wide8_store(const struct bvh8_node *n, __m256i gather, __m256
                         _mm256_permutevar8x32_epi32(child, gather));
     _mm256_storeu_si256((__m256i *)(void *)&st_count[*sp],
                         _mm256_permutevar8x32_epi32(count, gather));
-    _mm256_storeu_ps(&st_t[*sp], _mm256_permutevar8x32_ps(t0, gather));
+    /* An any-hit walk's pushes pass st_t NULL (wide8_push_stored): a
+     * constant in each inlined copy, so no test is left. */
+    if (st_t)
+        _mm256_storeu_ps(&st_t[*sp], _mm256_permutevar8x32_ps(t0, gather));
     *sp += (uint32_t)__builtin_popcount(pm) - 1u;
 }
 
@@ -573,10 +576,9 @@ static inline void wide8_store(const struct bvh8_node *n, __m256i gather, __m256
  * front, one byte each, which gather the children's words and entry
  * distances into consecutive stack slots (the slots beyond them are
  * written too, and overwritten later: the stack has room).  The entry
- * distances are stored for any-hit walks too, which never read them: one
- * store, and GCC's flow analysis then sees every entry written
- * (-Wmaybe-uninitialized at -O2 with -fsanitize=thread).  Inlined: the
- * walks keep their state in registers around it.
+ * distances are stored here (closest hit) and not by wide8_push_stored
+ * (any hit, whose pops never read them).  Inlined: the walks keep their
+ * state in registers around it.
  */
 #if defined(__GNUC__)
 __attribute__((always_inline))
@@ -619,12 +621,15 @@ static inline void wide8_push(const struct bvh8_node *n, int octant, __m256 hit,
 __attribute__((always_inline))
 #endif
 static inline void wide8_push_stored(const struct bvh8_node *n, unsigned pm, __m256 t0,
-                                     uint32_t *st_child, uint32_t *st_count, float *st_t,
-                                     uint32_t *sp, uint32_t *cur, uint32_t *cur_count)
+                                     uint32_t *st_child, uint32_t *st_count, uint32_t *sp,
+                                     uint32_t *cur, uint32_t *cur_count)
 {
     const __m256i gather = _mm256_cvtepu8_epi32(
         _mm_loadl_epi64((const __m128i *)(const void *)&wide8_compress[pm]));
-    wide8_store(n, gather, t0, pm, st_child, st_count, st_t, sp);
+    /* No entry distances: an any-hit walk's pops never read them (its box
+     * limit never shrinks), so the permutation and the store of the
+     * distances are left out (two instructions a push). */
+    wide8_store(n, gather, t0, pm, st_child, st_count, NULL, sp);
     const unsigned l = (unsigned)__builtin_ctz(pm);
     *cur = n->child[l];
     *cur_count = n->count[l];
