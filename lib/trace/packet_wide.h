@@ -92,19 +92,6 @@ struct packet_entry {
     float t_entry;  /* the smallest of their entry distances */
 };
 
-/* packet_walk8_ia's stack entry: packet_entry's fields, and for an inner
- * child of a one-origin packet narrow against the beam (tested ray by
- * ray when popped, PACKET_INNER_BEAM_GATE) its parent node; rays then
- * carries the child's slot in the parent as bit 8 + slot (bits 0-7 are
- * the rays). */
-struct packet_ia_entry {
-    uint32_t child;
-    uint32_t count;
-    unsigned rays;
-    float t_entry;
-    uint32_t parent;
-};
-
 /* The rays of a packet: the single walk's state per ray, its near and
  * far bound rows per axis and its octant (traverse_wide.h). */
 struct packet_state {
@@ -835,36 +822,6 @@ static inline int packet_ia_init(struct packet_state *p, unsigned active,
 }
 
 /*
- * Child l of node n against each ray in the lanes, walk_wide8's float
- * operations with the ray's own near and far planes, origin, inverse,
- * tmin and box_limit (bl): the lanes whose ray enters it, as a compare
- * mask, and their entry distances in *u0.
- */
-static inline __m256 packet_lane_box(const struct bvh8_node *n, unsigned l,
-                                     const struct packet_state *p, const int *near_row,
-                                     const int *far_row, __m256 bl, __m256 *u0_out)
-{
-    __m256 u0 = p->lane_f[TRI8_F_TMIN];
-    __m256 u1 = _mm256_set1_ps(INFINITY);
-    for (int k = 0; k < 3; k++) {
-        const __m256 tn =
-            _mm256_mul_ps(_mm256_sub_ps(_mm256_broadcast_ss(&wide_row(n->bounds, near_row[k])[l]),
-                                        p->lane_f[TRI8_F_ORG + k]),
-                          p->lane_f[TRI8_F_INV + k]);
-        const __m256 tf =
-            _mm256_mul_ps(_mm256_sub_ps(_mm256_broadcast_ss(&wide_row(n->bounds, far_row[k])[l]),
-                                        p->lane_f[TRI8_F_ORG + k]),
-                          p->lane_f[TRI8_F_INV + k]);
-        u0 = _mm256_max_ps(tn, u0);
-        u1 = _mm256_min_ps(tf, u1);
-    }
-    u1 = _mm256_mul_ps(u1, _mm256_set1_ps(ISECT_BOX_FAR_SCALE));
-    u1 = _mm256_min_ps(u1, bl);
-    *u0_out = u0;
-    return _mm256_cmp_ps(u0, u1, _CMP_LE_OQ);
-}
-
-/*
  * The packet walk of the 8-wide layout by interval tests (Wald, Boulos
  * and Shirley 2007 sec. 4.2; Embree's coherent packet traversal does the
  * same with a packet frustum): an inner node's eight children are tested
@@ -918,7 +875,7 @@ __attribute__((always_inline))
 static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_state *p,
                                        unsigned active, int any_hit)
 {
-    struct packet_ia_entry stack[WIDE_STACK];
+    struct packet_entry stack[WIDE_STACK];
     const struct bvh8_node *nodes = wide->nodes8;
     const int octant = p->ia_octant;
     const int *near_row = p->ia_row_near, *far_row = p->ia_row_far;
@@ -989,8 +946,7 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                 limit_hi = _mm256_set1_ps(packet_hmax(bl));
             }
         } else {
-            const uint32_t at = cur;
-            const struct bvh8_node *n = &nodes[at];
+            const struct bvh8_node *n = &nodes[cur];
             /* The node's last cache line (child, count, order), read
              * only after the pass mask, requested beside the bounds'
              * three: otherwise a node that misses the cache waits for
@@ -1064,7 +1020,7 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                                             _mm256_cmp_ps(t0, fa[2], _CMP_LE_OQ))));
 #endif
             unsigned push = 0; /* the children entered by at least one ray */
-            unsigned narrow = 0; /* stacked inner children tested ray by ray at the pop */
+            unsigned narrow = 0; /* inner children tested ray by ray off the chain */
             if (p->ia_masks &&
                 (unsigned)__builtin_popcount(pass) >= (unsigned)__builtin_popcount(rays)) {
                 /* Rays from several origins, and more children pass
@@ -1169,8 +1125,23 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                     const unsigned l = (unsigned)__builtin_ctz(m);
                     /* The child's box against each ray, walk_wide8's
                      * operations with the ray in the lanes. */
-                    __m256 u0;
-                    const __m256 in = packet_lane_box(n, l, p, near_row, far_row, bl, &u0);
+                    __m256 u0 = p->lane_f[TRI8_F_TMIN];
+                    __m256 u1 = inf8;
+                    for (int k = 0; k < 3; k++) {
+                        const __m256 tn = _mm256_mul_ps(
+                            _mm256_sub_ps(_mm256_broadcast_ss(&wide_row(n->bounds, near_row[k])[l]),
+                                          p->lane_f[TRI8_F_ORG + k]),
+                            p->lane_f[TRI8_F_INV + k]);
+                        const __m256 tf = _mm256_mul_ps(
+                            _mm256_sub_ps(_mm256_broadcast_ss(&wide_row(n->bounds, far_row[k])[l]),
+                                          p->lane_f[TRI8_F_ORG + k]),
+                            p->lane_f[TRI8_F_INV + k]);
+                        u0 = _mm256_max_ps(tn, u0);
+                        u1 = _mm256_min_ps(tf, u1);
+                    }
+                    u1 = _mm256_mul_ps(u1, scale8);
+                    u1 = _mm256_min_ps(u1, bl);
+                    const __m256 in = _mm256_cmp_ps(u0, u1, _CMP_LE_OQ);
                     lane_rays[l] = (unsigned)_mm256_movemask_ps(in) & rays;
                     push |= (unsigned)(lane_rays[l] != 0) << l;
                     node_tests += (unsigned)__builtin_popcount(rays);
@@ -1179,6 +1150,30 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                      * shrinks, so the rays here, which passed it
                      * already, would all stay: the interval test's
                      * bound (t_min, stored above) does as well. */
+                    if (!any_hit)
+                        t_min[l] = packet_hmin(_mm256_blendv_ps(inf8, u0, in));
+                }
+                for (unsigned m = narrow; m; m &= m - 1u) {
+                    const unsigned l = (unsigned)__builtin_ctz(m);
+                    __m256 u0 = p->lane_f[TRI8_F_TMIN];
+                    __m256 u1 = inf8;
+                    for (int k = 0; k < 3; k++) {
+                        const __m256 tn = _mm256_mul_ps(
+                            _mm256_sub_ps(_mm256_broadcast_ss(&wide_row(n->bounds, near_row[k])[l]),
+                                          p->lane_f[TRI8_F_ORG + k]),
+                            p->lane_f[TRI8_F_INV + k]);
+                        const __m256 tf = _mm256_mul_ps(
+                            _mm256_sub_ps(_mm256_broadcast_ss(&wide_row(n->bounds, far_row[k])[l]),
+                                          p->lane_f[TRI8_F_ORG + k]),
+                            p->lane_f[TRI8_F_INV + k]);
+                        u0 = _mm256_max_ps(tn, u0);
+                        u1 = _mm256_min_ps(tf, u1);
+                    }
+                    u1 = _mm256_mul_ps(u1, scale8);
+                    u1 = _mm256_min_ps(u1, bl);
+                    const __m256 in = _mm256_cmp_ps(u0, u1, _CMP_LE_OQ);
+                    lane_rays[l] = (unsigned)_mm256_movemask_ps(in) & rays;
+                    node_tests += (unsigned)__builtin_popcount(rays);
                     if (!any_hit)
                         t_min[l] = packet_hmin(_mm256_blendv_ps(inf8, u0, in));
                 }
@@ -1215,9 +1210,8 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                         }
                         stack[sp].child = n->child[l];
                         stack[sp].count = n->count[l];
-                        stack[sp].rays = lane_rays[l] | (narrow << 8 & 256u << l);
+                        stack[sp].rays = lane_rays[l];
                         stack[sp].t_entry = t_min[l];
-                        stack[sp].parent = at;
                         sp++;
                     }
                 } else {
@@ -1250,15 +1244,18 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                         }
                         stack[sp].child = n->child[l];
                         stack[sp].count = n->count[l];
-                        stack[sp].rays = lane_rays[l] | (narrow << 8 & 256u << l);
+                        stack[sp].rays = lane_rays[l];
                         stack[sp].t_entry = t_min[l];
-                        stack[sp].parent = at;
                         sp++;
                     }
                 }
-                if (!cur_count)
-                    wide_prefetch(&nodes[cur], sizeof(struct bvh8_node));
-                continue;
+                if (rays) {
+                    if (!cur_count)
+                        wide_prefetch(&nodes[cur], sizeof(struct bvh8_node));
+                    continue;
+                }
+                /* The nearest child was a narrow inner one that no ray
+                 * enters: the pop. */
             }
         }
         for (;;) {
@@ -1275,22 +1272,8 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
             rays = stack[sp].rays & ~done &
                    (unsigned)_mm256_movemask_ps(
                        _mm256_cmp_ps(_mm256_set1_ps(stack[sp].t_entry), bl, _CMP_LE_OQ));
-            if (rays) {
-                const unsigned tag = stack[sp].rays >> 8;
-                if (!tag)
-                    break;
-                /* A narrow inner child (PACKET_INNER_BEAM_GATE): its
-                 * rays that enter it by their own test, against their
-                 * box_limit now. */
-                __m256 u0;
-                const __m256 in =
-                    packet_lane_box(&nodes[stack[sp].parent], (unsigned)__builtin_ctz(tag), p,
-                                    near_row, far_row, bl, &u0);
-                node_tests += (unsigned)__builtin_popcount(rays);
-                rays &= (unsigned)_mm256_movemask_ps(in);
-                if (rays)
-                    break;
-            }
+            if (rays)
+                break;
         }
         cur = stack[sp].child;
         cur_count = stack[sp].count;
