@@ -71,20 +71,6 @@
  * a separate factor for leaves of 1, 2, 4, 8 and 16 was tried, and 2
  * was lowest on gears and bumpy. */
 #define PACKET_WIDE_BOX_GATE 2.0f
-/* An inner child of a one-origin packet is entered by all its rays,
- * without a test per ray, where its box's largest extent is at least
- * this many times the beam's width at its entry bound (the directions'
- * spread times the bound); a narrower inner child is also tested ray by
- * ray, and walked only with the rays that enter it (packet_walk8_ia).
- * Measured (docs/performance-log.md, pk11, with the test deciding the
- * push), AVX2 instructions of the camera packets against no inner test:
- * 0.75: kitchen -11.6 %, bumpy +0.2 %; 1: kitchen -12.0 %, bumpy +0.4 %,
- * gears +1.8 %; 1.5: kitchen -12.5 %, bumpy +0.7 %, gears +1.9 %; 3:
- * kitchen -12.3 %, bumpy +2.0 %; every inner child tested: kitchen
- * -10.1 %, bumpy +3.1 %. */
-#ifndef PACKET_INNER_BEAM_GATE
-#define PACKET_INNER_BEAM_GATE 1.0f
-#endif
 
 struct packet_entry {
     uint32_t child;
@@ -129,9 +115,7 @@ struct packet_state {
     int ia_masks; /* rays from more than one origin: see packet_walk8_ia */
     float ia_leaf_t; /* a leaf child entered before this takes no lane test (packet_ia_init) */
     /* Several origins: the largest spread of the origins and of the
-     * directions over the axes, times PACKET_WIDE_BOX_GATE, broadcast.
-     * One origin: ia_sp_d is the directions' spread times
-     * PACKET_INNER_BEAM_GATE (ia_sp_o is not set). */
+     * directions over the axes, times PACKET_WIDE_BOX_GATE, broadcast. */
     __m256 ia_sp_o, ia_sp_d;
     int ia_octant;                  /* the rays' common octant */
     int ia_row_near[3], ia_row_far[3]; /* its near and far rows, byte offsets */
@@ -796,7 +780,6 @@ static inline int packet_ia_init(struct packet_state *p, unsigned active,
         s = _mm_max_ss(s, _mm_shuffle_ps(s, s, 1));
         const float m = _mm_cvtss_f32(s) * PACKET_LEAF_GATE;
         p->ia_leaf_t = m > 0.0f ? leaf_extent / m : INFINITY;
-        p->ia_sp_d = _mm256_set1_ps(_mm_cvtss_f32(s) * PACKET_INNER_BEAM_GATE);
     }
     if (p->ia_masks) {
         /* The directions' ranges in lanes 0-3 and the origins' in lanes
@@ -823,44 +806,11 @@ static inline int packet_ia_init(struct packet_state *p, unsigned active,
 }
 
 /*
- * Child l of node n against each ray in the lanes: walk_wide8's float
- * operations with the ray's own near and far planes, origin, inverse,
- * tmin and box_limit (bl, -inf in a lane without a ray).  Returns the
- * lanes whose ray enters the box, as a compare mask, and their entry
- * distances in *u0.
- */
-static inline __m256 packet_lane_box(const struct bvh8_node *n, unsigned l,
-                                     const struct packet_state *p, const int *near_row,
-                                     const int *far_row, __m256 bl, __m256 *u0)
-{
-    __m256 u_near = p->lane_f[TRI8_F_TMIN];
-    __m256 u_far = _mm256_set1_ps(INFINITY);
-    for (int k = 0; k < 3; k++) {
-        const __m256 tn =
-            _mm256_mul_ps(_mm256_sub_ps(_mm256_broadcast_ss(&wide_row(n->bounds, near_row[k])[l]),
-                                        p->lane_f[TRI8_F_ORG + k]),
-                          p->lane_f[TRI8_F_INV + k]);
-        const __m256 tf =
-            _mm256_mul_ps(_mm256_sub_ps(_mm256_broadcast_ss(&wide_row(n->bounds, far_row[k])[l]),
-                                        p->lane_f[TRI8_F_ORG + k]),
-                          p->lane_f[TRI8_F_INV + k]);
-        u_near = _mm256_max_ps(tn, u_near);
-        u_far = _mm256_min_ps(tf, u_far);
-    }
-    u_far = _mm256_mul_ps(u_far, _mm256_set1_ps(ISECT_BOX_FAR_SCALE));
-    u_far = _mm256_min_ps(u_far, bl);
-    *u0 = u_near;
-    return _mm256_cmp_ps(u_near, u_far, _CMP_LE_OQ);
-}
-
-/*
  * The packet walk of the 8-wide layout by interval tests (Wald, Boulos
  * and Shirley 2007 sec. 4.2; Embree's coherent packet traversal does the
  * same with a packet frustum): an inner node's eight children are tested
  * once for the whole packet (packet_ia_init), and a child that passes is
- * entered by all the rays still in the walk (but an inner child of a
- * one-origin packet narrow against the beam, PACKET_INNER_BEAM_GATE:
- * only by those its rays' own tests enter); a leaf child that passes is
+ * entered by all the rays still in the walk; a leaf child that passes is
  * then tested ray by ray, the rays in the lanes, with walk_wide8's float
  * operations on each ray's own near and far planes, origin, inverse,
  * tmin and box_limit, so a leaf's triangles meet exactly the rays whose
@@ -899,13 +849,13 @@ static inline __m256 packet_lane_box(const struct bvh8_node *n, unsigned l,
  * An inner node that only one ray enters (several-origin packets after
  * the lane tests, any packet after the pop cull) is left to that ray's
  * single walk (walk_wide8), as packet_walk does below its hybrid
- * threshold.  masks is p->ia_masks, passed as a constant (packet_run).
+ * threshold.
  */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
 static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_state *p,
-                                       unsigned active, int any_hit, int masks)
+                                       unsigned active, int any_hit)
 {
     struct packet_entry stack[WIDE_STACK];
     const struct bvh8_node *nodes = wide->nodes8;
@@ -917,8 +867,6 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
      * and their greatest, refreshed after each leaf (only hits shrink
      * them). */
     const __m256 leaf_t = _mm256_set1_ps(p->ia_leaf_t);
-    /* packet_ia_init set ia_sp_d for the inner children's gate. */
-    const int leaf_t_set = p->ia_leaf_t != -INFINITY;
     __m256 bl = _mm256_loadu_ps(p->box_limit);
     __m256 limit_hi = _mm256_set1_ps(packet_hmax(bl));
     uint64_t node_tests = 0; /* the interval and lane tests and the rays' own */
@@ -1052,8 +1000,7 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                                             _mm256_cmp_ps(t0, fa[2], _CMP_LE_OQ))));
 #endif
             unsigned push = 0; /* the children entered by at least one ray */
-            unsigned narrow = 0; /* inner children tested ray by ray, not for the push */
-            if (masks &&
+            if (p->ia_masks &&
                 (unsigned)__builtin_popcount(pass) >= (unsigned)__builtin_popcount(rays)) {
                 /* Rays from several origins, and more children pass
                  * than there are rays: the rays' own tests (one over
@@ -1073,9 +1020,9 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
             } else if (pass) {
                 _mm256_storeu_ps(t_min, t0);
                 unsigned test = pass; /* the children tested ray by ray */
-                if (!masks) {
-                    /* One origin: an inner child wide against the
-                     * beam is entered by every ray, and so is a leaf
+                if (!p->ia_masks) {
+                    /* One origin: the interval test is tight, and an
+                     * inner child is entered by every ray; so is a leaf
                      * child the beam meets before ia_leaf_t, where the
                      * leaves are wide against the beam (packet_ia_init),
                      * without a test per ray. */
@@ -1085,46 +1032,6 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                     const unsigned near =
                         (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(t0, leaf_t, _CMP_LE_OQ));
                     test = pass & ~inner & ~near & 0xffu;
-                    if (pass & inner & ~near & 0xffu && leaf_t_set) {
-                        /* An inner child narrow against the beam where
-                         * the interval meets it (its box's largest
-                         * extent below PACKET_INNER_BEAM_GATE times the
-                         * directions' spread times its entry bound) is
-                         * tested ray by ray (`narrow`, below): the
-                         * interval test bounds a row of eight rays by
-                         * the box of their directions, which passes
-                         * boxes between the rays.  Counted on the
-                         * kitchen's camera packets (pk11): 27 % of the
-                         * inner children that pass it are entered by no
-                         * ray, each a subtree walked for nothing.
-                         * Unlike a leaf child, such a child is pushed
-                         * by the interval test alone (it stays in
-                         * `push`), and its lane test only narrows its
-                         * rays (lane_rays) and its stacked entry bound:
-                         * the choice of the next node and the stack's
-                         * order never wait for the test, which runs
-                         * beside the next node's loads (pk11's and
-                         * pk12's form, the test deciding the push, put
-                         * it between a node and the next and was slower
-                         * on the clock while it counted 12 % fewer
-                         * instructions).  A child left with no ray is
-                         * skipped: stacked, by the pop's `if (rays)`;
-                         * walked next, by the pop below the push.  It
-                         * chooses work, never an answer: a ray the test
-                         * leaves out would not enter the box by its own
-                         * test, so it has no hit in it at or below its
-                         * best (the argument above for the inner nodes
-                         * a ray's own test rejects). */
-                        __m256 ext = _mm256_sub_ps(_mm256_load_ps(n->bounds[3]),
-                                                   _mm256_load_ps(n->bounds[0]));
-                        ext = _mm256_max_ps(ext, _mm256_sub_ps(_mm256_load_ps(n->bounds[4]),
-                                                               _mm256_load_ps(n->bounds[1])));
-                        ext = _mm256_max_ps(ext, _mm256_sub_ps(_mm256_load_ps(n->bounds[5]),
-                                                               _mm256_load_ps(n->bounds[2])));
-                        const unsigned wide_box = (unsigned)_mm256_movemask_ps(
-                            _mm256_cmp_ps(_mm256_mul_ps(t0, p->ia_sp_d), ext, _CMP_LE_OQ));
-                        narrow = pass & inner & ~near & ~wide_box & 0xffu;
-                    }
                     push = pass & ~test;
                     _mm256_storeu_si256((__m256i *)(void *)lane_rays,
                                         _mm256_set1_epi32((int)rays));
@@ -1161,8 +1068,23 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                     const unsigned l = (unsigned)__builtin_ctz(m);
                     /* The child's box against each ray, walk_wide8's
                      * operations with the ray in the lanes. */
-                    __m256 u0;
-                    const __m256 in = packet_lane_box(n, l, p, near_row, far_row, bl, &u0);
+                    __m256 u0 = p->lane_f[TRI8_F_TMIN];
+                    __m256 u1 = inf8;
+                    for (int k = 0; k < 3; k++) {
+                        const __m256 tn = _mm256_mul_ps(
+                            _mm256_sub_ps(_mm256_broadcast_ss(&wide_row(n->bounds, near_row[k])[l]),
+                                          p->lane_f[TRI8_F_ORG + k]),
+                            p->lane_f[TRI8_F_INV + k]);
+                        const __m256 tf = _mm256_mul_ps(
+                            _mm256_sub_ps(_mm256_broadcast_ss(&wide_row(n->bounds, far_row[k])[l]),
+                                          p->lane_f[TRI8_F_ORG + k]),
+                            p->lane_f[TRI8_F_INV + k]);
+                        u0 = _mm256_max_ps(tn, u0);
+                        u1 = _mm256_min_ps(tf, u1);
+                    }
+                    u1 = _mm256_mul_ps(u1, scale8);
+                    u1 = _mm256_min_ps(u1, bl);
+                    const __m256 in = _mm256_cmp_ps(u0, u1, _CMP_LE_OQ);
                     lane_rays[l] = (unsigned)_mm256_movemask_ps(in) & rays;
                     push |= (unsigned)(lane_rays[l] != 0) << l;
                     node_tests += (unsigned)__builtin_popcount(rays);
@@ -1171,15 +1093,6 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                      * shrinks, so the rays here, which passed it
                      * already, would all stay: the interval test's
                      * bound (t_min, stored above) does as well. */
-                    if (!any_hit)
-                        t_min[l] = packet_hmin(_mm256_blendv_ps(inf8, u0, in));
-                }
-                for (unsigned m = narrow; m; m &= m - 1u) {
-                    const unsigned l = (unsigned)__builtin_ctz(m);
-                    __m256 u0;
-                    const __m256 in = packet_lane_box(n, l, p, near_row, far_row, bl, &u0);
-                    lane_rays[l] = (unsigned)_mm256_movemask_ps(in) & rays;
-                    node_tests += (unsigned)__builtin_popcount(rays);
                     if (!any_hit)
                         t_min[l] = packet_hmin(_mm256_blendv_ps(inf8, u0, in));
                 }
@@ -1255,15 +1168,9 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                         sp++;
                     }
                 }
-                if (rays) {
-                    if (!cur_count)
-                        wide_prefetch(&nodes[cur], sizeof(struct bvh8_node));
-                    continue;
-                }
-                /* The nearest child is a narrow inner one that no ray
-                 * enters (its lane test above): the pop.  A predicted
-                 * branch, so the next node's loads need not wait for
-                 * the test. */
+                if (!cur_count)
+                    wide_prefetch(&nodes[cur], sizeof(struct bvh8_node));
+                continue;
             }
         }
         for (;;) {
@@ -1486,14 +1393,7 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
     }
 #if defined(__AVX__)
     if (ia)
-        /* One copy of the walk for one origin and one for several
-         * (masks a constant): the several-origin packets (the shadow
-         * rays) then carry none of the one-origin branch's code, which
-         * the narrow inner children's test made heavier (AVX2
-         * instructions of the kitchen's shadow packets +1.3 % with one
-         * copy, -0.6 % with two: docs/performance-log.md, pk13). */
-        done = p.ia_masks ? packet_walk8_ia(wide, &p, active, any_hit, 1)
-                          : packet_walk8_ia(wide, &p, active, any_hit, 0);
+        done = packet_walk8_ia(wide, &p, active, any_hit);
     else if (wide->width == 8)
         done = packet_walk(wide, &p, active, hybrid, 8);
     else
