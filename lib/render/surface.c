@@ -2029,6 +2029,44 @@ int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene
 }
 #endif
 
+#if defined(SHADE_UNIT_AVX2)
+/* One line asked for into every cache level (a hint: no fault, no
+ * architectural effect). */
+static inline void prefetch_line(const void *p)
+{
+    _mm_prefetch((const char *)p, _MM_HINT_T0);
+}
+
+/* surface.h: the block's lines for surface_fetch_lanes and
+ * fetch_lanes_mixed a trace ahead (a software pipeline across blocks,
+ * Lam 1988; render_avx2.c's loop shades a block after the next block's
+ * trace).  Hits on the triangle of the hit before are skipped: their
+ * lines are the same. */
+void surface_prefetch_block(const struct shade_context *sc, const struct trace_scene_hit hits[])
+{
+    uint32_t prim = 0, instance = 0;
+    for (int i = 0; i < TRACE_PACKET; i++) {
+        const struct trace_scene_hit *h = &hits[i];
+        if (i && h->prim == prim && h->instance == instance)
+            continue;
+        prim = h->prim;
+        instance = h->instance;
+        const struct scene_mesh *mesh = &shade_hit_instance(sc, h)->object->mesh;
+        const uint32_t *v = &mesh->indices[3 * prim];
+        prefetch_line(&mesh->tri_flags[prim]);
+        prefetch_line(&mesh->tri_material[prim]);
+        prefetch_line(&mesh->tri_provoking[prim]);
+        for (int j = 0; j < 3; j++) {
+            prefetch_line(&mesh->positions[3 * v[j]]);
+            if (mesh->normals)
+                prefetch_line(&mesh->normals[3 * v[j]]);
+            if (mesh->texcoords)
+                prefetch_line(&mesh->texcoords[2 * v[j]]);
+        }
+    }
+}
+#endif
+
 void surface_fetch_colours(const struct shade_context *sc, int n,
                            const struct trace_scene_hit *const hits[], const float *const dir[],
                            const float width[], struct surface_colour s[])

@@ -188,6 +188,20 @@ struct shade_eye_pending {
 int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene_hit *const hits[],
                         const float dir[3][TRACE_PACKET], const float width[],
                         struct surface_lanes *out, struct scene_texture_lookup8 *defer);
+
+/*
+ * The cache lines surface_fetch_lanes reads of a traced block's hits
+ * that the walk does not touch, asked for (prefetcht0) a whole trace
+ * before the block is shaded (the frame's AVX2 packet loop,
+ * render_avx2.c): for each distinct triangle of hits[0..TRACE_PACKET)
+ * its entries of the mesh's per-triangle arrays (indices, flags,
+ * material, provoking vertex) and its three vertices' positions,
+ * normals and texture coordinates.  The vertex indices are loaded, the
+ * rest only prefetched; nothing is written, so no colour can change.
+ * Defined in the shading's AVX2 copy (render/shade_eye_avx2.c).
+ */
+void surface_prefetch_block_avx2(const struct shade_context *sc,
+                                 const struct trace_scene_hit hits[]);
 #endif
 
 /* The texel of texture `name` at a hit, for the RT_FIXED_FUNCTION mode,
