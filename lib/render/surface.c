@@ -2044,6 +2044,15 @@ static inline void prefetch_line(const void *p)
  * lines are the same. */
 void surface_prefetch_block(const struct shade_context *sc, const struct trace_scene_hit hits[])
 {
+    /* A block on one triangle (three in four of a kitchen frame's) is
+     * left alone: its lines are mostly those of the block before it, in
+     * the cache already, and asking for them cost more than it saved
+     * (fr10's first try, performance-log.md). */
+    int one = 1;
+    for (int i = 1; i < TRACE_PACKET; i++)
+        one &= hits[i].prim == hits[0].prim && hits[i].instance == hits[0].instance;
+    if (one)
+        return;
     uint32_t prim = 0, instance = 0;
     for (int i = 0; i < TRACE_PACKET; i++) {
         const struct trace_scene_hit *h = &hits[i];
