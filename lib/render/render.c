@@ -908,7 +908,7 @@ static void packet_block_init(struct packet_block *b)
 }
 
 #if defined(RENDER_UNIT_AVX2)
-#define PACKET_BLOCK_SLOTS 2
+#define PACKET_BLOCK_SLOTS 3
 
 /* The texel stage of the AVX2 copy's pipeline (render_tile_packets):
  * two slots, the block begun and the one before it. */
@@ -981,13 +981,15 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
      * the block begun and the one before it.  Only the order in which
      * pixels are written changes; each pixel's operations are the same. */
     struct eye_pipeline pipe = {.slot = 0, .full = 0};
-    /* A second stage in front of it (a pipeline of two blocks): a whole
+    /* Two stages in front of it (a pipeline of three blocks): a whole
      * block's hits are kept after its trace and the lines of their
-     * triangles and vertices, which the walk does not touch, asked for
-     * (surface_prefetch_block); the block is begun only after the next
-     * block's trace, so that those lines come in during a whole trace
-     * instead of being waited for in surface_fetch_lanes. */
-    int staged = 0; /* the slot cur ^ 1 holds a traced block to begin */
+     * triangles (surface_prefetch_triangles), then one trace later those
+     * of their vertices (surface_prefetch_vertices), which the walk does
+     * not touch, asked for; the block is begun after the next two
+     * blocks' traces, so that those lines come in during a trace
+     * instead of being waited for in fetch_lanes_mixed. */
+    int fetched = -1; /* the slot of the block whose triangle lines were asked for, or -1 */
+    int staged = -1;  /* the slot of the block whose vertex lines were asked for, or -1 */
 #endif
     for (int by = y0; by < y0 + RENDER_TILE_SIZE && by < vp[3]; by += RENDER_BLOCK_H) {
         unproject_cache_row(pass, &cache, by);
@@ -1043,11 +1045,16 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                     /* This block's triangle lines asked for, then the
                      * block before it begun (its texel lines asked for)
                      * and the one before that ended. */
-                    surface_prefetch_block_avx2(sc, hits);
-                    if (staged)
-                        eye_pipeline_step(sc, &blocks[cur ^ 1], &pipe);
-                    staged = 1;
-                    cur ^= 1;
+                    surface_prefetch_triangles_avx2(sc, hits);
+                    if (fetched >= 0)
+                        surface_prefetch_vertices_avx2(sc, blocks[fetched].hits);
+                    if (staged >= 0)
+                        eye_pipeline_step(sc, &blocks[staged], &pipe);
+                    /* The slots in use: cur and the one before it; the
+                     * next block takes the one begun just now. */
+                    staged = fetched;
+                    fetched = cur;
+                    cur = (cur + 1) % PACKET_BLOCK_SLOTS;
 #else
                     shade_eye_hits(sc, TRACE_PACKET, blk->dirs, blk->hit_at, cone, blk->px);
 #endif
@@ -1112,8 +1119,10 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
         }
     }
 #if defined(RENDER_UNIT_AVX2)
-    if (staged)
-        eye_pipeline_step(sc, &blocks[cur ^ 1], &pipe);
+    if (staged >= 0)
+        eye_pipeline_step(sc, &blocks[staged], &pipe);
+    if (fetched >= 0)
+        eye_pipeline_step(sc, &blocks[fetched], &pipe);
     if (pipe.full)
         shade_eye_block_end_avx2(sc, &pipe.pending[pipe.slot ^ 1]);
 #endif

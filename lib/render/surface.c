@@ -2037,21 +2037,52 @@ static inline void prefetch_line(const void *p)
     _mm_prefetch((const char *)p, _MM_HINT_T0);
 }
 
-/* surface.h: the block's lines for surface_fetch_lanes and
- * fetch_lanes_mixed a trace ahead (a software pipeline across blocks,
- * Lam 1988; render_avx2.c's loop shades a block after the next block's
- * trace).  Hits on the triangle of the hit before are skipped: their
- * lines are the same. */
-void surface_prefetch_block(const struct shade_context *sc, const struct trace_scene_hit hits[])
+/* Whether every hit of the block is on the triangle of hits[0]. */
+static int block_one_triangle(const struct trace_scene_hit hits[])
 {
-    /* A block on one triangle (three in four of a kitchen frame's) is
-     * left alone: its lines are mostly those of the block before it, in
-     * the cache already, and asking for them cost more than it saved
-     * (fr10's first try, performance-log.md). */
     int one = 1;
     for (int i = 1; i < TRACE_PACKET; i++)
         one &= hits[i].prim == hits[0].prim && hits[i].instance == hits[0].instance;
-    if (one)
+    return one;
+}
+
+/* surface.h: the first stage of the lines of a block for
+ * fetch_lanes_mixed and surface_fetch_colours, two traces ahead (a
+ * software pipeline across blocks, Lam 1988; render_avx2.c's loop
+ * shades a block after the next two blocks' traces): the triangles'
+ * entries of the per-triangle arrays, prefetched without a load that
+ * depends on them.  A block on one triangle (three in four of a kitchen
+ * frame's) is left alone: its lines are mostly those of the block
+ * before it, in the cache already, and asking for them cost more than
+ * it saved (fr10's first try, performance-log.md).  Hits on the
+ * triangle of the hit before are skipped: their lines are the same. */
+void surface_prefetch_triangles(const struct shade_context *sc,
+                                const struct trace_scene_hit hits[])
+{
+    if (block_one_triangle(hits))
+        return;
+    uint32_t prim = 0, instance = 0;
+    for (int i = 0; i < TRACE_PACKET; i++) {
+        const struct trace_scene_hit *h = &hits[i];
+        if (i && h->prim == prim && h->instance == instance)
+            continue;
+        prim = h->prim;
+        instance = h->instance;
+        const struct scene_mesh *mesh = &shade_hit_instance(sc, h)->object->mesh;
+        prefetch_line(&mesh->indices[3 * prim]);
+        prefetch_line(&mesh->tri_flags[prim]);
+        prefetch_line(&mesh->tri_material[prim]);
+        prefetch_line(&mesh->tri_provoking[prim]);
+    }
+}
+
+/* surface.h: the second stage, one trace later: the vertex indices
+ * (their lines asked for by the first stage) loaded and the vertices'
+ * positions, normals and texture coordinates prefetched. */
+void surface_prefetch_vertices(const struct shade_context *sc,
+                               const struct trace_scene_hit hits[])
+{
+    if (block_one_triangle(hits))
         return;
     uint32_t prim = 0, instance = 0;
     for (int i = 0; i < TRACE_PACKET; i++) {
@@ -2062,9 +2093,6 @@ void surface_prefetch_block(const struct shade_context *sc, const struct trace_s
         instance = h->instance;
         const struct scene_mesh *mesh = &shade_hit_instance(sc, h)->object->mesh;
         const uint32_t *v = &mesh->indices[3 * prim];
-        prefetch_line(&mesh->tri_flags[prim]);
-        prefetch_line(&mesh->tri_material[prim]);
-        prefetch_line(&mesh->tri_provoking[prim]);
         for (int j = 0; j < 3; j++) {
             prefetch_line(&mesh->positions[3 * v[j]]);
             if (mesh->normals)
