@@ -886,55 +886,6 @@ static void eye_block(struct render_pass *pass, struct shade_context *sc, int x0
     eye_batch_shade(sc, &eyes);
 }
 
-/* A traced block of render_tile_packets: its rays, their cones and hits,
- * and for a whole eye-light block the pointers shade_eye_hits and
- * shade_eye_block_begin take (each ray's direction and hit, set once
- * per slot, and the block's pixels). */
-struct packet_block {
-    struct trace_packet pk;
-    struct shade_cone cone[TRACE_PACKET];
-    struct trace_scene_hit hits[TRACE_PACKET];
-    const float *dirs[TRACE_PACKET];
-    const struct trace_scene_hit *hit_at[TRACE_PACKET];
-    float *px[TRACE_PACKET];
-};
-
-static void packet_block_init(struct packet_block *b)
-{
-    for (int i = 0; i < TRACE_PACKET; i++) {
-        b->dirs[i] = b->pk.dir[i];
-        b->hit_at[i] = &b->hits[i];
-    }
-}
-
-#if defined(RENDER_UNIT_AVX2)
-#define PACKET_BLOCK_SLOTS 3
-
-/* The texel stage of the AVX2 copy's pipeline (render_tile_packets):
- * two slots, the block begun and the one before it. */
-struct eye_pipeline {
-    struct shade_eye_pending pending[2];
-    int slot; /* the slot the next block begins in */
-    int full; /* the other slot holds a block to end */
-};
-
-/* Block b begun (shade_eye_block_begin: up to its texel addresses, their
- * lines asked for, or shaded completely), then the block begun before it
- * ended (its texels loaded and blended, its pixels written). */
-static void eye_pipeline_step(const struct shade_context *sc, const struct packet_block *b,
-                              struct eye_pipeline *p)
-{
-    const int begun = shade_eye_block_begin_avx2(sc, b->dirs, b->hit_at, b->cone, b->px,
-                                                 &p->pending[p->slot]);
-    if (p->full)
-        shade_eye_block_end_avx2(sc, &p->pending[p->slot ^ 1]);
-    p->full = begun;
-    p->slot ^= begun;
-}
-#else
-#define PACKET_BLOCK_SLOTS 1
-#endif
-
 /*
  * The tile with packets (packets=on, trace/packet_scene.h): the camera
  * rays of each 4 x 2 block of pixels are traced together to their first
@@ -963,13 +914,18 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
     /* The eye light's direct hits of a block are shaded together, their
      * texture levels of detail two at a time (shade_eye_hits). */
     const int eye = st->shading == RENDER_EYE_LIGHT;
-    /* The blocks' rays and hits, one slot (two in the AVX2 copy's
-     * pipeline below: the block traced and the one traced before it,
-     * still to be shaded). */
-    struct packet_block blocks[PACKET_BLOCK_SLOTS];
-    for (int b = 0; b < PACKET_BLOCK_SLOTS; b++)
-        packet_block_init(&blocks[b]);
-    int cur = 0; /* the slot the next block is traced into */
+    struct trace_packet pk;
+    struct shade_cone cone[TRACE_PACKET];
+    struct trace_scene_hit hits[TRACE_PACKET];
+    /* A whole block's eye-light hits, every ray made and every one a hit
+     * (eye_block's common case): its rays' directions and hits are the
+     * same arrays for every block of the tile. */
+    const float *block_dirs[TRACE_PACKET];
+    const struct trace_scene_hit *block_hits[TRACE_PACKET];
+    for (int i = 0; i < TRACE_PACKET; i++) {
+        block_dirs[i] = pk.dir[i];
+        block_hits[i] = &hits[i];
+    }
 #if defined(RENDER_UNIT_AVX2)
     /* A software pipeline of one block (Lam 1988, software pipelining;
      * here across the loop's blocks): a whole block's texel lines are
@@ -980,16 +936,9 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
      * cache, instead of waiting for them in the block's shading.  Two slots:
      * the block begun and the one before it.  Only the order in which
      * pixels are written changes; each pixel's operations are the same. */
-    struct eye_pipeline pipe = {.slot = 0, .full = 0};
-    /* Two stages in front of it (a pipeline of three blocks): a whole
-     * block's hits are kept after its trace and the lines of their
-     * triangles (surface_prefetch_triangles), then one trace later those
-     * of their vertices (surface_prefetch_vertices), which the walk does
-     * not touch, asked for; the block is begun after the next two
-     * blocks' traces, so that those lines come in during a trace
-     * instead of being waited for in fetch_lanes_mixed. */
-    int fetched = -1; /* the slot of the block whose triangle lines were asked for, or -1 */
-    int staged = -1;  /* the slot of the block whose vertex lines were asked for, or -1 */
+    struct shade_eye_pending pending[2];
+    int pending_slot = 0; /* the slot the next block begins in */
+    int pending_full = 0; /* the other slot holds a block to end */
 #endif
     for (int by = y0; by < y0 + RENDER_TILE_SIZE && by < vp[3]; by += RENDER_BLOCK_H) {
         unproject_cache_row(pass, &cache, by);
@@ -1001,65 +950,55 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                           cache.rows[1]->whole && cache.rows[2]->whole;
 #endif
         for (int bx = x0; bx < x0 + RENDER_TILE_SIZE && bx < vp[2]; bx += RENDER_BLOCK_W) {
-            struct packet_block *const blk = &blocks[cur];
-            struct trace_packet *const pk = &blk->pk;
-            struct shade_cone *const cone = blk->cone;
-            struct trace_scene_hit *const hits = blk->hits;
             int whole = 0; /* every pixel of the block inside and its ray made */
 #if RENDER_PAIRS
             if (lanes && bx + RENDER_BLOCK_W <= x0 + RENDER_TILE_SIZE &&
-                bx + RENDER_BLOCK_W <= vp[2] && block_rays(&cache, bx - x0, pk, cone)) {
-                pk->active = (1u << TRACE_PACKET) - 1u;
+                bx + RENDER_BLOCK_W <= vp[2] && block_rays(&cache, bx - x0, &pk, cone)) {
+                pk.active = (1u << TRACE_PACKET) - 1u;
                 whole = 1;
             }
 #endif
             if (!whole) {
-                pk->active = 0;
+                pk.active = 0;
                 for (int i = 0; i < TRACE_PACKET; i++) {
                     const int x = bx + i % RENDER_BLOCK_W, y = by + i / RENDER_BLOCK_W;
                     if (block_pixel_inside(vp, x0, y0, bx, by, i) &&
-                        primary_ray(&cache, x, y, pk->org[i], pk->dir[i], &pk->tmax[i],
+                        primary_ray(&cache, x, y, pk.org[i], pk.dir[i], &pk.tmax[i],
                                     &cone[i])) {
-                        pk->tmin[i] = 0.0f;
-                        pk->active |= 1u << i;
+                        pk.tmin[i] = 0.0f;
+                        pk.active |= 1u << i;
                     }
                 }
             }
-            const unsigned found = trace_scene_closest_packet(sc->scene, pk, hits, sc->counters);
+            const unsigned found = trace_scene_closest_packet(sc->scene, &pk, hits, sc->counters);
             if (eye && direct && pass->all_drawn) {
                 /* The loop below when every hit is drawn and shaded by the
                  * eye light: a pixel is its ray's hit, shaded with the
                  * block's others, or the clear colour, without the primed
                  * hits (only Whitted's shading reads them) or the other
                  * branches' tests. */
-                if (whole && found == pk->active && !pass->depth) {
+                if (whole && found == pk.active && !pass->depth) {
                     /* eye_block's batch when all eight are hits. */
+                    float *px[TRACE_PACKET];
                     float *row = &pass->fb[4 * ((size_t)(vp[1] + by) * pass->fb_width +
                                                 (size_t)(vp[0] + bx))];
                     for (int i = 0; i < RENDER_BLOCK_W; i++) {
-                        blk->px[i] = row + 4 * i;
-                        blk->px[RENDER_BLOCK_W + i] =
-                            row + 4 * ((size_t)pass->fb_width + (size_t)i);
+                        px[i] = row + 4 * i;
+                        px[RENDER_BLOCK_W + i] = row + 4 * ((size_t)pass->fb_width + (size_t)i);
                     }
 #if defined(RENDER_UNIT_AVX2)
-                    /* This block's triangle lines asked for, then the
-                     * block before it begun (its texel lines asked for)
-                     * and the one before that ended. */
-                    surface_prefetch_triangles_avx2(sc, hits);
-                    if (fetched >= 0)
-                        surface_prefetch_vertices_avx2(sc, blocks[fetched].hits);
-                    if (staged >= 0)
-                        eye_pipeline_step(sc, &blocks[staged], &pipe);
-                    /* The slots in use: cur and the one before it; the
-                     * next block takes the one begun just now. */
-                    staged = fetched;
-                    fetched = cur;
-                    cur = (cur + 1) % PACKET_BLOCK_SLOTS;
+                    /* This block's prefetches, then the last block's texels. */
+                    const int begun = shade_eye_block_begin_avx2(
+                        sc, block_dirs, block_hits, cone, px, &pending[pending_slot]);
+                    if (pending_full)
+                        shade_eye_block_end_avx2(sc, &pending[pending_slot ^ 1]);
+                    pending_full = begun;
+                    pending_slot ^= begun;
 #else
-                    shade_eye_hits(sc, TRACE_PACKET, blk->dirs, blk->hit_at, cone, blk->px);
+                    shade_eye_hits(sc, TRACE_PACKET, block_dirs, block_hits, cone, px);
 #endif
                 } else
-                    eye_block(pass, sc, x0, y0, bx, by, pk, found, hits, cone);
+                    eye_block(pass, sc, x0, y0, bx, by, &pk, found, hits, cone);
                 continue;
             }
             /* Whitted shading's shadow rays of the block's first hits,
@@ -1076,15 +1015,15 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                 primed[i].shadow_occluded = 0;
                 primed[i].reflect_known = 0;
             }
-            shade_prime_shadows(sc, found, hits, (const float(*)[3])pk->org,
-                                (const float(*)[3])pk->dir, cone, surf, primed, reflected);
+            shade_prime_shadows(sc, found, hits, (const float(*)[3])pk.org,
+                                (const float(*)[3])pk.dir, cone, surf, primed, reflected);
             struct eye_batch eyes = {.n = 0};
             for (int i = 0; i < TRACE_PACKET; i++) {
                 if (!block_pixel_inside(vp, x0, y0, bx, by, i))
                     continue;
                 const int x = bx + i % RENDER_BLOCK_W, y = by + i / RENDER_BLOCK_W;
                 float *px = &pass->fb[4 * ((size_t)(vp[1] + y) * pass->fb_width + vp[0] + x)];
-                if (!(pk->active >> i & 1u)) {
+                if (!(pk.active >> i & 1u)) {
                     memcpy(px, st->clear_color, 4 * sizeof(float));
                     continue;
                 }
@@ -1096,35 +1035,31 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                     memcpy(px, st->clear_color, 4 * sizeof(float));
                     t_first = INFINITY;
                 } else if (direct &&
-                           (pass->all_drawn || gl_hit_drawn(sc, pk->dir[i], &primed[i].hit))) {
+                           (pass->all_drawn || gl_hit_drawn(sc, pk.dir[i], &primed[i].hit))) {
                     /* blend_trace_primary's first, opaque, drawn hit. */
                     if (eye) {
                         /* Shaded with the block's others below. */
-                        eye_batch_add(&eyes, pk->dir[i], &primed[i].hit, cone[i], px);
+                        eye_batch_add(&eyes, pk.dir[i], &primed[i].hit, cone[i], px);
                     } else
-                        shade_hit(sc, pk->org[i], pk->dir[i], &primed[i].hit, cone[i], 0, px);
+                        shade_hit(sc, pk.org[i], pk.dir[i], &primed[i].hit, cone[i], 0, px);
                     t_first = primed[i].hit.t;
                 } else if (pass->depth_state) /* polygon offset in the frame (lines.c) */
-                    blend_trace_primary_state(sc, pk->org[i], pk->dir[i], pk->tmax[i], cone[i], px,
+                    blend_trace_primary_state(sc, pk.org[i], pk.dir[i], pk.tmax[i], cone[i], px,
                                               &t_first, &pass->depth_state[at]);
                 else
-                    blend_trace_primary(sc, pk->org[i], pk->dir[i], pk->tmax[i], cone[i], px,
+                    blend_trace_primary(sc, pk.org[i], pk.dir[i], pk.tmax[i], cone[i], px,
                                         &t_first);
                 sc->primed = NULL;
                 if (pass->depth)
                     pass->depth[at] =
-                        raster_window_depth(st->projection, pk->org[i], pk->dir[i], t_first);
+                        raster_window_depth(st->projection, pk.org[i], pk.dir[i], t_first);
             }
             eye_batch_shade(sc, &eyes);
         }
     }
 #if defined(RENDER_UNIT_AVX2)
-    if (staged >= 0)
-        eye_pipeline_step(sc, &blocks[staged], &pipe);
-    if (fetched >= 0)
-        eye_pipeline_step(sc, &blocks[fetched], &pipe);
-    if (pipe.full)
-        shade_eye_block_end_avx2(sc, &pipe.pending[pipe.slot ^ 1]);
+    if (pending_full)
+        shade_eye_block_end_avx2(sc, &pending[pending_slot ^ 1]);
 #endif
 }
 

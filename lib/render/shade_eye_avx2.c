@@ -35,8 +35,6 @@
 #define surface_fetch_colours surface_fetch_colours_avx2
 #define surface_fetches surface_fetches_avx2
 #define surface_fetch_lanes surface_fetch_lanes_avx2
-#define surface_prefetch_triangles surface_prefetch_triangles_avx2
-#define surface_prefetch_vertices surface_prefetch_vertices_avx2
 #define surface_resolve_material surface_resolve_material_avx2
 #define surface_texel surface_texel_avx2
 #define scene_texture_build_mipmaps scene_texture_build_mipmaps_avx2

@@ -188,23 +188,6 @@ struct shade_eye_pending {
 int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene_hit *const hits[],
                         const float dir[3][TRACE_PACKET], const float width[],
                         struct surface_lanes *out, struct scene_texture_lookup8 *defer);
-
-/*
- * The cache lines fetch_lanes_mixed and surface_fetch_colours read of a
- * traced block's hits that the walk does not touch, asked for
- * (prefetcht0) before the block is shaded, in two stages a trace apart
- * (the frame's AVX2 packet loop, render_avx2.c): first, for each
- * distinct triangle of hits[0..TRACE_PACKET), its entries of the mesh's
- * per-triangle arrays (indices, flags, material, provoking vertex);
- * then its three vertices' positions, normals and texture coordinates
- * (the vertex indices loaded).  Blocks on one triangle are left alone.
- * Nothing is written, so no colour can change.  Defined in the
- * shading's AVX2 copy (render/shade_eye_avx2.c).
- */
-void surface_prefetch_triangles_avx2(const struct shade_context *sc,
-                                     const struct trace_scene_hit hits[]);
-void surface_prefetch_vertices_avx2(const struct shade_context *sc,
-                                    const struct trace_scene_hit hits[]);
 #endif
 
 /* The texel of texture `name` at a hit, for the RT_FIXED_FUNCTION mode,
