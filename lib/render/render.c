@@ -1066,7 +1066,7 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
 void render_tile(struct render_pass *pass, uint32_t tile, int worker)
 {
     const struct render_state *st = pass->job->state;
-    struct surface_cache cache_entry[SHADE_CACHES + SHADE_MIXED_CACHES];
+    struct surface_cache cache_entry[SHADE_CACHES];
     memset(cache_entry, 0, sizeof(cache_entry));
     struct shade_context sc = {st,
                                pass->job->frame,

@@ -13,14 +13,6 @@
  * have their own, deeper hits share the last. */
 #define SHADE_CACHES 4
 
-/* After them, a table of the eye light's blocks on several triangles
- * (surface.c, fetch_lanes_mixed): SHADE_MIXED_CACHES entries (a power of
- * two), direct-mapped by the primitive's index, so that the triangles a
- * block shares with the blocks before it keep their parts instead of
- * taking the one entry in turn.  shade_context.cache then holds
- * SHADE_CACHES + SHADE_MIXED_CACHES entries (render.c, render_tile). */
-#define SHADE_MIXED_CACHES 8
-
 /* The reflection depths shade_prime_shadows traces ahead in packets:
  * shade_prime_shadows' surf then has (1 + SHADE_PRIME_DEPTHS) *
  * TRACE_PACKET entries, its `reflected` SHADE_PRIME_DEPTHS * TRACE_PACKET
@@ -48,9 +40,8 @@ struct shade_context {
     /* NULL, or the tile's SHADE_CACHES caches of what surface.c derives
      * from a hit's triangle alone (surface.h, surface_cache): entry d for
      * Whitted's hits at depth d (the last one for deeper hits), entry 0
-     * for the other shadings; then the SHADE_MIXED_CACHES entries of
-     * fetch_lanes_mixed's table.  Writable through a const context, as
-     * they only remember results. */
+     * for the other shadings: writable through a const context, as they
+     * only remember results. */
     struct surface_cache *cache;
     /* What shadow rays and reflected or refracted rays trace: `scene`
      * with the filter of render/secondary.h when the frame has clip

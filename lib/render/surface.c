@@ -1779,19 +1779,14 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
     const int lod = tx && tx->min_filter != tx->mag_filter;
     /* Per triangle: its unit normal (triangle_normal; a degenerate one
      * leaves the block to the per-hit path) and its level-of-detail
-     * part, copied out of its entry of the tile's table, which another
-     * triangle of the block may take. */
+     * part, copied out of the tile's one cache entry, which the next
+     * triangle takes. */
     float tri_ng[TRACE_PACKET][3];
     struct surface_lod tri_lod[TRACE_PACKET];
     for (int j = 0; j < count; j++) {
         struct hit_triangle tj = t;
         tj.v = &mesh->indices[3 * prim[j]];
-        /* The table's entry of the triangle (shade.h, SHADE_MIXED_CACHES):
-         * any entry gives the same values, as each is keyed by instance
-         * and primitive and recomputed from them when it held another. */
-        struct surface_cache *c =
-            triangle_cache(&sc->cache[SHADE_CACHES + (prim[j] & (SHADE_MIXED_CACHES - 1))],
-                           t.inst, prim[j]);
+        struct surface_cache *c = triangle_cache(sc->cache, t.inst, prim[j]);
         if (!triangle_normal(c, &tj, tri_ng[j]))
             return 0;
         if (lod) {
