@@ -518,7 +518,8 @@ static int embree_memory_row(RTCDevice device, int64_t *counter, const struct be
     double wide[2], leaves[2];
     for (int w = 0; w < 2; w++) {
         bvh4_release(&acc.wide);
-        if (accel_collapse_wide(&acc.wide, &acc.bvh, acc.tri, w ? 8 : 4)) {
+        if (accel_collapse_wide_quality(&acc.wide, &acc.bvh, acc.tri, w ? 8 : 4, NULL, NULL,
+                                        bench_collapse())) {
             bench_accel_release(&acc);
             return -1;
         }
@@ -554,7 +555,7 @@ int bench_embree_section(const struct bench_options *opts, struct bench_mesh *me
     report_printf("\n## Against Embree %s\n\n", RTC_VERSION_STRING);
     report_printf("Build, median of %d runs, ms, on 1 and 2 threads (Embree: a device created "
                   "with \"threads=1\" or \"threads=2\"). Ours: binned SAH %d bins, the "
-                  "triangles' boxes + build + gather into leaf order + the %s collapse "
+                  "triangles' boxes + build + gather into leaf order + the %s %s collapse "
                   "(everything before the first ray; the builders compute the boxes as they "
                   "set up their refs); on 2 threads the build is accel_build_parallel (binned "
                   "SAH at the top, binned SAH subtrees), gather and collapse on the same "
@@ -562,7 +563,7 @@ int bench_embree_section(const struct bench_options *opts, struct bench_mesh *me
                   "at build quality LOW (Morton), MEDIUM (binned SAH, its default) and HIGH "
                   "(spatial splits). %s \"ours/Embree\" is a time ratio: above 1 means we "
                   "build slower.\n\n",
-                  opts->runs, BVH_DEFAULT_BINS, bench_layout_name(),
+                  opts->runs, BVH_DEFAULT_BINS, bench_layout_name(), bench_collapse_name(),
                   bench_thread_clock() ? "One thread: the calling thread's CPU clock "
                                          "(--thread-clock); 2 threads: wall clock."
                                        : "Wall clock.");
@@ -671,9 +672,9 @@ int bench_embree_section(const struct bench_options *opts, struct bench_mesh *me
                       opts->kitchen_skipped);
     if (tests) {
         report_printf("\nTests per ray of ours (the walk \"ours\" times: kernels %s, %s layout), "
-                      "counted once on one thread; \"answered\": rays that hit (closest hit) or "
+                      "%s collapse, counted once on one thread; \"answered\": rays that hit (closest hit) or "
                       "are occluded (any hit).\n\n",
-                      bench_kernels()->name, bench_layout_name());
+                      bench_kernels()->name, bench_layout_name(), bench_collapse_name());
         report_table_header("mesh|rays|count|node tests/ray|triangle tests/ray|answered|wide "
                             "nodes|packets|wide SAH");
         for (int i = 0; i < 3 * mesh_count; i++) {

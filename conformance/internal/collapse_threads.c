@@ -208,7 +208,8 @@ static void check_mesh(const char *scene, const struct tg_mesh *m, struct rt_poo
              * runs it) against the portable form, byte for byte. */
             if (accel_collapse_wide_avx2_unit()) {
                 struct bvh4 portable;
-                if (accel_collapse_wide_portable(&portable, &b, leaves, width, NULL, NULL)) {
+                if (accel_collapse_wide_portable(&portable, &b, leaves, width, NULL, NULL,
+                                                 BVH_COLLAPSE_GREEDY)) {
                     failures += !CHECKF(0, "%s: portable collapse failed", scene);
                 } else {
                     failures += !CHECKF(same_wide(&portable, &ref),
