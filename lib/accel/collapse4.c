@@ -276,6 +276,50 @@ static float dp_split(const struct dp_node *l, const struct dp_node *r, uint32_t
     return best;
 }
 
+#if defined(__AVX2__) && !defined(RT_NO_SIMD)
+/* dp_split for every j = 2..8 at once (split[j] = D(n, j)), the min-plus
+ * step in one register: lane m holds j = m + 1, and for each k the sum
+ * C(left, k) + C(right, j - k) of all eight j is one broadcast, one
+ * permute (right's costs moved up k lanes), one blend (+inf where j <= k)
+ * and one add.  Only k <= left's lanes are tried, all j - k.  The same
+ * values as dp_split's, bit for bit: a minimum of the same finite sums is
+ * exact in any order, and the sums dp_split leaves out (k beyond left's
+ * lanes, j - k beyond right's) are never below one it takes (a child's
+ * cost is non-increasing in its lanes and constant beyond them, and float
+ * addition is monotonic), so for j beyond the lanes together D(n, j) is
+ * D(n, lanes together), as dp_one's scalar path copies it.  Only the
+ * minimum's value is used here; the k that reaches it is found again by
+ * dp_split when the lanes are read back (dp_emit), so the layout is the
+ * portable unit's byte for byte (internal/collapse_threads). */
+static void dp_split8(const struct dp_node *l, const struct dp_node *r, float *split)
+{
+    /* shift[k]: lane m takes right's cost m - k (a don't-care index where
+     * m < k, blended to +inf by below[k]). */
+    static const int32_t shift[8][8] = {
+        {0, 1, 2, 3, 4, 5, 6, 7}, {0, 0, 1, 2, 3, 4, 5, 6}, {0, 0, 0, 1, 2, 3, 4, 5},
+        {0, 0, 0, 0, 1, 2, 3, 4}, {0, 0, 0, 0, 0, 1, 2, 3}, {0, 0, 0, 0, 0, 0, 1, 2},
+        {0, 0, 0, 0, 0, 0, 0, 1}, {0, 0, 0, 0, 0, 0, 0, 0}};
+    static const int32_t below[8][8] = {
+        {0, 0, 0, 0, 0, 0, 0, 0},         {-1, 0, 0, 0, 0, 0, 0, 0},
+        {-1, -1, 0, 0, 0, 0, 0, 0},       {-1, -1, -1, 0, 0, 0, 0, 0},
+        {-1, -1, -1, -1, 0, 0, 0, 0},     {-1, -1, -1, -1, -1, 0, 0, 0},
+        {-1, -1, -1, -1, -1, -1, 0, 0},   {-1, -1, -1, -1, -1, -1, -1, 0}};
+    const __m256 inf = _mm256_set1_ps(INFINITY);
+    const __m256 right = _mm256_loadu_ps(r->cost);
+    const uint32_t k_max = l->lanes < 7u ? l->lanes : 7u;
+    __m256 best = inf;
+    for (uint32_t k = 1; k <= k_max; k++) {
+        const __m256 moved = _mm256_permutevar8x32_ps(
+            right, _mm256_loadu_si256((const __m256i *)(const void *)shift[k]));
+        const __m256 masked = _mm256_blendv_ps(
+            moved, inf,
+            _mm256_castsi256_ps(_mm256_loadu_si256((const __m256i *)(const void *)below[k])));
+        best = _mm256_min_ps(best, _mm256_add_ps(_mm256_broadcast_ss(&l->cost[k - 1]), masked));
+    }
+    _mm256_storeu_ps(split + 1, best); /* split[1] (+inf) is not read */
+}
+#endif
+
 /* Node i's entry from its children's (already computed). */
 static void dp_one(const struct dp *d, uint32_t i)
 {
@@ -315,14 +359,21 @@ static void dp_one(const struct dp *d, uint32_t i)
             e->cost[j] = leaf;
         return;
     }
-    uint32_t k;
     float split[MAX_WIDTH + 1] = {0}; /* [2, width] written (width 4 or 8) */
-    /* Beyond the children's lanes together D(n, j) stays (dp_split). */
-    const uint32_t most = l->lanes + r->lanes < d->width ? l->lanes + r->lanes : d->width;
-    for (uint32_t j = 2; j <= most; j++)
-        split[j] = dp_split(l, r, j, &k);
-    for (uint32_t j = most + 1; j <= d->width; j++)
-        split[j] = split[most];
+#if defined(__AVX2__) && !defined(RT_NO_SIMD)
+    if (d->width == 8) {
+        dp_split8(l, r, split);
+    } else
+#endif
+    {
+        uint32_t k;
+        /* Beyond the children's lanes together D(n, j) stays (dp_split). */
+        const uint32_t most = l->lanes + r->lanes < d->width ? l->lanes + r->lanes : d->width;
+        for (uint32_t j = 2; j <= most; j++)
+            split[j] = dp_split(l, r, j, &k);
+        for (uint32_t j = most + 1; j <= d->width; j++)
+            split[j] = split[most];
+    }
     const float inner = area * DP_NODE_COST + split[d->width];
     const float leaf =
         e->count ? area * (DP_PACKET_COST * (float)((e->count + 3u) / 4u)) : INFINITY;
