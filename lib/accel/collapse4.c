@@ -277,7 +277,7 @@ static float dp_split(const struct dp_node *l, const struct dp_node *r, uint32_t
 }
 
 #if defined(__AVX2__) && !defined(RT_NO_SIMD)
-/* dp_split for every j = 2..8 at once (split[j] = D(n, j)), the min-plus
+/* dp_split for every j = 2..8 at once (D(n, j) in lane j - 1), the min-plus
  * step in one register: lane m holds j = m + 1, and for each k the sum
  * C(left, k) + C(right, j - k) of all eight j is one broadcast, one
  * permute (right's costs moved up k lanes), one blend (+inf where j <= k)
@@ -290,8 +290,9 @@ static float dp_split(const struct dp_node *l, const struct dp_node *r, uint32_t
  * D(n, lanes together), as dp_one's scalar path copies it.  Only the
  * minimum's value is used here; the k that reaches it is found again by
  * dp_split when the lanes are read back (dp_emit), so the layout is the
- * portable unit's byte for byte (internal/collapse_threads). */
-static void dp_split8(const struct dp_node *l, const struct dp_node *r, float *split)
+ * portable unit's byte for byte (internal/collapse_threads).  Lane m of
+ * the result is D(n, m + 1), lane 0 +inf. */
+static __m256 dp_split8(const struct dp_node *l, const struct dp_node *r)
 {
     /* shift[k]: lane m takes right's cost m - k (a don't-care index where
      * m < k, blended to +inf by below[k]). */
@@ -316,7 +317,27 @@ static void dp_split8(const struct dp_node *l, const struct dp_node *r, float *s
             _mm256_castsi256_ps(_mm256_loadu_si256((const __m256i *)(const void *)below[k])));
         best = _mm256_min_ps(best, _mm256_add_ps(_mm256_broadcast_ss(&l->cost[k - 1]), masked));
     }
-    _mm256_storeu_ps(split + 1, best); /* split[1] (+inf) is not read */
+    return best; /* lane 0 (j = 1) +inf */
+}
+
+/* Lane m of x moved to lane m + k, +inf into lanes 0..k-1 (k = 1, 2, 4). */
+#define DP_SHIFT_UP(x, k, index) \
+    _mm256_blend_ps(_mm256_permutevar8x32_ps((x), (index)), _mm256_set1_ps(INFINITY), (1 << (k)) - 1)
+
+/* The 8-wide entry of inner node e from D(n, j) (dp_split8) and C(n, 1):
+ * C(n, j) = min(C(n, 1), D(n, 2..j)), a prefix minimum in three steps
+ * (exact, so dp_one's scalar recurrence's values), and its lanes the
+ * first j whose cost equals C(n, 8) (costs do not rise with j, so every
+ * cost from there on equals it, as dp_one's scalar count finds). */
+static void dp_costs8(struct dp_node *e, __m256 split, float c1)
+{
+    __m256 x = _mm256_blend_ps(split, _mm256_set1_ps(c1), 1);
+    x = _mm256_min_ps(x, DP_SHIFT_UP(x, 1, _mm256_setr_epi32(0, 0, 1, 2, 3, 4, 5, 6)));
+    x = _mm256_min_ps(x, DP_SHIFT_UP(x, 2, _mm256_setr_epi32(0, 0, 0, 1, 2, 3, 4, 5)));
+    x = _mm256_min_ps(x, DP_SHIFT_UP(x, 4, _mm256_setr_epi32(0, 0, 0, 0, 0, 1, 2, 3)));
+    _mm256_storeu_ps(e->cost, x);
+    const int equal = _mm256_movemask_ps(_mm256_cmp_ps(x, _mm256_set1_ps(e->cost[7]), _CMP_EQ_OQ));
+    e->lanes = (uint8_t)(__builtin_ctz((unsigned)equal) + 1);
 }
 #endif
 
@@ -332,7 +353,7 @@ static void dp_one(const struct dp *d, uint32_t i)
         e->leaf = 1;
         e->lanes = 1;
         const float leaf = area * (DP_PACKET_COST * (float)((n->count + 3) / 4));
-        for (uint32_t j = 0; j < d->width; j++)
+        for (uint32_t j = 0; j < MAX_WIDTH; j++) /* all 8: two stores */
             e->cost[j] = leaf;
         return;
     }
@@ -355,30 +376,34 @@ static void dp_one(const struct dp *d, uint32_t i)
         e->leaf = 1;
         e->lanes = 1;
         const float leaf = area * DP_PACKET_COST;
-        for (uint32_t j = 0; j < d->width; j++)
+        for (uint32_t j = 0; j < MAX_WIDTH; j++) /* all 8: two stores */
             e->cost[j] = leaf;
         return;
     }
-    float split[MAX_WIDTH + 1] = {0}; /* [2, width] written (width 4 or 8) */
+    const float leaf_cost =
+        e->count ? area * (DP_PACKET_COST * (float)((e->count + 3u) / 4u)) : INFINITY;
 #if defined(__AVX2__) && !defined(RT_NO_SIMD)
     if (d->width == 8) {
-        dp_split8(l, r, split);
-    } else
-#endif
-    {
-        uint32_t k;
-        /* Beyond the children's lanes together D(n, j) stays (dp_split). */
-        const uint32_t most = l->lanes + r->lanes < d->width ? l->lanes + r->lanes : d->width;
-        for (uint32_t j = 2; j <= most; j++)
-            split[j] = dp_split(l, r, j, &k);
-        for (uint32_t j = most + 1; j <= d->width; j++)
-            split[j] = split[most];
+        const __m256 split8 = dp_split8(l, r);
+        const float inner8 =
+            area * DP_NODE_COST +
+            _mm256_cvtss_f32(_mm256_permutevar8x32_ps(split8, _mm256_set1_epi32(7)));
+        e->leaf = e->count && leaf_cost <= inner8;
+        dp_costs8(e, split8, e->leaf ? leaf_cost : inner8);
+        return;
     }
+#endif
+    float split[MAX_WIDTH + 1] = {0}; /* [2, width] written (width 4 or 8) */
+    uint32_t k;
+    /* Beyond the children's lanes together D(n, j) stays (dp_split). */
+    const uint32_t most = l->lanes + r->lanes < d->width ? l->lanes + r->lanes : d->width;
+    for (uint32_t j = 2; j <= most; j++)
+        split[j] = dp_split(l, r, j, &k);
+    for (uint32_t j = most + 1; j <= d->width; j++)
+        split[j] = split[most];
     const float inner = area * DP_NODE_COST + split[d->width];
-    const float leaf =
-        e->count ? area * (DP_PACKET_COST * (float)((e->count + 3u) / 4u)) : INFINITY;
-    e->leaf = e->count && leaf <= inner;
-    e->cost[0] = e->leaf ? leaf : inner;
+    e->leaf = e->count && leaf_cost <= inner;
+    e->cost[0] = e->leaf ? leaf_cost : inner;
     for (uint32_t j = 2; j <= d->width; j++)
         e->cost[j - 1] = split[j] < e->cost[j - 2] ? split[j] : e->cost[j - 2];
     uint32_t lanes = d->width;
