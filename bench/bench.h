@@ -287,6 +287,12 @@ int bench_select_layout(const char *name);
 uint32_t bench_layout_width(void);
 /* The layout the kernels of "ours" walk: "binary", "bvh4" or "bvh8". */
 const char *bench_layout_name(void);
+/* --collapse greedy|optimal (bench_select_collapse, -1 for another
+ * name): the collapse of the benchmark's wide layouts; its name for the
+ * tables' headers. */
+int bench_select_collapse(const char *name);
+enum bvh_collapse bench_collapse(void);
+const char *bench_collapse_name(void);
 
 void bench_kernel_closest(void *ctx, const RTray *rays, uint32_t begin, uint32_t end,
                           struct bench_hit *hits);

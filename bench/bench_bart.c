@@ -269,6 +269,10 @@ static int ctx_open(struct bart_ctx *c, const char *dir, const struct bart_scene
         ctx_close(c);
         return -1;
     }
+    /* --collapse optimal: the scenes' objects as an application asking
+     * for the optimal collapse would define them. */
+    if (bench_collapse() == BVH_COLLAPSE_OPTIMAL)
+        rtHint(RT_ACCELERATION_HINT, RT_NICEST);
     double t0 = rt_now_ms();
     c->aff = rtuLoadAFF(path);
     c->load_ms = rt_now_ms() - t0;

@@ -369,7 +369,29 @@ struct tests_row {
     double nodes, tris, answered;
     double wide_sah;
     uint32_t wide_nodes, packets;
+    double lanes_per_node, tris_per_leaf;
 };
+
+/* The wide layout's fill: lanes in use per wide node, and triangles per
+ * leaf lane (the collapses differ in both: round 36, cl2). */
+static void wide_fill(const struct bvh4 *wide, double *lanes_per_node, double *tris_per_leaf)
+{
+    const uint32_t width = wide->width;
+    uint64_t lanes = 0, leaves = 0, tris = 0;
+    for (uint32_t w = 0; w < wide->node_count; w++) {
+        const float *b = width == 8 ? &wide->nodes8[w].bounds[0][0] : &wide->nodes[w].bounds[0][0];
+        const uint8_t *count = width == 8 ? wide->nodes8[w].count : wide->nodes[w].count;
+        for (uint32_t l = 0; l < width; l++) {
+            if (!(b[l] <= b[3 * width + l]))
+                continue; /* unused */
+            lanes++;
+            leaves += count[l] != 0;
+            tris += count[l];
+        }
+    }
+    *lanes_per_node = wide->node_count ? (double)lanes / wide->node_count : 0.0;
+    *tris_per_leaf = leaves ? (double)tris / (double)leaves : 0.0;
+}
 
 static int embree_trace_mesh(const struct bench_options *opts, RTCDevice device,
                              const struct bench_mesh *mesh, FILE *plot_data,
@@ -411,6 +433,7 @@ static int embree_trace_mesh(const struct bench_options *opts, RTCDevice device,
         tests[s].wide_sah = acc.wide.node_count
                                 ? accel_wide_sah_cost(&acc.wide, BVH_WIDE_NODE_COST, 1.0)
                                 : 0.0;
+        wide_fill(&acc.wide, &tests[s].lanes_per_node, &tests[s].tris_per_leaf);
         if (embree_trace_set(opts, mesh, &acc, scenes, &sets[s], any_hit, ours, theirs, &row))
             goto out;
         for (int t = 0; t < 2; t++) {
@@ -518,7 +541,8 @@ static int embree_memory_row(RTCDevice device, int64_t *counter, const struct be
     double wide[2], leaves[2];
     for (int w = 0; w < 2; w++) {
         bvh4_release(&acc.wide);
-        if (accel_collapse_wide(&acc.wide, &acc.bvh, acc.tri, w ? 8 : 4)) {
+        if (accel_collapse_wide_quality(&acc.wide, &acc.bvh, acc.tri, w ? 8 : 4, NULL, NULL,
+                                        bench_collapse())) {
             bench_accel_release(&acc);
             return -1;
         }
@@ -554,7 +578,7 @@ int bench_embree_section(const struct bench_options *opts, struct bench_mesh *me
     report_printf("\n## Against Embree %s\n\n", RTC_VERSION_STRING);
     report_printf("Build, median of %d runs, ms, on 1 and 2 threads (Embree: a device created "
                   "with \"threads=1\" or \"threads=2\"). Ours: binned SAH %d bins, the "
-                  "triangles' boxes + build + gather into leaf order + the %s collapse "
+                  "triangles' boxes + build + gather into leaf order + the %s %s collapse "
                   "(everything before the first ray; the builders compute the boxes as they "
                   "set up their refs); on 2 threads the build is accel_build_parallel (binned "
                   "SAH at the top, binned SAH subtrees), gather and collapse on the same "
@@ -562,7 +586,7 @@ int bench_embree_section(const struct bench_options *opts, struct bench_mesh *me
                   "at build quality LOW (Morton), MEDIUM (binned SAH, its default) and HIGH "
                   "(spatial splits). %s \"ours/Embree\" is a time ratio: above 1 means we "
                   "build slower.\n\n",
-                  opts->runs, BVH_DEFAULT_BINS, bench_layout_name(),
+                  opts->runs, BVH_DEFAULT_BINS, bench_layout_name(), bench_collapse_name(),
                   bench_thread_clock() ? "One thread: the calling thread's CPU clock "
                                          "(--thread-clock); 2 threads: wall clock."
                                        : "Wall clock.");
@@ -671,18 +695,19 @@ int bench_embree_section(const struct bench_options *opts, struct bench_mesh *me
                       opts->kitchen_skipped);
     if (tests) {
         report_printf("\nTests per ray of ours (the walk \"ours\" times: kernels %s, %s layout), "
-                      "counted once on one thread; \"answered\": rays that hit (closest hit) or "
+                      "%s collapse, counted once on one thread; \"answered\": rays that hit (closest hit) or "
                       "are occluded (any hit).\n\n",
-                      bench_kernels()->name, bench_layout_name());
+                      bench_kernels()->name, bench_layout_name(), bench_collapse_name());
         report_table_header("mesh|rays|count|node tests/ray|triangle tests/ray|answered|wide "
-                            "nodes|packets|wide SAH");
+                            "nodes|packets|wide SAH|lanes/node|triangles/leaf lane");
         for (int i = 0; i < 3 * mesh_count; i++) {
             const struct tests_row *t = &tests[i];
             if (!t->mesh)
                 continue;
-            report_row("%s|%s%s|%u|%.2f|%.2f|%.1f%%|%u|%u|%.3f", t->mesh, t->set,
+            report_row("%s|%s%s|%u|%.2f|%.2f|%.1f%%|%u|%u|%.3f|%.2f|%.2f", t->mesh, t->set,
                        t->any_hit ? " (any hit)" : "", t->rays, t->nodes, t->tris, t->answered,
-                       t->wide_nodes, t->packets, t->wide_sah);
+                       t->wide_nodes, t->packets, t->wide_sah, t->lanes_per_node,
+                       t->tris_per_leaf);
             char key[96];
             snprintf(key, sizeof(key), "embree.%s.%s.ours_node_tests_per_ray", t->mesh, t->set);
             report_metric(key, t->nodes, -1);

@@ -41,6 +41,31 @@ int bench_select_layout(const char *name)
     return -1;
 }
 
+/* --collapse greedy / optimal: the collapse every wide layout the
+ * benchmark builds takes (bench_accel_build_pool, the tests-per-ray
+ * table), as an object with rtHint(RT_ACCELERATION_HINT) RT_FASTEST /
+ * RT_NICEST does. */
+static enum bvh_collapse chosen_collapse = BVH_COLLAPSE_GREEDY;
+
+int bench_select_collapse(const char *name)
+{
+    if (!strcmp(name, "greedy") || !strcmp(name, "optimal")) {
+        chosen_collapse = !strcmp(name, "optimal") ? BVH_COLLAPSE_OPTIMAL : BVH_COLLAPSE_GREEDY;
+        return 0;
+    }
+    return -1;
+}
+
+enum bvh_collapse bench_collapse(void)
+{
+    return chosen_collapse;
+}
+
+const char *bench_collapse_name(void)
+{
+    return chosen_collapse == BVH_COLLAPSE_OPTIMAL ? "optimal" : "greedy";
+}
+
 uint32_t bench_layout_width(void)
 {
     if (chosen_width)
@@ -97,8 +122,9 @@ int bench_accel_build_pool(struct bench_accel *acc, const struct bench_mesh *mes
     if (rc)
         return -1;
     acc->tri = accel_gather_triangles_pool(&acc->bvh, mesh->positions, mesh->indices, pool);
-    if (!acc->tri || accel_collapse_wide_reuse(&acc->wide, &acc->bvh, acc->tri,
-                                               bench_layout_width(), pool, &spare)) {
+    if (!acc->tri || accel_collapse_wide_quality(&acc->wide, &acc->bvh, acc->tri,
+                                                 bench_layout_width(), pool, &spare,
+                                                 chosen_collapse)) {
         rt_free_large(&spare);
         rt_free(acc->tri);
         bvh_release(&acc->bvh);

@@ -112,6 +112,10 @@ static void usage(FILE *f)
             "  --layout L  our object walk's layout: bvh8 (AVX2, AVX-512), bvh4 (SSE4.2\n"
             "             up), binary (the walk before the collapse); default the\n"
             "             widest the ISA table walks\n"
+            "  --collapse C  the wide layout's collapse: greedy (the default) or optimal\n"
+            "             (Ylitie, Karras and Laine 2017, an object's\n"
+            "             rtHint(RT_ACCELERATION_HINT, RT_NICEST)): rtbench's own\n"
+            "             layouts, and the BART scenes' objects through the hint\n"
             "  --mesh NAME  only this mesh: bumpy, gears, soup, or kitchen (embree and\n"
             "             packets only)\n"
             "  --bart-dir DIR  the BART folder (kitchen/, robots/, museum/); default\n"
@@ -219,6 +223,12 @@ int main(int argc, char **argv)
         } else if (!strcmp(a, "--layout") && value) {
             if (bench_select_layout(value)) {
                 fprintf(stderr, "rtbench: --layout takes bvh8, bvh4 or binary\n");
+                return 1;
+            }
+            i++;
+        } else if (!strcmp(a, "--collapse") && value) {
+            if (bench_select_collapse(value)) {
+                fprintf(stderr, "rtbench: --collapse takes greedy or optimal\n");
                 return 1;
             }
             i++;

@@ -24,7 +24,9 @@
  * the test prints the node counts to show it.  Where the CPU runs the
  * collapse's AVX2 copy (collapse4_avx2.c), its layouts are compared with
  * the portable form's byte for byte, also on a mesh with zero-area
- * triangles.
+ * triangles.  All of it for both collapses, the greedy one and the
+ * optimal one (rtHint(RT_ACCELERATION_HINT, RT_NICEST)), whose wide SAH
+ * must be below the greedy one's (the check fails if the DP did not run).
  */
 #include <stdint.h>
 #include <stdio.h>
@@ -196,19 +198,48 @@ static void check_mesh(const char *scene, const struct tg_mesh *m, struct rt_poo
             rt_free(other);
         }
     }
-    for (uint32_t width = 4; width <= 8 && tri; width += 4) {
-        for (int ranges = 0; ranges < 2; ranges++) {
+    double greedy_sah[2] = {0, 0}; /* per width, the greedy layout's wide SAH (2:1) */
+    /* Greedy 4- and 8-wide, then optimal (pass / 2) 4- and 8-wide. */
+    for (int pass = 0; pass < 4 && tri; pass++) {
+        const int opt = pass / 2;
+        const uint32_t width = pass % 2 ? 8u : 4u;
+        /* The optimal collapse only makes triangle layouts (range leaves
+         * are always greedy). */
+        for (int ranges = 0; ranges < 2 - opt; ranges++) {
+            const enum bvh_collapse collapse = opt ? BVH_COLLAPSE_OPTIMAL : BVH_COLLAPSE_GREEDY;
             const float *leaves = ranges ? NULL : tri;
             struct bvh4 ref;
-            if (accel_collapse_wide(&ref, &b, leaves, width)) {
+            if (accel_collapse_wide_quality(&ref, &b, leaves, width, NULL, NULL, collapse)) {
                 failures += !CHECKF(0, "%s: collapse failed", scene);
                 continue;
+            }
+            if (!ranges) {
+                /* The optimal collapse minimises the wide SAH at its
+                 * costs (node 2, packet 1, collapse4.c DP_NODE_COST), so
+                 * its layout's is at most the greedy one's; lower on
+                 * every mesh here but the tiny one (the test fails if
+                 * the DP did not run). */
+                const double sah = accel_wide_sah_cost(&ref, 2.0, 1.0);
+                if (!opt) {
+                    greedy_sah[width / 8] = sah;
+                } else {
+                    const double g = greedy_sah[width / 8];
+                    failures += !CHECKF(sah <= g * (1.0 + 1e-9),
+                                        "%s: %u-wide: optimal collapse's SAH %.6f above the "
+                                        "greedy %.6f", scene, width, sah, g);
+                    if (strcmp(scene, "tiny") != 0)
+                        failures += !CHECKF(sah < g, "%s: %u-wide: optimal SAH %.6f not below "
+                                            "greedy %.6f", scene, width, sah, g);
+                    printf("  %-7s %u-wide: wide SAH (2:1) greedy %.4f, optimal %.4f\n", scene,
+                           width, g, sah);
+                }
             }
             /* The AVX2 copy (which the calls here take where the CPU
              * runs it) against the portable form, byte for byte. */
             if (accel_collapse_wide_avx2_unit()) {
                 struct bvh4 portable;
-                if (accel_collapse_wide_portable(&portable, &b, leaves, width, NULL, NULL)) {
+                if (accel_collapse_wide_portable(&portable, &b, leaves, width, NULL, NULL,
+                                                 collapse)) {
                     failures += !CHECKF(0, "%s: portable collapse failed", scene);
                 } else {
                     failures += !CHECKF(same_wide(&portable, &ref),
@@ -224,7 +255,7 @@ static void check_mesh(const char *scene, const struct tg_mesh *m, struct rt_poo
                 /* The two-packet leaves are made in large layouts only:
                  * on the soup as built (its 8-wide layout is about 4 MB)
                  * and never on the tiny mesh. */
-                if (variant == 0 && !strcmp(scene, "soup") && width == 8)
+                if (!opt && variant == 0 && !strcmp(scene, "soup") && width == 8)
                     failures += !CHECKF(merged_left > 0, "soup: no two-packet leaf");
                 if (!strcmp(scene, "tiny"))
                     failures += !CHECKF(merged_left == 0, "tiny: a two-packet leaf");
@@ -234,7 +265,8 @@ static void check_mesh(const char *scene, const struct tg_mesh *m, struct rt_poo
                 for (int rep = 0; rep < REPEATS; rep++) {
                     struct bvh4 w;
                     double t0 = rt_now_ms();
-                    if (accel_collapse_wide_pool(&w, &b, leaves, width, pools[t])) {
+                    if (accel_collapse_wide_quality(&w, &b, leaves, width, pools[t], NULL,
+                                                    collapse)) {
                         failures += !CHECKF(0, "%s: collapse on %d threads failed", scene, t);
                         continue;
                     }
@@ -245,10 +277,10 @@ static void check_mesh(const char *scene, const struct tg_mesh *m, struct rt_poo
                     bvh4_release(&w);
                 }
             }
-            printf("  %-7s %-9s %u-wide %-7s binary nodes %u, wide nodes %u, packets %u "
+            printf("  %-7s %-9s %-7s %u-wide %-7s binary nodes %u, wide nodes %u, packets %u "
                    "(two-packet leaves %u): ms on 1..%d threads:",
                    scene, variant == 0 ? "built" : variant == 1 ? "mirrored" : "scrambled",
-                   width, ranges ? "ranges" : "packets", b.node_count, ref.node_count,
+                   opt ? "optimal" : "greedy", width, ranges ? "ranges" : "packets", b.node_count, ref.node_count,
                    ref.packet_count, merged_left, MAX_THREADS);
             for (int t = 1; t <= MAX_THREADS; t++)
                 printf(" %.1f", ms[t] / REPEATS);

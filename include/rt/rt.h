@@ -213,6 +213,14 @@ typedef struct rt_context *RTcontext;
 #define RT_OBJECT_REBUILDS 0x8F59    /* full builds so far */
 #define RT_OBJECT_REFITS 0x8F5A      /* refits so far */
 #define RT_OBJECT_VERTICES 0x8F5B    /* vertices, in recording order */
+/* rtHint target (and rtGetIntegerv, rtGetObjectiv: the mode recorded on
+ * the object at its rtEndObject).  RT_NICEST: the object's quality builds
+ * (its first build, and full builds of new connectivity or of objects
+ * hinted RT_STATIC / RT_AFFINE) make the wide layout with the optimal
+ * collapse (Ylitie, Karras and Laine 2017), a dearer build for fewer
+ * wide nodes; RT_FASTEST and RT_DONT_CARE (the default): the greedy
+ * collapse.  Same answers and images either way (docs/objects.md). */
+#define RT_ACCELERATION_HINT 0x8F5C
 
 /* Object classes (Wald, Benthin and Slusallek (2003) sec. 3).  As hints, RT_AUTOMATIC lets the
  * runtime classify from what changed each frame. */
@@ -332,7 +340,8 @@ typedef struct rt_context *RTcontext;
 #define RT_DEPTH_TEST 0x0B71
 #define RT_DITHER 0x0BD0
 #define RT_POLYGON_OFFSET_FILL 0x8037 /* rtEnable capability (docs/polygon_offset.md) */
-/* rtHint targets and modes (accepted, no effect). */
+/* rtHint targets and modes (accepted, no effect; RT_ACCELERATION_HINT,
+ * defined below, has one). */
 #define RT_PERSPECTIVE_CORRECTION_HINT 0x0C50
 #define RT_POINT_SMOOTH_HINT 0x0C51
 #define RT_LINE_SMOOTH_HINT 0x0C52

@@ -31,6 +31,7 @@ void bvh_build_params_default(struct bvh_build_params *params)
     params->c_isect = BVH_C_ISECT;
     params->leaf_growth = 1.0f;
     params->wide_layout = 1;
+    params->collapse = 0; /* BVH_COLLAPSE_GREEDY */
 }
 
 void accel_build_params_normalize(struct bvh_build_params *out,

@@ -55,6 +55,11 @@ struct bvh_build_params {
      * wide_width: 0 when they walk only the binary tree (isa=scalar), so
      * no time or memory goes to a layout nothing reads, 8 for AVX2. */
     int wide_layout;
+    /* Not read by the builders either: the collapse that makes the wide
+     * layout, an enum bvh_collapse (trace/bvh4_layout.h): 0 the greedy
+     * one (the default), 1 the optimal one.  An object's quality builds
+     * take the object's RT_ACCELERATION_HINT (scene/update.c). */
+    int collapse;
 };
 
 /* Fills *params with the defaults above (binned SAH, 16 bins). */

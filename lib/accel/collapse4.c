@@ -201,6 +201,315 @@ static double wide_node_cost(const struct bvh *bvh, const float *tri, uint32_t i
     return cost;
 }
 
+/*
+ * The optimal collapse (Ylitie, Karras and Laine 2017, sec. 3.1): which
+ * binary nodes become a wide node's lanes and which subtrees become leaf
+ * lanes, chosen bottom-up by dynamic programming on the surface area
+ * heuristic (MacDonald and Booth 1990) instead of greedily.  For binary
+ * node n and j = 1..width, cost[j - 1] = C(n, j) is the least expected
+ * cost of n's subtree as at most j lanes of a wide node:
+ *   C(n, 1) = min(leaf(n), A(n) c_node + D(n, width))
+ *   C(n, j) = min(C(n, j - 1), D(n, j)),  j > 1
+ *   D(n, j) = min over 0 < k < j of C(left, k) + C(right, j - k)
+ * where leaf(n) = A(n) c_packet ceil(t / 4) when n's t triangles may be
+ * one leaf lane (a binary leaf, or a subtree of at most the merge limit
+ * in consecutive slots, as small_span), else infinite; a binary leaf,
+ * and a subtree of one packet (BVH_WIDE_MERGE, the layout's definition
+ * of a leaf lane, bvh4_layout.h), is not opened: C(n, j) = leaf(n).
+ * (Opened, the soup of internal/collapse_threads took 52 % more bytes,
+ * its packets holding 1.8 triangles on average.)  The costs are absolute
+ * (areas not divided by the parent's), as in the paper.  gather_dp reads
+ * the choices back top-down; it recomputes each minimum with the same
+ * float operations in the same order (-ffp-contract=off), so it finds
+ * the same choice the costs were made of.  Ties take the fewer lanes,
+ * the lower k and the leaf.  Only the layout depends on this: every
+ * lane's box is still a binary node's box, and the walks' answers do not
+ * depend on which nodes are lanes (traverse_wide.h).
+ */
+/* A wide node's test against a packet's, the DP's cost ratio.  2 rather
+ * than the greedy merge's BVH_WIDE_NODE_COST of 1: with 1 the DP gives
+ * a ray 1-4 % more node tests than the greedy collapse on the soup, bumpy
+ * and the kitchen (for fewer triangle tests) and no faster rays there;
+ * with 2 it makes 18-41 % fewer wide nodes, 2-5 % fewer node tests per
+ * ray on the soup and bumpy, 7-10 % on the gears (docs/performance-log.md,
+ * round 35, cl1).  A heuristic only. */
+#define DP_NODE_COST 2.0f
+#define DP_PACKET_COST 1.0f
+
+struct dp_node {
+    float cost[MAX_WIDTH];
+    uint32_t first; /* the leaf lane's first slot (count > 0) */
+    uint8_t count;  /* triangles as one leaf lane, 0: it cannot be one */
+    uint8_t leaf;   /* C(n, 1) is the leaf's */
+    uint8_t lanes;  /* the fewest j with C(n, j) = C(n, width) */
+};
+
+struct dp {
+    const struct bvh *bvh;
+    struct dp_node *node;
+    uint32_t width;
+    uint32_t max_leaf; /* triangles a merged subtree may hold */
+    const uint32_t *roots; /* the subtrees below the top, for the pool */
+};
+
+/* D(n, j) of inner node n from its children's costs; *split the k.
+ * Only k with k <= l->lanes and j - k <= r->lanes are tried: a child's
+ * cost does not fall beyond its lanes, and float addition is monotonic,
+ * so a larger k (or j - k) never sums lower than the bound's; the same
+ * minimum, in a fraction of the sums near the leaves (where most nodes
+ * are: two one-lane children take one sum). */
+static float dp_split(const struct dp_node *l, const struct dp_node *r, uint32_t j,
+                      uint32_t *split)
+{
+    const uint32_t lo = j > r->lanes + 1u ? j - r->lanes : 1u;
+    const uint32_t hi = l->lanes < j - 1u ? l->lanes : j - 1u;
+    float best = l->cost[lo - 1] + r->cost[j - lo - 1];
+    uint32_t k_best = lo;
+    for (uint32_t k = lo + 1; k <= hi; k++) {
+        const float c = l->cost[k - 1] + r->cost[j - k - 1];
+        if (c < best) {
+            best = c;
+            k_best = k;
+        }
+    }
+    *split = k_best;
+    return best;
+}
+
+#if defined(__AVX2__) && !defined(RT_NO_SIMD)
+/* dp_split for every j = 2..8 at once (D(n, j) in lane j - 1), the min-plus
+ * step in one register: lane m holds j = m + 1, and for each k the sum
+ * C(left, k) + C(right, j - k) of all eight j is one broadcast, one
+ * permute (right's costs moved up k lanes), one blend (+inf where j <= k)
+ * and one add.  Only k <= left's lanes are tried, all j - k.  The same
+ * values as dp_split's, bit for bit: a minimum of the same finite sums is
+ * exact in any order, and the sums dp_split leaves out (k beyond left's
+ * lanes, j - k beyond right's) are never below one it takes (a child's
+ * cost is non-increasing in its lanes and constant beyond them, and float
+ * addition is monotonic), so for j beyond the lanes together D(n, j) is
+ * D(n, lanes together), as dp_one's scalar path copies it.  Only the
+ * minimum's value is used here; the k that reaches it is found again by
+ * dp_split when the lanes are read back (dp_emit), so the layout is the
+ * portable unit's byte for byte (internal/collapse_threads).  Lane m of
+ * the result is D(n, m + 1), lane 0 +inf. */
+static __m256 dp_split8(const struct dp_node *l, const struct dp_node *r)
+{
+    /* shift[k]: lane m takes right's cost m - k (a don't-care index where
+     * m < k, blended to +inf by below[k]). */
+    static const int32_t shift[8][8] = {
+        {0, 1, 2, 3, 4, 5, 6, 7}, {0, 0, 1, 2, 3, 4, 5, 6}, {0, 0, 0, 1, 2, 3, 4, 5},
+        {0, 0, 0, 0, 1, 2, 3, 4}, {0, 0, 0, 0, 0, 1, 2, 3}, {0, 0, 0, 0, 0, 0, 1, 2},
+        {0, 0, 0, 0, 0, 0, 0, 1}, {0, 0, 0, 0, 0, 0, 0, 0}};
+    static const int32_t below[8][8] = {
+        {0, 0, 0, 0, 0, 0, 0, 0},         {-1, 0, 0, 0, 0, 0, 0, 0},
+        {-1, -1, 0, 0, 0, 0, 0, 0},       {-1, -1, -1, 0, 0, 0, 0, 0},
+        {-1, -1, -1, -1, 0, 0, 0, 0},     {-1, -1, -1, -1, -1, 0, 0, 0},
+        {-1, -1, -1, -1, -1, -1, 0, 0},   {-1, -1, -1, -1, -1, -1, -1, 0}};
+    const __m256 inf = _mm256_set1_ps(INFINITY);
+    const __m256 right = _mm256_loadu_ps(r->cost);
+    const uint32_t k_max = l->lanes < 7u ? l->lanes : 7u;
+    __m256 best = inf;
+    for (uint32_t k = 1; k <= k_max; k++) {
+        const __m256 moved = _mm256_permutevar8x32_ps(
+            right, _mm256_loadu_si256((const __m256i *)(const void *)shift[k]));
+        const __m256 masked = _mm256_blendv_ps(
+            moved, inf,
+            _mm256_castsi256_ps(_mm256_loadu_si256((const __m256i *)(const void *)below[k])));
+        best = _mm256_min_ps(best, _mm256_add_ps(_mm256_broadcast_ss(&l->cost[k - 1]), masked));
+    }
+    return best; /* lane 0 (j = 1) +inf */
+}
+
+/* Lane m of x moved to lane m + k, +inf into lanes 0..k-1 (k = 1, 2, 4). */
+#define DP_SHIFT_UP(x, k, index) \
+    _mm256_blend_ps(_mm256_permutevar8x32_ps((x), (index)), _mm256_set1_ps(INFINITY), (1 << (k)) - 1)
+
+/* The 8-wide entry of inner node e from D(n, j) (dp_split8) and C(n, 1):
+ * C(n, j) = min(C(n, 1), D(n, 2..j)), a prefix minimum in three steps
+ * (exact, so dp_one's scalar recurrence's values), and its lanes the
+ * first j whose cost equals C(n, 8) (costs do not rise with j, so every
+ * cost from there on equals it, as dp_one's scalar count finds). */
+static void dp_costs8(struct dp_node *e, __m256 split, float c1)
+{
+    __m256 x = _mm256_blend_ps(split, _mm256_set1_ps(c1), 1);
+    x = _mm256_min_ps(x, DP_SHIFT_UP(x, 1, _mm256_setr_epi32(0, 0, 1, 2, 3, 4, 5, 6)));
+    x = _mm256_min_ps(x, DP_SHIFT_UP(x, 2, _mm256_setr_epi32(0, 0, 0, 1, 2, 3, 4, 5)));
+    x = _mm256_min_ps(x, DP_SHIFT_UP(x, 4, _mm256_setr_epi32(0, 0, 0, 0, 0, 1, 2, 3)));
+    _mm256_storeu_ps(e->cost, x);
+    const int equal = _mm256_movemask_ps(_mm256_cmp_ps(x, _mm256_set1_ps(e->cost[7]), _CMP_EQ_OQ));
+    e->lanes = (uint8_t)(__builtin_ctz((unsigned)equal) + 1);
+}
+#endif
+
+/* Node i's entry from its children's (already computed). */
+static void dp_one(const struct dp *d, uint32_t i)
+{
+    const struct bvh_node *n = &d->bvh->nodes[i];
+    struct dp_node *e = &d->node[i];
+    const float area = node_area(n);
+    if (n->count) {
+        e->first = n->first;
+        e->count = (uint8_t)n->count;
+        e->leaf = 1;
+        e->lanes = 1;
+        const float leaf = area * (DP_PACKET_COST * (float)((n->count + 3) / 4));
+        for (uint32_t j = 0; j < MAX_WIDTH; j++) /* all 8: two stores */
+            e->cost[j] = leaf;
+        return;
+    }
+    const struct dp_node *l = &d->node[n->first];
+    const struct dp_node *r = &d->node[n->first + 1];
+    e->count = 0;
+    e->first = 0;
+    if (l->count && r->count && l->count + r->count <= d->max_leaf) {
+        if (l->first + l->count == r->first) {
+            e->first = l->first;
+            e->count = (uint8_t)(l->count + r->count);
+        } else if (r->first + r->count == l->first) {
+            e->first = r->first;
+            e->count = (uint8_t)(l->count + r->count);
+        }
+    }
+    if (e->count && e->count <= BVH_WIDE_MERGE) {
+        /* One packet: a leaf lane, as a binary leaf (the layout's
+         * definition, bvh4_layout.h). */
+        e->leaf = 1;
+        e->lanes = 1;
+        const float leaf = area * DP_PACKET_COST;
+        for (uint32_t j = 0; j < MAX_WIDTH; j++) /* all 8: two stores */
+            e->cost[j] = leaf;
+        return;
+    }
+    const float leaf_cost =
+        e->count ? area * (DP_PACKET_COST * (float)((e->count + 3u) / 4u)) : INFINITY;
+#if defined(__AVX2__) && !defined(RT_NO_SIMD)
+    if (d->width == 8) {
+        const __m256 split8 = dp_split8(l, r);
+        const float inner8 =
+            area * DP_NODE_COST +
+            _mm256_cvtss_f32(_mm256_permutevar8x32_ps(split8, _mm256_set1_epi32(7)));
+        e->leaf = e->count && leaf_cost <= inner8;
+        dp_costs8(e, split8, e->leaf ? leaf_cost : inner8);
+        return;
+    }
+#endif
+    float split[MAX_WIDTH + 1] = {0}; /* [2, width] written (width 4 or 8) */
+    uint32_t k;
+    /* Beyond the children's lanes together D(n, j) stays (dp_split). */
+    const uint32_t most = l->lanes + r->lanes < d->width ? l->lanes + r->lanes : d->width;
+    for (uint32_t j = 2; j <= most; j++)
+        split[j] = dp_split(l, r, j, &k);
+    for (uint32_t j = most + 1; j <= d->width; j++)
+        split[j] = split[most];
+    const float inner = area * DP_NODE_COST + split[d->width];
+    e->leaf = e->count && leaf_cost <= inner;
+    e->cost[0] = e->leaf ? leaf_cost : inner;
+    for (uint32_t j = 2; j <= d->width; j++)
+        e->cost[j - 1] = split[j] < e->cost[j - 2] ? split[j] : e->cost[j - 2];
+    uint32_t lanes = d->width;
+    while (lanes > 1 && e->cost[lanes - 2] == e->cost[d->width - 1])
+        lanes--;
+    e->lanes = (uint8_t)lanes;
+}
+
+/* The entries of binary subtree i, children first (depth at most
+ * BVH_MAX_DEPTH, so the recursion is bounded). */
+static void dp_subtree(const struct dp *d, uint32_t i)
+{
+    const struct bvh_node *n = &d->bvh->nodes[i];
+    if (!n->count) {
+        dp_subtree(d, n->first);
+        dp_subtree(d, n->first + 1);
+    }
+    dp_one(d, i);
+}
+
+static void dp_subtrees(void *arg, uint32_t lo, uint32_t hi)
+{
+    const struct dp *d = arg;
+    for (uint32_t f = lo; f < hi; f++)
+        dp_subtree(d, d->roots[f]);
+}
+
+/* Subtrees below the top handed to the pool: enough for its threads to
+ * balance them. */
+#define DP_SUBTREES 64u
+
+/* Every binary node's entry (d->node has node_count entries): the top
+ * opened breadth first until DP_SUBTREES subtrees remain below it, those
+ * on the pool, then the top's nodes children first (each entry depends
+ * on nothing but its subtree, so the same on any pool).  0, or -1 on
+ * allocation failure. */
+static int dp_run(struct dp *d, struct rt_pool *pool)
+{
+    const struct bvh *bvh = d->bvh;
+    /* queue[0, top) the opened nodes, queue[top, end) the frontier. */
+    uint32_t queue[4 * DP_SUBTREES];
+    uint32_t top = 0, end = 1;
+    queue[0] = 0;
+    while (end - top < DP_SUBTREES && end + 2 <= 4 * DP_SUBTREES) {
+        /* Open the frontier's first inner node (leaves stay). */
+        uint32_t f = top;
+        while (f < end && bvh->nodes[queue[f]].count)
+            f++;
+        if (f == end)
+            break;
+        const uint32_t i = queue[f];
+        queue[f] = queue[top];
+        queue[top++] = i;
+        queue[end++] = bvh->nodes[i].first;
+        queue[end++] = bvh->nodes[i].first + 1;
+    }
+    d->roots = &queue[top];
+    rt_pool_run_range(pool, 0, end - top, 1, 2, dp_subtrees, d);
+    for (uint32_t f = top; f-- > 0;)
+        dp_one(d, queue[f]);
+    return 0;
+}
+
+/* The lanes of subtree i in at most j lanes, appended to s (gather_dp). */
+static void dp_emit(const struct dp *d, uint32_t i, uint32_t j, struct scratch_node *s)
+{
+    const struct dp_node *e = &d->node[i];
+    /* The fewest lanes of the same cost (C(n, j) was only lowered by a
+     * split strictly cheaper than fewer lanes). */
+    uint32_t jj = 1;
+    while (jj < j && !(e->cost[jj - 1] == e->cost[j - 1]))
+        jj++;
+    const struct bvh_node *n = &d->bvh->nodes[i];
+    if (jj == 1 || n->count) {
+        const int l = s->lanes++;
+        s->source[l] = i;
+        if (e->leaf) {
+            s->first[l] = e->first;
+            s->count[l] = e->count;
+            s->inner &= ~(1u << l);
+        } else {
+            s->count[l] = 0;
+            s->first[l] = 0;
+            s->inner |= 1u << l;
+        }
+        return;
+    }
+    uint32_t k;
+    (void)dp_split(&d->node[n->first], &d->node[n->first + 1], jj, &k);
+    dp_emit(d, n->first, k, s);
+    dp_emit(d, n->first + 1, jj - k, s);
+}
+
+/* The lanes of the wide node over binary inner node `inner` by the
+ * costs: its children split as D(inner, width) chose. */
+static void gather_dp(const struct dp *d, uint32_t inner, struct scratch_node *s)
+{
+    const struct bvh_node *n = &d->bvh->nodes[inner];
+    uint32_t k;
+    (void)dp_split(&d->node[n->first], &d->node[n->first + 1], d->width, &k);
+    s->lanes = 0;
+    s->inner = 0;
+    dp_emit(d, n->first, k, s);
+    dp_emit(d, n->first + 1, d->width - k, s);
+}
+
 /* A lane that gather left closed (the wide node is full) and that is no
  * leaf lane would become a wide node of its own.  When its subtree holds
  * at most BVH_WIDE_MERGE_LEFT triangles in consecutive slots (two
@@ -667,6 +976,7 @@ struct collapse {
     const float *tri;
     uint32_t width;
     int merge_left; /* close_small_lanes applies */
+    const struct dp *dp; /* the optimal collapse's costs (triangles), else greedy */
     struct scratch_node *scratch;
     uint32_t *todo;
     char *base;
@@ -705,6 +1015,10 @@ static void gather_nodes(void *arg, uint32_t lo, uint32_t hi)
 {
     const struct collapse *c = arg;
     for (uint32_t w = lo; w < hi; w++) {
+        if (c->dp) {
+            gather_dp(c->dp, c->todo[w], &c->scratch[w]);
+            continue;
+        }
         gather(c->bvh, c->tri, c->todo[w], c->width, &c->scratch[w]);
         if (c->merge_left)
             close_small_lanes(c->bvh, c->tri, c->width, &c->scratch[w]);
@@ -824,9 +1138,13 @@ static int item_gather(const struct collapse *c, struct collapse_item *it)
             if (item_reserve(c, it, it->count + c->width))
                 return -1;
             struct scratch_node *s = &c->item_nodes[item_slot(it, w)];
-            gather(c->bvh, c->tri, c->item_todo[item_slot(it, w)], c->width, s);
-            if (c->merge_left)
-                close_small_lanes(c->bvh, c->tri, c->width, s);
+            if (c->dp) {
+                gather_dp(c->dp, c->item_todo[item_slot(it, w)], s);
+            } else {
+                gather(c->bvh, c->tri, c->item_todo[item_slot(it, w)], c->width, s);
+                if (c->merge_left)
+                    close_small_lanes(c->bvh, c->tri, c->width, s);
+            }
             for (int l = 0; l < s->lanes; l++) {
                 if (s->inner >> l & 1u) {
                     c->item_todo[item_slot(it, it->count)] = s->source[l];
@@ -965,7 +1283,8 @@ static float leaf_extent_mean(const struct bvh4 *w)
 
 /* accel_collapse_wide_reuse in this unit's instruction set. */
 static int collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *tri,
-                         uint32_t width, struct rt_pool *pool, struct rt_large_block *spare)
+                         uint32_t width, struct rt_pool *pool, struct rt_large_block *spare,
+                         enum bvh_collapse collapse)
 {
     memset(out, 0, sizeof(*out));
     if (width != 4 && width != 8)
@@ -986,6 +1305,8 @@ static int collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *t
     uint32_t top_cap = 0;
     struct collapse c;
     memset(&c, 0, sizeof(c));
+    struct dp dp;
+    memset(&dp, 0, sizeof(dp));
     c.bvh = bvh;
     c.tri = tri;
     c.width = width;
@@ -1002,6 +1323,15 @@ static int collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *t
      * walk's prefetch (prefetch_top below) has the same threshold. */
     c.merge_left =
         tri && (uint64_t)bvh->prim_count * BVH_WIDE_BYTES_PER_TRIANGLE >= BVH_WIDE_PREFETCH_BYTES;
+    if (collapse == BVH_COLLAPSE_OPTIMAL && tri) {
+        dp.bvh = bvh;
+        dp.width = width;
+        dp.max_leaf = c.merge_left ? BVH_WIDE_MERGE_LEFT : BVH_WIDE_MERGE;
+        dp.node = rt_realloc_array(NULL, bvh->node_count, sizeof(*dp.node));
+        if (!dp.node || dp_run(&dp, pool))
+            goto fail;
+        c.dp = &dp;
+    }
     uint32_t count = 1;
     uint32_t packets = 0;
     if (leaf_lane(bvh, tri, 0, &c.scratch[0].first[0], &c.scratch[0].count[0])) {
@@ -1080,6 +1410,7 @@ static int collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *t
     rt_free(c.item_todo);
     rt_free(c.scratch);
     rt_free(c.todo);
+    rt_free(dp.node);
     out->width = width;
     out->node_count = count;
     out->nodes = width == 4 ? (struct bvh4_node *)(void *)base : NULL;
@@ -1104,6 +1435,7 @@ fail:
     rt_free(c.item_todo);
     rt_free(c.scratch);
     rt_free(c.todo);
+    rt_free(dp.node);
     /* A spare taken goes back untouched: nothing is written before every
      * allocation has succeeded. */
     if (taken)
@@ -1115,24 +1447,31 @@ fail:
     return -1;
 }
 
-int accel_collapse_wide_reuse(struct bvh4 *out, const struct bvh *bvh, const float *tri,
-                              uint32_t width, struct rt_pool *pool, struct rt_large_block *spare)
+int accel_collapse_wide_quality(struct bvh4 *out, const struct bvh *bvh, const float *tri,
+                                uint32_t width, struct rt_pool *pool,
+                                struct rt_large_block *spare, enum bvh_collapse collapse)
 {
 #if !defined(COLLAPSE_UNIT_AVX2)
     /* The same source compiled for AVX2, where it runs
      * (collapse4_avx2.c): the same bytes in fewer instructions. */
     const collapse_wide_fn avx2 = accel_collapse_wide_avx2_unit();
     if (avx2)
-        return avx2(out, bvh, tri, width, pool, spare);
+        return avx2(out, bvh, tri, width, pool, spare, collapse);
 #endif
-    return collapse_wide(out, bvh, tri, width, pool, spare);
+    return collapse_wide(out, bvh, tri, width, pool, spare, collapse);
+}
+
+int accel_collapse_wide_reuse(struct bvh4 *out, const struct bvh *bvh, const float *tri,
+                              uint32_t width, struct rt_pool *pool, struct rt_large_block *spare)
+{
+    return accel_collapse_wide_quality(out, bvh, tri, width, pool, spare, BVH_COLLAPSE_GREEDY);
 }
 
 int accel_collapse_wide_portable(struct bvh4 *out, const struct bvh *bvh, const float *tri,
                                  uint32_t width, struct rt_pool *pool,
-                                 struct rt_large_block *spare)
+                                 struct rt_large_block *spare, enum bvh_collapse collapse)
 {
-    return collapse_wide(out, bvh, tri, width, pool, spare);
+    return collapse_wide(out, bvh, tri, width, pool, spare, collapse);
 }
 
 int accel_collapse_wide_pool(struct bvh4 *out, const struct bvh *bvh, const float *tri,

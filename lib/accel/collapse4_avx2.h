@@ -9,6 +9,8 @@
 
 #include <stdint.h>
 
+#include "trace/bvh_collapse.h"
+
 struct bvh4;
 struct bvh;
 struct rt_pool;
@@ -16,7 +18,7 @@ struct rt_large_block;
 
 typedef int (*collapse_wide_fn)(struct bvh4 *out, const struct bvh *bvh, const float *tri,
                                 uint32_t width, struct rt_pool *pool,
-                                struct rt_large_block *spare);
+                                struct rt_large_block *spare, enum bvh_collapse collapse);
 
 /* accel_collapse_wide_reuse compiled for AVX2 (the same source, the same
  * bytes), or NULL where that unit is absent or the CPU does not run
@@ -28,6 +30,6 @@ collapse_wide_fn accel_collapse_wide_avx2_unit(void);
  * (internal/collapse_threads). */
 int accel_collapse_wide_portable(struct bvh4 *out, const struct bvh *bvh, const float *tri,
                                  uint32_t width, struct rt_pool *pool,
-                                 struct rt_large_block *spare);
+                                 struct rt_large_block *spare, enum bvh_collapse collapse);
 
 #endif

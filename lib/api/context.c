@@ -286,6 +286,7 @@ RTcontext rtCreateContextWithReason(const char *configuration, RTsizei bufSize, 
     ctx->threads = online_cpus();
     ctx->build_threads = 1; /* Wald, Ize and Parker (2008) sec. 6: K set by the application */
     bvh_build_params_default(&ctx->build_params);
+    ctx->acceleration_hint = RT_DONT_CARE;
     ctx->kernels = trace_kernels_best();
     if (parse_configuration(ctx, configuration, reason, reason_size)) {
         rt_free(ctx);

@@ -134,6 +134,9 @@ struct rt_context {
     /* Configuration (rtCreateContext). */
     int threads;
     struct bvh_build_params build_params;
+    /* rtHint(RT_ACCELERATION_HINT, mode): RT_DONT_CARE, RT_FASTEST or
+     * RT_NICEST; recorded on an object at its rtEndObject (list.c). */
+    RTenum acceleration_hint;
     /* The traversal kernels' ISA table (isa=, lib/trace/kernels.h):
      * chosen here once, read by every trace of the context. */
     const struct trace_kernels *kernels;

@@ -295,6 +295,7 @@ static const struct enum_name names[] = {
     {0x8F59, "RT_OBJECT_REBUILDS"},
     {0x8F5A, "RT_OBJECT_REFITS"},
     {0x8F5B, "RT_OBJECT_VERTICES"},
+    {0x8F5C, "RT_ACCELERATION_HINT"},
     {0x8F60, "RT_AUTOMATIC"},
     {0x8F61, "RT_STATIC"},
     {0x8F62, "RT_AFFINE"},

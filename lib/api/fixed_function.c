@@ -317,10 +317,15 @@ void rtHint(RTenum target, RTenum mode)
     struct rt_context *ctx = no_op_context("rtHint");
     if (!ctx)
         return;
-    if (target < RT_PERSPECTIVE_CORRECTION_HINT || target > RT_FOG_HINT)
+    /* As Mesa's _mesa_Hint: an unknown target or mode is RT_INVALID_ENUM
+     * and changes nothing. */
+    if ((target < RT_PERSPECTIVE_CORRECTION_HINT || target > RT_FOG_HINT) &&
+        target != RT_ACCELERATION_HINT)
         bad_enum(ctx, "rtHint", "target", target);
     else if (mode != RT_DONT_CARE && mode != RT_FASTEST && mode != RT_NICEST)
         bad_enum(ctx, "rtHint", "mode", mode);
+    else if (target == RT_ACCELERATION_HINT)
+        ctx->acceleration_hint = mode;
 }
 
 static int is_buffer(RTenum mode)

@@ -90,6 +90,9 @@ static enum value_kind state_values(const struct rt_context *ctx, RTenum pname, 
     case RT_BVH_BINS:
         v[0] = ctx->build_params.bins;
         return VALUE_INT;
+    case RT_ACCELERATION_HINT:
+        v[0] = ctx->acceleration_hint;
+        return VALUE_INT;
     case RT_OBJECT_COUNT:
         v[0] = ctx->scene.objects.defined;
         return VALUE_INT;

@@ -639,6 +639,12 @@ static void end_list(const char *caller)
         rt_free(map);
         return;
     }
+    /* The definition's acceleration hint, read now and not at the (lazy)
+     * build: the mode current when the object was defined, as a GL
+     * display list keeps the state it was compiled with. */
+    object->acceleration_hint = ctx->acceleration_hint;
+    for (uint32_t i = 0; i < object->segment_count; i++)
+        object->segments[i]->acceleration_hint = ctx->acceleration_hint;
     if (ctx->list_mode == RT_COMPILE_AND_EXECUTE)
         for (uint32_t i = 0; i < ctx->exec_count; i++) {
             const struct list_exec *e = &ctx->exec[i];

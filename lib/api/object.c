@@ -80,6 +80,7 @@ static int pname_is_valid(RTenum pname, int as_float)
     case RT_OBJECT_REBUILDS:
     case RT_OBJECT_REFITS:
     case RT_OBJECT_VERTICES:
+    case RT_ACCELERATION_HINT:
         return 1;
     case RT_OBJECT_SAH_COST:
     case RT_OBJECT_BUILD_TIME:

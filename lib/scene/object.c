@@ -172,6 +172,9 @@ int scene_object_values(const struct scene_object *object, unsigned pname, doubl
     case RT_OBJECT_VERTICES:
         v[0] = object->mesh.vertex_count;
         return 1;
+    case RT_ACCELERATION_HINT:
+        v[0] = object->acceleration_hint;
+        return 1;
     case RT_OBJECT_UPDATE_TIME:
         v[0] = object->update_ms;
         return 1;

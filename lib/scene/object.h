@@ -54,6 +54,11 @@ struct scene_object {
     /* Hints (rtObjectParameteri); RT_AUTOMATIC when none was given. */
     unsigned class_hint;
     unsigned strategy_hint;
+    /* rtHint(RT_ACCELERATION_HINT)'s mode when the definition was ended
+     * (rtEndObject), for it and its segments: RT_NICEST makes the quality
+     * builds take the optimal collapse (update.c); 0 (an object made by
+     * the scene itself) or another mode the greedy one. */
+    unsigned acceleration_hint;
     /* What the runtime did, for rtGetObject* (Wald, Benthin and Slusallek (2003) sec. 3 classes,
      * Wald, Ize and Parker (2008) and Yoon, Curtis and Manocha (2007) strategies). */
     unsigned current_class;

@@ -183,9 +183,17 @@ const struct scene_accel *scene_object_update(struct scene_object *object,
     if (accel && accel->serial == object->serial)
         return accel;
     double start = rt_now_ms();
-    const struct bvh_build_params *quality = config->static_params;
-    struct bvh_build_params dynamic = *quality;
+    /* The quality builds take the collapse of the object's acceleration
+     * hint (rtHint(RT_ACCELERATION_HINT), recorded at rtEndObject); the
+     * per-frame ones (dynamic) the greedy collapse, whose cost is a small
+     * part of a build that is repeated. */
+    struct bvh_build_params quality_params = *config->static_params;
+    quality_params.collapse =
+        object->acceleration_hint == RT_NICEST ? BVH_COLLAPSE_OPTIMAL : BVH_COLLAPSE_GREEDY;
+    const struct bvh_build_params *quality = &quality_params;
+    struct bvh_build_params dynamic = *config->static_params;
     dynamic.builder = BVH_BUILDER_BINNED_SAH;
+    dynamic.collapse = BVH_COLLAPSE_GREEDY;
     int status;
     if (!accel) {
         /* First build: the high-quality static build, lazily (Wald, Benthin and Slusallek (2003)

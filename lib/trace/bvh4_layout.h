@@ -72,6 +72,7 @@
 #include <stdint.h>
 
 #include "base/alloc.h"
+#include "trace/bvh_collapse.h"
 #include "trace/bvh_layout.h"
 
 /* A binary subtree of at most this many triangles in consecutive slots
@@ -189,6 +190,13 @@ int accel_collapse_wide_pool(struct bvh4 *out, const struct bvh *bvh, const floa
  * NULL.  Same bytes as a fresh block. */
 int accel_collapse_wide_reuse(struct bvh4 *out, const struct bvh *bvh, const float *tri,
                               uint32_t width, struct rt_pool *pool, struct rt_large_block *spare);
+
+/* The collapse's choice: enum bvh_collapse (trace/bvh_collapse.h). */
+
+/* accel_collapse_wide_reuse with the collapse chosen. */
+int accel_collapse_wide_quality(struct bvh4 *out, const struct bvh *bvh, const float *tri,
+                                uint32_t width, struct rt_pool *pool,
+                                struct rt_large_block *spare, enum bvh_collapse collapse);
 
 /* The wide layout's SAH cost (MacDonald and Booth 1990), the measure the
  * optimal collapse minimises (Ylitie, Karras and Laine 2017, sec. 3.1):
