@@ -383,6 +383,21 @@ static void other_groups(void)
     rtListBase(0);
     CHECK_NO_ERR();
 
+    tu_section("RT_HINT_BIT: the acceleration hint");
+    rtHint(RT_ACCELERATION_HINT, RT_NICEST);
+    rtPushAttrib(RT_LIST_BIT); /* another group: the hint is not restored */
+    rtHint(RT_ACCELERATION_HINT, RT_FASTEST);
+    rtPopAttrib();
+    CHECK_INT(geti(RT_ACCELERATION_HINT), RT_FASTEST);
+    rtHint(RT_ACCELERATION_HINT, RT_NICEST);
+    rtPushAttrib(RT_HINT_BIT);
+    rtHint(RT_ACCELERATION_HINT, RT_FASTEST);
+    CHECK_INT(geti(RT_ACCELERATION_HINT), RT_FASTEST);
+    rtPopAttrib();
+    CHECK_INT(geti(RT_ACCELERATION_HINT), RT_NICEST);
+    rtHint(RT_ACCELERATION_HINT, RT_DONT_CARE);
+    CHECK_NO_ERR();
+
     tu_section("nested pushes restore in order; RT_ALL_ATTRIB_BITS");
     rtLineWidth(2.0f);
     rtPushAttrib(RT_ALL_ATTRIB_BITS);

@@ -10,9 +10,12 @@
  * RT_MAX_ATTRIB_STACK_DEPTH (16, GL's minimum) deep; a push on a full
  * stack records RT_STACK_OVERFLOW, a pop of an empty one
  * RT_STACK_UNDERFLOW, and neither is allowed inside rtBegin/rtEnd
- * (RT_INVALID_OPERATION).  Bits without a Tracelist meaning (hints,
- * stipple, scissor, pixel mode, evaluators, accumulation, stencil) are
- * accepted and save nothing, as the state they name does not exist here.
+ * (RT_INVALID_OPERATION).  RT_HINT_BIT saves the one hint with state,
+ * RT_ACCELERATION_HINT (GL 1.5 sec. 5.6: the hint group is every
+ * hint's mode); GL's own hints have none here.  Bits without a Tracelist
+ * meaning (stipple, scissor, pixel mode, evaluators, accumulation,
+ * stencil) are accepted and save nothing, as the state they name does
+ * not exist here.
  *
  * rtPushAttrib and rtPopAttrib are recorded in display lists and run when
  * the list is called, as GL's (the client stack is not: GL executes
@@ -73,6 +76,7 @@ static void save(const struct rt_context *ctx, struct attrib_entry *e)
      * mode (scene/recording.h), not the context's under RT_COMPILE. */
     e->matrix_mode = rt_list_compiling(ctx) ? ctx->recording.matrix_mode : ctx->matrix_mode;
     e->list_base = ctx->list_base;
+    e->acceleration_hint = ctx->acceleration_hint;
 }
 
 /* GL_LIGHTING_BIT (GL 1.5 table 6.11 ff.): the material colours, the
@@ -205,6 +209,8 @@ static void restore(struct rt_context *ctx, const struct attrib_entry *e)
         memcpy(ctx->render.viewport, e->viewport, sizeof(e->viewport));
     if (mask & RT_LIST_BIT)
         ctx->list_base = e->list_base;
+    if (mask & RT_HINT_BIT)
+        ctx->acceleration_hint = e->acceleration_hint;
     /* The material is interned by value: a changed one is looked up again
      * for the next triangle, and its derived fields follow the switches. */
     ctx->recording.material_index = -1;

@@ -88,6 +88,7 @@ struct attrib_entry {
     int viewport[4];
     RTenum matrix_mode;
     RTuint list_base;
+    RTenum acceleration_hint; /* RT_HINT_BIT: the one hint with state here */
 };
 
 /* One entry of the client attribute stack (attrib.c). */
