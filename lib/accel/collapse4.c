@@ -438,9 +438,8 @@ static void dp_subtrees(void *arg, uint32_t lo, uint32_t hi)
 /* Every binary node's entry (d->node has node_count entries): the top
  * opened breadth first until DP_SUBTREES subtrees remain below it, those
  * on the pool, then the top's nodes children first (each entry depends
- * on nothing but its subtree, so the same on any pool).  0, or -1 on
- * allocation failure. */
-static int dp_run(struct dp *d, struct rt_pool *pool)
+ * on nothing but its subtree, so the same on any pool). */
+static void dp_run(struct dp *d, struct rt_pool *pool)
 {
     const struct bvh *bvh = d->bvh;
     /* queue[0, top) the opened nodes, queue[top, end) the frontier. */
@@ -464,7 +463,6 @@ static int dp_run(struct dp *d, struct rt_pool *pool)
     rt_pool_run_range(pool, 0, end - top, 1, 2, dp_subtrees, d);
     for (uint32_t f = top; f-- > 0;)
         dp_one(d, queue[f]);
-    return 0;
 }
 
 /* The lanes of subtree i in at most j lanes, appended to s (gather_dp). */
@@ -1328,8 +1326,9 @@ static int collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *t
         dp.width = width;
         dp.max_leaf = c.merge_left ? BVH_WIDE_MERGE_LEFT : BVH_WIDE_MERGE;
         dp.node = rt_realloc_array(NULL, bvh->node_count, sizeof(*dp.node));
-        if (!dp.node || dp_run(&dp, pool))
+        if (!dp.node)
             goto fail;
+        dp_run(&dp, pool);
         c.dp = &dp;
     }
     uint32_t count = 1;

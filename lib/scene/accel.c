@@ -39,9 +39,7 @@ static int finish_layout(struct scene_accel *accel, const struct scene_accel_geo
         spare = scratch;
     if (params->wide_layout &&
         accel_collapse_wide_quality(&wide, &accel->bvh, tri, width, pool, spare,
-                                    params->collapse == BVH_COLLAPSE_OPTIMAL
-                                        ? BVH_COLLAPSE_OPTIMAL
-                                        : BVH_COLLAPSE_GREEDY)) {
+                                    params->collapse)) {
         /* The tree may have changed under the old wide layout
          * (restructuring): drop it, so traversal takes the binary walk. */
         bvh4_release(&accel->wide);
