@@ -1605,14 +1605,29 @@ SURFACE_INLINE void lanes_shading_normal(const double *mt, const __m256 no[3], c
         nv[k] = _mm256_blendv_ps(g[k], _mm256_xor_ps(nw[k], away), unit);
 }
 
-/* interpolate's (b0 x0 + b1 x1) + b2 x2 of one component, x gathered
- * lane by lane (x[j][i]: vertex j of lane i's triangle). */
-SURFACE_INLINE __m256 lanes_interpolate_gathered(__m256 b0, __m256 b1, __m256 b2,
-                                                 const float x[3][TRACE_PACKET])
+/* n vectors of TRACE_PACKET floats from x on set to zero. */
+SURFACE_INLINE void lanes_zero(float *x, int n)
 {
-    return _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(b0, _mm256_loadu_ps(x[0])),
-                                       _mm256_mul_ps(b1, _mm256_loadu_ps(x[1]))),
-                         _mm256_mul_ps(b2, _mm256_loadu_ps(x[2])));
+    for (int i = 0; i < n; i++)
+        _mm256_storeu_ps(x + TRACE_PACKET * i, _mm256_setzero_ps());
+}
+
+/* Lane i of the result is per_slot[slots[i]] (slots in 0..7): a float
+ * moved, not computed. */
+SURFACE_INLINE __m256 lanes_by_slot(const float per_slot[TRACE_PACKET], __m256i slots)
+{
+    return _mm256_permutevar8x32_ps(_mm256_loadu_ps(per_slot), slots);
+}
+
+/* interpolate's (b0 x0 + b1 x1) + b2 x2 of one component, x[j] taken
+ * lane by lane from the lane's triangle slot (x[j][s]: vertex j of the
+ * triangle in slot s; lanes_by_slot). */
+SURFACE_INLINE __m256 lanes_interpolate_slots(__m256 b0, __m256 b1, __m256 b2,
+                                              const float x[3][TRACE_PACKET], __m256i slots)
+{
+    return _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(b0, lanes_by_slot(x[0], slots)),
+                                       _mm256_mul_ps(b1, lanes_by_slot(x[1], slots))),
+                         _mm256_mul_ps(b2, lanes_by_slot(x[2], slots)));
 }
 
 /* facing_normal in the lanes: front = ng . dir < 0, the back face's ng
@@ -1781,14 +1796,37 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
      * leaves the block to the per-hit path) and its level-of-detail
      * part, copied out of the tile's one cache entry, which the next
      * triangle takes. */
-    float tri_ng[TRACE_PACKET][3];
+    /* Each distinct triangle's values in slot order, a vector of up to
+     * eight slots per component (tri_x[...][j]: slot j's): each lane then
+     * takes its slot's value with one vpermps by the lanes' slot indices
+     * (lanes_by_slot), the same floats as loading them lane by lane from
+     * the lane's own triangle, moved, not computed.  The slots beyond
+     * count are zeros that no index selects. */
+    float tri_ng[3][TRACE_PACKET], tri_n[3][3][TRACE_PACKET], tri_st[2][3][TRACE_PACKET];
+    lanes_zero(tri_ng[0], 3);
+    const int smooth = mesh->has_normals && !(t.flags & TRI_FLAT);
+    if (smooth)
+        lanes_zero(tri_n[0][0], 9);
+    if (tx)
+        lanes_zero(tri_st[0][0], 6);
     struct surface_lod tri_lod[TRACE_PACKET];
     for (int j = 0; j < count; j++) {
         struct hit_triangle tj = t;
         tj.v = &mesh->indices[3 * prim[j]];
         struct surface_cache *c = triangle_cache(sc->cache, t.inst, prim[j]);
-        if (!triangle_normal(c, &tj, tri_ng[j]))
+        float ng[3];
+        if (!triangle_normal(c, &tj, ng))
             return 0;
+        for (int k = 0; k < 3; k++)
+            tri_ng[k][j] = ng[k];
+        for (int v = 0; v < 3; v++) {
+            if (smooth)
+                for (int k = 0; k < 3; k++)
+                    tri_n[k][v][j] = mesh->normals[3 * tj.v[v] + k];
+            if (tx)
+                for (int k = 0; k < 2; k++)
+                    tri_st[k][v][j] = mesh->texcoords[2 * tj.v[v] + k];
+        }
         if (lod) {
             const float *const vst[3] = {&mesh->texcoords[2 * tj.v[0]],
                                          &mesh->texcoords[2 * tj.v[1]],
@@ -1796,18 +1834,17 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
             tri_lod[j] = *lod_triangle(c, tx, t.inst, mesh, prim[j], tj.v, vst, NULL);
         }
     }
-    float lane_b[3][TRACE_PACKET], lane_x[3][3][TRACE_PACKET];
+    const __m256i slots = _mm256_loadu_si256((const __m256i *)(const void *)slot);
+    float lane_b[3][TRACE_PACKET];
     for (int i = 0; i < TRACE_PACKET; i++) {
         lane_b[1][i] = hits[i]->u;
         lane_b[2][i] = hits[i]->v;
-        for (int k = 0; k < 3; k++)
-            lane_x[0][k][i] = tri_ng[slot[i]][k];
     }
     const __m256 b1 = _mm256_loadu_ps(lane_b[1]), b2 = _mm256_loadu_ps(lane_b[2]);
     const __m256 b0 = _mm256_sub_ps(_mm256_sub_ps(_mm256_set1_ps(1.0f), b1), b2);
     __m256 g[3], dv[3];
     for (int k = 0; k < 3; k++) {
-        g[k] = _mm256_loadu_ps(lane_x[0][k]);
+        g[k] = lanes_by_slot(tri_ng[k], slots);
         dv[k] = _mm256_loadu_ps(dir[k]);
     }
     lanes_facing(g, dv);
@@ -1824,14 +1861,8 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
             for (int k = 0; k < 3; k++)
                 no[k] = _mm256_loadu_ps(lane_n[k]);
         } else {
-            for (int k = 0; k < 3; k++) {
-                for (int i = 0; i < TRACE_PACKET; i++) {
-                    const uint32_t *v = &mesh->indices[3 * hits[i]->prim];
-                    for (int j = 0; j < 3; j++)
-                        lane_x[k][j][i] = mesh->normals[3 * v[j] + k];
-                }
-                no[k] = lanes_interpolate_gathered(b0, b1, b2, lane_x[k]);
-            }
+            for (int k = 0; k < 3; k++)
+                no[k] = lanes_interpolate_slots(b0, b1, b2, tri_n[k], slots);
         }
         lanes_shading_normal(t.inst->normal_to_world, no, g, nv);
     }
@@ -1850,14 +1881,8 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
                   lighting, out, amb, dif);
     if (tx) {
         float lane_st[2][TRACE_PACKET];
-        for (int k = 0; k < 2; k++) {
-            for (int i = 0; i < TRACE_PACKET; i++) {
-                const uint32_t *v = &mesh->indices[3 * hits[i]->prim];
-                for (int j = 0; j < 3; j++)
-                    lane_x[k][j][i] = mesh->texcoords[2 * v[j] + k];
-            }
-            _mm256_storeu_ps(lane_st[k], lanes_interpolate_gathered(b0, b1, b2, lane_x[k]));
-        }
+        for (int k = 0; k < 2; k++)
+            _mm256_storeu_ps(lane_st[k], lanes_interpolate_slots(b0, b1, b2, tri_st[k], slots));
         float lambda[TRACE_PACKET];
         for (int i = 0; i < TRACE_PACKET; i++)
             lambda[i] = -INFINITY;
