@@ -580,17 +580,30 @@ static void sample_trilinear(const struct scene_texture *tex, int level, __m128d
 #endif
 
 #if defined(TEXTURE_OCTS)
-/* wrap_lanes in eight int32 lanes: the same integers. */
-static inline __m256i wrap_lanes8(__m256i i, __m256i n, __m256i repeat)
+/* wrap_index of a bilinear lookup's two indices i and i + 1 along one
+ * axis of n texels (wrap that axis' mode) in eight int32 lanes, into *lo
+ * and *hi: the same integers.  With REPEAT, quad_reduce leaves the
+ * coordinate in [0, 1 - 2^-53], its product by n (an integer from 1 to
+ * 2^14) in [0, n] (rounding may reach n), less 1/2 in [-1/2, n - 1/2],
+ * so i, its floor, is in [-1, n - 1] and i + 1 in [0, n]: wrap_index
+ * adds n to an i of -1 and takes n from an i + 1 of n, and no other
+ * case of it arises (one comparison an index where the general wrap
+ * took both sides and a blend of the two modes).  Otherwise (clamped)
+ * it gives i itself in [0, n - 1], 0 below and n - 1 above: min then
+ * max, for any i. */
+static inline void wrap_pair8(__m256i i, __m256i n, enum scene_texture_wrap wrap, __m256i *lo,
+                              __m256i *hi)
 {
     const __m256i last = _mm256_sub_epi32(n, _mm256_set1_epi32(1));
-    const __m256i below = _mm256_cmpgt_epi32(_mm256_setzero_si256(), i);
-    const __m256i above = _mm256_cmpgt_epi32(i, last);
-    const __m256i wrapped = _mm256_sub_epi32(_mm256_add_epi32(i, _mm256_and_si256(below, n)),
-                                             _mm256_and_si256(above, n));
-    const __m256i clamped = _mm256_or_si256(
-        _mm256_andnot_si256(_mm256_or_si256(below, above), i), _mm256_and_si256(above, last));
-    return _mm256_blendv_epi8(clamped, wrapped, repeat);
+    const __m256i next = _mm256_add_epi32(i, _mm256_set1_epi32(1));
+    if (wrap == SCENE_WRAP_REPEAT) {
+        const __m256i below = _mm256_cmpgt_epi32(_mm256_setzero_si256(), i);
+        *lo = _mm256_add_epi32(i, _mm256_and_si256(below, n));
+        *hi = _mm256_sub_epi32(next, _mm256_and_si256(_mm256_cmpgt_epi32(next, last), n));
+    } else {
+        *lo = _mm256_max_epi32(_mm256_min_epi32(i, last), _mm256_setzero_si256());
+        *hi = _mm256_max_epi32(_mm256_min_epi32(next, last), _mm256_setzero_si256());
+    }
 }
 
 /* pair_reduce of four coordinates x along one axis (wrap) in the double
@@ -636,8 +649,8 @@ typedef char texture_level_ints[sizeof(struct scene_texture_level) % sizeof(int)
  * of 16384^2 texels of 4 bytes, below 2^31 bytes, so one gather fetches
  * a texel of each lane. */
 static inline void bilinear8_offsets(const struct scene_texture *tex, __m256i level,
-                                     const __m256d rs[2], const __m256d rt[2], __m256i repeat_s,
-                                     __m256i repeat_t, __m256i off[4], __m256 *va, __m256 *vb)
+                                     const __m256d rs[2], const __m256d rt[2], __m256i off[4],
+                                     __m256 *va, __m256 *vb)
 {
     const int *entries = (const int *)tex->levels;
     const __m256i at = _mm256_mullo_epi32(level, _mm256_set1_epi32(LEVEL_INTS));
@@ -671,12 +684,12 @@ static inline void bilinear8_offsets(const struct scene_texture *tex, __m256i le
     *va = _mm256_set_m128(a[1], a[0]);
     *vb = _mm256_set_m128(b[1], b[0]);
     const __m256i vi = _mm256_set_m128i(i[1], i[0]), vj = _mm256_set_m128i(j[1], j[0]);
-    const __m256i one = _mm256_set1_epi32(1);
-    const __m256i i0 = wrap_lanes8(vi, w, repeat_s);
-    const __m256i i1 = wrap_lanes8(_mm256_add_epi32(vi, one), w, repeat_s);
+    __m256i i0, i1, j0, j1;
+    wrap_pair8(vi, w, tex->wrap_s, &i0, &i1);
+    wrap_pair8(vj, h, tex->wrap_t, &j0, &j1);
     /* Rows j w: at most 2^14 by 2^14, exact in int32. */
-    const __m256i r0 = _mm256_mullo_epi32(wrap_lanes8(vj, h, repeat_t), w);
-    const __m256i r1 = _mm256_mullo_epi32(wrap_lanes8(_mm256_add_epi32(vj, one), h, repeat_t), w);
+    const __m256i r0 = _mm256_mullo_epi32(j0, w);
+    const __m256i r1 = _mm256_mullo_epi32(j1, w);
 #define OFFSET8(r, c) _mm256_add_epi32(first, _mm256_slli_epi32(_mm256_add_epi32(r, c), 2))
     off[0] = OFFSET8(r0, i0);
     off[1] = OFFSET8(r0, i1);
@@ -715,24 +728,22 @@ static inline void bilinear8_blend(const __m256i x[4], __m256 va, __m256 vb, __m
 
 /* bilinear8_offsets, bilinear8_gather, then bilinear8_blend. */
 static inline void bilinear8(const struct scene_texture *tex, __m256i level, const __m256d rs[2],
-                             const __m256d rt[2], __m256i repeat_s, __m256i repeat_t,
-                             __m256 out[3])
+                             const __m256d rt[2], __m256 out[3])
 {
     __m256i off[4], x[4];
     __m256 va, vb;
-    bilinear8_offsets(tex, level, rs, rt, repeat_s, repeat_t, off, &va, &vb);
+    bilinear8_offsets(tex, level, rs, rt, off, &va, &vb);
     bilinear8_gather(tex, off, x);
     bilinear8_blend(x, va, vb, out);
 }
 #undef LEVEL_INTS
 
 /* What scene_texture_sample_lod8 decides before its loads: the reduced
- * coordinates (rs, rt), the wrap masks, each lane's fine and coarse
- * level, the blend weight f and the mask `two` of the lanes that blend
- * two levels.  Returns 0 where sample_lod8 does not take the block. */
+ * coordinates (rs, rt), each lane's fine and coarse level, the blend
+ * weight f and the mask `two` of the lanes that blend two levels.  Returns 0 where sample_lod8 does not take the block. */
 struct lod8_plan {
     __m256d rs[2], rt[2];
-    __m256i repeat_s, repeat_t, fine, coarse;
+    __m256i fine, coarse;
     __m256 f, two;
 };
 
@@ -746,8 +757,6 @@ static inline int lod8_plan(const struct scene_texture *tex, const float lambda[
         if (!quad_reduce(_mm_loadu_ps(s + 4 * k), tex->wrap_s, &p->rs[k]) ||
             !quad_reduce(_mm_loadu_ps(t + 4 * k), tex->wrap_t, &p->rt[k]))
             return 0;
-    p->repeat_s = _mm256_set1_epi32(-(tex->wrap_s == SCENE_WRAP_REPEAT));
-    p->repeat_t = _mm256_set1_epi32(-(tex->wrap_t == SCENE_WRAP_REPEAT));
     const __m256 lam = _mm256_loadu_ps(lambda);
     const int q = tex->level_count - 1;
     /* c = 0 for these filters: lambda > 0 minifies (a NaN does not). */
@@ -794,14 +803,14 @@ int scene_texture_sample_lod8(const struct scene_texture *tex, const float lambd
     if (!lod8_plan(tex, lambda, s, t, &p))
         return 0;
     __m256 c0[3], c1[3];
-    bilinear8(tex, p.fine, p.rs, p.rt, p.repeat_s, p.repeat_t, c0);
+    bilinear8(tex, p.fine, p.rs, p.rt, c0);
     if (!_mm256_movemask_ps(p.two)) {
         /* One level in every lane (magnified, or at the last level). */
         for (int k = 0; k < 3; k++)
             _mm256_storeu_ps(rgb[k], c0[k]);
         return 1;
     }
-    bilinear8(tex, p.coarse, p.rs, p.rt, p.repeat_s, p.repeat_t, c1);
+    bilinear8(tex, p.coarse, p.rs, p.rt, c1);
     lod8_store(c0, c1, p.f, p.two, rgb);
     return 1;
 }
@@ -825,8 +834,7 @@ int scene_texture_prefetch_lod8(const struct scene_texture *tex, const float lam
     for (int l = 0; l < out->levels; l++) {
         __m256i off[4];
         __m256 va, vb;
-        bilinear8_offsets(tex, l ? p.coarse : p.fine, p.rs, p.rt, p.repeat_s, p.repeat_t, off,
-                          &va, &vb);
+        bilinear8_offsets(tex, l ? p.coarse : p.fine, p.rs, p.rt, off, &va, &vb);
         for (int c = 0; c < 4; c++)
             _mm256_storeu_si256((__m256i *)(void *)out->offset[l][c], off[c]);
         _mm256_storeu_ps(out->a[l], va);
