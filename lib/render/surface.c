@@ -1565,16 +1565,10 @@ void surface_fetch_colour(const struct shade_context *sc, const struct trace_sce
                                 _mm256_mul_ps(b1, _mm256_set1_ps(x1))),                           \
                   _mm256_mul_ps(b2, _mm256_set1_ps(x2)))
 
-/* shading_normal's end in the lanes: the object-space normals no
- * through the matrix mt, normalised, turned to the side of the facing
- * geometric normals g, into nv where they normalise (nv keeps g
- * elsewhere), each lane the scalar operations in their order. */
-SURFACE_INLINE void lanes_shading_normal(const double *mt, const __m256 no[3], const __m256 g[3],
-                                         __m256 nv[3])
+/* transform_normal in double, four lanes at a time: the object-space
+ * normals no through the matrix mt into nw. */
+SURFACE_INLINE void lanes_transform_normal(const double *mt, const __m256 no[3], __m256 nw[3])
 {
-    const __m256 sign = _mm256_set1_ps(-0.0f);
-    /* transform_normal in double, four lanes at a time. */
-    __m256 nw[3];
     for (int r = 0; r < 3; r++) {
         __m128 half[2];
         for (int h = 0; h < 2; h++) {
@@ -1589,6 +1583,49 @@ SURFACE_INLINE void lanes_shading_normal(const double *mt, const __m256 no[3], c
         }
         nw[r] = _mm256_insertf128_ps(_mm256_castps128_ps256(half[0]), half[1], 1);
     }
+}
+
+/* Whether the upper-left 3 x 3 of the column-major matrix m is the
+ * identity bit for bit (a -0.0 is not 0.0 here: its products differ in
+ * the sign of zero). */
+SURFACE_INLINE int lanes_identity3(const double *m)
+{
+    int same = 7;
+    for (int c = 0; c < 3; c++) {
+        const __m256i col = _mm256_loadu_si256((const __m256i *)(const void *)(m + 4 * c));
+        const __m256i unit = _mm256_castpd_si256(
+            _mm256_set_pd(0.0, c == 2 ? 1.0 : 0.0, c == 1 ? 1.0 : 0.0, c == 0 ? 1.0 : 0.0));
+        same &= _mm256_movemask_pd(_mm256_castsi256_pd(_mm256_cmpeq_epi64(col, unit)));
+    }
+    return same == 7;
+}
+
+/* shading_normal's end in the lanes: the object-space normals no
+ * through the matrix mt, normalised, turned to the side of the facing
+ * geometric normals g, into nv where they normalise (nv keeps g
+ * elsewhere), each lane the scalar operations in their order. */
+SURFACE_INLINE void lanes_shading_normal(const double *mt, const __m256 no[3], const __m256 g[3],
+                                         __m256 nv[3])
+{
+    const __m256 sign = _mm256_set1_ps(-0.0f);
+    __m256 nw[3];
+    if (lanes_identity3(mt)) {
+        /* transform_normal by the identity (the instance not turned or
+         * scaled: every BART kitchen instance) in float: each product is
+         * a component times 1 or 0, exact in float as in double, and each
+         * sum adds a signed zero (or, where a component is infinite or
+         * NaN, gives NaN), exact too with the same sign rules, so the
+         * double sum is a float and its conversion changes nothing: the
+         * same floats in the same order, or a non-finite value in the
+         * same component (the normal then fails the length test below
+         * either way, which all that follows reads). */
+        const __m256 one = _mm256_set1_ps(1.0f), zero = _mm256_setzero_ps();
+        for (int r = 0; r < 3; r++)
+            nw[r] = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(no[0], r == 0 ? one : zero),
+                                                _mm256_mul_ps(no[1], r == 1 ? one : zero)),
+                                  _mm256_mul_ps(no[2], r == 2 ? one : zero));
+    } else
+        lanes_transform_normal(mt, no, nw);
     /* vec3_normalize: a length that is positive and finite (not
      * above FLT_MAX; NaN fails both) scales by 1 / len, else the
      * geometric normal stays. */
