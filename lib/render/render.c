@@ -592,10 +592,12 @@ static inline void store_points4(float *out, __m128 x, __m128 y, __m128 z)
 
 /* ray_pair of the four pixels at points i to i + 3 of row a in the four
  * lanes, lane 0 the leftmost: each lane primary_ray's operations in its
- * order.  Returns the mask of the lanes whose length is positive and
- * finite. */
+ * order.  The directions and cones also by component into rays (the
+ * eye light's lanes read them so; the same floats).  Returns the mask
+ * of the lanes whose length is positive and finite. */
 static inline int ray_quad(const struct unproject_row *a, const struct unproject_row *b, int i,
-                           struct trace_packet *pk, int first, struct shade_cone cone[])
+                           struct trace_packet *pk, int first, struct shade_cone cone[],
+                           struct shade_eye_rays *rays)
 {
     __m256d p[3], d[3];
     for (int k = 0; k < 3; k++) {
@@ -611,10 +613,13 @@ static inline int ray_quad(const struct unproject_row *a, const struct unproject
         _mm256_and_pd(_mm256_cmp_pd(len, _mm256_setzero_pd(), _CMP_GT_OQ),
                       _mm256_cmp_pd(len, _mm256_set1_pd(INFINITY), _CMP_LT_OQ)));
     _mm_storeu_ps(&pk->tmax[first], _mm256_cvtpd_ps(len));
-    for (int k = 0; k < 3; k++)
+    __m128 dir_f[3];
+    for (int k = 0; k < 3; k++) {
         d[k] = _mm256_div_pd(d[k], len);
-    store_points4(&pk->dir[first][0], _mm256_cvtpd_ps(d[0]), _mm256_cvtpd_ps(d[1]),
-                  _mm256_cvtpd_ps(d[2]));
+        dir_f[k] = _mm256_cvtpd_ps(d[k]);
+        _mm_storeu_ps(&rays->dir[k][first], dir_f[k]);
+    }
+    store_points4(&pk->dir[first][0], dir_f[0], dir_f[1], dir_f[2]);
     __m256d dist[4];
     for (int h = 0; h < 4; h++) {
         const struct unproject_row *q = h % 2 ? b : a;
@@ -632,10 +637,24 @@ static inline int ray_quad(const struct unproject_row *a, const struct unproject
                                          _mm256_max_pd(_mm256_sub_pd(dist[2], dist[0]), zero));
     const __m256d spread = _mm256_div_pd(growth, len);
     const __m128 w = _mm256_cvtpd_ps(width), sp = _mm256_cvtpd_ps(spread);
+    _mm_storeu_ps(&rays->width[first], w);
+    _mm_storeu_ps(&rays->spread[first], sp);
     _mm_storeu_ps((float *)&cone[first], _mm_unpacklo_ps(w, sp));
     _mm_storeu_ps((float *)&cone[first + 2], _mm_unpackhi_ps(w, sp));
     return ok;
 }
+#endif
+
+/* What block_rays writes beside the packet: the rays by component
+ * where the AVX2 copy's eye light reads them (shade.h), else nothing. */
+#if RENDER_QUADS
+struct block_lanes {
+    struct shade_eye_rays rays;
+};
+#else
+struct block_lanes {
+    char unused;
+};
 #endif
 
 /* The rays of the 4 x 2 block whose first pixel is point i of the
@@ -644,16 +663,17 @@ static inline int ray_quad(const struct unproject_row *a, const struct unproject
  * primary_ray's common path (the packet then holds some rays of this
  * block, some not, and its mask is not set). */
 static inline int block_rays(const struct unproject_cache *c, int i, struct trace_packet *pk,
-                             struct shade_cone cone[])
+                             struct shade_cone cone[], struct block_lanes *lanes)
 {
 #if RENDER_QUADS
     /* A block row a quad. */
-    const int ok = ray_quad(c->rows[0], c->rows[1], i, pk, 0, cone) &
-                   ray_quad(c->rows[1], c->rows[2], i, pk, 4, cone);
+    const int ok = ray_quad(c->rows[0], c->rows[1], i, pk, 0, cone, &lanes->rays) &
+                   ray_quad(c->rows[1], c->rows[2], i, pk, 4, cone, &lanes->rays);
     for (int k = 0; k < TRACE_PACKET; k += 4)
         _mm_storeu_ps(&pk->tmin[k], _mm_setzero_ps());
     return ok == 15;
 #else
+    (void)lanes;
     /* Written out pair by pair: constant offsets into the packet. */
     const int ok = ray_pair(c->rows[0], c->rows[1], i, pk, 0, cone) &
                    ray_pair(c->rows[0], c->rows[1], i + 2, pk, 2, cone) &
@@ -917,6 +937,9 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
     struct trace_packet pk;
     struct shade_cone cone[TRACE_PACKET];
     struct trace_scene_hit hits[TRACE_PACKET];
+#if RENDER_PAIRS
+    struct block_lanes by_lane;
+#endif
     /* A whole block's eye-light hits, every ray made and every one a hit
      * (eye_block's common case): its rays' directions and hits are the
      * same arrays for every block of the tile. */
@@ -953,7 +976,7 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
             int whole = 0; /* every pixel of the block inside and its ray made */
 #if RENDER_PAIRS
             if (lanes && bx + RENDER_BLOCK_W <= x0 + RENDER_TILE_SIZE &&
-                bx + RENDER_BLOCK_W <= vp[2] && block_rays(&cache, bx - x0, &pk, cone)) {
+                bx + RENDER_BLOCK_W <= vp[2] && block_rays(&cache, bx - x0, &pk, cone, &by_lane)) {
                 pk.active = (1u << TRACE_PACKET) - 1u;
                 whole = 1;
             }
@@ -989,7 +1012,7 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
 #if defined(RENDER_UNIT_AVX2)
                     /* This block's prefetches, then the last block's texels. */
                     const int begun = shade_eye_block_begin_avx2(
-                        sc, block_dirs, block_hits, cone, px, &pending[pending_slot]);
+                        sc, block_dirs, &by_lane.rays, block_hits, px, &pending[pending_slot]);
                     if (pending_full)
                         shade_eye_block_end_avx2(sc, &pending[pending_slot ^ 1]);
                     pending_full = begun;

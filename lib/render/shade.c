@@ -641,28 +641,20 @@ void shade_prime_shadows(const struct shade_context *sc, unsigned found,
 }
 
 #if SHADE_LANES && defined(__AVX__)
-/* A block's TRACE_PACKET hits' cone widths and unit directions (eye_hits'
- * first loop) in eight float lanes, lane i hit i, each lane the scalar
- * operations in their order: the same floats.  unit[k][i] is component k
- * of hit i's, lane_d[k][i] that of its direction as given (for
- * surface_fetch_lanes).  Inlined: called by eye_hits and
- * shade_eye_block_begin, GCC kept it out of line, its arrays then passed
- * through memory (16 M instructions a kitchen frame). */
+/* eye_widths8 (below) from the directions and cones by component
+ * (lane_d[k][i], lane_w[i], lane_s[i]), as shade_eye_block_begin has
+ * them from the ray maker. */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline void eye_widths8(const float *const dir[], const struct trace_scene_hit *const hits[],
-                        const struct shade_cone cone[], float width[],
-                        float unit[3][TRACE_PACKET], float lane_d[3][TRACE_PACKET])
+static inline void eye_widths8_lanes(const float lane_d[3][TRACE_PACKET], const float lane_w[],
+                                     const float lane_s[],
+                                     const struct trace_scene_hit *const hits[], float width[],
+                                     float unit[3][TRACE_PACKET])
 {
-    float lane_t[TRACE_PACKET], lane_w[TRACE_PACKET], lane_s[TRACE_PACKET];
-    for (int i = 0; i < TRACE_PACKET; i++) {
-        for (int k = 0; k < 3; k++)
-            lane_d[k][i] = dir[i][k];
+    float lane_t[TRACE_PACKET];
+    for (int i = 0; i < TRACE_PACKET; i++)
         lane_t[i] = hits[i]->t;
-        lane_w[i] = cone[i].width;
-        lane_s[i] = cone[i].spread;
-    }
     __m256 d[3];
     for (int k = 0; k < 3; k++)
         d[k] = _mm256_loadu_ps(lane_d[k]);
@@ -678,6 +670,30 @@ static inline void eye_widths8(const float *const dir[], const struct trace_scen
     const __m256 inv = _mm256_div_ps(_mm256_set1_ps(1.0f), len);
     for (int k = 0; k < 3; k++)
         _mm256_storeu_ps(unit[k], _mm256_blendv_ps(d[k], _mm256_mul_ps(d[k], inv), ok));
+}
+
+/* A block's TRACE_PACKET hits' cone widths and unit directions (eye_hits'
+ * first loop) in eight float lanes, lane i hit i, each lane the scalar
+ * operations in their order: the same floats.  unit[k][i] is component k
+ * of hit i's, lane_d[k][i] that of its direction as given (for
+ * surface_fetch_lanes).  Inlined (with eye_widths8_lanes): GCC kept
+ * it out of line when it had two callers, its arrays then passed
+ * through memory (16 M instructions a kitchen frame). */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void eye_widths8(const float *const dir[], const struct trace_scene_hit *const hits[],
+                        const struct shade_cone cone[], float width[],
+                        float unit[3][TRACE_PACKET], float lane_d[3][TRACE_PACKET])
+{
+    float lane_w[TRACE_PACKET], lane_s[TRACE_PACKET];
+    for (int i = 0; i < TRACE_PACKET; i++) {
+        for (int k = 0; k < 3; k++)
+            lane_d[k][i] = dir[i][k];
+        lane_w[i] = cone[i].width;
+        lane_s[i] = cone[i].spread;
+    }
+    eye_widths8_lanes(lane_d, lane_w, lane_s, hits, width, unit);
 }
 
 /* |e[i].n . unit_i| of the TRACE_PACKET hits in eight float lanes. */
@@ -768,13 +784,13 @@ static void eye_block_hits(const struct shade_context *sc, const float *const di
 
 #if defined(SHADE_UNIT_AVX2)
 int shade_eye_block_begin(const struct shade_context *sc, const float *const dir[],
-                          const struct trace_scene_hit *const hits[],
-                          const struct shade_cone cone[], float *const rgba[],
+                          const struct shade_eye_rays *rays,
+                          const struct trace_scene_hit *const hits[], float *const rgba[],
                           struct shade_eye_pending *pending)
 {
-    float width[TRACE_PACKET], lane_d[3][TRACE_PACKET];
-    eye_widths8(dir, hits, cone, width, pending->unit, lane_d);
-    const int got = surface_fetch_lanes(sc, hits, lane_d, width, &pending->lanes,
+    float width[TRACE_PACKET];
+    eye_widths8_lanes(rays->dir, rays->width, rays->spread, hits, width, pending->unit);
+    const int got = surface_fetch_lanes(sc, hits, rays->dir, width, &pending->lanes,
                                         &pending->lookup);
     if (!got) {
         eye_block_hits(sc, dir, hits, width, pending->unit, rgba);

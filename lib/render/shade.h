@@ -156,14 +156,24 @@ shade_eye_hits_fn shade_eye_hits_avx2_unit(void);
  * block the lanes or the sampler do not take).  shade_eye_block_end then
  * loads and blends the texels and writes the pixels.  Between the two
  * the caller does other work (the next block's rays), which the core
- * runs while the texels come into the cache.  The same operations on the
+ * runs while the texels come into the cache.  The rays come by
+ * component (rays), dir[i] for a block the lanes do not take.  The same operations on the
  * same values as shade_eye_hits, so the same colours bit for bit; pixels
  * do not depend on the order they are written in.
  */
 struct shade_eye_pending;
+/* The block's rays as the lanes read them, written by the ray maker
+ * beside its packet (render.c, ray_quad): dir[k][i] component k of ray
+ * i's direction, width[i] and spread[i] its cone's; the same floats as
+ * the packet's dir[i] and cone[i]. */
+struct shade_eye_rays {
+    float dir[3][TRACE_PACKET];
+    float width[TRACE_PACKET];
+    float spread[TRACE_PACKET];
+};
 int shade_eye_block_begin_avx2(const struct shade_context *sc, const float *const dir[],
-                               const struct trace_scene_hit *const hits[],
-                               const struct shade_cone cone[], float *const rgba[],
+                               const struct shade_eye_rays *rays,
+                               const struct trace_scene_hit *const hits[], float *const rgba[],
                                struct shade_eye_pending *pending);
 void shade_eye_block_end_avx2(const struct shade_context *sc, struct shade_eye_pending *pending);
 #endif

@@ -740,7 +740,8 @@ static inline void bilinear8(const struct scene_texture *tex, __m256i level, con
 
 /* What scene_texture_sample_lod8 decides before its loads: the reduced
  * coordinates (rs, rt), each lane's fine and coarse level, the blend
- * weight f and the mask `two` of the lanes that blend two levels.  Returns 0 where sample_lod8 does not take the block. */
+ * weight f and the mask `two` of the lanes that blend two levels.
+ * Returns 0 where sample_lod8 does not take the block. */
 struct lod8_plan {
     __m256d rs[2], rt[2];
     __m256i fine, coarse;
