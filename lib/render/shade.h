@@ -157,9 +157,10 @@ shade_eye_hits_fn shade_eye_hits_avx2_unit(void);
  * loads and blends the texels and writes the pixels.  Between the two
  * the caller does other work (the next block's rays), which the core
  * runs while the texels come into the cache.  The rays come by
- * component (rays), dir[i] for a block the lanes do not take.  The same operations on the
- * same values as shade_eye_hits, so the same colours bit for bit; pixels
- * do not depend on the order they are written in.
+ * component (rays), and as dir[i] for a block the lanes do not take.
+ * The same operations on the same values as shade_eye_hits, so the same
+ * colours bit for bit; pixels do not depend on the order they are
+ * written in.
  */
 struct shade_eye_pending;
 /* The block's rays as the lanes read them, written by the ray maker
