@@ -77,15 +77,6 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
      * the small layouts' copy has no test of it at its pushes and pops.
      * The any-hit walks read the layout's flag as before. */
     const int prefetch_top = any_hit ? wide->prefetch_top != 0 : leave_early;
-    /* The closest-hit walk's stack entries from pf_low up to the top have
-     * had their lines prefetched, at their push (the new top of a push)
-     * or at a pop (below); the entries a push leaves under its new top
-     * (a node with three or more hit children) have not.  A push of one
-     * entry keeps the mark (the entries under it are as they were), a
-     * push of more sets it to the new top; sp - 1 < pf_low at a pop
-     * (unsigned: an empty stack never passes) is then "the new top has
-     * not been prefetched". */
-    uint32_t pf_low = 0;
     /* After a closest-hit pop, the entry now on top of the stack is the
      * one that comes after the popped subtree: its lines prefetched here
      * (as a push prefetches its new top), so that an entry pushed below
@@ -95,8 +86,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
      * measurement: the push's node prefetch cost their shadow rays). */
 #define WIDE8_PREFETCH_NEXT_TOP()                                                                 \
     do {                                                                                          \
-        if (!any_hit && prefetch_top && sp - 1u < pf_low) {                                       \
-            pf_low = sp - 1u;                                                                     \
+        if (!any_hit && prefetch_top && sp) {                                                     \
             const uint32_t next = st_child[sp - 1];                                               \
             const char *a = st_count[sp - 1] ? (const char *)&packets[next]                       \
                                              : (const char *)&nodes[next];                        \
@@ -226,13 +216,9 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                         if (any_hit)
                             wide8_push_stored(n, mask, t0, st_child, st_count, &sp, &cur,
                                               &cur_count);
-                        else {
-                            const uint32_t below = sp;
+                        else
                             wide8_push(n, octant, hit, t0, order_shift, st_child, st_count, st_t,
                                        &sp, &cur, &cur_count);
-                            if (prefetch_top && (sp - below > 1u || pf_low > sp - 1u))
-                                pf_low = sp - 1u;
-                        }
                         if (prefetch_top) {
                             /* The new stack top, whose subtree comes after
                              * cur's: prefetched now (its bounds, or the
