@@ -70,8 +70,13 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
     uint64_t tri_tests = 0;
     int r4_ready = 0;
     /* Per layout: only a layout beyond the caches pays for the stack
-     * top's prefetch (bvh4_layout.h). */
-    const int prefetch_top = wide->prefetch_top != 0;
+     * top's prefetch (bvh4_layout.h).  A closest-hit walk takes it from
+     * its copy: every caller picks the copy with leave_early exactly
+     * when the layout has prefetch_top (walk_wide, walk_wide_single,
+     * walk_wide_single1, TRACE_WIDE_WALK1, TRACE_WIDE_WALK1_COUNTED), so
+     * the small layouts' copy has no test of it at its pushes and pops.
+     * The any-hit walks read the layout's flag as before. */
+    const int prefetch_top = any_hit ? wide->prefetch_top != 0 : leave_early;
     /* After a closest-hit pop, the entry now on top of the stack is the
      * one that comes after the popped subtree: its lines prefetched here
      * (as a push prefetches its new top), so that an entry pushed below
