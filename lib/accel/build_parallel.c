@@ -219,12 +219,6 @@ struct pbuild {
     /* With a spare asked for (accel_build_parallel_triangles) and a large
      * build: refs[1]'s mapping (build_spare_refs), for the caller. */
     struct rt_large_block scratch;
-    /* With that mapping: the subtrees' nodes, packed one after the other
-     * past refs[1] in it (build_subtree), store_used of store_cap taken
-     * (atomic).  NULL: each thread's arena keeps them. */
-    struct bvh_node *store;
-    uint64_t store_cap;
-    uint64_t store_used;
 
     /* Top nodes of stage 1: count 0 = inner (first = child pair), count
      * 1 = the root slot of a subtree. */
@@ -1191,46 +1185,6 @@ static void build_median_subtree(struct pbuild *b, struct subtree *s, struct bvh
  * build.
  */
 
-/*
- * A subtree's nodes, built in its thread's scratch (the arena, whose
- * 2 subtree_max nodes stay in that thread's caches from one subtree to
- * the next), copied to the next free nodes of the store, rounded up to
- * 64 bytes.  Why: the arenas were the build's only fresh pages besides
- * the two ref buffers (rtbench's bumpy on two threads, huge pages off:
- * 4,312 faults of 4 KB in stage 2, the rest of the arenas' 35 MB warm
- * from the heap), and the wide layout past refs[1]'s 32 MB was fresh
- * too (8,299 faults under the collapse's writes).  Packed in the mapping
- * right after refs[1], the subtrees' 35 MB are the pages the layout
- * (66 MB from the mapping's start) takes next, so the layout's pages
- * have all been touched by the build, and what the build touches fresh
- * is the store's, about what the arenas' touched.  In this virtual
- * machine a fresh page is not only the kernel's zeroing: the host gives
- * back freed guest memory (free page reporting) and faults it in again
- * at its next use, and the system time of the same 17 huge-page faults
- * of the layout's writes measured 0-95 ms from build to build.  The
- * copy is 35 MB from the cache.  The store holds every subtree: a subtree
- * of m refs keeps at most 2m - 1 nodes, 2m rounded, and the subtrees
- * share out the n refs, so 2n nodes (the mapping's 96 MB less refs[1]'s
- * 32 MB); if it ever ran out, the subtree takes a block of its own.
- * Where the nodes sit changes nothing in the tree: stage 3 copies them
- * into the final array in subtree order.
- */
-static int store_nodes(struct pbuild *b, struct subtree *s)
-{
-    const uint64_t keep = ((uint64_t)s->node_count + 1) & ~(uint64_t)1;
-    const uint64_t at = rt_atomic_fetch_add_relaxed(&b->store_used, keep);
-    struct bvh_node *dst = NULL;
-    if (at <= b->store_cap && keep <= b->store_cap - at)
-        dst = b->store + at;
-    else if (!(dst = rt_realloc_array(NULL, s->node_count, sizeof(*dst))))
-        return -1;
-    else
-        s->block = dst;
-    memcpy(dst, s->nodes, (size_t)s->node_count * sizeof(*dst));
-    s->nodes = dst;
-    return 0;
-}
-
 /* Nodes per arena (struct node_arena): twice a thread's even share of
  * the refs, plus two of the largest subtrees for the unevenness of the
  * hand-out; a subtree that does not fit takes a block of its own. */
@@ -1264,8 +1218,7 @@ static int build_subtree(struct pbuild *b, struct subtree *s, struct node_arena 
     const size_t need = 2 * (size_t)m - 1;
     if (arena && !arena->tried) {
         arena->tried = 1;
-        /* With a store, the arena is one subtree's scratch (store_nodes). */
-        arena->cap = b->store ? 2 * (size_t)b->subtree_max : arena_cap(b);
+        arena->cap = arena_cap(b);
         arena->nodes = rt_alloc_array64(arena->cap, sizeof(*arena->nodes), &arena->block);
     }
     struct bvh_node *range = NULL;
@@ -1286,11 +1239,8 @@ static int build_subtree(struct pbuild *b, struct subtree *s, struct node_arena 
         return rc;
     if (arena) {
         /* A sweep subtree's nodes are its own arrays: nothing kept. */
-        if (s->nodes == range) {
-            if (b->store)
-                return store_nodes(b, s);
+        if (s->nodes == range)
             arena->used += ((size_t)s->node_count + 1) & ~(size_t)1;
-        }
         return 0;
     }
     if (s->nodes == range && s->node_count < need) {
@@ -1762,17 +1712,8 @@ static int build_parallel(struct bvh *out, const struct aabb *prim_boxes, const 
      * if the mapping fails, the usual block. */
     if (spare)
         b.refs[1] = build_spare_refs((ref_bytes + 63) & ~(uint64_t)63, &b.scratch);
-    if (b.refs[1]) {
-        /* The subtrees' nodes past refs[1] (store_nodes). */
-        char *end = (char *)b.scratch.base + b.scratch.bytes;
-        char *store = (char *)b.refs[1] + ((ref_bytes + 63) & ~(uint64_t)63);
-        if (store < end) {
-            b.store = (struct bvh_node *)(void *)store;
-            b.store_cap = (uint64_t)(end - store) / sizeof(struct bvh_node);
-        }
-    } else {
+    if (!b.refs[1])
         b.refs[1] = rt_alloc_array64(prim_count, sizeof(struct build_ref), &b.refs_block[1]);
-    }
     plan_flat_chunks(&b, prim_count);
     b.chunk_box = rt_realloc_array(NULL, 2 * (size_t)b.chunk_count, sizeof(*b.chunk_box));
     b.top = reserve(NULL, &b.top_cap, 1, sizeof(*b.top));
