@@ -68,12 +68,30 @@ static long minor_faults(void)
     return getrusage(RUSAGE_SELF, &ru) == 0 ? ru.ru_minflt : 0;
 }
 
+/* System CPU ms of the whole process so far (getrusage ru_stime, every
+ * thread).  A build's difference is mostly its page faults: the zeroing
+ * of fresh pages, and on a virtual machine whose host takes freed guest
+ * memory back (free page reporting) the host's faulting it in again,
+ * which the guest sees as a slow first write.  Measured on the
+ * development machine (a VM with free page reporting): the same 17
+ * huge-page faults of bumpy's layout writes took 0 to 95 ms of system
+ * time from one build to the next, which no user-space change can see
+ * in its instruction counts; this column separates that cost from the
+ * builder's own. */
+static double system_ms(void)
+{
+    struct rusage ru;
+    if (getrusage(RUSAGE_SELF, &ru) != 0)
+        return 0.0;
+    return (double)ru.ru_stime.tv_sec * 1e3 + (double)ru.ru_stime.tv_usec * 1e-3;
+}
+
 /* A committed scene over the mesh; *commit_ms gets rtcCommitScene's time
  * on bench_clock_ms(threads), `threads` being the device's.  NULL on
  * failure. */
 static RTCScene embree_scene(RTCDevice device, const struct bench_mesh *mesh,
                              enum RTCBuildQuality quality, int threads, double *commit_ms,
-                             long *commit_faults)
+                             long *commit_faults, double *commit_sys_ms)
 {
     RTCScene scene = rtcNewScene(device);
     RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
@@ -99,11 +117,14 @@ static RTCScene embree_scene(RTCDevice device, const struct bench_mesh *mesh,
     double cpu_start = bench_cpu_ms();
     double start = rt_now_ms();
     long faults_start = minor_faults();
+    double sys_start = system_ms();
     double clock_start = bench_clock_ms(threads);
     rtcCommitScene(scene);
     *commit_ms = bench_clock_ms(threads) - clock_start;
     if (commit_faults)
         *commit_faults = minor_faults() - faults_start;
+    if (commit_sys_ms)
+        *commit_sys_ms = system_ms() - sys_start;
     bench_share_add(threads, rt_now_ms() - start, bench_cpu_ms() - cpu_start);
     if (rtcGetDeviceError(device) != RTC_ERROR_NONE)
         goto fail;
@@ -165,11 +186,12 @@ static const char *const build_quality_names[BUILD_QUALITIES] = {"LOW", "MEDIUM"
 static const char *const build_quality_keys[BUILD_QUALITIES] = {"low", "medium", "high"};
 
 /* One row of the build table's page-fault table: the medians of each
- * path's minor faults per build (-1: path not run). */
+ * path's minor faults and system ms per build (-1: path not run). */
 struct build_faults {
     const char *mesh;
     int threads;
     double faults[1 + BUILD_QUALITIES];
+    double sys_ms[1 + BUILD_QUALITIES];
 };
 
 /* Build times on `threads` threads: ours (serial binned SAH on one
@@ -185,12 +207,15 @@ static int embree_build_row(const struct bench_options *opts, RTCDevice device, 
 {
     row_faults->mesh = mesh->name;
     row_faults->threads = threads;
-    for (int i = 0; i < 1 + BUILD_QUALITIES; i++)
+    for (int i = 0; i < 1 + BUILD_QUALITIES; i++) {
         row_faults->faults[i] = -1.0;
-    double *times = calloc((size_t)2 * (1 + BUILD_QUALITIES) * opts->runs, sizeof(*times));
+        row_faults->sys_ms[i] = -1.0;
+    }
+    double *times = calloc((size_t)3 * (1 + BUILD_QUALITIES) * opts->runs, sizeof(*times));
     if (!times)
         return -1;
     double *fault_runs = times + (size_t)(1 + BUILD_QUALITIES) * opts->runs;
+    double *sys_runs = fault_runs + (size_t)(1 + BUILD_QUALITIES) * opts->runs;
     int run_path[1 + BUILD_QUALITIES];
     for (int p = 0; p < 1 + BUILD_QUALITIES; p++)
         run_path[p] = !opts->only ||
@@ -201,10 +226,12 @@ static int embree_build_row(const struct bench_options *opts, RTCDevice device, 
             double cpu_start = bench_cpu_ms();
             double start = rt_now_ms();
             long faults_start = minor_faults();
+            double sys_start = system_ms();
             double clock_start = bench_clock_ms(threads);
             int rc = bench_accel_build_pool(&acc, mesh, NULL, threads > 1 ? pool : NULL);
             times[run] = bench_clock_ms(threads) - clock_start;
             fault_runs[run] = (double)(minor_faults() - faults_start);
+            sys_runs[run] = system_ms() - sys_start;
             bench_share_add(threads, rt_now_ms() - start, bench_cpu_ms() - cpu_start);
             if (rc) {
                 free(times);
@@ -217,8 +244,9 @@ static int embree_build_row(const struct bench_options *opts, RTCDevice device, 
             if (!run_path[1 + q])
                 continue;
             long faults = 0;
+            double sys = 0.0;
             RTCScene scene =
-                embree_scene(device, mesh, build_qualities[q], threads, &ms, &faults);
+                embree_scene(device, mesh, build_qualities[q], threads, &ms, &faults, &sys);
             if (!scene) {
                 free(times);
                 return -1;
@@ -226,6 +254,7 @@ static int embree_build_row(const struct bench_options *opts, RTCDevice device, 
             rtcReleaseScene(scene);
             times[(1 + q) * opts->runs + run] = ms;
             fault_runs[(1 + q) * opts->runs + run] = (double)faults;
+            sys_runs[(1 + q) * opts->runs + run] = sys;
         }
     }
     double med[1 + BUILD_QUALITIES];
@@ -234,6 +263,8 @@ static int embree_build_row(const struct bench_options *opts, RTCDevice device, 
     for (int i = 0; i < 1 + BUILD_QUALITIES; i++) {
         row_faults->faults[i] =
             run_path[i] ? bench_median(&fault_runs[i * opts->runs], opts->runs) : -1.0;
+        row_faults->sys_ms[i] =
+            run_path[i] ? bench_median(&sys_runs[i * opts->runs], opts->runs) : -1.0;
         med[i] = run_path[i] ? bench_median(&times[i * opts->runs], opts->runs) : 0.0;
         snprintf(cell[i], sizeof(cell[i]), run_path[i] ? "%.2f" : "-", med[i]);
     }
@@ -408,7 +439,7 @@ static int embree_trace_mesh(const struct bench_options *opts, RTCDevice device,
         goto out;
     for (int q = 0; q < QUALITIES; q++) {
         double ms;
-        if (!(scenes[q] = embree_scene(device, mesh, qualities[q], 1, &ms, NULL)))
+        if (!(scenes[q] = embree_scene(device, mesh, qualities[q], 1, &ms, NULL, NULL)))
             goto out;
     }
     uint32_t max_rays = sets[0].count > sets[1].count ? sets[0].count : sets[1].count;
@@ -527,7 +558,7 @@ static int embree_memory_row(RTCDevice device, int64_t *counter, const struct be
     for (int q = 0; q < QUALITIES; q++) {
         double ms;
         int64_t before = *counter;
-        RTCScene scene = embree_scene(device, mesh, qualities[q], 1, &ms, NULL);
+        RTCScene scene = embree_scene(device, mesh, qualities[q], 1, &ms, NULL, NULL);
         if (!scene)
             return -1;
         int64_t buffers = (int64_t)mesh->vertex_count * 12 + (int64_t)mesh->tri_count * 12;
@@ -632,13 +663,20 @@ int bench_embree_section(const struct bench_options *opts, struct bench_mesh *me
                   "is a page the build touched for the first time and the kernel zeroed, 4 KB, "
                   "or 2 MB where it gave a transparent huge page (run rtbench with huge pages "
                   "disabled, prctl PR_SET_THP_DISABLE, to read faults x 4 KB as fresh "
-                  "bytes).\n\n");
+                  "bytes). In parentheses: the median system CPU ms per build (getrusage "
+                  "ru_stime, every thread), mostly those faults; on a virtual machine whose "
+                  "host takes back freed memory it moves from build to build with the host's "
+                  "load, not with the builder.\n\n");
     report_table_header("mesh|threads|ours|Embree LOW|Embree MEDIUM|Embree HIGH");
     for (int r = 0; r < fault_rows; r++) {
-        char cell[1 + BUILD_QUALITIES][24];
-        for (int i = 0; i < 1 + BUILD_QUALITIES; i++)
-            snprintf(cell[i], sizeof(cell[i]), faults[r].faults[i] >= 0 ? "%.0f" : "-",
-                     faults[r].faults[i]);
+        char cell[1 + BUILD_QUALITIES][48];
+        for (int i = 0; i < 1 + BUILD_QUALITIES; i++) {
+            if (faults[r].faults[i] >= 0)
+                snprintf(cell[i], sizeof(cell[i]), "%.0f (%.1f)", faults[r].faults[i],
+                         faults[r].sys_ms[i]);
+            else
+                snprintf(cell[i], sizeof(cell[i]), "-");
+        }
         report_row("%s|%d|%s|%s|%s|%s", faults[r].mesh, faults[r].threads, cell[0], cell[1],
                    cell[2], cell[3]);
     }
@@ -763,7 +801,7 @@ void *bench_embree_packets_new(const struct bench_mesh *mesh)
         return NULL;
     }
     rtcSetDeviceErrorFunction(e->device, bench_embree_error, NULL);
-    e->scene = embree_scene(e->device, mesh, RTC_BUILD_QUALITY_MEDIUM, 1, &ms, NULL);
+    e->scene = embree_scene(e->device, mesh, RTC_BUILD_QUALITY_MEDIUM, 1, &ms, NULL, NULL);
     if (!e->scene) {
         rtcReleaseDevice(e->device);
         free(e);

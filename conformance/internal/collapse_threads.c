@@ -353,6 +353,58 @@ static void check_spare(const struct tg_mesh *m, struct rt_pool **pools)
     }
 }
 
+/*
+ * The item pool's retry (collapse4.c, COLLAPSE_POOL_FIRST_BYTES): a mesh
+ * this large gathers its items first in a pool smaller than the worst
+ * case, and when that pass fails (the pool runs out, or here an item's
+ * own allocation fails on purpose) gathers every item again in the worst
+ * case's pool.  The layout must be the one the collapse makes without a
+ * failure, and a failure that is not retried must leave no layout.
+ */
+static void check_pool_retry(const struct tg_mesh *m, struct rt_pool *pool)
+{
+    struct bvh b;
+    if (accel_build_parallel_triangles(&b, m->pos, m->idx, m->tri_count, NULL, pool, NULL)) {
+        failures += !CHECKF(0, "pool retry: build failed");
+        return;
+    }
+    float *tri = accel_gather_triangles_pool(&b, m->pos, m->idx, pool);
+    struct bvh4 ref;
+    if (!tri || accel_collapse_wide_pool(&ref, &b, tri, 8, pool)) {
+        failures += !CHECKF(0, "pool retry: gather or collapse failed");
+        rt_free(tri);
+        bvh_release(&b);
+        return;
+    }
+    int retried = 0;
+    /* The first few allocations are the collapse's own arrays (a failure
+     * there fails it); the items' follow. */
+    for (long k = 0; k < 12; k++) {
+        struct bvh4 w;
+        rt_alloc_fail_once(k);
+        const int rc = accel_collapse_wide_pool(&w, &b, tri, 8, pool);
+        const long injected = rt_alloc_failures();
+        rt_alloc_fail_reset();
+        if (rc) {
+            failures += !CHECKF(injected > 0 && w.node_count == 0,
+                                "pool retry: failure %ld left a layout", k);
+            continue;
+        }
+        if (injected) {
+            retried++;
+            failures += !CHECKF(same_wide(&w, &ref),
+                                "pool retry: the layout after failure %ld differs", k);
+        }
+        bvh4_release(&w);
+    }
+    printf("  pool retry: %u triangles, %d collapses survived one failed allocation\n",
+           m->tri_count, retried);
+    failures += !CHECKF(retried > 0, "pool retry: no collapse survived a failed allocation");
+    bvh4_release(&ref);
+    rt_free(tri);
+    bvh_release(&b);
+}
+
 int main(void)
 {
     double t0 = rt_now_ms();
@@ -389,6 +441,7 @@ int main(void)
     struct tg_mesh large;
     tg_soup(&large, 540000, 1.0f, 0.005f, &r);
     check_spare(&large, pools);
+    check_pool_retry(&large, pools[2]);
     tg_mesh_free(&large);
     tg_mesh_free(&soup);
     tg_mesh_free(&sphere);

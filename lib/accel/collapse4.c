@@ -1007,6 +1007,30 @@ struct collapse {
  * of nodes already gathered, and at most two chunks an item unused. */
 #define COLLAPSE_ITEM_CHUNK 64u
 
+/*
+ * The item pool's first size, in bytes of scratch nodes: the pool is
+ * sized for the worst case, (node_count - 1) / 2 + 1 wide nodes, about
+ * eight times what a tree uses (rtbench's bumpy, a million triangles:
+ * 75 MB asked, 9.6 MB touched), and a block that large is a fresh
+ * mapping of the C library every build (glibc maps every block above its
+ * mmap threshold, at most 32 MiB), whose pages the kernel zeroes at their
+ * first write: 2,337 faults of 4 KB a bumpy build, and on a virtual
+ * machine whose host takes freed memory back, up to 27 ms of system time
+ * (docs/performance-log.md, round 38, b11).  A pool of at most 24 MiB
+ * comes from the heap instead, where a build's freed arenas
+ * (build_parallel.c, 31.5 MiB each on bumpy) leave warm memory.  So
+ * when the worst case is larger and the tree is small enough that its
+ * wide nodes should fit (at most COLLAPSE_POOL_TRIANGLES triangles a
+ * slot: a wide node over leaves of one triangle each holds eight, so six
+ * leaves a little margin for partly filled nodes), the items are first
+ * gathered in the smaller pool, and only if it runs out, gathered again
+ * in the worst case's.  The pool is scratch: where an item's nodes sit in
+ * it changes neither the numbering (number_items) nor the bytes written
+ * (write_items), so the layout is the same either way.
+ */
+#define COLLAPSE_POOL_FIRST_BYTES ((size_t)24 << 20)
+#define COLLAPSE_POOL_TRIANGLES 6u
+
 /* Scratch nodes [lo, hi)'s lanes from binary inner nodes todo[w] (a
  * level above the cut). */
 static void gather_nodes(void *arg, uint32_t lo, uint32_t hi)
@@ -1369,16 +1393,44 @@ static int collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *t
         /* The items' nodes are at most the cap less the top's; an item
          * of n nodes takes at most n + 2 COLLAPSE_ITEM_CHUNK slots
          * (item_reserve asks for its count plus a node's children). */
-        c.item_cap = (cap - top) + (2 * item_count + 1) * COLLAPSE_ITEM_CHUNK;
-        c.item_nodes = rt_realloc_array(NULL, c.item_cap, sizeof(*c.item_nodes));
-        c.item_todo = rt_realloc_array(NULL, c.item_cap, sizeof(*c.item_todo));
-        if (!c.item_nodes || !c.item_todo)
-            goto fail;
+        const uint32_t worst = (cap - top) + (2 * item_count + 1) * COLLAPSE_ITEM_CHUNK;
+        /* First a pool of at most COLLAPSE_POOL_FIRST_BYTES when the tree
+         * should fit it (COLLAPSE_POOL_FIRST_BYTES' comment). */
+        const uint32_t first =
+            (uint32_t)(COLLAPSE_POOL_FIRST_BYTES / sizeof(struct scratch_node));
+        c.item_cap = worst > first && (uint64_t)first * COLLAPSE_POOL_TRIANGLES >=
+                                          (uint64_t)bvh->prim_count + COLLAPSE_POOL_TRIANGLES
+                         ? first
+                         : worst;
         c.items = items;
-        rt_pool_run_range(pool, 0, item_count, 1, 2, gather_items, &c);
-        for (uint32_t f = 0; f < item_count; f++) {
-            if (items[f].failed)
+        for (;;) {
+            c.item_nodes = rt_realloc_array(NULL, c.item_cap, sizeof(*c.item_nodes));
+            c.item_todo = rt_realloc_array(NULL, c.item_cap, sizeof(*c.item_todo));
+            if (!c.item_nodes || !c.item_todo)
                 goto fail;
+            rt_pool_run_range(pool, 0, item_count, 1, 2, gather_items, &c);
+            int failed = 0;
+            for (uint32_t f = 0; f < item_count; f++)
+                failed |= items[f].failed;
+            if (!failed)
+                break;
+            if (c.item_cap == worst)
+                goto fail;
+            /* The smaller pool ran out (or an item's own arrays could not
+             * grow): every item again, from its root, in the worst case's
+             * pool. */
+            for (uint32_t f = 0; f < item_count; f++) {
+                rt_free(items[f].chunk);
+                rt_free(items[f].level);
+                memset(&items[f], 0, sizeof(items[f]));
+                items[f].root = c.todo[top + f];
+            }
+            rt_free(c.item_nodes);
+            rt_free(c.item_todo);
+            c.item_nodes = NULL;
+            c.item_todo = NULL;
+            item_next = 0;
+            c.item_cap = worst;
         }
         number_items(items, item_count, &count, &packets);
     }
