@@ -40,7 +40,7 @@
  * 2017), with no sort; each pushed child keeps its entry distance, so
  * a subtree behind the closest hit so far is still skipped when popped.
  * An any-hit walk (walk_wide8_ray's, walk_wide4_body's) pushes them in
- * farthest first instead (wide8_push_far says why).
+ * stored order instead (wide8_push_stored says why).
  */
 #include <immintrin.h>
 
@@ -410,8 +410,7 @@ static inline int walk_wide4_body(const struct bvh4 *wide, struct wide_state *s,
                     /* Push the hit children back to front in the
                      * octant's order, then take the front one. */
                     /* An any-hit walk: the stored order, lane 0 first
-                     * (the 4-wide walk was not measured with the
-                     * 8-wide's farthest-first order, wide8_push_far). */
+                     * (wide8_push_stored says why). */
                     const unsigned order = any_hit ? 0xE4u : n->order[octant];
                     /* Every lane is written, a missed one where the
                      * next hit one will overwrite it: no branch on the
@@ -544,7 +543,7 @@ static const uint64_t wide8_compress[256] = {
     0x0000020304050607u, 0x0000020304050607u, 0x0001020304050607u, 0x0001020304050607u,
 };
 
-/* The stack write of wide8_push (and wide8_push_far): the lanes
+/* The stack write of wide8_push and wide8_push_stored: the lanes
  * `gather` picks (children's words, counts and entry distances) into
  * consecutive slots from *sp, all hit lanes but the front one, which the
  * caller continues with. */
@@ -562,7 +561,7 @@ static inline void wide8_store(const struct bvh8_node *n, __m256i gather, __m256
                         _mm256_permutevar8x32_epi32(child, gather));
     _mm256_storeu_si256((__m256i *)(void *)&st_count[*sp],
                         _mm256_permutevar8x32_epi32(count, gather));
-    /* An any-hit walk's pushes pass st_t NULL (wide8_push_far): a
+    /* An any-hit walk's pushes pass st_t NULL (wide8_push_stored): a
      * constant in each inlined copy, so no test is left. */
     if (st_t)
         _mm256_storeu_ps(&st_t[*sp], _mm256_permutevar8x32_ps(t0, gather));
@@ -578,9 +577,9 @@ static inline void wide8_store(const struct bvh8_node *n, __m256i gather, __m256
  * front, one byte each, which gather the children's words and entry
  * distances into consecutive stack slots (the slots beyond them are
  * written too, and overwritten later: the stack has room).  The entry
- * distances are stored here (closest hit, st_t not NULL) and not for
- * wide8_push_far (any hit, whose pops never read them).  Inlined: the
- * walks keep their state in registers around it.
+ * distances are stored here (closest hit) and not by wide8_push_stored
+ * (any hit, whose pops never read them).  Inlined: the walks keep their
+ * state in registers around it.
  */
 #if defined(__GNUC__)
 __attribute__((always_inline))
@@ -608,36 +607,33 @@ static inline void wide8_push(const struct bvh8_node *n, int octant, __m256 hit,
 }
 
 /*
- * wide8_push for an any-hit walk: the hit children farthest first, in the
- * order the node keeps for the opposite octant (octant ^ 7: its children
- * sorted by the projection of their box centres on that octant's
- * diagonal, lib/accel/collapse4.c, which for this ray's octant is back to
- * front, ties aside).  An any-hit walk ends at its first hit and, until
- * then, visits every box its interval reaches whatever the order (its box
- * limit never shrinks), so the order changes only how soon an occluded
- * ray stops, never the answer.  A shadow ray starts on a surface: the
- * child nearest its origin holds the triangle it starts on and that
- * triangle's neighbours, which cannot occlude it (the leaves refuse them
- * on t, at the cost of the whole filter: sr3, performance-log.md), while
- * an occluder lies between the origin and the light, so farther out.
- * Tests per shadow ray (rtbench embree's table), stored order (lowest lane
- * first, SATO, Nah and Manocha 2014 order any-hit children by surface
- * area instead) against this: soup 83.5 / 19.4 node lanes / triangles
- * against 81.9 / 17.6, bumpy 70.3 / 8.8 against 70.0 / 8.4, gears 39.4 /
- * 9.1 against 39.2 / 8.9, the kitchen 41.4 / 7.2 against 40.2 / 7.9;
- * the octant's own order (nearest first) was no better than the stored
- * one anywhere.  No entry distances: an any-hit walk's pops never read
- * them (st_t NULL: the permutation and the store are left out).
+ * wide8_push for an any-hit walk: the hit children in the node's stored
+ * order (lowest lane first), not the octant's.  pm: the hit lanes' mask
+ * as the node test has it (on AVX-512 a mask register's: no round trip
+ * through a vector and a movemask before the next child is known).  An
+ * any-hit walk ends at its first hit and, until then, visits every box
+ * its interval reaches whatever the order (its box limit never shrinks),
+ * so the order changes only how soon an occluded ray stops, never the
+ * answer; nearest-first buys little there (SATO, Nah and Manocha 2014,
+ * orders any-hit children by surface area instead), and the stored order
+ * saves the octant's permutation (about a dozen instructions per push).
  */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline void wide8_push_far(const struct bvh8_node *n, int octant, __m256 hit,
-                                  __m256i order_shift, uint32_t *st_child, uint32_t *st_count,
-                                  uint32_t *sp, uint32_t *cur, uint32_t *cur_count)
+static inline void wide8_push_stored(const struct bvh8_node *n, unsigned pm, __m256 t0,
+                                     uint32_t *st_child, uint32_t *st_count, uint32_t *sp,
+                                     uint32_t *cur, uint32_t *cur_count)
 {
-    wide8_push(n, octant ^ 7, hit, _mm256_setzero_ps(), order_shift, st_child, st_count, NULL,
-               sp, cur, cur_count);
+    const __m256i gather = _mm256_cvtepu8_epi32(
+        _mm_loadl_epi64((const __m128i *)(const void *)&wide8_compress[pm]));
+    /* No entry distances: an any-hit walk's pops never read them (its box
+     * limit never shrinks), so the permutation and the store of the
+     * distances are left out (two instructions a push). */
+    wide8_store(n, gather, t0, pm, st_child, st_count, NULL, sp);
+    const unsigned l = (unsigned)__builtin_ctz(pm);
+    *cur = n->child[l];
+    *cur_count = n->count[l];
 }
 
 #if defined(__GNUC__)
