@@ -116,7 +116,7 @@ static struct leaf_answer packet_leaf(const struct trace_ray *ray, const struct 
          * wide_near_refused): the filter's floats first, then the
          * world-space test. */
         near &= mask;
-        const unsigned sure = tri4_before_tmin_lanes(&r4, p, &lanes, near);
+        const unsigned sure = tri4_before_tmin_lanes(&r4, p, &lanes, near, 0);
         mask &= ~sure;
         mask &= ~tri4_before_tmin(ray, p, near & ~sure);
     }
@@ -317,7 +317,7 @@ static void one_case(struct tg_rng *r, uint64_t *cases, uint64_t *kept_rejected,
         for (unsigned l = 0; l < 4; l++)
             near |= (unsigned)(lanes.t_lo[l] < ray.tmin) << l;
         const unsigned before = tri4_before_tmin(&ray, &p, kept & near);
-        const unsigned before_lanes = tri4_before_tmin_lanes(&r4, &p, &lanes, kept & near);
+        const unsigned before_lanes = tri4_before_tmin_lanes(&r4, &p, &lanes, kept & near, 0);
         for (unsigned l = 0; l < 4; l++) {
             if (!((before | before_lanes) >> l & 1u))
                 continue;
@@ -466,7 +466,7 @@ static void tmin_case(struct tg_rng *r, uint64_t *cases, uint64_t *accepted, uin
     for (unsigned l = 0; l < 4; l++)
         near |= (unsigned)(lanes.t_lo[l] < tmin_f) << l;
     near &= kept;
-    const unsigned sure = tri4_before_tmin_lanes(&r4, &p, &lanes, near);
+    const unsigned sure = tri4_before_tmin_lanes(&r4, &p, &lanes, near, 0);
     for (unsigned l = 0; l < 4; l++) {
         if (!(near >> l & 1u))
             continue;

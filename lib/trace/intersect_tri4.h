@@ -59,6 +59,17 @@ struct tri4_ray {
     __m128 tmin;
     size_t off_x, off_y, off_z; /* kx, ky, kz times sizeof p->v[0][0] */
     int neg_x, neg_y;           /* inv_dir[kx] < 0, inv_dir[ky] < 0 (isect_slab) */
+    /* The same constants as plain floats (`scalar` form), which only the
+     * single-ray any-hit leaves read (the filters with depth_out,
+     * TRI4_CONST): set by tri4_ray_init_scalar, or by the walk from its
+     * set-up's lanes with three 16-byte stores, where the vectors above
+     * cost nine broadcasts and nine stores a ray; the leaves broadcast
+     * them from memory (vbroadcastss), one load each as the vectors'
+     * loads are.  The vectors above are then left unset. */
+    float k_neg_org[4]; /* -org[kx], -org[ky], -org[kz], - */
+    float k_inv[4];     /* inv_dir[kx], inv_dir[ky], sz (= inv_dir[kz]), - */
+    float k_shear[4];   /* sx, sy, -, - */
+    float k_tmin;
 };
 
 static inline void tri4_ray_init(struct tri4_ray *r, const struct trace_ray *ray)
@@ -79,6 +90,41 @@ static inline void tri4_ray_init(struct tri4_ray *r, const struct trace_ray *ray
     r->neg_x = ray->inv_dir[ray->kx] < 0.0f;
     r->neg_y = ray->inv_dir[ray->ky] < 0.0f;
 }
+
+/* tri4_ray_init's constants in the scalar form only (struct tri4_ray's
+ * k_ fields, with off_x.. and neg_x, neg_y), for the single-ray any-hit
+ * leaves: the same floats (-org by C's unary minus, the sign bit, as
+ * _mm_xor_ps with -0 in the walk's form).  Lane 3 of the k_ arrays (and
+ * lane 2 of k_shear) is never read, so not written. */
+static inline void tri4_ray_init_scalar(struct tri4_ray *r, const struct trace_ray *ray)
+{
+    const size_t row = sizeof(((const struct tri4_packet *)NULL)->v[0][0]);
+    r->off_x = (size_t)ray->kx * row;
+    r->off_y = (size_t)ray->ky * row;
+    r->off_z = (size_t)ray->kz * row;
+    r->k_neg_org[0] = -ray->org[ray->kx];
+    r->k_neg_org[1] = -ray->org[ray->ky];
+    r->k_neg_org[2] = -ray->org[ray->kz];
+    r->k_inv[0] = ray->inv_dir[ray->kx];
+    r->k_inv[1] = ray->inv_dir[ray->ky];
+    r->k_inv[2] = ray->sz;
+    r->k_shear[0] = ray->sx;
+    r->k_shear[1] = ray->sy;
+    r->k_tmin = ray->tmin;
+    r->neg_x = ray->inv_dir[ray->kx] < 0.0f;
+    r->neg_y = ray->inv_dir[ray->ky] < 0.0f;
+}
+
+/* One per-ray constant of r as four lanes: the vector field `vec` (the
+ * closest-hit leaves, the packet kernels, the 4-wide walks: tri4_ray_init)
+ * or, with scalar (the single-ray any-hit leaves, whose walks set only the
+ * k_ fields), the float `k` broadcast from memory.  The same float in
+ * every lane either way.  A macro, not an inline function: with scalar 0
+ * it is the field access the filters had, and the closest-hit leaves
+ * compile to the same instructions as before (objdump; through an inline
+ * function taking the field's address GCC allocated their registers
+ * otherwise). */
+#define TRI4_CONST(r, vec, k, scalar) ((scalar) ? _mm_set1_ps((r)->k) : (r)->vec)
 
 /* Row `off` bytes into vertex i's coordinates of p (tri4_ray's off_x..):
  * the four lanes' coordinate on one axis. */
@@ -119,7 +165,7 @@ struct tri4_lanes {
 /* Defined with tri4_before_tmin_lanes below, whose proof it carries. */
 static inline unsigned tri4_before_tmin_vectors(const struct tri4_ray *r, __m128 sc, __m128 U,
                                                 __m128 V, __m128 W, __m128 det, __m128 Az,
-                                                __m128 Bz, __m128 Cz);
+                                                __m128 Bz, __m128 Cz, int scalar);
 
 /*
  * The lanes of p (among `valid`, bit l for lane l) that isect_triangle
@@ -140,25 +186,37 @@ static inline unsigned tri4_filter_lanes_depth(const struct tri4_ray *r,
                                                float t_max, struct tri4_lanes *out, int any_hit,
                                                int early_out, int depth_out)
 {
+    /* depth_out's walks (the single-ray any-hit leaves) set the per-ray
+     * constants' scalar form only (struct tri4_ray's k_ fields). */
+    const int scalar = depth_out;
     /* Unaligned loads: a layout's packets are 32-byte aligned, but a
      * packet elsewhere (a test's, on the stack) need not be; on aligned
      * data they cost what aligned loads do. */
-    const __m128 ax = _mm_add_ps(r->neg_org_x, tri4_row(p, 0, r->off_x));
-    const __m128 ay = _mm_add_ps(r->neg_org_y, tri4_row(p, 0, r->off_y));
-    const __m128 az = _mm_add_ps(r->neg_org_z, tri4_row(p, 0, r->off_z));
-    const __m128 bx = _mm_add_ps(r->neg_org_x, tri4_row(p, 1, r->off_x));
-    const __m128 by = _mm_add_ps(r->neg_org_y, tri4_row(p, 1, r->off_y));
-    const __m128 bz = _mm_add_ps(r->neg_org_z, tri4_row(p, 1, r->off_z));
-    const __m128 cx = _mm_add_ps(r->neg_org_x, tri4_row(p, 2, r->off_x));
-    const __m128 cy = _mm_add_ps(r->neg_org_y, tri4_row(p, 2, r->off_y));
-    const __m128 cz = _mm_add_ps(r->neg_org_z, tri4_row(p, 2, r->off_z));
+    const __m128 ax = _mm_add_ps(TRI4_CONST(r, neg_org_x, k_neg_org[0], scalar),
+                                 tri4_row(p, 0, r->off_x));
+    const __m128 ay = _mm_add_ps(TRI4_CONST(r, neg_org_y, k_neg_org[1], scalar),
+                                 tri4_row(p, 0, r->off_y));
+    const __m128 az = _mm_add_ps(TRI4_CONST(r, neg_org_z, k_neg_org[2], scalar),
+                                 tri4_row(p, 0, r->off_z));
+    const __m128 bx = _mm_add_ps(TRI4_CONST(r, neg_org_x, k_neg_org[0], scalar),
+                                 tri4_row(p, 1, r->off_x));
+    const __m128 by = _mm_add_ps(TRI4_CONST(r, neg_org_y, k_neg_org[1], scalar),
+                                 tri4_row(p, 1, r->off_y));
+    const __m128 bz = _mm_add_ps(TRI4_CONST(r, neg_org_z, k_neg_org[2], scalar),
+                                 tri4_row(p, 1, r->off_z));
+    const __m128 cx = _mm_add_ps(TRI4_CONST(r, neg_org_x, k_neg_org[0], scalar),
+                                 tri4_row(p, 2, r->off_x));
+    const __m128 cy = _mm_add_ps(TRI4_CONST(r, neg_org_y, k_neg_org[1], scalar),
+                                 tri4_row(p, 2, r->off_y));
+    const __m128 cz = _mm_add_ps(TRI4_CONST(r, neg_org_z, k_neg_org[2], scalar),
+                                 tri4_row(p, 2, r->off_z));
 
-    const __m128 Ax = _mm_add_ps(ax, _mm_mul_ps(r->sx, az));
-    const __m128 Ay = _mm_add_ps(ay, _mm_mul_ps(r->sy, az));
-    const __m128 Bx = _mm_add_ps(bx, _mm_mul_ps(r->sx, bz));
-    const __m128 By = _mm_add_ps(by, _mm_mul_ps(r->sy, bz));
-    const __m128 Cx = _mm_add_ps(cx, _mm_mul_ps(r->sx, cz));
-    const __m128 Cy = _mm_add_ps(cy, _mm_mul_ps(r->sy, cz));
+    const __m128 Ax = _mm_add_ps(ax, _mm_mul_ps(TRI4_CONST(r, sx, k_shear[0], scalar), az));
+    const __m128 Ay = _mm_add_ps(ay, _mm_mul_ps(TRI4_CONST(r, sy, k_shear[1], scalar), az));
+    const __m128 Bx = _mm_add_ps(bx, _mm_mul_ps(TRI4_CONST(r, sx, k_shear[0], scalar), bz));
+    const __m128 By = _mm_add_ps(by, _mm_mul_ps(TRI4_CONST(r, sy, k_shear[1], scalar), bz));
+    const __m128 Cx = _mm_add_ps(cx, _mm_mul_ps(TRI4_CONST(r, sx, k_shear[0], scalar), cz));
+    const __m128 Cy = _mm_add_ps(cy, _mm_mul_ps(TRI4_CONST(r, sy, k_shear[1], scalar), cz));
 
     const __m128 U = _mm_sub_ps(_mm_mul_ps(Cx, By), _mm_mul_ps(Cy, Bx));
     const __m128 V = _mm_sub_ps(_mm_mul_ps(Ax, Cy), _mm_mul_ps(Ay, Cx));
@@ -203,9 +261,9 @@ static inline unsigned tri4_filter_lanes_depth(const struct tri4_ray *r,
      * range and the ray's interval through the triangle's box.  They
      * hold for deferred lanes too (the scalar test rejects on them after
      * its double step, and every rejection returns the same 0). */
-    const __m128 Az = _mm_mul_ps(r->sz, az);
-    const __m128 Bz = _mm_mul_ps(r->sz, bz);
-    const __m128 Cz = _mm_mul_ps(r->sz, cz);
+    const __m128 Az = _mm_mul_ps(TRI4_CONST(r, sz, k_inv[2], scalar), az);
+    const __m128 Bz = _mm_mul_ps(TRI4_CONST(r, sz, k_inv[2], scalar), bz);
+    const __m128 Cz = _mm_mul_ps(TRI4_CONST(r, sz, k_inv[2], scalar), cz);
     const __m128 z_lo = _mm_min_ps(Az, _mm_min_ps(Bz, Cz));
     const __m128 z_hi = _mm_max_ps(Az, _mm_max_ps(Bz, Cz));
     const __m128 limit = _mm_set1_ps(t_max);
@@ -221,15 +279,17 @@ static inline unsigned tri4_filter_lanes_depth(const struct tri4_ray *r,
      * kernels' and the 4-wide walks' leaves, whose code stays as it was. */
     if (depth_out &&
         ((unsigned)_mm_movemask_ps(_mm_andnot_ps(
-             mixed, _mm_and_ps(_mm_cmpge_ps(z_hi, r->tmin), _mm_cmplt_ps(z_lo, limit)))) &
+             mixed, _mm_and_ps(_mm_cmpge_ps(z_hi, TRI4_CONST(r, tmin, k_tmin, scalar)),
+                               _mm_cmplt_ps(z_lo, limit)))) &
          valid) == 0)
         return 0;
     __m128 t_lo = z_lo;
     __m128 t_hi = z_hi;
-    tri4_slab(ax, bx, cx, r->inv_x, r->neg_x, &t_lo, &t_hi);
-    tri4_slab(ay, by, cy, r->inv_y, r->neg_y, &t_lo, &t_hi);
+    tri4_slab(ax, bx, cx, TRI4_CONST(r, inv_x, k_inv[0], scalar), r->neg_x, &t_lo, &t_hi);
+    tri4_slab(ay, by, cy, TRI4_CONST(r, inv_y, k_inv[1], scalar), r->neg_y, &t_lo, &t_hi);
     const __m128 geom = _mm_andnot_ps(
-        mixed, _mm_and_ps(_mm_and_ps(_mm_cmpge_ps(z_hi, r->tmin), _mm_cmplt_ps(z_lo, limit)),
+        mixed, _mm_and_ps(_mm_and_ps(_mm_cmpge_ps(z_hi, TRI4_CONST(r, tmin, k_tmin, scalar)),
+                                     _mm_cmplt_ps(z_lo, limit)),
                           _mm_cmplt_ps(t_lo, limit)));
     const unsigned deferred = (unsigned)_mm_movemask_ps(_mm_and_ps(on_edge, geom)) & valid;
 
@@ -256,10 +316,10 @@ static inline unsigned tri4_filter_lanes_depth(const struct tri4_ray *r,
          * the maximum of the nine magnitudes is the same float in any
          * order; with a NaN coordinate det is NaN and check 1 fails
          * whatever S is (tri4_before_tmin_lanes' comment). */
-        const unsigned near = (unsigned)_mm_movemask_ps(_mm_cmplt_ps(t_lo, r->tmin)) & mask;
+        const __m128 tmin = TRI4_CONST(r, tmin, k_tmin, scalar);
+        const unsigned near = (unsigned)_mm_movemask_ps(_mm_cmplt_ps(t_lo, tmin)) & mask;
         if (near) {
-            const unsigned behind =
-                (unsigned)_mm_movemask_ps(_mm_cmplt_ps(t_hi, r->tmin)) & near;
+            const unsigned behind = (unsigned)_mm_movemask_ps(_mm_cmplt_ps(t_hi, tmin)) & near;
             mask &= ~behind;
             if (near & ~behind) {
                 const __m128 sign = _mm_set1_ps(-0.0f);
@@ -273,7 +333,7 @@ static inline unsigned tri4_filter_lanes_depth(const struct tri4_ray *r,
                                                          _mm_andnot_ps(sign, cy)),
                                               _mm_andnot_ps(sign, cz));
                 const __m128 sc = _mm_max_ps(_mm_max_ps(sa, sb), scc);
-                mask &= ~(tri4_before_tmin_vectors(r, sc, U, V, W, det, Az, Bz, Cz) & near &
+                mask &= ~(tri4_before_tmin_vectors(r, sc, U, V, W, det, Az, Bz, Cz, scalar) & near &
                           ~behind);
             }
             if (!mask)
@@ -338,6 +398,10 @@ static inline __m256 tri4_pair_row(const struct tri4_packet *p, int i, size_t of
         _mm_loadu_ps((const float *)(const void *)hi), 1);
 }
 
+/* TRI4_CONST on eight lanes (both packets' halves). */
+#define TRI4_CONST8(r, vec, k, scalar)                                                          \
+    ((scalar) ? _mm256_set1_ps((r)->k) : _mm256_broadcast_ps(&(r)->vec))
+
 /* tri4_slab on the eight lanes of two packets. */
 static inline void tri4_pair_slab(__m256 d0, __m256 d1, __m256 d2, __m256 inv, int neg,
                                   __m256 *t_lo, __m256 *t_hi)
@@ -384,9 +448,11 @@ static inline unsigned tri4_pair_filter_lanes(const struct tri4_ray *r,
                                               float t_max, struct tri4_lanes out[2],
                                               int any_hit, int early_out, int depth_out)
 {
-    const __m256 neg_org_x = _mm256_broadcast_ps(&r->neg_org_x);
-    const __m256 neg_org_y = _mm256_broadcast_ps(&r->neg_org_y);
-    const __m256 neg_org_z = _mm256_broadcast_ps(&r->neg_org_z);
+    /* depth_out's walks set the scalar form only (tri4_filter_lanes_depth). */
+    const int scalar = depth_out;
+    const __m256 neg_org_x = TRI4_CONST8(r, neg_org_x, k_neg_org[0], scalar);
+    const __m256 neg_org_y = TRI4_CONST8(r, neg_org_y, k_neg_org[1], scalar);
+    const __m256 neg_org_z = TRI4_CONST8(r, neg_org_z, k_neg_org[2], scalar);
     const __m256 ax = _mm256_add_ps(neg_org_x, tri4_pair_row(p, 0, r->off_x));
     const __m256 ay = _mm256_add_ps(neg_org_y, tri4_pair_row(p, 0, r->off_y));
     const __m256 az = _mm256_add_ps(neg_org_z, tri4_pair_row(p, 0, r->off_z));
@@ -397,8 +463,8 @@ static inline unsigned tri4_pair_filter_lanes(const struct tri4_ray *r,
     const __m256 cy = _mm256_add_ps(neg_org_y, tri4_pair_row(p, 2, r->off_y));
     const __m256 cz = _mm256_add_ps(neg_org_z, tri4_pair_row(p, 2, r->off_z));
 
-    const __m256 sx = _mm256_broadcast_ps(&r->sx);
-    const __m256 sy = _mm256_broadcast_ps(&r->sy);
+    const __m256 sx = TRI4_CONST8(r, sx, k_shear[0], scalar);
+    const __m256 sy = TRI4_CONST8(r, sy, k_shear[1], scalar);
     struct tri8_sheared sh;
     tri8_shear(ax, ay, az, bx, by, bz, cx, cy, cz, sx, sy, &sh);
 
@@ -416,7 +482,7 @@ static inline unsigned tri4_pair_filter_lanes(const struct tri4_ray *r,
 
     const __m256 on_edge = tri8_on_edge(&sh);
 
-    const __m256 sz = _mm256_broadcast_ps(&r->sz);
+    const __m256 sz = TRI4_CONST8(r, sz, k_inv[2], scalar);
     const __m256 Az = _mm256_mul_ps(sz, az);
     const __m256 Bz = _mm256_mul_ps(sz, bz);
     const __m256 Cz = _mm256_mul_ps(sz, cz);
@@ -427,17 +493,20 @@ static inline unsigned tri4_pair_filter_lanes(const struct tri4_ray *r,
     if (depth_out &&
         ((unsigned)_mm256_movemask_ps(_mm256_andnot_ps(
              mixed,
-             _mm256_and_ps(_mm256_cmp_ps(z_hi, _mm256_broadcast_ps(&r->tmin), _CMP_GE_OQ),
+             _mm256_and_ps(_mm256_cmp_ps(z_hi, TRI4_CONST8(r, tmin, k_tmin, scalar), _CMP_GE_OQ),
                            _mm256_cmp_ps(z_lo, limit, _CMP_LT_OQ)))) &
          valid) == 0)
         return 0;
     __m256 t_lo = z_lo;
     __m256 t_hi = z_hi;
-    tri4_pair_slab(ax, bx, cx, _mm256_broadcast_ps(&r->inv_x), r->neg_x, &t_lo, &t_hi);
-    tri4_pair_slab(ay, by, cy, _mm256_broadcast_ps(&r->inv_y), r->neg_y, &t_lo, &t_hi);
+    tri4_pair_slab(ax, bx, cx, TRI4_CONST8(r, inv_x, k_inv[0], scalar), r->neg_x, &t_lo,
+                   &t_hi);
+    tri4_pair_slab(ay, by, cy, TRI4_CONST8(r, inv_y, k_inv[1], scalar), r->neg_y, &t_lo,
+                   &t_hi);
     const __m256 geom = _mm256_andnot_ps(
         mixed,
-        _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(z_hi, _mm256_broadcast_ps(&r->tmin), _CMP_GE_OQ),
+        _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(z_hi, TRI4_CONST8(r, tmin, k_tmin, scalar),
+                                                  _CMP_GE_OQ),
                                     _mm256_cmp_ps(z_lo, limit, _CMP_LT_OQ)),
                       _mm256_cmp_ps(t_lo, limit, _CMP_LT_OQ)));
     const unsigned deferred = (unsigned)_mm256_movemask_ps(_mm256_and_ps(on_edge, geom)) & valid;
@@ -688,11 +757,11 @@ __attribute__((always_inline))
 #endif
 static inline unsigned tri4_before_tmin_vectors(const struct tri4_ray *r, __m128 sc, __m128 U,
                                                 __m128 V, __m128 W, __m128 det, __m128 Az,
-                                                __m128 Bz, __m128 Cz)
+                                                __m128 Bz, __m128 Cz, int scalar)
 {
     const __m128 sign = _mm_set1_ps(-0.0f);
     const __m128 s2 = _mm_mul_ps(sc, sc);
-    const __m128 zb = _mm_mul_ps(sc, _mm_andnot_ps(sign, r->sz));
+    const __m128 zb = _mm_mul_ps(sc, _mm_andnot_ps(sign, TRI4_CONST(r, sz, k_inv[2], scalar)));
     const __m128 abs_det = _mm_andnot_ps(sign, det);
     const __m128 T =
         _mm_add_ps(_mm_add_ps(_mm_mul_ps(U, Az), _mm_mul_ps(V, Bz)), _mm_mul_ps(W, Cz));
@@ -701,7 +770,8 @@ static inline unsigned tri4_before_tmin_vectors(const struct tri4_ray *r, __m128
     const __m128 sT = _mm_xor_ps(T, _mm_and_ps(sign, det));
     const __m128 err = _mm_mul_ps(zb, _mm_add_ps(_mm_mul_ps(_mm_set1_ps(0x1p-15f), s2),
                                                  _mm_mul_ps(_mm_set1_ps(0x1p-20f), abs_det)));
-    const __m128 rhs = _mm_mul_ps(r->tmin, _mm_mul_ps(_mm_set1_ps(0.875f), abs_det));
+    const __m128 rhs = _mm_mul_ps(TRI4_CONST(r, tmin, k_tmin, scalar),
+                                  _mm_mul_ps(_mm_set1_ps(0.875f), abs_det));
     __m128 ok = _mm_cmplt_ps(_mm_add_ps(sT, err), rhs);
     /* Check 1. */
     ok = _mm_and_ps(ok, _mm_cmpge_ps(abs_det, _mm_mul_ps(_mm_set1_ps(0x1p-13f), s2)));
@@ -709,30 +779,35 @@ static inline unsigned tri4_before_tmin_vectors(const struct tri4_ray *r, __m128
                                    _mm_cmple_ps(sc, _mm_set1_ps(0x1p20f))));
     ok = _mm_and_ps(ok, _mm_and_ps(_mm_cmpge_ps(zb, _mm_set1_ps(0x1p-60f)),
                                    _mm_cmple_ps(zb, _mm_set1_ps(0x1p40f))));
-    ok = _mm_and_ps(ok, _mm_cmpge_ps(r->tmin, _mm_set1_ps(0x1p-100f)));
+    ok = _mm_and_ps(ok,
+                    _mm_cmpge_ps(TRI4_CONST(r, tmin, k_tmin, scalar), _mm_set1_ps(0x1p-100f)));
     return (unsigned)_mm_movemask_ps(ok);
 }
 
 static inline unsigned tri4_before_tmin_lanes(const struct tri4_ray *r,
                                               const struct tri4_packet *p,
                                               const struct tri4_lanes *lanes,
-                                              unsigned lanes_mask)
+                                              unsigned lanes_mask, int scalar)
 {
+    /* scalar: r's scalar form (TRI4_CONST), as the any-hit walks set it. */
+    const __m128 neg_org_x = TRI4_CONST(r, neg_org_x, k_neg_org[0], scalar);
+    const __m128 neg_org_y = TRI4_CONST(r, neg_org_y, k_neg_org[1], scalar);
+    const __m128 neg_org_z = TRI4_CONST(r, neg_org_z, k_neg_org[2], scalar);
     const __m128 sign = _mm_set1_ps(-0.0f);
     /* S from the a_i as the filter computes them: v_i + (-org). */
-    __m128 sc = _mm_andnot_ps(sign, _mm_add_ps(r->neg_org_x, tri4_row(p, 0, r->off_x)));
-    sc = _mm_max_ps(sc, _mm_andnot_ps(sign, _mm_add_ps(r->neg_org_y, tri4_row(p, 0, r->off_y))));
-    sc = _mm_max_ps(sc, _mm_andnot_ps(sign, _mm_add_ps(r->neg_org_z, tri4_row(p, 0, r->off_z))));
-    sc = _mm_max_ps(sc, _mm_andnot_ps(sign, _mm_add_ps(r->neg_org_x, tri4_row(p, 1, r->off_x))));
-    sc = _mm_max_ps(sc, _mm_andnot_ps(sign, _mm_add_ps(r->neg_org_y, tri4_row(p, 1, r->off_y))));
-    sc = _mm_max_ps(sc, _mm_andnot_ps(sign, _mm_add_ps(r->neg_org_z, tri4_row(p, 1, r->off_z))));
-    sc = _mm_max_ps(sc, _mm_andnot_ps(sign, _mm_add_ps(r->neg_org_x, tri4_row(p, 2, r->off_x))));
-    sc = _mm_max_ps(sc, _mm_andnot_ps(sign, _mm_add_ps(r->neg_org_y, tri4_row(p, 2, r->off_y))));
-    sc = _mm_max_ps(sc, _mm_andnot_ps(sign, _mm_add_ps(r->neg_org_z, tri4_row(p, 2, r->off_z))));
+    __m128 sc = _mm_andnot_ps(sign, _mm_add_ps(neg_org_x, tri4_row(p, 0, r->off_x)));
+    sc = _mm_max_ps(sc, _mm_andnot_ps(sign, _mm_add_ps(neg_org_y, tri4_row(p, 0, r->off_y))));
+    sc = _mm_max_ps(sc, _mm_andnot_ps(sign, _mm_add_ps(neg_org_z, tri4_row(p, 0, r->off_z))));
+    sc = _mm_max_ps(sc, _mm_andnot_ps(sign, _mm_add_ps(neg_org_x, tri4_row(p, 1, r->off_x))));
+    sc = _mm_max_ps(sc, _mm_andnot_ps(sign, _mm_add_ps(neg_org_y, tri4_row(p, 1, r->off_y))));
+    sc = _mm_max_ps(sc, _mm_andnot_ps(sign, _mm_add_ps(neg_org_z, tri4_row(p, 1, r->off_z))));
+    sc = _mm_max_ps(sc, _mm_andnot_ps(sign, _mm_add_ps(neg_org_x, tri4_row(p, 2, r->off_x))));
+    sc = _mm_max_ps(sc, _mm_andnot_ps(sign, _mm_add_ps(neg_org_y, tri4_row(p, 2, r->off_y))));
+    sc = _mm_max_ps(sc, _mm_andnot_ps(sign, _mm_add_ps(neg_org_z, tri4_row(p, 2, r->off_z))));
     return tri4_before_tmin_vectors(r, sc, _mm_loadu_ps(lanes->U), _mm_loadu_ps(lanes->V),
                                     _mm_loadu_ps(lanes->W), _mm_loadu_ps(lanes->det),
                                     _mm_loadu_ps(lanes->Az), _mm_loadu_ps(lanes->Bz),
-                                    _mm_loadu_ps(lanes->Cz)) &
+                                    _mm_loadu_ps(lanes->Cz), scalar) &
            lanes_mask;
 }
 

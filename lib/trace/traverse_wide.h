@@ -194,7 +194,8 @@ static inline int wide_packet_test(struct wide_state *s, const struct tri4_packe
          * tmin, then those tri4_before_tmin_lanes' checks decide); the
          * near lanes left are those the checks could not decide, for
          * tri4_before_tmin. */
-        const __m128 tmin = s->r4.tmin;
+        /* depth_out: the walk set the scalar form (TRI4_CONST). */
+        const __m128 tmin = TRI4_CONST(&s->r4, tmin, k_tmin, depth_out);
         const unsigned near =
             (unsigned)_mm_movemask_ps(_mm_cmplt_ps(_mm_loadu_ps(lanes.t_lo), tmin)) & mask;
         if (near && depth_out)
@@ -837,7 +838,7 @@ static inline int wide8_walk_end(const struct wide_state *s, int done, int any_h
             return wide8_walk_end(&s, wide8_walk_tmin_other(wide, &s, any_hit, stats), any_hit, \
                                   stats, counters);                                             \
         if (any_hit)                                                                            \
-            tri4_ray_init(&s.r4, ray);                                                          \
+            tri4_ray_init_scalar(&s.r4, ray);                                                   \
         const int done = walk(wide, &s, any_hit, stats, leave_early, NULL);                     \
         return wide8_walk_end(&s, done, any_hit, stats, counters);                              \
     }
@@ -880,7 +881,8 @@ static unsigned wide_near_refused(const struct wide_state *s, const struct tri4_
 static unsigned wide_near_refused(const struct wide_state *s, const struct tri4_packet *p,
                                   const struct tri4_lanes *lanes, unsigned near)
 {
-    const unsigned sure = tri4_before_tmin_lanes(&s->r4, p, lanes, near);
+    /* Only with depth_out, whose walks set r4's scalar form (TRI4_CONST). */
+    const unsigned sure = tri4_before_tmin_lanes(&s->r4, p, lanes, near, 1);
     if (near & ~sure)
         return sure | tri4_before_tmin(s->ray, p, near & ~sure);
     return sure;
@@ -900,7 +902,7 @@ static inline int wide_leaf8_test(struct wide_state *s, const struct tri4_packet
     if (any_hit && mask) {
         /* As wide_packet_test, per packet (the near lanes refused on t_hi
          * with depth_out). */
-        const __m128 tmin = s->r4.tmin;
+        const __m128 tmin = TRI4_CONST(&s->r4, tmin, k_tmin, depth_out);
         unsigned near =
             ((unsigned)_mm_movemask_ps(_mm_cmplt_ps(_mm_loadu_ps(lanes[0].t_lo), tmin)) |
              (unsigned)_mm_movemask_ps(_mm_cmplt_ps(_mm_loadu_ps(lanes[1].t_lo), tmin)) << 4) &
@@ -976,28 +978,26 @@ WIDE8_WALK(wide8_walk_any_leaf8_stats, walk_wide8_ray_leaf8, 1, 1, 1)
  * vectors and the leaf's constants come from the set-up's registers, not
  * from a struct another function has just stored; one call and its
  * stores and loads fewer a ray. */
-/* tri4_ray_init's constants from the set-up's lanes (ray_setup.h): the
- * same values, broadcast from registers instead of loaded by index. */
+/* tri4_ray_init_scalar's constants from the set-up's lanes (ray_setup.h):
+ * the same floats, stored as the lanes hold them (org_k with its sign
+ * bits flipped, inv_k, shear: three 16-byte stores) for the any-hit
+ * leaves to broadcast from memory (struct tri4_ray's scalar form), where
+ * the vector form took nine broadcasts and nine stores a ray. */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline void tri4_ray_init_lanes(struct tri4_ray *r, const struct ray_lanes *l, float tmin)
+static inline void tri4_ray_init_scalar_lanes(struct tri4_ray *r, const struct ray_lanes *l,
+                                              float tmin)
 {
     const size_t row = sizeof(((const struct tri4_packet *)NULL)->v[0][0]);
-    const __m128 neg_org = _mm_xor_ps(l->org_k, _mm_set1_ps(-0.0f));
     const unsigned neg = (unsigned)_mm_movemask_ps(_mm_cmplt_ps(l->inv_k, _mm_setzero_ps()));
     r->off_x = (size_t)l->kx * row;
     r->off_y = (size_t)l->ky * row;
     r->off_z = (size_t)l->kz * row;
-    r->neg_org_x = _mm_permute_ps(neg_org, 0x00);
-    r->neg_org_y = _mm_permute_ps(neg_org, 0x55);
-    r->neg_org_z = _mm_permute_ps(neg_org, 0xAA);
-    r->sx = _mm_permute_ps(l->shear, 0x00);
-    r->sy = _mm_permute_ps(l->shear, 0x55);
-    r->sz = _mm_permute_ps(l->inv_k, 0xAA);
-    r->inv_x = _mm_permute_ps(l->inv_k, 0x00);
-    r->inv_y = _mm_permute_ps(l->inv_k, 0x55);
-    r->tmin = _mm_set1_ps(tmin);
+    _mm_storeu_ps(r->k_neg_org, _mm_xor_ps(l->org_k, _mm_set1_ps(-0.0f)));
+    _mm_storeu_ps(r->k_inv, l->inv_k);
+    _mm_storeu_ps(r->k_shear, l->shear);
+    r->k_tmin = tmin;
     r->neg_x = (int)(neg & 1u);
     r->neg_y = (int)(neg >> 1 & 1u);
 }
@@ -1019,7 +1019,7 @@ static inline void tri4_ray_init_lanes(struct tri4_ray *r, const struct ray_lane
             return wide8_walk_end(&s, wide8_walk_tmin_other(wide, &s, any_hit, stats), any_hit, \
                                   stats, counters);                                             \
         if (any_hit)                                                                            \
-            tri4_ray_init_lanes(&s.r4, &lanes, tmin);                                           \
+            tri4_ray_init_scalar_lanes(&s.r4, &lanes, tmin);                                    \
         const int done = walk(wide, &s, any_hit, stats, leave_early, &lanes);                   \
         return wide8_walk_end(&s, done, any_hit, stats, counters);                              \
     }
@@ -1076,6 +1076,8 @@ static int TRACE_WIDE_LEAF8(const struct trace_ray *ray, const struct tri4_packe
         s.box_limit = hit->t * ISECT_BOX_FAR_SCALE;
     }
     tri4_ray_init(&s.r4, ray);
+    /* The any-hit leaves read the scalar form (TRI4_CONST). */
+    tri4_ray_init_scalar(&s.r4, ray);
     int stop = 0;
     if (eight) {
         if (any_hit)
