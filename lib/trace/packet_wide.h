@@ -1305,12 +1305,6 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
     unsigned done;
     int ia = 0;
 #if defined(__AVX__)
-    if (wide->width == 8)
-        /* The root's four lines requested before the set-up: every
-         * packet's first node test reads them, and the set-up's chain
-         * (loads, divisions, the rays' ranges) runs beside the fetch
-         * instead of before it. */
-        wide_prefetch(&wide->nodes8[0], sizeof(struct bvh8_node));
     {
         /* Each ray's limit, best and box_limit in the lanes, as
          * packet_ready sets its state (a lane without a ray: best +inf,
