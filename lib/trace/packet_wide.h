@@ -790,32 +790,12 @@ static inline int packet_ia_init(struct packet_state *p, unsigned active,
      * never an answer (packet_walk8_ia). */
     p->ia_leaf_t = -INFINITY;
     if (!p->ia_masks && leaf_extent > 0.0f) {
-        /* The directions' ranges from the directions in the lanes by a
-         * reduction of their own, not from f_min[0] and f_max[0]: those
-         * reduce the directions together with the inverses (fields 6 and
-         * 7), so their ranges waited for the divisions; leaf_t decides
-         * which children of the first node are pushed untested (the
-         * next node's index), and its chain (the ranges, the division
-         * below) was the longest from the rays' loads to that index.
-         * The same ranges: min and max over the same eight lanes, and
-         * a range d_hi - d_lo of finite values (ok) is never -0, so the
-         * largest of the three, in any order, is the same number. */
-        const __m256 dx = p->lane_f[TRI8_F_DIR], dy = p->lane_f[TRI8_F_DIR + 1];
-        const __m256 dz = p->lane_f[TRI8_F_DIR + 2];
-        /* x, y in lanes (0, 1) and z twice in lanes (2, 3) of each
-         * 128-bit half, then the halves' four rays, then the halves. */
-        const __m256 xy_a = _mm256_unpacklo_ps(dx, dy), xy_b = _mm256_unpackhi_ps(dx, dy);
-        const __m256 zz_a = _mm256_unpacklo_ps(dz, dz), zz_b = _mm256_unpackhi_ps(dz, dz);
-        const __m256 lo_xy = _mm256_min_ps(xy_a, xy_b), hi_xy = _mm256_max_ps(xy_a, xy_b);
-        const __m256 lo_zz = _mm256_min_ps(zz_a, zz_b), hi_zz = _mm256_max_ps(zz_a, zz_b);
-        __m256 lo = _mm256_min_ps(_mm256_shuffle_ps(lo_xy, lo_zz, 0x44),
-                                  _mm256_shuffle_ps(lo_xy, lo_zz, 0xee));
-        __m256 hi = _mm256_max_ps(_mm256_shuffle_ps(hi_xy, hi_zz, 0x44),
-                                  _mm256_shuffle_ps(hi_xy, hi_zz, 0xee));
-        const __m128 lo4 = _mm_min_ps(_mm256_castps256_ps128(lo), _mm256_extractf128_ps(lo, 1));
-        const __m128 hi4 = _mm_max_ps(_mm256_castps256_ps128(hi), _mm256_extractf128_ps(hi, 1));
-        /* Lanes 0-3: the ranges of x, y, z, z. */
-        __m128 s = _mm_sub_ps(hi4, lo4);
+        /* The directions' ranges (fields TRI8_F_DIR + 0..2 of f_min[0]
+         * and f_max[0]) in lanes 0-3 (the first twice). */
+        const __m256i dir = _mm256_setr_epi32(TRI8_F_DIR, TRI8_F_DIR + 1, TRI8_F_DIR + 2,
+                                              TRI8_F_DIR, 0, 0, 0, 0);
+        __m128 s = _mm256_castps256_ps128(
+            _mm256_permutevar8x32_ps(_mm256_sub_ps(f_max[0], f_min[0]), dir));
         s = _mm_max_ps(s, _mm_movehl_ps(s, s));
         s = _mm_max_ss(s, _mm_shuffle_ps(s, s, 1));
         const float m = _mm_cvtss_f32(s) * PACKET_LEAF_GATE;
