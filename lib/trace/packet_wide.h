@@ -1305,25 +1305,6 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
     unsigned done;
     int ia = 0;
 #if defined(__AVX__)
-    if (wide->width == 8) {
-        /* The root's four lines requested before the set-up.  Every
-         * packet's walk starts with the root's test, whose loads the core
-         * issues only once the front end has passed the set-up (a few
-         * hundred instructions: the rays' loads, five divisions, the
-         * ranges, packet_ia_init), and between two packets the walk of
-         * the first (a kitchen camera packet visits scores of nodes and
-         * leaves) has presumably pushed the root out of L1 (not measured
-         * line by line); requested here, its
-         * fetch runs beside the set-up instead of after it.  Written as
-         * asm: GCC dropped _mm_prefetch (wide_prefetch) at this place
-         * (the same object code as without it).  Measured
-         * (docs/performance-log.md, pk15): kitchen camera packets 7-12 %
-         * faster in four alternated pairs; a prefetch changes no answer. */
-        for (int line = 0; line < 4; line++)
-            __asm__ volatile("prefetcht0 %0"
-                             :
-                             : "m"(((const char *)(const void *)wide->nodes8)[64 * line]));
-    }
     {
         /* Each ray's limit, best and box_limit in the lanes, as
          * packet_ready sets its state (a lane without a ray: best +inf,
