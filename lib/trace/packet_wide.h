@@ -1188,8 +1188,6 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                         sp++;
                     }
                 }
-                if (!cur_count)
-                    wide_prefetch(&nodes[cur], sizeof(struct bvh8_node));
                 continue;
             }
         }

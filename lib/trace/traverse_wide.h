@@ -297,12 +297,6 @@ static inline const float *wide_row(const void *bounds, int offset)
     return (const float *)(const void *)((const char *)bounds + offset);
 }
 
-static inline void wide_prefetch(const void *node, size_t bytes)
-{
-    for (size_t off = 0; off < bytes; off += 64)
-        _mm_prefetch((const char *)node + off, _MM_HINT_T0);
-}
-
 /* Forced inline, as wide_leaf: inlined into walk_wide, the state's
  * address never escapes and its fields live in registers.  The walk
  * starts at `root` (a wide node for root_count 0, else a leaf lane of
@@ -426,8 +420,6 @@ static inline int walk_wide4_body(const struct bvh4 *wide, struct wide_state *s,
                     cur = stack[sp].child;
                     cur_count = stack[sp].count;
                 }
-                if (!cur_count)
-                    wide_prefetch(&nodes[cur], sizeof(struct bvh4_node));
                 continue;
             }
         }
@@ -700,8 +692,6 @@ static inline int walk_wide8_impl(const struct bvh4 *wide, struct wide_state *s,
                     wide8_push(n, octant, hit, t0, order_shift, st_child, st_count, st_t,
                                &sp, &cur, &cur_count);
                 }
-                if (!cur_count)
-                    wide_prefetch(&nodes[cur], sizeof(struct bvh8_node));
                 continue;
             }
         }
