@@ -1308,17 +1308,11 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
          * packet's walk starts with the root's test, whose loads issue
          * only once the set-up (the rays' loads, five divisions, the
          * ranges, packet_ia_init) has passed; requested here, the fetch
-         * runs beside the set-up.  Written out (a helper function's
-         * prefetches are dropped by GCC, traverse_wide8_ray.h).  A
-         * prefetch changes no answer.  Measured (docs/performance-log.md,
+         * runs beside the set-up.  A prefetch changes no answer.  Measured (docs/performance-log.md,
          * round 38's merge): kitchen camera packets +0.9 and +0.4 % in two
          * quiet alternated pairs, gears' +2.0 and +1.6 %, bumpy and the
          * soup mixed within the spread. */
-        const char *root = (const char *)(const void *)wide->nodes8;
-        _mm_prefetch(root, _MM_HINT_T0);
-        _mm_prefetch(root + 64, _MM_HINT_T0);
-        _mm_prefetch(root + 128, _MM_HINT_T0);
-        _mm_prefetch(root + 192, _MM_HINT_T0);
+        WIDE_PREFETCH_LINES(wide->nodes8, 4);
     }
     {
         /* Each ray's limit, best and box_limit in the lanes, as

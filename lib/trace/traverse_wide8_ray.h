@@ -90,9 +90,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
             const uint32_t next = st_child[sp - 1];                                               \
             const char *a = st_count[sp - 1] ? (const char *)&packets[next]                       \
                                              : (const char *)&nodes[next];                        \
-            _mm_prefetch(a, _MM_HINT_T0);                                                         \
-            _mm_prefetch(a + 64, _MM_HINT_T0);                                                    \
-            _mm_prefetch(a + 128, _MM_HINT_T0);                                                   \
+            WIDE_PREFETCH_LINES(a, 3);                                                            \
         }                                                                                         \
     } while (0)
     for (;;) {
@@ -228,30 +226,18 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                             const uint32_t top = st_child[sp - 1];
                             const char *a = st_count[sp - 1] ? (const char *)&packets[top]
                                                              : (const char *)&nodes[top];
-                            _mm_prefetch(a, _MM_HINT_T0);
-                            _mm_prefetch(a + 64, _MM_HINT_T0);
-                            _mm_prefetch(a + 128, _MM_HINT_T0);
+                            WIDE_PREFETCH_LINES(a, 3);
                         }
                     }
                     /* The node the walk goes to next, its four lines
                      * prefetched as soon as it is chosen (the bounds' loads
                      * then start together, and the last line, which the
                      * walk reads at an index the test gives, with them).
-                     * Written out here: GCC found a helper function of
-                     * these prefetches "looping const" (its
-                     * local-pure-const pass) and dropped its calls, so no
-                     * walk had this prefetch (the helper and its dead calls
-                     * in the other walks are gone; round 38 measured the
-                     * packet walk's written out: level).  Closest hit only: in the
-                     * any-hit walks it cost the soup's shadow rays 0.03 of
-                     * Embree in every round. */
-                    if (!any_hit && !cur_count) {
-                        const char *a = (const char *)&nodes[cur];
-                        _mm_prefetch(a, _MM_HINT_T0);
-                        _mm_prefetch(a + 64, _MM_HINT_T0);
-                        _mm_prefetch(a + 128, _MM_HINT_T0);
-                        _mm_prefetch(a + 192, _MM_HINT_T0);
-                    }
+                     * Closest hit only: in the any-hit walks it cost the
+                     * soup's shadow rays 0.03 of Embree in every round
+                     * (the packet walk's, round 38: level). */
+                    if (!any_hit && !cur_count)
+                        WIDE_PREFETCH_LINES(&nodes[cur], 4);
                     continue;
                 }
                 /* Pop (as below). */
