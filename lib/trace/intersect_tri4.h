@@ -438,7 +438,15 @@ static inline void tri4_pair_store(float *lo, float *hi, __m256 v)
  * out[k] exactly as the 4-lane filter writes them (bit k of the mask's
  * upper half is lane k of p[1]), so the lane test is the 4-lane one.
  * The early return leaves only when all eight lanes are refused by their
- * signs.
+ * signs.  behind_out (the single-ray closest-hit leaves,
+ * wide_leaf8_test): the kept lanes whose box interval lies wholly before
+ * tmin (t_lo < tmin and t_hi < tmin) are taken out of the mask here,
+ * before the lanes are stored; wide_packet_test says why the finish
+ * refuses every such lane (its t is clamped to t_hi or t_lo, both below
+ * tmin), so the leaf's answer is the same.  Computed only once some lane
+ * is kept, off the chain to the filter's verdict: the filters of leaves
+ * that keep nothing pay nothing (s6's form in `geom` made every call pay
+ * and lengthened that chain).
  */
 #if defined(__GNUC__)
 __attribute__((always_inline))
@@ -446,7 +454,8 @@ __attribute__((always_inline))
 static inline unsigned tri4_pair_filter_lanes(const struct tri4_ray *r,
                                               const struct tri4_packet *p, unsigned valid,
                                               float t_max, struct tri4_lanes out[2],
-                                              int any_hit, int early_out, int depth_out)
+                                              int any_hit, int early_out, int depth_out,
+                                              int behind_out)
 {
     /* depth_out's walks set the scalar form only (tri4_filter_lanes_depth). */
     const int scalar = depth_out;
@@ -515,7 +524,16 @@ static inline unsigned tri4_pair_filter_lanes(const struct tri4_ray *r,
     const __m256 abs_det = _mm256_andnot_ps(_mm256_set1_ps(-0.0f), det);
     __m256 keep = _mm256_and_ps(geom, _mm256_cmp_ps(det, zero, _CMP_NEQ_UQ));
     keep = _mm256_and_ps(keep, _mm256_cmp_ps(abs_det, _mm256_set1_ps(INFINITY), _CMP_LT_OQ));
-    const unsigned mask = ((unsigned)_mm256_movemask_ps(keep) & valid) | deferred;
+    unsigned mask = ((unsigned)_mm256_movemask_ps(keep) & valid) | deferred;
+    if (behind_out && mask) {
+        /* The same comparisons as the per-lane `t_hi < tmin && t_lo <
+         * tmin` they replace (ordered: false for NaN), on the same
+         * floats; a deferred lane among them is refused too, as its
+         * double edge step returns 0 or leads to the same finish. */
+        const __m256 tmin = TRI4_CONST8(r, tmin, k_tmin, scalar);
+        mask &= ~(unsigned)_mm256_movemask_ps(_mm256_and_ps(
+            _mm256_cmp_ps(t_hi, tmin, _CMP_LT_OQ), _mm256_cmp_ps(t_lo, tmin, _CMP_LT_OQ)));
+    }
     if (mask) {
         tri4_pair_store(out[0].U, out[1].U, sh.U);
         tri4_pair_store(out[0].V, out[1].V, sh.V);

@@ -904,7 +904,7 @@ static inline int wide_leaf8_test(struct wide_state *s, const struct tri4_packet
     struct tri4_lanes lanes[2];
     unsigned mask =
         tri4_pair_filter_lanes(&s->r4, p, (1u << n) - 1u, limit, lanes, any_hit, early_out,
-                               depth_out);
+                               depth_out, behind_out);
     if (any_hit && mask) {
         /* As wide_packet_test, per packet (the near lanes refused on t_hi
          * with depth_out). */
@@ -936,10 +936,8 @@ static inline int wide_leaf8_test(struct wide_state *s, const struct tri4_packet
         mask &= mask - 1u;
         const unsigned k = l >> 2;
         const struct tri4_packet *q = p + k;
-        /* behind_out: as wide_packet_test. */
-        if (behind_out && lanes[k].t_hi[l & 3u] < s->ray->tmin &&
-            lanes[k].t_lo[l & 3u] < s->ray->tmin)
-            continue;
+        /* behind_out: the lanes wholly before tmin are out of the mask
+         * already (tri4_pair_filter_lanes). */
         float t, u, w;
         limit = !any_hit && s->found ? isect_next_up(s->best) : s->best;
         if (!tri4_lane_test(s->ray, q, &lanes[k], l & 3u, any_hit, limit, &t, &u, &w))
