@@ -77,21 +77,6 @@ struct wide_state {
     float box_limit;
     uint64_t node_tests;
     uint64_t triangle_tests;
-    /* The closest-hit leaves' deferred finish (wide_lane_closest; only
-     * the single-ray walks without counters, WIDE8_WALK and WIDE8_WALK1
-     * with stats 0, use these): a candidate sure to be taken, not yet
-     * finished.  found, best and hit are the state before it; its lane is
-     * pend_l of pend_lanes (one of lanes_buf, which the leaves write in
-     * turn so that the pending lane's floats outlive its leaf) and of
-     * packet pend_p; pend_lo, pend_hi bound its t; pend_limit is the
-     * limit its finish is to be run with. */
-    int pending;
-    unsigned pend_buf;
-    unsigned pend_l;
-    float pend_lo, pend_hi, pend_limit;
-    const struct tri4_packet *pend_p;
-    const struct tri4_lanes *pend_lanes;
-    struct tri4_lanes lanes_buf[2][2];
 };
 
 /* walk_wide's state for a ray: no hit yet, the limits of t_max. */
@@ -134,10 +119,6 @@ static inline void wide_state_init1(struct wide_state *s, const struct trace_ray
         s->hit = hit;
         s->found = 0;
         s->box_limit = t_max * ISECT_BOX_FAR_SCALE; /* as wide_state_init */
-        if (!stats) {
-            s->pending = 0;
-            s->pend_buf = 0;
-        }
     }
     if (stats) {
         s->node_tests = 0;
@@ -170,101 +151,6 @@ static inline int wide_take_closest(struct wide_state *s, uint32_t prim, float t
     return 1;
 }
 
-/* The pending candidate's finish and take (wide_lane_closest): the
- * finish runs with the limit of the state it was deferred from, which is
- * still the state (nothing is taken while a candidate is pending), so
- * its answer is what finishing it then would have given: accepted, and
- * taken (wide_lane_closest says why). */
-static void wide_finish_pending(struct wide_state *s) WIDE_NOINLINE;
-static void wide_finish_pending(struct wide_state *s)
-{
-    float t, u, w;
-    s->pending = 0;
-    if (tri4_lane_test(s->ray, s->pend_p, s->pend_lanes, s->pend_l, 0, s->pend_limit, &t, &u, &w))
-        wide_take_closest(s, s->pend_p->prim[s->pend_l], t, u, w);
-}
-
-/*
- * A kept lane of a closest-hit leaf (lane l of lanes, packet q), with the
- * finish deferred where the answer allows it (defer; the walk finishes
- * the pending candidate at its end, wide_finish_pending).  Without defer:
- * tri4_lane_test with the current limit and wide_take_closest, as
- * before.
- *
- * Why deferring gives the same answer, bit for bit.  The finish's t is
- * clamped into the lane's box interval (isect_clamp_to_box: t < t_hi ?
- * t : t_hi, then u > t_lo ? u : t_lo, NaN included), so it is a value
- * in [lo, hi] with lo = t_lo and hi = max(t_lo, t_hi) (hi = lo when the
- * interval is empty); an exact bound, not an error estimate.  A lane
- * that is not deferred by the filter (no edge function of 0: its double
- * edge step could refuse it) with lo >= tmin and hi < best is therefore
- * accepted by the finish (t >= tmin, t < best <= the limit, t finite as
- * both bounds are) and taken by wide_take_closest (first hit, or t <
- * best): the state after it is its t, u, v and prim, whatever they are.
- * Such a lane becomes the pending candidate instead of being finished.
- * A later lane c, while p is pending (t_p in [lo_p, hi_p]):
- * - lo_c > hi_p: t_c > t_p, so once p were taken, c would be refused
- *   (its t_lo test or its finish's t < next_up(t_p), or the take rule's
- *   t < best): refused here without either finish;
- * - c as sure as above (no edge zero, lo_c >= tmin) and hi_c < lo_p:
- *   t_c < t_p, so c would be accepted and taken after p, and it is also
- *   sure to be taken from the state before p (t_c < t_p <= best): c
- *   replaces p as the pending candidate, and p is never finished;
- * - otherwise (the intervals overlap): p is finished and taken now, and
- *   c tested against the exact state as before.
- * The walk's box limit while p is pending is hi_p * ISECT_BOX_FAR_SCALE,
- * which is at least t_p's: the walk visits every node it visited before
- * (and perhaps a few more, whose hits lie beyond t_p: an entry above t_p
- * * scale bounds every t in the box from below), so the candidates that
- * decide the answer are all seen.  Node and triangle counts may grow,
- * which is why the walks with counters do not defer.
- */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline void wide_lane_closest(struct wide_state *s, const struct tri4_packet *q,
-                                     const struct tri4_lanes *lanes, unsigned l, unsigned buf,
-                                     int defer)
-{
-    float t, u, w;
-    if (defer) {
-        const float lo = lanes->t_lo[l];
-        const float hi = isect_max(lanes->t_hi[l], lo);
-        const int sure = !(lanes->deferred >> l & 1u) && lo >= s->ray->tmin;
-        if (s->pending) {
-            if (!(lo <= s->pend_hi))
-                return;
-            if (sure && hi < s->pend_lo) {
-                s->pend_p = q;
-                s->pend_lanes = lanes;
-                s->pend_l = l;
-                s->pend_buf = buf;
-                s->pend_lo = lo;
-                s->pend_hi = hi;
-                s->box_limit = hi * ISECT_BOX_FAR_SCALE;
-                return;
-            }
-            wide_finish_pending(s);
-        }
-        if (sure && hi < s->best) {
-            s->pending = 1;
-            s->pend_p = q;
-            s->pend_lanes = lanes;
-            s->pend_l = l;
-            s->pend_buf = buf;
-            s->pend_lo = lo;
-            s->pend_hi = hi;
-            s->pend_limit = s->found ? isect_next_up(s->best) : s->best;
-            s->box_limit = hi * ISECT_BOX_FAR_SCALE;
-            return;
-        }
-    }
-    const float limit = s->found ? isect_next_up(s->best) : s->best;
-    if (!tri4_lane_test(s->ray, q, lanes, l, 0, limit, &t, &u, &w))
-        return;
-    wide_take_closest(s, q->prim[l], t, u, w);
-}
-
 /* wide_near_refused (the two-packet leaf's refusal of its near lanes)
  * is defined with that leaf, below. */
 
@@ -283,21 +169,13 @@ static unsigned wide_near_fallback(const struct wide_state *s, const struct tri4
 __attribute__((always_inline))
 #endif
 static inline int wide_packet_test(struct wide_state *s, const struct tri4_packet *p, uint32_t n,
-                                   int any_hit, int early_out, int depth_out, int behind_out,
-                                   int defer)
+                                   int any_hit, int early_out, int depth_out, int behind_out)
 {
-    /* An any-hit walk returns at its first hit: found stays 0.  defer
-     * (wide_lane_closest): while a candidate is pending the filter's
-     * limit is next_up(pend_hi), at least next_up(t) of the pending t
-     * (the rejections on the limit are monotone in it). */
+    /* An any-hit walk returns at its first hit: found stays 0. */
     float limit = !any_hit && s->found ? isect_next_up(s->best) : s->best;
-    if (defer && s->pending)
-        limit = isect_next_up(s->pend_hi);
-    struct tri4_lanes lanes_local;
-    const unsigned buf = defer ? s->pend_buf ^ 1u : 0u;
-    struct tri4_lanes *const lanes = defer ? &s->lanes_buf[buf][0] : &lanes_local;
+    struct tri4_lanes lanes;
     unsigned mask =
-        tri4_filter_lanes_depth(&s->r4, p, (1u << n) - 1u, limit, lanes, any_hit, early_out,
+        tri4_filter_lanes_depth(&s->r4, p, (1u << n) - 1u, limit, &lanes, any_hit, early_out,
                                 depth_out);
     if (any_hit && mask) {
         /* A lane the ray starts on (a shadow ray from a surface: t_lo <
@@ -319,7 +197,7 @@ static inline int wide_packet_test(struct wide_state *s, const struct tri4_packe
         /* depth_out: the walk set the scalar form (TRI4_CONST). */
         const __m128 tmin = TRI4_CONST(&s->r4, tmin, k_tmin, depth_out);
         const unsigned near =
-            (unsigned)_mm_movemask_ps(_mm_cmplt_ps(_mm_loadu_ps(lanes->t_lo), tmin)) & mask;
+            (unsigned)_mm_movemask_ps(_mm_cmplt_ps(_mm_loadu_ps(lanes.t_lo), tmin)) & mask;
         if (near && depth_out)
             mask &= ~wide_near_fallback(s, p, near);
         else if (near)
@@ -346,18 +224,17 @@ static inline int wide_packet_test(struct wide_state *s, const struct tri4_packe
          * kept lane, rather than in the filter's vectors: there (two more
          * operations on the chain to the mask) gears', the soup's and
          * bumpy's camera rays were 0.01-0.04 of Embree slower. */
-        if (behind_out && lanes->t_hi[l] < s->ray->tmin && lanes->t_lo[l] < s->ray->tmin)
+        if (behind_out && lanes.t_hi[l] < s->ray->tmin && lanes.t_lo[l] < s->ray->tmin)
             continue;
-        if (!any_hit) {
-            wide_lane_closest(s, p, lanes, l, buf, defer);
-            continue;
-        }
         float t, u, w;
-        limit = s->best;
-        if (!tri4_lane_test(s->ray, p, lanes, l, any_hit, limit, &t, &u, &w))
+        limit = !any_hit && s->found ? isect_next_up(s->best) : s->best;
+        if (!tri4_lane_test(s->ray, p, &lanes, l, any_hit, limit, &t, &u, &w))
             continue;
-        s->found = 1;
-        return 1;
+        if (any_hit) {
+            s->found = 1;
+            return 1;
+        }
+        wide_take_closest(s, p->prim[l], t, u, w);
     }
     return 0;
 }
@@ -370,7 +247,7 @@ __attribute__((always_inline))
 static inline int wide_packet_body(struct wide_state *s, const struct tri4_packet *p, uint32_t n,
                                    int any_hit, int behind_out)
 {
-    return wide_packet_test(s, p, n, any_hit, 1, 0, behind_out, 0);
+    return wide_packet_test(s, p, n, any_hit, 1, 0, behind_out);
 }
 
 /* A leaf lane: count triangles in packets from `first` (wide_packet_body
@@ -889,20 +766,16 @@ static inline int walk_wide8(const struct bvh4 *wide, struct wide_state *s, uint
  * before tmin (wide_packet_test says why it is exact); only the
  * single-ray closest-hit leaves take it.  The any-hit leaves refuse
  * those lanes with depth_out (wide_packet_test's near lanes). */
-/* defer: the closest-hit leaves of the walks without counters, which
- * defer the finish of a candidate sure to be taken (wide_lane_closest). */
-#define WIDE8_LEAF_TEST(name, test, any_hit, early_out, depth_out, behind_out, defer)            \
+#define WIDE8_LEAF_TEST(name, test, any_hit, early_out, depth_out, behind_out)                   \
     static int name(struct wide_state *s, const struct tri4_packet *p, uint32_t n) WIDE_NOINLINE; \
     static int name(struct wide_state *s, const struct tri4_packet *p, uint32_t n)                \
     {                                                                                              \
-        return test(s, p, n, any_hit, early_out, depth_out, behind_out, defer);                    \
+        return test(s, p, n, any_hit, early_out, depth_out, behind_out);                           \
     }
 
-WIDE8_LEAF_TEST(wide8_packet_closest, wide_packet_test, 0, 1, 0, 1, 0)
-WIDE8_LEAF_TEST(wide8_packet_full, wide_packet_test, 0, 0, 0, 1, 0)
-WIDE8_LEAF_TEST(wide8_packet_any, wide_packet_test, 1, 1, 1, 0, 0)
-WIDE8_LEAF_TEST(wide8_packet_closest_defer, wide_packet_test, 0, 1, 0, 1, 1)
-WIDE8_LEAF_TEST(wide8_packet_full_defer, wide_packet_test, 0, 0, 0, 1, 1)
+WIDE8_LEAF_TEST(wide8_packet_closest, wide_packet_test, 0, 1, 0, 1)
+WIDE8_LEAF_TEST(wide8_packet_full, wide_packet_test, 0, 0, 0, 1)
+WIDE8_LEAF_TEST(wide8_packet_any, wide_packet_test, 1, 1, 1, 0)
 
 /* The byte offsets of the near x, y, z and far x, y, z rows of a
  * bvh8_node's bounds per ray octant (bit k: dir[k] negative, whose near
@@ -1025,16 +898,10 @@ static unsigned wide_near_refused(const struct wide_state *s, const struct tri4_
 __attribute__((always_inline))
 #endif
 static inline int wide_leaf8_test(struct wide_state *s, const struct tri4_packet *p, uint32_t n,
-                                  int any_hit, int early_out, int depth_out, int behind_out,
-                                  int defer)
+                                  int any_hit, int early_out, int depth_out, int behind_out)
 {
     float limit = !any_hit && s->found ? isect_next_up(s->best) : s->best;
-    /* defer: as wide_packet_test. */
-    if (defer && s->pending)
-        limit = isect_next_up(s->pend_hi);
-    struct tri4_lanes lanes_local[2];
-    const unsigned buf = defer ? s->pend_buf ^ 1u : 0u;
-    struct tri4_lanes *const lanes = defer ? s->lanes_buf[buf] : lanes_local;
+    struct tri4_lanes lanes[2];
     unsigned mask =
         tri4_pair_filter_lanes(&s->r4, p, (1u << n) - 1u, limit, lanes, any_hit, early_out,
                                depth_out, behind_out);
@@ -1071,25 +938,22 @@ static inline int wide_leaf8_test(struct wide_state *s, const struct tri4_packet
         const struct tri4_packet *q = p + k;
         /* behind_out: the lanes wholly before tmin are out of the mask
          * already (tri4_pair_filter_lanes). */
-        if (!any_hit) {
-            wide_lane_closest(s, q, &lanes[k], l & 3u, buf, defer);
-            continue;
-        }
         float t, u, w;
-        limit = s->best;
+        limit = !any_hit && s->found ? isect_next_up(s->best) : s->best;
         if (!tri4_lane_test(s->ray, q, &lanes[k], l & 3u, any_hit, limit, &t, &u, &w))
             continue;
-        s->found = 1;
-        return 1;
+        if (any_hit) {
+            s->found = 1;
+            return 1;
+        }
+        wide_take_closest(s, q->prim[l & 3u], t, u, w);
     }
     return 0;
 }
 
-WIDE8_LEAF_TEST(wide8_leaf8_closest, wide_leaf8_test, 0, 1, 0, 1, 0)
-WIDE8_LEAF_TEST(wide8_leaf8_full, wide_leaf8_test, 0, 0, 0, 1, 0)
-WIDE8_LEAF_TEST(wide8_leaf8_any, wide_leaf8_test, 1, 1, 1, 0, 0)
-WIDE8_LEAF_TEST(wide8_leaf8_closest_defer, wide_leaf8_test, 0, 1, 0, 1, 1)
-WIDE8_LEAF_TEST(wide8_leaf8_full_defer, wide_leaf8_test, 0, 0, 0, 1, 1)
+WIDE8_LEAF_TEST(wide8_leaf8_closest, wide_leaf8_test, 0, 1, 0, 1)
+WIDE8_LEAF_TEST(wide8_leaf8_full, wide_leaf8_test, 0, 0, 0, 1)
+WIDE8_LEAF_TEST(wide8_leaf8_any, wide_leaf8_test, 1, 1, 1, 0)
 
 #define WIDE8_RAY walk_wide8_ray_leaf8
 #define WIDE8_RAY_LEAF8 1

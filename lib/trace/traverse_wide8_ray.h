@@ -274,11 +274,9 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                 if (any_hit)
                     stop = wide8_leaf8_any(s, p, cur_count);
                 else if (leave_early)
-                    stop = stats ? wide8_leaf8_closest(s, p, cur_count)
-                                 : wide8_leaf8_closest_defer(s, p, cur_count);
+                    stop = wide8_leaf8_closest(s, p, cur_count);
                 else
-                    stop = stats ? wide8_leaf8_full(s, p, cur_count)
-                                 : wide8_leaf8_full_defer(s, p, cur_count);
+                    stop = wide8_leaf8_full(s, p, cur_count);
             } else
 #endif
             for (;;) {
@@ -286,10 +284,9 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                 if (any_hit)
                     stop = wide8_packet_any(s, p, n);
                 else if (leave_early)
-                    stop = stats ? wide8_packet_closest(s, p, n)
-                                 : wide8_packet_closest_defer(s, p, n);
+                    stop = wide8_packet_closest(s, p, n);
                 else
-                    stop = stats ? wide8_packet_full(s, p, n) : wide8_packet_full_defer(s, p, n);
+                    stop = wide8_packet_full(s, p, n);
                 if (stop || cur_count <= 4)
                     break;
                 cur_count -= 4;
@@ -321,11 +318,6 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
     }
 done:
 #undef WIDE8_PREFETCH_NEXT_TOP
-    /* The walks without counters call the leaves that defer a sure
-     * candidate's finish (wide_lane_closest): the last one is finished
-     * here. */
-    if (!any_hit && !stats && s->pending)
-        wide_finish_pending(s);
     if (stats) {
         s->node_tests += node_tests;
         s->triangle_tests += tri_tests;
