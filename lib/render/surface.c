@@ -883,20 +883,35 @@ static void lod_fast_init(const struct surface_lod *l, struct surface_lod_fast *
         f->state = 1;
 }
 
-/* lod_quad's lambdas of four hits on f's triangle (d their directions,
+/* A triangle part's values that lod_fast_quad reads in every lane (its
+ * unit normal, f's texel map and bound), broadcast once for a block's
+ * two quads: the same doubles in every lane as broadcast per quad. */
+struct lod_fast_broadcast {
+    __m256d n[3], m0[3], m1[3];
+    __m256d sin2;
+};
+
+SURFACE_INLINE void lod_fast_quad_lanes(const struct surface_lod_fast *f, const double unit[3],
+                                        struct lod_fast_broadcast *b)
+{
+    for (int k = 0; k < 3; k++) {
+        b->n[k] = _mm256_set1_pd(unit[k]);
+        b->m0[k] = _mm256_set1_pd(f->m[0][k]);
+        b->m1[k] = _mm256_set1_pd(f->m[1][k]);
+    }
+    b->sin2 = _mm256_set1_pd(f->sin2);
+}
+
+/* lod_quad's lambdas of four hits on b's triangle (d their directions,
  * g their facing normals, width their cones' widths at the hits, top the
  * texture's lod_top) where lod_fast's margin decides them: writes those
  * into lambda and returns their mask. */
-SURFACE_INLINE int lod_fast_quad(const struct surface_lod_fast *f, const double unit[3],
-                                 const __m256d d[3], const __m256d g[3], __m256d width,
-                                 __m256d top, float lambda[4])
+SURFACE_INLINE int lod_fast_quad(const struct lod_fast_broadcast *b, const __m256d d[3],
+                                 const __m256d g[3], __m256d width, __m256d top,
+                                 float lambda[4])
 {
-    __m256d n[3], m0[3], m1[3], c[3];
-    for (int k = 0; k < 3; k++) {
-        n[k] = _mm256_set1_pd(unit[k]);
-        m0[k] = _mm256_set1_pd(f->m[0][k]);
-        m1[k] = _mm256_set1_pd(f->m[1][k]);
-    }
+    const __m256d *n = b->n, *m0 = b->m0, *m1 = b->m1;
+    __m256d c[3];
     quad_cross(n, d, c);
     const __m256d dd = quad_dot(d, d), s = quad_dot(c, c);
     const __m256d gd = quad_dot(g, d), gg = _mm256_mul_pd(gd, gd);
@@ -914,8 +929,7 @@ SURFACE_INLINE int lod_fast_quad(const struct surface_lod_fast *f, const double 
     __m256d ok = _mm256_and_pd(_mm256_cmp_pd(dd, _mm256_set1_pd(0.25), _CMP_GE_OQ),
                                _mm256_cmp_pd(dd, _mm256_set1_pd(4.0), _CMP_LE_OQ));
     ok = _mm256_and_pd(ok, _mm256_cmp_pd(_mm256_mul_pd(s, gg),
-                                         _mm256_mul_pd(_mm256_set1_pd(f->sin2),
-                                                       _mm256_mul_pd(dd, dd)),
+                                         _mm256_mul_pd(b->sin2, _mm256_mul_pd(dd, dd)),
                                          _CMP_GE_OQ));
     ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(ww, _mm256_set1_pd(0x1p-200), _CMP_GE_OQ),
                                          _mm256_cmp_pd(ww, _mm256_set1_pd(0x1p200), _CMP_LE_OQ)));
@@ -2063,6 +2077,11 @@ int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene
             if (!c->fast.state)
                 lod_fast_init(tri, &c->fast);
             const int use_fast = c->fast.state > 0;
+            /* The triangle part's lanes once for both quads, and top's. */
+            struct lod_fast_broadcast fast_lanes;
+            if (use_fast)
+                lod_fast_quad_lanes(&c->fast, tri->n, &fast_lanes);
+            const __m256d top4 = _mm256_set1_pd(top);
             for (int h = 0; h < TRACE_PACKET / 4; h++) {
 #define HALF(v) _mm256_cvtps_pd(h ? _mm256_extractf128_ps(v, 1) : _mm256_castps256_ps128(v))
                 __m256d d[3], gd[3];
@@ -2073,8 +2092,7 @@ int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene
                 /* lod_fast_quad where its margin decides all four, else
                  * lod_quad's chain for the quad (the same lambdas). */
                 if (use_fast &&
-                    lod_fast_quad(&c->fast, tri->n, d, gd, HALF(wv), _mm256_set1_pd(top),
-                                  &lambda[4 * h]) == 15)
+                    lod_fast_quad(&fast_lanes, d, gd, HALF(wv), top4, &lambda[4 * h]) == 15)
                     continue;
                 lod_quad_lanes(l4, 1, d, gd, HALF(wv), top, tx->level_count, h, width, lane_g,
                                dir, lambda);
