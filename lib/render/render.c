@@ -61,6 +61,17 @@
 #define RENDER_OCTS 0
 #endif
 
+/* The eye light's block pipeline of the shading copy for this copy's
+ * instruction set (shade.h): the AVX-512 one in render_avx512.c, the
+ * AVX2 one in render_avx2.c. */
+#if RENDER_OCTS
+#define RENDER_EYE_BLOCK_BEGIN shade_eye_block_begin_avx512
+#define RENDER_EYE_BLOCK_END shade_eye_block_end_avx512
+#else
+#define RENDER_EYE_BLOCK_BEGIN shade_eye_block_begin_avx2
+#define RENDER_EYE_BLOCK_END shade_eye_block_end_avx2
+#endif
+
 /* Packet blocks of the tile loop: 4 x 2 pixels, one packet of
  * TRACE_PACKET camera rays. */
 #define RENDER_BLOCK_W 4
@@ -1166,10 +1177,10 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                     }
 #if defined(RENDER_UNIT_AVX2)
                     /* This block's prefetches, then the last block's texels. */
-                    const int begun = shade_eye_block_begin_avx2(
+                    const int begun = RENDER_EYE_BLOCK_BEGIN(
                         sc, block_dirs, &by_lane.rays, block_hits, px, &pending[pending_slot]);
                     if (pending_full)
-                        shade_eye_block_end_avx2(sc, &pending[pending_slot ^ 1]);
+                        RENDER_EYE_BLOCK_END(sc, &pending[pending_slot ^ 1]);
                     pending_full = begun;
                     pending_slot ^= begun;
 #else
@@ -1237,7 +1248,7 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
     }
 #if defined(RENDER_UNIT_AVX2)
     if (pending_full)
-        shade_eye_block_end_avx2(sc, &pending[pending_slot ^ 1]);
+        RENDER_EYE_BLOCK_END(sc, &pending[pending_slot ^ 1]);
 #endif
 }
 

@@ -885,6 +885,14 @@ void shade_eye_hits(const struct shade_context *sc, int n, const float *const di
      * or AVX-512 (shade_eye_avx2.c); the test before the batch's frame
      * is set up. */
     const struct trace_kernels *table = sc->scene->kernels;
+    /* The AVX-512 copy (shade_eye_avx512.c) when it traces with AVX-512. */
+    if (table && table->isa >= TRACE_ISA_AVX512) {
+        const shade_eye_hits_fn avx512 = shade_eye_hits_avx512_unit();
+        if (avx512) {
+            avx512(sc, n, dir, hits, cone, rgba);
+            return;
+        }
+    }
     if (table && table->isa >= TRACE_ISA_AVX2) {
         const shade_eye_hits_fn avx2 = shade_eye_hits_avx2_unit();
         if (avx2) {
