@@ -47,24 +47,10 @@
 #define RENDER_QUADS 0
 #endif
 
-/* The AVX-512 copy (render_avx512.c) goes on to eight lanes: a block's
- * two rows of four rays in one 512-bit vector (ray_oct), a row's points
- * unprojected eight at a time, again the same IEEE operations lane by
- * lane in the same order (-ffp-contract=off: no FMA), so the same bits;
- * half the instructions of the quads.  A 512-bit vdivpd or vsqrtpd
- * occupies the divider about twice as long as a 256-bit one on Zen 4
- * (Fog, "Instruction tables"), so the divider's time stays; what goes
- * is the rest (loads, subtractions, products, conversions, stores). */
-#if RENDER_QUADS && defined(__AVX512F__)
-#define RENDER_OCTS 1
-#else
-#define RENDER_OCTS 0
-#endif
-
 /* The eye light's block pipeline of the shading copy for this copy's
  * instruction set (shade.h): the AVX-512 one in render_avx512.c, the
  * AVX2 one in render_avx2.c. */
-#if RENDER_OCTS
+#if defined(RENDER_UNIT_AVX512)
 #define RENDER_EYE_BLOCK_BEGIN shade_eye_block_begin_avx512
 #define RENDER_EYE_BLOCK_END shade_eye_block_end_avx512
 #else
@@ -245,23 +231,6 @@ static inline __m256d quad_distance_to_line(const __m256d a[3], const __m256d d[
 }
 #endif
 
-#if RENDER_OCTS
-/* pair_distance_to_line in eight lanes. */
-static inline __m512d oct_distance_to_line(const __m512d a[3], const __m512d d[3])
-{
-    const __m512d along = _mm512_add_pd(
-        _mm512_add_pd(_mm512_mul_pd(a[0], d[0]), _mm512_mul_pd(a[1], d[1])),
-        _mm512_mul_pd(a[2], d[2]));
-    const __m512d perp0 = _mm512_sub_pd(a[0], _mm512_mul_pd(along, d[0]));
-    __m512d r2 = _mm512_mul_pd(perp0, perp0);
-    for (int k = 1; k < 3; k++) {
-        const __m512d perp = _mm512_sub_pd(a[k], _mm512_mul_pd(along, d[k]));
-        r2 = _mm512_add_pd(r2, _mm512_mul_pd(perp, perp));
-    }
-    return _mm512_sqrt_pd(r2);
-}
-#endif
-
 /* Distances from q[0..3] to the line through p along the unit vector
  * d: the same operations for each, in this order. */
 static void distances_to_line(const double *const q[4], const double p[3], const double d[3],
@@ -388,38 +357,6 @@ static void unproject_row_fill(const struct render_pass *sh, const struct unproj
         last4[r] = _mm256_set1_pd(m[12 + r]);
     }
     __m256d sum4 = _mm256_setzero_pd();
-#if RENDER_OCTS
-    /* Eight points a lane each first, the same sums in the same order;
-     * the rest in quads and pairs below. */
-    {
-        __m512d axis8[4], zn8[4], zf8[4], last8[4];
-        for (int r = 0; r < 4; r++) {
-            axis8[r] = _mm512_set1_pd(u->axis[r]);
-            zn8[r] = _mm512_set1_pd(m[8 + r] * -1.0);
-            zf8[r] = _mm512_set1_pd(m[8 + r] * 1.0);
-            last8[r] = _mm512_set1_pd(m[12 + r]);
-        }
-        __m512d sum8 = _mm512_setzero_pd();
-        for (; first_pair + 7 < UNPROJECT_COLS; first_pair += 8) {
-            const int i = first_pair;
-            const __m512d s3 = _mm512_add_pd(_mm512_loadu_pd(&c->col[3][i]), axis8[3]);
-            const __m512d wn = _mm512_add_pd(_mm512_add_pd(s3, zn8[3]), last8[3]);
-            const __m512d wf = _mm512_add_pd(_mm512_add_pd(s3, zf8[3]), last8[3]);
-            for (int r = 0; r < 3; r++) {
-                const __m512d s = _mm512_add_pd(_mm512_loadu_pd(&c->col[r][i]), axis8[r]);
-                const __m512d n =
-                    _mm512_div_pd(_mm512_add_pd(_mm512_add_pd(s, zn8[r]), last8[r]), wn);
-                const __m512d f =
-                    _mm512_div_pd(_mm512_add_pd(_mm512_add_pd(s, zf8[r]), last8[r]), wf);
-                _mm512_storeu_pd(&u->near_pt[r][i], n);
-                _mm512_storeu_pd(&u->far_pt[r][i], f);
-                sum8 = _mm512_add_pd(_mm512_add_pd(sum8, n), f);
-            }
-        }
-        /* Into the quads' sum (any order: only finiteness counts). */
-        sum4 = _mm256_add_pd(_mm512_castpd512_pd256(sum8), _mm512_extractf64x4_pd(sum8, 1));
-    }
-#endif
     for (; first_pair + 3 < UNPROJECT_COLS; first_pair += 4) {
         const int i = first_pair;
         const __m256d s3 = _mm256_add_pd(_mm256_loadu_pd(&c->col[3][i]), axis4[3]);
@@ -719,92 +656,6 @@ static inline int ray_quad(const struct unproject_row *a, const struct unproject
 }
 #endif
 
-#if RENDER_OCTS
-/* Points i to i + 3 of row a in lanes 0 to 3 and of row b in lanes 4 to
- * 7: a block's two rows in one vector. */
-static inline __m512d rows_load8(const double *a, const double *b)
-{
-    return _mm512_insertf64x4(_mm512_castpd256_pd512(_mm256_loadu_pd(a)), _mm256_loadu_pd(b), 1);
-}
-
-/* Eight points given coordinate by coordinate (x, y, z) into out[8][3]:
- * x and y in one 512-bit vector, z in the other operand of two
- * vpermt2ps. */
-static inline void store_points8(float *out, __m256 x, __m256 y, __m256 z)
-{
-    const __m512 xy = _mm512_castpd_ps(
-        _mm512_insertf64x4(_mm512_castpd256_pd512(_mm256_castps_pd(x)), _mm256_castps_pd(y), 1));
-    const __m512 zz = _mm512_castps256_ps512(z); /* only lanes 0-7 (16-23 below) are read */
-    const __m512i first = _mm512_setr_epi32(0, 8, 16, 1, 9, 17, 2, 10, 18, 3, 11, 19, 4, 12, 20, 5);
-    const __m512i rest = _mm512_setr_epi32(13, 21, 6, 14, 22, 7, 15, 23, 0, 0, 0, 0, 0, 0, 0, 0);
-    _mm512_storeu_ps(out, _mm512_permutex2var_ps(xy, first, zz));
-    _mm256_storeu_ps(out + 16, _mm512_castps512_ps256(_mm512_permutex2var_ps(xy, rest, zz)));
-}
-
-/* The two ray_quad calls of block_rays in one: lanes 0 to 3 the rays of
- * points i to i + 3 of the cache's row 0 (neighbours below in row 1),
- * lanes 4 to 7 those of row 1 (below in row 2), every lane ray_quad's
- * operations on the same points in the same order, so the same floats
- * in the same places.  Returns the mask of the lanes whose length is
- * positive and finite. */
-static inline int ray_oct(const struct unproject_cache *c, int i, struct trace_packet *pk,
-                          struct shade_cone cone[], struct shade_eye_rays *rays)
-{
-    const struct unproject_row *r0 = c->rows[0], *r1 = c->rows[1], *r2 = c->rows[2];
-    __m512d p[3], d[3];
-    for (int k = 0; k < 3; k++) {
-        p[k] = rows_load8(&r0->near_pt[k][i], &r1->near_pt[k][i]);
-        d[k] = _mm512_sub_pd(rows_load8(&r0->far_pt[k][i], &r1->far_pt[k][i]), p[k]);
-    }
-    store_points8(&pk->org[0][0], _mm512_cvtpd_ps(p[0]), _mm512_cvtpd_ps(p[1]),
-                  _mm512_cvtpd_ps(p[2]));
-    const __m512d len = _mm512_sqrt_pd(
-        _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(d[0], d[0]), _mm512_mul_pd(d[1], d[1])),
-                      _mm512_mul_pd(d[2], d[2])));
-    const int ok = _mm512_cmp_pd_mask(len, _mm512_setzero_pd(), _CMP_GT_OQ) &
-                   _mm512_cmp_pd_mask(len, _mm512_set1_pd(INFINITY), _CMP_LT_OQ);
-    _mm256_storeu_ps(&pk->tmax[0], _mm512_cvtpd_ps(len));
-    __m256 dir_f[3];
-    for (int k = 0; k < 3; k++) {
-        d[k] = _mm512_div_pd(d[k], len);
-        dir_f[k] = _mm512_cvtpd_ps(d[k]);
-        _mm256_storeu_ps(&rays->dir[k][0], dir_f[k]);
-    }
-    store_points8(&pk->dir[0][0], dir_f[0], dir_f[1], dir_f[2]);
-    /* ray_quad's neighbours: h = 0 the right one's near point (the same
-     * row, point + 1), 1 the lower one's (the next row, the same point),
-     * 2 and 3 their far points. */
-    __m512d dist[4];
-    for (int h = 0; h < 4; h++) {
-        const struct unproject_row *qa = h % 2 ? r1 : r0, *qb = h % 2 ? r2 : r1;
-        const int at = h % 2 ? i : i + 1;
-        __m512d v[3];
-        for (int k = 0; k < 3; k++)
-            v[k] = _mm512_sub_pd(h < 2 ? rows_load8(&qa->near_pt[k][at], &qb->near_pt[k][at])
-                                       : rows_load8(&qa->far_pt[k][at], &qb->far_pt[k][at]),
-                                 p[k]);
-        dist[h] = oct_distance_to_line(v, d);
-    }
-    /* max_left as vmaxpd with y first, as maxpd in ray_pair (the
-     * 512-bit form without {sae} keeps the same rule for NaNs and
-     * zeros: Intel SDM, VMAXPD). */
-    const __m512d zero = _mm512_setzero_pd();
-    const __m512d width = _mm512_max_pd(dist[1], _mm512_max_pd(dist[0], zero));
-    const __m512d growth = _mm512_max_pd(_mm512_sub_pd(dist[3], dist[1]),
-                                         _mm512_max_pd(_mm512_sub_pd(dist[2], dist[0]), zero));
-    const __m512d spread = _mm512_div_pd(growth, len);
-    const __m256 w = _mm512_cvtpd_ps(width), sp = _mm512_cvtpd_ps(spread);
-    _mm256_storeu_ps(&rays->width[0], w);
-    _mm256_storeu_ps(&rays->spread[0], sp);
-    /* Each 128-bit half interleaved (w0 s0 w1 s1 | w4 s4 w5 s5 and
-     * w2 s2 w3 s3 | w6 s6 w7 s7), then the halves put in pixel order. */
-    const __m256 lo = _mm256_unpacklo_ps(w, sp), hi = _mm256_unpackhi_ps(w, sp);
-    _mm256_storeu_ps((float *)&cone[0], _mm256_permute2f128_ps(lo, hi, 0x20));
-    _mm256_storeu_ps((float *)&cone[4], _mm256_permute2f128_ps(lo, hi, 0x31));
-    return ok;
-}
-#endif
-
 /* What block_rays writes beside the packet: the rays by component
  * where the AVX2 copy's eye light reads them (shade.h), else nothing. */
 #if RENDER_QUADS
@@ -825,13 +676,7 @@ struct block_lanes {
 static inline int block_rays(const struct unproject_cache *c, int i, struct trace_packet *pk,
                              struct shade_cone cone[], struct block_lanes *lanes)
 {
-#if RENDER_OCTS
-    /* The whole block one vector. */
-    const int ok = ray_oct(c, i, pk, cone, &lanes->rays);
-    for (int k = 0; k < TRACE_PACKET; k += 4)
-        _mm_storeu_ps(&pk->tmin[k], _mm_setzero_ps());
-    return ok == 255;
-#elif RENDER_QUADS
+#if RENDER_QUADS
     /* A block row a quad. */
     const int ok = ray_quad(c->rows[0], c->rows[1], i, pk, 0, cone, &lanes->rays) &
                    ray_quad(c->rows[1], c->rows[2], i, pk, 4, cone, &lanes->rays);
@@ -1277,12 +1122,11 @@ void render_tile(struct render_pass *pass, uint32_t tile, int worker)
     int y0 = (int)(tile / (uint32_t)pass->tiles_x) * RENDER_TILE_SIZE;
     if (pass->scene.kernels && pass->scene.kernels->closest_packet) {
 #if !defined(RENDER_UNIT_AVX2)
-        /* The AVX2 copy of the packet loop (render_avx2.c) when the
-         * context traces with AVX2 or AVX-512 (trace/kernels.c has then
-         * checked that the CPU and the OS run AVX2). */
-        /* The AVX-512 copy (render_avx512.c) when it traces with
-         * AVX-512 (kernels.c has checked the CPU's AVX-512F, VL, BW and
-         * DQ and the operating system's state for them then). */
+        /* The AVX-512 copy of the packet loop (render_avx512.c, the
+         * eye light's AVX-512 shading) when the context traces with
+         * AVX-512, else the AVX2 copy (render_avx2.c) when it traces
+         * with AVX2 (trace/kernels.c has then checked that the CPU and
+         * the OS run that instruction set). */
         if (pass->scene.kernels->isa >= TRACE_ISA_AVX512) {
             const render_tile_packets_fn avx512 = render_tile_packets_avx512_unit();
             if (avx512) {

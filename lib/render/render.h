@@ -181,9 +181,8 @@ struct shade_context;
 typedef void (*render_tile_packets_fn)(struct render_pass *pass, struct shade_context *sc,
                                        int x0, int y0);
 render_tile_packets_fn render_tile_packets_avx2_unit(void);
-/* The same loop compiled for AVX-512 (render_avx512.c: a row's
- * unprojection and a block's eight camera rays in the 512-bit double
- * lanes, each lane the same operations, so the same pixels), which
+/* The same loop compiled for AVX-512 (render_avx512.c: the same
+ * source, calling the AVX-512 copy of the eye light's shading), which
  * render_tile calls when the scene's traversal table is AVX-512; NULL
  * where that unit is absent. */
 render_tile_packets_fn render_tile_packets_avx512_unit(void);
