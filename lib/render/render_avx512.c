@@ -18,7 +18,10 @@
  */
 #include <stddef.h>
 
-#if defined(__AVX512F__) && defined(__AVX2__) && !defined(RT_NO_SIMD)
+/* The shading unit's condition (shade_eye_avx512.c), whose block
+ * pipeline this copy calls. */
+#if defined(__AVX2__) && defined(__AVX512F__) && defined(__AVX512DQ__) && \
+    defined(__AVX512VL__) && !defined(RT_NO_SIMD)
 /* The AVX2 copy's paths (the camera rays in quads, the eye light's block
  * pipeline), with the AVX-512 shading's pipeline. */
 #define RENDER_UNIT_AVX2 1
