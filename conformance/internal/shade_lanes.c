@@ -27,7 +27,9 @@
  * from right to slivers, textures stretched up to 1000:1, directions
  * from head-on to grazing, widths putting lambda on and next to every
  * level boundary and anywhere in between; at least half the lanes must
- * be decided (the frame's common case, not only its fallback).
+ * be decided (the frame's common case, not only its fallback).  The
+ * same for the AVX-512 copy's eight-lane form (lod_fast_oct, through
+ * shade_lod_fast_avx512_unit) where that unit and the CPU are there.
  * Skipped where the unit is absent or the CPU has no AVX2.
  *
  * Internal test (links the static library).  Non-zero exit on failure.
@@ -283,6 +285,19 @@ int main(void)
     }
     int failures = log2_bound(log2_quad);
     failures += lod_fast_bound(lod_fast);
+    /* The AVX-512 copy's eight-lane form (lod_fast_oct, the four hits in
+     * both halves) where the unit and the CPU have it. */
+    const shade_lod_fast_fn lod_fast8 = shade_lod_fast_avx512_unit();
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+    const int cpu512 = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
+                       __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512bw");
+#else
+    const int cpu512 = 0;
+#endif
+    if (lod_fast8 && cpu512)
+        failures += lod_fast_bound(lod_fast8);
+    else
+        printf("shade_lanes: lod_fast_oct skipped (no AVX-512 unit or CPU)\n");
     struct scene_textures tab;
     scene_textures_init(&tab);
     struct scene_texture *tex = scene_textures_get_or_create(&tab, 1);

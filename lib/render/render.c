@@ -47,6 +47,17 @@
 #define RENDER_QUADS 0
 #endif
 
+/* The eye light's block pipeline of the shading copy for this copy's
+ * instruction set (shade.h): the AVX-512 one in render_avx512.c, the
+ * AVX2 one in render_avx2.c. */
+#if defined(RENDER_UNIT_AVX512)
+#define RENDER_EYE_BLOCK_BEGIN shade_eye_block_begin_avx512
+#define RENDER_EYE_BLOCK_END shade_eye_block_end_avx512
+#else
+#define RENDER_EYE_BLOCK_BEGIN shade_eye_block_begin_avx2
+#define RENDER_EYE_BLOCK_END shade_eye_block_end_avx2
+#endif
+
 /* Packet blocks of the tile loop: 4 x 2 pixels, one packet of
  * TRACE_PACKET camera rays. */
 #define RENDER_BLOCK_W 4
@@ -1011,10 +1022,10 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                     }
 #if defined(RENDER_UNIT_AVX2)
                     /* This block's prefetches, then the last block's texels. */
-                    const int begun = shade_eye_block_begin_avx2(
+                    const int begun = RENDER_EYE_BLOCK_BEGIN(
                         sc, block_dirs, &by_lane.rays, block_hits, px, &pending[pending_slot]);
                     if (pending_full)
-                        shade_eye_block_end_avx2(sc, &pending[pending_slot ^ 1]);
+                        RENDER_EYE_BLOCK_END(sc, &pending[pending_slot ^ 1]);
                     pending_full = begun;
                     pending_slot ^= begun;
 #else
@@ -1082,7 +1093,7 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
     }
 #if defined(RENDER_UNIT_AVX2)
     if (pending_full)
-        shade_eye_block_end_avx2(sc, &pending[pending_slot ^ 1]);
+        RENDER_EYE_BLOCK_END(sc, &pending[pending_slot ^ 1]);
 #endif
 }
 
@@ -1111,9 +1122,18 @@ void render_tile(struct render_pass *pass, uint32_t tile, int worker)
     int y0 = (int)(tile / (uint32_t)pass->tiles_x) * RENDER_TILE_SIZE;
     if (pass->scene.kernels && pass->scene.kernels->closest_packet) {
 #if !defined(RENDER_UNIT_AVX2)
-        /* The AVX2 copy of the packet loop (render_avx2.c) when the
-         * context traces with AVX2 or AVX-512 (trace/kernels.c has then
-         * checked that the CPU and the OS run AVX2). */
+        /* The AVX-512 copy of the packet loop (render_avx512.c, the
+         * eye light's AVX-512 shading) when the context traces with
+         * AVX-512, else the AVX2 copy (render_avx2.c) when it traces
+         * with AVX2 (trace/kernels.c has then checked that the CPU and
+         * the OS run that instruction set). */
+        if (pass->scene.kernels->isa >= TRACE_ISA_AVX512) {
+            const render_tile_packets_fn avx512 = render_tile_packets_avx512_unit();
+            if (avx512) {
+                avx512(pass, &sc, x0, y0);
+                return;
+            }
+        }
         if (pass->scene.kernels->isa >= TRACE_ISA_AVX2) {
             const render_tile_packets_fn avx2 = render_tile_packets_avx2_unit();
             if (avx2) {

@@ -181,6 +181,11 @@ struct shade_context;
 typedef void (*render_tile_packets_fn)(struct render_pass *pass, struct shade_context *sc,
                                        int x0, int y0);
 render_tile_packets_fn render_tile_packets_avx2_unit(void);
+/* The same loop compiled for AVX-512 (render_avx512.c: the same
+ * source, calling the AVX-512 copy of the eye light's shading), which
+ * render_tile calls when the scene's traversal table is AVX-512; NULL
+ * where that unit is absent. */
+render_tile_packets_fn render_tile_packets_avx512_unit(void);
 /* After every tile: rasterises the lines and points of the committed
  * instances over the image (raster.h), on the calling thread. */
 void render_pass_raster(struct render_pass *pass);

@@ -881,10 +881,18 @@ void shade_eye_hits(const struct shade_context *sc, int n, const float *const di
                     const struct shade_cone cone[], float *const rgba[])
 {
 #if !defined(SHADE_UNIT_AVX2)
-    /* The AVX2 copy of this function when the context traces with AVX2
-     * or AVX-512 (shade_eye_avx2.c); the test before the batch's frame
-     * is set up. */
+    /* The AVX-512 copy of this function (shade_eye_avx512.c) when the
+     * context traces with AVX-512, the AVX2 copy (shade_eye_avx2.c) when
+     * it traces with AVX2 (or with AVX-512 where that unit is absent);
+     * the test before the batch's frame is set up. */
     const struct trace_kernels *table = sc->scene->kernels;
+    if (table && table->isa >= TRACE_ISA_AVX512) {
+        const shade_eye_hits_fn avx512 = shade_eye_hits_avx512_unit();
+        if (avx512) {
+            avx512(sc, n, dir, hits, cone, rgba);
+            return;
+        }
+    }
     if (table && table->isa >= TRACE_ISA_AVX2) {
         const shade_eye_hits_fn avx2 = shade_eye_hits_avx2_unit();
         if (avx2) {

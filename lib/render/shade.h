@@ -143,6 +143,11 @@ typedef void (*shade_eye_hits_fn)(const struct shade_context *sc, int n, const f
                                   const struct trace_scene_hit *const hits[],
                                   const struct shade_cone cone[], float *const rgba[]);
 shade_eye_hits_fn shade_eye_hits_avx2_unit(void);
+/* The same compiled for AVX-512 (shade_eye_avx512.c: the same source,
+ * the levels of detail of a block's two quads in one eight-lane vector),
+ * which shade_eye_hits calls when the table is AVX-512; NULL where that
+ * unit is absent. */
+shade_eye_hits_fn shade_eye_hits_avx512_unit(void);
 
 #if defined(__AVX2__) && !defined(RT_NO_SIMD)
 /*
@@ -177,6 +182,15 @@ int shade_eye_block_begin_avx2(const struct shade_context *sc, const float *cons
                                const struct trace_scene_hit *const hits[], float *const rgba[],
                                struct shade_eye_pending *pending);
 void shade_eye_block_end_avx2(const struct shade_context *sc, struct shade_eye_pending *pending);
+/* The same two steps in the AVX-512 copy (shade_eye_avx512.c), for the
+ * frame's AVX-512 packet loop (render_avx512.c); absent, and not called,
+ * where the compiler does not target AVX-512. */
+int shade_eye_block_begin_avx512(const struct shade_context *sc, const float *const dir[],
+                                 const struct shade_eye_rays *rays,
+                                 const struct trace_scene_hit *const hits[], float *const rgba[],
+                                 struct shade_eye_pending *pending);
+void shade_eye_block_end_avx512(const struct shade_context *sc,
+                                struct shade_eye_pending *pending);
 #endif
 
 /* That unit's eight-lane texture lookup (scene_texture_sample_lod8,
@@ -206,6 +220,9 @@ typedef int (*shade_lod_fast_fn)(const struct surface_lod *l, int level_count,
                                  const float dir[4][3], const float ng[4][3],
                                  const float width[4], float fast[4], float ref[4]);
 shade_lod_fast_fn shade_lod_fast_avx2_unit(void);
+/* The AVX-512 copy's eight-lane form of it (lod_fast_oct, the four hits
+ * twice), for the same test; NULL where that unit is absent. */
+shade_lod_fast_fn shade_lod_fast_avx512_unit(void);
 
 /*
  * Whitted shading's shadow rays of a 4 x 2 block's camera rays, one

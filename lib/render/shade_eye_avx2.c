@@ -106,7 +106,9 @@ static int lod_fast_lanes(const struct surface_lod *l, int level_count, const fl
             g[k] = _mm256_set_pd(ng[3][k], ng[2][k], ng[1][k], ng[0][k]);
         }
         const __m256d w = _mm256_set_pd(width[3], width[2], width[1], width[0]);
-        mask = lod_fast_quad(&f, l->n, d, g, w, _mm256_set1_pd(lod_top(level_count)), fast);
+        struct lod_fast_broadcast b;
+        lod_fast_quad_lanes(&f, l->n, &b);
+        mask = lod_fast_quad(&b, d, g, w, _mm256_set1_pd(lod_top(level_count)), fast);
     }
     for (int i = 0; i < 4; i++)
         ref[i] = lod_ray(l, level_count, ng[i], dir[i], width[i]);

@@ -23,6 +23,9 @@
 #include <immintrin.h>
 #define SURFACE_QUADS 1 /* the AVX2 copy (render/shade_eye_avx2.c) */
 #endif
+#if defined(__AVX2__) && defined(__AVX512F__) && defined(__AVX512DQ__) && defined(__AVX512VL__)
+#define SURFACE_OCTS 1 /* the AVX-512 copy (render/shade_eye_avx512.c) */
+#endif
 #else
 #define SURFACE_PAIRS 0
 #endif
@@ -883,20 +886,35 @@ static void lod_fast_init(const struct surface_lod *l, struct surface_lod_fast *
         f->state = 1;
 }
 
-/* lod_quad's lambdas of four hits on f's triangle (d their directions,
+/* A triangle part's values that lod_fast_quad reads in every lane (its
+ * unit normal, f's texel map and bound), broadcast once for a block's
+ * two quads: the same doubles in every lane as broadcast per quad. */
+struct lod_fast_broadcast {
+    __m256d n[3], m0[3], m1[3];
+    __m256d sin2;
+};
+
+SURFACE_INLINE void lod_fast_quad_lanes(const struct surface_lod_fast *f, const double unit[3],
+                                        struct lod_fast_broadcast *b)
+{
+    for (int k = 0; k < 3; k++) {
+        b->n[k] = _mm256_set1_pd(unit[k]);
+        b->m0[k] = _mm256_set1_pd(f->m[0][k]);
+        b->m1[k] = _mm256_set1_pd(f->m[1][k]);
+    }
+    b->sin2 = _mm256_set1_pd(f->sin2);
+}
+
+/* lod_quad's lambdas of four hits on b's triangle (d their directions,
  * g their facing normals, width their cones' widths at the hits, top the
  * texture's lod_top) where lod_fast's margin decides them: writes those
  * into lambda and returns their mask. */
-SURFACE_INLINE int lod_fast_quad(const struct surface_lod_fast *f, const double unit[3],
-                                 const __m256d d[3], const __m256d g[3], __m256d width,
-                                 __m256d top, float lambda[4])
+SURFACE_INLINE int lod_fast_quad(const struct lod_fast_broadcast *b, const __m256d d[3],
+                                 const __m256d g[3], __m256d width, __m256d top,
+                                 float lambda[4])
 {
-    __m256d n[3], m0[3], m1[3], c[3];
-    for (int k = 0; k < 3; k++) {
-        n[k] = _mm256_set1_pd(unit[k]);
-        m0[k] = _mm256_set1_pd(f->m[0][k]);
-        m1[k] = _mm256_set1_pd(f->m[1][k]);
-    }
+    const __m256d *n = b->n, *m0 = b->m0, *m1 = b->m1;
+    __m256d c[3];
     quad_cross(n, d, c);
     const __m256d dd = quad_dot(d, d), s = quad_dot(c, c);
     const __m256d gd = quad_dot(g, d), gg = _mm256_mul_pd(gd, gd);
@@ -914,8 +932,7 @@ SURFACE_INLINE int lod_fast_quad(const struct surface_lod_fast *f, const double 
     __m256d ok = _mm256_and_pd(_mm256_cmp_pd(dd, _mm256_set1_pd(0.25), _CMP_GE_OQ),
                                _mm256_cmp_pd(dd, _mm256_set1_pd(4.0), _CMP_LE_OQ));
     ok = _mm256_and_pd(ok, _mm256_cmp_pd(_mm256_mul_pd(s, gg),
-                                         _mm256_mul_pd(_mm256_set1_pd(f->sin2),
-                                                       _mm256_mul_pd(dd, dd)),
+                                         _mm256_mul_pd(b->sin2, _mm256_mul_pd(dd, dd)),
                                          _CMP_GE_OQ));
     ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(ww, _mm256_set1_pd(0x1p-200), _CMP_GE_OQ),
                                          _mm256_cmp_pd(ww, _mm256_set1_pd(0x1p200), _CMP_LE_OQ)));
@@ -926,6 +943,86 @@ SURFACE_INLINE int lod_fast_quad(const struct surface_lod_fast *f, const double 
     return _mm256_movemask_pd(ok) &
            lod_decide_quad(x, top, LOD_FAST_RELATIVE, LOD_FAST_ABSOLUTE, lambda);
 }
+
+#if defined(SURFACE_OCTS)
+/* quad_dot and quad_cross in eight lanes. */
+static inline __m512d oct_dot(const __m512d a[3], const __m512d b[3])
+{
+    return _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(a[0], b[0]), _mm512_mul_pd(a[1], b[1])),
+                         _mm512_mul_pd(a[2], b[2]));
+}
+
+static inline void oct_cross(const __m512d a[3], const __m512d b[3], __m512d out[3])
+{
+    out[0] = _mm512_sub_pd(_mm512_mul_pd(a[1], b[2]), _mm512_mul_pd(a[2], b[1]));
+    out[1] = _mm512_sub_pd(_mm512_mul_pd(a[2], b[0]), _mm512_mul_pd(a[0], b[2]));
+    out[2] = _mm512_sub_pd(_mm512_mul_pd(a[0], b[1]), _mm512_mul_pd(a[1], b[0]));
+}
+
+/* lod_decide_quad of eight footprints, lanes_log2_8 for lanes_log2_4:
+ * the same comparisons, conversions and choices lane by lane. */
+SURFACE_INLINE int lod_decide_oct(__m512d x, __m512d top, double relative, double absolute,
+                                  float lambda[8])
+{
+    const __mmask8 below = _mm512_cmp_pd_mask(x, _mm512_set1_pd(1.0 - relative), _CMP_LT_OQ);
+    const __mmask8 beyond =
+        _mm512_cmp_pd_mask(x, _mm512_mul_pd(top, _mm512_set1_pd(1.0 + relative)), _CMP_GT_OQ);
+    const __mmask8 inside =
+        _mm512_cmp_pd_mask(x, _mm512_set1_pd(1.0 + relative), _CMP_GT_OQ) &
+        _mm512_cmp_pd_mask(x, _mm512_mul_pd(top, _mm512_set1_pd(1.0 - relative)), _CMP_LT_OQ);
+    const __m512d lg = lanes_log2_8(x);
+    const __m256 lg_f = _mm512_cvtpd_ps(lg);
+    const __m512d margin = _mm512_set1_pd(absolute);
+    const __mmask8 exact =
+        _mm256_cmp_ps_mask(_mm512_cvtpd_ps(_mm512_sub_pd(lg, margin)), lg_f, _CMP_EQ_OQ) &
+        _mm256_cmp_ps_mask(_mm512_cvtpd_ps(_mm512_add_pd(lg, margin)), lg_f, _CMP_EQ_OQ);
+    _mm256_storeu_ps(lambda,
+                     _mm256_mask_blend_ps(below,
+                                          _mm256_mask_blend_ps(beyond, lg_f,
+                                                               _mm256_set1_ps(INFINITY)),
+                                          _mm256_set1_ps(-INFINITY)));
+    return (below | beyond) | (inside & exact);
+}
+
+/* lod_fast_quad of eight hits (a block's two quads in one vector, lane i
+ * hit i): each lane its operations in their order, so the same x, the
+ * same conditions and the same lambdas. */
+SURFACE_INLINE int lod_fast_oct(const struct surface_lod_fast *f, const double unit[3],
+                                const __m512d d[3], const __m512d g[3], __m512d width,
+                                __m512d top, float lambda[8])
+{
+    __m512d n[3], m0[3], m1[3], c[3];
+    for (int k = 0; k < 3; k++) {
+        n[k] = _mm512_set1_pd(unit[k]);
+        m0[k] = _mm512_set1_pd(f->m[0][k]);
+        m1[k] = _mm512_set1_pd(f->m[1][k]);
+    }
+    oct_cross(n, d, c);
+    const __m512d dd = oct_dot(d, d), s = oct_dot(c, c);
+    const __m512d gd = oct_dot(g, d), gg = _mm512_mul_pd(gd, gd);
+    const __m512d u0 = oct_dot(m0, d), u1 = oct_dot(m1, d);
+    const __m512d v0 = oct_dot(m0, c), v1 = oct_dot(m1, c);
+    const __m512d p = _mm512_add_pd(_mm512_mul_pd(u0, u0), _mm512_mul_pd(u1, u1));
+    const __m512d q = _mm512_add_pd(_mm512_mul_pd(v0, v0), _mm512_mul_pd(v1, v1));
+    const __m512d ww = _mm512_mul_pd(width, width);
+    /* vmaxpd's rule (the second operand unless the first is greater) in
+     * every encoding without {sae}: Intel SDM, VMAXPD. */
+    const __m512d num = _mm512_max_pd(_mm512_mul_pd(p, dd), _mm512_mul_pd(q, gg));
+    const __m512d x =
+        _mm512_sqrt_pd(_mm512_div_pd(_mm512_mul_pd(ww, num), _mm512_mul_pd(s, gg)));
+    const __m512d tiny = _mm512_set1_pd(0x1p-500), huge = _mm512_set1_pd(0x1p500);
+    __mmask8 ok = _mm512_cmp_pd_mask(dd, _mm512_set1_pd(0.25), _CMP_GE_OQ) &
+                  _mm512_cmp_pd_mask(dd, _mm512_set1_pd(4.0), _CMP_LE_OQ);
+    ok &= _mm512_cmp_pd_mask(_mm512_mul_pd(s, gg),
+                             _mm512_mul_pd(_mm512_set1_pd(f->sin2), _mm512_mul_pd(dd, dd)),
+                             _CMP_GE_OQ);
+    ok &= _mm512_cmp_pd_mask(ww, _mm512_set1_pd(0x1p-200), _CMP_GE_OQ) &
+          _mm512_cmp_pd_mask(ww, _mm512_set1_pd(0x1p200), _CMP_LE_OQ);
+    ok &= _mm512_cmp_pd_mask(p, tiny, _CMP_GE_OQ) & _mm512_cmp_pd_mask(p, huge, _CMP_LE_OQ);
+    ok &= _mm512_cmp_pd_mask(q, tiny, _CMP_GE_OQ) & _mm512_cmp_pd_mask(q, huge, _CMP_LE_OQ);
+    return ok & lod_decide_oct(x, top, LOD_FAST_RELATIVE, LOD_FAST_ABSOLUTE, lambda);
+}
+#endif
 
 /* lod_quad of four textures' hits t[i] (their lodp, dir, ng, width and
  * texture), each lambda into t[i]. */
@@ -2063,6 +2160,41 @@ int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene
             if (!c->fast.state)
                 lod_fast_init(tri, &c->fast);
             const int use_fast = c->fast.state > 0;
+#if defined(SURFACE_OCTS)
+            /* Both quads' lod_fast_quad in one vector (lod_fast_oct),
+             * then lod_quad's chain for a quad it did not decide whole,
+             * as below (lod_fast_quad wrote that quad's four lambdas
+             * before its chain there too; lod_quad_lanes writes them all
+             * again). */
+            int fast8 = 0;
+            if (use_fast) {
+                __m512d d8[3], g8[3];
+                for (int k = 0; k < 3; k++) {
+                    d8[k] = _mm512_cvtps_pd(dv[k]);
+                    g8[k] = _mm512_cvtps_pd(g[k]);
+                }
+                fast8 = lod_fast_oct(&c->fast, tri->n, d8, g8, _mm512_cvtps_pd(wv),
+                                     _mm512_set1_pd(top), lambda);
+            }
+            for (int h = 0; h < TRACE_PACKET / 4; h++) {
+                if ((fast8 >> 4 * h & 15) == 15)
+                    continue;
+#define HALF(v) _mm256_cvtps_pd(h ? _mm256_extractf128_ps(v, 1) : _mm256_castps256_ps128(v))
+                __m256d d[3], gd[3];
+                for (int k = 0; k < 3; k++) {
+                    d[k] = HALF(dv[k]);
+                    gd[k] = HALF(g[k]);
+                }
+                lod_quad_lanes(l4, 1, d, gd, HALF(wv), top, tx->level_count, h, width, lane_g,
+                               dir, lambda);
+#undef HALF
+            }
+#else
+            /* The triangle part's lanes once for both quads, and top's. */
+            struct lod_fast_broadcast fast_lanes;
+            if (use_fast)
+                lod_fast_quad_lanes(&c->fast, tri->n, &fast_lanes);
+            const __m256d top4 = _mm256_set1_pd(top);
             for (int h = 0; h < TRACE_PACKET / 4; h++) {
 #define HALF(v) _mm256_cvtps_pd(h ? _mm256_extractf128_ps(v, 1) : _mm256_castps256_ps128(v))
                 __m256d d[3], gd[3];
@@ -2073,13 +2205,13 @@ int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene
                 /* lod_fast_quad where its margin decides all four, else
                  * lod_quad's chain for the quad (the same lambdas). */
                 if (use_fast &&
-                    lod_fast_quad(&c->fast, tri->n, d, gd, HALF(wv), _mm256_set1_pd(top),
-                                  &lambda[4 * h]) == 15)
+                    lod_fast_quad(&fast_lanes, d, gd, HALF(wv), top4, &lambda[4 * h]) == 15)
                     continue;
                 lod_quad_lanes(l4, 1, d, gd, HALF(wv), top, tx->level_count, h, width, lane_g,
                                dir, lambda);
 #undef HALF
             }
+#endif
         }
         deferred = lanes_texture_end(tx, lambda, lane_st, amb, dif, defer);
     }

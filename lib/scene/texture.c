@@ -690,12 +690,17 @@ static inline void bilinear8_offsets(const struct scene_texture *tex, __m256i le
     /* Rows j w: at most 2^14 by 2^14, exact in int32. */
     const __m256i r0 = _mm256_mullo_epi32(j0, w);
     const __m256i r1 = _mm256_mullo_epi32(j1, w);
-#define OFFSET8(r, c) _mm256_add_epi32(first, _mm256_slli_epi32(_mm256_add_epi32(r, c), 2))
-    off[0] = OFFSET8(r0, i0);
-    off[1] = OFFSET8(r0, i1);
-    off[2] = OFFSET8(r1, i0);
-    off[3] = OFFSET8(r1, i1);
-#undef OFFSET8
+    /* first + 4 (r + i) as (first + 4 r) + 4 i: each row's start and
+     * each column's bytes once for the four corners (lane arithmetic is
+     * modulo 2^32, so the two forms are the same integer; both are the
+     * byte offset, below 2^31). */
+    const __m256i row0 = _mm256_add_epi32(first, _mm256_slli_epi32(r0, 2));
+    const __m256i row1 = _mm256_add_epi32(first, _mm256_slli_epi32(r1, 2));
+    const __m256i col0 = _mm256_slli_epi32(i0, 2), col1 = _mm256_slli_epi32(i1, 2);
+    off[0] = _mm256_add_epi32(row0, col0);
+    off[1] = _mm256_add_epi32(row0, col1);
+    off[2] = _mm256_add_epi32(row1, col0);
+    off[3] = _mm256_add_epi32(row1, col1);
 }
 
 /* The four texels at bilinear8_offsets' byte offsets off. */
