@@ -855,11 +855,40 @@ static __m128 upper_pair(__m128 v)
 }
 #endif
 
-/* Packet p's lanes from leaf slots [slot, slot + n), n <= 4; lanes past n
- * repeat the last triangle. */
-static void fill_packet(struct tri4_packet *p, const float *tri, const uint32_t *prim_index,
-                        uint32_t slot, uint32_t n)
+/* Where a packet's triangles are read: tri (accel_gather_triangles' leaf
+ * order, nine floats a slot) or, tri NULL, the mesh itself, slot s's
+ * triangle being indices[3 * prim_index[s] ..] into positions (what the
+ * gather copies into tri's slot s: the same nine floats). */
+struct packet_source {
+    const float *tri;
+    const float *positions;
+    const uint32_t *indices;
+    const uint32_t *prim_index;
+};
+
+/* The nine floats of slot `slot` (packet_source): a pointer into tri, or
+ * the triangle's three vertices copied into buf. */
+static const float *slot_floats(const struct packet_source *src, uint32_t slot, float buf[12])
 {
+    if (src->tri)
+        return &src->tri[9 * (size_t)slot];
+    const uint32_t *vi = &src->indices[3 * (size_t)src->prim_index[slot]];
+    for (int corner = 0; corner < 3; corner++) {
+        const float *v = &src->positions[3 * (size_t)vi[corner]];
+        buf[3 * corner + 0] = v[0];
+        buf[3 * corner + 1] = v[1];
+        buf[3 * corner + 2] = v[2];
+    }
+    return buf;
+}
+
+/* Packet p's lanes from leaf slots [slot, slot + n), n <= 4, read from
+ * src; lanes past n repeat the last triangle.  With prim_index, the
+ * lanes' primitives from it too. */
+static void fill_packet(struct tri4_packet *p, const struct packet_source *src,
+                        const uint32_t *prim_index, uint32_t slot, uint32_t n)
+{
+    float buf[4][12];
 #if defined(__SSE2__) && !defined(RT_NO_SIMD)
     /* The four lanes at once, the same values as accel_set_packet_lane
      * and the repeats below: a repeated lane is lane n - 1's triangle
@@ -870,7 +899,7 @@ static void fill_packet(struct tri4_packet *p, const float *tri, const uint32_t 
      * collapse's.) */
     const float *row[4];
     for (uint32_t l = 0; l < 4; l++)
-        row[l] = &tri[9 * (size_t)(slot + (l < n ? l : n - 1))];
+        row[l] = l < n ? slot_floats(src, slot + l, buf[l]) : row[n - 1];
     __m128 a0 = _mm_loadu_ps(row[0]), a1 = _mm_loadu_ps(row[1]);
     __m128 a2 = _mm_loadu_ps(row[2]), a3 = _mm_loadu_ps(row[3]);
     _MM_TRANSPOSE4_PS(a0, a1, a2, a3);
@@ -907,7 +936,7 @@ static void fill_packet(struct tri4_packet *p, const float *tri, const uint32_t 
     }
 #else
     for (uint32_t l = 0; l < n; l++) {
-        accel_set_packet_lane(p, l, &tri[9 * (size_t)(slot + l)]);
+        accel_set_packet_lane(p, l, slot_floats(src, slot + l, buf[l]));
         if (prim_index)
             p->prim[l] = prim_index[slot + l];
     }
@@ -971,7 +1000,10 @@ struct collapse_item {
  * are the same on any number of threads and with or without the cut. */
 struct collapse {
     const struct bvh *bvh;
+    /* Non-NULL when the leaves hold triangles (packets are written), NULL
+     * for the top level over instances; the packets read src. */
     const float *tri;
+    struct packet_source src;
     uint32_t width;
     int merge_left; /* close_small_lanes applies */
     const struct dp *dp; /* the optimal collapse's costs (triangles), else greedy */
@@ -1086,7 +1118,7 @@ static void write_scratch(const struct collapse *c, const struct scratch_node *s
             uint32_t p = s->child[l] + child_base[0] + j / 4;
             uint32_t n = s->count[l] - j < 4 ? s->count[l] - j : 4;
             c->packet_slot[p] = slot + j;
-            fill_packet(&c->packets[p], c->tri, c->bvh->prim_index, slot + j, n);
+            fill_packet(&c->packets[p], &c->src, c->bvh->prim_index, slot + j, n);
         }
     }
     if (width == 4)
@@ -1303,11 +1335,16 @@ static float leaf_extent_mean(const struct bvh4 *w)
     return lanes ? (float)(sum / lanes) : 0.0f;
 }
 
-/* accel_collapse_wide_reuse in this unit's instruction set. */
-static int collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *tri,
-                         uint32_t width, struct rt_pool *pool, struct rt_large_block *spare,
+/* accel_collapse_wide_source in this unit's instruction set. */
+static int collapse_wide(struct bvh4 *out, const struct bvh *bvh,
+                         const struct collapse_triangles *tris, uint32_t width,
+                         struct rt_pool *pool, struct rt_large_block *spare,
                          enum bvh_collapse collapse)
 {
+    /* Whether the leaves hold triangles: the rest of the collapse asks
+     * only that (the nodes do not depend on where the triangles are
+     * read). */
+    const float *tri = tris->tri ? tris->tri : tris->positions;
     memset(out, 0, sizeof(*out));
     if (width != 4 && width != 8)
         return -1;
@@ -1331,6 +1368,10 @@ static int collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *t
     memset(&dp, 0, sizeof(dp));
     c.bvh = bvh;
     c.tri = tri;
+    c.src.tri = tris->tri;
+    c.src.positions = tris->positions;
+    c.src.indices = tris->indices;
+    c.src.prim_index = bvh->prim_index;
     c.width = width;
     c.item_next = &item_next;
     /* Not zeroed: each entry is written in full (gather, number_level)
@@ -1498,18 +1539,35 @@ fail:
     return -1;
 }
 
-int accel_collapse_wide_quality(struct bvh4 *out, const struct bvh *bvh, const float *tri,
-                                uint32_t width, struct rt_pool *pool,
-                                struct rt_large_block *spare, enum bvh_collapse collapse)
+int accel_collapse_wide_source(struct bvh4 *out, const struct bvh *bvh,
+                               const struct collapse_triangles *tris, uint32_t width,
+                               struct rt_pool *pool, struct rt_large_block *spare,
+                               enum bvh_collapse collapse)
 {
 #if !defined(COLLAPSE_UNIT_AVX2)
     /* The same source compiled for AVX2, where it runs
      * (collapse4_avx2.c): the same bytes in fewer instructions. */
     const collapse_wide_fn avx2 = accel_collapse_wide_avx2_unit();
     if (avx2)
-        return avx2(out, bvh, tri, width, pool, spare, collapse);
+        return avx2(out, bvh, tris, width, pool, spare, collapse);
 #endif
-    return collapse_wide(out, bvh, tri, width, pool, spare, collapse);
+    return collapse_wide(out, bvh, tris, width, pool, spare, collapse);
+}
+
+int accel_collapse_wide_quality(struct bvh4 *out, const struct bvh *bvh, const float *tri,
+                                uint32_t width, struct rt_pool *pool,
+                                struct rt_large_block *spare, enum bvh_collapse collapse)
+{
+    const struct collapse_triangles tris = {tri, NULL, NULL};
+    return accel_collapse_wide_source(out, bvh, &tris, width, pool, spare, collapse);
+}
+
+int accel_collapse_wide_mesh(struct bvh4 *out, const struct bvh *bvh, const float *positions,
+                             const uint32_t *indices, uint32_t width, struct rt_pool *pool,
+                             struct rt_large_block *spare, enum bvh_collapse collapse)
+{
+    const struct collapse_triangles tris = {NULL, positions, indices};
+    return accel_collapse_wide_source(out, bvh, &tris, width, pool, spare, collapse);
 }
 
 int accel_collapse_wide_reuse(struct bvh4 *out, const struct bvh *bvh, const float *tri,
@@ -1518,11 +1576,12 @@ int accel_collapse_wide_reuse(struct bvh4 *out, const struct bvh *bvh, const flo
     return accel_collapse_wide_quality(out, bvh, tri, width, pool, spare, BVH_COLLAPSE_GREEDY);
 }
 
-int accel_collapse_wide_portable(struct bvh4 *out, const struct bvh *bvh, const float *tri,
-                                 uint32_t width, struct rt_pool *pool,
-                                 struct rt_large_block *spare, enum bvh_collapse collapse)
+int accel_collapse_wide_portable(struct bvh4 *out, const struct bvh *bvh,
+                                 const struct collapse_triangles *tris, uint32_t width,
+                                 struct rt_pool *pool, struct rt_large_block *spare,
+                                 enum bvh_collapse collapse)
 {
-    return collapse_wide(out, bvh, tri, width, pool, spare, collapse);
+    return collapse_wide(out, bvh, tris, width, pool, spare, collapse);
 }
 
 int accel_collapse_wide_pool(struct bvh4 *out, const struct bvh *bvh, const float *tri,
@@ -1573,7 +1632,8 @@ void accel_refit4(struct bvh4 *wide, const struct bvh *bvh, const float *tri)
         uint32_t n = 1;
         while (n < 4 && (wide->packets[p].prim[n] != wide->packets[p].prim[n - 1]))
             n++;
-        fill_packet(&wide->packets[p], tri, NULL, slot, n);
+        const struct packet_source src = {tri, NULL, NULL, NULL};
+        fill_packet(&wide->packets[p], &src, NULL, slot, n);
     }
 }
 
