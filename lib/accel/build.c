@@ -191,10 +191,16 @@ float *accel_gather_triangles_pool(const struct bvh *bvh, const float *positions
                                   sizeof(*tri));
     if (!tri)
         return NULL;
+    accel_gather_triangles_into(bvh, positions, indices, pool, tri);
+    return tri;
+}
+
+void accel_gather_triangles_into(const struct bvh *bvh, const float *positions,
+                                 const uint32_t *indices, struct rt_pool *pool, float *tri)
+{
     struct gather_job g = {bvh, positions, indices, tri};
     rt_pool_run_range(pool, 0, bvh->prim_count, GATHER_CHUNK, GATHER_PARALLEL_MIN, gather_slots,
                       &g);
-    return tri;
 }
 
 /* The triangle boxes' inputs and output. */

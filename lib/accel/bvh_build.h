@@ -150,6 +150,13 @@ float *accel_gather_triangles(const struct bvh *bvh, const float *positions,
 struct rt_pool;
 float *accel_gather_triangles_pool(const struct bvh *bvh, const float *positions,
                                    const uint32_t *indices, struct rt_pool *pool);
+/* accel_gather_triangles_pool into tri, an array of at least
+ * 9 * bvh->prim_count floats the caller owns (a replaced structure's
+ * copy, whose pages are in memory already): every float of the first
+ * 9 * prim_count written, so the same floats as a fresh array.  Cannot
+ * fail. */
+void accel_gather_triangles_into(const struct bvh *bvh, const float *positions,
+                                 const uint32_t *indices, struct rt_pool *pool, float *tri);
 
 /* The bounds of triangles 0..count-1 (vertex indices indices[3j..3j+2]
  * into positions, xyz per vertex; not checked), each grown from an empty
