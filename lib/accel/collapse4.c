@@ -855,40 +855,22 @@ static __m128 upper_pair(__m128 v)
 }
 #endif
 
-/* Where a packet's triangles are read: tri (accel_gather_triangles' leaf
- * order, nine floats a slot) or, tri NULL, the mesh itself, slot s's
- * triangle being indices[3 * prim_index[s] ..] into positions (what the
- * gather copies into tri's slot s: the same nine floats). */
+/* Where the packets' triangles are read when there is no gathered copy
+ * (collapse_mesh.h): slot s's triangle is indices[3 * prim_index[s] ..]
+ * into positions, the nine floats the gather would copy into its slot. */
 struct packet_source {
-    const float *tri;
     const float *positions;
     const uint32_t *indices;
     const uint32_t *prim_index;
 };
 
-/* The nine floats of slot `slot` (packet_source): a pointer into tri, or
- * the triangle's three vertices copied into buf. */
-static const float *slot_floats(const struct packet_source *src, uint32_t slot, float buf[12])
+/* Packet p's lanes from the nine floats of row[0 .. 4) (leaf slots
+ * [slot, slot + n), n <= 4: lanes past n repeat the last triangle, row[l]
+ * = row[n - 1] there); with prim_index, the lanes' primitives from it
+ * too. */
+static inline void fill_packet_rows(struct tri4_packet *p, const float *const row[4],
+                                    const uint32_t *prim_index, uint32_t slot, uint32_t n)
 {
-    if (src->tri)
-        return &src->tri[9 * (size_t)slot];
-    const uint32_t *vi = &src->indices[3 * (size_t)src->prim_index[slot]];
-    for (int corner = 0; corner < 3; corner++) {
-        const float *v = &src->positions[3 * (size_t)vi[corner]];
-        buf[3 * corner + 0] = v[0];
-        buf[3 * corner + 1] = v[1];
-        buf[3 * corner + 2] = v[2];
-    }
-    return buf;
-}
-
-/* Packet p's lanes from leaf slots [slot, slot + n), n <= 4, read from
- * src; lanes past n repeat the last triangle.  With prim_index, the
- * lanes' primitives from it too. */
-static void fill_packet(struct tri4_packet *p, const struct packet_source *src,
-                        const uint32_t *prim_index, uint32_t slot, uint32_t n)
-{
-    float buf[4][12];
 #if defined(__SSE2__) && !defined(RT_NO_SIMD)
     /* The four lanes at once, the same values as accel_set_packet_lane
      * and the repeats below: a repeated lane is lane n - 1's triangle
@@ -897,9 +879,6 @@ static void fill_packet(struct tri4_packet *p, const struct packet_source *src,
      * 0-3, 4-7, 5-8), transposed into the nine components' lanes.  (Up
      * to 64 instructions a triangle in the scalar form, a fifth of the
      * collapse's.) */
-    const float *row[4];
-    for (uint32_t l = 0; l < 4; l++)
-        row[l] = l < n ? slot_floats(src, slot + l, buf[l]) : row[n - 1];
     __m128 a0 = _mm_loadu_ps(row[0]), a1 = _mm_loadu_ps(row[1]);
     __m128 a2 = _mm_loadu_ps(row[2]), a3 = _mm_loadu_ps(row[3]);
     _MM_TRANSPOSE4_PS(a0, a1, a2, a3);
@@ -936,7 +915,7 @@ static void fill_packet(struct tri4_packet *p, const struct packet_source *src,
     }
 #else
     for (uint32_t l = 0; l < n; l++) {
-        accel_set_packet_lane(p, l, slot_floats(src, slot + l, buf[l]));
+        accel_set_packet_lane(p, l, row[l]);
         if (prim_index)
             p->prim[l] = prim_index[slot + l];
     }
@@ -951,6 +930,41 @@ static void fill_packet(struct tri4_packet *p, const struct packet_source *src,
             p->prim[l] = p->prim[n - 1];
     }
 #endif
+}
+
+/* Packet p's lanes from leaf slots [slot, slot + n), n <= 4, of tri
+ * (accel_gather_triangles' leaf order); lanes past n repeat the last
+ * triangle. */
+static void fill_packet(struct tri4_packet *p, const float *tri, const uint32_t *prim_index,
+                        uint32_t slot, uint32_t n)
+{
+    const float *row[4];
+    for (uint32_t l = 0; l < 4; l++)
+        row[l] = &tri[9 * (size_t)(slot + (l < n ? l : n - 1))];
+    fill_packet_rows(p, row, prim_index, slot, n);
+}
+
+/* fill_packet with the triangles read from the mesh (packet_source). */
+static void fill_packet_mesh(struct tri4_packet *p, const struct packet_source *src,
+                             const uint32_t *prim_index, uint32_t slot, uint32_t n)
+{
+    float buf[4][12];
+    const float *row[4];
+    for (uint32_t l = 0; l < 4; l++) {
+        if (l >= n) {
+            row[l] = row[n - 1];
+            continue;
+        }
+        const uint32_t *vi = &src->indices[3 * (size_t)src->prim_index[slot + l]];
+        for (int corner = 0; corner < 3; corner++) {
+            const float *v = &src->positions[3 * (size_t)vi[corner]];
+            buf[l][3 * corner + 0] = v[0];
+            buf[l][3 * corner + 1] = v[1];
+            buf[l][3 * corner + 2] = v[2];
+        }
+        row[l] = buf[l];
+    }
+    fill_packet_rows(p, row, prim_index, slot, n);
 }
 
 /*
@@ -1001,8 +1015,9 @@ struct collapse_item {
 struct collapse {
     const struct bvh *bvh;
     /* Non-NULL when the leaves hold triangles (packets are written), NULL
-     * for the top level over instances; the packets read src. */
+     * for the top level over instances; the packets read src_tri or src. */
     const float *tri;
+    const float *src_tri; /* the gathered copy, else NULL and src */
     struct packet_source src;
     uint32_t width;
     int merge_left; /* close_small_lanes applies */
@@ -1118,7 +1133,10 @@ static void write_scratch(const struct collapse *c, const struct scratch_node *s
             uint32_t p = s->child[l] + child_base[0] + j / 4;
             uint32_t n = s->count[l] - j < 4 ? s->count[l] - j : 4;
             c->packet_slot[p] = slot + j;
-            fill_packet(&c->packets[p], &c->src, c->bvh->prim_index, slot + j, n);
+            if (c->src_tri)
+                fill_packet(&c->packets[p], c->src_tri, c->bvh->prim_index, slot + j, n);
+            else
+                fill_packet_mesh(&c->packets[p], &c->src, c->bvh->prim_index, slot + j, n);
         }
     }
     if (width == 4)
@@ -1368,7 +1386,7 @@ static int collapse_wide(struct bvh4 *out, const struct bvh *bvh,
     memset(&dp, 0, sizeof(dp));
     c.bvh = bvh;
     c.tri = tri;
-    c.src.tri = tris->tri;
+    c.src_tri = tris->tri;
     c.src.positions = tris->positions;
     c.src.indices = tris->indices;
     c.src.prim_index = bvh->prim_index;
@@ -1632,8 +1650,7 @@ void accel_refit4(struct bvh4 *wide, const struct bvh *bvh, const float *tri)
         uint32_t n = 1;
         while (n < 4 && (wide->packets[p].prim[n] != wide->packets[p].prim[n - 1]))
             n++;
-        const struct packet_source src = {tri, NULL, NULL, NULL};
-        fill_packet(&wide->packets[p], &src, NULL, slot, n);
+        fill_packet(&wide->packets[p], tri, NULL, slot, n);
     }
 }
 
