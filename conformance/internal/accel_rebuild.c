@@ -74,6 +74,8 @@ static void check_mesh(const char *name, const struct tg_mesh *m, struct rt_pool
             bvh_build_params_default(&params);
             params.builder = BVH_BUILDER_BINNED_SAH;
             params.wide_layout = layout == 0 ? 0 : layout == 1 ? 4 : 8;
+            /* These meshes are below the default's 32 MiB of triangles. */
+            params.rebuild_reuse_min_bytes = 0;
             const enum scene_accel_builder builder =
                 par ? SCENE_ACCEL_PARALLEL : SCENE_ACCEL_SERIAL;
             struct rt_pool *p = par ? pool : NULL;
@@ -171,6 +173,39 @@ static void check_mesh(const char *name, const struct tg_mesh *m, struct rt_pool
     free(pos);
 }
 
+/* Below params.rebuild_reuse_min_bytes (the default on a small mesh) the
+ * rebuild leaves the replaced structure's triangles alone and still gives
+ * a fresh build's bytes. */
+static void check_small_keeps_old(const struct tg_mesh *m)
+{
+    float *pos = tg_alloc(sizeof(float) * 3 * (size_t)m->vertex_count);
+    struct bvh_build_params params;
+    bvh_build_params_default(&params);
+    params.wide_layout = 8;
+    failures += !CHECKF((uint64_t)m->tri_count * 36 < params.rebuild_reuse_min_bytes,
+                        "the small mesh is not below the default threshold");
+    deform(pos, m->pos, m->vertex_count, 0);
+    struct scene_accel_geometry g = {pos, m->idx, m->tri_count};
+    struct scene_accel *cur = scene_accel_build(&g, &params, SCENE_ACCEL_SERIAL, NULL, NULL);
+    deform(pos, m->pos, m->vertex_count, 1);
+    struct scene_accel *fresh = scene_accel_build(&g, &params, SCENE_ACCEL_SERIAL, NULL, NULL);
+    const float *old_tri = cur ? cur->tri : NULL;
+    struct scene_accel *rebuilt =
+        cur ? scene_accel_rebuild(&g, &params, SCENE_ACCEL_SERIAL, NULL, NULL, cur) : NULL;
+    if (CHECKF(cur && fresh && rebuilt, "small mesh: a build failed")) {
+        failures += !CHECKF(cur->tri == old_tri && rebuilt->tri != old_tri,
+                            "small mesh: the rebuild took the replaced triangles below the "
+                            "threshold");
+        failures += !CHECKF(same_accel(rebuilt, fresh), "small mesh: the rebuild differs");
+    } else {
+        failures++;
+    }
+    scene_accel_release(cur);
+    scene_accel_release(fresh);
+    scene_accel_release(rebuilt);
+    free(pos);
+}
+
 int main(void)
 {
     printf("accel_rebuild:\n");
@@ -183,6 +218,7 @@ int main(void)
     tg_cube_sphere(&sphere, 40, 1, 1.0, origin);
     check_mesh("soup", &soup, pool);
     check_mesh("sphere", &sphere, pool);
+    check_small_keeps_old(&soup);
     tg_mesh_free(&soup);
     tg_mesh_free(&sphere);
     rt_pool_destroy(pool);

@@ -32,6 +32,7 @@ void bvh_build_params_default(struct bvh_build_params *params)
     params->leaf_growth = 1.0f;
     params->wide_layout = 1;
     params->collapse = 0; /* BVH_COLLAPSE_GREEDY */
+    params->rebuild_reuse_min_bytes = BVH_REBUILD_REUSE_MIN_BYTES;
 }
 
 void accel_build_params_normalize(struct bvh_build_params *out,

@@ -24,7 +24,9 @@
  * accel's own, or old's (may be NULL), whose wide layout is then
  * released (accel_collapse_wide_reuse).  A structure old of as many
  * triangles (a deforming object's rebuild) also gives its leaf-ordered
- * triangles' array, whose pages are in memory, to the new gather: then
+ * triangles' array, whose pages are in memory, to the new gather when it
+ * is at least params->rebuild_reuse_min_bytes (BVH_REBUILD_REUSE_MIN_BYTES
+ * says why smaller arrays are not worth it): then
  * the collapse reads the triangles from the mesh (collapse_mesh.h, the
  * same layout byte for byte) and the gather overwrites old's array only
  * after the collapse has succeeded, so that a failure leaves old whole. */
@@ -32,8 +34,10 @@ static int finish_layout(struct scene_accel *accel, const struct scene_accel_geo
                          const struct bvh_build_params *params, struct rt_pool *pool,
                          struct scene_accel *old, struct rt_large_block *scratch)
 {
-    const int reuse_tri = old && old->tri && accel->bvh.prim_count &&
-                          old->bvh.prim_count == accel->bvh.prim_count;
+    const int reuse_tri =
+        old && old->tri && accel->bvh.prim_count &&
+        old->bvh.prim_count == accel->bvh.prim_count &&
+        (uint64_t)accel->bvh.prim_count * 9 * sizeof(float) >= params->rebuild_reuse_min_bytes;
     float *tri = NULL;
     if (!reuse_tri) {
         tri = accel_gather_triangles_pool(&accel->bvh, geom->positions, geom->indices, pool);
