@@ -38,6 +38,7 @@ static int failures;
 #include "accel/build_parallel.h"
 #include "accel/bvh_build.h"
 #include "accel/collapse4_avx2.h"
+#include "accel/collapse_mesh.h"
 #include "accel_testgeo.h"
 #include "bvh_contract.h"
 #include "base/alloc.h"
@@ -238,7 +239,8 @@ static void check_mesh(const char *scene, const struct tg_mesh *m, struct rt_poo
              * runs it) against the portable form, byte for byte. */
             if (accel_collapse_wide_avx2_unit()) {
                 struct bvh4 portable;
-                if (accel_collapse_wide_portable(&portable, &b, leaves, width, NULL, NULL,
+                const struct collapse_triangles tris = {leaves, NULL, NULL};
+                if (accel_collapse_wide_portable(&portable, &b, &tris, width, NULL, NULL,
                                                  collapse)) {
                     failures += !CHECKF(0, "%s: portable collapse failed", scene);
                 } else {
@@ -248,6 +250,30 @@ static void check_mesh(const char *scene, const struct tg_mesh *m, struct rt_poo
                                         scene, width, ranges ? " (range leaves)" : "");
                     bvh4_release(&portable);
                 }
+            }
+            /* The packets read from the mesh through prim_index in place
+             * of the gathered copy (collapse_mesh.h): the same layout
+             * byte for byte, on one thread and on a pool, in this unit
+             * and in the portable one; the scrambled and mirrored trees
+             * (variants 1, 2) put the slots out of the mesh's order. */
+            for (int t = 0; t < 3 && !ranges; t++) {
+                struct bvh4 from_mesh;
+                const struct collapse_triangles mesh_tris = {NULL, m->pos, m->idx};
+                const int rc =
+                    t == 2 ? accel_collapse_wide_portable(&from_mesh, &b, &mesh_tris, width,
+                                                          pools[2], NULL, collapse)
+                           : accel_collapse_wide_mesh(&from_mesh, &b, m->pos, m->idx, width,
+                                                      t ? pools[2] : NULL, NULL, collapse);
+                if (rc) {
+                    failures += !CHECKF(0, "%s: collapse from the mesh failed", scene);
+                    continue;
+                }
+                failures += !CHECKF(same_wide(&from_mesh, &ref),
+                                    "%s: %u-wide%s: the collapse from the mesh (%s) differs "
+                                    "from the one from the gathered triangles",
+                                    scene, width, opt ? " optimal" : "",
+                                    t == 0 ? "one thread" : t == 1 ? "two threads" : "portable");
+                bvh4_release(&from_mesh);
             }
             uint32_t merged_left = 0;
             if (!ranges) {

@@ -32,6 +32,7 @@ void bvh_build_params_default(struct bvh_build_params *params)
     params->leaf_growth = 1.0f;
     params->wide_layout = 1;
     params->collapse = 0; /* BVH_COLLAPSE_GREEDY */
+    params->rebuild_reuse_min_bytes = BVH_REBUILD_REUSE_MIN_BYTES;
 }
 
 void accel_build_params_normalize(struct bvh_build_params *out,
@@ -191,10 +192,16 @@ float *accel_gather_triangles_pool(const struct bvh *bvh, const float *positions
                                   sizeof(*tri));
     if (!tri)
         return NULL;
+    accel_gather_triangles_into(bvh, positions, indices, pool, tri);
+    return tri;
+}
+
+void accel_gather_triangles_into(const struct bvh *bvh, const float *positions,
+                                 const uint32_t *indices, struct rt_pool *pool, float *tri)
+{
     struct gather_job g = {bvh, positions, indices, tri};
     rt_pool_run_range(pool, 0, bvh->prim_count, GATHER_CHUNK, GATHER_PARALLEL_MIN, gather_slots,
                       &g);
-    return tri;
 }
 
 /* The triangle boxes' inputs and output. */

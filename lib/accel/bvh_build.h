@@ -60,7 +60,25 @@ struct bvh_build_params {
      * one (the default), 1 the optimal one.  An object's quality builds
      * take the object's RT_ACCELERATION_HINT (scene/update.c). */
     int collapse;
+    /* Not read by the builders: a rebuild that replaces a structure of as
+     * many triangles (scene_accel_rebuild) writes the new leaf-ordered
+     * triangles into the replaced structure's array when that array is
+     * at least this many bytes, the default BVH_REBUILD_REUSE_MIN_BYTES;
+     * 0 always (the tests). */
+    uint64_t rebuild_reuse_min_bytes;
 };
+
+/* glibc's largest mmap threshold on 64-bit targets (DEFAULT_MMAP_THRESHOLD_MAX,
+ * 32 MiB): an array at least this large is a fresh mapping every time it
+ * is allocated, whose pages the kernel zeroes at their first write (on
+ * this project's virtual machine 0.09-1.1 ms of system time per MB,
+ * performance-log b11).  Smaller arrays usually come back warm from the
+ * heap, and there reusing the replaced array saves no page while reading
+ * the mesh twice (the collapse and the gather, in prim_index order) costs
+ * the cache misses of a second pass: the exploding torus (250,000
+ * triangles, 9 MB) rebuilt every frame took 4-8 % more CPU with the reuse
+ * (performance-log, round 39 b12). */
+#define BVH_REBUILD_REUSE_MIN_BYTES ((uint64_t)32 << 20)
 
 /* Fills *params with the defaults above (binned SAH, 16 bins). */
 void bvh_build_params_default(struct bvh_build_params *params);
@@ -150,6 +168,13 @@ float *accel_gather_triangles(const struct bvh *bvh, const float *positions,
 struct rt_pool;
 float *accel_gather_triangles_pool(const struct bvh *bvh, const float *positions,
                                    const uint32_t *indices, struct rt_pool *pool);
+/* accel_gather_triangles_pool into tri, an array of at least
+ * 9 * bvh->prim_count floats the caller owns (a replaced structure's
+ * copy, whose pages are in memory already): every float of the first
+ * 9 * prim_count written, so the same floats as a fresh array.  Cannot
+ * fail. */
+void accel_gather_triangles_into(const struct bvh *bvh, const float *positions,
+                                 const uint32_t *indices, struct rt_pool *pool, float *tri);
 
 /* The bounds of triangles 0..count-1 (vertex indices indices[3j..3j+2]
  * into positions, xyz per vertex; not checked), each grown from an empty

@@ -855,10 +855,21 @@ static __m128 upper_pair(__m128 v)
 }
 #endif
 
-/* Packet p's lanes from leaf slots [slot, slot + n), n <= 4; lanes past n
- * repeat the last triangle. */
-static void fill_packet(struct tri4_packet *p, const float *tri, const uint32_t *prim_index,
-                        uint32_t slot, uint32_t n)
+/* Where the packets' triangles are read when there is no gathered copy
+ * (collapse_mesh.h): slot s's triangle is indices[3 * prim_index[s] ..]
+ * into positions, the nine floats the gather would copy into its slot. */
+struct packet_source {
+    const float *positions;
+    const uint32_t *indices;
+    const uint32_t *prim_index;
+};
+
+/* Packet p's lanes from the nine floats of row[0 .. 4) (leaf slots
+ * [slot, slot + n), n <= 4: lanes past n repeat the last triangle, row[l]
+ * = row[n - 1] there); with prim_index, the lanes' primitives from it
+ * too. */
+static inline void fill_packet_rows(struct tri4_packet *p, const float *const row[4],
+                                    const uint32_t *prim_index, uint32_t slot, uint32_t n)
 {
 #if defined(__SSE2__) && !defined(RT_NO_SIMD)
     /* The four lanes at once, the same values as accel_set_packet_lane
@@ -868,9 +879,6 @@ static void fill_packet(struct tri4_packet *p, const float *tri, const uint32_t 
      * 0-3, 4-7, 5-8), transposed into the nine components' lanes.  (Up
      * to 64 instructions a triangle in the scalar form, a fifth of the
      * collapse's.) */
-    const float *row[4];
-    for (uint32_t l = 0; l < 4; l++)
-        row[l] = &tri[9 * (size_t)(slot + (l < n ? l : n - 1))];
     __m128 a0 = _mm_loadu_ps(row[0]), a1 = _mm_loadu_ps(row[1]);
     __m128 a2 = _mm_loadu_ps(row[2]), a3 = _mm_loadu_ps(row[3]);
     _MM_TRANSPOSE4_PS(a0, a1, a2, a3);
@@ -907,7 +915,7 @@ static void fill_packet(struct tri4_packet *p, const float *tri, const uint32_t 
     }
 #else
     for (uint32_t l = 0; l < n; l++) {
-        accel_set_packet_lane(p, l, &tri[9 * (size_t)(slot + l)]);
+        accel_set_packet_lane(p, l, row[l]);
         if (prim_index)
             p->prim[l] = prim_index[slot + l];
     }
@@ -922,6 +930,41 @@ static void fill_packet(struct tri4_packet *p, const float *tri, const uint32_t 
             p->prim[l] = p->prim[n - 1];
     }
 #endif
+}
+
+/* Packet p's lanes from leaf slots [slot, slot + n), n <= 4, of tri
+ * (accel_gather_triangles' leaf order); lanes past n repeat the last
+ * triangle. */
+static void fill_packet(struct tri4_packet *p, const float *tri, const uint32_t *prim_index,
+                        uint32_t slot, uint32_t n)
+{
+    const float *row[4];
+    for (uint32_t l = 0; l < 4; l++)
+        row[l] = &tri[9 * (size_t)(slot + (l < n ? l : n - 1))];
+    fill_packet_rows(p, row, prim_index, slot, n);
+}
+
+/* fill_packet with the triangles read from the mesh (packet_source). */
+static void fill_packet_mesh(struct tri4_packet *p, const struct packet_source *src,
+                             const uint32_t *prim_index, uint32_t slot, uint32_t n)
+{
+    float buf[4][12];
+    const float *row[4];
+    for (uint32_t l = 0; l < 4; l++) {
+        if (l >= n) {
+            row[l] = row[n - 1];
+            continue;
+        }
+        const uint32_t *vi = &src->indices[3 * (size_t)src->prim_index[slot + l]];
+        for (int corner = 0; corner < 3; corner++) {
+            const float *v = &src->positions[3 * (size_t)vi[corner]];
+            buf[l][3 * corner + 0] = v[0];
+            buf[l][3 * corner + 1] = v[1];
+            buf[l][3 * corner + 2] = v[2];
+        }
+        row[l] = buf[l];
+    }
+    fill_packet_rows(p, row, prim_index, slot, n);
 }
 
 /*
@@ -971,7 +1014,11 @@ struct collapse_item {
  * are the same on any number of threads and with or without the cut. */
 struct collapse {
     const struct bvh *bvh;
+    /* Non-NULL when the leaves hold triangles (packets are written), NULL
+     * for the top level over instances; the packets read src_tri or src. */
     const float *tri;
+    const float *src_tri; /* the gathered copy, else NULL and src */
+    struct packet_source src;
     uint32_t width;
     int merge_left; /* close_small_lanes applies */
     const struct dp *dp; /* the optimal collapse's costs (triangles), else greedy */
@@ -1086,7 +1133,10 @@ static void write_scratch(const struct collapse *c, const struct scratch_node *s
             uint32_t p = s->child[l] + child_base[0] + j / 4;
             uint32_t n = s->count[l] - j < 4 ? s->count[l] - j : 4;
             c->packet_slot[p] = slot + j;
-            fill_packet(&c->packets[p], c->tri, c->bvh->prim_index, slot + j, n);
+            if (c->src_tri)
+                fill_packet(&c->packets[p], c->src_tri, c->bvh->prim_index, slot + j, n);
+            else
+                fill_packet_mesh(&c->packets[p], &c->src, c->bvh->prim_index, slot + j, n);
         }
     }
     if (width == 4)
@@ -1303,11 +1353,16 @@ static float leaf_extent_mean(const struct bvh4 *w)
     return lanes ? (float)(sum / lanes) : 0.0f;
 }
 
-/* accel_collapse_wide_reuse in this unit's instruction set. */
-static int collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *tri,
-                         uint32_t width, struct rt_pool *pool, struct rt_large_block *spare,
+/* accel_collapse_wide_source in this unit's instruction set. */
+static int collapse_wide(struct bvh4 *out, const struct bvh *bvh,
+                         const struct collapse_triangles *tris, uint32_t width,
+                         struct rt_pool *pool, struct rt_large_block *spare,
                          enum bvh_collapse collapse)
 {
+    /* Whether the leaves hold triangles: the rest of the collapse asks
+     * only that (the nodes do not depend on where the triangles are
+     * read). */
+    const float *tri = tris->tri ? tris->tri : tris->positions;
     memset(out, 0, sizeof(*out));
     if (width != 4 && width != 8)
         return -1;
@@ -1331,6 +1386,10 @@ static int collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *t
     memset(&dp, 0, sizeof(dp));
     c.bvh = bvh;
     c.tri = tri;
+    c.src_tri = tris->tri;
+    c.src.positions = tris->positions;
+    c.src.indices = tris->indices;
+    c.src.prim_index = bvh->prim_index;
     c.width = width;
     c.item_next = &item_next;
     /* Not zeroed: each entry is written in full (gather, number_level)
@@ -1498,18 +1557,35 @@ fail:
     return -1;
 }
 
-int accel_collapse_wide_quality(struct bvh4 *out, const struct bvh *bvh, const float *tri,
-                                uint32_t width, struct rt_pool *pool,
-                                struct rt_large_block *spare, enum bvh_collapse collapse)
+int accel_collapse_wide_source(struct bvh4 *out, const struct bvh *bvh,
+                               const struct collapse_triangles *tris, uint32_t width,
+                               struct rt_pool *pool, struct rt_large_block *spare,
+                               enum bvh_collapse collapse)
 {
 #if !defined(COLLAPSE_UNIT_AVX2)
     /* The same source compiled for AVX2, where it runs
      * (collapse4_avx2.c): the same bytes in fewer instructions. */
     const collapse_wide_fn avx2 = accel_collapse_wide_avx2_unit();
     if (avx2)
-        return avx2(out, bvh, tri, width, pool, spare, collapse);
+        return avx2(out, bvh, tris, width, pool, spare, collapse);
 #endif
-    return collapse_wide(out, bvh, tri, width, pool, spare, collapse);
+    return collapse_wide(out, bvh, tris, width, pool, spare, collapse);
+}
+
+int accel_collapse_wide_quality(struct bvh4 *out, const struct bvh *bvh, const float *tri,
+                                uint32_t width, struct rt_pool *pool,
+                                struct rt_large_block *spare, enum bvh_collapse collapse)
+{
+    const struct collapse_triangles tris = {tri, NULL, NULL};
+    return accel_collapse_wide_source(out, bvh, &tris, width, pool, spare, collapse);
+}
+
+int accel_collapse_wide_mesh(struct bvh4 *out, const struct bvh *bvh, const float *positions,
+                             const uint32_t *indices, uint32_t width, struct rt_pool *pool,
+                             struct rt_large_block *spare, enum bvh_collapse collapse)
+{
+    const struct collapse_triangles tris = {NULL, positions, indices};
+    return accel_collapse_wide_source(out, bvh, &tris, width, pool, spare, collapse);
 }
 
 int accel_collapse_wide_reuse(struct bvh4 *out, const struct bvh *bvh, const float *tri,
@@ -1518,11 +1594,12 @@ int accel_collapse_wide_reuse(struct bvh4 *out, const struct bvh *bvh, const flo
     return accel_collapse_wide_quality(out, bvh, tri, width, pool, spare, BVH_COLLAPSE_GREEDY);
 }
 
-int accel_collapse_wide_portable(struct bvh4 *out, const struct bvh *bvh, const float *tri,
-                                 uint32_t width, struct rt_pool *pool,
-                                 struct rt_large_block *spare, enum bvh_collapse collapse)
+int accel_collapse_wide_portable(struct bvh4 *out, const struct bvh *bvh,
+                                 const struct collapse_triangles *tris, uint32_t width,
+                                 struct rt_pool *pool, struct rt_large_block *spare,
+                                 enum bvh_collapse collapse)
 {
-    return collapse_wide(out, bvh, tri, width, pool, spare, collapse);
+    return collapse_wide(out, bvh, tris, width, pool, spare, collapse);
 }
 
 int accel_collapse_wide_pool(struct bvh4 *out, const struct bvh *bvh, const float *tri,

@@ -20,6 +20,8 @@
 #if defined(__AVX2__) && !defined(RT_NO_SIMD)
 #define COLLAPSE_UNIT_AVX2 1
 #define accel_collapse_wide_quality accel_collapse_wide_quality_avx2
+#define accel_collapse_wide_source accel_collapse_wide_source_avx2
+#define accel_collapse_wide_mesh accel_collapse_wide_mesh_avx2
 #define accel_collapse_wide_reuse accel_collapse_wide_reuse_avx2
 #define accel_collapse_wide_portable accel_collapse_wide_portable_avx2
 #define accel_collapse_wide_pool accel_collapse_wide_pool_avx2
@@ -35,7 +37,7 @@
 
 collapse_wide_fn accel_collapse_wide_avx2_unit(void)
 {
-    return build_cpu_runs_avx2() ? accel_collapse_wide_quality_avx2 : NULL;
+    return build_cpu_runs_avx2() ? accel_collapse_wide_source_avx2 : NULL;
 }
 #else
 collapse_wide_fn accel_collapse_wide_avx2_unit(void)

@@ -7,6 +7,7 @@
 
 #include "accel/build_median.h"
 #include "accel/build_parallel.h"
+#include "accel/collapse_mesh.h"
 #include "accel/refit.h"
 #include "base/alloc.h"
 #include "base/atomic.h"
@@ -17,17 +18,32 @@
  * triangles and the 4-wide layout traversal reads, and the cost the
  * update strategies compare.  Returns 0, or -1 on allocation failure
  * (accel->tri unchanged; accel->wide unchanged, or released when the
- * collapse itself failed).  Times the collapse into accel->collapse_ms.
+ * collapse itself failed; old unchanged).  Times the collapse into
+ * accel->collapse_ms.
  * The new layout reuses the block of the one it replaces when it fits:
  * accel's own, or old's (may be NULL), whose wide layout is then
- * released (accel_collapse_wide_reuse). */
+ * released (accel_collapse_wide_reuse).  A structure old of as many
+ * triangles (a deforming object's rebuild) also gives its leaf-ordered
+ * triangles' array, whose pages are in memory, to the new gather when it
+ * is at least params->rebuild_reuse_min_bytes (BVH_REBUILD_REUSE_MIN_BYTES
+ * says why smaller arrays are not worth it): then
+ * the collapse reads the triangles from the mesh (collapse_mesh.h, the
+ * same layout byte for byte) and the gather overwrites old's array only
+ * after the collapse has succeeded, so that a failure leaves old whole. */
 static int finish_layout(struct scene_accel *accel, const struct scene_accel_geometry *geom,
                          const struct bvh_build_params *params, struct rt_pool *pool,
                          struct scene_accel *old, struct rt_large_block *scratch)
 {
-    float *tri = accel_gather_triangles_pool(&accel->bvh, geom->positions, geom->indices, pool);
-    if (!tri)
-        return -1;
+    const int reuse_tri =
+        old && old->tri && accel->bvh.prim_count &&
+        old->bvh.prim_count == accel->bvh.prim_count &&
+        (uint64_t)accel->bvh.prim_count * 9 * sizeof(float) >= params->rebuild_reuse_min_bytes;
+    float *tri = NULL;
+    if (!reuse_tri) {
+        tri = accel_gather_triangles_pool(&accel->bvh, geom->positions, geom->indices, pool);
+        if (!tri)
+            return -1;
+    }
     struct bvh4 wide = {0};
     const uint32_t width = params->wide_layout == 8 ? 8u : 4u;
     double start = rt_now_ms();
@@ -37,14 +53,24 @@ static int finish_layout(struct scene_accel *accel, const struct scene_accel_geo
      * pages it touched already; the caller frees it if not taken. */
     if (!spare->bytes && scratch && scratch->bytes)
         spare = scratch;
+    const struct collapse_triangles tris = {tri, tri ? NULL : geom->positions,
+                                            tri ? NULL : geom->indices};
     if (params->wide_layout &&
-        accel_collapse_wide_quality(&wide, &accel->bvh, tri, width, pool, spare,
-                                    params->collapse)) {
+        accel_collapse_wide_source(&wide, &accel->bvh, &tris, width, pool, spare,
+                                   params->collapse)) {
         /* The tree may have changed under the old wide layout
          * (restructuring): drop it, so traversal takes the binary walk. */
         bvh4_release(&accel->wide);
         rt_free(tri);
         return -1;
+    }
+    accel->collapse_ms = params->wide_layout ? rt_now_ms() - start : 0.0;
+    if (reuse_tri) {
+        /* Nothing fails from here on.  old is released right after
+         * (scene_accel_rebuild's contract), without its triangles. */
+        tri = old->tri;
+        old->tri = NULL;
+        accel_gather_triangles_into(&accel->bvh, geom->positions, geom->indices, pool, tri);
     }
     if (old)
         bvh4_release(&old->wide); /* its block may be the new layout's */
@@ -52,7 +78,6 @@ static int finish_layout(struct scene_accel *accel, const struct scene_accel_geo
     accel->tri = tri;
     bvh4_release(&accel->wide);
     accel->wide = wide;
-    accel->collapse_ms = params->wide_layout ? rt_now_ms() - start : 0.0;
     accel->sah_cost = accel_sah_cost(&accel->bvh, params->c_trav, params->c_isect);
     return 0;
 }

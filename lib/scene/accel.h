@@ -87,11 +87,15 @@ struct scene_accel *scene_accel_build(const struct scene_accel_geometry *geom,
                                       const struct scene_preempt_hook *hook);
 /* scene_accel_build for a structure that replaces `old` (may be NULL):
  * the new wide layout is written into the old one's block when that fits
- * (accel_collapse_wide_reuse), whose pages are already in memory, so old
- * loses its wide layout once the new one is made (its binary tree and
- * triangles stay, so it is still a correct structure until it is
- * released).  For the synchronous rebuild, where old is replaced and
- * freed right after; not while another thread may walk old. */
+ * (accel_collapse_wide_reuse), and the new leaf-ordered triangles into
+ * old's array when it has as many triangles (a deforming object) and is
+ * at least params->rebuild_reuse_min_bytes, whose pages are already in
+ * memory; so old loses its wide layout and, then, its triangles once the
+ * new structure is made
+ * (it keeps its binary tree; it is only to be released then).  On
+ * failure old is as it was.  For the synchronous rebuild, where old is
+ * replaced and freed right after; not while another thread may walk
+ * old. */
 struct scene_accel *scene_accel_rebuild(const struct scene_accel_geometry *geom,
                                         const struct bvh_build_params *params,
                                         enum scene_accel_builder builder, struct rt_pool *pool,
