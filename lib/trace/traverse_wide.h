@@ -645,13 +645,12 @@ static inline void wide8_push_stored(const struct bvh8_node *n, unsigned pm, __m
 }
 
 /*
- * The any-hit walk's order at a node with two hit children or more
- * (wide8_push_any): next, the lowest hit lane whose box the ray enters
- * after its start (entry above tmin); on top of the stack, of the other
- * hit lanes, the one where the ray's segment inside the box, exit -
- * entry, is longest; below it the rest in the node's stored order.  A
- * box that holds the ray's start (entry clamped to tmin) is next only
- * when no other is hit, and on top only when no other is left.
+ * The child an any-hit walk goes to first when a node has two or more
+ * hit children: of the children whose box the ray enters after its start
+ * (entry above tmin), the one where the ray's segment inside the box,
+ * exit - entry, is longest; lowest lane on a tie.  The children whose box
+ * holds the ray's start (entry clamped to tmin) come first only when no
+ * other is hit.
  *
  * Why: a shadow ray starts on a surface and looks for any occluder up to
  * the light.  The box holding its start holds that surface's triangle and
@@ -659,44 +658,43 @@ static inline void wide8_push_stored(const struct bvh8_node *n, unsigned pm, __m
  * tmin) and which seldom occlude it; elsewhere the chance that a box's
  * triangles block the ray grows with the length of the ray inside the box
  * (for triangles spread through the box, the expected number crossed is
- * proportional to it: the ray-distribution argument of the surface-area
- * heuristic, MacDonald and Booth 1990, applied to one ray).  The longest
- * child is put on top rather than taken next: its choice (a sub, a
- * maximum over the lanes) would lie on the path from the node's test to
- * the next node's loads, about 15 cycles a push, which cost gears' and
- * the kitchen's shadow rays more than the visits it saved (performance-
- * log.md, round 39, sr6); the stack's stores are off that path.  Embree's
- * occluded walk goes on with its last hit lane; SATO (Nah and Manocha
- * 2014) orders any-hit children by their boxes' area at build time.
- * Counted per shadow ray (rtbench embree, node lanes / triangles): the
- * soup 83.5 / 19.4 -> 82.6 / 17.3, the kitchen 41.4 / 7.24 -> 40.4 / 7.34,
- * bumpy 70.3 / 8.76 -> 70.1 / 8.41, gears 39.4 / 9.07 -> 39.6 / 9.04.
+ * proportional to it: the argument of the surface-area heuristic's
+ * ray-distribution, MacDonald and Booth 1990, sec. 3, applied to one
+ * ray).  Embree's occluded walk goes on with its last hit lane (it orders
+ * by nothing); SATO (Nah and Manocha 2014) orders any-hit children by
+ * their boxes' surface area at build time.  Counted per shadow ray (rtbench
+ * embree, node lanes / triangles): the soup 83.5 / 19.4 -> 71.3 / 16.0, the
+ * kitchen 41.4 / 7.24 -> 40.3 / 7.22, bumpy 70.3 / 8.76 -> 69.6 / 8.33,
+ * gears 39.4 / 9.07 -> 39.6 / 9.01; visiting the farthest child first
+ * (sr5) helped the soup and cost the kitchen 9 % more triangles.
  *
- * The key of a lane (wide8_any_top): the segment's bits with the low four
- * replaced by 8 and 7 - lane (a tie within 16 ulps goes to the lowest
- * lane); the start's lanes 7 - lane alone, below every other lane; lanes
- * not in `rest` 0.  Exit and entry are never NaN here (t0 is an integer
- * maximum with tmin's non-negative bits, t1 a minimum whose NaN operands
- * give way, WIDE8_RAY), and a hit lane has entry <= exit, so the segment
- * is a non-negative float (x - x is +0), whose bits order as the floats
- * do.  The integer maximum names a lane of `rest` (rest is not empty; a
- * maximum of 0 is lane 7's key, and only when rest is {7}).
- *
- * Which child comes when changes only how soon an occluded ray stops: the
- * walk still visits every hit child (the front one next, every other one
- * pushed: the pushes count the lanes pushed) and every box its interval
- * reaches until its first hit (its box limit never shrinks), so the
- * answer, occluded or not, is the same in any order.
+ * The key of a lane: the segment's bits with the low four replaced by 8
+ * and 7 - lane (a tie within 16 ulps goes to the lowest lane); the
+ * start's lanes 7 - lane alone, below every other hit lane; missed lanes
+ * 0.  Exit and entry are never NaN here (t0 is an integer maximum with
+ * tmin's non-negative bits, t1 a minimum whose NaN operands give way,
+ * WIDE8_RAY), and a hit lane has entry <= exit, so the segment is a
+ * non-negative float (x - x is +0), whose bits order as the floats do;
+ * the integer maximum names the lane (two hit lanes or more: the
+ * maximum is above 0).
+ * Which child comes first changes only how soon an occluded ray stops:
+ * the walk still pushes every other hit child and visits every box its
+ * interval reaches until its first hit (its box limit never shrinks), so
+ * the answer (occluded or not) is the same in any order.  Even a front
+ * lane that missed would only add a visit: every hit lane but the front
+ * one is pushed (wide8_push_any counts the pushed lanes, not the hits).
  */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline unsigned wide8_any_top(__m256 t0, __m256 t1, __m256i start, __m256i rest)
+static inline unsigned wide8_any_front(__m256 t0, __m256 t1, __m256i tmin8, __m256 hit)
 {
     const __m256i seg = _mm256_castps_si256(_mm256_sub_ps(t1, t0));
+    const __m256i start = _mm256_cmpeq_epi32(_mm256_castps_si256(t0), tmin8);
     __m256i key = _mm256_andnot_si256(
         start, _mm256_or_si256(_mm256_and_si256(seg, _mm256_set1_epi32(~15)), _mm256_set1_epi32(8)));
-    key = _mm256_and_si256(_mm256_or_si256(key, _mm256_setr_epi32(7, 6, 5, 4, 3, 2, 1, 0)), rest);
+    key = _mm256_and_si256(_mm256_or_si256(key, _mm256_setr_epi32(7, 6, 5, 4, 3, 2, 1, 0)),
+                           _mm256_castps_si256(hit));
     __m128i k = _mm_max_epi32(_mm256_castsi256_si128(key), _mm256_extracti128_si256(key, 1));
     k = _mm_max_epi32(k, _mm_shuffle_epi32(k, 0x4E));
     k = _mm_max_epi32(k, _mm_shuffle_epi32(k, 0xB1));
@@ -704,11 +702,12 @@ static inline unsigned wide8_any_top(__m256 t0, __m256 t1, __m256i start, __m256
 }
 
 /*
- * wide8_push for an any-hit walk, in the order above.  pm: the hit
- * lanes' mask as the node test has it (on AVX-512 a mask register's);
- * hit: the same lanes as a vector; t1: the scaled exits clamped to the
- * box limit.  No entry distances: an any-hit walk's pops never read them
- * (its box limit never shrinks).
+ * wide8_push for an any-hit walk: wide8_any_front's lane next, the other
+ * hit lanes pushed in the node's stored order (lowest lane on top).  pm:
+ * the hit lanes' mask as the node test has it (on AVX-512 a mask
+ * register's); hit: the same lanes as a vector; t1: the scaled exits
+ * clamped to the box limit.  No entry distances: an any-hit walk's pops
+ * never read them (its box limit never shrinks).
  */
 #if defined(__GNUC__)
 __attribute__((always_inline))
@@ -718,19 +717,30 @@ static inline void wide8_push_any(const struct bvh8_node *n, unsigned pm, __m256
                                   uint32_t *st_count, uint32_t *sp, uint32_t *cur,
                                   uint32_t *cur_count)
 {
+    /* The choice's maximum over the lanes is about 15 cycles after the
+     * node's test; the walk's next loads wait on the lane they index.  So
+     * a guess with a short path (the lowest hit lane beyond the start,
+     * two instructions from the test's mask) and a branch on whether the
+     * choice agrees: where it does (a node with one child beyond the
+     * start, most nodes) the predicted branch lets the next node's loads
+     * start from the guess; a select would make them wait for both. */
     const __m256i start = _mm256_cmpeq_epi32(_mm256_castps_si256(t0), tmin8);
     const unsigned later = pm & ~(unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(start));
-    const unsigned front = (unsigned)__builtin_ctz(later ? later : pm);
-    const __m256i iota = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
-    const __m256i rest = _mm256_andnot_si256(
-        _mm256_cmpeq_epi32(iota, _mm256_set1_epi32((int)front)), _mm256_castps_si256(hit));
-    const unsigned top = wide8_any_top(t0, t1, start, rest);
-    const unsigned below = pm & ~(1u << front) & ~(1u << top);
-    /* wide8_compress[below]: those lanes back to front, so that the
-     * lowest ends nearest the top; all of them kept (sp moves by their
-     * number), then the top lane. */
+    const unsigned guess = (unsigned)__builtin_ctz(later ? later : pm);
+    const unsigned best = wide8_any_front(t0, t1, tmin8, hit);
+    unsigned front = guess;
+#if defined(__GNUC__)
+    __asm__ goto("cmp %1, %0\n\tje %l[agree]" : : "r"(best), "r"(guess) : "cc" : agree);
+    front = best;
+agree:
+#else
+    front = best;
+#endif
+    const unsigned rest = pm & ~(1u << front);
+    /* wide8_compress[rest]: the rest's lanes back to front, so that the
+     * lowest ends on top; all of them kept (sp moves by their number). */
     const __m256i gather = _mm256_cvtepu8_epi32(
-        _mm_loadl_epi64((const __m128i *)(const void *)&wide8_compress[below]));
+        _mm_loadl_epi64((const __m128i *)(const void *)&wide8_compress[rest]));
     const __m256i child = _mm256_load_si256((const __m256i *)(const void *)n->child);
     const __m256i count =
         _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)n->count));
@@ -738,10 +748,7 @@ static inline void wide8_push_any(const struct bvh8_node *n, unsigned pm, __m256
                         _mm256_permutevar8x32_epi32(child, gather));
     _mm256_storeu_si256((__m256i *)(void *)&st_count[*sp],
                         _mm256_permutevar8x32_epi32(count, gather));
-    *sp += (uint32_t)__builtin_popcount(below);
-    st_child[*sp] = n->child[top];
-    st_count[*sp] = n->count[top];
-    *sp += 1;
+    *sp += (uint32_t)__builtin_popcount(rest);
     *cur = n->child[front];
     *cur_count = n->count[front];
 }
