@@ -717,25 +717,16 @@ static inline void wide8_push_any(const struct bvh8_node *n, unsigned pm, __m256
                                   uint32_t *st_count, uint32_t *sp, uint32_t *cur,
                                   uint32_t *cur_count)
 {
-    /* The choice's maximum over the lanes is about 15 cycles after the
-     * node's test; the walk's next loads wait on the lane they index.  So
-     * a guess with a short path (the lowest hit lane beyond the start,
-     * two instructions from the test's mask) and a branch on whether the
-     * choice agrees: where it does (a node with one child beyond the
-     * start, most nodes) the predicted branch lets the next node's loads
-     * start from the guess; a select would make them wait for both. */
+    /* The lanes beyond the start: with one of them (or none) the choice
+     * is the lowest of them (or the lowest hit lane: the start's keys
+     * order by lane), two instructions from the test's mask; only with two
+     * or more does the walk wait for the maximum over the keys (about 15
+     * cycles and 15 instructions), behind a branch. */
     const __m256i start = _mm256_cmpeq_epi32(_mm256_castps_si256(t0), tmin8);
     const unsigned later = pm & ~(unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(start));
-    const unsigned guess = (unsigned)__builtin_ctz(later ? later : pm);
-    const unsigned best = wide8_any_front(t0, t1, tmin8, hit);
-    unsigned front = guess;
-#if defined(__GNUC__)
-    __asm__ goto("cmp %1, %0\n\tje %l[agree]" : : "r"(best), "r"(guess) : "cc" : agree);
-    front = best;
-agree:
-#else
-    front = best;
-#endif
+    const unsigned front = !(later & (later - 1u))
+                               ? (unsigned)__builtin_ctz(later ? later : pm)
+                               : wide8_any_front(t0, t1, tmin8, hit);
     const unsigned rest = pm & ~(1u << front);
     /* wide8_compress[rest]: the rest's lanes back to front, so that the
      * lowest ends on top; all of them kept (sp moves by their number). */
