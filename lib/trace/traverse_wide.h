@@ -724,9 +724,9 @@ static inline void wide8_push_any(const struct bvh8_node *n, unsigned pm, __m256
      * cycles and 15 instructions), behind a branch. */
     const __m256i start = _mm256_cmpeq_epi32(_mm256_castps_si256(t0), tmin8);
     const unsigned later = pm & ~(unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(start));
-    const unsigned front = !(later & (later - 1u))
-                               ? (unsigned)__builtin_ctz(later ? later : pm)
-                               : wide8_any_front(t0, t1, tmin8, hit);
+    const unsigned front = (unsigned)__builtin_ctz(later ? later : pm);
+    (void)t1;
+    (void)hit;
     const unsigned rest = pm & ~(1u << front);
     /* wide8_compress[rest]: the rest's lanes back to front, so that the
      * lowest ends on top; all of them kept (sp moves by their number). */
