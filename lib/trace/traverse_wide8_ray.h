@@ -211,19 +211,9 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                         cur = n->child[l];
                         cur_count = n->count[l];
                     } else {
-                        if (any_hit) {
-                            /* The exits as the test took them (scaled),
-                             * clamped to the limit: min returns its second
-                             * operand when either is NaN, so a NaN exit
-                             * gives way to the limit and t1 is never NaN. */
-                            const __m256 t1 = _mm256_min_ps(
-                                _mm256_mul_ps(tfz, scale),
-                                _mm256_min_ps(_mm256_mul_ps(tfy, scale),
-                                              _mm256_min_ps(_mm256_mul_ps(tfx, scale),
-                                                            _mm256_set1_ps(box_limit))));
-                            wide8_push_any(n, mask, hit, t0, t1, tmin8, st_child, st_count, &sp,
-                                           &cur, &cur_count);
-                        }
+                        if (any_hit)
+                            wide8_push_stored(n, mask, t0, st_child, st_count, &sp, &cur,
+                                              &cur_count);
                         else
                             wide8_push(n, octant, hit, t0, order_shift, st_child, st_count, st_t,
                                        &sp, &cur, &cur_count);
