@@ -76,7 +76,8 @@ struct packet_entry {
     uint32_t child;
     uint32_t count; /* 0: wide node, else a leaf lane */
     unsigned rays;  /* the rays that enter it */
-    float t_entry;  /* the smallest of their entry distances */
+    float t_entry;  /* the smallest of their entry distances (any hit; closest hit:
+                       packet_walk8_ia's stack_entry, per ray) */
 };
 
 /* The rays of a packet: the single walk's state per ray, its near and
@@ -312,23 +313,23 @@ static inline void packet_sync(struct packet_state *p, unsigned r)
  * The triangles of packet q (bit l: triangle l) whose own box passes the
  * interval walk's test (packet_walk8_ia, packet_ia_init) with exit bound
  * limit_hi (at least every ray's box_limit).  The box is the least and
- * greatest of the triangle's three vertices per axis, exact, so it holds
- * the triangle as a leaf box holding only it would.  A triangle whose box
+ * greatest of the triangle's three vertices per axis (exact: min and max
+ * round nothing), so it holds the whole triangle.  A triangle whose box
  * fails has no hit for any ray of the packet at or below the ray's
  * limit: the interval test passes every box that one ray's own slab test
  * (walk_wide8's, with its box_limit) enters (packet_ia_init), and a ray
- * whose own test refuses a box has no hit at or below its best in any
- * triangle the box holds: the property every box of the walk relies on
- * (the single walk skips such a box; the leaf boxes are the same minima
- * and maxima of the triangles' vertices, bit for bit).  So the triangle
- * needs no tri8_test, which would find no hit for any lane (Wald, Boulos
- * and Shirley 2007: the packet's interval bounds against a primitive's
- * box as against a node's; Benthin and Wald's frustum culling of a
- * leaf's triangles).  A zero-area triangle's lane (NaNs) may pass or
- * fail: tri8_test refuses it for every lane either way.  Float max and
- * min fold the bounds here (the walk's integer maximum is the same
- * number, packet_walk8_ia, and none is needed: only a triangle that no
- * ray can hit may fail).
+ * whose own test refuses a box has no hit at or below its best on
+ * anything the box holds: the property every box of the walk relies on
+ * (the single walk skips such a box, whatever triangles it holds; here
+ * the box is one triangle's).  So the triangle needs no tri8_test, which
+ * would find no hit for any lane: the leaf's triangles are tested as the
+ * walk tests a node's children (Wald, Boulos and Shirley 2007 sec. 4.2,
+ * the packet's interval bounds against a box).  A zero-area triangle's
+ * lane (NaNs) may pass or fail: tri8_test refuses it for every lane
+ * either way.  Float max and min fold the bounds here (the walk's
+ * integer maximum gives the same number, packet_walk8_ia; only a
+ * triangle that no ray can hit may fail, so no bound needs to be the
+ * walk's to the bit).
  */
 static inline unsigned packet_tri_beam(const struct packet_state *p, const struct tri4_packet *q,
                                        __m128 limit_hi)
@@ -514,7 +515,10 @@ static inline unsigned packet_leaf8_body(struct packet_state *p,
  * exits by pairs of rays first (tri8_pair_filter), and tri8_test only for
  * the triangles one of them passes (the others tri8_test would leave at
  * its first exit without effects); otherwise each triangle against all
- * of them.  Two copies, so that the common case keeps its plain loop. */
+ * of them, or, beam (the interval walk's packets, limit_hi its exit
+ * bound), each triangle whose box the packet's interval test passes
+ * (packet_tri_beam).  Two copies, so that the common case keeps its plain
+ * loop (the interval walk's many-ray copy loops over the mask). */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
