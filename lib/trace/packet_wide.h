@@ -994,7 +994,11 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
             unsigned single = rays;
             const unsigned r8 = rays & p->lanes8;
             if ((unsigned)__builtin_popcount(r8) >= PACKET_TRI8_MIN) {
-                done |= packet_leaf8(p, wide->packets, cur, cur_count, r8, any_hit, 1,
+                /* The triangles' box test for closest-hit packets only:
+                 * gears' shadow packets, whose rays pass the boxes of
+                 * about 80 % of the triangles they meet, were 10-12 %
+                 * slower with it (docs/performance-log.md, pk16). */
+                done |= packet_leaf8(p, wide->packets, cur, cur_count, r8, any_hit, !any_hit,
                                      _mm256_castps256_ps128(limit_hi));
                 single &= ~r8;
             }
