@@ -76,8 +76,7 @@ struct packet_entry {
     uint32_t child;
     uint32_t count; /* 0: wide node, else a leaf lane */
     unsigned rays;  /* the rays that enter it */
-    float t_entry;  /* the smallest of their entry distances (any hit; closest hit:
-                       packet_walk8_ia's stack_entry, per ray) */
+    float t_entry;  /* the smallest of their entry distances */
 };
 
 /* The rays of a packet: the single walk's state per ray, its near and
@@ -879,10 +878,6 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                                        unsigned active, int any_hit)
 {
     struct packet_entry stack[WIDE_STACK];
-    /* A closest-hit packet's stacked entry bound per ray (lane r: ray r's
-     * entry into the child; +inf for a ray that does not enter it), in
-     * place of the scalar t_entry: see the pop. */
-    float stack_entry[WIDE_STACK][TRACE_PACKET];
     const struct bvh8_node *nodes = wide->nodes8;
     const int octant = p->ia_octant;
     const int *near_row = p->ia_row_near, *far_row = p->ia_row_far;
@@ -965,11 +960,6 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
             _mm_prefetch((const char *)(const void *)n->child, _MM_HINT_T0);
             unsigned lane_rays[8];
             float t_min[8];
-            /* A closest-hit packet's lane-tested children (tested): each
-             * ray's entry into child l in lane_entry[l] (+inf for the
-             * rays that do not enter it). */
-            float lane_entry[8][TRACE_PACKET];
-            unsigned tested = 0;
             node_tests += 8;
             /* The packet's entry bound max(z, max(y, max(x, tmin))) and
              * exit bound min(s * min(z, min(y, min(x, inf))), limit) were
@@ -1063,7 +1053,6 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                         (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(t0, leaf_t, _CMP_LE_OQ));
                     test = pass & ~inner & ~near & 0xffu;
                     push = pass & ~test;
-                    tested = test;
                     _mm256_storeu_si256((__m256i *)(void *)lane_rays,
                                         _mm256_set1_epi32((int)rays));
                 } else {
@@ -1092,7 +1081,6 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                     const unsigned all = pass & big;
                     test = pass & ~all;
                     push = all;
-                    tested = test;
                     _mm256_storeu_si256((__m256i *)(void *)lane_rays,
                                         _mm256_set1_epi32((int)rays));
                 }
@@ -1120,13 +1108,13 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                     lane_rays[l] = (unsigned)_mm256_movemask_ps(in) & rays;
                     push |= (unsigned)(lane_rays[l] != 0) << l;
                     node_tests += (unsigned)__builtin_popcount(rays);
-                    /* Each ray's own entry, for the cull on pop by its
-                     * box_limit (see there); an any-hit ray's never
+                    /* The least entry of its rays, for the cull on pop
+                     * by a ray's box_limit; an any-hit ray's never
                      * shrinks, so the rays here, which passed it
                      * already, would all stay: the interval test's
                      * bound (t_min, stored above) does as well. */
                     if (!any_hit)
-                        _mm256_storeu_ps(lane_entry[l], _mm256_blendv_ps(inf8, u0, in));
+                        t_min[l] = packet_hmin(_mm256_blendv_ps(inf8, u0, in));
                 }
             }
             if (push) {
@@ -1196,14 +1184,7 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                         stack[sp].child = n->child[l];
                         stack[sp].count = n->count[l];
                         stack[sp].rays = lane_rays[l];
-                        /* A lane-tested child's rays with their own
-                         * entries; another child's with the interval
-                         * test's bound, a lower bound of each ray's
-                         * entry (or, several origins tested ray by ray,
-                         * the least of the rays' entries). */
-                        _mm256_storeu_ps(stack_entry[sp],
-                                         tested >> l & 1u ? _mm256_loadu_ps(lane_entry[l])
-                                                          : _mm256_broadcast_ss(&t_min[l]));
+                        stack[sp].t_entry = t_min[l];
                         sp++;
                     }
                 }
@@ -1220,22 +1201,10 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
             }
             sp--;
             /* The rays whose box_limit lies before the subtree's entry
-             * bound leave it, as the single walk's pop skips it.  A
-             * closest-hit packet compares each ray's own bound: for a
-             * lane-tested child, the ray's entry as the lane test
-             * computed it (walk_wide8's operations), so a ray leaves
-             * exactly when that lane test, run now with its current
-             * box_limit, would not let it in: the single walk's pop
-             * rule (st_t <= box_limit) for that ray, which leaves out
-             * only boxes where the ray has no hit at or below its best.
-             * Before, the least entry of the child's rays stood for all
-             * of them, which kept rays whose own entry already lay
-             * behind their hit: those rays met the leaf's triangles
-             * for nothing (an answer the same either way). */
-            const __m256 entry = any_hit ? _mm256_set1_ps(stack[sp].t_entry)
-                                         : _mm256_loadu_ps(stack_entry[sp]);
+             * bound leave it, as the single walk's pop skips it. */
             rays = stack[sp].rays & ~done &
-                   (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(entry, bl, _CMP_LE_OQ));
+                   (unsigned)_mm256_movemask_ps(
+                       _mm256_cmp_ps(_mm256_set1_ps(stack[sp].t_entry), bl, _CMP_LE_OQ));
             if (rays)
                 break;
         }
