@@ -172,16 +172,9 @@ struct gather_job {
 static void gather_slots(void *arg, uint32_t begin, uint32_t end)
 {
     const struct gather_job *g = arg;
-    for (uint32_t slot = begin; slot < end; slot++) {
-        const uint32_t *vi = &g->indices[3 * (size_t)g->bvh->prim_index[slot]];
-        float *dst = &g->tri[9 * (size_t)slot];
-        for (int corner = 0; corner < 3; corner++) {
-            const float *src = &g->positions[3 * (size_t)vi[corner]];
-            dst[3 * corner + 0] = src[0];
-            dst[3 * corner + 1] = src[1];
-            dst[3 * corner + 2] = src[2];
-        }
-    }
+    for (uint32_t slot = begin; slot < end; slot++)
+        accel_gather_triangle(&g->tri[9 * (size_t)slot], g->positions, g->indices,
+                              g->bvh->prim_index[slot]);
 }
 
 float *accel_gather_triangles_pool(const struct bvh *bvh, const float *positions,

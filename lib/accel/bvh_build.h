@@ -10,6 +10,7 @@
 #ifndef RT_ACCEL_BVH_BUILD_H
 #define RT_ACCEL_BVH_BUILD_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "base/aabb.h"
@@ -166,6 +167,21 @@ float *accel_gather_triangles(const struct bvh *bvh, const float *positions,
  * alone); the same floats on any pool.  Uses the pool for the duration
  * of the call. */
 struct rt_pool;
+/* The gather's copy of one triangle: the three vertices
+ * indices[3 * prim ..] of positions (xyz each), float for float into
+ * dst[0 .. 9).  The collapse from the mesh (collapse_mesh.h) reads its
+ * packets' triangles through it too, so both give the same floats. */
+static inline void accel_gather_triangle(float *dst, const float *positions,
+                                         const uint32_t *indices, uint32_t prim)
+{
+    const uint32_t *vi = &indices[3 * (size_t)prim];
+    for (int corner = 0; corner < 3; corner++) {
+        const float *src = &positions[3 * (size_t)vi[corner]];
+        dst[3 * corner + 0] = src[0];
+        dst[3 * corner + 1] = src[1];
+        dst[3 * corner + 2] = src[2];
+    }
+}
 float *accel_gather_triangles_pool(const struct bvh *bvh, const float *positions,
                                    const uint32_t *indices, struct rt_pool *pool);
 /* accel_gather_triangles_pool into tri, an array of at least

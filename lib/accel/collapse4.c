@@ -855,15 +855,6 @@ static __m128 upper_pair(__m128 v)
 }
 #endif
 
-/* Where the packets' triangles are read when there is no gathered copy
- * (collapse_mesh.h): slot s's triangle is indices[3 * prim_index[s] ..]
- * into positions, the nine floats the gather would copy into its slot. */
-struct packet_source {
-    const float *positions;
-    const uint32_t *indices;
-    const uint32_t *prim_index;
-};
-
 /* Packet p's lanes from the nine floats of row[0 .. 4) (leaf slots
  * [slot, slot + n), n <= 4: lanes past n repeat the last triangle, row[l]
  * = row[n - 1] there); with prim_index, the lanes' primitives from it
@@ -944,24 +935,21 @@ static void fill_packet(struct tri4_packet *p, const float *tri, const uint32_t 
     fill_packet_rows(p, row, prim_index, slot, n);
 }
 
-/* fill_packet with the triangles read from the mesh (packet_source). */
-static void fill_packet_mesh(struct tri4_packet *p, const struct packet_source *src,
+/* fill_packet with the triangles read from the mesh (src's positions and
+ * indices): slot s's nine floats copied as the gather copies them
+ * (accel_gather_triangle), so the same lanes (fill_packet_rows reads
+ * floats 0-8 of each row). */
+static void fill_packet_mesh(struct tri4_packet *p, const struct collapse_triangles *src,
                              const uint32_t *prim_index, uint32_t slot, uint32_t n)
 {
-    float buf[4][12];
+    float buf[4][9];
     const float *row[4];
     for (uint32_t l = 0; l < 4; l++) {
         if (l >= n) {
             row[l] = row[n - 1];
             continue;
         }
-        const uint32_t *vi = &src->indices[3 * (size_t)src->prim_index[slot + l]];
-        for (int corner = 0; corner < 3; corner++) {
-            const float *v = &src->positions[3 * (size_t)vi[corner]];
-            buf[l][3 * corner + 0] = v[0];
-            buf[l][3 * corner + 1] = v[1];
-            buf[l][3 * corner + 2] = v[2];
-        }
+        accel_gather_triangle(buf[l], src->positions, src->indices, prim_index[slot + l]);
         row[l] = buf[l];
     }
     fill_packet_rows(p, row, prim_index, slot, n);
@@ -1015,10 +1003,10 @@ struct collapse_item {
 struct collapse {
     const struct bvh *bvh;
     /* Non-NULL when the leaves hold triangles (packets are written), NULL
-     * for the top level over instances; the packets read src_tri or src. */
+     * for the top level over instances; the packets read src.tri (the
+     * gathered copy) or, without it, src's mesh. */
     const float *tri;
-    const float *src_tri; /* the gathered copy, else NULL and src */
-    struct packet_source src;
+    struct collapse_triangles src;
     uint32_t width;
     int merge_left; /* close_small_lanes applies */
     const struct dp *dp; /* the optimal collapse's costs (triangles), else greedy */
@@ -1133,8 +1121,8 @@ static void write_scratch(const struct collapse *c, const struct scratch_node *s
             uint32_t p = s->child[l] + child_base[0] + j / 4;
             uint32_t n = s->count[l] - j < 4 ? s->count[l] - j : 4;
             c->packet_slot[p] = slot + j;
-            if (c->src_tri)
-                fill_packet(&c->packets[p], c->src_tri, c->bvh->prim_index, slot + j, n);
+            if (c->src.tri)
+                fill_packet(&c->packets[p], c->src.tri, c->bvh->prim_index, slot + j, n);
             else
                 fill_packet_mesh(&c->packets[p], &c->src, c->bvh->prim_index, slot + j, n);
         }
@@ -1386,10 +1374,7 @@ static int collapse_wide(struct bvh4 *out, const struct bvh *bvh,
     memset(&dp, 0, sizeof(dp));
     c.bvh = bvh;
     c.tri = tri;
-    c.src_tri = tris->tri;
-    c.src.positions = tris->positions;
-    c.src.indices = tris->indices;
-    c.src.prim_index = bvh->prim_index;
+    c.src = *tris;
     c.width = width;
     c.item_next = &item_next;
     /* Not zeroed: each entry is written in full (gather, number_level)

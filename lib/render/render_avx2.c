@@ -10,8 +10,9 @@
  * so the same rays, cones and pixels bit for bit.  What the change buys
  * is half the divider instructions (sqrtpd, divpd) of the camera rays,
  * which bound that code.  render_tile calls this copy's packet loop when
- * the scene's traversal table is AVX2 or AVX-512 (trace/kernels.c has
- * checked that the CPU and the operating system run AVX2 then).  Under
+ * the scene's traversal table is AVX2, or AVX-512 where the AVX-512 copy
+ * (render_avx512.c) is absent (trace/kernels.c has checked that the CPU
+ * and the operating system run AVX2 then).  Under
  * RT_NO_SIMD, or where the compiler does not target AVX2, the unit is
  * absent (render_tile_packets_avx2_unit returns NULL).
  */
@@ -20,15 +21,8 @@
 #if defined(__AVX2__) && !defined(RT_NO_SIMD)
 #define RENDER_UNIT_AVX2 1
 
-#define render_framebuffer_release render_framebuffer_release_avx2
-#define render_pass_begin render_pass_begin_avx2
-#define render_pass_tiles render_pass_tiles_avx2
-#define render_tile render_tile_avx2
-#define render_pass_raster render_pass_raster_avx2
-#define render_pass_end render_pass_end_avx2
-#define render_frame render_frame_avx2
-#define render_trace_rays render_trace_rays_avx2
-#define render_occluded_rays render_occluded_rays_avx2
+#define RENDER_SUFFIX _avx2
+#include "render/render_unit.h"
 
 #include "render/render.c"
 

@@ -27,15 +27,8 @@
 #define RENDER_UNIT_AVX2 1
 #define RENDER_UNIT_AVX512 1
 
-#define render_framebuffer_release render_framebuffer_release_avx512
-#define render_pass_begin render_pass_begin_avx512
-#define render_pass_tiles render_pass_tiles_avx512
-#define render_tile render_tile_avx512
-#define render_pass_raster render_pass_raster_avx512
-#define render_pass_end render_pass_end_avx512
-#define render_frame render_frame_avx512
-#define render_trace_rays render_trace_rays_avx512
-#define render_occluded_rays render_occluded_rays_avx512
+#define RENDER_SUFFIX _avx512
+#include "render/render_unit.h"
 
 #include "render/render.c"
 

@@ -12,8 +12,9 @@
  * division are correctly rounded in every encoding and the libm calls
  * (log2, hypot) are the same functions, so the colours are the same bit
  * for bit.  shade_eye_hits calls this copy when the context's traversal
- * table is AVX2 or AVX-512 (trace/kernels.c has checked that the CPU and
- * the operating system run AVX2 then), so isa= chooses the shading too.
+ * table is AVX2, or AVX-512 where the AVX-512 copy (shade_eye_avx512.c)
+ * is absent (trace/kernels.c has checked that the CPU and the operating
+ * system run AVX2 then), so isa= chooses the shading too.
  * Under RT_NO_SIMD, or where the compiler does not target AVX2, the unit
  * is absent (shade_eye_hits_avx2_unit returns NULL).
  */
@@ -22,37 +23,8 @@
 #if defined(__AVX2__) && !defined(RT_NO_SIMD)
 #define SHADE_UNIT_AVX2 1
 
-#define shade_context_lights shade_context_lights_avx2
-#define shade_eye_hits shade_eye_hits_avx2
-#define shade_eye_block_begin shade_eye_block_begin_avx2
-#define shade_eye_block_end shade_eye_block_end_avx2
-#define shade_hit shade_hit_avx2
-#define shade_offset_point shade_offset_point_avx2
-#define shade_prime_shadows shade_prime_shadows_avx2
-#define shade_ray shade_ray_avx2
-#define surface_fetch surface_fetch_avx2
-#define surface_fetch_colour surface_fetch_colour_avx2
-#define surface_fetch_colours surface_fetch_colours_avx2
-#define surface_fetches surface_fetches_avx2
-#define surface_fetch_lanes surface_fetch_lanes_avx2
-#define surface_resolve_material surface_resolve_material_avx2
-#define surface_texel surface_texel_avx2
-#define scene_texture_build_mipmaps scene_texture_build_mipmaps_avx2
-#define scene_texture_chain_texels scene_texture_chain_texels_avx2
-#define scene_texture_level_count scene_texture_level_count_avx2
-#define scene_texture_sample scene_texture_sample_avx2
-#define scene_texture_sample_level scene_texture_sample_level_avx2
-#define scene_texture_sample_lod scene_texture_sample_lod_avx2
-#define scene_texture_sample_lod8 scene_texture_sample_lod8_avx2
-#define scene_texture_prefetch_lod8 scene_texture_prefetch_lod8_avx2
-#define scene_texture_finish_lod8 scene_texture_finish_lod8_avx2
-#define scene_texture_set_image scene_texture_set_image_avx2
-#define scene_textures_generate scene_textures_generate_avx2
-#define scene_textures_get_or_create scene_textures_get_or_create_avx2
-#define scene_textures_init scene_textures_init_avx2
-#define scene_textures_lookup scene_textures_lookup_avx2
-#define scene_textures_release scene_textures_release_avx2
-#define scene_textures_remove scene_textures_remove_avx2
+#define SHADE_EYE_SUFFIX _avx2
+#include "render/shade_eye_unit.h"
 
 #include "render/shade.c"
 #include "render/surface.c"

@@ -27,37 +27,8 @@
  * levels of detail. */
 #define SHADE_UNIT_AVX2 1
 
-#define shade_context_lights shade_context_lights_avx512
-#define shade_eye_hits shade_eye_hits_avx512
-#define shade_eye_block_begin shade_eye_block_begin_avx512
-#define shade_eye_block_end shade_eye_block_end_avx512
-#define shade_hit shade_hit_avx512
-#define shade_offset_point shade_offset_point_avx512
-#define shade_prime_shadows shade_prime_shadows_avx512
-#define shade_ray shade_ray_avx512
-#define surface_fetch surface_fetch_avx512
-#define surface_fetch_colour surface_fetch_colour_avx512
-#define surface_fetch_colours surface_fetch_colours_avx512
-#define surface_fetches surface_fetches_avx512
-#define surface_fetch_lanes surface_fetch_lanes_avx512
-#define surface_resolve_material surface_resolve_material_avx512
-#define surface_texel surface_texel_avx512
-#define scene_texture_build_mipmaps scene_texture_build_mipmaps_avx512
-#define scene_texture_chain_texels scene_texture_chain_texels_avx512
-#define scene_texture_level_count scene_texture_level_count_avx512
-#define scene_texture_sample scene_texture_sample_avx512
-#define scene_texture_sample_level scene_texture_sample_level_avx512
-#define scene_texture_sample_lod scene_texture_sample_lod_avx512
-#define scene_texture_sample_lod8 scene_texture_sample_lod8_avx512
-#define scene_texture_prefetch_lod8 scene_texture_prefetch_lod8_avx512
-#define scene_texture_finish_lod8 scene_texture_finish_lod8_avx512
-#define scene_texture_set_image scene_texture_set_image_avx512
-#define scene_textures_generate scene_textures_generate_avx512
-#define scene_textures_get_or_create scene_textures_get_or_create_avx512
-#define scene_textures_init scene_textures_init_avx512
-#define scene_textures_lookup scene_textures_lookup_avx512
-#define scene_textures_release scene_textures_release_avx512
-#define scene_textures_remove scene_textures_remove_avx512
+#define SHADE_EYE_SUFFIX _avx512
+#include "render/shade_eye_unit.h"
 
 #include "render/shade.c"
 #include "render/surface.c"

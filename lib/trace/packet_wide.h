@@ -1308,10 +1308,11 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
          * packet's walk starts with the root's test, whose loads issue
          * only once the set-up (the rays' loads, five divisions, the
          * ranges, packet_ia_init) has passed; requested here, the fetch
-         * runs beside the set-up.  A prefetch changes no answer.  Measured (docs/performance-log.md,
-         * round 38's merge): kitchen camera packets +0.9 and +0.4 % in two
-         * quiet alternated pairs, gears' +2.0 and +1.6 %, bumpy and the
-         * soup mixed within the spread. */
+         * runs beside the set-up.  A prefetch changes no answer.
+         * Measured (docs/performance-log.md, round 38's merge): kitchen
+         * camera packets +0.9 and +0.4 % in two quiet alternated pairs,
+         * gears' +2.0 and +1.6 %, bumpy and the soup mixed within the
+         * spread. */
         WIDE_PREFETCH_LINES(wide->nodes8, 4);
     }
     {
