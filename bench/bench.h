@@ -233,6 +233,13 @@ int bench_accel_build(struct bench_accel *acc, const struct bench_mesh *mesh,
 struct rt_pool;
 int bench_accel_build_pool(struct bench_accel *acc, const struct bench_mesh *mesh,
                            const struct bvh_build_params *params, struct rt_pool *pool);
+/* bench_accel_build_pool, with the leaf-ordered triangles (tri, for the
+ * binary walks) only when with_tri: without them, the binary tree and the
+ * wide layout, what the wide walk reads and what a library object's
+ * fresh build makes (scene/accel.c). */
+int bench_accel_build_wide(struct bench_accel *acc, const struct bench_mesh *mesh,
+                           const struct bvh_build_params *params, struct rt_pool *pool,
+                           int with_tri);
 void bench_accel_release(struct bench_accel *acc);
 
 /*

@@ -196,8 +196,10 @@ struct build_faults {
 
 /* Build times on `threads` threads: ours (serial binned SAH on one
  * thread, accel_build_triangles, accel_build_parallel_triangles on pool
- * otherwise, through
- * bench_accel_build_pool) and Embree's qualities
+ * otherwise, and the collapse to the wide layout from the mesh, through
+ * bench_accel_build_wide without the leaf-ordered triangles: what a
+ * library object's fresh build makes and the wide walk reads, as
+ * Embree's commit builds what its walk reads) and Embree's qualities
  * on a device of that many threads, interleaved runs; --only picks the
  * paths (ours, low, medium, high).  *row_faults receives the medians of
  * the minor page faults around the same timed calls. */
@@ -228,7 +230,7 @@ static int embree_build_row(const struct bench_options *opts, RTCDevice device, 
             long faults_start = minor_faults();
             double sys_start = system_ms();
             double clock_start = bench_clock_ms(threads);
-            int rc = bench_accel_build_pool(&acc, mesh, NULL, threads > 1 ? pool : NULL);
+            int rc = bench_accel_build_wide(&acc, mesh, NULL, threads > 1 ? pool : NULL, 0);
             times[run] = bench_clock_ms(threads) - clock_start;
             fault_runs[run] = (double)(minor_faults() - faults_start);
             sys_runs[run] = system_ms() - sys_start;

@@ -17,6 +17,7 @@
 #include <time.h>
 
 #include "accel/build_parallel.h"
+#include "accel/collapse_mesh.h"
 #include "base/alloc.h"
 #include "base/timer.h"
 #include "bench.h"
@@ -104,6 +105,13 @@ int bench_accel_build(struct bench_accel *acc, const struct bench_mesh *mesh,
 int bench_accel_build_pool(struct bench_accel *acc, const struct bench_mesh *mesh,
                            const struct bvh_build_params *params, struct rt_pool *pool)
 {
+    return bench_accel_build_wide(acc, mesh, params, pool, 1);
+}
+
+int bench_accel_build_wide(struct bench_accel *acc, const struct bench_mesh *mesh,
+                           const struct bvh_build_params *params, struct rt_pool *pool,
+                           int with_tri)
+{
     memset(acc, 0, sizeof(*acc));
     int rc;
     /* A large parallel build's scratch mapping, for the collapse. */
@@ -121,10 +129,15 @@ int bench_accel_build_pool(struct bench_accel *acc, const struct bench_mesh *mes
     }
     if (rc)
         return -1;
-    acc->tri = accel_gather_triangles_pool(&acc->bvh, mesh->positions, mesh->indices, pool);
-    if (!acc->tri || accel_collapse_wide_quality(&acc->wide, &acc->bvh, acc->tri,
-                                                 bench_layout_width(), pool, &spare,
-                                                 chosen_collapse)) {
+    /* Without the leaf-ordered copy the collapse reads the mesh
+     * (collapse_mesh.h): the same layout byte for byte. */
+    if (with_tri)
+        acc->tri = accel_gather_triangles_pool(&acc->bvh, mesh->positions, mesh->indices, pool);
+    const struct collapse_triangles tris = {acc->tri, acc->tri ? NULL : mesh->positions,
+                                            acc->tri ? NULL : mesh->indices};
+    if ((with_tri && !acc->tri) ||
+        accel_collapse_wide_source(&acc->wide, &acc->bvh, &tris, bench_layout_width(), pool,
+                                   &spare, chosen_collapse)) {
         rt_free_large(&spare);
         rt_free(acc->tri);
         bvh_release(&acc->bvh);

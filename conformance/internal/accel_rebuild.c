@@ -10,6 +10,11 @@
  * the layout it needs and gives the fresh structure's refit; and a
  * rebuild that fails at any one allocation leaves the replaced structure
  * as it was (a refit of it then still gives the fresh one's refit).
+ * A fresh build with a wide layout leaves the leaf-ordered triangles out
+ * (scene_accel_triangles gathers them on first need, a first refit
+ * allocates them): they are compared with a gather of the structure's
+ * tree, and a failure of either allocation leaves the structure as it
+ * was and usable.
  */
 #include <math.h>
 #include <stdint.h>
@@ -27,9 +32,24 @@
 
 static int failures;
 
+/* The structure's leaf-ordered triangles, or for one that has none
+ * (a fresh build) a gather of its tree over g, which scene_accel_triangles
+ * would give; *owned is set when the caller frees it. */
+static const float *triangles_of(const struct scene_accel *a, const struct scene_accel_geometry *g,
+                                 float **owned)
+{
+    *owned = NULL;
+    if (a->tri)
+        return a->tri;
+    *owned = accel_gather_triangles(&a->bvh, g->positions, g->indices);
+    return *owned;
+}
+
 /* The bytes traversal and refit read: the binary tree, the leaf-ordered
- * triangles and the wide layout (its refit tables too). */
-static int same_accel(const struct scene_accel *a, const struct scene_accel *b)
+ * triangles (had or gathered over g) and the wide layout (its refit
+ * tables too). */
+static int same_accel(const struct scene_accel *a, const struct scene_accel *b,
+                      const struct scene_accel_geometry *g)
 {
     const struct bvh *x = &a->bvh, *y = &b->bvh;
     if (x->node_count != y->node_count || x->prim_count != y->prim_count ||
@@ -37,7 +57,12 @@ static int same_accel(const struct scene_accel *a, const struct scene_accel *b)
         memcmp(x->nodes, y->nodes, (size_t)x->node_count * sizeof(*x->nodes)) != 0 ||
         memcmp(x->prim_index, y->prim_index, (size_t)x->prim_count * sizeof(uint32_t)) != 0)
         return 0;
-    if (!a->tri || !b->tri || memcmp(a->tri, b->tri, 9 * sizeof(float) * x->prim_count) != 0)
+    float *own_a, *own_b;
+    const float *ta = triangles_of(a, g, &own_a), *tb = triangles_of(b, g, &own_b);
+    const int same_tri = ta && tb && memcmp(ta, tb, 9 * sizeof(float) * x->prim_count) == 0;
+    free(own_a);
+    free(own_b);
+    if (!same_tri)
         return 0;
     const struct bvh4 *p = &a->wide, *q = &b->wide;
     if (p->width != q->width || p->node_count != q->node_count ||
@@ -83,6 +108,18 @@ static void check_mesh(const char *name, const struct tg_mesh *m, struct rt_pool
             struct scene_accel_geometry g = {pos, m->idx, m->tri_count};
             struct scene_accel *cur = scene_accel_build(&g, &params, builder, p, NULL);
             failures += !CHECKF(cur != NULL, "%s: first build failed", name);
+            if (cur) {
+                /* Left out with a wide layout, made with the structure
+                 * without one (every walk then reads them). */
+                failures += !CHECKF((cur->tri == NULL) == (params.wide_layout != 0),
+                                    "%s, layout %d: the fresh build's triangles %s", name,
+                                    params.wide_layout, cur->tri ? "made" : "missing");
+                /* A frame's first need (scene_accel_triangles), as a
+                 * blended frame's ties walk asks: then the object's
+                 * rebuilds keep them, into the replaced array. */
+                failures += !CHECKF(scene_accel_triangles(cur, &g) != NULL && cur->tri != NULL,
+                                    "%s: the lazy gather failed", name);
+            }
             for (int f = 1; f <= 3 && cur; f++) {
                 deform(pos, m->pos, m->vertex_count, f);
                 struct scene_accel *fresh = scene_accel_build(&g, &params, builder, p, NULL);
@@ -96,7 +133,7 @@ static void check_mesh(const char *name, const struct tg_mesh *m, struct rt_pool
                     scene_accel_release(rebuilt);
                     break;
                 }
-                failures += !CHECKF(same_accel(rebuilt, fresh),
+                failures += !CHECKF(same_accel(rebuilt, fresh, &g),
                                     "%s, layout %d, %s: the rebuild (frame %d) differs from a "
                                     "fresh build",
                                     name, params.wide_layout, par ? "parallel" : "serial", f);
@@ -109,9 +146,11 @@ static void check_mesh(const char *name, const struct tg_mesh *m, struct rt_pool
                 /* The next frame's positions by refit, on both: the rebuilt
                  * structure has what the refit needs. */
                 deform(pos, m->pos, m->vertex_count, f + 10);
-                scene_accel_refit(cur, &g, &params, p);
-                scene_accel_refit(fresh, &g, &params, p);
-                failures += !CHECKF(same_accel(cur, fresh),
+                failures += !CHECKF(scene_accel_refit(cur, &g, &params, p) == 0 &&
+                                        scene_accel_refit(fresh, &g, &params, p) == 0 &&
+                                        fresh->tri != NULL,
+                                    "%s: a refit failed or left its triangles out", name);
+                failures += !CHECKF(same_accel(cur, fresh, &g),
                                     "%s, layout %d: a refit after the rebuild differs", name,
                                     params.wide_layout);
                 scene_accel_release(fresh);
@@ -123,6 +162,8 @@ static void check_mesh(const char *name, const struct tg_mesh *m, struct rt_pool
                 struct scene_accel *before = scene_accel_build(&g, &params, builder, p, NULL);
                 scene_accel_release(cur);
                 cur = scene_accel_build(&g, &params, builder, p, NULL);
+                if (cur)
+                    scene_accel_triangles(cur, &g);
                 deform(pos, m->pos, m->vertex_count, 21);
                 struct scene_accel *target = scene_accel_build(&g, &params, builder, p, NULL);
                 int survived = 0, failed = 0;
@@ -139,7 +180,7 @@ static void check_mesh(const char *name, const struct tg_mesh *m, struct rt_pool
                     }
                     if (next) {
                         survived++;
-                        failures += !CHECKF(same_accel(next, target),
+                        failures += !CHECKF(same_accel(next, target, &g),
                                             "%s: rebuild with allocation %ld failed differs",
                                             name, n);
                         scene_accel_release(next);
@@ -147,7 +188,7 @@ static void check_mesh(const char *name, const struct tg_mesh *m, struct rt_pool
                         failed++;
                         /* deform back: cur must still be frame 20's. */
                         deform(pos, m->pos, m->vertex_count, 20);
-                        failures += !CHECKF(same_accel(cur, before),
+                        failures += !CHECKF(same_accel(cur, before, &g),
                                             "%s: a failed rebuild (allocation %ld) changed the "
                                             "replaced structure",
                                             name, n);
@@ -158,6 +199,8 @@ static void check_mesh(const char *name, const struct tg_mesh *m, struct rt_pool
                     scene_accel_release(cur);
                     deform(pos, m->pos, m->vertex_count, 20);
                     cur = scene_accel_build(&g, &params, builder, p, NULL);
+                    if (cur)
+                        scene_accel_triangles(cur, &g);
                     deform(pos, m->pos, m->vertex_count, 21);
                 }
                 failures += !CHECKF(failed > 0, "%s: no rebuild failed", name);
@@ -187,6 +230,8 @@ static void check_small_keeps_old(const struct tg_mesh *m)
     deform(pos, m->pos, m->vertex_count, 0);
     struct scene_accel_geometry g = {pos, m->idx, m->tri_count};
     struct scene_accel *cur = scene_accel_build(&g, &params, SCENE_ACCEL_SERIAL, NULL, NULL);
+    if (cur)
+        scene_accel_triangles(cur, &g); /* as a frame that needed them */
     deform(pos, m->pos, m->vertex_count, 1);
     struct scene_accel *fresh = scene_accel_build(&g, &params, SCENE_ACCEL_SERIAL, NULL, NULL);
     const float *old_tri = cur ? cur->tri : NULL;
@@ -196,13 +241,60 @@ static void check_small_keeps_old(const struct tg_mesh *m)
         failures += !CHECKF(cur->tri == old_tri && rebuilt->tri != old_tri,
                             "small mesh: the rebuild took the replaced triangles below the "
                             "threshold");
-        failures += !CHECKF(same_accel(rebuilt, fresh), "small mesh: the rebuild differs");
+        failures += !CHECKF(same_accel(rebuilt, fresh, &g), "small mesh: the rebuild differs");
     } else {
         failures++;
     }
     scene_accel_release(cur);
     scene_accel_release(fresh);
     scene_accel_release(rebuilt);
+    free(pos);
+}
+
+/* The lazily made triangles when their allocation fails: the gather
+ * (scene_accel_triangles) and a first refit report it and leave the
+ * structure as it was, and the next call succeeds with a gather's bytes
+ * (lib/api reports the frame's failure as RT_OUT_OF_MEMORY). */
+static void check_lazy_failures(const struct tg_mesh *m)
+{
+    float *pos = tg_alloc(sizeof(float) * 3 * (size_t)m->vertex_count);
+    struct bvh_build_params params;
+    bvh_build_params_default(&params);
+    params.wide_layout = 8;
+    deform(pos, m->pos, m->vertex_count, 0);
+    struct scene_accel_geometry g = {pos, m->idx, m->tri_count};
+    struct scene_accel *a = scene_accel_build(&g, &params, SCENE_ACCEL_SERIAL, NULL, NULL);
+    struct scene_accel *b = scene_accel_build(&g, &params, SCENE_ACCEL_SERIAL, NULL, NULL);
+    if (!CHECKF(a && b && !a->tri, "lazy: the builds failed or made the triangles")) {
+        failures++;
+        goto done;
+    }
+    rt_alloc_fail_once(0);
+    const float *tri = scene_accel_triangles(a, &g);
+    const long injected = rt_alloc_failures();
+    rt_alloc_fail_reset();
+    failures += !CHECKF(injected == 1 && tri == NULL && a->tri == NULL && same_accel(a, b, &g),
+                        "lazy: a failed gather was not reported or changed the structure");
+    tri = scene_accel_triangles(a, &g);
+    failures += !CHECKF(tri && tri == a->tri && same_accel(a, b, &g),
+                        "lazy: the gather after a failure differs");
+    failures += !CHECKF(scene_accel_triangles(a, &g) == tri, "lazy: the gather is not kept");
+    /* A first refit without the triangles: its one allocation. */
+    deform(pos, m->pos, m->vertex_count, 1);
+    rt_alloc_fail_once(0);
+    const int status = scene_accel_refit(b, &g, &params, NULL);
+    rt_alloc_fail_reset();
+    deform(pos, m->pos, m->vertex_count, 0);
+    failures += !CHECKF(status == -1 && b->tri == NULL && same_accel(a, b, &g),
+                        "lazy: a failed first refit was not reported or changed the structure");
+    deform(pos, m->pos, m->vertex_count, 1);
+    failures += !CHECKF(scene_accel_refit(a, &g, &params, NULL) == 0 &&
+                            scene_accel_refit(b, &g, &params, NULL) == 0 && b->tri &&
+                            same_accel(a, b, &g),
+                        "lazy: the refit after a failure differs");
+done:
+    scene_accel_release(a);
+    scene_accel_release(b);
     free(pos);
 }
 
@@ -219,6 +311,7 @@ int main(void)
     check_mesh("soup", &soup, pool);
     check_mesh("sphere", &sphere, pool);
     check_small_keeps_old(&soup);
+    check_lazy_failures(&sphere);
     tg_mesh_free(&soup);
     tg_mesh_free(&sphere);
     rt_pool_destroy(pool);

@@ -77,6 +77,26 @@ static void count_build(struct render_pass *sh, int built_now, double start)
     }
 }
 
+/* The object's leaf-ordered triangles into view->tri: what the structure
+ * has, or, when this pass may walk the binary tree (reads_binary) or the
+ * structure has no wide layout, the array gathered on first need
+ * (scene_object_triangles).  A pass that walks only the wide layout
+ * leaves view->tri NULL for a structure made without it: no wide walk
+ * reads it (only the binary walks do, trace/scene_traverse.h).  0 when
+ * the gather fails. */
+static int view_triangles(struct render_pass *sh, struct scene_object *o,
+                          const struct scene_accel *accel, struct trace_object_view *view)
+{
+    view->tri = rt_atomic_load_acquire(&accel->tri);
+    if (view->tri || (!sh->reads_binary && accel->wide.node_count))
+        return 1;
+    view->tri = scene_object_triangles(o, accel);
+    if (view->tri)
+        return 1;
+    rt_atomic_store_relaxed(&sh->failed, 1);
+    return 0;
+}
+
 static int acquire_object(void *user, void *object, struct trace_object_view *view)
 {
     struct render_pass *sh = user;
@@ -90,9 +110,8 @@ static int acquire_object(void *user, void *object, struct trace_object_view *vi
         view->ray_count = &o->ray_visits;
     if (accel && accel->serial == o->serial) {
         view->bvh = &accel->bvh;
-        view->tri = accel->tri;
         view->wide = &accel->wide;
-        return 1;
+        return view_triangles(sh, o, accel, view);
     }
     int built_now;
     double start = rt_now_ms();
@@ -103,9 +122,8 @@ static int acquire_object(void *user, void *object, struct trace_object_view *vi
     }
     count_build(sh, built_now, start);
     view->bvh = &accel->bvh;
-    view->tri = accel->tri;
     view->wide = &accel->wide;
-    return 1;
+    return view_triangles(sh, o, accel, view);
 }
 
 /* A flattened nested hierarchy (scene/flatten.h), built on first use. */
@@ -142,6 +160,8 @@ static int shared_init(struct render_pass *sh, const struct render_job *job)
     sh->scene.kernels = job->kernels;
     sh->scene.top_wide = &job->frame->top_wide;
     sh->scene.user = sh;
+    /* A table without a wide walk walks every object's binary tree. */
+    sh->reads_binary = !job->kernels || !job->kernels->closest4;
     sh->counters = rt_calloc((size_t)rt_pool_threads(job->pool), sizeof(*sh->counters));
     return sh->counters ? 0 : -1;
 }
@@ -825,6 +845,11 @@ static int pass_begin(struct render_pass *pass, const struct render_job *job, in
     pass->fb = fb;
     pass->fb_width = fb_width;
     pass->fb_height = fb_height;
+    /* The ties walk (trace_scene_ties: blend.c's layers and clipped
+     * hits, gl_shade.c's undrawn faces) and the hit filter's walk
+     * (secondary rays past what GL removed) read the binary tree. */
+    pass->reads_binary |= pass->clipping || pass->see_through || !pass->all_drawn ||
+                          pass->secondary != NULL;
     pass->tiles_x = (st->viewport[2] + RENDER_TILE_SIZE - 1) / RENDER_TILE_SIZE;
     pass->tiles_y = (st->viewport[3] + RENDER_TILE_SIZE - 1) / RENDER_TILE_SIZE;
     /* A singular projection leaves every pixel at the clear colour. */
@@ -1481,6 +1506,7 @@ static int run_queries(const struct render_job *job, int count, const RTray *ray
         sh.scene.filter_mask = SECONDARY_CLIP | SECONDARY_UNFILLED;
         sh.scene.accept = secondary_accept_query;
         sh.scene.accept_user = &sh;
+        sh.reads_binary = 1; /* the hit filter's walk */
     }
     /* One chunk needs no helpers: avoid waking the pool for tiny batches. */
     rt_pool_run(count > RENDER_QUERY_CHUNK ? job->pool : NULL, query_task, &sh);

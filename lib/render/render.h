@@ -135,6 +135,10 @@ struct render_pass {
     uint64_t build_us;   /* atomic */
     int failed;          /* atomic: an object could not be built */
     uint32_t next_item;  /* atomic work counter */
+    /* The pass may walk an object's binary tree (a table without a wide
+     * walk, the ties walk, the hit filter's walk): acquire_object then
+     * has the leaf-ordered triangles gathered (scene_object_triangles). */
+    int reads_binary;
     /* Frames. */
     int projectable;     /* the projection could be inverted */
     int clipping;        /* some instance has clip planes (frame_has_clip) */

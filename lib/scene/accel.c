@@ -14,32 +14,47 @@
 #include "base/timer.h"
 #include "scene/object.h"
 
-/* The step after every change of the tree's topology: the leaf-ordered
- * triangles and the 4-wide layout traversal reads, and the cost the
- * update strategies compare.  Returns 0, or -1 on allocation failure
- * (accel->tri unchanged; accel->wide unchanged, or released when the
- * collapse itself failed; old unchanged).  Times the collapse into
- * accel->collapse_ms.
+/* The step after every change of the tree's topology: the wide layout
+ * traversal reads, the leaf-ordered triangles when this structure keeps
+ * them (below), and the cost the update strategies compare.  Returns 0,
+ * or -1 on allocation failure (accel->tri unchanged; accel->wide
+ * unchanged, or released when the collapse itself failed; old
+ * unchanged).  Times the collapse into accel->collapse_ms.
+ *
+ * The leaf-ordered triangles (36 bytes a triangle) are read only by the
+ * binary walks: the hit filter's, the ties walk, a table or a structure
+ * without a wide layout, and by the refit (accel.h).  A structure keeps
+ * them from the start only when it has no wide layout to walk (isa=scalar,
+ * an empty object), when it replaces one that had them (the object's
+ * frames or its refits needed them: a deforming object's rebuild), or
+ * when restructuring regathers the array it already has; otherwise the
+ * collapse reads the triangles from the mesh (collapse_mesh.h, the same
+ * layout byte for byte) and scene_accel_triangles gathers them on first
+ * need.
  * The new layout reuses the block of the one it replaces when it fits:
  * accel's own, or old's (may be NULL), whose wide layout is then
  * released (accel_collapse_wide_reuse).  A structure old of as many
  * triangles (a deforming object's rebuild) also gives its leaf-ordered
  * triangles' array, whose pages are in memory, to the new gather when it
  * is at least params->rebuild_reuse_min_bytes (BVH_REBUILD_REUSE_MIN_BYTES
- * says why smaller arrays are not worth it): then
- * the collapse reads the triangles from the mesh (collapse_mesh.h, the
- * same layout byte for byte) and the gather overwrites old's array only
- * after the collapse has succeeded, so that a failure leaves old whole. */
+ * says why smaller arrays are not worth it); accel's own array is
+ * regathered in place (restructuring keeps the triangle count).  Either
+ * array is written only after the collapse has succeeded, so a failure
+ * leaves old whole and accel's triangles as they were. */
 static int finish_layout(struct scene_accel *accel, const struct scene_accel_geometry *geom,
                          const struct bvh_build_params *params, struct rt_pool *pool,
                          struct scene_accel *old, struct rt_large_block *scratch)
 {
-    const int reuse_tri =
-        old && old->tri && accel->bvh.prim_count &&
+    const int keep_tri = !params->wide_layout || !accel->bvh.prim_count || accel->tri ||
+                         (old && old->tri);
+    const int reuse_old_tri =
+        keep_tri && !accel->tri && old && old->tri && accel->bvh.prim_count &&
         old->bvh.prim_count == accel->bvh.prim_count &&
         (uint64_t)accel->bvh.prim_count * 9 * sizeof(float) >= params->rebuild_reuse_min_bytes;
+    /* Gathered after the collapse, into an array that is already there. */
+    const int gather_late = accel->tri != NULL || reuse_old_tri;
     float *tri = NULL;
-    if (!reuse_tri) {
+    if (keep_tri && !gather_late) {
         tri = accel_gather_triangles_pool(&accel->bvh, geom->positions, geom->indices, pool);
         if (!tri)
             return -1;
@@ -65,11 +80,16 @@ static int finish_layout(struct scene_accel *accel, const struct scene_accel_geo
         return -1;
     }
     accel->collapse_ms = params->wide_layout ? rt_now_ms() - start : 0.0;
-    if (reuse_tri) {
+    if (gather_late) {
         /* Nothing fails from here on.  old is released right after
          * (scene_accel_rebuild's contract), without its triangles. */
-        tri = old->tri;
-        old->tri = NULL;
+        if (accel->tri) {
+            tri = accel->tri;
+            accel->tri = NULL;
+        } else {
+            tri = old->tri;
+            old->tri = NULL;
+        }
         accel_gather_triangles_into(&accel->bvh, geom->positions, geom->indices, pool, tri);
     }
     if (old)
@@ -142,16 +162,39 @@ fail:
  * sec. 6 interleaves the two the same way): the refit updates the layout
  * in place, so finish_layout's gather is not needed, only the cost.  The
  * topology is unchanged, so the wide layout keeps its shape and only
- * takes the refitted boxes and triangles (no allocation, nothing can
- * fail; timed into accel->wide_refit_ms). */
-void scene_accel_refit(struct scene_accel *accel, const struct scene_accel_geometry *geom,
-                       const struct bvh_build_params *params, struct rt_pool *pool)
+ * takes the refitted boxes and triangles (timed into
+ * accel->wide_refit_ms).  A structure without its leaf-ordered triangles
+ * (a fresh build, finish_layout) gets the array here, once: the refit
+ * writes every float of it (accel_refit_mesh rewrites the triangles from
+ * the mesh before it reads them), and keeps it for the next refits. */
+int scene_accel_refit(struct scene_accel *accel, const struct scene_accel_geometry *geom,
+                      const struct bvh_build_params *params, struct rt_pool *pool)
 {
+    if (!accel->tri) {
+        const uint32_t n = accel->bvh.prim_count;
+        accel->tri = rt_realloc_array(NULL, n ? 9 * (size_t)n : 1, sizeof(float));
+        if (!accel->tri)
+            return -1;
+    }
     accel_refit_mesh(&accel->bvh, accel->tri, geom->positions, geom->indices, pool);
     double start = rt_now_ms();
     accel_refit4(&accel->wide, &accel->bvh, accel->tri);
     accel->wide_refit_ms = rt_now_ms() - start;
     accel->sah_cost = accel_sah_cost(&accel->bvh, params->c_trav, params->c_isect);
+    return 0;
+}
+
+const float *scene_accel_triangles(struct scene_accel *accel,
+                                   const struct scene_accel_geometry *geom)
+{
+    const float *tri = rt_atomic_load_acquire(&accel->tri);
+    if (tri)
+        return tri;
+    float *gathered = accel_gather_triangles(&accel->bvh, geom->positions, geom->indices);
+    /* Whole before it is seen: readers load accel->tri with acquire. */
+    if (gathered)
+        rt_atomic_store_release(&accel->tri, gathered);
+    return gathered;
 }
 
 int scene_accel_restructure(struct scene_accel *accel, const struct scene_accel_geometry *geom,

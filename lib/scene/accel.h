@@ -6,8 +6,9 @@
  * Every path that changes a structure (first build, rebuild, refit,
  * selective restructuring, an asynchronous build landing) goes through
  * this file, and each ends in the same step, finish_layout in accel.c,
- * which produces what traversal reads (the leaf-ordered triangles) and
- * the tree's SAH cost.  A new traversal layout (wide nodes, say) is made
+ * which produces what traversal reads (the wide layout, and the
+ * leaf-ordered triangles when the structure keeps them from the start)
+ * and the tree's SAH cost.  A new traversal layout (wide nodes, say) is made
  * there and nowhere else.
  *
  * The strategy deciding which of these runs lives in update.c; the
@@ -27,7 +28,12 @@ struct scene_object;
 
 struct scene_accel {
     struct bvh bvh;
-    float *tri; /* leaf-ordered vertices, accel_gather_triangles */
+    /* Leaf-ordered vertices (accel_gather_triangles), for the binary
+     * walks and the refit; NULL until first needed when the structure has
+     * a wide layout (finish_layout in accel.c says when it is made with
+     * the structure): scene_accel_triangles makes it.  Published with a
+     * release store; render threads load it with acquire. */
+    float *tri;
     struct bvh4 wide; /* the wide traversal layout of bvh, 4- or 8-wide (bvh4_layout.h) */
     uint32_t serial;   /* the object's serial this structure reflects */
     uint32_t topology; /* the object's topology serial it was built for */
@@ -78,7 +84,9 @@ struct scene_preempt_hook {
  * A fresh structure over geom (serial and topology left 0 for the caller
  * to stamp).  pool (may be NULL) also shares the gather into leaf order
  * and the collapse to the wide layout, for any builder: the same bytes
- * as without it.  Times itself into build_ms (wall) and build_cost_ms
+ * as without it.  With a wide layout (params->wide_layout) and triangles,
+ * the leaf-ordered triangles are left out (tri NULL) until
+ * scene_accel_triangles or a refit makes them.  Times itself into build_ms (wall) and build_cost_ms
  * (rt_pool_work_ms); hook may be NULL.  NULL on allocation failure.
  */
 struct scene_accel *scene_accel_build(const struct scene_accel_geometry *geom,
@@ -90,9 +98,11 @@ struct scene_accel *scene_accel_build(const struct scene_accel_geometry *geom,
  * (accel_collapse_wide_reuse), and the new leaf-ordered triangles into
  * old's array when it has as many triangles (a deforming object) and is
  * at least params->rebuild_reuse_min_bytes, whose pages are already in
- * memory; so old loses its wide layout and, then, its triangles once the
- * new structure is made
- * (it keeps its binary tree; it is only to be released then).  On
+ * memory (a structure replacing one that had leaf-ordered triangles has
+ * them from the start: the object's frames or refits needed them); so
+ * old loses its wide layout and, then, its triangles once the new
+ * structure is made (it keeps its binary tree; it is only to be
+ * released then).  On
  * failure old is as it was.  For the synchronous rebuild, where old is
  * replaced and freed right after; not while another thread may walk
  * old. */
@@ -103,9 +113,22 @@ struct scene_accel *scene_accel_rebuild(const struct scene_accel_geometry *geom,
                                         struct scene_accel *old);
 
 /* Refits boxes and leaf-ordered triangles in place to geom's current
- * positions (same connectivity).  Allocates nothing, cannot fail. */
-void scene_accel_refit(struct scene_accel *accel, const struct scene_accel_geometry *geom,
+ * positions (same connectivity).  Allocates only the leaf-ordered
+ * triangles' array, when the structure has none yet (a fresh build
+ * leaves it out), and keeps it.  0, or -1 when that allocation fails
+ * (accel unchanged). */
+int scene_accel_refit(struct scene_accel *accel, const struct scene_accel_geometry *geom,
                        const struct bvh_build_params *params, struct rt_pool *pool);
+
+/* The structure's leaf-ordered triangles over geom (the positions it
+ * reflects), gathered now on first need and kept: what the binary walks
+ * read (the hit filter's walk, the ties walk, a table without a wide
+ * walk).  NULL on allocation failure (accel unchanged, still usable;
+ * the next call tries again).  Not thread-safe for one structure: the
+ * caller holds the object's build_lock (scene_object_triangles,
+ * update.h), or no other thread can reach accel. */
+const float *scene_accel_triangles(struct scene_accel *accel,
+                                   const struct scene_accel_geometry *geom);
 
 /* Selective restructuring (Yoon, Curtis and Manocha (2007)) of accel to geom's positions, with
  * the measured constants and rays_per_frame.  0, or -1 on allocation

@@ -64,13 +64,18 @@ static int rebuild(struct scene_object *object, const struct bvh_build_params *p
     return 0;
 }
 
-static void refit(struct scene_object *object, const struct bvh_build_params *params,
-                  struct rt_pool *pool)
+/* 0, or -1 when the structure's first refit cannot have its
+ * leaf-ordered triangles (scene_accel_refit; the structure is unchanged,
+ * stale, and the next update tries again). */
+static int refit(struct scene_object *object, const struct bvh_build_params *params,
+                 struct rt_pool *pool)
 {
     struct scene_accel_geometry g = geometry(object);
-    scene_accel_refit(object->accel, &g, params, pool_for(&object->mesh, pool));
+    if (scene_accel_refit(object->accel, &g, params, pool_for(&object->mesh, pool)))
+        return -1;
     object->wide_refit_ms_total += object->accel->wide_refit_ms;
     object->refits++;
+    return 0;
 }
 
 static int restructure(struct scene_object *object, const struct bvh_build_params *params,
@@ -90,7 +95,8 @@ static int restructure(struct scene_object *object, const struct bvh_build_param
 static int refit_or_rebuild(struct scene_object *object, const struct bvh_build_params *params,
                             const struct scene_update_config *config)
 {
-    refit(object, params, config->pool);
+    if (refit(object, params, config->pool))
+        return -1;
     if (object->accel->sah_cost > REBUILD_HEURISTIC_THRESHOLD * object->accel->built_sah_cost)
         return rebuild(object, params, 0, config->pool, config->preempt);
     return 0;
@@ -117,8 +123,8 @@ static int async_rebuild(struct scene_object *object, const struct bvh_build_par
         scene_accel_release(landed); /* built for an old connectivity */
     }
     /* A landed tree was built from vertices one or more frames old. */
-    if (object->accel->serial != object->serial)
-        refit(object, params, config->pool);
+    if (object->accel->serial != object->serial && refit(object, params, config->pool))
+        return -1;
     /* Failing to queue only delays the next rebuild. */
     scene_async_request(async, object);
     return 0;
@@ -162,7 +168,8 @@ static int async_rebuild(struct scene_object *object, const struct bvh_build_par
 static int automatic(struct scene_object *object, const struct bvh_build_params *params,
                      const struct scene_update_config *config)
 {
-    refit(object, params, config->pool);
+    if (refit(object, params, config->pool))
+        return -1;
     const struct scene_accel *accel = object->accel;
     double lost_ms = object->expected_rays * config->ms_per_test *
                      (accel->sah_cost - accel->built_sah_cost);
@@ -215,8 +222,7 @@ const struct scene_accel *scene_object_update(struct scene_object *object,
         object->last_strategy = strategy;
         switch (strategy) {
         case RT_REFIT:
-            refit(object, &dynamic, config->pool);
-            status = 0;
+            status = refit(object, &dynamic, config->pool);
             break;
         case RT_REBUILD_MEDIAN:
             status = rebuild(object, &dynamic, 1, config->pool, config->preempt);
@@ -242,6 +248,24 @@ const struct scene_accel *scene_object_update(struct scene_object *object,
     }
     object->update_ms = rt_now_ms() - start;
     return status == 0 ? object->accel : NULL;
+}
+
+const float *scene_object_triangles(struct scene_object *object,
+                                    const struct scene_accel *accel)
+{
+    const float *tri = rt_atomic_load_acquire(&accel->tri);
+    if (tri)
+        return tri;
+    /* The render threads of a frame may ask together: one gathers under
+     * the object's lock, the others find the array published.  accel is
+     * the object's current structure (its serial is the object's), so
+     * the mesh's positions are the ones it reflects, and nothing replaces
+     * it during the frame (scene_object_acquire). */
+    pthread_mutex_lock(&object->build_lock);
+    struct scene_accel_geometry g = geometry(object);
+    tri = scene_accel_triangles((struct scene_accel *)accel, &g);
+    pthread_mutex_unlock(&object->build_lock);
+    return tri;
 }
 
 const struct scene_accel *scene_object_acquire(struct scene_object *object,

@@ -72,6 +72,18 @@ const struct scene_accel *scene_object_acquire(struct scene_object *object,
                                                const struct scene_update_config *config,
                                                int *built_now);
 
+/*
+ * The leaf-ordered triangles of accel, the object's current structure
+ * (from scene_object_acquire or scene_object_peek, of the object's
+ * serial), gathered on first need and kept (scene_accel_triangles): what
+ * a frame's binary walks read (the hit filter's, the ties walk, a table
+ * without a wide walk).  Thread-safe: the gather runs under the object's
+ * lock, once.  NULL on allocation failure (the structure stays usable;
+ * the next call tries again).
+ */
+const float *scene_object_triangles(struct scene_object *object,
+                                    const struct scene_accel *accel);
+
 /* The strategy an update of this object would use now (resolving
  * RT_AUTOMATIC), for statistics. */
 unsigned scene_object_strategy(const struct scene_object *object, unsigned default_strategy);
