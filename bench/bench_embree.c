@@ -40,6 +40,7 @@
 #include "base/timer.h"
 #include "bench.h"
 #include "bench_embree.h"
+#include "scene/accel.h"
 
 /* Embree's default (non-robust) triangle test may legitimately miss or
  * hit a ray that grazes a shared edge where our watertight test does the
@@ -196,10 +197,10 @@ struct build_faults {
 
 /* Build times on `threads` threads: ours (serial binned SAH on one
  * thread, accel_build_triangles, accel_build_parallel_triangles on pool
- * otherwise, and the collapse to the wide layout from the mesh, through
- * bench_accel_build_wide without the leaf-ordered triangles: what a
- * library object's fresh build makes and the wide walk reads, as
- * Embree's commit builds what its walk reads) and Embree's qualities
+ * otherwise, and the collapse to the wide layout, through
+ * bench_accel_build_wide with the leaf-ordered triangles where a library
+ * object's fresh build makes them (scene_accel_triangles_at_build): what
+ * the wide walk reads, as Embree's commit builds what its walk reads) and Embree's qualities
  * on a device of that many threads, interleaved runs; --only picks the
  * paths (ours, low, medium, high).  *row_faults receives the medians of
  * the minor page faults around the same timed calls. */
@@ -222,6 +223,12 @@ static int embree_build_row(const struct bench_options *opts, RTCDevice device, 
     for (int p = 0; p < 1 + BUILD_QUALITIES; p++)
         run_path[p] = !opts->only ||
                       bench_strategy_selected(opts->only, p ? build_quality_keys[p - 1] : "ours");
+    /* The leaf-ordered copy only where a library object's fresh build
+     * makes it (scene_accel_triangles_at_build: below 32 MiB of it). */
+    struct bvh_build_params lib_params;
+    bvh_build_params_default(&lib_params);
+    lib_params.wide_layout = (int)bench_layout_width();
+    const int with_tri = scene_accel_triangles_at_build(&lib_params, mesh->tri_count);
     for (int run = 0; run < opts->runs; run++) {
         if (run_path[0]) {
             struct bench_accel acc;
@@ -230,7 +237,8 @@ static int embree_build_row(const struct bench_options *opts, RTCDevice device, 
             long faults_start = minor_faults();
             double sys_start = system_ms();
             double clock_start = bench_clock_ms(threads);
-            int rc = bench_accel_build_wide(&acc, mesh, NULL, threads > 1 ? pool : NULL, 0);
+            int rc = bench_accel_build_wide(&acc, mesh, NULL, threads > 1 ? pool : NULL,
+                                            with_tri);
             times[run] = bench_clock_ms(threads) - clock_start;
             fault_runs[run] = (double)(minor_faults() - faults_start);
             sys_runs[run] = system_ms() - sys_start;
@@ -611,10 +619,12 @@ int bench_embree_section(const struct bench_options *opts, struct bench_mesh *me
     report_printf("\n## Against Embree %s\n\n", RTC_VERSION_STRING);
     report_printf("Build, median of %d runs, ms, on 1 and 2 threads (Embree: a device created "
                   "with \"threads=1\" or \"threads=2\"). Ours: binned SAH %d bins, the "
-                  "triangles' boxes + build + the %s %s collapse reading the triangles "
-                  "from the mesh (everything the wide walk reads before the first ray, as a "
-                  "library object's fresh build; the leaf-ordered copy the binary walks read "
-                  "is made on first need and not timed; the builders compute the boxes as "
+                  "triangles' boxes + build + the %s %s collapse, as a library object's "
+                  "fresh build (everything before the first ray of a frame that walks the "
+                  "wide layout only): from 32 MiB of leaf-ordered triangles (bumpy) the "
+                  "collapse reads the mesh and the copy the binary walks read is left to "
+                  "their first need, not timed; below, the triangles are gathered into leaf "
+                  "order and the collapse reads the copy; the builders compute the boxes as "
                   "they set up their refs); on 2 threads the build is accel_build_parallel "
                   "(binned SAH at the top, binned SAH subtrees) and the collapse on the same "
                   "pool. Embree: rtcCommitScene alone "

@@ -1,8 +1,9 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * lazy_triangles.c - the leaf-ordered triangles an object's fresh build
- * leaves out (scene/accel.c, finish_layout) and a frame gathers on first
- * need (scene_object_triangles, from lib/render's acquire_object): the
+ * leaves out (scene/accel.c, finish_layout: from 32 MiB of them, here
+ * from 0) and a frame gathers on first need (scene_object_triangles, from
+ * lib/render's acquire_object): the
  * frames that read them give the images of the scalar table, which
  * walks the binary tree of a structure that has them from its build.
  *
@@ -30,6 +31,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "api/context.h"
 #include "base/alloc.h"
 #include "check.h"
 
@@ -138,9 +140,14 @@ static void frame(int blend, int clip, RTenum shading, float *image)
     rtReadPixels(0, 0, WIDTH, HEIGHT, RT_RGBA, RT_FLOAT, image);
 }
 
+/* A context whose fresh builds leave the leaf-ordered triangles out
+ * however small the object (the default keeps them below 32 MiB of
+ * them, BVH_REBUILD_REUSE_MIN_BYTES). */
 static RTcontext make_context(const char *config)
 {
     RTcontext ctx = rtCreateContext(config);
+    if (ctx)
+        ctx->scene.build_params.rebuild_reuse_min_bytes = 0;
     if (ctx && !rtMakeCurrent(ctx)) {
         rtDestroyContext(ctx);
         return NULL;

@@ -61,11 +61,13 @@ struct bvh_build_params {
      * one (the default), 1 the optimal one.  An object's quality builds
      * take the object's RT_ACCELERATION_HINT (scene/update.c). */
     int collapse;
-    /* Not read by the builders: a rebuild that replaces a structure of as
-     * many triangles (scene_accel_rebuild) writes the new leaf-ordered
-     * triangles into the replaced structure's array when that array is
-     * at least this many bytes, the default BVH_REBUILD_REUSE_MIN_BYTES;
-     * 0 always (the tests). */
+    /* Not read by the builders: from this many bytes of leaf-ordered
+     * triangles (scene/accel.c, finish_layout) a fresh build with a wide
+     * layout leaves them out until a walk or a refit needs them, and a
+     * rebuild that replaces a structure of as many triangles
+     * (scene_accel_rebuild) writes them into the replaced structure's
+     * array; the default BVH_REBUILD_REUSE_MIN_BYTES; 0 always (the
+     * tests). */
     uint64_t rebuild_reuse_min_bytes;
 };
 
@@ -78,7 +80,11 @@ struct bvh_build_params {
  * the mesh twice (the collapse and the gather, in prim_index order) costs
  * the cache misses of a second pass: the exploding torus (250,000
  * triangles, 9 MB) rebuilt every frame took 4-8 % more CPU with the reuse
- * (performance-log, round 39 b12). */
+ * (performance-log, round 39 b12).  Likewise a fresh build that leaves the
+ * copy out saves no page below it, and the collapse's reads of the mesh
+ * in prim_index order cost more than the gather's and a sequential read
+ * of the copy: the random soup rebuilt every frame took 2-14 % more CPU
+ * (performance-log, round 40 b13). */
 #define BVH_REBUILD_REUSE_MIN_BYTES ((uint64_t)32 << 20)
 
 /* Fills *params with the defaults above (binned SAH, 16 bins). */

@@ -14,20 +14,31 @@
 #include "base/timer.h"
 #include "scene/object.h"
 
+int scene_accel_triangles_at_build(const struct bvh_build_params *params, uint32_t prim_count)
+{
+    return !params->wide_layout || !prim_count ||
+           (uint64_t)prim_count * 9 * sizeof(float) < params->rebuild_reuse_min_bytes;
+}
+
 /* The step after every change of the tree's topology: the wide layout
  * traversal reads, the leaf-ordered triangles when this structure keeps
  * them (below), and the cost the update strategies compare.  Returns 0,
- * or -1 on allocation failure (accel->tri unchanged; accel->wide
- * unchanged, or released when the collapse itself failed; old
- * unchanged).  Times the collapse into accel->collapse_ms.
+ * or -1 on allocation failure (accel->tri unchanged, or regathered in
+ * place for accel's tree when it had one; accel->wide unchanged, or
+ * released when the collapse itself failed; old unchanged).  Times the
+ * collapse into accel->collapse_ms.
  *
  * The leaf-ordered triangles (36 bytes a triangle) are read only by the
  * binary walks: the hit filter's, the ties walk, a table or a structure
  * without a wide layout, and by the refit (accel.h).  A structure keeps
- * them from the start only when it has no wide layout to walk (isa=scalar,
- * an empty object), when it replaces one that had them (the object's
- * frames or its refits needed them: a deforming object's rebuild), or
- * when restructuring regathers the array it already has; otherwise the
+ * them from the start only when scene_accel_triangles_at_build says so
+ * (no wide layout to walk: isa=scalar, an empty object; or an array
+ * below params->rebuild_reuse_min_bytes, which the heap gives back warm,
+ * where the gather and the collapse's sequential read of the copy cost
+ * less than the collapse's scattered reads of the mesh), when it
+ * replaces one that had them (the object's frames or its refits needed
+ * them: a deforming object's rebuild), or when restructuring regathers
+ * the array it already has (in place, before the collapse); otherwise the
  * collapse reads the triangles from the mesh (collapse_mesh.h, the same
  * layout byte for byte) and scene_accel_triangles gathers them on first
  * need.
@@ -37,24 +48,27 @@
  * triangles (a deforming object's rebuild) also gives its leaf-ordered
  * triangles' array, whose pages are in memory, to the new gather when it
  * is at least params->rebuild_reuse_min_bytes (BVH_REBUILD_REUSE_MIN_BYTES
- * says why smaller arrays are not worth it); accel's own array is
- * regathered in place (restructuring keeps the triangle count).  Either
- * array is written only after the collapse has succeeded, so a failure
- * leaves old whole and accel's triangles as they were. */
+ * says why smaller arrays are not worth it), written only after the
+ * collapse has succeeded, so that a failure leaves old whole. */
 static int finish_layout(struct scene_accel *accel, const struct scene_accel_geometry *geom,
                          const struct bvh_build_params *params, struct rt_pool *pool,
                          struct scene_accel *old, struct rt_large_block *scratch)
 {
-    const int keep_tri = !params->wide_layout || !accel->bvh.prim_count || accel->tri ||
-                         (old && old->tri);
+    const int keep_tri = scene_accel_triangles_at_build(params, accel->bvh.prim_count) ||
+                         accel->tri || (old && old->tri);
     const int reuse_old_tri =
         keep_tri && !accel->tri && old && old->tri && accel->bvh.prim_count &&
         old->bvh.prim_count == accel->bvh.prim_count &&
         (uint64_t)accel->bvh.prim_count * 9 * sizeof(float) >= params->rebuild_reuse_min_bytes;
-    /* Gathered after the collapse, into an array that is already there. */
-    const int gather_late = accel->tri != NULL || reuse_old_tri;
     float *tri = NULL;
-    if (keep_tri && !gather_late) {
+    if (accel->tri) {
+        /* Restructuring (the same triangles, a new leaf order): regathered
+         * in place before the collapse, which then reads the copy; this
+         * cannot fail, and the tree it follows is already the new one. */
+        accel_gather_triangles_into(&accel->bvh, geom->positions, geom->indices, pool,
+                                    accel->tri);
+        tri = accel->tri;
+    } else if (keep_tri && !reuse_old_tri) {
         tri = accel_gather_triangles_pool(&accel->bvh, geom->positions, geom->indices, pool);
         if (!tri)
             return -1;
@@ -76,25 +90,22 @@ static int finish_layout(struct scene_accel *accel, const struct scene_accel_geo
         /* The tree may have changed under the old wide layout
          * (restructuring): drop it, so traversal takes the binary walk. */
         bvh4_release(&accel->wide);
-        rt_free(tri);
+        if (tri != accel->tri)
+            rt_free(tri);
         return -1;
     }
     accel->collapse_ms = params->wide_layout ? rt_now_ms() - start : 0.0;
-    if (gather_late) {
+    if (reuse_old_tri) {
         /* Nothing fails from here on.  old is released right after
          * (scene_accel_rebuild's contract), without its triangles. */
-        if (accel->tri) {
-            tri = accel->tri;
-            accel->tri = NULL;
-        } else {
-            tri = old->tri;
-            old->tri = NULL;
-        }
+        tri = old->tri;
+        old->tri = NULL;
         accel_gather_triangles_into(&accel->bvh, geom->positions, geom->indices, pool, tri);
     }
     if (old)
         bvh4_release(&old->wide); /* its block may be the new layout's */
-    rt_free(accel->tri);
+    if (tri != accel->tri)
+        rt_free(accel->tri);
     accel->tri = tri;
     bvh4_release(&accel->wide);
     accel->wide = wide;

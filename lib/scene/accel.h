@@ -84,8 +84,8 @@ struct scene_preempt_hook {
  * A fresh structure over geom (serial and topology left 0 for the caller
  * to stamp).  pool (may be NULL) also shares the gather into leaf order
  * and the collapse to the wide layout, for any builder: the same bytes
- * as without it.  With a wide layout (params->wide_layout) and triangles,
- * the leaf-ordered triangles are left out (tri NULL) until
+ * as without it.  Unless scene_accel_triangles_at_build, the
+ * leaf-ordered triangles are left out (tri NULL) until
  * scene_accel_triangles or a refit makes them.  Times itself into build_ms (wall) and build_cost_ms
  * (rt_pool_work_ms); hook may be NULL.  NULL on allocation failure.
  */
@@ -93,6 +93,13 @@ struct scene_accel *scene_accel_build(const struct scene_accel_geometry *geom,
                                       const struct bvh_build_params *params,
                                       enum scene_accel_builder builder, struct rt_pool *pool,
                                       const struct scene_preempt_hook *hook);
+/* 1 when a fresh build of prim_count triangles makes the leaf-ordered
+ * triangles with the structure: without a wide layout (every walk reads
+ * them), for no triangles, and below params->rebuild_reuse_min_bytes of
+ * them (BVH_REBUILD_REUSE_MIN_BYTES says why); 0 when it leaves them to
+ * their first need.  rtbench's build row follows it. */
+int scene_accel_triangles_at_build(const struct bvh_build_params *params, uint32_t prim_count);
+
 /* scene_accel_build for a structure that replaces `old` (may be NULL):
  * the new wide layout is written into the old one's block when that fits
  * (accel_collapse_wide_reuse), and the new leaf-ordered triangles into
