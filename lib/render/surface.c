@@ -944,61 +944,6 @@ SURFACE_INLINE int lod_fast_quad(const struct lod_fast_broadcast *b, const __m25
            lod_decide_quad(x, top, LOD_FAST_RELATIVE, LOD_FAST_ABSOLUTE, lambda);
 }
 
-/* A triangle part's lod_fast values in slot order for fetch_lanes_mixed:
- * row k of tri_fast, column j the value of slot j's part (rows 0-2 its
- * unit normal, 3-5 and 6-8 the texel map's rows, 9 sin2). */
-#define LOD_FAST_VALUES 10
-
-/* Every slot without lod_fast's values: zeros, and a NaN sin2, which
- * fails lod_fast's bound comparison (an ordered one), so no lane on such
- * a slot is decided by it. */
-static inline void lod_fast_slots_clear(double tri_fast[LOD_FAST_VALUES][TRACE_PACKET])
-{
-    memset(tri_fast, 0, sizeof(double) * LOD_FAST_VALUES * TRACE_PACKET);
-    for (int j = 0; j < TRACE_PACKET; j++)
-        tri_fast[9][j] = NAN;
-}
-
-/* Slot j's values from f (state 1) and unit, its part's unit normal:
- * copied, not computed. */
-static inline void lod_fast_slot(const struct surface_lod_fast *f, const double unit[3], int j,
-                                 double tri_fast[LOD_FAST_VALUES][TRACE_PACKET])
-{
-    for (int k = 0; k < 3; k++) {
-        tri_fast[k][j] = unit[k];
-        tri_fast[3 + k][j] = f->m[0][k];
-        tri_fast[6 + k][j] = f->m[1][k];
-    }
-    tri_fast[9][j] = f->sin2;
-}
-
-/* lod_fast_quad's lanes (struct lod_fast_broadcast) of four lanes on the
- * slots slot4[0..3]: lane i slot4[i]'s values, moved (two vpermps of the
- * slot table's halves, each double as its two 32-bit words, and a blend
- * by the half), so the same doubles as a broadcast of that slot's. */
-SURFACE_INLINE void lod_fast_quad_by_slot(const double tri_fast[LOD_FAST_VALUES][TRACE_PACKET],
-                                          const int slot4[4], struct lod_fast_broadcast *b)
-{
-    const __m256i s = _mm256_cvtepu32_epi64(_mm_loadu_si128((const __m128i *)(const void *)slot4));
-    /* Word 2 (s mod 4) and 2 (s mod 4) + 1 of the half for lane i. */
-    const __m256i w = _mm256_slli_epi64(_mm256_and_si256(s, _mm256_set1_epi64x(3)), 1);
-    const __m256i idx =
-        _mm256_or_si256(w, _mm256_slli_epi64(_mm256_add_epi64(w, _mm256_set1_epi64x(1)), 32));
-    const __m256d upper = _mm256_castsi256_pd(_mm256_cmpgt_epi64(s, _mm256_set1_epi64x(3)));
-    __m256d v[LOD_FAST_VALUES];
-    for (int k = 0; k < LOD_FAST_VALUES; k++) {
-        const __m256 lo = _mm256_permutevar8x32_ps(_mm256_loadu_ps((const float *)(const void *)&tri_fast[k][0]), idx);
-        const __m256 hi = _mm256_permutevar8x32_ps(_mm256_loadu_ps((const float *)(const void *)&tri_fast[k][4]), idx);
-        v[k] = _mm256_blendv_pd(_mm256_castps_pd(lo), _mm256_castps_pd(hi), upper);
-    }
-    for (int k = 0; k < 3; k++) {
-        b->n[k] = v[k];
-        b->m0[k] = v[3 + k];
-        b->m1[k] = v[6 + k];
-    }
-    b->sin2 = v[9];
-}
-
 #if defined(SURFACE_OCTS)
 /* quad_dot and quad_cross in eight lanes. */
 static inline __m512d oct_dot(const __m512d a[3], const __m512d b[3])
@@ -1039,24 +984,19 @@ SURFACE_INLINE int lod_decide_oct(__m512d x, __m512d top, double relative, doubl
     return (below | beyond) | (inside & exact);
 }
 
-/* lod_fast_quad's triangle values in eight lanes (n the unit normal,
- * m0 and m1 the texel map's rows, sin2 the bound), one triangle's in
- * every lane (lod_fast_oct) or each lane its own triangle's
- * (fetch_lanes_mixed). */
-struct lod_fast_oct_lanes {
-    __m512d n[3], m0[3], m1[3];
-    __m512d sin2;
-};
-
 /* lod_fast_quad of eight hits (a block's two quads in one vector, lane i
- * hit i) on the triangles of b's lanes: each lane its operations in their
- * order, so the same x, the same conditions and the same lambdas. */
-SURFACE_INLINE int lod_fast_oct_on(const struct lod_fast_oct_lanes *b, const __m512d d[3],
-                                   const __m512d g[3], __m512d width, __m512d top,
-                                   float lambda[8])
+ * hit i): each lane its operations in their order, so the same x, the
+ * same conditions and the same lambdas. */
+SURFACE_INLINE int lod_fast_oct(const struct surface_lod_fast *f, const double unit[3],
+                                const __m512d d[3], const __m512d g[3], __m512d width,
+                                __m512d top, float lambda[8])
 {
-    const __m512d *n = b->n, *m0 = b->m0, *m1 = b->m1;
-    __m512d c[3];
+    __m512d n[3], m0[3], m1[3], c[3];
+    for (int k = 0; k < 3; k++) {
+        n[k] = _mm512_set1_pd(unit[k]);
+        m0[k] = _mm512_set1_pd(f->m[0][k]);
+        m1[k] = _mm512_set1_pd(f->m[1][k]);
+    }
     oct_cross(n, d, c);
     const __m512d dd = oct_dot(d, d), s = oct_dot(c, c);
     const __m512d gd = oct_dot(g, d), gg = _mm512_mul_pd(gd, gd);
@@ -1074,45 +1014,13 @@ SURFACE_INLINE int lod_fast_oct_on(const struct lod_fast_oct_lanes *b, const __m
     __mmask8 ok = _mm512_cmp_pd_mask(dd, _mm512_set1_pd(0.25), _CMP_GE_OQ) &
                   _mm512_cmp_pd_mask(dd, _mm512_set1_pd(4.0), _CMP_LE_OQ);
     ok &= _mm512_cmp_pd_mask(_mm512_mul_pd(s, gg),
-                             _mm512_mul_pd(b->sin2, _mm512_mul_pd(dd, dd)), _CMP_GE_OQ);
+                             _mm512_mul_pd(_mm512_set1_pd(f->sin2), _mm512_mul_pd(dd, dd)),
+                             _CMP_GE_OQ);
     ok &= _mm512_cmp_pd_mask(ww, _mm512_set1_pd(0x1p-200), _CMP_GE_OQ) &
           _mm512_cmp_pd_mask(ww, _mm512_set1_pd(0x1p200), _CMP_LE_OQ);
     ok &= _mm512_cmp_pd_mask(p, tiny, _CMP_GE_OQ) & _mm512_cmp_pd_mask(p, huge, _CMP_LE_OQ);
     ok &= _mm512_cmp_pd_mask(q, tiny, _CMP_GE_OQ) & _mm512_cmp_pd_mask(q, huge, _CMP_LE_OQ);
     return ok & lod_decide_oct(x, top, LOD_FAST_RELATIVE, LOD_FAST_ABSOLUTE, lambda);
-}
-
-/* lod_fast_quad_by_slot for a whole block: lane i slot slots[i]'s
- * values by one vpermpd a row (slots: the lanes' slots as int32). */
-SURFACE_INLINE void lod_fast_oct_by_slot(const double tri_fast[LOD_FAST_VALUES][TRACE_PACKET],
-                                         __m256i slots, struct lod_fast_oct_lanes *b)
-{
-    const __m512i idx = _mm512_cvtepi32_epi64(slots);
-    __m512d v[LOD_FAST_VALUES];
-    for (int k = 0; k < LOD_FAST_VALUES; k++)
-        v[k] = _mm512_permutexvar_pd(idx, _mm512_loadu_pd(tri_fast[k]));
-    for (int k = 0; k < 3; k++) {
-        b->n[k] = v[k];
-        b->m0[k] = v[3 + k];
-        b->m1[k] = v[6 + k];
-    }
-    b->sin2 = v[9];
-}
-
-/* lod_fast_oct_on with f's triangle (unit its unit normal) in every
- * lane. */
-SURFACE_INLINE int lod_fast_oct(const struct surface_lod_fast *f, const double unit[3],
-                                const __m512d d[3], const __m512d g[3], __m512d width,
-                                __m512d top, float lambda[8])
-{
-    struct lod_fast_oct_lanes b;
-    for (int k = 0; k < 3; k++) {
-        b.n[k] = _mm512_set1_pd(unit[k]);
-        b.m0[k] = _mm512_set1_pd(f->m[0][k]);
-        b.m1[k] = _mm512_set1_pd(f->m[1][k]);
-    }
-    b.sin2 = _mm512_set1_pd(f->sin2);
-    return lod_fast_oct_on(&b, d, g, width, top, lambda);
 }
 #endif
 
@@ -2036,13 +1944,6 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
     if (tx)
         lanes_zero(tri_st[0][0], 6);
     struct surface_lod tri_lod[TRACE_PACKET];
-    /* lod_fast's values of each slot's triangle part (LOD_FAST_*: the
-     * unit normal, the texel map's rows, sin2), zeros and a NaN sin2 for
-     * a part without them (lod_fast_init's state -1) and for the slots
-     * beyond count, which no index selects. */
-    double tri_fast[LOD_FAST_VALUES][TRACE_PACKET];
-    if (lod)
-        lod_fast_slots_clear(tri_fast);
     for (int j = 0; j < count; j++) {
         struct hit_triangle tj = t;
         tj.v = &mesh->indices[3 * prim[j]];
@@ -2064,14 +1965,7 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
             const float *const vst[3] = {&mesh->texcoords[2 * tj.v[0]],
                                          &mesh->texcoords[2 * tj.v[1]],
                                          &mesh->texcoords[2 * tj.v[2]]};
-            const struct surface_lod *lj = lod_triangle(c, tx, t.inst, mesh, prim[j], tj.v, vst, NULL);
-            tri_lod[j] = *lj;
-            /* The texel map into the cache entry beside its part (kept
-             * for a next block on the same triangle). */
-            if (!c->fast.state)
-                lod_fast_init(lj, &c->fast);
-            if (c->fast.state > 0)
-                lod_fast_slot(&c->fast, lj->n, j, tri_fast);
+            tri_lod[j] = *lod_triangle(c, tx, t.inst, mesh, prim[j], tj.v, vst, NULL);
         }
     }
     const __m256i slots = _mm256_loadu_si256((const __m256i *)(const void *)slot);
@@ -2129,45 +2023,7 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
         if (lod) {
             const double top = lod_top(tx->level_count);
             const __m256 wv = _mm256_loadu_ps(width);
-            /* lod_fast on each lane's own triangle part first (lane i
-             * the operations lod_fast_quad runs on a block of hits on
-             * that triangle alone, with its values: the same x and
-             * conditions, so the margin's argument holds lane by lane
-             * and a lane it decides has lod_ray's lambda), then
-             * lod_quad's chain for a quad it did not decide whole, which
-             * writes that quad's four lambdas again. */
-            int fast8 = 0;
-#if defined(SURFACE_OCTS)
-            {
-                struct lod_fast_oct_lanes fl;
-                lod_fast_oct_by_slot(tri_fast, slots, &fl);
-                __m512d d8[3], g8[3];
-                for (int k = 0; k < 3; k++) {
-                    d8[k] = _mm512_cvtps_pd(dv[k]);
-                    g8[k] = _mm512_cvtps_pd(g[k]);
-                }
-                fast8 = lod_fast_oct_on(&fl, d8, g8, _mm512_cvtps_pd(wv), _mm512_set1_pd(top),
-                                        lambda);
-            }
-#else
             for (int h = 0; h < TRACE_PACKET / 4; h++) {
-                struct lod_fast_broadcast fl;
-                lod_fast_quad_by_slot(tri_fast, &slot[4 * h], &fl);
-#define HALF(v) _mm256_cvtps_pd(h ? _mm256_extractf128_ps(v, 1) : _mm256_castps256_ps128(v))
-                __m256d d[3], gd[3];
-                for (int k = 0; k < 3; k++) {
-                    d[k] = HALF(dv[k]);
-                    gd[k] = HALF(g[k]);
-                }
-                fast8 |= lod_fast_quad(&fl, d, gd, HALF(wv), _mm256_set1_pd(top),
-                                       &lambda[4 * h])
-                         << 4 * h;
-#undef HALF
-            }
-#endif
-            for (int h = 0; h < TRACE_PACKET / 4; h++) {
-                if ((fast8 >> 4 * h & 15) == 15)
-                    continue;
                 const struct surface_lod *const l4[4] = {
                     &tri_lod[slot[4 * h]], &tri_lod[slot[4 * h + 1]], &tri_lod[slot[4 * h + 2]],
                     &tri_lod[slot[4 * h + 3]]};
