@@ -51,11 +51,9 @@
  * instruction set (shade.h): the AVX-512 one in render_avx512.c, the
  * AVX2 one in render_avx2.c. */
 #if defined(RENDER_UNIT_AVX512)
-#define RENDER_EYE_BLOCK_STAGE shade_eye_block_stage_avx512
 #define RENDER_EYE_BLOCK_BEGIN shade_eye_block_begin_avx512
 #define RENDER_EYE_BLOCK_END shade_eye_block_end_avx512
 #else
-#define RENDER_EYE_BLOCK_STAGE shade_eye_block_stage_avx2
 #define RENDER_EYE_BLOCK_BEGIN shade_eye_block_begin_avx2
 #define RENDER_EYE_BLOCK_END shade_eye_block_end_avx2
 #endif
@@ -919,57 +917,6 @@ static void eye_block(struct render_pass *pass, struct shade_context *sc, int x0
     eye_batch_shade(sc, &eyes);
 }
 
-#if defined(RENDER_UNIT_AVX2)
-/* A block of the eye light's pipeline between its trace and its
- * shading's first step: copies of its hits, directions, lane rays and
- * pixel pointers (the packet's arrays take the next block's), and the
- * pointer arrays shade_eye_block_begin reads, into those copies. */
-struct render_eye_stage {
-    struct trace_scene_hit hits[TRACE_PACKET];
-    float dir[TRACE_PACKET][3];
-    struct shade_eye_rays rays;
-    float *px[TRACE_PACKET];
-    const struct trace_scene_hit *hitp[TRACE_PACKET];
-    const float *dirp[TRACE_PACKET];
-};
-
-static void render_eye_stage_init(struct render_eye_stage *in)
-{
-    for (int i = 0; i < TRACE_PACKET; i++) {
-        in->hitp[i] = &in->hits[i];
-        in->dirp[i] = in->dir[i];
-    }
-}
-
-/* The block's values copied into `in` (moved, not computed: its shading
- * reads the same values one block later), its mesh lines asked for. */
-static void render_eye_stage_put(const struct shade_context *sc, struct render_eye_stage *in,
-                                 const struct trace_packet *pk,
-                                 const struct trace_scene_hit hits[],
-                                 const struct shade_eye_rays *rays, float *const px[])
-{
-    memcpy(in->hits, hits, sizeof(in->hits));
-    memcpy(in->dir, pk->dir, sizeof(in->dir));
-    in->rays = *rays;
-    memcpy(in->px, px, sizeof(in->px));
-    RENDER_EYE_BLOCK_STAGE(sc, in->hitp);
-}
-
-/* The staged block's shading begun in the free pending slot, then the
- * block begun before it ended (its texels), as the pipeline's step. */
-static void render_eye_begin(const struct shade_context *sc, const struct render_eye_stage *in,
-                             struct shade_eye_pending pending[2], int *pending_slot,
-                             int *pending_full)
-{
-    const int begun = RENDER_EYE_BLOCK_BEGIN(sc, in->dirp, &in->rays, in->hitp, in->px,
-                                             &pending[*pending_slot]);
-    if (*pending_full)
-        RENDER_EYE_BLOCK_END(sc, &pending[*pending_slot ^ 1]);
-    *pending_full = begun;
-    *pending_slot ^= begun;
-}
-#endif
-
 /*
  * The tile with packets (packets=on, trace/packet_scene.h): the camera
  * rays of each 4 x 2 block of pixels are traced together to their first
@@ -1004,18 +951,15 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
 #if RENDER_PAIRS
     struct block_lanes by_lane;
 #endif
-#if !defined(RENDER_UNIT_AVX2)
     /* A whole block's eye-light hits, every ray made and every one a hit
      * (eye_block's common case): its rays' directions and hits are the
-     * same arrays for every block of the tile (the pipeline's copies
-     * have their own: render_eye_stage). */
+     * same arrays for every block of the tile. */
     const float *block_dirs[TRACE_PACKET];
     const struct trace_scene_hit *block_hits[TRACE_PACKET];
     for (int i = 0; i < TRACE_PACKET; i++) {
         block_dirs[i] = pk.dir[i];
         block_hits[i] = &hits[i];
     }
-#endif
 #if defined(RENDER_UNIT_AVX2)
     /* A software pipeline of one block (Lam 1988, software pipelining;
      * here across the loop's blocks): a whole block's texel lines are
@@ -1029,16 +973,6 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
     struct shade_eye_pending pending[2];
     int pending_slot = 0; /* the slot the next block begins in */
     int pending_full = 0; /* the other slot holds a block to end */
-    /* One stage more in front: a block whose hits are known is copied
-     * aside and its primitives' mesh lines asked for
-     * (shade_eye_block_stage), and it begins after the next block's
-     * trace, when those lines are in the cache.  Two slots: the block
-     * staged now and the one staged before it, which begins now. */
-    struct render_eye_stage stage[2];
-    for (int s = 0; s < 2; s++)
-        render_eye_stage_init(&stage[s]);
-    int stage_slot = 0; /* the slot the next block is staged in */
-    int stage_full = 0; /* the other slot holds a block to begin */
 #endif
     for (int by = y0; by < y0 + RENDER_TILE_SIZE && by < vp[3]; by += RENDER_BLOCK_H) {
         unproject_cache_row(pass, &cache, by);
@@ -1087,15 +1021,13 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                         px[RENDER_BLOCK_W + i] = row + 4 * ((size_t)pass->fb_width + (size_t)i);
                     }
 #if defined(RENDER_UNIT_AVX2)
-                    /* This block staged; the block staged before it
-                     * begun (its texels asked for), then the last begun
-                     * block's texels. */
-                    render_eye_stage_put(sc, &stage[stage_slot], &pk, hits, &by_lane.rays, px);
-                    if (stage_full)
-                        render_eye_begin(sc, &stage[stage_slot ^ 1], pending, &pending_slot,
-                                         &pending_full);
-                    stage_full = 1;
-                    stage_slot ^= 1;
+                    /* This block's prefetches, then the last block's texels. */
+                    const int begun = RENDER_EYE_BLOCK_BEGIN(
+                        sc, block_dirs, &by_lane.rays, block_hits, px, &pending[pending_slot]);
+                    if (pending_full)
+                        RENDER_EYE_BLOCK_END(sc, &pending[pending_slot ^ 1]);
+                    pending_full = begun;
+                    pending_slot ^= begun;
 #else
                     shade_eye_hits(sc, TRACE_PACKET, block_dirs, block_hits, cone, px);
 #endif
@@ -1160,8 +1092,6 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
         }
     }
 #if defined(RENDER_UNIT_AVX2)
-    if (stage_full)
-        render_eye_begin(sc, &stage[stage_slot ^ 1], pending, &pending_slot, &pending_full);
     if (pending_full)
         RENDER_EYE_BLOCK_END(sc, &pending[pending_slot ^ 1]);
 #endif

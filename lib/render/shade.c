@@ -808,12 +808,6 @@ int shade_eye_block_begin(const struct shade_context *sc, const float *const dir
     return 1;
 }
 
-void shade_eye_block_stage(const struct shade_context *sc,
-                           const struct trace_scene_hit *const hits[])
-{
-    surface_prefetch_lanes(sc, hits);
-}
-
 void shade_eye_block_end(const struct shade_context *sc, struct shade_eye_pending *pending)
 {
     /* surface_fetch_lanes' last step (lanes_texture_end's products, the

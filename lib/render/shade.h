@@ -182,13 +182,6 @@ int shade_eye_block_begin_avx2(const struct shade_context *sc, const float *cons
                                const struct trace_scene_hit *const hits[], float *const rgba[],
                                struct shade_eye_pending *pending);
 void shade_eye_block_end_avx2(const struct shade_context *sc, struct shade_eye_pending *pending);
-/* The step before shade_eye_block_begin, one block earlier: the lines of
- * the mesh arrays a block's hits will read by their primitive (vertex
- * indices, flags, material, provoking vertex) asked for (a prefetch,
- * which reads no value), so that they are in the cache when the block
- * begins after the next block's trace. */
-void shade_eye_block_stage_avx2(const struct shade_context *sc,
-                                const struct trace_scene_hit *const hits[]);
 /* The same two steps in the AVX-512 copy (shade_eye_avx512.c), for the
  * frame's AVX-512 packet loop (render_avx512.c); absent, and not called,
  * where the compiler does not target AVX-512. */
@@ -198,8 +191,6 @@ int shade_eye_block_begin_avx512(const struct shade_context *sc, const float *co
                                  struct shade_eye_pending *pending);
 void shade_eye_block_end_avx512(const struct shade_context *sc,
                                 struct shade_eye_pending *pending);
-void shade_eye_block_stage_avx512(const struct shade_context *sc,
-                                  const struct trace_scene_hit *const hits[]);
 #endif
 
 /* That unit's eight-lane texture lookup (scene_texture_sample_lod8,

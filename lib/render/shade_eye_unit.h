@@ -22,8 +22,6 @@
 #define shade_eye_hits SHADE_EYE_NAME(shade_eye_hits)
 #define shade_eye_block_begin SHADE_EYE_NAME(shade_eye_block_begin)
 #define shade_eye_block_end SHADE_EYE_NAME(shade_eye_block_end)
-#define shade_eye_block_stage SHADE_EYE_NAME(shade_eye_block_stage)
-#define surface_prefetch_lanes SHADE_EYE_NAME(surface_prefetch_lanes)
 #define shade_hit SHADE_EYE_NAME(shade_hit)
 #define shade_offset_point SHADE_EYE_NAME(shade_offset_point)
 #define shade_prime_shadows SHADE_EYE_NAME(shade_prime_shadows)

@@ -1920,22 +1920,6 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
         }
         slot[i] = j;
     }
-    /* Every distinct triangle's vertex indices, then its vertices'
-     * positions, normals and coordinates asked for before the loop below
-     * reads them triangle by triangle: the triangles' misses in the mesh
-     * (perf: about a fifth of this function's time waiting on the first
-     * index and position loads of each triangle) overlap instead of
-     * following one another.  Hints only: no value read changes. */
-    for (int j = 0; j < count; j++) {
-        const uint32_t *v = &mesh->indices[3 * prim[j]];
-        for (int q = 0; q < 3; q++) {
-            _mm_prefetch((const char *)&mesh->positions[3 * v[q]], _MM_HINT_T0);
-            if (mesh->has_normals)
-                _mm_prefetch((const char *)&mesh->normals[3 * v[q]], _MM_HINT_T0);
-            if (mesh->texcoords)
-                _mm_prefetch((const char *)&mesh->texcoords[2 * v[q]], _MM_HINT_T0);
-        }
-    }
     const struct scene_material *m = &mesh->materials[material];
     const struct scene_material *call = &t.inst->appearance.material;
     const float *emission;
@@ -2062,29 +2046,6 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
         _mm256_storeu_ps(out->diffuse[k], dif[k]);
     }
     return 1 + deferred;
-}
-
-/* surface_prefetch_lanes (surface.h): hit_triangle's and
- * fetch_lanes_mixed's per-primitive lines of each hit whose primitive
- * differs from the previous hit's. */
-void surface_prefetch_lanes(const struct shade_context *sc,
-                            const struct trace_scene_hit *const hits[])
-{
-    const struct scene_mesh *mesh = NULL;
-    uint32_t instance = 0, prim = 0;
-    for (int i = 0; i < TRACE_PACKET; i++) {
-        const struct trace_scene_hit *h = hits[i];
-        if (!mesh || h->instance != instance) {
-            mesh = &shade_hit_instance(sc, h)->object->mesh;
-            instance = h->instance;
-        } else if (h->prim == prim)
-            continue;
-        prim = h->prim;
-        _mm_prefetch((const char *)&mesh->indices[3 * prim], _MM_HINT_T0);
-        _mm_prefetch((const char *)&mesh->tri_flags[prim], _MM_HINT_T0);
-        _mm_prefetch((const char *)&mesh->tri_material[prim], _MM_HINT_T0);
-        _mm_prefetch((const char *)&mesh->tri_provoking[prim], _MM_HINT_T0);
-    }
 }
 
 /*

@@ -188,12 +188,6 @@ struct shade_eye_pending {
 int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene_hit *const hits[],
                         const float dir[3][TRACE_PACKET], const float width[],
                         struct surface_lanes *out, struct scene_texture_lookup8 *defer);
-/* The lines surface_fetch_lanes will read by each hit's primitive in its
- * mesh (vertex indices, flags, material, provoking vertex) asked for
- * with a prefetch, which reads no value: for a block staged one block
- * before its fetch (shade_eye_block_stage). */
-void surface_prefetch_lanes(const struct shade_context *sc,
-                            const struct trace_scene_hit *const hits[]);
 #endif
 
 /* The texel of texture `name` at a hit, for the RT_FIXED_FUNCTION mode,
