@@ -25,11 +25,6 @@
 #include <immintrin.h>
 #include <stddef.h>
 #define TEXTURE_OCTS 1 /* scene_texture_sample_lod8 */
-#if defined(__AVX512F__) && defined(__AVX512DQ__) && defined(__AVX512VL__)
-/* The AVX-512 copy (render/shade_eye_avx512.c): the sampler's double
- * lanes of a block in one eight-lane vector. */
-#define TEXTURE_ZMM 1
-#endif
 #endif
 #define TEXTURE_LANES 1
 #else
@@ -633,31 +628,6 @@ static inline int quad_reduce(__m128 x, enum scene_texture_wrap wrap, __m256d *o
     return 1;
 }
 
-#if defined(TEXTURE_ZMM)
-/* quad_reduce of eight coordinates in one vector: lane i the same
- * conversion, comparisons, floor (vrndscalepd's floor, exact as
- * roundpd's), subtraction, choice, min and max as quad_reduce's lane,
- * so the same doubles. */
-static inline int oct_reduce(__m256 x, enum scene_texture_wrap wrap, __m512d *out)
-{
-    __m512d d = _mm512_cvtps_pd(x);
-    d = _mm512_maskz_mov_pd(_mm512_cmp_pd_mask(_mm512_sub_pd(d, d), _mm512_setzero_pd(),
-                                               _CMP_EQ_OQ),
-                            d);
-    const __m512d magnitude = _mm512_abs_pd(d);
-    if (_mm512_cmp_pd_mask(magnitude, _mm512_set1_pd(0x1p31), _CMP_LT_OQ) != 0xff)
-        return 0;
-    if (wrap == SCENE_WRAP_REPEAT) {
-        const __m512d f = _mm512_sub_pd(d, _mm512_floor_pd(d));
-        *out = _mm512_mask_blend_pd(_mm512_cmp_pd_mask(f, _mm512_set1_pd(1.0), _CMP_LT_OQ),
-                                    _mm512_set1_pd(0x1.fffffffffffffp-1), f);
-    } else {
-        *out = _mm512_min_pd(_mm512_max_pd(d, _mm512_set1_pd(-1.0)), _mm512_set1_pd(2.0));
-    }
-    return 1;
-}
-#endif
-
 /* The level entry's int32 fields as gather indices: the width, the
  * height and the low half of the texel pointer (x86 is little-endian). */
 typedef char texture_level_ints[sizeof(struct scene_texture_level) % sizeof(int) == 0 &&
@@ -667,14 +637,6 @@ typedef char texture_level_ints[sizeof(struct scene_texture_level) % sizeof(int)
                                     ? 1
                                     : -1];
 #define LEVEL_INTS ((int)(sizeof(struct scene_texture_level) / sizeof(int)))
-
-/* A block's eight reduced coordinates along one axis in double lanes:
- * two four-lane vectors, or one eight-lane vector in the AVX-512 copy. */
-#if defined(TEXTURE_ZMM)
-typedef __m512d texture_coord8[1];
-#else
-typedef __m256d texture_coord8[2];
-#endif
 
 /* The bilinear lookups (sample_level_reduced, LINEAR) of eight points
  * (rs, rt reduced, four a register) on the levels `level` (one a lane),
@@ -687,8 +649,7 @@ typedef __m256d texture_coord8[2];
  * of 16384^2 texels of 4 bytes, below 2^31 bytes, so one gather fetches
  * a texel of each lane. */
 static inline void bilinear8_offsets(const struct scene_texture *tex, __m256i level,
-                                     const texture_coord8 rs, const texture_coord8 rt,
-                                     __m256i off[4],
+                                     const __m256d rs[2], const __m256d rt[2], __m256i off[4],
                                      __m256 *va, __m256 *vb)
 {
     const int *entries = (const int *)tex->levels;
@@ -704,17 +665,6 @@ static inline void bilinear8_offsets(const struct scene_texture *tex, __m256i le
                                                           sizeof(int)))),
             4),
         _mm256_set1_epi32((int)(uint32_t)(uintptr_t)tex->levels[0].texels));
-#if defined(TEXTURE_ZMM)
-    /* The two halves' double lanes in one vector, each lane the same
-     * operations (rs, rt: the block's eight lanes in rs[0], rt[0]). */
-    const __m512d half8 = _mm512_set1_pd(0.5);
-    const __m512d uc8 = _mm512_sub_pd(_mm512_mul_pd(rs[0], _mm512_cvtepi32_pd(w)), half8);
-    const __m512d vc8 = _mm512_sub_pd(_mm512_mul_pd(rt[0], _mm512_cvtepi32_pd(h)), half8);
-    const __m512d fi8 = _mm512_floor_pd(uc8), fj8 = _mm512_floor_pd(vc8);
-    *va = _mm512_cvtpd_ps(_mm512_sub_pd(uc8, fi8));
-    *vb = _mm512_cvtpd_ps(_mm512_sub_pd(vc8, fj8));
-    const __m256i vi = _mm512_cvttpd_epi32(fi8), vj = _mm512_cvttpd_epi32(fj8);
-#else
     const __m256d half = _mm256_set1_pd(0.5);
     __m128 a[2], b[2];
     __m128i i[2], j[2];
@@ -734,7 +684,6 @@ static inline void bilinear8_offsets(const struct scene_texture *tex, __m256i le
     *va = _mm256_set_m128(a[1], a[0]);
     *vb = _mm256_set_m128(b[1], b[0]);
     const __m256i vi = _mm256_set_m128i(i[1], i[0]), vj = _mm256_set_m128i(j[1], j[0]);
-#endif
     __m256i i0, i1, j0, j1;
     wrap_pair8(vi, w, tex->wrap_s, &i0, &i1);
     wrap_pair8(vj, h, tex->wrap_t, &j0, &j1);
@@ -783,8 +732,8 @@ static inline void bilinear8_blend(const __m256i x[4], __m256 va, __m256 vb, __m
 }
 
 /* bilinear8_offsets, bilinear8_gather, then bilinear8_blend. */
-static inline void bilinear8(const struct scene_texture *tex, __m256i level,
-                             const texture_coord8 rs, const texture_coord8 rt, __m256 out[3])
+static inline void bilinear8(const struct scene_texture *tex, __m256i level, const __m256d rs[2],
+                             const __m256d rt[2], __m256 out[3])
 {
     __m256i off[4], x[4];
     __m256 va, vb;
@@ -799,7 +748,7 @@ static inline void bilinear8(const struct scene_texture *tex, __m256i level,
  * weight f and the mask `two` of the lanes that blend two levels.
  * Returns 0 where sample_lod8 does not take the block. */
 struct lod8_plan {
-    texture_coord8 rs, rt;
+    __m256d rs[2], rt[2];
     __m256i fine, coarse;
     __m256 f, two;
 };
@@ -810,16 +759,10 @@ static inline int lod8_plan(const struct scene_texture *tex, const float lambda[
     if (tex->min_filter != SCENE_FILTER_LINEAR_MIPMAP_LINEAR ||
         tex->mag_filter != SCENE_FILTER_LINEAR)
         return 0;
-#if defined(TEXTURE_ZMM)
-    if (!oct_reduce(_mm256_loadu_ps(s), tex->wrap_s, &p->rs[0]) ||
-        !oct_reduce(_mm256_loadu_ps(t), tex->wrap_t, &p->rt[0]))
-        return 0;
-#else
     for (int k = 0; k < 2; k++)
         if (!quad_reduce(_mm_loadu_ps(s + 4 * k), tex->wrap_s, &p->rs[k]) ||
             !quad_reduce(_mm_loadu_ps(t + 4 * k), tex->wrap_t, &p->rt[k]))
             return 0;
-#endif
     const __m256 lam = _mm256_loadu_ps(lambda);
     const int q = tex->level_count - 1;
     /* c = 0 for these filters: lambda > 0 minifies (a NaN does not). */
