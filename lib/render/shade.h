@@ -40,8 +40,9 @@ struct shade_context {
     /* NULL, or the tile's SHADE_CACHES caches of what surface.c derives
      * from a hit's triangle alone (surface.h, surface_cache): entry d for
      * Whitted's hits at depth d (the last one for deeper hits), entry 0
-     * for the other shadings: writable through a const context, as they
-     * only remember results. */
+     * for the other shadings' hits one by one, and the eye light's
+     * block paths (surface_fetch_lanes) entry prim % SHADE_CACHES:
+     * writable through a const context, as they only remember results. */
     struct surface_cache *cache;
     /* What shadow rays and reflected or refracted rays trace: `scene`
      * with the filter of render/secondary.h when the frame has clip

@@ -1868,6 +1868,19 @@ static inline int lanes_texture_end(const struct scene_texture *tx,
     return 0;
 }
 
+/* The eye light's block paths' cache entry for primitive prim: the
+ * tile's SHADE_CACHES entries (one per Whitted depth, which an eye-light
+ * frame does not have) direct-mapped by the primitive's low bits, so
+ * that the two or three triangles of a block on an edge and the
+ * neighbouring blocks' triangles stay in the cache together instead of
+ * taking one entry in turns.  An entry holds the values the computation
+ * gives (surface_cache), whichever entry a triangle is in, so this
+ * changes no value, only what is computed again. */
+static inline struct surface_cache *eye_cache(const struct shade_context *sc, uint32_t prim)
+{
+    return &sc->cache[prim % SHADE_CACHES];
+}
+
 /*
  * surface_fetch_lanes of a whole block whose hits are on two to eight
  * triangles of one instance and mesh that share one material and one
@@ -1947,7 +1960,7 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
     for (int j = 0; j < count; j++) {
         struct hit_triangle tj = t;
         tj.v = &mesh->indices[3 * prim[j]];
-        struct surface_cache *c = triangle_cache(sc->cache, t.inst, prim[j]);
+        struct surface_cache *c = triangle_cache(eye_cache(sc, prim[j]), t.inst, prim[j]);
         float ng[3];
         if (!triangle_normal(c, &tj, ng))
             return 0;
@@ -2077,7 +2090,7 @@ int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene
     const struct scene_mesh *mesh = t.mesh;
     if (mesh->texcoord_q)
         return 0;
-    struct surface_cache *c = triangle_cache(sc->cache, t.inst, h0->prim);
+    struct surface_cache *c = triangle_cache(eye_cache(sc, h0->prim), t.inst, h0->prim);
     float ng[3];
     if (!triangle_normal(c, &t, ng))
         return 0;
