@@ -11,7 +11,6 @@
  * so neither path gets a better scheduler than the other.
  */
 #include <math.h>
-#include <stdio.h>
 #include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
@@ -416,13 +415,6 @@ void bench_count_tests_ours(const struct bench_accel *acc, const struct bench_ra
     double n = set->count ? (double)set->count : 1.0;
     *nodes_per_ray = (double)c.node_tests / n;
     *tris_per_ray = (double)c.triangle_tests / n;
-    {
-        extern uint64_t rt_lv1_leaves, rt_lv1_blocks;
-        fprintf(stderr, "LV1 %s %s rays %u nodevisits/ray %.4f leafvisits/ray %.4f blocks/ray %.4f tris/ray %.4f\n",
-                set->name, any_hit ? "any" : "closest", set->count, (double)c.node_tests / 8.0 / n,
-                (double)rt_lv1_leaves / n, (double)rt_lv1_blocks / n, (double)c.triangle_tests / n);
-        rt_lv1_leaves = rt_lv1_blocks = 0;
-    }
     *answered_percent = 100.0 * (double)answered / n;
 }
 

@@ -17,7 +17,6 @@
 #include "accel/triangle_box.h"
 #include "base/alloc.h"
 #include "base/pool.h"
-#include <stdlib.h>
 
 #if defined(__SSE2__) && !defined(RT_NO_SIMD)
 #include <xmmintrin.h>
@@ -30,10 +29,6 @@ void bvh_build_params_default(struct bvh_build_params *params)
     params->max_leaf_size = BVH_MAX_LEAF_SIZE;
     params->c_trav = BVH_C_TRAV;
     params->c_isect = BVH_C_ISECT;
-    params->leaf_blocks = getenv("LV1_BLOCKS") ? atoi(getenv("LV1_BLOCKS")) : 0;
-    if (getenv("LV1_CTRAV")) params->c_trav = (float)atof(getenv("LV1_CTRAV"));
-    if (getenv("LV1_MAXLEAF")) params->max_leaf_size = atoi(getenv("LV1_MAXLEAF"));
-    if (getenv("LV1_BINS")) params->bins = atoi(getenv("LV1_BINS"));
     params->leaf_growth = 1.0f;
     params->wide_layout = 1;
     params->collapse = 0; /* BVH_COLLAPSE_GREEDY */
@@ -247,4 +242,3 @@ float *accel_gather_triangles(const struct bvh *bvh, const float *positions,
 {
     return accel_gather_triangles_pool(bvh, positions, indices, NULL);
 }
-uint64_t rt_lv1_leaves, rt_lv1_blocks; /* LV1 EXPERIMENT */

@@ -563,19 +563,7 @@ static int binned_build_refs(struct bvh_node *nodes, struct build_ref *refs, uin
             }
             /* build_internal.h: costs compared multiplied by the area. */
             float area = build_node_half_area(node);
-            float leaf_cost = p.c_isect * (float)(p.leaf_blocks ? 4u * ((n + 3u) / 4u) : n) * area;
-            if (p.leaf_blocks == 2 && kind == SPLIT_SMALL) {
-                /* LV1 EXPERIMENT: split cost in blocks */
-                uint32_t nl = ss.pos, nr = n - ss.pos;
-                vec4 lo = vec4_splat(INFINITY), hi = vec4_splat(-INFINITY);
-                const struct build_ref *rr = &refs[task.r.begin];
-                for (uint32_t i = 0; i < nl; i++) { lo = vec4_min(lo, vec4_xyz0(vec4_load(rr[ss.order[i]].lo))); hi = vec4_max(hi, vec4_load(rr[ss.order[i]].hi)); }
-                float al = vec4_half_area(lo, hi);
-                lo = vec4_splat(INFINITY); hi = vec4_splat(-INFINITY);
-                for (uint32_t i = nl; i < n; i++) { lo = vec4_min(lo, vec4_xyz0(vec4_load(rr[ss.order[i]].lo))); hi = vec4_max(hi, vec4_load(rr[ss.order[i]].hi)); }
-                float ar = vec4_half_area(lo, hi);
-                sah = al * (float)(4u * ((nl + 3u) / 4u)) + ar * (float)(4u * ((nr + 3u) / 4u));
-            }
+            float leaf_cost = p.c_isect * (float)n * area;
             float split_cost = p.c_trav * area + p.c_isect * sah;
             if (!(split_cost < leaf_cost))
                 kind = SPLIT_MEDIAN;

@@ -548,8 +548,7 @@ static void pick_split(const struct pbuild *b, struct open_node *o, const float 
         return;
     /* build_internal.h: costs compared multiplied by the node's area. */
     float area = aabb_half_area(&o->box);
-    uint32_t lv1n = o->end - o->begin;
-    float leaf_cost = b->p.c_isect * (float)(b->p.leaf_blocks ? 4u * ((lv1n + 3u) / 4u) : lv1n) * area;
+    float leaf_cost = b->p.c_isect * (float)(o->end - o->begin) * area;
     float split_cost = b->p.c_trav * area + b->p.c_isect * best_sah;
     if (!(split_cost < leaf_cost)) {
         /* Overlapping primitives: the serial builder would split at the

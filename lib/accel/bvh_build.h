@@ -40,7 +40,6 @@ struct bvh_build_params {
     int max_leaf_size; /* 1..BVH_MAX_LEAF_SIZE */
     float c_trav;
     float c_isect;
-    int leaf_blocks; /* LV1 EXPERIMENT */
     /* Looser leaf criterion for per-frame rebuilds (Wald, Benthin and Slusallek (2003) sec. 4.3):
      * a node at depth d with at most min(max_leaf_size, floor(g^d))
      * primitives becomes a leaf without any split being evaluated, g =

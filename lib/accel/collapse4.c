@@ -24,7 +24,6 @@
 #include <stdint.h>
 #include <string.h>
 
-#include <stdlib.h>
 #include "accel/bvh_build.h"
 #include "accel/collapse4_avx2.h"
 #include "base/alloc.h"
@@ -61,13 +60,6 @@ struct scratch_node {
     uint32_t inner; /* bit l: lane l is an inner child */
 };
 
-
-static double lv1_leaf_cost(uint32_t n)
-{
-    double call = getenv("LV1_CALL") ? atof(getenv("LV1_CALL")) : 0.0;
-    double pkt = getenv("LV1_PKT") ? atof(getenv("LV1_PKT")) : 1.0;
-    return call + pkt * (double)((n + 3) / 4);
-}
 static float node_area(const struct bvh_node *n)
 {
     float dx = n->aabb_max[0] - n->aabb_min[0];
@@ -135,7 +127,7 @@ static int leaf_lane(const struct bvh *bvh, const float *tri, uint32_t i, uint32
         *count = node->count;
         return 1;
     }
-    *count = tri ? small_span(bvh, i, getenv("LV1_MERGE") ? (uint32_t)atoi(getenv("LV1_MERGE")) : BVH_WIDE_MERGE, first) : 0;
+    *count = tri ? small_span(bvh, i, BVH_WIDE_MERGE, first) : 0;
     return *count != 0;
 }
 
@@ -203,7 +195,7 @@ static double wide_node_cost(const struct bvh *bvh, const float *tri, uint32_t i
     for (int l = 0; l < t.lanes; l++) {
         const double share = area > 0.0 ? node_area(&bvh->nodes[t.source[l]]) / area : 1.0;
         const double lane = (t.inner >> l & 1u) ? wide_node_cost(bvh, tri, t.source[l], width)
-                                                : lv1_leaf_cost(t.count[l]);
+                                                : (double)((t.count[l] + 3) / 4);
         cost += share * lane;
     }
     return cost;
@@ -535,7 +527,7 @@ static void close_small_lanes(const struct bvh *bvh, const float *tri, uint32_t 
             continue;
         uint32_t first;
         const uint32_t n = small_span(bvh, s->source[l], BVH_WIDE_MERGE_LEFT, &first);
-        if (n && lv1_leaf_cost(n) * (getenv("LV1_MLSCALE") ? atof(getenv("LV1_MLSCALE")) : 1.0) <= wide_node_cost(bvh, tri, s->source[l], width)) {
+        if (n && (double)((n + 3) / 4) <= wide_node_cost(bvh, tri, s->source[l], width)) {
             s->inner &= ~(1u << l);
             s->first[l] = first;
             s->count[l] = n;
@@ -1395,7 +1387,7 @@ static int collapse_wide(struct bvh4 *out, const struct bvh *bvh,
      * (gears: +1.4 % instructions per ray).  The layout's size is
      * estimated before it is made at BVH_WIDE_BYTES_PER_TRIANGLE; the
      * walk's prefetch (prefetch_top below) has the same threshold. */
-    c.merge_left = !getenv("LV1_NOMERGELEFT") &&
+    c.merge_left =
         tri && (uint64_t)bvh->prim_count * BVH_WIDE_BYTES_PER_TRIANGLE >= BVH_WIDE_PREFETCH_BYTES;
     if (collapse == BVH_COLLAPSE_OPTIMAL && tri) {
         dp.bvh = bvh;

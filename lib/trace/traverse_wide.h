@@ -250,7 +250,6 @@ static inline int wide_packet_body(struct wide_state *s, const struct tri4_packe
     return wide_packet_test(s, p, n, any_hit, 1, 0, behind_out);
 }
 
-extern uint64_t rt_lv1_leaves, rt_lv1_blocks; /* LV1 EXPERIMENT */
 /* A leaf lane: count triangles in packets from `first` (wide_packet_body
  * on each); returns 1 when an any-hit walk has its hit. */
 #if defined(__GNUC__)
@@ -260,15 +259,11 @@ static inline int wide_leaf_body(struct wide_state *s, const struct tri4_packet 
                                  uint32_t first, uint32_t count, int any_hit, int stats,
                                  int behind_out)
 {
-    if (stats)
-        rt_lv1_leaves++;
     for (uint32_t j = 0; j < count; j += 4) {
         const struct tri4_packet *p = &packets[first + j / 4];
         const uint32_t n = count - j < 4 ? count - j : 4;
-        if (stats) {
+        if (stats)
             s->triangle_tests += n;
-            rt_lv1_blocks++;
-        }
         if (wide_packet_body(s, p, n, any_hit, behind_out))
             return 1;
     }

@@ -266,11 +266,8 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                 tri4_ray_init(&s->r4, ray);
                 r4_ready = 1;
             }
-            if (stats) {
+            if (stats)
                 tri_tests += cur_count;
-                rt_lv1_leaves++;
-                rt_lv1_blocks += (cur_count + 3) / 4;
-            }
 #if WIDE8_RAY_LEAF8
             /* Two packets (5-8 triangles) in one 8-lane call. */
             if (cur_count > 4) {
