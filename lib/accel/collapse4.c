@@ -178,13 +178,37 @@ static void gather(const struct bvh *bvh, const float *tri, uint32_t inner, uint
     s->lanes = (int)n;
 }
 
-/* The expected cost, in packet tests, of inner binary node i as a wide
- * node of its own, by the surface area heuristic (MacDonald and Booth
- * 1990): one node test (BVH_WIDE_NODE_COST) plus each lane's cost
+/* The cost of a leaf lane of n triangles for the greedy merge below, in
+ * wide node tests (BVH_WIDE_NODE_COST): a leaf call, then each of its
+ * ceil(n / 4) packets.  From the instructions a kitchen camera ray spends
+ * (performance-log, round 39 rr3, AVX2, the finish left out as a hit's
+ * cost whatever the tree): a one-packet leaf call about 196, a
+ * two-packet (8-lane) call about 244, so the second packet about 48 and
+ * the call about 148, against about 102 a wide node visit (the walk's
+ * 750 over 7.36 visits): 1.45 and 0.47 node tests, rounded to 1.5 and
+ * 0.5.  Counting a leaf as its packets alone (1 a packet, a node test as
+ * one packet, Embree's SAH weights) priced the call at nothing and the
+ * second packet at a node: it left closed many wide nodes of two or
+ * three small leaf lanes that cost a node visit and a leaf call each
+ * where one leaf lane of two packets costs one call (round 40, lv1: the
+ * bumpy 8-wide layout 68,807 -> 45,535 nodes).  A heuristic only: the
+ * answers do not depend on it. */
+#define COLLAPSE_LEAF_CALL_COST 1.5
+#define COLLAPSE_LEAF_PACKET_COST 0.5
+
+static double leaf_lane_cost(uint32_t n)
+{
+    return COLLAPSE_LEAF_CALL_COST + COLLAPSE_LEAF_PACKET_COST * (double)((n + 3) / 4);
+}
+
+/* The expected cost, in wide node tests, of inner binary node i as a
+ * wide node of its own, by the surface area heuristic (MacDonald and
+ * Booth 1990): one node test (BVH_WIDE_NODE_COST) plus each lane's cost
  * weighted by the lane's share of the node's area (the chance that a ray
- * through the node's box enters the lane's); a leaf lane costs its
- * packets, an inner one its own wide node.  Called on subtrees of at
- * most BVH_WIDE_MERGE_LEFT triangles only, so the recursion is shallow. */
+ * through the node's box enters the lane's); a leaf lane costs
+ * leaf_lane_cost, an inner one its own wide node.  Called on subtrees of
+ * at most BVH_WIDE_MERGE_LEFT triangles only, so the recursion is
+ * shallow. */
 static double wide_node_cost(const struct bvh *bvh, const float *tri, uint32_t i,
                              uint32_t width)
 {
@@ -195,7 +219,7 @@ static double wide_node_cost(const struct bvh *bvh, const float *tri, uint32_t i
     for (int l = 0; l < t.lanes; l++) {
         const double share = area > 0.0 ? node_area(&bvh->nodes[t.source[l]]) / area : 1.0;
         const double lane = (t.inner >> l & 1u) ? wide_node_cost(bvh, tri, t.source[l], width)
-                                                : (double)((t.count[l] + 3) / 4);
+                                                : leaf_lane_cost(t.count[l]);
         cost += share * lane;
     }
     return cost;
@@ -512,7 +536,7 @@ static void gather_dp(const struct dp *d, uint32_t inner, struct scratch_node *s
  * leaf lane would become a wide node of its own.  When its subtree holds
  * at most BVH_WIDE_MERGE_LEFT triangles in consecutive slots (two
  * packets) it becomes one leaf instead if that costs no more by the area
- * heuristic.  Such a node holds only leaf lanes, often two (soup: 3235
+ * heuristic (leaf_lane_cost against wide_node_cost).  Such a node holds only leaf lanes, often two (soup: 3235
  * of 8190 8-wide nodes had two), a 256-byte node and a visit spent on
  * what a second packet holds; without them the 8-wide layout is 10-11 %
  * smaller (soup, kitchen, bumpy: the memory table of rtbench embree) and
@@ -527,7 +551,7 @@ static void close_small_lanes(const struct bvh *bvh, const float *tri, uint32_t 
             continue;
         uint32_t first;
         const uint32_t n = small_span(bvh, s->source[l], BVH_WIDE_MERGE_LEFT, &first);
-        if (n && (double)((n + 3) / 4) <= wide_node_cost(bvh, tri, s->source[l], width)) {
+        if (n && leaf_lane_cost(n) <= wide_node_cost(bvh, tri, s->source[l], width)) {
             s->inner &= ~(1u << l);
             s->first[l] = first;
             s->count[l] = n;
