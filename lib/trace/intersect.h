@@ -340,6 +340,61 @@ static inline int isect_triangle_zero_area(float x0, float y0, float z0, float x
     return nx == 0.0 && ny == 0.0 && nz == 0.0;
 }
 
+/*
+ * The bound 2 (l1 + l2) on the longest edge's squared length, with a
+ * margin for the roundings: the finish compares n2 against r2 times
+ * fl(fl(l1 + l2) * ISECT_LONGEST_EDGE_BOUND), which must be at least
+ * each of the computed l1, l2, l3 (isect_sliver_edges).  Let a = e1, b =
+ * e2 be the edge vectors as doubles and u = 2^-53.  Every value here is
+ * a sum of non-negative terms, without underflow (a non-zero difference
+ * of floats is at least 2^-149, its square 2^-298, a normal double) or
+ * overflow (the squares stay below 2^258), so each operation's relative
+ * error is at most u:
+ * - l1 >= |a|^2 (1 - u)^3 and l2 >= |b|^2 (1 - u)^3 (three roundings:
+ *   the squares, two additions);
+ * - e3_k = fl(b_k - a_k) has |e3_k| <= (|a_k| + |b_k|) (1 + u), so
+ *   fl(e3_k^2) <= (|a_k| + |b_k|)^2 (1 + u)^3 <= 2 (a_k^2 + b_k^2)
+ *   (1 + u)^3 ((x + y)^2 <= 2 x^2 + 2 y^2), and l3 <= 2 (|a|^2 + |b|^2)
+ *   (1 + u)^5;
+ * - the bound is >= (l1 + l2) K (1 - u)^2 >= (|a|^2 + |b|^2) K (1 - u)^5
+ *   for K = ISECT_LONGEST_EDGE_BOUND.
+ * K = 2 + 2^-40 > 2 (1 + u)^5 / (1 - u)^5 (about 2 + 2^-49), so the
+ * bound is >= l3; and >= 2 (l1 + l2) (1 - u)^2 >= l1, l2.  K is exact in
+ * double.
+ */
+#define ISECT_LONGEST_EDGE_BOUND (2.0 + 0x1p-40)
+
+/*
+ * The finish's test for a proper triangle on the longest edge itself,
+ * when the bound above did not decide: the third edge e3 = e2 - e1 and
+ * its squared length *l3 (for isect_sliver_t), lmax the largest of l1,
+ * l2, l3, and 1 when n2 >= fl(r2 * lmax), the test the finish made on
+ * every candidate before the bound.  Apart because nearly every
+ * candidate is decided by the bound.
+ */
+static inline int isect_sliver_edges(double e1x, double e1y, double e1z, double e2x,
+                                     double e2y, double e2z, double l1, double l2, double r2,
+                                     double n2, double e3[3], double *l3)
+{
+#if defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#endif
+    e3[0] = e2x - e1x;
+    e3[1] = e2y - e1y;
+    e3[2] = e2z - e1z;
+    *l3 = e3[0] * e3[0] + e3[1] * e3[1] + e3[2] * e3[2];
+    /* The longest edge's squared length as a maximum (maxsd: `a > b ?
+     * a : b`), without a branch: which edge is longest is a coin toss
+     * for the branch predictor (callgrind, gears' camera rays: the first
+     * comparison went each way 60/40).  The same value as choosing the
+     * first of l1, l2, l3 that is >= the others: the squares and sums of
+     * differences of finite floats are finite, so no NaN, and equal
+     * maxima are the same double (all >= +0). */
+    const double l12 = l1 > l2 ? l1 : l2;
+    const double lmax = l12 > *l3 ? l12 : *l3;
+    return n2 >= r2 * lmax;
+}
+
 /* isect_triangle_finish_impl's t for a sliver (see there): the ray's
  * closest approach to the longest edge (p, p + e), e1 = v1 - v0, e2 =
  * v2 - v0 (starting at v0) or e3 = e2 - e1 (starting at v1), with their
@@ -444,49 +499,49 @@ static inline int isect_triangle_finish_impl(const struct trace_ray *ray, float 
      * The paper's t remains when the double computation is degenerate (a
      * ray parallel to the plane, or to the edge).  Whichever it is, t is
      * then clamped into the triangle's box (isect_clamp_to_box). */
-    float t = (U * Az + V * Bz + W * Cz) * rcp_det;
+    float t;
     {
         const double dx = ray->dir[0];
         const double dy = ray->dir[1];
         const double dz = ray->dir[2];
         const double n2 = nx * nx + ny * ny + nz * nz;
-        /* The longest edge (p, p + e). */
-        const double e3x = e2x - e1x;
-        const double e3y = e2y - e1y;
-        const double e3z = e2z - e1z;
         const double l1 = e1x * e1x + e1y * e1y + e1z * e1z;
         const double l2 = e2x * e2x + e2y * e2y + e2z * e2z;
-        const double l3 = e3x * e3x + e3y * e3y + e3z * e3z;
-        /* The longest edge's squared length as a maximum (maxsd: `a > b ?
-         * a : b`), without a branch: which edge is longest is a coin toss
-         * for the branch predictor (callgrind, gears' camera rays: the
-         * first comparison went each way 60/40), and only the sliver
-         * case below needs to know which edge it is.  The same value as
-         * choosing the first of l1, l2, l3 that is >= the others: the
-         * differences of float coordinates are exact in double and their
-         * squares and sums finite, so no NaN, and equal maxima are the
-         * same double (all >= +0). */
-        const double l12 = l1 > l2 ? l1 : l2;
-        const double lmax = l12 > l3 ? l12 : l3;
         /* One rounding of the sheared coordinates: 2^-24 of their size. */
         const double rounding = ISECT_SLIVER_ROUNDINGS * 0x1p-24 * (double)size;
-        double tp = NAN;
-        if (n2 >= rounding * rounding * lmax) {
-            /* height^2 = n2 / lmax: a proper triangle. */
+        const double r2 = rounding * rounding;
+        /* A proper triangle when height^2 = n2 / lmax >= r2, lmax the
+         * longest edge's squared length (isect_sliver_edges).  Decided
+         * first on the bound lmax <= 2 (l1 + l2) (isect_sliver_edges
+         * proves it for the computed values with the margin of
+         * ISECT_LONGEST_EDGE_BOUND), which needs neither the third edge
+         * nor the maxima: when n2 >= fl(r2 * bound), then n2 >= fl(r2 *
+         * lmax) too (bound >= lmax, r2 >= 0, and rounding is monotone),
+         * the test below would say the same.  Otherwise the test on lmax
+         * itself decides, as before: the same answer either way. */
+        int proper = n2 >= r2 * ((l1 + l2) * ISECT_LONGEST_EDGE_BOUND);
+        double e3[3], l3 = 0.0;
+        if (!proper)
+            proper = isect_sliver_edges(e1x, e1y, e1z, e2x, e2y, e2z, l1, l2, r2, n2, e3, &l3);
+        if (proper) {
+            /* height^2 = n2 / lmax: a proper triangle, t the distance to
+             * its plane.  num is finite (finite factors, far below the
+             * double range) and den finite, so num / den is never NaN
+             * when den != 0: the paper's t is needed only when den == 0. */
             const double den = nx * dx + ny * dy + nz * dz;
             const double num = nx * ((double)v0[0] - ray->org[0]) +
                                ny * ((double)v0[1] - ray->org[1]) +
                                nz * ((double)v0[2] - ray->org[2]);
             if (den != 0.0)
-                tp = num / den;
+                t = (float)(num / den);
+            else
+                t = (U * Az + V * Bz + W * Cz) * rcp_det;
         } else {
             const double e1[3] = {e1x, e1y, e1z};
             const double e2[3] = {e2x, e2y, e2z};
-            const double e3[3] = {e3x, e3y, e3z};
-            tp = isect_sliver_t(ray, v0, v1, e1, e2, e3, l1, l2, l3);
+            const double tp = isect_sliver_t(ray, v0, v1, e1, e2, e3, l1, l2, l3);
+            t = !isnan(tp) ? (float)tp : (U * Az + V * Bz + W * Cz) * rcp_det;
         }
-        if (!isnan(tp))
-            t = (float)tp;
     }
     t = isect_clamp_to_box(t_lo, t_hi, t);
     if (!(t >= ray->tmin && t < t_max) || !isfinite(t))
