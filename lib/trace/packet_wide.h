@@ -54,6 +54,20 @@
  * costs the kitchen's camera packets +8 %. */
 #define PACKET_PAIR_MAX 4
 
+/* A closest-hit leaf of more than this many triangles, reached by more
+ * than PACKET_PAIR_MAX rays of the interval walk, tests each triangle's
+ * box against the packet's interval first (packet_tri_beam) and takes
+ * tri8_test only for the triangles whose box passes.  A leaf of one
+ * triangle packet takes every triangle's tri8_test as before.  Measured
+ * (docs/performance-log.md, pk16 and pk17, AVX2 instructions of the
+ * camera packets): with the test in every such leaf (0 here) the
+ * kitchen's took 5.6 % fewer instructions, but gears' were 4-8 % slower
+ * on the clock for +1.1 % instructions; above 4 the kitchen keeps nearly
+ * all of its saving (-5.5 %), gears' leaves of more than four triangles
+ * are rare and their count falls below main's (-1.6 %, the copies' code
+ * as the compiler lays it out), and gears' clock is level. */
+#define PACKET_BEAM_MIN 4
+
 /* A one-origin packet's leaf child takes no test per ray where the beam,
  * this many times over, is narrower than the leaves' mean size
  * (packet_ia_init).  Measured (docs/performance-log.md, pgate): the
@@ -516,8 +530,9 @@ static inline unsigned packet_leaf8_body(struct packet_state *p,
  * its first exit without effects); otherwise each triangle against all
  * of them, or, beam (the interval walk's packets, limit_hi its exit
  * bound), each triangle whose box the packet's interval test passes
- * (packet_tri_beam).  Two copies, so that the common case keeps its plain
- * loop (the interval walk's many-ray copy loops over the mask). */
+ * (packet_tri_beam) when the leaf holds more than PACKET_BEAM_MIN
+ * triangles.  Three copies, so that the common cases keep their plain
+ * loop (the copy with the box test loops over its mask). */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
@@ -534,7 +549,9 @@ static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_pa
      * test; eight rays of a kitchen camera packet, 22 %). */
     if ((unsigned)__builtin_popcount(rays) <= PACKET_PAIR_MAX)
         return packet_leaf8_body(p, packets, first, count, rays, any_hit, 1, 0, limit_hi);
-    return packet_leaf8_body(p, packets, first, count, rays, any_hit, 0, beam, limit_hi);
+    if (beam && count > PACKET_BEAM_MIN)
+        return packet_leaf8_body(p, packets, first, count, rays, any_hit, 0, 1, limit_hi);
+    return packet_leaf8_body(p, packets, first, count, rays, any_hit, 0, 0, limit_hi);
 }
 #endif
 
