@@ -54,6 +54,20 @@
  * costs the kitchen's camera packets +8 %. */
 #define PACKET_PAIR_MAX 4
 
+/* A closest-hit leaf of more than this many triangles, reached by more
+ * than PACKET_PAIR_MAX rays of the interval walk, tests each triangle's
+ * box against the packet's interval first (packet_tri_beam) and takes
+ * tri8_test only for the triangles whose box passes.  A leaf of one
+ * triangle packet takes every triangle's tri8_test as before.  Measured
+ * (docs/performance-log.md, pk16 and pk17, AVX2 instructions of the
+ * camera packets): with the test in every such leaf (0 here) the
+ * kitchen's took 5.6 % fewer instructions, but gears' were 4-8 % slower
+ * on the clock for +1.1 % instructions; above 4 the kitchen keeps nearly
+ * all of its saving (-5.5 %), gears' leaves of more than four triangles
+ * are rare and their count falls below main's (-1.6 %, the copies' code
+ * as the compiler lays it out), and gears' clock is level. */
+#define PACKET_BEAM_MIN 4
+
 /* A one-origin packet's leaf child takes no test per ray where the beam,
  * this many times over, is narrower than the leaves' mean size
  * (packet_ia_init).  Measured (docs/performance-log.md, pgate): the
@@ -308,6 +322,53 @@ static inline void packet_sync(struct packet_state *p, unsigned r)
     p->found |= (unsigned)(p->s[r].found != 0) << r;
 }
 
+/*
+ * The triangles of packet q (bit l: triangle l) whose own box passes the
+ * interval walk's test (packet_walk8_ia, packet_ia_init) with exit bound
+ * limit_hi (at least every ray's box_limit).  The box is the least and
+ * greatest of the triangle's three vertices per axis (exact: min and max
+ * round nothing), so it holds the whole triangle.  A triangle whose box
+ * fails has no hit for any ray of the packet at or below the ray's
+ * limit: the interval test passes every box that one ray's own slab test
+ * (walk_wide8's, with its box_limit) enters (packet_ia_init), and a ray
+ * whose own test refuses a box has no hit at or below its best on
+ * anything the box holds: the property every box of the walk relies on
+ * (the single walk skips such a box, whatever triangles it holds; here
+ * the box is one triangle's).  So the triangle needs no tri8_test, which
+ * would find no hit for any lane: the leaf's triangles are tested as the
+ * walk tests a node's children (Wald, Boulos and Shirley 2007 sec. 4.2,
+ * the packet's interval bounds against a box).  A zero-area triangle's
+ * lane (NaNs) may pass or fail: tri8_test refuses it for every lane
+ * either way.  Float max and min fold the bounds here (the walk's
+ * integer maximum gives the same number, packet_walk8_ia; only a
+ * triangle that no ray can hit may fail, so no bound needs to be the
+ * walk's to the bit).
+ */
+static inline unsigned packet_tri_beam(const struct packet_state *p, const struct tri4_packet *q,
+                                       __m128 limit_hi)
+{
+    const __m128 scale = _mm_set1_ps(ISECT_BOX_FAR_SCALE);
+    __m128 t0 = _mm256_castps256_ps128(p->ia_tmin);
+    __m128 t1 = limit_hi;
+    for (int k = 0; k < 3; k++) {
+        const __m128 a = _mm_loadu_ps(q->v[0][k]);
+        const __m128 b = _mm_loadu_ps(q->v[1][k]);
+        const __m128 c = _mm_loadu_ps(q->v[2][k]);
+        const __m128 lo = _mm_min_ps(_mm_min_ps(a, b), c);
+        const __m128 hi = _mm_max_ps(_mm_max_ps(a, b), c);
+        const int neg = p->ia_octant >> k & 1;
+        const __m128 dn = _mm_sub_ps(neg ? hi : lo, _mm256_castps256_ps128(p->ia_o_near[k]));
+        const __m128 df = _mm_sub_ps(neg ? lo : hi, _mm256_castps256_ps128(p->ia_o_far[k]));
+        t0 = _mm_max_ps(_mm_mul_ps(dn, _mm256_castps256_ps128(p->ia_i_near[k])), t0);
+        t1 = _mm_min_ps(
+            _mm_mul_ps(_mm_max_ps(_mm_mul_ps(df, _mm256_castps256_ps128(p->ia_i_lo[k])),
+                                  _mm_mul_ps(df, _mm256_castps256_ps128(p->ia_i_hi[k]))),
+                       scale),
+            t1);
+    }
+    return (unsigned)_mm_movemask_ps(_mm_cmp_ps(t0, t1, _CMP_LE_OQ));
+}
+
 /* A leaf lane (count triangles in packets from `first`) for the rays of
  * `rays`, all in p->lanes8: each triangle against all of them at once
  * (tri8_test), in wide_leaf's order of triangles, each ray with
@@ -321,7 +382,8 @@ __attribute__((always_inline))
 #endif
 static inline unsigned packet_leaf8_body(struct packet_state *p,
                                          const struct tri4_packet *packets, uint32_t first,
-                                         uint32_t count, unsigned rays, int any_hit, int pair)
+                                         uint32_t count, unsigned rays, int any_hit, int pair,
+                                         int beam, __m128 limit_hi)
 {
     if (!p->t8_ready) {
         /* lanes8 holds the first ray: its kx, ky, kz. */
@@ -343,6 +405,13 @@ static inline unsigned packet_leaf8_body(struct packet_state *p,
         /* The triangles to test: all, or for few rays those whose
          * first exit passes one of them (tri8_pair_filter). */
         unsigned tris = (1u << n) - 1u;
+        if (beam) {
+            /* The interval walk's packet: the triangles whose box its
+             * interval test passes (packet_tri_beam). */
+            tris &= packet_tri_beam(p, q, limit_hi);
+            if (!tris)
+                continue;
+        }
         if (pair) {
             unsigned pass = 0;
             for (unsigned m = rays; m;) {
@@ -355,9 +424,9 @@ static inline unsigned packet_leaf8_body(struct packet_state *p,
             tris &= (pass | pass >> 4);
         }
         for (uint32_t l = 0; l < n && (!any_hit || rays); l++) {
-            if (pair) {
-                /* The next triangle to test (pair is a constant: the
-                 * other copy keeps the plain loop). */
+            if (pair || beam) {
+                /* The next triangle to test (pair and beam are
+                 * constants: the other copies keep the plain loop). */
                 if (!tris)
                     break;
                 l = (uint32_t)__builtin_ctz(tris);
@@ -459,16 +528,30 @@ static inline unsigned packet_leaf8_body(struct packet_state *p,
  * exits by pairs of rays first (tri8_pair_filter), and tri8_test only for
  * the triangles one of them passes (the others tri8_test would leave at
  * its first exit without effects); otherwise each triangle against all
- * of them.  Two copies, so that the common case keeps its plain loop. */
+ * of them, or, beam (the interval walk's packets, limit_hi its exit
+ * bound), each triangle whose box the packet's interval test passes
+ * (packet_tri_beam) when the leaf holds more than PACKET_BEAM_MIN
+ * triangles.  Three copies, so that the common cases keep their plain
+ * loop (the copy with the box test loops over its mask). */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
 static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_packet *packets,
-                                    uint32_t first, uint32_t count, unsigned rays, int any_hit)
+                                    uint32_t first, uint32_t count, unsigned rays, int any_hit,
+                                    int beam, __m128 limit_hi)
 {
+    /* The triangles' boxes against the packet's interval test
+     * (packet_tri_beam) only with more rays than the pair filter takes:
+     * few rays of a packet pass the first exits of few triangles, which
+     * the pair filter finds for less, and the whole packet's interval
+     * bounds are loose around them (measured, docs/performance-log.md,
+     * pk16: at most four rays, 56-98 % of the triangles passed the box
+     * test; eight rays of a kitchen camera packet, 22 %). */
     if ((unsigned)__builtin_popcount(rays) <= PACKET_PAIR_MAX)
-        return packet_leaf8_body(p, packets, first, count, rays, any_hit, 1);
-    return packet_leaf8_body(p, packets, first, count, rays, any_hit, 0);
+        return packet_leaf8_body(p, packets, first, count, rays, any_hit, 1, 0, limit_hi);
+    if (beam && count > PACKET_BEAM_MIN)
+        return packet_leaf8_body(p, packets, first, count, rays, any_hit, 0, 1, limit_hi);
+    return packet_leaf8_body(p, packets, first, count, rays, any_hit, 0, 0, limit_hi);
 }
 #endif
 
@@ -587,7 +670,7 @@ static inline unsigned packet_walk(const struct bvh4 *wide, struct packet_state 
             const unsigned r8 = rays & p->lanes8;
             if ((unsigned)__builtin_popcount(r8) >= PACKET_TRI8_MIN) {
                 done |= packet_leaf8(p, wide->packets, cur, cur_count, r8,
-                                     p->s[__builtin_ctz(r8)].any_hit);
+                                     p->s[__builtin_ctz(r8)].any_hit, 0, _mm_setzero_ps());
                 packet_flush_all(p);
                 single &= ~r8;
             }
@@ -923,7 +1006,12 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
             unsigned single = rays;
             const unsigned r8 = rays & p->lanes8;
             if ((unsigned)__builtin_popcount(r8) >= PACKET_TRI8_MIN) {
-                done |= packet_leaf8(p, wide->packets, cur, cur_count, r8, any_hit);
+                /* The triangles' box test for closest-hit packets only:
+                 * gears' shadow packets, whose rays pass the boxes of
+                 * about 80 % of the triangles they meet, were 10-12 %
+                 * slower with it (docs/performance-log.md, pk16). */
+                done |= packet_leaf8(p, wide->packets, cur, cur_count, r8, any_hit, !any_hit,
+                                     _mm256_castps256_ps128(limit_hi));
                 single &= ~r8;
             }
             for (unsigned m = single; m; m &= m - 1u) {
