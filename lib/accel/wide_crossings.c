@@ -38,7 +38,13 @@ double accel_wide_child_crossings(const struct bvh4 *wide)
     if (wide->width != 8 || !wide->node_count)
         return 0.0;
     double children = 0.0, nodes = 0.0;
-    for (uint32_t w = 0; w < wide->node_count; w++) {
+    /* Every fourth node (as collapse4.c's leaf_extent_mean samples the
+     * leaves): the full sum cost 0.7 % of bumpy's one-thread build (17
+     * million instructions, callgrind).  The sample moves the ratios of
+     * the layouts measured (all nodes -> every fourth): the soup 1.81 ->
+     * 1.83, bumpy 1.18 -> 1.23, the kitchen 1.19 -> 1.20, gears (77
+     * nodes) 1.44 -> 1.19; the soup stays far above the others. */
+    for (uint32_t w = 0; w < wide->node_count; w += 4) {
         const struct bvh8_node *n = &wide->nodes8[w];
         float lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
         double sum = 0.0;

@@ -101,10 +101,11 @@
 /* The children a ray crossing a wide node crosses, on average over the
  * layout (accel_wide_child_crossings), from which the any-hit walk
  * orders a node's children by the ray's segment inside each box
- * (any_longest): between the meshes measured, whose layouts read gears
- * 1.44, the kitchen 1.19, bumpy 1.18 (surfaces: the stored order is the
- * faster there) and the soup 1.81 (a volume: the segment's order is).
- * A heuristic only: the answers do not depend on it. */
+ * (any_longest): between the meshes measured, whose layouts read bumpy
+ * 1.23, the kitchen 1.20, gears 1.19 (surfaces: the stored order is the
+ * faster there, round 39, sr6) and the soup 1.83 (a volume: the
+ * segment's order is).  A heuristic only: the answers do not depend on
+ * it. */
 #define BVH_WIDE_ANY_LONGEST_CROSSINGS 1.6
 
 struct bvh4_node {
