@@ -652,62 +652,53 @@ static inline void wide8_push_stored(const struct bvh8_node *n, unsigned pm, __m
 
 /*
  * The child an any-hit walk goes to first when a node has two or more
- * hit children: of the children whose box the ray enters after its start
- * (entry above tmin), the one where the ray's segment inside the box,
- * exit - entry, is longest; lowest lane on a tie.  The children whose box
- * holds the ray's start (entry clamped to tmin) come first only when no
- * other is hit.
+ * hit children: the one where the ray's segment inside the box, exit -
+ * entry, is longest; lowest lane on a tie.
  *
- * Why: a shadow ray starts on a surface and looks for any occluder up to
- * the light.  The box holding its start holds that surface's triangle and
- * its neighbours, which the ray leaves (the leaf refuses them as behind
- * tmin) and which seldom occlude it; elsewhere the chance that a box's
- * triangles block the ray grows with the length of the ray inside the box
- * (for triangles spread through the box, the expected number crossed is
- * proportional to it: the argument of the surface-area heuristic's
- * ray-distribution, MacDonald and Booth 1990, sec. 3, applied to one
- * ray).  Embree's occluded walk goes on with its last hit lane (it orders
- * by nothing); SATO (Nah and Manocha 2014) orders any-hit children by
- * their boxes' surface area at build time.  Counted per shadow ray (rtbench
- * embree, node lanes / triangles): the soup 83.5 / 19.4 -> 71.3 / 16.0, the
- * kitchen 41.4 / 7.24 -> 40.3 / 7.22, bumpy 70.3 / 8.76 -> 69.6 / 8.33,
- * gears 39.4 / 9.07 -> 39.6 / 9.01; visiting the farthest child first
- * (sr5) helped the soup and cost the kitchen 9 % more triangles.
+ * Why: for triangles spread through a box (a volume of them, the soup),
+ * the expected number a ray crosses grows with the length of the ray
+ * inside the box (the argument of the surface-area heuristic's ray
+ * distribution, MacDonald and Booth 1990, sec. 3, applied to one ray),
+ * so the longest segment is the likeliest to end an occluded ray soonest.
+ * Embree's occluded walk goes on with its last hit lane (it orders by
+ * nothing); SATO (Nah and Manocha 2014) orders any-hit children by their
+ * boxes' surface area at build time.  Counted per shadow ray (rtbench
+ * embree, node lanes / triangles; round 39, sr6's rules): the soup 83.5 /
+ * 19.4 in the stored order, 71.3 / 16.0 with the box holding the ray's
+ * start last (rule 28), 64.5 / 15.4 with it treated as any other (rule
+ * 25, this one); AVX2 instructions a soup shadow ray (callgrind) 1582.0,
+ * 1412.8, 1315.2.  On the surfaces measured it pays less than it costs:
+ * the kitchen 41.4 / 7.24 -> 41.8 / 7.38 (its occluders lie near the
+ * start, but not in the start's own box), gears 39.4 / 9.07 -> 39.0 /
+ * 8.88, for the reduction's instructions and latency at every push
+ * (sr6: slower on the clock in every pair), so only the layouts with
+ * any_longest (bvh4_layout.h) take it: the walk's copy is chosen per
+ * layout (WIDE_ANY_LONGEST), and the other layouts' walk is the stored
+ * order's as before, without a test.
  *
  * The key of a lane: the segment's bits with the low four replaced by 8
- * and 7 - lane (a tie within 16 ulps goes to the lowest lane); the
- * start's lanes 7 - lane alone, below every other hit lane; missed lanes
- * 0.  Exit and entry are never NaN here (t0 is an integer maximum with
- * tmin's non-negative bits, t1 a minimum whose NaN operands give way,
- * WIDE8_RAY), and a hit lane has entry <= exit, so the segment is a
+ * and 7 - lane (a tie within 16 ulps goes to the lowest lane); missed
+ * lanes 0.  Exit and entry are never NaN here (t0 is an integer maximum
+ * with tmin's non-negative bits, t1 a minimum whose NaN operands give
+ * way, WIDE8_RAY), and a hit lane has entry <= exit, so the segment is a
  * non-negative float (x - x is +0), whose bits order as the floats do;
- * the integer maximum names the lane (two hit lanes or more: the
- * maximum is above 0).
+ * the integer maximum names the lane (two hit lanes or more: the maximum
+ * is above 0).
  * Which child comes first changes only how soon an occluded ray stops:
  * the walk still pushes every other hit child and visits every box its
  * interval reaches until its first hit (its box limit never shrinks), so
  * the answer (occluded or not) is the same in any order.  Even a front
  * lane that missed would only add a visit: every hit lane but the front
  * one is pushed (wide8_push_any counts the pushed lanes, not the hits).
- *
- * Only on the layouts whose any_longest is set (bvh4_layout.h: those
- * where a ray crossing a node crosses many of its children, the soup's
- * volume of triangles): the walk's copy is chosen per layout
- * (WIDE_ANY_LONGEST), so the other layouts' walk is the stored order's
- * as before, without a test.  On the kitchen and gears this choice, at
- * every push, cost more on the clock than the 1-3 % of node lanes it
- * saves there (round 39, sr6: every form of it slower on their shadow
- * rays in every pair).
  */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline unsigned wide8_any_front(__m256 t0, __m256 t1, __m256i tmin8, __m256 hit)
+static inline unsigned wide8_any_front(__m256 t0, __m256 t1, __m256 hit)
 {
     const __m256i seg = _mm256_castps_si256(_mm256_sub_ps(t1, t0));
-    const __m256i start = _mm256_cmpeq_epi32(_mm256_castps_si256(t0), tmin8);
-    __m256i key = _mm256_andnot_si256(
-        start, _mm256_or_si256(_mm256_and_si256(seg, _mm256_set1_epi32(~15)), _mm256_set1_epi32(8)));
+    __m256i key =
+        _mm256_or_si256(_mm256_and_si256(seg, _mm256_set1_epi32(~15)), _mm256_set1_epi32(8));
     key = _mm256_and_si256(_mm256_or_si256(key, _mm256_setr_epi32(7, 6, 5, 4, 3, 2, 1, 0)),
                            _mm256_castps_si256(hit));
     __m128i k = _mm_max_epi32(_mm256_castsi256_si128(key), _mm256_extracti128_si256(key, 1));
@@ -717,31 +708,24 @@ static inline unsigned wide8_any_front(__m256 t0, __m256 t1, __m256i tmin8, __m2
 }
 
 /*
- * wide8_push for an any-hit walk: wide8_any_front's lane next, the other
- * hit lanes pushed in the node's stored order (lowest lane on top).  pm:
- * the hit lanes' mask as the node test has it (on AVX-512 a mask
- * register's); hit: the same lanes as a vector; t1: the scaled exits
- * clamped to the box limit.  No entry distances: an any-hit walk's pops
- * never read them (its box limit never shrinks).
+ * wide8_push for an any-hit walk on a layout with any_longest:
+ * wide8_any_front's lane next, the other hit lanes pushed in the node's
+ * stored order (lowest lane on top).  pm: the hit lanes' mask as the
+ * node test has it (two or more lanes); hit: the same lanes as a vector;
+ * t1: the scaled exits clamped to the box limit.  No entry distances: an
+ * any-hit walk's pops never read them (its box limit never shrinks).
+ * (Rule 28's form, the start's box last with the reduction only where
+ * two or more lanes lie beyond the start, round 39's v4, was slower on
+ * the soup's clock: 0.92-0.93 of Embree against 0.99.)
  */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
 static inline void wide8_push_any(const struct bvh8_node *n, unsigned pm, __m256 hit, __m256 t0,
-                                  __m256 t1, __m256i tmin8, uint32_t *st_child,
-                                  uint32_t *st_count, uint32_t *sp, uint32_t *cur,
-                                  uint32_t *cur_count)
+                                  __m256 t1, uint32_t *st_child, uint32_t *st_count, uint32_t *sp,
+                                  uint32_t *cur, uint32_t *cur_count)
 {
-    /* The lanes beyond the start: with one of them (or none) the choice
-     * is the lowest of them (or the lowest hit lane: the start's keys
-     * order by lane), two instructions from the test's mask; only with two
-     * or more does the walk wait for the maximum over the keys (about 15
-     * cycles and 15 instructions), behind a branch. */
-    const __m256i start = _mm256_cmpeq_epi32(_mm256_castps_si256(t0), tmin8);
-    const unsigned later = pm & ~(unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(start));
-    const unsigned front = !(later & (later - 1u))
-                               ? (unsigned)__builtin_ctz(later ? later : pm)
-                               : wide8_any_front(t0, t1, tmin8, hit);
+    const unsigned front = wide8_any_front(t0, t1, hit);
     const unsigned rest = pm & ~(1u << front);
     /* wide8_compress[rest]: the rest's lanes back to front, so that the
      * lowest ends on top; all of them kept (sp moves by their number). */

@@ -222,8 +222,8 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                                 _mm256_min_ps(_mm256_mul_ps(tfy, scale),
                                               _mm256_min_ps(_mm256_mul_ps(tfx, scale),
                                                             _mm256_set1_ps(box_limit))));
-                            wide8_push_any(n, mask, hit, t0, t1, tmin8, st_child, st_count, &sp,
-                                           &cur, &cur_count);
+                            wide8_push_any(n, mask, hit, t0, t1, st_child, st_count, &sp, &cur,
+                                           &cur_count);
                         } else if (any_hit)
                             wide8_push_stored(n, mask, t0, st_child, st_count, &sp, &cur,
                                               &cur_count);
