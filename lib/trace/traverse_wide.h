@@ -680,10 +680,14 @@ static inline void wide8_push_stored(const struct bvh8_node *n, unsigned pm, __m
  * and 7 - lane (a tie within 16 ulps goes to the lowest lane); missed
  * lanes 0.  Exit and entry are never NaN here (t0 is an integer maximum
  * with tmin's non-negative bits, t1 a minimum whose NaN operands give
- * way, WIDE8_RAY), and a hit lane has entry <= exit, so the segment is a
- * non-negative float (x - x is +0), whose bits order as the floats do;
- * the integer maximum names the lane (two hit lanes or more: the maximum
- * is above 0).
+ * way, WIDE8_RAY), and a hit lane has entry <= exit, but both may be
+ * +inf (a zero direction component, with t_max infinite), and inf - inf
+ * is NaN, whose default bits (sign set) are a negative integer: the
+ * segment's bits are clamped at 0, so that a hit lane's key is always 8
+ * or more and the front lane a hit one (unclamped, such a node sent the
+ * walk to a missed lane's child: conformance/internal/kernel_bits).
+ * Otherwise the segment is a non-negative float, whose bits order as the
+ * floats do; the integer maximum names the lane.
  * Which child comes first changes only how soon an occluded ray stops:
  * the walk still pushes every other hit child and visits every box its
  * interval reaches until its first hit (its box limit never shrinks), so
@@ -696,7 +700,10 @@ __attribute__((always_inline))
 #endif
 static inline unsigned wide8_any_front(__m256 t0, __m256 t1, __m256 hit)
 {
-    const __m256i seg = _mm256_castps_si256(_mm256_sub_ps(t1, t0));
+    /* The segment's bits, those of a negative number or NaN as 0 (its
+     * lane then ranks by lane alone, still above every missed lane). */
+    const __m256i seg = _mm256_max_epi32(_mm256_castps_si256(_mm256_sub_ps(t1, t0)),
+                                         _mm256_setzero_si256());
     __m256i key =
         _mm256_or_si256(_mm256_and_si256(seg, _mm256_set1_epi32(~15)), _mm256_set1_epi32(8));
     key = _mm256_and_si256(_mm256_or_si256(key, _mm256_setr_epi32(7, 6, 5, 4, 3, 2, 1, 0)),
