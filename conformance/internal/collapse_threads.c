@@ -54,6 +54,7 @@ static int same_wide(const struct bvh4 *a, const struct bvh4 *b)
 {
     if (a->width != b->width || a->node_count != b->node_count ||
         a->packet_count != b->packet_count || a->prefetch_top != b->prefetch_top ||
+        a->any_longest != b->any_longest ||
         memcmp(&a->leaf_extent, &b->leaf_extent, sizeof a->leaf_extent) != 0)
         return 0;
     const void *na = a->width == 8 ? (const void *)a->nodes8 : (const void *)a->nodes;

@@ -271,6 +271,12 @@ static void compare_tables(const char *name, struct tg_mesh *m, int rays, uint64
            32.0 * bvh.node_count / m->tri_count,
            (double)bvh4_node_bytes(&wides[0]) / m->tri_count,
            (double)bvh4_node_bytes(&wides[1]) / m->tri_count);
+    /* Which copy of the 8-wide any-hit walk this layout takes (the
+     * random soup's: the longest segment's, bvh4_layout.h any_longest);
+     * both are compared with the scalar table below. */
+    printf("  %s: bvh8 child crossings %.2f, any-hit order %s\n", name,
+           accel_wide_child_crossings(&wides[1]),
+           wides[1].any_longest ? "longest segment" : "stored");
     if (deform) {
         /* A twist about z growing with height, and a shift: every box
          * moves. */
@@ -360,13 +366,16 @@ static void compare_tables(const char *name, struct tg_mesh *m, int rays, uint64
                 }
                 /* The counting walks the two-level walk takes from
                  * walk1_counted: closest1's / any1's answers and counts
-                 * with counters, on the layout with prefetch_top 0 and 1
-                 * (a shallow copy: the walks read the flag only). */
+                 * with counters, on the layout with prefetch_top and
+                 * any_longest both 0 and both 1 (a shallow copy: the walks
+                 * read the flags only; both any-hit orders on every
+                 * layout). */
                 for (int pre = 0; pre < 2 && k->walk1_counted && wide->width == 8 &&
                                   wide->node_count;
                      pre++) {
                     struct bvh4 wp = *wide;
                     wp.prefetch_top = (uint32_t)pre;
+                    wp.any_longest = (uint32_t)pre;
                     struct trace_hit h7, h8;
                     memset(&h7, 0, sizeof(h7));
                     memset(&h8, 0, sizeof(h8));

@@ -98,6 +98,16 @@
  * only: the answers do not depend on it. */
 #define BVH_WIDE_PREFETCH_BYTES ((uint64_t)1 << 20)
 
+/* The children a ray crossing a wide node crosses, on average over the
+ * layout (accel_wide_child_crossings), from which the any-hit walk
+ * orders a node's children by the ray's segment inside each box
+ * (any_longest): between the meshes measured, whose layouts read bumpy
+ * 1.23, the kitchen 1.20, gears 1.19 (surfaces: the stored order is the
+ * faster there, round 39, sr6) and the soup 1.83 (a volume: the
+ * segment's order is).  A heuristic only: the answers do not depend on
+ * it. */
+#define BVH_WIDE_ANY_LONGEST_CROSSINGS 1.6
+
 struct bvh4_node {
     float bounds[6][4];
     uint32_t child[4];
@@ -135,6 +145,14 @@ struct bvh4 {
      * push (traverse_wide.h); a smaller layout stays in the caches and
      * the prefetch would only cost instructions. */
     uint32_t prefetch_top;
+    /* 1 when accel_wide_child_crossings reaches
+     * BVH_WIDE_ANY_LONGEST_CROSSINGS: the 8-wide single-ray any-hit walk
+     * then goes on at a node with the hit child whose box holds the
+     * longest stretch of the ray beyond its start (traverse_wide.h,
+     * wide8_push_any) instead of the stored order.  Set by the collapse
+     * from the built boxes and kept by a refit (the topology it orders
+     * is the same).  Only the visit order changes, never an answer. */
+    uint32_t any_longest;
     /* The leaves' size: the mean over the leaf lanes of the largest
      * extent of a lane's box (collapse4.c, leaf_extent_mean; a sample);
      * 0 without leaves.  The 8-wide packet walk compares it with its
@@ -205,6 +223,13 @@ int accel_collapse_wide_quality(struct bvh4 *out, const struct bvh *bvh, const f
  * root's area.  Triangle layouts only (a leaf lane's count its
  * triangles).  Implemented in lib/accel/sah_cost.c. */
 double accel_wide_sah_cost(const struct bvh4 *wide, double c_node, double c_packet);
+
+/* The mean number of a wide node's children that a random line crossing
+ * the node crosses, over the nodes such lines visit: the sum over the
+ * nodes of their lanes' box areas over the sum of the nodes' own (their
+ * lanes' union); 0 for a layout other than 8 wide or without nodes.
+ * Implemented in lib/accel/wide_crossings.c. */
+double accel_wide_child_crossings(const struct bvh4 *wide);
 
 /* accel_collapse_wide with width 4. */
 int accel_collapse4(struct bvh4 *out, const struct bvh *bvh, const float *tri);

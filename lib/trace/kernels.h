@@ -120,7 +120,8 @@ struct trace_kernels {
     trace_walk1_fn (*walk1)(const struct bvh4 *wide, int any_hit);
     /* The walks closest1 / any1 take with counters on an 8-wide layout
      * with nodes (width 8, node_count > 0), by index 2 any_hit +
-     * (prefetch_top != 0), for a caller that has tested the layout
+     * ((any_hit ? any_longest : prefetch_top) != 0), for a caller that
+     * has tested the layout
      * already: the two-level walk's rays that reach an identity
      * instance's object without a world set-up (scene_traverse.c), which
      * then call the walk without the entries' per-ray tests of counters,

@@ -229,7 +229,9 @@ static int visit_instance(struct top_state *s, uint32_t index)
      * the same walk without the entry's tests of what is known here. */
     const trace_walk1_fn walk1 =
         direct && kernels->walk1_counted && view.wide->width == 8
-            ? kernels->walk1_counted[2 * (s->any_hit != 0) + (view.wide->prefetch_top != 0)]
+            ? kernels->walk1_counted[2 * (s->any_hit != 0) +
+                                     ((s->any_hit ? view.wide->any_longest
+                                                  : view.wide->prefetch_top) != 0)]
             : NULL;
     /* A ray reaches inside the object when its walk tests more boxes than
      * the root's (the root box for the binary walk, the root's children

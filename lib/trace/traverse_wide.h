@@ -644,6 +644,112 @@ static inline void wide8_push_stored(const struct bvh8_node *n, unsigned pm, __m
     *cur_count = n->count[l];
 }
 
+/* any_hit's value for the 8-wide single-ray walk's copies that order an
+ * any-hit push by wide8_push_any (the layouts with any_longest); 1: the
+ * stored order (wide8_push_stored).  Any non-zero any_hit is an any-hit
+ * walk everywhere else. */
+#define WIDE_ANY_LONGEST 2
+
+/*
+ * The child an any-hit walk goes to first when a node has two or more
+ * hit children: the one where the ray's segment inside the box, exit -
+ * entry, is longest; lowest lane on a tie.
+ *
+ * Why: for triangles spread through a box (a volume of them, the soup),
+ * the expected number a ray crosses grows with the length of the ray
+ * inside the box (the argument of the surface-area heuristic's ray
+ * distribution, MacDonald and Booth 1990, sec. 3, applied to one ray),
+ * so the longest segment is the likeliest to end an occluded ray soonest.
+ * Embree's occluded walk goes on with its last hit lane (it orders by
+ * nothing); SATO (Nah and Manocha 2014) orders any-hit children by their
+ * boxes' surface area at build time.  Counted per shadow ray (rtbench
+ * embree, node lanes / triangles; round 39, sr6's rules): the soup 83.5 /
+ * 19.4 in the stored order, 71.3 / 16.0 with the box holding the ray's
+ * start last (rule 28), 64.5 / 15.4 with it treated as any other (rule
+ * 25, this one); AVX2 instructions a soup shadow ray (callgrind) 1582.0,
+ * 1412.8, 1315.2.  On the surfaces measured it pays less than it costs:
+ * the kitchen 41.4 / 7.24 -> 41.8 / 7.38 (its occluders lie near the
+ * start, but not in the start's own box), gears 39.4 / 9.07 -> 39.0 /
+ * 8.88, for the reduction's instructions and latency at every push
+ * (sr6: slower on the clock in every pair), so only the layouts with
+ * any_longest (bvh4_layout.h) take it: the walk's copy is chosen per
+ * layout (WIDE_ANY_LONGEST), and the other layouts' walk is the stored
+ * order's as before, without a test.
+ *
+ * The key of a lane: the segment's bits with the low four replaced by 8
+ * and 7 - lane (a tie within 16 ulps goes to the lowest lane); missed
+ * lanes 0.  Exit and entry are never NaN here (t0 is an integer maximum
+ * with tmin's non-negative bits, t1 a minimum whose NaN operands give
+ * way, WIDE8_RAY), and a hit lane has entry <= exit, but both may be
+ * +inf (a zero direction component, with t_max infinite), and inf - inf
+ * is NaN, whose default bits (sign set) are a negative integer: the
+ * segment's bits are clamped at 0, so that a hit lane's key is always 8
+ * or more and the front lane a hit one (unclamped, such a node sent the
+ * walk to a missed lane's child: conformance/internal/kernel_bits).
+ * Otherwise the segment is a non-negative float, whose bits order as the
+ * floats do; the integer maximum names the lane.
+ * Which child comes first changes only how soon an occluded ray stops:
+ * the walk still pushes every other hit child and visits every box its
+ * interval reaches until its first hit (its box limit never shrinks), so
+ * the answer (occluded or not) is the same in any order.  Even a front
+ * lane that missed would only add a visit: every hit lane but the front
+ * one is pushed (wide8_push_any counts the pushed lanes, not the hits).
+ */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline unsigned wide8_any_front(__m256 t0, __m256 t1, __m256 hit)
+{
+    /* The segment's bits, those of a negative number or NaN as 0 (its
+     * lane then ranks by lane alone, still above every missed lane). */
+    const __m256i seg = _mm256_max_epi32(_mm256_castps_si256(_mm256_sub_ps(t1, t0)),
+                                         _mm256_setzero_si256());
+    __m256i key =
+        _mm256_or_si256(_mm256_and_si256(seg, _mm256_set1_epi32(~15)), _mm256_set1_epi32(8));
+    key = _mm256_and_si256(_mm256_or_si256(key, _mm256_setr_epi32(7, 6, 5, 4, 3, 2, 1, 0)),
+                           _mm256_castps_si256(hit));
+    __m128i k = _mm_max_epi32(_mm256_castsi256_si128(key), _mm256_extracti128_si256(key, 1));
+    k = _mm_max_epi32(k, _mm_shuffle_epi32(k, 0x4E));
+    k = _mm_max_epi32(k, _mm_shuffle_epi32(k, 0xB1));
+    return 7u - ((unsigned)_mm_cvtsi128_si32(k) & 7u);
+}
+
+/*
+ * wide8_push for an any-hit walk on a layout with any_longest:
+ * wide8_any_front's lane next, the other hit lanes pushed in the node's
+ * stored order (lowest lane on top).  pm: the hit lanes' mask as the
+ * node test has it (two or more lanes); hit: the same lanes as a vector;
+ * t1: the scaled exits clamped to the box limit.  No entry distances: an
+ * any-hit walk's pops never read them (its box limit never shrinks).
+ * (Rule 28's form, the start's box last with the reduction only where
+ * two or more lanes lie beyond the start, round 39's v4, was slower on
+ * the soup's clock: 0.92-0.93 of Embree against 0.99.)
+ */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void wide8_push_any(const struct bvh8_node *n, unsigned pm, __m256 hit, __m256 t0,
+                                  __m256 t1, uint32_t *st_child, uint32_t *st_count, uint32_t *sp,
+                                  uint32_t *cur, uint32_t *cur_count)
+{
+    const unsigned front = wide8_any_front(t0, t1, hit);
+    const unsigned rest = pm & ~(1u << front);
+    /* wide8_compress[rest]: the rest's lanes back to front, so that the
+     * lowest ends on top; all of them kept (sp moves by their number). */
+    const __m256i gather = _mm256_cvtepu8_epi32(
+        _mm_loadl_epi64((const __m128i *)(const void *)&wide8_compress[rest]));
+    const __m256i child = _mm256_load_si256((const __m256i *)(const void *)n->child);
+    const __m256i count =
+        _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)n->count));
+    _mm256_storeu_si256((__m256i *)(void *)&st_child[*sp],
+                        _mm256_permutevar8x32_epi32(child, gather));
+    _mm256_storeu_si256((__m256i *)(void *)&st_count[*sp],
+                        _mm256_permutevar8x32_epi32(count, gather));
+    *sp += (uint32_t)__builtin_popcount(rest);
+    *cur = n->child[front];
+    *cur_count = n->count[front];
+}
+
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
@@ -839,10 +945,13 @@ static inline int wide8_walk_end(const struct wide_state *s, int done, int any_h
                     struct trace_hit *hit, struct trace_counters *counters)                     \
     {                                                                                           \
         struct wide_state s;                                                                    \
-        wide_state_init1(&s, ray, t_max, any_hit, stats, hit);                                  \
+        /* 1 for either any-hit copy (WIDE_ANY_LONGEST): the state's and the                    \
+         * float walk's flag. */                                                                \
+        const int any_walk = (any_hit) != 0;                                                    \
+        wide_state_init1(&s, ray, t_max, any_walk, stats, hit);                                 \
         if (!(ray->tmin >= 0.0f))                                                               \
-            return wide8_walk_end(&s, wide8_walk_tmin_other(wide, &s, any_hit, stats), any_hit, \
-                                  stats, counters);                                             \
+            return wide8_walk_end(&s, wide8_walk_tmin_other(wide, &s, any_walk, stats),         \
+                                  any_hit, stats, counters);                                    \
         if (any_hit)                                                                            \
             tri4_ray_init_scalar(&s.r4, ray);                                                   \
         const int done = walk(wide, &s, any_hit, stats, leave_early, NULL);                     \
@@ -975,6 +1084,9 @@ WIDE8_WALK(wide8_walk_any_leaf8, walk_wide8_ray_leaf8, 1, 0, 1)
 WIDE8_WALK(wide8_walk_closest_leaf8_stats, walk_wide8_ray_leaf8, 0, 1, 0)
 WIDE8_WALK(wide8_walk_closest_early_leaf8_stats, walk_wide8_ray_leaf8, 0, 1, 1)
 WIDE8_WALK(wide8_walk_any_leaf8_stats, walk_wide8_ray_leaf8, 1, 1, 1)
+/* The any-hit walks for the layouts with any_longest (WIDE_ANY_LONGEST). */
+WIDE8_WALK(wide8_walk_any_longest_leaf8, walk_wide8_ray_leaf8, WIDE_ANY_LONGEST, 0, 1)
+WIDE8_WALK(wide8_walk_any_longest_leaf8_stats, walk_wide8_ray_leaf8, WIDE_ANY_LONGEST, 1, 1)
 
 /* The same three walks for the entries that take the ray's origin and
  * direction (TRACE_WIDE_CLOSEST1, TRACE_WIDE_ANY1): the ray is set up
@@ -1018,10 +1130,13 @@ static inline void tri4_ray_init_scalar_lanes(struct tri4_ray *r, const struct r
         struct ray_lanes lanes;                                                                 \
         trace_ray_setup_lanes(&ray, &lanes, org, dir, tmin);                                    \
         struct wide_state s;                                                                    \
-        wide_state_init1(&s, &ray, t_max, any_hit, stats, hit);                                 \
+        /* 1 for either any-hit copy (WIDE_ANY_LONGEST): the state's and the                    \
+         * float walk's flag. */                                                                \
+        const int any_walk = (any_hit) != 0;                                                    \
+        wide_state_init1(&s, &ray, t_max, any_walk, stats, hit);                                \
         if (!(tmin >= 0.0f))                                                                    \
-            return wide8_walk_end(&s, wide8_walk_tmin_other(wide, &s, any_hit, stats), any_hit, \
-                                  stats, counters);                                             \
+            return wide8_walk_end(&s, wide8_walk_tmin_other(wide, &s, any_walk, stats),         \
+                                  any_hit, stats, counters);                                    \
         if (any_hit)                                                                            \
             tri4_ray_init_scalar_lanes(&s.r4, &lanes, tmin);                                    \
         const int done = walk(wide, &s, any_hit, stats, leave_early, &lanes);                   \
@@ -1037,6 +1152,9 @@ WIDE8_WALK1(wide8_walk1_any_leaf8, walk_wide8_ray_leaf8, 1, 0, 1)
 WIDE8_WALK1(wide8_walk1_closest_leaf8_stats, walk_wide8_ray_leaf8, 0, 1, 0)
 WIDE8_WALK1(wide8_walk1_closest_early_leaf8_stats, walk_wide8_ray_leaf8, 0, 1, 1)
 WIDE8_WALK1(wide8_walk1_any_leaf8_stats, walk_wide8_ray_leaf8, 1, 1, 1)
+/* The any-hit walks for the layouts with any_longest (WIDE_ANY_LONGEST). */
+WIDE8_WALK1(wide8_walk1_any_longest_leaf8, walk_wide8_ray_leaf8, WIDE_ANY_LONGEST, 0, 1)
+WIDE8_WALK1(wide8_walk1_any_longest_leaf8_stats, walk_wide8_ray_leaf8, WIDE_ANY_LONGEST, 1, 1)
 
 /* kernels.h's walk1: the walk walk_wide_single1 below takes without
  * counters, chosen once for a layout.  A caller that traces many rays
@@ -1048,16 +1166,17 @@ static trace_walk1_fn TRACE_WIDE_WALK1(const struct bvh4 *wide, int any_hit)
     if (wide->width != 8 || !wide->node_count)
         return NULL;
     if (any_hit)
-        return wide8_walk1_any_leaf8;
+        return wide->any_longest ? wide8_walk1_any_longest_leaf8 : wide8_walk1_any_leaf8;
     return wide->prefetch_top ? wide8_walk1_closest_early_leaf8 : wide8_walk1_closest_leaf8;
 }
 
 /* kernels.h's walk1_counted: walk_wide_single1's counting walks by index
- * 2 any_hit + (prefetch_top != 0), the choice its entries make every ray
- * (the any-hit walk does not depend on prefetch_top). */
+ * 2 any_hit + (any_hit ? any_longest : prefetch_top) != 0, the choice its
+ * entries make every ray (the any-hit walk does not depend on
+ * prefetch_top, the closest-hit walk not on any_longest). */
 static const trace_walk1_fn TRACE_WIDE_WALK1_COUNTED[4] = {
     wide8_walk1_closest_leaf8_stats, wide8_walk1_closest_early_leaf8_stats,
-    wide8_walk1_any_leaf8_stats, wide8_walk1_any_leaf8_stats};
+    wide8_walk1_any_leaf8_stats, wide8_walk1_any_longest_leaf8_stats};
 
 /*
  * The leaf of the 8-wide walks on its own, for
@@ -1205,6 +1324,9 @@ static inline int walk_wide_single(const struct bvh4 *wide, const struct bvh *bv
         return walk(bvh, tri, ray, t_max, any_hit, hit, counters);
 #if defined(__AVX__)
     if (wide->width == 8) {
+        if (any_hit && wide->any_longest)
+            return counters ? wide8_walk_any_longest_leaf8_stats(wide, ray, t_max, hit, counters)
+                            : wide8_walk_any_longest_leaf8(wide, ray, t_max, hit, counters);
         if (any_hit)
             return counters ? wide8_walk_any_leaf8_stats(wide, ray, t_max, hit, counters)
                             : wide8_walk_any_leaf8(wide, ray, t_max, hit, counters);
@@ -1283,14 +1405,20 @@ static inline int walk_wide_single1(const struct bvh4 *wide, const struct bvh *b
     if (wide->width == 8 && wide->node_count) {
         if (counters) {
             if (any_hit)
-                return wide8_walk1_any_leaf8_stats(wide, org, dir, tmin, t_max, hit, counters);
+                return wide->any_longest
+                           ? wide8_walk1_any_longest_leaf8_stats(wide, org, dir, tmin, t_max,
+                                                                 hit, counters)
+                           : wide8_walk1_any_leaf8_stats(wide, org, dir, tmin, t_max, hit,
+                                                         counters);
             if (wide->prefetch_top)
                 return wide8_walk1_closest_early_leaf8_stats(wide, org, dir, tmin, t_max, hit,
                                                              counters);
             return wide8_walk1_closest_leaf8_stats(wide, org, dir, tmin, t_max, hit, counters);
         }
         if (any_hit)
-            return wide8_walk1_any_leaf8(wide, org, dir, tmin, t_max, hit, NULL);
+            return wide->any_longest
+                       ? wide8_walk1_any_longest_leaf8(wide, org, dir, tmin, t_max, hit, NULL)
+                       : wide8_walk1_any_leaf8(wide, org, dir, tmin, t_max, hit, NULL);
         if (wide->prefetch_top)
             return wide8_walk1_closest_early_leaf8(wide, org, dir, tmin, t_max, hit, NULL);
         return wide8_walk1_closest_leaf8(wide, org, dir, tmin, t_max, hit, NULL);

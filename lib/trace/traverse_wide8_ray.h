@@ -211,7 +211,20 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                         cur = n->child[l];
                         cur_count = n->count[l];
                     } else {
-                        if (any_hit)
+                        if (any_hit == WIDE_ANY_LONGEST) {
+                            /* The exits as the test took them (scaled),
+                             * clamped to the limit: min returns its second
+                             * operand when either is NaN, so a NaN exit
+                             * gives way to the limit and t1 is never NaN
+                             * (wide8_any_front's keys need that). */
+                            const __m256 t1 = _mm256_min_ps(
+                                _mm256_mul_ps(tfz, scale),
+                                _mm256_min_ps(_mm256_mul_ps(tfy, scale),
+                                              _mm256_min_ps(_mm256_mul_ps(tfx, scale),
+                                                            _mm256_set1_ps(box_limit))));
+                            wide8_push_any(n, mask, hit, t0, t1, st_child, st_count, &sp, &cur,
+                                           &cur_count);
+                        } else if (any_hit)
                             wide8_push_stored(n, mask, t0, st_child, st_count, &sp, &cur,
                                               &cur_count);
                         else
