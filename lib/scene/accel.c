@@ -14,10 +14,17 @@
 #include "base/timer.h"
 #include "scene/object.h"
 
+/* Whether prim_count leaf-ordered triangles (nine floats each) reach
+ * params->rebuild_reuse_min_bytes: the size from which a fresh build
+ * leaves them out and a rebuild reuses the replaced array. */
+static int triangles_large(const struct bvh_build_params *params, uint32_t prim_count)
+{
+    return (uint64_t)prim_count * 9 * sizeof(float) >= params->rebuild_reuse_min_bytes;
+}
+
 int scene_accel_triangles_at_build(const struct bvh_build_params *params, uint32_t prim_count)
 {
-    return !params->wide_layout || !prim_count ||
-           (uint64_t)prim_count * 9 * sizeof(float) < params->rebuild_reuse_min_bytes;
+    return !params->wide_layout || !prim_count || !triangles_large(params, prim_count);
 }
 
 /* The step after every change of the tree's topology: the wide layout
@@ -56,10 +63,9 @@ static int finish_layout(struct scene_accel *accel, const struct scene_accel_geo
 {
     const int keep_tri = scene_accel_triangles_at_build(params, accel->bvh.prim_count) ||
                          accel->tri || (old && old->tri);
-    const int reuse_old_tri =
-        keep_tri && !accel->tri && old && old->tri && accel->bvh.prim_count &&
-        old->bvh.prim_count == accel->bvh.prim_count &&
-        (uint64_t)accel->bvh.prim_count * 9 * sizeof(float) >= params->rebuild_reuse_min_bytes;
+    const int reuse_old_tri = !accel->tri && old && old->tri && accel->bvh.prim_count &&
+                              old->bvh.prim_count == accel->bvh.prim_count &&
+                              triangles_large(params, accel->bvh.prim_count);
     float *tri = NULL;
     if (accel->tri) {
         /* Restructuring (the same triangles, a new leaf order): regathered
