@@ -162,8 +162,16 @@ static int shared_init(struct render_pass *sh, const struct render_job *job)
     sh->scene.user = sh;
     /* A table without a wide walk walks every object's binary tree. */
     sh->reads_binary = !job->kernels || !job->kernels->closest4;
-    sh->counters = rt_calloc((size_t)rt_pool_threads(job->pool), sizeof(*sh->counters));
-    return sh->counters ? 0 : -1;
+    /* The workers' counters, then each worker's SHADE_EYE_CACHES eye-light
+     * cache entries (shade_context.eye), all empty (inst NULL), in one
+     * allocation that every path frees with the counters. */
+    const size_t threads = (size_t)rt_pool_threads(job->pool);
+    sh->counters = rt_calloc(1, threads * (sizeof(*sh->counters) +
+                                           SHADE_EYE_CACHES * sizeof(struct surface_cache)));
+    if (!sh->counters)
+        return -1;
+    sh->eye_caches = (struct surface_cache *)(void *)(sh->counters + threads);
+    return 0;
 }
 
 static void shared_finish(struct render_pass *sh, struct render_stats *stats)
@@ -1136,6 +1144,9 @@ void render_tile(struct render_pass *pass, uint32_t tile, int worker)
                                pass->see_through,
                                NULL,
                                cache_entry,
+                               pass->eye_caches
+                                   ? &pass->eye_caches[(size_t)worker * SHADE_EYE_CACHES]
+                                   : NULL,
                                NULL,
                                NULL,
                                0};

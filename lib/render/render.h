@@ -131,6 +131,11 @@ struct render_pass {
     const struct render_job *job;
     struct trace_scene scene;
     struct render_worker_counters *counters; /* one per thread of job->pool */
+    /* Worker w's eye-light cache (shade_context.eye) at
+     * w * SHADE_EYE_CACHES, in the counters' allocation: it lives for the
+     * pass, over all the tiles the worker renders, as the instances and
+     * meshes it remembers do not change while a pass renders. */
+    struct surface_cache *eye_caches;
     uint64_t builds;     /* atomic */
     uint64_t build_us;   /* atomic */
     int failed;          /* atomic: an object could not be built */

@@ -1869,15 +1869,19 @@ static inline int lanes_texture_end(const struct scene_texture *tx,
 }
 
 /* The eye light's block paths' cache entry for primitive prim: the
- * tile's SHADE_CACHES entries (one per Whitted depth, which an eye-light
- * frame does not have) direct-mapped by the primitive's low bits, so
- * that the two or three triangles of a block on an edge and the
- * neighbouring blocks' triangles stay in the cache together instead of
- * taking one entry in turns.  An entry holds the values the computation
- * gives (surface_cache), whichever entry a triangle is in, so this
- * changes no value, only what is computed again. */
+ * worker's SHADE_EYE_CACHES entries (shade_context.eye), or without them
+ * the tile's SHADE_CACHES entries (one per Whitted depth, which an
+ * eye-light frame does not have), direct-mapped by the primitive's low
+ * bits, so that the two or three triangles of a block on an edge, the
+ * neighbouring blocks' triangles and the neighbouring tiles' stay in the
+ * cache together instead of taking one entry in turns.  An entry holds
+ * the values the computation gives (surface_cache), whichever entry, tile
+ * or worker computed them, so this changes no value, only what is
+ * computed again. */
 static inline struct surface_cache *eye_cache(const struct shade_context *sc, uint32_t prim)
 {
+    if (sc->eye)
+        return &sc->eye[prim % SHADE_EYE_CACHES];
     return &sc->cache[prim % SHADE_CACHES];
 }
 
