@@ -1937,22 +1937,22 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
         }
         slot[i] = j;
     }
-    /* Every distinct triangle that the eye cache does not hold
-     * (eye_cache): its vertex indices, then its vertices' positions,
-     * normals and coordinates asked for before the loop below reads them
-     * triangle by triangle, so that the misses of the triangles the
-     * frame meets for the first time (perf: about a fifth of this
-     * function's time waiting on the first index and position loads of
-     * each triangle) overlap instead of following one another.  A held
-     * triangle was read a few blocks ago: its lines are near.  Hints
-     * only: no value read changes. */
+    /* Every distinct triangle's vertex indices, then its vertices'
+     * positions, normals and coordinates asked for before the loop below
+     * reads them triangle by triangle: the triangles' misses in the mesh
+     * (perf: about a fifth of this function's time waiting on the first
+     * index and position loads of each triangle) overlap instead of
+     * following one another.  The positions only for a triangle the
+     * eye cache does not hold (eye_cache): a held one's normal and
+     * level-of-detail part do not read them.  Hints only: no value read
+     * changes. */
     for (int j = 0; j < count; j++) {
-        const struct surface_cache *held = eye_cache(sc, prim[j]);
-        if (held->inst == t.inst && held->prim == prim[j])
-            continue;
         const uint32_t *v = &mesh->indices[3 * prim[j]];
+        const struct surface_cache *held = eye_cache(sc, prim[j]);
+        const int cold = held->inst != t.inst || held->prim != prim[j];
         for (int q = 0; q < 3; q++) {
-            _mm_prefetch((const char *)&mesh->positions[3 * v[q]], _MM_HINT_T0);
+            if (cold)
+                _mm_prefetch((const char *)&mesh->positions[3 * v[q]], _MM_HINT_T0);
             if (mesh->has_normals)
                 _mm_prefetch((const char *)&mesh->normals[3 * v[q]], _MM_HINT_T0);
             if (mesh->texcoords)
