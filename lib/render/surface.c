@@ -1937,28 +1937,6 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
         }
         slot[i] = j;
     }
-    /* Every distinct triangle's vertex indices, then its vertices'
-     * positions, normals and coordinates asked for before the loop below
-     * reads them triangle by triangle: the triangles' misses in the mesh
-     * (perf: about a fifth of this function's time waiting on the first
-     * index and position loads of each triangle) overlap instead of
-     * following one another.  The positions only for a triangle the
-     * eye cache does not hold (eye_cache): a held one's normal and
-     * level-of-detail part do not read them.  Hints only: no value read
-     * changes. */
-    for (int j = 0; j < count; j++) {
-        const uint32_t *v = &mesh->indices[3 * prim[j]];
-        const struct surface_cache *held = eye_cache(sc, prim[j]);
-        const int cold = held->inst != t.inst || held->prim != prim[j];
-        for (int q = 0; q < 3; q++) {
-            if (cold)
-                _mm_prefetch((const char *)&mesh->positions[3 * v[q]], _MM_HINT_T0);
-            if (mesh->has_normals)
-                _mm_prefetch((const char *)&mesh->normals[3 * v[q]], _MM_HINT_T0);
-            if (mesh->texcoords)
-                _mm_prefetch((const char *)&mesh->texcoords[2 * v[q]], _MM_HINT_T0);
-        }
-    }
     const struct scene_material *m = &mesh->materials[material];
     const struct scene_material *call = &t.inst->appearance.material;
     const float *emission;
