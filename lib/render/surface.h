@@ -21,8 +21,11 @@
  * the same one, and a hit of another triangle replaces it.  (One entry
  * for all depths held a pixel's deepest hit when the next pixel's
  * reflection came: on a BART robots Whitted frame three fetches in four
- * missed.)  The cached values are the ones the computation gives, bit
- * for bit, so images do not depend on the order pixels are shaded in.
+ * missed.)  The eye light's block paths have SHADE_EYE_CACHES entries of
+ * their own per render thread, kept over the thread's tiles for the
+ * pass (shade_context.eye).  The cached values are the ones the
+ * computation gives, bit for bit, so images do not depend on the order
+ * pixels are shaded in.
  */
 struct scene_texture;
 
