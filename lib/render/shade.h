@@ -49,7 +49,8 @@ struct shade_context {
      * Whitted's hits at depth d (the last one for deeper hits), entry 0
      * for the other shadings' hits one by one, and, when `eye` is NULL,
      * the eye light's block paths (surface_fetch_lanes) entry
-     * prim % SHADE_CACHES: writable through a const context, as they only remember results. */
+     * prim % SHADE_CACHES: writable through a const context, as they
+     * only remember results. */
     struct surface_cache *cache;
     /* NULL, or the worker's SHADE_EYE_CACHES entries for the eye light's
      * block paths (surface_fetch_lanes), entry prim % SHADE_EYE_CACHES,
