@@ -1103,7 +1103,7 @@ WIDE8_WALK(wide8_walk_any_longest_leaf8_stats, walk_wide8_ray_leaf8, WIDE_ANY_LO
 __attribute__((always_inline))
 #endif
 static inline void tri4_ray_init_scalar_lanes(struct tri4_ray *r, const struct ray_lanes *l,
-                                              float tmin)
+                                              __m128 org, float tmin)
 {
     const size_t row = sizeof(((const struct tri4_packet *)NULL)->v[0][0]);
     const unsigned neg = (unsigned)_mm_movemask_ps(_mm_cmplt_ps(l->inv_k, _mm_setzero_ps()));
@@ -1113,10 +1113,22 @@ static inline void tri4_ray_init_scalar_lanes(struct tri4_ray *r, const struct r
     _mm_storeu_ps(r->k_neg_org, _mm_xor_ps(l->org_k, _mm_set1_ps(-0.0f)));
     _mm_storeu_ps(r->k_inv, l->inv_k);
     _mm_storeu_ps(r->k_shear, l->shear);
-    r->k_tmin = tmin;
+    /* k_tmin and node_neg_org[0..2] in one store: tmin, then the origin
+     * (org's lanes 0-2, its lane 3 not kept) with its sign bits flipped,
+     * -org as C's unary minus gives it (the node test's bound + (-org),
+     * walk_wide8_ray). */
+    const __m128 neg_org = _mm_xor_ps(org, _mm_set1_ps(-0.0f));
+    _mm_storeu_ps((float *)(void *)((char *)(void *)r + offsetof(struct tri4_ray, k_tmin)),
+                  _mm_move_ss(_mm_permute_ps(neg_org, _MM_SHUFFLE(2, 1, 0, 3)), _mm_set_ss(tmin)));
     r->neg_x = (int)(neg & 1u);
     r->neg_y = (int)(neg >> 1 & 1u);
 }
+
+/* tri4_ray_init_scalar_lanes' one store over k_tmin and node_neg_org. */
+typedef char tri4_ray_tmin_org_layout[offsetof(struct tri4_ray, node_neg_org) ==
+                                              offsetof(struct tri4_ray, k_tmin) + sizeof(float)
+                                          ? 1
+                                          : -1];
 
 #define WIDE8_WALK1(name, walk, any_hit, stats, leave_early)                                    \
     static int name(const struct bvh4 *wide, const float org[3], const float dir[3],           \
@@ -1138,7 +1150,7 @@ static inline void tri4_ray_init_scalar_lanes(struct tri4_ray *r, const struct r
             return wide8_walk_end(&s, wide8_walk_tmin_other(wide, &s, any_walk, stats),         \
                                   any_hit, stats, counters);                                    \
         if (any_hit)                                                                            \
-            tri4_ray_init_scalar_lanes(&s.r4, &lanes, tmin);                                    \
+            tri4_ray_init_scalar_lanes(&s.r4, &lanes, _mm_loadu_ps(ray.org), tmin);             \
         const int done = walk(wide, &s, any_hit, stats, leave_early, &lanes);                   \
         return wide8_walk_end(&s, done, any_hit, stats, counters);                              \
     }
