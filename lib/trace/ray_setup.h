@@ -132,6 +132,8 @@ struct ray_lanes {
     __m128 org_k; /* org[kx], org[ky], org[kz], 0 */
     __m128 inv_k; /* inv_dir[kx], inv_dir[ky], inv_dir[kz] (= sz), 1 */
     __m128 shear; /* sx, sy, -1, - */
+    __m128i order; /* kx, ky, kz, 3: the permutation's indices (the any-hit
+                    * leaves' row offsets, tri4_ray_init_scalar_lanes) */
     int kx, ky, kz;
 };
 
@@ -192,6 +194,7 @@ static inline void trace_ray_setup_lanes(struct trace_ray *ray, struct ray_lanes
     l->org_k = _mm_permutevar_ps(o, idx);
     l->inv_k = _mm_permutevar_ps(inv, idx);
     l->shear = shear;
+    l->order = idx;
     l->kx = order[0];
     l->ky = order[1];
     l->kz = (int)kz;
