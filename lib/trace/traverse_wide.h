@@ -1169,7 +1169,7 @@ typedef char tri4_ray_tmin_org_layout[offsetof(struct tri4_ray, node_neg_org) ==
             return wide8_walk_end(&s, wide8_walk_tmin_other(wide, &s, any_walk, stats),         \
                                   any_hit, stats, counters);                                    \
         if (any_hit)                                                                            \
-            tri4_ray_init_scalar_lanes(&s.r4, &lanes, _mm_loadu_ps(ray.org), tmin);             \
+            tri4_ray_init_scalar_lanes(&s.r4, &lanes, lanes.org, tmin);                         \
         const int done = walk(wide, &s, any_hit, stats, leave_early, &lanes);                   \
         return wide8_walk_end(&s, done, any_hit, stats, counters);                              \
     }
