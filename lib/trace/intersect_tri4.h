@@ -70,6 +70,16 @@ struct tri4_ray {
     float k_inv[4];     /* inv_dir[kx], inv_dir[ky], sz (= inv_dir[kz]), - */
     float k_shear[4];   /* sx, sy, -, - */
     float k_tmin;
+    /* -org[0], -org[1], -org[2] in axis order: not a leaf constant but
+     * the 8-wide any-hit walk's node test (walk_wide8_ray, from the
+     * set-up's lanes only), broadcast from here after each leaf call
+     * instead of loaded from the ray and negated again (three loads,
+     * three sign flips and three register broadcasts a leaf visit).
+     * Written with k_tmin by one 16-byte store
+     * (tri4_ray_init_scalar_lanes), so it follows k_tmin; it fills what
+     * was the struct's tail padding, so struct tri4_ray and struct
+     * wide_state keep their sizes and every other field its offset. */
+    float node_neg_org[3];
 };
 
 static inline void tri4_ray_init(struct tri4_ray *r, const struct trace_ray *ray)

@@ -129,9 +129,12 @@ static inline void trace_ray_setup_single(struct trace_ray *ray, const float org
  * (org_k, inv_k, the watertight test's order). */
 struct ray_lanes {
     __m128 dir;   /* dir[0], dir[1], dir[2], 1: the octant's signs */
+    __m128 org;   /* org[0], org[1], org[2], 0 */
     __m128 org_k; /* org[kx], org[ky], org[kz], 0 */
     __m128 inv_k; /* inv_dir[kx], inv_dir[ky], inv_dir[kz] (= sz), 1 */
     __m128 shear; /* sx, sy, -1, - */
+    __m128i order; /* kx, ky, kz, 3: the permutation's indices (the any-hit
+                    * leaves' row offsets, tri4_ray_init_scalar_lanes) */
     int kx, ky, kz;
 };
 
@@ -189,9 +192,11 @@ static inline void trace_ray_setup_lanes(struct trace_ray *ray, struct ray_lanes
     const __m128 d_k = _mm_permutevar_ps(d, idx);
     const __m128 shear = _mm_div_ps(_mm_xor_ps(d_k, sign), _mm_permute_ps(d_k, 0xAA));
     l->dir = d;
+    l->org = o;
     l->org_k = _mm_permutevar_ps(o, idx);
     l->inv_k = _mm_permutevar_ps(inv, idx);
     l->shear = shear;
+    l->order = idx;
     l->kx = order[0];
     l->ky = order[1];
     l->kz = (int)kz;

@@ -1103,20 +1103,51 @@ WIDE8_WALK(wide8_walk_any_longest_leaf8_stats, walk_wide8_ray_leaf8, WIDE_ANY_LO
 __attribute__((always_inline))
 #endif
 static inline void tri4_ray_init_scalar_lanes(struct tri4_ray *r, const struct ray_lanes *l,
-                                              float tmin)
+                                              __m128 org, float tmin)
 {
-    const size_t row = sizeof(((const struct tri4_packet *)NULL)->v[0][0]);
-    const unsigned neg = (unsigned)_mm_movemask_ps(_mm_cmplt_ps(l->inv_k, _mm_setzero_ps()));
-    r->off_x = (size_t)l->kx * row;
-    r->off_y = (size_t)l->ky * row;
-    r->off_z = (size_t)l->kz * row;
+    /* off_x, off_y, off_z (kx, ky, kz times a row's 16 bytes, as
+     * size_t) and neg_x, neg_y (inv_dir[kx] < 0, inv_dir[ky] < 0, as 0/1
+     * ints) are 32 consecutive bytes (tri4_ray_init_scalar_layout): built
+     * in one vector from the set-up's lane order and the comparison's
+     * lanes, one store, where the scalar form took about 16 instructions
+     * (loads, shifts, a movemask and its bits, five stores).  The same
+     * values: the order's indices shifted by 4, zero-extended; the
+     * comparison's all-ones lanes shifted right by 31. */
+    const __m128i neg01 = _mm_srli_epi32(
+        _mm_castps_si128(_mm_cmplt_ps(l->inv_k, _mm_setzero_ps())), 31); /* nx, ny, nz, 0 */
+    const __m256i offs = _mm256_cvtepu32_epi64(_mm_slli_epi32(l->order, 4));
+    const __m256i block = _mm256_blend_epi32(
+        offs, _mm256_inserti128_si256(_mm256_setzero_si256(), _mm_slli_si128(neg01, 8), 1), 0xC0);
+    _mm256_storeu_si256((__m256i *)(void *)((char *)(void *)r + offsetof(struct tri4_ray, off_x)),
+                        block);
     _mm_storeu_ps(r->k_neg_org, _mm_xor_ps(l->org_k, _mm_set1_ps(-0.0f)));
     _mm_storeu_ps(r->k_inv, l->inv_k);
     _mm_storeu_ps(r->k_shear, l->shear);
-    r->k_tmin = tmin;
-    r->neg_x = (int)(neg & 1u);
-    r->neg_y = (int)(neg >> 1 & 1u);
+    /* k_tmin and node_neg_org[0..2] in one store: tmin, then the origin
+     * (org's lanes 0-2, its lane 3 not kept) with its sign bits flipped,
+     * -org as C's unary minus gives it (the node test's bound + (-org),
+     * walk_wide8_ray). */
+    const __m128 neg_org = _mm_xor_ps(org, _mm_set1_ps(-0.0f));
+    _mm_storeu_ps((float *)(void *)((char *)(void *)r + offsetof(struct tri4_ray, k_tmin)),
+                  _mm_move_ss(_mm_permute_ps(neg_org, _MM_SHUFFLE(2, 1, 0, 3)), _mm_set_ss(tmin)));
 }
+
+/* tri4_ray_init_scalar_lanes' one 32-byte store over off_x .. neg_y. */
+typedef char tri4_ray_init_scalar_layout
+    [offsetof(struct tri4_ray, off_y) == offsetof(struct tri4_ray, off_x) + 8 &&
+             offsetof(struct tri4_ray, off_z) == offsetof(struct tri4_ray, off_x) + 16 &&
+             offsetof(struct tri4_ray, neg_x) == offsetof(struct tri4_ray, off_x) + 24 &&
+             offsetof(struct tri4_ray, neg_y) == offsetof(struct tri4_ray, off_x) + 28 &&
+             sizeof(size_t) == 8 && sizeof(int) == 4 &&
+             sizeof(((const struct tri4_packet *)NULL)->v[0][0]) == 16
+         ? 1
+         : -1];
+
+/* tri4_ray_init_scalar_lanes' one store over k_tmin and node_neg_org. */
+typedef char tri4_ray_tmin_org_layout[offsetof(struct tri4_ray, node_neg_org) ==
+                                              offsetof(struct tri4_ray, k_tmin) + sizeof(float)
+                                          ? 1
+                                          : -1];
 
 #define WIDE8_WALK1(name, walk, any_hit, stats, leave_early)                                    \
     static int name(const struct bvh4 *wide, const float org[3], const float dir[3],           \
@@ -1138,7 +1169,7 @@ static inline void tri4_ray_init_scalar_lanes(struct tri4_ray *r, const struct r
             return wide8_walk_end(&s, wide8_walk_tmin_other(wide, &s, any_walk, stats),         \
                                   any_hit, stats, counters);                                    \
         if (any_hit)                                                                            \
-            tri4_ray_init_scalar_lanes(&s.r4, &lanes, tmin);                                    \
+            tri4_ray_init_scalar_lanes(&s.r4, &lanes, lanes.org, tmin);                         \
         const int done = walk(wide, &s, any_hit, stats, leave_early, &lanes);                   \
         return wide8_walk_end(&s, done, any_hit, stats, counters);                              \
     }

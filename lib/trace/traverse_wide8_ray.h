@@ -122,9 +122,27 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
              * (IEEE 754's x - y is x + (-y)), and the addition takes the
              * bound as its memory operand (the subtraction cannot, the bound
              * being its minuend): six loads fewer per node. */
-            const __m256 neg_org_x = _mm256_set1_ps(-rv->org[0]);
-            const __m256 neg_org_y = _mm256_set1_ps(-rv->org[1]);
-            const __m256 neg_org_z = _mm256_set1_ps(-rv->org[2]);
+            /* An any-hit walk from the set-up's lanes (WIDE8_WALK1) reads
+             * -org as the set-up stored it negated (tri4_ray's
+             * node_neg_org: the same floats, -org by the sign bit as
+             * C's unary minus): a broadcast from memory each, where the
+             * ray's org took a load, a sign flip and a register
+             * broadcast.  Its pointer through an empty asm as rv's, so
+             * that GCC loads the floats again after each leaf call
+             * instead of keeping the vectors across it. */
+            const float *no = NULL;
+            if (any_hit && lanes) {
+                no = s->r4.node_neg_org;
+#if defined(__GNUC__)
+                __asm__("" : "+r"(no));
+#endif
+            }
+            const __m256 neg_org_x =
+                any_hit && lanes ? _mm256_broadcast_ss(&no[0]) : _mm256_set1_ps(-rv->org[0]);
+            const __m256 neg_org_y =
+                any_hit && lanes ? _mm256_broadcast_ss(&no[1]) : _mm256_set1_ps(-rv->org[1]);
+            const __m256 neg_org_z =
+                any_hit && lanes ? _mm256_broadcast_ss(&no[2]) : _mm256_set1_ps(-rv->org[2]);
             const __m256 inv_x = _mm256_set1_ps(rv->inv_dir[0]);
             const __m256 inv_y = _mm256_set1_ps(rv->inv_dir[1]);
             const __m256 inv_z = _mm256_set1_ps(rv->inv_dir[2]);
