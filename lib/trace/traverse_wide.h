@@ -248,7 +248,13 @@ static inline int wide_packet_test(struct wide_state *s, const struct tri4_packe
         if (behind_out && lanes.t_hi[l] < s->ray->tmin && lanes.t_lo[l] < s->ray->tmin)
             continue;
         float t, u, w;
-        limit = !any_hit && s->found ? isect_next_up(s->best) : s->best;
+        /* limit is the limit of the moment (walk_leaf's rule: s->found ?
+         * next_up(s->best) : s->best), kept up to date here rather than
+         * recomputed from the state each lane: s->best and s->found change
+         * during the leaf only in wide_take_closest, which sets them to t
+         * and 1 when it takes the hit (an any-hit leaf returns at its
+         * first).  The same limit each lane; GCC reloaded s->best and
+         * s->found each lane (the hit's stores may alias them). */
         if (!tri4_lane_test(s->ray, ray_double ? wide_ray_doubles(s) : NULL, p, &lanes, l, any_hit,
                             limit, &t, &u, &w))
             continue;
@@ -256,7 +262,9 @@ static inline int wide_packet_test(struct wide_state *s, const struct tri4_packe
             s->found = 1;
             return 1;
         }
-        wide_take_closest(s, p->prim[l], t, u, w);
+        /* The limit after a take is needed only by a lane still to come. */
+        if (wide_take_closest(s, p->prim[l], t, u, w) && mask)
+            limit = isect_next_up(t);
     }
     return 0;
 }
@@ -1077,7 +1085,7 @@ static inline int wide_leaf8_test(struct wide_state *s, const struct tri4_packet
         /* behind_out: the lanes wholly before tmin are out of the mask
          * already (tri4_pair_filter_lanes). */
         float t, u, w;
-        limit = !any_hit && s->found ? isect_next_up(s->best) : s->best;
+        /* limit kept up to date as in wide_packet_test. */
         if (!tri4_lane_test(s->ray, ray_double ? wide_ray_doubles(s) : NULL, q, &lanes[k], l & 3u,
                             any_hit, limit, &t, &u, &w))
             continue;
@@ -1085,7 +1093,8 @@ static inline int wide_leaf8_test(struct wide_state *s, const struct tri4_packet
             s->found = 1;
             return 1;
         }
-        wide_take_closest(s, q->prim[l & 3u], t, u, w);
+        if (wide_take_closest(s, q->prim[l & 3u], t, u, w) && mask)
+            limit = isect_next_up(t);
     }
     return 0;
 }
