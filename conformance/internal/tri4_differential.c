@@ -99,6 +99,11 @@ static struct leaf_answer packet_leaf(const struct trace_ray *ray, const struct 
     memset(&a, 0, sizeof(a));
     struct tri4_ray r4;
     tri4_ray_init(&r4, ray);
+    /* The closest-hit finish with the ray's doubles set once, as the
+     * single-ray closest-hit leaves take them; the any-hit finish
+     * converts them itself. */
+    double ray_d[8];
+    tri4_ray_init_double(ray_d, ray);
     float best = t_max;
     struct tri4_lanes lanes;
     memset(&lanes, 0, sizeof(lanes)); /* written only for kept lanes */
@@ -127,7 +132,8 @@ static struct leaf_answer packet_leaf(const struct trace_ray *ray, const struct 
         float limit = a.found ? isect_next_up(best) : best;
         /* The filter's floats, the rest of isect_triangle on them (or,
          * any hit, its answer without t). */
-        if (!tri4_lane_test(ray, p, &lanes, l, any_hit, limit, &t, &u, &w))
+        if (!tri4_lane_test(ray, any_hit ? NULL : ray_d, p, &lanes, l, any_hit, limit, &t,
+                            &u, &w))
             continue;
         if (any_hit) {
             a.found = 1;

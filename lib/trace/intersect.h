@@ -400,10 +400,12 @@ static inline int isect_sliver_edges(double e1x, double e1y, double e1z, double 
  * v2 - v0 (starting at v0) or e3 = e2 - e1 (starting at v1), with their
  * squared lengths l1, l2, l3; the first of them that is >= the others.
  * NaN when the ray is parallel to that edge.  Apart from the finish
- * because only slivers reach it. */
-static inline double isect_sliver_t(const struct trace_ray *ray, const float v0[3],
-                                    const float v1[3], const double e1[3], const double e2[3],
-                                    const double e3[3], double l1, double l2, double l3)
+ * because only slivers reach it.  ray_d as for
+ * isect_triangle_finish_impl. */
+static inline double isect_sliver_t(const struct trace_ray *ray, const double *ray_d,
+                                    const float v0[3], const float v1[3], const double e1[3],
+                                    const double e2[3], const double e3[3], double l1, double l2,
+                                    double l3)
 {
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
@@ -411,12 +413,15 @@ static inline double isect_sliver_t(const struct trace_ray *ray, const float v0[
     const int longest = l1 >= l2 && l1 >= l3 ? 1 : (l2 >= l3 ? 2 : 3);
     const double *e = longest == 1 ? e1 : (longest == 2 ? e2 : e3);
     const double ex = e[0], ey = e[1], ez = e[2];
-    const double dx = ray->dir[0];
-    const double dy = ray->dir[1];
-    const double dz = ray->dir[2];
-    const double wx = (double)(longest == 3 ? v1[0] : v0[0]) - ray->org[0];
-    const double wy = (double)(longest == 3 ? v1[1] : v0[1]) - ray->org[1];
-    const double wz = (double)(longest == 3 ? v1[2] : v0[2]) - ray->org[2];
+    const double dx = ray_d ? ray_d[4] : (double)ray->dir[0];
+    const double dy = ray_d ? ray_d[5] : (double)ray->dir[1];
+    const double dz = ray_d ? ray_d[6] : (double)ray->dir[2];
+    const double wx =
+        (double)(longest == 3 ? v1[0] : v0[0]) - (ray_d ? ray_d[0] : (double)ray->org[0]);
+    const double wy =
+        (double)(longest == 3 ? v1[1] : v0[1]) - (ray_d ? ray_d[1] : (double)ray->org[1]);
+    const double wz =
+        (double)(longest == 3 ? v1[2] : v0[2]) - (ray_d ? ray_d[2] : (double)ray->org[2]);
     const double dd = dx * dx + dy * dy + dz * dz;
     const double de = dx * ex + dy * ey + dz * ez;
     const double ee = ex * ex + ey * ey + ez * ez;
@@ -438,12 +443,16 @@ static inline double isect_sliver_t(const struct trace_ray *ray, const float v0[
  * constant where it is inlined): the caller knows the triangle is not
  * isect_triangle_zero_area (a packet lane the filter kept: such a lane
  * is marked NaN when the packet is filled), so the zero-area test, which
- * would pass, is left out; every other step is the same.
+ * would pass, is left out; every other step is the same.  ray_d: NULL,
+ * or the ray's origin and direction already in double (org[0..2] at
+ * 0..2, dir[0..2] at 4..6: tri4_ray_init_double), so that a ray finishing
+ * several candidates converts them once.
  */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline int isect_triangle_finish_impl(const struct trace_ray *ray, float x0, float y0,
+static inline int isect_triangle_finish_impl(const struct trace_ray *ray,
+                                             const double *ray_d, float x0, float y0,
                                              float z0, float x1, float y1, float z1, float x2,
                                              float y2, float z2, float U, float V, float W,
                                              float det, float Az, float Bz, float Cz,
@@ -501,6 +510,12 @@ static inline int isect_triangle_finish_impl(const struct trace_ray *ray, float 
      * then clamped into the triangle's box (isect_clamp_to_box). */
     float t;
     {
+        /* The ray's origin and direction in double: ray_d's when the
+         * caller has them (the single-ray closest-hit leaves convert them
+         * once a ray, tri4_ray_init_double), else converted here.  A float
+         * converts to double exactly, so either way they are the same
+         * doubles; only where the conversions happen differs.  With ray_d
+         * NULL (a constant where this is inlined) the code is as before. */
         const double dx = ray->dir[0];
         const double dy = ray->dir[1];
         const double dz = ray->dir[2];
@@ -528,10 +543,17 @@ static inline int isect_triangle_finish_impl(const struct trace_ray *ray, float 
              * its plane.  num is finite (finite factors, far below the
              * double range) and den finite, so num / den is never NaN
              * when den != 0: the paper's t is needed only when den == 0. */
-            const double den = nx * dx + ny * dy + nz * dz;
-            const double num = nx * ((double)v0[0] - ray->org[0]) +
-                               ny * ((double)v0[1] - ray->org[1]) +
-                               nz * ((double)v0[2] - ray->org[2]);
+            /* ray_d's direction read here, at its use, not above with
+             * dx, dy, dz (unused then, and dropped): read above, GCC
+             * loaded the three doubles early and kept them on the stack
+             * through the sliver test. */
+            const double den = ray_d ? nx * ray_d[4] + ny * ray_d[5] + nz * ray_d[6]
+                                     : nx * dx + ny * dy + nz * dz;
+            const double ox = ray_d ? ray_d[0] : (double)ray->org[0];
+            const double oy = ray_d ? ray_d[1] : (double)ray->org[1];
+            const double oz = ray_d ? ray_d[2] : (double)ray->org[2];
+            const double num = nx * ((double)v0[0] - ox) + ny * ((double)v0[1] - oy) +
+                               nz * ((double)v0[2] - oz);
             if (den != 0.0)
                 t = (float)(num / den);
             else
@@ -539,7 +561,7 @@ static inline int isect_triangle_finish_impl(const struct trace_ray *ray, float 
         } else {
             const double e1[3] = {e1x, e1y, e1z};
             const double e2[3] = {e2x, e2y, e2z};
-            const double tp = isect_sliver_t(ray, v0, v1, e1, e2, e3, l1, l2, l3);
+            const double tp = isect_sliver_t(ray, ray_d, v0, v1, e1, e2, e3, l1, l2, l3);
             t = !isnan(tp) ? (float)tp : (U * Az + V * Bz + W * Cz) * rcp_det;
         }
     }
@@ -560,7 +582,8 @@ static inline int isect_triangle_finish9(const struct trace_ray *ray, float x0, 
                                          float t_lo, float t_hi, float t_max, float *t_out,
                                          float *u_out, float *v_out)
 {
-    return isect_triangle_finish_impl(ray, x0, y0, z0, x1, y1, z1, x2, y2, z2, U, V, W, det, Az,
+    return isect_triangle_finish_impl(ray, NULL, x0, y0, z0, x1, y1, z1, x2, y2, z2, U, V, W, det,
+                                      Az,
                                       Bz, Cz, size, t_lo, t_hi, t_max, 0, t_out, u_out, v_out);
 }
 
@@ -610,7 +633,8 @@ static inline int isect_triangle_occludes_impl(const struct trace_ray *ray, floa
     if (isect_occludes_short(ray, t_lo, t_hi, t_max))
         return area_known || !isect_triangle_zero_area(x0, y0, z0, x1, y1, z1, x2, y2, z2);
     float t, u, v;
-    return isect_triangle_finish_impl(ray, x0, y0, z0, x1, y1, z1, x2, y2, z2, U, V, W, det, Az,
+    return isect_triangle_finish_impl(ray, NULL, x0, y0, z0, x1, y1, z1, x2, y2, z2, U, V, W, det,
+                                      Az,
                                       Bz, Cz, size, t_lo, t_hi, t_max, area_known, &t, &u, &v);
 }
 

@@ -40,6 +40,7 @@
 #define RT_TRACE_INTERSECT_TRI4_H
 
 #include <immintrin.h>
+#include <stddef.h>
 
 #include "trace/bvh4_layout.h"
 #include "trace/intersect.h"
@@ -99,6 +100,39 @@ static inline void tri4_ray_init(struct tri4_ray *r, const struct trace_ray *ray
     r->tmin = _mm_set1_ps(ray->tmin);
     r->neg_x = ray->inv_dir[ray->kx] < 0.0f;
     r->neg_y = ray->inv_dir[ray->ky] < 0.0f;
+}
+
+/* The ray's origin (d[0..2]) and direction (d[4..6]) converted to
+ * double for the finish (isect_triangle_finish_impl's ray_d), each
+ * coordinate as the finish converts it (a float converts to double
+ * exactly: the same doubles, converted once a ray instead of six
+ * conversions a finish).  Four floats at a time from struct trace_ray,
+ * whose org and dir are followed by more floats (dir, inv_dir: asserted
+ * below): d[3] and d[7] (dir[0], inv_dir[0]) are converted too and never
+ * read. */
+typedef char tri4_ray_double_loads
+    [offsetof(struct trace_ray, dir) == offsetof(struct trace_ray, org) + 3 * sizeof(float) &&
+             offsetof(struct trace_ray, inv_dir) ==
+                 offsetof(struct trace_ray, dir) + 3 * sizeof(float)
+         ? 1
+         : -1];
+static inline void tri4_ray_init_double(double d[8], const struct trace_ray *ray)
+{
+    const float *org = (const float *)(const void *)((const char *)ray +
+                                                     offsetof(struct trace_ray, org));
+    const float *dir = (const float *)(const void *)((const char *)ray +
+                                                     offsetof(struct trace_ray, dir));
+#if defined(__AVX__)
+    _mm256_storeu_pd(d, _mm256_cvtps_pd(_mm_loadu_ps(org)));
+    _mm256_storeu_pd(d + 4, _mm256_cvtps_pd(_mm_loadu_ps(dir)));
+#else
+    const __m128 o4 = _mm_loadu_ps(org);
+    const __m128 d4 = _mm_loadu_ps(dir);
+    _mm_storeu_pd(d, _mm_cvtps_pd(o4));
+    _mm_storeu_pd(d + 2, _mm_cvtps_pd(_mm_movehl_ps(o4, o4)));
+    _mm_storeu_pd(d + 4, _mm_cvtps_pd(d4));
+    _mm_storeu_pd(d + 6, _mm_cvtps_pd(_mm_movehl_ps(d4, d4)));
+#endif
 }
 
 /* tri4_ray_init's constants in the scalar form only (struct tri4_ray's
@@ -874,11 +908,13 @@ static inline float tri4_lane_sheared(const struct trace_ray *ray, const struct 
  * t_max: the limit may have shrunk since the filter ran) and then
  * isect_triangle_finish9, or isect_triangle_occludes9 for any_hit.  Each
  * step is isect_triangle's on the same floats, so the answer is its
- * answer bit for bit.
+ * answer bit for bit.  ray_d: NULL, or the ray's origin and direction in
+ * double (tri4_ray_init_double) for the finish.
  */
-static inline int tri4_lane_test(const struct trace_ray *ray, const struct tri4_packet *p,
-                                 const struct tri4_lanes *lanes, unsigned l, int any_hit,
-                                 float t_max, float *t, float *u, float *w)
+static inline int tri4_lane_test(const struct trace_ray *ray, const double *ray_d,
+                                 const struct tri4_packet *p, const struct tri4_lanes *lanes,
+                                 unsigned l, int any_hit, float t_max, float *t, float *u,
+                                 float *w)
 {
     float U = lanes->U[l], V = lanes->V[l], W = lanes->W[l], det = lanes->det[l];
     /* The any-hit filter leaves size and the sheared x, y to this lane
@@ -937,11 +973,11 @@ static inline int tri4_lane_test(const struct trace_ray *ray, const struct tri4_
             size = tri4_lane_sheared(ray, p, l, sheared);
         float tt, uu, ww;
         return isect_triangle_finish_impl(
-            ray, p->v[0][0][l], p->v[0][1][l], p->v[0][2][l], p->v[1][0][l], p->v[1][1][l],
+            ray, ray_d, p->v[0][0][l], p->v[0][1][l], p->v[0][2][l], p->v[1][0][l], p->v[1][1][l],
             p->v[1][2][l], p->v[2][0][l], p->v[2][1][l], p->v[2][2][l], U, V, W, det, Az, Bz,
             Cz, size, lanes->t_lo[l], lanes->t_hi[l], t_max, 1, &tt, &uu, &ww);
     }
-    return isect_triangle_finish_impl(ray, p->v[0][0][l], p->v[0][1][l], p->v[0][2][l],
+    return isect_triangle_finish_impl(ray, ray_d, p->v[0][0][l], p->v[0][1][l], p->v[0][2][l],
                                       p->v[1][0][l], p->v[1][1][l], p->v[1][2][l],
                                       p->v[2][0][l], p->v[2][1][l], p->v[2][2][l], U, V, W, det,
                                       Az, Bz, Cz, size, lanes->t_lo[l],

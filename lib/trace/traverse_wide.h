@@ -79,6 +79,26 @@ struct wide_state {
     uint64_t triangle_tests;
 };
 
+/* The state of a whole single-ray 8-wide walk (WIDE8_WALK, WIDE8_WALK1,
+ * TRACE_WIDE_LEAF8): wide_state and the ray's origin and direction in
+ * double (tri4_ray_init_double), which walk_wide8_ray sets at a
+ * closest-hit ray's first leaf and its closest-hit leaves
+ * (WIDE8_LEAF_TEST's ray_double) give the finish.  Apart from wide_state,
+ * not in it: the packet walks keep eight wide_states (packet_wide.h),
+ * and their layout and code stay as they were. */
+struct wide_ray_state {
+    struct wide_state s; /* first: the leaves reach d_org_dir from s */
+    double d_org_dir[8];
+};
+
+/* The doubles of the wide_ray_state whose s is *s: only for a state
+ * that is one (C99 6.7.2.1: a pointer to a structure's first member,
+ * converted, points to the structure). */
+static inline double *wide_ray_doubles(struct wide_state *s)
+{
+    return ((struct wide_ray_state *)(void *)s)->d_org_dir;
+}
+
 /* walk_wide's state for a ray: no hit yet, the limits of t_max. */
 #if defined(__GNUC__)
 __attribute__((always_inline))
@@ -169,7 +189,8 @@ static unsigned wide_near_fallback(const struct wide_state *s, const struct tri4
 __attribute__((always_inline))
 #endif
 static inline int wide_packet_test(struct wide_state *s, const struct tri4_packet *p, uint32_t n,
-                                   int any_hit, int early_out, int depth_out, int behind_out)
+                                   int any_hit, int early_out, int depth_out, int behind_out,
+                                   int ray_double)
 {
     /* An any-hit walk returns at its first hit: found stays 0. */
     float limit = !any_hit && s->found ? isect_next_up(s->best) : s->best;
@@ -227,14 +248,23 @@ static inline int wide_packet_test(struct wide_state *s, const struct tri4_packe
         if (behind_out && lanes.t_hi[l] < s->ray->tmin && lanes.t_lo[l] < s->ray->tmin)
             continue;
         float t, u, w;
-        limit = !any_hit && s->found ? isect_next_up(s->best) : s->best;
-        if (!tri4_lane_test(s->ray, p, &lanes, l, any_hit, limit, &t, &u, &w))
+        /* limit is the limit of the moment (walk_leaf's rule: s->found ?
+         * next_up(s->best) : s->best), kept up to date here rather than
+         * recomputed from the state each lane: s->best and s->found change
+         * during the leaf only in wide_take_closest, which sets them to t
+         * and 1 when it takes the hit (an any-hit leaf returns at its
+         * first).  The same limit each lane; GCC reloaded s->best and
+         * s->found each lane (the hit's stores may alias them). */
+        if (!tri4_lane_test(s->ray, ray_double ? wide_ray_doubles(s) : NULL, p, &lanes, l, any_hit,
+                            limit, &t, &u, &w))
             continue;
         if (any_hit) {
             s->found = 1;
             return 1;
         }
-        wide_take_closest(s, p->prim[l], t, u, w);
+        /* The limit after a take is needed only by a lane still to come. */
+        if (wide_take_closest(s, p->prim[l], t, u, w) && mask)
+            limit = isect_next_up(t);
     }
     return 0;
 }
@@ -247,7 +277,7 @@ __attribute__((always_inline))
 static inline int wide_packet_body(struct wide_state *s, const struct tri4_packet *p, uint32_t n,
                                    int any_hit, int behind_out)
 {
-    return wide_packet_test(s, p, n, any_hit, 1, 0, behind_out);
+    return wide_packet_test(s, p, n, any_hit, 1, 0, behind_out, 0);
 }
 
 /* A leaf lane: count triangles in packets from `first` (wide_packet_body
@@ -872,16 +902,21 @@ static inline int walk_wide8(const struct bvh4 *wide, struct wide_state *s, uint
  * before tmin (wide_packet_test says why it is exact); only the
  * single-ray closest-hit leaves take it.  The any-hit leaves refuse
  * those lanes with depth_out (wide_packet_test's near lanes). */
-#define WIDE8_LEAF_TEST(name, test, any_hit, early_out, depth_out, behind_out)                   \
+/* ray_double: s is a struct wide_ray_state's, and the finish takes the
+ * ray's origin and direction in double from its d_org_dir (set at a
+ * ray's first leaf: walk_wide8_ray, TRACE_WIDE_LEAF8) instead of
+ * converting them each finish: the same doubles (intersect.h,
+ * isect_triangle_finish_impl). */
+#define WIDE8_LEAF_TEST(name, test, any_hit, early_out, depth_out, behind_out, ray_double)       \
     static int name(struct wide_state *s, const struct tri4_packet *p, uint32_t n) WIDE_NOINLINE; \
     static int name(struct wide_state *s, const struct tri4_packet *p, uint32_t n)                \
     {                                                                                              \
-        return test(s, p, n, any_hit, early_out, depth_out, behind_out);                           \
+        return test(s, p, n, any_hit, early_out, depth_out, behind_out, ray_double);               \
     }
 
-WIDE8_LEAF_TEST(wide8_packet_closest, wide_packet_test, 0, 1, 0, 1)
-WIDE8_LEAF_TEST(wide8_packet_full, wide_packet_test, 0, 0, 0, 1)
-WIDE8_LEAF_TEST(wide8_packet_any, wide_packet_test, 1, 1, 1, 0)
+WIDE8_LEAF_TEST(wide8_packet_closest, wide_packet_test, 0, 1, 0, 1, 1)
+WIDE8_LEAF_TEST(wide8_packet_full, wide_packet_test, 0, 0, 0, 1, 1)
+WIDE8_LEAF_TEST(wide8_packet_any, wide_packet_test, 1, 1, 1, 0, 0)
 
 /* The byte offsets of the near x, y, z and far x, y, z rows of a
  * bvh8_node's bounds per ray octant (bit k: dir[k] negative, whose near
@@ -939,23 +974,24 @@ static inline int wide8_walk_end(const struct wide_state *s, int done, int any_h
 /* The whole single-ray trace over an 8-wide layout, the state set up
  * here: the entry (walk_wide) is then a dispatch and a jump. */
 #define WIDE8_WALK(name, walk, any_hit, stats, leave_early)                                     \
-    static int name(const struct bvh4 *wide, const struct trace_ray *ray, float t_max,         \
+    static int name(const struct bvh4 *wide, const struct trace_ray *ray, float t_max,          \
                     struct trace_hit *hit, struct trace_counters *counters) WIDE_NOINLINE;      \
-    static int name(const struct bvh4 *wide, const struct trace_ray *ray, float t_max,         \
+    static int name(const struct bvh4 *wide, const struct trace_ray *ray, float t_max,          \
                     struct trace_hit *hit, struct trace_counters *counters)                     \
     {                                                                                           \
-        struct wide_state s;                                                                    \
+        struct wide_ray_state rs;                                                               \
+        struct wide_state *const s = &rs.s;                                                     \
         /* 1 for either any-hit copy (WIDE_ANY_LONGEST): the state's and the                    \
          * float walk's flag. */                                                                \
         const int any_walk = (any_hit) != 0;                                                    \
-        wide_state_init1(&s, ray, t_max, any_walk, stats, hit);                                 \
+        wide_state_init1(s, ray, t_max, any_walk, stats, hit);                                  \
         if (!(ray->tmin >= 0.0f))                                                               \
-            return wide8_walk_end(&s, wide8_walk_tmin_other(wide, &s, any_walk, stats),         \
+            return wide8_walk_end(s, wide8_walk_tmin_other(wide, s, any_walk, stats),           \
                                   any_hit, stats, counters);                                    \
         if (any_hit)                                                                            \
-            tri4_ray_init_scalar(&s.r4, ray);                                                   \
-        const int done = walk(wide, &s, any_hit, stats, leave_early, NULL);                     \
-        return wide8_walk_end(&s, done, any_hit, stats, counters);                              \
+            tri4_ray_init_scalar(&s->r4, ray);                                                  \
+        const int done = walk(wide, s, any_hit, stats, leave_early, NULL);                      \
+        return wide8_walk_end(s, done, any_hit, stats, counters);                               \
     }
 
 /* The closest-hit walk in two copies: with the packet filter's early
@@ -1007,7 +1043,8 @@ static unsigned wide_near_refused(const struct wide_state *s, const struct tri4_
 __attribute__((always_inline))
 #endif
 static inline int wide_leaf8_test(struct wide_state *s, const struct tri4_packet *p, uint32_t n,
-                                  int any_hit, int early_out, int depth_out, int behind_out)
+                                  int any_hit, int early_out, int depth_out, int behind_out,
+                                  int ray_double)
 {
     float limit = !any_hit && s->found ? isect_next_up(s->best) : s->best;
     struct tri4_lanes lanes[2];
@@ -1048,21 +1085,23 @@ static inline int wide_leaf8_test(struct wide_state *s, const struct tri4_packet
         /* behind_out: the lanes wholly before tmin are out of the mask
          * already (tri4_pair_filter_lanes). */
         float t, u, w;
-        limit = !any_hit && s->found ? isect_next_up(s->best) : s->best;
-        if (!tri4_lane_test(s->ray, q, &lanes[k], l & 3u, any_hit, limit, &t, &u, &w))
+        /* limit kept up to date as in wide_packet_test. */
+        if (!tri4_lane_test(s->ray, ray_double ? wide_ray_doubles(s) : NULL, q, &lanes[k], l & 3u,
+                            any_hit, limit, &t, &u, &w))
             continue;
         if (any_hit) {
             s->found = 1;
             return 1;
         }
-        wide_take_closest(s, q->prim[l & 3u], t, u, w);
+        if (wide_take_closest(s, q->prim[l & 3u], t, u, w) && mask)
+            limit = isect_next_up(t);
     }
     return 0;
 }
 
-WIDE8_LEAF_TEST(wide8_leaf8_closest, wide_leaf8_test, 0, 1, 0, 1)
-WIDE8_LEAF_TEST(wide8_leaf8_full, wide_leaf8_test, 0, 0, 0, 1)
-WIDE8_LEAF_TEST(wide8_leaf8_any, wide_leaf8_test, 1, 1, 1, 0)
+WIDE8_LEAF_TEST(wide8_leaf8_closest, wide_leaf8_test, 0, 1, 0, 1, 1)
+WIDE8_LEAF_TEST(wide8_leaf8_full, wide_leaf8_test, 0, 0, 0, 1, 1)
+WIDE8_LEAF_TEST(wide8_leaf8_any, wide_leaf8_test, 1, 1, 1, 0, 0)
 
 #define WIDE8_RAY walk_wide8_ray_leaf8
 #define WIDE8_RAY_LEAF8 1
@@ -1150,28 +1189,29 @@ typedef char tri4_ray_tmin_org_layout[offsetof(struct tri4_ray, node_neg_org) ==
                                           : -1];
 
 #define WIDE8_WALK1(name, walk, any_hit, stats, leave_early)                                    \
-    static int name(const struct bvh4 *wide, const float org[3], const float dir[3],           \
+    static int name(const struct bvh4 *wide, const float org[3], const float dir[3],            \
                     float tmin, float t_max, struct trace_hit *hit,                             \
                     struct trace_counters *counters) WIDE_NOINLINE;                             \
-    static int name(const struct bvh4 *wide, const float org[3], const float dir[3],           \
+    static int name(const struct bvh4 *wide, const float org[3], const float dir[3],            \
                     float tmin, float t_max, struct trace_hit *hit,                             \
                     struct trace_counters *counters)                                            \
     {                                                                                           \
         struct trace_ray ray;                                                                   \
         struct ray_lanes lanes;                                                                 \
         trace_ray_setup_lanes(&ray, &lanes, org, dir, tmin);                                    \
-        struct wide_state s;                                                                    \
+        struct wide_ray_state rs;                                                               \
+        struct wide_state *const s = &rs.s;                                                     \
         /* 1 for either any-hit copy (WIDE_ANY_LONGEST): the state's and the                    \
          * float walk's flag. */                                                                \
         const int any_walk = (any_hit) != 0;                                                    \
-        wide_state_init1(&s, &ray, t_max, any_walk, stats, hit);                                \
+        wide_state_init1(s, &ray, t_max, any_walk, stats, hit);                                 \
         if (!(tmin >= 0.0f))                                                                    \
-            return wide8_walk_end(&s, wide8_walk_tmin_other(wide, &s, any_walk, stats),         \
+            return wide8_walk_end(s, wide8_walk_tmin_other(wide, s, any_walk, stats),           \
                                   any_hit, stats, counters);                                    \
         if (any_hit)                                                                            \
-            tri4_ray_init_scalar_lanes(&s.r4, &lanes, lanes.org, tmin);                         \
-        const int done = walk(wide, &s, any_hit, stats, leave_early, &lanes);                   \
-        return wide8_walk_end(&s, done, any_hit, stats, counters);                              \
+            tri4_ray_init_scalar_lanes(&s->r4, &lanes, lanes.org, tmin);                        \
+        const int done = walk(wide, s, any_hit, stats, leave_early, &lanes);                    \
+        return wide8_walk_end(s, done, any_hit, stats, counters);                               \
     }
 
 WIDE8_WALK1(wide8_walk1_closest_leaf8, walk_wide8_ray_leaf8, 0, 0, 0)
@@ -1222,39 +1262,42 @@ static int TRACE_WIDE_LEAF8(const struct trace_ray *ray, const struct tri4_packe
                      float t_max, int any_hit, int early_out, int eight, int found,
                      struct trace_hit *hit)
 {
-    struct wide_state s;
-    wide_state_init(&s, ray, t_max, any_hit, hit);
+    struct wide_ray_state rs;
+    struct wide_state *const s = &rs.s;
+    wide_state_init(s, ray, t_max, any_hit, hit);
     if (!any_hit && found) {
-        s.found = 1;
-        s.best = hit->t;
-        s.box_limit = hit->t * ISECT_BOX_FAR_SCALE;
+        s->found = 1;
+        s->best = hit->t;
+        s->box_limit = hit->t * ISECT_BOX_FAR_SCALE;
     }
     /* The constants' form each walk sets: the any-hit leaves read only
      * the scalar form (TRI4_CONST), the closest-hit leaves the vectors. */
-    if (any_hit)
-        tri4_ray_init_scalar(&s.r4, ray);
-    else
-        tri4_ray_init(&s.r4, ray);
+    if (any_hit) {
+        tri4_ray_init_scalar(&s->r4, ray);
+    } else {
+        tri4_ray_init(&s->r4, ray);
+        tri4_ray_init_double(rs.d_org_dir, ray);
+    }
     int stop = 0;
     if (eight) {
         if (any_hit)
-            stop = wide8_leaf8_any(&s, p, n);
+            stop = wide8_leaf8_any(s, p, n);
         else if (early_out)
-            stop = wide8_leaf8_closest(&s, p, n);
+            stop = wide8_leaf8_closest(s, p, n);
         else
-            stop = wide8_leaf8_full(&s, p, n);
+            stop = wide8_leaf8_full(s, p, n);
     } else {
         for (uint32_t j = 0; j < n && !stop; j += 4) {
             const uint32_t m = n - j < 4 ? n - j : 4;
             if (any_hit)
-                stop = wide8_packet_any(&s, p + j / 4, m);
+                stop = wide8_packet_any(s, p + j / 4, m);
             else if (early_out)
-                stop = wide8_packet_closest(&s, p + j / 4, m);
+                stop = wide8_packet_closest(s, p + j / 4, m);
             else
-                stop = wide8_packet_full(&s, p + j / 4, m);
+                stop = wide8_packet_full(s, p + j / 4, m);
         }
     }
-    return any_hit ? stop : s.found;
+    return any_hit ? stop : s->found;
 }
 #endif /* TRACE_WIDE_PACKET_PIECES */
 #endif

@@ -295,6 +295,9 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
              * instructions than it saved (callgrind, gears). */
             if (!any_hit && !r4_ready) {
                 tri4_ray_init(&s->r4, ray);
+                /* The finish's doubles (WIDE8_LEAF_TEST's ray_double): s is
+                 * a struct wide_ray_state's (WIDE8_WALK, WIDE8_WALK1). */
+                tri4_ray_init_double(wide_ray_doubles(s), ray);
                 r4_ready = 1;
             }
             if (stats)
