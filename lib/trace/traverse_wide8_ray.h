@@ -70,8 +70,8 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
     uint64_t tri_tests = 0;
     /* A closest-hit walk's values that its node test does not read, in
      * memory (volatile: a load where they are used), not in registers:
-     * the flag of the leaf constants (read at a leaf), the octant (read
-     * at a push of two or more children, for the order) and the packets'
+     * the flag of the leaf constants (read at a leaf), the octant's order
+     * word's offset (read at a push of two or more children) and the packets'
      * base (read at a leaf and at the stack top's prefetch).  GCC kept
      * them in registers across the node loop and, out of general
      * registers there, reloaded four of the six row offsets from the
@@ -81,11 +81,11 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
      * same.  The any-hit walks keep their own as before (their pushes
      * read no octant, their leaves no flag). */
     volatile int r4_ready_mem;
-    volatile int octant_mem;
+    volatile size_t order_at_mem;
     const struct tri4_packet *volatile packets_mem;
     if (!any_hit) {
         r4_ready_mem = 0;
-        octant_mem = octant;
+        order_at_mem = wide8_order_at(octant);
         packets_mem = packets;
     }
     /* Per layout: only a layout beyond the caches pays for the stack
@@ -153,8 +153,11 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
             const __m256i tmin8 = _mm256_max_epi32(
                 _mm256_castps_si256(_mm256_set1_ps(rv->tmin)), _mm256_setzero_si256());
             /* Inner nodes until a leaf lane comes up (or the stack empties). */
+            /* The node under test, carried from where its index is chosen
+             * (the prefetch there forms the same address) rather than
+             * formed again from cur at the loop's top. */
+            const struct bvh8_node *n = &nodes[cur];
             while (!cur_count) {
-                const struct bvh8_node *n = &nodes[cur];
                 const char *b = (const char *)(const void *)n->bounds;
                 if (stats)
                     node_tests += 8;
@@ -247,8 +250,8 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                             wide8_push_stored(n, mask, t0, st_child, st_count, &sp, &cur,
                                               &cur_count);
                         else
-                            wide8_push(n, octant_mem, hit, t0, order_shift, st_child, st_count,
-                                       st_t, &sp, &cur, &cur_count);
+                            wide8_push_at(n, order_at_mem, hit, t0, order_shift, st_child,
+                                          st_count, st_t, &sp, &cur, &cur_count);
                         if (prefetch_top) {
                             /* The new stack top, whose subtree comes after
                              * cur's: prefetched now (its bounds, or the
@@ -269,8 +272,11 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                      * Closest hit only: in the any-hit walks it cost the
                      * soup's shadow rays 0.03 of Embree in every round
                      * (the packet walk's, round 38: level). */
-                    if (!any_hit && !cur_count)
-                        WIDE_PREFETCH_LINES(&nodes[cur], 4);
+                    if (!cur_count) {
+                        n = &nodes[cur];
+                        if (!any_hit)
+                            WIDE_PREFETCH_LINES(n, 4);
+                    }
                     continue;
                 }
                 /* Pop (as below). */
@@ -284,6 +290,8 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                 cur = st_child[sp];
                 cur_count = st_count[sp];
                 WIDE8_PREFETCH_NEXT_TOP();
+                if (!cur_count)
+                    n = &nodes[cur];
             }
         }
         {
