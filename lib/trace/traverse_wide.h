@@ -592,18 +592,16 @@ static inline void wide8_store(const struct bvh8_node *n, __m256i gather, __m256
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline void wide8_push_at(const struct bvh8_node *n, size_t order_at, __m256 hit,
-                                 __m256 t0, __m256i order_shift, uint32_t *st_child,
-                                 uint32_t *st_count, float *st_t, uint32_t *sp, uint32_t *cur,
-                                 uint32_t *cur_count)
+static inline void wide8_push(const struct bvh8_node *n, int octant, __m256 hit, __m256 t0,
+                              __m256i order_shift, uint32_t *st_child, uint32_t *st_count,
+                              float *st_t, uint32_t *sp, uint32_t *cur, uint32_t *cur_count)
 {
     /* The octant's three order bytes as one little-endian word: the four
      * bytes ending with them (the first is the last count byte or the
      * previous octant's last order byte, inside the node), shifted down;
-     * one load instead of three and two shifts and ors.  order_at: that
-     * word's byte offset in the node (wide8_order_at). */
+     * one load instead of three and two shifts and ors. */
     uint32_t word;
-    memcpy(&word, (const char *)n + order_at, sizeof(word));
+    memcpy(&word, (const char *)n->order[octant] - 1, sizeof(word));
     const uint32_t order = word >> 8;
     const __m256i lanes = _mm256_and_si256(
         _mm256_srlv_epi32(_mm256_set1_epi32((int)order), order_shift), _mm256_set1_epi32(7));
@@ -614,24 +612,6 @@ static inline void wide8_push_at(const struct bvh8_node *n, size_t order_at, __m
     const unsigned l = order >> (3 * (unsigned)__builtin_ctz(pm)) & 7u;
     *cur = n->child[l];
     *cur_count = n->count[l];
-}
-
-/* The byte offset in a node of the octant's order word (wide8_push_at). */
-static inline size_t wide8_order_at(int octant)
-{
-    return offsetof(struct bvh8_node, order) + 3 * (size_t)octant - 1;
-}
-
-/* wide8_push_at for an octant. */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline void wide8_push(const struct bvh8_node *n, int octant, __m256 hit, __m256 t0,
-                              __m256i order_shift, uint32_t *st_child, uint32_t *st_count,
-                              float *st_t, uint32_t *sp, uint32_t *cur, uint32_t *cur_count)
-{
-    wide8_push_at(n, wide8_order_at(octant), hit, t0, order_shift, st_child, st_count, st_t, sp,
-                  cur, cur_count);
 }
 
 /*

@@ -68,26 +68,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
     float box_limit = any_hit ? s->best * ISECT_BOX_FAR_SCALE : s->box_limit;
     uint64_t node_tests = 0;
     uint64_t tri_tests = 0;
-    /* A closest-hit walk's values that its node test does not read, in
-     * memory (volatile: a load where they are used), not in registers:
-     * the flag of the leaf constants (read at a leaf), the octant's order
-     * word's offset (read at a push of two or more children) and the packets'
-     * base (read at a leaf and at the stack top's prefetch).  GCC kept
-     * them in registers across the node loop and, out of general
-     * registers there, reloaded four of the six row offsets from the
-     * stack at every node (objdump, AVX2 and AVX-512 copies; rr2's
-     * "What is left"); with these three in memory all six stay in
-     * registers.  Loads only: the walk's answers and counts are the
-     * same.  The any-hit walks keep their own as before (their pushes
-     * read no octant, their leaves no flag). */
-    volatile int r4_ready_mem;
-    volatile size_t order_at_mem;
-    const struct tri4_packet *volatile packets_mem;
-    if (!any_hit) {
-        r4_ready_mem = 0;
-        order_at_mem = wide8_order_at(octant);
-        packets_mem = packets;
-    }
+    int r4_ready = 0;
     /* Per layout: only a layout beyond the caches pays for the stack
      * top's prefetch (bvh4_layout.h).  A closest-hit walk takes it from
      * its copy: every caller picks the copy with leave_early exactly
@@ -107,7 +88,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
     do {                                                                                          \
         if (!any_hit && prefetch_top && sp) {                                                     \
             const uint32_t next = st_child[sp - 1];                                               \
-            const char *a = st_count[sp - 1] ? (const char *)&packets_mem[next]                   \
+            const char *a = st_count[sp - 1] ? (const char *)&packets[next]                       \
                                              : (const char *)&nodes[next];                        \
             WIDE_PREFETCH_LINES(a, 3);                                                            \
         }                                                                                         \
@@ -154,8 +135,11 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                 _mm256_castps_si256(_mm256_set1_ps(rv->tmin)), _mm256_setzero_si256());
             /* Inner nodes until a leaf lane comes up (or the stack empties). */
             /* The node under test, carried from where its index is chosen
-             * (the prefetch there forms the same address) rather than
-             * formed again from cur at the loop's top. */
+             * (the single hit child's prefetch forms the same address)
+             * instead of formed again from cur at the loop's top: GCC
+             * computed nodes + cur * 256 twice on that path.  Formed
+             * only for an inner node's index (cur_count 0): a leaf's
+             * index is a packet's, which may lie beyond the nodes. */
             const struct bvh8_node *n = &nodes[cur];
             while (!cur_count) {
                 const char *b = (const char *)(const void *)n->bounds;
@@ -250,8 +234,8 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                             wide8_push_stored(n, mask, t0, st_child, st_count, &sp, &cur,
                                               &cur_count);
                         else
-                            wide8_push_at(n, order_at_mem, hit, t0, order_shift, st_child,
-                                          st_count, st_t, &sp, &cur, &cur_count);
+                            wide8_push(n, octant, hit, t0, order_shift, st_child, st_count, st_t,
+                                       &sp, &cur, &cur_count);
                         if (prefetch_top) {
                             /* The new stack top, whose subtree comes after
                              * cur's: prefetched now (its bounds, or the
@@ -259,8 +243,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                              * that its load overlaps cur's subtree instead
                              * of following it. */
                             const uint32_t top = st_child[sp - 1];
-                            const struct tri4_packet *pk = any_hit ? packets : packets_mem;
-                            const char *a = st_count[sp - 1] ? (const char *)&pk[top]
+                            const char *a = st_count[sp - 1] ? (const char *)&packets[top]
                                                              : (const char *)&nodes[top];
                             WIDE_PREFETCH_LINES(a, 3);
                         }
@@ -296,16 +279,16 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
         }
         {
             int stop = 0;
-            const struct tri4_packet *p = any_hit ? &packets[cur] : &packets_mem[cur];
+            const struct tri4_packet *p = &packets[cur];
             /* A closest-hit ray sets the packet test's constants at its
              * first leaf, not at its start: a ray that misses every leaf
              * box never pays for them.  An any-hit ray (a shadow ray,
              * which starts on a surface and nearly always reaches a leaf)
              * has them set by WIDE8_WALK: the lazy set-up cost it more
              * instructions than it saved (callgrind, gears). */
-            if (!any_hit && !r4_ready_mem) {
+            if (!any_hit && !r4_ready) {
                 tri4_ray_init(&s->r4, ray);
-                r4_ready_mem = 1;
+                r4_ready = 1;
             }
             if (stats)
                 tri_tests += cur_count;
