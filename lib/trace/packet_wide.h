@@ -1021,7 +1021,7 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                  * gears' shadow packets, whose rays pass the boxes of
                  * about 80 % of the triangles they meet, were 10-12 %
                  * slower with it (docs/performance-log.md, pk16). */
-                done |= packet_leaf8(p, wide->packets, cur, cur_count, r8, any_hit, 1,
+                done |= packet_leaf8(p, wide->packets, cur, cur_count, r8, any_hit, !any_hit,
                                      limit_hi);
                 single &= ~r8;
             }
