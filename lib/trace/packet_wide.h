@@ -29,7 +29,6 @@
  * leaf boxes tested ray by ray unless the beam is narrow against the
  * leaves (see there).
  */
-#include "accel/bvh_build.h" /* BVH_MAX_LEAF_SIZE, for BVH_WIDE_MAX_LEAF */
 #include "trace/packet.h"
 #if defined(__AVX__)
 #include "trace/packet_tri8.h"
@@ -326,7 +325,8 @@ static inline void packet_sync(struct packet_state *p, unsigned r)
 /*
  * The triangles of packets q and q + 1 (bit l: triangle l of q; bit 4 + l:
  * triangle l of q + 1), a leaf of more than four triangles (at most
- * eight, BVH_WIDE_MAX_LEAF: two triangle packets), whose own box passes the
+ * eight, BVH_WIDE_MAX_LEAF, asserted in collapse4.c: two triangle
+ * packets), whose own box passes the
  * interval walk's test (packet_walk8_ia, packet_ia_init) with exit bound
  * limit_hi (at least every ray's box_limit).  The box is the least and
  * greatest of the triangle's three vertices per axis (exact: min and max
@@ -347,7 +347,6 @@ static inline void packet_sync(struct packet_state *p, unsigned r)
  * triangle that no ray can hit may fail, so no bound needs to be the
  * walk's to the bit).
  */
-typedef char packet_tri_beam_two_packets[BVH_WIDE_MAX_LEAF <= 8 ? 1 : -1];
 static inline unsigned packet_tri_beam(const struct packet_state *p, const struct tri4_packet *q,
                                        __m256 limit_hi)
 {
