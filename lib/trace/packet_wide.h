@@ -323,7 +323,10 @@ static inline void packet_sync(struct packet_state *p, unsigned r)
 }
 
 /*
- * The triangles of packet q (bit l: triangle l) whose own box passes the
+ * The triangles of packets q and q + 1 (bit l: triangle l of q; bit 4 + l:
+ * triangle l of q + 1), a leaf of more than four triangles (at most
+ * eight, BVH_WIDE_MAX_LEAF, asserted in collapse4.c: two triangle
+ * packets), whose own box passes the
  * interval walk's test (packet_walk8_ia, packet_ia_init) with exit bound
  * limit_hi (at least every ray's box_limit).  The box is the least and
  * greatest of the triangle's three vertices per axis (exact: min and max
@@ -345,28 +348,30 @@ static inline void packet_sync(struct packet_state *p, unsigned r)
  * walk's to the bit).
  */
 static inline unsigned packet_tri_beam(const struct packet_state *p, const struct tri4_packet *q,
-                                       __m128 limit_hi)
+                                       __m256 limit_hi)
 {
-    const __m128 scale = _mm_set1_ps(ISECT_BOX_FAR_SCALE);
-    __m128 t0 = _mm256_castps256_ps128(p->ia_tmin);
-    __m128 t1 = limit_hi;
+    const __m256 scale = _mm256_set1_ps(ISECT_BOX_FAR_SCALE);
+    __m256 t0 = p->ia_tmin;
+    __m256 t1 = limit_hi;
     for (int k = 0; k < 3; k++) {
-        const __m128 a = _mm_loadu_ps(q->v[0][k]);
-        const __m128 b = _mm_loadu_ps(q->v[1][k]);
-        const __m128 c = _mm_loadu_ps(q->v[2][k]);
-        const __m128 lo = _mm_min_ps(_mm_min_ps(a, b), c);
-        const __m128 hi = _mm_max_ps(_mm_max_ps(a, b), c);
+        /* Lanes 0-3 the triangles of q, lanes 4-7 those of q + 1: the
+         * leaf's two triangle packets in one pass, each lane the same
+         * operations as a four-lane pass would give it. */
+        const __m256 a = _mm256_loadu2_m128(q[1].v[0][k], q[0].v[0][k]);
+        const __m256 b = _mm256_loadu2_m128(q[1].v[1][k], q[0].v[1][k]);
+        const __m256 c = _mm256_loadu2_m128(q[1].v[2][k], q[0].v[2][k]);
+        const __m256 lo = _mm256_min_ps(_mm256_min_ps(a, b), c);
+        const __m256 hi = _mm256_max_ps(_mm256_max_ps(a, b), c);
         const int neg = p->ia_octant >> k & 1;
-        const __m128 dn = _mm_sub_ps(neg ? hi : lo, _mm256_castps256_ps128(p->ia_o_near[k]));
-        const __m128 df = _mm_sub_ps(neg ? lo : hi, _mm256_castps256_ps128(p->ia_o_far[k]));
-        t0 = _mm_max_ps(_mm_mul_ps(dn, _mm256_castps256_ps128(p->ia_i_near[k])), t0);
-        t1 = _mm_min_ps(
-            _mm_mul_ps(_mm_max_ps(_mm_mul_ps(df, _mm256_castps256_ps128(p->ia_i_lo[k])),
-                                  _mm_mul_ps(df, _mm256_castps256_ps128(p->ia_i_hi[k]))),
-                       scale),
-            t1);
+        const __m256 dn = _mm256_sub_ps(neg ? hi : lo, p->ia_o_near[k]);
+        const __m256 df = _mm256_sub_ps(neg ? lo : hi, p->ia_o_far[k]);
+        t0 = _mm256_max_ps(_mm256_mul_ps(dn, p->ia_i_near[k]), t0);
+        t1 = _mm256_min_ps(_mm256_mul_ps(_mm256_max_ps(_mm256_mul_ps(df, p->ia_i_lo[k]),
+                                                       _mm256_mul_ps(df, p->ia_i_hi[k])),
+                                         scale),
+                           t1);
     }
-    return (unsigned)_mm_movemask_ps(_mm_cmp_ps(t0, t1, _CMP_LE_OQ));
+    return (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(t0, t1, _CMP_LE_OQ));
 }
 
 /* A leaf lane (count triangles in packets from `first`) for the rays of
@@ -383,7 +388,7 @@ __attribute__((always_inline))
 static inline unsigned packet_leaf8_body(struct packet_state *p,
                                          const struct tri4_packet *packets, uint32_t first,
                                          uint32_t count, unsigned rays, int any_hit, int pair,
-                                         int beam, __m128 limit_hi)
+                                         int beam, __m256 limit_hi)
 {
     if (!p->t8_ready) {
         /* lanes8 holds the first ray: its kx, ky, kz. */
@@ -393,6 +398,11 @@ static inline unsigned packet_leaf8_body(struct packet_state *p,
     float *limit = p->limit;
     const int kx = p->t8.kx, ky = p->t8.ky, kz = p->t8.kz;
     unsigned done = 0;
+    /* The beam copy: the leaf's two triangle packets' boxes in one pass
+     * before the first tri8_test (packet_tri_beam).  limit_hi does not
+     * change during the leaf, so the second packet's bits are those a
+     * test after the first packet's triangles would give. */
+    const unsigned beam_tris = beam ? packet_tri_beam(p, &packets[first], limit_hi) : 0u;
     /* Only an any-hit ray leaves `rays` (packet_take_hit returns 1 for
      * it alone); a closest-hit leaf keeps all its rays, so its loops do
      * not test for an empty packet (measured, docs/performance-log.md,
@@ -408,7 +418,7 @@ static inline unsigned packet_leaf8_body(struct packet_state *p,
         if (beam) {
             /* The interval walk's packet: the triangles whose box its
              * interval test passes (packet_tri_beam). */
-            tris &= packet_tri_beam(p, q, limit_hi);
+            tris &= beam_tris >> j;
             if (!tris)
                 continue;
         }
@@ -538,7 +548,7 @@ __attribute__((always_inline))
 #endif
 static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_packet *packets,
                                     uint32_t first, uint32_t count, unsigned rays, int any_hit,
-                                    int beam, __m128 limit_hi)
+                                    int beam, __m256 limit_hi)
 {
     /* The triangles' boxes against the packet's interval test
      * (packet_tri_beam) only with more rays than the pair filter takes:
@@ -670,7 +680,7 @@ static inline unsigned packet_walk(const struct bvh4 *wide, struct packet_state 
             const unsigned r8 = rays & p->lanes8;
             if ((unsigned)__builtin_popcount(r8) >= PACKET_TRI8_MIN) {
                 done |= packet_leaf8(p, wide->packets, cur, cur_count, r8,
-                                     p->s[__builtin_ctz(r8)].any_hit, 0, _mm_setzero_ps());
+                                     p->s[__builtin_ctz(r8)].any_hit, 0, _mm256_setzero_ps());
                 packet_flush_all(p);
                 single &= ~r8;
             }
@@ -1011,7 +1021,7 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                  * about 80 % of the triangles they meet, were 10-12 %
                  * slower with it (docs/performance-log.md, pk16). */
                 done |= packet_leaf8(p, wide->packets, cur, cur_count, r8, any_hit, !any_hit,
-                                     _mm256_castps256_ps128(limit_hi));
+                                     limit_hi);
                 single &= ~r8;
             }
             for (unsigned m = single; m; m &= m - 1u) {
