@@ -821,6 +821,37 @@ static inline unsigned tri4_before_tmin_vectors(const struct tri4_ray *r, __m128
                                                 __m128 V, __m128 W, __m128 det, __m128 Az,
                                                 __m128 Bz, __m128 Cz, int scalar)
 {
+    /* The checks' constants as 16-byte rows in memory, read through a
+     * pointer GCC cannot see into (the empty asm), so that each becomes
+     * the memory operand of its multiply or compare.  As _mm_set1_ps
+     * constants GCC loads each with a vbroadcastss of its own before
+     * use (AVX2: nine a call, AVX-512: five, the others folded as
+     * {1to4} operands), about 12 % of this block's instructions.  The
+     * same floats in every lane, the same operations in the same order:
+     * the same lanes refused, bit for bit. */
+    enum { K_2M15, K_2M20, K_7_8, K_2M13, K_2P20, K_2M60, K_2P40, K_2M100, K_ROWS };
+#if defined(__GNUC__)
+    __attribute__((aligned(16)))
+#endif
+    static const float consts[K_ROWS][4] = {
+        {0x1p-15f, 0x1p-15f, 0x1p-15f, 0x1p-15f},    {0x1p-20f, 0x1p-20f, 0x1p-20f, 0x1p-20f},
+        {0.875f, 0.875f, 0.875f, 0.875f},            {0x1p-13f, 0x1p-13f, 0x1p-13f, 0x1p-13f},
+        {0x1p20f, 0x1p20f, 0x1p20f, 0x1p20f},        {0x1p-60f, 0x1p-60f, 0x1p-60f, 0x1p-60f},
+        {0x1p40f, 0x1p40f, 0x1p40f, 0x1p40f},        {0x1p-100f, 0x1p-100f, 0x1p-100f, 0x1p-100f}};
+    const float(*k)[4] = consts;
+#if defined(__GNUC__)
+    __asm__("" : "+r"(k));
+#endif
+#define TRI4_NEAR_K(i) _mm_load_ps(k[i])
+    /* x >= row i: with AVX, vcmpps' own GE predicate (ordered,
+     * signalling: _mm_cmpge_ps' result, false for NaN), so that the row
+     * is its memory operand; SSE's cmpge swaps the operands into a
+     * cmple, whose row must then be loaded into a register first. */
+#if defined(__AVX__)
+#define TRI4_NEAR_GE(x, i) _mm_cmp_ps((x), TRI4_NEAR_K(i), _CMP_GE_OS)
+#else
+#define TRI4_NEAR_GE(x, i) _mm_cmpge_ps((x), TRI4_NEAR_K(i))
+#endif
     const __m128 sign = _mm_set1_ps(-0.0f);
     const __m128 s2 = _mm_mul_ps(sc, sc);
     const __m128 zb = _mm_mul_ps(sc, _mm_andnot_ps(sign, TRI4_CONST(r, sz, k_inv[2], scalar)));
@@ -830,19 +861,21 @@ static inline unsigned tri4_before_tmin_vectors(const struct tri4_ray *r, __m128
     /* Check 2: s T (T with det's sign flipped in, exact) + the error
      * term < tmin (7/8) |det|. */
     const __m128 sT = _mm_xor_ps(T, _mm_and_ps(sign, det));
-    const __m128 err = _mm_mul_ps(zb, _mm_add_ps(_mm_mul_ps(_mm_set1_ps(0x1p-15f), s2),
-                                                 _mm_mul_ps(_mm_set1_ps(0x1p-20f), abs_det)));
+    const __m128 err = _mm_mul_ps(zb, _mm_add_ps(_mm_mul_ps(TRI4_NEAR_K(K_2M15), s2),
+                                                 _mm_mul_ps(TRI4_NEAR_K(K_2M20), abs_det)));
     const __m128 rhs = _mm_mul_ps(TRI4_CONST(r, tmin, k_tmin, scalar),
-                                  _mm_mul_ps(_mm_set1_ps(0.875f), abs_det));
+                                  _mm_mul_ps(TRI4_NEAR_K(K_7_8), abs_det));
     __m128 ok = _mm_cmplt_ps(_mm_add_ps(sT, err), rhs);
     /* Check 1. */
-    ok = _mm_and_ps(ok, _mm_cmpge_ps(abs_det, _mm_mul_ps(_mm_set1_ps(0x1p-13f), s2)));
-    ok = _mm_and_ps(ok, _mm_and_ps(_mm_cmpge_ps(sc, _mm_set1_ps(0x1p-20f)),
-                                   _mm_cmple_ps(sc, _mm_set1_ps(0x1p20f))));
-    ok = _mm_and_ps(ok, _mm_and_ps(_mm_cmpge_ps(zb, _mm_set1_ps(0x1p-60f)),
-                                   _mm_cmple_ps(zb, _mm_set1_ps(0x1p40f))));
+    ok = _mm_and_ps(ok, _mm_cmpge_ps(abs_det, _mm_mul_ps(TRI4_NEAR_K(K_2M13), s2)));
+    ok = _mm_and_ps(ok, _mm_and_ps(TRI4_NEAR_GE(sc, K_2M20),
+                                   _mm_cmple_ps(sc, TRI4_NEAR_K(K_2P20))));
+    ok = _mm_and_ps(ok, _mm_and_ps(TRI4_NEAR_GE(zb, K_2M60),
+                                   _mm_cmple_ps(zb, TRI4_NEAR_K(K_2P40))));
     ok = _mm_and_ps(ok,
-                    _mm_cmpge_ps(TRI4_CONST(r, tmin, k_tmin, scalar), _mm_set1_ps(0x1p-100f)));
+                    TRI4_NEAR_GE(TRI4_CONST(r, tmin, k_tmin, scalar), K_2M100));
+#undef TRI4_NEAR_GE
+#undef TRI4_NEAR_K
     return (unsigned)_mm_movemask_ps(ok);
 }
 
