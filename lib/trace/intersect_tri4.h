@@ -460,35 +460,6 @@ static inline void tri4_pair_slab(__m256 d0, __m256 d1, __m256 d2, __m256 inv, i
     *t_hi = _mm256_min_ps(t_far, *t_hi);
 }
 
-/* The pair filter's depths along the ray (Az, Bz, Cz, in the shear's
- * frame) and their range. */
-static inline void tri4_pair_depth_box_z(const struct tri4_ray *r, __m256 az, __m256 bz,
-                                         __m256 cz, int scalar, __m256 *Az, __m256 *Bz,
-                                         __m256 *Cz, __m256 *z_lo, __m256 *z_hi)
-{
-    const __m256 sz = TRI4_CONST8(r, sz, k_inv[2], scalar);
-    *Az = _mm256_mul_ps(sz, az);
-    *Bz = _mm256_mul_ps(sz, bz);
-    *Cz = _mm256_mul_ps(sz, cz);
-    *z_lo = _mm256_min_ps(*Az, _mm256_min_ps(*Bz, *Cz));
-    *z_hi = _mm256_max_ps(*Az, _mm256_max_ps(*Bz, *Cz));
-}
-
-/* The depths, their range and the box interval [t_lo, t_hi]: the depth
- * range clipped by the x and y slabs (tri4_pair_slab). */
-static inline void tri4_pair_depth_box(const struct tri4_ray *r, __m256 ax, __m256 ay,
-                                       __m256 az, __m256 bx, __m256 by, __m256 bz, __m256 cx,
-                                       __m256 cy, __m256 cz, int scalar, __m256 *Az,
-                                       __m256 *Bz, __m256 *Cz, __m256 *z_lo, __m256 *z_hi,
-                                       __m256 *t_lo, __m256 *t_hi)
-{
-    tri4_pair_depth_box_z(r, az, bz, cz, scalar, Az, Bz, Cz, z_lo, z_hi);
-    *t_lo = *z_lo;
-    *t_hi = *z_hi;
-    tri4_pair_slab(ax, bx, cx, TRI4_CONST8(r, inv_x, k_inv[0], scalar), r->neg_x, t_lo, t_hi);
-    tri4_pair_slab(ay, by, cy, TRI4_CONST8(r, inv_y, k_inv[1], scalar), r->neg_y, t_lo, t_hi);
-}
-
 /* Lanes 0-3 of v to lo, lanes 4-7 to hi: each packet's lanes go to its
  * own 4-lane struct, which tri4_lane_test reads as the 4-lane filter's. */
 static inline void tri4_pair_store(float *lo, float *hi, __m256 v)
@@ -562,48 +533,14 @@ static inline unsigned tri4_pair_filter_lanes(const struct tri4_ray *r,
     if (early_out && ((unsigned)_mm256_movemask_ps(mixed) & valid) == valid)
         return 0;
 
-    /* early_behind (the single-ray closest-hit 8-lane leaf with its early
-     * return): once some lane passes the signs, the depth range and the
-     * box interval, and a return before the edge zeros, det and the
-     * stores when no valid unmixed lane passes their tests and the
-     * behind-tmin refusal.  On the kitchen's camera rays most 8-lane
-     * calls are walls behind the camera whose every unmixed lane was
-     * refused only after the whole filter (performance-log, round 41,
-     * rr4).  Exact: the mask returned below is a subset of
-     * `geom & ~behind & valid` (keep and deferred both lie within geom,
-     * and behind_out took `behind` out of the mask), and `pre` is
-     * geom's depth and box tests with `behind` out, the same operations
-     * on the same floats as below; so when no valid lane is in
-     * `pre & ~mixed` the mask would be 0, nothing would be stored, and
-     * 0 is returned here.  Otherwise geom is `pre & ~mixed`, which takes
-     * the behind lanes out of keep and deferred at once: the mask is
-     * the one behind_out's refusal gave, and a lane's deferred bit is
-     * read only for a lane in the mask (tri4_lane_test).  After the
-     * sign test, not before the shear: a first form with this return
-     * before the shear (depth and slabs before the signs) cost the
-     * soup's calls that leave at the signs (see the log). */
-    const int early_behind = behind_out && early_out && !depth_out;
-    __m256 Az, Bz, Cz, z_lo, z_hi, t_lo, t_hi, pre;
-    Az = Bz = Cz = z_lo = z_hi = t_lo = t_hi = pre = _mm256_setzero_ps();
-    if (early_behind) {
-        const __m256 limit = _mm256_set1_ps(t_max);
-        tri4_pair_depth_box(r, ax, ay, az, bx, by, bz, cx, cy, cz, scalar, &Az, &Bz, &Cz, &z_lo,
-                            &z_hi, &t_lo, &t_hi);
-        const __m256 tmin = TRI4_CONST8(r, tmin, k_tmin, scalar);
-        const __m256 behind =
-            _mm256_and_ps(_mm256_cmp_ps(t_hi, tmin, _CMP_LT_OQ), _mm256_cmp_ps(t_lo, tmin, _CMP_LT_OQ));
-        pre = _mm256_andnot_ps(
-            behind, _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(z_hi, tmin, _CMP_GE_OQ),
-                                                _mm256_cmp_ps(z_lo, limit, _CMP_LT_OQ)),
-                                  _mm256_cmp_ps(t_lo, limit, _CMP_LT_OQ)));
-        if (((unsigned)_mm256_movemask_ps(_mm256_andnot_ps(mixed, pre)) & valid) == 0)
-            return 0;
-    }
-
     const __m256 on_edge = tri8_on_edge(&sh);
 
-    if (!early_behind)
-        tri4_pair_depth_box_z(r, az, bz, cz, scalar, &Az, &Bz, &Cz, &z_lo, &z_hi);
+    const __m256 sz = TRI4_CONST8(r, sz, k_inv[2], scalar);
+    const __m256 Az = _mm256_mul_ps(sz, az);
+    const __m256 Bz = _mm256_mul_ps(sz, bz);
+    const __m256 Cz = _mm256_mul_ps(sz, cz);
+    const __m256 z_lo = _mm256_min_ps(Az, _mm256_min_ps(Bz, Cz));
+    const __m256 z_hi = _mm256_max_ps(Az, _mm256_max_ps(Bz, Cz));
     const __m256 limit = _mm256_set1_ps(t_max);
     /* The any-hit early return on depth, as tri4_filter_lanes_depth. */
     if (depth_out &&
@@ -613,25 +550,18 @@ static inline unsigned tri4_pair_filter_lanes(const struct tri4_ray *r,
                            _mm256_cmp_ps(z_lo, limit, _CMP_LT_OQ)))) &
          valid) == 0)
         return 0;
-    if (!early_behind) {
-        t_lo = z_lo;
-        t_hi = z_hi;
-        tri4_pair_slab(ax, bx, cx, TRI4_CONST8(r, inv_x, k_inv[0], scalar), r->neg_x, &t_lo,
-                       &t_hi);
-        tri4_pair_slab(ay, by, cy, TRI4_CONST8(r, inv_y, k_inv[1], scalar), r->neg_y, &t_lo,
-                       &t_hi);
-    }
-    /* early_behind: pre is this geom's depth and box tests with the
-     * behind-tmin lanes already out (see above). */
-    const __m256 geom =
-        early_behind
-            ? _mm256_andnot_ps(mixed, pre)
-            : _mm256_andnot_ps(
-                  mixed, _mm256_and_ps(
-                             _mm256_and_ps(_mm256_cmp_ps(z_hi, TRI4_CONST8(r, tmin, k_tmin, scalar),
-                                                         _CMP_GE_OQ),
-                                           _mm256_cmp_ps(z_lo, limit, _CMP_LT_OQ)),
-                             _mm256_cmp_ps(t_lo, limit, _CMP_LT_OQ)));
+    __m256 t_lo = z_lo;
+    __m256 t_hi = z_hi;
+    tri4_pair_slab(ax, bx, cx, TRI4_CONST8(r, inv_x, k_inv[0], scalar), r->neg_x, &t_lo,
+                   &t_hi);
+    tri4_pair_slab(ay, by, cy, TRI4_CONST8(r, inv_y, k_inv[1], scalar), r->neg_y, &t_lo,
+                   &t_hi);
+    const __m256 geom = _mm256_andnot_ps(
+        mixed,
+        _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(z_hi, TRI4_CONST8(r, tmin, k_tmin, scalar),
+                                                  _CMP_GE_OQ),
+                                    _mm256_cmp_ps(z_lo, limit, _CMP_LT_OQ)),
+                      _mm256_cmp_ps(t_lo, limit, _CMP_LT_OQ)));
     const unsigned deferred = (unsigned)_mm256_movemask_ps(_mm256_and_ps(on_edge, geom)) & valid;
 
     const __m256 det = _mm256_add_ps(_mm256_add_ps(sh.U, sh.V), sh.W);
@@ -639,7 +569,7 @@ static inline unsigned tri4_pair_filter_lanes(const struct tri4_ray *r,
     __m256 keep = _mm256_and_ps(geom, _mm256_cmp_ps(det, zero, _CMP_NEQ_UQ));
     keep = _mm256_and_ps(keep, _mm256_cmp_ps(abs_det, _mm256_set1_ps(INFINITY), _CMP_LT_OQ));
     unsigned mask = ((unsigned)_mm256_movemask_ps(keep) & valid) | deferred;
-    if (behind_out && !early_behind && mask) {
+    if (behind_out && mask) {
         /* The same comparisons as the per-lane `t_hi < tmin && t_lo <
          * tmin` they replace (ordered: false for NaN), on the same
          * floats; a deferred lane among them is refused too, as its
