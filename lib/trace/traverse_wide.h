@@ -765,7 +765,12 @@ static inline void wide8_push_any(const struct bvh8_node *n, unsigned pm, __m256
     const unsigned front = wide8_any_front(t0, t1, hit);
     const unsigned rest = pm & ~(1u << front);
     /* wide8_compress[rest]: the rest's lanes back to front, so that the
-     * lowest ends on top; all of them kept (sp moves by their number). */
+     * lowest ends on top; all of them kept (sp moves by their number).
+     * The stores are wide8_store's with st_t NULL (popcount(rest) is
+     * popcount(pm) - 1), written out: with the call GCC schedules these
+     * walks differently (1,825 lines of their objdump differ) and the
+     * soup's figures were measured on this form (performance-log.md,
+     * round 40's merge). */
     const __m256i gather = _mm256_cvtepu8_epi32(
         _mm_loadl_epi64((const __m128i *)(const void *)&wide8_compress[rest]));
     const __m256i child = _mm256_load_si256((const __m256i *)(const void *)n->child);
@@ -1142,7 +1147,7 @@ WIDE8_WALK(wide8_walk_any_longest_leaf8_stats, walk_wide8_ray_leaf8, WIDE_ANY_LO
 __attribute__((always_inline))
 #endif
 static inline void tri4_ray_init_scalar_lanes(struct tri4_ray *r, const struct ray_lanes *l,
-                                              __m128 org, float tmin)
+                                              float tmin)
 {
     /* off_x, off_y, off_z (kx, ky, kz times a row's 16 bytes, as
      * size_t) and neg_x, neg_y (inv_dir[kx] < 0, inv_dir[ky] < 0, as 0/1
@@ -1166,7 +1171,7 @@ static inline void tri4_ray_init_scalar_lanes(struct tri4_ray *r, const struct r
      * (org's lanes 0-2, its lane 3 not kept) with its sign bits flipped,
      * -org as C's unary minus gives it (the node test's bound + (-org),
      * walk_wide8_ray). */
-    const __m128 neg_org = _mm_xor_ps(org, _mm_set1_ps(-0.0f));
+    const __m128 neg_org = _mm_xor_ps(l->org, _mm_set1_ps(-0.0f));
     _mm_storeu_ps((float *)(void *)((char *)(void *)r + offsetof(struct tri4_ray, k_tmin)),
                   _mm_move_ss(_mm_permute_ps(neg_org, _MM_SHUFFLE(2, 1, 0, 3)), _mm_set_ss(tmin)));
 }
@@ -1209,7 +1214,7 @@ typedef char tri4_ray_tmin_org_layout[offsetof(struct tri4_ray, node_neg_org) ==
             return wide8_walk_end(s, wide8_walk_tmin_other(wide, s, any_walk, stats),           \
                                   any_hit, stats, counters);                                    \
         if (any_hit)                                                                            \
-            tri4_ray_init_scalar_lanes(&s->r4, &lanes, lanes.org, tmin);                        \
+            tri4_ray_init_scalar_lanes(&s->r4, &lanes, tmin);                                   \
         const int done = walk(wide, s, any_hit, stats, leave_early, &lanes);                    \
         return wide8_walk_end(s, done, any_hit, stats, counters);                               \
     }
