@@ -364,6 +364,26 @@ static void compare_tables(const char *name, struct tg_mesh *m, int rays, uint64
                     }
                     walk1_rays++;
                 }
+                /* The any-hit walks walk1 and any1 choose by prefetch_top
+                 * and any_longest (a copy per flag pair): any's answer on
+                 * the layout with each of the four pairs (a shallow copy:
+                 * the walks read the flags only). */
+                for (int flags = 0; flags < 4 && k->walk1 && wide->width == 8 &&
+                                    wide->node_count;
+                     flags++) {
+                    struct bvh4 wp = *wide;
+                    wp.prefetch_top = (uint32_t)(flags & 1);
+                    wp.any_longest = (uint32_t)(flags >> 1);
+                    const trace_walk1_fn w = k->walk1(&wp, 1);
+                    const int a9 = w ? w(&wp, org, dir, tmin, t_max, NULL, NULL) : a0;
+                    const int a10 = k->any1(&wp, &bvh, tri, org, dir, tmin, t_max, NULL);
+                    if (a0 != a9 || a0 != a10) {
+                        if (differ4 < 5)
+                            printf("    %s ray %d (any-hit walk, flags %d): any %d/%d/%d\n",
+                                   layout, i, flags, a0, a9, a10);
+                        differ4++;
+                    }
+                }
                 /* The counting walks the two-level walk takes from
                  * walk1_counted: closest1's / any1's answers and counts
                  * with counters, on the layout with prefetch_top and
