@@ -964,6 +964,13 @@ static const uint8_t wide8_rows[8][6] = {WIDE8_ROWS(0, 0, 0), WIDE8_ROWS(1, 0, 0
  * wide_state_init1 left it, r4 not yet set. */
 static int wide8_walk_tmin_other(const struct bvh4 *wide, struct wide_state *s, int any_hit,
                                  int stats) WIDE_NOINLINE;
+#if defined(__GNUC__) && !defined(__clang__)
+/* One body for every walk copy's call (a cold path): with the any-hit
+ * copies per prefetch_top, GCC otherwise makes a clone for the calls
+ * with constant flags and rearranges the callers' registers around it. */
+static int wide8_walk_tmin_other(const struct bvh4 *wide, struct wide_state *s, int any_hit,
+                                 int stats) __attribute__((noclone));
+#endif
 static int wide8_walk_tmin_other(const struct bvh4 *wide, struct wide_state *s, int any_hit,
                                  int stats)
 {
