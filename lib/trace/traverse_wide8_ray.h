@@ -116,9 +116,18 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
              * asm on the pointer itself GCC also put a vzeroupper before
              * every 4-lane leaf call (callgrind, AVX2: 3.1 instructions a
              * gears shadow ray more); either way it stores the pointer to
-             * its stack slot again at every leaf. */
+             * its stack slot again at every leaf.  An any-hit walk from
+             * the set-up's lanes, whose ray and -org copy are this
+             * frame's own (WIDE8_WALK1), has a compiler barrier here
+             * instead: the floats are loaded again from their stack
+             * slots, without the two pointers the asm made GCC keep in
+             * stack slots of their own (callgrind, AVX2: 9 instructions
+             * a gears shadow ray fewer).  The same loads of the same
+             * floats, so the same vectors. */
             const struct trace_ray *rv = ray;
-            if (any_hit)
+            if (any_hit && lanes)
+                __asm__ volatile("" ::: "memory");
+            else if (any_hit)
                 __asm__("" : "+r"(rv));
 #else
             const struct trace_ray *rv = ray;
@@ -132,16 +141,11 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
              * node_neg_org: the same floats, -org by the sign bit as
              * C's unary minus): a broadcast from memory each, where the
              * ray's org took a load, a sign flip and a register
-             * broadcast.  Its pointer through an empty asm as rv's, so
-             * that GCC loads the floats again after each leaf call
-             * instead of keeping the vectors across it. */
+             * broadcast, loaded again after each leaf call (the
+             * barrier above) instead of kept across it. */
             const float *no = NULL;
-            if (any_hit && lanes) {
+            if (any_hit && lanes)
                 no = s->r4.node_neg_org;
-#if defined(__GNUC__)
-                __asm__("" : "+r"(no));
-#endif
-            }
             const __m256 neg_org_x =
                 any_hit && lanes ? _mm256_broadcast_ss(&no[0]) : _mm256_set1_ps(-rv->org[0]);
             const __m256 neg_org_y =
