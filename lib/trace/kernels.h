@@ -111,8 +111,8 @@ struct trace_kernels {
                              struct trace_ray o_ray[TRACE_PACKET]);
     /* The walk closest1 (any_hit 0) or any1 (any_hit 1) takes on this
      * layout without counters, chosen once for the layout instead of
-     * once a ray (the entries test width, node count and, closest hit,
-     * prefetch_top every ray): called with counters NULL it gives
+     * once a ray (the entries test width, node count, prefetch_top and,
+     * any hit, any_longest every ray): called with counters NULL it gives
      * closest1's / any1's answer bit for bit.  NULL where those entries
      * take no walk of their own (a layout without an 8-wide walk in this
      * table: call closest1 / any1), and in the tables without the 8-wide
