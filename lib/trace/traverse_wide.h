@@ -1107,9 +1107,10 @@ static inline int wide_leaf8_test(struct wide_state *s, const struct tri4_packet
 WIDE8_LEAF_TEST(wide8_leaf8_closest, wide_leaf8_test, 0, 1, 0, 1, 1)
 WIDE8_LEAF_TEST(wide8_leaf8_full, wide_leaf8_test, 0, 0, 0, 1, 1)
 /* The closest-hit walk's first 8-lane leaf of a ray: the filter refuses
- * a leaf whose triangles' box intervals all miss [tmin, limit) or lie
- * wholly before tmin before the shear (TRI4_BEHIND_FIRST), the same
- * answers (tri4_pair_filter_lanes says why). */
+ * a leaf whose lanes are all missed by the line, outside the depth and
+ * box tests, or wholly before tmin right after the signs
+ * (TRI4_BEHIND_FIRST), with the same answers (tri4_pair_filter_lanes
+ * says why; traverse_wide8_ray.h why only there). */
 WIDE8_LEAF_TEST(wide8_leaf8_closest_first, wide_leaf8_test, 0, 1, 0, TRI4_BEHIND_FIRST, 1)
 WIDE8_LEAF_TEST(wide8_leaf8_full_first, wide_leaf8_test, 0, 0, 0, TRI4_BEHIND_FIRST, 1)
 WIDE8_LEAF_TEST(wide8_leaf8_any, wide_leaf8_test, 1, 1, 1, 0, 0)

@@ -294,13 +294,16 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
              * has them set by WIDE8_WALK: the lazy set-up cost it more
              * instructions than it saved (callgrind, gears). */
             /* A ray's first leaf: with a camera inside a room, the leaf
-             * whose box holds the camera (its entry clipped to tmin, so
-             * the nearest child at every node on the way) is nearly
-             * always the first, and its triangles lie behind the camera
-             * for nearly every ray (the BART kitchen: 0.99 of a camera
-             * ray's 8-lane calls refused as wholly behind tmin are this
-             * one leaf's).  Its 8-lane filter tests the triangles' box
-             * intervals first (wide8_leaf8_closest_first). */
+             * whose box holds the camera is entered by nearly every
+             * camera ray, and its lanes are missed by the line or lie
+             * wholly behind the camera (the BART kitchen: one leaf, 0.99
+             * of its camera rays; the first 8-lane leaf of 0.65 of them,
+             * the octant's child order deciding).  The first 8-lane call
+             * refuses such a leaf right after the signs
+             * (wide8_leaf8_closest_first, TRI4_BEHIND_FIRST); the later
+             * calls keep the filter as it was: rr5's same exit in every
+             * call (round 42) was level or slower on the clock, its
+             * branch taken on about 0.6 of the calls. */
 #if WIDE8_RAY_LEAF8
             const int first_leaf = !any_hit && !r4_ready;
 #endif
