@@ -518,6 +518,27 @@ static inline void tri4_pair_store(float *lo, float *hi, __m256 v)
  * that keep nothing pay nothing (s6's form in `geom` made every call pay
  * and lengthened that chain).
  */
+/* behind_out's value for the 8-lane filter that refuses a leaf whose
+ * lanes are all missed or wholly before tmin right after the signs
+ * (tri4_pair_filter_lanes; the closest-hit walk's first 8-lane leaf of
+ * a ray, traverse_wide8_ray.h). */
+#define TRI4_BEHIND_FIRST 2
+
+/* The 8-lane filter's depths (sz times the z differences) and their
+ * range, as tri4_filter_lanes computes them. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void tri4_pair_depths(__m256 sz, __m256 az, __m256 bz, __m256 cz, __m256 *Az,
+                                    __m256 *Bz, __m256 *Cz, __m256 *z_lo, __m256 *z_hi)
+{
+    *Az = _mm256_mul_ps(sz, az);
+    *Bz = _mm256_mul_ps(sz, bz);
+    *Cz = _mm256_mul_ps(sz, cz);
+    *z_lo = _mm256_min_ps(*Az, _mm256_min_ps(*Bz, *Cz));
+    *z_hi = _mm256_max_ps(*Az, _mm256_max_ps(*Bz, *Cz));
+}
+
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
@@ -559,14 +580,51 @@ static inline unsigned tri4_pair_filter_lanes(const struct tri4_ray *r,
     if (early_out && ((unsigned)_mm256_movemask_ps(mixed) & valid) == valid)
         return 0;
 
+    __m256 Az, Bz, Cz, z_lo, z_hi, t_lo, t_hi;
+    if (behind_out == TRI4_BEHIND_FIRST) {
+        /* The leaf refused here, after the signs and before the edge
+         * zeros, det, keep and the deferred lanes, when no valid lane
+         * with unmixed signs passes the depth and box tests of `geom`
+         * below with a box interval that reaches tmin: with a camera
+         * inside a room, the leaf whose box holds the camera is visited
+         * by nearly every camera ray, and its lanes are missed by the
+         * line (mixed signs) or lie wholly behind the camera.  The
+         * depths and the box interval computed here are those the code
+         * below uses (it computes them only without this block), the
+         * same operations in the same order; `behind` is the refusal's
+         * own comparisons below.  Exact: the returned mask is a subset of
+         * geom & ~behind & valid (keep and deferred lie within geom; the
+         * behind refusal takes `behind` out), and geom is pre & ~mixed;
+         * so when pre & ~mixed & ~behind & valid is empty the mask below
+         * is 0, nothing is stored and 0 is returned, as here.  rr5's exit
+         * (round 42) in every 8-lane call; here only in a ray's first
+         * leaf (traverse_wide8_ray.h says why). */
+        tri4_pair_depths(TRI4_CONST8(r, sz, k_inv[2], scalar), az, bz, cz, &Az, &Bz, &Cz, &z_lo,
+                         &z_hi);
+        const __m256 limit = _mm256_set1_ps(t_max);
+        t_lo = z_lo;
+        t_hi = z_hi;
+        tri4_pair_slab(ax, bx, cx, TRI4_CONST8(r, inv_x, k_inv[0], scalar), r->neg_x, &t_lo,
+                       &t_hi);
+        tri4_pair_slab(ay, by, cy, TRI4_CONST8(r, inv_y, k_inv[1], scalar), r->neg_y, &t_lo,
+                       &t_hi);
+        const __m256 tmin = TRI4_CONST8(r, tmin, k_tmin, scalar);
+        const __m256 pre =
+            _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(z_hi, tmin, _CMP_GE_OQ),
+                                        _mm256_cmp_ps(z_lo, limit, _CMP_LT_OQ)),
+                          _mm256_cmp_ps(t_lo, limit, _CMP_LT_OQ));
+        const __m256 behind = _mm256_and_ps(_mm256_cmp_ps(t_hi, tmin, _CMP_LT_OQ),
+                                            _mm256_cmp_ps(t_lo, tmin, _CMP_LT_OQ));
+        if (((unsigned)_mm256_movemask_ps(_mm256_andnot_ps(_mm256_or_ps(behind, mixed), pre)) &
+             valid) == 0)
+            return 0;
+    }
+
     const __m256 on_edge = tri8_on_edge(&sh);
 
-    const __m256 sz = TRI4_CONST8(r, sz, k_inv[2], scalar);
-    const __m256 Az = _mm256_mul_ps(sz, az);
-    const __m256 Bz = _mm256_mul_ps(sz, bz);
-    const __m256 Cz = _mm256_mul_ps(sz, cz);
-    const __m256 z_lo = _mm256_min_ps(Az, _mm256_min_ps(Bz, Cz));
-    const __m256 z_hi = _mm256_max_ps(Az, _mm256_max_ps(Bz, Cz));
+    if (behind_out != TRI4_BEHIND_FIRST)
+        tri4_pair_depths(TRI4_CONST8(r, sz, k_inv[2], scalar), az, bz, cz, &Az, &Bz, &Cz, &z_lo,
+                         &z_hi);
     const __m256 limit = _mm256_set1_ps(t_max);
     /* The any-hit early return on depth, as tri4_filter_lanes_depth. */
     if (depth_out &&
@@ -576,12 +634,14 @@ static inline unsigned tri4_pair_filter_lanes(const struct tri4_ray *r,
                            _mm256_cmp_ps(z_lo, limit, _CMP_LT_OQ)))) &
          valid) == 0)
         return 0;
-    __m256 t_lo = z_lo;
-    __m256 t_hi = z_hi;
-    tri4_pair_slab(ax, bx, cx, TRI4_CONST8(r, inv_x, k_inv[0], scalar), r->neg_x, &t_lo,
-                   &t_hi);
-    tri4_pair_slab(ay, by, cy, TRI4_CONST8(r, inv_y, k_inv[1], scalar), r->neg_y, &t_lo,
-                   &t_hi);
+    if (behind_out != TRI4_BEHIND_FIRST) {
+        t_lo = z_lo;
+        t_hi = z_hi;
+        tri4_pair_slab(ax, bx, cx, TRI4_CONST8(r, inv_x, k_inv[0], scalar), r->neg_x, &t_lo,
+                       &t_hi);
+        tri4_pair_slab(ay, by, cy, TRI4_CONST8(r, inv_y, k_inv[1], scalar), r->neg_y, &t_lo,
+                       &t_hi);
+    }
     const __m256 geom = _mm256_andnot_ps(
         mixed,
         _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(z_hi, TRI4_CONST8(r, tmin, k_tmin, scalar),

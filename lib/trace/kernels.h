@@ -80,8 +80,9 @@ struct trace_kernels {
     trace_packet_any_fn any_packet;
     /* The 8-wide walks' leaf test on its own (traverse_wide.h,
      * TRACE_WIDE_LEAF8), for conformance/internal/tri4_differential:
-     * the n triangles of p[0], p[1] with the 8-lane call (eight 1) or
-     * the 4-lane calls (eight 0).  NULL in the tables without the
+     * the n triangles of p[0], p[1] with the 8-lane call (eight 1; 2:
+     * the closest-hit walk's first-leaf copy) or the 4-lane calls
+     * (eight 0).  NULL in the tables without the
      * 8-wide walk (scalar, SSE4.2). */
     int (*leaf8)(const struct trace_ray *ray, const struct tri4_packet *p, uint32_t n,
                  float t_max, int any_hit, int early_out, int eight, int found,

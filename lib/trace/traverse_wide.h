@@ -1125,6 +1125,13 @@ static inline int wide_leaf8_test(struct wide_state *s, const struct tri4_packet
 
 WIDE8_LEAF_TEST(wide8_leaf8_closest, wide_leaf8_test, 0, 1, 0, 1, 1)
 WIDE8_LEAF_TEST(wide8_leaf8_full, wide_leaf8_test, 0, 0, 0, 1, 1)
+/* The closest-hit walk's first 8-lane leaf of a ray: the filter refuses
+ * a leaf whose lanes are all missed by the line, outside the depth and
+ * box tests, or wholly before tmin right after the signs
+ * (TRI4_BEHIND_FIRST), with the same answers (tri4_pair_filter_lanes
+ * says why; traverse_wide8_ray.h why only there). */
+WIDE8_LEAF_TEST(wide8_leaf8_closest_first, wide_leaf8_test, 0, 1, 0, TRI4_BEHIND_FIRST, 1)
+WIDE8_LEAF_TEST(wide8_leaf8_full_first, wide_leaf8_test, 0, 0, 0, TRI4_BEHIND_FIRST, 1)
 WIDE8_LEAF_TEST(wide8_leaf8_any, wide_leaf8_test, 1, 1, 1, 0, 0)
 
 #define WIDE8_RAY walk_wide8_ray_leaf8
@@ -1284,7 +1291,9 @@ static const trace_walk1_fn TRACE_WIDE_WALK1_COUNTED[4] = {
  * The leaf of the 8-wide walks on its own, for
  * conformance/internal/tri4_differential: the n triangles of p[0], p[1]
  * (n up to 8), eight 1 with the 8-lane call of the leaf8 walks for
- * 5-8 triangles, 0 with the 4-lane calls on each packet in turn; early_out
+ * 5-8 triangles, 2 with the closest-hit walk's call at a ray's first
+ * leaf (wide8_leaf8_closest_first or _full_first; an any-hit leaf as 1),
+ * 0 with the 4-lane calls on each packet in turn; early_out
  * picks the closest-hit copy (wide8_leaf8_closest or _full).  found 1:
  * *hit is an earlier leaf's hit, whose t is the limit (walk_leaf's rule).
  * Returns found (closest) or occluded (any hit).
@@ -1314,9 +1323,9 @@ static int TRACE_WIDE_LEAF8(const struct trace_ray *ray, const struct tri4_packe
         if (any_hit)
             stop = wide8_leaf8_any(s, p, n);
         else if (early_out)
-            stop = wide8_leaf8_closest(s, p, n);
+            stop = eight == 2 ? wide8_leaf8_closest_first(s, p, n) : wide8_leaf8_closest(s, p, n);
         else
-            stop = wide8_leaf8_full(s, p, n);
+            stop = eight == 2 ? wide8_leaf8_full_first(s, p, n) : wide8_leaf8_full(s, p, n);
     } else {
         for (uint32_t j = 0; j < n && !stop; j += 4) {
             const uint32_t m = n - j < 4 ? n - j : 4;
