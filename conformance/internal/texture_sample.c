@@ -44,12 +44,7 @@ static void set_image(struct scene_texture *tex, int width, int height, const ui
         failures += !CHECKF(0, "no memory for a %dx%d chain", width, height);
         return;
     }
-    /* Level 0 into its tiles (scene_texture_texel_offset). */
-    uint8_t *tiles = scene_texture_chain_level0(chain);
-    for (int j = 0; j < height; j++)
-        for (int i = 0; i < width; i++)
-            memcpy(&tiles[scene_texture_texel_offset(width, i, j)],
-                   &level0[4 * ((size_t)j * (size_t)width + (size_t)i)], 4);
+    memcpy(chain, level0, 4 * (size_t)width * (size_t)height);
     failures += !CHECKF(scene_texture_build_mipmaps(chain, width, height) == 0, "build %dx%d", width, height);
     scene_texture_set_image(tex, width, height, chain);
 }
@@ -239,24 +234,20 @@ static void chain_sizes(void)
         int count;
     } cases[] = {{kitchen, 11}, {wood, 9}, {odd, 3}};
     failures += !CHECKF(scene_texture_level_count(1, 1) == 1, "1x1 has one level");
-    /* A level is whole 4 x 4 tiles; the block a line more for alignment. */
-    failures += !CHECKF(scene_texture_chain_texels(1, 1) == 16 + 16, "1x1 chain");
+    failures += !CHECKF(scene_texture_chain_texels(1, 1) == 1, "1x1 chain");
     failures += !CHECKF(scene_texture_level_count(16384, 16384) == SCENE_TEXTURE_MAX_LEVELS, "16384 levels");
     failures += !CHECKF(scene_texture_level_count(16384, 1) == SCENE_TEXTURE_MAX_LEVELS, "16384x1 levels");
     failures += !CHECKF(scene_texture_level_count(1, 3) == 2, "1x3 levels");
-    /* 64x64 adds 32^2 + ... + 4^2 = 1360, and 2x2 and 1x1 a tile each. */
-    failures += !CHECKF(scene_texture_chain_texels(64, 64) == 4096 + 1360 + 32 + 16, "64x64 chain");
-    /* The kitchen's largest: 4/3 of level 0 and its levels' padding
-     * (522, 261, 130, 65, 2, 1 rounded up to 4), 1,457,664 texels. */
-    failures += !CHECKF(scene_texture_chain_texels(1044, 1044) == 1457664, "1044 chain");
+    /* 4/3 of level 0 at most: 64x64 adds 32^2 + ... + 1 = 1365. */
+    failures += !CHECKF(scene_texture_chain_texels(64, 64) == 4096 + 1365, "64x64 chain");
+    failures += !CHECKF(scene_texture_chain_texels(1044, 1044) <= 1044u * 1044u * 4 / 3, "1044 chain");
     for (int c = 0; c < 3; c++) {
         const int w = cases[c].sizes[0][0], h = cases[c].sizes[0][1];
         failures += !CHECKF(scene_texture_level_count(w, h) == cases[c].count, "%dx%d: %d levels", w, h,
                scene_texture_level_count(w, h));
         size_t total = 0;
         for (int k = 0; k < cases[c].count; k++)
-            total += scene_texture_level_bytes(cases[c].sizes[k][0], cases[c].sizes[k][1]) / 4;
-        total += 16;
+            total += (size_t)cases[c].sizes[k][0] * (size_t)cases[c].sizes[k][1];
         failures += !CHECKF(scene_texture_chain_texels(w, h) == total, "%dx%d: chain of %zu texels", w, h,
                scene_texture_chain_texels(w, h));
         /* The level table of a texture with that image. */
@@ -275,18 +266,16 @@ static void chain_sizes(void)
         for (int k = 0; k < cases[c].count && k < tex.level_count; k++) {
             failures += !CHECKF(tex.levels[k].width == cases[c].sizes[k][0] &&
                        tex.levels[k].height == cases[c].sizes[k][1] &&
-                       tex.levels[k].texels == scene_texture_chain_level0(chain) + offset &&
-                       scene_texture_level_start(w, h, k) == offset &&
-                       ((uintptr_t)tex.levels[k].texels & 63) == 0,
+                       tex.levels[k].texels == chain + 4 * offset,
                    "%dx%d: level %d is %dx%d", w, h, k, tex.levels[k].width,
                    tex.levels[k].height);
-            offset += scene_texture_level_bytes(cases[c].sizes[k][0], cases[c].sizes[k][1]);
+            offset += (size_t)cases[c].sizes[k][0] * (size_t)cases[c].sizes[k][1];
         }
         rt_free(tex.texels);
     }
     /* A failed build allocates nothing and leaves level 0 alone; a 1x1
      * image needs no working memory at all. */
-    uint8_t chain[4 * (64 + 16 + 16 + 16 + 16)];
+    uint8_t chain[4 * (64 + 16 + 4 + 1)];
     memset(chain, 7, sizeof(chain));
     rt_alloc_fail_after(0);
     int r8 = scene_texture_build_mipmaps(chain, 8, 8);
@@ -294,7 +283,7 @@ static void chain_sizes(void)
     rt_alloc_fail_reset();
     failures += !CHECKF(r8 == -1, "a build without memory succeeded");
     failures += !CHECKF(r1 == 0, "a 1x1 build needed memory");
-    for (size_t i = 0; i < sizeof(chain); i++)
+    for (int i = 0; i < 4 * 64; i++)
         if (chain[i] != 7) {
             failures += !CHECKF(0, "a failed build wrote level 0");
             break;
@@ -308,21 +297,17 @@ static const uint8_t odd_red[3][5] = {
 
 static void chain_texels(void)
 {
-    /* Level 0, 5x3, is 2 x 1 tiles; levels 1 and 2 a tile each. */
-    uint8_t block[4 * (32 + 16 + 16 + 16)];
-    uint8_t *chain = scene_texture_chain_level0(block);
+    uint8_t chain[4 * (15 + 2 + 1)];
     for (int j = 0; j < 3; j++)
         for (int i = 0; i < 5; i++) {
-            uint8_t *p = &chain[scene_texture_texel_offset(5, i, j)];
+            uint8_t *p = &chain[4 * (j * 5 + i)];
             p[0] = odd_red[j][i];
             p[1] = (uint8_t)(255 - odd_red[j][i]);
             p[2] = 77;
             p[3] = 255;
         }
-    failures += !CHECKF(scene_texture_build_mipmaps(block, 5, 3) == 0, "build 5x3");
-    /* Texels (0, 0) and (1, 0) of a level are its first two in any tile. */
-    const uint8_t *l1 = &chain[scene_texture_level_start(5, 3, 1)];
-    const uint8_t *l2 = &chain[scene_texture_level_start(5, 3, 2)];
+    failures += !CHECKF(scene_texture_build_mipmaps(chain, 5, 3) == 0, "build 5x3");
+    const uint8_t *l1 = &chain[4 * 15], *l2 = &chain[4 * 17];
     /* Level 1 is 2x1.  Its texel 0 covers columns [0, 2.5) of level 0:
      * weights 2/5, 2/5, 1/5 on columns 0, 1, 2, and 1/3 on each row:
      *   red = (2*10 + 2*200 + 30  +  2*0 + 2*100 + 50  +  2*60 + 2*70 + 80) / 15
@@ -340,8 +325,7 @@ static void chain_texels(void)
     failures += !CHECKF(l2[0] == 91 && l2[1] == 164 && l2[2] == 77 && l2[3] == 255,
            "level 2 is (%d, %d, %d, %d)", l2[0], l2[1], l2[2], l2[3]);
     /* Level 0 is untouched. */
-    failures += !CHECKF(chain[0] == 10 && chain[scene_texture_texel_offset(5, 4, 2)] == 140,
-                        "level 0 changed");
+    failures += !CHECKF(chain[0] == 10 && chain[4 * 14] == 140, "level 0 changed");
 }
 
 /* A large odd-sized image of noise: its 1x1 level is its mean. */
@@ -355,21 +339,15 @@ static void chain_mean_large(void)
     }
     uint32_t x = 88172645u;
     double sum[4] = {0, 0, 0, 0};
-    uint8_t *level0 = scene_texture_chain_level0(chain);
     for (size_t i = 0; i < 4 * (size_t)w * (size_t)h; i++) {
         x ^= x << 13;
         x ^= x >> 17;
         x ^= x << 5;
-        const size_t texel = i / 4;
-        uint8_t *p = &level0[scene_texture_texel_offset(w, (int)(texel % (size_t)w),
-                                                        (int)(texel / (size_t)w)) +
-                             i % 4];
-        *p = (uint8_t)((i % 4 == 3) ? 255 : (x >> 24) / (1 + i % 4));
-        sum[i % 4] += *p;
+        chain[i] = (uint8_t)((i % 4 == 3) ? 255 : (x >> 24) / (1 + i % 4));
+        sum[i % 4] += chain[i];
     }
     failures += !CHECKF(scene_texture_build_mipmaps(chain, w, h) == 0, "build %dx%d", w, h);
-    const uint8_t *last =
-        &level0[scene_texture_level_start(w, h, scene_texture_level_count(w, h) - 1)];
+    const uint8_t *last = &chain[4 * (scene_texture_chain_texels(w, h) - 1)];
     for (int c = 0; c < 4; c++) {
         double mean = sum[c] / ((double)w * h);
         failures += !CHECKF(fabs(last[c] - mean) <= 0.5 + 1e-3, "1x1 channel %d is %d, mean %.4f", c, last[c],
@@ -541,7 +519,7 @@ static int ref_wrap(long i, int n, enum scene_texture_wrap wrap)
 
 static void ref_texel(const struct scene_texture_level *lv, int i, int j, float rgba[4])
 {
-    const uint8_t *p = &lv->texels[scene_texture_texel_offset(lv->width, i, j)];
+    const uint8_t *p = &lv->texels[4 * ((size_t)j * (size_t)lv->width + (size_t)i)];
     for (int k = 0; k < 4; k++)
         rgba[k] = (float)p[k] / 255.0f;
 }
