@@ -144,15 +144,14 @@ static uint8_t upload_component(const struct upload *u, size_t i, size_t j, size
 }
 
 /* Writes the upload's width x height pixels into the RGBA texels of a
- * level `level_width` wide at (x, y), `texels` its first tile (texels in
- * tiles, scene_texture_texel_offset); alpha 255 where the data has none
+ * level `level_width` wide at (x, y); alpha 255 where the data has none
  * or the texture is opaque. */
 static void unpack_pixels(const struct upload *u, int width, int height, uint8_t *texels,
                           int level_width, int x, int y, int opaque)
 {
     for (size_t j = 0; j < (size_t)height; j++)
         for (size_t i = 0; i < (size_t)width; i++) {
-            uint8_t *t = &texels[scene_texture_texel_offset(level_width, x + (int)i, y + (int)j)];
+            uint8_t *t = &texels[4 * (((size_t)y + j) * (size_t)level_width + (size_t)x + i)];
             if (!u->pixels) {
                 t[0] = t[1] = t[2] = 0; /* NULL: a black image */
                 t[3] = 255;
@@ -244,7 +243,7 @@ void rtTexImage2D(RTenum target, RTint level, RTint internalformat, RTsizei widt
     }
     struct upload u;
     upload_init(&u, ctx, pixels, format, type, width);
-    unpack_pixels(&u, width, height, scene_texture_chain_level0(texels), width, 0, 0, opaque);
+    unpack_pixels(&u, width, height, texels, width, 0, 0, opaque);
     /* Built here, on the API thread, whatever the filters: a later
      * rtTexParameteri can choose a mipmapped filter without any work. */
     if (scene_texture_build_mipmaps(texels, width, height)) {
@@ -306,8 +305,7 @@ void rtTexSubImage2D(RTenum target, RTint level, RTint xoffset, RTint yoffset, R
         return; /* nothing to copy (GL leaves NULL undefined; Mesa copies nothing) */
     struct upload u;
     upload_init(&u, ctx, pixels, format, type, width);
-    uint8_t *level0 = tex->texels + (tex->levels[0].texels - tex->texels);
-    unpack_pixels(&u, width, height, level0, tex->width, xoffset, yoffset, tex->opaque);
+    unpack_pixels(&u, width, height, tex->texels, tex->width, xoffset, yoffset, tex->opaque);
     if (scene_texture_build_mipmaps(tex->texels, tex->width, tex->height))
         rt_error(ctx, RT_OUT_OF_MEMORY,
                  "rtTexSubImage2D: out of memory rebuilding the mipmaps of texture %u",

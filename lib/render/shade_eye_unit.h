@@ -36,7 +36,6 @@
 #define scene_texture_build_mipmaps SHADE_EYE_NAME(scene_texture_build_mipmaps)
 #define scene_texture_chain_texels SHADE_EYE_NAME(scene_texture_chain_texels)
 #define scene_texture_level_count SHADE_EYE_NAME(scene_texture_level_count)
-#define scene_texture_level_start SHADE_EYE_NAME(scene_texture_level_start)
 #define scene_texture_sample SHADE_EYE_NAME(scene_texture_sample)
 #define scene_texture_sample_level SHADE_EYE_NAME(scene_texture_sample_level)
 #define scene_texture_sample_lod SHADE_EYE_NAME(scene_texture_sample_lod)

@@ -112,21 +112,16 @@ int scene_texture_level_count(int width, int height)
     return count;
 }
 
-size_t scene_texture_level_start(int width, int height, int level)
+size_t scene_texture_chain_texels(int width, int height)
 {
-    size_t bytes = 0;
-    for (int k = 0; k < level; k++) {
-        bytes += scene_texture_level_bytes(width, height);
+    size_t total = 0;
+    for (;;) {
+        total += (size_t)width * (size_t)height;
+        if (width == 1 && height == 1)
+            return total;
         width = half_size(width);
         height = half_size(height);
     }
-    return bytes;
-}
-
-size_t scene_texture_chain_texels(int width, int height)
-{
-    const int levels = scene_texture_level_count(width, height);
-    return (scene_texture_level_start(width, height, levels) + 64) / 4;
 }
 
 /*
@@ -207,7 +202,7 @@ static void make_row(struct mip_level *lv, int k, int levels)
     const int ny = box_taps(m, m2, r, &y0, wy);
     /* The last level keeps no float rows: nothing is made from it. */
     float *out = dst->rows ? &dst->rows[(size_t)(r % MIP_MAX_TAPS) * 4 * (size_t)n2] : NULL;
-    uint8_t *texels = dst->texels;
+    uint8_t *texels = &dst->texels[(size_t)r * 4 * (size_t)n2];
     const double total = (double)n * (double)m;
     for (int i = 0; i < n2; i++) {
         const int nx = box_taps(n, n2, i, &x0, wx);
@@ -224,7 +219,7 @@ static void make_row(struct mip_level *lv, int k, int levels)
             const double v = sum[c] / total; /* in [0, 255]: a weighted mean */
             if (out)
                 out[4 * i + c] = (float)v;
-            texels[scene_texture_texel_offset(n2, i, r) + (size_t)c] = (uint8_t)lrint(v);
+            texels[4 * i + c] = (uint8_t)lrint(v);
         }
     }
     dst->next_row++;
@@ -238,14 +233,13 @@ int scene_texture_build_mipmaps(uint8_t *chain, int width, int height)
     if (levels < 2)
         return 0;
     /* Float rows for every level that has a level after it. */
-    uint8_t *level0 = scene_texture_chain_level0(chain);
     size_t row_floats = 0, offset = 0;
     for (int k = 0, w = width, h = height; k < levels; k++) {
         lv[k].width = w;
         lv[k].height = h;
-        lv[k].texels = level0 + offset;
+        lv[k].texels = chain + 4 * offset;
         lv[k].next_row = 0;
-        offset += scene_texture_level_bytes(w, h);
+        offset += (size_t)w * (size_t)h;
         if (k + 1 < levels)
             row_floats += MIP_MAX_TAPS * 4 * (size_t)w;
         w = half_size(w);
@@ -261,12 +255,10 @@ int scene_texture_build_mipmaps(uint8_t *chain, int width, int height)
     lv[levels - 1].rows = NULL;
     /* Level 0 streams in row by row; the rows below follow. */
     for (int j = 0; j < height; j++) {
+        const uint8_t *in = &chain[(size_t)j * 4 * (size_t)width];
         float *slot = &lv[0].rows[(size_t)(j % MIP_MAX_TAPS) * 4 * (size_t)width];
-        for (int i = 0; i < width; i++) {
-            const uint8_t *in = &level0[scene_texture_texel_offset(width, i, j)];
-            for (int c = 0; c < 4; c++)
-                slot[4 * i + c] = (float)in[c];
-        }
+        for (size_t c = 0; c < 4 * (size_t)width; c++)
+            slot[c] = (float)in[c];
         row_ready(lv, 0, j, levels);
     }
     rt_free(lv[0].rows);
@@ -280,12 +272,12 @@ void scene_texture_set_image(struct scene_texture *tex, int width, int height, u
     tex->height = height;
     tex->texels = chain;
     tex->level_count = scene_texture_level_count(width, height);
-    const uint8_t *p = scene_texture_chain_level0(chain);
+    const uint8_t *p = chain;
     for (int k = 0; k < tex->level_count; k++) {
         tex->levels[k].width = width;
         tex->levels[k].height = height;
         tex->levels[k].texels = p;
-        p += scene_texture_level_bytes(width, height);
+        p += 4 * (size_t)width * (size_t)height;
         width = half_size(width);
         height = half_size(height);
     }
@@ -353,7 +345,7 @@ static const float unit8[256] = {UNIT8_64(0), UNIT8_64(64), UNIT8_64(128), UNIT8
 
 static void fetch_texel(const struct scene_texture_level *lv, int i, int j, float rgba[4])
 {
-    const uint8_t *p = &lv->texels[scene_texture_texel_offset(lv->width, i, j)];
+    const uint8_t *p = &lv->texels[4 * ((size_t)j * (size_t)lv->width + (size_t)i)];
     for (int k = 0; k < 4; k++)
         rgba[k] = unit8[p[k]];
 }
@@ -363,7 +355,7 @@ static void fetch_texel(const struct scene_texture_level *lv, int i, int j, floa
  * quotient of the byte (exact in float) by 255, the value unit8 holds. */
 static __m128 texel_lanes(const struct scene_texture_level *lv, int i, int j)
 {
-    const uint8_t *p = &lv->texels[scene_texture_texel_offset(lv->width, i, j)];
+    const uint8_t *p = &lv->texels[4 * ((size_t)j * (size_t)lv->width + (size_t)i)];
     int32_t bits;
     memcpy(&bits, p, sizeof(bits));
     const __m128i zero = _mm_setzero_si128();
@@ -563,33 +555,23 @@ static void sample_trilinear(const struct scene_texture *tex, int level, __m128d
     const __m128i lo = _mm_unpacklo_epi64(ii, ji);
     const __m128i w0 = wrap_lanes(lo, n, repeat);
     const __m128i w1 = wrap_lanes(_mm_add_epi32(lo, _mm_set1_epi32(1)), n, repeat);
-    /* The tiled offsets (scene_texture_texel_offset) of both levels'
-     * rows, (fine j0, coarse j0, fine j1, coarse j1): 64 (j / 4) t + 16
-     * (j % 4) for a level of t = ceil(w / 4) tiles a row.  j / 4 and t
-     * are in [0, 2^12], so the 16-bit products madd forms are the exact
-     * 32-bit ones (the high halves are 0), and every offset is below
-     * 2^31 (a level is at most 2^30 bytes). */
-    const __m128i three = _mm_set1_epi32(3);
-    const __m128i tiles = _mm_srli_epi32(_mm_add_epi32(n, three), 2); /* (t, t', ., .) */
-    const __m128i js = _mm_unpackhi_epi64(w0, w1);
-    const __m128i rows = _mm_add_epi32(
-        _mm_slli_epi32(_mm_madd_epi16(_mm_srli_epi32(js, 2),
-                                      _mm_shuffle_epi32(tiles, _MM_SHUFFLE(1, 0, 1, 0))),
-                       6),
-        _mm_slli_epi32(_mm_and_si128(js, three), 4));
-    /* The columns' offsets in their tile row, 64 (i / 4) + 4 (i % 4):
-     * (i0 f, i1 f, i0 c, i1 c).  Then c00, c10, c01, c11 of each level,
-     * a row's offset plus a column's. */
-    const __m128i is = _mm_unpacklo_epi32(w0, w1);
-    const __m128i cols = _mm_add_epi32(_mm_slli_epi32(_mm_srli_epi32(is, 2), 6),
-                                       _mm_slli_epi32(_mm_and_si128(is, three), 2));
+    /* The rows j0 w, j1 w of both levels, (fine j0, coarse j0, fine j1,
+     * coarse j1): every factor is in [0, 2^14], so the 16-bit products
+     * madd forms are the exact 32-bit ones (the high halves are 0). */
+    const __m128i rows = _mm_madd_epi16(_mm_unpackhi_epi64(w0, w1),
+                                        _mm_shuffle_epi32(n, _MM_SHUFFLE(1, 0, 1, 0)));
+    /* (i0, i1) of the fine level twice plus (row j0, row j0, row j1, row
+     * j1) of it; the same for the coarse level: c00, c10, c01, c11. */
+    const __m128i cols = _mm_unpacklo_epi32(w0, w1); /* i0 f, i1 f, i0 c, i1 c */
     int32_t off[2][4];
     _mm_storeu_si128((__m128i *)off[0],
-                     _mm_add_epi32(_mm_shuffle_epi32(cols, _MM_SHUFFLE(1, 0, 1, 0)),
-                                   _mm_shuffle_epi32(rows, _MM_SHUFFLE(2, 2, 0, 0))));
+                     _mm_slli_epi32(_mm_add_epi32(_mm_shuffle_epi32(cols, _MM_SHUFFLE(1, 0, 1, 0)),
+                                                  _mm_shuffle_epi32(rows, _MM_SHUFFLE(2, 2, 0, 0))),
+                                    2));
     _mm_storeu_si128((__m128i *)off[1],
-                     _mm_add_epi32(_mm_shuffle_epi32(cols, _MM_SHUFFLE(3, 2, 3, 2)),
-                                   _mm_shuffle_epi32(rows, _MM_SHUFFLE(3, 3, 1, 1))));
+                     _mm_slli_epi32(_mm_add_epi32(_mm_shuffle_epi32(cols, _MM_SHUFFLE(3, 2, 3, 2)),
+                                                  _mm_shuffle_epi32(rows, _MM_SHUFFLE(3, 3, 1, 1))),
+                                    2));
     __m128 c[2];
     for (int l = 0; l < 2; l++)
         c[l] = bilinear_at(lv[l]->texels, off[l], a[l], b[l]);
@@ -705,26 +687,16 @@ static inline void bilinear8_offsets(const struct scene_texture *tex, __m256i le
     __m256i i0, i1, j0, j1;
     wrap_pair8(vi, w, tex->wrap_s, &i0, &i1);
     wrap_pair8(vj, h, tex->wrap_t, &j0, &j1);
-    /* The tiled offset (scene_texture_texel_offset) as a row's part,
-     * first + 64 (j / 4) t + 16 (j % 4) for a level of t = ceil(w / 4)
-     * tiles a row, plus a column's, 64 (i / 4) + 4 (i % 4): each row's
-     * and each column's once for the four corners.  (j / 4) t is at most
-     * 2^12 by 2^12, exact in int32; lane arithmetic is modulo 2^32, so
-     * the sum is the byte offset, below 2^31, whatever the grouping. */
-    const __m256i three = _mm256_set1_epi32(3);
-    const __m256i tiles = _mm256_srli_epi32(_mm256_add_epi32(w, three), 2);
-#define TILE_ROW(j)                                                                               \
-    _mm256_add_epi32(                                                                             \
-        first, _mm256_add_epi32(                                                                  \
-                   _mm256_slli_epi32(_mm256_mullo_epi32(_mm256_srli_epi32(j, 2), tiles), 6),      \
-                   _mm256_slli_epi32(_mm256_and_si256(j, three), 4)))
-#define TILE_COLUMN(i)                                                                            \
-    _mm256_add_epi32(_mm256_slli_epi32(_mm256_srli_epi32(i, 2), 6),                               \
-                     _mm256_slli_epi32(_mm256_and_si256(i, three), 2))
-    const __m256i row0 = TILE_ROW(j0), row1 = TILE_ROW(j1);
-    const __m256i col0 = TILE_COLUMN(i0), col1 = TILE_COLUMN(i1);
-#undef TILE_ROW
-#undef TILE_COLUMN
+    /* Rows j w: at most 2^14 by 2^14, exact in int32. */
+    const __m256i r0 = _mm256_mullo_epi32(j0, w);
+    const __m256i r1 = _mm256_mullo_epi32(j1, w);
+    /* first + 4 (r + i) as (first + 4 r) + 4 i: each row's start and
+     * each column's bytes once for the four corners (lane arithmetic is
+     * modulo 2^32, so the two forms are the same integer; both are the
+     * byte offset, below 2^31). */
+    const __m256i row0 = _mm256_add_epi32(first, _mm256_slli_epi32(r0, 2));
+    const __m256i row1 = _mm256_add_epi32(first, _mm256_slli_epi32(r1, 2));
+    const __m256i col0 = _mm256_slli_epi32(i0, 2), col1 = _mm256_slli_epi32(i1, 2);
     off[0] = _mm256_add_epi32(row0, col0);
     off[1] = _mm256_add_epi32(row0, col1);
     off[2] = _mm256_add_epi32(row1, col0);

@@ -4,32 +4,18 @@
  *
  * A texture is named by a non-zero uint32_t, as a GL texture object.  Its
  * image is stored as 8-bit RGBA texels (GL's unsized RGB/RGBA internal
- * formats are 8 bits per component in practice); texel (i, j) of a level
- * w x h covers s in [i, i+1)/w, t in [j, j+1)/h, so row 0 is t = 0 as in
- * OpenGL (sec. 3.8 of the OpenGL 1.1 specification).  RGB images store
- * alpha 255.
- *
- * Texels are stored in 4 x 4 tiles, not row by row: a tile is 64 bytes,
- * one cache line, tiles row-major across the level (a level padded to a
- * multiple of 4 texels each way), texels row-major inside a tile, so
- * texel (i, j) lies scene_texture_texel_offset(w, i, j) bytes past the
- * level's first.  A bilinear footprint's 2 x 2 texels then share one line
- * 9 times in 16 (two lines 6 times, four once) where rows of a row-major
- * level never share one, and a pixel's neighbours a row up or down in
- * texture space find most of their texels in the lines already fetched:
- * the tiled ("blocked") layout of texture caches (Hakura and Gupta, "The
- * Design and Analysis of a Cache Architecture for Texture Mapping", ISCA
- * 1997).  Only where a texel lives changes, never its value, so
- * every lookup reads the same bytes as in a row-major level.
+ * formats are 8 bits per component in practice), row 0 first: texel (i, j)
+ * of a level w x h is texels[4 * (j * w + i)] and covers s in
+ * [i, i+1)/w, t in [j, j+1)/h, so row 0 is t = 0 as in OpenGL (sec. 3.8 of
+ * the OpenGL 1.1 specification).  RGB images store alpha 255.
  *
  * Every image carries its complete mip chain, generated from level 0 when
  * the image is set (GL_GENERATE_MIPMAP; levels > 0 cannot be uploaded):
  * level k+1 is max(1, floor(w_k / 2)) x max(1, floor(h_k / 2)), as in
  * OpenGL 2.0 for non-power-of-two sizes, down to 1x1.  The levels lie one
- * after the other in one block, level 0 first on the block's first 64-byte
- * boundary (scene_texture_chain_level0), each level a whole number of
- * tiles; the chain adds at most about 1/3 to level 0 (a 1044x1044 image,
- * the largest of the BART kitchen, takes 4.4 MB, 5.8 MB with its chain).
+ * after the other in one block, level 0 first; the chain adds at most 1/3
+ * to level 0 (a 1044x1044 image, the largest of the BART kitchen, takes
+ * 4.4 MB, 5.8 MB with its chain).
  *
  * Threading: the table and the textures change only on the API thread,
  * never while a frame or a query runs; render threads only call
@@ -67,7 +53,7 @@ enum scene_texture_wrap { SCENE_WRAP_REPEAT, SCENE_WRAP_CLAMP_TO_EDGE };
 struct scene_texture_level {
     int width;
     int height;
-    const uint8_t *texels; /* scene_texture_level_bytes(width, height) bytes, RGBA tiles */
+    const uint8_t *texels; /* 4 * width * height bytes, RGBA */
 };
 
 struct scene_texture {
@@ -75,7 +61,7 @@ struct scene_texture {
     int created;   /* bound at least once (rtIsTexture); 0: only a reserved name */
     int width;     /* of level 0; 0 while there is no image */
     int height;
-    uint8_t *texels; /* the chain's block (level 0 at its first 64-byte boundary); NULL while no image */
+    uint8_t *texels; /* the chain, level 0 first (4 bytes a texel); NULL while no image */
     int level_count; /* levels in the chain, down to 1x1; 0 while there is no image */
     struct scene_texture_level levels[SCENE_TEXTURE_MAX_LEVELS];
     enum scene_texture_filter min_filter;
@@ -113,42 +99,13 @@ void scene_textures_remove(struct scene_textures *table, uint32_t name);
  * for sizes 1 .. SCENE_TEXTURE_MAX_SIZE): 1 + floor(log2(max(width, height))). */
 int scene_texture_level_count(int width, int height);
 
-/* The byte offset of texel (i, j) (0 <= i < width, 0 <= j) in a level
- * `width` texels wide: its 4 x 4 tile's, ((j / 4) ceil(width / 4) +
- * i / 4) 64, plus its own in the tile, (4 (j % 4) + i % 4) 4. */
-static inline size_t scene_texture_texel_offset(int width, int i, int j)
-{
-    const size_t tiles_per_row = ((size_t)width + 3) >> 2;
-    return (((size_t)(j >> 2) * tiles_per_row + (size_t)(i >> 2)) << 6) +
-           (size_t)(((j & 3) << 4) | ((i & 3) << 2));
-}
-
-/* The bytes of a width x height level: whole tiles, a multiple of 64. */
-static inline size_t scene_texture_level_bytes(int width, int height)
-{
-    return ((((size_t)width + 3) >> 2) * (((size_t)height + 3) >> 2)) << 6;
-}
-
-/* Level 0 of a chain block: its first 64-byte boundary, so that each
- * tile is one cache line (the block is one line longer than its levels,
- * scene_texture_chain_texels). */
-static inline uint8_t *scene_texture_chain_level0(uint8_t *chain)
-{
-    return (uint8_t *)(((uintptr_t)chain + 63) & ~(uintptr_t)63);
-}
-
-/* The byte offset of level `level` (0 .. scene_texture_level_count - 1)
- * of a width x height image's chain from its level 0. */
-size_t scene_texture_level_start(int width, int height, int level);
-
-/* The size, in units of 4 bytes, of the block scene_texture_set_image
- * takes for a width x height image and all its levels: their tiles, and
- * 16 texels (a cache line) more for the alignment of level 0. */
+/* Texels in a width x height image and all its levels, the size of the
+ * block scene_texture_set_image takes (in units of 4 bytes). */
 size_t scene_texture_chain_texels(int width, int height);
 
 /*
- * Fills levels 1 .. of the chain block `chain` (scene_texture_chain_texels(width,
- * height) texels) from its level 0 (at scene_texture_chain_level0).  Each
+ * Fills levels 1 .. of the chain `chain` (scene_texture_chain_texels(width,
+ * height) texels) from its level 0, the first width * height texels.  Each
  * level is the previous one filtered by the area-weighted box (polyphase
  * box, see texture.c), so odd sizes are filtered properly and each level's
  * mean is the mean of level 0 up to the final rounding to 8 bits.  Returns
