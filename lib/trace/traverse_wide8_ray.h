@@ -88,7 +88,11 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
      * the top, which no push prefetched, is not fetched cold when its
      * turn comes.  A hint only: no value is read from it, so the walk's
      * answers and counts are the same.  Not in the any-hit walks (sr3's
-     * measurement: the push's node prefetch cost their shadow rays). */
+     * measurement: the push's node prefetch cost their shadow rays).
+     * Only at the pop after a leaf, not at the node loop's pop after a
+     * node none of whose children the ray hits: there it cost the soup's
+     * random rays 16 instructions of their 2001 (callgrind, AVX2) and
+     * the clock did not miss it (performance-log.md, round 43, rw2). */
 #define WIDE8_PREFETCH_NEXT_TOP()                                                                 \
     do {                                                                                          \
         if (!any_hit && prefetch_top && sp) {                                                     \
@@ -290,7 +294,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                 }
                 cur = st_child[sp];
                 cur_count = st_count[sp];
-                WIDE8_PREFETCH_NEXT_TOP();
+                /* No WIDE8_PREFETCH_NEXT_TOP here (above). */
             }
         }
         {
