@@ -526,6 +526,21 @@ static inline void tri4_pair_store(float *lo, float *hi, __m256 v)
 
 /* The 8-lane filter's depths (sz times the z differences) and their
  * range, as tri4_filter_lanes computes them. */
+/* The triangles' boxes along the ray: the depth range [z_lo, z_hi]
+ * narrowed by the x and y slabs, in the 8-lane filter's order. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void tri4_pair_box_interval(const struct tri4_ray *r, int scalar, __m256 ax,
+                                          __m256 bx, __m256 cx, __m256 ay, __m256 by, __m256 cy,
+                                          __m256 z_lo, __m256 z_hi, __m256 *t_lo, __m256 *t_hi)
+{
+    *t_lo = z_lo;
+    *t_hi = z_hi;
+    tri4_pair_slab(ax, bx, cx, TRI4_CONST8(r, inv_x, k_inv[0], scalar), r->neg_x, t_lo, t_hi);
+    tri4_pair_slab(ay, by, cy, TRI4_CONST8(r, inv_y, k_inv[1], scalar), r->neg_y, t_lo, t_hi);
+}
+
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
@@ -602,12 +617,7 @@ static inline unsigned tri4_pair_filter_lanes(const struct tri4_ray *r,
         tri4_pair_depths(TRI4_CONST8(r, sz, k_inv[2], scalar), az, bz, cz, &Az, &Bz, &Cz, &z_lo,
                          &z_hi);
         const __m256 limit = _mm256_set1_ps(t_max);
-        t_lo = z_lo;
-        t_hi = z_hi;
-        tri4_pair_slab(ax, bx, cx, TRI4_CONST8(r, inv_x, k_inv[0], scalar), r->neg_x, &t_lo,
-                       &t_hi);
-        tri4_pair_slab(ay, by, cy, TRI4_CONST8(r, inv_y, k_inv[1], scalar), r->neg_y, &t_lo,
-                       &t_hi);
+        tri4_pair_box_interval(r, scalar, ax, bx, cx, ay, by, cy, z_lo, z_hi, &t_lo, &t_hi);
         const __m256 tmin = TRI4_CONST8(r, tmin, k_tmin, scalar);
         const __m256 pre =
             _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(z_hi, tmin, _CMP_GE_OQ),
@@ -634,14 +644,8 @@ static inline unsigned tri4_pair_filter_lanes(const struct tri4_ray *r,
                            _mm256_cmp_ps(z_lo, limit, _CMP_LT_OQ)))) &
          valid) == 0)
         return 0;
-    if (behind_out != TRI4_BEHIND_FIRST) {
-        t_lo = z_lo;
-        t_hi = z_hi;
-        tri4_pair_slab(ax, bx, cx, TRI4_CONST8(r, inv_x, k_inv[0], scalar), r->neg_x, &t_lo,
-                       &t_hi);
-        tri4_pair_slab(ay, by, cy, TRI4_CONST8(r, inv_y, k_inv[1], scalar), r->neg_y, &t_lo,
-                       &t_hi);
-    }
+    if (behind_out != TRI4_BEHIND_FIRST)
+        tri4_pair_box_interval(r, scalar, ax, bx, cx, ay, by, cy, z_lo, z_hi, &t_lo, &t_hi);
     const __m256 geom = _mm256_andnot_ps(
         mixed,
         _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(z_hi, TRI4_CONST8(r, tmin, k_tmin, scalar),
