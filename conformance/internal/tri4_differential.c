@@ -15,8 +15,9 @@
  *    u, v and primitive, closest and any.
  * 3. a leaf of 5-8 triangles in two packets as walk_wide8_ray_leaf8 of the AVX2
  *    and AVX-512 tables tests it, one 8-lane call (tri4_pair_filter_lanes;
- *    also the closest-hit walk's first-leaf copy, which tests the
- *    triangles' boxes before the shear), against the same leaf as two 4-lane calls and against walk_leaf's
+ *    also the closest-hit walk's copy for a ray's first leaf, which may
+ *    refuse the whole leaf right after the signs), against the same leaf
+ *    as two 4-lane calls and against walk_leaf's
  *    loop over its triangles: found, t, u, v and primitive bit for bit,
  *    closest (with and without the filter's early return, with and
  *    without an earlier leaf's hit to beat) and any; duplicates across
@@ -629,8 +630,9 @@ static void pair_case(struct tg_rng *r, const leaf8_fn *fns, int fn_count, uint6
         }
         for (int f = 0; f < fn_count; f++) {
             for (int early = 0; early < 2; early++) {
-                /* eight 2: the closest-hit walk's first-leaf copy,
-                 * which tests the triangles' boxes before the shear. */
+                /* eight 2: the closest-hit walk's copy for a ray's
+                 * first leaf, which may refuse the whole leaf right
+                 * after the signs (TRI4_BEHIND_FIRST). */
                 for (int eight = 0; eight < 3; eight++) {
                     struct trace_hit h = start->hit;
                     const int found = fns[f](&ray, p, (uint32_t)n, t_max, any, early, eight,

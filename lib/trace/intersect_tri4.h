@@ -494,6 +494,42 @@ static inline void tri4_pair_store(float *lo, float *hi, __m256 v)
     _mm_storeu_ps(hi, _mm256_extractf128_ps(v, 1));
 }
 
+/* behind_out's value for the 8-lane filter that refuses a leaf whose
+ * lanes are all missed or wholly before tmin right after the signs
+ * (tri4_pair_filter_lanes; the closest-hit walk's first 8-lane leaf of
+ * a ray, traverse_wide8_ray.h). */
+#define TRI4_BEHIND_FIRST 2
+
+/* The 8-lane filter's depths (sz times the z differences) and their
+ * range, as tri4_filter_lanes computes them. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void tri4_pair_depths(__m256 sz, __m256 az, __m256 bz, __m256 cz, __m256 *Az,
+                                    __m256 *Bz, __m256 *Cz, __m256 *z_lo, __m256 *z_hi)
+{
+    *Az = _mm256_mul_ps(sz, az);
+    *Bz = _mm256_mul_ps(sz, bz);
+    *Cz = _mm256_mul_ps(sz, cz);
+    *z_lo = _mm256_min_ps(*Az, _mm256_min_ps(*Bz, *Cz));
+    *z_hi = _mm256_max_ps(*Az, _mm256_max_ps(*Bz, *Cz));
+}
+
+/* The triangles' boxes along the ray: the depth range [z_lo, z_hi]
+ * narrowed by the x and y slabs, in the 8-lane filter's order. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void tri4_pair_box_interval(const struct tri4_ray *r, int scalar, __m256 ax,
+                                          __m256 bx, __m256 cx, __m256 ay, __m256 by, __m256 cy,
+                                          __m256 z_lo, __m256 z_hi, __m256 *t_lo, __m256 *t_hi)
+{
+    *t_lo = z_lo;
+    *t_hi = z_hi;
+    tri4_pair_slab(ax, bx, cx, TRI4_CONST8(r, inv_x, k_inv[0], scalar), r->neg_x, t_lo, t_hi);
+    tri4_pair_slab(ay, by, cy, TRI4_CONST8(r, inv_y, k_inv[1], scalar), r->neg_y, t_lo, t_hi);
+}
+
 /*
  * tri4_filter_lanes on the two consecutive packets p[0], p[1] of a leaf
  * of 5-8 triangles at once (lanes 0-3: p[0]'s, lanes 4-7: p[1]'s), with
@@ -518,42 +554,6 @@ static inline void tri4_pair_store(float *lo, float *hi, __m256 v)
  * that keep nothing pay nothing (s6's form in `geom` made every call pay
  * and lengthened that chain).
  */
-/* behind_out's value for the 8-lane filter that refuses a leaf whose
- * lanes are all missed or wholly before tmin right after the signs
- * (tri4_pair_filter_lanes; the closest-hit walk's first 8-lane leaf of
- * a ray, traverse_wide8_ray.h). */
-#define TRI4_BEHIND_FIRST 2
-
-/* The 8-lane filter's depths (sz times the z differences) and their
- * range, as tri4_filter_lanes computes them. */
-/* The triangles' boxes along the ray: the depth range [z_lo, z_hi]
- * narrowed by the x and y slabs, in the 8-lane filter's order. */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline void tri4_pair_box_interval(const struct tri4_ray *r, int scalar, __m256 ax,
-                                          __m256 bx, __m256 cx, __m256 ay, __m256 by, __m256 cy,
-                                          __m256 z_lo, __m256 z_hi, __m256 *t_lo, __m256 *t_hi)
-{
-    *t_lo = z_lo;
-    *t_hi = z_hi;
-    tri4_pair_slab(ax, bx, cx, TRI4_CONST8(r, inv_x, k_inv[0], scalar), r->neg_x, t_lo, t_hi);
-    tri4_pair_slab(ay, by, cy, TRI4_CONST8(r, inv_y, k_inv[1], scalar), r->neg_y, t_lo, t_hi);
-}
-
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline void tri4_pair_depths(__m256 sz, __m256 az, __m256 bz, __m256 cz, __m256 *Az,
-                                    __m256 *Bz, __m256 *Cz, __m256 *z_lo, __m256 *z_hi)
-{
-    *Az = _mm256_mul_ps(sz, az);
-    *Bz = _mm256_mul_ps(sz, bz);
-    *Cz = _mm256_mul_ps(sz, cz);
-    *z_lo = _mm256_min_ps(*Az, _mm256_min_ps(*Bz, *Cz));
-    *z_hi = _mm256_max_ps(*Az, _mm256_max_ps(*Bz, *Cz));
-}
-
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif

@@ -310,13 +310,15 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
              * whose box holds the camera is entered by nearly every
              * camera ray, and its lanes are missed by the line or lie
              * wholly behind the camera (the BART kitchen: one leaf, 0.99
-             * of its camera rays; the first 8-lane leaf of 0.65 of them,
-             * the octant's child order deciding).  The first 8-lane call
-             * refuses such a leaf right after the signs
-             * (wide8_leaf8_closest_first, TRI4_BEHIND_FIRST); the later
-             * calls keep the filter as it was: rr5's same exit in every
-             * call (round 42) was level or slower on the clock, its
-             * branch taken on about 0.6 of the calls. */
+             * of its camera rays; the first leaf of 0.65 of them, the
+             * octant's child order deciding).  A ray's first leaf (r4
+             * not yet set), when it holds 5-8 triangles, is tested by a
+             * copy that refuses such a leaf right after the signs
+             * (wide8_leaf8_closest_first, TRI4_BEHIND_FIRST); every later
+             * leaf, and a first leaf of 1-4 triangles, keeps the filter
+             * as it was: rr5's same exit in every call (round 42) was
+             * level or slower on the clock, its branch taken on about
+             * 0.6 of the calls. */
 #if WIDE8_RAY_LEAF8
             const int first_leaf = !any_hit && !r4_ready;
 #endif
