@@ -261,7 +261,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                         else
                             wide8_push(n, octant, hit, t0, order_shift, st_child, st_count, st_t,
                                        &sp, &cur, &cur_count);
-                        if (prefetch_top && (any_hit ? !(PF1_OFF & 64) : !(PF1_OFF & 1))) {
+                        if (prefetch_top && (any_hit || !(PF1_OFF & 1))) {
                             /* The new stack top, whose subtree comes after
                              * cur's: prefetched now (its bounds, or the
                              * first three lines of its leaf's packet), so
