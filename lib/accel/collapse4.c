@@ -18,7 +18,6 @@
  * the same bytes; accel_collapse_wide_reuse takes it where the CPU runs
  * it.
  */
-#include <stdlib.h>
 #include "trace/bvh4_layout.h"
 
 #include <math.h>
@@ -1544,16 +1543,6 @@ static int collapse_wide(struct bvh4 *out, const struct bvh *bvh,
                                                            BVH_WIDE_ANY_LONGEST_CROSSINGS
                            ? 1u
                            : 0u;
-    /* Throw-away measurement knobs (round 45, pf1): PF1_TOP and PF1_LONG
-     * force the flags off (0) or on (1); unset, as before. */
-    {
-        const char *e = getenv("PF1_TOP");
-        if (e && (e[0] == '0' || e[0] == '1'))
-            out->prefetch_top = (uint32_t)(e[0] - '0');
-        e = getenv("PF1_LONG");
-        if (e && (e[0] == '0' || e[0] == '1') && width == 8 && tri && packets)
-            out->any_longest = (uint32_t)(e[0] - '0');
-    }
     out->source = source;
     out->packet_slot = packet_slot;
     out->raw = raw;

@@ -821,11 +821,6 @@ int scene_texture_sample_lod8(const struct scene_texture *tex, const float lambd
     return 1;
 }
 
-/* Throw-away knob (round 45, pf1): 1 drops the texel prefetches. */
-#ifndef PF1_TEX_OFF
-#define PF1_TEX_OFF 0
-#endif
-
 int scene_texture_prefetch_lod8(const struct scene_texture *tex, const float lambda[8],
                              const float s[8], const float t[8],
                              struct scene_texture_lookup8 *out)
@@ -850,12 +845,10 @@ int scene_texture_prefetch_lod8(const struct scene_texture *tex, const float lam
             _mm256_storeu_si256((__m256i *)(void *)out->offset[l][c], off[c]);
         _mm256_storeu_ps(out->a[l], va);
         _mm256_storeu_ps(out->b[l], vb);
-#if !PF1_TEX_OFF
         _mm_prefetch(texels + out->offset[l][0][0], _MM_HINT_T0);
         _mm_prefetch(texels + out->offset[l][2][0], _MM_HINT_T0);
         _mm_prefetch(texels + out->offset[l][0][7], _MM_HINT_T0);
         _mm_prefetch(texels + out->offset[l][2][7], _MM_HINT_T0);
-#endif
     }
     _mm256_storeu_ps(out->f, p.f);
     _mm256_storeu_ps(out->two, p.two);

@@ -1058,8 +1058,7 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
              * in every alternated pair but one per set (gears' shadow
              * packets in all), the losing pairs runs whose Embree
              * figures fell as well. */
-            if (!(PF1_OFF & 8))
-                _mm_prefetch((const char *)(const void *)n->child, _MM_HINT_T0);
+            _mm_prefetch((const char *)(const void *)n->child, _MM_HINT_T0);
             unsigned lane_rays[8];
             float t_min[8];
             node_tests += 8;
@@ -1415,8 +1414,7 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
          * camera packets +0.9 and +0.4 % in two quiet alternated pairs,
          * gears' +2.0 and +1.6 %, bumpy and the soup mixed within the
          * spread. */
-        if (!(PF1_OFF & 16))
-            WIDE_PREFETCH_LINES(wide->nodes8, 4);
+        WIDE_PREFETCH_LINES(wide->nodes8, 4);
     }
     {
         /* Each ray's limit, best and box_limit in the lanes, as

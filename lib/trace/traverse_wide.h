@@ -333,12 +333,6 @@ static inline const float *wide_row(const void *bounds, int offset)
  * of prefetches alone "looping const" and drops its calls, so a helper
  * function emitted no prefetch in any walk.  Written out, not as a loop:
  * the walks then compile as with the prefetches spelled at each place. */
-/* Throw-away measurement knob (round 45, pf1): bits switch prefetch
- * sites off (1 push top closest, 2 next top after a leaf, 4 next node
- * closest, 8 packet node's child line, 16 packet root). */
-#ifndef PF1_OFF
-#define PF1_OFF 0
-#endif
 #define WIDE_PREFETCH_LINES(addr, lines)                                                       \
     do {                                                                                       \
         const char *wide_pf_ = (const char *)(const void *)(addr);                             \

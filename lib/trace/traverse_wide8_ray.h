@@ -95,7 +95,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
      * the clock did not miss it (performance-log.md, round 43, rw2). */
 #define WIDE8_PREFETCH_NEXT_TOP()                                                                 \
     do {                                                                                          \
-        if (!(PF1_OFF & 2) && !any_hit && prefetch_top && sp) {                                                     \
+        if (!any_hit && prefetch_top && sp) {                                                     \
             const uint32_t next = st_child[sp - 1];                                               \
             const char *a = st_count[sp - 1] ? (const char *)&packets[next]                       \
                                              : (const char *)&nodes[next];                        \
@@ -261,7 +261,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                         else
                             wide8_push(n, octant, hit, t0, order_shift, st_child, st_count, st_t,
                                        &sp, &cur, &cur_count);
-                        if (prefetch_top && (any_hit || !(PF1_OFF & 1))) {
+                        if (prefetch_top) {
                             /* The new stack top, whose subtree comes after
                              * cur's: prefetched now (its bounds, or the
                              * first three lines of its leaf's packet), so
@@ -280,7 +280,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                      * Closest hit only: in the any-hit walks it cost the
                      * soup's shadow rays 0.03 of Embree in every round
                      * (the packet walk's, round 38: level). */
-                    if (!(PF1_OFF & 4) && !any_hit && !cur_count)
+                    if (!any_hit && !cur_count)
                         WIDE_PREFETCH_LINES(&nodes[cur], 4);
                     continue;
                 }
