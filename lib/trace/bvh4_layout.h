@@ -141,9 +141,10 @@ struct bvh4 {
     uint32_t *source;        /* width per node: the binary node of each lane (refit) */
     uint32_t *packet_slot;   /* per packet: its first leaf slot (refit) */
     /* 1 when nodes and packets take BVH_WIDE_PREFETCH_BYTES or more: the
-     * 8-wide single-ray walk then prefetches the stack top after each
-     * push (traverse_wide.h); a smaller layout stays in the caches and
-     * the prefetch would only cost instructions. */
+     * 8-wide single-ray closest-hit walk then prefetches the stack top
+     * after each push (traverse_wide.h; the any-hit walk does not, on
+     * any layout: traverse_wide8_ray.h); a smaller layout stays in the
+     * caches and the prefetch would only cost instructions. */
     uint32_t prefetch_top;
     /* 1 when accel_wide_child_crossings reaches
      * BVH_WIDE_ANY_LONGEST_CROSSINGS: the 8-wide single-ray any-hit walk

@@ -680,18 +680,6 @@ static inline void wide8_push_stored(const struct bvh8_node *n, unsigned pm, __m
  * walk everywhere else. */
 #define WIDE_ANY_LONGEST 2
 
-/* leave_early's values for the 8-wide single-ray any-hit walks (every
- * any-hit walk leaves at its first hit, so the flag has no other use
- * there): 1 reads the layout's prefetch_top at each push (the walks over
- * a set-up ray and the counting copies); WIDE_ANY_TOP_OFF and
- * WIDE_ANY_TOP_ON are copies for a layout without and with it, chosen
- * once per ray or per layout (TRACE_WIDE_WALK1, walk_wide_single1), so
- * that the walk's pushes test a constant, as the closest-hit copies'
- * do.  The same pushes, stack and leaves either way: the prefetch is a
- * hint only, no answer or count depends on it. */
-#define WIDE_ANY_TOP_OFF 2
-#define WIDE_ANY_TOP_ON 3
-
 /*
  * The child an any-hit walk goes to first when a node has two or more
  * hit children: the one where the ray's segment inside the box, exit -
@@ -1247,8 +1235,7 @@ typedef char tri4_ray_tmin_org_layout[offsetof(struct tri4_ray, node_neg_org) ==
 
 WIDE8_WALK1(wide8_walk1_closest_leaf8, walk_wide8_ray_leaf8, 0, 0, 0)
 WIDE8_WALK1(wide8_walk1_closest_early_leaf8, walk_wide8_ray_leaf8, 0, 0, 1)
-WIDE8_WALK1(wide8_walk1_any_leaf8, walk_wide8_ray_leaf8, 1, 0, WIDE_ANY_TOP_OFF)
-WIDE8_WALK1(wide8_walk1_any_top_leaf8, walk_wide8_ray_leaf8, 1, 0, WIDE_ANY_TOP_ON)
+WIDE8_WALK1(wide8_walk1_any_leaf8, walk_wide8_ray_leaf8, 1, 0, 1)
 /* With counters: the two-level walk's rays that reach an identity
  * instance's object without a world set-up (scene_traverse.c, a top
  * level of one leaf), counted as the walks above count. */
@@ -1256,10 +1243,7 @@ WIDE8_WALK1(wide8_walk1_closest_leaf8_stats, walk_wide8_ray_leaf8, 0, 1, 0)
 WIDE8_WALK1(wide8_walk1_closest_early_leaf8_stats, walk_wide8_ray_leaf8, 0, 1, 1)
 WIDE8_WALK1(wide8_walk1_any_leaf8_stats, walk_wide8_ray_leaf8, 1, 1, 1)
 /* The any-hit walks for the layouts with any_longest (WIDE_ANY_LONGEST). */
-WIDE8_WALK1(wide8_walk1_any_longest_leaf8, walk_wide8_ray_leaf8, WIDE_ANY_LONGEST, 0,
-            WIDE_ANY_TOP_OFF)
-WIDE8_WALK1(wide8_walk1_any_longest_top_leaf8, walk_wide8_ray_leaf8, WIDE_ANY_LONGEST, 0,
-            WIDE_ANY_TOP_ON)
+WIDE8_WALK1(wide8_walk1_any_longest_leaf8, walk_wide8_ray_leaf8, WIDE_ANY_LONGEST, 0, 1)
 WIDE8_WALK1(wide8_walk1_any_longest_leaf8_stats, walk_wide8_ray_leaf8, WIDE_ANY_LONGEST, 1, 1)
 
 /* kernels.h's walk1: the walk walk_wide_single1 below takes without
@@ -1271,11 +1255,8 @@ static trace_walk1_fn TRACE_WIDE_WALK1(const struct bvh4 *wide, int any_hit)
 {
     if (wide->width != 8 || !wide->node_count)
         return NULL;
-    if (any_hit && wide->any_longest)
-        return wide->prefetch_top ? wide8_walk1_any_longest_top_leaf8
-                                  : wide8_walk1_any_longest_leaf8;
     if (any_hit)
-        return wide->prefetch_top ? wide8_walk1_any_top_leaf8 : wide8_walk1_any_leaf8;
+        return wide->any_longest ? wide8_walk1_any_longest_leaf8 : wide8_walk1_any_leaf8;
     return wide->prefetch_top ? wide8_walk1_closest_early_leaf8 : wide8_walk1_closest_leaf8;
 }
 
@@ -1529,13 +1510,9 @@ static inline int walk_wide_single1(const struct bvh4 *wide, const struct bvh *b
                                                              counters);
             return wide8_walk1_closest_leaf8_stats(wide, org, dir, tmin, t_max, hit, counters);
         }
-        if (any_hit && wide->any_longest)
-            return wide->prefetch_top
-                       ? wide8_walk1_any_longest_top_leaf8(wide, org, dir, tmin, t_max, hit, NULL)
-                       : wide8_walk1_any_longest_leaf8(wide, org, dir, tmin, t_max, hit, NULL);
         if (any_hit)
-            return wide->prefetch_top
-                       ? wide8_walk1_any_top_leaf8(wide, org, dir, tmin, t_max, hit, NULL)
+            return wide->any_longest
+                       ? wide8_walk1_any_longest_leaf8(wide, org, dir, tmin, t_max, hit, NULL)
                        : wide8_walk1_any_leaf8(wide, org, dir, tmin, t_max, hit, NULL);
         if (wide->prefetch_top)
             return wide8_walk1_closest_early_leaf8(wide, org, dir, tmin, t_max, hit, NULL);

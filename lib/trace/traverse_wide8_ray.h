@@ -75,13 +75,13 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
      * when the layout has prefetch_top (walk_wide, walk_wide_single,
      * walk_wide_single1, TRACE_WIDE_WALK1, TRACE_WIDE_WALK1_COUNTED), so
      * the small layouts' copy has no test of it at its pushes and pops.
-     * The any-hit walks from the set-up's lanes have copies per flag
-     * (WIDE_ANY_TOP_OFF, WIDE_ANY_TOP_ON); the others read the layout's
-     * flag (leave_early 1). */
-    const int prefetch_top = !any_hit                       ? leave_early
-                             : leave_early == WIDE_ANY_TOP_ON  ? 1
-                             : leave_early == WIDE_ANY_TOP_OFF ? 0
-                                                               : wide->prefetch_top != 0;
+     * The any-hit walks do not prefetch the stack top on any layout: on
+     * a Raptor Cove core (2 MB L2) the kitchen's shadow rays were faster
+     * without it in every alternated pair, the soup's and bumpy's level
+     * (performance-log.md, round 45, pf1); an any-hit walk ends at its
+     * first hit, before most pushed entries are popped, so a prefetch of
+     * the top is often a line fetched for nothing. */
+    const int prefetch_top = !any_hit && leave_early;
     /* After a closest-hit pop, the entry now on top of the stack is the
      * one that comes after the popped subtree: its lines prefetched here
      * (as a push prefetches its new top), so that an entry pushed below
