@@ -934,19 +934,6 @@ static inline int walk_wide8(const struct bvh4 *wide, struct wide_state *s, uint
 WIDE8_LEAF_TEST(wide8_packet_closest, wide_packet_test, 0, 1, 0, 1, 1)
 WIDE8_LEAF_TEST(wide8_packet_full, wide_packet_test, 0, 0, 0, 1, 1)
 WIDE8_LEAF_TEST(wide8_packet_any, wide_packet_test, 1, 1, 1, 0, 0)
-/* The same any-hit leaf inlined, for the any-hit walks from the
- * set-up's lanes only (WIDE8_WALK1, walk_wide8_ray): the call clobbered
- * every vector register, so the walk broadcast the ray's vectors again
- * after each leaf and put a vzeroupper before each call.  The same code
- * (wide_packet_test with the same flags), so the same answers. */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline int wide8_packet_any_inline(struct wide_state *s, const struct tri4_packet *p,
-                                          uint32_t n)
-{
-    return wide_packet_test(s, p, n, 1, 1, 1, 0, 0);
-}
 
 /* The byte offsets of the near x, y, z and far x, y, z rows of a
  * bvh8_node's bounds per ray octant (bit k: dir[k] negative, whose near

@@ -346,9 +346,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
 #endif
             for (;;) {
                 const uint32_t n = cur_count < 4 ? cur_count : 4;
-                if (any_hit && lanes)
-                    stop = wide8_packet_any_inline(s, p, n);
-                else if (any_hit)
+                if (any_hit)
                     stop = wide8_packet_any(s, p, n);
                 else if (leave_early)
                     stop = wide8_packet_closest(s, p, n);
