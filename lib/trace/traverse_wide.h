@@ -674,26 +674,6 @@ static inline void wide8_push_stored(const struct bvh8_node *n, unsigned pm, __m
     *cur_count = n->count[l];
 }
 
-/*
- * wide8_push_stored's alternative (round 38's eef49bc, retimed): the hit
- * children farthest first, in the order the node keeps for the opposite
- * octant (octant ^ 7: the collapse's per-octant order reversed).  A
- * shadow ray starts on a surface: the child nearest its origin holds the
- * triangle it starts on and its neighbours, which cannot occlude it,
- * while an occluder lies toward the light.  No entry distances (st_t
- * NULL): an any-hit walk's pops never read them.
- */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline void wide8_push_far(const struct bvh8_node *n, int octant, __m256 hit,
-                                  __m256i order_shift, uint32_t *st_child, uint32_t *st_count,
-                                  uint32_t *sp, uint32_t *cur, uint32_t *cur_count)
-{
-    wide8_push(n, octant ^ 7, hit, _mm256_setzero_ps(), order_shift, st_child, st_count, NULL, sp,
-               cur, cur_count);
-}
-
 /* any_hit's value for the 8-wide single-ray walk's copies that order an
  * any-hit push by wide8_push_any (the layouts with any_longest); 1: the
  * stored order (wide8_push_stored).  Any non-zero any_hit is an any-hit

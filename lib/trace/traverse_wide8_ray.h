@@ -256,8 +256,8 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                             wide8_push_any(n, mask, hit, t0, t1, st_child, st_count, &sp, &cur,
                                            &cur_count);
                         } else if (any_hit)
-                            wide8_push_far(n, octant, hit, order_shift, st_child, st_count, &sp,
-                                           &cur, &cur_count);
+                            wide8_push_stored(n, mask, t0, st_child, st_count, &sp, &cur,
+                                              &cur_count);
                         else
                             wide8_push(n, octant, hit, t0, order_shift, st_child, st_count, st_t,
                                        &sp, &cur, &cur_count);
