@@ -255,29 +255,9 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                                                             _mm256_set1_ps(box_limit))));
                             wide8_push_any(n, mask, hit, t0, t1, st_child, st_count, &sp, &cur,
                                            &cur_count);
-                        } else if (any_hit) {
-                            /* Round 39's d73a976, retimed: the stored order,
-                             * except at a node with two or more hit children
-                             * beyond the ray's start (entry above tmin):
-                             * there the longest segment among those next
-                             * (the start's boxes set apart, sr6's rule 28). */
-                            const __m256i start =
-                                _mm256_cmpeq_epi32(_mm256_castps_si256(t0), tmin8);
-                            const unsigned later =
-                                mask & ~(unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(start));
-                            if (later & (later - 1u)) {
-                                const __m256 t1 = _mm256_min_ps(
-                                    _mm256_mul_ps(tfz, scale),
-                                    _mm256_min_ps(_mm256_mul_ps(tfy, scale),
-                                                  _mm256_min_ps(_mm256_mul_ps(tfx, scale),
-                                                                _mm256_set1_ps(box_limit))));
-                                wide8_push_any(n, mask,
-                                               _mm256_andnot_ps(_mm256_castsi256_ps(start), hit),
-                                               t0, t1, st_child, st_count, &sp, &cur, &cur_count);
-                            } else
-                                wide8_push_stored(n, mask, t0, st_child, st_count, &sp, &cur,
-                                                  &cur_count);
-                        }
+                        } else if (any_hit)
+                            wide8_push_stored(n, mask, t0, st_child, st_count, &sp, &cur,
+                                              &cur_count);
                         else
                             wide8_push(n, octant, hit, t0, order_shift, st_child, st_count, st_t,
                                        &sp, &cur, &cur_count);
