@@ -668,64 +668,6 @@ static inline unsigned tri4_pair_filter_lanes(const struct tri4_ray *r,
         mask &= ~(unsigned)_mm256_movemask_ps(_mm256_and_ps(
             _mm256_cmp_ps(t_hi, tmin, _CMP_LT_OQ), _mm256_cmp_ps(t_lo, tmin, _CMP_LT_OQ)));
     }
-    if (depth_out && mask) {
-        /* The near lanes refused from the registers, as
-         * tri4_filter_lanes_depth (its comment says why each refusal is
-         * exact): those wholly before tmin, then those
-         * tri4_before_tmin_vectors refuses, on each packet's four lanes
-         * (the same floats the stored lanes would give it).  The near
-         * lanes the checks cannot decide stay for the caller's
-         * tri4_before_tmin (d15bd78's 8-lane part, retimed). */
-        const __m256 tmin = TRI4_CONST8(r, tmin, k_tmin, scalar);
-        const unsigned near =
-            (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(t_lo, tmin, _CMP_LT_OQ)) & mask;
-        if (near) {
-            const unsigned behind =
-                (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(t_hi, tmin, _CMP_LT_OQ)) & near;
-            mask &= ~behind;
-            if (near & ~behind) {
-#if defined(__AVX512VL__) && defined(__AVX512DQ__)
-                const __m256 sa = _mm256_range_ps(_mm256_range_ps(ax, ay, 0x0B), az, 0x0B);
-                const __m256 sb = _mm256_range_ps(_mm256_range_ps(bx, by, 0x0B), bz, 0x0B);
-                const __m256 scc = _mm256_range_ps(_mm256_range_ps(cx, cy, 0x0B), cz, 0x0B);
-                const __m256 sc = _mm256_range_ps(_mm256_range_ps(sa, sb, 0x0B), scc, 0x0B);
-#else
-                const __m256 sign = _mm256_set1_ps(-0.0f);
-                const __m256 sa = _mm256_max_ps(_mm256_max_ps(_mm256_andnot_ps(sign, ax),
-                                                              _mm256_andnot_ps(sign, ay)),
-                                                _mm256_andnot_ps(sign, az));
-                const __m256 sb = _mm256_max_ps(_mm256_max_ps(_mm256_andnot_ps(sign, bx),
-                                                              _mm256_andnot_ps(sign, by)),
-                                                _mm256_andnot_ps(sign, bz));
-                const __m256 scc = _mm256_max_ps(_mm256_max_ps(_mm256_andnot_ps(sign, cx),
-                                                               _mm256_andnot_ps(sign, cy)),
-                                                 _mm256_andnot_ps(sign, cz));
-                const __m256 sc = _mm256_max_ps(_mm256_max_ps(sa, sb), scc);
-#endif
-                const unsigned sure =
-                    tri4_before_tmin_vectors(r, _mm256_castps256_ps128(sc),
-                                             _mm256_castps256_ps128(sh.U),
-                                             _mm256_castps256_ps128(sh.V),
-                                             _mm256_castps256_ps128(sh.W),
-                                             _mm256_castps256_ps128(det),
-                                             _mm256_castps256_ps128(Az),
-                                             _mm256_castps256_ps128(Bz),
-                                             _mm256_castps256_ps128(Cz), scalar) |
-                    tri4_before_tmin_vectors(r, _mm256_extractf128_ps(sc, 1),
-                                             _mm256_extractf128_ps(sh.U, 1),
-                                             _mm256_extractf128_ps(sh.V, 1),
-                                             _mm256_extractf128_ps(sh.W, 1),
-                                             _mm256_extractf128_ps(det, 1),
-                                             _mm256_extractf128_ps(Az, 1),
-                                             _mm256_extractf128_ps(Bz, 1),
-                                             _mm256_extractf128_ps(Cz, 1), scalar)
-                        << 4;
-                mask &= ~(sure & near & ~behind);
-            }
-            if (!mask)
-                return 0;
-        }
-    }
     if (mask) {
         tri4_pair_store(out[0].U, out[1].U, sh.U);
         tri4_pair_store(out[0].V, out[1].V, sh.V);

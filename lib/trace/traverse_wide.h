@@ -1043,6 +1043,26 @@ WIDE8_WALK(wide8_walk_any_stats, walk_wide8_ray, 1, 1, 1)
  * hit is that of the two calls bit for bit (tri4_pair_filter_lanes says
  * why).  Only the walk copies over walk_wide8_ray_leaf8 call it.
  */
+/* The kept lanes of packet p (the two-packet any-hit leaf,
+ * wide_leaf8_test), among `near` (t_lo < tmin), that the finish surely
+ * refuses on t: tri4_before_tmin_lanes from the filter's
+ * floats, then tri4_before_tmin for the lanes it cannot decide.  A
+ * function of its own, called for the near lanes only: inlined, its
+ * vectors changed GCC's register allocation of the filter before it
+ * (measured: 4 to 7 more instructions, spills, on every any-hit leaf
+ * call, more than its call costs). */
+static unsigned wide_near_refused(const struct wide_state *s, const struct tri4_packet *p,
+                                  const struct tri4_lanes *lanes, unsigned near) WIDE_NOINLINE;
+static unsigned wide_near_refused(const struct wide_state *s, const struct tri4_packet *p,
+                                  const struct tri4_lanes *lanes, unsigned near)
+{
+    /* Only with depth_out, whose walks set r4's scalar form (TRI4_CONST). */
+    const unsigned sure = tri4_before_tmin_lanes(&s->r4, p, lanes, near, 1);
+    if (near & ~sure)
+        return sure | tri4_before_tmin(s->ray, p, near & ~sure);
+    return sure;
+}
+
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
@@ -1059,18 +1079,21 @@ static inline int wide_leaf8_test(struct wide_state *s, const struct tri4_packet
         /* As wide_packet_test, per packet (the near lanes refused on t_hi
          * with depth_out). */
         const __m128 tmin = TRI4_CONST(&s->r4, tmin, k_tmin, depth_out);
-        const unsigned near =
+        unsigned near =
             ((unsigned)_mm_movemask_ps(_mm_cmplt_ps(_mm_loadu_ps(lanes[0].t_lo), tmin)) |
              (unsigned)_mm_movemask_ps(_mm_cmplt_ps(_mm_loadu_ps(lanes[1].t_lo), tmin)) << 4) &
             mask;
+        const unsigned behind =
+            ((unsigned)_mm_movemask_ps(_mm_cmplt_ps(_mm_loadu_ps(lanes[0].t_hi), tmin)) |
+             (unsigned)_mm_movemask_ps(_mm_cmplt_ps(_mm_loadu_ps(lanes[1].t_hi), tmin)) << 4) &
+            near;
         if (depth_out) {
-            /* The filter has refused the near lanes behind tmin and those
-             * its checks decide (tri4_pair_filter_lanes); the rest, for
-             * tri4_before_tmin. */
+            mask &= ~behind;
+            near &= ~behind;
             if (near & 15u)
-                mask &= ~wide_near_fallback(s, p, near & 15u);
+                mask &= ~wide_near_refused(s, p, &lanes[0], near & 15u);
             if (near >> 4)
-                mask &= ~(wide_near_fallback(s, p + 1, near >> 4) << 4);
+                mask &= ~(wide_near_refused(s, p + 1, &lanes[1], near >> 4) << 4);
         } else {
             if (near & 15u)
                 mask &= ~tri4_before_tmin(s->ray, p, near & 15u);
