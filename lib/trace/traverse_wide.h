@@ -343,37 +343,6 @@ static inline const float *wide_row(const void *bounds, int offset)
             _mm_prefetch(wide_pf_ + 192, _MM_HINT_T0);                                         \
     } while (0)
 
-/* The address of a stack entry's lines for WIDE_PREFETCH_LINES: its
- * leaf's packet (count != 0) or its node, chosen by a mask rather than
- * by a branch.  Which one a stack top is follows the tree and the ray,
- * not a pattern a predictor learns (a random ray's stack tops are leaves
- * and nodes in turn), and a mispredicted branch costs more than the
- * three or four instructions of the mask; the addresses are formed as
- * integers, so the one not taken is never a C pointer out of its array.
- * A hint's address only: no value is read through it, so the walk's
- * answers and counts are the same. */
-static inline const char *wide8_entry_lines(const struct bvh8_node *nodes,
-                                            const struct tri4_packet *packets, uint32_t index,
-                                            uint32_t count)
-{
-    const uintptr_t node = (uintptr_t)nodes + (uintptr_t)index * sizeof(nodes[0]);
-    const uintptr_t packet = (uintptr_t)packets + (uintptr_t)index * sizeof(packets[0]);
-#if defined(__GNUC__) && defined(__x86_64__)
-    /* A conditional move: GCC 12 makes a branch of `count ? packet :
-     * node` (and of __builtin_expect_with_probability's 50 %), and of
-     * the mask below five instructions where this is two. */
-    uintptr_t a = node;
-    __asm__("test %k[c], %k[c]\n\tcmovne %[p], %[a]"
-            : [a] "+r"(a)
-            : [p] "r"(packet), [c] "r"(count)
-            : "cc");
-    return (const char *)a;
-#else
-    const uintptr_t leaf = (uintptr_t)0 - (uintptr_t)(count != 0);
-    return (const char *)((node & ~leaf) | (packet & leaf));
-#endif
-}
-
 /* Forced inline, as wide_leaf: inlined into walk_wide, the state's
  * address never escapes and its fields live in registers.  The walk
  * starts at `root` (a wide node for root_count 0, else a leaf lane of

@@ -96,8 +96,10 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
 #define WIDE8_PREFETCH_NEXT_TOP()                                                                 \
     do {                                                                                          \
         if (!any_hit && prefetch_top && sp) {                                                     \
-            WIDE_PREFETCH_LINES(                                                                  \
-                wide8_entry_lines(nodes, packets, st_child[sp - 1], st_count[sp - 1]), 3);        \
+            const uint32_t next = st_child[sp - 1];                                               \
+            const char *a = st_count[sp - 1] ? (const char *)&packets[next]                       \
+                                             : (const char *)&nodes[next];                        \
+            WIDE_PREFETCH_LINES(a, 3);                                                            \
         }                                                                                         \
     } while (0)
     for (;;) {
@@ -266,15 +268,8 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                              * that its load overlaps cur's subtree instead
                              * of following it. */
                             const uint32_t top = st_child[sp - 1];
-                            const uint32_t top_count = st_count[sp - 1];
-                            /* The closest-hit copies choose the address
-                             * without a branch (wide8_entry_lines); the
-                             * any-hit copies as they were (not measured
-                             * with it). */
-                            const char *a =
-                                !any_hit ? wide8_entry_lines(nodes, packets, top, top_count)
-                                : top_count ? (const char *)&packets[top]
-                                            : (const char *)&nodes[top];
+                            const char *a = st_count[sp - 1] ? (const char *)&packets[top]
+                                                             : (const char *)&nodes[top];
                             WIDE_PREFETCH_LINES(a, 3);
                         }
                     }
