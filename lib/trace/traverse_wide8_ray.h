@@ -165,14 +165,8 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
             const __m256i tmin8 = _mm256_max_epi32(
                 _mm256_castps_si256(_mm256_set1_ps(rv->tmin)), _mm256_setzero_si256());
             /* Inner nodes until a leaf lane comes up (or the stack empties). */
-            /* The node under test, carried from where its index is chosen
-             * (the single hit child's prefetch forms the same address)
-             * instead of formed again from cur at the loop's top: GCC
-             * computed nodes + cur * 256 twice on that path.  Formed
-             * only for an inner node's index (cur_count 0): a leaf's
-             * index is a packet's, which may lie beyond the nodes. */
-            const struct bvh8_node *n = &nodes[cur];
             while (!cur_count) {
+                const struct bvh8_node *n = &nodes[cur];
                 const char *b = (const char *)(const void *)n->bounds;
                 if (stats)
                     node_tests += 8;
@@ -286,11 +280,8 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                      * Closest hit only: in the any-hit walks it cost the
                      * soup's shadow rays 0.03 of Embree in every round
                      * (the packet walk's, round 38: level). */
-                    if (!cur_count) {
-                        n = &nodes[cur];
-                        if (!any_hit)
-                            WIDE_PREFETCH_LINES(n, 4);
-                    }
+                    if (!any_hit && !cur_count)
+                        WIDE_PREFETCH_LINES(&nodes[cur], 4);
                     continue;
                 }
                 /* Pop (as below). */
@@ -304,8 +295,6 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                 cur = st_child[sp];
                 cur_count = st_count[sp];
                 /* No WIDE8_PREFETCH_NEXT_TOP here (above). */
-                if (!cur_count)
-                    n = &nodes[cur];
             }
         }
         {
