@@ -320,10 +320,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
              * level or slower on the clock, its branch taken on about
              * 0.6 of the calls. */
 #if WIDE8_RAY_LEAF8
-            /* Retimed on a core of 2 MB L2: rr5's exit in every 8-lane
-             * closest-hit call (the first-leaf copy at every leaf; its
-             * exit is exact at any leaf, the limit being t_max's). */
-            const int first_leaf = !any_hit;
+            const int first_leaf = !any_hit && !r4_ready;
 #endif
             if (!any_hit && !r4_ready) {
                 tri4_ray_init(&s->r4, ray);
