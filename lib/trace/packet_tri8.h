@@ -218,50 +218,6 @@ struct tri8_result {
 };
 
 /*
- * The first step of tri8_test, a vertex's coordinate v minus the rays'
- * origins o, and, with AVX-512, the other way round (TRI8_FLIPPED): o -
- * v.  In round to nearest fl(o - v) = -fl(v - o) but for the sign of an
- * exact 0 (both are +0), and the shear's products and sums keep that
- * negation (the rounding is symmetric in the sign), so the sheared
- * coordinates (tri8_shear) are then isect_triangle's negated up to the
- * signs of zeros, and the edge functions U, V, W, each a difference of
- * two products of two of them, are isect_triangle's values: the same
- * bits wherever they are not 0 (a zero among the operands changes only
- * the sign of a zero product, which a non-zero difference does not
- * show).  A lane with an edge function of 0 is deferred either way (== 0
- * ignores the sign), every other use of U, V, W (their signs, det, u and
- * v) is in lanes where none is 0, and the sheared coordinates are only
- * used as |.| (the size): every bit of tri8_test's answer is the same.
- * The order o - v puts the vertex's broadcast in the subtraction's
- * second operand, which AVX-512 takes from memory (an embedded
- * broadcast: nine instructions instead of eighteen up to the first exit,
- * where most calls end: 84 -> 67 instructions a rejected call in the
- * any-hit leaf's loop); v - o itself is needed only after that exit,
- * and is 0 - (o - v) exactly (tri8_unflip: -x for x != 0, and +0 for
- * +0).  AVX2 has no embedded broadcast: there the flip only adds the
- * nine subtractions after the exit and the origins' registers
- * (docs/performance-log.md, pk4: +0.6 to +1.3 % of the AVX2 packet
- * kernel's instructions a ray), so it keeps v - o.
- */
-#if defined(__AVX512VL__)
-#define TRI8_FLIPPED 1
-#else
-#define TRI8_FLIPPED 0
-#endif
-
-static inline __m256 tri8_vertex_diff(__m256 o, const float *v)
-{
-    return TRI8_FLIPPED ? _mm256_sub_ps(o, _mm256_broadcast_ss(v))
-                        : _mm256_sub_ps(_mm256_broadcast_ss(v), o);
-}
-
-/* v - o from tri8_vertex_diff's value, bit for bit (see there). */
-static inline __m256 tri8_unflip(__m256 d)
-{
-    return TRI8_FLIPPED ? _mm256_sub_ps(_mm256_setzero_ps(), d) : d;
-}
-
-/*
  * Triangle l of packet q (vertex a's coordinate k at q->v[a][k][l], read
  * in place; the float part reads the rows of the packet's kx, ky, kz at
  * vk[0], vk[1], vk[2], each &q->v[0][k][0], which the caller takes once
@@ -278,21 +234,19 @@ static inline unsigned tri8_test(const struct tri8_rays *r, const struct tri4_pa
                                  __m256 limit, int any_hit, struct tri8_result *res)
 {
     res->t = res->u = res->v = _mm256_setzero_ps();
-    /* Vertex a's coordinate kx, ky, kz: vk[.][12 a + l] (v[a][k][l]),
-     * minus the origin, or with AVX-512 the origin minus it
-     * (TRI8_FLIPPED, tri8_vertex_diff). */
-    const __m256 dax = tri8_vertex_diff(r->org_x, &vk[0][0 + l]);
-    const __m256 day = tri8_vertex_diff(r->org_y, &vk[1][0 + l]);
-    const __m256 daz = tri8_vertex_diff(r->org_z, &vk[2][0 + l]);
-    const __m256 dbx = tri8_vertex_diff(r->org_x, &vk[0][12 + l]);
-    const __m256 dby = tri8_vertex_diff(r->org_y, &vk[1][12 + l]);
-    const __m256 dbz = tri8_vertex_diff(r->org_z, &vk[2][12 + l]);
-    const __m256 dcx = tri8_vertex_diff(r->org_x, &vk[0][24 + l]);
-    const __m256 dcy = tri8_vertex_diff(r->org_y, &vk[1][24 + l]);
-    const __m256 dcz = tri8_vertex_diff(r->org_z, &vk[2][24 + l]);
+    /* Vertex a's coordinate kx, ky, kz: vk[.][12 a + l] (v[a][k][l]). */
+    const __m256 ax = _mm256_sub_ps(_mm256_broadcast_ss(&vk[0][0 + l]), r->org_x);
+    const __m256 ay = _mm256_sub_ps(_mm256_broadcast_ss(&vk[1][0 + l]), r->org_y);
+    const __m256 az = _mm256_sub_ps(_mm256_broadcast_ss(&vk[2][0 + l]), r->org_z);
+    const __m256 bx = _mm256_sub_ps(_mm256_broadcast_ss(&vk[0][12 + l]), r->org_x);
+    const __m256 by = _mm256_sub_ps(_mm256_broadcast_ss(&vk[1][12 + l]), r->org_y);
+    const __m256 bz = _mm256_sub_ps(_mm256_broadcast_ss(&vk[2][12 + l]), r->org_z);
+    const __m256 cx = _mm256_sub_ps(_mm256_broadcast_ss(&vk[0][24 + l]), r->org_x);
+    const __m256 cy = _mm256_sub_ps(_mm256_broadcast_ss(&vk[1][24 + l]), r->org_y);
+    const __m256 cz = _mm256_sub_ps(_mm256_broadcast_ss(&vk[2][24 + l]), r->org_z);
 
     struct tri8_sheared sh;
-    tri8_shear(dax, day, daz, dbx, dby, dbz, dcx, dcy, dcz, r->sx, r->sy, &sh);
+    tri8_shear(ax, ay, az, bx, by, bz, cx, cy, cz, r->sx, r->sy, &sh);
 
     const __m256 on_edge = tri8_on_edge(&sh);
     const unsigned deferred = (unsigned)_mm256_movemask_ps(on_edge) & lanes;
@@ -316,10 +270,6 @@ static inline unsigned tri8_test(const struct tri8_rays *r, const struct tri4_pa
         return 0;
     }
 
-    /* The vertices minus the origin (tri8_vertex_diff). */
-    const __m256 ax = tri8_unflip(dax), ay = tri8_unflip(day), az = tri8_unflip(daz);
-    const __m256 bx = tri8_unflip(dbx), by = tri8_unflip(dby), bz = tri8_unflip(dbz);
-    const __m256 cx = tri8_unflip(dcx), cy = tri8_unflip(dcy), cz = tri8_unflip(dcz);
     const __m256 Az = _mm256_mul_ps(r->sz, az);
     const __m256 Bz = _mm256_mul_ps(r->sz, bz);
     const __m256 Cz = _mm256_mul_ps(r->sz, cz);
