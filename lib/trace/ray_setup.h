@@ -136,7 +136,6 @@ struct ray_lanes {
     __m128i order; /* kx, ky, kz, 3: the permutation's indices (the any-hit
                     * leaves' row offsets, tri4_ray_init_scalar_lanes) */
     int kx, ky, kz;
-    int perm; /* 2 kz + (dir[kz] < 0): the row of ray_lane_order */
 };
 
 /* trace_ray_setup_lanes stores org, dir and inv_dir 16 bytes at a time,
@@ -201,7 +200,6 @@ static inline void trace_ray_setup_lanes(struct trace_ray *ray, struct ray_lanes
     l->kx = order[0];
     l->ky = order[1];
     l->kz = (int)kz;
-    l->perm = (int)(2u * kz + neg);
     char *b = (char *)(void *)ray;
     _mm_storeu_ps((float *)(void *)(b + offsetof(struct trace_ray, org)), o);
     _mm_storeu_ps((float *)(void *)(b + offsetof(struct trace_ray, dir)), d);

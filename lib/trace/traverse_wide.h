@@ -948,62 +948,7 @@ static const uint8_t wide8_rows[8][6] = {WIDE8_ROWS(0, 0, 0), WIDE8_ROWS(1, 0, 0
                                          WIDE8_ROWS(0, 0, 1), WIDE8_ROWS(1, 0, 1),
                                          WIDE8_ROWS(0, 1, 1), WIDE8_ROWS(1, 1, 1)};
 #undef WIDE8_ROWS
-/* The same offsets in the order kx, ky, kz (near kx, ky, kz, then far
- * kx, ky, kz), per 8 (2 kz + (dir[kz] < 0)) + octant (ray_lanes' perm,
- * ray_lane_order's rows): the closest-hit walk from the set-up's lanes,
- * whose node test takes its vectors from the leaf's constants, which are
- * in that order (walk_wide8_ray_leaf8). */
-#define WIDE8_NEAR(k, o) (((k) + 3 * ((o) >> (k) & 1)) * WIDE8_ROW)
-#define WIDE8_FAR(k, o) (((k) + 3 - 3 * ((o) >> (k) & 1)) * WIDE8_ROW)
-#define WIDE8_ROWS_K(a, b, c, o)                                                                 \
-    {WIDE8_NEAR(a, o), WIDE8_NEAR(b, o), WIDE8_NEAR(c, o),                                       \
-     WIDE8_FAR(a, o),  WIDE8_FAR(b, o),  WIDE8_FAR(c, o)}
-#define WIDE8_ROWS_P(a, b, c)                                                                    \
-    WIDE8_ROWS_K(a, b, c, 0), WIDE8_ROWS_K(a, b, c, 1), WIDE8_ROWS_K(a, b, c, 2),                \
-        WIDE8_ROWS_K(a, b, c, 3), WIDE8_ROWS_K(a, b, c, 4), WIDE8_ROWS_K(a, b, c, 5),            \
-        WIDE8_ROWS_K(a, b, c, 6), WIDE8_ROWS_K(a, b, c, 7)
-static const uint8_t wide8_rows_k[48][6] = {WIDE8_ROWS_P(1, 2, 0), WIDE8_ROWS_P(2, 1, 0),
-                                            WIDE8_ROWS_P(2, 0, 1), WIDE8_ROWS_P(0, 2, 1),
-                                            WIDE8_ROWS_P(0, 1, 2), WIDE8_ROWS_P(1, 0, 2)};
-#undef WIDE8_ROWS_P
-#undef WIDE8_ROWS_K
-#undef WIDE8_FAR
-#undef WIDE8_NEAR
 #undef WIDE8_ROW
-
-/* tri4_ray_init's vectors from the set-up's lanes (ray_setup.h): the
- * same values, broadcast from registers, set before the closest-hit walk
- * from the lanes (WIDE8_WALK1), whose node test reads -org, the inverse
- * and tmin from them (walk_wide8_ray_leaf8).  tmin >= 0 here
- * (WIDE8_WALK1 takes the other rays elsewhere), -0 made +0 by a signed
- * integer maximum with 0: the node test's entry maximum needs those
- * bits, and the leaves use tmin only in float comparisons (z_hi >= tmin,
- * t_lo < tmin, t_hi < tmin) or in a product then compared, where -0 and
- * +0 decide alike. */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline void tri4_ray_init_lanes(struct tri4_ray *r, const struct ray_lanes *l, float tmin)
-{
-    const size_t row = sizeof(((const struct tri4_packet *)NULL)->v[0][0]);
-    const __m128 neg_org = _mm_xor_ps(l->org_k, _mm_set1_ps(-0.0f));
-    const unsigned neg = (unsigned)_mm_movemask_ps(_mm_cmplt_ps(l->inv_k, _mm_setzero_ps()));
-    r->off_x = (size_t)l->kx * row;
-    r->off_y = (size_t)l->ky * row;
-    r->off_z = (size_t)l->kz * row;
-    r->neg_org_x = _mm_permute_ps(neg_org, 0x00);
-    r->neg_org_y = _mm_permute_ps(neg_org, 0x55);
-    r->neg_org_z = _mm_permute_ps(neg_org, 0xAA);
-    r->sx = _mm_permute_ps(l->shear, 0x00);
-    r->sy = _mm_permute_ps(l->shear, 0x55);
-    r->sz = _mm_permute_ps(l->inv_k, 0xAA);
-    r->inv_x = _mm_permute_ps(l->inv_k, 0x00);
-    r->inv_y = _mm_permute_ps(l->inv_k, 0x55);
-    r->tmin = _mm_castsi128_ps(
-        _mm_max_epi32(_mm_castps_si128(_mm_set1_ps(tmin)), _mm_setzero_si128()));
-    r->neg_x = (int)(neg & 1u);
-    r->neg_y = (int)(neg >> 1 & 1u);
-}
 
 #define WIDE8_RAY walk_wide8_ray
 #define WIDE8_RAY_LEAF8 0
@@ -1296,8 +1241,6 @@ typedef char tri4_ray_tmin_org_layout[offsetof(struct tri4_ray, node_neg_org) ==
                                   any_hit, stats, counters);                                    \
         if (any_hit)                                                                            \
             tri4_ray_init_scalar_lanes(&s->r4, &lanes, tmin);                                   \
-        else                                                                                    \
-            tri4_ray_init_lanes(&s->r4, &lanes, tmin);                                          \
         const int done = walk(wide, s, any_hit, stats, leave_early, &lanes);                    \
         return wide8_walk_end(s, done, any_hit, stats, counters);                               \
     }

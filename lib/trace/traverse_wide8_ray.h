@@ -32,10 +32,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
          * octant (wide8_rows), six loads instead of about 30
          * instructions of arithmetic and register moves. */
         octant = _mm_movemask_ps(lanes->dir) & 7;
-        /* A closest-hit walk: the slabs in the order kx, ky, kz, that
-         * of the leaf's constants, which its node test reads its vectors
-         * from (below; wide8_rows_k). */
-        const uint8_t *r = any_hit ? wide8_rows[octant] : wide8_rows_k[8 * lanes->perm + octant];
+        const uint8_t *r = wide8_rows[octant];
         near_x = r[0];
         near_y = r[1];
         near_z = r[2];
@@ -153,46 +150,20 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
             const float *no = NULL;
             if (any_hit && lanes)
                 no = s->r4.node_neg_org;
-            __m256 neg_org_x, neg_org_y, neg_org_z, inv_x, inv_y, inv_z;
-            __m256i tmin8;
-            if (!any_hit && lanes) {
-                /* A closest-hit walk from the set-up's lanes: its leaf's
-                 * constants, set before the walk (tri4_ray_init_lanes),
-                 * hold the node test's vectors too, in the order kx, ky,
-                 * kz (the rows above in that order): -org[k],
-                 * inv_dir[kx], inv_dir[ky], sz (inv_dir[kz] bit for bit,
-                 * the set-up's one quotient) and tmin with -0 made +0.
-                 * One 16-byte broadcast load each, after a leaf call as
-                 * at the start, instead of the ray's fields loaded,
-                 * negated and broadcast.  The same decision: each slab's
-                 * (bound - org) * inv is the same IEEE operation on the
-                 * same floats, the entry's integer maximum is exact (the
-                 * same bits in any order) and the exit comparisons are
-                 * ANDed.  sr2's try (round 34, 5cabb26), retimed. */
-                neg_org_x = _mm256_broadcast_ps(&s->r4.neg_org_x);
-                neg_org_y = _mm256_broadcast_ps(&s->r4.neg_org_y);
-                neg_org_z = _mm256_broadcast_ps(&s->r4.neg_org_z);
-                inv_x = _mm256_broadcast_ps(&s->r4.inv_x);
-                inv_y = _mm256_broadcast_ps(&s->r4.inv_y);
-                inv_z = _mm256_broadcast_ps(&s->r4.sz);
-                tmin8 = _mm256_castps_si256(_mm256_broadcast_ps(&s->r4.tmin));
-            } else {
-                neg_org_x = any_hit && lanes ? _mm256_broadcast_ss(&no[0])
-                                             : _mm256_set1_ps(-rv->org[0]);
-                neg_org_y = any_hit && lanes ? _mm256_broadcast_ss(&no[1])
-                                             : _mm256_set1_ps(-rv->org[1]);
-                neg_org_z = any_hit && lanes ? _mm256_broadcast_ss(&no[2])
-                                             : _mm256_set1_ps(-rv->org[2]);
-                inv_x = _mm256_set1_ps(rv->inv_dir[0]);
-                inv_y = _mm256_set1_ps(rv->inv_dir[1]);
-                inv_z = _mm256_set1_ps(rv->inv_dir[2]);
-                /* tmin's bits for the entry's integer maximum (below):
-                 * only rays with tmin >= 0 come here (the others take
-                 * wide8_walk_tmin_other), and -0 becomes +0, the same
-                 * number. */
-                tmin8 = _mm256_max_epi32(_mm256_castps_si256(_mm256_set1_ps(rv->tmin)),
-                                         _mm256_setzero_si256());
-            }
+            const __m256 neg_org_x =
+                any_hit && lanes ? _mm256_broadcast_ss(&no[0]) : _mm256_set1_ps(-rv->org[0]);
+            const __m256 neg_org_y =
+                any_hit && lanes ? _mm256_broadcast_ss(&no[1]) : _mm256_set1_ps(-rv->org[1]);
+            const __m256 neg_org_z =
+                any_hit && lanes ? _mm256_broadcast_ss(&no[2]) : _mm256_set1_ps(-rv->org[2]);
+            const __m256 inv_x = _mm256_set1_ps(rv->inv_dir[0]);
+            const __m256 inv_y = _mm256_set1_ps(rv->inv_dir[1]);
+            const __m256 inv_z = _mm256_set1_ps(rv->inv_dir[2]);
+            /* tmin's bits for the entry's integer maximum (below): only
+             * rays with tmin >= 0 come here (the others take
+             * wide8_walk_tmin_other), and -0 becomes +0, the same number. */
+            const __m256i tmin8 = _mm256_max_epi32(
+                _mm256_castps_si256(_mm256_set1_ps(rv->tmin)), _mm256_setzero_si256());
             /* Inner nodes until a leaf lane comes up (or the stack empties). */
             while (!cur_count) {
                 const struct bvh8_node *n = &nodes[cur];
@@ -352,11 +323,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
             const int first_leaf = !any_hit && !r4_ready;
 #endif
             if (!any_hit && !r4_ready) {
-                /* From the set-up's lanes the vectors are set before the
-                 * walk (WIDE8_WALK1); r4_ready then marks the first leaf
-                 * only. */
-                if (!lanes)
-                    tri4_ray_init(&s->r4, ray);
+                tri4_ray_init(&s->r4, ray);
                 /* The finish's doubles (WIDE8_LEAF_TEST's ray_double): s is
                  * a struct wide_ray_state's (WIDE8_WALK, WIDE8_WALK1). */
                 tri4_ray_init_double(wide_ray_doubles(s), ray);
