@@ -76,11 +76,12 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
      * walk_wide_single1, TRACE_WIDE_WALK1, TRACE_WIDE_WALK1_COUNTED), so
      * the small layouts' copy has no test of it at its pushes and pops.
      * The any-hit walks do not prefetch the stack top on any layout: on
-     * a Raptor Cove core (2 MB L2) the kitchen's shadow rays were faster
-     * without it in every alternated pair, the soup's and bumpy's level
-     * (performance-log.md, round 45, pf1); an any-hit walk ends at its
-     * first hit, before most pushed entries are popped, so a prefetch of
-     * the top is often a line fetched for nothing. */
+     * a Raptor Cove core (2 MB L2) shadow rays were level to faster
+     * without it (the kitchen up in pf1's loaded pairs, level to up in
+     * the lead's quiet ones; the soup up, bumpy level: performance-log.md,
+     * round 45); an any-hit walk ends at its first hit, before most
+     * pushed entries are popped, so a prefetch of the top is often a
+     * line fetched for nothing. */
     const int prefetch_top = !any_hit && leave_early;
     /* After a closest-hit pop, the entry now on top of the stack is the
      * one that comes after the popped subtree: its lines prefetched here
