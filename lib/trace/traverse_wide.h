@@ -510,6 +510,10 @@ static inline __m256 wide8_bound(const char *b, size_t off)
 {
     return _mm256_load_ps((const float *)(const void *)(b + off));
 }
+/* The any-hit walk from the set-up's lanes addresses a node's bounds
+ * from the array's start plus the node's byte offset (walk_wide8_ray):
+ * the bounds must open the node. */
+typedef char bvh8_node_bounds_first[offsetof(struct bvh8_node, bounds) == 0 ? 1 : -1];
 
 /* wide8_compress[m]: the bit positions set in m, highest first, one per
  * byte from the low byte (the rest 0): the left-packing permutation of

@@ -55,6 +55,26 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
         far_z = 7 * row - near_z;
         octant = (int)(nx | ny << 1 | nz << 2);
     }
+    /* An any-hit walk from the set-up's lanes addresses a node's six
+     * rows from six bases, the nodes' array plus each row's offset, and
+     * the node's byte offset: base + offset is one address operand of the
+     * bound's load, where nodes + cur * 256 + row needed an addition
+     * before the loads, one step more on the chain from a node's child
+     * word to its bounds, which every node of a walk waits for.  The same
+     * addresses, so the same bounds. */
+    const char *const node_base = (const char *)(const void *)nodes;
+    const char *row_nx = node_base + near_x, *row_fx = node_base + far_x;
+    const char *row_ny = node_base + near_y, *row_fy = node_base + far_y;
+    const char *row_nz = node_base + near_z, *row_fz = node_base + far_z;
+#if defined(__GNUC__)
+    /* Opaque values: without the asm GCC keeps the row offsets in stack
+     * slots and adds the array's start to each again after every leaf
+     * (six loads and six additions a re-broadcast, where it now reloads
+     * three or four of the bases as it reloaded the offsets). */
+    if (any_hit && lanes)
+        __asm__("" : "+r"(row_nx), "+r"(row_fx), "+r"(row_ny), "+r"(row_fy), "+r"(row_nz),
+                "+r"(row_fz));
+#endif
     const __m256i order_shift = _mm256_setr_epi32(0, 3, 6, 9, 12, 15, 18, 21);
     uint32_t st_child[WIDE_STACK];
     uint32_t st_count[WIDE_STACK];
@@ -195,18 +215,22 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                  *   holds when it holds against each; a far NaN (skipped
                  *   by the exit's fold, the inf taking its place) passes
                  *   its comparison as unordered (!(entry > far)). */
+                const size_t node_off = (size_t)cur * sizeof(nodes[0]);
+#define WIDE8_ROW_BOUND(row, off)                                                                 \
+    (any_hit && lanes ? wide8_bound(row, node_off) : wide8_bound(b, off))
                 const __m256 tnx =
-                    _mm256_mul_ps(_mm256_add_ps(neg_org_x, wide8_bound(b, near_x)), inv_x);
+                    _mm256_mul_ps(_mm256_add_ps(neg_org_x, WIDE8_ROW_BOUND(row_nx, near_x)), inv_x);
                 const __m256 tfx =
-                    _mm256_mul_ps(_mm256_add_ps(neg_org_x, wide8_bound(b, far_x)), inv_x);
+                    _mm256_mul_ps(_mm256_add_ps(neg_org_x, WIDE8_ROW_BOUND(row_fx, far_x)), inv_x);
                 const __m256 tny =
-                    _mm256_mul_ps(_mm256_add_ps(neg_org_y, wide8_bound(b, near_y)), inv_y);
+                    _mm256_mul_ps(_mm256_add_ps(neg_org_y, WIDE8_ROW_BOUND(row_ny, near_y)), inv_y);
                 const __m256 tfy =
-                    _mm256_mul_ps(_mm256_add_ps(neg_org_y, wide8_bound(b, far_y)), inv_y);
+                    _mm256_mul_ps(_mm256_add_ps(neg_org_y, WIDE8_ROW_BOUND(row_fy, far_y)), inv_y);
                 const __m256 tnz =
-                    _mm256_mul_ps(_mm256_add_ps(neg_org_z, wide8_bound(b, near_z)), inv_z);
+                    _mm256_mul_ps(_mm256_add_ps(neg_org_z, WIDE8_ROW_BOUND(row_nz, near_z)), inv_z);
                 const __m256 tfz =
-                    _mm256_mul_ps(_mm256_add_ps(neg_org_z, wide8_bound(b, far_z)), inv_z);
+                    _mm256_mul_ps(_mm256_add_ps(neg_org_z, WIDE8_ROW_BOUND(row_fz, far_z)), inv_z);
+#undef WIDE8_ROW_BOUND
                 const __m256 t0 = _mm256_castsi256_ps(_mm256_max_epi32(
                     _mm256_max_epi32(_mm256_castps_si256(tnx), _mm256_castps_si256(tny)),
                     _mm256_max_epi32(_mm256_castps_si256(tnz), tmin8)));
