@@ -648,6 +648,39 @@ static inline void wide8_push(const struct bvh8_node *n, int octant, __m256 hit,
     *cur_count = n->count[l];
 }
 
+/* wide8_push_stored's gather: the hit lanes highest first. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline __m256i wide8_gather_stored(unsigned pm)
+{
+    return _mm256_cvtepu8_epi32(
+        _mm_loadl_epi64((const __m128i *)(const void *)&wide8_compress[pm]));
+}
+
+#if defined(__AVX512VL__) && defined(__AVX512DQ__)
+/*
+ * The front child of an any-hit walk in the stored order (the lowest hit
+ * lane, as wide8_push_stored takes it) from the node test's mask register:
+ * the node's child words and counts compressed by the mask, lane 0 of
+ * each.  Without the mask's move to a general register, its trailing-zero
+ * count and the child's load after them, which the next node's loads
+ * waited for.  The same child and count, so the same walk.
+ */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void wide8_front_compress(const struct bvh8_node *n, __mmask8 k, uint32_t *cur,
+                                        uint32_t *cur_count)
+{
+    const __m256i child = _mm256_load_si256((const __m256i *)(const void *)n->child);
+    const __m256i count =
+        _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)n->count));
+    *cur = (uint32_t)_mm256_cvtsi256_si32(_mm256_maskz_compress_epi32(k, child));
+    *cur_count = (uint32_t)_mm256_cvtsi256_si32(_mm256_maskz_compress_epi32(k, count));
+}
+#endif
+
 /*
  * wide8_push for an any-hit walk: the hit children in the node's stored
  * order (lowest lane first), not the octant's.  pm: the hit lanes' mask
@@ -667,8 +700,7 @@ static inline void wide8_push_stored(const struct bvh8_node *n, unsigned pm, __m
                                      uint32_t *st_child, uint32_t *st_count, uint32_t *sp,
                                      uint32_t *cur, uint32_t *cur_count)
 {
-    const __m256i gather = _mm256_cvtepu8_epi32(
-        _mm_loadl_epi64((const __m128i *)(const void *)&wide8_compress[pm]));
+    const __m256i gather = wide8_gather_stored(pm);
     /* No entry distances: an any-hit walk's pops never read them (its box
      * limit never shrinks), so the permutation and the store of the
      * distances are left out (two instructions a push). */

@@ -250,8 +250,8 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
 #if defined(__GNUC__)
                 __asm__("" : "+k"(k0), "+k"(k1), "+k"(k2), "+k"(k3));
 #endif
-                const __mmask8 kmask = _kand_mask8(_kand_mask8(k0, k1), _kand_mask8(k2, k3));
-                const unsigned mask = (unsigned)kmask;
+                const unsigned mask =
+                    (unsigned)_kand_mask8(_kand_mask8(k0, k1), _kand_mask8(k2, k3));
                 const __m256 hit = _mm256_castsi256_ps(_mm256_movm_epi32((__mmask8)mask));
 #else
                 const __m256 hit = _mm256_and_ps(
@@ -262,38 +262,19 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                 const unsigned mask = (unsigned)_mm256_movemask_ps(hit);
 #endif
                 if (mask) {
-#if defined(__AVX512VL__) && defined(__AVX512DQ__)
-                    if (any_hit == 1 && lanes) {
-                        /* The front child (the lowest hit lane, as
-                         * wide8_push_stored takes it) by compressing the
-                         * node's child words and counts with the mask
-                         * register itself: lane 0 of each is the front
-                         * child's, without the mask's move to a general
-                         * register, its trailing-zero count and the
-                         * child's load after them, which every node of
-                         * the walk waited for.  The same child, so the
-                         * same walk; the other hit children are pushed
-                         * as wide8_push_stored pushes them. */
-                        const __m256i child =
-                            _mm256_load_si256((const __m256i *)(const void *)n->child);
-                        const __m256i count = _mm256_cvtepu8_epi32(
-                            _mm_loadl_epi64((const __m128i *)(const void *)n->count));
-                        cur = (uint32_t)_mm256_cvtsi256_si32(
-                            _mm256_maskz_compress_epi32(kmask, child));
-                        cur_count = (uint32_t)_mm256_cvtsi256_si32(
-                            _mm256_maskz_compress_epi32(kmask, count));
-                        if (mask & (mask - 1u)) {
-                            const __m256i gather = _mm256_cvtepu8_epi32(_mm_loadl_epi64(
-                                (const __m128i *)(const void *)&wide8_compress[mask]));
-                            wide8_store(n, gather, t0, mask, st_child, st_count, NULL, &sp);
-                        }
-                        continue;
-                    }
-#endif
                     if (!(mask & (mask - 1u))) {
-                        const unsigned l = (unsigned)__builtin_ctz(mask);
-                        cur = n->child[l];
-                        cur_count = n->count[l];
+#if defined(__AVX512VL__) && defined(__AVX512DQ__)
+                        if (any_hit == 1 && lanes)
+                            wide8_front_compress(n, _kand_mask8(_kand_mask8(k0, k1),
+                                                                _kand_mask8(k2, k3)),
+                                                 &cur, &cur_count);
+                        else
+#endif
+                        {
+                            const unsigned l = (unsigned)__builtin_ctz(mask);
+                            cur = n->child[l];
+                            cur_count = n->count[l];
+                        }
                     } else {
                         if (any_hit == WIDE_ANY_LONGEST) {
                             /* The exits as the test took them (scaled),
@@ -308,9 +289,19 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                                                             _mm256_set1_ps(box_limit))));
                             wide8_push_any(n, mask, hit, t0, t1, st_child, st_count, &sp, &cur,
                                            &cur_count);
-                        } else if (any_hit)
+                        } else if (any_hit) {
+#if defined(__AVX512VL__) && defined(__AVX512DQ__)
+                            if (any_hit == 1 && lanes) {
+                                wide8_front_compress(n, _kand_mask8(_kand_mask8(k0, k1),
+                                                                    _kand_mask8(k2, k3)),
+                                                     &cur, &cur_count);
+                                wide8_store(n, wide8_gather_stored(mask), t0, mask, st_child,
+                                            st_count, NULL, &sp);
+                            } else
+#endif
                             wide8_push_stored(n, mask, t0, st_child, st_count, &sp, &cur,
                                               &cur_count);
+                        }
                         else
                             wide8_push(n, octant, hit, t0, order_shift, st_child, st_count, st_t,
                                        &sp, &cur, &cur_count);
