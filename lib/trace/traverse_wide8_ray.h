@@ -264,6 +264,13 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                 if (mask) {
                     if (!(mask & (mask - 1u))) {
 #if defined(__AVX512VL__) && defined(__AVX512DQ__)
+                        /* The mask register itself (mask's operation on
+                         * the same masks, which GCC computes once):
+                         * wide8_front_compress says why.  Called from the
+                         * any-hit branches only: written before the branch,
+                         * the dead block changed the closest-hit walks'
+                         * register allocation (performance-log.md, round
+                         * 46). */
                         if (any_hit == 1 && lanes)
                             wide8_front_compress(n, _kand_mask8(_kand_mask8(k0, k1),
                                                                 _kand_mask8(k2, k3)),
