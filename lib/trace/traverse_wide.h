@@ -1002,7 +1002,7 @@ static inline int wide8_walk_end(const struct wide_state *s, int done, int any_h
                                   any_hit, stats, counters);                                    \
         if (any_hit)                                                                            \
             tri4_ray_init_scalar(&s->r4, ray);                                                  \
-        const int done = walk(wide, s, any_hit, stats, leave_early, NULL, -1);                  \
+        const int done = walk(wide, s, any_hit, stats, leave_early, NULL);                      \
         return wide8_walk_end(s, done, any_hit, stats, counters);                               \
     }
 
@@ -1207,19 +1207,6 @@ typedef char tri4_ray_tmin_org_layout[offsetof(struct tri4_ray, node_neg_org) ==
                                           ? 1
                                           : -1];
 
-/* The closest-hit copies without counters go through one copy of the
- * walk per octant of the ray's direction (a switch on the sign bits, once
- * a ray): the node test's six row offsets and the push's order bytes are
- * then displacements of the node's address.  With the offsets as values,
- * every value live across the leaf calls competed for the five
- * callee-saved registers (rbp is the frame pointer of the realigned
- * stack) and GCC reloaded three or four row offsets from the stack at
- * every node (performance-log.md, rounds 41 and 46); a displacement also
- * leaves the bound's load fused with its add, where Intel's optimization
- * manual has an indexed operand of a three-operand AVX instruction split
- * ("unlaminated") on several of its cores.  The any-hit and counting
- * copies keep one walk (the shadow rays' and the statistics' code as it
- * was). */
 #define WIDE8_WALK1(name, walk, any_hit, stats, leave_early)                                    \
     static int name(const struct bvh4 *wide, const float org[3], const float dir[3],            \
                     float tmin, float t_max, struct trace_hit *hit,                             \
@@ -1242,20 +1229,7 @@ typedef char tri4_ray_tmin_org_layout[offsetof(struct tri4_ray, node_neg_org) ==
                                   any_hit, stats, counters);                                    \
         if (any_hit)                                                                            \
             tri4_ray_init_scalar_lanes(&s->r4, &lanes, tmin);                                   \
-        int done = 0;                                                                           \
-        if (!(any_hit) && !(stats)) {                                                           \
-            switch (_mm_movemask_ps(lanes.dir) & 7) {                                           \
-            case 0: done = walk(wide, s, 0, 0, leave_early, &lanes, 0); break;                  \
-            case 1: done = walk(wide, s, 0, 0, leave_early, &lanes, 1); break;                  \
-            case 2: done = walk(wide, s, 0, 0, leave_early, &lanes, 2); break;                  \
-            case 3: done = walk(wide, s, 0, 0, leave_early, &lanes, 3); break;                  \
-            case 4: done = walk(wide, s, 0, 0, leave_early, &lanes, 4); break;                  \
-            case 5: done = walk(wide, s, 0, 0, leave_early, &lanes, 5); break;                  \
-            case 6: done = walk(wide, s, 0, 0, leave_early, &lanes, 6); break;                  \
-            case 7: done = walk(wide, s, 0, 0, leave_early, &lanes, 7); break;                  \
-            }                                                                                   \
-        } else                                                                                  \
-            done = walk(wide, s, any_hit, stats, leave_early, &lanes, -1);                      \
+        const int done = walk(wide, s, any_hit, stats, leave_early, &lanes);                    \
         return wide8_walk_end(s, done, any_hit, stats, counters);                               \
     }
 

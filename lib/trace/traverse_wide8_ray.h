@@ -11,37 +11,20 @@
  * although the flag was a constant 0 in them.  Define WIDE8_RAY and
  * WIDE8_RAY_LEAF8 before including; no include guard.  lanes: the ray's
  * set-up in SSE lanes where the walk's caller made it (WIDE8_WALK1), else
- * NULL (the walk reads the struct).  fixed_octant: with lanes, the ray's
- * octant as a constant of the caller's copy (WIDE8_WALK1's switch), or -1
- * (the octant read from lanes).
+ * NULL (the walk reads the struct).
  */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
 static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int any_hit, int stats,
-                            int leave_early, const struct ray_lanes *lanes, int fixed_octant)
+                            int leave_early, const struct ray_lanes *lanes)
 {
     const struct trace_ray *ray = s->ray;
     const struct bvh8_node *nodes = wide->nodes8;
     const struct tri4_packet *packets = wide->packets;
     size_t near_x, near_y, near_z, far_x, far_y, far_z;
     int octant = 0;
-    if (lanes && fixed_octant >= 0) {
-        /* A copy for one octant (WIDE8_WALK1's closest-hit walks): the
-         * six row offsets and the octant's order bytes are constants,
-         * displacements of the node's address, so no general register
-         * holds them across the node loop and the leaf calls. */
-        const size_t row = sizeof(nodes[0].bounds[0]);
-        const size_t nx = (size_t)(fixed_octant & 1), ny = (size_t)(fixed_octant >> 1 & 1),
-                     nz = (size_t)(fixed_octant >> 2 & 1);
-        octant = fixed_octant;
-        near_x = nx * 3 * row;
-        far_x = 3 * row - near_x;
-        near_y = (1 + ny * 3) * row;
-        far_y = 5 * row - near_y;
-        near_z = (2 + nz * 3) * row;
-        far_z = 7 * row - near_z;
-    } else if (lanes) {
+    if (lanes) {
         /* The set-up's lanes (WIDE8_WALK1): the octant from the signs of
          * dir, which are those of 1 / dir (-0 gives -inf), so the rows
          * do not wait for the division and the first node's loads can
