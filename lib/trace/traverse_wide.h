@@ -1152,6 +1152,24 @@ WIDE8_WALK(wide8_walk_any_longest_leaf8_stats, walk_wide8_ray_leaf8, WIDE_ANY_LO
  * vectors and the leaf's constants come from the set-up's registers, not
  * from a struct another function has just stored; one call and its
  * stores and loads fewer a ray. */
+/* k_tmin and node_neg_org[0..2] in one store: tmin, then the origin
+ * (org's lanes 0-2, its lane 3 not kept) with its sign bits flipped, -org
+ * as C's unary minus gives it (the node test's bound + (-org),
+ * walk_wide8_ray).  Every walk from the set-up's lanes (WIDE8_WALK1):
+ * the any-hit walks with the leaves' scalar constants, the closest-hit
+ * walks alone (their node test broadcasts -org from here after each leaf
+ * call; their leaves' constants are set at the first leaf). */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void tri4_ray_init_node_org(struct tri4_ray *r, const struct ray_lanes *l,
+                                          float tmin)
+{
+    const __m128 neg_org = _mm_xor_ps(l->org, _mm_set1_ps(-0.0f));
+    _mm_storeu_ps((float *)(void *)((char *)(void *)r + offsetof(struct tri4_ray, k_tmin)),
+                  _mm_move_ss(_mm_permute_ps(neg_org, _MM_SHUFFLE(2, 1, 0, 3)), _mm_set_ss(tmin)));
+}
+
 /* tri4_ray_init_scalar's constants from the set-up's lanes (ray_setup.h):
  * the same floats, stored as the lanes hold them (org_k with its sign
  * bits flipped, inv_k, shear: three 16-byte stores) for the any-hit
@@ -1181,13 +1199,7 @@ static inline void tri4_ray_init_scalar_lanes(struct tri4_ray *r, const struct r
     _mm_storeu_ps(r->k_neg_org, _mm_xor_ps(l->org_k, _mm_set1_ps(-0.0f)));
     _mm_storeu_ps(r->k_inv, l->inv_k);
     _mm_storeu_ps(r->k_shear, l->shear);
-    /* k_tmin and node_neg_org[0..2] in one store: tmin, then the origin
-     * (org's lanes 0-2, its lane 3 not kept) with its sign bits flipped,
-     * -org as C's unary minus gives it (the node test's bound + (-org),
-     * walk_wide8_ray). */
-    const __m128 neg_org = _mm_xor_ps(l->org, _mm_set1_ps(-0.0f));
-    _mm_storeu_ps((float *)(void *)((char *)(void *)r + offsetof(struct tri4_ray, k_tmin)),
-                  _mm_move_ss(_mm_permute_ps(neg_org, _MM_SHUFFLE(2, 1, 0, 3)), _mm_set_ss(tmin)));
+    tri4_ray_init_node_org(r, l, tmin);
 }
 
 /* tri4_ray_init_scalar_lanes' one 32-byte store over off_x .. neg_y. */
@@ -1229,6 +1241,8 @@ typedef char tri4_ray_tmin_org_layout[offsetof(struct tri4_ray, node_neg_org) ==
                                   any_hit, stats, counters);                                    \
         if (any_hit)                                                                            \
             tri4_ray_init_scalar_lanes(&s->r4, &lanes, tmin);                                   \
+        else                                                                                    \
+            tri4_ray_init_node_org(&s->r4, &lanes, tmin);                                       \
         const int done = walk(wide, s, any_hit, stats, leave_early, &lanes);                    \
         return wide8_walk_end(s, done, any_hit, stats, counters);                               \
     }
