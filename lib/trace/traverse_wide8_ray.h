@@ -329,7 +329,11 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
             const int first_leaf = !any_hit && !r4_ready;
 #endif
             if (!any_hit && !r4_ready) {
+#if defined(__AVX2__)
+                tri4_ray_init_vec(&s->r4, ray);
+#else
                 tri4_ray_init(&s->r4, ray);
+#endif
                 /* The finish's doubles (WIDE8_LEAF_TEST's ray_double): s is
                  * a struct wide_ray_state's (WIDE8_WALK, WIDE8_WALK1). */
                 tri4_ray_init_double(wide_ray_doubles(s), ray);
