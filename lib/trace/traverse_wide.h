@@ -633,8 +633,11 @@ static inline void wide8_push(const struct bvh8_node *n, int octant, __m256 hit,
     uint32_t word;
     memcpy(&word, (const char *)n->order[octant] - 1, sizeof(word));
     const uint32_t order = word >> 8;
-    const __m256i lanes = _mm256_and_si256(
-        _mm256_srlv_epi32(_mm256_set1_epi32((int)order), order_shift), _mm256_set1_epi32(7));
+    /* Position p's lane in bits 0-2 of lanes[p], the higher bits those of
+     * the positions after it: not masked off, as every use of lanes is an
+     * index of an eight-lane permutation (vpermps, vpermd), which reads
+     * the index's low three bits only. */
+    const __m256i lanes = _mm256_srlv_epi32(_mm256_set1_epi32((int)order), order_shift);
     const unsigned pm = (unsigned)_mm256_movemask_ps(_mm256_permutevar8x32_ps(hit, lanes));
     const __m128i packed = _mm_loadl_epi64((const __m128i *)(const void *)&wide8_compress[pm]);
     const __m256i gather = _mm256_permutevar8x32_epi32(lanes, _mm256_cvtepu8_epi32(packed));
