@@ -637,8 +637,11 @@ static inline void wide8_push(const struct bvh8_node *n, int octant, __m256 hit,
     uint32_t word;
     memcpy(&word, (const char *)n->order[octant] - 1, sizeof(word));
     const uint32_t order = word >> 8;
-    const __m256i lanes = _mm256_and_si256(
-        _mm256_srlv_epi32(_mm256_set1_epi32((int)order), order_shift), _mm256_set1_epi32(7));
+    /* Position p's lane in bits 0-2 of lanes[p], the higher bits those of
+     * the positions after it: not masked off, as every use of lanes is an
+     * index of an eight-lane permutation (vpermps, vpermd), which reads
+     * the index's low three bits only. */
+    const __m256i lanes = _mm256_srlv_epi32(_mm256_set1_epi32((int)order), order_shift);
     const unsigned pm = (unsigned)_mm256_movemask_ps(_mm256_permutevar8x32_ps(hit, lanes));
     const __m128i packed = _mm_loadl_epi64((const __m128i *)(const void *)&wide8_compress[pm]);
     const __m256i gather = _mm256_permutevar8x32_epi32(lanes, _mm256_cvtepu8_epi32(packed));
@@ -974,6 +977,76 @@ static const uint8_t wide8_rows[8][6] = {WIDE8_ROWS(0, 0, 0), WIDE8_ROWS(1, 0, 0
 #undef WIDE8_ROWS
 #undef WIDE8_ROW
 
+/* off_x .. neg_y of struct tri4_ray from the set-up's lanes in one store
+ * (tri4_ray_init_scalar_lanes says how). */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void tri4_ray_init_offsets_lanes(struct tri4_ray *r, const struct ray_lanes *l)
+{
+    const __m128i neg01 = _mm_srli_epi32(
+        _mm_castps_si128(_mm_cmplt_ps(l->inv_k, _mm_setzero_ps())), 31); /* nx, ny, nz, 0 */
+    const __m256i offs = _mm256_cvtepu32_epi64(_mm_slli_epi32(l->order, 4));
+    const __m256i block = _mm256_blend_epi32(
+        offs, _mm256_inserti128_si256(_mm256_setzero_si256(), _mm_slli_si128(neg01, 8), 1), 0xC0);
+    _mm256_storeu_si256((__m256i *)(void *)((char *)(void *)r + offsetof(struct tri4_ray, off_x)),
+                        block);
+}
+
+/* tri4_ray_init in vectors (AVX2), for the 8-wide closest-hit walks at a
+ * ray's first leaf: the same floats in the same fields, where
+ * tri4_ray_init loads kx, ky and kz and then each float by an index.
+ * kx, ky, kz are consecutive ints of struct trace_ray, loaded as one
+ * vector of lane indices (lane 3, sx's bits, is not used); org and
+ * inv_dir are each followed by another float in the struct, so each is
+ * one 16-byte load, permuted into kx, ky, kz order.  -org by the sign bit
+ * (C's unary minus), inv_dir[kx] < 0 by a comparison of the same float,
+ * sx, sy, sz and tmin broadcast from the struct. */
+#if defined(__AVX2__)
+typedef char tri4_ray_init_vec_layout
+    [offsetof(struct trace_ray, ky) == offsetof(struct trace_ray, kx) + sizeof(int) &&
+             offsetof(struct trace_ray, kz) == offsetof(struct trace_ray, kx) + 2 * sizeof(int) &&
+             offsetof(struct trace_ray, sx) == offsetof(struct trace_ray, kx) + 3 * sizeof(int) &&
+             offsetof(struct trace_ray, dir) == offsetof(struct trace_ray, org) + 3 * sizeof(float) &&
+             offsetof(struct trace_ray, tmin) ==
+                 offsetof(struct trace_ray, inv_dir) + 3 * sizeof(float) &&
+             sizeof(int) == 4
+         ? 1
+         : -1];
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void tri4_ray_init_vec(struct tri4_ray *r, const struct trace_ray *ray)
+{
+    const char *b = (const char *)(const void *)ray;
+    const __m128i idx =
+        _mm_loadu_si128((const __m128i *)(const void *)(b + offsetof(struct trace_ray, kx)));
+    const __m128 org_k = _mm_permutevar_ps(
+        _mm_loadu_ps((const float *)(const void *)(b + offsetof(struct trace_ray, org))), idx);
+    const __m128 inv_k = _mm_permutevar_ps(
+        _mm_loadu_ps((const float *)(const void *)(b + offsetof(struct trace_ray, inv_dir))), idx);
+    /* off_x .. neg_y in one store (tri4_ray_init_scalar_lanes says how);
+     * lane 3 of idx is replaced by the blend. */
+    const __m128i neg01 =
+        _mm_srli_epi32(_mm_castps_si128(_mm_cmplt_ps(inv_k, _mm_setzero_ps())), 31);
+    const __m256i offs = _mm256_cvtepu32_epi64(_mm_slli_epi32(idx, 4));
+    const __m256i block = _mm256_blend_epi32(
+        offs, _mm256_inserti128_si256(_mm256_setzero_si256(), _mm_slli_si128(neg01, 8), 1), 0xC0);
+    _mm256_storeu_si256((__m256i *)(void *)((char *)(void *)r + offsetof(struct tri4_ray, off_x)),
+                        block);
+    const __m128 neg_org = _mm_xor_ps(org_k, _mm_set1_ps(-0.0f));
+    r->neg_org_x = _mm_permute_ps(neg_org, 0x00);
+    r->neg_org_y = _mm_permute_ps(neg_org, 0x55);
+    r->neg_org_z = _mm_permute_ps(neg_org, 0xAA);
+    r->sx = _mm_set1_ps(ray->sx);
+    r->sy = _mm_set1_ps(ray->sy);
+    r->sz = _mm_set1_ps(ray->sz);
+    r->inv_x = _mm_permute_ps(inv_k, 0x00);
+    r->inv_y = _mm_permute_ps(inv_k, 0x55);
+    r->tmin = _mm_set1_ps(ray->tmin);
+}
+#endif
+
 #define WIDE8_RAY walk_wide8_ray
 #define WIDE8_RAY_LEAF8 0
 #include "trace/traverse_wide8_ray.h"
@@ -1188,6 +1261,24 @@ WIDE8_WALK(wide8_walk_any_longest_leaf8_stats, walk_wide8_ray_leaf8, WIDE_ANY_LO
  * vectors and the leaf's constants come from the set-up's registers, not
  * from a struct another function has just stored; one call and its
  * stores and loads fewer a ray. */
+/* k_tmin and node_neg_org[0..2] in one store: tmin, then the origin
+ * (org's lanes 0-2, its lane 3 not kept) with its sign bits flipped, -org
+ * as C's unary minus gives it (the node test's bound + (-org),
+ * walk_wide8_ray).  Every walk from the set-up's lanes (WIDE8_WALK1):
+ * the any-hit walks with the leaves' scalar constants, the closest-hit
+ * walks alone (their node test broadcasts -org from here after each leaf
+ * call; their leaves' constants are set at the first leaf). */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void tri4_ray_init_node_org(struct tri4_ray *r, const struct ray_lanes *l,
+                                          float tmin)
+{
+    const __m128 neg_org = _mm_xor_ps(l->org, _mm_set1_ps(-0.0f));
+    _mm_storeu_ps((float *)(void *)((char *)(void *)r + offsetof(struct tri4_ray, k_tmin)),
+                  _mm_move_ss(_mm_permute_ps(neg_org, _MM_SHUFFLE(2, 1, 0, 3)), _mm_set_ss(tmin)));
+}
+
 /* tri4_ray_init_scalar's constants from the set-up's lanes (ray_setup.h):
  * the same floats, stored as the lanes hold them (org_k with its sign
  * bits flipped, inv_k, shear: three 16-byte stores) for the any-hit
@@ -1207,23 +1298,11 @@ static inline void tri4_ray_init_scalar_lanes(struct tri4_ray *r, const struct r
      * (loads, shifts, a movemask and its bits, five stores).  The same
      * values: the order's indices shifted by 4, zero-extended; the
      * comparison's all-ones lanes shifted right by 31. */
-    const __m128i neg01 = _mm_srli_epi32(
-        _mm_castps_si128(_mm_cmplt_ps(l->inv_k, _mm_setzero_ps())), 31); /* nx, ny, nz, 0 */
-    const __m256i offs = _mm256_cvtepu32_epi64(_mm_slli_epi32(l->order, 4));
-    const __m256i block = _mm256_blend_epi32(
-        offs, _mm256_inserti128_si256(_mm256_setzero_si256(), _mm_slli_si128(neg01, 8), 1), 0xC0);
-    _mm256_storeu_si256((__m256i *)(void *)((char *)(void *)r + offsetof(struct tri4_ray, off_x)),
-                        block);
+    tri4_ray_init_offsets_lanes(r, l);
     _mm_storeu_ps(r->k_neg_org, _mm_xor_ps(l->org_k, _mm_set1_ps(-0.0f)));
     _mm_storeu_ps(r->k_inv, l->inv_k);
     _mm_storeu_ps(r->k_shear, l->shear);
-    /* k_tmin and node_neg_org[0..2] in one store: tmin, then the origin
-     * (org's lanes 0-2, its lane 3 not kept) with its sign bits flipped,
-     * -org as C's unary minus gives it (the node test's bound + (-org),
-     * walk_wide8_ray). */
-    const __m128 neg_org = _mm_xor_ps(l->org, _mm_set1_ps(-0.0f));
-    _mm_storeu_ps((float *)(void *)((char *)(void *)r + offsetof(struct tri4_ray, k_tmin)),
-                  _mm_move_ss(_mm_permute_ps(neg_org, _MM_SHUFFLE(2, 1, 0, 3)), _mm_set_ss(tmin)));
+    tri4_ray_init_node_org(r, l, tmin);
 }
 
 /* tri4_ray_init_scalar_lanes' one 32-byte store over off_x .. neg_y. */
@@ -1265,6 +1344,8 @@ typedef char tri4_ray_tmin_org_layout[offsetof(struct tri4_ray, node_neg_org) ==
                                   any_hit, stats, counters);                                    \
         if (any_hit)                                                                            \
             tri4_ray_init_scalar_lanes(&s->r4, &lanes, tmin);                                   \
+        else                                                                                    \
+            tri4_ray_init_node_org(&s->r4, &lanes, tmin);                                       \
         const int done = walk(wide, s, any_hit, stats, leave_early, &lanes);                    \
         return wide8_walk_end(s, done, any_hit, stats, counters);                               \
     }

@@ -168,15 +168,20 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
              * ray's org took a load, a sign flip and a register
              * broadcast, loaded again after each leaf call (the
              * barrier above) instead of kept across it. */
+            /* A closest-hit walk from the set-up's lanes reads the same
+             * stored -org (WIDE8_WALK1 stores it for both): the leaf
+             * call takes s, so the broadcasts load it again after each
+             * call, without the load, sign flip and register broadcast
+             * a leaf visit of the ray's org. */
             const float *no = NULL;
-            if (any_hit && lanes)
+            if (lanes)
                 no = s->r4.node_neg_org;
             const __m256 neg_org_x =
-                any_hit && lanes ? _mm256_broadcast_ss(&no[0]) : _mm256_set1_ps(-rv->org[0]);
+                lanes ? _mm256_broadcast_ss(&no[0]) : _mm256_set1_ps(-rv->org[0]);
             const __m256 neg_org_y =
-                any_hit && lanes ? _mm256_broadcast_ss(&no[1]) : _mm256_set1_ps(-rv->org[1]);
+                lanes ? _mm256_broadcast_ss(&no[1]) : _mm256_set1_ps(-rv->org[1]);
             const __m256 neg_org_z =
-                any_hit && lanes ? _mm256_broadcast_ss(&no[2]) : _mm256_set1_ps(-rv->org[2]);
+                lanes ? _mm256_broadcast_ss(&no[2]) : _mm256_set1_ps(-rv->org[2]);
             const __m256 inv_x = _mm256_set1_ps(rv->inv_dir[0]);
             const __m256 inv_y = _mm256_set1_ps(rv->inv_dir[1]);
             const __m256 inv_z = _mm256_set1_ps(rv->inv_dir[2]);
@@ -374,7 +379,11 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
             const int first_leaf = !any_hit && !r4_ready;
 #endif
             if (!any_hit && !r4_ready) {
+#if defined(__AVX2__)
+                tri4_ray_init_vec(&s->r4, ray);
+#else
                 tri4_ray_init(&s->r4, ray);
+#endif
                 /* The finish's doubles (WIDE8_LEAF_TEST's ray_double): s is
                  * a struct wide_ray_state's (WIDE8_WALK, WIDE8_WALK1). */
                 tri4_ray_init_double(wide_ray_doubles(s), ray);
