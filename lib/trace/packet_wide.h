@@ -1024,7 +1024,7 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                  * pass the boxes of about 80 % of the triangles they
                  * meet; pk16's one-packet form was 10-12 % slower there).
                  * docs/performance-log.md, pk16, pk18. */
-                done |= packet_leaf8(p, wide->packets, cur, cur_count, r8, any_hit, !any_hit, limit_hi);
+                done |= packet_leaf8(p, wide->packets, cur, cur_count, r8, any_hit, 1, limit_hi);
                 single &= ~r8;
             }
             for (unsigned m = single; m; m &= m - 1u) {
