@@ -534,20 +534,6 @@ static inline unsigned packet_leaf8_body(struct packet_state *p,
     return done;
 }
 
-/* The any-hit copy with the triangles' box test (packet_tri_beam), out of
- * line: the any-hit walk reaches it in the kitchen's shadow packets (1.1
- * leaves a packet) but hardly in gears' (0.03) or bumpy's (0.06), whose
- * walk then keeps the code it has without the copy inlined into it. */
-#if defined(__GNUC__)
-__attribute__((noinline))
-#endif
-static unsigned packet_leaf8_any_beam(struct packet_state *p, const struct tri4_packet *packets,
-                                      uint32_t first, uint32_t count, unsigned rays,
-                                      __m256 limit_hi)
-{
-    return packet_leaf8_body(p, packets, first, count, rays, 1, 0, 1, limit_hi);
-}
-
 /* packet_leaf8_body for `rays`: with few rays, their triangles' first
  * exits by pairs of rays first (tri8_pair_filter), and tri8_test only for
  * the triangles one of them passes (the others tri8_test would leave at
@@ -573,11 +559,8 @@ static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_pa
      * test; eight rays of a kitchen camera packet, 22 %). */
     if ((unsigned)__builtin_popcount(rays) <= PACKET_PAIR_MAX)
         return packet_leaf8_body(p, packets, first, count, rays, any_hit, 1, 0, limit_hi);
-    if (beam && count > PACKET_BEAM_MIN) {
-        if (any_hit)
-            return packet_leaf8_any_beam(p, packets, first, count, rays, limit_hi);
+    if (beam && count > PACKET_BEAM_MIN)
         return packet_leaf8_body(p, packets, first, count, rays, any_hit, 0, 1, limit_hi);
-    }
     return packet_leaf8_body(p, packets, first, count, rays, any_hit, 0, 0, limit_hi);
 }
 #endif
