@@ -104,10 +104,6 @@ struct packet_state {
     struct tri8_rays t8;
     unsigned lanes8; /* the rays t8 holds: those with the first ray's kx, ky, kz */
     int t8_ready;    /* t8 set up (at the first leaf that uses it) */
-    /* An any-hit packet whose triangles' box test (packet_tri_beam) has
-     * refused a triangle of a two-packet leaf: its leaves of one
-     * triangle packet take the test too (packet_leaf8). */
-    int beam_one;
     /* Each ray's limit for the eight-ray test (wide_leaf's: the next
      * float above its best once it has a hit); kept up to date wherever
      * a ray's best changes (packet_take_hit, packet_sync). */
@@ -352,7 +348,7 @@ static inline void packet_sync(struct packet_state *p, unsigned r)
  * walk's to the bit).
  */
 static inline unsigned packet_tri_beam(const struct packet_state *p, const struct tri4_packet *q,
-                                       const struct tri4_packet *q1, __m256 limit_hi)
+                                       __m256 limit_hi)
 {
     const __m256 scale = _mm256_set1_ps(ISECT_BOX_FAR_SCALE);
     __m256 t0 = p->ia_tmin;
@@ -361,9 +357,9 @@ static inline unsigned packet_tri_beam(const struct packet_state *p, const struc
         /* Lanes 0-3 the triangles of q, lanes 4-7 those of q + 1: the
          * leaf's two triangle packets in one pass, each lane the same
          * operations as a four-lane pass would give it. */
-        const __m256 a = _mm256_loadu2_m128(q1->v[0][k], q->v[0][k]);
-        const __m256 b = _mm256_loadu2_m128(q1->v[1][k], q->v[1][k]);
-        const __m256 c = _mm256_loadu2_m128(q1->v[2][k], q->v[2][k]);
+        const __m256 a = _mm256_loadu2_m128(q[1].v[0][k], q[0].v[0][k]);
+        const __m256 b = _mm256_loadu2_m128(q[1].v[1][k], q[0].v[1][k]);
+        const __m256 c = _mm256_loadu2_m128(q[1].v[2][k], q[0].v[2][k]);
         const __m256 lo = _mm256_min_ps(_mm256_min_ps(a, b), c);
         const __m256 hi = _mm256_max_ps(_mm256_max_ps(a, b), c);
         const int neg = p->ia_octant >> k & 1;
@@ -406,16 +402,7 @@ static inline unsigned packet_leaf8_body(struct packet_state *p,
      * before the first tri8_test (packet_tri_beam).  limit_hi does not
      * change during the leaf, so the second packet's bits are those a
      * test after the first packet's triangles would give. */
-    unsigned beam_tris = 0;
-    if (beam) {
-        /* An any-hit leaf of one triangle packet (p->beam_one) tests its
-         * boxes in both halves; only the first half's bits are read. */
-        const struct tri4_packet *q1 =
-            any_hit ? &packets[first + (count > PACKET_BEAM_MIN)] : &packets[first + 1];
-        beam_tris = packet_tri_beam(p, &packets[first], q1, limit_hi);
-        if (any_hit && count > PACKET_BEAM_MIN && (~beam_tris & ((1u << count) - 1u)))
-            p->beam_one = 1;
-    }
+    const unsigned beam_tris = beam ? packet_tri_beam(p, &packets[first], limit_hi) : 0u;
     /* Only an any-hit ray leaves `rays` (packet_take_hit returns 1 for
      * it alone); a closest-hit leaf keeps all its rays, so its loops do
      * not test for an empty packet (measured, docs/performance-log.md,
@@ -572,7 +559,7 @@ static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_pa
      * test; eight rays of a kitchen camera packet, 22 %). */
     if ((unsigned)__builtin_popcount(rays) <= PACKET_PAIR_MAX)
         return packet_leaf8_body(p, packets, first, count, rays, any_hit, 1, 0, limit_hi);
-    if (beam && (count > PACKET_BEAM_MIN || (any_hit && p->beam_one)))
+    if (beam && count > PACKET_BEAM_MIN)
         return packet_leaf8_body(p, packets, first, count, rays, any_hit, 0, 1, limit_hi);
     return packet_leaf8_body(p, packets, first, count, rays, any_hit, 0, 0, limit_hi);
 }
@@ -1497,7 +1484,6 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
         if ((unsigned)__builtin_popcount(p.lanes8) < PACKET_TRI8_MIN)
             p.lanes8 = 0;
         p.t8_ready = 0;
-        p.beam_one = 0;
         p.triangle_tests = 0;
         /* The interval walk sets up a ray's leaf constants (r4) at its
          * first leaf outside the eight-ray test. */
