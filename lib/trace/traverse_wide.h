@@ -977,16 +977,18 @@ static const uint8_t wide8_rows[8][6] = {WIDE8_ROWS(0, 0, 0), WIDE8_ROWS(1, 0, 0
 #undef WIDE8_ROWS
 #undef WIDE8_ROW
 
-/* off_x .. neg_y of struct tri4_ray from the set-up's lanes in one store
- * (tri4_ray_init_scalar_lanes says how). */
+/* off_x .. neg_y of struct tri4_ray in one store (tri4_ray_init_scalar_lanes
+ * says how) from inv_k (inv_dir in kx, ky, kz order) and order (kx, ky,
+ * kz as lane indices; lane 3 is replaced by the blend): the set-up's
+ * lanes or, at a closest-hit ray's first leaf, tri4_ray_init_vec's. */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline void tri4_ray_init_offsets_lanes(struct tri4_ray *r, const struct ray_lanes *l)
+static inline void tri4_ray_init_offsets(struct tri4_ray *r, __m128 inv_k, __m128i order)
 {
     const __m128i neg01 = _mm_srli_epi32(
-        _mm_castps_si128(_mm_cmplt_ps(l->inv_k, _mm_setzero_ps())), 31); /* nx, ny, nz, 0 */
-    const __m256i offs = _mm256_cvtepu32_epi64(_mm_slli_epi32(l->order, 4));
+        _mm_castps_si128(_mm_cmplt_ps(inv_k, _mm_setzero_ps())), 31); /* nx, ny, nz, 0 */
+    const __m256i offs = _mm256_cvtepu32_epi64(_mm_slli_epi32(order, 4));
     const __m256i block = _mm256_blend_epi32(
         offs, _mm256_inserti128_si256(_mm256_setzero_si256(), _mm_slli_si128(neg01, 8), 1), 0xC0);
     _mm256_storeu_si256((__m256i *)(void *)((char *)(void *)r + offsetof(struct tri4_ray, off_x)),
@@ -1025,15 +1027,7 @@ static inline void tri4_ray_init_vec(struct tri4_ray *r, const struct trace_ray 
         _mm_loadu_ps((const float *)(const void *)(b + offsetof(struct trace_ray, org))), idx);
     const __m128 inv_k = _mm_permutevar_ps(
         _mm_loadu_ps((const float *)(const void *)(b + offsetof(struct trace_ray, inv_dir))), idx);
-    /* off_x .. neg_y in one store (tri4_ray_init_scalar_lanes says how);
-     * lane 3 of idx is replaced by the blend. */
-    const __m128i neg01 =
-        _mm_srli_epi32(_mm_castps_si128(_mm_cmplt_ps(inv_k, _mm_setzero_ps())), 31);
-    const __m256i offs = _mm256_cvtepu32_epi64(_mm_slli_epi32(idx, 4));
-    const __m256i block = _mm256_blend_epi32(
-        offs, _mm256_inserti128_si256(_mm256_setzero_si256(), _mm_slli_si128(neg01, 8), 1), 0xC0);
-    _mm256_storeu_si256((__m256i *)(void *)((char *)(void *)r + offsetof(struct tri4_ray, off_x)),
-                        block);
+    tri4_ray_init_offsets(r, inv_k, idx);
     const __m128 neg_org = _mm_xor_ps(org_k, _mm_set1_ps(-0.0f));
     r->neg_org_x = _mm_permute_ps(neg_org, 0x00);
     r->neg_org_y = _mm_permute_ps(neg_org, 0x55);
@@ -1298,7 +1292,7 @@ static inline void tri4_ray_init_scalar_lanes(struct tri4_ray *r, const struct r
      * (loads, shifts, a movemask and its bits, five stores).  The same
      * values: the order's indices shifted by 4, zero-extended; the
      * comparison's all-ones lanes shifted right by 31. */
-    tri4_ray_init_offsets_lanes(r, l);
+    tri4_ray_init_offsets(r, l->inv_k, l->order);
     _mm_storeu_ps(r->k_neg_org, _mm_xor_ps(l->org_k, _mm_set1_ps(-0.0f)));
     _mm_storeu_ps(r->k_inv, l->inv_k);
     _mm_storeu_ps(r->k_shear, l->shear);

@@ -161,18 +161,14 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
              * (IEEE 754's x - y is x + (-y)), and the addition takes the
              * bound as its memory operand (the subtraction cannot, the bound
              * being its minuend): six loads fewer per node. */
-            /* An any-hit walk from the set-up's lanes (WIDE8_WALK1) reads
-             * -org as the set-up stored it negated (tri4_ray's
-             * node_neg_org: the same floats, -org by the sign bit as
-             * C's unary minus): a broadcast from memory each, where the
+            /* A walk from the set-up's lanes (WIDE8_WALK1, any-hit and
+             * closest-hit alike) reads -org as the set-up stored it
+             * negated (tri4_ray's node_neg_org: the same floats, -org by
+             * the sign bit as C's unary minus): a broadcast from memory
+             * each, loaded again after each leaf call (the leaf takes s;
+             * the barrier above) instead of kept across it, where the
              * ray's org took a load, a sign flip and a register
-             * broadcast, loaded again after each leaf call (the
-             * barrier above) instead of kept across it. */
-            /* A closest-hit walk from the set-up's lanes reads the same
-             * stored -org (WIDE8_WALK1 stores it for both): the leaf
-             * call takes s, so the broadcasts load it again after each
-             * call, without the load, sign flip and register broadcast
-             * a leaf visit of the ray's org. */
+             * broadcast each time. */
             const float *no = NULL;
             if (lanes)
                 no = s->r4.node_neg_org;
