@@ -276,6 +276,16 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                             wide8_front_compress(n, _kand_mask8(_kand_mask8(k0, k1),
                                                                 _kand_mask8(k2, k3)),
                                                  &cur, &cur_count);
+                        /* A closest-hit walk's node with one hit child
+                         * has no order to decide: the only hit lane is
+                         * the lowest, so the compression takes the child
+                         * the count would, and the next node's address
+                         * waits on the mask register's compression, not
+                         * on kmovb, tzcnt and a load after them. */
+                        else if (!any_hit && lanes)
+                            wide8_front_compress(n, _kand_mask8(_kand_mask8(k0, k1),
+                                                                _kand_mask8(k2, k3)),
+                                                 &cur, &cur_count);
                         else
 #endif
                         {
