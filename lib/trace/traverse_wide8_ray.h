@@ -55,7 +55,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
         far_z = 7 * row - near_z;
         octant = (int)(nx | ny << 1 | nz << 2);
     }
-    /* An any-hit walk from the set-up's lanes addresses a node's six
+    /* A walk from the set-up's lanes (any-hit and closest-hit alike) addresses a node's six
      * rows from six bases, the nodes' array plus each row's offset, and
      * the node's byte offset: base + offset is one address operand of the
      * bound's load, where nodes + cur * 256 + row needed an addition
@@ -71,7 +71,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
      * slots and adds the array's start to each again after every leaf
      * (six loads and six additions a re-broadcast, where it now reloads
      * three or four of the bases as it reloaded the offsets). */
-    if (any_hit && lanes)
+    if (lanes)
         __asm__("" : "+r"(row_nx), "+r"(row_fx), "+r"(row_ny), "+r"(row_fy), "+r"(row_nz),
                 "+r"(row_fz));
 #endif
@@ -218,7 +218,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                  *   its comparison as unordered (!(entry > far)). */
                 const size_t node_off = (size_t)cur * sizeof(nodes[0]);
 #define WIDE8_ROW_BOUND(row, off)                                                                 \
-    (any_hit && lanes ? wide8_bound(row, node_off) : wide8_bound(b, off))
+    (lanes ? wide8_bound(row, node_off) : wide8_bound(b, off))
                 const __m256 tnx =
                     _mm256_mul_ps(_mm256_add_ps(neg_org_x, WIDE8_ROW_BOUND(row_nx, near_x)), inv_x);
                 const __m256 tfx =
