@@ -684,6 +684,48 @@ static inline void wide8_front_compress(const struct bvh8_node *n, __mmask8 k, u
 }
 #endif
 
+#if defined(__AVX512VL__) && defined(__AVX512DQ__)
+/*
+ * wide8_push with the front child taken by compression (AVX-512): the
+ * node's child words and counts permuted into the octant's order (lanes:
+ * their loads and the permutation wait for the node and the order word,
+ * not for the node test), then compressed by the hit lanes in that order
+ * (a mask register from the permuted hit vector), lane 0 of each.  That is
+ * the hit child at the lowest position of the order, the one wide8_push
+ * takes by the trailing-zero count of the positions' movemask, the shift
+ * of the order word and the child's load after them; so the next node's
+ * address waits on vpermps -> vpmovd2m -> vpcompressd -> vmovd instead of
+ * vpermps -> vmovmskps -> tzcnt -> lea -> shrx -> and -> load.  The pushes
+ * are wide8_push's (the same table, the same slots).
+ */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void wide8_push_compress(const struct bvh8_node *n, int octant, __m256 hit,
+                                       __m256 t0, __m256i order_shift, uint32_t *st_child,
+                                       uint32_t *st_count, float *st_t, uint32_t *sp,
+                                       uint32_t *cur, uint32_t *cur_count)
+{
+    uint32_t word;
+    memcpy(&word, (const char *)n->order[octant] - 1, sizeof(word));
+    const uint32_t order = word >> 8;
+    const __m256i lanes = _mm256_srlv_epi32(_mm256_set1_epi32((int)order), order_shift);
+    const __m256 hit_ord = _mm256_permutevar8x32_ps(hit, lanes);
+    const unsigned pm = (unsigned)_mm256_movemask_ps(hit_ord);
+    const __mmask8 km = _mm256_movepi32_mask(_mm256_castps_si256(hit_ord));
+    const __m128i packed = _mm_loadl_epi64((const __m128i *)(const void *)&wide8_compress[pm]);
+    const __m256i gather = _mm256_permutevar8x32_epi32(lanes, _mm256_cvtepu8_epi32(packed));
+    wide8_store(n, gather, t0, pm, st_child, st_count, st_t, sp);
+    const __m256i child = _mm256_load_si256((const __m256i *)(const void *)n->child);
+    const __m256i count =
+        _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)n->count));
+    *cur = (uint32_t)_mm256_cvtsi256_si32(
+        _mm256_maskz_compress_epi32(km, _mm256_permutevar8x32_epi32(child, lanes)));
+    *cur_count = (uint32_t)_mm256_cvtsi256_si32(
+        _mm256_maskz_compress_epi32(km, _mm256_permutevar8x32_epi32(count, lanes)));
+}
+#endif
+
 /*
  * wide8_push for an any-hit walk: the hit children in the node's stored
  * order (lowest lane first), not the octant's.  pm: the hit lanes' mask

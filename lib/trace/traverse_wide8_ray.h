@@ -321,6 +321,12 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                                               &cur_count);
                         }
                         else
+#if defined(__AVX512VL__) && defined(__AVX512DQ__)
+                            if (lanes)
+                                wide8_push_compress(n, octant, hit, t0, order_shift, st_child,
+                                                    st_count, st_t, &sp, &cur, &cur_count);
+                            else
+#endif
                             wide8_push(n, octant, hit, t0, order_shift, st_child, st_count, st_t,
                                        &sp, &cur, &cur_count);
                         if (prefetch_top) {
