@@ -587,86 +587,144 @@ static inline unsigned tri4_pair_filter_lanes(const struct tri4_ray *r,
      * interval and det exactly as tri4_filter_lanes (its comments say
      * why each is the scalar test's). */
     const __m256 zero = _mm256_setzero_ps();
-    const __m256 any_neg =
-        _mm256_cmp_ps(_mm256_min_ps(sh.U, _mm256_min_ps(sh.V, sh.W)), zero, _CMP_LT_OQ);
-    const __m256 any_pos =
-        _mm256_cmp_ps(_mm256_max_ps(sh.U, _mm256_max_ps(sh.V, sh.W)), zero, _CMP_GT_OQ);
-    const __m256 mixed = _mm256_and_ps(any_neg, any_pos);
-    if (early_out && ((unsigned)_mm256_movemask_ps(mixed) & valid) == valid)
-        return 0;
-
-    __m256 Az, Bz, Cz, z_lo, z_hi, t_lo, t_hi;
-    if (behind_out == TRI4_BEHIND_FIRST) {
-        /* The leaf refused here, after the signs and before the edge
-         * zeros, det, keep and the deferred lanes, when no valid lane
-         * with unmixed signs passes the depth and box tests of `geom`
-         * below with a box interval that reaches tmin: with a camera
-         * inside a room, the leaf whose box holds the camera is visited
-         * by nearly every camera ray, and its lanes are missed by the
-         * line (mixed signs) or lie wholly behind the camera.  The
-         * depths and the box interval computed here are those the code
-         * below uses (it computes them only without this block), the
-         * same operations in the same order; `behind` is the refusal's
-         * own comparisons below.  Exact: the returned mask is a subset of
-         * geom & ~behind & valid (keep and deferred lie within geom; the
-         * behind refusal takes `behind` out), and geom is pre & ~mixed;
-         * so when pre & ~mixed & ~behind & valid is empty the mask below
-         * is 0, nothing is stored and 0 is returned, as here.  rr5's exit
-         * (round 42) in every 8-lane call; here only in a ray's first
-         * leaf (traverse_wide8_ray.h says why). */
+    __m256 Az, Bz, Cz, z_lo, z_hi, t_lo, t_hi, det;
+    unsigned mask, deferred;
+#if defined(__AVX512VL__) && defined(__AVX512DQ__)
+    if (!any_hit) {
+        /* AVX-512, the closest-hit leaves: the same comparisons (the same
+         * predicates on the same floats, so the same bits) into mask
+         * registers, combined there and moved once for each test the
+         * code branches on.  The vector form's VEX compares cannot read
+         * xmm16-31, where GCC keeps many of this filter's vectors on
+         * AVX-512, and it copied them into xmm0-15 before each compare
+         * (about nine vmovaps a call in wide8_leaf8_closest, besides the
+         * vandps and vmovmskps the masks' logic replaces). */
+        const __mmask8 mixed = _kand_mask8(
+            _mm256_cmp_ps_mask(_mm256_min_ps(sh.U, _mm256_min_ps(sh.V, sh.W)), zero, _CMP_LT_OQ),
+            _mm256_cmp_ps_mask(_mm256_max_ps(sh.U, _mm256_max_ps(sh.V, sh.W)), zero, _CMP_GT_OQ));
+        if (early_out && (_cvtmask8_u32(mixed) & valid) == valid)
+            return 0;
+        const __m256 tmin = TRI4_CONST8(r, tmin, k_tmin, scalar);
+        const __m256 limit = _mm256_set1_ps(t_max);
         tri4_pair_depths(TRI4_CONST8(r, sz, k_inv[2], scalar), az, bz, cz, &Az, &Bz, &Cz, &z_lo,
                          &z_hi);
-        const __m256 limit = _mm256_set1_ps(t_max);
         tri4_pair_box_interval(r, scalar, ax, bx, cx, ay, by, cy, z_lo, z_hi, &t_lo, &t_hi);
-        const __m256 tmin = TRI4_CONST8(r, tmin, k_tmin, scalar);
-        const __m256 pre =
-            _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(z_hi, tmin, _CMP_GE_OQ),
-                                        _mm256_cmp_ps(z_lo, limit, _CMP_LT_OQ)),
-                          _mm256_cmp_ps(t_lo, limit, _CMP_LT_OQ));
-        const __m256 behind = _mm256_and_ps(_mm256_cmp_ps(t_hi, tmin, _CMP_LT_OQ),
-                                            _mm256_cmp_ps(t_lo, tmin, _CMP_LT_OQ));
-        if (((unsigned)_mm256_movemask_ps(_mm256_andnot_ps(_mm256_or_ps(behind, mixed), pre)) &
+        const __mmask8 geom =
+            _kandn_mask8(mixed, _kand_mask8(_kand_mask8(_mm256_cmp_ps_mask(z_hi, tmin, _CMP_GE_OQ),
+                                                        _mm256_cmp_ps_mask(z_lo, limit, _CMP_LT_OQ)),
+                                            _mm256_cmp_ps_mask(t_lo, limit, _CMP_LT_OQ)));
+        /* The lanes wholly before tmin (behind_out, below), compared only
+         * where they are used (off the chain to the verdict, as below). */
+#define TRI4_PAIR_BEHIND_K                                                                        \
+    _kand_mask8(_mm256_cmp_ps_mask(t_hi, tmin, _CMP_LT_OQ), _mm256_cmp_ps_mask(t_lo, tmin, _CMP_LT_OQ))
+        /* TRI4_BEHIND_FIRST's refusal (below): geom & ~behind is its
+         * pre & ~mixed & ~behind. */
+        if (behind_out == TRI4_BEHIND_FIRST &&
+            (_cvtmask8_u32(_kandn_mask8(TRI4_PAIR_BEHIND_K, geom)) & valid) == 0)
+            return 0;
+        /* depth_out's early return (below) is left out: it refuses only
+         * where geom has no valid lane, and then the mask below is empty
+         * too (keep and deferred lie within geom), so 0 is returned
+         * either way. */
+        const __mmask8 edge =
+            _kor_mask8(_kor_mask8(_mm256_cmp_ps_mask(sh.U, zero, _CMP_EQ_OQ),
+                                  _mm256_cmp_ps_mask(sh.V, zero, _CMP_EQ_OQ)),
+                       _mm256_cmp_ps_mask(sh.W, zero, _CMP_EQ_OQ));
+        det = _mm256_add_ps(_mm256_add_ps(sh.U, sh.V), sh.W);
+        const __m256 abs_det = _mm256_andnot_ps(_mm256_set1_ps(-0.0f), det);
+        const __mmask8 finite =
+            _kand_mask8(_mm256_cmp_ps_mask(det, zero, _CMP_NEQ_UQ),
+                        _mm256_cmp_ps_mask(abs_det, _mm256_set1_ps(INFINITY), _CMP_LT_OQ));
+        /* (keep & valid) | deferred, keep = geom & finite and deferred =
+         * geom & edge & valid, as one mask: geom & (finite | edge). */
+        mask = _cvtmask8_u32(_kand_mask8(geom, _kor_mask8(finite, edge))) & valid;
+        deferred = _cvtmask8_u32(_kand_mask8(geom, edge)) & valid;
+        if (behind_out && mask)
+            mask &= ~_cvtmask8_u32(TRI4_PAIR_BEHIND_K);
+#undef TRI4_PAIR_BEHIND_K
+    } else
+#endif
+    {
+        const __m256 any_neg =
+            _mm256_cmp_ps(_mm256_min_ps(sh.U, _mm256_min_ps(sh.V, sh.W)), zero, _CMP_LT_OQ);
+        const __m256 any_pos =
+            _mm256_cmp_ps(_mm256_max_ps(sh.U, _mm256_max_ps(sh.V, sh.W)), zero, _CMP_GT_OQ);
+        const __m256 mixed = _mm256_and_ps(any_neg, any_pos);
+        if (early_out && ((unsigned)_mm256_movemask_ps(mixed) & valid) == valid)
+            return 0;
+
+        if (behind_out == TRI4_BEHIND_FIRST) {
+            /* The leaf refused here, after the signs and before the edge
+             * zeros, det, keep and the deferred lanes, when no valid lane
+             * with unmixed signs passes the depth and box tests of `geom`
+             * below with a box interval that reaches tmin: with a camera
+             * inside a room, the leaf whose box holds the camera is visited
+             * by nearly every camera ray, and its lanes are missed by the
+             * line (mixed signs) or lie wholly behind the camera.  The
+             * depths and the box interval computed here are those the code
+             * below uses (it computes them only without this block), the
+             * same operations in the same order; `behind` is the refusal's
+             * own comparisons below.  Exact: the returned mask is a subset of
+             * geom & ~behind & valid (keep and deferred lie within geom; the
+             * behind refusal takes `behind` out), and geom is pre & ~mixed;
+             * so when pre & ~mixed & ~behind & valid is empty the mask below
+             * is 0, nothing is stored and 0 is returned, as here.  rr5's exit
+             * (round 42) in every 8-lane call; here only in a ray's first
+             * leaf (traverse_wide8_ray.h says why). */
+            tri4_pair_depths(TRI4_CONST8(r, sz, k_inv[2], scalar), az, bz, cz, &Az, &Bz, &Cz, &z_lo,
+                             &z_hi);
+            const __m256 limit = _mm256_set1_ps(t_max);
+            tri4_pair_box_interval(r, scalar, ax, bx, cx, ay, by, cy, z_lo, z_hi, &t_lo, &t_hi);
+            const __m256 tmin = TRI4_CONST8(r, tmin, k_tmin, scalar);
+            const __m256 pre =
+                _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(z_hi, tmin, _CMP_GE_OQ),
+                                            _mm256_cmp_ps(z_lo, limit, _CMP_LT_OQ)),
+                              _mm256_cmp_ps(t_lo, limit, _CMP_LT_OQ));
+            const __m256 behind = _mm256_and_ps(_mm256_cmp_ps(t_hi, tmin, _CMP_LT_OQ),
+                                                _mm256_cmp_ps(t_lo, tmin, _CMP_LT_OQ));
+            if (((unsigned)_mm256_movemask_ps(_mm256_andnot_ps(_mm256_or_ps(behind, mixed), pre)) &
+                 valid) == 0)
+                return 0;
+        }
+
+        const __m256 on_edge = tri8_on_edge(&sh);
+
+        if (behind_out != TRI4_BEHIND_FIRST)
+            tri4_pair_depths(TRI4_CONST8(r, sz, k_inv[2], scalar), az, bz, cz, &Az, &Bz, &Cz, &z_lo,
+                             &z_hi);
+        const __m256 limit = _mm256_set1_ps(t_max);
+        /* The any-hit early return on depth, as tri4_filter_lanes_depth. */
+        if (depth_out &&
+            ((unsigned)_mm256_movemask_ps(_mm256_andnot_ps(
+                 mixed,
+                 _mm256_and_ps(_mm256_cmp_ps(z_hi, TRI4_CONST8(r, tmin, k_tmin, scalar), _CMP_GE_OQ),
+                               _mm256_cmp_ps(z_lo, limit, _CMP_LT_OQ)))) &
              valid) == 0)
             return 0;
-    }
+        if (behind_out != TRI4_BEHIND_FIRST)
+            tri4_pair_box_interval(r, scalar, ax, bx, cx, ay, by, cy, z_lo, z_hi, &t_lo, &t_hi);
+        const __m256 geom = _mm256_andnot_ps(
+            mixed,
+            _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(z_hi, TRI4_CONST8(r, tmin, k_tmin, scalar),
+                                                      _CMP_GE_OQ),
+                                        _mm256_cmp_ps(z_lo, limit, _CMP_LT_OQ)),
+                          _mm256_cmp_ps(t_lo, limit, _CMP_LT_OQ)));
+        deferred = (unsigned)_mm256_movemask_ps(_mm256_and_ps(on_edge, geom)) & valid;
 
-    const __m256 on_edge = tri8_on_edge(&sh);
-
-    if (behind_out != TRI4_BEHIND_FIRST)
-        tri4_pair_depths(TRI4_CONST8(r, sz, k_inv[2], scalar), az, bz, cz, &Az, &Bz, &Cz, &z_lo,
-                         &z_hi);
-    const __m256 limit = _mm256_set1_ps(t_max);
-    /* The any-hit early return on depth, as tri4_filter_lanes_depth. */
-    if (depth_out &&
-        ((unsigned)_mm256_movemask_ps(_mm256_andnot_ps(
-             mixed,
-             _mm256_and_ps(_mm256_cmp_ps(z_hi, TRI4_CONST8(r, tmin, k_tmin, scalar), _CMP_GE_OQ),
-                           _mm256_cmp_ps(z_lo, limit, _CMP_LT_OQ)))) &
-         valid) == 0)
-        return 0;
-    if (behind_out != TRI4_BEHIND_FIRST)
-        tri4_pair_box_interval(r, scalar, ax, bx, cx, ay, by, cy, z_lo, z_hi, &t_lo, &t_hi);
-    const __m256 geom = _mm256_andnot_ps(
-        mixed,
-        _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(z_hi, TRI4_CONST8(r, tmin, k_tmin, scalar),
-                                                  _CMP_GE_OQ),
-                                    _mm256_cmp_ps(z_lo, limit, _CMP_LT_OQ)),
-                      _mm256_cmp_ps(t_lo, limit, _CMP_LT_OQ)));
-    const unsigned deferred = (unsigned)_mm256_movemask_ps(_mm256_and_ps(on_edge, geom)) & valid;
-
-    const __m256 det = _mm256_add_ps(_mm256_add_ps(sh.U, sh.V), sh.W);
-    const __m256 abs_det = _mm256_andnot_ps(_mm256_set1_ps(-0.0f), det);
-    __m256 keep = _mm256_and_ps(geom, _mm256_cmp_ps(det, zero, _CMP_NEQ_UQ));
-    keep = _mm256_and_ps(keep, _mm256_cmp_ps(abs_det, _mm256_set1_ps(INFINITY), _CMP_LT_OQ));
-    unsigned mask = ((unsigned)_mm256_movemask_ps(keep) & valid) | deferred;
-    if (behind_out && mask) {
-        /* The same comparisons as the per-lane `t_hi < tmin && t_lo <
-         * tmin` they replace (ordered: false for NaN), on the same
-         * floats; a deferred lane among them is refused too, as its
-         * double edge step returns 0 or leads to the same finish. */
-        const __m256 tmin = TRI4_CONST8(r, tmin, k_tmin, scalar);
-        mask &= ~(unsigned)_mm256_movemask_ps(_mm256_and_ps(
-            _mm256_cmp_ps(t_hi, tmin, _CMP_LT_OQ), _mm256_cmp_ps(t_lo, tmin, _CMP_LT_OQ)));
+        det = _mm256_add_ps(_mm256_add_ps(sh.U, sh.V), sh.W);
+        const __m256 abs_det = _mm256_andnot_ps(_mm256_set1_ps(-0.0f), det);
+        __m256 keep = _mm256_and_ps(geom, _mm256_cmp_ps(det, zero, _CMP_NEQ_UQ));
+        keep = _mm256_and_ps(keep, _mm256_cmp_ps(abs_det, _mm256_set1_ps(INFINITY), _CMP_LT_OQ));
+        mask = ((unsigned)_mm256_movemask_ps(keep) & valid) | deferred;
+        if (behind_out && mask) {
+            /* The same comparisons as the per-lane `t_hi < tmin && t_lo <
+             * tmin` they replace (ordered: false for NaN), on the same
+             * floats; a deferred lane among them is refused too, as its
+             * double edge step returns 0 or leads to the same finish. */
+            const __m256 tmin = TRI4_CONST8(r, tmin, k_tmin, scalar);
+            mask &= ~(unsigned)_mm256_movemask_ps(_mm256_and_ps(
+                _mm256_cmp_ps(t_hi, tmin, _CMP_LT_OQ), _mm256_cmp_ps(t_lo, tmin, _CMP_LT_OQ)));
+        }
     }
     if (mask) {
         tri4_pair_store(out[0].U, out[1].U, sh.U);
