@@ -609,14 +609,15 @@ static inline unsigned tri4_pair_filter_lanes(const struct tri4_ray *r,
         tri4_pair_depths(TRI4_CONST8(r, sz, k_inv[2], scalar), az, bz, cz, &Az, &Bz, &Cz, &z_lo,
                          &z_hi);
         tri4_pair_box_interval(r, scalar, ax, bx, cx, ay, by, cy, z_lo, z_hi, &t_lo, &t_hi);
-        const __mmask8 geom =
-            _kandn_mask8(mixed, _kand_mask8(_kand_mask8(_mm256_cmp_ps_mask(z_hi, tmin, _CMP_GE_OQ),
-                                                        _mm256_cmp_ps_mask(z_lo, limit, _CMP_LT_OQ)),
-                                            _mm256_cmp_ps_mask(t_lo, limit, _CMP_LT_OQ)));
+        const __mmask8 geom = _kandn_mask8(
+            mixed, _kand_mask8(_kand_mask8(_mm256_cmp_ps_mask(z_hi, tmin, _CMP_GE_OQ),
+                                           _mm256_cmp_ps_mask(z_lo, limit, _CMP_LT_OQ)),
+                               _mm256_cmp_ps_mask(t_lo, limit, _CMP_LT_OQ)));
         /* The lanes wholly before tmin (behind_out, below), compared only
          * where they are used (off the chain to the verdict, as below). */
 #define TRI4_PAIR_BEHIND_K                                                                        \
-    _kand_mask8(_mm256_cmp_ps_mask(t_hi, tmin, _CMP_LT_OQ), _mm256_cmp_ps_mask(t_lo, tmin, _CMP_LT_OQ))
+    _kand_mask8(_mm256_cmp_ps_mask(t_hi, tmin, _CMP_LT_OQ),                                       \
+                _mm256_cmp_ps_mask(t_lo, tmin, _CMP_LT_OQ))
         /* TRI4_BEHIND_FIRST's refusal (below): geom & ~behind is its
          * pre & ~mixed & ~behind. */
         if (behind_out == TRI4_BEHIND_FIRST &&
@@ -697,8 +698,9 @@ static inline unsigned tri4_pair_filter_lanes(const struct tri4_ray *r,
         if (depth_out &&
             ((unsigned)_mm256_movemask_ps(_mm256_andnot_ps(
                  mixed,
-                 _mm256_and_ps(_mm256_cmp_ps(z_hi, TRI4_CONST8(r, tmin, k_tmin, scalar), _CMP_GE_OQ),
-                               _mm256_cmp_ps(z_lo, limit, _CMP_LT_OQ)))) &
+                 _mm256_and_ps(
+                     _mm256_cmp_ps(z_hi, TRI4_CONST8(r, tmin, k_tmin, scalar), _CMP_GE_OQ),
+                     _mm256_cmp_ps(z_lo, limit, _CMP_LT_OQ)))) &
              valid) == 0)
             return 0;
         if (behind_out != TRI4_BEHIND_FIRST)
