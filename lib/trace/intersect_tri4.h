@@ -238,6 +238,14 @@ static inline unsigned tri4_before_tmin_vectors(const struct tri4_ray *r, __m128
  * functions instead of being spilled around the early return (measured:
  * six stores per packet) for the rare lane that reaches the finish.
  */
+#if defined(__AVX512VL__) && defined(__AVX512DQ__)
+/* Defined after tri4_before_tmin_lanes: tri4_filter_lanes_depth's
+ * any-hit form (depth_out) with its comparisons into mask registers. */
+static inline unsigned tri4_filter_lanes_any_k(const struct tri4_ray *r,
+                                               const struct tri4_packet *p, unsigned valid,
+                                               float t_max, struct tri4_lanes *out);
+#endif
+
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
@@ -246,6 +254,13 @@ static inline unsigned tri4_filter_lanes_depth(const struct tri4_ray *r,
                                                float t_max, struct tri4_lanes *out, int any_hit,
                                                int early_out, int depth_out)
 {
+#if defined(__AVX512VL__) && defined(__AVX512DQ__)
+    /* AVX-512: the single-ray any-hit leaves' filter with its
+     * comparisons into mask registers (tri4_filter_lanes_any_k says
+     * why); the same lanes, values and stores. */
+    if (depth_out && any_hit && early_out && out)
+        return tri4_filter_lanes_any_k(r, p, valid, t_max, out);
+#endif
     /* depth_out's walks (the single-ray any-hit leaves) set the per-ray
      * constants' scalar form only (struct tri4_ray's k_ fields). */
     const int scalar = depth_out;
@@ -995,6 +1010,183 @@ static inline unsigned tri4_before_tmin_lanes(const struct tri4_ray *r,
                                     _mm_loadu_ps(lanes->Cz), scalar) &
            lanes_mask;
 }
+
+#if defined(__AVX512VL__) && defined(__AVX512DQ__)
+/* tri4_before_tmin_vectors' checks with AVX-512's comparisons into a
+ * mask register, each compare masked by the one before it (a masked
+ * compare clears the lanes outside its mask: the and of the SSE form):
+ * the lanes of `lanes` that the checks refuse.  The same operations on
+ * the same floats and the same predicates (ordered, false for NaN), so
+ * the same lanes; the proof is tri4_before_tmin_lanes'. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline __mmask8 tri4_before_tmin_k(const struct tri4_ray *r, __m128 sc, __m128 U,
+                                          __m128 V, __m128 W, __m128 det, __m128 Az, __m128 Bz,
+                                          __m128 Cz, __mmask8 lanes)
+{
+    /* The constants as rows read through an opaque pointer, as in
+     * tri4_before_tmin_vectors (each a memory operand). */
+    enum { K_2M15, K_2M20, K_7_8, K_2M13, K_2P20, K_2M60, K_2P40, K_2M100, K_ROWS };
+#if defined(__GNUC__)
+    __attribute__((aligned(16)))
+#endif
+    static const float consts[K_ROWS][4] = {
+        {0x1p-15f, 0x1p-15f, 0x1p-15f, 0x1p-15f},    {0x1p-20f, 0x1p-20f, 0x1p-20f, 0x1p-20f},
+        {0.875f, 0.875f, 0.875f, 0.875f},            {0x1p-13f, 0x1p-13f, 0x1p-13f, 0x1p-13f},
+        {0x1p20f, 0x1p20f, 0x1p20f, 0x1p20f},        {0x1p-60f, 0x1p-60f, 0x1p-60f, 0x1p-60f},
+        {0x1p40f, 0x1p40f, 0x1p40f, 0x1p40f},        {0x1p-100f, 0x1p-100f, 0x1p-100f, 0x1p-100f}};
+    const float(*k)[4] = consts;
+#if defined(__GNUC__)
+    __asm__("" : "+r"(k));
+#endif
+#define TRI4_NEAR_K(i) _mm_load_ps(k[i])
+    const __m128 sign = _mm_set1_ps(-0.0f);
+    const __m128 tmin = TRI4_CONST(r, tmin, k_tmin, 1);
+    const __m128 s2 = _mm_mul_ps(sc, sc);
+    const __m128 zb = _mm_mul_ps(sc, _mm_andnot_ps(sign, TRI4_CONST(r, sz, k_inv[2], 1)));
+    const __m128 abs_det = _mm_andnot_ps(sign, det);
+    const __m128 T =
+        _mm_add_ps(_mm_add_ps(_mm_mul_ps(U, Az), _mm_mul_ps(V, Bz)), _mm_mul_ps(W, Cz));
+    const __m128 sT = _mm_xor_ps(T, _mm_and_ps(sign, det));
+    const __m128 err = _mm_mul_ps(zb, _mm_add_ps(_mm_mul_ps(TRI4_NEAR_K(K_2M15), s2),
+                                                 _mm_mul_ps(TRI4_NEAR_K(K_2M20), abs_det)));
+    const __m128 rhs = _mm_mul_ps(tmin, _mm_mul_ps(TRI4_NEAR_K(K_7_8), abs_det));
+    /* Check 2, then check 1 and the ranges. */
+    __mmask8 ok = _mm_mask_cmp_ps_mask(lanes, _mm_add_ps(sT, err), rhs, _CMP_LT_OS);
+    ok = _mm_mask_cmp_ps_mask(ok, abs_det, _mm_mul_ps(TRI4_NEAR_K(K_2M13), s2), _CMP_GE_OS);
+    ok = _mm_mask_cmp_ps_mask(ok, sc, TRI4_NEAR_K(K_2M20), _CMP_GE_OS);
+    ok = _mm_mask_cmp_ps_mask(ok, sc, TRI4_NEAR_K(K_2P20), _CMP_LE_OS);
+    ok = _mm_mask_cmp_ps_mask(ok, zb, TRI4_NEAR_K(K_2M60), _CMP_GE_OS);
+    ok = _mm_mask_cmp_ps_mask(ok, zb, TRI4_NEAR_K(K_2P40), _CMP_LE_OS);
+    ok = _mm_mask_cmp_ps_mask(ok, tmin, TRI4_NEAR_K(K_2M100), _CMP_GE_OS);
+#undef TRI4_NEAR_K
+    return ok;
+}
+
+/*
+ * tri4_filter_lanes_depth with depth_out, any_hit and early_out (the
+ * single-ray any-hit leaves) on AVX-512: every comparison writes a mask
+ * register (EVEX vcmpps), and the and/andnot of the SSE form are the
+ * masks of the next compare or mask instructions.  The VEX compares of
+ * the SSE form reach only xmm0-15, and GCC, which keeps this filter's
+ * many live vectors in xmm16-31, moved an operand back before nearly
+ * every compare (21 vmovaps between registers in wide8_packet_any,
+ * objdump); the vmovmskps after each mask go as well.  The same float
+ * operations in the same order (each vector below is the SSE form's),
+ * the same predicates (_mm_cmplt_ps is _CMP_LT_OS, _mm_cmpge_ps
+ * _CMP_GE_OS, _mm_cmpneq_ps _CMP_NEQ_UQ, _mm_cmpeq_ps _CMP_EQ_OQ: the
+ * same verdict on every input, NaN included), so the same lanes kept,
+ * deferred and refused, and the same values stored: tri4_filter_lanes_depth's
+ * comments carry the argument for each step.
+ */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline unsigned tri4_filter_lanes_any_k(const struct tri4_ray *r,
+                                               const struct tri4_packet *p, unsigned valid,
+                                               float t_max, struct tri4_lanes *out)
+{
+    const __m128 nox = TRI4_CONST(r, neg_org_x, k_neg_org[0], 1);
+    const __m128 noy = TRI4_CONST(r, neg_org_y, k_neg_org[1], 1);
+    const __m128 noz = TRI4_CONST(r, neg_org_z, k_neg_org[2], 1);
+    const __m128 ax = _mm_add_ps(nox, tri4_row(p, 0, r->off_x));
+    const __m128 ay = _mm_add_ps(noy, tri4_row(p, 0, r->off_y));
+    const __m128 az = _mm_add_ps(noz, tri4_row(p, 0, r->off_z));
+    const __m128 bx = _mm_add_ps(nox, tri4_row(p, 1, r->off_x));
+    const __m128 by = _mm_add_ps(noy, tri4_row(p, 1, r->off_y));
+    const __m128 bz = _mm_add_ps(noz, tri4_row(p, 1, r->off_z));
+    const __m128 cx = _mm_add_ps(nox, tri4_row(p, 2, r->off_x));
+    const __m128 cy = _mm_add_ps(noy, tri4_row(p, 2, r->off_y));
+    const __m128 cz = _mm_add_ps(noz, tri4_row(p, 2, r->off_z));
+
+    const __m128 sx = TRI4_CONST(r, sx, k_shear[0], 1);
+    const __m128 sy = TRI4_CONST(r, sy, k_shear[1], 1);
+    const __m128 Ax = _mm_add_ps(ax, _mm_mul_ps(sx, az));
+    const __m128 Ay = _mm_add_ps(ay, _mm_mul_ps(sy, az));
+    const __m128 Bx = _mm_add_ps(bx, _mm_mul_ps(sx, bz));
+    const __m128 By = _mm_add_ps(by, _mm_mul_ps(sy, bz));
+    const __m128 Cx = _mm_add_ps(cx, _mm_mul_ps(sx, cz));
+    const __m128 Cy = _mm_add_ps(cy, _mm_mul_ps(sy, cz));
+
+    const __m128 U = _mm_sub_ps(_mm_mul_ps(Cx, By), _mm_mul_ps(Cy, Bx));
+    const __m128 V = _mm_sub_ps(_mm_mul_ps(Ax, Cy), _mm_mul_ps(Ay, Cx));
+    const __m128 W = _mm_sub_ps(_mm_mul_ps(Bx, Ay), _mm_mul_ps(By, Ax));
+
+    const __m128 zero = _mm_setzero_ps();
+    /* The signs (mixed: refused), the early return when no valid lane
+     * is unmixed. */
+    const __mmask8 mixed =
+        _mm_mask_cmp_ps_mask(_mm_cmp_ps_mask(_mm_min_ps(U, _mm_min_ps(V, W)), zero, _CMP_LT_OS),
+                             _mm_max_ps(U, _mm_max_ps(V, W)), zero, _CMP_GT_OS);
+    const __mmask8 unmixed = (__mmask8)(~(unsigned)mixed & valid);
+    if (!unmixed)
+        return 0;
+
+    const __m128 sz = TRI4_CONST(r, sz, k_inv[2], 1);
+    const __m128 Az = _mm_mul_ps(sz, az);
+    const __m128 Bz = _mm_mul_ps(sz, bz);
+    const __m128 Cz = _mm_mul_ps(sz, cz);
+    const __m128 z_lo = _mm_min_ps(Az, _mm_min_ps(Bz, Cz));
+    const __m128 z_hi = _mm_max_ps(Az, _mm_max_ps(Bz, Cz));
+    const __m128 limit = _mm_set1_ps(t_max);
+    const __m128 tmin = TRI4_CONST(r, tmin, k_tmin, 1);
+    /* The depth's early return. */
+    const __mmask8 depth = _mm_mask_cmp_ps_mask(
+        _mm_mask_cmp_ps_mask(unmixed, z_hi, tmin, _CMP_GE_OS), z_lo, limit, _CMP_LT_OS);
+    if (!depth)
+        return 0;
+    __m128 t_lo = z_lo;
+    __m128 t_hi = z_hi;
+    tri4_slab(ax, bx, cx, TRI4_CONST(r, inv_x, k_inv[0], 1), r->neg_x, &t_lo, &t_hi);
+    tri4_slab(ay, by, cy, TRI4_CONST(r, inv_y, k_inv[1], 1), r->neg_y, &t_lo, &t_hi);
+    /* geom, within valid (the SSE form ands valid into keep and
+     * deferred below). */
+    const __mmask8 geom = _mm_mask_cmp_ps_mask(depth, t_lo, limit, _CMP_LT_OS);
+    /* korb (_kor_mask8): with C's | GCC moved each mask to a general
+     * register first. */
+    const __mmask8 on_edge =
+        _kor_mask8(_kor_mask8(_mm_mask_cmp_ps_mask(geom, U, zero, _CMP_EQ_OQ),
+                              _mm_mask_cmp_ps_mask(geom, V, zero, _CMP_EQ_OQ)),
+                   _mm_mask_cmp_ps_mask(geom, W, zero, _CMP_EQ_OQ));
+
+    const __m128 det = _mm_add_ps(_mm_add_ps(U, V), W);
+    const __m128 abs_det = _mm_andnot_ps(_mm_set1_ps(-0.0f), det);
+    const __mmask8 keep = _mm_mask_cmp_ps_mask(_mm_mask_cmp_ps_mask(geom, det, zero, _CMP_NEQ_UQ),
+                                               abs_det, _mm_set1_ps(INFINITY), _CMP_LT_OS);
+    const __mmask8 kept = _kor_mask8(keep, on_edge);
+    if (!kept)
+        return 0;
+    unsigned mask = kept;
+    /* The near lanes (tri4_filter_lanes_depth's depth_out block). */
+    const __mmask8 near = _mm_mask_cmp_ps_mask(kept, t_lo, tmin, _CMP_LT_OS);
+    if (near) {
+        const __mmask8 behind = _mm_mask_cmp_ps_mask(near, t_hi, tmin, _CMP_LT_OS);
+        mask &= ~(unsigned)behind;
+        const __mmask8 rest = (__mmask8)(near & ~behind);
+        if (rest) {
+            const __m128 sa = tri4_max_abs(tri4_max_abs(ax, ay), az);
+            const __m128 sb = tri4_max_abs(tri4_max_abs(bx, by), bz);
+            const __m128 scc = tri4_max_abs(tri4_max_abs(cx, cy), cz);
+            const __m128 sc = tri4_max_abs(tri4_max_abs(sa, sb), scc);
+            mask &= ~(unsigned)tri4_before_tmin_k(r, sc, U, V, W, det, Az, Bz, Cz, rest);
+        }
+        if (!mask)
+            return 0;
+    }
+    _mm_storeu_ps(out->U, U);
+    _mm_storeu_ps(out->V, V);
+    _mm_storeu_ps(out->W, W);
+    _mm_storeu_ps(out->det, det);
+    _mm_storeu_ps(out->Az, Az);
+    _mm_storeu_ps(out->Bz, Bz);
+    _mm_storeu_ps(out->Cz, Cz);
+    _mm_storeu_ps(out->t_lo, t_lo);
+    _mm_storeu_ps(out->t_hi, t_hi);
+    out->deferred = on_edge;
+    return mask;
+}
+#endif
 
 /*
  * The sheared x, y of lane l's vertices (A[0..5] = Ax, Ay, Bx, By, Cx,
