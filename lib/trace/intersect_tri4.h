@@ -580,38 +580,32 @@ static inline unsigned tri4_pair_filter_lanes_any_k(const struct tri4_ray *r,
                TRI4_CONST8(r, sy, k_shear[1], 1), &sh);
 
     const __m256 zero = _mm256_setzero_ps();
-    /* unmixed as in tri4_filter_lanes_any_k (the complements of
-     * _CMP_LT_OQ and _CMP_GT_OQ are _CMP_NLT_UQ and _CMP_NGT_UQ). */
-    const __mmask8 unmixed =
-        _kor_mask8(_mm256_mask_cmp_ps_mask((__mmask8)valid,
-                                           _mm256_min_ps(sh.U, _mm256_min_ps(sh.V, sh.W)), zero,
-                                           _CMP_NLT_UQ),
-                   _mm256_mask_cmp_ps_mask((__mmask8)valid,
-                                           _mm256_max_ps(sh.U, _mm256_max_ps(sh.V, sh.W)), zero,
-                                           _CMP_NGT_UQ));
+    const __mmask8 mixed = _mm256_mask_cmp_ps_mask(
+        _mm256_cmp_ps_mask(_mm256_min_ps(sh.U, _mm256_min_ps(sh.V, sh.W)), zero, _CMP_LT_OQ),
+        _mm256_max_ps(sh.U, _mm256_max_ps(sh.V, sh.W)), zero, _CMP_GT_OQ);
+    const __mmask8 unmixed = (__mmask8)(~(unsigned)mixed & valid);
     if (!unmixed)
         return 0;
 
     __m256 Az, Bz, Cz, z_lo, z_hi, t_lo, t_hi;
     tri4_pair_depths(TRI4_CONST8(r, sz, k_inv[2], 1), az, bz, cz, &Az, &Bz, &Cz, &z_lo, &z_hi);
     const __m256 limit = _mm256_set1_ps(t_max);
-    const __mmask8 depth = _kand_mask8(
-        unmixed,
-        _kand_mask8(_mm256_cmp_ps_mask(z_hi, TRI4_CONST8(r, tmin, k_tmin, 1), _CMP_GE_OQ),
-                    _mm256_cmp_ps_mask(z_lo, limit, _CMP_LT_OQ)));
+    const __mmask8 depth = _mm256_mask_cmp_ps_mask(
+        _mm256_mask_cmp_ps_mask(unmixed, z_hi, TRI4_CONST8(r, tmin, k_tmin, 1), _CMP_GE_OQ), z_lo,
+        limit, _CMP_LT_OQ);
     if (!depth)
         return 0;
     tri4_pair_box_interval(r, 1, ax, bx, cx, ay, by, cy, z_lo, z_hi, &t_lo, &t_hi);
-    const __mmask8 geom = _kand_mask8(depth, _mm256_cmp_ps_mask(t_lo, limit, _CMP_LT_OQ));
-    const __mmask8 on_edge = _kand_mask8(
-        geom, _kor_mask8(_kor_mask8(_mm256_cmp_ps_mask(sh.U, zero, _CMP_EQ_OQ),
-                                    _mm256_cmp_ps_mask(sh.V, zero, _CMP_EQ_OQ)),
-                         _mm256_cmp_ps_mask(sh.W, zero, _CMP_EQ_OQ)));
+    const __mmask8 geom = _mm256_mask_cmp_ps_mask(depth, t_lo, limit, _CMP_LT_OQ);
+    const __mmask8 on_edge =
+        _kor_mask8(_kor_mask8(_mm256_mask_cmp_ps_mask(geom, sh.U, zero, _CMP_EQ_OQ),
+                              _mm256_mask_cmp_ps_mask(geom, sh.V, zero, _CMP_EQ_OQ)),
+                   _mm256_mask_cmp_ps_mask(geom, sh.W, zero, _CMP_EQ_OQ));
     const __m256 det = _mm256_add_ps(_mm256_add_ps(sh.U, sh.V), sh.W);
     const __m256 abs_det = _mm256_andnot_ps(_mm256_set1_ps(-0.0f), det);
-    const __mmask8 keep = _kand_mask8(
-        geom, _kand_mask8(_mm256_cmp_ps_mask(det, zero, _CMP_NEQ_UQ),
-                          _mm256_cmp_ps_mask(abs_det, _mm256_set1_ps(INFINITY), _CMP_LT_OQ)));
+    const __mmask8 keep = _mm256_mask_cmp_ps_mask(
+        _mm256_mask_cmp_ps_mask(geom, det, zero, _CMP_NEQ_UQ), abs_det,
+        _mm256_set1_ps(INFINITY), _CMP_LT_OQ);
     const __mmask8 kept = _kor_mask8(keep, on_edge);
     if (!kept)
         return 0;
@@ -1143,20 +1137,16 @@ static inline __mmask8 tri4_before_tmin_k(const struct tri4_ray *r, __m128 sc, _
     const __m128 err = _mm_mul_ps(zb, _mm_add_ps(_mm_mul_ps(TRI4_NEAR_K(K_2M15), s2),
                                                  _mm_mul_ps(TRI4_NEAR_K(K_2M20), abs_det)));
     const __m128 rhs = _mm_mul_ps(tmin, _mm_mul_ps(TRI4_NEAR_K(K_7_8), abs_det));
-    /* Check 2, check 1 and the ranges: independent compares folded by
-     * kandb as a tree (a chain of masked compares would put each
-     * compare's latency on the way to the verdict). */
-    const __mmask8 c2 = _mm_cmp_ps_mask(_mm_add_ps(sT, err), rhs, _CMP_LT_OS);
-    const __mmask8 c1 =
-        _mm_cmp_ps_mask(abs_det, _mm_mul_ps(TRI4_NEAR_K(K_2M13), s2), _CMP_GE_OS);
-    const __mmask8 s_lo = _mm_cmp_ps_mask(sc, TRI4_NEAR_K(K_2M20), _CMP_GE_OS);
-    const __mmask8 s_hi = _mm_cmp_ps_mask(sc, TRI4_NEAR_K(K_2P20), _CMP_LE_OS);
-    const __mmask8 z_lo = _mm_cmp_ps_mask(zb, TRI4_NEAR_K(K_2M60), _CMP_GE_OS);
-    const __mmask8 z_hi = _mm_cmp_ps_mask(zb, TRI4_NEAR_K(K_2P40), _CMP_LE_OS);
-    const __mmask8 t_ok = _mm_mask_cmp_ps_mask(lanes, tmin, TRI4_NEAR_K(K_2M100), _CMP_GE_OS);
+    /* Check 2, then check 1 and the ranges. */
+    __mmask8 ok = _mm_mask_cmp_ps_mask(lanes, _mm_add_ps(sT, err), rhs, _CMP_LT_OS);
+    ok = _mm_mask_cmp_ps_mask(ok, abs_det, _mm_mul_ps(TRI4_NEAR_K(K_2M13), s2), _CMP_GE_OS);
+    ok = _mm_mask_cmp_ps_mask(ok, sc, TRI4_NEAR_K(K_2M20), _CMP_GE_OS);
+    ok = _mm_mask_cmp_ps_mask(ok, sc, TRI4_NEAR_K(K_2P20), _CMP_LE_OS);
+    ok = _mm_mask_cmp_ps_mask(ok, zb, TRI4_NEAR_K(K_2M60), _CMP_GE_OS);
+    ok = _mm_mask_cmp_ps_mask(ok, zb, TRI4_NEAR_K(K_2P40), _CMP_LE_OS);
+    ok = _mm_mask_cmp_ps_mask(ok, tmin, TRI4_NEAR_K(K_2M100), _CMP_GE_OS);
 #undef TRI4_NEAR_K
-    return _kand_mask8(_kand_mask8(_kand_mask8(c2, c1), _kand_mask8(s_lo, s_hi)),
-                       _kand_mask8(_kand_mask8(z_lo, z_hi), t_ok));
+    return ok;
 }
 
 /*
@@ -1209,17 +1199,12 @@ static inline unsigned tri4_filter_lanes_any_k(const struct tri4_ray *r,
     const __m128 W = _mm_sub_ps(_mm_mul_ps(Bx, Ay), _mm_mul_ps(By, Ax));
 
     const __m128 zero = _mm_setzero_ps();
-    /* The signs, and the early return when no valid lane is unmixed.
-     * A lane is mixed when min < 0 and max > 0 (the SSE form's
-     * any_neg, any_pos); unmixed is its complement within valid,
-     * !(min < 0) || !(max > 0), which the negated predicates give
-     * directly (_CMP_NLT_US, _CMP_NGT_US: true where the ordered
-     * predicate is false, NaN included), each compare masked by valid:
-     * one korb between the compares and the branch. */
-    const __mmask8 unmixed = _kor_mask8(
-        _mm_mask_cmp_ps_mask((__mmask8)valid, _mm_min_ps(U, _mm_min_ps(V, W)), zero, _CMP_NLT_US),
-        _mm_mask_cmp_ps_mask((__mmask8)valid, _mm_max_ps(U, _mm_max_ps(V, W)), zero,
-                             _CMP_NGT_US));
+    /* The signs (mixed: refused), the early return when no valid lane
+     * is unmixed. */
+    const __mmask8 mixed =
+        _mm_mask_cmp_ps_mask(_mm_cmp_ps_mask(_mm_min_ps(U, _mm_min_ps(V, W)), zero, _CMP_LT_OS),
+                             _mm_max_ps(U, _mm_max_ps(V, W)), zero, _CMP_GT_OS);
+    const __mmask8 unmixed = (__mmask8)(~(unsigned)mixed & valid);
     if (!unmixed)
         return 0;
 
@@ -1232,9 +1217,8 @@ static inline unsigned tri4_filter_lanes_any_k(const struct tri4_ray *r,
     const __m128 limit = _mm_set1_ps(t_max);
     const __m128 tmin = TRI4_CONST(r, tmin, k_tmin, 1);
     /* The depth's early return. */
-    const __mmask8 depth =
-        _kand_mask8(unmixed, _kand_mask8(_mm_cmp_ps_mask(z_hi, tmin, _CMP_GE_OS),
-                                         _mm_cmp_ps_mask(z_lo, limit, _CMP_LT_OS)));
+    const __mmask8 depth = _mm_mask_cmp_ps_mask(
+        _mm_mask_cmp_ps_mask(unmixed, z_hi, tmin, _CMP_GE_OS), z_lo, limit, _CMP_LT_OS);
     if (!depth)
         return 0;
     __m128 t_lo = z_lo;
@@ -1243,27 +1227,26 @@ static inline unsigned tri4_filter_lanes_any_k(const struct tri4_ray *r,
     tri4_slab(ay, by, cy, TRI4_CONST(r, inv_y, k_inv[1], 1), r->neg_y, &t_lo, &t_hi);
     /* geom, within valid (the SSE form ands valid into keep and
      * deferred below). */
-    const __mmask8 geom = _kand_mask8(depth, _mm_cmp_ps_mask(t_lo, limit, _CMP_LT_OS));
-    /* korb, kandb (_kor_mask8, _kand_mask8): with C's | and & GCC moved
-     * each mask to a general register first. */
-    const __mmask8 on_edge = _kand_mask8(
-        geom, _kor_mask8(_kor_mask8(_mm_cmp_ps_mask(U, zero, _CMP_EQ_OQ),
-                                    _mm_cmp_ps_mask(V, zero, _CMP_EQ_OQ)),
-                         _mm_cmp_ps_mask(W, zero, _CMP_EQ_OQ)));
+    const __mmask8 geom = _mm_mask_cmp_ps_mask(depth, t_lo, limit, _CMP_LT_OS);
+    /* korb (_kor_mask8): with C's | GCC moved each mask to a general
+     * register first. */
+    const __mmask8 on_edge =
+        _kor_mask8(_kor_mask8(_mm_mask_cmp_ps_mask(geom, U, zero, _CMP_EQ_OQ),
+                              _mm_mask_cmp_ps_mask(geom, V, zero, _CMP_EQ_OQ)),
+                   _mm_mask_cmp_ps_mask(geom, W, zero, _CMP_EQ_OQ));
 
     const __m128 det = _mm_add_ps(_mm_add_ps(U, V), W);
     const __m128 abs_det = _mm_andnot_ps(_mm_set1_ps(-0.0f), det);
-    const __mmask8 keep = _kand_mask8(
-        geom, _kand_mask8(_mm_cmp_ps_mask(det, zero, _CMP_NEQ_UQ),
-                          _mm_cmp_ps_mask(abs_det, _mm_set1_ps(INFINITY), _CMP_LT_OS)));
+    const __mmask8 keep = _mm_mask_cmp_ps_mask(_mm_mask_cmp_ps_mask(geom, det, zero, _CMP_NEQ_UQ),
+                                               abs_det, _mm_set1_ps(INFINITY), _CMP_LT_OS);
     const __mmask8 kept = _kor_mask8(keep, on_edge);
     if (!kept)
         return 0;
     unsigned mask = kept;
     /* The near lanes (tri4_filter_lanes_depth's depth_out block). */
-    const __mmask8 near = _kand_mask8(kept, _mm_cmp_ps_mask(t_lo, tmin, _CMP_LT_OS));
+    const __mmask8 near = _mm_mask_cmp_ps_mask(kept, t_lo, tmin, _CMP_LT_OS);
     if (near) {
-        const __mmask8 behind = _kand_mask8(near, _mm_cmp_ps_mask(t_hi, tmin, _CMP_LT_OS));
+        const __mmask8 behind = _mm_mask_cmp_ps_mask(near, t_hi, tmin, _CMP_LT_OS);
         mask &= ~(unsigned)behind;
         const __mmask8 rest = (__mmask8)(near & ~behind);
         if (rest) {
