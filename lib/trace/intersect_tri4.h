@@ -545,86 +545,6 @@ static inline void tri4_pair_box_interval(const struct tri4_ray *r, int scalar, 
     tri4_pair_slab(ay, by, cy, TRI4_CONST8(r, inv_y, k_inv[1], scalar), r->neg_y, t_lo, t_hi);
 }
 
-#if defined(__AVX512VL__) && defined(__AVX512DQ__)
-/*
- * tri4_pair_filter_lanes with depth_out, any_hit and early_out and
- * without behind_out (the single-ray any-hit walks' 8-lane leaves) on
- * AVX-512, its comparisons into mask registers as
- * tri4_filter_lanes_any_k does for the 4-lane filter (which says why):
- * the same float operations in the same order and the same verdict per
- * lane (the predicates below are the 8-lane filter's own), so the same
- * lanes kept and deferred and the same values stored.
- */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline unsigned tri4_pair_filter_lanes_any_k(const struct tri4_ray *r,
-                                                    const struct tri4_packet *p, unsigned valid,
-                                                    float t_max, struct tri4_lanes out[2])
-{
-    const __m256 neg_org_x = TRI4_CONST8(r, neg_org_x, k_neg_org[0], 1);
-    const __m256 neg_org_y = TRI4_CONST8(r, neg_org_y, k_neg_org[1], 1);
-    const __m256 neg_org_z = TRI4_CONST8(r, neg_org_z, k_neg_org[2], 1);
-    const __m256 ax = _mm256_add_ps(neg_org_x, tri4_pair_row(p, 0, r->off_x));
-    const __m256 ay = _mm256_add_ps(neg_org_y, tri4_pair_row(p, 0, r->off_y));
-    const __m256 az = _mm256_add_ps(neg_org_z, tri4_pair_row(p, 0, r->off_z));
-    const __m256 bx = _mm256_add_ps(neg_org_x, tri4_pair_row(p, 1, r->off_x));
-    const __m256 by = _mm256_add_ps(neg_org_y, tri4_pair_row(p, 1, r->off_y));
-    const __m256 bz = _mm256_add_ps(neg_org_z, tri4_pair_row(p, 1, r->off_z));
-    const __m256 cx = _mm256_add_ps(neg_org_x, tri4_pair_row(p, 2, r->off_x));
-    const __m256 cy = _mm256_add_ps(neg_org_y, tri4_pair_row(p, 2, r->off_y));
-    const __m256 cz = _mm256_add_ps(neg_org_z, tri4_pair_row(p, 2, r->off_z));
-
-    struct tri8_sheared sh;
-    tri8_shear(ax, ay, az, bx, by, bz, cx, cy, cz, TRI4_CONST8(r, sx, k_shear[0], 1),
-               TRI4_CONST8(r, sy, k_shear[1], 1), &sh);
-
-    const __m256 zero = _mm256_setzero_ps();
-    const __mmask8 mixed = _mm256_mask_cmp_ps_mask(
-        _mm256_cmp_ps_mask(_mm256_min_ps(sh.U, _mm256_min_ps(sh.V, sh.W)), zero, _CMP_LT_OQ),
-        _mm256_max_ps(sh.U, _mm256_max_ps(sh.V, sh.W)), zero, _CMP_GT_OQ);
-    const __mmask8 unmixed = (__mmask8)(~(unsigned)mixed & valid);
-    if (!unmixed)
-        return 0;
-
-    __m256 Az, Bz, Cz, z_lo, z_hi, t_lo, t_hi;
-    tri4_pair_depths(TRI4_CONST8(r, sz, k_inv[2], 1), az, bz, cz, &Az, &Bz, &Cz, &z_lo, &z_hi);
-    const __m256 limit = _mm256_set1_ps(t_max);
-    const __mmask8 depth = _mm256_mask_cmp_ps_mask(
-        _mm256_mask_cmp_ps_mask(unmixed, z_hi, TRI4_CONST8(r, tmin, k_tmin, 1), _CMP_GE_OQ), z_lo,
-        limit, _CMP_LT_OQ);
-    if (!depth)
-        return 0;
-    tri4_pair_box_interval(r, 1, ax, bx, cx, ay, by, cy, z_lo, z_hi, &t_lo, &t_hi);
-    const __mmask8 geom = _mm256_mask_cmp_ps_mask(depth, t_lo, limit, _CMP_LT_OQ);
-    const __mmask8 on_edge =
-        _kor_mask8(_kor_mask8(_mm256_mask_cmp_ps_mask(geom, sh.U, zero, _CMP_EQ_OQ),
-                              _mm256_mask_cmp_ps_mask(geom, sh.V, zero, _CMP_EQ_OQ)),
-                   _mm256_mask_cmp_ps_mask(geom, sh.W, zero, _CMP_EQ_OQ));
-    const __m256 det = _mm256_add_ps(_mm256_add_ps(sh.U, sh.V), sh.W);
-    const __m256 abs_det = _mm256_andnot_ps(_mm256_set1_ps(-0.0f), det);
-    const __mmask8 keep = _mm256_mask_cmp_ps_mask(
-        _mm256_mask_cmp_ps_mask(geom, det, zero, _CMP_NEQ_UQ), abs_det,
-        _mm256_set1_ps(INFINITY), _CMP_LT_OQ);
-    const __mmask8 kept = _kor_mask8(keep, on_edge);
-    if (!kept)
-        return 0;
-    tri4_pair_store(out[0].U, out[1].U, sh.U);
-    tri4_pair_store(out[0].V, out[1].V, sh.V);
-    tri4_pair_store(out[0].W, out[1].W, sh.W);
-    tri4_pair_store(out[0].det, out[1].det, det);
-    tri4_pair_store(out[0].Az, out[1].Az, Az);
-    tri4_pair_store(out[0].Bz, out[1].Bz, Bz);
-    tri4_pair_store(out[0].Cz, out[1].Cz, Cz);
-    tri4_pair_store(out[0].t_lo, out[1].t_lo, t_lo);
-    tri4_pair_store(out[0].t_hi, out[1].t_hi, t_hi);
-    const unsigned deferred = on_edge;
-    out[0].deferred = deferred & 15u;
-    out[1].deferred = deferred >> 4;
-    return kept;
-}
-#endif
-
 /*
  * tri4_filter_lanes on the two consecutive packets p[0], p[1] of a leaf
  * of 5-8 triangles at once (lanes 0-3: p[0]'s, lanes 4-7: p[1]'s), with
@@ -658,11 +578,6 @@ static inline unsigned tri4_pair_filter_lanes(const struct tri4_ray *r,
                                               int any_hit, int early_out, int depth_out,
                                               int behind_out)
 {
-#if defined(__AVX512VL__) && defined(__AVX512DQ__)
-    /* AVX-512: the any-hit leaves' form with mask registers. */
-    if (depth_out && any_hit && early_out && !behind_out)
-        return tri4_pair_filter_lanes_any_k(r, p, valid, t_max, out);
-#endif
     /* depth_out's walks set the scalar form only (tri4_filter_lanes_depth). */
     const int scalar = depth_out;
     const __m256 neg_org_x = TRI4_CONST8(r, neg_org_x, k_neg_org[0], scalar);
