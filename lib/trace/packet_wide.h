@@ -1185,77 +1185,6 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                     _mm256_storeu_si256((__m256i *)(void *)lane_rays,
                                         _mm256_set1_epi32((int)rays));
                 }
-#if defined(__AVX512F__) && defined(__AVX512VL__) && defined(__AVX512DQ__)
-                /* AVX-512: two children a pass, child l0 in lanes 0-7
-                 * and l1 in lanes 8-15 of 512-bit registers, the rays
-                 * in both halves: each lane does the same operations
-                 * on the same operands as the 256-bit test below (the
-                 * bound picked from the node's row by vpermps instead
-                 * of a broadcast), so each ray's mask bit is the same.
-                 * An odd last child takes both halves.  The camera
-                 * packets of the kitchen test about three leaf
-                 * children a node that takes this loop, bumpy's 2.5
-                 * (docs/performance-log.md, round 47); the pass does
-                 * the pair in the instructions of one child. */
-                if (test) {
-                    __m512 o2[3], i2[3], r_near[3], r_far[3];
-                    for (int k = 0; k < 3; k++) {
-                        o2[k] = _mm512_broadcast_f32x8(p->lane_f[TRI8_F_ORG + k]);
-                        i2[k] = _mm512_broadcast_f32x8(p->lane_f[TRI8_F_INV + k]);
-                        r_near[k] = _mm512_castps256_ps512(
-                            _mm256_load_ps(wide_row(n->bounds, near_row[k])));
-                        r_far[k] = _mm512_castps256_ps512(
-                            _mm256_load_ps(wide_row(n->bounds, far_row[k])));
-                    }
-                    const __m512 tmin2 = _mm512_broadcast_f32x8(p->lane_f[TRI8_F_TMIN]);
-                    const __m512 bl2 = _mm512_broadcast_f32x8(bl);
-                    const __m512 inf16 = _mm512_set1_ps(INFINITY);
-                    const __m512 scale16 = _mm512_set1_ps(ISECT_BOX_FAR_SCALE);
-                    for (unsigned m = test; m;) {
-                        const unsigned l0 = (unsigned)__builtin_ctz(m);
-                        m &= m - 1u;
-                        const unsigned l1 = m ? (unsigned)__builtin_ctz(m) : l0;
-                        m &= m - 1u;
-                        const __m512i idx = _mm512_mask_set1_epi32(_mm512_set1_epi32((int)l0),
-                                                                   (__mmask16)0xff00u, (int)l1);
-                        __m512 u0 = tmin2;
-                        __m512 u1 = inf16;
-                        for (int k = 0; k < 3; k++) {
-                            const __m512 tn = _mm512_mul_ps(
-                                _mm512_sub_ps(_mm512_permutexvar_ps(idx, r_near[k]), o2[k]), i2[k]);
-                            const __m512 tf = _mm512_mul_ps(
-                                _mm512_sub_ps(_mm512_permutexvar_ps(idx, r_far[k]), o2[k]), i2[k]);
-                            u0 = _mm512_max_ps(tn, u0);
-                            u1 = _mm512_min_ps(tf, u1);
-                        }
-                        u1 = _mm512_mul_ps(u1, scale16);
-                        u1 = _mm512_min_ps(u1, bl2);
-                        const unsigned in = (unsigned)_mm512_cmp_ps_mask(u0, u1, _CMP_LE_OQ);
-                        /* l1 first: an odd last child (l1 == l0) gets
-                         * lanes 0-7's bits, the same as lanes 8-15's. */
-                        lane_rays[l1] = in >> 8 & rays;
-                        lane_rays[l0] = in & rays;
-                        push |= (unsigned)(lane_rays[l0] != 0) << l0 |
-                                (unsigned)(lane_rays[l1] != 0) << l1;
-                        if (!any_hit) {
-                            /* Each half's least entry of its rays, as
-                             * packet_hmin's: the lanes that passed hold
-                             * no NaN, so the order of the minima decides
-                             * at most the sign of a zero, which only
-                             * comparisons read (the pop's cull). */
-                            __m512 v = _mm512_mask_blend_ps((__mmask16)in, inf16, u0);
-                            v = _mm512_min_ps(v, _mm512_permute_ps(v, _MM_SHUFFLE(2, 3, 0, 1)));
-                            v = _mm512_min_ps(v, _mm512_permute_ps(v, _MM_SHUFFLE(1, 0, 3, 2)));
-                            v = _mm512_min_ps(
-                                v, _mm512_shuffle_f32x4(v, v, _MM_SHUFFLE(2, 3, 0, 1)));
-                            t_min[l1] = _mm_cvtss_f32(_mm512_extractf32x4_ps(v, 2));
-                            t_min[l0] = _mm512_cvtss_f32(v);
-                        }
-                    }
-                    node_tests +=
-                        (unsigned)__builtin_popcount(test) * (unsigned)__builtin_popcount(rays);
-                }
-#else
                 for (unsigned m = test; m; m &= m - 1u) {
                     const unsigned l = (unsigned)__builtin_ctz(m);
                     /* The child's box against each ray, walk_wide8's
@@ -1288,7 +1217,6 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                     if (!any_hit)
                         t_min[l] = packet_hmin(_mm256_blendv_ps(inf8, u0, in));
                 }
-#endif
             }
             if (push) {
                 if (!(push & (push - 1u))) {
