@@ -267,22 +267,17 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
 #if defined(__AVX512VL__) && defined(__AVX512DQ__)
                         /* The mask register itself (mask's operation on
                          * the same masks, which GCC computes once):
-                         * wide8_front_compress says why.  Called from the
-                         * any-hit branches only: written before the branch,
-                         * the dead block changed the closest-hit walks'
+                         * wide8_front_compress says why.  A node with one
+                         * hit child has no order to decide, in an any-hit
+                         * walk or a closest-hit one: the only hit lane is
+                         * the lowest, so the compression takes the child
+                         * the count would.  The walks with any_hit ==
+                         * WIDE_ANY_LONGEST keep the count (not measured
+                         * with the compression).  Written before the
+                         * branch, the dead block changed the other walks'
                          * register allocation (performance-log.md, round
                          * 46). */
-                        if (any_hit == 1 && lanes)
-                            wide8_front_compress(n, _kand_mask8(_kand_mask8(k0, k1),
-                                                                _kand_mask8(k2, k3)),
-                                                 &cur, &cur_count);
-                        /* A closest-hit walk's node with one hit child
-                         * has no order to decide: the only hit lane is
-                         * the lowest, so the compression takes the child
-                         * the count would, and the next node's address
-                         * waits on the mask register's compression, not
-                         * on kmovb, tzcnt and a load after them. */
-                        else if (!any_hit && lanes)
+                        if ((any_hit == 0 || any_hit == 1) && lanes)
                             wide8_front_compress(n, _kand_mask8(_kand_mask8(k0, k1),
                                                                 _kand_mask8(k2, k3)),
                                                  &cur, &cur_count);
