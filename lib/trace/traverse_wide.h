@@ -621,14 +621,15 @@ static inline void wide8_store(const struct bvh8_node *n, __m256i gather, __m256
  * written too, and overwritten later: the stack has room).  The entry
  * distances are stored here (closest hit) and not by wide8_push_stored
  * (any hit, whose pops never read them).  Inlined: the walks keep their
- * state in registers around it.
+ * state in registers around it.  wide8_order_lanes (lanes and the order
+ * word) and wide8_store_ordered (the pushes) are shared with
+ * wide8_push_compress.
  */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline void wide8_push(const struct bvh8_node *n, int octant, __m256 hit, __m256 t0,
-                              __m256i order_shift, uint32_t *st_child, uint32_t *st_count,
-                              float *st_t, uint32_t *sp, uint32_t *cur, uint32_t *cur_count)
+static inline __m256i wide8_order_lanes(const struct bvh8_node *n, int octant,
+                                        __m256i order_shift, uint32_t *order_out)
 {
     /* The octant's three order bytes as one little-endian word: the four
      * bytes ending with them (the first is the last count byte or the
@@ -636,16 +637,37 @@ static inline void wide8_push(const struct bvh8_node *n, int octant, __m256 hit,
      * one load instead of three and two shifts and ors. */
     uint32_t word;
     memcpy(&word, (const char *)n->order[octant] - 1, sizeof(word));
-    const uint32_t order = word >> 8;
+    *order_out = word >> 8;
     /* Position p's lane in bits 0-2 of lanes[p], the higher bits those of
      * the positions after it: not masked off, as every use of lanes is an
      * index of an eight-lane permutation (vpermps, vpermd), which reads
      * the index's low three bits only. */
-    const __m256i lanes = _mm256_srlv_epi32(_mm256_set1_epi32((int)order), order_shift);
-    const unsigned pm = (unsigned)_mm256_movemask_ps(_mm256_permutevar8x32_ps(hit, lanes));
+    return _mm256_srlv_epi32(_mm256_set1_epi32((int)*order_out), order_shift);
+}
+
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void wide8_store_ordered(const struct bvh8_node *n, __m256i lanes, unsigned pm,
+                                       __m256 t0, uint32_t *st_child, uint32_t *st_count,
+                                       float *st_t, uint32_t *sp)
+{
     const __m128i packed = _mm_loadl_epi64((const __m128i *)(const void *)&wide8_compress[pm]);
     const __m256i gather = _mm256_permutevar8x32_epi32(lanes, _mm256_cvtepu8_epi32(packed));
     wide8_store(n, gather, t0, pm, st_child, st_count, st_t, sp);
+}
+
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void wide8_push(const struct bvh8_node *n, int octant, __m256 hit, __m256 t0,
+                              __m256i order_shift, uint32_t *st_child, uint32_t *st_count,
+                              float *st_t, uint32_t *sp, uint32_t *cur, uint32_t *cur_count)
+{
+    uint32_t order;
+    const __m256i lanes = wide8_order_lanes(n, octant, order_shift, &order);
+    const unsigned pm = (unsigned)_mm256_movemask_ps(_mm256_permutevar8x32_ps(hit, lanes));
+    wide8_store_ordered(n, lanes, pm, t0, st_child, st_count, st_t, sp);
     const unsigned l = order >> (3 * (unsigned)__builtin_ctz(pm)) & 7u;
     *cur = n->child[l];
     *cur_count = n->count[l];
@@ -696,7 +718,7 @@ static inline void wide8_front_compress(const struct bvh8_node *n, __mmask8 k, u
  * of the order word and the child's load after them; so the next node's
  * address waits on vpermps -> vpmovd2m -> vpcompressd -> vmovd instead of
  * vpermps -> vmovmskps -> tzcnt -> lea -> shrx -> and -> load.  The pushes
- * are wide8_push's (the same table, the same slots).
+ * are wide8_push's (wide8_store_ordered).
  */
 #if defined(__GNUC__)
 __attribute__((always_inline))
@@ -706,16 +728,12 @@ static inline void wide8_push_compress(const struct bvh8_node *n, int octant, __
                                        uint32_t *st_count, float *st_t, uint32_t *sp,
                                        uint32_t *cur, uint32_t *cur_count)
 {
-    uint32_t word;
-    memcpy(&word, (const char *)n->order[octant] - 1, sizeof(word));
-    const uint32_t order = word >> 8;
-    const __m256i lanes = _mm256_srlv_epi32(_mm256_set1_epi32((int)order), order_shift);
+    uint32_t order;
+    const __m256i lanes = wide8_order_lanes(n, octant, order_shift, &order);
     const __m256 hit_ord = _mm256_permutevar8x32_ps(hit, lanes);
     const unsigned pm = (unsigned)_mm256_movemask_ps(hit_ord);
     const __mmask8 km = _mm256_movepi32_mask(_mm256_castps_si256(hit_ord));
-    const __m128i packed = _mm_loadl_epi64((const __m128i *)(const void *)&wide8_compress[pm]);
-    const __m256i gather = _mm256_permutevar8x32_epi32(lanes, _mm256_cvtepu8_epi32(packed));
-    wide8_store(n, gather, t0, pm, st_child, st_count, st_t, sp);
+    wide8_store_ordered(n, lanes, pm, t0, st_child, st_count, st_t, sp);
     const __m256i child = _mm256_load_si256((const __m256i *)(const void *)n->child);
     const __m256i count =
         _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)n->count));

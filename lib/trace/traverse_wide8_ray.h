@@ -55,13 +55,13 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
         far_z = 7 * row - near_z;
         octant = (int)(nx | ny << 1 | nz << 2);
     }
-    /* A walk from the set-up's lanes (any-hit and closest-hit alike) addresses a node's six
-     * rows from six bases, the nodes' array plus each row's offset, and
-     * the node's byte offset: base + offset is one address operand of the
-     * bound's load, where nodes + cur * 256 + row needed an addition
-     * before the loads, one step more on the chain from a node's child
-     * word to its bounds, which every node of a walk waits for.  The same
-     * addresses, so the same bounds. */
+    /* A walk from the set-up's lanes (any-hit and closest-hit alike) addresses a
+     * node's six rows from six bases, the nodes' array plus each row's offset,
+     * and the node's byte offset: base + offset is one address operand of the
+     * bound's load, where nodes + cur * 256 + row needed an addition before the
+     * loads, one step more on the chain from a node's child word to its bounds,
+     * which every node of a walk waits for.  The same addresses, so the same
+     * bounds. */
     const char *const node_base = (const char *)(const void *)nodes;
     const char *row_nx = node_base + near_x, *row_fx = node_base + far_x;
     const char *row_ny = node_base + near_y, *row_fy = node_base + far_y;
