@@ -685,46 +685,23 @@ static inline __m256i wide8_gather_stored(unsigned pm)
 
 #if defined(__AVX512VL__) && defined(__AVX512DQ__)
 /*
- * The node's eight child words as byte offsets into the nodes' array
- * (child * 256), one 64-bit lane each: zero-extended and shifted while the
- * node test runs (their address does not wait for the mask), so that the
- * front child compressed out of them (wide8_front_compress,
- * wide8_push_compress) is the next node's offset itself, the `add` of a
- * row's base away from its bounds, without the shift the child word
- * needed after its compression.  64 bits because a child word may exceed
- * 2^24 (a shift within 32 bits would wrap).
- */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline __m512i wide8_child_offsets(__m256i child)
-{
-    return _mm512_slli_epi64(_mm512_cvtepu32_epi64(child), 8);
-}
-
-/*
- * The front child of a walk in the stored order (the lowest hit lane, as
- * wide8_push_stored takes it, and a node's only hit child in any walk)
- * from the node test's mask register: the node's child offsets
- * (wide8_child_offsets) and counts compressed by the mask, lane 0 of
+ * The front child of an any-hit walk in the stored order (the lowest hit
+ * lane, as wide8_push_stored takes it) from the node test's mask register:
+ * the node's child words and counts compressed by the mask, lane 0 of
  * each.  Without the mask's move to a general register, its trailing-zero
  * count and the child's load after them, which the next node's loads
- * waited for.  *cur_off: the child's byte offset in the nodes' array (the
- * walk's leaf takes its packet index as cur_off >> 8).  The same child and
- * count, so the same walk.
+ * waited for.  The same child and count, so the same walk.
  */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline void wide8_front_compress(const struct bvh8_node *n, __mmask8 k, size_t *cur_off,
+static inline void wide8_front_compress(const struct bvh8_node *n, __mmask8 k, uint32_t *cur,
                                         uint32_t *cur_count)
 {
-    const __m512i off =
-        wide8_child_offsets(_mm256_load_si256((const __m256i *)(const void *)n->child));
+    const __m256i child = _mm256_load_si256((const __m256i *)(const void *)n->child);
     const __m256i count =
         _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)n->count));
-    *cur_off = (size_t)_mm_cvtsi128_si64(
-        _mm512_castsi512_si128(_mm512_maskz_compress_epi64(k, off)));
+    *cur = (uint32_t)_mm256_cvtsi256_si32(_mm256_maskz_compress_epi32(k, child));
     *cur_count = (uint32_t)_mm256_cvtsi256_si32(_mm256_maskz_compress_epi32(k, count));
 }
 #endif
@@ -740,9 +717,8 @@ static inline void wide8_front_compress(const struct bvh8_node *n, __mmask8 k, s
  * takes by the trailing-zero count of the positions' movemask, the shift
  * of the order word and the child's load after them; so the next node's
  * address waits on vpermps -> vpmovd2m -> vpcompressd -> vmovd instead of
- * vpermps -> vmovmskps -> tzcnt -> lea -> shrx -> and -> load.  The child
- * comes out as its byte offset (*cur_off, wide8_child_offsets, from the
- * permuted words).  The pushes are wide8_push's (wide8_store_ordered).
+ * vpermps -> vmovmskps -> tzcnt -> lea -> shrx -> and -> load.  The pushes
+ * are wide8_push's (wide8_store_ordered).
  */
 #if defined(__GNUC__)
 __attribute__((always_inline))
@@ -750,7 +726,7 @@ __attribute__((always_inline))
 static inline void wide8_push_compress(const struct bvh8_node *n, int octant, __m256 hit,
                                        __m256 t0, __m256i order_shift, uint32_t *st_child,
                                        uint32_t *st_count, float *st_t, uint32_t *sp,
-                                       size_t *cur_off, uint32_t *cur_count)
+                                       uint32_t *cur, uint32_t *cur_count)
 {
     uint32_t order;
     const __m256i lanes = wide8_order_lanes(n, octant, order_shift, &order);
@@ -761,9 +737,8 @@ static inline void wide8_push_compress(const struct bvh8_node *n, int octant, __
     const __m256i child = _mm256_load_si256((const __m256i *)(const void *)n->child);
     const __m256i count =
         _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)n->count));
-    const __m512i off = wide8_child_offsets(_mm256_permutevar8x32_epi32(child, lanes));
-    *cur_off = (size_t)_mm_cvtsi128_si64(
-        _mm512_castsi512_si128(_mm512_maskz_compress_epi64(km, off)));
+    *cur = (uint32_t)_mm256_cvtsi256_si32(
+        _mm256_maskz_compress_epi32(km, _mm256_permutevar8x32_epi32(child, lanes)));
     *cur_count = (uint32_t)_mm256_cvtsi256_si32(
         _mm256_maskz_compress_epi32(km, _mm256_permutevar8x32_epi32(count, lanes)));
 }
