@@ -685,23 +685,46 @@ static inline __m256i wide8_gather_stored(unsigned pm)
 
 #if defined(__AVX512VL__) && defined(__AVX512DQ__)
 /*
- * The front child of an any-hit walk in the stored order (the lowest hit
- * lane, as wide8_push_stored takes it) from the node test's mask register:
- * the node's child words and counts compressed by the mask, lane 0 of
- * each.  Without the mask's move to a general register, its trailing-zero
- * count and the child's load after them, which the next node's loads
- * waited for.  The same child and count, so the same walk.
+ * The node's eight child words as byte offsets into the nodes' array
+ * (child * 256), shifted while the node test runs (their address does not
+ * wait for the mask), so that the front child compressed out of them
+ * (wide8_front_compress, wide8_push_compress) is the next node's offset
+ * itself, one address operand with a row's base, without the shift the
+ * child word needed after its compression.  Within 32-bit lanes: exact
+ * for indices below 2^24, which WIDE8_WALK1_FAR sends every larger layout
+ * around.  (In 64-bit lanes, a zmm register, the walks were 0.05-0.2 of
+ * Embree slower on this project's Xeon: performance-log.md, round 48.)
  */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline void wide8_front_compress(const struct bvh8_node *n, __mmask8 k, uint32_t *cur,
+static inline __m256i wide8_child_offsets(__m256i child)
+{
+    return _mm256_slli_epi32(child, 8);
+}
+
+/*
+ * The front child of a walk in the stored order (the lowest hit lane, as
+ * wide8_push_stored takes it, and a node's only hit child in any walk)
+ * from the node test's mask register: the node's child offsets
+ * (wide8_child_offsets) and counts compressed by the mask, lane 0 of
+ * each.  Without the mask's move to a general register, its trailing-zero
+ * count and the child's load after them, which the next node's loads
+ * waited for.  *cur_off: the child's byte offset in the nodes' array (the
+ * walk's leaf takes its packet index as cur_off >> 8).  The same child and
+ * count, so the same walk.
+ */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void wide8_front_compress(const struct bvh8_node *n, __mmask8 k, size_t *cur_off,
                                         uint32_t *cur_count)
 {
-    const __m256i child = _mm256_load_si256((const __m256i *)(const void *)n->child);
+    const __m256i off =
+        wide8_child_offsets(_mm256_load_si256((const __m256i *)(const void *)n->child));
     const __m256i count =
         _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)n->count));
-    *cur = (uint32_t)_mm256_cvtsi256_si32(_mm256_maskz_compress_epi32(k, child));
+    *cur_off = (uint32_t)_mm256_cvtsi256_si32(_mm256_maskz_compress_epi32(k, off));
     *cur_count = (uint32_t)_mm256_cvtsi256_si32(_mm256_maskz_compress_epi32(k, count));
 }
 #endif
@@ -717,8 +740,9 @@ static inline void wide8_front_compress(const struct bvh8_node *n, __mmask8 k, u
  * takes by the trailing-zero count of the positions' movemask, the shift
  * of the order word and the child's load after them; so the next node's
  * address waits on vpermps -> vpmovd2m -> vpcompressd -> vmovd instead of
- * vpermps -> vmovmskps -> tzcnt -> lea -> shrx -> and -> load.  The pushes
- * are wide8_push's (wide8_store_ordered).
+ * vpermps -> vmovmskps -> tzcnt -> lea -> shrx -> and -> load.  The child
+ * comes out as its byte offset (*cur_off, wide8_child_offsets, from the
+ * permuted words).  The pushes are wide8_push's (wide8_store_ordered).
  */
 #if defined(__GNUC__)
 __attribute__((always_inline))
@@ -726,7 +750,7 @@ __attribute__((always_inline))
 static inline void wide8_push_compress(const struct bvh8_node *n, int octant, __m256 hit,
                                        __m256 t0, __m256i order_shift, uint32_t *st_child,
                                        uint32_t *st_count, float *st_t, uint32_t *sp,
-                                       uint32_t *cur, uint32_t *cur_count)
+                                       size_t *cur_off, uint32_t *cur_count)
 {
     uint32_t order;
     const __m256i lanes = wide8_order_lanes(n, octant, order_shift, &order);
@@ -737,8 +761,8 @@ static inline void wide8_push_compress(const struct bvh8_node *n, int octant, __
     const __m256i child = _mm256_load_si256((const __m256i *)(const void *)n->child);
     const __m256i count =
         _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)n->count));
-    *cur = (uint32_t)_mm256_cvtsi256_si32(
-        _mm256_maskz_compress_epi32(km, _mm256_permutevar8x32_epi32(child, lanes)));
+    const __m256i off = wide8_child_offsets(_mm256_permutevar8x32_epi32(child, lanes));
+    *cur_off = (uint32_t)_mm256_cvtsi256_si32(_mm256_maskz_compress_epi32(km, off));
     *cur_count = (uint32_t)_mm256_cvtsi256_si32(
         _mm256_maskz_compress_epi32(km, _mm256_permutevar8x32_epi32(count, lanes)));
 }
@@ -1376,6 +1400,20 @@ typedef char tri4_ray_tmin_org_layout[offsetof(struct tri4_ray, node_neg_org) ==
                                           ? 1
                                           : -1];
 
+/* walk_wide8_ray's walks that take the front child by compression as a
+ * byte offset (AVX-512: cur_off, wide8_child_offsets) shift the child
+ * words within 32-bit lanes: child * 256 must stay below 2^32, so every
+ * node and packet index below 2^24.  A layout with more nodes or packets
+ * (over 4 GB of nodes or 16 M packets) takes the float walk
+ * (wide8_walk_tmin_other: the same answers and counts) instead. */
+#if defined(__AVX512VL__) && defined(__AVX512DQ__)
+#define WIDE8_WALK1_FAR(wide, any_hit)                                                          \
+    (((any_hit) == 0 || (any_hit) == 1) &&                                                      \
+     ((wide)->node_count | (wide)->packet_count) > 0xffffffu)
+#else
+#define WIDE8_WALK1_FAR(wide, any_hit) 0
+#endif
+
 #define WIDE8_WALK1(name, walk, any_hit, stats, leave_early)                                    \
     static int name(const struct bvh4 *wide, const float org[3], const float dir[3],            \
                     float tmin, float t_max, struct trace_hit *hit,                             \
@@ -1393,7 +1431,7 @@ typedef char tri4_ray_tmin_org_layout[offsetof(struct tri4_ray, node_neg_org) ==
          * float walk's flag. */                                                                \
         const int any_walk = (any_hit) != 0;                                                    \
         wide_state_init1(s, &ray, t_max, any_walk, stats, hit);                                 \
-        if (!(tmin >= 0.0f))                                                                    \
+        if (!(tmin >= 0.0f) || WIDE8_WALK1_FAR(wide, any_hit))                                  \
             return wide8_walk_end(s, wide8_walk_tmin_other(wide, s, any_walk, stats),           \
                                   any_hit, stats, counters);                                    \
         if (any_hit)                                                                            \

@@ -82,6 +82,21 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
     uint32_t sp = 0;
     uint32_t cur = 0;
     uint32_t cur_count = 0;
+    /* AVX-512, from the set-up's lanes, a walk whose front child comes by
+     * compression (wide8_front_compress, wide8_push_compress): the child
+     * as its byte offset in the nodes' array (cur * 256), which the
+     * compression gives directly, so that the next node's bounds wait for
+     * no shift after it; the leaf's packet index is cur_off >> 8, and a
+     * pop sets both.  The shift is within 32-bit lanes (wide8_child_offsets):
+     * WIDE8_WALK1, this walk's only caller with lanes, sends a layout with
+     * 2^24 nodes or packets or more to the float walk.  Elsewhere cur alone
+     * (cur_off's stores are dead). */
+#if defined(__AVX512VL__) && defined(__AVX512DQ__)
+    const int by_off = (any_hit == 0 || any_hit == 1) && lanes;
+#else
+    const int by_off = 0;
+#endif
+    size_t cur_off = 0;
     /* An any-hit walk's box limit never shrinks (it ends at its first
      * hit): kept here, from s->best = t_max as wide_state_init computes
      * it, and not reloaded after each leaf (wide_state_init1). */
@@ -188,7 +203,10 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                 _mm256_castps_si256(_mm256_set1_ps(rv->tmin)), _mm256_setzero_si256());
             /* Inner nodes until a leaf lane comes up (or the stack empties). */
             while (!cur_count) {
-                const struct bvh8_node *n = &nodes[cur];
+                const size_t node_off = by_off ? cur_off : (size_t)cur * sizeof(nodes[0]);
+                const struct bvh8_node *n =
+                    by_off ? (const struct bvh8_node *)(const void *)(node_base + node_off)
+                           : &nodes[cur];
                 const char *b = (const char *)(const void *)n->bounds;
                 if (stats)
                     node_tests += 8;
@@ -216,7 +234,6 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                  *   holds when it holds against each; a far NaN (skipped
                  *   by the exit's fold, the inf taking its place) passes
                  *   its comparison as unordered (!(entry > far)). */
-                const size_t node_off = (size_t)cur * sizeof(nodes[0]);
 #define WIDE8_ROW_BOUND(row, off)                                                                 \
     (lanes ? wide8_bound(row, node_off) : wide8_bound(b, off))
                 const __m256 tnx =
@@ -277,10 +294,10 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                          * branch, the dead block changed the other walks'
                          * register allocation (performance-log.md, round
                          * 46). */
-                        if ((any_hit == 0 || any_hit == 1) && lanes)
+                        if (by_off)
                             wide8_front_compress(n, _kand_mask8(_kand_mask8(k0, k1),
                                                                 _kand_mask8(k2, k3)),
-                                                 &cur, &cur_count);
+                                                 &cur_off, &cur_count);
                         else
 #endif
                         {
@@ -307,7 +324,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                             if (any_hit == 1 && lanes) {
                                 wide8_front_compress(n, _kand_mask8(_kand_mask8(k0, k1),
                                                                     _kand_mask8(k2, k3)),
-                                                     &cur, &cur_count);
+                                                     &cur_off, &cur_count);
                                 wide8_store(n, wide8_gather_stored(mask), t0, mask, st_child,
                                             st_count, NULL, &sp);
                             } else
@@ -319,7 +336,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
 #if defined(__AVX512VL__) && defined(__AVX512DQ__)
                             if (lanes)
                                 wide8_push_compress(n, octant, hit, t0, order_shift, st_child,
-                                                    st_count, st_t, &sp, &cur, &cur_count);
+                                                    st_count, st_t, &sp, &cur_off, &cur_count);
                             else
 #endif
                             wide8_push(n, octant, hit, t0, order_shift, st_child, st_count, st_t,
@@ -344,7 +361,9 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                      * soup's shadow rays 0.03 of Embree in every round
                      * (the packet walk's, round 38: level). */
                     if (!any_hit && !cur_count)
-                        WIDE_PREFETCH_LINES(&nodes[cur], 4);
+                        WIDE_PREFETCH_LINES(by_off ? node_base + cur_off
+                                                   : (const char *)&nodes[cur],
+                                            4);
                     continue;
                 }
                 /* Pop (as below). */
@@ -357,12 +376,14 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                 }
                 cur = st_child[sp];
                 cur_count = st_count[sp];
+                cur_off = (size_t)cur * sizeof(nodes[0]);
                 /* No WIDE8_PREFETCH_NEXT_TOP here (above). */
             }
         }
         {
             int stop = 0;
-            const struct tri4_packet *p = &packets[cur];
+            const struct tri4_packet *p =
+                &packets[by_off ? (size_t)(cur_off / sizeof(nodes[0])) : (size_t)cur];
             /* A closest-hit ray sets the packet test's constants at its
              * first leaf, not at its start: a ray that misses every leaf
              * box never pays for them.  An any-hit ray (a shadow ray,
@@ -446,6 +467,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
         }
         cur = st_child[sp];
         cur_count = st_count[sp];
+        cur_off = (size_t)cur * sizeof(nodes[0]);
         WIDE8_PREFETCH_NEXT_TOP();
     }
 done:
