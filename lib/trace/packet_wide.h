@@ -1066,11 +1066,7 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
     struct packet_entry stack[WIDE_STACK];
     const struct bvh8_node *nodes = wide->nodes8;
     const int octant = p->ia_octant;
-    /* The rows' offsets copied: the packet's state escapes to the out-of-
-     * line steps, so rows read through p would be loaded again at every
-     * node (and kept in the frame for the lane tests). */
-    const int near_row[3] = {p->ia_row_near[0], p->ia_row_near[1], p->ia_row_near[2]};
-    const int far_row[3] = {p->ia_row_far[0], p->ia_row_far[1], p->ia_row_far[2]};
+    const int *near_row = p->ia_row_near, *far_row = p->ia_row_far;
     const __m256 inf8 = _mm256_set1_ps(INFINITY);
     const __m256 scale8 = _mm256_set1_ps(ISECT_BOX_FAR_SCALE);
     /* The rays' box_limit in the lanes (unused lanes -inf, packet_run)
