@@ -921,97 +921,6 @@ static inline int packet_ia_init(struct packet_state *p, unsigned active,
 }
 
 /*
- * The interval walk's steps that are not a node test, out of line: a leaf
- * (the eight-ray test, then the rays outside it one by one) and the
- * single walk of one ray left at an inner node.  Inlined, their copies
- * made packet_walk8_ia one function of about 7,800 instructions on
- * AVX-512 whose node loop kept the current node, its count and the ray
- * mask on the stack (the push stored them, the next node's test loaded
- * them back before its first bounds load: docs/performance-log.md,
- * pk19).  A call per leaf or per one-ray walk costs a few instructions
- * and the loop-invariant vectors' reloads after it; the node loop,
- * which runs about twice as often as the leaves, keeps its values in
- * registers.  Returns the rays that found a hit (any hit).
- */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline unsigned packet_ia_leaf(const struct bvh4 *wide, struct packet_state *p,
-                                      uint32_t cur, uint32_t cur_count, unsigned rays,
-                                      __m256 limit_hi, int any_hit)
-{
-    unsigned done = 0;
-    unsigned single = rays;
-    const unsigned r8 = rays & p->lanes8;
-    if ((unsigned)__builtin_popcount(r8) >= PACKET_TRI8_MIN) {
-        /* The triangles' box test for closest-hit and any-hit
-         * packets alike, in leaves of more than PACKET_BEAM_MIN
-         * triangles, two triangle packets in one pass: the
-         * kitchen's shadow packets -8.4 % instructions, gears'
-         * -1.5 % but up to 2 % slower on the clock (their rays
-         * pass the boxes of about 80 % of the triangles they
-         * meet; pk16's one-packet form was 10-12 % slower there).
-         * docs/performance-log.md, pk16, pk18. */
-        done |= packet_leaf8(p, wide->packets, cur, cur_count, r8, any_hit, 1, limit_hi);
-        single &= ~r8;
-    }
-    for (unsigned m = single; m; m &= m - 1u) {
-        const unsigned r = (unsigned)__builtin_ctz(m);
-        packet_ready(p, r);
-        if (p->dirty >> r & 1u)
-            packet_flush(p, r);
-        if (!(p->r4_ready >> r & 1u)) {
-            tri4_ray_init(&p->s[r].r4, p->s[r].ray);
-            p->r4_ready |= 1u << r;
-        }
-        if (wide_leaf(&p->s[r], wide->packets, cur, cur_count))
-            done |= 1u << r;
-        packet_sync(p, r);
-    }
-    return done;
-}
-
-#if defined(__GNUC__)
-__attribute__((noinline))
-#endif
-static unsigned packet_ia_leaf_closest(const struct bvh4 *wide, struct packet_state *p,
-                                       uint32_t cur, uint32_t cur_count, unsigned rays,
-                                       __m256 limit_hi)
-{
-    return packet_ia_leaf(wide, p, cur, cur_count, rays, limit_hi, 0);
-}
-
-#if defined(__GNUC__)
-__attribute__((noinline))
-#endif
-static unsigned packet_ia_leaf_any(const struct bvh4 *wide, struct packet_state *p,
-                                   uint32_t cur, uint32_t cur_count, unsigned rays,
-                                   __m256 limit_hi)
-{
-    return packet_ia_leaf(wide, p, cur, cur_count, rays, limit_hi, 1);
-}
-
-/* Ray r alone from node (cur, cur_count): the single walk with its own
- * state (packet_walk8_ia says when), its results back in the lanes. */
-#if defined(__GNUC__)
-__attribute__((noinline))
-#endif
-static int packet_ia_one(const struct bvh4 *wide, struct packet_state *p, unsigned r,
-                         uint32_t cur, uint32_t cur_count)
-{
-    packet_ready(p, r);
-    if (p->dirty >> r & 1u)
-        packet_flush(p, r);
-    if (!(p->r4_ready >> r & 1u)) {
-        tri4_ray_init(&p->s[r].r4, p->s[r].ray);
-        p->r4_ready |= 1u << r;
-    }
-    const int found = walk_wide8(wide, &p->s[r], cur, cur_count);
-    packet_sync(p, r);
-    return found;
-}
-
-/*
  * The packet walk of the 8-wide layout by interval tests (Wald, Boulos
  * and Shirley 2007 sec. 4.2; Embree's coherent packet traversal does the
  * same with a packet frustum): an inner node's eight children are tested
@@ -1090,15 +999,49 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
              * and its stack holds only its own entries.  A leaf with one
              * ray stays with the per-ray leaf below (the single walk's
              * set-up costs more there: bumpy, 2 rays per leaf). */
-            if (packet_ia_one(wide, p, (unsigned)__builtin_ctz(rays), cur, cur_count))
+            const unsigned r = (unsigned)__builtin_ctz(rays);
+            packet_ready(p, r);
+            if (p->dirty >> r & 1u)
+                packet_flush(p, r);
+            if (!(p->r4_ready >> r & 1u)) {
+                tri4_ray_init(&p->s[r].r4, p->s[r].ray);
+                p->r4_ready |= 1u << r;
+            }
+            if (walk_wide8(wide, &p->s[r], cur, cur_count))
                 done |= rays;
+            packet_sync(p, r);
             if (!any_hit) {
                 bl = _mm256_loadu_ps(p->box_limit);
                 limit_hi = _mm256_set1_ps(packet_hmax(bl));
             }
         } else if (cur_count) {
-            done |= any_hit ? packet_ia_leaf_any(wide, p, cur, cur_count, rays, limit_hi)
-                            : packet_ia_leaf_closest(wide, p, cur, cur_count, rays, limit_hi);
+            unsigned single = rays;
+            const unsigned r8 = rays & p->lanes8;
+            if ((unsigned)__builtin_popcount(r8) >= PACKET_TRI8_MIN) {
+                /* The triangles' box test for closest-hit and any-hit
+                 * packets alike, in leaves of more than PACKET_BEAM_MIN
+                 * triangles, two triangle packets in one pass: the
+                 * kitchen's shadow packets -8.4 % instructions, gears'
+                 * -1.5 % but up to 2 % slower on the clock (their rays
+                 * pass the boxes of about 80 % of the triangles they
+                 * meet; pk16's one-packet form was 10-12 % slower there).
+                 * docs/performance-log.md, pk16, pk18. */
+                done |= packet_leaf8(p, wide->packets, cur, cur_count, r8, any_hit, 1, limit_hi);
+                single &= ~r8;
+            }
+            for (unsigned m = single; m; m &= m - 1u) {
+                const unsigned r = (unsigned)__builtin_ctz(m);
+                packet_ready(p, r);
+                if (p->dirty >> r & 1u)
+                    packet_flush(p, r);
+                if (!(p->r4_ready >> r & 1u)) {
+                    tri4_ray_init(&p->s[r].r4, p->s[r].ray);
+                    p->r4_ready |= 1u << r;
+                }
+                if (wide_leaf(&p->s[r], wide->packets, cur, cur_count))
+                    done |= 1u << r;
+                packet_sync(p, r);
+            }
             if (!any_hit) {
                 /* An any-hit ray's box_limit never shrinks: it ends at
                  * its first hit. */
