@@ -921,29 +921,6 @@ static inline int packet_ia_init(struct packet_state *p, unsigned active,
     return 1;
 }
 
-/* Ray r alone from node (cur, cur_count): the single walk with its own
- * state (packet_walk8_ia says when), its results back in the lanes.  Out
- * of line: inlined, the single walk's copy in packet_walk8_ia kept the
- * node loop's current node on the stack (docs/performance-log.md, pk19,
- * pk20). */
-#if defined(__GNUC__)
-__attribute__((noinline))
-#endif
-static int packet_ia_one(const struct bvh4 *wide, struct packet_state *p, unsigned r,
-                         uint32_t cur, uint32_t cur_count)
-{
-    packet_ready(p, r);
-    if (p->dirty >> r & 1u)
-        packet_flush(p, r);
-    if (!(p->r4_ready >> r & 1u)) {
-        tri4_ray_init(&p->s[r].r4, p->s[r].ray);
-        p->r4_ready |= 1u << r;
-    }
-    const int found = walk_wide8(wide, &p->s[r], cur, cur_count);
-    packet_sync(p, r);
-    return found;
-}
-
 /*
  * The packet walk of the 8-wide layout by interval tests (Wald, Boulos
  * and Shirley 2007 sec. 4.2; Embree's coherent packet traversal does the
@@ -1023,8 +1000,17 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
              * and its stack holds only its own entries.  A leaf with one
              * ray stays with the per-ray leaf below (the single walk's
              * set-up costs more there: bumpy, 2 rays per leaf). */
-            if (packet_ia_one(wide, p, (unsigned)__builtin_ctz(rays), cur, cur_count))
+            const unsigned r = (unsigned)__builtin_ctz(rays);
+            packet_ready(p, r);
+            if (p->dirty >> r & 1u)
+                packet_flush(p, r);
+            if (!(p->r4_ready >> r & 1u)) {
+                tri4_ray_init(&p->s[r].r4, p->s[r].ray);
+                p->r4_ready |= 1u << r;
+            }
+            if (walk_wide8(wide, &p->s[r], cur, cur_count))
                 done |= rays;
+            packet_sync(p, r);
             if (!any_hit) {
                 bl = _mm256_loadu_ps(p->box_limit);
                 limit_hi = _mm256_set1_ps(packet_hmax(bl));
