@@ -134,6 +134,7 @@ struct packet_state {
     int ia_octant;                  /* the rays' common octant */
     int ia_row_near[3], ia_row_far[3]; /* its near and far rows, byte offsets */
     unsigned r4_ready;              /* packet_walk8_ia: the rays whose s[r].r4 is set up */
+    unsigned ia_left, ia_done; /* packet_run: the rays of the groups to come, the answers */
     /* The packet's arguments, for a ray's state set up at its first use
      * (packet_ready): the interval walk keeps most rays in the lanes
      * from start to end, and never needs their states. */
@@ -1445,44 +1446,6 @@ static inline unsigned packet_ia_group(struct packet_state *p, unsigned left,
     p->t8_ready = 0;
     return g;
 }
-
-/* The interval walk of a packet in two octants, an octant at a time
- * (packet_ia_group), out of line: with the groups' loop in packet_run,
- * GCC's code for the walk of every one-octant packet changed (gears'
- * shadow packets, none of them in two octants, +1.8 % instructions).
- * Returns the any-hit rays that found a hit. */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline unsigned packet_ia_groups(const struct bvh4 *wide, struct packet_state *p,
-                                        unsigned active, int any_hit)
-{
-    unsigned done = 0, left = active;
-    do {
-        const unsigned g = packet_ia_group(p, left, wide->leaf_extent);
-        left &= ~g;
-        done |= packet_walk8_ia(wide, p, g, any_hit);
-    } while (left);
-    return done;
-}
-
-#if defined(__GNUC__)
-__attribute__((noinline))
-#endif
-static unsigned packet_ia_groups_closest(const struct bvh4 *wide, struct packet_state *p,
-                                         unsigned active)
-{
-    return packet_ia_groups(wide, p, active, 0);
-}
-
-#if defined(__GNUC__)
-__attribute__((noinline))
-#endif
-static unsigned packet_ia_groups_any(const struct bvh4 *wide, struct packet_state *p,
-                                     unsigned active)
-{
-    return packet_ia_groups(wide, p, active, 1);
-}
 #endif
 
 #if defined(__GNUC__)
@@ -1515,6 +1478,9 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
     struct packet_state p;
     unsigned done;
     int ia = 0;
+#if defined(__AVX__)
+    unsigned group = active; /* the rays the interval walk takes next */
+#endif
 #if defined(__AVX__)
     if (wide->width == 8) {
         /* The root's four lines requested before the set-up: every
@@ -1602,6 +1568,7 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
         p.r4_ready = 0;
         ia = wide->width == 8 && hybrid == 0 && packet_ia_init(&p, active, f_min, f_max,
                                                                      wide->leaf_extent);
+        group = active;
 #if defined(__AVX2__) && defined(RT_TRACE_PACKET_INIT_LANES)
         if (!ia && wide->width == 8 && hybrid == 0 && packet_ia_lanes_ok(&p, active)) {
             /* Two octants (the rays on both sides of one axis' plane,
@@ -1610,8 +1577,10 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
              * groups of one or two rays walk the tree once each, and
              * each group's set-up costs more than it saves. */
             const unsigned rest = active & ~packet_octant_lanes(&p, active);
-            if (rest && !(rest & ~packet_octant_lanes(&p, rest)))
-                ia = 2;
+            if (rest && !(rest & ~packet_octant_lanes(&p, rest))) {
+                group = packet_ia_group(&p, active, wide->leaf_extent);
+                ia = 1;
+            }
         }
 #endif
         if (!ia) {
@@ -1647,14 +1616,23 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
         }
     }
 #if defined(__AVX__)
-    if (ia == 1)
-        done = packet_walk8_ia(wide, &p, active, any_hit);
+    if (ia) {
+        /* The rays left after this group and the answers so far in the
+         * packet's state, not in registers live across the walk (which
+         * cost the one-octant packets' node loop a register). */
+        p.ia_left = active & ~group;
+        p.ia_done = 0;
+        for (;;) {
+            p.ia_done |= packet_walk8_ia(wide, &p, group, any_hit);
+            if (!p.ia_left)
+                break;
 #if defined(__AVX2__) && defined(RT_TRACE_PACKET_INIT_LANES)
-    else if (ia == 2)
-        done = any_hit ? packet_ia_groups_any(wide, &p, active)
-                       : packet_ia_groups_closest(wide, &p, active);
+            group = packet_ia_group(&p, p.ia_left, wide->leaf_extent);
 #endif
-    else if (wide->width == 8)
+            p.ia_left &= ~group;
+        }
+        done = p.ia_done;
+    } else if (wide->width == 8)
         done = packet_walk(wide, &p, active, hybrid, 8);
     else
 #endif
