@@ -134,7 +134,6 @@ struct packet_state {
     int ia_octant;                  /* the rays' common octant */
     int ia_row_near[3], ia_row_far[3]; /* its near and far rows, byte offsets */
     unsigned r4_ready;              /* packet_walk8_ia: the rays whose s[r].r4 is set up */
-    unsigned ia_left, ia_done; /* packet_run: the rays of the groups to come, the answers */
     /* The packet's arguments, for a ray's state set up at its first use
      * (packet_ready): the interval walk keeps most rays in the lanes
      * from start to end, and never needs their states. */
@@ -1617,21 +1616,17 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
     }
 #if defined(__AVX__)
     if (ia) {
-        /* The rays left after this group and the answers so far in the
-         * packet's state, not in registers live across the walk (which
-         * cost the one-octant packets' node loop a register). */
-        p.ia_left = active & ~group;
-        p.ia_done = 0;
+        unsigned left = active;
+        done = 0;
         for (;;) {
-            p.ia_done |= packet_walk8_ia(wide, &p, group, any_hit);
-            if (!p.ia_left)
+            done |= packet_walk8_ia(wide, &p, group, any_hit);
+            left &= ~group;
+            if (!left)
                 break;
 #if defined(__AVX2__) && defined(RT_TRACE_PACKET_INIT_LANES)
-            group = packet_ia_group(&p, p.ia_left, wide->leaf_extent);
+            group = packet_ia_group(&p, left, wide->leaf_extent);
 #endif
-            p.ia_left &= ~group;
         }
-        done = p.ia_done;
     } else if (wide->width == 8)
         done = packet_walk(wide, &p, active, hybrid, 8);
     else
