@@ -789,9 +789,8 @@ static inline float packet_hmax(__m256 v)
 /*
  * Sets up the interval walk when it applies: every active ray in one
  * octant, with finite non-zero inverse directions, finite origins and
- * tmin >= 0 (not NaN), checked in the lanes of active.  Returns 0
- * otherwise (the packet takes packet_walk, or, in two octants, the
- * interval walk an octant at a time: packet_ia_group).
+ * tmin >= 0 (not NaN).  Returns 0 otherwise (the packet takes
+ * packet_walk).
  *
  * Per axis k, with the octant's near and far rows shared by all rays,
  * the interval test bounds every ray's own slab distances
@@ -1394,19 +1393,6 @@ static inline int packet_ia_lanes_ok(const struct packet_state *p, unsigned acti
     return ((unsigned)_mm256_movemask_ps(ok) & active) == active;
 }
 
-/* The rays of left in the octant of its first ray (the sign bits of
- * their inverse directions, as packet_ia_init reads them). */
-static inline unsigned packet_octant_lanes(const struct packet_state *p, unsigned left)
-{
-    const unsigned first = (unsigned)__builtin_ctz(left);
-    unsigned g = left;
-    for (int k = 0; k < 3; k++) {
-        const unsigned signs = (unsigned)_mm256_movemask_ps(p->lane_f[TRI8_F_INV + k]);
-        g &= signs >> first & 1u ? signs : ~signs;
-    }
-    return g;
-}
-
 /*
  * A packet whose rays are not in one octant (shadow rays from hit points
  * on both sides of a light, a row of camera rays across an axis): the
@@ -1423,7 +1409,11 @@ static inline unsigned packet_ia_group(struct packet_state *p, unsigned left,
                                        float leaf_extent)
 {
     const unsigned first = (unsigned)__builtin_ctz(left);
-    const unsigned g = packet_octant_lanes(p, left);
+    unsigned g = left;
+    for (int k = 0; k < 3; k++) {
+        const unsigned signs = (unsigned)_mm256_movemask_ps(p->lane_f[TRI8_F_INV + k]);
+        g &= signs >> first & 1u ? signs : ~signs;
+    }
     const __m256i at = _mm256_set1_epi32((int)first);
     const __m256i bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
     const __m256 in = _mm256_castsi256_ps(
@@ -1570,16 +1560,9 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
         group = active;
 #if defined(__AVX2__) && defined(RT_TRACE_PACKET_INIT_LANES)
         if (!ia && wide->width == 8 && hybrid == 0 && packet_ia_lanes_ok(&p, active)) {
-            /* Two octants (the rays on both sides of one axis' plane,
-             * or of two): the interval walk an octant at a time.  Rays
-             * in more octants (random directions) keep the per-ray walk:
-             * groups of one or two rays walk the tree once each, and
-             * each group's set-up costs more than it saves. */
-            const unsigned rest = active & ~packet_octant_lanes(&p, active);
-            if (rest && !(rest & ~packet_octant_lanes(&p, rest))) {
-                group = packet_ia_group(&p, active, wide->leaf_extent);
-                ia = 1;
-            }
+            /* Several octants: the interval walk an octant at a time. */
+            group = packet_ia_group(&p, active, wide->leaf_extent);
+            ia = 1;
         }
 #endif
         if (!ia) {
