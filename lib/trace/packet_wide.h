@@ -826,9 +826,7 @@ static inline int packet_ia_init(struct packet_state *p, unsigned active,
 {
     /* The rays' fields in the lanes (packet_run: a lane without a ray
      * holds the first ray's, never read into an answer: masked by the
-     * packet's rays).  Only the lanes of active are checked: the rays of
-     * one octant of a mixed packet (packet_ia_group) walk on their own,
-     * f_min and f_max their bounds. */
+     * packet's rays). */
     const unsigned first = (unsigned)__builtin_ctz(active);
     const __m256 sign = _mm256_set1_ps(-0.0f);
     const __m256 inf = _mm256_set1_ps(INFINITY);
@@ -843,9 +841,9 @@ static inline int packet_ia_init(struct packet_state *p, unsigned active,
         ok = _mm256_and_ps(ok, _mm256_cmp_ps(abs_i, _mm256_setzero_ps(), _CMP_GT_OQ));
         /* One octant: every lane's sign bit as the first ray's (the bit
          * signbit() reads, as the single walk's near/far choice). */
-        const unsigned signs = (unsigned)_mm256_movemask_ps(i) & active;
+        const unsigned signs = (unsigned)_mm256_movemask_ps(i);
         const int neg = (int)(signs >> first & 1u);
-        if (signs != (neg ? active : 0u))
+        if (signs != (neg ? 0xffu : 0u))
             return 0;
         octant |= neg << k;
         /* The least and greatest over the rays, broadcast
@@ -868,7 +866,7 @@ static inline int packet_ia_init(struct packet_state *p, unsigned active,
     }
     const __m256 tmin = p->lane_f[TRI8_F_TMIN];
     ok = _mm256_and_ps(ok, _mm256_cmp_ps(tmin, _mm256_setzero_ps(), _CMP_GE_OQ));
-    if (((unsigned)_mm256_movemask_ps(ok) & active) != active)
+    if ((unsigned)_mm256_movemask_ps(ok) != 0xffu)
         return 0;
     /* Rays from more than one origin: o_lo != o_hi on an axis. */
     p->ia_masks =
@@ -1375,68 +1373,6 @@ static inline void packet_lanes_bounds(const __m256 f[TRI8_F_COUNT], __m256 f_mi
 }
 #endif
 
-#if defined(__AVX2__) && defined(RT_TRACE_PACKET_INIT_LANES)
-/* The lanes of a packet whose rays packet_ia_init accepts but for their
- * octants: finite origins, finite non-zero inverses, tmin >= 0. */
-static inline int packet_ia_lanes_ok(const struct packet_state *p, unsigned active)
-{
-    const __m256 sign = _mm256_set1_ps(-0.0f);
-    const __m256 inf = _mm256_set1_ps(INFINITY);
-    __m256 ok = _mm256_cmp_ps(p->lane_f[TRI8_F_TMIN], _mm256_setzero_ps(), _CMP_GE_OQ);
-    for (int k = 0; k < 3; k++) {
-        const __m256 abs_i = _mm256_andnot_ps(sign, p->lane_f[TRI8_F_INV + k]);
-        ok = _mm256_and_ps(ok, _mm256_cmp_ps(_mm256_andnot_ps(sign, p->lane_f[TRI8_F_ORG + k]),
-                                             inf, _CMP_LT_OQ));
-        ok = _mm256_and_ps(ok, _mm256_cmp_ps(abs_i, inf, _CMP_LT_OQ));
-        ok = _mm256_and_ps(ok, _mm256_cmp_ps(abs_i, _mm256_setzero_ps(), _CMP_GT_OQ));
-    }
-    return ((unsigned)_mm256_movemask_ps(ok) & active) == active;
-}
-
-/*
- * A packet whose rays are not in one octant (shadow rays from hit points
- * on both sides of a light, a row of camera rays across an axis): the
- * rays of left in the octant of its first ray, set up for the interval
- * walk on their own (packet_ia_init over their bounds; the other lanes
- * of the bounds' copy hold the group's first ray, as a packet's unused
- * lanes), with the eight-ray test's permutation of that ray.  Each group
- * walks the tree by itself: packet_walk8_ia's answer for a ray depends
- * only on that ray (its argument holds ray by ray), so the rays of each
- * group get the hits the per-ray walk (packet_walk) gives them.
- * Returns the group; packet_ia_lanes_ok must hold for left.
- */
-static inline unsigned packet_ia_group(struct packet_state *p, unsigned left,
-                                       float leaf_extent)
-{
-    const unsigned first = (unsigned)__builtin_ctz(left);
-    unsigned g = left;
-    for (int k = 0; k < 3; k++) {
-        const unsigned signs = (unsigned)_mm256_movemask_ps(p->lane_f[TRI8_F_INV + k]);
-        g &= signs >> first & 1u ? signs : ~signs;
-    }
-    const __m256i at = _mm256_set1_epi32((int)first);
-    const __m256i bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
-    const __m256 in = _mm256_castsi256_ps(
-        _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32((int)g), bit), bit));
-    __m256 f[TRI8_F_COUNT], f_min[2], f_max[2];
-    for (int j = 0; j <= TRI8_F_TMIN; j++)
-        f[j] = _mm256_blendv_ps(_mm256_permutevar8x32_ps(p->lane_f[j], at), p->lane_f[j], in);
-    packet_lanes_bounds(f, f_min, f_max);
-    (void)packet_ia_init(p, g, f_min, f_max, leaf_extent);
-    __m256i same = _mm256_set1_epi32(-1);
-    for (int k = 0; k < 3; k++) {
-        const __m256i kf = _mm256_castps_si256(p->lane_f[TRI8_F_K + k]);
-        p->k0[k] = _mm256_cvtsi256_si32(_mm256_permutevar8x32_epi32(kf, at));
-        same = _mm256_and_si256(same, _mm256_cmpeq_epi32(kf, _mm256_set1_epi32(p->k0[k])));
-    }
-    p->lanes8 = (unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(same)) & g;
-    if ((unsigned)__builtin_popcount(p->lanes8) < PACKET_TRI8_MIN)
-        p->lanes8 = 0;
-    p->t8_ready = 0;
-    return g;
-}
-#endif
-
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
@@ -1467,9 +1403,6 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
     struct packet_state p;
     unsigned done;
     int ia = 0;
-#if defined(__AVX__)
-    unsigned group = active; /* the rays the interval walk takes next */
-#endif
 #if defined(__AVX__)
     if (wide->width == 8) {
         /* The root's four lines requested before the set-up: every
@@ -1557,14 +1490,6 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
         p.r4_ready = 0;
         ia = wide->width == 8 && hybrid == 0 && packet_ia_init(&p, active, f_min, f_max,
                                                                      wide->leaf_extent);
-        group = active;
-#if defined(__AVX2__) && defined(RT_TRACE_PACKET_INIT_LANES)
-        if (!ia && wide->width == 8 && hybrid == 0 && packet_ia_lanes_ok(&p, active)) {
-            /* Several octants: the interval walk an octant at a time. */
-            group = packet_ia_group(&p, active, wide->leaf_extent);
-            ia = 1;
-        }
-#endif
         if (!ia) {
             /* packet_walk reads the rays' structs. */
             packet_rays_ready(&p);
@@ -1598,19 +1523,9 @@ static inline unsigned packet_run(const struct bvh4 *wide, const struct bvh *bvh
         }
     }
 #if defined(__AVX__)
-    if (ia) {
-        unsigned left = active;
-        done = 0;
-        for (;;) {
-            done |= packet_walk8_ia(wide, &p, group, any_hit);
-            left &= ~group;
-            if (!left)
-                break;
-#if defined(__AVX2__) && defined(RT_TRACE_PACKET_INIT_LANES)
-            group = packet_ia_group(&p, left, wide->leaf_extent);
-#endif
-        }
-    } else if (wide->width == 8)
+    if (ia)
+        done = packet_walk8_ia(wide, &p, active, any_hit);
+    else if (wide->width == 8)
         done = packet_walk(wide, &p, active, hybrid, 8);
     else
 #endif
