@@ -4,7 +4,6 @@
  */
 #include "render/render.h"
 
-#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -348,53 +347,6 @@ struct unproject_cache {
     double col[4][UNPROJECT_COLS]; /* unproject_axis of each column, by product */
 };
 
-#if defined(RENDER_UNIT_AVX512)
-/*
- * a / b in eight double lanes, bit for bit the division's quotient, from
- * y = 1 / b (a division the caller shares among the quotients over one
- * divisor): q0 = a y, corrected once with the residual (Markstein 1990,
- * "Computation of elementary functions on the IBM RISC System/6000
- * processor", IBM J. Res. Dev. 34(1), sec. "Division"), q1 = q0 + (a -
- * q0 b) y by two FMAs, and then proven: a lane keeps q1 only where
- * |RN(a - q1 b)| < T = |b| 2^(e - 53), e the exponent of q1.  T is
- * exact (a power of two times |b|, checked to be normal and finite), and
- * rounding to nearest is monotone, so the computed residual below T
- * means the exact one is, |a / b - q1| < 2^(e - 53), half the spacing
- * of the doubles around q1 when q1 is normal, non-zero and not a power
- * of two (both spacings the same; these conditions are checked too):
- * q1 is then the nearest double to a / b, the division's result (a
- * quotient of doubles is never a tie).  Every other lane, and any NaN
- * or infinity on the way (its compare is false), takes the division.
- * Why: on the Intel cores with AVX-512 (Golden Cove and later) a 256-bit
- * vdivpd occupies the divider twice as long as a 128-bit one and a
- * 512-bit one four times (two doubles every four cycles whatever the
- * width), and the unprojection is a row of independent quotients, bound
- * by that throughput: one division a divisor and eight lanes of FMAs,
- * which issue on the other pipes, in place of three divisions.
- */
-static inline __m512d render_div_proven8(__m512d a, __m512d b, __m512d y)
-{
-    const __m512d q0 = _mm512_mul_pd(a, y);
-    const __m512d q1 = _mm512_fmadd_pd(_mm512_fnmadd_pd(q0, b, a), y, q0);
-    const __m512d r1 = _mm512_fnmadd_pd(q1, b, a);
-    const __m512d t = _mm512_scalef_pd(
-        _mm512_abs_pd(b), _mm512_sub_pd(_mm512_getexp_pd(q1), _mm512_set1_pd(53.0)));
-    __mmask8 ok = _mm512_cmp_pd_mask(_mm512_abs_pd(r1), t, _CMP_LT_OQ);
-    /* q1 not a NaN, a zero, an infinity or subnormal (fpclass 0xbf). */
-    ok &= (__mmask8)~_mm512_fpclass_pd_mask(q1, 0xbf);
-    /* q1 not a power of two (its mantissa in [1, 2) not 1). */
-    ok &= _mm512_cmp_pd_mask(_mm512_getmant_pd(q1, _MM_MANT_NORM_1_2, _MM_MANT_SIGN_zero),
-                             _mm512_set1_pd(1.0), _CMP_NEQ_OQ);
-    /* T computed exactly: normal (a rounded T is at most DBL_MIN) and
-     * finite. */
-    ok &= _mm512_cmp_pd_mask(t, _mm512_set1_pd(DBL_MIN), _CMP_GT_OQ);
-    ok &= _mm512_cmp_pd_mask(t, _mm512_set1_pd(DBL_MAX), _CMP_LE_OQ);
-    if (ok == 0xff)
-        return q1;
-    return _mm512_mask_div_pd(q1, (__mmask8)~ok, a, b);
-}
-#endif
-
 /* Row y of the cache's columns into u. */
 static void unproject_row_fill(const struct render_pass *sh, const struct unproject_cache *c,
                                struct unproject_row *u, int y)
@@ -433,43 +385,6 @@ static void unproject_row_fill(const struct render_pass *sh, const struct unproj
         last4[r] = _mm256_set1_pd(m[12 + r]);
     }
     __m256d sum4 = _mm256_setzero_pd();
-#if defined(RENDER_UNIT_AVX512)
-    /* Eight points a lane each, the same sums in the same order, the
-     * quotients by render_div_proven8 (the division's bits): a reciprocal
-     * of w at the near and at the far plane for eight points in place of
-     * six divisions a point.  The quads and the pair below take the rest
-     * of the row. */
-    {
-        __m512d sum8 = _mm512_setzero_pd();
-        for (; first_pair + 7 < UNPROJECT_COLS; first_pair += 8) {
-            const int i = first_pair;
-            const __m512d s3 = _mm512_add_pd(_mm512_loadu_pd(&c->col[3][i]),
-                                             _mm512_set1_pd(u->axis[3]));
-            const __m512d wn = _mm512_add_pd(_mm512_add_pd(s3, _mm512_set1_pd(m[11] * -1.0)),
-                                             _mm512_set1_pd(m[15]));
-            const __m512d wf = _mm512_add_pd(_mm512_add_pd(s3, _mm512_set1_pd(m[11] * 1.0)),
-                                             _mm512_set1_pd(m[15]));
-            const __m512d one = _mm512_set1_pd(1.0);
-            const __m512d yn = _mm512_div_pd(one, wn), yf = _mm512_div_pd(one, wf);
-            for (int r = 0; r < 3; r++) {
-                const __m512d s =
-                    _mm512_add_pd(_mm512_loadu_pd(&c->col[r][i]), _mm512_set1_pd(u->axis[r]));
-                const __m512d n = render_div_proven8(
-                    _mm512_add_pd(_mm512_add_pd(s, _mm512_set1_pd(m[8 + r] * -1.0)),
-                                  _mm512_set1_pd(m[12 + r])),
-                    wn, yn);
-                const __m512d f = render_div_proven8(
-                    _mm512_add_pd(_mm512_add_pd(s, _mm512_set1_pd(m[8 + r] * 1.0)),
-                                  _mm512_set1_pd(m[12 + r])),
-                    wf, yf);
-                _mm512_storeu_pd(&u->near_pt[r][i], n);
-                _mm512_storeu_pd(&u->far_pt[r][i], f);
-                sum8 = _mm512_add_pd(_mm512_add_pd(sum8, n), f);
-            }
-        }
-        sum4 = _mm256_add_pd(_mm512_castpd512_pd256(sum8), _mm512_extractf64x4_pd(sum8, 1));
-    }
-#endif
     for (; first_pair + 3 < UNPROJECT_COLS; first_pair += 4) {
         const int i = first_pair;
         const __m256d s3 = _mm256_add_pd(_mm256_loadu_pd(&c->col[3][i]), axis4[3]);
@@ -769,99 +684,6 @@ static inline int ray_quad(const struct unproject_row *a, const struct unproject
 }
 #endif
 
-#if defined(RENDER_UNIT_AVX512)
-/* Rows' four doubles from lo and four from hi in one vector (lanes 0-3,
- * 4-7). */
-static inline __m512d oct_load(const double *lo, const double *hi)
-{
-    return _mm512_insertf64x4(_mm512_castpd256_pd512(_mm256_loadu_pd(lo)), _mm256_loadu_pd(hi),
-                              1);
-}
-
-/* quad_distance_to_line in eight lanes. */
-static inline __m512d oct_distance_to_line(const __m512d a[3], const __m512d d[3])
-{
-    const __m512d along = _mm512_add_pd(
-        _mm512_add_pd(_mm512_mul_pd(a[0], d[0]), _mm512_mul_pd(a[1], d[1])),
-        _mm512_mul_pd(a[2], d[2]));
-    const __m512d perp0 = _mm512_sub_pd(a[0], _mm512_mul_pd(along, d[0]));
-    __m512d r2 = _mm512_mul_pd(perp0, perp0);
-    for (int k = 1; k < 3; k++) {
-        const __m512d perp = _mm512_sub_pd(a[k], _mm512_mul_pd(along, d[k]));
-        r2 = _mm512_add_pd(r2, _mm512_mul_pd(perp, perp));
-    }
-    return _mm512_sqrt_pd(r2);
-}
-
-/* ray_quad of both block rows in eight lanes (lanes 0-3 points i to i +
- * 3 of row r0 with r1 below, lanes 4-7 of r1 with r2 below): each lane
- * the same operations in the same order, the four quotients over the
- * length by render_div_proven8 from one reciprocal (the division's bits),
- * in place of four divisions.  Returns 1 when every lane's length is
- * positive and finite. */
-static inline int ray_oct(const struct unproject_row *r0, const struct unproject_row *r1,
-                          const struct unproject_row *r2, int i, struct trace_packet *pk,
-                          struct shade_cone cone[], struct shade_eye_rays *rays)
-{
-    __m512d p[3], d[3];
-    __m256 pf[3];
-    for (int k = 0; k < 3; k++) {
-        p[k] = oct_load(&r0->near_pt[k][i], &r1->near_pt[k][i]);
-        d[k] = _mm512_sub_pd(oct_load(&r0->far_pt[k][i], &r1->far_pt[k][i]), p[k]);
-        pf[k] = _mm512_cvtpd_ps(p[k]);
-    }
-    store_points4(&pk->org[0][0], _mm256_castps256_ps128(pf[0]), _mm256_castps256_ps128(pf[1]),
-                  _mm256_castps256_ps128(pf[2]));
-    store_points4(&pk->org[4][0], _mm256_extractf128_ps(pf[0], 1),
-                  _mm256_extractf128_ps(pf[1], 1), _mm256_extractf128_ps(pf[2], 1));
-    const __m512d len = _mm512_sqrt_pd(
-        _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(d[0], d[0]), _mm512_mul_pd(d[1], d[1])),
-                      _mm512_mul_pd(d[2], d[2])));
-    const __mmask8 ok = _mm512_cmp_pd_mask(len, _mm512_setzero_pd(), _CMP_GT_OQ) &
-                        _mm512_cmp_pd_mask(len, _mm512_set1_pd(INFINITY), _CMP_LT_OQ);
-    _mm256_storeu_ps(&pk->tmax[0], _mm512_cvtpd_ps(len));
-    const __m512d y = _mm512_div_pd(_mm512_set1_pd(1.0), len);
-    __m256 dir_f[3];
-    for (int k = 0; k < 3; k++) {
-        d[k] = render_div_proven8(d[k], len, y);
-        dir_f[k] = _mm512_cvtpd_ps(d[k]);
-        _mm256_storeu_ps(&rays->dir[k][0], dir_f[k]);
-    }
-    store_points4(&pk->dir[0][0], _mm256_castps256_ps128(dir_f[0]),
-                  _mm256_castps256_ps128(dir_f[1]), _mm256_castps256_ps128(dir_f[2]));
-    store_points4(&pk->dir[4][0], _mm256_extractf128_ps(dir_f[0], 1),
-                  _mm256_extractf128_ps(dir_f[1], 1), _mm256_extractf128_ps(dir_f[2], 1));
-    /* ray_quad's neighbours: h = 0 right, 1 below (near points), 2, 3
-     * the same far points. */
-    __m512d dist[4];
-    for (int h = 0; h < 4; h++) {
-        const struct unproject_row *lo = h % 2 ? r1 : r0, *hi = h % 2 ? r2 : r1;
-        const int at = h % 2 ? i : i + 1;
-        __m512d v[3];
-        for (int k = 0; k < 3; k++)
-            v[k] = _mm512_sub_pd(h < 2 ? oct_load(&lo->near_pt[k][at], &hi->near_pt[k][at])
-                                       : oct_load(&lo->far_pt[k][at], &hi->far_pt[k][at]),
-                                 p[k]);
-        dist[h] = oct_distance_to_line(v, d);
-    }
-    const __m512d zero = _mm512_setzero_pd();
-    const __m512d width = _mm512_max_pd(dist[1], _mm512_max_pd(dist[0], zero));
-    const __m512d growth = _mm512_max_pd(_mm512_sub_pd(dist[3], dist[1]),
-                                         _mm512_max_pd(_mm512_sub_pd(dist[2], dist[0]), zero));
-    const __m512d spread = render_div_proven8(growth, len, y);
-    const __m256 w = _mm512_cvtpd_ps(width), sp = _mm512_cvtpd_ps(spread);
-    _mm256_storeu_ps(&rays->width[0], w);
-    _mm256_storeu_ps(&rays->spread[0], sp);
-    for (int h = 0; h < 2; h++) {
-        const __m128 wh = h ? _mm256_extractf128_ps(w, 1) : _mm256_castps256_ps128(w);
-        const __m128 sh = h ? _mm256_extractf128_ps(sp, 1) : _mm256_castps256_ps128(sp);
-        _mm_storeu_ps((float *)&cone[4 * h], _mm_unpacklo_ps(wh, sh));
-        _mm_storeu_ps((float *)&cone[4 * h + 2], _mm_unpackhi_ps(wh, sh));
-    }
-    return ok == 0xff;
-}
-#endif
-
 /* What block_rays writes beside the packet: the rays by component
  * where the AVX2 copy's eye light reads them (shade.h), else nothing. */
 #if RENDER_QUADS
@@ -882,13 +704,7 @@ struct block_lanes {
 static inline int block_rays(const struct unproject_cache *c, int i, struct trace_packet *pk,
                              struct shade_cone cone[], struct block_lanes *lanes)
 {
-#if defined(RENDER_UNIT_AVX512)
-    /* Both block rows in eight lanes. */
-    const int ok = ray_oct(c->rows[0], c->rows[1], c->rows[2], i, pk, cone, &lanes->rays);
-    for (int k = 0; k < TRACE_PACKET; k += 4)
-        _mm_storeu_ps(&pk->tmin[k], _mm_setzero_ps());
-    return ok;
-#elif RENDER_QUADS
+#if RENDER_QUADS
     /* A block row a quad. */
     const int ok = ray_quad(c->rows[0], c->rows[1], i, pk, 0, cone, &lanes->rays) &
                    ray_quad(c->rows[1], c->rows[2], i, pk, 4, cone, &lanes->rays);
