@@ -978,25 +978,21 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
     /* The eye light's direct hits of a block are shaded together, their
      * texture levels of detail two at a time (shade_eye_hits). */
     const int eye = st->shading == RENDER_EYE_LIGHT;
-    /* Two sets of a block's rays: the block's, and the next one's, made
-     * before this block's trace (below). */
-    struct trace_packet pks[2];
-    struct shade_cone cones[2][TRACE_PACKET];
+    struct trace_packet pk;
+    struct shade_cone cone[TRACE_PACKET];
     struct trace_scene_hit hits[TRACE_PACKET];
 #if RENDER_PAIRS
-    struct block_lanes by_lanes[2];
+    struct block_lanes by_lane;
 #endif
     /* A whole block's eye-light hits, every ray made and every one a hit
      * (eye_block's common case): its rays' directions and hits are the
      * same arrays for every block of the tile. */
-    const float *block_dirs2[2][TRACE_PACKET];
+    const float *block_dirs[TRACE_PACKET];
     const struct trace_scene_hit *block_hits[TRACE_PACKET];
     for (int i = 0; i < TRACE_PACKET; i++) {
-        block_dirs2[0][i] = pks[0].dir[i];
-        block_dirs2[1][i] = pks[1].dir[i];
+        block_dirs[i] = pk.dir[i];
         block_hits[i] = &hits[i];
     }
-    int cur = 0; /* the set of the block the loop is at */
 #if defined(RENDER_UNIT_AVX2)
     /* A software pipeline of one block (Lam 1988, software pipelining;
      * here across the loop's blocks): a whole block's texel lines are
@@ -1020,56 +1016,35 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                           by + RENDER_BLOCK_H <= vp[3] && cache.rows[0]->whole &&
                           cache.rows[1]->whole && cache.rows[2]->whole;
 #endif
-#if RENDER_PAIRS
-        int ahead = 0, ahead_whole = 0; /* set cur made one block early, and whole */
-#endif
-        for (int bx = x0; bx < x0 + RENDER_TILE_SIZE && bx < vp[2];
-             bx += RENDER_BLOCK_W, cur ^= 1) {
-            struct trace_packet *const pk = &pks[cur];
-            struct shade_cone *const cone = cones[cur];
-            const float *const *const block_dirs = block_dirs2[cur];
+        for (int bx = x0; bx < x0 + RENDER_TILE_SIZE && bx < vp[2]; bx += RENDER_BLOCK_W) {
             int whole = 0; /* every pixel of the block inside and its ray made */
 #if RENDER_PAIRS
-            struct block_lanes *const by_lane = &by_lanes[cur];
-            if (ahead)
-                whole = ahead_whole;
-            else if (lanes && bx + RENDER_BLOCK_W <= x0 + RENDER_TILE_SIZE &&
-                     bx + RENDER_BLOCK_W <= vp[2])
-                whole = block_rays(&cache, bx - x0, pk, cone, by_lane);
-            if (whole)
-                pk->active = (1u << TRACE_PACKET) - 1u;
-            /* The next block's rays before this block's trace: their
-             * divisions and square roots, which the divider takes in turn
-             * (a 256-bit one twice as long as a 128-bit one on Intel's
-             * cores), depend on nothing the trace computes, so they run
-             * beside its first node tests instead of holding up the next
-             * block's. */
-            ahead = lanes && bx + 2 * RENDER_BLOCK_W <= x0 + RENDER_TILE_SIZE &&
-                    bx + 2 * RENDER_BLOCK_W <= vp[2];
-            if (ahead)
-                ahead_whole = block_rays(&cache, bx + RENDER_BLOCK_W - x0, &pks[cur ^ 1],
-                                         cones[cur ^ 1], &by_lanes[cur ^ 1]);
+            if (lanes && bx + RENDER_BLOCK_W <= x0 + RENDER_TILE_SIZE &&
+                bx + RENDER_BLOCK_W <= vp[2] && block_rays(&cache, bx - x0, &pk, cone, &by_lane)) {
+                pk.active = (1u << TRACE_PACKET) - 1u;
+                whole = 1;
+            }
 #endif
             if (!whole) {
-                pk->active = 0;
+                pk.active = 0;
                 for (int i = 0; i < TRACE_PACKET; i++) {
                     const int x = bx + i % RENDER_BLOCK_W, y = by + i / RENDER_BLOCK_W;
                     if (block_pixel_inside(vp, x0, y0, bx, by, i) &&
-                        primary_ray(&cache, x, y, pk->org[i], pk->dir[i], &pk->tmax[i],
+                        primary_ray(&cache, x, y, pk.org[i], pk.dir[i], &pk.tmax[i],
                                     &cone[i])) {
-                        pk->tmin[i] = 0.0f;
-                        pk->active |= 1u << i;
+                        pk.tmin[i] = 0.0f;
+                        pk.active |= 1u << i;
                     }
                 }
             }
-            const unsigned found = trace_scene_closest_packet(sc->scene, pk, hits, sc->counters);
+            const unsigned found = trace_scene_closest_packet(sc->scene, &pk, hits, sc->counters);
             if (eye && direct && pass->all_drawn) {
                 /* The loop below when every hit is drawn and shaded by the
                  * eye light: a pixel is its ray's hit, shaded with the
                  * block's others, or the clear colour, without the primed
                  * hits (only Whitted's shading reads them) or the other
                  * branches' tests. */
-                if (whole && found == pk->active && !pass->depth) {
+                if (whole && found == pk.active && !pass->depth) {
                     /* eye_block's batch when all eight are hits. */
                     float *px[TRACE_PACKET];
                     float *row = &pass->fb[4 * ((size_t)(vp[1] + by) * pass->fb_width +
@@ -1081,7 +1056,7 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
 #if defined(RENDER_UNIT_AVX2)
                     /* This block's prefetches, then the last block's texels. */
                     const int begun = RENDER_EYE_BLOCK_BEGIN(
-                        sc, block_dirs, &by_lane->rays, block_hits, px, &pending[pending_slot]);
+                        sc, block_dirs, &by_lane.rays, block_hits, px, &pending[pending_slot]);
                     if (pending_full)
                         RENDER_EYE_BLOCK_END(sc, &pending[pending_slot ^ 1]);
                     pending_full = begun;
@@ -1090,7 +1065,7 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                     shade_eye_hits(sc, TRACE_PACKET, block_dirs, block_hits, cone, px);
 #endif
                 } else
-                    eye_block(pass, sc, x0, y0, bx, by, pk, found, hits, cone);
+                    eye_block(pass, sc, x0, y0, bx, by, &pk, found, hits, cone);
                 continue;
             }
             /* Whitted shading's shadow rays of the block's first hits,
@@ -1107,15 +1082,15 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                 primed[i].shadow_occluded = 0;
                 primed[i].reflect_known = 0;
             }
-            shade_prime_shadows(sc, found, hits, (const float(*)[3])pk->org,
-                                (const float(*)[3])pk->dir, cone, surf, primed, reflected);
+            shade_prime_shadows(sc, found, hits, (const float(*)[3])pk.org,
+                                (const float(*)[3])pk.dir, cone, surf, primed, reflected);
             struct eye_batch eyes = {.n = 0};
             for (int i = 0; i < TRACE_PACKET; i++) {
                 if (!block_pixel_inside(vp, x0, y0, bx, by, i))
                     continue;
                 const int x = bx + i % RENDER_BLOCK_W, y = by + i / RENDER_BLOCK_W;
                 float *px = &pass->fb[4 * ((size_t)(vp[1] + y) * pass->fb_width + vp[0] + x)];
-                if (!(pk->active >> i & 1u)) {
+                if (!(pk.active >> i & 1u)) {
                     memcpy(px, st->clear_color, 4 * sizeof(float));
                     continue;
                 }
@@ -1127,24 +1102,24 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                     memcpy(px, st->clear_color, 4 * sizeof(float));
                     t_first = INFINITY;
                 } else if (direct &&
-                           (pass->all_drawn || gl_hit_drawn(sc, pk->dir[i], &primed[i].hit))) {
+                           (pass->all_drawn || gl_hit_drawn(sc, pk.dir[i], &primed[i].hit))) {
                     /* blend_trace_primary's first, opaque, drawn hit. */
                     if (eye) {
                         /* Shaded with the block's others below. */
-                        eye_batch_add(&eyes, pk->dir[i], &primed[i].hit, cone[i], px);
+                        eye_batch_add(&eyes, pk.dir[i], &primed[i].hit, cone[i], px);
                     } else
-                        shade_hit(sc, pk->org[i], pk->dir[i], &primed[i].hit, cone[i], 0, px);
+                        shade_hit(sc, pk.org[i], pk.dir[i], &primed[i].hit, cone[i], 0, px);
                     t_first = primed[i].hit.t;
                 } else if (pass->depth_state) /* polygon offset in the frame (lines.c) */
-                    blend_trace_primary_state(sc, pk->org[i], pk->dir[i], pk->tmax[i], cone[i], px,
+                    blend_trace_primary_state(sc, pk.org[i], pk.dir[i], pk.tmax[i], cone[i], px,
                                               &t_first, &pass->depth_state[at]);
                 else
-                    blend_trace_primary(sc, pk->org[i], pk->dir[i], pk->tmax[i], cone[i], px,
+                    blend_trace_primary(sc, pk.org[i], pk.dir[i], pk.tmax[i], cone[i], px,
                                         &t_first);
                 sc->primed = NULL;
                 if (pass->depth)
                     pass->depth[at] =
-                        raster_window_depth(st->projection, pk->org[i], pk->dir[i], t_first);
+                        raster_window_depth(st->projection, pk.org[i], pk.dir[i], t_first);
             }
             eye_batch_shade(sc, &eyes);
         }
