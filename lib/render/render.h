@@ -28,7 +28,7 @@
 #define RENDER_MAX_LIGHTS SCENE_MAX_LIGHTS /* scene/gl_state.h */
 /* 16x16 pixel tiles: small enough to balance two to eight threads on
  * 640x480 (1200 tiles), large enough that the atomic counter is noise. */
-#define RENDER_TILE_SIZE 32
+#define RENDER_TILE_SIZE 16
 
 enum render_shading { RENDER_EYE_LIGHT, RENDER_WHITTED, RENDER_FIXED_FUNCTION };
 
