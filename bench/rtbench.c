@@ -92,6 +92,8 @@ static void usage(FILE *f)
             "             the CPU share of each run and the wall and CPU spread over runs\n"
             "             (median of min(--runs, 3) runs; with --out, bart_fps_runs.dat)\n"
             "  frame-overhead   only a kitchen eye-light frame against its bare primary rays\n"
+            "             (max(--runs, 5) interleaved pairs, at most 31: medians and the\n"
+            "             fastest of each)\n"
             "  dynamic-cpu      the dynamic strategies by CPU time and tests (threads=1)\n"
             "             (RT_AUTOMATIC against the fixed strategies, about a third of bart)\n"
             "  all        everything (default); bart only when its data is found\n"
