@@ -1604,10 +1604,11 @@ static int frame_overhead_table(const struct bench_options *opts, const char *di
 {
     const int w = opts->quick ? BART_QUICK_WIDTH : OVERHEAD_WIDTH;
     const int h = opts->quick ? BART_QUICK_HEIGHT : OVERHEAD_HEIGHT;
-    const int reps = opts->quick             ? 1
-                     : opts->runs <= OVERHEAD_REPS ? OVERHEAD_REPS
-                     : opts->runs < OVERHEAD_MAX_REPS ? opts->runs
-                                                      : OVERHEAD_MAX_REPS;
+    int reps = opts->runs > OVERHEAD_REPS ? opts->runs : OVERHEAD_REPS;
+    if (reps > OVERHEAD_MAX_REPS)
+        reps = OVERHEAD_MAX_REPS;
+    if (opts->quick)
+        reps = 1;
     struct bart_ctx c;
     if (ctx_open(&c, dir, &scene_info[KITCHEN], "threads=1", 1))
         return -1;

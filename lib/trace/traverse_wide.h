@@ -686,8 +686,9 @@ static inline __m256i wide8_gather_stored(unsigned pm)
 #if defined(__AVX512VL__) && defined(__AVX512DQ__)
 /*
  * The node's eight child words as byte offsets into the nodes' array
- * (child * 256), shifted while the node test runs (their address does not
- * wait for the mask), so that the front child compressed out of them
+ * (child * 256: bvh4_layout.h asserts a bvh8_node's 256 bytes), shifted
+ * while the node test runs (their address does not wait for the mask),
+ * so that the front child compressed out of them
  * (wide8_front_compress, wide8_push_compress) is the next node's offset
  * itself, one address operand with a row's base, without the shift the
  * child word needed after its compression.  Within 32-bit lanes: exact
