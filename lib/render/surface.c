@@ -985,17 +985,18 @@ SURFACE_INLINE int lod_decide_oct(__m512d x, __m512d top, double relative, doubl
 }
 
 /* lod_fast_quad of eight hits (a block's two quads in one vector, lane i
- * hit i), lane i with its own triangle part's unit normal n, texel map
- * (m0, m1) and bound sin2: each lane its operations in their order, so
- * the same x, the same conditions and the same lambdas as lod_fast_quad
- * on that triangle part.  A lane whose sin2 is NaN fails the bound's
- * test and is not decided. */
-SURFACE_INLINE int lod_fast_oct_lanes(const __m512d n[3], const __m512d m0[3],
-                                      const __m512d m1[3], __m512d sin2, const __m512d d[3],
-                                      const __m512d g[3], __m512d width, __m512d top,
-                                      float lambda[8])
+ * hit i): each lane its operations in their order, so the same x, the
+ * same conditions and the same lambdas. */
+SURFACE_INLINE int lod_fast_oct(const struct surface_lod_fast *f, const double unit[3],
+                                const __m512d d[3], const __m512d g[3], __m512d width,
+                                __m512d top, float lambda[8])
 {
-    __m512d c[3];
+    __m512d n[3], m0[3], m1[3], c[3];
+    for (int k = 0; k < 3; k++) {
+        n[k] = _mm512_set1_pd(unit[k]);
+        m0[k] = _mm512_set1_pd(f->m[0][k]);
+        m1[k] = _mm512_set1_pd(f->m[1][k]);
+    }
     oct_cross(n, d, c);
     const __m512d dd = oct_dot(d, d), s = oct_dot(c, c);
     const __m512d gd = oct_dot(g, d), gg = _mm512_mul_pd(gd, gd);
@@ -1012,28 +1013,14 @@ SURFACE_INLINE int lod_fast_oct_lanes(const __m512d n[3], const __m512d m0[3],
     const __m512d tiny = _mm512_set1_pd(0x1p-500), huge = _mm512_set1_pd(0x1p500);
     __mmask8 ok = _mm512_cmp_pd_mask(dd, _mm512_set1_pd(0.25), _CMP_GE_OQ) &
                   _mm512_cmp_pd_mask(dd, _mm512_set1_pd(4.0), _CMP_LE_OQ);
-    ok &= _mm512_cmp_pd_mask(_mm512_mul_pd(s, gg), _mm512_mul_pd(sin2, _mm512_mul_pd(dd, dd)),
+    ok &= _mm512_cmp_pd_mask(_mm512_mul_pd(s, gg),
+                             _mm512_mul_pd(_mm512_set1_pd(f->sin2), _mm512_mul_pd(dd, dd)),
                              _CMP_GE_OQ);
     ok &= _mm512_cmp_pd_mask(ww, _mm512_set1_pd(0x1p-200), _CMP_GE_OQ) &
           _mm512_cmp_pd_mask(ww, _mm512_set1_pd(0x1p200), _CMP_LE_OQ);
     ok &= _mm512_cmp_pd_mask(p, tiny, _CMP_GE_OQ) & _mm512_cmp_pd_mask(p, huge, _CMP_LE_OQ);
     ok &= _mm512_cmp_pd_mask(q, tiny, _CMP_GE_OQ) & _mm512_cmp_pd_mask(q, huge, _CMP_LE_OQ);
     return ok & lod_decide_oct(x, top, LOD_FAST_RELATIVE, LOD_FAST_ABSOLUTE, lambda);
-}
-
-/* lod_fast_oct_lanes of a block on one triangle part: its unit normal
- * and f's texel map and bound broadcast to every lane. */
-SURFACE_INLINE int lod_fast_oct(const struct surface_lod_fast *f, const double unit[3],
-                                const __m512d d[3], const __m512d g[3], __m512d width,
-                                __m512d top, float lambda[8])
-{
-    __m512d n[3], m0[3], m1[3];
-    for (int k = 0; k < 3; k++) {
-        n[k] = _mm512_set1_pd(unit[k]);
-        m0[k] = _mm512_set1_pd(f->m[0][k]);
-        m1[k] = _mm512_set1_pd(f->m[1][k]);
-    }
-    return lod_fast_oct_lanes(n, m0, m1, _mm512_set1_pd(f->sin2), d, g, width, top, lambda);
 }
 #endif
 
@@ -1974,14 +1961,6 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
     if (tx)
         lanes_zero(tri_st[0][0], 6);
     struct surface_lod tri_lod[TRACE_PACKET];
-    /* Each slot's triangle part's unit normal, texel map and bound
-     * (lod_fast_init, kept in the triangle's cache entry) for
-     * lod_fast's lanes: rows 0-2 n, 3-5 m[0], 6-8 m[1], 9 sin2 (NaN
-     * where the triangle part has no texel map: the lane is then not
-     * decided). */
-    double slot_fast[10][TRACE_PACKET];
-    if (lod)
-        memset(slot_fast, 0, sizeof(slot_fast));
     for (int j = 0; j < count; j++) {
         struct hit_triangle tj = t;
         tj.v = &mesh->indices[3 * prim[j]];
@@ -2003,19 +1982,7 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
             const float *const vst[3] = {&mesh->texcoords[2 * tj.v[0]],
                                          &mesh->texcoords[2 * tj.v[1]],
                                          &mesh->texcoords[2 * tj.v[2]]};
-            const struct surface_lod *l = lod_triangle(c, tx, t.inst, mesh, prim[j], tj.v, vst, NULL);
-            tri_lod[j] = *l;
-            if (!c->fast.state)
-                lod_fast_init(l, &c->fast);
-            slot_fast[9][j] = NAN;
-            if (c->fast.state > 0) {
-                for (int k = 0; k < 3; k++) {
-                    slot_fast[k][j] = l->n[k];
-                    slot_fast[3 + k][j] = c->fast.m[0][k];
-                    slot_fast[6 + k][j] = c->fast.m[1][k];
-                }
-                slot_fast[9][j] = c->fast.sin2;
-            }
+            tri_lod[j] = *lod_triangle(c, tx, t.inst, mesh, prim[j], tj.v, vst, NULL);
         }
     }
     const __m256i slots = _mm256_loadu_si256((const __m256i *)(const void *)slot);
@@ -2073,54 +2040,7 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
         if (lod) {
             const double top = lod_top(tx->level_count);
             const __m256 wv = _mm256_loadu_ps(width);
-            /* lod_fast in every lane from the lane's own triangle part
-             * (surface_fetch_lanes' step, lane by lane: its bound is a
-             * lane's), then lod_quad's chain for a quad it did not
-             * decide whole, which writes that quad's four lambdas
-             * again. */
-            int fast8 = 0;
-#if defined(SURFACE_OCTS)
-            {
-                const __m512i at = _mm512_cvtepi32_epi64(slots);
-#define SLOT(r) _mm512_permutexvar_pd(at, _mm512_loadu_pd(slot_fast[r]))
-                __m512d n[3], m0[3], m1[3], d8[3], g8[3];
-                for (int k = 0; k < 3; k++) {
-                    n[k] = SLOT(k);
-                    m0[k] = SLOT(3 + k);
-                    m1[k] = SLOT(6 + k);
-                    d8[k] = _mm512_cvtps_pd(dv[k]);
-                    g8[k] = _mm512_cvtps_pd(g[k]);
-                }
-                fast8 = lod_fast_oct_lanes(n, m0, m1, SLOT(9), d8, g8, _mm512_cvtps_pd(wv),
-                                           _mm512_set1_pd(top), lambda);
-#undef SLOT
-            }
-#endif
             for (int h = 0; h < TRACE_PACKET / 4; h++) {
-#if !defined(SURFACE_OCTS)
-                {
-                    const __m128i at = _mm_loadu_si128((const __m128i *)(const void *)&slot[4 * h]);
-                    struct lod_fast_broadcast b;
-                    for (int k = 0; k < 3; k++) {
-                        b.n[k] = _mm256_i32gather_pd(slot_fast[k], at, 8);
-                        b.m0[k] = _mm256_i32gather_pd(slot_fast[3 + k], at, 8);
-                        b.m1[k] = _mm256_i32gather_pd(slot_fast[6 + k], at, 8);
-                    }
-                    b.sin2 = _mm256_i32gather_pd(slot_fast[9], at, 8);
-#define HALF(v) _mm256_cvtps_pd(h ? _mm256_extractf128_ps(v, 1) : _mm256_castps256_ps128(v))
-                    __m256d d[3], gd[3];
-                    for (int k = 0; k < 3; k++) {
-                        d[k] = HALF(dv[k]);
-                        gd[k] = HALF(g[k]);
-                    }
-                    fast8 |= lod_fast_quad(&b, d, gd, HALF(wv), _mm256_set1_pd(top),
-                                           &lambda[4 * h])
-                             << 4 * h;
-#undef HALF
-                }
-#endif
-                if ((fast8 >> 4 * h & 15) == 15)
-                    continue;
                 const struct surface_lod *const l4[4] = {
                     &tri_lod[slot[4 * h]], &tri_lod[slot[4 * h + 1]], &tri_lod[slot[4 * h + 2]],
                     &tri_lod[slot[4 * h + 3]]};
