@@ -25,6 +25,11 @@
 #include <immintrin.h>
 #include <stddef.h>
 #define TEXTURE_OCTS 1 /* scene_texture_sample_lod8 */
+#if defined(__AVX512F__) && defined(__AVX512DQ__) && defined(__AVX512VL__)
+/* The AVX-512 copy (render/shade_eye_avx512.c): sample_lod8's double
+ * steps in one 512-bit vector of eight lanes instead of two halves. */
+#define TEXTURE_OCTS_512 1
+#endif
 #endif
 #define TEXTURE_LANES 1
 #else
@@ -628,6 +633,38 @@ static inline int quad_reduce(__m128 x, enum scene_texture_wrap wrap, __m256d *o
     return 1;
 }
 
+#if defined(TEXTURE_OCTS_512)
+/* quad_reduce of eight coordinates in one vector: each lane the same
+ * operations (a non-finite coordinate zeroed by the mask where
+ * quad_reduce ands it with an all-zero compare, +0 either way; the
+ * magnitude's sign cleared; the blend by a mask register). */
+static inline int oct_reduce(__m256 x, enum scene_texture_wrap wrap, __m512d *out)
+{
+    __m512d d = _mm512_cvtps_pd(x);
+    d = _mm512_maskz_mov_pd(_mm512_cmp_pd_mask(_mm512_sub_pd(d, d), _mm512_setzero_pd(),
+                                               _CMP_EQ_OQ),
+                            d);
+    const __m512d magnitude = _mm512_andnot_pd(_mm512_set1_pd(-0.0), d);
+    if (_mm512_cmp_pd_mask(magnitude, _mm512_set1_pd(0x1p31), _CMP_LT_OQ) != 0xff)
+        return 0;
+    if (wrap == SCENE_WRAP_REPEAT) {
+        const __m512d f = _mm512_sub_pd(d, _mm512_floor_pd(d));
+        *out = _mm512_mask_blend_pd(_mm512_cmp_pd_mask(f, _mm512_set1_pd(1.0), _CMP_LT_OQ),
+                                    _mm512_set1_pd(0x1.fffffffffffffp-1), f);
+    } else {
+        *out = _mm512_min_pd(_mm512_max_pd(d, _mm512_set1_pd(-1.0)), _mm512_set1_pd(2.0));
+    }
+    return 1;
+}
+
+/* A block's eight reduced coordinates along one axis, lane i point i. */
+typedef __m512d texture_reduced8;
+#else
+typedef struct {
+    __m256d half[2]; /* points 0-3 and 4-7 */
+} texture_reduced8;
+#endif
+
 /* The level entry's int32 fields as gather indices: the width, the
  * height and the low half of the texel pointer (x86 is little-endian). */
 typedef char texture_level_ints[sizeof(struct scene_texture_level) % sizeof(int) == 0 &&
@@ -649,8 +686,8 @@ typedef char texture_level_ints[sizeof(struct scene_texture_level) % sizeof(int)
  * of 16384^2 texels of 4 bytes, below 2^31 bytes, so one gather fetches
  * a texel of each lane. */
 static inline void bilinear8_offsets(const struct scene_texture *tex, __m256i level,
-                                     const __m256d rs[2], const __m256d rt[2], __m256i off[4],
-                                     __m256 *va, __m256 *vb)
+                                     const texture_reduced8 *rs, const texture_reduced8 *rt,
+                                     __m256i off[4], __m256 *va, __m256 *vb)
 {
     const int *entries = (const int *)tex->levels;
     const __m256i at = _mm256_mullo_epi32(level, _mm256_set1_epi32(LEVEL_INTS));
@@ -665,6 +702,16 @@ static inline void bilinear8_offsets(const struct scene_texture *tex, __m256i le
                                                           sizeof(int)))),
             4),
         _mm256_set1_epi32((int)(uint32_t)(uintptr_t)tex->levels[0].texels));
+#if defined(TEXTURE_OCTS_512)
+    /* The halves' steps below in one vector, each lane's the same. */
+    const __m512d half = _mm512_set1_pd(0.5);
+    const __m512d uc = _mm512_sub_pd(_mm512_mul_pd(*rs, _mm512_cvtepi32_pd(w)), half);
+    const __m512d vc = _mm512_sub_pd(_mm512_mul_pd(*rt, _mm512_cvtepi32_pd(h)), half);
+    const __m512d fi = _mm512_floor_pd(uc), fj = _mm512_floor_pd(vc);
+    *va = _mm512_cvtpd_ps(_mm512_sub_pd(uc, fi));
+    *vb = _mm512_cvtpd_ps(_mm512_sub_pd(vc, fj));
+    const __m256i vi = _mm512_cvttpd_epi32(fi), vj = _mm512_cvttpd_epi32(fj);
+#else
     const __m256d half = _mm256_set1_pd(0.5);
     __m128 a[2], b[2];
     __m128i i[2], j[2];
@@ -673,8 +720,8 @@ static inline void bilinear8_offsets(const struct scene_texture *tex, __m256i le
                                                 : _mm256_castsi256_si128(w));
         const __m256d hd = _mm256_cvtepi32_pd(k ? _mm256_extracti128_si256(h, 1)
                                                 : _mm256_castsi256_si128(h));
-        const __m256d uc = _mm256_sub_pd(_mm256_mul_pd(rs[k], wd), half);
-        const __m256d vc = _mm256_sub_pd(_mm256_mul_pd(rt[k], hd), half);
+        const __m256d uc = _mm256_sub_pd(_mm256_mul_pd(rs->half[k], wd), half);
+        const __m256d vc = _mm256_sub_pd(_mm256_mul_pd(rt->half[k], hd), half);
         const __m256d fi = _mm256_floor_pd(uc), fj = _mm256_floor_pd(vc);
         a[k] = _mm256_cvtpd_ps(_mm256_sub_pd(uc, fi));
         b[k] = _mm256_cvtpd_ps(_mm256_sub_pd(vc, fj));
@@ -684,6 +731,7 @@ static inline void bilinear8_offsets(const struct scene_texture *tex, __m256i le
     *va = _mm256_set_m128(a[1], a[0]);
     *vb = _mm256_set_m128(b[1], b[0]);
     const __m256i vi = _mm256_set_m128i(i[1], i[0]), vj = _mm256_set_m128i(j[1], j[0]);
+#endif
     __m256i i0, i1, j0, j1;
     wrap_pair8(vi, w, tex->wrap_s, &i0, &i1);
     wrap_pair8(vj, h, tex->wrap_t, &j0, &j1);
@@ -732,8 +780,8 @@ static inline void bilinear8_blend(const __m256i x[4], __m256 va, __m256 vb, __m
 }
 
 /* bilinear8_offsets, bilinear8_gather, then bilinear8_blend. */
-static inline void bilinear8(const struct scene_texture *tex, __m256i level, const __m256d rs[2],
-                             const __m256d rt[2], __m256 out[3])
+static inline void bilinear8(const struct scene_texture *tex, __m256i level,
+                             const texture_reduced8 *rs, const texture_reduced8 *rt, __m256 out[3])
 {
     __m256i off[4], x[4];
     __m256 va, vb;
@@ -748,7 +796,7 @@ static inline void bilinear8(const struct scene_texture *tex, __m256i level, con
  * weight f and the mask `two` of the lanes that blend two levels.
  * Returns 0 where sample_lod8 does not take the block. */
 struct lod8_plan {
-    __m256d rs[2], rt[2];
+    texture_reduced8 rs, rt;
     __m256i fine, coarse;
     __m256 f, two;
 };
@@ -759,10 +807,16 @@ static inline int lod8_plan(const struct scene_texture *tex, const float lambda[
     if (tex->min_filter != SCENE_FILTER_LINEAR_MIPMAP_LINEAR ||
         tex->mag_filter != SCENE_FILTER_LINEAR)
         return 0;
+#if defined(TEXTURE_OCTS_512)
+    if (!oct_reduce(_mm256_loadu_ps(s), tex->wrap_s, &p->rs) ||
+        !oct_reduce(_mm256_loadu_ps(t), tex->wrap_t, &p->rt))
+        return 0;
+#else
     for (int k = 0; k < 2; k++)
-        if (!quad_reduce(_mm_loadu_ps(s + 4 * k), tex->wrap_s, &p->rs[k]) ||
-            !quad_reduce(_mm_loadu_ps(t + 4 * k), tex->wrap_t, &p->rt[k]))
+        if (!quad_reduce(_mm_loadu_ps(s + 4 * k), tex->wrap_s, &p->rs.half[k]) ||
+            !quad_reduce(_mm_loadu_ps(t + 4 * k), tex->wrap_t, &p->rt.half[k]))
             return 0;
+#endif
     const __m256 lam = _mm256_loadu_ps(lambda);
     const int q = tex->level_count - 1;
     /* c = 0 for these filters: lambda > 0 minifies (a NaN does not). */
@@ -809,14 +863,14 @@ int scene_texture_sample_lod8(const struct scene_texture *tex, const float lambd
     if (!lod8_plan(tex, lambda, s, t, &p))
         return 0;
     __m256 c0[3], c1[3];
-    bilinear8(tex, p.fine, p.rs, p.rt, c0);
+    bilinear8(tex, p.fine, &p.rs, &p.rt, c0);
     if (!_mm256_movemask_ps(p.two)) {
         /* One level in every lane (magnified, or at the last level). */
         for (int k = 0; k < 3; k++)
             _mm256_storeu_ps(rgb[k], c0[k]);
         return 1;
     }
-    bilinear8(tex, p.coarse, p.rs, p.rt, c1);
+    bilinear8(tex, p.coarse, &p.rs, &p.rt, c1);
     lod8_store(c0, c1, p.f, p.two, rgb);
     return 1;
 }
@@ -840,7 +894,7 @@ int scene_texture_prefetch_lod8(const struct scene_texture *tex, const float lam
     for (int l = 0; l < out->levels; l++) {
         __m256i off[4];
         __m256 va, vb;
-        bilinear8_offsets(tex, l ? p.coarse : p.fine, p.rs, p.rt, off, &va, &vb);
+        bilinear8_offsets(tex, l ? p.coarse : p.fine, &p.rs, &p.rt, off, &va, &vb);
         for (int c = 0; c < 4; c++)
             _mm256_storeu_si256((__m256i *)(void *)out->offset[l][c], off[c]);
         _mm256_storeu_ps(out->a[l], va);
