@@ -766,22 +766,9 @@ static inline void bilinear8_gather(const struct scene_texture *tex, const __m25
 static inline void bilinear8_blend(const __m256i x[4], __m256 va, __m256 vb, __m256 out[3])
 {
     const __m256i byte = _mm256_set1_epi32(0xff);
-#if defined(TEXTURE_OCTS_512)
-    /* b / 255 in float for a byte b is float(b (1 / 255.0)) in double:
-     * the same float for all 256 bytes (checked exhaustively; b is exact
-     * in both and the product rounds twice, but never across a float's
-     * rounding boundary here), so the divider, whose 256-bit vdivps
-     * takes some five cycles a lane group on this core family, is left
-     * for a multiplication in eight double lanes and two conversions. */
-    const __m512d inv255 = _mm512_set1_pd(1.0 / 255.0);
-#define CHANNEL(x, k)                                                                             \
-    _mm512_cvtpd_ps(_mm512_mul_pd(                                                                \
-        _mm512_cvtepi32_pd(_mm256_and_si256(_mm256_srli_epi32(x, 8 * (k)), byte)), inv255))
-#else
     const __m256 d255 = _mm256_set1_ps(255.0f);
 #define CHANNEL(x, k)                                                                             \
     _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_and_si256(_mm256_srli_epi32(x, 8 * (k)), byte)), d255)
-#endif
     for (int k = 0; k < 3; k++) {
         const __m256 c00 = CHANNEL(x[0], k), c10 = CHANNEL(x[1], k);
         const __m256 c01 = CHANNEL(x[2], k), c11 = CHANNEL(x[3], k);
