@@ -165,6 +165,7 @@ static struct surface_cache *triangle_cache(struct surface_cache *c,
         c->normal = 0;
         c->geometry = 0;
         c->tex = NULL;
+        c->block = 0;
     }
     return c;
 }
@@ -2098,11 +2099,22 @@ int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene
     float ng[3];
     if (!triangle_normal(c, &t, ng))
         return 0;
-    const struct scene_material *m = &mesh->materials[mesh->tri_material[h0->prim]];
-    const struct scene_material *call = &t.inst->appearance.material;
+    /* The material's resolution (lanes_material, the colours when they
+     * cannot vary by hit) once per triangle, kept in its cache entry:
+     * the same pointers and floats as resolving them again. */
+    const struct scene_material *m = NULL, *call = NULL;
     const float *emission;
     int lighting;
-    const struct scene_texture *tx = lanes_material(sc, m, call, &emission, &lighting);
+    const struct scene_texture *tx;
+    if (c->block) {
+        emission = c->block_emission;
+        lighting = c->block_lighting;
+        tx = c->block_tex;
+    } else {
+        m = &mesh->materials[mesh->tri_material[h0->prim]];
+        call = &t.inst->appearance.material;
+        tx = lanes_material(sc, m, call, &emission, &lighting);
+    }
     const float *const vst[3] = {
         tx ? &mesh->texcoords[2 * t.v[0]] : NULL, tx ? &mesh->texcoords[2 * t.v[1]] : NULL,
         tx ? &mesh->texcoords[2 * t.v[2]] : NULL};
@@ -2149,13 +2161,30 @@ int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene
     memcpy(out->emission, emission, sizeof(out->emission));
     out->lighting = lighting;
     /* The colours: the material's or a vertex colour that is the same
-     * for the whole triangle once, interpolated vertex colours hit by
-     * hit. */
-    const int vary = color_material_on(&t, hit_unlit(sc, lighting)) &&
-                     !(t.flags & (TRI_INHERIT_COLOR | TRI_FLAT));
+     * for the whole triangle once (kept in the cache entry with the
+     * material's resolution), interpolated vertex colours hit by hit. */
     __m256 amb[3], dif[3];
     int deferred = 0;
-    lanes_colours(sc, &t, hits, vary, 0, m, call, lighting, out, amb, dif);
+    if (c->block) {
+        for (int k = 0; k < 3; k++) {
+            amb[k] = _mm256_set1_ps(c->block_ambient[k]);
+            dif[k] = _mm256_set1_ps(c->block_diffuse[k]);
+        }
+    } else {
+        const int vary = color_material_on(&t, hit_unlit(sc, lighting)) &&
+                         !(t.flags & (TRI_INHERIT_COLOR | TRI_FLAT));
+        lanes_colours(sc, &t, hits, vary, 0, m, call, lighting, out, amb, dif);
+        if (!vary) {
+            for (int k = 0; k < 3; k++) {
+                c->block_ambient[k] = _mm256_cvtss_f32(amb[k]);
+                c->block_diffuse[k] = _mm256_cvtss_f32(dif[k]);
+            }
+            c->block_emission = emission;
+            c->block_lighting = lighting;
+            c->block_tex = tx;
+            c->block = 1;
+        }
+    }
     if (tx) {
         float lane_st[2][TRACE_PACKET];
         for (int k = 0; k < 2; k++)

@@ -66,6 +66,15 @@ struct surface_cache {
      * change while a frame renders. */
     uint32_t named;
     const struct scene_texture *named_tex;
+    /* What the eye light's one-triangle block path (surface_fetch_lanes)
+     * resolves from the triangle's material, instance and flags, none of
+     * which change while a frame renders: set (block 1) when the colours
+     * cannot vary by hit, cleared with the triangle. */
+    int block;
+    int block_lighting;
+    const float *block_emission;
+    const struct scene_texture *block_tex;
+    float block_ambient[3], block_diffuse[3]; /* the lanes' broadcast colours */
 };
 
 /* Surface data at a hit, in world space. */
