@@ -8,6 +8,7 @@
 
 #include <float.h>
 #include <math.h>
+#include <stddef.h>
 #include <string.h>
 
 #include "base/mat4.h"
@@ -2066,6 +2067,13 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
     return 1 + deferred;
 }
 
+/* A hit's instance follows its primitive with no gap between them (read
+ * as one 64-bit word in surface_fetch_lanes). */
+typedef char hit_prim_instance[offsetof(struct trace_scene_hit, instance) ==
+                                       offsetof(struct trace_scene_hit, prim) + sizeof(uint32_t)
+                                   ? 1
+                                   : -1];
+
 /*
  * surface_fetch_lanes (surface.h): fetch_colour_begin of a whole block's
  * TRACE_PACKET hits on one triangle of one instance (three blocks in
@@ -2087,9 +2095,17 @@ int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene
     const struct trace_scene_hit *h0 = hits[0];
     if (!sc->cache)
         return 0;
-    for (int i = 1; i < TRACE_PACKET; i++)
-        if (hits[i]->prim != h0->prim || hits[i]->instance != h0->instance)
+    /* The primitive and instance of each hit as one 64-bit word (two
+     * adjacent uint32 fields, hit_prim_instance): the same test as
+     * comparing both, one compare a hit. */
+    uint64_t key0;
+    memcpy(&key0, &h0->prim, sizeof(key0));
+    for (int i = 1; i < TRACE_PACKET; i++) {
+        uint64_t key;
+        memcpy(&key, &hits[i]->prim, sizeof(key));
+        if (key != key0)
             return fetch_lanes_mixed(sc, hits, dir, width, out, defer);
+    }
     struct hit_triangle t;
     hit_triangle(sc, h0, &t);
     const struct scene_mesh *mesh = t.mesh;
