@@ -588,15 +588,6 @@ SURFACE_INLINE int lod_decide_quad(__m256d x, __m256d top, double relative, doub
     const __m256d inside = _mm256_and_pd(
         _mm256_cmp_pd(x, _mm256_set1_pd(1.0 + relative), _CMP_GT_OQ),
         _mm256_cmp_pd(x, _mm256_mul_pd(top, _mm256_set1_pd(1.0 - relative)), _CMP_LT_OQ));
-    const __m128 below_ps = quad_mask_ps(below), beyond_ps = quad_mask_ps(beyond);
-    if (!_mm256_movemask_pd(inside)) {
-        /* No lane between 1 and the last level: the log2 decides none
-         * (a lane neither below nor beyond is undecided, and every caller
-         * computes an undecided lane's lambda again), so it is left out. */
-        _mm_storeu_ps(lambda, _mm_blendv_ps(_mm_and_ps(beyond_ps, _mm_set1_ps(INFINITY)),
-                                            _mm_set1_ps(-INFINITY), below_ps));
-        return _mm256_movemask_pd(_mm256_or_pd(below, beyond));
-    }
     const __m256d lg = lanes_log2_4(x);
     const __m128 lg_f = _mm256_cvtpd_ps(lg);
     const __m256d margin = _mm256_set1_pd(absolute);
@@ -605,6 +596,7 @@ SURFACE_INLINE int lod_decide_quad(__m256d x, __m256d top, double relative, doub
                    _mm_cmpeq_ps(_mm256_cvtpd_ps(_mm256_add_pd(lg, margin)), lg_f));
     /* Below 1: a magnification; beyond the last level; between: the
      * log2's float where it is decided. */
+    const __m128 below_ps = quad_mask_ps(below), beyond_ps = quad_mask_ps(beyond);
     _mm_storeu_ps(lambda,
                   _mm_blendv_ps(_mm_blendv_ps(lg_f, _mm_set1_ps(INFINITY), beyond_ps),
                                 _mm_set1_ps(-INFINITY), below_ps));
@@ -980,14 +972,6 @@ SURFACE_INLINE int lod_decide_oct(__m512d x, __m512d top, double relative, doubl
     const __mmask8 inside =
         _mm512_cmp_pd_mask(x, _mm512_set1_pd(1.0 + relative), _CMP_GT_OQ) &
         _mm512_cmp_pd_mask(x, _mm512_mul_pd(top, _mm512_set1_pd(1.0 - relative)), _CMP_LT_OQ);
-    if (!inside) {
-        /* As lod_decide_quad: no lane for the log2 to decide. */
-        _mm256_storeu_ps(lambda, _mm256_mask_blend_ps(below,
-                                                      _mm256_maskz_mov_ps(beyond,
-                                                                          _mm256_set1_ps(INFINITY)),
-                                                      _mm256_set1_ps(-INFINITY)));
-        return below | beyond;
-    }
     const __m512d lg = lanes_log2_8(x);
     const __m256 lg_f = _mm512_cvtpd_ps(lg);
     const __m512d margin = _mm512_set1_pd(absolute);
