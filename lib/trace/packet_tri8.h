@@ -470,4 +470,64 @@ static inline unsigned tri8_pair_filter(const struct tri8_rays *r, const float *
     return (unsigned)_mm256_movemask_ps(_mm256_or_ps(keep, on_edge));
 }
 
+#if defined(__AVX512F__) && defined(__AVX512DQ__)
+/*
+ * tri8_pair_filter for four rays in the sixteen lanes of a 512-bit
+ * register (AVX-512): lane 4 j + l is triangle l of the packet whose rows
+ * vk gives against ray at[4 j] (at: the rays' lanes of the eight-ray test,
+ * each repeated four times).  Every lane does tri8_pair_filter's (so
+ * tri8_test's) float operations up to the first exit, in the same order
+ * on the same operands (-ffp-contract=off), so its bit is the one
+ * tri8_test's first exit takes for that triangle and ray.  Returns bit
+ * 4 j + l set when triangle l keeps or defers ray j.  One call covers
+ * four rays where tri8_pair_filter covers two, and about the
+ * instructions of one tri8_test's first exit (one triangle against the
+ * eight rays).
+ */
+static inline unsigned tri16_quad_filter(const struct tri8_rays *r, const float *const vk[3],
+                                         __m512i at)
+{
+    const __m512 ox = _mm512_permutexvar_ps(at, _mm512_castps256_ps512(r->org_x));
+    const __m512 oy = _mm512_permutexvar_ps(at, _mm512_castps256_ps512(r->org_y));
+    const __m512 oz = _mm512_permutexvar_ps(at, _mm512_castps256_ps512(r->org_z));
+    const __m512 sx = _mm512_permutexvar_ps(at, _mm512_castps256_ps512(r->sx));
+    const __m512 sy = _mm512_permutexvar_ps(at, _mm512_castps256_ps512(r->sy));
+    /* Vertex v's coordinate k of the four triangles, in all four
+     * quarters. */
+#define TRI16_ROW4(k, v) _mm512_broadcast_f32x4(_mm_loadu_ps(&vk[k][12 * (v)]))
+    const __m512 ax = _mm512_sub_ps(TRI16_ROW4(0, 0), ox);
+    const __m512 ay = _mm512_sub_ps(TRI16_ROW4(1, 0), oy);
+    const __m512 az = _mm512_sub_ps(TRI16_ROW4(2, 0), oz);
+    const __m512 bx = _mm512_sub_ps(TRI16_ROW4(0, 1), ox);
+    const __m512 by = _mm512_sub_ps(TRI16_ROW4(1, 1), oy);
+    const __m512 bz = _mm512_sub_ps(TRI16_ROW4(2, 1), oz);
+    const __m512 cx = _mm512_sub_ps(TRI16_ROW4(0, 2), ox);
+    const __m512 cy = _mm512_sub_ps(TRI16_ROW4(1, 2), oy);
+    const __m512 cz = _mm512_sub_ps(TRI16_ROW4(2, 2), oz);
+#undef TRI16_ROW4
+    /* tri8_shear's operations. */
+    const __m512 Ax = _mm512_add_ps(ax, _mm512_mul_ps(sx, az));
+    const __m512 Ay = _mm512_add_ps(ay, _mm512_mul_ps(sy, az));
+    const __m512 Bx = _mm512_add_ps(bx, _mm512_mul_ps(sx, bz));
+    const __m512 By = _mm512_add_ps(by, _mm512_mul_ps(sy, bz));
+    const __m512 Cx = _mm512_add_ps(cx, _mm512_mul_ps(sx, cz));
+    const __m512 Cy = _mm512_add_ps(cy, _mm512_mul_ps(sy, cz));
+    const __m512 U = _mm512_sub_ps(_mm512_mul_ps(Cx, By), _mm512_mul_ps(Cy, Bx));
+    const __m512 V = _mm512_sub_ps(_mm512_mul_ps(Ax, Cy), _mm512_mul_ps(Ay, Cx));
+    const __m512 W = _mm512_sub_ps(_mm512_mul_ps(Bx, Ay), _mm512_mul_ps(By, Ax));
+    /* tri8_on_edge, and the sign and determinant test: "mixed" is the
+     * sign bit of (U ^ V) | (U ^ W), |det| < inf as in tri8_test. */
+    const __m512 zero = _mm512_setzero_ps();
+    const __mmask16 on_edge = (__mmask16)(_mm512_cmp_ps_mask(U, zero, _CMP_EQ_OQ) |
+                                          _mm512_cmp_ps_mask(V, zero, _CMP_EQ_OQ) |
+                                          _mm512_cmp_ps_mask(W, zero, _CMP_EQ_OQ));
+    const __mmask16 mixed = _mm512_movepi32_mask(
+        _mm512_castps_si512(_mm512_or_ps(_mm512_xor_ps(U, V), _mm512_xor_ps(U, W))));
+    const __m512 det = _mm512_add_ps(_mm512_add_ps(U, V), W);
+    const __mmask16 finite = _mm512_cmp_ps_mask(
+        _mm512_andnot_ps(_mm512_set1_ps(-0.0f), det), _mm512_set1_ps(INFINITY), _CMP_LT_OQ);
+    return (unsigned)(((unsigned)finite & ~(unsigned)mixed) | (unsigned)on_edge) & 0xffffu;
+}
+#endif
+
 #endif
