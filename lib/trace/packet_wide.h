@@ -578,6 +578,14 @@ static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_pa
      * bounds are loose around them (measured, docs/performance-log.md,
      * pk16: at most four rays, 56-98 % of the triangles passed the box
      * test; eight rays of a kitchen camera packet, 22 %). */
+#if defined(__AVX512F__) && defined(__AVX512DQ__) && defined(__AVX512VL__)
+    /* AVX-512: the first exits by four rays a call (tri16_quad_filter)
+     * for every leaf, after the triangles' boxes where the beam copy
+     * applies. */
+    if (beam && count > PACKET_BEAM_MIN && (unsigned)__builtin_popcount(rays) > PACKET_PAIR_MAX)
+        return packet_leaf8_body(p, packets, first, count, rays, any_hit, 1, 1, limit_hi);
+    return packet_leaf8_body(p, packets, first, count, rays, any_hit, 1, 0, limit_hi);
+#endif
     if ((unsigned)__builtin_popcount(rays) <= PACKET_PAIR_MAX)
         return packet_leaf8_body(p, packets, first, count, rays, any_hit, 1, 0, limit_hi);
     if (beam && count > PACKET_BEAM_MIN)
