@@ -424,25 +424,6 @@ static inline unsigned packet_leaf8_body(struct packet_state *p,
         }
         if (pair) {
             unsigned pass = 0;
-#if defined(__AVX512F__) && defined(__AVX512DQ__) && defined(__AVX512VL__)
-            /* Four rays a call (tri16_quad_filter): the rays' lanes
-             * packed by compression, each repeated over four lanes; a
-             * quarter past the last ray is masked off. */
-            const unsigned nr = (unsigned)__builtin_popcount(rays);
-            const __m512i ids = _mm512_castsi256_si512(_mm256_maskz_compress_epi32(
-                (__mmask8)rays, _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7)));
-            const __m512i quarter = _mm512_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3,
-                                                      3, 3);
-            for (unsigned j4 = 0; j4 < nr; j4 += 4) {
-                const __m512i at = _mm512_permutexvar_epi32(
-                    _mm512_add_epi32(quarter, _mm512_set1_epi32((int)j4)), ids);
-                unsigned f = tri16_quad_filter(&p->t8, vk, at);
-                if (nr - j4 < 4)
-                    f &= (1u << (4u * (nr - j4))) - 1u;
-                pass |= f | f >> 8;
-            }
-            pass |= pass >> 4;
-#else
             for (unsigned m = rays; m;) {
                 const unsigned a = (unsigned)__builtin_ctz(m);
                 m &= m - 1u;
@@ -450,9 +431,7 @@ static inline unsigned packet_leaf8_body(struct packet_state *p,
                 m &= m - 1u;
                 pass |= tri8_pair_filter(&p->t8, vk, a, b);
             }
-            pass |= pass >> 4;
-#endif
-            tris &= pass;
+            tris &= (pass | pass >> 4);
         }
         for (uint32_t l = 0; l < n && (!any_hit || rays); l++) {
             if (pair || beam) {
@@ -578,14 +557,6 @@ static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_pa
      * bounds are loose around them (measured, docs/performance-log.md,
      * pk16: at most four rays, 56-98 % of the triangles passed the box
      * test; eight rays of a kitchen camera packet, 22 %). */
-#if defined(__AVX512F__) && defined(__AVX512DQ__) && defined(__AVX512VL__)
-    /* AVX-512: the first exits by four rays a call (tri16_quad_filter)
-     * for every leaf, after the triangles' boxes where the beam copy
-     * applies. */
-    if (beam && count > PACKET_BEAM_MIN && (unsigned)__builtin_popcount(rays) > PACKET_PAIR_MAX)
-        return packet_leaf8_body(p, packets, first, count, rays, any_hit, 1, 1, limit_hi);
-    return packet_leaf8_body(p, packets, first, count, rays, any_hit, 1, 0, limit_hi);
-#endif
     if ((unsigned)__builtin_popcount(rays) <= PACKET_PAIR_MAX)
         return packet_leaf8_body(p, packets, first, count, rays, any_hit, 1, 0, limit_hi);
     if (beam && count > PACKET_BEAM_MIN)
