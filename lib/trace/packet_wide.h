@@ -947,31 +947,6 @@ static unsigned packet_ia_leaf_rays(struct packet_state *p, const struct tri4_pa
     return done;
 }
 
-/* The interval walk's step for one ray left at inner node cur: its
- * single walk (walk_wide8) from there, out of line as the per-ray leaf
- * (packet_ia_leaf_rays).  Returns `rays` if the ray found an any-hit
- * hit. */
-#if defined(__GNUC__)
-__attribute__((noinline))
-#endif
-static unsigned packet_ia_one(const struct bvh4 *wide, struct packet_state *p, uint32_t cur,
-                              uint32_t cur_count, unsigned rays)
-{
-    const unsigned r = (unsigned)__builtin_ctz(rays);
-    unsigned done = 0;
-    packet_ready(p, r);
-    if (p->dirty >> r & 1u)
-        packet_flush(p, r);
-    if (!(p->r4_ready >> r & 1u)) {
-        tri4_ray_init(&p->s[r].r4, p->s[r].ray);
-        p->r4_ready |= 1u << r;
-    }
-    if (walk_wide8(wide, &p->s[r], cur, cur_count))
-        done = rays;
-    packet_sync(p, r);
-    return done;
-}
-
 /*
  * The packet walk of the 8-wide layout by interval tests (Wald, Boulos
  * and Shirley 2007 sec. 4.2; Embree's coherent packet traversal does the
@@ -1051,7 +1026,17 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
              * and its stack holds only its own entries.  A leaf with one
              * ray stays with the per-ray leaf below (the single walk's
              * set-up costs more there: bumpy, 2 rays per leaf). */
-            done |= packet_ia_one(wide, p, cur, cur_count, rays);
+            const unsigned r = (unsigned)__builtin_ctz(rays);
+            packet_ready(p, r);
+            if (p->dirty >> r & 1u)
+                packet_flush(p, r);
+            if (!(p->r4_ready >> r & 1u)) {
+                tri4_ray_init(&p->s[r].r4, p->s[r].ray);
+                p->r4_ready |= 1u << r;
+            }
+            if (walk_wide8(wide, &p->s[r], cur, cur_count))
+                done |= rays;
+            packet_sync(p, r);
             if (!any_hit) {
                 bl = _mm256_loadu_ps(p->box_limit);
                 limit_hi = _mm256_set1_ps(packet_hmax(bl));
