@@ -534,30 +534,6 @@ static inline unsigned packet_leaf8_body(struct packet_state *p,
     return done;
 }
 
-/* The box-tested copy of packet_leaf8_body (beam) for closest-hit and
- * any-hit packets, out of line: taken only at leaves of more than
- * PACKET_BEAM_MIN triangles met by more than PACKET_PAIR_MAX rays, so
- * that the walk's loop holds two copies of the leaf instead of three. */
-#if defined(__GNUC__)
-__attribute__((noinline))
-#endif
-static unsigned packet_leaf8_beam_closest(struct packet_state *p,
-                                          const struct tri4_packet *packets, uint32_t first,
-                                          uint32_t count, unsigned rays, __m256 limit_hi)
-{
-    return packet_leaf8_body(p, packets, first, count, rays, 0, 0, 1, limit_hi);
-}
-
-#if defined(__GNUC__)
-__attribute__((noinline))
-#endif
-static unsigned packet_leaf8_beam_any(struct packet_state *p, const struct tri4_packet *packets,
-                                      uint32_t first, uint32_t count, unsigned rays,
-                                      __m256 limit_hi)
-{
-    return packet_leaf8_body(p, packets, first, count, rays, 1, 0, 1, limit_hi);
-}
-
 /* packet_leaf8_body for `rays`: with few rays, their triangles' first
  * exits by pairs of rays first (tri8_pair_filter), and tri8_test only for
  * the triangles one of them passes (the others tri8_test would leave at
@@ -584,8 +560,7 @@ static inline unsigned packet_leaf8(struct packet_state *p, const struct tri4_pa
     if ((unsigned)__builtin_popcount(rays) <= PACKET_PAIR_MAX)
         return packet_leaf8_body(p, packets, first, count, rays, any_hit, 1, 0, limit_hi);
     if (beam && count > PACKET_BEAM_MIN)
-        return any_hit ? packet_leaf8_beam_any(p, packets, first, count, rays, limit_hi)
-                       : packet_leaf8_beam_closest(p, packets, first, count, rays, limit_hi);
+        return packet_leaf8_body(p, packets, first, count, rays, any_hit, 0, 1, limit_hi);
     return packet_leaf8_body(p, packets, first, count, rays, any_hit, 0, 0, limit_hi);
 }
 #endif
