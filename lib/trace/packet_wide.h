@@ -918,34 +918,6 @@ static inline int packet_ia_init(struct packet_state *p, unsigned active,
     return 1;
 }
 
-/* A closest-hit packet's leaf for the rays outside the eight-ray test
- * (another kx, ky, kz than the first ray's, packet_run's lanes8), ray by
- * ray with wide_leaf: rare (a packet's rays mostly share the first
- * ray's), so out of line, which leaves the walk's loop fewer values
- * live across its leaf step.  Returns the rays wide_leaf returns. */
-#if defined(__GNUC__)
-__attribute__((noinline))
-#endif
-static unsigned packet_ia_leaf_rays(struct packet_state *p, const struct tri4_packet *packets,
-                                    uint32_t cur, uint32_t cur_count, unsigned single)
-{
-    unsigned done = 0;
-    for (unsigned m = single; m; m &= m - 1u) {
-        const unsigned r = (unsigned)__builtin_ctz(m);
-        packet_ready(p, r);
-        if (p->dirty >> r & 1u)
-            packet_flush(p, r);
-        if (!(p->r4_ready >> r & 1u)) {
-            tri4_ray_init(&p->s[r].r4, p->s[r].ray);
-            p->r4_ready |= 1u << r;
-        }
-        if (wide_leaf(&p->s[r], packets, cur, cur_count))
-            done |= 1u << r;
-        packet_sync(p, r);
-    }
-    return done;
-}
-
 /*
  * The packet walk of the 8-wide layout by interval tests (Wald, Boulos
  * and Shirley 2007 sec. 4.2; Embree's coherent packet traversal does the
@@ -1055,23 +1027,18 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
                 done |= packet_leaf8(p, wide->packets, cur, cur_count, r8, any_hit, 1, limit_hi);
                 single &= ~r8;
             }
-            if (!any_hit) {
-                if (single)
-                    done |= packet_ia_leaf_rays(p, wide->packets, cur, cur_count, single);
-            } else {
-                for (unsigned m = single; m; m &= m - 1u) {
-                    const unsigned r = (unsigned)__builtin_ctz(m);
-                    packet_ready(p, r);
-                    if (p->dirty >> r & 1u)
-                        packet_flush(p, r);
-                    if (!(p->r4_ready >> r & 1u)) {
-                        tri4_ray_init(&p->s[r].r4, p->s[r].ray);
-                        p->r4_ready |= 1u << r;
-                    }
-                    if (wide_leaf(&p->s[r], wide->packets, cur, cur_count))
-                        done |= 1u << r;
-                    packet_sync(p, r);
+            for (unsigned m = single; m; m &= m - 1u) {
+                const unsigned r = (unsigned)__builtin_ctz(m);
+                packet_ready(p, r);
+                if (p->dirty >> r & 1u)
+                    packet_flush(p, r);
+                if (!(p->r4_ready >> r & 1u)) {
+                    tri4_ray_init(&p->s[r].r4, p->s[r].ray);
+                    p->r4_ready |= 1u << r;
                 }
+                if (wide_leaf(&p->s[r], wide->packets, cur, cur_count))
+                    done |= 1u << r;
+                packet_sync(p, r);
             }
             if (!any_hit) {
                 /* An any-hit ray's box_limit never shrinks: it ends at
