@@ -225,7 +225,7 @@ static inline __m128 tri4_max_abs(__m128 a, __m128 b)
 /* Defined with tri4_before_tmin_lanes below, whose proof it carries. */
 static inline unsigned tri4_before_tmin_vectors(const struct tri4_ray *r, __m128 sc, __m128 U,
                                                 __m128 V, __m128 W, __m128 det, __m128 Az,
-                                                __m128 Bz, __m128 Cz, int scalar, int kmask);
+                                                __m128 Bz, __m128 Cz, int scalar);
 
 /*
  * The lanes of p (among `valid`, bit l for lane l) that isect_triangle
@@ -377,27 +377,9 @@ static inline unsigned tri4_filter_lanes_depth(const struct tri4_ray *r,
          * order; with a NaN coordinate det is NaN and check 1 fails
          * whatever S is (tri4_before_tmin_lanes' comment). */
         const __m128 tmin = TRI4_CONST(r, tmin, k_tmin, scalar);
-#if defined(__AVX512VL__) && defined(__AVX512DQ__)
-        /* AVX-512: this block's compares into mask registers (the same
-         * predicates on the same floats: _mm_cmplt_ps is _CMP_LT_OS), so
-         * that t_lo, t_hi and the proof's vectors, which GCC keeps in
-         * xmm16-31 here, are compared where they are instead of being
-         * copied into xmm0-15 for a VEX compare.  Only here: the sign
-         * and depth tests above, taken by every call, keep their VEX
-         * compares, which issue on two ports where a compare into a mask
-         * register issues on one (port 5; round 47's an2 found the
-         * filter wholly in mask registers level to slower on the
-         * clock). */
-        const unsigned near =
-            _cvtmask8_u32(_mm_cmp_ps_mask(t_lo, tmin, _CMP_LT_OS)) & mask;
-        if (near) {
-            const unsigned behind =
-                _cvtmask8_u32(_mm_cmp_ps_mask(t_hi, tmin, _CMP_LT_OS)) & near;
-#else
         const unsigned near = (unsigned)_mm_movemask_ps(_mm_cmplt_ps(t_lo, tmin)) & mask;
         if (near) {
             const unsigned behind = (unsigned)_mm_movemask_ps(_mm_cmplt_ps(t_hi, tmin)) & near;
-#endif
             mask &= ~behind;
             if (near & ~behind) {
 #if defined(__AVX512VL__) && defined(__AVX512DQ__)
@@ -421,8 +403,8 @@ static inline unsigned tri4_filter_lanes_depth(const struct tri4_ray *r,
                                               _mm_andnot_ps(sign, cz));
                 const __m128 sc = _mm_max_ps(_mm_max_ps(sa, sb), scc);
 #endif
-                mask &= ~(tri4_before_tmin_vectors(r, sc, U, V, W, det, Az, Bz, Cz, scalar, 1) &
-                          near & ~behind);
+                mask &= ~(tri4_before_tmin_vectors(r, sc, U, V, W, det, Az, Bz, Cz, scalar) & near &
+                          ~behind);
             }
             if (!mask)
                 return 0;
@@ -987,7 +969,7 @@ __attribute__((always_inline))
 #endif
 static inline unsigned tri4_before_tmin_vectors(const struct tri4_ray *r, __m128 sc, __m128 U,
                                                 __m128 V, __m128 W, __m128 det, __m128 Az,
-                                                __m128 Bz, __m128 Cz, int scalar, int kmask)
+                                                __m128 Bz, __m128 Cz, int scalar)
 {
     /* The checks' constants as 16-byte rows in memory, read through a
      * pointer GCC cannot see into (the empty asm), so that each becomes
@@ -1033,33 +1015,6 @@ static inline unsigned tri4_before_tmin_vectors(const struct tri4_ray *r, __m128
                                                  _mm_mul_ps(TRI4_NEAR_K(K_2M20), abs_det)));
     const __m128 rhs = _mm_mul_ps(TRI4_CONST(r, tmin, k_tmin, scalar),
                                   _mm_mul_ps(TRI4_NEAR_K(K_7_8), abs_det));
-#if defined(__AVX512VL__) && defined(__AVX512DQ__)
-    if (kmask) {
-        /* kmask (the any-hit filter's own refusal, AVX-512): the same
-         * seven comparisons (the predicates of the vector form below:
-         * _mm_cmplt_ps is _CMP_LT_OS, _mm_cmpge_ps _CMP_GE_OS,
-         * _mm_cmple_ps _CMP_LE_OS) into mask registers, computed
-         * independently and folded by kandb as a tree: a chain of
-         * masked compares would put each compare's latency on the way
-         * to the verdict (round 47, an2). */
-        const __mmask8 c2 = _mm_cmp_ps_mask(_mm_add_ps(sT, err), rhs, _CMP_LT_OS);
-        const __mmask8 c1 =
-            _mm_cmp_ps_mask(abs_det, _mm_mul_ps(TRI4_NEAR_K(K_2M13), s2), _CMP_GE_OS);
-        const __mmask8 s_lo = _mm_cmp_ps_mask(sc, TRI4_NEAR_K(K_2M20), _CMP_GE_OS);
-        const __mmask8 s_hi = _mm_cmp_ps_mask(sc, TRI4_NEAR_K(K_2P20), _CMP_LE_OS);
-        const __mmask8 z_lo = _mm_cmp_ps_mask(zb, TRI4_NEAR_K(K_2M60), _CMP_GE_OS);
-        const __mmask8 z_hi = _mm_cmp_ps_mask(zb, TRI4_NEAR_K(K_2P40), _CMP_LE_OS);
-        const __mmask8 t_ok = _mm_cmp_ps_mask(TRI4_CONST(r, tmin, k_tmin, scalar),
-                                              TRI4_NEAR_K(K_2M100), _CMP_GE_OS);
-        /* A 128-bit compare writes the mask's bits 0-3 and clears the
-         * rest: the 4-bit mask of the vector form's movmskps. */
-        return _cvtmask8_u32(
-            _kand_mask8(_kand_mask8(_kand_mask8(c2, c1), _kand_mask8(s_lo, s_hi)),
-                        _kand_mask8(_kand_mask8(z_lo, z_hi), t_ok)));
-    }
-#else
-    (void)kmask;
-#endif
     __m128 ok = _mm_cmplt_ps(_mm_add_ps(sT, err), rhs);
     /* Check 1. */
     ok = _mm_and_ps(ok, _mm_cmpge_ps(abs_det, _mm_mul_ps(TRI4_NEAR_K(K_2M13), s2)));
@@ -1097,7 +1052,7 @@ static inline unsigned tri4_before_tmin_lanes(const struct tri4_ray *r,
     return tri4_before_tmin_vectors(r, sc, _mm_loadu_ps(lanes->U), _mm_loadu_ps(lanes->V),
                                     _mm_loadu_ps(lanes->W), _mm_loadu_ps(lanes->det),
                                     _mm_loadu_ps(lanes->Az), _mm_loadu_ps(lanes->Bz),
-                                    _mm_loadu_ps(lanes->Cz), scalar, 0) &
+                                    _mm_loadu_ps(lanes->Cz), scalar) &
            lanes_mask;
 }
 
