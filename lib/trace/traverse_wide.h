@@ -755,18 +755,7 @@ static inline void wide8_push_compress(const struct bvh8_node *n, int octant, __
 {
     uint32_t order;
     const __m256i lanes = wide8_order_lanes(n, octant, order_shift, &order);
-#if defined(__AVX512BITALG__) && defined(__BMI2__)
-    /* BITALG (measurement only): the node test's mask as bytes
-     * (vpmovm2b), position p's bit taken from bit 8 lane(p) of their
-     * qword by vpshufbitqmb (control bytes from the order word by pdep):
-     * the same bits as below, one instruction fewer on the chain. */
-    (void)hit;
-    __m128i hb;
-    __asm__("vpmovm2b %1, %0" : "=v"(hb) : "k"(k));
-    const __m128i sel = _mm_cvtsi64_si128((long long)_pdep_u64(order, 0x3838383838383838ull));
-    const __mmask8 km = (__mmask8)_mm_bitshuffle_epi64_mask(hb, sel);
-    const unsigned pm = _cvtmask8_u32(km);
-#elif defined(__AVX512BW__) && defined(__BMI2__)
+#if defined(__AVX512BW__) && defined(__BMI2__)
     /* The hit positions in the octant's order as a byte shuffle: the
      * node test's mask as words (vpmovm2w, which takes the 8-bit mask
      * register as it is: word l all ones where lane l is hit), a byte of
