@@ -749,36 +749,15 @@ static inline void wide8_front_compress(const struct bvh8_node *n, __mmask8 k, s
 __attribute__((always_inline))
 #endif
 static inline void wide8_push_compress(const struct bvh8_node *n, int octant, __m256 hit,
-                                       __mmask8 k, __m256 t0, __m256i order_shift, uint32_t *st_child,
+                                       __m256 t0, __m256i order_shift, uint32_t *st_child,
                                        uint32_t *st_count, float *st_t, uint32_t *sp,
                                        size_t *cur_off, uint32_t *cur_count)
 {
     uint32_t order;
     const __m256i lanes = wide8_order_lanes(n, octant, order_shift, &order);
-#if defined(__AVX512BW__) && defined(__BMI2__)
-    /* The hit positions in the octant's order as a byte shuffle: the
-     * node test's mask as words (vpmovm2w, which takes the 8-bit mask
-     * register as it is: word l all ones where lane l is hit), a byte of
-     * each word taken in the order (vpshufb, byte p from byte 2 lane(p):
-     * the order word's 3-bit fields spread into bits 1-3 of eight bytes
-     * by pdep, which waits for the order word only), their sign bits
-     * back into a mask (vpmovb2m).  The mask's chain to the compression
-     * is vpmovm2w -> vpshufb -> vpmovb2m, a 1-cycle in-lane shuffle where
-     * the dword form took vpermps (3 cycles, across lanes).  The same
-     * bits: position p's bit is lane (order >> 3p) & 7's, the lane
-     * vpermps reads from lanes[p]'s low three bits; the bytes 8-15
-     * (control 0) give bits 8-15, which the eight-lane compression and
-     * the 8-bit mask do not read. */
-    (void)hit;
-    const __m128i sel = _mm_cvtsi64_si128((long long)_pdep_u64(order, 0x0e0e0e0e0e0e0e0eull));
-    const __mmask8 km = (__mmask8)_mm_movepi8_mask(_mm_shuffle_epi8(_mm_movm_epi16(k), sel));
-    const unsigned pm = _cvtmask8_u32(km);
-#else
-    (void)k;
     const __m256 hit_ord = _mm256_permutevar8x32_ps(hit, lanes);
     const unsigned pm = (unsigned)_mm256_movemask_ps(hit_ord);
     const __mmask8 km = _mm256_movepi32_mask(_mm256_castps_si256(hit_ord));
-#endif
     wide8_store_ordered(n, lanes, pm, t0, st_child, st_count, st_t, sp);
     const __m256i child = _mm256_load_si256((const __m256i *)(const void *)n->child);
     const __m256i count =

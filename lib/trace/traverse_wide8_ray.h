@@ -335,11 +335,8 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                         else
 #if defined(__AVX512VL__) && defined(__AVX512DQ__)
                             if (lanes)
-                                wide8_push_compress(n, octant, hit,
-                                                    _kand_mask8(_kand_mask8(k0, k1),
-                                                                _kand_mask8(k2, k3)),
-                                                    t0, order_shift, st_child, st_count, st_t,
-                                                    &sp, &cur_off, &cur_count);
+                                wide8_push_compress(n, octant, hit, t0, order_shift, st_child,
+                                                    st_count, st_t, &sp, &cur_off, &cur_count);
                             else
 #endif
                             wide8_push(n, octant, hit, t0, order_shift, st_child, st_count, st_t,
