@@ -286,6 +286,11 @@ double bench_run_parallel(bench_kernel_fn kernel, void *ctx, const struct bench_
  * is unknown or not runnable here. */
 const struct trace_kernels *bench_kernels(void);
 int bench_select_isa(const char *name);
+/* rtCreateContext(config) with " isa=NAME" after config when --isa chose
+ * a table, so that the API sections (the frame, the BART scenes, the
+ * dynamic and packet API tables) run the table the kernel sections run.
+ * NULL where rtCreateContext gives NULL (or config is too long). */
+RTcontext bench_create_context(const char *config);
 /* "bvh8", "bvh4" (default: the table's widest walk, wide_width) or
  * "binary" (--layout); -1 for another name. */
 int bench_select_layout(const char *name);

@@ -263,7 +263,7 @@ static int ctx_open(struct bart_ctx *c, const char *dir, const struct bart_scene
     c->info = info;
     c->threads = threads;
     snprintf(path, sizeof(path), "%s/%s", dir, info->file);
-    c->ctx = rtCreateContext(config);
+    c->ctx = bench_create_context(config);
     if (!c->ctx || !rtMakeCurrent(c->ctx)) {
         report_progress("rtbench: bart: cannot create a context \"%s\"\n", config);
         ctx_close(c);

@@ -152,7 +152,7 @@ static const char *const soup_paper[] = {"< 1 ms", "2 ms", "8 ms", "34 ms", "0.1
 static double soup_update_ms(struct bench_anim *a, RTenum strategy, int frames, int *ok)
 {
     double ms[SOUP_FRAMES];
-    RTcontext ctx = rtCreateContext(DYN_CONFIG);
+    RTcontext ctx = bench_create_context(DYN_CONFIG);
     if (!ctx || !rtMakeCurrent(ctx)) {
         *ok = 0;
         return 0.0;
@@ -291,7 +291,7 @@ static int toplevel_table(const struct bench_options *opts)
     for (int s = 0; s < INSTANCE_SIZES; s++) {
         int n = opts->quick ? instance_counts[s] / 10 : instance_counts[s];
         report_progress("dynamic: top level, %d instances\n", n);
-        RTcontext ctx = rtCreateContext(DYN_CONFIG);
+        RTcontext ctx = bench_create_context(DYN_CONFIG);
         if (!ctx || !rtMakeCurrent(ctx)) {
             free(top);
             return -1;
@@ -565,7 +565,7 @@ static int run_ours(struct dyn_setup *s, int si, struct dyn_series *out)
     const uint32_t n = s->sample->count;
     RThit *hits = malloc((size_t)n * sizeof(RThit));
     struct bench_hit *mine = malloc((size_t)n * sizeof(struct bench_hit));
-    RTcontext ctx = rtCreateContext(DYN_CONFIG);
+    RTcontext ctx = bench_create_context(DYN_CONFIG);
     int rc = -1;
     if (!hits || !mine || !ctx || !rtMakeCurrent(ctx))
         goto out;
@@ -1070,7 +1070,7 @@ out:
 static double ours_rays_cpu(RTenum strategy, struct bench_anim *a, const struct bench_rays *primary,
                             RThit *hits, uint64_t *hit_count)
 {
-    RTcontext ctx = rtCreateContext(DYN_CPU_CONFIG);
+    RTcontext ctx = bench_create_context(DYN_CPU_CONFIG);
     if (!ctx || !rtMakeCurrent(ctx))
         return -1.0;
     RTuint obj;
@@ -1210,7 +1210,7 @@ static int dynamic_cpu_table(const struct bench_options *opts)
                     continue;
                 report_progress("dynamic-cpu: %s: %s, run %d of %d\n", anims[k].title,
                                 strategies[si].label, run + 1, runs);
-                RTcontext ctx = rtCreateContext(DYN_CPU_CONFIG);
+                RTcontext ctx = bench_create_context(DYN_CPU_CONFIG);
                 if (!ctx || !rtMakeCurrent(ctx)) {
                     bench_anim_release(&a);
                     return -1;

@@ -82,7 +82,7 @@ enum mode { IMMEDIATE_UNCHANGED, OBJECT_UNCHANGED, IMMEDIATE_MOVED, OBJECT_MOVED
  * statistics of the last frame go to *updates / *builds. */
 static double run(struct grid *g, enum mode mode, int frames, RTint *updates, RTint *builds)
 {
-    RTcontext ctx = rtCreateContext("threads=2");
+    RTcontext ctx = bench_create_context("threads=2");
     rtMakeCurrent(ctx);
     rtViewport(0, 0, 64, 64);
     rtVertexPointer(3, RT_FLOAT, 0, g->pos);

@@ -133,7 +133,7 @@ static int open_mode(const char *mode, int rings, float spacing, const RTray *ra
 {
     char config[64];
     snprintf(config, sizeof(config), "threads=1 flatten=%s", mode);
-    r->ctx = rtCreateContext(config);
+    r->ctx = bench_create_context(config);
     r->cpu = malloc((size_t)runs * sizeof(double));
     if (!r->ctx || !r->cpu)
         return -1;

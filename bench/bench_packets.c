@@ -339,7 +339,7 @@ static RTcontext api_context(const struct bench_mesh *mesh, const float *flat, i
 {
     char config[64];
     snprintf(config, sizeof(config), "threads=%d packets=%s", threads, packets ? "on" : "off");
-    RTcontext ctx = rtCreateContext(config);
+    RTcontext ctx = bench_create_context(config);
     if (!ctx || !rtMakeCurrent(ctx))
         return NULL;
     const RTuint object = 1;

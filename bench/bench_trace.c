@@ -72,7 +72,7 @@ static int api_scene_create(struct api_scene *s, const struct bench_mesh *mesh, 
     memset(s, 0, sizeof(*s));
     snprintf(config, sizeof(config), "threads=%d", threads);
     s->threads = threads;
-    s->ctx = rtCreateContext(config);
+    s->ctx = bench_create_context(config);
     if (!s->ctx || !rtMakeCurrent(s->ctx))
         return -1;
     rtGenObjects(1, &s->object);

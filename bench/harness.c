@@ -11,6 +11,7 @@
  * so neither path gets a better scheduler than the other.
  */
 #include <math.h>
+#include <stdio.h>
 #include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
@@ -26,6 +27,8 @@
  * before any section runs (the benchmark is an application, not the
  * library, so a file-scope choice is fine here). */
 static const struct trace_kernels *chosen_kernels;
+/* Its name as the configuration key takes it (isa=), NULL for the best. */
+static const char *chosen_isa;
 
 /* --layout binary: the binary walk even where the table has a wide one. */
 static int binary_layout;
@@ -93,7 +96,21 @@ int bench_select_isa(const char *name)
     if (trace_isa_parse(name, strlen(name), &isa))
         return -1;
     chosen_kernels = trace_kernels_get(isa);
-    return chosen_kernels ? 0 : -1;
+    if (!chosen_kernels)
+        return -1;
+    chosen_isa = name;
+    return 0;
+}
+
+RTcontext bench_create_context(const char *config)
+{
+    if (!chosen_isa)
+        return rtCreateContext(config);
+    char full[256];
+    const int n = snprintf(full, sizeof(full), "%s isa=%s", config, chosen_isa);
+    if (n < 0 || (size_t)n >= sizeof(full))
+        return NULL;
+    return rtCreateContext(full);
 }
 
 int bench_accel_build(struct bench_accel *acc, const struct bench_mesh *mesh,

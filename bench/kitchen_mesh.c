@@ -209,7 +209,7 @@ int bench_kitchen_mesh(const struct bench_options *opts, struct bench_mesh *mesh
     }
     fclose(f);
 
-    RTcontext ctx = rtCreateContext("threads=1");
+    RTcontext ctx = bench_create_context("threads=1");
     if (!ctx || !rtMakeCurrent(ctx)) {
         snprintf(why, why_size, "cannot create a context to load the kitchen");
         if (ctx)

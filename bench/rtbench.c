@@ -110,7 +110,7 @@ static void usage(FILE *f)
             "  --baseline FILE  compare with an earlier results.csv; flag drops beyond\n"
             "             --tolerance PCT (default %.0f) and exit with status 2\n"
             "  --isa NAME  our kernels' ISA table: scalar, sse4, avx2, avx512; default the\n"
-            "             best this CPU runs (API contexts always use their default)\n"
+            "             best this CPU runs (the API contexts too, by their isa= key)\n"
             "  --layout L  our object walk's layout: bvh8 (AVX2, AVX-512), bvh4 (SSE4.2\n"
             "             up), binary (the walk before the collapse); default the\n"
             "             widest the ISA table walks\n"
