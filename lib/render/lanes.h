@@ -21,11 +21,11 @@ static inline __m256 lanes_dot8(const __m256 a[3], const __m256 b[3])
 #endif
 
 #if defined(__AVX2__) && !defined(RT_NO_SIMD)
-/* Bound of lanes_log2_4 on [1, 2^16] (see there), absolute. */
+/* Bound of lanes_log2_4 on [1, 2^32] (see there), absolute. */
 #define LANES_LOG2_BOUND 0x1p-47
 
 /*
- * log2 of four doubles x in [1, 2^16] (positive and normal), for the
+ * log2 of four doubles x in [1, 2^32] (positive and normal), for the
  * levels of detail's footprints: not glibc's log2 (a call a lane, the
  * largest part of the levels of detail's tail), so not its bits, only
  * within LANES_LOG2_BOUND of the exact value, which is all lod_ray_quad
@@ -39,10 +39,11 @@ static inline __m256 lanes_dot8(const __m256 a[3], const __m256 b[3])
  * exact by Sterbenz's lemma), 2^-52 of |z| relative, and the series'
  * other roundings, in all below 0.6 2^-52 of ln m, and the product by
  * 1 / ln 2 (itself rounded), below 0.9 2^-52 together; the sum with e,
- * half an ulp of a result below 16, 2^-50: below 2^-48 in all, a
- * quarter of the bound.  conformance/internal/shade_lanes checks
+ * half an ulp of a result below 32, 2^-49: below 2^-48 in all, half the
+ * bound (2^32 for the squared footprints of lod_fast, whose last level
+ * is below 2^16).  conformance/internal/shade_lanes checks
  * |lanes_log2_4(x) - log2(x)| <= 2^-48 against long double over every
- * 13th float of [1, 2^16] and random doubles there.
+ * 13th float of [1, 2^32] and random doubles there.
  */
 static inline __m256d lanes_log2_4(__m256d x)
 {

@@ -578,17 +578,35 @@ static inline __m128 quad_mask_ps(__m256d m)
  * + relative), and between 1 + relative and top (1 - relative) the float
  * of lanes_log2_4(x) when every value within `absolute` of it rounds to
  * that float.  Writes lambda[i] of every lane and returns the mask of the
- * lanes so decided; the caller ANDs the lanes its bound covers. */
+ * lanes so decided; the caller ANDs the lanes its bound covers.
+ *
+ * With `squared` (a constant at each call), x holds the footprint's
+ * square y and no square root is taken: the tests are against 1 -+ 2
+ * relative and top^2 (1 -+ 2 relative), and the log2 is lanes_log2_4(y)
+ * / 2 (the halving exact).  top is a power of two, so every threshold is
+ * exact; sqrt(y) < sqrt(1 - 2 relative) < 1 - relative, and sqrt(y) >
+ * sqrt(1 + 2 relative) > 1 + relative - relative^2 / 2, likewise for
+ * top: the exact sqrt(y) meets the unsquared tests but for relative^2 /
+ * 2 of 1 or top, 2^-33 of relative for the caller's relative of 2^-32,
+ * which its margin covers (lod_fast's, below).  The log2 is within
+ * 2^-48 of log2(y) for y in [1, 2^32] (lanes_log2_4), so its half within
+ * 2^-49 of log2(sqrt(y)). */
 SURFACE_INLINE int lod_decide_quad(__m256d x, __m256d top, double relative, double absolute,
-                                   float lambda[4])
+                                   int squared, float lambda[4])
 {
+    if (squared) {
+        top = _mm256_mul_pd(top, top);
+        relative *= 2.0;
+    }
     const __m256d below = _mm256_cmp_pd(x, _mm256_set1_pd(1.0 - relative), _CMP_LT_OQ);
     const __m256d beyond =
         _mm256_cmp_pd(x, _mm256_mul_pd(top, _mm256_set1_pd(1.0 + relative)), _CMP_GT_OQ);
     const __m256d inside = _mm256_and_pd(
         _mm256_cmp_pd(x, _mm256_set1_pd(1.0 + relative), _CMP_GT_OQ),
         _mm256_cmp_pd(x, _mm256_mul_pd(top, _mm256_set1_pd(1.0 - relative)), _CMP_LT_OQ));
-    const __m256d lg = lanes_log2_4(x);
+    __m256d lg = lanes_log2_4(x);
+    if (squared)
+        lg = _mm256_mul_pd(lg, _mm256_set1_pd(0.5));
     const __m128 lg_f = _mm256_cvtpd_ps(lg);
     const __m256d margin = _mm256_set1_pd(absolute);
     const __m128 exact =
@@ -701,7 +719,7 @@ SURFACE_INLINE int lod_quad(const struct surface_lod *const l[4], int shared, co
      * its rounding test.  That log2 is lanes_log2_4, not glibc's: lod_near
      * needs log2(xs) within 2^-45 of log2(x) (x = hypot width [/ cosine],
      * what lod_axes takes glibc's log2 of), and lanes_log2_4 is within
-     * 2^-47 of the exact log2(xs) (xs < top <= 2^16: its domain), the
+     * 2^-47 of the exact log2(xs) (xs < top <= 2^16, in its domain), the
      * exact log2(xs) within 2^-48.4 of the exact log2(x) (xs within 2^-49
      * of x, relative), and glibc's log2(x) within 2 ulps, 2^-47, of that:
      * 2^-45.4 in all, so every value within LOD_NEAR_ABSOLUTE (2^-42) of
@@ -734,7 +752,7 @@ SURFACE_INLINE int lod_quad(const struct surface_lod *const l[4], int shared, co
                       _mm256_cmp_pd(s2, _mm256_set1_pd(0x1p960), _CMP_LE_OQ)));
     const int decided =
         _mm256_movemask_pd(usable) &
-        lod_decide_quad(xs, top, LOD_NEAR_RELATIVE, LOD_NEAR_ABSOLUTE, lambda);
+        lod_decide_quad(xs, top, LOD_NEAR_RELATIVE, LOD_NEAR_ABSOLUTE, 0, lambda);
     rest->common = _mm256_movemask_pd(common);
     if (decided != 15) {
         _mm256_storeu_pd(rest->cos, cosine);
@@ -807,10 +825,12 @@ SURFACE_INLINE void lod_quad_lanes(const struct surface_lod *const l[4], int sha
  * and texture_lod's lambda is float(log2(x)) for x its computed max(A,
  * B) (lod_axes takes A or B alone only when it wins by LOD_AXIS_MARGIN,
  * far above the roundings between the squares and the hypots), -inf for
- * x <= 1 and +inf from x >= top on.  Here x' = sqrt(w^2 max(|M d|^2 |d|^2,
- * |M (n x d)|^2 (g . d)^2) / (|n x d|^2 (g . d)^2)): one division and one
- * square root a lane, M once a triangle part (lod_fast_init, kept in the
- * tile's cache beside the triangle part).
+ * x <= 1 and +inf from x >= top on.  Here x' = sqrt(y), y = w^2 max(|M
+ * d|^2 |d|^2, |M (n x d)|^2 (g . d)^2) / (|n x d|^2 (g . d)^2): one
+ * division a lane, M once a triangle part (lod_fast_init, kept in the
+ * tile's cache beside the triangle part), and the square root not taken
+ * (lod_decide_quad's `squared`: y's tests against the squared bounds and
+ * log2(y) / 2; x' below is the exact sqrt(y)).
  *
  * The margin.  Both x' and lod_ray's x are within delta x of the exact
  * value of these expressions (the same inputs: d, g, width and the
@@ -828,15 +848,17 @@ SURFACE_INLINE void lod_quad_lanes(const struct surface_lod *const l[4], int sha
  * across, and its texel vectors some 14 eps K of their own: about 175
  * eps kappa / (sin cos) in all; the cosine's dot loses 5 eps / cos of
  * x.  x' takes some 50 eps kappa / (sin cos) (M's entries, its two
- * products, the cross product, the squares and the quotient).  C = 2^12
+ * products, the cross product, the squares and the quotient; the exact
+ * square root halves the quotient's relative error).  C = 2^12
  * covers these sums 18 times.  A lane is taken only with kappa / (sin
  * cos) <= 64 and 1 / cos <= 64 (so lod_ray is on its common path:
  * along_len > 1e-9, the cosine above LOD_MIN_COSINE), |d|^2 in [1/4, 4]
  * and its squares in the normal range (an underflow's absolute error is
  * then negligible): delta < 2^-41 129 < 2^-33.98, x' within 2^-32.97 of
- * x, and log2(x') within 1.443 2^-32.97 + lanes_log2_4's 2^-47 + glibc's
- * 2 ulps (2^-47) < 2^-32.4 of glibc's log2(x).  So x' beyond 1 or top by
- * LOD_FAST_RELATIVE decides the side, and a log2 whose LOD_FAST_ABSOLUTE
+ * x, and log2(x') within 1.443 2^-32.97 + lanes_log2_4(y) / 2's 2^-49 +
+ * glibc's 2 ulps (2^-47) < 2^-32.4 of glibc's log2(x).  So x' beyond 1 or
+ * top by LOD_FAST_RELATIVE (less 2^-65, lod_decide_quad's squared tests)
+ * decides the side, and a log2 whose LOD_FAST_ABSOLUTE
  * neighbourhood rounds to one float gives lod_ray's float (rounding is
  * monotonic).  Undecided lanes (a footprint near 1 or the last level, a
  * log2 within 2^-32 of a float's rounding boundary, a ray within a few
@@ -926,8 +948,8 @@ SURFACE_INLINE int lod_fast_quad(const struct lod_fast_broadcast *b, const __m25
     const __m256d q = _mm256_add_pd(_mm256_mul_pd(v0, v0), _mm256_mul_pd(v1, v1));
     const __m256d ww = _mm256_mul_pd(width, width);
     const __m256d num = _mm256_max_pd(_mm256_mul_pd(p, dd), _mm256_mul_pd(q, gg));
-    const __m256d x =
-        _mm256_sqrt_pd(_mm256_div_pd(_mm256_mul_pd(ww, num), _mm256_mul_pd(s, gg)));
+    /* x'^2: lod_decide_quad takes the square (no square root). */
+    const __m256d x2 = _mm256_div_pd(_mm256_mul_pd(ww, num), _mm256_mul_pd(s, gg));
     /* The bound's conditions (NaNs fail every one); 1 / cos <= 64 follows
      * from kappa / (sin cos) <= 64 with kappa >= 1 and sin <= 1. */
     const __m256d tiny = _mm256_set1_pd(0x1p-500), huge = _mm256_set1_pd(0x1p500);
@@ -943,7 +965,7 @@ SURFACE_INLINE int lod_fast_quad(const struct lod_fast_broadcast *b, const __m25
     ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(q, tiny, _CMP_GE_OQ),
                                          _mm256_cmp_pd(q, huge, _CMP_LE_OQ)));
     return _mm256_movemask_pd(ok) &
-           lod_decide_quad(x, top, LOD_FAST_RELATIVE, LOD_FAST_ABSOLUTE, lambda);
+           lod_decide_quad(x2, top, LOD_FAST_RELATIVE, LOD_FAST_ABSOLUTE, 1, lambda);
 }
 
 #if defined(SURFACE_OCTS)
@@ -961,18 +983,21 @@ static inline void oct_cross(const __m512d a[3], const __m512d b[3], __m512d out
     out[2] = _mm512_sub_pd(_mm512_mul_pd(a[0], b[1]), _mm512_mul_pd(a[1], b[0]));
 }
 
-/* lod_decide_quad of eight footprints, lanes_log2_8 for lanes_log2_4:
- * the same comparisons, conversions and choices lane by lane. */
+/* lod_decide_quad of eight footprints, squared (its `squared` form
+ * only), lanes_log2_8 for lanes_log2_4: the same comparisons,
+ * conversions and choices lane by lane. */
 SURFACE_INLINE int lod_decide_oct(__m512d x, __m512d top, double relative, double absolute,
                                   float lambda[8])
 {
+    top = _mm512_mul_pd(top, top);
+    relative *= 2.0;
     const __mmask8 below = _mm512_cmp_pd_mask(x, _mm512_set1_pd(1.0 - relative), _CMP_LT_OQ);
     const __mmask8 beyond =
         _mm512_cmp_pd_mask(x, _mm512_mul_pd(top, _mm512_set1_pd(1.0 + relative)), _CMP_GT_OQ);
     const __mmask8 inside =
         _mm512_cmp_pd_mask(x, _mm512_set1_pd(1.0 + relative), _CMP_GT_OQ) &
         _mm512_cmp_pd_mask(x, _mm512_mul_pd(top, _mm512_set1_pd(1.0 - relative)), _CMP_LT_OQ);
-    const __m512d lg = lanes_log2_8(x);
+    const __m512d lg = _mm512_mul_pd(lanes_log2_8(x), _mm512_set1_pd(0.5));
     const __m256 lg_f = _mm512_cvtpd_ps(lg);
     const __m512d margin = _mm512_set1_pd(absolute);
     const __mmask8 exact =
@@ -1010,8 +1035,7 @@ SURFACE_INLINE int lod_fast_oct(const struct surface_lod_fast *f, const double u
     /* vmaxpd's rule (the second operand unless the first is greater) in
      * every encoding without {sae}: Intel SDM, VMAXPD. */
     const __m512d num = _mm512_max_pd(_mm512_mul_pd(p, dd), _mm512_mul_pd(q, gg));
-    const __m512d x =
-        _mm512_sqrt_pd(_mm512_div_pd(_mm512_mul_pd(ww, num), _mm512_mul_pd(s, gg)));
+    const __m512d x2 = _mm512_div_pd(_mm512_mul_pd(ww, num), _mm512_mul_pd(s, gg));
     const __m512d tiny = _mm512_set1_pd(0x1p-500), huge = _mm512_set1_pd(0x1p500);
     __mmask8 ok = _mm512_cmp_pd_mask(dd, _mm512_set1_pd(0.25), _CMP_GE_OQ) &
                   _mm512_cmp_pd_mask(dd, _mm512_set1_pd(4.0), _CMP_LE_OQ);
@@ -1022,7 +1046,7 @@ SURFACE_INLINE int lod_fast_oct(const struct surface_lod_fast *f, const double u
           _mm512_cmp_pd_mask(ww, _mm512_set1_pd(0x1p200), _CMP_LE_OQ);
     ok &= _mm512_cmp_pd_mask(p, tiny, _CMP_GE_OQ) & _mm512_cmp_pd_mask(p, huge, _CMP_LE_OQ);
     ok &= _mm512_cmp_pd_mask(q, tiny, _CMP_GE_OQ) & _mm512_cmp_pd_mask(q, huge, _CMP_LE_OQ);
-    return ok & lod_decide_oct(x, top, LOD_FAST_RELATIVE, LOD_FAST_ABSOLUTE, lambda);
+    return ok & lod_decide_oct(x2, top, LOD_FAST_RELATIVE, LOD_FAST_ABSOLUTE, lambda);
 }
 #endif
 
