@@ -581,32 +581,44 @@ static inline __m128 quad_mask_ps(__m256d m)
  * lanes so decided; the caller ANDs the lanes its bound covers.
  *
  * With `squared` (a constant at each call), x holds the footprint's
- * square y and no square root is taken: the tests are against 1 -+ 2
- * relative and top^2 (1 -+ 2 relative), and the log2 is lanes_log2_4(y)
- * / 2 (the halving exact).  top is a power of two, so every threshold is
- * exact; sqrt(y) < sqrt(1 - 2 relative) < 1 - relative, and sqrt(y) >
- * sqrt(1 + 2 relative) > 1 + relative - relative^2 / 2, likewise for
+ * square y, top the square of lod_top, and no square root is taken: the
+ * tests are against 1 -+ 2 relative and top (1 -+ 2 relative), and the
+ * log2 is lanes_log2_4(y) / 2 (lanes_log2_4_half).  lod_top is a power
+ * of two, so every threshold is exact; sqrt(y) < sqrt(1 - 2 relative) <
+ * 1 - relative, and sqrt(y) > sqrt(1 + 2 relative) > 1 + relative -
+ * relative^2 / 2, likewise for
  * top: the exact sqrt(y) meets the unsquared tests but for relative^2 /
  * 2 of 1 or top, 2^-33 of relative for the caller's relative of 2^-32,
  * which its margin covers (lod_fast's, below).  The log2 is within
  * 2^-48 of log2(y) for y in [1, 2^32] (lanes_log2_4), so its half within
  * 2^-49 of log2(sqrt(y)). */
-SURFACE_INLINE int lod_decide_quad(__m256d x, __m256d top, double relative, double absolute,
-                                   int squared, float lambda[4])
+struct lod_top_bounds {
+    __m256d lo, hi; /* top (1 - relative), top (1 + relative) */
+};
+
+/* top's bounds for lod_decide_quad, once where top is known (squared:
+ * top the square of lod_top, relative doubled). */
+static inline struct lod_top_bounds lod_top_bounds(__m256d top, double relative, int squared)
 {
-    if (squared) {
-        top = _mm256_mul_pd(top, top);
-        relative *= 2.0;
-    }
-    const __m256d below = _mm256_cmp_pd(x, _mm256_set1_pd(1.0 - relative), _CMP_LT_OQ);
-    const __m256d beyond =
-        _mm256_cmp_pd(x, _mm256_mul_pd(top, _mm256_set1_pd(1.0 + relative)), _CMP_GT_OQ);
-    const __m256d inside = _mm256_and_pd(
-        _mm256_cmp_pd(x, _mm256_set1_pd(1.0 + relative), _CMP_GT_OQ),
-        _mm256_cmp_pd(x, _mm256_mul_pd(top, _mm256_set1_pd(1.0 - relative)), _CMP_LT_OQ));
-    __m256d lg = lanes_log2_4(x);
     if (squared)
-        lg = _mm256_mul_pd(lg, _mm256_set1_pd(0.5));
+        relative *= 2.0;
+    struct lod_top_bounds t;
+    t.lo = _mm256_mul_pd(top, _mm256_set1_pd(1.0 - relative));
+    t.hi = _mm256_mul_pd(top, _mm256_set1_pd(1.0 + relative));
+    return t;
+}
+
+SURFACE_INLINE int lod_decide_quad(__m256d x, const struct lod_top_bounds *top, double relative,
+                                   double absolute, int squared, float lambda[4])
+{
+    if (squared)
+        relative *= 2.0;
+    const __m256d below = _mm256_cmp_pd(x, _mm256_set1_pd(1.0 - relative), _CMP_LT_OQ);
+    const __m256d beyond = _mm256_cmp_pd(x, top->hi, _CMP_GT_OQ);
+    const __m256d inside =
+        _mm256_and_pd(_mm256_cmp_pd(x, _mm256_set1_pd(1.0 + relative), _CMP_GT_OQ),
+                      _mm256_cmp_pd(x, top->lo, _CMP_LT_OQ));
+    const __m256d lg = squared ? lanes_log2_4_half(x) : lanes_log2_4(x);
     const __m128 lg_f = _mm256_cvtpd_ps(lg);
     const __m256d margin = _mm256_set1_pd(absolute);
     const __m128 exact =
@@ -750,9 +762,10 @@ SURFACE_INLINE int lod_quad(const struct surface_lod *const l[4], int shared, co
         _mm256_and_pd(common, _mm256_or_pd(major, minor)),
         _mm256_and_pd(_mm256_cmp_pd(s2, _mm256_set1_pd(0x1p-960), _CMP_GE_OQ),
                       _mm256_cmp_pd(s2, _mm256_set1_pd(0x1p960), _CMP_LE_OQ)));
+    const struct lod_top_bounds bounds = lod_top_bounds(top, LOD_NEAR_RELATIVE, 0);
     const int decided =
         _mm256_movemask_pd(usable) &
-        lod_decide_quad(xs, top, LOD_NEAR_RELATIVE, LOD_NEAR_ABSOLUTE, 0, lambda);
+        lod_decide_quad(xs, &bounds, LOD_NEAR_RELATIVE, LOD_NEAR_ABSOLUTE, 0, lambda);
     rest->common = _mm256_movemask_pd(common);
     if (decided != 15) {
         _mm256_storeu_pd(rest->cos, cosine);
@@ -916,11 +929,13 @@ static void lod_fast_init(const struct surface_lod *l, struct surface_lod_fast *
 struct lod_fast_broadcast {
     __m256d n[3], m0[3], m1[3];
     __m256d sin2;
+    struct lod_top_bounds top; /* of the square of the texture's lod_top */
 };
 
 SURFACE_INLINE void lod_fast_quad_lanes(const struct surface_lod_fast *f, const double unit[3],
-                                        struct lod_fast_broadcast *b)
+                                        double top, struct lod_fast_broadcast *b)
 {
+    b->top = lod_top_bounds(_mm256_set1_pd(top * top), LOD_FAST_RELATIVE, 1);
     for (int k = 0; k < 3; k++) {
         b->n[k] = _mm256_set1_pd(unit[k]);
         b->m0[k] = _mm256_set1_pd(f->m[0][k]);
@@ -930,12 +945,11 @@ SURFACE_INLINE void lod_fast_quad_lanes(const struct surface_lod_fast *f, const 
 }
 
 /* lod_quad's lambdas of four hits on b's triangle (d their directions,
- * g their facing normals, width their cones' widths at the hits, top the
- * texture's lod_top) where lod_fast's margin decides them: writes those
- * into lambda and returns their mask. */
+ * g their facing normals, width their cones' widths at the hits; b's
+ * bounds from the texture's lod_top) where lod_fast's margin decides
+ * them: writes those into lambda and returns their mask. */
 SURFACE_INLINE int lod_fast_quad(const struct lod_fast_broadcast *b, const __m256d d[3],
-                                 const __m256d g[3], __m256d width, __m256d top,
-                                 float lambda[4])
+                                 const __m256d g[3], __m256d width, float lambda[4])
 {
     const __m256d *n = b->n, *m0 = b->m0, *m1 = b->m1;
     __m256d c[3];
@@ -965,7 +979,7 @@ SURFACE_INLINE int lod_fast_quad(const struct lod_fast_broadcast *b, const __m25
     ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(q, tiny, _CMP_GE_OQ),
                                          _mm256_cmp_pd(q, huge, _CMP_LE_OQ)));
     return _mm256_movemask_pd(ok) &
-           lod_decide_quad(x2, top, LOD_FAST_RELATIVE, LOD_FAST_ABSOLUTE, 1, lambda);
+           lod_decide_quad(x2, &b->top, LOD_FAST_RELATIVE, LOD_FAST_ABSOLUTE, 1, lambda);
 }
 
 #if defined(SURFACE_OCTS)
@@ -984,12 +998,12 @@ static inline void oct_cross(const __m512d a[3], const __m512d b[3], __m512d out
 }
 
 /* lod_decide_quad of eight footprints, squared (its `squared` form
- * only), lanes_log2_8 for lanes_log2_4: the same comparisons,
- * conversions and choices lane by lane. */
+ * only: top the square of lod_top), lanes_log2_8_half for
+ * lanes_log2_4_half: the same comparisons, conversions and choices lane
+ * by lane. */
 SURFACE_INLINE int lod_decide_oct(__m512d x, __m512d top, double relative, double absolute,
                                   float lambda[8])
 {
-    top = _mm512_mul_pd(top, top);
     relative *= 2.0;
     const __mmask8 below = _mm512_cmp_pd_mask(x, _mm512_set1_pd(1.0 - relative), _CMP_LT_OQ);
     const __mmask8 beyond =
@@ -997,7 +1011,7 @@ SURFACE_INLINE int lod_decide_oct(__m512d x, __m512d top, double relative, doubl
     const __mmask8 inside =
         _mm512_cmp_pd_mask(x, _mm512_set1_pd(1.0 + relative), _CMP_GT_OQ) &
         _mm512_cmp_pd_mask(x, _mm512_mul_pd(top, _mm512_set1_pd(1.0 - relative)), _CMP_LT_OQ);
-    const __m512d lg = _mm512_mul_pd(lanes_log2_8(x), _mm512_set1_pd(0.5));
+    const __m512d lg = lanes_log2_8_half(x);
     const __m256 lg_f = _mm512_cvtpd_ps(lg);
     const __m512d margin = _mm512_set1_pd(absolute);
     const __mmask8 exact =
@@ -1012,11 +1026,11 @@ SURFACE_INLINE int lod_decide_oct(__m512d x, __m512d top, double relative, doubl
 }
 
 /* lod_fast_quad of eight hits (a block's two quads in one vector, lane i
- * hit i): each lane its operations in their order, so the same x, the
+ * hit i): each lane its operations in their order, so the same y, the
  * same conditions and the same lambdas. */
 SURFACE_INLINE int lod_fast_oct(const struct surface_lod_fast *f, const double unit[3],
                                 const __m512d d[3], const __m512d g[3], __m512d width,
-                                __m512d top, float lambda[8])
+                                __m512d top2, float lambda[8])
 {
     __m512d n[3], m0[3], m1[3], c[3];
     for (int k = 0; k < 3; k++) {
@@ -1046,7 +1060,7 @@ SURFACE_INLINE int lod_fast_oct(const struct surface_lod_fast *f, const double u
           _mm512_cmp_pd_mask(ww, _mm512_set1_pd(0x1p200), _CMP_LE_OQ);
     ok &= _mm512_cmp_pd_mask(p, tiny, _CMP_GE_OQ) & _mm512_cmp_pd_mask(p, huge, _CMP_LE_OQ);
     ok &= _mm512_cmp_pd_mask(q, tiny, _CMP_GE_OQ) & _mm512_cmp_pd_mask(q, huge, _CMP_LE_OQ);
-    return ok & lod_decide_oct(x2, top, LOD_FAST_RELATIVE, LOD_FAST_ABSOLUTE, lambda);
+    return ok & lod_decide_oct(x2, top2, LOD_FAST_RELATIVE, LOD_FAST_ABSOLUTE, lambda);
 }
 #endif
 
@@ -2260,7 +2274,7 @@ int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene
                     g8[k] = _mm512_cvtps_pd(g[k]);
                 }
                 fast8 = lod_fast_oct(&c->fast, tri->n, d8, g8, _mm512_cvtps_pd(wv),
-                                     _mm512_set1_pd(top), lambda);
+                                     _mm512_set1_pd(top * top), lambda);
             }
             for (int h = 0; h < TRACE_PACKET / 4; h++) {
                 if ((fast8 >> 4 * h & 15) == 15)
@@ -2289,8 +2303,7 @@ int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene
 #endif
             struct lod_fast_broadcast fast_lanes;
             if (use_fast)
-                lod_fast_quad_lanes(&c->fast, tri->n, &fast_lanes);
-            const __m256d top4 = _mm256_set1_pd(top);
+                lod_fast_quad_lanes(&c->fast, tri->n, top, &fast_lanes);
             for (int h = 0; h < TRACE_PACKET / 4; h++) {
 #define HALF(v) _mm256_cvtps_pd(h ? _mm256_extractf128_ps(v, 1) : _mm256_castps256_ps128(v))
                 __m256d d[3], gd[3];
@@ -2301,7 +2314,7 @@ int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene
                 /* lod_fast_quad where its margin decides all four, else
                  * lod_quad's chain for the quad (the same lambdas). */
                 if (use_fast &&
-                    lod_fast_quad(&fast_lanes, d, gd, HALF(wv), top4, &lambda[4 * h]) == 15)
+                    lod_fast_quad(&fast_lanes, d, gd, HALF(wv), &lambda[4 * h]) == 15)
                     continue;
                 lod_quad_lanes(l4, 1, d, gd, HALF(wv), top, tx->level_count, h, width, lane_g,
                                dir, lambda);
