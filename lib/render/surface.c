@@ -573,25 +573,6 @@ static inline __m128 quad_mask_ps(__m256d m)
         _mm256_castpd_si256(m), _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6))));
 }
 
-/* The levels of detail of four footprints x where they are decided
- * (lod_quad, lod_fast_quad): -inf below 1 - relative, +inf beyond top (1
- * + relative), and between 1 + relative and top (1 - relative) the float
- * of lanes_log2_4(x) when every value within `absolute` of it rounds to
- * that float.  Writes lambda[i] of every lane and returns the mask of the
- * lanes so decided; the caller ANDs the lanes its bound covers.
- *
- * With `squared` (a constant at each call), x holds the footprint's
- * square y, top the square of lod_top, and no square root is taken: the
- * tests are against 1 -+ 2 relative and top (1 -+ 2 relative), and the
- * log2 is lanes_log2_4(y) / 2 (lanes_log2_4_half).  lod_top is a power
- * of two, so every threshold is exact; sqrt(y) < sqrt(1 - 2 relative) <
- * 1 - relative, and sqrt(y) > sqrt(1 + 2 relative) > 1 + relative -
- * relative^2 / 2, likewise for
- * top: the exact sqrt(y) meets the unsquared tests but for relative^2 /
- * 2 of 1 or top, 2^-33 of relative for the caller's relative of 2^-32,
- * which its margin covers (lod_fast's, below).  The log2 is within
- * 2^-48 of log2(y) for y in [1, 2^32] (lanes_log2_4), so its half within
- * 2^-49 of log2(sqrt(y)). */
 struct lod_top_bounds {
     __m256d lo, hi; /* top (1 - relative), top (1 + relative) */
 };
@@ -608,6 +589,27 @@ static inline struct lod_top_bounds lod_top_bounds(__m256d top, double relative,
     return t;
 }
 
+/* The levels of detail of four footprints x where they are decided
+ * (lod_quad, lod_fast_quad): -inf below 1 - relative, +inf beyond top (1
+ * + relative), and between 1 + relative and top (1 - relative) the float
+ * of lanes_log2_4(x) when every value within `absolute` of it rounds to
+ * that float.  Writes lambda[i] of every lane and returns the mask of the
+ * lanes so decided; the caller ANDs the lanes its bound covers.  top's
+ * two bounds come from lod_top_bounds (once a block where the caller
+ * can).
+ *
+ * With `squared` (a constant at each call), x holds the footprint's
+ * square y, the bounds are those of the square of lod_top, and no square
+ * root is taken: the tests are against 1 -+ 2 relative and top^2 (1 -+ 2
+ * relative), and the log2 is lanes_log2_4(y) / 2 (lanes_log2_4_half).
+ * lod_top is a power of two, so every threshold is exact; sqrt(y) <
+ * sqrt(1 - 2 relative) < 1 - relative, and sqrt(y) > sqrt(1 + 2
+ * relative) > 1 + relative - relative^2 / 2, likewise for top: the exact
+ * sqrt(y) meets the unsquared tests but for relative^2 / 2 of 1 or top,
+ * 2^-33 of relative for the caller's relative of 2^-32, which its margin
+ * covers (lod_fast's, below).  The log2 is within
+ * 2^-48 of log2(y) for y in [1, 2^32] (lanes_log2_4), so its half within
+ * 2^-49 of log2(sqrt(y)). */
 SURFACE_INLINE int lod_decide_quad(__m256d x, const struct lod_top_bounds *top, double relative,
                                    double absolute, int squared, float lambda[4])
 {
