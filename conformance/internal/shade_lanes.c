@@ -5,8 +5,11 @@
  *
  * The four-lane log2 of the levels of detail (lanes_log2_4, through
  * shade_log2_quad_avx2_unit) within 2^-48 of log2l over every 13th float
- * of [1, 2^16] and a million random doubles there: a quarter of the
- * bound (LANES_LOG2_BOUND, 2^-47) that lod_ray_quad's argument uses.
+ * of [1, 2^32] (lod_fast takes it of squared footprints) and a million
+ * random doubles there, 2^-48 also where the sum's rounding alone is up to
+ * 2^-49 (results from 16 to 32): half the
+ * bound (LANES_LOG2_BOUND, 2^-47) that lod_ray_quad's argument uses; and
+ * its halved form (lanes_log2_4_half) bit for bit its half there.
  *
  * The eight-lane texture lookup (scene_texture_sample_lod8, through
  * shade_texture_lod8_avx2_unit) against scene_texture_sample_lod, bit
@@ -121,10 +124,10 @@ static int log2_bound(shade_log2_quad_fn log2_quad)
 {
     int failures = 0;
     long double worst = 0.0L;
-    double xs[4], got[4];
+    double xs[4], got[4], half[4];
     int n = 0;
     uint32_t bits = 0x3f800000u; /* 1.0f */
-    const uint32_t end = 0x47800000u; /* 65536.0f */
+    const uint32_t end = 0x4f800000u; /* 2^32 */
     long count = 0;
     for (;;) {
         int done = bits > end;
@@ -134,9 +137,9 @@ static int log2_bound(shade_log2_quad_fn log2_quad)
             xs[n++] = (double)f;
             bits += 13;
         } else if (count < 1000000) {
-            /* A random double of [1, 2^16): 2^e times a random mantissa. */
+            /* A random double of [1, 2^32): 2^e times a random mantissa. */
             const uint64_t m = ((uint64_t)next() << 32 | next()) & 0x000fffffffffffffull;
-            const uint64_t e = 1023u + next() % 16u;
+            const uint64_t e = 1023u + next() % 32u;
             const uint64_t b = e << 52 | m;
             memcpy(&xs[n++], &b, sizeof(double));
             count++;
@@ -145,8 +148,13 @@ static int log2_bound(shade_log2_quad_fn log2_quad)
         if (n == 4 || (done && n > 0)) {
             while (n < 4)
                 xs[n++] = 1.0;
-            log2_quad(xs, got);
+            log2_quad(xs, got, half);
             for (int k = 0; k < 4; k++) {
+                /* The halved form (lod_fast's squared footprints) bit
+                 * for bit the half of the log2. */
+                const double want = got[k] * 0.5;
+                if (memcmp(&half[k], &want, sizeof(double)) != 0)
+                    failures += !CHECKF(0, "log2(%a) / 2: %a, not %a", xs[k], half[k], want);
                 const long double err = fabsl((long double)got[k] - log2l((long double)xs[k]));
                 if (err > worst)
                     worst = err;

@@ -221,8 +221,9 @@ shade_texture_lod8_fn shade_texture_lod8_avx2_unit(void);
  * absent. */
 shade_texture_lod8_fn shade_texture_lod8_steps_avx2_unit(void);
 /* That unit's four-lane log2 of the levels of detail (render/lanes.h,
- * lanes_log2_4), for the test of its bound; NULL where it is absent. */
-typedef void (*shade_log2_quad_fn)(const double x[4], double out[4]);
+ * lanes_log2_4 into out, lanes_log2_4_half into half), for the test of
+ * its bound; NULL where it is absent. */
+typedef void (*shade_log2_quad_fn)(const double x[4], double out[4], double half[4]);
 shade_log2_quad_fn shade_log2_quad_avx2_unit(void);
 /* That unit's levels of detail of four hits on one triangle by the
  * triangle's texel map (surface.c, lod_fast_quad) beside lod_ray's, for

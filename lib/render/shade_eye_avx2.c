@@ -55,9 +55,10 @@ shade_texture_lod8_fn shade_texture_lod8_steps_avx2_unit(void)
     return lod8_steps;
 }
 
-static void log2_quad(const double x[4], double out[4])
+static void log2_quad(const double x[4], double out[4], double half[4])
 {
     _mm256_storeu_pd(out, lanes_log2_4(_mm256_loadu_pd(x)));
+    _mm256_storeu_pd(half, lanes_log2_4_half(_mm256_loadu_pd(x)));
 }
 
 shade_log2_quad_fn shade_log2_quad_avx2_unit(void)
@@ -79,8 +80,8 @@ static int lod_fast_lanes(const struct surface_lod *l, int level_count, const fl
         }
         const __m256d w = _mm256_set_pd(width[3], width[2], width[1], width[0]);
         struct lod_fast_broadcast b;
-        lod_fast_quad_lanes(&f, l->n, &b);
-        mask = lod_fast_quad(&b, d, g, w, _mm256_set1_pd(lod_top(level_count)), fast);
+        lod_fast_quad_lanes(&f, l->n, lod_top(level_count), &b);
+        mask = lod_fast_quad(&b, d, g, w, fast);
     }
     for (int i = 0; i < 4; i++)
         ref[i] = lod_ray(l, level_count, ng[i], dir[i], width[i]);

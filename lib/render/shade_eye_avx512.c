@@ -60,8 +60,8 @@ static int lod_fast_lanes8(const struct surface_lod *l, int level_count, const f
         const __m512d w = _mm512_setr_pd(width[0], width[1], width[2], width[3], width[0],
                                          width[1], width[2], width[3]);
         float lambda[8];
-        const int m8 = lod_fast_oct(&f, l->n, d, g, w, _mm512_set1_pd(lod_top(level_count)),
-                                    lambda);
+        const double top = lod_top(level_count);
+        const int m8 = lod_fast_oct(&f, l->n, d, g, w, _mm512_set1_pd(top * top), lambda);
         mask = m8 & m8 >> 4 & 15;
         for (int i = 0; i < 4; i++) {
             fast[i] = lambda[i];

@@ -573,22 +573,54 @@ static inline __m128 quad_mask_ps(__m256d m)
         _mm256_castpd_si256(m), _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6))));
 }
 
+struct lod_top_bounds {
+    __m256d lo, hi; /* top (1 - relative), top (1 + relative) */
+};
+
+/* top's bounds for lod_decide_quad, once where top is known (squared:
+ * top the square of lod_top, relative doubled). */
+static inline struct lod_top_bounds lod_top_bounds(__m256d top, double relative, int squared)
+{
+    if (squared)
+        relative *= 2.0;
+    struct lod_top_bounds t;
+    t.lo = _mm256_mul_pd(top, _mm256_set1_pd(1.0 - relative));
+    t.hi = _mm256_mul_pd(top, _mm256_set1_pd(1.0 + relative));
+    return t;
+}
+
 /* The levels of detail of four footprints x where they are decided
  * (lod_quad, lod_fast_quad): -inf below 1 - relative, +inf beyond top (1
  * + relative), and between 1 + relative and top (1 - relative) the float
  * of lanes_log2_4(x) when every value within `absolute` of it rounds to
  * that float.  Writes lambda[i] of every lane and returns the mask of the
- * lanes so decided; the caller ANDs the lanes its bound covers. */
-SURFACE_INLINE int lod_decide_quad(__m256d x, __m256d top, double relative, double absolute,
-                                   float lambda[4])
+ * lanes so decided; the caller ANDs the lanes its bound covers.  top's
+ * two bounds come from lod_top_bounds (once a block where the caller
+ * can).
+ *
+ * With `squared` (a constant at each call), x holds the footprint's
+ * square y, the bounds are those of the square of lod_top, and no square
+ * root is taken: the tests are against 1 -+ 2 relative and top^2 (1 -+ 2
+ * relative), and the log2 is lanes_log2_4(y) / 2 (lanes_log2_4_half).
+ * lod_top is a power of two, so every threshold is exact; sqrt(y) <
+ * sqrt(1 - 2 relative) < 1 - relative, and sqrt(y) > sqrt(1 + 2
+ * relative) > 1 + relative - relative^2 / 2, likewise for top: the exact
+ * sqrt(y) meets the unsquared tests but for relative^2 / 2 of 1 or top,
+ * 2^-33 of relative for the caller's relative of 2^-32, which its margin
+ * covers (lod_fast's, below).  The log2 is within
+ * 2^-48 of log2(y) for y in [1, 2^32] (lanes_log2_4), so its half within
+ * 2^-49 of log2(sqrt(y)). */
+SURFACE_INLINE int lod_decide_quad(__m256d x, const struct lod_top_bounds *top, double relative,
+                                   double absolute, int squared, float lambda[4])
 {
+    if (squared)
+        relative *= 2.0;
     const __m256d below = _mm256_cmp_pd(x, _mm256_set1_pd(1.0 - relative), _CMP_LT_OQ);
-    const __m256d beyond =
-        _mm256_cmp_pd(x, _mm256_mul_pd(top, _mm256_set1_pd(1.0 + relative)), _CMP_GT_OQ);
-    const __m256d inside = _mm256_and_pd(
-        _mm256_cmp_pd(x, _mm256_set1_pd(1.0 + relative), _CMP_GT_OQ),
-        _mm256_cmp_pd(x, _mm256_mul_pd(top, _mm256_set1_pd(1.0 - relative)), _CMP_LT_OQ));
-    const __m256d lg = lanes_log2_4(x);
+    const __m256d beyond = _mm256_cmp_pd(x, top->hi, _CMP_GT_OQ);
+    const __m256d inside =
+        _mm256_and_pd(_mm256_cmp_pd(x, _mm256_set1_pd(1.0 + relative), _CMP_GT_OQ),
+                      _mm256_cmp_pd(x, top->lo, _CMP_LT_OQ));
+    const __m256d lg = squared ? lanes_log2_4_half(x) : lanes_log2_4(x);
     const __m128 lg_f = _mm256_cvtpd_ps(lg);
     const __m256d margin = _mm256_set1_pd(absolute);
     const __m128 exact =
@@ -701,7 +733,7 @@ SURFACE_INLINE int lod_quad(const struct surface_lod *const l[4], int shared, co
      * its rounding test.  That log2 is lanes_log2_4, not glibc's: lod_near
      * needs log2(xs) within 2^-45 of log2(x) (x = hypot width [/ cosine],
      * what lod_axes takes glibc's log2 of), and lanes_log2_4 is within
-     * 2^-47 of the exact log2(xs) (xs < top <= 2^16: its domain), the
+     * 2^-47 of the exact log2(xs) (xs < top <= 2^16, in its domain), the
      * exact log2(xs) within 2^-48.4 of the exact log2(x) (xs within 2^-49
      * of x, relative), and glibc's log2(x) within 2 ulps, 2^-47, of that:
      * 2^-45.4 in all, so every value within LOD_NEAR_ABSOLUTE (2^-42) of
@@ -732,9 +764,10 @@ SURFACE_INLINE int lod_quad(const struct surface_lod *const l[4], int shared, co
         _mm256_and_pd(common, _mm256_or_pd(major, minor)),
         _mm256_and_pd(_mm256_cmp_pd(s2, _mm256_set1_pd(0x1p-960), _CMP_GE_OQ),
                       _mm256_cmp_pd(s2, _mm256_set1_pd(0x1p960), _CMP_LE_OQ)));
+    const struct lod_top_bounds bounds = lod_top_bounds(top, LOD_NEAR_RELATIVE, 0);
     const int decided =
         _mm256_movemask_pd(usable) &
-        lod_decide_quad(xs, top, LOD_NEAR_RELATIVE, LOD_NEAR_ABSOLUTE, lambda);
+        lod_decide_quad(xs, &bounds, LOD_NEAR_RELATIVE, LOD_NEAR_ABSOLUTE, 0, lambda);
     rest->common = _mm256_movemask_pd(common);
     if (decided != 15) {
         _mm256_storeu_pd(rest->cos, cosine);
@@ -807,10 +840,12 @@ SURFACE_INLINE void lod_quad_lanes(const struct surface_lod *const l[4], int sha
  * and texture_lod's lambda is float(log2(x)) for x its computed max(A,
  * B) (lod_axes takes A or B alone only when it wins by LOD_AXIS_MARGIN,
  * far above the roundings between the squares and the hypots), -inf for
- * x <= 1 and +inf from x >= top on.  Here x' = sqrt(w^2 max(|M d|^2 |d|^2,
- * |M (n x d)|^2 (g . d)^2) / (|n x d|^2 (g . d)^2)): one division and one
- * square root a lane, M once a triangle part (lod_fast_init, kept in the
- * tile's cache beside the triangle part).
+ * x <= 1 and +inf from x >= top on.  Here x' = sqrt(y), y = w^2 max(|M
+ * d|^2 |d|^2, |M (n x d)|^2 (g . d)^2) / (|n x d|^2 (g . d)^2): one
+ * division a lane, M once a triangle part (lod_fast_init, kept in the
+ * tile's cache beside the triangle part), and the square root not taken
+ * (lod_decide_quad's `squared`: y's tests against the squared bounds and
+ * log2(y) / 2; x' below is the exact sqrt(y)).
  *
  * The margin.  Both x' and lod_ray's x are within delta x of the exact
  * value of these expressions (the same inputs: d, g, width and the
@@ -828,15 +863,17 @@ SURFACE_INLINE void lod_quad_lanes(const struct surface_lod *const l[4], int sha
  * across, and its texel vectors some 14 eps K of their own: about 175
  * eps kappa / (sin cos) in all; the cosine's dot loses 5 eps / cos of
  * x.  x' takes some 50 eps kappa / (sin cos) (M's entries, its two
- * products, the cross product, the squares and the quotient).  C = 2^12
+ * products, the cross product, the squares and the quotient; the exact
+ * square root halves the quotient's relative error).  C = 2^12
  * covers these sums 18 times.  A lane is taken only with kappa / (sin
  * cos) <= 64 and 1 / cos <= 64 (so lod_ray is on its common path:
  * along_len > 1e-9, the cosine above LOD_MIN_COSINE), |d|^2 in [1/4, 4]
  * and its squares in the normal range (an underflow's absolute error is
  * then negligible): delta < 2^-41 129 < 2^-33.98, x' within 2^-32.97 of
- * x, and log2(x') within 1.443 2^-32.97 + lanes_log2_4's 2^-47 + glibc's
- * 2 ulps (2^-47) < 2^-32.4 of glibc's log2(x).  So x' beyond 1 or top by
- * LOD_FAST_RELATIVE decides the side, and a log2 whose LOD_FAST_ABSOLUTE
+ * x, and log2(x') within 1.443 2^-32.97 + lanes_log2_4(y) / 2's 2^-49 +
+ * glibc's 2 ulps (2^-47) < 2^-32.4 of glibc's log2(x).  So x' beyond 1 or
+ * top by LOD_FAST_RELATIVE (less 2^-65, lod_decide_quad's squared tests)
+ * decides the side, and a log2 whose LOD_FAST_ABSOLUTE
  * neighbourhood rounds to one float gives lod_ray's float (rounding is
  * monotonic).  Undecided lanes (a footprint near 1 or the last level, a
  * log2 within 2^-32 of a float's rounding boundary, a ray within a few
@@ -894,11 +931,13 @@ static void lod_fast_init(const struct surface_lod *l, struct surface_lod_fast *
 struct lod_fast_broadcast {
     __m256d n[3], m0[3], m1[3];
     __m256d sin2;
+    struct lod_top_bounds top; /* of the square of the texture's lod_top */
 };
 
 SURFACE_INLINE void lod_fast_quad_lanes(const struct surface_lod_fast *f, const double unit[3],
-                                        struct lod_fast_broadcast *b)
+                                        double top, struct lod_fast_broadcast *b)
 {
+    b->top = lod_top_bounds(_mm256_set1_pd(top * top), LOD_FAST_RELATIVE, 1);
     for (int k = 0; k < 3; k++) {
         b->n[k] = _mm256_set1_pd(unit[k]);
         b->m0[k] = _mm256_set1_pd(f->m[0][k]);
@@ -908,12 +947,11 @@ SURFACE_INLINE void lod_fast_quad_lanes(const struct surface_lod_fast *f, const 
 }
 
 /* lod_quad's lambdas of four hits on b's triangle (d their directions,
- * g their facing normals, width their cones' widths at the hits, top the
- * texture's lod_top) where lod_fast's margin decides them: writes those
- * into lambda and returns their mask. */
+ * g their facing normals, width their cones' widths at the hits; b's
+ * bounds from the texture's lod_top) where lod_fast's margin decides
+ * them: writes those into lambda and returns their mask. */
 SURFACE_INLINE int lod_fast_quad(const struct lod_fast_broadcast *b, const __m256d d[3],
-                                 const __m256d g[3], __m256d width, __m256d top,
-                                 float lambda[4])
+                                 const __m256d g[3], __m256d width, float lambda[4])
 {
     const __m256d *n = b->n, *m0 = b->m0, *m1 = b->m1;
     __m256d c[3];
@@ -926,8 +964,8 @@ SURFACE_INLINE int lod_fast_quad(const struct lod_fast_broadcast *b, const __m25
     const __m256d q = _mm256_add_pd(_mm256_mul_pd(v0, v0), _mm256_mul_pd(v1, v1));
     const __m256d ww = _mm256_mul_pd(width, width);
     const __m256d num = _mm256_max_pd(_mm256_mul_pd(p, dd), _mm256_mul_pd(q, gg));
-    const __m256d x =
-        _mm256_sqrt_pd(_mm256_div_pd(_mm256_mul_pd(ww, num), _mm256_mul_pd(s, gg)));
+    /* x'^2: lod_decide_quad takes the square (no square root). */
+    const __m256d x2 = _mm256_div_pd(_mm256_mul_pd(ww, num), _mm256_mul_pd(s, gg));
     /* The bound's conditions (NaNs fail every one); 1 / cos <= 64 follows
      * from kappa / (sin cos) <= 64 with kappa >= 1 and sin <= 1. */
     const __m256d tiny = _mm256_set1_pd(0x1p-500), huge = _mm256_set1_pd(0x1p500);
@@ -943,7 +981,7 @@ SURFACE_INLINE int lod_fast_quad(const struct lod_fast_broadcast *b, const __m25
     ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(q, tiny, _CMP_GE_OQ),
                                          _mm256_cmp_pd(q, huge, _CMP_LE_OQ)));
     return _mm256_movemask_pd(ok) &
-           lod_decide_quad(x, top, LOD_FAST_RELATIVE, LOD_FAST_ABSOLUTE, lambda);
+           lod_decide_quad(x2, &b->top, LOD_FAST_RELATIVE, LOD_FAST_ABSOLUTE, 1, lambda);
 }
 
 #if defined(SURFACE_OCTS)
@@ -961,18 +999,21 @@ static inline void oct_cross(const __m512d a[3], const __m512d b[3], __m512d out
     out[2] = _mm512_sub_pd(_mm512_mul_pd(a[0], b[1]), _mm512_mul_pd(a[1], b[0]));
 }
 
-/* lod_decide_quad of eight footprints, lanes_log2_8 for lanes_log2_4:
- * the same comparisons, conversions and choices lane by lane. */
+/* lod_decide_quad of eight footprints, squared (its `squared` form
+ * only: top the square of lod_top), lanes_log2_8_half for
+ * lanes_log2_4_half: the same comparisons, conversions and choices lane
+ * by lane. */
 SURFACE_INLINE int lod_decide_oct(__m512d x, __m512d top, double relative, double absolute,
                                   float lambda[8])
 {
+    relative *= 2.0;
     const __mmask8 below = _mm512_cmp_pd_mask(x, _mm512_set1_pd(1.0 - relative), _CMP_LT_OQ);
     const __mmask8 beyond =
         _mm512_cmp_pd_mask(x, _mm512_mul_pd(top, _mm512_set1_pd(1.0 + relative)), _CMP_GT_OQ);
     const __mmask8 inside =
         _mm512_cmp_pd_mask(x, _mm512_set1_pd(1.0 + relative), _CMP_GT_OQ) &
         _mm512_cmp_pd_mask(x, _mm512_mul_pd(top, _mm512_set1_pd(1.0 - relative)), _CMP_LT_OQ);
-    const __m512d lg = lanes_log2_8(x);
+    const __m512d lg = lanes_log2_8_half(x);
     const __m256 lg_f = _mm512_cvtpd_ps(lg);
     const __m512d margin = _mm512_set1_pd(absolute);
     const __mmask8 exact =
@@ -987,11 +1028,11 @@ SURFACE_INLINE int lod_decide_oct(__m512d x, __m512d top, double relative, doubl
 }
 
 /* lod_fast_quad of eight hits (a block's two quads in one vector, lane i
- * hit i): each lane its operations in their order, so the same x, the
+ * hit i): each lane its operations in their order, so the same y, the
  * same conditions and the same lambdas. */
 SURFACE_INLINE int lod_fast_oct(const struct surface_lod_fast *f, const double unit[3],
                                 const __m512d d[3], const __m512d g[3], __m512d width,
-                                __m512d top, float lambda[8])
+                                __m512d top2, float lambda[8])
 {
     __m512d n[3], m0[3], m1[3], c[3];
     for (int k = 0; k < 3; k++) {
@@ -1010,8 +1051,7 @@ SURFACE_INLINE int lod_fast_oct(const struct surface_lod_fast *f, const double u
     /* vmaxpd's rule (the second operand unless the first is greater) in
      * every encoding without {sae}: Intel SDM, VMAXPD. */
     const __m512d num = _mm512_max_pd(_mm512_mul_pd(p, dd), _mm512_mul_pd(q, gg));
-    const __m512d x =
-        _mm512_sqrt_pd(_mm512_div_pd(_mm512_mul_pd(ww, num), _mm512_mul_pd(s, gg)));
+    const __m512d x2 = _mm512_div_pd(_mm512_mul_pd(ww, num), _mm512_mul_pd(s, gg));
     const __m512d tiny = _mm512_set1_pd(0x1p-500), huge = _mm512_set1_pd(0x1p500);
     __mmask8 ok = _mm512_cmp_pd_mask(dd, _mm512_set1_pd(0.25), _CMP_GE_OQ) &
                   _mm512_cmp_pd_mask(dd, _mm512_set1_pd(4.0), _CMP_LE_OQ);
@@ -1022,7 +1062,7 @@ SURFACE_INLINE int lod_fast_oct(const struct surface_lod_fast *f, const double u
           _mm512_cmp_pd_mask(ww, _mm512_set1_pd(0x1p200), _CMP_LE_OQ);
     ok &= _mm512_cmp_pd_mask(p, tiny, _CMP_GE_OQ) & _mm512_cmp_pd_mask(p, huge, _CMP_LE_OQ);
     ok &= _mm512_cmp_pd_mask(q, tiny, _CMP_GE_OQ) & _mm512_cmp_pd_mask(q, huge, _CMP_LE_OQ);
-    return ok & lod_decide_oct(x, top, LOD_FAST_RELATIVE, LOD_FAST_ABSOLUTE, lambda);
+    return ok & lod_decide_oct(x2, top2, LOD_FAST_RELATIVE, LOD_FAST_ABSOLUTE, lambda);
 }
 #endif
 
@@ -2236,7 +2276,7 @@ int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene
                     g8[k] = _mm512_cvtps_pd(g[k]);
                 }
                 fast8 = lod_fast_oct(&c->fast, tri->n, d8, g8, _mm512_cvtps_pd(wv),
-                                     _mm512_set1_pd(top), lambda);
+                                     _mm512_set1_pd(top * top), lambda);
             }
             for (int h = 0; h < TRACE_PACKET / 4; h++) {
                 if ((fast8 >> 4 * h & 15) == 15)
@@ -2265,8 +2305,7 @@ int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene
 #endif
             struct lod_fast_broadcast fast_lanes;
             if (use_fast)
-                lod_fast_quad_lanes(&c->fast, tri->n, &fast_lanes);
-            const __m256d top4 = _mm256_set1_pd(top);
+                lod_fast_quad_lanes(&c->fast, tri->n, top, &fast_lanes);
             for (int h = 0; h < TRACE_PACKET / 4; h++) {
 #define HALF(v) _mm256_cvtps_pd(h ? _mm256_extractf128_ps(v, 1) : _mm256_castps256_ps128(v))
                 __m256d d[3], gd[3];
@@ -2277,7 +2316,7 @@ int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene
                 /* lod_fast_quad where its margin decides all four, else
                  * lod_quad's chain for the quad (the same lambdas). */
                 if (use_fast &&
-                    lod_fast_quad(&fast_lanes, d, gd, HALF(wv), top4, &lambda[4 * h]) == 15)
+                    lod_fast_quad(&fast_lanes, d, gd, HALF(wv), &lambda[4 * h]) == 15)
                     continue;
                 lod_quad_lanes(l4, 1, d, gd, HALF(wv), top, tx->level_count, h, width, lane_g,
                                dir, lambda);

@@ -689,19 +689,33 @@ static inline void bilinear8_offsets(const struct scene_texture *tex, __m256i le
                                      const texture_reduced8 *rs, const texture_reduced8 *rt,
                                      __m256i off[4], __m256 *va, __m256 *vb)
 {
-    const int *entries = (const int *)tex->levels;
-    const __m256i at = _mm256_mullo_epi32(level, _mm256_set1_epi32(LEVEL_INTS));
-    const __m256i w = _mm256_i32gather_epi32(entries, at, 4);
-    const __m256i h = _mm256_i32gather_epi32(
-        entries, _mm256_add_epi32(at, _mm256_set1_epi32(1)), 4);
-    const __m256i first = _mm256_sub_epi32(
-        _mm256_i32gather_epi32(
-            entries,
-            _mm256_add_epi32(at, _mm256_set1_epi32((int)(offsetof(struct scene_texture_level,
-                                                                   texels) /
-                                                          sizeof(int)))),
-            4),
-        _mm256_set1_epi32((int)(uint32_t)(uintptr_t)tex->levels[0].texels));
+    const int base = (int)(uint32_t)(uintptr_t)tex->levels[0].texels;
+    const int l0 = _mm256_cvtsi256_si32(level);
+    __m256i w, h, first;
+    if (_mm256_movemask_epi8(_mm256_cmpeq_epi32(level, _mm256_set1_epi32(l0))) == -1) {
+        /* Every lane on one level (all but a few per cent of a frame's
+         * lookups): its entry's fields broadcast, the integers the
+         * gathers below would give every lane, without their loads on
+         * the chain from the lambdas to the texel offsets. */
+        const struct scene_texture_level *lv = &tex->levels[l0];
+        w = _mm256_set1_epi32(lv->width);
+        h = _mm256_set1_epi32(lv->height);
+        first = _mm256_sub_epi32(_mm256_set1_epi32((int)(uint32_t)(uintptr_t)lv->texels),
+                                 _mm256_set1_epi32(base));
+    } else {
+        const int *entries = (const int *)tex->levels;
+        const __m256i at = _mm256_mullo_epi32(level, _mm256_set1_epi32(LEVEL_INTS));
+        w = _mm256_i32gather_epi32(entries, at, 4);
+        h = _mm256_i32gather_epi32(entries, _mm256_add_epi32(at, _mm256_set1_epi32(1)), 4);
+        first = _mm256_sub_epi32(
+            _mm256_i32gather_epi32(
+                entries,
+                _mm256_add_epi32(at, _mm256_set1_epi32((int)(offsetof(struct scene_texture_level,
+                                                                       texels) /
+                                                              sizeof(int)))),
+                4),
+            _mm256_set1_epi32(base));
+    }
 #if defined(TEXTURE_OCTS_512)
     /* The halves' steps below in one vector, each lane's the same. */
     const __m512d half = _mm512_set1_pd(0.5);
