@@ -412,22 +412,9 @@ static inline unsigned packet_leaf8_body(struct packet_state *p,
         const uint32_t n = count - j < 4 ? count - j : 4;
         p->triangle_tests += n * (unsigned)__builtin_popcount(rays);
         const float *const vk[3] = {q->v[0][kx], q->v[0][ky], q->v[0][kz]};
-        /* The packet's zero-area triangles, held as NaNs in every
-         * coordinate (accel_set_packet_lane): a lane whose vertices b
-         * and c have a NaN kz coordinate has NaN in Bx, By, Cx and Cy
-         * (each adds s times that coordinate), so U, V and W are all
-         * NaN, no lane is deferred (NaN == 0 is false) and det is NaN,
-         * which |det| < inf refuses: tri8_test's first exit returns 0
-         * for every ray, and the triangle needs no test.  The two
-         * rows' test once a packet costs a few instructions; a skipped
-         * triangle saves the first exit's sixty or so (gears' meshes
-         * hold many such triangles). */
-        const unsigned nan_tris = (unsigned)_mm_movemask_ps(
-            _mm_and_ps(_mm_cmpunord_ps(_mm_loadu_ps(vk[2] + 12), _mm_loadu_ps(vk[2] + 12)),
-                       _mm_cmpunord_ps(_mm_loadu_ps(vk[2] + 24), _mm_loadu_ps(vk[2] + 24))));
         /* The triangles to test: all, or for few rays those whose
          * first exit passes one of them (tri8_pair_filter). */
-        unsigned tris = ((1u << n) - 1u) & ~nan_tris;
+        unsigned tris = (1u << n) - 1u;
         if (beam) {
             /* The interval walk's packet: the triangles whose box its
              * interval test passes (packet_tri_beam). */
@@ -454,8 +441,6 @@ static inline unsigned packet_leaf8_body(struct packet_state *p,
                     break;
                 l = (uint32_t)__builtin_ctz(tris);
                 tris &= tris - 1u;
-            } else if (nan_tris >> l & 1u) {
-                continue;
             }
             struct tri8_result res;
             if (!tri8_test(&p->t8, q, vk, l, rays, _mm256_loadu_ps(limit), any_hit, &res))
