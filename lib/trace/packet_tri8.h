@@ -276,17 +276,17 @@ static inline unsigned tri8_test(const struct tri8_rays *r, const struct tri4_pa
      * which |det| < inf refuses as isfinite(det) does.  Only the sign
      * bit of keep is meaningful (every use ends in a movemask). */
     const __m256 mixed = _mm256_or_ps(_mm256_xor_ps(sh.U, sh.V), _mm256_xor_ps(sh.U, sh.W));
-    if (!(((unsigned)~_mm256_movemask_ps(mixed) | deferred) & lanes)) {
-        /* No ray passes the sign test, none is deferred: the depth
+    const __m256 det = _mm256_add_ps(_mm256_add_ps(sh.U, sh.V), sh.W);
+    const __m256 abs_det = _mm256_andnot_ps(_mm256_set1_ps(-0.0f), det);
+    __m256 keep =
+        _mm256_andnot_ps(mixed, _mm256_cmp_ps(abs_det, _mm256_set1_ps(INFINITY), _CMP_LT_OQ));
+    if (!(((unsigned)_mm256_movemask_ps(keep) | deferred) & lanes)) {
+        /* No ray passes the edge test, none is deferred: the depth
          * range and the slabs can only reject more. */
         res->hit = 0;
         res->scalar = 0;
         return 0;
     }
-    const __m256 det = _mm256_add_ps(_mm256_add_ps(sh.U, sh.V), sh.W);
-    const __m256 abs_det = _mm256_andnot_ps(_mm256_set1_ps(-0.0f), det);
-    __m256 keep =
-        _mm256_andnot_ps(mixed, _mm256_cmp_ps(abs_det, _mm256_set1_ps(INFINITY), _CMP_LT_OQ));
 
     const __m256 Az = _mm256_mul_ps(r->sz, az);
     const __m256 Bz = _mm256_mul_ps(r->sz, bz);
