@@ -46,15 +46,7 @@
 /* The per-lane ray constants of the eight-ray test; a lane outside the
  * test's rays holds values never read into an answer. */
 struct tri8_rays {
-    /* -org[kx], -org[ky], -org[kz]: a vertex's coordinate minus the
-     * origin as v + (-org), bit for bit the value v - org has (IEEE 754
-     * defines subtraction so; a NaN's sign bit may differ, and a lane
-     * with a NaN there has U, V or W NaN, hence det NaN: neither kept
-     * nor a candidate, and a deferred lane is decided by isect_triangle
-     * from the ray itself), with the vertex's broadcast as the add's
-     * second operand, which AVX-512 folds into the add ({1to8}) where v
-     * - org needs a broadcast of its own (walk_wide8_ray's neg_org). */
-    __m256 neg_org_x, neg_org_y, neg_org_z;
+    __m256 org_x, org_y, org_z; /* org[kx], org[ky], org[kz] */
     __m256 sx, sy, sz;
     __m256 inv_x, inv_y;        /* inv_dir[kx], inv_dir[ky] */
     __m256 neg_x, neg_y;        /* all ones where inv_x < 0, inv_y < 0 (isect_slab) */
@@ -182,10 +174,9 @@ static inline void tri8_rays_init(struct tri8_rays *t, const __m256 f[TRI8_F_COU
     t->kx = kx;
     t->ky = ky;
     t->kz = kz;
-    const __m256 sign = _mm256_set1_ps(-0.0f);
-    t->neg_org_x = _mm256_xor_ps(f[TRI8_F_ORG + kx], sign);
-    t->neg_org_y = _mm256_xor_ps(f[TRI8_F_ORG + ky], sign);
-    t->neg_org_z = _mm256_xor_ps(f[TRI8_F_ORG + kz], sign);
+    t->org_x = f[TRI8_F_ORG + kx];
+    t->org_y = f[TRI8_F_ORG + ky];
+    t->org_z = f[TRI8_F_ORG + kz];
     t->sx = f[TRI8_F_S];
     t->sy = f[TRI8_F_S + 1];
     t->sz = f[TRI8_F_S + 2];
@@ -244,24 +235,15 @@ static inline unsigned tri8_test(const struct tri8_rays *r, const struct tri4_pa
 {
     res->t = res->u = res->v = _mm256_setzero_ps();
     /* Vertex a's coordinate kx, ky, kz: vk[.][12 a + l] (v[a][k][l]). */
-    /* -org in registers: given the struct's fields as memory operands,
-     * GCC folds those loads into the nine adds and keeps a broadcast of
-     * its own per vertex coordinate; from registers, the broadcasts fold
-     * ({1to8}, AVX-512) and the nine broadcasts go.  The empty asm only
-     * pins the three values in registers. */
-    __m256 nox = r->neg_org_x, noy = r->neg_org_y, noz = r->neg_org_z;
-#if defined(__GNUC__) && defined(__AVX512VL__)
-    __asm__("" : "+v"(nox), "+v"(noy), "+v"(noz));
-#endif
-    const __m256 ax = _mm256_add_ps(nox, _mm256_broadcast_ss(&vk[0][0 + l]));
-    const __m256 ay = _mm256_add_ps(noy, _mm256_broadcast_ss(&vk[1][0 + l]));
-    const __m256 az = _mm256_add_ps(noz, _mm256_broadcast_ss(&vk[2][0 + l]));
-    const __m256 bx = _mm256_add_ps(nox, _mm256_broadcast_ss(&vk[0][12 + l]));
-    const __m256 by = _mm256_add_ps(noy, _mm256_broadcast_ss(&vk[1][12 + l]));
-    const __m256 bz = _mm256_add_ps(noz, _mm256_broadcast_ss(&vk[2][12 + l]));
-    const __m256 cx = _mm256_add_ps(nox, _mm256_broadcast_ss(&vk[0][24 + l]));
-    const __m256 cy = _mm256_add_ps(noy, _mm256_broadcast_ss(&vk[1][24 + l]));
-    const __m256 cz = _mm256_add_ps(noz, _mm256_broadcast_ss(&vk[2][24 + l]));
+    const __m256 ax = _mm256_sub_ps(_mm256_broadcast_ss(&vk[0][0 + l]), r->org_x);
+    const __m256 ay = _mm256_sub_ps(_mm256_broadcast_ss(&vk[1][0 + l]), r->org_y);
+    const __m256 az = _mm256_sub_ps(_mm256_broadcast_ss(&vk[2][0 + l]), r->org_z);
+    const __m256 bx = _mm256_sub_ps(_mm256_broadcast_ss(&vk[0][12 + l]), r->org_x);
+    const __m256 by = _mm256_sub_ps(_mm256_broadcast_ss(&vk[1][12 + l]), r->org_y);
+    const __m256 bz = _mm256_sub_ps(_mm256_broadcast_ss(&vk[2][12 + l]), r->org_z);
+    const __m256 cx = _mm256_sub_ps(_mm256_broadcast_ss(&vk[0][24 + l]), r->org_x);
+    const __m256 cy = _mm256_sub_ps(_mm256_broadcast_ss(&vk[1][24 + l]), r->org_y);
+    const __m256 cz = _mm256_sub_ps(_mm256_broadcast_ss(&vk[2][24 + l]), r->org_z);
 
     struct tri8_sheared sh;
     tri8_shear(ax, ay, az, bx, by, bz, cx, cy, cz, r->sx, r->sy, &sh);
@@ -460,22 +442,22 @@ static inline unsigned tri8_pair_filter(const struct tri8_rays *r, const float *
 {
     const __m256i at = _mm256_setr_epi32((int)a, (int)a, (int)a, (int)a, (int)b, (int)b,
                                          (int)b, (int)b);
-    const __m256 ox = _mm256_permutevar8x32_ps(r->neg_org_x, at);
-    const __m256 oy = _mm256_permutevar8x32_ps(r->neg_org_y, at);
-    const __m256 oz = _mm256_permutevar8x32_ps(r->neg_org_z, at);
+    const __m256 ox = _mm256_permutevar8x32_ps(r->org_x, at);
+    const __m256 oy = _mm256_permutevar8x32_ps(r->org_y, at);
+    const __m256 oz = _mm256_permutevar8x32_ps(r->org_z, at);
     const __m256 sx = _mm256_permutevar8x32_ps(r->sx, at);
     const __m256 sy = _mm256_permutevar8x32_ps(r->sy, at);
     /* Vertex a's coordinate k of the four triangles, in both halves. */
 #define TRI8_ROW4(k, v) _mm256_broadcast_ps((const __m128 *)(const void *)&vk[k][12 * (v)])
-    const __m256 ax = _mm256_add_ps(TRI8_ROW4(0, 0), ox);
-    const __m256 ay = _mm256_add_ps(TRI8_ROW4(1, 0), oy);
-    const __m256 az = _mm256_add_ps(TRI8_ROW4(2, 0), oz);
-    const __m256 bx = _mm256_add_ps(TRI8_ROW4(0, 1), ox);
-    const __m256 by = _mm256_add_ps(TRI8_ROW4(1, 1), oy);
-    const __m256 bz = _mm256_add_ps(TRI8_ROW4(2, 1), oz);
-    const __m256 cx = _mm256_add_ps(TRI8_ROW4(0, 2), ox);
-    const __m256 cy = _mm256_add_ps(TRI8_ROW4(1, 2), oy);
-    const __m256 cz = _mm256_add_ps(TRI8_ROW4(2, 2), oz);
+    const __m256 ax = _mm256_sub_ps(TRI8_ROW4(0, 0), ox);
+    const __m256 ay = _mm256_sub_ps(TRI8_ROW4(1, 0), oy);
+    const __m256 az = _mm256_sub_ps(TRI8_ROW4(2, 0), oz);
+    const __m256 bx = _mm256_sub_ps(TRI8_ROW4(0, 1), ox);
+    const __m256 by = _mm256_sub_ps(TRI8_ROW4(1, 1), oy);
+    const __m256 bz = _mm256_sub_ps(TRI8_ROW4(2, 1), oz);
+    const __m256 cx = _mm256_sub_ps(TRI8_ROW4(0, 2), ox);
+    const __m256 cy = _mm256_sub_ps(TRI8_ROW4(1, 2), oy);
+    const __m256 cz = _mm256_sub_ps(TRI8_ROW4(2, 2), oz);
 #undef TRI8_ROW4
     struct tri8_sheared sh;
     tri8_shear(ax, ay, az, bx, by, bz, cx, cy, cz, sx, sy, &sh);
