@@ -573,20 +573,24 @@ static inline __m128 quad_mask_ps(__m256d m)
         _mm256_castpd_si256(m), _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6))));
 }
 
-struct lod_top_bounds {
-    __m256d lo, hi; /* top (1 - relative), top (1 + relative) */
+/* lod_decide_quad's thresholds: 1 (1 -+ relative) and top (1 -+
+ * relative), made once where top is known (lod_bounds). */
+struct lod_bounds {
+    __m256d one_lo, one_hi, top_lo, top_hi;
 };
 
-/* top's bounds for lod_decide_quad, once where top is known (squared:
- * top the square of lod_top, relative doubled). */
-static inline struct lod_top_bounds lod_top_bounds(__m256d top, double relative, int squared)
+/* The thresholds for footprints (squared: for their squares, top the
+ * square of lod_top and relative doubled; see lod_decide_quad). */
+static inline struct lod_bounds lod_bounds(__m256d top, double relative, int squared)
 {
     if (squared)
         relative *= 2.0;
-    struct lod_top_bounds t;
-    t.lo = _mm256_mul_pd(top, _mm256_set1_pd(1.0 - relative));
-    t.hi = _mm256_mul_pd(top, _mm256_set1_pd(1.0 + relative));
-    return t;
+    struct lod_bounds b;
+    b.one_lo = _mm256_set1_pd(1.0 - relative);
+    b.one_hi = _mm256_set1_pd(1.0 + relative);
+    b.top_lo = _mm256_mul_pd(top, _mm256_set1_pd(1.0 - relative));
+    b.top_hi = _mm256_mul_pd(top, _mm256_set1_pd(1.0 + relative));
+    return b;
 }
 
 /* The levels of detail of four footprints x where they are decided
@@ -594,9 +598,9 @@ static inline struct lod_top_bounds lod_top_bounds(__m256d top, double relative,
  * + relative), and between 1 + relative and top (1 - relative) the float
  * of lanes_log2_4(x) when every value within `absolute` of it rounds to
  * that float.  Writes lambda[i] of every lane and returns the mask of the
- * lanes so decided; the caller ANDs the lanes its bound covers.  top's
- * two bounds come from lod_top_bounds (once a block where the caller
- * can).
+ * lanes so decided; the caller ANDs the lanes its bound covers.  The
+ * thresholds come from lod_bounds (once a block where the caller can),
+ * made with the same `squared`.
  *
  * With `squared` (a constant at each call), x holds the footprint's
  * square y, the bounds are those of the square of lod_top, and no square
@@ -610,16 +614,13 @@ static inline struct lod_top_bounds lod_top_bounds(__m256d top, double relative,
  * covers (lod_fast's, below).  The log2 is within
  * 2^-48 of log2(y) for y in [1, 2^32] (lanes_log2_4), so its half within
  * 2^-49 of log2(sqrt(y)). */
-SURFACE_INLINE int lod_decide_quad(__m256d x, const struct lod_top_bounds *top, double relative,
-                                   double absolute, int squared, float lambda[4])
+SURFACE_INLINE int lod_decide_quad(__m256d x, const struct lod_bounds *b, double absolute,
+                                   int squared, float lambda[4])
 {
-    if (squared)
-        relative *= 2.0;
-    const __m256d below = _mm256_cmp_pd(x, _mm256_set1_pd(1.0 - relative), _CMP_LT_OQ);
-    const __m256d beyond = _mm256_cmp_pd(x, top->hi, _CMP_GT_OQ);
-    const __m256d inside =
-        _mm256_and_pd(_mm256_cmp_pd(x, _mm256_set1_pd(1.0 + relative), _CMP_GT_OQ),
-                      _mm256_cmp_pd(x, top->lo, _CMP_LT_OQ));
+    const __m256d below = _mm256_cmp_pd(x, b->one_lo, _CMP_LT_OQ);
+    const __m256d beyond = _mm256_cmp_pd(x, b->top_hi, _CMP_GT_OQ);
+    const __m256d inside = _mm256_and_pd(_mm256_cmp_pd(x, b->one_hi, _CMP_GT_OQ),
+                                         _mm256_cmp_pd(x, b->top_lo, _CMP_LT_OQ));
     const __m256d lg = squared ? lanes_log2_4_half(x) : lanes_log2_4(x);
     const __m128 lg_f = _mm256_cvtpd_ps(lg);
     const __m256d margin = _mm256_set1_pd(absolute);
@@ -764,10 +765,9 @@ SURFACE_INLINE int lod_quad(const struct surface_lod *const l[4], int shared, co
         _mm256_and_pd(common, _mm256_or_pd(major, minor)),
         _mm256_and_pd(_mm256_cmp_pd(s2, _mm256_set1_pd(0x1p-960), _CMP_GE_OQ),
                       _mm256_cmp_pd(s2, _mm256_set1_pd(0x1p960), _CMP_LE_OQ)));
-    const struct lod_top_bounds bounds = lod_top_bounds(top, LOD_NEAR_RELATIVE, 0);
-    const int decided =
-        _mm256_movemask_pd(usable) &
-        lod_decide_quad(xs, &bounds, LOD_NEAR_RELATIVE, LOD_NEAR_ABSOLUTE, 0, lambda);
+    const struct lod_bounds bounds = lod_bounds(top, LOD_NEAR_RELATIVE, 0);
+    const int decided = _mm256_movemask_pd(usable) &
+                        lod_decide_quad(xs, &bounds, LOD_NEAR_ABSOLUTE, 0, lambda);
     rest->common = _mm256_movemask_pd(common);
     if (decided != 15) {
         _mm256_storeu_pd(rest->cos, cosine);
@@ -931,13 +931,13 @@ static void lod_fast_init(const struct surface_lod *l, struct surface_lod_fast *
 struct lod_fast_broadcast {
     __m256d n[3], m0[3], m1[3];
     __m256d sin2;
-    struct lod_top_bounds top; /* of the square of the texture's lod_top */
+    struct lod_bounds bounds; /* squared, of the texture's lod_top */
 };
 
 SURFACE_INLINE void lod_fast_quad_lanes(const struct surface_lod_fast *f, const double unit[3],
                                         double top, struct lod_fast_broadcast *b)
 {
-    b->top = lod_top_bounds(_mm256_set1_pd(top * top), LOD_FAST_RELATIVE, 1);
+    b->bounds = lod_bounds(_mm256_set1_pd(top * top), LOD_FAST_RELATIVE, 1);
     for (int k = 0; k < 3; k++) {
         b->n[k] = _mm256_set1_pd(unit[k]);
         b->m0[k] = _mm256_set1_pd(f->m[0][k]);
@@ -981,7 +981,7 @@ SURFACE_INLINE int lod_fast_quad(const struct lod_fast_broadcast *b, const __m25
     ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(q, tiny, _CMP_GE_OQ),
                                          _mm256_cmp_pd(q, huge, _CMP_LE_OQ)));
     return _mm256_movemask_pd(ok) &
-           lod_decide_quad(x2, &b->top, LOD_FAST_RELATIVE, LOD_FAST_ABSOLUTE, 1, lambda);
+           lod_decide_quad(x2, &b->bounds, LOD_FAST_ABSOLUTE, 1, lambda);
 }
 
 #if defined(SURFACE_OCTS)
