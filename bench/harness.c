@@ -151,7 +151,7 @@ int bench_accel_build_wide(struct bench_accel *acc, const struct bench_mesh *mes
     if (with_tri)
         acc->tri = accel_gather_triangles_pool(&acc->bvh, mesh->positions, mesh->indices, pool);
     const struct collapse_triangles tris = {acc->tri, acc->tri ? NULL : mesh->positions,
-                                            acc->tri ? NULL : mesh->indices};
+                                            acc->tri ? NULL : mesh->indices, 0};
     if ((with_tri && !acc->tri) ||
         accel_collapse_wide_source(&acc->wide, &acc->bvh, &tris, bench_layout_width(), pool,
                                    &spare, chosen_collapse)) {

@@ -56,6 +56,11 @@ struct scratch_node {
     uint32_t child[MAX_WIDTH];
     uint32_t count[MAX_WIDTH];
     uint32_t first[MAX_WIDTH];
+    /* A leaf lane's triangles in the layout (drop_zero_area): count[l]
+     * less the zero-area ones left out, whose slots are the clear bits of
+     * kept[l] (bit j: slot first[l] + j). */
+    uint32_t live[MAX_WIDTH];
+    uint32_t kept[MAX_WIDTH];
     int lanes;
     uint32_t inner; /* bit l: lane l is an inner child */
 };
@@ -780,7 +785,7 @@ static void write_lanes(const struct bvh *bvh, const struct scratch_node *s, int
                 l < s->lanes ? bvh->nodes[s->source[l]].aabb_max[k] : -INFINITY;
         }
         child[l] = l < s->lanes ? s->child[l] + child_base[s->inner >> l & 1u] : 0;
-        count[l] = (uint8_t)(l < s->lanes ? s->count[l] : 0);
+        count[l] = (uint8_t)(l < s->lanes ? s->live[l] : 0);
     }
     const int bits_per_lane = width == 4 ? 2 : 3;
     double centre[MAX_WIDTH][3];
@@ -1033,6 +1038,8 @@ struct collapse {
     struct collapse_triangles src;
     uint32_t width;
     int merge_left; /* close_small_lanes applies */
+    /* drop_zero_area applies (triangles, and not src.keep_zero_area). */
+    int drop;
     const struct dp *dp; /* the optimal collapse's costs (triangles), else greedy */
     struct scratch_node *scratch;
     uint32_t *todo;
@@ -1048,6 +1055,84 @@ struct collapse {
     uint32_t item_cap;
     uint32_t *item_next;
 };
+
+/* Leaf slot `slot`'s triangle is of zero area (isect_triangle_zero_area,
+ * read as the packets read it: fill_packet, fill_packet_mesh). */
+static int slot_zero_area(const struct collapse *c, uint32_t slot)
+{
+    float buf[9];
+    const float *v = buf;
+    if (c->src.tri)
+        v = &c->src.tri[9 * (size_t)slot];
+    else
+        accel_gather_triangle(buf, c->src.positions, c->src.indices, c->bvh->prim_index[slot]);
+    return isect_triangle_zero_area(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8]);
+}
+
+/*
+ * The zero-area triangles left out of wide node s's leaf lanes, and a
+ * leaf lane left with none removed from the node.  No ray hits such a
+ * triangle: isect_triangle refuses it in its finish (the zero-area test
+ * of isect_triangle_finish), the packets hold it as NaN, which every
+ * packet test refuses (accel_set_packet_lane), and the binary walk, the
+ * brute force and the double-precision refinement all end in that
+ * finish.  So every answer is the same without it, while a walk no
+ * longer tests it in each visit of its leaf (gears: 80 of 880
+ * triangles, collinear vertices).  The other triangles keep their slot
+ * order in the lane (the tie rules see the same order), the lane keeps
+ * its box (a binary node's, bit for bit), and its count is the
+ * triangles left (live).  A node keeps at least one lane: when every
+ * lane would go (a subtree of zero-area triangles only), the first stays
+ * whole, its triangles as NaN lanes.  Depends on nothing but the node,
+ * as gather, so the bytes are the same on any pool.  A layout that left
+ * triangles out cannot be refit in place (accel_refit4): a moved vertex
+ * can give such a triangle an area.
+ */
+static void drop_zero_area(const struct collapse *c, struct scratch_node *s)
+{
+    for (int l = 0; l < s->lanes; l++) {
+        s->live[l] = s->count[l];
+        /* (A range leaf's count can pass 31; its kept is not read.) */
+        s->kept[l] = s->count[l] < 32 ? (1u << s->count[l]) - 1u : UINT32_MAX;
+    }
+    if (!c->drop)
+        return;
+    struct scratch_node t = *s;
+    int lanes = 0;
+    uint32_t inner = 0;
+    for (int l = 0; l < s->lanes; l++) {
+        if (!(s->inner >> l & 1u)) {
+            uint32_t kept = 0, live = 0;
+            for (uint32_t j = 0; j < s->count[l]; j++) {
+                if (!slot_zero_area(c, s->first[l] + j)) {
+                    kept |= 1u << j;
+                    live++;
+                }
+            }
+            if (!live)
+                continue;
+            t.live[l] = live;
+            t.kept[l] = kept;
+        } else {
+            inner |= 1u << lanes;
+        }
+        s->source[lanes] = t.source[l];
+        s->child[lanes] = t.child[l];
+        s->count[lanes] = t.count[l];
+        s->first[lanes] = t.first[l];
+        s->live[lanes] = t.live[l];
+        s->kept[lanes] = t.kept[l];
+        lanes++;
+    }
+    if (!lanes) {
+        /* Every lane a leaf of zero-area triangles: the first one whole. */
+        *s = t;
+        s->lanes = 1;
+        return;
+    }
+    s->lanes = lanes;
+    s->inner = inner;
+}
 
 /* The write of the nodes above the cut (fewer than COLLAPSE_ITEM_LEVEL a
  * level, so few but in a deep narrow tree) takes the pool from this
@@ -1098,11 +1183,12 @@ static void gather_nodes(void *arg, uint32_t lo, uint32_t hi)
     for (uint32_t w = lo; w < hi; w++) {
         if (c->dp) {
             gather_dp(c->dp, c->todo[w], &c->scratch[w]);
-            continue;
+        } else {
+            gather(c->bvh, c->tri, c->todo[w], c->width, &c->scratch[w]);
+            if (c->merge_left)
+                close_small_lanes(c->bvh, c->tri, c->width, &c->scratch[w]);
         }
-        gather(c->bvh, c->tri, c->todo[w], c->width, &c->scratch[w]);
-        if (c->merge_left)
-            close_small_lanes(c->bvh, c->tri, c->width, &c->scratch[w]);
+        drop_zero_area(c, &c->scratch[w]);
     }
 }
 
@@ -1122,9 +1208,44 @@ static void number_level(const struct collapse *c, uint32_t begin, uint32_t end,
                 s->child[l] = s->first[l];
             } else {
                 s->child[l] = *packets; /* first packet; slots from first[l] */
-                *packets += (s->count[l] + 3) / 4;
+                *packets += (s->live[l] + 3) / 4;
             }
         }
+    }
+}
+
+/* Leaf lane l of s with zero-area triangles left out (drop_zero_area):
+ * its packets from the kept slots in slot order, packed four a packet
+ * (the last one's lanes past the leaf's end repeat its last triangle, as
+ * fill_packet's); a packet's slot is its first triangle's. */
+static void write_kept(const struct collapse *c, const struct scratch_node *s, int l,
+                       uint32_t packet_base)
+{
+    uint32_t slots[BVH_WIDE_MAX_LEAF];
+    uint32_t n = 0;
+    for (uint32_t j = 0; j < s->count[l]; j++) {
+        if (s->kept[l] >> j & 1u)
+            slots[n++] = s->first[l] + j;
+    }
+    for (uint32_t j = 0; j < n; j += 4) {
+        const uint32_t p = s->child[l] + packet_base + j / 4;
+        const uint32_t m = n - j < 4 ? n - j : 4;
+        float buf[4][9];
+        const float *row[4];
+        uint32_t prim[4];
+        for (uint32_t k = 0; k < 4; k++) {
+            const uint32_t slot = slots[j + (k < m ? k : m - 1)];
+            prim[k] = c->bvh->prim_index[slot];
+            if (c->src.tri) {
+                row[k] = &c->src.tri[9 * (size_t)slot];
+            } else {
+                accel_gather_triangle(buf[k], c->src.positions, c->src.indices, prim[k]);
+                row[k] = buf[k];
+            }
+        }
+        c->packet_slot[p] = slots[j];
+        fill_packet_rows(&c->packets[p], row, NULL, 0, m);
+        memcpy(c->packets[p].prim, prim, sizeof(prim));
     }
 }
 
@@ -1141,6 +1262,10 @@ static void write_scratch(const struct collapse *c, const struct scratch_node *s
         if (s->inner >> l & 1u)
             continue;
         uint32_t slot = s->first[l];
+        if (s->live[l] != s->count[l]) {
+            write_kept(c, s, l, child_base[0]);
+            continue;
+        }
         for (uint32_t j = 0; j < s->count[l]; j += 4) {
             uint32_t p = s->child[l] + child_base[0] + j / 4;
             uint32_t n = s->count[l] - j < 4 ? s->count[l] - j : 4;
@@ -1229,6 +1354,7 @@ static int item_gather(const struct collapse *c, struct collapse_item *it)
                 if (c->merge_left)
                     close_small_lanes(c->bvh, c->tri, c->width, s);
             }
+            drop_zero_area(c, s);
             for (int l = 0; l < s->lanes; l++) {
                 if (s->inner >> l & 1u) {
                     c->item_todo[item_slot(it, it->count)] = s->source[l];
@@ -1237,7 +1363,7 @@ static int item_gather(const struct collapse *c, struct collapse_item *it)
                     s->child[l] = s->first[l];
                 } else {
                     s->child[l] = lv->packets;
-                    lv->packets += (s->count[l] + 3) / 4;
+                    lv->packets += (s->live[l] + 3) / 4;
                 }
             }
         }
@@ -1365,6 +1491,18 @@ static float leaf_extent_mean(const struct bvh4 *w)
     return lanes ? (float)(sum / lanes) : 0.0f;
 }
 
+/* The triangles in w's leaf lanes (their counts). */
+static uint32_t layout_triangles(const struct bvh4 *w)
+{
+    uint32_t sum = 0;
+    for (uint32_t i = 0; i < w->node_count; i++) {
+        const uint8_t *count = w->width == 8 ? w->nodes8[i].count : w->nodes[i].count;
+        for (uint32_t l = 0; l < w->width; l++)
+            sum += count[l];
+    }
+    return sum;
+}
+
 /* accel_collapse_wide_source in this unit's instruction set. */
 static int collapse_wide(struct bvh4 *out, const struct bvh *bvh,
                          const struct collapse_triangles *tris, uint32_t width,
@@ -1400,6 +1538,7 @@ static int collapse_wide(struct bvh4 *out, const struct bvh *bvh,
     c.tri = tri;
     c.src = *tris;
     c.width = width;
+    c.drop = tri && !tris->keep_zero_area;
     c.item_next = &item_next;
     /* Not zeroed: each entry is written in full (gather, number_level)
      * before it is read. */
@@ -1430,6 +1569,7 @@ static int collapse_wide(struct bvh4 *out, const struct bvh *bvh,
         c.scratch[0].lanes = 1;
         c.scratch[0].source[0] = 0;
         c.scratch[0].inner = 0;
+        drop_zero_area(&c, &c.scratch[0]);
         number_level(&c, 0, 1, c.todo, &count, &packets);
     } else {
         c.todo[0] = 0;
@@ -1546,6 +1686,7 @@ static int collapse_wide(struct bvh4 *out, const struct bvh *bvh,
     out->source = source;
     out->packet_slot = packet_slot;
     out->raw = raw;
+    out->dropped = c.drop ? bvh->prim_count - layout_triangles(out) : 0;
     /* A taken block may be larger than the layout and written past it
      * (a parallel build's refs, accel_build_parallel_triangles): pages
      * the layout would otherwise hold for its lifetime. */
@@ -1589,7 +1730,7 @@ int accel_collapse_wide_quality(struct bvh4 *out, const struct bvh *bvh, const f
                                 uint32_t width, struct rt_pool *pool,
                                 struct rt_large_block *spare, enum bvh_collapse collapse)
 {
-    const struct collapse_triangles tris = {tri, NULL, NULL};
+    const struct collapse_triangles tris = {tri, NULL, NULL, 0};
     return accel_collapse_wide_source(out, bvh, &tris, width, pool, spare, collapse);
 }
 
@@ -1597,7 +1738,7 @@ int accel_collapse_wide_mesh(struct bvh4 *out, const struct bvh *bvh, const floa
                              const uint32_t *indices, uint32_t width, struct rt_pool *pool,
                              struct rt_large_block *spare, enum bvh_collapse collapse)
 {
-    const struct collapse_triangles tris = {NULL, positions, indices};
+    const struct collapse_triangles tris = {NULL, positions, indices, 0};
     return accel_collapse_wide_source(out, bvh, &tris, width, pool, spare, collapse);
 }
 
@@ -1632,8 +1773,12 @@ int accel_collapse4(struct bvh4 *out, const struct bvh *bvh, const float *tri)
     return accel_collapse_wide(out, bvh, tri, 4);
 }
 
-void accel_refit4(struct bvh4 *wide, const struct bvh *bvh, const float *tri)
+int accel_refit4(struct bvh4 *wide, const struct bvh *bvh, const float *tri)
 {
+    /* Triangles left out by the collapse (drop_zero_area) may have gained
+     * an area: only a new collapse can put them back. */
+    if (wide->dropped)
+        return -1;
     const uint32_t width = wide->width;
     for (uint32_t w = 0; w < wide->node_count; w++) {
         for (uint32_t l = 0; l < width; l++) {
@@ -1665,6 +1810,7 @@ void accel_refit4(struct bvh4 *wide, const struct bvh *bvh, const float *tri)
             n++;
         fill_packet(&wide->packets[p], tri, NULL, slot, n);
     }
+    return 0;
 }
 
 uint64_t bvh4_node_bytes(const struct bvh4 *wide)

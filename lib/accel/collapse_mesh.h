@@ -31,6 +31,10 @@ struct collapse_triangles {
     const float *tri;
     const float *positions;
     const uint32_t *indices;
+    /* 1: zero-area triangles stay in the leaves (as NaN lanes), so that
+     * the layout can be refit in place (accel_refit4); 0: they are left
+     * out (collapse4.c, drop_zero_area). */
+    int keep_zero_area;
 };
 
 /* accel_collapse_wide_quality (bvh4_layout.h) reading the triangles from

@@ -88,8 +88,16 @@ static int finish_layout(struct scene_accel *accel, const struct scene_accel_geo
      * pages it touched already; the caller frees it if not taken. */
     if (!spare->bytes && scratch && scratch->bytes)
         spare = scratch;
+    /* A structure that will be refit (restructuring's, which runs on a
+     * deforming object, or a deforming object's rebuild: both had their
+     * leaf-ordered triangles, which only a refit or a frame needs) keeps
+     * the zero-area triangles in its layout, so that its refits stay in
+     * place (accel_refit4); any other leaves them out, which no answer
+     * sees (collapse4.c, drop_zero_area), and its first refit collapses
+     * again (scene_accel_refit). */
+    const int refit_likely = accel->tri || (old && old->tri);
     const struct collapse_triangles tris = {tri, tri ? NULL : geom->positions,
-                                            tri ? NULL : geom->indices};
+                                            tri ? NULL : geom->indices, refit_likely};
     if (params->wide_layout &&
         accel_collapse_wide_source(&wide, &accel->bvh, &tris, width, pool, spare,
                                    params->collapse)) {
@@ -195,7 +203,23 @@ int scene_accel_refit(struct scene_accel *accel, const struct scene_accel_geomet
     }
     accel_refit_mesh(&accel->bvh, accel->tri, geom->positions, geom->indices, pool);
     double start = rt_now_ms();
-    accel_refit4(&accel->wide, &accel->bvh, accel->tri);
+    if (accel_refit4(&accel->wide, &accel->bvh, accel->tri)) {
+        /* The collapse left zero-area triangles out of the layout
+         * (bvh4_layout.h, dropped), and the moved vertices may have given
+         * one an area: a new layout over the refit tree, with them kept,
+         * so that the next refits are in place again.  Should it fail,
+         * the layout goes and traversal takes the binary walk (as
+         * finish_layout). */
+        const struct collapse_triangles tris = {accel->tri, NULL, NULL, 1};
+        struct bvh4 wide = {0};
+        if (accel_collapse_wide_source(&wide, &accel->bvh, &tris, accel->wide.width, pool,
+                                       &accel->wide.raw, params->collapse))
+            bvh4_release(&accel->wide);
+        else {
+            bvh4_release(&accel->wide);
+            accel->wide = wide;
+        }
+    }
     accel->wide_refit_ms = rt_now_ms() - start;
     accel->sah_cost = accel_sah_cost(&accel->bvh, params->c_trav, params->c_isect);
     return 0;

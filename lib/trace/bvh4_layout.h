@@ -57,6 +57,10 @@
  *
  * A leaf of n triangles is ceil(n / 4) consecutive packets; the lanes of
  * the last one beyond n repeat its last triangle and are never tested.
+ * The collapse leaves zero-area triangles out of a leaf (n counts the
+ * others, in slot order) and a leaf of only such triangles out of its
+ * node, unless told to keep them for a refit (collapse4.c,
+ * drop_zero_area).
  * A leaf lane is a binary leaf, or a binary subtree of at most
  * BVH_WIDE_MERGE triangles in consecutive leaf slots, or one of at most
  * BVH_WIDE_MERGE_LEFT under a full wide node where the area heuristic
@@ -161,6 +165,11 @@ struct bvh4 {
      * (packet_wide.h, packet_ia_init); the answers are the same either
      * way. */
     float leaf_extent;
+    /* The zero-area triangles the collapse left out of the leaves
+     * (collapse4.c, drop_zero_area; never hit by any ray); 0 when it kept
+     * them (struct collapse_triangles, keep_zero_area) or there were
+     * none.  Such a layout cannot be refit in place (accel_refit4). */
+    uint32_t dropped;
     /* The nodes and packets in one block (rt_malloc_large: 2 MB huge
      * pages where the OS offers them). */
     struct rt_large_block raw;
@@ -175,9 +184,11 @@ struct bvh4 {
  * triangles stay closed and become leaves, and so do those of at most
  * BVH_WIDE_MERGE_LEFT left closed under a full node when their packets
  * cost no more than a node by the area heuristic), and copies the triangles of
- * tri (accel_gather_triangles' leaf order) into packets.  *out is output
- * only.  Returns 0, or -1 on allocation failure (or another width) with
- * *out zeroed.  Implemented in lib/accel.
+ * tri (accel_gather_triangles' leaf order) into packets, leaving out the
+ * zero-area triangles, which no ray hits (collapse4.c, drop_zero_area;
+ * out->dropped counts them).  *out is output only.  Returns 0, or -1 on
+ * allocation failure (or another width) with *out zeroed.  Implemented
+ * in lib/accel.
  */
 int accel_collapse_wide(struct bvh4 *out, const struct bvh *bvh, const float *tri,
                         uint32_t width);
@@ -237,8 +248,12 @@ int accel_collapse4(struct bvh4 *out, const struct bvh *bvh, const float *tri);
 
 /* Copies the refitted binary boxes and the refitted leaf-ordered
  * triangles tri into the wide layout (same topology: accel_refit keeps
- * it); no allocation.  Safe on a zeroed layout. */
-void accel_refit4(struct bvh4 *wide, const struct bvh *bvh, const float *tri);
+ * it); no allocation.  Safe on a zeroed layout.  Returns 0, or -1 with
+ * the layout untouched when the collapse left zero-area triangles out
+ * of it (wide->dropped): moved vertices can give one of them an area,
+ * so the caller must collapse again (keeping them, collapse_mesh.h, if
+ * more refits are to follow). */
+int accel_refit4(struct bvh4 *wide, const struct bvh *bvh, const float *tri);
 
 /* Lane `lane` of p: the triangle v (v0, v1, v2, each xyz), or NaN in all
  * nine coordinates when it has zero area (the layout above).  Every
