@@ -61,6 +61,9 @@ struct scratch_node {
      * kept[l] (bit j: slot first[l] + j). */
     uint32_t live[MAX_WIDTH];
     uint32_t kept[MAX_WIDTH];
+    /* bit l: leaf lane l's kept triangles are known to have an area (the
+     * packets' fill leaves out its zero-area test) */
+    uint32_t known;
     int lanes;
     uint32_t inner; /* bit l: lane l is an inner child */
 };
@@ -884,21 +887,14 @@ static __m128 upper_pair(__m128 v)
 }
 #endif
 
-/* Packet p's lanes from the nine floats of row[0 .. 4) (leaf slots
- * [slot, slot + n), n <= 4: lanes past n repeat the last triangle, row[l]
- * = row[n - 1] there); with prim_index, the lanes' primitives from it
- * too. */
-static inline void fill_packet_rows(struct tri4_packet *p, const float *const row[4],
-                                    const uint32_t *prim_index, uint32_t slot, uint32_t n)
-{
 #if defined(__SSE2__) && !defined(RT_NO_SIMD)
-    /* The four lanes at once, the same values as accel_set_packet_lane
-     * and the repeats below: a repeated lane is lane n - 1's triangle
-     * loaded again, whose zero-area test gives the same answer.  Each
-     * triangle's nine floats are three overlapping rows of four (floats
-     * 0-3, 4-7, 5-8), transposed into the nine components' lanes.  (Up
-     * to 64 instructions a triangle in the scalar form, a fifth of the
-     * collapse's.) */
+/* The nine components x0 y0 z0 x1 y1 z1 x2 y2 z2 (floats 0-8) of the
+ * triangles of row[0 .. 4), one register each, lane l row[l]'s: each
+ * triangle's nine floats are three overlapping rows of four (floats 0-3,
+ * 4-7, 5-8), transposed.  (Up to 64 instructions a triangle in the
+ * scalar form, a fifth of the collapse's.) */
+static inline void rows_transpose(const float *const row[4], __m128 v[9])
+{
     __m128 a0 = _mm_loadu_ps(row[0]), a1 = _mm_loadu_ps(row[1]);
     __m128 a2 = _mm_loadu_ps(row[2]), a3 = _mm_loadu_ps(row[3]);
     _MM_TRANSPOSE4_PS(a0, a1, a2, a3);
@@ -908,18 +904,63 @@ static inline void fill_packet_rows(struct tri4_packet *p, const float *const ro
     __m128 c0 = _mm_loadu_ps(row[0] + 5), c1 = _mm_loadu_ps(row[1] + 5);
     __m128 c2 = _mm_loadu_ps(row[2] + 5), c3 = _mm_loadu_ps(row[3] + 5);
     _MM_TRANSPOSE4_PS(c0, c1, c2, c3);
-    /* Components x0 y0 z0 x1 y1 z1 x2 y2 z2 (floats 0-8). */
-    __m128 v[9] = {a0, a1, a2, a3, b0, b1, b2, b3, c3};
+    (void)c0, (void)c1, (void)c2;
+    v[0] = a0, v[1] = a1, v[2] = a2, v[3] = a3;
+    v[4] = b0, v[5] = b1, v[6] = b2, v[7] = b3, v[8] = c3;
+}
+
+/* Bit l: lane l of the components v (rows_transpose) is a zero-area
+ * triangle, by isect_triangle_zero_area's doubles. */
+static inline int components_zero_mask(const __m128 v[9])
+{
 #if defined(__AVX2__)
-    const int zero = zero_area_quad(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8]);
+    return zero_area_quad(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8]);
 #else
-    const int zero =
-        zero_area_pair(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8]) |
-        zero_area_pair(upper_pair(v[0]), upper_pair(v[1]), upper_pair(v[2]), upper_pair(v[3]),
-                       upper_pair(v[4]), upper_pair(v[5]), upper_pair(v[6]), upper_pair(v[7]),
-                       upper_pair(v[8]))
-            << 2;
+    return zero_area_pair(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8]) |
+           zero_area_pair(upper_pair(v[0]), upper_pair(v[1]), upper_pair(v[2]),
+                          upper_pair(v[3]), upper_pair(v[4]), upper_pair(v[5]),
+                          upper_pair(v[6]), upper_pair(v[7]), upper_pair(v[8]))
+               << 2;
 #endif
+}
+#endif
+
+/* Bit l: row[l]'s triangle (nine floats) has zero area
+ * (isect_triangle_zero_area), for l < 4. */
+static inline int rows_zero_mask(const float *const row[4])
+{
+#if defined(__SSE2__) && !defined(RT_NO_SIMD)
+    __m128 v[9];
+    rows_transpose(row, v);
+    return components_zero_mask(v);
+#else
+    int mask = 0;
+    for (int l = 0; l < 4; l++) {
+        const float *v = row[l];
+        mask |= isect_triangle_zero_area(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8])
+                << l;
+    }
+    return mask;
+#endif
+}
+
+/* Packet p's lanes from the nine floats of row[0 .. 4) (leaf slots
+ * [slot, slot + n), n <= 4: lanes past n repeat the last triangle, row[l]
+ * = row[n - 1] there); with prim_index, the lanes' primitives from it
+ * too.  test 0: the caller knows that every row has an area
+ * (drop_zero_area tested them), so the zero-area test is left out (its
+ * answer would be 0 for every lane: the same bytes). */
+static inline void fill_packet_rows(struct tri4_packet *p, const float *const row[4],
+                                    const uint32_t *prim_index, uint32_t slot, uint32_t n,
+                                    int test)
+{
+#if defined(__SSE2__) && !defined(RT_NO_SIMD)
+    /* The four lanes at once, the same values as accel_set_packet_lane
+     * and the repeats below: a repeated lane is lane n - 1's triangle
+     * loaded again, whose zero-area test gives the same answer. */
+    __m128 v[9];
+    rows_transpose(row, v);
+    const int zero = test ? components_zero_mask(v) : 0;
     if (zero) {
         const __m128 mask = _mm_castsi128_ps(_mm_set_epi32(-(zero >> 3 & 1), -(zero >> 2 & 1),
                                                            -(zero >> 1 & 1), -(zero & 1)));
@@ -935,7 +976,14 @@ static inline void fill_packet_rows(struct tri4_packet *p, const float *const ro
     }
 #else
     for (uint32_t l = 0; l < n; l++) {
-        accel_set_packet_lane(p, l, row[l]);
+        if (test) {
+            accel_set_packet_lane(p, l, row[l]);
+        } else {
+            for (int j = 0; j < 3; j++) {
+                for (int k = 0; k < 3; k++)
+                    p->v[j][k][l] = row[l][3 * j + k];
+            }
+        }
         if (prim_index)
             p->prim[l] = prim_index[slot + l];
     }
@@ -956,12 +1004,12 @@ static inline void fill_packet_rows(struct tri4_packet *p, const float *const ro
  * (accel_gather_triangles' leaf order); lanes past n repeat the last
  * triangle. */
 static void fill_packet(struct tri4_packet *p, const float *tri, const uint32_t *prim_index,
-                        uint32_t slot, uint32_t n)
+                        uint32_t slot, uint32_t n, int test)
 {
     const float *row[4];
     for (uint32_t l = 0; l < 4; l++)
         row[l] = &tri[9 * (size_t)(slot + (l < n ? l : n - 1))];
-    fill_packet_rows(p, row, prim_index, slot, n);
+    fill_packet_rows(p, row, prim_index, slot, n, test);
 }
 
 /* fill_packet with the triangles read from the mesh (src's positions and
@@ -969,7 +1017,7 @@ static void fill_packet(struct tri4_packet *p, const float *tri, const uint32_t 
  * (accel_gather_triangle), so the same lanes (fill_packet_rows reads
  * floats 0-8 of each row). */
 static void fill_packet_mesh(struct tri4_packet *p, const struct collapse_triangles *src,
-                             const uint32_t *prim_index, uint32_t slot, uint32_t n)
+                             const uint32_t *prim_index, uint32_t slot, uint32_t n, int test)
 {
     float buf[4][9];
     const float *row[4];
@@ -981,7 +1029,7 @@ static void fill_packet_mesh(struct tri4_packet *p, const struct collapse_triang
         accel_gather_triangle(buf[l], src->positions, src->indices, prim_index[slot + l]);
         row[l] = buf[l];
     }
-    fill_packet_rows(p, row, prim_index, slot, n);
+    fill_packet_rows(p, row, prim_index, slot, n, test);
 }
 
 /*
@@ -1056,17 +1104,34 @@ struct collapse {
     uint32_t *item_next;
 };
 
-/* Leaf slot `slot`'s triangle is of zero area (isect_triangle_zero_area,
- * read as the packets read it: fill_packet, fill_packet_mesh). */
-static int slot_zero_area(const struct collapse *c, uint32_t slot)
+/* Bit j: leaf slot first + j's triangle has zero area
+ * (isect_triangle_zero_area), for the n <= BVH_WIDE_MAX_LEAF slots from
+ * first; read as the packets read them (fill_packet, fill_packet_mesh),
+ * four at a time as the fill tests them. */
+static uint32_t slots_zero_mask(const struct collapse *c, uint32_t first, uint32_t n)
 {
-    float buf[9];
-    const float *v = buf;
-    if (c->src.tri)
-        v = &c->src.tri[9 * (size_t)slot];
-    else
-        accel_gather_triangle(buf, c->src.positions, c->src.indices, c->bvh->prim_index[slot]);
-    return isect_triangle_zero_area(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8]);
+    uint32_t mask = 0;
+    for (uint32_t j = 0; j < n; j += 4) {
+        float buf[4][9];
+        const float *row[4];
+        const uint32_t m = n - j < 4 ? n - j : 4;
+        for (uint32_t k = 0; k < 4; k++) {
+            if (k >= m) {
+                row[k] = row[m - 1];
+                continue;
+            }
+            const uint32_t slot = first + j + k;
+            if (c->src.tri) {
+                row[k] = &c->src.tri[9 * (size_t)slot];
+            } else {
+                accel_gather_triangle(buf[k], c->src.positions, c->src.indices,
+                                      c->bvh->prim_index[slot]);
+                row[k] = buf[k];
+            }
+        }
+        mask |= ((uint32_t)rows_zero_mask(row) & ((1u << m) - 1u)) << j;
+    }
+    return mask;
 }
 
 /*
@@ -1083,10 +1148,12 @@ static int slot_zero_area(const struct collapse *c, uint32_t slot)
  * its box (a binary node's, bit for bit), and its count is the
  * triangles left (live).  A node keeps at least one lane: when every
  * lane would go (a subtree of zero-area triangles only), the first stays
- * whole, its triangles as NaN lanes.  Depends on nothing but the node,
- * as gather, so the bytes are the same on any pool.  A layout that left
- * triangles out cannot be refit in place (accel_refit4): a moved vertex
- * can give such a triangle an area.
+ * whole, its triangles as NaN lanes.  The test is the packets' own (four
+ * triangles at a time), and the packets of a lane it passed are filled
+ * without it (known).  Depends on nothing but the node, as gather, so
+ * the bytes are the same on any pool.  A layout that left triangles out
+ * cannot be refit in place (accel_refit4): a moved vertex can give such
+ * a triangle an area.
  */
 static void drop_zero_area(const struct collapse *c, struct scratch_node *s)
 {
@@ -1095,6 +1162,7 @@ static void drop_zero_area(const struct collapse *c, struct scratch_node *s)
         /* (A range leaf's count can pass 31; its kept is not read.) */
         s->kept[l] = s->count[l] < 32 ? (1u << s->count[l]) - 1u : UINT32_MAX;
     }
+    s->known = 0;
     if (!c->drop)
         return;
     struct scratch_node t = *s;
@@ -1102,17 +1170,14 @@ static void drop_zero_area(const struct collapse *c, struct scratch_node *s)
     uint32_t inner = 0;
     for (int l = 0; l < s->lanes; l++) {
         if (!(s->inner >> l & 1u)) {
-            uint32_t kept = 0, live = 0;
-            for (uint32_t j = 0; j < s->count[l]; j++) {
-                if (!slot_zero_area(c, s->first[l] + j)) {
-                    kept |= 1u << j;
-                    live++;
-                }
-            }
-            if (!live)
+            const uint32_t zero = slots_zero_mask(c, s->first[l], s->count[l]);
+            if (zero == t.kept[l])
                 continue;
-            t.live[l] = live;
-            t.kept[l] = kept;
+            t.kept[l] &= ~zero;
+            t.live[l] = 0;
+            for (uint32_t j = 0; j < s->count[l]; j++)
+                t.live[l] += t.kept[l] >> j & 1u;
+            s->known |= 1u << lanes;
         } else {
             inner |= 1u << lanes;
         }
@@ -1125,9 +1190,13 @@ static void drop_zero_area(const struct collapse *c, struct scratch_node *s)
         lanes++;
     }
     if (!lanes) {
-        /* Every lane a leaf of zero-area triangles: the first one whole. */
+        /* Every lane a leaf of zero-area triangles: the first one whole
+         * (its packets' fill marks them). */
         *s = t;
         s->lanes = 1;
+        s->live[0] = s->count[0];
+        s->kept[0] = (1u << s->count[0]) - 1u;
+        s->known = 0;
         return;
     }
     s->lanes = lanes;
@@ -1244,7 +1313,7 @@ static void write_kept(const struct collapse *c, const struct scratch_node *s, i
             }
         }
         c->packet_slot[p] = slots[j];
-        fill_packet_rows(&c->packets[p], row, NULL, 0, m);
+        fill_packet_rows(&c->packets[p], row, NULL, 0, m, 0);
         memcpy(c->packets[p].prim, prim, sizeof(prim));
     }
 }
@@ -1266,14 +1335,15 @@ static void write_scratch(const struct collapse *c, const struct scratch_node *s
             write_kept(c, s, l, child_base[0]);
             continue;
         }
+        const int test = !(s->known >> l & 1u);
         for (uint32_t j = 0; j < s->count[l]; j += 4) {
             uint32_t p = s->child[l] + child_base[0] + j / 4;
             uint32_t n = s->count[l] - j < 4 ? s->count[l] - j : 4;
             c->packet_slot[p] = slot + j;
             if (c->src.tri)
-                fill_packet(&c->packets[p], c->src.tri, c->bvh->prim_index, slot + j, n);
+                fill_packet(&c->packets[p], c->src.tri, c->bvh->prim_index, slot + j, n, test);
             else
-                fill_packet_mesh(&c->packets[p], &c->src, c->bvh->prim_index, slot + j, n);
+                fill_packet_mesh(&c->packets[p], &c->src, c->bvh->prim_index, slot + j, n, test);
         }
     }
     if (width == 4)
@@ -1808,7 +1878,7 @@ int accel_refit4(struct bvh4 *wide, const struct bvh *bvh, const float *tri)
         uint32_t n = 1;
         while (n < 4 && (wide->packets[p].prim[n] != wide->packets[p].prim[n - 1]))
             n++;
-        fill_packet(&wide->packets[p], tri, NULL, slot, n);
+        fill_packet(&wide->packets[p], tri, NULL, slot, n, 1);
     }
     return 0;
 }
