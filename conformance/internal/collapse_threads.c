@@ -100,10 +100,12 @@ static int slot_zero(const float *tri, uint32_t j)
 }
 
 /* Every lane of w (with packets) against reference_span: a leaf lane is a
- * binary leaf or a subtree of span 1..BVH_WIDE_MERGE with those slots, or
- * one of span up to BVH_WIDE_MERGE_LEFT (a closed lane the area heuristic
- * made a leaf: counted in *merged_left); an inner lane none of these
- * (spans above BVH_WIDE_MERGE may be either).  A leaf lane holds its
+ * binary leaf or a subtree of span 1..BVH_WIDE_MERGE with those slots
+ * (or, where w left zero-area triangles out, of at most BVH_WIDE_MERGE
+ * other triangles in at most BVH_WIDE_MAX_LEAF slots), or one of span up
+ * to BVH_WIDE_MERGE_LEFT (a closed lane the area heuristic made a leaf:
+ * counted in *merged_left); an inner lane none of these (spans above
+ * BVH_WIDE_MERGE may be either).  A leaf lane holds its
  * span's triangles of non-zero area (tri, leaf order), its first packet's
  * slot the first of them; the zero-area ones are left out
  * (drop_zero_area), and a lane of only such triangles is not in the node
@@ -131,15 +133,20 @@ static void check_lanes(const char *what, const struct bvh4 *w, const struct bvh
             uint32_t first = 0;
             uint32_t span = reference_span(b, i, &first);
             int binary_leaf = b->nodes[i].count != 0;
-            int must_leaf = binary_leaf || (span != 0 && span <= BVH_WIDE_MERGE);
-            int may_leaf = must_leaf || (span != 0 && span <= BVH_WIDE_MERGE_LEFT);
             uint32_t live = 0, first_live = UINT32_MAX;
-            for (uint32_t j = first; may_leaf && j < first + span; j++) {
+            for (uint32_t j = first; span != 0 && j < first + span; j++) {
                 if (!slot_zero(tri, j)) {
                     live++;
                     first_live = first_live == UINT32_MAX ? j : first_live;
                 }
             }
+            /* A layout that left zero-area triangles out merges a
+             * subtree by its other triangles (small_span_live): one
+             * packet of them, in at most BVH_WIDE_MAX_LEAF slots. */
+            int must_leaf = binary_leaf || (span != 0 && span <= BVH_WIDE_MERGE) ||
+                            (w->dropped && span != 0 && span <= BVH_WIDE_MAX_LEAF &&
+                             live <= BVH_WIDE_MERGE);
+            int may_leaf = must_leaf || (span != 0 && span <= BVH_WIDE_MERGE_LEFT);
             const int whole = live == 0 && lanes == 1 && count == span &&
                               w->packet_slot[child] == first;
             if (count == 0)

@@ -13,6 +13,9 @@
  * order) and packets in one 64-byte aligned block.  Given a pool, both
  * share the items between its threads, with the same bytes as on one
  * thread (struct collapse).
+ * A layout with many zero-area triangles is collapsed a second time
+ * leaving them out of its leaves (collapse_wide_dropping,
+ * drop_zero_area).
  * collapse4_avx2.c compiles this file again for AVX2 (the octant orders
  * and the packets' zero-area test four lanes of doubles at a time), with
  * the same bytes; accel_collapse_wide_reuse takes it where the CPU runs
@@ -1217,12 +1220,13 @@ static uint32_t slots_zero_mask(const struct collapse *c, uint32_t first, uint32
  * its box (a binary node's, bit for bit), and its count is the
  * triangles left (live).  A node keeps at least one lane: when every
  * lane would go (a subtree of zero-area triangles only), the first stays
- * whole, its triangles as NaN lanes.  The test is the packets' own (four
- * triangles at a time), and the packets of a lane it passed are filled
- * without it (known).  Depends on nothing but the node, as gather, so
- * the bytes are the same on any pool.  A layout that left triangles out
- * cannot be refit in place (accel_refit4): a moved vertex can give such
- * a triangle an area.
+ * whole, its triangles as NaN lanes.  Which triangles have zero area
+ * is c->zero's (zero_slots: the packets' own test), so the packets of a
+ * lane are filled without the test (known).  Depends on nothing but the
+ * node, as gather, so the bytes are the same on any pool.  A layout that
+ * left triangles out cannot be refit in place (accel_refit4): a moved
+ * vertex can give such a triangle an area.  Only the second collapse of
+ * collapse_wide_dropping leaves triangles out (c->drop).
  */
 static void drop_zero_area(const struct collapse *c, struct scratch_node *s)
 {

@@ -33,7 +33,7 @@ struct collapse_triangles {
     const uint32_t *indices;
     /* 1: zero-area triangles stay in the leaves (as NaN lanes), so that
      * the layout can be refit in place (accel_refit4); 0: they are left
-     * out (collapse4.c, drop_zero_area). */
+     * out where they are many (collapse4.c, collapse_wide_dropping). */
     int keep_zero_area;
 };
 

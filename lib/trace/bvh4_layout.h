@@ -57,10 +57,13 @@
  *
  * A leaf of n triangles is ceil(n / 4) consecutive packets; the lanes of
  * the last one beyond n repeat its last triangle and are never tested.
- * The collapse leaves zero-area triangles out of a leaf (n counts the
- * others, in slot order) and a leaf of only such triangles out of its
- * node, unless told to keep them for a refit (collapse4.c,
- * drop_zero_area).
+ * Where at least 1 in 32 triangles has zero area (and the caller does not
+ * keep them for a refit), the collapse leaves them out of the leaves (n
+ * counts the others, in slot order; a subtree merges into a lane by
+ * them: up to BVH_WIDE_MERGE others in up to BVH_WIDE_MAX_LEAF slots)
+ * and a leaf of only such triangles out of its node (collapse4.c,
+ * collapse_wide_dropping, drop_zero_area); elsewhere they stay as NaN
+ * lanes.
  * A leaf lane is a binary leaf, or a binary subtree of at most
  * BVH_WIDE_MERGE triangles in consecutive leaf slots, or one of at most
  * BVH_WIDE_MERGE_LEFT under a full wide node where the area heuristic
@@ -167,8 +170,8 @@ struct bvh4 {
     float leaf_extent;
     /* The zero-area triangles the collapse left out of the leaves
      * (collapse4.c, drop_zero_area; never hit by any ray); 0 when it kept
-     * them (struct collapse_triangles, keep_zero_area) or there were
-     * none.  Such a layout cannot be refit in place (accel_refit4). */
+     * them (struct collapse_triangles, keep_zero_area; or they were
+     * fewer than 1 in 32 triangles) or there were none.  Such a layout cannot be refit in place (accel_refit4). */
     uint32_t dropped;
     /* The nodes and packets in one block (rt_malloc_large: 2 MB huge
      * pages where the OS offers them). */
@@ -185,8 +188,8 @@ struct bvh4 {
  * BVH_WIDE_MERGE_LEFT left closed under a full node when their packets
  * cost no more than a node by the area heuristic), and copies the triangles of
  * tri (accel_gather_triangles' leaf order) into packets, leaving out the
- * zero-area triangles, which no ray hits (collapse4.c, drop_zero_area;
- * out->dropped counts them).  *out is output only.  Returns 0, or -1 on
+ * zero-area triangles, which no ray hits, where they are many (the layout
+ * above; out->dropped counts them).  *out is output only.  Returns 0, or -1 on
  * allocation failure (or another width) with *out zeroed.  Implemented
  * in lib/accel.
  */
