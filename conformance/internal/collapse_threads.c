@@ -113,7 +113,7 @@ static int slot_zero(const float *tri, uint32_t j)
  * non-zero area is in exactly one lane, and w->dropped counts the
  * others. */
 static void check_lanes(const char *what, const struct bvh4 *w, const struct bvh *b,
-                        const float *tri, uint32_t *merged_left)
+                        const float *tri, int greedy, uint32_t *merged_left)
 {
     int bad = 0;
     uint32_t in_lanes = 0, zero = 0;
@@ -140,11 +140,12 @@ static void check_lanes(const char *what, const struct bvh4 *w, const struct bvh
                     first_live = first_live == UINT32_MAX ? j : first_live;
                 }
             }
-            /* A layout that left zero-area triangles out merges a
-             * subtree by its other triangles (small_span_live): one
-             * packet of them, in at most BVH_WIDE_MAX_LEAF slots. */
+            /* A greedy layout that left zero-area triangles out merges
+             * a subtree by its other triangles (small_span_live): one
+             * packet of them, in at most BVH_WIDE_MAX_LEAF slots (the
+             * optimal collapse's costs count every triangle). */
             int must_leaf = binary_leaf || (span != 0 && span <= BVH_WIDE_MERGE) ||
-                            (w->dropped && span != 0 && span <= BVH_WIDE_MAX_LEAF &&
+                            (greedy && w->dropped && span != 0 && span <= BVH_WIDE_MAX_LEAF &&
                              live <= BVH_WIDE_MERGE);
             int may_leaf = must_leaf || (span != 0 && span <= BVH_WIDE_MERGE_LEFT);
             const int whole = live == 0 && lanes == 1 && count == span &&
@@ -318,7 +319,7 @@ static void check_mesh(const char *scene, const struct tg_mesh *m, struct rt_poo
             }
             uint32_t merged_left = 0;
             if (!ranges) {
-                check_lanes(scene, &ref, &b, leaves, &merged_left);
+                check_lanes(scene, &ref, &b, leaves, !opt, &merged_left);
                 /* The zero-area mesh's layouts leave triangles out. */
                 if (!strcmp(scene, "zero-area"))
                     failures += !CHECKF(ref.dropped > 0, "zero-area: no triangle left out");
