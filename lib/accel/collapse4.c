@@ -132,17 +132,8 @@ static uint32_t small_span(const struct bvh *bvh, uint32_t i, uint32_t budget, u
  * triangles would be; where zero is 0 throughout, the same spans as
  * small_span(budget) (every live count is its span, and cap >= budget).
  * The cap cuts the walk short as small_span's budget does. */
-/* Out of line: inlined into leaf_lane, it made set_lane, which every
- * collapse calls once a lane, save more registers (bumpy's collapse +2 %
- * instructions without a zero-area triangle). */
-#if defined(__GNUC__)
-#define COLLAPSE_NOINLINE __attribute__((noinline))
-#else
-#define COLLAPSE_NOINLINE
-#endif
-static COLLAPSE_NOINLINE uint32_t small_span_live(const struct bvh *bvh, const uint8_t *zero,
-                                                  uint32_t i, uint32_t budget, uint32_t cap,
-                                                  uint32_t *first, uint32_t *live)
+static uint32_t small_span_live(const struct bvh *bvh, const uint8_t *zero, uint32_t i,
+                                uint32_t budget, uint32_t cap, uint32_t *first, uint32_t *live)
 {
     const struct bvh_node *node = &bvh->nodes[i];
     if (node->count) {
@@ -184,6 +175,21 @@ static COLLAPSE_NOINLINE uint32_t small_span_live(const struct bvh *bvh, const u
     return 0;
 }
 
+/* leaf_lane's merge by the triangles of non-zero area: small_span_live
+ * of one packet in at most BVH_WIDE_MAX_LEAF slots.  Out of line, with
+ * its live count local: in set_lane, which every collapse calls once a
+ * lane, the count's stack slot gave every call a frame (bumpy's
+ * collapse, without a zero-area triangle, +2 % instructions). */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static uint32_t leaf_span_live(const struct bvh *bvh, const uint8_t *zero, uint32_t i,
+                               uint32_t *first)
+{
+    uint32_t live;
+    return small_span_live(bvh, zero, i, BVH_WIDE_MERGE, BVH_WIDE_MAX_LEAF, first, &live);
+}
+
 /* Whether binary node i is a leaf of the wide layout (a binary leaf, or,
  * with triangles, a small subtree in consecutive slots), and then its
  * triangles or slots (*count) from *first.  Range leaves (no triangles)
@@ -199,25 +205,22 @@ static int leaf_lane(const struct bvh *bvh, const float *tri, const uint8_t *zer
         *count = node->count;
         return 1;
     }
-    uint32_t live;
-    *count = !tri ? 0
-             : zero
-                 ? small_span_live(bvh, zero, i, BVH_WIDE_MERGE, BVH_WIDE_MAX_LEAF, first, &live)
-                 : small_span(bvh, i, BVH_WIDE_MERGE, first);
+    *count = !tri ? 0 : zero ? leaf_span_live(bvh, zero, i, first)
+                             : small_span(bvh, i, BVH_WIDE_MERGE, first);
     return *count != 0;
 }
 
-/* Lane l of s is binary node i: its area, and whether it is inner (then
- * count 0) or a leaf (count and first its slots). */
-static void set_lane(const struct bvh *bvh, const float *tri, const uint8_t *zero,
-                     struct scratch_node *s, int l, uint32_t i, float *area)
+/* Lane l of s is binary node i: whether it is inner (then
+ * count 0) or a leaf (count and first its slots); returns its area. */
+static float set_lane(const struct bvh *bvh, const float *tri, const uint8_t *zero,
+                      struct scratch_node *s, int l, uint32_t i)
 {
     s->source[l] = i;
-    *area = node_area(&bvh->nodes[i]);
     if (leaf_lane(bvh, tri, zero, i, &s->first[l], &s->count[l]))
         s->inner &= ~(1u << l);
     else
         s->inner |= 1u << l;
+    return node_area(&bvh->nodes[i]);
 }
 
 /* The binary nodes wide node s over binary inner node `inner` holds:
@@ -232,8 +235,8 @@ static void gather(const struct bvh *bvh, const float *tri, const uint8_t *zero,
      * picks). */
     float area[MAX_WIDTH];
     s->inner = 0;
-    set_lane(bvh, tri, zero, s, 0, bvh->nodes[inner].first, &area[0]);
-    set_lane(bvh, tri, zero, s, 1, bvh->nodes[inner].first + 1, &area[1]);
+    area[0] = set_lane(bvh, tri, zero, s, 0, bvh->nodes[inner].first);
+    area[1] = set_lane(bvh, tri, zero, s, 1, bvh->nodes[inner].first + 1);
     uint32_t n = 2;
     while (n < width) {
         int pick = -1;
@@ -247,8 +250,8 @@ static void gather(const struct bvh *bvh, const float *tri, const uint8_t *zero,
         if (pick < 0)
             break;
         uint32_t first = bvh->nodes[s->source[pick]].first;
-        set_lane(bvh, tri, zero, s, pick, first, &area[pick]);
-        set_lane(bvh, tri, zero, s, (int)n, first + 1, &area[n]);
+        area[pick] = set_lane(bvh, tri, zero, s, pick, first);
+        area[n] = set_lane(bvh, tri, zero, s, (int)n, first + 1);
         n++;
     }
     s->lanes = (int)n;
