@@ -1021,8 +1021,7 @@ static inline int rows_zero_mask(const float *const row[4])
  * too.  test 0: the caller knows that every row has an area
  * (drop_zero_area tested them), so the zero-area test is left out (its
  * answer would be 0 for every lane: the same bytes).  Returns the lanes
- * found of zero area (bit l; lanes past n may repeat lane n - 1's bit; 0
- * without the test). */
+ * below n found of zero area (bit l; 0 without the test). */
 static inline int fill_packet_rows(struct tri4_packet *p, const float *const row[4],
                                    const uint32_t *prim_index, uint32_t slot, uint32_t n,
                                    int test)
@@ -1047,7 +1046,7 @@ static inline int fill_packet_rows(struct tri4_packet *p, const float *const row
         for (uint32_t l = 0; l < 4; l++)
             p->prim[l] = prim_index[slot + (l < n ? l : n - 1)];
     }
-    return zero; /* (lanes past n too: the caller masks, rarely) */
+    return zero & ((1 << n) - 1);
 #else
     int zero = 0;
     for (uint32_t l = 0; l < n; l++) {
@@ -1483,7 +1482,7 @@ static void write_scratch(const struct collapse *c, const struct scratch_node *s
                 /* Rare (gears: 80 of 880 triangles; the kitchen 41 of
                  * 110,561): an atomic add per such packet. */
                 uint32_t found = 0;
-                for (uint32_t k = 0; k < n; k++)
+                for (int k = 0; k < 4; k++)
                     found += (uint32_t)zero >> k & 1u;
                 rt_atomic_fetch_add_relaxed(c->zero_found, found);
             }
