@@ -47,22 +47,6 @@
 #define RENDER_QUADS 0
 #endif
 
-/* The AVX-512 copy (render_avx512.c) makes a 4 x 2 block's eight rays,
- * both block rows, in the eight double lanes of a 512-bit vector and
- * unprojects a row eight points at a time: the same IEEE operations lane
- * by lane once more.  The divider's work does not shrink (a 512-bit
- * vdivpd or vsqrtpd takes it about twice a 256-bit one's time on Intel's
- * cores, Fog, "Instruction tables"); what halves is the rest of the
- * block's vector instructions (loads, sums, products, conversions), and
- * the packet's points are stored by two permutes in place of store_points4's
- * five shuffles a quad. */
-#if RENDER_QUADS && defined(RENDER_UNIT_AVX512) && defined(__AVX512F__) && \
-    defined(__AVX512DQ__)
-#define RENDER_OCTS 1
-#else
-#define RENDER_OCTS 0
-#endif
-
 /* The eye light's block pipeline of the shading copy for this copy's
  * instruction set (shade.h): the AVX-512 one in render_avx512.c, the
  * AVX2 one in render_avx2.c. */
@@ -275,23 +259,6 @@ static inline __m256d quad_distance_to_line(const __m256d a[3], const __m256d d[
 }
 #endif
 
-#if RENDER_OCTS
-/* pair_distance_to_line in eight lanes. */
-static inline __m512d oct_distance_to_line(const __m512d a[3], const __m512d d[3])
-{
-    const __m512d along = _mm512_add_pd(
-        _mm512_add_pd(_mm512_mul_pd(a[0], d[0]), _mm512_mul_pd(a[1], d[1])),
-        _mm512_mul_pd(a[2], d[2]));
-    const __m512d perp0 = _mm512_sub_pd(a[0], _mm512_mul_pd(along, d[0]));
-    __m512d r2 = _mm512_mul_pd(perp0, perp0);
-    for (int k = 1; k < 3; k++) {
-        const __m512d perp = _mm512_sub_pd(a[k], _mm512_mul_pd(along, d[k]));
-        r2 = _mm512_add_pd(r2, _mm512_mul_pd(perp, perp));
-    }
-    return _mm512_sqrt_pd(r2);
-}
-#endif
-
 /* Distances from q[0..3] to the line through p along the unit vector
  * d: the same operations for each, in this order. */
 static void distances_to_line(const double *const q[4], const double p[3], const double d[3],
@@ -418,33 +385,6 @@ static void unproject_row_fill(const struct render_pass *sh, const struct unproj
         last4[r] = _mm256_set1_pd(m[12 + r]);
     }
     __m256d sum4 = _mm256_setzero_pd();
-#if RENDER_OCTS
-    /* Eight points a lane each first, the same sums in the same order. */
-    __m512d axis8[4], zn8[4], zf8[4], last8[4];
-    for (int r = 0; r < 4; r++) {
-        axis8[r] = _mm512_set1_pd(u->axis[r]);
-        zn8[r] = _mm512_set1_pd(m[8 + r] * -1.0);
-        zf8[r] = _mm512_set1_pd(m[8 + r] * 1.0);
-        last8[r] = _mm512_set1_pd(m[12 + r]);
-    }
-    __m512d sum8 = _mm512_setzero_pd();
-    for (; first_pair + 7 < UNPROJECT_COLS; first_pair += 8) {
-        const int i = first_pair;
-        const __m512d s3 = _mm512_add_pd(_mm512_loadu_pd(&c->col[3][i]), axis8[3]);
-        const __m512d wn = _mm512_add_pd(_mm512_add_pd(s3, zn8[3]), last8[3]);
-        const __m512d wf = _mm512_add_pd(_mm512_add_pd(s3, zf8[3]), last8[3]);
-        for (int r = 0; r < 3; r++) {
-            const __m512d s = _mm512_add_pd(_mm512_loadu_pd(&c->col[r][i]), axis8[r]);
-            const __m512d n = _mm512_div_pd(_mm512_add_pd(_mm512_add_pd(s, zn8[r]), last8[r]), wn);
-            const __m512d f = _mm512_div_pd(_mm512_add_pd(_mm512_add_pd(s, zf8[r]), last8[r]), wf);
-            _mm512_storeu_pd(&u->near_pt[r][i], n);
-            _mm512_storeu_pd(&u->far_pt[r][i], f);
-            sum8 = _mm512_add_pd(_mm512_add_pd(sum8, n), f);
-        }
-    }
-    /* The eight lanes' sums into the quad's (any order, as below). */
-    sum4 = _mm256_add_pd(_mm512_castpd512_pd256(sum8), _mm512_extractf64x4_pd(sum8, 1));
-#endif
     for (; first_pair + 3 < UNPROJECT_COLS; first_pair += 4) {
         const int i = first_pair;
         const __m256d s3 = _mm256_add_pd(_mm256_loadu_pd(&c->col[3][i]), axis4[3]);
@@ -744,88 +684,6 @@ static inline int ray_quad(const struct unproject_row *a, const struct unproject
 }
 #endif
 
-#if RENDER_OCTS
-/* Row a's four points from i in the low lanes, row b's in the high ones. */
-static inline __m512d oct_load(const double *a, const double *b)
-{
-    return _mm512_insertf64x4(_mm512_castpd256_pd512(_mm256_loadu_pd(a)), _mm256_loadu_pd(b), 1);
-}
-
-/* Eight points given coordinate by coordinate (x, y, z) into out[8][3]:
- * x and y as one vector of sixteen, z the other source of two permutes
- * (the first sixteen floats, then the last eight). */
-static inline void store_points8(float *out, __m256 x, __m256 y, __m256 z)
-{
-    /* Float j of out is coordinate j % 3 of point j / 3: x[p] is index p of
-     * the pair of sources, y[p] 8 + p, z[p] 16 + p. */
-    const __m512i lo = _mm512_setr_epi32(0, 8, 16, 1, 9, 17, 2, 10, 18, 3, 11, 19, 4, 12, 20, 5);
-    const __m512i hi = _mm512_setr_epi32(13, 21, 6, 14, 22, 7, 15, 23, 0, 0, 0, 0, 0, 0, 0, 0);
-    const __m512 xy = _mm512_insertf32x8(_mm512_castps256_ps512(x), y, 1);
-    const __m512 zz = _mm512_castps256_ps512(z);
-    _mm512_storeu_ps(out, _mm512_permutex2var_ps(xy, lo, zz));
-    _mm256_storeu_ps(out + 16, _mm512_castps512_ps256(_mm512_permutex2var_ps(xy, hi, zz)));
-}
-
-/* ray_quad of the block's two rows at once: lanes 0 to 3 the pixels at
- * points i to i + 3 of row a (b the row below), lanes 4 to 7 those of row
- * b (c below it), each lane primary_ray's operations in its order, so
- * the same floats as ray_quad's.  Returns the mask of the lanes whose
- * length is positive and finite. */
-static inline unsigned ray_oct(const struct unproject_row *a, const struct unproject_row *b,
-                               const struct unproject_row *c, int i, struct trace_packet *pk,
-                               struct shade_cone cone[], struct shade_eye_rays *rays)
-{
-    __m512d p[3], d[3];
-    for (int k = 0; k < 3; k++) {
-        p[k] = oct_load(&a->near_pt[k][i], &b->near_pt[k][i]);
-        d[k] = _mm512_sub_pd(oct_load(&a->far_pt[k][i], &b->far_pt[k][i]), p[k]);
-    }
-    store_points8(&pk->org[0][0], _mm512_cvtpd_ps(p[0]), _mm512_cvtpd_ps(p[1]),
-                  _mm512_cvtpd_ps(p[2]));
-    const __m512d len = _mm512_sqrt_pd(
-        _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(d[0], d[0]), _mm512_mul_pd(d[1], d[1])),
-                      _mm512_mul_pd(d[2], d[2])));
-    const unsigned ok =
-        _mm512_cmp_pd_mask(len, _mm512_setzero_pd(), _CMP_GT_OQ) &
-        _mm512_cmp_pd_mask(len, _mm512_set1_pd(INFINITY), _CMP_LT_OQ);
-    _mm256_storeu_ps(pk->tmax, _mm512_cvtpd_ps(len));
-    __m256 dir_f[3];
-    for (int k = 0; k < 3; k++) {
-        d[k] = _mm512_div_pd(d[k], len);
-        dir_f[k] = _mm512_cvtpd_ps(d[k]);
-        _mm256_storeu_ps(rays->dir[k], dir_f[k]);
-    }
-    store_points8(&pk->dir[0][0], dir_f[0], dir_f[1], dir_f[2]);
-    __m512d dist[4];
-    for (int h = 0; h < 4; h++) {
-        /* h = 0: the right neighbours' near points, 1: the lower ones', 2
-         * and 3 their far points. */
-        const struct unproject_row *q0 = h % 2 ? b : a, *q1 = h % 2 ? c : b;
-        const int at = h % 2 ? i : i + 1;
-        __m512d v[3];
-        for (int k = 0; k < 3; k++)
-            v[k] = _mm512_sub_pd(h < 2 ? oct_load(&q0->near_pt[k][at], &q1->near_pt[k][at])
-                                       : oct_load(&q0->far_pt[k][at], &q1->far_pt[k][at]),
-                                 p[k]);
-        dist[h] = oct_distance_to_line(v, d);
-    }
-    /* max_left as vmaxpd with y first, as maxpd in ray_pair. */
-    const __m512d zero = _mm512_setzero_pd();
-    const __m512d width = _mm512_max_pd(dist[1], _mm512_max_pd(dist[0], zero));
-    const __m512d growth = _mm512_max_pd(_mm512_sub_pd(dist[3], dist[1]),
-                                         _mm512_max_pd(_mm512_sub_pd(dist[2], dist[0]), zero));
-    const __m512d spread = _mm512_div_pd(growth, len);
-    const __m256 w = _mm512_cvtpd_ps(width), sp = _mm512_cvtpd_ps(spread);
-    _mm256_storeu_ps(rays->width, w);
-    _mm256_storeu_ps(rays->spread, sp);
-    /* The cones {width, spread} lane by lane: w[p] at 2 p, sp[p] at 2 p + 1. */
-    const __m512i ws = _mm512_setr_epi32(0, 8, 1, 9, 2, 10, 3, 11, 4, 12, 5, 13, 6, 14, 7, 15);
-    _mm512_storeu_ps((float *)cone,
-                     _mm512_permutexvar_ps(ws, _mm512_insertf32x8(_mm512_castps256_ps512(w), sp, 1)));
-    return ok;
-}
-#endif
-
 /* What block_rays writes beside the packet: the rays by component
  * where the AVX2 copy's eye light reads them (shade.h), else nothing. */
 #if RENDER_QUADS
@@ -846,12 +704,7 @@ struct block_lanes {
 static inline int block_rays(const struct unproject_cache *c, int i, struct trace_packet *pk,
                              struct shade_cone cone[], struct block_lanes *lanes)
 {
-#if RENDER_OCTS
-    /* The block's two rows in one vector. */
-    const unsigned ok = ray_oct(c->rows[0], c->rows[1], c->rows[2], i, pk, cone, &lanes->rays);
-    _mm256_storeu_ps(pk->tmin, _mm256_setzero_ps());
-    return ok == 0xffu;
-#elif RENDER_QUADS
+#if RENDER_QUADS
     /* A block row a quad. */
     const int ok = ray_quad(c->rows[0], c->rows[1], i, pk, 0, cone, &lanes->rays) &
                    ray_quad(c->rows[1], c->rows[2], i, pk, 4, cone, &lanes->rays);
