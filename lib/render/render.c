@@ -345,97 +345,7 @@ struct unproject_cache {
     struct unproject_row *rows[UNPROJECT_ROWS]; /* row y + r: a ring over store */
     struct unproject_row store[UNPROJECT_ROWS];
     double col[4][UNPROJECT_COLS]; /* unproject_axis of each column, by product */
-#if RENDER_PAIRS
-    /* 1 when the rows are made by unproject_split_fill (unproject_split_init
-     * says when): then the columns' x of the near and far points, which
-     * are every row's, 1 in x_ok where both are finite, and the z of
-     * every near and far point. */
-    int split;
-    double x_near[UNPROJECT_COLS], x_far[UNPROJECT_COLS];
-    signed char x_ok[UNPROJECT_COLS];
-    double z_near, z_far;
-#endif
 };
-
-#if RENDER_PAIRS
-/*
- * A perspective or orthographic projection (glFrustum, gluPerspective,
- * glOrtho) has an inverse whose x comes from the viewport's x alone, its
- * y from y alone, its w and z from neither: entries of the inverse that
- * are zeros, whose products with the coordinate are zeros (+0 or -0).
- * unproject_row_fill's sums of a point's coordinate r are then ((a + b)
- * + c) + d with the zero among a, b: adding a zero to a nonzero double
- * gives that double, and a sum of zeros is a zero whose sign can only
- * matter while every term is a zero, so each coordinate is one double for
- * every row (x, w, z) or every column (y) as long as a term after the
- * zero products is not zero.  Where every such condition holds, a row's
- * points are the columns' x, the row's y and the frame's z, each
- * division made once (a column's x once a tile, a row's y once a row)
- * instead of six divisions a point; the same doubles bit for bit.
- * Returns 0, and leaves the rows to unproject_row_fill, otherwise.
- */
-static int unproject_split_init(const struct render_pass *sh, struct unproject_cache *c)
-{
-    const double *m = sh->inv_projection;
-    /* x from the column (m[4] y is a zero), y from the row (m[1] x), z
-     * and w from neither (m[2] x, m[6] y; m[3] x, m[7] y). */
-    if (m[4] != 0.0 || m[1] != 0.0 || m[2] != 0.0 || m[6] != 0.0 || m[3] != 0.0 ||
-        m[7] != 0.0)
-        return 0;
-    /* The terms after the zeros: w's and z's, never both zero. */
-    if ((m[11] == 0.0 && m[15] == 0.0) || (m[10] == 0.0 && m[14] == 0.0))
-        return 0;
-    /* The sums as unproject_row_fill makes them, with +0 for each zero
-     * product: s3 = 0 + 0, w = (s3 + z m[11]) + m[15]. */
-    const double zero = 0.0;
-    const double s3 = zero + zero, s2 = zero + zero;
-    const double wn = (s3 + m[11] * -1.0) + m[15], wf = (s3 + m[11] * 1.0) + m[15];
-    c->z_near = ((s2 + m[10] * -1.0) + m[14]) / wn;
-    c->z_far = ((s2 + m[10] * 1.0) + m[14]) / wf;
-    const int z_ok = isfinite(c->z_near) && isfinite(c->z_far);
-    for (int i = 0; i < UNPROJECT_COLS; i++) {
-        const double x = c->col[0][i];
-        /* x's column product a zero, and the terms after it zeros too. */
-        if (x == 0.0 && m[8] == 0.0 && m[12] == 0.0)
-            return 0;
-        const double s0 = x + zero;
-        c->x_near[i] = ((s0 + m[8] * -1.0) + m[12]) / wn;
-        c->x_far[i] = ((s0 + m[8] * 1.0) + m[12]) / wf;
-        c->x_ok[i] = z_ok && isfinite(c->x_near[i]) && isfinite(c->x_far[i]) ? 1 : -1;
-    }
-    return 1;
-}
-
-/* Row y of a split cache (unproject_split_init) into u: unproject_row_fill's
- * points, the row's y from its own sums.  Returns 0, writing nothing,
- * when the row's y product and the terms after it are all zeros. */
-static int unproject_split_fill(const struct unproject_cache *c, const double *m,
-                                struct unproject_row *u)
-{
-    const double y = u->axis[1];
-    if (y == 0.0 && m[9] == 0.0 && m[13] == 0.0)
-        return 0;
-    const double zero = 0.0;
-    const double s3 = zero + zero, s1 = zero + y;
-    const double wn = (s3 + m[11] * -1.0) + m[15], wf = (s3 + m[11] * 1.0) + m[15];
-    const double y_near = ((s1 + m[9] * -1.0) + m[13]) / wn;
-    const double y_far = ((s1 + m[9] * 1.0) + m[13]) / wf;
-    const int y_ok = isfinite(y_near) && isfinite(y_far);
-    memcpy(u->near_pt[0], c->x_near, sizeof(c->x_near));
-    memcpy(u->far_pt[0], c->x_far, sizeof(c->x_far));
-    u->whole = 1;
-    for (int i = 0; i < UNPROJECT_COLS; i++) {
-        u->near_pt[1][i] = y_near;
-        u->far_pt[1][i] = y_far;
-        u->near_pt[2][i] = c->z_near;
-        u->far_pt[2][i] = c->z_far;
-        u->state[i] = y_ok ? c->x_ok[i] : -1;
-        if (i <= RENDER_TILE_SIZE)
-            u->whole &= u->state[i] > 0;
-    }
-    return 1;
-}
-#endif
 
 /* Row y of the cache's columns into u. */
 static void unproject_row_fill(const struct render_pass *sh, const struct unproject_cache *c,
@@ -443,8 +353,6 @@ static void unproject_row_fill(const struct render_pass *sh, const struct unproj
 {
     unproject_axis(sh, 1, y + 0.5, u->axis);
 #if RENDER_PAIRS
-    if (c->split && unproject_split_fill(c, sh->inv_projection, u))
-        return;
     /* mat4_project of two neighbours' near (z = -1) and far (z = 1)
      * points, a lane each: each sum in mat4_project's order, ((m0 x + m1
      * y) + m2 z) + m3, the shared first sum once; m2 z is the same
@@ -548,9 +456,6 @@ static void unproject_cache_init(const struct render_pass *sh, struct unproject_
         for (int r = 0; r < 4; r++)
             c->col[r][i] = col[r];
     }
-#if RENDER_PAIRS
-    c->split = unproject_split_init(sh, c);
-#endif
     for (int r = 0; r < UNPROJECT_ROWS; r++) {
         c->rows[r] = &c->store[r];
         unproject_row_fill(sh, c, c->rows[r], y + r);
