@@ -107,25 +107,9 @@ static inline __m256d lanes_log2_4_half(__m256d x)
 
 #if defined(__AVX512F__) && defined(__AVX512DQ__) && !defined(RT_NO_SIMD)
 /* lanes_log2_4_half in eight lanes (the AVX-512 copy; lod_fast_oct's
- * squared footprints): the same operations lane by lane but z's
- * quotient, so within the same bound (not the same doubles); the blend by
- * a mask register, and big's 1 / 2 or +0 added to e / 2 as there (e / 2 +
- * 0 is e / 2).
- *
- * z = a / b (a = m - 1 exact, b = m + 1 rounded as there) without the
- * divider, whose 512-bit vdivpd stands on a one-triangle block's chain:
- * vrcp14pd's r0 (|1 - b r0| < 2^-14, Intel SDM), one Newton step r1 = r0
- * + r0 (1 - b r0) (|1 - b r1| < 2^-28 + 2^-52), z0 = a r1, and the
- * correction z1 = z0 + r1 (a - b z0) (Markstein 1990), the residual and
- * both steps by fused multiply-adds (one rounding each; no hit or box
- * depends on this log2, only the levels of detail, whose callers keep a
- * result only within their margin of 2^-32, lod_fast's proof).  z1 = q +
- * e1 (z0 - q) with q = a / b, e1 = 1 - b r1 and z0 - q within 2^-28 +
- * 2^-53 of q: within 2^-55 of q before its own rounding, 2^-53, so z is
- * within 1.3 2^-53 of q relative where the division's was 2^-53; the
- * log2's bound (2^-48, the half's 2^-49) keeps its margin:
- * conformance/internal/shade_lanes checks this copy's half against
- * log2l / 2 over the same grid and random doubles. */
+ * squared footprints): the same operations lane by lane, so the same
+ * doubles; the blend by a mask register, and big's 1 / 2 or +0 added to
+ * e / 2 as there (e / 2 + 0 is e / 2). */
 static inline __m512d lanes_log2_8_half(__m512d x)
 {
     const __m512d one = _mm512_set1_pd(1.0);
@@ -139,11 +123,7 @@ static inline __m512d lanes_log2_8_half(__m512d x)
     const __mmask8 big = _mm512_cmp_pd_mask(m, _mm512_set1_pd(0x1.6a09e667f3bcdp+0), _CMP_GT_OQ);
     m = _mm512_mask_blend_pd(big, m, _mm512_mul_pd(m, _mm512_set1_pd(0.5)));
     e = _mm512_add_pd(e, _mm512_maskz_mov_pd(big, _mm512_set1_pd(0.5)));
-    const __m512d a = _mm512_sub_pd(m, one), b = _mm512_add_pd(m, one);
-    const __m512d r0 = _mm512_rcp14_pd(b);
-    const __m512d r1 = _mm512_fmadd_pd(r0, _mm512_fnmadd_pd(b, r0, one), r0);
-    const __m512d z0 = _mm512_mul_pd(a, r1);
-    const __m512d z = _mm512_fmadd_pd(r1, _mm512_fnmadd_pd(b, z0, a), z0);
+    const __m512d z = _mm512_div_pd(_mm512_sub_pd(m, one), _mm512_add_pd(m, one));
     const __m512d w = _mm512_mul_pd(z, z);
 #define C(k) _mm512_set1_pd(1.0 / (double)(k))
     const __m512d w2 = _mm512_mul_pd(w, w);
