@@ -47,22 +47,6 @@
 #define RENDER_QUADS 0
 #endif
 
-/* The AVX-512 copy (render_avx512.c) makes a 4 x 2 block's eight rays,
- * both block rows, in the eight double lanes of a 512-bit vector
- * (ray_oct): the same rays, cones and floats as the quads'.  What bounds
- * these rays on Intel's cores is the divider (a 512-bit vdivpd or vsqrtpd
- * takes it about twice a 256-bit one's time, Fog, "Instruction tables";
- * a square root half as long again as a division), and the quads take
- * five square roots a ray, four of them for the cone's distances:
- * ray_oct takes those by a reciprocal square root and products, and
- * keeps them where the cone's two floats are proven to be the quads'. */
-#if RENDER_QUADS && defined(RENDER_UNIT_AVX512) && defined(__AVX512F__) && \
-    defined(__AVX512DQ__)
-#define RENDER_OCTS 1
-#else
-#define RENDER_OCTS 0
-#endif
-
 /* The eye light's block pipeline of the shading copy for this copy's
  * instruction set (shade.h): the AVX-512 one in render_avx512.c, the
  * AVX2 one in render_avx2.c. */
@@ -272,59 +256,6 @@ static inline __m256d quad_distance_to_line(const __m256d a[3], const __m256d d[
         r2 = _mm256_add_pd(r2, _mm256_mul_pd(perp, perp));
     }
     return _mm256_sqrt_pd(r2);
-}
-#endif
-
-#if RENDER_OCTS
-/* pair_distance_to_line's square in eight lanes: its operations up to its
- * square root, so the same doubles. */
-static inline __m512d oct_square_distance_to_line(const __m512d a[3], const __m512d d[3])
-{
-    const __m512d along = _mm512_add_pd(
-        _mm512_add_pd(_mm512_mul_pd(a[0], d[0]), _mm512_mul_pd(a[1], d[1])),
-        _mm512_mul_pd(a[2], d[2]));
-    const __m512d perp0 = _mm512_sub_pd(a[0], _mm512_mul_pd(along, d[0]));
-    __m512d r2 = _mm512_mul_pd(perp0, perp0);
-    for (int k = 1; k < 3; k++) {
-        const __m512d perp = _mm512_sub_pd(a[k], _mm512_mul_pd(along, d[k]));
-        r2 = _mm512_add_pd(r2, _mm512_mul_pd(perp, perp));
-    }
-    return r2;
-}
-
-/*
- * The square root of x in [2^-960, 2^960] within 2^-51 of it, relative,
- * without the divider (whose 512-bit vsqrtpd the camera rays' cones took
- * four a ray): vrsqrt14pd's y0 (relative error below 2^-14, Intel SDM),
- * one Newton step y1 = y0 (3/2 - x y0^2 / 2) (relative error 3/2 2^-28 and
- * four roundings), s1 = x y1, and the correction s2 = s1 + y1 (x - s1^2) / 2
- * (Markstein 1990; x - s1^2 is exact, Sterbenz): s2 = sqrt(x) (1 - e1^2 / 2
- * - e1 e1') for s1's and y1's relative errors e1, e1' of some 2^-27.4,
- * below 2^-54 of it, plus s1^2's rounding (2^-54 of the root after the
- * halving) and the sum's (2^-53): below 2^-51 in all.  The range keeps
- * every step normal and finite.
- */
-static inline __m512d oct_root(__m512d x)
-{
-    const __m512d y0 = _mm512_rsqrt14_pd(x);
-    const __m512d u = _mm512_mul_pd(_mm512_mul_pd(x, y0), y0);
-    const __m512d y1 =
-        _mm512_mul_pd(y0, _mm512_sub_pd(_mm512_set1_pd(1.5), _mm512_mul_pd(_mm512_set1_pd(0.5), u)));
-    const __m512d s1 = _mm512_mul_pd(x, y1);
-    const __m512d r = _mm512_sub_pd(x, _mm512_mul_pd(s1, s1));
-    return _mm512_add_pd(s1, _mm512_mul_pd(_mm512_mul_pd(r, y1), _mm512_set1_pd(0.5)));
-}
-
-/* The lanes where float(v) is also the float of every value within
- * `relative` of v (v positive): the float of both ends of the interval
- * is v's.  Rounding is monotonic, so a value inside rounds to it too. */
-static inline __mmask8 oct_float_decided(__m512d v, double relative)
-{
-    const __m256 f = _mm512_cvtpd_ps(v);
-    return _mm256_cmp_ps_mask(_mm512_cvtpd_ps(_mm512_mul_pd(v, _mm512_set1_pd(1.0 - relative))),
-                              f, _CMP_EQ_OQ) &
-           _mm256_cmp_ps_mask(_mm512_cvtpd_ps(_mm512_mul_pd(v, _mm512_set1_pd(1.0 + relative))),
-                              f, _CMP_EQ_OQ);
 }
 #endif
 
@@ -753,111 +684,6 @@ static inline int ray_quad(const struct unproject_row *a, const struct unproject
 }
 #endif
 
-#if RENDER_OCTS
-/* Row a's four points from i in the low lanes, row b's in the high ones. */
-static inline __m512d oct_load(const double *a, const double *b)
-{
-    return _mm512_insertf64x4(_mm512_castpd256_pd512(_mm256_loadu_pd(a)), _mm256_loadu_pd(b), 1);
-}
-
-/* Eight points given coordinate by coordinate (x, y, z) into out[8][3]:
- * x and y as one vector of sixteen, z the other source of two permutes
- * (the first sixteen floats, then the last eight). */
-static inline void store_points8(float *out, __m256 x, __m256 y, __m256 z)
-{
-    /* Float j of out is coordinate j % 3 of point j / 3: x[p] is index p of
-     * the pair of sources, y[p] 8 + p, z[p] 16 + p. */
-    const __m512i lo = _mm512_setr_epi32(0, 8, 16, 1, 9, 17, 2, 10, 18, 3, 11, 19, 4, 12, 20, 5);
-    const __m512i hi = _mm512_setr_epi32(13, 21, 6, 14, 22, 7, 15, 23, 0, 0, 0, 0, 0, 0, 0, 0);
-    const __m512 xy = _mm512_insertf32x8(_mm512_castps256_ps512(x), y, 1);
-    const __m512 zz = _mm512_castps256_ps512(z);
-    _mm512_storeu_ps(out, _mm512_permutex2var_ps(xy, lo, zz));
-    _mm256_storeu_ps(out + 16, _mm512_castps512_ps256(_mm512_permutex2var_ps(xy, hi, zz)));
-}
-
-/* ray_quad of the block's two rows at once: lanes 0 to 3 the pixels at
- * points i to i + 3 of row a (b the row below), lanes 4 to 7 those of row
- * b (c below it), each lane primary_ray's operations in its order, so
- * the same floats as ray_quad's, but the cone's distances (below).
- * Returns the mask of the lanes whose length is positive and finite and
- * whose cone is decided. */
-static inline unsigned ray_oct(const struct unproject_row *a, const struct unproject_row *b,
-                               const struct unproject_row *c, int i, struct trace_packet *pk,
-                               struct shade_cone cone[], struct shade_eye_rays *rays)
-{
-    __m512d p[3], d[3];
-    for (int k = 0; k < 3; k++) {
-        p[k] = oct_load(&a->near_pt[k][i], &b->near_pt[k][i]);
-        d[k] = _mm512_sub_pd(oct_load(&a->far_pt[k][i], &b->far_pt[k][i]), p[k]);
-    }
-    store_points8(&pk->org[0][0], _mm512_cvtpd_ps(p[0]), _mm512_cvtpd_ps(p[1]),
-                  _mm512_cvtpd_ps(p[2]));
-    const __m512d len = _mm512_sqrt_pd(
-        _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(d[0], d[0]), _mm512_mul_pd(d[1], d[1])),
-                      _mm512_mul_pd(d[2], d[2])));
-    const unsigned ok =
-        _mm512_cmp_pd_mask(len, _mm512_setzero_pd(), _CMP_GT_OQ) &
-        _mm512_cmp_pd_mask(len, _mm512_set1_pd(INFINITY), _CMP_LT_OQ);
-    _mm256_storeu_ps(pk->tmax, _mm512_cvtpd_ps(len));
-    __m256 dir_f[3];
-    for (int k = 0; k < 3; k++) {
-        d[k] = _mm512_div_pd(d[k], len);
-        dir_f[k] = _mm512_cvtpd_ps(d[k]);
-        _mm256_storeu_ps(rays->dir[k], dir_f[k]);
-    }
-    store_points8(&pk->dir[0][0], dir_f[0], dir_f[1], dir_f[2]);
-    /*
-     * The cone's distances (h = 0: the right neighbours' near points, 1:
-     * the lower ones', 2 and 3 their far points) by oct_root of their
-     * squares, which are primary_ray's: s_h within 2^-51 of sqrt(r2_h),
-     * so within 2^-50.5 of primary_ray's rounded root D_h, relative.  Then
-     * the width max(s0, s1) is within 2^-50.5 of max(D0, D1), primary_ray's
-     * width (distances are not negative, so its 0 does not count).  With
-     * 4 s0 <= s2 and 4 s1 <= s3 (a far distance at least four times its
-     * near one, as a perspective's cones grow) s2 - s0 is within 2^-49.8
-     * of D2 - D0, relative (s2 + s0 <= 5/3 (s2 - s0)), both differences
-     * positive, so the growth max(s3 - s1, s2 - s0) within 2^-49.5 of
-     * primary_ray's (its 0 does not count either) and the spread, divided
-     * by the same len, within 2^-49.2.  Where the floats of the width
-     * within 2^-48 and of the spread within 2^-47 are one float each, they
-     * are primary_ray's; in a lane where they are not, where a condition
-     * fails or a square is outside oct_root's range, the caller makes the
-     * block's rays again by ray_quad.
-     */
-    __m512d root[4];
-    __mmask8 decided = 0xff;
-    for (int h = 0; h < 4; h++) {
-        const struct unproject_row *q0 = h % 2 ? b : a, *q1 = h % 2 ? c : b;
-        const int at = h % 2 ? i : i + 1;
-        __m512d v[3];
-        for (int k = 0; k < 3; k++)
-            v[k] = _mm512_sub_pd(h < 2 ? oct_load(&q0->near_pt[k][at], &q1->near_pt[k][at])
-                                       : oct_load(&q0->far_pt[k][at], &q1->far_pt[k][at]),
-                                 p[k]);
-        const __m512d r2 = oct_square_distance_to_line(v, d);
-        decided &= _mm512_cmp_pd_mask(r2, _mm512_set1_pd(0x1p-960), _CMP_GE_OQ) &
-                   _mm512_cmp_pd_mask(r2, _mm512_set1_pd(0x1p960), _CMP_LE_OQ);
-        root[h] = oct_root(r2);
-    }
-    const __m512d four = _mm512_set1_pd(4.0);
-    decided &= _mm512_cmp_pd_mask(_mm512_mul_pd(four, root[0]), root[2], _CMP_LE_OQ) &
-               _mm512_cmp_pd_mask(_mm512_mul_pd(four, root[1]), root[3], _CMP_LE_OQ);
-    const __m512d width = _mm512_max_pd(root[0], root[1]);
-    const __m512d growth =
-        _mm512_max_pd(_mm512_sub_pd(root[3], root[1]), _mm512_sub_pd(root[2], root[0]));
-    const __m512d spread = _mm512_div_pd(growth, len);
-    decided &= oct_float_decided(width, 0x1p-48) & oct_float_decided(spread, 0x1p-47);
-    const __m256 w = _mm512_cvtpd_ps(width), sp = _mm512_cvtpd_ps(spread);
-    _mm256_storeu_ps(rays->width, w);
-    _mm256_storeu_ps(rays->spread, sp);
-    /* The cones {width, spread} lane by lane: w[p] at 2 p, sp[p] at 2 p + 1. */
-    const __m512i ws = _mm512_setr_epi32(0, 8, 1, 9, 2, 10, 3, 11, 4, 12, 5, 13, 6, 14, 7, 15);
-    _mm512_storeu_ps((float *)cone,
-                     _mm512_permutexvar_ps(ws, _mm512_insertf32x8(_mm512_castps256_ps512(w), sp, 1)));
-    return ok & decided;
-}
-#endif
-
 /* What block_rays writes beside the packet: the rays by component
  * where the AVX2 copy's eye light reads them (shade.h), else nothing. */
 #if RENDER_QUADS
@@ -878,16 +704,7 @@ struct block_lanes {
 static inline int block_rays(const struct unproject_cache *c, int i, struct trace_packet *pk,
                              struct shade_cone cone[], struct block_lanes *lanes)
 {
-#if RENDER_OCTS
-    /* The block's two rows in one vector. */
-    _mm256_storeu_ps(pk->tmin, _mm256_setzero_ps());
-    if (ray_oct(c->rows[0], c->rows[1], c->rows[2], i, pk, cone, &lanes->rays) == 0xffu)
-        return 1;
-    /* A lane whose length or cone ray_oct did not decide: the quads'. */
-    const int ok = ray_quad(c->rows[0], c->rows[1], i, pk, 0, cone, &lanes->rays) &
-                   ray_quad(c->rows[1], c->rows[2], i, pk, 4, cone, &lanes->rays);
-    return ok == 15;
-#elif RENDER_QUADS
+#if RENDER_QUADS
     /* A block row a quad. */
     const int ok = ray_quad(c->rows[0], c->rows[1], i, pk, 0, cone, &lanes->rays) &
                    ray_quad(c->rows[1], c->rows[2], i, pk, 4, cone, &lanes->rays);
