@@ -1166,19 +1166,12 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                 }
             }
 #if RENDER_QUADS
-            /* The next block row's rows a part at a time (four blocks a
-             * block row, ten parts): one before this block's walk, one
-             * before its shading and one after it, so that no burst of
-             * divisions holds the divider long before code that waits for
-             * it (the walk's set-up divides too). */
+            /* Three parts of the next block row's rows beside this block's
+             * walk (four blocks a block row, ten parts). */
             if (next_rows)
-                unproject_cache_ahead(pass, &cache, 1);
+                unproject_cache_ahead(pass, &cache, 3);
 #endif
             const unsigned found = trace_scene_closest_packet(sc->scene, &pk, hits, sc->counters);
-#if RENDER_QUADS
-            if (next_rows)
-                unproject_cache_ahead(pass, &cache, 1);
-#endif
             if (eye && direct && pass->all_drawn) {
                 /* The loop below when every hit is drawn and shaded by the
                  * eye light: a pixel is its ray's hit, shaded with the
@@ -1207,10 +1200,6 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
 #endif
                 } else
                     eye_block(pass, sc, x0, y0, bx, by, &pk, found, hits, cone);
-#if RENDER_QUADS
-                if (next_rows)
-                    unproject_cache_ahead(pass, &cache, 1);
-#endif
                 continue;
             }
             /* Whitted shading's shadow rays of the block's first hits,
