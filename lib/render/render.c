@@ -338,126 +338,19 @@ struct unproject_row {
     double axis[4];                    /* unproject_axis of the row */
     signed char state[UNPROJECT_COLS]; /* 1 unprojected, -1 cannot be */
     int whole; /* 1 when all of the first RENDER_TILE_SIZE + 1 are unprojected */
-#if RENDER_QUADS
-    double sum[4]; /* the finiteness sum of the quads made so far (unproject_row_part) */
-#endif
 };
-
-#if RENDER_QUADS
-/*
- * The packet loop's rows in parts, ahead of the block row that reads
- * them: a row's unprojection is six divisions a point, 108 for a row,
- * all independent, so the divider's throughput bounds it, and made whole
- * when the block row begins (unproject_cache_row) it stood alone before
- * the block's walk.  In parts of four points (UNPROJECT_PARTS a row: its
- * four quads, then its last pair and its test), a few after each block's
- * rays (unproject_cache_ahead), the next block row's two rows are made
- * while the walks of this one's blocks run, beside them, the walk using
- * the divider hardly at all.  The same operations on the same points, so
- * the same rows.
- */
-#define UNPROJECT_AHEAD 2
-#define UNPROJECT_PARTS 5
-#define UNPROJECT_STORE (UNPROJECT_ROWS + UNPROJECT_AHEAD)
-#else
-#define UNPROJECT_AHEAD 0
-#define UNPROJECT_STORE UNPROJECT_ROWS
-#endif
 
 struct unproject_cache {
     int x0, y;                                  /* viewport pixel of rows[0]'s first point */
     struct unproject_row *rows[UNPROJECT_ROWS]; /* row y + r: a ring over store */
-#if RENDER_QUADS
-    /* Rows ahead_y and ahead_y + 1 in parts: ahead_done of their
-     * 2 UNPROJECT_PARTS parts made, in order. */
-    struct unproject_row *ahead[UNPROJECT_AHEAD];
-    int ahead_y, ahead_done;
-#endif
-    struct unproject_row store[UNPROJECT_STORE];
+    struct unproject_row store[UNPROJECT_ROWS];
     double col[4][UNPROJECT_COLS]; /* unproject_axis of each column, by product */
 };
 
 /* Row y of the cache's columns into u. */
-#if RENDER_QUADS
-/* Part `part` of row y (unproject_row_fill's steps, in its order): parts
- * 0 to 3 the quads of points 4 part to 4 part + 3 (part 0 first the
- * row's axis), part 4 the last pair and the row's finiteness test.  Each
- * point's sums and quotients as unproject_row_fill makes them. */
-static void unproject_row_part(const struct render_pass *sh, const struct unproject_cache *c,
-                               struct unproject_row *u, int y, int part)
-{
-    const double *m = sh->inv_projection;
-    if (part == 0) {
-        unproject_axis(sh, 1, y + 0.5, u->axis);
-        _mm256_storeu_pd(u->sum, _mm256_setzero_pd());
-    }
-    if (part < 4) {
-        const int i = 4 * part;
-        __m256d sum4 = _mm256_loadu_pd(u->sum);
-        const __m256d s3 = _mm256_add_pd(_mm256_loadu_pd(&c->col[3][i]),
-                                         _mm256_set1_pd(u->axis[3]));
-        const __m256d wn = _mm256_add_pd(_mm256_add_pd(s3, _mm256_set1_pd(m[11] * -1.0)),
-                                         _mm256_set1_pd(m[15]));
-        const __m256d wf = _mm256_add_pd(_mm256_add_pd(s3, _mm256_set1_pd(m[11] * 1.0)),
-                                         _mm256_set1_pd(m[15]));
-        for (int r = 0; r < 3; r++) {
-            const __m256d s = _mm256_add_pd(_mm256_loadu_pd(&c->col[r][i]),
-                                            _mm256_set1_pd(u->axis[r]));
-            const __m256d last = _mm256_set1_pd(m[12 + r]);
-            const __m256d n = _mm256_div_pd(
-                _mm256_add_pd(_mm256_add_pd(s, _mm256_set1_pd(m[8 + r] * -1.0)), last), wn);
-            const __m256d f = _mm256_div_pd(
-                _mm256_add_pd(_mm256_add_pd(s, _mm256_set1_pd(m[8 + r] * 1.0)), last), wf);
-            _mm256_storeu_pd(&u->near_pt[r][i], n);
-            _mm256_storeu_pd(&u->far_pt[r][i], f);
-            sum4 = _mm256_add_pd(_mm256_add_pd(sum4, n), f);
-        }
-        _mm256_storeu_pd(u->sum, sum4);
-        return;
-    }
-    const __m256d sum4 = _mm256_loadu_pd(u->sum);
-    __m128d sum = _mm_add_pd(_mm256_castpd256_pd128(sum4), _mm256_extractf128_pd(sum4, 1));
-    for (int i = 16; i < UNPROJECT_COLS; i += 2) {
-        const __m128d s3 = _mm_add_pd(_mm_loadu_pd(&c->col[3][i]), _mm_set1_pd(u->axis[3]));
-        const __m128d wn =
-            _mm_add_pd(_mm_add_pd(s3, _mm_set1_pd(m[11] * -1.0)), _mm_set1_pd(m[15]));
-        const __m128d wf =
-            _mm_add_pd(_mm_add_pd(s3, _mm_set1_pd(m[11] * 1.0)), _mm_set1_pd(m[15]));
-        for (int r = 0; r < 3; r++) {
-            const __m128d s = _mm_add_pd(_mm_loadu_pd(&c->col[r][i]), _mm_set1_pd(u->axis[r]));
-            const __m128d last = _mm_set1_pd(m[12 + r]);
-            const __m128d n =
-                _mm_div_pd(_mm_add_pd(_mm_add_pd(s, _mm_set1_pd(m[8 + r] * -1.0)), last), wn);
-            const __m128d f =
-                _mm_div_pd(_mm_add_pd(_mm_add_pd(s, _mm_set1_pd(m[8 + r] * 1.0)), last), wf);
-            _mm_storeu_pd(&u->near_pt[r][i], n);
-            _mm_storeu_pd(&u->far_pt[r][i], f);
-            sum = _mm_add_pd(_mm_add_pd(sum, n), f);
-        }
-    }
-    u->whole = 1;
-    if (_mm_movemask_pd(_mm_cmpeq_pd(_mm_sub_pd(sum, sum), _mm_setzero_pd())) == 3) {
-        memset(u->state, 1, sizeof(u->state));
-        return;
-    }
-    for (int i = 0; i < UNPROJECT_COLS; i++) {
-        int ok = 1;
-        for (int r = 0; r < 3; r++)
-            ok &= isfinite(u->near_pt[r][i]) && isfinite(u->far_pt[r][i]);
-        u->state[i] = ok ? 1 : -1;
-    }
-    for (int i = 0; i <= RENDER_TILE_SIZE; i++)
-        u->whole &= u->state[i] > 0;
-}
-#endif
-
 static void unproject_row_fill(const struct render_pass *sh, const struct unproject_cache *c,
                                struct unproject_row *u, int y)
 {
-#if RENDER_QUADS
-    for (int part = 0; part < UNPROJECT_PARTS; part++)
-        unproject_row_part(sh, c, u, y, part);
-#else
     unproject_axis(sh, 1, y + 0.5, u->axis);
 #if RENDER_PAIRS
     /* mat4_project of two neighbours' near (z = -1) and far (z = 1)
@@ -480,7 +373,37 @@ static void unproject_row_fill(const struct render_pass *sh, const struct unproj
      * is finite (a sum that overflows only sends the row to the test
      * point by point below). */
     __m128d sum = _mm_setzero_pd();
-    for (int i = 0; i < UNPROJECT_COLS; i += 2) {
+    int first_pair = 0;
+#if RENDER_QUADS
+    /* Four points a lane each, the same sums in the same order; the
+     * row's last pair below. */
+    __m256d axis4[4], zn4[4], zf4[4], last4[4];
+    for (int r = 0; r < 4; r++) {
+        axis4[r] = _mm256_set1_pd(u->axis[r]);
+        zn4[r] = _mm256_set1_pd(m[8 + r] * -1.0);
+        zf4[r] = _mm256_set1_pd(m[8 + r] * 1.0);
+        last4[r] = _mm256_set1_pd(m[12 + r]);
+    }
+    __m256d sum4 = _mm256_setzero_pd();
+    for (; first_pair + 3 < UNPROJECT_COLS; first_pair += 4) {
+        const int i = first_pair;
+        const __m256d s3 = _mm256_add_pd(_mm256_loadu_pd(&c->col[3][i]), axis4[3]);
+        const __m256d wn = _mm256_add_pd(_mm256_add_pd(s3, zn4[3]), last4[3]);
+        const __m256d wf = _mm256_add_pd(_mm256_add_pd(s3, zf4[3]), last4[3]);
+        for (int r = 0; r < 3; r++) {
+            const __m256d s = _mm256_add_pd(_mm256_loadu_pd(&c->col[r][i]), axis4[r]);
+            const __m256d n = _mm256_div_pd(_mm256_add_pd(_mm256_add_pd(s, zn4[r]), last4[r]), wn);
+            const __m256d f = _mm256_div_pd(_mm256_add_pd(_mm256_add_pd(s, zf4[r]), last4[r]), wf);
+            _mm256_storeu_pd(&u->near_pt[r][i], n);
+            _mm256_storeu_pd(&u->far_pt[r][i], f);
+            sum4 = _mm256_add_pd(_mm256_add_pd(sum4, n), f);
+        }
+    }
+    /* The four lanes' sums into the pair's (any order: only whether the
+     * sum is finite counts). */
+    sum = _mm_add_pd(_mm256_castpd256_pd128(sum4), _mm256_extractf128_pd(sum4, 1));
+#endif
+    for (int i = first_pair; i < UNPROJECT_COLS; i += 2) {
         const __m128d s3 = _mm_add_pd(_mm_loadu_pd(&c->col[3][i]), axis[3]);
         const __m128d wn = _mm_add_pd(_mm_add_pd(s3, zn[3]), last[3]);
         const __m128d wf = _mm_add_pd(_mm_add_pd(s3, zf[3]), last[3]);
@@ -520,20 +443,7 @@ static void unproject_row_fill(const struct render_pass *sh, const struct unproj
     u->whole = 1;
     for (int i = 0; i <= RENDER_TILE_SIZE; i++)
         u->whole &= u->state[i] > 0;
-#endif
 }
-
-#if RENDER_QUADS
-/* Up to n more parts of the rows ahead (all of them for n of 2
- * UNPROJECT_PARTS). */
-static void unproject_cache_ahead(const struct render_pass *sh, struct unproject_cache *c, int n)
-{
-    for (; n > 0 && c->ahead_done < UNPROJECT_AHEAD * UNPROJECT_PARTS; n--, c->ahead_done++) {
-        const int r = c->ahead_done / UNPROJECT_PARTS;
-        unproject_row_part(sh, c, c->ahead[r], c->ahead_y + r, c->ahead_done % UNPROJECT_PARTS);
-    }
-}
-#endif
 
 static void unproject_cache_init(const struct render_pass *sh, struct unproject_cache *c,
                                  int x0, int y)
@@ -550,12 +460,6 @@ static void unproject_cache_init(const struct render_pass *sh, struct unproject_
         c->rows[r] = &c->store[r];
         unproject_row_fill(sh, c, c->rows[r], y + r);
     }
-#if RENDER_QUADS
-    for (int r = 0; r < UNPROJECT_AHEAD; r++)
-        c->ahead[r] = &c->store[UNPROJECT_ROWS + r];
-    c->ahead_y = y + UNPROJECT_ROWS;
-    c->ahead_done = 0;
-#endif
 }
 
 /* Moves the cache's first row to y, keeping the rows it already has from
@@ -565,32 +469,6 @@ static void unproject_cache_row(const struct render_pass *sh, struct unproject_c
     const int shift = y - c->y;
     if (shift == 0)
         return;
-#if RENDER_QUADS
-    /* The rows ahead when the new rows are the last kept one and those:
-     * the packet loop's step of two rows.  They are finished first (the
-     * parts the blocks did not make), and the two rows freed take the
-     * next ones' place. */
-    if (shift == UNPROJECT_AHEAD && c->ahead_y == c->y + UNPROJECT_ROWS) {
-        unproject_cache_ahead(sh, c, UNPROJECT_AHEAD * UNPROJECT_PARTS);
-        struct unproject_row *freed[UNPROJECT_AHEAD];
-        for (int r = 0; r < UNPROJECT_AHEAD; r++)
-            freed[r] = c->rows[r];
-        for (int r = 0; r < UNPROJECT_ROWS - UNPROJECT_AHEAD; r++)
-            c->rows[r] = c->rows[r + UNPROJECT_AHEAD];
-        for (int r = 0; r < UNPROJECT_AHEAD; r++) {
-            c->rows[UNPROJECT_ROWS - UNPROJECT_AHEAD + r] = c->ahead[r];
-            c->ahead[r] = freed[r];
-        }
-        c->y = y;
-        c->ahead_y = y + UNPROJECT_ROWS;
-        c->ahead_done = 0;
-        return;
-    }
-    /* Any other step leaves the rows ahead behind: made again from
-     * scratch for the new place. */
-    c->ahead_y = y + UNPROJECT_ROWS;
-    c->ahead_done = 0;
-#endif
     int keep = 0;
     if (shift > 0 && shift < UNPROJECT_ROWS) {
         struct unproject_row *old[UNPROJECT_ROWS];
@@ -1131,12 +1009,6 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
 #endif
     for (int by = y0; by < y0 + RENDER_TILE_SIZE && by < vp[3]; by += RENDER_BLOCK_H) {
         unproject_cache_row(pass, &cache, by);
-#if RENDER_QUADS
-        /* A next block row in the tile and the viewport: its rows are made
-         * ahead. */
-        const int next_rows = by + RENDER_BLOCK_H < y0 + RENDER_TILE_SIZE &&
-                              by + RENDER_BLOCK_H < vp[3];
-#endif
 #if RENDER_PAIRS
         /* Both rows inside and every point of the rows and the next one
          * unprojected: the blocks' rays in pairs of lanes. */
@@ -1165,12 +1037,6 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                     }
                 }
             }
-#if RENDER_QUADS
-            /* Three parts of the next block row's rows beside this block's
-             * walk (four blocks a block row, ten parts). */
-            if (next_rows)
-                unproject_cache_ahead(pass, &cache, 3);
-#endif
             const unsigned found = trace_scene_closest_packet(sc->scene, &pk, hits, sc->counters);
             if (eye && direct && pass->all_drawn) {
                 /* The loop below when every hit is drawn and shaded by the
