@@ -544,21 +544,6 @@ static int primary_ray(const struct unproject_cache *cache, int px, int py, floa
     return 1;
 }
 
-/* What block_rays writes beside the packet: the rays by component
- * where the AVX2 copy's eye light reads them (shade.h), else nothing. */
-#if RENDER_QUADS
-struct block_lanes {
-    struct shade_eye_rays rays;
-    /* The rays' unit directions and lengths in double, for their cones
-     * after the walk (block_cones). */
-    double unit[3][TRACE_PACKET], len[TRACE_PACKET];
-};
-#else
-struct block_lanes {
-    char unused;
-};
-#endif
-
 #if RENDER_PAIRS
 /* Two doubles as two floats (the low half), each rounded as a cast
  * does. */
@@ -672,11 +657,10 @@ static inline __m256 floats8(__m128 lo, __m128 hi)
  * directions and cones also by component into rays (the eye light's
  * lanes read them so; the same floats).  Returns the mask of the lanes
  * whose length is positive and finite. */
-static inline int ray_quad(const struct unproject_row *a, int i, struct trace_packet *pk,
-                           int first, struct block_lanes *lanes, __m128 org_f[3],
-                           __m128 dir_f[3])
+static inline int ray_quad(const struct unproject_row *a, const struct unproject_row *b, int i,
+                           struct trace_packet *pk, int first, struct shade_cone cone[],
+                           struct shade_eye_rays *rays, __m128 org_f[3], __m128 dir_f[3])
 {
-    struct shade_eye_rays *rays = &lanes->rays;
     __m256d p[3], d[3];
     for (int k = 0; k < 3; k++) {
         p[k] = _mm256_loadu_pd(&a->near_pt[k][i]);
@@ -694,29 +678,7 @@ static inline int ray_quad(const struct unproject_row *a, int i, struct trace_pa
         d[k] = _mm256_div_pd(d[k], len);
         dir_f[k] = _mm256_cvtpd_ps(d[k]);
         _mm_storeu_ps(&rays->dir[k][first], dir_f[k]);
-        _mm256_storeu_pd(&lanes->unit[k][first], d[k]);
     }
-    _mm256_storeu_pd(&lanes->len[first], len);
-    return ok;
-}
-
-/* The cones of ray_quad's four rays (b the row below a), after their
- * walk: primary_ray's cone operations on its points, unit direction and
- * length, which ray_quad left in lanes, so the same floats.  The walk
- * reads only a ray's origin, direction and tmax; its cone waits for the
- * shading, so its four square roots and division a ray no longer stand
- * between the block's rays and its walk. */
-static inline void ray_quad_cones(const struct unproject_row *a, const struct unproject_row *b,
-                                  int i, int first, struct shade_cone cone[],
-                                  struct block_lanes *lanes)
-{
-    struct shade_eye_rays *rays = &lanes->rays;
-    __m256d p[3], d[3];
-    for (int k = 0; k < 3; k++) {
-        p[k] = _mm256_loadu_pd(&a->near_pt[k][i]);
-        d[k] = _mm256_loadu_pd(&lanes->unit[k][first]);
-    }
-    const __m256d len = _mm256_loadu_pd(&lanes->len[first]);
     __m256d dist[4];
     for (int h = 0; h < 4; h++) {
         const struct unproject_row *q = h % 2 ? b : a;
@@ -738,9 +700,21 @@ static inline void ray_quad_cones(const struct unproject_row *a, const struct un
     _mm_storeu_ps(&rays->spread[first], sp);
     _mm_storeu_ps((float *)&cone[first], _mm_unpacklo_ps(w, sp));
     _mm_storeu_ps((float *)&cone[first + 2], _mm_unpackhi_ps(w, sp));
+    return ok;
 }
 #endif
 
+/* What block_rays writes beside the packet: the rays by component
+ * where the AVX2 copy's eye light reads them (shade.h), else nothing. */
+#if RENDER_QUADS
+struct block_lanes {
+    struct shade_eye_rays rays;
+};
+#else
+struct block_lanes {
+    char unused;
+};
+#endif
 
 /* The rays of the 4 x 2 block whose first pixel is point i of the
  * cache's first row (rows 0 to 2 whole) straight into the packet and the
@@ -754,9 +728,8 @@ static inline int block_rays(const struct unproject_cache *c, int i, struct trac
     /* A block row a quad; the packet's points and tmins in the walk's
      * loads' widths (store_points8). */
     __m128 org0[3], dir0[3], org1[3], dir1[3];
-    (void)cone;
-    const int ok = ray_quad(c->rows[0], i, pk, 0, lanes, org0, dir0) &
-                   ray_quad(c->rows[1], i, pk, 4, lanes, org1, dir1);
+    const int ok = ray_quad(c->rows[0], c->rows[1], i, pk, 0, cone, &lanes->rays, org0, dir0) &
+                   ray_quad(c->rows[1], c->rows[2], i, pk, 4, cone, &lanes->rays, org1, dir1);
     store_points8(&pk->org[0][0], floats8(org0[0], org1[0]), floats8(org0[1], org1[1]),
                   floats8(org0[2], org1[2]));
     store_points8(&pk->dir[0][0], floats8(dir0[0], dir1[0]), floats8(dir0[1], dir1[1]),
@@ -774,16 +747,6 @@ static inline int block_rays(const struct unproject_cache *c, int i, struct trac
         _mm_storeu_ps(&pk->tmin[k], _mm_setzero_ps());
     return ok == 3;
 #endif
-}
-#endif
-
-#if RENDER_QUADS
-/* The cones of block_rays' block, made after its walk (ray_quad_cones). */
-static inline void block_cones(const struct unproject_cache *c, int i, struct shade_cone cone[],
-                               struct block_lanes *lanes)
-{
-    ray_quad_cones(c->rows[0], c->rows[1], i, 0, cone, lanes);
-    ray_quad_cones(c->rows[1], c->rows[2], i, 4, cone, lanes);
 }
 #endif
 
@@ -1100,10 +1063,6 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                 }
             }
             const unsigned found = trace_scene_closest_packet(sc->scene, &pk, hits, sc->counters);
-#if RENDER_QUADS
-            if (whole)
-                block_cones(&cache, bx - x0, cone, &by_lane);
-#endif
             if (eye && direct && pass->all_drawn) {
                 /* The loop below when every hit is drawn and shaded by the
                  * eye light: a pixel is its ray's hit, shaded with the
