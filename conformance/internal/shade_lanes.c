@@ -9,7 +9,10 @@
  * random doubles there, 2^-48 also where the sum's rounding alone is up to
  * 2^-49 (results from 16 to 32): half the
  * bound (LANES_LOG2_BOUND, 2^-47) that lod_ray_quad's argument uses; and
- * its halved form (lanes_log2_4_half) bit for bit its half there.
+ * its halved form (lanes_log2_4_half) bit for bit its half there.  The
+ * AVX-512 copy's halved log2 (lanes_log2_8_half, through
+ * shade_log2_oct_half_avx512_unit) within 2^-49 of log2l / 2 over the
+ * same grid and random doubles, and bit for bit the four-lane half.
  *
  * The eight-lane texture lookup (scene_texture_sample_lod8, through
  * shade_texture_lod8_avx2_unit) against scene_texture_sample_lod, bit
@@ -167,6 +170,64 @@ static int log2_bound(shade_log2_quad_fn log2_quad)
             break;
     }
     printf("shade_lanes: log2's largest error %Lg (2^%.2f)\n", worst,
+           worst > 0.0L ? (double)log2l(worst) : -INFINITY);
+    return failures;
+}
+
+/* The AVX-512 copy's halved log2 (lanes_log2_8_half, which the frame's
+ * AVX-512 shading runs) within 2^-49 of log2l / 2, half the four-lane
+ * form's bound, over the same grid and a million random doubles of its
+ * own, and bit for bit the four-lane half (the same operations). */
+static int log2_bound8(shade_log2_oct_half_fn log2_oct_half, shade_log2_quad_fn log2_quad)
+{
+    int failures = 0;
+    long double worst = 0.0L;
+    double xs[8], half[8];
+    int n = 0;
+    uint32_t bits = 0x3f800000u; /* 1.0f */
+    const uint32_t end = 0x4f800000u; /* 2^32 */
+    long count = 0;
+    for (;;) {
+        int done = bits > end;
+        if (!done) {
+            float f;
+            memcpy(&f, &bits, sizeof(f));
+            xs[n++] = (double)f;
+            bits += 13;
+        } else if (count < 1000000) {
+            const uint64_t m = ((uint64_t)next() << 32 | next()) & 0x000fffffffffffffull;
+            const uint64_t e = 1023u + next() % 32u;
+            const uint64_t b = e << 52 | m;
+            memcpy(&xs[n++], &b, sizeof(double));
+            count++;
+            done = 0;
+        }
+        if (n == 8 || (done && n > 0)) {
+            while (n < 8)
+                xs[n++] = 1.0;
+            log2_oct_half(xs, half);
+            for (int h = 0; h < 8; h += 4) {
+                double full4[4], half4[4];
+                log2_quad(xs + h, full4, half4);
+                if (memcmp(half4, half + h, sizeof(half4)) != 0)
+                    failures += !CHECKF(0, "log2 / 2 of %a..%a: eight lanes differ from four",
+                                        xs[h], xs[h + 3]);
+            }
+            for (int k = 0; k < 8; k++) {
+                const long double err =
+                    fabsl((long double)half[k] - 0.5L * log2l((long double)xs[k]));
+                if (err > worst)
+                    worst = err;
+                if (!(err <= 0x1p-49L))
+                    failures += !CHECKF(0, "log2(%a) / 2, eight lanes: %a, off by %Lg", xs[k],
+                                        half[k], err);
+            }
+            n = 0;
+        }
+        if (done)
+            break;
+    }
+    printf("shade_lanes: the eight-lane half log2's largest error %Lg (2^%.2f)\n", worst,
            worst > 0.0L ? (double)log2l(worst) : -INFINITY);
     return failures;
 }
@@ -375,6 +436,13 @@ int main(void)
     }
     scene_textures_release(&tab);
     printf("shade_lanes: %d lanes compared, %d blocks refused\n", lanes, refused);
+    /* The AVX-512 copy's log2, last: its random doubles leave the other
+     * checks' as they were. */
+    const shade_log2_oct_half_fn log2_oct_half = shade_log2_oct_half_avx512_unit();
+    if (log2_oct_half && cpu512)
+        failures += log2_bound8(log2_oct_half, log2_quad);
+    else
+        printf("shade_lanes: the eight-lane log2 skipped (no AVX-512 unit or CPU)\n");
     printf("shade_lanes: %s (%d failed checks)\n", failures ? "FAILED" : "passed", failures);
     return failures != 0;
 }

@@ -616,35 +616,57 @@ static inline int ray_pair(const struct unproject_row *a, const struct unproject
 }
 
 #if RENDER_QUADS
-/* Four points given coordinate by coordinate (x, y, z) into out[4][3]. */
-static inline void store_points4(float *out, __m128 x, __m128 y, __m128 z)
+/*
+ * Eight points given coordinate by coordinate (x, y, z; lane r point r)
+ * into out[8][3] as three 32-byte stores, the three rows the walk's
+ * set-up loads (trace/packet_init.h, packet_init_soa3, whose transpose
+ * this inverts: x of point r at float 3 r, so at position 3 r mod 8 of
+ * its row, which a permutation by 3 p mod 8 (3 is its own inverse mod 8)
+ * and two blends a row put there, y and z likewise one and two floats
+ * on).  A load that spans two smaller stores still in the store buffer is
+ * not forwarded from them and waits until both have reached the cache
+ * (Intel's optimization manual, store forwarding), so with 16-byte
+ * stores of four points each the walk's first loads waited for the
+ * block's whole ray generation, its cones included, to retire.  The
+ * packet holds eight rays (a block), stored as 24 floats a field.
+ */
+typedef char render_packet_is_eight[TRACE_PACKET == 8 ? 1 : -1];
+
+static inline void store_points8(float *out, __m256 x, __m256 y, __m256 z)
 {
-    const __m128 xy_lo = _mm_unpacklo_ps(x, y);                        /* x0 y0 x1 y1 */
-    const __m128 xy_hi = _mm_unpackhi_ps(x, y);                        /* x2 y2 x3 y3 */
-    const __m128 yz_lo = _mm_unpacklo_ps(y, z);                        /* y0 z0 y1 z1 */
-    const __m128 zx = _mm_shuffle_ps(z, x, _MM_SHUFFLE(1, 1, 0, 0));  /* z0 z0 x1 x1 */
-    const __m128 zz = _mm_shuffle_ps(z, xy_hi, _MM_SHUFFLE(3, 2, 3, 2)); /* z2 z3 x3 y3 */
-    _mm_storeu_ps(out, _mm_shuffle_ps(xy_lo, zx, _MM_SHUFFLE(2, 0, 1, 0)));     /* x0 y0 z0 x1 */
-    _mm_storeu_ps(out + 4, _mm_shuffle_ps(yz_lo, xy_hi, _MM_SHUFFLE(1, 0, 3, 2))); /* y1 z1 x2 y2 */
-    _mm_storeu_ps(out + 8, _mm_shuffle_ps(zz, zz, _MM_SHUFFLE(1, 3, 2, 0)));    /* z2 x3 y3 z3 */
+    const __m256 xp = _mm256_permutevar8x32_ps(x, _mm256_setr_epi32(0, 3, 6, 1, 4, 7, 2, 5));
+    const __m256 yp = _mm256_permutevar8x32_ps(y, _mm256_setr_epi32(5, 0, 3, 6, 1, 4, 7, 2));
+    const __m256 zp = _mm256_permutevar8x32_ps(z, _mm256_setr_epi32(2, 5, 0, 3, 6, 1, 4, 7));
+    /* Row 0: x y z x y z x y; row 1: z x y z x y z x; row 2: y z x y z x
+     * y z. */
+    _mm256_storeu_ps(out, _mm256_blend_ps(_mm256_blend_ps(xp, yp, 0x92), zp, 0x24));
+    _mm256_storeu_ps(out + 8, _mm256_blend_ps(_mm256_blend_ps(zp, xp, 0x92), yp, 0x24));
+    _mm256_storeu_ps(out + 16, _mm256_blend_ps(_mm256_blend_ps(yp, zp, 0x92), xp, 0x24));
+}
+
+/* Two quads' lanes (lo for points 0 to 3) as eight. */
+static inline __m256 floats8(__m128 lo, __m128 hi)
+{
+    return _mm256_insertf128_ps(_mm256_castps128_ps256(lo), hi, 1);
 }
 
 /* ray_pair of the four pixels at points i to i + 3 of row a in the four
  * lanes, lane 0 the leftmost: each lane primary_ray's operations in its
- * order.  The directions and cones also by component into rays (the
- * eye light's lanes read them so; the same floats).  Returns the mask
- * of the lanes whose length is positive and finite. */
+ * order.  The origins and directions as floats by component into org_f
+ * and dir_f (the caller stores a block's eight, store_points8), the
+ * directions and cones also by component into rays (the eye light's
+ * lanes read them so; the same floats).  Returns the mask of the lanes
+ * whose length is positive and finite. */
 static inline int ray_quad(const struct unproject_row *a, const struct unproject_row *b, int i,
                            struct trace_packet *pk, int first, struct shade_cone cone[],
-                           struct shade_eye_rays *rays)
+                           struct shade_eye_rays *rays, __m128 org_f[3], __m128 dir_f[3])
 {
     __m256d p[3], d[3];
     for (int k = 0; k < 3; k++) {
         p[k] = _mm256_loadu_pd(&a->near_pt[k][i]);
         d[k] = _mm256_sub_pd(_mm256_loadu_pd(&a->far_pt[k][i]), p[k]);
+        org_f[k] = _mm256_cvtpd_ps(p[k]);
     }
-    store_points4(&pk->org[first][0], _mm256_cvtpd_ps(p[0]), _mm256_cvtpd_ps(p[1]),
-                  _mm256_cvtpd_ps(p[2]));
     const __m256d len = _mm256_sqrt_pd(
         _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(d[0], d[0]), _mm256_mul_pd(d[1], d[1])),
                       _mm256_mul_pd(d[2], d[2])));
@@ -652,13 +674,11 @@ static inline int ray_quad(const struct unproject_row *a, const struct unproject
         _mm256_and_pd(_mm256_cmp_pd(len, _mm256_setzero_pd(), _CMP_GT_OQ),
                       _mm256_cmp_pd(len, _mm256_set1_pd(INFINITY), _CMP_LT_OQ)));
     _mm_storeu_ps(&pk->tmax[first], _mm256_cvtpd_ps(len));
-    __m128 dir_f[3];
     for (int k = 0; k < 3; k++) {
         d[k] = _mm256_div_pd(d[k], len);
         dir_f[k] = _mm256_cvtpd_ps(d[k]);
         _mm_storeu_ps(&rays->dir[k][first], dir_f[k]);
     }
-    store_points4(&pk->dir[first][0], dir_f[0], dir_f[1], dir_f[2]);
     __m256d dist[4];
     for (int h = 0; h < 4; h++) {
         const struct unproject_row *q = h % 2 ? b : a;
@@ -705,11 +725,16 @@ static inline int block_rays(const struct unproject_cache *c, int i, struct trac
                              struct shade_cone cone[], struct block_lanes *lanes)
 {
 #if RENDER_QUADS
-    /* A block row a quad. */
-    const int ok = ray_quad(c->rows[0], c->rows[1], i, pk, 0, cone, &lanes->rays) &
-                   ray_quad(c->rows[1], c->rows[2], i, pk, 4, cone, &lanes->rays);
-    for (int k = 0; k < TRACE_PACKET; k += 4)
-        _mm_storeu_ps(&pk->tmin[k], _mm_setzero_ps());
+    /* A block row a quad; the packet's points and tmins in the walk's
+     * loads' widths (store_points8). */
+    __m128 org0[3], dir0[3], org1[3], dir1[3];
+    const int ok = ray_quad(c->rows[0], c->rows[1], i, pk, 0, cone, &lanes->rays, org0, dir0) &
+                   ray_quad(c->rows[1], c->rows[2], i, pk, 4, cone, &lanes->rays, org1, dir1);
+    store_points8(&pk->org[0][0], floats8(org0[0], org1[0]), floats8(org0[1], org1[1]),
+                  floats8(org0[2], org1[2]));
+    store_points8(&pk->dir[0][0], floats8(dir0[0], dir1[0]), floats8(dir0[1], dir1[1]),
+                  floats8(dir0[2], dir1[2]));
+    _mm256_storeu_ps(pk->tmin, _mm256_setzero_ps());
     return ok == 15;
 #else
     (void)lanes;

@@ -225,6 +225,10 @@ shade_texture_lod8_fn shade_texture_lod8_steps_avx2_unit(void);
  * its bound; NULL where it is absent. */
 typedef void (*shade_log2_quad_fn)(const double x[4], double out[4], double half[4]);
 shade_log2_quad_fn shade_log2_quad_avx2_unit(void);
+/* The AVX-512 unit's eight-lane halved log2 (lanes_log2_8_half into half),
+ * for the test of its own bound; NULL where that unit is absent. */
+typedef void (*shade_log2_oct_half_fn)(const double x[8], double half[8]);
+shade_log2_oct_half_fn shade_log2_oct_half_avx512_unit(void);
 /* That unit's levels of detail of four hits on one triangle by the
  * triangle's texel map (surface.c, lod_fast_quad) beside lod_ray's, for
  * the test that the lanes it decides are lod_ray's bit for bit: l the

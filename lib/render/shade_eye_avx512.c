@@ -78,6 +78,16 @@ shade_lod_fast_fn shade_lod_fast_avx512_unit(void)
 {
     return lod_fast_lanes8;
 }
+
+static void log2_oct_half(const double x[8], double half[8])
+{
+    _mm512_storeu_pd(half, lanes_log2_8_half(_mm512_loadu_pd(x)));
+}
+
+shade_log2_oct_half_fn shade_log2_oct_half_avx512_unit(void)
+{
+    return log2_oct_half;
+}
 #else
 #include "render/shade.h"
 
@@ -87,6 +97,11 @@ shade_eye_hits_fn shade_eye_hits_avx512_unit(void)
 }
 
 shade_lod_fast_fn shade_lod_fast_avx512_unit(void)
+{
+    return NULL;
+}
+
+shade_log2_oct_half_fn shade_log2_oct_half_avx512_unit(void)
 {
     return NULL;
 }
