@@ -28,6 +28,7 @@
  *     the cloth as floats from the array);
  *   - the scene (one instance of each, fixed rotated matrices), a frustum
  *     camera and a fixed set of rays;
+ *   - da_strategies: every update strategy, each test's outer loop;
  *   - da_compare_hits: closest hits against a reference (same primitive
  *     and t within DA_T_REL relative, or, where two triangles are equally
  *     close, any of them at that distance).
@@ -67,6 +68,18 @@ enum { DA_SPHERE, DA_CLOTH, DA_SOUP, DA_BIG, DA_POPPER, DA_KINDS };
 
 /* Relative tolerance of t between a tested and a reference hit. */
 #define DA_T_REL 1e-5
+
+/* Every update strategy (RT_ASYNC_REBUILD where the header has it). */
+static const RTenum da_strategies[] = {RT_REFIT,
+                                       RT_REBUILD,
+                                       RT_REBUILD_MEDIAN,
+                                       RT_REBUILD_HEURISTIC,
+                                       RT_RESTRUCTURE,
+#ifdef RT_ASYNC_REBUILD
+                                       RT_ASYNC_REBUILD,
+#endif
+                                       RT_AUTOMATIC};
+#define DA_STRATEGY_COUNT ((int)(sizeof(da_strategies) / sizeof(da_strategies[0])))
 
 /* ---- fixed-seed numbers (splitmix64) ---------------------------------- */
 

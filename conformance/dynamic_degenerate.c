@@ -57,18 +57,6 @@
 #define SOUP_COUNT 3000
 #define SOUP_RAYS 20000
 
-/* Every strategy (RT_ASYNC_REBUILD where the header has it). */
-static const RTenum strategies[] = {RT_REFIT,
-                                    RT_REBUILD,
-                                    RT_REBUILD_MEDIAN,
-                                    RT_REBUILD_HEURISTIC,
-                                    RT_RESTRUCTURE,
-#ifdef RT_ASYNC_REBUILD
-                                    RT_ASYNC_REBUILD,
-#endif
-                                    RT_AUTOMATIC};
-#define STRATEGY_COUNT ((int)(sizeof(strategies) / sizeof(strategies[0])))
-
 static int degenerate_at(int k, int f)
 {
     return (k + f) % 3 == 0;
@@ -303,9 +291,9 @@ static void static_soup(void)
 
 int main(void)
 {
-    for (int s = 0; s < STRATEGY_COUNT; s++) {
-        tu_section(da_strategy_name(strategies[s]));
-        long wrong = run_strategy(strategies[s]);
+    for (int s = 0; s < DA_STRATEGY_COUNT; s++) {
+        tu_section(da_strategy_name(da_strategies[s]));
+        long wrong = run_strategy(da_strategies[s]);
         if (wrong)
             printf("  %ld wrong rays\n", wrong);
     }

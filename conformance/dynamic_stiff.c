@@ -37,18 +37,6 @@
 #define RAY_COUNT 2000
 #define BIG_TRIS 200000
 
-/* Every strategy (RT_ASYNC_REBUILD where the header has it). */
-static const RTenum strategies[] = {RT_REFIT,
-                                    RT_REBUILD,
-                                    RT_REBUILD_MEDIAN,
-                                    RT_REBUILD_HEURISTIC,
-                                    RT_RESTRUCTURE,
-#ifdef RT_ASYNC_REBUILD
-                                    RT_ASYNC_REBUILD,
-#endif
-                                    RT_AUTOMATIC};
-#define STRATEGY_COUNT ((int)(sizeof(strategies) / sizeof(strategies[0])))
-
 /* How a step changes the object. */
 enum via {
     VIA_DEFINE,       /* rtNewObject .. rtEndObject */
@@ -267,11 +255,11 @@ static void run_all(const char *name, struct step *steps, int n, struct da_compa
             make_rays(&steps[i], 1000u + (uint64_t)i);
         compute_reference(&steps[i]);
     }
-    for (int s = 0; s < STRATEGY_COUNT; s++) {
+    for (int s = 0; s < DA_STRATEGY_COUNT; s++) {
         char section[128];
-        snprintf(section, sizeof section, "%s: %s", name, da_strategy_name(strategies[s]));
+        snprintf(section, sizeof section, "%s: %s", name, da_strategy_name(da_strategies[s]));
         tu_section(section);
-        run_case(name, steps, n, strategies[s], st);
+        run_case(name, steps, n, da_strategies[s], st);
     }
 }
 
@@ -464,16 +452,16 @@ static void delete_after_update(struct da_compare_stats *st)
         rtMakeCurrent(saved);
     }
 
-    for (int s = 0; s < STRATEGY_COUNT; s++) {
+    for (int s = 0; s < DA_STRATEGY_COUNT; s++) {
         char section[128], label[128];
         snprintf(section, sizeof section, "delete right after an update: %s",
-                 da_strategy_name(strategies[s]));
+                 da_strategy_name(da_strategies[s]));
         tu_section(section);
-        snprintf(label, sizeof label, "delete, %s", da_strategy_name(strategies[s]));
+        snprintf(label, sizeof label, "delete, %s", da_strategy_name(da_strategies[s]));
         RTcontext ctx = tu_make_context("threads=2");
         RTuint name = OBJ;
         tu_capture_errors();
-        rtRenderParameteri(RT_UPDATE_STRATEGY, (RTint)strategies[s]);
+        rtRenderParameteri(RT_UPDATE_STRATEGY, (RTint)da_strategies[s]);
         for (int how = 0; how < 4; how++) {
             define_tris(OBJ, a0, 600);
             define_tris(OTHER, other, 600);

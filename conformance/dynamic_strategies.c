@@ -46,18 +46,6 @@
 
 enum method { BY_UPDATE, BY_REDEFINITION };
 
-/* Every strategy (RT_ASYNC_REBUILD where the header has it). */
-static const RTenum strategies[] = {RT_REFIT,
-                                    RT_REBUILD,
-                                    RT_REBUILD_MEDIAN,
-                                    RT_REBUILD_HEURISTIC,
-                                    RT_RESTRUCTURE,
-#ifdef RT_ASYNC_REBUILD
-                                    RT_ASYNC_REBUILD,
-#endif
-                                    RT_AUTOMATIC};
-#define STRATEGY_COUNT ((int)(sizeof(strategies) / sizeof(strategies[0])))
-
 static const int kinds[] = {DA_SPHERE, DA_CLOTH, DA_SOUP};
 #define KIND_COUNT 3
 
@@ -197,13 +185,13 @@ int main(void)
     }
 
     for (int m = 0; m < 2; m++)
-        for (int s = 0; s < STRATEGY_COUNT; s++) {
+        for (int s = 0; s < DA_STRATEGY_COUNT; s++) {
             char section[96];
-            snprintf(section, sizeof section, "%s, animated by %s", da_strategy_name(strategies[s]),
+            snprintf(section, sizeof section, "%s, animated by %s", da_strategy_name(da_strategies[s]),
                      m == BY_UPDATE ? "rtUpdateVertices (object hint)"
                                     : "redefinition (context default)");
             tu_section(section);
-            long bad = run(strategies[s], (enum method)m, &ref, rays, hits, image, &st);
+            long bad = run(da_strategies[s], (enum method)m, &ref, rays, hits, image, &st);
             if (bad)
                 printf("  %ld mismatching rays and pixels\n", bad);
         }

@@ -41,18 +41,6 @@
 
 enum method { BY_UPDATE, BY_REDEFINITION };
 
-/* Every strategy (RT_ASYNC_REBUILD where the header has it). */
-static const RTenum strategies[] = {RT_REFIT,
-                                    RT_REBUILD,
-                                    RT_REBUILD_MEDIAN,
-                                    RT_REBUILD_HEURISTIC,
-                                    RT_RESTRUCTURE,
-#ifdef RT_ASYNC_REBUILD
-                                    RT_ASYNC_REBUILD,
-#endif
-                                    RT_AUTOMATIC};
-#define STRATEGY_COUNT ((int)(sizeof(strategies) / sizeof(strategies[0])))
-
 static const int kinds[] = {DA_BIG, DA_SPHERE, DA_CLOTH, DA_SOUP, DA_POPPER};
 #define KIND_COUNT 5
 
@@ -172,23 +160,23 @@ int main(void)
     da_rays(rays, RAY_COUNT, 777u);
 
     for (int m = 0; m < 2; m++)
-        for (int s = 0; s < STRATEGY_COUNT; s++) {
+        for (int s = 0; s < DA_STRATEGY_COUNT; s++) {
             char section[96];
             struct play base, main_thread, app[2];
             pthread_t tid[2];
             snprintf(section, sizeof section, "%s by %s: threads=1 vs threads=4",
-                     da_strategy_name(strategies[s]),
+                     da_strategy_name(da_strategies[s]),
                      m == BY_UPDATE ? "rtUpdateVertices" : "redefinition");
             tu_section(section);
-            play_init(&base, strategies[s], (enum method)m, "threads=1", rays);
-            play_init(&main_thread, strategies[s], (enum method)m, "threads=4", rays);
+            play_init(&base, da_strategies[s], (enum method)m, "threads=1", rays);
+            play_init(&main_thread, da_strategies[s], (enum method)m, "threads=4", rays);
             play(&base);
             play(&main_thread);
             CHECK_INT(base.error, RT_NO_ERROR);
             CHECK(base.updates_ok);
             compare(&base, &main_thread, "threads=4", &st, &not_bitwise);
             for (int t = 0; t < 2; t++) {
-                play_init(&app[t], strategies[s], (enum method)m, "threads=4", rays);
+                play_init(&app[t], da_strategies[s], (enum method)m, "threads=4", rays);
                 CHECK_INT(pthread_create(&tid[t], NULL, play, &app[t]), 0);
             }
             for (int t = 0; t < 2; t++) {

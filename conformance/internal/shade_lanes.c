@@ -121,53 +121,66 @@ static float any_coord(int n)
     }
 }
 
-/* The largest |lanes_log2_4(x) - log2l(x)| over the grid and the random
- * doubles; the failures counted against 2^-48. */
+/* The log2 tests' inputs: every 13th float of [1, 2^32] (the grid),
+ * then a million random doubles of [1, 2^32) (2^e times a random
+ * mantissa). */
+struct log2_inputs {
+    uint32_t bits;   /* the grid's next float */
+    long randoms;    /* random doubles given so far */
+};
+
+#define LOG2_GRID_FIRST 0x3f800000u /* 1.0f */
+#define LOG2_GRID_END 0x4f800000u   /* 2^32 */
+#define LOG2_RANDOMS 1000000L
+
+/* The next n inputs into xs, 1.0 (an input like any other) after the
+ * last; returns 0 once every input has been given. */
+static int log2_inputs_next(struct log2_inputs *in, double *xs, int n)
+{
+    int k = 0;
+    for (; k < n; k++) {
+        if (in->bits <= LOG2_GRID_END) {
+            float f;
+            memcpy(&f, &in->bits, sizeof(f));
+            xs[k] = (double)f;
+            in->bits += 13;
+        } else if (in->randoms < LOG2_RANDOMS) {
+            const uint64_t m = ((uint64_t)next() << 32 | next()) & 0x000fffffffffffffull;
+            const uint64_t e = 1023u + next() % 32u;
+            const uint64_t b = e << 52 | m;
+            memcpy(&xs[k], &b, sizeof(double));
+            in->randoms++;
+        } else
+            break;
+    }
+    const int given = k;
+    for (; k < n; k++)
+        xs[k] = 1.0;
+    return given > 0;
+}
+
+/* The largest |lanes_log2_4(x) - log2l(x)| over the log2 inputs; the
+ * failures counted against 2^-48. */
 static int log2_bound(shade_log2_quad_fn log2_quad)
 {
     int failures = 0;
     long double worst = 0.0L;
     double xs[4], got[4], half[4];
-    int n = 0;
-    uint32_t bits = 0x3f800000u; /* 1.0f */
-    const uint32_t end = 0x4f800000u; /* 2^32 */
-    long count = 0;
-    for (;;) {
-        int done = bits > end;
-        if (!done) {
-            float f;
-            memcpy(&f, &bits, sizeof(f));
-            xs[n++] = (double)f;
-            bits += 13;
-        } else if (count < 1000000) {
-            /* A random double of [1, 2^32): 2^e times a random mantissa. */
-            const uint64_t m = ((uint64_t)next() << 32 | next()) & 0x000fffffffffffffull;
-            const uint64_t e = 1023u + next() % 32u;
-            const uint64_t b = e << 52 | m;
-            memcpy(&xs[n++], &b, sizeof(double));
-            count++;
-            done = 0;
+    struct log2_inputs in = {LOG2_GRID_FIRST, 0};
+    while (log2_inputs_next(&in, xs, 4)) {
+        log2_quad(xs, got, half);
+        for (int k = 0; k < 4; k++) {
+            /* The halved form (lod_fast's squared footprints) bit for bit
+             * the half of the log2. */
+            const double want = got[k] * 0.5;
+            if (memcmp(&half[k], &want, sizeof(double)) != 0)
+                failures += !CHECKF(0, "log2(%a) / 2: %a, not %a", xs[k], half[k], want);
+            const long double err = fabsl((long double)got[k] - log2l((long double)xs[k]));
+            if (err > worst)
+                worst = err;
+            if (!(err <= 0x1p-48L))
+                failures += !CHECKF(0, "log2(%a): %a, off by %Lg", xs[k], got[k], err);
         }
-        if (n == 4 || (done && n > 0)) {
-            while (n < 4)
-                xs[n++] = 1.0;
-            log2_quad(xs, got, half);
-            for (int k = 0; k < 4; k++) {
-                /* The halved form (lod_fast's squared footprints) bit
-                 * for bit the half of the log2. */
-                const double want = got[k] * 0.5;
-                if (memcmp(&half[k], &want, sizeof(double)) != 0)
-                    failures += !CHECKF(0, "log2(%a) / 2: %a, not %a", xs[k], half[k], want);
-                const long double err = fabsl((long double)got[k] - log2l((long double)xs[k]));
-                if (err > worst)
-                    worst = err;
-                if (!(err <= 0x1p-48L))
-                    failures += !CHECKF(0, "log2(%a): %a, off by %Lg", xs[k], got[k], err);
-            }
-            n = 0;
-        }
-        if (done)
-            break;
     }
     printf("shade_lanes: log2's largest error %Lg (2^%.2f)\n", worst,
            worst > 0.0L ? (double)log2l(worst) : -INFINITY);
@@ -176,56 +189,31 @@ static int log2_bound(shade_log2_quad_fn log2_quad)
 
 /* The AVX-512 copy's halved log2 (lanes_log2_8_half, which the frame's
  * AVX-512 shading runs) within 2^-49 of log2l / 2, half the four-lane
- * form's bound, over the same grid and a million random doubles of its
- * own, and bit for bit the four-lane half (the same operations). */
+ * form's bound, over the log2 inputs (a million random doubles of its
+ * own), and bit for bit the four-lane half (the same operations). */
 static int log2_bound8(shade_log2_oct_half_fn log2_oct_half, shade_log2_quad_fn log2_quad)
 {
     int failures = 0;
     long double worst = 0.0L;
     double xs[8], half[8];
-    int n = 0;
-    uint32_t bits = 0x3f800000u; /* 1.0f */
-    const uint32_t end = 0x4f800000u; /* 2^32 */
-    long count = 0;
-    for (;;) {
-        int done = bits > end;
-        if (!done) {
-            float f;
-            memcpy(&f, &bits, sizeof(f));
-            xs[n++] = (double)f;
-            bits += 13;
-        } else if (count < 1000000) {
-            const uint64_t m = ((uint64_t)next() << 32 | next()) & 0x000fffffffffffffull;
-            const uint64_t e = 1023u + next() % 32u;
-            const uint64_t b = e << 52 | m;
-            memcpy(&xs[n++], &b, sizeof(double));
-            count++;
-            done = 0;
+    struct log2_inputs in = {LOG2_GRID_FIRST, 0};
+    while (log2_inputs_next(&in, xs, 8)) {
+        log2_oct_half(xs, half);
+        for (int h = 0; h < 8; h += 4) {
+            double full4[4], half4[4];
+            log2_quad(xs + h, full4, half4);
+            if (memcmp(half4, half + h, sizeof(half4)) != 0)
+                failures += !CHECKF(0, "log2 / 2 of %a..%a: eight lanes differ from four",
+                                    xs[h], xs[h + 3]);
         }
-        if (n == 8 || (done && n > 0)) {
-            while (n < 8)
-                xs[n++] = 1.0;
-            log2_oct_half(xs, half);
-            for (int h = 0; h < 8; h += 4) {
-                double full4[4], half4[4];
-                log2_quad(xs + h, full4, half4);
-                if (memcmp(half4, half + h, sizeof(half4)) != 0)
-                    failures += !CHECKF(0, "log2 / 2 of %a..%a: eight lanes differ from four",
-                                        xs[h], xs[h + 3]);
-            }
-            for (int k = 0; k < 8; k++) {
-                const long double err =
-                    fabsl((long double)half[k] - 0.5L * log2l((long double)xs[k]));
-                if (err > worst)
-                    worst = err;
-                if (!(err <= 0x1p-49L))
-                    failures += !CHECKF(0, "log2(%a) / 2, eight lanes: %a, off by %Lg", xs[k],
-                                        half[k], err);
-            }
-            n = 0;
+        for (int k = 0; k < 8; k++) {
+            const long double err = fabsl((long double)half[k] - 0.5L * log2l((long double)xs[k]));
+            if (err > worst)
+                worst = err;
+            if (!(err <= 0x1p-49L))
+                failures += !CHECKF(0, "log2(%a) / 2, eight lanes: %a, off by %Lg", xs[k], half[k],
+                                    err);
         }
-        if (done)
-            break;
     }
     printf("shade_lanes: the eight-lane half log2's largest error %Lg (2^%.2f)\n", worst,
            worst > 0.0L ? (double)log2l(worst) : -INFINITY);

@@ -79,6 +79,22 @@ static float node_area(const struct bvh_node *n)
     return dx * dy + dy * dz + dz * dx;
 }
 
+/* Two sibling subtrees' slot spans as one: their total with the first
+ * slot in *first when they are consecutive in either order, else 0. */
+static inline uint32_t joined_span(uint32_t first_l, uint32_t span_l, uint32_t first_r,
+                                   uint32_t span_r, uint32_t *first)
+{
+    if (first_l + span_l == first_r) {
+        *first = first_l;
+        return span_l + span_r;
+    }
+    if (first_r + span_r == first_l) {
+        *first = first_r;
+        return span_l + span_r;
+    }
+    return 0;
+}
+
 /* The triangles of binary subtree i when they are at most `budget` and
  * occupy consecutive leaf slots (returned, the first in *first), else 0.
  * Consecutive means: a leaf's slots, or the children's runs adjacent in
@@ -112,15 +128,7 @@ static uint32_t small_span(const struct bvh *bvh, uint32_t i, uint32_t budget, u
     uint32_t span_r = small_span(bvh, node->first + 1, budget - span_l, &first_r);
     if (!span_r)
         return 0;
-    if (first_l + span_l == first_r) {
-        *first = first_l;
-        return span_l + span_r;
-    }
-    if (first_r + span_r == first_l) {
-        *first = first_r;
-        return span_l + span_r;
-    }
-    return 0;
+    return joined_span(first_l, span_l, first_r, span_r, first);
 }
 
 /* small_span counting only the triangles of non-zero area (zero[slot] 0)
@@ -164,15 +172,7 @@ static uint32_t small_span_live(const struct bvh *bvh, const uint8_t *zero, uint
     if (!span_r)
         return 0;
     *live = live_l + live_r;
-    if (first_l + span_l == first_r) {
-        *first = first_l;
-        return span_l + span_r;
-    }
-    if (first_r + span_r == first_l) {
-        *first = first_r;
-        return span_l + span_r;
-    }
-    return 0;
+    return joined_span(first_l, span_l, first_r, span_r, first);
 }
 
 /* leaf_lane's merge by the triangles of non-zero area: small_span_live
