@@ -1188,10 +1188,30 @@ struct collapse {
     uint32_t *zero_found;
 };
 
+/* The rows of leaf slots slots[0 .. m), m <= 4, as the packets read
+ * them (fill_packet, fill_packet_mesh): in the leaf-ordered triangles,
+ * or gathered from the mesh into buf (accel_gather_triangle); rows past
+ * m repeat the last one, as fill_packet_rows expects. */
+static void slot_rows(const struct collapse *c, const uint32_t *slots, uint32_t m,
+                      float buf[4][9], const float *row[4])
+{
+    for (uint32_t k = 0; k < 4; k++) {
+        if (k >= m) {
+            row[k] = row[m - 1];
+        } else if (c->src.tri) {
+            row[k] = &c->src.tri[9 * (size_t)slots[k]];
+        } else {
+            accel_gather_triangle(buf[k], c->src.positions, c->src.indices,
+                                  c->bvh->prim_index[slots[k]]);
+            row[k] = buf[k];
+        }
+    }
+}
+
 /* Bit j: leaf slot first + j's triangle has zero area
  * (isect_triangle_zero_area), for the n <= BVH_WIDE_MAX_LEAF slots from
- * first; read as the packets read them (fill_packet, fill_packet_mesh),
- * four at a time as the fill tests them. */
+ * first; read as the packets read them (slot_rows), four at a time as
+ * the fill tests them. */
 static uint32_t slots_zero_mask(const struct collapse *c, uint32_t first, uint32_t n)
 {
     uint32_t mask = 0;
@@ -1199,20 +1219,8 @@ static uint32_t slots_zero_mask(const struct collapse *c, uint32_t first, uint32
         float buf[4][9];
         const float *row[4];
         const uint32_t m = n - j < 4 ? n - j : 4;
-        for (uint32_t k = 0; k < 4; k++) {
-            if (k >= m) {
-                row[k] = row[m - 1];
-                continue;
-            }
-            const uint32_t slot = first + j + k;
-            if (c->src.tri) {
-                row[k] = &c->src.tri[9 * (size_t)slot];
-            } else {
-                accel_gather_triangle(buf[k], c->src.positions, c->src.indices,
-                                      c->bvh->prim_index[slot]);
-                row[k] = buf[k];
-            }
-        }
+        const uint32_t slots[4] = {first + j, first + j + 1, first + j + 2, first + j + 3};
+        slot_rows(c, slots, m, buf, row);
         mask |= ((uint32_t)rows_zero_mask(row) & ((1u << m) - 1u)) << j;
     }
     return mask;
@@ -1434,17 +1442,10 @@ static void write_kept(const struct collapse *c, const struct scratch_node *s, i
         const uint32_t m = n - j < 4 ? n - j : 4;
         float buf[4][9];
         const float *row[4];
+        slot_rows(c, slots + j, m, buf, row);
         uint32_t prim[4];
-        for (uint32_t k = 0; k < 4; k++) {
-            const uint32_t slot = slots[j + (k < m ? k : m - 1)];
-            prim[k] = c->bvh->prim_index[slot];
-            if (c->src.tri) {
-                row[k] = &c->src.tri[9 * (size_t)slot];
-            } else {
-                accel_gather_triangle(buf[k], c->src.positions, c->src.indices, prim[k]);
-                row[k] = buf[k];
-            }
-        }
+        for (uint32_t k = 0; k < 4; k++)
+            prim[k] = c->bvh->prim_index[slots[j + (k < m ? k : m - 1)]];
         c->packet_slot[p] = slots[j];
         fill_packet_rows(&c->packets[p], row, NULL, 0, m, 0);
         memcpy(c->packets[p].prim, prim, sizeof(prim));
