@@ -1154,17 +1154,25 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                 /* This block's prefetches, then the last block's texels. */
                 const int begun = RENDER_EYE_BLOCK_BEGIN(sc, b->dirs, &b->by_lane.rays, block_hits,
                                                          px, &pending[pending_slot]);
+                if (next)
+                    block_next(pass, &cache, &lanes, x0, y0, by, nbx, nby, &prep[cur ^ 1]);
                 if (pending_full)
                     RENDER_EYE_BLOCK_END(sc, &pending[pending_slot ^ 1]);
                 pending_full = begun;
                 pending_slot ^= begun;
 #else
+                if (next)
+                    block_next(pass, &cache, &lanes, x0, y0, by, nbx, nby, &prep[cur ^ 1]);
                 shade_eye_hits(sc, TRACE_PACKET, b->dirs, block_hits, cone, px);
 #endif
             } else {
+                if (next)
+                    block_next(pass, &cache, &lanes, x0, y0, by, nbx, nby, &prep[cur ^ 1]);
                 eye_block(pass, sc, x0, y0, bx, by, pk, found, hits, cone);
             }
         } else {
+            if (next)
+                block_next(pass, &cache, &lanes, x0, y0, by, nbx, nby, &prep[cur ^ 1]);
             /* Whitted shading's shadow rays of the block's first hits,
              * one packet per light, and the surfaces they start on. */
             struct shade_primed primed[TRACE_PACKET];
@@ -1222,7 +1230,6 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
         }
         if (!next)
             break;
-        block_next(pass, &cache, &lanes, x0, y0, by, nbx, nby, &prep[cur ^ 1]);
         bx = nbx;
         by = nby;
         cur ^= 1;
