@@ -1039,21 +1039,6 @@ static inline void block_prepare(const struct unproject_cache *cache, const int 
     }
 }
 
-/* The next block's rays (block_prepare) into *b, the cache moved to its
- * block row first when it starts one (by the current block's row, *lanes
- * the row's block_row_lanes). */
-static inline void block_next(const struct render_pass *pass, struct unproject_cache *cache,
-                              int *lanes, int x0, int y0, int by, int nbx, int nby,
-                              struct block_prep *b)
-{
-    const int *vp = pass->job->state->viewport;
-    if (nby != by) {
-        unproject_cache_row(pass, cache, nby);
-        *lanes = block_row_lanes(cache, vp, y0, nby);
-    }
-    block_prepare(cache, vp, *lanes, x0, y0, nbx, nby, b);
-}
-
 /*
  * The tile with packets (packets=on, trace/packet_scene.h): the camera
  * rays of each 4 x 2 block of pixels are traced together to their first
@@ -1135,6 +1120,13 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
             nby = by + RENDER_BLOCK_H;
         }
         const int next = nby < y0 + RENDER_TILE_SIZE && nby < vp[3];
+        if (next) {
+            if (nby != by) {
+                unproject_cache_row(pass, &cache, nby);
+                lanes = block_row_lanes(&cache, vp, y0, nby);
+            }
+            block_prepare(&cache, vp, lanes, x0, y0, nbx, nby, &prep[cur ^ 1]);
+        }
         if (eye && direct && pass->all_drawn) {
             /* The loop below when every hit is drawn and shaded by the
              * eye light: a pixel is its ray's hit, shaded with the
@@ -1154,25 +1146,16 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                 /* This block's prefetches, then the last block's texels. */
                 const int begun = RENDER_EYE_BLOCK_BEGIN(sc, b->dirs, &b->by_lane.rays, block_hits,
                                                          px, &pending[pending_slot]);
-                if (next)
-                    block_next(pass, &cache, &lanes, x0, y0, by, nbx, nby, &prep[cur ^ 1]);
                 if (pending_full)
                     RENDER_EYE_BLOCK_END(sc, &pending[pending_slot ^ 1]);
                 pending_full = begun;
                 pending_slot ^= begun;
 #else
-                if (next)
-                    block_next(pass, &cache, &lanes, x0, y0, by, nbx, nby, &prep[cur ^ 1]);
                 shade_eye_hits(sc, TRACE_PACKET, b->dirs, block_hits, cone, px);
 #endif
-            } else {
-                if (next)
-                    block_next(pass, &cache, &lanes, x0, y0, by, nbx, nby, &prep[cur ^ 1]);
+            } else
                 eye_block(pass, sc, x0, y0, bx, by, pk, found, hits, cone);
-            }
         } else {
-            if (next)
-                block_next(pass, &cache, &lanes, x0, y0, by, nbx, nby, &prep[cur ^ 1]);
             /* Whitted shading's shadow rays of the block's first hits,
              * one packet per light, and the surfaces they start on. */
             struct shade_primed primed[TRACE_PACKET];
