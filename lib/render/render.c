@@ -976,95 +976,18 @@ static void eye_block(struct render_pass *pass, struct shade_context *sc, int x0
 }
 
 /*
- * A block's camera rays as the packet loop makes them (block_prepare):
- * the packet, the cones, the rays by component where the eye light's
- * lanes read them (block_lanes), the directions as the eye light's
- * pointers, and whether every pixel of the block is inside and its ray
- * made.  The loop keeps two: the block being traced and shaded, and the
- * next one, made between the two (render_tile_packets).
- */
-struct block_prep {
-    struct trace_packet pk;
-    struct shade_cone cone[TRACE_PACKET];
-#if RENDER_PAIRS
-    struct block_lanes by_lane;
-#endif
-    const float *dirs[TRACE_PACKET]; /* pk.dir[i], set once */
-    int whole;
-};
-
-/* 1 when the blocks of the block row at by may take their rays in lanes
- * (block_rays): both rows inside and every point of the rows and the
- * next one unprojected; the cache's first row is by. */
-static int block_row_lanes(const struct unproject_cache *c, const int *vp, int y0, int by)
-{
-#if RENDER_PAIRS
-    return by + RENDER_BLOCK_H <= y0 + RENDER_TILE_SIZE && by + RENDER_BLOCK_H <= vp[3] &&
-           c->rows[0]->whole && c->rows[1]->whole && c->rows[2]->whole;
-#else
-    (void)c;
-    (void)vp;
-    (void)y0;
-    (void)by;
-    return 0;
-#endif
-}
-
-/* The rays of the block at (bx, by) of the tile at (x0, y0) into *b: in
- * lanes (block_rays) when the block row allows it (lanes) and the block
- * is inside, else pixel by pixel (primary_ray), the packet's mask the
- * rays made.  The cache's first row is by. */
-static inline void block_prepare(const struct unproject_cache *cache, const int *vp, int lanes,
-                                 int x0, int y0, int bx, int by, struct block_prep *b)
-{
-#if RENDER_PAIRS
-    if (lanes && bx + RENDER_BLOCK_W <= x0 + RENDER_TILE_SIZE && bx + RENDER_BLOCK_W <= vp[2] &&
-        block_rays(cache, bx - x0, &b->pk, b->cone, &b->by_lane)) {
-        b->pk.active = (1u << TRACE_PACKET) - 1u;
-        b->whole = 1;
-        return;
-    }
-#else
-    (void)lanes;
-#endif
-    b->whole = 0;
-    b->pk.active = 0;
-    for (int i = 0; i < TRACE_PACKET; i++) {
-        const int x = bx + i % RENDER_BLOCK_W, y = by + i / RENDER_BLOCK_W;
-        if (block_pixel_inside(vp, x0, y0, bx, by, i) &&
-            primary_ray(cache, x, y, b->pk.org[i], b->pk.dir[i], &b->pk.tmax[i], &b->cone[i])) {
-            b->pk.tmin[i] = 0.0f;
-            b->pk.active |= 1u << i;
-        }
-    }
-}
-
-/*
  * The tile with packets (packets=on, trace/packet_scene.h): the camera
  * rays of each 4 x 2 block of pixels are traced together to their first
  * hit, then each pixel is shaded as render_tile does, its first trace
  * taken from the packet (shade_context.primed).  The same image bit for
  * bit: a packet's hits are the single rays' hits, and pixels do not
  * depend on the order they are shaded in.
- *
- * The blocks go in the order walk(k), rays(k + 1), shading(k),
- * walk(k + 1): a block's rays are made after the previous block's walk
- * and before its shading, in the other of two block_preps.  A block's
- * rays are a chain (its points, their distances' square roots, the
- * directions' and spreads' divisions, the packet's stores) that the
- * walk's first loads wait for when it is made just before the walk; made
- * a shading ahead, the out-of-order core runs it beside the shading's
- * long-latency work (its gathers, texel misses and divisions), and the
- * walk finds its inputs stored.  The rays do not depend on when they are
- * made (the same cache rows, the same operations), so the same rays.
  */
 static void render_tile_packets(struct render_pass *pass, struct shade_context *sc, int x0,
                                 int y0)
 {
     const struct render_state *st = pass->job->state;
     const int *vp = st->viewport;
-    if (!(y0 < vp[3] && x0 < vp[2]))
-        return;
     /* The tile's blocks share their unprojected pixel centres: each one
      * once, where a cache per block made the blocks' right and lower
      * neighbours a second time. */
@@ -1080,15 +1003,19 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
     /* The eye light's direct hits of a block are shaded together, their
      * texture levels of detail two at a time (shade_eye_hits). */
     const int eye = st->shading == RENDER_EYE_LIGHT;
-    struct block_prep prep[2];
+    struct trace_packet pk;
+    struct shade_cone cone[TRACE_PACKET];
     struct trace_scene_hit hits[TRACE_PACKET];
+#if RENDER_PAIRS
+    struct block_lanes by_lane;
+#endif
     /* A whole block's eye-light hits, every ray made and every one a hit
      * (eye_block's common case): its rays' directions and hits are the
-     * same arrays for every block of the tile that uses the same prep. */
+     * same arrays for every block of the tile. */
+    const float *block_dirs[TRACE_PACKET];
     const struct trace_scene_hit *block_hits[TRACE_PACKET];
     for (int i = 0; i < TRACE_PACKET; i++) {
-        prep[0].dirs[i] = prep[0].pk.dir[i];
-        prep[1].dirs[i] = prep[1].pk.dir[i];
+        block_dirs[i] = pk.dir[i];
         block_hits[i] = &hits[i];
     }
 #if defined(RENDER_UNIT_AVX2)
@@ -1105,57 +1032,67 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
     int pending_slot = 0; /* the slot the next block begins in */
     int pending_full = 0; /* the other slot holds a block to end */
 #endif
-    int bx = x0, by = y0, cur = 0;
-    int lanes = block_row_lanes(&cache, vp, y0, by);
-    block_prepare(&cache, vp, lanes, x0, y0, bx, by, &prep[cur]);
-    for (;;) {
-        struct block_prep *const b = &prep[cur];
-        struct trace_packet *const pk = &b->pk;
-        const struct shade_cone *const cone = b->cone;
-        const unsigned found = trace_scene_closest_packet(sc->scene, pk, hits, sc->counters);
-        /* The next block's rays, the next block row's cache rows first. */
-        int nbx = bx + RENDER_BLOCK_W, nby = by;
-        if (!(nbx < x0 + RENDER_TILE_SIZE && nbx < vp[2])) {
-            nbx = x0;
-            nby = by + RENDER_BLOCK_H;
-        }
-        const int next = nby < y0 + RENDER_TILE_SIZE && nby < vp[3];
-        if (next) {
-            if (nby != by) {
-                unproject_cache_row(pass, &cache, nby);
-                lanes = block_row_lanes(&cache, vp, y0, nby);
-            }
-            block_prepare(&cache, vp, lanes, x0, y0, nbx, nby, &prep[cur ^ 1]);
-        }
-        if (eye && direct && pass->all_drawn) {
-            /* The loop below when every hit is drawn and shaded by the
-             * eye light: a pixel is its ray's hit, shaded with the
-             * block's others, or the clear colour, without the primed
-             * hits (only Whitted's shading reads them) or the other
-             * branches' tests. */
-            if (b->whole && found == pk->active && !pass->depth) {
-                /* eye_block's batch when all eight are hits. */
-                float *px[TRACE_PACKET];
-                float *row = &pass->fb[4 * ((size_t)(vp[1] + by) * pass->fb_width +
-                                            (size_t)(vp[0] + bx))];
-                for (int i = 0; i < RENDER_BLOCK_W; i++) {
-                    px[i] = row + 4 * i;
-                    px[RENDER_BLOCK_W + i] = row + 4 * ((size_t)pass->fb_width + (size_t)i);
-                }
-#if defined(RENDER_UNIT_AVX2)
-                /* This block's prefetches, then the last block's texels. */
-                const int begun = RENDER_EYE_BLOCK_BEGIN(sc, b->dirs, &b->by_lane.rays, block_hits,
-                                                         px, &pending[pending_slot]);
-                if (pending_full)
-                    RENDER_EYE_BLOCK_END(sc, &pending[pending_slot ^ 1]);
-                pending_full = begun;
-                pending_slot ^= begun;
-#else
-                shade_eye_hits(sc, TRACE_PACKET, b->dirs, block_hits, cone, px);
+    for (int by = y0; by < y0 + RENDER_TILE_SIZE && by < vp[3]; by += RENDER_BLOCK_H) {
+        unproject_cache_row(pass, &cache, by);
+#if RENDER_PAIRS
+        /* Both rows inside and every point of the rows and the next one
+         * unprojected: the blocks' rays in pairs of lanes. */
+        const int lanes = by + RENDER_BLOCK_H <= y0 + RENDER_TILE_SIZE &&
+                          by + RENDER_BLOCK_H <= vp[3] && cache.rows[0]->whole &&
+                          cache.rows[1]->whole && cache.rows[2]->whole;
 #endif
-            } else
-                eye_block(pass, sc, x0, y0, bx, by, pk, found, hits, cone);
-        } else {
+        for (int bx = x0; bx < x0 + RENDER_TILE_SIZE && bx < vp[2]; bx += RENDER_BLOCK_W) {
+            int whole = 0; /* every pixel of the block inside and its ray made */
+#if RENDER_PAIRS
+            if (lanes && bx + RENDER_BLOCK_W <= x0 + RENDER_TILE_SIZE &&
+                bx + RENDER_BLOCK_W <= vp[2] && block_rays(&cache, bx - x0, &pk, cone, &by_lane)) {
+                pk.active = (1u << TRACE_PACKET) - 1u;
+                whole = 1;
+            }
+#endif
+            if (!whole) {
+                pk.active = 0;
+                for (int i = 0; i < TRACE_PACKET; i++) {
+                    const int x = bx + i % RENDER_BLOCK_W, y = by + i / RENDER_BLOCK_W;
+                    if (block_pixel_inside(vp, x0, y0, bx, by, i) &&
+                        primary_ray(&cache, x, y, pk.org[i], pk.dir[i], &pk.tmax[i],
+                                    &cone[i])) {
+                        pk.tmin[i] = 0.0f;
+                        pk.active |= 1u << i;
+                    }
+                }
+            }
+            const unsigned found = trace_scene_closest_packet(sc->scene, &pk, hits, sc->counters);
+            if (eye && direct && pass->all_drawn) {
+                /* The loop below when every hit is drawn and shaded by the
+                 * eye light: a pixel is its ray's hit, shaded with the
+                 * block's others, or the clear colour, without the primed
+                 * hits (only Whitted's shading reads them) or the other
+                 * branches' tests. */
+                if (whole && found == pk.active && !pass->depth) {
+                    /* eye_block's batch when all eight are hits. */
+                    float *px[TRACE_PACKET];
+                    float *row = &pass->fb[4 * ((size_t)(vp[1] + by) * pass->fb_width +
+                                                (size_t)(vp[0] + bx))];
+                    for (int i = 0; i < RENDER_BLOCK_W; i++) {
+                        px[i] = row + 4 * i;
+                        px[RENDER_BLOCK_W + i] = row + 4 * ((size_t)pass->fb_width + (size_t)i);
+                    }
+#if defined(RENDER_UNIT_AVX2)
+                    /* This block's prefetches, then the last block's texels. */
+                    const int begun = RENDER_EYE_BLOCK_BEGIN(
+                        sc, block_dirs, &by_lane.rays, block_hits, px, &pending[pending_slot]);
+                    if (pending_full)
+                        RENDER_EYE_BLOCK_END(sc, &pending[pending_slot ^ 1]);
+                    pending_full = begun;
+                    pending_slot ^= begun;
+#else
+                    shade_eye_hits(sc, TRACE_PACKET, block_dirs, block_hits, cone, px);
+#endif
+                } else
+                    eye_block(pass, sc, x0, y0, bx, by, &pk, found, hits, cone);
+                continue;
+            }
             /* Whitted shading's shadow rays of the block's first hits,
              * one packet per light, and the surfaces they start on. */
             struct shade_primed primed[TRACE_PACKET];
@@ -1170,15 +1107,15 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                 primed[i].shadow_occluded = 0;
                 primed[i].reflect_known = 0;
             }
-            shade_prime_shadows(sc, found, hits, (const float(*)[3])pk->org,
-                                (const float(*)[3])pk->dir, cone, surf, primed, reflected);
+            shade_prime_shadows(sc, found, hits, (const float(*)[3])pk.org,
+                                (const float(*)[3])pk.dir, cone, surf, primed, reflected);
             struct eye_batch eyes = {.n = 0};
             for (int i = 0; i < TRACE_PACKET; i++) {
                 if (!block_pixel_inside(vp, x0, y0, bx, by, i))
                     continue;
                 const int x = bx + i % RENDER_BLOCK_W, y = by + i / RENDER_BLOCK_W;
                 float *px = &pass->fb[4 * ((size_t)(vp[1] + y) * pass->fb_width + vp[0] + x)];
-                if (!(pk->active >> i & 1u)) {
+                if (!(pk.active >> i & 1u)) {
                     memcpy(px, st->clear_color, 4 * sizeof(float));
                     continue;
                 }
@@ -1190,32 +1127,27 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                     memcpy(px, st->clear_color, 4 * sizeof(float));
                     t_first = INFINITY;
                 } else if (direct &&
-                           (pass->all_drawn || gl_hit_drawn(sc, pk->dir[i], &primed[i].hit))) {
+                           (pass->all_drawn || gl_hit_drawn(sc, pk.dir[i], &primed[i].hit))) {
                     /* blend_trace_primary's first, opaque, drawn hit. */
                     if (eye) {
                         /* Shaded with the block's others below. */
-                        eye_batch_add(&eyes, pk->dir[i], &primed[i].hit, cone[i], px);
+                        eye_batch_add(&eyes, pk.dir[i], &primed[i].hit, cone[i], px);
                     } else
-                        shade_hit(sc, pk->org[i], pk->dir[i], &primed[i].hit, cone[i], 0, px);
+                        shade_hit(sc, pk.org[i], pk.dir[i], &primed[i].hit, cone[i], 0, px);
                     t_first = primed[i].hit.t;
                 } else if (pass->depth_state) /* polygon offset in the frame (lines.c) */
-                    blend_trace_primary_state(sc, pk->org[i], pk->dir[i], pk->tmax[i], cone[i],
-                                              px, &t_first, &pass->depth_state[at]);
+                    blend_trace_primary_state(sc, pk.org[i], pk.dir[i], pk.tmax[i], cone[i], px,
+                                              &t_first, &pass->depth_state[at]);
                 else
-                    blend_trace_primary(sc, pk->org[i], pk->dir[i], pk->tmax[i], cone[i], px,
+                    blend_trace_primary(sc, pk.org[i], pk.dir[i], pk.tmax[i], cone[i], px,
                                         &t_first);
                 sc->primed = NULL;
                 if (pass->depth)
                     pass->depth[at] =
-                        raster_window_depth(st->projection, pk->org[i], pk->dir[i], t_first);
+                        raster_window_depth(st->projection, pk.org[i], pk.dir[i], t_first);
             }
             eye_batch_shade(sc, &eyes);
         }
-        if (!next)
-            break;
-        bx = nbx;
-        by = nby;
-        cur ^= 1;
     }
 #if defined(RENDER_UNIT_AVX2)
     if (pending_full)
