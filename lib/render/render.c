@@ -598,16 +598,14 @@ typedef char render_cone_is_two_floats[sizeof(struct shade_cone) == 2 * sizeof(f
 
 /* primary_ray of the pixels at points i and i + 1 of cache row a (b the
  * row below) in the two lanes, lane 0 the left one, written straight
- * into the packet's rays first and first + 1 and their cones, their
- * tmaxes into the low half of *tmax_f (the caller stores a block's
- * eight, block_rays): each lane primary_ray's operations on its points in
- * its order, so the same floats.  Every point it reads must be unprojected.  Returns the mask of
+ * into the packet's rays first and first + 1 and their cones: each lane
+ * primary_ray's operations on its points in its order, so the same
+ * floats.  Every point it reads must be unprojected.  Returns the mask of
  * the lanes whose length is positive and finite; the others leave
  * primary_ray's common path, and what was written for them is to be
  * made again by primary_ray. */
 static inline int ray_pair(const struct unproject_row *a, const struct unproject_row *b, int i,
-                           struct trace_packet *pk, int first, struct shade_cone cone[],
-                           __m128 *tmax_f)
+                           struct trace_packet *pk, int first, struct shade_cone cone[])
 {
     __m128d p[3], d[3];
     for (int k = 0; k < 3; k++) {
@@ -620,7 +618,7 @@ static inline int ray_pair(const struct unproject_row *a, const struct unproject
     /* len > 0 and finite: 0 < len < infinity, false for a NaN. */
     const int ok = _mm_movemask_pd(_mm_and_pd(_mm_cmpgt_pd(len, _mm_setzero_pd()),
                                               _mm_cmplt_pd(len, _mm_set1_pd(INFINITY))));
-    *tmax_f = floats2(len);
+    _mm_storel_pi((__m64 *)&pk->tmax[first], floats2(len));
     for (int k = 0; k < 3; k++)
         d[k] = _mm_div_pd(d[k], len);
     store_dirs2(&pk->dir[first][0], floats2(d[0]), floats2(d[1]), floats2(d[2]));
@@ -772,17 +770,11 @@ static inline int block_rays(const struct unproject_cache *c, int i, struct trac
 #else
     (void)lanes;
     /* Written out pair by pair: constant offsets into the packet; the
-     * pairs in order and the tmins after them (store_dirs2).  The tmaxes
-     * two pairs a 16-byte store: the packet walk's entry loads them four
-     * at a time (trace/packet_scene.c), and a load spanning two 8-byte
-     * stores is not forwarded from them (store_dirs2). */
-    __m128 t0, t1, t2, t3;
-    const int ok = ray_pair(c->rows[0], c->rows[1], i, pk, 0, cone, &t0) &
-                   ray_pair(c->rows[0], c->rows[1], i + 2, pk, 2, cone, &t1) &
-                   ray_pair(c->rows[1], c->rows[2], i, pk, 4, cone, &t2) &
-                   ray_pair(c->rows[1], c->rows[2], i + 2, pk, 6, cone, &t3);
-    _mm_storeu_ps(&pk->tmax[0], _mm_movelh_ps(t0, t1));
-    _mm_storeu_ps(&pk->tmax[4], _mm_movelh_ps(t2, t3));
+     * pairs in order and the tmins after them (store_dirs2). */
+    const int ok = ray_pair(c->rows[0], c->rows[1], i, pk, 0, cone) &
+                   ray_pair(c->rows[0], c->rows[1], i + 2, pk, 2, cone) &
+                   ray_pair(c->rows[1], c->rows[2], i, pk, 4, cone) &
+                   ray_pair(c->rows[1], c->rows[2], i + 2, pk, 6, cone);
     for (int k = 0; k < TRACE_PACKET; k += 4)
         _mm_storeu_ps(&pk->tmin[k], _mm_setzero_ps());
     return ok == 3;
