@@ -562,37 +562,6 @@ static inline void store_points2(float *out, __m128 x, __m128 y, __m128 z)
     _mm_storeh_pi((__m64 *)(out + 4), yz);                                /* y1 z1 */
 }
 
-/*
- * Two directions given coordinate by coordinate (the low halves of x, y,
- * z) into out[2][3] as two 16-byte stores, one a direction: x0 y0 z0 z1
- * at out and x1 y1 z1 z1 at out + 3, each writing four bytes past its
- * direction.  The sse4 table reads a packet's directions in trace_ray_init
- * as two overlapping 8-byte loads a ray (floats 0-1 and 1-2), and a load
- * is forwarded from the store buffer only when one store holds all of its
- * bytes (Intel's optimization manual, store forwarding): with
- * store_points2's 16-byte and 8-byte stores the second ray's first load
- * (x1 y1) spanned both and waited for them to reach the cache.  The four
- * bytes past a direction belong to the next direction, stored after it
- * (block_rays writes the pairs in order), or, past the packet's last
- * direction, to tmin[0], which block_rays stores after every direction.
- * The origins are read a float at a time (trace_ray_init), which any
- * store holding the float forwards: they keep store_points2.
- */
-static inline void store_dirs2(float *out, __m128 x, __m128 y, __m128 z)
-{
-    const __m128 xy = _mm_unpacklo_ps(x, y);                               /* x0 y0 x1 y1 */
-    _mm_storeu_ps(out, _mm_movelh_ps(xy, z));                              /* x0 y0 z0 z1 */
-    _mm_storeu_ps(out + 3, _mm_shuffle_ps(xy, z, _MM_SHUFFLE(1, 1, 3, 2))); /* x1 y1 z1 z1 */
-}
-
-/* store_dirs2 writes four bytes past the packet's last direction, into
- * tmin[0]. */
-typedef char render_packet_tmin_follows_dir[offsetof(struct trace_packet, tmin) ==
-                                                    offsetof(struct trace_packet, dir) +
-                                                        sizeof(((struct trace_packet *)0)->dir)
-                                                ? 1
-                                                : -1];
-
 /* The cone's two floats are stored as a pair of lanes (ray_pair). */
 typedef char render_cone_is_two_floats[sizeof(struct shade_cone) == 2 * sizeof(float) ? 1 : -1];
 
@@ -621,7 +590,7 @@ static inline int ray_pair(const struct unproject_row *a, const struct unproject
     _mm_storel_pi((__m64 *)&pk->tmax[first], floats2(len));
     for (int k = 0; k < 3; k++)
         d[k] = _mm_div_pd(d[k], len);
-    store_dirs2(&pk->dir[first][0], floats2(d[0]), floats2(d[1]), floats2(d[2]));
+    store_points2(&pk->dir[first][0], floats2(d[0]), floats2(d[1]), floats2(d[2]));
     /* distances_to_line of the neighbours' near points (h = 0: right, 1:
      * below), then of their far points (h = 2, 3). */
     __m128d dist[4];
@@ -769,8 +738,7 @@ static inline int block_rays(const struct unproject_cache *c, int i, struct trac
     return ok == 15;
 #else
     (void)lanes;
-    /* Written out pair by pair: constant offsets into the packet; the
-     * pairs in order and the tmins after them (store_dirs2). */
+    /* Written out pair by pair: constant offsets into the packet. */
     const int ok = ray_pair(c->rows[0], c->rows[1], i, pk, 0, cone) &
                    ray_pair(c->rows[0], c->rows[1], i + 2, pk, 2, cone) &
                    ray_pair(c->rows[1], c->rows[2], i, pk, 4, cone) &
