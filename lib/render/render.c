@@ -1079,14 +1079,11 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                         px[RENDER_BLOCK_W + i] = row + 4 * ((size_t)pass->fb_width + (size_t)i);
                     }
 #if defined(RENDER_UNIT_AVX2)
-                    /* The last block's texels, then this block's
-                     * prefetches: the last block's end does not depend
-                     * on this block's walk, so the core runs it while the
-                     * walk's last hits reach this block's set-up. */
-                    if (pending_full)
-                        RENDER_EYE_BLOCK_END(sc, &pending[pending_slot ^ 1]);
+                    /* This block's prefetches, then the last block's texels. */
                     const int begun = RENDER_EYE_BLOCK_BEGIN(
                         sc, block_dirs, &by_lane.rays, block_hits, px, &pending[pending_slot]);
+                    if (pending_full)
+                        RENDER_EYE_BLOCK_END(sc, &pending[pending_slot ^ 1]);
                     pending_full = begun;
                     pending_slot ^= begun;
 #else
