@@ -16,61 +16,63 @@
  * passes on the way to one passes here.  Extra boxes cost visits only.
  *
  * The test.  isect_box's slab distance is r = fl(fl(b - o) * i) (b a
- * bound, o the origin, i = 1 / d, on one axis), within gamma(2) of the
- * exact T = (b - o) i (Higham, "Accuracy and Stability of Numerical
- * Algorithms", 2nd ed., 2002, sec. 3.1: gamma(n) = n u / (1 - n u),
- * u = 2^-24), and its far distance is then scaled by
- * s = ISECT_BOX_FAR_SCALE = 1 + 8u (Ize, "Robust BVH ray traversal",
- * JCGT 2(2), 2013).  Here, with per-ray constants
- *   q = fl(o i),  D = fl(fl(Q 2^-21) + 2^-100), Q = max_k |q_k|,
- *   is = fl(i S),  c = fl(D - q S) (one fma),  S = NODE_FUSED_SCALE
- *      = 1 + 32u,
- * a node's near distance is M = fl(b i - q) and its far distance
- * G = fl(b is + c), one fma each (one rounding of the exact value), and
- * the entry max(tmin, M_x, M_y, M_z) is compared with each G and with
- * the limit L' = fl(L S + D) (node_fused_limit) instead of s * F and L.
+ * bound, o the origin, d the direction, i = fl(1 / d), on one axis),
+ * within gamma(2) of T = (b - o) i, computed exactly (Higham, "Accuracy
+ * and Stability of Numerical Algorithms", 2nd ed., 2002, sec. 3.1:
+ * gamma(n) = n u / (1 - n u), u = 2^-24); its far distance is then
+ * scaled by s = ISECT_BOX_FAR_SCALE = 1 + 8u (Ize, "Robust BVH ray
+ * traversal", JCGT 2(2), 2013) and compared with its entry
+ * t0 = max(tmin, near distances) and the limit L.  Here, per ray and
+ * axis, with S = NODE_FUSED_SCALE = 1 + 32u:
+ *   D = fl(fl(|o| + 2^-20) / (|d| 2^20)),   is = fl(S / d),
+ *   cn = fl(-o i - D),   cf = fl(D - o is)   (one rounding each, fma),
+ * a node's near distance is M = fl(b i + cn) and its far distance
+ * G = fl(b is + cf), one fma each; the entry max(tmin, M_x, M_y, M_z) is
+ * compared with each G (no scale) and with L' = fl(L S + 2^-100)
+ * (node_fused_limit).  Every constant is a lane operation on the ray's
+ * origin and direction: the divisions run beside the one for i, so the
+ * first node waits for them no longer than for i.
  *
- * Proof that a box isect_box passes (entry t0 <= fl(s F_j) for each axis
- * j and t0 <= L) passes here, for a ray node_fused_init accepts (every
- * |o_k|, |q_k| <= 2^100 and 2^-100 <= |i_k| <= 2^100: no NaN arises,
- * no inverse or scaled inverse is subnormal, b - o never overflows for a
- * finite b).  With tmin >= 0, t0 >= 0, so every F_j >= 0 and T_j >= 0.
- * Write e = q - o i, |e| <= u |o i| <= 1.0001 u Q, and eta for the
- * subnormal range's absolute errors (a few 2^-149 in all, which the
- * 2^-100 in D covers many times over).
- * - Entry: M_k = (T_k - e)(1 + a), |a| <= u.  Where M_k > 0, either
- *   T_k >= 0, T_k <= r_k (1 + 2.01u) + eta, so M_k <= r_k (1 + 3.02u)
- *   + 1.0002 u Q + eta; or T_k < 0 and M_k <= 1.0002 u Q.  The entry is
- *   tmin or a positive M_k (the walk's integer maximum: negatives lose
- *   to tmin >= +0), so t0' <= t0 (1 + 3.02u) + 1.0002 u Q + eta.
- * - Far: X = b is + c = S (b i - q) + D + S b i a + (D - q S) a', with
- *   |a|, |a'| <= u and |b i| <= T + |o i|, so
- *   X >= S T (1 - u) + D (1 - u) - 3.001 u S Q, and G = fl(X)
- *   >= X (1 - u) >= S F (1 - 4u) + D (1 - 2u) - 3.002 u S Q - eta (as
- *   T >= F (1 - 2u)).  isect_box's t0 <= fl(s F) <= F (1 + 9.01u), so
- *   t0' <= F (1 + 12.1u) + 1.0002 u Q + eta, which is below G because
- *   S (1 - 4u) >= 1 + 27u and D (1 - 2u) >= 7.99 u Q + 2^-101 exceeds
- *   3.002 u S Q + 1.0002 u Q + eta.
- * - Limit: L' >= (L S + D)(1 - u) >= L (1 + 30u) + D (1 - u) >= t0'
+ * Proof that a box isect_box passes (t0 <= fl(s F_j) for each axis j,
+ * t0 <= L) passes here, for a ray node_fused_init accepts: every
+ * |o_k| <= 2^60 and 2^-60 <= |d_k| <= 2^60, so |o / d| <= 2^120, no
+ * constant overflows or is NaN, |d| 2^20 is exact, b - o is finite for
+ * a finite b.  With tmin >= 0, t0 >= 0, so every F_j >= 0 and T_j >= 0.
+ * eta stands for the subnormal range's absolute errors (a few 2^-149).
+ * D >= (|o| + 2^-20)(1 - u)^2 / (|d| 2^20) >= 16u |o i| (1 - 3u)
+ * + 2^-101 (|1 / d| >= |i| / (1 + u), |d| <= 2^60).
+ * - Entry: b i + cn = T - D + e, |e| <= u (|o i| + D) < D, so
+ *   b i + cn < T and M_k <= T_k (1 + u) where positive (M_k <= 0 where
+ *   T_k <= 0: it loses to tmin >= +0 in the walk's integer maximum).
+ *   T_k <= r_k (1 + 2.01u) + eta, so t0' <= t0 (1 + 3.02u) + eta.
+ * - Far: is = S i (1 + th), |th| <= 2.01u (fl(S / d) against
+ *   fl(1 / d)), and X = b is + cf = (b - o) is + D + a (D - o is),
+ *   |a| <= u, so X >= S T (1 - 2.01u) + D (1 - u) - 1.01u S |o i|, and
+ *   G = fl(X) >= X (1 - u) >= S F (1 - 5.03u) + 2^-102 (T >= F (1 - 2u);
+ *   D's 16u |o i| covers the 1.01u S |o i|).  isect_box's t0 <= fl(s F)
+ *   <= F (1 + 9.01u), so t0' <= F (1 + 12.1u) + eta < G, as
+ *   S (1 - 5.03u) >= 1 + 26.9u.
+ * - Limit: L' >= (L S + 2^-100)(1 - u) >= L (1 + 30u) + 2^-101 > t0'
  *   when t0 <= L (L >= 0).  The walk's pops compare the entries it
  *   stored (t0') with L' too, so they cull no box isect_box's walk keeps.
- * - Overflow: with the bounds above, M or G is infinite only where the
- *   exact distance is within 2^-20 of the float range's end; a +inf
- *   entry then comes with far distances and a limit that are +inf here
- *   too (each is at least (1 + 20u) times a value within 13u of 2^128),
- *   and a far G = -inf means F < 0, a box isect_box refuses.  An empty
- *   lane's inverted infinite bounds give infinities, never NaN (q, is
- *   and c are finite).
- * The margins are about 2 (D is 8 u Q where 4.01 u Q would do; S is
- * 1 + 32u where 1 + 16.2u would do); D is about 2^-21 of the origin's
- * distance in t units, a few boxes a ray more at most.
+ * - Overflow: M or G is infinite only where the exact value is beyond
+ *   the float range: a +inf entry comes with T_k >= 2^128 (1 - 2u), so
+ *   every F_j s and L isect_box passes it with are within 4u of 2^128
+ *   or more, and G_j and L' are +inf too (each at least (1 + 20u) times
+ *   such a value); G = -inf means T < 0, a box isect_box refuses.  An
+ *   empty lane's inverted infinite bounds give infinities, never NaN
+ *   (the constants are finite).
+ * The margins are about 2 (D is 16u |o i| where 2.02u would do, S is
+ * 1 + 32u where 1 + 17.2u would do); D is about 2^-20 of the origin's
+ * distance from the coordinate origin in t units (and 2^-40 / |d| at
+ * least), a few boxes a ray more at most.
  * conformance/internal/node_fused.c checks the superset on adversarial
  * pairs and shows that without the widening (S = 1, D = 0) it fails.
  *
  * Rays the constants do not cover (a zero or tiny direction component,
- * an origin beyond 2^100) take a walk with isect_box's own test.  No
- * FMA is contracted anywhere else (the header's functions call fmaf
- * explicitly; the build has -ffp-contract=off).
+ * an origin beyond 2^60) take a walk with isect_box's own test.  No FMA
+ * is contracted anywhere else (-ffp-contract=off): the fmas here are
+ * explicit.
  */
 #ifndef RT_TRACE_NODE_FUSED_H
 #define RT_TRACE_NODE_FUSED_H
@@ -85,60 +87,55 @@
 /* The per-ray constants, axis order x, y, z (lane 3 unused: room for a
  * 16-byte store of each). */
 struct node_fused {
-    float neg_q[4]; /* -fl(org_k * inv_k) */
-    float inv_s[4]; /* fl(inv_k * S) */
-    float far_c[4]; /* fl(D - q_k * S), one rounding */
-    float slack;    /* D */
+    float near_c[4]; /* cn: fl(-o_k i_k - D_k), one rounding */
+    float inv_s[4];  /* is: fl(S / d_k) */
+    float far_c[4];  /* cf: fl(D_k - o_k is_k), one rounding */
 };
 
 /* 1 when the fused test covers the ray (its constants then set), else 0
- * (the ray takes isect_box's test).  org and inv: the origin and the
- * inverse direction in lanes 0-2 (axis order); lane 3 is not read.  In
- * SSE2 lanes (the 8-wide walks' set-up has them in registers): the
- * coverage test on the floats' magnitudes as integers (a NaN, above
- * +inf, fails; none arises from finite org and dir but q = 0 * inf, where
- * the inverse fails anyway), the largest |q| by exact maxima, the
- * products and the fma lane by lane as the scalar formulas above. */
-static inline int node_fused_init(struct node_fused *f, __m128 org, __m128 inv)
+ * (the ray takes isect_box's test).  org, dir, inv: the origin, the
+ * direction and the inverse direction isect_box uses (fl(1 / d)) in
+ * lanes 0-2, axis order; lane 3 is not tested and its constants, stored
+ * with the others, are never read.  In SSE2 lanes, as the 8-wide walks' set-up has them: the
+ * coverage test on the magnitudes' bits as integers (a NaN, above +inf,
+ * fails), the constants lane by lane as the formulas above. */
+static inline int node_fused_init(struct node_fused *f, __m128 org, __m128 dir, __m128 inv)
 {
-    const __m128i magnitude = _mm_set1_epi32(0x7fffffff);
-    const __m128 q = _mm_mul_ps(org, inv);
-    const __m128i a_org = _mm_and_si128(_mm_castps_si128(org), magnitude);
-    const __m128i a_inv = _mm_and_si128(_mm_castps_si128(inv), magnitude);
-    const __m128i a_q = _mm_and_si128(_mm_castps_si128(q), magnitude);
-    const __m128i hi = _mm_castps_si128(_mm_set1_ps(0x1p100f));
-    const __m128i lo = _mm_castps_si128(_mm_set1_ps(0x1p-100f));
-    const __m128i bad =
-        _mm_or_si128(_mm_or_si128(_mm_cmpgt_epi32(a_org, hi), _mm_cmpgt_epi32(a_q, hi)),
-                     _mm_or_si128(_mm_cmpgt_epi32(a_inv, hi), _mm_cmpgt_epi32(lo, a_inv)));
+    const __m128 magnitude = _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff));
+    const __m128 a_org = _mm_and_ps(org, magnitude);
+    const __m128 a_dir = _mm_and_ps(dir, magnitude);
+    const __m128i hi = _mm_castps_si128(_mm_set1_ps(0x1p60f));
+    const __m128i lo = _mm_castps_si128(_mm_set1_ps(0x1p-60f));
+    const __m128i bo = _mm_castps_si128(a_org), bd = _mm_castps_si128(a_dir);
+    const __m128i bad = _mm_or_si128(_mm_cmpgt_epi32(bo, hi),
+                                     _mm_or_si128(_mm_cmpgt_epi32(bd, hi), _mm_cmpgt_epi32(lo, bd)));
     if (_mm_movemask_ps(_mm_castsi128_ps(bad)) & 7)
         return 0;
-    /* max(|q_0|, |q_1|, |q_2|): lane 3 replaced by lane 0. */
-    __m128 m = _mm_castsi128_ps(a_q);
-    m = _mm_shuffle_ps(m, m, _MM_SHUFFLE(0, 2, 1, 0));
-    m = _mm_max_ps(m, _mm_shuffle_ps(m, m, _MM_SHUFFLE(2, 3, 0, 1)));
-    m = _mm_max_ps(m, _mm_shuffle_ps(m, m, _MM_SHUFFLE(1, 0, 3, 2)));
-    const __m128 slack =
-        _mm_add_ps(_mm_mul_ps(m, _mm_set1_ps(0x1p-21f)), _mm_set1_ps(0x1p-100f));
-    const __m128 neg_q = _mm_xor_ps(q, _mm_set1_ps(-0.0f));
-    const __m128 scale = _mm_set1_ps(NODE_FUSED_SCALE);
-    _mm_storeu_ps(f->neg_q, neg_q);
-    _mm_storeu_ps(f->inv_s, _mm_mul_ps(inv, scale));
+    const __m128 slack = _mm_div_ps(_mm_add_ps(a_org, _mm_set1_ps(0x1p-20f)),
+                                    _mm_mul_ps(a_dir, _mm_set1_ps(0x1p20f)));
+    const __m128 inv_s = _mm_div_ps(_mm_set1_ps(NODE_FUSED_SCALE), dir);
+    _mm_storeu_ps(f->inv_s, inv_s);
 #if defined(__FMA__)
-    _mm_storeu_ps(f->far_c, _mm_fmadd_ps(neg_q, scale, slack));
+    _mm_storeu_ps(f->near_c, _mm_fnmsub_ps(org, inv, slack));
+    _mm_storeu_ps(f->far_c, _mm_fnmadd_ps(org, inv_s, slack));
 #else
-    for (int k = 0; k < 4; k++)
-        f->far_c[k] = fmaf(f->neg_q[k], NODE_FUSED_SCALE, _mm_cvtss_f32(slack));
+    float o[4], i[4], d[4];
+    _mm_storeu_ps(o, org);
+    _mm_storeu_ps(i, inv);
+    _mm_storeu_ps(d, slack);
+    for (int k = 0; k < 4; k++) {
+        f->near_c[k] = fmaf(-o[k], i[k], -d[k]);
+        f->far_c[k] = fmaf(-o[k], f->inv_s[k], d[k]);
+    }
 #endif
-    f->slack = _mm_cvtss_f32(slack);
     return 1;
 }
 
 /* L' above: the limit the fused entries are compared with, for a walk
  * whose isect_box limit is limit (>= 0). */
-static inline float node_fused_limit(const struct node_fused *f, float limit)
+static inline float node_fused_limit(float limit)
 {
-    return fmaf(limit, NODE_FUSED_SCALE, f->slack);
+    return fmaf(limit, NODE_FUSED_SCALE, 0x1p-100f);
 }
 
 /* The fused test of one box (lo, hi: its min and max corners) for a ray
@@ -152,7 +149,7 @@ static inline int node_fused_box(const struct node_fused *f, const float inv[3],
     float far[3];
     for (int k = 0; k < 3; k++) {
         const int neg = signbit(inv[k]) != 0;
-        const float near = fmaf(neg ? hi[k] : lo[k], inv[k], f->neg_q[k]);
+        const float near = fmaf(neg ? hi[k] : lo[k], inv[k], f->near_c[k]);
         far[k] = fmaf(neg ? lo[k] : hi[k], f->inv_s[k], f->far_c[k]);
         t0 = near > t0 ? near : t0;
     }

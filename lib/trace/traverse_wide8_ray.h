@@ -113,7 +113,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
     /* The limit the node test's entries are compared with, at a node and
      * at a pop: box_limit, or for the fused test box_limit widened
      * (node_fused_limit), set again whenever box_limit is. */
-    float node_limit = fused ? node_fused_limit(nf, box_limit) : box_limit;
+    float node_limit = fused ? node_fused_limit(box_limit) : box_limit;
     uint64_t node_tests = 0;
     uint64_t tri_tests = 0;
     int r4_ready = 0;
@@ -200,10 +200,10 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
             const float *no = NULL;
             if (lanes)
                 no = s->r4.node_neg_org;
-            /* The fused test's -q in their place (node_fused.h), with its
-             * scaled inverses and far constants. */
+            /* The fused test's near constants in their place
+             * (node_fused.h), with its far inverses and constants. */
             if (fused)
-                no = nf->neg_q;
+                no = nf->near_c;
             const __m256 neg_org_x =
                 lanes ? _mm256_broadcast_ss(&no[0]) : _mm256_set1_ps(-rv->org[0]);
             const __m256 neg_org_y =
@@ -261,7 +261,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
     (lanes ? wide8_bound(row, node_off) : wide8_bound(b, off))
                 __m256 tnx, tfx, tny, tfy, tnz, tfz;
                 if (fused) {
-                    /* node_fused.h: near fma(b, i, -q), far fma(b, i S, D - q S),
+                    /* node_fused.h: near fma(b, i, cn), far fma(b, is, cf),
                      * the far already widened (no scale below). */
                     tnx = _mm256_fmadd_ps(WIDE8_ROW_BOUND(row_nx, near_x), inv_x, neg_org_x);
                     tfx = _mm256_fmadd_ps(WIDE8_ROW_BOUND(row_fx, far_x), inv_s_x, far_c_x);
@@ -493,7 +493,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
         }
         if (!any_hit) {
             box_limit = s->box_limit;
-            node_limit = fused ? node_fused_limit(nf, box_limit) : box_limit;
+            node_limit = fused ? node_fused_limit(box_limit) : box_limit;
         }
         /* An any-hit walk ends at its first hit, so its box_limit never
          * shrinks and every pushed child passes: the entry distance is
