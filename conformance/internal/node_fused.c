@@ -100,10 +100,9 @@ static void fused_variant(struct node_fused *f, const struct trace_ray *ray, int
     if (variant == 0)
         return;
     for (int k = 0; k < 3; k++) {
-        const float o = ray->org[k], d = ray->dir[k], i = ray->inv_dir[k];
-        const float slack =
-            variant == 3 ? (fabsf(o) + 0x1p-20f) / (fabsf(d) * 0x1p20f) : 0.0f;
-        f->inv_s[k] = variant == 2 ? NODE_FUSED_SCALE / d : i;
+        const float o = ray->org[k], i = ray->inv_dir[k];
+        const float slack = variant == 3 ? fabsf(i) * ((fabsf(o) + 0x1p-20f) * 0x1p-20f) : 0.0f;
+        f->inv_s[k] = variant == 2 ? i * NODE_FUSED_SCALE : i;
         f->near_c[k] = fmaf(-o, i, -slack);
         f->far_c[k] = fmaf(-o, f->inv_s[k], slack);
     }

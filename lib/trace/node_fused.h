@@ -24,34 +24,34 @@
  * traversal", JCGT 2(2), 2013) and compared with its entry
  * t0 = max(tmin, near distances) and the limit L.  Here, per ray and
  * axis, with S = NODE_FUSED_SCALE = 1 + 32u:
- *   D = fl(fl(|o| + 2^-20) / (|d| 2^20)),   is = fl(S / d),
+ *   D = fl(|i| fl(|o| + 2^-20) 2^-20),   is = fl(i S),
  *   cn = fl(-o i - D),   cf = fl(D - o is)   (one rounding each, fma),
  * a node's near distance is M = fl(b i + cn) and its far distance
  * G = fl(b is + cf), one fma each; the entry max(tmin, M_x, M_y, M_z) is
  * compared with each G (no scale) and with L' = fl(L S + 2^-100)
  * (node_fused_limit).  Every constant is a lane operation on the ray's
- * origin and direction: the divisions run beside the one for i, so the
- * first node waits for them no longer than for i.
+ * origin and i: one multiplication after i (is, D; fl(|o| + 2^-20) 2^-20
+ * is ready before i), then the fma, so the first node's test waits about
+ * eight cycles longer for them than for i alone.
  *
  * Proof that a box isect_box passes (t0 <= fl(s F_j) for each axis j,
  * t0 <= L) passes here, for a ray node_fused_init accepts: every
- * |o_k| <= 2^60 and 2^-60 <= |d_k| <= 2^60, so |o / d| <= 2^120, no
- * constant overflows or is NaN, |d| 2^20 is exact, b - o is finite for
- * a finite b.  With tmin >= 0, t0 >= 0, so every F_j >= 0 and T_j >= 0.
+ * |o_k| <= 2^60 and 2^-60 <= |d_k| <= 2^60, so |o i| <= 2^121, no
+ * constant overflows or is NaN, the scalings by 2^-20 are exact, b - o
+ * is finite for a finite b.  With tmin >= 0, t0 >= 0, so every F_j >= 0 and T_j >= 0.
  * eta stands for the subnormal range's absolute errors (a few 2^-149).
- * D >= (|o| + 2^-20)(1 - u)^2 / (|d| 2^20) >= 16u |o i| (1 - 3u)
- * + 2^-101 (|1 / d| >= |i| / (1 + u), |d| <= 2^60).
+ * D >= |i| (|o| + 2^-20)(1 - u)^2 2^-20 >= 16u |o i| (1 - 2u)
+ * + 2^-101 (|i| >= 2^-61).
  * - Entry: b i + cn = T - D + e, |e| <= u (|o i| + D) < D, so
  *   b i + cn < T and M_k <= T_k (1 + u) where positive (M_k <= 0 where
  *   T_k <= 0: it loses to tmin >= +0 in the walk's integer maximum).
  *   T_k <= r_k (1 + 2.01u) + eta, so t0' <= t0 (1 + 3.02u) + eta.
- * - Far: is = S i (1 + th), |th| <= 2.01u (fl(S / d) against
- *   fl(1 / d)), and X = b is + cf = (b - o) is + D + a (D - o is),
- *   |a| <= u, so X >= S T (1 - 2.01u) + D (1 - u) - 1.01u S |o i|, and
- *   G = fl(X) >= X (1 - u) >= S F (1 - 5.03u) + 2^-102 (T >= F (1 - 2u);
- *   D's 16u |o i| covers the 1.01u S |o i|).  isect_box's t0 <= fl(s F)
- *   <= F (1 + 9.01u), so t0' <= F (1 + 12.1u) + eta < G, as
- *   S (1 - 5.03u) >= 1 + 26.9u.
+ * - Far: is = S i (1 + th), |th| <= u, and X = b is + cf =
+ *   (b - o) is + D + a (D - o is), |a| <= u, so X >= S T (1 - u)
+ *   + D (1 - u) - 1.01u S |o i|, and G = fl(X) >= X (1 - u)
+ *   >= S F (1 - 4.02u) + 2^-102 (T >= F (1 - 2u); D's 16u |o i| covers
+ *   the 1.01u S |o i|).  isect_box's t0 <= fl(s F) <= F (1 + 9.01u), so
+ *   t0' <= F (1 + 12.1u) + eta < G, as S (1 - 4.02u) >= 1 + 27.9u.
  * - Limit: L' >= (L S + 2^-100)(1 - u) >= L (1 + 30u) + 2^-101 > t0'
  *   when t0 <= L (L >= 0).  The walk's pops compare the entries it
  *   stored (t0') with L' too, so they cull no box isect_box's walk keeps.
@@ -63,8 +63,8 @@
  *   empty lane's inverted infinite bounds give infinities, never NaN
  *   (the constants are finite).
  * The margins are about 2 (D is 16u |o i| where 2.02u would do, S is
- * 1 + 32u where 1 + 17.2u would do); D is about 2^-20 of the origin's
- * distance from the coordinate origin in t units (and 2^-40 / |d| at
+ * 1 + 32u where 1 + 16.2u would do); D is about 2^-20 of the origin's
+ * distance from the coordinate origin in t units (and 2^-40 |i| at
  * least), a few boxes a ray more at most.
  * conformance/internal/node_fused.c checks the superset on adversarial
  * pairs and shows that without the widening (S = 1, D = 0) it fails.
@@ -88,7 +88,7 @@
  * 16-byte store of each). */
 struct node_fused {
     float near_c[4]; /* cn: fl(-o_k i_k - D_k), one rounding */
-    float inv_s[4];  /* is: fl(S / d_k) */
+    float inv_s[4];  /* is: fl(i_k S) */
     float far_c[4];  /* cf: fl(D_k - o_k is_k), one rounding */
 };
 
@@ -111,9 +111,10 @@ static inline int node_fused_init(struct node_fused *f, __m128 org, __m128 dir, 
                                      _mm_or_si128(_mm_cmpgt_epi32(bd, hi), _mm_cmpgt_epi32(lo, bd)));
     if (_mm_movemask_ps(_mm_castsi128_ps(bad)) & 7)
         return 0;
-    const __m128 slack = _mm_div_ps(_mm_add_ps(a_org, _mm_set1_ps(0x1p-20f)),
-                                    _mm_mul_ps(a_dir, _mm_set1_ps(0x1p20f)));
-    const __m128 inv_s = _mm_div_ps(_mm_set1_ps(NODE_FUSED_SCALE), dir);
+    const __m128 slack =
+        _mm_mul_ps(_mm_and_ps(inv, magnitude),
+                   _mm_mul_ps(_mm_add_ps(a_org, _mm_set1_ps(0x1p-20f)), _mm_set1_ps(0x1p-20f)));
+    const __m128 inv_s = _mm_mul_ps(inv, _mm_set1_ps(NODE_FUSED_SCALE));
     _mm_storeu_ps(f->inv_s, inv_s);
 #if defined(__FMA__)
     _mm_storeu_ps(f->near_c, _mm_fnmsub_ps(org, inv, slack));
