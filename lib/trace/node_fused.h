@@ -62,8 +62,9 @@
  *   such a value); G = -inf means T < 0, a box isect_box refuses.  An
  *   empty lane's inverted infinite bounds give infinities, never NaN
  *   (the constants are finite).
- * The margins are about 2 (D is 16u |o i| where 2.02u would do, S is
- * 1 + 32u where 1 + 16.2u would do); D is about 2^-20 of the origin's
+ * The margins: D is 16u |o i| where about 1.02u would do (both sides
+ * need D > 1.01u S |o i|), S is 1 + 32u where 1 + 16.2u would do, a
+ * factor 2 for the rounding of the constants; D is about 2^-20 of the origin's
  * distance from the coordinate origin in t units (and 2^-40 |i| at
  * least), a few boxes a ray more at most.
  * conformance/internal/node_fused.c checks the superset on adversarial
