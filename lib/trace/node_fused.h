@@ -108,8 +108,9 @@ static inline int node_fused_init(struct node_fused *f, __m128 org, __m128 dir, 
     const __m128i hi = _mm_castps_si128(_mm_set1_ps(0x1p60f));
     const __m128i lo = _mm_castps_si128(_mm_set1_ps(0x1p-60f));
     const __m128i bo = _mm_castps_si128(a_org), bd = _mm_castps_si128(a_dir);
-    const __m128i bad = _mm_or_si128(_mm_cmpgt_epi32(bo, hi),
-                                     _mm_or_si128(_mm_cmpgt_epi32(bd, hi), _mm_cmpgt_epi32(lo, bd)));
+    const __m128i bad =
+        _mm_or_si128(_mm_cmpgt_epi32(bo, hi),
+                     _mm_or_si128(_mm_cmpgt_epi32(bd, hi), _mm_cmpgt_epi32(lo, bd)));
     if (_mm_movemask_ps(_mm_castsi128_ps(bad)) & 7)
         return 0;
     const __m128 slack =
