@@ -13,9 +13,10 @@
  * walks, so it is only counted.
  *
  * The same pairs with the widening taken out (S = 1, D = 0: both
- * distances fma(b, i, fl(-o i)), the limit unscaled) must lose boxes: the test reports how many, and fails if
- * none, so that the pairs are known to reach the cases the widening is
- * for.  Likewise with S alone and with D alone.
+ * distances fma(b, i, fl(-o i)), the limit unscaled) must lose boxes:
+ * the test reports how many, and fails if none, so that the pairs are
+ * known to reach the cases the widening is for.  Likewise with S alone
+ * and with D alone (reported only).
  */
 #include <float.h>
 #include <math.h>
