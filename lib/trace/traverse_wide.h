@@ -45,6 +45,7 @@
 #include <immintrin.h>
 
 #include "trace/intersect_tri4.h"
+#include "trace/node_fused.h"
 #include "trace/ray_setup.h"
 
 struct wide_entry {
@@ -89,7 +90,28 @@ struct wide_state {
 struct wide_ray_state {
     struct wide_state s; /* first: the leaves reach d_org_dir from s */
     double d_org_dir[8];
+    /* The fused node test's constants (node_fused.h), set by WIDE8_WALK1
+     * for the walks that take it (WIDE8_FUSED). */
+    struct node_fused fused;
 };
+
+/* The fused node test (node_fused.h) is the node test of the walks from
+ * the set-up's lanes (WIDE8_WALK1) with any_hit 0 or 1; the walks with
+ * any_hit == WIDE_ANY_LONGEST, whose push keys are the exits as isect_box
+ * computes them, and the walks from a struct trace_ray keep isect_box's
+ * test. */
+#if defined(__FMA__)
+#define WIDE8_FUSED(any_hit) ((any_hit) == 0 || (any_hit) == 1)
+#else
+#define WIDE8_FUSED(any_hit) 0
+#endif
+
+/* The fused constants of the wide_ray_state whose s is *s (as
+ * wide_ray_doubles). */
+static inline const struct node_fused *wide_ray_fused(const struct wide_state *s)
+{
+    return &((const struct wide_ray_state *)(const void *)s)->fused;
+}
 
 /* The doubles of the wide_ray_state whose s is *s: only for a state
  * that is one (C99 6.7.2.1: a pointer to a structure's first member,
@@ -1432,7 +1454,11 @@ typedef char tri4_ray_tmin_org_layout[offsetof(struct tri4_ray, node_neg_org) ==
          * float walk's flag. */                                                                \
         const int any_walk = (any_hit) != 0;                                                    \
         wide_state_init1(s, &ray, t_max, any_walk, stats, hit);                                 \
-        if (!(tmin >= 0.0f) || WIDE8_WALK1_FAR(wide, any_hit))                                  \
+        /* A ray the fused node test does not cover (node_fused_init: a                       \
+         * zero or tiny direction component, an origin beyond 2^60) takes                        \
+         * the float walk with isect_box's test, as a negative tmin does. */                    \
+        if (!(tmin >= 0.0f) || WIDE8_WALK1_FAR(wide, any_hit) ||                                \
+            (WIDE8_FUSED(any_hit) && !node_fused_init(&rs.fused, lanes.org, lanes.dir, lanes.inv)))         \
             return wide8_walk_end(s, wide8_walk_tmin_other(wide, s, any_walk, stats),           \
                                   any_hit, stats, counters);                                    \
         if (any_hit)                                                                            \

@@ -97,10 +97,23 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
     const int by_off = 0;
 #endif
     size_t cur_off = 0;
+    /* The walks from the set-up's lanes with any_hit 0 or 1 test a node by
+     * node_fused.h's fused test (one fma a slab, the far distances
+     * widened by the fma's own constants), which passes every box
+     * isect_box passes (node_fused.h proves it; the answers are then the
+     * same, the visits a few more); WIDE8_WALK1 set its constants, or
+     * sent the ray to the float walk when they do not cover it.  The
+     * other walks keep isect_box's slabs bit for bit. */
+    const int fused = WIDE8_FUSED(any_hit) && lanes;
+    const struct node_fused *const nf = fused ? wide_ray_fused(s) : NULL;
     /* An any-hit walk's box limit never shrinks (it ends at its first
      * hit): kept here, from s->best = t_max as wide_state_init computes
      * it, and not reloaded after each leaf (wide_state_init1). */
     float box_limit = any_hit ? s->best * ISECT_BOX_FAR_SCALE : s->box_limit;
+    /* The limit the node test's entries are compared with, at a node and
+     * at a pop: box_limit, or for the fused test box_limit widened
+     * (node_fused_limit), set again whenever box_limit is. */
+    float node_limit = fused ? node_fused_limit(box_limit) : box_limit;
     uint64_t node_tests = 0;
     uint64_t tri_tests = 0;
     int r4_ready = 0;
@@ -187,12 +200,22 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
             const float *no = NULL;
             if (lanes)
                 no = s->r4.node_neg_org;
+            /* The fused test's near constants in their place
+             * (node_fused.h), with its far inverses and constants. */
+            if (fused)
+                no = nf->near_c;
             const __m256 neg_org_x =
                 lanes ? _mm256_broadcast_ss(&no[0]) : _mm256_set1_ps(-rv->org[0]);
             const __m256 neg_org_y =
                 lanes ? _mm256_broadcast_ss(&no[1]) : _mm256_set1_ps(-rv->org[1]);
             const __m256 neg_org_z =
                 lanes ? _mm256_broadcast_ss(&no[2]) : _mm256_set1_ps(-rv->org[2]);
+            const __m256 inv_s_x = fused ? _mm256_broadcast_ss(&nf->inv_s[0]) : neg_org_x;
+            const __m256 inv_s_y = fused ? _mm256_broadcast_ss(&nf->inv_s[1]) : neg_org_y;
+            const __m256 inv_s_z = fused ? _mm256_broadcast_ss(&nf->inv_s[2]) : neg_org_z;
+            const __m256 far_c_x = fused ? _mm256_broadcast_ss(&nf->far_c[0]) : neg_org_x;
+            const __m256 far_c_y = fused ? _mm256_broadcast_ss(&nf->far_c[1]) : neg_org_y;
+            const __m256 far_c_z = fused ? _mm256_broadcast_ss(&nf->far_c[2]) : neg_org_z;
             const __m256 inv_x = _mm256_set1_ps(rv->inv_dir[0]);
             const __m256 inv_y = _mm256_set1_ps(rv->inv_dir[1]);
             const __m256 inv_z = _mm256_set1_ps(rv->inv_dir[2]);
@@ -236,23 +259,38 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                  *   its comparison as unordered (!(entry > far)). */
 #define WIDE8_ROW_BOUND(row, off)                                                                 \
     (lanes ? wide8_bound(row, node_off) : wide8_bound(b, off))
-                const __m256 tnx =
-                    _mm256_mul_ps(_mm256_add_ps(neg_org_x, WIDE8_ROW_BOUND(row_nx, near_x)), inv_x);
-                const __m256 tfx =
-                    _mm256_mul_ps(_mm256_add_ps(neg_org_x, WIDE8_ROW_BOUND(row_fx, far_x)), inv_x);
-                const __m256 tny =
-                    _mm256_mul_ps(_mm256_add_ps(neg_org_y, WIDE8_ROW_BOUND(row_ny, near_y)), inv_y);
-                const __m256 tfy =
-                    _mm256_mul_ps(_mm256_add_ps(neg_org_y, WIDE8_ROW_BOUND(row_fy, far_y)), inv_y);
-                const __m256 tnz =
-                    _mm256_mul_ps(_mm256_add_ps(neg_org_z, WIDE8_ROW_BOUND(row_nz, near_z)), inv_z);
-                const __m256 tfz =
-                    _mm256_mul_ps(_mm256_add_ps(neg_org_z, WIDE8_ROW_BOUND(row_fz, far_z)), inv_z);
+                __m256 tnx, tfx, tny, tfy, tnz, tfz;
+                if (fused) {
+                    /* node_fused.h: near fma(b, i, cn), far fma(b, is, cf),
+                     * the far already widened (no scale below). */
+                    tnx = _mm256_fmadd_ps(WIDE8_ROW_BOUND(row_nx, near_x), inv_x, neg_org_x);
+                    tfx = _mm256_fmadd_ps(WIDE8_ROW_BOUND(row_fx, far_x), inv_s_x, far_c_x);
+                    tny = _mm256_fmadd_ps(WIDE8_ROW_BOUND(row_ny, near_y), inv_y, neg_org_y);
+                    tfy = _mm256_fmadd_ps(WIDE8_ROW_BOUND(row_fy, far_y), inv_s_y, far_c_y);
+                    tnz = _mm256_fmadd_ps(WIDE8_ROW_BOUND(row_nz, near_z), inv_z, neg_org_z);
+                    tfz = _mm256_fmadd_ps(WIDE8_ROW_BOUND(row_fz, far_z), inv_s_z, far_c_z);
+                } else {
+                    tnx = _mm256_mul_ps(_mm256_add_ps(neg_org_x, WIDE8_ROW_BOUND(row_nx, near_x)),
+                                        inv_x);
+                    tfx = _mm256_mul_ps(_mm256_add_ps(neg_org_x, WIDE8_ROW_BOUND(row_fx, far_x)),
+                                        inv_x);
+                    tny = _mm256_mul_ps(_mm256_add_ps(neg_org_y, WIDE8_ROW_BOUND(row_ny, near_y)),
+                                        inv_y);
+                    tfy = _mm256_mul_ps(_mm256_add_ps(neg_org_y, WIDE8_ROW_BOUND(row_fy, far_y)),
+                                        inv_y);
+                    tnz = _mm256_mul_ps(_mm256_add_ps(neg_org_z, WIDE8_ROW_BOUND(row_nz, near_z)),
+                                        inv_z);
+                    tfz = _mm256_mul_ps(_mm256_add_ps(neg_org_z, WIDE8_ROW_BOUND(row_fz, far_z)),
+                                        inv_z);
+                }
 #undef WIDE8_ROW_BOUND
                 const __m256 t0 = _mm256_castsi256_ps(_mm256_max_epi32(
                     _mm256_max_epi32(_mm256_castps_si256(tnx), _mm256_castps_si256(tny)),
                     _mm256_max_epi32(_mm256_castps_si256(tnz), tmin8)));
                 const __m256 scale = _mm256_set1_ps(ISECT_BOX_FAR_SCALE);
+                const __m256 exit_x = fused ? tfx : _mm256_mul_ps(tfx, scale);
+                const __m256 exit_y = fused ? tfy : _mm256_mul_ps(tfy, scale);
+                const __m256 exit_z = fused ? tfz : _mm256_mul_ps(tfz, scale);
 #if defined(__AVX512VL__) && defined(__AVX512DQ__)
                 /* AVX-512: the four comparisons into mask registers and
                  * ANDed there as a tree (kandb), one kmovb; the lanes as a
@@ -261,10 +299,10 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                  * compares as masked compares (vcmpps ... %k1{%k1}), four
                  * dependent compares, which was no faster than the
                  * vector form below. */
-                __mmask8 k0 = _mm256_cmp_ps_mask(t0, _mm256_set1_ps(box_limit), _CMP_LE_OQ);
-                __mmask8 k1 = _mm256_cmp_ps_mask(t0, _mm256_mul_ps(tfx, scale), _CMP_NGT_UQ);
-                __mmask8 k2 = _mm256_cmp_ps_mask(t0, _mm256_mul_ps(tfy, scale), _CMP_NGT_UQ);
-                __mmask8 k3 = _mm256_cmp_ps_mask(t0, _mm256_mul_ps(tfz, scale), _CMP_NGT_UQ);
+                __mmask8 k0 = _mm256_cmp_ps_mask(t0, _mm256_set1_ps(node_limit), _CMP_LE_OQ);
+                __mmask8 k1 = _mm256_cmp_ps_mask(t0, exit_x, _CMP_NGT_UQ);
+                __mmask8 k2 = _mm256_cmp_ps_mask(t0, exit_y, _CMP_NGT_UQ);
+                __mmask8 k3 = _mm256_cmp_ps_mask(t0, exit_z, _CMP_NGT_UQ);
 #if defined(__GNUC__)
                 __asm__("" : "+k"(k0), "+k"(k1), "+k"(k2), "+k"(k3));
 #endif
@@ -273,10 +311,10 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                 const __m256 hit = _mm256_castsi256_ps(_mm256_movm_epi32((__mmask8)mask));
 #else
                 const __m256 hit = _mm256_and_ps(
-                    _mm256_and_ps(_mm256_cmp_ps(t0, _mm256_set1_ps(box_limit), _CMP_LE_OQ),
-                                  _mm256_cmp_ps(t0, _mm256_mul_ps(tfx, scale), _CMP_NGT_UQ)),
-                    _mm256_and_ps(_mm256_cmp_ps(t0, _mm256_mul_ps(tfy, scale), _CMP_NGT_UQ),
-                                  _mm256_cmp_ps(t0, _mm256_mul_ps(tfz, scale), _CMP_NGT_UQ)));
+                    _mm256_and_ps(_mm256_cmp_ps(t0, _mm256_set1_ps(node_limit), _CMP_LE_OQ),
+                                  _mm256_cmp_ps(t0, exit_x, _CMP_NGT_UQ)),
+                    _mm256_and_ps(_mm256_cmp_ps(t0, exit_y, _CMP_NGT_UQ),
+                                  _mm256_cmp_ps(t0, exit_z, _CMP_NGT_UQ)));
                 const unsigned mask = (unsigned)_mm256_movemask_ps(hit);
 #endif
                 if (mask) {
@@ -371,7 +409,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                     if (sp == 0)
                         goto done;
                     sp--;
-                    if (any_hit || st_t[sp] <= box_limit)
+                    if (any_hit || st_t[sp] <= node_limit)
                         break;
                 }
                 cur = st_child[sp];
@@ -453,8 +491,10 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                 return 1;
             }
         }
-        if (!any_hit)
+        if (!any_hit) {
             box_limit = s->box_limit;
+            node_limit = fused ? node_fused_limit(box_limit) : box_limit;
+        }
         /* An any-hit walk ends at its first hit, so its box_limit never
          * shrinks and every pushed child passes: the entry distance is
          * not compared. */
@@ -462,7 +502,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
             if (sp == 0)
                 goto done;
             sp--;
-            if (any_hit || st_t[sp] <= box_limit)
+            if (any_hit || st_t[sp] <= node_limit)
                 break;
         }
         cur = st_child[sp];
