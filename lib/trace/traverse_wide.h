@@ -1454,11 +1454,12 @@ typedef char tri4_ray_tmin_org_layout[offsetof(struct tri4_ray, node_neg_org) ==
          * float walk's flag. */                                                                \
         const int any_walk = (any_hit) != 0;                                                    \
         wide_state_init1(s, &ray, t_max, any_walk, stats, hit);                                 \
-        /* A ray the fused node test does not cover (node_fused_init: a                       \
-         * zero or tiny direction component, an origin beyond 2^60) takes                        \
+        /* A ray the fused node test does not cover (node_fused_init: a                         \
+         * zero or tiny direction component, an origin beyond 2^60) takes                       \
          * the float walk with isect_box's test, as a negative tmin does. */                    \
         if (!(tmin >= 0.0f) || WIDE8_WALK1_FAR(wide, any_hit) ||                                \
-            (WIDE8_FUSED(any_hit) && !node_fused_init(&rs.fused, lanes.org, lanes.dir, lanes.inv)))         \
+            (WIDE8_FUSED(any_hit) &&                                                            \
+             !node_fused_init(&rs.fused, lanes.org, lanes.dir, lanes.inv)))                     \
             return wide8_walk_end(s, wide8_walk_tmin_other(wide, s, any_walk, stats),           \
                                   any_hit, stats, counters);                                    \
         if (any_hit)                                                                            \
