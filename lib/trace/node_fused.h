@@ -100,22 +100,7 @@ struct node_fused {
  * with the others, are never read.  In SSE2 lanes, as the 8-wide walks' set-up has them: the
  * coverage test on the magnitudes' bits as integers (a NaN, above +inf,
  * fails), the constants lane by lane as the formulas above. */
-static inline int node_fused_init_lanes(struct node_fused *f, __m128 lanes[3], __m128 org,
-                                        __m128 dir, __m128 inv);
-
 static inline int node_fused_init(struct node_fused *f, __m128 org, __m128 dir, __m128 inv)
-{
-    __m128 lanes[3];
-    return node_fused_init_lanes(f, lanes, org, dir, inv);
-}
-
-/* node_fused_init, which also leaves the constants in lanes[0] (cn),
- * lanes[1] (is) and lanes[2] (cf), lanes 0-2 the axes: a walk broadcasts
- * the first node's constants from these registers, so that its test
- * does not wait for their store and a reload from f (f's copies serve
- * the later nodes). */
-static inline int node_fused_init_lanes(struct node_fused *f, __m128 lanes[3], __m128 org,
-                                        __m128 dir, __m128 inv)
 {
     const __m128 magnitude = _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff));
     const __m128 a_org = _mm_and_ps(org, magnitude);
@@ -134,11 +119,8 @@ static inline int node_fused_init_lanes(struct node_fused *f, __m128 lanes[3], _
     const __m128 inv_s = _mm_mul_ps(inv, _mm_set1_ps(NODE_FUSED_SCALE));
     _mm_storeu_ps(f->inv_s, inv_s);
 #if defined(__FMA__)
-    lanes[0] = _mm_fnmsub_ps(org, inv, slack);
-    lanes[1] = inv_s;
-    lanes[2] = _mm_fnmadd_ps(org, inv_s, slack);
-    _mm_storeu_ps(f->near_c, lanes[0]);
-    _mm_storeu_ps(f->far_c, lanes[2]);
+    _mm_storeu_ps(f->near_c, _mm_fnmsub_ps(org, inv, slack));
+    _mm_storeu_ps(f->far_c, _mm_fnmadd_ps(org, inv_s, slack));
 #else
     float o[4], i[4], d[4];
     _mm_storeu_ps(o, org);
@@ -148,9 +130,6 @@ static inline int node_fused_init_lanes(struct node_fused *f, __m128 lanes[3], _
         f->near_c[k] = fmaf(-o[k], i[k], -d[k]);
         f->far_c[k] = fmaf(-o[k], f->inv_s[k], d[k]);
     }
-    lanes[0] = _mm_loadu_ps(f->near_c);
-    lanes[1] = inv_s;
-    lanes[2] = _mm_loadu_ps(f->far_c);
 #endif
     return 1;
 }

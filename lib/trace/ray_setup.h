@@ -136,8 +136,6 @@ struct ray_lanes {
     __m128 shear; /* sx, sy, -1, - */
     __m128i order; /* kx, ky, kz, 3: the permutation's indices (the any-hit
                     * leaves' row offsets, tri4_ray_init_scalar_lanes) */
-    __m128 fused[3]; /* cn, is, cf (node_fused_init_lanes), set by the
-                      * walks that take the fused node test (WIDE8_WALK1) */
     int kx, ky, kz;
 };
 

@@ -1437,16 +1437,6 @@ typedef char tri4_ray_tmin_org_layout[offsetof(struct tri4_ray, node_neg_org) ==
 #define WIDE8_WALK1_FAR(wide, any_hit) 0
 #endif
 
-/* The fused test's constants for a walk from the set-up's lanes: in
- * lanes->fused too on AVX2, whose walk broadcasts the first node's
- * constants from there (traverse_wide8_ray.h, fused_add); AVX-512's walk
- * reads them from f alone. */
-#if defined(__AVX512VL__) && defined(__AVX512DQ__)
-#define WIDE8_FUSED_INIT(f, l) node_fused_init((f), (l)->org, (l)->dir, (l)->inv)
-#else
-#define WIDE8_FUSED_INIT(f, l) node_fused_init_lanes((f), (l)->fused, (l)->org, (l)->dir, (l)->inv)
-#endif
-
 #define WIDE8_WALK1(name, walk, any_hit, stats, leave_early)                                    \
     static int name(const struct bvh4 *wide, const float org[3], const float dir[3],            \
                     float tmin, float t_max, struct trace_hit *hit,                             \
@@ -1468,7 +1458,8 @@ typedef char tri4_ray_tmin_org_layout[offsetof(struct tri4_ray, node_neg_org) ==
          * zero or tiny direction component, an origin beyond 2^60) takes                       \
          * the float walk with isect_box's test, as a negative tmin does. */                    \
         if (!(tmin >= 0.0f) || WIDE8_WALK1_FAR(wide, any_hit) ||                                \
-            (WIDE8_FUSED(any_hit) && !WIDE8_FUSED_INIT(&rs.fused, &lanes)))                     \
+            (WIDE8_FUSED(any_hit) &&                                                            \
+             !node_fused_init(&rs.fused, lanes.org, lanes.dir, lanes.inv)))                     \
             return wide8_walk_end(s, wide8_walk_tmin_other(wide, s, any_walk, stats),           \
                                   any_hit, stats, counters);                                    \
         if (any_hit)                                                                            \

@@ -130,23 +130,14 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
 #define WIDE8_FUSED_ADD_MEM 1
 #endif
     __m256 fused_add[6];
-    /* The addends from the set-up's registers (ray_lanes' fused,
-     * node_fused_init_lanes), not from f's stores: the first node's fmas
-     * then wait for one store and reload (fused_add's), not two (about
-     * five cycles each, on the way from i to the first node's mask).
-     * The same floats.  (Keeping i and is from the set-up's registers
-     * too made GCC store and reload five of them around every leaf
-     * call.) */
-#define WIDE8_LANE8(v, k) _mm256_permutevar8x32_ps(_mm256_castps128_ps256(v), _mm256_set1_epi32(k))
     if (fused && WIDE8_FUSED_ADD_MEM) {
-        fused_add[0] = WIDE8_LANE8(lanes->fused[0], 0);
-        fused_add[1] = WIDE8_LANE8(lanes->fused[0], 1);
-        fused_add[2] = WIDE8_LANE8(lanes->fused[0], 2);
-        fused_add[3] = WIDE8_LANE8(lanes->fused[2], 0);
-        fused_add[4] = WIDE8_LANE8(lanes->fused[2], 1);
-        fused_add[5] = WIDE8_LANE8(lanes->fused[2], 2);
+        fused_add[0] = _mm256_broadcast_ss(&nf->near_c[0]);
+        fused_add[1] = _mm256_broadcast_ss(&nf->near_c[1]);
+        fused_add[2] = _mm256_broadcast_ss(&nf->near_c[2]);
+        fused_add[3] = _mm256_broadcast_ss(&nf->far_c[0]);
+        fused_add[4] = _mm256_broadcast_ss(&nf->far_c[1]);
+        fused_add[5] = _mm256_broadcast_ss(&nf->far_c[2]);
     }
-#undef WIDE8_LANE8
     uint64_t node_tests = 0;
     uint64_t tri_tests = 0;
     int r4_ready = 0;
