@@ -114,30 +114,6 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
      * at a pop: box_limit, or for the fused test box_limit widened
      * (node_fused_limit), set again whenever box_limit is. */
     float node_limit = fused ? node_fused_limit(box_limit) : box_limit;
-    /* The fused test's six addends (cn, cf per axis) as 8-lane vectors in
-     * this frame, broadcast once a walk: the node loop takes each as the
-     * fma's memory operand (vfmadd213ps m256), so that they need no
-     * register.  With them in registers, the twelve constants, the three
-     * inverses and tmin did not fit the 16 ymm registers: GCC spilled
-     * five, stored them again after every leaf (a broadcast and a store
-     * each) and copied them back before each fma, which overwrites its
-     * addend.  The same floats (a broadcast copies its float), so the
-     * same fmas.  AVX2 only: AVX-512's 32 registers hold them all, and
-     * its walks keep them in registers (WIDE8_FUSED_ADD_MEM 0). */
-#if defined(__AVX512VL__) && defined(__AVX512DQ__)
-#define WIDE8_FUSED_ADD_MEM 0
-#else
-#define WIDE8_FUSED_ADD_MEM 1
-#endif
-    __m256 fused_add[6];
-    if (fused && WIDE8_FUSED_ADD_MEM) {
-        fused_add[0] = _mm256_broadcast_ss(&nf->near_c[0]);
-        fused_add[1] = _mm256_broadcast_ss(&nf->near_c[1]);
-        fused_add[2] = _mm256_broadcast_ss(&nf->near_c[2]);
-        fused_add[3] = _mm256_broadcast_ss(&nf->far_c[0]);
-        fused_add[4] = _mm256_broadcast_ss(&nf->far_c[1]);
-        fused_add[5] = _mm256_broadcast_ss(&nf->far_c[2]);
-    }
     uint64_t node_tests = 0;
     uint64_t tri_tests = 0;
     int r4_ready = 0;
@@ -224,10 +200,9 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
             const float *no = NULL;
             if (lanes)
                 no = s->r4.node_neg_org;
-            /* The fused test's far inverses (node_fused.h) in registers;
-             * its addends from fused_add at each node (AVX2), or here
-             * with the near constants in neg_org's place (AVX-512). */
-            if (fused && !WIDE8_FUSED_ADD_MEM)
+            /* The fused test's near constants in their place
+             * (node_fused.h), with its far inverses and constants. */
+            if (fused)
                 no = nf->near_c;
             const __m256 neg_org_x =
                 lanes ? _mm256_broadcast_ss(&no[0]) : _mm256_set1_ps(-rv->org[0]);
@@ -238,10 +213,9 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
             const __m256 inv_s_x = fused ? _mm256_broadcast_ss(&nf->inv_s[0]) : neg_org_x;
             const __m256 inv_s_y = fused ? _mm256_broadcast_ss(&nf->inv_s[1]) : neg_org_y;
             const __m256 inv_s_z = fused ? _mm256_broadcast_ss(&nf->inv_s[2]) : neg_org_z;
-            const int far_reg = fused && !WIDE8_FUSED_ADD_MEM;
-            const __m256 far_c_x = far_reg ? _mm256_broadcast_ss(&nf->far_c[0]) : neg_org_x;
-            const __m256 far_c_y = far_reg ? _mm256_broadcast_ss(&nf->far_c[1]) : neg_org_y;
-            const __m256 far_c_z = far_reg ? _mm256_broadcast_ss(&nf->far_c[2]) : neg_org_z;
+            const __m256 far_c_x = fused ? _mm256_broadcast_ss(&nf->far_c[0]) : neg_org_x;
+            const __m256 far_c_y = fused ? _mm256_broadcast_ss(&nf->far_c[1]) : neg_org_y;
+            const __m256 far_c_z = fused ? _mm256_broadcast_ss(&nf->far_c[2]) : neg_org_z;
             const __m256 inv_x = _mm256_set1_ps(rv->inv_dir[0]);
             const __m256 inv_y = _mm256_set1_ps(rv->inv_dir[1]);
             const __m256 inv_z = _mm256_set1_ps(rv->inv_dir[2]);
@@ -288,30 +262,13 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                 __m256 tnx, tfx, tny, tfy, tnz, tfz;
                 if (fused) {
                     /* node_fused.h: near fma(b, i, cn), far fma(b, is, cf),
-                     * the far already widened (no scale below).  The
-                     * addends through a pointer the compiler cannot see
-                     * through at each node, so that it loads them as the
-                     * fmas' memory operands instead of hoisting them
-                     * into registers it then spills (fused_add). */
-                    const __m256 *fa = fused_add;
-#if defined(__GNUC__)
-                    if (WIDE8_FUSED_ADD_MEM)
-                        __asm__("" : "+r"(fa));
-#endif
-#define WIDE8_FUSED_ADD(k, reg) (WIDE8_FUSED_ADD_MEM ? fa[k] : (reg))
-                    tnx = _mm256_fmadd_ps(WIDE8_ROW_BOUND(row_nx, near_x), inv_x,
-                                          WIDE8_FUSED_ADD(0, neg_org_x));
-                    tfx = _mm256_fmadd_ps(WIDE8_ROW_BOUND(row_fx, far_x), inv_s_x,
-                                          WIDE8_FUSED_ADD(3, far_c_x));
-                    tny = _mm256_fmadd_ps(WIDE8_ROW_BOUND(row_ny, near_y), inv_y,
-                                          WIDE8_FUSED_ADD(1, neg_org_y));
-                    tfy = _mm256_fmadd_ps(WIDE8_ROW_BOUND(row_fy, far_y), inv_s_y,
-                                          WIDE8_FUSED_ADD(4, far_c_y));
-                    tnz = _mm256_fmadd_ps(WIDE8_ROW_BOUND(row_nz, near_z), inv_z,
-                                          WIDE8_FUSED_ADD(2, neg_org_z));
-                    tfz = _mm256_fmadd_ps(WIDE8_ROW_BOUND(row_fz, far_z), inv_s_z,
-                                          WIDE8_FUSED_ADD(5, far_c_z));
-#undef WIDE8_FUSED_ADD
+                     * the far already widened (no scale below). */
+                    tnx = _mm256_fmadd_ps(WIDE8_ROW_BOUND(row_nx, near_x), inv_x, neg_org_x);
+                    tfx = _mm256_fmadd_ps(WIDE8_ROW_BOUND(row_fx, far_x), inv_s_x, far_c_x);
+                    tny = _mm256_fmadd_ps(WIDE8_ROW_BOUND(row_ny, near_y), inv_y, neg_org_y);
+                    tfy = _mm256_fmadd_ps(WIDE8_ROW_BOUND(row_fy, far_y), inv_s_y, far_c_y);
+                    tnz = _mm256_fmadd_ps(WIDE8_ROW_BOUND(row_nz, near_z), inv_z, neg_org_z);
+                    tfz = _mm256_fmadd_ps(WIDE8_ROW_BOUND(row_fz, far_z), inv_s_z, far_c_z);
                 } else {
                     tnx = _mm256_mul_ps(_mm256_add_ps(neg_org_x, WIDE8_ROW_BOUND(row_nx, near_x)),
                                         inv_x);
@@ -555,7 +512,6 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
     }
 done:
 #undef WIDE8_PREFETCH_NEXT_TOP
-#undef WIDE8_FUSED_ADD_MEM
     if (stats) {
         s->node_tests += node_tests;
         s->triangle_tests += tri_tests;
