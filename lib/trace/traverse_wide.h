@@ -80,6 +80,23 @@ struct wide_state {
     uint64_t triangle_tests;
 };
 
+/* The fused node test (node_fused.h) is the node test of the AVX-512
+ * table's walks from the set-up's lanes (WIDE8_WALK1) with any_hit 0 or
+ * 1; the walks with any_hit == WIDE_ANY_LONGEST, whose push keys are the
+ * exits as isect_box computes them, and the walks from a struct
+ * trace_ray keep isect_box's test.  The AVX2 table keeps isect_box's
+ * test everywhere: with 16 ymm registers GCC spills five of the fused
+ * walk's twelve constant vectors, and on a Zen 3 core the AVX2 walks
+ * with the fused test were slower than with isect_box's
+ * (docs/performance-log.md, round 54, zn1). */
+#if defined(__AVX512VL__) && defined(__AVX512DQ__)
+#define WIDE8_FUSED_TABLE 1
+#define WIDE8_FUSED(any_hit) ((any_hit) == 0 || (any_hit) == 1)
+#else
+#define WIDE8_FUSED_TABLE 0
+#define WIDE8_FUSED(any_hit) 0
+#endif
+
 /* The state of a whole single-ray 8-wide walk (WIDE8_WALK, WIDE8_WALK1,
  * TRACE_WIDE_LEAF8): wide_state and the ray's origin and direction in
  * double (tri4_ray_init_double), which walk_wide8_ray sets at a
@@ -90,27 +107,25 @@ struct wide_state {
 struct wide_ray_state {
     struct wide_state s; /* first: the leaves reach d_org_dir from s */
     double d_org_dir[8];
+#if WIDE8_FUSED_TABLE
     /* The fused node test's constants (node_fused.h), set by WIDE8_WALK1
-     * for the walks that take it (WIDE8_FUSED). */
+     * for the walks that take it (WIDE8_FUSED); not in a table without
+     * the test, whose walk frames stay as they were. */
     struct node_fused fused;
+#endif
 };
 
-/* The fused node test (node_fused.h) is the node test of the walks from
- * the set-up's lanes (WIDE8_WALK1) with any_hit 0 or 1; the walks with
- * any_hit == WIDE_ANY_LONGEST, whose push keys are the exits as isect_box
- * computes them, and the walks from a struct trace_ray keep isect_box's
- * test. */
-#if defined(__FMA__)
-#define WIDE8_FUSED(any_hit) ((any_hit) == 0 || (any_hit) == 1)
-#else
-#define WIDE8_FUSED(any_hit) 0
-#endif
-
 /* The fused constants of the wide_ray_state whose s is *s (as
- * wide_ray_doubles). */
+ * wide_ray_doubles); NULL in a table
+ * without the fused test. */
 static inline const struct node_fused *wide_ray_fused(const struct wide_state *s)
 {
+#if WIDE8_FUSED_TABLE
     return &((const struct wide_ray_state *)(const void *)s)->fused;
+#else
+    (void)s; /* never called: no walk of this table is fused */
+    return NULL;
+#endif
 }
 
 /* The doubles of the wide_ray_state whose s is *s: only for a state
@@ -1437,6 +1452,19 @@ typedef char tri4_ray_tmin_org_layout[offsetof(struct tri4_ray, node_neg_org) ==
 #define WIDE8_WALK1_FAR(wide, any_hit) 0
 #endif
 
+/* 1 when a walk with the fused node test (WIDE8_FUSED) gets a ray its
+ * constants do not cover (node_fused_init: a zero or tiny direction
+ * component, an origin beyond 2^60), else 0 with the constants set in
+ * rs.fused.  A table without the test (the AVX2 table) neither sets
+ * them nor checks the cover. */
+#if WIDE8_FUSED_TABLE
+#define WIDE8_FUSED_UNCOVERED(rs, lanes, any_hit)                                               \
+    (WIDE8_FUSED(any_hit) &&                                                                    \
+     !node_fused_init(&(rs).fused, (lanes).org, (lanes).dir, (lanes).inv))
+#else
+#define WIDE8_FUSED_UNCOVERED(rs, lanes, any_hit) 0
+#endif
+
 #define WIDE8_WALK1(name, walk, any_hit, stats, leave_early)                                    \
     static int name(const struct bvh4 *wide, const float org[3], const float dir[3],            \
                     float tmin, float t_max, struct trace_hit *hit,                             \
@@ -1454,12 +1482,11 @@ typedef char tri4_ray_tmin_org_layout[offsetof(struct tri4_ray, node_neg_org) ==
          * float walk's flag. */                                                                \
         const int any_walk = (any_hit) != 0;                                                    \
         wide_state_init1(s, &ray, t_max, any_walk, stats, hit);                                 \
-        /* A ray the fused node test does not cover (node_fused_init: a                         \
-         * zero or tiny direction component, an origin beyond 2^60) takes                       \
-         * the float walk with isect_box's test, as a negative tmin does. */                    \
+        /* A ray the fused node test does not cover takes the float walk                        \
+         * with isect_box's test, as a negative tmin does                                       \
+         * (WIDE8_FUSED_UNCOVERED). */                                                          \
         if (!(tmin >= 0.0f) || WIDE8_WALK1_FAR(wide, any_hit) ||                                \
-            (WIDE8_FUSED(any_hit) &&                                                            \
-             !node_fused_init(&rs.fused, lanes.org, lanes.dir, lanes.inv)))                     \
+            WIDE8_FUSED_UNCOVERED(rs, lanes, any_hit))                                          \
             return wide8_walk_end(s, wide8_walk_tmin_other(wide, s, any_walk, stats),           \
                                   any_hit, stats, counters);                                    \
         if (any_hit)                                                                            \
