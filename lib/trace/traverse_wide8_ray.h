@@ -97,13 +97,20 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
     const int by_off = 0;
 #endif
     size_t cur_off = 0;
-    /* The walks from the set-up's lanes with any_hit 0 or 1 test a node by
-     * node_fused.h's fused test (one fma a slab, the far distances
-     * widened by the fma's own constants), which passes every box
-     * isect_box passes (node_fused.h proves it; the answers are then the
-     * same, the visits a few more); WIDE8_WALK1 set its constants, or
-     * sent the ray to the float walk when they do not cover it.  The
-     * other walks keep isect_box's slabs bit for bit. */
+    /* The AVX-512 table's walks from the set-up's lanes with any_hit 0
+     * or 1 test a node by node_fused.h's fused test (one fma a slab, the
+     * far distances widened by the fma's own constants), which passes
+     * every box isect_box passes (node_fused.h proves it; the answers are
+     * then the same, the visits a few more); WIDE8_WALK1 set its
+     * constants, or sent the ray to the float walk when they do not
+     * cover it.  The other walks, and every walk of the AVX2 table, keep
+     * isect_box's slabs bit for bit: on the AVX2 table the fused walk's
+     * twelve constant vectors do not fit beside the walk's own in 16
+     * registers (five spilled, stored again after every leaf), and on a
+     * Zen 3 core the AVX2 walks with isect_box's slabs ran 7.6 % fewer
+     * instructions (gears, closest hit) and measured ahead on the clock,
+     * also of the fused test with its addends as memory operands
+     * (docs/performance-log.md, round 54, zn1; WIDE8_FUSED). */
     const int fused = WIDE8_FUSED(any_hit) && lanes;
     const struct node_fused *const nf = fused ? wide_ray_fused(s) : NULL;
     /* An any-hit walk's box limit never shrinks (it ends at its first
