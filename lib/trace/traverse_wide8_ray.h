@@ -108,10 +108,11 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
      * twelve constant vectors do not fit beside the walk's own in 16
      * registers (five spilled, stored again after every leaf), and on a
      * Zen 3 core the AVX2 walks with isect_box's slabs ran 7.6 % fewer
-     * instructions (gears, closest hit) and on a loaded clock were level
-     * or ahead on all four meshes, and ahead of the fused test with its
-     * addends as memory operands (docs/performance-log.md, round 54,
-     * zn1; WIDE8_FUSED). */
+     * instructions (gears, closest hit) and were ahead on the clock on
+     * all four meshes (by 0.05-0.07 of Embree on the kitchen's, gears'
+     * and bumpy's camera and random rays), and ahead of the fused test
+     * with its addends as memory operands (docs/performance-log.md,
+     * round 54, zn1; WIDE8_FUSED). */
     const int fused = WIDE8_FUSED(any_hit) && lanes;
     const struct node_fused *const nf = fused ? wide_ray_fused(s) : NULL;
     /* An any-hit walk's box limit never shrinks (it ends at its first
