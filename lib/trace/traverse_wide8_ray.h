@@ -151,6 +151,75 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
             WIDE_PREFETCH_LINES(a, 3);                                                            \
         }                                                                                         \
     } while (0)
+#if WIDE8_PEEL_ROOT
+    /* The root peeled out of the loop (AVX2 walks from the set-up's lanes
+     * with the fused test; AVX-512's walks keep it in the loop, not
+     * measured).  Every ray tests the root, and its test waited for the
+     * set-up through memory: the loop broadcasts i, cn, is and cf from
+     * the stores the set-up had just made (wide_state's ray, rs.fused),
+     * a store-to-load forward of several cycles on the chain from the
+     * division to the root's choice of child, which a random ray's first
+     * mispredicted branch waits for.  Here the same floats come from the
+     * set-up's registers (lanes->inv; GCC forwards rs.fused's stores to
+     * the loads below within the walk's frame), broadcast by lane
+     * permutations; the loop's broadcasts from memory then serve the
+     * later nodes, off that chain.  The same test (fmas, integer
+     * maximum, comparisons) and the same choice (front child, push,
+     * prefetches) as the loop's first pass with cur 0, so the same
+     * walk. */
+    if (fused) {
+        const __m128 inv4 = lanes->inv;
+        const __m128 cn4 = _mm_loadu_ps(nf->near_c);
+        const __m128 is4 = _mm_loadu_ps(nf->inv_s);
+        const __m128 cf4 = _mm_loadu_ps(nf->far_c);
+        const __m256 tnx = _mm256_fmadd_ps(wide8_bound(row_nx, 0), wide8_lane(inv4, 0),
+                                           wide8_lane(cn4, 0));
+        const __m256 tfx = _mm256_fmadd_ps(wide8_bound(row_fx, 0), wide8_lane(is4, 0),
+                                           wide8_lane(cf4, 0));
+        const __m256 tny = _mm256_fmadd_ps(wide8_bound(row_ny, 0), wide8_lane(inv4, 1),
+                                           wide8_lane(cn4, 1));
+        const __m256 tfy = _mm256_fmadd_ps(wide8_bound(row_fy, 0), wide8_lane(is4, 1),
+                                           wide8_lane(cf4, 1));
+        const __m256 tnz = _mm256_fmadd_ps(wide8_bound(row_nz, 0), wide8_lane(inv4, 2),
+                                           wide8_lane(cn4, 2));
+        const __m256 tfz = _mm256_fmadd_ps(wide8_bound(row_fz, 0), wide8_lane(is4, 2),
+                                           wide8_lane(cf4, 2));
+        const __m256i tmin8 = _mm256_max_epi32(
+            _mm256_castps_si256(_mm256_set1_ps(ray->tmin)), _mm256_setzero_si256());
+        const __m256 t0 = _mm256_castsi256_ps(_mm256_max_epi32(
+            _mm256_max_epi32(_mm256_castps_si256(tnx), _mm256_castps_si256(tny)),
+            _mm256_max_epi32(_mm256_castps_si256(tnz), tmin8)));
+        const __m256 hit = _mm256_and_ps(
+            _mm256_and_ps(_mm256_cmp_ps(t0, _mm256_set1_ps(node_limit), _CMP_LE_OQ),
+                          _mm256_cmp_ps(t0, tfx, _CMP_NGT_UQ)),
+            _mm256_and_ps(_mm256_cmp_ps(t0, tfy, _CMP_NGT_UQ), _mm256_cmp_ps(t0, tfz, _CMP_NGT_UQ)));
+        const unsigned mask = (unsigned)_mm256_movemask_ps(hit);
+        if (stats)
+            node_tests += 8;
+        if (!mask)
+            goto done;
+        const struct bvh8_node *n = &nodes[0];
+        if (!(mask & (mask - 1u))) {
+            const unsigned l = (unsigned)__builtin_ctz(mask);
+            cur = n->child[l];
+            cur_count = n->count[l];
+        } else {
+            if (any_hit)
+                wide8_push_stored(n, mask, t0, st_child, st_count, &sp, &cur, &cur_count);
+            else
+                wide8_push(n, octant, hit, t0, order_shift, st_child, st_count, st_t, &sp, &cur,
+                           &cur_count);
+            if (prefetch_top) {
+                const uint32_t top = st_child[sp - 1];
+                const char *a = st_count[sp - 1] ? (const char *)&packets[top]
+                                                 : (const char *)&nodes[top];
+                WIDE_PREFETCH_LINES(a, 3);
+            }
+        }
+        if (!any_hit && !cur_count)
+            WIDE_PREFETCH_LINES(&nodes[cur], 4);
+    }
+#endif
     for (;;) {
         /* A leaf popped after a leaf goes straight to the leaf test: the
          * node test's vectors are broadcast only when an inner node comes
