@@ -537,27 +537,6 @@ static inline __m256 wide8_bound(const char *b, size_t off)
  * the bounds must open the node. */
 typedef char bvh8_node_bounds_first[offsetof(struct bvh8_node, bounds) == 0 ? 1 : -1];
 
-/* walk_wide8_ray's first node vectors from the set-up's registers
- * (traverse_wide8_ray.h says why): the AVX2 closest-hit walks with the
- * fused test only; AVX-512's walks broadcast them from memory as before
- * (not measured). */
-#if defined(__AVX2__) && defined(__FMA__) && !(defined(__AVX512VL__) && defined(__AVX512DQ__))
-#define WIDE8_FIRST_FROM_REGS 1
-/* vpermps' indices for lane 0, 1 and 2, loaded as one constant each
- * (GCC built _mm256_set1_epi32(k) by mov, vmovd and vpbroadcastd). */
-static const int32_t wide8_lane_index[3][8] __attribute__((aligned(32))) = {
-    {0, 0, 0, 0, 0, 0, 0, 0}, {1, 1, 1, 1, 1, 1, 1, 1}, {2, 2, 2, 2, 2, 2, 2, 2}};
-/* Lane k of v in all eight lanes, from a register. */
-static inline __m256 wide8_lane(__m128 v, int k)
-{
-    return _mm256_permutevar8x32_ps(
-        _mm256_castps128_ps256(v),
-        _mm256_load_si256((const __m256i *)(const void *)wide8_lane_index[k]));
-}
-#else
-#define WIDE8_FIRST_FROM_REGS 0
-#endif
-
 /* wide8_compress[m]: the bit positions set in m, highest first, one per
  * byte from the low byte (the rest 0): the left-packing permutation of
  * walk_wide8_impl's push, one 8-byte load instead of a loop. */

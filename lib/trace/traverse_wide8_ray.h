@@ -151,121 +151,79 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
             WIDE_PREFETCH_LINES(a, 3);                                                            \
         }                                                                                         \
     } while (0)
-    /* The node test's vectors, set before the first node and again
-     * whenever an inner node comes next after a leaf (the loop's end):
-     * a leaf popped after a leaf goes straight to the leaf test, and the
-     * vectors are never live across a leaf call. */
-    __m256 neg_org_x, neg_org_y, neg_org_z, inv_s_x, inv_s_y, inv_s_z;
-    __m256 far_c_x, far_c_y, far_c_z, inv_x, inv_y, inv_z;
-    __m256i tmin8;
-    /* The ray's vectors, broadcast again after each leaf call from
-     * the ray (which the call may in principle have changed, so the
-     * compiler reloads it anyway) instead of spilled and reloaded
-     * around it. */
-    /* GCC sees that the packet call leaves the ray alone and keeps
-     * these vectors across it, spilling and reloading eight of them
-     * around every leaf; an any-hit walk (about three leaf visits per
-     * shadow ray) loads them again instead.  The empty asm hides
-     * nothing but the pointer's provenance, on a copy: with the
-     * asm on the pointer itself GCC also put a vzeroupper before
-     * every 4-lane leaf call (callgrind, AVX2: 3.1 instructions a
-     * gears shadow ray more); either way it stores the pointer to
-     * its stack slot again at every leaf.  An any-hit walk from
-     * the set-up's lanes, whose ray and -org copy are this
-     * frame's own (WIDE8_WALK1), has a compiler barrier here
-     * instead: the floats are loaded again from their stack
-     * slots, without the two pointers the asm made GCC keep in
-     * stack slots of their own (callgrind, AVX2: 9 instructions
-     * a gears shadow ray fewer).  The same loads of the same
-     * floats, so the same vectors. */
-    /* The origin negated: bound + (-org) is bound - org bit for bit
-     * (IEEE 754's x - y is x + (-y)), and the addition takes the
-     * bound as its memory operand (the subtraction cannot, the bound
-     * being its minuend): six loads fewer per node. */
-    /* A walk from the set-up's lanes (WIDE8_WALK1, any-hit and
-     * closest-hit alike) reads -org as the set-up stored it
-     * negated (tri4_ray's node_neg_org: the same floats, -org by
-     * the sign bit as C's unary minus): a broadcast from memory
-     * each, loaded again after each leaf call (the leaf takes s;
-     * the barrier above) instead of kept across it, where the
-     * ray's org took a load, a sign flip and a register
-     * broadcast each time. */
-    /* The fused test's near constants in their place
-     * (node_fused.h), with its far inverses and constants. */
-#if defined(__GNUC__)
-#define WIDE8_NODE_RAY(rv)                                                                        \
-    do {                                                                                          \
-        if (any_hit && lanes)                                                                     \
-            __asm__ volatile("" ::: "memory");                                                    \
-        else if (any_hit)                                                                         \
-            __asm__("" : "+r"(rv));                                                               \
-    } while (0)
-#else
-#define WIDE8_NODE_RAY(rv) ((void)0)
-#endif
-    /* tmin8: tmin's bits for the entry's integer maximum (below): only
-     * rays with tmin >= 0 come here (the others take
-     * wide8_walk_tmin_other), and -0 becomes +0, the same number. */
-#define WIDE8_NODE_VECTORS()                                                                      \
-    do {                                                                                          \
-        const struct trace_ray *rv = ray;                                                         \
-        WIDE8_NODE_RAY(rv);                                                                       \
-        const float *no = NULL;                                                                   \
-        if (lanes)                                                                                \
-            no = s->r4.node_neg_org;                                                              \
-        if (fused)                                                                                \
-            no = nf->near_c;                                                                      \
-        neg_org_x = lanes ? _mm256_broadcast_ss(&no[0]) : _mm256_set1_ps(-rv->org[0]);            \
-        neg_org_y = lanes ? _mm256_broadcast_ss(&no[1]) : _mm256_set1_ps(-rv->org[1]);            \
-        neg_org_z = lanes ? _mm256_broadcast_ss(&no[2]) : _mm256_set1_ps(-rv->org[2]);            \
-        inv_s_x = fused ? _mm256_broadcast_ss(&nf->inv_s[0]) : neg_org_x;                         \
-        inv_s_y = fused ? _mm256_broadcast_ss(&nf->inv_s[1]) : neg_org_y;                         \
-        inv_s_z = fused ? _mm256_broadcast_ss(&nf->inv_s[2]) : neg_org_z;                         \
-        far_c_x = fused ? _mm256_broadcast_ss(&nf->far_c[0]) : neg_org_x;                         \
-        far_c_y = fused ? _mm256_broadcast_ss(&nf->far_c[1]) : neg_org_y;                         \
-        far_c_z = fused ? _mm256_broadcast_ss(&nf->far_c[2]) : neg_org_z;                         \
-        inv_x = _mm256_set1_ps(rv->inv_dir[0]);                                                   \
-        inv_y = _mm256_set1_ps(rv->inv_dir[1]);                                                   \
-        inv_z = _mm256_set1_ps(rv->inv_dir[2]);                                                   \
-        tmin8 = _mm256_max_epi32(_mm256_castps_si256(_mm256_set1_ps(rv->tmin)),                   \
-                                 _mm256_setzero_si256());                                         \
-    } while (0)
-#if WIDE8_FIRST_FROM_REGS
-    /* The first node's vectors from the set-up's registers (AVX2 walks
-     * with the fused test): the same floats as the broadcasts from memory
-     * (lanes->inv holds the ray's inv_dir; GCC forwards rs.fused's stores
-     * to the loads below within the walk's frame), by lane permutations,
-     * so that the nodes down to a ray's first leaf, the root first, do
-     * not wait for the set-up's stores and their reloads (a store-to-load
-     * forward on the chain from the division to the root's choice of
-     * child).  The peeled root of 76f6ed4 (reverted) made these
-     * permutations in addition to the loop's broadcasts; here they
-     * replace the first ones.  Closest hit only: in the any-hit walk
-     * (fcc9bbd) they cost more than the broadcasts (callgrind, gears'
-     * shadow rays +1.0 %), and a shadow ray re-broadcasts rarely. */
-    if (fused && !any_hit) {
-        const __m128 cn4 = _mm_loadu_ps(nf->near_c);
-        const __m128 is4 = _mm_loadu_ps(nf->inv_s);
-        const __m128 cf4 = _mm_loadu_ps(nf->far_c);
-        neg_org_x = wide8_lane(cn4, 0);
-        neg_org_y = wide8_lane(cn4, 1);
-        neg_org_z = wide8_lane(cn4, 2);
-        inv_s_x = wide8_lane(is4, 0);
-        inv_s_y = wide8_lane(is4, 1);
-        inv_s_z = wide8_lane(is4, 2);
-        far_c_x = wide8_lane(cf4, 0);
-        far_c_y = wide8_lane(cf4, 1);
-        far_c_z = wide8_lane(cf4, 2);
-        inv_x = wide8_lane(lanes->inv, 0);
-        inv_y = wide8_lane(lanes->inv, 1);
-        inv_z = wide8_lane(lanes->inv, 2);
-        tmin8 = _mm256_max_epi32(_mm256_castps_si256(_mm256_set1_ps(ray->tmin)),
-                                 _mm256_setzero_si256());
-    } else
-#endif
-        WIDE8_NODE_VECTORS();
     for (;;) {
-        {
+        /* A leaf popped after a leaf goes straight to the leaf test: the
+         * node test's vectors are broadcast only when an inner node comes
+         * next. */
+        if (!cur_count) {
+            /* The ray's vectors, broadcast again after each leaf call from
+             * the ray (which the call may in principle have changed, so the
+             * compiler reloads it anyway) instead of spilled and reloaded
+             * around it. */
+#if defined(__GNUC__)
+            /* GCC sees that the packet call leaves the ray alone and keeps
+             * these vectors across it, spilling and reloading eight of them
+             * around every leaf; an any-hit walk (about three leaf visits per
+             * shadow ray) loads them again instead.  The empty asm hides
+             * nothing but the pointer's provenance, on a copy: with the
+             * asm on the pointer itself GCC also put a vzeroupper before
+             * every 4-lane leaf call (callgrind, AVX2: 3.1 instructions a
+             * gears shadow ray more); either way it stores the pointer to
+             * its stack slot again at every leaf.  An any-hit walk from
+             * the set-up's lanes, whose ray and -org copy are this
+             * frame's own (WIDE8_WALK1), has a compiler barrier here
+             * instead: the floats are loaded again from their stack
+             * slots, without the two pointers the asm made GCC keep in
+             * stack slots of their own (callgrind, AVX2: 9 instructions
+             * a gears shadow ray fewer).  The same loads of the same
+             * floats, so the same vectors. */
+            const struct trace_ray *rv = ray;
+            if (any_hit && lanes)
+                __asm__ volatile("" ::: "memory");
+            else if (any_hit)
+                __asm__("" : "+r"(rv));
+#else
+            const struct trace_ray *rv = ray;
+#endif
+            /* The origin negated: bound + (-org) is bound - org bit for bit
+             * (IEEE 754's x - y is x + (-y)), and the addition takes the
+             * bound as its memory operand (the subtraction cannot, the bound
+             * being its minuend): six loads fewer per node. */
+            /* A walk from the set-up's lanes (WIDE8_WALK1, any-hit and
+             * closest-hit alike) reads -org as the set-up stored it
+             * negated (tri4_ray's node_neg_org: the same floats, -org by
+             * the sign bit as C's unary minus): a broadcast from memory
+             * each, loaded again after each leaf call (the leaf takes s;
+             * the barrier above) instead of kept across it, where the
+             * ray's org took a load, a sign flip and a register
+             * broadcast each time. */
+            const float *no = NULL;
+            if (lanes)
+                no = s->r4.node_neg_org;
+            /* The fused test's near constants in their place
+             * (node_fused.h), with its far inverses and constants. */
+            if (fused)
+                no = nf->near_c;
+            const __m256 neg_org_x =
+                lanes ? _mm256_broadcast_ss(&no[0]) : _mm256_set1_ps(-rv->org[0]);
+            const __m256 neg_org_y =
+                lanes ? _mm256_broadcast_ss(&no[1]) : _mm256_set1_ps(-rv->org[1]);
+            const __m256 neg_org_z =
+                lanes ? _mm256_broadcast_ss(&no[2]) : _mm256_set1_ps(-rv->org[2]);
+            const __m256 inv_s_x = fused ? _mm256_broadcast_ss(&nf->inv_s[0]) : neg_org_x;
+            const __m256 inv_s_y = fused ? _mm256_broadcast_ss(&nf->inv_s[1]) : neg_org_y;
+            const __m256 inv_s_z = fused ? _mm256_broadcast_ss(&nf->inv_s[2]) : neg_org_z;
+            const __m256 far_c_x = fused ? _mm256_broadcast_ss(&nf->far_c[0]) : neg_org_x;
+            const __m256 far_c_y = fused ? _mm256_broadcast_ss(&nf->far_c[1]) : neg_org_y;
+            const __m256 far_c_z = fused ? _mm256_broadcast_ss(&nf->far_c[2]) : neg_org_z;
+            const __m256 inv_x = _mm256_set1_ps(rv->inv_dir[0]);
+            const __m256 inv_y = _mm256_set1_ps(rv->inv_dir[1]);
+            const __m256 inv_z = _mm256_set1_ps(rv->inv_dir[2]);
+            /* tmin's bits for the entry's integer maximum (below): only
+             * rays with tmin >= 0 come here (the others take
+             * wide8_walk_tmin_other), and -0 becomes +0, the same number. */
+            const __m256i tmin8 = _mm256_max_epi32(
+                _mm256_castps_si256(_mm256_set1_ps(rv->tmin)), _mm256_setzero_si256());
             /* Inner nodes until a leaf lane comes up (or the stack empties). */
             while (!cur_count) {
                 const size_t node_off = by_off ? cur_off : (size_t)cur * sizeof(nodes[0]);
@@ -460,7 +418,6 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                 /* No WIDE8_PREFETCH_NEXT_TOP here (above). */
             }
         }
-    leaf:
         {
             int stop = 0;
             const struct tri4_packet *p =
@@ -552,14 +509,9 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
         cur_count = st_count[sp];
         cur_off = (size_t)cur * sizeof(nodes[0]);
         WIDE8_PREFETCH_NEXT_TOP();
-        if (cur_count)
-            goto leaf;
-        WIDE8_NODE_VECTORS();
     }
 done:
 #undef WIDE8_PREFETCH_NEXT_TOP
-#undef WIDE8_NODE_VECTORS
-#undef WIDE8_NODE_RAY
     if (stats) {
         s->node_tests += node_tests;
         s->triangle_tests += tri_tests;
