@@ -132,7 +132,8 @@ struct ray_lanes {
     __m128 org;   /* org[0], org[1], org[2], 0 */
     __m128 org_k; /* org[kx], org[ky], org[kz], 0 */
     __m128 inv_k; /* inv_dir[kx], inv_dir[ky], inv_dir[kz] (= sz), 1 */
-    __m128 inv;   /* inv_dir[0], inv_dir[1], inv_dir[2], 1 (node_fused_init) */
+    __m128 inv;   /* inv_dir[0], inv_dir[1], inv_dir[2], 1 (node_fused_init:
+                   * the AVX-512 table only; unread, so dropped, elsewhere) */
     __m128 shear; /* sx, sy, -1, - */
     __m128i order; /* kx, ky, kz, 3: the permutation's indices (the any-hit
                     * leaves' row offsets, tri4_ray_init_scalar_lanes) */

@@ -116,8 +116,7 @@ struct wide_ray_state {
 };
 
 /* The fused constants of the wide_ray_state whose s is *s (as
- * wide_ray_doubles); NULL in a table
- * without the fused test. */
+ * wide_ray_doubles); NULL in a table without the fused test. */
 static inline const struct node_fused *wide_ray_fused(const struct wide_state *s)
 {
 #if WIDE8_FUSED_TABLE
