@@ -170,13 +170,6 @@ static inline void tri4_ray_init_scalar(struct tri4_ray *r, const struct trace_r
  * otherwise). */
 #define TRI4_CONST(r, vec, k, scalar) ((scalar) ? _mm_set1_ps((r)->k) : (r)->vec)
 
-/* The filters' depth_out (tri4_filter_lanes_depth, tri4_pair_filter_lanes):
- * 0, the vector form; 1, the single-ray any-hit leaves' refusals on depth
- * with the scalar form; TRI4_SCALAR_ONLY, the scalar form without those
- * refusals (the AVX2 table's single-ray closest-hit leaves,
- * traverse_wide.h's WIDE8_CLOSEST_SCALAR). */
-#define TRI4_SCALAR_ONLY 2
-
 /* Row `off` bytes into vertex i's coordinates of p (tri4_ray's off_x..):
  * the four lanes' coordinate on one axis. */
 static inline __m128 tri4_row(const struct tri4_packet *p, int i, size_t off)
@@ -253,10 +246,9 @@ static inline unsigned tri4_filter_lanes_depth(const struct tri4_ray *r,
                                                float t_max, struct tri4_lanes *out, int any_hit,
                                                int early_out, int depth_out)
 {
-    /* depth_out's walks (the single-ray any-hit leaves, and with
-     * TRI4_SCALAR_ONLY the AVX2 table's closest-hit ones) set the per-ray
+    /* depth_out's walks (the single-ray any-hit leaves) set the per-ray
      * constants' scalar form only (struct tri4_ray's k_ fields). */
-    const int scalar = depth_out != 0;
+    const int scalar = depth_out;
     /* Unaligned loads: a layout's packets are 32-byte aligned, but a
      * packet elsewhere (a test's, on the stack) need not be; on aligned
      * data they cost what aligned loads do. */
@@ -345,7 +337,7 @@ static inline unsigned tri4_filter_lanes_depth(const struct tri4_ray *r,
      * closest-hit copies: there GCC scheduled the filter differently
      * (gears' random rays +3 instructions a ray); not in the packet
      * kernels' and the 4-wide walks' leaves, whose code stays as it was. */
-    if (depth_out == 1 &&
+    if (depth_out &&
         ((unsigned)_mm_movemask_ps(_mm_andnot_ps(
              mixed, _mm_and_ps(_mm_cmpge_ps(z_hi, TRI4_CONST(r, tmin, k_tmin, scalar)),
                                _mm_cmplt_ps(z_lo, limit)))) &
@@ -366,7 +358,7 @@ static inline unsigned tri4_filter_lanes_depth(const struct tri4_ray *r,
     __m128 keep = _mm_and_ps(geom, _mm_cmpneq_ps(det, zero));
     keep = _mm_and_ps(keep, _mm_cmplt_ps(abs_det, _mm_set1_ps(INFINITY)));
     unsigned mask = ((unsigned)_mm_movemask_ps(keep) & valid) | deferred;
-    if (depth_out == 1 && mask) {
+    if (depth_out && mask) {
         /* depth_out (the single-ray any-hit leaves): the kept lanes the
          * ray starts on (t_lo < tmin: a shadow ray's own triangle and
          * its neighbours) refused here, from the filter's registers,
@@ -572,7 +564,7 @@ static inline unsigned tri4_pair_filter_lanes(const struct tri4_ray *r,
                                               int behind_out)
 {
     /* depth_out's walks set the scalar form only (tri4_filter_lanes_depth). */
-    const int scalar = depth_out != 0;
+    const int scalar = depth_out;
     const __m256 neg_org_x = TRI4_CONST8(r, neg_org_x, k_neg_org[0], scalar);
     const __m256 neg_org_y = TRI4_CONST8(r, neg_org_y, k_neg_org[1], scalar);
     const __m256 neg_org_z = TRI4_CONST8(r, neg_org_z, k_neg_org[2], scalar);
@@ -703,7 +695,7 @@ static inline unsigned tri4_pair_filter_lanes(const struct tri4_ray *r,
                              &z_hi);
         const __m256 limit = _mm256_set1_ps(t_max);
         /* The any-hit early return on depth, as tri4_filter_lanes_depth. */
-        if (depth_out == 1 &&
+        if (depth_out &&
             ((unsigned)_mm256_movemask_ps(_mm256_andnot_ps(
                  mixed,
                  _mm256_and_ps(

@@ -1084,23 +1084,6 @@ static inline int walk_wide8(const struct bvh4 *wide, struct wide_state *s, uint
  * ray's first leaf: walk_wide8_ray, TRACE_WIDE_LEAF8) instead of
  * converting them each finish: the same doubles (intersect.h,
  * isect_triangle_finish_impl). */
-/* The closest-hit leaves' constants (WIDE8_CLOSEST_FORM, their depth_out):
- * in the AVX2 table's single-ray unit, the scalar form (struct tri4_ray's
- * k_ fields, TRI4_SCALAR_ONLY), which a ray sets at its first leaf with
- * three 16-byte stores (tri4_ray_init_scalar_axes, tri4_ray_init_scalar_vec)
- * where the vector form took nine broadcasts and nine stores; the leaves
- * load each constant once either way (vbroadcastss where they loaded a
- * vector by vmovaps or vbroadcastf128).  The packet unit's copies (its
- * fallback walk's) and the AVX-512 table keep the vector form, so their
- * code stays as it was. */
-#if !WIDE8_FUSED_TABLE && !defined(TRACE_WIDE_PACKET_PIECES)
-#define WIDE8_CLOSEST_SCALAR 1
-#define WIDE8_CLOSEST_FORM TRI4_SCALAR_ONLY
-#else
-#define WIDE8_CLOSEST_SCALAR 0
-#define WIDE8_CLOSEST_FORM 0
-#endif
-
 #define WIDE8_LEAF_TEST(name, test, any_hit, early_out, depth_out, behind_out, ray_double)       \
     static int name(struct wide_state *s, const struct tri4_packet *p, uint32_t n) WIDE_NOINLINE; \
     static int name(struct wide_state *s, const struct tri4_packet *p, uint32_t n)                \
@@ -1108,8 +1091,8 @@ static inline int walk_wide8(const struct bvh4 *wide, struct wide_state *s, uint
         return test(s, p, n, any_hit, early_out, depth_out, behind_out, ray_double);               \
     }
 
-WIDE8_LEAF_TEST(wide8_packet_closest, wide_packet_test, 0, 1, WIDE8_CLOSEST_FORM, 1, 1)
-WIDE8_LEAF_TEST(wide8_packet_full, wide_packet_test, 0, 0, WIDE8_CLOSEST_FORM, 1, 1)
+WIDE8_LEAF_TEST(wide8_packet_closest, wide_packet_test, 0, 1, 0, 1, 1)
+WIDE8_LEAF_TEST(wide8_packet_full, wide_packet_test, 0, 0, 0, 1, 1)
 WIDE8_LEAF_TEST(wide8_packet_any, wide_packet_test, 1, 1, 1, 0, 0)
 
 /* The byte offsets of the near x, y, z and far x, y, z rows of a
@@ -1212,47 +1195,6 @@ static inline void tri4_ray_init_vec_axes(struct tri4_ray *r, const struct trace
     r->inv_x = _mm_permute_ps(a->inv_k, 0x00);
     r->inv_y = _mm_permute_ps(a->inv_k, 0x55);
     r->tmin = _mm_set1_ps(ray->tmin);
-}
-
-/* The closest-hit leaves' scalar form (WIDE8_CLOSEST_SCALAR) from
- * ray_setup_axes' lanes: tri4_ray_init_scalar_lanes' stores but k_tmin,
- * which WIDE8_WALK1 stored with node_neg_org (tri4_ray_init_node_org).
- * The same floats as tri4_ray_init_vec_axes puts in the vectors. */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline void tri4_ray_init_scalar_axes(struct tri4_ray *r, const struct ray_axes *a)
-{
-    tri4_ray_init_offsets(r, a->inv_k, a->order);
-    _mm_storeu_ps(r->k_neg_org, _mm_xor_ps(a->org_k, _mm_set1_ps(-0.0f)));
-    _mm_storeu_ps(r->k_inv, a->inv_k);
-    _mm_storeu_ps(r->k_shear, a->shear);
-}
-
-/* The scalar form from a struct trace_ray (the walks without the
- * set-up's lanes), as tri4_ray_init_vec reads it: kx, ky, kz as one
- * vector of lane indices, org and inv_dir permuted into that order;
- * k_inv[2] is ray->sz (tri4_ray_init_scalar), inserted, k_shear sx and
- * sy in one 8-byte load (lanes 2 and 3 are never read). */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline void tri4_ray_init_scalar_vec(struct tri4_ray *r, const struct trace_ray *ray)
-{
-    const char *b = (const char *)(const void *)ray;
-    const __m128i idx =
-        _mm_loadu_si128((const __m128i *)(const void *)(b + offsetof(struct trace_ray, kx)));
-    const __m128 org_k = _mm_permutevar_ps(
-        _mm_loadu_ps((const float *)(const void *)(b + offsetof(struct trace_ray, org))), idx);
-    const __m128 inv_k = _mm_permutevar_ps(
-        _mm_loadu_ps((const float *)(const void *)(b + offsetof(struct trace_ray, inv_dir))), idx);
-    tri4_ray_init_offsets(r, inv_k, idx);
-    _mm_storeu_ps(r->k_neg_org, _mm_xor_ps(org_k, _mm_set1_ps(-0.0f)));
-    _mm_storeu_ps(r->k_inv, _mm_insert_ps(inv_k, _mm_load_ss(&ray->sz), 0x20));
-    _mm_storeu_ps(r->k_shear,
-                  _mm_castpd_ps(_mm_load_sd((const double *)(const void *)(b + offsetof(
-                                                                            struct trace_ray, sx)))));
-    r->k_tmin = ray->tmin;
 }
 #endif
 
@@ -1429,17 +1371,15 @@ static inline int wide_leaf8_test(struct wide_state *s, const struct tri4_packet
     return 0;
 }
 
-WIDE8_LEAF_TEST(wide8_leaf8_closest, wide_leaf8_test, 0, 1, WIDE8_CLOSEST_FORM, 1, 1)
-WIDE8_LEAF_TEST(wide8_leaf8_full, wide_leaf8_test, 0, 0, WIDE8_CLOSEST_FORM, 1, 1)
+WIDE8_LEAF_TEST(wide8_leaf8_closest, wide_leaf8_test, 0, 1, 0, 1, 1)
+WIDE8_LEAF_TEST(wide8_leaf8_full, wide_leaf8_test, 0, 0, 0, 1, 1)
 /* The closest-hit walk's first 8-lane leaf of a ray: the filter refuses
  * a leaf whose lanes are all missed by the line, outside the depth and
  * box tests, or wholly before tmin right after the signs
  * (TRI4_BEHIND_FIRST), with the same answers (tri4_pair_filter_lanes
  * says why; traverse_wide8_ray.h why only there). */
-WIDE8_LEAF_TEST(wide8_leaf8_closest_first, wide_leaf8_test, 0, 1, WIDE8_CLOSEST_FORM,
-                TRI4_BEHIND_FIRST, 1)
-WIDE8_LEAF_TEST(wide8_leaf8_full_first, wide_leaf8_test, 0, 0, WIDE8_CLOSEST_FORM,
-                TRI4_BEHIND_FIRST, 1)
+WIDE8_LEAF_TEST(wide8_leaf8_closest_first, wide_leaf8_test, 0, 1, 0, TRI4_BEHIND_FIRST, 1)
+WIDE8_LEAF_TEST(wide8_leaf8_full_first, wide_leaf8_test, 0, 0, 0, TRI4_BEHIND_FIRST, 1)
 WIDE8_LEAF_TEST(wide8_leaf8_any, wide_leaf8_test, 1, 1, 1, 0, 0)
 
 #define WIDE8_RAY walk_wide8_ray_leaf8
@@ -1660,8 +1600,6 @@ static int TRACE_WIDE_LEAF8(const struct trace_ray *ray, const struct tri4_packe
         tri4_ray_init_scalar(&s->r4, ray);
     } else {
         tri4_ray_init(&s->r4, ray);
-        if (WIDE8_CLOSEST_SCALAR)
-            tri4_ray_init_scalar(&s->r4, ray);
         tri4_ray_init_double(rs.d_org_dir, ray);
     }
     int stop = 0;

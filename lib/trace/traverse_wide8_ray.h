@@ -461,13 +461,8 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                      * into the leaves' constants from registers.  The
                      * ray is WIDE8_WALK1's own, not const. */
                     const struct ray_axes a = ray_setup_axes((struct trace_ray *)ray);
-                    if (WIDE8_CLOSEST_SCALAR)
-                        tri4_ray_init_scalar_axes(&s->r4, &a);
-                    else
-                        tri4_ray_init_vec_axes(&s->r4, ray, &a);
-                } else if (WIDE8_CLOSEST_SCALAR)
-                    tri4_ray_init_scalar_vec(&s->r4, ray);
-                else
+                    tri4_ray_init_vec_axes(&s->r4, ray, &a);
+                } else
                     tri4_ray_init_vec(&s->r4, ray);
 #else
                 tri4_ray_init(&s->r4, ray);
