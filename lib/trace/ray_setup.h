@@ -159,73 +159,35 @@ typedef char ray_setup_lanes_layout
 static const int32_t ray_lane_order[6][4] = {{1, 2, 0, 3}, {2, 1, 0, 3}, {2, 0, 1, 3},
                                              {0, 2, 1, 3}, {0, 1, 2, 3}, {1, 0, 2, 3}};
 
-/* The watertight test's axes (Woop, Benthin and Wald 2013) from the
- * direction d0, d1, d2 (d: the same floats in lanes 0-2, lane 3 unread):
- * kz by the same comparisons in the same order as trace_ray_setup_single
- * (c1 = |d1| > |d0|, then |d2| against the larger of the two as `a1 > a0
- * ? a1 : a0` picks it, NaN comparing false in both), the sign d[kz] < 0
- * by the same comparison, and the lane order kx, ky, kz, 3 from
- * ray_lane_order.  One text for trace_ray_setup_lanes and
- * ray_setup_axes. */
+/*
+ * trace_ray_setup_single's ray, bit for bit, computed in SSE lanes and
+ * stored into *ray (which the leaves' rarer paths read), with the lanes
+ * left in *l for the caller to broadcast: the choice of kz by the same
+ * comparisons in the same order (c1 = |d1| > |d0|, then |d2| against the
+ * larger of the two as `a1 > a0 ? a1 : a0` picks it, NaN comparing false
+ * in both), the sign d[kz] < 0 by the same comparison, the same
+ * quotients 1 / d[k] and -d[kx] / d[kz], -d[ky] / d[kz] (IEEE division
+ * lane by lane, negation by the sign bit, as C's unary minus), and no
+ * array indexed by kx, ky, kz, which GCC keeps on the stack (a lane
+ * permutation instead).  Lane 3 of a store is overwritten by the next
+ * store (the fields are consecutive floats, trace.h).
+ */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline const int32_t *ray_axis_order(float d0, float d1, float d2, __m128 d, unsigned *kz_out)
+static inline void trace_ray_setup_lanes(struct trace_ray *ray, struct ray_lanes *l,
+                                         const float org[3], const float dir[3], float tmin)
 {
+    const float d0 = dir[0], d1 = dir[1], d2 = dir[2];
+    const __m128 o = _mm_setr_ps(org[0], org[1], org[2], 0.0f);
+    const __m128 d = _mm_setr_ps(d0, d1, d2, 1.0f);
     const float a0 = fabsf(d0), a1 = fabsf(d1), a2 = fabsf(d2);
     const unsigned c1 = a1 > a0;
     const unsigned c2 = a2 > (a1 > a0 ? a1 : a0);
     const unsigned kz = (c1 & (c2 ^ 1u)) | c2 << 1;
     const unsigned neg =
         (unsigned)_mm_movemask_ps(_mm_cmplt_ps(d, _mm_setzero_ps())) >> kz & 1u;
-    *kz_out = kz;
-    return ray_lane_order[2u * kz + neg];
-}
-
-/*
- * trace_ray_setup_single's ray, bit for bit, computed in SSE lanes and
- * stored into *ray (which the leaves' rarer paths read), with the lanes
- * left in *l for the caller to broadcast: the choice of kz by
- * ray_axis_order, the same quotients 1 / d[k] and -d[kx] / d[kz], -d[ky]
- * / d[kz] (IEEE division lane by lane, negation by the sign bit, as C's
- * unary minus), and no array indexed by kx, ky, kz, which GCC keeps on
- * the stack (a lane permutation instead).  Lane 3 of a store is
- * overwritten by the next store (the fields are consecutive floats,
- * trace.h).
- *
- * axes 0 (a constant): org, dir, inv_dir and tmin only; kx, ky, kz and
- * the shear (the struct's and the lanes' org_k, inv_k, shear, order, kx,
- * ky, kz) are left unset for ray_setup_axes to set when a leaf needs
- * them.  Only the node test reads a ray before its first leaf, and it
- * reads org, dir's signs, inv_dir and tmin; the AVX2 table's closest-hit
- * walks from the set-up's lanes (WIDE8_LAZY_AXES) take it so, so that a
- * ray that misses every leaf box never pays for the axes' choice, the
- * second division and their stores.
- */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline void trace_ray_setup_lanes(struct trace_ray *ray, struct ray_lanes *l,
-                                         const float org[3], const float dir[3], float tmin,
-                                         int axes)
-{
-    const float d0 = dir[0], d1 = dir[1], d2 = dir[2];
-    const __m128 o = _mm_setr_ps(org[0], org[1], org[2], 0.0f);
-    const __m128 d = _mm_setr_ps(d0, d1, d2, 1.0f);
-    char *b = (char *)(void *)ray;
-    if (!axes) {
-        const __m128 inv = _mm_div_ps(_mm_set1_ps(1.0f), d);
-        l->dir = d;
-        l->org = o;
-        l->inv = inv;
-        _mm_storeu_ps((float *)(void *)(b + offsetof(struct trace_ray, org)), o);
-        _mm_storeu_ps((float *)(void *)(b + offsetof(struct trace_ray, dir)), d);
-        _mm_storeu_ps((float *)(void *)(b + offsetof(struct trace_ray, inv_dir)), inv);
-        ray->tmin = tmin;
-        return;
-    }
-    unsigned kz;
-    const int32_t *order = ray_axis_order(d0, d1, d2, d, &kz);
+    const int32_t *order = ray_lane_order[2u * kz + neg];
     const __m128i idx = _mm_loadu_si128((const __m128i *)(const void *)order);
     const __m128 sign = _mm_set1_ps(-0.0f);
     const __m128 inv = _mm_div_ps(_mm_set1_ps(1.0f), d);
@@ -241,6 +203,7 @@ static inline void trace_ray_setup_lanes(struct trace_ray *ray, struct ray_lanes
     l->kx = order[0];
     l->ky = order[1];
     l->kz = (int)kz;
+    char *b = (char *)(void *)ray;
     _mm_storeu_ps((float *)(void *)(b + offsetof(struct trace_ray, org)), o);
     _mm_storeu_ps((float *)(void *)(b + offsetof(struct trace_ray, dir)), d);
     _mm_storeu_ps((float *)(void *)(b + offsetof(struct trace_ray, inv_dir)), inv);
@@ -250,51 +213,6 @@ static inline void trace_ray_setup_lanes(struct trace_ray *ray, struct ray_lanes
     ray->kz = (int)kz;
     _mm_storel_pi((__m64 *)(void *)(b + offsetof(struct trace_ray, sx)), shear);
     _mm_store_ss(&ray->sz, _mm_permute_ps(l->inv_k, 0xAA));
-}
-
-/* The axes' lanes ray_setup_axes computes (struct ray_lanes' org_k,
- * inv_k, shear and order, from a ray in memory). */
-struct ray_axes {
-    __m128 org_k; /* org[kx], org[ky], org[kz], - */
-    __m128 inv_k; /* inv_dir[kx], inv_dir[ky], inv_dir[kz] (= sz), - */
-    __m128 shear; /* sx, sy, -1, - */
-    __m128i order; /* kx, ky, kz, 3 */
-};
-
-/*
- * The rest of trace_ray_setup_lanes with axes 1, for a ray it set up
- * with axes 0: kx, ky, kz and the shear from the org, dir and inv_dir it
- * stored, the same floats by the same operations (ray_axis_order; the
- * shear's quotients in one division; sz = inv_dir[kz], the set-up's
- * quotient), so the same ray bit for bit, stored into it and returned in
- * lanes.  dir and inv_dir are each one 16-byte load: the struct's next
- * float (inv_dir[0], tmin) lands in lane 3, which no result keeps (the
- * sign's movemask is shifted by kz <= 2; lane 3 of the lanes is unread).
- */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline struct ray_axes ray_setup_axes(struct trace_ray *ray)
-{
-    char *b = (char *)(void *)ray;
-    const __m128 d = _mm_loadu_ps((const float *)(const void *)(b + offsetof(struct trace_ray, dir)));
-    const __m128 o = _mm_loadu_ps((const float *)(const void *)(b + offsetof(struct trace_ray, org)));
-    const __m128 inv =
-        _mm_loadu_ps((const float *)(const void *)(b + offsetof(struct trace_ray, inv_dir)));
-    unsigned kz;
-    const int32_t *order = ray_axis_order(ray->dir[0], ray->dir[1], ray->dir[2], d, &kz);
-    struct ray_axes a;
-    a.order = _mm_loadu_si128((const __m128i *)(const void *)order);
-    const __m128 d_k = _mm_permutevar_ps(d, a.order);
-    a.shear = _mm_div_ps(_mm_xor_ps(d_k, _mm_set1_ps(-0.0f)), _mm_permute_ps(d_k, 0xAA));
-    a.org_k = _mm_permutevar_ps(o, a.order);
-    a.inv_k = _mm_permutevar_ps(inv, a.order);
-    ray->kx = order[0];
-    ray->ky = order[1];
-    ray->kz = (int)kz;
-    _mm_storel_pi((__m64 *)(void *)(b + offsetof(struct trace_ray, sx)), a.shear);
-    _mm_store_ss(&ray->sz, _mm_permute_ps(a.inv_k, 0xAA));
-    return a;
 }
 #endif
 

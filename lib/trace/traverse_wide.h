@@ -97,18 +97,6 @@ struct wide_state {
 #define WIDE8_FUSED(any_hit) 0
 #endif
 
-/* The walks that set a ray's watertight axes (kx, ky, kz and the shear,
- * Woop, Benthin and Wald 2013) at its first leaf rather than in its
- * set-up (trace_ray_setup_lanes with axes 0, then ray_setup_axes in
- * walk_wide8_ray): the AVX2 table's closest-hit walks from the set-up's
- * lanes (WIDE8_WALK1), whose leaves' constants wait for the first leaf
- * anyway.  A ray that misses every leaf box (0.58 of the kitchen's
- * random rays) never computes them.  The any-hit walks set their leaves'
- * constants from the set-up's lanes (tri4_ray_init_scalar_lanes: a
- * shadow ray nearly always reaches a leaf), and the AVX-512 table's
- * walks are left as they were (not measured: no AVX-512 core). */
-#define WIDE8_LAZY_AXES(any_hit) (!WIDE8_FUSED_TABLE && !(any_hit))
-
 /* The state of a whole single-ray 8-wide walk (WIDE8_WALK, WIDE8_WALK1,
  * TRACE_WIDE_LEAF8): wide_state and the ray's origin and direction in
  * double (tri4_ray_init_double), which walk_wide8_ray sets at a
@@ -1172,30 +1160,6 @@ static inline void tri4_ray_init_vec(struct tri4_ray *r, const struct trace_ray 
     r->inv_y = _mm_permute_ps(inv_k, 0x55);
     r->tmin = _mm_set1_ps(ray->tmin);
 }
-
-/* tri4_ray_init_vec from the lanes ray_setup_axes has just computed (the
- * AVX2 closest-hit walks from the set-up's lanes, WIDE8_LAZY_AXES): the
- * same floats from registers (sx, sy from the shear's lanes 0 and 1, sz
- * from inv_k's lane 2, which ray_setup_axes stored as ray->sz), without
- * the struct's round trip. */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline void tri4_ray_init_vec_axes(struct tri4_ray *r, const struct trace_ray *ray,
-                                          const struct ray_axes *a)
-{
-    tri4_ray_init_offsets(r, a->inv_k, a->order);
-    const __m128 neg_org = _mm_xor_ps(a->org_k, _mm_set1_ps(-0.0f));
-    r->neg_org_x = _mm_permute_ps(neg_org, 0x00);
-    r->neg_org_y = _mm_permute_ps(neg_org, 0x55);
-    r->neg_org_z = _mm_permute_ps(neg_org, 0xAA);
-    r->sx = _mm_permute_ps(a->shear, 0x00);
-    r->sy = _mm_permute_ps(a->shear, 0x55);
-    r->sz = _mm_permute_ps(a->inv_k, 0xAA);
-    r->inv_x = _mm_permute_ps(a->inv_k, 0x00);
-    r->inv_y = _mm_permute_ps(a->inv_k, 0x55);
-    r->tmin = _mm_set1_ps(ray->tmin);
-}
 #endif
 
 #define WIDE8_RAY walk_wide8_ray
@@ -1510,7 +1474,7 @@ typedef char tri4_ray_tmin_org_layout[offsetof(struct tri4_ray, node_neg_org) ==
     {                                                                                           \
         struct trace_ray ray;                                                                   \
         struct ray_lanes lanes;                                                                 \
-        trace_ray_setup_lanes(&ray, &lanes, org, dir, tmin, !WIDE8_LAZY_AXES(any_hit));         \
+        trace_ray_setup_lanes(&ray, &lanes, org, dir, tmin);                                    \
         struct wide_ray_state rs;                                                               \
         struct wide_state *const s = &rs.s;                                                     \
         /* 1 for either any-hit copy (WIDE_ANY_LONGEST): the state's and the                    \
@@ -1521,13 +1485,9 @@ typedef char tri4_ray_tmin_org_layout[offsetof(struct tri4_ray, node_neg_org) ==
          * with isect_box's test, as a negative tmin does                                       \
          * (WIDE8_FUSED_UNCOVERED). */                                                          \
         if (!(tmin >= 0.0f) || WIDE8_WALK1_FAR(wide, any_hit) ||                                \
-            WIDE8_FUSED_UNCOVERED(rs, lanes, any_hit)) {                                        \
-            /* The float walk reads the whole ray (tri4_ray_init). */                           \
-            if (WIDE8_LAZY_AXES(any_hit))                                                       \
-                (void)ray_setup_axes(&ray);                                                     \
+            WIDE8_FUSED_UNCOVERED(rs, lanes, any_hit))                                          \
             return wide8_walk_end(s, wide8_walk_tmin_other(wide, s, any_walk, stats),           \
                                   any_hit, stats, counters);                                    \
-        }                                                                                       \
         if (any_hit)                                                                            \
             tri4_ray_init_scalar_lanes(&s->r4, &lanes, tmin);                                   \
         else                                                                                    \

@@ -455,15 +455,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
 #endif
             if (!any_hit && !r4_ready) {
 #if defined(__AVX2__)
-                if (lanes && WIDE8_LAZY_AXES(any_hit)) {
-                    /* The axes the set-up left (WIDE8_LAZY_AXES), into
-                     * the ray (the leaves' rarer paths read them) and
-                     * into the leaves' constants from registers.  The
-                     * ray is WIDE8_WALK1's own, not const. */
-                    const struct ray_axes a = ray_setup_axes((struct trace_ray *)ray);
-                    tri4_ray_init_vec_axes(&s->r4, ray, &a);
-                } else
-                    tri4_ray_init_vec(&s->r4, ray);
+                tri4_ray_init_vec(&s->r4, ray);
 #else
                 tri4_ray_init(&s->r4, ray);
 #endif
