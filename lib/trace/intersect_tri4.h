@@ -44,6 +44,7 @@
 
 #include "trace/bvh4_layout.h"
 #include "trace/intersect.h"
+#include "trace/isa_avx512.h"
 #include "trace/tri8_shear.h"
 
 /* The per-ray constants of the packet test, set once per ray.  The
@@ -215,7 +216,7 @@ struct tri4_lanes {
  * operand, vrangeps a quiet NaN), which does not change a refusal: a NaN
  * coordinate makes det NaN, and check 1 (|det| >= 2^-13 S^2) then fails
  * whatever S is. */
-#if defined(__AVX512VL__) && defined(__AVX512DQ__)
+#if TRACE_AVX512_TABLE
 static inline __m128 tri4_max_abs(__m128 a, __m128 b)
 {
     return _mm_range_ps(a, b, 0x0B);
@@ -382,7 +383,7 @@ static inline unsigned tri4_filter_lanes_depth(const struct tri4_ray *r,
             const unsigned behind = (unsigned)_mm_movemask_ps(_mm_cmplt_ps(t_hi, tmin)) & near;
             mask &= ~behind;
             if (near & ~behind) {
-#if defined(__AVX512VL__) && defined(__AVX512DQ__)
+#if TRACE_AVX512_TABLE
                 /* vrangeps (tri4_max_abs): eight instructions for the
                  * nine magnitudes' maximum, where the SSE form below
                  * takes seventeen. */
@@ -589,7 +590,7 @@ static inline unsigned tri4_pair_filter_lanes(const struct tri4_ray *r,
     const __m256 zero = _mm256_setzero_ps();
     __m256 Az, Bz, Cz, z_lo, z_hi, t_lo, t_hi, det;
     unsigned mask, deferred;
-#if defined(__AVX512VL__) && defined(__AVX512DQ__)
+#if TRACE_AVX512_TABLE
     if (!any_hit) {
         /* AVX-512, the closest-hit leaves: the same comparisons (the same
          * predicates on the same floats, so the same bits) into mask

@@ -29,6 +29,7 @@
  * leaf boxes tested ray by ray unless the beam is narrow against the
  * leaves (see there).
  */
+#include "trace/isa_avx512.h"
 #include "trace/packet.h"
 #if defined(__AVX__)
 #include "trace/packet_tri8.h"
@@ -1100,7 +1101,7 @@ static inline unsigned packet_walk8_ia(const struct bvh4 *wide, struct packet_st
             const __m256 t0 = _mm256_castsi256_ps(_mm256_max_epi32(
                 _mm256_max_epi32(_mm256_castps_si256(ne[0]), _mm256_castps_si256(ne[1])),
                 _mm256_max_epi32(_mm256_castps_si256(ne[2]), _mm256_castps_si256(p->ia_tmin))));
-#if defined(__AVX512VL__) && defined(__AVX512DQ__)
+#if TRACE_AVX512_TABLE
             /* AVX-512: the comparisons into mask registers, ANDed as a
              * tree; the empty asm keeps GCC from chaining them as masked
              * compares (traverse_wide8_ray.h's note). */

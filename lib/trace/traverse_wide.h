@@ -45,6 +45,7 @@
 #include <immintrin.h>
 
 #include "trace/intersect_tri4.h"
+#include "trace/isa_avx512.h"
 #include "trace/node_fused.h"
 #include "trace/ray_setup.h"
 
@@ -89,7 +90,7 @@ struct wide_state {
  * walk's twelve constant vectors, and on a Zen 3 core the AVX2 walks
  * with the fused test were slower than with isect_box's
  * (docs/performance-log.md, round 54, zn1). */
-#if defined(__AVX512VL__) && defined(__AVX512DQ__)
+#if TRACE_AVX512_TABLE
 #define WIDE8_FUSED_TABLE 1
 #define WIDE8_FUSED(any_hit) ((any_hit) == 0 || (any_hit) == 1)
 #else
@@ -719,7 +720,7 @@ static inline __m256i wide8_gather_stored(unsigned pm)
         _mm_loadl_epi64((const __m128i *)(const void *)&wide8_compress[pm]));
 }
 
-#if defined(__AVX512VL__) && defined(__AVX512DQ__)
+#if TRACE_AVX512_TABLE
 /*
  * The node's eight child words as byte offsets into the nodes' array
  * (child * 256: bvh4_layout.h asserts a bvh8_node's 256 bytes), shifted
@@ -766,7 +767,7 @@ static inline void wide8_front_compress(const struct bvh8_node *n, __mmask8 k, s
 }
 #endif
 
-#if defined(__AVX512VL__) && defined(__AVX512DQ__)
+#if TRACE_AVX512_TABLE
 /*
  * wide8_push with the front child taken by compression (AVX-512): the
  * node's child words and counts permuted into the octant's order (lanes:
@@ -1443,7 +1444,7 @@ typedef char tri4_ray_tmin_org_layout[offsetof(struct tri4_ray, node_neg_org) ==
  * node and packet index below 2^24.  A layout with more nodes or packets
  * (over 4 GB of nodes or 16 M packets) takes the float walk
  * (wide8_walk_tmin_other: the same answers and counts) instead. */
-#if defined(__AVX512VL__) && defined(__AVX512DQ__)
+#if TRACE_AVX512_TABLE
 #define WIDE8_WALK1_FAR(wide, any_hit)                                                          \
     (((any_hit) == 0 || (any_hit) == 1) &&                                                      \
      ((wide)->node_count | (wide)->packet_count) > 0xffffffu)

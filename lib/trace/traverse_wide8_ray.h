@@ -91,7 +91,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
      * WIDE8_WALK1, this walk's only caller with lanes, sends a layout with
      * 2^24 nodes or packets or more to the float walk.  Elsewhere cur alone
      * (cur_off's stores are dead). */
-#if defined(__AVX512VL__) && defined(__AVX512DQ__)
+#if TRACE_AVX512_TABLE
     const int by_off = (any_hit == 0 || any_hit == 1) && lanes;
 #else
     const int by_off = 0;
@@ -300,7 +300,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                 const __m256 exit_x = fused ? tfx : _mm256_mul_ps(tfx, scale);
                 const __m256 exit_y = fused ? tfy : _mm256_mul_ps(tfy, scale);
                 const __m256 exit_z = fused ? tfz : _mm256_mul_ps(tfz, scale);
-#if defined(__AVX512VL__) && defined(__AVX512DQ__)
+#if TRACE_AVX512_TABLE
                 /* AVX-512: the four comparisons into mask registers and
                  * ANDed there as a tree (kandb), one kmovb; the lanes as a
                  * vector only where a push needs them.  The empty asm
@@ -328,7 +328,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
 #endif
                 if (mask) {
                     if (!(mask & (mask - 1u))) {
-#if defined(__AVX512VL__) && defined(__AVX512DQ__)
+#if TRACE_AVX512_TABLE
                         /* The mask register itself (mask's operation on
                          * the same masks, which GCC computes once):
                          * wide8_front_compress says why.  A node with one
@@ -367,7 +367,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                             wide8_push_any(n, mask, hit, t0, t1, st_child, st_count, &sp, &cur,
                                            &cur_count);
                         } else if (any_hit) {
-#if defined(__AVX512VL__) && defined(__AVX512DQ__)
+#if TRACE_AVX512_TABLE
                             if (any_hit == 1 && lanes) {
                                 wide8_front_compress(n, _kand_mask8(_kand_mask8(k0, k1),
                                                                     _kand_mask8(k2, k3)),
@@ -380,7 +380,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                                               &cur_count);
                         }
                         else
-#if defined(__AVX512VL__) && defined(__AVX512DQ__)
+#if TRACE_AVX512_TABLE
                             if (lanes)
                                 wide8_push_compress(n, octant, hit, t0, order_shift, st_child,
                                                     st_count, st_t, &sp, &cur_off, &cur_count);
