@@ -1060,13 +1060,8 @@ static void render_tile_eye_traced_first(struct render_pass *pass, struct shade_
                     }
                 }
             }
+            b->found = trace_scene_closest_packet(sc->scene, &b->pk, b->hits, sc->counters);
         }
-    }
-    /* Every block's rays before the first walk: the rays' code and the
-     * walk's then each stay in the L1i for the whole tile. */
-    for (int j = 0; j < n; j++) {
-        struct traced_block *b = &blocks[j];
-        b->found = trace_scene_closest_packet(sc->scene, &b->pk, b->hits, sc->counters);
     }
     /* render_tile_packets' pipeline of one block: a block begun (its
      * texels asked for), then the one before it ended. */
