@@ -1065,10 +1065,10 @@ static void render_tile_eye_traced_first(struct render_pass *pass, struct shade_
     }
     /* render_tile_packets' pipeline of one block: a block begun (its
      * texels asked for), then the one before it ended. */
-    struct shade_eye_pending pending[sizeof blocks / sizeof blocks[0]];
-    int begun[sizeof blocks / sizeof blocks[0]];
+    struct shade_eye_pending pending[2];
+    int pending_slot = 0; /* the slot the next block begins in */
+    int pending_full = 0; /* the other slot holds a block to end */
     for (int j = 0; j < n; j++) {
-        begun[j] = 0;
         const struct traced_block *b = &blocks[j];
         if (!b->whole || b->found != b->pk.active) {
             eye_block(pass, sc, x0, y0, b->bx, b->by, &b->pk, b->found, b->hits, b->cone);
@@ -1087,11 +1087,15 @@ static void render_tile_eye_traced_first(struct render_pass *pass, struct shade_
             px[i] = row + 4 * i;
             px[RENDER_BLOCK_W + i] = row + 4 * ((size_t)pass->fb_width + (size_t)i);
         }
-        begun[j] = RENDER_EYE_BLOCK_BEGIN(sc, dirs, &b->lanes.rays, hits, px, &pending[j]);
+        const int begun = RENDER_EYE_BLOCK_BEGIN(sc, dirs, &b->lanes.rays, hits, px,
+                                                 &pending[pending_slot]);
+        if (pending_full)
+            RENDER_EYE_BLOCK_END(sc, &pending[pending_slot ^ 1]);
+        pending_full = begun;
+        pending_slot ^= begun;
     }
-    for (int j = 0; j < n; j++)
-        if (begun[j])
-            RENDER_EYE_BLOCK_END(sc, &pending[j]);
+    if (pending_full)
+        RENDER_EYE_BLOCK_END(sc, &pending[pending_slot ^ 1]);
 }
 #endif
 
