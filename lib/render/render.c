@@ -983,6 +983,101 @@ static void eye_block(struct render_pass *pass, struct shade_context *sc, int x0
     eye_batch_shade(sc, &eyes);
 }
 
+/* The camera rays of the 4 x 2 block at (bx, by) of the tile at (x0, y0)
+ * into the packet and the cones, its active mask set: the whole block in
+ * lanes (block_rays; beside the packet in by_lane) when its block row can
+ * (lanes: block_row_lanes) and the block lies inside the tile and the
+ * viewport, else pixel by pixel (primary_ray) for the pixels inside.
+ * Returns 1 in the first case: every pixel's ray made, the block whole. */
+struct block_lanes;
+static int block_camera_rays(const struct unproject_cache *cache, const int *vp, int x0, int y0,
+                             int bx, int by, int lanes, struct trace_packet *pk,
+                             struct shade_cone cone[TRACE_PACKET], struct block_lanes *by_lane)
+{
+#if RENDER_PAIRS
+    if (lanes && bx + RENDER_BLOCK_W <= x0 + RENDER_TILE_SIZE && bx + RENDER_BLOCK_W <= vp[2] &&
+        block_rays(cache, bx - x0, pk, cone, by_lane)) {
+        pk->active = (1u << TRACE_PACKET) - 1u;
+        return 1;
+    }
+#else
+    (void)lanes;
+    (void)by_lane;
+#endif
+    pk->active = 0;
+    for (int i = 0; i < TRACE_PACKET; i++) {
+        const int x = bx + i % RENDER_BLOCK_W, y = by + i / RENDER_BLOCK_W;
+        if (block_pixel_inside(vp, x0, y0, bx, by, i) &&
+            primary_ray(cache, x, y, pk->org[i], pk->dir[i], &pk->tmax[i], &cone[i])) {
+            pk->tmin[i] = 0.0f;
+            pk->active |= 1u << i;
+        }
+    }
+    return 0;
+}
+
+#if RENDER_PAIRS
+/* Whether the blocks of the block row at by of the tile at (x0, y0) can
+ * take their rays in lanes (block_camera_rays): both rows inside and
+ * every point of the rows and the next one unprojected. */
+static int block_row_lanes(const struct unproject_cache *cache, const int *vp, int y0, int by)
+{
+    return by + RENDER_BLOCK_H <= y0 + RENDER_TILE_SIZE && by + RENDER_BLOCK_H <= vp[3] &&
+           cache->rows[0]->whole && cache->rows[1]->whole && cache->rows[2]->whole;
+}
+#endif
+
+/* The framebuffer pixels of the whole 4 x 2 block at (bx, by), in the
+ * packet's ray order. */
+static void block_pixels(const struct render_pass *pass, int bx, int by,
+                         float *px[TRACE_PACKET])
+{
+    const int *vp = pass->job->state->viewport;
+    float *row = &pass->fb[4 * ((size_t)(vp[1] + by) * pass->fb_width + (size_t)(vp[0] + bx))];
+    for (int i = 0; i < RENDER_BLOCK_W; i++) {
+        px[i] = row + 4 * i;
+        px[RENDER_BLOCK_W + i] = row + 4 * ((size_t)pass->fb_width + (size_t)i);
+    }
+}
+
+#if defined(RENDER_UNIT_AVX2)
+/* A software pipeline of one block (Lam 1988, software pipelining; here
+ * across a tile's blocks): a whole block's texel lines are asked for when
+ * its hits are known (shade_eye_block_begin: their addresses, a
+ * prefetch) and its texels loaded and blended into its pixels after the
+ * next block's (shade_eye_block_end), so that the core works on the next
+ * block while the texels come into the cache, instead of waiting for
+ * them in the block's shading.  Two slots: the block begun and the one
+ * before it.  Only the order in which pixels are written changes; each
+ * pixel's operations are the same. */
+struct eye_pipeline {
+    struct shade_eye_pending pending[2];
+    int slot; /* the slot the next block begins in */
+    int full; /* the other slot holds a block to end */
+};
+
+/* A whole block of hits into the pipeline: its prefetches, then the last
+ * block's texels. */
+static void eye_pipeline_block(const struct shade_context *sc, struct eye_pipeline *p,
+                               const float *const dirs[], const struct shade_eye_rays *rays,
+                               const struct trace_scene_hit *const hits[], float *const px[])
+{
+    const int begun = RENDER_EYE_BLOCK_BEGIN(sc, dirs, rays, hits, px, &p->pending[p->slot]);
+    if (p->full)
+        RENDER_EYE_BLOCK_END(sc, &p->pending[p->slot ^ 1]);
+    p->full = begun;
+    p->slot ^= begun;
+}
+
+/* The last block's texels, at the tile's end. */
+static void eye_pipeline_finish(const struct shade_context *sc, struct eye_pipeline *p)
+{
+    if (p->full)
+        RENDER_EYE_BLOCK_END(sc, &p->pending[p->slot ^ 1]);
+    p->full = 0;
+}
+#endif
+
 #if RENDER_TILE_TRACED_FIRST
 /* A block of render_tile_eye_traced_first's tile: its rays (packet,
  * cones, the lanes' copy), its hits and where it lies. */
@@ -1033,41 +1128,17 @@ static void render_tile_eye_traced_first(struct render_pass *pass, struct shade_
     int n = 0;
     for (int by = y0; by < y0 + RENDER_TILE_SIZE && by < vp[3]; by += RENDER_BLOCK_H) {
         unproject_cache_row(pass, &cache, by);
-        /* render_tile_packets' lanes and whole, block by block. */
-        const int lanes = by + RENDER_BLOCK_H <= y0 + RENDER_TILE_SIZE &&
-                          by + RENDER_BLOCK_H <= vp[3] && cache.rows[0]->whole &&
-                          cache.rows[1]->whole && cache.rows[2]->whole;
+        const int lanes = block_row_lanes(&cache, vp, y0, by);
         for (int bx = x0; bx < x0 + RENDER_TILE_SIZE && bx < vp[2]; bx += RENDER_BLOCK_W) {
             struct traced_block *b = &blocks[n++];
             b->bx = bx;
             b->by = by;
-            b->whole = 0;
-            if (lanes && bx + RENDER_BLOCK_W <= x0 + RENDER_TILE_SIZE &&
-                bx + RENDER_BLOCK_W <= vp[2] &&
-                block_rays(&cache, bx - x0, &b->pk, b->cone, &b->lanes)) {
-                b->pk.active = (1u << TRACE_PACKET) - 1u;
-                b->whole = 1;
-            }
-            if (!b->whole) {
-                b->pk.active = 0;
-                for (int i = 0; i < TRACE_PACKET; i++) {
-                    const int x = bx + i % RENDER_BLOCK_W, y = by + i / RENDER_BLOCK_W;
-                    if (block_pixel_inside(vp, x0, y0, bx, by, i) &&
-                        primary_ray(&cache, x, y, b->pk.org[i], b->pk.dir[i], &b->pk.tmax[i],
-                                    &b->cone[i])) {
-                        b->pk.tmin[i] = 0.0f;
-                        b->pk.active |= 1u << i;
-                    }
-                }
-            }
+            b->whole =
+                block_camera_rays(&cache, vp, x0, y0, bx, by, lanes, &b->pk, b->cone, &b->lanes);
             b->found = trace_scene_closest_packet(sc->scene, &b->pk, b->hits, sc->counters);
         }
     }
-    /* render_tile_packets' pipeline of one block: a block begun (its
-     * texels asked for), then the one before it ended. */
-    struct shade_eye_pending pending[2];
-    int pending_slot = 0; /* the slot the next block begins in */
-    int pending_full = 0; /* the other slot holds a block to end */
+    struct eye_pipeline pipe = {.slot = 0, .full = 0};
     for (int j = 0; j < n; j++) {
         const struct traced_block *b = &blocks[j];
         if (!b->whole || b->found != b->pk.active) {
@@ -1077,25 +1148,14 @@ static void render_tile_eye_traced_first(struct render_pass *pass, struct shade_
         const float *dirs[TRACE_PACKET];
         const struct trace_scene_hit *hits[TRACE_PACKET];
         float *px[TRACE_PACKET];
-        float *row = &pass->fb[4 * ((size_t)(vp[1] + b->by) * pass->fb_width +
-                                    (size_t)(vp[0] + b->bx))];
         for (int i = 0; i < TRACE_PACKET; i++) {
             dirs[i] = b->pk.dir[i];
             hits[i] = &b->hits[i];
         }
-        for (int i = 0; i < RENDER_BLOCK_W; i++) {
-            px[i] = row + 4 * i;
-            px[RENDER_BLOCK_W + i] = row + 4 * ((size_t)pass->fb_width + (size_t)i);
-        }
-        const int begun = RENDER_EYE_BLOCK_BEGIN(sc, dirs, &b->lanes.rays, hits, px,
-                                                 &pending[pending_slot]);
-        if (pending_full)
-            RENDER_EYE_BLOCK_END(sc, &pending[pending_slot ^ 1]);
-        pending_full = begun;
-        pending_slot ^= begun;
+        block_pixels(pass, b->bx, b->by, px);
+        eye_pipeline_block(sc, &pipe, dirs, &b->lanes.rays, hits, px);
     }
-    if (pending_full)
-        RENDER_EYE_BLOCK_END(sc, &pending[pending_slot ^ 1]);
+    eye_pipeline_finish(sc, &pipe);
 }
 #endif
 
@@ -1152,49 +1212,23 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
         block_hits[i] = &hits[i];
     }
 #if defined(RENDER_UNIT_AVX2)
-    /* A software pipeline of one block (Lam 1988, software pipelining;
-     * here across the loop's blocks): a whole block's texel lines are
-     * asked for when its hits are known (shade_eye_block_begin: their
-     * addresses, a prefetch) and its texels loaded and blended into its
-     * pixels after the next block's trace (shade_eye_block_end), so that
-     * the core traces the next block while the texels come into the
-     * cache, instead of waiting for them in the block's shading.  Two slots:
-     * the block begun and the one before it.  Only the order in which
-     * pixels are written changes; each pixel's operations are the same. */
-    struct shade_eye_pending pending[2];
-    int pending_slot = 0; /* the slot the next block begins in */
-    int pending_full = 0; /* the other slot holds a block to end */
+    /* The texels of a block are loaded after the next block's trace
+     * (eye_pipeline). */
+    struct eye_pipeline pipe = {.slot = 0, .full = 0};
 #endif
     for (int by = y0; by < y0 + RENDER_TILE_SIZE && by < vp[3]; by += RENDER_BLOCK_H) {
         unproject_cache_row(pass, &cache, by);
 #if RENDER_PAIRS
-        /* Both rows inside and every point of the rows and the next one
-         * unprojected: the blocks' rays in pairs of lanes. */
-        const int lanes = by + RENDER_BLOCK_H <= y0 + RENDER_TILE_SIZE &&
-                          by + RENDER_BLOCK_H <= vp[3] && cache.rows[0]->whole &&
-                          cache.rows[1]->whole && cache.rows[2]->whole;
+        const int lanes = block_row_lanes(&cache, vp, y0, by);
+        struct block_lanes *lanes_out = &by_lane;
+#else
+        const int lanes = 0;
+        struct block_lanes *lanes_out = NULL;
 #endif
         for (int bx = x0; bx < x0 + RENDER_TILE_SIZE && bx < vp[2]; bx += RENDER_BLOCK_W) {
-            int whole = 0; /* every pixel of the block inside and its ray made */
-#if RENDER_PAIRS
-            if (lanes && bx + RENDER_BLOCK_W <= x0 + RENDER_TILE_SIZE &&
-                bx + RENDER_BLOCK_W <= vp[2] && block_rays(&cache, bx - x0, &pk, cone, &by_lane)) {
-                pk.active = (1u << TRACE_PACKET) - 1u;
-                whole = 1;
-            }
-#endif
-            if (!whole) {
-                pk.active = 0;
-                for (int i = 0; i < TRACE_PACKET; i++) {
-                    const int x = bx + i % RENDER_BLOCK_W, y = by + i / RENDER_BLOCK_W;
-                    if (block_pixel_inside(vp, x0, y0, bx, by, i) &&
-                        primary_ray(&cache, x, y, pk.org[i], pk.dir[i], &pk.tmax[i],
-                                    &cone[i])) {
-                        pk.tmin[i] = 0.0f;
-                        pk.active |= 1u << i;
-                    }
-                }
-            }
+            /* every pixel of the block inside and its ray made */
+            const int whole =
+                block_camera_rays(&cache, vp, x0, y0, bx, by, lanes, &pk, cone, lanes_out);
             const unsigned found = trace_scene_closest_packet(sc->scene, &pk, hits, sc->counters);
             if (eye && direct && pass->all_drawn) {
                 /* The loop below when every hit is drawn and shaded by the
@@ -1205,20 +1239,9 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
                 if (whole && found == pk.active && !pass->depth) {
                     /* eye_block's batch when all eight are hits. */
                     float *px[TRACE_PACKET];
-                    float *row = &pass->fb[4 * ((size_t)(vp[1] + by) * pass->fb_width +
-                                                (size_t)(vp[0] + bx))];
-                    for (int i = 0; i < RENDER_BLOCK_W; i++) {
-                        px[i] = row + 4 * i;
-                        px[RENDER_BLOCK_W + i] = row + 4 * ((size_t)pass->fb_width + (size_t)i);
-                    }
+                    block_pixels(pass, bx, by, px);
 #if defined(RENDER_UNIT_AVX2)
-                    /* This block's prefetches, then the last block's texels. */
-                    const int begun = RENDER_EYE_BLOCK_BEGIN(
-                        sc, block_dirs, &by_lane.rays, block_hits, px, &pending[pending_slot]);
-                    if (pending_full)
-                        RENDER_EYE_BLOCK_END(sc, &pending[pending_slot ^ 1]);
-                    pending_full = begun;
-                    pending_slot ^= begun;
+                    eye_pipeline_block(sc, &pipe, block_dirs, &by_lane.rays, block_hits, px);
 #else
                     shade_eye_hits(sc, TRACE_PACKET, block_dirs, block_hits, cone, px);
 #endif
@@ -1283,8 +1306,7 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
         }
     }
 #if defined(RENDER_UNIT_AVX2)
-    if (pending_full)
-        RENDER_EYE_BLOCK_END(sc, &pending[pending_slot ^ 1]);
+    eye_pipeline_finish(sc, &pipe);
 #endif
 }
 
