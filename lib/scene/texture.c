@@ -950,7 +950,10 @@ int scene_texture_prefetch_lod8(const struct scene_texture *tex, const float lam
             _mm256_storeu_si256((__m256i *)(void *)out->offset[l][c], off[c]);
         _mm256_storeu_ps(out->a[l], va);
         _mm256_storeu_ps(out->b[l], vb);
-        (void)texels;
+        _mm_prefetch(texels + out->offset[l][0][0], _MM_HINT_T0);
+        _mm_prefetch(texels + out->offset[l][2][0], _MM_HINT_T0);
+        _mm_prefetch(texels + out->offset[l][0][7], _MM_HINT_T0);
+        _mm_prefetch(texels + out->offset[l][2][7], _MM_HINT_T0);
     }
     _mm256_storeu_ps(out->f, p.f);
     _mm256_storeu_ps(out->two, p.two);
