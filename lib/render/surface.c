@@ -946,26 +946,6 @@ SURFACE_INLINE void lod_fast_quad_lanes(const struct surface_lod_fast *f, const 
     b->sin2 = _mm256_set1_pd(f->sin2);
 }
 
-#if !defined(SURFACE_OCTS)
-/* lod_fast_quad_lanes of four lanes on their own triangle parts: lane i
- * takes l[i]'s unit normal and f[i]'s texel map and bound, the same
- * doubles in lane i as lod_fast_quad_lanes broadcasts for a block on
- * that one triangle part (lod_fast_quad works lane by lane), the bounds
- * those of the one texture's lod_top (fetch_lanes_mixed: one material). */
-SURFACE_INLINE void lod_fast_quad_lanes4(const struct surface_lod_fast *const f[4],
-                                         const struct surface_lod *const l[4], double top,
-                                         struct lod_fast_broadcast *b)
-{
-    b->bounds = lod_bounds(_mm256_set1_pd(top * top), LOD_FAST_RELATIVE, 1);
-    for (int k = 0; k < 3; k++) {
-        b->n[k] = _mm256_set_pd(l[3]->n[k], l[2]->n[k], l[1]->n[k], l[0]->n[k]);
-        b->m0[k] = _mm256_set_pd(f[3]->m[0][k], f[2]->m[0][k], f[1]->m[0][k], f[0]->m[0][k]);
-        b->m1[k] = _mm256_set_pd(f[3]->m[1][k], f[2]->m[1][k], f[1]->m[1][k], f[0]->m[1][k]);
-    }
-    b->sin2 = _mm256_set_pd(f[3]->sin2, f[2]->sin2, f[1]->sin2, f[0]->sin2);
-}
-#endif
-
 /* lod_quad's lambdas of four hits on b's triangle (d their directions,
  * g their facing normals, width their cones' widths at the hits; b's
  * bounds from the texture's lod_top) where lod_fast's margin decides
@@ -2023,12 +2003,6 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
     if (tx)
         lanes_zero(tri_st[0][0], 6);
     struct surface_lod tri_lod[TRACE_PACKET];
-#if !defined(SURFACE_OCTS)
-    /* Each distinct triangle part's texel map (lod_fast_init, kept in
-     * its cache entry as surface_fetch_lanes keeps it), copied out with
-     * the part. */
-    struct surface_lod_fast tri_fast[TRACE_PACKET];
-#endif
     for (int j = 0; j < count; j++) {
         struct hit_triangle tj = t;
         tj.v = &mesh->indices[3 * prim[j]];
@@ -2051,11 +2025,6 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
                                          &mesh->texcoords[2 * tj.v[1]],
                                          &mesh->texcoords[2 * tj.v[2]]};
             tri_lod[j] = *lod_triangle(c, tx, t.inst, mesh, prim[j], tj.v, vst, NULL);
-#if !defined(SURFACE_OCTS)
-            if (!c->fast.state)
-                lod_fast_init(&c->lod, &c->fast);
-            tri_fast[j] = c->fast;
-#endif
         }
     }
     const __m256i slots = _mm256_loadu_si256((const __m256i *)(const void *)slot);
@@ -2124,33 +2093,6 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
                     d[k] = HALF(dv[k]);
                     gd[k] = HALF(g[k]);
                 }
-#if !defined(SURFACE_OCTS)
-                /* lod_fast_quad where the four lanes' triangle parts have
-                 * a usable texel map and its margin decides all four,
-                 * as surface_fetch_lanes does for a block on one
-                 * triangle (lane by lane the same operations on the lane's
-                 * own part, so the same lambdas as texture_lod's), else
-                 * lod_quad's chain for the quad.  Why: the frame with
-                 * every lanes-path level of detail knocked out (lambda
-                 * 1.5, no sampler) ran 7.8 ms faster than with them
-                 * (Zen 3, quiet), and perf put fetch_lanes_mixed at
-                 * twice surface_fetch_lanes' time per instruction: the
-                 * chain's thirteen divisions and three square roots a
-                 * quad were the suspect. */
-                const struct surface_lod_fast *const f4[4] = {
-                    &tri_fast[slot[4 * h]], &tri_fast[slot[4 * h + 1]],
-                    &tri_fast[slot[4 * h + 2]], &tri_fast[slot[4 * h + 3]]};
-                if (f4[0]->state > 0 && f4[1]->state > 0 && f4[2]->state > 0 &&
-                    f4[3]->state > 0) {
-                    struct lod_fast_broadcast b;
-                    if (shared)
-                        lod_fast_quad_lanes(f4[0], l4[0]->n, top, &b);
-                    else
-                        lod_fast_quad_lanes4(f4, l4, top, &b);
-                    if (lod_fast_quad(&b, d, gd, HALF(wv), &lambda[4 * h]) == 15)
-                        continue;
-                }
-#endif
                 lod_quad_lanes(l4, shared, d, gd, HALF(wv), top, tx->level_count, h, width,
                                lane_g, dir, lambda);
 #undef HALF
