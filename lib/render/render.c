@@ -1090,57 +1090,6 @@ struct traced_block {
     int whole, bx, by;
 };
 
-/* The block's hits' triangles as surface_fetch_lanes' block on several
- * triangles (fetch_lanes_mixed) reads them, asked for ahead (a hint,
- * which reads no value): with `vertices` 0 the lines of each distinct
- * triangle's vertex indices, material and flags and its eye-cache
- * entry; with 1 the lines of its three vertices' positions, normals and
- * texture coordinates, read through the indices asked for one block
- * before.  A block on one triangle asks for nothing: its triangle's
- * values are in the eye cache and its vertices in the data cache from
- * the blocks before it.  Why: perf (Zen 3) put a quarter of
- * fetch_lanes_mixed's samples on triangle_normal's position loads and
- * another tenth on hit_triangle's and the distinct-triangle loop's loads.
- * Always inlined: as a function of its own GCC 12 finds it pure (loads
- * and prefetch hints only) and deletes its calls, hints and all. */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline void traced_block_ask(const struct shade_context *sc, const struct traced_block *b,
-                                    int vertices)
-{
-    const struct trace_scene_hit *h = b->hits;
-    if (b->found != (1u << TRACE_PACKET) - 1u)
-        return;
-    int i = 1;
-    while (i < TRACE_PACKET && h[i].prim == h[0].prim && h[i].instance == h[0].instance)
-        i++;
-    if (i == TRACE_PACKET)
-        return;
-    for (i = 0; i < TRACE_PACKET; i++) {
-        if (i > 0 && h[i].prim == h[i - 1].prim && h[i].instance == h[i - 1].instance)
-            continue;
-        const struct scene_mesh *mesh = &shade_hit_instance(sc, &h[i])->object->mesh;
-        const uint32_t prim = h[i].prim;
-        const uint32_t *v = &mesh->indices[3 * (size_t)prim];
-        if (!vertices) {
-            _mm_prefetch((const char *)v, _MM_HINT_T0);
-            _mm_prefetch((const char *)&mesh->tri_material[prim], _MM_HINT_T0);
-            _mm_prefetch((const char *)&mesh->tri_flags[prim], _MM_HINT_T0);
-            if (sc->eye)
-                _mm_prefetch((const char *)&sc->eye[prim % SHADE_EYE_CACHES], _MM_HINT_T0);
-            continue;
-        }
-        for (int k = 0; k < 3; k++) {
-            _mm_prefetch((const char *)&mesh->positions[3 * (size_t)v[k]], _MM_HINT_T0);
-            if (mesh->normals)
-                _mm_prefetch((const char *)&mesh->normals[3 * (size_t)v[k]], _MM_HINT_T0);
-            if (mesh->texcoords)
-                _mm_prefetch((const char *)&mesh->texcoords[2 * (size_t)v[k]], _MM_HINT_T0);
-        }
-    }
-}
-
 /*
  * render_tile_packets' eye-light tile when every hit is drawn and the
  * frame keeps no depth (its common case, the loop below it otherwise):
@@ -1190,13 +1139,7 @@ static void render_tile_eye_traced_first(struct render_pass *pass, struct shade_
         }
     }
     struct eye_pipeline pipe = {.slot = 0, .full = 0};
-    for (int j = 0; j < 2 && j < n; j++)
-        traced_block_ask(sc, &blocks[j], 0);
     for (int j = 0; j < n; j++) {
-        if (j + 2 < n)
-            traced_block_ask(sc, &blocks[j + 2], 0);
-        if (j + 1 < n)
-            traced_block_ask(sc, &blocks[j + 1], 1);
         const struct traced_block *b = &blocks[j];
         if (!b->whole || b->found != b->pk.active) {
             eye_block(pass, sc, x0, y0, b->bx, b->by, &b->pk, b->found, b->hits, b->cone);
