@@ -1062,17 +1062,9 @@ static void eye_pipeline_block(const struct shade_context *sc, struct eye_pipeli
                                const float *const dirs[], const struct shade_eye_rays *rays,
                                const struct trace_scene_hit *const hits[], float *const px[])
 {
-    int begun = RENDER_EYE_BLOCK_BEGIN(sc, dirs, rays, hits, px, &p->pending[p->slot]);
+    const int begun = RENDER_EYE_BLOCK_BEGIN(sc, dirs, rays, hits, px, &p->pending[p->slot]);
     if (p->full)
         RENDER_EYE_BLOCK_END(sc, &p->pending[p->slot ^ 1]);
-#if !defined(RENDER_UNIT_AVX512)
-    /* The AVX2 unit's block asks for its texels after the last block's
-     * end (shade_eye_block_ask): that end's loads and blends, which do
-     * not wait on this block, follow its levels of detail, which the
-     * lookups' addresses wait on. */
-    if (begun)
-        begun = shade_eye_block_ask_avx2(sc, &p->pending[p->slot]);
-#endif
     p->full = begun;
     p->slot ^= begun;
 }

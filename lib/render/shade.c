@@ -783,14 +783,6 @@ static void eye_block_hits(const struct shade_context *sc, const float *const di
 #endif
 
 #if defined(SHADE_UNIT_AVX2)
-/* The AVX2 unit's begin leaves the texture lookups' preparation to
- * shade_eye_block_ask (shade.h); the AVX-512 unit's prepares them. */
-#if defined(__AVX512F__)
-#define SHADE_EYE_ASKS 0
-#else
-#define SHADE_EYE_ASKS 1
-#endif
-
 int shade_eye_block_begin(const struct shade_context *sc, const float *const dir[],
                           const struct shade_eye_rays *rays,
                           const struct trace_scene_hit *const hits[], float *const rgba[],
@@ -799,7 +791,7 @@ int shade_eye_block_begin(const struct shade_context *sc, const float *const dir
     float width[TRACE_PACKET];
     eye_widths8_lanes(rays->dir, rays->width, rays->spread, hits, width, pending->unit);
     const int got = surface_fetch_lanes(sc, hits, rays->dir, width, &pending->lanes,
-                                        &pending->lookup, SHADE_EYE_ASKS ? &pending->ask : NULL);
+                                        &pending->lookup);
     if (!got) {
         eye_block_hits(sc, dir, hits, width, pending->unit, rgba);
         return 0;
@@ -814,36 +806,6 @@ int shade_eye_block_begin(const struct shade_context *sc, const float *const dir
     for (int i = 0; i < TRACE_PACKET; i++)
         pending->rgba[i] = rgba[i];
     return 1;
-}
-
-int shade_eye_block_ask(const struct shade_context *sc, struct shade_eye_pending *pending)
-{
-    const struct surface_texture_ask8 *ask = &pending->ask;
-    if (scene_texture_prefetch_lod8(ask->tex, ask->lambda, ask->st[0], ask->st[1],
-                                    &pending->lookup))
-        return 1;
-    /* lanes_texture_end's lookups where the sampler does not take the
-     * block, its products, then eye_light8 as shade_eye_block_begin. */
-    float rgb[3][TRACE_PACKET];
-    if (!scene_texture_sample_lod8(ask->tex, ask->lambda, ask->st[0], ask->st[1], rgb)) {
-        for (int i = 0; i < TRACE_PACKET; i++) {
-            float texel[4];
-            scene_texture_sample_lod(ask->tex, ask->lambda[i], ask->st[0][i], ask->st[1][i],
-                                     texel);
-            for (int k = 0; k < 3; k++)
-                rgb[k][i] = texel[k];
-        }
-    }
-    struct surface_lanes *lanes = &pending->lanes;
-    for (int k = 0; k < 3; k++) {
-        const __m256 texel = _mm256_loadu_ps(rgb[k]);
-        _mm256_storeu_ps(lanes->ambient[k],
-                         _mm256_mul_ps(_mm256_loadu_ps(lanes->ambient[k]), texel));
-        _mm256_storeu_ps(lanes->diffuse[k],
-                         _mm256_mul_ps(_mm256_loadu_ps(lanes->diffuse[k]), texel));
-    }
-    eye_light8(sc->state, lanes, pending->global_ambient, pending->unit, pending->rgba);
-    return 0;
 }
 
 void shade_eye_block_end(const struct shade_context *sc, struct shade_eye_pending *pending)
@@ -876,7 +838,7 @@ static void eye_hits(const struct shade_context *sc, int n, const float *const d
         eye_widths8(dir, hits, cone, width, unit, lane_d);
 #if defined(__AVX2__)
         struct surface_lanes lanes;
-        if (surface_fetch_lanes(sc, hits, lane_d, width, &lanes, NULL, NULL)) {
+        if (surface_fetch_lanes(sc, hits, lane_d, width, &lanes, NULL)) {
             /* One instance (surface_fetch_lanes refuses more). */
             eye_light8(sc->state, &lanes,
                        shade_hit_instance(sc, hits[0])->appearance.gl.light_model.ambient, unit,

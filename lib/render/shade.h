@@ -196,13 +196,6 @@ int shade_eye_block_begin_avx2(const struct shade_context *sc, const float *cons
                                const struct shade_eye_rays *rays,
                                const struct trace_scene_hit *const hits[], float *const rgba[],
                                struct shade_eye_pending *pending);
-/* With the AVX2 unit, shade_eye_block_begin's 1 leaves the block's texture
- * lookups unprepared: shade_eye_block_ask then prepares them and returns
- * 1 (shade_eye_block_end to follow), or does them and shades the block
- * completely and returns 0 (the sampler does not take the block).  So
- * the caller can run other work between the block's levels of detail
- * and its lookups' addresses. */
-int shade_eye_block_ask_avx2(const struct shade_context *sc, struct shade_eye_pending *pending);
 void shade_eye_block_end_avx2(const struct shade_context *sc, struct shade_eye_pending *pending);
 /* The same two steps in the AVX-512 copy (shade_eye_avx512.c), for the
  * frame's AVX-512 packet loop (render_avx512.c); absent, and not called,
@@ -211,8 +204,6 @@ int shade_eye_block_begin_avx512(const struct shade_context *sc, const float *co
                                  const struct shade_eye_rays *rays,
                                  const struct trace_scene_hit *const hits[], float *const rgba[],
                                  struct shade_eye_pending *pending);
-int shade_eye_block_ask_avx512(const struct shade_context *sc,
-                               struct shade_eye_pending *pending);
 void shade_eye_block_end_avx512(const struct shade_context *sc,
                                 struct shade_eye_pending *pending);
 #endif

@@ -21,7 +21,6 @@
 #define shade_context_lights SHADE_EYE_NAME(shade_context_lights)
 #define shade_eye_hits SHADE_EYE_NAME(shade_eye_hits)
 #define shade_eye_block_begin SHADE_EYE_NAME(shade_eye_block_begin)
-#define shade_eye_block_ask SHADE_EYE_NAME(shade_eye_block_ask)
 #define shade_eye_block_end SHADE_EYE_NAME(shade_eye_block_end)
 #define shade_hit SHADE_EYE_NAME(shade_hit)
 #define shade_offset_point SHADE_EYE_NAME(shade_offset_point)

@@ -1889,17 +1889,8 @@ static inline void lanes_colours(const struct shade_context *sc, const struct hi
 static inline int lanes_texture_end(const struct scene_texture *tx,
                                     const float lambda[TRACE_PACKET],
                                     const float lane_st[2][TRACE_PACKET], __m256 amb[3],
-                                    __m256 dif[3], struct scene_texture_lookup8 *defer,
-                                    struct surface_texture_ask8 *ask)
+                                    __m256 dif[3], struct scene_texture_lookup8 *defer)
 {
-    if (ask) {
-        /* The inputs kept as they are for the caller's later steps. */
-        ask->tex = tx;
-        _mm256_storeu_ps(ask->lambda, _mm256_loadu_ps(lambda));
-        for (int k = 0; k < 2; k++)
-            _mm256_storeu_ps(ask->st[k], _mm256_loadu_ps(lane_st[k]));
-        return 1;
-    }
     if (defer && scene_texture_prefetch_lod8(tx, lambda, lane_st[0], lane_st[1], defer))
         return 1;
     float rgb[3][TRACE_PACKET];
@@ -1958,8 +1949,7 @@ static inline struct surface_cache *eye_cache(const struct shade_context *sc, ui
 static int fetch_lanes_mixed(const struct shade_context *sc,
                              const struct trace_scene_hit *const hits[],
                              const float dir[3][TRACE_PACKET], const float width[],
-                             struct surface_lanes *out, struct scene_texture_lookup8 *defer,
-                             struct surface_texture_ask8 *ask)
+                             struct surface_lanes *out, struct scene_texture_lookup8 *defer)
 {
     const struct trace_scene_hit *h0 = hits[0];
     for (int i = 1; i < TRACE_PACKET; i++)
@@ -2108,7 +2098,7 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
 #undef HALF
             }
         }
-        deferred = lanes_texture_end(tx, lambda, lane_st, amb, dif, defer, ask);
+        deferred = lanes_texture_end(tx, lambda, lane_st, amb, dif, defer);
     }
     for (int k = 0; k < 3; k++) {
         _mm256_storeu_ps(out->ambient[k], amb[k]);
@@ -2140,8 +2130,7 @@ typedef char hit_prim_instance[offsetof(struct trace_scene_hit, instance) ==
  */
 int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene_hit *const hits[],
                         const float dir[3][TRACE_PACKET], const float width[],
-                        struct surface_lanes *out, struct scene_texture_lookup8 *defer,
-                        struct surface_texture_ask8 *ask)
+                        struct surface_lanes *out, struct scene_texture_lookup8 *defer)
 {
     const struct trace_scene_hit *h0 = hits[0];
     if (!sc->cache)
@@ -2155,7 +2144,7 @@ int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene
         uint64_t key;
         memcpy(&key, &hits[i]->prim, sizeof(key));
         if (key != key0)
-            return fetch_lanes_mixed(sc, hits, dir, width, out, defer, ask);
+            return fetch_lanes_mixed(sc, hits, dir, width, out, defer);
     }
     struct hit_triangle t;
     hit_triangle(sc, h0, &t);
@@ -2338,7 +2327,7 @@ int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene
 #endif
 #endif
         }
-        deferred = lanes_texture_end(tx, lambda, lane_st, amb, dif, defer, ask);
+        deferred = lanes_texture_end(tx, lambda, lane_st, amb, dif, defer);
     }
     for (int k = 0; k < 3; k++) {
         _mm256_storeu_ps(out->ambient[k], amb[k]);

@@ -172,18 +172,8 @@ struct surface_lanes {
  * (shade_eye_block_begin, shade.h): its colours before the texture, its
  * texture lookups up to the loads, and what eye_light8 reads besides (unit directions, the
  * instance's global ambient, the pixels). */
-/* What the block's eight-lane texture lookups take (the texture, each
- * lane's level of detail and coordinates), kept by surface_fetch_lanes
- * for a later scene_texture_prefetch_lod8 (shade_eye_block_ask). */
-struct surface_texture_ask8 {
-    const struct scene_texture *tex;
-    float lambda[TRACE_PACKET];
-    float st[2][TRACE_PACKET];
-};
-
 struct shade_eye_pending {
     struct surface_lanes lanes;
-    struct surface_texture_ask8 ask;
     struct scene_texture_lookup8 lookup;
     float unit[3][TRACE_PACKET];
     const float *global_ambient;
@@ -206,15 +196,10 @@ struct shade_eye_pending {
  * and diffuse colours are those before the texture, each to be
  * multiplied by its lane's channel of scene_texture_finish_lod8 (the
  * products surface_fetch_lanes takes otherwise, on the same floats).
- * With `ask` (else NULL) 2 whenever the block has a texture, its
- * lookups' inputs kept in *ask and nothing prepared in *defer: the
- * caller prepares them (scene_texture_prefetch_lod8, or the lookups
- * themselves where the sampler does not take the block) later.
  */
 int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene_hit *const hits[],
                         const float dir[3][TRACE_PACKET], const float width[],
-                        struct surface_lanes *out, struct scene_texture_lookup8 *defer,
-                        struct surface_texture_ask8 *ask);
+                        struct surface_lanes *out, struct scene_texture_lookup8 *defer);
 #endif
 
 /* The texel of texture `name` at a hit, for the RT_FIXED_FUNCTION mode,
