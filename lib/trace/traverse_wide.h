@@ -1297,15 +1297,18 @@ static unsigned wide_near_refused(const struct wide_state *s, const struct tri4_
     return sure;
 }
 
-/* The two-packet leaf after its filter kept some lane (mask, the lanes'
- * floats in lanes[0] and lanes[1], the limit the filter had). */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline int wide_leaf8_rest(struct wide_state *s, const struct tri4_packet *p,
-                                  const struct tri4_lanes lanes[2], unsigned mask, float limit,
-                                  int any_hit, int depth_out, int ray_double)
+static inline int wide_leaf8_test(struct wide_state *s, const struct tri4_packet *p, uint32_t n,
+                                  int any_hit, int early_out, int depth_out, int behind_out,
+                                  int ray_double)
 {
+    float limit = !any_hit && s->found ? isect_next_up(s->best) : s->best;
+    struct tri4_lanes lanes[2];
+    unsigned mask =
+        tri4_pair_filter_lanes(&s->r4, p, (1u << n) - 1u, limit, lanes, any_hit, early_out,
+                               depth_out, behind_out);
     if (any_hit && mask) {
         /* As wide_packet_test, per packet (the near lanes refused on t_hi
          * with depth_out). */
@@ -1382,63 +1385,6 @@ static inline int wide_leaf8_rest(struct wide_state *s, const struct tri4_packet
     return 0;
 }
 
-/* The two-packet leaf: the filter, then, for a leaf with a kept lane,
- * wide_leaf8_rest. */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline int wide_leaf8_test(struct wide_state *s, const struct tri4_packet *p, uint32_t n,
-                                  int any_hit, int early_out, int depth_out, int behind_out,
-                                  int ray_double)
-{
-    float limit = !any_hit && s->found ? isect_next_up(s->best) : s->best;
-    struct tri4_lanes lanes[2];
-    unsigned mask =
-        tri4_pair_filter_lanes(&s->r4, p, (1u << n) - 1u, limit, lanes, any_hit, early_out,
-                               depth_out, behind_out);
-    return wide_leaf8_rest(s, p, lanes, mask, limit, any_hit, depth_out, ray_double);
-}
-
-/*
- * The AVX2 table's any-hit two-packet leaf in two functions: the filter
- * (name), and the rest for a leaf with a kept lane (name_rest, a call).
- * In one function the filter paid the whole leaf's frame: the leaf
- * (which calls wide_near_refused and tri4_lane_test) saved six registers
- * and realigned its stack, 26 instructions of entry and exit a call,
- * while 0.86 of its calls end in the filter (callgrind, the kitchen's
- * shadow rays: 0.913 calls a ray, 0.789 refused by the signs or the
- * depths).  The filter alone saves two (14 instructions).  The same
- * operations in the same order (wide_leaf8_test split where the mask is
- * known), so the same answers.  Not the closest-hit leaves: a kitchen
- * random ray's first 8-lane leaf keeps a lane in 0.65 of its calls, and
- * there the call cost more than the frame saved (+3.8 instructions a
- * ray, +6.6 M in the camera set).  The AVX-512 table keeps one function.
- */
-#if !TRACE_AVX512_TABLE
-#define WIDE8_LEAF8(name, any_hit, early_out, depth_out, behind_out, ray_double)                \
-    static int name##_rest(struct wide_state *s, const struct tri4_packet *p,                  \
-                           const struct tri4_lanes *lanes, unsigned mask,                      \
-                           float limit) WIDE_NOINLINE;                                          \
-    static int name##_rest(struct wide_state *s, const struct tri4_packet *p,                  \
-                           const struct tri4_lanes *lanes, unsigned mask, float limit)          \
-    {                                                                                           \
-        return wide_leaf8_rest(s, p, lanes, mask, limit, any_hit, depth_out, ray_double);      \
-    }                                                                                           \
-    static int name(struct wide_state *s, const struct tri4_packet *p, uint32_t n) WIDE_NOINLINE; \
-    static int name(struct wide_state *s, const struct tri4_packet *p, uint32_t n)              \
-    {                                                                                           \
-        const float limit = !(any_hit) && s->found ? isect_next_up(s->best) : s->best;         \
-        struct tri4_lanes lanes[2];                                                             \
-        const unsigned mask =                                                                   \
-            tri4_pair_filter_lanes(&s->r4, p, (1u << n) - 1u, limit, lanes, any_hit,           \
-                                   early_out, depth_out, behind_out);                           \
-        return mask ? name##_rest(s, p, lanes, mask, limit) : 0;                                \
-    }
-#else
-#define WIDE8_LEAF8(name, any_hit, early_out, depth_out, behind_out, ray_double)                \
-    WIDE8_LEAF_TEST(name, wide_leaf8_test, any_hit, early_out, depth_out, behind_out, ray_double)
-#endif
-
 WIDE8_LEAF_TEST(wide8_leaf8_closest, wide_leaf8_test, 0, 1, 0, 1, 1)
 WIDE8_LEAF_TEST(wide8_leaf8_full, wide_leaf8_test, 0, 0, 0, 1, 1)
 /* The closest-hit walk's first 8-lane leaf of a ray: the filter refuses
@@ -1448,7 +1394,7 @@ WIDE8_LEAF_TEST(wide8_leaf8_full, wide_leaf8_test, 0, 0, 0, 1, 1)
  * says why; traverse_wide8_ray.h why only there). */
 WIDE8_LEAF_TEST(wide8_leaf8_closest_first, wide_leaf8_test, 0, 1, 0, TRI4_BEHIND_FIRST, 1)
 WIDE8_LEAF_TEST(wide8_leaf8_full_first, wide_leaf8_test, 0, 0, 0, TRI4_BEHIND_FIRST, 1)
-WIDE8_LEAF8(wide8_leaf8_any, 1, 1, 1, 0, 0)
+WIDE8_LEAF_TEST(wide8_leaf8_any, wide_leaf8_test, 1, 1, 1, 0, 0)
 
 #define WIDE8_RAY walk_wide8_ray_leaf8
 #define WIDE8_RAY_LEAF8 1
