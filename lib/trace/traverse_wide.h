@@ -261,6 +261,15 @@ static inline int wide_packet_test(struct wide_state *s, const struct tri4_packe
         else if (near)
             mask &= ~tri4_before_tmin(s->ray, p, near);
     }
+    /* The AVX2 table's closest-hit leaves: the kept lanes' finish in
+     * vectors first (tri4_finish_lanes says why it is the same t); the
+     * lanes it does not decide keep tri4_lane_test. */
+#if TRI4_FINISH_VEC
+    unsigned fast = 0, fast_ok = 0;
+    float fast_t[4];
+    if (ray_double && !any_hit && mask)
+        fast = tri4_finish_lanes(p, &lanes, wide_ray_doubles(s), s->ray->tmin, fast_t, &fast_ok);
+#endif
     while (mask) {
         const unsigned l = (unsigned)__builtin_ctz(mask);
         mask &= mask - 1u;
@@ -292,8 +301,20 @@ static inline int wide_packet_test(struct wide_state *s, const struct tri4_packe
          * and 1 when it takes the hit (an any-hit leaf returns at its
          * first).  The same limit each lane; GCC reloaded s->best and
          * s->found each lane (the hit's stores may alias them). */
-        if (!tri4_lane_test(s->ray, ray_double ? wide_ray_doubles(s) : NULL, p, &lanes, l, any_hit,
-                            limit, &t, &u, &w))
+#if TRI4_FINISH_VEC
+        if (fast >> l & 1u) {
+            /* isect_triangle_finish_impl's last test and its u, v (V and W
+             * times the float 1 / det). */
+            if (!(fast_ok >> l & 1u) || !(fast_t[l] < limit))
+                continue;
+            const float rcp_det = 1.0f / lanes.det[l];
+            t = fast_t[l];
+            u = lanes.V[l] * rcp_det;
+            w = lanes.W[l] * rcp_det;
+        } else
+#endif
+            if (!tri4_lane_test(s->ray, ray_double ? wide_ray_doubles(s) : NULL, p, &lanes, l,
+                                any_hit, limit, &t, &u, &w))
             continue;
         if (any_hit) {
             s->found = 1;
@@ -1314,6 +1335,24 @@ static inline int wide_leaf8_test(struct wide_state *s, const struct tri4_packet
                 mask &= ~(tri4_before_tmin(s->ray, p + 1, near >> 4) << 4);
         }
     }
+    /* As wide_packet_test: each packet's kept lanes finished in vectors
+     * first (TRI4_FINISH_VEC), a packet only when it has one. */
+#if TRI4_FINISH_VEC
+    unsigned fast = 0, fast_ok = 0;
+    float fast_t[8];
+    if (ray_double && !any_hit) {
+        if (mask & 15u)
+            fast = tri4_finish_lanes(p, &lanes[0], wide_ray_doubles(s), s->ray->tmin, fast_t,
+                                     &fast_ok);
+        if (mask >> 4) {
+            unsigned ok_hi;
+            fast |= tri4_finish_lanes(p + 1, &lanes[1], wide_ray_doubles(s), s->ray->tmin,
+                                      fast_t + 4, &ok_hi)
+                    << 4;
+            fast_ok |= ok_hi << 4;
+        }
+    }
+#endif
     while (mask) {
         const unsigned l = (unsigned)__builtin_ctz(mask);
         mask &= mask - 1u;
@@ -1323,8 +1362,18 @@ static inline int wide_leaf8_test(struct wide_state *s, const struct tri4_packet
          * already (tri4_pair_filter_lanes). */
         float t, u, w;
         /* limit kept up to date as in wide_packet_test. */
-        if (!tri4_lane_test(s->ray, ray_double ? wide_ray_doubles(s) : NULL, q, &lanes[k], l & 3u,
-                            any_hit, limit, &t, &u, &w))
+#if TRI4_FINISH_VEC
+        if (fast >> l & 1u) {
+            if (!(fast_ok >> l & 1u) || !(fast_t[l] < limit))
+                continue;
+            const float rcp_det = 1.0f / lanes[k].det[l & 3u];
+            t = fast_t[l];
+            u = lanes[k].V[l & 3u] * rcp_det;
+            w = lanes[k].W[l & 3u] * rcp_det;
+        } else
+#endif
+            if (!tri4_lane_test(s->ray, ray_double ? wide_ray_doubles(s) : NULL, q, &lanes[k],
+                                l & 3u, any_hit, limit, &t, &u, &w))
             continue;
         if (any_hit) {
             s->found = 1;
