@@ -267,7 +267,7 @@ static inline int wide_packet_test(struct wide_state *s, const struct tri4_packe
 #if TRI4_FINISH_VEC
     unsigned fast = 0, fast_ok = 0;
     float fast_t[4];
-    if (ray_double && !any_hit && (mask & (mask - 1u)))
+    if (ray_double && !any_hit && mask)
         fast = tri4_finish_lanes(p, &lanes, wide_ray_doubles(s), s->ray->tmin, fast_t, &fast_ok);
 #endif
     while (mask) {
@@ -1341,11 +1341,10 @@ static inline int wide_leaf8_test(struct wide_state *s, const struct tri4_packet
     unsigned fast = 0, fast_ok = 0;
     float fast_t[8];
     if (ray_double && !any_hit) {
-        const unsigned lo = mask & 15u, hi = mask >> 4;
-        if (lo & (lo - 1u))
+        if (mask & 15u)
             fast = tri4_finish_lanes(p, &lanes[0], wide_ray_doubles(s), s->ray->tmin, fast_t,
                                      &fast_ok);
-        if (hi & (hi - 1u)) {
+        if (mask >> 4) {
             unsigned ok_hi;
             fast |= tri4_finish_lanes(p + 1, &lanes[1], wide_ray_doubles(s), s->ray->tmin,
                                       fast_t + 4, &ok_hi)
