@@ -1263,6 +1263,22 @@ static inline unsigned tri4_finish_lanes(const struct tri4_packet *p,
     *ok = (unsigned)_mm_movemask_ps(pass) & fast;
     return fast;
 }
+
+/* Lane l of tri4_finish_lanes' decided lanes (ok, t_l: its *ok and
+ * t_out[l]) as tri4_lane_test would answer it: isect_triangle_finish_impl's
+ * last test (t < t_max, the limit of the moment) and its u, v (V and W
+ * times the float 1 / det).  Returns 0 when the lane is refused. */
+static inline int tri4_finish_lane(const struct tri4_lanes *lanes, unsigned l, unsigned ok,
+                                   float t_l, float t_max, float *t, float *u, float *w)
+{
+    if (!(ok >> l & 1u) || !(t_l < t_max))
+        return 0;
+    const float rcp_det = 1.0f / lanes->det[l];
+    *t = t_l;
+    *u = lanes->V[l] * rcp_det;
+    *w = lanes->W[l] * rcp_det;
+    return 1;
+}
 #endif
 
 #endif

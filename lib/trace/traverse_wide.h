@@ -303,14 +303,8 @@ static inline int wide_packet_test(struct wide_state *s, const struct tri4_packe
          * s->found each lane (the hit's stores may alias them). */
 #if TRI4_FINISH_VEC
         if (fast >> l & 1u) {
-            /* isect_triangle_finish_impl's last test and its u, v (V and W
-             * times the float 1 / det). */
-            if (!(fast_ok >> l & 1u) || !(fast_t[l] < limit))
+            if (!tri4_finish_lane(&lanes, l, fast_ok, fast_t[l], limit, &t, &u, &w))
                 continue;
-            const float rcp_det = 1.0f / lanes.det[l];
-            t = fast_t[l];
-            u = lanes.V[l] * rcp_det;
-            w = lanes.W[l] * rcp_det;
         } else
 #endif
             if (!tri4_lane_test(s->ray, ray_double ? wide_ray_doubles(s) : NULL, p, &lanes, l,
@@ -1364,12 +1358,9 @@ static inline int wide_leaf8_test(struct wide_state *s, const struct tri4_packet
         /* limit kept up to date as in wide_packet_test. */
 #if TRI4_FINISH_VEC
         if (fast >> l & 1u) {
-            if (!(fast_ok >> l & 1u) || !(fast_t[l] < limit))
+            if (!tri4_finish_lane(&lanes[k], l & 3u, fast_ok >> 4u * k, fast_t[l], limit, &t,
+                                  &u, &w))
                 continue;
-            const float rcp_det = 1.0f / lanes[k].det[l & 3u];
-            t = fast_t[l];
-            u = lanes[k].V[l & 3u] * rcp_det;
-            w = lanes[k].W[l & 3u] * rcp_det;
         } else
 #endif
             if (!tri4_lane_test(s->ray, ray_double ? wide_ray_doubles(s) : NULL, q, &lanes[k],
