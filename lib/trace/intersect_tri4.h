@@ -228,23 +228,6 @@ static inline unsigned tri4_before_tmin_vectors(const struct tri4_ray *r, __m128
                                                 __m128 V, __m128 W, __m128 det, __m128 Az,
                                                 __m128 Bz, __m128 Cz, int scalar);
 
-/* The closest-hit filters' size (isect_triangle's max of the sheared
- * |x|, |y|) computed right after the edge functions, before the sign
- * test's early return, in the AVX2 table (AVX without the AVX-512 table):
- * then the six sheared vectors die at the edge functions.  Computed
- * after the mask, as before, they lived across the early return: GCC
- * spilled five of them on every call (stores, and reloads inside the
- * edge functions) for the size of the calls that keep a lane.  A
- * deferred lane's sheared x, y are then not stored either: tri4_lane_test
- * computes them from the packet (tri4_lane_sheared, the same floats), as
- * the any-hit lanes' always were.  Deferred lanes are rare (an edge
- * function of exactly 0). */
-#if defined(__AVX__) && !TRACE_AVX512_TABLE
-#define TRI4_SIZE_EARLY 1
-#else
-#define TRI4_SIZE_EARLY 0
-#endif
-
 /*
  * The lanes of p (among `valid`, bit l for lane l) that isect_triangle
  * with this t_max might accept; every other lane it rejects.  With out
@@ -299,24 +282,6 @@ static inline unsigned tri4_filter_lanes_depth(const struct tri4_ray *r,
     const __m128 U = _mm_sub_ps(_mm_mul_ps(Cx, By), _mm_mul_ps(Cy, Bx));
     const __m128 V = _mm_sub_ps(_mm_mul_ps(Ax, Cy), _mm_mul_ps(Ay, Cx));
     const __m128 W = _mm_sub_ps(_mm_mul_ps(Bx, Ay), _mm_mul_ps(By, Ax));
-#if TRI4_SIZE_EARLY
-    /* isect_triangle's size, here rather than after the mask
-     * (TRI4_SIZE_EARLY says why); the same operations. */
-    __m128 size_early = _mm_setzero_ps();
-    if (out && !any_hit) {
-        const __m128 sign = _mm_set1_ps(-0.0f);
-        size_early = _mm_max_ps(_mm_max_ps(_mm_andnot_ps(sign, Ax), _mm_andnot_ps(sign, Ay)),
-                                _mm_max_ps(_mm_andnot_ps(sign, Bx), _mm_andnot_ps(sign, By)));
-        size_early = _mm_max_ps(size_early,
-                                _mm_max_ps(_mm_andnot_ps(sign, Cx), _mm_andnot_ps(sign, Cy)));
-#if defined(__GNUC__)
-        /* Left to itself GCC sinks the computation past the early return
-         * into the only branch that reads it, and the sheared vectors
-         * are spilled again (objdump). */
-        __asm__ volatile("" : "+x"(size_early));
-#endif
-    }
-#endif
 
     const __m128 zero = _mm_setzero_ps();
     /* Some edge function below 0, some above: min(U, V, W) < 0 and
@@ -457,10 +422,6 @@ static inline unsigned tri4_filter_lanes_depth(const struct tri4_ray *r,
         _mm_storeu_ps(out->t_lo, t_lo);
         _mm_storeu_ps(out->t_hi, t_hi);
         out->deferred = deferred;
-#if TRI4_SIZE_EARLY
-        if (!any_hit)
-            _mm_storeu_ps(out->size, size_early);
-#else
         if (!any_hit) {
             /* isect_triangle's size: max(max(|Ax|, |Ay|), max(|Bx|,
              * |By|)), then max with max(|Cx|, |Cy|); maxps(a, b) is a > b
@@ -480,7 +441,6 @@ static inline unsigned tri4_filter_lanes_depth(const struct tri4_ray *r,
                 _mm_storeu_ps(out->Cy, Cy);
             }
         }
-#endif
     }
     return mask;
 }
@@ -623,22 +583,6 @@ static inline unsigned tri4_pair_filter_lanes(const struct tri4_ray *r,
     const __m256 sy = TRI4_CONST8(r, sy, k_shear[1], scalar);
     struct tri8_sheared sh;
     tri8_shear(ax, ay, az, bx, by, bz, cx, cy, cz, sx, sy, &sh);
-#if TRI4_SIZE_EARLY
-    /* isect_triangle's size before the early return (TRI4_SIZE_EARLY). */
-    __m256 size_early = _mm256_setzero_ps();
-    if (!any_hit) {
-        const __m256 sign = _mm256_set1_ps(-0.0f);
-        size_early = _mm256_max_ps(
-            _mm256_max_ps(_mm256_andnot_ps(sign, sh.Ax), _mm256_andnot_ps(sign, sh.Ay)),
-            _mm256_max_ps(_mm256_andnot_ps(sign, sh.Bx), _mm256_andnot_ps(sign, sh.By)));
-        size_early = _mm256_max_ps(size_early, _mm256_max_ps(_mm256_andnot_ps(sign, sh.Cx),
-                                                             _mm256_andnot_ps(sign, sh.Cy)));
-#if defined(__GNUC__)
-        /* Not sunk past the early return (as in tri4_filter_lanes_depth). */
-        __asm__ volatile("" : "+x"(size_early));
-#endif
-    }
-#endif
 
     /* The sign test, early return, edge zeros, depth range, box
      * interval and det exactly as tri4_filter_lanes (its comments say
@@ -797,10 +741,6 @@ static inline unsigned tri4_pair_filter_lanes(const struct tri4_ray *r,
         tri4_pair_store(out[0].t_hi, out[1].t_hi, t_hi);
         out[0].deferred = deferred & 15u;
         out[1].deferred = deferred >> 4;
-#if TRI4_SIZE_EARLY
-        if (!any_hit)
-            tri4_pair_store(out[0].size, out[1].size, size_early);
-#else
         if (!any_hit) {
             const __m256 sign = _mm256_set1_ps(-0.0f);
             __m256 size = _mm256_max_ps(
@@ -818,7 +758,6 @@ static inline unsigned tri4_pair_filter_lanes(const struct tri4_ray *r,
                 tri4_pair_store(out[0].Cy, out[1].Cy, sh.Cy);
             }
         }
-#endif
     }
     return mask;
 }
@@ -1176,10 +1115,6 @@ static inline int tri4_lane_test(const struct trace_ray *ray, const double *ray_
         if (any_hit) {
             size = tri4_lane_sheared(ray, p, l, sheared);
             have_size = 1;
-        } else if (TRI4_SIZE_EARLY) {
-            /* The filter stored size, not the sheared x, y
-             * (TRI4_SIZE_EARLY); the same size again. */
-            (void)tri4_lane_sheared(ray, p, l, sheared);
         } else {
             sheared[0] = lanes->Ax[l];
             sheared[1] = lanes->Ay[l];
