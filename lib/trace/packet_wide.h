@@ -231,7 +231,6 @@ static inline void packet_flush(struct packet_state *p, unsigned r)
     struct wide_state *s = &p->s[r];
     s->found = 1;
     s->best = p->best[r];
-    s->limit = p->limit[r]; /* isect_next_up(best), as the take set it */
     s->box_limit = p->box_limit[r];
     s->hit->t = p->best[r];
     s->hit->u = p->hit_u[r];

@@ -77,16 +77,6 @@ struct wide_state {
     int found;
     float best;
     float box_limit;
-    /* A closest-hit walk's limit for its next leaf, walk_leaf's rule
-     * (found ? isect_next_up(best) : best), set with best and found
-     * (wide_take_closest) rather than computed from them on each leaf
-     * call: a leaf call reads it in one load, where the rule took the
-     * found and best loads, a test, the zero test of next_up and the
-     * increment (eight to ten instructions at each AVX2 leaf's entry;
-     * a kitchen random ray makes 0.72 leaf calls).  In the padding
-     * after box_limit: the state's size and the other fields' offsets
-     * stay.  Not kept by the any-hit walks, whose leaves read best. */
-    float limit;
     uint64_t node_tests;
     uint64_t triangle_tests;
 };
@@ -160,7 +150,6 @@ static inline void wide_state_init(struct wide_state *s, const struct trace_ray 
     s->hit = hit;
     s->found = 0;
     s->best = t_max;
-    s->limit = t_max;
     s->box_limit = t_max * ISECT_BOX_FAR_SCALE; /* as traverse_walk.h */
     s->node_tests = 0;
     s->triangle_tests = 0;
@@ -186,28 +175,12 @@ static inline void wide_state_init1(struct wide_state *s, const struct trace_ray
     if (!any_hit) {
         s->hit = hit;
         s->found = 0;
-        s->limit = t_max;
         s->box_limit = t_max * ISECT_BOX_FAR_SCALE; /* as wide_state_init */
     }
     if (stats) {
         s->node_tests = 0;
         s->triangle_tests = 0;
     }
-}
-
-/* isect_next_up without its branches: +0 and -0 (the floats whose bits
- * shifted left by one are 0) give the least denormal, bits 1; every
- * other float, NaN too, its bits + 1.  The same float as isect_next_up
- * for every input.  A take (wide_take_closest) computes it for the
- * state's limit on every hit taken, where isect_next_up's zero test is
- * a compare, two branches and a constant's load. */
-static inline float wide_next_up(float f)
-{
-    uint32_t bits;
-    memcpy(&bits, &f, sizeof(bits));
-    bits = (bits << 1) != 0u ? bits + 1u : 1u;
-    memcpy(&f, &bits, sizeof(f));
-    return f;
 }
 
 /* The n triangles of packet p: walk_leaf's limit and hit rule; returns
@@ -227,7 +200,6 @@ static inline int wide_take_closest(struct wide_state *s, uint32_t prim, float t
         return 0;
     s->found = 1;
     s->best = t;
-    s->limit = wide_next_up(t);
     s->box_limit = t * ISECT_BOX_FAR_SCALE;
     s->hit->t = t;
     s->hit->u = u;
@@ -258,8 +230,7 @@ static inline int wide_packet_test(struct wide_state *s, const struct tri4_packe
                                    int ray_double)
 {
     /* An any-hit walk returns at its first hit: found stays 0. */
-    /* s->limit: walk_leaf's rule, kept by wide_take_closest. */
-    float limit = any_hit ? s->best : s->limit;
+    float limit = !any_hit && s->found ? isect_next_up(s->best) : s->best;
     struct tri4_lanes lanes;
     unsigned mask =
         tri4_filter_lanes_depth(&s->r4, p, (1u << n) - 1u, limit, &lanes, any_hit, early_out,
@@ -345,7 +316,7 @@ static inline int wide_packet_test(struct wide_state *s, const struct tri4_packe
         }
         /* The limit after a take is needed only by a lane still to come. */
         if (wide_take_closest(s, p->prim[l], t, u, w) && mask)
-            limit = wide_next_up(t); /* as the take's */
+            limit = isect_next_up(t);
     }
     return 0;
 }
@@ -1327,8 +1298,7 @@ static inline int wide_leaf8_test(struct wide_state *s, const struct tri4_packet
                                   int any_hit, int early_out, int depth_out, int behind_out,
                                   int ray_double)
 {
-    /* s->limit: walk_leaf's rule, kept by wide_take_closest. */
-    float limit = any_hit ? s->best : s->limit;
+    float limit = !any_hit && s->found ? isect_next_up(s->best) : s->best;
     struct tri4_lanes lanes[2];
     unsigned mask =
         tri4_pair_filter_lanes(&s->r4, p, (1u << n) - 1u, limit, lanes, any_hit, early_out,
@@ -1401,7 +1371,7 @@ static inline int wide_leaf8_test(struct wide_state *s, const struct tri4_packet
             return 1;
         }
         if (wide_take_closest(s, q->prim[l & 3u], t, u, w) && mask)
-            limit = wide_next_up(t); /* as the take's */
+            limit = isect_next_up(t);
     }
     return 0;
 }
@@ -1623,7 +1593,6 @@ static int TRACE_WIDE_LEAF8(const struct trace_ray *ray, const struct tri4_packe
     if (!any_hit && found) {
         s->found = 1;
         s->best = hit->t;
-        s->limit = isect_next_up(hit->t);
         s->box_limit = hit->t * ISECT_BOX_FAR_SCALE;
     }
     /* The constants' form each walk sets: the any-hit leaves read only
