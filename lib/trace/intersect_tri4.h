@@ -228,23 +228,6 @@ static inline unsigned tri4_before_tmin_vectors(const struct tri4_ray *r, __m128
                                                 __m128 V, __m128 W, __m128 det, __m128 Az,
                                                 __m128 Bz, __m128 Cz, int scalar);
 
-/* The 4-lane closest-hit filter of the AVX2 table (AVX without the
- * AVX-512 table) loads the packet's rows a second time after the sign
- * test instead of keeping the nine vertex vectors across it.  Kept, they
- * and the six sheared vectors, the edge functions and the sign mask are
- * 19 vectors in 16 registers, and GCC spilled five or six of them on
- * every call.  The second loads are memory operands of the same adds
- * (v + (-org): the same floats), from the cache lines the first loads
- * brought in.  The size is computed right after the sign test, before
- * the second loads, and a deferred lane's sheared x, y are computed
- * from the packet (tri4_lane_test, tri4_lane_sheared: the same floats)
- * instead of being stored, so the sheared vectors die there. */
-#if defined(__AVX__) && !TRACE_AVX512_TABLE
-#define TRI4_RELOAD_VERTS 1
-#else
-#define TRI4_RELOAD_VERTS 0
-#endif
-
 /*
  * The lanes of p (among `valid`, bit l for lane l) that isect_triangle
  * with this t_max might accept; every other lane it rejects.  With out
@@ -330,53 +313,6 @@ static inline unsigned tri4_filter_lanes_depth(const struct tri4_ray *r,
     if (early_out && ((unsigned)_mm_movemask_ps(mixed) & valid) == valid)
         return 0;
 
-    /* The vertex vectors the depths and slabs read: loaded again
-     * (TRI4_RELOAD_VERTS) in the closest-hit filter with lanes out. */
-    const int reload = TRI4_RELOAD_VERTS && out && !any_hit;
-    __m128 size_early = _mm_setzero_ps();
-    const struct tri4_packet *pv = p;
-    if (reload) {
-        /* isect_triangle's size: max(max(|Ax|, |Ay|), max(|Bx|,
-         * |By|)), then max with max(|Cx|, |Cy|); maxps(a, b) is a > b
-         * ? a : b. */
-        const __m128 sign = _mm_set1_ps(-0.0f);
-        size_early = _mm_max_ps(_mm_max_ps(_mm_andnot_ps(sign, Ax), _mm_andnot_ps(sign, Ay)),
-                          _mm_max_ps(_mm_andnot_ps(sign, Bx), _mm_andnot_ps(sign, By)));
-        size_early = _mm_max_ps(size_early, _mm_max_ps(_mm_andnot_ps(sign, Cx), _mm_andnot_ps(sign, Cy)));
-#if defined(__GNUC__)
-        /* An opaque copy of p: GCC cannot reuse the first loads (nor
-         * keep their sums), so it loads the rows again here. */
-        __asm__("" : "+r"(pv));
-#endif
-    }
-    const __m128 vax = reload ? _mm_add_ps(TRI4_CONST(r, neg_org_x, k_neg_org[0], scalar),
-                                           tri4_row(pv, 0, r->off_x))
-                              : ax;
-    const __m128 vay = reload ? _mm_add_ps(TRI4_CONST(r, neg_org_y, k_neg_org[1], scalar),
-                                           tri4_row(pv, 0, r->off_y))
-                              : ay;
-    const __m128 vaz = reload ? _mm_add_ps(TRI4_CONST(r, neg_org_z, k_neg_org[2], scalar),
-                                           tri4_row(pv, 0, r->off_z))
-                              : az;
-    const __m128 vbx = reload ? _mm_add_ps(TRI4_CONST(r, neg_org_x, k_neg_org[0], scalar),
-                                           tri4_row(pv, 1, r->off_x))
-                              : bx;
-    const __m128 vby = reload ? _mm_add_ps(TRI4_CONST(r, neg_org_y, k_neg_org[1], scalar),
-                                           tri4_row(pv, 1, r->off_y))
-                              : by;
-    const __m128 vbz = reload ? _mm_add_ps(TRI4_CONST(r, neg_org_z, k_neg_org[2], scalar),
-                                           tri4_row(pv, 1, r->off_z))
-                              : bz;
-    const __m128 vcx = reload ? _mm_add_ps(TRI4_CONST(r, neg_org_x, k_neg_org[0], scalar),
-                                           tri4_row(pv, 2, r->off_x))
-                              : cx;
-    const __m128 vcy = reload ? _mm_add_ps(TRI4_CONST(r, neg_org_y, k_neg_org[1], scalar),
-                                           tri4_row(pv, 2, r->off_y))
-                              : cy;
-    const __m128 vcz = reload ? _mm_add_ps(TRI4_CONST(r, neg_org_z, k_neg_org[2], scalar),
-                                           tri4_row(pv, 2, r->off_z))
-                              : cz;
-
     /* Lanes with an edge function of exactly 0: the scalar test's
      * double-precision fallback decides their signs. */
     const __m128 on_edge =
@@ -386,9 +322,9 @@ static inline unsigned tri4_filter_lanes_depth(const struct tri4_ray *r,
      * range and the ray's interval through the triangle's box.  They
      * hold for deferred lanes too (the scalar test rejects on them after
      * its double step, and every rejection returns the same 0). */
-    const __m128 Az = _mm_mul_ps(TRI4_CONST(r, sz, k_inv[2], scalar), vaz);
-    const __m128 Bz = _mm_mul_ps(TRI4_CONST(r, sz, k_inv[2], scalar), vbz);
-    const __m128 Cz = _mm_mul_ps(TRI4_CONST(r, sz, k_inv[2], scalar), vcz);
+    const __m128 Az = _mm_mul_ps(TRI4_CONST(r, sz, k_inv[2], scalar), az);
+    const __m128 Bz = _mm_mul_ps(TRI4_CONST(r, sz, k_inv[2], scalar), bz);
+    const __m128 Cz = _mm_mul_ps(TRI4_CONST(r, sz, k_inv[2], scalar), cz);
     const __m128 z_lo = _mm_min_ps(Az, _mm_min_ps(Bz, Cz));
     const __m128 z_hi = _mm_max_ps(Az, _mm_max_ps(Bz, Cz));
     const __m128 limit = _mm_set1_ps(t_max);
@@ -410,8 +346,8 @@ static inline unsigned tri4_filter_lanes_depth(const struct tri4_ray *r,
         return 0;
     __m128 t_lo = z_lo;
     __m128 t_hi = z_hi;
-    tri4_slab(vax, vbx, vcx, TRI4_CONST(r, inv_x, k_inv[0], scalar), r->neg_x, &t_lo, &t_hi);
-    tri4_slab(vay, vby, vcy, TRI4_CONST(r, inv_y, k_inv[1], scalar), r->neg_y, &t_lo, &t_hi);
+    tri4_slab(ax, bx, cx, TRI4_CONST(r, inv_x, k_inv[0], scalar), r->neg_x, &t_lo, &t_hi);
+    tri4_slab(ay, by, cy, TRI4_CONST(r, inv_y, k_inv[1], scalar), r->neg_y, &t_lo, &t_hi);
     const __m128 geom = _mm_andnot_ps(
         mixed, _mm_and_ps(_mm_and_ps(_mm_cmpge_ps(z_hi, TRI4_CONST(r, tmin, k_tmin, scalar)),
                                      _mm_cmplt_ps(z_lo, limit)),
@@ -486,11 +422,7 @@ static inline unsigned tri4_filter_lanes_depth(const struct tri4_ray *r,
         _mm_storeu_ps(out->t_lo, t_lo);
         _mm_storeu_ps(out->t_hi, t_hi);
         out->deferred = deferred;
-        if (reload) {
-            /* The size from before the second loads; a deferred lane's
-             * sheared x, y are tri4_lane_test's to compute. */
-            _mm_storeu_ps(out->size, size_early);
-        } else if (!any_hit) {
+        if (!any_hit) {
             /* isect_triangle's size: max(max(|Ax|, |Ay|), max(|Bx|,
              * |By|)), then max with max(|Cx|, |Cy|); maxps(a, b) is a > b
              * ? a : b. */
@@ -1183,10 +1115,6 @@ static inline int tri4_lane_test(const struct trace_ray *ray, const double *ray_
         if (any_hit) {
             size = tri4_lane_sheared(ray, p, l, sheared);
             have_size = 1;
-        } else if (TRI4_RELOAD_VERTS) {
-            /* The AVX2 table's 4-lane filter does not store them
-             * (TRI4_RELOAD_VERTS); the same floats from the packet. */
-            (void)tri4_lane_sheared(ray, p, l, sheared);
         } else {
             sheared[0] = lanes->Ax[l];
             sheared[1] = lanes->Ay[l];
