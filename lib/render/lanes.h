@@ -103,6 +103,102 @@ static inline __m256d lanes_log2_4_half(__m256d x)
 {
     return lanes_log2_4_scaled(x, 1);
 }
+
+/* Bound of lanes_log2_ratio_4_half where |log2(num / den)| / 2 <= 32
+ * (see there), absolute. */
+#define LANES_LOG2_RATIO_BOUND 0x1p-36
+
+/* lanes_log2_ratio_4_half's series coefficients: log2(e) / (2 j + 3),
+ * j = 0..4 (the terms z^3 .. z^11). */
+#define LANES_LOG2E 0x1.71547652b82fep+0
+#define LANES_LOG2_RATIO_K0 (LANES_LOG2E / 3.0)
+#define LANES_LOG2_RATIO_K1 (LANES_LOG2E / 5.0)
+#define LANES_LOG2_RATIO_K2 (LANES_LOG2E / 7.0)
+#define LANES_LOG2_RATIO_K3 (LANES_LOG2E / 9.0)
+#define LANES_LOG2_RATIO_K4 (LANES_LOG2E / 11.0)
+
+/*
+ * log2(num / den) / 2 of four pairs of positive normal doubles, within
+ * LANES_LOG2_RATIO_BOUND (2^-36) of the exact value where that is at
+ * most 32 in magnitude, without the quotient: for lod_fast_quad, whose
+ * x'^2 = num / den took a division on the chain before lanes_log2_4_half
+ * took its own (performance-log.md, round 57).  k holds the series'
+ * five coefficients (LANES_LOG2_RATIO_K0..K4; the test passes broken ones
+ * to show that its check catches them).
+ *
+ * num = 2^en a and den = 2^ed b with a, b in [1, 2) (the exponent and
+ * mantissa fields), so log2(num / den) = en - ed + log2(a / b), a / b in
+ * (1/2, 2).  The range reduction: a halved (and 1 added to the exponent)
+ * when a > b sqrt(2), b halved (1 taken off) when b > a sqrt(2) (never
+ * both); the halvings are exact, and with the products b sqrt(2), a
+ * sqrt(2) rounded the ratio r of the reduced a, b lies in [1 / (sqrt(2)
+ * (1 + 2^-53)), sqrt(2) (1 + 2^-53)], so z = (a - b) / (a + b) has |z| <=
+ * 0.1716, and a - b is exact by Sterbenz's lemma (r in [1/2, 2]).  Then
+ * ln r = 2 atanh(z) = 2 (z + z^3 / 3 + ...) (Abramowitz and Stegun 1964,
+ * 4.1.27), and the half log2 is atanh(z) / ln 2 = z log2(e) + z w (k0 +
+ * k1 w + ... + k4 w^4) with w = z^2 and kj = log2(e) / (2 j + 3).
+ *
+ * The error, in the result's units: the terms left out, |z|^13 / 13 / (1
+ * - z^2) / ln 2 < 2^-36.19 (lanes_log2_4's series stops at z^17 for
+ * 2^-48; here five terms instead of eight, as the fast path's margin
+ * allows: surface.c, lod_fast); z's two roundings (a + b and the
+ * quotient), 2^-52 of |z|, times 1 / ((1 - z^2) ln 2), below 2^-53.9; z
+ * log2(e)'s product and constant, below 2^-54; the series' roundings
+ * (all its terms positive, a few ulps of z w p < 0.0025), below 2^-58;
+ * and the two sums with the exponent, each half an ulp of a result below
+ * 32.25, 2^-48 each: below 2^-36.18 in all.  Where the exact value is
+ * beyond 32 in magnitude the error is that plus 2^-52 of the result,
+ * still far from any threshold the caller tests (0 and a last level of
+ * at most 2^31).  conformance/internal/shade_lanes checks the bound
+ * against long double over random pairs and around the reduction's
+ * boundaries, and that the check catches a coefficient left out or
+ * off by an eighth.
+ */
+static inline __m256d lanes_log2_ratio_4_half_k(__m256d num, __m256d den, const __m256d k[5])
+{
+    const __m256d one = _mm256_set1_pd(1.0), half = _mm256_set1_pd(0.5);
+    const __m256d mant = _mm256_castsi256_pd(_mm256_set1_epi64x(0x000fffffffffffffLL));
+    __m256d a = _mm256_or_pd(_mm256_and_pd(num, mant), one);
+    __m256d b = _mm256_or_pd(_mm256_and_pd(den, mant), one);
+    /* (en - ed) / 2 exactly: the difference of the biased exponent fields
+     * added to the low bits of 1.5 2^51 (whose ulp is 1/2), less 1.5
+     * 2^51. */
+    const __m256i ediff = _mm256_sub_epi64(_mm256_srli_epi64(_mm256_castpd_si256(num), 52),
+                                           _mm256_srli_epi64(_mm256_castpd_si256(den), 52));
+    const __m256d magic = _mm256_set1_pd(0x1.8p51);
+    __m256d e = _mm256_sub_pd(
+        _mm256_castsi256_pd(_mm256_add_epi64(ediff, _mm256_castpd_si256(magic))), magic);
+    const __m256d sqrt2 = _mm256_set1_pd(0x1.6a09e667f3bcdp+0);
+    const __m256d big = _mm256_cmp_pd(a, _mm256_mul_pd(b, sqrt2), _CMP_GT_OQ);
+    const __m256d small = _mm256_cmp_pd(b, _mm256_mul_pd(a, sqrt2), _CMP_GT_OQ);
+    a = _mm256_blendv_pd(a, _mm256_mul_pd(a, half), big);
+    b = _mm256_blendv_pd(b, _mm256_mul_pd(b, half), small);
+    /* +1/2 or -1/2 (big and small exclusive: one mask's bits or none). */
+    e = _mm256_add_pd(e, _mm256_or_pd(_mm256_and_pd(big, half),
+                                      _mm256_and_pd(small, _mm256_set1_pd(-0.5))));
+    const __m256d z = _mm256_div_pd(_mm256_sub_pd(a, b), _mm256_add_pd(a, b));
+    const __m256d w = _mm256_mul_pd(z, z);
+    /* Estrin's scheme as in lanes_log2_4 (Estrin 1960); log2(e) folded
+     * into the coefficients and z log2(e) added to e beside the series,
+     * so the chain after the quotient is five products and sums deep. */
+    const __m256d zw = _mm256_mul_pd(z, w);
+    const __m256d head = _mm256_add_pd(e, _mm256_mul_pd(z, _mm256_set1_pd(LANES_LOG2E)));
+    const __m256d w2 = _mm256_mul_pd(w, w);
+    const __m256d w4 = _mm256_mul_pd(w2, w2);
+    const __m256d p01 = _mm256_add_pd(k[0], _mm256_mul_pd(k[1], w));
+    const __m256d p23 = _mm256_add_pd(k[2], _mm256_mul_pd(k[3], w));
+    const __m256d p = _mm256_add_pd(_mm256_add_pd(p01, _mm256_mul_pd(p23, w2)),
+                                    _mm256_mul_pd(k[4], w4));
+    return _mm256_add_pd(head, _mm256_mul_pd(zw, p));
+}
+
+static inline __m256d lanes_log2_ratio_4_half(__m256d num, __m256d den)
+{
+    const __m256d k[5] = {_mm256_set1_pd(LANES_LOG2_RATIO_K0), _mm256_set1_pd(LANES_LOG2_RATIO_K1),
+                          _mm256_set1_pd(LANES_LOG2_RATIO_K2), _mm256_set1_pd(LANES_LOG2_RATIO_K3),
+                          _mm256_set1_pd(LANES_LOG2_RATIO_K4)};
+    return lanes_log2_ratio_4_half_k(num, den, k);
+}
 #endif
 
 #if defined(__AVX512F__) && defined(__AVX512DQ__) && !defined(RT_NO_SIMD)
