@@ -195,36 +195,6 @@ static inline __m256d lanes_log2_ratio_4_half_k(__m256d num, __m256d den, const 
     return _mm256_add_pd(head, _mm256_mul_pd(zw, p));
 }
 
-/* Variant (zn7 try 4): lanes_log2_ratio_4_half's series on one x, the
- * quotient taken by the caller: log2(x) / 2 for x positive normal. */
-static inline __m256d lanes_log2_4_half_short(__m256d x)
-{
-    const __m256d one = _mm256_set1_pd(1.0);
-    const __m256d mant = _mm256_castsi256_pd(_mm256_set1_epi64x(0x000fffffffffffffLL));
-    const __m256d a = _mm256_or_pd(_mm256_and_pd(x, mant), one);
-    const __m256i big =
-        _mm256_castpd_si256(_mm256_cmp_pd(a, _mm256_set1_pd(0x1.6a09e667f3bcdp+0), _CMP_GT_OQ));
-    const __m256d ar =
-        _mm256_castsi256_pd(_mm256_add_epi64(_mm256_castpd_si256(a), _mm256_slli_epi64(big, 52)));
-    const __m256i ebits = _mm256_sub_epi64(_mm256_srli_epi64(_mm256_castpd_si256(x), 52), big);
-    const __m256d e = _mm256_sub_pd(
-        _mm256_castsi256_pd(_mm256_or_si256(ebits, _mm256_castpd_si256(_mm256_set1_pd(0x1p51)))),
-        _mm256_set1_pd(0x1p51 + 511.5));
-    const __m256d z = _mm256_div_pd(_mm256_sub_pd(ar, one), _mm256_add_pd(ar, one));
-    const __m256d w = _mm256_mul_pd(z, z);
-    const __m256d zw = _mm256_mul_pd(z, w);
-    const __m256d head = _mm256_add_pd(e, _mm256_mul_pd(z, _mm256_set1_pd(LANES_LOG2E)));
-    const __m256d w2 = _mm256_mul_pd(w, w);
-    const __m256d p01 = _mm256_add_pd(_mm256_set1_pd(LANES_LOG2_RATIO_K0),
-                                      _mm256_mul_pd(_mm256_set1_pd(LANES_LOG2_RATIO_K1), w));
-    const __m256d p24 = _mm256_add_pd(
-        _mm256_add_pd(_mm256_set1_pd(LANES_LOG2_RATIO_K2),
-                      _mm256_mul_pd(_mm256_set1_pd(LANES_LOG2_RATIO_K3), w)),
-        _mm256_mul_pd(_mm256_set1_pd(LANES_LOG2_RATIO_K4), w2));
-    const __m256d p = _mm256_add_pd(p01, _mm256_mul_pd(p24, w2));
-    return _mm256_add_pd(head, _mm256_mul_pd(zw, p));
-}
-
 static inline __m256d lanes_log2_ratio_4_half(__m256d num, __m256d den)
 {
     const __m256d k[5] = {_mm256_set1_pd(LANES_LOG2_RATIO_K0), _mm256_set1_pd(LANES_LOG2_RATIO_K1),

@@ -976,7 +976,7 @@ SURFACE_INLINE void lod_fast_quad_lanes(const struct surface_lod_fast *f, const 
  */
 SURFACE_INLINE int lod_fast_decide_quad(__m256d num, __m256d den, __m256d last, float lambda[4])
 {
-    const __m256d lg = lanes_log2_4_half_short(_mm256_div_pd(num, den));
+    const __m256d lg = lanes_log2_ratio_4_half(num, den);
     const __m256d margin = _mm256_set1_pd(LOD_FAST_ABSOLUTE);
     const __m256d lo = _mm256_sub_pd(lg, margin), hi = _mm256_add_pd(lg, margin);
     const __m128 lg_f = _mm256_cvtpd_ps(lg);
