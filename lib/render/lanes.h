@@ -129,10 +129,10 @@ static inline __m256d lanes_log2_4_half(__m256d x)
  * num = 2^en a and den = 2^ed b with a, b in [1, 2) (the exponent and
  * mantissa fields), so log2(num / den) = en - ed + log2(a / b), a / b in
  * (1/2, 2).  The range reduction: a halved (and 1 added to the exponent)
- * when a > b sqrt(2), doubled (1 taken off) when b > a sqrt(2) (never
- * both); both are exact, and with the products b sqrt(2), a sqrt(2)
- * rounded the ratio r of the reduced a to b lies in [1 / (sqrt(2) (1 +
- * 2^-53)), sqrt(2) (1 + 2^-53)], so z = (a - b) / (a + b) has |z| <=
+ * when a > b sqrt(2), b halved (1 taken off) when b > a sqrt(2) (never
+ * both); the halvings are exact, and with the products b sqrt(2), a
+ * sqrt(2) rounded the ratio r of the reduced a, b lies in [1 / (sqrt(2)
+ * (1 + 2^-53)), sqrt(2) (1 + 2^-53)], so z = (a - b) / (a + b) has |z| <=
  * 0.1716, and a - b is exact by Sterbenz's lemma (r in [1/2, 2]).  Then
  * ln r = 2 atanh(z) = 2 (z + z^3 / 3 + ...) (Abramowitz and Stegun 1964,
  * 4.1.27), and the half log2 is atanh(z) / ln 2 = z log2(e) + z w (k0 +
