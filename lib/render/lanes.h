@@ -156,42 +156,39 @@ static inline __m256d lanes_log2_4_half(__m256d x)
  */
 static inline __m256d lanes_log2_ratio_4_half_k(__m256d num, __m256d den, const __m256d k[5])
 {
-    const __m256d one = _mm256_set1_pd(1.0);
+    const __m256d one = _mm256_set1_pd(1.0), half = _mm256_set1_pd(0.5);
     const __m256d mant = _mm256_castsi256_pd(_mm256_set1_epi64x(0x000fffffffffffffLL));
-    const __m256d a = _mm256_or_pd(_mm256_and_pd(num, mant), one);
-    const __m256d b = _mm256_or_pd(_mm256_and_pd(den, mant), one);
-    /* The range reduction in the integers: a compare's mask is -1 where
-     * true, so step = big - small is -1 (halve a), +1 (double a) or 0;
-     * step << 52 added to a's bits adds step to its exponent field (a
-     * stays normal: in [1/2, 2 sqrt(2))), and en - ed - step is the
-     * exponent left to add. */
-    const __m256d sqrt2 = _mm256_set1_pd(0x1.6a09e667f3bcdp+0);
-    const __m256i big = _mm256_castpd_si256(_mm256_cmp_pd(a, _mm256_mul_pd(b, sqrt2), _CMP_GT_OQ));
-    const __m256i small =
-        _mm256_castpd_si256(_mm256_cmp_pd(b, _mm256_mul_pd(a, sqrt2), _CMP_GT_OQ));
-    const __m256i step = _mm256_sub_epi64(big, small);
-    const __m256d ar =
-        _mm256_castsi256_pd(_mm256_add_epi64(_mm256_castpd_si256(a), _mm256_slli_epi64(step, 52)));
-    const __m256i ediff =
-        _mm256_sub_epi64(_mm256_sub_epi64(_mm256_srli_epi64(_mm256_castpd_si256(num), 52),
-                                          _mm256_srli_epi64(_mm256_castpd_si256(den), 52)),
-                         step);
-    /* (en - ed - step) / 2 exactly: added to the low bits of 1.5 2^51
-     * (whose ulp is 1/2), less 1.5 2^51. */
+    __m256d a = _mm256_or_pd(_mm256_and_pd(num, mant), one);
+    __m256d b = _mm256_or_pd(_mm256_and_pd(den, mant), one);
+    /* (en - ed) / 2 exactly: the difference of the biased exponent fields
+     * added to the low bits of 1.5 2^51 (whose ulp is 1/2), less 1.5
+     * 2^51. */
+    const __m256i ediff = _mm256_sub_epi64(_mm256_srli_epi64(_mm256_castpd_si256(num), 52),
+                                           _mm256_srli_epi64(_mm256_castpd_si256(den), 52));
     const __m256d magic = _mm256_set1_pd(0x1.8p51);
-    const __m256d e = _mm256_sub_pd(
+    __m256d e = _mm256_sub_pd(
         _mm256_castsi256_pd(_mm256_add_epi64(ediff, _mm256_castpd_si256(magic))), magic);
-    const __m256d z = _mm256_div_pd(_mm256_sub_pd(ar, b), _mm256_add_pd(ar, b));
+    const __m256d sqrt2 = _mm256_set1_pd(0x1.6a09e667f3bcdp+0);
+    const __m256d big = _mm256_cmp_pd(a, _mm256_mul_pd(b, sqrt2), _CMP_GT_OQ);
+    const __m256d small = _mm256_cmp_pd(b, _mm256_mul_pd(a, sqrt2), _CMP_GT_OQ);
+    a = _mm256_blendv_pd(a, _mm256_mul_pd(a, half), big);
+    b = _mm256_blendv_pd(b, _mm256_mul_pd(b, half), small);
+    /* +1/2 or -1/2 (big and small exclusive: one mask's bits or none). */
+    e = _mm256_add_pd(e, _mm256_or_pd(_mm256_and_pd(big, half),
+                                      _mm256_and_pd(small, _mm256_set1_pd(-0.5))));
+    const __m256d z = _mm256_div_pd(_mm256_sub_pd(a, b), _mm256_add_pd(a, b));
     const __m256d w = _mm256_mul_pd(z, z);
-    /* log2(e) folded into the coefficients and z log2(e) added to e beside
-     * the series; the series (k0 + k1 w) + w^2 ((k2 + k3 w) + k4 w^2). */
+    /* Estrin's scheme as in lanes_log2_4 (Estrin 1960); log2(e) folded
+     * into the coefficients and z log2(e) added to e beside the series,
+     * so the chain after the quotient is five products and sums deep. */
     const __m256d zw = _mm256_mul_pd(z, w);
     const __m256d head = _mm256_add_pd(e, _mm256_mul_pd(z, _mm256_set1_pd(LANES_LOG2E)));
     const __m256d w2 = _mm256_mul_pd(w, w);
+    const __m256d w4 = _mm256_mul_pd(w2, w2);
     const __m256d p01 = _mm256_add_pd(k[0], _mm256_mul_pd(k[1], w));
-    const __m256d p24 = _mm256_add_pd(_mm256_add_pd(k[2], _mm256_mul_pd(k[3], w)),
-                                      _mm256_mul_pd(k[4], w2));
-    const __m256d p = _mm256_add_pd(p01, _mm256_mul_pd(p24, w2));
+    const __m256d p23 = _mm256_add_pd(k[2], _mm256_mul_pd(k[3], w));
+    const __m256d p = _mm256_add_pd(_mm256_add_pd(p01, _mm256_mul_pd(p23, w2)),
+                                    _mm256_mul_pd(k[4], w4));
     return _mm256_add_pd(head, _mm256_mul_pd(zw, p));
 }
 
