@@ -99,7 +99,7 @@ static int lod_fast_lanes(const struct surface_lod *l, int level_count, const fl
         }
         const __m256d w = _mm256_set_pd(width[3], width[2], width[1], width[0]);
         struct lod_fast_broadcast b;
-        lod_fast_quad_lanes(&f, l->n, level_count, &b);
+        lod_fast_quad_lanes(&f, l->n, lod_top(level_count), &b);
         mask = lod_fast_quad(&b, d, g, w, fast);
     }
     for (int i = 0; i < 4; i++)

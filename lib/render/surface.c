@@ -946,11 +946,10 @@ struct lod_fast_broadcast {
 };
 
 SURFACE_INLINE void lod_fast_quad_lanes(const struct surface_lod_fast *f, const double unit[3],
-                                        int level_count, struct lod_fast_broadcast *b)
+                                        double top, struct lod_fast_broadcast *b)
 {
-    /* log2(lod_top(level_count)) = level_count + 1, exactly (no libm
-     * call: ilogb here was 8.3 M instructions in six frames). */
-    b->last = _mm256_set1_pd((double)(level_count + 1));
+    /* lod_top is 2^(level_count + 1): ilogb gives its exponent exactly. */
+    b->last = _mm256_set1_pd((double)ilogb(top));
     for (int k = 0; k < 3; k++) {
         b->n[k] = _mm256_set1_pd(unit[k]);
         b->m0[k] = _mm256_set1_pd(f->m[0][k]);
@@ -2357,7 +2356,7 @@ int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene
 #endif
             struct lod_fast_broadcast fast_lanes;
             if (use_fast)
-                lod_fast_quad_lanes(&c->fast, tri->n, tx->level_count, &fast_lanes);
+                lod_fast_quad_lanes(&c->fast, tri->n, top, &fast_lanes);
             for (int h = 0; h < TRACE_PACKET / 4; h++) {
 #define HALF(v) _mm256_cvtps_pd(h ? _mm256_extractf128_ps(v, 1) : _mm256_castps256_ps128(v))
                 __m256d d[3], gd[3];
