@@ -38,14 +38,6 @@
  * shade_lod_fast_avx512_unit) where that unit and the CPU are there.
  * Skipped where the unit is absent or the CPU has no AVX2.
  *
- * The half log2 of a ratio that lod_fast_quad takes since round 57
- * (lanes_log2_ratio_4_half, through shade_log2_ratio_quad_avx2_unit)
- * within 2^-36 (LANES_LOG2_RATIO_BOUND) of log2l's over random pairs
- * whose ratios reach 2^-63 .. 2^63 and ratios at and a few ulps around
- * its range reduction's boundaries; and the same check run on the series
- * broken (its last term left out, or that term's coefficient an eighth
- * off) must report each beyond the bound.
- *
  * Internal test (links the static library).  Non-zero exit on failure.
  */
 #include <math.h>
@@ -228,66 +220,6 @@ static int log2_bound8(shade_log2_oct_half_fn log2_oct_half, shade_log2_quad_fn 
     return failures;
 }
 
-/* The largest |lanes_log2_ratio_4_half(num, den) - log2l(num / den) / 2|
- * with the series as the library has it (fault 0) or broken (fault 1:
- * the z^11 term left out, 2: its coefficient an eighth too large) over pairs whose
- * half log2 is at most 32 in magnitude: random mantissas and exponents,
- * and ratios at and around the range reduction's boundaries (sqrt(2),
- * 1 / sqrt(2), 1, 2 and 1 / 2, a few ulps either side), where |z| is
- * largest or the halving flips. */
-static long double log2_ratio_worst(shade_log2_ratio_quad_fn log2_ratio, int fault)
-{
-    const double edges[] = {0x1.6a09e667f3bcdp+0, 0x1.6a09e667f3bcdp-1, 1.0, 2.0, 0.5};
-    long double worst = 0.0L;
-    double num[4], den[4], got[4];
-    for (long n = 0; n < 400000; n++) {
-        for (int i = 0; i < 4; i++) {
-            const uint64_t mb = ((uint64_t)next() << 32 | next()) & 0x000fffffffffffffull;
-            const uint64_t db = (uint64_t)(1023 - 40 + (int)(next() % 81u)) << 52 | mb;
-            memcpy(&den[i], &db, sizeof(double));
-            if (n % 2 == 0) {
-                /* A random ratio of 2^-63 .. 2^63. */
-                const uint64_t ma = ((uint64_t)next() << 32 | next()) & 0x000fffffffffffffull;
-                const uint64_t eb = (db >> 52) - 63 + next() % 127u;
-                const uint64_t nb = eb << 52 | ma;
-                memcpy(&num[i], &nb, sizeof(double));
-            } else {
-                /* An edge, a few ulps off, times 2^-60 .. 2^60. */
-                const double r = edges[next() % 5u] * (1.0 + (double)((int)(next() % 9u) - 4) * 0x1p-52);
-                num[i] = ldexp(den[i] * r, (int)(next() % 121u) - 60);
-            }
-        }
-        log2_ratio(num, den, fault, got);
-        for (int i = 0; i < 4; i++) {
-            const long double want = 0.5L * (log2l((long double)num[i]) - log2l((long double)den[i]));
-            const long double err = fabsl((long double)got[i] - want);
-            if (!(err <= worst)) /* a NaN too */
-                worst = isnan(err) ? INFINITY : err;
-        }
-    }
-    return worst;
-}
-
-/* lanes_log2_ratio_4_half within LANES_LOG2_RATIO_BOUND (2^-36), and
- * the check able to see a broken series: the z^11 term left out, or its
- * coefficient an eighth off, must each exceed the bound. */
-static int log2_ratio_bound(shade_log2_ratio_quad_fn log2_ratio)
-{
-    const long double bound = 0x1p-36L;
-    int failures = 0;
-    const long double worst = log2_ratio_worst(log2_ratio, 0);
-    printf("shade_lanes: the ratio's half log2's largest error %Lg (2^%.2f)\n", worst,
-           worst > 0.0L ? (double)log2l(worst) : -INFINITY);
-    failures += !CHECKF(worst <= bound, "half log2 of a ratio: off by %Lg", worst);
-    const long double dropped = log2_ratio_worst(log2_ratio, 1);
-    const long double eighth = log2_ratio_worst(log2_ratio, 2);
-    printf("shade_lanes: with z^11 left out 2^%.2f, its coefficient an eighth off 2^%.2f\n",
-           (double)log2l(dropped), (double)log2l(eighth));
-    failures += !CHECKF(dropped > bound && eighth > bound,
-                        "the check misses a broken series (%Lg, %Lg)", dropped, eighth);
-    return failures;
-}
-
 /* A random direction component of [-1, 1]. */
 static double any_unit(void)
 {
@@ -396,7 +328,6 @@ static int lod_fast_bound(shade_lod_fast_fn lod_fast)
 int main(void)
 {
     const shade_log2_quad_fn log2_quad = shade_log2_quad_avx2_unit();
-    const shade_log2_ratio_quad_fn log2_ratio = shade_log2_ratio_quad_avx2_unit();
     const shade_lod_fast_fn lod_fast = shade_lod_fast_avx2_unit();
     const shade_texture_lod8_fn lod8 = shade_texture_lod8_avx2_unit();
     const shade_texture_lod8_fn steps = shade_texture_lod8_steps_avx2_unit();
@@ -405,7 +336,7 @@ int main(void)
 #else
     const int cpu = 0;
 #endif
-    if (!lod8 || !steps || !log2_quad || !log2_ratio || !lod_fast || !cpu) {
+    if (!lod8 || !steps || !log2_quad || !lod_fast || !cpu) {
         printf("shade_lanes: skipped (no AVX2 unit or CPU)\n");
         return 0;
     }
@@ -493,9 +424,8 @@ int main(void)
     }
     scene_textures_release(&tab);
     printf("shade_lanes: %d lanes compared, %d blocks refused\n", lanes, refused);
-    /* The ratio's log2 (round 57) and the AVX-512 copy's log2, last:
-     * their random doubles leave the other checks' as they were. */
-    failures += log2_ratio_bound(log2_ratio);
+    /* The AVX-512 copy's log2, last: its random doubles leave the other
+     * checks' as they were. */
     const shade_log2_oct_half_fn log2_oct_half = shade_log2_oct_half_avx512_unit();
     if (log2_oct_half && cpu512)
         failures += log2_bound8(log2_oct_half, log2_quad);

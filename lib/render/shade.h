@@ -225,14 +225,6 @@ shade_texture_lod8_fn shade_texture_lod8_steps_avx2_unit(void);
  * its bound; NULL where it is absent. */
 typedef void (*shade_log2_quad_fn)(const double x[4], double out[4], double half[4]);
 shade_log2_quad_fn shade_log2_quad_avx2_unit(void);
-/* That unit's half log2 of four ratios (render/lanes.h,
- * lanes_log2_ratio_4_half: log2(num / den) / 2 into out), for the test of
- * its bound; fault 1 leaves the series' last term out and fault 2 makes
- * its coefficient an eighth too large, for the test that the check
- * catches a broken series (0: the library's).  NULL where it is absent. */
-typedef void (*shade_log2_ratio_quad_fn)(const double num[4], const double den[4], int fault,
-                                         double out[4]);
-shade_log2_ratio_quad_fn shade_log2_ratio_quad_avx2_unit(void);
 /* The AVX-512 unit's eight-lane halved log2 (lanes_log2_8_half into half),
  * for the test of its own bound; NULL where that unit is absent. */
 typedef void (*shade_log2_oct_half_fn)(const double x[8], double half[8]);

@@ -66,25 +66,6 @@ shade_log2_quad_fn shade_log2_quad_avx2_unit(void)
     return log2_quad;
 }
 
-static void log2_ratio_quad(const double num[4], const double den[4], int fault, double out[4])
-{
-    double k[5] = {LANES_LOG2_RATIO_K0, LANES_LOG2_RATIO_K1, LANES_LOG2_RATIO_K2,
-                   LANES_LOG2_RATIO_K3, LANES_LOG2_RATIO_K4};
-    if (fault == 1)
-        k[4] = 0.0;
-    if (fault == 2)
-        k[4] *= 1.125;
-    const __m256d kv[5] = {_mm256_set1_pd(k[0]), _mm256_set1_pd(k[1]), _mm256_set1_pd(k[2]),
-                           _mm256_set1_pd(k[3]), _mm256_set1_pd(k[4])};
-    _mm256_storeu_pd(out,
-                     lanes_log2_ratio_4_half_k(_mm256_loadu_pd(num), _mm256_loadu_pd(den), kv));
-}
-
-shade_log2_ratio_quad_fn shade_log2_ratio_quad_avx2_unit(void)
-{
-    return log2_ratio_quad;
-}
-
 static int lod_fast_lanes(const struct surface_lod *l, int level_count, const float dir[4][3],
                           const float ng[4][3], const float width[4], float fast[4], float ref[4])
 {
@@ -130,11 +111,6 @@ shade_texture_lod8_fn shade_texture_lod8_steps_avx2_unit(void)
 }
 
 shade_log2_quad_fn shade_log2_quad_avx2_unit(void)
-{
-    return NULL;
-}
-
-shade_log2_ratio_quad_fn shade_log2_ratio_quad_avx2_unit(void)
 {
     return NULL;
 }

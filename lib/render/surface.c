@@ -594,8 +594,7 @@ static inline struct lod_bounds lod_bounds(__m256d top, double relative, int squ
 }
 
 /* The levels of detail of four footprints x where they are decided
- * (lod_quad; lod_fast_quad took the `squared` form until round 57, and
- * now lod_fast_decide_quad): -inf below 1 - relative, +inf beyond top (1
+ * (lod_quad, lod_fast_quad): -inf below 1 - relative, +inf beyond top (1
  * + relative), and between 1 + relative and top (1 - relative) the float
  * of lanes_log2_4(x) when every value within `absolute` of it rounds to
  * that float.  Writes lambda[i] of every lane and returns the mask of the
@@ -843,11 +842,10 @@ SURFACE_INLINE void lod_quad_lanes(const struct surface_lod *const l[4], int sha
  * far above the roundings between the squares and the hypots), -inf for
  * x <= 1 and +inf from x >= top on.  Here x' = sqrt(y), y = w^2 max(|M
  * d|^2 |d|^2, |M (n x d)|^2 (g . d)^2) / (|n x d|^2 (g . d)^2): one
- * division a lane (the AVX2 copy's: the log2's, lod_fast_decide_quad),
- * M once a triangle part (lod_fast_init, kept in the tile's cache
- * beside the triangle part), and the square root not taken (the
- * AVX-512 copy's lod_decide_oct: y's tests against the squared bounds
- * and log2(y) / 2; x' below is the exact sqrt(y)).
+ * division a lane, M once a triangle part (lod_fast_init, kept in the
+ * tile's cache beside the triangle part), and the square root not taken
+ * (lod_decide_quad's `squared`: y's tests against the squared bounds and
+ * log2(y) / 2; x' below is the exact sqrt(y)).
  *
  * The margin.  Both x' and lod_ray's x are within delta x of the exact
  * value of these expressions (the same inputs: d, g, width and the
@@ -872,24 +870,15 @@ SURFACE_INLINE void lod_quad_lanes(const struct surface_lod *const l[4], int sha
  * along_len > 1e-9, the cosine above LOD_MIN_COSINE), |d|^2 in [1/4, 4]
  * and its squares in the normal range (an underflow's absolute error is
  * then negligible): delta < 2^-41 129 < 2^-33.98, x' within 2^-32.97 of
- * x.  The AVX2 copy takes no quotient (lod_fast_decide_quad, round 57):
- * its lg = lanes_log2_ratio_4_half of y's numerator and denominator is
- * within 2^-36 of log2(x') with x' the exact square root of their exact
- * quotient (the bound above less the quotient's rounding), so lg is
- * within 1.443 2^-32.97 + 2^-36 < 2^-32.31 of log2(x), and of glibc's
- * log2(x) within that + 2^-47 (2 ulps) < 2^-32.3: lg -+ LOD_FAST_ABSOLUTE
- * below 0 or beyond log2(top) decides the side, and a log2 whose
- * LOD_FAST_ABSOLUTE neighbourhood rounds to one float gives lod_ray's
- * float (rounding is monotonic).  The AVX-512 copy (lod_fast_oct) takes
- * the quotient y and lanes_log2_8_half(y), within 2^-49 of log2(x'):
- * log2(x') within 1.443 2^-32.97 + 2^-49 + 2^-47 < 2^-32.4 of glibc's
- * log2(x), and x' beyond 1 or top by LOD_FAST_RELATIVE (less 2^-65, its
- * squared tests) decides the side.  Undecided lanes (a footprint near 1
- * or the last level, a log2 within 2^-32 of a float's rounding boundary,
- * a ray within a few degrees of the normal) take lod_quad, as before.
+ * x, and log2(x') within 1.443 2^-32.97 + lanes_log2_4(y) / 2's 2^-49 +
+ * glibc's 2 ulps (2^-47) < 2^-32.4 of glibc's log2(x).  So x' beyond 1 or
+ * top by LOD_FAST_RELATIVE (less 2^-65, lod_decide_quad's squared tests)
+ * decides the side, and a log2 whose LOD_FAST_ABSOLUTE
+ * neighbourhood rounds to one float gives lod_ray's float (rounding is
+ * monotonic).  Undecided lanes (a footprint near 1 or the last level, a
+ * log2 within 2^-32 of a float's rounding boundary, a ray within a few
+ * degrees of the normal) take lod_quad, as before.
  */
-/* lod_fast_oct's relative margin on y's side tests (the AVX2 copy tests
- * the log2, lod_fast_decide_quad). */
 #define LOD_FAST_RELATIVE 0x1p-32
 #define LOD_FAST_ABSOLUTE 0x1p-32
 /* (kappa / (sin cos))^2 <= 64^2. */
@@ -942,56 +931,19 @@ static void lod_fast_init(const struct surface_lod *l, struct surface_lod_fast *
 struct lod_fast_broadcast {
     __m256d n[3], m0[3], m1[3];
     __m256d sin2;
-    __m256d last; /* log2 of the texture's lod_top (an integer) */
+    struct lod_bounds bounds; /* squared, of the texture's lod_top */
 };
 
 SURFACE_INLINE void lod_fast_quad_lanes(const struct surface_lod_fast *f, const double unit[3],
                                         double top, struct lod_fast_broadcast *b)
 {
-    /* lod_top is 2^(level_count + 1): ilogb gives its exponent exactly. */
-    b->last = _mm256_set1_pd((double)ilogb(top));
+    b->bounds = lod_bounds(_mm256_set1_pd(top * top), LOD_FAST_RELATIVE, 1);
     for (int k = 0; k < 3; k++) {
         b->n[k] = _mm256_set1_pd(unit[k]);
         b->m0[k] = _mm256_set1_pd(f->m[0][k]);
         b->m1[k] = _mm256_set1_pd(f->m[1][k]);
     }
     b->sin2 = _mm256_set1_pd(f->sin2);
-}
-
-/*
- * lod_fast_quad's decision from y = num / den (x'^2, below) without the
- * quotient: lg = lanes_log2_ratio_4_half(num, den), within 2^-36 of
- * log2(x') (x' = sqrt(num / den) exactly; its bound is lod_fast's, which
- * counted the quotient's rounding), and the same test decides the sides
- * and the rounding.  lo = lg - LOD_FAST_ABSOLUTE and hi = lg +
- * LOD_FAST_ABSOLUTE (each rounded, and rounding is monotonic) bracket
- * log2(x) of lod_ray's x (lod_fast: within 2^-32.31 of lg): hi < 0 is x
- * < 1 (-inf), lo > last is x > top (+inf), lo > 0 and hi < last is 1 <
- * x < top, where lo and hi rounding to one float f makes f the float of
- * glibc's log2(x), as lod_decide_quad's test.  The thresholds 0 and last
- * (at most 31) are exact.  Round 56 (zn5) measured lod_fast_quad at 155
- * instructions a quad with two dependent divisions (x'^2, then the
- * log2's z); this takes one, and five series terms instead of eight.
- */
-SURFACE_INLINE int lod_fast_decide_quad(__m256d num, __m256d den, __m256d last, float lambda[4])
-{
-    const __m256d lg = lanes_log2_ratio_4_half(num, den);
-    const __m256d margin = _mm256_set1_pd(LOD_FAST_ABSOLUTE);
-    const __m256d lo = _mm256_sub_pd(lg, margin), hi = _mm256_add_pd(lg, margin);
-    const __m128 lg_f = _mm256_cvtpd_ps(lg);
-    const __m128 exact = _mm_and_ps(_mm_cmpeq_ps(_mm256_cvtpd_ps(lo), lg_f),
-                                    _mm_cmpeq_ps(_mm256_cvtpd_ps(hi), lg_f));
-    const __m256d zero = _mm256_setzero_pd();
-    const __m256d below = _mm256_cmp_pd(hi, zero, _CMP_LT_OQ);
-    const __m256d beyond = _mm256_cmp_pd(lo, last, _CMP_GT_OQ);
-    const __m256d inside = _mm256_and_pd(_mm256_cmp_pd(lo, zero, _CMP_GT_OQ),
-                                         _mm256_cmp_pd(hi, last, _CMP_LT_OQ));
-    const __m128 below_ps = quad_mask_ps(below), beyond_ps = quad_mask_ps(beyond);
-    _mm_storeu_ps(lambda,
-                  _mm_blendv_ps(_mm_blendv_ps(lg_f, _mm_set1_ps(INFINITY), beyond_ps),
-                                _mm_set1_ps(-INFINITY), below_ps));
-    return _mm256_movemask_pd(_mm256_or_pd(below, beyond)) |
-           (_mm256_movemask_pd(inside) & _mm_movemask_ps(exact));
 }
 
 /* lod_quad's lambdas of four hits on b's triangle (d their directions,
@@ -1012,18 +964,15 @@ SURFACE_INLINE int lod_fast_quad(const struct lod_fast_broadcast *b, const __m25
     const __m256d q = _mm256_add_pd(_mm256_mul_pd(v0, v0), _mm256_mul_pd(v1, v1));
     const __m256d ww = _mm256_mul_pd(width, width);
     const __m256d num = _mm256_max_pd(_mm256_mul_pd(p, dd), _mm256_mul_pd(q, gg));
-    /* x'^2 = (ww num) / (s gg), the quotient not taken: its half log2
-     * straight from the two (lod_fast_decide_quad).  Both are positive
-     * normal doubles in every lane the conditions below keep: ww num in
-     * [2^-702, 2^702], s gg in [sin2 / 16, 17] (|d|^2 <= 4, g a unit
-     * normal). */
-    const __m256d den = _mm256_mul_pd(s, gg);
+    /* x'^2: lod_decide_quad takes the square (no square root). */
+    const __m256d x2 = _mm256_div_pd(_mm256_mul_pd(ww, num), _mm256_mul_pd(s, gg));
     /* The bound's conditions (NaNs fail every one); 1 / cos <= 64 follows
      * from kappa / (sin cos) <= 64 with kappa >= 1 and sin <= 1. */
     const __m256d tiny = _mm256_set1_pd(0x1p-500), huge = _mm256_set1_pd(0x1p500);
     __m256d ok = _mm256_and_pd(_mm256_cmp_pd(dd, _mm256_set1_pd(0.25), _CMP_GE_OQ),
                                _mm256_cmp_pd(dd, _mm256_set1_pd(4.0), _CMP_LE_OQ));
-    ok = _mm256_and_pd(ok, _mm256_cmp_pd(den, _mm256_mul_pd(b->sin2, _mm256_mul_pd(dd, dd)),
+    ok = _mm256_and_pd(ok, _mm256_cmp_pd(_mm256_mul_pd(s, gg),
+                                         _mm256_mul_pd(b->sin2, _mm256_mul_pd(dd, dd)),
                                          _CMP_GE_OQ));
     ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(ww, _mm256_set1_pd(0x1p-200), _CMP_GE_OQ),
                                          _mm256_cmp_pd(ww, _mm256_set1_pd(0x1p200), _CMP_LE_OQ)));
@@ -1032,7 +981,7 @@ SURFACE_INLINE int lod_fast_quad(const struct lod_fast_broadcast *b, const __m25
     ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(q, tiny, _CMP_GE_OQ),
                                          _mm256_cmp_pd(q, huge, _CMP_LE_OQ)));
     return _mm256_movemask_pd(ok) &
-           lod_fast_decide_quad(_mm256_mul_pd(ww, num), den, b->last, lambda);
+           lod_decide_quad(x2, &b->bounds, LOD_FAST_ABSOLUTE, 1, lambda);
 }
 
 #if defined(SURFACE_OCTS)
