@@ -676,22 +676,20 @@ typedef struct {
  * quad_reduce, which zeroes the non-finite and refuses the rest).
  * CLAMP: the min and max of a float are that float.  REPEAT: x - floor(x)
  * is exact in both types for x >= 0 (a float's fraction has its
- * bits), for x <= -1 (x + n in [0, 1) on x's grid, at least 2^-23:
- * 23 bits at most) and for x in [-1, -1/2) (x + 1 on x's grid 2^-24),
- * and then below 1, so quad_reduce's 1 - 2^-53 does not arise; -0
- * gives +0 in both.  For x in [-1/2, 0), x + 1 may need more than 24
- * bits: the float r = RN(x + 1) is then in [1/2, 1], r - 1 is exact
- * (Sterbenz) and differs from x by r's error, so the test r + floor(x)
- * == x refuses exactly the lanes where r is not x + 1 (quad_reduce rounds
- * those in double). */
+ * bits) and for x <= -1 (x + n in [0, 1) on x's grid, at least 2^-23:
+ * 23 bits at most), and below 1, so quad_reduce's 1 - 2^-53 does not
+ * arise; -0 gives +0 in both.  Between -1 and 0, x + 1 can need more
+ * than 24 bits (and quad_reduce rounds it in double), so such a block
+ * is refused. */
 static inline int octo_reduce_single(__m256 x, enum scene_texture_wrap wrap, __m256 *out)
 {
     const __m256 magnitude = _mm256_andnot_ps(_mm256_set1_ps(-0.0f), x);
     __m256 ok = _mm256_cmp_ps(magnitude, _mm256_set1_ps(0x1p31f), _CMP_LT_OQ);
     if (wrap == SCENE_WRAP_REPEAT) {
-        const __m256 fl = _mm256_floor_ps(x);
-        *out = _mm256_sub_ps(x, fl);
-        ok = _mm256_and_ps(ok, _mm256_cmp_ps(_mm256_add_ps(*out, fl), x, _CMP_EQ_OQ));
+        ok = _mm256_andnot_ps(_mm256_and_ps(_mm256_cmp_ps(x, _mm256_setzero_ps(), _CMP_LT_OQ),
+                                            _mm256_cmp_ps(x, _mm256_set1_ps(-1.0f), _CMP_GT_OQ)),
+                              ok);
+        *out = _mm256_sub_ps(x, _mm256_floor_ps(x));
     } else {
         *out = _mm256_min_ps(_mm256_max_ps(x, _mm256_set1_ps(-1.0f)), _mm256_set1_ps(2.0f));
     }
