@@ -20,8 +20,7 @@
  * power-of-two sizes down to 1x1, REPEAT and CLAMP_TO_EDGE on each axis,
  * levels of detail at and around every level boundary, the last level,
  * magnifications, zeros, infinities and NaN, coordinates near texel
- * edges, negative, large and non-finite; half the blocks with every
- * lane on one level and coordinates as a frame's (frame_coord).  A block it refuses (a
+ * edges, negative, large and non-finite.  A block it refuses (a
  * coordinate of 2^31 or more, other filters) must be refused whole.
  * The same lookups in the frame pipeline's two steps
  * (scene_texture_prefetch_lod8 and scene_texture_finish_lod8, through
@@ -119,34 +118,6 @@ static float any_coord(int n)
     }
     default:
         return uniform(-3.0f, 3.0f);
-    }
-}
-
-/* A coordinate of the kind most of a frame's blocks have, which
- * texture.c's float reduction takes (octo_reduce_single: >= 0, <= -1):
- * in [0, 1], texel edges of any level and their neighbours, tiny ones
- * (r n - 1/2 not a float: level_axis_single's own refusal), values of
- * [-3, -1]; now and then one in (-1, 0), which sends its block to the
- * double reduction. */
-static float frame_coord(int n)
-{
-    switch (next() % 16) {
-    case 0:
-        return uniform(-0.999f, -0.001f);
-    case 1:
-    case 2:
-        return ldexpf(1.0f, -(int)(next() % 40)) * ((next() & 1) ? 1.0f : 3.0f);
-    case 3:
-    case 4:
-    case 5: {
-        const float e = (float)(int)(next() % (unsigned)(2 * n + 1)) / (float)n;
-        const int step = (int)(next() % 3) - 1;
-        return step < 0 ? nextafterf(e, -INFINITY) : step > 0 ? nextafterf(e, INFINITY) : e;
-    }
-    case 6:
-        return uniform(-3.0f, -1.0f);
-    default:
-        return uniform(0.0f, 1.0f);
     }
 }
 
@@ -409,17 +380,6 @@ int main(void)
                 lambda[i] = any_lambda(q);
                 s[i] = any_coord(n);
                 t[i] = any_coord(n);
-            }
-            if (block & 1) {
-                /* Half the blocks as a frame's: every lane on one level
-                 * (or one level pair) and frame_coord's coordinates. */
-                const int level = (int)(next() % (unsigned)(q + 2)) - 1;
-                for (int i = 0; i < 8; i++) {
-                    lambda[i] = level < 0 ? -uniform(0.0f, 2.0f)
-                                          : (float)level + uniform(0.0f, 0.999f);
-                    s[i] = frame_coord(n);
-                    t[i] = frame_coord(n);
-                }
             }
             memset(rgb, 0x7f, sizeof(rgb));
             const int took = lod8(tex, lambda, s, t, rgb);

@@ -662,64 +662,7 @@ typedef __m512d texture_reduced8;
 #else
 typedef struct {
     __m256d half[2]; /* points 0-3 and 4-7 */
-    /* The same eight values as floats (octo_reduce_single), where
-     * in_single says every one of them is a float; half[] is then not
-     * set (bilinear8_offsets converts single, exact). */
-    __m256 single;
-    int in_single;
 } texture_reduced8;
-
-/* quad_reduce of eight coordinates x at once in float lanes, where that
- * gives each lane quad_reduce's double exactly; 0 where it may not
- * (*out then not to be used).  It takes blocks whose every coordinate is below
- * 2^31 in magnitude (ordered: no NaN, no infinity; the others go to
- * quad_reduce, which zeroes the non-finite and refuses the rest).
- * CLAMP: the min and max of a float are that float.  REPEAT: x - floor(x)
- * is exact in both types for x >= 0 (a float's fraction has its
- * bits) and for x <= -1 (x + n in [0, 1) on x's grid, at least 2^-23:
- * 23 bits at most), and below 1, so quad_reduce's 1 - 2^-53 does not
- * arise; -0 gives +0 in both.  Between -1 and 0, x + 1 can need more
- * than 24 bits (and quad_reduce rounds it in double), so such a block
- * is refused. */
-static inline int octo_reduce_single(__m256 x, enum scene_texture_wrap wrap, __m256 *out)
-{
-    const __m256 magnitude = _mm256_andnot_ps(_mm256_set1_ps(-0.0f), x);
-    __m256 ok = _mm256_cmp_ps(magnitude, _mm256_set1_ps(0x1p31f), _CMP_LT_OQ);
-    if (wrap == SCENE_WRAP_REPEAT) {
-        ok = _mm256_andnot_ps(_mm256_and_ps(_mm256_cmp_ps(x, _mm256_setzero_ps(), _CMP_LT_OQ),
-                                            _mm256_cmp_ps(x, _mm256_set1_ps(-1.0f), _CMP_GT_OQ)),
-                              ok);
-        *out = _mm256_sub_ps(x, _mm256_floor_ps(x));
-    } else {
-        *out = _mm256_min_ps(_mm256_max_ps(x, _mm256_set1_ps(-1.0f)), _mm256_set1_ps(2.0f));
-    }
-    return _mm256_movemask_ps(ok) == 0xff;
-}
-
-/* The level's texel coordinate uc = r n - 1/2 of eight single reduced
- * coordinates r on an axis of n texels, n a power of two: its floor's
- * integer *i and the weight uc - floor(uc) as float, the same as
- * bilinear8_offsets' double steps give, where this returns 1.  r n is
- * exact in both types (a power of two scales, r n < 2^15).  In double,
- * r n - 1/2 is exact (at most 40 bits); in float it is exact where
- * RN(uc) + 1/2 gives r n back: if RN(uc) were off, the error would be a
- * non-zero multiple of r n's grid (1/2 is on it, below 2^23), and
- * RN(uc) + 1/2 would round to a value other than r n.  Then the floors
- * are equal, and uc - floor(uc), exact in double and rounded once to
- * float there, is here rounded once by the float subtraction: the same
- * float. */
-static inline int level_axis_single(__m256 r, int n, __m256 *weight, __m256i *i)
-{
-    const __m256 half = _mm256_set1_ps(0.5f);
-    const __m256 u = _mm256_mul_ps(r, _mm256_set1_ps((float)n));
-    const __m256 uc = _mm256_sub_ps(u, half);
-    if (_mm256_movemask_ps(_mm256_cmp_ps(_mm256_add_ps(uc, half), u, _CMP_EQ_OQ)) != 0xff)
-        return 0;
-    const __m256 fl = _mm256_floor_ps(uc);
-    *weight = _mm256_sub_ps(uc, fl);
-    *i = _mm256_cvttps_epi32(fl);
-    return 1;
-}
 #endif
 
 /* The level entry's int32 fields as gather indices: the width, the
@@ -749,20 +692,12 @@ static inline void bilinear8_offsets(const struct scene_texture *tex, __m256i le
     const int base = (int)(uint32_t)(uintptr_t)tex->levels[0].texels;
     const int l0 = _mm256_cvtsi256_si32(level);
     __m256i w, h, first;
-#if !defined(TEXTURE_OCTS_512)
-    int single_level = 0, single_w = 0, single_h = 0; /* one level, both sizes powers of two */
-#endif
     if (_mm256_movemask_epi8(_mm256_cmpeq_epi32(level, _mm256_set1_epi32(l0))) == -1) {
         /* Every lane on one level (all but a few per cent of a frame's
          * lookups): its entry's fields broadcast, the integers the
          * gathers below would give every lane, without their loads on
          * the chain from the lambdas to the texel offsets. */
         const struct scene_texture_level *lv = &tex->levels[l0];
-#if !defined(TEXTURE_OCTS_512)
-        single_w = lv->width;
-        single_h = lv->height;
-        single_level = (single_w & (single_w - 1)) == 0 && (single_h & (single_h - 1)) == 0;
-#endif
         w = _mm256_set1_epi32(lv->width);
         h = _mm256_set1_epi32(lv->height);
         first = _mm256_sub_epi32(_mm256_set1_epi32((int)(uint32_t)(uintptr_t)lv->texels),
@@ -791,35 +726,16 @@ static inline void bilinear8_offsets(const struct scene_texture *tex, __m256i le
     *vb = _mm512_cvtpd_ps(_mm512_sub_pd(vc, fj));
     const __m256i vi = _mm512_cvttpd_epi32(fi), vj = _mm512_cvttpd_epi32(fj);
 #else
-    __m256i vi, vj;
-    /* A block on one level of power-of-two sizes whose coordinates are
-     * floats (most of a frame's): the steps in eight float lanes, the
-     * same integers and weights (level_axis_single), else in double. */
-    if (rs->in_single && rt->in_single && single_level &&
-        level_axis_single(rs->single, single_w, va, &vi) &&
-        level_axis_single(rt->single, single_h, vb, &vj))
-        goto wrap;
     const __m256d half = _mm256_set1_pd(0.5);
     __m128 a[2], b[2];
     __m128i i[2], j[2];
-    __m256d rsh[2], rth[2];
-    for (int k = 0; k < 2; k++) {
-        /* quad_reduce's doubles: the floats' conversions, exact
-         * (octo_reduce_single), or quad_reduce's own. */
-        rsh[k] = rs->in_single ? _mm256_cvtps_pd(k ? _mm256_extractf128_ps(rs->single, 1)
-                                                   : _mm256_castps256_ps128(rs->single))
-                               : rs->half[k];
-        rth[k] = rt->in_single ? _mm256_cvtps_pd(k ? _mm256_extractf128_ps(rt->single, 1)
-                                                   : _mm256_castps256_ps128(rt->single))
-                               : rt->half[k];
-    }
     for (int k = 0; k < 2; k++) {
         const __m256d wd = _mm256_cvtepi32_pd(k ? _mm256_extracti128_si256(w, 1)
                                                 : _mm256_castsi256_si128(w));
         const __m256d hd = _mm256_cvtepi32_pd(k ? _mm256_extracti128_si256(h, 1)
                                                 : _mm256_castsi256_si128(h));
-        const __m256d uc = _mm256_sub_pd(_mm256_mul_pd(rsh[k], wd), half);
-        const __m256d vc = _mm256_sub_pd(_mm256_mul_pd(rth[k], hd), half);
+        const __m256d uc = _mm256_sub_pd(_mm256_mul_pd(rs->half[k], wd), half);
+        const __m256d vc = _mm256_sub_pd(_mm256_mul_pd(rt->half[k], hd), half);
         const __m256d fi = _mm256_floor_pd(uc), fj = _mm256_floor_pd(vc);
         a[k] = _mm256_cvtpd_ps(_mm256_sub_pd(uc, fi));
         b[k] = _mm256_cvtpd_ps(_mm256_sub_pd(vc, fj));
@@ -828,9 +744,7 @@ static inline void bilinear8_offsets(const struct scene_texture *tex, __m256i le
     }
     *va = _mm256_set_m128(a[1], a[0]);
     *vb = _mm256_set_m128(b[1], b[0]);
-    vi = _mm256_set_m128i(i[1], i[0]);
-    vj = _mm256_set_m128i(j[1], j[0]);
-wrap:;
+    const __m256i vi = _mm256_set_m128i(i[1], i[0]), vj = _mm256_set_m128i(j[1], j[0]);
 #endif
     __m256i i0, i1, j0, j1;
     wrap_pair8(vi, w, tex->wrap_s, &i0, &i1);
@@ -949,17 +863,10 @@ static inline int lod8_plan(const struct scene_texture *tex, const float lambda[
         !oct_reduce(_mm256_loadu_ps(t), tex->wrap_t, &p->rt))
         return 0;
 #else
-    p->rs.in_single = octo_reduce_single(_mm256_loadu_ps(s), tex->wrap_s, &p->rs.single);
-    p->rt.in_single = octo_reduce_single(_mm256_loadu_ps(t), tex->wrap_t, &p->rt.single);
-    /* Both axes' floats, or both axes' doubles (the doubles of the
-     * floats are taken where a level needs them, in bilinear8_offsets). */
-    if (!p->rs.in_single || !p->rt.in_single) {
-        p->rs.in_single = p->rt.in_single = 0;
-        for (int k = 0; k < 2; k++)
-            if (!quad_reduce(_mm_loadu_ps(s + 4 * k), tex->wrap_s, &p->rs.half[k]) ||
-                !quad_reduce(_mm_loadu_ps(t + 4 * k), tex->wrap_t, &p->rt.half[k]))
-                return 0;
-    }
+    for (int k = 0; k < 2; k++)
+        if (!quad_reduce(_mm_loadu_ps(s + 4 * k), tex->wrap_s, &p->rs.half[k]) ||
+            !quad_reduce(_mm_loadu_ps(t + 4 * k), tex->wrap_t, &p->rt.half[k]))
+            return 0;
 #endif
     const __m256 lam = _mm256_loadu_ps(lambda);
     const int q = tex->level_count - 1;
@@ -1019,31 +926,6 @@ int scene_texture_sample_lod8(const struct scene_texture *tex, const float lambd
     return 1;
 }
 
-#if !defined(TEXTURE_OCTS_512)
-/* prefetch_lod8's level l on the levels `level` (the AVX-512 copy keeps
- * its loop, the same steps). */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline void prefetch_lod8_level(const struct scene_texture *tex, __m256i level,
-                                       const struct lod8_plan *p, int l,
-                                       struct scene_texture_lookup8 *out)
-{
-    const char *texels = (const char *)tex->levels[0].texels;
-    __m256i off[4];
-    __m256 va, vb;
-    bilinear8_offsets(tex, level, &p->rs, &p->rt, off, &va, &vb);
-    for (int c = 0; c < 4; c++)
-        _mm256_storeu_si256((__m256i *)(void *)out->offset[l][c], off[c]);
-    _mm256_storeu_ps(out->a[l], va);
-    _mm256_storeu_ps(out->b[l], vb);
-    _mm_prefetch(texels + out->offset[l][0][0], _MM_HINT_T0);
-    _mm_prefetch(texels + out->offset[l][2][0], _MM_HINT_T0);
-    _mm_prefetch(texels + out->offset[l][0][7], _MM_HINT_T0);
-    _mm_prefetch(texels + out->offset[l][2][7], _MM_HINT_T0);
-}
-#endif
-
 int scene_texture_prefetch_lod8(const struct scene_texture *tex, const float lambda[8],
                              const float s[8], const float t[8],
                              struct scene_texture_lookup8 *out)
@@ -1057,10 +939,9 @@ int scene_texture_prefetch_lod8(const struct scene_texture *tex, const float lam
      * the block's corner lanes (0 and 7: a 4 x 2 block's texels lie
      * between them) on both rows asked for now, a hint that reads no
      * value, so that they are in the cache by then. */
+    const char *texels = (const char *)tex->levels[0].texels;
     out->tex = tex;
     out->levels = _mm256_movemask_ps(p.two) ? 2 : 1;
-#if defined(TEXTURE_OCTS_512)
-    const char *texels = (const char *)tex->levels[0].texels;
     for (int l = 0; l < out->levels; l++) {
         __m256i off[4];
         __m256 va, vb;
@@ -1074,13 +955,6 @@ int scene_texture_prefetch_lod8(const struct scene_texture *tex, const float lam
         _mm_prefetch(texels + out->offset[l][0][7], _MM_HINT_T0);
         _mm_prefetch(texels + out->offset[l][2][7], _MM_HINT_T0);
     }
-#else
-    /* The two levels written out, not a loop: GCC 12 does not unroll
-     * it once the set-up has its float path, and the loop spills. */
-    prefetch_lod8_level(tex, p.fine, &p, 0, out);
-    if (out->levels == 2)
-        prefetch_lod8_level(tex, p.coarse, &p, 1, out);
-#endif
     _mm256_storeu_ps(out->f, p.f);
     _mm256_storeu_ps(out->two, p.two);
     return 1;
