@@ -20,7 +20,9 @@
  * power-of-two sizes down to 1x1, REPEAT and CLAMP_TO_EDGE on each axis,
  * levels of detail at and around every level boundary, the last level,
  * magnifications, zeros, infinities and NaN, coordinates near texel
- * edges, negative, large and non-finite.  A block it refuses (a
+ * edges, negative, large and non-finite; half the blocks with every
+ * lane on one level (or one level pair) and coordinates as a frame's
+ * (frame_coord), as most of a frame's lookups.  A block it refuses (a
  * coordinate of 2^31 or more, other filters) must be refused whole.
  * The same lookups in the frame pipeline's two steps
  * (scene_texture_prefetch_lod8 and scene_texture_finish_lod8, through
@@ -118,6 +120,34 @@ static float any_coord(int n)
     }
     default:
         return uniform(-3.0f, 3.0f);
+    }
+}
+
+/* A coordinate of the kind most of a frame's blocks have: in [0, 1],
+ * texel edges of any level and their neighbours, tiny ones, values of
+ * [-3, -1], and now and then one in (-1, 0).  With every lane on one
+ * level (half of main()'s blocks), these take texture.c's one-level branch
+ * of bilinear8_offsets (the level's fields broadcast, not gathered),
+ * which any_coord's blocks with a level a lane seldom reach. */
+static float frame_coord(int n)
+{
+    switch (next() % 16) {
+    case 0:
+        return uniform(-0.999f, -0.001f);
+    case 1:
+    case 2:
+        return ldexpf(1.0f, -(int)(next() % 40)) * ((next() & 1) ? 1.0f : 3.0f);
+    case 3:
+    case 4:
+    case 5: {
+        const float e = (float)(int)(next() % (unsigned)(2 * n + 1)) / (float)n;
+        const int step = (int)(next() % 3) - 1;
+        return step < 0 ? nextafterf(e, -INFINITY) : step > 0 ? nextafterf(e, INFINITY) : e;
+    }
+    case 6:
+        return uniform(-3.0f, -1.0f);
+    default:
+        return uniform(0.0f, 1.0f);
     }
 }
 
@@ -380,6 +410,17 @@ int main(void)
                 lambda[i] = any_lambda(q);
                 s[i] = any_coord(n);
                 t[i] = any_coord(n);
+            }
+            if (block & 1) {
+                /* Half the blocks as a frame's: every lane on one level
+                 * (or one level pair) and frame_coord's coordinates. */
+                const int level = (int)(next() % (unsigned)(q + 2)) - 1;
+                for (int i = 0; i < 8; i++) {
+                    lambda[i] = level < 0 ? -uniform(0.0f, 2.0f)
+                                          : (float)level + uniform(0.0f, 0.999f);
+                    s[i] = frame_coord(n);
+                    t[i] = frame_coord(n);
+                }
             }
             memset(rgb, 0x7f, sizeof(rgb));
             const int took = lod8(tex, lambda, s, t, rgb);
