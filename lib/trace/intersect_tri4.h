@@ -229,169 +229,6 @@ static inline unsigned tri4_before_tmin_vectors(const struct tri4_ray *r, __m128
                                                 __m128 Bz, __m128 Cz, int scalar);
 
 /*
- * TRI4_DEPTHS_FIRST (the AVX2 table; not the AVX-512 table, whose
- * 32 registers do not spill here, nor sse4): the closest-hit form of
- * tri4_filter_lanes_depth (any_hit 0, depth_out 0, out not NULL) with
- * its independent steps in another order.  In the order below
- * (tri4_filter_lanes_depth) the nine vertex vectors ax..cz live from
- * their loads to the slabs after the sign test, next to the six sheared
- * vectors, the three edge functions and the mask: with the constants
- * more than the 16 registers, so GCC spilled five to eight vectors a
- * call across the early return (round 57, zn8: objdump and callgrind of
- * wide8_packet_closest; moving the size alone or loading the rows again
- * only moved the spills).  Here every step that reads ax..cz comes
- * first: the sheared depths Az, Bz, Cz, their range, the two slabs and
- * the rejections that need no U, V, W; then the sheared x, y, after
- * which ax..cz are dead; then the size of the sheared x, y, after which
- * those are dead too (the edge functions read them first); then the
- * edge functions and the sign test.  Across the early return live the
- * depth rejections' mask, Az, Bz, Cz, t_lo, t_hi, size, U, V, W:
- * ten vectors where there were nineteen.  The price: the exiting calls
- * pay the depths, slabs and size (kitchen random rays: 9 % of the
- * 4-lane leaf's calls exit; rounds 40-42 measured against longer chains
- * to the exit, so the clock decides, not the count alone).
- * Every value is computed by the same operations on the same operands in
- * the same operand order as tri4_filter_lanes_depth computes it, each an
- * IEEE single-precision operation (-ffp-contract=off, separate
- * intrinsics), so every lane's floats, masks and the answer are the same
- * bit for bit (and the scalar isect_triangle's, Woop, Benthin and Wald
- * 2013, which that function's comments prove): only the schedule of
- * independent operations changes.  Two differences of form, not of
- * value: (1) the early return also takes packets whose unmixed lanes
- * all fail the depth or box rejections (geom below is 0 on every valid
- * lane); then deferred and keep are 0 and the function returns 0 all
- * the same, so the answer is unchanged and only work is skipped;
- * (2) a deferred lane's sheared x, y are not stored: tri4_lane_test
- * computes them from the packet (tri4_lane_sheared, the same floats, as
- * the any-hit lanes always did), so they need not live across the exit.
- */
-#if defined(__AVX__) && !TRACE_AVX512_TABLE
-#define TRI4_DEPTHS_FIRST 1
-#else
-#define TRI4_DEPTHS_FIRST 0
-#endif
-#if TRI4_DEPTHS_FIRST
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline unsigned tri4_filter_lanes_closest(const struct tri4_ray *r,
-                                                 const struct tri4_packet *p, unsigned valid,
-                                                 float t_max, struct tri4_lanes *out,
-                                                 int early_out)
-{
-    /* One axis at a time, each axis's rows dying at its last reader:
-     * the depths, then the x rows' slab ends and sheared x, then the y
-     * rows'; the folds of tri4_slab follow with the same operands in
-     * the same order (max(t_near, t_lo), min(t_far, t_hi), x before y). */
-    const __m128 az = _mm_add_ps(r->neg_org_z, tri4_row(p, 0, r->off_z));
-    const __m128 bz = _mm_add_ps(r->neg_org_z, tri4_row(p, 1, r->off_z));
-    const __m128 cz = _mm_add_ps(r->neg_org_z, tri4_row(p, 2, r->off_z));
-    const __m128 Az = _mm_mul_ps(r->sz, az);
-    const __m128 Bz = _mm_mul_ps(r->sz, bz);
-    const __m128 Cz = _mm_mul_ps(r->sz, cz);
-
-    const __m128 ax = _mm_add_ps(r->neg_org_x, tri4_row(p, 0, r->off_x));
-    const __m128 bx = _mm_add_ps(r->neg_org_x, tri4_row(p, 1, r->off_x));
-    const __m128 cx = _mm_add_ps(r->neg_org_x, tri4_row(p, 2, r->off_x));
-    __m128 lo_x = _mm_min_ps(ax, bx);
-    __m128 hi_x = _mm_max_ps(bx, ax);
-    lo_x = _mm_min_ps(lo_x, cx);
-    hi_x = _mm_max_ps(hi_x, cx);
-    const __m128 near_x = _mm_mul_ps(r->neg_x ? hi_x : lo_x, r->inv_x);
-    const __m128 far_x = _mm_mul_ps(r->neg_x ? lo_x : hi_x, r->inv_x);
-    const __m128 Ax = _mm_add_ps(ax, _mm_mul_ps(r->sx, az));
-    const __m128 Bx = _mm_add_ps(bx, _mm_mul_ps(r->sx, bz));
-    const __m128 Cx = _mm_add_ps(cx, _mm_mul_ps(r->sx, cz));
-
-    const __m128 ay = _mm_add_ps(r->neg_org_y, tri4_row(p, 0, r->off_y));
-    const __m128 by = _mm_add_ps(r->neg_org_y, tri4_row(p, 1, r->off_y));
-    const __m128 cy = _mm_add_ps(r->neg_org_y, tri4_row(p, 2, r->off_y));
-    __m128 lo_y = _mm_min_ps(ay, by);
-    __m128 hi_y = _mm_max_ps(by, ay);
-    lo_y = _mm_min_ps(lo_y, cy);
-    hi_y = _mm_max_ps(hi_y, cy);
-    const __m128 near_y = _mm_mul_ps(r->neg_y ? hi_y : lo_y, r->inv_y);
-    const __m128 far_y = _mm_mul_ps(r->neg_y ? lo_y : hi_y, r->inv_y);
-    const __m128 Ay = _mm_add_ps(ay, _mm_mul_ps(r->sy, az));
-    const __m128 By = _mm_add_ps(by, _mm_mul_ps(r->sy, bz));
-    const __m128 Cy = _mm_add_ps(cy, _mm_mul_ps(r->sy, cz));
-
-    /* The rejections that do not depend on U, V, W (tri4_filter_lanes_depth
-     * says why they hold for deferred lanes), with tri4_slab's folds. */
-    const __m128 z_lo = _mm_min_ps(Az, _mm_min_ps(Bz, Cz));
-    const __m128 z_hi = _mm_max_ps(Az, _mm_max_ps(Bz, Cz));
-    const __m128 limit = _mm_set1_ps(t_max);
-    __m128 t_lo = _mm_max_ps(near_x, z_lo);
-    __m128 t_hi = _mm_min_ps(far_x, z_hi);
-    t_lo = _mm_max_ps(near_y, t_lo);
-    t_hi = _mm_min_ps(far_y, t_hi);
-    const __m128 in_range = _mm_and_ps(
-        _mm_and_ps(_mm_cmpge_ps(z_hi, r->tmin), _mm_cmplt_ps(z_lo, limit)),
-        _mm_cmplt_ps(t_lo, limit));
-
-    const __m128 U = _mm_sub_ps(_mm_mul_ps(Cx, By), _mm_mul_ps(Cy, Bx));
-    const __m128 V = _mm_sub_ps(_mm_mul_ps(Ax, Cy), _mm_mul_ps(Ay, Cx));
-    const __m128 W = _mm_sub_ps(_mm_mul_ps(Bx, Ay), _mm_mul_ps(By, Ax));
-    /* isect_triangle's size, as tri4_filter_lanes_depth computes it. */
-    const __m128 sign = _mm_set1_ps(-0.0f);
-    __m128 size = _mm_max_ps(_mm_max_ps(_mm_andnot_ps(sign, Ax), _mm_andnot_ps(sign, Ay)),
-                             _mm_max_ps(_mm_andnot_ps(sign, Bx), _mm_andnot_ps(sign, By)));
-    size = _mm_max_ps(size, _mm_max_ps(_mm_andnot_ps(sign, Cx), _mm_andnot_ps(sign, Cy)));
-#if defined(__GNUC__)
-    if (early_out) {
-        /* Without this GCC sinks the size past the early return into
-         * the branch that stores it (objdump; as round 57's zn8 found),
-         * and the six sheared vectors live across the return again.  An
-         * empty asm that takes and gives the register: the value is
-         * unchanged.  The same for t_hi, which only the stores read:
-         * GCC otherwise keeps the slabs' far ends and inverse directions
-         * across the return (objdump: eight stack stores before it).
-         * Without early_out there is no return to live across, and the
-         * size stays in the branch that stores it (gears' random rays,
-         * wide8_packet_full: the size on every call was +9.4
-         * instructions a call, callgrind). */
-        __asm__ volatile("" : "+x"(size));
-        __asm__ volatile("" : "+x"(t_hi));
-    }
-#endif
-
-    /* The sign test of tri4_filter_lanes_depth (its comments). */
-    const __m128 zero = _mm_setzero_ps();
-    const __m128 any_neg = _mm_cmplt_ps(_mm_min_ps(U, _mm_min_ps(V, W)), zero);
-    const __m128 any_pos = _mm_cmpgt_ps(_mm_max_ps(U, _mm_max_ps(V, W)), zero);
-    const __m128 mixed = _mm_and_ps(any_neg, any_pos);
-    const __m128 geom = _mm_andnot_ps(mixed, in_range);
-    /* Every valid lane mixed or out of range: deferred and keep below
-     * would be 0 on every valid lane, so the answer is 0. */
-    if (early_out && ((unsigned)_mm_movemask_ps(geom) & valid) == 0)
-        return 0;
-
-    const __m128 on_edge =
-        _mm_or_ps(_mm_or_ps(_mm_cmpeq_ps(U, zero), _mm_cmpeq_ps(V, zero)), _mm_cmpeq_ps(W, zero));
-    const unsigned deferred = (unsigned)_mm_movemask_ps(_mm_and_ps(on_edge, geom)) & valid;
-    const __m128 det = _mm_add_ps(_mm_add_ps(U, V), W);
-    const __m128 abs_det = _mm_andnot_ps(_mm_set1_ps(-0.0f), det);
-    __m128 keep = _mm_and_ps(geom, _mm_cmpneq_ps(det, zero));
-    keep = _mm_and_ps(keep, _mm_cmplt_ps(abs_det, _mm_set1_ps(INFINITY)));
-    const unsigned mask = ((unsigned)_mm_movemask_ps(keep) & valid) | deferred;
-    if (mask) {
-        _mm_storeu_ps(out->U, U);
-        _mm_storeu_ps(out->V, V);
-        _mm_storeu_ps(out->W, W);
-        _mm_storeu_ps(out->det, det);
-        _mm_storeu_ps(out->Az, Az);
-        _mm_storeu_ps(out->Bz, Bz);
-        _mm_storeu_ps(out->Cz, Cz);
-        _mm_storeu_ps(out->t_lo, t_lo);
-        _mm_storeu_ps(out->t_hi, t_hi);
-        _mm_storeu_ps(out->size, size);
-        out->deferred = deferred;
-    }
-    return mask;
-}
-#endif
-
-/*
  * The lanes of p (among `valid`, bit l for lane l) that isect_triangle
  * with this t_max might accept; every other lane it rejects.  With out
  * not NULL, also the lanes' float values for isect_triangle_finish.
@@ -413,10 +250,6 @@ static inline unsigned tri4_filter_lanes_depth(const struct tri4_ray *r,
     /* depth_out's walks (the single-ray any-hit leaves) set the per-ray
      * constants' scalar form only (struct tri4_ray's k_ fields). */
     const int scalar = depth_out;
-#if TRI4_DEPTHS_FIRST
-    if (!any_hit && !depth_out && out)
-        return tri4_filter_lanes_closest(r, p, valid, t_max, out, early_out);
-#endif
     /* Unaligned loads: a layout's packets are 32-byte aligned, but a
      * packet elsewhere (a test's, on the stack) need not be; on aligned
      * data they cost what aligned loads do. */
@@ -1282,9 +1115,6 @@ static inline int tri4_lane_test(const struct trace_ray *ray, const double *ray_
         if (any_hit) {
             size = tri4_lane_sheared(ray, p, l, sheared);
             have_size = 1;
-        } else if (TRI4_DEPTHS_FIRST) {
-            /* tri4_filter_lanes_closest keeps size, not the sheared x, y. */
-            (void)tri4_lane_sheared(ray, p, l, sheared);
         } else {
             sheared[0] = lanes->Ax[l];
             sheared[1] = lanes->Ay[l];
