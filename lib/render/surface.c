@@ -1955,7 +1955,8 @@ static void fetch_lanes_two(const struct shade_context *sc, const struct hit_tri
                             const int slot[TRACE_PACKET], const int32_t other_lane[TRACE_PACKET],
                             const float tri_st[2][3][TRACE_PACKET],
                             const struct surface_lod tri_lod[TRACE_PACKET], __m256 b0, __m256 b1,
-                            __m256 b2, const float lane_g[3][TRACE_PACKET], __m256 amb[3], __m256 dif[3])
+                            __m256 b2, const __m256 g[3], const __m256 dv[3],
+                            const float lane_g[3][TRACE_PACKET], __m256 amb[3], __m256 dif[3])
 {
     const __m256 in_other =
         _mm256_castsi256_ps(_mm256_loadu_si256((const __m256i *)(const void *)other_lane));
@@ -1984,46 +1985,27 @@ static void fetch_lanes_two(const struct shade_context *sc, const struct hit_tri
         for (int i = 0; i < TRACE_PACKET; i++)
             lambda[i] = -INFINITY;
         if (group ? lod2 : lod) {
-            /* The group's lanes packed into as few quads as they fill
-             * (in lane order; the last quad's spare places take the
-             * group's first lane again), as texture_lods packs the hits
-             * with a level of detail: lane i of the packed quads is lane
-             * packed[i] of the block, its direction, facing normal, width
-             * and triangle part moved there, not computed. */
-            int packed[TRACE_PACKET], n = 0;
-            for (int i = 0; i < TRACE_PACKET; i++)
-                if (mine >> i & 1)
-                    packed[n++] = i;
-            const int quads = (n + 3) / 4;
-            for (int i = n; i < 4 * quads; i++)
-                packed[i] = first;
-            float pw[TRACE_PACKET], pg[3][TRACE_PACKET], pd[3][TRACE_PACKET],
-                pl[TRACE_PACKET];
-            for (int i = 0; i < 4 * quads; i++) {
-                const int j = packed[i];
-                pw[i] = width[j];
-                for (int k = 0; k < 3; k++) {
-                    pg[k][i] = lane_g[k][j];
-                    pd[k][i] = dir[k][j];
-                }
-            }
             const double top = lod_top(gt->level_count);
-            for (int h = 0; h < quads; h++) {
+            const __m256 wv = _mm256_loadu_ps(width);
+            for (int h = 0; h < TRACE_PACKET / 4; h++) {
+                if (!(mine >> 4 * h & 15))
+                    continue;
                 const struct surface_lod *l4[4];
-                for (int i = 0; i < 4; i++)
-                    l4[i] = &tri_lod[slot[packed[4 * h + i]]];
+                for (int i = 0; i < 4; i++) {
+                    const int j = 4 * h + i;
+                    l4[i] = &tri_lod[slot[mine >> j & 1 ? j : first]];
+                }
                 const int shared = l4[0] == l4[1] && l4[0] == l4[2] && l4[0] == l4[3];
+#define HALF(v) _mm256_cvtps_pd(h ? _mm256_extractf128_ps(v, 1) : _mm256_castps256_ps128(v))
                 __m256d d[3], gd[3];
                 for (int k = 0; k < 3; k++) {
-                    d[k] = _mm256_cvtps_pd(_mm_loadu_ps(&pd[k][4 * h]));
-                    gd[k] = _mm256_cvtps_pd(_mm_loadu_ps(&pg[k][4 * h]));
+                    d[k] = HALF(dv[k]);
+                    gd[k] = HALF(g[k]);
                 }
-                lod_quad_lanes(l4, shared, d, gd, _mm256_cvtps_pd(_mm_loadu_ps(&pw[4 * h])), top,
-                               gt->level_count, h, pw, (const float(*)[TRACE_PACKET])pg,
-                               (const float(*)[TRACE_PACKET])pd, pl);
+                lod_quad_lanes(l4, shared, d, gd, HALF(wv), top, gt->level_count, h, width,
+                               lane_g, dir, lambda);
+#undef HALF
             }
-            for (int i = 0; i < n; i++)
-                lambda[packed[i]] = pl[i];
         }
         float gl[TRACE_PACKET], gs[2][TRACE_PACKET];
         for (int i = 0; i < TRACE_PACKET; i++) {
@@ -2247,7 +2229,7 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
                   lighting, out, amb, dif);
     if (two) {
         fetch_lanes_two(sc, &t, dir, width, m2, call, lighting, tx, lod, tx2, lod2, slot,
-                        other_lane, tri_st, tri_lod, b0, b1, b2, lane_g, amb, dif);
+                        other_lane, tri_st, tri_lod, b0, b1, b2, g, dv, lane_g, amb, dif);
         tx = NULL; /* done */
     }
     if (tx) {
