@@ -1947,9 +1947,6 @@ static inline struct surface_cache *eye_cache(const struct shade_context *sc, ui
  * values: the same colours bit for bit.  The lookups are made at once
  * (not deferred in the block pipeline).
  */
-#if defined(__GNUC__)
-__attribute__((noinline))
-#endif
 static void fetch_lanes_two(const struct shade_context *sc, const struct hit_triangle *t,
                             const float dir[3][TRACE_PACKET], const float width[],
                             const struct scene_material *m2, const struct scene_material *call,
