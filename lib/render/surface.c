@@ -2135,7 +2135,7 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
     const struct scene_material *m2 = m;
     const struct scene_texture *tx2 = NULL;
     int lod2 = 0;
-    if (__builtin_expect(two, 0)) {
+    if (two) {
         m2 = &mesh->materials[other];
         const float *emission2;
         int lighting2;
@@ -2235,7 +2235,7 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
     int deferred = 0;
     lanes_colours(sc, &t, hits, color_material_on(&t, hit_unlit(sc, lighting)), 1, m, call,
                   lighting, out, amb, dif);
-    if (__builtin_expect(two, 0)) {
+    if (two) {
         fetch_lanes_two(sc, &t, dir, width, m2, call, lighting, tx, lod, tx2, lod2, slot,
                         other_lane, tri_st, tri_lod, b0, b1, b2, g, dv, lane_g, amb, dif);
         tx = NULL; /* done */
