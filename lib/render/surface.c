@@ -2128,9 +2128,10 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
      * (-1.1 %; surface_fetch_colours, texture_lods and the per-hit
      * lookups some 142 M fewer, fetch_lanes_mixed and the 8-lane lookups
      * some 90 M more) and L1i misses 11.16 -> 10.30 M; the fastest frame
-     * (frame-overhead, quads against the per-hit path) some 0.7 ms
-     * faster, of the 3.5-4.8 ms those blocks cost on the per-hit path
-     * (a knock-out).
+     * (frame-overhead, five sets of quads against the per-hit path) 0.1
+     * to 0.7 ms faster in each set, the fastest-run ratio level: those
+     * blocks cost some 4.8 ms on the per-hit path (a knock-out), and the
+     * lanes' work on their many triangles is slow per instruction.
      */
     const struct scene_material *m2 = m;
     const struct scene_texture *tx2 = NULL;
