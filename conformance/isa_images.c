@@ -6,8 +6,8 @@
  * across thread counts.
  *
  * One scene (a sphere with smooth normals, a grid-snapped triangle soup
- * with shared planes and slivers, a floor with a mipmapped texture, under
- * four instance matrices)
+ * with shared planes and slivers, a floor with a mipmapped texture, a
+ * wall of small cells on three materials, under five instance matrices)
  * is rendered with eye light and Whitted shading (RGBA float) and
  * queried with 20,000 rays (rtTraceRays and rtOccludedRays) in a context
  * per configuration: "threads=1 isa=scalar" is the reference, every other
@@ -133,6 +133,50 @@ static void define_scene(void)
     rtEnd();
     rtDisable(RT_TEXTURE_2D);
     rtEndObject();
+    /* 4: a wall of small cells (about three pixels), each of one of
+     * three materials of the same emission: texture 1, no texture with
+     * another diffuse colour, texture 2 (another size; smooth normals
+     * across the wall); every eleventh cell with an emission of its own.
+     * A 4 x 2 block of the eye light on it lies on several triangles of
+     * two or three materials, which the AVX2 shading copy takes in lanes
+     * where the emission and lighting agree (surface.c, fetch_lanes_mixed
+     * and fetch_lanes_two) and hit by hit otherwise. */
+    static unsigned char stripes[16 * 8 * 3];
+    for (int i = 0; i < 16 * 8 * 3; i++)
+        stripes[i] = (unsigned char)(i * 37 + (i / 48) * 101);
+    rtBindTexture(RT_TEXTURE_2D, 2);
+    rtTexImage2D(RT_TEXTURE_2D, 0, RT_RGB, 16, 8, 0, RT_RGB, RT_UNSIGNED_BYTE, stripes);
+    rtTexParameteri(RT_TEXTURE_2D, RT_TEXTURE_MIN_FILTER, RT_LINEAR_MIPMAP_LINEAR);
+    rtTexParameteri(RT_TEXTURE_2D, RT_TEXTURE_MAG_FILTER, RT_LINEAR);
+    rtNewObject(4);
+    const float plain[4] = {0.3f, 0.6f, 0.2f, 1.0f}, grey[4] = {0.8f, 0.8f, 0.8f, 1.0f};
+    const float dark[4] = {0.0f, 0.0f, 0.0f, 1.0f}, glow[4] = {0.2f, 0.1f, 0.0f, 1.0f};
+    for (int i = 0; i < 14; i++) {
+        for (int j = 0; j < 30; j++) {
+            const int kind = (i + j) % 3;
+            rtMaterialfv(RT_FRONT_AND_BACK, RT_DIFFUSE, kind == 1 ? plain : grey);
+            rtMaterialfv(RT_FRONT_AND_BACK, RT_EMISSION, (i * 30 + j) % 11 ? dark : glow);
+            if (kind != 1) {
+                rtBindTexture(RT_TEXTURE_2D, kind == 0 ? 1u : 2u);
+                rtEnable(RT_TEXTURE_2D);
+            }
+            const float x0 = -7.5f + 0.5f * (float)j, y0 = -1.5f + 0.45f * (float)i;
+            rtBegin(RT_TRIANGLES);
+            static const int corner[6] = {0, 1, 3, 0, 3, 2};
+            for (int k = 0; k < 6; k++) {
+                const float x = x0 + 0.5f * (float)(corner[k] & 1);
+                const float y = y0 + 0.45f * (float)(corner[k] >> 1);
+                const float n[3] = {0.2f * sinf(x), 0.1f * cosf(y), 1.0f};
+                rtNormal3fv(n);
+                rtTexCoord2f(0.37f * x, 0.29f * y + 0.05f * x);
+                rtVertex3f(x, y, -4.0f + 0.3f * sinf(0.7f * x + y));
+            }
+            rtEnd();
+            rtDisable(RT_TEXTURE_2D);
+        }
+    }
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_EMISSION, dark);
+    rtEndObject();
 
     rtMatrixMode(RT_PROJECTION);
     rtLoadIdentity();
@@ -160,6 +204,7 @@ static void define_scene(void)
     rtInstantiateObject(2);
     rtPopMatrix();
     rtInstantiateObject(3);
+    rtInstantiateObject(4);
     rtLoadIdentity();
 }
 
