@@ -6,8 +6,9 @@
  * across thread counts.
  *
  * One scene (a sphere with smooth normals, a grid-snapped triangle soup
- * with shared planes and slivers, a floor with a mipmapped texture, under
- * four instance matrices)
+ * with shared planes and slivers, a floor with a mipmapped texture, a
+ * wall of cells of their own materials, textured and not, under five
+ * instance matrices)
  * is rendered with eye light and Whitted shading (RGBA float) and
  * queried with 20,000 rays (rtTraceRays and rtOccludedRays) in a context
  * per configuration: "threads=1 isa=scalar" is the reference, every other
@@ -133,6 +134,42 @@ static void define_scene(void)
     rtEnd();
     rtDisable(RT_TEXTURE_2D);
     rtEndObject();
+    /* 4: a wall of cells, each two triangles of its own material: a
+     * diffuse colour of its own, and the floor's texture on in a
+     * checkerboard's black cells, off in its white ones.  The eye light's
+     * AVX2 blocks on triangles of several materials (surface.c,
+     * fetch_lanes_mixed: one texture at most, the lanes of a material
+     * without it keep their colours) against the per-hit path of the
+     * scalar table. */
+    rtNewObject(4);
+    for (int i = 0; i < 12; i++) {
+        for (int j = 0; j < 8; j++) {
+            const float diffuse[4] = {0.3f + 0.05f * (float)i, 0.8f - 0.06f * (float)j,
+                                      0.5f + 0.02f * (float)(i * j % 7), 1.0f};
+            rtMaterialfv(RT_FRONT_AND_BACK, RT_DIFFUSE, diffuse);
+            if ((i + j) % 2)
+                rtEnable(RT_TEXTURE_2D);
+            else
+                rtDisable(RT_TEXTURE_2D);
+            const float x = (float)i - 6.0f, y = (float)j - 4.0f;
+            rtBegin(RT_TRIANGLES);
+            rtTexCoord2f(0.1f * x, 0.1f * y);
+            rtVertex3f(x, y, 0.0f);
+            rtTexCoord2f(0.1f * x + 0.1f, 0.1f * y);
+            rtVertex3f(x + 1.0f, y, 0.0f);
+            rtTexCoord2f(0.1f * x + 0.1f, 0.1f * y + 0.1f);
+            rtVertex3f(x + 1.0f, y + 1.0f, 0.0f);
+            rtTexCoord2f(0.1f * x, 0.1f * y);
+            rtVertex3f(x, y, 0.0f);
+            rtTexCoord2f(0.1f * x + 0.1f, 0.1f * y + 0.1f);
+            rtVertex3f(x + 1.0f, y + 1.0f, 0.0f);
+            rtTexCoord2f(0.1f * x, 0.1f * y + 0.1f);
+            rtVertex3f(x, y + 1.0f, 0.0f);
+            rtEnd();
+        }
+    }
+    rtDisable(RT_TEXTURE_2D);
+    rtEndObject();
 
     rtMatrixMode(RT_PROJECTION);
     rtLoadIdentity();
@@ -160,6 +197,10 @@ static void define_scene(void)
     rtInstantiateObject(2);
     rtPopMatrix();
     rtInstantiateObject(3);
+    rtPushMatrix();
+    rtTranslatef(0.0f, 0.0f, -6.0f);
+    rtInstantiateObject(4);
+    rtPopMatrix();
     rtLoadIdentity();
 }
 
