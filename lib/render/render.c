@@ -1090,24 +1090,6 @@ struct traced_block {
     int whole, bx, by;
 };
 
-/* The lines of the next traced block that its shading reads (from its
- * directions to its end: the directions, cones, hits, the lanes' rays
- * and the block's fields), asked for while this block is shaded.
- * shade_eye_block_begin is the first to read a block's rays and hits,
- * 32 blocks after its walk wrote them; callgrind with this core's caches
- * (six kitchen frames) put 2.22 M of the frame's 10.54 M L1d read misses
- * there.  Always inlined: GCC 12 found a static function of nothing but
- * prefetch hints pure and deleted its calls (round 56). */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline void traced_block_hint(const struct traced_block *b)
-{
-    const char *base = (const char *)(const void *)b;
-    for (size_t o = offsetof(struct traced_block, pk.dir); o < sizeof(*b); o += 64)
-        __builtin_prefetch(base + o);
-}
-
 /*
  * render_tile_packets' eye-light tile when every hit is drawn and the
  * frame keeps no depth (its common case, the loop below it otherwise):
@@ -1159,8 +1141,6 @@ static void render_tile_eye_traced_first(struct render_pass *pass, struct shade_
     struct eye_pipeline pipe = {.slot = 0, .full = 0};
     for (int j = 0; j < n; j++) {
         const struct traced_block *b = &blocks[j];
-        if (j + 1 < n)
-            traced_block_hint(&blocks[j + 1]);
         if (!b->whole || b->found != b->pk.active) {
             eye_block(pass, sc, x0, y0, b->bx, b->by, &b->pk, b->found, b->hits, b->cone);
             continue;
