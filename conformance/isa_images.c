@@ -135,18 +135,27 @@ static void define_scene(void)
     rtDisable(RT_TEXTURE_2D);
     rtEndObject();
     /* 4: a wall of cells, each two triangles of its own material: a
-     * diffuse colour of its own, and the floor's texture on in a
-     * checkerboard's black cells, off in its white ones.  The eye light's
-     * AVX2 blocks on triangles of several materials (surface.c,
-     * fetch_lanes_mixed: one texture at most, the lanes of a material
-     * without it keep their colours) against the per-hit path of the
-     * scalar table. */
+     * diffuse colour of its own, and a texture on in a checkerboard's
+     * black cells (the floor's, or in every third column a second one,
+     * 24 x 16 texels, bilinear between two levels), off in its white
+     * ones.  The eye light's AVX2 blocks on triangles of several
+     * materials (surface.c, fetch_lanes_mixed: up to two textures, the
+     * lanes of a material without one keep their colours) against the
+     * per-hit path of the scalar table. */
+    static unsigned char stripes[24 * 16 * 3];
+    for (int i = 0; i < 24 * 16 * 3; i++)
+        stripes[i] = (unsigned char)(i * 37 % 251);
+    rtBindTexture(RT_TEXTURE_2D, 2);
+    rtTexImage2D(RT_TEXTURE_2D, 0, RT_RGB, 24, 16, 0, RT_RGB, RT_UNSIGNED_BYTE, stripes);
+    rtTexParameteri(RT_TEXTURE_2D, RT_TEXTURE_MIN_FILTER, RT_LINEAR_MIPMAP_NEAREST);
+    rtTexParameteri(RT_TEXTURE_2D, RT_TEXTURE_MAG_FILTER, RT_LINEAR);
     rtNewObject(4);
     for (int i = 0; i < 12; i++) {
         for (int j = 0; j < 8; j++) {
             const float diffuse[4] = {0.3f + 0.05f * (float)i, 0.8f - 0.06f * (float)j,
                                       0.5f + 0.02f * (float)(i * j % 7), 1.0f};
             rtMaterialfv(RT_FRONT_AND_BACK, RT_DIFFUSE, diffuse);
+            rtBindTexture(RT_TEXTURE_2D, i % 3 ? 1 : 2);
             if ((i + j) % 2)
                 rtEnable(RT_TEXTURE_2D);
             else

@@ -1987,25 +1987,30 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
     const struct scene_texture *tx = lanes_material(sc, m, call, &emission, &lighting);
     /* A block on triangles of several materials (a sixth of a BART
      * kitchen frame's blocks on several triangles, 28,230 in six frames,
-     * which went hit by hit, 3,082 instructions a block in
+     * which went hit by hit: 3,082 instructions a block in
      * surface_fetch_colours and 600 in texture_lods, against 1,212 here)
      * is taken when the materials differ only where the lanes can
      * follow them: the same emission and lighting (eye_light8 reads one
      * of each for the block), colours that cannot vary by hit, and at
-     * most one texture, which the lanes of a material without one
-     * (`plain`) do not multiply.  Each lane's colours are then its own
-     * material's (hit_colours), moved into the lane by its slot, and its
-     * normals and texture coordinates as before: the per-hit path's
-     * values.  Counted over six kitchen frames: 4,146 such blocks on two
-     * materials of one texture and 19,068 on a textured and an untextured
-     * one; the other 5,016 (two textures) still go hit by hit.  The
-     * AVX-512 copy keeps to one material. */
-    int plain_slots = 0;
+     * most two textures.  Each lane's colours are then its own
+     * material's (hit_colours), moved into the lane by its slot; its
+     * normals and texture coordinates are as before, its level of
+     * detail its own triangle part's for its own texture, and its
+     * texel only its own texture's (the lanes of a material without a
+     * texture, or of the other texture, keep their colours: `plain` of
+     * lanes_texture_end): the per-hit path's values.  Counted over six
+     * kitchen frames (the first differing material of each block): 4,146
+     * such blocks on two materials of one texture, 19,068 on a textured
+     * and an untextured one, some 5,000 on two textures.  The AVX-512
+     * copy keeps to one material. */
+    /* Each slot's texture (its material's), and the block's second one. */
+    const struct scene_texture *slot_tx[TRACE_PACKET], *tx2 = NULL;
+    for (int j = 0; j < count; j++)
+        slot_tx[j] = tx;
     if (several) {
 #if defined(SURFACE_OCTS)
         return 0;
 #else
-        const struct scene_texture *slot_tx[TRACE_PACKET];
         if (color_material_on(&t, hit_unlit(sc, lighting)))
             return 0;
         const struct scene_texture *block_tx = tx;
@@ -2023,17 +2028,18 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
                     return 0;
             }
             if (!slot_tx[j]) {
-                plain_slots |= 1 << j;
+                continue;
             } else if (!block_tx) {
                 block_tx = slot_tx[j];
             } else if (slot_tx[j] != block_tx) {
-                return 0;
+                if (tx2 && slot_tx[j] != tx2)
+                    return 0;
+                tx2 = slot_tx[j];
             }
         }
         tx = block_tx;
 #endif
     }
-    const int lod = tx && tx->min_filter != tx->mag_filter;
     /* Per triangle: its unit normal (triangle_normal; a degenerate one
      * leaves the block to the per-hit path) and its level-of-detail
      * part, copied out of the tile's one cache entry, which the next
@@ -2061,7 +2067,8 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
             return 0;
         for (int k = 0; k < 3; k++)
             tri_ng[k][j] = ng[k];
-        const int textured = tx && !(plain_slots >> j & 1);
+        const struct scene_texture *tj_tx = slot_tx[j];
+        const int textured = tj_tx != NULL;
         for (int v = 0; v < 3; v++) {
             if (smooth)
                 for (int k = 0; k < 3; k++)
@@ -2070,11 +2077,11 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
                 for (int k = 0; k < 2; k++)
                     tri_st[k][v][j] = mesh->texcoords[2 * tj.v[v] + k];
         }
-        if (lod && textured) {
+        if (textured && tj_tx->min_filter != tj_tx->mag_filter) {
             const float *const vst[3] = {&mesh->texcoords[2 * tj.v[0]],
                                          &mesh->texcoords[2 * tj.v[1]],
                                          &mesh->texcoords[2 * tj.v[2]]};
-            tri_lod[j] = *lod_triangle(c, tx, t.inst, mesh, prim[j], tj.v, vst, NULL);
+            tri_lod[j] = *lod_triangle(c, tj_tx, t.inst, mesh, prim[j], tj.v, vst, NULL);
         }
     }
     const __m256i slots = _mm256_loadu_si256((const __m256i *)(const void *)slot);
@@ -2120,12 +2127,6 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
      * colour may stand in for them (it may differ by triangle). */
     __m256 amb[3], dif[3];
     int deferred = 0;
-    /* The lanes of a material without a texture, and a lane on the
-     * block's texture (the first), whose level of detail and coordinates
-     * those lanes take: their lookups are then the block's own texels'
-     * (the sampler's one-level branch where the others take it), and
-     * their results unused. */
-    int plain = 0, first_textured = 0;
     if (several) {
 #if !defined(SURFACE_OCTS)
         /* Each slot's colours (its material's, hit_colours: they cannot
@@ -2146,58 +2147,82 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
             amb[k] = lanes_by_slot(tri_amb[k], slots);
             dif[k] = lanes_by_slot(tri_dif[k], slots);
         }
-        for (int i = TRACE_PACKET - 1; i >= 0; i--) {
-            if (plain_slots >> slot[i] & 1)
-                plain |= 1 << i;
-            else
-                first_textured = i;
-        }
 #endif
     } else {
         lanes_colours(sc, &t, hits, color_material_on(&t, hit_unlit(sc, lighting)), 1, m, call,
                       lighting, out, amb, dif);
     }
+    /* The lanes whose colours the deferred lookups do not multiply
+     * (surface_lanes.plain). */
+    int plain = 0;
     if (tx) {
-        float lane_st[2][TRACE_PACKET];
+        float slot_st[2][TRACE_PACKET];
         for (int k = 0; k < 2; k++)
-            _mm256_storeu_ps(lane_st[k], lanes_interpolate_slots(b0, b1, b2, tri_st[k], slots));
-        float lambda[TRACE_PACKET];
-        for (int i = 0; i < TRACE_PACKET; i++)
-            lambda[i] = -INFINITY;
-        /* The triangle part of each lane's level of detail: its own
-         * slot's, or for a plain lane the first textured lane's. */
-        int lod_slot[TRACE_PACKET];
-        for (int i = 0; i < TRACE_PACKET; i++)
-            lod_slot[i] = plain >> i & 1 ? slot[first_textured] : slot[i];
-        if (lod) {
-            const double top = lod_top(tx->level_count);
-            const __m256 wv = _mm256_loadu_ps(width);
-            for (int h = 0; h < TRACE_PACKET / 4; h++) {
-                const struct surface_lod *const l4[4] = {
-                    &tri_lod[lod_slot[4 * h]], &tri_lod[lod_slot[4 * h + 1]],
-                    &tri_lod[lod_slot[4 * h + 2]], &tri_lod[lod_slot[4 * h + 3]]};
-                const int shared = l4[0] == l4[1] && l4[0] == l4[2] && l4[0] == l4[3];
+            _mm256_storeu_ps(slot_st[k], lanes_interpolate_slots(b0, b1, b2, tri_st[k], slots));
+        /* The lanes of each texture: one, or with a second texture (tx2)
+         * two groups, each looked up on its own and its results kept in
+         * its lanes only (the others, plain to it, keep their colours);
+         * then the lookups are done here, not deferred (the block's
+         * pending record holds one texture's). */
+        int group_lanes[2] = {0, 0};
+        for (int i = 0; i < TRACE_PACKET; i++) {
+            const struct scene_texture *ti = slot_tx[slot[i]];
+            if (ti)
+                group_lanes[ti != tx] |= 1 << i;
+        }
+        const struct scene_texture *const group_tx[2] = {tx, tx2};
+        const int groups = tx2 ? 2 : 1;
+        if (groups == 1)
+            plain = ~group_lanes[0] & ((1 << TRACE_PACKET) - 1);
+        for (int gi = 0; gi < groups; gi++) {
+            const struct scene_texture *gt = group_tx[gi];
+            const int others = ~group_lanes[gi] & ((1 << TRACE_PACKET) - 1);
+            /* A lane of the group whose level of detail and coordinates
+             * the others take: their lookups are then on the group's own
+             * texels (the sampler's one-level branch where the group's
+             * lanes take it), and their results unused. */
+            const int first = __builtin_ctz((unsigned)group_lanes[gi]);
+            float lane_st[2][TRACE_PACKET];
+            memcpy(lane_st, slot_st, sizeof(lane_st));
+            float lambda[TRACE_PACKET];
+            for (int i = 0; i < TRACE_PACKET; i++)
+                lambda[i] = -INFINITY;
+            /* The triangle part of each lane's level of detail: its own
+             * slot's, or for a lane of another group the first's. */
+            int lod_slot[TRACE_PACKET];
+            for (int i = 0; i < TRACE_PACKET; i++)
+                lod_slot[i] = others >> i & 1 ? slot[first] : slot[i];
+            if (gt->min_filter != gt->mag_filter) {
+                const double top = lod_top(gt->level_count);
+                const __m256 wv = _mm256_loadu_ps(width);
+                for (int h = 0; h < TRACE_PACKET / 4; h++) {
+                    const struct surface_lod *const l4[4] = {
+                        &tri_lod[lod_slot[4 * h]], &tri_lod[lod_slot[4 * h + 1]],
+                        &tri_lod[lod_slot[4 * h + 2]], &tri_lod[lod_slot[4 * h + 3]]};
+                    const int shared = l4[0] == l4[1] && l4[0] == l4[2] && l4[0] == l4[3];
 #define HALF(v) _mm256_cvtps_pd(h ? _mm256_extractf128_ps(v, 1) : _mm256_castps256_ps128(v))
-                __m256d d[3], gd[3];
-                for (int k = 0; k < 3; k++) {
-                    d[k] = HALF(dv[k]);
-                    gd[k] = HALF(g[k]);
-                }
-                lod_quad_lanes(l4, shared, d, gd, HALF(wv), top, tx->level_count, h, width,
-                               lane_g, dir, lambda);
+                    __m256d d[3], gd[3];
+                    for (int k = 0; k < 3; k++) {
+                        d[k] = HALF(dv[k]);
+                        gd[k] = HALF(g[k]);
+                    }
+                    lod_quad_lanes(l4, shared, d, gd, HALF(wv), top, gt->level_count, h, width,
+                                   lane_g, dir, lambda);
 #undef HALF
-            }
-        }
-        if (plain) {
-            for (int i = 0; i < TRACE_PACKET; i++) {
-                if (plain >> i & 1) {
-                    lambda[i] = lambda[first_textured];
-                    lane_st[0][i] = lane_st[0][first_textured];
-                    lane_st[1][i] = lane_st[1][first_textured];
                 }
             }
+            if (others) {
+                for (int i = 0; i < TRACE_PACKET; i++) {
+                    if (others >> i & 1) {
+                        lambda[i] = lambda[first];
+                        lane_st[0][i] = lane_st[0][first];
+                        lane_st[1][i] = lane_st[1][first];
+                    }
+                }
+            }
+            deferred = lanes_texture_end(gt, lambda, lane_st, amb, dif, groups == 1 ? defer : NULL,
+                                         others);
         }
-        deferred = lanes_texture_end(tx, lambda, lane_st, amb, dif, defer, plain);
     }
     for (int k = 0; k < 3; k++) {
         _mm256_storeu_ps(out->ambient[k], amb[k]);
