@@ -139,9 +139,11 @@ static void define_scene(void)
      * black cells (the floor's, or in every third column a second one,
      * 24 x 16 texels, bilinear between two levels), off in its white
      * ones.  The eye light's AVX2 blocks on triangles of several
-     * materials (surface.c, fetch_lanes_mixed: up to two textures, the
-     * lanes of a material without one keep their colours) against the
-     * per-hit path of the scalar table. */
+     * materials (render/surface.c, fetch_lanes_mixed, which leaves them
+     * to the per-hit path) against the scalar table's.  A lanes path for
+     * them was tried in round 58 (zn11, docs/performance-log.md): a fault
+     * in its texel products failed three of this file's configurations,
+     * as a fault in the second texture's lanes did. */
     static unsigned char stripes[24 * 16 * 3];
     for (int i = 0; i < 24 * 16 * 3; i++)
         stripes[i] = (unsigned char)(i * 37 % 251);

@@ -21,37 +21,6 @@ static inline __m256 lanes_dot8(const __m256 a[3], const __m256 b[3])
 #endif
 
 #if defined(__AVX2__) && !defined(RT_NO_SIMD)
-/* All ones in lane i where bit i of `plain` is set. */
-static inline __m256 lanes_plain_mask(int plain)
-{
-    const __m256i bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
-    return _mm256_castsi256_ps(
-        _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(plain), bit), bit));
-}
-
-/* texture_end's products of the colours amb and dif by the texels rgb,
- * lane by lane, but for the lanes of `plain` (surface.h, surface_lanes.plain), which
- * keep their colours: surface.c's per-hit path multiplies a hit's colours only
- * when its material has a texture. */
-static inline void lanes_texel_products(const float rgb[3][8], int plain, __m256 amb[3],
-                                        __m256 dif[3])
-{
-    if (plain) {
-        const __m256 keep = lanes_plain_mask(plain);
-        for (int k = 0; k < 3; k++) {
-            const __m256 texel = _mm256_loadu_ps(rgb[k]);
-            amb[k] = _mm256_blendv_ps(_mm256_mul_ps(amb[k], texel), amb[k], keep);
-            dif[k] = _mm256_blendv_ps(_mm256_mul_ps(dif[k], texel), dif[k], keep);
-        }
-        return;
-    }
-    for (int k = 0; k < 3; k++) {
-        const __m256 texel = _mm256_loadu_ps(rgb[k]);
-        amb[k] = _mm256_mul_ps(amb[k], texel);
-        dif[k] = _mm256_mul_ps(dif[k], texel);
-    }
-}
-
 /* Bound of lanes_log2_4 on [1, 2^32] (see there), absolute. */
 #define LANES_LOG2_BOUND 0x1p-47
 

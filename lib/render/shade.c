@@ -815,15 +815,12 @@ void shade_eye_block_end(const struct shade_context *sc, struct shade_eye_pendin
     float rgb[3][TRACE_PACKET];
     scene_texture_finish_lod8(&pending->lookup, rgb);
     struct surface_lanes *lanes = &pending->lanes;
-    __m256 amb[3], dif[3];
     for (int k = 0; k < 3; k++) {
-        amb[k] = _mm256_loadu_ps(lanes->ambient[k]);
-        dif[k] = _mm256_loadu_ps(lanes->diffuse[k]);
-    }
-    lanes_texel_products(rgb, lanes->plain, amb, dif);
-    for (int k = 0; k < 3; k++) {
-        _mm256_storeu_ps(lanes->ambient[k], amb[k]);
-        _mm256_storeu_ps(lanes->diffuse[k], dif[k]);
+        const __m256 texel = _mm256_loadu_ps(rgb[k]);
+        _mm256_storeu_ps(lanes->ambient[k],
+                         _mm256_mul_ps(_mm256_loadu_ps(lanes->ambient[k]), texel));
+        _mm256_storeu_ps(lanes->diffuse[k],
+                         _mm256_mul_ps(_mm256_loadu_ps(lanes->diffuse[k]), texel));
     }
     eye_light8(sc->state, lanes, pending->global_ambient, pending->unit, pending->rgba);
 }

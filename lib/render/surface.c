@@ -1884,15 +1884,12 @@ static inline void lanes_colours(const struct shade_context *sc, const struct hi
  * `defer` the 8-lane sampler's lookups are only prepared in *defer
  * (scene_texture_prefetch_lod8) and 1 returned, amb and dif left as
  * they are: the caller multiplies them by scene_texture_finish_lod8's
- * colours later (the same products on the same floats, and in the lanes
- * of surface_lanes.plain none); 0 when the colours are done.  The lanes
- * of `plain` (bit i lane i: a material without a texture, which the
- * per-hit path does not multiply) keep amb and dif as they are. */
+ * colours later (the same products on the same floats); 0 when the
+ * colours are done. */
 static inline int lanes_texture_end(const struct scene_texture *tx,
                                     const float lambda[TRACE_PACKET],
                                     const float lane_st[2][TRACE_PACKET], __m256 amb[3],
-                                    __m256 dif[3], struct scene_texture_lookup8 *defer,
-                                    int plain)
+                                    __m256 dif[3], struct scene_texture_lookup8 *defer)
 {
     if (defer && scene_texture_prefetch_lod8(tx, lambda, lane_st[0], lane_st[1], defer))
         return 1;
@@ -1905,7 +1902,11 @@ static inline int lanes_texture_end(const struct scene_texture *tx,
                 rgb[k][i] = texel[k];
         }
     }
-    lanes_texel_products(rgb, plain, amb, dif);
+    for (int k = 0; k < 3; k++) {
+        const __m256 texel = _mm256_loadu_ps(rgb[k]);
+        amb[k] = _mm256_mul_ps(amb[k], texel);
+        dif[k] = _mm256_mul_ps(dif[k], texel);
+    }
     return 0;
 }
 
@@ -1964,18 +1965,16 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
     /* The distinct triangles in the order of their first hit; lane i is
      * on triangle slot[i].  The same recorded flags give the same
      * flags after hit_triangle's inheritance (one instance). */
-    uint32_t prim[TRACE_PACKET], slot_material[TRACE_PACKET];
-    int slot[TRACE_PACKET], count = 0, several = 0;
+    uint32_t prim[TRACE_PACKET];
+    int slot[TRACE_PACKET], count = 0;
     for (int i = 0; i < TRACE_PACKET; i++) {
         const uint32_t p = hits[i]->prim;
         int j = 0;
         while (j < count && prim[j] != p)
             j++;
         if (j == count) {
-            if (mesh->tri_flags[p] != recorded)
+            if (mesh->tri_material[p] != material || mesh->tri_flags[p] != recorded)
                 return 0;
-            slot_material[count] = mesh->tri_material[p];
-            several |= slot_material[count] != material;
             prim[count++] = p;
         }
         slot[i] = j;
@@ -1985,61 +1984,7 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
     const float *emission;
     int lighting;
     const struct scene_texture *tx = lanes_material(sc, m, call, &emission, &lighting);
-    /* A block on triangles of several materials (a sixth of a BART
-     * kitchen frame's blocks on several triangles, 28,230 in six frames,
-     * which went hit by hit: 3,082 instructions a block in
-     * surface_fetch_colours and 600 in texture_lods, against 1,212 here)
-     * is taken when the materials differ only where the lanes can
-     * follow them: the same emission and lighting (eye_light8 reads one
-     * of each for the block), colours that cannot vary by hit, and at
-     * most two textures.  Each lane's colours are then its own
-     * material's (hit_colours), moved into the lane by its slot; its
-     * normals and texture coordinates are as before, its level of
-     * detail its own triangle part's for its own texture, and its
-     * texel only its own texture's (the lanes of a material without a
-     * texture, or of the other texture, keep their colours: `plain` of
-     * lanes_texture_end): the per-hit path's values.  Counted over six
-     * kitchen frames (the first differing material of each block): 4,146
-     * such blocks on two materials of one texture, 19,068 on a textured
-     * and an untextured one, some 5,000 on two textures.  The AVX-512
-     * copy keeps to one material. */
-    /* Each slot's texture (its material's), and the block's second one. */
-    const struct scene_texture *slot_tx[TRACE_PACKET], *tx2 = NULL;
-    for (int j = 0; j < count; j++)
-        slot_tx[j] = tx;
-    if (several) {
-#if defined(SURFACE_OCTS)
-        return 0;
-#else
-        if (color_material_on(&t, hit_unlit(sc, lighting)))
-            return 0;
-        const struct scene_texture *block_tx = tx;
-        for (int j = 0; j < count; j++) {
-            if (slot_material[j] == material) {
-                slot_tx[j] = tx;
-            } else if (j && slot_material[j] == slot_material[j - 1]) {
-                slot_tx[j] = slot_tx[j - 1];
-            } else {
-                const float *ej;
-                int lj;
-                slot_tx[j] = lanes_material(sc, &mesh->materials[slot_material[j]], call, &ej,
-                                            &lj);
-                if (lj != lighting || memcmp(ej, emission, sizeof(out->emission)))
-                    return 0;
-            }
-            if (!slot_tx[j]) {
-                continue;
-            } else if (!block_tx) {
-                block_tx = slot_tx[j];
-            } else if (slot_tx[j] != block_tx) {
-                if (tx2 && slot_tx[j] != tx2)
-                    return 0;
-                tx2 = slot_tx[j];
-            }
-        }
-        tx = block_tx;
-#endif
-    }
+    const int lod = tx && tx->min_filter != tx->mag_filter;
     /* Per triangle: its unit normal (triangle_normal; a degenerate one
      * leaves the block to the per-hit path) and its level-of-detail
      * part, copied out of the tile's one cache entry, which the next
@@ -2067,21 +2012,19 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
             return 0;
         for (int k = 0; k < 3; k++)
             tri_ng[k][j] = ng[k];
-        const struct scene_texture *tj_tx = slot_tx[j];
-        const int textured = tj_tx != NULL;
         for (int v = 0; v < 3; v++) {
             if (smooth)
                 for (int k = 0; k < 3; k++)
                     tri_n[k][v][j] = mesh->normals[3 * tj.v[v] + k];
-            if (textured)
+            if (tx)
                 for (int k = 0; k < 2; k++)
                     tri_st[k][v][j] = mesh->texcoords[2 * tj.v[v] + k];
         }
-        if (textured && tj_tx->min_filter != tj_tx->mag_filter) {
+        if (lod) {
             const float *const vst[3] = {&mesh->texcoords[2 * tj.v[0]],
                                          &mesh->texcoords[2 * tj.v[1]],
                                          &mesh->texcoords[2 * tj.v[2]]};
-            tri_lod[j] = *lod_triangle(c, tj_tx, t.inst, mesh, prim[j], tj.v, vst, NULL);
+            tri_lod[j] = *lod_triangle(c, tx, t.inst, mesh, prim[j], tj.v, vst, NULL);
         }
     }
     const __m256i slots = _mm256_loadu_si256((const __m256i *)(const void *)slot);
@@ -2127,108 +2070,40 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
      * colour may stand in for them (it may differ by triangle). */
     __m256 amb[3], dif[3];
     int deferred = 0;
-    if (several) {
-#if !defined(SURFACE_OCTS)
-        /* Each slot's colours (its material's, hit_colours: they cannot
-         * vary by hit here), moved into the lanes by slot. */
-        float tri_amb[3][TRACE_PACKET], tri_dif[3][TRACE_PACKET];
-        lanes_zero(tri_amb[0], 3);
-        lanes_zero(tri_dif[0], 3);
-        for (int j = 0; j < count; j++) {
-            float ambient[4], diffuse[4];
-            hit_colours(sc, &t, &mesh->materials[slot_material[j]], call, lighting, ambient,
-                        diffuse);
-            for (int k = 0; k < 3; k++) {
-                tri_amb[k][j] = ambient[k];
-                tri_dif[k][j] = diffuse[k];
-            }
-        }
-        for (int k = 0; k < 3; k++) {
-            amb[k] = lanes_by_slot(tri_amb[k], slots);
-            dif[k] = lanes_by_slot(tri_dif[k], slots);
-        }
-#endif
-    } else {
-        lanes_colours(sc, &t, hits, color_material_on(&t, hit_unlit(sc, lighting)), 1, m, call,
-                      lighting, out, amb, dif);
-    }
-    /* The lanes whose colours the deferred lookups do not multiply
-     * (surface_lanes.plain). */
-    int plain = 0;
+    lanes_colours(sc, &t, hits, color_material_on(&t, hit_unlit(sc, lighting)), 1, m, call,
+                  lighting, out, amb, dif);
     if (tx) {
-        float slot_st[2][TRACE_PACKET];
+        float lane_st[2][TRACE_PACKET];
         for (int k = 0; k < 2; k++)
-            _mm256_storeu_ps(slot_st[k], lanes_interpolate_slots(b0, b1, b2, tri_st[k], slots));
-        /* The lanes of each texture: one, or with a second texture (tx2)
-         * two groups, each looked up on its own and its results kept in
-         * its lanes only (the others, plain to it, keep their colours);
-         * then the lookups are done here, not deferred (the block's
-         * pending record holds one texture's). */
-        int group_lanes[2] = {0, 0};
-        for (int i = 0; i < TRACE_PACKET; i++) {
-            const struct scene_texture *ti = slot_tx[slot[i]];
-            if (ti)
-                group_lanes[ti != tx] |= 1 << i;
-        }
-        const struct scene_texture *const group_tx[2] = {tx, tx2};
-        const int groups = tx2 ? 2 : 1;
-        if (groups == 1)
-            plain = ~group_lanes[0] & ((1 << TRACE_PACKET) - 1);
-        for (int gi = 0; gi < groups; gi++) {
-            const struct scene_texture *gt = group_tx[gi];
-            const int others = ~group_lanes[gi] & ((1 << TRACE_PACKET) - 1);
-            /* A lane of the group whose level of detail and coordinates
-             * the others take: their lookups are then on the group's own
-             * texels (the sampler's one-level branch where the group's
-             * lanes take it), and their results unused. */
-            const int first = __builtin_ctz((unsigned)group_lanes[gi]);
-            float lane_st[2][TRACE_PACKET];
-            memcpy(lane_st, slot_st, sizeof(lane_st));
-            float lambda[TRACE_PACKET];
-            for (int i = 0; i < TRACE_PACKET; i++)
-                lambda[i] = -INFINITY;
-            /* The triangle part of each lane's level of detail: its own
-             * slot's, or for a lane of another group the first's. */
-            int lod_slot[TRACE_PACKET];
-            for (int i = 0; i < TRACE_PACKET; i++)
-                lod_slot[i] = others >> i & 1 ? slot[first] : slot[i];
-            if (gt->min_filter != gt->mag_filter) {
-                const double top = lod_top(gt->level_count);
-                const __m256 wv = _mm256_loadu_ps(width);
-                for (int h = 0; h < TRACE_PACKET / 4; h++) {
-                    const struct surface_lod *const l4[4] = {
-                        &tri_lod[lod_slot[4 * h]], &tri_lod[lod_slot[4 * h + 1]],
-                        &tri_lod[lod_slot[4 * h + 2]], &tri_lod[lod_slot[4 * h + 3]]};
-                    const int shared = l4[0] == l4[1] && l4[0] == l4[2] && l4[0] == l4[3];
+            _mm256_storeu_ps(lane_st[k], lanes_interpolate_slots(b0, b1, b2, tri_st[k], slots));
+        float lambda[TRACE_PACKET];
+        for (int i = 0; i < TRACE_PACKET; i++)
+            lambda[i] = -INFINITY;
+        if (lod) {
+            const double top = lod_top(tx->level_count);
+            const __m256 wv = _mm256_loadu_ps(width);
+            for (int h = 0; h < TRACE_PACKET / 4; h++) {
+                const struct surface_lod *const l4[4] = {
+                    &tri_lod[slot[4 * h]], &tri_lod[slot[4 * h + 1]], &tri_lod[slot[4 * h + 2]],
+                    &tri_lod[slot[4 * h + 3]]};
+                const int shared = l4[0] == l4[1] && l4[0] == l4[2] && l4[0] == l4[3];
 #define HALF(v) _mm256_cvtps_pd(h ? _mm256_extractf128_ps(v, 1) : _mm256_castps256_ps128(v))
-                    __m256d d[3], gd[3];
-                    for (int k = 0; k < 3; k++) {
-                        d[k] = HALF(dv[k]);
-                        gd[k] = HALF(g[k]);
-                    }
-                    lod_quad_lanes(l4, shared, d, gd, HALF(wv), top, gt->level_count, h, width,
-                                   lane_g, dir, lambda);
+                __m256d d[3], gd[3];
+                for (int k = 0; k < 3; k++) {
+                    d[k] = HALF(dv[k]);
+                    gd[k] = HALF(g[k]);
+                }
+                lod_quad_lanes(l4, shared, d, gd, HALF(wv), top, tx->level_count, h, width,
+                               lane_g, dir, lambda);
 #undef HALF
-                }
             }
-            if (others) {
-                for (int i = 0; i < TRACE_PACKET; i++) {
-                    if (others >> i & 1) {
-                        lambda[i] = lambda[first];
-                        lane_st[0][i] = lane_st[0][first];
-                        lane_st[1][i] = lane_st[1][first];
-                    }
-                }
-            }
-            deferred = lanes_texture_end(gt, lambda, lane_st, amb, dif, groups == 1 ? defer : NULL,
-                                         others);
         }
+        deferred = lanes_texture_end(tx, lambda, lane_st, amb, dif, defer);
     }
     for (int k = 0; k < 3; k++) {
         _mm256_storeu_ps(out->ambient[k], amb[k]);
         _mm256_storeu_ps(out->diffuse[k], dif[k]);
     }
-    out->plain = plain;
     return 1 + deferred;
 }
 
@@ -2452,13 +2327,12 @@ int surface_fetch_lanes(const struct shade_context *sc, const struct trace_scene
 #endif
 #endif
         }
-        deferred = lanes_texture_end(tx, lambda, lane_st, amb, dif, defer, 0);
+        deferred = lanes_texture_end(tx, lambda, lane_st, amb, dif, defer);
     }
     for (int k = 0; k < 3; k++) {
         _mm256_storeu_ps(out->ambient[k], amb[k]);
         _mm256_storeu_ps(out->diffuse[k], dif[k]);
     }
-    out->plain = 0;
     return 1 + deferred;
 }
 #endif

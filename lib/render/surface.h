@@ -166,10 +166,6 @@ struct surface_lanes {
     float diffuse[3][TRACE_PACKET];
     float emission[4];
     int lighting;
-    /* Bit i: lane i's material has no texture, so its ambient and diffuse
-     * colours are final whatever texels the block's lookups give
-     * (fetch_lanes_mixed, a block on triangles of two materials). */
-    int plain;
 };
 
 /* A block of the eye light whose texels are on their way
