@@ -1928,6 +1928,45 @@ static inline struct surface_cache *eye_cache(const struct shade_context *sc, ui
 }
 
 /*
+ * The levels of detail of texture tx in the lanes of `mine` (a bit a
+ * lane) of a block on several triangles (fetch_lanes_mixed): lod_quad_lanes
+ * on each quad holding a lane of `mine`, each lane on its own triangle's
+ * part (tri_lod[slot[lane]]).  A lane outside `mine` takes lane `first`'s
+ * part (one of `mine`) in its place, and its lambda is the caller's to
+ * drop.  With every lane in `mine` (a constant, folded when inlined) this
+ * is the one-material block's loop, unchanged.
+ */
+SURFACE_INLINE void lod_slots_lanes(const struct scene_texture *tx,
+                                    const struct surface_lod tri_lod[TRACE_PACKET],
+                                    const int slot[TRACE_PACKET], int mine, int first,
+                                    const __m256 dv[3], const __m256 g[3], const float width[],
+                                    const float lane_g[3][TRACE_PACKET],
+                                    const float dir[3][TRACE_PACKET], float lambda[TRACE_PACKET])
+{
+    const double top = lod_top(tx->level_count);
+    const __m256 wv = _mm256_loadu_ps(width);
+    for (int h = 0; h < TRACE_PACKET / 4; h++) {
+        if (!(mine >> 4 * h & 15))
+            continue;
+        const struct surface_lod *l4[4];
+        for (int i = 0; i < 4; i++) {
+            const int j = 4 * h + i;
+            l4[i] = &tri_lod[slot[mine >> j & 1 ? j : first]];
+        }
+        const int shared = l4[0] == l4[1] && l4[0] == l4[2] && l4[0] == l4[3];
+#define HALF(v) _mm256_cvtps_pd(h ? _mm256_extractf128_ps(v, 1) : _mm256_castps256_ps128(v))
+        __m256d d[3], gd[3];
+        for (int k = 0; k < 3; k++) {
+            d[k] = HALF(dv[k]);
+            gd[k] = HALF(g[k]);
+        }
+        lod_quad_lanes(l4, shared, d, gd, HALF(wv), top, tx->level_count, h, width, lane_g, dir,
+                       lambda);
+#undef HALF
+    }
+}
+
+/*
  * fetch_lanes_mixed's colours for a block on two materials: lanes in
  * group 1 (other_lane[i] all ones) are on m2's triangles, the rest on
  * the first material's, whose colours amb and dif hold on entry (the
@@ -1984,29 +2023,8 @@ static void fetch_lanes_two(const struct shade_context *sc, const struct hit_tri
         float lambda[TRACE_PACKET];
         for (int i = 0; i < TRACE_PACKET; i++)
             lambda[i] = -INFINITY;
-        if (group ? lod2 : lod) {
-            const double top = lod_top(gt->level_count);
-            const __m256 wv = _mm256_loadu_ps(width);
-            for (int h = 0; h < TRACE_PACKET / 4; h++) {
-                if (!(mine >> 4 * h & 15))
-                    continue;
-                const struct surface_lod *l4[4];
-                for (int i = 0; i < 4; i++) {
-                    const int j = 4 * h + i;
-                    l4[i] = &tri_lod[slot[mine >> j & 1 ? j : first]];
-                }
-                const int shared = l4[0] == l4[1] && l4[0] == l4[2] && l4[0] == l4[3];
-#define HALF(v) _mm256_cvtps_pd(h ? _mm256_extractf128_ps(v, 1) : _mm256_castps256_ps128(v))
-                __m256d d[3], gd[3];
-                for (int k = 0; k < 3; k++) {
-                    d[k] = HALF(dv[k]);
-                    gd[k] = HALF(g[k]);
-                }
-                lod_quad_lanes(l4, shared, d, gd, HALF(wv), top, gt->level_count, h, width,
-                               lane_g, dir, lambda);
-#undef HALF
-            }
-        }
+        if (group ? lod2 : lod)
+            lod_slots_lanes(gt, tri_lod, slot, mine, first, dv, g, width, lane_g, dir, lambda);
         float gl[TRACE_PACKET], gs[2][TRACE_PACKET];
         for (int i = 0; i < TRACE_PACKET; i++) {
             const int j = mine >> i & 1 ? i : first;
@@ -2248,25 +2266,9 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
         float lambda[TRACE_PACKET];
         for (int i = 0; i < TRACE_PACKET; i++)
             lambda[i] = -INFINITY;
-        if (lod) {
-            const double top = lod_top(tx->level_count);
-            const __m256 wv = _mm256_loadu_ps(width);
-            for (int h = 0; h < TRACE_PACKET / 4; h++) {
-                const struct surface_lod *const l4[4] = {
-                    &tri_lod[slot[4 * h]], &tri_lod[slot[4 * h + 1]], &tri_lod[slot[4 * h + 2]],
-                    &tri_lod[slot[4 * h + 3]]};
-                const int shared = l4[0] == l4[1] && l4[0] == l4[2] && l4[0] == l4[3];
-#define HALF(v) _mm256_cvtps_pd(h ? _mm256_extractf128_ps(v, 1) : _mm256_castps256_ps128(v))
-                __m256d d[3], gd[3];
-                for (int k = 0; k < 3; k++) {
-                    d[k] = HALF(dv[k]);
-                    gd[k] = HALF(g[k]);
-                }
-                lod_quad_lanes(l4, shared, d, gd, HALF(wv), top, tx->level_count, h, width,
-                               lane_g, dir, lambda);
-#undef HALF
-            }
-        }
+        if (lod)
+            lod_slots_lanes(tx, tri_lod, slot, (1 << TRACE_PACKET) - 1, 0, dv, g, width, lane_g,
+                            dir, lambda);
         deferred = lanes_texture_end(tx, lambda, lane_st, amb, dif, defer);
     }
     for (int k = 0; k < 3; k++) {
