@@ -56,6 +56,25 @@ static float unit(void)
     return (float)(rng_state >> 40) * (1.0f / 16777216.0f);
 }
 
+/* Two triangles of the wall (object 4) on the quad of 0.5 x 0.45 at
+ * (x0, y0): a gently curved surface with smooth normals, and texture
+ * coordinates minified (several texels a pixel) and bent by vertex, so
+ * that each triangle has its own level-of-detail part and the levels
+ * matter in every lane. */
+static void wall_quad(float x0, float y0)
+{
+    static const int corner[6] = {0, 1, 3, 0, 3, 2};
+    for (int k = 0; k < 6; k++) {
+        const float x = x0 + 0.5f * (float)(corner[k] & 1);
+        const float y = y0 + 0.45f * (float)(corner[k] >> 1);
+        const float n[3] = {0.2f * sinf(x), 0.1f * cosf(y), 1.0f};
+        rtNormal3fv(n);
+        rtTexCoord2f(2.9f * x + 0.6f * sinf(3.1f * x + 1.7f * y),
+                     2.3f * y + 0.4f * x + 0.5f * cosf(2.3f * x * y));
+        rtVertex3f(x, y, -4.0f + 0.3f * sinf(0.7f * x + y));
+    }
+}
+
 static void define_scene(void)
 {
     rng_state = 777; /* the same soup in every context */
@@ -160,22 +179,31 @@ static void define_scene(void)
                 rtBindTexture(RT_TEXTURE_2D, kind == 0 ? 1u : 2u);
                 rtEnable(RT_TEXTURE_2D);
             }
-            const float x0 = -7.5f + 0.5f * (float)j, y0 = -1.5f + 0.45f * (float)i;
             rtBegin(RT_TRIANGLES);
-            static const int corner[6] = {0, 1, 3, 0, 3, 2};
-            for (int k = 0; k < 6; k++) {
-                const float x = x0 + 0.5f * (float)(corner[k] & 1);
-                const float y = y0 + 0.45f * (float)(corner[k] >> 1);
-                const float n[3] = {0.2f * sinf(x), 0.1f * cosf(y), 1.0f};
-                rtNormal3fv(n);
-                rtTexCoord2f(0.37f * x, 0.29f * y + 0.05f * x);
-                rtVertex3f(x, y, -4.0f + 0.3f * sinf(0.7f * x + y));
-            }
+            wall_quad(-7.5f + 0.5f * (float)j, -1.5f + 0.45f * (float)i);
             rtEnd();
             rtDisable(RT_TEXTURE_2D);
         }
     }
+    /* Above the wall, seven cells of 2 x 1.8 (some ten pixels), each of
+     * one material (texture 1 and texture 2 in turn) and 4 x 4 quads: a
+     * block there lies on several triangles of one material, which
+     * fetch_lanes_mixed takes with each lane's level of detail from its
+     * own triangle's part (the coordinates bent by vertex, so that the
+     * parts differ).  Without them a fault in that choice passed this
+     * test (round 58). */
     rtMaterialfv(RT_FRONT_AND_BACK, RT_EMISSION, dark);
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_DIFFUSE, grey);
+    for (int j = 0; j < 7; j++) {
+        rtBindTexture(RT_TEXTURE_2D, j % 2 ? 2u : 1u);
+        rtEnable(RT_TEXTURE_2D);
+        rtBegin(RT_TRIANGLES);
+        for (int a = 0; a < 4; a++)
+            for (int b = 0; b < 4; b++)
+                wall_quad(-7.5f + 2.0f * (float)j + 0.5f * (float)b, 4.8f + 0.45f * (float)a);
+        rtEnd();
+        rtDisable(RT_TEXTURE_2D);
+    }
     rtEndObject();
 
     rtMatrixMode(RT_PROJECTION);
