@@ -60,17 +60,21 @@ static float unit(void)
  * (x0, y0): a gently curved surface with smooth normals, and texture
  * coordinates minified (several texels a pixel) and bent by vertex, so
  * that each triangle has its own level-of-detail part and the levels
- * matter in every lane. */
-static void wall_quad(float x0, float y0)
+ * matter in every lane.  With flat_st the second triangle's three
+ * vertices take the coordinates of the quad's first corner: a triangle
+ * without texture area, off lod_ray's common path (its lambda -inf, a
+ * magnification), beside the first triangle's minification. */
+static void wall_quad(float x0, float y0, int flat_st)
 {
     static const int corner[6] = {0, 1, 3, 0, 3, 2};
     for (int k = 0; k < 6; k++) {
         const float x = x0 + 0.5f * (float)(corner[k] & 1);
         const float y = y0 + 0.45f * (float)(corner[k] >> 1);
         const float n[3] = {0.2f * sinf(x), 0.1f * cosf(y), 1.0f};
+        const float sx = flat_st && k >= 3 ? x0 : x, sy = flat_st && k >= 3 ? y0 : y;
         rtNormal3fv(n);
-        rtTexCoord2f(2.9f * x + 0.6f * sinf(3.1f * x + 1.7f * y),
-                     2.3f * y + 0.4f * x + 0.5f * cosf(2.3f * x * y));
+        rtTexCoord2f(2.9f * sx + 0.6f * sinf(3.1f * sx + 1.7f * sy),
+                     2.3f * sy + 0.4f * sx + 0.5f * cosf(2.3f * sx * sy));
         rtVertex3f(x, y, -4.0f + 0.3f * sinf(0.7f * x + y));
     }
 }
@@ -180,7 +184,7 @@ static void define_scene(void)
                 rtEnable(RT_TEXTURE_2D);
             }
             rtBegin(RT_TRIANGLES);
-            wall_quad(-7.5f + 0.5f * (float)j, -1.5f + 0.45f * (float)i);
+            wall_quad(-7.5f + 0.5f * (float)j, -1.5f + 0.45f * (float)i, 0);
             rtEnd();
             rtDisable(RT_TEXTURE_2D);
         }
@@ -200,10 +204,66 @@ static void define_scene(void)
         rtBegin(RT_TRIANGLES);
         for (int a = 0; a < 4; a++)
             for (int b = 0; b < 4; b++)
-                wall_quad(-7.5f + 2.0f * (float)j + 0.5f * (float)b, 4.8f + 0.45f * (float)a);
+                wall_quad(-7.5f + 2.0f * (float)j + 0.5f * (float)b, 4.8f + 0.45f * (float)a, 0);
         rtEnd();
         rtDisable(RT_TEXTURE_2D);
     }
+    /* Left and right of the wall, two columns of four such cells whose
+     * quads' second triangles have no texture area (wall_quad's
+     * flat_st): a block there mixes lanes on lod_ray's common path with
+     * lanes off it, which lod_quad_lanes gives lod_ray on their own
+     * triangle's part.  A fault that took the quad's first lane's part
+     * there changed the kitchen frame and passed this test (round 58). */
+    for (int j = 0; j < 8; j++) {
+        rtBindTexture(RT_TEXTURE_2D, j % 2 ? 2u : 1u);
+        rtEnable(RT_TEXTURE_2D);
+        rtBegin(RT_TRIANGLES);
+        for (int a = 0; a < 4; a++)
+            for (int b = 0; b < 4; b++)
+                wall_quad((j < 4 ? -9.5f : 7.0f) + 0.5f * (float)b,
+                          -1.5f + 1.8f * (float)(j % 4) + 0.45f * (float)a, 1);
+        rtEnd();
+        rtDisable(RT_TEXTURE_2D);
+    }
+    rtEndObject();
+    /* 5: two patches of 0.8 x 0.5, instanced twice in front of the
+     * floor's lower edge (some 160 pixels each).  On the left a quad of
+     * two triangles with a colour at each vertex and RT_COLOR_MATERIAL:
+     * its ambient and diffuse colours vary by hit, so surface_fetch_lanes
+     * takes its blocks hit by hit and keeps no colour in the triangle's
+     * cache entry.  On the right 4 x 3 quads under RT_FLAT with a normal
+     * of its own at each vertex: a block there lies on several
+     * triangles, each lane with its own triangle's provoking normal
+     * (fetch_lanes_mixed).  The second instance is turned about the x
+     * axis only (its matrix's first column that of the identity): the
+     * normals go through its matrix (lanes_shading_normal).  Faults in
+     * each of these three passed this test (round 58). */
+    rtNewObject(5);
+    rtEnable(RT_COLOR_MATERIAL);
+    rtBegin(RT_TRIANGLES);
+    static const float quad5[6][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 0}, {1, 1}, {0, 1}};
+    for (int k = 0; k < 6; k++) {
+        const float a = quad5[k][0], b = quad5[k][1];
+        rtColor3f(0.9f - 0.6f * a, 0.2f + 0.7f * b, 0.3f + 0.4f * a * b);
+        rtNormal3f(0.1f * a, 0.2f, 1.0f);
+        rtVertex3f(-0.8f + 0.8f * a, -0.25f + 0.5f * b, 0.0f);
+    }
+    rtEnd();
+    rtDisable(RT_COLOR_MATERIAL);
+    rtMaterialfv(RT_FRONT_AND_BACK, RT_DIFFUSE, plain);
+    rtShadeModel(RT_FLAT);
+    rtBegin(RT_TRIANGLES);
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 4; j++)
+            for (int k = 0; k < 6; k++) {
+                const float x = 0.2f * ((float)j + quad5[k][0]);
+                const float y = -0.25f + (0.5f / 3.0f) * ((float)i + quad5[k][1]);
+                rtNormal3f(0.6f * sinf(9.0f * x + 5.0f * y), 0.5f * cosf(7.0f * y - 4.0f * x),
+                           1.0f);
+                rtVertex3f(x, y, 0.0f);
+            }
+    rtEnd();
+    rtShadeModel(RT_SMOOTH);
     rtEndObject();
 
     rtMatrixMode(RT_PROJECTION);
@@ -233,6 +293,13 @@ static void define_scene(void)
     rtPopMatrix();
     rtInstantiateObject(3);
     rtInstantiateObject(4);
+    rtPushMatrix();
+    rtTranslatef(-1.2f, -1.6f, 5.0f);
+    rtInstantiateObject(5);
+    rtTranslatef(2.4f, 0.0f, 0.0f);
+    rtRotatef(35.0f, 1.0f, 0.0f, 0.0f);
+    rtInstantiateObject(5);
+    rtPopMatrix();
     rtLoadIdentity();
 }
 

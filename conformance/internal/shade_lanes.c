@@ -340,6 +340,27 @@ static int lod_fast_bound(shade_lod_fast_fn lod_fast)
             width[i] = (float)exp2((double)target - (double)ref[i]);
         }
         const int mask = lod_fast(&l, level_count, dir, ng, width, fast, ref);
+        /* The bound's kappa (surface.c, before LOD_FAST_RELATIVE): 2 K /
+         * |M|, K = (|w2| |a1| + |w1| |a2|) / |nn|, M = (a1 (w2 x nn)^T +
+         * a2 (nn x w1)^T) / nn2, at least 1. */
+        double m2 = 0.0;
+        for (int r = 0; r < 2; r++) {
+            const double a1r = l.a1[r], a2r = l.a2[r];
+            double row[3];
+            row[0] = (a1r * (w2[1] * l.nn[2] - w2[2] * l.nn[1]) +
+                      a2r * (l.nn[1] * w1[2] - l.nn[2] * w1[1])) / l.nn2;
+            row[1] = (a1r * (w2[2] * l.nn[0] - w2[0] * l.nn[2]) +
+                      a2r * (l.nn[2] * w1[0] - l.nn[0] * w1[2])) / l.nn2;
+            row[2] = (a1r * (w2[0] * l.nn[1] - w2[1] * l.nn[0]) +
+                      a2r * (l.nn[0] * w1[1] - l.nn[1] * w1[0])) / l.nn2;
+            m2 += row[0] * row[0] + row[1] * row[1] + row[2] * row[2];
+        }
+        const double k_sum =
+            sqrt((w2[0] * w2[0] + w2[1] * w2[1] + w2[2] * w2[2]) *
+                 (l.a1[0] * l.a1[0] + l.a1[1] * l.a1[1])) +
+            sqrt((w1[0] * w1[0] + w1[1] * w1[1] + w1[2] * w1[2]) *
+                 (l.a2[0] * l.a2[0] + l.a2[1] * l.a2[1]));
+        const double kappa = fmax(2.0 * k_sum / sqrt(l.nn2 * m2), 1.0);
         for (int i = 0; i < 4; i++) {
             lanes++;
             if (!(mask >> i & 1))
@@ -348,6 +369,21 @@ static int lod_fast_bound(shade_lod_fast_fn lod_fast)
             failures += !CHECKF(memcmp(&fast[i], &ref[i], sizeof(float)) == 0,
                                 "triangle %d lane %d: lod_fast %a, lod_ray %a", tri, i,
                                 (double)fast[i], (double)ref[i]);
+            /* A decided lane must be within the proof's bound, kappa /
+             * (sin cos) <= 64 (0.1 % over for this check's own
+             * roundings), whether or not its answer happens to be
+             * right: a fault that dropped that condition gave right
+             * answers in every lane here and passed (round 58). */
+            const double d[3] = {dir[i][0], dir[i][1], dir[i][2]};
+            const double c[3] = {l.n[1] * d[2] - l.n[2] * d[1], l.n[2] * d[0] - l.n[0] * d[2],
+                                 l.n[0] * d[1] - l.n[1] * d[0]};
+            const double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+            const double sin_cos =
+                sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) *
+                fabs(ng[i][0] * d[0] + ng[i][1] * d[1] + ng[i][2] * d[2]) / dd;
+            failures += !CHECKF(kappa <= 64.0 * 1.001 * sin_cos,
+                                "triangle %d lane %d: decided with kappa / (sin cos) = %g", tri,
+                                i, kappa / sin_cos);
         }
     }
     printf("shade_lanes: lod_fast decided %ld of %ld lanes\n", decided, lanes);
