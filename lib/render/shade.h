@@ -240,6 +240,16 @@ typedef int (*shade_lod_fast_fn)(const struct surface_lod *l, int level_count,
                                  const float dir[4][3], const float ng[4][3],
                                  const float width[4], float fast[4], float ref[4]);
 shade_lod_fast_fn shade_lod_fast_avx2_unit(void);
+/* That unit's levels of detail of four hits by the blocks' chain
+ * (surface.c, lod_quad_lanes: lod_quad, then lod_quad_axes or lod_ray for
+ * the lanes it leaves), every lane on triangle part l with `shared` as
+ * given, into quad[i]: for the test that every lane is lod_ray's bit for
+ * bit, the lanes lod_quad leaves near its boundaries included.  NULL
+ * where it is absent. */
+typedef void (*shade_lod_quad_fn)(const struct surface_lod *l, int shared, int level_count,
+                                  const float dir[4][3], const float ng[4][3],
+                                  const float width[4], float quad[4]);
+shade_lod_quad_fn shade_lod_quad_avx2_unit(void);
 /* The AVX-512 copy's eight-lane form of it (lod_fast_oct, the four hits
  * twice), for the same test; NULL where that unit is absent. */
 shade_lod_fast_fn shade_lod_fast_avx512_unit(void);

@@ -92,6 +92,40 @@ shade_lod_fast_fn shade_lod_fast_avx2_unit(void)
 {
     return lod_fast_lanes;
 }
+
+/* lod_quad_lanes on four hits, every lane on triangle part l (shared as
+ * the one-triangle block gives it, or not as a mixed block's lanes each
+ * point to their own part): shade_lod_quad_fn (shade.h). */
+static void lod_quad_unit(const struct surface_lod *l, int shared, int level_count,
+                          const float dir[4][3], const float ng[4][3], const float width[4],
+                          float quad[4])
+{
+    const struct surface_lod *const l4[4] = {l, l, l, l};
+    float lane_g[3][TRACE_PACKET], lane_d[3][TRACE_PACKET], lane_w[TRACE_PACKET];
+    float lambda[TRACE_PACKET];
+    for (int i = 0; i < TRACE_PACKET; i++) {
+        for (int k = 0; k < 3; k++) {
+            lane_g[k][i] = ng[i % 4][k];
+            lane_d[k][i] = dir[i % 4][k];
+        }
+        lane_w[i] = width[i % 4];
+    }
+    __m256d d[3], g[3];
+    for (int k = 0; k < 3; k++) {
+        d[k] = _mm256_set_pd(dir[3][k], dir[2][k], dir[1][k], dir[0][k]);
+        g[k] = _mm256_set_pd(ng[3][k], ng[2][k], ng[1][k], ng[0][k]);
+    }
+    const __m256d w = _mm256_set_pd(width[3], width[2], width[1], width[0]);
+    lod_quad_lanes(l4, shared, d, g, w, lod_top(level_count), level_count, 0, lane_w, lane_g,
+                   lane_d, lambda);
+    for (int i = 0; i < 4; i++)
+        quad[i] = lambda[i];
+}
+
+shade_lod_quad_fn shade_lod_quad_avx2_unit(void)
+{
+    return lod_quad_unit;
+}
 #else
 #include "render/shade.h"
 
@@ -116,6 +150,11 @@ shade_log2_quad_fn shade_log2_quad_avx2_unit(void)
 }
 
 shade_lod_fast_fn shade_lod_fast_avx2_unit(void)
+{
+    return NULL;
+}
+
+shade_lod_quad_fn shade_lod_quad_avx2_unit(void)
 {
     return NULL;
 }
