@@ -79,6 +79,20 @@ static void wall_quad(float x0, float y0, int flat_st)
     }
 }
 
+/* A cell of the wall of 2 x 1.8 on one material with texture `texture`:
+ * 4 x 4 of wall_quad's quads from (x0, y0). */
+static void wall_cell(unsigned texture, float x0, float y0, int flat_st)
+{
+    rtBindTexture(RT_TEXTURE_2D, texture);
+    rtEnable(RT_TEXTURE_2D);
+    rtBegin(RT_TRIANGLES);
+    for (int a = 0; a < 4; a++)
+        for (int b = 0; b < 4; b++)
+            wall_quad(x0 + 0.5f * (float)b, y0 + 0.45f * (float)a, flat_st);
+    rtEnd();
+    rtDisable(RT_TEXTURE_2D);
+}
+
 static void define_scene(void)
 {
     rng_state = 777; /* the same soup in every context */
@@ -198,33 +212,16 @@ static void define_scene(void)
      * test (round 58). */
     rtMaterialfv(RT_FRONT_AND_BACK, RT_EMISSION, dark);
     rtMaterialfv(RT_FRONT_AND_BACK, RT_DIFFUSE, grey);
-    for (int j = 0; j < 7; j++) {
-        rtBindTexture(RT_TEXTURE_2D, j % 2 ? 2u : 1u);
-        rtEnable(RT_TEXTURE_2D);
-        rtBegin(RT_TRIANGLES);
-        for (int a = 0; a < 4; a++)
-            for (int b = 0; b < 4; b++)
-                wall_quad(-7.5f + 2.0f * (float)j + 0.5f * (float)b, 4.8f + 0.45f * (float)a, 0);
-        rtEnd();
-        rtDisable(RT_TEXTURE_2D);
-    }
+    for (int j = 0; j < 7; j++)
+        wall_cell(j % 2 ? 2u : 1u, -7.5f + 2.0f * (float)j, 4.8f, 0);
     /* Left and right of the wall, two columns of four such cells whose
      * quads' second triangles have no texture area (wall_quad's
      * flat_st): a block there mixes lanes on lod_ray's common path with
      * lanes off it, which lod_quad_lanes gives lod_ray on their own
      * triangle's part.  A fault that took the quad's first lane's part
      * there changed the kitchen frame and passed this test (round 58). */
-    for (int j = 0; j < 8; j++) {
-        rtBindTexture(RT_TEXTURE_2D, j % 2 ? 2u : 1u);
-        rtEnable(RT_TEXTURE_2D);
-        rtBegin(RT_TRIANGLES);
-        for (int a = 0; a < 4; a++)
-            for (int b = 0; b < 4; b++)
-                wall_quad((j < 4 ? -9.5f : 7.0f) + 0.5f * (float)b,
-                          -1.5f + 1.8f * (float)(j % 4) + 0.45f * (float)a, 1);
-        rtEnd();
-        rtDisable(RT_TEXTURE_2D);
-    }
+    for (int j = 0; j < 8; j++)
+        wall_cell(j % 2 ? 2u : 1u, j < 4 ? -9.5f : 7.0f, -1.5f + 1.8f * (float)(j % 4), 1);
     rtEndObject();
     /* 5: two patches of 0.8 x 0.5, instanced twice in front of the
      * floor's lower edge (some 160 pixels each).  On the left a quad of
