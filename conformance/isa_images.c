@@ -7,7 +7,8 @@
  *
  * One scene (a sphere with smooth normals, a grid-snapped triangle soup
  * with shared planes and slivers, a floor with a mipmapped texture, a
- * wall of small cells on three materials, under five instance matrices)
+ * wall of small and larger cells on three materials, and patches with
+ * colours by vertex and flat quads, under seven instance matrices)
  * is rendered with eye light and Whitted shading (RGBA float) and
  * queried with 20,000 rays (rtTraceRays and rtOccludedRays) in a context
  * per configuration: "threads=1 isa=scalar" is the reference, every other

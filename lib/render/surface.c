@@ -2032,22 +2032,19 @@ static void fetch_lanes_two(const struct shade_context *sc, const struct hit_tri
             gs[0][i] = lane_st[0][j];
             gs[1][i] = lane_st[1][j];
         }
-        float rgb[3][TRACE_PACKET];
-        if (!scene_texture_sample_lod8(gt, gl, gs[0], gs[1], rgb)) {
-            for (int i = 0; i < TRACE_PACKET; i++) {
-                float texel[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-                if (mine >> i & 1)
-                    scene_texture_sample_lod(gt, gl[i], gs[0][i], gs[1][i], texel);
-                for (int k = 0; k < 3; k++)
-                    rgb[k][i] = texel[k];
-            }
+        /* lanes_texture_end's lookups and products in every lane, kept
+         * in the group's. */
+        __m256 amb_g[3], dif_g[3];
+        for (int k = 0; k < 3; k++) {
+            amb_g[k] = amb[k];
+            dif_g[k] = dif[k];
         }
+        lanes_texture_end(gt, gl, gs, amb_g, dif_g, NULL);
         const __m256 here = group ? in_other : _mm256_xor_ps(in_other, _mm256_castsi256_ps(
                                                                            _mm256_set1_epi32(-1)));
         for (int k = 0; k < 3; k++) {
-            const __m256 texel = _mm256_loadu_ps(rgb[k]);
-            amb[k] = _mm256_blendv_ps(amb[k], _mm256_mul_ps(amb[k], texel), here);
-            dif[k] = _mm256_blendv_ps(dif[k], _mm256_mul_ps(dif[k], texel), here);
+            amb[k] = _mm256_blendv_ps(amb[k], amb_g[k], here);
+            dif[k] = _mm256_blendv_ps(dif[k], dif_g[k], here);
         }
     }
 }
