@@ -82,7 +82,10 @@ static void check_lane(const struct tri4_packet *p, const struct tri4_record *r,
     finish_proper(v, 0.0f, n);
     const float s = r->size_max[l];
     int ok = 1;
-    (void)same_double;
+    if (!isnan(v[0])) {
+        for (int k = 0; k < 3; k++)
+            ok &= same_double(r->n[k][l], n[k]);
+    }
     if (s == -INFINITY) {
         /* Never proper: not even at 0 (a NaN lane). */
         ok &= !finish_proper(v, 0.0f, NULL) && !finish_proper(v, FLT_MIN, NULL);

@@ -1130,6 +1130,9 @@ static void record_lane(struct tri4_record *r, const struct tri4_packet *p, uint
     const double n2 = nx * nx + ny * ny + nz * nz;
     const double l1 = e1x * e1x + e1y * e1y + e1z * e1z;
     const double l2 = e2x * e2x + e2y * e2y + e2z * e2z;
+    r->n[0][l] = nx;
+    r->n[1][l] = ny;
+    r->n[2][l] = nz;
     /* A NaN lane (zero area) gets -inf: no size is <= it. */
     r->size_max[l] = isect_proper_size_max(n2, isect_proper_bound(l1, l2));
 }
@@ -1922,13 +1925,11 @@ static int collapse_wide(struct bvh4 *out, const struct bvh *bvh,
      * packet_count 160 bytes (tri4_packet_record). */
     char *records = NULL;
     if (width == 8 && tri && packets)
-        records = rt_malloc_large((size_t)packets * (sizeof(struct tri4_packet) / 8) +
-                                      sizeof(struct tri4_record),
-                                  &record_raw);
+        records = rt_malloc_large((size_t)packets * sizeof(struct tri4_packet), &record_raw);
     if (!base || !source || !packet_slot || (width == 8 && tri && packets && !records))
         goto fail;
     struct tri4_packet *pk = (struct tri4_packet *)(void *)(base + node_bytes);
-    c.record_offset = records ? (uintptr_t)records - ((uintptr_t)pk >> 3) : 0;
+    c.record_offset = records ? (uintptr_t)records - (uintptr_t)pk : 0;
     c.base = base;
     c.packets = pk;
     c.source = source;
@@ -2152,10 +2153,7 @@ uint64_t bvh4_leaf_bytes(const struct bvh4 *wide)
 
 uint64_t bvh4_record_bytes(const struct bvh4 *wide)
 {
-    return wide->record_raw.base
-               ? (uint64_t)wide->packet_count * (sizeof(struct tri4_packet) / 8) +
-                     sizeof(struct tri4_record)
-               : 0;
+    return wide->record_raw.base ? (uint64_t)wide->packet_count * sizeof(struct tri4_packet) : 0;
 }
 
 void bvh4_release(struct bvh4 *wide)

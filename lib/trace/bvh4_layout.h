@@ -161,9 +161,10 @@ typedef char tri4_packet_is_160_bytes[sizeof(struct tri4_packet) == 160 ? 1 : -1
  * single-ray closest-hit leaves are the only readers).
  */
 struct tri4_record {
+    double n[3][4];
     float size_max[4];
 };
-typedef char tri4_record_is_16_bytes[sizeof(struct tri4_record) == 16 ? 1 : -1];
+typedef char tri4_record_is_112_bytes[sizeof(struct tri4_record) == 112 ? 1 : -1];
 
 /*
  * The record of packet p, record_offset its layout's (struct bvh4): at p
@@ -180,7 +181,8 @@ typedef char tri4_record_is_16_bytes[sizeof(struct tri4_record) == 16 ? 1 : -1];
 static inline const struct tri4_record *tri4_packet_record(const struct tri4_packet *p,
                                                            uintptr_t record_offset)
 {
-    return (const struct tri4_record *)(((uintptr_t)p >> 3) + record_offset);
+    const uintptr_t a = (uintptr_t)p;
+    return (const struct tri4_record *)(a + record_offset + (a & 32u));
 }
 
 struct bvh4 {

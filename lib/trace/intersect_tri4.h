@@ -1225,18 +1225,13 @@ static inline unsigned tri4_finish_lanes(const struct tri4_packet *p,
     const __m256d v0x = _mm256_cvtps_pd(_mm_loadu_ps(p->v[0][0]));
     const __m256d v0y = _mm256_cvtps_pd(_mm_loadu_ps(p->v[0][1]));
     const __m256d v0z = _mm256_cvtps_pd(_mm_loadu_ps(p->v[0][2]));
-    const __m256d e1x = _mm256_sub_pd(_mm256_cvtps_pd(_mm_loadu_ps(p->v[1][0])), v0x);
-    const __m256d e1y = _mm256_sub_pd(_mm256_cvtps_pd(_mm_loadu_ps(p->v[1][1])), v0y);
-    const __m256d e1z = _mm256_sub_pd(_mm256_cvtps_pd(_mm_loadu_ps(p->v[1][2])), v0z);
-    const __m256d e2x = _mm256_sub_pd(_mm256_cvtps_pd(_mm_loadu_ps(p->v[2][0])), v0x);
-    const __m256d e2y = _mm256_sub_pd(_mm256_cvtps_pd(_mm_loadu_ps(p->v[2][1])), v0y);
-    const __m256d e2z = _mm256_sub_pd(_mm256_cvtps_pd(_mm_loadu_ps(p->v[2][2])), v0z);
-    const __m256d nx = _mm256_sub_pd(_mm256_mul_pd(e1y, e2z), _mm256_mul_pd(e1z, e2y));
-    const __m256d ny = _mm256_sub_pd(_mm256_mul_pd(e1z, e2x), _mm256_mul_pd(e1x, e2z));
-    const __m256d nz = _mm256_sub_pd(_mm256_mul_pd(e1x, e2y), _mm256_mul_pd(e1y, e2x));
-    /* The first sliver test as size <= size_max, the packet's record
-     * (isect_proper_size_max proves it the same test; ordered, so a NaN
-     * size fails as there). */
+    /* The triangle's part from its record (struct tri4_record, filled
+     * with the finish's own expressions: the same n), and the first
+     * sliver test as size <= size_max (isect_proper_size_max proves it
+     * the same test; ordered, so a NaN size fails as there). */
+    const __m256d nx = _mm256_loadu_pd(rec->n[0]);
+    const __m256d ny = _mm256_loadu_pd(rec->n[1]);
+    const __m256d nz = _mm256_loadu_pd(rec->n[2]);
     const unsigned proper = (unsigned)_mm_movemask_ps(
         _mm_cmple_ps(_mm_loadu_ps(lanes->size), _mm_loadu_ps(rec->size_max)));
     const __m256d den = _mm256_add_pd(

@@ -158,7 +158,9 @@ __attribute__((always_inline))
 #endif
 static inline void wide_record_prefetch(struct wide_state *s, const struct tri4_packet *p)
 {
-    _mm_prefetch((const char *)wide_ray_record(s, p), _MM_HINT_T0);
+    const char *r = (const char *)wide_ray_record(s, p);
+    _mm_prefetch(r, _MM_HINT_T0);
+    _mm_prefetch(r + 64, _MM_HINT_T0);
 }
 /* A closest-hit walk's record offset, from its layout. */
 #define WIDE8_SET_RECORDS(rs, wide, any_hit)                                                    \
@@ -1657,9 +1659,10 @@ static int TRACE_WIDE_LEAF8(const struct trace_ray *ray, const struct tri4_packe
      * of the address; tri4_packet_record). */
     union {
         struct tri4_record r;
-        char bytes[sizeof(struct tri4_packet) / 8 + sizeof(struct tri4_record)];
+        char bytes[192 + sizeof(struct tri4_record)];
     } recs;
-    rs.record_offset = (uintptr_t)&recs - ((uintptr_t)p >> 3);
+    const uintptr_t pa = (uintptr_t)p;
+    rs.record_offset = (uintptr_t)&recs - pa - (pa & 32u);
     if (!any_hit) {
         for (uint32_t j = 0; j < (n + 3) / 4; j++)
             accel_fill_packet_record((struct tri4_record *)(uintptr_t)wide_ray_record(s, p + j),
