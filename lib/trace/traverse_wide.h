@@ -151,17 +151,6 @@ static inline const struct tri4_record *wide_ray_record(struct wide_state *s,
 {
     return tri4_packet_record(p, ((struct wide_ray_state *)(void *)s)->record_offset);
 }
-/* The two lines of packet p's record asked for at the leaf's entry,
- * before its filter, so that a kept lane's finish finds them nearer. */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline void wide_record_prefetch(struct wide_state *s, const struct tri4_packet *p)
-{
-    const char *r = (const char *)wide_ray_record(s, p);
-    _mm_prefetch(r, _MM_HINT_T0);
-    _mm_prefetch(r + 64, _MM_HINT_T0);
-}
 /* A closest-hit walk's record offset, from its layout. */
 #define WIDE8_SET_RECORDS(rs, wide, any_hit)                                                    \
     do {                                                                                        \
@@ -267,10 +256,6 @@ static inline int wide_packet_test(struct wide_state *s, const struct tri4_packe
 {
     /* An any-hit walk returns at its first hit: found stays 0. */
     float limit = !any_hit && s->found ? isect_next_up(s->best) : s->best;
-#if TRI4_FINISH_VEC
-    if (ray_double && !any_hit)
-        wide_record_prefetch(s, p);
-#endif
     struct tri4_lanes lanes;
     unsigned mask =
         tri4_filter_lanes_depth(&s->r4, p, (1u << n) - 1u, limit, &lanes, any_hit, early_out,
@@ -1341,12 +1326,6 @@ static inline int wide_leaf8_test(struct wide_state *s, const struct tri4_packet
                                   int ray_double)
 {
     float limit = !any_hit && s->found ? isect_next_up(s->best) : s->best;
-#if TRI4_FINISH_VEC
-    if (ray_double && !any_hit) {
-        wide_record_prefetch(s, p);
-        wide_record_prefetch(s, p + 1);
-    }
-#endif
     struct tri4_lanes lanes[2];
     unsigned mask =
         tri4_pair_filter_lanes(&s->r4, p, (1u << n) - 1u, limit, lanes, any_hit, early_out,
