@@ -579,7 +579,7 @@ static int embree_memory_row(RTCDevice device, int64_t *counter, const struct be
     if (bench_accel_build(&acc, mesh, NULL))
         return -1;
     double binary = (32.0 * acc.bvh.node_count + 40.0 * acc.bvh.prim_count) / n;
-    double wide[2], leaves[2], records = 0.0;
+    double wide[2], leaves[2];
     for (int w = 0; w < 2; w++) {
         bvh4_release(&acc.wide);
         if (accel_collapse_wide_quality(&acc.wide, &acc.bvh, acc.tri, w ? 8 : 4, NULL, NULL,
@@ -587,16 +587,12 @@ static int embree_memory_row(RTCDevice device, int64_t *counter, const struct be
             bench_accel_release(&acc);
             return -1;
         }
-        wide[w] = (double)(bvh4_node_bytes(&acc.wide) + bvh4_leaf_bytes(&acc.wide) +
-                           bvh4_record_bytes(&acc.wide)) /
-                  n;
+        wide[w] = (double)(bvh4_node_bytes(&acc.wide) + bvh4_leaf_bytes(&acc.wide)) / n;
         leaves[w] = (double)bvh4_leaf_bytes(&acc.wide) / n;
-        if (w)
-            records = (double)bvh4_record_bytes(&acc.wide) / n;
     }
     bench_accel_release(&acc);
-    report_row("%s|%.1f|%.1f|%.1f|%.1f|%.1f|%.1f|%.1f|%.1f", mesh->name, binary, wide[0],
-               wide[1], leaves[0], leaves[1], records, embree[0], embree[1]);
+    report_row("%s|%.1f|%.1f|%.1f|%.1f|%.1f|%.1f|%.1f", mesh->name, binary, wide[0], wide[1],
+               leaves[0], leaves[1], embree[0], embree[1]);
     return 0;
 }
 
@@ -714,14 +710,11 @@ int bench_embree_section(const struct bench_options *opts, struct bench_mesh *me
                   "vertices and a 4-byte primitive index per triangle; bvh4/bvh8: 128/256-byte "
                   "nodes and 160-byte packets of four triangles; \"leaves\": the packets "
                   "alone, 40 bytes a triangle in full packets, more where leaves leave lanes "
-                  "empty; \"bvh8 records\": the closest-hit finish's records beside the "
-                  "8-wide layout's packets, 160 bytes a packet (struct tri4_record), "
-                  "counted in bvh8 too); Embree: what its allocator "
+                  "empty); Embree: what its allocator "
                   "holds after rtcCommitScene (device memory monitor, whole blocks; BVH8 "
                   "nodes of 256 bytes and Triangle4 leaf blocks of 176 on AVX2, 44 bytes a "
                   "triangle in full blocks), less the vertex and index buffers.\n\n");
-    report_table_header(
-        "mesh|binary|bvh4|bvh8|bvh4 leaves|bvh8 leaves|bvh8 records|Embree MEDIUM|Embree HIGH");
+    report_table_header("mesh|binary|bvh4|bvh8|bvh4 leaves|bvh8 leaves|Embree MEDIUM|Embree HIGH");
     for (int m = 0; m < mesh_count; m++)
         failed |= embree_memory_row(device, &embree_bytes, &meshes[m]) != 0;
     rtcSetDeviceMemoryMonitorFunction(device, NULL, NULL);
