@@ -1111,38 +1111,6 @@ static int fill_packet_mesh(struct tri4_packet *p, const struct collapse_triangl
     return fill_packet_rows(p, row, prim_index, slot, n, test);
 }
 
-/* The finish's doubles of one lane, isect_triangle_finish_impl's
- * expressions in its order (intersect.h), so the same doubles: the edge
- * vectors from the floats converted exactly, their cross product n, n2,
- * l1, l2 and the first sliver test's bound (isect_proper_bound). */
-static void record_lane(struct tri4_record *r, const struct tri4_packet *p, uint32_t l)
-{
-    const float x0 = p->v[0][0][l], y0 = p->v[0][1][l], z0 = p->v[0][2][l];
-    const double e1x = (double)p->v[1][0][l] - x0;
-    const double e1y = (double)p->v[1][1][l] - y0;
-    const double e1z = (double)p->v[1][2][l] - z0;
-    const double e2x = (double)p->v[2][0][l] - x0;
-    const double e2y = (double)p->v[2][1][l] - y0;
-    const double e2z = (double)p->v[2][2][l] - z0;
-    const double nx = e1y * e2z - e1z * e2y;
-    const double ny = e1z * e2x - e1x * e2z;
-    const double nz = e1x * e2y - e1y * e2x;
-    const double n2 = nx * nx + ny * ny + nz * nz;
-    const double l1 = e1x * e1x + e1y * e1y + e1z * e1z;
-    const double l2 = e2x * e2x + e2y * e2y + e2z * e2z;
-    r->n[0][l] = nx;
-    r->n[1][l] = ny;
-    r->n[2][l] = nz;
-    /* A NaN lane (zero area) gets -inf: no size is <= it. */
-    r->size_max[l] = isect_proper_size_max(n2, isect_proper_bound(l1, l2));
-}
-
-void accel_fill_packet_record(struct tri4_record *r, const struct tri4_packet *p)
-{
-    for (uint32_t l = 0; l < 4; l++)
-        record_lane(r, p, l);
-}
-
 /*
  * A wide subtree below the cut (struct collapse): its wide nodes in its
  * own breadth-first order, gathered and numbered on one thread.  A node's
@@ -1218,21 +1186,7 @@ struct collapse {
     uint32_t *item_next;
     /* The zero-area triangles the packets' fill found (and marked NaN). */
     uint32_t *zero_found;
-    /* The records' distance from the packets (tri4_packet_record), for
-     * fill_records; unused without records. */
-    uintptr_t record_offset;
 };
-
-/* The records of packets [lo, hi) (struct collapse's record_offset). */
-static void fill_records(void *arg, uint32_t lo, uint32_t hi)
-{
-    const struct collapse *c = arg;
-    for (uint32_t i = lo; i < hi; i++) {
-        const struct tri4_packet *p = &c->packets[i];
-        accel_fill_packet_record(
-            (struct tri4_record *)(uintptr_t)tri4_packet_record(p, c->record_offset), p);
-    }
-}
 
 /* The rows of leaf slots slots[0 .. m), m <= 4, as the packets read
  * them (fill_packet, fill_packet_mesh): in the leaf-ordered triangles,
@@ -1781,7 +1735,6 @@ static int collapse_wide(struct bvh4 *out, const struct bvh *bvh,
      * there are at most (node_count - 1) / 2 + 1 of them. */
     const uint32_t cap = (bvh->node_count - 1) / 2 + 1;
     struct rt_large_block raw = {NULL, 0};
-    struct rt_large_block record_raw = {NULL, 0};
     int taken = 0; /* raw is *spare's block */
     char *base = NULL;
     uint32_t *source = NULL;
@@ -1920,16 +1873,9 @@ static int collapse_wide(struct bvh4 *out, const struct bvh *bvh,
     /* Both written in full by write_node. */
     source = rt_realloc_array(NULL, (size_t)count * width, sizeof(uint32_t));
     packet_slot = rt_realloc_array(NULL, packets ? packets : 1, sizeof(uint32_t));
-    /* The packets' records (struct tri4_record): an 8-wide layout of
-     * triangles only, whose single-ray closest-hit leaves read them;
-     * packet_count 160 bytes (tri4_packet_record). */
-    char *records = NULL;
-    if (width == 8 && tri && packets)
-        records = rt_malloc_large((size_t)packets * sizeof(struct tri4_packet), &record_raw);
-    if (!base || !source || !packet_slot || (width == 8 && tri && packets && !records))
+    if (!base || !source || !packet_slot)
         goto fail;
     struct tri4_packet *pk = (struct tri4_packet *)(void *)(base + node_bytes);
-    c.record_offset = records ? (uintptr_t)records - (uintptr_t)pk : 0;
     c.base = base;
     c.packets = pk;
     c.source = source;
@@ -1937,11 +1883,6 @@ static int collapse_wide(struct bvh4 *out, const struct bvh *bvh,
     rt_pool_run_range(pool, 0, top, COLLAPSE_CHUNK, COLLAPSE_PARALLEL_MIN, write_nodes, &c);
     if (item_count)
         rt_pool_run_range(pool, 0, item_count, 1, 2, write_items, &c);
-    /* Each record from its packet as written (the same doubles on any
-     * pool: a record depends on its packet alone). */
-    if (records)
-        rt_pool_run_range(pool, 0, packets, COLLAPSE_CHUNK, COLLAPSE_PARALLEL_MIN, fill_records,
-                          &c);
     release_items(items, item_count);
     rt_free(c.item_nodes);
     rt_free(c.item_todo);
@@ -1965,8 +1906,6 @@ static int collapse_wide(struct bvh4 *out, const struct bvh *bvh,
     out->source = source;
     out->packet_slot = packet_slot;
     out->raw = raw;
-    out->record_offset = c.record_offset;
-    out->record_raw = record_raw;
     out->dropped = c.drop ? bvh->prim_count - layout_triangles(out) : 0;
     /* A taken block may be larger than the layout and written past it
      * (a parallel build's refs, accel_build_parallel_triangles): pages
@@ -1988,7 +1927,6 @@ fail:
         *spare = raw;
     else
         rt_free_large(&raw);
-    rt_free_large(&record_raw);
     rt_free(source);
     rt_free(packet_slot);
     return -1;
@@ -2131,11 +2069,6 @@ int accel_refit4(struct bvh4 *wide, const struct bvh *bvh, const float *tri)
         while (n < 4 && (wide->packets[p].prim[n] != wide->packets[p].prim[n - 1]))
             n++;
         fill_packet(&wide->packets[p], tri, NULL, slot, n, 1);
-        /* Its record from the moved vertices (struct tri4_record). */
-        if (wide->record_raw.base)
-            accel_fill_packet_record((struct tri4_record *)(uintptr_t)tri4_packet_record(
-                                         &wide->packets[p], wide->record_offset),
-                                     &wide->packets[p]);
     }
     return 0;
 }
@@ -2151,15 +2084,9 @@ uint64_t bvh4_leaf_bytes(const struct bvh4 *wide)
     return (uint64_t)wide->packet_count * sizeof(struct tri4_packet);
 }
 
-uint64_t bvh4_record_bytes(const struct bvh4 *wide)
-{
-    return wide->record_raw.base ? (uint64_t)wide->packet_count * sizeof(struct tri4_packet) : 0;
-}
-
 void bvh4_release(struct bvh4 *wide)
 {
     rt_free_large(&wide->raw);
-    rt_free_large(&wide->record_raw);
     rt_free(wide->source);
     rt_free(wide->packet_slot);
     memset(wide, 0, sizeof(*wide));

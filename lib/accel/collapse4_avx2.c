@@ -31,8 +31,6 @@
 #define accel_set_packet_lane accel_set_packet_lane_avx2
 #define bvh4_node_bytes bvh4_node_bytes_avx2
 #define bvh4_leaf_bytes bvh4_leaf_bytes_avx2
-#define bvh4_record_bytes bvh4_record_bytes_avx2
-#define accel_fill_packet_record accel_fill_packet_record_avx2
 #define bvh4_release bvh4_release_avx2
 
 #include "accel/collapse4.c"

@@ -138,53 +138,6 @@ struct tri4_packet {
 };
 typedef char tri4_packet_is_160_bytes[sizeof(struct tri4_packet) == 160 ? 1 : -1];
 
-/*
- * A packet's record for the closest-hit finish (tri4_finish_lanes,
- * intersect_tri4.h): per lane the triangle's part of the finish, which
- * does not depend on the ray.
- *
- *   byte  0.. 95  n[3][4]      the edge vectors' cross product in
- *                 double, x, y, z, lane: the finish's own doubles (the
- *                 same expressions in the same order)
- *   byte 96..111  size_max[4]  isect_proper_size_max(n2, bound) of the
- *                 lane (intersect.h): the finish's first sliver test
- *                 holds for a ray exactly when the ray's size is <= it
- *                 (-inf for a NaN lane: never)
- *
- * The records are not in the packets: the packet filter reads every
- * packet a ray reaches, the record only a packet with a kept lane (round
- * 34, dc1: 112 more bytes in each packet cost the memory-bound sets a
- * sixth of their speed).  They sit in a block of their own
- * (struct bvh4's record_raw) at a fixed distance from their packets, so
- * that the leaf finds a packet's record from its address alone
- * (tri4_packet_record).  Only 8-wide triangle layouts have them (their
- * single-ray closest-hit leaves are the only readers).
- */
-struct tri4_record {
-    double n[3][4];
-    float size_max[4];
-};
-typedef char tri4_record_is_112_bytes[sizeof(struct tri4_record) == 112 ? 1 : -1];
-
-/*
- * The record of packet p, record_offset its layout's (struct bvh4): at p
- * + record_offset, plus 32 bytes when p is 32 but not 64 bytes aligned.
- * The packets are 160 bytes apart from a 64-byte aligned start, so they
- * start at 0 or 32 bytes into a line, every other one; the 32 bytes move
- * the odd ones' records to a line's start too (160 k + 32 for odd k is a
- * multiple of 64, and its 112 bytes end at 160 k + 144, before the next
- * packet's record), so that each record is two cache lines, not three.
- * The block is packet_count 160 bytes, from a 64-byte aligned start.
- * The arithmetic is on integers (modulo 2^N): the two blocks are
- * separate objects.
- */
-static inline const struct tri4_record *tri4_packet_record(const struct tri4_packet *p,
-                                                           uintptr_t record_offset)
-{
-    const uintptr_t a = (uintptr_t)p;
-    return (const struct tri4_record *)(a + record_offset + (a & 32u));
-}
-
 struct bvh4 {
     uint32_t width;          /* 4 or 8; 0 when there is no layout */
     uint32_t node_count;     /* 0: no wide layout (empty tree) */
@@ -223,11 +176,6 @@ struct bvh4 {
     /* The nodes and packets in one block (rt_malloc_large: 2 MB huge
      * pages where the OS offers them). */
     struct rt_large_block raw;
-    /* The packets' records (struct tri4_record): their block, and its
-     * distance from the packets (tri4_packet_record); 0 and empty for a
-     * layout without them (4 wide, or no packets). */
-    uintptr_t record_offset;
-    struct rt_large_block record_raw;
 };
 
 /*
@@ -315,17 +263,9 @@ int accel_refit4(struct bvh4 *wide, const struct bvh *bvh, const float *tri);
  * packet lane is written by this; implemented in lib/accel. */
 void accel_set_packet_lane(struct tri4_packet *p, uint32_t lane, const float v[9]);
 
-/* Node and packet bytes of a layout (the memory table); the records'
- * block (struct tri4_record) is bvh4_record_bytes. */
+/* Node and packet bytes of a layout (the memory table). */
 uint64_t bvh4_node_bytes(const struct bvh4 *wide);
 uint64_t bvh4_leaf_bytes(const struct bvh4 *wide);
-uint64_t bvh4_record_bytes(const struct bvh4 *wide);
-
-/* Packet p's record (struct tri4_record) from its lanes as stored:
- * isect_triangle_finish_impl's doubles and isect_proper_size_max.  The
- * collapse and the refit fill every record this way; the leaf's own
- * test entry (TRACE_WIDE_LEAF8) too.  Implemented in lib/accel. */
-void accel_fill_packet_record(struct tri4_record *r, const struct tri4_packet *p);
 
 /* Frees *wide and zeroes it; safe on a zeroed one. */
 void bvh4_release(struct bvh4 *wide);

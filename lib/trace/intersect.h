@@ -28,7 +28,6 @@
 #ifndef RT_TRACE_INTERSECT_H
 #define RT_TRACE_INTERSECT_H
 
-#include <float.h>
 #include <math.h>
 #include <stddef.h>
 #include <stdint.h>
@@ -394,89 +393,6 @@ static inline int isect_sliver_edges(double e1x, double e1y, double e1z, double 
     const double l12 = l1 > l2 ? l1 : l2;
     const double lmax = l12 > *l3 ? l12 : *l3;
     return n2 >= r2 * lmax;
-}
-
-/*
- * The finish's first sliver test (isect_triangle_finish_impl: proper =
- * n2 >= r2 ((l1 + l2) ISECT_LONGEST_EDGE_BOUND)) split into its part of
- * the triangle alone and its part of the ray, so that a layout can store
- * the first (struct tri4_record, bvh4_layout.h) and a leaf compare the
- * ray's part with one float comparison:
- * - isect_proper_bound: fl(fl(l1 + l2) K), the finish's grouping;
- * - isect_proper_for_size: the test itself for a size, every operation
- *   the finish's in the finish's order (rounding = ISECT_SLIVER_ROUNDINGS
- *   2^-24 size, the constant product first as C groups it; r2 =
- *   rounding^2; n2 >= fl(r2 bound)), so it answers as the finish does.
- */
-static inline double isect_proper_bound(double l1, double l2)
-{
-#if defined(__clang__)
-#pragma STDC FP_CONTRACT OFF
-#endif
-    return (l1 + l2) * ISECT_LONGEST_EDGE_BOUND;
-}
-
-static inline int isect_proper_for_size(double n2, double bound, float size)
-{
-#if defined(__clang__)
-#pragma STDC FP_CONTRACT OFF
-#endif
-    const double rounding = ISECT_SLIVER_ROUNDINGS * 0x1p-24 * (double)size;
-    const double r2 = rounding * rounding;
-    return n2 >= r2 * bound;
-}
-
-/*
- * The largest float size for which isect_proper_for_size(n2, bound,
- * size) holds, so that for every size the filter can give (a maximum of
- * absolute values: +0 or more, +inf, or NaN)
- *
- *     size <= isect_proper_size_max(n2, bound)  exactly when
- *     isect_proper_for_size(n2, bound, size).
- *
- * Proof.  For floats 0 <= a <= b (and -0 as +0: its square is +0):
- * (double)a <= (double)b exactly; the product with the constant 2^-18
- * (ISECT_SLIVER_ROUNDINGS 2^-24, exact) is rounded monotonically, so
- * rounding(a) <= rounding(b), both >= 0; squaring non-negative values
- * and rounding is monotone, so r2(a) <= r2(b); and with bound >= 0
- * (a sum of squares times K, or NaN) fl(r2 bound) is monotone too.
- * So when the test holds for b (n2 >= fl(r2(b) bound)) it holds for a:
- * the sizes >= 0 for which it holds are the floats of an interval [0,
- * s] (or none).  Its largest element s is found below by the test
- * itself, so no rounding of the estimate matters:
- * - NaN n2 or bound (a NaN lane: a zero-area triangle) or any n2 < 0:
- *   the test fails at 0 and at every size; -inf, and no size (not even
- *   NaN: an unordered comparison is false) is <= -inf.
- * - The test holds at FLT_MAX: FLT_MAX, and every finite size passes
- *   both ways; +inf fails the test (rounding and r2 are +inf, r2 bound
- *   +inf or NaN for bound 0, and a finite n2 >= either is false; n2 is a
- *   sum of squares of differences of floats, below 2^520) and fails
- *   +inf <= FLT_MAX.
- * - Otherwise the test holds at 0 and fails at FLT_MAX: start from the
- *   estimate sqrt(n2 / bound) 2^18 (clamped into [0, FLT_MAX]), step
- *   down one float while the test fails (it holds at 0, so this stops),
- *   then up one float while the next float passes (it fails at FLT_MAX,
- *   so this stops below it).  The result passes and its successor
- *   fails, so by monotonicity it is the interval's end.  The estimate is
- *   within a few floats of it, so the loops take few steps.
- * A NaN size fails both sides (the test's comparison with a NaN r2, and
- * NaN <= s).  Computed once a triangle when its layout is filled; the
- * leaf then compares the ray's size with it in float
- * (tri4_finish_lanes).
- */
-static inline float isect_proper_size_max(double n2, double bound)
-{
-    if (!isect_proper_for_size(n2, bound, 0.0f))
-        return -INFINITY;
-    if (isect_proper_for_size(n2, bound, FLT_MAX))
-        return FLT_MAX;
-    const double est = sqrt(n2 / bound) * 0x1p18;
-    float s = est >= (double)FLT_MAX ? FLT_MAX : (est > 0.0 ? (float)est : 0.0f);
-    while (!isect_proper_for_size(n2, bound, s))
-        s = nextafterf(s, 0.0f);
-    while (isect_proper_for_size(n2, bound, nextafterf(s, INFINITY)))
-        s = nextafterf(s, INFINITY);
-    return s;
 }
 
 /* isect_triangle_finish_impl's t for a sliver (see there): the ray's

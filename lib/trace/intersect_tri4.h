@@ -1177,28 +1177,19 @@ static inline int tri4_lane_test(const struct trace_ray *ray, const double *ray_
  * about 100 instructions a lane with its spills (callgrind, a kitchen
  * random ray: 0.55 finishes, 81 of the leaves' 214 instructions with the
  * lane loop).  Here the same double operations run on the packet's four
- * lanes in one 256-bit vector of doubles each: v0's rows p->v[0][k]
- * are four floats, each converted exactly (vcvtps2pd); the normal n comes
- * from the packet's record (struct tri4_record, bvh4_layout.h), filled
- * with the finish's own expressions for the edges and their cross
- * product (accel_fill_packet_record), so the same doubles; then den, num
- * and num / den in the source's order, every operation an IEEE double
- * one lane by lane and never fused (-ffp-contract=off; separate
- * intrinsics), so each lane's doubles are those the scalar finish
- * computes, and its t the same float (vcvtpd2ps rounds to nearest as the
- * cast does).  The first sliver test (n2 >= r2 (l1 + l2)
- * ISECT_LONGEST_EDGE_BOUND, r2 from the ray's size) is the record's
- * size_max against the lane's size: isect_proper_size_max (intersect.h)
- * proves size <= size_max the same test for every size the filter
- * gives.  The record saves 40 of the finish's vector operations (six
- * conversions, the edges, n, n2, l1, l2 and the bound), and costs a read
- * of its two lines (round 59, zn14).  The clamp into the
+ * lanes in one 256-bit vector of doubles each: the rows p->v[i][k] are
+ * four floats, each converted exactly (vcvtps2pd), then the edges, the
+ * normal, n2, l1, l2, the sliver bound, den, num and num / den in the
+ * source's order, every operation an IEEE double one lane by lane and
+ * never fused (-ffp-contract=off; separate intrinsics), so each lane's
+ * doubles are those the scalar finish computes, and its t the same float
+ * (vcvtpd2ps rounds to nearest as the cast does).  The clamp into the
  * box is isect_clamp_to_box's (minps(t, t_hi) is t < t_hi ? t : t_hi,
  * maxps(t, t_lo) is t > t_lo ? t : t_lo), then t >= tmin and isfinite(t)
  * (|t| < inf).  Returns the lanes this decides: not deferred (a deferred
  * lane's signs and U, V, W, det come from the double edge step first),
- * proper by the first bound (size <= size_max; the others need
- * isect_sliver_edges and perhaps the sliver's t) and
+ * proper by the first bound (n2 >= r2 (l1 + l2) ISECT_LONGEST_EDGE_BOUND;
+ * the others need isect_sliver_edges and perhaps the sliver's t) and
  * den != 0 (else the paper's t from U, V, W).  Every other lane keeps
  * tri4_lane_test.  *ok: those of the decided lanes whose t passes tmin and
  * is finite; t_out: their t.  The caller still refuses t >= the limit of
@@ -1218,22 +1209,39 @@ static inline int tri4_lane_test(const struct trace_ray *ray, const double *ray_
 __attribute__((always_inline))
 #endif
 static inline unsigned tri4_finish_lanes(const struct tri4_packet *p,
-                                         const struct tri4_record *rec,
                                          const struct tri4_lanes *lanes, const double *ray_d,
                                          float tmin, float t_out[4], unsigned *ok)
 {
     const __m256d v0x = _mm256_cvtps_pd(_mm_loadu_ps(p->v[0][0]));
     const __m256d v0y = _mm256_cvtps_pd(_mm_loadu_ps(p->v[0][1]));
     const __m256d v0z = _mm256_cvtps_pd(_mm_loadu_ps(p->v[0][2]));
-    /* The triangle's part from its record (struct tri4_record, filled
-     * with the finish's own expressions: the same n), and the first
-     * sliver test as size <= size_max (isect_proper_size_max proves it
-     * the same test; ordered, so a NaN size fails as there). */
-    const __m256d nx = _mm256_loadu_pd(rec->n[0]);
-    const __m256d ny = _mm256_loadu_pd(rec->n[1]);
-    const __m256d nz = _mm256_loadu_pd(rec->n[2]);
-    const unsigned proper = (unsigned)_mm_movemask_ps(
-        _mm_cmple_ps(_mm_loadu_ps(lanes->size), _mm_loadu_ps(rec->size_max)));
+    const __m256d e1x = _mm256_sub_pd(_mm256_cvtps_pd(_mm_loadu_ps(p->v[1][0])), v0x);
+    const __m256d e1y = _mm256_sub_pd(_mm256_cvtps_pd(_mm_loadu_ps(p->v[1][1])), v0y);
+    const __m256d e1z = _mm256_sub_pd(_mm256_cvtps_pd(_mm_loadu_ps(p->v[1][2])), v0z);
+    const __m256d e2x = _mm256_sub_pd(_mm256_cvtps_pd(_mm_loadu_ps(p->v[2][0])), v0x);
+    const __m256d e2y = _mm256_sub_pd(_mm256_cvtps_pd(_mm_loadu_ps(p->v[2][1])), v0y);
+    const __m256d e2z = _mm256_sub_pd(_mm256_cvtps_pd(_mm_loadu_ps(p->v[2][2])), v0z);
+    const __m256d nx = _mm256_sub_pd(_mm256_mul_pd(e1y, e2z), _mm256_mul_pd(e1z, e2y));
+    const __m256d ny = _mm256_sub_pd(_mm256_mul_pd(e1z, e2x), _mm256_mul_pd(e1x, e2z));
+    const __m256d nz = _mm256_sub_pd(_mm256_mul_pd(e1x, e2y), _mm256_mul_pd(e1y, e2x));
+    const __m256d n2 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(nx, nx), _mm256_mul_pd(ny, ny)),
+                                     _mm256_mul_pd(nz, nz));
+    const __m256d l1 =
+        _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(e1x, e1x), _mm256_mul_pd(e1y, e1y)),
+                      _mm256_mul_pd(e1z, e1z));
+    const __m256d l2 =
+        _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(e2x, e2x), _mm256_mul_pd(e2y, e2y)),
+                      _mm256_mul_pd(e2z, e2z));
+    /* isect_triangle_finish_impl's rounding: ISECT_SLIVER_ROUNDINGS *
+     * 0x1p-24 * (double)size, the constant product first as C groups it. */
+    const __m256d rounding = _mm256_mul_pd(_mm256_set1_pd(ISECT_SLIVER_ROUNDINGS * 0x1p-24),
+                                           _mm256_cvtps_pd(_mm_loadu_ps(lanes->size)));
+    const __m256d r2 = _mm256_mul_pd(rounding, rounding);
+    const __m256d proper = _mm256_cmp_pd(
+        n2,
+        _mm256_mul_pd(r2, _mm256_mul_pd(_mm256_add_pd(l1, l2),
+                                        _mm256_set1_pd(ISECT_LONGEST_EDGE_BOUND))),
+        _CMP_GE_OQ);
     const __m256d den = _mm256_add_pd(
         _mm256_add_pd(_mm256_mul_pd(nx, _mm256_set1_pd(ray_d[4])),
                       _mm256_mul_pd(ny, _mm256_set1_pd(ray_d[5]))),
@@ -1243,14 +1251,15 @@ static inline unsigned tri4_finish_lanes(const struct tri4_packet *p,
                       _mm256_mul_pd(ny, _mm256_sub_pd(v0y, _mm256_set1_pd(ray_d[1])))),
         _mm256_mul_pd(nz, _mm256_sub_pd(v0z, _mm256_set1_pd(ray_d[2]))));
     /* den != 0.0 as C's != (true for NaN). */
-    const __m256d nonzero = _mm256_cmp_pd(den, _mm256_setzero_pd(), _CMP_NEQ_UQ);
+    const __m256d decided =
+        _mm256_and_pd(proper, _mm256_cmp_pd(den, _mm256_setzero_pd(), _CMP_NEQ_UQ));
     __m128 t = _mm256_cvtpd_ps(_mm256_div_pd(num, den));
     t = _mm_max_ps(_mm_min_ps(t, _mm_loadu_ps(lanes->t_hi)), _mm_loadu_ps(lanes->t_lo));
     const __m128 pass =
         _mm_and_ps(_mm_cmpge_ps(t, _mm_set1_ps(tmin)),
                    _mm_cmplt_ps(_mm_andnot_ps(_mm_set1_ps(-0.0f), t), _mm_set1_ps(INFINITY)));
     _mm_storeu_ps(t_out, t);
-    const unsigned fast = (unsigned)_mm256_movemask_pd(nonzero) & proper & ~lanes->deferred;
+    const unsigned fast = (unsigned)_mm256_movemask_pd(decided) & ~lanes->deferred;
     *ok = (unsigned)_mm_movemask_ps(pass) & fast;
     return fast;
 }

@@ -108,13 +108,6 @@ struct wide_state {
 struct wide_ray_state {
     struct wide_state s; /* first: the leaves reach d_org_dir from s */
     double d_org_dir[8];
-#if TRI4_FINISH_VEC
-    /* The layout's record_offset (struct bvh4, tri4_packet_record), for
-     * the closest-hit finish (tri4_finish_lanes); set by WIDE8_WALK,
-     * WIDE8_WALK1 and TRACE_WIDE_LEAF8 for a closest-hit walk.  Only in
-     * the table whose leaves read it. */
-    uintptr_t record_offset;
-#endif
 #if WIDE8_FUSED_TABLE
     /* The fused node test's constants (node_fused.h), set by WIDE8_WALK1
      * for the walks that take it (WIDE8_FUSED); not in a table without
@@ -142,24 +135,6 @@ static inline double *wide_ray_doubles(struct wide_state *s)
 {
     return ((struct wide_ray_state *)(void *)s)->d_org_dir;
 }
-
-#if TRI4_FINISH_VEC
-/* Packet p's record (struct tri4_record) for the walk whose state is *s
- * (as wide_ray_doubles). */
-static inline const struct tri4_record *wide_ray_record(struct wide_state *s,
-                                                        const struct tri4_packet *p)
-{
-    return tri4_packet_record(p, ((struct wide_ray_state *)(void *)s)->record_offset);
-}
-/* A closest-hit walk's record offset, from its layout. */
-#define WIDE8_SET_RECORDS(rs, wide, any_hit)                                                    \
-    do {                                                                                        \
-        if (!(any_hit))                                                                         \
-            (rs).record_offset = (wide)->record_offset;                                         \
-    } while (0)
-#else
-#define WIDE8_SET_RECORDS(rs, wide, any_hit) ((void)0)
-#endif
 
 /* walk_wide's state for a ray: no hit yet, the limits of t_max. */
 #if defined(__GNUC__)
@@ -293,8 +268,7 @@ static inline int wide_packet_test(struct wide_state *s, const struct tri4_packe
     unsigned fast = 0, fast_ok = 0;
     float fast_t[4];
     if (ray_double && !any_hit && mask)
-        fast = tri4_finish_lanes(p, wide_ray_record(s, p), &lanes, wide_ray_doubles(s),
-                                 s->ray->tmin, fast_t, &fast_ok);
+        fast = tri4_finish_lanes(p, &lanes, wide_ray_doubles(s), s->ray->tmin, fast_t, &fast_ok);
 #endif
     while (mask) {
         const unsigned l = (unsigned)__builtin_ctz(mask);
@@ -1263,7 +1237,6 @@ static inline int wide8_walk_end(const struct wide_state *s, int done, int any_h
          * float walk's flag. */                                                                \
         const int any_walk = (any_hit) != 0;                                                    \
         wide_state_init1(s, ray, t_max, any_walk, stats, hit);                                  \
-        WIDE8_SET_RECORDS(rs, wide, any_hit);                                                   \
         if (!(ray->tmin >= 0.0f))                                                               \
             return wide8_walk_end(s, wide8_walk_tmin_other(wide, s, any_walk, stats),           \
                                   any_hit, stats, counters);                                    \
@@ -1363,12 +1336,12 @@ static inline int wide_leaf8_test(struct wide_state *s, const struct tri4_packet
     float fast_t[8];
     if (ray_double && !any_hit) {
         if (mask & 15u)
-            fast = tri4_finish_lanes(p, wide_ray_record(s, p), &lanes[0], wide_ray_doubles(s),
-                                     s->ray->tmin, fast_t, &fast_ok);
+            fast = tri4_finish_lanes(p, &lanes[0], wide_ray_doubles(s), s->ray->tmin, fast_t,
+                                     &fast_ok);
         if (mask >> 4) {
             unsigned ok_hi;
-            fast |= tri4_finish_lanes(p + 1, wide_ray_record(s, p + 1), &lanes[1],
-                                      wide_ray_doubles(s), s->ray->tmin, fast_t + 4, &ok_hi)
+            fast |= tri4_finish_lanes(p + 1, &lanes[1], wide_ray_doubles(s), s->ray->tmin,
+                                      fast_t + 4, &ok_hi)
                     << 4;
             fast_ok |= ok_hi << 4;
         }
@@ -1549,7 +1522,6 @@ typedef char tri4_ray_tmin_org_layout[offsetof(struct tri4_ray, node_neg_org) ==
          * float walk's flag. */                                                                \
         const int any_walk = (any_hit) != 0;                                                    \
         wide_state_init1(s, &ray, t_max, any_walk, stats, hit);                                 \
-        WIDE8_SET_RECORDS(rs, wide, any_hit);                                                   \
         /* A ray the fused node test does not cover takes the float walk                        \
          * with isect_box's test, as a negative tmin does                                       \
          * (WIDE8_FUSED_UNCOVERED). */                                                          \
@@ -1631,23 +1603,6 @@ static int TRACE_WIDE_LEAF8(const struct trace_ray *ray, const struct tri4_packe
         tri4_ray_init(&s->r4, ray);
         tri4_ray_init_double(rs.d_org_dir, ray);
     }
-#if TRI4_FINISH_VEC
-    /* p[0], p[1] are the caller's, without a layout: their records
-     * (accel_fill_packet_record) here, where tri4_packet_record finds
-     * them: p[1]'s at 128 or 192 bytes past p[0]'s (p + 160 flips bit 5
-     * of the address; tri4_packet_record). */
-    union {
-        struct tri4_record r;
-        char bytes[192 + sizeof(struct tri4_record)];
-    } recs;
-    const uintptr_t pa = (uintptr_t)p;
-    rs.record_offset = (uintptr_t)&recs - pa - (pa & 32u);
-    if (!any_hit) {
-        for (uint32_t j = 0; j < (n + 3) / 4; j++)
-            accel_fill_packet_record((struct tri4_record *)(uintptr_t)wide_ray_record(s, p + j),
-                                     p + j);
-    }
-#endif
     int stop = 0;
     if (eight) {
         if (any_hit)
