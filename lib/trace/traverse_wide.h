@@ -723,9 +723,9 @@ static inline void wide8_store_ordered(const struct bvh8_node *n, __m256i lanes,
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline unsigned wide8_push(const struct bvh8_node *n, int octant, __m256 hit, __m256 t0,
-                                  __m256i order_shift, uint32_t *st_child, uint32_t *st_count,
-                                  float *st_t, uint32_t *sp, uint32_t *cur, uint32_t *cur_count)
+static inline void wide8_push(const struct bvh8_node *n, int octant, __m256 hit, __m256 t0,
+                              __m256i order_shift, uint32_t *st_child, uint32_t *st_count,
+                              float *st_t, uint32_t *sp, uint32_t *cur, uint32_t *cur_count)
 {
     uint32_t order;
     const __m256i lanes = wide8_order_lanes(n, octant, order_shift, &order);
@@ -734,13 +734,6 @@ static inline unsigned wide8_push(const struct bvh8_node *n, int octant, __m256 
     const unsigned l = order >> (3 * (unsigned)__builtin_ctz(pm)) & 7u;
     *cur = n->child[l];
     *cur_count = n->count[l];
-    return l; /* the front child's lane */
-}
-
-/* Lane l of v. */
-static inline float wide8_lane(__m256 v, unsigned l)
-{
-    return _mm256_cvtss_f32(_mm256_permutevar8x32_ps(v, _mm256_set1_epi32((int)l)));
 }
 
 /* wide8_push_stored's gather: the hit lanes highest first. */

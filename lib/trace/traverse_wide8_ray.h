@@ -126,13 +126,6 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
     uint64_t node_tests = 0;
     uint64_t tri_tests = 0;
     int r4_ready = 0;
-#if WIDE8_RAY_LEAF8 && WIDE8_PAIR_LEAVES
-    /* A closest-hit walk's current leaf's entry distance (its box's, as
-     * the node test gave it): the pair below takes the stack's top only
-     * when that leaf's entry is not beyond it, so that no hit in the
-     * current leaf (at or beyond its entry) can cull it. */
-    float cur_t = 0.0f;
-#endif
     /* Per layout: only a layout beyond the caches pays for the stack
      * top's prefetch (bvh4_layout.h).  A closest-hit walk takes it from
      * its copy: every caller picks the copy with leave_early exactly
@@ -358,10 +351,6 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                             const unsigned l = (unsigned)__builtin_ctz(mask);
                             cur = n->child[l];
                             cur_count = n->count[l];
-#if WIDE8_RAY_LEAF8 && WIDE8_PAIR_LEAVES
-                            if (!any_hit && cur_count)
-                                cur_t = wide8_lane(t0, l);
-#endif
                         }
                     } else {
                         if (any_hit == WIDE_ANY_LONGEST) {
@@ -397,17 +386,8 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                                                     st_count, st_t, &sp, &cur_off, &cur_count);
                             else
 #endif
-                        {
-                            const unsigned front =
-                                wide8_push(n, octant, hit, t0, order_shift, st_child, st_count,
-                                           st_t, &sp, &cur, &cur_count);
-#if WIDE8_RAY_LEAF8 && WIDE8_PAIR_LEAVES
-                            if (cur_count)
-                                cur_t = wide8_lane(t0, front);
-#else
-                            (void)front;
-#endif
-                        }
+                            wide8_push(n, octant, hit, t0, order_shift, st_child, st_count, st_t,
+                                       &sp, &cur, &cur_count);
                         if (prefetch_top) {
                             /* The new stack top, whose subtree comes after
                              * cur's: prefetched now (its bounds, or the
@@ -443,10 +423,6 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                 }
                 cur = st_child[sp];
                 cur_count = st_count[sp];
-#if WIDE8_RAY_LEAF8 && WIDE8_PAIR_LEAVES
-                if (!any_hit)
-                    cur_t = st_t[sp];
-#endif
                 cur_off = (size_t)cur * sizeof(nodes[0]);
                 /* No WIDE8_PREFETCH_NEXT_TOP here (above). */
             }
@@ -496,7 +472,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
              * this leaf would take with the limit of now, in one 8-lane
              * call. */
             if (!any_hit && cur_count <= 4 && sp && st_count[sp - 1] - 1u < 4u &&
-                st_t[sp - 1] <= cur_t) {
+                st_t[sp - 1] <= node_limit) {
                 sp--;
                 const uint32_t n_hi = st_count[sp];
                 const ptrdiff_t hi = (ptrdiff_t)st_child[sp] - (ptrdiff_t)cur;
@@ -559,10 +535,6 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
         }
         cur = st_child[sp];
         cur_count = st_count[sp];
-#if WIDE8_RAY_LEAF8 && WIDE8_PAIR_LEAVES
-        if (!any_hit)
-            cur_t = st_t[sp];
-#endif
         cur_off = (size_t)cur * sizeof(nodes[0]);
         WIDE8_PREFETCH_NEXT_TOP();
     }
