@@ -1398,69 +1398,6 @@ static inline int wide_leaf8_pair_test(struct wide_state *s, const struct tri4_p
     return 0;
 }
 
-#if WIDE8_PAIR_LEAVES
-/* The closest-hit pair of leaves (wide8_pair_closest, _full): as
- * wide_leaf8_pair_test, but the second leaf's lanes are finished after
- * the first's, and those whose box interval starts at or beyond the
- * limit of then (t_lo >= limit; the filter tested t_lo < limit with the
- * limit at the call's start) are left out before their finish.  Exact:
- * the finish clamps t into [t_lo, t_hi], so such a lane's t is not below
- * the limit and the lane test refuses it (a deferred lane's double edge
- * step ends in the same finish).  A function of its own: the two-phase
- * loop inside wide_leaf8_pair_test changed GCC's inlining of the
- * two-packet leaves (tri4_lane_test out of line). */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline int wide_pair_test(struct wide_state *s, const struct tri4_packet *p, ptrdiff_t hi,
-                                 uint32_t n, uint32_t n_hi, int early_out)
-{
-    const struct tri4_packet *const p_hi = p + hi;
-    float limit = s->found ? isect_next_up(s->best) : s->best;
-    struct tri4_lanes lanes[2];
-    unsigned mask = tri4_pair_filter_lanes(&s->r4, p, p_hi,
-                                           ((1u << n) - 1u) | ((1u << n_hi) - 1u) << 4, limit,
-                                           lanes, 0, early_out, 0, 1);
-    unsigned later = mask >> 4;
-    mask &= 15u;
-    for (int k = 0; k < 2; k++) {
-        const struct tri4_packet *q = k ? p_hi : p;
-        if (k) {
-            if (!later)
-                break;
-            mask = later & (unsigned)_mm_movemask_ps(
-                               _mm_cmplt_ps(_mm_loadu_ps(lanes[1].t_lo), _mm_set1_ps(limit)));
-            later = 0;
-        }
-        if (!mask)
-            continue;
-#if TRI4_FINISH_VEC
-        unsigned fast_ok;
-        float fast_t[4];
-        const unsigned fast =
-            tri4_finish_lanes(q, &lanes[k], wide_ray_doubles(s), s->ray->tmin, fast_t, &fast_ok);
-#endif
-        while (mask) {
-            const unsigned l = (unsigned)__builtin_ctz(mask);
-            mask &= mask - 1u;
-            float t, u, w;
-#if TRI4_FINISH_VEC
-            if (fast >> l & 1u) {
-                if (!tri4_finish_lane(&lanes[k], l, fast_ok, fast_t[l], limit, &t, &u, &w))
-                    continue;
-            } else
-#endif
-                if (!tri4_lane_test(s->ray, wide_ray_doubles(s), q, &lanes[k], l, 0, limit, &t,
-                                    &u, &w))
-                continue;
-            if (wide_take_closest(s, q->prim[l], t, u, w) && (mask || later))
-                limit = isect_next_up(t);
-        }
-    }
-    return 0;
-}
-#endif
-
 /* A leaf of n = 5..8 triangles in two consecutive packets. */
 #if defined(__GNUC__)
 __attribute__((always_inline))
@@ -1494,8 +1431,8 @@ WIDE8_LEAF_TEST(wide8_leaf8_any, wide_leaf8_test, 1, 1, 1, 0, 0)
     static int name(struct wide_state *s, const struct tri4_packet *p, ptrdiff_t hi, uint32_t n,  \
                     uint32_t n_hi)                                                                 \
     {                                                                                              \
-        (void)any_hit, (void)depth_out, (void)behind_out, (void)ray_double;                        \
-        return wide_pair_test(s, p, hi, n, n_hi, early_out);                                      \
+        return wide_leaf8_pair_test(s, p, hi, n, ((1u << n_hi) - 1u) << 4, any_hit, early_out,    \
+                                    depth_out, behind_out, ray_double);                            \
     }
 
 WIDE8_LEAF_PAIR(wide8_pair_closest, 0, 1, 0, 1, 1)
