@@ -512,8 +512,7 @@ typedef int (*leaf8_fn)(const struct trace_ray *ray, const struct tri4_packet *p
  * (another tie) or elsewhere.
  */
 static void pair_case(struct tg_rng *r, const leaf8_fn *fns, int fn_count, uint64_t *cases,
-                      uint64_t *hits, uint64_t *second, uint64_t *ties, uint64_t *edges,
-                      uint64_t *pair_leaf_second)
+                      uint64_t *hits, uint64_t *second, uint64_t *ties, uint64_t *edges)
 {
     float centre[3] = {0.0f, 0.0f, 0.0f};
     if (tg_below(r, 4) == 0) {
@@ -629,56 +628,6 @@ static void pair_case(struct tg_rng *r, const leaf8_fn *fns, int fn_count, uint6
             *edges += (uint64_t)(s0.hit.u == 0.0f || s0.hit.v == 0.0f ||
                                  s0.hit.u + s0.hit.v == 1.0f);
         }
-        /* Check 3b: the same triangles as a pair of leaves (eight 3: the
-         * AVX2 walk's closest-hit pair, traverse_wide8_ray.h), the first
-         * leaf of n_lo = 1..4 triangles in p[0]'s lanes (its other lanes
-         * hold real triangles, which must not be tested), the second of
-         * n - 4 in p[1]'s: against walk_leaf's loop over the first
-         * leaf's triangles, then the second's.  A pair whose second
-         * leaf is dropped, or whose closest hit in the second leaf loses
-         * to the first's (or ties the wrong way), fails here. */
-        const int n_lo = 1 + (int)(*cases % 4u);
-        float pair_tri[8][9];
-        uint32_t pair_prim[8];
-        int pair_n = 0;
-        for (int l = 0; l < n; l++) {
-            if (l < 4 && l >= n_lo)
-                continue;
-            memcpy(pair_tri[pair_n], tri[l], sizeof(tri[l]));
-            pair_prim[pair_n++] = prim[l];
-        }
-        const struct leaf_answer s1 =
-            scalar_leaf_n(&ray, (const float(*)[9])pair_tri, pair_prim, pair_n, t_max, any, start);
-        /* The closest hits the second leaf wins. */
-        if (!any && s1.found) {
-            for (int l = n_lo; l < pair_n; l++) {
-                float t, u, w;
-                if (pair_prim[l] == s1.hit.prim &&
-                    isect_triangle(&ray, pair_tri[l], pair_tri[l] + 3, pair_tri[l] + 6, t_max, &t,
-                                   &u, &w) &&
-                    t == s1.hit.t) {
-                    (*pair_leaf_second)++;
-                    break;
-                }
-            }
-        }
-        for (int f = 0; f < fn_count; f++) {
-            for (int early = 0; early < 2; early++) {
-                struct trace_hit h = start->hit;
-                const uint32_t lanes = (uint32_t)n_lo | (uint32_t)(n - 4) << 4;
-                const int found =
-                    fns[f](&ray, p, lanes, t_max, any, early, 3, start->found, &h);
-                if (found != s1.found ||
-                    (!any && found && memcmp(&h, &s1.hit, sizeof(h)) != 0)) {
-                    if (failures < 10)
-                        printf("  FAIL: pair of leaves (table %d, %s, early %d, n %d + %d): "
-                               "found %d/%d t %a/%a prim %u/%u\n",
-                               f, any ? "any" : "closest", early, n_lo, n - 4, s1.found, found,
-                               s1.hit.t, h.t, s1.hit.prim, h.prim);
-                    failures++;
-                }
-            }
-        }
         for (int f = 0; f < fn_count; f++) {
             for (int early = 0; early < 2; early++) {
                 /* eight 2: the closest-hit walk's copy for a ray's
@@ -743,13 +692,12 @@ int main(void)
             fns[fn_count++] = k->leaf8;
     }
     uint64_t pair_cases = 0, pair_hits = 0, pair_second = 0, pair_ties = 0, pair_edges = 0;
-    uint64_t pair_leaf_second = 0;
     if (fn_count) {
         struct tg_rng rp;
         tg_seed(&rp, 2008);
         for (int i = 0; i < 200000; i++)
             pair_case(&rp, fns, fn_count, &pair_cases, &pair_hits, &pair_second, &pair_ties,
-                      &pair_edges, &pair_leaf_second);
+                      &pair_edges);
     }
     printf("tri4_differential: %llu two-packet leaves in %d table(s), %llu scalar hits (closest "
            "and any); of the closest hits %llu in the second packet, %llu tied with the other "
@@ -760,12 +708,6 @@ int main(void)
     failures += !CHECKF(fn_count == 0 || (pair_ties > 100 && pair_edges > 100),
                         "too few ties (%llu) or on-edge hits (%llu) across two-packet leaves",
                         (unsigned long long)pair_ties, (unsigned long long)pair_edges);
-    printf("tri4_differential: the same as pairs of leaves of 1-4 and 1-4 triangles: %llu "
-           "closest hits in the second leaf\n",
-           (unsigned long long)pair_leaf_second);
-    failures += !CHECKF(fn_count == 0 || pair_leaf_second > 1000,
-                        "too few closest hits in a pair's second leaf (%llu)",
-                        (unsigned long long)pair_leaf_second);
     printf("tri4_differential: %llu packets x 4 lanes, %llu scalar hits, %llu lanes kept by the "
            "filter and rejected by the scalar test, %llu + %llu kept lanes refused before tmin "
            "in float (ordinary, shadow rays), %d failures\n",

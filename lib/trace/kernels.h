@@ -82,9 +82,7 @@ struct trace_kernels {
      * TRACE_WIDE_LEAF8), for conformance/internal/tri4_differential:
      * the n triangles of p[0], p[1] with the 8-lane call (eight 1; 2:
      * the closest-hit walk's first-leaf copy) or the 4-lane calls
-     * (eight 0); eight 3: a pair of leaves, n & 15 triangles in p[0]
-     * and n >> 4 in p[1], as the walks test a pair (the AVX2 table's
-     * closest hit in one 8-lane call).  NULL in the tables without the
+     * (eight 0).  NULL in the tables without the
      * 8-wide walk (scalar, SSE4.2). */
     int (*leaf8)(const struct trace_ray *ray, const struct tri4_packet *p, uint32_t n,
                  float t_max, int any_hit, int early_out, int eight, int found,

@@ -1630,8 +1630,6 @@ static const trace_walk1_fn TRACE_WIDE_WALK1_COUNTED[4] = {
  * (n up to 8), eight 1 with the 8-lane call of the leaf8 walks for
  * 5-8 triangles, 2 with the closest-hit walk's call at a ray's first
  * leaf (wide8_leaf8_closest_first or _full_first; an any-hit leaf as 1),
- * 3 a pair of leaves of n & 15 and n >> 4 triangles in p[0] and p[1]
- * (traverse_wide8_ray.h's pair; the code says which calls),
  * 0 with the 4-lane calls on each packet in turn; early_out
  * picks the closest-hit copy (wide8_leaf8_closest or _full).  found 1:
  * *hit is an earlier leaf's hit, whose t is the limit (walk_leaf's rule).
@@ -1658,28 +1656,7 @@ static int TRACE_WIDE_LEAF8(const struct trace_ray *ray, const struct tri4_packe
         tri4_ray_init_double(rs.d_org_dir, ray);
     }
     int stop = 0;
-    if (eight == 3) {
-        /* A pair of leaves: n & 15 triangles in p[0], n >> 4 in p[1]; as
-         * the walks test them: the AVX2 table's closest-hit pair in one
-         * 8-lane call (WIDE8_PAIR_LEAVES), any hit and the other table a
-         * 4-lane call each. */
-        const uint32_t n_lo = n & 15u, n_hi = n >> 4;
-#if WIDE8_PAIR_LEAVES
-        if (!any_hit)
-            stop = early_out ? wide8_pair_closest(s, p, 1, n_lo, n_hi)
-                             : wide8_pair_full(s, p, 1, n_lo, n_hi);
-        else
-#endif
-            for (uint32_t j = 0; j < 2 && !stop; j++) {
-                const uint32_t m = j ? n_hi : n_lo;
-                if (any_hit)
-                    stop = wide8_packet_any(s, p + j, m);
-                else if (early_out)
-                    stop = wide8_packet_closest(s, p + j, m);
-                else
-                    stop = wide8_packet_full(s, p + j, m);
-            }
-    } else if (eight) {
+    if (eight) {
         if (any_hit)
             stop = wide8_leaf8_any(s, p, n);
         else if (early_out)
