@@ -1437,6 +1437,7 @@ WIDE8_LEAF_TEST(wide8_leaf8_any, wide_leaf8_test, 1, 1, 1, 0, 0)
 
 WIDE8_LEAF_PAIR(wide8_pair_closest, 0, 1, 0, 1, 1)
 WIDE8_LEAF_PAIR(wide8_pair_full, 0, 0, 0, 1, 1)
+WIDE8_LEAF_PAIR(wide8_pair_any, 1, 1, 1, 0, 0)
 #endif
 
 #define WIDE8_RAY walk_wide8_ray_leaf8
