@@ -458,13 +458,12 @@ static inline unsigned tri4_filter_lanes(const struct tri4_ray *r, const struct 
 }
 
 #if defined(__AVX__)
-/* Row `off` bytes into vertex i's coordinates of p (lanes 0-3) and of
- * p_hi (lanes 4-7): two 128-bit loads into one 256-bit vector. */
-static inline __m256 tri4_pair_row(const struct tri4_packet *p, const struct tri4_packet *p_hi,
-                                   int i, size_t off)
+/* Row `off` bytes into vertex i's coordinates of p[0] (lanes 0-3) and of
+ * p[1] (lanes 4-7): two 128-bit loads into one 256-bit vector. */
+static inline __m256 tri4_pair_row(const struct tri4_packet *p, int i, size_t off)
 {
-    const char *lo = (const char *)p->v[i] + off;
-    const char *hi = (const char *)p_hi->v[i] + off;
+    const char *lo = (const char *)p[0].v[i] + off;
+    const char *hi = (const char *)p[1].v[i] + off;
     return _mm256_insertf128_ps(
         _mm256_castps128_ps256(_mm_loadu_ps((const float *)(const void *)lo)),
         _mm_loadu_ps((const float *)(const void *)hi), 1);
@@ -533,10 +532,8 @@ static inline void tri4_pair_box_interval(const struct tri4_ray *r, int scalar, 
 }
 
 /*
- * tri4_filter_lanes on two packets at once, p (lanes 0-3) and p_hi
- * (lanes 4-7): the two consecutive packets of a leaf of 5-8 triangles
- * (p_hi = p + 1), or two leaves of 1-4 triangles each that a node's test
- * hit together (the single-ray walk's pairs, traverse_wide8_ray.h), with
+ * tri4_filter_lanes on the two consecutive packets p[0], p[1] of a leaf
+ * of 5-8 triangles at once (lanes 0-3: p[0]'s, lanes 4-7: p[1]'s), with
  * AVX's 256-bit vectors: the same float operations lane by lane, in the
  * same order, so each lane's values and verdict are those of the 4-lane
  * filter on its own packet with the same t_max.  The leaf's second
@@ -546,7 +543,7 @@ static inline void tri4_pair_box_interval(const struct tri4_ray *r, int scalar, 
  * limit (see the file's head), so the lanes accepted and their t, u, v
  * are the same as two 4-lane calls'.  Packet k's lanes are written to
  * out[k] exactly as the 4-lane filter writes them (bit k of the mask's
- * upper half is lane k of p_hi), so the lane test is the 4-lane one.
+ * upper half is lane k of p[1]), so the lane test is the 4-lane one.
  * The early return leaves only when all eight lanes are refused by their
  * signs.  behind_out (the single-ray closest-hit leaves,
  * wide_leaf8_test): the kept lanes whose box interval lies wholly before
@@ -562,8 +559,7 @@ static inline void tri4_pair_box_interval(const struct tri4_ray *r, int scalar, 
 __attribute__((always_inline))
 #endif
 static inline unsigned tri4_pair_filter_lanes(const struct tri4_ray *r,
-                                              const struct tri4_packet *p,
-                                              const struct tri4_packet *p_hi, unsigned valid,
+                                              const struct tri4_packet *p, unsigned valid,
                                               float t_max, struct tri4_lanes out[2],
                                               int any_hit, int early_out, int depth_out,
                                               int behind_out)
@@ -573,15 +569,15 @@ static inline unsigned tri4_pair_filter_lanes(const struct tri4_ray *r,
     const __m256 neg_org_x = TRI4_CONST8(r, neg_org_x, k_neg_org[0], scalar);
     const __m256 neg_org_y = TRI4_CONST8(r, neg_org_y, k_neg_org[1], scalar);
     const __m256 neg_org_z = TRI4_CONST8(r, neg_org_z, k_neg_org[2], scalar);
-    const __m256 ax = _mm256_add_ps(neg_org_x, tri4_pair_row(p, p_hi, 0, r->off_x));
-    const __m256 ay = _mm256_add_ps(neg_org_y, tri4_pair_row(p, p_hi, 0, r->off_y));
-    const __m256 az = _mm256_add_ps(neg_org_z, tri4_pair_row(p, p_hi, 0, r->off_z));
-    const __m256 bx = _mm256_add_ps(neg_org_x, tri4_pair_row(p, p_hi, 1, r->off_x));
-    const __m256 by = _mm256_add_ps(neg_org_y, tri4_pair_row(p, p_hi, 1, r->off_y));
-    const __m256 bz = _mm256_add_ps(neg_org_z, tri4_pair_row(p, p_hi, 1, r->off_z));
-    const __m256 cx = _mm256_add_ps(neg_org_x, tri4_pair_row(p, p_hi, 2, r->off_x));
-    const __m256 cy = _mm256_add_ps(neg_org_y, tri4_pair_row(p, p_hi, 2, r->off_y));
-    const __m256 cz = _mm256_add_ps(neg_org_z, tri4_pair_row(p, p_hi, 2, r->off_z));
+    const __m256 ax = _mm256_add_ps(neg_org_x, tri4_pair_row(p, 0, r->off_x));
+    const __m256 ay = _mm256_add_ps(neg_org_y, tri4_pair_row(p, 0, r->off_y));
+    const __m256 az = _mm256_add_ps(neg_org_z, tri4_pair_row(p, 0, r->off_z));
+    const __m256 bx = _mm256_add_ps(neg_org_x, tri4_pair_row(p, 1, r->off_x));
+    const __m256 by = _mm256_add_ps(neg_org_y, tri4_pair_row(p, 1, r->off_y));
+    const __m256 bz = _mm256_add_ps(neg_org_z, tri4_pair_row(p, 1, r->off_z));
+    const __m256 cx = _mm256_add_ps(neg_org_x, tri4_pair_row(p, 2, r->off_x));
+    const __m256 cy = _mm256_add_ps(neg_org_y, tri4_pair_row(p, 2, r->off_y));
+    const __m256 cz = _mm256_add_ps(neg_org_z, tri4_pair_row(p, 2, r->off_z));
 
     const __m256 sx = TRI4_CONST8(r, sx, k_shear[0], scalar);
     const __m256 sy = TRI4_CONST8(r, sy, k_shear[1], scalar);

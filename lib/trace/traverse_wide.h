@@ -98,17 +98,6 @@ struct wide_state {
 #define WIDE8_FUSED(any_hit) 0
 #endif
 
-/* 1 where the single-ray walks over walk_wide8_ray_leaf8 test two hit
- * leaves of 1-4 triangles in one 8-lane call (traverse_wide8_ray.h,
- * before the leaf test, says why and when): the AVX2 table only, whose
- * 4-lane calls leave half of its 8 float lanes idle; the AVX-512 table's
- * walks (front child by compression) are left as they were. */
-#if TRACE_AVX512_TABLE
-#define WIDE8_PAIR_LEAVES 0
-#else
-#define WIDE8_PAIR_LEAVES 1
-#endif
-
 /* The state of a whole single-ray 8-wide walk (WIDE8_WALK, WIDE8_WALK1,
  * TRACE_WIDE_LEAF8): wide_state and the ray's origin and direction in
  * double (tri4_ray_init_double), which walk_wide8_ray sets at a
@@ -1302,29 +1291,18 @@ static unsigned wide_near_refused(const struct wide_state *s, const struct tri4_
     return sure;
 }
 
-/* The 8-lane leaf on packets p (lanes 0-3) and p + hi (lanes 4-7), the
- * lanes that hold triangles (1 << n) - 1 and valid_hi: wide_leaf8_test's
- * two packets of one leaf (hi = 1, n = 5..8, valid_hi = 0), or the
- * single-ray walk's pair of leaves of 1-4 triangles (n = 1..4, valid_hi
- * the second leaf's lanes; wide8_pair_*, traverse_wide8_ray.h says
- * when).  The second packet as an offset from the first, not a pointer
- * of its own, and the lanes in that form: with the constants 1 and 0 the
- * two-packet leaves compile as before, instruction for instruction on
- * the AVX2 table (packet k of a lane is p + k * hi, p + k there). */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline int wide_leaf8_pair_test(struct wide_state *s, const struct tri4_packet *p,
-                                       ptrdiff_t hi, uint32_t n, unsigned valid_hi,
-                                       int any_hit, int early_out, int depth_out, int behind_out,
-                                       int ray_double)
+static inline int wide_leaf8_test(struct wide_state *s, const struct tri4_packet *p, uint32_t n,
+                                  int any_hit, int early_out, int depth_out, int behind_out,
+                                  int ray_double)
 {
-    const struct tri4_packet *const p_hi = p + hi;
     float limit = !any_hit && s->found ? isect_next_up(s->best) : s->best;
     struct tri4_lanes lanes[2];
     unsigned mask =
-        tri4_pair_filter_lanes(&s->r4, p, p_hi, ((1u << n) - 1u) | valid_hi, limit, lanes,
-                               any_hit, early_out, depth_out, behind_out);
+        tri4_pair_filter_lanes(&s->r4, p, (1u << n) - 1u, limit, lanes, any_hit, early_out,
+                               depth_out, behind_out);
     if (any_hit && mask) {
         /* As wide_packet_test, per packet (the near lanes refused on t_hi
          * with depth_out). */
@@ -1343,12 +1321,12 @@ static inline int wide_leaf8_pair_test(struct wide_state *s, const struct tri4_p
             if (near & 15u)
                 mask &= ~wide_near_refused(s, p, &lanes[0], near & 15u);
             if (near >> 4)
-                mask &= ~(wide_near_refused(s, p_hi, &lanes[1], near >> 4) << 4);
+                mask &= ~(wide_near_refused(s, p + 1, &lanes[1], near >> 4) << 4);
         } else {
             if (near & 15u)
                 mask &= ~tri4_before_tmin(s->ray, p, near & 15u);
             if (near >> 4)
-                mask &= ~(tri4_before_tmin(s->ray, p_hi, near >> 4) << 4);
+                mask &= ~(tri4_before_tmin(s->ray, p + 1, near >> 4) << 4);
         }
     }
     /* As wide_packet_test: each packet's kept lanes finished in vectors
@@ -1362,7 +1340,7 @@ static inline int wide_leaf8_pair_test(struct wide_state *s, const struct tri4_p
                                      &fast_ok);
         if (mask >> 4) {
             unsigned ok_hi;
-            fast |= tri4_finish_lanes(p_hi, &lanes[1], wide_ray_doubles(s), s->ray->tmin,
+            fast |= tri4_finish_lanes(p + 1, &lanes[1], wide_ray_doubles(s), s->ray->tmin,
                                       fast_t + 4, &ok_hi)
                     << 4;
             fast_ok |= ok_hi << 4;
@@ -1373,7 +1351,7 @@ static inline int wide_leaf8_pair_test(struct wide_state *s, const struct tri4_p
         const unsigned l = (unsigned)__builtin_ctz(mask);
         mask &= mask - 1u;
         const unsigned k = l >> 2;
-        const struct tri4_packet *q = p + (ptrdiff_t)k * hi;
+        const struct tri4_packet *q = p + k;
         /* behind_out: the lanes wholly before tmin are out of the mask
          * already (tri4_pair_filter_lanes). */
         float t, u, w;
@@ -1398,18 +1376,6 @@ static inline int wide_leaf8_pair_test(struct wide_state *s, const struct tri4_p
     return 0;
 }
 
-/* A leaf of n = 5..8 triangles in two consecutive packets. */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline int wide_leaf8_test(struct wide_state *s, const struct tri4_packet *p, uint32_t n,
-                                  int any_hit, int early_out, int depth_out, int behind_out,
-                                  int ray_double)
-{
-    return wide_leaf8_pair_test(s, p, 1, n, 0, any_hit, early_out, depth_out, behind_out,
-                                ray_double);
-}
-
 WIDE8_LEAF_TEST(wide8_leaf8_closest, wide_leaf8_test, 0, 1, 0, 1, 1)
 WIDE8_LEAF_TEST(wide8_leaf8_full, wide_leaf8_test, 0, 0, 0, 1, 1)
 /* The closest-hit walk's first 8-lane leaf of a ray: the filter refuses
@@ -1420,25 +1386,6 @@ WIDE8_LEAF_TEST(wide8_leaf8_full, wide_leaf8_test, 0, 0, 0, 1, 1)
 WIDE8_LEAF_TEST(wide8_leaf8_closest_first, wide_leaf8_test, 0, 1, 0, TRI4_BEHIND_FIRST, 1)
 WIDE8_LEAF_TEST(wide8_leaf8_full_first, wide_leaf8_test, 0, 0, 0, TRI4_BEHIND_FIRST, 1)
 WIDE8_LEAF_TEST(wide8_leaf8_any, wide_leaf8_test, 1, 1, 1, 0, 0)
-
-/* The AVX2 table's pair of leaves (traverse_wide8_ray.h, WIDE8_PAIR_LEAVES
- * says when): two leaves of 1-4 triangles, packets p and p + hi, in one
- * 8-lane call. */
-#if WIDE8_PAIR_LEAVES
-#define WIDE8_LEAF_PAIR(name, any_hit, early_out, depth_out, behind_out, ray_double)             \
-    static int name(struct wide_state *s, const struct tri4_packet *p, ptrdiff_t hi, uint32_t n,  \
-                    uint32_t n_hi) WIDE_NOINLINE;                                                  \
-    static int name(struct wide_state *s, const struct tri4_packet *p, ptrdiff_t hi, uint32_t n,  \
-                    uint32_t n_hi)                                                                 \
-    {                                                                                              \
-        return wide_leaf8_pair_test(s, p, hi, n, ((1u << n_hi) - 1u) << 4, any_hit, early_out,    \
-                                    depth_out, behind_out, ray_double);                            \
-    }
-
-WIDE8_LEAF_PAIR(wide8_pair_closest, 0, 1, 0, 1, 1)
-WIDE8_LEAF_PAIR(wide8_pair_full, 0, 0, 0, 1, 1)
-WIDE8_LEAF_PAIR(wide8_pair_any, 1, 1, 1, 0, 0)
-#endif
 
 #define WIDE8_RAY walk_wide8_ray_leaf8
 #define WIDE8_RAY_LEAF8 1

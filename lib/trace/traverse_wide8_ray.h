@@ -126,12 +126,6 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
     uint64_t node_tests = 0;
     uint64_t tri_tests = 0;
     int r4_ready = 0;
-#if WIDE8_RAY_LEAF8 && WIDE8_PAIR_LEAVES
-    /* The second leaf of a pair (below, at the push): its packet as an
-     * offset from cur's, and its count; 0: no pair. */
-    ptrdiff_t pair_hi = 0;
-    uint32_t pair_count = 0;
-#endif
     /* Per layout: only a layout beyond the caches pays for the stack
      * top's prefetch (bvh4_layout.h).  A closest-hit walk takes it from
      * its copy: every caller picks the copy with leave_early exactly
@@ -394,19 +388,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
 #endif
                             wide8_push(n, octant, hit, t0, order_shift, st_child, st_count, st_t,
                                        &sp, &cur, &cur_count);
-#if WIDE8_RAY_LEAF8 && WIDE8_PAIR_LEAVES
-                        /* PAIR: the front child and the entry just pushed on
-                         * top (the second in the visit order) both leaves of
-                         * 1-4 triangles: taken together. */
-                        if (cur_count - 1u < 4u && st_count[sp - 1] - 1u < 4u) {
-                            sp--;
-                            pair_hi = (ptrdiff_t)st_child[sp] - (ptrdiff_t)cur;
-                            pair_count = st_count[sp];
-                        }
-                        if (prefetch_top && sp) {
-#else
                         if (prefetch_top) {
-#endif
                             /* The new stack top, whose subtree comes after
                              * cur's: prefetched now (its bounds, or the
                              * first three lines of its leaf's packet), so
@@ -484,21 +466,6 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
             }
             if (stats)
                 tri_tests += cur_count;
-#if WIDE8_RAY_LEAF8 && WIDE8_PAIR_LEAVES
-            /* PAIR: two leaves of 1-4 triangles in one 8-lane call. */
-            if (pair_count) {
-                const uint32_t n_hi = pair_count;
-                pair_count = 0;
-                if (stats)
-                    tri_tests += n_hi;
-                if (any_hit)
-                    stop = wide8_pair_any(s, p, pair_hi, cur_count, n_hi);
-                else if (leave_early)
-                    stop = wide8_pair_closest(s, p, pair_hi, cur_count, n_hi);
-                else
-                    stop = wide8_pair_full(s, p, pair_hi, cur_count, n_hi);
-            } else
-#endif
 #if WIDE8_RAY_LEAF8
             /* Two packets (5-8 triangles) in one 8-lane call. */
             if (cur_count > 4) {
