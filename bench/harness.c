@@ -11,6 +11,7 @@
  * so neither path gets a better scheduler than the other.
  */
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <pthread.h>
 #include <stdlib.h>
@@ -189,12 +190,60 @@ double bench_fresh_sah(const struct bench_mesh *mesh, enum bvh_builder builder,
     return sah;
 }
 
+/* The stream entry (kernels.h, stream_pair) for the layout, or NULL: a
+ * bench switch, the environment's TRACELIST_BENCH_STREAM=pair, read
+ * here only, so that one binary times walk1 and the pair walk on the
+ * same rays (the answers are the same; the agreement columns check it). */
+static trace_stream1_fn bench_stream(const struct trace_kernels *k, const struct bvh4 *wide,
+                                     int any_hit)
+{
+    const char *v = getenv("TRACELIST_BENCH_STREAM");
+    if (!v || strcmp(v, "pair") || !k->stream_pair)
+        return NULL;
+    return k->stream_pair(wide, any_hit);
+}
+
+/* RTray's floats as trace_stream1_fn reads them: org, tmin, dir, tmax. */
+typedef char bench_rtray_layout[offsetof(RTray, tmin) == 3 * sizeof(float) &&
+                                        offsetof(RTray, dir) == 4 * sizeof(float) &&
+                                        offsetof(RTray, tmax) == 7 * sizeof(float) &&
+                                        sizeof(RTray) == 8 * sizeof(float)
+                                    ? 1
+                                    : -1];
+
+/* rays[begin, end) through a stream entry, BENCH_CHUNK at a time. */
+static void bench_stream_run(trace_stream1_fn stream, const struct bvh4 *wide, const RTray *rays,
+                             uint32_t begin, uint32_t end, struct bench_hit *hits, int any_hit)
+{
+    struct trace_hit h[BENCH_CHUNK];
+    unsigned char got[BENCH_CHUNK];
+    for (uint32_t b = begin; b < end; b += BENCH_CHUNK) {
+        const uint32_t n = end - b < BENCH_CHUNK ? end - b : BENCH_CHUNK;
+        stream(wide, (const float *)(const void *)&rays[b], sizeof(RTray) / sizeof(float), n,
+               any_hit ? NULL : h, got);
+        for (uint32_t i = 0; i < n; i++) {
+            if (any_hit) {
+                hits[b + i].t = got[i] ? 0.0f : INFINITY;
+                hits[b + i].prim = got[i] ? 0 : BENCH_MISS;
+            } else {
+                hits[b + i].t = got[i] ? h[i].t : INFINITY;
+                hits[b + i].prim = got[i] ? h[i].prim : BENCH_MISS;
+            }
+        }
+    }
+}
+
 void bench_kernel_closest(void *ctx, const RTray *rays, uint32_t begin, uint32_t end,
                           struct bench_hit *hits)
 {
     const struct bench_accel *acc = ctx;
     const struct trace_kernels *k = bench_kernels();
     const int wide = k->closest1 && !binary_layout && acc->wide.node_count;
+    const trace_stream1_fn stream = wide ? bench_stream(k, &acc->wide, 0) : NULL;
+    if (stream) {
+        bench_stream_run(stream, &acc->wide, rays, begin, end, hits, 0);
+        return;
+    }
     /* The layout's walk, chosen once (kernels.h, walk1), as a caller
      * tracing many rays over one layout would. */
     const trace_walk1_fn walk1 = wide && k->walk1 ? k->walk1(&acc->wide, 0) : NULL;
@@ -229,6 +278,11 @@ void bench_kernel_any(void *ctx, const RTray *rays, uint32_t begin, uint32_t end
     const struct bench_accel *acc = ctx;
     const struct trace_kernels *k = bench_kernels();
     const int wide = k->any1 && !binary_layout && acc->wide.node_count;
+    const trace_stream1_fn stream = wide ? bench_stream(k, &acc->wide, 1) : NULL;
+    if (stream) {
+        bench_stream_run(stream, &acc->wide, rays, begin, end, hits, 1);
+        return;
+    }
     const trace_walk1_fn walk1 = wide && k->walk1 ? k->walk1(&acc->wide, 1) : NULL;
     for (uint32_t i = begin; i < end; i++) {
         const RTray *r = &rays[i];

@@ -36,6 +36,14 @@ typedef int (*trace_walk1_fn)(const struct bvh4 *wide, const float org[3], const
                               float tmin, float t_max, struct trace_hit *hit,
                               struct trace_counters *counters);
 
+/* A stream of single rays over one wide layout without counters (struct
+ * trace_kernels' stream_pair): ray i at rays + i * stride floats, in
+ * RTray's layout (org[3], tmin, dir[3], tmax); got[i] walk1's answer
+ * for the ray (closest hit: found, with hits[i] its hit when found; any
+ * hit: occluded, hits unused, NULL allowed), bit for bit. */
+typedef void (*trace_stream1_fn)(const struct bvh4 *wide, const float *rays, size_t stride,
+                                 uint32_t count, struct trace_hit *hits, unsigned char *got);
+
 struct trace_kernels {
     enum trace_isa isa;
     const char *name; /* "scalar", "sse4", "avx2", "avx512": the isa= value */
@@ -136,6 +144,12 @@ struct trace_kernels {
      * (and in the tables without AVX2). */
     trace_packet_closest_arrays_fn closest_packet_arrays;
     trace_packet_any_arrays_fn any_packet_arrays;
+    /* walk1's rays as a stream (trace_stream1_fn), two rays walked at
+     * once, one step of each in turn (traverse_pair8.h), for the layout
+     * walk1 chooses its walk for (any_hit 0 or 1); the same answers as
+     * walk1 ray by ray.  NULL where walk1 is, and in the tables without
+     * the pair walk (all but AVX2). */
+    trace_stream1_fn (*stream_pair)(const struct bvh4 *wide, int any_hit);
 };
 
 /* The table of an ISA, or NULL when this build has no such table or this

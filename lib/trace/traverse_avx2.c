@@ -20,6 +20,8 @@
 #define TRACE_WIDE_WALK1 trace_walk1_avx2
 #define TRACE_WIDE_WALK1_COUNTED trace_walk1_counted_avx2
 #include "trace/traverse_wide.h"
+#define TRACE_PAIR8_STREAM trace_stream_pair_avx2
+#include "trace/traverse_pair8.h"
 #define TRACE_TOP_LANES trace_top_lanes_avx2
 #define TRACE_TOP_LANES1 trace_top_lanes1_avx2
 #include "trace/top_lanes.h"
@@ -31,7 +33,8 @@ static const struct trace_kernels table = {
     trace_closest_packet_avx2, trace_any_packet_avx2, trace_leaf8_avx2,
     trace_top_lanes_avx2, trace_top_lanes1_avx2, trace_packet_init_avx2,
     trace_packet_xform_avx2, trace_walk1_avx2, trace_walk1_counted_avx2,
-    trace_closest_packet_arrays_avx2, trace_any_packet_arrays_avx2};
+    trace_closest_packet_arrays_avx2, trace_any_packet_arrays_avx2,
+    trace_stream_pair_avx2};
 
 const struct trace_kernels *trace_kernels_avx2(void)
 {
