@@ -43,6 +43,13 @@
  * memory (the other ray's step runs between two of this one's, and the
  * leaf calls clobber every vector register anyway). */
 struct pair8_slot {
+    /* The node test's vectors, broadcast once at the ray's start (the
+     * same floats walk_wide8_ray broadcasts after each leaf): -org, the
+     * inverse direction (memory operands of the multiplications) and
+     * tmin's bits for the entry's integer maximum. */
+    __m256 neg_org_x, neg_org_y, neg_org_z;
+    __m256 inv_x, inv_y, inv_z;
+    __m256i tmin8;
     struct wide_ray_state rs; /* the leaves' state; rs.s.ray is &ray */
     struct trace_ray ray;
     /* The six rows' bases, the nodes' array plus the octant's row
@@ -50,9 +57,6 @@ struct pair8_slot {
     const char *row_nx, *row_fx, *row_ny, *row_fy, *row_nz, *row_fz;
     int octant;
     uint32_t index; /* the ray's place in the stream */
-    uint32_t sp;
-    uint32_t cur;
-    uint32_t cur_count;
     /* An any-hit walk's box limit (it never shrinks: walk_wide8_ray
      * keeps it from s->best); a closest-hit walk reads rs.s.box_limit,
      * which only its leaves change, as walk_wide8_ray reloads it after
@@ -64,6 +68,15 @@ struct pair8_slot {
     float st_t[WIDE_STACK];
 };
 
+/* The slot's current entry and stack pointer, apart from the slot: the
+ * stream's locals (pair8_stream), which the compiler keeps in registers
+ * (the slot's address escapes to the leaf calls, these do not). */
+struct pair8_walk {
+    uint32_t cur;
+    uint32_t cur_count;
+    uint32_t sp;
+};
+
 /* The ray at r (RTray's layout: org[3], tmin, dir[3], tmax) into slot q,
  * as WIDE8_WALK1 starts its walk: the set-up in the slot's frame, the
  * state as wide_state_init1 leaves it, the node test's -org (closest
@@ -73,8 +86,9 @@ struct pair8_slot {
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline void pair8_start(const struct bvh4 *wide, struct pair8_slot *q, const float *r,
-                               uint32_t index, struct trace_hit *hit, int any_hit)
+static inline void pair8_start(const struct bvh4 *wide, struct pair8_slot *q,
+                               struct pair8_walk *w, const float *r, uint32_t index,
+                               struct trace_hit *hit, int any_hit)
 {
     struct ray_lanes lanes;
     trace_ray_setup_lanes(&q->ray, &lanes, r, r + 4, r[3]);
@@ -95,9 +109,17 @@ static inline void pair8_start(const struct bvh4 *wide, struct pair8_slot *q, co
     q->row_fz = node_base + rows[5];
     q->octant = octant;
     q->index = index;
-    q->sp = 0;
-    q->cur = 0;
-    q->cur_count = 0;
+    w->sp = 0;
+    w->cur = 0;
+    w->cur_count = 0;
+    q->neg_org_x = _mm256_broadcast_ss(&s->r4.node_neg_org[0]);
+    q->neg_org_y = _mm256_broadcast_ss(&s->r4.node_neg_org[1]);
+    q->neg_org_z = _mm256_broadcast_ss(&s->r4.node_neg_org[2]);
+    q->inv_x = _mm256_broadcast_ss(&q->ray.inv_dir[0]);
+    q->inv_y = _mm256_broadcast_ss(&q->ray.inv_dir[1]);
+    q->inv_z = _mm256_broadcast_ss(&q->ray.inv_dir[2]);
+    q->tmin8 = _mm256_max_epi32(_mm256_castps_si256(_mm256_broadcast_ss(&q->ray.tmin)),
+                                _mm256_setzero_si256());
     q->any_limit = s->best * ISECT_BOX_FAR_SCALE;
     q->r4_ready = 0;
 }
@@ -109,8 +131,8 @@ static inline void pair8_start(const struct bvh4 *wide, struct pair8_slot *q, co
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline int pair8_step(const struct bvh4 *wide, struct pair8_slot *q, int any_hit,
-                             int leave_early, int *answer)
+static inline int pair8_step(const struct bvh4 *wide, struct pair8_slot *q,
+                             struct pair8_walk *w, int any_hit, int leave_early, int *answer)
 {
     struct wide_state *const s = &q->rs.s;
     const struct bvh8_node *const nodes = wide->nodes8;
@@ -118,21 +140,17 @@ static inline int pair8_step(const struct bvh4 *wide, struct pair8_slot *q, int 
     /* As walk_wide8_ray: the stack top's prefetch only in closest-hit
      * walks over a layout with prefetch_top (leave_early). */
     const int prefetch_top = !any_hit && leave_early;
-    uint32_t sp = q->sp;
-    if (!q->cur_count) {
+    uint32_t sp = w->sp;
+    if (!w->cur_count) {
         const float box_limit = any_hit ? q->any_limit : s->box_limit;
         const float node_limit = box_limit;
-        const uint32_t cur = q->cur;
+        const uint32_t cur = w->cur;
         const size_t node_off = (size_t)cur * sizeof(nodes[0]);
         const struct bvh8_node *const n = &nodes[cur];
-        const __m256 neg_org_x = _mm256_broadcast_ss(&s->r4.node_neg_org[0]);
-        const __m256 neg_org_y = _mm256_broadcast_ss(&s->r4.node_neg_org[1]);
-        const __m256 neg_org_z = _mm256_broadcast_ss(&s->r4.node_neg_org[2]);
-        const __m256 inv_x = _mm256_broadcast_ss(&q->ray.inv_dir[0]);
-        const __m256 inv_y = _mm256_broadcast_ss(&q->ray.inv_dir[1]);
-        const __m256 inv_z = _mm256_broadcast_ss(&q->ray.inv_dir[2]);
-        const __m256i tmin8 = _mm256_max_epi32(
-            _mm256_castps_si256(_mm256_broadcast_ss(&q->ray.tmin)), _mm256_setzero_si256());
+        const __m256 neg_org_x = q->neg_org_x, neg_org_y = q->neg_org_y,
+                     neg_org_z = q->neg_org_z;
+        const __m256 inv_x = q->inv_x, inv_y = q->inv_y, inv_z = q->inv_z;
+        const __m256i tmin8 = q->tmin8;
         /* walk_wide8_ray's node test, operation for operation. */
         const __m256 tnx =
             _mm256_mul_ps(_mm256_add_ps(neg_org_x, wide8_bound(q->row_nx, node_off)), inv_x);
@@ -182,7 +200,7 @@ static inline int pair8_step(const struct bvh4 *wide, struct pair8_slot *q, int 
                     wide8_push(n, q->octant, hit, t0, order_shift, q->st_child, q->st_count,
                                q->st_t, &sp, &next, &next_count);
                 }
-                q->sp = sp;
+                w->sp = sp;
                 if (prefetch_top) {
                     const uint32_t top = q->st_child[sp - 1];
                     const char *a = q->st_count[sp - 1] ? (const char *)&packets[top]
@@ -190,8 +208,8 @@ static inline int pair8_step(const struct bvh4 *wide, struct pair8_slot *q, int 
                     WIDE_PREFETCH_LINES(a, 3);
                 }
             }
-            q->cur = next;
-            q->cur_count = next_count;
+            w->cur = next;
+            w->cur_count = next_count;
             if (!any_hit && !next_count)
                 WIDE_PREFETCH_LINES((const char *)&nodes[next], 4);
             return 1;
@@ -206,16 +224,16 @@ static inline int pair8_step(const struct bvh4 *wide, struct pair8_slot *q, int 
             if (any_hit || q->st_t[sp] <= node_limit)
                 break;
         }
-        q->sp = sp;
-        q->cur = q->st_child[sp];
-        q->cur_count = q->st_count[sp];
+        w->sp = sp;
+        w->cur = q->st_child[sp];
+        w->cur_count = q->st_count[sp];
         return 1;
     }
     /* The leaf (walk_wide8_ray's, WIDE8_RAY_LEAF8 1). */
     {
         int stop;
-        const uint32_t cur_count = q->cur_count;
-        const struct tri4_packet *p = &packets[q->cur];
+        const uint32_t cur_count = w->cur_count;
+        const struct tri4_packet *p = &packets[w->cur];
         const int first_leaf = !any_hit && !q->r4_ready;
         if (first_leaf) {
             tri4_ray_init_vec(&s->r4, &q->ray);
@@ -255,9 +273,9 @@ static inline int pair8_step(const struct bvh4 *wide, struct pair8_slot *q, int 
             if (any_hit || q->st_t[sp] <= node_limit)
                 break;
         }
-        q->sp = sp;
-        q->cur = q->st_child[sp];
-        q->cur_count = q->st_count[sp];
+        w->sp = sp;
+        w->cur = q->st_child[sp];
+        w->cur_count = q->st_count[sp];
         /* walk_wide8_ray's WIDE8_PREFETCH_NEXT_TOP. */
         if (prefetch_top && sp) {
             const uint32_t top = q->st_child[sp - 1];
@@ -273,33 +291,47 @@ static inline int pair8_step(const struct bvh4 *wide, struct pair8_slot *q, int 
  * layout (org[3], tmin, dir[3], tmax). */
 #define PAIR8_RAY(rays, stride, i) ((rays) + (size_t)(i) * (stride))
 
-/* Slot q's turn: one step, and when its ray ends, the answer written and
- * the stream's next ray started in the slot (a ray with tmin not >= 0
- * taken by walk1 right away, as WIDE8_WALK1 sends it to its float walk).
- * Returns 0 when the slot has no ray left. */
+/* The stream's next ray into slot q (a ray with tmin not >= 0 taken by
+ * walk1 right away, as WIDE8_WALK1 sends it to its float walk).
+ * Returns 0 when the stream has no ray left. */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline int pair8_turn(const struct bvh4 *wide, struct pair8_slot *q, uint32_t *next,
-                             const float *rays, size_t stride, uint32_t count,
-                             struct trace_hit *hits, unsigned char *got, trace_walk1_fn walk1,
-                             int any_hit, int leave_early)
+static inline int pair8_refill(const struct bvh4 *wide, struct pair8_slot *q,
+                               struct pair8_walk *w, uint32_t *next, const float *rays,
+                               size_t stride, uint32_t count, struct trace_hit *hits,
+                               unsigned char *got, trace_walk1_fn walk1, int any_hit)
 {
-    int answer;
-    if (pair8_step(wide, q, any_hit, leave_early, &answer))
-        return 1;
-    got[q->index] = (unsigned char)answer;
     while (*next < count) {
         const uint32_t i = (*next)++;
         const float *r = PAIR8_RAY(rays, stride, i);
         if (r[3] >= 0.0f) {
-            pair8_start(wide, q, r, i, any_hit ? NULL : &hits[i], any_hit);
+            pair8_start(wide, q, w, r, i, any_hit ? NULL : &hits[i], any_hit);
             return 1;
         }
         got[i] = (unsigned char)walk1(wide, r, r + 4, r[3], r[7], any_hit ? NULL : &hits[i],
                                       NULL);
     }
     return 0;
+}
+
+/* Slot q's turn: one step, and when its ray ends, the answer written and
+ * the stream's next ray started in the slot (pair8_refill).  Returns 0
+ * when the slot has no ray left. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline int pair8_turn(const struct bvh4 *wide, struct pair8_slot *q,
+                             struct pair8_walk *w, uint32_t *next,
+                             const float *rays, size_t stride, uint32_t count,
+                             struct trace_hit *hits, unsigned char *got, trace_walk1_fn walk1,
+                             int any_hit, int leave_early)
+{
+    int answer;
+    if (pair8_step(wide, q, w, any_hit, leave_early, &answer))
+        return 1;
+    got[q->index] = (unsigned char)answer;
+    return pair8_refill(wide, q, w, next, rays, stride, count, hits, got, walk1, any_hit);
 }
 
 /* The whole stream, two slots stepped in turn, each slot's step its own
@@ -313,32 +345,28 @@ static inline void pair8_stream(const struct bvh4 *wide, const float *rays, size
                                 trace_walk1_fn walk1, int any_hit, int leave_early)
 {
     struct pair8_slot slot[2];
+    struct pair8_walk walk[2];
     uint32_t next = 0;
-    int live[2] = {0, 0};
-    for (int k = 0; k < 2; k++) {
-        while (next < count) {
-            const uint32_t i = next++;
-            const float *r = PAIR8_RAY(rays, stride, i);
-            if (r[3] >= 0.0f) {
-                pair8_start(wide, &slot[k], r, i, any_hit ? NULL : &hits[i], any_hit);
-                live[k] = 1;
-                break;
-            }
-            got[i] = (unsigned char)walk1(wide, r, r + 4, r[3], r[7],
-                                          any_hit ? NULL : &hits[i], NULL);
-        }
-    }
+    int live[2];
+    /* Each slot's first ray (pair8_start sets walk[k]). */
+    live[0] = pair8_refill(wide, &slot[0], &walk[0], &next, rays, stride, count, hits, got,
+                           walk1, any_hit);
+    live[1] = pair8_refill(wide, &slot[1], &walk[1], &next, rays, stride, count, hits, got,
+                           walk1, any_hit);
     while (live[0] && live[1]) {
-        live[0] = pair8_turn(wide, &slot[0], &next, rays, stride, count, hits, got, walk1,
+        live[0] = pair8_turn(wide, &slot[0], &walk[0], &next, rays, stride, count, hits, got, walk1,
                              any_hit, leave_early);
-        live[1] = pair8_turn(wide, &slot[1], &next, rays, stride, count, hits, got, walk1,
+        live[1] = pair8_turn(wide, &slot[1], &walk[1], &next, rays, stride, count, hits, got, walk1,
                              any_hit, leave_early);
     }
-    /* The last ray alone. */
-    for (int k = 0; k < 2; k++)
-        while (live[k])
-            live[k] = pair8_turn(wide, &slot[k], &next, rays, stride, count, hits, got, walk1,
-                                 any_hit, leave_early);
+    /* The last ray alone (each slot by its own constant index, so that
+     * walk[] stays in registers). */
+    while (live[0])
+        live[0] = pair8_turn(wide, &slot[0], &walk[0], &next, rays, stride, count, hits, got,
+                             walk1, any_hit, leave_early);
+    while (live[1])
+        live[1] = pair8_turn(wide, &slot[1], &walk[1], &next, rays, stride, count, hits, got,
+                             walk1, any_hit, leave_early);
 }
 #undef PAIR8_RAY
 
