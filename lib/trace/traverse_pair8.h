@@ -344,29 +344,35 @@ static inline void pair8_stream(const struct bvh4 *wide, const float *rays, size
                                 uint32_t count, struct trace_hit *hits, unsigned char *got,
                                 trace_walk1_fn walk1, int any_hit, int leave_early)
 {
-    struct pair8_slot slot[2];
-    struct pair8_walk walk[2];
+#define PAIR8_TURN(k)                                                                             \
+    pair8_turn(wide, &slot[k], &walk[k], &next, rays, stride, count, hits, got, walk1, any_hit,   \
+               leave_early)
+#define PAIR8_REFILL(k)                                                                           \
+    pair8_refill(wide, &slot[k], &walk[k], &next, rays, stride, count, hits, got, walk1, any_hit)
+    struct pair8_slot slot[4];
+    struct pair8_walk walk[4];
     uint32_t next = 0;
-    int live[2];
-    /* Each slot's first ray (pair8_start sets walk[k]). */
-    live[0] = pair8_refill(wide, &slot[0], &walk[0], &next, rays, stride, count, hits, got,
-                           walk1, any_hit);
-    live[1] = pair8_refill(wide, &slot[1], &walk[1], &next, rays, stride, count, hits, got,
-                           walk1, any_hit);
-    while (live[0] && live[1]) {
-        live[0] = pair8_turn(wide, &slot[0], &walk[0], &next, rays, stride, count, hits, got, walk1,
-                             any_hit, leave_early);
-        live[1] = pair8_turn(wide, &slot[1], &walk[1], &next, rays, stride, count, hits, got, walk1,
-                             any_hit, leave_early);
+    int live[4];
+    live[0] = PAIR8_REFILL(0);
+    live[1] = PAIR8_REFILL(1);
+    live[2] = PAIR8_REFILL(2);
+    live[3] = PAIR8_REFILL(3);
+    while (live[0] && live[1] && live[2] && live[3]) {
+        live[0] = PAIR8_TURN(0);
+        live[1] = PAIR8_TURN(1);
+        live[2] = PAIR8_TURN(2);
+        live[3] = PAIR8_TURN(3);
     }
-    /* The last ray alone (each slot by its own constant index, so that
-     * walk[] stays in registers). */
     while (live[0])
-        live[0] = pair8_turn(wide, &slot[0], &walk[0], &next, rays, stride, count, hits, got,
-                             walk1, any_hit, leave_early);
+        live[0] = PAIR8_TURN(0);
     while (live[1])
-        live[1] = pair8_turn(wide, &slot[1], &walk[1], &next, rays, stride, count, hits, got,
-                             walk1, any_hit, leave_early);
+        live[1] = PAIR8_TURN(1);
+    while (live[2])
+        live[2] = PAIR8_TURN(2);
+    while (live[3])
+        live[3] = PAIR8_TURN(3);
+#undef PAIR8_TURN
+#undef PAIR8_REFILL
 }
 #undef PAIR8_RAY
 
