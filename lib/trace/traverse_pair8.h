@@ -210,13 +210,13 @@ static inline int pair8_step(const struct bvh4 *wide, struct pair8_slot *q,
             }
             w->cur = next;
             w->cur_count = next_count;
-            if (!next_count)
+            if (!any_hit && !next_count)
                 WIDE_PREFETCH_LINES((const char *)&nodes[next], 4);
             /* A leaf chosen here is tested at the slot's next turn, after
              * the other slots' steps: its packet's lines requested now
              * (walk_wide8_ray, which tests it at once, does not), so that
              * their load overlaps those steps.  A hint only. */
-            if (next_count) {
+            if (!any_hit && next_count) {
                 const char *a = (const char *)&packets[next];
                 WIDE_PREFETCH_LINES(a, 3);
                 if (next_count > 4)
