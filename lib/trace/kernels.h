@@ -144,8 +144,8 @@ struct trace_kernels {
      * (and in the tables without AVX2). */
     trace_packet_closest_arrays_fn closest_packet_arrays;
     trace_packet_any_arrays_fn any_packet_arrays;
-    /* walk1's rays as a stream (trace_stream1_fn), two rays walked at
-     * once, one step of each in turn (traverse_pair8.h), for the layout
+    /* walk1's rays as a stream (trace_stream1_fn), several rays walked
+     * at once, one step of each in turn (traverse_pair8.h), for the layout
      * walk1 chooses its walk for (any_hit 0 or 1); the same answers as
      * walk1 ray by ray.  NULL where walk1 is, and in the tables without
      * the pair walk (all but AVX2). */

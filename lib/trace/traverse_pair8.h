@@ -1,11 +1,13 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
  * traverse_pair8.h - a stream of single rays over an 8-wide layout,
- * walked two at a time: one step of ray A, then one step of ray B (a
- * step: one node test with its push or pop and its choice of the next
- * node, or one leaf call), each ray with its own state in a slot of its
- * own (struct pair8_slot); when a ray ends, its slot takes the stream's
- * next ray.  Included by traverse_wide.h's users after it (the AVX2
+ * walked PAIR8_SLOTS at a time: one step of ray A, then one step of ray
+ * B, and so on round the slots (a step: one node test with its push or
+ * pop and its choice of the next node, or one leaf call), each ray with
+ * its own state in a slot of its own (struct pair8_slot); when a ray
+ * ends, its slot takes the stream's next ray.  Named for the first form,
+ * two slots (the "pair"); eight measured best (below, PAIR8_SLOTS).
+ * Included by traverse_wide.h's users after it (the AVX2
  * table, traverse_avx2.c), with TRACE_PAIR8_STREAM defined as the name
  * of kernels.h's stream_pair entry; no include guard.
  *
@@ -14,9 +16,9 @@
  * of a large mesh waits for about 30 of them from the L3, one after the
  * other (docs/performance-log.md, rounds 54-59); the out-of-order core
  * overlaps the next ray's work only as far as its reorder buffer
- * reaches (256 entries on Zen 3, about an eighth of a soup ray).  Two
- * rays stepped in turn give the core the other ray's chain to run while
- * one waits on a miss: asynchronous memory access chaining (Kocberber,
+ * reaches (256 entries on Zen 3, about an eighth of a soup ray).  Rays
+ * stepped in turn give the core the other rays' chains to run while one
+ * waits on a miss: asynchronous memory access chaining (Kocberber,
  * Falsafi and Grot 2015, VLDB 9(4)); for hash joins, group and
  * software-pipelined prefetching (Chen, Ailamaki, Gibbons and Mowry
  * 2004).
@@ -29,9 +31,10 @@
  * pops against the same limits, the same leaf calls (the 8-lane call for
  * 5-8 triangles, the first-leaf copy at a closest-hit ray's first leaf,
  * the 4-lane call for 1-4) on a state set up as WIDE8_WALK1 sets it, and
- * the same prefetches.  So every ray's node tests, leaf calls and answer
- * are walk1's, by construction; conformance/internal/pair8_stream checks
- * it hit by hit.  Only the order in which two rays' steps run differs,
+ * the same prefetches, with one more (a closest-hit leaf's packet when a
+ * node test chooses it, pair8_step), a hint only.  So every ray's node
+ * tests, leaf calls and answer are walk1's, by construction; conformance/internal/pair8_stream checks
+ * it hit by hit.  Only the order in which the rays' steps run differs,
  * and no step reads another ray's state.
  *
  * The AVX2 table only: the AVX-512 table's walks from the set-up's lanes
@@ -40,7 +43,7 @@
  */
 
 /* One ray's walk between two steps: walk_wide8_ray's locals, kept in
- * memory (the other ray's step runs between two of this one's, and the
+ * memory (the other rays' steps run between two of this one's, and the
  * leaf calls clobber every vector register anyway). */
 struct pair8_slot {
     /* The node test's vectors, broadcast once at the ray's start (the
@@ -68,9 +71,19 @@ struct pair8_slot {
     float st_t[WIDE_STACK];
 };
 
+/* The rays in flight.  Random rays on a Zen 3 core (rtbench embree,
+ * ours/Embree, quads under load; docs/performance-log.md, round 60,
+ * zn17): bumpy 1.05 with 2 slots, 1.27 with 4, 1.52 with 8 (walk1:
+ * 0.88-0.91); the soup 0.88, 0.92-1.06, 0.87-1.00 (walk1: 0.80-0.82). */
+#ifndef PAIR8_SLOTS
+#define PAIR8_SLOTS 8
+#endif
+
 /* The slot's current entry and stack pointer, apart from the slot: the
- * stream's locals (pair8_stream), which the compiler keeps in registers
- * (the slot's address escapes to the leaf calls, these do not). */
+ * stream's locals (pair8_stream): with two slots, each stepped by its
+ * own inlined copy, the compiler kept them in registers (the slot's address
+ * escapes to the leaf calls, these do not); with more slots and one
+ * copy of the step they live in memory, as the slot does. */
 struct pair8_walk {
     uint32_t cur;
     uint32_t cur_count;
@@ -344,9 +357,10 @@ static inline int pair8_turn(const struct bvh4 *wide, struct pair8_slot *q,
     return pair8_refill(wide, q, w, next, rays, stride, count, hits, got, walk1, any_hit);
 }
 
-/* The whole stream, two slots stepped in turn, each slot's step its own
- * inlined copy (its branches then have their own history, as one ray's
- * walk has). */
+/* The whole stream, the slots stepped in turn; when the stream runs dry
+ * the rays still in flight end one after the other.  One copy of the
+ * step for all slots: a copy per slot (four, unrolled) was level on the
+ * clock (bumpy random 1.27 both, the soup 0.92 / 1.06, one quad). */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
@@ -354,35 +368,26 @@ static inline void pair8_stream(const struct bvh4 *wide, const float *rays, size
                                 uint32_t count, struct trace_hit *hits, unsigned char *got,
                                 trace_walk1_fn walk1, int any_hit, int leave_early)
 {
-#define PAIR8_TURN(k)                                                                             \
-    pair8_turn(wide, &slot[k], &walk[k], &next, rays, stride, count, hits, got, walk1, any_hit,   \
-               leave_early)
-#define PAIR8_REFILL(k)                                                                           \
-    pair8_refill(wide, &slot[k], &walk[k], &next, rays, stride, count, hits, got, walk1, any_hit)
-    struct pair8_slot slot[4];
-    struct pair8_walk walk[4];
+    struct pair8_slot slot[PAIR8_SLOTS];
+    struct pair8_walk walk[PAIR8_SLOTS];
     uint32_t next = 0;
-    int live[4];
-    live[0] = PAIR8_REFILL(0);
-    live[1] = PAIR8_REFILL(1);
-    live[2] = PAIR8_REFILL(2);
-    live[3] = PAIR8_REFILL(3);
-    while (live[0] && live[1] && live[2] && live[3]) {
-        live[0] = PAIR8_TURN(0);
-        live[1] = PAIR8_TURN(1);
-        live[2] = PAIR8_TURN(2);
-        live[3] = PAIR8_TURN(3);
+    int live[PAIR8_SLOTS];
+    int all = 1;
+    for (int k = 0; k < PAIR8_SLOTS; k++) {
+        live[k] = pair8_refill(wide, &slot[k], &walk[k], &next, rays, stride, count, hits, got,
+                               walk1, any_hit);
+        all &= live[k];
     }
-    while (live[0])
-        live[0] = PAIR8_TURN(0);
-    while (live[1])
-        live[1] = PAIR8_TURN(1);
-    while (live[2])
-        live[2] = PAIR8_TURN(2);
-    while (live[3])
-        live[3] = PAIR8_TURN(3);
-#undef PAIR8_TURN
-#undef PAIR8_REFILL
+    while (all)
+        for (int k = 0; k < PAIR8_SLOTS; k++) {
+            live[k] = pair8_turn(wide, &slot[k], &walk[k], &next, rays, stride, count, hits,
+                                 got, walk1, any_hit, leave_early);
+            all &= live[k];
+        }
+    for (int k = 0; k < PAIR8_SLOTS; k++)
+        while (live[k])
+            live[k] = pair8_turn(wide, &slot[k], &walk[k], &next, rays, stride, count, hits,
+                                 got, walk1, any_hit, leave_early);
 }
 #undef PAIR8_RAY
 
