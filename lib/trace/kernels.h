@@ -170,4 +170,8 @@ const struct trace_kernels *trace_kernels_sse4(void);
 const struct trace_kernels *trace_kernels_avx2(void);
 const struct trace_kernels *trace_kernels_avx512(void);
 
+/* The AVX2 table's stream_pair (stream_avx2.c), defined only where the
+ * table is (traverse_avx2.c refers to it only then). */
+trace_stream1_fn trace_stream_pair_avx2(const struct bvh4 *wide, int any_hit);
+
 #endif

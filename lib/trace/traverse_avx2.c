@@ -20,8 +20,6 @@
 #define TRACE_WIDE_WALK1 trace_walk1_avx2
 #define TRACE_WIDE_WALK1_COUNTED trace_walk1_counted_avx2
 #include "trace/traverse_wide.h"
-#define TRACE_PAIR8_STREAM trace_stream_pair_avx2
-#include "trace/traverse_pair8.h"
 #define TRACE_TOP_LANES trace_top_lanes_avx2
 #define TRACE_TOP_LANES1 trace_top_lanes1_avx2
 #include "trace/top_lanes.h"
