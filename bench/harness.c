@@ -22,6 +22,7 @@
 #include "base/alloc.h"
 #include "base/timer.h"
 #include "bench.h"
+#include "trace/walk_fiber.h"
 
 /* The benchmark's choice of ISA table, made once from the command line
  * before any section runs (the benchmark is an application, not the
@@ -189,6 +190,50 @@ double bench_fresh_sah(const struct bench_mesh *mesh, enum bvh_builder builder,
     return sah;
 }
 
+/* The rays walked at once by the table's stream entry (kernels.h,
+ * stream_fiber) instead of walk1 ray by ray: the environment's
+ * TRACELIST_BENCH_STREAM (2-4), read by the kernels at each call; unset,
+ * 0 or 1, a table or layout without the entry, or a layout the stream
+ * does not pay on (trace_stream_fiber_pays), walk1.  A switch for
+ * comparing the two walks in one binary (docs/performance-log.md, round
+ * 60); the stream's answers are walk1's bit for bit. */
+static unsigned bench_stream_fibers(void)
+{
+    const char *v = getenv("TRACELIST_BENCH_STREAM");
+    const int n = v ? atoi(v) : 0;
+    return n >= 2 && n <= 4 ? (unsigned)n : 0;
+}
+
+/* The stream's rays in pieces of this many: its answers kept on the
+ * stack before they take bench_hit's form. */
+#define BENCH_STREAM_PIECE 256u
+
+/* rays [begin, end) by the stream entry, hits as the walk1 loops give
+ * them (any_hit: t 0 and prim 0 when occluded). */
+static void bench_stream(trace_stream_fn stream, const struct bench_accel *acc, unsigned fibers,
+                         int any_hit, const RTray *rays, uint32_t begin, uint32_t end,
+                         struct bench_hit *hits)
+{
+    struct trace_hit th[BENCH_STREAM_PIECE];
+    int got[BENCH_STREAM_PIECE];
+    for (uint32_t b = begin; b < end; b += BENCH_STREAM_PIECE) {
+        const uint32_t n = end - b < BENCH_STREAM_PIECE ? end - b : BENCH_STREAM_PIECE;
+        stream(&acc->wide, rays + b, n, fibers, any_hit ? NULL : th, got);
+        for (uint32_t i = 0; i < n; i++) {
+            if (any_hit) {
+                hits[b + i].t = got[i] ? 0.0f : INFINITY;
+                hits[b + i].prim = got[i] ? 0 : BENCH_MISS;
+            } else if (got[i]) {
+                hits[b + i].t = th[i].t;
+                hits[b + i].prim = th[i].prim;
+            } else {
+                hits[b + i].t = INFINITY;
+                hits[b + i].prim = BENCH_MISS;
+            }
+        }
+    }
+}
+
 void bench_kernel_closest(void *ctx, const RTray *rays, uint32_t begin, uint32_t end,
                           struct bench_hit *hits)
 {
@@ -198,6 +243,13 @@ void bench_kernel_closest(void *ctx, const RTray *rays, uint32_t begin, uint32_t
     /* The layout's walk, chosen once (kernels.h, walk1), as a caller
      * tracing many rays over one layout would. */
     const trace_walk1_fn walk1 = wide && k->walk1 ? k->walk1(&acc->wide, 0) : NULL;
+    const unsigned fibers = walk1 && k->stream_fiber ? bench_stream_fibers() : 0;
+    const trace_stream_fn stream =
+        fibers && trace_stream_fiber_pays(&acc->wide) ? k->stream_fiber(&acc->wide, 0) : NULL;
+    if (stream) {
+        bench_stream(stream, acc, fibers, 0, rays, begin, end, hits);
+        return;
+    }
     for (uint32_t i = begin; i < end; i++) {
         const RTray *r = &rays[i];
         struct trace_hit h;
@@ -230,6 +282,13 @@ void bench_kernel_any(void *ctx, const RTray *rays, uint32_t begin, uint32_t end
     const struct trace_kernels *k = bench_kernels();
     const int wide = k->any1 && !binary_layout && acc->wide.node_count;
     const trace_walk1_fn walk1 = wide && k->walk1 ? k->walk1(&acc->wide, 1) : NULL;
+    const unsigned fibers = walk1 && k->stream_fiber ? bench_stream_fibers() : 0;
+    const trace_stream_fn stream =
+        fibers && trace_stream_fiber_pays(&acc->wide) ? k->stream_fiber(&acc->wide, 1) : NULL;
+    if (stream) {
+        bench_stream(stream, acc, fibers, 1, rays, begin, end, hits);
+        return;
+    }
     for (uint32_t i = begin; i < end; i++) {
         const RTray *r = &rays[i];
         int occluded;

@@ -36,6 +36,14 @@ typedef int (*trace_walk1_fn)(const struct bvh4 *wide, const float org[3], const
                               float tmin, float t_max, struct trace_hit *hit,
                               struct trace_counters *counters);
 
+/* A stream's rays [0, count) over one wide layout (stream_fiber.h), each
+ * with walk1's answer bit for bit: answers[i] its return value (found,
+ * or occluded), hits[i] its hit when found (closest hit; NULL for an
+ * any-hit stream).  fibers: how many rays are walked at once (1-4). */
+struct RTray; /* rt.h's RTray; its full type where a stream is written or called */
+typedef void (*trace_stream_fn)(const struct bvh4 *wide, const struct RTray *rays, uint32_t count,
+                                unsigned fibers, struct trace_hit *hits, int *answers);
+
 struct trace_kernels {
     enum trace_isa isa;
     const char *name; /* "scalar", "sse4", "avx2", "avx512": the isa= value */
@@ -136,6 +144,13 @@ struct trace_kernels {
      * (and in the tables without AVX2). */
     trace_packet_closest_arrays_fn closest_packet_arrays;
     trace_packet_any_arrays_fn any_packet_arrays;
+    /* walk1's walks over a stream of rays, several rays in flight on
+     * coroutines that switch where a walk waits on memory (stream_fiber.h,
+     * walk_fiber.h): the stream for the layout, any_hit as walk1's; NULL
+     * where walk1 returns NULL, in the tables without it (all but AVX2),
+     * and in builds without the coroutine switch (not x86-64 ELF with
+     * GCC or Clang, or with a sanitizer: walk_fiber.h). */
+    trace_stream_fn (*stream_fiber)(const struct bvh4 *wide, int any_hit);
 };
 
 /* The table of an ISA, or NULL when this build has no such table or this

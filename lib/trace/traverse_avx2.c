@@ -23,6 +23,8 @@
 #define TRACE_TOP_LANES trace_top_lanes_avx2
 #define TRACE_TOP_LANES1 trace_top_lanes1_avx2
 #include "trace/top_lanes.h"
+#define TRACE_WIDE_STREAM_FIBER trace_stream_fiber_avx2
+#include "trace/stream_fiber.h"
 
 static const struct trace_kernels table = {
     TRACE_ISA_AVX2, "avx2", trace_closest_avx2, trace_any_avx2,
@@ -31,7 +33,13 @@ static const struct trace_kernels table = {
     trace_closest_packet_avx2, trace_any_packet_avx2, trace_leaf8_avx2,
     trace_top_lanes_avx2, trace_top_lanes1_avx2, trace_packet_init_avx2,
     trace_packet_xform_avx2, trace_walk1_avx2, trace_walk1_counted_avx2,
-    trace_closest_packet_arrays_avx2, trace_any_packet_arrays_avx2};
+    trace_closest_packet_arrays_avx2, trace_any_packet_arrays_avx2,
+#if TRACE_FIBER
+    trace_stream_fiber_avx2
+#else
+    NULL
+#endif
+};
 
 const struct trace_kernels *trace_kernels_avx2(void)
 {

@@ -17,7 +17,12 @@
 __attribute__((always_inline))
 #endif
 static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int any_hit, int stats,
-                            int leave_early, const struct ray_lanes *lanes)
+                            int leave_early, const struct ray_lanes *lanes
+#if defined(WIDE8_RAY_FIBER)
+                            ,
+                            struct trace_fiber *fiber
+#endif
+)
 {
     const struct trace_ray *ray = s->ray;
     const struct bvh8_node *nodes = wide->nodes8;
@@ -411,6 +416,13 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                         WIDE_PREFETCH_LINES(by_off ? node_base + cur_off
                                                    : (const char *)&nodes[cur],
                                             4);
+#if defined(WIDE8_RAY_FIBER)
+                    /* The stream's copy: the next node (or leaf: its
+                     * yield comes at the leaf) requested, the other rays
+                     * run (stream_fiber.h, WIDE8_FIBER_NODE_YIELD). */
+                    if (!cur_count)
+                        WIDE8_FIBER_NODE_YIELD(fiber, &nodes[cur]);
+#endif
                     continue;
                 }
                 /* Pop (as below). */
@@ -431,6 +443,14 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
             int stop = 0;
             const struct tri4_packet *p =
                 &packets[by_off ? (size_t)(cur_off / sizeof(nodes[0])) : (size_t)cur];
+#if defined(WIDE8_RAY_FIBER)
+            /* The stream's copy (stream_fiber.h): the leaf's packet lines
+             * requested, then the other rays' walks run until they yield
+             * in turn, so that this leaf's loads overlap their work
+             * instead of stalling this walk; the leaf is then tested as
+             * in every other copy. */
+            WIDE8_FIBER_LEAF_YIELD(fiber, p, cur_count);
+#endif
             /* A closest-hit ray sets the packet test's constants at its
              * first leaf, not at its start: a ray that misses every leaf
              * box never pays for them.  An any-hit ray (a shadow ray,
