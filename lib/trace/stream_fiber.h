@@ -43,16 +43,20 @@
  * WIDE8_FIBER_NODES 0 leaves the nodes without a yield.  Measured on a
  * Zen 3 core (EPYC, 32 MB L3), bumpy's random rays (a 60 MB layout),
  * ours/Embree: walk1 0.89; leaf yields only, 2 or 4 rays in flight 1.08
- * and 1.10; leaf and node yields 1.13 and 1.45 (docs/performance-log.md,
- * round 60); the node yields cost 344 instructions a soup random ray
- * (callgrind, 2125 -> 2469 with two rays in flight). */
+ * and 1.10; leaf and node yields 1.13 and 1.45, 8 in flight as 4
+ * (docs/performance-log.md, round 60); the node yields cost 344
+ * instructions a soup random ray (callgrind, 2125 -> 2469 with two rays
+ * in flight). */
 #ifndef WIDE8_FIBER_NODES
 #define WIDE8_FIBER_NODES 1
 #endif
 /* The nodes of the top three levels: the collapse numbers the nodes
  * breadth first (collapse4.c), so these are the first 1 + 8 + 64 (18 KB),
  * which every walk visits and which stay in the caches; a yield there
- * overlaps nothing. */
+ * overlaps nothing.  Without their yields, four rays in flight,
+ * ours/Embree: bumpy's random rays 1.445 -> 1.495, the kitchen's 0.685
+ * -> 0.755, gears' 0.68 -> 0.79, the soup's level; bumpy's random rays
+ * 1208 -> 1114 instructions (callgrind; walk1 899). */
 #ifndef WIDE8_FIBER_HOT_NODES
 #define WIDE8_FIBER_HOT_NODES 73u
 #endif

@@ -58,14 +58,14 @@ struct bvh4;
  * cache, whose walks wait for memory at most nodes and leaves.  On a
  * Zen 3 core (EPYC, 32 MB L3), four rays in flight against walk1 ray by
  * ray, ours/Embree (rtcIntersect1) on the random rays: bumpy (a 60 MB
- * layout) 0.86 -> 1.38; the soup (6.5 MB) 0.81 -> 0.97, but the kitchen
- * (7 MB, about two nodes a ray) 0.76 -> 0.66 and gears (0.1 MB) 0.88 ->
- * 0.70: where the lines come from the L3 or nearer, the overlap gave
- * less than the yields cost, unless the walks are long (the soup's),
- * which the layout's size does not tell (docs/performance-log.md, round
- * 60).  Coherent rays (a camera's, their shadow rays) lost on every
- * layout (bumpy's 0.90 -> 0.74): consecutive rays share their lines
- * already.  A heuristic only: the answers do not depend on it. */
+ * layout) 0.92 -> 1.64; the kitchen (7 MB, about two nodes a ray) 0.84
+ * -> 0.76, gears (0.1 MB) 0.9 -> 0.79, the soup (6.5 MB) level to +0.15
+ * from quad to quad: where the lines come from the L3 or nearer, the
+ * overlap gave about what the yields cost, or less
+ * (docs/performance-log.md, round 60).  Coherent rays (a camera's, their
+ * shadow rays) lost on every layout (bumpy's camera rays 0.91 -> 0.77):
+ * consecutive rays share their lines already.  A heuristic only: the
+ * answers do not depend on it. */
 #define TRACE_STREAM_FIBER_BYTES ((uint64_t)32 << 20)
 
 /* 1 when wide's nodes and packets take TRACE_STREAM_FIBER_BYTES or more. */
