@@ -138,10 +138,76 @@ fail:
     return NULL;
 }
 
+/* Embree's stream entries (rtcIntersect1M / rtcOccluded1M, the context
+ * flagged RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT) instead of the scalar
+ * loop over rtcIntersect1 / rtcOccluded1, when the environment's
+ * TRACELIST_BENCH_EMBREE_STREAM is 1: the "Embree" columns then time
+ * Embree's stream on the same rays, beside ours with
+ * TRACELIST_BENCH_STREAM (harness.c: our stream entry), so that a stream
+ * is compared with a stream (docs/performance-log.md, round 60).  Read
+ * at each call, as harness.c reads its switch. */
+static int embree_stream_selected(void)
+{
+    const char *v = getenv("TRACELIST_BENCH_EMBREE_STREAM");
+    return v && atoi(v) == 1;
+}
+
+/* The stream's rays in pieces of this many (RTCRayHit arrays on the
+ * stack). */
+#define EMBREE_STREAM_PIECE 256u
+
+static void embree_stream_closest(RTCScene scene, const RTray *rays, uint32_t begin,
+                                  uint32_t end, struct bench_hit *hits)
+{
+    struct RTCIntersectContext ic;
+    rtcInitIntersectContext(&ic);
+    ic.flags = RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+    struct RTCRayHit rh[EMBREE_STREAM_PIECE];
+    for (uint32_t b = begin; b < end; b += EMBREE_STREAM_PIECE) {
+        const uint32_t n = end - b < EMBREE_STREAM_PIECE ? end - b : EMBREE_STREAM_PIECE;
+        for (uint32_t i = 0; i < n; i++)
+            bench_embree_ray_hit(&rays[b + i], &rh[i]);
+        rtcIntersect1M(scene, &ic, rh, n, sizeof(rh[0]));
+        for (uint32_t i = 0; i < n; i++) {
+            if (rh[i].hit.geomID != RTC_INVALID_GEOMETRY_ID) {
+                hits[b + i].t = rh[i].ray.tfar;
+                hits[b + i].prim = rh[i].hit.primID;
+            } else {
+                hits[b + i].t = INFINITY;
+                hits[b + i].prim = BENCH_MISS;
+            }
+        }
+    }
+}
+
+static void embree_stream_any(RTCScene scene, const RTray *rays, uint32_t begin, uint32_t end,
+                              struct bench_hit *hits)
+{
+    struct RTCIntersectContext ic;
+    rtcInitIntersectContext(&ic);
+    ic.flags = RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+    struct RTCRay ray[EMBREE_STREAM_PIECE];
+    for (uint32_t b = begin; b < end; b += EMBREE_STREAM_PIECE) {
+        const uint32_t n = end - b < EMBREE_STREAM_PIECE ? end - b : EMBREE_STREAM_PIECE;
+        for (uint32_t i = 0; i < n; i++)
+            bench_embree_ray(&rays[b + i], &ray[i]);
+        rtcOccluded1M(scene, &ic, ray, n, sizeof(ray[0]));
+        for (uint32_t i = 0; i < n; i++) {
+            const int occluded = ray[i].tfar == -INFINITY;
+            hits[b + i].t = occluded ? 0.0f : INFINITY;
+            hits[b + i].prim = occluded ? 0 : BENCH_MISS;
+        }
+    }
+}
+
 static void embree_kernel_closest(void *ctx, const RTray *rays, uint32_t begin, uint32_t end,
                                   struct bench_hit *hits)
 {
     RTCScene scene = ctx;
+    if (embree_stream_selected()) {
+        embree_stream_closest(scene, rays, begin, end, hits);
+        return;
+    }
     struct RTCIntersectContext ic;
     rtcInitIntersectContext(&ic);
     for (uint32_t i = begin; i < end; i++) {
@@ -163,6 +229,10 @@ static void embree_kernel_any(void *ctx, const RTray *rays, uint32_t begin, uint
                               struct bench_hit *hits)
 {
     RTCScene scene = ctx;
+    if (embree_stream_selected()) {
+        embree_stream_any(scene, rays, begin, end, hits);
+        return;
+    }
     struct RTCIntersectContext ic;
     rtcInitIntersectContext(&ic);
     for (uint32_t i = begin; i < end; i++) {
