@@ -299,6 +299,13 @@ int bench_select_layout(const char *name);
 uint32_t bench_layout_width(void);
 /* The layout the kernels of "ours" walk: "binary", "bvh4" or "bvh8". */
 const char *bench_layout_name(void);
+/* --stream KEYS (bench_select_stream, -1 for an unknown or empty key):
+ * "ours" times our single-ray rows through the stream entry (kernels.h,
+ * stream_pair; walk1 where the table has none), "embree" Embree's
+ * through rtcIntersect1M / rtcOccluded1M (bench_embree_stream). */
+int bench_select_stream(const char *keys);
+int bench_embree_stream(void);
+
 /* --collapse greedy|optimal (bench_select_collapse, -1 for another
  * name): the collapse of the benchmark's wide layouts; its name for the
  * tables' headers. */

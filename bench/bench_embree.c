@@ -140,18 +140,11 @@ fail:
 
 /* Embree's stream entries (rtcIntersect1M / rtcOccluded1M, the context
  * flagged RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT) instead of the scalar
- * loop over rtcIntersect1 / rtcOccluded1, when the environment's
- * TRACELIST_BENCH_EMBREE_STREAM is 1: the "Embree" columns then time
- * Embree's stream on the same rays, beside ours with
- * TRACELIST_BENCH_STREAM (harness.c: our stream entry), so that a stream
- * is compared with a stream (docs/performance-log.md, round 60).  Read
- * at each call, as harness.c reads its switch. */
-static int embree_stream_selected(void)
-{
-    const char *v = getenv("TRACELIST_BENCH_EMBREE_STREAM");
-    return v && atoi(v) == 1;
-}
-
+ * loop over rtcIntersect1 / rtcOccluded1, with `--stream embree`
+ * (bench_embree_stream): the "Embree" columns then time Embree's stream
+ * on the same rays, beside ours with `--stream ours` (harness.c: our
+ * stream entry), so that a stream is compared with a stream
+ * (docs/performance-log.md, round 60). */
 /* The stream's rays in pieces of this many (RTCRayHit arrays on the
  * stack). */
 #define EMBREE_STREAM_PIECE 256u
@@ -204,7 +197,7 @@ static void embree_kernel_closest(void *ctx, const RTray *rays, uint32_t begin, 
                                   struct bench_hit *hits)
 {
     RTCScene scene = ctx;
-    if (embree_stream_selected()) {
+    if (bench_embree_stream()) {
         embree_stream_closest(scene, rays, begin, end, hits);
         return;
     }
@@ -229,7 +222,7 @@ static void embree_kernel_any(void *ctx, const RTray *rays, uint32_t begin, uint
                               struct bench_hit *hits)
 {
     RTCScene scene = ctx;
-    if (embree_stream_selected()) {
+    if (bench_embree_stream()) {
         embree_stream_any(scene, rays, begin, end, hits);
         return;
     }

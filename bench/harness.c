@@ -190,15 +190,48 @@ double bench_fresh_sah(const struct bench_mesh *mesh, enum bvh_builder builder,
     return sah;
 }
 
-/* The stream entry (kernels.h, stream_pair) for the layout, or NULL: a
- * bench switch, the environment's TRACELIST_BENCH_STREAM=pair, read
- * here only, so that one binary times walk1 and the pair walk on the
- * same rays (the answers are the same; the agreement columns check it). */
+/* --stream ours: our single-ray rows through the stream entry
+ * (kernels.h, stream_pair) where the table has one; --stream embree:
+ * Embree's through rtcIntersect1M / rtcOccluded1M (bench_embree.c).  So
+ * that one binary times walk1 and the stream on the same rays (the
+ * answers are the same; the agreement columns check it), and a stream is
+ * compared with Embree's stream as well as with its scalar loop. */
+static int stream_ours;
+static int stream_embree;
+
+int bench_select_stream(const char *keys)
+{
+    int ours = 0, embree = 0;
+    const char *k = keys;
+    while (*k) {
+        const size_t len = strcspn(k, ",");
+        if (len == 4 && !strncmp(k, "ours", 4))
+            ours = 1;
+        else if (len == 6 && !strncmp(k, "embree", 6))
+            embree = 1;
+        else
+            return -1;
+        k += len;
+        if (*k == ',' && *++k == '\0')
+            return -1;
+    }
+    if (!ours && !embree)
+        return -1;
+    stream_ours = ours;
+    stream_embree = embree;
+    return 0;
+}
+
+int bench_embree_stream(void)
+{
+    return stream_embree;
+}
+
+/* The stream entry for the layout when --stream ours chose it, or NULL. */
 static trace_stream1_fn bench_stream(const struct trace_kernels *k, const struct bvh4 *wide,
                                      int any_hit)
 {
-    const char *v = getenv("TRACELIST_BENCH_STREAM");
-    if (!v || strcmp(v, "pair") || !k->stream_pair)
+    if (!stream_ours || !k->stream_pair)
         return NULL;
     return k->stream_pair(wide, any_hit);
 }

@@ -68,7 +68,7 @@ static void usage(FILE *f)
             "               [--quick] [--runs N]"
             " [--out DIR] [--mesh bumpy|gears|soup|kitchen]\n"
             "               [--baseline FILE] [--tolerance PCT] [--bart-dir DIR]\n"
-            "               [--isa NAME] [--layout L]\n"
+            "               [--isa NAME] [--layout L] [--stream KEYS]\n"
             "\n"
             "  build      BVH quality against build time per builder and bin count\n"
             "  trace      Mrays/s, trace_closest/trace_any directly and through rtTraceRays\n"
@@ -114,6 +114,10 @@ static void usage(FILE *f)
             "  --layout L  our object walk's layout: bvh8 (AVX2, AVX-512), bvh4 (SSE4.2\n"
             "             up), binary (the walk before the collapse); default the\n"
             "             widest the ISA table walks\n"
+            "  --stream KEYS  ours: our single-ray rows (embree, trace, packets) through\n"
+            "             the stream entry (several rays in flight; walk1 where the\n"
+            "             table has none); embree: Embree's through rtcIntersect1M /\n"
+            "             rtcOccluded1M (incoherent); or ours,embree\n"
             "  --collapse C  the wide layout's collapse: greedy (the default) or optimal\n"
             "             (Ylitie, Karras and Laine 2017, an object's\n"
             "             rtHint(RT_ACCELERATION_HINT, RT_NICEST)): rtbench's own\n"
@@ -225,6 +229,12 @@ int main(int argc, char **argv)
         } else if (!strcmp(a, "--layout") && value) {
             if (bench_select_layout(value)) {
                 fprintf(stderr, "rtbench: --layout takes bvh8, bvh4 or binary\n");
+                return 1;
+            }
+            i++;
+        } else if (!strcmp(a, "--stream") && value) {
+            if (bench_select_stream(value)) {
+                fprintf(stderr, "rtbench: --stream takes ours, embree or ours,embree\n");
                 return 1;
             }
             i++;
