@@ -137,6 +137,46 @@ static inline void pair8_start(const struct bvh4 *wide, struct pair8_slot *q,
     q->r4_ready = 0;
 }
 
+/* walk_wide8_ray's prefetch of the stack's top entry (its lines, a
+ * packet's or a node's), for a walk with prefetch_top: sp entries on
+ * slot q's stack, at least one. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void pair8_prefetch_top(const struct pair8_slot *q, uint32_t sp,
+                                      const struct bvh8_node *nodes,
+                                      const struct tri4_packet *packets)
+{
+    const uint32_t top = q->st_child[sp - 1];
+    const char *a = q->st_count[sp - 1] ? (const char *)&packets[top] : (const char *)&nodes[top];
+    WIDE_PREFETCH_LINES(a, 3);
+}
+
+/* walk_wide8_ray's pop: the stack's entries from sp down, those a
+ * closest-hit walk's limit has passed skipped, the first one left made
+ * slot q's current entry (returns 1); or, with the stack empty, the walk
+ * ended with *answer walk1's (returns 0). */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline int pair8_pop(struct pair8_slot *q, struct pair8_walk *w, uint32_t sp,
+                            float node_limit, int any_hit, int *answer)
+{
+    for (;;) {
+        if (sp == 0) {
+            *answer = any_hit ? 0 : q->rs.s.found;
+            return 0;
+        }
+        sp--;
+        if (any_hit || q->st_t[sp] <= node_limit)
+            break;
+    }
+    w->sp = sp;
+    w->cur = q->st_child[sp];
+    w->cur_count = q->st_count[sp];
+    return 1;
+}
+
 /* One step of slot q's walk: a node test (with its push or pop) when its
  * current entry is a node, else the leaf's call and the pop after it.
  * Returns 1 while the walk goes on; 0 when it has ended, with *answer
@@ -155,8 +195,7 @@ static inline int pair8_step(const struct bvh4 *wide, struct pair8_slot *q,
     const int prefetch_top = !any_hit && leave_early;
     uint32_t sp = w->sp;
     if (!w->cur_count) {
-        const float box_limit = any_hit ? q->any_limit : s->box_limit;
-        const float node_limit = box_limit;
+        const float node_limit = any_hit ? q->any_limit : s->box_limit;
         const uint32_t cur = w->cur;
         const size_t node_off = (size_t)cur * sizeof(nodes[0]);
         const struct bvh8_node *const n = &nodes[cur];
@@ -202,7 +241,7 @@ static inline int pair8_step(const struct bvh4 *wide, struct pair8_slot *q,
                         _mm256_mul_ps(tfz, scale),
                         _mm256_min_ps(_mm256_mul_ps(tfy, scale),
                                       _mm256_min_ps(_mm256_mul_ps(tfx, scale),
-                                                    _mm256_set1_ps(box_limit))));
+                                                    _mm256_set1_ps(node_limit))));
                     wide8_push_any(n, mask, hit, t0, t1, q->st_child, q->st_count, &sp, &next,
                                    &next_count);
                 } else if (any_hit) {
@@ -214,12 +253,8 @@ static inline int pair8_step(const struct bvh4 *wide, struct pair8_slot *q,
                                q->st_t, &sp, &next, &next_count);
                 }
                 w->sp = sp;
-                if (prefetch_top) {
-                    const uint32_t top = q->st_child[sp - 1];
-                    const char *a = q->st_count[sp - 1] ? (const char *)&packets[top]
-                                                        : (const char *)&nodes[top];
-                    WIDE_PREFETCH_LINES(a, 3);
-                }
+                if (prefetch_top)
+                    pair8_prefetch_top(q, sp, nodes, packets);
             }
             w->cur = next;
             w->cur_count = next_count;
@@ -238,19 +273,7 @@ static inline int pair8_step(const struct bvh4 *wide, struct pair8_slot *q,
             return 1;
         }
         /* Pop (walk_wide8_ray's pop after a node: no prefetch). */
-        for (;;) {
-            if (sp == 0) {
-                *answer = any_hit ? 0 : s->found;
-                return 0;
-            }
-            sp--;
-            if (any_hit || q->st_t[sp] <= node_limit)
-                break;
-        }
-        w->sp = sp;
-        w->cur = q->st_child[sp];
-        w->cur_count = q->st_count[sp];
-        return 1;
+        return pair8_pop(q, w, sp, node_limit, any_hit, answer);
     }
     /* The leaf (walk_wide8_ray's, WIDE8_RAY_LEAF8 1). */
     {
@@ -285,28 +308,11 @@ static inline int pair8_step(const struct bvh4 *wide, struct pair8_slot *q,
             return 0;
         }
     }
-    {
-        const float node_limit = any_hit ? q->any_limit : s->box_limit;
-        for (;;) {
-            if (sp == 0) {
-                *answer = any_hit ? 0 : s->found;
-                return 0;
-            }
-            sp--;
-            if (any_hit || q->st_t[sp] <= node_limit)
-                break;
-        }
-        w->sp = sp;
-        w->cur = q->st_child[sp];
-        w->cur_count = q->st_count[sp];
-        /* walk_wide8_ray's WIDE8_PREFETCH_NEXT_TOP. */
-        if (prefetch_top && sp) {
-            const uint32_t top = q->st_child[sp - 1];
-            const char *a = q->st_count[sp - 1] ? (const char *)&packets[top]
-                                                : (const char *)&nodes[top];
-            WIDE_PREFETCH_LINES(a, 3);
-        }
-    }
+    if (!pair8_pop(q, w, sp, any_hit ? q->any_limit : s->box_limit, any_hit, answer))
+        return 0;
+    /* walk_wide8_ray's WIDE8_PREFETCH_NEXT_TOP. */
+    if (prefetch_top && w->sp)
+        pair8_prefetch_top(q, w->sp, nodes, packets);
     return 1;
 }
 
