@@ -1694,8 +1694,12 @@ static void query_task(void *arg, int worker)
     /* Packets walk with the hit filter of a frame with clip planes, ray
      * by ray as single rays (trace/packet_scene.h). */
     const int packets = sh->scene.kernels && sh->scene.kernels->closest_packet;
-    /* stream=off (or a table without the stream) keeps the loop below. */
-    const int stream = sh->scene.kernels && sh->scene.kernels->stream_counted;
+    /* stream=off (or a table without the stream), and a scene where the
+     * batch walk would go ray by ray anyway (stream=auto on small
+     * objects, a top level of several leaves), keep the loop below.
+     * Whether the scene qualifies is asked once a ray comes that reaches
+     * its leaf at once (trace_scene_stream_ready): -1 until then. */
+    int stream = sh->scene.kernels && sh->scene.kernels->stream_counted ? -1 : 0;
     for (;;) {
         uint32_t item = rt_atomic_fetch_add_relaxed(&sh->next_item, 1);
         size_t first = (size_t)item * RENDER_QUERY_CHUNK;
@@ -1704,7 +1708,10 @@ static void query_task(void *arg, int worker)
         size_t last = first + RENDER_QUERY_CHUNK;
         if (last > (size_t)sh->count)
             last = (size_t)sh->count;
-        if (stream) {
+        for (size_t i = first; stream < 0 && i < last; i++)
+            if (trace_scene_stream_ray(&sh->rays[i].org[0]))
+                stream = trace_scene_stream_ready(&sh->scene, sh->occluded != NULL);
+        if (stream > 0) {
             query_chunk_stream(sh, first, last, packets, counters);
             continue;
         }

@@ -172,17 +172,10 @@ static void batch(const struct trace_scene *scene, const float *rays, size_t str
                   struct trace_scene_counters *counters)
 {
     struct stream_object obj[STREAM_INSTANCES];
-    const uint32_t objects = stream_objects(scene, any_hit, obj);
-    if (!objects) {
-        for (uint32_t i = 0; i < count; i++) {
-            const float *r = rays + (size_t)i * stride;
-            got[i] = (unsigned char)(any_hit ? trace_scene_any(scene, r, r + 4, r[3], r[7],
-                                                               counters)
-                                             : trace_scene_closest(scene, r, r + 4, r[3], r[7],
-                                                                   &hits[i], counters));
-        }
-        return;
-    }
+    /* The scene's qualification, made when the first ray that reaches
+     * the leaf at once comes (trace_scene_stream_ready says why). */
+    int known = 0;
+    uint32_t objects = 0;
     struct stream_scratch sc;
     for (uint32_t base = 0; base < count; base += STREAM_BATCH) {
         const uint32_t n = count - base < STREAM_BATCH ? count - base : STREAM_BATCH;
@@ -191,22 +184,29 @@ static void batch(const struct trace_scene *scene, const float *rays, size_t str
             const uint32_t i = base + j;
             const float *r = rays + (size_t)i * stride;
             const unsigned plain = trace_scene_plain_class(r, r + 4);
-            if (!(r[3] < r[7]) || !(plain & TRACE_IDENTITY_EXACT)) {
-                /* The single walk's other paths (scene_stream.h). */
-                got[i] = (unsigned char)(any_hit ? trace_scene_any(scene, r, r + 4, r[3], r[7],
-                                                                   counters)
-                                                 : trace_scene_closest(scene, r, r + 4, r[3],
-                                                                       r[7], &hits[i], counters));
-                continue;
+            if (r[3] < r[7] && (plain & TRACE_IDENTITY_EXACT)) {
+                if (!known) {
+                    objects = stream_objects(scene, any_hit, obj);
+                    known = 1;
+                }
+                if (objects) {
+                    counters->rays++;
+                    sc.ray[m] = i;
+                    sc.plain[m] = plain;
+                    sc.best[m] = r[7];
+                    sc.found[m] = 0;
+                    m++;
+                    continue;
+                }
             }
-            counters->rays++;
-            sc.ray[m] = i;
-            sc.plain[m] = plain;
-            sc.best[m] = r[7];
-            sc.found[m] = 0;
-            m++;
+            /* The single walk: the scene does not qualify, or the ray
+             * takes its other paths (scene_stream.h). */
+            got[i] = (unsigned char)(any_hit ? trace_scene_any(scene, r, r + 4, r[3], r[7],
+                                                               counters)
+                                             : trace_scene_closest(scene, r, r + 4, r[3], r[7],
+                                                                   &hits[i], counters));
         }
-        for (uint32_t k = 0; k < objects; k++)
+        for (uint32_t k = 0; k < objects && m; k++)
             stream_instance(scene, &obj[k], rays, stride, m, any_hit, &sc, counters);
         for (uint32_t e = 0; e < m; e++) {
             got[sc.ray[e]] = sc.found[e];
@@ -214,6 +214,12 @@ static void batch(const struct trace_scene *scene, const float *rays, size_t str
                 hits[sc.ray[e]] = sc.hit[e];
         }
     }
+}
+
+int trace_scene_stream_ready(const struct trace_scene *scene, int any_hit)
+{
+    struct stream_object obj[STREAM_INSTANCES];
+    return stream_objects(scene, any_hit, obj) != 0;
 }
 
 void trace_scene_closest_batch(const struct trace_scene *scene, const float *rays, size_t stride,

@@ -43,4 +43,24 @@ void trace_scene_any_batch(const struct trace_scene *scene, const float *rays, s
                            uint32_t count, unsigned char *occluded,
                            struct trace_scene_counters *counters);
 
+/* 1 when the ray at r (RTray's layout) is one the batch walk may take
+ * through the stream: tmin < tmax and trace_scene_plain_class's exact
+ * class, the rays that the single-ray walk hands to a one-leaf top
+ * level's instances at once, acquiring each (scene_traverse.c, walk). */
+static inline int trace_scene_stream_ray(const float *r)
+{
+    return r[3] < r[7] && (trace_scene_plain_class(r, r + 4) & TRACE_IDENTITY_EXACT) != 0;
+}
+
+/* 1 when the scene qualifies (above) for closest-hit (any_hit 0) or
+ * any-hit rays, so that the batch functions would take the stream; 0
+ * when they would go ray by ray, which a caller may then do itself.
+ * Acquires the leaf's objects (scene->acquire), which may build them:
+ * call it once a trace_scene_stream_ray ray has come, which acquires
+ * them too in the single-ray walk (an any-hit ray there stops at its
+ * first hit, before the leaf's later instances: those are built here
+ * where that walk might not have built them yet; the batch functions
+ * do the same). */
+int trace_scene_stream_ready(const struct trace_scene *scene, int any_hit);
+
 #endif
