@@ -34,10 +34,13 @@
  * less that tail weighs; 256 keeps the scratch below (about 23 KB) and
  * the stream's slots (eight, about 6 KB each: traverse_pair8.h) within
  * 72 KB of the caller's stack.  The library's callers are the query
- * workers (render.c: the pool's threads, created with the default
- * attributes, whose stacks are the process's default thread stack size,
- * 8 MB under glibc's usual limit and never below 2 MB there; 128 KB under
- * musl) and the calling thread. */
+ * workers (render.c): the pool's threads (base/pool.c creates them with
+ * the default attributes: under glibc a stack of the process's stack
+ * limit, RLIMIT_STACK, usually 8 MB, or 2 MB where it is unlimited;
+ * 128 KB under musl, where this and the walk's frames still fit) and
+ * the application's calling thread, whose stack the application sizes
+ * (a frame's tiles already take the single walks' stacks, 5-6 KB each,
+ * and the shading's buffers on the same threads). */
 enum { STREAM_BATCH = 256 };
 /* The instances of the one leaf taken through the stream; a larger leaf
  * goes ray by ray (the top-level builder's leaves hold a few). */
