@@ -1643,6 +1643,7 @@ static int query_packet(struct render_pass *sh, size_t i, struct trace_scene_cou
  * here, about 5 KB, beside the batch walk's 72 KB, on a pool thread's
  * stack or the caller's (scene_stream.c says why that is enough). */
 enum { QUERY_STREAM_RUN = 256 };
+typedef char rtray_is_eight_floats[sizeof(RTray) == 8 * sizeof(float) ? 1 : -1];
 
 static void query_stream(struct render_pass *sh, size_t first, size_t last,
                          struct trace_scene_counters *counters)
@@ -1653,7 +1654,9 @@ static void query_stream(struct render_pass *sh, size_t first, size_t last,
     while (first < last) {
         const uint32_t n =
             (uint32_t)(last - first < QUERY_STREAM_RUN ? last - first : QUERY_STREAM_RUN);
-        const float *rays = &sh->rays[first].org[0];
+        /* RTray is eight floats (org, tmin, dir, tmax): the batch walk's
+         * layout, read through the struct's address. */
+        const float *rays = (const float *)(const void *)&sh->rays[first];
         if (sh->occluded) {
             trace_scene_any_batch(&sh->scene, rays, stride, n, got, counters);
             for (uint32_t j = 0; j < n; j++)
@@ -1709,7 +1712,7 @@ static void query_task(void *arg, int worker)
         if (last > (size_t)sh->count)
             last = (size_t)sh->count;
         for (size_t i = first; stream < 0 && i < last; i++)
-            if (trace_scene_stream_ray(&sh->rays[i].org[0]))
+            if (trace_scene_stream_ray((const float *)(const void *)&sh->rays[i]))
                 stream = trace_scene_stream_ready(&sh->scene, sh->occluded != NULL);
         if (stream > 0) {
             query_chunk_stream(sh, first, last, packets, counters);
