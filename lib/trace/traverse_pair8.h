@@ -89,10 +89,15 @@ struct pair8_walk {
     uint32_t cur;
     uint32_t cur_count;
     uint32_t sp;
-    /* The counted streams' (stats 1) node and triangle tests of the
-     * slot's ray so far, as walk1_counted counts them (traverse_wide8_ray.h:
-     * eight a node test, a leaf's triangles at its call); unused, and
-     * never stored, by the streams without counters. */
+};
+
+/* The counted streams' (stats 1) node and triangle tests of a slot's ray
+ * so far, as walk1_counted counts them (traverse_wide8_ray.h: eight a
+ * node test, a leaf's triangles at its call).  Apart from struct
+ * pair8_walk, in an array of their own that the streams without
+ * counters never touch: with the counts inside it those streams' code
+ * changed (GCC allocated the closest-hit copies' registers otherwise). */
+struct pair8_counts {
     uint32_t node_tests;
     uint32_t tri_tests;
 };
@@ -193,7 +198,7 @@ __attribute__((always_inline))
 #endif
 static inline int pair8_step(const struct bvh4 *wide, struct pair8_slot *q,
                              struct pair8_walk *w, int any_hit, int leave_early, int stats,
-                             int *answer)
+                             struct pair8_counts *c, int *answer)
 {
     struct wide_state *const s = &q->rs.s;
     const struct bvh8_node *const nodes = wide->nodes8;
@@ -212,7 +217,7 @@ static inline int pair8_step(const struct bvh4 *wide, struct pair8_slot *q,
         const __m256 inv_x = q->inv_x, inv_y = q->inv_y, inv_z = q->inv_z;
         const __m256i tmin8 = q->tmin8;
         if (stats)
-            w->node_tests += 8;
+            c->node_tests += 8;
         /* walk_wide8_ray's node test, operation for operation. */
         const __m256 tnx =
             _mm256_mul_ps(_mm256_add_ps(neg_org_x, wide8_bound(q->row_nx, node_off)), inv_x);
@@ -292,7 +297,7 @@ static inline int pair8_step(const struct bvh4 *wide, struct pair8_slot *q,
         const struct tri4_packet *p = &packets[w->cur];
         const int first_leaf = !any_hit && !q->r4_ready;
         if (stats)
-            w->tri_tests += cur_count;
+            c->tri_tests += cur_count;
         if (first_leaf) {
             tri4_ray_init_vec(&s->r4, &q->ray);
             tri4_ray_init_double(wide_ray_doubles(s), &q->ray);
@@ -342,7 +347,8 @@ static inline int pair8_refill(const struct bvh4 *wide, struct pair8_slot *q,
                                struct pair8_walk *w, uint32_t *next, const float *rays,
                                size_t stride, uint32_t count, struct trace_hit *hits,
                                unsigned char *got, trace_walk1_fn walk1, int any_hit, int stats,
-                               struct trace_counters *counters, uint32_t *ray_nodes)
+                               struct pair8_counts *pc, struct trace_counters *counters,
+                               uint32_t *ray_nodes)
 {
     while (*next < count) {
         const uint32_t i = (*next)++;
@@ -350,8 +356,8 @@ static inline int pair8_refill(const struct bvh4 *wide, struct pair8_slot *q,
         if (r[3] >= 0.0f) {
             pair8_start(wide, q, w, r, i, any_hit ? NULL : &hits[i], any_hit);
             if (stats) {
-                w->node_tests = 0;
-                w->tri_tests = 0;
+                pc->node_tests = 0;
+                pc->tri_tests = 0;
             }
             return 1;
         }
@@ -382,20 +388,20 @@ static inline int pair8_turn(const struct bvh4 *wide, struct pair8_slot *q,
                              struct pair8_walk *w, uint32_t *next,
                              const float *rays, size_t stride, uint32_t count,
                              struct trace_hit *hits, unsigned char *got, trace_walk1_fn walk1,
-                             int any_hit, int leave_early, int stats,
+                             int any_hit, int leave_early, int stats, struct pair8_counts *pc,
                              struct trace_counters *counters, uint32_t *ray_nodes)
 {
     int answer;
-    if (pair8_step(wide, q, w, any_hit, leave_early, stats, &answer))
+    if (pair8_step(wide, q, w, any_hit, leave_early, stats, pc, &answer))
         return 1;
     got[q->index] = (unsigned char)answer;
     if (stats) {
-        counters->node_tests += w->node_tests;
-        counters->triangle_tests += w->tri_tests;
-        ray_nodes[q->index] = w->node_tests;
+        counters->node_tests += pc->node_tests;
+        counters->triangle_tests += pc->tri_tests;
+        ray_nodes[q->index] = pc->node_tests;
     }
     return pair8_refill(wide, q, w, next, rays, stride, count, hits, got, walk1, any_hit, stats,
-                        counters, ray_nodes);
+                        pc, counters, ray_nodes);
 }
 
 /* The whole stream, the slots stepped in turn; when the stream runs dry
@@ -412,24 +418,28 @@ static inline void pair8_stream(const struct bvh4 *wide, const float *rays, size
 {
     struct pair8_slot slot[PAIR8_SLOTS];
     struct pair8_walk walk[PAIR8_SLOTS];
+    /* Only the counted streams use it (stats a constant 1). */
+    struct pair8_counts counts[PAIR8_SLOTS];
     uint32_t next = 0;
     int live[PAIR8_SLOTS];
     int all = 1;
     for (int k = 0; k < PAIR8_SLOTS; k++) {
         live[k] = pair8_refill(wide, &slot[k], &walk[k], &next, rays, stride, count, hits, got,
-                               walk1, any_hit, stats, counters, ray_nodes);
+                               walk1, any_hit, stats, &counts[k], counters, ray_nodes);
         all &= live[k];
     }
     while (all)
         for (int k = 0; k < PAIR8_SLOTS; k++) {
             live[k] = pair8_turn(wide, &slot[k], &walk[k], &next, rays, stride, count, hits,
-                                 got, walk1, any_hit, leave_early, stats, counters, ray_nodes);
+                                 got, walk1, any_hit, leave_early, stats, &counts[k], counters,
+                                 ray_nodes);
             all &= live[k];
         }
     for (int k = 0; k < PAIR8_SLOTS; k++)
         while (live[k])
             live[k] = pair8_turn(wide, &slot[k], &walk[k], &next, rays, stride, count, hits,
-                                 got, walk1, any_hit, leave_early, stats, counters, ray_nodes);
+                                 got, walk1, any_hit, leave_early, stats, &counts[k], counters,
+                                 ray_nodes);
 }
 #undef PAIR8_RAY
 
