@@ -122,11 +122,12 @@
  * loads miss the caches: on a Zen 4 core with a 32 MB L3 (ours/Embree,
  * random rays, walk1 -> stream) bumpy's 60 MB layout went 0.97 -> 1.65
  * while the soup's 6.5 MB stayed level (0.93 -> 0.94) and the kitchen's
- * and gears' smaller ones lost (0.95 -> 0.79, 0.99 -> 0.78); camera
- * and shadow rays lost on all four (docs/performance-log.md, round 60
- * and round 61, zq1).  16 MB: above the largest layout measured where it
- * does not pay, half a current server L3, so that a layout above it
- * rarely stays cached.  A heuristic only: the answers do not depend on
+ * 7.0 MB and gears' 62 KB lost (0.95 -> 0.79, 0.99 -> 0.78); camera and
+ * shadow rays lost on all four (docs/performance-log.md, round 60 and
+ * round 61, zq1).  Size alone cannot tell the soup (a volume) from the
+ * kitchen (surfaces).  16 MB: above the largest layout measured where it
+ * does not pay, half this machine's L3, so that a layout above it rarely
+ * stays cached.  A heuristic only: the answers do not depend on
  * it. */
 #define BVH_WIDE_STREAM_BYTES ((uint64_t)16 << 20)
 
