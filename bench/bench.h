@@ -291,6 +291,9 @@ int bench_select_isa(const char *name);
  * dynamic and packet API tables) run the table the kernel sections run.
  * NULL where rtCreateContext gives NULL (or config is too long). */
 RTcontext bench_create_context(const char *config);
+/* --config KEY=VALUE: added after config (and isa=) by
+ * bench_create_context; -1 when too long or without '='. */
+int bench_select_config(const char *item);
 /* "bvh8", "bvh4" (default: the table's widest walk, wide_width) or
  * "binary" (--layout); -1 for another name. */
 int bench_select_layout(const char *name);

@@ -103,12 +103,24 @@ int bench_select_isa(const char *name)
     return 0;
 }
 
+/* --config's item (bench_select_config), "" without one. */
+static char chosen_config[64];
+
+int bench_select_config(const char *item)
+{
+    if (!strchr(item, '=') || strlen(item) >= sizeof(chosen_config))
+        return -1;
+    strcpy(chosen_config, item);
+    return 0;
+}
+
 RTcontext bench_create_context(const char *config)
 {
-    if (!chosen_isa)
+    if (!chosen_isa && !chosen_config[0])
         return rtCreateContext(config);
     char full[256];
-    const int n = snprintf(full, sizeof(full), "%s isa=%s", config, chosen_isa);
+    const int n = snprintf(full, sizeof(full), "%s%s%s %s", config, chosen_isa ? " isa=" : "",
+                           chosen_isa ? chosen_isa : "", chosen_config);
     if (n < 0 || (size_t)n >= sizeof(full))
         return NULL;
     return rtCreateContext(full);

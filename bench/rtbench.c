@@ -118,6 +118,8 @@ static void usage(FILE *f)
             "             the stream entry (several rays in flight; walk1 where the\n"
             "             table has none); embree: Embree's through rtcIntersect1M /\n"
             "             rtcOccluded1M (incoherent); or ours,embree\n"
+            "  --config KEY=VALUE  added to every API context's configuration\n"
+            "             (rtCreateContext), e.g. stream=off\n"
             "  --collapse C  the wide layout's collapse: greedy (the default) or optimal\n"
             "             (Ylitie, Karras and Laine 2017, an object's\n"
             "             rtHint(RT_ACCELERATION_HINT, RT_NICEST)): rtbench's own\n"
@@ -235,6 +237,12 @@ int main(int argc, char **argv)
         } else if (!strcmp(a, "--stream") && value) {
             if (bench_select_stream(value)) {
                 fprintf(stderr, "rtbench: --stream takes ours, embree or ours,embree\n");
+                return 1;
+            }
+            i++;
+        } else if (!strcmp(a, "--config") && value) {
+            if (bench_select_config(value)) {
+                fprintf(stderr, "rtbench: --config takes KEY=VALUE (at most 63 characters)\n");
                 return 1;
             }
             i++;

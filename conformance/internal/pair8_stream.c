@@ -18,6 +18,13 @@
  * streams of 1, 2, 3, 7, 64, 1023 and 1024 rays; some rays with a finite
  * t_max, tmin 0.5, tmin -0, and a negative tmin (the stream hands such a
  * ray to walk1 itself).
+ *
+ * The counted streams (kernels.h's stream_counted, for the two-level
+ * batch walk, trace/scene_stream.h) likewise, and each ray's node tests
+ * and the stream's node and triangle totals against the AVX2 table's
+ * walk1_counted ray by ray (the stream is the AVX2 walk in every table
+ * that has it): a counted stream that lost a step's count, counted a ray
+ * twice or stored a count at another ray's place fails.
  */
 #include <math.h>
 #include <stdint.h>
@@ -127,6 +134,66 @@ static const uint32_t chunk_sizes[] = {1, 2, 3, 7, 64, 1023, 1024};
  * through chunk_sizes. */
 static void compare_stream(const char *name, const char *tname, const struct bvh4 *wide,
                            trace_walk1_fn walk1, trace_stream1_fn stream, int any_hit,
+                           const struct stream_ray *rays, uint32_t count);
+
+/* The counted stream against walk1_counted (`counted`, the AVX2 table's
+ * walk for the layout) on every ray: answers, each ray's node tests, and
+ * the totals. */
+static void compare_counted(const char *name, const char *tname, const struct bvh4 *wide,
+                            trace_walk1_fn counted, trace_stream1_counted_fn stream, int any_hit,
+                            const struct stream_ray *rays, uint32_t count)
+{
+    struct trace_hit *hits = tg_alloc(sizeof(*hits) * 1024);
+    uint32_t *nodes = tg_alloc(sizeof(*nodes) * 1024);
+    unsigned char got[1024];
+    uint32_t differ = 0;
+    struct trace_counters total = {0, 0}, want_total = {0, 0};
+    uint32_t s = 0;
+    for (uint32_t b = 0; b < count; s++) {
+        uint32_t n = chunk_sizes[s % (sizeof(chunk_sizes) / sizeof(chunk_sizes[0]))];
+        if (n > count - b)
+            n = count - b;
+        memset(hits, 0xA5, sizeof(*hits) * n);
+        memset(nodes, 0xA5, sizeof(*nodes) * n);
+        memset(got, 0xA5, n);
+        stream(wide, rays[b].v, 8, n, any_hit ? NULL : hits, got, &total, nodes);
+        for (uint32_t i = 0; i < n; i++) {
+            const float *v = rays[b + i].v;
+            struct trace_hit h;
+            memset(&h, 0, sizeof(h));
+            struct trace_counters c = {0, 0};
+            const int want = counted(wide, v, v + 4, v[3], v[7], any_hit ? NULL : &h, &c);
+            want_total.node_tests += c.node_tests;
+            want_total.triangle_tests += c.triangle_tests;
+            int bad = got[i] != (unsigned char)want || nodes[i] != c.node_tests;
+            if (!bad && want && !any_hit)
+                bad = memcmp(&h, &hits[i], sizeof(h)) != 0;
+            if (bad) {
+                if (differ < 5)
+                    printf("    %s %s %s counted ray %u (stream of %u): got %d/%d nodes %u/%u\n",
+                           name, tname, any_hit ? "any" : "closest", b + i, n, got[i], want,
+                           nodes[i], (unsigned)c.node_tests);
+                differ++;
+            }
+        }
+        b += n;
+    }
+    printf("  %s %s %s counted: %u rays, %u differ, node tests %llu/%llu, triangle tests "
+           "%llu/%llu\n",
+           name, tname, any_hit ? "any" : "closest", count, differ,
+           (unsigned long long)total.node_tests, (unsigned long long)want_total.node_tests,
+           (unsigned long long)total.triangle_tests,
+           (unsigned long long)want_total.triangle_tests);
+    failures += !CHECKF(differ == 0 && total.node_tests == want_total.node_tests &&
+                            total.triangle_tests == want_total.triangle_tests,
+                        "%s %s: the counted stream differs from walk1_counted (%u rays)", name,
+                        tname, differ);
+    free(nodes);
+    free(hits);
+}
+
+static void compare_stream(const char *name, const char *tname, const struct bvh4 *wide,
+                           trace_walk1_fn walk1, trace_stream1_fn stream, int any_hit,
                            const struct stream_ray *rays, uint32_t count)
 {
     struct trace_hit *hits = tg_alloc(sizeof(*hits) * 1024);
@@ -207,6 +274,17 @@ static void compare_mesh(const char *name, const struct tg_mesh *m, uint32_t n, 
             for (int any_hit = 0; any_hit < 2; any_hit++)
                 compare_stream(name, tname, &wp, k->walk1(&wp, any_hit),
                                k->stream_pair(&wp, any_hit), any_hit, rays, count);
+            const struct trace_kernels *avx2 = trace_kernels_get(TRACE_ISA_AVX2);
+            failures += !CHECKF(k->stream_counted && avx2 && avx2->walk1_counted,
+                                "%s: stream_pair without stream_counted", k->name);
+            if (!k->stream_counted || !avx2 || !avx2->walk1_counted)
+                continue;
+            for (int any_hit = 0; any_hit < 2; any_hit++)
+                compare_counted(name, tname, &wp,
+                                avx2->walk1_counted[2 * any_hit +
+                                                    ((any_hit ? wp.any_longest
+                                                              : wp.prefetch_top) != 0)],
+                                k->stream_counted(&wp, any_hit), any_hit, rays, count);
         }
     }
     if (!tables)

@@ -1899,6 +1899,11 @@ static int collapse_wide(struct bvh4 *out, const struct bvh *bvh,
     out->prefetch_top =
         bvh4_node_bytes(out) + bvh4_leaf_bytes(out) >= BVH_WIDE_PREFETCH_BYTES ? 1u : 0u;
     out->leaf_extent = width == 8 && tri && packets ? leaf_extent_mean(out) : 0.0f;
+    out->stream_pays = width == 8 && tri && packets && bvh4_node_bytes(out) +
+                                                           bvh4_leaf_bytes(out) >=
+                                                       BVH_WIDE_STREAM_BYTES
+                           ? 1u
+                           : 0u;
     out->any_longest = width == 8 && tri && packets && accel_wide_child_crossings(out) >=
                                                            BVH_WIDE_ANY_LONGEST_CROSSINGS
                            ? 1u

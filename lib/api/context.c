@@ -92,7 +92,7 @@ static int parse_configuration(struct rt_context *ctx, const char *config, char 
                                size_t reason_size)
 {
     static const char *const keys[] = {"threads", "toplevel", "build_threads", "bins",
-                                       "builder", "isa", "packets", "flatten"};
+                                       "builder", "isa", "packets", "flatten", "stream"};
     enum { KEY_COUNT = sizeof keys / sizeof keys[0] };
     int seen[KEY_COUNT] = {0};
     const char *p = config;
@@ -182,6 +182,19 @@ static int parse_configuration(struct rt_context *ctx, const char *config, char 
                 ctx->flatten_mode = SCENE_FLATTEN_ON;
             else if (key_is(value, value_len, "off"))
                 ctx->flatten_mode = SCENE_FLATTEN_OFF;
+            else
+                bad = 1, expect = "auto, on or off";
+            break;
+        case 8:
+            /* The stream walk for a query's incoherent rays
+             * (trace/scene_stream.h): where the layouts say it pays,
+             * everywhere it can, or never. */
+            if (key_is(value, value_len, "auto"))
+                ctx->stream_mode = RT_STREAM_AUTO;
+            else if (key_is(value, value_len, "on"))
+                ctx->stream_mode = RT_STREAM_ON;
+            else if (key_is(value, value_len, "off"))
+                ctx->stream_mode = RT_STREAM_OFF;
             else
                 bad = 1, expect = "auto, on or off";
             break;
@@ -303,17 +316,27 @@ RTcontext rtCreateContextWithReason(const char *configuration, RTsizei bufSize, 
         ctx->kernel_table.closest_packet_arrays = NULL;
         ctx->kernel_table.any_packet_arrays = NULL;
     }
+    /* stream=off: likewise without the stream walks; "off" is reported
+     * for a table that has none (scalar, sse4). */
+    if (ctx->stream_mode == RT_STREAM_OFF || !ctx->kernel_table.stream_counted) {
+        ctx->stream_mode = RT_STREAM_OFF;
+        ctx->kernel_table.stream_pair = NULL;
+        ctx->kernel_table.stream_counted = NULL;
+    }
     ctx->kernels = &ctx->kernel_table;
     snprintf(ctx->configuration, sizeof(ctx->configuration),
              "threads=%d build_threads=%d bins=%d builder=%s toplevel=%s isa=%s packets=%s "
-             "flatten=%s",
+             "flatten=%s stream=%s",
              ctx->threads, ctx->build_threads, ctx->build_params.bins,
              ctx->build_params.builder == BVH_BUILDER_SWEEP_SAH ? "sweep" : "binned",
              ctx->toplevel_cellsplit ? "cellsplit" : "binned", ctx->kernels->name,
              ctx->kernels->closest_packet ? "on" : "off",
              ctx->flatten_mode == SCENE_FLATTEN_ON    ? "on"
              : ctx->flatten_mode == SCENE_FLATTEN_OFF ? "off"
-                                                      : "auto");
+                                                      : "auto",
+             ctx->stream_mode == RT_STREAM_ON    ? "on"
+             : ctx->stream_mode == RT_STREAM_OFF ? "off"
+                                                 : "auto");
     const char *debug = getenv("TRACELIST_DEBUG");
     ctx->debug_print = debug && *debug && strcmp(debug, "0") != 0;
 

@@ -129,6 +129,9 @@ struct list_saved_state {
     int color_material_current; /* rt_context's (n-light) */
 };
 
+/* stream= values (rt_context.stream_mode). */
+enum { RT_STREAM_AUTO, RT_STREAM_ON, RT_STREAM_OFF };
+
 struct rt_context {
     int bound; /* current in some thread */
 
@@ -145,6 +148,9 @@ struct rt_context {
     /* packets= (docs/context.md): kernels points here after creation, a
      * copy of the chosen table whose packet walks are NULL when off. */
     int packets_off;
+    /* stream= (docs/context.md): RT_STREAM_AUTO, _ON or _OFF; off
+     * leaves the copy's stream_pair and stream_counted NULL. */
+    int stream_mode;
     int flatten_mode; /* flatten= (enum scene_flatten_mode, scene/flatten.h) */
     struct trace_kernels kernel_table;
 

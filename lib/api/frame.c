@@ -102,6 +102,7 @@ void rt_render_job(struct rt_context *ctx, struct render_job *job)
     job->pool = rt_context_pool(ctx);
     job->threads = rt_pool_threads(job->pool);
     job->kernels = ctx->kernels;
+    job->stream_always = ctx->stream_mode == RT_STREAM_ON;
     job->overlay = NULL;
 }
 

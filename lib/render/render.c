@@ -21,6 +21,7 @@
 #include "render/surface.h"
 #include "trace/kernels.h"
 #include "trace/packet_scene.h"
+#include "trace/scene_stream.h"
 
 /* Primary rays pair their double arithmetic in SSE2 lanes (near and far
  * point, two neighbours): IEEE operations lane by lane, the same floats as
@@ -168,6 +169,7 @@ static int shared_init(struct render_pass *sh, const struct render_job *job)
     sh->scene.acquire_flat = acquire_flat;
     sh->scene.kernels = job->kernels;
     sh->scene.top_wide = &job->frame->top_wide;
+    sh->scene.stream_always = job->stream_always;
     sh->scene.user = sh;
     /* A table without a wide walk walks every object's binary tree. */
     sh->reads_binary = !job->kernels || !job->kernels->closest4;
@@ -1638,6 +1640,60 @@ static int query_packet(struct render_pass *sh, size_t i, struct trace_scene_cou
     return 1;
 }
 
+/* The rays first .. last - 1 of a query that do not go as packets,
+ * through the batch walk (trace/scene_stream.h: the single rays'
+ * answers and counts, through the stream walk where the scene
+ * qualifies), in pieces of QUERY_STREAM_RUN rays: the answers' scratch
+ * here, about 5 KB, beside the batch walk's 72 KB, on a pool thread's
+ * stack or the caller's (scene_stream.c says why that is enough). */
+enum { QUERY_STREAM_RUN = 256 };
+typedef char rtray_is_eight_floats[sizeof(RTray) == 8 * sizeof(float) ? 1 : -1];
+
+static void query_stream(struct render_pass *sh, size_t first, size_t last,
+                         struct trace_scene_counters *counters)
+{
+    struct trace_scene_hit h[QUERY_STREAM_RUN];
+    unsigned char got[QUERY_STREAM_RUN];
+    const size_t stride = sizeof(RTray) / sizeof(float);
+    while (first < last) {
+        const uint32_t n =
+            (uint32_t)(last - first < QUERY_STREAM_RUN ? last - first : QUERY_STREAM_RUN);
+        /* RTray is eight floats (org, tmin, dir, tmax): the batch walk's
+         * layout, read through the struct's address. */
+        const float *rays = (const float *)(const void *)&sh->rays[first];
+        if (sh->occluded) {
+            trace_scene_any_batch(&sh->scene, rays, stride, n, got, counters);
+            for (uint32_t j = 0; j < n; j++)
+                sh->occluded[first + j] = (RTboolean)got[j];
+        } else {
+            trace_scene_closest_batch(&sh->scene, rays, stride, n, h, got, counters);
+            for (uint32_t j = 0; j < n; j++) {
+                if (got[j])
+                    store_hit(sh, &h[j], &sh->hits[first + j]);
+                else
+                    miss(&sh->hits[first + j]);
+            }
+        }
+        first += n;
+    }
+}
+
+/* A chunk's rays with the stream walk on (query_stream): coherent groups
+ * as packets, as query_task's loop sends them, the runs of rays between
+ * them through the batch walk. */
+static void query_chunk_stream(struct render_pass *sh, size_t first, size_t last, int packets,
+                               struct trace_scene_counters *counters)
+{
+    size_t run = first;
+    for (size_t i = first; i + TRACE_PACKET <= last; i += TRACE_PACKET) {
+        if (packets && query_packet(sh, i, counters)) {
+            query_stream(sh, run, i, counters);
+            run = i + TRACE_PACKET;
+        }
+    }
+    query_stream(sh, run, last, counters);
+}
+
 static void query_task(void *arg, int worker)
 {
     struct render_pass *sh = arg;
@@ -1645,6 +1701,12 @@ static void query_task(void *arg, int worker)
     /* Packets walk with the hit filter of a frame with clip planes, ray
      * by ray as single rays (trace/packet_scene.h). */
     const int packets = sh->scene.kernels && sh->scene.kernels->closest_packet;
+    /* stream=off (or a table without the stream), and a scene where the
+     * batch walk would go ray by ray anyway (stream=auto on small
+     * objects, a top level of several leaves), keep the loop below.
+     * Whether the scene qualifies is asked once a ray comes that reaches
+     * its leaf at once (trace_scene_stream_ready): -1 until then. */
+    int stream = sh->scene.kernels && sh->scene.kernels->stream_counted ? -1 : 0;
     for (;;) {
         uint32_t item = rt_atomic_fetch_add_relaxed(&sh->next_item, 1);
         size_t first = (size_t)item * RENDER_QUERY_CHUNK;
@@ -1653,6 +1715,13 @@ static void query_task(void *arg, int worker)
         size_t last = first + RENDER_QUERY_CHUNK;
         if (last > (size_t)sh->count)
             last = (size_t)sh->count;
+        for (size_t i = first; stream < 0 && i < last; i++)
+            if (trace_scene_stream_ray((const float *)(const void *)&sh->rays[i]))
+                stream = trace_scene_stream_ready(&sh->scene, sh->occluded != NULL);
+        if (stream > 0) {
+            query_chunk_stream(sh, first, last, packets, counters);
+            continue;
+        }
         for (size_t i = first; i < last; i++) {
             const RTray *r = &sh->rays[i];
             /* Coherent groups of TRACE_PACKET rays go as a packet. */

@@ -109,6 +109,10 @@ struct render_job {
     struct rt_pool *pool;
     int threads;
     const struct trace_kernels *kernels; /* the context's ISA table; NULL: scalar */
+    /* stream=on (docs/context.md): a query's incoherent rays go through
+     * the stream walk on every qualifying scene, not only where the
+     * layouts say it pays (trace_scene.stream_always). */
+    int stream_always;
     /* The frame's bitmaps (render/overlay.h), drawn after the trace in
      * draw order among the rasterised instances; NULL: none. */
     const struct render_overlay *overlay;

@@ -115,6 +115,22 @@
  * it. */
 #define BVH_WIDE_ANY_LONGEST_CROSSINGS 1.6
 
+/* The layout size from which the two-level batch walk (scene_stream.h)
+ * sends incoherent rays through the table's stream walk (kernels.h,
+ * stream_pair; stream_pays below).  The stream overlaps one ray's cache
+ * misses with the others' work, which pays only when most node and leaf
+ * loads miss the caches: on a Zen 4 core with a 32 MB L3 (ours/Embree,
+ * random rays, walk1 -> stream) bumpy's 60 MB layout went 0.97 -> 1.65
+ * while the soup's 6.5 MB stayed level (0.93 -> 0.94) and the kitchen's
+ * 7.0 MB and gears' 62 KB lost (0.95 -> 0.79, 0.99 -> 0.78); camera and
+ * shadow rays lost on all four (docs/performance-log.md, round 60 and
+ * round 61, zq1).  Size alone cannot tell the soup (a volume) from the
+ * kitchen (surfaces).  16 MB: above the largest layout measured where it
+ * does not pay, half this machine's L3, so that a layout above it rarely
+ * stays cached.  A heuristic only: the answers do not depend on
+ * it. */
+#define BVH_WIDE_STREAM_BYTES ((uint64_t)16 << 20)
+
 struct bvh4_node {
     float bounds[6][4];
     uint32_t child[4];
@@ -168,6 +184,12 @@ struct bvh4 {
      * (packet_wide.h, packet_ia_init); the answers are the same either
      * way. */
     float leaf_extent;
+    /* 1 when an 8-wide layout with triangles takes BVH_WIDE_STREAM_BYTES
+     * or more: the batch walk of a query (scene_stream.h) then sends its
+     * rays through the stream walk where the configuration says
+     * stream=auto.  Set by the collapse, kept by a refit (the size is
+     * the same).  Never changes an answer. */
+    uint32_t stream_pays;
     /* The zero-area triangles the collapse left out of the leaves
      * (collapse4.c, drop_zero_area; never hit by any ray); 0 when it kept
      * them (struct collapse_triangles, keep_zero_area; or they were

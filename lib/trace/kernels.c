@@ -15,7 +15,7 @@
 static const struct trace_kernels scalar_table = {TRACE_ISA_SCALAR, "scalar", trace_closest,
                                                   trace_any, NULL, NULL, NULL, NULL, 0, NULL,
                                                   NULL, NULL, NULL, trace_scene_wide_lanes,
-                                                  NULL, NULL, NULL, NULL, NULL, NULL, NULL};
+                                                  NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL};
 
 static const char *const isa_names[TRACE_ISA_COUNT] = {"scalar", "sse4", "avx2", "avx512"};
 

@@ -44,6 +44,16 @@ typedef int (*trace_walk1_fn)(const struct bvh4 *wide, const float org[3], const
 typedef void (*trace_stream1_fn)(const struct bvh4 *wide, const float *rays, size_t stride,
                                  uint32_t count, struct trace_hit *hits, unsigned char *got);
 
+/* trace_stream1_fn with counters: the same answers, and each ray counted
+ * as walk1_counted counts it (node tests eight a wide node, a leaf's
+ * triangles), the sums added to *counters and ray i's node tests stored
+ * in ray_nodes[i] (the two-level walk's rule of the rays that reach
+ * inside an object, trace_scene_count_rays). */
+typedef void (*trace_stream1_counted_fn)(const struct bvh4 *wide, const float *rays,
+                                         size_t stride, uint32_t count, struct trace_hit *hits,
+                                         unsigned char *got, struct trace_counters *counters,
+                                         uint32_t *ray_nodes);
+
 struct trace_kernels {
     enum trace_isa isa;
     const char *name; /* "scalar", "sse4", "avx2", "avx512": the isa= value */
@@ -148,8 +158,17 @@ struct trace_kernels {
      * at once, one step of each in turn (traverse_pair8.h), for the layout
      * walk1 chooses its walk for (any_hit 0 or 1); the same answers as
      * walk1 ray by ray.  NULL where walk1 is, and in the tables without
-     * the pair walk (all but AVX2). */
+     * the pair walk (scalar, SSE4.2).  The AVX-512 table takes the AVX2
+     * table's (trace_stream_pair_avx2: every AVX-512 CPU runs AVX2, and
+     * every table's answers are the same), so its rays walk with
+     * isect_box's node test, not the AVX-512 walk1's fused one: the same
+     * answers, and the counts of the AVX2 table (stream_counted). */
     trace_stream1_fn (*stream_pair)(const struct bvh4 *wide, int any_hit);
+    /* stream_pair's walks with counters (trace_stream1_counted_fn), for
+     * the two-level batch walk (scene_stream.h), which counts every ray
+     * as the single-ray walk does; NULL where stream_pair is, and in a
+     * context's copy of a table whose configuration says stream=off. */
+    trace_stream1_counted_fn (*stream_counted)(const struct bvh4 *wide, int any_hit);
 };
 
 /* The table of an ISA, or NULL when this build has no such table or this
@@ -173,5 +192,6 @@ const struct trace_kernels *trace_kernels_avx512(void);
 /* The AVX2 table's stream_pair (stream_avx2.c), defined only where the
  * table is (traverse_avx2.c refers to it only then). */
 trace_stream1_fn trace_stream_pair_avx2(const struct bvh4 *wide, int any_hit);
+trace_stream1_counted_fn trace_stream_counted_avx2(const struct bvh4 *wide, int any_hit);
 
 #endif

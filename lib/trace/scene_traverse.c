@@ -77,6 +77,13 @@ int trace_scene_object_ray(const struct trace_instance *inst, const float org[3]
     return 1;
 }
 
+int trace_scene_object_inputs(const struct trace_instance *inst, const float org[3],
+                              const float dir[3], float o_org[3], float o_dir[3])
+{
+    to_object_space(inst->world_to_object, org, dir, o_org, o_dir);
+    return usable_direction(o_dir);
+}
+
 void trace_scene_flush_ray_count(struct trace_scene_counters *counters)
 {
     if (counters->ray_count && counters->ray_count_pending)
@@ -89,6 +96,12 @@ void trace_scene_count_rays(struct trace_scene_counters *counters, uint64_t *tar
 {
     if (counters->object.node_tests - tests_before <= (uint64_t)root_tests * rays)
         return;
+    trace_scene_add_ray_count(counters, target, rays);
+}
+
+void trace_scene_add_ray_count(struct trace_scene_counters *counters, uint64_t *target,
+                               uint32_t rays)
+{
     if (counters->ray_count != target) {
         trace_scene_flush_ray_count(counters);
         counters->ray_count = target;

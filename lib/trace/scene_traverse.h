@@ -111,6 +111,12 @@ struct trace_scene {
     uint8_t filter_mask;
     trace_accept_fn accept;
     void *accept_user;
+    /* The batch walk (scene_stream.h): 1 to send a qualifying scene's
+     * rays through the stream walk whatever its objects' size (the
+     * configuration's stream=on), 0 only where the layouts say it pays
+     * (stream=auto, bvh4.stream_pays).  stream=off is the table's
+     * stream_counted NULL. */
+    int stream_always;
 };
 
 struct trace_scene_hit {
@@ -143,6 +149,10 @@ void trace_scene_flush_ray_count(struct trace_scene_counters *counters);
  * packet went past the root (some of its rays may have stopped there). */
 void trace_scene_count_rays(struct trace_scene_counters *counters, uint64_t *target,
                             uint64_t tests_before, uint32_t root_tests, uint32_t rays);
+/* Counts `rays` rays for `target` that reached inside its object (the
+ * caller applied trace_scene_count_rays' rule ray by ray). */
+void trace_scene_add_ray_count(struct trace_scene_counters *counters, uint64_t *target,
+                               uint32_t rays);
 
 /* Closest hit with tmin <= t < tmax in world space.  Returns 1 on a hit. */
 int trace_scene_closest(const struct trace_scene *scene, const float org[3], const float dir[3],
@@ -258,6 +268,13 @@ static inline unsigned trace_scene_plain_class(const float org[3], const float d
 int trace_scene_object_ray(const struct trace_instance *inst, const float org[3],
                            const float dir[3], float tmin, const struct trace_ray *world,
                            struct trace_ray *o_ray);
+/* trace_scene_object_ray's origin and direction before the set-up: the
+ * world ray transformed by the instance's rows (o_org, o_dir; the same
+ * floats whichever way that function sets the ray up, since a set-up
+ * depends on org, dir and tmin alone); 0 when the direction cannot be
+ * traced (the instance is skipped). */
+int trace_scene_object_inputs(const struct trace_instance *inst, const float org[3],
+                              const float dir[3], float o_org[3], float o_dir[3]);
 unsigned trace_scene_wide_lanes(const float *bounds, uint32_t width, const int near_row[3],
                                 const int far_row[3], const struct trace_ray *ray, float t_max,
                                 float t_entry[8]);

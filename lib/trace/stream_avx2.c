@@ -35,10 +35,16 @@
 #define TRACE_WIDE_WALK1_COUNTED stream_walk1_counted_avx2
 #include "trace/traverse_wide.h"
 #define TRACE_PAIR8_STREAM stream_pair_choose_avx2
+#define TRACE_PAIR8_STREAM_COUNTED stream_counted_choose_avx2
 #include "trace/traverse_pair8.h"
 
 trace_stream1_fn trace_stream_pair_avx2(const struct bvh4 *wide, int any_hit)
 {
     return stream_pair_choose_avx2(wide, any_hit);
+}
+
+trace_stream1_counted_fn trace_stream_counted_avx2(const struct bvh4 *wide, int any_hit)
+{
+    return stream_counted_choose_avx2(wide, any_hit);
 }
 #endif

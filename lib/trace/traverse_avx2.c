@@ -32,7 +32,7 @@ static const struct trace_kernels table = {
     trace_top_lanes_avx2, trace_top_lanes1_avx2, trace_packet_init_avx2,
     trace_packet_xform_avx2, trace_walk1_avx2, trace_walk1_counted_avx2,
     trace_closest_packet_arrays_avx2, trace_any_packet_arrays_avx2,
-    trace_stream_pair_avx2};
+    trace_stream_pair_avx2, trace_stream_counted_avx2};
 
 const struct trace_kernels *trace_kernels_avx2(void)
 {

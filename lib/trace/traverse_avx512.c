@@ -31,7 +31,9 @@ static const struct trace_kernels table = {
     trace_closest_packet_avx512, trace_any_packet_avx512, trace_leaf8_avx512,
     trace_top_lanes_avx512, trace_top_lanes1_avx512, trace_packet_init_avx512,
     trace_packet_xform_avx512, trace_walk1_avx512, trace_walk1_counted_avx512,
-    trace_closest_packet_arrays_avx512, trace_any_packet_arrays_avx512, NULL};
+    trace_closest_packet_arrays_avx512, trace_any_packet_arrays_avx512,
+    /* The AVX2 table's stream (kernels.h, stream_pair). */
+    trace_stream_pair_avx2, trace_stream_counted_avx2};
 
 const struct trace_kernels *trace_kernels_avx512(void)
 {

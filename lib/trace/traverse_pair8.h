@@ -8,8 +8,9 @@
  * ends, its slot takes the stream's next ray.  Named for the first form,
  * two slots (the "pair"); eight measured best (below, PAIR8_SLOTS).
  * Included by traverse_wide.h's users after it (the AVX2
- * table, traverse_avx2.c), with TRACE_PAIR8_STREAM defined as the name
- * of kernels.h's stream_pair entry; no include guard.
+ * table, stream_avx2.c), with TRACE_PAIR8_STREAM and
+ * TRACE_PAIR8_STREAM_COUNTED defined as the names of kernels.h's
+ * stream_pair and stream_counted entries; no include guard.
  *
  * Why: a single ray's walk is a chain of dependent loads (a node's
  * bounds -> its child's bounds -> the leaf's packet), and a random ray
@@ -88,6 +89,17 @@ struct pair8_walk {
     uint32_t cur;
     uint32_t cur_count;
     uint32_t sp;
+};
+
+/* The counted streams' (stats 1) node and triangle tests of a slot's ray
+ * so far, as walk1_counted counts them (traverse_wide8_ray.h: eight a
+ * node test, a leaf's triangles at its call).  Apart from struct
+ * pair8_walk, in an array of their own that the streams without
+ * counters never touch: with the counts inside it those streams' code
+ * changed (GCC allocated the closest-hit copies' registers otherwise). */
+struct pair8_counts {
+    uint32_t node_tests;
+    uint32_t tri_tests;
 };
 
 /* The ray at r (RTray's layout: org[3], tmin, dir[3], tmax) into slot q,
@@ -185,7 +197,8 @@ static inline int pair8_pop(struct pair8_slot *q, struct pair8_walk *w, uint32_t
 __attribute__((always_inline))
 #endif
 static inline int pair8_step(const struct bvh4 *wide, struct pair8_slot *q,
-                             struct pair8_walk *w, int any_hit, int leave_early, int *answer)
+                             struct pair8_walk *w, int any_hit, int leave_early, int stats,
+                             struct pair8_counts *c, int *answer)
 {
     struct wide_state *const s = &q->rs.s;
     const struct bvh8_node *const nodes = wide->nodes8;
@@ -203,6 +216,8 @@ static inline int pair8_step(const struct bvh4 *wide, struct pair8_slot *q,
                      neg_org_z = q->neg_org_z;
         const __m256 inv_x = q->inv_x, inv_y = q->inv_y, inv_z = q->inv_z;
         const __m256i tmin8 = q->tmin8;
+        if (stats)
+            c->node_tests += 8;
         /* walk_wide8_ray's node test, operation for operation. */
         const __m256 tnx =
             _mm256_mul_ps(_mm256_add_ps(neg_org_x, wide8_bound(q->row_nx, node_off)), inv_x);
@@ -281,6 +296,8 @@ static inline int pair8_step(const struct bvh4 *wide, struct pair8_slot *q,
         const uint32_t cur_count = w->cur_count;
         const struct tri4_packet *p = &packets[w->cur];
         const int first_leaf = !any_hit && !q->r4_ready;
+        if (stats)
+            c->tri_tests += cur_count;
         if (first_leaf) {
             tri4_ray_init_vec(&s->r4, &q->ray);
             tri4_ray_init_double(wide_ray_doubles(s), &q->ray);
@@ -329,14 +346,31 @@ __attribute__((always_inline))
 static inline int pair8_refill(const struct bvh4 *wide, struct pair8_slot *q,
                                struct pair8_walk *w, uint32_t *next, const float *rays,
                                size_t stride, uint32_t count, struct trace_hit *hits,
-                               unsigned char *got, trace_walk1_fn walk1, int any_hit)
+                               unsigned char *got, trace_walk1_fn walk1, int any_hit, int stats,
+                               struct pair8_counts *pc, struct trace_counters *counters,
+                               uint32_t *ray_nodes)
 {
     while (*next < count) {
         const uint32_t i = (*next)++;
         const float *r = PAIR8_RAY(rays, stride, i);
         if (r[3] >= 0.0f) {
             pair8_start(wide, q, w, r, i, any_hit ? NULL : &hits[i], any_hit);
+            if (stats) {
+                pc->node_tests = 0;
+                pc->tri_tests = 0;
+            }
             return 1;
+        }
+        if (stats) {
+            /* walk1 is then the counting walk (walk1_counted's), which
+             * adds to the counters it is given. */
+            struct trace_counters c = {0, 0};
+            got[i] = (unsigned char)walk1(wide, r, r + 4, r[3], r[7], any_hit ? NULL : &hits[i],
+                                          &c);
+            counters->node_tests += c.node_tests;
+            counters->triangle_tests += c.triangle_tests;
+            ray_nodes[i] = (uint32_t)c.node_tests;
+            continue;
         }
         got[i] = (unsigned char)walk1(wide, r, r + 4, r[3], r[7], any_hit ? NULL : &hits[i],
                                       NULL);
@@ -354,13 +388,20 @@ static inline int pair8_turn(const struct bvh4 *wide, struct pair8_slot *q,
                              struct pair8_walk *w, uint32_t *next,
                              const float *rays, size_t stride, uint32_t count,
                              struct trace_hit *hits, unsigned char *got, trace_walk1_fn walk1,
-                             int any_hit, int leave_early)
+                             int any_hit, int leave_early, int stats, struct pair8_counts *pc,
+                             struct trace_counters *counters, uint32_t *ray_nodes)
 {
     int answer;
-    if (pair8_step(wide, q, w, any_hit, leave_early, &answer))
+    if (pair8_step(wide, q, w, any_hit, leave_early, stats, pc, &answer))
         return 1;
     got[q->index] = (unsigned char)answer;
-    return pair8_refill(wide, q, w, next, rays, stride, count, hits, got, walk1, any_hit);
+    if (stats) {
+        counters->node_tests += pc->node_tests;
+        counters->triangle_tests += pc->tri_tests;
+        ray_nodes[q->index] = pc->node_tests;
+    }
+    return pair8_refill(wide, q, w, next, rays, stride, count, hits, got, walk1, any_hit, stats,
+                        pc, counters, ray_nodes);
 }
 
 /* The whole stream, the slots stepped in turn; when the stream runs dry
@@ -372,28 +413,33 @@ __attribute__((always_inline))
 #endif
 static inline void pair8_stream(const struct bvh4 *wide, const float *rays, size_t stride,
                                 uint32_t count, struct trace_hit *hits, unsigned char *got,
-                                trace_walk1_fn walk1, int any_hit, int leave_early)
+                                trace_walk1_fn walk1, int any_hit, int leave_early, int stats,
+                                struct trace_counters *counters, uint32_t *ray_nodes)
 {
     struct pair8_slot slot[PAIR8_SLOTS];
     struct pair8_walk walk[PAIR8_SLOTS];
+    /* Only the counted streams use it (stats a constant 1). */
+    struct pair8_counts counts[PAIR8_SLOTS];
     uint32_t next = 0;
     int live[PAIR8_SLOTS];
     int all = 1;
     for (int k = 0; k < PAIR8_SLOTS; k++) {
         live[k] = pair8_refill(wide, &slot[k], &walk[k], &next, rays, stride, count, hits, got,
-                               walk1, any_hit);
+                               walk1, any_hit, stats, &counts[k], counters, ray_nodes);
         all &= live[k];
     }
     while (all)
         for (int k = 0; k < PAIR8_SLOTS; k++) {
             live[k] = pair8_turn(wide, &slot[k], &walk[k], &next, rays, stride, count, hits,
-                                 got, walk1, any_hit, leave_early);
+                                 got, walk1, any_hit, leave_early, stats, &counts[k], counters,
+                                 ray_nodes);
             all &= live[k];
         }
     for (int k = 0; k < PAIR8_SLOTS; k++)
         while (live[k])
             live[k] = pair8_turn(wide, &slot[k], &walk[k], &next, rays, stride, count, hits,
-                                 got, walk1, any_hit, leave_early);
+                                 got, walk1, any_hit, leave_early, stats, &counts[k], counters,
+                                 ray_nodes);
 }
 #undef PAIR8_RAY
 
@@ -403,7 +449,8 @@ static inline void pair8_stream(const struct bvh4 *wide, const float *rays, size
     static void name(const struct bvh4 *wide, const float *rays, size_t stride, uint32_t count,  \
                      struct trace_hit *hits, unsigned char *got)                                \
     {                                                                                           \
-        pair8_stream(wide, rays, stride, count, hits, got, walk1, any_hit, leave_early);        \
+        pair8_stream(wide, rays, stride, count, hits, got, walk1, any_hit, leave_early, 0, NULL, \
+                     NULL);                                                                     \
     }
 
 PAIR8_STREAM(pair8_stream_closest, wide8_walk1_closest_leaf8, 0, 0)
@@ -411,6 +458,28 @@ PAIR8_STREAM(pair8_stream_closest_early, wide8_walk1_closest_early_leaf8, 0, 1)
 PAIR8_STREAM(pair8_stream_any, wide8_walk1_any_leaf8, 1, 1)
 PAIR8_STREAM(pair8_stream_any_longest, wide8_walk1_any_longest_leaf8, WIDE_ANY_LONGEST, 1)
 #undef PAIR8_STREAM
+
+/* The counted streams (kernels.h's stream_counted): the same walks with
+ * walk1_counted's counts, per ray and in total; a ray the stream sends
+ * to walk1 goes to the counting walk1 (the _stats copy). */
+#define PAIR8_STREAM_COUNTED(name, walk1, any_hit, leave_early)                                 \
+    static void name(const struct bvh4 *wide, const float *rays, size_t stride, uint32_t count,  \
+                     struct trace_hit *hits, unsigned char *got,                                \
+                     struct trace_counters *counters, uint32_t *ray_nodes) WIDE_NOINLINE;       \
+    static void name(const struct bvh4 *wide, const float *rays, size_t stride, uint32_t count,  \
+                     struct trace_hit *hits, unsigned char *got,                                \
+                     struct trace_counters *counters, uint32_t *ray_nodes)                      \
+    {                                                                                           \
+        pair8_stream(wide, rays, stride, count, hits, got, walk1, any_hit, leave_early, 1,      \
+                     counters, ray_nodes);                                                      \
+    }
+
+PAIR8_STREAM_COUNTED(pair8_counted_closest, wide8_walk1_closest_leaf8_stats, 0, 0)
+PAIR8_STREAM_COUNTED(pair8_counted_closest_early, wide8_walk1_closest_early_leaf8_stats, 0, 1)
+PAIR8_STREAM_COUNTED(pair8_counted_any, wide8_walk1_any_leaf8_stats, 1, 1)
+PAIR8_STREAM_COUNTED(pair8_counted_any_longest, wide8_walk1_any_longest_leaf8_stats,
+                     WIDE_ANY_LONGEST, 1)
+#undef PAIR8_STREAM_COUNTED
 
 /* kernels.h's stream_pair: the stream walk for the layout walk1 walks
  * (TRACE_WIDE_WALK1's choice), NULL where walk1 is. */
@@ -421,4 +490,14 @@ static trace_stream1_fn TRACE_PAIR8_STREAM(const struct bvh4 *wide, int any_hit)
     if (any_hit)
         return wide->any_longest ? pair8_stream_any_longest : pair8_stream_any;
     return wide->prefetch_top ? pair8_stream_closest_early : pair8_stream_closest;
+}
+
+/* kernels.h's stream_counted: the counted stream for the same layouts. */
+static trace_stream1_counted_fn TRACE_PAIR8_STREAM_COUNTED(const struct bvh4 *wide, int any_hit)
+{
+    if (wide->width != 8 || !wide->node_count)
+        return NULL;
+    if (any_hit)
+        return wide->any_longest ? pair8_counted_any_longest : pair8_counted_any;
+    return wide->prefetch_top ? pair8_counted_closest_early : pair8_counted_closest;
 }

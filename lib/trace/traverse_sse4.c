@@ -24,7 +24,7 @@ static const struct trace_kernels table = {
     trace_closest4_sse4, trace_any4_sse4, trace_closest1_sse4, trace_any1_sse4,
     4,
     trace_closest_packet_sse4, trace_any_packet_sse4, NULL, NULL,
-    trace_scene_wide_lanes, NULL, NULL, NULL, NULL, NULL, NULL, NULL};
+    trace_scene_wide_lanes, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL};
 
 const struct trace_kernels *trace_kernels_sse4(void)
 {
