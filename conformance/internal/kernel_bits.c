@@ -308,10 +308,10 @@ static void compare_tables(const char *name, struct tg_mesh *m, int rays, uint64
      * trace_kernels_avx512_ctz): both forms are checked on every CPU
      * with AVX-512. */
     const struct trace_kernels *avx512 = trace_kernels_get(TRACE_ISA_AVX512);
-    const struct trace_kernels *avx512_other =
-        !avx512                              ? NULL
-        : avx512 == trace_kernels_avx512() ? trace_kernels_avx512_ctz()
-                                             : trace_kernels_avx512();
+    const struct trace_kernels *avx512_other = NULL;
+    if (avx512)
+        avx512_other = avx512 == trace_kernels_avx512() ? trace_kernels_avx512_ctz()
+                                                        : trace_kernels_avx512();
     for (int isa = TRACE_ISA_SCALAR + 1; isa < 2 * TRACE_ISA_COUNT + 2; isa++) {
         const int other = isa >= 2 * TRACE_ISA_COUNT;
         const struct trace_kernels *k =

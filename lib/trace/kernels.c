@@ -51,13 +51,13 @@ static int cpu_runs(enum trace_isa isa)
  * cpuid vendor.  The compression was chosen on an Intel Emerald Rapids
  * core (family 6 model 207), where it put gears' camera rays 0.10 of
  * Embree ahead and random rays 0.01-0.03 (performance-log.md, rounds
- * 46-48).  On an AMD Zen 4 core (family 25 model 17), whose AVX-512
- * runs a 256-bit operation in one pass but a compression in several
- * micro-ops, the same walks with the count were 0.04-0.1 of Embree
- * ahead on the closest-hit rows of gears, the soup and the kitchen and
- * level to ahead on shadow rays (round 61, zq2).  The Zen 4 and Zen 5
- * cores of rounds 1-44 never ran the compression.  The answers are the
- * same either way; only the speed depends on this.
+ * 46-48).  On an AMD Zen 4 core (family 25 model 17) the same walks
+ * with the count were ahead: gears' camera and random rays by about
+ * 0.08 of Embree, the soup's by 0.09-0.12, shadow rays level to 0.04
+ * ahead (round 61, zq2; why the compression costs there was not
+ * measured).  The Zen 4 and Zen 5 cores of rounds 1-44 never ran the
+ * compression.  The answers are the same either way; only the speed
+ * depends on this.
  */
 static int cpu_avx512_front_by_count(void)
 {

@@ -8,10 +8,11 @@
  * text rather than a flag of one inline function: with a flag, the walks
  * without the 8-lane call compiled to different code (register allocation
  * and block order; the soup's primary rays were 0.05 of Embree slower),
- * although the flag was a constant 0 in them.  Define WIDE8_RAY and
- * WIDE8_RAY_LEAF8 (and WIDE8_RAY_COMPRESS) before including; no include guard.  lanes: the ray's
- * set-up in SSE lanes where the walk's caller made it (WIDE8_WALK1), else
- * NULL (the walk reads the struct).  WIDE8_RAY_COMPRESS: 1 for the walks
+ * although the flag was a constant 0 in them.  Define WIDE8_RAY,
+ * WIDE8_RAY_LEAF8 and WIDE8_RAY_COMPRESS before including; no include
+ * guard.  lanes: the ray's set-up in SSE lanes where the walk's caller
+ * made it (WIDE8_WALK1), else NULL (the walk reads the struct).
+ * WIDE8_RAY_COMPRESS: 1 for the walks
  * whose front child the AVX-512 table may take by compression (by_off
  * below), 0 for the AVX-512 table's copy that takes it by the trailing-zero
  * count as the AVX2 table does (walk_wide8_ray_leaf8_ctz, traverse_wide.h).
