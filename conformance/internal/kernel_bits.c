@@ -302,10 +302,24 @@ static void compare_tables(const char *name, struct tg_mesh *m, int rays, uint64
         }
     }
     const struct trace_kernels *ref = trace_kernels_get(TRACE_ISA_SCALAR);
-    for (int isa = TRACE_ISA_SCALAR + 1; isa < 2 * TRACE_ISA_COUNT; isa++) {
-        const struct trace_kernels *k = trace_kernels_get((enum trace_isa)(isa / 2));
+    /* Every table this CPU runs, on each layout, then (the last two
+     * rounds) the AVX-512 table's other single-ray walk form, the one
+     * trace_kernels_get does not give on this CPU (kernels.h,
+     * trace_kernels_avx512_ctz): both forms are checked on every CPU
+     * with AVX-512. */
+    const struct trace_kernels *avx512 = trace_kernels_get(TRACE_ISA_AVX512);
+    const struct trace_kernels *avx512_other = NULL;
+    if (avx512)
+        avx512_other = avx512 == trace_kernels_avx512() ? trace_kernels_avx512_ctz()
+                                                        : trace_kernels_avx512();
+    for (int isa = TRACE_ISA_SCALAR + 1; isa < 2 * TRACE_ISA_COUNT + 2; isa++) {
+        const int other = isa >= 2 * TRACE_ISA_COUNT;
+        const struct trace_kernels *k =
+            other ? avx512_other : trace_kernels_get((enum trace_isa)(isa / 2));
         if (!k || isa / 2 == TRACE_ISA_SCALAR)
             continue;
+        char kname[64];
+        snprintf(kname, sizeof(kname), "%s%s", k->name, other ? " (other walk form)" : "");
         const struct bvh4 *wide = &wides[isa % 2];
         const char *layout = isa % 2 ? "bvh8" : "bvh4";
         struct tg_rng r;
@@ -441,17 +455,17 @@ static void compare_tables(const char *name, struct tg_mesh *m, int rays, uint64
                 }
             }
         }
-        if (k->closest_packet)
+        if (k->closest_packet && !other) /* the other form's packets are the table's */
             failures += compare_packets(name, k, layout, m, wide, &bvh, tri, rays, seed);
         failures += !CHECKF(differ == 0, "%s: %s differs from scalar on %d of %d rays", name,
-                 k->name, differ, rays);
-        printf("  %s: %s = scalar on %d rays\n", name, k->name, rays - differ);
+                 kname, differ, rays);
+        printf("  %s: %s = scalar on %d rays\n", name, kname, rays - differ);
         if (k->closest4) {
             failures += !CHECKF(differ4 == 0, "%s: %s %s differs from scalar binary on %d of %d rays",
-                     name, k->name, layout, differ4, rays);
+                     name, kname, layout, differ4, rays);
             printf("  %s: %s %s = scalar binary on %d rays (%d of them also through walk1); "
                    "per closest ray: nodes %.1f -> %.1f, triangles %.1f -> %.1f\n",
-                   name, k->name, layout, rays - differ4, walk1_rays,
+                   name, kname, layout, rays - differ4, walk1_rays,
                    (double)n2.node_tests / rays, (double)n4.node_tests / rays,
                    (double)n2.triangle_tests / rays, (double)n4.triangle_tests / rays);
         }

@@ -1170,8 +1170,9 @@ static inline int tri4_lane_test(const struct trace_ray *ray, const double *ray_
 
 /*
  * The closest-hit finish of four lanes at once (TRI4_FINISH_VEC: the
- * AVX2 table's single-ray closest-hit leaves, WIDE8_LEAF_TEST's
- * ray_double).  isect_triangle_finish_impl computes a kept lane's t in
+ * AVX2 and AVX-512 tables' single-ray closest-hit leaves, WIDE8_LEAF_TEST's
+ * ray_double; on the AVX-512 table since round 61, where it put a Zen 4
+ * core's gears camera rays 0.04 of Embree ahead: performance-log.md, zq2).  isect_triangle_finish_impl computes a kept lane's t in
  * double (the plane distance from the exact edge vectors, our addition
  * to Woop, Benthin and Wald 2013's watertight test) one lane at a time,
  * about 100 instructions a lane with its spills (callgrind, a kitchen
@@ -1199,7 +1200,7 @@ static inline int tri4_lane_test(const struct trace_ray *ray, const double *ray_
  * the caller's mask are computed too (NaN for a zero-area lane; no trap:
  * the exceptions are masked) and never read.
  */
-#if defined(__AVX__) && !TRACE_AVX512_TABLE
+#if defined(__AVX__)
 #define TRI4_FINISH_VEC 1
 #else
 #define TRI4_FINISH_VEC 0

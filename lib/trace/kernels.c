@@ -44,6 +44,31 @@ static int cpu_runs(enum trace_isa isa)
 #endif
 }
 
+/*
+ * 1 when the AVX-512 table's single-ray walks should take their front
+ * child by the trailing-zero count (trace_kernels_avx512_ctz) rather than
+ * by compression (vpcompressd, trace_kernels_avx512): on AMD CPUs, by the
+ * cpuid vendor.  The compression was chosen on an Intel Emerald Rapids
+ * core (family 6 model 207), where it put gears' camera rays 0.10 of
+ * Embree ahead and random rays 0.01-0.03 (performance-log.md, rounds
+ * 46-48).  On an AMD Zen 4 core (family 25 model 17) the same walks
+ * with the count were ahead: gears' camera and random rays by about
+ * 0.08 of Embree, the soup's by 0.09-0.12, shadow rays level to 0.04
+ * ahead (round 61, zq2; why the compression costs there was not
+ * measured).  The Zen 4 and Zen 5 cores of rounds 1-44 never ran the
+ * compression.  The answers are the same either way; only the speed
+ * depends on this.
+ */
+static int cpu_avx512_front_by_count(void)
+{
+#if (defined(__x86_64__) || defined(__i386__)) && (defined(__GNUC__) || defined(__clang__))
+    __builtin_cpu_init();
+    return __builtin_cpu_is("amd");
+#else
+    return 0;
+#endif
+}
+
 const struct trace_kernels *trace_kernels_get(enum trace_isa isa)
 {
     const struct trace_kernels *k = NULL;
@@ -57,7 +82,7 @@ const struct trace_kernels *trace_kernels_get(enum trace_isa isa)
         k = trace_kernels_avx2();
         break;
     case TRACE_ISA_AVX512:
-        k = trace_kernels_avx512();
+        k = cpu_avx512_front_by_count() ? trace_kernels_avx512_ctz() : trace_kernels_avx512();
         break;
     default:
         return NULL;

@@ -188,6 +188,11 @@ int trace_isa_parse(const char *name, size_t len, enum trace_isa *isa);
 const struct trace_kernels *trace_kernels_sse4(void);
 const struct trace_kernels *trace_kernels_avx2(void);
 const struct trace_kernels *trace_kernels_avx512(void);
+/* The AVX-512 table with the single-ray walks' front child by the
+ * trailing-zero count instead of compression (traverse_avx512.c; the
+ * same answers and counts): the form trace_kernels_get gives for
+ * TRACE_ISA_AVX512 on an AMD CPU (kernels.c says why). */
+const struct trace_kernels *trace_kernels_avx512_ctz(void);
 
 /* The AVX2 table's stream_pair (stream_avx2.c), defined only where the
  * table is (traverse_avx2.c refers to it only then). */

@@ -1180,9 +1180,11 @@ static inline void tri4_ray_init_vec(struct tri4_ray *r, const struct trace_ray 
 
 #define WIDE8_RAY walk_wide8_ray
 #define WIDE8_RAY_LEAF8 0
+#define WIDE8_RAY_COMPRESS 1
 #include "trace/traverse_wide8_ray.h"
 #undef WIDE8_RAY
 #undef WIDE8_RAY_LEAF8
+#undef WIDE8_RAY_COMPRESS
 
 /* A whole single-ray walk for a ray whose tmin is not >= 0 (negative or
  * NaN; rtTraceRays refuses both, query.c): walk_wide8_impl, whose node
@@ -1389,9 +1391,30 @@ WIDE8_LEAF_TEST(wide8_leaf8_any, wide_leaf8_test, 1, 1, 1, 0, 0)
 
 #define WIDE8_RAY walk_wide8_ray_leaf8
 #define WIDE8_RAY_LEAF8 1
+#define WIDE8_RAY_COMPRESS 1
 #include "trace/traverse_wide8_ray.h"
 #undef WIDE8_RAY
 #undef WIDE8_RAY_LEAF8
+#undef WIDE8_RAY_COMPRESS
+
+#if TRACE_AVX512_TABLE
+/* The AVX-512 table's second form of the walk from the set-up's lanes:
+ * the front child by the trailing-zero count of the node test's mask and
+ * the child's load (as the AVX2 table takes it), not by compression
+ * (wide8_front_compress, wide8_push_compress).  The same child, so the
+ * same walk, answers and counts.  On an AMD Zen 4 core (family 25) the
+ * compression was 0.05-0.1 of Embree slower on most closest-hit rows
+ * and level to slower on shadow rays; on the Emerald Rapids core that
+ * chose it, it was faster (performance-log.md, rounds 46-48, and round
+ * 61, zq2).  trace_kernels_avx512 picks the form by the CPU's vendor. */
+#define WIDE8_RAY walk_wide8_ray_leaf8_ctz
+#define WIDE8_RAY_LEAF8 1
+#define WIDE8_RAY_COMPRESS 0
+#include "trace/traverse_wide8_ray.h"
+#undef WIDE8_RAY
+#undef WIDE8_RAY_LEAF8
+#undef WIDE8_RAY_COMPRESS
+#endif
 
 /* The single-ray walks with one 8-lane test for a leaf of two packets
  * (walk_wide8_ray_leaf8): one 8-lane pass instead of two 4-lane passes
@@ -1549,6 +1572,17 @@ WIDE8_WALK1(wide8_walk1_any_leaf8_stats, walk_wide8_ray_leaf8, 1, 1, 1)
 /* The any-hit walks for the layouts with any_longest (WIDE_ANY_LONGEST). */
 WIDE8_WALK1(wide8_walk1_any_longest_leaf8, walk_wide8_ray_leaf8, WIDE_ANY_LONGEST, 0, 1)
 WIDE8_WALK1(wide8_walk1_any_longest_leaf8_stats, walk_wide8_ray_leaf8, WIDE_ANY_LONGEST, 1, 1)
+#if TRACE_AVX512_TABLE
+/* The same walks with the front child by the trailing-zero count
+ * (walk_wide8_ray_leaf8_ctz); the any_longest walks take it so in both
+ * forms. */
+WIDE8_WALK1(wide8_walk1_closest_leaf8_ctz, walk_wide8_ray_leaf8_ctz, 0, 0, 0)
+WIDE8_WALK1(wide8_walk1_closest_early_leaf8_ctz, walk_wide8_ray_leaf8_ctz, 0, 0, 1)
+WIDE8_WALK1(wide8_walk1_any_leaf8_ctz, walk_wide8_ray_leaf8_ctz, 1, 0, 1)
+WIDE8_WALK1(wide8_walk1_closest_leaf8_stats_ctz, walk_wide8_ray_leaf8_ctz, 0, 1, 0)
+WIDE8_WALK1(wide8_walk1_closest_early_leaf8_stats_ctz, walk_wide8_ray_leaf8_ctz, 0, 1, 1)
+WIDE8_WALK1(wide8_walk1_any_leaf8_stats_ctz, walk_wide8_ray_leaf8_ctz, 1, 1, 1)
+#endif
 
 /* kernels.h's walk1: the walk walk_wide_single1 below takes without
  * counters, chosen once for a layout.  A caller that traces many rays
@@ -1564,6 +1598,19 @@ static trace_walk1_fn TRACE_WIDE_WALK1(const struct bvh4 *wide, int any_hit)
     return wide->prefetch_top ? wide8_walk1_closest_early_leaf8 : wide8_walk1_closest_leaf8;
 }
 
+#if TRACE_AVX512_TABLE
+/* TRACE_WIDE_WALK1 for the walks of walk_wide8_ray_leaf8_ctz. */
+static trace_walk1_fn TRACE_WIDE_WALK1_CTZ(const struct bvh4 *wide, int any_hit)
+{
+    if (wide->width != 8 || !wide->node_count)
+        return NULL;
+    if (any_hit)
+        return wide->any_longest ? wide8_walk1_any_longest_leaf8 : wide8_walk1_any_leaf8_ctz;
+    return wide->prefetch_top ? wide8_walk1_closest_early_leaf8_ctz
+                              : wide8_walk1_closest_leaf8_ctz;
+}
+#endif
+
 /* kernels.h's walk1_counted: walk_wide_single1's counting walks by index
  * 2 any_hit + (any_hit ? any_longest : prefetch_top) != 0, the choice its
  * entries make every ray (the any-hit walk does not depend on
@@ -1571,6 +1618,12 @@ static trace_walk1_fn TRACE_WIDE_WALK1(const struct bvh4 *wide, int any_hit)
 static const trace_walk1_fn TRACE_WIDE_WALK1_COUNTED[4] = {
     wide8_walk1_closest_leaf8_stats, wide8_walk1_closest_early_leaf8_stats,
     wide8_walk1_any_leaf8_stats, wide8_walk1_any_longest_leaf8_stats};
+
+#if TRACE_AVX512_TABLE
+static const trace_walk1_fn TRACE_WIDE_WALK1_COUNTED_CTZ[4] = {
+    wide8_walk1_closest_leaf8_stats_ctz, wide8_walk1_closest_early_leaf8_stats_ctz,
+    wide8_walk1_any_leaf8_stats_ctz, wide8_walk1_any_longest_leaf8_stats};
+#endif
 
 /*
  * The leaf of the 8-wide walks on its own, for
@@ -1791,15 +1844,22 @@ static int walk_wide_single1_other(const struct bvh4 *wide, const struct bvh *bv
  * (walk_wide_single1_other): with their set-up inlined here, the entry
  * had a frame of its own (its trace_ray, 32-byte aligned), 31
  * instructions a ray before and after the walk's call instead of a
- * jump. */
+ * jump.  ctz (a constant): the AVX-512 table's walks of
+ * walk_wide8_ray_leaf8_ctz (WIDE8_WALK1_PICK); 0 on the other tables. */
+#if TRACE_AVX512_TABLE
+#define WIDE8_WALK1_PICK(ctz, name) ((ctz) ? name##_ctz : name)
+#else
+#define WIDE8_WALK1_PICK(ctz, name) name
+#endif
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
 static inline int walk_wide_single1(const struct bvh4 *wide, const struct bvh *bvh,
                                     const float *tri, const float org[3], const float dir[3],
                                     float tmin, float t_max, int any_hit, struct trace_hit *hit,
-                                    struct trace_counters *counters)
+                                    struct trace_counters *counters, int ctz)
 {
+    (void)ctz; /* unused where WIDE8_WALK1_PICK ignores it */
 #if defined(__AVX__)
     if (wide->width == 8 && wide->node_count) {
         if (counters) {
@@ -1807,20 +1867,24 @@ static inline int walk_wide_single1(const struct bvh4 *wide, const struct bvh *b
                 return wide->any_longest
                            ? wide8_walk1_any_longest_leaf8_stats(wide, org, dir, tmin, t_max,
                                                                  hit, counters)
-                           : wide8_walk1_any_leaf8_stats(wide, org, dir, tmin, t_max, hit,
-                                                         counters);
+                           : WIDE8_WALK1_PICK(ctz, wide8_walk1_any_leaf8_stats)(
+                                 wide, org, dir, tmin, t_max, hit, counters);
             if (wide->prefetch_top)
-                return wide8_walk1_closest_early_leaf8_stats(wide, org, dir, tmin, t_max, hit,
-                                                             counters);
-            return wide8_walk1_closest_leaf8_stats(wide, org, dir, tmin, t_max, hit, counters);
+                return WIDE8_WALK1_PICK(ctz, wide8_walk1_closest_early_leaf8_stats)(
+                    wide, org, dir, tmin, t_max, hit, counters);
+            return WIDE8_WALK1_PICK(ctz, wide8_walk1_closest_leaf8_stats)(wide, org, dir, tmin,
+                                                                          t_max, hit, counters);
         }
         if (any_hit)
             return wide->any_longest
                        ? wide8_walk1_any_longest_leaf8(wide, org, dir, tmin, t_max, hit, NULL)
-                       : wide8_walk1_any_leaf8(wide, org, dir, tmin, t_max, hit, NULL);
+                       : WIDE8_WALK1_PICK(ctz, wide8_walk1_any_leaf8)(wide, org, dir, tmin,
+                                                                      t_max, hit, NULL);
         if (wide->prefetch_top)
-            return wide8_walk1_closest_early_leaf8(wide, org, dir, tmin, t_max, hit, NULL);
-        return wide8_walk1_closest_leaf8(wide, org, dir, tmin, t_max, hit, NULL);
+            return WIDE8_WALK1_PICK(ctz, wide8_walk1_closest_early_leaf8)(wide, org, dir, tmin,
+                                                                          t_max, hit, NULL);
+        return WIDE8_WALK1_PICK(ctz, wide8_walk1_closest_leaf8)(wide, org, dir, tmin, t_max, hit,
+                                                                NULL);
     }
 #endif
     return walk_wide_single1_other(wide, bvh, tri, org, dir, tmin, t_max, any_hit, hit,
@@ -1834,7 +1898,7 @@ int TRACE_WIDE_CLOSEST1(const struct bvh4 *wide, const struct bvh *bvh, const fl
                         const float org[3], const float dir[3], float tmin, float t_max,
                         struct trace_hit *hit, struct trace_counters *counters)
 {
-    return walk_wide_single1(wide, bvh, tri, org, dir, tmin, t_max, 0, hit, counters);
+    return walk_wide_single1(wide, bvh, tri, org, dir, tmin, t_max, 0, hit, counters, 0);
 }
 
 int TRACE_WIDE_ANY1(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,
@@ -1844,6 +1908,29 @@ int TRACE_WIDE_ANY1(const struct bvh4 *wide, const struct bvh *bvh, const float 
                     const float org[3], const float dir[3], float tmin, float t_max,
                     struct trace_counters *counters)
 {
-    return walk_wide_single1(wide, bvh, tri, org, dir, tmin, t_max, 1, NULL, counters);
+    return walk_wide_single1(wide, bvh, tri, org, dir, tmin, t_max, 1, NULL, counters, 0);
 }
+
+#if TRACE_AVX512_TABLE
+/* closest1 and any1 with the walks of walk_wide8_ray_leaf8_ctz. */
+int TRACE_WIDE_CLOSEST1_CTZ(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,
+                            const float org[3], const float dir[3], float tmin, float t_max,
+                            struct trace_hit *hit, struct trace_counters *counters);
+int TRACE_WIDE_CLOSEST1_CTZ(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,
+                            const float org[3], const float dir[3], float tmin, float t_max,
+                            struct trace_hit *hit, struct trace_counters *counters)
+{
+    return walk_wide_single1(wide, bvh, tri, org, dir, tmin, t_max, 0, hit, counters, 1);
+}
+
+int TRACE_WIDE_ANY1_CTZ(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,
+                        const float org[3], const float dir[3], float tmin, float t_max,
+                        struct trace_counters *counters);
+int TRACE_WIDE_ANY1_CTZ(const struct bvh4 *wide, const struct bvh *bvh, const float *tri,
+                        const float org[3], const float dir[3], float tmin, float t_max,
+                        struct trace_counters *counters)
+{
+    return walk_wide_single1(wide, bvh, tri, org, dir, tmin, t_max, 1, NULL, counters, 1);
+}
+#endif
 #endif /* TRACE_WIDE_PACKET_PIECES */

@@ -8,10 +8,14 @@
  * text rather than a flag of one inline function: with a flag, the walks
  * without the 8-lane call compiled to different code (register allocation
  * and block order; the soup's primary rays were 0.05 of Embree slower),
- * although the flag was a constant 0 in them.  Define WIDE8_RAY and
- * WIDE8_RAY_LEAF8 before including; no include guard.  lanes: the ray's
- * set-up in SSE lanes where the walk's caller made it (WIDE8_WALK1), else
- * NULL (the walk reads the struct).
+ * although the flag was a constant 0 in them.  Define WIDE8_RAY,
+ * WIDE8_RAY_LEAF8 and WIDE8_RAY_COMPRESS before including; no include
+ * guard.  lanes: the ray's set-up in SSE lanes where the walk's caller
+ * made it (WIDE8_WALK1), else NULL (the walk reads the struct).
+ * WIDE8_RAY_COMPRESS: 1 for the walks
+ * whose front child the AVX-512 table may take by compression (by_off
+ * below), 0 for the AVX-512 table's copy that takes it by the trailing-zero
+ * count as the AVX2 table does (walk_wide8_ray_leaf8_ctz, traverse_wide.h).
  */
 #if defined(__GNUC__)
 __attribute__((always_inline))
@@ -92,7 +96,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
      * 2^24 nodes or packets or more to the float walk.  Elsewhere cur alone
      * (cur_off's stores are dead). */
 #if TRACE_AVX512_TABLE
-    const int by_off = (any_hit == 0 || any_hit == 1) && lanes;
+    const int by_off = WIDE8_RAY_COMPRESS && (any_hit == 0 || any_hit == 1) && lanes;
 #else
     const int by_off = 0;
 #endif
@@ -368,7 +372,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                                            &cur_count);
                         } else if (any_hit) {
 #if TRACE_AVX512_TABLE
-                            if (any_hit == 1 && lanes) {
+                            if (any_hit == 1 && by_off) {
                                 wide8_front_compress(n, _kand_mask8(_kand_mask8(k0, k1),
                                                                     _kand_mask8(k2, k3)),
                                                      &cur_off, &cur_count);
@@ -381,7 +385,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                         }
                         else
 #if TRACE_AVX512_TABLE
-                            if (lanes)
+                            if (by_off)
                                 wide8_push_compress(n, octant, hit, t0, order_shift, st_child,
                                                     st_count, st_t, &sp, &cur_off, &cur_count);
                             else
