@@ -1406,7 +1406,8 @@ WIDE8_LEAF_TEST(wide8_leaf8_any, wide_leaf8_test, 1, 1, 1, 0, 0)
  * compression was 0.05-0.1 of Embree slower on most closest-hit rows
  * and level to slower on shadow rays; on the Emerald Rapids core that
  * chose it, it was faster (performance-log.md, rounds 46-48, and round
- * 61, zq2).  trace_kernels_avx512 picks the form by the CPU's vendor. */
+ * 61, zq2).  trace_kernels_get (kernels.c) picks the form by the CPU's
+ * vendor. */
 #define WIDE8_RAY walk_wide8_ray_leaf8_ctz
 #define WIDE8_RAY_LEAF8 1
 #define WIDE8_RAY_COMPRESS 0
