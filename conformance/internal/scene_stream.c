@@ -260,9 +260,12 @@ int main(void)
     CHECK(trace_scene_stream_ready(&scene, 0) && trace_scene_stream_ready(&scene, 1));
     failures += compare("stream_always", &scene, rays, objs);
 
-    /* The AVX-512 table's two forms, whose stream is compiled apart
-     * (stream_avx512.c): the same comparison, each against its own
-     * single-ray walk, where this CPU runs the table. */
+    /* The AVX-512 table's two forms (kernels.h, trace_kernels_avx512_ctz),
+     * which take the AVX2 stream under their own single-ray walks: the
+     * same comparison, each against its own walk and counters, where
+     * this CPU runs the table.  Both forms, as internal/kernel_bits does:
+     * round 61's merge left one form without the stream and no test saw
+     * it (docs/performance-log.md, "round 61's merge"). */
     const struct trace_kernels *avx512 = trace_kernels_get(TRACE_ISA_AVX512);
     if (avx512) {
         const struct trace_kernels *forms[2] = {trace_kernels_avx512(),

@@ -198,9 +198,5 @@ const struct trace_kernels *trace_kernels_avx512_ctz(void);
  * table is (traverse_avx2.c refers to it only then). */
 trace_stream1_fn trace_stream_pair_avx2(const struct bvh4 *wide, int any_hit);
 trace_stream1_counted_fn trace_stream_counted_avx2(const struct bvh4 *wide, int any_hit);
-/* The same stream compiled for AVX-512 (stream_avx512.c), defined only
- * where the AVX-512 table is (traverse_avx512.c refers to it only then). */
-trace_stream1_fn trace_stream_pair_avx512(const struct bvh4 *wide, int any_hit);
-trace_stream1_counted_fn trace_stream_counted_avx512(const struct bvh4 *wide, int any_hit);
 
 #endif

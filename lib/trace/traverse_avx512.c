@@ -36,9 +36,8 @@ static const struct trace_kernels table = {
     trace_top_lanes_avx512, trace_top_lanes1_avx512, trace_packet_init_avx512,
     trace_packet_xform_avx512, trace_walk1_avx512, trace_walk1_counted_avx512,
     trace_closest_packet_arrays_avx512, trace_any_packet_arrays_avx512,
-    /* The stream (kernels.h, stream_pair) compiled for AVX-512
-     * (stream_avx512.c). */
-    trace_stream_pair_avx512, trace_stream_counted_avx512};
+    /* The AVX2 table's stream (kernels.h, stream_pair). */
+    trace_stream_pair_avx2, trace_stream_counted_avx2};
 
 /* The same table with the single-ray walks whose front child comes by
  * the trailing-zero count (closest1, any1, walk1, walk1_counted:
@@ -52,7 +51,7 @@ static const struct trace_kernels table_ctz = {
     trace_top_lanes_avx512, trace_top_lanes1_avx512, trace_packet_init_avx512,
     trace_packet_xform_avx512, trace_walk1_ctz_avx512, trace_walk1_counted_ctz_avx512,
     trace_closest_packet_arrays_avx512, trace_any_packet_arrays_avx512,
-    trace_stream_pair_avx512, trace_stream_counted_avx512};
+    trace_stream_pair_avx2, trace_stream_counted_avx2};
 
 const struct trace_kernels *trace_kernels_avx512(void)
 {
