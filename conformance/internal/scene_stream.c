@@ -14,8 +14,9 @@
  * again (3).  Rays: random, some with tmin > 0, a short tmax, tmin >=
  * tmax, -0.0 and 0.0 components (the single walk's other paths), in
  * batches of 1, 7, 255, 256, 257 and 1000 rays.  The AVX2 table, then
- * (stream_always) the AVX-512 table's two forms where the CPU runs them.  The batch walk must
- * take the stream here (trace_scene_stream_ready) and must not where
+ * (stream_always) the AVX-512 table's two forms where the CPU runs
+ * them.  The batch walk must take the stream here
+ * (trace_scene_stream_ready) and must not where
  * the scene does not qualify: a layout without stream_pays under
  * stream=auto (stream_always 0), an instance under the hit filter, a
  * table without a stream.
