@@ -310,7 +310,7 @@ static void visit_instance(struct packet_top *s, uint32_t index, unsigned rays)
     unsigned take = got & ~s->found;
     for (unsigned m = got & s->found; m; m &= m - 1u) {
         const int r = first(m);
-        if (h[r].t < s->best[r] || inst->instance_id < trace_scene_hit_id(scene, &s->hits[r]))
+        if (trace_scene_hit_replaces(scene, inst, h[r].t, s->best[r], &s->hits[r]))
             take |= 1u << r;
     }
     s->found |= take;

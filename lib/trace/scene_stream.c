@@ -157,8 +157,7 @@ static void stream_instance(const struct trace_scene *scene, const struct stream
         }
         const struct trace_hit *h = &sc->th[l];
         struct trace_scene_hit *hit = &sc->hit[e];
-        if (!sc->found[e] || h->t < sc->best[e] ||
-            inst->instance_id < trace_scene_hit_id(scene, hit)) {
+        if (!sc->found[e] || trace_scene_hit_replaces(scene, inst, h->t, sc->best[e], hit)) {
             sc->best[e] = h->t;
             sc->found[e] = 1;
             hit->t = h->t;

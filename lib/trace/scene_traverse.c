@@ -63,8 +63,7 @@ int trace_scene_object_ray(const struct trace_instance *inst, const float org[3]
         return 1;
     }
     float o_org[3], o_dir[3];
-    to_object_space(inst->world_to_object, org, dir, o_org, o_dir);
-    if (!usable_direction(o_dir))
+    if (!trace_scene_object_inputs(inst, org, dir, o_org, o_dir))
         return 0;
     /* An instance whose matrix leaves the ray as it is (the identity, as
      * for a scene of one static object) reuses the world ray's set-up:
@@ -166,7 +165,7 @@ static void keep_hit(struct top_state *s, uint32_t index, const struct trace_hit
 {
     const struct trace_instance *inst = &s->scene->instances[index];
     struct trace_scene_hit *hit = s->hit;
-    if (!s->found || h->t < s->best || inst->instance_id < trace_scene_hit_id(s->scene, hit)) {
+    if (!s->found || trace_scene_hit_replaces(s->scene, inst, h->t, s->best, hit)) {
         s->best = h->t;
         s->box_limit = s->best * ISECT_BOX_FAR_SCALE;
         s->found = 1;

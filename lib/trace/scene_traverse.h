@@ -170,6 +170,18 @@ static inline uint32_t trace_scene_hit_id(const struct trace_scene *scene,
     return scene->instances[hit->instance].instance_id;
 }
 
+/* The tie rule between instances, for a ray that has a hit already:
+ * whether instance inst's hit at t replaces the kept hit (at best): when
+ * nearer, or as near at a lower instance id.  The single-ray walk
+ * (scene_traverse.c), the packet walk (packet_scene.c) and the batch walk
+ * (scene_stream.c) all keep hits by it. */
+static inline int trace_scene_hit_replaces(const struct trace_scene *scene,
+                                           const struct trace_instance *inst, float t, float best,
+                                           const struct trace_scene_hit *kept)
+{
+    return t < best || inst->instance_id < trace_scene_hit_id(scene, kept);
+}
+
 /*
  * Pieces of the single-ray walk that the packet walk (packet_scene.c)
  * repeats ray by ray, so that its answers are the same bit for bit.
