@@ -5,8 +5,9 @@
  *
  * Per mesh, over one object BVH built with the library's defaults (binned
  * SAH, BVH_DEFAULT_BINS bins), for primary rays (a pinhole camera), random
- * incoherent rays (origins in the bounds, directions on the sphere) and
- * shadow rays (primary hit points to a point light, any hit):
+ * incoherent rays (origins in the bounds, directions on the sphere),
+ * shadow rays (primary hit points to a point light, any hit) and the
+ * random rays again with any hit:
  *
  *   ours   trace_closest / trace_any called directly in bench_run_parallel
  *          on 1 and 2 threads: the kernel's speed, no API in the way;
@@ -322,12 +323,20 @@ static int trace_mesh(const struct bench_options *opts, struct bench_mesh *mesh,
     flat = NULL;
     notes->api_build_ms = api[0].build_ms;
 
-    for (int s = 0; s < 3; s++) {
+    /* The passes: primary, random and shadow rays as the sets say, then
+     * the random rays again with any hit (incoherent occlusion queries:
+     * rtOccludedRays' stream path, lib/trace/scene_stream.h, and the
+     * single-ray any-hit walk on rays that are not shadow rays). */
+    static const int pass_set[4] = {0, 1, 2, 1};
+    for (int pass = 0; pass < 4; pass++) {
         struct set_result res;
-        int any_hit = s == 2;
-        report_progress("trace: %s: %s rays (%u)\n", mesh->name, sets[s].name, sets[s].count);
+        const int s = pass_set[pass];
+        const int any_hit = pass >= 2;
+        const char *any_tag = any_hit && s != 2 ? " (any hit)" : "";
+        report_progress("trace: %s: %s rays%s (%u)\n", mesh->name, sets[s].name, any_tag,
+                        sets[s].count);
         if (sets[s].count == 0) {
-            report_row("%s|%s|0|-|-|-|-|-|-|-|-|-", mesh->name, sets[s].name);
+            report_row("%s|%s%s|0|-|-|-|-|-|-|-|-|-", mesh->name, sets[s].name, any_tag);
             continue;
         }
         if (measure_set(opts, &acc, api, &sets[s], any_hit, hits, scratch, &res))
@@ -342,7 +351,8 @@ static int trace_mesh(const struct bench_options *opts, struct bench_mesh *mesh,
                    res.mrays[1] > 0 ? res.mrays[3] / res.mrays[1] : 0.0, api_agree);
         for (int p = 0; p < PATHS; p++) {
             char key[96];
-            snprintf(key, sizeof(key), "trace.%s.%s.%s", mesh->name, sets[s].name,
+            snprintf(key, sizeof(key), "trace.%s.%s%s.%s", mesh->name, sets[s].name,
+                     *any_tag ? "_any" : "",
                      p == 0   ? "ours_1t"
                      : p == 1 ? "ours_2t"
                      : p == 2 ? "api_1t"
@@ -350,13 +360,13 @@ static int trace_mesh(const struct bench_options *opts, struct bench_mesh *mesh,
             report_metric(key, res.mrays[p], 1);
         }
         if (plot_data)
-            fprintf(plot_data, "\"%s/%s\" %.4f %.4f %.4f %.4f\n", mesh->name, sets[s].name,
-                    res.mrays[0], res.mrays[1], res.mrays[2], res.mrays[3]);
+            fprintf(plot_data, "\"%s/%s%s\" %.4f %.4f %.4f %.4f\n", mesh->name, sets[s].name,
+                    *any_tag ? " (any)" : "", res.mrays[0], res.mrays[1], res.mrays[2], res.mrays[3]);
         if (api_agree < 100.0) {
             report_check_failed();
-            report_progress("trace: WARNING: %s/%s: the API disagrees with the direct path on "
+            report_progress("trace: WARNING: %s/%s%s: the API disagrees with the direct path on "
                             "%.4f%% of rays\n",
-                            mesh->name, sets[s].name, 100.0 - api_agree);
+                            mesh->name, sets[s].name, any_tag, 100.0 - api_agree);
         }
         if (!any_hit) {
             uint32_t sampled;
@@ -575,7 +585,7 @@ int bench_trace_section(const struct bench_options *opts, struct bench_mesh *mes
     report_printf("Object BVH: binned SAH, %d bins (the library default). Primary rays: "
                   "%ux%u pinhole camera; random: %u rays, origins uniform in the bounds, "
                   "directions uniform on the sphere; shadow: from each primary hit to a point "
-                  "light, any hit. Median of %d runs. \"ours\": trace_closest/trace_any called "
+                  "light, any hit; random (any hit): the random rays again, any hit. Median of %d runs. \"ours\": trace_closest/trace_any called "
                   "directly (own pthread split, chunks of %d rays); \"API\": "
                   "rtTraceRays/rtOccludedRays on a context with threads=1/2. Mrays/s. "
                   "\"API = ours\": rays where the API's answer equals ours.\n\n",
