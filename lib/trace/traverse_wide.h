@@ -1456,8 +1456,6 @@ WIDE8_LEAF_TEST(wide8_leaf8_any, wide_leaf8_test, 1, 1, 1, 0, 0)
 #define WIDE8_RAY_LEAF8 1
 #define WIDE8_RAY_COMPRESS 0
 #define WIDE8_RAY_QUANT 1
-#undef WIDE8_QFOLD
-#define WIDE8_QFOLD 1
 #include "trace/traverse_wide8_ray.h"
 #undef WIDE8_RAY
 #undef WIDE8_RAY_LEAF8

@@ -71,9 +71,6 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
      * loads, one step more on the chain from a node's child word to its bounds,
      * which every node of a walk waits for.  The same addresses, so the same
      * bounds. */
-#ifndef WIDE8_QFOLD
-#define WIDE8_QFOLD 0
-#endif
 #if WIDE8_RAY_QUANT
     /* The quantized rows: row k's eight codes at byte 16 + 8 k of a
      * 128-byte node (bvh4_layout.h), where the float row is 32 k of 256. */
@@ -315,30 +312,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
     (lanes ? wide8_bound(row, node_off) : wide8_bound(b, off))
 #endif
                 __m256 tnx, tfx, tny, tfy, tnz, tfz;
-                if (fused && WIDE8_RAY_QUANT && WIDE8_QFOLD) {
-#if WIDE8_RAY_QUANT && WIDE8_QFOLD
-                    /* EXPERIMENT (not conservative: no margins): the decode
-                     * folded into the fused test, near fma(q, s i, fma(o, i,
-                     * cn)), far fma(q, s is, fma(o, is, cf)). */
-#define WIDE8_QF(row, A, C)                                                                      \
-    _mm256_fmadd_ps(_mm256_cvtepi32_ps(_mm256_cvtepu8_epi32(                                      \
-                        _mm_loadl_epi64((const __m128i *)(const void *)((row) + node_off)))),     \
-                    A, C)
-                    tnx = WIDE8_QF(row_nx, _mm256_mul_ps(q_sx, inv_x),
-                                   _mm256_fmadd_ps(q_ox, inv_x, neg_org_x));
-                    tfx = WIDE8_QF(row_fx, _mm256_mul_ps(q_sx, inv_s_x),
-                                   _mm256_fmadd_ps(q_ox, inv_s_x, far_c_x));
-                    tny = WIDE8_QF(row_ny, _mm256_mul_ps(q_sy, inv_y),
-                                   _mm256_fmadd_ps(q_oy, inv_y, neg_org_y));
-                    tfy = WIDE8_QF(row_fy, _mm256_mul_ps(q_sy, inv_s_y),
-                                   _mm256_fmadd_ps(q_oy, inv_s_y, far_c_y));
-                    tnz = WIDE8_QF(row_nz, _mm256_mul_ps(q_sz, inv_z),
-                                   _mm256_fmadd_ps(q_oz, inv_z, neg_org_z));
-                    tfz = WIDE8_QF(row_fz, _mm256_mul_ps(q_sz, inv_s_z),
-                                   _mm256_fmadd_ps(q_oz, inv_s_z, far_c_z));
-#undef WIDE8_QF
-#endif
-                } else if (fused) {
+                if (fused) {
                     /* node_fused.h: near fma(b, i, cn), far fma(b, is, cf),
                      * the far already widened (no scale below). */
                     tnx = _mm256_fmadd_ps(WIDE8_ROW_BOUND(row_nx, near_x, x), inv_x, neg_org_x);
