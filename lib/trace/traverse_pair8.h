@@ -257,14 +257,14 @@ static inline int pair8_step(const struct bvh4 *wide, struct pair8_slot *q,
                         _mm256_min_ps(_mm256_mul_ps(tfy, scale),
                                       _mm256_min_ps(_mm256_mul_ps(tfx, scale),
                                                     _mm256_set1_ps(node_limit))));
-                    wide8_push_any(wide8_links(n), mask, hit, t0, t1, q->st_child, q->st_count, &sp, &next,
+                    wide8_push_any(n, mask, hit, t0, t1, q->st_child, q->st_count, &sp, &next,
                                    &next_count);
                 } else if (any_hit) {
-                    wide8_push_stored(wide8_links(n), mask, t0, q->st_child, q->st_count, &sp, &next,
+                    wide8_push_stored(n, mask, t0, q->st_child, q->st_count, &sp, &next,
                                       &next_count);
                 } else {
                     const __m256i order_shift = _mm256_setr_epi32(0, 3, 6, 9, 12, 15, 18, 21);
-                    wide8_push(wide8_links(n), q->octant, hit, t0, order_shift, q->st_child, q->st_count,
+                    wide8_push(n, q->octant, hit, t0, order_shift, q->st_child, q->st_count,
                                q->st_t, &sp, &next, &next_count);
                 }
                 w->sp = sp;
