@@ -1911,14 +1911,6 @@ static int collapse_wide(struct bvh4 *out, const struct bvh *bvh,
     out->source = source;
     out->packet_slot = packet_slot;
     out->raw = raw;
-    out->nodes8q = NULL;
-    out->q_raw = (struct rt_large_block){0};
-    /* The quantized mirror where lines are the cost (BVH_WIDE_QUANT_BYTES);
-     * without it (a bound that cannot be quantized, no memory) the walks
-     * read nodes8, the same answers. */
-    if (width == 8 && tri && packets &&
-        bvh4_node_bytes(out) + bvh4_leaf_bytes(out) >= BVH_WIDE_QUANT_BYTES)
-        (void)accel_quantize8(out);
     out->dropped = c.drop ? bvh->prim_count - layout_triangles(out) : 0;
     /* A taken block may be larger than the layout and written past it
      * (a parallel build's refs, accel_build_parallel_triangles): pages
@@ -2083,10 +2075,6 @@ int accel_refit4(struct bvh4 *wide, const struct bvh *bvh, const float *tri)
             n++;
         fill_packet(&wide->packets[p], tri, NULL, slot, n, 1);
     }
-    /* The quantized mirror from the refitted boxes (a failure releases it:
-     * the walks then read nodes8). */
-    if (wide->nodes8q)
-        (void)accel_quantize8(wide);
     return 0;
 }
 
@@ -2103,7 +2091,6 @@ uint64_t bvh4_leaf_bytes(const struct bvh4 *wide)
 
 void bvh4_release(struct bvh4 *wide)
 {
-    accel_quantize8_release(wide);
     rt_free_large(&wide->raw);
     rt_free(wide->source);
     rt_free(wide->packet_slot);

@@ -76,7 +76,6 @@
 #ifndef RT_TRACE_BVH4_LAYOUT_H
 #define RT_TRACE_BVH4_LAYOUT_H
 
-#include <stddef.h>
 #include <stdint.h>
 
 #include "base/alloc.h"
@@ -132,11 +131,6 @@
  * it. */
 #define BVH_WIDE_STREAM_BYTES ((uint64_t)16 << 20)
 
-/* The layout size from which an 8-wide triangle layout gets a quantized
- * mirror of its nodes (struct bvh8q_node): half the node lines a ray
- * touches.  PROTOTYPE: 0 (every layout) while measuring. */
-#define BVH_WIDE_QUANT_BYTES ((uint64_t)1)
-
 struct bvh4_node {
     float bounds[6][4];
     uint32_t child[4];
@@ -153,63 +147,6 @@ struct bvh8_node {
     uint8_t order[8][3];
 };
 typedef char bvh8_node_is_256_bytes[sizeof(struct bvh8_node) == 256 ? 1 : -1];
-
-/* The part of an 8-wide node the walk reads after its box test: the
- * children's words, counts and per-octant orders, bytes 192..255 of a
- * struct bvh8_node and bytes 64..127 of a struct bvh8q_node (the walks'
- * push helpers take either node's through this struct). */
-struct bvh8_links {
-    uint32_t child[8];
-    uint8_t count[8];
-    uint8_t order[8][3];
-};
-typedef char bvh8_links_is_64_bytes[sizeof(struct bvh8_links) == 64 ? 1 : -1];
-typedef char bvh8_links_match_node[offsetof(struct bvh8_node, child) == 192 &&
-                                           offsetof(struct bvh8_node, count) == 224 &&
-                                           offsetof(struct bvh8_node, order) == 232 &&
-                                           offsetof(struct bvh8_links, count) == 32 &&
-                                           offsetof(struct bvh8_links, order) == 40
-                                       ? 1
-                                       : -1];
-
-/*
- * 8-wide node with quantized child boxes (128 bytes, two cache lines,
- * 64-byte aligned), the mirror of a struct bvh8_node that the single-ray
- * walks read on layouts beyond the caches (struct bvh4, nodes8q).  The
- * child boxes as 8-bit multiples of a power-of-two step per axis from a
- * float origin, as Ylitie, Karras and Laine 2017 (sec. 3.1) store them:
- *
- *   byte   0.. 11  origin[3]  float
- *   byte  12.. 14  exp[3]     the step's biased exponent per axis: the
- *                  step is the float whose bits are exp << 23 (a normal
- *                  power of two, 2^-126 .. 2^127)
- *   byte  15       valid      bit l set when lane l is a child (the
- *                  float node's unused lanes hold the empty box, which
- *                  no quantized box can stand for)
- *   byte  16.. 63  q[0..5][8] rows as bounds[6][8]: lane l's min x
- *                  decodes to fma(q[0][l], step x, origin x), a single
- *                  rounding (the product is exact), and so on
- *   byte  64..127  links      as the float node's
- *
- * Every decoded box contains the float box it stands for
- * (accel_quantize8_node steps q outwards until it does), and every slab
- * test the walks use is monotonic in the bounds, so a ray that passes a
- * float box passes its decoded box: the quantized walk visits a superset
- * of the float walk's nodes and leaves, and the closest hit and the tie
- * rule do not depend on which extra leaves it tests (traverse_wide.h).
- */
-struct bvh8q_node {
-    float origin[3];
-    uint8_t exp[3];
-    uint8_t valid;
-    uint8_t q[6][8];
-    struct bvh8_links links;
-};
-typedef char bvh8q_node_is_128_bytes[sizeof(struct bvh8q_node) == 128 &&
-                                             offsetof(struct bvh8q_node, q) == 16 &&
-                                             offsetof(struct bvh8q_node, links) == 64
-                                         ? 1
-                                         : -1];
 
 struct tri4_packet {
     float v[3][3][4];
@@ -261,13 +198,6 @@ struct bvh4 {
     /* The nodes and packets in one block (rt_malloc_large: 2 MB huge
      * pages where the OS offers them). */
     struct rt_large_block raw;
-    /* 8-wide triangle layouts of BVH_WIDE_QUANT_BYTES or more: nodes8
-     * quantized (struct bvh8q_node, accel_quantize8), node for node, which
-     * the single-ray walks (walk1, closest and any hit) read instead of
-     * nodes8; NULL elsewhere, or when a node's boxes cannot be quantized
-     * (a non-finite bound).  Requantized by accel_refit4. */
-    struct bvh8q_node *nodes8q;
-    struct rt_large_block q_raw;
 };
 
 /*
@@ -354,19 +284,6 @@ int accel_refit4(struct bvh4 *wide, const struct bvh *bvh, const float *tri);
  * nine coordinates when it has zero area (the layout above).  Every
  * packet lane is written by this; implemented in lib/accel. */
 void accel_set_packet_lane(struct tri4_packet *p, uint32_t lane, const float v[9]);
-
-/* The quantized mirror (struct bvh8q_node) of wide's nodes8: (re)written
- * in place where it exists, else allocated; returns 0, or -1 when a node
- * cannot be quantized or on allocation failure, with wide->nodes8q
- * released (NULL: the walks read nodes8).  Implemented in
- * lib/accel/quantize8.c. */
-int accel_quantize8(struct bvh4 *wide);
-/* One node: *q from *n (every lane's decoded box containing n's);
- * returns 0, or -1 when a child's bound is not finite or its decoded box
- * would not be (q is then unspecified). */
-int accel_quantize8_node(struct bvh8q_node *q, const struct bvh8_node *n);
-/* Frees the mirror; safe without one. */
-void accel_quantize8_release(struct bvh4 *wide);
 
 /* Node and packet bytes of a layout (the memory table). */
 uint64_t bvh4_node_bytes(const struct bvh4 *wide);

@@ -125,16 +125,13 @@ static inline void pair8_start(const struct bvh4 *wide, struct pair8_slot *q,
         tri4_ray_init_node_org(&s->r4, &lanes, r[3]);
     const int octant = _mm_movemask_ps(lanes.dir) & 7;
     const uint8_t *rows = wide8_rows[octant];
-    /* EXPERIMENT: the quantized mirror (every layout has one in this build). */
-    const char *const node_base = (const char *)(const void *)wide->nodes8q;
-#define PAIR8_QROW(off) (16u + (off) / 4u)
-    q->row_nx = node_base + PAIR8_QROW(rows[0]);
-    q->row_ny = node_base + PAIR8_QROW(rows[1]);
-    q->row_nz = node_base + PAIR8_QROW(rows[2]);
-    q->row_fx = node_base + PAIR8_QROW(rows[3]);
-    q->row_fy = node_base + PAIR8_QROW(rows[4]);
-    q->row_fz = node_base + PAIR8_QROW(rows[5]);
-#undef PAIR8_QROW
+    const char *const node_base = (const char *)(const void *)wide->nodes8;
+    q->row_nx = node_base + rows[0];
+    q->row_ny = node_base + rows[1];
+    q->row_nz = node_base + rows[2];
+    q->row_fx = node_base + rows[3];
+    q->row_fy = node_base + rows[4];
+    q->row_fz = node_base + rows[5];
     q->octant = octant;
     q->index = index;
     w->sp = 0;
@@ -159,12 +156,12 @@ static inline void pair8_start(const struct bvh4 *wide, struct pair8_slot *q,
 __attribute__((always_inline))
 #endif
 static inline void pair8_prefetch_top(const struct pair8_slot *q, uint32_t sp,
-                                      const struct bvh8q_node *nodes,
+                                      const struct bvh8_node *nodes,
                                       const struct tri4_packet *packets)
 {
     const uint32_t top = q->st_child[sp - 1];
     const char *a = q->st_count[sp - 1] ? (const char *)&packets[top] : (const char *)&nodes[top];
-    WIDE_PREFETCH_LINES(a, q->st_count[sp - 1] ? 3 : 2);
+    WIDE_PREFETCH_LINES(a, 3);
 }
 
 /* walk_wide8_ray's pop: the stack's entries from sp down, those a
@@ -204,7 +201,7 @@ static inline int pair8_step(const struct bvh4 *wide, struct pair8_slot *q,
                              struct pair8_counts *c, int *answer)
 {
     struct wide_state *const s = &q->rs.s;
-    const struct bvh8q_node *const nodes = wide->nodes8q;
+    const struct bvh8_node *const nodes = wide->nodes8;
     const struct tri4_packet *const packets = wide->packets;
     /* As walk_wide8_ray: the stack top's prefetch only in closest-hit
      * walks over a layout with prefetch_top (leave_early). */
@@ -214,13 +211,7 @@ static inline int pair8_step(const struct bvh4 *wide, struct pair8_slot *q,
         const float node_limit = any_hit ? q->any_limit : s->box_limit;
         const uint32_t cur = w->cur;
         const size_t node_off = (size_t)cur * sizeof(nodes[0]);
-        const struct bvh8q_node *const qn = &nodes[cur];
-        const struct bvh8_links *const n = &qn->links;
-        const __m256i q_lane_bits = _mm256_setr_epi32(1 << 24, 1 << 25, 1 << 26, 1 << 27, 1 << 28,
-                                                      1 << 29, 1 << 30, (int)(1u << 31));
-        __m256 q_ox, q_oy, q_oz, q_sx, q_sy, q_sz;
-        const __m256i q_head = wide8q_head(qn, _mm256_set1_epi32(0x7f800000), &q_ox, &q_oy, &q_oz,
-                                           &q_sx, &q_sy, &q_sz);
+        const struct bvh8_node *const n = &nodes[cur];
         const __m256 neg_org_x = q->neg_org_x, neg_org_y = q->neg_org_y,
                      neg_org_z = q->neg_org_z;
         const __m256 inv_x = q->inv_x, inv_y = q->inv_y, inv_z = q->inv_z;
@@ -229,17 +220,17 @@ static inline int pair8_step(const struct bvh4 *wide, struct pair8_slot *q,
             c->node_tests += 8;
         /* walk_wide8_ray's node test, operation for operation. */
         const __m256 tnx =
-            _mm256_mul_ps(_mm256_add_ps(neg_org_x, wide8q_row(q->row_nx + node_off, q_sx, q_ox)), inv_x);
+            _mm256_mul_ps(_mm256_add_ps(neg_org_x, wide8_bound(q->row_nx, node_off)), inv_x);
         const __m256 tfx =
-            _mm256_mul_ps(_mm256_add_ps(neg_org_x, wide8q_row(q->row_fx + node_off, q_sx, q_ox)), inv_x);
+            _mm256_mul_ps(_mm256_add_ps(neg_org_x, wide8_bound(q->row_fx, node_off)), inv_x);
         const __m256 tny =
-            _mm256_mul_ps(_mm256_add_ps(neg_org_y, wide8q_row(q->row_ny + node_off, q_sy, q_oy)), inv_y);
+            _mm256_mul_ps(_mm256_add_ps(neg_org_y, wide8_bound(q->row_ny, node_off)), inv_y);
         const __m256 tfy =
-            _mm256_mul_ps(_mm256_add_ps(neg_org_y, wide8q_row(q->row_fy + node_off, q_sy, q_oy)), inv_y);
+            _mm256_mul_ps(_mm256_add_ps(neg_org_y, wide8_bound(q->row_fy, node_off)), inv_y);
         const __m256 tnz =
-            _mm256_mul_ps(_mm256_add_ps(neg_org_z, wide8q_row(q->row_nz + node_off, q_sz, q_oz)), inv_z);
+            _mm256_mul_ps(_mm256_add_ps(neg_org_z, wide8_bound(q->row_nz, node_off)), inv_z);
         const __m256 tfz =
-            _mm256_mul_ps(_mm256_add_ps(neg_org_z, wide8q_row(q->row_fz + node_off, q_sz, q_oz)), inv_z);
+            _mm256_mul_ps(_mm256_add_ps(neg_org_z, wide8_bound(q->row_fz, node_off)), inv_z);
         const __m256 t0 = _mm256_castsi256_ps(_mm256_max_epi32(
             _mm256_max_epi32(_mm256_castps_si256(tnx), _mm256_castps_si256(tny)),
             _mm256_max_epi32(_mm256_castps_si256(tnz), tmin8)));
@@ -247,11 +238,8 @@ static inline int pair8_step(const struct bvh4 *wide, struct pair8_slot *q,
         const __m256 exit_x = _mm256_mul_ps(tfx, scale);
         const __m256 exit_y = _mm256_mul_ps(tfy, scale);
         const __m256 exit_z = _mm256_mul_ps(tfz, scale);
-        const __m256 q_valid = _mm256_castsi256_ps(
-            _mm256_cmpeq_epi32(_mm256_and_si256(q_head, q_lane_bits), q_lane_bits));
         const __m256 hit = _mm256_and_ps(
-            _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(t0, _mm256_set1_ps(node_limit), _CMP_LE_OQ),
-                                        q_valid),
+            _mm256_and_ps(_mm256_cmp_ps(t0, _mm256_set1_ps(node_limit), _CMP_LE_OQ),
                           _mm256_cmp_ps(t0, exit_x, _CMP_NGT_UQ)),
             _mm256_and_ps(_mm256_cmp_ps(t0, exit_y, _CMP_NGT_UQ),
                           _mm256_cmp_ps(t0, exit_z, _CMP_NGT_UQ)));
@@ -286,7 +274,7 @@ static inline int pair8_step(const struct bvh4 *wide, struct pair8_slot *q,
             w->cur = next;
             w->cur_count = next_count;
             if (!any_hit && !next_count)
-                WIDE_PREFETCH_LINES((const char *)&nodes[next], 2);
+                WIDE_PREFETCH_LINES((const char *)&nodes[next], 4);
             /* A leaf chosen here is tested at the slot's next turn, after
              * the other slots' steps: its packet's lines requested now
              * (walk_wide8_ray, which tests it at once, does not), so that

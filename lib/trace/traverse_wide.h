@@ -562,54 +562,10 @@ static inline __m256 wide8_bound(const char *b, size_t off)
 {
     return _mm256_load_ps((const float *)(const void *)(b + off));
 }
-#if defined(__FMA__)
-/* A quantized node's decode constants (struct bvh8q_node): the word of
- * bytes 12..15 (the three biased exponents and the valid byte) in every
- * lane, which the walk tests against each lane's valid bit; *o* the
- * origin per axis, *s* the step per axis, the float whose bits are the
- * exponent byte shifted into the exponent field (exp_bits masks the
- * other bytes off). */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline __m256i wide8q_head(const struct bvh8q_node *qn, __m256i exp_bits, __m256 *ox,
-                                  __m256 *oy, __m256 *oz, __m256 *sx, __m256 *sy, __m256 *sz)
-{
-    int32_t word;
-    memcpy(&word, (const char *)(const void *)qn + offsetof(struct bvh8q_node, exp),
-           sizeof(word));
-    const __m256i head = _mm256_set1_epi32(word);
-    *ox = _mm256_broadcast_ss(&qn->origin[0]);
-    *oy = _mm256_broadcast_ss(&qn->origin[1]);
-    *oz = _mm256_broadcast_ss(&qn->origin[2]);
-    *sx = _mm256_castsi256_ps(_mm256_and_si256(_mm256_slli_epi32(head, 23), exp_bits));
-    *sy = _mm256_castsi256_ps(_mm256_and_si256(_mm256_slli_epi32(head, 15), exp_bits));
-    *sz = _mm256_castsi256_ps(_mm256_and_si256(_mm256_slli_epi32(head, 7), exp_bits));
-    return head;
-}
-
-/* A quantized row's eight bounds: fma(code, step, origin), one rounding
- * (the product of an integer below 256 and a power of two is exact), as
- * accel_quantize8_node evaluated them (fmaf) when it made each decoded
- * box contain the float box. */
-static inline __m256 wide8q_row(const char *row, __m256 step, __m256 origin)
-{
-    const __m256i code = _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)row));
-    return _mm256_fmadd_ps(_mm256_cvtepi32_ps(code), step, origin);
-}
-#endif
-
 /* The any-hit walk from the set-up's lanes addresses a node's bounds
  * from the array's start plus the node's byte offset (walk_wide8_ray):
  * the bounds must open the node. */
 typedef char bvh8_node_bounds_first[offsetof(struct bvh8_node, bounds) == 0 ? 1 : -1];
-
-/* A float node's links (struct bvh8_links: the same bytes), which the
- * push helpers below read. */
-static inline const struct bvh8_links *wide8_links(const struct bvh8_node *n)
-{
-    return (const struct bvh8_links *)(const void *)n->child;
-}
 
 /* wide8_compress[m]: the bit positions set in m, highest first, one per
  * byte from the low byte (the rest 0): the left-packing permutation of
@@ -688,7 +644,7 @@ static const uint64_t wide8_compress[256] = {
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline void wide8_store(const struct bvh8_links *n, __m256i gather, __m256 t0,
+static inline void wide8_store(const struct bvh8_node *n, __m256i gather, __m256 t0,
                                unsigned pm, uint32_t *st_child, uint32_t *st_count, float *st_t,
                                uint32_t *sp)
 {
@@ -724,7 +680,7 @@ static inline void wide8_store(const struct bvh8_links *n, __m256i gather, __m25
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline __m256i wide8_order_lanes(const struct bvh8_links *n, int octant,
+static inline __m256i wide8_order_lanes(const struct bvh8_node *n, int octant,
                                         __m256i order_shift, uint32_t *order_out)
 {
     /* The octant's three order bytes as one little-endian word: the four
@@ -744,7 +700,7 @@ static inline __m256i wide8_order_lanes(const struct bvh8_links *n, int octant,
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline void wide8_store_ordered(const struct bvh8_links *n, __m256i lanes, unsigned pm,
+static inline void wide8_store_ordered(const struct bvh8_node *n, __m256i lanes, unsigned pm,
                                        __m256 t0, uint32_t *st_child, uint32_t *st_count,
                                        float *st_t, uint32_t *sp)
 {
@@ -756,7 +712,7 @@ static inline void wide8_store_ordered(const struct bvh8_links *n, __m256i lanes
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline void wide8_push(const struct bvh8_links *n, int octant, __m256 hit, __m256 t0,
+static inline void wide8_push(const struct bvh8_node *n, int octant, __m256 hit, __m256 t0,
                               __m256i order_shift, uint32_t *st_child, uint32_t *st_count,
                               float *st_t, uint32_t *sp, uint32_t *cur, uint32_t *cur_count)
 {
@@ -814,7 +770,7 @@ static inline __m256i wide8_child_offsets(__m256i child)
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline void wide8_front_compress(const struct bvh8_links *n, __mmask8 k, size_t *cur_off,
+static inline void wide8_front_compress(const struct bvh8_node *n, __mmask8 k, size_t *cur_off,
                                         uint32_t *cur_count)
 {
     const __m256i off =
@@ -844,7 +800,7 @@ static inline void wide8_front_compress(const struct bvh8_links *n, __mmask8 k, 
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline void wide8_push_compress(const struct bvh8_links *n, int octant, __m256 hit,
+static inline void wide8_push_compress(const struct bvh8_node *n, int octant, __m256 hit,
                                        __m256 t0, __m256i order_shift, uint32_t *st_child,
                                        uint32_t *st_count, float *st_t, uint32_t *sp,
                                        size_t *cur_off, uint32_t *cur_count)
@@ -880,7 +836,7 @@ static inline void wide8_push_compress(const struct bvh8_links *n, int octant, _
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline void wide8_push_stored(const struct bvh8_links *n, unsigned pm, __m256 t0,
+static inline void wide8_push_stored(const struct bvh8_node *n, unsigned pm, __m256 t0,
                                      uint32_t *st_child, uint32_t *st_count, uint32_t *sp,
                                      uint32_t *cur, uint32_t *cur_count)
 {
@@ -978,7 +934,7 @@ static inline unsigned wide8_any_front(__m256 t0, __m256 t1, __m256 hit)
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline void wide8_push_any(const struct bvh8_links *n, unsigned pm, __m256 hit, __m256 t0,
+static inline void wide8_push_any(const struct bvh8_node *n, unsigned pm, __m256 hit, __m256 t0,
                                   __m256 t1, uint32_t *st_child, uint32_t *st_count, uint32_t *sp,
                                   uint32_t *cur, uint32_t *cur_count)
 {
@@ -1066,7 +1022,7 @@ static inline int walk_wide8_impl(const struct bvh4 *wide, struct wide_state *s,
                     cur = n->child[l];
                     cur_count = n->count[l];
                 } else {
-                    wide8_push(wide8_links(n), octant, hit, t0, order_shift, st_child, st_count, st_t,
+                    wide8_push(n, octant, hit, t0, order_shift, st_child, st_count, st_t,
                                &sp, &cur, &cur_count);
                 }
                 continue;
@@ -1225,12 +1181,10 @@ static inline void tri4_ray_init_vec(struct tri4_ray *r, const struct trace_ray 
 #define WIDE8_RAY walk_wide8_ray
 #define WIDE8_RAY_LEAF8 0
 #define WIDE8_RAY_COMPRESS 1
-#define WIDE8_RAY_QUANT 0
 #include "trace/traverse_wide8_ray.h"
 #undef WIDE8_RAY
 #undef WIDE8_RAY_LEAF8
 #undef WIDE8_RAY_COMPRESS
-#undef WIDE8_RAY_QUANT
 
 /* A whole single-ray walk for a ray whose tmin is not >= 0 (negative or
  * NaN; rtTraceRays refuses both, query.c): walk_wide8_impl, whose node
@@ -1438,33 +1392,10 @@ WIDE8_LEAF_TEST(wide8_leaf8_any, wide_leaf8_test, 1, 1, 1, 0, 0)
 #define WIDE8_RAY walk_wide8_ray_leaf8
 #define WIDE8_RAY_LEAF8 1
 #define WIDE8_RAY_COMPRESS 1
-#define WIDE8_RAY_QUANT 0
 #include "trace/traverse_wide8_ray.h"
 #undef WIDE8_RAY
 #undef WIDE8_RAY_LEAF8
 #undef WIDE8_RAY_COMPRESS
-#undef WIDE8_RAY_QUANT
-
-#if defined(__FMA__)
-/* The walk over the quantized mirror (wide->nodes8q, struct bvh8q_node),
- * from the set-up's lanes, with the front child by the trailing-zero
- * count in every table: two lines a node instead of four, for the
- * layouts that miss the caches (BVH_WIDE_QUANT_BYTES).  Each decoded box
- * contains its float box, so it visits the float walk's nodes and leaves
- * and a few more: the same answers; its counts are its own. */
-#define WIDE8_RAY walk_wide8_ray_leaf8_q
-#define WIDE8_RAY_LEAF8 1
-#define WIDE8_RAY_COMPRESS 0
-#define WIDE8_RAY_QUANT 1
-#include "trace/traverse_wide8_ray.h"
-#undef WIDE8_RAY
-#undef WIDE8_RAY_LEAF8
-#undef WIDE8_RAY_COMPRESS
-#undef WIDE8_RAY_QUANT
-#define WIDE8_QUANT_WALKS 1
-#else
-#define WIDE8_QUANT_WALKS 0
-#endif
 
 #if TRACE_AVX512_TABLE
 /* The AVX-512 table's second form of the walk from the set-up's lanes:
@@ -1480,12 +1411,10 @@ WIDE8_LEAF_TEST(wide8_leaf8_any, wide_leaf8_test, 1, 1, 1, 0, 0)
 #define WIDE8_RAY walk_wide8_ray_leaf8_ctz
 #define WIDE8_RAY_LEAF8 1
 #define WIDE8_RAY_COMPRESS 0
-#define WIDE8_RAY_QUANT 0
 #include "trace/traverse_wide8_ray.h"
 #undef WIDE8_RAY
 #undef WIDE8_RAY_LEAF8
 #undef WIDE8_RAY_COMPRESS
-#undef WIDE8_RAY_QUANT
 #endif
 
 /* The single-ray walks with one 8-lane test for a leaf of two packets
@@ -1644,31 +1573,6 @@ WIDE8_WALK1(wide8_walk1_any_leaf8_stats, walk_wide8_ray_leaf8, 1, 1, 1)
 /* The any-hit walks for the layouts with any_longest (WIDE_ANY_LONGEST). */
 WIDE8_WALK1(wide8_walk1_any_longest_leaf8, walk_wide8_ray_leaf8, WIDE_ANY_LONGEST, 0, 1)
 WIDE8_WALK1(wide8_walk1_any_longest_leaf8_stats, walk_wide8_ray_leaf8, WIDE_ANY_LONGEST, 1, 1)
-#if WIDE8_QUANT_WALKS
-/* The walks over the quantized mirror (walk_wide8_ray_leaf8_q), for the
- * layouts that have one, in both forms of the AVX-512 table. */
-WIDE8_WALK1(wide8_walk1_closest_leaf8_q, walk_wide8_ray_leaf8_q, 0, 0, 0)
-WIDE8_WALK1(wide8_walk1_closest_early_leaf8_q, walk_wide8_ray_leaf8_q, 0, 0, 1)
-WIDE8_WALK1(wide8_walk1_any_leaf8_q, walk_wide8_ray_leaf8_q, 1, 0, 1)
-WIDE8_WALK1(wide8_walk1_any_longest_leaf8_q, walk_wide8_ray_leaf8_q, WIDE_ANY_LONGEST, 0, 1)
-WIDE8_WALK1(wide8_walk1_closest_leaf8_stats_q, walk_wide8_ray_leaf8_q, 0, 1, 0)
-WIDE8_WALK1(wide8_walk1_closest_early_leaf8_stats_q, walk_wide8_ray_leaf8_q, 0, 1, 1)
-WIDE8_WALK1(wide8_walk1_any_leaf8_stats_q, walk_wide8_ray_leaf8_q, 1, 1, 1)
-WIDE8_WALK1(wide8_walk1_any_longest_leaf8_stats_q, walk_wide8_ray_leaf8_q, WIDE_ANY_LONGEST, 1, 1)
-
-/* walk1 over the quantized mirror, or NULL for a layout without one. */
-static trace_walk1_fn wide8_walk1_quant(const struct bvh4 *wide, int any_hit)
-{
-    if (!wide->nodes8q)
-        return NULL;
-    if (any_hit)
-        return wide->any_longest ? wide8_walk1_any_longest_leaf8_q : wide8_walk1_any_leaf8_q;
-    return wide->prefetch_top ? wide8_walk1_closest_early_leaf8_q : wide8_walk1_closest_leaf8_q;
-}
-#else
-#define wide8_walk1_quant(wide, any_hit) ((trace_walk1_fn)NULL)
-#endif
-
 #if TRACE_AVX512_TABLE
 /* The same walks with the front child by the trailing-zero count
  * (walk_wide8_ray_leaf8_ctz); the any_longest walks take it so in both
@@ -1690,9 +1594,6 @@ static trace_walk1_fn TRACE_WIDE_WALK1(const struct bvh4 *wide, int any_hit)
 {
     if (wide->width != 8 || !wide->node_count)
         return NULL;
-    const trace_walk1_fn quant = wide8_walk1_quant(wide, any_hit);
-    if (quant)
-        return quant;
     if (any_hit)
         return wide->any_longest ? wide8_walk1_any_longest_leaf8 : wide8_walk1_any_leaf8;
     return wide->prefetch_top ? wide8_walk1_closest_early_leaf8 : wide8_walk1_closest_leaf8;
@@ -1704,9 +1605,6 @@ static trace_walk1_fn TRACE_WIDE_WALK1_CTZ(const struct bvh4 *wide, int any_hit)
 {
     if (wide->width != 8 || !wide->node_count)
         return NULL;
-    const trace_walk1_fn quant = wide8_walk1_quant(wide, any_hit);
-    if (quant)
-        return quant;
     if (any_hit)
         return wide->any_longest ? wide8_walk1_any_longest_leaf8 : wide8_walk1_any_leaf8_ctz;
     return wide->prefetch_top ? wide8_walk1_closest_early_leaf8_ctz
@@ -1964,17 +1862,6 @@ static inline int walk_wide_single1(const struct bvh4 *wide, const struct bvh *b
 {
     (void)ctz; /* unused where WIDE8_WALK1_PICK ignores it */
 #if defined(__AVX__)
-#if WIDE8_QUANT_WALKS
-    if (wide->width == 8 && wide->node_count && wide->nodes8q) {
-        const trace_walk1_fn qwalk =
-            counters ? (any_hit ? (wide->any_longest ? wide8_walk1_any_longest_leaf8_stats_q
-                                                     : wide8_walk1_any_leaf8_stats_q)
-                                : (wide->prefetch_top ? wide8_walk1_closest_early_leaf8_stats_q
-                                                      : wide8_walk1_closest_leaf8_stats_q))
-                     : wide8_walk1_quant(wide, any_hit);
-        return qwalk(wide, org, dir, tmin, t_max, hit, counters);
-    }
-#endif
     if (wide->width == 8 && wide->node_count) {
         if (counters) {
             if (any_hit)

@@ -16,11 +16,6 @@
  * whose front child the AVX-512 table may take by compression (by_off
  * below), 0 for the AVX-512 table's copy that takes it by the trailing-zero
  * count as the AVX2 table does (walk_wide8_ray_leaf8_ctz, traverse_wide.h).
- * WIDE8_RAY_QUANT: 1 for the copy that reads the quantized mirror
- * (wide->nodes8q, struct bvh8q_node) instead of nodes8, from the set-up's
- * lanes only (lanes not NULL) and with WIDE8_RAY_COMPRESS 0: each row of
- * a node decoded (wide8q_row) into floats that contain the float node's,
- * then the same test; else 0.
  */
 #if defined(__GNUC__)
 __attribute__((always_inline))
@@ -71,28 +66,10 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
      * loads, one step more on the chain from a node's child word to its bounds,
      * which every node of a walk waits for.  The same addresses, so the same
      * bounds. */
-#if WIDE8_RAY_QUANT
-    /* The quantized rows: row k's eight codes at byte 16 + 8 k of a
-     * 128-byte node (bvh4_layout.h), where the float row is 32 k of 256. */
-    const char *const node_base = (const char *)(const void *)wide->nodes8q;
-#define WIDE8_QROW(off) (offsetof(struct bvh8q_node, q) + (off) / sizeof(nodes[0].bounds[0]) * 8u)
-    const char *row_nx = node_base + WIDE8_QROW(near_x), *row_fx = node_base + WIDE8_QROW(far_x);
-    const char *row_ny = node_base + WIDE8_QROW(near_y), *row_fy = node_base + WIDE8_QROW(far_y);
-    const char *row_nz = node_base + WIDE8_QROW(near_z), *row_fz = node_base + WIDE8_QROW(far_z);
-#undef WIDE8_QROW
-    const size_t node_bytes = sizeof(struct bvh8q_node);
-    /* The lane bits of the node's valid byte (byte 15: bits 24..31 of
-     * the word at byte 12, wide8q_head), and the exponent field's. */
-    const __m256i q_lane_bits = _mm256_setr_epi32(1 << 24, 1 << 25, 1 << 26, 1 << 27, 1 << 28,
-                                                  1 << 29, 1 << 30, (int)(1u << 31));
-    const __m256i q_exp_bits = _mm256_set1_epi32(0x7f800000);
-#else
     const char *const node_base = (const char *)(const void *)nodes;
     const char *row_nx = node_base + near_x, *row_fx = node_base + far_x;
     const char *row_ny = node_base + near_y, *row_fy = node_base + far_y;
     const char *row_nz = node_base + near_z, *row_fz = node_base + far_z;
-    const size_t node_bytes = sizeof(nodes[0]);
-#endif
 #if defined(__GNUC__)
     /* Opaque values: without the asm GCC keeps the row offsets in stack
      * slots and adds the array's start to each again after every leaf
@@ -119,7 +96,7 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
      * 2^24 nodes or packets or more to the float walk.  Elsewhere cur alone
      * (cur_off's stores are dead). */
 #if TRACE_AVX512_TABLE
-    const int by_off = WIDE8_RAY_COMPRESS && !WIDE8_RAY_QUANT && (any_hit == 0 || any_hit == 1) && lanes;
+    const int by_off = WIDE8_RAY_COMPRESS && (any_hit == 0 || any_hit == 1) && lanes;
 #else
     const int by_off = 0;
 #endif
@@ -183,8 +160,8 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
         if (!any_hit && prefetch_top && sp) {                                                     \
             const uint32_t next = st_child[sp - 1];                                               \
             const char *a = st_count[sp - 1] ? (const char *)&packets[next]                       \
-                                             : node_base + (size_t)next * node_bytes;             \
-            WIDE_PREFETCH_LINES(a, WIDE8_RAY_QUANT ? 2 : 3);                                      \
+                                             : (const char *)&nodes[next];                        \
+            WIDE_PREFETCH_LINES(a, 3);                                                            \
         }                                                                                         \
     } while (0)
     for (;;) {
@@ -262,23 +239,11 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                 _mm256_castps_si256(_mm256_set1_ps(rv->tmin)), _mm256_setzero_si256());
             /* Inner nodes until a leaf lane comes up (or the stack empties). */
             while (!cur_count) {
-                const size_t node_off = by_off ? cur_off : (size_t)cur * node_bytes;
-#if WIDE8_RAY_QUANT
-                const struct bvh8q_node *const qn =
-                    (const struct bvh8q_node *)(const void *)(node_base + node_off);
-                const struct bvh8_links *const nl = &qn->links;
-                /* The node's decode constants (wide8q_head): the origin
-                 * and the step per axis, and the valid lanes. */
-                __m256 q_ox, q_oy, q_oz, q_sx, q_sy, q_sz;
-                const __m256i q_head = wide8q_head(qn, q_exp_bits, &q_ox, &q_oy, &q_oz, &q_sx,
-                                                   &q_sy, &q_sz);
-#else
+                const size_t node_off = by_off ? cur_off : (size_t)cur * sizeof(nodes[0]);
                 const struct bvh8_node *n =
                     by_off ? (const struct bvh8_node *)(const void *)(node_base + node_off)
                            : &nodes[cur];
                 const char *b = (const char *)(const void *)n->bounds;
-                const struct bvh8_links *const nl = wide8_links(n);
-#endif
                 if (stats)
                     node_tests += 8;
                 /* isect_box's slabs, bit for bit: (bound - org) * inv per
@@ -305,34 +270,30 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                  *   holds when it holds against each; a far NaN (skipped
                  *   by the exit's fold, the inf taking its place) passes
                  *   its comparison as unordered (!(entry > far)). */
-#if WIDE8_RAY_QUANT
-#define WIDE8_ROW_BOUND(row, off, ax) wide8q_row(row + node_off, q_s##ax, q_o##ax)
-#else
-#define WIDE8_ROW_BOUND(row, off, ax)                                                             \
+#define WIDE8_ROW_BOUND(row, off)                                                                 \
     (lanes ? wide8_bound(row, node_off) : wide8_bound(b, off))
-#endif
                 __m256 tnx, tfx, tny, tfy, tnz, tfz;
                 if (fused) {
                     /* node_fused.h: near fma(b, i, cn), far fma(b, is, cf),
                      * the far already widened (no scale below). */
-                    tnx = _mm256_fmadd_ps(WIDE8_ROW_BOUND(row_nx, near_x, x), inv_x, neg_org_x);
-                    tfx = _mm256_fmadd_ps(WIDE8_ROW_BOUND(row_fx, far_x, x), inv_s_x, far_c_x);
-                    tny = _mm256_fmadd_ps(WIDE8_ROW_BOUND(row_ny, near_y, y), inv_y, neg_org_y);
-                    tfy = _mm256_fmadd_ps(WIDE8_ROW_BOUND(row_fy, far_y, y), inv_s_y, far_c_y);
-                    tnz = _mm256_fmadd_ps(WIDE8_ROW_BOUND(row_nz, near_z, z), inv_z, neg_org_z);
-                    tfz = _mm256_fmadd_ps(WIDE8_ROW_BOUND(row_fz, far_z, z), inv_s_z, far_c_z);
+                    tnx = _mm256_fmadd_ps(WIDE8_ROW_BOUND(row_nx, near_x), inv_x, neg_org_x);
+                    tfx = _mm256_fmadd_ps(WIDE8_ROW_BOUND(row_fx, far_x), inv_s_x, far_c_x);
+                    tny = _mm256_fmadd_ps(WIDE8_ROW_BOUND(row_ny, near_y), inv_y, neg_org_y);
+                    tfy = _mm256_fmadd_ps(WIDE8_ROW_BOUND(row_fy, far_y), inv_s_y, far_c_y);
+                    tnz = _mm256_fmadd_ps(WIDE8_ROW_BOUND(row_nz, near_z), inv_z, neg_org_z);
+                    tfz = _mm256_fmadd_ps(WIDE8_ROW_BOUND(row_fz, far_z), inv_s_z, far_c_z);
                 } else {
-                    tnx = _mm256_mul_ps(_mm256_add_ps(neg_org_x, WIDE8_ROW_BOUND(row_nx, near_x, x)),
+                    tnx = _mm256_mul_ps(_mm256_add_ps(neg_org_x, WIDE8_ROW_BOUND(row_nx, near_x)),
                                         inv_x);
-                    tfx = _mm256_mul_ps(_mm256_add_ps(neg_org_x, WIDE8_ROW_BOUND(row_fx, far_x, x)),
+                    tfx = _mm256_mul_ps(_mm256_add_ps(neg_org_x, WIDE8_ROW_BOUND(row_fx, far_x)),
                                         inv_x);
-                    tny = _mm256_mul_ps(_mm256_add_ps(neg_org_y, WIDE8_ROW_BOUND(row_ny, near_y, y)),
+                    tny = _mm256_mul_ps(_mm256_add_ps(neg_org_y, WIDE8_ROW_BOUND(row_ny, near_y)),
                                         inv_y);
-                    tfy = _mm256_mul_ps(_mm256_add_ps(neg_org_y, WIDE8_ROW_BOUND(row_fy, far_y, y)),
+                    tfy = _mm256_mul_ps(_mm256_add_ps(neg_org_y, WIDE8_ROW_BOUND(row_fy, far_y)),
                                         inv_y);
-                    tnz = _mm256_mul_ps(_mm256_add_ps(neg_org_z, WIDE8_ROW_BOUND(row_nz, near_z, z)),
+                    tnz = _mm256_mul_ps(_mm256_add_ps(neg_org_z, WIDE8_ROW_BOUND(row_nz, near_z)),
                                         inv_z);
-                    tfz = _mm256_mul_ps(_mm256_add_ps(neg_org_z, WIDE8_ROW_BOUND(row_fz, far_z, z)),
+                    tfz = _mm256_mul_ps(_mm256_add_ps(neg_org_z, WIDE8_ROW_BOUND(row_fz, far_z)),
                                         inv_z);
                 }
 #undef WIDE8_ROW_BOUND
@@ -355,10 +316,6 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                 __mmask8 k1 = _mm256_cmp_ps_mask(t0, exit_x, _CMP_NGT_UQ);
                 __mmask8 k2 = _mm256_cmp_ps_mask(t0, exit_y, _CMP_NGT_UQ);
                 __mmask8 k3 = _mm256_cmp_ps_mask(t0, exit_z, _CMP_NGT_UQ);
-#if WIDE8_RAY_QUANT
-                /* The unused lanes off (their codes stand for no box). */
-                k0 = _kand_mask8(k0, _mm256_test_epi32_mask(q_head, q_lane_bits));
-#endif
 #if defined(__GNUC__)
                 __asm__("" : "+k"(k0), "+k"(k1), "+k"(k2), "+k"(k3));
 #endif
@@ -366,17 +323,8 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                     (unsigned)_kand_mask8(_kand_mask8(k0, k1), _kand_mask8(k2, k3));
                 const __m256 hit = _mm256_castsi256_ps(_mm256_movm_epi32((__mmask8)mask));
 #else
-#if WIDE8_RAY_QUANT
-                /* The unused lanes off (their codes stand for no box). */
-                const __m256 q_valid = _mm256_castsi256_ps(
-                    _mm256_cmpeq_epi32(_mm256_and_si256(q_head, q_lane_bits), q_lane_bits));
-#else
-                const __m256 q_valid = _mm256_castsi256_ps(_mm256_set1_epi32(-1));
-#endif
                 const __m256 hit = _mm256_and_ps(
-                    _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(t0, _mm256_set1_ps(node_limit),
-                                                              _CMP_LE_OQ),
-                                                q_valid),
+                    _mm256_and_ps(_mm256_cmp_ps(t0, _mm256_set1_ps(node_limit), _CMP_LE_OQ),
                                   _mm256_cmp_ps(t0, exit_x, _CMP_NGT_UQ)),
                     _mm256_and_ps(_mm256_cmp_ps(t0, exit_y, _CMP_NGT_UQ),
                                   _mm256_cmp_ps(t0, exit_z, _CMP_NGT_UQ)));
@@ -398,15 +346,15 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                          * register allocation (performance-log.md, round
                          * 46). */
                         if (by_off)
-                            wide8_front_compress(nl, _kand_mask8(_kand_mask8(k0, k1),
+                            wide8_front_compress(n, _kand_mask8(_kand_mask8(k0, k1),
                                                                 _kand_mask8(k2, k3)),
                                                  &cur_off, &cur_count);
                         else
 #endif
                         {
                             const unsigned l = (unsigned)__builtin_ctz(mask);
-                            cur = nl->child[l];
-                            cur_count = nl->count[l];
+                            cur = n->child[l];
+                            cur_count = n->count[l];
                         }
                     } else {
                         if (any_hit == WIDE_ANY_LONGEST) {
@@ -420,29 +368,29 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                                 _mm256_min_ps(_mm256_mul_ps(tfy, scale),
                                               _mm256_min_ps(_mm256_mul_ps(tfx, scale),
                                                             _mm256_set1_ps(box_limit))));
-                            wide8_push_any(nl, mask, hit, t0, t1, st_child, st_count, &sp, &cur,
+                            wide8_push_any(n, mask, hit, t0, t1, st_child, st_count, &sp, &cur,
                                            &cur_count);
                         } else if (any_hit) {
 #if TRACE_AVX512_TABLE
                             if (any_hit == 1 && by_off) {
-                                wide8_front_compress(nl, _kand_mask8(_kand_mask8(k0, k1),
+                                wide8_front_compress(n, _kand_mask8(_kand_mask8(k0, k1),
                                                                     _kand_mask8(k2, k3)),
                                                      &cur_off, &cur_count);
-                                wide8_store(nl, wide8_gather_stored(mask), t0, mask, st_child,
+                                wide8_store(n, wide8_gather_stored(mask), t0, mask, st_child,
                                             st_count, NULL, &sp);
                             } else
 #endif
-                            wide8_push_stored(nl, mask, t0, st_child, st_count, &sp, &cur,
+                            wide8_push_stored(n, mask, t0, st_child, st_count, &sp, &cur,
                                               &cur_count);
                         }
                         else
 #if TRACE_AVX512_TABLE
                             if (by_off)
-                                wide8_push_compress(nl, octant, hit, t0, order_shift, st_child,
+                                wide8_push_compress(n, octant, hit, t0, order_shift, st_child,
                                                     st_count, st_t, &sp, &cur_off, &cur_count);
                             else
 #endif
-                            wide8_push(nl, octant, hit, t0, order_shift, st_child, st_count, st_t,
+                            wide8_push(n, octant, hit, t0, order_shift, st_child, st_count, st_t,
                                        &sp, &cur, &cur_count);
                         if (prefetch_top) {
                             /* The new stack top, whose subtree comes after
@@ -451,10 +399,9 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                              * that its load overlaps cur's subtree instead
                              * of following it. */
                             const uint32_t top = st_child[sp - 1];
-                            const char *a = st_count[sp - 1]
-                                                ? (const char *)&packets[top]
-                                                : node_base + (size_t)top * node_bytes;
-                            WIDE_PREFETCH_LINES(a, WIDE8_RAY_QUANT ? 2 : 3);
+                            const char *a = st_count[sp - 1] ? (const char *)&packets[top]
+                                                             : (const char *)&nodes[top];
+                            WIDE_PREFETCH_LINES(a, 3);
                         }
                     }
                     /* The node the walk goes to next, its four lines
@@ -466,8 +413,8 @@ static inline int WIDE8_RAY(const struct bvh4 *wide, struct wide_state *s, int a
                      * (the packet walk's, round 38: level). */
                     if (!any_hit && !cur_count)
                         WIDE_PREFETCH_LINES(by_off ? node_base + cur_off
-                                                   : node_base + (size_t)cur * node_bytes,
-                                            WIDE8_RAY_QUANT ? 2 : 4);
+                                                   : (const char *)&nodes[cur],
+                                            4);
                     continue;
                 }
                 /* Pop (as below). */
