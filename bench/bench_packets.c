@@ -166,6 +166,17 @@ static uint32_t differ(const struct bench_hit *a, const struct bench_hit *b, uin
 static const unsigned hybrids[] = {0, 2, 3, 4, 6, 9};
 #define HYBRIDS (sizeof(hybrids) / sizeof(hybrids[0]))
 
+/* --only KEYS: the packets section's parts to run, by key: the first
+ * table's ray sets (primary, shadow, random), the hybrid threshold table
+ * (hybrid) and the API table (api); all without --only.  With --threads
+ * 1 or 2 the first and the API tables run that thread count only.  A
+ * comparison of two binaries or tables then takes seconds, not a minute,
+ * and can be repeated A B B A (docs/performance-log.md, round 62, zr2). */
+static int packets_selected(const struct bench_options *opts, const char *key)
+{
+    return !opts->only || bench_strategy_selected(opts->only, key);
+}
+
 static int packets_mesh(const struct bench_options *opts, const struct bench_mesh *mesh)
 {
     struct bench_accel acc;
@@ -197,13 +208,15 @@ static int packets_mesh(const struct bench_options *opts, const struct bench_mes
     for (int o = 0; o < 3; o++) {
         const struct bench_rays *set = &sets[order[o]];
         const int any_hit = order[o] == 2;
-        if (set->count == 0)
+        if (set->count == 0 || !packets_selected(opts, set->name))
             continue;
         report_progress("packets: %s: %s rays (%u)\n", mesh->name, set->name, set->count);
         struct packet_ctx pc = {&acc, TRACE_PACKET_HYBRID};
         uint32_t wrong = 0;
         for (int run = 0; run < opts->runs; run++) {
             for (int t = 0; t < 2; t++) {
+                if (opts->threads && opts->threads != t + 1)
+                    continue;
                 for (int p = 0; p < PATHS; p++) {
                     double ms = 0.0;
                     if (p == 0)
@@ -227,17 +240,20 @@ static int packets_mesh(const struct bench_options *opts, const struct bench_mes
                         goto out;
                     times[(t * PATHS + p) * opts->runs + run] = ms;
                 }
-                if (run == 0 && t == 0)
+                if (run == 0 && t == (opts->threads == 2))
                     wrong = differ(single, packed, set->count);
             }
         }
         double m[2][PATHS];
+        memset(m, 0, sizeof(m));
         for (int t = 0; t < 2; t++)
-            for (int p = 0; p < PATHS; p++) {
+            for (int p = 0; p < PATHS && !(opts->threads && opts->threads != t + 1); p++) {
                 double ms = bench_median(&times[(t * PATHS + p) * opts->runs], opts->runs);
                 m[t][p] = ms > 0.0 ? set->count / (ms * 1e3) : 0.0;
             }
         for (int t = 0; t < 2; t++) {
+            if (opts->threads && opts->threads != t + 1)
+                continue;
             report_row("%s|%s%s|%d|%.3f|%.3f|%.2f|%.3f|%.3f|%.2f|%.2f|%.2f|%u", mesh->name,
                        set->name, any_hit ? " (any hit)" : "", t + 1, m[t][0], m[t][1],
                        m[t][0] > 0 ? m[t][1] / m[t][0] : 0.0, m[t][2], m[t][3],
@@ -475,6 +491,8 @@ static int api_mesh(const struct bench_options *opts, const struct bench_mesh *m
         memcpy(&flat[3 * j], &mesh->positions[3 * (size_t)mesh->indices[j]], 3 * sizeof(float));
     int same = 1;
     for (int t = 0; t < 2; t++) {
+        if (opts->threads && opts->threads != t + 1)
+            continue;
         RTcontext ctx[2];
         for (int p = 0; p < 2; p++) {
             ctx[p] = api_context(mesh, flat, t + 1, p);
@@ -541,6 +559,8 @@ static int api_mesh(const struct bench_options *opts, const struct bench_mesh *m
                                                "frame, Whitted, clip plane"};
     for (int w = 0; w < API_WORK; w++)
         for (int t = 0; t < 2; t++) {
+            if (opts->threads && opts->threads != t + 1)
+                continue;
             double ms[2];
             for (int p = 0; p < 2; p++)
                 ms[p] = bench_median(&times[((t * API_WORK + w) * 2 + p) * opts->runs],
@@ -606,6 +626,8 @@ int bench_packets_section(const struct bench_options *opts, struct bench_mesh *m
     if (opts->kitchen_skipped)
         report_printf("\nThe BART kitchen (the fourth mesh) is skipped: %s.\n",
                       opts->kitchen_skipped);
+    if (!packets_selected(opts, "hybrid"))
+        return failed ? -1 : 0;
     report_printf("\nHybrid threshold (packet.h): Mrays per CPU second, one thread, median "
                   "of %d runs; "
                   "packets continue ray by ray below the threshold's number of active rays (0: "
@@ -614,7 +636,7 @@ int bench_packets_section(const struct bench_options *opts, struct bench_mesh *m
     report_table_header("mesh|rays|single|0|2|3|4|6|9");
     for (int m = 0; m < mesh_count; m++)
         failed |= hybrid_mesh(opts, &meshes[m]) != 0;
-    if (!opts->quick) {
+    if (!opts->quick && packets_selected(opts, "api")) {
         report_printf("\nThrough the API, %dx%d: CPU ms per call (process CPU time, all "
                       "threads; median of %d runs, on and off "
                       "interleaved), contexts \"threads=N packets=off|on\" with their default "
