@@ -470,17 +470,17 @@ static inline void pair8_stream(const struct bvh4 *wide, const float *rays, size
      * in memory). */
     while (!dry)
         for (int k = 0; k < PAIR8_SLOTS; k++)
-            if (!pair8_turn(wide, nodes, packets, &slot[k], &walk[k], &next, rays, stride, count, hits, got,
-                            walk1, any_hit, leave_early, stats, &counts[k], counters,
-                            ray_nodes)) {
+            if (!pair8_turn(wide, nodes, packets, &slot[k], &walk[k], &next, rays, stride,
+                            count, hits, got, walk1, any_hit, leave_early, stats, &counts[k],
+                            counters, ray_nodes)) {
                 live[k] = 0;
                 dry = 1;
             }
     for (int k = 0; k < PAIR8_SLOTS; k++)
         while (live[k])
-            live[k] = pair8_turn(wide, nodes, packets, &slot[k], &walk[k], &next, rays, stride, count, hits,
-                                 got, walk1, any_hit, leave_early, stats, &counts[k], counters,
-                                 ray_nodes);
+            live[k] = pair8_turn(wide, nodes, packets, &slot[k], &walk[k], &next, rays, stride,
+                                 count, hits, got, walk1, any_hit, leave_early, stats, &counts[k],
+                                 counters, ray_nodes);
 }
 #undef PAIR8_RAY
 
