@@ -189,6 +189,35 @@ static inline int pair8_pop(struct pair8_slot *q, struct pair8_walk *w, uint32_t
     return 1;
 }
 
+/* wide8_push (the closest-hit push in the octant's order) with the
+ * stack's new top entry also returned, in *top and *top_count, from the
+ * node: the child second in the order among the hit ones, which the push
+ * stores last.  The prefetch of the top (pair8_prefetch_top) read it back
+ * from the stack, a 4-byte load from the 32-byte store just made; from
+ * the node it is the same entry, so the same lines, without waiting on
+ * the store. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void pair8_push(const struct bvh8_node *n, int octant, __m256 hit, __m256 t0,
+                              uint32_t *st_child, uint32_t *st_count, float *st_t,
+                              uint32_t *sp, uint32_t *cur, uint32_t *cur_count, uint32_t *top,
+                              uint32_t *top_count)
+{
+    const __m256i order_shift = _mm256_setr_epi32(0, 3, 6, 9, 12, 15, 18, 21);
+    uint32_t order;
+    const __m256i lanes = wide8_order_lanes(n, octant, order_shift, &order);
+    const unsigned pm = (unsigned)_mm256_movemask_ps(_mm256_permutevar8x32_ps(hit, lanes));
+    wide8_store_ordered(n, lanes, pm, t0, st_child, st_count, st_t, sp);
+    const unsigned l = order >> (3 * (unsigned)__builtin_ctz(pm)) & 7u;
+    *cur = n->child[l];
+    *cur_count = n->count[l];
+    /* pm has two bits at least (the caller's mask did). */
+    const unsigned l2 = order >> (3 * (unsigned)__builtin_ctz(pm & (pm - 1u))) & 7u;
+    *top = n->child[l2];
+    *top_count = n->count[l2];
+}
+
 /* One step of slot q's walk: a node test (with its push or pop) when its
  * current entry is a node, else the leaf's call and the pop after it.
  * Returns 1 while the walk goes on; 0 when it has ended, with *answer
@@ -196,13 +225,11 @@ static inline int pair8_pop(struct pair8_slot *q, struct pair8_walk *w, uint32_t
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline int pair8_step(const struct bvh4 *wide, struct pair8_slot *q,
-                             struct pair8_walk *w, int any_hit, int leave_early, int stats,
-                             struct pair8_counts *c, int *answer)
+static inline int pair8_step(const struct bvh8_node *nodes, const struct tri4_packet *packets,
+                             struct pair8_slot *q, struct pair8_walk *w, int any_hit,
+                             int leave_early, int stats, struct pair8_counts *c, int *answer)
 {
     struct wide_state *const s = &q->rs.s;
-    const struct bvh8_node *const nodes = wide->nodes8;
-    const struct tri4_packet *const packets = wide->packets;
     /* As walk_wide8_ray: the stack top's prefetch only in closest-hit
      * walks over a layout with prefetch_top (leave_early). */
     const int prefetch_top = !any_hit && leave_early;
@@ -263,13 +290,18 @@ static inline int pair8_step(const struct bvh4 *wide, struct pair8_slot *q,
                     wide8_push_stored(n, mask, t0, q->st_child, q->st_count, &sp, &next,
                                       &next_count);
                 } else {
-                    const __m256i order_shift = _mm256_setr_epi32(0, 3, 6, 9, 12, 15, 18, 21);
-                    wide8_push(n, q->octant, hit, t0, order_shift, q->st_child, q->st_count,
-                               q->st_t, &sp, &next, &next_count);
+                    uint32_t top, top_count;
+                    pair8_push(n, q->octant, hit, t0, q->st_child, q->st_count, q->st_t, &sp,
+                               &next, &next_count, &top, &top_count);
+                    if (prefetch_top) {
+                        const char *a = top_count ? (const char *)&packets[top]
+                                                  : (const char *)&nodes[top];
+                        WIDE_PREFETCH_LINES(a, 3);
+                    }
                 }
                 w->sp = sp;
-                if (prefetch_top)
-                    pair8_prefetch_top(q, sp, nodes, packets);
+                /* The any-hit walks do not prefetch the top (prefetch_top
+                 * is 0 for them). */
             }
             w->cur = next;
             w->cur_count = next_count;
@@ -384,7 +416,8 @@ static inline int pair8_refill(const struct bvh4 *wide, struct pair8_slot *q,
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline int pair8_turn(const struct bvh4 *wide, struct pair8_slot *q,
+static inline int pair8_turn(const struct bvh4 *wide, const struct bvh8_node *nodes,
+                             const struct tri4_packet *packets, struct pair8_slot *q,
                              struct pair8_walk *w, uint32_t *next,
                              const float *rays, size_t stride, uint32_t count,
                              struct trace_hit *hits, unsigned char *got, trace_walk1_fn walk1,
@@ -392,7 +425,7 @@ static inline int pair8_turn(const struct bvh4 *wide, struct pair8_slot *q,
                              struct trace_counters *counters, uint32_t *ray_nodes)
 {
     int answer;
-    if (pair8_step(wide, q, w, any_hit, leave_early, stats, pc, &answer))
+    if (pair8_step(nodes, packets, q, w, any_hit, leave_early, stats, pc, &answer))
         return 1;
     got[q->index] = (unsigned char)answer;
     if (stats) {
@@ -420,26 +453,34 @@ static inline void pair8_stream(const struct bvh4 *wide, const float *rays, size
     struct pair8_walk walk[PAIR8_SLOTS];
     /* Only the counted streams use it (stats a constant 1). */
     struct pair8_counts counts[PAIR8_SLOTS];
+    /* The arrays' bases read once here: in the step, read through wide,
+     * they were reloaded every step (the leaf calls between). */
+    const struct bvh8_node *const nodes = wide->nodes8;
+    const struct tri4_packet *const packets = wide->packets;
     uint32_t next = 0;
     int live[PAIR8_SLOTS];
-    int all = 1;
+    int dry = 0;
     for (int k = 0; k < PAIR8_SLOTS; k++) {
         live[k] = pair8_refill(wide, &slot[k], &walk[k], &next, rays, stride, count, hits, got,
                                walk1, any_hit, stats, &counts[k], counters, ray_nodes);
-        all &= live[k];
+        dry |= !live[k];
     }
-    while (all)
-        for (int k = 0; k < PAIR8_SLOTS; k++) {
-            live[k] = pair8_turn(wide, &slot[k], &walk[k], &next, rays, stride, count, hits,
-                                 got, walk1, any_hit, leave_early, stats, &counts[k], counters,
-                                 ray_nodes);
-            all &= live[k];
-        }
+    /* live[k] written only when slot k's turn finds the stream dry: as
+     * `live[k] = turn(...)` it was a store every step (GCC kept the array
+     * in memory). */
+    while (!dry)
+        for (int k = 0; k < PAIR8_SLOTS; k++)
+            if (!pair8_turn(wide, nodes, packets, &slot[k], &walk[k], &next, rays, stride,
+                            count, hits, got, walk1, any_hit, leave_early, stats, &counts[k],
+                            counters, ray_nodes)) {
+                live[k] = 0;
+                dry = 1;
+            }
     for (int k = 0; k < PAIR8_SLOTS; k++)
         while (live[k])
-            live[k] = pair8_turn(wide, &slot[k], &walk[k], &next, rays, stride, count, hits,
-                                 got, walk1, any_hit, leave_early, stats, &counts[k], counters,
-                                 ray_nodes);
+            live[k] = pair8_turn(wide, nodes, packets, &slot[k], &walk[k], &next, rays, stride,
+                                 count, hits, got, walk1, any_hit, leave_early, stats, &counts[k],
+                                 counters, ray_nodes);
 }
 #undef PAIR8_RAY
 
