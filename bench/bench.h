@@ -408,6 +408,9 @@ void bench_current_projection(double m[16]);
 
 /* 1 when `key` is one of the comma-separated keys of `only` (--only). */
 int bench_strategy_selected(const char *only, const char *key);
+/* 1 when a section that runs one and two threads runs `threads` (1 or 2)
+ * under --threads (opts->threads 0: both). */
+int bench_threads_selected(const struct bench_options *opts, int threads);
 /* `rtbench dynamic-cpu` (bench_dynamic.c). */
 int bench_dynamic_cpu_section(const struct bench_options *opts);
 /* Registers a gnuplot script (written to DIR/name.gp, run at the end to

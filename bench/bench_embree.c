@@ -427,7 +427,7 @@ static int embree_trace_set(const struct bench_options *opts, const struct bench
     memset(times, 0, (size_t)paths * opts->runs * sizeof(*times));
     for (int run = 0; run < opts->runs; run++) {
         for (int t = 0; t < 2; t++) {
-            if (opts->threads && opts->threads != t + 1)
+            if (!bench_threads_selected(opts, t + 1))
                 continue;
             for (int p = 0; p < 1 + QUALITIES; p++) {
                 double ms;
@@ -542,7 +542,7 @@ static int embree_trace_mesh(const struct bench_options *opts, RTCDevice device,
             goto out;
         for (int t = 0; t < 2; t++) {
             const double *m = row.mrays[t];
-            if (opts->threads && opts->threads != t + 1)
+            if (!bench_threads_selected(opts, t + 1))
                 continue;
             report_row("%s|%s%s|%d|%.3f|%.3f|%.3f|%.2f|%.2f|%.2f%% (%llu, %u/%u)|%.2f%% (%llu, "
                        "%u/%u)|%.2f%%",

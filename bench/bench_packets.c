@@ -215,7 +215,7 @@ static int packets_mesh(const struct bench_options *opts, const struct bench_mes
         uint32_t wrong = 0;
         for (int run = 0; run < opts->runs; run++) {
             for (int t = 0; t < 2; t++) {
-                if (opts->threads && opts->threads != t + 1)
+                if (!bench_threads_selected(opts, t + 1))
                     continue;
                 for (int p = 0; p < PATHS; p++) {
                     double ms = 0.0;
@@ -246,13 +246,16 @@ static int packets_mesh(const struct bench_options *opts, const struct bench_mes
         }
         double m[2][PATHS];
         memset(m, 0, sizeof(m));
-        for (int t = 0; t < 2; t++)
-            for (int p = 0; p < PATHS && !(opts->threads && opts->threads != t + 1); p++) {
+        for (int t = 0; t < 2; t++) {
+            if (!bench_threads_selected(opts, t + 1))
+                continue;
+            for (int p = 0; p < PATHS; p++) {
                 double ms = bench_median(&times[(t * PATHS + p) * opts->runs], opts->runs);
                 m[t][p] = ms > 0.0 ? set->count / (ms * 1e3) : 0.0;
             }
+        }
         for (int t = 0; t < 2; t++) {
-            if (opts->threads && opts->threads != t + 1)
+            if (!bench_threads_selected(opts, t + 1))
                 continue;
             report_row("%s|%s%s|%d|%.3f|%.3f|%.2f|%.3f|%.3f|%.2f|%.2f|%.2f|%u", mesh->name,
                        set->name, any_hit ? " (any hit)" : "", t + 1, m[t][0], m[t][1],
@@ -491,7 +494,7 @@ static int api_mesh(const struct bench_options *opts, const struct bench_mesh *m
         memcpy(&flat[3 * j], &mesh->positions[3 * (size_t)mesh->indices[j]], 3 * sizeof(float));
     int same = 1;
     for (int t = 0; t < 2; t++) {
-        if (opts->threads && opts->threads != t + 1)
+        if (!bench_threads_selected(opts, t + 1))
             continue;
         RTcontext ctx[2];
         for (int p = 0; p < 2; p++) {
@@ -559,7 +562,7 @@ static int api_mesh(const struct bench_options *opts, const struct bench_mesh *m
                                                "frame, Whitted, clip plane"};
     for (int w = 0; w < API_WORK; w++)
         for (int t = 0; t < 2; t++) {
-            if (opts->threads && opts->threads != t + 1)
+            if (!bench_threads_selected(opts, t + 1))
                 continue;
             double ms[2];
             for (int p = 0; p < 2; p++)

@@ -361,7 +361,8 @@ static int trace_mesh(const struct bench_options *opts, struct bench_mesh *mesh,
         }
         if (plot_data)
             fprintf(plot_data, "\"%s/%s%s\" %.4f %.4f %.4f %.4f\n", mesh->name, sets[s].name,
-                    *any_tag ? " (any)" : "", res.mrays[0], res.mrays[1], res.mrays[2], res.mrays[3]);
+                    *any_tag ? " (any)" : "", res.mrays[0], res.mrays[1], res.mrays[2],
+                    res.mrays[3]);
         if (api_agree < 100.0) {
             report_check_failed();
             report_progress("trace: WARNING: %s/%s%s: the API disagrees with the direct path on "
@@ -585,7 +586,8 @@ int bench_trace_section(const struct bench_options *opts, struct bench_mesh *mes
     report_printf("Object BVH: binned SAH, %d bins (the library default). Primary rays: "
                   "%ux%u pinhole camera; random: %u rays, origins uniform in the bounds, "
                   "directions uniform on the sphere; shadow: from each primary hit to a point "
-                  "light, any hit; random (any hit): the random rays again, any hit. Median of %d runs. \"ours\": trace_closest/trace_any called "
+                  "light, any hit; random (any hit): the random rays again, any hit. Median "
+                  "of %d runs. \"ours\": trace_closest/trace_any called "
                   "directly (own pthread split, chunks of %d rays); \"API\": "
                   "rtTraceRays/rtOccludedRays on a context with threads=1/2. Mrays/s. "
                   "\"API = ours\": rays where the API's answer equals ours.\n\n",

@@ -582,3 +582,8 @@ int bench_strategy_selected(const char *only, const char *key)
             return 1;
     return 0;
 }
+
+int bench_threads_selected(const struct bench_options *opts, int threads)
+{
+    return !opts->threads || opts->threads == threads;
+}
