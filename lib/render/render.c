@@ -48,21 +48,6 @@
 #define RENDER_QUADS 0
 #endif
 
-/* The AVX2 and AVX-512 copies, compiled with FMA as well, take most of
- * the camera rays' quotients from one reciprocal and fused multiply-adds
- * (base/quotient_fma.h, Markstein's correctly rounded quotient): the
- * same doubles as the divisions, with a division where the helper's
- * operand tests refuse a lane.  A ray's direction and its cone's spread
- * are divided by the same length, and a row's points by the same w under
- * every projection whose inverse's w row has zero x and y coefficients
- * (rtFrustum, rtOrtho, gluPerspective under an affine modelview). */
-#if RENDER_QUADS
-#include "base/quotient_fma.h"
-#define RENDER_FMA QUOTIENT_FMA
-#else
-#define RENDER_FMA 0
-#endif
-
 /* The eye light's block pipeline of the shading copy for this copy's
  * instruction set (shade.h): the AVX-512 one in render_avx512.c, the
  * AVX2 one in render_avx2.c. */
@@ -411,73 +396,18 @@ static void unproject_row_fill(const struct render_pass *sh, const struct unproj
         last4[r] = _mm256_set1_pd(m[12 + r]);
     }
     __m256d sum4 = _mm256_setzero_pd();
-#if RENDER_FMA
-    /* The w of the row's first point, near and far, and their
-     * reciprocals: where a quad's w equal them (every point of every row
-     * under the usual projections), its six quotients need no division;
-     * elsewhere the quad's own reciprocals, two divisions for six. */
-    const __m256d w_first = _mm256_add_pd(_mm256_loadu_pd(&c->col[3][0]), axis4[3]);
-    const __m256d wn_row = _mm256_permute4x64_pd(
-        _mm256_add_pd(_mm256_add_pd(w_first, zn4[3]), last4[3]), 0);
-    const __m256d wf_row = _mm256_permute4x64_pd(
-        _mm256_add_pd(_mm256_add_pd(w_first, zf4[3]), last4[3]), 0);
-    const int row_ok = _mm256_movemask_pd(_mm256_and_pd(quotient_fma_divisor_ok(wn_row),
-                                                        quotient_fma_divisor_ok(wf_row))) == 15;
-    const __m256d yn_row = quotient_fma_reciprocal(wn_row);
-    const __m256d yf_row = quotient_fma_reciprocal(wf_row);
-#endif
     for (; first_pair + 3 < UNPROJECT_COLS; first_pair += 4) {
         const int i = first_pair;
         const __m256d s3 = _mm256_add_pd(_mm256_loadu_pd(&c->col[3][i]), axis4[3]);
         const __m256d wn = _mm256_add_pd(_mm256_add_pd(s3, zn4[3]), last4[3]);
         const __m256d wf = _mm256_add_pd(_mm256_add_pd(s3, zf4[3]), last4[3]);
-        __m256d num_n[3], num_f[3];
         for (int r = 0; r < 3; r++) {
             const __m256d s = _mm256_add_pd(_mm256_loadu_pd(&c->col[r][i]), axis4[r]);
-            num_n[r] = _mm256_add_pd(_mm256_add_pd(s, zn4[r]), last4[r]);
-            num_f[r] = _mm256_add_pd(_mm256_add_pd(s, zf4[r]), last4[r]);
-        }
-        __m256d n[3], f[3];
-#if RENDER_FMA
-        __m256d yn = yn_row, yf = yf_row;
-        int by_fma = 0;
-        if (row_ok && _mm256_movemask_pd(_mm256_and_pd(_mm256_cmp_pd(wn, wn_row, _CMP_EQ_OQ),
-                                                       _mm256_cmp_pd(wf, wf_row, _CMP_EQ_OQ))) ==
-                          15) {
-            /* Equal and not zero: the same doubles, so the same
-             * reciprocals. */
-            by_fma = 1;
-        } else if (_mm256_movemask_pd(_mm256_and_pd(quotient_fma_divisor_ok(wn),
-                                                    quotient_fma_divisor_ok(wf))) == 15) {
-            yn = quotient_fma_reciprocal(wn);
-            yf = quotient_fma_reciprocal(wf);
-            by_fma = 1;
-        }
-        if (by_fma) {
-            __m256d ok = _mm256_and_pd(quotient_fma_dividend_ok(num_n[0]),
-                                       quotient_fma_dividend_ok(num_f[0]));
-            for (int r = 1; r < 3; r++)
-                ok = _mm256_and_pd(ok, _mm256_and_pd(quotient_fma_dividend_ok(num_n[r]),
-                                                     quotient_fma_dividend_ok(num_f[r])));
-            by_fma = _mm256_movemask_pd(ok) == 15;
-        }
-        if (by_fma) {
-            for (int r = 0; r < 3; r++) {
-                n[r] = quotient_fma(num_n[r], wn, yn);
-                f[r] = quotient_fma(num_f[r], wf, yf);
-            }
-        } else
-#endif
-        {
-            for (int r = 0; r < 3; r++) {
-                n[r] = _mm256_div_pd(num_n[r], wn);
-                f[r] = _mm256_div_pd(num_f[r], wf);
-            }
-        }
-        for (int r = 0; r < 3; r++) {
-            _mm256_storeu_pd(&u->near_pt[r][i], n[r]);
-            _mm256_storeu_pd(&u->far_pt[r][i], f[r]);
-            sum4 = _mm256_add_pd(_mm256_add_pd(sum4, n[r]), f[r]);
+            const __m256d n = _mm256_div_pd(_mm256_add_pd(_mm256_add_pd(s, zn4[r]), last4[r]), wn);
+            const __m256d f = _mm256_div_pd(_mm256_add_pd(_mm256_add_pd(s, zf4[r]), last4[r]), wf);
+            _mm256_storeu_pd(&u->near_pt[r][i], n);
+            _mm256_storeu_pd(&u->far_pt[r][i], f);
+            sum4 = _mm256_add_pd(_mm256_add_pd(sum4, n), f);
         }
     }
     /* The four lanes' sums into the pair's (any order: only whether the
@@ -755,21 +685,8 @@ static inline int ray_quad(const struct unproject_row *a, const struct unproject
         _mm256_and_pd(_mm256_cmp_pd(len, _mm256_setzero_pd(), _CMP_GT_OQ),
                       _mm256_cmp_pd(len, _mm256_set1_pd(INFINITY), _CMP_LT_OQ)));
     _mm_storeu_ps(&pk->tmax[first], _mm256_cvtpd_ps(len));
-#if RENDER_FMA
-    /* One division for the direction's three quotients and the
-     * spread's (quotient_fma), where the operands allow. */
-    const __m256d inv_len = quotient_fma_reciprocal(len);
-    const int len_ok = _mm256_movemask_pd(_mm256_and_pd(
-                           _mm256_and_pd(quotient_fma_divisor_ok(len), quotient_fma_dividend_ok(d[0])),
-                           _mm256_and_pd(quotient_fma_dividend_ok(d[1]),
-                                         quotient_fma_dividend_ok(d[2])))) == 15;
-#endif
     for (int k = 0; k < 3; k++) {
-#if RENDER_FMA
-        d[k] = len_ok ? quotient_fma(d[k], len, inv_len) : _mm256_div_pd(d[k], len);
-#else
         d[k] = _mm256_div_pd(d[k], len);
-#endif
         dir_f[k] = _mm256_cvtpd_ps(d[k]);
         _mm_storeu_ps(&rays->dir[k][first], dir_f[k]);
     }
@@ -788,14 +705,7 @@ static inline int ray_quad(const struct unproject_row *a, const struct unproject
     const __m256d width = _mm256_max_pd(dist[1], _mm256_max_pd(dist[0], zero));
     const __m256d growth = _mm256_max_pd(_mm256_sub_pd(dist[3], dist[1]),
                                          _mm256_max_pd(_mm256_sub_pd(dist[2], dist[0]), zero));
-#if RENDER_FMA
-    const __m256d spread =
-        len_ok && _mm256_movemask_pd(quotient_fma_dividend_ok(growth)) == 15
-            ? quotient_fma(growth, len, inv_len)
-            : _mm256_div_pd(growth, len);
-#else
     const __m256d spread = _mm256_div_pd(growth, len);
-#endif
     const __m128 w = _mm256_cvtpd_ps(width), sp = _mm256_cvtpd_ps(spread);
     _mm_storeu_ps(&rays->width[first], w);
     _mm_storeu_ps(&rays->spread[first], sp);
