@@ -1121,7 +1121,7 @@ struct traced_block {
  * lower in all four, 1.494 -> 1.461 on average (the median-run ratio
  * 1.495 -> 1.44).  The tile's blocks take some 21 KB of stack, written
  * by the walks and read by the shading.  The camera rays of all the
- * tile's blocks are made before the first walk (see below; about 2 ms of
+ * tile's blocks are made before the first walk (see below; about 1.7-2 ms of
  * the 71 ms kitchen frame on a Zen 4, performance-log.md, round 63, zs2).
  */
 static void render_tile_eye_traced_first(struct render_pass *pass, struct shade_context *sc,
