@@ -1148,11 +1148,13 @@ static void render_tile_eye_traced_first(struct render_pass *pass, struct shade_
     /* The tile's camera rays all made before the first is traced: a
      * block's rays are one chain of long latencies (the length's square
      * root, the divisions by it, the cone's square roots, the spread's
-     * division), which between two traces had nothing to overlap with,
-     * the walk's mispredicted branches keeping the next block's chain
-     * out of the window; made in a row, the blocks' chains are
-     * independent and overlap.  The same rays, traced in the same
-     * order. */
+     * division; perf puts the samples after them), exposed between two
+     * walks; made in a row, the blocks' chains are independent and
+     * overlap, bound then by the divider's throughput, and the
+     * generation's code runs once a tile instead of alternating with the
+     * walk's (the L1i misses above).  Making them only one to four
+     * blocks ahead of the walk bought nothing (performance-log.md, round
+     * 63, zs2).  The same rays, traced in the same order. */
     for (int j = 0; j < n; j++) {
         struct traced_block *b = &blocks[j];
         b->found = trace_scene_closest_packet(sc->scene, &b->pk, b->hits, sc->counters);
