@@ -1120,7 +1120,9 @@ struct traced_block {
  * core (32 KB L1i as well), the same command, four quads at load 5:
  * lower in all four, 1.494 -> 1.461 on average (the median-run ratio
  * 1.495 -> 1.44).  The tile's blocks take some 21 KB of stack, written
- * by the walks and read by the shading.
+ * by the walks and read by the shading.  The camera rays of all the
+ * tile's blocks are made before the first walk (see below; about 1.7-2 ms of
+ * the 71 ms kitchen frame on a Zen 4, performance-log.md, round 63, zs2).
  */
 static void render_tile_eye_traced_first(struct render_pass *pass, struct shade_context *sc,
                                          int x0, int y0)
@@ -1141,8 +1143,21 @@ static void render_tile_eye_traced_first(struct render_pass *pass, struct shade_
             b->by = by;
             b->whole =
                 block_camera_rays(&cache, vp, x0, y0, bx, by, lanes, &b->pk, b->cone, &b->lanes);
-            b->found = trace_scene_closest_packet(sc->scene, &b->pk, b->hits, sc->counters);
         }
+    }
+    /* The tile's camera rays all made before the first is traced: a
+     * block's rays are one chain of long latencies (the length's square
+     * root, the divisions by it, the cone's square roots, the spread's
+     * division; perf puts the samples after them), exposed between two
+     * walks; made in a row, the blocks' chains are independent and
+     * overlap, bound then by the divider's throughput, and the
+     * generation's code runs once a tile instead of alternating with the
+     * walk's (the L1i misses above).  Making them only one to four
+     * blocks ahead of the walk bought nothing (performance-log.md, round
+     * 63, zs2).  The same rays, traced in the same order. */
+    for (int j = 0; j < n; j++) {
+        struct traced_block *b = &blocks[j];
+        b->found = trace_scene_closest_packet(sc->scene, &b->pk, b->hits, sc->counters);
     }
     struct eye_pipeline pipe = {.slot = 0, .full = 0};
     for (int j = 0; j < n; j++) {
