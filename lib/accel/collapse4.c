@@ -42,10 +42,6 @@
 
 #define MAX_WIDTH 8
 
-#if !defined(RT_WIDE_ORDER)
-#define RT_WIDE_ORDER 0
-#endif
-
 /* A leaf lane of triangles is one or two packets: the 8-wide walks with
  * leaf8 test two as one 8-lane call (traverse_wide.h, wide_leaf8_test). */
 typedef char wide_leaf_is_two_packets[BVH_WIDE_MAX_LEAF <= 8 ? 1 : -1];
@@ -1916,13 +1912,6 @@ static int collapse_wide(struct bvh4 *out, const struct bvh *bvh,
     out->packet_slot = packet_slot;
     out->raw = raw;
     out->dropped = c.drop ? bvh->prim_count - layout_triangles(out) : 0;
-#if RT_WIDE_ORDER
-    /* An experiment's switch (RT_WIDE_ORDER 1: preorder, lanes in order;
-     * 2: largest area first); a failure keeps breadth first. */
-    if (tri && packets) {
-        (void)accel_wide_reorder(out, RT_WIDE_ORDER == 2);
-    }
-#endif
     /* A taken block may be larger than the layout and written past it
      * (a parallel build's refs, accel_build_parallel_triangles): pages
      * the layout would otherwise hold for its lifetime. */

@@ -268,17 +268,6 @@ double accel_wide_sah_cost(const struct bvh4 *wide, double c_node, double c_pack
  * Implemented in lib/accel/wide_crossings.c. */
 double accel_wide_child_crossings(const struct bvh4 *wide);
 
-/* Renumbers a triangle layout's wide nodes in depth-first preorder from
- * the root (the collapse numbers them breadth first), a node's inner
- * children in lane order or, area_first, by their boxes' surface area,
- * largest first; the packets in the order the preorder reaches their leaf
- * lanes; source and packet_slot with them.  Every node and packet keeps
- * its bytes but the child indices, so the walks' answers are the same.
- * Nothing for a layout without packets.  Returns 0, or -1 on allocation
- * failure with the layout untouched.  Implemented in
- * lib/accel/wide_order.c. */
-int accel_wide_reorder(struct bvh4 *wide, int area_first);
-
 /* accel_collapse_wide with width 4. */
 int accel_collapse4(struct bvh4 *out, const struct bvh *bvh, const float *tri);
 
