@@ -67,3 +67,42 @@ double accel_wide_child_crossings(const struct bvh4 *wide)
     }
     return nodes > 0.0 && isfinite(children) ? children / nodes : 0.0;
 }
+
+/* Half the surface area of binary node n's box. */
+static double node_half_area(const struct bvh_node *n)
+{
+    const double d[3] = {(double)n->aabb_max[0] - (double)n->aabb_min[0],
+                         (double)n->aabb_max[1] - (double)n->aabb_min[1],
+                         (double)n->aabb_max[2] - (double)n->aabb_min[2]};
+    return half_area(d);
+}
+
+#define BINARY_SAMPLE_MAX 1024
+
+/* The same measure over the top of a binary tree, before any collapse:
+ * the top levels, where boxes are large, tell a volume (children
+ * overlapping in every axis) from surfaces (children side by side); the
+ * whole tree does not (its lower levels are similar for both: the soup
+ * 1.15 against gears 1.16 over every node). */
+double accel_binary_child_crossings(const struct bvh *bvh, uint32_t sample)
+{
+    uint32_t queue[2 * BINARY_SAMPLE_MAX + 2];
+    uint32_t head = 0, tail = 0, seen = 0;
+    double children = 0.0, parents = 0.0;
+    if (sample > BINARY_SAMPLE_MAX)
+        sample = BINARY_SAMPLE_MAX;
+    if (bvh->node_count == 0)
+        return 0.0;
+    queue[tail++] = 0;
+    while (head < tail && seen < sample) {
+        const struct bvh_node *n = &bvh->nodes[queue[head++]];
+        if (n->count)
+            continue;
+        seen++;
+        children += node_half_area(&bvh->nodes[n->first]) + node_half_area(&bvh->nodes[n->first + 1]);
+        parents += node_half_area(n);
+        queue[tail++] = n->first;
+        queue[tail++] = n->first + 1;
+    }
+    return parents > 0.0 ? children / parents : 0.0;
+}
