@@ -101,9 +101,10 @@
 #define BVH_WIDE_MERGE_SURFACE 3
 /* A binary tree whose top BVH_WIDE_CROSSINGS_SAMPLE inner nodes cross
  * this many children a line on average or more is a volume
- * (accel_binary_child_crossings): the soup 1.32, against gears 1.16,
- * bumpy 1.09 and the kitchen 1.05.  A heuristic only. */
-#define BVH_WIDE_VOLUME_CROSSINGS 1.25
+ * (accel_binary_child_crossings): rtbench's soup 1.32 and
+ * internal/collapse_merge's 1.28, against gears 1.16, bumpy 1.09, the
+ * kitchen 1.05 and collapse_merge's spheres 1.07.  A heuristic only. */
+#define BVH_WIDE_VOLUME_CROSSINGS 1.2
 #define BVH_WIDE_CROSSINGS_SAMPLE 1024
 /* A subtree the collapse leaves closed under a full wide node becomes
  * one leaf lane of up to this many triangles (two packets) instead of a
