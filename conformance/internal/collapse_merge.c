@@ -85,10 +85,10 @@ static void check_mesh(const char *name, struct tg_mesh *m, enum bvh_collapse co
                "merged lanes in non-full nodes %u, of more than 3 triangles %u\n",
                name, m->tri_count, collapse == BVH_COLLAPSE_GREEDY ? "greedy" : "optimal",
                width, crossings, w.merge, merged, beyond3);
-        failures += !CHECKF(w.merge == expect, "%s bvh%u: merge limit %u, expected %u", name, width, w.merge,
-               expect);
-        failures += !CHECKF(beyond == 0, "%s bvh%u: %u merged lanes beyond %u triangles", name, width, beyond,
-               expect);
+        failures += !CHECKF(w.merge == expect, "%s bvh%u: merge limit %u, expected %u", name,
+                            width, w.merge, expect);
+        failures += !CHECKF(beyond == 0, "%s bvh%u: %u merged lanes beyond %u triangles", name,
+                            width, beyond, expect);
         if (expect == BVH_WIDE_MERGE)
             failures += !CHECKF(beyond3 > 0,
                    "%s bvh%u: no merged lane of four triangles (the check would not see "

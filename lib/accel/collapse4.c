@@ -297,7 +297,8 @@ static double wide_node_cost(const struct bvh *bvh, const float *tri, const uint
     double cost = BVH_WIDE_NODE_COST;
     for (int l = 0; l < t.lanes; l++) {
         const double share = area > 0.0 ? node_area(&bvh->nodes[t.source[l]]) / area : 1.0;
-        const double lane = (t.inner >> l & 1u) ? wide_node_cost(bvh, tri, zero, merge, t.source[l], width)
+        const double lane = (t.inner >> l & 1u)
+                                ? wide_node_cost(bvh, tri, zero, merge, t.source[l], width)
                                                 : leaf_lane_cost(t.count[l]);
         cost += share * lane;
     }
@@ -1566,7 +1567,8 @@ static int item_gather(const struct collapse *c, struct collapse_item *it)
             if (c->dp) {
                 gather_dp(c->dp, c->item_todo[item_slot(it, w)], s);
             } else {
-                gather(c->bvh, c->tri, c->zero, c->merge, c->item_todo[item_slot(it, w)], c->width, s);
+                gather(c->bvh, c->tri, c->zero, c->merge, c->item_todo[item_slot(it, w)],
+                       c->width, s);
                 if (c->merge_left)
                     close_small_lanes(c->bvh, c->tri, c->zero, c->merge, c->width, s);
             }

@@ -99,7 +99,8 @@ double accel_binary_child_crossings(const struct bvh *bvh, uint32_t sample)
         if (n->count)
             continue;
         seen++;
-        children += node_half_area(&bvh->nodes[n->first]) + node_half_area(&bvh->nodes[n->first + 1]);
+        children += node_half_area(&bvh->nodes[n->first]) +
+                    node_half_area(&bvh->nodes[n->first + 1]);
         parents += node_half_area(n);
         queue[tail++] = n->first;
         queue[tail++] = n->first + 1;
