@@ -299,7 +299,7 @@ static double wide_node_cost(const struct bvh *bvh, const float *tri, const uint
         const double share = area > 0.0 ? node_area(&bvh->nodes[t.source[l]]) / area : 1.0;
         const double lane = (t.inner >> l & 1u)
                                 ? wide_node_cost(bvh, tri, zero, merge, t.source[l], width)
-                                                : leaf_lane_cost(t.count[l]);
+                                : leaf_lane_cost(t.count[l]);
         cost += share * lane;
     }
     return cost;

@@ -65,7 +65,9 @@
  * collapse_wide_dropping, drop_zero_area); elsewhere they stay as NaN
  * lanes.
  * A leaf lane is a binary leaf, or a binary subtree of at most
- * BVH_WIDE_MERGE triangles in consecutive leaf slots, or one of at most
+ * BVH_WIDE_MERGE triangles (BVH_WIDE_MERGE_SURFACE in a layout of
+ * surfaces of 1 to 16 MB: struct bvh4's merge) in consecutive leaf
+ * slots, or one of at most
  * BVH_WIDE_MERGE_LEFT under a full wide node where the area heuristic
  * prefers its packets to a wide node of its own (its box is the subtree
  * root's box, again a binary node's box bit for bit).
