@@ -144,9 +144,9 @@ static void check_lanes(const char *what, const struct bvh4 *w, const struct bvh
              * a subtree by its other triangles (small_span_live): one
              * packet of them, in at most BVH_WIDE_MAX_LEAF slots (the
              * optimal collapse's costs count every triangle). */
-            int must_leaf = binary_leaf || (span != 0 && span <= w->merge) ||
+            int must_leaf = binary_leaf || (span != 0 && span <= BVH_WIDE_MERGE) ||
                             (greedy && w->dropped && span != 0 && span <= BVH_WIDE_MAX_LEAF &&
-                             live <= w->merge);
+                             live <= BVH_WIDE_MERGE);
             int may_leaf = must_leaf || (span != 0 && span <= BVH_WIDE_MERGE_LEFT);
             const int whole = live == 0 && lanes == 1 && count == span &&
                               w->packet_slot[child] == first;

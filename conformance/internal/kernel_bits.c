@@ -21,8 +21,7 @@
  * along edges, axis-parallel with both signs of zero from origins on the
  * boxes' planes, grazing, from far away, with tmin > 0 and finite t_max;
  * over a grid-snapped soup (coincident planes and shared coordinates), a
- * random soup, a cube-sphere at 1e5, a flat cube and a sphere of 43,200
- * triangles (leaf lanes of at most BVH_WIDE_MERGE_SURFACE), refitted too.
+ * random soup, a cube-sphere at 1e5 and a flat cube.
  *
  * The same rays then go through each table's walk over the 4-wide and the
  * 8-wide layout (bvh4_layout.h, traverse_wide.h; a table without the
@@ -591,13 +590,6 @@ int main(void)
     const double zero[3] = {0.0, 0.0, 0.0};
     tg_cube_sphere(&m, 16, 0, 1.0, zero);
     compare_tables("flat cube", &m, 60000, 15, 0);
-    tg_mesh_free(&m);
-    /* 43,200 triangles of a surface, an estimated 2.7 MB: its layouts
-     * merge leaf lanes of at most BVH_WIDE_MERGE_SURFACE triangles
-     * (collapse4.c, collapse_merge_limit; internal/collapse_merge). */
-    tg_cube_sphere(&m, 60, 1, 1.0, zero);
-    compare_tables("sphere of 43,200", &m, 20000, 17, 0);
-    compare_tables("sphere of 43,200, deformed and refitted", &m, 20000, 18, 1);
     tg_mesh_free(&m);
     printf("  %s (%d failures)\n", failures ? "FAIL" : "ok", failures);
     return failures ? 1 : 0;

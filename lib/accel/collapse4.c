@@ -183,11 +183,11 @@ static uint32_t small_span_live(const struct bvh *bvh, const uint8_t *zero, uint
 #if defined(__GNUC__)
 __attribute__((noinline))
 #endif
-static uint32_t leaf_span_live(const struct bvh *bvh, const uint8_t *zero, uint32_t merge,
-                               uint32_t i, uint32_t *first)
+static uint32_t leaf_span_live(const struct bvh *bvh, const uint8_t *zero, uint32_t i,
+                               uint32_t *first)
 {
     uint32_t live;
-    return small_span_live(bvh, zero, i, merge, BVH_WIDE_MAX_LEAF, first, &live);
+    return small_span_live(bvh, zero, i, BVH_WIDE_MERGE, BVH_WIDE_MAX_LEAF, first, &live);
 }
 
 /* Whether binary node i is a leaf of the wide layout (a binary leaf, or,
@@ -196,8 +196,8 @@ static uint32_t leaf_span_live(const struct bvh *bvh, const uint8_t *zero, uint3
  * are the binary leaves only: a merged subtree would visit (transform,
  * set up and enter) every instance under it, where the binary subtree's
  * boxes cull most of them. */
-static int leaf_lane(const struct bvh *bvh, const float *tri, const uint8_t *zero, uint32_t merge,
-                     uint32_t i, uint32_t *first, uint32_t *count)
+static int leaf_lane(const struct bvh *bvh, const float *tri, const uint8_t *zero, uint32_t i,
+                     uint32_t *first, uint32_t *count)
 {
     const struct bvh_node *node = &bvh->nodes[i];
     if (node->count) {
@@ -205,18 +205,18 @@ static int leaf_lane(const struct bvh *bvh, const float *tri, const uint8_t *zer
         *count = node->count;
         return 1;
     }
-    *count = !tri ? 0 : zero ? leaf_span_live(bvh, zero, merge, i, first)
-                             : small_span(bvh, i, merge, first);
+    *count = !tri ? 0 : zero ? leaf_span_live(bvh, zero, i, first)
+                             : small_span(bvh, i, BVH_WIDE_MERGE, first);
     return *count != 0;
 }
 
 /* Lane l of s is binary node i: whether it is inner (then
  * count 0) or a leaf (count and first its slots); returns its area. */
-static float set_lane(const struct bvh *bvh, const float *tri, const uint8_t *zero, uint32_t merge,
+static float set_lane(const struct bvh *bvh, const float *tri, const uint8_t *zero,
                       struct scratch_node *s, int l, uint32_t i)
 {
     s->source[l] = i;
-    if (leaf_lane(bvh, tri, zero, merge, i, &s->first[l], &s->count[l]))
+    if (leaf_lane(bvh, tri, zero, i, &s->first[l], &s->count[l]))
         s->inner &= ~(1u << l);
     else
         s->inner |= 1u << l;
@@ -227,16 +227,16 @@ static float set_lane(const struct bvh *bvh, const float *tri, const uint8_t *ze
  * starting from its two children, the openable (inner, not merged) one
  * of largest area is replaced by its children until there are `width`
  * (ties: the first). */
-static void gather(const struct bvh *bvh, const float *tri, const uint8_t *zero, uint32_t merge,
-                   uint32_t inner, uint32_t width, struct scratch_node *s)
+static void gather(const struct bvh *bvh, const float *tri, const uint8_t *zero, uint32_t inner,
+                   uint32_t width, struct scratch_node *s)
 {
     /* Each lane's area and openness, computed once when the lane is
      * added rather than at every step (the same values, so the same
      * picks). */
     float area[MAX_WIDTH];
     s->inner = 0;
-    area[0] = set_lane(bvh, tri, zero, merge, s, 0, bvh->nodes[inner].first);
-    area[1] = set_lane(bvh, tri, zero, merge, s, 1, bvh->nodes[inner].first + 1);
+    area[0] = set_lane(bvh, tri, zero, s, 0, bvh->nodes[inner].first);
+    area[1] = set_lane(bvh, tri, zero, s, 1, bvh->nodes[inner].first + 1);
     uint32_t n = 2;
     while (n < width) {
         int pick = -1;
@@ -250,8 +250,8 @@ static void gather(const struct bvh *bvh, const float *tri, const uint8_t *zero,
         if (pick < 0)
             break;
         uint32_t first = bvh->nodes[s->source[pick]].first;
-        area[pick] = set_lane(bvh, tri, zero, merge, s, pick, first);
-        area[n] = set_lane(bvh, tri, zero, merge, s, (int)n, first + 1);
+        area[pick] = set_lane(bvh, tri, zero, s, pick, first);
+        area[n] = set_lane(bvh, tri, zero, s, (int)n, first + 1);
         n++;
     }
     s->lanes = (int)n;
@@ -289,17 +289,16 @@ static double leaf_lane_cost(uint32_t n)
  * at most BVH_WIDE_MERGE_LEFT triangles only, so the recursion is
  * shallow. */
 static double wide_node_cost(const struct bvh *bvh, const float *tri, const uint8_t *zero,
-                             uint32_t merge, uint32_t i, uint32_t width)
+                             uint32_t i, uint32_t width)
 {
     struct scratch_node t;
-    gather(bvh, tri, zero, merge, i, width, &t);
+    gather(bvh, tri, zero, i, width, &t);
     const double area = node_area(&bvh->nodes[i]);
     double cost = BVH_WIDE_NODE_COST;
     for (int l = 0; l < t.lanes; l++) {
         const double share = area > 0.0 ? node_area(&bvh->nodes[t.source[l]]) / area : 1.0;
-        const double lane = (t.inner >> l & 1u)
-                                ? wide_node_cost(bvh, tri, zero, merge, t.source[l], width)
-                                : leaf_lane_cost(t.count[l]);
+        const double lane = (t.inner >> l & 1u) ? wide_node_cost(bvh, tri, zero, t.source[l], width)
+                                                : leaf_lane_cost(t.count[l]);
         cost += share * lane;
     }
     return cost;
@@ -624,14 +623,14 @@ static void gather_dp(const struct dp *d, uint32_t inner, struct scratch_node *s
  * the subtree root's, a binary node's box bit for bit, so the answers
  * are the same.  Depends on nothing but the node, as gather. */
 static void close_small_lanes(const struct bvh *bvh, const float *tri, const uint8_t *zero,
-                              uint32_t merge, uint32_t width, struct scratch_node *s)
+                              uint32_t width, struct scratch_node *s)
 {
     for (int l = 0; l < s->lanes; l++) {
         if (!(s->inner >> l & 1u))
             continue;
         uint32_t first;
         const uint32_t n = small_span(bvh, s->source[l], BVH_WIDE_MERGE_LEFT, &first);
-        if (n && leaf_lane_cost(n) <= wide_node_cost(bvh, tri, zero, merge, s->source[l], width)) {
+        if (n && leaf_lane_cost(n) <= wide_node_cost(bvh, tri, zero, s->source[l], width)) {
             s->inner &= ~(1u << l);
             s->first[l] = first;
             s->count[l] = n;
@@ -1166,9 +1165,6 @@ struct collapse {
     struct collapse_triangles src;
     uint32_t width;
     int merge_left; /* close_small_lanes applies */
-    /* A subtree of at most this many triangles in consecutive slots is
-     * one leaf lane (collapse_merge_limit). */
-    uint32_t merge;
     /* drop_zero_area applies (triangles, and not src.keep_zero_area). */
     int drop;
     /* With drop, per leaf slot 1 when its triangle has zero area; NULL
@@ -1398,9 +1394,9 @@ static void gather_nodes(void *arg, uint32_t lo, uint32_t hi)
         if (c->dp) {
             gather_dp(c->dp, c->todo[w], &c->scratch[w]);
         } else {
-            gather(c->bvh, c->tri, c->zero, c->merge, c->todo[w], c->width, &c->scratch[w]);
+            gather(c->bvh, c->tri, c->zero, c->todo[w], c->width, &c->scratch[w]);
             if (c->merge_left)
-                close_small_lanes(c->bvh, c->tri, c->zero, c->merge, c->width, &c->scratch[w]);
+                close_small_lanes(c->bvh, c->tri, c->zero, c->width, &c->scratch[w]);
         }
         drop_zero_area(c, &c->scratch[w]);
     }
@@ -1567,10 +1563,9 @@ static int item_gather(const struct collapse *c, struct collapse_item *it)
             if (c->dp) {
                 gather_dp(c->dp, c->item_todo[item_slot(it, w)], s);
             } else {
-                gather(c->bvh, c->tri, c->zero, c->merge, c->item_todo[item_slot(it, w)],
-                       c->width, s);
+                gather(c->bvh, c->tri, c->zero, c->item_todo[item_slot(it, w)], c->width, s);
                 if (c->merge_left)
-                    close_small_lanes(c->bvh, c->tri, c->zero, c->merge, c->width, s);
+                    close_small_lanes(c->bvh, c->tri, c->zero, c->width, s);
             }
             drop_zero_area(c, s);
             for (int l = 0; l < s->lanes; l++) {
@@ -1721,29 +1716,6 @@ static uint32_t layout_triangles(const struct bvh4 *w)
     return sum;
 }
 
-/*
- * The greedy collapse's merge limit: BVH_WIDE_MERGE_SURFACE triangles a
- * merged leaf lane for a layout of surfaces (binary child crossings
- * below BVH_WIDE_VOLUME_CROSSINGS, accel_binary_child_crossings) whose
- * estimated size lies from BVH_WIDE_PREFETCH_BYTES (beyond an L2) up to
- * BVH_WIDE_STREAM_BYTES (within an L3); BVH_WIDE_MERGE elsewhere, and for
- * the optimal collapse (its DP prices leaves itself).  The band and the
- * test are what measured it (bvh4_layout.h, BVH_WIDE_MERGE_SURFACE).
- */
-static uint32_t collapse_merge_limit(const struct bvh *bvh, const float *tri,
-                                     enum bvh_collapse collapse)
-{
-    if (!tri || collapse != BVH_COLLAPSE_GREEDY)
-        return BVH_WIDE_MERGE;
-    const uint64_t bytes = (uint64_t)bvh->prim_count * BVH_WIDE_BYTES_PER_TRIANGLE;
-    if (bytes < BVH_WIDE_PREFETCH_BYTES || bytes >= BVH_WIDE_STREAM_BYTES)
-        return BVH_WIDE_MERGE;
-    return accel_binary_child_crossings(bvh, BVH_WIDE_CROSSINGS_SAMPLE) <
-                   BVH_WIDE_VOLUME_CROSSINGS
-               ? BVH_WIDE_MERGE_SURFACE
-               : BVH_WIDE_MERGE;
-}
-
 /* accel_collapse_wide_source in this unit's instruction set. */
 static int collapse_wide(struct bvh4 *out, const struct bvh *bvh,
                          const struct collapse_triangles *tris, uint32_t width,
@@ -1799,7 +1771,6 @@ static int collapse_wide(struct bvh4 *out, const struct bvh *bvh,
      * walk's prefetch (prefetch_top below) has the same threshold. */
     c.merge_left =
         tri && (uint64_t)bvh->prim_count * BVH_WIDE_BYTES_PER_TRIANGLE >= BVH_WIDE_PREFETCH_BYTES;
-    c.merge = collapse_merge_limit(bvh, tri, collapse);
     if (collapse == BVH_COLLAPSE_OPTIMAL && tri) {
         dp.bvh = bvh;
         dp.width = width;
@@ -1812,7 +1783,7 @@ static int collapse_wide(struct bvh4 *out, const struct bvh *bvh,
     }
     uint32_t count = 1;
     uint32_t packets = 0;
-    if (leaf_lane(bvh, tri, c.zero, c.merge, 0, &c.scratch[0].first[0], &c.scratch[0].count[0])) {
+    if (leaf_lane(bvh, tri, c.zero, 0, &c.scratch[0].first[0], &c.scratch[0].count[0])) {
         /* One leaf under the root: the root's one lane. */
         c.scratch[0].lanes = 1;
         c.scratch[0].source[0] = 0;
@@ -1941,7 +1912,6 @@ static int collapse_wide(struct bvh4 *out, const struct bvh *bvh,
     out->packet_slot = packet_slot;
     out->raw = raw;
     out->dropped = c.drop ? bvh->prim_count - layout_triangles(out) : 0;
-    out->merge = tri ? c.merge : 0;
     /* A taken block may be larger than the layout and written past it
      * (a parallel build's refs, accel_build_parallel_triangles): pages
      * the layout would otherwise hold for its lifetime. */

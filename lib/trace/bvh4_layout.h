@@ -65,9 +65,7 @@
  * collapse_wide_dropping, drop_zero_area); elsewhere they stay as NaN
  * lanes.
  * A leaf lane is a binary leaf, or a binary subtree of at most
- * BVH_WIDE_MERGE triangles (BVH_WIDE_MERGE_SURFACE in a layout of
- * surfaces of 1 to 16 MB: struct bvh4's merge) in consecutive leaf
- * slots, or one of at most
+ * BVH_WIDE_MERGE triangles in consecutive leaf slots, or one of at most
  * BVH_WIDE_MERGE_LEFT under a full wide node where the area heuristic
  * prefers its packets to a wide node of its own (its box is the subtree
  * root's box, again a binary node's box bit for bit).
@@ -88,26 +86,6 @@
  * becomes one leaf lane: one packet (Embree's builders make leaves of
  * Triangle4 blocks the same way). */
 #define BVH_WIDE_MERGE 4
-/* The merge limit instead of BVH_WIDE_MERGE for a layout of surfaces
- * between BVH_WIDE_PREFETCH_BYTES and BVH_WIDE_STREAM_BYTES (collapse4.c,
- * collapse_merge_limit; the greedy collapse only).  Measured on a Zen 4
- * core (docs/performance-log.md, round 63, zs1; ours/Embree MEDIUM, one
- * thread, primary / random / shadow): the kitchen, 110,561 triangles of
- * surfaces, 7 MB, 1.08 / 1.01 / 1.02 -> 1.10 / 1.02 / 1.07 with 3 (its
- * shadow rays' triangle tests 7.44 -> 6.29 a ray, node tests 40.94 ->
- * 41.16: smaller leaf lanes with boxes of their own cull more), its
- * shadow packets +3 %; merging at most 2 lost on gears (62 KB, every row
- * -4 to -7 %), on bumpy (60 MB, primary -1.5 %, shadow -2.5 %) and on
- * the soup (a volume, random -2 to -3 %, shadow -1 %).  A heuristic
- * only: the answers do not depend on it. */
-#define BVH_WIDE_MERGE_SURFACE 3
-/* A binary tree whose top BVH_WIDE_CROSSINGS_SAMPLE inner nodes cross
- * this many children a line on average or more is a volume
- * (accel_binary_child_crossings): rtbench's soup 1.32 and
- * internal/collapse_merge's 1.28, against gears 1.16, bumpy 1.09, the
- * kitchen 1.05 and collapse_merge's spheres 1.07.  A heuristic only. */
-#define BVH_WIDE_VOLUME_CROSSINGS 1.2
-#define BVH_WIDE_CROSSINGS_SAMPLE 1024
 /* A subtree the collapse leaves closed under a full wide node becomes
  * one leaf lane of up to this many triangles (two packets) instead of a
  * wide node, when the area heuristic says the packets cost no more than
@@ -217,10 +195,6 @@ struct bvh4 {
      * them (struct collapse_triangles, keep_zero_area; or they were
      * fewer than 1 in 32 triangles) or there were none.  Such a layout cannot be refit in place (accel_refit4). */
     uint32_t dropped;
-    /* The greedy collapse's merge limit for this layout (BVH_WIDE_MERGE
-     * or BVH_WIDE_MERGE_SURFACE: collapse4.c, collapse_merge_limit); 0
-     * without triangles. */
-    uint32_t merge;
     /* The nodes and packets in one block (rt_malloc_large: 2 MB huge
      * pages where the OS offers them). */
     struct rt_large_block raw;
@@ -293,13 +267,6 @@ double accel_wide_sah_cost(const struct bvh4 *wide, double c_node, double c_pack
  * lanes' union); 0 for a layout other than 8 wide or without nodes.
  * Implemented in lib/accel/wide_crossings.c. */
 double accel_wide_child_crossings(const struct bvh4 *wide);
-
-/* accel_wide_child_crossings' measure over a binary tree: the sum of the
- * children's box areas over the sum of their parents' areas, over the
- * first `sample` inner nodes breadth first from the root (at most 1024);
- * 0 for a tree without inner nodes.  Implemented in
- * lib/accel/wide_crossings.c. */
-double accel_binary_child_crossings(const struct bvh *bvh, uint32_t sample);
 
 /* accel_collapse_wide with width 4. */
 int accel_collapse4(struct bvh4 *out, const struct bvh *bvh, const float *tri);
