@@ -189,8 +189,8 @@ static inline int pair8_pop(struct pair8_slot *q, struct pair8_walk *w, uint32_t
     return 1;
 }
 
-/* wide8_push (the closest-hit push in the octant's order) with the
- * stack's new top entry also returned, in *top and *top_count, from the
+/* wide8_push (the closest-hit push in the octant's order, through
+ * wide8_push_order) with the stack's new top entry also returned, in *top and *top_count, from the
  * node: the child second in the order among the hit ones, which the push
  * stores last.  The prefetch of the top (pair8_prefetch_top) read it back
  * from the stack, a 4-byte load from the 32-byte store just made; from
@@ -206,12 +206,8 @@ static inline void pair8_push(const struct bvh8_node *n, int octant, __m256 hit,
 {
     const __m256i order_shift = _mm256_setr_epi32(0, 3, 6, 9, 12, 15, 18, 21);
     uint32_t order;
-    const __m256i lanes = wide8_order_lanes(n, octant, order_shift, &order);
-    const unsigned pm = (unsigned)_mm256_movemask_ps(_mm256_permutevar8x32_ps(hit, lanes));
-    wide8_store_ordered(n, lanes, pm, t0, st_child, st_count, st_t, sp);
-    const unsigned l = order >> (3 * (unsigned)__builtin_ctz(pm)) & 7u;
-    *cur = n->child[l];
-    *cur_count = n->count[l];
+    const unsigned pm = wide8_push_order(n, octant, hit, t0, order_shift, st_child, st_count,
+                                         st_t, sp, cur, cur_count, &order);
     /* pm has two bits at least (the caller's mask did). */
     const unsigned l2 = order >> (3 * (unsigned)__builtin_ctz(pm & (pm - 1u))) & 7u;
     *top = n->child[l2];

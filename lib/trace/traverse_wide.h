@@ -709,6 +709,29 @@ static inline void wide8_store_ordered(const struct bvh8_node *n, __m256i lanes,
     wide8_store(n, gather, t0, pm, st_child, st_count, st_t, sp);
 }
 
+/* wide8_push's work, also returning the hit lanes' mask in the octant's
+ * order (bit i: the i-th child front to back was hit) and that order in
+ * *order, for a caller that wants more than the front child (the
+ * stream's pair8_push). */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline unsigned wide8_push_order(const struct bvh8_node *n, int octant, __m256 hit,
+                                        __m256 t0, __m256i order_shift, uint32_t *st_child,
+                                        uint32_t *st_count, float *st_t, uint32_t *sp,
+                                        uint32_t *cur, uint32_t *cur_count, uint32_t *order)
+{
+    const __m256i lanes = wide8_order_lanes(n, octant, order_shift, order);
+    const unsigned pm = (unsigned)_mm256_movemask_ps(_mm256_permutevar8x32_ps(hit, lanes));
+    wide8_store_ordered(n, lanes, pm, t0, st_child, st_count, st_t, sp);
+    const unsigned l = *order >> (3 * (unsigned)__builtin_ctz(pm)) & 7u;
+    *cur = n->child[l];
+    *cur_count = n->count[l];
+    return pm;
+}
+
+/* The closest-hit push in the octant's order: the hit children stored
+ * back to front, the front one taken as the current entry. */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
@@ -717,12 +740,8 @@ static inline void wide8_push(const struct bvh8_node *n, int octant, __m256 hit,
                               float *st_t, uint32_t *sp, uint32_t *cur, uint32_t *cur_count)
 {
     uint32_t order;
-    const __m256i lanes = wide8_order_lanes(n, octant, order_shift, &order);
-    const unsigned pm = (unsigned)_mm256_movemask_ps(_mm256_permutevar8x32_ps(hit, lanes));
-    wide8_store_ordered(n, lanes, pm, t0, st_child, st_count, st_t, sp);
-    const unsigned l = order >> (3 * (unsigned)__builtin_ctz(pm)) & 7u;
-    *cur = n->child[l];
-    *cur_count = n->count[l];
+    wide8_push_order(n, octant, hit, t0, order_shift, st_child, st_count, st_t, sp, cur,
+                     cur_count, &order);
 }
 
 /* wide8_push_stored's gather: the hit lanes highest first. */
