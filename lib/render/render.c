@@ -217,6 +217,43 @@ static void unproject_axis(const struct render_pass *sh, int axis, double c, dou
         out[r] = m[4 * axis + r] * n;
 }
 
+/*
+ * 1 when the row fill's divisors are frame constants whose quotients
+ * base/quotient_known.h gives exactly, with the constants in sh->wn and
+ * sh->wf.  A point's w is ((m3 nx + m7 ny) + m11 z) + m15 (unproject_row_fill's
+ * sums, z = -1 near, 1 far): with m3 and m7 zero (any glFrustum, glOrtho or
+ * gluPerspective projection: their inverse's w row has no x or y term)
+ * the first sum is a zero of either sign, which the following sums turn
+ * into the same double whichever its sign unless they are zero too, so
+ * w is ((+-0 + m11 z) + m15) for every point, tried with both signs here.
+ * The dividends must lie in the helper's range (+-0 or 2^-450 <= |x| <=
+ * 2^450): every term of their sums is m nx, m ny, m z or m for an entry
+ * m of the inverse, with nx, ny = 2 c / size - 1 zero or of magnitude in
+ * [2^-53, 2^33] (Sterbenz's lemma where 2 c / size is in [1/2, 2], at
+ * least 1/2 elsewhere; c < 2^31).  With each entry zero or 2^-300 <= |m|
+ * <= 2^300, every term is zero or a normal double with last bit at least
+ * 2^-405 and magnitude at most 2^333, so their sums are zero or at least
+ * 2^-405 and below 2^336.
+ */
+static int unproject_w_known(struct render_pass *sh)
+{
+    const double *m = sh->inv_projection;
+    if (m[3] != 0.0 || m[7] != 0.0)
+        return 0;
+    for (int i = 0; i < 16; i++) {
+        const double a = fabs(m[i]);
+        if (a != 0.0 && !(a >= 0x1p-300 && a <= 0x1p300))
+            return 0;
+    }
+    const double zn = m[11] * -1.0, zf = m[11] * 1.0;
+    const double wn = (0.0 + zn) + m[15], wf = (0.0 + zf) + m[15];
+    const double wn_neg = (-0.0 + zn) + m[15], wf_neg = (-0.0 + zf) + m[15];
+    if (quotient_known_bits(wn) != quotient_known_bits(wn_neg) ||
+        quotient_known_bits(wf) != quotient_known_bits(wf_neg))
+        return 0;
+    return quotient_known_prepare(&sh->wn, wn) && quotient_known_prepare(&sh->wf, wf);
+}
+
 #if !RENDER_PAIRS
 /* The near- and far-plane points under viewport position (x, y), in
  * pixels from the viewport's corner, through the inverse projection. */
@@ -339,10 +376,10 @@ struct unproject_point {
 /* Rows y, y + 1 and y + 2 across a tile and the next column: the packet
  * loop's 4 x 2 blocks step two rows at a time and share the row between
  * two steps, the scalar loop steps one. */
-#define UNPROJECT_ROWS 3
+#define UNPROJECT_ROWS RENDER_UNPROJECT_ROWS
 /* Points of a row: the tile's columns, the next one (the last column's
  * right neighbours) and one more to make whole pairs. */
-#define UNPROJECT_COLS (RENDER_TILE_SIZE + 2)
+#define UNPROJECT_COLS RENDER_UNPROJECT_COLS
 
 struct unproject_row {
     double near_pt[3][UNPROJECT_COLS], far_pt[3][UNPROJECT_COLS];
@@ -396,6 +433,28 @@ static void unproject_row_fill(const struct render_pass *sh, const struct unproj
         last4[r] = _mm256_set1_pd(m[12 + r]);
     }
     __m256d sum4 = _mm256_setzero_pd();
+#if QUOTIENT_KNOWN_FMA
+    /* w the frame's two constants (sh->w_known): each quotient by one
+     * product and one FMA (base/quotient_known.h), the same doubles as
+     * the division's, and no w to sum. */
+    if (sh->w_known) {
+        const __m256d nh = _mm256_set1_pd(sh->wn.zh), nl = _mm256_set1_pd(sh->wn.zl);
+        const __m256d fh = _mm256_set1_pd(sh->wf.zh), fl = _mm256_set1_pd(sh->wf.zl);
+        for (; first_pair + 3 < UNPROJECT_COLS; first_pair += 4) {
+            const int i = first_pair;
+            for (int r = 0; r < 3; r++) {
+                const __m256d s = _mm256_add_pd(_mm256_loadu_pd(&c->col[r][i]), axis4[r]);
+                const __m256d n =
+                    quotient_known4(_mm256_add_pd(_mm256_add_pd(s, zn4[r]), last4[r]), nh, nl);
+                const __m256d f =
+                    quotient_known4(_mm256_add_pd(_mm256_add_pd(s, zf4[r]), last4[r]), fh, fl);
+                _mm256_storeu_pd(&u->near_pt[r][i], n);
+                _mm256_storeu_pd(&u->far_pt[r][i], f);
+                sum4 = _mm256_add_pd(_mm256_add_pd(sum4, n), f);
+            }
+        }
+    }
+#endif
     for (; first_pair + 3 < UNPROJECT_COLS; first_pair += 4) {
         const int i = first_pair;
         const __m256d s3 = _mm256_add_pd(_mm256_loadu_pd(&c->col[3][i]), axis4[3]);
@@ -413,6 +472,25 @@ static void unproject_row_fill(const struct render_pass *sh, const struct unproj
     /* The four lanes' sums into the pair's (any order: only whether the
      * sum is finite counts). */
     sum = _mm_add_pd(_mm256_castpd256_pd128(sum4), _mm256_extractf128_pd(sum4, 1));
+#endif
+#if QUOTIENT_KNOWN_FMA
+    if (sh->w_known) {
+        const __m128d nh = _mm_set1_pd(sh->wn.zh), nl = _mm_set1_pd(sh->wn.zl);
+        const __m128d fh = _mm_set1_pd(sh->wf.zh), fl = _mm_set1_pd(sh->wf.zl);
+        for (; first_pair < UNPROJECT_COLS; first_pair += 2) {
+            const int i = first_pair;
+            for (int r = 0; r < 3; r++) {
+                const __m128d s = _mm_add_pd(_mm_loadu_pd(&c->col[r][i]), axis[r]);
+                const __m128d n =
+                    quotient_known2(_mm_add_pd(_mm_add_pd(s, zn[r]), last[r]), nh, nl);
+                const __m128d f =
+                    quotient_known2(_mm_add_pd(_mm_add_pd(s, zf[r]), last[r]), fh, fl);
+                _mm_storeu_pd(&u->near_pt[r][i], n);
+                _mm_storeu_pd(&u->far_pt[r][i], f);
+                sum = _mm_add_pd(_mm_add_pd(sum, n), f);
+            }
+        }
+    }
 #endif
     for (int i = first_pair; i < UNPROJECT_COLS; i += 2) {
         const __m128d s3 = _mm_add_pd(_mm_loadu_pd(&c->col[3][i]), axis[3]);
@@ -898,6 +976,7 @@ static int pass_begin(struct render_pass *pass, const struct render_job *job, in
     pass->tiles_y = (st->viewport[3] + RENDER_TILE_SIZE - 1) / RENDER_TILE_SIZE;
     /* A singular projection leaves every pixel at the clear colour. */
     pass->projectable = mat4_invert(pass->inv_projection, st->projection);
+    pass->w_known = pass->projectable && unproject_w_known(pass);
     clear_outside_tiles(pass, fb, pixels, all_tiles);
     return 0;
 }
@@ -1804,4 +1883,35 @@ int render_occluded_rays(const struct render_job *job, int count, const RTray *r
                          RTboolean *occluded, struct render_stats *stats)
 {
     return run_queries(job, count, rays, NULL, occluded, stats);
+}
+
+int render_unproject_rows(const double projection[16], const int viewport[4], int x0, int y,
+                          double near_pt[][3], double far_pt[][3], signed char *state)
+{
+    struct render_state st;
+    memset(&st, 0, sizeof(st));
+    memcpy(st.viewport, viewport, sizeof(st.viewport));
+    memcpy(st.projection, projection, sizeof(st.projection));
+    struct render_job job;
+    memset(&job, 0, sizeof(job));
+    job.state = &st;
+    struct render_pass pass;
+    memset(&pass, 0, sizeof(pass));
+    pass.job = &job;
+    if (!mat4_invert(pass.inv_projection, projection))
+        return -1;
+    pass.w_known = unproject_w_known(&pass);
+    struct unproject_cache c;
+    unproject_cache_init(&pass, &c, x0, y);
+    for (int r = 0; r < UNPROJECT_ROWS; r++) {
+        for (int i = 0; i < UNPROJECT_COLS; i++) {
+            const int p = r * UNPROJECT_COLS + i;
+            for (int k = 0; k < 3; k++) {
+                near_pt[p][k] = c.rows[r]->near_pt[k][i];
+                far_pt[p][k] = c.rows[r]->far_pt[k][i];
+            }
+            state[p] = c.rows[r]->state[i];
+        }
+    }
+    return pass.w_known;
 }

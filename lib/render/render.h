@@ -19,6 +19,7 @@
 
 #include "trace/bvh_layout.h"
 #include "base/pool.h"
+#include "base/quotient_known.h"
 #include "render/visibility.h"
 #include "scene/frame.h"
 #include "scene/texture.h"
@@ -154,6 +155,12 @@ struct render_pass {
     int see_through;     /* some instance blends or alpha-tests (frame_has_see_through) */
     int all_drawn;       /* every hit is drawn, gl_hit_drawn needs no call (gl_frame_all_drawn) */
     double inv_projection[16];
+    /* 1 when every unprojected point's w is the same two numbers for the
+     * whole frame, near and far, and the quotients by them are exact
+     * (render.c, unproject_w_known): the row fill's SIMD copies then
+     * multiply instead of dividing. */
+    int w_known;
+    struct quotient_known wn, wf;
     float *fb;           /* the image being rendered, fb_width x fb_height */
     int fb_width, fb_height;
     int tiles_x, tiles_y;
@@ -199,6 +206,24 @@ render_tile_packets_fn render_tile_packets_avx2_unit(void);
  * render_tile calls when the scene's traversal table is AVX-512; NULL
  * where that unit is absent. */
 render_tile_packets_fn render_tile_packets_avx512_unit(void);
+/* Test hook (conformance/internal/quotient_known.c): the unprojected
+ * pixel centres of the rows y, y + 1 and y + 2 from column x0, as the
+ * tile loops cache them (render.c, unproject_row_fill), under the given
+ * projection and viewport: RENDER_UNPROJECT_COLS points a row, row by
+ * row, with state 1 where a point is unprojected and -1 where it cannot
+ * be.  Returns -1 for a singular projection, else 1 when the row fill's
+ * w are frame constants with exact quotients (render_pass.w_known), 0
+ * when it divides.  render_unproject_rows is this file's copy, the
+ * _avx2 and _avx512 ones the units' (NULL where absent). */
+#define RENDER_UNPROJECT_ROWS 3
+#define RENDER_UNPROJECT_COLS (RENDER_TILE_SIZE + 2)
+typedef int (*render_unproject_rows_fn)(const double projection[16], const int viewport[4],
+                                        int x0, int y, double near_pt[][3], double far_pt[][3],
+                                        signed char *state);
+int render_unproject_rows(const double projection[16], const int viewport[4], int x0, int y,
+                          double near_pt[][3], double far_pt[][3], signed char *state);
+render_unproject_rows_fn render_unproject_rows_avx2_unit(void);
+render_unproject_rows_fn render_unproject_rows_avx512_unit(void);
 /* After every tile: rasterises the lines and points of the committed
  * instances over the image (raster.h), on the calling thread. */
 void render_pass_raster(struct render_pass *pass);

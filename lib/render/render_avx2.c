@@ -30,10 +30,20 @@ render_tile_packets_fn render_tile_packets_avx2_unit(void)
 {
     return render_tile_packets;
 }
+
+render_unproject_rows_fn render_unproject_rows_avx2_unit(void)
+{
+    return render_unproject_rows;
+}
 #else
 #include "render/render.h"
 
 render_tile_packets_fn render_tile_packets_avx2_unit(void)
+{
+    return NULL;
+}
+
+render_unproject_rows_fn render_unproject_rows_avx2_unit(void)
 {
     return NULL;
 }

@@ -26,5 +26,6 @@
 #define render_frame RENDER_UNIT_NAME(render_frame)
 #define render_trace_rays RENDER_UNIT_NAME(render_trace_rays)
 #define render_occluded_rays RENDER_UNIT_NAME(render_occluded_rays)
+#define render_unproject_rows RENDER_UNIT_NAME(render_unproject_rows)
 
 #endif
