@@ -334,6 +334,42 @@ static void random_projection(int kind, double m[16])
     }
 }
 
+/* m = m v for a random camera v (a rotation about a random axis and a
+ * translation, as look-at cameras give): the projection with the camera
+ * multiplied in, as BART's scenes load it, whose inverse has w-row x and
+ * y terms of rounding size. */
+static void with_camera(double m[16])
+{
+    double ax[3] = {uniform() - 0.5, uniform() - 0.5, uniform() - 0.5};
+    const double len = sqrt(ax[0] * ax[0] + ax[1] * ax[1] + ax[2] * ax[2]) + 1e-9;
+    for (int k = 0; k < 3; k++)
+        ax[k] /= len;
+    const double th = 6.283185307179586 * uniform(), c = cos(th), s = sin(th), t = 1.0 - c;
+    double v[16] = {0};
+    /* Column-major rotation (Rodrigues) and translation. */
+    v[0] = t * ax[0] * ax[0] + c;
+    v[1] = t * ax[0] * ax[1] + s * ax[2];
+    v[2] = t * ax[0] * ax[2] - s * ax[1];
+    v[4] = t * ax[0] * ax[1] - s * ax[2];
+    v[5] = t * ax[1] * ax[1] + c;
+    v[6] = t * ax[1] * ax[2] + s * ax[0];
+    v[8] = t * ax[0] * ax[2] + s * ax[1];
+    v[9] = t * ax[1] * ax[2] - s * ax[0];
+    v[10] = t * ax[2] * ax[2] + c;
+    for (int k = 0; k < 3; k++)
+        v[12 + k] = (uniform() - 0.5) * pow(10.0, 3.0 * uniform());
+    v[15] = 1.0;
+    double out[16];
+    for (int col = 0; col < 4; col++)
+        for (int r = 0; r < 4; r++) {
+            double sum = 0.0;
+            for (int k = 0; k < 4; k++)
+                sum += m[4 * k + r] * v[4 * col + k];
+            out[4 * col + r] = sum;
+        }
+    memcpy(m, out, sizeof(out));
+}
+
 /* The projection P premultiplied by a clip-space map adding a x + b y to
  * w: its inverse's w row has x and y terms, so w varies by point. */
 static void oblique(double m[16], double a, double b)
@@ -492,6 +528,7 @@ int main(void)
             continue;
         }
         struct rows_tally plain = {0, 0, 0, 0, 0}, skew = {0, 0, 0, 0, 0}, refused = {0, 0, 0, 0, 0};
+        struct rows_tally camera = {0, 0, 0, 0, 0};
         long long refused_found = 0;
         for (int i = 0; i < 3000; i++) {
             double m[16];
@@ -504,6 +541,15 @@ int main(void)
             /* The middle column of an odd viewport: zero dividends. */
             check_rows(units[u].fn, units[u].name, m, (const int[4]){0, 0, 2 * (i % 500) + 1, 9},
                        i % 500 - 8, 3, &plain, &known);
+            /* The camera multiplied in (most of these keep w constant
+             * bit for bit through the second case of
+             * unproject_w_known). */
+            double mv[16];
+            memcpy(mv, m, sizeof(mv));
+            with_camera(mv);
+            check_rows(units[u].fn, units[u].name, mv, vp, x0, y, &camera, &known);
+            check_rows(units[u].fn, units[u].name, mv, (const int[4]){0, 0, 1024, 768},
+                       (int)(next64() % 64) * 16, (int)(next64() % 48) * 16, &camera, &known);
             oblique(m, (uniform() - 0.5) * 0.2, (uniform() - 0.5) * 0.2);
             check_rows(units[u].fn, units[u].name, m, vp, x0, y, &skew, &known);
         }
@@ -524,13 +570,15 @@ int main(void)
         }
         printf("  rows %s: w known in %lld of %lld projections (%lld points, %lld differ, %lld "
                "states); oblique %lld known of %lld (%lld points, %lld differ); refused w %lld "
-               "projections (%lld differ)\n",
+               "projections (%lld differ); with a camera %lld known of %lld (%lld points, "
+               "%lld differ)\n",
                units[u].name, plain.known, plain.projections, plain.points, plain.wrong,
                plain.state_wrong, skew.known, skew.projections, skew.points, skew.wrong,
-               refused.projections, refused.wrong);
+               refused.projections, refused.wrong, camera.known, camera.projections,
+               camera.points, camera.wrong);
         CHECKF(plain.wrong + plain.state_wrong + skew.wrong + skew.state_wrong + refused.wrong +
-                      refused.state_wrong ==
-                  0,
+                       refused.state_wrong + camera.wrong + camera.state_wrong ==
+                   0,
               "%s: every unprojected point is mat4_project's", units[u].name);
         CHECKF(plain.known * 10 > plain.projections * 8, "%s: the constant w taken for most",
               units[u].name);

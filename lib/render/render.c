@@ -217,41 +217,73 @@ static void unproject_axis(const struct render_pass *sh, int axis, double c, dou
         out[r] = m[4 * axis + r] * n;
 }
 
+/* The largest |2 c / size - 1| (unproject_axis's n) for c in [lo, hi]:
+ * at an end, as n is monotone in c (each operation rounds monotonically). */
+static double unproject_axis_bound(double lo, double hi, int size)
+{
+    return fmax(fabs(2.0 * lo / size - 1.0), fabs(2.0 * hi / size - 1.0));
+}
+
 /*
  * 1 when the row fill's divisors are frame constants whose quotients
- * base/quotient_known.h gives exactly, with the constants in sh->wn and
- * sh->wf.  A point's w is ((m3 nx + m7 ny) + m11 z) + m15 (unproject_row_fill's
- * sums, z = -1 near, 1 far): with m3 and m7 zero (any glFrustum, glOrtho or
- * gluPerspective projection: their inverse's w row has no x or y term)
- * the first sum is a zero of either sign, which the following sums turn
- * into the same double whichever its sign unless they are zero too, so
- * w is ((+-0 + m11 z) + m15) for every point, tried with both signs here.
+ * base/quotient_known.h gives exactly, for every point at pixel
+ * coordinates x in [x_lo, x_hi] and y in [y_lo, y_hi], with the
+ * constants in sh->wn and sh->wf.  A point's w is ((m3 nx + m7 ny) + a)
+ * + m15 (unproject_row_fill's sums), a = m11 z the same for every point
+ * (z = -1 near, 1 far).  Two cases make it one double for the frame:
+ * - m3 and m7 zero (glFrustum, glOrtho, gluPerspective: their inverse's
+ *   w row has no x or y term): the first sum is a zero of either sign,
+ *   and ((+-0 + a) + m15) is tried with both signs;
+ * - a projection with the camera multiplied in (BART's scenes), whose
+ *   inverse has m3 and m7 of rounding size: a is not zero and the first
+ *   sum s is smaller than half the spacing of the doubles around a (a
+ *   quarter of its ulp when |a| is a power of two, whose lower neighbour
+ *   is nearer), so RN(s + a) = a for every point.  |s| is at most
+ *   RN(RN(|m3| NX) + RN(|m7| NY)) for NX, NY bounds on |nx|, |ny|, since
+ *   rounding is monotone.
  * The dividends must lie in the helper's range (+-0 or 2^-450 <= |x| <=
  * 2^450): every term of their sums is m nx, m ny, m z or m for an entry
  * m of the inverse, with nx, ny = 2 c / size - 1 zero or of magnitude in
  * [2^-53, 2^33] (Sterbenz's lemma where 2 c / size is in [1/2, 2], at
- * least 1/2 elsewhere; c < 2^31).  With each entry zero or 2^-300 <= |m|
- * <= 2^300, every term is zero or a normal double with last bit at least
- * 2^-405 and magnitude at most 2^333, so their sums are zero or at least
- * 2^-405 and below 2^336.
+ * least 1/2 elsewhere; |c| < 2^31).  With each entry zero or 2^-300 <=
+ * |m| <= 2^300, every term is zero or a normal double with last bit at
+ * least 2^-405 and magnitude at most 2^333, so their sums are zero or at
+ * least 2^-405 and below 2^336.
  */
-static int unproject_w_known(struct render_pass *sh)
+static int unproject_w_known(struct render_pass *sh, double x_lo, double x_hi, double y_lo,
+                             double y_hi)
 {
     const double *m = sh->inv_projection;
-    if (m[3] != 0.0 || m[7] != 0.0)
-        return 0;
+    const int *vp = sh->job->state->viewport;
     for (int i = 0; i < 16; i++) {
         const double a = fabs(m[i]);
         if (a != 0.0 && !(a >= 0x1p-300 && a <= 0x1p300))
             return 0;
     }
-    const double zn = m[11] * -1.0, zf = m[11] * 1.0;
-    const double wn = (0.0 + zn) + m[15], wf = (0.0 + zf) + m[15];
-    const double wn_neg = (-0.0 + zn) + m[15], wf_neg = (-0.0 + zf) + m[15];
-    if (quotient_known_bits(wn) != quotient_known_bits(wn_neg) ||
-        quotient_known_bits(wf) != quotient_known_bits(wf_neg))
+    if (!(fabs(x_lo) < 0x1p31 && fabs(x_hi) < 0x1p31 && fabs(y_lo) < 0x1p31 &&
+          fabs(y_hi) < 0x1p31))
         return 0;
-    return quotient_known_prepare(&sh->wn, wn) && quotient_known_prepare(&sh->wf, wf);
+    double w[2];
+    for (int k = 0; k < 2; k++) {
+        const double a = m[11] * (k == 0 ? -1.0 : 1.0);
+        if (m[3] == 0.0 && m[7] == 0.0) {
+            w[k] = (0.0 + a) + m[15];
+            if (quotient_known_bits(w[k]) != quotient_known_bits((-0.0 + a) + m[15]))
+                return 0;
+        } else {
+            if (a == 0.0)
+                return 0;
+            const double s = fabs(m[3]) * unproject_axis_bound(x_lo, x_hi, vp[2]) +
+                             fabs(m[7]) * unproject_axis_bound(y_lo, y_hi, vp[3]);
+            int e;
+            const double f = frexp(fabs(a), &e); /* |a| = f 2^e, ulp 2^(e - 53) */
+            const double half_gap = ldexp(1.0, e - 53 - (f == 0.5 ? 2 : 1));
+            if (!(s < half_gap))
+                return 0;
+            w[k] = a + m[15];
+        }
+    }
+    return quotient_known_prepare(&sh->wn, w[0]) && quotient_known_prepare(&sh->wf, w[1]);
 }
 
 #if !RENDER_PAIRS
@@ -976,7 +1008,13 @@ static int pass_begin(struct render_pass *pass, const struct render_job *job, in
     pass->tiles_y = (st->viewport[3] + RENDER_TILE_SIZE - 1) / RENDER_TILE_SIZE;
     /* A singular projection leaves every pixel at the clear colour. */
     pass->projectable = mat4_invert(pass->inv_projection, st->projection);
-    pass->w_known = pass->projectable && unproject_w_known(pass);
+    /* Every pixel centre a tile's cache unprojects (its columns and the
+     * next two, its rows and the next two), with a tile's margin. */
+    pass->w_known =
+        pass->projectable &&
+        unproject_w_known(pass, 0.5 - RENDER_TILE_SIZE,
+                          (double)(pass->tiles_x + 1) * RENDER_TILE_SIZE + 0.5,
+                          0.5 - RENDER_TILE_SIZE, (double)(pass->tiles_y + 1) * RENDER_TILE_SIZE + 0.5);
     clear_outside_tiles(pass, fb, pixels, all_tiles);
     return 0;
 }
@@ -1900,7 +1938,8 @@ int render_unproject_rows(const double projection[16], const int viewport[4], in
     pass.job = &job;
     if (!mat4_invert(pass.inv_projection, projection))
         return -1;
-    pass.w_known = unproject_w_known(&pass);
+    pass.w_known = unproject_w_known(&pass, x0 + 0.5, x0 + UNPROJECT_COLS - 0.5, y + 0.5,
+                                     y + UNPROJECT_ROWS - 0.5);
     struct unproject_cache c;
     unproject_cache_init(&pass, &c, x0, y);
     for (int r = 0; r < UNPROJECT_ROWS; r++) {
