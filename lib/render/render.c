@@ -468,7 +468,10 @@ static void unproject_row_fill(const struct render_pass *sh, const struct unproj
 #if QUOTIENT_KNOWN_FMA
     /* w the frame's two constants (sh->w_known): each quotient by one
      * product and one FMA (base/quotient_known.h), the same doubles as
-     * the division's, and no w to sum. */
+     * the division's, and no w to sum.  Every point is then finite
+     * (unproject_w_known bounds the dividends below 2^336 and |w| is at
+     * least 2^-300), so the finiteness sum, a chain of dependent
+     * additions longer than the rest of the row's work, is not made. */
     if (sh->w_known) {
         const __m256d nh = _mm256_set1_pd(sh->wn.zh), nl = _mm256_set1_pd(sh->wn.zl);
         const __m256d fh = _mm256_set1_pd(sh->wf.zh), fl = _mm256_set1_pd(sh->wf.zl);
@@ -476,15 +479,31 @@ static void unproject_row_fill(const struct render_pass *sh, const struct unproj
             const int i = first_pair;
             for (int r = 0; r < 3; r++) {
                 const __m256d s = _mm256_add_pd(_mm256_loadu_pd(&c->col[r][i]), axis4[r]);
-                const __m256d n =
-                    quotient_known4(_mm256_add_pd(_mm256_add_pd(s, zn4[r]), last4[r]), nh, nl);
-                const __m256d f =
-                    quotient_known4(_mm256_add_pd(_mm256_add_pd(s, zf4[r]), last4[r]), fh, fl);
-                _mm256_storeu_pd(&u->near_pt[r][i], n);
-                _mm256_storeu_pd(&u->far_pt[r][i], f);
-                sum4 = _mm256_add_pd(_mm256_add_pd(sum4, n), f);
+                _mm256_storeu_pd(&u->near_pt[r][i],
+                                 quotient_known4(_mm256_add_pd(_mm256_add_pd(s, zn4[r]), last4[r]),
+                                                 nh, nl));
+                _mm256_storeu_pd(&u->far_pt[r][i],
+                                 quotient_known4(_mm256_add_pd(_mm256_add_pd(s, zf4[r]), last4[r]),
+                                                 fh, fl));
             }
         }
+        for (; first_pair < UNPROJECT_COLS; first_pair += 2) {
+            const int i = first_pair;
+            for (int r = 0; r < 3; r++) {
+                const __m128d s = _mm_add_pd(_mm_loadu_pd(&c->col[r][i]), axis[r]);
+                _mm_storeu_pd(&u->near_pt[r][i],
+                              quotient_known2(_mm_add_pd(_mm_add_pd(s, zn[r]), last[r]),
+                                              _mm256_castpd256_pd128(nh),
+                                              _mm256_castpd256_pd128(nl)));
+                _mm_storeu_pd(&u->far_pt[r][i],
+                              quotient_known2(_mm_add_pd(_mm_add_pd(s, zf[r]), last[r]),
+                                              _mm256_castpd256_pd128(fh),
+                                              _mm256_castpd256_pd128(fl)));
+            }
+        }
+        memset(u->state, 1, sizeof(u->state));
+        u->whole = 1;
+        return;
     }
 #endif
     for (; first_pair + 3 < UNPROJECT_COLS; first_pair += 4) {
@@ -504,25 +523,6 @@ static void unproject_row_fill(const struct render_pass *sh, const struct unproj
     /* The four lanes' sums into the pair's (any order: only whether the
      * sum is finite counts). */
     sum = _mm_add_pd(_mm256_castpd256_pd128(sum4), _mm256_extractf128_pd(sum4, 1));
-#endif
-#if QUOTIENT_KNOWN_FMA
-    if (sh->w_known) {
-        const __m128d nh = _mm_set1_pd(sh->wn.zh), nl = _mm_set1_pd(sh->wn.zl);
-        const __m128d fh = _mm_set1_pd(sh->wf.zh), fl = _mm_set1_pd(sh->wf.zl);
-        for (; first_pair < UNPROJECT_COLS; first_pair += 2) {
-            const int i = first_pair;
-            for (int r = 0; r < 3; r++) {
-                const __m128d s = _mm_add_pd(_mm_loadu_pd(&c->col[r][i]), axis[r]);
-                const __m128d n =
-                    quotient_known2(_mm_add_pd(_mm_add_pd(s, zn[r]), last[r]), nh, nl);
-                const __m128d f =
-                    quotient_known2(_mm_add_pd(_mm_add_pd(s, zf[r]), last[r]), fh, fl);
-                _mm_storeu_pd(&u->near_pt[r][i], n);
-                _mm_storeu_pd(&u->far_pt[r][i], f);
-                sum = _mm_add_pd(_mm_add_pd(sum, n), f);
-            }
-        }
-    }
 #endif
     for (int i = first_pair; i < UNPROJECT_COLS; i += 2) {
         const __m128d s3 = _mm_add_pd(_mm_loadu_pd(&c->col[3][i]), axis[3]);
