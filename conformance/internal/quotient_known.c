@@ -175,8 +175,8 @@ static int near_midpoint(double y, double *out, int limit)
             int j = 0;
             while (((Y >> j) & 1) == 0)
                 j++;
-            if (n % (1 << j) != 0)
-                continue;
+            if (j > 4 || n % (1 << j) != 0)
+                continue; /* |n| < 2^5 */
             const uint64_t m = Y >> j;
             if (m == 1)
                 continue;
