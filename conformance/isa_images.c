@@ -31,7 +31,10 @@
  * converging on a point as well as parallel ones), and a fourth with four
  * lights, two behind surfaces, are compared the same way, with their
  * RT_STAT_RAYS: with packets on, Whitted's shadow rays of each block go
- * as a packet per light (render/shade.h, shade_prime_shadows).
+ * as a packet per light (render/shade.h, shade_prime_shadows).  Two
+ * eye-light images under projections loaded with rtLoadMatrixd (one whose
+ * w varies by pixel, one with a camera multiplied in) check the camera
+ * rays' row fill off rtFrustum's path (loaded_projections).
  */
 #include <rt/rt.h>
 #include <math.h>
@@ -302,7 +305,7 @@ static void define_scene(void)
 }
 
 struct answers {
-    float image[4][WIDTH * HEIGHT * 4];
+    float image[6][WIDTH * HEIGHT * 4];
     RThit hits[RAYS];
     RTboolean occluded[RAYS];
     /* RT_STAT_RAYS and RT_STAT_NODE_TESTS of the two frames, the trace
@@ -396,6 +399,75 @@ static void coherent_rays(RTray *rays, int count)
     }
 }
 
+/* The test's frustum (define_scene's rtFrustum), column-major. */
+static void test_frustum(double m[16])
+{
+    const double l = -0.8, r = 0.8, b = -0.6, t = 0.6, n = 1.0, f = 100.0;
+    memset(m, 0, 16 * sizeof(double));
+    m[0] = 2.0 * n / (r - l);
+    m[5] = 2.0 * n / (t - b);
+    m[8] = (r + l) / (r - l);
+    m[9] = (t + b) / (t - b);
+    m[10] = -(f + n) / (f - n);
+    m[11] = -1.0;
+    m[14] = -2.0 * f * n / (f - n);
+}
+
+/* out = a b, column-major. */
+static void mat_mul(const double a[16], const double b[16], double out[16])
+{
+    for (int c = 0; c < 4; c++)
+        for (int r = 0; r < 4; r++) {
+            double sum = 0.0;
+            for (int k = 0; k < 4; k++)
+                sum += a[4 * k + r] * b[4 * c + k];
+            out[4 * c + r] = sum;
+        }
+}
+
+/* Two more eye-light frames under projections given by rtLoadMatrixd:
+ * the frustum after a clip-space map that adds 0.06 x - 0.04 y to w, so
+ * that each pixel's w differs (the SIMD copies' row fill divides by each
+ * point's w, render.c), and the frustum with a camera multiplied in (a
+ * turn of 7 degrees about a tilted axis and a shift, as BART's scenes
+ * load the view), whose inverse's w row has x and y terms of rounding
+ * size (w the same double for every pixel when they are small enough:
+ * render.c's unproject_w_known, the quotients then without the
+ * divider). */
+static void loaded_projections(struct answers *out)
+{
+    double p[16], m[16];
+    test_frustum(p);
+    const double skew[16] = {1, 0, 0, 0.06, 0, 1, 0, -0.04, 0, 0, 1, 0, 0, 0, 0, 1};
+    mat_mul(skew, p, m);
+    rtShadingMode(RT_EYE_LIGHT);
+    rtMatrixMode(RT_PROJECTION);
+    rtLoadMatrixd(m);
+    rtRenderFrame();
+    rtReadPixels(0, 0, WIDTH, HEIGHT, RT_RGBA, RT_FLOAT, out->image[4]);
+    const double a = 7.0 * 3.14159265358979323846 / 180.0, c = cos(a), s = sin(a);
+    double ax[3] = {0.3, 1.0, 0.2};
+    const double len = sqrt(ax[0] * ax[0] + ax[1] * ax[1] + ax[2] * ax[2]);
+    for (int k = 0; k < 3; k++)
+        ax[k] /= len;
+    const double t = 1.0 - c;
+    const double view[16] = {t * ax[0] * ax[0] + c,         t * ax[0] * ax[1] + s * ax[2],
+                             t * ax[0] * ax[2] - s * ax[1], 0,
+                             t * ax[0] * ax[1] - s * ax[2], t * ax[1] * ax[1] + c,
+                             t * ax[1] * ax[2] + s * ax[0], 0,
+                             t * ax[0] * ax[2] + s * ax[1], t * ax[1] * ax[2] - s * ax[0],
+                             t * ax[2] * ax[2] + c,         0,
+                             0.3,                           -0.2,
+                             0.5,                           1};
+    mat_mul(p, view, m);
+    rtLoadMatrixd(m);
+    rtRenderFrame();
+    rtReadPixels(0, 0, WIDTH, HEIGHT, RT_RGBA, RT_FLOAT, out->image[5]);
+    rtLoadIdentity();
+    rtFrustum(-0.8, 0.8, -0.6, 0.6, 1.0, 100.0);
+    rtMatrixMode(RT_MODELVIEW);
+}
+
 static int run(const char *config, const RTray *rays, struct answers *out)
 {
     RTcontext ctx = rtCreateContext(config);
@@ -441,6 +513,7 @@ static int run(const char *config, const RTray *rays, struct answers *out)
     rtRenderFrame();
     stats(out, 5);
     rtReadPixels(0, 0, WIDTH, HEIGHT, RT_RGBA, RT_FLOAT, out->image[3]);
+    loaded_projections(out);
     CHECK_NO_ERR();
     rtMakeCurrent(NULL);
     rtDestroyContext(ctx);
@@ -480,6 +553,11 @@ int main(void)
     printf("  reference: %d of %d rays hit (%d of the %d coherent ones; %d occluded)\n",
            hit_count, RAYS, coherent_hits, COHERENT, coherent_occluded);
     CHECK(hit_count > RAYS / 10);
+    /* The loaded projections took effect: their frames differ from the
+     * rtFrustum frame and from each other. */
+    CHECK(memcmp(ref->image[4], ref->image[0], sizeof(ref->image[0])) != 0);
+    CHECK(memcmp(ref->image[5], ref->image[0], sizeof(ref->image[0])) != 0);
+    CHECK(memcmp(ref->image[5], ref->image[4], sizeof(ref->image[0])) != 0);
     CHECK(coherent_hits > COHERENT / 4 && coherent_occluded > COHERENT / 20);
     static const char *const configs[] = {
         "threads=1 isa=sse4",  "threads=3 isa=sse4",   "threads=1 isa=avx2",

@@ -3,7 +3,8 @@
  * render_avx512.c - the frame's tile loop with packets (render_tile_packets)
  * and everything it calls in render.c, compiled again with AVX-512
  * enabled (CMakeLists.txt gives this file -mavx512f, -mavx512vl,
- * -mavx512bw, -mavx512dq, -mavx2 and -ffp-contract=off, no FMA), as
+ * -mavx512bw, -mavx512dq, -mavx2, -mfma and -ffp-contract=off: FMA only
+ * where the source asks for it, as in the AVX2 copy), as
  * render_avx2.c compiles it for AVX2: render.c included with its
  * external functions renamed (suffix _avx512), the camera rays four at a
  * time as there, so the same rays, cones and pixels bit for bit.  What
@@ -12,8 +13,8 @@
  * shade_eye_avx512.c) in place of the AVX2 one.  render_tile calls this
  * copy's packet loop when the scene's traversal table is AVX-512
  * (trace/kernels.c has checked that the CPU and the operating system run
- * AVX-512F, VL, BW and DQ then).  Under RT_NO_SIMD, or where the compiler
- * does not target AVX-512, the unit is absent
+ * AVX-512F, VL, BW and DQ, AVX2 and FMA then).  Under RT_NO_SIMD, or
+ * where the compiler does not target AVX-512, the unit is absent
  * (render_tile_packets_avx512_unit returns NULL).
  */
 #include <stddef.h>
