@@ -18,8 +18,7 @@
  * found here by the extended Euclidean algorithm (the helper halves
  * modulo Y instead), at several scales and both signs.  For each divisor
  * the check refuses, the test looks for a dividend that fails among the
- * same near-midpoint ones and counts the refusals it cannot justify (at
- * most a handful are allowed: none expected).  The check must refuse
+ * same near-midpoint ones; a refusal it cannot justify fails the test.  The check must refuse
  * zero, subnormal, infinite, NaN and out-of-range divisors and accept
  * both bounds.
  *
@@ -159,8 +158,8 @@ static uint64_t mul_mod(uint64_t a, uint64_t b, uint64_t m)
 
 /* The dividends x (significands X in [2^52, 2^53), scaled to [1, 2))
  * with 2^s X = n (mod Y) for s = 53, 54 and 0 < |n| <= 24: the quotients
- * closest to a rounding midpoint.  Calls visit(x) for each, at most
- * limit. */
+ * closest to a rounding midpoint, into out (at most limit); returns
+ * their count. */
 static int near_midpoint(double y, double *out, int limit)
 {
     int e;
