@@ -1027,19 +1027,19 @@ SURFACE_INLINE int lod_decide_oct(__m512d x, __m512d top, double relative, doubl
     return (below | beyond) | (inside & exact);
 }
 
-/* lod_fast_quad of eight hits (a block's two quads in one vector, lane i
- * hit i): each lane its operations in their order, so the same y, the
- * same conditions and the same lambdas. */
-SURFACE_INLINE int lod_fast_oct(const struct surface_lod_fast *f, const double unit[3],
-                                const __m512d d[3], const __m512d g[3], __m512d width,
-                                __m512d top2, float lambda[8])
+/* lod_fast_quad of eight hits, each lane on its own triangle part: n,
+ * m0, m1 and sin2 lane i's part's unit normal, texel map rows and bound
+ * (lod_fast_init), d, g and width its hit's as in lod_fast_quad, top2
+ * the texture's lod_top squared.  Each lane its operations in their
+ * order, so the same y, conditions and lambdas as lod_fast_quad gives a
+ * hit on that part; writes all eight lambdas (a lane not decided gets a
+ * value the caller must not use) and returns the mask of the decided. */
+SURFACE_INLINE int lod_fast_oct_lanes(const __m512d n[3], const __m512d m0[3],
+                                      const __m512d m1[3], __m512d sin2, const __m512d d[3],
+                                      const __m512d g[3], __m512d width, __m512d top2,
+                                      float lambda[8])
 {
-    __m512d n[3], m0[3], m1[3], c[3];
-    for (int k = 0; k < 3; k++) {
-        n[k] = _mm512_set1_pd(unit[k]);
-        m0[k] = _mm512_set1_pd(f->m[0][k]);
-        m1[k] = _mm512_set1_pd(f->m[1][k]);
-    }
+    __m512d c[3];
     oct_cross(n, d, c);
     const __m512d dd = oct_dot(d, d), s = oct_dot(c, c);
     const __m512d gd = oct_dot(g, d), gg = _mm512_mul_pd(gd, gd);
@@ -1055,14 +1055,29 @@ SURFACE_INLINE int lod_fast_oct(const struct surface_lod_fast *f, const double u
     const __m512d tiny = _mm512_set1_pd(0x1p-500), huge = _mm512_set1_pd(0x1p500);
     __mmask8 ok = _mm512_cmp_pd_mask(dd, _mm512_set1_pd(0.25), _CMP_GE_OQ) &
                   _mm512_cmp_pd_mask(dd, _mm512_set1_pd(4.0), _CMP_LE_OQ);
-    ok &= _mm512_cmp_pd_mask(_mm512_mul_pd(s, gg),
-                             _mm512_mul_pd(_mm512_set1_pd(f->sin2), _mm512_mul_pd(dd, dd)),
+    ok &= _mm512_cmp_pd_mask(_mm512_mul_pd(s, gg), _mm512_mul_pd(sin2, _mm512_mul_pd(dd, dd)),
                              _CMP_GE_OQ);
     ok &= _mm512_cmp_pd_mask(ww, _mm512_set1_pd(0x1p-200), _CMP_GE_OQ) &
           _mm512_cmp_pd_mask(ww, _mm512_set1_pd(0x1p200), _CMP_LE_OQ);
     ok &= _mm512_cmp_pd_mask(p, tiny, _CMP_GE_OQ) & _mm512_cmp_pd_mask(p, huge, _CMP_LE_OQ);
     ok &= _mm512_cmp_pd_mask(q, tiny, _CMP_GE_OQ) & _mm512_cmp_pd_mask(q, huge, _CMP_LE_OQ);
     return ok & lod_decide_oct(x2, top2, LOD_FAST_RELATIVE, LOD_FAST_ABSOLUTE, lambda);
+}
+
+/* lod_fast_quad of eight hits on one triangle part (a block's two quads
+ * in one vector, lane i hit i): lod_fast_oct_lanes with f's values and
+ * the part's unit normal broadcast, the same doubles in every lane. */
+SURFACE_INLINE int lod_fast_oct(const struct surface_lod_fast *f, const double unit[3],
+                                const __m512d d[3], const __m512d g[3], __m512d width,
+                                __m512d top2, float lambda[8])
+{
+    __m512d n[3], m0[3], m1[3];
+    for (int k = 0; k < 3; k++) {
+        n[k] = _mm512_set1_pd(unit[k]);
+        m0[k] = _mm512_set1_pd(f->m[0][k]);
+        m1[k] = _mm512_set1_pd(f->m[1][k]);
+    }
+    return lod_fast_oct_lanes(n, m0, m1, _mm512_set1_pd(f->sin2), d, g, width, top2, lambda);
 }
 #endif
 
@@ -1788,6 +1803,15 @@ SURFACE_INLINE void lanes_zero(float *x, int n)
         _mm256_storeu_ps(x + TRACE_PACKET * i, _mm256_setzero_ps());
 }
 
+#if defined(SURFACE_OCTS)
+/* n vectors of TRACE_PACKET doubles from x on set to zero. */
+SURFACE_INLINE void lanes_zero_pd(double *x, int n)
+{
+    for (int i = 0; i < n; i++)
+        _mm512_storeu_pd(x + TRACE_PACKET * i, _mm512_setzero_pd());
+}
+#endif
+
 /* Lane i of the result is per_slot[slots[i]] (slots in 0..7): a float
  * moved, not computed. */
 SURFACE_INLINE __m256 lanes_by_slot(const float per_slot[TRACE_PACKET], __m256i slots)
@@ -1927,31 +1951,74 @@ static inline struct surface_cache *eye_cache(const struct shade_context *sc, ui
     return &sc->cache[prim % SHADE_CACHES];
 }
 
+/* The level-of-detail parts of a block on several triangles in slot
+ * order (fetch_lanes_mixed; slot j's in [j]): each distinct triangle's
+ * part of its own material's texture, and in the AVX-512 copy its
+ * lod_fast values: the part's unit normal, its texel map's rows and bound
+ * (lod_fast_init, kept in the triangle's cache entry) and the slots whose
+ * map is usable (bit j). */
+struct slots_lod {
+    struct surface_lod part[TRACE_PACKET];
+#if defined(SURFACE_OCTS)
+    double n[3][TRACE_PACKET], m[2][3][TRACE_PACKET], sin2[TRACE_PACKET];
+    int usable;
+#endif
+};
+
 /*
  * The levels of detail of texture tx in the lanes of `mine` (a bit a
  * lane) of a block on several triangles (fetch_lanes_mixed): lod_quad_lanes
  * on each quad holding a lane of `mine`, each lane on its own triangle's
- * part (tri_lod[slot[lane]]).  A lane outside `mine` takes lane `first`'s
+ * part (tri->part[slot[lane]]).  A lane outside `mine` takes lane `first`'s
  * part (one of `mine`) in its place, and its lambda is the caller's to
  * drop.  With every lane in `mine` (a constant, folded when inlined) this
- * is the one-material block's loop, unchanged.
+ * is the one-material block's loop, unchanged.  The AVX-512 copy first
+ * takes lod_fast_oct_lanes in the lanes of `mine` whose triangle's map is
+ * usable (tri->usable), each lane on its own triangle's map, as a one-triangle
+ * block of that triangle would (surface_fetch_lanes), and skips a quad
+ * whose lanes of `mine` it all decided; lod_quad_lanes writes a quad's
+ * four lambdas again otherwise (the same floats where lod_fast decided:
+ * lod_fast's margin proves its lambda lod_ray's, which lod_quad gives).
  */
 SURFACE_INLINE void lod_slots_lanes(const struct scene_texture *tx,
-                                    const struct surface_lod tri_lod[TRACE_PACKET],
-                                    const int slot[TRACE_PACKET], int mine, int first,
-                                    const __m256 dv[3], const __m256 g[3], const float width[],
-                                    const float lane_g[3][TRACE_PACKET],
+                                    const struct slots_lod *tri, const int slot[TRACE_PACKET],
+                                    int mine, int first, const __m256 dv[3], const __m256 g[3],
+                                    const float width[], const float lane_g[3][TRACE_PACKET],
                                     const float dir[3][TRACE_PACKET], float lambda[TRACE_PACKET])
 {
     const double top = lod_top(tx->level_count);
     const __m256 wv = _mm256_loadu_ps(width);
+    int fast8 = 0;
+#if defined(SURFACE_OCTS)
+    int usable = 0;
+    for (int i = 0; i < TRACE_PACKET; i++)
+        usable |= (tri->usable >> slot[i] & 1) << i;
+    usable &= mine;
+    if (usable) {
+        const __m512i s =
+            _mm512_cvtepi32_epi64(_mm256_loadu_si256((const __m256i *)(const void *)slot));
+        __m512d n[3], m0[3], m1[3], d8[3], g8[3];
+        for (int k = 0; k < 3; k++) {
+            n[k] = _mm512_permutexvar_pd(s, _mm512_loadu_pd(tri->n[k]));
+            m0[k] = _mm512_permutexvar_pd(s, _mm512_loadu_pd(tri->m[0][k]));
+            m1[k] = _mm512_permutexvar_pd(s, _mm512_loadu_pd(tri->m[1][k]));
+            d8[k] = _mm512_cvtps_pd(dv[k]);
+            g8[k] = _mm512_cvtps_pd(g[k]);
+        }
+        fast8 = usable & lod_fast_oct_lanes(n, m0, m1,
+                                            _mm512_permutexvar_pd(s, _mm512_loadu_pd(tri->sin2)),
+                                            d8, g8, _mm512_cvtps_pd(wv),
+                                            _mm512_set1_pd(top * top), lambda);
+    }
+#endif
     for (int h = 0; h < TRACE_PACKET / 4; h++) {
-        if (!(mine >> 4 * h & 15))
+        const int want = mine >> 4 * h & 15;
+        if (!want || (fast8 >> 4 * h & 15) == want)
             continue;
         const struct surface_lod *l4[4];
         for (int i = 0; i < 4; i++) {
             const int j = 4 * h + i;
-            l4[i] = &tri_lod[slot[mine >> j & 1 ? j : first]];
+            l4[i] = &tri->part[slot[mine >> j & 1 ? j : first]];
         }
         const int shared = l4[0] == l4[1] && l4[0] == l4[2] && l4[0] == l4[3];
 #define HALF(v) _mm256_cvtps_pd(h ? _mm256_extractf128_ps(v, 1) : _mm256_castps256_ps128(v))
@@ -1993,7 +2060,7 @@ static void fetch_lanes_two(const struct shade_context *sc, const struct hit_tri
                             const struct scene_texture *tx2, int lod2,
                             const int slot[TRACE_PACKET], const int32_t other_lane[TRACE_PACKET],
                             const float tri_st[2][3][TRACE_PACKET],
-                            const struct surface_lod tri_lod[TRACE_PACKET], __m256 b0, __m256 b1,
+                            const struct slots_lod *tri_lod, __m256 b0, __m256 b1,
                             __m256 b2, const __m256 g[3], const __m256 dv[3],
                             const float lane_g[3][TRACE_PACKET], __m256 amb[3], __m256 dif[3])
 {
@@ -2179,7 +2246,16 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
     const int textured = tx || tx2;
     if (textured)
         lanes_zero(tri_st[0][0], 6);
-    struct surface_lod tri_lod[TRACE_PACKET];
+    struct slots_lod tri_lod;
+#if defined(SURFACE_OCTS)
+    /* The slots beyond count are zeros that no index selects. */
+    tri_lod.usable = 0;
+    if (lod || lod2) {
+        lanes_zero_pd(tri_lod.n[0], 3);
+        lanes_zero_pd(tri_lod.m[0][0], 6);
+        lanes_zero_pd(tri_lod.sin2, 1);
+    }
+#endif
     for (int j = 0; j < count; j++) {
         struct hit_triangle tj = t;
         tj.v = &mesh->indices[3 * prim[j]];
@@ -2202,8 +2278,23 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
             const float *const vst[3] = {&mesh->texcoords[2 * tj.v[0]],
                                          &mesh->texcoords[2 * tj.v[1]],
                                          &mesh->texcoords[2 * tj.v[2]]};
-            tri_lod[j] = *lod_triangle(c, other_slot[j] ? tx2 : tx, t.inst, mesh, prim[j],
-                                       tj.v, vst, NULL);
+            const struct surface_lod *l =
+                lod_triangle(c, other_slot[j] ? tx2 : tx, t.inst, mesh, prim[j], tj.v, vst, NULL);
+            tri_lod.part[j] = *l;
+#if defined(SURFACE_OCTS)
+            /* Its texel map once per triangle part, as surface_fetch_lanes. */
+            if (!c->fast.state)
+                lod_fast_init(l, &c->fast);
+            if (c->fast.state > 0) {
+                for (int k = 0; k < 3; k++) {
+                    tri_lod.n[k][j] = l->n[k];
+                    tri_lod.m[0][k][j] = c->fast.m[0][k];
+                    tri_lod.m[1][k][j] = c->fast.m[1][k];
+                }
+                tri_lod.sin2[j] = c->fast.sin2;
+                tri_lod.usable |= 1 << j;
+            }
+#endif
         }
     }
     const __m256i slots = _mm256_loadu_si256((const __m256i *)(const void *)slot);
@@ -2253,7 +2344,7 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
                   lighting, out, amb, dif);
     if (two) {
         fetch_lanes_two(sc, &t, dir, width, m2, call, lighting, tx, lod, tx2, lod2, slot,
-                        other_lane, tri_st, tri_lod, b0, b1, b2, g, dv, lane_g, amb, dif);
+                        other_lane, tri_st, &tri_lod, b0, b1, b2, g, dv, lane_g, amb, dif);
         tx = NULL; /* done */
     }
     if (tx) {
@@ -2264,7 +2355,7 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
         for (int i = 0; i < TRACE_PACKET; i++)
             lambda[i] = -INFINITY;
         if (lod)
-            lod_slots_lanes(tx, tri_lod, slot, (1 << TRACE_PACKET) - 1, 0, dv, g, width, lane_g,
+            lod_slots_lanes(tx, &tri_lod, slot, (1 << TRACE_PACKET) - 1, 0, dv, g, width, lane_g,
                             dir, lambda);
         deferred = lanes_texture_end(tx, lambda, lane_st, amb, dif, defer);
     }
