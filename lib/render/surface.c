@@ -1812,6 +1812,24 @@ SURFACE_INLINE void lanes_zero_pd(double *x, int n)
 }
 #endif
 
+/* Lane i of the result is the first lane j <= i with p[j] == p[i]: the
+ * lanes j = i - 1 down to 0 compared with lane i, each in one permute and
+ * compare of all lanes (the lanes i < k masked off in step k), the last
+ * equal one kept.  No branch, whatever the values. */
+SURFACE_INLINE __m256i lanes_first_equal(__m256i p)
+{
+    const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+    __m256i first = lane;
+    for (int k = 1; k < TRACE_PACKET; k++) {
+        const __m256i back = _mm256_sub_epi32(lane, _mm256_set1_epi32(k)); /* i - k */
+        const __m256i eq = _mm256_andnot_si256(_mm256_srai_epi32(back, 31),
+                                               _mm256_cmpeq_epi32(p, _mm256_permutevar8x32_epi32(
+                                                                         p, back)));
+        first = _mm256_blendv_epi8(first, back, eq);
+    }
+    return first;
+}
+
 /* Lane i of the result is per_slot[slots[i]] (slots in 0..7): a float
  * moved, not computed. */
 SURFACE_INLINE __m256 lanes_by_slot(const float per_slot[TRACE_PACKET], __m256i slots)
@@ -2152,38 +2170,46 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
         return 0;
     const uint32_t material = mesh->tri_material[h0->prim];
     const uint8_t recorded = mesh->tri_flags[h0->prim];
-    /* The distinct triangles in the order of their first hit; lane i is
-     * on triangle slot[i].  The same recorded flags give the same
-     * flags after hit_triangle's inheritance (one instance).  The
-     * triangles may be of two materials: `material`, that of the first
-     * hit, and `other` (group 1: other_slot[j] for slot j, other_lane[i]
-     * all ones for lane i), see the second material below. */
-    uint32_t prim[TRACE_PACKET], other = material;
-    int slot[TRACE_PACKET], other_slot[TRACE_PACKET], count = 0, two = 0;
+    /* The distinct triangles: lane i is on the triangle of slot[i], the
+     * first lane hitting it (lanes_first_equal), and the slots taken are
+     * the lanes `leaders`, in the order of their first hit.  Every lane's
+     * recorded flags must be the first's (the same flags after
+     * hit_triangle's inheritance: one instance).  The triangles may be of
+     * two materials: `material`, that of the first hit, and `other`
+     * (group 1: other_lane[i] all ones for lane i), see the second
+     * material below.  Tests without branches on the hits, which decide
+     * no value: a block is taken or refused as a search of the distinct
+     * triangles would. */
+    uint32_t prim[TRACE_PACKET], mat[TRACE_PACKET], other = material;
+    int slot[TRACE_PACKET], two = 0;
     int32_t other_lane[TRACE_PACKET];
+    unsigned flags_differ = 0;
     for (int i = 0; i < TRACE_PACKET; i++) {
         const uint32_t p = hits[i]->prim;
-        int j = 0;
-        while (j < count && prim[j] != p)
-            j++;
-        if (j == count) {
-            if (mesh->tri_flags[p] != recorded)
-                return 0;
-            const uint32_t mp = mesh->tri_material[p];
-            if (mp != material) {
-                if (!two) {
-                    other = mp;
-                    two = 1;
-                } else if (mp != other) {
-                    return 0;
-                }
-            }
-            other_slot[count] = mp != material;
-            prim[count++] = p;
-        }
-        slot[i] = j;
-        other_lane[i] = -other_slot[j];
+        prim[i] = p;
+        mat[i] = mesh->tri_material[p];
+        flags_differ |= mesh->tri_flags[p] ^ recorded;
     }
+    if (flags_differ)
+        return 0;
+    const __m256i prims = _mm256_loadu_si256((const __m256i *)(const void *)prim);
+    const __m256i first_lane = lanes_first_equal(prims);
+    _mm256_storeu_si256((__m256i *)(void *)slot, first_lane);
+    const int leaders = _mm256_movemask_ps(_mm256_castsi256_ps(
+        _mm256_cmpeq_epi32(first_lane, _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7))));
+    const __m256i mats = _mm256_loadu_si256((const __m256i *)(const void *)mat);
+    const __m256i in_other = _mm256_xor_si256(
+        _mm256_cmpeq_epi32(mats, _mm256_set1_epi32((int32_t)material)), _mm256_set1_epi32(-1));
+    const int other_mask = _mm256_movemask_ps(_mm256_castsi256_ps(in_other));
+    if (other_mask) {
+        other = mat[__builtin_ctz((unsigned)other_mask)];
+        two = 1;
+        const int of_other = _mm256_movemask_ps(
+            _mm256_castsi256_ps(_mm256_cmpeq_epi32(mats, _mm256_set1_epi32((int32_t)other))));
+        if ((of_other & other_mask) != other_mask)
+            return 0; /* a third material */
+    }
+    _mm256_storeu_si256((__m256i *)(void *)other_lane, in_other);
     const struct scene_material *m = &mesh->materials[material];
     const struct scene_material *call = &t.inst->appearance.material;
     const float *emission;
@@ -2236,8 +2262,8 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
      * eight slots per component (tri_x[...][j]: slot j's): each lane then
      * takes its slot's value with one vpermps by the lanes' slot indices
      * (lanes_by_slot), the same floats as loading them lane by lane from
-     * the lane's own triangle, moved, not computed.  The slots beyond
-     * count are zeros that no index selects. */
+     * the lane's own triangle, moved, not computed.  The slots of no
+     * leader are zeros that no index selects. */
     float tri_ng[3][TRACE_PACKET], tri_n[3][3][TRACE_PACKET], tri_st[2][3][TRACE_PACKET];
     lanes_zero(tri_ng[0], 3);
     const int smooth = mesh->has_normals && !(t.flags & TRI_FLAT);
@@ -2248,7 +2274,7 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
         lanes_zero(tri_st[0][0], 6);
     struct slots_lod tri_lod;
 #if defined(SURFACE_OCTS)
-    /* The slots beyond count are zeros that no index selects. */
+    /* The slots of no leader are zeros that no index selects. */
     tri_lod.usable = 0;
     if (lod || lod2) {
         lanes_zero_pd(tri_lod.n[0], 3);
@@ -2256,7 +2282,9 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
         lanes_zero_pd(tri_lod.sin2, 1);
     }
 #endif
-    for (int j = 0; j < count; j++) {
+    for (unsigned left = (unsigned)leaders; left; left &= left - 1) {
+        const int j = __builtin_ctz(left);
+        const int in_two = mat[j] != material;
         struct hit_triangle tj = t;
         tj.v = &mesh->indices[3 * prim[j]];
         struct surface_cache *c = triangle_cache(eye_cache(sc, prim[j]), t.inst, prim[j]);
@@ -2274,12 +2302,12 @@ static int fetch_lanes_mixed(const struct shade_context *sc,
                     tri_st[k][v][j] = mesh->texcoords[2 * tj.v[v] + k];
         }
         /* The triangle part of its own material's texture. */
-        if (other_slot[j] ? lod2 : lod) {
+        if (in_two ? lod2 : lod) {
             const float *const vst[3] = {&mesh->texcoords[2 * tj.v[0]],
                                          &mesh->texcoords[2 * tj.v[1]],
                                          &mesh->texcoords[2 * tj.v[2]]};
             const struct surface_lod *l =
-                lod_triangle(c, other_slot[j] ? tx2 : tx, t.inst, mesh, prim[j], tj.v, vst, NULL);
+                lod_triangle(c, in_two ? tx2 : tx, t.inst, mesh, prim[j], tj.v, vst, NULL);
             tri_lod.part[j] = *l;
 #if defined(SURFACE_OCTS)
             /* Its texel map once per triangle part, as surface_fetch_lanes. */
