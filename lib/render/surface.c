@@ -1990,13 +1990,15 @@ struct slots_lod {
  * part (tri->part[slot[lane]]).  A lane outside `mine` takes lane `first`'s
  * part (one of `mine`) in its place, and its lambda is the caller's to
  * drop.  With every lane in `mine` (a constant, folded when inlined) this
- * is the one-material block's loop, unchanged.  The AVX-512 copy first
- * takes lod_fast_oct_lanes in the lanes of `mine` whose triangle's map is
- * usable (tri->usable), each lane on its own triangle's map, as a one-triangle
- * block of that triangle would (surface_fetch_lanes), and skips a quad
- * whose lanes of `mine` it all decided; lod_quad_lanes writes a quad's
- * four lambdas again otherwise (the same floats where lod_fast decided:
- * lod_fast's margin proves its lambda lod_ray's, which lod_quad gives).
+ * is the one-material block's loop.  The AVX-512 copy first takes
+ * lod_fast_oct_lanes in the lanes of `mine` whose triangle's map is usable
+ * (tri->usable), each lane on its own triangle's map, as a one-triangle
+ * block of that triangle would (surface_fetch_lanes; a lane off those
+ * computes on its slot's values, zeros where the slot has none, and is
+ * masked off: no value of it is used), and skips a quad whose lanes of
+ * `mine` it all decided; lod_quad_lanes writes a quad's four lambdas again
+ * otherwise (the same floats where lod_fast decided: lod_fast's margin
+ * proves its lambda lod_ray's, which lod_quad gives).
  */
 SURFACE_INLINE void lod_slots_lanes(const struct scene_texture *tx,
                                     const struct slots_lod *tri, const int slot[TRACE_PACKET],
