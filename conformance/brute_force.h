@@ -156,6 +156,34 @@ static inline void bf_scaling(double m[16], double x, double y, double z)
     m[10] = z;
 }
 
+/* glFrustum's matrix (OpenGL 1.5 specification, sec. 2.11.2), column-major. */
+static inline void bf_frustum(double m[16], double l, double r, double b, double t, double n,
+                              double f)
+{
+    memset(m, 0, 16 * sizeof(double));
+    m[0] = 2.0 * n / (r - l);
+    m[5] = 2.0 * n / (t - b);
+    m[8] = (r + l) / (r - l);
+    m[9] = (t + b) / (t - b);
+    m[10] = -(f + n) / (f - n);
+    m[11] = -1.0;
+    m[14] = -2.0 * f * n / (f - n);
+}
+
+/* glOrtho's matrix (OpenGL 1.5 specification, sec. 2.11.2), column-major. */
+static inline void bf_ortho(double m[16], double l, double r, double b, double t, double n,
+                            double f)
+{
+    memset(m, 0, 16 * sizeof(double));
+    m[0] = 2.0 / (r - l);
+    m[5] = 2.0 / (t - b);
+    m[10] = -2.0 / (f - n);
+    m[12] = -(r + l) / (r - l);
+    m[13] = -(t + b) / (t - b);
+    m[14] = -(f + n) / (f - n);
+    m[15] = 1.0;
+}
+
 /* Rotation by angle (radians) about the unit axis a (Rodrigues). */
 static inline void bf_rotation(double m[16], double angle, const double a[3])
 {

@@ -43,6 +43,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "brute_force.h"
 #include "check.h"
 #include "testutil.h"
 
@@ -402,27 +403,7 @@ static void coherent_rays(RTray *rays, int count)
 /* The test's frustum (define_scene's rtFrustum), column-major. */
 static void test_frustum(double m[16])
 {
-    const double l = -0.8, r = 0.8, b = -0.6, t = 0.6, n = 1.0, f = 100.0;
-    memset(m, 0, 16 * sizeof(double));
-    m[0] = 2.0 * n / (r - l);
-    m[5] = 2.0 * n / (t - b);
-    m[8] = (r + l) / (r - l);
-    m[9] = (t + b) / (t - b);
-    m[10] = -(f + n) / (f - n);
-    m[11] = -1.0;
-    m[14] = -2.0 * f * n / (f - n);
-}
-
-/* out = a b, column-major. */
-static void mat_mul(const double a[16], const double b[16], double out[16])
-{
-    for (int c = 0; c < 4; c++)
-        for (int r = 0; r < 4; r++) {
-            double sum = 0.0;
-            for (int k = 0; k < 4; k++)
-                sum += a[4 * k + r] * b[4 * c + k];
-            out[4 * c + r] = sum;
-        }
+    bf_frustum(m, -0.8, 0.8, -0.6, 0.6, 1.0, 100.0);
 }
 
 /* Two more eye-light frames under projections given by rtLoadMatrixd:
@@ -439,27 +420,22 @@ static void loaded_projections(struct answers *out)
     double p[16], m[16];
     test_frustum(p);
     const double skew[16] = {1, 0, 0, 0.06, 0, 1, 0, -0.04, 0, 0, 1, 0, 0, 0, 0, 1};
-    mat_mul(skew, p, m);
+    bf_mul(m, skew, p);
     rtShadingMode(RT_EYE_LIGHT);
     rtMatrixMode(RT_PROJECTION);
     rtLoadMatrixd(m);
     rtRenderFrame();
     rtReadPixels(0, 0, WIDTH, HEIGHT, RT_RGBA, RT_FLOAT, out->image[4]);
-    const double a = 7.0 * 3.14159265358979323846 / 180.0, c = cos(a), s = sin(a);
     double ax[3] = {0.3, 1.0, 0.2};
     const double len = sqrt(ax[0] * ax[0] + ax[1] * ax[1] + ax[2] * ax[2]);
     for (int k = 0; k < 3; k++)
         ax[k] /= len;
-    const double t = 1.0 - c;
-    const double view[16] = {t * ax[0] * ax[0] + c,         t * ax[0] * ax[1] + s * ax[2],
-                             t * ax[0] * ax[2] - s * ax[1], 0,
-                             t * ax[0] * ax[1] - s * ax[2], t * ax[1] * ax[1] + c,
-                             t * ax[1] * ax[2] + s * ax[0], 0,
-                             t * ax[0] * ax[2] + s * ax[1], t * ax[1] * ax[2] - s * ax[0],
-                             t * ax[2] * ax[2] + c,         0,
-                             0.3,                           -0.2,
-                             0.5,                           1};
-    mat_mul(p, view, m);
+    double view[16];
+    bf_rotation(view, 7.0 * 3.14159265358979323846 / 180.0, ax);
+    view[12] = 0.3;
+    view[13] = -0.2;
+    view[14] = 0.5;
+    bf_mul(m, p, view);
     rtLoadMatrixd(m);
     rtRenderFrame();
     rtReadPixels(0, 0, WIDTH, HEIGHT, RT_RGBA, RT_FLOAT, out->image[5]);

@@ -43,6 +43,7 @@
 
 #include "base/mat4.h"
 #include "base/quotient_known.h"
+#include "brute_force.h"
 #include "check.h"
 #include "render/render.h"
 
@@ -280,34 +281,11 @@ static void projection_w(const double proj[16], double *wn, double *wf)
     *wf = (0.0 + inv[11] * 1.0) + inv[15];
 }
 
-static void frustum(double l, double r, double b, double t, double n, double f, double m[16])
-{
-    memset(m, 0, 16 * sizeof(double));
-    m[0] = 2.0 * n / (r - l);
-    m[5] = 2.0 * n / (t - b);
-    m[8] = (r + l) / (r - l);
-    m[9] = (t + b) / (t - b);
-    m[10] = -(f + n) / (f - n);
-    m[11] = -1.0;
-    m[14] = -2.0 * f * n / (f - n);
-}
-
+/* gluPerspective's matrix: glFrustum's with top = n tan(fovy / 2). */
 static void perspective(double fovy_deg, double aspect, double n, double f, double m[16])
 {
     const double top = n * tan(fovy_deg * 3.14159265358979323846 / 360.0);
-    frustum(-top * aspect, top * aspect, -top, top, n, f, m);
-}
-
-static void ortho(double l, double r, double b, double t, double n, double f, double m[16])
-{
-    memset(m, 0, 16 * sizeof(double));
-    m[0] = 2.0 / (r - l);
-    m[5] = 2.0 / (t - b);
-    m[10] = -2.0 / (f - n);
-    m[12] = -(r + l) / (r - l);
-    m[13] = -(t + b) / (t - b);
-    m[14] = -(f + n) / (f - n);
-    m[15] = 1.0;
+    bf_frustum(m, -top * aspect, top * aspect, -top, top, n, f);
 }
 
 static double near_far_ratio(void)
@@ -323,13 +301,13 @@ static void random_projection(int kind, double m[16])
     if (kind == 0) {
         const double w = n * (0.1 + 2.0 * uniform()), h = n * (0.1 + 2.0 * uniform());
         const double cx = (uniform() - 0.5) * w, cy = (uniform() - 0.5) * h;
-        frustum(cx - w, cx + w, cy - h, cy + h, n, f, m);
+        bf_frustum(m, cx - w, cx + w, cy - h, cy + h, n, f);
     } else if (kind == 1) {
         perspective(10.0 + 150.0 * uniform(), 0.3 + 3.0 * uniform(), n, f, m);
     } else {
         const double w = pow(10.0, -2.0 + 4.0 * uniform()), h = w * (0.3 + 3.0 * uniform());
         const double c = (uniform() - 0.5) * w;
-        ortho(c - w, c + w, -h, h, n - 1.0, f, m);
+        bf_ortho(m, c - w, c + w, -h, h, n - 1.0, f);
     }
 }
 
@@ -343,46 +321,19 @@ static void with_camera(double m[16])
     const double len = sqrt(ax[0] * ax[0] + ax[1] * ax[1] + ax[2] * ax[2]) + 1e-9;
     for (int k = 0; k < 3; k++)
         ax[k] /= len;
-    const double th = 6.283185307179586 * uniform(), c = cos(th), s = sin(th), t = 1.0 - c;
-    double v[16] = {0};
-    /* Column-major rotation (Rodrigues) and translation. */
-    v[0] = t * ax[0] * ax[0] + c;
-    v[1] = t * ax[0] * ax[1] + s * ax[2];
-    v[2] = t * ax[0] * ax[2] - s * ax[1];
-    v[4] = t * ax[0] * ax[1] - s * ax[2];
-    v[5] = t * ax[1] * ax[1] + c;
-    v[6] = t * ax[1] * ax[2] + s * ax[0];
-    v[8] = t * ax[0] * ax[2] + s * ax[1];
-    v[9] = t * ax[1] * ax[2] - s * ax[0];
-    v[10] = t * ax[2] * ax[2] + c;
+    double v[16];
+    bf_rotation(v, 6.283185307179586 * uniform(), ax);
     for (int k = 0; k < 3; k++)
         v[12 + k] = (uniform() - 0.5) * pow(10.0, 3.0 * uniform());
-    v[15] = 1.0;
-    double out[16];
-    for (int col = 0; col < 4; col++)
-        for (int r = 0; r < 4; r++) {
-            double sum = 0.0;
-            for (int k = 0; k < 4; k++)
-                sum += m[4 * k + r] * v[4 * col + k];
-            out[4 * col + r] = sum;
-        }
-    memcpy(m, out, sizeof(out));
+    bf_mul(m, m, v);
 }
 
 /* The projection P premultiplied by a clip-space map adding a x + b y to
  * w: its inverse's w row has x and y terms, so w varies by point. */
 static void oblique(double m[16], double a, double b)
 {
-    double s[16] = {1, 0, 0, a, 0, 1, 0, b, 0, 0, 1, 0, 0, 0, 0, 1}; /* column-major */
-    double out[16];
-    for (int c = 0; c < 4; c++)
-        for (int r = 0; r < 4; r++) {
-            double sum = 0.0;
-            for (int k = 0; k < 4; k++)
-                sum += s[4 * k + r] * m[4 * c + k];
-            out[4 * c + r] = sum;
-        }
-    memcpy(m, out, sizeof(out));
+    const double s[16] = {1, 0, 0, a, 0, 1, 0, b, 0, 0, 1, 0, 0, 0, 0, 1}; /* column-major */
+    bf_mul(m, s, m);
 }
 
 struct rows_tally {
