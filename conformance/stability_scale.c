@@ -79,15 +79,7 @@ static void view_matrix(double v[16])
 
 static void ortho_matrix(double m[16])
 {
-    const double l = -11.0, r = 11.0, b = -8.25, t = 8.25, n = 1.0, f = 100.0;
-    memset(m, 0, 16 * sizeof(double));
-    m[0] = 2.0 / (r - l);
-    m[5] = 2.0 / (t - b);
-    m[10] = -2.0 / (f - n);
-    m[12] = -(r + l) / (r - l);
-    m[13] = -(t + b) / (t - b);
-    m[14] = -(f + n) / (f - n);
-    m[15] = 1.0;
+    bf_ortho(m, -11.0, 11.0, -8.25, 8.25, 1.0, 100.0);
 }
 
 /* ---- the reference classification (unit scene, double) ---------------------- */
