@@ -220,6 +220,11 @@ shade_texture_lod8_fn shade_texture_lod8_avx2_unit(void);
  * test that they give sample_lod8's floats; NULL where the unit is
  * absent. */
 shade_texture_lod8_fn shade_texture_lod8_steps_avx2_unit(void);
+/* The AVX-512 unit's copies of the two above (its 512-bit set-up,
+ * TEXTURE_OCTS_512 in scene/texture.c); NULL where that unit is absent
+ * (a caller also checks that the CPU runs AVX-512). */
+shade_texture_lod8_fn shade_texture_lod8_avx512_unit(void);
+shade_texture_lod8_fn shade_texture_lod8_steps_avx512_unit(void);
 /* That unit's four-lane log2 of the levels of detail (render/lanes.h,
  * lanes_log2_4 into out, lanes_log2_4_half into half), for the test of
  * its bound; NULL where it is absent. */

@@ -39,6 +39,26 @@ shade_eye_hits_fn shade_eye_hits_avx512_unit(void)
     return shade_eye_hits_avx512;
 }
 
+shade_texture_lod8_fn shade_texture_lod8_avx512_unit(void)
+{
+    return scene_texture_sample_lod8_avx512;
+}
+
+static int lod8_steps(const struct scene_texture *tex, const float lambda[8], const float s[8],
+                      const float t[8], float rgb[3][8])
+{
+    struct scene_texture_lookup8 lookup;
+    if (!scene_texture_prefetch_lod8(tex, lambda, s, t, &lookup))
+        return 0;
+    scene_texture_finish_lod8(&lookup, rgb);
+    return 1;
+}
+
+shade_texture_lod8_fn shade_texture_lod8_steps_avx512_unit(void)
+{
+    return lod8_steps;
+}
+
 /* lod_fast_oct for the test that the lanes it decides are lod_ray's (the
  * four hits in lanes 0 to 3 and again in lanes 4 to 7; a lane counts as
  * decided when both copies are, with the same lambda). */
@@ -92,6 +112,16 @@ shade_log2_oct_half_fn shade_log2_oct_half_avx512_unit(void)
 #include "render/shade.h"
 
 shade_eye_hits_fn shade_eye_hits_avx512_unit(void)
+{
+    return NULL;
+}
+
+shade_texture_lod8_fn shade_texture_lod8_avx512_unit(void)
+{
+    return NULL;
+}
+
+shade_texture_lod8_fn shade_texture_lod8_steps_avx512_unit(void)
 {
     return NULL;
 }

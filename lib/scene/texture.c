@@ -811,15 +811,32 @@ static inline void bilinear8_gather(const struct scene_texture *tex, const __m25
         x[c] = _mm256_i32gather_epi32(texels, off[c], 1);
 }
 
+/* b / 255 of eight bytes b (int32 lanes, 0 to 255) without the divider:
+ * 1/255 = 1/256 + 1/65280, so b / 255 = b 2^-8 + b / 65280, taken as
+ * RN(b 2^-8 + RN(b c)) with c = RN(1/65280) = 0x1.010102p-16.  b 2^-8 is
+ * exact, and this sum rounds to the correctly rounded quotient RN(b / 255)
+ * for every one of the 256 bytes (checked exhaustively by
+ * internal/unit8_split, which also checks that the single product
+ * RN(b RN(1/255)) misses it for 126 of them): the same float as
+ * vdivps, unit8 and the scalar path.  Two products and a sum go to
+ * the pipelined multipliers and adders where twelve divisions a level
+ * queued on the divider (one a channel and corner); on the Zen 4 of
+ * round 65 a knock-out that kept the divisions' products but not their
+ * quotients took about 0.5 to 1 ms off the frame (performance-log.md). */
+static inline __m256 unit8_lanes(__m256i b)
+{
+    const __m256 f = _mm256_cvtepi32_ps(b);
+    return _mm256_add_ps(_mm256_mul_ps(f, _mm256_set1_ps(0x1p-8f)),
+                         _mm256_mul_ps(f, _mm256_set1_ps(0x1.010102p-16f)));
+}
+
 /* The blends of bilinear8_gather's texels x (corners 00, 10, 01, 11)
- * with bilinear8_offsets' weights va, vb: each channel b / 255, then bilinear_at's
- * nested blends. */
+ * with bilinear8_offsets' weights va, vb: each channel b / 255
+ * (unit8_lanes), then bilinear_at's nested blends. */
 static inline void bilinear8_blend(const __m256i x[4], __m256 va, __m256 vb, __m256 out[3])
 {
     const __m256i byte = _mm256_set1_epi32(0xff);
-    const __m256 d255 = _mm256_set1_ps(255.0f);
-#define CHANNEL(x, k)                                                                             \
-    _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_and_si256(_mm256_srli_epi32(x, 8 * (k)), byte)), d255)
+#define CHANNEL(x, k) unit8_lanes(_mm256_and_si256(_mm256_srli_epi32(x, 8 * (k)), byte))
     for (int k = 0; k < 3; k++) {
         const __m256 c00 = CHANNEL(x[0], k), c10 = CHANNEL(x[1], k);
         const __m256 c01 = CHANNEL(x[2], k), c11 = CHANNEL(x[3], k);
