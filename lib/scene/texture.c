@@ -814,15 +814,15 @@ static inline void bilinear8_gather(const struct scene_texture *tex, const __m25
 /* b / 255 of eight bytes b (int32 lanes, 0 to 255) without the divider:
  * 1/255 = 1/256 + 1/65280, so b / 255 = b 2^-8 + b / 65280, taken as
  * RN(b 2^-8 + RN(b c)) with c = RN(1/65280) = 0x1.010102p-16.  b 2^-8 is
- * exact, and this sum rounds to the correctly rounded quotient RN(b / 255)
- * for every one of the 256 bytes (checked exhaustively by
- * internal/unit8_split, which also checks that the single product
- * RN(b RN(1/255)) misses it for 126 of them): the same float as
- * vdivps, unit8 and the scalar path.  Two products and a sum go to
- * the pipelined multipliers and adders where twelve divisions a level
- * queued on the divider (one a channel and corner); on the Zen 4 of
- * round 65 a knock-out that kept the divisions' products but not their
- * quotients took about 0.5 to 1 ms off the frame (performance-log.md). */
+ * exact, and this sum is the correctly rounded quotient RN(b / 255) for
+ * every one of the 256 bytes (checked exhaustively, and by
+ * internal/unit8_split through both units' lookups; the single product
+ * RN(b RN(1/255)) misses it for 126 bytes): the same float as vdivps,
+ * unit8 and the scalar path.  Two products and a sum go to the
+ * pipelined multipliers and adders where twelve divisions a level
+ * queued on the divider (one a channel and corner).  On round 65's Zen 4
+ * it took about 7 % of finish_lod8's samples, some 0.3 ms of the frame,
+ * within the clock's spread (performance-log.md, round 65, zu2). */
 static inline __m256 unit8_lanes(__m256i b)
 {
     const __m256 f = _mm256_cvtepi32_ps(b);
