@@ -1257,7 +1257,7 @@ struct traced_block {
 #define RENDER_KNOCK 0
 #endif
 #ifndef RENDER_ASK_AHEAD
-#define RENDER_ASK_AHEAD 0
+#define RENDER_ASK_AHEAD 2
 #endif
 
 /* The lines block b's shading will read for its first hit's triangle
@@ -1355,15 +1355,7 @@ static void render_tile_eye_traced_first(struct render_pass *pass, struct shade_
      * walk's (the L1i misses above).  Making them only one to four
      * blocks ahead of the walk bought nothing (performance-log.md, round
      * 63, zs2).  The same rays, traced in the same order. */
-#ifndef RENDER_TF_BATCH
-#define RENDER_TF_BATCH 1024
-#endif
-    struct eye_pipeline pipe = {.first = 0, .count = 0};
-    const int n_all = n;
-    for (int c0 = 0; c0 < n_all; c0 += RENDER_TF_BATCH) {
-    const int c1 = c0 + RENDER_TF_BATCH < n_all ? c0 + RENDER_TF_BATCH : n_all;
-    n = c1;
-    for (int j = c0; j < n; j++) {
+    for (int j = 0; j < n; j++) {
         struct traced_block *b = &blocks[j];
         b->found = trace_scene_closest_packet(sc->scene, &b->pk, b->hits, sc->counters);
     }
@@ -1385,6 +1377,7 @@ static void render_tile_eye_traced_first(struct render_pass *pass, struct shade_
 #if RENDER_KNOCK == 1
     return;
 #endif
+    struct eye_pipeline pipe = {.first = 0, .count = 0};
 #if RENDER_KNOCK >= 2
     for (int pass2 = 0; pass2 < 2; pass2++) {
 #if RENDER_KNOCK == 3
@@ -1393,7 +1386,7 @@ static void render_tile_eye_traced_first(struct render_pass *pass, struct shade_
             sc->eye[e].inst = NULL;
 #endif
 #endif
-    for (int j = c0; j < n; j++) {
+    for (int j = 0; j < n; j++) {
         const struct traced_block *b = &blocks[j];
 #if RENDER_OWN_AHEAD > 0
         if (j + RENDER_OWN_AHEAD < n)
@@ -1422,7 +1415,6 @@ static void render_tile_eye_traced_first(struct render_pass *pass, struct shade_
 #if RENDER_KNOCK >= 2
     }
 #endif
-    }
     eye_pipeline_finish(sc, &pipe);
 }
 #endif
