@@ -1170,39 +1170,31 @@ static void block_pixels(const struct render_pass *pass, int bx, int by,
  * them in the block's shading.  Two slots: the block begun and the one
  * before it.  Only the order in which pixels are written changes; each
  * pixel's operations are the same. */
-#ifndef RENDER_EYE_DEPTH
-#define RENDER_EYE_DEPTH 2
-#endif
 struct eye_pipeline {
-    struct shade_eye_pending pending[RENDER_EYE_DEPTH];
-    int first; /* the oldest block begun and not ended */
-    int count; /* blocks begun and not ended, at most RENDER_EYE_DEPTH - 1 between calls */
+    struct shade_eye_pending pending[2];
+    int slot; /* the slot the next block begins in */
+    int full; /* the other slot holds a block to end */
 };
 
-/* A whole block of hits into the pipeline: its prefetches, then the
- * oldest block's texels when the pipeline is full. */
+/* A whole block of hits into the pipeline: its prefetches, then the last
+ * block's texels. */
 static void eye_pipeline_block(const struct shade_context *sc, struct eye_pipeline *p,
                                const float *const dirs[], const struct shade_eye_rays *rays,
                                const struct trace_scene_hit *const hits[], float *const px[])
 {
-    const int slot = (p->first + p->count) % RENDER_EYE_DEPTH;
-    const int begun = RENDER_EYE_BLOCK_BEGIN(sc, dirs, rays, hits, px, &p->pending[slot]);
-    if (p->count == RENDER_EYE_DEPTH - 1) {
-        RENDER_EYE_BLOCK_END(sc, &p->pending[p->first]);
-        p->first = (p->first + 1) % RENDER_EYE_DEPTH;
-        p->count--;
-    }
-    p->count += begun;
+    const int begun = RENDER_EYE_BLOCK_BEGIN(sc, dirs, rays, hits, px, &p->pending[p->slot]);
+    if (p->full)
+        RENDER_EYE_BLOCK_END(sc, &p->pending[p->slot ^ 1]);
+    p->full = begun;
+    p->slot ^= begun;
 }
 
-/* The blocks left, at the tile's end. */
+/* The last block's texels, at the tile's end. */
 static void eye_pipeline_finish(const struct shade_context *sc, struct eye_pipeline *p)
 {
-    while (p->count > 0) {
-        RENDER_EYE_BLOCK_END(sc, &p->pending[p->first]);
-        p->first = (p->first + 1) % RENDER_EYE_DEPTH;
-        p->count--;
-    }
+    if (p->full)
+        RENDER_EYE_BLOCK_END(sc, &p->pending[p->slot ^ 1]);
+    p->full = 0;
 }
 #endif
 
@@ -1249,81 +1241,6 @@ struct traced_block {
  * tile's blocks are made before the first walk (see below; about 1.7-2 ms of
  * the 71 ms kitchen frame on a Zen 4, performance-log.md, round 63, zs2).
  */
-/* How far ahead of its shading a block's first hit's triangle is asked
- * for (traced_block_ask): its triangle's lines RENDER_ASK_AHEAD blocks
- * ahead, its vertices' lines half as far; -1 every block's right after
- * the walks; 0 none. */
-#ifndef RENDER_KNOCK
-#define RENDER_KNOCK 0
-#endif
-#ifndef RENDER_ASK_AHEAD
-#define RENDER_ASK_AHEAD 2
-#endif
-
-/* The lines block b's shading will read for its first hit's triangle
- * (surface_fetch_lanes' one-triangle path, and the first triangle of
- * fetch_lanes_mixed), asked for ahead as hints, which read no value:
- * with `vertices` 0 the triangle's vertex indices, flags, provoking
- * vertex and material and its eye-cache entry (all of its lines); with
- * 1 its three vertices' positions, normals and texture coordinates,
- * through the indices asked for before.  Always inlined: as a function
- * of its own GCC 12 finds it pure (loads and hints only) and deletes its
- * calls, hints and all (performance-log.md, round 56). */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline void traced_block_ask(const struct shade_context *sc, const struct traced_block *b,
-                                    int vertices)
-{
-    if (!b->whole || !(b->found & 1u))
-        return;
-    const struct trace_scene_hit *h = &b->hits[0];
-    const struct scene_mesh *mesh = &shade_hit_instance(sc, h)->object->mesh;
-    const size_t prim = h->prim;
-    const uint32_t *v = &mesh->indices[3 * prim];
-    if (!vertices) {
-        _mm_prefetch((const char *)v, _MM_HINT_T0);
-        _mm_prefetch((const char *)&mesh->tri_flags[prim], _MM_HINT_T0);
-        _mm_prefetch((const char *)&mesh->tri_provoking[prim], _MM_HINT_T0);
-        _mm_prefetch((const char *)&mesh->tri_material[prim], _MM_HINT_T0);
-        if (sc->eye) {
-            const char *e = (const char *)&sc->eye[prim % SHADE_EYE_CACHES];
-            for (size_t o = 0; o < sizeof(sc->eye[0]); o += 64)
-                _mm_prefetch(e + o, _MM_HINT_T0);
-            _mm_prefetch(e + sizeof(sc->eye[0]) - 1, _MM_HINT_T0);
-        }
-        return;
-    }
-    for (int k = 0; k < 3; k++) {
-        const size_t i = v[k];
-        _mm_prefetch((const char *)&mesh->positions[3 * i], _MM_HINT_T0);
-        if (mesh->normals)
-            _mm_prefetch((const char *)&mesh->normals[3 * i], _MM_HINT_T0);
-        if (mesh->texcoords)
-            _mm_prefetch((const char *)&mesh->texcoords[2 * i], _MM_HINT_T0);
-    }
-}
-
-#ifndef RENDER_OWN_AHEAD
-#define RENDER_OWN_AHEAD 0
-#endif
-
-/* The lines of block b itself that its shading reads (its packet's mask,
- * its hits, the lanes' copy of its rays, its place), asked for as hints:
- * the walks of the blocks after it have evicted them from the first-level
- * cache by then. */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline void traced_block_ask_own(const struct traced_block *b)
-{
-    _mm_prefetch((const char *)&b->pk.active, _MM_HINT_T0);
-    const char *p = (const char *)b->hits, *end = (const char *)(b + 1);
-    for (; p < end; p += 64)
-        _mm_prefetch(p, _MM_HINT_T0);
-    _mm_prefetch(end - 1, _MM_HINT_T0);
-}
-
 static void render_tile_eye_traced_first(struct render_pass *pass, struct shade_context *sc,
                                          int x0, int y0)
 {
@@ -1359,45 +1276,9 @@ static void render_tile_eye_traced_first(struct render_pass *pass, struct shade_
         struct traced_block *b = &blocks[j];
         b->found = trace_scene_closest_packet(sc->scene, &b->pk, b->hits, sc->counters);
     }
-#if RENDER_ASK_AHEAD < 0
-    for (int j = 0; j < n; j++)
-        traced_block_ask(sc, &blocks[j], 0);
-    for (int j = 0; j < n; j++)
-        traced_block_ask(sc, &blocks[j], 1);
-#elif RENDER_ASK_AHEAD > 0
-    for (int j = 0; j < RENDER_ASK_AHEAD && j < n; j++)
-        traced_block_ask(sc, &blocks[j], 0);
-    for (int j = 0; j < (RENDER_ASK_AHEAD + 1) / 2 && j < n; j++)
-        traced_block_ask(sc, &blocks[j], 1);
-#endif
-#if RENDER_OWN_AHEAD > 0
-    for (int j = 0; j < RENDER_OWN_AHEAD && j < n; j++)
-        traced_block_ask_own(&blocks[j]);
-#endif
-#if RENDER_KNOCK == 1
-    return;
-#endif
-    struct eye_pipeline pipe = {.first = 0, .count = 0};
-#if RENDER_KNOCK >= 2
-    for (int pass2 = 0; pass2 < 2; pass2++) {
-#if RENDER_KNOCK == 3
-    if (pass2 && sc->eye)
-        for (int e = 0; e < SHADE_EYE_CACHES; e++)
-            sc->eye[e].inst = NULL;
-#endif
-#endif
+    struct eye_pipeline pipe = {.slot = 0, .full = 0};
     for (int j = 0; j < n; j++) {
         const struct traced_block *b = &blocks[j];
-#if RENDER_OWN_AHEAD > 0
-        if (j + RENDER_OWN_AHEAD < n)
-            traced_block_ask_own(&blocks[j + RENDER_OWN_AHEAD]);
-#endif
-#if RENDER_ASK_AHEAD > 0
-        if (j + RENDER_ASK_AHEAD < n)
-            traced_block_ask(sc, &blocks[j + RENDER_ASK_AHEAD], 0);
-        if (j + (RENDER_ASK_AHEAD + 1) / 2 < n)
-            traced_block_ask(sc, &blocks[j + (RENDER_ASK_AHEAD + 1) / 2], 1);
-#endif
         if (!b->whole || b->found != b->pk.active) {
             eye_block(pass, sc, x0, y0, b->bx, b->by, &b->pk, b->found, b->hits, b->cone);
             continue;
@@ -1412,9 +1293,6 @@ static void render_tile_eye_traced_first(struct render_pass *pass, struct shade_
         block_pixels(pass, b->bx, b->by, px);
         eye_pipeline_block(sc, &pipe, dirs, &b->lanes.rays, hits, px);
     }
-#if RENDER_KNOCK >= 2
-    }
-#endif
     eye_pipeline_finish(sc, &pipe);
 }
 #endif
@@ -1474,7 +1352,7 @@ static void render_tile_packets(struct render_pass *pass, struct shade_context *
 #if defined(RENDER_UNIT_AVX2)
     /* The texels of a block are loaded after the next block's trace
      * (eye_pipeline). */
-    struct eye_pipeline pipe = {.first = 0, .count = 0};
+    struct eye_pipeline pipe = {.slot = 0, .full = 0};
 #endif
     for (int by = y0; by < y0 + RENDER_TILE_SIZE && by < vp[3]; by += RENDER_BLOCK_H) {
         unproject_cache_row(pass, &cache, by);
