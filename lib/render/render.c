@@ -1236,8 +1236,9 @@ struct traced_block {
  * the frame; the clock's spread is as wide).  The AVX-512 copy on a Zen 4
  * core (32 KB L1i as well), the same command, four quads at load 5:
  * lower in all four, 1.494 -> 1.461 on average (the median-run ratio
- * 1.495 -> 1.44).  The tile's blocks take some 21 KB of stack, written
- * by the walks and read by the shading.  The camera rays of all the
+ * 1.495 -> 1.44).  The tile's blocks take some 21 KB of stack a 16x16
+ * tile, 85 KB a 32x32 one (RENDER_TILE_SIZE), written by the walks and
+ * read by the shading.  The camera rays of all the
  * tile's blocks are made before the first walk (see below; about 1.7-2 ms of
  * the 71 ms kitchen frame on a Zen 4, performance-log.md, round 63, zs2).
  */
