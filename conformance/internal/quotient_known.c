@@ -47,20 +47,17 @@
 #include "check.h"
 #include "render/render.h"
 
-static uint64_t rng = 0x2545f4914f6cdd1dull;
+/* brute_force.h's fixed-seed generator, one stream for the whole test. */
+static struct bf_rng rng = {0x2545f4914f6cdd1dull};
 
 static uint64_t next64(void)
 {
-    /* xorshift64* (Vigna 2016). */
-    rng ^= rng >> 12;
-    rng ^= rng << 25;
-    rng ^= rng >> 27;
-    return rng * 2685821657736338717ull;
+    return bf_next(&rng);
 }
 
 static double uniform(void)
 {
-    return (double)(next64() >> 11) * 0x1p-53;
+    return bf_uniform(&rng);
 }
 
 static double from_bits(uint64_t b)
@@ -68,13 +65,6 @@ static double from_bits(uint64_t b)
     double d;
     memcpy(&d, &b, sizeof(d));
     return d;
-}
-
-static uint64_t to_bits(double d)
-{
-    uint64_t b;
-    memcpy(&b, &d, sizeof(b));
-    return b;
 }
 
 /* A random significand in [1, 2) scaled by 2^e, random sign. */
@@ -103,7 +93,7 @@ static void check_pair(const struct quotient_known *k, double x, struct tally *t
     const double want = x / k->y;
     t->pairs++;
     const double got = quotient_known(k, x);
-    if (to_bits(got) != to_bits(want)) {
+    if (quotient_known_bits(got) != quotient_known_bits(want)) {
         wrong(t, x, k->y, want, got, "scalar");
         return;
     }
@@ -114,11 +104,11 @@ static void check_pair(const struct quotient_known *k, double x, struct tally *t
                                              _mm256_set1_pd(k->zh), _mm256_set1_pd(k->zl)));
         _mm_storeu_pd(g2, quotient_known2(_mm_set_pd(x, -x), _mm_set1_pd(k->zh),
                                           _mm_set1_pd(k->zl)));
-        if (to_bits(g4[0]) != to_bits(want) || to_bits(g4[2]) != to_bits(want))
+        if (quotient_known_bits(g4[0]) != quotient_known_bits(want) || quotient_known_bits(g4[2]) != quotient_known_bits(want))
             wrong(t, x, k->y, want, g4[0], "four lanes");
-        else if (to_bits(g4[1]) != to_bits(-x / k->y) || to_bits(g2[0]) != to_bits(-x / k->y))
+        else if (quotient_known_bits(g4[1]) != quotient_known_bits(-x / k->y) || quotient_known_bits(g2[0]) != quotient_known_bits(-x / k->y))
             wrong(t, -x, k->y, -x / k->y, g4[1], "lanes");
-        else if (to_bits(g2[1]) != to_bits(want))
+        else if (quotient_known_bits(g2[1]) != quotient_known_bits(want))
             wrong(t, x, k->y, want, g2[1], "two lanes");
     }
 #endif
@@ -243,8 +233,8 @@ static int refusal_justified(double y)
     double hard[512];
     const int nh = near_midpoint(y, hard, 512);
     for (int i = 0; i < nh; i++)
-        if (to_bits(quotient_known(&k, hard[i])) != to_bits(hard[i] / y) ||
-            to_bits(quotient_known(&k, -hard[i])) != to_bits(-hard[i] / y))
+        if (quotient_known_bits(quotient_known(&k, hard[i])) != quotient_known_bits(hard[i] / y) ||
+            quotient_known_bits(quotient_known(&k, -hard[i])) != quotient_known_bits(-hard[i] / y))
             return 1;
     return 0;
 }
@@ -373,8 +363,8 @@ static void check_rows(render_unproject_rows_fn fn, const char *unit, const doub
             if (!ok)
                 continue;
             for (int k = 0; k < 3; k++)
-                if (to_bits(n3[k]) != to_bits(near_pt[p][k]) ||
-                    to_bits(f3[k]) != to_bits(far_pt[p][k])) {
+                if (quotient_known_bits(n3[k]) != quotient_known_bits(near_pt[p][k]) ||
+                    quotient_known_bits(f3[k]) != quotient_known_bits(far_pt[p][k])) {
                     if (t->wrong < 4)
                         printf("  %s: point (%d, %d) coordinate %d: %a %a, mat4_project %a %a\n",
                                unit, x0 + i, y + r, k, near_pt[p][k], far_pt[p][k], n3[k], f3[k]);
